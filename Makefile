@@ -1,0 +1,92 @@
+# vsph: one non-recursive Makefile (STYLE B11). `make check` and `make report`
+# work as the first command on a fresh machine: they install what is missing.
+
+CC       ?= gcc
+PKGS     := gsl fftw3 yaml-0.1 libcjson libcmark
+TESTPKGS := check
+BUILD    ?= build
+WARN     := -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
+            -Wmissing-prototypes -Wdouble-promotion -Wformat=2
+ifdef CI
+WARN     += -Werror
+endif
+OPT      ?= -O2
+CFLAGS   ?= $(OPT) -g
+ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L -fopenmp $(WARN) $(CFLAGS) \
+            $(SAN) $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+LDLIBS    = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm
+TESTLIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
+
+LIB_SRC  := $(wildcard common/*.c kernels/*.c solver/*.c analysis/*.c)
+CLI_SRC  := $(wildcard cli/*.c)
+TEST_SRC := $(wildcard tests/*.c)
+LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
+CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
+TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
+CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
+
+.PHONY: all deps check test report bench asan valgrind-check prefix-check \
+        format format-check clean
+
+all: deps $(BUILD)/vsph
+
+# Idempotent: returns at once when every package is present.
+deps:
+	@scripts/install-deps
+
+$(BUILD)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(ALLCFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/vsph: $(LIB_OBJ) $(CLI_OBJ)
+	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
+
+$(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ)
+	$(CC) $(ALLCFLAGS) -o $@ $^ $(TESTLIBS) $(LDLIBS)
+
+# Every test, through the single Check runner (STYLE B10).
+check: deps
+	@$(MAKE) --no-print-directory $(BUILD)/vsph $(BUILD)/check_vsph
+	@$(MAKE) --no-print-directory prefix-check
+	VSPH_BIN=$(BUILD)/vsph OMP_NUM_THREADS=2 $(BUILD)/check_vsph
+
+test: check
+
+# The analysis tables of THEORY sections 2-4 into reports/out/.
+report: deps
+	@$(MAKE) --no-print-directory $(BUILD)/vsph
+	$(BUILD)/vsph report --out reports/out
+
+asan: deps
+	@$(MAKE) --no-print-directory BUILD=build-asan OPT=-O1 \
+	  SAN="-fsanitize=address,undefined -fno-omit-frame-pointer" \
+	  build-asan/vsph build-asan/check_vsph
+	VSPH_BIN=build-asan/vsph CK_FORK=no OMP_NUM_THREADS=2 \
+	  ASAN_OPTIONS=detect_leaks=1 build-asan/check_vsph
+
+valgrind-check: deps
+	@$(MAKE) --no-print-directory $(BUILD)/vsph $(BUILD)/check_vsph
+	VSPH_BIN=$(BUILD)/vsph CK_FORK=no OMP_NUM_THREADS=1 \
+	  valgrind --error-exitcode=1 --leak-check=full $(BUILD)/check_vsph
+
+# REBOUND-style name rule: every defined global symbol of <dir>/<file>.o
+# starts with vsph_<file>_ (main excepted in cli/main.o).
+prefix-check: $(LIB_OBJ) $(CLI_OBJ)
+	@bad=0; for o in $(LIB_OBJ) $(CLI_OBJ); do \
+	  base=$$(basename $$o .o); \
+	  for s in $$(nm -g --defined-only $$o | awk '{print $$3}'); do \
+	    case $$s in vsph_$${base}_*) ;; main) [ $$base = main ] || { echo "$$o: $$s"; bad=1; } ;; \
+	      *) echo "prefix-check: $$o exports $$s (want vsph_$${base}_*)"; bad=1 ;; esac; \
+	  done; \
+	done; [ $$bad -eq 0 ] && echo "prefix-check: ok"
+
+FMT_SRC = $(wildcard */*.c */*.h)
+format:
+	clang-format -i $(FMT_SRC)
+format-check:
+	clang-format --dry-run --Werror $(FMT_SRC)
+
+clean:
+	rm -rf build build-asan
+
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d)

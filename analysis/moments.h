@@ -1,0 +1,67 @@
+#ifndef VSPH_ANALYSIS_MOMENTS_H
+#define VSPH_ANALYSIS_MOMENTS_H
+
+#include <stddef.h>
+
+#include <gsl/gsl_integration.h>
+
+struct vsph_kernel_type;
+struct vsph_particles;
+
+/** @file moments.h
+ *  @brief Kernel moment tensors F, G, N, M of THEORY.md section 2
+ *  (Colagrossi et al. 2011, Sec. IV) at depth delta below a planar free
+ *  surface with outward normal n = +e_d: by GSL adaptive quadrature, by
+ *  particle sums, and their theoretical full/half-support values. Units
+ *  h = 1 unless stated. No I/O. */
+
+/** The four tensors; entries beyond dim are zero. Index d-1 is normal. */
+struct vsph_moments {
+  int dim;                 /*!< 1, 2 or 3 */
+  double F[3][3][3];       /*!< F_ijk = -K int x_i x_j x_k / s^3 W' dV */
+  double G[3][3][3][3];    /*!< G_ijkl = -K/2 int x_i x_j x_k x_l / s^3 W' */
+  double N[3];             /*!< N_j = -2 int x_j / s W' dV */
+  double M[3][3];          /*!< M_jk = - int x_j x_k / s W' dV */
+};
+
+/** @brief F, G, N, M at depth @p depth (units of h, >= 0) by nested GSL
+ *  qag quadrature in spherical coordinates: radial integrals
+ *  R_p(a) = -int_0^a w'(s) s^p ds inside, angle outside, the outer interval
+ *  split where the support meets the surface. The azimuthal integral of
+ *  monomials in 3-D is done in closed form.
+ *  @param epsrel relative accuracy of the outer integrals (>= 1e-13).
+ *  @param outer,inner caller-owned GSL workspaces (distinct).
+ *  @return VSPH_OK, VSPH_EINVAL, VSPH_ELIB (GSL failed to converge). */
+int vsph_moments_quadrature(const struct vsph_kernel_type *k, int dim,
+                            double depth, double epsrel,
+                            gsl_integration_workspace *outer,
+                            gsl_integration_workspace *inner,
+                            struct vsph_moments *out);
+
+/** @brief The surface constants of THEORY.md section 2 from the closed
+ *  formula: I = int_0^kappa q^{d-2} w(q) dq, C_F = K (d-1) beta_d I,
+ *  C_N = 2 (d-1) gamma_d I; in 1-D C_F = K w(0)/2, C_N = 2 w(0).
+ *  @return VSPH_OK, VSPH_EINVAL, VSPH_ELIB. */
+int vsph_moments_constants(const struct vsph_kernel_type *k, int dim,
+                           double epsrel, gsl_integration_workspace *ws,
+                           double *C_F, double *C_N);
+
+/** @brief Theoretical values: full support (half = 0) G = S, M = delta,
+ *  F = N = 0; half support (half = 1) G = S/2, M = delta/2,
+ *  F = -C_F (d_ij n_k + d_ik n_j + d_jk n_i - n_i n_j n_k), N = -C_N n. */
+void vsph_moments_theory(int dim, int half, double C_F, double C_N,
+                         struct vsph_moments *out);
+
+/** @brief The tensors as particle sums sum_j V_j (...) about particle
+ *  @p centre of @p p, for smoothing length @p h (values then scale as
+ *  F, N ~ 1/h, G, M ~ 1). O(N).
+ *  @return VSPH_OK or VSPH_EINVAL. */
+int vsph_moments_sum(const struct vsph_kernel_type *k,
+                     const struct vsph_particles *p, size_t centre, double h,
+                     struct vsph_moments *out);
+
+/** @brief Largest absolute entry difference of F, G, N, M (gap[0..3]). */
+void vsph_moments_gap(const struct vsph_moments *a,
+                      const struct vsph_moments *b, double gap[4]);
+
+#endif /* VSPH_ANALYSIS_MOMENTS_H */

@@ -1,0 +1,75 @@
+#ifndef VSPH_ANALYSIS_SCALING_H
+#define VSPH_ANALYSIS_SCALING_H
+
+#include <stddef.h>
+
+#include "fields.h"
+
+struct vsph_kernel_type;
+
+/** @file scaling.h
+ *  @brief Truncation-error scaling at the free surface (THEORY.md section
+ *  2, Appendix B of Colagrossi et al. 2011): with h/dx fixed and h halved,
+ *  h F and h N at a surface particle stay constant and the viscous
+ *  operators applied to a linear field grow like 1/h unless the leading
+ *  term vanishes. Also the interior convergence of MGF and MEAF on a
+ *  quadratic field as h/dx grows. No I/O. */
+
+/** Most levels a sweep can hold. */
+#define VSPH_SCALING_MAXLEVELS 16
+
+/** Surface sweep settings. */
+struct vsph_scaling_props {
+  const struct vsph_kernel_type *kernel; /*!< smoothing kernel */
+  struct vsph_fields_props field;        /*!< linear field (strain/rotation) */
+  int lattice;                           /*!< vsph_lattice_kind */
+  double perturb;                        /*!< lattice perturbation / dx */
+  unsigned long seed;                    /*!< perturbation seed */
+  size_t levels;                         /*!< number of h values */
+  double h0;                             /*!< largest h (m) */
+  double hdx;                            /*!< h / dx, fixed */
+  double mu;                             /*!< dynamic viscosity (Pa s) */
+  double round_tol; /*!< |op| below round_tol mu U / h_min: rounding level */
+};
+
+/** Surface sweep results; index l is level l (h = h0 / 2^l). */
+struct vsph_scaling_result {
+  size_t levels;                                 /*!< levels run */
+  double h[VSPH_SCALING_MAXLEVELS];              /*!< smoothing length */
+  double hF[VSPH_SCALING_MAXLEVELS];             /*!< h F_ddd (normal) */
+  double hN[VSPH_SCALING_MAXLEVELS];             /*!< h N_d (normal) */
+  double normal[3][VSPH_SCALING_MAXLEVELS];      /*!< n.(div V)_i per form */
+  double tangential[3][VSPH_SCALING_MAXLEVELS];  /*!< |(I - nn)(div V)_i| */
+  double magnitude[3][VSPH_SCALING_MAXLEVELS];   /*!< |(div V)_i| */
+  double slope[3];     /*!< log-log slope of the magnitude against h */
+  int rounding[3];     /*!< 1 if every value is at rounding level (slope NaN) */
+};
+
+/** Interior sweep results over h/dx. */
+struct vsph_scaling_interior {
+  size_t n;                                /*!< h/dx values */
+  double hdx[VSPH_SCALING_MAXLEVELS];      /*!< h / dx */
+  double mgf[VSPH_SCALING_MAXLEVELS];      /*!< |MGF - mu(lap u + 2 grad div u)|
+                                                / |target| */
+  double meaf[VSPH_SCALING_MAXLEVELS];     /*!< |MEAF - mu lap u| / |target| */
+};
+
+/** @brief Defaults: 5 levels from h0 = 0.1, h/dx = 4/3, mu = 0.0137,
+ *  square lattice, round_tol = 1e-9; caller sets kernel and field. */
+void vsph_scaling_props_init(struct vsph_scaling_props *sp);
+
+/** @brief Run the surface sweep: at each level a half-space patch of radius
+ *  2 kappa h + 2 dx around the surface particle (exactly what the operators
+ *  see: PVWF's second pass reaches 2 kappa h).
+ *  @return VSPH_OK, VSPH_EINVAL, VSPH_ENOMEM, VSPH_ELIB. */
+int vsph_scaling_surface(const struct vsph_scaling_props *sp,
+                         struct vsph_scaling_result *res);
+
+/** @brief Interior convergence of MGF and MEAF on the 2-D quadratic field
+ *  of @p sp->field, at the centre of a full patch, for each h/dx in
+ *  @p hdx (n values). */
+int vsph_scaling_interior(const struct vsph_scaling_props *sp,
+                          const double *hdx, size_t n,
+                          struct vsph_scaling_interior *res);
+
+#endif /* VSPH_ANALYSIS_SCALING_H */

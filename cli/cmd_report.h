@@ -1,0 +1,6 @@
+#ifndef VSPH_CLI_CMD_REPORT_H
+#define VSPH_CLI_CMD_REPORT_H
+/** @file cmd_report.h @brief `vsph report`. */
+/** @brief Entry point; returns the process exit status. */
+int vsph_cmd_report_main(int argc, char **argv);
+#endif /* VSPH_CLI_CMD_REPORT_H */

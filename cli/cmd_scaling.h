@@ -1,0 +1,6 @@
+#ifndef VSPH_CLI_CMD_SCALING_H
+#define VSPH_CLI_CMD_SCALING_H
+/** @file cmd_scaling.h @brief `vsph scaling`. */
+/** @brief Entry point; returns the process exit status. */
+int vsph_cmd_scaling_main(int argc, char **argv);
+#endif /* VSPH_CLI_CMD_SCALING_H */

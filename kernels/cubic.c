@@ -1,0 +1,31 @@
+/* Cubic B-spline, Monaghan (1992), Annu. Rev. Astron. Astrophys. 30, 543,
+ * Eq. (2.6); THEORY.md section 1. */
+#include "kernel.h"
+
+static double f_cubic(double q) {
+  if (q < 1.0) return 1.0 - 1.5 * q * q + 0.75 * q * q * q;
+  if (q < 2.0) {
+    const double t = 2.0 - q;
+    return 0.25 * t * t * t;
+  }
+  return 0.0;
+}
+
+static double df_cubic(double q) {
+  if (q < 1.0) return -3.0 * q + 2.25 * q * q;
+  if (q < 2.0) {
+    const double t = 2.0 - q;
+    return -0.75 * t * t;
+  }
+  return 0.0;
+}
+
+const struct vsph_kernel_type vsph_cubic_type = {
+    .name = "cubic",
+    .kappa = 2.0,
+    .sigma = {2.0 / 3.0, 10.0 / (7.0 * 3.14159265358979323846),
+              1.0 / 3.14159265358979323846},
+    .f = {f_cubic, f_cubic, f_cubic},
+    .df = {df_cubic, df_cubic, df_cubic},
+    .reference = "cubic B-spline (Monaghan 1992)",
+};

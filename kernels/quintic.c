@@ -1,0 +1,27 @@
+/* Quintic spline, Morris, Fox & Zhu (1997), J. Comput. Phys. 136, 214,
+ * Eq. (27); THEORY.md section 1. */
+#include "kernel.h"
+
+static double pow5p(double t) { return t > 0.0 ? t * t * t * t * t : 0.0; }
+static double pow4p(double t) { return t > 0.0 ? t * t * t * t : 0.0; }
+
+static double f_quintic(double q) {
+  if (q >= 3.0) return 0.0;
+  return pow5p(3.0 - q) - 6.0 * pow5p(2.0 - q) + 15.0 * pow5p(1.0 - q);
+}
+
+static double df_quintic(double q) {
+  if (q >= 3.0) return 0.0;
+  return -5.0 * (pow4p(3.0 - q) - 6.0 * pow4p(2.0 - q) +
+                 15.0 * pow4p(1.0 - q));
+}
+
+const struct vsph_kernel_type vsph_quintic_type = {
+    .name = "quintic",
+    .kappa = 3.0,
+    .sigma = {1.0 / 120.0, 7.0 / (478.0 * 3.14159265358979323846),
+              1.0 / (120.0 * 3.14159265358979323846)},
+    .f = {f_quintic, f_quintic, f_quintic},
+    .df = {df_quintic, df_quintic, df_quintic},
+    .reference = "quintic spline (Morris, Fox & Zhu 1997)",
+};

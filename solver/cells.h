@@ -1,0 +1,62 @@
+#ifndef VSPH_SOLVER_CELLS_H
+#define VSPH_SOLVER_CELLS_H
+
+#include <stddef.h>
+
+struct vsph_particles;
+
+/** @file cells.h
+ *  @brief Cell-linked neighbour list (SWIFT's space-owns, cells-view design).
+ *  Building it sorts the particles by cell with a counting sort so each cell
+ *  is a contiguous index range; the cells hold only ranges. The O(N^2) path
+ *  is the same structure with one cell holding every particle, so the fast
+ *  and the reference loops share their code. No I/O. */
+
+/** Maximum number of neighbour cell ranges (3^3). */
+#define VSPH_CELLS_MAXRANGES 27
+
+/** Uniform grid of cells with edge >= the interaction radius. */
+struct vsph_cells {
+  int dim;           /*!< dimension */
+  int direct;        /*!< 1: a single cell, the O(N^2) reference path */
+  double edge;       /*!< cell edge (m) */
+  double lo[3];      /*!< lower corner of the grid (m) */
+  size_t nc[3];      /*!< cells along each axis (1 beyond dim) */
+  size_t ncells;     /*!< total cells */
+  size_t *start;     /*!< first particle of each cell */
+  size_t *count;     /*!< particles in each cell */
+  size_t cap_cells;  /*!< allocated length of start and count */
+  size_t *key;       /*!< scratch: cell of each particle */
+  size_t *perm;      /*!< scratch: sorting permutation */
+  double *dscratch;  /*!< scratch for the particle permutation */
+  size_t *iscratch;  /*!< scratch for the particle permutation */
+  size_t cap_n;      /*!< allocated length of the per-particle scratch */
+};
+
+/** @brief Allocate an empty cell list. NULL on failure. */
+struct vsph_cells *vsph_cells_alloc(void);
+
+/** @brief Free a cell list; NULL is a no-op. */
+void vsph_cells_free(struct vsph_cells *c);
+
+/** @brief Bin the particles into cells of edge >= @p radius and sort them
+ *  by cell (fields are permuted; id[] keeps the original index).
+ *  @param radius interaction radius (m), > 0.
+ *  @return VSPH_OK, VSPH_EINVAL (radius <= 0 or non-finite positions),
+ *  VSPH_ENOMEM.
+ *  @note Grows its own buffers when the particle or cell count grows. */
+int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
+                     double radius);
+
+/** @brief Set up the O(N^2) reference path: one cell holding all particles
+ *  (particles are not reordered). */
+int vsph_cells_build_direct(struct vsph_cells *c,
+                            const struct vsph_particles *p);
+
+/** @brief Index ranges [lo[r], hi[r]) of the cells neighbouring @p cell
+ *  (itself included), in a fixed order. Returns the number of ranges. */
+size_t vsph_cells_ranges(const struct vsph_cells *c, size_t cell,
+                         size_t lo[VSPH_CELLS_MAXRANGES],
+                         size_t hi[VSPH_CELLS_MAXRANGES]);
+
+#endif /* VSPH_SOLVER_CELLS_H */

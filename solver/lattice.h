@@ -1,0 +1,59 @@
+#ifndef VSPH_SOLVER_LATTICE_H
+#define VSPH_SOLVER_LATTICE_H
+
+#include <stddef.h>
+
+struct vsph_particles;
+
+/** @file lattice.h
+ *  @brief Particle sets on lattices: a half-space patch around one particle
+ *  (for the moment tensors and the surface scaling), a square and a disc of
+ *  concentric rings (for the dissipation integrals and the scenes). Every
+ *  particle gets rho = 1, m = vol = its lattice volume, zero velocity.
+ *  No I/O. */
+
+/** Lattice arrangement. */
+enum vsph_lattice_kind {
+  VSPH_LATTICE_SQUARE = 0, /*!< square (1-D line, 3-D cubic) */
+  VSPH_LATTICE_HEX,        /*!< hexagonal, 2-D only, rows parallel to x */
+  VSPH_LATTICE_KIND_COUNT
+};
+
+/** How to lay the particles. */
+struct vsph_lattice_props {
+  int dim;                     /*!< 1, 2 or 3 */
+  enum vsph_lattice_kind kind; /*!< arrangement */
+  double dx;                   /*!< spacing: particle volume is dx^dim (m) */
+  double perturb;              /*!< random shift amplitude, fraction of dx */
+  unsigned long seed;          /*!< seed of the mt19937 generator */
+};
+
+/** @brief Name of a lattice kind ("square", "hex"). */
+const char *vsph_lattice_name(int kind);
+
+/** @brief Kind called @p name, or -1. */
+int vsph_lattice_find(const char *name);
+
+/** @brief Lattice nodes x with |x| <= radius and x_d <= depth (x_d the last
+ *  coordinate), the origin being a node and particle @p centre. The centre
+ *  is never perturbed; the others move by up to perturb*dx per component
+ *  (uniform). Rows that lie exactly at x_d = depth are kept.
+ *  @param out receives a new set (free with vsph_particles_free).
+ *  @return VSPH_OK, VSPH_EINVAL (bad props), VSPH_ENOMEM. */
+int vsph_lattice_halfspace(const struct vsph_lattice_props *lp, double radius,
+                           double depth, struct vsph_particles **out,
+                           size_t *centre);
+
+/** @brief Square (2-D) of side @p side centred at the origin with
+ *  @p nacross particles along each edge at the cell centres. */
+int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
+                        size_t nacross, struct vsph_particles **out);
+
+/** @brief Disc (2-D) of radius @p radius centred at the origin, made of
+ *  nacross/2 concentric rings of width dr = 2R/nacross; ring k at radius
+ *  (k + 1/2) dr holds round(2 pi r_k / dr) particles of equal volume, so
+ *  the volumes add up to pi R^2 exactly. lp->dx is ignored. */
+int vsph_lattice_disc(const struct vsph_lattice_props *lp, double radius,
+                      size_t nacross, struct vsph_particles **out);
+
+#endif /* VSPH_SOLVER_LATTICE_H */

@@ -1,0 +1,87 @@
+#include "particles.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "../common/status.h"
+
+/* 64-byte aligned zeroed block; aligned_alloc needs a size multiple of 64. */
+static void *alloc_aligned(size_t bytes) {
+  const size_t sz = (bytes + 63) / 64 * 64;
+  void *ptr = aligned_alloc(64, sz ? sz : 64);
+  if (ptr) memset(ptr, 0, sz ? sz : 64);
+  return ptr;
+}
+
+struct vsph_particles *vsph_particles_alloc(size_t cap, int dim) {
+  if (dim < 1 || dim > 3) {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "dimension %d outside 1-3", dim);
+    return NULL;
+  }
+  struct vsph_particles *p = calloc(1, sizeof *p);
+  if (!p) goto fail;
+  p->dim = dim;
+  p->cap = (cap + 7) / 8 * 8;
+  if (p->cap == 0) p->cap = 8;
+  const size_t nb = p->cap * sizeof(double);
+  for (int k = 0; k < dim; k++) {
+    if (!(p->pos[k] = alloc_aligned(nb))) goto fail;
+    if (!(p->vel[k] = alloc_aligned(nb))) goto fail;
+    if (!(p->acc[k] = alloc_aligned(nb))) goto fail;
+  }
+  if (!(p->m = alloc_aligned(nb)) || !(p->rho = alloc_aligned(nb)) ||
+      !(p->vol = alloc_aligned(nb)) || !(p->p = alloc_aligned(nb)) ||
+      !(p->drho = alloc_aligned(nb)) ||
+      !(p->id = alloc_aligned(p->cap * sizeof(size_t))))
+    goto fail;
+  return p;
+fail:
+  vsph_particles_free(p);
+  vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                     "cannot allocate %zu particles", cap);
+  return NULL;
+}
+
+void vsph_particles_free(struct vsph_particles *p) {
+  if (!p) return;
+  for (int k = 0; k < 3; k++) {
+    free(p->pos[k]);
+    free(p->vel[k]);
+    free(p->acc[k]);
+  }
+  free(p->m);
+  free(p->rho);
+  free(p->vol);
+  free(p->p);
+  free(p->drho);
+  free(p->id);
+  free(p);
+}
+
+void vsph_particles_refresh_vol(struct vsph_particles *p) {
+  for (size_t i = 0; i < p->n; i++) p->vol[i] = p->m[i] / p->rho[i];
+}
+
+static void permute_field(double *a, const size_t *perm, size_t n,
+                          double *scratch) {
+  for (size_t i = 0; i < n; i++) scratch[i] = a[perm[i]];
+  memcpy(a, scratch, n * sizeof *a);
+}
+
+void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
+                            double *scratch, size_t *iscratch) {
+  const size_t n = p->n;
+  for (int k = 0; k < p->dim; k++) {
+    permute_field(p->pos[k], perm, n, scratch);
+    permute_field(p->vel[k], perm, n, scratch);
+    permute_field(p->acc[k], perm, n, scratch);
+  }
+  permute_field(p->m, perm, n, scratch);
+  permute_field(p->rho, perm, n, scratch);
+  permute_field(p->vol, perm, n, scratch);
+  permute_field(p->p, perm, n, scratch);
+  permute_field(p->drho, perm, n, scratch);
+  for (size_t i = 0; i < n; i++) iscratch[i] = p->id[perm[i]];
+  memcpy(p->id, iscratch, n * sizeof *p->id);
+}

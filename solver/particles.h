@@ -1,0 +1,43 @@
+#ifndef VSPH_SOLVER_PARTICLES_H
+#define VSPH_SOLVER_PARTICLES_H
+
+#include <stddef.h>
+
+/** @file particles.h
+ *  @brief Particle state in structure-of-arrays form (STYLE B6). This module
+ *  owns every particle array; cell lists and workspaces only index into it.
+ *  Components k >= dim of the vector fields are NULL. No I/O. */
+
+/** Particle set: one 64-byte aligned array per field, double throughout. */
+struct vsph_particles {
+  size_t n;          /*!< live particles */
+  size_t cap;        /*!< allocated length, a multiple of 8 */
+  int dim;           /*!< 1, 2 or 3 */
+  double *pos[3];    /*!< pos[k][i]: coordinate k of particle i (m) */
+  double *vel[3];    /*!< velocity (m/s) */
+  double *acc[3];    /*!< acceleration or force density scratch */
+  double *m;         /*!< mass (kg per unit depth in 2-D) */
+  double *rho;       /*!< density (kg/m^d) */
+  double *vol;       /*!< volume V = m/rho, refreshed by _refresh_vol */
+  double *p;         /*!< pressure (Pa) */
+  double *drho;      /*!< density rate (kg/m^d/s) */
+  size_t *id;        /*!< original index; survives reordering */
+};
+
+/** @brief Allocate a set for up to @p cap particles in @p dim dimensions,
+ *  all fields zero, n = 0. Returns NULL (after reporting) on failure. */
+struct vsph_particles *vsph_particles_alloc(size_t cap, int dim);
+
+/** @brief Free a set; NULL is a no-op. */
+void vsph_particles_free(struct vsph_particles *p);
+
+/** @brief Set vol[i] = m[i] / rho[i] for every live particle. */
+void vsph_particles_refresh_vol(struct vsph_particles *p);
+
+/** @brief Reorder every field so that new index i holds old index perm[i].
+ *  @param scratch caller buffer of at least n doubles.
+ *  @param iscratch caller buffer of at least n size_t. */
+void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
+                            double *scratch, size_t *iscratch);
+
+#endif /* VSPH_SOLVER_PARTICLES_H */

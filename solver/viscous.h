@@ -1,0 +1,82 @@
+#ifndef VSPH_SOLVER_VISCOUS_H
+#define VSPH_SOLVER_VISCOUS_H
+
+#include <stddef.h>
+
+struct vsph_kernel_type;
+struct vsph_particles;
+struct vsph_cells;
+
+/** @file viscous.h
+ *  @brief The three discrete viscous operators (div V)_i of THEORY.md
+ *  section 3 (Colagrossi et al. 2011, Eqs. 4.18-4.20, 4.30): MGF
+ *  (Monaghan-Gingold), MEAF (Morris-Fox-Zhu) and PVWF (principle of virtual
+ *  work, renormalised two-pass form). Gather loops over a cell list: each
+ *  particle's sum is taken by one thread in a fixed neighbour order, so the
+ *  result is bitwise identical for any thread count. No I/O. */
+
+/** Viscous formulation. */
+enum vsph_viscous_form {
+  VSPH_VISCOUS_MGF = 0, /*!< Monaghan & Gingold, Eq. (4.20) */
+  VSPH_VISCOUS_MEAF,    /*!< Morris, Fox & Zhu 1997, Eq. (4.30) */
+  VSPH_VISCOUS_PVWF,    /*!< principle of virtual work, Eqs. (4.18)-(4.19) */
+  VSPH_VISCOUS_FORM_COUNT
+};
+
+/** What the operators need: constant smoothing length and viscosities. */
+struct vsph_viscous_props {
+  enum vsph_viscous_form form;            /*!< formulation */
+  int dim;                                /*!< 1, 2 or 3 */
+  const struct vsph_kernel_type *kernel;  /*!< smoothing kernel */
+  double h;                               /*!< smoothing length (m) */
+  double mu;                              /*!< dynamic viscosity (Pa s) */
+  double lambda;   /*!< second viscosity (Pa s); MGF implies lambda = mu */
+  double det_tol;  /*!< PVWF: det(B) <= det_tol (tr B / d)^d counts as
+                        singular and L falls back to the identity */
+};
+
+/** Per-particle scratch of the PVWF two-pass operator. */
+struct vsph_viscous_ws {
+  size_t cap;         /*!< particles it can hold */
+  int dim;            /*!< dimension */
+  double *A[9];       /*!< A_i = T_i L_i, entry (a,b) in A[a*dim+b][i] */
+  double *dens;       /*!< PVWF dissipation density -T_i:D_i */
+  unsigned char *fallback; /*!< 1 where L_i fell back to the identity */
+  size_t n_fallback;  /*!< how many particles fell back, last call */
+};
+
+/** @brief Formulation name ("mgf", "meaf", "pvwf"). */
+const char *vsph_viscous_name(int form);
+
+/** @brief Formulation called @p name, or -1. */
+int vsph_viscous_find(const char *name);
+
+/** @brief Fill props with the defaults of THEORY.md section 3: lambda = mu
+ *  for MGF, -2 mu / dim for PVWF (zero bulk viscosity), det_tol = 1e-8.
+ *  @return VSPH_OK or VSPH_EINVAL (bad form, dim, h or mu). */
+int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
+                            const struct vsph_kernel_type *kernel, int dim,
+                            double h, double mu);
+
+/** @brief Workspace for up to @p cap particles. NULL on failure. */
+struct vsph_viscous_ws *vsph_viscous_ws_alloc(size_t cap, int dim);
+
+/** @brief Free a workspace; NULL is a no-op. */
+void vsph_viscous_ws_free(struct vsph_viscous_ws *ws);
+
+/** @brief The viscous force density (div V)_i (N/m^d) of every particle.
+ *  Uses pos, vel and vol of @p p.
+ *  @param cells built with radius >= kappa h (or the direct path).
+ *  @param out out[k][i], k < dim: component k of (div V)_i.
+ *  @param dens if not NULL, the pairwise dissipation density p_i (W/m^d)
+ *  with sum_i V_i p_i = sum_i V_i u_i.(div V)_i (THEORY.md section 4):
+ *  MGF: (K mu / 2) sum_j V_j ((u_j-u_i).x)^2 W'/s^3;
+ *  MEAF: mu sum_j V_j W'/s |u_i - u_j|^2;  PVWF: -T_i : D_i.
+ *  @return VSPH_OK or VSPH_EINVAL (workspace too small, bad props). */
+int vsph_viscous_compute(const struct vsph_viscous_props *vp,
+                         const struct vsph_particles *p,
+                         const struct vsph_cells *cells,
+                         struct vsph_viscous_ws *ws, double *const out[3],
+                         double *dens);
+
+#endif /* VSPH_SOLVER_VISCOUS_H */

@@ -1,0 +1,171 @@
+/* The CLI as a user meets it: every bad input is one line on stderr and
+ * exit status 2, with nothing on stdout; --help works; JSON has the keys
+ * the README promises. Runs the built binary ($VSPH_BIN). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cjson/cJSON.h>
+
+#include "check_suites.h"
+
+struct outcome {
+  int status;
+  char out[1 << 16];
+  char err[4096];
+  int err_lines;
+};
+
+static void slurp(const char *path, char *buf, size_t n) {
+  FILE *f = fopen(path, "r");
+  size_t got = f ? fread(buf, 1, n - 1, f) : 0;
+  buf[got] = '\0';
+  if (f) fclose(f);
+}
+
+static struct outcome *run_cli(const char *args) {
+  static struct outcome o;
+  const char *bin = getenv("VSPH_BIN");
+  ck_assert_msg(bin != NULL, "VSPH_BIN is not set (run through make check)");
+  char dir[] = "/tmp/vsph_cliXXXXXX";
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  char cmd[2048], po[512], pe[512];
+  snprintf(po, sizeof po, "%s/out", dir);
+  snprintf(pe, sizeof pe, "%s/err", dir);
+  snprintf(cmd, sizeof cmd, "%s %s > %s 2> %s", bin, args, po, pe);
+  const int st = system(cmd);
+  o.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  slurp(po, o.out, sizeof o.out);
+  slurp(pe, o.err, sizeof o.err);
+  o.err_lines = 0;
+  for (const char *c = o.err; *c; c++) o.err_lines += *c == '\n';
+  remove(po);
+  remove(pe);
+  rmdir(dir);
+  return &o;
+}
+
+static const char *const bad_inputs[] = {
+    "tensors --kernel gauss",
+    "tensors --dim 4",
+    "tensors --dim 0",
+    "tensors --dim 2.5",
+    "tensors --depth -0.5",
+    "tensors --hdx 0",
+    "tensors --hdx -1.2",
+    "tensors --hdx abc",
+    "tensors --depth 1.5x",
+    "tensors --depth nan",
+    "tensors --method sums",
+    "tensors --lattice hex --dim 3 --method particles",
+    "tensors --lattice triangle",
+    "tensors --perturb 0.7 --lattice perturbed",
+    "tensors --frobnicate",
+    "tensors --kernel",
+    "scaling --field shear",
+    "scaling --field rotation --dim 1",
+    "scaling --dim 7",
+    "scaling --levels 1",
+    "scaling --levels two",
+    "scaling --hdx 0",
+    "scaling --kernel nope",
+    "dissipation --field strain",
+    "dissipation --formulation sph --field strain",
+    "dissipation --formulation mgf --field vortex",
+    "dissipation --formulation mgf --field strain --shape circle",
+    "dissipation --formulation mgf --field strain --res 1",
+    "dissipation --formulation mgf --field strain --res -3",
+    "dissipation --formulation mgf --field strain --hdx -1",
+    "dissipation --formulation mgf --field strain --mu x",
+    "report --only nothing",
+    "report --bogus",
+    "frobnicate",
+};
+
+START_TEST(test_bad_input) {
+  struct outcome *o = run_cli(bad_inputs[_i]);
+  ck_assert_msg(o->status == 2, "'%s' exited %d", bad_inputs[_i], o->status);
+  ck_assert_msg(o->err_lines == 1, "'%s' wrote %d stderr lines: %s",
+                bad_inputs[_i], o->err_lines, o->err);
+  ck_assert_msg(o->out[0] == '\0', "'%s' wrote to stdout", bad_inputs[_i]);
+  ck_assert_msg(strstr(o->err, "vsph") == o->err, "'%s': %s", bad_inputs[_i],
+                o->err);
+}
+END_TEST
+
+START_TEST(test_help) {
+  const char *cmds[] = {"--help", "tensors --help", "scaling --help",
+                        "dissipation --help", "report --help"};
+  for (size_t i = 0; i < sizeof cmds / sizeof cmds[0]; i++) {
+    struct outcome *o = run_cli(cmds[i]);
+    ck_assert_int_eq(o->status, 0);
+    ck_assert_ptr_nonnull(strstr(o->out, "usage"));
+  }
+}
+END_TEST
+
+static cJSON *json_of(const char *args) {
+  struct outcome *o = run_cli(args);
+  ck_assert_msg(o->status == 0, "'%s' exited %d: %s", args, o->status, o->err);
+  cJSON *j = cJSON_Parse(o->out);
+  ck_assert_msg(j != NULL, "'%s' did not print JSON", args);
+  return j;
+}
+
+/* JSON keys and shapes; values cross-checked against theory: at depth 0
+ * N_d = -C_N and F_ddd = -2 C_F (tol: quadrature 1e-10). */
+START_TEST(test_json) {
+  cJSON *j = json_of("tensors --kernel wendland2 --dim 3 --json");
+  const char *keys[] = {"kernel", "dim", "depth", "method", "F",
+                        "G",      "N",   "M",     "C_F",    "C_N"};
+  for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
+    ck_assert_msg(cJSON_HasObjectItem(j, keys[i]), "missing %s", keys[i]);
+  const double CF = cJSON_GetObjectItem(j, "C_F")->valuedouble;
+  const double CN = cJSON_GetObjectItem(j, "C_N")->valuedouble;
+  cJSON *F = cJSON_GetObjectItem(j, "F"), *G = cJSON_GetObjectItem(j, "G");
+  ck_assert_int_eq(cJSON_GetArraySize(F), 3);
+  ck_assert_int_eq(cJSON_GetArraySize(cJSON_GetArrayItem(
+                       cJSON_GetArrayItem(cJSON_GetArrayItem(G, 0), 0), 0)),
+                   3);
+  const double F333 = cJSON_GetArrayItem(
+      cJSON_GetArrayItem(cJSON_GetArrayItem(F, 2), 2), 2)->valuedouble;
+  ck_assert_double_eq_tol(F333, -2.0 * CF, 1e-9);
+  const double N3 =
+      cJSON_GetArrayItem(cJSON_GetObjectItem(j, "N"), 2)->valuedouble;
+  ck_assert_double_eq_tol(N3, -CN, 1e-9);
+  cJSON_Delete(j);
+
+  j = json_of("scaling --field strain --levels 3 --json");
+  const char *sk[] = {"h", "hF", "hN", "mgf", "meaf", "pvwf", "slope_mgf",
+                      "slope_meaf", "slope_pvwf"};
+  for (size_t i = 0; i < sizeof sk / sizeof sk[0]; i++)
+    ck_assert_msg(cJSON_HasObjectItem(j, sk[i]), "missing %s", sk[i]);
+  ck_assert_double_eq_tol(cJSON_GetObjectItem(j, "slope_mgf")->valuedouble,
+                          -1.0, 1e-9);
+  cJSON_Delete(j);
+
+  j = json_of("dissipation --formulation pvwf --field strain --shape disc "
+              "--res 20 --json");
+  const char *dk[] = {"P", "P_exact", "P_grad", "rel_error"};
+  for (size_t i = 0; i < sizeof dk / sizeof dk[0]; i++)
+    ck_assert_msg(cJSON_HasObjectItem(j, dk[i]), "missing %s", dk[i]);
+  ck_assert_double_le(
+      fabs(cJSON_GetObjectItem(j, "rel_error")->valuedouble), 1e-12);
+  cJSON_Delete(j);
+}
+END_TEST
+
+Suite *vsph_cli_suite(void) {
+  Suite *s = suite_create("cli");
+  TCase *tc = tcase_create("errors");
+  tcase_set_timeout(tc, 30);
+  tcase_add_loop_test(tc, test_bad_input, 0,
+                      (int)(sizeof bad_inputs / sizeof bad_inputs[0]));
+  tcase_add_test(tc, test_help);
+  tcase_add_test(tc, test_json);
+  suite_add_tcase(s, tc);
+  return s;
+}

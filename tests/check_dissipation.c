@@ -1,0 +1,142 @@
+#include <math.h>
+
+#include "../analysis/dissipation.h"
+#include "../common/consts.h"
+#include "../kernels/kernel.h"
+#include "../solver/viscous.h"
+#include "check_suites.h"
+
+static struct vsph_dissipation_result run(int form, int field, int shape,
+                                          size_t res, double hdx,
+                                          double perturb) {
+  struct vsph_dissipation_props dp;
+  vsph_dissipation_props_init(&dp);
+  dp.form = form;
+  dp.kernel = &vsph_gaussian_type;
+  dp.shape = shape;
+  dp.nacross = res;
+  dp.hdx = hdx;
+  dp.perturb = perturb;
+  ck_assert_int_eq(vsph_fields_props_init(&dp.field, field, 2), 0);
+  struct vsph_dissipation_result r;
+  ck_assert_int_eq(vsph_dissipation_compute(&dp, &r), 0);
+  /* the pairwise form of THEORY 4 equals sum V u.(div V) to rounding */
+  ck_assert_double_le(fabs(r.P - r.P_pair), 1e-12 * fabs(r.P_grad));
+  return r;
+}
+
+/* The exact integrals against their closed forms (THEORY 4). */
+START_TEST(test_exact_integrals) {
+  struct vsph_dissipation_props dp;
+  vsph_dissipation_props_init(&dp);
+  vsph_fields_props_init(&dp.field, VSPH_FIELDS_STRAIN, 2);
+  double Pe, Pg;
+  ck_assert_int_eq(vsph_dissipation_exact(&dp, &Pe, &Pg), 0);
+  const double A = dp.field.A, mu = dp.mu;
+  ck_assert_double_eq_tol(Pe, -4 * mu * A * A, 1e-10 * 4 * mu * A * A);
+  ck_assert_double_eq_tol(Pg, -2 * mu * A * A, 1e-10 * 2 * mu * A * A);
+  dp.shape = VSPH_DISSIPATION_DISC;
+  vsph_fields_props_init(&dp.field, VSPH_FIELDS_ROTATION, 2);
+  ck_assert_int_eq(vsph_dissipation_exact(&dp, &Pe, &Pg), 0);
+  const double W = dp.field.Omega, area = VSPH_PI * 0.25;
+  ck_assert(Pe == 0.0);
+  ck_assert_double_eq_tol(Pg, -2 * mu * W * W * area, 1e-10 * fabs(Pg));
+}
+END_TEST
+
+/* PVWF: exact to rounding on every set (THEORY 4, discrete property). */
+START_TEST(test_pvwf_exact) {
+  for (int shape = 0; shape < 2; shape++)
+    for (int pert = 0; pert < 2; pert++) {
+      const struct vsph_dissipation_result s =
+          run(VSPH_VISCOUS_PVWF, VSPH_FIELDS_STRAIN, shape, 30, 4.0 / 3.0,
+              pert ? 0.2 : 0.0);
+      ck_assert_double_le(fabs(s.rel_error), 1e-12);
+      const struct vsph_dissipation_result rot =
+          run(VSPH_VISCOUS_PVWF, VSPH_FIELDS_ROTATION, shape, 30, 4.0 / 3.0,
+              pert ? 0.2 : 0.0);
+      ck_assert_double_le(fabs(rot.rel_error), 1e-12);
+      ck_assert_double_le(rot.angular, 1e-12);
+    }
+}
+END_TEST
+
+/* MGF: no dissipation of a rigid rotation (pairwise (u_j-u_i).x = 0);
+ * on strain the interior lattice sum sits about 6 % above the exact value
+ * at h/dx = 4/3 with the 3h Gaussian (THEORY 4; measured -6.03 %), the
+ * surface deficit halves as the resolution doubles (first order in h/L)
+ * and the lattice error vanishes as h/dx grows. */
+START_TEST(test_mgf) {
+  const struct vsph_dissipation_result rot =
+      run(VSPH_VISCOUS_MGF, VSPH_FIELDS_ROTATION, VSPH_DISSIPATION_DISC, 40,
+          4.0 / 3.0, 0.0);
+  ck_assert_double_le(fabs(rot.rel_error), 1e-12);
+  const struct vsph_dissipation_result a =
+      run(VSPH_VISCOUS_MGF, VSPH_FIELDS_STRAIN, VSPH_DISSIPATION_SQUARE, 40,
+          4.0 / 3.0, 0.0);
+  const struct vsph_dissipation_result b =
+      run(VSPH_VISCOUS_MGF, VSPH_FIELDS_STRAIN, VSPH_DISSIPATION_SQUARE, 80,
+          4.0 / 3.0, 0.0);
+  ck_assert_double_eq_tol(b.lattice_error, -0.06, 0.01);
+  ck_assert_double_eq_tol(a.lattice_error, b.lattice_error, 2e-3);
+  ck_assert_double_eq_tol(a.surface_error / b.surface_error, 2.0, 0.3);
+  ck_assert_double_gt(b.surface_error, 0.0); /* missing neighbours */
+  const struct vsph_dissipation_result c =
+      run(VSPH_VISCOUS_MGF, VSPH_FIELDS_STRAIN, VSPH_DISSIPATION_SQUARE, 80,
+          3.0, 0.0);
+  /* measured: -6.03 % at h/dx = 4/3, -0.20 % at h/dx = 3 */
+  ck_assert_double_le(fabs(c.lattice_error), 0.05 * fabs(b.lattice_error));
+}
+END_TEST
+
+/* MEAF: converges to P_grad = -mu int |grad u|^2: half the exact value on
+ * pure strain, and a dissipation of rigid rotation (rel_error -> -1). Tol
+ * 0.05: the surface deficit at 80 across is about 3 % (measured). */
+START_TEST(test_meaf) {
+  const struct vsph_dissipation_result s =
+      run(VSPH_VISCOUS_MEAF, VSPH_FIELDS_STRAIN, VSPH_DISSIPATION_SQUARE, 80,
+          4.0 / 3.0, 0.0);
+  ck_assert_double_eq_tol(s.P / s.P_grad, 1.0, 0.05);
+  ck_assert_double_eq_tol(s.rel_error, 0.5, 0.05);
+  const struct vsph_dissipation_result r =
+      run(VSPH_VISCOUS_MEAF, VSPH_FIELDS_ROTATION, VSPH_DISSIPATION_DISC, 80,
+          4.0 / 3.0, 0.0);
+  ck_assert_double_eq_tol(r.rel_error, -1.0, 0.05);
+  ck_assert_double_eq_tol(r.consistency_error, -1.0, 1e-12);
+  ck_assert_double_gt(r.angular, 0.1); /* MEAF does not conserve L */
+}
+END_TEST
+
+/* Mixed field on the square lattice: total momentum stays zero for every
+ * formulation; MGF's lattice error (-6 % at 4/3) shrinks with h/dx. For MEAF and PVWF the interior error on
+ * this nonlinear field is dominated by the O((kh)^2) smoothing error, which
+ * grows with h at fixed resolution, so only its size is bounded: below 1 %
+ * (measured 0.1-0.3 %). */
+START_TEST(test_mixed) {
+  for (int form = 0; form < 3; form++) {
+    const struct vsph_dissipation_result a =
+        run(form, VSPH_FIELDS_MIXED, VSPH_DISSIPATION_SQUARE, 60, 4.0 / 3.0, 0);
+    const struct vsph_dissipation_result b =
+        run(form, VSPH_FIELDS_MIXED, VSPH_DISSIPATION_SQUARE, 60, 2.0, 0);
+    if (form == VSPH_VISCOUS_MGF)
+      ck_assert_double_lt(fabs(b.lattice_error), 0.2 * fabs(a.lattice_error));
+    else
+      ck_assert_double_lt(fmax(fabs(a.lattice_error), fabs(b.lattice_error)),
+                          0.01);
+    ck_assert_double_le(a.momentum, 1e-12);
+  }
+}
+END_TEST
+
+Suite *vsph_dissipation_suite(void) {
+  Suite *s = suite_create("dissipation");
+  TCase *tc = tcase_create("integrals");
+  tcase_set_timeout(tc, 60);
+  tcase_add_test(tc, test_exact_integrals);
+  tcase_add_test(tc, test_pvwf_exact);
+  tcase_add_test(tc, test_mgf);
+  tcase_add_test(tc, test_meaf);
+  tcase_add_test(tc, test_mixed);
+  suite_add_tcase(s, tc);
+  return s;
+}

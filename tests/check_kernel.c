@@ -1,0 +1,103 @@
+#include <math.h>
+
+#include <gsl/gsl_integration.h>
+
+#include "../common/consts.h"
+#include "../kernels/kernel.h"
+#include "check_suites.h"
+
+struct kd {
+  const struct vsph_kernel_type *k;
+  int dim;
+};
+
+static double moment_integrand(double q, void *v) {
+  const struct kd *p = v;
+  return pow(q, p->dim - 1) * vsph_kernel_w(p->k, p->dim, q);
+}
+
+/* _i runs over kernel x dimension. */
+START_TEST(test_normalisation) {
+  const struct vsph_kernel_type *k = vsph_kernel_get((size_t)_i / 3);
+  struct kd p = {k, _i % 3 + 1};
+  gsl_integration_workspace *ws = gsl_integration_workspace_alloc(200);
+  gsl_function fn = {moment_integrand, &p};
+  double total = 0.0;
+  for (double lo = 0.0; lo < k->kappa; lo += 1.0) { /* split at the knots */
+    double res, err;
+    ck_assert_int_eq(gsl_integration_qag(&fn, lo, fmin(lo + 1.0, k->kappa),
+                                         0.0, 1e-13, 200, GSL_INTEG_GAUSS41,
+                                         ws, &res, &err),
+                     0);
+    total += res;
+  }
+  gsl_integration_workspace_free(ws);
+  /* surface of the unit sphere in d dimensions: 2, 2 pi, 4 pi */
+  const double area[3] = {2.0, 2.0 * VSPH_PI, 4.0 * VSPH_PI};
+  /* tol: quadrature requested at 1e-13; sigma literals carry 17+ digits */
+  ck_assert_double_eq_tol(area[p.dim - 1] * total, 1.0, 1e-11);
+}
+END_TEST
+
+START_TEST(test_derivative_fd) {
+  const struct vsph_kernel_type *k = vsph_kernel_get((size_t)_i / 3);
+  const int dim = _i % 3 + 1;
+  const double eps = 1e-5;
+  double scale = 0.0;
+  for (double q = 0.0; q < k->kappa; q += 0.01)
+    scale = fmax(scale, fabs(vsph_kernel_dw(k, dim, q)));
+  /* high-entropy points away from the knots at q = 1, 2 */
+  const double qs[] = {0.1234, 0.5871, 0.9345, 1.2348, 1.6180, 1.8765, 2.385,
+                       2.7182};
+  for (size_t m = 0; m < sizeof qs / sizeof qs[0]; m++) {
+    const double q = qs[m] * k->kappa / 3.0;
+    const double fd = (vsph_kernel_w(k, dim, q + eps) -
+                       vsph_kernel_w(k, dim, q - eps)) / (2.0 * eps);
+    /* centred difference: error ~ eps^2 w''' / 6 ~ 1e-10, rounding
+     * ~ 1e-16 / eps = 1e-11; 1e-8 of the slope scale covers both */
+    ck_assert_double_eq_tol(vsph_kernel_dw(k, dim, q), fd, 1e-8 * scale);
+  }
+}
+END_TEST
+
+START_TEST(test_sign_and_support) {
+  const struct vsph_kernel_type *k = vsph_kernel_get((size_t)_i / 3);
+  const int dim = _i % 3 + 1;
+  for (double q = 0.0; q <= k->kappa + 0.5; q += 0.0137) {
+    ck_assert(vsph_kernel_w(k, dim, q) >= 0.0);
+    ck_assert(vsph_kernel_dw(k, dim, q) <= 0.0);
+    if (q >= k->kappa) {
+      ck_assert(vsph_kernel_w(k, dim, q) == 0.0);
+      ck_assert(vsph_kernel_dw(k, dim, q) == 0.0);
+    }
+  }
+  /* continuity at the support edge: w(kappa^-) -> 0 (1e-12 of w(0)) */
+  ck_assert_double_eq_tol(vsph_kernel_w(k, dim, k->kappa * (1 - 1e-12)), 0.0,
+                          1e-12 * vsph_kernel_w(k, dim, 0.0));
+}
+END_TEST
+
+START_TEST(test_lookup) {
+  ck_assert_uint_eq(vsph_kernel_count(), 5);
+  for (size_t i = 0; i < vsph_kernel_count(); i++) {
+    const struct vsph_kernel_type *k = vsph_kernel_get(i);
+    ck_assert_ptr_nonnull(k);
+    ck_assert_ptr_eq(vsph_kernel_find(k->name), k);
+  }
+  ck_assert_ptr_null(vsph_kernel_find("gauss"));
+  ck_assert_ptr_null(vsph_kernel_get(5));
+  ck_assert_ptr_eq(vsph_kernel_find("gaussian"), &vsph_gaussian_type);
+}
+END_TEST
+
+Suite *vsph_kernel_suite(void) {
+  Suite *s = suite_create("kernel");
+  TCase *tc = tcase_create("properties");
+  const int n = (int)vsph_kernel_count() * 3;
+  tcase_add_loop_test(tc, test_normalisation, 0, n);
+  tcase_add_loop_test(tc, test_derivative_fd, 0, n);
+  tcase_add_loop_test(tc, test_sign_and_support, 0, n);
+  tcase_add_test(tc, test_lookup);
+  suite_add_tcase(s, tc);
+  return s;
+}

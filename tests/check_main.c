@@ -1,0 +1,37 @@
+/* The single Check runner. No OpenMP region may run before
+ * srunner_run_all: forked tests would deadlock in their first one. */
+#include <stdlib.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "../common/status.h"
+#include "check_suites.h"
+
+static int last_status;
+static void silent(int status, const char *file, int line, const char *msg) {
+  (void)file;
+  (void)line;
+  (void)msg;
+  last_status = status;
+}
+void vsph_test_silence(void) {
+  last_status = 0;
+  vsph_status_set_handler(silent);
+}
+int vsph_test_last_status(void) { return last_status; }
+
+int main(void) {
+  gsl_set_error_handler_off();
+  SRunner *sr = srunner_create(vsph_status_suite());
+  srunner_add_suite(sr, vsph_kernel_suite());
+  srunner_add_suite(sr, vsph_moments_suite());
+  srunner_add_suite(sr, vsph_cells_suite());
+  srunner_add_suite(sr, vsph_viscous_suite());
+  srunner_add_suite(sr, vsph_scaling_suite());
+  srunner_add_suite(sr, vsph_dissipation_suite());
+  srunner_add_suite(sr, vsph_cli_suite());
+  srunner_run_all(sr, CK_NORMAL);
+  const int failed = srunner_ntests_failed(sr);
+  srunner_free(sr);
+  return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+}

@@ -1,0 +1,226 @@
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_rng.h>
+
+#include "../kernels/kernel.h"
+#include "../solver/cells.h"
+#include "../solver/lattice.h"
+#include "../solver/particles.h"
+#include "../solver/viscous.h"
+#include "check_suites.h"
+
+/* A perturbed square patch (free surface all round) carrying a random
+ * velocity field, in dim = 2 or 3. */
+static struct vsph_particles *random_set(int dim, unsigned long seed) {
+  struct vsph_lattice_props lp = {.dim = dim, .kind = VSPH_LATTICE_SQUARE,
+                                  .dx = 0.05, .perturb = 0.25, .seed = seed};
+  struct vsph_particles *p = NULL;
+  size_t c;
+  ck_assert_int_eq(
+      vsph_lattice_halfspace(&lp, dim == 2 ? 0.6 : 0.3, 0.13, &p, &c), 0);
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, seed);
+  for (size_t i = 0; i < p->n; i++) {
+    /* slightly non-uniform volumes too */
+    p->vol[i] *= 0.9 + 0.2 * gsl_rng_uniform(rng);
+    for (int k = 0; k < dim; k++) p->vel[k][i] = gsl_rng_uniform(rng) - 0.5;
+  }
+  gsl_rng_free(rng);
+  return p;
+}
+
+struct run {
+  double *f[3], *dens, *buf;
+  size_t n_fallback;
+};
+
+static void run_form(int form, struct vsph_particles *p, int direct,
+                     struct run *r) {
+  const int dim = p->dim;
+  struct vsph_viscous_props vp;
+  ck_assert_int_eq(vsph_viscous_props_init(&vp, form, &vsph_gaussian_type,
+                                           dim, 1.3333 * 0.05, 0.0137),
+                   0);
+  struct vsph_cells *c = vsph_cells_alloc();
+  if (direct)
+    ck_assert_int_eq(vsph_cells_build_direct(c, p), 0);
+  else
+    ck_assert_int_eq(vsph_cells_build(c, p, 3.0 * vp.h), 0);
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(p->n, dim);
+  r->buf = calloc(4 * p->n, sizeof(double));
+  for (int k = 0; k < 3; k++) r->f[k] = k < dim ? r->buf + k * p->n : NULL;
+  r->dens = r->buf + 3 * p->n;
+  ck_assert_int_eq(vsph_viscous_compute(&vp, p, c, ws, r->f, r->dens), 0);
+  r->n_fallback = ws->n_fallback;
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(c);
+}
+
+/* THEORY 3 derivation check: for any velocities, PVWF gives
+ * sum V u.(div V) = -sum V T:D, and every formulation's pairwise density
+ * sums to the same P; zero total force; angular momentum for MGF and PVWF
+ * but not MEAF; MGF and MEAF dissipate (P <= 0). */
+START_TEST(test_identities) {
+  const int dim = 2 + _i % 2, form = _i / 2;
+  struct vsph_particles *p = random_set(dim, 2385 + (unsigned long)_i);
+  struct run r;
+  run_form(form, p, 0, &r);
+  double P = 0, Pp = 0, Pabs = 0, F[3] = {0}, Fabs = 0, L = 0, Labs = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    const double V = p->vol[i];
+    double fu = 0.0, f2 = 0.0, x2 = 0.0;
+    for (int k = 0; k < dim; k++) {
+      fu += p->vel[k][i] * r.f[k][i];
+      F[k] += V * r.f[k][i];
+      f2 += r.f[k][i] * r.f[k][i];
+      x2 += p->pos[k][i] * p->pos[k][i];
+    }
+    P += V * fu;
+    Pabs += V * fabs(fu);
+    Pp += V * r.dens[i];
+    Fabs += V * sqrt(f2);
+    /* z component of x x f (the (0,1) plane in 3-D) */
+    L += V * (p->pos[0][i] * r.f[1][i] - p->pos[1][i] * r.f[0][i]);
+    Labs += V * sqrt(x2 * f2);
+  }
+  /* tol 1e-12: sums of ~1e3-1e4 terms of mixed sign, each exact to ~1e-16
+   * relative; a missing factor or pair would show at O(1). */
+  ck_assert_double_le(fabs(P - Pp), 1e-12 * Pabs);
+  for (int k = 0; k < dim; k++) ck_assert_double_le(fabs(F[k]), 1e-12 * Fabs);
+  if (form == VSPH_VISCOUS_MEAF)
+    ck_assert_double_ge(fabs(L), 1e-3 * Labs);
+  else
+    ck_assert_double_le(fabs(L), 1e-12 * Labs);
+  if (form != VSPH_VISCOUS_PVWF) ck_assert_double_lt(P, 0.0);
+  ck_assert_uint_eq(r.n_fallback, 0);
+  free(r.buf);
+  vsph_particles_free(p);
+}
+END_TEST
+
+/* Cell list against O(N^2): same values to 1e-12 relative (the sums run
+ * over the same neighbours in a different order). */
+START_TEST(test_cells_vs_direct) {
+  const int dim = 2 + _i % 2, form = _i / 2;
+  struct vsph_particles *p = random_set(dim, 99);
+  struct run a, b;
+  run_form(form, p, 1, &a);
+  double *fa = malloc(dim * p->n * sizeof *fa);
+  for (size_t i = 0; i < p->n; i++) /* direct keeps the input order */
+    for (int k = 0; k < dim; k++) fa[k * p->n + p->id[i]] = a.f[k][i];
+  run_form(form, p, 0, &b); /* reorders p */
+  double scale = 0.0;
+  for (size_t i = 0; i < p->n; i++)
+    for (int k = 0; k < dim; k++) scale = fmax(scale, fabs(b.f[k][i]));
+  for (size_t i = 0; i < p->n; i++)
+    for (int k = 0; k < dim; k++)
+      ck_assert_double_eq_tol(b.f[k][i], fa[k * p->n + p->id[i]],
+                              1e-12 * scale);
+  free(fa);
+  free(a.buf);
+  free(b.buf);
+  vsph_particles_free(p);
+}
+END_TEST
+
+/* 1 thread against 2 threads: bitwise identical (gather loops). */
+START_TEST(test_threads_bitwise) {
+  const int dim = 2 + _i % 2, form = _i / 2;
+  struct vsph_particles *p = random_set(dim, 4242);
+  struct run a, b;
+  omp_set_num_threads(1);
+  run_form(form, p, 0, &a);
+  omp_set_num_threads(2);
+  run_form(form, p, 0, &b);
+  ck_assert_int_eq(memcmp(a.buf, b.buf, 4 * p->n * sizeof(double)), 0);
+  free(a.buf);
+  free(b.buf);
+  vsph_particles_free(p);
+}
+END_TEST
+
+/* PVWF's renormalised gradient is exact for a linear field at every
+ * particle, surface included: -T:D = -(2 mu D:D + lambda tr(D)^2). */
+START_TEST(test_pvwf_linear_exact) {
+  struct vsph_particles *p = random_set(2, 5);
+  const double G[4] = {0.37, -1.21, 0.83, 0.59}; /* du_a/dx_b */
+  for (size_t i = 0; i < p->n; i++) {
+    const double x = p->pos[0][i], y = p->pos[1][i];
+    p->vel[0][i] = G[0] * x + G[1] * y;
+    p->vel[1][i] = G[2] * x + G[3] * y;
+  }
+  struct run r;
+  run_form(VSPH_VISCOUS_PVWF, p, 0, &r);
+  const double mu = 0.0137, lambda = -mu, tr = G[0] + G[3];
+  const double D01 = 0.5 * (G[1] + G[2]);
+  const double want =
+      -(2 * mu * (G[0] * G[0] + G[3] * G[3] + 2 * D01 * D01) +
+        lambda * tr * tr);
+  /* tol: L B = I to rounding with condition numbers ~10 at the corners */
+  for (size_t i = 0; i < p->n; i++)
+    ck_assert_double_eq_tol(r.dens[i], want, 1e-12 * fabs(want));
+  free(r.buf);
+  vsph_particles_free(p);
+}
+END_TEST
+
+/* An isolated particle has no support: L falls back to I and is counted. */
+START_TEST(test_pvwf_fallback) {
+  struct vsph_particles *p = vsph_particles_alloc(8, 2);
+  p->n = 3;
+  const double xs[3] = {0.0, 0.03, 5.0}; /* two neighbours, one alone */
+  for (size_t i = 0; i < 3; i++) {
+    p->pos[0][i] = xs[i];
+    p->pos[1][i] = 0.0;
+    p->vol[i] = p->m[i] = p->rho[i] = 1.0;
+    p->id[i] = i;
+  }
+  struct run r;
+  run_form(VSPH_VISCOUS_PVWF, p, 0, &r);
+  /* all three fall back: the pair is collinear (rank-1 B), one is alone */
+  ck_assert_uint_eq(r.n_fallback, 3);
+  free(r.buf);
+  vsph_particles_free(p);
+}
+END_TEST
+
+START_TEST(test_errors) {
+  vsph_test_silence();
+  struct vsph_viscous_props vp;
+  ck_assert_int_eq(vsph_viscous_props_init(&vp, 7, &vsph_cubic_type, 2, 1, 1),
+                   1);
+  ck_assert_int_eq(vsph_viscous_props_init(&vp, 0, &vsph_cubic_type, 2, 0, 1),
+                   1);
+  ck_assert_int_eq(vsph_viscous_props_init(&vp, 0, &vsph_cubic_type, 2, 1, -1),
+                   1);
+  ck_assert_int_eq(vsph_viscous_find("pvwf"), VSPH_VISCOUS_PVWF);
+  ck_assert_int_eq(vsph_viscous_find("sph"), -1);
+  struct vsph_particles *p = random_set(2, 1);
+  ck_assert_int_eq(vsph_viscous_props_init(&vp, VSPH_VISCOUS_PVWF,
+                                           &vsph_cubic_type, 2, 0.1, 1),
+                   0);
+  struct vsph_cells *c = vsph_cells_alloc();
+  vsph_cells_build_direct(c, p);
+  double *f[3] = {p->acc[0], p->acc[1], NULL};
+  ck_assert_int_eq(vsph_viscous_compute(&vp, p, c, NULL, f, NULL), 1);
+  vsph_cells_free(c);
+  vsph_particles_free(p);
+}
+END_TEST
+
+Suite *vsph_viscous_suite(void) {
+  Suite *s = suite_create("viscous");
+  TCase *tc = tcase_create("operators");
+  tcase_set_timeout(tc, 60);
+  tcase_add_loop_test(tc, test_identities, 0, 6);
+  tcase_add_loop_test(tc, test_cells_vs_direct, 0, 6);
+  tcase_add_loop_test(tc, test_threads_bitwise, 0, 6);
+  tcase_add_test(tc, test_pvwf_linear_exact);
+  tcase_add_test(tc, test_pvwf_fallback);
+  tcase_add_test(tc, test_errors);
+  suite_add_tcase(s, tc);
+  return s;
+}
