@@ -47,7 +47,7 @@ $(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ)
 # Every test, through the single Check runner (STYLE B10).
 check: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph $(BUILD)/check_vsph
-	@$(MAKE) --no-print-directory prefix-check
+	@$(MAKE) --no-print-directory prefix-check format-check
 	VSPH_BIN=$(BUILD)/vsph OMP_NUM_THREADS=2 $(BUILD)/check_vsph
 
 test: check
@@ -84,7 +84,7 @@ FMT_SRC = $(wildcard */*.c */*.h)
 format:
 	clang-format -i $(FMT_SRC)
 format-check:
-	clang-format --dry-run --Werror $(FMT_SRC)
+	@clang-format --dry-run --Werror $(FMT_SRC) && echo "format-check: ok"
 
 clean:
 	rm -rf build build-asan

@@ -1,11 +1,10 @@
 #include "dissipation.h"
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_integration.h>
 
 #include "../common/consts.h"
 #include "../common/status.h"
@@ -27,9 +26,8 @@ _Static_assert(sizeof shape_names / sizeof shape_names[0] ==
 static const double EXTENT = 1.0;
 
 const char *vsph_dissipation_shape_name(int shape) {
-  return shape >= 0 && shape < VSPH_DISSIPATION_SHAPE_COUNT
-             ? shape_names[shape]
-             : "unknown";
+  return shape >= 0 && shape < VSPH_DISSIPATION_SHAPE_COUNT ? shape_names[shape]
+                                                            : "unknown";
 }
 
 int vsph_dissipation_shape_find(const char *name) {
@@ -108,9 +106,9 @@ static double outer_fn(double s, void *v) {
   const double lo = disc ? 0.0 : -0.5 * EXTENT;
   const double hi = disc ? 2.0 * VSPH_PI : 0.5 * EXTENT;
   double res, err;
-  const int st = gsl_integration_qag(&fn, lo, hi, 1e-300, 0.1 * e->epsrel,
-                                     e->inner->limit, GSL_INTEG_GAUSS41,
-                                     e->inner, &res, &err);
+  const int st =
+      gsl_integration_qag(&fn, lo, hi, 1e-300, 0.1 * e->epsrel, e->inner->limit,
+                          GSL_INTEG_GAUSS41, e->inner, &res, &err);
   if (st && st != GSL_EROUND && !e->status) e->status = st;
   return res;
 }
@@ -134,8 +132,9 @@ int vsph_dissipation_exact(const struct vsph_dissipation_props *dp,
     double err;
     /* epsabs 1e-300: an integrand that is identically zero (D = 0 for a
      * rotation) still terminates, with the exact result 0. */
-    const int st = gsl_integration_qag(&fn, lo, hi, 1e-300, dp->epsrel, wo->limit,
-                                       GSL_INTEG_GAUSS41, wo, &out[which], &err);
+    const int st =
+        gsl_integration_qag(&fn, lo, hi, 1e-300, dp->epsrel, wo->limit,
+                            GSL_INTEG_GAUSS41, wo, &out[which], &err);
     if ((st && st != GSL_EROUND) || e.status) {
       vsph_status_report(VSPH_ELIB, __FILE__, __LINE__,
                          "dissipation quadrature: %s",
@@ -153,8 +152,7 @@ int vsph_dissipation_exact(const struct vsph_dissipation_props *dp,
 
 /* Distance from x to the edge of the shape (positive inside). */
 static double edge_distance(int shape, const double x[3]) {
-  if (shape == VSPH_DISSIPATION_DISC)
-    return 0.5 * EXTENT - hypot(x[0], x[1]);
+  if (shape == VSPH_DISSIPATION_DISC) return 0.5 * EXTENT - hypot(x[0], x[1]);
   return 0.5 * EXTENT - fmax(fabs(x[0]), fabs(x[1]));
 }
 
@@ -163,7 +161,8 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
   if (dp->field.dim != 2)
     VSPH_FAIL(VSPH_EINVAL, "the dissipation sets are 2-D");
   if (dp->field.kind == VSPH_FIELDS_QUADRATIC)
-    VSPH_FAIL(VSPH_EINVAL, "the dissipation fields are rotation, strain, mixed");
+    VSPH_FAIL(VSPH_EINVAL,
+              "the dissipation fields are rotation, strain, mixed");
   if (!(dp->hdx > 0.0) || !isfinite(dp->hdx))
     VSPH_FAIL(VSPH_EINVAL, "h/dx must be positive, got %g", dp->hdx);
   if (dp->nacross < 2)
@@ -173,8 +172,10 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
   const double dx = EXTENT / (double)dp->nacross, h = dp->hdx * dx;
   res->dx = dx;
   res->h = h;
-  struct vsph_lattice_props lp = {.dim = 2, .kind = VSPH_LATTICE_SQUARE,
-                                  .dx = dx, .perturb = dp->perturb,
+  struct vsph_lattice_props lp = {.dim = 2,
+                                  .kind = VSPH_LATTICE_SQUARE,
+                                  .dx = dx,
+                                  .perturb = dp->perturb,
                                   .seed = dp->seed};
   struct vsph_particles *p = NULL;
   int st = dp->shape == VSPH_DISSIPATION_DISC
@@ -200,8 +201,7 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
   if ((st = vsph_cells_build(cells, p, dp->kernel->kappa * h))) goto done;
   double *f[3] = {buf, buf + p->n, NULL}, *dens = buf + 2 * p->n;
   if ((st = vsph_viscous_compute(&vp, p, cells, ws, f, dens))) goto done;
-  if ((st = vsph_dissipation_exact(dp, &res->P_exact, &res->P_grad)))
-    goto done;
+  if ((st = vsph_dissipation_exact(dp, &res->P_exact, &res->P_grad))) goto done;
 
   /* Serial sums in particle order: reproducible for any thread count. */
   const double H = dp->kernel->kappa * h;
@@ -218,7 +218,7 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
     ang_abs += V * hypot(x[0], x[1]) * hypot(f[0][i], f[1][i]);
     if (edge_distance(dp->shape, x) >= H) {
       const struct densities d = densities_at(&dp->field, dp->mu, x);
-      const double lim = dp->form == VSPH_VISCOUS_MEAF ? d.grad2
+      const double lim = dp->form == VSPH_VISCOUS_MEAF  ? d.grad2
                          : dp->form == VSPH_VISCOUS_MGF ? d.vd_mgf
                                                         : d.vd_stokes;
       res->n_interior++;
@@ -241,8 +241,8 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
   res->rel_error = exact_zero ? P / norm : (P - res->P_exact) / norm;
   /* All dissipation fields are divergence-free, so MGF's lambda = mu and
    * the Stokes lambda give the same limit; MEAF's limit is P_grad. */
-  const double P_limit = dp->form == VSPH_VISCOUS_MEAF ? res->P_grad
-                                                       : res->P_exact;
+  const double P_limit =
+      dp->form == VSPH_VISCOUS_MEAF ? res->P_grad : res->P_exact;
   res->consistency_error = (P_limit - res->P_exact) / norm;
   if (res->n_interior > 0) {
     const double nint = fabs(Pint_lim) > 1e-12 * fabs(Pint_grad)

@@ -25,34 +25,34 @@ enum vsph_dissipation_shape {
 
 /** One dissipation evaluation. */
 struct vsph_dissipation_props {
-  int form;                               /*!< viscous formulation */
-  const struct vsph_kernel_type *kernel;  /*!< smoothing kernel */
-  struct vsph_fields_props field;         /*!< 2-D analytic field */
-  enum vsph_dissipation_shape shape;      /*!< disc or square */
-  size_t nacross;                         /*!< particles across the shape */
-  double hdx;                             /*!< h / dx */
-  double mu;                              /*!< dynamic viscosity (Pa s) */
-  double perturb;                         /*!< lattice perturbation / dx */
-  unsigned long seed;                     /*!< perturbation seed */
-  double epsrel;                          /*!< accuracy of the exact integrals */
+  int form;                              /*!< viscous formulation */
+  const struct vsph_kernel_type *kernel; /*!< smoothing kernel */
+  struct vsph_fields_props field;        /*!< 2-D analytic field */
+  enum vsph_dissipation_shape shape;     /*!< disc or square */
+  size_t nacross;                        /*!< particles across the shape */
+  double hdx;                            /*!< h / dx */
+  double mu;                             /*!< dynamic viscosity (Pa s) */
+  double perturb;                        /*!< lattice perturbation / dx */
+  unsigned long seed;                    /*!< perturbation seed */
+  double epsrel;                         /*!< accuracy of the exact integrals */
 };
 
 /** What one evaluation measured (powers in W per unit depth). */
 struct vsph_dissipation_result {
-  size_t n_particles;      /*!< particles in the set */
-  size_t n_interior;       /*!< particles at least kappa h from the edge */
-  double h, dx;            /*!< smoothing length and spacing (m) */
-  double P;                /*!< sum_i V_i u_i.(div V)_i */
-  double P_pair;           /*!< sum_i V_i p_i (pairwise form; = P exactly) */
-  double P_exact;          /*!< -int V:D dV (Stokes lambda = -2 mu/d) */
-  double P_grad;           /*!< -mu int |grad u|^2 dV */
-  double rel_error;        /*!< (P - P_exact)/|P_exact|, or P/|P_grad| */
-  double consistency_error;/*!< (P_limit - P_exact)/norm: MEAF's W:W term */
-  double lattice_error;    /*!< interior sum vs its continuous limit */
-  double surface_error;    /*!< the rest: (P - P_limit)/norm - lattice */
-  double momentum;         /*!< |sum V_i (div V)_i| / sum V_i |(div V)_i| */
-  double angular;          /*!< |sum V_i x_i x (div V)_i| / sum |..| */
-  size_t n_fallback;       /*!< PVWF particles whose L fell back to I */
+  size_t n_particles;       /*!< particles in the set */
+  size_t n_interior;        /*!< particles at least kappa h from the edge */
+  double h, dx;             /*!< smoothing length and spacing (m) */
+  double P;                 /*!< sum_i V_i u_i.(div V)_i */
+  double P_pair;            /*!< sum_i V_i p_i (pairwise form; = P exactly) */
+  double P_exact;           /*!< -int V:D dV (Stokes lambda = -2 mu/d) */
+  double P_grad;            /*!< -mu int |grad u|^2 dV */
+  double rel_error;         /*!< (P - P_exact)/|P_exact|, or P/|P_grad| */
+  double consistency_error; /*!< (P_limit - P_exact)/norm: MEAF's W:W term */
+  double lattice_error;     /*!< interior sum vs its continuous limit */
+  double surface_error;     /*!< the rest: (P - P_limit)/norm - lattice */
+  double momentum;          /*!< |sum V_i (div V)_i| / sum V_i |(div V)_i| */
+  double angular;           /*!< |sum V_i x_i x (div V)_i| / sum |..| */
+  size_t n_fallback;        /*!< PVWF particles whose L fell back to I */
 };
 
 /** @brief Name of a shape ("disc", "square"). */

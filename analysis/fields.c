@@ -30,7 +30,8 @@ int vsph_fields_find(const char *name) {
 int vsph_fields_props_init(struct vsph_fields_props *fp, int kind, int dim) {
   if (kind < 0 || kind >= VSPH_FIELDS_KIND_COUNT)
     VSPH_FAIL(VSPH_EINVAL, "unknown field %d", kind);
-  if (dim < 1 || dim > 3) VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", dim);
+  if (dim < 1 || dim > 3)
+    VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", dim);
   if (kind == VSPH_FIELDS_ROTATION && dim < 2)
     VSPH_FAIL(VSPH_EINVAL, "rotation needs at least 2 dimensions");
   if ((kind == VSPH_FIELDS_MIXED || kind == VSPH_FIELDS_QUADRATIC) && dim != 2)

@@ -1,9 +1,8 @@
 #include "moments.h"
 
+#include <gsl/gsl_errno.h>
 #include <math.h>
 #include <string.h>
-
-#include <gsl/gsl_errno.h>
 
 #include "../common/consts.h"
 #include "../common/status.h"
@@ -14,13 +13,13 @@
 struct quad {
   const struct vsph_kernel_type *k;
   int dim;
-  double depth;         /* units of h */
-  int power;            /* radial weight s^power: d-1 for F,N; d for G,M */
-  int a, b, c;          /* exponents of the tangential(s) and the normal */
-  double r_kappa;       /* R_power(kappa), cached */
+  double depth;   /* units of h */
+  int power;      /* radial weight s^power: d-1 for F,N; d for G,M */
+  int a, b, c;    /* exponents of the tangential(s) and the normal */
+  double r_kappa; /* R_power(kappa), cached */
   double epsrel;
   gsl_integration_workspace *inner;
-  int status;           /* first GSL failure inside the integrand */
+  int status; /* first GSL failure inside the integrand */
 };
 
 static double radial_integrand(double s, void *v) {
@@ -119,8 +118,7 @@ static int outer_integral(struct quad *q, double (*f)(double, void *),
 
 /* Angular integral of x^a y^b z^c R_p over the unit sphere (dim-adapted):
  * a, b tangential exponents, c normal exponent. */
-static int angular(struct quad *q, gsl_integration_workspace *ws,
-                   double *out) {
+static int angular(struct quad *q, gsl_integration_workspace *ws, double *out) {
   const int dim = q->dim;
   const double kappa = q->k->kappa;
   if (dim == 1) {
@@ -145,8 +143,7 @@ static int angular(struct quad *q, gsl_integration_workspace *ws,
 }
 
 /* Exponents (tangential a, b; normal c) of the monomial x_i x_j ... */
-static void exponents(int dim, const int *idx, int n, int *a, int *b,
-                      int *c) {
+static void exponents(int dim, const int *idx, int n, int *a, int *b, int *c) {
   *a = *b = *c = 0;
   for (int m = 0; m < n; m++) {
     if (idx[m] == dim - 1)
@@ -188,15 +185,16 @@ int vsph_moments_quadrature(const struct vsph_kernel_type *k, int dim,
                             gsl_integration_workspace *outer,
                             gsl_integration_workspace *inner,
                             struct vsph_moments *out) {
-  if (dim < 1 || dim > 3) VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", dim);
+  if (dim < 1 || dim > 3)
+    VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", dim);
   if (!(depth >= 0.0) || !isfinite(depth))
     VSPH_FAIL(VSPH_EINVAL, "depth must be >= 0, got %g", depth);
   if (!(epsrel >= 1e-13))
     VSPH_FAIL(VSPH_EINVAL, "epsrel must be >= 1e-13, got %g", epsrel);
   if (outer == inner)
     VSPH_FAIL(VSPH_EINVAL, "outer and inner workspaces must differ");
-  struct quad q = {.k = k, .dim = dim, .depth = depth, .epsrel = epsrel,
-                   .inner = inner};
+  struct quad q = {
+      .k = k, .dim = dim, .depth = depth, .epsrel = epsrel, .inner = inner};
   double rk[2];
   for (int which = 0; which < 2; which++) {
     q.power = dim - 1 + which;
@@ -242,7 +240,8 @@ static double i_integrand(double qv, void *v) {
 int vsph_moments_constants(const struct vsph_kernel_type *k, int dim,
                            double epsrel, gsl_integration_workspace *ws,
                            double *C_F, double *C_N) {
-  if (dim < 1 || dim > 3) VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", dim);
+  if (dim < 1 || dim > 3)
+    VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", dim);
   const double K = 2.0 * (dim + 2);
   if (dim == 1) {
     const double w0 = vsph_kernel_w(k, 1, 0.0);
@@ -285,8 +284,8 @@ void vsph_moments_theory(int dim, int half, double C_F, double C_N,
       for (int l = 0; l < dim; l++) {
         const double dil = i == l, djl = j == l;
         if (half)
-          out->F[i][j][l] =
-              -C_F * (dij * n[l] + dil * n[j] + djl * n[i] - n[i] * n[j] * n[l]);
+          out->F[i][j][l] = -C_F * (dij * n[l] + dil * n[j] + djl * n[i] -
+                                    n[i] * n[j] * n[l]);
         for (int m = 0; m < dim; m++) {
           const double dlm = l == m, dim_ = i == m, djm = j == m;
           out->G[i][j][l][m] = f * (dij * dlm + dil * djm + dim_ * djl);

@@ -1,9 +1,8 @@
 #ifndef VSPH_ANALYSIS_MOMENTS_H
 #define VSPH_ANALYSIS_MOMENTS_H
 
-#include <stddef.h>
-
 #include <gsl/gsl_integration.h>
+#include <stddef.h>
 
 struct vsph_kernel_type;
 struct vsph_particles;
@@ -17,11 +16,11 @@ struct vsph_particles;
 
 /** The four tensors; entries beyond dim are zero. Index d-1 is normal. */
 struct vsph_moments {
-  int dim;                 /*!< 1, 2 or 3 */
-  double F[3][3][3];       /*!< F_ijk = -K int x_i x_j x_k / s^3 W' dV */
-  double G[3][3][3][3];    /*!< G_ijkl = -K/2 int x_i x_j x_k x_l / s^3 W' */
-  double N[3];             /*!< N_j = -2 int x_j / s W' dV */
-  double M[3][3];          /*!< M_jk = - int x_j x_k / s W' dV */
+  int dim;              /*!< 1, 2 or 3 */
+  double F[3][3][3];    /*!< F_ijk = -K int x_i x_j x_k / s^3 W' dV */
+  double G[3][3][3][3]; /*!< G_ijkl = -K/2 int x_i x_j x_k x_l / s^3 W' */
+  double N[3];          /*!< N_j = -2 int x_j / s W' dV */
+  double M[3][3];       /*!< M_jk = - int x_j x_k / s W' dV */
 };
 
 /** @brief F, G, N, M at depth @p depth (units of h, >= 0) by nested GSL

@@ -1,10 +1,9 @@
 #include "scaling.h"
 
+#include <gsl/gsl_fit.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include <gsl/gsl_fit.h>
 
 #include "../common/status.h"
 #include "../kernels/kernel.h"
@@ -81,7 +80,9 @@ int vsph_scaling_surface(const struct vsph_scaling_props *sp,
                                                         : fabs(sp->field.Omega);
   for (size_t l = 0; l < sp->levels; l++) {
     const double h = sp->h0 / pow(2.0, (double)l), dx = h / sp->hdx;
-    struct vsph_lattice_props lp = {.dim = dim, .kind = sp->lattice, .dx = dx,
+    struct vsph_lattice_props lp = {.dim = dim,
+                                    .kind = sp->lattice,
+                                    .dx = dx,
                                     .perturb = sp->perturb,
                                     .seed = sp->seed + l};
     struct vsph_particles *p = NULL;
@@ -142,7 +143,8 @@ int vsph_scaling_interior(const struct vsph_scaling_props *sp,
   if (sp->field.kind != VSPH_FIELDS_QUADRATIC || sp->field.dim != 2)
     VSPH_FAIL(VSPH_EINVAL, "the interior sweep takes the 2-D quadratic field");
   if (n < 1 || n > VSPH_SCALING_MAXLEVELS)
-    VSPH_FAIL(VSPH_EINVAL, "between 1 and %d h/dx values", VSPH_SCALING_MAXLEVELS);
+    VSPH_FAIL(VSPH_EINVAL, "between 1 and %d h/dx values",
+              VSPH_SCALING_MAXLEVELS);
   memset(res, 0, sizeof *res);
   res->n = n;
   const double h = sp->h0;
@@ -157,8 +159,11 @@ int vsph_scaling_interior(const struct vsph_scaling_props *sp,
   for (size_t l = 0; l < n; l++) {
     if (!(hdx[l] > 0.0)) VSPH_FAIL(VSPH_EINVAL, "h/dx must be positive");
     const double dx = h / hdx[l];
-    struct vsph_lattice_props lp = {.dim = 2, .kind = sp->lattice, .dx = dx,
-                                    .perturb = sp->perturb, .seed = sp->seed};
+    struct vsph_lattice_props lp = {.dim = 2,
+                                    .kind = sp->lattice,
+                                    .dx = dx,
+                                    .perturb = sp->perturb,
+                                    .seed = sp->seed};
     struct vsph_particles *p = NULL;
     size_t centre, c;
     const double radius = sp->kernel->kappa * h + 2.0 * dx;

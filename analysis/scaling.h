@@ -34,24 +34,24 @@ struct vsph_scaling_props {
 
 /** Surface sweep results; index l is level l (h = h0 / 2^l). */
 struct vsph_scaling_result {
-  size_t levels;                                 /*!< levels run */
-  double h[VSPH_SCALING_MAXLEVELS];              /*!< smoothing length */
-  double hF[VSPH_SCALING_MAXLEVELS];             /*!< h F_ddd (normal) */
-  double hN[VSPH_SCALING_MAXLEVELS];             /*!< h N_d (normal) */
-  double normal[3][VSPH_SCALING_MAXLEVELS];      /*!< n.(div V)_i per form */
-  double tangential[3][VSPH_SCALING_MAXLEVELS];  /*!< |(I - nn)(div V)_i| */
-  double magnitude[3][VSPH_SCALING_MAXLEVELS];   /*!< |(div V)_i| */
-  double slope[3];     /*!< log-log slope of the magnitude against h */
-  int rounding[3];     /*!< 1 if every value is at rounding level (slope NaN) */
+  size_t levels;                                /*!< levels run */
+  double h[VSPH_SCALING_MAXLEVELS];             /*!< smoothing length */
+  double hF[VSPH_SCALING_MAXLEVELS];            /*!< h F_ddd (normal) */
+  double hN[VSPH_SCALING_MAXLEVELS];            /*!< h N_d (normal) */
+  double normal[3][VSPH_SCALING_MAXLEVELS];     /*!< n.(div V)_i per form */
+  double tangential[3][VSPH_SCALING_MAXLEVELS]; /*!< |(I - nn)(div V)_i| */
+  double magnitude[3][VSPH_SCALING_MAXLEVELS];  /*!< |(div V)_i| */
+  double slope[3]; /*!< log-log slope of the magnitude against h */
+  int rounding[3]; /*!< 1 if every value is at rounding level (slope NaN) */
 };
 
 /** Interior sweep results over h/dx. */
 struct vsph_scaling_interior {
-  size_t n;                                /*!< h/dx values */
-  double hdx[VSPH_SCALING_MAXLEVELS];      /*!< h / dx */
-  double mgf[VSPH_SCALING_MAXLEVELS];      /*!< |MGF - mu(lap u + 2 grad div u)|
-                                                / |target| */
-  double meaf[VSPH_SCALING_MAXLEVELS];     /*!< |MEAF - mu lap u| / |target| */
+  size_t n;                            /*!< h/dx values */
+  double hdx[VSPH_SCALING_MAXLEVELS];  /*!< h / dx */
+  double mgf[VSPH_SCALING_MAXLEVELS];  /*!< |MGF - mu(lap u + 2 grad div u)|
+                                            / |target| */
+  double meaf[VSPH_SCALING_MAXLEVELS]; /*!< |MEAF - mu lap u| / |target| */
 };
 
 /** @brief Defaults: 5 levels from h0 = 0.1, h/dx = 4/3, mu = 0.0137,

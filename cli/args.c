@@ -65,9 +65,7 @@ static void cli_handler(int status, const char *file, int line,
   if (last_msg[0] == '\0') snprintf(last_msg, sizeof last_msg, "%s", msg);
 }
 
-void vsph_args_install_handler(void) {
-  vsph_status_set_handler(cli_handler);
-}
+void vsph_args_install_handler(void) { vsph_status_set_handler(cli_handler); }
 
 const char *vsph_args_last_error(void) {
   static char copy[1024];

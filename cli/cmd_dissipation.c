@@ -64,8 +64,9 @@ int vsph_cmd_dissipation_main(int argc, char **argv) {
     } else if (!strcmp(a, "--hdx") || !strcmp(a, "--mu") ||
                !strcmp(a, "--perturb")) {
       if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      double *dst = !strcmp(a, "--hdx") ? &hdx : !strcmp(a, "--mu") ? &mu
-                                                                    : &perturb;
+      double *dst = !strcmp(a, "--hdx")  ? &hdx
+                    : !strcmp(a, "--mu") ? &mu
+                                         : &perturb;
       if (vsph_args_double(CMD, a, v, dst)) return 2;
     } else if (!strcmp(a, "--res") || !strcmp(a, "--seed")) {
       if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
@@ -89,8 +90,8 @@ int vsph_cmd_dissipation_main(int argc, char **argv) {
     return vsph_args_fail(CMD, "unknown field '%s' (rotation, strain, mixed)",
                           field);
   const int sh = vsph_dissipation_shape_find(shape);
-  if (sh < 0) return vsph_args_fail(CMD, "unknown shape '%s' (disc, square)",
-                                    shape);
+  if (sh < 0)
+    return vsph_args_fail(CMD, "unknown shape '%s' (disc, square)", shape);
   dp.shape = sh;
   dp.kernel = vsph_kernel_find(kname);
   if (!dp.kernel) return vsph_args_fail(CMD, "unknown kernel '%s'", kname);
@@ -137,10 +138,10 @@ int vsph_cmd_dissipation_main(int argc, char **argv) {
     cJSON_AddNumberToObject(o, "n_fallback", (double)r.n_fallback);
     return vsph_writers_print_json(o) ? 1 : 0;
   }
-  printf("# vsph %s dissipation: %s, field %s, %s, %zu across, h/dx = %g, "
-         "kernel %s, mu = %g, perturbation %g dx\n",
-         VSPH_VERSION, form, field, shape, res, hdx, dp.kernel->name, mu,
-         perturb);
+  printf(
+      "# vsph %s dissipation: %s, field %s, %s, %zu across, h/dx = %g, "
+      "kernel %s, mu = %g, perturbation %g dx\n",
+      VSPH_VERSION, form, field, shape, res, hdx, dp.kernel->name, mu, perturb);
   printf("particles          %zu (%zu with full support)\n", r.n_particles,
          r.n_interior);
   printf("P                  %.12e\n", r.P);

@@ -3,12 +3,11 @@
  * quadratic field as h/dx grows. */
 #include "cmd_scaling.h"
 
+#include <gsl/gsl_fit.h>
+#include <gsl/gsl_integration.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-
-#include <gsl/gsl_fit.h>
-#include <gsl/gsl_integration.h>
 
 #include "../analysis/moments.h"
 #include "../analysis/scaling.h"
@@ -78,9 +77,10 @@ static int run_interior(struct vsph_scaling_props *sp, size_t levels,
     vsph_writers_number(o, "slope_meaf", s_meaf);
     return vsph_writers_print_json(o) ? 1 : 0;
   }
-  printf("# vsph %s scaling: interior, kernel %s, quadratic field, relative "
-         "error against the continuous limit\n",
-         VSPH_VERSION, sp->kernel->name);
+  printf(
+      "# vsph %s scaling: interior, kernel %s, quadratic field, relative "
+      "error against the continuous limit\n",
+      VSPH_VERSION, sp->kernel->name);
   printf("%8s %14s %14s\n", "h/dx", "MGF", "MEAF");
   for (size_t i = 0; i < n; i++)
     printf("%8.4f %14.6e %14.6e\n", r.hdx[i], r.mgf[i], r.meaf[i]);
@@ -130,8 +130,10 @@ int vsph_cmd_scaling_main(int argc, char **argv) {
   const int fk = vsph_fields_find(field);
   if (fk != VSPH_FIELDS_STRAIN && fk != VSPH_FIELDS_ROTATION &&
       fk != VSPH_FIELDS_QUADRATIC)
-    return vsph_args_fail(CMD, "unknown field '%s' (strain, rotation, "
-                               "quadratic)", field);
+    return vsph_args_fail(CMD,
+                          "unknown field '%s' (strain, rotation, "
+                          "quadratic)",
+                          field);
   if (fk == VSPH_FIELDS_ROTATION && dim < 2)
     return vsph_args_fail(CMD, "rotation needs --dim 2 or 3");
   if (fk == VSPH_FIELDS_QUADRATIC && dim != 2)
@@ -142,8 +144,9 @@ int vsph_cmd_scaling_main(int argc, char **argv) {
     return vsph_args_fail(CMD, "--levels must lie in 2-%d, got %zu",
                           VSPH_SCALING_MAXLEVELS, levels);
   if (fk != VSPH_FIELDS_QUADRATIC && levels > 8)
-    return vsph_args_fail(CMD, "--levels above 8 gives h below 0.0004: "
-                               "use at most 8");
+    return vsph_args_fail(CMD,
+                          "--levels above 8 gives h below 0.0004: "
+                          "use at most 8");
   int kind = vsph_lattice_find(lattice);
   const int perturbed = !strcmp(lattice, "perturbed");
   if (perturbed) kind = VSPH_LATTICE_SQUARE;
@@ -205,12 +208,14 @@ int vsph_cmd_scaling_main(int argc, char **argv) {
     }
     return vsph_writers_print_json(o) ? 1 : 0;
   }
-  printf("# vsph %s scaling: kernel %s, dim %d, field %s, %s lattice, "
-         "h/dx = %g, mu = %g\n",
-         VSPH_VERSION, k->name, dim, field, lattice, hdx, mu);
-  printf("# half-support theory: h F_ddd = -2 C_F = %.6f, h N_d = -C_N = "
-         "%.6f\n",
-         hF_th, hN_th);
+  printf(
+      "# vsph %s scaling: kernel %s, dim %d, field %s, %s lattice, "
+      "h/dx = %g, mu = %g\n",
+      VSPH_VERSION, k->name, dim, field, lattice, hdx, mu);
+  printf(
+      "# half-support theory: h F_ddd = -2 C_F = %.6f, h N_d = -C_N = "
+      "%.6f\n",
+      hF_th, hN_th);
   printf("%10s %11s %11s %13s %13s %13s %13s %13s %13s\n", "h", "hF_ddd",
          "hN_d", "MGF.n", "MEAF.n", "PVWF.n", "|MGF|", "|MEAF|", "|PVWF|");
   for (size_t l = 0; l < L; l++)

@@ -1,11 +1,10 @@
 /* vsph tensors: F, G, N, M at a depth below the free surface (THEORY 2). */
 #include "cmd_tensors.h"
 
+#include <gsl/gsl_integration.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-
-#include <gsl/gsl_integration.h>
 
 #include "../analysis/moments.h"
 #include "../common/consts.h"
@@ -40,7 +39,8 @@ static void usage(FILE *f) {
       "  --seed     random seed (default 2385)\n"
       "  --epsrel   relative accuracy of the quadrature (default 1e-10)\n"
       "  --json     JSON with keys kernel, dim, depth, method, F, G, N, M,\n"
-      "             C_F, C_N (and lattice, hdx, quadrature, gap for particles)\n",
+      "             C_F, C_N (and lattice, hdx, quadrature, gap for "
+      "particles)\n",
       f);
 }
 
@@ -50,13 +50,13 @@ static void print_table(const struct vsph_moments *m,
   printf("%-10s %22s", "entry", "value");
   if (ref) printf(" %22s %12s", refname, "gap");
   printf("\n");
-#define ROW(label, v, r)                                        \
-  do {                                                          \
-    if (fabs(v) > 1e-13 || (ref && fabs(r) > 1e-13)) {          \
-      printf("%-10s %22.14e", label, v);                        \
-      if (ref) printf(" %22.14e %12.3e", r, (v) - (r));         \
-      printf("\n");                                             \
-    }                                                           \
+#define ROW(label, v, r)                                \
+  do {                                                  \
+    if (fabs(v) > 1e-13 || (ref && fabs(r) > 1e-13)) {  \
+      printf("%-10s %22.14e", label, v);                \
+      if (ref) printf(" %22.14e %12.3e", r, (v) - (r)); \
+      printf("\n");                                     \
+    }                                                   \
   } while (0)
   char lab[32];
   for (int i = 0; i < d; i++) {
@@ -125,7 +125,8 @@ int vsph_cmd_tensors_main(int argc, char **argv) {
   if (dimf != 1 && dimf != 2 && dimf != 3)
     return vsph_args_fail(CMD, "--dim must be 1, 2 or 3, got %g", dimf);
   const int dim = (int)dimf;
-  if (depth < 0) return vsph_args_fail(CMD, "--depth must be >= 0, got %g", depth);
+  if (depth < 0)
+    return vsph_args_fail(CMD, "--depth must be >= 0, got %g", depth);
   if (!(hdx > 0)) return vsph_args_fail(CMD, "--hdx must be > 0, got %g", hdx);
   if (!(epsrel >= 1e-13 && epsrel < 1))
     return vsph_args_fail(CMD, "--epsrel must lie in [1e-13, 1), got %g",
@@ -152,7 +153,9 @@ int vsph_cmd_tensors_main(int argc, char **argv) {
   if (!st) st = vsph_moments_quadrature(k, dim, depth, epsrel, wo, wi, &quad);
   if (!st) st = vsph_moments_constants(k, dim, epsrel, wo, &C_F, &C_N);
   if (!st && particles) {
-    struct vsph_lattice_props lp = {.dim = dim, .kind = kind, .dx = 1.0 / hdx,
+    struct vsph_lattice_props lp = {.dim = dim,
+                                    .kind = kind,
+                                    .dx = 1.0 / hdx,
                                     .perturb = perturbed ? perturb : 0.0,
                                     .seed = seed};
     struct vsph_particles *p = NULL;
@@ -199,14 +202,16 @@ int vsph_cmd_tensors_main(int argc, char **argv) {
     }
     return vsph_writers_print_json(o) ? 1 : 0;
   }
-  printf("# vsph %s tensors: kernel %s, dim %d, depth %g h (kappa = %g), "
-         "h = 1, n = +e_%d\n",
-         VSPH_VERSION, k->name, dim, depth, k->kappa, dim);
+  printf(
+      "# vsph %s tensors: kernel %s, dim %d, depth %g h (kappa = %g), "
+      "h = 1, n = +e_%d\n",
+      VSPH_VERSION, k->name, dim, depth, k->kappa, dim);
   printf("# C_F = %.14e   C_N = %.14e\n", C_F, C_N);
   if (particles) {
-    printf("# particle sums on a %s lattice, h/dx = %g, %zu particles; "
-           "gap = sum - quadrature\n",
-           lattice, hdx, npart);
+    printf(
+        "# particle sums on a %s lattice, h/dx = %g, %zu particles; "
+        "gap = sum - quadrature\n",
+        lattice, hdx, npart);
     print_table(&sum, &quad, "quadrature");
   } else {
     struct vsph_moments th;

@@ -1,8 +1,7 @@
 /* vsph: viscous SPH at a free surface. Dispatches the sub-commands. */
+#include <gsl/gsl_errno.h>
 #include <stdio.h>
 #include <string.h>
-
-#include <gsl/gsl_errno.h>
 
 #include "../common/consts.h"
 #include "args.h"

@@ -13,8 +13,8 @@
 cJSON *vsph_writers_array(const double *v, size_t n) {
   cJSON *a = cJSON_CreateArray();
   for (size_t i = 0; i < n; i++)
-    cJSON_AddItemToArray(a, isfinite(v[i]) ? cJSON_CreateNumber(v[i])
-                                           : cJSON_CreateNull());
+    cJSON_AddItemToArray(
+        a, isfinite(v[i]) ? cJSON_CreateNumber(v[i]) : cJSON_CreateNull());
   return a;
 }
 

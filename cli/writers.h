@@ -1,10 +1,9 @@
 #ifndef VSPH_CLI_WRITERS_H
 #define VSPH_CLI_WRITERS_H
 
+#include <cjson/cJSON.h>
 #include <stddef.h>
 #include <stdio.h>
-
-#include <cjson/cJSON.h>
 
 struct vsph_moments;
 

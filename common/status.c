@@ -28,8 +28,8 @@ const char *vsph_status_str(int status) {
   return vsph_status_names[status];
 }
 
-void vsph_status_report(int status, const char *file, int line,
-                        const char *fmt, ...) {
+void vsph_status_report(int status, const char *file, int line, const char *fmt,
+                        ...) {
   char msg[1024];
   va_list ap;
   va_start(ap, fmt);

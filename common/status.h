@@ -28,29 +28,29 @@ const char *vsph_status_str(int status);
 
 /** @brief Format a message and pass it to the current handler.
  *  @note The default handler writes "file:line: message" to stderr. */
-void vsph_status_report(int status, const char *file, int line,
-                        const char *fmt, ...);
+void vsph_status_report(int status, const char *file, int line, const char *fmt,
+                        ...);
 
 /** @brief Install a handler (NULL restores the default); returns the old one.
  *  @note Process-global: set it before any OpenMP region starts. */
 vsph_status_handler_fn *vsph_status_set_handler(vsph_status_handler_fn *fn);
 
 /** Report, then return the code from the current function. */
-#define VSPH_FAIL(s, ...)                                  \
-  do {                                                     \
+#define VSPH_FAIL(s, ...)                                     \
+  do {                                                        \
     vsph_status_report((s), __FILE__, __LINE__, __VA_ARGS__); \
-    return (s);                                            \
+    return (s);                                               \
   } while (0)
 
 /** Internal invariant check, compiled out with -DNDEBUG (FFTW's A()). */
 #ifdef NDEBUG
 #define VSPH_ASSERT(expr) ((void)0)
 #else
-#define VSPH_ASSERT(expr)                                              \
-  do {                                                                 \
-    if (!(expr))                                                       \
-      vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,              \
-                         "internal invariant failed: %s", #expr);      \
+#define VSPH_ASSERT(expr)                                         \
+  do {                                                            \
+    if (!(expr))                                                  \
+      vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,         \
+                         "internal invariant failed: %s", #expr); \
   } while (0)
 #endif
 

@@ -25,8 +25,7 @@ const struct vsph_kernel_type vsph_gaussian_type = {
               1.0 / (3.14159265358979323846 *
                      (1.0 - 10.0 * 1.2340980408667954950e-4)),
               1.0 / (5.5683279968317078453 * 0.99997790950300141456 -
-                     42.0 * 3.14159265358979323846 *
-                         1.2340980408667954950e-4)},
+                     42.0 * 3.14159265358979323846 * 1.2340980408667954950e-4)},
     .f = {f_gauss, f_gauss, f_gauss},
     .df = {df_gauss, df_gauss, df_gauss},
     .reference = "renormalised Gaussian, kappa=3 (Colagrossi et al. 2011)",

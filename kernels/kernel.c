@@ -4,7 +4,7 @@
 
 /* One table backs lookup by name and the loop tests (FFTW convention). */
 static const struct vsph_kernel_type *const kernel_table[] = {
-    &vsph_gaussian_type, &vsph_cubic_type, &vsph_quintic_type,
+    &vsph_gaussian_type,    &vsph_cubic_type,       &vsph_quintic_type,
     &vsph_wendland_c2_type, &vsph_wendland_c4_type,
 };
 

@@ -12,8 +12,7 @@ static double f_quintic(double q) {
 
 static double df_quintic(double q) {
   if (q >= 3.0) return 0.0;
-  return -5.0 * (pow4p(3.0 - q) - 6.0 * pow4p(2.0 - q) +
-                 15.0 * pow4p(1.0 - q));
+  return -5.0 * (pow4p(3.0 - q) - 6.0 * pow4p(2.0 - q) + 15.0 * pow4p(1.0 - q));
 }
 
 const struct vsph_kernel_type vsph_quintic_type = {

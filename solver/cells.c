@@ -97,8 +97,7 @@ int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
   const double max_cells = 8.0 * (double)n + 4096.0;
   for (;;) {
     double total = 1.0;
-    for (int k = 0; k < dim; k++)
-      total *= floor((hi[k] - lo[k]) / edge) + 1.0;
+    for (int k = 0; k < dim; k++) total *= floor((hi[k] - lo[k]) / edge) + 1.0;
     if (total <= max_cells) {
       ncells = (size_t)total;
       break;

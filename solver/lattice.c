@@ -1,9 +1,8 @@
 #include "lattice.h"
 
+#include <gsl/gsl_rng.h>
 #include <math.h>
 #include <string.h>
-
-#include <gsl/gsl_rng.h>
 
 #include "../common/consts.h"
 #include "../common/status.h"
@@ -60,8 +59,8 @@ static void set_unit_density(struct vsph_particles *p, double vol) {
   }
 }
 
-static int finish(const struct vsph_lattice_props *lp,
-                  struct vsph_particles *p, size_t skip) {
+static int finish(const struct vsph_lattice_props *lp, struct vsph_particles *p,
+                  size_t skip) {
   if (lp->perturb > 0.0) {
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     if (!rng) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a random generator");
@@ -82,11 +81,10 @@ int vsph_lattice_halfspace(const struct vsph_lattice_props *lp, double radius,
               depth);
   const int dim = lp->dim;
   /* Hexagonal: same area per particle as the square lattice dx^2. */
-  const double a = lp->kind == VSPH_LATTICE_HEX
-                       ? lp->dx * sqrt(2.0 / sqrt(3.0))
-                       : lp->dx;
+  const double a =
+      lp->kind == VSPH_LATTICE_HEX ? lp->dx * sqrt(2.0 / sqrt(3.0)) : lp->dx;
   const double dy = lp->kind == VSPH_LATTICE_HEX ? a * sqrt(3.0) / 2.0 : a;
-  const long mt = (long)ceil(radius / a) + 1; /* tangential index range */
+  const long mt = (long)ceil(radius / a) + 1;  /* tangential index range */
   const long mn = (long)ceil(radius / dy) + 1; /* normal index range */
   /* Rows above the depth are excluded; the small relative slack keeps a row
    * that sits exactly on the plane despite rounding in depth/dy. */

@@ -10,18 +10,18 @@
 
 /** Particle set: one 64-byte aligned array per field, double throughout. */
 struct vsph_particles {
-  size_t n;          /*!< live particles */
-  size_t cap;        /*!< allocated length, a multiple of 8 */
-  int dim;           /*!< 1, 2 or 3 */
-  double *pos[3];    /*!< pos[k][i]: coordinate k of particle i (m) */
-  double *vel[3];    /*!< velocity (m/s) */
-  double *acc[3];    /*!< acceleration or force density scratch */
-  double *m;         /*!< mass (kg per unit depth in 2-D) */
-  double *rho;       /*!< density (kg/m^d) */
-  double *vol;       /*!< volume V = m/rho, refreshed by _refresh_vol */
-  double *p;         /*!< pressure (Pa) */
-  double *drho;      /*!< density rate (kg/m^d/s) */
-  size_t *id;        /*!< original index; survives reordering */
+  size_t n;       /*!< live particles */
+  size_t cap;     /*!< allocated length, a multiple of 8 */
+  int dim;        /*!< 1, 2 or 3 */
+  double *pos[3]; /*!< pos[k][i]: coordinate k of particle i (m) */
+  double *vel[3]; /*!< velocity (m/s) */
+  double *acc[3]; /*!< acceleration or force density scratch */
+  double *m;      /*!< mass (kg per unit depth in 2-D) */
+  double *rho;    /*!< density (kg/m^d) */
+  double *vol;    /*!< volume V = m/rho, refreshed by _refresh_vol */
+  double *p;      /*!< pressure (Pa) */
+  double *drho;   /*!< density rate (kg/m^d/s) */
+  size_t *id;     /*!< original index; survives reordering */
 };
 
 /** @brief Allocate a set for up to @p cap particles in @p dim dimensions,

@@ -34,7 +34,8 @@ int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
                             double h, double mu) {
   if (form < 0 || form >= VSPH_VISCOUS_FORM_COUNT)
     VSPH_FAIL(VSPH_EINVAL, "unknown viscous formulation %d", form);
-  if (dim < 1 || dim > 3) VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", dim);
+  if (dim < 1 || dim > 3)
+    VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", dim);
   if (!kernel) VSPH_FAIL(VSPH_EINVAL, "no kernel given");
   if (!(h > 0.0) || !isfinite(h))
     VSPH_FAIL(VSPH_EINVAL, "smoothing length must be positive, got %g", h);
@@ -122,9 +123,9 @@ static int invert_sym(int dim, const double *b, double *inv, double tol) {
 /* Quantities every pair loop needs, loaded once (STYLE B7). */
 struct pair_ctx {
   int dim;
-  double H2;       /* (kappa h)^2 */
+  double H2; /* (kappa h)^2 */
   double h_inv;
-  double dw_fac;   /* sigma_d h^{-d-1}: W'(s) = dw_fac * df(s/h) */
+  double dw_fac; /* sigma_d h^{-d-1}: W'(s) = dw_fac * df(s/h) */
   vsph_kernel_fn *df;
 };
 

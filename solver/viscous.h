@@ -25,24 +25,24 @@ enum vsph_viscous_form {
 
 /** What the operators need: constant smoothing length and viscosities. */
 struct vsph_viscous_props {
-  enum vsph_viscous_form form;            /*!< formulation */
-  int dim;                                /*!< 1, 2 or 3 */
-  const struct vsph_kernel_type *kernel;  /*!< smoothing kernel */
-  double h;                               /*!< smoothing length (m) */
-  double mu;                              /*!< dynamic viscosity (Pa s) */
-  double lambda;   /*!< second viscosity (Pa s); MGF implies lambda = mu */
-  double det_tol;  /*!< PVWF: det(B) <= det_tol (tr B / d)^d counts as
-                        singular and L falls back to the identity */
+  enum vsph_viscous_form form;           /*!< formulation */
+  int dim;                               /*!< 1, 2 or 3 */
+  const struct vsph_kernel_type *kernel; /*!< smoothing kernel */
+  double h;                              /*!< smoothing length (m) */
+  double mu;                             /*!< dynamic viscosity (Pa s) */
+  double lambda;  /*!< second viscosity (Pa s); MGF implies lambda = mu */
+  double det_tol; /*!< PVWF: det(B) <= det_tol (tr B / d)^d counts as
+                       singular and L falls back to the identity */
 };
 
 /** Per-particle scratch of the PVWF two-pass operator. */
 struct vsph_viscous_ws {
-  size_t cap;         /*!< particles it can hold */
-  int dim;            /*!< dimension */
-  double *A[9];       /*!< A_i = T_i L_i, entry (a,b) in A[a*dim+b][i] */
-  double *dens;       /*!< PVWF dissipation density -T_i:D_i */
+  size_t cap;              /*!< particles it can hold */
+  int dim;                 /*!< dimension */
+  double *A[9];            /*!< A_i = T_i L_i, entry (a,b) in A[a*dim+b][i] */
+  double *dens;            /*!< PVWF dissipation density -T_i:D_i */
   unsigned char *fallback; /*!< 1 where L_i fell back to the identity */
-  size_t n_fallback;  /*!< how many particles fell back, last call */
+  size_t n_fallback;       /*!< how many particles fell back, last call */
 };
 
 /** @brief Formulation name ("mgf", "meaf", "pvwf"). */

@@ -15,8 +15,11 @@ static double total_volume(const struct vsph_particles *p) {
 
 /* Lattice sets carry exactly the volume of their shape. */
 START_TEST(test_lattice_volumes) {
-  struct vsph_lattice_props lp = {.dim = 2, .kind = VSPH_LATTICE_SQUARE,
-                                  .dx = 0.1, .perturb = 0.2, .seed = 7};
+  struct vsph_lattice_props lp = {.dim = 2,
+                                  .kind = VSPH_LATTICE_SQUARE,
+                                  .dx = 0.1,
+                                  .perturb = 0.2,
+                                  .seed = 7};
   struct vsph_particles *p = NULL;
   ck_assert_int_eq(vsph_lattice_square(&lp, 1.2348, 37, &p), 0);
   ck_assert_uint_eq(p->n, 37 * 37);
@@ -61,8 +64,8 @@ START_TEST(test_halfspace) {
     vsph_particles_free(p);
   }
   vsph_test_silence();
-  struct vsph_lattice_props bad = {.dim = 3, .kind = VSPH_LATTICE_HEX,
-                                   .dx = 0.1};
+  struct vsph_lattice_props bad = {
+      .dim = 3, .kind = VSPH_LATTICE_HEX, .dx = 0.1};
   struct vsph_particles *p = NULL;
   size_t c;
   ck_assert_int_eq(vsph_lattice_halfspace(&bad, 1.0, 0.0, &p, &c), 1);
@@ -72,8 +75,7 @@ END_TEST
 /* Cell list against the O(N^2) path: the same neighbour pairs. Counts the
  * pairs within the radius for every particle both ways (SWIFT test27cells). */
 static void count_pairs(const struct vsph_cells *c,
-                        const struct vsph_particles *p, double R,
-                        size_t *out) {
+                        const struct vsph_particles *p, double R, size_t *out) {
   for (size_t cell = 0; cell < c->ncells; cell++) {
     size_t lo[VSPH_CELLS_MAXRANGES], hi[VSPH_CELLS_MAXRANGES];
     const size_t nr = vsph_cells_ranges(c, cell, lo, hi);
@@ -95,8 +97,11 @@ static void count_pairs(const struct vsph_cells *c,
 
 START_TEST(test_cells_vs_direct) {
   for (int dim = 1; dim <= 3; dim++) {
-    struct vsph_lattice_props lp = {.dim = dim, .kind = VSPH_LATTICE_SQUARE,
-                                    .dx = 0.1, .perturb = 0.3, .seed = 11};
+    struct vsph_lattice_props lp = {.dim = dim,
+                                    .kind = VSPH_LATTICE_SQUARE,
+                                    .dx = 0.1,
+                                    .perturb = 0.3,
+                                    .seed = 11};
     struct vsph_particles *p = NULL;
     size_t c0;
     ck_assert_int_eq(vsph_lattice_halfspace(&lp, 1.1, 0.35, &p, &c0), 0);

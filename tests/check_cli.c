@@ -1,14 +1,13 @@
 /* The CLI as a user meets it: every bad input is one line on stderr and
  * exit status 2, with nothing on stdout; --help works; JSON has the keys
  * the README promises. Runs the built binary ($VSPH_BIN). */
+#include <cjson/cJSON.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <cjson/cJSON.h>
 
 #include "check_suites.h"
 
@@ -130,8 +129,9 @@ START_TEST(test_json) {
   ck_assert_int_eq(cJSON_GetArraySize(cJSON_GetArrayItem(
                        cJSON_GetArrayItem(cJSON_GetArrayItem(G, 0), 0), 0)),
                    3);
-  const double F333 = cJSON_GetArrayItem(
-      cJSON_GetArrayItem(cJSON_GetArrayItem(F, 2), 2), 2)->valuedouble;
+  const double F333 =
+      cJSON_GetArrayItem(cJSON_GetArrayItem(cJSON_GetArrayItem(F, 2), 2), 2)
+          ->valuedouble;
   ck_assert_double_eq_tol(F333, -2.0 * CF, 1e-9);
   const double N3 =
       cJSON_GetArrayItem(cJSON_GetObjectItem(j, "N"), 2)->valuedouble;
@@ -139,21 +139,22 @@ START_TEST(test_json) {
   cJSON_Delete(j);
 
   j = json_of("scaling --field strain --levels 3 --json");
-  const char *sk[] = {"h", "hF", "hN", "mgf", "meaf", "pvwf", "slope_mgf",
-                      "slope_meaf", "slope_pvwf"};
+  const char *sk[] = {"h",    "hF",        "hN",         "mgf",       "meaf",
+                      "pvwf", "slope_mgf", "slope_meaf", "slope_pvwf"};
   for (size_t i = 0; i < sizeof sk / sizeof sk[0]; i++)
     ck_assert_msg(cJSON_HasObjectItem(j, sk[i]), "missing %s", sk[i]);
   ck_assert_double_eq_tol(cJSON_GetObjectItem(j, "slope_mgf")->valuedouble,
                           -1.0, 1e-9);
   cJSON_Delete(j);
 
-  j = json_of("dissipation --formulation pvwf --field strain --shape disc "
-              "--res 20 --json");
+  j = json_of(
+      "dissipation --formulation pvwf --field strain --shape disc "
+      "--res 20 --json");
   const char *dk[] = {"P", "P_exact", "P_grad", "rel_error"};
   for (size_t i = 0; i < sizeof dk / sizeof dk[0]; i++)
     ck_assert_msg(cJSON_HasObjectItem(j, dk[i]), "missing %s", dk[i]);
-  ck_assert_double_le(
-      fabs(cJSON_GetObjectItem(j, "rel_error")->valuedouble), 1e-12);
+  ck_assert_double_le(fabs(cJSON_GetObjectItem(j, "rel_error")->valuedouble),
+                      1e-12);
   cJSON_Delete(j);
 }
 END_TEST

@@ -108,10 +108,10 @@ START_TEST(test_meaf) {
 END_TEST
 
 /* Mixed field on the square lattice: total momentum stays zero for every
- * formulation; MGF's lattice error (-6 % at 4/3) shrinks with h/dx. For MEAF and PVWF the interior error on
- * this nonlinear field is dominated by the O((kh)^2) smoothing error, which
- * grows with h at fixed resolution, so only its size is bounded: below 1 %
- * (measured 0.1-0.3 %). */
+ * formulation; MGF's lattice error (-6 % at 4/3) shrinks with h/dx. For MEAF
+ * and PVWF the interior error on this nonlinear field is dominated by the
+ * O((kh)^2) smoothing error, which grows with h at fixed resolution, so only
+ * its size is bounded: below 1 % (measured 0.1-0.3 %). */
 START_TEST(test_mixed) {
   for (int form = 0; form < 3; form++) {
     const struct vsph_dissipation_result a =

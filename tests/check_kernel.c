@@ -1,6 +1,5 @@
-#include <math.h>
-
 #include <gsl/gsl_integration.h>
+#include <math.h>
 
 #include "../common/consts.h"
 #include "../kernels/kernel.h"
@@ -25,10 +24,10 @@ START_TEST(test_normalisation) {
   double total = 0.0;
   for (double lo = 0.0; lo < k->kappa; lo += 1.0) { /* split at the knots */
     double res, err;
-    ck_assert_int_eq(gsl_integration_qag(&fn, lo, fmin(lo + 1.0, k->kappa),
-                                         0.0, 1e-13, 200, GSL_INTEG_GAUSS41,
-                                         ws, &res, &err),
-                     0);
+    ck_assert_int_eq(
+        gsl_integration_qag(&fn, lo, fmin(lo + 1.0, k->kappa), 0.0, 1e-13, 200,
+                            GSL_INTEG_GAUSS41, ws, &res, &err),
+        0);
     total += res;
   }
   gsl_integration_workspace_free(ws);
@@ -47,12 +46,13 @@ START_TEST(test_derivative_fd) {
   for (double q = 0.0; q < k->kappa; q += 0.01)
     scale = fmax(scale, fabs(vsph_kernel_dw(k, dim, q)));
   /* high-entropy points away from the knots at q = 1, 2 */
-  const double qs[] = {0.1234, 0.5871, 0.9345, 1.2348, 1.6180, 1.8765, 2.385,
-                       2.7182};
+  const double qs[] = {0.1234, 0.5871, 0.9345, 1.2348,
+                       1.6180, 1.8765, 2.385,  2.7182};
   for (size_t m = 0; m < sizeof qs / sizeof qs[0]; m++) {
     const double q = qs[m] * k->kappa / 3.0;
-    const double fd = (vsph_kernel_w(k, dim, q + eps) -
-                       vsph_kernel_w(k, dim, q - eps)) / (2.0 * eps);
+    const double fd =
+        (vsph_kernel_w(k, dim, q + eps) - vsph_kernel_w(k, dim, q - eps)) /
+        (2.0 * eps);
     /* centred difference: error ~ eps^2 w''' / 6 ~ 1e-10, rounding
      * ~ 1e-16 / eps = 1e-11; 1e-8 of the slope scale covers both */
     ck_assert_double_eq_tol(vsph_kernel_dw(k, dim, q), fd, 1e-8 * scale);

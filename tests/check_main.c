@@ -1,8 +1,7 @@
 /* The single Check runner. No OpenMP region may run before
  * srunner_run_all: forked tests would deadlock in their first one. */
-#include <stdlib.h>
-
 #include <gsl/gsl_errno.h>
+#include <stdlib.h>
 
 #include "../common/status.h"
 #include "check_suites.h"

@@ -1,6 +1,5 @@
-#include <math.h>
-
 #include <gsl/gsl_integration.h>
+#include <math.h>
 
 #include "../analysis/moments.h"
 #include "../common/consts.h"
@@ -56,8 +55,7 @@ static double df_gauss_inf(double q) {
 static const struct vsph_kernel_type gauss_inf = {
     .name = "gaussian-untruncated",
     .kappa = 7.0,
-    .sigma = {1.0 / VSPH_SQRTPI, 1.0 / VSPH_PI,
-              1.0 / (VSPH_PI * VSPH_SQRTPI)},
+    .sigma = {1.0 / VSPH_SQRTPI, 1.0 / VSPH_PI, 1.0 / (VSPH_PI * VSPH_SQRTPI)},
     .f = {f_gauss_inf, f_gauss_inf, f_gauss_inf},
     .df = {df_gauss_inf, df_gauss_inf, df_gauss_inf},
     .reference = "test only",
@@ -66,8 +64,8 @@ static const struct vsph_kernel_type gauss_inf = {
 START_TEST(test_paper_gaussian_constants) {
   for (int dim = 2; dim <= 3; dim++) {
     const double K = 2.0 * (dim + 2);
-    const double want_F = dim == 2 ? K / (3.0 * VSPH_SQRTPI)
-                                   : K / (4.0 * VSPH_SQRTPI);
+    const double want_F =
+        dim == 2 ? K / (3.0 * VSPH_SQRTPI) : K / (4.0 * VSPH_SQRTPI);
     const double want_N = 2.0 / VSPH_SQRTPI;
     double C_F, C_N;
     ck_assert_int_eq(
@@ -112,13 +110,15 @@ END_TEST
 static double sum_gap(int dim, int kind, double perturb, double hdx,
                       double depth, double gap[4]) {
   const struct vsph_kernel_type *k = &vsph_gaussian_type;
-  struct vsph_lattice_props lp = {.dim = dim, .kind = kind, .dx = 1.0 / hdx,
-                                  .perturb = perturb, .seed = 2385};
+  struct vsph_lattice_props lp = {.dim = dim,
+                                  .kind = kind,
+                                  .dx = 1.0 / hdx,
+                                  .perturb = perturb,
+                                  .seed = 2385};
   struct vsph_particles *p = NULL;
   size_t c;
-  ck_assert_int_eq(vsph_lattice_halfspace(&lp, k->kappa + 2.0 / hdx, depth,
-                                          &p, &c),
-                   0);
+  ck_assert_int_eq(
+      vsph_lattice_halfspace(&lp, k->kappa + 2.0 / hdx, depth, &p, &c), 0);
   struct vsph_moments s, q;
   ck_assert_int_eq(vsph_moments_sum(k, p, c, 1.0, &s), 0);
   vsph_particles_free(p);
@@ -171,8 +171,7 @@ Suite *vsph_moments_suite(void) {
   Suite *s = suite_create("moments");
   TCase *tc = tcase_create("quadrature");
   tcase_add_checked_fixture(tc, ws_setup, ws_teardown);
-  tcase_add_loop_test(tc, test_theory_values, 0,
-                      (int)vsph_kernel_count() * 3);
+  tcase_add_loop_test(tc, test_theory_values, 0, (int)vsph_kernel_count() * 3);
   tcase_add_test(tc, test_paper_gaussian_constants);
   tcase_add_test(tc, test_depth_profiles);
   tcase_add_test(tc, test_errors);

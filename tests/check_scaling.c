@@ -1,6 +1,5 @@
-#include <math.h>
-
 #include <gsl/gsl_integration.h>
+#include <math.h>
 
 #include "../analysis/moments.h"
 #include "../analysis/scaling.h"
@@ -84,8 +83,8 @@ START_TEST(test_mgf_equals_FD) {
   struct vsph_lattice_props lp = {.dim = 2, .dx = dx};
   struct vsph_particles *p = NULL;
   size_t c;
-  ck_assert_int_eq(
-      vsph_lattice_halfspace(&lp, 2 * 3 * h + 2 * dx, 0.0, &p, &c), 0);
+  ck_assert_int_eq(vsph_lattice_halfspace(&lp, 2 * 3 * h + 2 * dx, 0.0, &p, &c),
+                   0);
   struct vsph_moments m;
   ck_assert_int_eq(vsph_moments_sum(sp.kernel, p, c, h, &m), 0);
   vsph_particles_free(p);

@@ -1,9 +1,8 @@
+#include <gsl/gsl_rng.h>
 #include <math.h>
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include <gsl/gsl_rng.h>
 
 #include "../kernels/kernel.h"
 #include "../solver/cells.h"
@@ -15,8 +14,11 @@
 /* A perturbed square patch (free surface all round) carrying a random
  * velocity field, in dim = 2 or 3. */
 static struct vsph_particles *random_set(int dim, unsigned long seed) {
-  struct vsph_lattice_props lp = {.dim = dim, .kind = VSPH_LATTICE_SQUARE,
-                                  .dx = 0.05, .perturb = 0.25, .seed = seed};
+  struct vsph_lattice_props lp = {.dim = dim,
+                                  .kind = VSPH_LATTICE_SQUARE,
+                                  .dx = 0.05,
+                                  .perturb = 0.25,
+                                  .seed = seed};
   struct vsph_particles *p = NULL;
   size_t c;
   ck_assert_int_eq(
@@ -41,8 +43,8 @@ static void run_form(int form, struct vsph_particles *p, int direct,
                      struct run *r) {
   const int dim = p->dim;
   struct vsph_viscous_props vp;
-  ck_assert_int_eq(vsph_viscous_props_init(&vp, form, &vsph_gaussian_type,
-                                           dim, 1.3333 * 0.05, 0.0137),
+  ck_assert_int_eq(vsph_viscous_props_init(&vp, form, &vsph_gaussian_type, dim,
+                                           1.3333 * 0.05, 0.0137),
                    0);
   struct vsph_cells *c = vsph_cells_alloc();
   if (direct)
@@ -156,9 +158,8 @@ START_TEST(test_pvwf_linear_exact) {
   run_form(VSPH_VISCOUS_PVWF, p, 0, &r);
   const double mu = 0.0137, lambda = -mu, tr = G[0] + G[3];
   const double D01 = 0.5 * (G[1] + G[2]);
-  const double want =
-      -(2 * mu * (G[0] * G[0] + G[3] * G[3] + 2 * D01 * D01) +
-        lambda * tr * tr);
+  const double want = -(2 * mu * (G[0] * G[0] + G[3] * G[3] + 2 * D01 * D01) +
+                        lambda * tr * tr);
   /* tol: L B = I to rounding with condition numbers ~10 at the corners */
   for (size_t i = 0; i < p->n; i++)
     ck_assert_double_eq_tol(r.dens[i], want, 1e-12 * fabs(want));
