@@ -57,6 +57,11 @@ report: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph
 	$(BUILD)/vsph report --out reports/out
 
+# Timings (never in the tests): quadrature, particle sums, operators.
+bench: deps
+	@$(MAKE) --no-print-directory $(BUILD)/vsph
+	$(BUILD)/vsph bench
+
 asan: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan OPT=-O1 \
 	  SAN="-fsanitize=address,undefined -fno-omit-frame-pointer" \

@@ -5,6 +5,7 @@
 
 #include "../common/consts.h"
 #include "args.h"
+#include "cmd_bench.h"
 #include "cmd_dissipation.h"
 #include "cmd_report.h"
 #include "cmd_scaling.h"
@@ -25,6 +26,8 @@ static const struct command commands[] = {
      "dissipation integral of MGF, MEAF or PVWF on a disc or square"},
     {"report", vsph_cmd_report_main,
      "run the analysis suite and write the tables to reports/out"},
+    {"bench", vsph_cmd_bench_main,
+     "timings: quadrature, particle sums, viscous operators"},
 };
 
 static void usage(FILE *f) {

@@ -130,13 +130,15 @@ int vsph_lattice_halfspace(const struct vsph_lattice_props *lp, double radius,
 
 int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
                         size_t nacross, struct vsph_particles **out) {
-  int st = check_props(lp);
-  if (st) return st;
   if (lp->dim != 2 || lp->kind != VSPH_LATTICE_SQUARE)
     VSPH_FAIL(VSPH_EINVAL, "the square set is a 2-D square lattice");
   if (nacross < 1 || !(side > 0.0))
     VSPH_FAIL(VSPH_EINVAL, "square needs side > 0 and at least 1 particle");
   const double dx = side / (double)nacross;
+  struct vsph_lattice_props l2 = *lp;
+  l2.dx = dx;
+  int st = check_props(&l2);
+  if (st) return st;
   struct vsph_particles *p = vsph_particles_alloc(nacross * nacross, 2);
   if (!p) return VSPH_ENOMEM;
   size_t n = 0;
@@ -148,8 +150,6 @@ int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
     }
   p->n = n;
   set_unit_density(p, dx * dx);
-  struct vsph_lattice_props l2 = *lp;
-  l2.dx = dx;
   st = finish(&l2, p, (size_t)-1);
   if (st) {
     vsph_particles_free(p);

@@ -45,7 +45,8 @@ int vsph_lattice_halfspace(const struct vsph_lattice_props *lp, double radius,
                            size_t *centre);
 
 /** @brief Square (2-D) of side @p side centred at the origin with
- *  @p nacross particles along each edge at the cell centres. */
+ *  @p nacross particles along each edge at the cell centres (spacing
+ *  side/nacross; lp->dx is ignored). */
 int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
                         size_t nacross, struct vsph_particles **out);
 

@@ -81,6 +81,8 @@ static const char *const bad_inputs[] = {
     "dissipation --formulation mgf --field strain --mu x",
     "report --only nothing",
     "report --bogus",
+    "bench --size 3",
+    "bench --size many",
     "frobnicate",
 };
 
@@ -96,8 +98,9 @@ START_TEST(test_bad_input) {
 END_TEST
 
 START_TEST(test_help) {
-  const char *cmds[] = {"--help", "tensors --help", "scaling --help",
-                        "dissipation --help", "report --help"};
+  const char *cmds[] = {"--help",         "tensors --help",
+                        "scaling --help", "dissipation --help",
+                        "report --help",  "bench --help"};
   for (size_t i = 0; i < sizeof cmds / sizeof cmds[0]; i++) {
     struct outcome *o = run_cli(cmds[i]);
     ck_assert_int_eq(o->status, 0);

@@ -1,0 +1,189 @@
+/* vsph bench: timings of the analysis building blocks. Timings live here
+ * and in `make bench`, never in the tests. */
+#include "cmd_bench.h"
+
+#include <gsl/gsl_integration.h>
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../analysis/moments.h"
+#include "../common/consts.h"
+#include "../kernels/kernel.h"
+#include "../solver/cells.h"
+#include "../solver/lattice.h"
+#include "../solver/particles.h"
+#include "../solver/viscous.h"
+#include "args.h"
+
+static const char *const CMD = "bench";
+
+static void usage(FILE *f) {
+  fputs(
+      "usage: vsph bench [--size N]\n\n"
+      "Times (1) F, G, N, M by quadrature at one depth for every kernel in\n"
+      "2-D and 3-D; (2) the particle sums against the number of particles;\n"
+      "(3) each viscous operator on an N x N square (default N = 200) at\n"
+      "h/dx = 4/3 with the 3h Gaussian, with 1 and 2 threads. An\n"
+      "interaction is particle i gathering from one neighbour j within\n"
+      "kappa h (each unique pair counts twice); PVWF makes two passes, so\n"
+      "it does two interactions per pair per evaluation.\n",
+      f);
+}
+
+/* Best of `reps` wall times of fn(arg). */
+static double best_of(int reps, void (*fn)(void *), void *arg) {
+  double best = INFINITY;
+  for (int r = 0; r < reps; r++) {
+    const double t = omp_get_wtime();
+    fn(arg);
+    best = fmin(best, omp_get_wtime() - t);
+  }
+  return best;
+}
+
+struct quad_arg {
+  const struct vsph_kernel_type *k;
+  int dim;
+  double depth;
+  gsl_integration_workspace *wo, *wi;
+};
+static void quad_once(void *v) {
+  struct quad_arg *a = v;
+  struct vsph_moments m;
+  vsph_moments_quadrature(a->k, a->dim, a->depth, 1e-10, a->wo, a->wi, &m);
+}
+
+struct sum_arg {
+  struct vsph_particles *p;
+  size_t c;
+};
+static void sum_once(void *v) {
+  struct sum_arg *a = v;
+  struct vsph_moments m;
+  vsph_moments_sum(&vsph_gaussian_type, a->p, a->c, 1.0, &m);
+}
+
+struct visc_arg {
+  struct vsph_viscous_props vp;
+  struct vsph_particles *p;
+  struct vsph_cells *c;
+  struct vsph_viscous_ws *ws;
+  double *f[3];
+};
+static void visc_once(void *v) {
+  struct visc_arg *a = v;
+  vsph_viscous_compute(&a->vp, a->p, a->c, a->ws, a->f, NULL);
+}
+
+static size_t count_interactions(const struct vsph_cells *c,
+                                 const struct vsph_particles *p, double H) {
+  size_t n = 0;
+  for (size_t cell = 0; cell < c->ncells; cell++) {
+    size_t lo[VSPH_CELLS_MAXRANGES], hi[VSPH_CELLS_MAXRANGES];
+    const size_t nr = vsph_cells_ranges(c, cell, lo, hi);
+    for (size_t i = c->start[cell]; i < c->start[cell] + c->count[cell]; i++)
+      for (size_t r = 0; r < nr; r++)
+        for (size_t j = lo[r]; j < hi[r]; j++) {
+          const double dx = p->pos[0][j] - p->pos[0][i];
+          const double dy = p->pos[1][j] - p->pos[1][i];
+          n += j != i && dx * dx + dy * dy < H * H;
+        }
+  }
+  return n;
+}
+
+int vsph_cmd_bench_main(int argc, char **argv) {
+  size_t side = 200;
+  for (int i = 1; i < argc; i++) {
+    const char *a = argv[i], *v;
+    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+      usage(stdout);
+      return 0;
+    } else if (!strcmp(a, "--size")) {
+      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
+      if (vsph_args_size(CMD, a, v, &side)) return 2;
+      if (side < 10 || side > 2000)
+        return vsph_args_fail(CMD, "--size must lie in 10-2000");
+    } else {
+      return vsph_args_fail(CMD, "unknown option '%s' (see --help)", a);
+    }
+  }
+  printf("# vsph %s bench, %d threads available\n", VSPH_VERSION,
+         omp_get_max_threads());
+  printf("\n## F, G, N, M by quadrature (epsrel 1e-10), best of 5, ms\n");
+  printf("%-10s %4s %10s %10s %10s\n", "kernel", "dim", "depth 0", "depth 1.3",
+         "depth k");
+  struct quad_arg qa;
+  qa.wo = gsl_integration_workspace_alloc(1000);
+  qa.wi = gsl_integration_workspace_alloc(1000);
+  for (size_t ki = 0; ki < vsph_kernel_count(); ki++)
+    for (int dim = 2; dim <= 3; dim++) {
+      qa.k = vsph_kernel_get(ki);
+      qa.dim = dim;
+      printf("%-10s %4d", qa.k->name, dim);
+      const double depths[3] = {0.0, 1.3, qa.k->kappa};
+      for (int d = 0; d < 3; d++) {
+        qa.depth = depths[d];
+        printf(" %10.3f", 1e3 * best_of(5, quad_once, &qa));
+      }
+      printf("\n");
+    }
+  gsl_integration_workspace_free(qa.wo);
+  gsl_integration_workspace_free(qa.wi);
+
+  printf("\n## particle sums (3-D half space, 3h Gaussian), best of 5\n");
+  printf("%8s %10s %12s %12s\n", "h/dx", "particles", "time (ms)",
+         "ns/particle");
+  for (double hdx = 2.0; hdx <= 16.0; hdx *= 2.0) {
+    struct vsph_lattice_props lp = {.dim = 3, .dx = 1.0 / hdx};
+    struct sum_arg sa;
+    if (vsph_lattice_halfspace(&lp, 3.0 + 2.0 / hdx, 0.0, &sa.p, &sa.c))
+      return vsph_args_status(CMD, 1);
+    const double t = best_of(5, sum_once, &sa);
+    printf("%8.1f %10zu %12.3f %12.2f\n", hdx, sa.p->n, 1e3 * t,
+           1e9 * t / (double)sa.p->n);
+    vsph_particles_free(sa.p);
+  }
+
+  printf("\n## viscous operators, %zu x %zu square, h/dx 4/3, best of 5\n",
+         side, side);
+  struct vsph_lattice_props lp = {.dim = 2};
+  struct visc_arg va;
+  if (vsph_lattice_square(&lp, 1.0, side, &va.p))
+    return vsph_args_status(CMD, 1);
+  const double dx = 1.0 / (double)side, h = 4.0 / 3.0 * dx;
+  for (size_t i = 0; i < va.p->n; i++) { /* a smooth non-trivial field */
+    va.p->vel[0][i] = sin(3.1 * va.p->pos[1][i]);
+    va.p->vel[1][i] = cos(2.3 * va.p->pos[0][i]);
+  }
+  va.c = vsph_cells_alloc();
+  va.ws = vsph_viscous_ws_alloc(va.p->n, 2);
+  double *buf = malloc(2 * va.p->n * sizeof *buf);
+  va.f[0] = buf;
+  va.f[1] = buf + va.p->n;
+  va.f[2] = NULL;
+  vsph_cells_build(va.c, va.p, 3.0 * h);
+  const size_t inter = count_interactions(va.c, va.p, 3.0 * h);
+  printf("particles %zu, interactions per pass %zu (%.1f per particle)\n",
+         va.p->n, inter, (double)inter / (double)va.p->n);
+  printf("%-6s %12s %12s %16s %9s\n", "form", "1 thr (ms)", "2 thr (ms)",
+         "inter/s/core (1)", "speed-up");
+  for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT; form++) {
+    vsph_viscous_props_init(&va.vp, form, &vsph_gaussian_type, 2, h, 0.01);
+    const double passes = form == VSPH_VISCOUS_PVWF ? 2.0 : 1.0;
+    omp_set_num_threads(1);
+    const double t1 = best_of(5, visc_once, &va);
+    omp_set_num_threads(2);
+    const double t2 = best_of(5, visc_once, &va);
+    printf("%-6s %12.3f %12.3f %16.3e %9.2f\n", vsph_viscous_name(form),
+           1e3 * t1, 1e3 * t2, passes * (double)inter / t1, t1 / t2);
+  }
+  free(buf);
+  vsph_viscous_ws_free(va.ws);
+  vsph_cells_free(va.c);
+  vsph_particles_free(va.p);
+  return 0;
+}
