@@ -31,7 +31,8 @@ static void usage(FILE *f) {
       "                    [--perturb A] [--seed S] [--mu MU] [--json]\n"
       "\n"
       "strain, rotation: at a surface particle (outward normal +e_d), with\n"
-      "h/dx fixed (default 4/3) and h halved L times from 0.1 (default L=5):\n"
+      "h/dx fixed (default 4/3; at most 16, 4 in 3-D) and h halved L\n"
+      "times from 0.1 (default L=5):\n"
       "h*F_ddd, h*N_d and each operator (div V)_i applied to u = A(x1 e1 -\n"
       "xd ed) (n.D.n != 0) or u = Omega(-xd e1 + x1 ed) (n.D.n = 0).\n"
       "Slopes are fitted on log|(div V)_i| against log h (the normal part\n"
@@ -139,6 +140,15 @@ int vsph_cmd_scaling_main(int argc, char **argv) {
   if (fk == VSPH_FIELDS_QUADRATIC && dim != 2)
     return vsph_args_fail(CMD, "the quadratic field is 2-D (--dim 2)");
   if (!(hdx > 0)) return vsph_args_fail(CMD, "--hdx must be > 0, got %g", hdx);
+  /* The surface patch has radius (2 kappa + 2/hdx) h, ~(6 hdx)^d particles
+   * each with ~(3 hdx)^d neighbours: cost grows like hdx^(2d). These caps
+   * keep one level within about 10 s on one core. */
+  const double hdx_max = dim == 3 ? 4.0 : 16.0;
+  if (hdx > hdx_max)
+    return vsph_args_fail(CMD,
+                          "--hdx above %g in %d-D would need too many "
+                          "particles, got %g",
+                          hdx_max, dim, hdx);
   if (!(mu > 0)) return vsph_args_fail(CMD, "--mu must be > 0, got %g", mu);
   if (levels < 2 || levels > VSPH_SCALING_MAXLEVELS)
     return vsph_args_fail(CMD, "--levels must lie in 2-%d, got %zu",

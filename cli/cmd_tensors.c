@@ -34,7 +34,8 @@ static void usage(FILE *f) {
       "             prints the gap to quadrature)\n"
       "  --lattice  square (default), hex (2-D), perturbed (square lattice\n"
       "             shifted by up to A*dx per component, seeded)\n"
-      "  --hdx      h/dx of the lattice (default 4/3)\n"
+      "  --hdx      h/dx of the lattice (default 4/3; at most 256, 32 in\n"
+      "             3-D)\n"
       "  --perturb  A for --lattice perturbed (default 0.1)\n"
       "  --seed     random seed (default 2385)\n"
       "  --epsrel   relative accuracy of the quadrature (default 1e-10)\n"
@@ -128,6 +129,14 @@ int vsph_cmd_tensors_main(int argc, char **argv) {
   if (depth < 0)
     return vsph_args_fail(CMD, "--depth must be >= 0, got %g", depth);
   if (!(hdx > 0)) return vsph_args_fail(CMD, "--hdx must be > 0, got %g", hdx);
+  /* A patch of radius (kappa + 2/hdx) h holds ~(kappa hdx)^d particles:
+   * cap it at a few million. */
+  const double hdx_max = dim == 3 ? 32.0 : 256.0;
+  if (hdx > hdx_max)
+    return vsph_args_fail(CMD,
+                          "--hdx above %g in %d-D would need too many "
+                          "particles, got %g",
+                          hdx_max, dim, hdx);
   if (!(epsrel >= 1e-13 && epsrel < 1))
     return vsph_args_fail(CMD, "--epsrel must lie in [1e-13, 1), got %g",
                           epsrel);

@@ -56,6 +56,8 @@ static const char *const bad_inputs[] = {
     "tensors --hdx 0",
     "tensors --hdx -1.2",
     "tensors --hdx abc",
+    "tensors --method particles --dim 3 --hdx 1e6",
+    "scaling --hdx 1e4",
     "tensors --depth 1.5x",
     "tensors --depth nan",
     "tensors --method sums",
