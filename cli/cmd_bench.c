@@ -97,20 +97,13 @@ static size_t count_interactions(const struct vsph_cells *c,
 
 int vsph_cmd_bench_main(int argc, char **argv) {
   size_t side = 200;
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v;
-    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-      usage(stdout);
-      return 0;
-    } else if (!strcmp(a, "--size")) {
-      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      if (vsph_args_size(CMD, a, v, &side)) return 2;
-      if (side < 10 || side > 2000)
-        return vsph_args_fail(CMD, "--size must lie in 10-2000");
-    } else {
-      return vsph_args_fail(CMD, "unknown option '%s' (see --help)", a);
-    }
-  }
+  const struct vsph_args_spec specs[] = {
+      {"--size", VSPH_ARGS_SIZE, &side},
+  };
+  const int pr = vsph_args_parse(CMD, argc, argv, specs, 1, usage);
+  if (pr >= 0) return pr;
+  if (side < 10 || side > 2000)
+    return vsph_args_fail(CMD, "--size must lie in 10-2000, got %zu", side);
   printf("# vsph %s bench, %d threads available\n", VSPH_VERSION,
          omp_get_max_threads());
   printf("\n## F, G, N, M by quadrature (epsrel 1e-10), best of 5, ms\n");

@@ -47,35 +47,21 @@ int vsph_cmd_dissipation_main(int argc, char **argv) {
   double hdx = 4.0 / 3.0, mu = 0.0137, perturb = 0.0;
   size_t res = 40, seed = 2385;
   int json = 0;
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v;
-    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-      usage(stdout);
-      return 0;
-    } else if (!strcmp(a, "--json")) {
-      json = 1;
-    } else if (!strcmp(a, "--formulation") || !strcmp(a, "--field") ||
-               !strcmp(a, "--shape") || !strcmp(a, "--kernel")) {
-      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      if (!strcmp(a, "--formulation")) form = v;
-      if (!strcmp(a, "--field")) field = v;
-      if (!strcmp(a, "--shape")) shape = v;
-      if (!strcmp(a, "--kernel")) kname = v;
-    } else if (!strcmp(a, "--hdx") || !strcmp(a, "--mu") ||
-               !strcmp(a, "--perturb")) {
-      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      double *dst = !strcmp(a, "--hdx")  ? &hdx
-                    : !strcmp(a, "--mu") ? &mu
-                                         : &perturb;
-      if (vsph_args_double(CMD, a, v, dst)) return 2;
-    } else if (!strcmp(a, "--res") || !strcmp(a, "--seed")) {
-      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      if (vsph_args_size(CMD, a, v, !strcmp(a, "--res") ? &res : &seed))
-        return 2;
-    } else {
-      return vsph_args_fail(CMD, "unknown option '%s' (see --help)", a);
-    }
-  }
+  const struct vsph_args_spec specs[] = {
+      {"--formulation", VSPH_ARGS_STRING, &form},
+      {"--field", VSPH_ARGS_STRING, &field},
+      {"--shape", VSPH_ARGS_STRING, &shape},
+      {"--kernel", VSPH_ARGS_STRING, &kname},
+      {"--hdx", VSPH_ARGS_DOUBLE, &hdx},
+      {"--mu", VSPH_ARGS_DOUBLE, &mu},
+      {"--perturb", VSPH_ARGS_DOUBLE, &perturb},
+      {"--res", VSPH_ARGS_SIZE, &res},
+      {"--seed", VSPH_ARGS_SIZE, &seed},
+      {"--json", VSPH_ARGS_FLAG, &json},
+  };
+  const int pr = vsph_args_parse(CMD, argc, argv, specs,
+                                 sizeof specs / sizeof specs[0], usage);
+  if (pr >= 0) return pr;
   if (!form) return vsph_args_fail(CMD, "--formulation is required");
   if (!field) return vsph_args_fail(CMD, "--field is required");
   struct vsph_dissipation_props dp;
@@ -93,8 +79,8 @@ int vsph_cmd_dissipation_main(int argc, char **argv) {
   if (sh < 0)
     return vsph_args_fail(CMD, "unknown shape '%s' (disc, square)", shape);
   dp.shape = sh;
-  dp.kernel = vsph_kernel_find(kname);
-  if (!dp.kernel) return vsph_args_fail(CMD, "unknown kernel '%s'", kname);
+  dp.kernel = vsph_args_kernel(CMD, kname);
+  if (!dp.kernel) return 2;
   if (!(hdx > 0)) return vsph_args_fail(CMD, "--hdx must be > 0, got %g", hdx);
   if (!(mu > 0)) return vsph_args_fail(CMD, "--mu must be > 0, got %g", mu);
   if (res < 2 || res > 4000)

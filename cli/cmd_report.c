@@ -437,21 +437,13 @@ static int part_dissipation(struct report *R) {
 
 int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v;
-    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-      usage(stdout);
-      return 0;
-    } else if (!strcmp(a, "--out") || !strcmp(a, "--only")) {
-      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      if (!strcmp(a, "--out"))
-        dir = v;
-      else
-        only = v;
-    } else {
-      return vsph_args_fail(CMD, "unknown option '%s' (see --help)", a);
-    }
-  }
+  const struct vsph_args_spec specs[] = {
+      {"--out", VSPH_ARGS_STRING, &dir},
+      {"--only", VSPH_ARGS_STRING, &only},
+  };
+  const int pr = vsph_args_parse(CMD, argc, argv, specs,
+                                 sizeof specs / sizeof specs[0], usage);
+  if (pr >= 0) return pr;
   int want[NPARTS] = {1, 1, 1, 1};
   if (only) {
     for (int p = 0; p < NPARTS; p++) want[p] = 0;

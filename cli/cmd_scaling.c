@@ -94,40 +94,25 @@ int vsph_cmd_scaling_main(int argc, char **argv) {
   double dimf = 2, hdx = 4.0 / 3.0, perturb = 0.1, mu = 0.0137;
   size_t levels = 5, seed = 2385;
   int json = 0;
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v;
-    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-      usage(stdout);
-      return 0;
-    } else if (!strcmp(a, "--json")) {
-      json = 1;
-    } else if (!strcmp(a, "--kernel") || !strcmp(a, "--field") ||
-               !strcmp(a, "--lattice")) {
-      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      if (!strcmp(a, "--kernel")) kname = v;
-      if (!strcmp(a, "--field")) field = v;
-      if (!strcmp(a, "--lattice")) lattice = v;
-    } else if (!strcmp(a, "--dim") || !strcmp(a, "--hdx") ||
-               !strcmp(a, "--perturb") || !strcmp(a, "--mu")) {
-      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      double *dst = !strcmp(a, "--dim")       ? &dimf
-                    : !strcmp(a, "--hdx")     ? &hdx
-                    : !strcmp(a, "--perturb") ? &perturb
-                                              : &mu;
-      if (vsph_args_double(CMD, a, v, dst)) return 2;
-    } else if (!strcmp(a, "--levels") || !strcmp(a, "--seed")) {
-      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      if (vsph_args_size(CMD, a, v, !strcmp(a, "--levels") ? &levels : &seed))
-        return 2;
-    } else {
-      return vsph_args_fail(CMD, "unknown option '%s' (see --help)", a);
-    }
-  }
-  const struct vsph_kernel_type *k = vsph_kernel_find(kname);
-  if (!k) return vsph_args_fail(CMD, "unknown kernel '%s'", kname);
-  if (dimf != 1 && dimf != 2 && dimf != 3)
-    return vsph_args_fail(CMD, "--dim must be 1, 2 or 3, got %g", dimf);
-  const int dim = (int)dimf;
+  const struct vsph_args_spec specs[] = {
+      {"--kernel", VSPH_ARGS_STRING, &kname},
+      {"--field", VSPH_ARGS_STRING, &field},
+      {"--lattice", VSPH_ARGS_STRING, &lattice},
+      {"--dim", VSPH_ARGS_DOUBLE, &dimf},
+      {"--hdx", VSPH_ARGS_DOUBLE, &hdx},
+      {"--perturb", VSPH_ARGS_DOUBLE, &perturb},
+      {"--mu", VSPH_ARGS_DOUBLE, &mu},
+      {"--levels", VSPH_ARGS_SIZE, &levels},
+      {"--seed", VSPH_ARGS_SIZE, &seed},
+      {"--json", VSPH_ARGS_FLAG, &json},
+  };
+  const int pr = vsph_args_parse(CMD, argc, argv, specs,
+                                 sizeof specs / sizeof specs[0], usage);
+  if (pr >= 0) return pr;
+  const struct vsph_kernel_type *k = vsph_args_kernel(CMD, kname);
+  if (!k) return 2;
+  const int dim = vsph_args_dim(CMD, dimf);
+  if (!dim) return 2;
   const int fk = vsph_fields_find(field);
   if (fk != VSPH_FIELDS_STRAIN && fk != VSPH_FIELDS_ROTATION &&
       fk != VSPH_FIELDS_QUADRATIC)
@@ -157,21 +142,15 @@ int vsph_cmd_scaling_main(int argc, char **argv) {
     return vsph_args_fail(CMD,
                           "--levels above 8 gives h below 0.0004: "
                           "use at most 8");
-  int kind = vsph_lattice_find(lattice);
-  const int perturbed = !strcmp(lattice, "perturbed");
-  if (perturbed) kind = VSPH_LATTICE_SQUARE;
-  if (kind < 0) return vsph_args_fail(CMD, "unknown lattice '%s'", lattice);
-  if (kind == VSPH_LATTICE_HEX && dim != 2)
-    return vsph_args_fail(CMD, "the hex lattice is 2-D only");
-  if (!(perturb >= 0 && perturb < 0.5))
-    return vsph_args_fail(CMD, "--perturb must lie in [0, 0.5), got %g",
-                          perturb);
+  int kind;
+  double amp;
+  if (vsph_args_lattice(CMD, lattice, dim, perturb, &kind, &amp)) return 2;
 
   struct vsph_scaling_props sp;
   vsph_scaling_props_init(&sp);
   sp.kernel = k;
   sp.lattice = kind;
-  sp.perturb = perturbed ? perturb : 0.0;
+  sp.perturb = amp;
   sp.seed = seed;
   sp.levels = levels;
   sp.hdx = hdx;

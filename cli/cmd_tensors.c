@@ -91,41 +91,25 @@ int vsph_cmd_tensors_main(int argc, char **argv) {
   double dimf = 2, depth = 0.0, hdx = 4.0 / 3.0, perturb = 0.1, epsrel = 1e-10;
   size_t seed = 2385;
   int json = 0;
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v;
-    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-      usage(stdout);
-      return 0;
-    } else if (!strcmp(a, "--json")) {
-      json = 1;
-    } else if (!strcmp(a, "--kernel") || !strcmp(a, "--method") ||
-               !strcmp(a, "--lattice")) {
-      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      if (!strcmp(a, "--kernel")) kname = v;
-      if (!strcmp(a, "--method")) method = v;
-      if (!strcmp(a, "--lattice")) lattice = v;
-    } else if (!strcmp(a, "--dim") || !strcmp(a, "--depth") ||
-               !strcmp(a, "--hdx") || !strcmp(a, "--perturb") ||
-               !strcmp(a, "--epsrel")) {
-      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      double *dst = !strcmp(a, "--dim")       ? &dimf
-                    : !strcmp(a, "--depth")   ? &depth
-                    : !strcmp(a, "--hdx")     ? &hdx
-                    : !strcmp(a, "--perturb") ? &perturb
-                                              : &epsrel;
-      if (vsph_args_double(CMD, a, v, dst)) return 2;
-    } else if (!strcmp(a, "--seed")) {
-      if (!(v = vsph_args_value(CMD, argc, argv, &i))) return 2;
-      if (vsph_args_size(CMD, a, v, &seed)) return 2;
-    } else {
-      return vsph_args_fail(CMD, "unknown option '%s' (see --help)", a);
-    }
-  }
-  const struct vsph_kernel_type *k = vsph_kernel_find(kname);
-  if (!k) return vsph_args_fail(CMD, "unknown kernel '%s'", kname);
-  if (dimf != 1 && dimf != 2 && dimf != 3)
-    return vsph_args_fail(CMD, "--dim must be 1, 2 or 3, got %g", dimf);
-  const int dim = (int)dimf;
+  const struct vsph_args_spec specs[] = {
+      {"--kernel", VSPH_ARGS_STRING, &kname},
+      {"--method", VSPH_ARGS_STRING, &method},
+      {"--lattice", VSPH_ARGS_STRING, &lattice},
+      {"--dim", VSPH_ARGS_DOUBLE, &dimf},
+      {"--depth", VSPH_ARGS_DOUBLE, &depth},
+      {"--hdx", VSPH_ARGS_DOUBLE, &hdx},
+      {"--perturb", VSPH_ARGS_DOUBLE, &perturb},
+      {"--epsrel", VSPH_ARGS_DOUBLE, &epsrel},
+      {"--seed", VSPH_ARGS_SIZE, &seed},
+      {"--json", VSPH_ARGS_FLAG, &json},
+  };
+  const int pr = vsph_args_parse(CMD, argc, argv, specs,
+                                 sizeof specs / sizeof specs[0], usage);
+  if (pr >= 0) return pr;
+  const struct vsph_kernel_type *k = vsph_args_kernel(CMD, kname);
+  if (!k) return 2;
+  const int dim = vsph_args_dim(CMD, dimf);
+  if (!dim) return 2;
   if (depth < 0)
     return vsph_args_fail(CMD, "--depth must be >= 0, got %g", depth);
   if (!(hdx > 0)) return vsph_args_fail(CMD, "--hdx must be > 0, got %g", hdx);
@@ -143,15 +127,10 @@ int vsph_cmd_tensors_main(int argc, char **argv) {
   const int particles = !strcmp(method, "particles");
   if (!particles && strcmp(method, "quadrature"))
     return vsph_args_fail(CMD, "unknown method '%s'", method);
-  int kind = vsph_lattice_find(lattice);
-  const int perturbed = !strcmp(lattice, "perturbed");
-  if (perturbed) kind = VSPH_LATTICE_SQUARE;
-  if (kind < 0) return vsph_args_fail(CMD, "unknown lattice '%s'", lattice);
-  if (kind == VSPH_LATTICE_HEX && dim != 2)
-    return vsph_args_fail(CMD, "the hex lattice is 2-D only");
-  if (!(perturb >= 0 && perturb < 0.5))
-    return vsph_args_fail(CMD, "--perturb must lie in [0, 0.5), got %g",
-                          perturb);
+  int kind;
+  double amp;
+  if (vsph_args_lattice(CMD, lattice, dim, perturb, &kind, &amp)) return 2;
+  const int perturbed = amp > 0.0;
 
   gsl_integration_workspace *wo = gsl_integration_workspace_alloc(1000);
   gsl_integration_workspace *wi = gsl_integration_workspace_alloc(1000);
@@ -165,7 +144,7 @@ int vsph_cmd_tensors_main(int argc, char **argv) {
     struct vsph_lattice_props lp = {.dim = dim,
                                     .kind = kind,
                                     .dx = 1.0 / hdx,
-                                    .perturb = perturbed ? perturb : 0.0,
+                                    .perturb = amp,
                                     .seed = seed};
     struct vsph_particles *p = NULL;
     size_t centre;
