@@ -124,7 +124,6 @@ static int part_tensors(struct report *R) {
         for (int m = 0; m < 3 && !st; m++) {
           if (m == 1 && dim != 2) continue;
           for (int hi = 0; hi < 3 && !st; hi++) {
-            if (dim == 3 && hi == 2) continue; /* 3-D at h/dx 4: slow */
             struct vsph_lattice_props lp = {
                 .dim = dim,
                 .kind = m == 1 ? VSPH_LATTICE_HEX : VSPH_LATTICE_SQUARE,
@@ -503,6 +502,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
   cJSON_AddStringToObject(o, "version", VSPH_VERSION);
   cJSON_AddStringToObject(o, "date", stamp);
   cJSON_AddNumberToObject(o, "threads", omp_get_max_threads());
+  cJSON_AddNumberToObject(o, "cores", omp_get_num_procs());
   cJSON_AddStringToObject(o, "compiler", __VERSION__);
   cJSON *w = cJSON_CreateObject();
   for (int p = 0; p < NPARTS; p++)
