@@ -1,0 +1,66 @@
+#ifndef VSPH_ANALYSIS_REFERENCES_H
+#define VSPH_ANALYSIS_REFERENCES_H
+
+#include <stddef.h>
+
+/** @file references.h
+ *  @brief Exact reference solutions of the free-surface scenes (THEORY.md
+ *  section 6). Vortex patch: the Bessel-series solution of Eq. (6.38) of
+ *  Colagrossi et al. (2011), d omega/dt = nu (omega'' + 3 omega'/r),
+ *  omega'(R) = 0, from the [reconstructed] initial profile
+ *  omega(r,0) = omega0 l^2 [1/(l^2 + r^2) + r^2/(l^2 + R^2)^2]. No I/O. */
+
+/** Vortex-patch series: omega = c_0 + sum_n c_n phi_n(r) exp(-nu k_n^2 t),
+ *  phi_n = 2 J_1(k_n r)/(k_n r), J_2(k_n R) = 0. */
+struct vsph_references_vortex {
+  double R;      /*!< patch radius (m) */
+  double l2;     /*!< profile parameter l^2 (m^2) */
+  double omega0; /*!< angular velocity at the centre (rad/s) */
+  double nu;     /*!< kinematic viscosity (m^2/s) */
+  size_t nterms; /*!< series terms beyond c_0 */
+  double c0;     /*!< final rigid rotation omega_inf (rad/s) */
+  double *k;     /*!< k_n (1/m), n = 1..nterms at k[n-1] */
+  double *c;     /*!< c_n (rad/s) */
+  void *ws;      /*!< private quadrature workspace */
+};
+
+/** @brief Build the series: zeros of J_2 (gsl_sf_bessel_zero_Jnu) and the
+ *  coefficients c_n = int omega(r,0) phi_n r^3 dr / int phi_n^2 r^3 dr by
+ *  GSL quadrature. NULL (after reporting) on bad values or failure. */
+struct vsph_references_vortex *vsph_references_vortex_alloc(double R, double l2,
+                                                            double omega0,
+                                                            double nu,
+                                                            size_t nterms);
+
+/** @brief Free; NULL is a no-op. */
+void vsph_references_vortex_free(struct vsph_references_vortex *v);
+
+/** @brief The initial profile omega(r, 0), closed form. */
+double vsph_references_vortex_initial(const struct vsph_references_vortex *v,
+                                      double r);
+
+/** @brief omega(r, t) and d omega/dr (r, t) from the series. */
+void vsph_references_vortex_eval(const struct vsph_references_vortex *v,
+                                 double r, double t, double *omega,
+                                 double *domega_dr);
+
+/** @brief Kinetic energy E_k = pi rho int omega^2 r^3 dr and its rate
+ *  dE_k/dt = -mu int (r domega/dr)^2 dV (Eq. 6.41), per unit depth, by
+ *  GSL quadrature of the series. @return VSPH_OK or VSPH_ELIB.
+ *  @note Uses the object's workspace: not for concurrent calls. */
+int vsph_references_vortex_energy(struct vsph_references_vortex *v, double t,
+                                  double rho, double *Ek, double *dEk_dt);
+
+/** @brief Lighthill's standing-wave kinetic energy (THEORY 6.3):
+ *  E_k = (rho g A^2 L / 8) exp(-4 nu k^2 t) [1 + cos(2 omega t)]. */
+double vsph_references_lighthill(double rho, double g, double A, double L,
+                                 double nu, double k, double omega, double t);
+
+/** @brief Standing wave's initial potential-flow velocity u = grad phi0,
+ *  phi0 = (A g/omega) cosh[k(y + H)]/cosh(kH) cos(kx), y = 0 at the still
+ *  surface (THEORY 6.3). */
+void vsph_references_wave_velocity(double A, double g, double k, double H,
+                                   double omega, double x, double y,
+                                   double u[2]);
+
+#endif /* VSPH_ANALYSIS_REFERENCES_H */
