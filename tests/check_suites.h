@@ -10,6 +10,7 @@ Suite *vsph_cells_suite(void);
 Suite *vsph_viscous_suite(void);
 Suite *vsph_scaling_suite(void);
 Suite *vsph_dissipation_suite(void);
+Suite *vsph_poisson_suite(void);
 Suite *vsph_references_suite(void);
 Suite *vsph_cli_suite(void);
 
