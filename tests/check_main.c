@@ -22,6 +22,7 @@ int vsph_test_last_status(void) { return last_status; }
 int main(void) {
   gsl_set_error_handler_off();
   SRunner *sr = srunner_create(vsph_status_suite());
+  srunner_add_suite(sr, vsph_params_suite());
   srunner_add_suite(sr, vsph_kernel_suite());
   srunner_add_suite(sr, vsph_moments_suite());
   srunner_add_suite(sr, vsph_cells_suite());

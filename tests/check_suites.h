@@ -4,6 +4,7 @@
 #include <check.h>
 
 Suite *vsph_status_suite(void);
+Suite *vsph_params_suite(void);
 Suite *vsph_kernel_suite(void);
 Suite *vsph_moments_suite(void);
 Suite *vsph_cells_suite(void);

@@ -1,0 +1,278 @@
+#include "params.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <yaml.h>
+
+#include "status.h"
+
+enum { KEY_MAX = 128, VALUE_MAX = 512 };
+
+struct entry {
+  char key[KEY_MAX];
+  char value[VALUE_MAX];
+  int used;
+};
+
+/* Entries are allocated one by one, so a value pointer handed out by a
+ * getter stays valid for the store's lifetime. */
+struct vsph_params {
+  struct entry **e;
+  size_t n, cap;
+};
+
+struct vsph_params *vsph_params_alloc(void) {
+  struct vsph_params *prm = calloc(1, sizeof *prm);
+  if (!prm)
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot allocate a parameter store");
+  return prm;
+}
+
+void vsph_params_free(struct vsph_params *prm) {
+  if (!prm) return;
+  for (size_t i = 0; i < prm->n; i++) free(prm->e[i]);
+  free(prm->e);
+  free(prm);
+}
+
+static struct entry *find(const struct vsph_params *prm, const char *key) {
+  for (size_t i = 0; i < prm->n; i++)
+    if (!strcmp(prm->e[i]->key, key)) return prm->e[i];
+  return NULL;
+}
+
+static int put(struct vsph_params *prm, const char *key, const char *value,
+               int used) {
+  if (strlen(key) >= KEY_MAX || strlen(value) >= VALUE_MAX)
+    VSPH_FAIL(VSPH_EINVAL, "parameter '%s' or its value is too long", key);
+  struct entry *e = find(prm, key);
+  if (!e) {
+    if (prm->n == prm->cap) {
+      const size_t cap = prm->cap ? 2 * prm->cap : 32;
+      struct entry **ne = realloc(prm->e, cap * sizeof *ne);
+      if (!ne) VSPH_FAIL(VSPH_ENOMEM, "cannot grow the parameter store");
+      prm->e = ne;
+      prm->cap = cap;
+    }
+    e = malloc(sizeof *e);
+    if (!e) VSPH_FAIL(VSPH_ENOMEM, "cannot grow the parameter store");
+    prm->e[prm->n++] = e;
+    snprintf(e->key, KEY_MAX, "%s", key);
+    e->used = 0;
+  }
+  snprintf(e->value, VALUE_MAX, "%s", value);
+  e->used |= used;
+  return VSPH_OK;
+}
+
+int vsph_params_set(struct vsph_params *prm, const char *key,
+                    const char *value) {
+  const char *colon = strchr(key, ':');
+  if (!colon || colon == key || colon[1] == '\0' || strchr(colon + 1, ':'))
+    VSPH_FAIL(VSPH_EINVAL, "parameter '%s' is not of the form Section:key",
+              key);
+  return put(prm, key, value, 0);
+}
+
+/* libyaml event reader for the subset: root mapping of sections, each a
+ * mapping of scalars or flow/block sequences of scalars. */
+int vsph_params_read(struct vsph_params *prm, const char *path) {
+  FILE *f = fopen(path, "rb");
+  if (!f) VSPH_FAIL(VSPH_EIO, "cannot open '%s': %s", path, strerror(errno));
+  yaml_parser_t ps;
+  if (!yaml_parser_initialize(&ps)) {
+    fclose(f);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot start the YAML parser");
+  }
+  yaml_parser_set_input_file(&ps, f);
+  int st = VSPH_OK, depth = 0, docs = 0, in_seq = 0;
+  char section[KEY_MAX] = "", key[KEY_MAX] = "", value[VALUE_MAX] = "";
+  char full[2 * KEY_MAX + 2];
+  int have_key = 0, done = 0;
+  while (!done && !st) {
+    yaml_event_t ev;
+    if (!yaml_parser_parse(&ps, &ev)) {
+      vsph_status_report(
+          VSPH_EINVAL, __FILE__, __LINE__, "%s:%zu: malformed YAML: %s", path,
+          ps.problem_mark.line + 1, ps.problem ? ps.problem : "parse error");
+      st = VSPH_EINVAL;
+      break;
+    }
+    const size_t line = ev.start_mark.line + 1;
+    switch (ev.type) {
+      case YAML_STREAM_END_EVENT:
+        done = 1;
+        break;
+      case YAML_DOCUMENT_START_EVENT:
+        if (++docs > 1) {
+          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                             "%s:%zu: several documents in one file", path,
+                             line);
+          st = VSPH_EINVAL;
+        }
+        break;
+      case YAML_ALIAS_EVENT:
+        vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                           "%s:%zu: aliases are not allowed", path, line);
+        st = VSPH_EINVAL;
+        break;
+      case YAML_MAPPING_START_EVENT:
+        if (ev.data.mapping_start.anchor || depth >= 2 || in_seq ||
+            (depth == 1 && !have_key)) {
+          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                             "%s:%zu: only 'Section:' then 'key: value' "
+                             "is allowed",
+                             path, line);
+          st = VSPH_EINVAL;
+          break;
+        }
+        if (depth == 1) { /* the section's own mapping */
+          snprintf(section, sizeof section, "%s", key);
+          have_key = 0;
+        }
+        depth++;
+        break;
+      case YAML_MAPPING_END_EVENT:
+        depth--;
+        have_key = 0;
+        break;
+      case YAML_SEQUENCE_START_EVENT:
+        if (depth != 2 || !have_key || in_seq ||
+            ev.data.sequence_start.anchor) {
+          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                             "%s:%zu: a list must be the value of a key", path,
+                             line);
+          st = VSPH_EINVAL;
+          break;
+        }
+        in_seq = 1;
+        value[0] = '\0';
+        break;
+      case YAML_SEQUENCE_END_EVENT:
+        in_seq = 0;
+        snprintf(full, sizeof full, "%s:%s", section, key);
+        if (find(prm, full)) {
+          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                             "%s:%zu: '%s' given twice", path, line, full);
+          st = VSPH_EINVAL;
+        } else {
+          st = put(prm, full, value, 0);
+        }
+        have_key = 0;
+        break;
+      case YAML_SCALAR_EVENT: {
+        const char *s = (const char *)ev.data.scalar.value;
+        if (ev.data.scalar.anchor) {
+          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                             "%s:%zu: anchors are not allowed", path, line);
+          st = VSPH_EINVAL;
+        } else if (in_seq) {
+          const size_t len = strlen(value);
+          snprintf(value + len, VALUE_MAX - len, "%s%s", len ? ", " : "", s);
+        } else if (depth == 1) { /* a section name, or a bare root key */
+          if (have_key) {
+            vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                               "%s:%zu: '%s' must sit inside a section", path,
+                               line, key);
+            st = VSPH_EINVAL;
+          }
+          snprintf(key, sizeof key, "%s", s);
+          have_key = 1;
+        } else if (depth == 2 && !have_key) {
+          snprintf(key, sizeof key, "%s", s);
+          have_key = 1;
+        } else if (depth == 2) {
+          snprintf(full, sizeof full, "%s:%s", section, key);
+          if (find(prm, full)) {
+            vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                               "%s:%zu: '%s' given twice", path, line, full);
+            st = VSPH_EINVAL;
+          } else {
+            st = put(prm, full, s, 0);
+          }
+          have_key = 0;
+        } else {
+          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                             "%s:%zu: unexpected value '%s'", path, line, s);
+          st = VSPH_EINVAL;
+        }
+        break;
+      }
+      default:
+        break;
+    }
+    yaml_event_delete(&ev);
+  }
+  if (!st && depth == 1 && have_key) {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "%s: section '%s' has no keys", path, key);
+    st = VSPH_EINVAL;
+  }
+  yaml_parser_delete(&ps);
+  fclose(f);
+  return st;
+}
+
+static int parse_number(const char *key, const char *s, double *out) {
+  char *end;
+  errno = 0;
+  const double v = strtod(s, &end);
+  while (*end == ' ') end++;
+  if (end == s || *end != '\0' || errno == ERANGE || !isfinite(v))
+    VSPH_FAIL(VSPH_EINVAL, "parameter %s: '%s' is not a finite number", key, s);
+  *out = v;
+  return VSPH_OK;
+}
+
+int vsph_params_get_double(struct vsph_params *prm, const char *key,
+                           double *out) {
+  struct entry *e = find(prm, key);
+  if (!e) VSPH_FAIL(VSPH_EINVAL, "parameter %s is required", key);
+  e->used = 1;
+  return parse_number(key, e->value, out);
+}
+
+int vsph_params_get_double_or(struct vsph_params *prm, const char *key,
+                              double def, double *out) {
+  struct entry *e = find(prm, key);
+  if (e) {
+    e->used = 1;
+    return parse_number(key, e->value, out);
+  }
+  char buf[64];
+  snprintf(buf, sizeof buf, "%.17g", def);
+  *out = def;
+  return put(prm, key, buf, 1);
+}
+
+int vsph_params_get_string_or(struct vsph_params *prm, const char *key,
+                              const char *def, const char **out) {
+  struct entry *e = find(prm, key);
+  if (!e) {
+    const int st = put(prm, key, def, 1);
+    if (st) return st;
+    e = find(prm, key);
+  }
+  e->used = 1;
+  *out = e->value;
+  return VSPH_OK;
+}
+
+const char *vsph_params_unused(const struct vsph_params *prm) {
+  for (size_t i = 0; i < prm->n; i++)
+    if (!prm->e[i]->used) return prm->e[i]->key;
+  return NULL;
+}
+
+size_t vsph_params_count(const struct vsph_params *prm) { return prm->n; }
+
+void vsph_params_entry(const struct vsph_params *prm, size_t i,
+                       const char **key, const char **value, int *used) {
+  *key = prm->e[i]->key;
+  *value = prm->e[i]->value;
+  *used = prm->e[i]->used;
+}
