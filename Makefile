@@ -17,7 +17,7 @@ ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L -fopenmp $(WARN) $(CFLAGS) \
 LDLIBS    = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm
 TESTLIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
 
-LIB_SRC  := $(wildcard common/*.c kernels/*.c solver/*.c analysis/*.c)
+LIB_SRC  := $(wildcard common/*.c kernels/*.c solver/*.c solver/scenes/*.c analysis/*.c)
 CLI_SRC  := $(wildcard cli/*.c)
 TEST_SRC := $(wildcard tests/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
@@ -85,7 +85,7 @@ prefix-check: $(LIB_OBJ) $(CLI_OBJ)
 	  done; \
 	done; [ $$bad -eq 0 ] && echo "prefix-check: ok"
 
-FMT_SRC = $(wildcard */*.c */*.h)
+FMT_SRC = $(wildcard */*.c */*.h */*/*.c)
 format:
 	clang-format -i $(FMT_SRC)
 format-check:

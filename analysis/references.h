@@ -21,6 +21,7 @@ struct vsph_references_vortex {
   double c0;     /*!< final rigid rotation omega_inf (rad/s) */
   double *k;     /*!< k_n (1/m), n = 1..nterms at k[n-1] */
   double *c;     /*!< c_n (rad/s) */
+  double *norm;  /*!< int_0^R phi_n^2 r^3 dr (m^4) */
   void *ws;      /*!< private quadrature workspace */
 };
 
@@ -51,16 +52,41 @@ void vsph_references_vortex_eval(const struct vsph_references_vortex *v,
 int vsph_references_vortex_energy(struct vsph_references_vortex *v, double t,
                                   double rho, double *Ek, double *dEk_dt);
 
+/** @brief The same E_k and dE_k/dt from the series coefficients alone:
+ *  by orthogonality (weight r^3) E_k = pi rho [c_0^2 R^4/4 + sum c_n^2
+ *  N_n e^{-2 nu k_n^2 t}], N_n = int phi_n^2 r^3 dr, and dE_k/dt =
+ *  -2 pi rho nu sum k_n^2 c_n^2 N_n e^{-2 nu k_n^2 t}. Fast; checked
+ *  against the quadrature version in the tests. */
+void vsph_references_vortex_energy_series(
+    const struct vsph_references_vortex *v, double t, double rho, double *Ek,
+    double *dEk_dt);
+
 /** @brief Lighthill's standing-wave kinetic energy (THEORY 6.3):
  *  E_k = (rho g A^2 L / 8) exp(-4 nu k^2 t) [1 + cos(2 omega t)]. */
 double vsph_references_lighthill(double rho, double g, double A, double L,
                                  double nu, double k, double omega, double t);
 
-/** @brief Standing wave's initial potential-flow velocity u = grad phi0,
- *  phi0 = (A g/omega) cosh[k(y + H)]/cosh(kH) cos(kx), y = 0 at the still
- *  surface (THEORY 6.3). */
-void vsph_references_wave_velocity(double A, double g, double k, double H,
-                                   double omega, double x, double y,
-                                   double u[2]);
+struct vsph_scene;
+
+/** A scene's reference curve: E_k(t) and dE_k/dt(t), NaN where the scene
+ *  has none (stretching square: only t = 0, exact dE_k/dt = -4 mu A0^2 L^2
+ *  and E_k = rho A0^2 L^4/12). */
+struct vsph_references_scene {
+  const struct vsph_scene *scene;        /*!< borrowed */
+  struct vsph_references_vortex *vortex; /*!< vortex patch only */
+};
+
+/** @brief Reference of @p sc (kept by reference until _free).
+ *  NULL (after reporting) on failure. */
+struct vsph_references_scene *vsph_references_scene_alloc(
+    const struct vsph_scene *sc);
+
+/** @brief Free; NULL is a no-op. */
+void vsph_references_scene_free(struct vsph_references_scene *r);
+
+/** @brief E_k and dE_k/dt of the reference at time t (NaN where none).
+ *  @return VSPH_OK or VSPH_ELIB. */
+int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
+                               double *Ek, double *dEk_dt);
 
 #endif /* VSPH_ANALYSIS_REFERENCES_H */

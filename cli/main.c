@@ -8,6 +8,7 @@
 #include "cmd_bench.h"
 #include "cmd_dissipation.h"
 #include "cmd_report.h"
+#include "cmd_run.h"
 #include "cmd_scaling.h"
 #include "cmd_tensors.h"
 
@@ -24,6 +25,9 @@ static const struct command commands[] = {
      "1/h truncation-error scaling at the surface; interior convergence"},
     {"dissipation", vsph_cmd_dissipation_main,
      "dissipation integral of MGF, MEAF or PVWF on a disc or square"},
+    {"run", vsph_cmd_run_main, "run the free-surface WCSPH solver on a scene"},
+    {"scenes", vsph_cmd_run_scenes,
+     "list the scenes, their parameters and defaults"},
     {"report", vsph_cmd_report_main,
      "run the analysis suite and write the tables to reports/out"},
     {"bench", vsph_cmd_bench_main,

@@ -9,6 +9,7 @@
 
 #include "../analysis/moments.h"
 #include "../common/status.h"
+#include "../solver/particles.h"
 
 cJSON *vsph_writers_array(const double *v, size_t n) {
   cJSON *a = cJSON_CreateArray();
@@ -107,4 +108,43 @@ int vsph_writers_mkdir(const char *dir) {
   if (mkdir(buf, 0777) != 0 && errno != EEXIST)
     VSPH_FAIL(VSPH_EIO, "cannot create %s: %s", buf, strerror(errno));
   return VSPH_OK;
+}
+
+int vsph_writers_vtk(const char *dir, const char *name,
+                     const struct vsph_particles *p, size_t n_fluid, double t) {
+  size_t *order = malloc((n_fluid ? n_fluid : 1) * sizeof *order);
+  if (!order) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot");
+  for (size_t i = 0; i < p->n; i++)
+    if (p->id[i] < n_fluid) order[p->id[i]] = i;
+  FILE *f = vsph_writers_open(dir, name);
+  if (!f) {
+    free(order);
+    return VSPH_EIO;
+  }
+  const int d = p->dim;
+  fprintf(f,
+          "# vtk DataFile Version 3.0\nvsph particles t = %.10g\nASCII\n"
+          "DATASET POLYDATA\nPOINTS %zu double\n",
+          t, n_fluid);
+  for (size_t k = 0; k < n_fluid; k++) {
+    const size_t i = order[k];
+    fprintf(f, "%.10g %.10g %.10g\n", p->pos[0][i], d > 1 ? p->pos[1][i] : 0.0,
+            d > 2 ? p->pos[2][i] : 0.0);
+  }
+  fprintf(f, "VERTICES %zu %zu\n", n_fluid, 2 * n_fluid);
+  for (size_t k = 0; k < n_fluid; k++) fprintf(f, "1 %zu\n", k);
+  fprintf(f, "POINT_DATA %zu\nVECTORS velocity double\n", n_fluid);
+  for (size_t k = 0; k < n_fluid; k++) {
+    const size_t i = order[k];
+    fprintf(f, "%.10g %.10g %.10g\n", p->vel[0][i], d > 1 ? p->vel[1][i] : 0.0,
+            d > 2 ? p->vel[2][i] : 0.0);
+  }
+  fprintf(f, "SCALARS density double 1\nLOOKUP_TABLE default\n");
+  for (size_t k = 0; k < n_fluid; k++) fprintf(f, "%.12g\n", p->rho[order[k]]);
+  fprintf(f, "SCALARS pressure double 1\nLOOKUP_TABLE default\n");
+  for (size_t k = 0; k < n_fluid; k++) fprintf(f, "%.10g\n", p->p[order[k]]);
+  fprintf(f, "SCALARS id int 1\nLOOKUP_TABLE default\n");
+  for (size_t k = 0; k < n_fluid; k++) fprintf(f, "%zu\n", k);
+  free(order);
+  return vsph_writers_close(f, dir, name);
 }

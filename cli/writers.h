@@ -35,6 +35,14 @@ int vsph_writers_close(FILE *f, const char *dir, const char *name);
 /** @brief Write a JSON object to DIR/NAME atomically; frees it. */
 int vsph_writers_json_file(cJSON *obj, const char *dir, const char *name);
 
+struct vsph_particles;
+
+/** @brief Legacy VTK (POLYDATA) snapshot of the particles with id <
+ *  n_fluid, in id order: points, velocity, density, pressure, id. ParaView
+ *  and VisIt open it directly. Atomic. */
+int vsph_writers_vtk(const char *dir, const char *name,
+                     const struct vsph_particles *p, size_t n_fluid, double t);
+
 /** @brief Create directory @p dir and its parents. 0 or VSPH_EIO. */
 int vsph_writers_mkdir(const char *dir);
 

@@ -271,6 +271,28 @@ static void pvwf_pass2(const struct pair_ctx *pc,
   for (int k = 0; k < dim; k++) f[k] = acc[k];
 }
 
+int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
+                         const struct vsph_particles *p,
+                         const struct vsph_cells *cells,
+                         struct vsph_viscous_ws *ws) {
+  if (vp->form != VSPH_VISCOUS_PVWF) return VSPH_OK;
+  if (!ws || ws->cap < p->n || ws->dim != p->dim)
+    VSPH_FAIL(VSPH_EINVAL, "PVWF needs a workspace for %zu particles", p->n);
+  struct pair_ctx pc;
+  pair_ctx_init(&pc, vp);
+#pragma omp parallel for schedule(dynamic, 8)
+  for (size_t c = 0; c < cells->ncells; c++) {
+    size_t lo[VSPH_CELLS_MAXRANGES], hi[VSPH_CELLS_MAXRANGES];
+    const size_t nr = vsph_cells_ranges(cells, c, lo, hi);
+    const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
+    for (size_t i = i0; i < i1; i++) pvwf_pass1(vp, &pc, p, i, nr, lo, hi, ws);
+  }
+  size_t nf = 0; /* serial: reproducible */
+  for (size_t i = 0; i < p->n; i++) nf += ws->fallback[i];
+  ws->n_fallback = nf;
+  return VSPH_OK;
+}
+
 int vsph_viscous_compute(const struct vsph_viscous_props *vp,
                          const struct vsph_particles *p,
                          const struct vsph_cells *cells,
@@ -279,40 +301,28 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
   if (vp->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "props dimension %d, particles %d", vp->dim, p->dim);
   const int pvwf = vp->form == VSPH_VISCOUS_PVWF;
-  if (pvwf && (!ws || ws->cap < p->n || ws->dim != p->dim))
-    VSPH_FAIL(VSPH_EINVAL, "PVWF needs a workspace for %zu particles", p->n);
+  int st = vsph_viscous_prepare(vp, p, cells, ws);
+  if (st) return st;
   struct pair_ctx pc;
   pair_ctx_init(&pc, vp);
-  const size_t ncells = cells->ncells;
   const int dim = vp->dim;
-
-  for (int pass = pvwf ? 1 : 2; pass <= 2; pass++) {
 #pragma omp parallel for schedule(dynamic, 8)
-    for (size_t c = 0; c < ncells; c++) {
-      size_t lo[VSPH_CELLS_MAXRANGES], hi[VSPH_CELLS_MAXRANGES];
-      const size_t nr = vsph_cells_ranges(cells, c, lo, hi);
-      const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
-      for (size_t i = i0; i < i1; i++) {
-        double f[3] = {0, 0, 0};
-        if (!pvwf) {
-          double d = 0.0;
-          mgf_meaf_one(vp, &pc, p, i, nr, lo, hi, f, dens ? &d : NULL);
-          if (dens) dens[i] = d;
-        } else if (pass == 1) {
-          pvwf_pass1(vp, &pc, p, i, nr, lo, hi, ws);
-          continue;
-        } else {
-          pvwf_pass2(&pc, p, i, nr, lo, hi, ws, f);
-          if (dens) dens[i] = ws->dens[i];
-        }
-        for (int k = 0; k < dim; k++) out[k][i] = f[k];
+  for (size_t c = 0; c < cells->ncells; c++) {
+    size_t lo[VSPH_CELLS_MAXRANGES], hi[VSPH_CELLS_MAXRANGES];
+    const size_t nr = vsph_cells_ranges(cells, c, lo, hi);
+    const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
+    for (size_t i = i0; i < i1; i++) {
+      double f[3] = {0, 0, 0};
+      if (!pvwf) {
+        double d = 0.0;
+        mgf_meaf_one(vp, &pc, p, i, nr, lo, hi, f, dens ? &d : NULL);
+        if (dens) dens[i] = d;
+      } else {
+        pvwf_pass2(&pc, p, i, nr, lo, hi, ws, f);
+        if (dens) dens[i] = ws->dens[i];
       }
+      for (int k = 0; k < dim; k++) out[k][i] = f[k];
     }
-  }
-  if (pvwf) {
-    size_t nf = 0;
-    for (size_t i = 0; i < p->n; i++) nf += ws->fallback[i];
-    ws->n_fallback = nf;
   }
   return VSPH_OK;
 }

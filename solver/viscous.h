@@ -64,6 +64,15 @@ struct vsph_viscous_ws *vsph_viscous_ws_alloc(size_t cap, int dim);
 /** @brief Free a workspace; NULL is a no-op. */
 void vsph_viscous_ws_free(struct vsph_viscous_ws *ws);
 
+/** @brief PVWF first pass: L_i, the renormalised grad u, D_i, T_i, and
+ *  A_i = T_i L_i for every particle (into @p ws), and the count of
+ *  particles whose L fell back to the identity. Other forms: no-op.
+ *  @return VSPH_OK or VSPH_EINVAL (workspace too small). */
+int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
+                         const struct vsph_particles *p,
+                         const struct vsph_cells *cells,
+                         struct vsph_viscous_ws *ws);
+
 /** @brief The viscous force density (div V)_i (N/m^d) of every particle.
  *  Uses pos, vel and vol of @p p.
  *  @param cells built with radius >= kappa h (or the direct path).

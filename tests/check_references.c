@@ -1,11 +1,13 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_odeiv2.h>
+#include <gsl/gsl_sf_bessel.h>
 #include <math.h>
 #include <stdlib.h>
 
 #include "../analysis/references.h"
 #include "../common/consts.h"
+#include "../solver/scene.h"
 #include "check_suites.h"
 
 /* THEORY 6.1 defaults: R = 1, l^2 = 0.1, omega0 = 1, nu = 1e-3. */
@@ -149,6 +151,12 @@ START_TEST(test_energy_rate) {
   ck_assert_int_eq(vsph_references_vortex_energy(v, t, 1.0, &E, &dE), 0);
   ck_assert_double_lt(dE, 0.0);
   ck_assert_double_eq_tol((Eb - Ea) / (2 * dt), dE, 1e-6 * fabs(dE));
+  /* the orthogonality shortcut agrees with the quadrature of the series
+   * (both from the same 100 terms; quadrature at 1e-12) */
+  double Es, dEs;
+  vsph_references_vortex_energy_series(v, t, 1.0, &Es, &dEs);
+  ck_assert_double_eq_tol(Es, E, 1e-10 * E);
+  ck_assert_double_eq_tol(dEs, dE, 1e-9 * fabs(dE));
   vsph_references_vortex_free(v);
 }
 END_TEST
@@ -163,7 +171,7 @@ struct wave {
 static double wave_inner(double y, void *p) {
   const struct wave *w = p;
   double u[2];
-  vsph_references_wave_velocity(w->A, w->g, w->k, w->H, w->om, w->x, y, u);
+  vsph_standing_wave_velocity(w->A, w->g, w->k, w->H, w->om, w->x, y, u);
   return 0.5 * (u[0] * u[0] + u[1] * u[1]);
 }
 static double wave_outer(double x, void *p) {
@@ -194,6 +202,27 @@ START_TEST(test_lighthill_initial) {
 }
 END_TEST
 
+/* The closed-form normalisation 2 R^2 J_1(kR)^2/k^2 against quadrature. */
+static double phi2_r3(double r, void *p) {
+  const double x = *(const double *)p * r;
+  const double f = 2.0 * gsl_sf_bessel_J1(x) / x;
+  return f * f * r * r * r;
+}
+START_TEST(test_norm_closed_form) {
+  struct vsph_references_vortex *v = paper(30);
+  gsl_integration_workspace *ws = gsl_integration_workspace_alloc(200);
+  for (size_t n = 0; n < 30; n += 7) {
+    gsl_function f = {phi2_r3, &v->k[n]};
+    double res, err;
+    gsl_integration_qag(&f, 1e-9, 1.0, 0, 1e-12, 200, GSL_INTEG_GAUSS61, ws,
+                        &res, &err);
+    ck_assert_double_eq_tol(v->norm[n], res, 1e-10 * res);
+  }
+  gsl_integration_workspace_free(ws);
+  vsph_references_vortex_free(v);
+}
+END_TEST
+
 START_TEST(test_errors) {
   vsph_test_silence();
   ck_assert_ptr_null(vsph_references_vortex_alloc(-1.0, 0.1, 1, 1e-3, 5));
@@ -211,6 +240,7 @@ Suite *vsph_references_suite(void) {
   tcase_add_test(tc, test_series_vs_mol);
   tcase_add_test(tc, test_energy_rate);
   tcase_add_test(tc, test_lighthill_initial);
+  tcase_add_test(tc, test_norm_closed_form);
   tcase_add_test(tc, test_errors);
   suite_add_tcase(s, tc);
   return s;

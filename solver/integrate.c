@@ -1,0 +1,252 @@
+#include "integrate.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../common/status.h"
+#include "../kernels/kernel.h"
+#include "cells.h"
+#include "particles.h"
+
+/* Ghost capacity per fluid particle: a particle near a corner has three
+ * images; a wall scene never needs more. */
+static const size_t GHOSTS_PER_PARTICLE = 3;
+
+static int nfields(int dim) { return 2 * dim + 1; } /* r, u, rho */
+
+static double *field(struct vsph_particles *p, int f) {
+  const int d = p->dim;
+  return f < d ? p->pos[f] : f < 2 * d ? p->vel[f - d] : p->rho;
+}
+
+struct vsph_integrate *vsph_integrate_alloc(
+    const struct vsph_integrate_props *ip, struct vsph_particles *fluid) {
+  struct vsph_integrate *s = calloc(1, sizeof *s);
+  if (!s) goto nomem;
+  s->props = *ip;
+  s->n_fluid = fluid->n;
+  const int d = fluid->dim;
+  const size_t cap = fluid->n * (ip->walls.n > 0 ? 1 + GHOSTS_PER_PARTICLE : 1);
+  s->p = vsph_particles_alloc(cap, d);
+  if (!s->p) goto fail;
+  s->p->n = fluid->n;
+  for (int k = 0; k < d; k++) {
+    memcpy(s->p->pos[k], fluid->pos[k], fluid->n * sizeof(double));
+    memcpy(s->p->vel[k], fluid->vel[k], fluid->n * sizeof(double));
+  }
+  memcpy(s->p->m, fluid->m, fluid->n * sizeof(double));
+  memcpy(s->p->rho, fluid->rho, fluid->n * sizeof(double));
+  memcpy(s->p->vol, fluid->vol, fluid->n * sizeof(double));
+  for (size_t i = 0; i < fluid->n; i++) s->p->id[i] = i;
+  vsph_particles_free(fluid);
+  fluid = NULL;
+  s->cells = vsph_cells_alloc();
+  s->vws = ip->eq.visc.form == VSPH_VISCOUS_PVWF
+               ? vsph_viscous_ws_alloc(s->p->cap, d)
+               : NULL;
+  if (ip->walls.n > 0) s->gh = vsph_walls_ghosts_alloc(s->p->cap);
+  s->where = malloc(s->p->cap * sizeof *s->where);
+  if (!s->cells || !s->where || (ip->walls.n > 0 && !s->gh) ||
+      (ip->eq.visc.form == VSPH_VISCOUS_PVWF && !s->vws))
+    goto fail;
+  for (int f = 0; f < nfields(d); f++) {
+    s->y0[f] = malloc(s->p->cap * sizeof(double));
+    s->ks[f] = malloc(s->p->cap * sizeof(double));
+    if (!s->y0[f] || !s->ks[f]) goto nomem;
+  }
+  for (int f = 0; f < d + 1; f++)
+    if (!(s->extra[f] = malloc(s->p->cap * sizeof(double)))) goto nomem;
+  return s;
+nomem:
+  vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                     "cannot allocate the integrator");
+fail:
+  vsph_particles_free(fluid);
+  vsph_integrate_free(s);
+  return NULL;
+}
+
+void vsph_integrate_free(struct vsph_integrate *s) {
+  if (!s) return;
+  vsph_particles_free(s->p);
+  vsph_cells_free(s->cells);
+  vsph_viscous_ws_free(s->vws);
+  vsph_walls_ghosts_free(s->gh);
+  free(s->where);
+  for (int f = 0; f < 7; f++) {
+    free(s->y0[f]);
+    free(s->ks[f]);
+  }
+  for (int f = 0; f < 4; f++) free(s->extra[f]);
+  free(s);
+}
+
+static double max_speed(const struct vsph_integrate *s) {
+  const struct vsph_particles *p = s->p;
+  double v2 = 0.0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= s->n_fluid) continue;
+    double u2 = 0.0;
+    for (int k = 0; k < p->dim; k++) u2 += p->vel[k][i] * p->vel[k][i];
+    v2 = fmax(v2, u2);
+  }
+  return sqrt(v2);
+}
+
+double vsph_integrate_dt(const struct vsph_integrate *s) {
+  const struct vsph_equations_props *ep = &s->props.eq;
+  const double h = ep->visc.h;
+  double dt = s->props.cfl * h / (ep->c0 + max_speed(s));
+  const double nu = ep->visc.mu / ep->rho0;
+  if (nu > 0.0) dt = fmin(dt, 0.125 * h * h / nu);
+  double gmax = 0.0;
+  if (ep->body == VSPH_EQUATIONS_BODY_GRAVITY) gmax = fabs(ep->g);
+  if (ep->body == VSPH_EQUATIONS_BODY_RADIAL) {
+    const struct vsph_particles *p = s->p;
+    for (size_t i = 0; i < p->n; i++) {
+      double r2 = 0.0;
+      for (int k = 0; k < p->dim; k++) r2 += p->pos[k][i] * p->pos[k][i];
+      gmax = fmax(gmax, ep->beta * ep->beta * sqrt(r2));
+    }
+  }
+  if (gmax > 0.0) dt = fmin(dt, 0.25 * sqrt(h / gmax));
+  return dt;
+}
+
+/* Ghosts (walls only), the cell list with a skin, and the id -> index map. */
+static int prepare(struct vsph_integrate *s, double skin) {
+  const struct vsph_viscous_props *vp = &s->props.eq.visc;
+  const double H = vp->kernel->kappa * vp->h;
+  int st;
+  if (s->props.walls.n > 0 &&
+      (st = vsph_walls_generate(&s->props.walls, s->p, s->n_fluid, H + skin,
+                                s->gh)))
+    return st;
+  if ((st = vsph_cells_build(s->cells, s->p, H + skin))) return st;
+  for (size_t i = 0; i < s->p->n; i++) s->where[s->p->id[i]] = i;
+  return VSPH_OK;
+}
+
+static int rhs(struct vsph_integrate *s, int parts, size_t *nint) {
+  struct vsph_particles *p = s->p;
+  if (s->props.walls.n > 0)
+    vsph_walls_update(&s->props.walls, p, s->n_fluid, s->gh, s->where);
+  struct vsph_equations_out out = {.drho = p->drho};
+  for (int k = 0; k < p->dim; k++) {
+    out.acc[k] = p->acc[k];
+    if (parts) out.acc_visc[k] = s->extra[k];
+  }
+  if (parts) out.drho_delta = s->extra[p->dim];
+  const int st =
+      vsph_equations_rhs(&s->props.eq, p, s->n_fluid, s->cells, s->vws, &out);
+  if (nint) *nint += out.interactions;
+  return st;
+}
+
+int vsph_integrate_step(struct vsph_integrate *s, double dt) {
+  struct vsph_particles *p = s->p;
+  const int d = p->dim, nf = nfields(d);
+  /* Skin: a pair closes in by at most 2 dt max|u| over a step; factor 1.5
+   * for the velocity change within the step. */
+  const double skin = 3.0 * dt * max_speed(s);
+  int st = prepare(s, skin);
+  if (st) return st;
+  const size_t n = p->n;
+  double *k[7];
+  for (int f = 0; f < d; f++) k[f] = p->vel[f]; /* dr/dt = u */
+  for (int f = 0; f < d; f++) k[d + f] = p->acc[f];
+  k[2 * d] = p->drho;
+  for (int f = 0; f < nf; f++) {
+    memcpy(s->y0[f], field(p, f), n * sizeof(double));
+    memset(s->ks[f], 0, n * sizeof(double));
+  }
+  static const double a[4] = {0.0, 0.5, 0.5, 1.0}, w[4] = {1, 2, 2, 1};
+  size_t nint = 0;
+  for (int stage = 0; stage < 4; stage++) {
+    if ((st = rhs(s, 0, &nint))) return st;
+    /* accumulate k_stage and form the next stage state */
+    const double c = stage < 3 ? a[stage + 1] * dt : 0.0;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < n; i++) {
+      if (p->id[i] >= s->n_fluid) continue;
+      double kv[7];
+      for (int f = 0; f < nf; f++) kv[f] = k[f][i];
+      for (int f = 0; f < nf; f++) s->ks[f][i] += w[stage] * kv[f];
+      if (stage < 3)
+        for (int f = 0; f < nf; f++) field(p, f)[i] = s->y0[f][i] + c * kv[f];
+    }
+  }
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < n; i++) {
+    if (p->id[i] >= s->n_fluid) continue;
+    for (int f = 0; f < nf; f++)
+      field(p, f)[i] = s->y0[f][i] + dt / 6.0 * s->ks[f][i];
+  }
+  s->t += dt;
+  s->steps++;
+  s->interactions = nint;
+  return VSPH_OK;
+}
+
+int vsph_integrate_check(struct vsph_integrate *s) {
+  const struct vsph_particles *p = s->p;
+  const struct vsph_integrate_props *ip = &s->props;
+  const double rho0 = ip->eq.rho0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= s->n_fluid) continue;
+    int bad = !isfinite(p->rho[i]);
+    for (int k = 0; k < p->dim; k++)
+      bad |= !isfinite(p->pos[k][i]) || !isfinite(p->vel[k][i]);
+    if (bad) {
+      snprintf(s->reason, sizeof s->reason, "non-finite state of particle %zu",
+               p->id[i]);
+      return 1;
+    }
+    for (int k = 0; k < p->dim; k++)
+      if (p->pos[k][i] < ip->box_lo[k] || p->pos[k][i] > ip->box_hi[k]) {
+        snprintf(s->reason, sizeof s->reason,
+                 "particle %zu left the domain (x_%d = %.4g)", p->id[i], k + 1,
+                 p->pos[k][i]);
+        return 1;
+      }
+    if (fabs(p->rho[i] / rho0 - 1.0) > ip->rho_band) {
+      snprintf(s->reason, sizeof s->reason,
+               "density of particle %zu out of band (rho/rho0 = %.4g)",
+               p->id[i], p->rho[i] / rho0);
+      return 1;
+    }
+  }
+  s->reason[0] = '\0';
+  return 0;
+}
+
+int vsph_integrate_diagnostics(struct vsph_integrate *s,
+                               struct vsph_equations_energy *en,
+                               struct vsph_equations_budget *b) {
+  int st = prepare(s, 0.0);
+  if (!st) st = rhs(s, 1, NULL);
+  if (st) return st;
+  struct vsph_equations_out out = {.drho = s->p->drho,
+                                   .drho_delta = s->extra[s->p->dim]};
+  for (int k = 0; k < s->p->dim; k++) {
+    out.acc[k] = s->p->acc[k];
+    out.acc_visc[k] = s->extra[k];
+  }
+  vsph_equations_energy_compute(&s->props.eq, s->p, s->n_fluid, en);
+  vsph_equations_budget_compute(&s->props.eq, s->p, s->n_fluid, &out, b);
+  return VSPH_OK;
+}
+
+size_t vsph_integrate_bytes(const struct vsph_integrate *s) {
+  const size_t cap = s->p->cap, d = (size_t)s->p->dim;
+  size_t b = cap * (3 * d + 5) * sizeof(double) + cap * sizeof(size_t);
+  b += s->cells->cap_n * (3 * sizeof(size_t) + sizeof(double));
+  b += s->cells->cap_cells * 2 * sizeof(size_t);
+  if (s->vws) b += cap * (d * d + 1) * sizeof(double) + cap;
+  if (s->gh) b += s->gh->cap * (sizeof(size_t) + sizeof(unsigned));
+  b += cap * sizeof(size_t);                             /* where */
+  b += cap * (2 * (2 * d + 1) + d + 1) * sizeof(double); /* RK, extra */
+  return b;
+}

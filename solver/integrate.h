@@ -1,0 +1,79 @@
+#ifndef VSPH_SOLVER_INTEGRATE_H
+#define VSPH_SOLVER_INTEGRATE_H
+
+#include <stddef.h>
+
+#include "equations.h"
+#include "walls.h"
+
+struct vsph_particles;
+
+/** @file integrate.h
+ *  @brief Classical fourth-order Runge-Kutta for the WCSPH system (THEORY
+ *  section 5) with the time-step rule dt = min(CFL h/(c0 + max|u|),
+ *  0.125 h^2/nu, 0.25 sqrt(h/max|g|)), and the stability checks that stop a
+ *  run cleanly (non-finite values, particles leaving the scene's box, density
+ *  outside a band). The cell list is built once per step with an edge of
+ *  kappa h plus a skin covering the step's displacements; ghosts (walls
+ *  only) are regenerated per step and refreshed at every stage. Follows
+ *  GSL's init / iterate / test shape. No I/O. */
+
+/** Run settings. */
+struct vsph_integrate_props {
+  struct vsph_equations_props eq; /*!< physics */
+  struct vsph_walls walls;        /*!< walls (n = 0: none, no wall code) */
+  double cfl;                     /*!< Courant number (RK4 default 1.0) */
+  double rho_band;                /*!< stop when |rho/rho0 - 1| > band */
+  double box_lo[3], box_hi[3];    /*!< stop when a particle leaves the box */
+};
+
+/** Integrator state. */
+struct vsph_integrate {
+  struct vsph_integrate_props props; /*!< settings (a copy) */
+  struct vsph_particles *p;          /*!< fluid then ghosts; owned */
+  size_t n_fluid;                    /*!< fluid particles (ids 0..n-1) */
+  double t;                          /*!< time (s) */
+  size_t steps;                      /*!< steps taken */
+  size_t interactions;               /*!< pairs gathered in the last step */
+  char reason[160];                  /*!< why the run was stopped, or "" */
+  /* private below */
+  struct vsph_cells *cells;
+  struct vsph_viscous_ws *vws;
+  struct vsph_walls_ghosts *gh;
+  size_t *where;
+  double *y0[7], *ks[7], *extra[4];
+};
+
+/** @brief Take ownership of the fluid set @p fluid (ids 0..n-1) and set up
+ *  the integrator. The particle set is re-allocated with room for ghosts
+ *  when there are walls. NULL (after reporting) on failure; @p fluid is
+ *  freed in every case. */
+struct vsph_integrate *vsph_integrate_alloc(
+    const struct vsph_integrate_props *ip, struct vsph_particles *fluid);
+
+/** @brief Free; NULL is a no-op. */
+void vsph_integrate_free(struct vsph_integrate *s);
+
+/** @brief Time step of THEORY section 5 for the current state. */
+double vsph_integrate_dt(const struct vsph_integrate *s);
+
+/** @brief One RK4 step of length @p dt.
+ *  @return VSPH_OK, or an error from the neighbour search (e.g. VSPH_EINVAL
+ *  on non-finite positions: call _check). */
+int vsph_integrate_step(struct vsph_integrate *s, double dt);
+
+/** @brief Stability test: 0 if the state is sound, 1 (reason in s->reason)
+ *  otherwise. */
+int vsph_integrate_check(struct vsph_integrate *s);
+
+/** @brief Energies, momenta and the energy budget of the current state (one
+ *  extra right-hand-side evaluation). */
+int vsph_integrate_diagnostics(struct vsph_integrate *s,
+                               struct vsph_equations_energy *en,
+                               struct vsph_equations_budget *b);
+
+/** @brief Bytes allocated for particles, neighbour structures and
+ *  integrator storage. */
+size_t vsph_integrate_bytes(const struct vsph_integrate *s);
+
+#endif /* VSPH_SOLVER_INTEGRATE_H */

@@ -1,0 +1,49 @@
+#include "scene.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "../common/params.h"
+#include "../common/status.h"
+
+static const struct vsph_scene_type *const scene_table[] = {
+    &vsph_vortex_patch_type,
+    &vsph_stretching_square_type,
+    &vsph_standing_wave_type,
+};
+
+size_t vsph_scene_count(void) {
+  return sizeof scene_table / sizeof scene_table[0];
+}
+
+const struct vsph_scene_type *vsph_scene_get(size_t i) {
+  return i < vsph_scene_count() ? scene_table[i] : NULL;
+}
+
+const struct vsph_scene_type *vsph_scene_find(const char *name) {
+  for (size_t i = 0; i < vsph_scene_count(); i++)
+    if (!strcmp(scene_table[i]->name, name)) return scene_table[i];
+  return NULL;
+}
+
+int vsph_scene_init(struct vsph_scene *sc, const struct vsph_scene_type *type,
+                    struct vsph_params *prm) {
+  memset(sc, 0, sizeof *sc);
+  sc->type = type;
+  sc->dim = 2;
+  for (size_t i = 0; i < type->nparams; i++) {
+    char key[96];
+    snprintf(key, sizeof key, "Scene:%s", type->params[i].key);
+    const int st =
+        vsph_params_get_double_or(prm, key, type->params[i].def, &sc->v[i]);
+    if (st) return st;
+  }
+  return type->setup(sc);
+}
+
+double vsph_scene_sound_speed(const struct vsph_scene *sc, size_t ic0) {
+  if (sc->v[ic0] > 0.0) return sc->v[ic0];
+  /* THEORY 5: c0 = 10 max(U_max, sqrt(dp_max / rho0)) */
+  return 10.0 * fmax(sc->U_max, sqrt(sc->dp_max / sc->rho0));
+}

@@ -1,0 +1,128 @@
+/* Stretching square: a free square under pure strain (Colagrossi et al.
+ * 2011, Sec. VI B; THEORY 6.2). Initial pressure from lap p = -2 rho A0^2
+ * with p = 2 mu n.D0.n on the edges, by the FFTW sine-transform solver.
+ * Derived values: d[0] = L, d[1] = A0. */
+#include <math.h>
+
+#include "../../common/status.h"
+#include "../equations.h"
+#include "../lattice.h"
+#include "../particles.h"
+#include "../poisson.h"
+#include "../scene.h"
+
+enum { P_L, P_A0, P_NU, P_RHO0, P_C0, P_TEND, P_GRID, NP };
+
+static const struct vsph_scene_param params[NP] = {
+    [P_L] = {"L", 1.0, "side of the square (m)"},
+    [P_A0] = {"A0", 1.0, "strain rate, u = A0 (x, -y) (1/s)"},
+    [P_NU] = {"nu", 0.05, "kinematic viscosity (m^2/s); Re = L^2 A0/nu"},
+    [P_RHO0] = {"rho0", 1.0, "reference density (kg/m^2)"},
+    [P_C0] = {"c0", 0.0, "sound speed (m/s); 0: 10 max(U, sqrt(dp/rho0))"},
+    [P_TEND] = {"t_end", 1.0, "default end time (s)"},
+    [P_GRID] = {"poisson_grid", 0.0,
+                "interior nodes per side of the pressure grid; 0: 4 res"},
+};
+
+struct bc {
+  double L, mu, A0, rho0;
+};
+
+/* lap p = -2 rho0 A0^2 (steady inviscid balance of u = A0 (x, -y)) */
+static double rhs_fn(double x, double y, void *c) {
+  (void)x, (void)y;
+  const struct bc *b = c;
+  return -2.0 * b->rho0 * b->A0 * b->A0;
+}
+
+/* p = 2 mu n.D0.n: +2 mu A0 on x = +-L/2, -2 mu A0 on y = +-L/2; at a
+ * corner the two meet and the mean 0 is used. */
+static double bc_fn(double x, double y, void *c) {
+  const struct bc *b = c;
+  const double ax = fabs(x), ay = fabs(y);
+  if (ax > ay) return 2.0 * b->mu * b->A0;
+  if (ay > ax) return -2.0 * b->mu * b->A0;
+  return 0.0;
+}
+
+static int solve(const struct vsph_scene *sc, size_t n,
+                 struct vsph_poisson **out) {
+  struct bc b = {sc->v[P_L], sc->mu, sc->v[P_A0], sc->rho0};
+  struct vsph_poisson *ps = vsph_poisson_alloc(n, sc->v[P_L]);
+  if (!ps) return VSPH_ENOMEM;
+  const int st = vsph_poisson_solve(ps, rhs_fn, bc_fn, &b);
+  if (st) {
+    vsph_poisson_free(ps);
+    return st;
+  }
+  *out = ps;
+  return VSPH_OK;
+}
+
+static int setup(struct vsph_scene *sc) {
+  const double L = sc->v[P_L];
+  if (!(L > 0) || !(sc->v[P_NU] >= 0) || !(sc->v[P_RHO0] > 0) ||
+      !(sc->v[P_TEND] > 0) || !(sc->v[P_C0] >= 0) || !(sc->v[P_GRID] >= 0))
+    VSPH_FAIL(VSPH_EINVAL,
+              "stretching-square: L, rho0, t_end must be > 0; "
+              "nu, c0, poisson_grid >= 0");
+  sc->ref_length = L;
+  sc->rho0 = sc->v[P_RHO0];
+  sc->mu = sc->rho0 * sc->v[P_NU];
+  sc->t_end = sc->v[P_TEND];
+  sc->body = VSPH_EQUATIONS_BODY_NONE;
+  sc->U_max = fabs(sc->v[P_A0]) * L / sqrt(2.0); /* at the corners */
+  struct vsph_poisson *ps = NULL;
+  const int st = solve(sc, 64, &ps); /* pressure range for c0 only */
+  if (st) return st;
+  double pmin = INFINITY, pmax = -INFINITY;
+  for (size_t j = 0; j <= 65; j++)
+    for (size_t i = 0; i <= 65; i++) {
+      pmin = fmin(pmin, vsph_poisson_node(ps, i, j));
+      pmax = fmax(pmax, vsph_poisson_node(ps, i, j));
+    }
+  vsph_poisson_free(ps);
+  sc->dp_max = pmax - pmin;
+  sc->c0 = vsph_scene_sound_speed(sc, P_C0);
+  sc->d[0] = L;
+  sc->d[1] = sc->v[P_A0];
+  /* the square stretches to L e^{A0 t}/2 along x: keep a wide box */
+  const double reach = 0.5 * L * exp(fabs(sc->v[P_A0]) * sc->t_end) + 2.0 * L;
+  for (int k = 0; k < 2; k++) {
+    sc->box_lo[k] = -reach;
+    sc->box_hi[k] = reach;
+  }
+  return VSPH_OK;
+}
+
+static int init(const struct vsph_scene *sc, size_t res,
+                struct vsph_particles **out) {
+  struct vsph_lattice_props lp = {.dim = 2};
+  int st = vsph_lattice_square(&lp, sc->v[P_L], res, out);
+  if (st) return st;
+  struct vsph_particles *p = *out;
+  const size_t n = sc->v[P_GRID] > 0 ? (size_t)sc->v[P_GRID] : 4 * res;
+  struct vsph_poisson *ps = NULL;
+  if ((st = solve(sc, n < 16 ? 16 : n, &ps))) return st;
+  const double A0 = sc->v[P_A0];
+  for (size_t i = 0; i < p->n; i++) {
+    const double x = p->pos[0][i], y = p->pos[1][i];
+    p->vel[0][i] = A0 * x;
+    p->vel[1][i] = -A0 * y;
+    const double pr = vsph_poisson_interp(ps, x, y);
+    p->rho[i] = sc->rho0 + pr / (sc->c0 * sc->c0);
+    p->m[i] = p->rho[i] * p->vol[i];
+  }
+  vsph_poisson_free(ps);
+  return VSPH_OK;
+}
+
+const struct vsph_scene_type vsph_stretching_square_type = {
+    .name = "stretching-square",
+    .description = "free square under pure strain (Sec. VI B)",
+    .length_name = "L",
+    .params = params,
+    .nparams = NP,
+    .setup = setup,
+    .init = init,
+};
