@@ -35,6 +35,9 @@ static const struct solver_param SOLVER[] = {
     {"cfl", "1", "Courant number of the RK4 time step"},
     {"delta", "0", "delta-SPH coefficient; 0: off (0.1 is usual)"},
     {"rho_band", "0.2", "stop as unstable when |rho/rho0 - 1| exceeds it"},
+    {"min_gap", "0.05",
+     "stop as unstable when two particles come closer "
+     "than min_gap dx (pairing)"},
     {"outputs", "200", "energy rows over the run"},
     {"snapshots", "10", "VTK snapshots over the run; 0: none"},
 };
@@ -227,7 +230,8 @@ int vsph_cmd_run_main(int argc, char **argv) {
     goto done;
   }
   const double res_d = val[2], hdx = val[3], cfl = val[5], delta = val[6];
-  const double band = val[7], outputs = val[8], snapshots = val[9];
+  const double band = val[7], min_gap = val[8];
+  const double outputs = val[9], snapshots = val[10];
   const int form = vsph_viscous_find(visc_name);
   const struct vsph_kernel_type *kernel = vsph_kernel_find(kernel_name);
   if (form < 0) {
@@ -247,6 +251,8 @@ int vsph_cmd_run_main(int argc, char **argv) {
     rc = vsph_args_fail(CMD, "delta must lie in [0, 1], got %g", delta);
   } else if (!(band > 0)) {
     rc = vsph_args_fail(CMD, "rho_band must be > 0, got %g", band);
+  } else if (!(min_gap >= 0 && min_gap < 1)) {
+    rc = vsph_args_fail(CMD, "min_gap must lie in [0, 1), got %g", min_gap);
   } else if (!(outputs >= 1 && outputs <= 1e6) || !(snapshots >= 0)) {
     rc = vsph_args_fail(CMD, "outputs must be >= 1 and snapshots >= 0");
   }
@@ -278,23 +284,16 @@ int vsph_cmd_run_main(int argc, char **argv) {
     goto done;
   }
   const double dx = sc.ref_length / (double)res, h = hdx * dx;
-  struct vsph_integrate_props ip = {.cfl = cfl, .rho_band = band};
-  if ((st = vsph_viscous_props_init(&ip.eq.visc, form, kernel, 2, h, sc.mu))) {
+  struct vsph_integrate_props ip;
+  if ((st = vsph_scene_integrate_props(&sc, form, kernel, h, &ip))) {
     vsph_particles_free(fluid);
     rc = vsph_args_status(CMD, st);
     goto done;
   }
-  ip.eq.rho0 = sc.rho0;
-  ip.eq.c0 = sc.c0;
+  ip.cfl = cfl;
+  ip.rho_band = band;
+  ip.min_dist = min_gap * dx;
   ip.eq.delta = delta;
-  ip.eq.body = sc.body;
-  ip.eq.beta = sc.beta;
-  ip.eq.g = sc.g;
-  ip.walls = sc.walls;
-  for (int k = 0; k < 3; k++) {
-    ip.box_lo[k] = sc.box_lo[k];
-    ip.box_hi[k] = sc.box_hi[k];
-  }
   const size_t n = fluid->n;
   struct vsph_integrate *s = vsph_integrate_alloc(&ip, fluid);
   struct vsph_references_scene *ref = vsph_references_scene_alloc(&sc);

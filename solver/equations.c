@@ -44,7 +44,7 @@ struct rhs_ctx {
 static size_t rhs_one(const struct rhs_ctx *rc, const struct vsph_particles *p,
                       const struct vsph_viscous_ws *ws, size_t i, size_t nr,
                       const size_t *lo, const size_t *hi,
-                      struct vsph_equations_out *out) {
+                      struct vsph_equations_out *out, double *min_s2) {
   const int dim = rc->dim, form = rc->form;
   double xi[3] = {0, 0, 0}, ui[3] = {0, 0, 0}, Ai[9] = {0};
   for (int k = 0; k < dim; k++) {
@@ -56,6 +56,7 @@ static size_t rhs_one(const struct rhs_ctx *rc, const struct vsph_particles *p,
   const double rhoi = p->rho[i], pi = p->p[i];
   double cont = 0.0, dsum = 0.0, ap[3] = {0, 0, 0}, av[3] = {0, 0, 0};
   size_t nint = 0;
+  double ms2 = INFINITY;
   for (size_t r = 0; r < nr; r++)
     for (size_t j = lo[r]; j < hi[r]; j++) {
       double x[3], s2 = 0.0;
@@ -65,6 +66,7 @@ static size_t rhs_one(const struct rhs_ctx *rc, const struct vsph_particles *p,
       }
       if (s2 >= rc->H2 || j == i) continue;
       nint++;
+      ms2 = s2 < ms2 ? s2 : ms2;
       const double s = sqrt(s2);
       const double F = rc->dw_fac * rc->df(s * rc->h_inv) / s; /* W'/s <= 0 */
       const double Vj = p->vol[j], VF = Vj * F;
@@ -105,6 +107,7 @@ static size_t rhs_one(const struct rhs_ctx *rc, const struct vsph_particles *p,
     for (int k = 0; k < dim; k++) out->acc_visc[k][i] = rinv * av[k];
     out->drho_delta[i] = rc->dhc * dsum;
   }
+  *min_s2 = ms2;
   return nint;
 }
 
@@ -140,15 +143,23 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
       .parts = out->acc_visc[0] != NULL && out->drho_delta != NULL,
   };
   size_t total = 0;
-#pragma omp parallel for schedule(dynamic, 8) reduction(+ : total)
+  double min_s2 = INFINITY;
+  /* integer sum and min: exact, so the same for any thread count */
+#pragma omp parallel for schedule(dynamic, 8) reduction(+ : total) \
+    reduction(min : min_s2)
   for (size_t c = 0; c < cells->ncells; c++) {
     size_t lo[VSPH_CELLS_MAXRANGES], hi[VSPH_CELLS_MAXRANGES];
     const size_t nr = vsph_cells_ranges(cells, c, lo, hi);
     const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
     for (size_t i = i0; i < i1; i++)
-      if (p->id[i] < n_fluid) total += rhs_one(&rc, p, ws, i, nr, lo, hi, out);
+      if (p->id[i] < n_fluid) {
+        double m;
+        total += rhs_one(&rc, p, ws, i, nr, lo, hi, out, &m);
+        min_s2 = m < min_s2 ? m : min_s2;
+      }
   }
-  out->interactions = total; /* integer sum: exact for any thread count */
+  out->interactions = total;
+  out->min_s2 = min_s2;
   return VSPH_OK;
 }
 

@@ -43,6 +43,7 @@ struct vsph_equations_out {
   double *acc_visc[3]; /*!< optional: the viscous part (div V)/rho */
   double *drho_delta;  /*!< optional: the delta-SPH part of d rho/dt */
   size_t interactions; /*!< out: pairs (i receiving from j) within kappa h */
+  double min_s2;       /*!< out: smallest squared pair distance (m^2) */
 };
 
 /** Energies and momenta of the fluid particles (per unit depth in 2-D). */

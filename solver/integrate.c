@@ -129,7 +129,8 @@ static int prepare(struct vsph_integrate *s, double skin) {
   return VSPH_OK;
 }
 
-static int rhs(struct vsph_integrate *s, int parts, size_t *nint) {
+static int rhs(struct vsph_integrate *s, int parts, size_t *nint,
+               double *min_s2) {
   struct vsph_particles *p = s->p;
   if (s->props.walls.n > 0)
     vsph_walls_update(&s->props.walls, p, s->n_fluid, s->gh, s->where);
@@ -142,6 +143,7 @@ static int rhs(struct vsph_integrate *s, int parts, size_t *nint) {
   const int st =
       vsph_equations_rhs(&s->props.eq, p, s->n_fluid, s->cells, s->vws, &out);
   if (nint) *nint += out.interactions;
+  if (min_s2) *min_s2 = fmin(*min_s2, out.min_s2);
   return st;
 }
 
@@ -164,8 +166,9 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   }
   static const double a[4] = {0.0, 0.5, 0.5, 1.0}, w[4] = {1, 2, 2, 1};
   size_t nint = 0;
+  double min_s2 = INFINITY;
   for (int stage = 0; stage < 4; stage++) {
-    if ((st = rhs(s, 0, &nint))) return st;
+    if ((st = rhs(s, 0, &nint, &min_s2))) return st;
     /* accumulate k_stage and form the next stage state */
     const double c = stage < 3 ? a[stage + 1] * dt : 0.0;
 #pragma omp parallel for schedule(static)
@@ -187,6 +190,7 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   s->t += dt;
   s->steps++;
   s->interactions = nint;
+  s->min_dist = sqrt(min_s2);
   return VSPH_OK;
 }
 
@@ -218,6 +222,12 @@ int vsph_integrate_check(struct vsph_integrate *s) {
       return 1;
     }
   }
+  if (s->steps > 0 && s->min_dist < ip->min_dist) {
+    snprintf(s->reason, sizeof s->reason,
+             "particle pairing: two particles %.3g apart (limit %.3g)",
+             s->min_dist, ip->min_dist);
+    return 1;
+  }
   s->reason[0] = '\0';
   return 0;
 }
@@ -226,7 +236,7 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
                                struct vsph_equations_energy *en,
                                struct vsph_equations_budget *b) {
   int st = prepare(s, 0.0);
-  if (!st) st = rhs(s, 1, NULL);
+  if (!st) st = rhs(s, 1, NULL, NULL);
   if (st) return st;
   struct vsph_equations_out out = {.drho = s->p->drho,
                                    .drho_delta = s->extra[s->p->dim]};

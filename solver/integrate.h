@@ -14,7 +14,8 @@ struct vsph_particles;
  *  0.125 h^2/nu, 0.25 sqrt(h/max|g|)), and the stability checks that stop a
  *  run cleanly (non-finite values, particles leaving the scene's box, density
  *  outside a band). The cell list is built once per step with an edge of
- *  kappa h plus a skin covering the step's displacements; ghosts (walls
+ *  kappa h plus a skin covering the step's displacements, and stops on
+ *  particle pairing (two particles closer than a set distance); ghosts (walls
  *  only) are regenerated per step and refreshed at every stage. Follows
  *  GSL's init / iterate / test shape. No I/O. */
 
@@ -24,6 +25,8 @@ struct vsph_integrate_props {
   struct vsph_walls walls;        /*!< walls (n = 0: none, no wall code) */
   double cfl;                     /*!< Courant number (RK4 default 1.0) */
   double rho_band;                /*!< stop when |rho/rho0 - 1| > band */
+  double min_dist;                /*!< stop when two particles come closer
+                                       (m): pairing, a zero-energy mode */
   double box_lo[3], box_hi[3];    /*!< stop when a particle leaves the box */
 };
 
@@ -35,6 +38,7 @@ struct vsph_integrate {
   double t;                          /*!< time (s) */
   size_t steps;                      /*!< steps taken */
   size_t interactions;               /*!< pairs gathered in the last step */
+  double min_dist;                   /*!< closest pair seen in the last step */
   char reason[160];                  /*!< why the run was stopped, or "" */
   /* private below */
   struct vsph_cells *cells;

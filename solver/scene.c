@@ -6,6 +6,7 @@
 
 #include "../common/params.h"
 #include "../common/status.h"
+#include "integrate.h"
 
 static const struct vsph_scene_type *const scene_table[] = {
     &vsph_vortex_patch_type,
@@ -46,4 +47,24 @@ double vsph_scene_sound_speed(const struct vsph_scene *sc, size_t ic0) {
   if (sc->v[ic0] > 0.0) return sc->v[ic0];
   /* THEORY 5: c0 = 10 max(U_max, sqrt(dp_max / rho0)) */
   return 10.0 * fmax(sc->U_max, sqrt(sc->dp_max / sc->rho0));
+}
+
+int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
+                               const struct vsph_kernel_type *k, double h,
+                               struct vsph_integrate_props *ip) {
+  memset(ip, 0, sizeof *ip);
+  const int st =
+      vsph_viscous_props_init(&ip->eq.visc, form, k, sc->dim, h, sc->mu);
+  if (st) return st;
+  ip->eq.rho0 = sc->rho0;
+  ip->eq.c0 = sc->c0;
+  ip->eq.body = sc->body;
+  ip->eq.beta = sc->beta;
+  ip->eq.g = sc->g;
+  ip->walls = sc->walls;
+  for (int a = 0; a < 3; a++) {
+    ip->box_lo[a] = sc->box_lo[a];
+    ip->box_hi[a] = sc->box_hi[a];
+  }
+  return VSPH_OK;
 }

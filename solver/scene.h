@@ -83,6 +83,17 @@ int vsph_scene_init(struct vsph_scene *sc, const struct vsph_scene_type *type,
  *  parameter (index @p ic0) is positive. */
 double vsph_scene_sound_speed(const struct vsph_scene *sc, size_t ic0);
 
+struct vsph_integrate_props;
+struct vsph_kernel_type;
+
+/** @brief Physics, walls and escape box of a run of @p sc with viscous
+ *  formulation @p form, kernel @p k and smoothing length @p h; leaves cfl,
+ *  rho_band and min_dist at zero for the caller.
+ *  @return VSPH_OK or VSPH_EINVAL. */
+int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
+                               const struct vsph_kernel_type *k, double h,
+                               struct vsph_integrate_props *ip);
+
 /** @brief Standing wave's initial velocity u = grad phi0 at (x, y),
  *  phi0 = (A g/omega) cosh[k(y + H)]/cosh(kH) cos(kx) (THEORY 6.3). */
 void vsph_standing_wave_velocity(double A, double g, double k, double H,

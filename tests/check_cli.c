@@ -86,6 +86,22 @@ static const char *const bad_inputs[] = {
     "bench --size 3",
     "bench --size many",
     "frobnicate",
+    "run",
+    "run nowhere",
+    "run vortex-patch --visc sph",
+    "run vortex-patch --kernel gauss",
+    "run vortex-patch --res 2",
+    "run vortex-patch --res ten",
+    "run vortex-patch --cfl 0",
+    "run vortex-patch --set nu=1",
+    "run vortex-patch --set Scene:nu",
+    "run vortex-patch --set Scene:bogus=1",
+    "run vortex-patch --set Solver:bogus=1",
+    "run vortex-patch --set Scene:R=-1",
+    "run vortex-patch --set Scene:nu=abc",
+    "run vortex-patch --params /nonexistent/p.yml",
+    "run stretching-square --frobnicate 1",
+    "scenes --bogus",
 };
 
 START_TEST(test_bad_input) {
@@ -164,6 +180,75 @@ START_TEST(test_json) {
 }
 END_TEST
 
+/* A short run writes every promised file; a run past the stability limit
+ * (CFL 4, measured unstable within 8 steps) exits 0, keeps its output and
+ * says "unstable" in run.json. Nothing is written for bad input. */
+START_TEST(test_run_outputs) {
+  char dir[] = "/tmp/vsph_runXXXXXX";
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  char args[512], path[600];
+  snprintf(args, sizeof args,
+           "run stretching-square --res 12 --t-end 0.02 --out %s/ok --set "
+           "Solver:snapshots=2 --quiet",
+           dir);
+  struct outcome *o = run_cli(args);
+  ck_assert_msg(o->status == 0, "run failed: %s", o->err);
+  const char *files[] = {"energy.csv", "run.json", "used_parameters.yml",
+                         "snap_0000.vtk", "snapshots.pvd"};
+  for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+    snprintf(path, sizeof path, "%s/ok/%s", dir, files[i]);
+    ck_assert_msg(access(path, R_OK) == 0, "missing %s", files[i]);
+  }
+  snprintf(path, sizeof path, "%s/ok/energy.csv", dir);
+  char head[512];
+  slurp(path, head, sizeof head);
+  ck_assert_msg(strncmp(head, "t,Ek,Ep,Ec,P_visc,", 18) == 0, "%s", head);
+  ck_assert_ptr_nonnull(strstr(head, "residual,Px,Py,Lz"));
+  ck_assert_ptr_nonnull(strstr(head, "Ek_ref,dEk_ref"));
+  snprintf(path, sizeof path, "%s/ok/run.json", dir);
+  static char js[8192];
+  slurp(path, js, sizeof js);
+  cJSON *j = cJSON_Parse(js);
+  ck_assert_ptr_nonnull(j);
+  const char *keys[] = {"version", "scene",       "visc",
+                        "kernel",  "n_particles", "steps",
+                        "wall_s",  "pairs_per_s", "status"};
+  for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
+    ck_assert_msg(cJSON_HasObjectItem(j, keys[i]), "missing %s", keys[i]);
+  ck_assert_str_eq(cJSON_GetObjectItem(j, "status")->valuestring, "ok");
+  ck_assert_int_eq(cJSON_GetObjectItem(j, "n_particles")->valueint, 144);
+  cJSON_Delete(j);
+
+  snprintf(args, sizeof args,
+           "run vortex-patch --res 16 --cfl 4 --t-end 10 --out %s/bad "
+           "--quiet",
+           dir);
+  o = run_cli(args);
+  ck_assert_int_eq(o->status, 0);
+  ck_assert_ptr_nonnull(strstr(o->err, "unstable"));
+  snprintf(path, sizeof path, "%s/bad/run.json", dir);
+  slurp(path, js, sizeof js);
+  j = cJSON_Parse(js);
+  ck_assert_ptr_nonnull(j);
+  ck_assert_str_eq(cJSON_GetObjectItem(j, "status")->valuestring, "unstable");
+  ck_assert(cJSON_HasObjectItem(j, "unstable_time"));
+  ck_assert(cJSON_HasObjectItem(j, "unstable_reason"));
+  cJSON_Delete(j);
+  snprintf(path, sizeof path, "%s/bad/energy.csv", dir);
+  ck_assert_int_eq(access(path, R_OK), 0);
+
+  snprintf(args, sizeof args, "run vortex-patch --set Scene:x=1 --out %s/no",
+           dir);
+  o = run_cli(args);
+  ck_assert_int_eq(o->status, 2);
+  snprintf(path, sizeof path, "%s/no", dir);
+  ck_assert_int_ne(access(path, F_OK), 0); /* nothing written */
+  char cmd[700];
+  snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+  ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
 Suite *vsph_cli_suite(void) {
   Suite *s = suite_create("cli");
   TCase *tc = tcase_create("errors");
@@ -172,6 +257,7 @@ Suite *vsph_cli_suite(void) {
                       (int)(sizeof bad_inputs / sizeof bad_inputs[0]));
   tcase_add_test(tc, test_help);
   tcase_add_test(tc, test_json);
+  tcase_add_test(tc, test_run_outputs);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -13,6 +13,7 @@ Suite *vsph_scaling_suite(void);
 Suite *vsph_dissipation_suite(void);
 Suite *vsph_poisson_suite(void);
 Suite *vsph_references_suite(void);
+Suite *vsph_solver_suite(void);
 Suite *vsph_cli_suite(void);
 
 /* Silent error handler for tests: records the last status. */
