@@ -304,12 +304,14 @@ int vsph_moments_sum(const struct vsph_kernel_type *k,
   memset(out, 0, sizeof *out);
   out->dim = dim;
   const double K = 2.0 * (dim + 2);
-  const double H = k->kappa * h, dw_fac = k->sigma[dim - 1] * pow(h, -dim - 1);
-  /* q = s * (1/h), exactly as in solver/viscous.c: a truncated kernel whose
-   * w' jumps at kappa (the 3h Gaussian) must classify a particle lying on
-   * the support edge the same way in both. */
-  const double h_inv = 1.0 / h;
-  vsph_kernel_fn *df = k->df[dim - 1];
+  const double H = k->kappa * h;
+  /* W'/s = sigma h^{-d-2} (df/dq)/q from q^2 = s^2/h^2, exactly as in
+   * solver/viscous.c and solver/equations.c: a truncated kernel whose w'
+   * jumps at kappa (the 3h Gaussian) must classify a particle lying on the
+   * support edge the same way in all of them. */
+  const double dwq_fac = k->sigma[dim - 1] * pow(h, -dim - 2);
+  const double h_inv2 = 1.0 / (h * h);
+  vsph_kernel_fn *dfq = k->dfq[dim - 1];
   for (size_t j = 0; j < p->n; j++) {
     if (j == centre) continue;
     double x[3] = {0, 0, 0}, s2 = 0.0;
@@ -318,9 +320,8 @@ int vsph_moments_sum(const struct vsph_kernel_type *k,
       s2 += x[a] * x[a];
     }
     if (s2 >= H * H) continue;
-    const double s = sqrt(s2);
-    const double c = -p->vol[j] * dw_fac * df(s * h_inv); /* -V_j W' >= 0 */
-    const double c1 = c / s, c3 = c / (s2 * s);
+    const double c1 = -p->vol[j] * dwq_fac * dfq(s2 * h_inv2); /* -V W'/s */
+    const double c3 = c1 / s2;                                 /* -V W'/s^3 */
     for (int a = 0; a < dim; a++) {
       out->N[a] += 2.0 * c1 * x[a];
       for (int b = 0; b < dim; b++) {

@@ -11,10 +11,14 @@
 
 #include "../analysis/moments.h"
 #include "../common/consts.h"
+#include "../common/params.h"
 #include "../kernels/kernel.h"
 #include "../solver/cells.h"
+#include "../solver/equations.h"
+#include "../solver/integrate.h"
 #include "../solver/lattice.h"
 #include "../solver/particles.h"
+#include "../solver/scene.h"
 #include "../solver/viscous.h"
 #include "args.h"
 
@@ -22,14 +26,20 @@ static const char *const CMD = "bench";
 
 static void usage(FILE *f) {
   fputs(
-      "usage: vsph bench [--size N]\n\n"
+      "usage: vsph bench [--size N] [--solver-only]\n\n"
       "Times (1) F, G, N, M by quadrature at one depth for every kernel in\n"
       "2-D and 3-D; (2) the particle sums against the number of particles;\n"
       "(3) each viscous operator on an N x N square (default N = 200) at\n"
       "h/dx = 4/3 with the 3h Gaussian, with 1 and 2 threads. An\n"
       "interaction is particle i gathering from one neighbour j within\n"
       "kappa h (each unique pair counts twice); PVWF makes two passes, so\n"
-      "it does two interactions per pair per evaluation.\n",
+      "it does two interactions per pair per evaluation.\n"
+      "(4) the solver on the stretching square (no walls) at about 1e4 and\n"
+      "1e5 particles: one force evaluation (continuity, pressure, viscous;\n"
+      "delta-SPH off) and one whole RK4 step, per formulation, with 1 and 2\n"
+      "threads; interactions per second per core, particle-steps per second,\n"
+      "memory per particle, and the cost per particle-step against N.\n"
+      "--solver-only skips (1)-(3).\n",
       f);
 }
 
@@ -78,6 +88,94 @@ static void visc_once(void *v) {
   vsph_viscous_compute(&a->vp, a->p, a->c, a->ws, a->f, NULL);
 }
 
+struct solver_arg {
+  struct vsph_integrate *s;
+  struct vsph_equations_out out;
+  double dt;
+};
+static void rhs_once(void *v) {
+  struct solver_arg *a = v;
+  vsph_equations_rhs(&a->s->props.eq, a->s->p, a->s->n_fluid, a->s->cells,
+                     a->s->vws, &a->out);
+}
+static void step_once(void *v) {
+  struct solver_arg *a = v;
+  vsph_integrate_step(a->s, a->dt);
+}
+
+/* The stretching square at res across, formulation form, ready to step. */
+static struct vsph_integrate *bench_run(int form, size_t res) {
+  struct vsph_params *prm = vsph_params_alloc();
+  struct vsph_scene sc;
+  struct vsph_particles *fluid = NULL;
+  struct vsph_integrate *s = NULL;
+  struct vsph_integrate_props ip;
+  if (prm && !vsph_scene_init(&sc, &vsph_stretching_square_type, prm) &&
+      !sc.type->init(&sc, res, &fluid) &&
+      !vsph_scene_integrate_props(&sc, form, &vsph_gaussian_type,
+                                  4.0 / 3.0 * sc.ref_length / (double)res,
+                                  &ip)) {
+    ip.cfl = 1.0;
+    ip.rho_band = 1.0;
+    s = vsph_integrate_alloc(&ip, fluid);
+  }
+  vsph_params_free(prm);
+  return s;
+}
+
+static int bench_solver(void) {
+  const size_t sizes[2] = {100, 316};
+  double per_ps[3][2];
+  printf(
+      "\n## solver: stretching square, h/dx 4/3, 3h Gaussian, best of "
+      "3\n");
+  printf("%-5s %8s %11s %11s %13s %8s %11s %11s %13s %8s %9s\n", "form", "N",
+         "rhs 1t ms", "rhs 2t ms", "inter/s/core", "speedup", "step 1t ms",
+         "step 2t ms", "p-steps/s 2t", "speedup", "B/part");
+  for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT; form++)
+    for (int z = 0; z < 2; z++) {
+      struct solver_arg a = {.s = bench_run(form, sizes[z])};
+      if (!a.s) return 1;
+      struct vsph_particles *p = a.s->p;
+      a.dt = vsph_integrate_dt(a.s);
+      vsph_integrate_step(a.s, a.dt); /* builds cells, warms up */
+      double *buf = malloc(3 * p->n * sizeof *buf);
+      a.out.drho = buf;
+      a.out.acc[0] = buf + p->n;
+      a.out.acc[1] = buf + 2 * p->n;
+      omp_set_num_threads(1);
+      rhs_once(&a);
+      const size_t inter = a.out.interactions;
+      const double r1 = best_of(3, rhs_once, &a);
+      omp_set_num_threads(2);
+      const double r2 = best_of(3, rhs_once, &a);
+      omp_set_num_threads(1);
+      const double s1 = best_of(3, step_once, &a);
+      omp_set_num_threads(2);
+      const double s2 = best_of(3, step_once, &a);
+      const double passes = form == VSPH_VISCOUS_PVWF ? 2.0 : 1.0;
+      const size_t n = a.s->n_fluid;
+      per_ps[form][z] = s1 / (double)n;
+      printf(
+          "%-5s %8zu %11.3f %11.3f %13.3e %8.2f %11.3f %11.3f %13.3e %8.2f "
+          "%9.0f\n",
+          vsph_viscous_name(form), n, 1e3 * r1, 1e3 * r2,
+          passes * (double)inter / r1, r1 / r2, 1e3 * s1, 1e3 * s2,
+          (double)n / s2, s1 / s2,
+          (double)vsph_integrate_bytes(a.s) / (double)n);
+      free(buf);
+      vsph_integrate_free(a.s);
+    }
+  printf("cost per particle-step, 1 thread, N = 1e5 over N = 1e4:");
+  for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT; form++)
+    printf("  %s %.3f", vsph_viscous_name(form),
+           per_ps[form][1] / per_ps[form][0]);
+  printf(
+      "\n(PVWF counts its two passes as two interactions per pair; "
+      "inter/s/core is the 1-thread rate)\n");
+  return 0;
+}
+
 static size_t count_interactions(const struct vsph_cells *c,
                                  const struct vsph_particles *p, double H) {
   size_t n = 0;
@@ -97,15 +195,18 @@ static size_t count_interactions(const struct vsph_cells *c,
 
 int vsph_cmd_bench_main(int argc, char **argv) {
   size_t side = 200;
+  int solver_only = 0;
   const struct vsph_args_spec specs[] = {
       {"--size", VSPH_ARGS_SIZE, &side},
+      {"--solver-only", VSPH_ARGS_FLAG, &solver_only},
   };
-  const int pr = vsph_args_parse(CMD, argc, argv, specs, 1, usage);
+  const int pr = vsph_args_parse(CMD, argc, argv, specs, 2, usage);
   if (pr >= 0) return pr;
   if (side < 10 || side > 2000)
     return vsph_args_fail(CMD, "--size must lie in 10-2000, got %zu", side);
   printf("# vsph %s bench, %d threads available\n", VSPH_VERSION,
          omp_get_max_threads());
+  if (solver_only) return bench_solver();
   printf("\n## F, G, N, M by quadrature (epsrel 1e-10), best of 5, ms\n");
   printf("%-10s %4s %10s %10s %10s\n", "kernel", "dim", "depth 0", "depth 1.3",
          "depth k");
@@ -178,5 +279,5 @@ int vsph_cmd_bench_main(int argc, char **argv) {
   vsph_viscous_ws_free(va.ws);
   vsph_cells_free(va.c);
   vsph_particles_free(va.p);
-  return 0;
+  return bench_solver();
 }

@@ -1,5 +1,7 @@
 /* Cubic B-spline, Monaghan (1992), Annu. Rev. Astron. Astrophys. 30, 543,
  * Eq. (2.6); THEORY.md section 1. */
+#include <math.h>
+
 #include "kernel.h"
 
 static double f_cubic(double q) {
@@ -20,6 +22,17 @@ static double df_cubic(double q) {
   return 0.0;
 }
 
+/* (df/dq)/q from q^2 */
+static double dfq_cubic(double q2) {
+  const double q = sqrt(q2);
+  if (q < 1.0) return -3.0 + 2.25 * q;
+  if (q < 2.0) {
+    const double t = 2.0 - q;
+    return -0.75 * t * t / q;
+  }
+  return 0.0;
+}
+
 const struct vsph_kernel_type vsph_cubic_type = {
     .name = "cubic",
     .kappa = 2.0,
@@ -27,5 +40,6 @@ const struct vsph_kernel_type vsph_cubic_type = {
               1.0 / 3.14159265358979323846},
     .f = {f_cubic, f_cubic, f_cubic},
     .df = {df_cubic, df_cubic, df_cubic},
+    .dfq = {dfq_cubic, dfq_cubic, dfq_cubic},
     .reference = "cubic B-spline (Monaghan 1992)",
 };

@@ -11,6 +11,8 @@ static double f_gauss(double q) { return q < 3.0 ? exp(-q * q) - E9 : 0.0; }
 static double df_gauss(double q) {
   return q < 3.0 ? -2.0 * q * exp(-q * q) : 0.0;
 }
+/* (df/dq)/q from q^2: -2 exp(-q^2), no square root needed */
+static double dfq_gauss(double q2) { return q2 < 9.0 ? -2.0 * exp(-q2) : 0.0; }
 
 /* sigma_d = 1 / int_{|q|<3} (e^{-q^2} - e^{-9}) d^d q, in closed form:
  *   d=1: sqrt(pi) erf(3) - 6 e^{-9}
@@ -28,5 +30,6 @@ const struct vsph_kernel_type vsph_gaussian_type = {
                      42.0 * 3.14159265358979323846 * 1.2340980408667954950e-4)},
     .f = {f_gauss, f_gauss, f_gauss},
     .df = {df_gauss, df_gauss, df_gauss},
+    .dfq = {dfq_gauss, dfq_gauss, dfq_gauss},
     .reference = "renormalised Gaussian, kappa=3 (Colagrossi et al. 2011)",
 };

@@ -15,12 +15,13 @@ typedef double vsph_kernel_fn(double q);
 /** Kernel descriptor, looked up by name at run time (GSL gsl_rng_type
  *  pattern). Index [dim-1] selects the 1-D, 2-D or 3-D variant. */
 struct vsph_kernel_type {
-  const char *name;      /*!< name used on the command line */
-  double kappa;          /*!< support radius in units of h */
-  double sigma[3];       /*!< normalisation sigma_d for d = 1, 2, 3 */
-  vsph_kernel_fn *f[3];  /*!< un-normalised shape f_d(q), 0 for q>=kappa */
-  vsph_kernel_fn *df[3]; /*!< df_d/dq */
-  const char *reference; /*!< source of the shape and constants */
+  const char *name;       /*!< name used on the command line */
+  double kappa;           /*!< support radius in units of h */
+  double sigma[3];        /*!< normalisation sigma_d for d = 1, 2, 3 */
+  vsph_kernel_fn *f[3];   /*!< un-normalised shape f_d(q), 0 for q>=kappa */
+  vsph_kernel_fn *df[3];  /*!< df_d/dq */
+  vsph_kernel_fn *dfq[3]; /*!< (df_d/dq)/q from q^2: the loops need W'/s */
+  const char *reference;  /*!< source of the shape and constants */
 };
 
 extern const struct vsph_kernel_type vsph_gaussian_type;

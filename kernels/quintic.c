@@ -1,5 +1,7 @@
 /* Quintic spline, Morris, Fox & Zhu (1997), J. Comput. Phys. 136, 214,
  * Eq. (27); THEORY.md section 1. */
+#include <math.h>
+
 #include "kernel.h"
 
 static double pow5p(double t) { return t > 0.0 ? t * t * t * t * t : 0.0; }
@@ -15,6 +17,12 @@ static double df_quintic(double q) {
   return -5.0 * (pow4p(3.0 - q) - 6.0 * pow4p(2.0 - q) + 15.0 * pow4p(1.0 - q));
 }
 
+/* (df/dq)/q from q^2 (q > 0 in every neighbour pair) */
+static double dfq_quintic(double q2) {
+  const double q = sqrt(q2);
+  return df_quintic(q) / q;
+}
+
 const struct vsph_kernel_type vsph_quintic_type = {
     .name = "quintic",
     .kappa = 3.0,
@@ -22,5 +30,6 @@ const struct vsph_kernel_type vsph_quintic_type = {
               1.0 / (120.0 * 3.14159265358979323846)},
     .f = {f_quintic, f_quintic, f_quintic},
     .df = {df_quintic, df_quintic, df_quintic},
+    .dfq = {dfq_quintic, dfq_quintic, dfq_quintic},
     .reference = "quintic spline (Morris, Fox & Zhu 1997)",
 };

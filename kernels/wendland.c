@@ -2,6 +2,8 @@
  * Math. 4, 389; normalisations as in Dehnen & Aly (2012), MNRAS 425, 1068,
  * Table 1 (rescaled to support 2h); THEORY.md section 1. The 1-D variants
  * are the lower-order Wendland functions for d = 1. */
+#include <math.h>
+
 #include "kernel.h"
 
 /* C2: (1 - q/2)^4 (2q + 1) in 2-D/3-D, (1 - q/2)^3 (1.5q + 1) in 1-D. */
@@ -51,6 +53,32 @@ static double df_c4_1d(double q) {
   return -3.5 * q * t4 * (2.0 * q + 1.0);
 }
 
+/* (df/dq)/q from q^2: the factorised forms above divided by q */
+static double dfq_c2(double q2) {
+  const double q = sqrt(q2);
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q;
+  return -5.0 * t * t * t;
+}
+static double dfq_c2_1d(double q2) {
+  const double q = sqrt(q2);
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q;
+  return -3.0 * t * t;
+}
+static double dfq_c4(double q2) {
+  const double q = sqrt(q2);
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q, t5 = t * t * t * t * t;
+  return -7.0 / 3.0 * t5 * (5.0 * q + 2.0);
+}
+static double dfq_c4_1d(double q2) {
+  const double q = sqrt(q2);
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q, t4 = t * t * t * t;
+  return -3.5 * t4 * (2.0 * q + 1.0);
+}
+
 const struct vsph_kernel_type vsph_wendland_c2_type = {
     .name = "wendland2",
     .kappa = 2.0,
@@ -58,6 +86,7 @@ const struct vsph_kernel_type vsph_wendland_c2_type = {
               21.0 / (16.0 * 3.14159265358979323846)},
     .f = {f_c2_1d, f_c2, f_c2},
     .df = {df_c2_1d, df_c2, df_c2},
+    .dfq = {dfq_c2_1d, dfq_c2, dfq_c2},
     .reference = "Wendland C2 (Wendland 1995), support 2h",
 };
 
@@ -68,5 +97,6 @@ const struct vsph_kernel_type vsph_wendland_c4_type = {
               495.0 / (256.0 * 3.14159265358979323846)},
     .f = {f_c4_1d, f_c4, f_c4},
     .df = {df_c4_1d, df_c4, df_c4},
+    .dfq = {dfq_c4_1d, dfq_c4, dfq_c4},
     .reference = "Wendland C4 (Wendland 1995), support 2h",
 };

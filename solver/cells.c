@@ -90,9 +90,9 @@ int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
     }
     if (n == 0) lo[k] = hi[k] = 0.0;
   }
-  /* Cell edge >= radius; widen the cells if the grid would hold far more
-   * cells than particles (a scattered set), which keeps memory O(N). */
-  double edge = radius;
+  /* Cell edge >= radius / SUB; widen the cells if the grid would hold far
+   * more cells than particles (a scattered set), which keeps memory O(N). */
+  double edge = radius / VSPH_CELLS_SUB;
   size_t ncells;
   const double max_cells = 8.0 * (double)n + 4096.0;
   for (;;) {
@@ -150,15 +150,15 @@ size_t vsph_cells_ranges(const struct vsph_cells *c, size_t cell,
   /* Cell key = ix + nc0 * (iy + nc1 * iz), as built above. */
   const size_t nx = c->nc[0], ny = c->nc[1], nz = c->nc[2];
   const size_t ix = cell % nx, iy = (cell / nx) % ny, iz = cell / (nx * ny);
+  const size_t S = VSPH_CELLS_SUB;
+  const size_t z0 = iz >= S ? iz - S : 0, z1 = iz + S < nz ? iz + S : nz - 1;
+  const size_t y0 = iy >= S ? iy - S : 0, y1 = iy + S < ny ? iy + S : ny - 1;
+  const size_t x0 = ix >= S ? ix - S : 0, x1 = ix + S < nx ? ix + S : nx - 1;
   size_t nr = 0;
-  for (size_t dz = 0; dz < 3; dz++) {
-    if ((iz + dz < 1) || (iz + dz - 1 >= nz)) continue;
-    for (size_t dy = 0; dy < 3; dy++) {
-      if ((iy + dy < 1) || (iy + dy - 1 >= ny)) continue;
-      /* The three cells along x are contiguous in memory: one range. */
-      const size_t x0 = ix > 0 ? ix - 1 : 0;
-      const size_t x1 = ix + 1 < nx ? ix + 1 : nx - 1;
-      const size_t row = ((iz + dz - 1) * ny + (iy + dy - 1)) * nx;
+  for (size_t z = z0; z <= z1; z++)
+    for (size_t y = y0; y <= y1; y++) {
+      /* the cells along x are contiguous in memory: one range per row */
+      const size_t row = (z * ny + y) * nx;
       const size_t a = c->start[row + x0];
       const size_t b = c->start[row + x1] + c->count[row + x1];
       if (b > a) {
@@ -167,6 +167,5 @@ size_t vsph_cells_ranges(const struct vsph_cells *c, size_t cell,
         nr++;
       }
     }
-  }
   return nr;
 }

@@ -12,10 +12,16 @@ struct vsph_particles;
  *  is the same structure with one cell holding every particle, so the fast
  *  and the reference loops share their code. No I/O. */
 
-/** Maximum number of neighbour cell ranges (3^3). */
-#define VSPH_CELLS_MAXRANGES 27
+/** Cells per interaction radius: the edge is radius/2 and a particle's
+ *  neighbours lie within 2 cells, so the scanned area is (5/2)^d radius^d
+ *  instead of 3^d radius^d (30 % fewer candidates in 2-D). */
+#define VSPH_CELLS_SUB 2
 
-/** Uniform grid of cells with edge >= the interaction radius. */
+/** Maximum number of neighbour cell ranges: one contiguous x-row per
+ *  (y, z) offset, (2 SUB + 1)^2. */
+#define VSPH_CELLS_MAXRANGES 25
+
+/** Uniform grid of cells with edge >= radius / VSPH_CELLS_SUB. */
 struct vsph_cells {
   int dim;          /*!< dimension */
   int direct;       /*!< 1: a single cell, the O(N^2) reference path */
@@ -39,8 +45,8 @@ struct vsph_cells *vsph_cells_alloc(void);
 /** @brief Free a cell list; NULL is a no-op. */
 void vsph_cells_free(struct vsph_cells *c);
 
-/** @brief Bin the particles into cells of edge >= @p radius and sort them
- *  by cell (fields are permuted; id[] keeps the original index).
+/** @brief Bin the particles into cells of edge >= @p radius / 2 and sort
+ *  them by cell (fields are permuted; id[] keeps the original index).
  *  @param radius interaction radius (m), > 0.
  *  @return VSPH_OK, VSPH_EINVAL (radius <= 0 or non-finite positions),
  *  VSPH_ENOMEM.
@@ -53,8 +59,10 @@ int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
 int vsph_cells_build_direct(struct vsph_cells *c,
                             const struct vsph_particles *p);
 
-/** @brief Index ranges [lo[r], hi[r]) of the cells neighbouring @p cell
- *  (itself included), in a fixed order. Returns the number of ranges. */
+/** @brief Index ranges [lo[r], hi[r]) of the cells within reach of
+ *  @p cell (itself included), in a fixed order: every particle within the
+ *  build radius of a particle of @p cell lies in them. Returns the number
+ *  of ranges. */
 size_t vsph_cells_ranges(const struct vsph_cells *c, size_t cell,
                          size_t lo[VSPH_CELLS_MAXRANGES],
                          size_t hi[VSPH_CELLS_MAXRANGES]);

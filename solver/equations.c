@@ -36,9 +36,9 @@ double vsph_equations_potential(const struct vsph_equations_props *ep,
 struct rhs_ctx {
   const struct vsph_equations_props *ep;
   int dim, form;
-  double H2, h_inv, dw_fac, K, mu, dhc; /* dhc = delta h c0 */
-  vsph_kernel_fn *df;
-  int parts; /* fill acc_visc / drho_delta */
+  double H2, h_inv2, dw_fac, K, mu, dhc; /* dhc = delta h c0 */
+  vsph_kernel_fn *dfq;                   /* (df/dq)/q from q^2 */
+  int parts;                             /* fill acc_visc / drho_delta */
 };
 
 static size_t rhs_one(const struct rhs_ctx *rc, const struct vsph_particles *p,
@@ -67,8 +67,8 @@ static size_t rhs_one(const struct rhs_ctx *rc, const struct vsph_particles *p,
       if (s2 >= rc->H2 || j == i) continue;
       nint++;
       ms2 = s2 < ms2 ? s2 : ms2;
-      const double s = sqrt(s2);
-      const double F = rc->dw_fac * rc->df(s * rc->h_inv) / s; /* W'/s <= 0 */
+      /* W'/s = sigma h^{-d-2} (df/dq)/q <= 0, from q^2: no square root */
+      const double F = rc->dw_fac * rc->dfq(s2 * rc->h_inv2);
       const double Vj = p->vol[j], VF = Vj * F;
       double du[3], dux = 0.0;
       for (int k = 0; k < dim; k++) {
@@ -134,12 +134,12 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
       .dim = vp->dim,
       .form = vp->form,
       .H2 = k->kappa * vp->h * k->kappa * vp->h,
-      .h_inv = 1.0 / vp->h,
-      .dw_fac = k->sigma[vp->dim - 1] * pow(vp->h, -(vp->dim + 1)),
+      .h_inv2 = 1.0 / (vp->h * vp->h),
+      .dw_fac = k->sigma[vp->dim - 1] * pow(vp->h, -(vp->dim + 2)),
       .K = 2.0 * (vp->dim + 2),
       .mu = vp->mu,
       .dhc = ep->delta * vp->h * ep->c0,
-      .df = k->df[vp->dim - 1],
+      .dfq = k->dfq[vp->dim - 1],
       .parts = out->acc_visc[0] != NULL && out->drho_delta != NULL,
   };
   size_t total = 0;

@@ -123,10 +123,10 @@ static int invert_sym(int dim, const double *b, double *inv, double tol) {
 /* Quantities every pair loop needs, loaded once (STYLE B7). */
 struct pair_ctx {
   int dim;
-  double H2; /* (kappa h)^2 */
-  double h_inv;
-  double dw_fac; /* sigma_d h^{-d-1}: W'(s) = dw_fac * df(s/h) */
-  vsph_kernel_fn *df;
+  double H2;      /* (kappa h)^2 */
+  double h_inv2;  /* 1/h^2 */
+  double dwq_fac; /* sigma_d h^{-d-2}: W'(s)/s = dwq_fac dfq(s^2/h^2) */
+  vsph_kernel_fn *dfq;
 };
 
 static void pair_ctx_init(struct pair_ctx *pc,
@@ -135,9 +135,9 @@ static void pair_ctx_init(struct pair_ctx *pc,
   const double H = k->kappa * vp->h;
   pc->dim = vp->dim;
   pc->H2 = H * H;
-  pc->h_inv = 1.0 / vp->h;
-  pc->dw_fac = k->sigma[vp->dim - 1] * pow(vp->h, -(vp->dim + 1));
-  pc->df = k->df[vp->dim - 1];
+  pc->h_inv2 = 1.0 / (vp->h * vp->h);
+  pc->dwq_fac = k->sigma[vp->dim - 1] * pow(vp->h, -(vp->dim + 2));
+  pc->dfq = k->dfq[vp->dim - 1];
 }
 
 /* MGF (4.20) and MEAF (4.30) for particle i: one pass. */
@@ -158,26 +158,25 @@ static void mgf_meaf_one(const struct vsph_viscous_props *vp,
         s2 += x[k] * x[k];
       }
       if (s2 >= pc->H2) continue;
-      const double s = sqrt(s2);
-      const double dW = pc->dw_fac * pc->df(s * pc->h_inv);
+      const double F = pc->dwq_fac * pc->dfq(s2 * pc->h_inv2); /* W'/s */
       const double Vj = p->vol[j];
       for (int k = 0; k < dim; k++) du[k] = p->vel[k][j] - p->vel[k][i];
       if (vp->form == VSPH_VISCOUS_MGF) {
         double dux = 0.0;
         for (int k = 0; k < dim; k++) dux += du[k] * x[k];
         /* K mu V_j (du.x)/s^2 grad_i W, grad_i W = -x W'/s */
-        const double c = -K * Vj * dux * dW / (s2 * s);
+        const double c = -K * Vj * dux * F / s2;
         for (int k = 0; k < dim; k++) acc[k] += c * x[k];
-        pd += Vj * dux * dux * dW / (s2 * s);
+        pd += Vj * dux * dux * F / s2;
       } else {
         /* 2 mu V_j W'/s (u_i - u_j) */
-        const double c = -2.0 * Vj * dW / s;
+        const double c = -2.0 * Vj * F;
         double du2 = 0.0;
         for (int k = 0; k < dim; k++) {
           acc[k] += c * du[k];
           du2 += du[k] * du[k];
         }
-        pd += Vj * dW / s * du2;
+        pd += Vj * F * du2;
       }
     }
   for (int k = 0; k < dim; k++) f[k] = vp->mu * acc[k];
@@ -202,9 +201,8 @@ static void pvwf_pass1(const struct vsph_viscous_props *vp,
         s2 += x[k] * x[k];
       }
       if (s2 >= pc->H2) continue;
-      const double s = sqrt(s2);
       /* V_j (-W'/s): grad_i W (x) x = (-W'/s) x (x) x */
-      const double c = -p->vol[j] * pc->dw_fac * pc->df(s * pc->h_inv) / s;
+      const double c = -p->vol[j] * pc->dwq_fac * pc->dfq(s2 * pc->h_inv2);
       for (int a = 0; a < dim; a++) {
         const double du = p->vel[a][j] - p->vel[a][i];
         for (int b = 0; b < dim; b++) {
@@ -259,8 +257,7 @@ static void pvwf_pass2(const struct pair_ctx *pc,
         s2 += x[k] * x[k];
       }
       if (s2 >= pc->H2) continue;
-      const double s = sqrt(s2);
-      const double c = -p->vol[j] * pc->dw_fac * pc->df(s * pc->h_inv) / s;
+      const double c = -p->vol[j] * pc->dwq_fac * pc->dfq(s2 * pc->h_inv2);
       for (int a = 0; a < dim; a++) {
         double y = 0.0;
         for (int b = 0; b < dim; b++)

@@ -77,6 +77,20 @@ START_TEST(test_sign_and_support) {
 }
 END_TEST
 
+/* The loops' (df/dq)/q from q^2 against df(q)/q (tol: rounding of a few
+ * operations, 1e-13 of the slope scale). */
+START_TEST(test_dfq) {
+  const struct vsph_kernel_type *k = vsph_kernel_get((size_t)_i / 3);
+  const int dim = _i % 3 + 1;
+  double scale = 0.0;
+  for (double q = 0.01; q < k->kappa; q += 0.01)
+    scale = fmax(scale, fabs(k->df[dim - 1](q) / q));
+  for (double q = 0.0137; q < k->kappa + 0.3; q += 0.0123)
+    ck_assert_double_eq_tol(k->dfq[dim - 1](q * q), k->df[dim - 1](q) / q,
+                            1e-13 * scale);
+}
+END_TEST
+
 START_TEST(test_lookup) {
   ck_assert_uint_eq(vsph_kernel_count(), 5);
   for (size_t i = 0; i < vsph_kernel_count(); i++) {
@@ -97,6 +111,7 @@ Suite *vsph_kernel_suite(void) {
   tcase_add_loop_test(tc, test_normalisation, 0, n);
   tcase_add_loop_test(tc, test_derivative_fd, 0, n);
   tcase_add_loop_test(tc, test_sign_and_support, 0, n);
+  tcase_add_loop_test(tc, test_dfq, 0, n);
   tcase_add_test(tc, test_lookup);
   suite_add_tcase(s, tc);
   return s;
