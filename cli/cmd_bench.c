@@ -128,7 +128,7 @@ static int bench_solver(void) {
   double per_ps[3][2];
   printf(
       "\n## solver: stretching square, h/dx 4/3, 3h Gaussian, best of "
-      "3\n");
+      "15 (force) and 7 (step)\n");
   printf("%-5s %8s %11s %11s %13s %8s %11s %11s %13s %8s %9s\n", "form", "N",
          "rhs 1t ms", "rhs 2t ms", "inter/s/core", "speedup", "step 1t ms",
          "step 2t ms", "p-steps/s 2t", "speedup", "B/part");
