@@ -78,6 +78,16 @@ int vsph_params_set(struct vsph_params *prm, const char *key,
   return put(prm, key, value, 0);
 }
 
+/* Store Section:key from a file, refusing a key given twice. */
+static int store_once(struct vsph_params *prm, const char *path, size_t line,
+                      const char *section, const char *key, const char *value) {
+  char full[2 * KEY_MAX + 2];
+  snprintf(full, sizeof full, "%s:%s", section, key);
+  if (find(prm, full))
+    VSPH_FAIL(VSPH_EINVAL, "%s:%zu: '%s' given twice", path, line, full);
+  return put(prm, full, value, 0);
+}
+
 /* libyaml event reader for the subset: root mapping of sections, each a
  * mapping of scalars or flow/block sequences of scalars. */
 int vsph_params_read(struct vsph_params *prm, const char *path) {
@@ -91,7 +101,6 @@ int vsph_params_read(struct vsph_params *prm, const char *path) {
   yaml_parser_set_input_file(&ps, f);
   int st = VSPH_OK, depth = 0, docs = 0, in_seq = 0;
   char section[KEY_MAX] = "", key[KEY_MAX] = "", value[VALUE_MAX] = "";
-  char full[2 * KEY_MAX + 2];
   int have_key = 0, done = 0;
   while (!done && !st) {
     yaml_event_t ev;
@@ -154,14 +163,7 @@ int vsph_params_read(struct vsph_params *prm, const char *path) {
         break;
       case YAML_SEQUENCE_END_EVENT:
         in_seq = 0;
-        snprintf(full, sizeof full, "%s:%s", section, key);
-        if (find(prm, full)) {
-          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                             "%s:%zu: '%s' given twice", path, line, full);
-          st = VSPH_EINVAL;
-        } else {
-          st = put(prm, full, value, 0);
-        }
+        st = store_once(prm, path, line, section, key, value);
         have_key = 0;
         break;
       case YAML_SCALAR_EVENT: {
@@ -186,14 +188,7 @@ int vsph_params_read(struct vsph_params *prm, const char *path) {
           snprintf(key, sizeof key, "%s", s);
           have_key = 1;
         } else if (depth == 2) {
-          snprintf(full, sizeof full, "%s:%s", section, key);
-          if (find(prm, full)) {
-            vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                               "%s:%zu: '%s' given twice", path, line, full);
-            st = VSPH_EINVAL;
-          } else {
-            st = put(prm, full, s, 0);
-          }
+          st = store_once(prm, path, line, section, key, s);
           have_key = 0;
         } else {
           vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,

@@ -7,6 +7,7 @@
 #include "../common/params.h"
 #include "../common/status.h"
 #include "integrate.h"
+#include "particles.h"
 
 static const struct vsph_scene_type *const scene_table[] = {
     &vsph_vortex_patch_type,
@@ -67,4 +68,10 @@ int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
     ip->box_hi[a] = sc->box_hi[a];
   }
   return VSPH_OK;
+}
+
+void vsph_scene_set_pressure(const struct vsph_scene *sc,
+                             struct vsph_particles *p, size_t i, double pr) {
+  p->rho[i] = sc->rho0 + pr / (sc->c0 * sc->c0);
+  p->m[i] = p->rho[i] * p->vol[i];
 }

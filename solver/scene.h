@@ -94,6 +94,11 @@ int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
                                const struct vsph_kernel_type *k, double h,
                                struct vsph_integrate_props *ip);
 
+/** @brief Set particle i's density from pressure @p pr by the linear state
+ *  equation, rho = rho0 + p/c0^2, and its mass m = rho V. */
+void vsph_scene_set_pressure(const struct vsph_scene *sc,
+                             struct vsph_particles *p, size_t i, double pr);
+
 /** @brief Standing wave's initial velocity u = grad phi0 at (x, y),
  *  phi0 = (A g/omega) cosh[k(y + H)]/cosh(kH) cos(kx) (THEORY 6.3). */
 void vsph_standing_wave_velocity(double A, double g, double k, double H,

@@ -76,13 +76,12 @@ static int setup(struct vsph_scene *sc) {
 
 static int init(const struct vsph_scene *sc, size_t res,
                 struct vsph_particles **out) {
-  const double H = sc->ref_length, L = H, dx = H / (double)res;
+  const double H = sc->ref_length, L = H;
   struct vsph_lattice_props lp = {.dim = 2};
   /* a square lattice of side L = H centred on (L/2, -H/2) */
   int st = vsph_lattice_square(&lp, L, res, out);
   if (st) return st;
   struct vsph_particles *p = *out;
-  (void)dx;
   for (size_t i = 0; i < p->n; i++) {
     const double x = p->pos[0][i] + 0.5 * L, y = p->pos[1][i] - 0.5 * H;
     p->pos[0][i] = x;
@@ -92,9 +91,8 @@ static int init(const struct vsph_scene *sc, size_t res,
                                 u);
     p->vel[0][i] = u[0];
     p->vel[1][i] = u[1];
-    const double pr = -sc->rho0 * sc->g * y; /* hydrostatic, flat surface */
-    p->rho[i] = sc->rho0 + pr / (sc->c0 * sc->c0);
-    p->m[i] = p->rho[i] * p->vol[i];
+    /* hydrostatic pressure under a flat surface */
+    vsph_scene_set_pressure(sc, p, i, -sc->rho0 * sc->g * y);
   }
   return VSPH_OK;
 }

@@ -109,9 +109,7 @@ static int init(const struct vsph_scene *sc, size_t res,
     const double x = p->pos[0][i], y = p->pos[1][i];
     p->vel[0][i] = A0 * x;
     p->vel[1][i] = -A0 * y;
-    const double pr = vsph_poisson_interp(ps, x, y);
-    p->rho[i] = sc->rho0 + pr / (sc->c0 * sc->c0);
-    p->m[i] = p->rho[i] * p->vol[i];
+    vsph_scene_set_pressure(sc, p, i, vsph_poisson_interp(ps, x, y));
   }
   vsph_poisson_free(ps);
   return VSPH_OK;

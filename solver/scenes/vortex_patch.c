@@ -109,8 +109,7 @@ static int init(const struct vsph_scene *sc, size_t res,
     p->vel[1][i] = w * x;
     double pr = 0.0;
     st = pressure(sc, ws, r, &pr);
-    p->rho[i] = sc->rho0 + pr / (sc->c0 * sc->c0);
-    p->m[i] = p->rho[i] * p->vol[i];
+    vsph_scene_set_pressure(sc, p, i, pr);
   }
   gsl_integration_workspace_free(ws);
   return st;
