@@ -14,6 +14,7 @@
 #include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "../solver/integrate.h"
+#include "../solver/lattice.h"
 #include "../solver/particles.h"
 #include "../solver/scene.h"
 #include "../solver/viscous.h"
@@ -40,6 +41,8 @@ static const struct solver_param SOLVER[] = {
      "than min_gap dx (pairing)"},
     {"outputs", "200", "energy rows over the run"},
     {"snapshots", "10", "VTK snapshots over the run; 0: none"},
+    {"perturb", "0", "random shift of the initial lattice, fraction of dx"},
+    {"seed", "2385", "seed of that shift (mt19937)"},
 };
 #define NSOLVER (sizeof SOLVER / sizeof SOLVER[0])
 
@@ -130,87 +133,14 @@ static int write_run_json(const char *dir, const struct run_info *ri,
   return vsph_writers_json_file(o, dir, "run.json");
 }
 
-int vsph_cmd_run_main(int argc, char **argv) {
-  if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
-    usage(stdout);
-    return 0;
-  }
-  if (argc < 2 || argv[1][0] == '-')
-    return vsph_args_fail(CMD, "missing SCENE (see vsph scenes)");
-  const struct vsph_scene_type *type = vsph_scene_find(argv[1]);
+int vsph_cmd_run_params(struct vsph_params *prm, const char *scene,
+                        const char *out_dir, int quiet,
+                        struct vsph_cmd_run_result *result) {
+  int rc = 0;
+  memset(result, 0, sizeof *result);
+  const struct vsph_scene_type *type = vsph_scene_find(scene);
   if (!type)
-    return vsph_args_fail(CMD, "unknown scene '%s' (see vsph scenes)", argv[1]);
-  struct vsph_params *prm = vsph_params_alloc();
-  if (!prm) return vsph_args_status(CMD, VSPH_ENOMEM);
-  const char *out_dir = NULL, *params_file = NULL;
-  const char *opt_visc = NULL, *opt_kernel = NULL, *opt_res = NULL,
-             *opt_tend = NULL, *opt_cfl = NULL;
-  size_t threads = 0;
-  int quiet = 0, rc = 0;
-  /* First pass: the file comes first whatever the order on the line. */
-  for (int i = 2; i < argc; i++)
-    if (!strcmp(argv[i], "--params") && i + 1 < argc) params_file = argv[i + 1];
-  if (params_file && vsph_params_read(prm, params_file)) {
-    rc = vsph_args_status(CMD, VSPH_EINVAL);
-    goto done;
-  }
-  for (int i = 2; i < argc; i++) {
-    const char *a = argv[i], *v;
-    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-      usage(stdout);
-      goto done;
-    } else if (!strcmp(a, "--quiet")) {
-      quiet = 1;
-      continue;
-    }
-    if (!(v = vsph_args_value(CMD, argc, argv, &i))) {
-      rc = 2;
-      goto done;
-    }
-    if (!strcmp(a, "--params")) {
-      continue;
-    } else if (!strcmp(a, "--visc")) {
-      opt_visc = v;
-    } else if (!strcmp(a, "--kernel")) {
-      opt_kernel = v;
-    } else if (!strcmp(a, "--res")) {
-      opt_res = v;
-    } else if (!strcmp(a, "--t-end")) {
-      opt_tend = v;
-    } else if (!strcmp(a, "--cfl")) {
-      opt_cfl = v;
-    } else if (!strcmp(a, "--out")) {
-      out_dir = v;
-    } else if (!strcmp(a, "--threads")) {
-      if (vsph_args_size(CMD, a, v, &threads)) {
-        rc = 2;
-        goto done;
-      }
-    } else if (!strcmp(a, "--set")) {
-      char key[256];
-      const char *eq = strchr(v, '=');
-      if (!eq || (size_t)(eq - v) >= sizeof key) {
-        rc = vsph_args_fail(CMD, "--set wants Section:key=value, got '%s'", v);
-        goto done;
-      }
-      memcpy(key, v, (size_t)(eq - v));
-      key[eq - v] = '\0';
-      if (vsph_params_set(prm, key, eq + 1)) {
-        rc = vsph_args_status(CMD, VSPH_EINVAL);
-        goto done;
-      }
-    } else {
-      rc = vsph_args_fail(CMD, "unknown option '%s' (see --help)", a);
-      goto done;
-    }
-  }
-  /* Explicit options override the file and --set. */
-  const char *opt_keys[5] = {"Solver:visc", "Solver:kernel", "Solver:res",
-                             "Solver:t_end", "Solver:cfl"};
-  const char *opt_vals[5] = {opt_visc, opt_kernel, opt_res, opt_tend, opt_cfl};
-  for (int k = 0; k < 5; k++)
-    if (opt_vals[k]) vsph_params_set(prm, opt_keys[k], opt_vals[k]);
-
+    return vsph_args_fail(CMD, "unknown scene '%s' (see vsph scenes)", scene);
   /* Solver section, defaults in the SOLVER table. */
   const char *visc_name, *kernel_name;
   double val[NSOLVER];
@@ -227,11 +157,12 @@ int vsph_cmd_run_main(int argc, char **argv) {
   }
   if (st) {
     rc = vsph_args_status(CMD, st);
-    goto done;
+    return rc;
   }
   const double res_d = val[2], hdx = val[3], cfl = val[5], delta = val[6];
   const double band = val[7], min_gap = val[8];
   const double outputs = val[9], snapshots = val[10];
+  const double perturb = val[11], seed = val[12];
   const int form = vsph_viscous_find(visc_name);
   const struct vsph_kernel_type *kernel = vsph_kernel_find(kernel_name);
   if (form < 0) {
@@ -253,21 +184,22 @@ int vsph_cmd_run_main(int argc, char **argv) {
     rc = vsph_args_fail(CMD, "rho_band must be > 0, got %g", band);
   } else if (!(min_gap >= 0 && min_gap < 1)) {
     rc = vsph_args_fail(CMD, "min_gap must lie in [0, 1), got %g", min_gap);
+  } else if (!(perturb >= 0 && perturb < 0.5) || !(seed >= 0)) {
+    rc = vsph_args_fail(CMD, "perturb must lie in [0, 0.5) and seed >= 0");
   } else if (!(outputs >= 1 && outputs <= 1e6) || !(snapshots >= 0)) {
     rc = vsph_args_fail(CMD, "outputs must be >= 1 and snapshots >= 0");
   }
-  if (rc) goto done;
+  if (rc) return rc;
   struct vsph_scene sc;
   if ((st = vsph_scene_init(&sc, type, prm))) {
     rc = vsph_args_status(CMD, st);
-    goto done;
+    return rc;
   }
   const char *unused = vsph_params_unused(prm);
   if (unused) {
     rc = vsph_args_fail(CMD, "unknown parameter '%s'", unused);
-    goto done;
+    return rc;
   }
-  if (threads > 0) omp_set_num_threads((int)threads);
   const size_t res = (size_t)res_d;
   const double t_end = val[4] > 0 ? val[4] : sc.t_end;
   char dirbuf[512];
@@ -281,14 +213,20 @@ int vsph_cmd_run_main(int argc, char **argv) {
   struct vsph_particles *fluid = NULL;
   if ((st = type->init(&sc, res, &fluid))) {
     rc = vsph_args_status(CMD, st);
-    goto done;
+    return rc;
   }
   const double dx = sc.ref_length / (double)res, h = hdx * dx;
+  if (perturb > 0 &&
+      (st = vsph_lattice_perturb(fluid, perturb * dx, (unsigned long)seed,
+                                 (size_t)-1))) {
+    vsph_particles_free(fluid);
+    return vsph_args_status(CMD, st);
+  }
   struct vsph_integrate_props ip;
   if ((st = vsph_scene_integrate_props(&sc, form, kernel, h, &ip))) {
     vsph_particles_free(fluid);
     rc = vsph_args_status(CMD, st);
-    goto done;
+    return rc;
   }
   ip.cfl = cfl;
   ip.rho_band = band;
@@ -301,14 +239,14 @@ int vsph_cmd_run_main(int argc, char **argv) {
     vsph_integrate_free(s);
     vsph_references_scene_free(ref);
     rc = vsph_args_status(CMD, VSPH_ENOMEM);
-    goto done;
+    return rc;
   }
   /* Only now, with every input checked, write anything. */
   if (vsph_writers_mkdir(out_dir) || write_used(prm, out_dir)) {
     vsph_integrate_free(s);
     vsph_references_scene_free(ref);
     rc = vsph_args_status(CMD, VSPH_EIO);
-    goto done;
+    return rc;
   }
   char path[1024];
   snprintf(path, sizeof path, "%s/energy.csv", out_dir);
@@ -320,7 +258,7 @@ int vsph_cmd_run_main(int argc, char **argv) {
     vsph_integrate_free(s);
     vsph_references_scene_free(ref);
     rc = vsph_args_fail(CMD, "cannot write into %s", out_dir);
-    goto done;
+    return rc;
   }
   fprintf(csv,
           "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,Ek_ref,"
@@ -428,8 +366,107 @@ int vsph_cmd_run_main(int argc, char **argv) {
     fprintf(stderr, "vsph run: done, %zu steps in %.2f s (%.3g pairs/s)\n",
             s->steps, wall, pairs / wall);
   }
+  result->unstable = unstable;
+  result->unstable_time = unstable_t;
+  snprintf(result->reason, sizeof result->reason, "%s", s->reason);
+  result->n_particles = n;
+  result->steps = s->steps;
+  result->t = s->t;
+  result->wall_s = wall;
+  result->pairs = pairs;
+  result->h = h;
+  result->dx = dx;
+  result->c0 = sc.c0;
+  result->mu = sc.mu;
   vsph_integrate_free(s);
   vsph_references_scene_free(ref);
+  return rc;
+}
+
+int vsph_cmd_run_main(int argc, char **argv) {
+  if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
+    usage(stdout);
+    return 0;
+  }
+  if (argc < 2 || argv[1][0] == '-')
+    return vsph_args_fail(CMD, "missing SCENE (see vsph scenes)");
+  const struct vsph_scene_type *type = vsph_scene_find(argv[1]);
+  if (!type)
+    return vsph_args_fail(CMD, "unknown scene '%s' (see vsph scenes)", argv[1]);
+  struct vsph_params *prm = vsph_params_alloc();
+  if (!prm) return vsph_args_status(CMD, VSPH_ENOMEM);
+  const char *out_dir = NULL, *params_file = NULL;
+  const char *opt_visc = NULL, *opt_kernel = NULL, *opt_res = NULL,
+             *opt_tend = NULL, *opt_cfl = NULL;
+  size_t threads = 0;
+  int quiet = 0, rc = 0;
+  /* First pass: the file comes first whatever the order on the line. */
+  for (int i = 2; i < argc; i++)
+    if (!strcmp(argv[i], "--params") && i + 1 < argc) params_file = argv[i + 1];
+  if (params_file && vsph_params_read(prm, params_file)) {
+    rc = vsph_args_status(CMD, VSPH_EINVAL);
+    goto done;
+  }
+  for (int i = 2; i < argc; i++) {
+    const char *a = argv[i], *v;
+    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+      usage(stdout);
+      goto done;
+    } else if (!strcmp(a, "--quiet")) {
+      quiet = 1;
+      continue;
+    }
+    if (!(v = vsph_args_value(CMD, argc, argv, &i))) {
+      rc = 2;
+      goto done;
+    }
+    if (!strcmp(a, "--params")) {
+      continue;
+    } else if (!strcmp(a, "--visc")) {
+      opt_visc = v;
+    } else if (!strcmp(a, "--kernel")) {
+      opt_kernel = v;
+    } else if (!strcmp(a, "--res")) {
+      opt_res = v;
+    } else if (!strcmp(a, "--t-end")) {
+      opt_tend = v;
+    } else if (!strcmp(a, "--cfl")) {
+      opt_cfl = v;
+    } else if (!strcmp(a, "--out")) {
+      out_dir = v;
+    } else if (!strcmp(a, "--threads")) {
+      if (vsph_args_size(CMD, a, v, &threads)) {
+        rc = 2;
+        goto done;
+      }
+    } else if (!strcmp(a, "--set")) {
+      char key[256];
+      const char *eq = strchr(v, '=');
+      if (!eq || (size_t)(eq - v) >= sizeof key) {
+        rc = vsph_args_fail(CMD, "--set wants Section:key=value, got '%s'", v);
+        goto done;
+      }
+      memcpy(key, v, (size_t)(eq - v));
+      key[eq - v] = '\0';
+      if (vsph_params_set(prm, key, eq + 1)) {
+        rc = vsph_args_status(CMD, VSPH_EINVAL);
+        goto done;
+      }
+    } else {
+      rc = vsph_args_fail(CMD, "unknown option '%s' (see --help)", a);
+      goto done;
+    }
+  }
+  /* Explicit options override the file and --set. */
+  const char *opt_keys[5] = {"Solver:visc", "Solver:kernel", "Solver:res",
+                             "Solver:t_end", "Solver:cfl"};
+  const char *opt_vals[5] = {opt_visc, opt_kernel, opt_res, opt_tend, opt_cfl};
+  for (int k = 0; k < 5; k++)
+    if (opt_vals[k]) vsph_params_set(prm, opt_keys[k], opt_vals[k]);
+
+  if (threads > 0) omp_set_num_threads((int)threads);
+  struct vsph_cmd_run_result res;
+  rc = vsph_cmd_run_params(prm, type->name, out_dir, quiet, &res);
 done:
   vsph_params_free(prm);
   return rc;

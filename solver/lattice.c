@@ -40,14 +40,18 @@ static int check_props(const struct vsph_lattice_props *lp) {
   return VSPH_OK;
 }
 
-/* Uniform shift in [-a, a] per component, from the caller's generator. */
-static void perturb_set(struct vsph_particles *p, double amp, gsl_rng *rng,
-                        size_t skip) {
+int vsph_lattice_perturb(struct vsph_particles *p, double amp,
+                         unsigned long seed, size_t skip) {
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  if (!rng) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a random generator");
+  gsl_rng_set(rng, seed);
   for (size_t i = 0; i < p->n; i++) {
     if (i == skip) continue;
     for (int k = 0; k < p->dim; k++)
       p->pos[k][i] += amp * (2.0 * gsl_rng_uniform(rng) - 1.0);
   }
+  gsl_rng_free(rng);
+  return VSPH_OK;
 }
 
 static void set_unit_density(struct vsph_particles *p, double vol) {
@@ -61,13 +65,8 @@ static void set_unit_density(struct vsph_particles *p, double vol) {
 
 static int finish(const struct vsph_lattice_props *lp, struct vsph_particles *p,
                   size_t skip) {
-  if (lp->perturb > 0.0) {
-    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    if (!rng) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a random generator");
-    gsl_rng_set(rng, lp->seed);
-    perturb_set(p, lp->perturb * lp->dx, rng, skip);
-    gsl_rng_free(rng);
-  }
+  if (lp->perturb > 0.0)
+    return vsph_lattice_perturb(p, lp->perturb * lp->dx, lp->seed, skip);
   return VSPH_OK;
 }
 

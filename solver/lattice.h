@@ -44,6 +44,12 @@ int vsph_lattice_halfspace(const struct vsph_lattice_props *lp, double radius,
                            double depth, struct vsph_particles **out,
                            size_t *centre);
 
+/** @brief Shift every particle (except index @p skip; pass (size_t)-1 for
+ *  none) by a uniform random amount in [-amp, amp] per component, from an
+ *  mt19937 generator seeded with @p seed. @return VSPH_OK or VSPH_ENOMEM. */
+int vsph_lattice_perturb(struct vsph_particles *p, double amp,
+                         unsigned long seed, size_t skip);
+
 /** @brief Square (2-D) of side @p side centred at the origin with
  *  @p nacross particles along each edge at the cell centres (spacing
  *  side/nacross; lp->dx is ignored). */
