@@ -2,7 +2,7 @@
 # work as the first command on a fresh machine: they install what is missing.
 
 CC       ?= gcc
-PKGS     := gsl fftw3 yaml-0.1 libcjson libcmark
+PKGS     := gsl fftw3 yaml-0.1 libcjson libcmark-gfm
 TESTPKGS := check
 BUILD    ?= build
 WARN     := -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
@@ -14,13 +14,18 @@ OPT      ?= -O2
 CFLAGS   ?= $(OPT) -g
 ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L -fopenmp $(WARN) $(CFLAGS) \
             $(SAN) $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
-LDLIBS    = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm
+LDLIBS    = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcmark-gfm-extensions -lm
 TESTLIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
 
 LIB_SRC  := $(wildcard common/*.c kernels/*.c solver/*.c solver/scenes/*.c analysis/*.c)
 CLI_SRC  := $(wildcard cli/*.c)
 TEST_SRC := $(wildcard tests/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
+# A hash of every source file, linked in as vsph_source_hash_id: the
+# report's cache keys include it, so any change to the code reruns.
+SRC_ALL  := $(sort $(wildcard common/*.[ch] kernels/*.[ch] solver/*.[ch] \
+              solver/scenes/*.c analysis/*.[ch] cli/*.[ch]))
+HASH_OBJ := $(BUILD)/gen/source_hash.o
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
@@ -38,10 +43,18 @@ $(BUILD)/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(ALLCFLAGS) -MMD -MP -c $< -o $@
 
-$(BUILD)/vsph: $(LIB_OBJ) $(CLI_OBJ)
+$(BUILD)/gen/source_hash.c: $(SRC_ALL) Makefile
+	@mkdir -p $(dir $@)
+	@printf '/* generated: hash of the sources */\nconst char vsph_source_hash_id[] = "%s";\n' \
+	  "$$(cat $(SRC_ALL) | sha1sum | cut -c1-16)" > $@
+
+$(HASH_OBJ): $(BUILD)/gen/source_hash.c
+	$(CC) -std=c11 -c $< -o $@
+
+$(BUILD)/vsph: $(LIB_OBJ) $(CLI_OBJ) $(HASH_OBJ)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
 
-$(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ)
+$(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(TESTLIBS) $(LDLIBS)
 
 # Every test, through the single Check runner (STYLE B10).
@@ -52,10 +65,11 @@ check: deps
 
 test: check
 
-# The analysis tables of THEORY sections 2-4 into reports/out/.
+# The main job: the whole report into reports/out/ (quick; FULL=1 for the
+# paper's resolutions and end times).
 report: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph
-	$(BUILD)/vsph report --out reports/out
+	$(BUILD)/vsph report --out reports/out $(if $(FULL),--full)
 
 # Timings (never in the tests): quadrature, particle sums, operators.
 bench: deps

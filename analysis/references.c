@@ -248,6 +248,15 @@ int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
     const double k = sc->d[0], om = sc->d[1], A = sc->d[2], nu = sc->d[3];
     const double L = sc->ref_length;
     *Ek = vsph_references_lighthill(sc->rho0, sc->g, A, L, nu, k, om, t);
+    if (t == 0.0) {
+      /* The exact viscous power of the initial potential flow: with
+       * D = Hess(phi0), -2 mu int D:D over the tank integrates to
+       * -2 rho nu k^2 g A^2 L (= -8 nu k^2 E_k(0), any depth). d/dt of
+       * Lighthill's envelope gives half of it: the envelope omits an
+       * O(nu/omega) phase shift. */
+      *dEk_dt = -2.0 * sc->rho0 * nu * k * k * sc->g * A * A * L;
+      return VSPH_OK;
+    }
     /* d/dt of (rho g A^2 L/8) e^{-4 nu k^2 t} [1 + cos 2 omega t] */
     const double a = sc->rho0 * sc->g * A * A * L / 8.0;
     const double e = exp(-4.0 * nu * k * k * t);

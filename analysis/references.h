@@ -70,7 +70,9 @@ struct vsph_scene;
 
 /** A scene's reference curve: E_k(t) and dE_k/dt(t), NaN where the scene
  *  has none (stretching square: only t = 0, exact dE_k/dt = -4 mu A0^2 L^2
- *  and E_k = rho A0^2 L^4/12). */
+ *  and E_k = rho A0^2 L^4/12). Standing wave: Lighthill's E_k(t) and its
+ *  derivative, except at t = 0 where dE_k/dt is the exact viscous power of
+ *  the initial potential flow, -2 rho nu k^2 g A^2 L. */
 struct vsph_references_scene {
   const struct vsph_scene *scene;        /*!< borrowed */
   struct vsph_references_vortex *vortex; /*!< vortex patch only */

@@ -359,7 +359,7 @@ int vsph_cmd_run_params(struct vsph_params *prm, const char *scene,
                         .n_fallback = s->vws ? s->vws->n_fallback : 0};
   if (st || write_run_json(out_dir, &ri, &sc)) {
     rc = vsph_args_status(CMD, st ? st : VSPH_EIO);
-  } else if (unstable) {
+  } else if (unstable && quiet < 2) {
     fprintf(stderr, "vsph run: unstable at t = %.6g: %s (output kept in %s)\n",
             unstable_t, s->reason, out_dir);
   } else if (!quiet) {

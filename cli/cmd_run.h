@@ -20,6 +20,7 @@ struct vsph_cmd_run_result {
 
 /** @brief Run a scene from a parameter store (Solver: and Scene: keys):
  *  validate, set up, integrate, write DIR's outputs, fill @p result.
+ *  quiet: 0 progress on stderr, 1 only the unstable verdict, 2 silent.
  *  @return 0, 2 after one line on stderr for bad input (nothing written),
  *  1 for an internal failure. */
 int vsph_cmd_run_params(struct vsph_params *prm, const char *scene,

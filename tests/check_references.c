@@ -7,6 +7,7 @@
 
 #include "../analysis/references.h"
 #include "../common/consts.h"
+#include "../common/params.h"
 #include "../solver/scene.h"
 #include "check_suites.h"
 
@@ -223,6 +224,62 @@ START_TEST(test_norm_closed_form) {
 }
 END_TEST
 
+/* The standing wave's exact initial viscous power -2 mu int D:D, from the
+ * scene's reference, against a quadrature of 2 mu D:D with D from centred
+ * differences of the initial velocity (step 1e-5: error ~1e-10). */
+static double dd_inner(double y, void *p) {
+  const struct wave *w = p;
+  const double e = 1e-5;
+  double a[2], b[2], c[2], d[2];
+  vsph_standing_wave_velocity(w->A, w->g, w->k, w->H, w->om, w->x + e, y, a);
+  vsph_standing_wave_velocity(w->A, w->g, w->k, w->H, w->om, w->x - e, y, b);
+  vsph_standing_wave_velocity(w->A, w->g, w->k, w->H, w->om, w->x, y + e, c);
+  vsph_standing_wave_velocity(w->A, w->g, w->k, w->H, w->om, w->x, y - e, d);
+  const double ux = (a[0] - b[0]) / (2 * e), vy = (c[1] - d[1]) / (2 * e);
+  const double uy = (c[0] - d[0]) / (2 * e), vx = (a[1] - b[1]) / (2 * e);
+  const double dxy = 0.5 * (uy + vx);
+  return ux * ux + vy * vy + 2 * dxy * dxy;
+}
+static double dd_outer(double x, void *p) {
+  struct wave *w = p;
+  w->x = x;
+  gsl_function f = {dd_inner, w};
+  double res, err;
+  gsl_integration_qag(&f, -w->H, 0.0, 0, 1e-10, 200, GSL_INTEG_GAUSS61, w->wi,
+                      &res, &err);
+  return res;
+}
+START_TEST(test_wave_initial_power) {
+  struct vsph_params *prm = vsph_params_alloc();
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_standing_wave_type, prm), 0);
+  vsph_params_free(prm);
+  struct vsph_references_scene *ref = vsph_references_scene_alloc(&sc);
+  double Ek, dEk;
+  ck_assert_int_eq(vsph_references_scene_eval(ref, 0.0, &Ek, &dEk), 0);
+  vsph_references_scene_free(ref);
+  struct wave w = {sc.d[2],
+                   sc.g,
+                   sc.d[0],
+                   sc.ref_length,
+                   sc.d[1],
+                   0.0,
+                   gsl_integration_workspace_alloc(200)};
+  gsl_integration_workspace *wo = gsl_integration_workspace_alloc(200);
+  gsl_function f = {dd_outer, &w};
+  double DD, err;
+  gsl_integration_qag(&f, 0.0, sc.ref_length, 0, 1e-9, 200, GSL_INTEG_GAUSS61,
+                      wo, &DD, &err);
+  gsl_integration_workspace_free(wo);
+  gsl_integration_workspace_free(w.wi);
+  const double want = -2.0 * sc.mu * DD;
+  ck_assert_double_eq_tol(dEk, want, 1e-7 * fabs(want));
+  /* and it is -8 nu k^2 E_k(0): twice the envelope's slope */
+  ck_assert_double_eq_tol(dEk, -8.0 * sc.d[3] * sc.d[0] * sc.d[0] * Ek,
+                          1e-12 * fabs(dEk));
+}
+END_TEST
+
 START_TEST(test_errors) {
   vsph_test_silence();
   ck_assert_ptr_null(vsph_references_vortex_alloc(-1.0, 0.1, 1, 1e-3, 5));
@@ -241,6 +298,7 @@ Suite *vsph_references_suite(void) {
   tcase_add_test(tc, test_energy_rate);
   tcase_add_test(tc, test_lighthill_initial);
   tcase_add_test(tc, test_norm_closed_form);
+  tcase_add_test(tc, test_wave_initial_power);
   tcase_add_test(tc, test_errors);
   suite_add_tcase(s, tc);
   return s;

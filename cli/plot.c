@@ -1,0 +1,146 @@
+#include "plot.h"
+
+#include <cmark-gfm-core-extensions.h>
+#include <cmark-gfm.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../common/status.h"
+#include "writers.h"
+
+int vsph_plot_write(const struct vsph_plot *pl) {
+  char gp[512];
+  snprintf(gp, sizeof gp, "%s.gp", pl->name);
+  FILE *f = vsph_writers_open(pl->dir, gp);
+  if (!f) return VSPH_EIO;
+  fprintf(f,
+          "# vsph report figure: gnuplot %s.gp makes %s.png\n"
+          "set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11'\n"
+          "set output '%s.png'\nset datafile separator ','\n"
+          "set title \"%s\"\nset xlabel \"%s\"\nset ylabel \"%s\"\n"
+          "set grid\nset key outside right top\n%s%s%s\n",
+          pl->name, pl->name, pl->name, pl->title, pl->xlabel, pl->ylabel,
+          pl->logx ? "set logscale x\nset format x '10^{%L}'\n" : "",
+          pl->logy ? "set logscale y\nset format y '10^{%L}'\n" : "",
+          pl->extra ? pl->extra : "");
+  fprintf(f, "plot ");
+  for (size_t k = 0; k < pl->n; k++)
+    fprintf(f, "%s'%s' skip 1 using %s with %s title \"%s\"",
+            k ? ", \\\n     " : "", pl->s[k].file, pl->s[k].using,
+            pl->s[k].style, pl->s[k].title);
+  fprintf(f, "\n");
+  const int st = vsph_writers_close(f, pl->dir, gp);
+  if (st) return st;
+  char cmd[1200];
+  snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot '%s' 2> '%s.log'", pl->dir, gp,
+           pl->name);
+  if (system(cmd) != 0)
+    VSPH_FAIL(VSPH_EIO, "gnuplot failed on %s/%s (see %s.log)", pl->dir, gp,
+              pl->name);
+  return VSPH_OK;
+}
+
+static char *slurp(const char *path, size_t *len) {
+  FILE *f = fopen(path, "rb");
+  if (!f) return NULL;
+  fseek(f, 0, SEEK_END);
+  const long n = ftell(f);
+  fseek(f, 0, SEEK_SET);
+  char *buf = malloc((size_t)n + 1);
+  if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) {
+    free(buf);
+    buf = NULL;
+  }
+  fclose(f);
+  if (buf) buf[n] = '\0';
+  if (len) *len = (size_t)n;
+  return buf;
+}
+
+static void base64(FILE *f, const unsigned char *d, size_t n) {
+  static const char tb[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  for (size_t i = 0; i < n; i += 3) {
+    const unsigned v = (unsigned)d[i] << 16 |
+                       (i + 1 < n ? (unsigned)d[i + 1] << 8 : 0) |
+                       (i + 2 < n ? d[i + 2] : 0);
+    fputc(tb[v >> 18 & 63], f);
+    fputc(tb[v >> 12 & 63], f);
+    fputc(i + 1 < n ? tb[v >> 6 & 63] : '=', f);
+    fputc(i + 2 < n ? tb[v & 63] : '=', f);
+  }
+}
+
+int vsph_plot_html(const char *dir, const char *md, const char *html,
+                   const char *title) {
+  char path[1024];
+  snprintf(path, sizeof path, "%s/%s", dir, md);
+  size_t len;
+  char *text = slurp(path, &len);
+  if (!text) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
+  cmark_gfm_core_extensions_ensure_registered();
+  cmark_parser *ps = cmark_parser_new(CMARK_OPT_DEFAULT);
+  cmark_syntax_extension *table = cmark_find_syntax_extension("table");
+  if (!ps || !table) {
+    free(text);
+    if (ps) cmark_parser_free(ps);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot start cmark-gfm");
+  }
+  cmark_parser_attach_syntax_extension(ps, table);
+  cmark_parser_feed(ps, text, len);
+  cmark_node *doc = cmark_parser_finish(ps);
+  char *body = cmark_render_html(doc, CMARK_OPT_DEFAULT,
+                                 cmark_parser_get_syntax_extensions(ps));
+  cmark_node_free(doc);
+  cmark_parser_free(ps);
+  free(text);
+  if (!body) VSPH_FAIL(VSPH_ENOMEM, "cmark-gfm rendered nothing");
+  FILE *f = vsph_writers_open(dir, html);
+  if (!f) {
+    free(body);
+    return VSPH_EIO;
+  }
+  fprintf(f,
+          "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">\n"
+          "<title>%s</title>\n<style>\n"
+          "body{font-family:sans-serif;max-width:70em;margin:2em auto;"
+          "padding:0 1em;line-height:1.45;color:#222}\n"
+          "table{border-collapse:collapse;margin:1em 0;font-size:90%%}\n"
+          "th,td{border:1px solid #bbb;padding:.25em .6em;text-align:right}\n"
+          "th{background:#eee}\nimg{max-width:100%%;border:1px solid #ddd}\n"
+          "code{background:#f4f4f4}\n</style></head><body>\n",
+          title);
+  /* Copy the body, replacing src="X.png" by an embedded data URI. */
+  const char *c = body;
+  for (;;) {
+    const char *m = strstr(c, "src=\"");
+    if (!m) break;
+    const char *q = strchr(m + 5, '"');
+    if (!q) break;
+    const size_t nlen = (size_t)(q - (m + 5));
+    fwrite(c, 1, (size_t)(m - c), f);
+    char name[512];
+    snprintf(name, sizeof name, "%.*s", (int)(nlen < 500 ? nlen : 500), m + 5);
+    size_t plen = 0;
+    char *png = NULL;
+    if (nlen > 4 && !strcmp(name + strlen(name) - 4, ".png") &&
+        !strchr(name, ':')) {
+      snprintf(path, sizeof path, "%s/%s", dir, name);
+      png = slurp(path, &plen);
+    }
+    if (png) {
+      fputs("src=\"data:image/png;base64,", f);
+      base64(f, (const unsigned char *)png, plen);
+      fputc('"', f);
+      free(png);
+    } else {
+      fwrite(m, 1, (size_t)(q - m + 1), f);
+    }
+    c = q + 1;
+  }
+  fputs(c, f);
+  fputs("</body></html>\n", f);
+  free(body);
+  return vsph_writers_close(f, dir, html);
+}
