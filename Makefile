@@ -30,7 +30,7 @@ CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
-.PHONY: all deps check test report bench asan valgrind-check prefix-check \
+.PHONY: all deps check test report baseline bench asan valgrind-check prefix-check \
         format format-check clean
 
 all: deps $(BUILD)/vsph
@@ -70,6 +70,13 @@ test: check
 report: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph
 	$(BUILD)/vsph report --out reports/out $(if $(FULL),--full)
+
+# Re-record the regression baseline (tests/check_baseline.c) after an
+# intended change to the numerics; commit reports/baseline.csv with a reason.
+baseline: deps
+	@$(MAKE) --no-print-directory $(BUILD)/vsph
+	$(BUILD)/vsph report --out reports/out --only scenes
+	cp reports/out/baseline.csv reports/baseline.csv
 
 # Timings (never in the tests): quadrature, particle sums, operators.
 bench: deps

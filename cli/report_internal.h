@@ -60,9 +60,10 @@ int vsph_report_scenes_run(struct vsph_report *R, const char *scene,
 void vsph_report_scenes_run_free(struct vsph_report_run *r);
 
 /* Baseline figures of the quick report's coarsest runs (tests reuse it):
- * for each scene and formulation, the final E_k error against the
- * reference (vortex, wave) or the final E_k/E_k(0) (square, no reference
- * for t > 0), the initial dissipation error and the stability verdict. */
+ * for each scene and formulation, the final decay error E_k/E_k(0) -
+ * E_ref/E_ref(0) (vortex, wave) or the final E_k/E_k(0) (square, no
+ * reference for t > 0), the initial dissipation error and the stability
+ * verdict. */
 struct vsph_report_baseline {
   char scene[32], visc[8];
   size_t res;

@@ -14,6 +14,7 @@ Suite *vsph_dissipation_suite(void);
 Suite *vsph_poisson_suite(void);
 Suite *vsph_references_suite(void);
 Suite *vsph_solver_suite(void);
+Suite *vsph_baseline_suite(void);
 Suite *vsph_cli_suite(void);
 
 /* Silent error handler for tests: records the last status. */

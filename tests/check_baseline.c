@@ -1,0 +1,66 @@
+/* Regression baseline: the quick report's key figures for each scene and
+ * formulation (its coarsest runs), committed in reports/baseline.csv, are
+ * recomputed and compared. A change to the numerics shows up here.
+ * Tolerances: the verdict (stable or not) must match; the figures agree
+ * to 1e-6 relative (plus 1e-9 absolute): the code is deterministic, so
+ * only compiler or libm rounding (about 1e-12, grown over a few thousand
+ * steps) may differ. Update the baseline with `make baseline` after an
+ * intended change, and say why in the commit. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "../cli/report_internal.h"
+#include "check_suites.h"
+
+START_TEST(test_baseline) {
+  FILE *f = fopen("reports/baseline.csv", "r");
+  ck_assert_msg(f != NULL, "reports/baseline.csv is missing");
+  char line[512];
+  ck_assert_ptr_nonnull(fgets(line, sizeof line, f)); /* header */
+  char dir[] = "/tmp/vsph_baselineXXXXXX";
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  struct vsph_report R;
+  memset(&R, 0, sizeof R);
+  R.dir = dir;
+  size_t i = 0;
+  while (fgets(line, sizeof line, f)) {
+    char scene[32], visc[8];
+    size_t res;
+    double t_end, ek, d0;
+    int ok;
+    ck_assert_int_eq(sscanf(line, "%31[^,],%7[^,],%zu,%lf,%lf,%lf,%d", scene,
+                            visc, &res, &t_end, &ek, &d0, &ok),
+                     7);
+    struct vsph_report_baseline b;
+    ck_assert_int_eq(vsph_report_scenes_baseline(&R, i, &b), 0);
+    ck_assert_str_eq(b.scene, scene);
+    ck_assert_str_eq(b.visc, visc);
+    ck_assert_uint_eq(b.res, res);
+    ck_assert_msg(b.ok == ok, "%s %s: stability verdict changed", scene, visc);
+    ck_assert_msg(fabs(b.ek_final - ek) <= 1e-6 * fabs(ek) + 1e-9,
+                  "%s %s: final E_k figure %.10e, baseline %.10e", scene, visc,
+                  b.ek_final, ek);
+    ck_assert_msg(fabs(b.diss0 - d0) <= 1e-6 * fabs(d0) + 1e-9,
+                  "%s %s: initial dissipation error %.10e, baseline %.10e",
+                  scene, visc, b.diss0, d0);
+    i++;
+  }
+  fclose(f);
+  ck_assert_uint_eq(i, vsph_report_scenes_baseline_count());
+  char cmd[128];
+  snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+  ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
+Suite *vsph_baseline_suite(void) {
+  Suite *s = suite_create("baseline");
+  TCase *tc = tcase_create("quick report");
+  tcase_set_timeout(tc, 180);
+  tcase_add_test(tc, test_baseline);
+  suite_add_tcase(s, tc);
+  return s;
+}
