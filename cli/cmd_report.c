@@ -90,22 +90,6 @@ static int claims_part(struct vsph_report *R) {
   return VSPH_OK;
 }
 
-static char *read_file(const char *path) {
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  fseek(f, 0, SEEK_END);
-  const long n = ftell(f);
-  fseek(f, 0, SEEK_SET);
-  char *b = malloc((size_t)n + 1);
-  if (b && fread(b, 1, (size_t)n, f) != (size_t)n) {
-    free(b);
-    b = NULL;
-  }
-  fclose(f);
-  if (b) b[n] = '\0';
-  return b;
-}
-
 static int write_baseline(struct vsph_report *R) {
   FILE *f = vsph_writers_open(R->dir, "baseline.csv");
   if (!f) return VSPH_EIO;
@@ -167,7 +151,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
     snprintf(md, sizeof md, "%s.md", PARTS[p].name);
     snprintf(kf, sizeof kf, "%s/%s.key", parts_dir, PARTS[p].name);
     if (PARTS[p].cached) {
-      char *old = read_file(kf);
+      char *old = vsph_writers_slurp(kf, NULL);
       const int hit = old && !strcmp(old, key);
       free(old);
       if (hit) {
@@ -237,7 +221,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
   for (size_t p = 0; p < NPARTS; p++) {
     char path[700];
     snprintf(path, sizeof path, "%s/%s.md", parts_dir, PARTS[p].name);
-    char *text = read_file(path);
+    char *text = vsph_writers_slurp(path, NULL);
     if (text) {
       fputs(text, md);
       free(text);

@@ -41,23 +41,6 @@ int vsph_plot_write(const struct vsph_plot *pl) {
   return VSPH_OK;
 }
 
-static char *slurp(const char *path, size_t *len) {
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  fseek(f, 0, SEEK_END);
-  const long n = ftell(f);
-  fseek(f, 0, SEEK_SET);
-  char *buf = malloc((size_t)n + 1);
-  if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) {
-    free(buf);
-    buf = NULL;
-  }
-  fclose(f);
-  if (buf) buf[n] = '\0';
-  if (len) *len = (size_t)n;
-  return buf;
-}
-
 static void base64(FILE *f, const unsigned char *d, size_t n) {
   static const char tb[] =
       "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -77,7 +60,7 @@ int vsph_plot_html(const char *dir, const char *md, const char *html,
   char path[1024];
   snprintf(path, sizeof path, "%s/%s", dir, md);
   size_t len;
-  char *text = slurp(path, &len);
+  char *text = vsph_writers_slurp(path, &len);
   if (!text) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
   cmark_gfm_core_extensions_ensure_registered();
   cmark_parser *ps = cmark_parser_new(CMARK_OPT_DEFAULT);
@@ -127,7 +110,7 @@ int vsph_plot_html(const char *dir, const char *md, const char *html,
     if (nlen > 4 && !strcmp(name + strlen(name) - 4, ".png") &&
         !strchr(name, ':')) {
       snprintf(path, sizeof path, "%s/%s", dir, name);
-      png = slurp(path, &plen);
+      png = vsph_writers_slurp(path, &plen);
     }
     if (png) {
       fputs("src=\"data:image/png;base64,", f);

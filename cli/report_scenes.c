@@ -43,22 +43,6 @@ static const struct ladder *ladder(const struct vsph_report *R, int sc) {
 
 /* ------------------------------------------------------------ run cache */
 
-static char *slurp(const char *path) {
-  FILE *f = fopen(path, "rb");
-  if (!f) return NULL;
-  fseek(f, 0, SEEK_END);
-  const long n = ftell(f);
-  fseek(f, 0, SEEK_SET);
-  char *b = malloc((size_t)n + 1);
-  if (b && fread(b, 1, (size_t)n, f) != (size_t)n) {
-    free(b);
-    b = NULL;
-  }
-  fclose(f);
-  if (b) b[n] = '\0';
-  return b;
-}
-
 void vsph_report_scenes_run_free(struct vsph_report_run *r) {
   free(r->t);
   r->t = NULL;
@@ -68,7 +52,7 @@ void vsph_report_scenes_run_free(struct vsph_report_run *r) {
 static int load_energy(struct vsph_report_run *r) {
   char path[600];
   snprintf(path, sizeof path, "%s/energy.csv", r->dir);
-  char *text = slurp(path);
+  char *text = vsph_writers_slurp(path, NULL);
   if (!text) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
   size_t rows = 0;
   for (char *c = text; *c; c++) rows += *c == '\n';
@@ -115,7 +99,7 @@ static int load_energy(struct vsph_report_run *r) {
 static int load_run_json(struct vsph_report_run *r) {
   char path[600];
   snprintf(path, sizeof path, "%s/run.json", r->dir);
-  char *text = slurp(path);
+  char *text = vsph_writers_slurp(path, NULL);
   cJSON *j = text ? cJSON_Parse(text) : NULL;
   free(text);
   if (!j) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
@@ -160,7 +144,7 @@ int vsph_report_scenes_run(struct vsph_report *R, const char *scene,
     len += snprintf(key + len, sizeof key - (size_t)len, "%s\n", extra[k]);
   char path[600];
   snprintf(path, sizeof path, "%s/key.txt", out->dir);
-  char *old = slurp(path);
+  char *old = vsph_writers_slurp(path, NULL);
   const int hit = old && !strcmp(old, key);
   free(old);
   if (!hit) {
@@ -293,7 +277,7 @@ static int vortex_profile(struct vsph_report *R, const char *snap,
                           const char *out, size_t nbins,
                           const struct vsph_references_vortex *ref,
                           double *t_snap) {
-  char *text = slurp(snap);
+  char *text = vsph_writers_slurp(snap, NULL);
   if (!text) VSPH_FAIL(VSPH_EIO, "cannot read %s", snap);
   const char *tl = strstr(text, "t = ");
   *t_snap = tl ? strtod(tl + 4, NULL) : (double)NAN;

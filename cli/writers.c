@@ -148,3 +148,21 @@ int vsph_writers_vtk(const char *dir, const char *name,
   free(order);
   return vsph_writers_close(f, dir, name);
 }
+
+char *vsph_writers_slurp(const char *path, size_t *len) {
+  FILE *f = fopen(path, "rb");
+  if (!f) return NULL;
+  char *b = NULL;
+  long n = -1;
+  if (fseek(f, 0, SEEK_END) == 0) n = ftell(f);
+  if (n >= 0 && fseek(f, 0, SEEK_SET) == 0) b = malloc((size_t)n + 1);
+  if (b && fread(b, 1, (size_t)n, f) != (size_t)n) {
+    free(b);
+    b = NULL;
+  }
+  fclose(f);
+  if (!b) return NULL;
+  b[n] = '\0';
+  if (len) *len = (size_t)n;
+  return b;
+}

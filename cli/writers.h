@@ -43,6 +43,10 @@ struct vsph_particles;
 int vsph_writers_vtk(const char *dir, const char *name,
                      const struct vsph_particles *p, size_t n_fluid, double t);
 
+/** @brief A whole file as a NUL-terminated string (caller frees), its
+ *  length in @p len if not NULL; NULL if it cannot be read. */
+char *vsph_writers_slurp(const char *path, size_t *len);
+
 /** @brief Create directory @p dir and its parents. 0 or VSPH_EIO. */
 int vsph_writers_mkdir(const char *dir);
 
