@@ -8,6 +8,14 @@
 #include <stddef.h>
 #include <stdio.h>
 
+/* The ladder of one scene: error and cost per formulation and resolution,
+ * computed once per report invocation (report_scenes.c). */
+struct vsph_report_ladder {
+  double dx[3][3], err[3][3], wall[3][3], pairs[3][3];
+  int ok[3][3];
+  double t_unstable[3][3];
+};
+
 /** The report being written. */
 struct vsph_report {
   const char *dir; /* output folder */
@@ -16,6 +24,8 @@ struct vsph_report {
   gsl_integration_workspace *wo, *wi;
   char claims[64][4][256]; /* claim, paper, ours, verdict */
   size_t nclaims;
+  struct vsph_report_ladder ladder[3]; /* memo of the scene ladders */
+  int have_ladder[3];
 };
 
 /* One run's figures, from the cache or a fresh run. */

@@ -509,14 +509,15 @@ static double fit_order(const double *dx, const double *err, size_t n) {
   return c1;
 }
 
-/* The ladder of one scene: error and cost per formulation and resolution. */
-struct ladder_result {
-  double dx[3][3], err[3][3], wall[3][3], pairs[3][3];
-  int ok[3][3];
-  double t_unstable[3][3];
-};
-
-static int run_ladder(struct vsph_report *R, int sc, struct ladder_result *lr) {
+/* The ladder of one scene, loaded once per report invocation: the
+ * convergence, speed and claims parts all read it. */
+static int run_ladder(struct vsph_report *R, int sc,
+                      struct vsph_report_ladder *out) {
+  if (R->have_ladder[sc]) {
+    *out = R->ladder[sc];
+    return VSPH_OK;
+  }
+  struct vsph_report_ladder *lr = &R->ladder[sc];
   const struct ladder *L = ladder(R, sc);
   struct richardson rr;
   int st = sc == 1 ? richardson(R, &rr) : VSPH_OK;
@@ -534,7 +535,10 @@ static int run_ladder(struct vsph_report *R, int sc, struct ladder_result *lr) {
       lr->t_unstable[f][k] = r.t_unstable;
       vsph_report_scenes_run_free(&r);
     }
-  return st;
+  if (st) return st;
+  R->have_ladder[sc] = 1;
+  *out = *lr;
+  return VSPH_OK;
 }
 
 int vsph_report_scenes_convergence(struct vsph_report *R) {
@@ -552,7 +556,7 @@ int vsph_report_scenes_convergence(struct vsph_report *R) {
           "Order = slope of log(error) against log(dx) over the ladder.\n\n");
   int st = VSPH_OK;
   for (int sc = 0; sc < 3 && !st; sc++) {
-    struct ladder_result lr;
+    struct vsph_report_ladder lr;
     if ((st = run_ladder(R, sc, &lr))) break;
     const struct ladder *L = ladder(R, sc);
     char pname[64], title[160];
@@ -619,7 +623,7 @@ int vsph_report_scenes_speed(struct vsph_report *R) {
           "evaluation, summed over the run) are in speed_*.csv.\n\n");
   int st = VSPH_OK;
   for (int sc = 0; sc < 3 && !st; sc++) {
-    struct ladder_result lr;
+    struct vsph_report_ladder lr;
     if ((st = run_ladder(R, sc, &lr))) break;
     static char files[3][96];
     char pname[64], title[160];
@@ -845,7 +849,7 @@ int vsph_report_scenes_claims(struct vsph_report *R) {
                                   NULL, NULL, &run[sc][f]);
       if (!st) err[sc][f] = run_error(&run[sc][f], sc == 1 ? &rr : NULL);
     }
-  struct ladder_result lr[3];
+  struct vsph_report_ladder lr[3];
   for (int sc = 0; sc < 3 && !st; sc++) st = run_ladder(R, sc, &lr[sc]);
   if (st) goto done;
   const size_t rs = ladder(R, 1)->res[2];
