@@ -156,12 +156,13 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   int st = prepare(s, skin);
   if (st) return st;
   const size_t n = p->n;
-  double *k[7];
+  double *k[7], *y[7]; /* rates and state fields, looked up once */
+  for (int f = 0; f < nf; f++) y[f] = field(p, f);
   for (int f = 0; f < d; f++) k[f] = p->vel[f]; /* dr/dt = u */
   for (int f = 0; f < d; f++) k[d + f] = p->acc[f];
   k[2 * d] = p->drho;
   for (int f = 0; f < nf; f++) {
-    memcpy(s->y0[f], field(p, f), n * sizeof(double));
+    memcpy(s->y0[f], y[f], n * sizeof(double));
     memset(s->ks[f], 0, n * sizeof(double));
   }
   static const double a[4] = {0.0, 0.5, 0.5, 1.0}, w[4] = {1, 2, 2, 1};
@@ -178,14 +179,13 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
       for (int f = 0; f < nf; f++) kv[f] = k[f][i];
       for (int f = 0; f < nf; f++) s->ks[f][i] += w[stage] * kv[f];
       if (stage < 3)
-        for (int f = 0; f < nf; f++) field(p, f)[i] = s->y0[f][i] + c * kv[f];
+        for (int f = 0; f < nf; f++) y[f][i] = s->y0[f][i] + c * kv[f];
     }
   }
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) {
     if (p->id[i] >= s->n_fluid) continue;
-    for (int f = 0; f < nf; f++)
-      field(p, f)[i] = s->y0[f][i] + dt / 6.0 * s->ks[f][i];
+    for (int f = 0; f < nf; f++) y[f][i] = s->y0[f][i] + dt / 6.0 * s->ks[f][i];
   }
   s->t += dt;
   s->steps++;
