@@ -17,21 +17,28 @@ ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L -fopenmp $(WARN) $(CFLAGS) \
 LDLIBS    = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcmark-gfm-extensions -lm
 TESTLIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
 
-LIB_SRC  := $(wildcard common/*.c kernels/*.c solver/*.c solver/scenes/*.c analysis/*.c)
+# Layers, lowest first: common <- kernels <- solver <- analysis <- io <-
+# reports <- cli. Everything but cli/main.c is linked into the tests.
+LIB_SRC  := $(wildcard common/*.c kernels/*.c solver/*.c solver/scenes/*.c \
+              analysis/*.c io/*.c reports/*.c)
 CLI_SRC  := $(wildcard cli/*.c)
 TEST_SRC := $(wildcard tests/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 # A hash of every source file, linked in as vsph_source_hash_id: the
 # report's cache keys include it, so any change to the code reruns.
+TEXT_SRC := $(sort $(wildcard reports/text/*.md))
 SRC_ALL  := $(sort $(wildcard common/*.[ch] kernels/*.[ch] solver/*.[ch] \
-              solver/scenes/*.c analysis/*.[ch] cli/*.[ch]))
+              solver/scenes/*.c analysis/*.[ch] io/*.[ch] reports/*.[ch] \
+              cli/*.[ch])) $(TEXT_SRC)
 HASH_OBJ := $(BUILD)/gen/source_hash.o
+# The report's prose (reports/text/*.md), compiled in.
+TEXT_OBJ := $(BUILD)/gen/text_blocks.o
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
 .PHONY: all deps check test report baseline bench asan valgrind-check prefix-check \
-        format format-check clean
+        format format-check mutate clean
 
 all: deps $(BUILD)/vsph
 
@@ -51,10 +58,17 @@ $(BUILD)/gen/source_hash.c: $(SRC_ALL) Makefile
 $(HASH_OBJ): $(BUILD)/gen/source_hash.c
 	$(CC) -std=c11 -c $< -o $@
 
-$(BUILD)/vsph: $(LIB_OBJ) $(CLI_OBJ) $(HASH_OBJ)
+$(BUILD)/gen/text_blocks.c: $(TEXT_SRC) scripts/embed-text
+	@mkdir -p $(dir $@)
+	@scripts/embed-text $(TEXT_SRC) > $@.tmp && mv $@.tmp $@
+
+$(TEXT_OBJ): $(BUILD)/gen/text_blocks.c reports/text.h
+	$(CC) -std=c11 -I. $(SAN) -c $< -o $@
+
+$(BUILD)/vsph: $(LIB_OBJ) $(CLI_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
 
-$(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ)
+$(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(TESTLIBS) $(LDLIBS)
 
 # Every test, through the single Check runner (STYLE B10).
@@ -83,6 +97,12 @@ bench: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph
 	$(BUILD)/vsph bench
 
+# Each coefficient of each physical term mutated in turn (scripts/mutate):
+# a test must fail for every one. Slow (one rebuild per mutation); not part
+# of `make check`. Works on a scratch copy of the committed sources.
+mutate: deps
+	scripts/mutate
+
 asan: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan OPT=-O1 \
 	  SAN="-fsanitize=address,undefined -fno-omit-frame-pointer" \
@@ -106,7 +126,9 @@ prefix-check: $(LIB_OBJ) $(CLI_OBJ)
 	  done; \
 	done; [ $$bad -eq 0 ] && echo "prefix-check: ok"
 
-FMT_SRC = $(wildcard */*.c */*.h */*/*.c)
+FMT_SRC = $(wildcard common/*.[ch] kernels/*.[ch] solver/*.[ch] \
+            solver/scenes/*.c analysis/*.[ch] io/*.[ch] reports/*.[ch] \
+            cli/*.[ch] tests/*.[ch])
 format:
 	clang-format -i $(FMT_SRC)
 format-check:

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "../common/consts.h"
+#include "../common/params.h"
 #include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "../solver/cells.h"
@@ -36,14 +37,82 @@ int vsph_dissipation_shape_find(const char *name) {
   return -1;
 }
 
-void vsph_dissipation_props_init(struct vsph_dissipation_props *dp) {
+/* The "Dissipation" section as given; props_init resolves it. */
+struct raw {
+  char formulation[VSPH_PARAMS_NAME_MAX];
+  char field[VSPH_PARAMS_NAME_MAX];
+  char shape[VSPH_PARAMS_NAME_MAX];
+  char kernel[VSPH_PARAMS_NAME_MAX];
+  size_t res;
+  double hdx;
+  double mu;
+  double perturb;
+  size_t seed;
+  double epsrel;
+};
+
+#define P struct raw
+static const struct vsph_params_spec DISSIPATION[] = {
+    VSPH_PARAMS_NAME_SPEC(P, formulation, "mgf", "mgf, meaf or pvwf"),
+    VSPH_PARAMS_NAME_SPEC(P, field, "strain",
+                          "rotation (exact P = 0), strain (exact -4 mu A^2 "
+                          "|S|) or mixed"),
+    VSPH_PARAMS_NAME_SPEC(P, shape, "square",
+                          "square (side 1 m) or disc (diameter 1 m, rings)"),
+    VSPH_PARAMS_NAME_SPEC(P, kernel, "gaussian",
+                          "gaussian, cubic, quintic, wendland2, wendland4"),
+    VSPH_PARAMS_INT_SPEC(P, res, 40, 2, 4000, "particles across the shape"),
+    VSPH_PARAMS_REAL_SPEC(P, hdx, VSPH_CONSTS_HDX, 0.25, 16.0, "h/dx"),
+    VSPH_PARAMS_REAL_SPEC(P, mu, VSPH_CONSTS_MU, 1e-12, 1e6,
+                          "dynamic viscosity (Pa s)"),
+    VSPH_PARAMS_REAL_SPEC(P, perturb, 0.0, 0.0, 0.49,
+                          "random shift of the lattice, fraction of dx"),
+    VSPH_PARAMS_INT_SPEC(P, seed, VSPH_CONSTS_SEED, 0, 4294967295.0,
+                         "seed of that shift (mt19937)"),
+    VSPH_PARAMS_REAL_SPEC(P, epsrel, 1e-10, 1e-13, 1e-3,
+                          "relative accuracy of the exact integrals"),
+};
+#undef P
+
+const struct vsph_params_spec *vsph_dissipation_params(size_t *n) {
+  *n = sizeof DISSIPATION / sizeof DISSIPATION[0];
+  return DISSIPATION;
+}
+
+int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
+                                struct vsph_params *prm) {
+  struct raw r;
   memset(dp, 0, sizeof *dp);
-  dp->shape = VSPH_DISSIPATION_SQUARE;
-  dp->nacross = 40;
-  dp->hdx = 4.0 / 3.0;
-  dp->mu = 0.0137;
-  dp->seed = 2385;
-  dp->epsrel = 1e-10;
+  int st = vsph_params_load(prm, "Dissipation", DISSIPATION,
+                            sizeof DISSIPATION / sizeof DISSIPATION[0], &r);
+  if (st) return st;
+  dp->form = vsph_viscous_find(r.formulation);
+  if (dp->form < 0)
+    VSPH_FAIL(VSPH_EINVAL, "unknown formulation '%s' (mgf, meaf, pvwf)",
+              r.formulation);
+  const int fk = vsph_fields_find(r.field);
+  if (fk != VSPH_FIELDS_ROTATION && fk != VSPH_FIELDS_STRAIN &&
+      fk != VSPH_FIELDS_MIXED)
+    VSPH_FAIL(VSPH_EINVAL, "unknown field '%s' (rotation, strain, mixed)",
+              r.field);
+  if ((st = vsph_fields_props_init(&dp->field, fk, 2))) return st;
+  const int sh = vsph_dissipation_shape_find(r.shape);
+  if (sh < 0)
+    VSPH_FAIL(VSPH_EINVAL, "unknown shape '%s' (disc, square)", r.shape);
+  dp->shape = sh;
+  dp->kernel = vsph_kernel_find(r.kernel);
+  if (!dp->kernel)
+    VSPH_FAIL(VSPH_EINVAL,
+              "unknown kernel '%s' (gaussian, cubic, quintic, wendland2, "
+              "wendland4)",
+              r.kernel);
+  dp->nacross = r.res;
+  dp->hdx = r.hdx;
+  dp->mu = r.mu;
+  dp->perturb = r.perturb;
+  dp->seed = (unsigned long)r.seed;
+  dp->epsrel = r.epsrel;
+  return VSPH_OK;
 }
 
 /* Dissipation densities at x: 2 mu D:D + lambda (tr D)^2 with the Stokes

@@ -6,6 +6,8 @@
 #include "fields.h"
 
 struct vsph_kernel_type;
+struct vsph_params;
+struct vsph_params_spec;
 
 /** @file dissipation.h
  *  @brief The dissipation integrals of THEORY.md section 4 (Colagrossi et
@@ -61,10 +63,15 @@ const char *vsph_dissipation_shape_name(int shape);
 /** @brief Shape called @p name, or -1. */
 int vsph_dissipation_shape_find(const char *name);
 
-/** @brief Defaults: square, 40 across, h/dx = 4/3, mu = 0.0137, no
- *  perturbation, seed 2385, epsrel 1e-10; the caller sets form, kernel and
- *  field. */
-void vsph_dissipation_props_init(struct vsph_dissipation_props *dp);
+/** @brief The "Dissipation" parameter table (@p n receives its length). */
+const struct vsph_params_spec *vsph_dissipation_params(size_t *n);
+
+/** @brief Props from the "Dissipation" section of @p prm (NULL: the
+ *  defaults: MGF, strain, square, 3h Gaussian, 40 across, h/dx = 4/3,
+ *  mu = 0.0137, no perturbation, seed 2385, epsrel 1e-10), checked and
+ *  resolved. @return VSPH_OK or VSPH_EINVAL. */
+int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
+                                struct vsph_params *prm);
 
 /** @brief Exact -int V:D dV and -mu int |grad u|^2 dV over the shape, by
  *  nested GSL quadrature. @return VSPH_OK, VSPH_ELIB, VSPH_ENOMEM. */

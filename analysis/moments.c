@@ -2,11 +2,15 @@
 
 #include <gsl/gsl_errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "../common/consts.h"
+#include "../common/params.h"
 #include "../common/status.h"
 #include "../kernels/kernel.h"
+#include "../solver/lattice.h"
+#include "../solver/pair.h"
 #include "../solver/particles.h"
 
 /* State shared by the nested integrands. */
@@ -206,7 +210,7 @@ int vsph_moments_quadrature(const struct vsph_kernel_type *k, int dim,
   struct memo mm = zero_memo;
   memset(out, 0, sizeof *out);
   out->dim = dim;
-  const double K = 2.0 * (dim + 2);
+  const double K = vsph_kernel_mg_factor(dim);
   int st;
   for (int i = 0; i < dim; i++) {
     double v;
@@ -242,7 +246,7 @@ int vsph_moments_constants(const struct vsph_kernel_type *k, int dim,
                            double *C_F, double *C_N) {
   if (dim < 1 || dim > 3)
     VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", dim);
-  const double K = 2.0 * (dim + 2);
+  const double K = vsph_kernel_mg_factor(dim);
   if (dim == 1) {
     const double w0 = vsph_kernel_w(k, 1, 0.0);
     *C_F = 0.5 * K * w0;
@@ -303,25 +307,21 @@ int vsph_moments_sum(const struct vsph_kernel_type *k,
   if (!(h > 0.0)) VSPH_FAIL(VSPH_EINVAL, "h must be positive, got %g", h);
   memset(out, 0, sizeof *out);
   out->dim = dim;
-  const double K = 2.0 * (dim + 2);
-  const double H = k->kappa * h;
-  /* W'/s = sigma h^{-d-2} (df/dq)/q from q^2 = s^2/h^2, exactly as in
-   * solver/viscous.c and solver/equations.c: a truncated kernel whose w'
-   * jumps at kappa (the 3h Gaussian) must classify a particle lying on the
-   * support edge the same way in all of them. */
-  const double dwq_fac = k->sigma[dim - 1] * pow(h, -dim - 2);
-  const double h_inv2 = 1.0 / (h * h);
-  vsph_kernel_fn *dfq = k->dfq[dim - 1];
-  for (size_t j = 0; j < p->n; j++) {
-    if (j == centre) continue;
-    double x[3] = {0, 0, 0}, s2 = 0.0;
-    for (int a = 0; a < dim; a++) {
-      x[a] = p->pos[a][j] - p->pos[a][centre];
-      s2 += x[a] * x[a];
-    }
-    if (s2 >= H * H) continue;
-    const double c1 = -p->vol[j] * dwq_fac * dfq(s2 * h_inv2); /* -V W'/s */
-    const double c3 = c1 / s2;                                 /* -V W'/s^3 */
+  const double K = vsph_kernel_mg_factor(dim);
+  /* The neighbour loop of the operators (solver/pair.h): a truncated kernel
+   * whose w' jumps at kappa (the 3h Gaussian) classifies a particle on the
+   * support edge the same way here as in the operators. */
+  struct vsph_pair_kernel pk;
+  struct vsph_pair_ranges rg;
+  struct vsph_pair_iter it;
+  struct vsph_pair pr;
+  vsph_pair_kernel_init(&pk, k, dim, h);
+  vsph_pair_ranges_all(&rg, p->n);
+  vsph_pair_begin(&it, &pk, p, &rg, centre);
+  while (vsph_pair_next(&it, dim, &pr)) {
+    const double *x = pr.x;
+    const double c1 = -pr.VF;     /* -V W'/s */
+    const double c3 = c1 / pr.s2; /* -V W'/s^3 */
     for (int a = 0; a < dim; a++) {
       out->N[a] += 2.0 * c1 * x[a];
       for (int b = 0; b < dim; b++) {
@@ -352,4 +352,131 @@ void vsph_moments_gap(const struct vsph_moments *a,
       }
     }
   }
+}
+
+/* ------------------------------------------------ one evaluation (driver) */
+
+/* The "Tensors" section as given; props_init resolves it. */
+struct raw {
+  char kernel[VSPH_PARAMS_NAME_MAX];
+  size_t dim;
+  double depth;
+  char method[VSPH_PARAMS_NAME_MAX];
+  char lattice[VSPH_PARAMS_NAME_MAX];
+  double hdx;
+  double perturb;
+  size_t seed;
+  double epsrel;
+};
+
+#define P struct raw
+static const struct vsph_params_spec TENSORS[] = {
+    VSPH_PARAMS_NAME_SPEC(P, kernel, "gaussian",
+                          "gaussian, cubic, quintic, wendland2, wendland4"),
+    VSPH_PARAMS_INT_SPEC(P, dim, 2, 1, 3, "dimension"),
+    VSPH_PARAMS_REAL_SPEC(P, depth, 0.0, 0.0, 1e3,
+                          "depth below the surface (units of h): 0 half "
+                          "support, >= kappa full support"),
+    VSPH_PARAMS_NAME_SPEC(P, method, "quadrature",
+                          "quadrature (GSL) or particles (lattice sums, with "
+                          "their gap to quadrature)"),
+    VSPH_PARAMS_NAME_SPEC(P, lattice, "square",
+                          "square, hex (2-D) or perturbed (square shifted by "
+                          "up to perturb dx)"),
+    VSPH_PARAMS_REAL_SPEC(P, hdx, VSPH_CONSTS_HDX, 0.5, 256.0,
+                          "h/dx of the lattice (at most 32 in 3-D)"),
+    VSPH_PARAMS_REAL_SPEC(P, perturb, 0.1, 0.0, 0.49,
+                          "shift of the perturbed lattice, fraction of dx"),
+    VSPH_PARAMS_INT_SPEC(P, seed, VSPH_CONSTS_SEED, 0, 4294967295.0,
+                         "seed of that shift (mt19937)"),
+    VSPH_PARAMS_REAL_SPEC(P, epsrel, 1e-10, 1e-13, 0.5,
+                          "relative accuracy of the quadrature"),
+};
+#undef P
+
+const struct vsph_params_spec *vsph_moments_params(size_t *n) {
+  *n = sizeof TENSORS / sizeof TENSORS[0];
+  return TENSORS;
+}
+
+int vsph_moments_props_init(struct vsph_moments_props *mp,
+                            struct vsph_params *prm) {
+  struct raw r;
+  memset(mp, 0, sizeof *mp);
+  int st = vsph_params_load(prm, "Tensors", TENSORS,
+                            sizeof TENSORS / sizeof TENSORS[0], &r);
+  if (st) return st;
+  mp->kernel = vsph_kernel_find(r.kernel);
+  if (!mp->kernel)
+    VSPH_FAIL(VSPH_EINVAL,
+              "unknown kernel '%s' (gaussian, cubic, quintic, wendland2, "
+              "wendland4)",
+              r.kernel);
+  mp->dim = (int)r.dim;
+  mp->depth = r.depth;
+  mp->particles = !strcmp(r.method, "particles");
+  if (!mp->particles && strcmp(r.method, "quadrature"))
+    VSPH_FAIL(VSPH_EINVAL, "unknown method '%s' (quadrature, particles)",
+              r.method);
+  if ((st = vsph_lattice_resolve(r.lattice, mp->dim, r.perturb,
+                                 &mp->lattice_kind, &mp->perturb)))
+    return st;
+  snprintf(mp->lattice, sizeof mp->lattice, "%s", r.lattice);
+  /* A patch of radius (kappa + 2/hdx) h holds ~(kappa hdx)^d particles:
+   * cap it at a few million. */
+  const double hdx_max = mp->dim == 3 ? 32.0 : 256.0;
+  if (r.hdx > hdx_max)
+    VSPH_FAIL(VSPH_EINVAL,
+              "Tensors:hdx above %g in %d-D would need too many particles, "
+              "got %g",
+              hdx_max, mp->dim, r.hdx);
+  mp->hdx = r.hdx;
+  mp->seed = (unsigned long)r.seed;
+  mp->epsrel = r.epsrel;
+  return VSPH_OK;
+}
+
+int vsph_moments_compute(const struct vsph_moments_props *mp,
+                         struct vsph_moments_result *res) {
+  memset(res, 0, sizeof *res);
+  const struct vsph_kernel_type *k = mp->kernel;
+  gsl_integration_workspace *wo = gsl_integration_workspace_alloc(1000);
+  gsl_integration_workspace *wi = gsl_integration_workspace_alloc(1000);
+  int st = VSPH_OK;
+  if (!wo || !wi) {
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot allocate quadrature workspaces");
+    st = VSPH_ENOMEM;
+  }
+  if (!st)
+    st = vsph_moments_quadrature(k, mp->dim, mp->depth, mp->epsrel, wo, wi,
+                                 &res->quad);
+  if (!st)
+    st = vsph_moments_constants(k, mp->dim, mp->epsrel, wo, &res->C_F,
+                                &res->C_N);
+  const int half = mp->depth == 0.0, full = mp->depth >= k->kappa;
+  if (!st && (half || full)) {
+    vsph_moments_theory(mp->dim, half, res->C_F, res->C_N, &res->theory);
+    res->have_theory = 1;
+  }
+  if (!st && mp->particles) {
+    struct vsph_lattice_props lp = {.dim = mp->dim,
+                                    .kind = mp->lattice_kind,
+                                    .dx = 1.0 / mp->hdx,
+                                    .perturb = mp->perturb,
+                                    .seed = mp->seed};
+    struct vsph_particles *p = NULL;
+    size_t centre;
+    st = vsph_lattice_halfspace(&lp, k->kappa + 2.0 / mp->hdx, mp->depth, &p,
+                                &centre);
+    if (!st) st = vsph_moments_sum(k, p, centre, 1.0, &res->sum);
+    if (!st) {
+      res->n_particles = p->n;
+      vsph_moments_gap(&res->sum, &res->quad, res->gap);
+    }
+    vsph_particles_free(p);
+  }
+  gsl_integration_workspace_free(wo);
+  gsl_integration_workspace_free(wi);
+  return st;
 }

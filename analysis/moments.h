@@ -6,6 +6,8 @@
 
 struct vsph_kernel_type;
 struct vsph_particles;
+struct vsph_params;
+struct vsph_params_spec;
 
 /** @file moments.h
  *  @brief Kernel moment tensors F, G, N, M of THEORY.md section 2
@@ -62,5 +64,48 @@ int vsph_moments_sum(const struct vsph_kernel_type *k,
 /** @brief Largest absolute entry difference of F, G, N, M (gap[0..3]). */
 void vsph_moments_gap(const struct vsph_moments *a,
                       const struct vsph_moments *b, double gap[4]);
+
+/* ------------------------------------------------ one evaluation (driver) */
+
+/** One evaluation of the tensors at a depth ("Tensors" section). */
+struct vsph_moments_props {
+  const struct vsph_kernel_type *kernel; /*!< smoothing kernel */
+  int dim;                               /*!< 1, 2 or 3 */
+  double depth;       /*!< depth below the surface (units of h) */
+  int particles;      /*!< 1: also particle sums over a lattice */
+  char lattice[32];   /*!< lattice name as given (square, hex, perturbed) */
+  int lattice_kind;   /*!< its vsph_lattice_kind */
+  double perturb;     /*!< perturbation amplitude (dx); 0 unless perturbed */
+  unsigned long seed; /*!< seed of the perturbation */
+  double hdx;         /*!< h/dx of the lattice */
+  double epsrel;      /*!< relative accuracy of the quadrature */
+};
+
+/** What one evaluation gives. */
+struct vsph_moments_result {
+  struct vsph_moments quad;   /*!< by quadrature */
+  struct vsph_moments sum;    /*!< by particle sums (particles = 1) */
+  struct vsph_moments theory; /*!< theoretical values (have_theory = 1) */
+  int have_theory;            /*!< 1 at half (depth 0) or full support */
+  double C_F, C_N;            /*!< surface constants */
+  size_t n_particles;         /*!< particles summed over */
+  double gap[4];              /*!< largest |sum - quad| of F, G, N, M */
+};
+
+/** @brief The "Tensors" parameter table (@p n receives its length). */
+const struct vsph_params_spec *vsph_moments_params(size_t *n);
+
+/** @brief Props from the "Tensors" section of @p prm (NULL: defaults: 3h
+ *  Gaussian, 2-D, depth 0, quadrature, square lattice at h/dx 4/3), checked
+ *  and resolved. @return VSPH_OK or VSPH_EINVAL. */
+int vsph_moments_props_init(struct vsph_moments_props *mp,
+                            struct vsph_params *prm);
+
+/** @brief Evaluate: quadrature, constants, theory where it exists and the
+ *  particle sums if asked.
+ *  @note Allocates its own workspaces and particle set (a driver).
+ *  @return VSPH_OK, VSPH_EINVAL, VSPH_ENOMEM, VSPH_ELIB. */
+int vsph_moments_compute(const struct vsph_moments_props *mp,
+                         struct vsph_moments_result *res);
 
 #endif /* VSPH_ANALYSIS_MOMENTS_H */

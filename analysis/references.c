@@ -19,9 +19,8 @@ static const double NUM_EPSABS = 1e-17;
 
 double vsph_references_vortex_initial(const struct vsph_references_vortex *v,
                                       double r) {
-  const double l2 = v->l2, R2 = v->R * v->R;
-  return v->omega0 * l2 *
-         (1.0 / (l2 + r * r) + r * r / ((l2 + R2) * (l2 + R2)));
+  /* the scene's profile: one definition (THEORY 6.1, [reconstructed]) */
+  return vsph_vortex_patch_omega(v->omega0, v->l2, v->R, r);
 }
 
 /* phi(x) = 2 J_1(x)/x, with its series near 0 (J_1(x)/x = 1/2 - x^2/16 +
@@ -210,10 +209,10 @@ struct vsph_references_scene *vsph_references_scene_alloc(
   }
   r->scene = sc;
   if (sc->type == &vsph_vortex_patch_type) {
-    /* the scene's derived values: d = (R, l^2, omega0, nu) */
+    const struct vsph_scene_vortex *vp = &sc->u.vortex;
     /* 80 terms: the initial profile to ~3e-7, better at every t > 0 */
-    r->vortex = vsph_references_vortex_alloc(sc->d[0], sc->d[1], sc->d[2],
-                                             sc->d[3], 80);
+    r->vortex =
+        vsph_references_vortex_alloc(vp->R, vp->l2, vp->omega0, vp->nu, 80);
     if (!r->vortex) {
       free(r);
       return NULL;
@@ -238,14 +237,15 @@ int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
   }
   if (sc->type == &vsph_stretching_square_type) {
     if (t == 0.0) { /* THEORY 6.2: exact initial values */
-      const double L = sc->d[0], A0 = sc->d[1];
+      const double L = sc->u.square.L, A0 = sc->u.square.A0;
       *Ek = sc->rho0 * A0 * A0 * L * L * L * L / 12.0;
       *dEk_dt = -4.0 * sc->mu * A0 * A0 * L * L;
     }
     return VSPH_OK;
   }
   if (sc->type == &vsph_standing_wave_type) {
-    const double k = sc->d[0], om = sc->d[1], A = sc->d[2], nu = sc->d[3];
+    const struct vsph_scene_wave *w = &sc->u.wave;
+    const double k = w->k, om = w->omega, A = w->A, nu = w->nu;
     const double L = sc->ref_length;
     *Ek = vsph_references_lighthill(sc->rho0, sc->g, A, L, nu, k, om, t);
     if (t == 0.0) {

@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../common/consts.h"
+#include "../common/params.h"
 #include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "../solver/cells.h"
@@ -13,21 +15,123 @@
 #include "../solver/viscous.h"
 #include "moments.h"
 
-void vsph_scaling_props_init(struct vsph_scaling_props *sp) {
+/* The "Scaling" section as given (names and numbers); props_init checks
+ * and resolves it into struct vsph_scaling_props. */
+struct raw {
+  char kernel[VSPH_PARAMS_NAME_MAX];
+  size_t dim;
+  char field[VSPH_PARAMS_NAME_MAX];
+  char lattice[VSPH_PARAMS_NAME_MAX];
+  double perturb;
+  size_t seed;
+  size_t levels;
+  double hdx;
+  double mu;
+  double h0;
+};
+
+#define P struct raw
+static const struct vsph_params_spec SCALING[] = {
+    VSPH_PARAMS_NAME_SPEC(P, kernel, "gaussian",
+                          "gaussian, cubic, quintic, wendland2, wendland4"),
+    VSPH_PARAMS_INT_SPEC(P, dim, 2, 1, 3, "dimension"),
+    VSPH_PARAMS_NAME_SPEC(P, field, "strain",
+                          "strain or rotation (surface sweep), quadratic "
+                          "(interior, 2-D)"),
+    VSPH_PARAMS_NAME_SPEC(P, lattice, "square",
+                          "square, hex (2-D) or perturbed (square shifted by "
+                          "up to perturb dx)"),
+    VSPH_PARAMS_REAL_SPEC(P, perturb, 0.1, 0.0, 0.49,
+                          "shift of the perturbed lattice, fraction of dx"),
+    VSPH_PARAMS_INT_SPEC(P, seed, VSPH_CONSTS_SEED, 0, 4294967295.0,
+                         "seed of that shift (mt19937)"),
+    VSPH_PARAMS_INT_SPEC(P, levels, 5, 2, VSPH_SCALING_MAXLEVELS,
+                         "h values, halving from h0 (at most 8 at the "
+                         "surface); interior: h/dx values of 1, 4/3, 2, 3, "
+                         "4, 6"),
+    VSPH_PARAMS_REAL_SPEC(P, hdx, VSPH_CONSTS_HDX, 0.25, 16.0,
+                          "h/dx, fixed (at most 4 in 3-D)"),
+    VSPH_PARAMS_REAL_SPEC(P, mu, VSPH_CONSTS_MU, 1e-12, 1e6,
+                          "dynamic viscosity (Pa s)"),
+    VSPH_PARAMS_REAL_SPEC(P, h0, 0.1, 1e-6, 1e3, "largest h (m)"),
+};
+#undef P
+
+const struct vsph_params_spec *vsph_scaling_params(size_t *n) {
+  *n = sizeof SCALING / sizeof SCALING[0];
+  return SCALING;
+}
+
+static const double HDX_LADDER[] = {1.0, VSPH_CONSTS_HDX, 2.0, 3.0, 4.0, 6.0};
+
+size_t vsph_scaling_hdx_ladder(const double **hdx) {
+  *hdx = HDX_LADDER;
+  return sizeof HDX_LADDER / sizeof HDX_LADDER[0];
+}
+
+double vsph_scaling_slope(const double *x, const double *y, size_t n) {
+  double lx[VSPH_SCALING_MAXLEVELS], ly[VSPH_SCALING_MAXLEVELS];
+  size_t m = 0;
+  for (size_t k = 0; k < n && m < VSPH_SCALING_MAXLEVELS; k++)
+    if (x[k] > 0 && y[k] > 0 && isfinite(x[k]) && isfinite(y[k])) {
+      lx[m] = log(x[k]);
+      ly[m] = log(y[k]);
+      m++;
+    }
+  if (m < 2) return (double)NAN;
+  double c0, c1, c00, c01, c11, ss;
+  gsl_fit_linear(lx, 1, ly, 1, m, &c0, &c1, &c00, &c01, &c11, &ss);
+  return c1;
+}
+
+int vsph_scaling_props_init(struct vsph_scaling_props *sp,
+                            struct vsph_params *prm) {
+  struct raw r;
   memset(sp, 0, sizeof *sp);
-  sp->lattice = VSPH_LATTICE_SQUARE;
-  sp->seed = 2385;
-  sp->levels = 5;
-  sp->h0 = 0.1;
-  sp->hdx = 4.0 / 3.0;
-  sp->mu = 0.0137;
+  int st = vsph_params_load(prm, "Scaling", SCALING,
+                            sizeof SCALING / sizeof SCALING[0], &r);
+  if (st) return st;
+  const int dim = (int)r.dim;
+  sp->kernel = vsph_kernel_find(r.kernel);
+  if (!sp->kernel)
+    VSPH_FAIL(VSPH_EINVAL,
+              "unknown kernel '%s' (gaussian, cubic, quintic, wendland2, "
+              "wendland4)",
+              r.kernel);
+  const int fk = vsph_fields_find(r.field);
+  if (fk != VSPH_FIELDS_STRAIN && fk != VSPH_FIELDS_ROTATION &&
+      fk != VSPH_FIELDS_QUADRATIC)
+    VSPH_FAIL(VSPH_EINVAL, "unknown field '%s' (strain, rotation, quadratic)",
+              r.field);
+  if ((st = vsph_fields_props_init(&sp->field, fk, dim))) return st;
+  if ((st = vsph_lattice_resolve(r.lattice, dim, r.perturb, &sp->lattice,
+                                 &sp->perturb)))
+    return st;
+  /* The surface patch has radius (2 kappa + 2/hdx) h, ~(6 hdx)^d particles
+   * each with ~(3 hdx)^d neighbours: cost grows like hdx^(2d). These caps
+   * keep one level within about 10 s on one core. */
+  const double hdx_max = dim == 3 ? 4.0 : 16.0;
+  if (r.hdx > hdx_max)
+    VSPH_FAIL(VSPH_EINVAL,
+              "Scaling:hdx above %g in %d-D would need too many particles, "
+              "got %g",
+              hdx_max, dim, r.hdx);
+  if (fk != VSPH_FIELDS_QUADRATIC && r.levels > 8)
+    VSPH_FAIL(VSPH_EINVAL,
+              "Scaling:levels above 8 gives h below h0/256: use at most 8");
+  sp->seed = (unsigned long)r.seed;
+  sp->levels = r.levels;
+  sp->h0 = r.h0;
+  sp->hdx = r.hdx;
+  sp->mu = r.mu;
   sp->round_tol = 1e-9;
+  return VSPH_OK;
 }
 
 /* Evaluate the three formulations on patch p; values at particle `id0`. */
 static int eval_forms(const struct vsph_scaling_props *sp,
                       struct vsph_particles *p, size_t id0, double h,
-                      double vals[3][3], size_t *centre) {
+                      double vals[VSPH_VISCOUS_FORM_COUNT][3], size_t *centre) {
   const int dim = p->dim;
   struct vsph_cells *cells = vsph_cells_alloc();
   struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(p->n, dim);
@@ -92,7 +196,7 @@ int vsph_scaling_surface(const struct vsph_scaling_props *sp,
     if (st) return st;
     struct vsph_moments mo;
     st = vsph_moments_sum(sp->kernel, p, centre, h, &mo);
-    double vals[3][3];
+    double vals[VSPH_VISCOUS_FORM_COUNT][3];
     size_t c;
     if (!st) st = eval_forms(sp, p, p->id[centre], h, vals, &c);
     vsph_particles_free(p);
@@ -100,7 +204,7 @@ int vsph_scaling_surface(const struct vsph_scaling_props *sp,
     res->h[l] = h;
     res->hF[l] = h * mo.F[dim - 1][dim - 1][dim - 1];
     res->hN[l] = h * mo.N[dim - 1];
-    for (int form = 0; form < 3; form++) {
+    for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT; form++) {
       double t2 = 0.0, m2 = 0.0;
       for (int k = 0; k < dim; k++) {
         m2 += vals[form][k] * vals[form][k];
@@ -115,7 +219,7 @@ int vsph_scaling_surface(const struct vsph_scaling_props *sp,
    * anything below round_tol times that at the finest h is noise, whose
    * slope would mean nothing. */
   const double hmin = res->h[sp->levels - 1];
-  for (int form = 0; form < 3; form++) {
+  for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT; form++) {
     double mx = 0.0;
     for (size_t l = 0; l < sp->levels; l++)
       mx = fmax(mx, res->magnitude[form][l]);
@@ -124,15 +228,8 @@ int vsph_scaling_surface(const struct vsph_scaling_props *sp,
       res->slope[form] = NAN;
       continue;
     }
-    double lx[VSPH_SCALING_MAXLEVELS], ly[VSPH_SCALING_MAXLEVELS];
-    for (size_t l = 0; l < sp->levels; l++) {
-      lx[l] = log(res->h[l]);
-      ly[l] = log(res->magnitude[form][l]);
-    }
-    double c0, c1, cov00, cov01, cov11, sumsq;
-    gsl_fit_linear(lx, 1, ly, 1, sp->levels, &c0, &c1, &cov00, &cov01, &cov11,
-                   &sumsq);
-    res->slope[form] = c1;
+    res->slope[form] =
+        vsph_scaling_slope(res->h, res->magnitude[form], sp->levels);
   }
   return VSPH_OK;
 }
@@ -169,7 +266,7 @@ int vsph_scaling_interior(const struct vsph_scaling_props *sp,
     const double radius = sp->kernel->kappa * h + 2.0 * dx;
     int st = vsph_lattice_halfspace(&lp, radius, radius, &p, &centre);
     if (st) return st;
-    double vals[3][3];
+    double vals[VSPH_VISCOUS_FORM_COUNT][3];
     st = eval_forms(sp, p, p->id[centre], h, vals, &c);
     vsph_particles_free(p);
     if (st) return st;

@@ -3,9 +3,12 @@
 
 #include <stddef.h>
 
+#include "../solver/viscous.h"
 #include "fields.h"
 
 struct vsph_kernel_type;
+struct vsph_params;
+struct vsph_params_spec;
 
 /** @file scaling.h
  *  @brief Truncation-error scaling at the free surface (THEORY.md section
@@ -34,15 +37,20 @@ struct vsph_scaling_props {
 
 /** Surface sweep results; index l is level l (h = h0 / 2^l). */
 struct vsph_scaling_result {
-  size_t levels;                                /*!< levels run */
-  double h[VSPH_SCALING_MAXLEVELS];             /*!< smoothing length */
-  double hF[VSPH_SCALING_MAXLEVELS];            /*!< h F_ddd (normal) */
-  double hN[VSPH_SCALING_MAXLEVELS];            /*!< h N_d (normal) */
-  double normal[3][VSPH_SCALING_MAXLEVELS];     /*!< n.(div V)_i per form */
-  double tangential[3][VSPH_SCALING_MAXLEVELS]; /*!< |(I - nn)(div V)_i| */
-  double magnitude[3][VSPH_SCALING_MAXLEVELS];  /*!< |(div V)_i| */
-  double slope[3]; /*!< log-log slope of the magnitude against h */
-  int rounding[3]; /*!< 1 if every value is at rounding level (slope NaN) */
+  size_t levels;                     /*!< levels run */
+  double h[VSPH_SCALING_MAXLEVELS];  /*!< smoothing length */
+  double hF[VSPH_SCALING_MAXLEVELS]; /*!< h F_ddd (normal) */
+  double hN[VSPH_SCALING_MAXLEVELS]; /*!< h N_d (normal) */
+  /** n.(div V)_i per formulation */
+  double normal[VSPH_VISCOUS_FORM_COUNT][VSPH_SCALING_MAXLEVELS];
+  /** |(I - nn)(div V)_i| */
+  double tangential[VSPH_VISCOUS_FORM_COUNT][VSPH_SCALING_MAXLEVELS];
+  /** |(div V)_i| */
+  double magnitude[VSPH_VISCOUS_FORM_COUNT][VSPH_SCALING_MAXLEVELS];
+  /** log-log slope of the magnitude against h */
+  double slope[VSPH_VISCOUS_FORM_COUNT];
+  /** 1 if every value is at rounding level (slope NaN) */
+  int rounding[VSPH_VISCOUS_FORM_COUNT];
 };
 
 /** Interior sweep results over h/dx. */
@@ -54,9 +62,24 @@ struct vsph_scaling_interior {
   double meaf[VSPH_SCALING_MAXLEVELS]; /*!< |MEAF - mu lap u| / |target| */
 };
 
-/** @brief Defaults: 5 levels from h0 = 0.1, h/dx = 4/3, mu = 0.0137,
- *  square lattice, round_tol = 1e-9; caller sets kernel and field. */
-void vsph_scaling_props_init(struct vsph_scaling_props *sp);
+/** @brief The "Scaling" parameter table (@p n receives its length):
+ *  kernel, dim, field, lattice, perturb, seed, levels, hdx, mu, h0. */
+const struct vsph_params_spec *vsph_scaling_params(size_t *n);
+
+/** @brief Props from the "Scaling" section of @p prm (NULL: the defaults:
+ *  3h Gaussian, 2-D strain, square lattice, 5 levels from h0 = 0.1, h/dx =
+ *  4/3, mu = 0.0137, round_tol = 1e-9), checked and resolved.
+ *  @return VSPH_OK or VSPH_EINVAL (the message names the parameter). */
+int vsph_scaling_props_init(struct vsph_scaling_props *sp,
+                            struct vsph_params *prm);
+
+/** @brief Least-squares slope of log y against log x over the points with
+ *  x, y > 0 and finite (GSL gsl_fit_linear); NaN if fewer than two. */
+double vsph_scaling_slope(const double *x, const double *y, size_t n);
+
+/** @brief The h/dx values of the interior sweep (1, 4/3, 2, 3, 4, 6) into
+ *  @p hdx; returns their number. */
+size_t vsph_scaling_hdx_ladder(const double **hdx);
 
 /** @brief Run the surface sweep: at each level a half-space patch of radius
  *  2 kappa h + 2 dx around the surface particle (exactly what the operators

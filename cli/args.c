@@ -1,15 +1,13 @@
 #include "args.h"
 
 #include <errno.h>
-#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "../common/params.h"
 #include "../common/status.h"
-#include "../kernels/kernel.h"
-#include "../solver/lattice.h"
 
 int vsph_args_fail(const char *cmd, const char *fmt, ...) {
   va_list ap;
@@ -21,42 +19,147 @@ int vsph_args_fail(const char *cmd, const char *fmt, ...) {
   return VSPH_ARGS_EXIT_USAGE;
 }
 
-int vsph_args_double(const char *cmd, const char *opt, const char *s,
-                     double *out) {
-  char *end;
-  errno = 0;
-  const double v = strtod(s, &end);
-  if (end == s || *end != '\0' || errno == ERANGE || !isfinite(v))
-    return vsph_args_fail(cmd, "%s: '%s' is not a finite number", opt, s);
-  *out = v;
-  return 0;
+/* --key-name for a table key key_name, and back. */
+static void option_of(const char *key, char *buf, size_t n) {
+  snprintf(buf, n, "--%s", key);
+  for (char *c = buf + 2; *c; c++)
+    if (*c == '_') *c = '-';
 }
 
-int vsph_args_size(const char *cmd, const char *opt, const char *s,
-                   size_t *out) {
+static const char *value_name(const struct vsph_params_spec *s) {
+  return s->kind == VSPH_PARAMS_NAME  ? "NAME"
+         : s->kind == VSPH_PARAMS_INT ? "N"
+                                      : "X";
+}
+
+void vsph_args_usage(const struct vsph_args_cmd *c, FILE *f) {
+  fprintf(f, "usage: vsph %s %s\n\n%s\n", c->name, c->synopsis, c->about);
+  for (size_t s = 0; s < c->nsections; s++) {
+    const struct vsph_args_section *sec = &c->sections[s];
+    fprintf(f, "\n%s options (parameter section %s:; default in brackets):\n",
+            c->name, sec->section);
+    for (size_t k = 0; k < sec->n; k++) {
+      char opt[64], def[64], lhs[96];
+      option_of(sec->spec[k].key, opt, sizeof opt);
+      vsph_params_spec_default(&sec->spec[k], def, sizeof def);
+      snprintf(lhs, sizeof lhs, "%s %s", opt, value_name(&sec->spec[k]));
+      fprintf(f, "  %-22s %s [%s]\n", lhs, sec->spec[k].help, def);
+    }
+  }
+  if (c->nown) fprintf(f, "\nother options:\n");
+  for (size_t k = 0; k < c->nown; k++) {
+    char lhs[96];
+    snprintf(lhs, sizeof lhs, "%s%s%s", c->own[k].name,
+             c->own[k].value ? " " : "",
+             c->own[k].value ? c->own[k].value : "");
+    fprintf(f, "  %-22s %s\n", lhs, c->own[k].help);
+  }
+  fprintf(f, "  %-22s %s\n", "--help", "this text");
+}
+
+static int parse_size(const char *cmd, const char *opt, const char *s,
+                      size_t *out) {
   char *end;
   errno = 0;
   if (s[0] < '0' || s[0] > '9')
     return vsph_args_fail(cmd, "%s: '%s' is not a non-negative integer", opt,
                           s);
   const unsigned long long v = strtoull(s, &end, 10);
-  if (*end != '\0' || errno == ERANGE)
+  if (*end != '\0' || errno == ERANGE || v > (size_t)-1)
     return vsph_args_fail(cmd, "%s: '%s' is not a non-negative integer", opt,
                           s);
   *out = (size_t)v;
   return 0;
 }
 
-const char *vsph_args_value(const char *cmd, int argc, char **argv, int *i) {
-  if (*i + 1 >= argc) {
-    vsph_args_fail(cmd, "%s needs a value", argv[*i]);
-    return NULL;
+/* The section key behind option --name, as "Section:key", or 0. */
+static int section_key(const struct vsph_args_cmd *c, const char *name,
+                       char *key, size_t n) {
+  for (size_t s = 0; s < c->nsections; s++)
+    for (size_t k = 0; k < c->sections[s].n; k++) {
+      char opt[64];
+      option_of(c->sections[s].spec[k].key, opt, sizeof opt);
+      if (!strcmp(opt, name)) {
+        snprintf(key, n, "%s:%s", c->sections[s].section,
+                 c->sections[s].spec[k].key);
+        return 1;
+      }
+    }
+  return 0;
+}
+
+/* One pass over the line, doing only the options of kind `pass`
+ * (PARAMS, then SET, then everything else). */
+static int pass_over(const struct vsph_args_cmd *c, int argc, char **argv,
+                     struct vsph_params *prm, int pass, int *given) {
+  for (int i = 1; i < argc; i++) {
+    const char *a = argv[i];
+    const struct vsph_args_spec *sp = NULL;
+    for (size_t k = 0; k < c->nown && !sp; k++)
+      if (!strcmp(a, c->own[k].name)) sp = &c->own[k];
+    char key[128];
+    const int is_key = !sp && section_key(c, a, key, sizeof key);
+    if (!sp && !is_key)
+      return vsph_args_fail(c->name, "unknown option '%s' (see --help)", a);
+    if (sp && sp->kind == VSPH_ARGS_FLAG) {
+      if (pass == 2) *(int *)sp->dst = 1;
+      continue;
+    }
+    if (i + 1 >= argc) return vsph_args_fail(c->name, "%s needs a value", a);
+    const char *v = argv[++i];
+    const int kind = sp ? (int)sp->kind : -1;
+    if (pass == 0 && kind == VSPH_ARGS_PARAMS) {
+      if (vsph_params_read(prm, v))
+        return vsph_args_status(c->name, VSPH_EINVAL);
+    } else if (pass == 1 && kind == VSPH_ARGS_SET) {
+      const char *eq = strchr(v, '=');
+      char k2[256];
+      if (!eq || (size_t)(eq - v) >= sizeof k2)
+        return vsph_args_fail(c->name,
+                              "--set wants Section:key=value, got '%s'", v);
+      memcpy(k2, v, (size_t)(eq - v));
+      k2[eq - v] = '\0';
+      if (vsph_params_set(prm, k2, eq + 1))
+        return vsph_args_status(c->name, VSPH_EINVAL);
+    } else if (pass == 2 && is_key) {
+      if (vsph_params_set(prm, key, v))
+        return vsph_args_status(c->name, VSPH_EINVAL);
+      for (size_t r = 0; c->required && c->required[r]; r++)
+        if (!strcmp(c->required[r], strchr(key, ':') + 1)) given[r] = 1;
+    } else if (pass == 2 && kind == VSPH_ARGS_STRING) {
+      *(const char **)sp->dst = v;
+    } else if (pass == 2 && kind == VSPH_ARGS_SIZE) {
+      if (parse_size(c->name, a, v, sp->dst)) return VSPH_ARGS_EXIT_USAGE;
+    }
   }
-  return argv[++*i];
+  return -1;
+}
+
+int vsph_args_parse(const struct vsph_args_cmd *c, int argc, char **argv,
+                    struct vsph_params *prm) {
+  for (int i = 1; i < argc; i++)
+    if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+      vsph_args_usage(c, stdout);
+      return 0;
+    }
+  int given[16] = {0};
+  for (int pass = 0; pass < 3; pass++) {
+    const int rc = pass_over(c, argc, argv, prm, pass, given);
+    if (rc >= 0) return rc;
+  }
+  for (size_t r = 0; c->required && c->required[r]; r++)
+    if (!given[r]) {
+      char opt[64];
+      option_of(c->required[r], opt, sizeof opt);
+      return vsph_args_fail(c->name, "%s is required (see --help)", opt);
+    }
+  return -1;
 }
 
 /* The CLI keeps the first message of a failing call chain, so a command
- * prints one line however deep the failure was reported. */
+ * prints one line however deep the failure was reported. The handler has
+ * no context argument, so this is the CLI's one piece of global state (set
+ * before any thread starts; STYLE B13). */
 static char last_msg[1024];
 
 static void cli_handler(int status, const char *file, int line,
@@ -69,83 +172,18 @@ static void cli_handler(int status, const char *file, int line,
 
 void vsph_args_install_handler(void) { vsph_status_set_handler(cli_handler); }
 
-const char *vsph_args_last_error(void) {
-  static char copy[1024];
-  if (last_msg[0] == '\0') return NULL;
-  snprintf(copy, sizeof copy, "%s", last_msg);
-  last_msg[0] = '\0';
-  return copy;
-}
-
 int vsph_args_status(const char *cmd, int status) {
-  const char *msg = vsph_args_last_error();
-  fprintf(stderr, "vsph %s: %s\n", cmd, msg ? msg : vsph_status_str(status));
+  fprintf(stderr, "vsph %s: %s\n", cmd,
+          last_msg[0] ? last_msg : vsph_status_str(status));
+  last_msg[0] = '\0';
   return status == VSPH_EINVAL ? VSPH_ARGS_EXIT_USAGE : 1;
 }
 
-int vsph_args_parse(const char *cmd, int argc, char **argv,
-                    const struct vsph_args_spec *specs, size_t nspecs,
-                    void (*usage)(FILE *)) {
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i];
-    if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-      usage(stdout);
-      return 0;
-    }
-    const struct vsph_args_spec *sp = NULL;
-    for (size_t k = 0; k < nspecs && !sp; k++)
-      if (!strcmp(a, specs[k].name)) sp = &specs[k];
-    if (!sp) return vsph_args_fail(cmd, "unknown option '%s' (see --help)", a);
-    if (sp->kind == VSPH_ARGS_FLAG) {
-      *(int *)sp->dst = 1;
-      continue;
-    }
-    const char *v = vsph_args_value(cmd, argc, argv, &i);
-    if (!v) return VSPH_ARGS_EXIT_USAGE;
-    if (sp->kind == VSPH_ARGS_STRING)
-      *(const char **)sp->dst = v;
-    else if (sp->kind == VSPH_ARGS_DOUBLE) {
-      if (vsph_args_double(cmd, a, v, sp->dst)) return VSPH_ARGS_EXIT_USAGE;
-    } else if (vsph_args_size(cmd, a, v, sp->dst)) {
-      return VSPH_ARGS_EXIT_USAGE;
-    }
+int vsph_args_finish(const char *cmd, int rc) {
+  if (fflush(stdout) != 0 || ferror(stdout)) {
+    fprintf(stderr, "vsph %s: cannot write to standard output: %s\n", cmd,
+            strerror(errno));
+    return rc ? rc : 1;
   }
-  return -1;
-}
-
-const struct vsph_kernel_type *vsph_args_kernel(const char *cmd,
-                                                const char *name) {
-  const struct vsph_kernel_type *k = vsph_kernel_find(name);
-  if (!k)
-    vsph_args_fail(cmd,
-                   "unknown kernel '%s' (gaussian, cubic, quintic, "
-                   "wendland2, wendland4)",
-                   name);
-  return k;
-}
-
-int vsph_args_dim(const char *cmd, double dimf) {
-  if (dimf != 1 && dimf != 2 && dimf != 3) {
-    vsph_args_fail(cmd, "--dim must be 1, 2 or 3, got %g", dimf);
-    return 0;
-  }
-  return (int)dimf;
-}
-
-int vsph_args_lattice(const char *cmd, const char *name, int dim,
-                      double perturb, int *kind, double *amp) {
-  const int perturbed = !strcmp(name, "perturbed");
-  *kind = perturbed ? VSPH_LATTICE_SQUARE : vsph_lattice_find(name);
-  if (*kind < 0)
-    return vsph_args_fail(cmd,
-                          "unknown lattice '%s' (square, hex, "
-                          "perturbed)",
-                          name);
-  if (*kind == VSPH_LATTICE_HEX && dim != 2)
-    return vsph_args_fail(cmd, "the hex lattice is 2-D only");
-  if (!(perturb >= 0 && perturb < 0.5))
-    return vsph_args_fail(cmd, "--perturb must lie in [0, 0.5), got %g",
-                          perturb);
-  *amp = perturbed ? perturb : 0.0;
-  return 0;
+  return rc;
 }

@@ -4,80 +4,86 @@
 #include <stddef.h>
 #include <stdio.h>
 
+struct vsph_params;
+struct vsph_params_spec;
+
 /** @file args.h
- *  @brief Strict command-line parsing shared by the sub-commands: every
- *  malformed or out-of-range value is one line on stderr and exit status 2.
- *  Also the CLI's error handler, which turns library reports into that one
- *  line. */
+ *  @brief Command-line parsing shared by the sub-commands. A sub-command
+ *  declares its own options (flags, files) and the parameter sections of
+ *  the modules it calls; every key of those sections becomes an option
+ *  --key (underscores written as dashes), so defaults, bounds and help come
+ *  from the modules' tables and are never restated here. Every malformed or
+ *  out-of-range value is one line on stderr and exit status 2. Also the
+ *  CLI's error handler, which turns library reports into that one line. */
 
 /** Exit status for bad input (the README's contract). */
 #define VSPH_ARGS_EXIT_USAGE 2
 
-/** @brief Print "vsph CMD: message" on stderr; returns VSPH_ARGS_EXIT_USAGE. */
-int vsph_args_fail(const char *cmd, const char *fmt, ...);
-
-/** @brief Parse a finite double from @p s; 0 on success, else reports
- *  "OPT: 'S' is not a number" and returns VSPH_ARGS_EXIT_USAGE. */
-int vsph_args_double(const char *cmd, const char *opt, const char *s,
-                     double *out);
-
-/** @brief Parse a non-negative integer (decimal, no sign, no junk). */
-int vsph_args_size(const char *cmd, const char *opt, const char *s,
-                   size_t *out);
-
-/** @brief The value after option argv[*i], advancing *i; NULL (after
- *  reporting "OPT needs a value") when there is none. */
-const char *vsph_args_value(const char *cmd, int argc, char **argv, int *i);
-
-/** Kinds of option value. */
+/** Kinds of a sub-command's own options. */
 enum vsph_args_kind {
   VSPH_ARGS_FLAG = 0, /*!< no value: sets an int to 1 */
   VSPH_ARGS_STRING,   /*!< a string (const char *) */
-  VSPH_ARGS_DOUBLE,   /*!< a finite double */
-  VSPH_ARGS_SIZE      /*!< a non-negative integer (size_t) */
+  VSPH_ARGS_SIZE,     /*!< a non-negative decimal integer (size_t) */
+  VSPH_ARGS_SET,      /*!< "Section:key=value" into the parameter store */
+  VSPH_ARGS_PARAMS    /*!< a parameter file read into the store */
 };
 
-/** One option of a sub-command: "--name" and where its value goes. */
+/** One option of a sub-command's own. */
 struct vsph_args_spec {
   const char *name;         /*!< with the leading dashes */
   enum vsph_args_kind kind; /*!< value kind */
-  void *dst;                /*!< int, const char *, double or size_t */
+  void *dst;                /*!< int, const char * or size_t; NULL for SET,
+                                 PARAMS */
+  const char *value;        /*!< the value's name in the help, or NULL */
+  const char *help;         /*!< one line */
 };
 
-/** @brief Parse argv[1..] against @p specs (table-driven, so every command
- *  rejects the same way). "--help"/"-h" prints @p usage to stdout.
+/** A module's parameter section offered as options. */
+struct vsph_args_section {
+  const char *section;                 /*!< "Tensors", "Solver", ... */
+  const struct vsph_params_spec *spec; /*!< its table */
+  size_t n;                            /*!< its length */
+};
+
+/** A sub-command. */
+struct vsph_args_cmd {
+  const char *name;     /*!< "tensors" */
+  const char *synopsis; /*!< what follows "usage: vsph NAME" */
+  const char *about;    /*!< a paragraph on what it does and writes */
+  const struct vsph_args_spec *own;         /*!< its own options */
+  size_t nown;                              /*!< their number */
+  const struct vsph_args_section *sections; /*!< module sections */
+  size_t nsections;                         /*!< their number */
+  const char *const *required; /*!< keys that must be given, or NULL */
+};
+
+/** @brief Print "vsph CMD: message" on stderr; returns
+ *  VSPH_ARGS_EXIT_USAGE. */
+int vsph_args_fail(const char *cmd, const char *fmt, ...);
+
+/** @brief The usage of @p c: synopsis, about, then every option with its
+ *  default and meaning (from the module tables). */
+void vsph_args_usage(const struct vsph_args_cmd *c, FILE *f);
+
+/** @brief Parse argv[1..] for @p c into @p prm and the own options' dsts.
+ *  Parameter files come first, then --set, then the section options,
+ *  whatever their order on the line; "--help"/"-h" prints the usage.
  *  @return -1 to go on, 0 after --help, VSPH_ARGS_EXIT_USAGE on bad input
  *  (one line already printed). */
-int vsph_args_parse(const char *cmd, int argc, char **argv,
-                    const struct vsph_args_spec *specs, size_t nspecs,
-                    void (*usage)(FILE *));
-
-struct vsph_kernel_type;
-
-/** @brief Kernel called @p name, or NULL after "unknown kernel" (exit 2). */
-const struct vsph_kernel_type *vsph_args_kernel(const char *cmd,
-                                                const char *name);
-
-/** @brief Dimension from a parsed double: 1, 2 or 3, else reports and
- *  returns 0. */
-int vsph_args_dim(const char *cmd, double dimf);
-
-/** @brief Resolve --lattice square|hex|perturbed and --perturb A into a
- *  vsph_lattice_kind and an amplitude (0 unless perturbed); checks hex is
- *  2-D and 0 <= A < 0.5. @return 0 or VSPH_ARGS_EXIT_USAGE. */
-int vsph_args_lattice(const char *cmd, const char *name, int dim,
-                      double perturb, int *kind, double *amp);
+int vsph_args_parse(const struct vsph_args_cmd *c, int argc, char **argv,
+                    struct vsph_params *prm);
 
 /** @brief Install the CLI error handler: it keeps the first library message
  *  so the command can print exactly one line. */
 void vsph_args_install_handler(void);
 
-/** @brief The first library message since the last call (then cleared),
- *  or NULL. */
-const char *vsph_args_last_error(void);
-
-/** @brief Report a failed library call as one line; returns 2 for invalid
- *  input and 1 for internal failures. */
+/** @brief Report a failed library call as one line (the first library
+ *  message since the last report, else the status's name); returns 2 for
+ *  invalid input and 1 for internal failures. */
 int vsph_args_status(const char *cmd, int status);
+
+/** @brief Flush stdout and report a failed write (exit status 1). Every
+ *  sub-command ends through it. @return @p rc, or 1 if stdout failed. */
+int vsph_args_finish(const char *cmd, int rc);
 
 #endif /* VSPH_CLI_ARGS_H */

@@ -29,9 +29,9 @@ static const struct command commands[] = {
     {"scenes", vsph_cmd_run_scenes,
      "list the scenes, their parameters and defaults"},
     {"report", vsph_cmd_report_main,
-     "run the analysis suite and write the tables to reports/out"},
+     "the main job: every part of the report into reports/out"},
     {"bench", vsph_cmd_bench_main,
-     "timings: quadrature, particle sums, viscous operators"},
+     "timings: quadrature, particle sums, operators, solver"},
 };
 
 static void usage(FILE *f) {

@@ -212,14 +212,35 @@ int vsph_params_read(struct vsph_params *prm, const char *path) {
   return st;
 }
 
-static int parse_number(const char *key, const char *s, double *out) {
-  char *end;
+int vsph_params_parse_number(const char *s, double *out) {
+  /* [+-] digits [. digits] [(e|E) [+-] digits], at least one digit */
+  const char *c = s;
+  if (*c == '+' || *c == '-') c++;
+  size_t digits = 0;
+  while (*c >= '0' && *c <= '9') c++, digits++;
+  if (*c == '.') {
+    c++;
+    while (*c >= '0' && *c <= '9') c++, digits++;
+  }
+  if (digits == 0) return VSPH_EINVAL;
+  if (*c == 'e' || *c == 'E') {
+    c++;
+    if (*c == '+' || *c == '-') c++;
+    if (!(*c >= '0' && *c <= '9')) return VSPH_EINVAL;
+    while (*c >= '0' && *c <= '9') c++;
+  }
+  if (*c != '\0') return VSPH_EINVAL;
   errno = 0;
-  const double v = strtod(s, &end);
-  while (*end == ' ') end++;
-  if (end == s || *end != '\0' || errno == ERANGE || !isfinite(v))
-    VSPH_FAIL(VSPH_EINVAL, "parameter %s: '%s' is not a finite number", key, s);
+  const double v = strtod(s, NULL);
+  if (errno == ERANGE || !isfinite(v)) return VSPH_EINVAL;
   *out = v;
+  return VSPH_OK;
+}
+
+static int parse_number(const char *key, const char *s, double *out) {
+  if (vsph_params_parse_number(s, out))
+    VSPH_FAIL(VSPH_EINVAL, "parameter %s: '%s' is not a finite decimal number",
+              key, s);
   return VSPH_OK;
 }
 
@@ -270,4 +291,78 @@ void vsph_params_entry(const struct vsph_params *prm, size_t i,
   *key = prm->e[i]->key;
   *value = prm->e[i]->value;
   *used = prm->e[i]->used;
+}
+
+/* ------------------------------------------------------- parameter tables */
+
+const struct vsph_params_spec *vsph_params_spec_find(
+    const struct vsph_params_spec *spec, size_t n, const char *key) {
+  for (size_t i = 0; i < n; i++)
+    if (!strcmp(spec[i].key, key)) return &spec[i];
+  return NULL;
+}
+
+void vsph_params_spec_default(const struct vsph_params_spec *s, char *buf,
+                              size_t len) {
+  if (s->kind == VSPH_PARAMS_NAME)
+    snprintf(buf, len, "%s", s->word);
+  else if (s->kind == VSPH_PARAMS_INT)
+    snprintf(buf, len, "%.0f", s->def);
+  else /* the shortest text that reads back as the same double */
+    for (int digits = 15; digits <= 17; digits++) {
+      snprintf(buf, len, "%.*g", digits, s->def);
+      if (strtod(buf, NULL) == s->def) break;
+    }
+}
+
+/* One entry: its text (given, or the default), checked and stored. */
+static int load_one(struct vsph_params *prm, const char *section,
+                    const struct vsph_params_spec *s, char *base) {
+  char key[KEY_MAX], def[64];
+  snprintf(key, sizeof key, "%s:%s", section, s->key);
+  vsph_params_spec_default(s, def, sizeof def);
+  const char *text = def;
+  if (prm) {
+    struct entry *e = find(prm, key);
+    if (e) {
+      e->used = 1;
+      text = e->value;
+    } else {
+      const int st = put(prm, key, def, 1);
+      if (st) return st;
+    }
+  }
+  if (s->kind == VSPH_PARAMS_NAME) {
+    if (strlen(text) >= VSPH_PARAMS_NAME_MAX || text[0] == '\0')
+      VSPH_FAIL(VSPH_EINVAL, "%s: '%.40s' is not a name of 1-%d characters",
+                key, text, VSPH_PARAMS_NAME_MAX - 1);
+    snprintf(base + s->offset, VSPH_PARAMS_NAME_MAX, "%s", text);
+    return VSPH_OK;
+  }
+  double v;
+  if (vsph_params_parse_number(text, &v))
+    VSPH_FAIL(VSPH_EINVAL, "%s: '%.40s' is not a finite decimal number", key,
+              text);
+  if (!(v >= s->lo && v <= s->hi))
+    VSPH_FAIL(VSPH_EINVAL, "%s must lie in [%g, %g], got %.6g", key, s->lo,
+              s->hi, v);
+  if (s->kind == VSPH_PARAMS_INT) {
+    if (v != floor(v))
+      VSPH_FAIL(VSPH_EINVAL, "%s must be a whole number, got %.6g", key, v);
+    const size_t iv = (size_t)v; /* in bounds, so the cast is defined */
+    memcpy(base + s->offset, &iv, sizeof iv);
+  } else {
+    memcpy(base + s->offset, &v, sizeof v);
+  }
+  return VSPH_OK;
+}
+
+int vsph_params_load(struct vsph_params *prm, const char *section,
+                     const struct vsph_params_spec *spec, size_t n,
+                     void *props) {
+  for (size_t i = 0; i < n; i++) {
+    const int st = load_one(prm, section, &spec[i], props);
+    if (st) return st;
+  }
+  return VSPH_OK;
 }

@@ -56,4 +56,71 @@ size_t vsph_params_count(const struct vsph_params *prm);
 void vsph_params_entry(const struct vsph_params *prm, size_t i,
                        const char **key, const char **value, int *used);
 
+/* ------------------------------------------------------- parameter tables */
+
+/** Longest word a NAME parameter holds, terminator included. */
+#define VSPH_PARAMS_NAME_MAX 32
+
+/** Kinds of parameter value. */
+enum vsph_params_kind {
+  VSPH_PARAMS_REAL = 0, /*!< a finite decimal number in [lo, hi] (double) */
+  VSPH_PARAMS_INT,      /*!< a whole number in [lo, hi] (stored as size_t) */
+  VSPH_PARAMS_NAME      /*!< a word (char[VSPH_PARAMS_NAME_MAX]) */
+};
+
+/** One parameter of a module's section: the one place that holds its
+ *  default, bounds and meaning, and where the module's props_init stores
+ *  it. `vsph scenes`, `--help` and used_parameters.yml all read it. */
+struct vsph_params_spec {
+  const char *key;            /*!< name under the section */
+  enum vsph_params_kind kind; /*!< value kind */
+  double def;                 /*!< default (REAL, INT) */
+  const char *word;           /*!< default (NAME) */
+  double lo, hi;              /*!< closed bounds (REAL, INT) */
+  size_t offset;              /*!< offsetof the field in the props struct */
+  const char *help;           /*!< meaning and unit */
+};
+
+/** Table entries whose key is the name of the props field they fill, so a
+ *  parameter has one name from the file to the struct. */
+#define VSPH_PARAMS_REAL_SPEC(type, field, def, lo, hi, help)                 \
+  {                                                                           \
+#field, VSPH_PARAMS_REAL, (def), NULL, (lo), (hi), offsetof(type, field), \
+        (help)                                                                \
+  }
+#define VSPH_PARAMS_INT_SPEC(type, field, def, lo, hi, help)                 \
+  {                                                                          \
+#field, VSPH_PARAMS_INT, (def), NULL, (lo), (hi), offsetof(type, field), \
+        (help)                                                               \
+  }
+#define VSPH_PARAMS_NAME_SPEC(type, field, word, help)                      \
+  {                                                                         \
+#field, VSPH_PARAMS_NAME, 0.0, (word), 0.0, 0.0, offsetof(type, field), \
+        (help)                                                              \
+  }
+
+/** @brief Fill the props struct at @p props from "SECTION:key" entries of
+ *  @p prm (or the defaults where a key is absent; @p prm may be NULL for
+ *  all defaults). Numbers are parsed strictly (decimal, no spaces, finite)
+ *  and checked against their bounds before any conversion; whole numbers
+ *  must be integral. Every value is recorded as used.
+ *  @return VSPH_OK or VSPH_EINVAL (malformed or out of bounds: the message
+ *  names the key, the value and the bounds), VSPH_ENOMEM. */
+int vsph_params_load(struct vsph_params *prm, const char *section,
+                     const struct vsph_params_spec *spec, size_t n,
+                     void *props);
+
+/** @brief The spec called @p key in a table, or NULL. */
+const struct vsph_params_spec *vsph_params_spec_find(
+    const struct vsph_params_spec *spec, size_t n, const char *key);
+
+/** @brief A spec's default as text ("1.3333333333333333", "40", "mgf"). */
+void vsph_params_spec_default(const struct vsph_params_spec *s, char *buf,
+                              size_t len);
+
+/** @brief Strict number: decimal notation only (digits, one point, an
+ *  exponent), no leading or trailing space, no hex, inf or nan.
+ *  @return VSPH_OK or VSPH_EINVAL (not reported: the caller words it). */
+int vsph_params_parse_number(const char *s, double *out);
+
 #endif /* VSPH_COMMON_PARAMS_H */

@@ -2,6 +2,7 @@
  * Eq. (2.6); THEORY.md section 1. */
 #include <math.h>
 
+#include "../common/consts.h"
 #include "kernel.h"
 
 static double f_cubic(double q) {
@@ -36,8 +37,7 @@ static double dfq_cubic(double q2) {
 const struct vsph_kernel_type vsph_cubic_type = {
     .name = "cubic",
     .kappa = 2.0,
-    .sigma = {2.0 / 3.0, 10.0 / (7.0 * 3.14159265358979323846),
-              1.0 / 3.14159265358979323846},
+    .sigma = {2.0 / 3.0, 10.0 / (7.0 * VSPH_PI), 1.0 / VSPH_PI},
     .f = {f_cubic, f_cubic, f_cubic},
     .df = {df_cubic, df_cubic, df_cubic},
     .dfq = {dfq_cubic, dfq_cubic, dfq_cubic},

@@ -2,10 +2,13 @@
  * PRE 84, 026705 (2011), Sec. VI; THEORY.md section 1. */
 #include <math.h>
 
+#include "../common/consts.h"
 #include "kernel.h"
 
-/* e^{-9}: the value of e^{-q^2} at the support radius q = 3. */
-static const double E9 = 1.2340980408667954950e-4;
+/* e^{-9}: the value of e^{-q^2} at the support radius q = 3 (a macro: it
+ * enters the static initialiser below), and erf(3). */
+#define E9 1.2340980408667954950e-4
+#define ERF3 0.99997790950300141456
 
 static double f_gauss(double q) { return q < 3.0 ? exp(-q * q) - E9 : 0.0; }
 static double df_gauss(double q) {
@@ -18,16 +21,13 @@ static double dfq_gauss(double q2) { return q2 < 9.0 ? -2.0 * exp(-q2) : 0.0; }
  *   d=1: sqrt(pi) erf(3) - 6 e^{-9}
  *   d=2: pi (1 - 10 e^{-9})            (THEORY.md)
  *   d=3: pi^{3/2} erf(3) - 42 pi e^{-9}
- * with erf(3) = 0.99997790950300141456. Verified by quadrature in tests. */
+ * Verified by quadrature in tests. */
 const struct vsph_kernel_type vsph_gaussian_type = {
     .name = "gaussian",
     .kappa = 3.0,
-    .sigma = {1.0 / (1.7724538509055160273 * 0.99997790950300141456 -
-                     6.0 * 1.2340980408667954950e-4),
-              1.0 / (3.14159265358979323846 *
-                     (1.0 - 10.0 * 1.2340980408667954950e-4)),
-              1.0 / (5.5683279968317078453 * 0.99997790950300141456 -
-                     42.0 * 3.14159265358979323846 * 1.2340980408667954950e-4)},
+    .sigma = {1.0 / (VSPH_SQRTPI * ERF3 - 6.0 * E9),
+              1.0 / (VSPH_PI * (1.0 - 10.0 * E9)),
+              1.0 / (VSPH_PI * VSPH_SQRTPI * ERF3 - 42.0 * VSPH_PI * E9)},
     .f = {f_gauss, f_gauss, f_gauss},
     .df = {df_gauss, df_gauss, df_gauss},
     .dfq = {dfq_gauss, dfq_gauss, dfq_gauss},

@@ -1,6 +1,7 @@
 #ifndef VSPH_KERNELS_KERNEL_H
 #define VSPH_KERNELS_KERNEL_H
 
+#include <math.h>
 #include <stddef.h>
 
 /** @file kernel.h
@@ -49,6 +50,19 @@ static inline double vsph_kernel_w(const struct vsph_kernel_type *k, int dim,
 static inline double vsph_kernel_dw(const struct vsph_kernel_type *k, int dim,
                                     double q) {
   return k->sigma[dim - 1] * k->df[dim - 1](q);
+}
+
+/** @brief The Monaghan-Gingold factor K = 2(d + 2) of THEORY section 0:
+ *  6, 8, 10 in 1, 2, 3 dimensions. It scales MGF (Eq. 4.20) and the
+ *  moments F and G; this is its one definition. */
+static inline double vsph_kernel_mg_factor(int dim) { return 2.0 * (dim + 2); }
+
+/** @brief The prefactor of W'(s)/s: W'(s)/s = sigma_d h^{-d-2} (df/dq)/q,
+ *  so every loop evaluates W'/s as this times dfq(s^2/h^2), without a
+ *  square root (h in m; result in m^{-d-2}). */
+static inline double vsph_kernel_dwq_factor(const struct vsph_kernel_type *k,
+                                            int dim, double h) {
+  return k->sigma[dim - 1] * pow(h, -(dim + 2));
 }
 
 #endif /* VSPH_KERNELS_KERNEL_H */

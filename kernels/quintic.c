@@ -2,6 +2,7 @@
  * Eq. (27); THEORY.md section 1. */
 #include <math.h>
 
+#include "../common/consts.h"
 #include "kernel.h"
 
 static double pow5p(double t) { return t > 0.0 ? t * t * t * t * t : 0.0; }
@@ -26,8 +27,7 @@ static double dfq_quintic(double q2) {
 const struct vsph_kernel_type vsph_quintic_type = {
     .name = "quintic",
     .kappa = 3.0,
-    .sigma = {1.0 / 120.0, 7.0 / (478.0 * 3.14159265358979323846),
-              1.0 / (120.0 * 3.14159265358979323846)},
+    .sigma = {1.0 / 120.0, 7.0 / (478.0 * VSPH_PI), 1.0 / (120.0 * VSPH_PI)},
     .f = {f_quintic, f_quintic, f_quintic},
     .df = {df_quintic, df_quintic, df_quintic},
     .dfq = {dfq_quintic, dfq_quintic, dfq_quintic},

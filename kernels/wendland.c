@@ -4,6 +4,7 @@
  * are the lower-order Wendland functions for d = 1. */
 #include <math.h>
 
+#include "../common/consts.h"
 #include "kernel.h"
 
 /* C2: (1 - q/2)^4 (2q + 1) in 2-D/3-D, (1 - q/2)^3 (1.5q + 1) in 1-D. */
@@ -82,8 +83,7 @@ static double dfq_c4_1d(double q2) {
 const struct vsph_kernel_type vsph_wendland_c2_type = {
     .name = "wendland2",
     .kappa = 2.0,
-    .sigma = {5.0 / 8.0, 7.0 / (4.0 * 3.14159265358979323846),
-              21.0 / (16.0 * 3.14159265358979323846)},
+    .sigma = {5.0 / 8.0, 7.0 / (4.0 * VSPH_PI), 21.0 / (16.0 * VSPH_PI)},
     .f = {f_c2_1d, f_c2, f_c2},
     .df = {df_c2_1d, df_c2, df_c2},
     .dfq = {dfq_c2_1d, dfq_c2, dfq_c2},
@@ -93,8 +93,7 @@ const struct vsph_kernel_type vsph_wendland_c2_type = {
 const struct vsph_kernel_type vsph_wendland_c4_type = {
     .name = "wendland4",
     .kappa = 2.0,
-    .sigma = {3.0 / 4.0, 9.0 / (4.0 * 3.14159265358979323846),
-              495.0 / (256.0 * 3.14159265358979323846)},
+    .sigma = {3.0 / 4.0, 9.0 / (4.0 * VSPH_PI), 495.0 / (256.0 * VSPH_PI)},
     .f = {f_c4_1d, f_c4, f_c4},
     .df = {df_c4_1d, df_c4, df_c4},
     .dfq = {dfq_c4_1d, dfq_c4, dfq_c4},

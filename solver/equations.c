@@ -3,9 +3,11 @@
 #include <math.h>
 #include <string.h>
 
+#include "../common/consts.h"
 #include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "cells.h"
+#include "pair.h"
 #include "particles.h"
 
 void vsph_equations_body_force(const struct vsph_equations_props *ep,
@@ -31,76 +33,50 @@ double vsph_equations_potential(const struct vsph_equations_props *ep,
   return 0.0;
 }
 
-/* One fluid particle: continuity (with delta-SPH), pressure and viscous
- * sums over its neighbours. grad_i W = -x W'/s with x = r_j - r_i. */
+/* Loop constants of the right-hand side, loaded once per evaluation. */
 struct rhs_ctx {
   const struct vsph_equations_props *ep;
-  int dim, form;
-  double H2, h_inv2, dw_fac, K, mu, dhc; /* dhc = delta h c0 */
-  vsph_kernel_fn *dfq;                   /* (df/dq)/q from q^2 */
-  int parts;                             /* fill acc_visc / drho_delta */
+  struct vsph_pair_kernel pk;  /* kernel, h: the neighbour loop */
+  struct vsph_viscous_loop vl; /* the viscous term */
+  double dhc;                  /* delta h c0 (delta-SPH), 0: off */
+  int parts;                   /* fill acc_visc / drho_delta */
 };
 
-static size_t rhs_one(const struct rhs_ctx *rc, const struct vsph_particles *p,
-                      const struct vsph_viscous_ws *ws, size_t i, size_t nr,
-                      const size_t *lo, const size_t *hi,
-                      struct vsph_equations_out *out, double *min_s2) {
-  const int dim = rc->dim, form = rc->form;
-  double xi[3] = {0, 0, 0}, ui[3] = {0, 0, 0}, Ai[9] = {0};
-  for (int k = 0; k < dim; k++) {
-    xi[k] = p->pos[k][i];
-    ui[k] = p->vel[k][i];
-  }
-  if (form == VSPH_VISCOUS_PVWF)
-    for (int a = 0; a < dim * dim; a++) Ai[a] = ws->A[a][i];
+/* One fluid particle: every term of THEORY 5 gathered over its neighbours,
+ * each through its pair function (pair.h, viscous.h). Inlined once per
+ * dimension (see rhs_cell), so its component loops unroll. */
+VSPH_CONSTS_SPECIALISE size_t rhs_one(const struct rhs_ctx *rc,
+                                      const struct vsph_particles *p,
+                                      const struct vsph_pair_ranges *rg,
+                                      size_t i, struct vsph_equations_out *out,
+                                      double *min_s2, const int dim) {
+  double ui[3] = {0, 0, 0}, Ai[9] = {0};
+  for (int k = 0; k < dim; k++) ui[k] = p->vel[k][i];
+  vsph_viscous_load_A(&rc->vl, i, Ai);
   const double rhoi = p->rho[i], pi = p->p[i];
   double cont = 0.0, dsum = 0.0, ap[3] = {0, 0, 0}, av[3] = {0, 0, 0};
   size_t nint = 0;
   double ms2 = INFINITY;
-  for (size_t r = 0; r < nr; r++)
-    for (size_t j = lo[r]; j < hi[r]; j++) {
-      double x[3], s2 = 0.0;
-      for (int k = 0; k < dim; k++) {
-        x[k] = p->pos[k][j] - xi[k];
-        s2 += x[k] * x[k];
-      }
-      if (s2 >= rc->H2 || j == i) continue;
-      nint++;
-      ms2 = s2 < ms2 ? s2 : ms2;
-      /* W'/s = sigma h^{-d-2} (df/dq)/q <= 0, from q^2: no square root */
-      const double F = rc->dw_fac * rc->dfq(s2 * rc->h_inv2);
-      const double Vj = p->vol[j], VF = Vj * F;
-      double du[3], dux = 0.0;
-      for (int k = 0; k < dim; k++) {
-        du[k] = p->vel[k][j] - ui[k];
-        dux += du[k] * x[k];
-      }
-      /* continuity: -rho_i V_j (u_j - u_i).grad_i W = rho_i V_j F du.x */
-      cont += VF * dux;
-      /* delta-SPH: V_j psi_ij.grad_i W = -2 V_j (rho_j - rho_i) F */
-      if (rc->dhc > 0.0) dsum += -2.0 * VF * (p->rho[j] - rhoi);
-      /* pressure: -(1/rho_i) V_j (p_i + p_j) grad_i W */
-      const double cp = VF * (pi + p->p[j]);
-      for (int k = 0; k < dim; k++) ap[k] += cp * x[k];
-      /* viscous (div V)_i, THEORY 3 */
-      if (form == VSPH_VISCOUS_MGF) {
-        const double cv = -rc->K * rc->mu * VF * dux / s2;
-        for (int k = 0; k < dim; k++) av[k] += cv * x[k];
-      } else if (form == VSPH_VISCOUS_MEAF) {
-        const double cv = -2.0 * rc->mu * VF;
-        for (int k = 0; k < dim; k++) av[k] += cv * du[k];
-      } else {
-        for (int a = 0; a < dim; a++) {
-          double y = 0.0;
-          for (int b = 0; b < dim; b++)
-            y += (ws->A[a * dim + b][j] + Ai[a * dim + b]) * x[b];
-          av[a] -= VF * y;
-        }
-      }
+  struct vsph_pair_iter it;
+  struct vsph_pair pr;
+  vsph_pair_begin(&it, &rc->pk, p, rg, i);
+  while (vsph_pair_next(&it, dim, &pr)) {
+    const size_t j = pr.j;
+    nint++;
+    ms2 = pr.s2 < ms2 ? pr.s2 : ms2;
+    double du[3], dux = 0.0;
+    for (int k = 0; k < dim; k++) {
+      du[k] = p->vel[k][j] - ui[k];
+      dux += du[k] * pr.x[k];
     }
+    cont += vsph_pair_continuity(&pr, dux);
+    if (rc->dhc > 0.0) dsum += vsph_pair_delta(&pr, p->rho[j] - rhoi);
+    vsph_pair_pressure(&pr, dim, pi + p->p[j], ap);
+    vsph_viscous_pair(&rc->vl, &pr, du, dux, Ai, av);
+  }
   const double rinv = 1.0 / rhoi;
   double g[3];
-  vsph_equations_body_force(rc->ep, xi, g);
+  vsph_equations_body_force(rc->ep, it.xi, g);
   out->drho[i] = rhoi * cont + rc->dhc * dsum;
   for (int k = 0; k < dim; k++) out->acc[k][i] = rinv * (ap[k] + av[k]) + g[k];
   if (rc->parts) {
@@ -109,6 +85,35 @@ static size_t rhs_one(const struct rhs_ctx *rc, const struct vsph_particles *p,
   }
   *min_s2 = ms2;
   return nint;
+}
+
+/* The fluid particles of one cell, the dimension fixed outside the pair
+ * loop. Returns the interactions; the closest pair in *min_s2. */
+static size_t rhs_cell(const struct rhs_ctx *rc, const struct vsph_particles *p,
+                       const struct vsph_cells *cells, size_t c, size_t n_fluid,
+                       struct vsph_equations_out *out, double *min_s2) {
+  struct vsph_pair_ranges rg;
+  vsph_pair_ranges_cell(&rg, cells, c);
+  const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
+  size_t total = 0;
+  double ms2 = INFINITY;
+  for (size_t i = i0; i < i1; i++) {
+    if (p->id[i] >= n_fluid) continue;
+    double m;
+    switch (rc->pk.dim) {
+      case 2:
+        total += rhs_one(rc, p, &rg, i, out, &m, 2);
+        break;
+      case 3:
+        total += rhs_one(rc, p, &rg, i, out, &m, 3);
+        break;
+      default:
+        total += rhs_one(rc, p, &rg, i, out, &m, 1);
+    }
+    ms2 = m < ms2 ? m : ms2;
+  }
+  *min_s2 = ms2;
+  return total;
 }
 
 int vsph_equations_rhs(const struct vsph_equations_props *ep,
@@ -128,35 +133,22 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   }
   const int st = vsph_viscous_prepare(vp, p, cells, ws);
   if (st) return st;
-  const struct vsph_kernel_type *k = vp->kernel;
   struct rhs_ctx rc = {
       .ep = ep,
-      .dim = vp->dim,
-      .form = vp->form,
-      .H2 = k->kappa * vp->h * k->kappa * vp->h,
-      .h_inv2 = 1.0 / (vp->h * vp->h),
-      .dw_fac = k->sigma[vp->dim - 1] * pow(vp->h, -(vp->dim + 2)),
-      .K = 2.0 * (vp->dim + 2),
-      .mu = vp->mu,
       .dhc = ep->delta * vp->h * ep->c0,
-      .dfq = k->dfq[vp->dim - 1],
       .parts = out->acc_visc[0] != NULL && out->drho_delta != NULL,
   };
+  vsph_pair_kernel_init(&rc.pk, vp->kernel, vp->dim, vp->h);
+  vsph_viscous_loop_init(&rc.vl, vp, vp->form == VSPH_VISCOUS_PVWF ? ws : NULL);
   size_t total = 0;
   double min_s2 = INFINITY;
   /* integer sum and min: exact, so the same for any thread count */
 #pragma omp parallel for schedule(dynamic, 8) reduction(+ : total) \
     reduction(min : min_s2)
   for (size_t c = 0; c < cells->ncells; c++) {
-    size_t lo[VSPH_CELLS_MAXRANGES], hi[VSPH_CELLS_MAXRANGES];
-    const size_t nr = vsph_cells_ranges(cells, c, lo, hi);
-    const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
-    for (size_t i = i0; i < i1; i++)
-      if (p->id[i] < n_fluid) {
-        double m;
-        total += rhs_one(&rc, p, ws, i, nr, lo, hi, out, &m);
-        min_s2 = m < min_s2 ? m : min_s2;
-      }
+    double m;
+    total += rhs_cell(&rc, p, cells, c, n_fluid, out, &m);
+    min_s2 = m < min_s2 ? m : min_s2;
   }
   out->interactions = total;
   out->min_s2 = min_s2;

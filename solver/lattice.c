@@ -27,6 +27,22 @@ int vsph_lattice_find(const char *name) {
   return -1;
 }
 
+int vsph_lattice_resolve(const char *name, int dim, double perturb, int *kind,
+                         double *amp) {
+  const int perturbed = !strcmp(name, "perturbed");
+  *kind = perturbed ? VSPH_LATTICE_SQUARE : vsph_lattice_find(name);
+  if (*kind < 0)
+    VSPH_FAIL(VSPH_EINVAL, "unknown lattice '%s' (square, hex, perturbed)",
+              name);
+  if (*kind == VSPH_LATTICE_HEX && dim != 2)
+    VSPH_FAIL(VSPH_EINVAL, "the hex lattice is 2-D only");
+  if (!(perturb >= 0 && perturb < 0.5))
+    VSPH_FAIL(VSPH_EINVAL, "the perturbation must lie in [0, 0.5), got %g",
+              perturb);
+  *amp = perturbed ? perturb : 0.0;
+  return VSPH_OK;
+}
+
 static int check_props(const struct vsph_lattice_props *lp) {
   if (lp->dim < 1 || lp->dim > 3)
     VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", lp->dim);

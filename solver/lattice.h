@@ -34,6 +34,14 @@ const char *vsph_lattice_name(int kind);
 /** @brief Kind called @p name, or -1. */
 int vsph_lattice_find(const char *name);
 
+/** @brief Resolve a lattice named @p name ("square", "hex" or "perturbed",
+ *  the square lattice shifted by up to @p perturb dx per component) in
+ *  dimension @p dim into a kind and a perturbation amplitude (0 unless
+ *  perturbed). @return VSPH_OK or VSPH_EINVAL (unknown name, hex outside
+ *  2-D, perturb outside [0, 0.5)). */
+int vsph_lattice_resolve(const char *name, int dim, double perturb, int *kind,
+                         double *amp);
+
 /** @brief Lattice nodes x with |x| <= radius and x_d <= depth (x_d the last
  *  coordinate), the origin being a node and particle @p centre. The centre
  *  is never perturbed; the others move by up to perturb*dx per component

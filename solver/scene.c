@@ -1,7 +1,6 @@
 #include "scene.h"
 
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "../common/params.h"
@@ -34,18 +33,16 @@ int vsph_scene_init(struct vsph_scene *sc, const struct vsph_scene_type *type,
   memset(sc, 0, sizeof *sc);
   sc->type = type;
   sc->dim = 2;
-  for (size_t i = 0; i < type->nparams; i++) {
-    char key[96];
-    snprintf(key, sizeof key, "Scene:%s", type->params[i].key);
-    const int st =
-        vsph_params_get_double_or(prm, key, type->params[i].def, &sc->v[i]);
-    if (st) return st;
-  }
+  /* the table's offsets are into the type's member of the union, which
+   * starts at the union's address */
+  const int st =
+      vsph_params_load(prm, "Scene", type->params, type->nparams, &sc->u);
+  if (st) return st;
   return type->setup(sc);
 }
 
-double vsph_scene_sound_speed(const struct vsph_scene *sc, size_t ic0) {
-  if (sc->v[ic0] > 0.0) return sc->v[ic0];
+double vsph_scene_sound_speed(const struct vsph_scene *sc, double c0) {
+  if (c0 > 0.0) return c0;
   /* THEORY 5: c0 = 10 max(U_max, sqrt(dp_max / rho0)) */
   return 10.0 * fmax(sc->U_max, sqrt(sc->dp_max / sc->rho0));
 }

@@ -7,21 +7,53 @@
 
 struct vsph_particles;
 struct vsph_params;
+struct vsph_params_spec;
 
 /** @file scene.h
  *  @brief Scenes as runtime descriptors (THEORY.md section 6). A scene
  *  declares its geometry, body force, walls, initial state and reference
- *  length; nothing it does not declare is computed. Parameters live in the
- *  "Scene" section with the defaults of THEORY section 6. No I/O. */
+ *  length; nothing it does not declare is computed. Each scene's parameters
+ *  live in the "Scene" section, in a typed struct of its own, with defaults
+ *  and bounds in its parameter table (solver/scenes/). No I/O. */
 
-/** Most parameters a scene has. */
-#define VSPH_SCENE_MAXPARAMS 12
+/** Vortex patch (THEORY 6.1): given values, then derived ones. */
+struct vsph_scene_vortex {
+  double R;      /*!< patch radius (m) */
+  double l2;     /*!< profile parameter l^2 (m^2) [reconstructed] */
+  double omega0; /*!< angular velocity at the centre (rad/s) */
+  double beta;   /*!< radial body force -beta^2 r (1/s) */
+  double nu;     /*!< kinematic viscosity (m^2/s) */
+  double rho0;   /*!< reference density */
+  double c0;     /*!< sound speed (m/s); 0: THEORY 5's rule */
+  double t_end;  /*!< default end time (s) */
+};
 
-/** One scene parameter: "Scene:<key>", its default and meaning. */
-struct vsph_scene_param {
-  const char *key;  /*!< name under Scene: */
-  double def;       /*!< default (THEORY section 6) */
-  const char *help; /*!< meaning and unit */
+/** Stretching square (THEORY 6.2). */
+struct vsph_scene_square {
+  double L;            /*!< side (m) */
+  double A0;           /*!< strain rate (1/s) */
+  double nu;           /*!< kinematic viscosity (m^2/s) */
+  double rho0;         /*!< reference density */
+  double c0;           /*!< sound speed (m/s); 0: THEORY 5's rule */
+  double t_end;        /*!< default end time (s) */
+  size_t poisson_grid; /*!< interior nodes per side; 0: 4 res */
+};
+
+/** Standing wave (THEORY 6.3): given values, then derived ones. */
+struct vsph_scene_wave {
+  double lambda; /*!< wavelength (m) */
+  double eps;    /*!< steepness 2A/lambda [reconstructed] */
+  double Re;     /*!< Reynolds number lambda U_max/nu */
+  double g;      /*!< gravity (m/s^2) */
+  double rho0;   /*!< reference density */
+  double c0;     /*!< sound speed (m/s); 0: THEORY 5's rule */
+  double t_end;  /*!< default end time (s) */
+  /* derived by the scene's setup */
+  double L;     /*!< tank width lambda/2 = depth H (m) */
+  double k;     /*!< wavenumber 2 pi/lambda (1/m) */
+  double omega; /*!< angular frequency, omega^2 = g k tanh(kH) (1/s) */
+  double A;     /*!< amplitude eps lambda/2 (m) */
+  double nu;    /*!< kinematic viscosity lambda U_max/Re (m^2/s) */
 };
 
 struct vsph_scene;
@@ -31,9 +63,10 @@ struct vsph_scene_type {
   const char *name;        /*!< as on the command line */
   const char *description; /*!< one line */
   const char *length_name; /*!< what --res counts across (R, L or H) */
-  const struct vsph_scene_param *params; /*!< parameter table */
+  const struct vsph_params_spec *params; /*!< the "Scene" section: offsets
+                                              into the scene's typed struct */
   size_t nparams;                        /*!< its length */
-  /** Derive the scene from sc->v (VSPH_OK or VSPH_EINVAL). */
+  /** Derive the scene from its typed parameters (VSPH_OK or VSPH_EINVAL). */
   int (*setup)(struct vsph_scene *sc);
   /** Lay out the fluid: @p res particles across the reference length. */
   int (*init)(const struct vsph_scene *sc, size_t res,
@@ -43,7 +76,6 @@ struct vsph_scene_type {
 /** A configured scene. */
 struct vsph_scene {
   const struct vsph_scene_type *type; /*!< descriptor */
-  double v[VSPH_SCENE_MAXPARAMS];     /*!< parameter values, table order */
   int dim;                            /*!< dimension (2) */
   double ref_length;                  /*!< R, L or H (m) */
   double rho0;                        /*!< reference density */
@@ -56,7 +88,12 @@ struct vsph_scene {
   double beta, g;                     /*!< body-force parameters */
   struct vsph_walls walls;            /*!< walls (n = 0: none) */
   double box_lo[3], box_hi[3];        /*!< escape box */
-  double d[8]; /*!< scene-specific derived values (see each scene) */
+  /** The scene's own typed parameters: the member of its type. */
+  union {
+    struct vsph_scene_vortex vortex; /*!< vortex-patch */
+    struct vsph_scene_square square; /*!< stretching-square */
+    struct vsph_scene_wave wave;     /*!< standing-wave */
+  } u;
 };
 
 extern const struct vsph_scene_type vsph_vortex_patch_type;
@@ -72,16 +109,17 @@ const struct vsph_scene_type *vsph_scene_get(size_t i);
 /** @brief Scene called @p name, or NULL. */
 const struct vsph_scene_type *vsph_scene_find(const char *name);
 
-/** @brief Read the scene's parameters ("Scene:<key>", defaults from the
- *  table) from @p prm and derive the scene. c0 = 0 means THEORY's rule
+/** @brief Read the scene's parameters ("Scene:<key>", defaults and bounds
+ *  from its table; @p prm may be NULL for all defaults) into its typed
+ *  struct and derive the scene. c0 = 0 means THEORY's rule
  *  c0 = 10 max(U_max, sqrt(dp_max / rho0)).
  *  @return VSPH_OK or VSPH_EINVAL. */
 int vsph_scene_init(struct vsph_scene *sc, const struct vsph_scene_type *type,
                     struct vsph_params *prm);
 
-/** @brief Sound speed by THEORY section 5's rule, unless the scene's c0
- *  parameter (index @p ic0) is positive. */
-double vsph_scene_sound_speed(const struct vsph_scene *sc, size_t ic0);
+/** @brief Sound speed by THEORY section 5's rule, unless @p c0 (the scene's
+ *  c0 parameter) is positive. */
+double vsph_scene_sound_speed(const struct vsph_scene *sc, double c0);
 
 struct vsph_integrate_props;
 struct vsph_kernel_type;
@@ -101,11 +139,12 @@ void vsph_scene_set_pressure(const struct vsph_scene *sc,
 
 /** @brief Standing wave's initial velocity u = grad phi0 at (x, y),
  *  phi0 = (A g/omega) cosh[k(y + H)]/cosh(kH) cos(kx) (THEORY 6.3). */
-void vsph_standing_wave_velocity(double A, double g, double k, double H,
-                                 double omega, double x, double y, double u[2]);
+void vsph_standing_wave_velocity(const struct vsph_scene_wave *w, double x,
+                                 double y, double u[2]);
 
 /** @brief Vortex patch's initial angular velocity (THEORY 6.1,
- *  [reconstructed]): omega0 l^2 [1/(l^2 + r^2) + r^2/(l^2 + R^2)^2]. */
+ *  [reconstructed]): omega0 l^2 [1/(l^2 + r^2) + r^2/(l^2 + R^2)^2]. The
+ *  one definition of the profile: the reference solution uses it too. */
 double vsph_vortex_patch_omega(double omega0, double l2, double R, double r);
 
 #endif /* VSPH_SOLVER_SCENE_H */

@@ -4,9 +4,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../common/consts.h"
 #include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "cells.h"
+#include "pair.h"
 #include "particles.h"
 
 static const char *const viscous_names[] = {
@@ -120,97 +122,24 @@ static int invert_sym(int dim, const double *b, double *inv, double tol) {
   return 1;
 }
 
-/* Quantities every pair loop needs, loaded once (STYLE B7). */
-struct pair_ctx {
-  int dim;
-  double H2;      /* (kappa h)^2 */
-  double h_inv2;  /* 1/h^2 */
-  double dwq_fac; /* sigma_d h^{-d-2}: W'(s)/s = dwq_fac dfq(s^2/h^2) */
-  vsph_kernel_fn *dfq;
-};
-
-static void pair_ctx_init(struct pair_ctx *pc,
-                          const struct vsph_viscous_props *vp) {
-  const struct vsph_kernel_type *k = vp->kernel;
-  const double H = k->kappa * vp->h;
-  pc->dim = vp->dim;
-  pc->H2 = H * H;
-  pc->h_inv2 = 1.0 / (vp->h * vp->h);
-  pc->dwq_fac = k->sigma[vp->dim - 1] * pow(vp->h, -(vp->dim + 2));
-  pc->dfq = k->dfq[vp->dim - 1];
-}
-
-/* MGF (4.20) and MEAF (4.30) for particle i: one pass. */
-static void mgf_meaf_one(const struct vsph_viscous_props *vp,
-                         const struct pair_ctx *pc,
-                         const struct vsph_particles *p, size_t i, size_t nr,
-                         const size_t *lo, const size_t *hi, double f[3],
-                         double *dens) {
-  const int dim = pc->dim;
-  const double K = 2.0 * (dim + 2);
-  double acc[3] = {0, 0, 0}, pd = 0.0;
-  for (size_t r = 0; r < nr; r++)
-    for (size_t j = lo[r]; j < hi[r]; j++) {
-      if (j == i) continue;
-      double x[3], du[3], s2 = 0.0;
-      for (int k = 0; k < dim; k++) {
-        x[k] = p->pos[k][j] - p->pos[k][i];
-        s2 += x[k] * x[k];
-      }
-      if (s2 >= pc->H2) continue;
-      const double F = pc->dwq_fac * pc->dfq(s2 * pc->h_inv2); /* W'/s */
-      const double Vj = p->vol[j];
-      for (int k = 0; k < dim; k++) du[k] = p->vel[k][j] - p->vel[k][i];
-      if (vp->form == VSPH_VISCOUS_MGF) {
-        double dux = 0.0;
-        for (int k = 0; k < dim; k++) dux += du[k] * x[k];
-        /* K mu V_j (du.x)/s^2 grad_i W, grad_i W = -x W'/s */
-        const double c = -K * Vj * dux * F / s2;
-        for (int k = 0; k < dim; k++) acc[k] += c * x[k];
-        pd += Vj * dux * dux * F / s2;
-      } else {
-        /* 2 mu V_j W'/s (u_i - u_j) */
-        const double c = -2.0 * Vj * F;
-        double du2 = 0.0;
-        for (int k = 0; k < dim; k++) {
-          acc[k] += c * du[k];
-          du2 += du[k] * du[k];
-        }
-        pd += Vj * F * du2;
-      }
-    }
-  for (int k = 0; k < dim; k++) f[k] = vp->mu * acc[k];
-  if (dens)
-    *dens = vp->form == VSPH_VISCOUS_MGF ? 0.5 * K * vp->mu * pd : vp->mu * pd;
-}
-
-/* PVWF pass 1 for particle i: L_i, renormalised grad u, D_i, T_i, A_i. */
-static void pvwf_pass1(const struct vsph_viscous_props *vp,
-                       const struct pair_ctx *pc,
-                       const struct vsph_particles *p, size_t i, size_t nr,
-                       const size_t *lo, const size_t *hi,
-                       struct vsph_viscous_ws *ws) {
-  const int dim = pc->dim;
+/* PVWF pass 1 for particle i: the sums B and Mg over its neighbours
+ * (vsph_pair_pvwf_grad), then L_i = B^-1, the renormalised grad u, D_i,
+ * T_i = 2 mu D_i + lambda tr(D_i) I, A_i = T_i L_i and -T_i:D_i. */
+VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
+                                       const struct vsph_pair_kernel *pk,
+                                       const struct vsph_particles *p,
+                                       const struct vsph_pair_ranges *rg,
+                                       size_t i, struct vsph_viscous_ws *ws,
+                                       const int dim) {
   double B[9] = {0}, Mg[9] = {0}, L[9] = {0}, G[9] = {0};
-  for (size_t r = 0; r < nr; r++)
-    for (size_t j = lo[r]; j < hi[r]; j++) {
-      if (j == i) continue;
-      double x[3], s2 = 0.0;
-      for (int k = 0; k < dim; k++) {
-        x[k] = p->pos[k][j] - p->pos[k][i];
-        s2 += x[k] * x[k];
-      }
-      if (s2 >= pc->H2) continue;
-      /* V_j (-W'/s): grad_i W (x) x = (-W'/s) x (x) x */
-      const double c = -p->vol[j] * pc->dwq_fac * pc->dfq(s2 * pc->h_inv2);
-      for (int a = 0; a < dim; a++) {
-        const double du = p->vel[a][j] - p->vel[a][i];
-        for (int b = 0; b < dim; b++) {
-          B[a * dim + b] += c * x[a] * x[b];
-          Mg[a * dim + b] += c * du * x[b];
-        }
-      }
-    }
+  struct vsph_pair_iter it;
+  struct vsph_pair pr;
+  vsph_pair_begin(&it, pk, p, rg, i);
+  while (vsph_pair_next(&it, dim, &pr)) {
+    double du[3];
+    for (int a = 0; a < dim; a++) du[a] = p->vel[a][pr.j] - p->vel[a][i];
+    vsph_pair_pvwf_grad(&pr, dim, du, B, Mg);
+  }
   ws->fallback[i] = !invert_sym(dim, B, L, vp->det_tol);
   if (ws->fallback[i])
     for (int a = 0; a < dim; a++) L[a * dim + a] = 1.0;
@@ -240,34 +169,6 @@ static void pvwf_pass1(const struct vsph_viscous_props *vp,
   ws->dens[i] = -TD;
 }
 
-/* PVWF pass 2: sum_j V_j (A_j + A_i) grad_i W (Eq. 4.19). */
-static void pvwf_pass2(const struct pair_ctx *pc,
-                       const struct vsph_particles *p, size_t i, size_t nr,
-                       const size_t *lo, const size_t *hi,
-                       const struct vsph_viscous_ws *ws, double f[3]) {
-  const int dim = pc->dim;
-  double Ai[9], acc[3] = {0, 0, 0};
-  for (int a = 0; a < dim * dim; a++) Ai[a] = ws->A[a][i];
-  for (size_t r = 0; r < nr; r++)
-    for (size_t j = lo[r]; j < hi[r]; j++) {
-      if (j == i) continue;
-      double x[3], s2 = 0.0;
-      for (int k = 0; k < dim; k++) {
-        x[k] = p->pos[k][j] - p->pos[k][i];
-        s2 += x[k] * x[k];
-      }
-      if (s2 >= pc->H2) continue;
-      const double c = -p->vol[j] * pc->dwq_fac * pc->dfq(s2 * pc->h_inv2);
-      for (int a = 0; a < dim; a++) {
-        double y = 0.0;
-        for (int b = 0; b < dim; b++)
-          y += (ws->A[a * dim + b][j] + Ai[a * dim + b]) * x[b];
-        acc[a] += c * y;
-      }
-    }
-  for (int k = 0; k < dim; k++) f[k] = acc[k];
-}
-
 int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
                          const struct vsph_particles *p,
                          const struct vsph_cells *cells,
@@ -275,19 +176,50 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
   if (vp->form != VSPH_VISCOUS_PVWF) return VSPH_OK;
   if (!ws || ws->cap < p->n || ws->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "PVWF needs a workspace for %zu particles", p->n);
-  struct pair_ctx pc;
-  pair_ctx_init(&pc, vp);
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, vp->kernel, vp->dim, vp->h);
 #pragma omp parallel for schedule(dynamic, 8)
   for (size_t c = 0; c < cells->ncells; c++) {
-    size_t lo[VSPH_CELLS_MAXRANGES], hi[VSPH_CELLS_MAXRANGES];
-    const size_t nr = vsph_cells_ranges(cells, c, lo, hi);
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
     const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
-    for (size_t i = i0; i < i1; i++) pvwf_pass1(vp, &pc, p, i, nr, lo, hi, ws);
+    for (size_t i = i0; i < i1; i++) /* dimension fixed outside the loop */
+      if (vp->dim == 2)
+        pvwf_pass1(vp, &pk, p, &rg, i, ws, 2);
+      else if (vp->dim == 3)
+        pvwf_pass1(vp, &pk, p, &rg, i, ws, 3);
+      else
+        pvwf_pass1(vp, &pk, p, &rg, i, ws, 1);
   }
   size_t nf = 0; /* serial: reproducible */
   for (size_t i = 0; i < p->n; i++) nf += ws->fallback[i];
   ws->n_fallback = nf;
   return VSPH_OK;
+}
+
+/* (div V)_i of particle i into out, by the loop's formulation; returns the
+ * pairwise dissipation density (MGF, MEAF). */
+VSPH_CONSTS_SPECIALISE double force_one(const struct vsph_viscous_loop *lp,
+                                        const struct vsph_pair_kernel *pk,
+                                        const struct vsph_particles *p,
+                                        const struct vsph_pair_ranges *rg,
+                                        size_t i, double *const out[3],
+                                        const int dim) {
+  double acc[3] = {0, 0, 0}, Ai[9] = {0}, pd = 0.0;
+  vsph_viscous_load_A(lp, i, Ai);
+  struct vsph_pair_iter it;
+  struct vsph_pair pr;
+  vsph_pair_begin(&it, pk, p, rg, i);
+  while (vsph_pair_next(&it, dim, &pr)) {
+    double du[3], dux = 0.0;
+    for (int k = 0; k < dim; k++) {
+      du[k] = p->vel[k][pr.j] - p->vel[k][i];
+      dux += du[k] * pr.x[k];
+    }
+    pd += vsph_viscous_pair(lp, &pr, du, dux, Ai, acc);
+  }
+  for (int k = 0; k < dim; k++) out[k][i] = acc[k];
+  return pd;
 }
 
 int vsph_viscous_compute(const struct vsph_viscous_props *vp,
@@ -297,28 +229,27 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
                          double *dens) {
   if (vp->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "props dimension %d, particles %d", vp->dim, p->dim);
-  const int pvwf = vp->form == VSPH_VISCOUS_PVWF;
-  int st = vsph_viscous_prepare(vp, p, cells, ws);
+  const int st = vsph_viscous_prepare(vp, p, cells, ws);
   if (st) return st;
-  struct pair_ctx pc;
-  pair_ctx_init(&pc, vp);
-  const int dim = vp->dim;
+  const int dim = vp->dim, pvwf = vp->form == VSPH_VISCOUS_PVWF;
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, vp->kernel, dim, vp->h);
+  struct vsph_viscous_loop lp;
+  vsph_viscous_loop_init(&lp, vp, pvwf ? ws : NULL);
 #pragma omp parallel for schedule(dynamic, 8)
   for (size_t c = 0; c < cells->ncells; c++) {
-    size_t lo[VSPH_CELLS_MAXRANGES], hi[VSPH_CELLS_MAXRANGES];
-    const size_t nr = vsph_cells_ranges(cells, c, lo, hi);
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
     const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
-    for (size_t i = i0; i < i1; i++) {
-      double f[3] = {0, 0, 0};
-      if (!pvwf) {
-        double d = 0.0;
-        mgf_meaf_one(vp, &pc, p, i, nr, lo, hi, f, dens ? &d : NULL);
-        if (dens) dens[i] = d;
-      } else {
-        pvwf_pass2(&pc, p, i, nr, lo, hi, ws, f);
-        if (dens) dens[i] = ws->dens[i];
-      }
-      for (int k = 0; k < dim; k++) out[k][i] = f[k];
+    for (size_t i = i0; i < i1; i++) { /* dimension fixed outside the loop */
+      double pd;
+      if (dim == 2)
+        pd = force_one(&lp, &pk, p, &rg, i, out, 2);
+      else if (dim == 3)
+        pd = force_one(&lp, &pk, p, &rg, i, out, 3);
+      else
+        pd = force_one(&lp, &pk, p, &rg, i, out, 1);
+      if (dens) dens[i] = pvwf ? ws->dens[i] : pd;
     }
   }
   return VSPH_OK;

@@ -3,6 +3,8 @@
 
 #include <stddef.h>
 
+#include "pair.h"
+
 struct vsph_kernel_type;
 struct vsph_particles;
 struct vsph_cells;
@@ -13,7 +15,10 @@ struct vsph_cells;
  *  (Monaghan-Gingold), MEAF (Morris-Fox-Zhu) and PVWF (principle of virtual
  *  work, renormalised two-pass form). Gather loops over a cell list: each
  *  particle's sum is taken by one thread in a fixed neighbour order, so the
- *  result is bitwise identical for any thread count. No I/O. */
+ *  result is bitwise identical for any thread count. Each formulation is
+ *  one pair function of pair.h, dispatched by vsph_viscous_pair; the
+ *  solver's right-hand side (equations.c) calls the same dispatch, so the
+ *  operators exist once. No I/O. */
 
 /** Viscous formulation. */
 enum vsph_viscous_form {
@@ -87,5 +92,53 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
                          const struct vsph_cells *cells,
                          struct vsph_viscous_ws *ws, double *const out[3],
                          double *dens);
+
+/** What the viscous pair term needs inside a loop, loaded once. */
+struct vsph_viscous_loop {
+  int form;      /*!< vsph_viscous_form */
+  int dim;       /*!< dimension */
+  double Kmu;    /*!< MGF: K mu, K = vsph_kernel_mg_factor(dim) */
+  double two_mu; /*!< MEAF: 2 mu */
+  double *A[9];  /*!< PVWF: A = T L of every particle (workspace) */
+};
+
+/** @brief The loop constants of @p vp; @p ws is the PVWF workspace after
+ *  vsph_viscous_prepare (may be NULL for the other forms). */
+static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
+                                          const struct vsph_viscous_props *vp,
+                                          const struct vsph_viscous_ws *ws) {
+  lp->form = vp->form;
+  lp->dim = vp->dim;
+  lp->Kmu = vsph_kernel_mg_factor(vp->dim) * vp->mu;
+  lp->two_mu = 2.0 * vp->mu;
+  for (int a = 0; a < 9; a++) lp->A[a] = ws ? ws->A[a] : NULL;
+}
+
+/** @brief The viscous term of pair (i, j) in the loop's formulation: adds
+ *  the pair's share of (div V)_i to @p acc and returns its dissipation
+ *  density (0 for PVWF, whose density -T_i:D_i comes from pass 1). A new
+ *  formulation adds its pair function to pair.h and a case here.
+ *  @param du u_j - u_i; @param dux du.x; @param Ai PVWF's A_i. */
+static inline double vsph_viscous_pair(const struct vsph_viscous_loop *lp,
+                                       const struct vsph_pair *pr,
+                                       const double du[3], double dux,
+                                       const double Ai[9], double acc[3]) {
+  switch (lp->form) {
+    case VSPH_VISCOUS_MGF:
+      return vsph_pair_mgf(pr, lp->dim, lp->Kmu, dux, acc);
+    case VSPH_VISCOUS_MEAF:
+      return vsph_pair_meaf(pr, lp->dim, lp->two_mu, du, acc);
+    default:
+      vsph_pair_pvwf_force(pr, lp->dim, Ai, lp->A, acc);
+      return 0.0;
+  }
+}
+
+/** @brief PVWF's A_i of particle @p i from the workspace, for the loop. */
+static inline void vsph_viscous_load_A(const struct vsph_viscous_loop *lp,
+                                       size_t i, double Ai[9]) {
+  const int n = lp->form == VSPH_VISCOUS_PVWF ? lp->dim * lp->dim : 0;
+  for (int a = 0; a < n; a++) Ai[a] = lp->A[a][i];
+}
 
 #endif /* VSPH_SOLVER_VISCOUS_H */

@@ -12,7 +12,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "../cli/report_internal.h"
+#include "../reports/report_internal.h"
 #include "check_suites.h"
 
 START_TEST(test_baseline) {
@@ -27,15 +27,15 @@ START_TEST(test_baseline) {
   R.dir = dir;
   size_t i = 0;
   while (fgets(line, sizeof line, f)) {
-    char scene[32], visc[8];
+    char scene[32], visc[16];
     size_t res;
     double t_end, ek, d0;
     int ok;
-    ck_assert_int_eq(sscanf(line, "%31[^,],%7[^,],%zu,%lf,%lf,%lf,%d", scene,
+    ck_assert_int_eq(sscanf(line, "%31[^,],%15[^,],%zu,%lf,%lf,%lf,%d", scene,
                             visc, &res, &t_end, &ek, &d0, &ok),
                      7);
     struct vsph_report_baseline b;
-    ck_assert_int_eq(vsph_report_scenes_baseline(&R, i, &b), 0);
+    ck_assert_int_eq(vsph_report_runs_baseline(&R, i, &b), 0);
     ck_assert_str_eq(b.scene, scene);
     ck_assert_str_eq(b.visc, visc);
     ck_assert_uint_eq(b.res, res);
@@ -49,7 +49,7 @@ START_TEST(test_baseline) {
     i++;
   }
   fclose(f);
-  ck_assert_uint_eq(i, vsph_report_scenes_baseline_count());
+  ck_assert_uint_eq(i, vsph_report_runs_baseline_count());
   char cmd[128];
   snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
   ck_assert_int_eq(system(cmd), 0);

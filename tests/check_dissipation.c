@@ -10,7 +10,7 @@ static struct vsph_dissipation_result run(int form, int field, int shape,
                                           size_t res, double hdx,
                                           double perturb) {
   struct vsph_dissipation_props dp;
-  vsph_dissipation_props_init(&dp);
+  ck_assert_int_eq(vsph_dissipation_props_init(&dp, NULL), 0);
   dp.form = form;
   dp.kernel = &vsph_gaussian_type;
   dp.shape = shape;
@@ -28,7 +28,7 @@ static struct vsph_dissipation_result run(int form, int field, int shape,
 /* The exact integrals against their closed forms (THEORY 4). */
 START_TEST(test_exact_integrals) {
   struct vsph_dissipation_props dp;
-  vsph_dissipation_props_init(&dp);
+  ck_assert_int_eq(vsph_dissipation_props_init(&dp, NULL), 0);
   vsph_fields_props_init(&dp.field, VSPH_FIELDS_STRAIN, 2);
   double Pe, Pg;
   ck_assert_int_eq(vsph_dissipation_exact(&dp, &Pe, &Pg), 0);

@@ -27,6 +27,7 @@ int main(void) {
   srunner_add_suite(sr, vsph_moments_suite());
   srunner_add_suite(sr, vsph_cells_suite());
   srunner_add_suite(sr, vsph_viscous_suite());
+  srunner_add_suite(sr, vsph_pair_suite());
   srunner_add_suite(sr, vsph_scaling_suite());
   srunner_add_suite(sr, vsph_dissipation_suite());
   srunner_add_suite(sr, vsph_poisson_suite());

@@ -166,13 +166,14 @@ END_TEST
  * initial velocity, integrated over the tank by nested GSL quadrature:
  * (1/2) rho int |grad phi0|^2 = rho g A^2 L / 4. */
 struct wave {
-  double A, g, k, H, om, x;
+  struct vsph_scene_wave sw; /* A, g, k, L = H, omega */
+  double x;
   gsl_integration_workspace *wi;
 };
 static double wave_inner(double y, void *p) {
   const struct wave *w = p;
   double u[2];
-  vsph_standing_wave_velocity(w->A, w->g, w->k, w->H, w->om, w->x, y, u);
+  vsph_standing_wave_velocity(&w->sw, w->x, y, u);
   return 0.5 * (u[0] * u[0] + u[1] * u[1]);
 }
 static double wave_outer(double x, void *p) {
@@ -180,15 +181,17 @@ static double wave_outer(double x, void *p) {
   w->x = x;
   gsl_function f = {wave_inner, w};
   double res, err;
-  gsl_integration_qag(&f, -w->H, 0.0, 0, 1e-12, 200, GSL_INTEG_GAUSS61, w->wi,
-                      &res, &err);
+  gsl_integration_qag(&f, -w->sw.L, 0.0, 0, 1e-12, 200, GSL_INTEG_GAUSS61,
+                      w->wi, &res, &err);
   return res;
 }
 START_TEST(test_lighthill_initial) {
   const double lambda = 2.0, L = lambda / 2, H = L, g = 9.81;
   const double k = 2 * VSPH_PI / lambda, A = 0.05 * lambda / 2;
   const double om = sqrt(g * k * tanh(k * H));
-  struct wave w = {A, g, k, H, om, 0.0, gsl_integration_workspace_alloc(200)};
+  struct wave w = {.sw = {.A = A, .g = g, .k = k, .L = H, .omega = om},
+                   .x = 0.0,
+                   .wi = gsl_integration_workspace_alloc(200)};
   gsl_integration_workspace *wo = gsl_integration_workspace_alloc(200);
   gsl_function f = {wave_outer, &w};
   double Ek, err;
@@ -231,10 +234,10 @@ static double dd_inner(double y, void *p) {
   const struct wave *w = p;
   const double e = 1e-5;
   double a[2], b[2], c[2], d[2];
-  vsph_standing_wave_velocity(w->A, w->g, w->k, w->H, w->om, w->x + e, y, a);
-  vsph_standing_wave_velocity(w->A, w->g, w->k, w->H, w->om, w->x - e, y, b);
-  vsph_standing_wave_velocity(w->A, w->g, w->k, w->H, w->om, w->x, y + e, c);
-  vsph_standing_wave_velocity(w->A, w->g, w->k, w->H, w->om, w->x, y - e, d);
+  vsph_standing_wave_velocity(&w->sw, w->x + e, y, a);
+  vsph_standing_wave_velocity(&w->sw, w->x - e, y, b);
+  vsph_standing_wave_velocity(&w->sw, w->x, y + e, c);
+  vsph_standing_wave_velocity(&w->sw, w->x, y - e, d);
   const double ux = (a[0] - b[0]) / (2 * e), vy = (c[1] - d[1]) / (2 * e);
   const double uy = (c[0] - d[0]) / (2 * e), vx = (a[1] - b[1]) / (2 * e);
   const double dxy = 0.5 * (uy + vx);
@@ -245,8 +248,8 @@ static double dd_outer(double x, void *p) {
   w->x = x;
   gsl_function f = {dd_inner, w};
   double res, err;
-  gsl_integration_qag(&f, -w->H, 0.0, 0, 1e-10, 200, GSL_INTEG_GAUSS61, w->wi,
-                      &res, &err);
+  gsl_integration_qag(&f, -w->sw.L, 0.0, 0, 1e-10, 200, GSL_INTEG_GAUSS61,
+                      w->wi, &res, &err);
   return res;
 }
 START_TEST(test_wave_initial_power) {
@@ -258,13 +261,8 @@ START_TEST(test_wave_initial_power) {
   double Ek, dEk;
   ck_assert_int_eq(vsph_references_scene_eval(ref, 0.0, &Ek, &dEk), 0);
   vsph_references_scene_free(ref);
-  struct wave w = {sc.d[2],
-                   sc.g,
-                   sc.d[0],
-                   sc.ref_length,
-                   sc.d[1],
-                   0.0,
-                   gsl_integration_workspace_alloc(200)};
+  struct wave w = {
+      .sw = sc.u.wave, .x = 0.0, .wi = gsl_integration_workspace_alloc(200)};
   gsl_integration_workspace *wo = gsl_integration_workspace_alloc(200);
   gsl_function f = {dd_outer, &w};
   double DD, err;
@@ -275,7 +273,8 @@ START_TEST(test_wave_initial_power) {
   const double want = -2.0 * sc.mu * DD;
   ck_assert_double_eq_tol(dEk, want, 1e-7 * fabs(want));
   /* and it is -8 nu k^2 E_k(0): twice the envelope's slope */
-  ck_assert_double_eq_tol(dEk, -8.0 * sc.d[3] * sc.d[0] * sc.d[0] * Ek,
+  const struct vsph_scene_wave *sw = &sc.u.wave;
+  ck_assert_double_eq_tol(dEk, -8.0 * sw->nu * sw->k * sw->k * Ek,
                           1e-12 * fabs(dEk));
 }
 END_TEST

@@ -10,7 +10,7 @@
 #include "check_suites.h"
 
 static void setup(struct vsph_scaling_props *sp, int kind, int dim) {
-  vsph_scaling_props_init(sp);
+  ck_assert_int_eq(vsph_scaling_props_init(sp, NULL), 0);
   sp->kernel = &vsph_gaussian_type;
   sp->levels = 4;
   ck_assert_int_eq(vsph_fields_props_init(&sp->field, kind, dim), 0);

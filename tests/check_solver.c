@@ -127,7 +127,7 @@ START_TEST(test_standing_wave_period) {
   struct vsph_scene sc;
   struct vsph_integrate *s =
       make_run("standing-wave", VSPH_VISCOUS_MGF, 40, &sc, NULL, NULL);
-  const double omega = sc.d[1], half = VSPH_PI / omega;
+  const double omega = sc.u.wave.omega, half = VSPH_PI / omega;
   double tq[3] = {0}, eq[3] = {0}, minima[4];
   int nmin = 0;
   while (s->t < 1.9 * half && nmin < 2) {

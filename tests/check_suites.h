@@ -9,6 +9,7 @@ Suite *vsph_kernel_suite(void);
 Suite *vsph_moments_suite(void);
 Suite *vsph_cells_suite(void);
 Suite *vsph_viscous_suite(void);
+Suite *vsph_pair_suite(void);
 Suite *vsph_scaling_suite(void);
 Suite *vsph_dissipation_suite(void);
 Suite *vsph_poisson_suite(void);

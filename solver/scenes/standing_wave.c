@@ -1,72 +1,73 @@
 /* Standing wave in a tank with free-slip walls (Colagrossi et al. 2011,
  * Sec. VI C; THEORY 6.3). The amplitude eps = 2A/lambda = 0.05 is
  * [reconstructed]: the seed's value is unreadable.
- * Derived values: d[0] = k, d[1] = omega, d[2] = A, d[3] = nu. */
+ * Parameters: struct vsph_scene_wave (solver/scene.h). */
 #include <math.h>
 
 #include "../../common/consts.h"
+#include "../../common/params.h"
 #include "../../common/status.h"
 #include "../equations.h"
 #include "../lattice.h"
 #include "../particles.h"
 #include "../scene.h"
 
-enum { P_LAMBDA, P_EPS, P_RE, P_G, P_RHO0, P_C0, P_TEND, NP };
-
-static const struct vsph_scene_param params[NP] = {
-    [P_LAMBDA] = {"lambda", 2.0,
-                  "wavelength (m); tank width L = lambda/2 = "
-                  "depth H"},
-    [P_EPS] = {"eps", 0.05, "steepness 2A/lambda [reconstructed]"},
-    [P_RE] = {"Re", 140.0, "Reynolds number lambda U_max/nu"},
-    [P_G] = {"g", 9.81, "gravity (m/s^2)"},
-    [P_RHO0] = {"rho0", 1.0, "reference density (kg/m^2)"},
-    [P_C0] = {"c0", 0.0, "sound speed (m/s); 0: 10 max(U, sqrt(g H))"},
-    [P_TEND] = {"t_end", 8.0, "default end time (s)"},
+#define W struct vsph_scene_wave
+static const struct vsph_params_spec params[] = {
+    VSPH_PARAMS_REAL_SPEC(W, lambda, 2.0, 1e-6, 1e6,
+                          "wavelength (m); tank width L = lambda/2 = depth H"),
+    VSPH_PARAMS_REAL_SPEC(W, eps, 0.05, 1e-9, 0.5,
+                          "steepness 2A/lambda [reconstructed]"),
+    VSPH_PARAMS_REAL_SPEC(W, Re, 140.0, 1.0, 1e9,
+                          "Reynolds number lambda U_max/nu"),
+    VSPH_PARAMS_REAL_SPEC(W, g, 9.81, 1e-6, 1e6, "gravity (m/s^2)"),
+    VSPH_PARAMS_REAL_SPEC(W, rho0, 1.0, 1e-6, 1e9,
+                          "reference density (kg/m^2)"),
+    VSPH_PARAMS_REAL_SPEC(W, c0, 0.0, 0.0, 1e9,
+                          "sound speed (m/s); 0: 10 max(U, sqrt(g H))"),
+    VSPH_PARAMS_REAL_SPEC(W, t_end, 8.0, 1e-9, 1e9, "default end time (s)"),
 };
+#undef W
 
-void vsph_standing_wave_velocity(double A, double g, double k, double H,
-                                 double omega, double x, double y,
-                                 double u[2]) {
-  const double a = A * g / omega * k / cosh(k * H);
+void vsph_standing_wave_velocity(const struct vsph_scene_wave *w, double x,
+                                 double y, double u[2]) {
+  const double k = w->k, H = w->L;
+  const double a = w->A * w->g / w->omega * k / cosh(k * H);
   u[0] = -a * cosh(k * (y + H)) * sin(k * x);
   u[1] = a * sinh(k * (y + H)) * cos(k * x);
 }
 
 static int setup(struct vsph_scene *sc) {
-  const double lambda = sc->v[P_LAMBDA], g = sc->v[P_G];
-  if (!(lambda > 0) || !(sc->v[P_EPS] > 0) || !(sc->v[P_RE] > 0) || !(g > 0) ||
-      !(sc->v[P_RHO0] > 0) || !(sc->v[P_TEND] > 0) || !(sc->v[P_C0] >= 0))
-    VSPH_FAIL(VSPH_EINVAL,
-              "standing-wave: lambda, eps, Re, g, rho0, t_end "
-              "must be > 0, c0 >= 0");
+  struct vsph_scene_wave *w = &sc->u.wave;
+  const double lambda = w->lambda, g = w->g;
   const double L = 0.5 * lambda, H = L, k = 2.0 * VSPH_PI / lambda;
-  const double A = 0.5 * sc->v[P_EPS] * lambda;
+  const double A = 0.5 * w->eps * lambda;
   const double omega = sqrt(g * k * tanh(k * H));
   sc->ref_length = H;
-  sc->rho0 = sc->v[P_RHO0];
+  sc->rho0 = w->rho0;
   sc->U_max = A * g * k / omega; /* |grad phi0| at the surface */
-  const double nu = lambda * sc->U_max / sc->v[P_RE];
+  const double nu = lambda * sc->U_max / w->Re;
   sc->mu = sc->rho0 * nu;
-  sc->t_end = sc->v[P_TEND];
+  sc->t_end = w->t_end;
   sc->body = VSPH_EQUATIONS_BODY_GRAVITY;
   sc->g = g;
   sc->dp_max = sc->rho0 * g * H; /* hydrostatic */
-  sc->c0 = vsph_scene_sound_speed(sc, P_C0);
-  sc->d[0] = k;
-  sc->d[1] = omega;
-  sc->d[2] = A;
-  sc->d[3] = nu;
+  sc->c0 = vsph_scene_sound_speed(sc, w->c0);
+  w->L = L;
+  w->k = k;
+  w->omega = omega;
+  w->A = A;
+  w->nu = nu;
   /* free-slip walls x = 0, x = L and bottom y = -H */
-  struct vsph_walls w = {.n = 3,
-                         .axis = {0, 0, 1},
-                         .pos = {0.0, L, -H},
-                         .side = {+1, -1, +1},
-                         .noslip = 0,
-                         .g = g,
-                         .rho0 = sc->rho0,
-                         .c0 = sc->c0};
-  sc->walls = w;
+  struct vsph_walls wl = {.n = 3,
+                          .axis = {0, 0, 1},
+                          .pos = {0.0, L, -H},
+                          .side = {+1, -1, +1},
+                          .noslip = 0,
+                          .g = g,
+                          .rho0 = sc->rho0,
+                          .c0 = sc->c0};
+  sc->walls = wl;
   sc->box_lo[0] = -0.5 * L;
   sc->box_hi[0] = 1.5 * L;
   sc->box_lo[1] = -1.5 * H;
@@ -76,6 +77,7 @@ static int setup(struct vsph_scene *sc) {
 
 static int init(const struct vsph_scene *sc, size_t res,
                 struct vsph_particles **out) {
+  const struct vsph_scene_wave *w = &sc->u.wave;
   const double H = sc->ref_length, L = H;
   struct vsph_lattice_props lp = {.dim = 2};
   /* a square lattice of side L = H centred on (L/2, -H/2) */
@@ -87,8 +89,7 @@ static int init(const struct vsph_scene *sc, size_t res,
     p->pos[0][i] = x;
     p->pos[1][i] = y;
     double u[2];
-    vsph_standing_wave_velocity(sc->d[2], sc->g, sc->d[0], H, sc->d[1], x, y,
-                                u);
+    vsph_standing_wave_velocity(w, x, y, u);
     p->vel[0][i] = u[0];
     p->vel[1][i] = u[1];
     /* hydrostatic pressure under a flat surface */
@@ -102,7 +103,7 @@ const struct vsph_scene_type vsph_standing_wave_type = {
     .description = "standing wave in a tank with free-slip walls (Sec. VI C)",
     .length_name = "H",
     .params = params,
-    .nparams = NP,
+    .nparams = sizeof params / sizeof params[0],
     .setup = setup,
     .init = init,
 };

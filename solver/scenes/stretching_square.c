@@ -1,9 +1,10 @@
 /* Stretching square: a free square under pure strain (Colagrossi et al.
  * 2011, Sec. VI B; THEORY 6.2). Initial pressure from lap p = -2 rho A0^2
  * with p = 2 mu n.D0.n on the edges, by the FFTW sine-transform solver.
- * Derived values: d[0] = L, d[1] = A0. */
+ * Parameters: struct vsph_scene_square (solver/scene.h). */
 #include <math.h>
 
+#include "../../common/params.h"
 #include "../../common/status.h"
 #include "../equations.h"
 #include "../lattice.h"
@@ -11,18 +12,23 @@
 #include "../poisson.h"
 #include "../scene.h"
 
-enum { P_L, P_A0, P_NU, P_RHO0, P_C0, P_TEND, P_GRID, NP };
-
-static const struct vsph_scene_param params[NP] = {
-    [P_L] = {"L", 1.0, "side of the square (m)"},
-    [P_A0] = {"A0", 1.0, "strain rate, u = A0 (x, -y) (1/s)"},
-    [P_NU] = {"nu", 0.05, "kinematic viscosity (m^2/s); Re = L^2 A0/nu"},
-    [P_RHO0] = {"rho0", 1.0, "reference density (kg/m^2)"},
-    [P_C0] = {"c0", 0.0, "sound speed (m/s); 0: 10 max(U, sqrt(dp/rho0))"},
-    [P_TEND] = {"t_end", 1.0, "default end time (s)"},
-    [P_GRID] = {"poisson_grid", 0.0,
-                "interior nodes per side of the pressure grid; 0: 4 res"},
+#define S struct vsph_scene_square
+static const struct vsph_params_spec params[] = {
+    VSPH_PARAMS_REAL_SPEC(S, L, 1.0, 1e-6, 1e6, "side of the square (m)"),
+    VSPH_PARAMS_REAL_SPEC(S, A0, 1.0, -1e6, 1e6,
+                          "strain rate, u = A0 (x, -y) (1/s)"),
+    VSPH_PARAMS_REAL_SPEC(S, nu, 0.05, 0.0, 1e6,
+                          "kinematic viscosity (m^2/s); Re = L^2 A0/nu"),
+    VSPH_PARAMS_REAL_SPEC(S, rho0, 1.0, 1e-6, 1e9,
+                          "reference density (kg/m^2)"),
+    VSPH_PARAMS_REAL_SPEC(S, c0, 0.0, 0.0, 1e9,
+                          "sound speed (m/s); 0: 10 max(U, sqrt(dp/rho0))"),
+    VSPH_PARAMS_REAL_SPEC(S, t_end, 1.0, 1e-9, 1e9, "default end time (s)"),
+    VSPH_PARAMS_INT_SPEC(S, poisson_grid, 0, 0, 4096,
+                         "interior nodes per side of the pressure grid; 0: "
+                         "4 res (at least 16)"),
 };
+#undef S
 
 struct bc {
   double L, mu, A0, rho0;
@@ -47,8 +53,9 @@ static double bc_fn(double x, double y, void *c) {
 
 static int solve(const struct vsph_scene *sc, size_t n,
                  struct vsph_poisson **out) {
-  struct bc b = {sc->v[P_L], sc->mu, sc->v[P_A0], sc->rho0};
-  struct vsph_poisson *ps = vsph_poisson_alloc(n, sc->v[P_L]);
+  const struct vsph_scene_square *sq = &sc->u.square;
+  struct bc b = {sq->L, sc->mu, sq->A0, sc->rho0};
+  struct vsph_poisson *ps = vsph_poisson_alloc(n, sq->L);
   if (!ps) return VSPH_ENOMEM;
   const int st = vsph_poisson_solve(ps, rhs_fn, bc_fn, &b);
   if (st) {
@@ -60,18 +67,14 @@ static int solve(const struct vsph_scene *sc, size_t n,
 }
 
 static int setup(struct vsph_scene *sc) {
-  const double L = sc->v[P_L];
-  if (!(L > 0) || !(sc->v[P_NU] >= 0) || !(sc->v[P_RHO0] > 0) ||
-      !(sc->v[P_TEND] > 0) || !(sc->v[P_C0] >= 0) || !(sc->v[P_GRID] >= 0))
-    VSPH_FAIL(VSPH_EINVAL,
-              "stretching-square: L, rho0, t_end must be > 0; "
-              "nu, c0, poisson_grid >= 0");
+  const struct vsph_scene_square *sq = &sc->u.square;
+  const double L = sq->L;
   sc->ref_length = L;
-  sc->rho0 = sc->v[P_RHO0];
-  sc->mu = sc->rho0 * sc->v[P_NU];
-  sc->t_end = sc->v[P_TEND];
+  sc->rho0 = sq->rho0;
+  sc->mu = sq->rho0 * sq->nu;
+  sc->t_end = sq->t_end;
   sc->body = VSPH_EQUATIONS_BODY_NONE;
-  sc->U_max = fabs(sc->v[P_A0]) * L / sqrt(2.0); /* at the corners */
+  sc->U_max = fabs(sq->A0) * L / sqrt(2.0); /* at the corners */
   struct vsph_poisson *ps = NULL;
   const int st = solve(sc, 64, &ps); /* pressure range for c0 only */
   if (st) return st;
@@ -83,11 +86,13 @@ static int setup(struct vsph_scene *sc) {
     }
   vsph_poisson_free(ps);
   sc->dp_max = pmax - pmin;
-  sc->c0 = vsph_scene_sound_speed(sc, P_C0);
-  sc->d[0] = L;
-  sc->d[1] = sc->v[P_A0];
+  sc->c0 = vsph_scene_sound_speed(sc, sq->c0);
+  if (!(sc->c0 > 0.0))
+    VSPH_FAIL(VSPH_EINVAL,
+              "stretching-square: the flow is at rest and no sound speed "
+              "is given (set Scene:c0)");
   /* the square stretches to L e^{A0 t}/2 along x: keep a wide box */
-  const double reach = 0.5 * L * exp(fabs(sc->v[P_A0]) * sc->t_end) + 2.0 * L;
+  const double reach = 0.5 * L * exp(fabs(sq->A0) * sc->t_end) + 2.0 * L;
   for (int k = 0; k < 2; k++) {
     sc->box_lo[k] = -reach;
     sc->box_hi[k] = reach;
@@ -97,18 +102,22 @@ static int setup(struct vsph_scene *sc) {
 
 static int init(const struct vsph_scene *sc, size_t res,
                 struct vsph_particles **out) {
+  const struct vsph_scene_square *sq = &sc->u.square;
   struct vsph_lattice_props lp = {.dim = 2};
-  int st = vsph_lattice_square(&lp, sc->v[P_L], res, out);
+  int st = vsph_lattice_square(&lp, sq->L, res, out);
   if (st) return st;
   struct vsph_particles *p = *out;
-  const size_t n = sc->v[P_GRID] > 0 ? (size_t)sc->v[P_GRID] : 4 * res;
+  const size_t n = sq->poisson_grid > 0 ? sq->poisson_grid : 4 * res;
   struct vsph_poisson *ps = NULL;
-  if ((st = solve(sc, n < 16 ? 16 : n, &ps))) return st;
-  const double A0 = sc->v[P_A0];
+  if ((st = solve(sc, n < 16 ? 16 : n, &ps))) {
+    vsph_particles_free(p);
+    *out = NULL;
+    return st;
+  }
   for (size_t i = 0; i < p->n; i++) {
     const double x = p->pos[0][i], y = p->pos[1][i];
-    p->vel[0][i] = A0 * x;
-    p->vel[1][i] = -A0 * y;
+    p->vel[0][i] = sq->A0 * x;
+    p->vel[1][i] = -sq->A0 * y;
     vsph_scene_set_pressure(sc, p, i, vsph_poisson_interp(ps, x, y));
   }
   vsph_poisson_free(ps);
@@ -120,7 +129,7 @@ const struct vsph_scene_type vsph_stretching_square_type = {
     .description = "free square under pure strain (Sec. VI B)",
     .length_name = "L",
     .params = params,
-    .nparams = NP,
+    .nparams = sizeof params / sizeof params[0],
     .setup = setup,
     .init = init,
 };

@@ -1,4 +1,4 @@
-#include "plot.h"
+#include "html.h"
 
 #include <cmark-gfm-core-extensions.h>
 #include <cmark-gfm.h>
@@ -7,39 +7,7 @@
 #include <string.h>
 
 #include "../common/status.h"
-#include "writers.h"
-
-int vsph_plot_write(const struct vsph_plot *pl) {
-  char gp[512];
-  snprintf(gp, sizeof gp, "%s.gp", pl->name);
-  FILE *f = vsph_writers_open(pl->dir, gp);
-  if (!f) return VSPH_EIO;
-  fprintf(f,
-          "# vsph report figure: gnuplot %s.gp makes %s.png\n"
-          "set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11'\n"
-          "set output '%s.png'\nset datafile separator ','\n"
-          "set title \"%s\"\nset xlabel \"%s\"\nset ylabel \"%s\"\n"
-          "set grid\nset key outside right top\n%s%s%s\n",
-          pl->name, pl->name, pl->name, pl->title, pl->xlabel, pl->ylabel,
-          pl->logx ? "set logscale x\nset format x '10^{%L}'\n" : "",
-          pl->logy ? "set logscale y\nset format y '10^{%L}'\n" : "",
-          pl->extra ? pl->extra : "");
-  fprintf(f, "plot ");
-  for (size_t k = 0; k < pl->n; k++)
-    fprintf(f, "%s'%s' skip 1 using %s with %s title \"%s\"",
-            k ? ", \\\n     " : "", pl->s[k].file, pl->s[k].using,
-            pl->s[k].style, pl->s[k].title);
-  fprintf(f, "\n");
-  const int st = vsph_writers_close(f, pl->dir, gp);
-  if (st) return st;
-  char cmd[1200];
-  snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot '%s' 2> '%s.log'", pl->dir, gp,
-           pl->name);
-  if (system(cmd) != 0)
-    VSPH_FAIL(VSPH_EIO, "gnuplot failed on %s/%s (see %s.log)", pl->dir, gp,
-              pl->name);
-  return VSPH_OK;
-}
+#include "files.h"
 
 static void base64(FILE *f, const unsigned char *d, size_t n) {
   static const char tb[] =
@@ -55,12 +23,12 @@ static void base64(FILE *f, const unsigned char *d, size_t n) {
   }
 }
 
-int vsph_plot_html(const char *dir, const char *md, const char *html,
-                   const char *title) {
+int vsph_html_render(const char *dir, const char *md, const char *html,
+                     const char *title) {
   char path[1024];
   snprintf(path, sizeof path, "%s/%s", dir, md);
   size_t len;
-  char *text = vsph_writers_slurp(path, &len);
+  char *text = vsph_files_slurp(path, &len);
   if (!text) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
   cmark_gfm_core_extensions_ensure_registered();
   cmark_parser *ps = cmark_parser_new(CMARK_OPT_DEFAULT);
@@ -79,7 +47,7 @@ int vsph_plot_html(const char *dir, const char *md, const char *html,
   cmark_parser_free(ps);
   free(text);
   if (!body) VSPH_FAIL(VSPH_ENOMEM, "cmark-gfm rendered nothing");
-  FILE *f = vsph_writers_open(dir, html);
+  FILE *f = vsph_files_open(dir, html);
   if (!f) {
     free(body);
     return VSPH_EIO;
@@ -110,7 +78,7 @@ int vsph_plot_html(const char *dir, const char *md, const char *html,
     if (nlen > 4 && !strcmp(name + strlen(name) - 4, ".png") &&
         !strchr(name, ':')) {
       snprintf(path, sizeof path, "%s/%s", dir, name);
-      png = vsph_writers_slurp(path, &plen);
+      png = vsph_files_slurp(path, &plen);
     }
     if (png) {
       fputs("src=\"data:image/png;base64,", f);
@@ -125,5 +93,5 @@ int vsph_plot_html(const char *dir, const char *md, const char *html,
   fputs(c, f);
   fputs("</body></html>\n", f);
   free(body);
-  return vsph_writers_close(f, dir, html);
+  return vsph_files_close(f, dir, html);
 }

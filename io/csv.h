@@ -1,0 +1,39 @@
+#ifndef VSPH_IO_CSV_H
+#define VSPH_IO_CSV_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+/** @file csv.h
+ *  @brief Comma-separated tables with one header row, the format every
+ *  vsph table and figure keeps its data in (gnuplot, spreadsheets and
+ *  pandas open it directly): written atomically, and read back into
+ *  columns looked up by their header name. */
+
+/** @brief Open DIR/NAME for writing (atomically, see files.h) and write
+ *  the header row @p header ("t,Ek,Ep"). NULL after reporting. */
+FILE *vsph_csv_open(const char *dir, const char *name, const char *header);
+
+/** @brief Close a table from vsph_csv_open. @return VSPH_OK or VSPH_EIO. */
+int vsph_csv_close(FILE *f, const char *dir, const char *name);
+
+/** A table read back: numeric columns, stored column by column. */
+struct vsph_csv {
+  size_t ncol;  /*!< columns */
+  size_t nrow;  /*!< data rows (rows that did not parse are skipped) */
+  char **names; /*!< header names */
+  double *data; /*!< column c is data[c * nrow ...] */
+};
+
+/** @brief Read the CSV file @p path (header row, then numbers; an empty
+ *  field or "nan" reads as NaN). NULL after reporting if it cannot be read
+ *  or has no header. */
+struct vsph_csv *vsph_csv_read(const char *path);
+
+/** @brief Free; NULL is a no-op. */
+void vsph_csv_free(struct vsph_csv *t);
+
+/** @brief The column called @p name (nrow values), or NULL. */
+const double *vsph_csv_column(const struct vsph_csv *t, const char *name);
+
+#endif /* VSPH_IO_CSV_H */

@@ -1,0 +1,85 @@
+#include "files.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "../common/status.h"
+
+/* Longest path the writers build. */
+enum { PATH_MAX_LEN = 4096 };
+
+FILE *vsph_files_open(const char *dir, const char *name) {
+  char path[PATH_MAX_LEN];
+  snprintf(path, sizeof path, "%s/%s.tmp", dir, name);
+  FILE *f = fopen(path, "w");
+  if (!f)
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot write %s: %s",
+                       path, strerror(errno));
+  return f;
+}
+
+int vsph_files_close(FILE *f, const char *dir, const char *name) {
+  char tmp[PATH_MAX_LEN], path[PATH_MAX_LEN];
+  snprintf(tmp, sizeof tmp, "%s/%s.tmp", dir, name);
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  errno = 0;
+  const int bad = ferror(f);
+  const int closed = fclose(f);
+  if (bad || closed != 0 || rename(tmp, path) != 0) {
+    const int err = errno;
+    remove(tmp);
+    VSPH_FAIL(VSPH_EIO, "cannot write %s: %s", path,
+              err ? strerror(err) : "write error");
+  }
+  return VSPH_OK;
+}
+
+void vsph_files_discard(FILE *f, const char *dir, const char *name) {
+  char tmp[PATH_MAX_LEN];
+  snprintf(tmp, sizeof tmp, "%s/%s.tmp", dir, name);
+  if (f) fclose(f);
+  remove(tmp);
+}
+
+int vsph_files_write(const char *dir, const char *name, const char *text) {
+  FILE *f = vsph_files_open(dir, name);
+  if (!f) return VSPH_EIO;
+  fputs(text, f);
+  return vsph_files_close(f, dir, name);
+}
+
+int vsph_files_mkdir(const char *dir) {
+  char buf[PATH_MAX_LEN];
+  snprintf(buf, sizeof buf, "%s", dir);
+  for (char *c = buf + 1; *c; c++) {
+    if (*c != '/') continue;
+    *c = '\0';
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+      VSPH_FAIL(VSPH_EIO, "cannot create %s: %s", buf, strerror(errno));
+    *c = '/';
+  }
+  if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+    VSPH_FAIL(VSPH_EIO, "cannot create %s: %s", buf, strerror(errno));
+  return VSPH_OK;
+}
+
+char *vsph_files_slurp(const char *path, size_t *len) {
+  FILE *f = fopen(path, "rb");
+  if (!f) return NULL;
+  char *b = NULL;
+  long n = -1;
+  if (fseek(f, 0, SEEK_END) == 0) n = ftell(f);
+  if (n >= 0 && fseek(f, 0, SEEK_SET) == 0) b = malloc((size_t)n + 1);
+  if (b && fread(b, 1, (size_t)n, f) != (size_t)n) {
+    free(b);
+    b = NULL;
+  }
+  fclose(f);
+  if (!b) return NULL;
+  b[n] = '\0';
+  if (len) *len = (size_t)n;
+  return b;
+}

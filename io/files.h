@@ -1,0 +1,41 @@
+#ifndef VSPH_IO_FILES_H
+#define VSPH_IO_FILES_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+/** @file files.h
+ *  @brief Files as vsph writes them: each result file is written to a
+ *  temporary name and renamed into place when complete, so a reader never
+ *  sees half a file; folders are created with their parents; whole files
+ *  are read back for the report. The lowest layer of io/: every other
+ *  writer goes through it. */
+
+/** @brief Open DIR/NAME.tmp for writing; NULL after reporting on failure.
+ *  @note Pair it with vsph_files_close, which renames it to DIR/NAME. */
+FILE *vsph_files_open(const char *dir, const char *name);
+
+/** @brief Close a file from vsph_files_open and rename it into place,
+ *  checking the stream's error flag and fclose first.
+ *  @return VSPH_OK, or VSPH_EIO (the temporary is removed; the message
+ *  names the file). */
+int vsph_files_close(FILE *f, const char *dir, const char *name);
+
+/** @brief Close a file from vsph_files_open without keeping it (after a
+ *  failure elsewhere): the temporary is removed. */
+void vsph_files_discard(FILE *f, const char *dir, const char *name);
+
+/** @brief Write @p text to DIR/NAME atomically. @return VSPH_OK or
+ *  VSPH_EIO. */
+int vsph_files_write(const char *dir, const char *name, const char *text);
+
+/** @brief Create directory @p dir and its parents. @return VSPH_OK or
+ *  VSPH_EIO. */
+int vsph_files_mkdir(const char *dir);
+
+/** @brief A whole file as a NUL-terminated string (caller frees), its
+ *  length in @p len if not NULL; NULL if it cannot be read (not reported:
+ *  a missing cache file is normal). */
+char *vsph_files_slurp(const char *path, size_t *len);
+
+#endif /* VSPH_IO_FILES_H */

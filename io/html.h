@@ -1,0 +1,14 @@
+#ifndef VSPH_IO_HTML_H
+#define VSPH_IO_HTML_H
+
+/** @file html.h
+ *  @brief A Markdown report rendered to one self-contained HTML page with
+ *  cmark-gfm (GitHub-flavoured tables), every local PNG embedded as a data
+ *  URI so the page can be mailed or archived alone. */
+
+/** @brief Render DIR/MD to DIR/HTML (atomically) under @p title.
+ *  @return VSPH_OK, VSPH_EIO or VSPH_ENOMEM. */
+int vsph_html_render(const char *dir, const char *md, const char *html,
+                     const char *title);
+
+#endif /* VSPH_IO_HTML_H */

@@ -1,0 +1,229 @@
+#include "rundir.h"
+
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../analysis/references.h"
+#include "../common/consts.h"
+#include "../common/params.h"
+#include "../common/status.h"
+#include "../kernels/kernel.h"
+#include "../solver/integrate.h"
+#include "../solver/run.h"
+#include "../solver/scene.h"
+#include "../solver/viscous.h"
+#include "csv.h"
+#include "files.h"
+#include "json.h"
+#include "vtk.h"
+
+/* Every parameter of the run, defaults filled in, section by section. */
+static int write_used(struct vsph_params *prm, const char *dir) {
+  FILE *f = vsph_files_open(dir, "used_parameters.yml");
+  if (!f) return VSPH_EIO;
+  fprintf(f, "# vsph %s: every parameter of this run, defaults filled in\n",
+          VSPH_VERSION);
+  const char *sections[2] = {"Solver", "Scene"};
+  for (int s = 0; s < 2; s++) {
+    fprintf(f, "%s:\n", sections[s]);
+    const size_t len = strlen(sections[s]);
+    for (size_t i = 0; i < vsph_params_count(prm); i++) {
+      const char *k, *v;
+      int used;
+      vsph_params_entry(prm, i, &k, &v, &used);
+      if (!strncmp(k, sections[s], len) && k[len] == ':')
+        fprintf(f, "  %s: %s\n", k + len + 1, v);
+    }
+  }
+  return vsph_files_close(f, dir, "used_parameters.yml");
+}
+
+static int write_run_json(const struct vsph_run *run,
+                          const struct vsph_rundir_result *res, double bytes) {
+  const struct vsph_run_props *rp = &run->props;
+  cJSON *o = cJSON_CreateObject();
+  cJSON_AddStringToObject(o, "version", VSPH_VERSION);
+  cJSON_AddStringToObject(o, "source_hash", vsph_source_hash_id);
+  cJSON_AddStringToObject(o, "scene", run->scene.type->name);
+  cJSON_AddStringToObject(o, "visc", rp->visc);
+  cJSON_AddStringToObject(o, "kernel", rp->kernel);
+  cJSON_AddNumberToObject(o, "res", (double)rp->res);
+  cJSON_AddNumberToObject(o, "n_particles", (double)res->n_particles);
+  cJSON_AddNumberToObject(o, "h", res->h);
+  cJSON_AddNumberToObject(o, "dx", res->dx);
+  cJSON_AddNumberToObject(o, "c0", res->c0);
+  cJSON_AddNumberToObject(o, "mu", res->mu);
+  cJSON_AddNumberToObject(o, "U_max", run->scene.U_max);
+  cJSON_AddNumberToObject(o, "t_end", run->t_end);
+  cJSON_AddNumberToObject(o, "t", res->t);
+  cJSON_AddNumberToObject(o, "steps", (double)res->steps);
+  cJSON_AddNumberToObject(o, "threads", omp_get_max_threads());
+  cJSON_AddNumberToObject(o, "wall_s", res->wall_s);
+  vsph_json_number(o, "pairs_per_s",
+                   res->wall_s > 0 ? res->pairs / res->wall_s : (double)NAN);
+  vsph_json_number(o, "particle_steps_per_s",
+                   res->wall_s > 0 ? (double)res->n_particles *
+                                         (double)res->steps / res->wall_s
+                                   : (double)NAN);
+  cJSON_AddNumberToObject(o, "memory_bytes", bytes);
+  cJSON_AddNumberToObject(o, "pvwf_fallback_particles",
+                          (double)vsph_run_fallbacks(run));
+  cJSON_AddStringToObject(o, "status", res->unstable ? "unstable" : "ok");
+  if (res->unstable) {
+    cJSON_AddNumberToObject(o, "unstable_time", res->unstable_time);
+    cJSON_AddStringToObject(o, "unstable_reason", res->reason);
+  }
+  return vsph_json_write(o, res->dir, "run.json");
+}
+
+/* The files written while the run goes on. */
+struct outputs {
+  const char *dir;
+  FILE *csv;
+  struct vsph_vtk_pvd pvd;
+  size_t nsnap;
+};
+
+static int write_row(struct outputs *o, struct vsph_run *run,
+                     struct vsph_references_scene *ref) {
+  struct vsph_run_row row;
+  double Er, dEr;
+  int st = vsph_run_row(run, &row);
+  if (!st) st = vsph_references_scene_eval(ref, row.t, &Er, &dEr);
+  if (st) return st;
+  const struct vsph_equations_energy *en = &row.en;
+  const struct vsph_equations_budget *b = &row.b;
+  fprintf(o->csv,
+          "%.10g,%.12e,%.12e,%.12e,%.12e,%.12e,%.6e,%.6e,%.6e,%.12e,"
+          "%.12e,%.12e,%.12e\n",
+          row.t, en->Ek, en->Ep, en->Ec, b->P_visc, b->P_delta, b->residual,
+          en->P[0], en->P[1], en->Lz, b->dEk, Er, dEr);
+  if (fflush(o->csv) != 0 || ferror(o->csv))
+    VSPH_FAIL(VSPH_EIO, "cannot write %s/energy.csv", o->dir);
+  return VSPH_OK;
+}
+
+static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
+  char name[64];
+  snprintf(name, sizeof name, "snap_%04zu.vtk", o->nsnap++);
+  const struct vsph_integrate *s = run->integ;
+  const int st = vsph_vtk_write(o->dir, name, s->p, s->n_fluid, s->t);
+  return st ? st : vsph_vtk_pvd_add(&o->pvd, s->t, name);
+}
+
+/* The time loop: rows and snapshots as the driver says they are due. */
+static int time_loop(struct outputs *o, struct vsph_run *run,
+                     struct vsph_references_scene *ref, FILE *progress,
+                     struct vsph_rundir_result *res) {
+  const double t0 = omp_get_wtime();
+  double last = t0;
+  int st = VSPH_OK;
+  for (;;) {
+    if ((run->due & VSPH_RUN_ROW) && (st = write_row(o, run, ref))) break;
+    if ((run->due & VSPH_RUN_SNAPSHOT) && (st = write_snapshot(o, run))) break;
+    if (run->state != VSPH_RUN_RUNNING) break;
+    if ((st = vsph_run_iterate(run))) break;
+    const double now = omp_get_wtime();
+    if (progress && now - last > 2.0) {
+      last = now;
+      const double frac = vsph_run_time(run) / run->t_end;
+      fprintf(progress,
+              "vsph run: t = %.4g / %g (%.1f%%), step %zu, %.3g pairs/s, "
+              "ETA %.0f s\n",
+              vsph_run_time(run), run->t_end, 100 * frac, vsph_run_steps(run),
+              run->pairs / (now - t0),
+              (now - t0) * (1 - frac) / fmax(frac, 1e-9));
+    }
+  }
+  res->wall_s = omp_get_wtime() - t0;
+  return st;
+}
+
+int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
+                        const char *dir, FILE *progress,
+                        struct vsph_rundir_result *res) {
+  memset(res, 0, sizeof *res);
+  const struct vsph_scene_type *type = vsph_scene_find(scene);
+  if (!type)
+    VSPH_FAIL(VSPH_EINVAL, "unknown scene '%s' (see vsph scenes)", scene);
+  struct vsph_run_props rp;
+  struct vsph_scene sc;
+  int st = vsph_run_props_init(&rp, prm);
+  if (!st) st = vsph_scene_init(&sc, type, prm);
+  if (st) return st;
+  const char *unused = vsph_params_unused(prm);
+  if (unused) VSPH_FAIL(VSPH_EINVAL, "unknown parameter '%s'", unused);
+  if (dir)
+    snprintf(res->dir, sizeof res->dir, "%s", dir);
+  else
+    snprintf(res->dir, sizeof res->dir, "runs/%s-%s-%zu", type->name, rp.visc,
+             rp.res);
+  struct vsph_run *run = NULL;
+  if ((st = vsph_run_alloc(&rp, &sc, &run))) return st;
+  struct vsph_references_scene *ref = vsph_references_scene_alloc(&run->scene);
+  if (!ref) {
+    vsph_run_free(run);
+    return VSPH_ELIB;
+  }
+  /* Only now, with every input checked, write anything. */
+  struct outputs o = {.dir = res->dir};
+  if ((st = vsph_files_mkdir(res->dir)) || (st = write_used(prm, res->dir)))
+    goto done;
+  char path[600];
+  snprintf(path, sizeof path, "%s/energy.csv", res->dir);
+  if (!(o.csv = fopen(path, "w"))) {
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot write %s", path);
+    st = VSPH_EIO;
+    goto done;
+  }
+  fprintf(o.csv,
+          "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,Ek_ref,"
+          "dEk_ref\n");
+  if (rp.snapshots > 0 && (st = vsph_vtk_pvd_open(&o.pvd, res->dir))) goto done;
+  res->n_particles = run->n_fluid;
+  res->h = run->h;
+  res->dx = run->dx;
+  res->c0 = run->scene.c0;
+  res->mu = run->scene.mu;
+  if (progress)
+    fprintf(progress,
+            "vsph run: %s, %s, %s, %zu particles, h = %.4g, c0 = %.4g, "
+            "t_end = %g -> %s\n",
+            type->name, rp.visc, rp.kernel, run->n_fluid, run->h, run->scene.c0,
+            run->t_end, res->dir);
+  st = time_loop(&o, run, ref, progress, res);
+  res->unstable = run->state == VSPH_RUN_UNSTABLE;
+  res->unstable_time = run->t_unstable;
+  snprintf(res->reason, sizeof res->reason, "%s", run->reason);
+  res->steps = vsph_run_steps(run);
+  res->t = vsph_run_time(run);
+  res->pairs = run->pairs;
+  if (!st && fclose(o.csv) != 0) {
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot write %s", path);
+    st = VSPH_EIO;
+  }
+  o.csv = NULL;
+  if (o.pvd.f) {
+    const int c = vsph_vtk_pvd_close(&o.pvd);
+    if (!st) st = c;
+  }
+  if (!st) st = write_run_json(run, res, (double)vsph_run_bytes(run));
+  if (!st && progress) {
+    if (res->unstable)
+      fprintf(progress,
+              "vsph run: unstable at t = %.6g: %s (output kept in %s)\n",
+              res->unstable_time, res->reason, res->dir);
+    else
+      fprintf(progress, "vsph run: done, %zu steps in %.2f s (%.3g pairs/s)\n",
+              res->steps, res->wall_s, res->pairs / res->wall_s);
+  }
+done:
+  if (o.csv) fclose(o.csv);
+  if (o.pvd.f) fclose(o.pvd.f);
+  vsph_references_scene_free(ref);
+  vsph_run_free(run);
+  return st;
+}

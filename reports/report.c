@@ -1,0 +1,284 @@
+/* The report's driver: its parts in order, their cache, the assembly of
+ * report.md and report.html, baseline.csv and run.json; and the helpers the
+ * parts share (claims, prose, figures, fitted slopes). */
+#include "report.h"
+
+#include <cjson/cJSON.h>
+#include <gsl/gsl_integration.h>
+#include <math.h>
+#include <omp.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "../common/consts.h"
+#include "../common/status.h"
+#include "../io/csv.h"
+#include "../io/files.h"
+#include "../io/html.h"
+#include "../io/json.h"
+#include "../io/plot.h"
+#include "report_internal.h"
+
+struct part {
+  const char *name;
+  int (*fn)(struct vsph_report *);
+  int cached; /* 1: skipped when its key matches (cheap, no runs) */
+  const char *what;
+};
+
+static const struct part PARTS[] = {
+    {"tensors", vsph_report_tensors_write, 1,
+     "F, G, N, M against theory; particle sums; C_F, C_N"},
+    {"profiles", vsph_report_profiles_write, 1,
+     "the tensors against depth (figures)"},
+    {"scaling", vsph_report_scaling_write, 1,
+     "1/h surface scaling, slopes; interior convergence"},
+    {"dissipation", vsph_report_dissipation_write, 1,
+     "THEORY 4 dissipation integrals against resolution and h/dx"},
+    {"scenes", vsph_report_scenes_write, 0,
+     "the three scenes, each formulation, against the references"},
+    {"convergence", vsph_report_convergence_write, 0,
+     "error against resolution, fitted order"},
+    {"speed", vsph_report_speed_write, 0, "wall time against error"},
+    {"stability", vsph_report_stability_write, 0,
+     "hard cases: PVWF, high Re, perturbed start, low c0, CFL"},
+    {"claims", vsph_report_claims_write, 0,
+     "the paper's claims beside our figures"},
+};
+#define NPARTS (sizeof PARTS / sizeof PARTS[0])
+_Static_assert(NPARTS <= 8 * sizeof(unsigned long), "part mask too narrow");
+
+size_t vsph_report_part_count(void) { return NPARTS; }
+
+const char *vsph_report_part_name(size_t p) {
+  return p < NPARTS ? PARTS[p].name : NULL;
+}
+
+const char *vsph_report_part_what(size_t p) {
+  return p < NPARTS ? PARTS[p].what : NULL;
+}
+
+int vsph_report_part_find(const char *name) {
+  for (size_t p = 0; p < NPARTS; p++)
+    if (!strcmp(PARTS[p].name, name)) return (int)p;
+  return -1;
+}
+
+/* --------------------------------------------------------------- helpers */
+
+int vsph_report_claim(struct vsph_report *R, const char *claim,
+                      const char *paper, const char *ours,
+                      const char *verdict) {
+  if (R->nclaims == R->cap_claims) {
+    const size_t cap = R->cap_claims ? 2 * R->cap_claims : 32;
+    struct vsph_report_claim *c = realloc(R->claims, cap * sizeof *c);
+    if (!c) VSPH_FAIL(VSPH_ENOMEM, "cannot grow the claims table");
+    R->claims = c;
+    R->cap_claims = cap;
+  }
+  struct vsph_report_claim *c = &R->claims[R->nclaims++];
+  snprintf(c->claim, sizeof c->claim, "%s", claim);
+  snprintf(c->paper, sizeof c->paper, "%s", paper);
+  snprintf(c->ours, sizeof c->ours, "%s", ours);
+  snprintf(c->verdict, sizeof c->verdict, "%s", verdict);
+  return VSPH_OK;
+}
+
+int vsph_report_say(struct vsph_report *R, const char *name) {
+  const int st = vsph_text_write(R->md, name, &R->tv);
+  vsph_text_clear(&R->tv);
+  return st;
+}
+
+int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
+                       const char *caption) {
+  const int st = vsph_plot_write(pl);
+  if (st) return st;
+  fprintf(R->md, "![%s](%s.png)\n\n*Figure: %s*\n\n", pl->title, pl->name,
+          caption);
+  return VSPH_OK;
+}
+
+int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
+                           const char *name) {
+  char caption[1024];
+  const int st = vsph_text_format(caption, sizeof caption, name, &R->tv);
+  vsph_text_clear(&R->tv);
+  return st ? st : vsph_report_figure(R, pl, caption);
+}
+
+/* ---------------------------------------------------------------- driver */
+
+static int write_baseline(struct vsph_report *R) {
+  FILE *f = vsph_csv_open(R->dir, "baseline.csv",
+                          "scene,visc,res,t_end,ek_final,diss0,stable");
+  if (!f) return VSPH_EIO;
+  int st = VSPH_OK;
+  for (size_t i = 0; i < vsph_report_runs_baseline_count() && !st; i++) {
+    struct vsph_report_baseline b;
+    st = vsph_report_runs_baseline(R, i, &b);
+    if (!st)
+      fprintf(f, "%s,%s,%zu,%g,%.10e,%.10e,%d\n", b.scene, b.visc, b.res,
+              b.t_end, b.ek_final, b.diss0, b.ok);
+  }
+  if (st) {
+    vsph_files_discard(f, R->dir, "baseline.csv");
+    return st;
+  }
+  return vsph_csv_close(f, R->dir, "baseline.csv");
+}
+
+/* Run part p into PARTS_DIR/NAME.md unless its cache key matches. */
+static int run_part(struct vsph_report *R, size_t p, const char *parts_dir,
+                    const char *key, int *cached, double *wall) {
+  char md[96], kf[700];
+  snprintf(md, sizeof md, "%s.md", PARTS[p].name);
+  snprintf(kf, sizeof kf, "%s/%s.key", parts_dir, PARTS[p].name);
+  if (PARTS[p].cached) {
+    char *old = vsph_files_slurp(kf, NULL);
+    const int hit = old && !strcmp(old, key);
+    free(old);
+    if (hit) {
+      *cached = 1;
+      fprintf(stderr, "vsph report: %s (cached)\n", PARTS[p].name);
+      return VSPH_OK;
+    }
+  }
+  fprintf(stderr, "vsph report: %s ...\n", PARTS[p].name);
+  const double t = omp_get_wtime();
+  remove(kf);
+  R->md = vsph_files_open(parts_dir, md);
+  if (!R->md) return VSPH_EIO;
+  int st = PARTS[p].fn(R);
+  if (st) {
+    vsph_files_discard(R->md, parts_dir, md);
+    R->md = NULL;
+    return st;
+  }
+  st = vsph_files_close(R->md, parts_dir, md);
+  R->md = NULL;
+  if (!st && PARTS[p].cached) {
+    char kname[96];
+    snprintf(kname, sizeof kname, "%s.key", PARTS[p].name);
+    st = vsph_files_write(parts_dir, kname, key);
+  }
+  *wall = omp_get_wtime() - t;
+  return st;
+}
+
+/* report.md from every part present, then report.html. */
+static int assemble(struct vsph_report *R, const char *parts_dir,
+                    unsigned long want, const int *cached, const double *wall,
+                    const char *stamp) {
+  FILE *md = vsph_files_open(R->dir, "report.md");
+  if (!md) return VSPH_EIO;
+  R->md = md;
+  struct vsph_text_vars *tv = &R->tv;
+  vsph_text_set(tv, "version", "%s", VSPH_VERSION);
+  vsph_text_set(tv, "date", "%s", stamp);
+  vsph_text_set(tv, "fidelity", "%s", R->full ? "full" : "quick");
+  vsph_text_set(tv, "cores", "%d", omp_get_num_procs());
+  vsph_text_set(tv, "threads", "%d", omp_get_max_threads());
+  vsph_text_set(tv, "quick_note", "%s",
+                R->full ? "" : vsph_text_get("report.quick_note"));
+  int st = vsph_report_say(R, "report.head");
+  for (size_t p = 0; p < NPARTS && !st; p++) {
+    char path[700];
+    snprintf(path, sizeof path, "%s/%s.md", parts_dir, PARTS[p].name);
+    char *text = vsph_files_slurp(path, NULL);
+    if (text) {
+      fputs(text, md);
+      free(text);
+    }
+  }
+  if (!st) st = vsph_report_say(R, "report.facts_head");
+  for (size_t p = 0; p < NPARTS && !st; p++) {
+    if (!(want >> p & 1)) continue;
+    if (cached[p])
+      fprintf(md, "| %s | cached |\n", PARTS[p].name);
+    else
+      fprintf(md, "| %s | %.1f |\n", PARTS[p].name, wall[p]);
+  }
+  vsph_text_set(tv, "compiler", "%s", __VERSION__);
+  if (!st) st = vsph_report_say(R, "report.facts_tail");
+  R->md = NULL;
+  if (st) {
+    vsph_files_discard(md, R->dir, "report.md");
+    return st;
+  }
+  if ((st = vsph_files_close(md, R->dir, "report.md"))) return st;
+  return vsph_html_render(R->dir, "report.md", "report.html", "vsph report");
+}
+
+static int write_run_json(const struct vsph_report *R, unsigned long want,
+                          const int *cached, const double *wall,
+                          const char *stamp, double total) {
+  cJSON *o = cJSON_CreateObject();
+  cJSON_AddStringToObject(o, "version", VSPH_VERSION);
+  cJSON_AddStringToObject(o, "source_hash", vsph_source_hash_id);
+  cJSON_AddStringToObject(o, "date", stamp);
+  cJSON_AddStringToObject(o, "fidelity", R->full ? "full" : "quick");
+  cJSON_AddNumberToObject(o, "cores", omp_get_num_procs());
+  cJSON_AddNumberToObject(o, "threads", omp_get_max_threads());
+  cJSON_AddStringToObject(o, "compiler", __VERSION__);
+  cJSON *w = cJSON_CreateObject();
+  for (size_t p = 0; p < NPARTS; p++)
+    if (want >> p & 1) {
+      if (cached[p])
+        cJSON_AddStringToObject(w, PARTS[p].name, "cached");
+      else
+        cJSON_AddNumberToObject(w, PARTS[p].name, wall[p]);
+    }
+  cJSON_AddItemToObject(o, "wall_s", w);
+  cJSON_AddNumberToObject(o, "wall_total_s", total);
+  return vsph_json_write(o, R->dir, "run.json");
+}
+
+int vsph_report_write(const struct vsph_report_props *rp) {
+  const unsigned long all = (1ul << NPARTS) - 1;
+  const unsigned long want = rp->parts ? rp->parts & all : all;
+  char parts_dir[600];
+  snprintf(parts_dir, sizeof parts_dir, "%s/parts", rp->dir);
+  int st = vsph_files_mkdir(parts_dir);
+  if (st) return st;
+  struct vsph_report *R = calloc(1, sizeof *R);
+  if (!R) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the report");
+  R->dir = rp->dir;
+  R->full = rp->full;
+  R->wo = gsl_integration_workspace_alloc(1000);
+  R->wi = gsl_integration_workspace_alloc(1000);
+  if (!R->wo || !R->wi) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot allocate workspaces");
+  }
+  const double t_all = omp_get_wtime();
+  double wall[NPARTS] = {0};
+  int cached[NPARTS] = {0};
+  char key[128];
+  snprintf(key, sizeof key, "vsph %s %s, %s\n", VSPH_VERSION,
+           vsph_source_hash_id, R->full ? "full" : "quick");
+  for (size_t p = 0; p < NPARTS && !st; p++)
+    if (want >> p & 1)
+      st = run_part(R, p, parts_dir, key, &cached[p], &wall[p]);
+  /* the baseline comes with the scenes part (its coarsest runs) */
+  const int scenes = vsph_report_part_find("scenes");
+  if (!st && (want >> scenes & 1)) st = write_baseline(R);
+  const time_t now = time(NULL);
+  char stamp[64];
+  strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
+  if (!st) st = assemble(R, parts_dir, want, cached, wall, stamp);
+  if (!st)
+    st = write_run_json(R, want, cached, wall, stamp, omp_get_wtime() - t_all);
+  if (!st)
+    fprintf(stderr,
+            "vsph report: wrote %s/report.md and report.html (%.0f s)\n",
+            R->dir, omp_get_wtime() - t_all);
+  gsl_integration_workspace_free(R->wo);
+  gsl_integration_workspace_free(R->wi);
+  free(R->claims);
+  free(R);
+  return st;
+}

@@ -1,0 +1,37 @@
+#ifndef VSPH_REPORTS_REPORT_H
+#define VSPH_REPORTS_REPORT_H
+
+#include <stddef.h>
+
+/** @file report.h
+ *  @brief The main job: the report. It runs the analysis (THEORY 2-4) and
+ *  the scenes (THEORY 5-6) part by part and writes report.md, a
+ *  self-contained report.html, the CSV behind every table and figure, the
+ *  figures (PNG beside their gnuplot scripts), the solver runs,
+ *  baseline.csv and run.json into one folder. Runs and cheap parts are
+ *  cached by the version, the source hash and their settings. */
+
+/** What to write. */
+struct vsph_report_props {
+  const char *dir;     /*!< output folder */
+  int full;            /*!< 1: the paper's resolutions and end times */
+  unsigned long parts; /*!< bit p: part p (vsph_report_part_*); 0: all */
+};
+
+/** @brief Number of parts. */
+size_t vsph_report_part_count(void);
+
+/** @brief Name of part @p p ("tensors", ...), or NULL. */
+const char *vsph_report_part_name(size_t p);
+
+/** @brief One line on what part @p p holds, or NULL. */
+const char *vsph_report_part_what(size_t p);
+
+/** @brief Part called @p name, or -1. */
+int vsph_report_part_find(const char *name);
+
+/** @brief Write the report, printing one line per part to stderr.
+ *  @return VSPH_OK or the first failure (reported). */
+int vsph_report_write(const struct vsph_report_props *rp);
+
+#endif /* VSPH_REPORTS_REPORT_H */

@@ -1,0 +1,215 @@
+/* Section 4 of the report: the dissipation integrals of MGF, MEAF and PVWF
+ * on analytic fields (THEORY 4), against resolution, h/dx and a perturbed
+ * lattice, with the error split into consistency, lattice and surface. */
+#include <math.h>
+#include <stdio.h>
+
+#include "../analysis/dissipation.h"
+#include "../common/consts.h"
+#include "../common/status.h"
+#include "../io/csv.h"
+#include "../io/files.h"
+#include "../io/plot.h"
+#include "report_internal.h"
+
+#define NFORM VSPH_VISCOUS_FORM_COUNT
+/* The fields of this section: rotation, strain, mixed. */
+#define NFIELD 3
+
+/* Resolutions, h/dx values and the lattice perturbation of the tables. */
+static const size_t RES[4] = {20, 40, 80, 160};
+static const double HDX[5] = {1.0, VSPH_CONSTS_HDX, 2.0, 3.0, 4.0};
+static const size_t RES_HDX = 80;
+static const double PERTURB = 0.1;
+
+/* The tables of the section: dissipation.csv and the figure data. */
+struct tables {
+  FILE *csv;
+  FILE *res[NFORM];         /* strain on the square against resolution */
+  FILE *hdx[NFORM][NFIELD]; /* each field against h/dx */
+  char res_name[NFORM][64], hdx_name[NFORM][NFIELD][64];
+};
+
+/* One evaluation: its row in dissipation.csv and the Markdown table, and
+ * (if plot) its point (x, |rel|, |lattice|, |surface|) of a figure. */
+static int row(struct vsph_report *R, FILE *csv,
+               const struct vsph_dissipation_props *dp, FILE *plot, double x) {
+  struct vsph_dissipation_result r;
+  const int st = vsph_dissipation_compute(dp, &r);
+  if (st) return st;
+  const char *form = vsph_viscous_name(dp->form);
+  const char *field = vsph_fields_name(dp->field.kind);
+  const char *shape = vsph_dissipation_shape_name(dp->shape);
+  fprintf(csv,
+          "%s,%s,%s,%zu,%.6f,%.2f,%zu,%.12e,%.12e,%.12e,%.6e,%.6e,%.6e,%.6e\n",
+          form, field, shape, dp->nacross, dp->hdx, dp->perturb, r.n_particles,
+          r.P, r.P_exact, r.P_grad, r.rel_error, r.consistency_error,
+          r.lattice_error, r.surface_error);
+  fprintf(R->md,
+          "| %s | %s | %s | %zu | %.3f | %+.4e | %+.4e | %+.4e | %+.4e |\n",
+          form, field, shape, dp->nacross, dp->hdx, r.rel_error,
+          r.consistency_error, r.lattice_error, r.surface_error);
+  if (plot)
+    fprintf(plot, "%.6g,%.6e,%.6e,%.6e\n", x, fabs(r.rel_error),
+            fabs(r.lattice_error), fabs(r.surface_error));
+  return VSPH_OK;
+}
+
+/* The default props with formulation, field, shape, resolution, h/dx and
+ * perturbation set. */
+static int props(struct vsph_dissipation_props *dp, int form, int field,
+                 int shape, size_t res, double hdx, double perturb) {
+  int st = vsph_dissipation_props_init(dp, NULL);
+  if (!st) st = vsph_fields_props_init(&dp->field, field, 2);
+  dp->form = form;
+  dp->shape = shape;
+  dp->nacross = res;
+  dp->hdx = hdx;
+  dp->perturb = perturb;
+  return st;
+}
+
+static int open_tables(struct vsph_report *R, struct tables *tb) {
+  tb->csv = vsph_csv_open(R->dir, "dissipation.csv",
+                          "formulation,field,shape,res,hdx,perturb,"
+                          "n_particles,P,P_exact,P_grad,rel_error,"
+                          "consistency_error,lattice_error,surface_error");
+  if (!tb->csv) return VSPH_EIO;
+  for (int form = 0; form < NFORM; form++) {
+    snprintf(tb->res_name[form], 64, "dissip_res_%s.csv",
+             vsph_viscous_name(form));
+    if (!(tb->res[form] = vsph_csv_open(R->dir, tb->res_name[form],
+                                        "res,rel,lattice,surface")))
+      return VSPH_EIO;
+    for (int field = 0; field < NFIELD; field++) {
+      snprintf(tb->hdx_name[form][field], 64, "dissip_hdx_%s_%s.csv",
+               vsph_viscous_name(form), vsph_fields_name(field));
+      if (!(tb->hdx[form][field] = vsph_csv_open(
+                R->dir, tb->hdx_name[form][field], "hdx,rel,lattice,surface")))
+        return VSPH_EIO;
+    }
+  }
+  return VSPH_OK;
+}
+
+/* Close every table; discard them all after a failure. */
+static int close_tables(struct vsph_report *R, struct tables *tb, int st) {
+  FILE *f[1 + NFORM + NFORM * NFIELD];
+  const char *n[1 + NFORM + NFORM * NFIELD];
+  size_t m = 0;
+  f[m] = tb->csv, n[m++] = "dissipation.csv";
+  for (int form = 0; form < NFORM; form++) {
+    f[m] = tb->res[form], n[m++] = tb->res_name[form];
+    for (int field = 0; field < NFIELD; field++)
+      f[m] = tb->hdx[form][field], n[m++] = tb->hdx_name[form][field];
+  }
+  for (size_t k = 0; k < m; k++) {
+    if (!f[k]) continue;
+    if (st)
+      vsph_files_discard(f[k], R->dir, n[k]);
+    else
+      st = vsph_csv_close(f[k], R->dir, n[k]);
+  }
+  return st;
+}
+
+static int tables(struct vsph_report *R, struct tables *tb) {
+  struct vsph_dissipation_props dp;
+  int st = vsph_dissipation_props_init(&dp, NULL);
+  if (!st) {
+    vsph_text_set(&R->tv, "mu", "%g", dp.mu);
+    st = vsph_report_say(R, "dissipation.intro");
+  }
+  if (!st) st = vsph_report_say(R, "dissipation.table_head");
+  for (int form = 0; form < NFORM && !st; form++)
+    for (int field = 0; field < NFIELD && !st; field++)
+      for (int shape = 0; shape < VSPH_DISSIPATION_SHAPE_COUNT && !st; shape++)
+        for (int r = 0; r < 4 && !st; r++) {
+          const int fig =
+              field == VSPH_FIELDS_STRAIN && shape == VSPH_DISSIPATION_SQUARE;
+          if (!(st = props(&dp, form, field, shape, RES[r], VSPH_CONSTS_HDX,
+                           0.0)))
+            st = row(R, tb->csv, &dp, fig ? tb->res[form] : NULL,
+                     (double)RES[r]);
+        }
+  vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
+  if (!st) st = vsph_report_say(R, "dissipation.by_hdx");
+  if (!st) st = vsph_report_say(R, "dissipation.table_head");
+  for (int form = 0; form < NFORM && !st; form++)
+    for (int field = 0; field < NFIELD && !st; field++)
+      for (int h = 0; h < 5 && !st; h++)
+        if (!(st = props(&dp, form, field, VSPH_DISSIPATION_SQUARE, RES_HDX,
+                         HDX[h], 0.0)))
+          st = row(R, tb->csv, &dp, tb->hdx[form][field], HDX[h]);
+  vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
+  vsph_text_set(&R->tv, "percent", "%g", 100 * PERTURB);
+  vsph_text_set(&R->tv, "seed", "%lu", dp.seed);
+  if (!st) st = vsph_report_say(R, "dissipation.perturbed");
+  if (!st) st = vsph_report_say(R, "dissipation.table_head");
+  for (int form = 0; form < NFORM && !st; form++)
+    for (int field = 0; field < NFIELD && !st; field++)
+      if (!(st = props(&dp, form, field, VSPH_DISSIPATION_SQUARE, RES_HDX,
+                       VSPH_CONSTS_HDX, PERTURB)))
+        st = row(R, tb->csv, &dp, NULL, 0.0);
+  fprintf(R->md, "\n");
+  return st;
+}
+
+static int figures(struct vsph_report *R, const struct tables *tb) {
+  struct vsph_plot a;
+  vsph_plot_init(&a, R->dir, "fig_dissipation_res",
+                 "Pure strain on the square: dissipation error against "
+                 "resolution, h/dx = 4/3",
+                 "particles across the square, L/dx",
+                 "relative error of P (dimensionless)");
+  a.logx = a.logy = 1;
+  snprintf(a.extra, sizeof a.extra, "set xrange [15:200]\n");
+  static const char *const label[NFORM] = {"MGF", "MEAF", "PVWF"};
+  static const char *const pt[NFORM] = {"7", "5", "9"};
+  int st = VSPH_OK;
+  for (int form = 0; form < NFORM && !st; form++) {
+    char title[64], style[64];
+    snprintf(title, sizeof title, "%s total", label[form]);
+    snprintf(style, sizeof style, "linespoints pt %s lw 2 lc %d", pt[form],
+             form + 1);
+    st = vsph_plot_add(&a, tb->res_name[form], "1:2", title, style);
+    if (!st && form != VSPH_VISCOUS_PVWF) { /* PVWF's is rounding */
+      snprintf(title, sizeof title, "%s surface part", label[form]);
+      snprintf(style, sizeof style, "linespoints pt 6 dt 2 lc %d", form + 1);
+      st = vsph_plot_add(&a, tb->res_name[form], "1:4", title, style);
+    }
+  }
+  if (!st)
+    st = vsph_plot_add(&a, tb->res_name[0], "1:(0.5/$1)", "slope -1",
+                       "lines dt 3 lc 'black'");
+  if (!st) st = vsph_report_figure_say(R, &a, "dissipation.caption_res");
+  if (st) return st;
+  struct vsph_plot b;
+  char title[160];
+  snprintf(title, sizeof title,
+           "Lattice error of the dissipation against h/dx (square, %zu "
+           "across)",
+           RES_HDX);
+  vsph_plot_init(&b, R->dir, "fig_dissipation_hdx", title, "h/dx",
+                 "|lattice error| (dimensionless)");
+  b.logx = b.logy = 1;
+  for (int form = 0; form < NFORM && !st; form++)
+    for (int field = 1; field < NFIELD && !st; field++) { /* strain, mixed */
+      char tl[64];
+      snprintf(tl, sizeof tl, "%s, %s", vsph_viscous_name(form),
+               vsph_fields_name(field));
+      st = vsph_plot_add(&b, tb->hdx_name[form][field], "1:3", tl,
+                         "linespoints lw 2");
+    }
+  vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
+  if (!st) st = vsph_report_figure_say(R, &b, "dissipation.caption_hdx");
+  return st ? st : vsph_report_say(R, "dissipation.reading");
+}
+
+int vsph_report_dissipation_write(struct vsph_report *R) {
+  struct tables tb = {0};
+  int st = open_tables(R, &tb);
+  if (!st) st = tables(R, &tb);
+  st = close_tables(R, &tb, st);
+  return st ? st : figures(R, &tb);
+}

@@ -1,0 +1,173 @@
+#ifndef VSPH_REPORTS_REPORT_INTERNAL_H
+#define VSPH_REPORTS_REPORT_INTERNAL_H
+
+/* Internals shared by the files of reports/; never included from another
+ * folder except by the tests. */
+
+#include <gsl/gsl_integration.h>
+#include <stddef.h>
+#include <stdio.h>
+
+#include "../solver/viscous.h"
+#include "text.h"
+
+struct vsph_plot;
+struct vsph_csv;
+
+/** The report's scenes: the three of the paper, in its order. */
+#define VSPH_REPORT_NSCENES 3
+
+/** Runs of one resolution ladder per scene. */
+#define VSPH_REPORT_LADDER 3
+
+/** A scene's ladder: resolutions and end time. */
+struct vsph_report_ladderdef {
+  const char *scene;              /* scene name */
+  size_t res[VSPH_REPORT_LADDER]; /* particles across, coarse first */
+  double t_end;                   /* end time (s) */
+};
+
+/* Figures of one scene's ladder, per formulation and resolution, computed
+ * once per report invocation (convergence, speed and claims read them). */
+struct vsph_report_ladder {
+  double dx[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  double err[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  double wall[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  double pairs[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  int ok[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  double t_unstable[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+};
+
+/* One row of the claims table. */
+struct vsph_report_claim {
+  char claim[256], paper[256], ours[320], verdict[256];
+};
+
+/* The report being written. */
+struct vsph_report {
+  const char *dir; /* output folder */
+  int full;        /* 1: the paper's resolutions and end times */
+  FILE *md;        /* the current part's Markdown */
+  gsl_integration_workspace *wo, *wi; /* quadrature workspaces */
+  struct vsph_report_claim *claims;   /* the claims table (growing) */
+  size_t nclaims, cap_claims;
+  struct vsph_report_ladder ladder[VSPH_REPORT_NSCENES]; /* memo */
+  int have_ladder[VSPH_REPORT_NSCENES];
+  struct vsph_text_vars tv; /* scratch values for the prose blocks */
+};
+
+/* ------------------------------------------------------ report.c helpers */
+
+/* Add a row to the claims table (copied). */
+int vsph_report_claim(struct vsph_report *R, const char *claim,
+                      const char *paper, const char *ours, const char *verdict);
+
+/* Write prose block NAME with the values in R->tv, then clear them. */
+int vsph_report_say(struct vsph_report *R, const char *name);
+
+/* Render figure @p pl and put it in the Markdown with its caption. */
+int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
+                       const char *caption);
+
+/* The same with the caption from prose block NAME and the values in R->tv
+ * (then cleared). */
+int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
+                           const char *name);
+
+/* ----------------------------------------------------- report_runs.c: runs */
+
+/* A solver run the report needs. */
+struct vsph_report_runspec {
+  const char *scene;        /* scene name */
+  const char *visc;         /* formulation name */
+  size_t res;               /* particles across */
+  double t_end;             /* end time (s) */
+  const char *const *extra; /* "Section:key=value" settings, NULL-ended */
+  const char *tag;          /* folder suffix, or NULL */
+};
+
+/* One run's figures, from the cache or a fresh run. */
+struct vsph_report_run {
+  char dir[512];     /* its output folder */
+  int ok;            /* 1: finished, 0: stopped as unstable */
+  double t_unstable; /* when, if unstable */
+  char reason[160];  /* why */
+  double wall_s, pairs;
+  size_t n, steps, res;
+  struct vsph_csv *energy; /* energy.csv */
+  size_t nrow;             /* its rows; the columns: */
+  const double *t, *Ek, *Pv, *res_b, *dEk, *Ekr, *dEkr;
+};
+
+/* The ladder of scene @p sc (0..VSPH_REPORT_NSCENES-1) at the report's
+ * fidelity, or the quick one when @p quick. */
+const struct vsph_report_ladderdef *vsph_report_runs_ladder(
+    const struct vsph_report *R, int sc, int quick);
+
+/* A run through the cache: reuses its folder when its key (version, source
+ * hash and every setting) matches, else runs the solver (io/rundir). */
+int vsph_report_runs_get(struct vsph_report *R,
+                         const struct vsph_report_runspec *rs,
+                         struct vsph_report_run *out);
+
+/* Free a run's loaded data. */
+void vsph_report_runs_free(struct vsph_report_run *r);
+
+/* The stretching square's reference for t > 0: first-order Richardson
+ * extrapolation 2 E(L/dx) - E(L/dx / 2) of the two finest MGF runs, on 101
+ * equally spaced times. */
+struct vsph_report_richardson {
+  double t[101], E[101];
+};
+int vsph_report_runs_richardson(struct vsph_report *R,
+                                struct vsph_report_richardson *rr);
+
+/* Reference E_k at row @p row: the run's own, or the Richardson curve. */
+double vsph_report_runs_eref(const struct vsph_report_run *r, size_t row,
+                             const struct vsph_report_richardson *rr);
+
+/* Decay error max_t |E_k/E_k(0) - E_ref/E_ref(0)|. */
+double vsph_report_runs_error(const struct vsph_report_run *r,
+                              const struct vsph_report_richardson *rr);
+
+/* Initial dissipation error (P_visc(0) - dEk_ref(0)) / |dEk_ref(0)|. */
+double vsph_report_runs_diss0(const struct vsph_report_run *r);
+
+/* Linear interpolation of y(t) on sample times t (NaN outside). */
+double vsph_report_runs_interp(const double *t, const double *y, size_t n,
+                               double x);
+
+/* The figures of scene @p sc's ladder (memoised in R). */
+int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
+                                    struct vsph_report_ladder *out);
+
+/* Baseline figures of the quick ladder's coarsest runs (tests reuse it):
+ * for each scene and formulation, the final decay error E_k/E_k(0) -
+ * E_ref/E_ref(0) (vortex, wave) or the final E_k/E_k(0) (square, no
+ * reference for t > 0), the initial dissipation error and the stability
+ * verdict. */
+struct vsph_report_baseline {
+  char scene[32], visc[16];
+  size_t res;
+  double t_end;
+  double ek_final; /* see above */
+  double diss0;    /* (P_visc(0) - dEk_ref(0)) / |dEk_ref(0)| */
+  int ok;          /* stability verdict */
+};
+size_t vsph_report_runs_baseline_count(void);
+int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
+                              struct vsph_report_baseline *b);
+
+/* -------------------------------------------------------- the parts */
+
+int vsph_report_tensors_write(struct vsph_report *R);
+int vsph_report_profiles_write(struct vsph_report *R);
+int vsph_report_scaling_write(struct vsph_report *R);
+int vsph_report_dissipation_write(struct vsph_report *R);
+int vsph_report_scenes_write(struct vsph_report *R);
+int vsph_report_convergence_write(struct vsph_report *R);
+int vsph_report_speed_write(struct vsph_report *R);
+int vsph_report_stability_write(struct vsph_report *R);
+int vsph_report_claims_write(struct vsph_report *R);
+
+#endif /* VSPH_REPORTS_REPORT_INTERNAL_H */

@@ -1,0 +1,262 @@
+/* The report's solver runs: the resolution ladders, a cache keyed by the
+ * version, the source hash and every setting (so an unchanged run is never
+ * repeated), the error measures the parts share, the stretching square's
+ * Richardson reference, and the regression baseline. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../common/consts.h"
+#include "../common/params.h"
+#include "../common/status.h"
+#include "../io/csv.h"
+#include "../io/files.h"
+#include "../io/json.h"
+#include "../io/rundir.h"
+#include "report_internal.h"
+
+/* Resolution ladders and end times: quick (default) and full (the paper's
+ * resolutions: R/dx 100, L/dx 320, H/dx 240; t_end 100 s, 1 s, 8 s). */
+static const struct vsph_report_ladderdef QUICK[VSPH_REPORT_NSCENES] = {
+    {"vortex-patch", {10, 20, 40}, 20.0},
+    {"stretching-square", {20, 40, 80}, 1.0},
+    {"standing-wave", {10, 20, 40}, 3.0}};
+static const struct vsph_report_ladderdef FULL[VSPH_REPORT_NSCENES] = {
+    {"vortex-patch", {25, 50, 100}, 100.0},
+    {"stretching-square", {80, 160, 320}, 1.0},
+    {"standing-wave", {60, 120, 240}, 8.0}};
+
+const struct vsph_report_ladderdef *vsph_report_runs_ladder(
+    const struct vsph_report *R, int sc, int quick) {
+  return R->full && !quick ? &FULL[sc] : &QUICK[sc];
+}
+
+void vsph_report_runs_free(struct vsph_report_run *r) {
+  vsph_csv_free(r->energy);
+  r->energy = NULL;
+}
+
+/* energy.csv: the columns the parts read, by name. */
+static int load_energy(struct vsph_report_run *r) {
+  char path[600];
+  snprintf(path, sizeof path, "%s/energy.csv", r->dir);
+  r->energy = vsph_csv_read(path);
+  if (!r->energy) return VSPH_EIO;
+  const struct vsph_csv *e = r->energy;
+  r->nrow = e->nrow;
+  r->t = vsph_csv_column(e, "t");
+  r->Ek = vsph_csv_column(e, "Ek");
+  r->Pv = vsph_csv_column(e, "P_visc");
+  r->res_b = vsph_csv_column(e, "residual");
+  r->dEk = vsph_csv_column(e, "dEk_dt");
+  r->Ekr = vsph_csv_column(e, "Ek_ref");
+  r->dEkr = vsph_csv_column(e, "dEk_ref");
+  if (!r->t || !r->Ek || !r->Pv || !r->res_b || !r->dEk || !r->Ekr ||
+      !r->dEkr || r->nrow == 0)
+    VSPH_FAIL(VSPH_EIO, "%s lacks the columns of an energy table", path);
+  return VSPH_OK;
+}
+
+static int load_run_json(struct vsph_report_run *r) {
+  char path[600];
+  snprintf(path, sizeof path, "%s/run.json", r->dir);
+  cJSON *j = vsph_json_read(path);
+  if (!j) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
+  const cJSON *v = cJSON_GetObjectItemCaseSensitive(j, "status");
+  r->ok = cJSON_IsString(v) && !strcmp(v->valuestring, "ok");
+  r->t_unstable = vsph_json_get_number(j, "unstable_time", (double)NAN);
+  v = cJSON_GetObjectItemCaseSensitive(j, "unstable_reason");
+  snprintf(r->reason, sizeof r->reason, "%s",
+           cJSON_IsString(v) ? v->valuestring : "");
+  r->wall_s = vsph_json_get_number(j, "wall_s", (double)NAN);
+  r->pairs = vsph_json_get_number(j, "pairs_per_s", 0.0) * r->wall_s;
+  r->n = (size_t)vsph_json_get_number(j, "n_particles", 0.0);
+  r->steps = (size_t)vsph_json_get_number(j, "steps", 0.0);
+  r->res = (size_t)vsph_json_get_number(j, "res", 0.0);
+  cJSON_Delete(j);
+  return VSPH_OK;
+}
+
+/* The settings of a run as "Section:key=value" lines: its cache key (after
+ * the version and source hash) and its parameters alike. */
+static size_t settings(const struct vsph_report_runspec *rs, int snaps,
+                       char set[][128], size_t cap) {
+  size_t n = 0;
+  snprintf(set[n++], 128, "Solver:visc=%s", rs->visc);
+  snprintf(set[n++], 128, "Solver:res=%zu", rs->res);
+  snprintf(set[n++], 128, "Solver:t_end=%.17g", rs->t_end);
+  snprintf(set[n++], 128, "Solver:snapshots=%d", snaps);
+  for (size_t k = 0; rs->extra && rs->extra[k] && n < cap; k++)
+    snprintf(set[n++], 128, "%s", rs->extra[k]);
+  return n;
+}
+
+int vsph_report_runs_get(struct vsph_report *R,
+                         const struct vsph_report_runspec *rs,
+                         struct vsph_report_run *out) {
+  memset(out, 0, sizeof *out);
+  snprintf(out->dir, sizeof out->dir, "%s/runs/%s-%s-%zu%s%s", R->dir,
+           rs->scene, rs->visc, rs->res, rs->tag ? "-" : "",
+           rs->tag ? rs->tag : "");
+  /* the vortex patch's ladder keeps snapshots for the u_theta profiles */
+  const int snaps = !strcmp(rs->scene, "vortex-patch") && !rs->tag ? 4 : 0;
+  char set[16][128];
+  const size_t nset = settings(rs, snaps, set, 16);
+  char key[2600];
+  int len = snprintf(key, sizeof key, "vsph %s %s\nscene %s\n", VSPH_VERSION,
+                     vsph_source_hash_id, rs->scene);
+  for (size_t k = 0; k < nset && len < (int)sizeof key; k++)
+    len += snprintf(key + len, sizeof key - (size_t)len, "%s\n", set[k]);
+  char path[600];
+  snprintf(path, sizeof path, "%s/key.txt", out->dir);
+  char *old = vsph_files_slurp(path, NULL);
+  const int hit = old && !strcmp(old, key);
+  free(old);
+  if (!hit) {
+    struct vsph_params *prm = vsph_params_alloc();
+    if (!prm) return VSPH_ENOMEM;
+    int st = VSPH_OK;
+    for (size_t k = 0; k < nset && !st; k++) {
+      char *eq = strchr(set[k], '=');
+      if (!eq) {
+        vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                           "setting '%s' lacks '='", set[k]);
+        st = VSPH_EINVAL;
+        break;
+      }
+      *eq = '\0';
+      st = vsph_params_set(prm, set[k], eq + 1);
+    }
+    remove(path); /* a half-finished run never matches */
+    struct vsph_rundir_result rr;
+    if (!st) st = vsph_rundir_execute(prm, rs->scene, out->dir, NULL, &rr);
+    vsph_params_free(prm);
+    if (st) return st;
+    if ((st = vsph_files_mkdir(out->dir))) return st;
+    char *slash = strrchr(path, '/');
+    if ((st = vsph_files_write(out->dir, slash + 1, key))) return st;
+  }
+  int st = load_run_json(out);
+  if (!st) st = load_energy(out);
+  return st;
+}
+
+double vsph_report_runs_interp(const double *t, const double *y, size_t n,
+                               double x) {
+  if (n == 0 || x < t[0] || x > t[n - 1]) return (double)NAN;
+  size_t a = 0, b = n - 1;
+  while (b - a > 1) {
+    const size_t m = (a + b) / 2;
+    if (t[m] <= x)
+      a = m;
+    else
+      b = m;
+  }
+  if (t[b] == t[a]) return y[a];
+  return y[a] + (y[b] - y[a]) * (x - t[a]) / (t[b] - t[a]);
+}
+
+int vsph_report_runs_richardson(struct vsph_report *R,
+                                struct vsph_report_richardson *rr) {
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 1, 0);
+  struct vsph_report_runspec a = {L->scene, "mgf", L->res[1],
+                                  L->t_end, NULL,  NULL};
+  struct vsph_report_runspec b = a;
+  b.res = L->res[2];
+  struct vsph_report_run ra, rb;
+  int st = vsph_report_runs_get(R, &a, &ra);
+  if (!st) st = vsph_report_runs_get(R, &b, &rb);
+  for (int k = 0; !st && k <= 100; k++) {
+    rr->t[k] = L->t_end * k / 100.0;
+    rr->E[k] = 2.0 * vsph_report_runs_interp(rb.t, rb.Ek, rb.nrow, rr->t[k]) -
+               vsph_report_runs_interp(ra.t, ra.Ek, ra.nrow, rr->t[k]);
+  }
+  vsph_report_runs_free(&ra);
+  vsph_report_runs_free(&rb);
+  return st;
+}
+
+double vsph_report_runs_eref(const struct vsph_report_run *r, size_t row,
+                             const struct vsph_report_richardson *rr) {
+  if (rr) return vsph_report_runs_interp(rr->t, rr->E, 101, r->t[row]);
+  return r->Ekr[row];
+}
+
+/* Normalising by the initial values removes the O(Ma^2) offset of E_k(0)
+ * that the weakly compressible start carries (m = rho V with
+ * rho = rho0 + p/c0^2), which no resolution removes and which is not the
+ * viscous formulation's doing. */
+double vsph_report_runs_error(const struct vsph_report_run *r,
+                              const struct vsph_report_richardson *rr) {
+  const double e0 = vsph_report_runs_eref(r, 0, rr);
+  double err = 0.0;
+  for (size_t k = 0; k < r->nrow; k++) {
+    const double e = vsph_report_runs_eref(r, k, rr);
+    if (isfinite(e)) err = fmax(err, fabs(r->Ek[k] / r->Ek[0] - e / e0));
+  }
+  return err;
+}
+
+double vsph_report_runs_diss0(const struct vsph_report_run *r) {
+  return (r->Pv[0] - r->dEkr[0]) / fabs(r->dEkr[0]);
+}
+
+int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
+                                    struct vsph_report_ladder *out) {
+  if (R->have_ladder[sc]) {
+    *out = R->ladder[sc];
+    return VSPH_OK;
+  }
+  struct vsph_report_ladder *lr = &R->ladder[sc];
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+  struct vsph_report_richardson rr;
+  int st = sc == 1 ? vsph_report_runs_richardson(R, &rr) : VSPH_OK;
+  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++)
+    for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
+      struct vsph_report_runspec rs = {
+          L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
+      struct vsph_report_run r;
+      if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+      lr->dx[f][k] = 1.0 / (double)L->res[k]; /* reference length 1 m */
+      lr->err[f][k] = vsph_report_runs_error(&r, sc == 1 ? &rr : NULL);
+      lr->wall[f][k] = r.wall_s;
+      lr->pairs[f][k] = r.pairs;
+      lr->ok[f][k] = r.ok;
+      lr->t_unstable[f][k] = r.t_unstable;
+      vsph_report_runs_free(&r);
+    }
+  if (st) return st;
+  R->have_ladder[sc] = 1;
+  *out = *lr;
+  return VSPH_OK;
+}
+
+size_t vsph_report_runs_baseline_count(void) {
+  return VSPH_REPORT_NSCENES * VSPH_VISCOUS_FORM_COUNT;
+}
+
+int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
+                              struct vsph_report_baseline *b) {
+  if (i >= vsph_report_runs_baseline_count())
+    VSPH_FAIL(VSPH_EINVAL, "no baseline row %zu", i);
+  const int sc = (int)(i / VSPH_VISCOUS_FORM_COUNT);
+  const int f = (int)(i % VSPH_VISCOUS_FORM_COUNT);
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 1);
+  struct vsph_report_runspec rs = {
+      L->scene, vsph_viscous_name(f), L->res[0], L->t_end, NULL, NULL};
+  struct vsph_report_run r;
+  const int st = vsph_report_runs_get(R, &rs, &r);
+  if (st) return st;
+  snprintf(b->scene, sizeof b->scene, "%s", L->scene);
+  snprintf(b->visc, sizeof b->visc, "%s", vsph_viscous_name(f));
+  b->res = L->res[0];
+  b->t_end = L->t_end;
+  const size_t last = r.nrow - 1;
+  b->ek_final =
+      sc == 1 ? r.Ek[last] / r.Ek[0] : (r.Ek[last] - r.Ekr[last]) / r.Ekr[0];
+  b->diss0 = vsph_report_runs_diss0(&r);
+  b->ok = r.ok;
+  vsph_report_runs_free(&r);
+  return VSPH_OK;
+}

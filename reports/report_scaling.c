@@ -1,0 +1,167 @@
+/* Section 3 of the report: the 1/h truncation-error scaling of the viscous
+ * operators at the surface (THEORY 2, Appendix B of the paper), and their
+ * interior convergence on a quadratic field. */
+#include <math.h>
+#include <stdio.h>
+
+#include "../analysis/moments.h"
+#include "../analysis/scaling.h"
+#include "../common/consts.h"
+#include "../common/status.h"
+#include "../io/csv.h"
+#include "../io/files.h"
+#include "../io/plot.h"
+#include "../kernels/kernel.h"
+#include "report_internal.h"
+
+/* The three tables the sweeps fill. */
+struct tables {
+  FILE *csv, *sl, *in;
+};
+
+/* One kernel, dimension and field: the sweep, its rows and (3h Gaussian)
+ * its figure data. */
+static int sweep(struct vsph_report *R, struct tables *tb,
+                 const struct vsph_kernel_type *k, int dim, int fk) {
+  struct vsph_scaling_props sp;
+  int st = vsph_scaling_props_init(&sp, NULL);
+  sp.kernel = k;
+  if (!st) st = vsph_fields_props_init(&sp.field, fk, dim);
+  struct vsph_scaling_result r;
+  if (!st) st = vsph_scaling_surface(&sp, &r);
+  double C_F = 0, C_N = 0;
+  if (!st) st = vsph_moments_constants(k, dim, 1e-12, R->wo, &C_F, &C_N);
+  if (st) return st;
+  const char *fn = vsph_fields_name(fk);
+  if (k == vsph_kernel_get(0)) { /* the 3h Gaussian's sweep, for figures */
+    char name[64];
+    snprintf(name, sizeof name, "scaling_%s_%dd.csv", fn, dim);
+    FILE *f = vsph_csv_open(R->dir, name, "h,mgf,meaf,pvwf,hF,hN");
+    if (!f) return VSPH_EIO;
+    for (size_t l = 0; l < r.levels; l++)
+      fprintf(f, "%.6e,%.6e,%.6e,%.6e,%.10f,%.10f\n", r.h[l], r.magnitude[0][l],
+              r.magnitude[1][l], r.magnitude[2][l], r.hF[l], r.hN[l]);
+    if ((st = vsph_csv_close(f, R->dir, name))) return st;
+  }
+  for (size_t l = 0; l < r.levels; l++)
+    fprintf(tb->csv,
+            "%s,%d,%s,%.6e,%.10f,%.10f,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e\n",
+            k->name, dim, fn, r.h[l], r.hF[l], r.hN[l], r.normal[0][l],
+            r.normal[1][l], r.normal[2][l], r.magnitude[0][l],
+            r.magnitude[1][l], r.magnitude[2][l]);
+  fprintf(tb->sl, "%s,%d,%s", k->name, dim, fn);
+  fprintf(R->md, "| %s | %d | %s", k->name, dim, fn);
+  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++) {
+    if (r.rounding[f]) {
+      fprintf(tb->sl, ",");
+      fprintf(R->md, " | round");
+    } else {
+      fprintf(tb->sl, ",%.6f", r.slope[f]);
+      fprintf(R->md, " | %.4f", r.slope[f]);
+    }
+  }
+  fprintf(tb->sl, "\n");
+  /* half-support theory: h F_ddd = -2 C_F, h N_d = -C_N */
+  fprintf(R->md, " | %.4f | %.4f | %.4f | %.4f |\n", r.hF[0], -2 * C_F, r.hN[0],
+          -C_N);
+  return VSPH_OK;
+}
+
+static int figure(struct vsph_report *R, int dim, int fk) {
+  const char *fn = vsph_fields_name(fk);
+  char pname[64], data[64], title[200];
+  snprintf(pname, sizeof pname, "fig_scaling_%s_%dd", fn, dim);
+  snprintf(data, sizeof data, "scaling_%s_%dd.csv", fn, dim);
+  snprintf(title, sizeof title,
+           "Surface operators, %s field, %d-D, 3h Gaussian, h/dx = 4/3", fn,
+           dim);
+  struct vsph_plot pl;
+  vsph_plot_init(&pl, R->dir, pname, title, "smoothing length h (m)",
+                 "|(div V)_i| at the surface particle (N/m^d)");
+  pl.logx = pl.logy = 1;
+  static const char *const pts[VSPH_VISCOUS_FORM_COUNT] = {
+      "linespoints pt 7 lw 2", "linespoints pt 5 lw 2",
+      "linespoints pt 9 lw 2"};
+  int st = VSPH_OK;
+  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++) {
+    char using[16], label[16];
+    snprintf(using, sizeof using, "1:%d", f + 2);
+    snprintf(label, sizeof label, "%s", vsph_viscous_name(f));
+    for (char *c = label; *c; c++) *c = (char)(*c - 'a' + 'A');
+    st = vsph_plot_add(&pl, data, using, label, pts[f]);
+  }
+  if (!st)
+    st = vsph_plot_add(&pl, data, "1:(1e-3*$1**-1)", "slope -1",
+                       "lines dt 2 lc 'black'");
+  if (st) return st;
+  vsph_text_set(&R->tv, "field", "%s", fn);
+  vsph_text_set(&R->tv, "dim", "%d", dim);
+  vsph_text_set(&R->tv, "data", "%s", data);
+  return vsph_report_figure_say(R, &pl, "scaling.caption");
+}
+
+static int interior(struct vsph_report *R, FILE *in) {
+  int st = vsph_report_say(R, "scaling.interior");
+  for (size_t ki = 0; ki < vsph_kernel_count() && !st; ki++) {
+    struct vsph_scaling_props sp;
+    st = vsph_scaling_props_init(&sp, NULL);
+    sp.kernel = vsph_kernel_get(ki);
+    if (!st) st = vsph_fields_props_init(&sp.field, VSPH_FIELDS_QUADRATIC, 2);
+    const double *hdx;
+    const size_t nh = vsph_scaling_hdx_ladder(&hdx);
+    struct vsph_scaling_interior r;
+    if (!st) st = vsph_scaling_interior(&sp, hdx, nh, &r);
+    for (size_t l = 0; !st && l < r.n; l++) {
+      fprintf(in, "%s,%.6f,%.6e,%.6e\n", sp.kernel->name, r.hdx[l], r.mgf[l],
+              r.meaf[l]);
+      fprintf(R->md, "| %s | %.3f | %.2e | %.2e |\n", sp.kernel->name, r.hdx[l],
+              r.mgf[l], r.meaf[l]);
+    }
+  }
+  return st ? st : vsph_report_say(R, "scaling.interior_note");
+}
+
+int vsph_report_scaling_write(struct vsph_report *R) {
+  struct tables tb = {
+      vsph_csv_open(R->dir, "scaling.csv",
+                    "kernel,dim,field,h,hF_nnn,hN_n,mgf_n,meaf_n,pvwf_n,"
+                    "mgf_abs,meaf_abs,pvwf_abs"),
+      vsph_csv_open(R->dir, "slopes.csv",
+                    "kernel,dim,field,slope_mgf,slope_meaf,slope_pvwf"),
+      vsph_csv_open(R->dir, "interior.csv",
+                    "kernel,hdx,mgf_rel_error,meaf_rel_error")};
+  struct vsph_scaling_props sp;
+  int st =
+      tb.csv && tb.sl && tb.in ? vsph_scaling_props_init(&sp, NULL) : VSPH_EIO;
+  struct vsph_fields_props fp;
+  if (!st) st = vsph_fields_props_init(&fp, VSPH_FIELDS_STRAIN, 2);
+  if (!st) {
+    struct vsph_text_vars *tv = &R->tv;
+    vsph_text_set(tv, "hdx", "%.4g", sp.hdx);
+    vsph_text_set(tv, "halvings", "%zu", sp.levels - 1);
+    vsph_text_set(tv, "h0", "%g", sp.h0);
+    vsph_text_set(tv, "mu", "%g", sp.mu);
+    vsph_text_set(tv, "A", "%g", fp.A);
+    vsph_text_set(tv, "Omega", "%g", fp.Omega);
+    vsph_text_set(tv, "round_tol", "%g", sp.round_tol);
+    st = vsph_report_say(R, "scaling.intro");
+  }
+  for (size_t ki = 0; ki < vsph_kernel_count() && !st; ki++)
+    for (int dim = 2; dim <= 3 && !st; dim++)
+      for (int fk = 0; fk < 2 && !st; fk++)
+        st = sweep(R, &tb, vsph_kernel_get(ki), dim, fk);
+  if (!st) st = vsph_report_say(R, "scaling.patch");
+  for (int dim = 2; dim <= 3 && !st; dim++)
+    for (int fk = 0; fk < 2 && !st; fk++) st = figure(R, dim, fk);
+  if (!st) st = interior(R, tb.in);
+  const char *names[3] = {"scaling.csv", "slopes.csv", "interior.csv"};
+  FILE *files[3] = {tb.csv, tb.sl, tb.in};
+  for (int k = 0; k < 3; k++) {
+    if (!files[k]) continue;
+    if (st)
+      vsph_files_discard(files[k], R->dir, names[k]);
+    else
+      st = vsph_csv_close(files[k], R->dir, names[k]);
+  }
+  return st;
+}

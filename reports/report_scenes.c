@@ -1,0 +1,242 @@
+/* Section 5 of the report: the three scenes with each formulation against
+ * their references (THEORY 5-6): E_k, dE_k/dt, the decay error and the
+ * energy-budget residual, and the vortex patch's u_theta(r) profiles. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../analysis/references.h"
+#include "../common/status.h"
+#include "../io/csv.h"
+#include "../io/files.h"
+#include "../io/plot.h"
+#include "../solver/scene.h"
+#include "report_internal.h"
+
+#define NFORM VSPH_VISCOUS_FORM_COUNT
+
+/* Snapshots of the vortex patch's ladder runs (report_runs.c keeps 4, plus
+ * the one at t = 0). */
+#define NSNAP 5
+
+static const char *const LABEL[NFORM] = {"MGF", "MEAF", "PVWF"};
+
+/* Per-run table for the figures: t, Ek, Eref, dEk/dt, dEk_ref, relative
+ * error, |residual|, |P_visc|. */
+static int write_derived(struct vsph_report *R, const char *name,
+                         const struct vsph_report_run *r,
+                         const struct vsph_report_richardson *rr) {
+  FILE *f = vsph_csv_open(
+      R->dir, name,
+      "t,Ek,Ek_ref,dEk_dt,dEk_ref,rel_err,abs_residual,abs_P_visc");
+  if (!f) return VSPH_EIO;
+  const double e0 = vsph_report_runs_eref(r, 0, rr);
+  for (size_t k = 0; k < r->nrow; k++) {
+    const double e = vsph_report_runs_eref(r, k, rr);
+    fprintf(f, "%.8g,%.10e,%.10e,%.10e,%.10e,%.6e,%.6e,%.6e\n", r->t[k],
+            r->Ek[k], e, r->dEk[k], r->dEkr[k], r->Ek[k] / r->Ek[0] - e / e0,
+            fabs(r->res_b[k]), fabs(r->Pv[k]));
+  }
+  return vsph_csv_close(f, R->dir, name);
+}
+
+/* u_theta(r) of a vortex-patch snapshot (its particles read back from the
+ * VTK file), binned in rings of width R/nbins, beside the Bessel series at
+ * the snapshot's time. */
+static int vortex_profile(struct vsph_report *R, const char *snap,
+                          const char *out, size_t nbins,
+                          const struct vsph_references_vortex *ref,
+                          double *t_snap) {
+  char *text = vsph_files_slurp(snap, NULL);
+  if (!text) VSPH_FAIL(VSPH_EIO, "cannot read %s", snap);
+  const char *tl = strstr(text, "t = ");
+  *t_snap = tl ? strtod(tl + 4, NULL) : (double)NAN;
+  const char *pts = strstr(text, "POINTS ");
+  const char *vel = strstr(text, "VECTORS velocity double");
+  if (!pts || !vel) {
+    free(text);
+    VSPH_FAIL(VSPH_EIO, "%s is not a vsph snapshot", snap);
+  }
+  char *c;
+  const size_t n = strtoul(pts + 7, &c, 10);
+  c = strchr(c, '\n') + 1;
+  double *x = malloc(3 * n * sizeof *x);
+  double *sum = calloc(2 * nbins, sizeof *sum), *cnt = sum + nbins;
+  if (!x || !sum) {
+    free(text);
+    free(x);
+    free(sum);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot bin %s", snap);
+  }
+  for (size_t i = 0; i < 3 * n; i++) x[i] = strtod(c, &c);
+  c = strchr(vel, '\n') + 1;
+  const double R0 = ref->R;
+  for (size_t i = 0; i < n; i++) {
+    const double u = strtod(c, &c), v = strtod(c, &c);
+    (void)strtod(c, &c);
+    const double px = x[3 * i], py = x[3 * i + 1], r = hypot(px, py);
+    const size_t b = (size_t)(r / R0 * (double)nbins);
+    if (b < nbins && r > 0) {
+      sum[b] += (px * v - py * u) / r; /* u_theta */
+      cnt[b] += 1.0;
+    }
+  }
+  free(x);
+  free(text);
+  FILE *f = vsph_csv_open(R->dir, out, "r,u_theta_sph,u_theta_ref");
+  int st = f ? VSPH_OK : VSPH_EIO;
+  for (size_t b = 0; b < nbins && !st; b++) {
+    if (cnt[b] == 0) continue;
+    const double r = (b + 0.5) * R0 / (double)nbins;
+    double w;
+    vsph_references_vortex_eval(ref, r, *t_snap, &w, NULL);
+    fprintf(f, "%.6f,%.8e,%.8e\n", r, sum[b] / cnt[b], w * r);
+  }
+  free(sum);
+  return st ? st : vsph_csv_close(f, R->dir, out);
+}
+
+/* The vortex patch's u_theta(r) at its snapshot times against the Bessel
+ * series, for formulation f: a figure whose Markdown goes to figs. */
+static int vortex_profiles(struct vsph_report *R, FILE *figs, int f,
+                           const struct vsph_report_run *run, size_t res) {
+  struct vsph_scene scene;
+  int st = vsph_scene_init(&scene, &vsph_vortex_patch_type, NULL);
+  if (st) return st;
+  const struct vsph_scene_vortex *vp = &scene.u.vortex;
+  struct vsph_references_vortex *ref =
+      vsph_references_vortex_alloc(vp->R, vp->l2, vp->omega0, vp->nu, 200);
+  if (!ref) return VSPH_ELIB;
+  const char *form = vsph_viscous_name(f);
+  char pname[64], title[200];
+  snprintf(pname, sizeof pname, "fig_vortex_profiles_%s", form);
+  snprintf(title, sizeof title,
+           "Vortex patch, %s: u_{theta}(r) at five times (points) against "
+           "the Bessel series (lines)",
+           form);
+  struct vsph_plot pl;
+  vsph_plot_init(&pl, R->dir, pname, title, "radius r (m)",
+                 "azimuthal velocity u_{theta} (m/s)");
+  for (int k = 0; k < NSNAP && !st; k++) {
+    char snap[700], file[96], tp[48], ts_[48], sp[48], ss[48];
+    snprintf(snap, sizeof snap, "%s/snap_%04d.vtk", run->dir, k);
+    snprintf(file, sizeof file, "profile_%s_%d.csv", form, k);
+    double ts = 0.0;
+    st = vortex_profile(R, snap, file, res / 2, ref, &ts);
+    snprintf(tp, sizeof tp, "SPH t = %.3g s", ts);
+    snprintf(ts_, sizeof ts_, "series t = %.3g s", ts);
+    /* one colour per time, points and line alike */
+    snprintf(sp, sizeof sp, "points pt 7 ps 0.9 lc %d", k + 1);
+    snprintf(ss, sizeof ss, "lines lw 1.5 lc %d", k + 1);
+    if (!st) st = vsph_plot_add(&pl, file, "1:2", tp, sp);
+    if (!st) st = vsph_plot_add(&pl, file, "1:3", ts_, ss);
+  }
+  vsph_references_vortex_free(ref);
+  if (st) return st;
+  FILE *md = R->md;
+  R->md = figs;
+  vsph_text_set(&R->tv, "title", "%s", title);
+  st = vsph_report_figure_say(R, &pl, "scenes.profile_caption");
+  R->md = md;
+  return st;
+}
+
+/* The four figures of a scene: E_k, dE_k/dt, the decay error and the
+ * budget residual, each with MGF, MEAF and PVWF. */
+static int scene_figures(struct vsph_report *R, int sc, char names[NFORM][96],
+                         int square) {
+  const char *scn = vsph_report_runs_ladder(R, sc, 0)->scene;
+  static const char *const what[4] = {"Ek", "dEk", "err", "residual"};
+  static const char *const heading[4] = {
+      "kinetic energy against the reference",
+      "dissipation rate dE_k/dt against the reference",
+      "error of the kinetic-energy decay", "energy-budget residual"};
+  static const char *const ylab[4] = {
+      "kinetic energy E_k (J per metre of depth)",
+      "dE_k/dt (W per metre of depth)", "E_k/E_k(0) - E_{k,ref}/E_{k,ref}(0)",
+      "|d(E_k+E_p+E_c)/dt - P_{visc}| (W/m)"};
+  static const char *const cols[4] = {"1:2", "1:4", "1:6", "1:7"};
+  static const char *const refcol[4] = {"1:3", "1:5", NULL, NULL};
+  int st = VSPH_OK;
+  for (int w = 0; w < 4 && !st; w++) {
+    char pname[96], title[200];
+    snprintf(pname, sizeof pname, "fig_%s_%s", scn, what[w]);
+    snprintf(title, sizeof title, "%s: %s", scn, heading[w]);
+    struct vsph_plot pl;
+    vsph_plot_init(&pl, R->dir, pname, title, "time t (s)", ylab[w]);
+    pl.logy = w == 3;
+    for (int f = 0; f < NFORM && !st; f++)
+      st = vsph_plot_add(&pl, names[f], cols[w], LABEL[f], "lines lw 2");
+    if (!st && refcol[w])
+      st = vsph_plot_add(&pl, names[0], refcol[w],
+                         square && w == 0   ? "Richardson (MGF)"
+                         : square && w == 1 ? "exact at t = 0"
+                                            : "reference",
+                         square && w == 1 ? "points pt 7 ps 2 lc 'black'"
+                                          : "lines dt 2 lw 2 lc 'black'");
+    if (!st && w == 3) /* the viscous power, for scale */
+      st = vsph_plot_add(&pl, names[0], "1:8", "|P_{visc}| (MGF), for scale",
+                         "lines dt 2 lw 2 lc 'black'");
+    if (st) break;
+    if ((st = vsph_plot_write(&pl))) break;
+    fprintf(R->md, "![%s](%s.png)\n\n", title, pname);
+  }
+  return st;
+}
+
+/* One scene: its table, the per-run data, and its figures. */
+static int scene(struct vsph_report *R, int sc) {
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+  const size_t res = L->res[VSPH_REPORT_LADDER - 1];
+  const int square = sc == 1;
+  struct vsph_report_richardson rr;
+  int st = square ? vsph_report_runs_richardson(R, &rr) : VSPH_OK;
+  if (st) return st;
+  vsph_text_set(&R->tv, "scene", "%s", L->scene);
+  vsph_text_set(&R->tv, "res", "%zu", res);
+  vsph_text_set(&R->tv, "t_end", "%g", L->t_end);
+  if ((st = vsph_report_say(R, "scenes.scene_head"))) return st;
+  char names[NFORM][96];
+  char *figbuf = NULL;
+  size_t figlen = 0;
+  FILE *figs = open_memstream(&figbuf, &figlen); /* after the table */
+  if (!figs) VSPH_FAIL(VSPH_ENOMEM, "cannot buffer the figures");
+  for (int f = 0; f < NFORM && !st; f++) {
+    struct vsph_report_runspec rs = {
+        L->scene, vsph_viscous_name(f), res, L->t_end, NULL, NULL};
+    struct vsph_report_run r;
+    if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+    snprintf(names[f], sizeof names[f], "scene_%s_%s.csv", L->scene,
+             vsph_viscous_name(f));
+    st = write_derived(R, names[f], &r, square ? &rr : NULL);
+    char status[96];
+    if (r.ok)
+      snprintf(status, sizeof status, "ok");
+    else
+      snprintf(status, sizeof status, "unstable at t = %.3g s", r.t_unstable);
+    fprintf(R->md, "| %s | %zu | %s | %.3e | %.4f | %+.3e | %.1f |\n",
+            vsph_viscous_name(f), r.n, status,
+            vsph_report_runs_error(&r, square ? &rr : NULL),
+            r.Ek[r.nrow - 1] / r.Ek[0], vsph_report_runs_diss0(&r), r.wall_s);
+    if (!st && sc == 0) st = vortex_profiles(R, figs, f, &r, res);
+    vsph_report_runs_free(&r);
+  }
+  fclose(figs);
+  fprintf(R->md, "\n");
+  fwrite(figbuf, 1, figlen, R->md);
+  free(figbuf);
+  if (!st) st = scene_figures(R, sc, names, square);
+  vsph_text_set(&R->tv, "scene", "%s", L->scene);
+  vsph_text_set(&R->tv, "res", "%zu", res);
+  if (!st) st = vsph_report_say(R, "scenes.scene_tail");
+  return st;
+}
+
+int vsph_report_scenes_write(struct vsph_report *R) {
+  vsph_text_set(&R->tv, "quick_note", "%s",
+                R->full ? "" : vsph_text_get("scenes.quick_note"));
+  int st = vsph_report_say(R, "scenes.intro");
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++) st = scene(R, sc);
+  return st;
+}

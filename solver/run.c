@@ -1,0 +1,186 @@
+#include "run.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../common/consts.h"
+#include "../common/status.h"
+#include "../kernels/kernel.h"
+#include "integrate.h"
+#include "lattice.h"
+#include "particles.h"
+#include "viscous.h"
+
+/* The "Solver" section: the one place of each default, bound and meaning
+ * (vsph scenes, vsph run --help and used_parameters.yml read it). */
+#define P struct vsph_run_props
+static const struct vsph_params_spec SOLVER[] = {
+    VSPH_PARAMS_NAME_SPEC(P, visc, "mgf",
+                          "viscous formulation: mgf, meaf, pvwf"),
+    VSPH_PARAMS_NAME_SPEC(P, kernel, "gaussian",
+                          "gaussian, cubic, quintic, wendland2, wendland4"),
+    VSPH_PARAMS_INT_SPEC(P, res, 40, 4, 4000,
+                         "particles across the reference length (R, L or "
+                         "H)"),
+    VSPH_PARAMS_REAL_SPEC(P, hdx, VSPH_CONSTS_HDX, 0.5, 8.0, "h/dx"),
+    VSPH_PARAMS_REAL_SPEC(P, t_end, 0.0, 0.0, 1e9,
+                          "end time (s); 0: the scene's"),
+    VSPH_PARAMS_REAL_SPEC(P, cfl, 1.0, 1e-3, 4.0,
+                          "Courant number of the RK4 time step"),
+    VSPH_PARAMS_REAL_SPEC(P, delta, 0.0, 0.0, 1.0,
+                          "delta-SPH coefficient; 0: off (0.1 is usual)"),
+    VSPH_PARAMS_REAL_SPEC(P, rho_band, 0.2, 1e-6, 10.0,
+                          "stop as unstable when |rho/rho0 - 1| exceeds it"),
+    VSPH_PARAMS_REAL_SPEC(P, min_gap, 0.05, 0.0, 0.99,
+                          "stop as unstable when two particles come closer "
+                          "than min_gap dx (pairing)"),
+    VSPH_PARAMS_INT_SPEC(P, outputs, 200, 1, 1e6, "energy rows over the run"),
+    VSPH_PARAMS_INT_SPEC(P, snapshots, 10, 0, 1e4,
+                         "VTK snapshots over the run (at most outputs); 0: "
+                         "none"),
+    VSPH_PARAMS_REAL_SPEC(P, perturb, 0.0, 0.0, 0.49,
+                          "random shift of the initial lattice, fraction of "
+                          "dx"),
+    VSPH_PARAMS_INT_SPEC(P, seed, VSPH_CONSTS_SEED, 0, 4294967295.0,
+                         "seed of that shift (mt19937)"),
+};
+#undef P
+
+const struct vsph_params_spec *vsph_run_params(size_t *n) {
+  *n = sizeof SOLVER / sizeof SOLVER[0];
+  return SOLVER;
+}
+
+int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
+  memset(rp, 0, sizeof *rp);
+  const int st = vsph_params_load(prm, "Solver", SOLVER,
+                                  sizeof SOLVER / sizeof SOLVER[0], rp);
+  if (st) return st;
+  rp->form = vsph_viscous_find(rp->visc);
+  if (rp->form < 0)
+    VSPH_FAIL(VSPH_EINVAL, "unknown formulation '%s' (mgf, meaf, pvwf)",
+              rp->visc);
+  rp->ktype = vsph_kernel_find(rp->kernel);
+  if (!rp->ktype)
+    VSPH_FAIL(VSPH_EINVAL,
+              "unknown kernel '%s' (gaussian, cubic, quintic, wendland2, "
+              "wendland4)",
+              rp->kernel);
+  if (rp->snapshots > rp->outputs)
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:snapshots (%zu) must not exceed "
+              "Solver:outputs (%zu)",
+              rp->snapshots, rp->outputs);
+  return VSPH_OK;
+}
+
+/* Outputs due at the current state, advancing the schedule past it. A row
+ * (not for a state stopped as unstable: it may hold non-finite values) and
+ * a snapshot are due at each multiple of their interval and at the end. */
+static unsigned schedule(struct vsph_run *r) {
+  const double t = vsph_run_time(r);
+  const int final = r->state == VSPH_RUN_DONE;
+  const int unstable = r->state == VSPH_RUN_UNSTABLE;
+  unsigned due = 0;
+  if (t >= r->next_out * (1.0 - 1e-12) || final || unstable) {
+    if (!unstable) due |= VSPH_RUN_ROW;
+    while (r->next_out <= t * (1.0 + 1e-12)) r->next_out += r->out_dt;
+  }
+  if (r->props.snapshots > 0 &&
+      (t >= r->next_snap * (1.0 - 1e-12) || final || unstable)) {
+    due |= VSPH_RUN_SNAPSHOT;
+    while (r->next_snap <= t * (1.0 + 1e-12)) r->next_snap += r->snap_dt;
+  }
+  return due;
+}
+
+int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
+                   struct vsph_run **out) {
+  *out = NULL;
+  struct vsph_run *r = calloc(1, sizeof *r);
+  if (!r) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a run");
+  r->props = *rp;
+  r->scene = *sc;
+  struct vsph_particles *fluid = NULL;
+  int st = sc->type->init(&r->scene, rp->res, &fluid);
+  if (st) goto fail;
+  r->dx = r->scene.ref_length / (double)rp->res;
+  r->h = rp->hdx * r->dx;
+  r->t_end = rp->t_end > 0 ? rp->t_end : r->scene.t_end;
+  if (rp->perturb > 0 &&
+      (st = vsph_lattice_perturb(fluid, rp->perturb * r->dx,
+                                 (unsigned long)rp->seed, (size_t)-1)))
+    goto fail;
+  struct vsph_integrate_props ip;
+  if ((st = vsph_scene_integrate_props(&r->scene, rp->form, rp->ktype, r->h,
+                                       &ip)))
+    goto fail;
+  ip.cfl = rp->cfl;
+  ip.rho_band = rp->rho_band;
+  ip.min_dist = rp->min_gap * r->dx;
+  ip.eq.delta = rp->delta;
+  r->n_fluid = fluid->n;
+  r->integ = vsph_integrate_alloc(&ip, fluid); /* takes fluid */
+  fluid = NULL;
+  if (!r->integ) {
+    st = VSPH_ENOMEM;
+    goto fail;
+  }
+  r->out_dt = r->t_end / (double)rp->outputs;
+  r->snap_dt =
+      rp->snapshots > 0 ? r->t_end / (double)rp->snapshots : (double)INFINITY;
+  r->state = VSPH_RUN_RUNNING;
+  r->due = schedule(r);
+  *out = r;
+  return VSPH_OK;
+fail:
+  vsph_particles_free(fluid);
+  vsph_run_free(r);
+  return st;
+}
+
+void vsph_run_free(struct vsph_run *r) {
+  if (!r) return;
+  vsph_integrate_free(r->integ);
+  free(r);
+}
+
+int vsph_run_iterate(struct vsph_run *r) {
+  r->due = 0;
+  if (r->state != VSPH_RUN_RUNNING) return VSPH_OK;
+  struct vsph_integrate *s = r->integ;
+  double dt = vsph_integrate_dt(s);
+  if (s->t + dt > r->t_end) dt = r->t_end - s->t;
+  const int st = vsph_integrate_step(s, dt);
+  r->pairs += (double)s->interactions;
+  const int bad = vsph_integrate_check(s);
+  if (st && !bad) return st; /* a failure of the code, not of the run */
+  if (bad) {
+    r->state = VSPH_RUN_UNSTABLE;
+    r->t_unstable = s->t;
+    snprintf(r->reason, sizeof r->reason, "%s", s->reason);
+  } else if (s->t >= r->t_end * (1.0 - 1e-12)) {
+    r->state = VSPH_RUN_DONE;
+  }
+  r->due = schedule(r);
+  return VSPH_OK;
+}
+
+int vsph_run_row(struct vsph_run *r, struct vsph_run_row *row) {
+  row->t = vsph_run_time(r);
+  return vsph_integrate_diagnostics(r->integ, &row->en, &row->b);
+}
+
+double vsph_run_time(const struct vsph_run *r) { return r->integ->t; }
+
+size_t vsph_run_steps(const struct vsph_run *r) { return r->integ->steps; }
+
+size_t vsph_run_bytes(const struct vsph_run *r) {
+  return vsph_integrate_bytes(r->integ);
+}
+
+size_t vsph_run_fallbacks(const struct vsph_run *r) {
+  return r->integ->vws ? r->integ->vws->n_fallback : 0;
+}

@@ -1,0 +1,129 @@
+#ifndef VSPH_SOLVER_RUN_H
+#define VSPH_SOLVER_RUN_H
+
+#include <stddef.h>
+
+#include "../common/params.h"
+#include "equations.h"
+#include "scene.h"
+
+struct vsph_integrate;
+struct vsph_kernel_type;
+struct vsph_params_spec;
+
+/** @file run.h
+ *  @brief The simulation driver in GSL's alloc / iterate / free shape: it
+ *  lays out a scene, advances it step by step with the integrator, stops it
+ *  as unstable when the stability checks fail, and tells the caller when an
+ *  energy row or a snapshot is due. It owns the "Solver" parameter section.
+ *  No file I/O: the caller (io/rundir) writes what it is handed.
+ *
+ *  @code
+ *  vsph_run_alloc(&rp, &scene, &run);
+ *  for (;;) {
+ *    if (run->due & VSPH_RUN_ROW) { vsph_run_row(run, &row); ... }
+ *    if (run->due & VSPH_RUN_SNAPSHOT) { ... run->integ->p ... }
+ *    if (run->state != VSPH_RUN_RUNNING) break;
+ *    vsph_run_iterate(run);
+ *  }
+ *  vsph_run_free(run);
+ *  @endcode */
+
+/** Outputs due at the current state (bits of vsph_run::due). */
+enum vsph_run_due {
+  VSPH_RUN_ROW = 1u,     /*!< an energy row (vsph_run_row) */
+  VSPH_RUN_SNAPSHOT = 2u /*!< a particle snapshot */
+};
+
+/** Where the run stands. */
+enum vsph_run_state {
+  VSPH_RUN_RUNNING = 0, /*!< more steps to take */
+  VSPH_RUN_DONE,        /*!< reached t_end */
+  VSPH_RUN_UNSTABLE     /*!< stopped by a stability check: a result */
+};
+
+/** The "Solver" section (defaults and bounds in run.c's table). */
+struct vsph_run_props {
+  char visc[VSPH_PARAMS_NAME_MAX];   /*!< formulation: mgf, meaf, pvwf */
+  char kernel[VSPH_PARAMS_NAME_MAX]; /*!< kernel name */
+  size_t res;       /*!< particles across the reference length */
+  double hdx;       /*!< h/dx */
+  double t_end;     /*!< end time (s); 0: the scene's */
+  double cfl;       /*!< Courant number of RK4 */
+  double delta;     /*!< delta-SPH coefficient; 0: off */
+  double rho_band;  /*!< unstable when |rho/rho0 - 1| exceeds it */
+  double min_gap;   /*!< unstable when two particles come closer (dx) */
+  size_t outputs;   /*!< energy rows over the run */
+  size_t snapshots; /*!< snapshots over the run; 0: none */
+  double perturb;   /*!< random shift of the initial lattice (dx) */
+  size_t seed;      /*!< seed of that shift (mt19937) */
+  /* resolved by vsph_run_props_init */
+  int form;                             /*!< vsph_viscous_form of visc */
+  const struct vsph_kernel_type *ktype; /*!< the kernel called kernel */
+};
+
+/** A run in progress. Fields are read-only for the caller. */
+struct vsph_run {
+  struct vsph_run_props props;  /*!< settings (a copy) */
+  struct vsph_scene scene;      /*!< the scene (a copy) */
+  struct vsph_integrate *integ; /*!< integrator: particles, time, steps */
+  size_t n_fluid;               /*!< fluid particles */
+  double h, dx, t_end;          /*!< resolution and end time */
+  unsigned due;                 /*!< vsph_run_due bits at this state */
+  int state;                    /*!< vsph_run_state */
+  double t_unstable;            /*!< when it was stopped (s) */
+  char reason[160];             /*!< why, or "" */
+  double pairs;                 /*!< interactions gathered so far */
+  /* private: the output schedule */
+  double out_dt, snap_dt, next_out, next_snap;
+};
+
+/** One energy row: energies, momenta and the budget of the current
+ *  state. */
+struct vsph_run_row {
+  double t;                        /*!< time (s) */
+  struct vsph_equations_energy en; /*!< energies and momenta */
+  struct vsph_equations_budget b;  /*!< power terms and residual */
+};
+
+/** @brief The "Solver" parameter table (@p n receives its length). */
+const struct vsph_params_spec *vsph_run_params(size_t *n);
+
+/** @brief Read the "Solver" section of @p prm (NULL: defaults) into
+ *  @p rp, check it and resolve the formulation and kernel names.
+ *  @return VSPH_OK or VSPH_EINVAL (the message names the parameter). */
+int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm);
+
+/** @brief Lay out @p sc at rp->res particles across, perturb it if asked,
+ *  and set up the integrator. Due at once: a row and (if any) a snapshot.
+ *  @return VSPH_OK, VSPH_EINVAL, VSPH_ENOMEM, VSPH_ELIB. */
+int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
+                   struct vsph_run **out);
+
+/** @brief Free; NULL is a no-op. */
+void vsph_run_free(struct vsph_run *r);
+
+/** @brief One step (dt of THEORY 5, cut to land on t_end), then the
+ *  stability checks; updates state and due. A run stopped as unstable is
+ *  not an error.
+ *  @return VSPH_OK, or an internal failure (VSPH_ENOMEM, ...). */
+int vsph_run_iterate(struct vsph_run *r);
+
+/** @brief The energy row of the current state (one extra right-hand side).
+ *  @return VSPH_OK or an internal failure. */
+int vsph_run_row(struct vsph_run *r, struct vsph_run_row *row);
+
+/** @brief Time reached (s). */
+double vsph_run_time(const struct vsph_run *r);
+
+/** @brief Steps taken. */
+size_t vsph_run_steps(const struct vsph_run *r);
+
+/** @brief Bytes allocated for particles, neighbours and the integrator. */
+size_t vsph_run_bytes(const struct vsph_run *r);
+
+/** @brief PVWF particles whose L fell back to the identity in the last
+ *  evaluation (0 for the other forms). */
+size_t vsph_run_fallbacks(const struct vsph_run *r);
+
+#endif /* VSPH_SOLVER_RUN_H */

@@ -1,0 +1,326 @@
+/* The pair functions (solver/pair.h) through the two codes that use them:
+ * the solver's right-hand side and the analysis operators.
+ *
+ * 1. An O(N^2) brute-force twin written here from THEORY sections 3 and 5,
+ *    independently of the library: its own distance and cut-off, its own
+ *    kernel derivative (W'(s) = h^{-d-1} w'(q) from the kernel's dw, not the
+ *    loops' (dw/dq)/q of q^2), its own PVWF with GSL's LU inverse. The
+ *    right-hand side (continuity, pressure, each viscous formulation,
+ *    delta-SPH) and each operator (force and dissipation density) must
+ *    match it.
+ * 2. The solver's viscous acceleration times rho equals
+ *    vsph_viscous_compute on the same particles, for each formulation on
+ *    each scene (ghost walls included). */
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../common/consts.h"
+#include "../common/params.h"
+#include "../kernels/kernel.h"
+#include "../solver/cells.h"
+#include "../solver/equations.h"
+#include "../solver/integrate.h"
+#include "../solver/lattice.h"
+#include "../solver/particles.h"
+#include "../solver/scene.h"
+#include "../solver/viscous.h"
+#include "check_suites.h"
+
+/* High-entropy physics of the twin (GSL style): no factor can hide. */
+static const double RHO0 = 1.2348, C0 = 2.385, MU = 0.0137, DELTA = 0.1;
+static const double DX = 0.05, HDX = 1.3333;
+
+/* A perturbed patch with a free surface all round, random velocities,
+ * densities and volumes. */
+static struct vsph_particles *random_set(int dim, unsigned long seed) {
+  struct vsph_lattice_props lp = {.dim = dim,
+                                  .kind = VSPH_LATTICE_SQUARE,
+                                  .dx = DX,
+                                  .perturb = 0.25,
+                                  .seed = seed};
+  struct vsph_particles *p = NULL;
+  size_t c;
+  ck_assert_int_eq(
+      vsph_lattice_halfspace(&lp, dim == 2 ? 0.5 : 0.25, 0.11, &p, &c), 0);
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, seed);
+  for (size_t i = 0; i < p->n; i++) {
+    p->rho[i] = RHO0 * (0.97 + 0.06 * gsl_rng_uniform(rng));
+    p->m[i] = p->rho[i] * p->vol[i] * (0.9 + 0.2 * gsl_rng_uniform(rng));
+    p->vol[i] = p->m[i] / p->rho[i];
+    for (int k = 0; k < dim; k++) p->vel[k][i] = gsl_rng_uniform(rng) - 0.5;
+  }
+  gsl_rng_free(rng);
+  return p;
+}
+
+/* ------------------------------------------------------------ the twin */
+
+/* W'(s)/s of pair (i, j), or 0 outside the support; x = r_j - r_i. */
+static double twin_F(const struct vsph_kernel_type *k, int dim, double h,
+                     const struct vsph_particles *p, size_t i, size_t j,
+                     double x[3]) {
+  double s2 = 0.0;
+  for (int a = 0; a < 3; a++) {
+    x[a] = a < dim ? p->pos[a][j] - p->pos[a][i] : 0.0;
+    s2 += x[a] * x[a];
+  }
+  const double s = sqrt(s2), q = s / h;
+  if (i == j || q >= k->kappa) return 0.0;
+  return pow(h, -dim - 1) * vsph_kernel_dw(k, dim, q) / s;
+}
+
+/* PVWF's A_i = T_i L_i and -T_i:D_i of every particle (THEORY 3). */
+static void twin_pvwf(const struct vsph_viscous_props *vp,
+                      const struct vsph_particles *p, double *A, double *dens) {
+  const int d = vp->dim;
+  for (size_t i = 0; i < p->n; i++) {
+    gsl_matrix *B = gsl_matrix_calloc(d, d), *L = gsl_matrix_alloc(d, d);
+    double Mg[3][3] = {{0}};
+    for (size_t j = 0; j < p->n; j++) {
+      double x[3];
+      const double F = twin_F(vp->kernel, d, vp->h, p, i, j, x);
+      if (F == 0.0) continue;
+      for (int a = 0; a < d; a++)
+        for (int b = 0; b < d; b++) {
+          /* grad_i W = -F x */
+          *gsl_matrix_ptr(B, a, b) += p->vol[j] * (-F * x[a]) * x[b];
+          Mg[a][b] += p->vol[j] * (p->vel[a][j] - p->vel[a][i]) * (-F * x[b]);
+        }
+    }
+    gsl_permutation *perm = gsl_permutation_alloc(d);
+    int sign;
+    gsl_linalg_LU_decomp(B, perm, &sign);
+    gsl_linalg_LU_invert(B, perm, L);
+    gsl_permutation_free(perm);
+    double G[3][3] = {{0}}, D[3][3], T[3][3], tr = 0.0, TD = 0.0;
+    for (int a = 0; a < d; a++)
+      for (int b = 0; b < d; b++)
+        for (int c = 0; c < d; c++)
+          G[a][b] += Mg[a][c] * gsl_matrix_get(L, b, c);
+    for (int a = 0; a < d; a++) tr += G[a][a];
+    for (int a = 0; a < d; a++)
+      for (int b = 0; b < d; b++) {
+        D[a][b] = 0.5 * (G[a][b] + G[b][a]);
+        T[a][b] = 2.0 * vp->mu * D[a][b] + (a == b ? vp->lambda * tr : 0.0);
+        TD += T[a][b] * D[a][b];
+      }
+    for (int a = 0; a < d; a++)
+      for (int b = 0; b < d; b++) {
+        double s = 0.0;
+        for (int c = 0; c < d; c++) s += T[a][c] * gsl_matrix_get(L, c, b);
+        A[(a * 3 + b) * p->n + i] = s;
+      }
+    dens[i] = -TD;
+    gsl_matrix_free(B);
+    gsl_matrix_free(L);
+  }
+}
+
+/* Everything the twin computes, per particle. */
+struct twin {
+  double *drho, *acc[3], *visc[3], *ddelta, *dens;
+};
+
+static void twin_run(const struct vsph_viscous_props *vp,
+                     const struct vsph_particles *p, struct twin *tw) {
+  const int d = vp->dim;
+  const size_t n = p->n;
+  double *A = calloc(9 * n, sizeof *A), *pd = calloc(n, sizeof *pd);
+  if (vp->form == VSPH_VISCOUS_PVWF) twin_pvwf(vp, p, A, pd);
+  const double K = 2.0 * (d + 2); /* THEORY 0 */
+  for (size_t i = 0; i < n; i++) {
+    const double pi = C0 * C0 * (p->rho[i] - RHO0);
+    double cont = 0.0, dl = 0.0, ap[3] = {0}, av[3] = {0}, dens = 0.0;
+    for (size_t j = 0; j < n; j++) {
+      double x[3];
+      const double F = twin_F(vp->kernel, d, vp->h, p, i, j, x);
+      if (F == 0.0) continue;
+      const double V = p->vol[j], pj = C0 * C0 * (p->rho[j] - RHO0);
+      double du[3] = {0}, dux = 0.0, du2 = 0.0, s2 = 0.0, gW[3] = {0};
+      for (int a = 0; a < d; a++) {
+        du[a] = p->vel[a][j] - p->vel[a][i];
+        dux += du[a] * x[a];
+        du2 += du[a] * du[a];
+        s2 += x[a] * x[a];
+        gW[a] = -F * x[a]; /* grad_i W_ij */
+      }
+      double duW = 0.0, psiW = 0.0;
+      for (int a = 0; a < d; a++) {
+        duW += du[a] * gW[a];
+        /* psi_ij = 2 (rho_j - rho_i) x / s^2 */
+        psiW += 2.0 * (p->rho[j] - p->rho[i]) * x[a] / s2 * gW[a];
+      }
+      cont -= V * duW;
+      dl += V * psiW;
+      for (int a = 0; a < d; a++) ap[a] -= V * (pi + pj) * gW[a];
+      if (vp->form == VSPH_VISCOUS_MGF) {
+        for (int a = 0; a < d; a++) av[a] += K * vp->mu * V * dux / s2 * gW[a];
+        dens += 0.5 * K * vp->mu * V * F * dux * dux / s2;
+      } else if (vp->form == VSPH_VISCOUS_MEAF) {
+        for (int a = 0; a < d; a++) av[a] += 2.0 * vp->mu * V * F * (-du[a]);
+        dens += vp->mu * V * F * du2;
+      } else {
+        for (int a = 0; a < d; a++)
+          for (int b = 0; b < d; b++)
+            av[a] +=
+                V * (A[(a * 3 + b) * n + j] + A[(a * 3 + b) * n + i]) * gW[b];
+      }
+    }
+    const double dhc = DELTA * vp->h * C0;
+    tw->drho[i] = p->rho[i] * cont + dhc * dl;
+    tw->ddelta[i] = dhc * dl;
+    for (int a = 0; a < d; a++) {
+      tw->acc[a][i] = (ap[a] + av[a]) / p->rho[i];
+      tw->visc[a][i] = av[a];
+    }
+    tw->dens[i] = vp->form == VSPH_VISCOUS_PVWF ? pd[i] : dens;
+  }
+  free(A);
+  free(pd);
+}
+
+static double *column(double *buf, size_t n, int k) { return buf + k * n; }
+
+/* |a - b| <= tol max|b| over the n values. */
+static void assert_close(const double *a, const double *b, size_t n, double tol,
+                         const char *what) {
+  double scale = 0.0, err = 0.0;
+  for (size_t i = 0; i < n; i++) scale = fmax(scale, fabs(b[i]));
+  for (size_t i = 0; i < n; i++) err = fmax(err, fabs(a[i] - b[i]));
+  ck_assert_msg(scale > 0.0, "%s: the twin's values are all zero", what);
+  ck_assert_msg(err <= tol * scale, "%s: max |library - twin| = %.3e of %.3e",
+                what, err, scale);
+}
+
+/* The right-hand side and the operator against the twin, for formulation
+ * form in dimension dim. Tolerance 1e-11 of the largest value: ~50-term
+ * sums in another order, W' by another formula (~1e-16 each) and, for
+ * PVWF, an LU inverse against cofactors (condition numbers ~10 at the
+ * corners); a wrong coefficient shows at O(1e-2) or more. */
+START_TEST(test_twin) {
+  const int form = _i / 2, dim = 2 + _i % 2;
+  struct vsph_particles *p = random_set(dim, 2385 + (unsigned long)_i);
+  const size_t n = p->n;
+  struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0, .delta = DELTA};
+  ck_assert_int_eq(vsph_viscous_props_init(&ep.visc, form, &vsph_gaussian_type,
+                                           dim, HDX * DX, MU),
+                   0);
+  /* the twin first, on the input order */
+  double *tb = calloc(9 * n, sizeof *tb);
+  struct twin tw = {column(tb, n, 0),
+                    {column(tb, n, 1), column(tb, n, 2), column(tb, n, 3)},
+                    {column(tb, n, 4), column(tb, n, 5), column(tb, n, 6)},
+                    column(tb, n, 7),
+                    column(tb, n, 8)};
+  twin_run(&ep.visc, p, &tw);
+  /* the library, on the cell order; results mapped back by id */
+  struct vsph_cells *cells = vsph_cells_alloc();
+  ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, dim);
+  double *lb = calloc(18 * n, sizeof *lb);
+  struct vsph_equations_out out = {
+      .drho = column(lb, n, 0),
+      .acc = {column(lb, n, 1), column(lb, n, 2), column(lb, n, 3)},
+      .acc_visc = {column(lb, n, 4), column(lb, n, 5), column(lb, n, 6)},
+      .drho_delta = column(lb, n, 7)};
+  ck_assert_int_eq(vsph_equations_rhs(&ep, p, n, cells, ws, &out), 0);
+  double *const f[3] = {column(lb, n, 8), column(lb, n, 9), column(lb, n, 10)};
+  double *dens = column(lb, n, 11);
+  ck_assert_int_eq(vsph_viscous_compute(&ep.visc, p, cells, ws, f, dens), 0);
+  double *by_id = column(lb, n, 12); /* 6 columns: scratch by id */
+  const double *lib[5] = {out.drho, out.drho_delta, dens, NULL, NULL};
+  const double *twn[5] = {tw.drho, tw.ddelta, tw.dens, NULL, NULL};
+  const char *what[5] = {"continuity + delta", "delta-SPH", "dissipation", NULL,
+                         NULL};
+  for (int q = 0; q < 3; q++) {
+    for (size_t i = 0; i < n; i++) by_id[p->id[i]] = lib[q][i];
+    assert_close(by_id, twn[q], n, 1e-11, what[q]);
+  }
+  for (int k = 0; k < dim; k++) {
+    for (size_t i = 0; i < n; i++) by_id[p->id[i]] = out.acc[k][i];
+    assert_close(by_id, tw.acc[k], n, 1e-11, "acceleration");
+    for (size_t i = 0; i < n; i++)
+      by_id[p->id[i]] = out.acc_visc[k][i] * p->rho[i];
+    assert_close(by_id, tw.visc[k], n, 1e-11, "solver's viscous term");
+    for (size_t i = 0; i < n; i++) by_id[p->id[i]] = f[k][i];
+    assert_close(by_id, tw.visc[k], n, 1e-11, "operator");
+  }
+  free(lb);
+  free(tb);
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+}
+END_TEST
+
+/* ------------------------------------------- solver against the operator */
+
+/* Scene sc_i, formulation form at 16 across after three steps (ghosts
+ * generated for the wave): the right-hand side's viscous part times rho
+ * equals vsph_viscous_compute on the same particles and cells to 1e-14
+ * of the largest value (the same pair function in the same neighbour
+ * order: only the division and multiplication by rho_i round). */
+START_TEST(test_solver_equals_operator) {
+  const int form = _i % VSPH_VISCOUS_FORM_COUNT;
+  const int sc_i = _i / VSPH_VISCOUS_FORM_COUNT;
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_scene_init(&sc, vsph_scene_get((size_t)sc_i), NULL), 0);
+  struct vsph_particles *fluid = NULL;
+  ck_assert_int_eq(sc.type->init(&sc, 16, &fluid), 0);
+  struct vsph_integrate_props ip;
+  ck_assert_int_eq(vsph_scene_integrate_props(&sc, form, &vsph_gaussian_type,
+                                              HDX * sc.ref_length / 16.0, &ip),
+                   0);
+  ip.cfl = 1.0;
+  ip.rho_band = 0.2;
+  struct vsph_integrate *s = vsph_integrate_alloc(&ip, fluid);
+  ck_assert_ptr_nonnull(s);
+  for (int k = 0; k < 3; k++)
+    ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  struct vsph_equations_energy en;
+  struct vsph_equations_budget b;
+  ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &b), 0); /* cells */
+  struct vsph_particles *p = s->p;
+  const size_t n = p->n;
+  double *buf = calloc(7 * n, sizeof *buf);
+  struct vsph_equations_out out = {.drho = buf,
+                                   .acc = {buf + n, buf + 2 * n},
+                                   .acc_visc = {buf + 3 * n, buf + 4 * n},
+                                   .drho_delta = buf + 5 * n};
+  ck_assert_int_eq(
+      vsph_equations_rhs(&ip.eq, p, s->n_fluid, s->cells, s->vws, &out), 0);
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, 2);
+  double *f[3] = {p->acc[0], p->acc[1], NULL}; /* scratch */
+  ck_assert_int_eq(vsph_viscous_compute(&ip.eq.visc, p, s->cells, ws, f, NULL),
+                   0);
+  double scale = 0.0, err = 0.0;
+  for (size_t i = 0; i < n; i++)
+    for (int k = 0; k < 2 && p->id[i] < s->n_fluid; k++)
+      scale = fmax(scale, fabs(f[k][i]));
+  for (size_t i = 0; i < n; i++)
+    for (int k = 0; k < 2 && p->id[i] < s->n_fluid; k++)
+      err = fmax(err, fabs(out.acc_visc[k][i] * p->rho[i] - f[k][i]));
+  ck_assert_msg(scale > 0.0, "no viscous force");
+  ck_assert_msg(err <= 1e-14 * scale,
+                "%s %s: |solver - operator| = %.3e of %.3e", sc.type->name,
+                vsph_viscous_name(form), err, scale);
+  free(buf);
+  vsph_viscous_ws_free(ws);
+  vsph_integrate_free(s);
+}
+END_TEST
+
+Suite *vsph_pair_suite(void) {
+  Suite *s = suite_create("pair");
+  TCase *tc = tcase_create("twin");
+  tcase_set_timeout(tc, 60);
+  tcase_add_loop_test(tc, test_twin, 0, 2 * VSPH_VISCOUS_FORM_COUNT);
+  tcase_add_loop_test(tc, test_solver_equals_operator, 0,
+                      (int)vsph_scene_count() * VSPH_VISCOUS_FORM_COUNT);
+  suite_add_tcase(s, tc);
+  return s;
+}
