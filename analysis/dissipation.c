@@ -86,7 +86,7 @@ int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
   int st = vsph_params_load(prm, "Dissipation", DISSIPATION,
                             sizeof DISSIPATION / sizeof DISSIPATION[0], &r);
   if (st) return st;
-  dp->form = vsph_viscous_find(r.formulation);
+  if ((st = vsph_viscous_resolve(r.formulation, &dp->form))) return st;
   if (dp->form < 0)
     VSPH_FAIL(VSPH_EINVAL, "unknown formulation '%s' (mgf, meaf, pvwf)",
               r.formulation);
@@ -100,7 +100,7 @@ int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
   if (sh < 0)
     VSPH_FAIL(VSPH_EINVAL, "unknown shape '%s' (disc, square)", r.shape);
   dp->shape = sh;
-  dp->kernel = vsph_kernel_find(r.kernel);
+  if ((st = vsph_kernel_resolve(r.kernel, &dp->kernel))) return st;
   if (!dp->kernel)
     VSPH_FAIL(VSPH_EINVAL,
               "unknown kernel '%s' (gaussian, cubic, quintic, wendland2, "

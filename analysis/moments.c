@@ -406,7 +406,7 @@ int vsph_moments_props_init(struct vsph_moments_props *mp,
   int st = vsph_params_load(prm, "Tensors", TENSORS,
                             sizeof TENSORS / sizeof TENSORS[0], &r);
   if (st) return st;
-  mp->kernel = vsph_kernel_find(r.kernel);
+  if ((st = vsph_kernel_resolve(r.kernel, &mp->kernel))) return st;
   if (!mp->kernel)
     VSPH_FAIL(VSPH_EINVAL,
               "unknown kernel '%s' (gaussian, cubic, quintic, wendland2, "

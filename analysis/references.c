@@ -193,10 +193,11 @@ void vsph_references_vortex_energy_series(
   *dEk_dt = -2.0 * VSPH_PI * rho * v->nu * de;
 }
 
-double vsph_references_lighthill(double rho, double g, double A, double L,
-                                 double nu, double k, double omega, double t) {
-  return rho * g * A * A * L / 8.0 * exp(-4.0 * nu * k * k * t) *
-         (1.0 + cos(2.0 * omega * t));
+double vsph_references_lighthill(const struct vsph_scene_wave *w, double rho,
+                                 double t) {
+  const double A = w->A, k = w->k;
+  return rho * w->g * A * A * w->L / 8.0 * exp(-4.0 * w->nu * k * k * t) *
+         (1.0 + cos(2.0 * w->omega * t));
 }
 
 struct vsph_references_scene *vsph_references_scene_alloc(
@@ -247,7 +248,7 @@ int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
     const struct vsph_scene_wave *w = &sc->u.wave;
     const double k = w->k, om = w->omega, A = w->A, nu = w->nu;
     const double L = sc->ref_length;
-    *Ek = vsph_references_lighthill(sc->rho0, sc->g, A, L, nu, k, om, t);
+    *Ek = vsph_references_lighthill(w, sc->rho0, t);
     if (t == 0.0) {
       /* The exact viscous power of the initial potential flow: with
        * D = Hess(phi0), -2 mu int D:D over the tank integrates to

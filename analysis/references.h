@@ -61,12 +61,14 @@ void vsph_references_vortex_energy_series(
     const struct vsph_references_vortex *v, double t, double rho, double *Ek,
     double *dEk_dt);
 
-/** @brief Lighthill's standing-wave kinetic energy (THEORY 6.3):
- *  E_k = (rho g A^2 L / 8) exp(-4 nu k^2 t) [1 + cos(2 omega t)]. */
-double vsph_references_lighthill(double rho, double g, double A, double L,
-                                 double nu, double k, double omega, double t);
-
 struct vsph_scene;
+struct vsph_scene_wave;
+
+/** @brief Lighthill's standing-wave kinetic energy (THEORY 6.3) for the
+ *  wave @p w (g, A, L, nu, k, omega) at density @p rho and time @p t:
+ *  E_k = (rho g A^2 L / 8) exp(-4 nu k^2 t) [1 + cos(2 omega t)]. */
+double vsph_references_lighthill(const struct vsph_scene_wave *w, double rho,
+                                 double t);
 
 /** A scene's reference curve: E_k(t) and dE_k/dt(t), NaN where the scene
  *  has none (stretching square: only t = 0, exact dE_k/dt = -4 mu A0^2 L^2

@@ -92,7 +92,7 @@ int vsph_scaling_props_init(struct vsph_scaling_props *sp,
                             sizeof SCALING / sizeof SCALING[0], &r);
   if (st) return st;
   const int dim = (int)r.dim;
-  sp->kernel = vsph_kernel_find(r.kernel);
+  if ((st = vsph_kernel_resolve(r.kernel, &sp->kernel))) return st;
   if (!sp->kernel)
     VSPH_FAIL(VSPH_EINVAL,
               "unknown kernel '%s' (gaussian, cubic, quintic, wendland2, "

@@ -1,6 +1,9 @@
 #include "kernel.h"
 
+#include <stdio.h>
 #include <string.h>
+
+#include "../common/status.h"
 
 /* One table backs lookup by name and the loop tests (FFTW convention). */
 static const struct vsph_kernel_type *const kernel_table[] = {
@@ -20,4 +23,15 @@ const struct vsph_kernel_type *vsph_kernel_find(const char *name) {
   for (size_t i = 0; i < vsph_kernel_count(); i++)
     if (strcmp(kernel_table[i]->name, name) == 0) return kernel_table[i];
   return NULL;
+}
+
+int vsph_kernel_resolve(const char *name, const struct vsph_kernel_type **out) {
+  *out = vsph_kernel_find(name);
+  if (*out) return VSPH_OK;
+  char list[256] = "";
+  size_t len = 0;
+  for (size_t i = 0; i < vsph_kernel_count() && len < sizeof list; i++)
+    len += (size_t)snprintf(list + len, sizeof list - len, "%s%s",
+                            i ? ", " : "", kernel_table[i]->name);
+  VSPH_FAIL(VSPH_EINVAL, "unknown kernel '%s' (%s)", name, list);
 }

@@ -40,6 +40,10 @@ const struct vsph_kernel_type *vsph_kernel_get(size_t i);
 /** @brief The kernel called @p name, or NULL if there is none. */
 const struct vsph_kernel_type *vsph_kernel_find(const char *name);
 
+/** @brief The kernel called @p name into @p out.
+ *  @return VSPH_OK, or VSPH_EINVAL with a message listing the kernels. */
+int vsph_kernel_resolve(const char *name, const struct vsph_kernel_type **out);
+
 /** @brief Normalised kernel w(q) in dimension dim (dimensionless). */
 static inline double vsph_kernel_w(const struct vsph_kernel_type *k, int dim,
                                    double q) {

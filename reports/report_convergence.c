@@ -12,8 +12,6 @@
 
 #define NFORM VSPH_VISCOUS_FORM_COUNT
 
-static const char *const LABEL[NFORM] = {"MGF", "MEAF", "PVWF"};
-
 static int scene(struct vsph_report *R, int sc) {
   struct vsph_report_ladder lr;
   int st = vsph_report_runs_ladder_figures(R, sc, &lr);
@@ -49,7 +47,8 @@ static int scene(struct vsph_report *R, int sc) {
     fprintf(R->md, "| %s | ladder | | | **%.2f** |\n", vsph_viscous_name(f),
             order);
     if ((st = vsph_csv_close(c, R->dir, files[f]))) break;
-    st = vsph_plot_add(&pl, files[f], "1:2", LABEL[f], "linespoints pt 7 lw 2");
+    st = vsph_plot_add(&pl, files[f], "1:2", vsph_viscous_label(f),
+                       "linespoints pt 7 lw 2");
   }
   if (!st)
     st = vsph_plot_add(&pl, files[0], "1:($1*0.1)", "first order",

@@ -84,11 +84,9 @@ static int figure(struct vsph_report *R, int dim, int fk) {
       "linespoints pt 9 lw 2"};
   int st = VSPH_OK;
   for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++) {
-    char using[16], label[16];
+    char using[16];
     snprintf(using, sizeof using, "1:%d", f + 2);
-    snprintf(label, sizeof label, "%s", vsph_viscous_name(f));
-    for (char *c = label; *c; c++) *c = (char)(*c - 'a' + 'A');
-    st = vsph_plot_add(&pl, data, using, label, pts[f]);
+    st = vsph_plot_add(&pl, data, using, vsph_viscous_label(f), pts[f]);
   }
   if (!st)
     st = vsph_plot_add(&pl, data, "1:(1e-3*$1**-1)", "slope -1",

@@ -20,8 +20,6 @@
  * the one at t = 0). */
 #define NSNAP 5
 
-static const char *const LABEL[NFORM] = {"MGF", "MEAF", "PVWF"};
-
 /* Per-run table for the figures: t, Ek, Eref, dEk/dt, dEk_ref, relative
  * error, |residual|, |P_visc|. */
 static int write_derived(struct vsph_report *R, const char *name,
@@ -167,7 +165,8 @@ static int scene_figures(struct vsph_report *R, int sc, char names[NFORM][96],
     vsph_plot_init(&pl, R->dir, pname, title, "time t (s)", ylab[w]);
     pl.logy = w == 3;
     for (int f = 0; f < NFORM && !st; f++)
-      st = vsph_plot_add(&pl, names[f], cols[w], LABEL[f], "lines lw 2");
+      st = vsph_plot_add(&pl, names[f], cols[w], vsph_viscous_label(f),
+                         "lines lw 2");
     if (!st && refcol[w])
       st = vsph_plot_add(&pl, names[0], refcol[w],
                          square && w == 0   ? "Richardson (MGF)"

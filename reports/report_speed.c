@@ -9,8 +9,6 @@
 
 #define NFORM VSPH_VISCOUS_FORM_COUNT
 
-static const char *const LABEL[NFORM] = {"MGF", "MEAF", "PVWF"};
-
 static int scene(struct vsph_report *R, int sc) {
   struct vsph_report_ladder lr;
   int st = vsph_report_runs_ladder_figures(R, sc, &lr);
@@ -33,7 +31,8 @@ static int scene(struct vsph_report *R, int sc) {
       fprintf(c, "%.6e,%.4f,%.6e\n", lr.err[f][k], lr.wall[f][k],
               lr.pairs[f][k]);
     if ((st = vsph_csv_close(c, R->dir, file))) break;
-    st = vsph_plot_add(&pl, file, "1:2", LABEL[f], "linespoints pt 7 lw 2");
+    st = vsph_plot_add(&pl, file, "1:2", vsph_viscous_label(f),
+                       "linespoints pt 7 lw 2");
   }
   if (st) return st;
   vsph_text_set(&R->tv, "title", "%s", title);

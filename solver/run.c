@@ -55,19 +55,11 @@ const struct vsph_params_spec *vsph_run_params(size_t *n) {
 
 int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
   memset(rp, 0, sizeof *rp);
-  const int st = vsph_params_load(prm, "Solver", SOLVER,
-                                  sizeof SOLVER / sizeof SOLVER[0], rp);
+  int st = vsph_params_load(prm, "Solver", SOLVER,
+                            sizeof SOLVER / sizeof SOLVER[0], rp);
+  if (!st) st = vsph_viscous_resolve(rp->visc, &rp->form);
+  if (!st) st = vsph_kernel_resolve(rp->kernel, &rp->ktype);
   if (st) return st;
-  rp->form = vsph_viscous_find(rp->visc);
-  if (rp->form < 0)
-    VSPH_FAIL(VSPH_EINVAL, "unknown formulation '%s' (mgf, meaf, pvwf)",
-              rp->visc);
-  rp->ktype = vsph_kernel_find(rp->kernel);
-  if (!rp->ktype)
-    VSPH_FAIL(VSPH_EINVAL,
-              "unknown kernel '%s' (gaussian, cubic, quintic, wendland2, "
-              "wendland4)",
-              rp->kernel);
   if (rp->snapshots > rp->outputs)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:snapshots (%zu) must not exceed "

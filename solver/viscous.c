@@ -1,6 +1,7 @@
 #include "viscous.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -25,10 +26,35 @@ const char *vsph_viscous_name(int form) {
                                                      : "unknown";
 }
 
+static const char *const viscous_labels[] = {
+    [VSPH_VISCOUS_MGF] = "MGF",
+    [VSPH_VISCOUS_MEAF] = "MEAF",
+    [VSPH_VISCOUS_PVWF] = "PVWF",
+};
+_Static_assert(sizeof viscous_labels / sizeof viscous_labels[0] ==
+                   VSPH_VISCOUS_FORM_COUNT,
+               "viscous label table out of sync");
+
 int vsph_viscous_find(const char *name) {
   for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++)
     if (strcmp(viscous_names[k], name) == 0) return k;
   return -1;
+}
+
+const char *vsph_viscous_label(int form) {
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT ? viscous_labels[form]
+                                                     : "?";
+}
+
+int vsph_viscous_resolve(const char *name, int *form) {
+  *form = vsph_viscous_find(name);
+  if (*form >= 0) return VSPH_OK;
+  char list[128] = "";
+  size_t len = 0;
+  for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT && len < sizeof list; k++)
+    len += (size_t)snprintf(list + len, sizeof list - len, "%s%s",
+                            k ? ", " : "", viscous_names[k]);
+  VSPH_FAIL(VSPH_EINVAL, "unknown formulation '%s' (%s)", name, list);
 }
 
 int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,

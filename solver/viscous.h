@@ -56,6 +56,13 @@ const char *vsph_viscous_name(int form);
 /** @brief Formulation called @p name, or -1. */
 int vsph_viscous_find(const char *name);
 
+/** @brief The formulation called @p name into @p form.
+ *  @return VSPH_OK, or VSPH_EINVAL with a message listing them. */
+int vsph_viscous_resolve(const char *name, int *form);
+
+/** @brief The formulation's label in tables and figures ("MGF"). */
+const char *vsph_viscous_label(int form);
+
 /** @brief Fill props with the defaults of THEORY.md section 3: lambda = mu
  *  for MGF, -2 mu / dim for PVWF (zero bulk viscosity), det_tol = 1e-8.
  *  @return VSPH_OK or VSPH_EINVAL (bad form, dim, h or mu). */

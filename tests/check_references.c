@@ -198,7 +198,9 @@ START_TEST(test_lighthill_initial) {
   ck_assert_int_eq(gsl_integration_qag(&f, 0.0, L, 0, 1e-11, 200,
                                        GSL_INTEG_GAUSS61, wo, &Ek, &err),
                    0);
-  const double want = vsph_references_lighthill(1.0, g, A, L, 1e-3, k, om, 0);
+  const struct vsph_scene_wave sw = {
+      .g = g, .A = A, .L = L, .nu = 1e-3, .k = k, .omega = om};
+  const double want = vsph_references_lighthill(&sw, 1.0, 0.0);
   ck_assert_double_eq_tol(Ek, want, 1e-9 * want);
   ck_assert_double_eq_tol(want, g * A * A * L / 4.0, 1e-15);
   gsl_integration_workspace_free(wo);
