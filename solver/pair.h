@@ -3,6 +3,7 @@
 
 #include <stddef.h>
 
+#include "../common/consts.h"
 #include "../kernels/kernel.h"
 #include "cells.h"
 #include "particles.h"
@@ -114,8 +115,8 @@ static inline void vsph_pair_begin(struct vsph_pair_iter *it,
  *  @param dim the loop's dimension (= pk->dim), passed by the caller so that
  *  a caller specialised on a constant dimension gets unrolled loops.
  *  @return 1 if there is one, 0 when the ranges are exhausted. */
-static inline int vsph_pair_next(struct vsph_pair_iter *it, int dim,
-                                 struct vsph_pair *pr) {
+VSPH_CONSTS_SPECIALISE int vsph_pair_next(struct vsph_pair_iter *it, int dim,
+                                          struct vsph_pair *pr) {
   const struct vsph_pair_kernel *pk = it->pk;
   const double H2 = pk->H2;
   for (;;) {
@@ -147,8 +148,8 @@ static inline int vsph_pair_next(struct vsph_pair_iter *it, int dim,
  *             =  rho_i sum_j V_j F (u_j - u_i).x.
  *  @param dux (u_j - u_i).x (m^2/s). @return this pair's share of the sum
  *  (the caller multiplies the sum by rho_i). */
-static inline double vsph_pair_continuity(const struct vsph_pair *pr,
-                                          double dux) {
+VSPH_CONSTS_SPECIALISE double vsph_pair_continuity(const struct vsph_pair *pr,
+                                                   double dux) {
   return pr->VF * dux;
 }
 
@@ -156,7 +157,8 @@ static inline double vsph_pair_continuity(const struct vsph_pair *pr,
  *  THEORY 5): V_j psi_ij.grad_i W_ij with psi_ij = 2 (rho_j - rho_i) x/s^2,
  *  = -2 V_j F (rho_j - rho_i). The caller multiplies the sum by
  *  delta h c0. @param drho rho_j - rho_i. */
-static inline double vsph_pair_delta(const struct vsph_pair *pr, double drho) {
+VSPH_CONSTS_SPECIALISE double vsph_pair_delta(const struct vsph_pair *pr,
+                                              double drho) {
   return -2.0 * pr->VF * drho;
 }
 
@@ -164,8 +166,9 @@ static inline double vsph_pair_delta(const struct vsph_pair *pr, double drho) {
  *  -(1/rho_i) sum_j V_j (p_i + p_j) grad_i W_ij. Adds V_j F (p_i + p_j) x
  *  to @p acc; the caller divides the sum by rho_i.
  *  @param psum p_i + p_j (Pa). */
-static inline void vsph_pair_pressure(const struct vsph_pair *pr, int dim,
-                                      double psum, double acc[3]) {
+VSPH_CONSTS_SPECIALISE void vsph_pair_pressure(const struct vsph_pair *pr,
+                                               int dim, double psum,
+                                               double acc[3]) {
   const double c = pr->VF * psum;
   for (int k = 0; k < dim; k++) acc[k] += c * pr->x[k];
 }
@@ -176,20 +179,22 @@ static inline void vsph_pair_pressure(const struct vsph_pair *pr, int dim,
  *  @param Kmu K mu with K = vsph_kernel_mg_factor(dim) (Pa s).
  *  @return the pair's dissipation density (K mu/2) V_j F (du.x)^2/s^2
  *  (THEORY 4), so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
-static inline double vsph_pair_mgf(const struct vsph_pair *pr, int dim,
-                                   double Kmu, double dux, double acc[3]) {
+VSPH_CONSTS_SPECIALISE double vsph_pair_mgf(const struct vsph_pair *pr, int dim,
+                                            double Kmu, double dux,
+                                            double acc[3]) {
   const double c = -Kmu * pr->VF * dux / pr->s2;
   for (int k = 0; k < dim; k++) acc[k] += c * pr->x[k];
-  return 0.5 * Kmu * pr->VF * dux * dux / pr->s2;
+  return -0.5 * c * dux; /* (K mu/2) V_j F (du.x)^2/s^2, one division */
 }
 
 /** @brief MEAF, Morris, Fox & Zhu (1997), Eq. (4.30), THEORY 3:
  *  (div V)_i = 2 mu sum_j V_j W'/s (u_i - u_j). Adds -2 mu V_j F du to
  *  @p acc (du = u_j - u_i). @param two_mu 2 mu (Pa s).
  *  @return the pair's dissipation density mu V_j F |du|^2 (THEORY 4). */
-static inline double vsph_pair_meaf(const struct vsph_pair *pr, int dim,
-                                    double two_mu, const double du[3],
-                                    double acc[3]) {
+VSPH_CONSTS_SPECIALISE double vsph_pair_meaf(const struct vsph_pair *pr,
+                                             int dim, double two_mu,
+                                             const double du[3],
+                                             double acc[3]) {
   const double c = -two_mu * pr->VF;
   double du2 = 0.0;
   for (int k = 0; k < dim; k++) {
@@ -203,9 +208,9 @@ static inline double vsph_pair_meaf(const struct vsph_pair *pr, int dim,
  *  B = sum_j V_j grad_i W_ij (x) x = sum_j V_j (-F) x (x) x, whose inverse
  *  is L_i, and Mg = sum_j V_j (-F) du (x) x, so that the renormalised
  *  gradient is (grad u)_i = Mg L_i (row-major d x d, entry [a*dim+b]). */
-static inline void vsph_pair_pvwf_grad(const struct vsph_pair *pr, int dim,
-                                       const double du[3], double B[9],
-                                       double Mg[9]) {
+VSPH_CONSTS_SPECIALISE void vsph_pair_pvwf_grad(const struct vsph_pair *pr,
+                                                int dim, const double du[3],
+                                                double B[9], double Mg[9]) {
   const double c = -pr->VF;
   for (int a = 0; a < dim; a++)
     for (int b = 0; b < dim; b++) {
@@ -218,9 +223,10 @@ static inline void vsph_pair_pvwf_grad(const struct vsph_pair *pr, int dim,
  *  (div V)_i = sum_j V_j (T_j L_j + T_i L_i) grad_i W_ij. Adds
  *  -V_j F (A_j + A_i) x to @p acc with A = T L from pass 1.
  *  @param Ai A_i (row-major); @param A A[a*dim+b][j] of every particle. */
-static inline void vsph_pair_pvwf_force(const struct vsph_pair *pr, int dim,
-                                        const double Ai[9], double *const A[9],
-                                        double acc[3]) {
+VSPH_CONSTS_SPECIALISE void vsph_pair_pvwf_force(const struct vsph_pair *pr,
+                                                 int dim, const double Ai[9],
+                                                 double *const A[9],
+                                                 double acc[3]) {
   const size_t j = pr->j;
   for (int a = 0; a < dim; a++) {
     double y = 0.0;

@@ -231,15 +231,16 @@ VSPH_CONSTS_SPECIALISE double force_one(const struct vsph_viscous_loop *lp,
                                         const struct vsph_pair_ranges *rg,
                                         size_t i, double *const out[3],
                                         const int dim) {
-  double acc[3] = {0, 0, 0}, Ai[9] = {0}, pd = 0.0;
+  double acc[3] = {0, 0, 0}, Ai[9] = {0}, ui[3] = {0, 0, 0}, pd = 0.0;
   vsph_viscous_load_A(lp, i, Ai);
+  for (int k = 0; k < dim; k++) ui[k] = p->vel[k][i];
   struct vsph_pair_iter it;
   struct vsph_pair pr;
   vsph_pair_begin(&it, pk, p, rg, i);
   while (vsph_pair_next(&it, dim, &pr)) {
     double du[3], dux = 0.0;
     for (int k = 0; k < dim; k++) {
-      du[k] = p->vel[k][pr.j] - p->vel[k][i];
+      du[k] = p->vel[k][pr.j] - ui[k];
       dux += du[k] * pr.x[k];
     }
     pd += vsph_viscous_pair(lp, &pr, du, dux, Ai, acc);

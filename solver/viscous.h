@@ -3,6 +3,7 @@
 
 #include <stddef.h>
 
+#include "../common/consts.h"
 #include "pair.h"
 
 struct vsph_kernel_type;
@@ -126,10 +127,9 @@ static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
  *  density (0 for PVWF, whose density -T_i:D_i comes from pass 1). A new
  *  formulation adds its pair function to pair.h and a case here.
  *  @param du u_j - u_i; @param dux du.x; @param Ai PVWF's A_i. */
-static inline double vsph_viscous_pair(const struct vsph_viscous_loop *lp,
-                                       const struct vsph_pair *pr,
-                                       const double du[3], double dux,
-                                       const double Ai[9], double acc[3]) {
+VSPH_CONSTS_SPECIALISE double vsph_viscous_pair(
+    const struct vsph_viscous_loop *lp, const struct vsph_pair *pr,
+    const double du[3], double dux, const double Ai[9], double acc[3]) {
   switch (lp->form) {
     case VSPH_VISCOUS_MGF:
       return vsph_pair_mgf(pr, lp->dim, lp->Kmu, dux, acc);
