@@ -164,13 +164,12 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
                  "relative error of P (dimensionless)");
   a.logx = a.logy = 1;
   snprintf(a.extra, sizeof a.extra, "set xrange [15:200]\n");
-  static const char *const pt[NFORM] = {"7", "5", "9"};
   int st = VSPH_OK;
   for (int form = 0; form < NFORM && !st; form++) {
     char title[64], style[64];
     snprintf(title, sizeof title, "%s total", vsph_viscous_label(form));
-    snprintf(style, sizeof style, "linespoints pt %s lw 2 lc %d", pt[form],
-             form + 1);
+    snprintf(style, sizeof style, "linespoints pt %d lw 2 lc %d",
+             vsph_report_runs_point(form), form + 1);
     st = vsph_plot_add(&a, tb->res_name[form], "1:2", title, style);
     if (!st && form != VSPH_VISCOUS_PVWF) { /* PVWF's is rounding */
       snprintf(title, sizeof title, "%s surface part",

@@ -137,6 +137,9 @@ double vsph_report_runs_diss0(const struct vsph_report_run *r);
 double vsph_report_runs_interp(const double *t, const double *y, size_t n,
                                double x);
 
+/* gnuplot's point type for formulation f: the same in every figure. */
+int vsph_report_runs_point(int f);
+
 /* The figures of scene @p sc's ladder (memoised in R). */
 int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
                                     struct vsph_report_ladder *out);

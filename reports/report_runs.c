@@ -232,6 +232,11 @@ int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
   return VSPH_OK;
 }
 
+int vsph_report_runs_point(int f) {
+  static const int pt[] = {7, 5, 9, 11, 13, 3};
+  return pt[(size_t)f % (sizeof pt / sizeof pt[0])];
+}
+
 size_t vsph_report_runs_baseline_count(void) {
   return VSPH_REPORT_NSCENES * VSPH_VISCOUS_FORM_COUNT;
 }

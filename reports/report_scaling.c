@@ -79,14 +79,13 @@ static int figure(struct vsph_report *R, int dim, int fk) {
   vsph_plot_init(&pl, R->dir, pname, title, "smoothing length h (m)",
                  "|(div V)_i| at the surface particle (N/m^d)");
   pl.logx = pl.logy = 1;
-  static const char *const pts[VSPH_VISCOUS_FORM_COUNT] = {
-      "linespoints pt 7 lw 2", "linespoints pt 5 lw 2",
-      "linespoints pt 9 lw 2"};
   int st = VSPH_OK;
   for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++) {
-    char using[16];
+    char using[16], style[48];
     snprintf(using, sizeof using, "1:%d", f + 2);
-    st = vsph_plot_add(&pl, data, using, vsph_viscous_label(f), pts[f]);
+    snprintf(style, sizeof style, "linespoints pt %d lw 2",
+             vsph_report_runs_point(f));
+    st = vsph_plot_add(&pl, data, using, vsph_viscous_label(f), style);
   }
   if (!st)
     st = vsph_plot_add(&pl, data, "1:(1e-3*$1**-1)", "slope -1",

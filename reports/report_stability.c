@@ -84,9 +84,16 @@ static int stability_map(struct vsph_report *R, const char *map,
                          const char *xlabel) {
   struct vsph_plot pl;
   vsph_plot_init(&pl, R->dir, name, title, xlabel, "formulation");
-  snprintf(pl.extra, sizeof pl.extra,
-           "set ytics ('MGF' 1, 'MEAF' 2, 'PVWF' 3)\nset yrange [0.5:3.5]\n"
-           "set offsets graph 0.05, graph 0.05, 0, 0\n");
+  /* one row per formulation, labelled from the formulation table */
+  size_t len = (size_t)snprintf(pl.extra, sizeof pl.extra, "set ytics (");
+  for (int f = 0; f < NFORM && len < sizeof pl.extra; f++)
+    len += (size_t)snprintf(pl.extra + len, sizeof pl.extra - len, "%s'%s' %d",
+                            f ? ", " : "", vsph_viscous_label(f), f + 1);
+  if (len < sizeof pl.extra)
+    snprintf(pl.extra + len, sizeof pl.extra - len,
+             ")\nset yrange [0.5:%g]\nset offsets graph 0.05, graph 0.05, "
+             "0, 0\n",
+             NFORM + 0.5);
   int st = vsph_plot_add(&pl, map, "1:($3==1 ? $2 : 1/0)", "stable",
                          "points pt 7 ps 2.5 lc rgb '#2a9d2a'");
   if (!st)
