@@ -11,17 +11,27 @@
 
 enum { KEY_MAX = 128, VALUE_MAX = 512 };
 
+/* The largest parameter file read (bytes): parameter files are a few
+ * hundred bytes; anything near this is a mistake, refused before parsing. */
+static const long FILE_MAX = 1 << 20;
+
 struct entry {
   char key[KEY_MAX];
   char value[VALUE_MAX];
   int used;
+  unsigned source; /* the vsph_params_read that stored it; 0: not a file */
 };
 
 /* Entries are allocated one by one, so a value pointer handed out by a
- * getter stays valid for the store's lifetime. */
+ * getter stays valid for the store's lifetime. An open-addressing hash
+ * index over the entries keeps lookups O(1), so reading a file is linear
+ * in its size. */
 struct vsph_params {
-  struct entry **e;
-  size_t n, cap;
+  struct entry **e;  /* insertion order */
+  size_t n, cap;     /* entries, allocated length of e */
+  size_t *slot;      /* hash index: entry index + 1, 0 empty */
+  size_t nslot;      /* a power of two, at least 2 n */
+  unsigned nsources; /* files read so far */
 };
 
 struct vsph_params *vsph_params_alloc(void) {
@@ -36,21 +46,58 @@ void vsph_params_free(struct vsph_params *prm) {
   if (!prm) return;
   for (size_t i = 0; i < prm->n; i++) free(prm->e[i]);
   free(prm->e);
+  free(prm->slot);
   free(prm);
 }
 
+/* FNV-1a, 64 bit. */
+static size_t hash(const char *key) {
+  unsigned long long h = 1469598103934665603ull;
+  for (const unsigned char *c = (const unsigned char *)key; *c; c++) {
+    h ^= *c;
+    h *= 1099511628211ull;
+  }
+  return (size_t)h;
+}
+
+/* The slot holding key, or the empty slot where it would go. */
+static size_t probe(const struct vsph_params *prm, const char *key) {
+  const size_t mask = prm->nslot - 1;
+  size_t s = hash(key) & mask;
+  while (prm->slot[s] && strcmp(prm->e[prm->slot[s] - 1]->key, key))
+    s = (s + 1) & mask;
+  return s;
+}
+
 static struct entry *find(const struct vsph_params *prm, const char *key) {
+  if (prm->nslot == 0) return NULL;
+  const size_t s = probe(prm, key);
+  return prm->slot[s] ? prm->e[prm->slot[s] - 1] : NULL;
+}
+
+/* Double the hash index and re-insert every entry. */
+static int grow_index(struct vsph_params *prm) {
+  const size_t nslot = prm->nslot ? 2 * prm->nslot : 64;
+  size_t *slot = calloc(nslot, sizeof *slot);
+  if (!slot) VSPH_FAIL(VSPH_ENOMEM, "cannot grow the parameter store");
+  free(prm->slot);
+  prm->slot = slot;
+  prm->nslot = nslot;
   for (size_t i = 0; i < prm->n; i++)
-    if (!strcmp(prm->e[i]->key, key)) return prm->e[i];
-  return NULL;
+    prm->slot[probe(prm, prm->e[i]->key)] = i + 1;
+  return VSPH_OK;
 }
 
 static int put(struct vsph_params *prm, const char *key, const char *value,
-               int used) {
+               int used, unsigned source) {
   if (strlen(key) >= KEY_MAX || strlen(value) >= VALUE_MAX)
-    VSPH_FAIL(VSPH_EINVAL, "parameter '%s' or its value is too long", key);
+    VSPH_FAIL(VSPH_EINVAL, "parameter '%.40s' or its value is too long", key);
   struct entry *e = find(prm, key);
   if (!e) {
+    if (2 * (prm->n + 1) > prm->nslot) {
+      const int st = grow_index(prm);
+      if (st) return st;
+    }
     if (prm->n == prm->cap) {
       const size_t cap = prm->cap ? 2 * prm->cap : 32;
       struct entry **ne = realloc(prm->e, cap * sizeof *ne);
@@ -60,12 +107,14 @@ static int put(struct vsph_params *prm, const char *key, const char *value,
     }
     e = malloc(sizeof *e);
     if (!e) VSPH_FAIL(VSPH_ENOMEM, "cannot grow the parameter store");
+    prm->slot[probe(prm, key)] = prm->n + 1;
     prm->e[prm->n++] = e;
     snprintf(e->key, KEY_MAX, "%s", key);
     e->used = 0;
   }
   snprintf(e->value, VALUE_MAX, "%s", value);
   e->used |= used;
+  e->source = source;
   return VSPH_OK;
 }
 
@@ -75,30 +124,34 @@ int vsph_params_set(struct vsph_params *prm, const char *key,
   if (!colon || colon == key || colon[1] == '\0' || strchr(colon + 1, ':'))
     VSPH_FAIL(VSPH_EINVAL, "parameter '%s' is not of the form Section:key",
               key);
-  return put(prm, key, value, 0);
+  return put(prm, key, value, 0, 0);
 }
 
-/* Store Section:key from a file, refusing a key given twice. */
+/* Store Section:key from file number `source`, refusing a key given twice
+ * in that file; a key of an earlier file is overridden. */
 static int store_once(struct vsph_params *prm, const char *path, size_t line,
-                      const char *section, const char *key, const char *value) {
+                      const char *section, const char *key, const char *value,
+                      unsigned source) {
   char full[2 * KEY_MAX + 2];
   snprintf(full, sizeof full, "%s:%s", section, key);
-  if (find(prm, full))
-    VSPH_FAIL(VSPH_EINVAL, "%s:%zu: '%s' given twice", path, line, full);
-  return put(prm, full, value, 0);
+  const struct entry *e = find(prm, full);
+  if (e && e->source == source)
+    VSPH_FAIL(VSPH_EINVAL, "%s:%zu: '%.60s' given twice", path, line, full);
+  return put(prm, full, value, 0, source);
 }
 
 /* libyaml event reader for the subset: root mapping of sections, each a
  * mapping of scalars or flow/block sequences of scalars. */
-int vsph_params_read(struct vsph_params *prm, const char *path) {
-  FILE *f = fopen(path, "rb");
-  if (!f) VSPH_FAIL(VSPH_EIO, "cannot open '%s': %s", path, strerror(errno));
+int vsph_params_read_string(struct vsph_params *prm, const char *text,
+                            size_t len, const char *path) {
+  if (len > (size_t)FILE_MAX)
+    VSPH_FAIL(VSPH_EINVAL, "%s: %zu bytes; a parameter file holds at most %ld",
+              path, len, FILE_MAX);
+  const unsigned source = ++prm->nsources;
   yaml_parser_t ps;
-  if (!yaml_parser_initialize(&ps)) {
-    fclose(f);
+  if (!yaml_parser_initialize(&ps))
     VSPH_FAIL(VSPH_ENOMEM, "cannot start the YAML parser");
-  }
-  yaml_parser_set_input_file(&ps, f);
+  yaml_parser_set_input_string(&ps, (const unsigned char *)text, len);
   int st = VSPH_OK, depth = 0, docs = 0, in_seq = 0;
   char section[KEY_MAX] = "", key[KEY_MAX] = "", value[VALUE_MAX] = "";
   int have_key = 0, done = 0;
@@ -163,7 +216,7 @@ int vsph_params_read(struct vsph_params *prm, const char *path) {
         break;
       case YAML_SEQUENCE_END_EVENT:
         in_seq = 0;
-        st = store_once(prm, path, line, section, key, value);
+        st = store_once(prm, path, line, section, key, value, source);
         have_key = 0;
         break;
       case YAML_SCALAR_EVENT: {
@@ -173,8 +226,8 @@ int vsph_params_read(struct vsph_params *prm, const char *path) {
                              "%s:%zu: anchors are not allowed", path, line);
           st = VSPH_EINVAL;
         } else if (in_seq) {
-          const size_t len = strlen(value);
-          snprintf(value + len, VALUE_MAX - len, "%s%s", len ? ", " : "", s);
+          const size_t vl = strlen(value);
+          snprintf(value + vl, VALUE_MAX - vl, "%s%s", vl ? ", " : "", s);
         } else if (depth == 1) { /* a section name, or a bare root key */
           if (have_key) {
             vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
@@ -188,7 +241,7 @@ int vsph_params_read(struct vsph_params *prm, const char *path) {
           snprintf(key, sizeof key, "%s", s);
           have_key = 1;
         } else if (depth == 2) {
-          st = store_once(prm, path, line, section, key, s);
+          st = store_once(prm, path, line, section, key, s, source);
           have_key = 0;
         } else {
           vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
@@ -208,7 +261,38 @@ int vsph_params_read(struct vsph_params *prm, const char *path) {
     st = VSPH_EINVAL;
   }
   yaml_parser_delete(&ps);
+  return st;
+}
+
+int vsph_params_read(struct vsph_params *prm, const char *path) {
+  FILE *f = fopen(path, "rb");
+  if (!f) VSPH_FAIL(VSPH_EIO, "cannot open '%s': %s", path, strerror(errno));
+  /* refuse an oversized file before reading it (a pipe reports -1: read
+   * up to the limit and one byte more) */
+  long size = -1;
+  if (fseek(f, 0, SEEK_END) == 0) size = ftell(f);
+  if (size > FILE_MAX) {
+    fclose(f);
+    VSPH_FAIL(VSPH_EINVAL, "%s: %ld bytes; a parameter file holds at most %ld",
+              path, size, FILE_MAX);
+  }
+  rewind(f);
+  char *text = malloc((size_t)FILE_MAX + 2);
+  if (!text) {
+    fclose(f);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot read '%s'", path);
+  }
+  const size_t len = fread(text, 1, (size_t)FILE_MAX + 1, f);
+  const int bad = ferror(f);
   fclose(f);
+  int st;
+  if (bad) {
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot read '%s'", path);
+    st = VSPH_EIO;
+  } else {
+    st = vsph_params_read_string(prm, text, len, path);
+  }
+  free(text);
   return st;
 }
 
@@ -262,14 +346,14 @@ int vsph_params_get_double_or(struct vsph_params *prm, const char *key,
   char buf[64];
   snprintf(buf, sizeof buf, "%.17g", def);
   *out = def;
-  return put(prm, key, buf, 1);
+  return put(prm, key, buf, 1, 0);
 }
 
 int vsph_params_get_string_or(struct vsph_params *prm, const char *key,
                               const char *def, const char **out) {
   struct entry *e = find(prm, key);
   if (!e) {
-    const int st = put(prm, key, def, 1);
+    const int st = put(prm, key, def, 1, 0);
     if (st) return st;
     e = find(prm, key);
   }
@@ -328,7 +412,7 @@ static int load_one(struct vsph_params *prm, const char *section,
       e->used = 1;
       text = e->value;
     } else {
-      const int st = put(prm, key, def, 1);
+      const int st = put(prm, key, def, 1, 0);
       if (st) return st;
     }
   }

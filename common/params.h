@@ -20,11 +20,18 @@ struct vsph_params *vsph_params_alloc(void);
 /** @brief Free; NULL is a no-op. */
 void vsph_params_free(struct vsph_params *prm);
 
-/** @brief Read a parameter file; later values override earlier ones.
- *  @return VSPH_OK, VSPH_EIO (cannot open), VSPH_EINVAL (outside the
- *  subset: anchors, aliases, deeper nesting, several documents, a key
- *  given twice, a malformed file), VSPH_ENOMEM. */
+/** @brief Read a parameter file (at most 1 MiB): its values override
+ *  those of files read before it and of earlier vsph_params_set calls, so
+ *  several files apply in order. Linear in the file's size.
+ *  @return VSPH_OK, VSPH_EIO (cannot open or read), VSPH_EINVAL (too large;
+ *  outside the subset: anchors, aliases, deeper nesting, several
+ *  documents, a key given twice in the same file; malformed), VSPH_ENOMEM. */
 int vsph_params_read(struct vsph_params *prm, const char *path);
+
+/** @brief The same from @p len bytes of @p text; @p path names it in
+ *  messages. */
+int vsph_params_read_string(struct vsph_params *prm, const char *text,
+                            size_t len, const char *path);
 
 /** @brief Set "Section:key" to @p value (overrides the file).
  *  @return VSPH_OK or VSPH_EINVAL (key not of the form Section:key). */
