@@ -49,6 +49,7 @@ struct raw {
   double perturb;
   size_t seed;
   double epsrel;
+  double max_memory;
 };
 
 #define P struct raw
@@ -71,6 +72,8 @@ static const struct vsph_params_spec DISSIPATION[] = {
                          "seed of that shift (mt19937)"),
     VSPH_PARAMS_REAL_SPEC(P, epsrel, 1e-10, 1e-13, 1e-3,
                           "relative accuracy of the exact integrals"),
+    VSPH_PARAMS_REAL_SPEC(P, max_memory, VSPH_CONSTS_MAX_MEMORY, 1e-3, 4096,
+                          "refuse a set estimated to need more memory (GiB)"),
 };
 #undef P
 
@@ -112,6 +115,7 @@ int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
   dp->perturb = r.perturb;
   dp->seed = (unsigned long)r.seed;
   dp->epsrel = r.epsrel;
+  dp->max_memory = r.max_memory;
   return VSPH_OK;
 }
 
@@ -237,6 +241,17 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
   if (dp->nacross < 2)
     VSPH_FAIL(VSPH_EINVAL, "need at least 2 particles across, got %zu",
               dp->nacross);
+  /* Per particle: the set's arrays and id, the cell scratch and at most 8
+   * cells, the PVWF workspace and the three result columns. */
+  const double n = (double)dp->nacross * (double)dp->nacross;
+  const double per = (11 + 1 + 4 + 16 + 5 + 3) * 8.0 + 1;
+  const double gib = n * per / (1024.0 * 1024.0 * 1024.0);
+  if (!(gib <= dp->max_memory))
+    VSPH_FAIL(VSPH_EINVAL,
+              "res %zu needs up to about %.3g GiB (%.3g particles), more than "
+              "Dissipation:max_memory = %g GiB: lower res or raise "
+              "max_memory",
+              dp->nacross, gib, n, dp->max_memory);
   memset(res, 0, sizeof *res);
   const double dx = EXTENT / (double)dp->nacross, h = dp->hdx * dx;
   res->dx = dx;

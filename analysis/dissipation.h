@@ -37,6 +37,7 @@ struct vsph_dissipation_props {
   double perturb;                        /*!< lattice perturbation / dx */
   unsigned long seed;                    /*!< perturbation seed */
   double epsrel;                         /*!< accuracy of the exact integrals */
+  double max_memory; /*!< refuse a set estimated to need more (GiB) */
 };
 
 /** What one evaluation measured (powers in W per unit depth). */

@@ -12,7 +12,7 @@
 int vsph_args_fail(const char *cmd, const char *fmt, ...) {
   va_list ap;
   va_start(ap, fmt);
-  fprintf(stderr, "vsph %s: ", cmd);
+  fprintf(stderr, "vsph%s%s: ", *cmd ? " " : "", cmd);
   vfprintf(stderr, fmt, ap);
   fputc('\n', stderr);
   va_end(ap);
@@ -180,10 +180,11 @@ int vsph_args_status(const char *cmd, int status) {
 }
 
 int vsph_args_finish(const char *cmd, int rc) {
-  if (fflush(stdout) != 0 || ferror(stdout)) {
+  errno = 0;
+  if ((fflush(stdout) != 0 || ferror(stdout)) && rc == 0) {
     fprintf(stderr, "vsph %s: cannot write to standard output: %s\n", cmd,
-            strerror(errno));
-    return rc ? rc : 1;
+            errno ? strerror(errno) : "write error");
+    return 1;
   }
   return rc;
 }

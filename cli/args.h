@@ -82,8 +82,9 @@ void vsph_args_install_handler(void);
  *  invalid input and 1 for internal failures. */
 int vsph_args_status(const char *cmd, int status);
 
-/** @brief Flush stdout and report a failed write (exit status 1). Every
- *  sub-command ends through it. @return @p rc, or 1 if stdout failed. */
+/** @brief Flush stdout and report a failed write (exit status 1) unless
+ *  @p rc already says a failure (reported then). Every sub-command ends
+ *  through it. @return @p rc, or 1 if stdout failed. */
 int vsph_args_finish(const char *cmd, int rc);
 
 #endif /* VSPH_CLI_ARGS_H */

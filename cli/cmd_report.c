@@ -1,6 +1,7 @@
 /* vsph report: the main job (reports/report.c). */
 #include "cmd_report.h"
 
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -10,6 +11,10 @@
 #include "args.h"
 
 static const char *const CMD = "report";
+
+/* SIGINT/SIGTERM: the run in progress stops after its step, uncached. */
+static volatile sig_atomic_t stop_signal;
+static void on_signal(int sig) { stop_signal = sig; }
 
 int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
@@ -47,7 +52,8 @@ int vsph_cmd_report_main(int argc, char **argv) {
                                   NULL};
   const int rc = vsph_args_parse(&c, argc, argv, NULL);
   if (rc >= 0) return vsph_args_finish(CMD, rc);
-  struct vsph_report_props rp = {.dir = dir, .full = full, .parts = 0};
+  struct vsph_report_props rp = {
+      .dir = dir, .full = full, .parts = 0, .stop = &stop_signal};
   if (only) {
     char buf[256];
     if (strlen(only) >= sizeof buf)
@@ -62,6 +68,19 @@ int vsph_cmd_report_main(int argc, char **argv) {
     if (!rp.parts)
       return vsph_args_fail(CMD, "--only names no part (see --help)");
   }
+  struct sigaction sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, NULL);
+  sigaction(SIGTERM, &sa, NULL);
   const int st = vsph_report_write(&rp);
+  if (st == VSPH_EINTR) {
+    fprintf(stderr,
+            "vsph report: interrupted by signal %d; finished runs "
+            "are cached, rerun to go on\n",
+            (int)stop_signal);
+    return 128 + (int)stop_signal;
+  }
   return st ? vsph_args_status(CMD, st) : vsph_args_finish(CMD, 0);
 }

@@ -3,6 +3,7 @@
 #include "cmd_run.h"
 
 #include <omp.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -31,6 +32,19 @@ static const char ABOUT[] =
     "                      unstable), unstable_time, unstable_reason, ...\n"
     "A run that goes unstable stops cleanly, keeps its output and is marked\n"
     "unstable in run.json (exit status 0: stability is a result).";
+
+/* SIGINT/SIGTERM: the run stops after the current step (io/rundir). */
+static volatile sig_atomic_t stop_signal;
+static void on_signal(int sig) { stop_signal = sig; }
+
+static void catch_signals(void) {
+  struct sigaction sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, NULL);
+  sigaction(SIGTERM, &sa, NULL);
+}
 
 int vsph_cmd_run_main(int argc, char **argv) {
   const char *out_dir = NULL;
@@ -69,10 +83,19 @@ int vsph_cmd_run_main(int argc, char **argv) {
     return rc;
   }
   if (threads > 0) omp_set_num_threads((int)threads);
+  catch_signals();
+  const struct vsph_rundir_opts opts = {
+      .dir = out_dir, .progress = quiet ? NULL : stderr, .stop = &stop_signal};
   struct vsph_rundir_result res;
-  const int st =
-      vsph_rundir_execute(prm, argv[1], out_dir, quiet ? NULL : stderr, &res);
+  const int st = vsph_rundir_execute(prm, argv[1], &opts, &res);
   vsph_params_free(prm);
+  if (st == VSPH_EINTR) { /* the shell's convention: 128 + signal */
+    fprintf(stderr,
+            "vsph run: interrupted by signal %d at t = %.6g (output kept in "
+            "%s, run.json says interrupted)\n",
+            (int)stop_signal, res.t, res.dir);
+    return 128 + (int)stop_signal;
+  }
   if (st) return vsph_args_status(CMD, st);
   if (quiet && res.unstable)
     fprintf(stderr, "vsph run: unstable at t = %.6g: %s (output kept in %s)\n",

@@ -49,22 +49,21 @@ int main(int argc, char **argv) {
   /* STYLE B4: GSL reports through return codes; set before any thread. */
   gsl_set_error_handler_off();
   vsph_args_install_handler();
-  if (argc < 2) {
-    usage(stderr);
-    return 2;
-  }
+  if (argc < 2) return vsph_args_fail("", "missing COMMAND (see vsph --help)");
   if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") ||
       !strcmp(argv[1], "help")) {
     usage(stdout);
-    return 0;
+    return vsph_args_finish("--help", 0);
   }
   if (!strcmp(argv[1], "--version")) {
     printf("vsph %s\n", VSPH_VERSION);
-    return 0;
+    return vsph_args_finish("--version", 0);
   }
+  /* every command's output is flushed and checked before the exit status */
   for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
     if (!strcmp(argv[1], commands[i].name))
-      return commands[i].fn(argc - 1, argv + 1);
+      return vsph_args_finish(commands[i].name,
+                              commands[i].fn(argc - 1, argv + 1));
   fprintf(stderr, "vsph: unknown command '%s' (see vsph --help)\n", argv[1]);
   return 2;
 }

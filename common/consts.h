@@ -21,6 +21,11 @@ extern const char vsph_source_hash_id[];
  *  solver and of every analysis that lays particles on a lattice. */
 #define VSPH_CONSTS_HDX (4.0 / 3.0)
 
+/** Default memory budget of one computation (GiB): larger ones are refused
+ *  up front with their estimate (Solver:max_memory, Dissipation:max_memory
+ *  raise it). */
+#define VSPH_CONSTS_MAX_MEMORY 4.0
+
 /** Default seed of the mt19937 generator that perturbs lattices. */
 #define VSPH_CONSTS_SEED 2385
 

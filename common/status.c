@@ -9,6 +9,7 @@ static const char *const vsph_status_names[] = {
     [VSPH_EIO] = "input/output error",
     [VSPH_ENOCONV] = "no convergence",
     [VSPH_ELIB] = "numerical library failure",
+    [VSPH_EINTR] = "interrupted",
 };
 _Static_assert(sizeof vsph_status_names / sizeof vsph_status_names[0] ==
                    VSPH_STATUS_COUNT,

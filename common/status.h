@@ -16,6 +16,7 @@ enum vsph_status {
   VSPH_EIO,     /*!< file could not be read or written */
   VSPH_ENOCONV, /*!< iteration hit its limit without meeting tolerance */
   VSPH_ELIB,    /*!< failure reported by GSL or FFTW */
+  VSPH_EINTR,   /*!< stopped on request (a signal): output kept, marked */
   VSPH_STATUS_COUNT
 };
 

@@ -1,10 +1,13 @@
 #include "rundir.h"
 
+#include <dirent.h>
+#include <errno.h>
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "../analysis/references.h"
 #include "../common/consts.h"
@@ -41,8 +44,11 @@ static int write_used(struct vsph_params *prm, const char *dir) {
   return vsph_files_close(f, dir, "used_parameters.yml");
 }
 
+/* run.json: the settings, the figures of the run and its status: ok,
+ * unstable, interrupted, or error (a write failed: @p error says which). */
 static int write_run_json(const struct vsph_run *run,
-                          const struct vsph_rundir_result *res, double bytes) {
+                          const struct vsph_rundir_result *res, double bytes,
+                          const char *error) {
   const struct vsph_run_props *rp = &run->props;
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "version", VSPH_VERSION);
@@ -71,12 +77,78 @@ static int write_run_json(const struct vsph_run *run,
   cJSON_AddNumberToObject(o, "memory_bytes", bytes);
   cJSON_AddNumberToObject(o, "pvwf_fallback_particles",
                           (double)vsph_run_fallbacks(run));
-  cJSON_AddStringToObject(o, "status", res->unstable ? "unstable" : "ok");
+  cJSON_AddStringToObject(o, "status",
+                          error              ? "error"
+                          : res->interrupted ? "interrupted"
+                          : res->unstable    ? "unstable"
+                                             : "ok");
+  if (error) cJSON_AddStringToObject(o, "error", error);
+  if (res->interrupted) cJSON_AddNumberToObject(o, "interrupted_time", res->t);
   if (res->unstable) {
     cJSON_AddNumberToObject(o, "unstable_time", res->unstable_time);
     cJSON_AddStringToObject(o, "unstable_reason", res->reason);
   }
   return vsph_json_write(o, res->dir, "run.json");
+}
+
+/* The files vsph writes into a run folder (run.json first: once the old
+ * status is gone, nothing can call the new files ok). */
+static int is_run_file(const char *name) {
+  static const char *const exact[] = {"run.json", "energy.csv", "snapshots.pvd",
+                                      "used_parameters.yml", "key.txt"};
+  for (size_t k = 0; k < sizeof exact / sizeof exact[0]; k++)
+    if (!strcmp(name, exact[k])) return 1;
+  const size_t n = strlen(name);
+  return (!strncmp(name, "snap_", 5) && n > 9 &&
+          !strcmp(name + n - 4, ".vtk")) ||
+         (n > 4 && !strcmp(name + n - 4, ".tmp"));
+}
+
+/* A folder for the run: created if new; an earlier vsph run's files are
+ * removed (run.json first); any other non-empty folder is refused. */
+static int prepare_dir(const char *dir) {
+  struct stat sb;
+  if (stat(dir, &sb) != 0) return vsph_files_mkdir(dir);
+  if (!S_ISDIR(sb.st_mode))
+    VSPH_FAIL(VSPH_EINVAL, "%s exists and is not a folder", dir);
+  DIR *d = opendir(dir);
+  if (!d) VSPH_FAIL(VSPH_EIO, "cannot read %s: %s", dir, strerror(errno));
+  int other = 0, any = 0;
+  for (struct dirent *e; (e = readdir(d));) {
+    if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+    any = 1;
+    other |= !is_run_file(e->d_name);
+  }
+  closedir(d);
+  if (!any) return VSPH_OK;
+  char path[4200];
+  snprintf(path, sizeof path, "%s/used_parameters.yml", dir);
+  char *head = vsph_files_slurp(path, NULL);
+  /* an earlier run: its parameters say so, or it holds only run files */
+  const int vsph_run = (head && !strncmp(head, "# vsph ", 7)) || !other;
+  free(head);
+  if (!vsph_run)
+    VSPH_FAIL(VSPH_EINVAL,
+              "%s is not empty and holds no vsph run (no used_parameters.yml "
+              "written by vsph): choose another --out",
+              dir);
+  snprintf(path, sizeof path, "%s/run.json", dir);
+  if (remove(path) != 0 && errno != ENOENT)
+    VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
+  if (!(d = opendir(dir)))
+    VSPH_FAIL(VSPH_EIO, "cannot read %s: %s", dir, strerror(errno));
+  int st = VSPH_OK;
+  for (struct dirent *e; !st && (e = readdir(d));) {
+    if (!is_run_file(e->d_name)) continue; /* the user's own files stay */
+    snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+    if (remove(path) != 0 && errno != ENOENT) {
+      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot remove %s: %s",
+                         path, strerror(errno));
+      st = VSPH_EIO;
+    }
+  }
+  closedir(d);
+  return st;
 }
 
 /* The files written while the run goes on. */
@@ -85,6 +157,7 @@ struct outputs {
   FILE *csv;
   struct vsph_vtk_pvd pvd;
   size_t nsnap;
+  char error[1200]; /* the write that failed, for run.json */
 };
 
 static int write_row(struct outputs *o, struct vsph_run *run,
@@ -96,13 +169,17 @@ static int write_row(struct outputs *o, struct vsph_run *run,
   if (st) return st;
   const struct vsph_equations_energy *en = &row.en;
   const struct vsph_equations_budget *b = &row.b;
+  errno = 0;
   fprintf(o->csv,
           "%.10g,%.12e,%.12e,%.12e,%.12e,%.12e,%.6e,%.6e,%.6e,%.12e,"
           "%.12e,%.12e,%.12e\n",
           row.t, en->Ek, en->Ep, en->Ec, b->P_visc, b->P_delta, b->residual,
           en->P[0], en->P[1], en->Lz, b->dEk, Er, dEr);
-  if (fflush(o->csv) != 0 || ferror(o->csv))
-    VSPH_FAIL(VSPH_EIO, "cannot write %s/energy.csv", o->dir);
+  if (fflush(o->csv) != 0 || ferror(o->csv)) {
+    snprintf(o->error, sizeof o->error, "cannot write %s/energy.csv: %s",
+             o->dir, errno ? strerror(errno) : "write error");
+    VSPH_FAIL(VSPH_EIO, "%s", o->error);
+  }
   return VSPH_OK;
 }
 
@@ -110,14 +187,20 @@ static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
   char name[64];
   snprintf(name, sizeof name, "snap_%04zu.vtk", o->nsnap++);
   const struct vsph_integrate *s = run->integ;
-  const int st = vsph_vtk_write(o->dir, name, s->p, s->n_fluid, s->t);
-  return st ? st : vsph_vtk_pvd_add(&o->pvd, s->t, name);
+  int st = vsph_vtk_write(o->dir, name, s->p, s->n_fluid, s->t);
+  if (!st) st = vsph_vtk_pvd_add(&o->pvd, s->t, name);
+  if (st)
+    snprintf(o->error, sizeof o->error, "cannot write snapshot %s/%s", o->dir,
+             name);
+  return st;
 }
 
 /* The time loop: rows and snapshots as the driver says they are due. */
 static int time_loop(struct outputs *o, struct vsph_run *run,
-                     struct vsph_references_scene *ref, FILE *progress,
+                     struct vsph_references_scene *ref,
+                     const struct vsph_rundir_opts *opts,
                      struct vsph_rundir_result *res) {
+  FILE *progress = opts->progress;
   const double t0 = omp_get_wtime();
   double last = t0;
   int st = VSPH_OK;
@@ -125,6 +208,10 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
     if ((run->due & VSPH_RUN_ROW) && (st = write_row(o, run, ref))) break;
     if ((run->due & VSPH_RUN_SNAPSHOT) && (st = write_snapshot(o, run))) break;
     if (run->state != VSPH_RUN_RUNNING) break;
+    if (opts->stop && *opts->stop) { /* after a whole step */
+      res->interrupted = 1;
+      break;
+    }
     if ((st = vsph_run_iterate(run))) break;
     const double now = omp_get_wtime();
     if (progress && now - last > 2.0) {
@@ -143,7 +230,7 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
 }
 
 int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
-                        const char *dir, FILE *progress,
+                        const struct vsph_rundir_opts *opts,
                         struct vsph_rundir_result *res) {
   memset(res, 0, sizeof *res);
   const struct vsph_scene_type *type = vsph_scene_find(scene);
@@ -156,8 +243,8 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   if (st) return st;
   const char *unused = vsph_params_unused(prm);
   if (unused) VSPH_FAIL(VSPH_EINVAL, "unknown parameter '%s'", unused);
-  if (dir)
-    snprintf(res->dir, sizeof res->dir, "%s", dir);
+  if (opts->dir)
+    snprintf(res->dir, sizeof res->dir, "%s", opts->dir);
   else
     snprintf(res->dir, sizeof res->dir, "runs/%s-%s-%zu", type->name, rp.visc,
              rp.res);
@@ -168,14 +255,15 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
     vsph_run_free(run);
     return VSPH_ELIB;
   }
-  /* Only now, with every input checked, write anything. */
+  /* Only now, with every input checked, touch the folder. */
   struct outputs o = {.dir = res->dir};
-  if ((st = vsph_files_mkdir(res->dir)) || (st = write_used(prm, res->dir)))
+  if ((st = prepare_dir(res->dir)) || (st = write_used(prm, res->dir)))
     goto done;
   char path[600];
   snprintf(path, sizeof path, "%s/energy.csv", res->dir);
   if (!(o.csv = fopen(path, "w"))) {
-    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot write %s", path);
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot write %s: %s",
+                       path, strerror(errno));
     st = VSPH_EIO;
     goto done;
   }
@@ -188,29 +276,43 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   res->dx = run->dx;
   res->c0 = run->scene.c0;
   res->mu = run->scene.mu;
+  FILE *progress = opts->progress;
   if (progress)
     fprintf(progress,
             "vsph run: %s, %s, %s, %zu particles, h = %.4g, c0 = %.4g, "
             "t_end = %g -> %s\n",
             type->name, rp.visc, rp.kernel, run->n_fluid, run->h, run->scene.c0,
             run->t_end, res->dir);
-  st = time_loop(&o, run, ref, progress, res);
+  st = time_loop(&o, run, ref, opts, res);
   res->unstable = run->state == VSPH_RUN_UNSTABLE;
   res->unstable_time = run->t_unstable;
   snprintf(res->reason, sizeof res->reason, "%s", run->reason);
   res->steps = vsph_run_steps(run);
   res->t = vsph_run_time(run);
   res->pairs = run->pairs;
-  if (!st && fclose(o.csv) != 0) {
-    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot write %s", path);
+  errno = 0;
+  const int closed = fclose(o.csv);
+  o.csv = NULL;
+  if (!st && closed != 0) {
+    snprintf(o.error, sizeof o.error, "cannot write %s: %s", path,
+             errno ? strerror(errno) : "write error");
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "%s", o.error);
     st = VSPH_EIO;
   }
-  o.csv = NULL;
   if (o.pvd.f) {
     const int c = vsph_vtk_pvd_close(&o.pvd);
+    if (c && !o.error[0])
+      snprintf(o.error, sizeof o.error, "cannot write %s/snapshots.pvd",
+               res->dir);
     if (!st) st = c;
   }
-  if (!st) st = write_run_json(run, res, (double)vsph_run_bytes(run));
+  /* run.json last: its status says what became of the run, and a lost
+   * write never ends as "ok" */
+  const int js =
+      write_run_json(run, res, (double)vsph_run_bytes(run),
+                     st ? (o.error[0] ? o.error : "a write failed") : NULL);
+  if (!st) st = js;
+  if (!st && res->interrupted) st = VSPH_EINTR;
   if (!st && progress) {
     if (res->unstable)
       fprintf(progress,

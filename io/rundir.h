@@ -1,6 +1,7 @@
 #ifndef VSPH_IO_RUNDIR_H
 #define VSPH_IO_RUNDIR_H
 
+#include <signal.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -15,9 +16,20 @@ struct vsph_params;
  *  analysis/references), VTK snapshots and their PVD index,
  *  used_parameters.yml and run.json. */
 
+/** How to run. */
+struct vsph_rundir_opts {
+  const char *dir; /*!< output folder; NULL: runs/SCENE-VISC-RES */
+  FILE *progress;  /*!< start line, a line every 2 s, closing line; NULL:
+                        silence */
+  /** if not NULL, the run stops after the step during which *stop became
+   *  non-zero (set it from a signal handler): status "interrupted" */
+  const volatile sig_atomic_t *stop;
+};
+
 /** What one run reports back (also written to run.json). */
 struct vsph_rundir_result {
   int unstable;         /*!< 1 if the run was stopped as unstable */
+  int interrupted;      /*!< 1 if it was stopped through opts.stop */
   double unstable_time; /*!< when (s) */
   char reason[160];     /*!< why */
   size_t n_particles;   /*!< fluid particles */
@@ -29,15 +41,17 @@ struct vsph_rundir_result {
   char dir[512];        /*!< the folder written */
 };
 
-/** @brief Run scene @p scene with the parameters of @p prm into @p dir
- *  (NULL: runs/SCENE-VISC-RES).
- *  @param progress where to print the start line, a progress line every
- *  2 s and the closing line; NULL for silence.
- *  @return VSPH_OK (a run stopped as unstable is a result, and OK),
- *  VSPH_EINVAL for bad input (one message reported, nothing written),
- *  VSPH_EIO, VSPH_ENOMEM, VSPH_ELIB. */
+/** @brief Run scene @p scene with the parameters of @p prm as @p o says.
+ *  The folder must be new, empty, or hold an earlier vsph run, whose files
+ *  are removed first (run.json first), so a folder never mixes two runs;
+ *  any other non-empty folder is refused.
+ *  @return VSPH_OK (a run stopped as unstable is a result, and OK);
+ *  VSPH_EINVAL for bad input (one message reported, nothing written);
+ *  VSPH_EINTR when stopped through o->stop (run.json says "interrupted",
+ *  the snapshot index is closed); VSPH_EIO (a write failed: run.json says
+ *  "error" if it can still be written), VSPH_ENOMEM, VSPH_ELIB. */
 int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
-                        const char *dir, FILE *progress,
+                        const struct vsph_rundir_opts *o,
                         struct vsph_rundir_result *res);
 
 #endif /* VSPH_IO_RUNDIR_H */

@@ -248,6 +248,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   if (!R) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the report");
   R->dir = rp->dir;
   R->full = rp->full;
+  R->stop = rp->stop;
   R->wo = gsl_integration_workspace_alloc(1000);
   R->wi = gsl_integration_workspace_alloc(1000);
   if (!R->wo || !R->wi) {

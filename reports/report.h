@@ -1,6 +1,7 @@
 #ifndef VSPH_REPORTS_REPORT_H
 #define VSPH_REPORTS_REPORT_H
 
+#include <signal.h>
 #include <stddef.h>
 
 /** @file report.h
@@ -16,6 +17,10 @@ struct vsph_report_props {
   const char *dir;     /*!< output folder */
   int full;            /*!< 1: the paper's resolutions and end times */
   unsigned long parts; /*!< bit p: part p (vsph_report_part_*); 0: all */
+  /** if not NULL, a run in progress stops after the step during which
+   *  *stop became non-zero, and the report returns VSPH_EINTR (the run is
+   *  redone next time: it is not cached) */
+  const volatile sig_atomic_t *stop;
 };
 
 /** @brief Number of parts. */

@@ -5,6 +5,7 @@
  * folder except by the tests. */
 
 #include <gsl/gsl_integration.h>
+#include <signal.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -53,7 +54,8 @@ struct vsph_report {
   size_t nclaims, cap_claims;
   struct vsph_report_ladder ladder[VSPH_REPORT_NSCENES]; /* memo */
   int have_ladder[VSPH_REPORT_NSCENES];
-  struct vsph_text_vars tv; /* scratch values for the prose blocks */
+  struct vsph_text_vars tv;          /* scratch values for the prose blocks */
+  const volatile sig_atomic_t *stop; /* stop request, or NULL */
 };
 
 /* ------------------------------------------------------ report.c helpers */

@@ -129,8 +129,10 @@ int vsph_report_runs_get(struct vsph_report *R,
       st = vsph_params_set(prm, set[k], eq + 1);
     }
     remove(path); /* a half-finished run never matches */
+    const struct vsph_rundir_opts opts = {
+        .dir = out->dir, .progress = NULL, .stop = R->stop};
     struct vsph_rundir_result rr;
-    if (!st) st = vsph_rundir_execute(prm, rs->scene, out->dir, NULL, &rr);
+    if (!st) st = vsph_rundir_execute(prm, rs->scene, &opts, &rr);
     vsph_params_free(prm);
     if (st) return st;
     if ((st = vsph_files_mkdir(out->dir))) return st;

@@ -249,14 +249,30 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
   return VSPH_OK;
 }
 
-size_t vsph_integrate_bytes(const struct vsph_integrate *s) {
-  const size_t cap = s->p->cap, d = (size_t)s->p->dim;
+/* Bytes of the integrator's buffers for particle capacity cap in d
+ * dimensions, cell scratch for cap_n particles and cap_cells cells. */
+static size_t layout_bytes(size_t d, size_t cap, size_t cap_n, size_t cap_cells,
+                           int pvwf, int ghosts) {
   size_t b = cap * (3 * d + 5) * sizeof(double) + cap * sizeof(size_t);
-  b += s->cells->cap_n * (3 * sizeof(size_t) + sizeof(double));
-  b += s->cells->cap_cells * 2 * sizeof(size_t);
-  if (s->vws) b += cap * (d * d + 1) * sizeof(double) + cap;
-  if (s->gh) b += s->gh->cap * (sizeof(size_t) + sizeof(unsigned));
+  b += cap_n * (3 * sizeof(size_t) + sizeof(double));
+  b += cap_cells * 2 * sizeof(size_t);
+  if (pvwf) b += cap * (d * d + 1) * sizeof(double) + cap;
+  if (ghosts) b += cap * (sizeof(size_t) + sizeof(unsigned));
   b += cap * sizeof(size_t);                             /* where */
   b += cap * (2 * (2 * d + 1) + d + 1) * sizeof(double); /* RK, extra */
   return b;
+}
+
+size_t vsph_integrate_bytes(const struct vsph_integrate *s) {
+  return layout_bytes((size_t)s->p->dim, s->p->cap, s->cells->cap_n,
+                      s->cells->cap_cells, s->vws != NULL, s->gh != NULL);
+}
+
+double vsph_integrate_bytes_estimate(int dim, double n_fluid, int walls,
+                                     int pvwf) {
+  /* the capacity vsph_integrate_alloc takes, and the most cells
+   * vsph_cells_build makes (8 per particle + 4096) */
+  const double cap = n_fluid * (walls ? 1.0 + GHOSTS_PER_PARTICLE : 1.0) + 8;
+  const double per = (double)layout_bytes((size_t)dim, 1, 1, 8, pvwf, walls);
+  return cap * per + 4096.0 * 2 * sizeof(size_t);
 }

@@ -80,4 +80,10 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
  *  integrator storage. */
 size_t vsph_integrate_bytes(const struct vsph_integrate *s);
 
+/** @brief The bytes an integrator for @p n_fluid particles in @p dim
+ *  dimensions will need at most (with ghost room when @p walls, the PVWF
+ *  workspace when @p pvwf): to refuse a run before allocating it. */
+double vsph_integrate_bytes_estimate(int dim, double n_fluid, int walls,
+                                     int pvwf);
+
 #endif /* VSPH_SOLVER_INTEGRATE_H */

@@ -45,6 +45,11 @@ static const struct vsph_params_spec SOLVER[] = {
                           "dx"),
     VSPH_PARAMS_INT_SPEC(P, seed, VSPH_CONSTS_SEED, 0, 4294967295.0,
                          "seed of that shift (mt19937)"),
+    VSPH_PARAMS_INT_SPEC(P, max_steps, 1e8, 1, 1e12,
+                         "refuse a run estimated to need more steps; stop "
+                         "one that reaches it"),
+    VSPH_PARAMS_REAL_SPEC(P, max_memory, VSPH_CONSTS_MAX_MEMORY, 1e-3, 4096,
+                          "refuse a run estimated to need more memory (GiB)"),
 };
 #undef P
 
@@ -88,9 +93,49 @@ static unsigned schedule(struct vsph_run *r) {
   return due;
 }
 
+/* Refuse, before allocating anything, a run that would not fit in
+ * rp->max_memory or would need more than rp->max_steps steps, saying the
+ * estimate. Steps: t_end over THEORY 5's time step at t = 0 with the
+ * scene's U_max and largest body force. */
+static int check_cost(const struct vsph_run_props *rp,
+                      const struct vsph_scene *sc, double t_end) {
+  const double dx = sc->ref_length / (double)rp->res, h = rp->hdx * dx;
+  const double n =
+      sc->type->area * pow((double)rp->res, sc->dim) + 4.0 * (double)rp->res;
+  /* the lattice the scene lays, then the integrator's copy */
+  const double bytes =
+      n * (double)((3 * sc->dim + 6) * sizeof(double)) +
+      vsph_integrate_bytes_estimate(sc->dim, n, sc->walls.n > 0,
+                                    rp->form == VSPH_VISCOUS_PVWF);
+  const double gib = bytes / (1024.0 * 1024.0 * 1024.0);
+  if (gib > rp->max_memory)
+    VSPH_FAIL(VSPH_EINVAL,
+              "res %zu needs up to about %.3g GiB (%.3g particles), more than "
+              "Solver:max_memory = %g GiB: lower res or raise max_memory",
+              rp->res, gib, n, rp->max_memory);
+  double dt = rp->cfl * h / (sc->c0 + sc->U_max);
+  const double nu = sc->mu / sc->rho0;
+  if (nu > 0.0) dt = fmin(dt, 0.125 * h * h / nu);
+  const double gmax = sc->body == VSPH_EQUATIONS_BODY_GRAVITY ? fabs(sc->g)
+                      : sc->body == VSPH_EQUATIONS_BODY_RADIAL
+                          ? sc->beta * sc->beta * sc->ref_length
+                          : 0.0;
+  if (gmax > 0.0) dt = fmin(dt, 0.25 * sqrt(h / gmax));
+  const double steps = t_end / dt;
+  if (!(steps <= (double)rp->max_steps))
+    VSPH_FAIL(VSPH_EINVAL,
+              "the run needs about %.3g steps (dt = %.3g s to t_end = %g s), "
+              "more than Solver:max_steps = %zu: shorten t_end or raise "
+              "max_steps",
+              steps, dt, t_end, rp->max_steps);
+  return VSPH_OK;
+}
+
 int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
                    struct vsph_run **out) {
   *out = NULL;
+  const int cost = check_cost(rp, sc, rp->t_end > 0 ? rp->t_end : sc->t_end);
+  if (cost) return cost;
   struct vsph_run *r = calloc(1, sizeof *r);
   if (!r) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a run");
   r->props = *rp;
@@ -147,8 +192,14 @@ int vsph_run_iterate(struct vsph_run *r) {
   if (s->t + dt > r->t_end) dt = r->t_end - s->t;
   const int st = vsph_integrate_step(s, dt);
   r->pairs += (double)s->interactions;
-  const int bad = vsph_integrate_check(s);
+  int bad = vsph_integrate_check(s);
   if (st && !bad) return st; /* a failure of the code, not of the run */
+  if (!bad && s->steps >= r->props.max_steps) {
+    snprintf(s->reason, sizeof s->reason,
+             "step limit: Solver:max_steps = %zu reached at dt = %.3g s",
+             r->props.max_steps, dt);
+    bad = 1;
+  }
   if (bad) {
     r->state = VSPH_RUN_UNSTABLE;
     r->t_unstable = s->t;

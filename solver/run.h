@@ -46,17 +46,20 @@ enum vsph_run_state {
 struct vsph_run_props {
   char visc[VSPH_PARAMS_NAME_MAX];   /*!< formulation: mgf, meaf, pvwf */
   char kernel[VSPH_PARAMS_NAME_MAX]; /*!< kernel name */
-  size_t res;       /*!< particles across the reference length */
-  double hdx;       /*!< h/dx */
-  double t_end;     /*!< end time (s); 0: the scene's */
-  double cfl;       /*!< Courant number of RK4 */
-  double delta;     /*!< delta-SPH coefficient; 0: off */
-  double rho_band;  /*!< unstable when |rho/rho0 - 1| exceeds it */
-  double min_gap;   /*!< unstable when two particles come closer (dx) */
-  size_t outputs;   /*!< energy rows over the run */
-  size_t snapshots; /*!< snapshots over the run; 0: none */
-  double perturb;   /*!< random shift of the initial lattice (dx) */
-  size_t seed;      /*!< seed of that shift (mt19937) */
+  size_t res;        /*!< particles across the reference length */
+  double hdx;        /*!< h/dx */
+  double t_end;      /*!< end time (s); 0: the scene's */
+  double cfl;        /*!< Courant number of RK4 */
+  double delta;      /*!< delta-SPH coefficient; 0: off */
+  double rho_band;   /*!< unstable when |rho/rho0 - 1| exceeds it */
+  double min_gap;    /*!< unstable when two particles come closer (dx) */
+  size_t outputs;    /*!< energy rows over the run */
+  size_t snapshots;  /*!< snapshots over the run; 0: none */
+  double perturb;    /*!< random shift of the initial lattice (dx) */
+  size_t seed;       /*!< seed of that shift (mt19937) */
+  size_t max_steps;  /*!< refuse a run estimated to need more steps; stop
+                          one that reaches it */
+  double max_memory; /*!< refuse a run estimated to need more (GiB) */
   /* resolved by vsph_run_props_init */
   int form;                             /*!< vsph_viscous_form of visc */
   const struct vsph_kernel_type *ktype; /*!< the kernel called kernel */

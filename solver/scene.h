@@ -63,6 +63,8 @@ struct vsph_scene_type {
   const char *name;        /*!< as on the command line */
   const char *description; /*!< one line */
   const char *length_name; /*!< what --res counts across (R, L or H) */
+  double area;             /*!< fluid area over ref_length^2: --res N lays about
+                                area N^2 particles (memory estimate) */
   const struct vsph_params_spec *params; /*!< the "Scene" section: offsets
                                               into the scene's typed struct */
   size_t nparams;                        /*!< its length */

@@ -11,40 +11,39 @@
 
 #include "check_suites.h"
 
-struct outcome {
-  int status;
-  char out[1 << 16];
-  char err[4096];
-  int err_lines;
-};
-
-static void slurp(const char *path, char *buf, size_t n) {
+void vsph_test_slurp(const char *path, char *buf, size_t n) {
   FILE *f = fopen(path, "r");
   size_t got = f ? fread(buf, 1, n - 1, f) : 0;
   buf[got] = '\0';
   if (f) fclose(f);
 }
 
-static struct outcome *run_cli(const char *args) {
-  static struct outcome o;
-  const char *bin = getenv("VSPH_BIN");
-  ck_assert_msg(bin != NULL, "VSPH_BIN is not set (run through make check)");
+struct vsph_test_outcome *vsph_test_shell(const char *script) {
+  static struct vsph_test_outcome o;
+  ck_assert_msg(getenv("VSPH_BIN") != NULL,
+                "VSPH_BIN is not set (run through make check)");
   char dir[] = "/tmp/vsph_cliXXXXXX";
   ck_assert_ptr_nonnull(mkdtemp(dir));
-  char cmd[2048], po[512], pe[512];
+  char cmd[4096], po[512], pe[512];
   snprintf(po, sizeof po, "%s/out", dir);
   snprintf(pe, sizeof pe, "%s/err", dir);
-  snprintf(cmd, sizeof cmd, "%s %s > %s 2> %s", bin, args, po, pe);
+  snprintf(cmd, sizeof cmd, "( %s ) > %s 2> %s", script, po, pe);
   const int st = system(cmd);
   o.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  slurp(po, o.out, sizeof o.out);
-  slurp(pe, o.err, sizeof o.err);
+  vsph_test_slurp(po, o.out, sizeof o.out);
+  vsph_test_slurp(pe, o.err, sizeof o.err);
   o.err_lines = 0;
   for (const char *c = o.err; *c; c++) o.err_lines += *c == '\n';
   remove(po);
   remove(pe);
   rmdir(dir);
   return &o;
+}
+
+struct vsph_test_outcome *vsph_test_cli(const char *args) {
+  char script[2048];
+  snprintf(script, sizeof script, "exec \"$VSPH_BIN\" %s", args);
+  return vsph_test_shell(script);
 }
 
 static const char *const bad_inputs[] = {
@@ -102,10 +101,28 @@ static const char *const bad_inputs[] = {
     "run vortex-patch --params /nonexistent/p.yml",
     "run stretching-square --frobnicate 1",
     "scenes --bogus",
+    /* issue 8: each of these ran (for ever, or with another value, or
+     * with a NaN row, or exited 1) before bounds were checked */
+    "run stretching-square --set Solver:snapshots=1e20",
+    "run stretching-square --set Solver:hdx=1e-300",
+    "run standing-wave --set Scene:Re=1e-300",
+    "run vortex-patch --set Solver:seed=1e300",
+    "run stretching-square --set Scene:poisson_grid=1e300",
+    "run vortex-patch --threads 4294967296",
+    "run stretching-square --set Scene:A0=0 --set Scene:nu=0",
+    "run vortex-patch --set Scene:omega0=1e200",
+    "run vortex-patch --set Solver:outputs=5",
+    "run stretching-square --quiet extra",
+    "report --only ''",
+    "tensors --dim ' 2'",
+    "tensors --depth 0x10",
+    "tensors --hdx 1e-300",
+    "dissipation --formulation mgf --field strain --hdx 1e6",
+    "",
 };
 
 START_TEST(test_bad_input) {
-  struct outcome *o = run_cli(bad_inputs[_i]);
+  struct vsph_test_outcome *o = vsph_test_cli(bad_inputs[_i]);
   ck_assert_msg(o->status == 2, "'%s' exited %d", bad_inputs[_i], o->status);
   ck_assert_msg(o->err_lines == 1, "'%s' wrote %d stderr lines: %s",
                 bad_inputs[_i], o->err_lines, o->err);
@@ -120,7 +137,7 @@ START_TEST(test_help) {
                         "scaling --help", "dissipation --help",
                         "report --help",  "bench --help"};
   for (size_t i = 0; i < sizeof cmds / sizeof cmds[0]; i++) {
-    struct outcome *o = run_cli(cmds[i]);
+    struct vsph_test_outcome *o = vsph_test_cli(cmds[i]);
     ck_assert_int_eq(o->status, 0);
     ck_assert_ptr_nonnull(strstr(o->out, "usage"));
   }
@@ -128,7 +145,7 @@ START_TEST(test_help) {
 END_TEST
 
 static cJSON *json_of(const char *args) {
-  struct outcome *o = run_cli(args);
+  struct vsph_test_outcome *o = vsph_test_cli(args);
   ck_assert_msg(o->status == 0, "'%s' exited %d: %s", args, o->status, o->err);
   cJSON *j = cJSON_Parse(o->out);
   ck_assert_msg(j != NULL, "'%s' did not print JSON", args);
@@ -191,7 +208,7 @@ START_TEST(test_run_outputs) {
            "run stretching-square --res 12 --t-end 0.02 --out %s/ok --set "
            "Solver:snapshots=2 --quiet",
            dir);
-  struct outcome *o = run_cli(args);
+  struct vsph_test_outcome *o = vsph_test_cli(args);
   ck_assert_msg(o->status == 0, "run failed: %s", o->err);
   const char *files[] = {"energy.csv", "run.json", "used_parameters.yml",
                          "snap_0000.vtk", "snapshots.pvd"};
@@ -201,13 +218,13 @@ START_TEST(test_run_outputs) {
   }
   snprintf(path, sizeof path, "%s/ok/energy.csv", dir);
   char head[512];
-  slurp(path, head, sizeof head);
+  vsph_test_slurp(path, head, sizeof head);
   ck_assert_msg(strncmp(head, "t,Ek,Ep,Ec,P_visc,", 18) == 0, "%s", head);
   ck_assert_ptr_nonnull(strstr(head, "residual,Px,Py,Lz"));
   ck_assert_ptr_nonnull(strstr(head, "Ek_ref,dEk_ref"));
   snprintf(path, sizeof path, "%s/ok/run.json", dir);
   static char js[8192];
-  slurp(path, js, sizeof js);
+  vsph_test_slurp(path, js, sizeof js);
   cJSON *j = cJSON_Parse(js);
   ck_assert_ptr_nonnull(j);
   const char *keys[] = {"version", "scene",       "visc",
@@ -223,11 +240,11 @@ START_TEST(test_run_outputs) {
            "run vortex-patch --res 16 --cfl 4 --t-end 10 --out %s/bad "
            "--quiet",
            dir);
-  o = run_cli(args);
+  o = vsph_test_cli(args);
   ck_assert_int_eq(o->status, 0);
   ck_assert_ptr_nonnull(strstr(o->err, "unstable"));
   snprintf(path, sizeof path, "%s/bad/run.json", dir);
-  slurp(path, js, sizeof js);
+  vsph_test_slurp(path, js, sizeof js);
   j = cJSON_Parse(js);
   ck_assert_ptr_nonnull(j);
   ck_assert_str_eq(cJSON_GetObjectItem(j, "status")->valuestring, "unstable");
@@ -239,7 +256,7 @@ START_TEST(test_run_outputs) {
 
   snprintf(args, sizeof args, "run vortex-patch --set Scene:x=1 --out %s/no",
            dir);
-  o = run_cli(args);
+  o = vsph_test_cli(args);
   ck_assert_int_eq(o->status, 2);
   snprintf(path, sizeof path, "%s/no", dir);
   ck_assert_int_ne(access(path, F_OK), 0); /* nothing written */

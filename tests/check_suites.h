@@ -17,6 +17,21 @@ Suite *vsph_references_suite(void);
 Suite *vsph_solver_suite(void);
 Suite *vsph_baseline_suite(void);
 Suite *vsph_cli_suite(void);
+Suite *vsph_hardening_suite(void);
+
+/* What a run of the built binary ($VSPH_BIN) gave (tests/check_cli.c). */
+struct vsph_test_outcome {
+  int status;        /* exit status, -1 if it did not exit */
+  char out[1 << 16]; /* stdout */
+  char err[4096];    /* stderr */
+  int err_lines;     /* lines on stderr */
+};
+/* Run `$VSPH_BIN ARGS` through the shell (static result, overwritten). */
+struct vsph_test_outcome *vsph_test_cli(const char *args);
+/* Run a shell script (it may use $VSPH_BIN) and capture its output. */
+struct vsph_test_outcome *vsph_test_shell(const char *script);
+/* The first n - 1 bytes of a file ("" if it cannot be read). */
+void vsph_test_slurp(const char *path, char *buf, size_t n);
 
 /* Silent error handler for tests: records the last status. */
 void vsph_test_silence(void);

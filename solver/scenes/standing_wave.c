@@ -102,6 +102,7 @@ const struct vsph_scene_type vsph_standing_wave_type = {
     .name = "standing-wave",
     .description = "standing wave in a tank with free-slip walls (Sec. VI C)",
     .length_name = "H",
+    .area = 1.0,
     .params = params,
     .nparams = sizeof params / sizeof params[0],
     .setup = setup,

@@ -128,6 +128,7 @@ const struct vsph_scene_type vsph_stretching_square_type = {
     .name = "stretching-square",
     .description = "free square under pure strain (Sec. VI B)",
     .length_name = "L",
+    .area = 1.0,
     .params = params,
     .nparams = sizeof params / sizeof params[0],
     .setup = setup,

@@ -122,6 +122,7 @@ const struct vsph_scene_type vsph_vortex_patch_type = {
         "disc with non-uniform rotation held by a radial force "
         "(Sec. VI A)",
     .length_name = "R",
+    .area = VSPH_PI,
     .params = params,
     .nparams = sizeof params / sizeof params[0],
     .setup = setup,
