@@ -38,7 +38,7 @@ TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
 .PHONY: all deps check test report baseline bench asan valgrind-check prefix-check \
-        format format-check mutate clean
+        format format-check mutate fuzz clean
 
 all: deps $(BUILD)/vsph
 
@@ -103,6 +103,28 @@ bench: deps
 mutate: deps
 	scripts/mutate
 
+# libFuzzer (clang) on the parameter file parser and the argument parser:
+# FUZZ_RUNS executions each, at most FUZZ_SECONDS each, from the seeds in
+# tests/fuzz/corpus (new inputs go to build-fuzz/corpus). Not part of
+# `make check`. A crash leaves its input as crash-* in the current folder.
+FUZZ_RUNS    ?= 1000000
+FUZZ_SECONDS ?= 600
+FUZZ_SAN     := -fsanitize=fuzzer-no-link,address,undefined
+fuzz:
+	@scripts/install-deps fuzz
+	@$(MAKE) --no-print-directory BUILD=build-fuzz CC=clang OPT=-O1 \
+	  SAN="$(FUZZ_SAN)" build-fuzz/fuzz_params build-fuzz/fuzz_args
+	@mkdir -p build-fuzz/corpus/params build-fuzz/corpus/args
+	build-fuzz/fuzz_params -runs=$(FUZZ_RUNS) -max_total_time=$(FUZZ_SECONDS) \
+	  -close_fd_mask=2 -print_final_stats=1 \
+	  build-fuzz/corpus/params tests/fuzz/corpus/params
+	build-fuzz/fuzz_args -runs=$(FUZZ_RUNS) -max_total_time=$(FUZZ_SECONDS) \
+	  -close_fd_mask=2 -print_final_stats=1 \
+	  build-fuzz/corpus/args tests/fuzz/corpus/args
+
+$(BUILD)/fuzz_%: tests/fuzz/fuzz_%.c $(LIB_OBJ) $(CLI_LIB) $(HASH_OBJ) $(TEXT_OBJ)
+	$(CC) $(ALLCFLAGS) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)
+
 asan: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan OPT=-O1 \
 	  SAN="-fsanitize=address,undefined -fno-omit-frame-pointer" \
@@ -128,13 +150,13 @@ prefix-check: $(LIB_OBJ) $(CLI_OBJ)
 
 FMT_SRC = $(wildcard common/*.[ch] kernels/*.[ch] solver/*.[ch] \
             solver/scenes/*.c analysis/*.[ch] io/*.[ch] reports/*.[ch] \
-            cli/*.[ch] tests/*.[ch])
+            cli/*.[ch] tests/*.[ch] tests/fuzz/*.c)
 format:
 	clang-format -i $(FMT_SRC)
 format-check:
 	@clang-format --dry-run --Werror $(FMT_SRC) && echo "format-check: ok"
 
 clean:
-	rm -rf build build-asan
+	rm -rf build build-asan build-fuzz
 
 -include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d)
