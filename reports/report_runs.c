@@ -58,6 +58,13 @@ static int load_energy(struct vsph_report_run *r) {
   return VSPH_OK;
 }
 
+/* A count from run.json; 0 unless it is a whole number that fits, so a
+ * damaged file never reaches an undefined conversion. */
+static size_t count_of(const cJSON *j, const char *key) {
+  const double v = vsph_json_get_number(j, key, 0.0);
+  return v >= 0.0 && v < 9007199254740992.0 ? (size_t)v : 0;
+}
+
 static int load_run_json(struct vsph_report_run *r) {
   char path[600];
   snprintf(path, sizeof path, "%s/run.json", r->dir);
@@ -71,9 +78,9 @@ static int load_run_json(struct vsph_report_run *r) {
            cJSON_IsString(v) ? v->valuestring : "");
   r->wall_s = vsph_json_get_number(j, "wall_s", (double)NAN);
   r->pairs = vsph_json_get_number(j, "pairs_per_s", 0.0) * r->wall_s;
-  r->n = (size_t)vsph_json_get_number(j, "n_particles", 0.0);
-  r->steps = (size_t)vsph_json_get_number(j, "steps", 0.0);
-  r->res = (size_t)vsph_json_get_number(j, "res", 0.0);
+  r->n = count_of(j, "n_particles");
+  r->steps = count_of(j, "steps");
+  r->res = count_of(j, "res");
   cJSON_Delete(j);
   return VSPH_OK;
 }

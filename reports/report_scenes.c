@@ -74,8 +74,9 @@ static int vortex_profile(struct vsph_report *R, const char *snap,
     const double u = strtod(c, &c), v = strtod(c, &c);
     (void)strtod(c, &c);
     const double px = x[3 * i], py = x[3 * i + 1], r = hypot(px, py);
+    if (!(r > 0 && r < R0)) continue; /* outside, or not finite */
     const size_t b = (size_t)(r / R0 * (double)nbins);
-    if (b < nbins && r > 0) {
+    if (b < nbins) {
       sum[b] += (px * v - py * u) / r; /* u_theta */
       cnt[b] += 1.0;
     }
