@@ -314,26 +314,29 @@ int vsph_moments_sum(const struct vsph_kernel_type *k,
   struct vsph_pair_kernel pk;
   struct vsph_pair_ranges rg;
   struct vsph_pair_iter it;
-  struct vsph_pair pr;
+  struct vsph_pair_chunk bt;
   vsph_pair_kernel_init(&pk, k, dim, h);
   vsph_pair_ranges_all(&rg, p->n);
   vsph_pair_begin(&it, &pk, p, &rg, centre);
-  while (vsph_pair_next(&it, dim, &pr)) {
-    const double *x = pr.x;
-    const double c1 = -pr.VF;     /* -V W'/s */
-    const double c3 = c1 / pr.s2; /* -V W'/s^3 */
-    for (int a = 0; a < dim; a++) {
-      out->N[a] += 2.0 * c1 * x[a];
-      for (int b = 0; b < dim; b++) {
-        out->M[a][b] += c1 * x[a] * x[b];
-        for (int l = 0; l < dim; l++) {
-          out->F[a][b][l] += K * c3 * x[a] * x[b] * x[l];
-          for (int m = 0; m < dim; m++)
-            out->G[a][b][l][m] += 0.5 * K * c3 * x[a] * x[b] * x[l] * x[m];
+  while (vsph_pair_gather(&it, dim, pk.dfq_id, &bt))
+    for (size_t q = 0; q < bt.m; q++) {
+      struct vsph_pair pr;
+      vsph_pair_at(&bt, q, dim, &pr);
+      const double *x = pr.x;
+      const double c1 = -pr.VF;     /* -V W'/s */
+      const double c3 = c1 / pr.s2; /* -V W'/s^3 */
+      for (int a = 0; a < dim; a++) {
+        out->N[a] += 2.0 * c1 * x[a];
+        for (int b = 0; b < dim; b++) {
+          out->M[a][b] += c1 * x[a] * x[b];
+          for (int l = 0; l < dim; l++) {
+            out->F[a][b][l] += K * c3 * x[a] * x[b] * x[l];
+            for (int m = 0; m < dim; m++)
+              out->G[a][b][l][m] += 0.5 * K * c3 * x[a] * x[b] * x[l] * x[m];
+          }
         }
       }
     }
-  }
   return VSPH_OK;
 }
 

@@ -23,23 +23,15 @@ static double df_cubic(double q) {
   return 0.0;
 }
 
-/* (df/dq)/q from q^2 */
-static double dfq_cubic(double q2) {
-  const double q = sqrt(q2);
-  if (q < 1.0) return -3.0 + 2.25 * q;
-  if (q < 2.0) {
-    const double t = 2.0 - q;
-    return -0.75 * t * t / q;
-  }
-  return 0.0;
-}
-
 const struct vsph_kernel_type vsph_cubic_type = {
     .name = "cubic",
     .kappa = 2.0,
     .sigma = {2.0 / 3.0, 10.0 / (7.0 * VSPH_PI), 1.0 / VSPH_PI},
     .f = {f_cubic, f_cubic, f_cubic},
     .df = {df_cubic, df_cubic, df_cubic},
-    .dfq = {dfq_cubic, dfq_cubic, dfq_cubic},
+    .dfq = {vsph_kernel_dfq_cubic, vsph_kernel_dfq_cubic,
+            vsph_kernel_dfq_cubic},
+    .dfq_id = {VSPH_KERNEL_DFQ_CUBIC, VSPH_KERNEL_DFQ_CUBIC,
+               VSPH_KERNEL_DFQ_CUBIC},
     .reference = "cubic B-spline (Monaghan 1992)",
 };

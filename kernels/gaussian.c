@@ -14,8 +14,6 @@ static double f_gauss(double q) { return q < 3.0 ? exp(-q * q) - E9 : 0.0; }
 static double df_gauss(double q) {
   return q < 3.0 ? -2.0 * q * exp(-q * q) : 0.0;
 }
-/* (df/dq)/q from q^2: -2 exp(-q^2), no square root needed */
-static double dfq_gauss(double q2) { return q2 < 9.0 ? -2.0 * exp(-q2) : 0.0; }
 
 /* sigma_d = 1 / int_{|q|<3} (e^{-q^2} - e^{-9}) d^d q, in closed form:
  *   d=1: sqrt(pi) erf(3) - 6 e^{-9}
@@ -30,6 +28,9 @@ const struct vsph_kernel_type vsph_gaussian_type = {
               1.0 / (VSPH_PI * VSPH_SQRTPI * ERF3 - 42.0 * VSPH_PI * E9)},
     .f = {f_gauss, f_gauss, f_gauss},
     .df = {df_gauss, df_gauss, df_gauss},
-    .dfq = {dfq_gauss, dfq_gauss, dfq_gauss},
+    .dfq = {vsph_kernel_dfq_gaussian, vsph_kernel_dfq_gaussian,
+            vsph_kernel_dfq_gaussian},
+    .dfq_id = {VSPH_KERNEL_DFQ_GAUSSIAN, VSPH_KERNEL_DFQ_GAUSSIAN,
+               VSPH_KERNEL_DFQ_GAUSSIAN},
     .reference = "renormalised Gaussian, kappa=3 (Colagrossi et al. 2011)",
 };

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 /** @file kernel.h
  *  @brief Smoothing kernels as runtime descriptors (THEORY.md section 1).
@@ -13,6 +14,18 @@
 /** A kernel shape or its derivative as a function of q = s/h. */
 typedef double vsph_kernel_fn(double q);
 
+/** The (df/dq)/q shapes, as functions of q^2, that the neighbour loops
+ *  evaluate inline (vsph_kernel_dfq_eval): one per kernel and variant. */
+enum vsph_kernel_dfq_id {
+  VSPH_KERNEL_DFQ_GAUSSIAN = 0, /*!< -2 e^{-q^2}, q < 3 */
+  VSPH_KERNEL_DFQ_CUBIC,        /*!< cubic B-spline, q < 2 */
+  VSPH_KERNEL_DFQ_QUINTIC,      /*!< quintic spline, q < 3 */
+  VSPH_KERNEL_DFQ_C2,           /*!< Wendland C2, 2-D and 3-D */
+  VSPH_KERNEL_DFQ_C2_1D,        /*!< Wendland C2, 1-D */
+  VSPH_KERNEL_DFQ_C4,           /*!< Wendland C4, 2-D and 3-D */
+  VSPH_KERNEL_DFQ_C4_1D         /*!< Wendland C4, 1-D */
+};
+
 /** Kernel descriptor, looked up by name at run time (GSL gsl_rng_type
  *  pattern). Index [dim-1] selects the 1-D, 2-D or 3-D variant. */
 struct vsph_kernel_type {
@@ -22,6 +35,7 @@ struct vsph_kernel_type {
   vsph_kernel_fn *f[3];   /*!< un-normalised shape f_d(q), 0 for q>=kappa */
   vsph_kernel_fn *df[3];  /*!< df_d/dq */
   vsph_kernel_fn *dfq[3]; /*!< (df_d/dq)/q from q^2: the loops need W'/s */
+  int dfq_id[3];          /*!< the same as a vsph_kernel_dfq_id */
   const char *reference;  /*!< source of the shape and constants */
 };
 
@@ -54,6 +68,148 @@ static inline double vsph_kernel_w(const struct vsph_kernel_type *k, int dim,
 static inline double vsph_kernel_dw(const struct vsph_kernel_type *k, int dim,
                                     double q) {
   return k->sigma[dim - 1] * k->df[dim - 1](q);
+}
+
+/* ------------------------------------------------ inline, for the loops */
+
+/** a b + c: one fused operation where the target has it (the polynomials
+ *  below are then faster and no less accurate), else two roundings. */
+#if defined(__FMA__)
+#define VSPH_KERNEL_MULADD(a, b, c) fma((a), (b), (c))
+#else
+#define VSPH_KERNEL_MULADD(a, b, c) ((a) * (b) + (c))
+#endif
+
+/** @brief e^{-x} for 0 <= x <= 700, branch-free (so the loops can
+ *  vectorise it): e^{-x} = 2^{-n} e^{-r} with n = round(x / ln 2) found
+ *  by the 1.5 2^52 rounding trick, r = x - n ln 2 in Cody-Waite's two parts
+ *  (|r| <= ln 2 / 2), e^{-r} by its Taylor polynomial to degree 12
+ *  (remainder (ln 2/2)^13/13! = 1.7e-16), and 2^{-n} built from its
+ *  exponent bits. Relative error at most 1e-15 against libm's exp on
+ *  [0, 700] (tests/check_kernel.c, test_expneg; measured 3e-16 with FMA,
+ *  5e-16 without). libm's exp is not used here: it is a call the loops
+ *  cannot vectorise, and it sets errno. */
+static inline double vsph_kernel_expneg(double x) {
+  const double shift = 6755399441055744.0; /* 1.5 2^52 */
+  const double m = x * 1.4426950408889634074 + shift;
+  const double n = m - shift; /* round(x / ln 2) */
+  const double r =
+      (x - n * 6.93147180369123816490e-01) - n * 1.90821492927058770002e-10;
+  /* e^{-r}, Horner, coefficients (-1)^k / k!, written out (a loop here
+   * would have to be unrolled before the loops around it vectorise):
+   * fused multiply-adds where the target has them (one rounding each),
+   * else multiply and add */
+#define VSPH_KERNEL_H(p, c) VSPH_KERNEL_MULADD(p, r, c)
+  double p = 1.0 / 479001600.0;
+  p = VSPH_KERNEL_H(p, -1.0 / 39916800.0);
+  p = VSPH_KERNEL_H(p, 1.0 / 3628800.0);
+  p = VSPH_KERNEL_H(p, -1.0 / 362880.0);
+  p = VSPH_KERNEL_H(p, 1.0 / 40320.0);
+  p = VSPH_KERNEL_H(p, -1.0 / 5040.0);
+  p = VSPH_KERNEL_H(p, 1.0 / 720.0);
+  p = VSPH_KERNEL_H(p, -1.0 / 120.0);
+  p = VSPH_KERNEL_H(p, 1.0 / 24.0);
+  p = VSPH_KERNEL_H(p, -1.0 / 6.0);
+  p = VSPH_KERNEL_H(p, 0.5);
+  p = VSPH_KERNEL_H(p, -1.0);
+  p = VSPH_KERNEL_H(p, 1.0);
+#undef VSPH_KERNEL_H
+  /* 2^{-n}: the low bits of m hold n, so its exponent is 1023 - n */
+  unsigned long long bits;
+  memcpy(&bits, &m, sizeof bits);
+  const unsigned long long e =
+      (1023ull + 0x0008000000000000ull - (bits & 0x000fffffffffffffull)) << 52;
+  double scale;
+  memcpy(&scale, &e, sizeof scale);
+  return p * scale;
+}
+
+/** @brief Renormalised 3h Gaussian: (df/dq)/q = -2 e^{-q^2} for q < 3. */
+static inline double vsph_kernel_dfq_gaussian(double q2) {
+  /* a bit mask rather than a branch, so the loops vectorise (outside the
+   * support e may be anything: the mask clears it) */
+  const double e = -2.0 * vsph_kernel_expneg(q2);
+  unsigned long long bits;
+  memcpy(&bits, &e, sizeof bits);
+  bits &= 0ull - (unsigned long long)(q2 < 9.0);
+  double r;
+  memcpy(&r, &bits, sizeof r);
+  return r;
+}
+
+/** @brief Cubic B-spline: (df/dq)/q. */
+static inline double vsph_kernel_dfq_cubic(double q2) {
+  const double q = sqrt(q2);
+  if (q < 1.0) return -3.0 + 2.25 * q;
+  if (q < 2.0) {
+    const double t = 2.0 - q;
+    return -0.75 * t * t / q;
+  }
+  return 0.0;
+}
+
+/** @brief Quintic spline: (df/dq)/q (q > 0 in every neighbour pair). */
+static inline double vsph_kernel_dfq_quintic(double q2) {
+  const double q = sqrt(q2);
+  const double a = q < 3.0 ? 3.0 - q : 0.0, b = q < 2.0 ? 2.0 - q : 0.0;
+  const double c = q < 1.0 ? 1.0 - q : 0.0;
+  const double a4 = a * a * a * a, b4 = b * b * b * b, c4 = c * c * c * c;
+  return q < 3.0 ? -5.0 * (a4 - 6.0 * b4 + 15.0 * c4) / q : 0.0;
+}
+
+/** @brief Wendland C2 (2-D, 3-D): (df/dq)/q = -5 (1 - q/2)^3. */
+static inline double vsph_kernel_dfq_c2(double q2) {
+  const double q = sqrt(q2);
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q;
+  return -5.0 * t * t * t;
+}
+
+/** @brief Wendland C2 (1-D): (df/dq)/q = -3 (1 - q/2)^2. */
+static inline double vsph_kernel_dfq_c2_1d(double q2) {
+  const double q = sqrt(q2);
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q;
+  return -3.0 * t * t;
+}
+
+/** @brief Wendland C4 (2-D, 3-D): (df/dq)/q = -(7/3) (1 - q/2)^5 (5q + 2). */
+static inline double vsph_kernel_dfq_c4(double q2) {
+  const double q = sqrt(q2);
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q, t5 = t * t * t * t * t;
+  return -7.0 / 3.0 * t5 * (5.0 * q + 2.0);
+}
+
+/** @brief Wendland C4 (1-D): (df/dq)/q = -3.5 (1 - q/2)^4 (2q + 1). */
+static inline double vsph_kernel_dfq_c4_1d(double q2) {
+  const double q = sqrt(q2);
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q, t4 = t * t * t * t;
+  return -3.5 * t4 * (2.0 * q + 1.0);
+}
+
+/** @brief (df/dq)/q at q^2 = @p q2 for the shape @p id. Inlined where
+ *  @p id is a constant, the switch folds away and the loop around it
+ *  vectorises; the loops choose their kernel once, outside (solver/pair.h).
+ */
+static inline double vsph_kernel_dfq_shape(int id, double q2) {
+  switch (id) {
+    case VSPH_KERNEL_DFQ_GAUSSIAN:
+      return vsph_kernel_dfq_gaussian(q2);
+    case VSPH_KERNEL_DFQ_CUBIC:
+      return vsph_kernel_dfq_cubic(q2);
+    case VSPH_KERNEL_DFQ_QUINTIC:
+      return vsph_kernel_dfq_quintic(q2);
+    case VSPH_KERNEL_DFQ_C2:
+      return vsph_kernel_dfq_c2(q2);
+    case VSPH_KERNEL_DFQ_C2_1D:
+      return vsph_kernel_dfq_c2_1d(q2);
+    case VSPH_KERNEL_DFQ_C4:
+      return vsph_kernel_dfq_c4(q2);
+    default:
+      return vsph_kernel_dfq_c4_1d(q2);
+  }
 }
 
 /** @brief The Monaghan-Gingold factor K = 2(d + 2) of THEORY section 0:

@@ -18,18 +18,15 @@ static double df_quintic(double q) {
   return -5.0 * (pow4p(3.0 - q) - 6.0 * pow4p(2.0 - q) + 15.0 * pow4p(1.0 - q));
 }
 
-/* (df/dq)/q from q^2 (q > 0 in every neighbour pair) */
-static double dfq_quintic(double q2) {
-  const double q = sqrt(q2);
-  return df_quintic(q) / q;
-}
-
 const struct vsph_kernel_type vsph_quintic_type = {
     .name = "quintic",
     .kappa = 3.0,
     .sigma = {1.0 / 120.0, 7.0 / (478.0 * VSPH_PI), 1.0 / (120.0 * VSPH_PI)},
     .f = {f_quintic, f_quintic, f_quintic},
     .df = {df_quintic, df_quintic, df_quintic},
-    .dfq = {dfq_quintic, dfq_quintic, dfq_quintic},
+    .dfq = {vsph_kernel_dfq_quintic, vsph_kernel_dfq_quintic,
+            vsph_kernel_dfq_quintic},
+    .dfq_id = {VSPH_KERNEL_DFQ_QUINTIC, VSPH_KERNEL_DFQ_QUINTIC,
+               VSPH_KERNEL_DFQ_QUINTIC},
     .reference = "quintic spline (Morris, Fox & Zhu 1997)",
 };

@@ -172,9 +172,9 @@ static size_t count_interactions(const struct vsph_cells *c,
     vsph_pair_ranges_cell(&rg, c, cell);
     for (size_t i = c->start[cell]; i < c->start[cell] + c->count[cell]; i++) {
       struct vsph_pair_iter it;
-      struct vsph_pair pr;
+      struct vsph_pair_chunk b;
       vsph_pair_begin(&it, &pk, p, &rg, i);
-      while (vsph_pair_next(&it, p->dim, &pr)) n++;
+      while (vsph_pair_gather(&it, p->dim, pk.dfq_id, &b)) n += b.m;
     }
   }
   return n;

@@ -43,37 +43,69 @@ struct rhs_ctx {
 };
 
 /* One fluid particle: every term of THEORY 5 gathered over its neighbours,
- * each through its pair function (pair.h, viscous.h). Inlined once per
- * dimension (see rhs_cell), so its component loops unroll. */
+ * each through its pair function (pair.h, viscous.h). Per chunk of
+ * neighbours, the pairs' shares are computed in one loop the compiler
+ * vectorises (gathers and arithmetic, no sums), then summed in neighbour
+ * order. Inlined once per dimension, formulation and delta switch (see
+ * rhs_cell): the constants unroll the component loops and fold the
+ * dispatch away. */
 VSPH_CONSTS_SPECIALISE size_t rhs_one(const struct rhs_ctx *rc,
                                       const struct vsph_particles *p,
                                       const struct vsph_pair_ranges *rg,
                                       size_t i, struct vsph_equations_out *out,
-                                      double *min_s2, const int dim) {
+                                      double *min_s2,
+                                      const struct vsph_viscous_shape sh,
+                                      const int delta, const int kid) {
+  const int dim = sh.dim;
   double ui[3] = {0, 0, 0}, Ai[9] = {0};
   for (int k = 0; k < dim; k++) ui[k] = p->vel[k][i];
   vsph_viscous_load_A(&rc->vl, i, Ai);
   const double rhoi = p->rho[i], pi = p->p[i];
+  const double *const rho = p->rho, *const pp = p->p;
+  const double *const vel[3] = {p->vel[0], dim > 1 ? p->vel[1] : NULL,
+                                dim > 2 ? p->vel[2] : NULL};
   double cont = 0.0, dsum = 0.0, ap[3] = {0, 0, 0}, av[3] = {0, 0, 0};
   size_t nint = 0;
   double ms2 = INFINITY;
   struct vsph_pair_iter it;
-  struct vsph_pair pr;
+  struct vsph_pair_chunk b;
   vsph_pair_begin(&it, &rc->pk, p, rg, i);
-  while (vsph_pair_next(&it, dim, &pr)) {
-    const size_t j = pr.j;
-    nint++;
-    ms2 = pr.s2 < ms2 ? pr.s2 : ms2;
-    double du[3], dux = 0.0;
-    for (int k = 0; k < dim; k++) {
-      du[k] = p->vel[k][j] - ui[k];
-      dux += du[k] * pr.x[k];
+  /* the sums, one per component: scalars, so the loop can reduce them
+   * lane by lane */
+  double ap0 = 0, ap1 = 0, ap2 = 0, av0 = 0, av1 = 0, av2 = 0;
+  while (vsph_pair_gather(&it, dim, kid, &b)) {
+    const size_t m = b.m;
+#pragma omp simd reduction(+ : cont, dsum, ap0, ap1, ap2, av0, av1, av2) \
+    reduction(min : ms2)
+    for (size_t k = 0; k < m; k++) {
+      struct vsph_pair pr;
+      vsph_pair_at(&b, k, dim, &pr);
+      const size_t j = pr.j;
+      double du[3], dux = 0.0, f[3], g[3];
+      for (int a = 0; a < dim; a++) {
+        du[a] = vel[a][j] - ui[a];
+        dux += du[a] * pr.x[a];
+      }
+      ms2 = pr.s2 < ms2 ? pr.s2 : ms2;
+      cont += vsph_pair_continuity(&pr, dux);
+      if (delta) dsum += vsph_pair_delta(&pr, rho[j] - rhoi);
+      vsph_pair_pressure(&pr, dim, pi + pp[j], f);
+      vsph_viscous_pair(&rc->vl, sh, &pr, du, dux, Ai, g);
+      ap0 += f[0];
+      av0 += g[0];
+      if (dim > 1) {
+        ap1 += f[1];
+        av1 += g[1];
+      }
+      if (dim > 2) {
+        ap2 += f[2];
+        av2 += g[2];
+      }
     }
-    cont += vsph_pair_continuity(&pr, dux);
-    if (rc->dhc > 0.0) dsum += vsph_pair_delta(&pr, p->rho[j] - rhoi);
-    vsph_pair_pressure(&pr, dim, pi + p->p[j], ap);
-    vsph_viscous_pair(&rc->vl, &pr, du, dux, Ai, av);
+    nint += m;
   }
+  ap[0] = ap0, ap[1] = ap1, ap[2] = ap2;
+  av[0] = av0, av[1] = av1, av[2] = av2;
   const double rinv = 1.0 / rhoi;
   double g[3];
   vsph_equations_body_force(rc->ep, it.xi, g);
@@ -87,11 +119,13 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(const struct rhs_ctx *rc,
   return nint;
 }
 
-/* The fluid particles of one cell, the dimension fixed outside the pair
- * loop. Returns the interactions; the closest pair in *min_s2. */
-static size_t rhs_cell(const struct rhs_ctx *rc, const struct vsph_particles *p,
-                       const struct vsph_cells *cells, size_t c, size_t n_fluid,
-                       struct vsph_equations_out *out, double *min_s2) {
+/* The fluid particles of cell c; returns the interactions, the closest
+ * pair in *min_s2. Inlined into one function per loop shape below. */
+VSPH_CONSTS_SPECIALISE size_t
+rhs_cell(const struct rhs_ctx *rc, const struct vsph_particles *p,
+         const struct vsph_cells *cells, size_t c, size_t n_fluid,
+         struct vsph_equations_out *out, double *min_s2,
+         const struct vsph_viscous_shape sh, const int delta, const int kid) {
   struct vsph_pair_ranges rg;
   vsph_pair_ranges_cell(&rg, cells, c);
   const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
@@ -100,20 +134,67 @@ static size_t rhs_cell(const struct rhs_ctx *rc, const struct vsph_particles *p,
   for (size_t i = i0; i < i1; i++) {
     if (p->id[i] >= n_fluid) continue;
     double m;
-    switch (rc->pk.dim) {
-      case 2:
-        total += rhs_one(rc, p, &rg, i, out, &m, 2);
-        break;
-      case 3:
-        total += rhs_one(rc, p, &rg, i, out, &m, 3);
-        break;
-      default:
-        total += rhs_one(rc, p, &rg, i, out, &m, 1);
-    }
+    total += rhs_one(rc, p, &rg, i, out, &m, sh, delta, kid);
     ms2 = m < ms2 ? m : ms2;
   }
   *min_s2 = ms2;
   return total;
+}
+
+/* One cell's loop, specialised. */
+typedef size_t rhs_cell_fn(const struct rhs_ctx *rc,
+                           const struct vsph_particles *p,
+                           const struct vsph_cells *cells, size_t c,
+                           size_t n_fluid, struct vsph_equations_out *out,
+                           double *min_s2);
+
+/* rhs_cell for dimension D, formulation FORM, delta switch DELTA and the
+ * 3h Gaussian: the constants unroll the component loops, fold the dispatch
+ * and inline the kernel. A function of its own each (not one big switch),
+ * so each is optimised on its own. */
+#define RHS_CELL_SHAPE(name, D, FORM, DELTA)                                   \
+  static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
+                     const struct vsph_cells *cells, size_t c, size_t n_fluid, \
+                     struct vsph_equations_out *out, double *min_s2) {         \
+    const struct vsph_viscous_shape sh = {D, FORM};                            \
+    return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, DELTA,          \
+                    VSPH_KERNEL_DFQ_GAUSSIAN);                                 \
+  }
+RHS_CELL_SHAPE(rhs_mgf2, 2, VSPH_VISCOUS_MGF, 0)
+RHS_CELL_SHAPE(rhs_mgf2d, 2, VSPH_VISCOUS_MGF, 1)
+RHS_CELL_SHAPE(rhs_meaf2, 2, VSPH_VISCOUS_MEAF, 0)
+RHS_CELL_SHAPE(rhs_meaf2d, 2, VSPH_VISCOUS_MEAF, 1)
+RHS_CELL_SHAPE(rhs_pvwf2, 2, VSPH_VISCOUS_PVWF, 0)
+RHS_CELL_SHAPE(rhs_pvwf2d, 2, VSPH_VISCOUS_PVWF, 1)
+RHS_CELL_SHAPE(rhs_mgf3, 3, VSPH_VISCOUS_MGF, 0)
+RHS_CELL_SHAPE(rhs_mgf3d, 3, VSPH_VISCOUS_MGF, 1)
+RHS_CELL_SHAPE(rhs_meaf3, 3, VSPH_VISCOUS_MEAF, 0)
+RHS_CELL_SHAPE(rhs_meaf3d, 3, VSPH_VISCOUS_MEAF, 1)
+RHS_CELL_SHAPE(rhs_pvwf3, 3, VSPH_VISCOUS_PVWF, 0)
+RHS_CELL_SHAPE(rhs_pvwf3d, 3, VSPH_VISCOUS_PVWF, 1)
+#undef RHS_CELL_SHAPE
+
+/* Any other shape (1-D, another kernel): the general copy. */
+static size_t rhs_general(const struct rhs_ctx *rc,
+                          const struct vsph_particles *p,
+                          const struct vsph_cells *cells, size_t c,
+                          size_t n_fluid, struct vsph_equations_out *out,
+                          double *min_s2) {
+  const struct vsph_viscous_shape sh = {rc->pk.dim, rc->vl.form};
+  return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, rc->dhc > 0.0,
+                  rc->pk.dfq_id);
+}
+
+/* The loop for the run's shape, chosen once per evaluation. */
+static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
+  static rhs_cell_fn *const table[2][VSPH_VISCOUS_FORM_COUNT][2] = {
+      {{rhs_mgf2, rhs_mgf2d}, {rhs_meaf2, rhs_meaf2d}, {rhs_pvwf2, rhs_pvwf2d}},
+      {{rhs_mgf3, rhs_mgf3d},
+       {rhs_meaf3, rhs_meaf3d},
+       {rhs_pvwf3, rhs_pvwf3d}}};
+  if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2)
+    return rhs_general;
+  return table[rc->pk.dim - 2][rc->vl.form][rc->dhc > 0.0];
 }
 
 int vsph_equations_rhs(const struct vsph_equations_props *ep,
@@ -140,6 +221,7 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   };
   vsph_pair_kernel_init(&rc.pk, vp->kernel, vp->dim, vp->h);
   vsph_viscous_loop_init(&rc.vl, vp, vp->form == VSPH_VISCOUS_PVWF ? ws : NULL);
+  rhs_cell_fn *const cell_loop = rhs_choose(&rc);
   size_t total = 0;
   double min_s2 = INFINITY;
   /* integer sum and min: exact, so the same for any thread count */
@@ -147,7 +229,7 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
     reduction(min : min_s2)
   for (size_t c = 0; c < cells->ncells; c++) {
     double m;
-    total += rhs_cell(&rc, p, cells, c, n_fluid, out, &m);
+    total += cell_loop(&rc, p, cells, c, n_fluid, out, &m);
     min_s2 = m < min_s2 ? m : min_s2;
   }
   out->interactions = total;

@@ -13,12 +13,20 @@
  *  physical term (THEORY sections 3 and 5). Every sum over neighbours in
  *  vsph (the solver's right-hand side, the viscous operators of the
  *  analysis, PVWF's two passes, the moment sums) walks its neighbours with
- *  vsph_pair_next and adds each term through the functions below, so a
- *  term exists in exactly one place.
+ *  vsph_pair_gather, chunk by chunk, and adds each term through the
+ *  functions below, so a term exists in exactly one place.
  *
  *  Conventions (THEORY section 0): x = r_j - r_i, s = |x|,
  *  grad_i W_ij = -x W'(s)/s. The iterator hands out F = W'(s)/s <= 0 and
  *  VF = V_j F, so no loop takes a square root or divides by s.
+ *
+ *  Each term function is pure: it returns (or sets) the pair's share, so
+ *  a chunk's shares are computed in one vectorised loop. The solver's
+ *  right-hand side sums them lane by lane in that loop (omp simd
+ *  reduction); the other loops store them and sum in neighbour order. Either
+ *  way a sum depends only on the build (the vector width), never on the
+ *  thread count: 1 and 2 threads give bitwise-identical results, and two
+ *  builds (say ARCH= against the AVX2 default) agree to rounding.
  *
  *  Everything here is static inline (STYLE B3: small hot helpers in the
  *  module header). No I/O, no allocation. */
@@ -27,11 +35,11 @@
 
 /** Kernel quantities every pair needs, loaded once per loop (STYLE B7). */
 struct vsph_pair_kernel {
-  int dim;             /*!< 1, 2 or 3 */
-  double H2;           /*!< squared support radius (kappa h)^2 (m^2) */
-  double h_inv2;       /*!< 1/h^2 */
-  double dwq;          /*!< sigma_d h^{-d-2}, see vsph_kernel_dwq_factor */
-  vsph_kernel_fn *dfq; /*!< (df/dq)/q as a function of q^2 */
+  int dim;       /*!< 1, 2 or 3 */
+  double H2;     /*!< squared support radius (kappa h)^2 (m^2) */
+  double h_inv2; /*!< 1/h^2 */
+  double dwq;    /*!< sigma_d h^{-d-2}, see vsph_kernel_dwq_factor */
+  int dfq_id;    /*!< the kernel's vsph_kernel_dfq_id */
 };
 
 /** Candidate neighbours of one cell: index ranges [lo, hi) in a fixed
@@ -51,8 +59,25 @@ struct vsph_pair {
   double VF;   /*!< V_j W'(s)/s */
 };
 
+/** vsph_pair_gather fills a chunk until it holds at least this many
+ *  neighbours (or the candidates run out)... */
+#define VSPH_PAIR_CHUNK 64
+/** ... testing the candidates 64 at a time, so a chunk holds at most
+ *  this many. */
+#define VSPH_PAIR_CHUNK_MAX (VSPH_PAIR_CHUNK + 63)
+
+/** A chunk of neighbours of particle i, in range order. */
+struct vsph_pair_chunk {
+  size_t m;                         /*!< pairs in the chunk */
+  size_t j[VSPH_PAIR_CHUNK_MAX];    /*!< neighbour indices */
+  double x[3][VSPH_PAIR_CHUNK_MAX]; /*!< x[a][k]: component a of r_j - r_i */
+  double s2[VSPH_PAIR_CHUNK_MAX];   /*!< |x|^2 */
+  double F[VSPH_PAIR_CHUNK_MAX];    /*!< W'(s)/s */
+  double VF[VSPH_PAIR_CHUNK_MAX];   /*!< V_j W'(s)/s */
+};
+
 /** Iterator over the neighbours j != i of particle i, in range order. The
- *  fields are private: read the pair, not the iterator. */
+ *  fields are private: read the pairs, not the iterator. */
 struct vsph_pair_iter {
   const struct vsph_pair_kernel *pk; /*!< kernel of the loop */
   const double *pos[3];              /*!< positions (components < dim) */
@@ -75,7 +100,7 @@ static inline void vsph_pair_kernel_init(struct vsph_pair_kernel *pk,
   pk->H2 = k->kappa * h * k->kappa * h;
   pk->h_inv2 = 1.0 / (h * h);
   pk->dwq = vsph_kernel_dwq_factor(k, dim, h);
-  pk->dfq = k->dfq[dim - 1];
+  pk->dfq_id = k->dfq_id[dim - 1];
 }
 
 /** @brief The candidate ranges of cell @p cell of @p cells. */
@@ -111,34 +136,116 @@ static inline void vsph_pair_begin(struct vsph_pair_iter *it,
   }
 }
 
-/** @brief The next neighbour j != i with s^2 < H2 into @p pr.
- *  @param dim the loop's dimension (= pk->dim), passed by the caller so that
- *  a caller specialised on a constant dimension gets unrolled loops.
- *  @return 1 if there is one, 0 when the ranges are exhausted. */
-VSPH_CONSTS_SPECIALISE int vsph_pair_next(struct vsph_pair_iter *it, int dim,
-                                          struct vsph_pair *pr) {
-  const struct vsph_pair_kernel *pk = it->pk;
-  const double H2 = pk->H2;
-  for (;;) {
-    while (it->j < it->end) {
-      const size_t j = it->j++;
+/* F and VF of the chunk's m pairs from their q^2, for the kernel shape
+ * kid (a constant where inlined from vsph_pair_fvf). */
+VSPH_CONSTS_SPECIALISE void vsph_pair_fvf_shape(const struct vsph_pair_iter *it,
+                                                struct vsph_pair_chunk *b,
+                                                const double *q2, size_t m,
+                                                int kid) {
+  const double dwq = it->pk->dwq;
+#pragma omp simd
+  for (size_t k = 0; k < m; k++) {
+    const double F = dwq * vsph_kernel_dfq_shape(kid, q2[k]);
+    b->F[k] = F;
+    b->VF[k] = it->vol[b->j[k]] * F;
+  }
+}
+
+/* The same with the shape chosen outside the loop: a caller specialised on
+ * its kernel passes a constant and the switch folds away; any other gets
+ * the loop of its kernel, vectorised all the same. */
+VSPH_CONSTS_SPECIALISE void vsph_pair_fvf(const struct vsph_pair_iter *it,
+                                          struct vsph_pair_chunk *b,
+                                          const double *q2, size_t m, int kid) {
+  switch (kid) {
+    case VSPH_KERNEL_DFQ_GAUSSIAN:
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_GAUSSIAN);
+      break;
+    case VSPH_KERNEL_DFQ_CUBIC:
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_CUBIC);
+      break;
+    case VSPH_KERNEL_DFQ_QUINTIC:
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_QUINTIC);
+      break;
+    case VSPH_KERNEL_DFQ_C2:
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C2);
+      break;
+    case VSPH_KERNEL_DFQ_C2_1D:
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C2_1D);
+      break;
+    case VSPH_KERNEL_DFQ_C4:
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C4);
+      break;
+    default:
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C4_1D);
+  }
+}
+
+/** @brief The next chunk of neighbours j != i with s^2 < H2 into @p b.
+ *  The candidates are tested 64 at a time in one vectorised loop that sets
+ *  a bit per neighbour (no branch); the set bits, lowest first, give the
+ *  neighbours in range order; then two vectorised loops give their
+ *  geometry (s2 computed exactly as in the test) and kernel factors.
+ *  @param dim the loop's dimension (= pk->dim) and @p kid its kernel
+ *  (= pk->dfq_id), passed by the caller so that a caller specialised on
+ *  constants gets unrolled loops and the kernel inlined.
+ *  @return the neighbours in the chunk (b->m); 0 when the ranges are
+ *  exhausted. */
+VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather(struct vsph_pair_iter *it,
+                                               int dim, int kid,
+                                               struct vsph_pair_chunk *b) {
+  const double H2 = it->pk->H2;
+  const size_t i = it->i;
+  size_t m = 0;
+  while (m < VSPH_PAIR_CHUNK) {
+    if (it->j >= it->end) {
+      if (++it->r >= it->rg->n) break;
+      it->j = it->rg->lo[it->r];
+      it->end = it->rg->hi[it->r];
+      continue;
+    }
+    const size_t j0 = it->j;
+    const size_t n = it->end - j0 > 64 ? 64 : it->end - j0;
+    unsigned long long w = 0;
+#pragma omp simd reduction(| : w)
+    for (size_t c = 0; c < n; c++) {
       double s2 = 0.0;
       for (int k = 0; k < dim; k++) {
-        const double x = it->pos[k][j] - it->xi[k];
-        pr->x[k] = x;
+        const double x = it->pos[k][j0 + c] - it->xi[k];
         s2 += x * x;
       }
-      if (s2 >= H2 || j == it->i) continue;
-      pr->j = j;
-      pr->s2 = s2;
-      pr->F = pk->dwq * pk->dfq(s2 * pk->h_inv2);
-      pr->VF = it->vol[j] * pr->F;
-      return 1;
+      w |= (unsigned long long)(s2 < H2) << c;
     }
-    if (++it->r >= it->rg->n) return 0;
-    it->j = it->rg->lo[it->r];
-    it->end = it->rg->hi[it->r];
+    if (i - j0 < n) w &= ~(1ull << (i - j0)); /* not i itself */
+    for (; w; w &= w - 1) b->j[m++] = j0 + (size_t)__builtin_ctzll(w);
+    it->j = j0 + n;
   }
+  double q2[VSPH_PAIR_CHUNK_MAX];
+#pragma omp simd
+  for (size_t k = 0; k < m; k++) {
+    double s2 = 0.0;
+    for (int a = 0; a < dim; a++) {
+      const double x = it->pos[a][b->j[k]] - it->xi[a];
+      b->x[a][k] = x;
+      s2 += x * x;
+    }
+    b->s2[k] = s2;
+    q2[k] = s2 * it->pk->h_inv2;
+  }
+  vsph_pair_fvf(it, b, q2, m, kid);
+  b->m = m;
+  return m;
+}
+
+/** @brief Pair k of chunk @p b as a vsph_pair (for the term functions). */
+VSPH_CONSTS_SPECIALISE void vsph_pair_at(const struct vsph_pair_chunk *b,
+                                         size_t k, int dim,
+                                         struct vsph_pair *pr) {
+  pr->j = b->j[k];
+  for (int a = 0; a < dim; a++) pr->x[a] = b->x[a][k];
+  pr->s2 = b->s2[k];
+  pr->F = b->F[k];
+  pr->VF = b->VF[k];
 }
 
 /* ------------------------------------------------------------ the terms */
@@ -163,76 +270,75 @@ VSPH_CONSTS_SPECIALISE double vsph_pair_delta(const struct vsph_pair *pr,
 }
 
 /** @brief Pressure gradient, the PVW-compatible form of Eq. (3.13):
- *  -(1/rho_i) sum_j V_j (p_i + p_j) grad_i W_ij. Adds V_j F (p_i + p_j) x
- *  to @p acc; the caller divides the sum by rho_i.
+ *  -(1/rho_i) sum_j V_j (p_i + p_j) grad_i W_ij. Sets @p f to the pair's
+ *  V_j F (p_i + p_j) x; the caller sums and divides by rho_i.
  *  @param psum p_i + p_j (Pa). */
 VSPH_CONSTS_SPECIALISE void vsph_pair_pressure(const struct vsph_pair *pr,
                                                int dim, double psum,
-                                               double acc[3]) {
+                                               double f[3]) {
   const double c = pr->VF * psum;
-  for (int k = 0; k < dim; k++) acc[k] += c * pr->x[k];
+  for (int k = 0; k < dim; k++) f[k] = c * pr->x[k];
 }
 
 /** @brief MGF, Monaghan & Gingold, Eq. (4.20), THEORY 3:
  *  (div V)_i = K mu sum_j V_j (u_j - u_i).(r_j - r_i)/s^2 grad_i W_ij.
- *  Adds -K mu V_j F (du.x)/s^2 x to @p acc.
+ *  Sets @p f to the pair's -K mu V_j F (du.x)/s^2 x.
  *  @param Kmu K mu with K = vsph_kernel_mg_factor(dim) (Pa s).
  *  @return the pair's dissipation density (K mu/2) V_j F (du.x)^2/s^2
  *  (THEORY 4), so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
 VSPH_CONSTS_SPECIALISE double vsph_pair_mgf(const struct vsph_pair *pr, int dim,
                                             double Kmu, double dux,
-                                            double acc[3]) {
+                                            double f[3]) {
   const double c = -Kmu * pr->VF * dux / pr->s2;
-  for (int k = 0; k < dim; k++) acc[k] += c * pr->x[k];
+  for (int k = 0; k < dim; k++) f[k] = c * pr->x[k];
   return -0.5 * c * dux; /* (K mu/2) V_j F (du.x)^2/s^2, one division */
 }
 
 /** @brief MEAF, Morris, Fox & Zhu (1997), Eq. (4.30), THEORY 3:
- *  (div V)_i = 2 mu sum_j V_j W'/s (u_i - u_j). Adds -2 mu V_j F du to
- *  @p acc (du = u_j - u_i). @param two_mu 2 mu (Pa s).
+ *  (div V)_i = 2 mu sum_j V_j W'/s (u_i - u_j). Sets @p f to the pair's
+ *  -2 mu V_j F du (du = u_j - u_i). @param two_mu 2 mu (Pa s).
  *  @return the pair's dissipation density mu V_j F |du|^2 (THEORY 4). */
 VSPH_CONSTS_SPECIALISE double vsph_pair_meaf(const struct vsph_pair *pr,
                                              int dim, double two_mu,
-                                             const double du[3],
-                                             double acc[3]) {
+                                             const double du[3], double f[3]) {
   const double c = -two_mu * pr->VF;
   double du2 = 0.0;
   for (int k = 0; k < dim; k++) {
-    acc[k] += c * du[k];
+    f[k] = c * du[k];
     du2 += du[k] * du[k];
   }
   return 0.5 * two_mu * pr->VF * du2;
 }
 
-/** @brief PVWF pass 1, Eqs. (4.18)-(4.19), THEORY 3: the sums
+/** @brief PVWF pass 1, Eqs. (4.18)-(4.19), THEORY 3: the pair's terms of
  *  B = sum_j V_j grad_i W_ij (x) x = sum_j V_j (-F) x (x) x, whose inverse
- *  is L_i, and Mg = sum_j V_j (-F) du (x) x, so that the renormalised
+ *  is L_i, and of Mg = sum_j V_j (-F) du (x) x, so that the renormalised
  *  gradient is (grad u)_i = Mg L_i (row-major d x d, entry [a*dim+b]). */
 VSPH_CONSTS_SPECIALISE void vsph_pair_pvwf_grad(const struct vsph_pair *pr,
                                                 int dim, const double du[3],
-                                                double B[9], double Mg[9]) {
+                                                double bB[9], double bM[9]) {
   const double c = -pr->VF;
   for (int a = 0; a < dim; a++)
     for (int b = 0; b < dim; b++) {
-      B[a * dim + b] += c * pr->x[a] * pr->x[b];
-      Mg[a * dim + b] += c * du[a] * pr->x[b];
+      bB[a * dim + b] = c * pr->x[a] * pr->x[b];
+      bM[a * dim + b] = c * du[a] * pr->x[b];
     }
 }
 
 /** @brief PVWF pass 2, Eq. (4.19), THEORY 3:
- *  (div V)_i = sum_j V_j (T_j L_j + T_i L_i) grad_i W_ij. Adds
- *  -V_j F (A_j + A_i) x to @p acc with A = T L from pass 1.
+ *  (div V)_i = sum_j V_j (T_j L_j + T_i L_i) grad_i W_ij. Sets @p f to the
+ *  pair's -V_j F (A_j + A_i) x with A = T L from pass 1.
  *  @param Ai A_i (row-major); @param A A[a*dim+b][j] of every particle. */
 VSPH_CONSTS_SPECIALISE void vsph_pair_pvwf_force(const struct vsph_pair *pr,
                                                  int dim, const double Ai[9],
                                                  double *const A[9],
-                                                 double acc[3]) {
+                                                 double f[3]) {
   const size_t j = pr->j;
   for (int a = 0; a < dim; a++) {
     double y = 0.0;
     for (int b = 0; b < dim; b++)
       y += (A[a * dim + b][j] + Ai[a * dim + b]) * pr->x[b];
-    acc[a] -= pr->VF * y;
+    f[a] = -(pr->VF * y);
   }
 }
 

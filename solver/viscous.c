@@ -156,15 +156,32 @@ VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
                                        const struct vsph_particles *p,
                                        const struct vsph_pair_ranges *rg,
                                        size_t i, struct vsph_viscous_ws *ws,
-                                       const int dim) {
-  double B[9] = {0}, Mg[9] = {0}, L[9] = {0}, G[9] = {0};
+                                       const int dim, const int kid) {
+  double B[9] = {0}, Mg[9] = {0}, L[9] = {0}, G[9] = {0}, ui[3] = {0};
+  for (int a = 0; a < dim; a++) ui[a] = p->vel[a][i];
   struct vsph_pair_iter it;
-  struct vsph_pair pr;
+  struct vsph_pair_chunk bt;
   vsph_pair_begin(&it, pk, p, rg, i);
-  while (vsph_pair_next(&it, dim, &pr)) {
-    double du[3];
-    for (int a = 0; a < dim; a++) du[a] = p->vel[a][pr.j] - p->vel[a][i];
-    vsph_pair_pvwf_grad(&pr, dim, du, B, Mg);
+  while (vsph_pair_gather(&it, dim, kid, &bt)) {
+    const size_t m = bt.m;
+    double sB[9][VSPH_PAIR_CHUNK_MAX], sM[9][VSPH_PAIR_CHUNK_MAX];
+#pragma omp simd
+    for (size_t k = 0; k < m; k++) { /* the pairs' shares */
+      struct vsph_pair pr;
+      vsph_pair_at(&bt, k, dim, &pr);
+      double du[3], bB[9], bM[9];
+      for (int a = 0; a < dim; a++) du[a] = p->vel[a][pr.j] - ui[a];
+      vsph_pair_pvwf_grad(&pr, dim, du, bB, bM);
+      for (int e = 0; e < dim * dim; e++) {
+        sB[e][k] = bB[e];
+        sM[e][k] = bM[e];
+      }
+    }
+    for (size_t k = 0; k < m; k++) /* summed in neighbour order */
+      for (int e = 0; e < dim * dim; e++) {
+        B[e] += sB[e][k];
+        Mg[e] += sM[e][k];
+      }
   }
   ws->fallback[i] = !invert_sym(dim, B, L, vp->det_tol);
   if (ws->fallback[i])
@@ -209,13 +226,15 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
     struct vsph_pair_ranges rg;
     vsph_pair_ranges_cell(&rg, cells, c);
     const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
-    for (size_t i = i0; i < i1; i++) /* dimension fixed outside the loop */
-      if (vp->dim == 2)
-        pvwf_pass1(vp, &pk, p, &rg, i, ws, 2);
-      else if (vp->dim == 3)
-        pvwf_pass1(vp, &pk, p, &rg, i, ws, 3);
+    /* dimension and kernel fixed outside the loop: the 2-D Gaussian has
+     * its own copy, any other runs the general one */
+    const int G = VSPH_KERNEL_DFQ_GAUSSIAN,
+              gauss2 = vp->dim == 2 && pk.dfq_id == G;
+    for (size_t i = i0; i < i1; i++)
+      if (gauss2)
+        pvwf_pass1(vp, &pk, p, &rg, i, ws, 2, G);
       else
-        pvwf_pass1(vp, &pk, p, &rg, i, ws, 1);
+        pvwf_pass1(vp, &pk, p, &rg, i, ws, vp->dim, pk.dfq_id);
   }
   size_t nf = 0; /* serial: reproducible */
   for (size_t i = 0; i < p->n; i++) nf += ws->fallback[i];
@@ -224,26 +243,38 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
 }
 
 /* (div V)_i of particle i into out, by the loop's formulation; returns the
- * pairwise dissipation density (MGF, MEAF). */
-VSPH_CONSTS_SPECIALISE double force_one(const struct vsph_viscous_loop *lp,
-                                        const struct vsph_pair_kernel *pk,
-                                        const struct vsph_particles *p,
-                                        const struct vsph_pair_ranges *rg,
-                                        size_t i, double *const out[3],
-                                        const int dim) {
+ * pairwise dissipation density (MGF, MEAF). Shares per chunk in one
+ * vectorisable loop, then summed in neighbour order (as in equations.c). */
+VSPH_CONSTS_SPECIALISE double force_one(
+    const struct vsph_viscous_loop *lp, const struct vsph_pair_kernel *pk,
+    const struct vsph_particles *p, const struct vsph_pair_ranges *rg, size_t i,
+    double *const out[3], const struct vsph_viscous_shape sh, const int kid) {
+  const int dim = sh.dim;
   double acc[3] = {0, 0, 0}, Ai[9] = {0}, ui[3] = {0, 0, 0}, pd = 0.0;
   vsph_viscous_load_A(lp, i, Ai);
   for (int k = 0; k < dim; k++) ui[k] = p->vel[k][i];
   struct vsph_pair_iter it;
-  struct vsph_pair pr;
+  struct vsph_pair_chunk b;
   vsph_pair_begin(&it, pk, p, rg, i);
-  while (vsph_pair_next(&it, dim, &pr)) {
-    double du[3], dux = 0.0;
-    for (int k = 0; k < dim; k++) {
-      du[k] = p->vel[k][pr.j] - ui[k];
-      dux += du[k] * pr.x[k];
+  while (vsph_pair_gather(&it, dim, kid, &b)) {
+    const size_t m = b.m;
+    double fv[3][VSPH_PAIR_CHUNK_MAX], fd[VSPH_PAIR_CHUNK_MAX];
+#pragma omp simd
+    for (size_t q = 0; q < m; q++) {
+      struct vsph_pair pr;
+      vsph_pair_at(&b, q, dim, &pr);
+      double du[3], dux = 0.0, f[3];
+      for (int k = 0; k < dim; k++) {
+        du[k] = p->vel[k][pr.j] - ui[k];
+        dux += du[k] * pr.x[k];
+      }
+      fd[q] = vsph_viscous_pair(lp, sh, &pr, du, dux, Ai, f);
+      for (int k = 0; k < dim; k++) fv[k][q] = f[k];
     }
-    pd += vsph_viscous_pair(lp, &pr, du, dux, Ai, acc);
+    for (size_t q = 0; q < m; q++) {
+      pd += fd[q];
+      for (int k = 0; k < dim; k++) acc[k] += fv[k][q];
+    }
   }
   for (int k = 0; k < dim; k++) out[k][i] = acc[k];
   return pd;
@@ -269,13 +300,21 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
     vsph_pair_ranges_cell(&rg, cells, c);
     const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
     for (size_t i = i0; i < i1; i++) { /* dimension fixed outside the loop */
+      const int f = vp->form;
+      const struct vsph_viscous_shape mgf2 = {2, VSPH_VISCOUS_MGF},
+                                      meaf2 = {2, VSPH_VISCOUS_MEAF},
+                                      pvwf2 = {2, VSPH_VISCOUS_PVWF},
+                                      any = {dim, f};
+      const int G = VSPH_KERNEL_DFQ_GAUSSIAN;
       double pd;
-      if (dim == 2)
-        pd = force_one(&lp, &pk, p, &rg, i, out, 2);
-      else if (dim == 3)
-        pd = force_one(&lp, &pk, p, &rg, i, out, 3);
+      if (dim != 2 || pk.dfq_id != G)
+        pd = force_one(&lp, &pk, p, &rg, i, out, any, pk.dfq_id);
+      else if (f == VSPH_VISCOUS_MGF)
+        pd = force_one(&lp, &pk, p, &rg, i, out, mgf2, G);
+      else if (f == VSPH_VISCOUS_MEAF)
+        pd = force_one(&lp, &pk, p, &rg, i, out, meaf2, G);
       else
-        pd = force_one(&lp, &pk, p, &rg, i, out, 1);
+        pd = force_one(&lp, &pk, p, &rg, i, out, pvwf2, G);
       if (dens) dens[i] = pvwf ? ws->dens[i] : pd;
     }
   }

@@ -122,21 +122,30 @@ static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
   for (int a = 0; a < 9; a++) lp->A[a] = ws ? ws->A[a] : NULL;
 }
 
-/** @brief The viscous term of pair (i, j) in the loop's formulation: adds
- *  the pair's share of (div V)_i to @p acc and returns its dissipation
- *  density (0 for PVWF, whose density -T_i:D_i comes from pass 1). A new
- *  formulation adds its pair function to pair.h and a case here.
+/** The shape of a specialised loop: dimension and formulation, constants
+ *  where the caller specialises (see equations.c), so the term functions
+ *  unroll and the dispatch below folds away. */
+struct vsph_viscous_shape {
+  int dim;  /*!< 1, 2 or 3 */
+  int form; /*!< vsph_viscous_form */
+};
+
+/** @brief The viscous term of pair (i, j): sets @p f to the pair's share of
+ *  (div V)_i and returns its dissipation density (0 for PVWF, whose density
+ *  -T_i:D_i comes from pass 1). A new formulation adds its pair function
+ *  to pair.h and a case here.
  *  @param du u_j - u_i; @param dux du.x; @param Ai PVWF's A_i. */
 VSPH_CONSTS_SPECIALISE double vsph_viscous_pair(
-    const struct vsph_viscous_loop *lp, const struct vsph_pair *pr,
-    const double du[3], double dux, const double Ai[9], double acc[3]) {
-  switch (lp->form) {
+    const struct vsph_viscous_loop *lp, struct vsph_viscous_shape sh,
+    const struct vsph_pair *pr, const double du[3], double dux,
+    const double Ai[9], double f[3]) {
+  switch (sh.form) {
     case VSPH_VISCOUS_MGF:
-      return vsph_pair_mgf(pr, lp->dim, lp->Kmu, dux, acc);
+      return vsph_pair_mgf(pr, sh.dim, lp->Kmu, dux, f);
     case VSPH_VISCOUS_MEAF:
-      return vsph_pair_meaf(pr, lp->dim, lp->two_mu, du, acc);
+      return vsph_pair_meaf(pr, sh.dim, lp->two_mu, du, f);
     default:
-      vsph_pair_pvwf_force(pr, lp->dim, Ai, lp->A, acc);
+      vsph_pair_pvwf_force(pr, sh.dim, Ai, lp->A, f);
       return 0.0;
   }
 }
