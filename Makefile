@@ -85,7 +85,8 @@ $(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
 check: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph $(BUILD)/check_vsph
 	@$(MAKE) --no-print-directory prefix-check format-check
-	VSPH_BIN=$(BUILD)/vsph OMP_NUM_THREADS=2 $(BUILD)/check_vsph
+	VSPH_BIN=$(BUILD)/vsph OMP_NUM_THREADS=2 OMP_WAIT_POLICY=passive \
+	  $(BUILD)/check_vsph
 
 test: check
 

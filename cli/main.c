@@ -1,7 +1,9 @@
 /* vsph: viscous SPH at a free surface. Dispatches the sub-commands. */
 #include <gsl/gsl_errno.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "../common/consts.h"
 #include "args.h"
@@ -45,7 +47,21 @@ static void usage(FILE *f) {
     fprintf(f, "  %-12s %s\n", commands[i].name, commands[i].what);
 }
 
+/* OpenMP threads that wait at a barrier sleep rather than spin: on a
+ * shared machine a spinning thread takes the core its partner needs, and
+ * two threads ran 1.3x slower than passive ones beside 7 busy processes
+ * (equal on a quiet machine; README, Speed). libgomp reads the policy
+ * once, when it loads, so vsph sets it and starts itself again; the
+ * environment's own OMP_WAIT_POLICY, if any, is kept. If the restart
+ * fails, vsph runs on under libgomp's default. */
+static void wait_policy(char **argv) {
+  if (getenv("OMP_WAIT_POLICY")) return;
+  if (setenv("OMP_WAIT_POLICY", "passive", 1)) return;
+  execv("/proc/self/exe", argv);
+}
+
 int main(int argc, char **argv) {
+  wait_policy(argv);
   /* STYLE B4: GSL reports through return codes; set before any thread. */
   gsl_set_error_handler_off();
   vsph_args_install_handler();

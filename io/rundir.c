@@ -13,6 +13,7 @@
 #include "../common/consts.h"
 #include "../common/params.h"
 #include "../common/status.h"
+#include "../common/sysinfo.h"
 #include "../kernels/kernel.h"
 #include "../solver/integrate.h"
 #include "../solver/run.h"
@@ -68,6 +69,18 @@ static int write_run_json(const struct vsph_run *run,
   cJSON_AddNumberToObject(o, "steps", (double)res->steps);
   cJSON_AddNumberToObject(o, "threads", omp_get_max_threads());
   cJSON_AddNumberToObject(o, "wall_s", res->wall_s);
+  /* a timing is read beside the machine's state: CPU time (all threads),
+   * the load averages before and after, the OpenMP wait policy */
+  vsph_json_number(o, "cpu_s", res->cpu_s);
+  const char *when[2] = {"load_average_start", "load_average_end"};
+  for (int w = 0; w < 2; w++) {
+    cJSON *la = cJSON_AddArrayToObject(o, when[w]);
+    for (int k = 0; la && k < 3; k++)
+      cJSON_AddItemToArray(la, isfinite(res->load[w][k])
+                                   ? cJSON_CreateNumber(res->load[w][k])
+                                   : cJSON_CreateNull());
+  }
+  cJSON_AddStringToObject(o, "omp_wait_policy", vsph_sysinfo_wait_policy());
   vsph_json_number(o, "pairs_per_s",
                    res->wall_s > 0 ? res->pairs / res->wall_s : (double)NAN);
   vsph_json_number(o, "particle_steps_per_s",
@@ -75,6 +88,9 @@ static int write_run_json(const struct vsph_run *run,
                                          (double)res->steps / res->wall_s
                                    : (double)NAN);
   cJSON_AddNumberToObject(o, "memory_bytes", bytes);
+  /* the process's peak resident memory so far: the whole run's, for a
+   * run that is the process's only job (vsph run) */
+  cJSON_AddNumberToObject(o, "peak_rss_bytes", (double)vsph_sysinfo_peak_rss());
   cJSON_AddNumberToObject(o, "pvwf_fallback_particles",
                           (double)vsph_run_fallbacks(run));
   cJSON_AddStringToObject(o, "status",
@@ -201,7 +217,8 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
                      const struct vsph_rundir_opts *opts,
                      struct vsph_rundir_result *res) {
   FILE *progress = opts->progress;
-  const double t0 = omp_get_wtime();
+  vsph_sysinfo_load(res->load[0]);
+  const double t0 = omp_get_wtime(), c0 = vsph_sysinfo_cpu_s();
   double last = t0;
   int st = VSPH_OK;
   for (;;) {
@@ -226,6 +243,8 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
     }
   }
   res->wall_s = omp_get_wtime() - t0;
+  res->cpu_s = vsph_sysinfo_cpu_s() - c0;
+  vsph_sysinfo_load(res->load[1]);
   return st;
 }
 

@@ -6,14 +6,16 @@
 
 /** @file bench.h
  *  @brief `make bench`: timings of the building blocks and of the solver
- *  (never in the tests). Each figure is the best of several repetitions
- *  (the minimum filters the noise of a shared machine), and the load
- *  average is printed beside the tables. */
+ *  (never in the tests). The building blocks: best of several repetitions
+ *  (the minimum filters the noise of a shared machine); the solver: the
+ *  median, with the load average beside each row. */
 
 /** What to time. */
 struct vsph_bench_props {
   size_t size;     /*!< particles across the operator benchmark's square */
   int solver_only; /*!< 1: only the solver tables */
+  int busy;        /*!< other busy processes to start beside the solver
+                        table (0-8), to measure it under load */
 };
 
 /** @brief Run the benchmarks and print their tables to @p out.

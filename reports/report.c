@@ -15,6 +15,7 @@
 
 #include "../common/consts.h"
 #include "../common/status.h"
+#include "../common/sysinfo.h"
 #include "../io/csv.h"
 #include "../io/files.h"
 #include "../io/html.h"
@@ -203,6 +204,13 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
       fprintf(md, "| %s | %.1f |\n", PARTS[p].name, wall[p]);
   }
   vsph_text_set(tv, "compiler", "%s", __VERSION__);
+  vsph_sysinfo_load(R->load[1]);
+  vsph_text_set(tv, "load_start", "%.2f %.2f %.2f", R->load[0][0],
+                R->load[0][1], R->load[0][2]);
+  vsph_text_set(tv, "load_end", "%.2f %.2f %.2f", R->load[1][0], R->load[1][1],
+                R->load[1][2]);
+  vsph_text_set(tv, "wait_policy", "%s", vsph_sysinfo_wait_policy());
+  vsph_text_set(tv, "cpu", "%.0f", vsph_sysinfo_cpu_s());
   if (!st) st = vsph_report_say(R, "report.facts_tail");
   R->md = NULL;
   if (st) {
@@ -234,6 +242,16 @@ static int write_run_json(const struct vsph_report *R, unsigned long want,
     }
   cJSON_AddItemToObject(o, "wall_s", w);
   cJSON_AddNumberToObject(o, "wall_total_s", total);
+  vsph_json_number(o, "cpu_total_s", vsph_sysinfo_cpu_s());
+  const char *when[2] = {"load_average_start", "load_average_end"};
+  for (int k = 0; k < 2; k++) {
+    cJSON *la = cJSON_AddArrayToObject(o, when[k]);
+    for (int m = 0; la && m < 3; m++)
+      cJSON_AddItemToArray(la, isfinite(R->load[k][m])
+                                   ? cJSON_CreateNumber(R->load[k][m])
+                                   : cJSON_CreateNull());
+  }
+  cJSON_AddStringToObject(o, "omp_wait_policy", vsph_sysinfo_wait_policy());
   return vsph_json_write(o, R->dir, "run.json");
 }
 
@@ -256,6 +274,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
     vsph_status_report(st, __FILE__, __LINE__, "cannot allocate workspaces");
   }
   const double t_all = omp_get_wtime();
+  vsph_sysinfo_load(R->load[0]);
   double wall[NPARTS] = {0};
   int cached[NPARTS] = {0};
   char key[128];

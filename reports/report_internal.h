@@ -35,6 +35,8 @@ struct vsph_report_ladder {
   double err[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   double wall[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   double pairs[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  double cpu[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  double load[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   int ok[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   double t_unstable[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
 };
@@ -56,6 +58,7 @@ struct vsph_report {
   int have_ladder[VSPH_REPORT_NSCENES];
   struct vsph_text_vars tv;          /* scratch values for the prose blocks */
   const volatile sig_atomic_t *stop; /* stop request, or NULL */
+  double load[2][3]; /* load averages before and after (run.json) */
 };
 
 /* ------------------------------------------------------ report.c helpers */
@@ -95,6 +98,7 @@ struct vsph_report_run {
   double t_unstable; /* when, if unstable */
   char reason[160];  /* why */
   double wall_s, pairs;
+  double cpu_s, load; /* CPU time; 1-minute load average at its start */
   size_t n, steps, res;
   struct vsph_csv *energy; /* energy.csv */
   size_t nrow;             /* its rows; the columns: */

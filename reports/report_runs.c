@@ -78,6 +78,10 @@ static int load_run_json(struct vsph_report_run *r) {
            cJSON_IsString(v) ? v->valuestring : "");
   r->wall_s = vsph_json_get_number(j, "wall_s", (double)NAN);
   r->pairs = vsph_json_get_number(j, "pairs_per_s", 0.0) * r->wall_s;
+  r->cpu_s = vsph_json_get_number(j, "cpu_s", (double)NAN);
+  v = cJSON_GetObjectItemCaseSensitive(j, "load_average_start");
+  const cJSON *l1 = cJSON_IsArray(v) ? cJSON_GetArrayItem(v, 0) : NULL;
+  r->load = cJSON_IsNumber(l1) ? l1->valuedouble : (double)NAN;
   r->n = count_of(j, "n_particles");
   r->steps = count_of(j, "steps");
   r->res = count_of(j, "res");
@@ -231,6 +235,8 @@ int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
       lr->err[f][k] = vsph_report_runs_error(&r, sc == 1 ? &rr : NULL);
       lr->wall[f][k] = r.wall_s;
       lr->pairs[f][k] = r.pairs;
+      lr->cpu[f][k] = r.cpu_s;
+      lr->load[f][k] = r.load;
       lr->ok[f][k] = r.ok;
       lr->t_unstable[f][k] = r.t_unstable;
       vsph_report_runs_free(&r);

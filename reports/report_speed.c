@@ -25,11 +25,11 @@ static int scene(struct vsph_report *R, int sc) {
   for (int f = 0; f < NFORM && !st; f++) {
     char file[96];
     snprintf(file, sizeof file, "speed_%s_%s.csv", scn, vsph_viscous_name(f));
-    FILE *c = vsph_csv_open(R->dir, file, "error,wall_s,pairs");
+    FILE *c = vsph_csv_open(R->dir, file, "error,wall_s,pairs,cpu_s,load_1min");
     if (!c) return VSPH_EIO;
     for (int k = 0; k < VSPH_REPORT_LADDER; k++)
-      fprintf(c, "%.6e,%.4f,%.6e\n", lr.err[f][k], lr.wall[f][k],
-              lr.pairs[f][k]);
+      fprintf(c, "%.6e,%.4f,%.6e,%.4f,%.2f\n", lr.err[f][k], lr.wall[f][k],
+              lr.pairs[f][k], lr.cpu[f][k], lr.load[f][k]);
     if ((st = vsph_csv_close(c, R->dir, file))) break;
     st = vsph_plot_add(&pl, file, "1:2", vsph_viscous_label(f),
                        "linespoints pt 7 lw 2");

@@ -10,10 +10,6 @@
 #include "cells.h"
 #include "particles.h"
 
-/* Ghost capacity per fluid particle: a particle near a corner has three
- * images; a wall scene never needs more. */
-static const size_t GHOSTS_PER_PARTICLE = 3;
-
 static int nfields(int dim) { return 2 * dim + 1; } /* r, u, rho */
 
 static double *field(struct vsph_particles *p, int f) {
@@ -21,51 +17,73 @@ static double *field(struct vsph_particles *p, int f) {
   return f < d ? p->pos[f] : f < 2 * d ? p->vel[f - d] : p->rho;
 }
 
+/* The per-particle buffers beside the particle set, for its capacity:
+ * their contents are rebuilt every step (and every evaluation), so they
+ * are allocated afresh, not copied. */
+static int buffers_alloc(struct vsph_integrate *s) {
+  const size_t cap = s->p->cap;
+  const int d = s->p->dim;
+  vsph_viscous_ws_free(s->vws);
+  vsph_walls_ghosts_free(s->gh);
+  free(s->where);
+  s->vws = NULL;
+  s->gh = NULL;
+  s->where = NULL;
+  for (int f = 0; f < 7; f++) {
+    free(s->y0[f]);
+    free(s->ks[f]);
+    s->y0[f] = s->ks[f] = NULL;
+  }
+  for (int f = 0; f < 4; f++) {
+    free(s->extra[f]);
+    s->extra[f] = NULL;
+  }
+  if (s->props.eq.visc.form == VSPH_VISCOUS_PVWF &&
+      !(s->vws = vsph_viscous_ws_alloc(cap, d)))
+    return VSPH_ENOMEM;
+  if (s->props.walls.n > 0 && !(s->gh = vsph_walls_ghosts_alloc(cap)))
+    return VSPH_ENOMEM;
+  int ok = (s->where = malloc(cap * sizeof *s->where)) != NULL;
+  for (int f = 0; f < nfields(d); f++) {
+    ok = ok && (s->y0[f] = malloc(cap * sizeof(double))) != NULL;
+    ok = ok && (s->ks[f] = malloc(cap * sizeof(double))) != NULL;
+  }
+  for (int f = 0; f < d + 1; f++)
+    ok = ok && (s->extra[f] = malloc(cap * sizeof(double))) != NULL;
+  if (!ok)
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the integrator for %zu particles",
+              cap);
+  return VSPH_OK;
+}
+
+/* Room for n particles (fluid and ghosts): the particle set keeps its live
+ * particles, the buffers are made afresh. Grows by an eighth more than
+ * asked, so a wave's slowly changing ghost count does not regrow every
+ * step. */
+static int reserve(struct vsph_integrate *s, size_t n) {
+  if (n <= s->p->cap) return VSPH_OK;
+  const int st = vsph_particles_reserve(s->p, n + n / 8 + 64);
+  return st ? st : buffers_alloc(s);
+}
+
 struct vsph_integrate *vsph_integrate_alloc(
     const struct vsph_integrate_props *ip, struct vsph_particles *fluid) {
   struct vsph_integrate *s = calloc(1, sizeof *s);
-  if (!s) goto nomem;
+  if (!s) {
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot allocate the integrator");
+    vsph_particles_free(fluid);
+    return NULL;
+  }
   s->props = *ip;
   s->n_fluid = fluid->n;
-  const int d = fluid->dim;
-  const size_t cap = fluid->n * (ip->walls.n > 0 ? 1 + GHOSTS_PER_PARTICLE : 1);
-  s->p = vsph_particles_alloc(cap, d);
-  if (!s->p) goto fail;
-  s->p->n = fluid->n;
-  for (int k = 0; k < d; k++) {
-    memcpy(s->p->pos[k], fluid->pos[k], fluid->n * sizeof(double));
-    memcpy(s->p->vel[k], fluid->vel[k], fluid->n * sizeof(double));
+  for (size_t i = 0; i < fluid->n; i++) fluid->id[i] = i;
+  s->p = fluid; /* taken; the ghosts, if any, grow it in prepare */
+  if (!(s->cells = vsph_cells_alloc()) || buffers_alloc(s)) {
+    vsph_integrate_free(s);
+    return NULL;
   }
-  memcpy(s->p->m, fluid->m, fluid->n * sizeof(double));
-  memcpy(s->p->rho, fluid->rho, fluid->n * sizeof(double));
-  memcpy(s->p->vol, fluid->vol, fluid->n * sizeof(double));
-  for (size_t i = 0; i < fluid->n; i++) s->p->id[i] = i;
-  vsph_particles_free(fluid);
-  fluid = NULL;
-  s->cells = vsph_cells_alloc();
-  s->vws = ip->eq.visc.form == VSPH_VISCOUS_PVWF
-               ? vsph_viscous_ws_alloc(s->p->cap, d)
-               : NULL;
-  if (ip->walls.n > 0) s->gh = vsph_walls_ghosts_alloc(s->p->cap);
-  s->where = malloc(s->p->cap * sizeof *s->where);
-  if (!s->cells || !s->where || (ip->walls.n > 0 && !s->gh) ||
-      (ip->eq.visc.form == VSPH_VISCOUS_PVWF && !s->vws))
-    goto fail;
-  for (int f = 0; f < nfields(d); f++) {
-    s->y0[f] = malloc(s->p->cap * sizeof(double));
-    s->ks[f] = malloc(s->p->cap * sizeof(double));
-    if (!s->y0[f] || !s->ks[f]) goto nomem;
-  }
-  for (int f = 0; f < d + 1; f++)
-    if (!(s->extra[f] = malloc(s->p->cap * sizeof(double)))) goto nomem;
   return s;
-nomem:
-  vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
-                     "cannot allocate the integrator");
-fail:
-  vsph_particles_free(fluid);
-  vsph_integrate_free(s);
-  return NULL;
 }
 
 void vsph_integrate_free(struct vsph_integrate *s) {
@@ -120,10 +138,13 @@ static int prepare(struct vsph_integrate *s, double skin) {
   const struct vsph_viscous_props *vp = &s->props.eq.visc;
   const double H = vp->kernel->kappa * vp->h;
   int st;
-  if (s->props.walls.n > 0 &&
-      (st = vsph_walls_generate(&s->props.walls, s->p, s->n_fluid, H + skin,
-                                s->gh)))
-    return st;
+  if (s->props.walls.n > 0) {
+    const struct vsph_walls *w = &s->props.walls;
+    const size_t ng = vsph_walls_count(w, s->p, s->n_fluid, H + skin);
+    if ((st = reserve(s, s->n_fluid + ng)) ||
+        (st = vsph_walls_generate(w, s->p, s->n_fluid, H + skin, s->gh)))
+      return st;
+  }
   if ((st = vsph_cells_build(s->cells, s->p, H + skin))) return st;
   for (size_t i = 0; i < s->p->n; i++) s->where[s->p->id[i]] = i;
   return VSPH_OK;
@@ -168,24 +189,35 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   static const double a[4] = {0.0, 0.5, 0.5, 1.0}, w[4] = {1, 2, 2, 1};
   size_t nint = 0;
   double min_s2 = INFINITY;
+  const size_t nf_ = s->n_fluid;
+  const size_t *const id = p->id;
   for (int stage = 0; stage < 4; stage++) {
     if ((st = rhs(s, 0, &nint, &min_s2))) return st;
-    /* accumulate k_stage and form the next stage state */
-    const double c = stage < 3 ? a[stage + 1] * dt : 0.0;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < n; i++) {
-      if (p->id[i] >= s->n_fluid) continue;
-      double kv[7];
-      for (int f = 0; f < nf; f++) kv[f] = k[f][i];
-      for (int f = 0; f < nf; f++) s->ks[f][i] += w[stage] * kv[f];
-      if (stage < 3)
-        for (int f = 0; f < nf; f++) y[f][i] = s->y0[f][i] + c * kv[f];
+    /* accumulate k_stage and form the next stage state, field by field
+     * (contiguous, vectorised); ghosts are left alone (they are mirrored
+     * afresh before every evaluation) */
+    const double c = stage < 3 ? a[stage + 1] * dt : 0.0, wk = w[stage];
+#pragma omp parallel
+    for (int f = 0; f < nf; f++) {
+      const double *const kf = k[f], *const y0f = s->y0[f];
+      double *const ksf = s->ks[f], *const yf = y[f];
+      /* static: each thread keeps its particles from field to field */
+#pragma omp for schedule(static) nowait
+      for (size_t i = 0; i < n; i++) {
+        if (id[i] >= nf_) continue;
+        const double kv = kf[i];
+        ksf[i] += wk * kv;
+        if (stage < 3) yf[i] = y0f[i] + c * kv;
+      }
     }
   }
-#pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < n; i++) {
-    if (p->id[i] >= s->n_fluid) continue;
-    for (int f = 0; f < nf; f++) y[f][i] = s->y0[f][i] + dt / 6.0 * s->ks[f][i];
+#pragma omp parallel
+  for (int f = 0; f < nf; f++) {
+    const double *const ksf = s->ks[f], *const y0f = s->y0[f];
+    double *const yf = y[f];
+#pragma omp for schedule(static) nowait
+    for (size_t i = 0; i < n; i++)
+      if (id[i] < nf_) yf[i] = y0f[i] + dt / 6.0 * ksf[i];
   }
   s->t += dt;
   s->steps++;
@@ -268,11 +300,13 @@ size_t vsph_integrate_bytes(const struct vsph_integrate *s) {
                       s->cells->cap_cells, s->vws != NULL, s->gh != NULL);
 }
 
-double vsph_integrate_bytes_estimate(int dim, double n_fluid, int walls,
+double vsph_integrate_bytes_estimate(int dim, double n_fluid, double n_ghosts,
                                      int pvwf) {
-  /* the capacity vsph_integrate_alloc takes, and the most cells
-   * vsph_cells_build makes (8 per particle + 4096) */
-  const double cap = n_fluid * (walls ? 1.0 + GHOSTS_PER_PARTICLE : 1.0) + 8;
+  /* the capacity reserve() grows to, and the most cells vsph_cells_build
+   * makes (8 per particle + 4096) */
+  const int walls = n_ghosts > 0.0;
+  const double n = n_fluid + n_ghosts;
+  const double cap = walls ? n + n / 8 + 64 : n + 8;
   const double per = (double)layout_bytes((size_t)dim, 1, 1, 8, pvwf, walls);
   return cap * per + 4096.0 * 2 * sizeof(size_t);
 }

@@ -49,9 +49,10 @@ struct vsph_integrate {
 };
 
 /** @brief Take ownership of the fluid set @p fluid (ids 0..n-1) and set up
- *  the integrator. The particle set is re-allocated with room for ghosts
- *  when there are walls. NULL (after reporting) on failure; @p fluid is
- *  freed in every case. */
+ *  the integrator. With walls, the set grows (vsph_particles_reserve) to
+ *  hold the ghosts each step needs, counted before they are made, so the
+ *  memory follows the ghosts there are rather than a worst case. NULL
+ *  (after reporting) on failure; @p fluid is freed in every case. */
 struct vsph_integrate *vsph_integrate_alloc(
     const struct vsph_integrate_props *ip, struct vsph_particles *fluid);
 
@@ -80,10 +81,11 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
  *  integrator storage. */
 size_t vsph_integrate_bytes(const struct vsph_integrate *s);
 
-/** @brief The bytes an integrator for @p n_fluid particles in @p dim
- *  dimensions will need at most (with ghost room when @p walls, the PVWF
- *  workspace when @p pvwf): to refuse a run before allocating it. */
-double vsph_integrate_bytes_estimate(int dim, double n_fluid, int walls,
+/** @brief The bytes an integrator for @p n_fluid particles and about
+ *  @p n_ghosts ghosts (0: no walls) in @p dim dimensions will need at
+ *  most, with the PVWF workspace when @p pvwf: to refuse a run before
+ *  allocating it. */
+double vsph_integrate_bytes_estimate(int dim, double n_fluid, double n_ghosts,
                                      int pvwf);
 
 #endif /* VSPH_SOLVER_INTEGRATE_H */

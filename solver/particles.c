@@ -43,6 +43,39 @@ fail:
   return NULL;
 }
 
+/* *field grown to cap elements of size sz, the first n kept. */
+static int grow(void **field, size_t n, size_t cap, size_t sz) {
+  void *q = alloc_aligned(cap * sz);
+  if (!q) return 0;
+  memcpy(q, *field, n * sz);
+  free(*field);
+  *field = q;
+  return 1;
+}
+
+int vsph_particles_reserve(struct vsph_particles *p, size_t cap) {
+  if (cap <= p->cap) return VSPH_OK;
+  cap = (cap + 7) / 8 * 8;
+  int ok = 1;
+  for (int k = 0; k < p->dim; k++) {
+    ok = ok && grow((void **)&p->pos[k], p->n, cap, sizeof(double));
+    ok = ok && grow((void **)&p->vel[k], p->n, cap, sizeof(double));
+    ok = ok && grow((void **)&p->acc[k], p->n, cap, sizeof(double));
+  }
+  ok = ok && grow((void **)&p->m, p->n, cap, sizeof(double)) &&
+       grow((void **)&p->rho, p->n, cap, sizeof(double)) &&
+       grow((void **)&p->vol, p->n, cap, sizeof(double)) &&
+       grow((void **)&p->p, p->n, cap, sizeof(double)) &&
+       grow((void **)&p->drho, p->n, cap, sizeof(double)) &&
+       grow((void **)&p->id, p->n, cap, sizeof(size_t));
+  /* a field that could not grow keeps its old size: cap stays until all
+   * have grown */
+  if (!ok)
+    VSPH_FAIL(VSPH_ENOMEM, "cannot grow a particle set to %zu particles", cap);
+  p->cap = cap;
+  return VSPH_OK;
+}
+
 void vsph_particles_free(struct vsph_particles *p) {
   if (!p) return;
   for (int k = 0; k < 3; k++) {

@@ -28,6 +28,11 @@ struct vsph_particles {
  *  all fields zero, n = 0. Returns NULL (after reporting) on failure. */
 struct vsph_particles *vsph_particles_alloc(size_t cap, int dim);
 
+/** @brief Room for at least @p cap particles, the n live ones kept (a
+ *  smaller @p cap is a no-op). @return VSPH_OK or VSPH_ENOMEM (reported;
+ *  the set is unchanged in size and still valid). */
+int vsph_particles_reserve(struct vsph_particles *p, size_t cap);
+
 /** @brief Free a set; NULL is a no-op. */
 void vsph_particles_free(struct vsph_particles *p);
 

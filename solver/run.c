@@ -102,11 +102,14 @@ static int check_cost(const struct vsph_run_props *rp,
   const double dx = sc->ref_length / (double)rp->res, h = rp->hdx * dx;
   const double n =
       sc->type->area * pow((double)rp->res, sc->dim) + 4.0 * (double)rp->res;
-  /* the lattice the scene lays, then the integrator's copy */
-  const double bytes =
-      n * (double)((3 * sc->dim + 6) * sizeof(double)) +
-      vsph_integrate_bytes_estimate(sc->dim, n, sc->walls.n > 0,
-                                    rp->form == VSPH_VISCOUS_PVWF);
+  /* ghosts: a layer of reach/dx + 1 particles along each wall, over at
+   * most twice the fluid's side (n^((d-1)/d)), corners included */
+  const double layers = ceil(rp->ktype->kappa * rp->hdx) + 1.0;
+  const double ghosts =
+      sc->walls.n * layers * 2.0 * pow(n, (sc->dim - 1.0) / sc->dim);
+  /* the lattice the scene lays, which the integrator takes */
+  const double bytes = vsph_integrate_bytes_estimate(
+      sc->dim, n, ghosts, rp->form == VSPH_VISCOUS_PVWF);
   const double gib = bytes / (1024.0 * 1024.0 * 1024.0);
   if (gib > rp->max_memory)
     VSPH_FAIL(VSPH_EINVAL,

@@ -162,26 +162,38 @@ VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
   struct vsph_pair_iter it;
   struct vsph_pair_chunk bt;
   vsph_pair_begin(&it, pk, p, rg, i);
+  /* the sums as scalars, one per entry (dim^2 of the nine are used), so
+   * the loop reduces them lane by lane (as the right-hand side does) */
+  double B0 = 0, B1 = 0, B2 = 0, B3 = 0, B4 = 0, B5 = 0, B6 = 0, B7 = 0, B8 = 0;
+  double M0 = 0, M1 = 0, M2 = 0, M3 = 0, M4 = 0, M5 = 0, M6 = 0, M7 = 0, M8 = 0;
+  const int dd = dim * dim;
   while (vsph_pair_gather(&it, dim, kid, &bt)) {
     const size_t m = bt.m;
-    double sB[9][VSPH_PAIR_CHUNK_MAX], sM[9][VSPH_PAIR_CHUNK_MAX];
-#pragma omp simd
-    for (size_t k = 0; k < m; k++) { /* the pairs' shares */
+#pragma omp simd reduction(+ : B0, B1, B2, B3, B4, B5, B6, B7, B8, M0, M1, \
+                               M2, M3, M4, M5, M6, M7, M8)
+    for (size_t k = 0; k < m; k++) {
       struct vsph_pair pr;
       vsph_pair_at(&bt, k, dim, &pr);
       double du[3], bB[9], bM[9];
       for (int a = 0; a < dim; a++) du[a] = p->vel[a][pr.j] - ui[a];
       vsph_pair_pvwf_grad(&pr, dim, du, bB, bM);
-      for (int e = 0; e < dim * dim; e++) {
-        sB[e][k] = bB[e];
-        sM[e][k] = bM[e];
+      B0 += bB[0];
+      M0 += bM[0];
+      if (dd > 1) {
+        B1 += bB[1], B2 += bB[2], B3 += bB[3];
+        M1 += bM[1], M2 += bM[2], M3 += bM[3];
+      }
+      if (dd > 4) {
+        B4 += bB[4], B5 += bB[5], B6 += bB[6], B7 += bB[7], B8 += bB[8];
+        M4 += bM[4], M5 += bM[5], M6 += bM[6], M7 += bM[7], M8 += bM[8];
       }
     }
-    for (size_t k = 0; k < m; k++) /* summed in neighbour order */
-      for (int e = 0; e < dim * dim; e++) {
-        B[e] += sB[e][k];
-        Mg[e] += sM[e][k];
-      }
+  }
+  const double Bs[9] = {B0, B1, B2, B3, B4, B5, B6, B7, B8},
+               Ms[9] = {M0, M1, M2, M3, M4, M5, M6, M7, M8};
+  for (int e = 0; e < dd; e++) {
+    B[e] = Bs[e];
+    Mg[e] = Ms[e];
   }
   ws->fallback[i] = !invert_sym(dim, B, L, vp->det_tol);
   if (ws->fallback[i])

@@ -50,6 +50,28 @@ static void mirror(const struct vsph_walls *w, struct vsph_particles *p,
   p->vol[i] = p->m[i] / p->rho[i];
 }
 
+/* The planes within reach of fluid particle s, as a bit mask. */
+static unsigned near_planes(const struct vsph_walls *w,
+                            const struct vsph_particles *p, size_t s,
+                            double reach) {
+  unsigned near = 0;
+  for (int q = 0; q < w->n; q++) {
+    const double dist = w->side[q] * (p->pos[w->axis[q]][s] - w->pos[q]);
+    if (dist < reach) near |= 1u << q;
+  }
+  return near;
+}
+
+size_t vsph_walls_count(const struct vsph_walls *w,
+                        const struct vsph_particles *p, size_t n_fluid,
+                        double reach) {
+  size_t n = 0;
+  for (size_t i = 0; i < p->n; i++)
+    if (p->id[i] < n_fluid) /* a non-empty subset of the near planes each */
+      n += (1u << __builtin_popcount(near_planes(w, p, i, reach))) - 1;
+  return n;
+}
+
 int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
                         size_t n_fluid, double reach,
                         struct vsph_walls_ghosts *gh) {
@@ -75,11 +97,7 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
   p->n = n;
   gh->n = 0;
   for (size_t s = 0; s < n_fluid; s++) {
-    unsigned near = 0;
-    for (int q = 0; q < w->n; q++) {
-      const double dist = w->side[q] * (p->pos[w->axis[q]][s] - w->pos[q]);
-      if (dist < reach) near |= 1u << q;
-    }
+    const unsigned near = near_planes(w, p, s, reach);
     /* every non-empty subset of the near planes: images and corner images */
     for (unsigned mask = near; mask; mask = (mask - 1) & near) {
       if (gh->n >= gh->cap || p->n >= p->cap)

@@ -28,7 +28,7 @@ struct vsph_walls {
   double rho0, c0;            /*!< state equation for the ghost density */
 };
 
-/** Ghost bookkeeping, owned by the caller (sized for the worst case). */
+/** Ghost bookkeeping, owned by the caller (sized by vsph_walls_count). */
 struct vsph_walls_ghosts {
   size_t cap;     /*!< capacity */
   size_t n;       /*!< ghosts made by the last _generate */
@@ -41,6 +41,11 @@ struct vsph_walls_ghosts *vsph_walls_ghosts_alloc(size_t cap);
 
 /** @brief Free; NULL is a no-op. */
 void vsph_walls_ghosts_free(struct vsph_walls_ghosts *gh);
+
+/** @brief How many ghosts vsph_walls_generate would make now. */
+size_t vsph_walls_count(const struct vsph_walls *w,
+                        const struct vsph_particles *p, size_t n_fluid,
+                        double reach);
 
 /** @brief Drop the ghosts (ids >= n_fluid) and append fresh images of
  *  every fluid particle within @p reach of a wall.

@@ -227,14 +227,50 @@ START_TEST(test_run_outputs) {
   vsph_test_slurp(path, js, sizeof js);
   cJSON *j = cJSON_Parse(js);
   ck_assert_ptr_nonnull(j);
-  const char *keys[] = {"version", "scene",       "visc",
-                        "kernel",  "n_particles", "steps",
-                        "wall_s",  "pairs_per_s", "status"};
+  const char *keys[] = {"version",
+                        "scene",
+                        "visc",
+                        "kernel",
+                        "n_particles",
+                        "steps",
+                        "wall_s",
+                        "cpu_s",
+                        "load_average_start",
+                        "load_average_end",
+                        "peak_rss_bytes",
+                        "pairs_per_s",
+                        "status"};
   for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
     ck_assert_msg(cJSON_HasObjectItem(j, keys[i]), "missing %s", keys[i]);
   ck_assert_str_eq(cJSON_GetObjectItem(j, "status")->valuestring, "ok");
   ck_assert_int_eq(cJSON_GetObjectItem(j, "n_particles")->valueint, 144);
+  /* the process's peak memory holds at least the integrator's buffers */
+  ck_assert_double_ge(cJSON_GetObjectItem(j, "peak_rss_bytes")->valuedouble,
+                      cJSON_GetObjectItem(j, "memory_bytes")->valuedouble);
+  ck_assert_int_eq(
+      cJSON_GetArraySize(cJSON_GetObjectItem(j, "load_average_start")), 3);
   cJSON_Delete(j);
+
+  /* the OpenMP wait policy: passive unless the environment says otherwise
+   * (vsph sets it and starts itself again before libgomp reads it) */
+  const char *policy[2][2] = {{"unset OMP_WAIT_POLICY;", "passive"},
+                              {"export OMP_WAIT_POLICY=active;", "active"}};
+  for (int k = 0; k < 2; k++) {
+    char script[1024];
+    snprintf(script, sizeof script,
+             "%s exec \"$VSPH_BIN\" run stretching-square --res 8 --t-end "
+             "0.005 --out %s/w%d --set Solver:snapshots=0 --quiet",
+             policy[k][0], dir, k);
+    o = vsph_test_shell(script);
+    ck_assert_msg(o->status == 0, "run failed: %s", o->err);
+    snprintf(path, sizeof path, "%s/w%d/run.json", dir, k);
+    vsph_test_slurp(path, js, sizeof js);
+    j = cJSON_Parse(js);
+    ck_assert_ptr_nonnull(j);
+    ck_assert_str_eq(cJSON_GetObjectItem(j, "omp_wait_policy")->valuestring,
+                     policy[k][1]);
+    cJSON_Delete(j);
+  }
 
   snprintf(args, sizeof args,
            "run vortex-patch --res 16 --cfl 4 --t-end 10 --out %s/bad "

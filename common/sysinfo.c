@@ -1,0 +1,43 @@
+#include "sysinfo.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+void vsph_sysinfo_load(double la[3]) {
+  la[0] = la[1] = la[2] = (double)NAN;
+  FILE *f = fopen("/proc/loadavg", "r"); /* size 0 to stat: read a line */
+  if (!f) return;
+  char line[128];
+  if (fgets(line, sizeof line, f) &&
+      sscanf(line, "%lf %lf %lf", &la[0], &la[1], &la[2]) != 3)
+    la[0] = la[1] = la[2] = (double)NAN;
+  fclose(f);
+}
+
+double vsph_sysinfo_cpu_s(void) {
+  struct timespec ts;
+  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts)) return (double)NAN;
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+const char *vsph_sysinfo_wait_policy(void) {
+  const char *w = getenv("OMP_WAIT_POLICY");
+  return w && *w ? w : "unset";
+}
+
+size_t vsph_sysinfo_peak_rss(void) {
+  FILE *f = fopen("/proc/self/status", "r");
+  if (!f) return 0;
+  char line[256];
+  size_t kb = 0;
+  while (fgets(line, sizeof line, f))
+    if (!strncmp(line, "VmHWM:", 6)) {
+      kb = (size_t)strtoull(line + 6, NULL, 10);
+      break;
+    }
+  fclose(f);
+  return kb * 1024;
+}

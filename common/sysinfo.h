@@ -1,0 +1,28 @@
+#ifndef VSPH_COMMON_SYSINFO_H
+#define VSPH_COMMON_SYSINFO_H
+
+/** @file sysinfo.h
+ *  @brief What a timing needs beside it to be read fairly on a shared
+ *  machine: the load average, the process's CPU time, the OpenMP wait
+ *  policy in force, the peak resident memory. Linux (/proc); elsewhere the
+ *  figures are NaN or 0 and the timings still run. */
+
+#include <stddef.h>
+
+/** @brief The 1, 5 and 15 minute load averages into @p la (NaN if
+ *  /proc/loadavg cannot be read). */
+void vsph_sysinfo_load(double la[3]);
+
+/** @brief CPU time of this process so far, all threads (s). */
+double vsph_sysinfo_cpu_s(void);
+
+/** @brief The OMP_WAIT_POLICY this process runs under ("passive", as the
+ *  vsph program sets it unless the environment says otherwise; "unset"
+ *  for a program that did not, such as the test runner). */
+const char *vsph_sysinfo_wait_policy(void);
+
+/** @brief Peak resident memory of this process so far (bytes; 0 if
+ *  unknown). */
+size_t vsph_sysinfo_peak_rss(void);
+
+#endif /* VSPH_COMMON_SYSINFO_H */
