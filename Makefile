@@ -85,7 +85,7 @@ $(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
 check: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph $(BUILD)/check_vsph
 	@$(MAKE) --no-print-directory prefix-check format-check
-	VSPH_BIN=$(BUILD)/vsph OMP_NUM_THREADS=2 OMP_WAIT_POLICY=passive \
+	VSPH_BIN=$(BUILD)/vsph OMP_NUM_THREADS=2 GOMP_SPINCOUNT=1000 \
 	  $(BUILD)/check_vsph
 
 test: check
@@ -149,12 +149,14 @@ valgrind-check: deps
 	  valgrind --error-exitcode=1 --leak-check=full $(BUILD)/check_vsph
 
 # REBOUND-style name rule: every defined global symbol of <dir>/<file>.o
-# starts with vsph_<file>_ (main excepted in cli/main.o).
+# starts with vsph_<file>_ (main excepted in cli/main.o; a named OpenMP
+# critical section's lock, .gomp_critical_user_NAME, follows the rule by
+# its NAME).
 prefix-check: $(LIB_OBJ) $(CLI_OBJ)
 	@bad=0; for o in $(LIB_OBJ) $(CLI_OBJ); do \
 	  base=$$(basename $$o .o); \
 	  for s in $$(nm -g --defined-only $$o | awk '{print $$3}'); do \
-	    case $$s in vsph_$${base}_*) ;; main) [ $$base = main ] || { echo "$$o: $$s"; bad=1; } ;; \
+	    case $$s in vsph_$${base}_*|.gomp_critical_user_vsph_$${base}_*) ;; main) [ $$base = main ] || { echo "$$o: $$s"; bad=1; } ;; \
 	      *) echo "prefix-check: $$o exports $$s (want vsph_$${base}_*)"; bad=1 ;; esac; \
 	  done; \
 	done; [ $$bad -eq 0 ] && echo "prefix-check: ok"

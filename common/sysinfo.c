@@ -24,8 +24,17 @@ double vsph_sysinfo_cpu_s(void) {
 }
 
 const char *vsph_sysinfo_wait_policy(void) {
-  const char *w = getenv("OMP_WAIT_POLICY");
-  return w && *w ? w : "unset";
+  static char buf[128];
+  const char *w = getenv("OMP_WAIT_POLICY"), *c = getenv("GOMP_SPINCOUNT");
+  if (w && c)
+    snprintf(buf, sizeof buf, "OMP_WAIT_POLICY=%.40s GOMP_SPINCOUNT=%.40s", w,
+             c);
+  else if (w || c)
+    snprintf(buf, sizeof buf, "%s=%.40s",
+             w ? "OMP_WAIT_POLICY" : "GOMP_SPINCOUNT", w ? w : c);
+  else
+    snprintf(buf, sizeof buf, "libgomp default");
+  return buf;
 }
 
 size_t vsph_sysinfo_peak_rss(void) {

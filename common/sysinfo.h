@@ -16,9 +16,10 @@ void vsph_sysinfo_load(double la[3]);
 /** @brief CPU time of this process so far, all threads (s). */
 double vsph_sysinfo_cpu_s(void);
 
-/** @brief The OMP_WAIT_POLICY this process runs under ("passive", as the
- *  vsph program sets it unless the environment says otherwise; "unset"
- *  for a program that did not, such as the test runner). */
+/** @brief The OpenMP wait policy this process runs under, as the
+ *  environment gives it: "GOMP_SPINCOUNT=1000" (what the vsph program
+ *  sets unless told otherwise), "OMP_WAIT_POLICY=...", both, or "libgomp
+ *  default". */
 const char *vsph_sysinfo_wait_policy(void);
 
 /** @brief Peak resident memory of this process so far (bytes; 0 if

@@ -67,7 +67,10 @@ static int write_run_json(const struct vsph_run *run,
   cJSON_AddNumberToObject(o, "t_end", run->t_end);
   cJSON_AddNumberToObject(o, "t", res->t);
   cJSON_AddNumberToObject(o, "steps", (double)res->steps);
-  cJSON_AddNumberToObject(o, "threads", omp_get_max_threads());
+  /* the threads its loops had: one inside another parallel region (the
+   * report runs two at a time) */
+  cJSON_AddNumberToObject(o, "threads",
+                          omp_in_parallel() ? 1 : omp_get_max_threads());
   cJSON_AddNumberToObject(o, "wall_s", res->wall_s);
   /* a timing is read beside the machine's state: CPU time (all threads),
    * the load averages before and after, the OpenMP wait policy */

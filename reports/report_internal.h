@@ -116,6 +116,17 @@ int vsph_report_runs_get(struct vsph_report *R,
                          const struct vsph_report_runspec *rs,
                          struct vsph_report_run *out);
 
+/* Make sure the @p n runs of @p specs exist, running the missing ones two
+ * at a time (one thread each), the costliest first: a part calls it with
+ * every run it will read, then reads them with vsph_report_runs_get. */
+int vsph_report_runs_prefetch(struct vsph_report *R,
+                              const struct vsph_report_runspec *specs,
+                              size_t n);
+
+/* The same for every run of the three ladders (scenes, convergence,
+ * speed and claims read them). */
+int vsph_report_runs_prefetch_ladders(struct vsph_report *R);
+
 /* Free a run's loaded data. */
 void vsph_report_runs_free(struct vsph_report_run *r);
 

@@ -3,6 +3,7 @@
  * repeated), the error measures the parts share, the stretching square's
  * Richardson reference, and the regression baseline. */
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -103,54 +104,129 @@ static size_t settings(const struct vsph_report_runspec *rs, int snaps,
   return n;
 }
 
+/* The run folder and cache key of a spec. */
+static size_t run_key(const struct vsph_report *R,
+                      const struct vsph_report_runspec *rs, char *dir,
+                      size_t ndir, char set[16][128], size_t *nset, char *key,
+                      size_t nkey) {
+  snprintf(dir, ndir, "%s/runs/%s-%s-%zu%s%s", R->dir, rs->scene, rs->visc,
+           rs->res, rs->tag ? "-" : "", rs->tag ? rs->tag : "");
+  /* the vortex patch's ladder keeps snapshots for the u_theta profiles */
+  const int snaps = !strcmp(rs->scene, "vortex-patch") && !rs->tag ? 4 : 0;
+  *nset = settings(rs, snaps, set, 16);
+  int len = snprintf(key, nkey, "vsph %s %s\nscene %s\n", VSPH_VERSION,
+                     vsph_source_hash_id, rs->scene);
+  for (size_t k = 0; k < *nset && len < (int)nkey; k++)
+    len += snprintf(key + len, nkey - (size_t)len, "%s\n", set[k]);
+  return (size_t)len;
+}
+
+/* The run of @p rs in its folder: reused when its key.txt matches, else
+ * run (io/rundir) and the key written last, so a half-finished run never
+ * matches. Safe to call from several threads for different specs. */
+static int ensure(const struct vsph_report *R,
+                  const struct vsph_report_runspec *rs) {
+  char dir[512], set[16][128], key[2600];
+  size_t nset;
+  run_key(R, rs, dir, sizeof dir, set, &nset, key, sizeof key);
+  char path[600];
+  snprintf(path, sizeof path, "%s/key.txt", dir);
+  char *old = vsph_files_slurp(path, NULL);
+  const int hit = old && !strcmp(old, key);
+  free(old);
+  if (hit) return VSPH_OK;
+  struct vsph_params *prm = vsph_params_alloc();
+  if (!prm) return VSPH_ENOMEM;
+  int st = VSPH_OK;
+  for (size_t k = 0; k < nset && !st; k++) {
+    char *eq = strchr(set[k], '=');
+    if (!eq) {
+      vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                         "setting '%s' lacks '='", set[k]);
+      st = VSPH_EINVAL;
+      break;
+    }
+    *eq = '\0';
+    st = vsph_params_set(prm, set[k], eq + 1);
+  }
+  remove(path); /* a half-finished run never matches */
+  const struct vsph_rundir_opts opts = {
+      .dir = dir, .progress = NULL, .stop = R->stop};
+  struct vsph_rundir_result rr;
+  if (!st) st = vsph_rundir_execute(prm, rs->scene, &opts, &rr);
+  vsph_params_free(prm);
+  if (st) return st;
+  if ((st = vsph_files_mkdir(dir))) return st;
+  return vsph_files_write(dir, "key.txt", key);
+}
+
+/* Cost of a run, for the order of a prefetch: particles^(1 + 1/d) times
+ * the end time (steps grow with the resolution), the largest first. */
+static double run_cost(const struct vsph_report_runspec *rs) {
+  const double r = (double)rs->res;
+  return r * r * r * rs->t_end;
+}
+static int by_cost(const void *a, const void *b) {
+  const double x = run_cost(*(const struct vsph_report_runspec *const *)a),
+               y = run_cost(*(const struct vsph_report_runspec *const *)b);
+  return (x < y) - (x > y);
+}
+
+int vsph_report_runs_prefetch(struct vsph_report *R,
+                              const struct vsph_report_runspec *specs,
+                              size_t n) {
+  const struct vsph_report_runspec **order = malloc(n * sizeof *order);
+  if (!order) VSPH_FAIL(VSPH_ENOMEM, "cannot order %zu runs", n);
+  for (size_t k = 0; k < n; k++) order[k] = &specs[k];
+  qsort(order, n, sizeof *order, by_cost);
+  int st = VSPH_OK;
+  /* one run per thread, each run's own loops on one thread (nested
+   * regions are inactive): the runs are independent, and a run's results
+   * do not depend on its thread count, so this changes only the time */
+#pragma omp parallel for schedule(dynamic, 1)
+  for (size_t k = 0; k < n; k++) {
+    int failed;
+#pragma omp critical(vsph_report_runs_prefetch)
+    failed = st;
+    if (failed) continue;
+    omp_set_num_threads(1); /* this thread's nested regions: itself alone */
+    const int s = ensure(R, order[k]);
+    if (s) {
+#pragma omp critical(vsph_report_runs_prefetch)
+      if (!st) st = s;
+    }
+  }
+  free(order);
+  return st;
+}
+
+int vsph_report_runs_prefetch_ladders(struct vsph_report *R) {
+  enum {
+    N = VSPH_REPORT_NSCENES * VSPH_VISCOUS_FORM_COUNT * VSPH_REPORT_LADDER
+  };
+  struct vsph_report_runspec specs[N];
+  size_t n = 0;
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++) {
+    const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+    for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
+      for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
+        const struct vsph_report_runspec rs = {
+            L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
+        specs[n++] = rs;
+      }
+  }
+  return vsph_report_runs_prefetch(R, specs, n);
+}
+
 int vsph_report_runs_get(struct vsph_report *R,
                          const struct vsph_report_runspec *rs,
                          struct vsph_report_run *out) {
   memset(out, 0, sizeof *out);
-  snprintf(out->dir, sizeof out->dir, "%s/runs/%s-%s-%zu%s%s", R->dir,
-           rs->scene, rs->visc, rs->res, rs->tag ? "-" : "",
-           rs->tag ? rs->tag : "");
-  /* the vortex patch's ladder keeps snapshots for the u_theta profiles */
-  const int snaps = !strcmp(rs->scene, "vortex-patch") && !rs->tag ? 4 : 0;
-  char set[16][128];
-  const size_t nset = settings(rs, snaps, set, 16);
-  char key[2600];
-  int len = snprintf(key, sizeof key, "vsph %s %s\nscene %s\n", VSPH_VERSION,
-                     vsph_source_hash_id, rs->scene);
-  for (size_t k = 0; k < nset && len < (int)sizeof key; k++)
-    len += snprintf(key + len, sizeof key - (size_t)len, "%s\n", set[k]);
-  char path[600];
-  snprintf(path, sizeof path, "%s/key.txt", out->dir);
-  char *old = vsph_files_slurp(path, NULL);
-  const int hit = old && !strcmp(old, key);
-  free(old);
-  if (!hit) {
-    struct vsph_params *prm = vsph_params_alloc();
-    if (!prm) return VSPH_ENOMEM;
-    int st = VSPH_OK;
-    for (size_t k = 0; k < nset && !st; k++) {
-      char *eq = strchr(set[k], '=');
-      if (!eq) {
-        vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                           "setting '%s' lacks '='", set[k]);
-        st = VSPH_EINVAL;
-        break;
-      }
-      *eq = '\0';
-      st = vsph_params_set(prm, set[k], eq + 1);
-    }
-    remove(path); /* a half-finished run never matches */
-    const struct vsph_rundir_opts opts = {
-        .dir = out->dir, .progress = NULL, .stop = R->stop};
-    struct vsph_rundir_result rr;
-    if (!st) st = vsph_rundir_execute(prm, rs->scene, &opts, &rr);
-    vsph_params_free(prm);
-    if (st) return st;
-    if ((st = vsph_files_mkdir(out->dir))) return st;
-    char *slash = strrchr(path, '/');
-    if ((st = vsph_files_write(out->dir, slash + 1, key))) return st;
-  }
-  int st = load_run_json(out);
+  char set[16][128], key[2600];
+  size_t nset;
+  run_key(R, rs, out->dir, sizeof out->dir, set, &nset, key, sizeof key);
+  int st = ensure(R, rs);
+  if (!st) st = load_run_json(out);
   if (!st) st = load_energy(out);
   return st;
 }

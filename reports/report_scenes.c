@@ -236,7 +236,8 @@ static int scene(struct vsph_report *R, int sc) {
 int vsph_report_scenes_write(struct vsph_report *R) {
   vsph_text_set(&R->tv, "quick_note", "%s",
                 R->full ? "" : vsph_text_get("scenes.quick_note"));
-  int st = vsph_report_say(R, "scenes.intro");
+  int st = vsph_report_runs_prefetch_ladders(R);
+  if (!st) st = vsph_report_say(R, "scenes.intro");
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++) st = scene(R, sc);
   return st;
 }

@@ -3,6 +3,7 @@
  * speed and large time steps. A run stopped as unstable is a result. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "../common/status.h"
@@ -126,22 +127,71 @@ static int square_ladder(struct vsph_report *R) {
   return st;
 }
 
+/* Every run of the sweeps, made two at a time before the tables read
+ * them (vsph_report_runs_prefetch). */
+static int prefetch(struct vsph_report *R, const struct sweep *sws, size_t n) {
+  size_t total = 0;
+  for (size_t k = 0; k < n; k++) total += sws[k].nv * NFORM;
+  struct vsph_report_runspec *specs = calloc(total, sizeof *specs);
+  char(*sets)[128] = calloc(total, sizeof *sets);
+  char(*tags)[48] = calloc(total, sizeof *tags);
+  const char *(*extras)[2] = calloc(total, sizeof *extras);
+  int st = VSPH_OK;
+  if (!specs || !sets || !tags || !extras) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot list the sweeps");
+  }
+  size_t m = 0;
+  for (size_t k = 0; k < n && !st; k++)
+    for (size_t v = 0; v < sws[k].nv; v++)
+      for (int f = 0; f < NFORM; f++, m++) {
+        snprintf(sets[m], sizeof sets[m], "%s=%.10g", sws[k].key,
+                 sws[k].vals[v]);
+        snprintf(tags[m], sizeof tags[m], "%s%zu", sws[k].tag, v);
+        extras[m][0] = sets[m];
+        extras[m][1] = NULL;
+        const struct vsph_report_runspec rs = {
+            sws[k].scene, vsph_viscous_name(f),
+            sws[k].res,   sws[k].t_end,
+            extras[m],    tags[m]};
+        specs[m] = rs;
+      }
+  if (!st) st = vsph_report_runs_prefetch(R, specs, m);
+  free(specs);
+  free(sets);
+  free(tags);
+  free(extras);
+  return st;
+}
+
 int vsph_report_stability_write(struct vsph_report *R) {
   const size_t res = R->full ? 40 : 20;
   const char *vortex = vsph_report_runs_ladder(R, 0, 0)->scene;
   const char *wave = vsph_report_runs_ladder(R, 2, 0)->scene;
   const double tv = vsph_report_runs_ladder(R, 0, 0)->t_end;
   const double tw = vsph_report_runs_ladder(R, 2, 0)->t_end;
-  vsph_text_set(&R->tv, "res", "%zu", res);
-  int st = vsph_report_say(R, "stability.intro");
-  if (!st) st = square_ladder(R);
-  if (!st) st = vsph_report_say(R, "stability.hard");
-  static const double nus[3] = {1e-3, 1e-4, 1e-5};
-  const struct sweep nu = {vortex, res, tv,   "nu (m^2/s)", "Scene:nu",
-                           nus,    3,   "nu", NULL};
-  if (!st) st = sweep(R, &nu);
-  static const double pert[1] = {0.2};
-  for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++) {
+  /* c0 = k U_max with the vortex patch's U_max */
+  struct vsph_scene scene;
+  int st = vsph_scene_init(&scene, &vsph_vortex_patch_type, NULL);
+  if (st) return st;
+  static const double ks[4] = {10, 6, 4, 3};
+  double c0s[4] = {0};
+  for (int k = 0; k < 4; k++) c0s[k] = ks[k] * scene.U_max;
+  static const double nus[3] = {1e-3, 1e-4, 1e-5}, pert[1] = {0.2};
+  static const double cfl[6] = {1.0, 1.5, 2.0, 2.5, 3.0, 3.5};
+  /* the sweeps: nu, a perturbed lattice per scene, c0, CFL (two scenes) */
+  struct sweep sws[7] = {
+      {vortex, res, tv, "nu (m^2/s)", "Scene:nu", nus, 3, "nu", NULL},
+      {NULL},
+      {NULL},
+      {NULL},
+      {vortex, res, tv, "c0 (m/s)", "Scene:c0", c0s, 4, "c0",
+       "stability_c0.csv"},
+      {vortex, res, tv / 2, "CFL", "Solver:cfl", cfl, 6, "cfl",
+       "stability_cfl_vortex.csv"},
+      {wave, res, tw / 3, "CFL", "Solver:cfl", cfl, 6, "cfl",
+       "stability_cfl_wave.csv"}};
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++) {
     const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
     const struct sweep p = {L->scene,
                             res,
@@ -152,17 +202,15 @@ int vsph_report_stability_write(struct vsph_report *R) {
                             1,
                             "perturb",
                             NULL};
-    st = sweep(R, &p);
+    sws[1 + sc] = p;
   }
-  /* c0 = k U_max with the vortex patch's U_max */
-  struct vsph_scene scene;
-  if (!st) st = vsph_scene_init(&scene, &vsph_vortex_patch_type, NULL);
-  static const double ks[4] = {10, 6, 4, 3};
-  double c0s[4] = {0};
-  for (int k = 0; k < 4 && !st; k++) c0s[k] = ks[k] * scene.U_max;
-  const struct sweep c0 = {vortex, res, tv,   "c0 (m/s)",        "Scene:c0",
-                           c0s,    4,   "c0", "stability_c0.csv"};
-  if (!st) st = sweep(R, &c0);
+  vsph_text_set(&R->tv, "res", "%zu", res);
+  st = vsph_report_say(R, "stability.intro");
+  if (!st) st = prefetch(R, sws, sizeof sws / sizeof sws[0]);
+  if (!st) st = square_ladder(R);
+  if (!st) st = vsph_report_say(R, "stability.hard");
+  for (int k = 0; k < 4 && !st; k++) st = sweep(R, &sws[k]); /* nu, shift */
+  if (!st) st = sweep(R, &sws[4]);                           /* c0 */
   if (!st) {
     vsph_text_set(&R->tv, "U_max", "%.4f", scene.U_max);
     vsph_text_set(&R->tv, "c0", "%.4f", scene.c0);
@@ -173,15 +221,8 @@ int vsph_report_stability_write(struct vsph_report *R) {
                        "Vortex patch: stability against the sound speed",
                        "sound speed c0 (m/s)");
   if (!st) st = vsph_report_say(R, "stability.cfl");
-  static const double cfl[6] = {1.0, 1.5, 2.0, 2.5, 3.0, 3.5};
-  const struct sweep cv = {vortex, res,          tv / 2,
-                           "CFL",  "Solver:cfl", cfl,
-                           6,      "cfl",        "stability_cfl_vortex.csv"};
-  const struct sweep cw = {wave,  res,          tw / 3,
-                           "CFL", "Solver:cfl", cfl,
-                           6,     "cfl",        "stability_cfl_wave.csv"};
-  if (!st) st = sweep(R, &cv);
-  if (!st) st = sweep(R, &cw);
+  if (!st) st = sweep(R, &sws[5]);
+  if (!st) st = sweep(R, &sws[6]);
   if (!st)
     st = stability_map(R, "stability_cfl_vortex.csv", "fig_stability_cfl",
                        "Vortex patch: stability against the CFL number",

@@ -37,6 +37,9 @@ struct vsph_poisson *vsph_poisson_alloc(size_t n, double side) {
   const int dims[2] = {(int)n, (int)n}, embed[2] = {(int)n + 2, (int)n + 2};
   const fftw_r2r_kind kinds[2] = {FFTW_RODFT00, FFTW_RODFT00};
   double *in = ps->sol + (n + 2) + 1;
+  /* FFTW's planner is not thread-safe (its execute is): the report runs
+   * scenes side by side */
+#pragma omp critical(vsph_poisson_fftw_planner)
   ps->plan = fftw_plan_many_r2r(2, dims, 1, in, embed, 1, 0, in, embed, 1, 0,
                                 kinds, FFTW_ESTIMATE);
   if (!ps->plan) {
@@ -59,7 +62,10 @@ fail:
 
 void vsph_poisson_free(struct vsph_poisson *ps) {
   if (!ps) return;
-  if (ps->plan) fftw_destroy_plan(ps->plan);
+  if (ps->plan) {
+#pragma omp critical(vsph_poisson_fftw_planner)
+    fftw_destroy_plan(ps->plan);
+  }
   fftw_free(ps->sol);
   free(ps->lam);
   free(ps);
