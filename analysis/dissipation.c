@@ -48,6 +48,7 @@ struct raw {
   double mu;
   double perturb;
   size_t seed;
+  double angle;
   double epsrel;
   double max_memory;
 };
@@ -70,6 +71,9 @@ static const struct vsph_params_spec DISSIPATION[] = {
                           "random shift of the lattice, fraction of dx"),
     VSPH_PARAMS_INT_SPEC(P, seed, VSPH_CONSTS_SEED, 0, 4294967295.0,
                          "seed of that shift (mt19937)"),
+    VSPH_PARAMS_REAL_SPEC(P, angle, 0.0, -180.0, 180.0,
+                          "strain only: angle of its axes to the lattice "
+                          "(degrees; 0: u = A(x, -y), 45: pure shear)"),
     VSPH_PARAMS_REAL_SPEC(P, epsrel, 1e-10, 1e-13, 1e-3,
                           "relative accuracy of the exact integrals"),
     VSPH_PARAMS_REAL_SPEC(P, max_memory, VSPH_CONSTS_MAX_MEMORY, 1e-3, 4096,
@@ -99,6 +103,9 @@ int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
     VSPH_FAIL(VSPH_EINVAL, "unknown field '%s' (rotation, strain, mixed)",
               r.field);
   if ((st = vsph_fields_props_init(&dp->field, fk, 2))) return st;
+  if (r.angle != 0.0 && fk != VSPH_FIELDS_STRAIN)
+    VSPH_FAIL(VSPH_EINVAL, "angle applies to the strain field only");
+  dp->field.theta = r.angle * VSPH_PI / 180.0;
   const int sh = vsph_dissipation_shape_find(r.shape);
   if (sh < 0)
     VSPH_FAIL(VSPH_EINVAL, "unknown shape '%s' (disc, square)", r.shape);

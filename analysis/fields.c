@@ -67,6 +67,17 @@ void vsph_fields_eval(const struct vsph_fields_props *fp, const double x[3],
         grad[0] = fp->A;
         break;
       }
+      if (fp->theta != 0.0) { /* axes turned by theta */
+        const double c = fp->A * cos(2.0 * fp->theta);
+        const double s = fp->A * sin(2.0 * fp->theta);
+        u[0] = c * x[0] + s * x[n];
+        u[n] = s * x[0] - c * x[n];
+        grad[0] = c;
+        grad[0 * d + n] = s;
+        grad[n * d + 0] = s;
+        grad[n * d + n] = -c;
+        break;
+      }
       u[0] = fp->A * x[0];
       u[n] = -fp->A * x[n];
       grad[0] = fp->A;

@@ -25,6 +25,9 @@ struct vsph_fields_props {
   double Omega;               /*!< rotation rate (1/s) */
   double U;                   /*!< Taylor-Green amplitude (m/s), mixed */
   double k;                   /*!< Taylor-Green wavenumber (1/m), mixed */
+  double theta;               /*!< strain: its axes turned by theta (rad)
+                                   in the plane, u = A (x cos 2t + y sin 2t,
+                                   x sin 2t - y cos 2t); 0: the paper's */
   double c[6];                /*!< quadratic: u = (c0 x^2 + c1 xy + c2 y^2,
                                    c3 x^2 + c4 xy + c5 y^2) (1/(m s)) */
 };

@@ -267,3 +267,15 @@ int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
   }
   return VSPH_OK;
 }
+
+int vsph_references_scene_mech(struct vsph_references_scene *r, double t,
+                               double *Em, double *dEm_dt) {
+  const struct vsph_scene *sc = r->scene;
+  if (sc->type != &vsph_standing_wave_type)
+    return vsph_references_scene_eval(r, t, Em, dEm_dt);
+  const struct vsph_scene_wave *w = &sc->u.wave;
+  const double gam = 4.0 * w->nu * w->k * w->k;
+  *Em = sc->rho0 * sc->g * w->A * w->A * sc->ref_length / 4.0 * exp(-gam * t);
+  *dEm_dt = -gam * *Em;
+  return VSPH_OK;
+}

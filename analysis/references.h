@@ -93,4 +93,15 @@ void vsph_references_scene_free(struct vsph_references_scene *r);
 int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
                                double *Ek, double *dEk_dt);
 
+/** @brief The reference's mechanical (wave) energy E_m(t) and its rate
+ *  dE_m/dt, which the viscous power must match (NaN where none). Standing
+ *  wave: Lighthill's phase-free envelope E_m = (rho g A^2 L / 4)
+ *  exp(-4 nu k^2 t), dE_m/dt = -4 nu k^2 E_m, the energy the wave has left
+ *  whatever its phase; vortex patch: its E_k (its body-force potential
+ *  energy stays constant while the disc stays round); stretching square:
+ *  t = 0 only (E_k and the exact viscous power).
+ *  @return VSPH_OK or VSPH_ELIB. */
+int vsph_references_scene_mech(struct vsph_references_scene *r, double t,
+                               double *Em, double *dEm_dt);
+
 #endif /* VSPH_ANALYSIS_REFERENCES_H */

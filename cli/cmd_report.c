@@ -23,7 +23,9 @@ int vsph_cmd_report_main(int argc, char **argv) {
       {"--out", VSPH_ARGS_STRING, &dir, "DIR",
        "output folder (default reports/out)"},
       {"--only", VSPH_ARGS_STRING, &only, "P[,P]",
-       "only these parts (see below); report.md gathers every part present"},
+       "only these parts (see below); report.md gathers every part "
+       "present; PART:SCENE (scenes, convergence, speed) limits those parts "
+       "to one scene, e.g. scenes:vortex-patch"},
       {"--full", VSPH_ARGS_FLAG, &full, NULL,
        "the paper's resolutions and end times (hours)"}};
   char about[2048];
@@ -60,6 +62,26 @@ int vsph_cmd_report_main(int argc, char **argv) {
       return vsph_args_fail(CMD, "--only: '%.40s...' is too long", only);
     snprintf(buf, sizeof buf, "%s", only);
     for (char *tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
+      char *colon = strchr(tok, ':');
+      if (colon) { /* PART:SCENE limits the scene-wise parts */
+        *colon = '\0';
+        size_t s = 0;
+        while (vsph_report_scene_name(s) &&
+               strcmp(vsph_report_scene_name(s), colon + 1))
+          s++;
+        if (!vsph_report_scene_name(s))
+          return vsph_args_fail(CMD,
+                                "unknown scene '%s' in --only (vortex-patch, "
+                                "stretching-square, standing-wave)",
+                                colon + 1);
+        if (strcmp(tok, "scenes") && strcmp(tok, "convergence") &&
+            strcmp(tok, "speed"))
+          return vsph_args_fail(CMD,
+                                "--only %s:%s: only scenes, convergence and "
+                                "speed take a scene",
+                                tok, colon + 1);
+        rp.scenes |= 1u << s;
+      }
       const int p = vsph_report_part_find(tok);
       if (p < 0)
         return vsph_args_fail(CMD, "unknown part '%s' (see --help)", tok);

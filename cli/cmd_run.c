@@ -23,8 +23,9 @@ static const char ABOUT[] =
     "unknown key is an error and nothing is written. Writes to DIR (default\n"
     "runs/SCENE-VISC-RES):\n"
     "  energy.csv          t, Ek, Ep, Ec, P_visc, P_delta, residual, Px,\n"
-    "                      Py, Lz, dEk_dt, Ek_ref, dEk_ref (one row per\n"
-    "                      output, flushed as written)\n"
+    "                      Py, Lz, dEk_dt, Ek_ref, dEk_ref, Em_ref,\n"
+    "                      dEm_ref (reference wave/mechanical energy and\n"
+    "                      its rate; one row per output, flushed)\n"
     "  snap_NNNN.vtk       particle snapshots (legacy VTK), snapshots.pvd\n"
     "  used_parameters.yml every parameter, defaults filled in\n"
     "  run.json            version, scene, visc, kernel, n_particles,\n"
@@ -84,8 +85,23 @@ int vsph_cmd_run_main(int argc, char **argv) {
   }
   if (threads > 0) omp_set_num_threads((int)threads);
   catch_signals();
-  const struct vsph_rundir_opts opts = {
-      .dir = out_dir, .progress = quiet ? NULL : stderr, .stop = &stop_signal};
+  /* the command line as given, for run.json (arguments with a space or a
+   * quote are single-quoted) */
+  char command[2048];
+  size_t len = (size_t)snprintf(command, sizeof command, "vsph");
+  for (int k = 0; k < argc && len + 1 < sizeof command; k++) {
+    const int q = strpbrk(argv[k], " \t'\"") != NULL;
+    const int w = snprintf(command + len, sizeof command - len, "%s%s%s%s", " ",
+                           q ? "'" : "", argv[k], q ? "'" : "");
+    if (w < 0) break;
+    len += (size_t)w;
+  }
+  if (len >= sizeof command) len = sizeof command - 1;
+  command[len] = '\0';
+  const struct vsph_rundir_opts opts = {.dir = out_dir,
+                                        .progress = quiet ? NULL : stderr,
+                                        .stop = &stop_signal,
+                                        .command = command};
   struct vsph_rundir_result res;
   const int st = vsph_rundir_execute(prm, argv[1], &opts, &res);
   vsph_params_free(prm);

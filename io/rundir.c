@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
 
 #include "../analysis/references.h"
 #include "../common/consts.h"
@@ -48,12 +50,15 @@ static int write_used(struct vsph_params *prm, const char *dir) {
 /* run.json: the settings, the figures of the run and its status: ok,
  * unstable, interrupted, or error (a write failed: @p error says which). */
 static int write_run_json(const struct vsph_run *run,
+                          const struct vsph_rundir_opts *opts,
                           const struct vsph_rundir_result *res, double bytes,
                           const char *error) {
   const struct vsph_run_props *rp = &run->props;
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "version", VSPH_VERSION);
   cJSON_AddStringToObject(o, "source_hash", vsph_source_hash_id);
+  if (opts->command) cJSON_AddStringToObject(o, "command", opts->command);
+  cJSON_AddStringToObject(o, "date", res->started);
   cJSON_AddStringToObject(o, "scene", run->scene.type->name);
   cJSON_AddStringToObject(o, "visc", rp->visc);
   cJSON_AddStringToObject(o, "kernel", rp->kernel);
@@ -182,18 +187,19 @@ struct outputs {
 static int write_row(struct outputs *o, struct vsph_run *run,
                      struct vsph_references_scene *ref) {
   struct vsph_run_row row;
-  double Er, dEr;
+  double Er, dEr, Em, dEm;
   int st = vsph_run_row(run, &row);
   if (!st) st = vsph_references_scene_eval(ref, row.t, &Er, &dEr);
+  if (!st) st = vsph_references_scene_mech(ref, row.t, &Em, &dEm);
   if (st) return st;
   const struct vsph_equations_energy *en = &row.en;
   const struct vsph_equations_budget *b = &row.b;
   errno = 0;
   fprintf(o->csv,
           "%.10g,%.12e,%.12e,%.12e,%.12e,%.12e,%.6e,%.6e,%.6e,%.12e,"
-          "%.12e,%.12e,%.12e\n",
+          "%.12e,%.12e,%.12e,%.12e,%.12e\n",
           row.t, en->Ek, en->Ep, en->Ec, b->P_visc, b->P_delta, b->residual,
-          en->P[0], en->P[1], en->Lz, b->dEk, Er, dEr);
+          en->P[0], en->P[1], en->Lz, b->dEk, Er, dEr, Em, dEm);
   if (fflush(o->csv) != 0 || ferror(o->csv)) {
     snprintf(o->error, sizeof o->error, "cannot write %s/energy.csv: %s",
              o->dir, errno ? strerror(errno) : "write error");
@@ -220,6 +226,10 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
                      const struct vsph_rundir_opts *opts,
                      struct vsph_rundir_result *res) {
   FILE *progress = opts->progress;
+  /* on a terminal one line rewritten in place every 0.5 s; else (a log) a
+   * line every 2 s */
+  const int tty = progress && isatty(fileno(progress));
+  const double every = tty ? 0.5 : 2.0;
   vsph_sysinfo_load(res->load[0]);
   const double t0 = omp_get_wtime(), c0 = vsph_sysinfo_cpu_s();
   double last = t0;
@@ -234,17 +244,20 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
     }
     if ((st = vsph_run_iterate(run))) break;
     const double now = omp_get_wtime();
-    if (progress && now - last > 2.0) {
+    if (progress && now - last > every) {
       last = now;
       const double frac = vsph_run_time(run) / run->t_end;
       fprintf(progress,
-              "vsph run: t = %.4g / %g (%.1f%%), step %zu, %.3g pairs/s, "
-              "ETA %.0f s\n",
-              vsph_run_time(run), run->t_end, 100 * frac, vsph_run_steps(run),
-              run->pairs / (now - t0),
-              (now - t0) * (1 - frac) / fmax(frac, 1e-9));
+              "%svsph run: t = %.4g / %g (%.1f%%), step %zu, %.3g pairs/s, "
+              "%.0f s elapsed, ETA %.0f s%s",
+              tty ? "\r" : "", vsph_run_time(run), run->t_end, 100 * frac,
+              vsph_run_steps(run), run->pairs / (now - t0), now - t0,
+              (now - t0) * (1 - frac) / fmax(frac, 1e-9),
+              tty ? "\033[K" : "\n");
+      fflush(progress);
     }
   }
+  if (tty && last > t0) fprintf(progress, "\n");
   res->wall_s = omp_get_wtime() - t0;
   res->cpu_s = vsph_sysinfo_cpu_s() - c0;
   vsph_sysinfo_load(res->load[1]);
@@ -255,6 +268,10 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
                         const struct vsph_rundir_opts *opts,
                         struct vsph_rundir_result *res) {
   memset(res, 0, sizeof *res);
+  const time_t now = time(NULL);
+  struct tm utc;
+  strftime(res->started, sizeof res->started, "%Y-%m-%dT%H:%M:%SZ",
+           gmtime_r(&now, &utc));
   const struct vsph_scene_type *type = vsph_scene_find(scene);
   if (!type)
     VSPH_FAIL(VSPH_EINVAL, "unknown scene '%s' (see vsph scenes)", scene);
@@ -291,7 +308,7 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   }
   fprintf(o.csv,
           "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,Ek_ref,"
-          "dEk_ref\n");
+          "dEk_ref,Em_ref,dEm_ref\n");
   if (rp.snapshots > 0 && (st = vsph_vtk_pvd_open(&o.pvd, res->dir))) goto done;
   res->n_particles = run->n_fluid;
   res->h = run->h;
@@ -331,7 +348,7 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   /* run.json last: its status says what became of the run, and a lost
    * write never ends as "ok" */
   const int js =
-      write_run_json(run, res, (double)vsph_run_bytes(run),
+      write_run_json(run, opts, res, (double)vsph_run_bytes(run),
                      st ? (o.error[0] ? o.error : "a write failed") : NULL);
   if (!st) st = js;
   if (!st && res->interrupted) st = VSPH_EINTR;

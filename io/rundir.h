@@ -24,6 +24,9 @@ struct vsph_rundir_opts {
   /** if not NULL, the run stops after the step during which *stop became
    *  non-zero (set it from a signal handler): status "interrupted" */
   const volatile sig_atomic_t *stop;
+  /** the command that asked for the run, as run.json records it; NULL:
+   *  not recorded */
+  const char *command;
 };
 
 /** What one run reports back (also written to run.json). */
@@ -41,6 +44,7 @@ struct vsph_rundir_result {
   double pairs;         /*!< interactions gathered over the run */
   double h, dx, c0, mu; /*!< resolution and physics used */
   char dir[512];        /*!< the folder written */
+  char started[32];     /*!< UTC date and time of the start (ISO 8601) */
 };
 
 /** @brief Run scene @p scene with the parameters of @p prm as @p o says.

@@ -54,6 +54,16 @@ _Static_assert(NPARTS <= 8 * sizeof(unsigned long), "part mask too narrow");
 
 size_t vsph_report_part_count(void) { return NPARTS; }
 
+const char *vsph_report_scene_name(size_t s) {
+  static const char *const names[VSPH_REPORT_NSCENES] = {
+      "vortex-patch", "stretching-square", "standing-wave"};
+  return s < VSPH_REPORT_NSCENES ? names[s] : NULL;
+}
+
+int vsph_report_scene_on(const struct vsph_report *R, int sc) {
+  return !R->scenes || (R->scenes >> sc & 1u);
+}
+
 const char *vsph_report_part_name(size_t p) {
   return p < NPARTS ? PARTS[p].name : NULL;
 }
@@ -266,6 +276,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   if (!R) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the report");
   R->dir = rp->dir;
   R->full = rp->full;
+  R->scenes = rp->scenes;
   R->stop = rp->stop;
   R->wo = gsl_integration_workspace_alloc(1000);
   R->wi = gsl_integration_workspace_alloc(1000);
@@ -285,7 +296,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
       st = run_part(R, p, parts_dir, key, &cached[p], &wall[p]);
   /* the baseline comes with the scenes part (its coarsest runs) */
   const int scenes = vsph_report_part_find("scenes");
-  if (!st && (want >> scenes & 1)) st = write_baseline(R);
+  if (!st && (want >> scenes & 1) && !R->scenes) st = write_baseline(R);
   const time_t now = time(NULL);
   char stamp[64];
   strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));

@@ -17,6 +17,9 @@ struct vsph_report_props {
   const char *dir;     /*!< output folder */
   int full;            /*!< 1: the paper's resolutions and end times */
   unsigned long parts; /*!< bit p: part p (vsph_report_part_*); 0: all */
+  unsigned scenes;     /*!< bit s: scene s of vsph_report_scene_name in the
+                            scene-wise parts (scenes, convergence, speed);
+                            0: all. The claims always read every scene. */
   /** if not NULL, a run in progress stops after the step during which
    *  *stop became non-zero, and the report returns VSPH_EINTR (the run is
    *  redone next time: it is not cached) */
@@ -34,6 +37,10 @@ const char *vsph_report_part_what(size_t p);
 
 /** @brief Part called @p name, or -1. */
 int vsph_report_part_find(const char *name);
+
+/** @brief Name of the report's scene @p s (0, 1, 2: vortex-patch,
+ *  stretching-square, standing-wave), or NULL. */
+const char *vsph_report_scene_name(size_t s);
 
 /** @brief Write the report, printing one line per part to stderr.
  *  @return VSPH_OK or the first failure (reported). */

@@ -60,8 +60,89 @@ static int scene(struct vsph_report *R, int sc) {
   return vsph_report_figure_say(R, &pl, "convergence.caption");
 }
 
+/* The vortex patch on both disc layouts: decay error and initial
+ * dissipation error against R/dx, with fitted orders. */
+static int vortex_layouts(struct vsph_report *R) {
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 0, 0);
+  static const char *const lay[2] = {"rings", "cartesian"};
+  double dx[VSPH_REPORT_LADDER], err[2][NFORM][VSPH_REPORT_LADDER];
+  double d0[2][NFORM][VSPH_REPORT_LADDER];
+  int ok[2][NFORM][VSPH_REPORT_LADDER];
+  double tu[2][NFORM][VSPH_REPORT_LADDER];
+  int st = VSPH_OK;
+  for (int l = 0; l < 2 && !st; l++)
+    for (int f = 0; f < NFORM && !st; f++)
+      for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
+        struct vsph_report_runspec rs = {L->scene,
+                                         vsph_viscous_name(f),
+                                         L->res[k],
+                                         L->t_end,
+                                         l ? vsph_report_runs_cartesian : NULL,
+                                         l ? "cartesian" : NULL};
+        struct vsph_report_run r;
+        if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+        dx[k] = 1.0 / (double)L->res[k];
+        err[l][f][k] = vsph_report_runs_error(&r, NULL);
+        d0[l][f][k] = vsph_report_runs_diss0(&r);
+        ok[l][f][k] = r.ok;
+        tu[l][f][k] = r.t_unstable;
+        vsph_report_runs_free(&r);
+      }
+  if (st) return st;
+  if ((st = vsph_report_say(R, "convergence.layout_head"))) return st;
+  struct vsph_plot pl;
+  vsph_plot_init(&pl, R->dir, "fig_convergence_vortex-layouts",
+                 "vortex-patch: initial dissipation error on rings (solid) "
+                 "and on a Cartesian disc (dashed)",
+                 "particle spacing dx / R",
+                 "|P_{visc}(0) - dE_{k,ref}/dt(0)| / |dE_{k,ref}/dt(0)|");
+  pl.logx = pl.logy = 1;
+  snprintf(pl.extra, sizeof pl.extra, "set xrange [%g:%g]\n",
+           0.8 / L->res[VSPH_REPORT_LADDER - 1], 1.25 / L->res[0]);
+  for (int l = 0; l < 2 && !st; l++)
+    for (int f = 0; f < NFORM && !st; f++) {
+      char file[96], lab[64], style[96];
+      snprintf(file, sizeof file, "convergence_vortex-patch_%s_%s.csv", lay[l],
+               vsph_viscous_name(f));
+      FILE *c = vsph_csv_open(R->dir, file,
+                              "dx,decay_error,initial_dissipation_error,"
+                              "abs_initial_dissipation_error,stable");
+      if (!c) return VSPH_EIO;
+      for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
+        fprintf(c, "%.6e,%.6e,%.6e,%.6e,%d\n", dx[k], err[l][f][k], d0[l][f][k],
+                fabs(d0[l][f][k]), ok[l][f][k]);
+        char stable[64];
+        if (ok[l][f][k])
+          snprintf(stable, sizeof stable, "yes");
+        else
+          snprintf(stable, sizeof stable, "no: stopped at t = %.3g s",
+                   tu[l][f][k]);
+        fprintf(R->md, "| %s | %s | %zu | %.3e | %+.3e | %s |\n", lay[l],
+                vsph_viscous_name(f), L->res[k], err[l][f][k], d0[l][f][k],
+                stable);
+      }
+      double a0[VSPH_REPORT_LADDER];
+      for (int k = 0; k < VSPH_REPORT_LADDER; k++) a0[k] = fabs(d0[l][f][k]);
+      fprintf(R->md, "| %s | %s | order | **%.2f** | **%.2f** | |\n", lay[l],
+              vsph_viscous_name(f),
+              vsph_scaling_slope(dx, err[l][f], VSPH_REPORT_LADDER),
+              vsph_scaling_slope(dx, a0, VSPH_REPORT_LADDER));
+      if ((st = vsph_csv_close(c, R->dir, file))) break;
+      snprintf(lab, sizeof lab, "%s, %s", vsph_viscous_label(f), lay[l]);
+      snprintf(style, sizeof style, "linespoints pt %d lw 2 lc %d%s",
+               vsph_report_runs_point(f), f + 1, l ? " dt 2" : "");
+      st = vsph_plot_add(&pl, file, "1:4", lab, style);
+    }
+  if (st) return st;
+  fprintf(R->md, "\n");
+  return vsph_report_figure_say(R, &pl, "convergence.layout_caption");
+}
+
 int vsph_report_convergence_write(struct vsph_report *R) {
-  int st = vsph_report_say(R, "convergence.intro");
-  for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++) st = scene(R, sc);
+  int st = vsph_report_runs_prefetch_ladders(R, 0);
+  if (!st) st = vsph_report_say(R, "convergence.intro");
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
+    if (vsph_report_scene_on(R, sc)) st = scene(R, sc);
+  if (!st && vsph_report_scene_on(R, 0)) st = vortex_layouts(R);
   return st;
 }

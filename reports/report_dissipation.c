@@ -205,10 +205,65 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
   return st ? st : vsph_report_say(R, "dissipation.reading");
 }
 
+/* The lattice error of pure strain against the angle of its axes to the
+ * square lattice (0: u = A(x, -y); 45 degrees: pure shear, the azimuthal
+ * shear of a disc laid in rings), each formulation, h/dx = 4/3. */
+static int angle_figure(struct vsph_report *R) {
+  enum { NANG = 19 }; /* 0, 5, ..., 90 degrees */
+  static const char *const name = "dissip_angle.csv";
+  FILE *c = vsph_csv_open(R->dir, name,
+                          "angle_deg,mgf_lattice,meaf_lattice,pvwf_lattice");
+  if (!c) return VSPH_EIO;
+  int st = VSPH_OK;
+  double at[NFORM][2]; /* at 0 and 45 degrees */
+  for (int a = 0; a < NANG && !st; a++) {
+    const double deg = 5.0 * a;
+    fprintf(c, "%g", deg);
+    for (int form = 0; form < NFORM && !st; form++) {
+      struct vsph_dissipation_props dp;
+      struct vsph_dissipation_result r;
+      st = props(&dp, form, VSPH_FIELDS_STRAIN, VSPH_DISSIPATION_SQUARE,
+                 RES_HDX, VSPH_CONSTS_HDX, 0.0);
+      dp.field.theta = deg * VSPH_PI / 180.0;
+      if (!st) st = vsph_dissipation_compute(&dp, &r);
+      if (st) break;
+      fprintf(c, ",%.6e", r.lattice_error);
+      if (a == 0) at[form][0] = r.lattice_error;
+      if (a == 9) at[form][1] = r.lattice_error;
+    }
+    fprintf(c, "\n");
+  }
+  if (st) {
+    vsph_files_discard(c, R->dir, name);
+    return st;
+  }
+  if ((st = vsph_csv_close(c, R->dir, name))) return st;
+  vsph_text_set(&R->tv, "mgf0", "%+.2f", 100 * at[VSPH_VISCOUS_MGF][0]);
+  vsph_text_set(&R->tv, "mgf45", "%+.2f", 100 * at[VSPH_VISCOUS_MGF][1]);
+  vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
+  if ((st = vsph_report_say(R, "dissipation.angle_head"))) return st;
+  struct vsph_plot pl;
+  vsph_plot_init(&pl, R->dir, "fig_dissipation_angle",
+                 "Lattice error of pure strain against the angle of its axes "
+                 "to the square lattice, h/dx = 4/3",
+                 "angle of the strain's axes to the lattice (degrees)",
+                 "lattice error (negative: more dissipation)");
+  snprintf(pl.extra, sizeof pl.extra, "set xrange [0:90]\nset xtics 0,15,90\n");
+  for (int form = 0; form < NFORM && !st; form++) {
+    char cols[16], style[64];
+    snprintf(cols, sizeof cols, "1:%d", form + 2);
+    snprintf(style, sizeof style, "linespoints pt %d lw 2 lc %d",
+             vsph_report_runs_point(form), form + 1);
+    st = vsph_plot_add(&pl, name, cols, vsph_viscous_label(form), style);
+  }
+  return st ? st : vsph_report_figure_say(R, &pl, "dissipation.angle_caption");
+}
+
 int vsph_report_dissipation_write(struct vsph_report *R) {
   struct tables tb = {0};
   int st = open_tables(R, &tb);
   if (!st) st = tables(R, &tb);
   st = close_tables(R, &tb, st);
-  return st ? st : figures(R, &tb);
+  if (!st) st = figures(R, &tb);
+  return st ? st : angle_figure(R);
 }

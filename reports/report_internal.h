@@ -50,6 +50,7 @@ struct vsph_report_claim {
 struct vsph_report {
   const char *dir; /* output folder */
   int full;        /* 1: the paper's resolutions and end times */
+  unsigned scenes; /* scene-wise parts: bit s on (0: all) */
   FILE *md;        /* the current part's Markdown */
   gsl_integration_workspace *wo, *wi; /* quadrature workspaces */
   struct vsph_report_claim *claims;   /* the claims table (growing) */
@@ -62,6 +63,9 @@ struct vsph_report {
 };
 
 /* ------------------------------------------------------ report.c helpers */
+
+/* 1 if the scene-wise parts include scene @p sc. */
+int vsph_report_scene_on(const struct vsph_report *R, int sc);
 
 /* Add a row to the claims table (copied). */
 int vsph_report_claim(struct vsph_report *R, const char *claim,
@@ -103,6 +107,7 @@ struct vsph_report_run {
   struct vsph_csv *energy; /* energy.csv */
   size_t nrow;             /* its rows; the columns: */
   const double *t, *Ek, *Pv, *res_b, *dEk, *Ekr, *dEkr;
+  const double *Ep, *Ec, *Emr, *dEmr; /* energies; reference E_m, dE_m/dt */
 };
 
 /* The ladder of scene @p sc (0..VSPH_REPORT_NSCENES-1) at the report's
@@ -123,9 +128,14 @@ int vsph_report_runs_prefetch(struct vsph_report *R,
                               const struct vsph_report_runspec *specs,
                               size_t n);
 
-/* The same for every run of the three ladders (scenes, convergence,
- * speed and claims read them). */
-int vsph_report_runs_prefetch_ladders(struct vsph_report *R);
+/* The extra settings of the vortex patch's Cartesian-disc ladder (its
+ * runs carry the tag "cartesian"). */
+extern const char *const vsph_report_runs_cartesian[2];
+
+/* The same for every run of the three ladders and the vortex patch's
+ * Cartesian ladder (scenes, convergence, speed and claims read them):
+ * those of the scenes on (vsph_report_scene_on), or all when @p all. */
+int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all);
 
 /* Free a run's loaded data. */
 void vsph_report_runs_free(struct vsph_report_run *r);
@@ -146,6 +156,14 @@ double vsph_report_runs_eref(const struct vsph_report_run *r, size_t row,
 /* Decay error max_t |E_k/E_k(0) - E_ref/E_ref(0)|. */
 double vsph_report_runs_error(const struct vsph_report_run *r,
                               const struct vsph_report_richardson *rr);
+
+/* The energy budget at row @p row (the paper's measure of damping, free of
+ * the kinetic/potential exchange's phase): the mechanical energy the run
+ * has lost, (E_k + E_p + E_c)(0) - (E_k + E_p + E_c)(t), over E_k(0),
+ * against the reference's lost share 1 - E_m(t)/E_m(0) (standing wave:
+ * Lighthill's envelope). Above 1: too much damping. NaN at t = 0 or
+ * without a reference. */
+double vsph_report_runs_loss_ratio(const struct vsph_report_run *r, size_t row);
 
 /* Initial dissipation error (P_visc(0) - dEk_ref(0)) / |dEk_ref(0)|. */
 double vsph_report_runs_diss0(const struct vsph_report_run *r);

@@ -15,6 +15,7 @@
 #include "../io/files.h"
 #include "../io/json.h"
 #include "../io/rundir.h"
+#include "../solver/scene.h"
 #include "report_internal.h"
 
 /* Resolution ladders and end times: quick (default) and full (the paper's
@@ -53,8 +54,12 @@ static int load_energy(struct vsph_report_run *r) {
   r->dEk = vsph_csv_column(e, "dEk_dt");
   r->Ekr = vsph_csv_column(e, "Ek_ref");
   r->dEkr = vsph_csv_column(e, "dEk_ref");
+  r->Ep = vsph_csv_column(e, "Ep");
+  r->Ec = vsph_csv_column(e, "Ec");
+  r->Emr = vsph_csv_column(e, "Em_ref");
+  r->dEmr = vsph_csv_column(e, "dEm_ref");
   if (!r->t || !r->Ek || !r->Pv || !r->res_b || !r->dEk || !r->Ekr ||
-      !r->dEkr || r->nrow == 0)
+      !r->dEkr || !r->Ep || !r->Ec || !r->Emr || !r->dEmr || r->nrow == 0)
     VSPH_FAIL(VSPH_EIO, "%s lacks the columns of an energy table", path);
   return VSPH_OK;
 }
@@ -121,10 +126,8 @@ static size_t run_key(const struct vsph_report *R,
   return (size_t)len;
 }
 
-/* The run of @p rs in its folder: reused when its key.txt matches, else
- * run (io/rundir) and the key written last, so a half-finished run never
- * matches. Safe to call from several threads for different specs. */
-static int ensure(const struct vsph_report *R,
+/* 1 if the run of @p rs is in the cache: its folder's key.txt matches. */
+static int cached(const struct vsph_report *R,
                   const struct vsph_report_runspec *rs) {
   char dir[512], set[16][128], key[2600];
   size_t nset;
@@ -134,7 +137,20 @@ static int ensure(const struct vsph_report *R,
   char *old = vsph_files_slurp(path, NULL);
   const int hit = old && !strcmp(old, key);
   free(old);
-  if (hit) return VSPH_OK;
+  return hit;
+}
+
+/* The run of @p rs in its folder: reused when its key.txt matches, else
+ * run (io/rundir) and the key written last, so a half-finished run never
+ * matches. Safe to call from several threads for different specs. */
+static int ensure(const struct vsph_report *R,
+                  const struct vsph_report_runspec *rs) {
+  char dir[512], set[16][128], key[2600];
+  size_t nset;
+  run_key(R, rs, dir, sizeof dir, set, &nset, key, sizeof key);
+  if (cached(R, rs)) return VSPH_OK;
+  char path[600];
+  snprintf(path, sizeof path, "%s/key.txt", dir);
   struct vsph_params *prm = vsph_params_alloc();
   if (!prm) return VSPH_ENOMEM;
   int st = VSPH_OK;
@@ -151,7 +167,13 @@ static int ensure(const struct vsph_report *R,
   }
   remove(path); /* a half-finished run never matches */
   const struct vsph_rundir_opts opts = {
-      .dir = dir, .progress = NULL, .stop = R->stop};
+      .dir = dir,
+      .progress = NULL,
+      .stop = R->stop,
+      .command = R->full ? "vsph report --full (a run of its ladders; "
+                           "settings in used_parameters.yml)"
+                         : "vsph report (a run of its ladders; settings in "
+                           "used_parameters.yml)"};
   struct vsph_rundir_result rr;
   if (!st) st = vsph_rundir_execute(prm, rs->scene, &opts, &rr);
   vsph_params_free(prm);
@@ -172,41 +194,99 @@ static int by_cost(const void *a, const void *b) {
   return (x < y) - (x > y);
 }
 
+/* "vortex-patch mgf R/dx=40 (cartesian)": a run as the progress names it. */
+static void run_label(const struct vsph_report_runspec *rs, char *buf,
+                      size_t len) {
+  const struct vsph_scene_type *t = vsph_scene_find(rs->scene);
+  snprintf(buf, len, "%s %s %s/dx=%zu%s%s%s", rs->scene, rs->visc,
+           t ? t->length_name : "res", rs->res, rs->tag ? " (" : "",
+           rs->tag ? rs->tag : "", rs->tag ? ")" : "");
+}
+
 int vsph_report_runs_prefetch(struct vsph_report *R,
                               const struct vsph_report_runspec *specs,
                               size_t n) {
   const struct vsph_report_runspec **order = malloc(n * sizeof *order);
   if (!order) VSPH_FAIL(VSPH_ENOMEM, "cannot order %zu runs", n);
-  for (size_t k = 0; k < n; k++) order[k] = &specs[k];
-  qsort(order, n, sizeof *order, by_cost);
+  size_t m = 0; /* the runs not in the cache */
+  for (size_t k = 0; k < n; k++)
+    if (!cached(R, &specs[k])) order[m++] = &specs[k];
+  qsort(order, m, sizeof *order, by_cost);
+  double cost_all = 0.0, cost_done = 0.0;
+  for (size_t k = 0; k < m; k++) cost_all += run_cost(order[k]);
+  if (m)
+    fprintf(stderr,
+            "vsph report: %zu of the %zu runs this part reads are not in "
+            "the cache; running them, two at a time\n",
+            m, n);
+  const double t0 = omp_get_wtime();
+  size_t started = 0, done = 0;
   int st = VSPH_OK;
   /* one run per thread, each run's own loops on one thread (nested
    * regions are inactive): the runs are independent, and a run's results
    * do not depend on its thread count, so this changes only the time */
 #pragma omp parallel for schedule(dynamic, 1)
-  for (size_t k = 0; k < n; k++) {
+  for (size_t k = 0; k < m; k++) {
     int failed;
+    size_t me = 0;
+    char label[160];
+    run_label(order[k], label, sizeof label);
 #pragma omp critical(vsph_report_runs_prefetch)
-    failed = st;
+    {
+      failed = st;
+      if (!failed) {
+        me = ++started;
+        fprintf(stderr, "  [%zu/%zu] %s: started (%.0f s elapsed)\n", me, m,
+                label, omp_get_wtime() - t0);
+      }
+    }
     if (failed) continue;
     omp_set_num_threads(1); /* this thread's nested regions: itself alone */
+    const double t1 = omp_get_wtime();
     const int s = ensure(R, order[k]);
-    if (s) {
 #pragma omp critical(vsph_report_runs_prefetch)
-      if (!st) st = s;
+    {
+      if (s && !st) st = s;
+      done++;
+      cost_done += run_cost(order[k]);
+      const double el = omp_get_wtime() - t0;
+      /* what is left, from the cost model of the order (particles^1.5 x
+       * end time) and the rate so far */
+      const double left = el * (cost_all - cost_done) / cost_done;
+      if (s)
+        fprintf(stderr, "  [%zu/%zu] %s: failed\n", me, m, label);
+      else
+        fprintf(stderr,
+                "  [%zu/%zu] %s: done in %.1f s; %zu of %zu done, %.0f s "
+                "elapsed, about %.0f s left\n",
+                me, m, label, omp_get_wtime() - t1, done, m, el, left);
     }
   }
   free(order);
   return st;
 }
 
-int vsph_report_runs_prefetch_ladders(struct vsph_report *R) {
+const char *const vsph_report_runs_cartesian[2] = {"Scene:layout=cartesian",
+                                                   NULL};
+
+int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all) {
   enum {
-    N = VSPH_REPORT_NSCENES * VSPH_VISCOUS_FORM_COUNT * VSPH_REPORT_LADDER
+    N = (VSPH_REPORT_NSCENES + 1) * VSPH_VISCOUS_FORM_COUNT * VSPH_REPORT_LADDER
   };
   struct vsph_report_runspec specs[N];
   size_t n = 0;
+  /* the vortex patch's ladder again on a Cartesian disc (section 6) */
+  const struct vsph_report_ladderdef *V = vsph_report_runs_ladder(R, 0, 0);
+  for (int f = 0;
+       f < VSPH_VISCOUS_FORM_COUNT && (all || vsph_report_scene_on(R, 0)); f++)
+    for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
+      const struct vsph_report_runspec rs = {
+          V->scene, vsph_viscous_name(f),       V->res[k],
+          V->t_end, vsph_report_runs_cartesian, "cartesian"};
+      specs[n++] = rs;
+    }
   for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++) {
+    if (!all && !vsph_report_scene_on(R, sc)) continue;
     const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
     for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
       for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
@@ -285,6 +365,18 @@ double vsph_report_runs_error(const struct vsph_report_run *r,
     if (isfinite(e)) err = fmax(err, fabs(r->Ek[k] / r->Ek[0] - e / e0));
   }
   return err;
+}
+
+/* Both losses are normalised by their own initial energy (the run's E_k(0),
+ * the reference's E_m(0)), as the decay error is: the weakly compressible
+ * start's O(Ma^2) offset of E_k(0) is not the formulation's doing. */
+double vsph_report_runs_loss_ratio(const struct vsph_report_run *r,
+                                   size_t row) {
+  const double lost =
+      (r->Ek[0] + r->Ep[0] + r->Ec[0]) - (r->Ek[row] + r->Ep[row] + r->Ec[row]);
+  const double lost_ref = 1.0 - r->Emr[row] / r->Emr[0];
+  return row > 0 && lost_ref != 0.0 ? (lost / r->Ek[0]) / lost_ref
+                                    : (double)NAN;
 }
 
 double vsph_report_runs_diss0(const struct vsph_report_run *r) {

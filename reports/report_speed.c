@@ -41,6 +41,7 @@ static int scene(struct vsph_report *R, int sc) {
 
 int vsph_report_speed_write(struct vsph_report *R) {
   int st = vsph_report_say(R, "speed.intro");
-  for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++) st = scene(R, sc);
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
+    if (vsph_report_scene_on(R, sc)) st = scene(R, sc);
   return st;
 }

@@ -218,3 +218,37 @@ int vsph_lattice_disc(const struct vsph_lattice_props *lp, double radius,
   *out = p;
   return VSPH_OK;
 }
+
+int vsph_lattice_disc_cartesian(const struct vsph_lattice_props *lp,
+                                double radius, size_t nacross,
+                                struct vsph_particles **out) {
+  if (lp->dim != 2) VSPH_FAIL(VSPH_EINVAL, "the disc set is 2-D");
+  if (nacross < 2 || !(radius > 0.0))
+    VSPH_FAIL(VSPH_EINVAL, "disc needs radius > 0 and at least 2 particles");
+  const double dx = 2.0 * radius / (double)nacross;
+  struct vsph_lattice_props l2 = *lp;
+  l2.dx = dx;
+  int st = check_props(&l2);
+  if (st) return st;
+  struct vsph_particles *p = vsph_particles_alloc(nacross * nacross, 2);
+  if (!p) return VSPH_ENOMEM;
+  size_t n = 0;
+  for (size_t b = 0; b < nacross; b++)
+    for (size_t a = 0; a < nacross; a++) {
+      const double x = ((double)a + 0.5) * dx - radius;
+      const double y = ((double)b + 0.5) * dx - radius;
+      if (x * x + y * y >= radius * radius) continue;
+      p->pos[0][n] = x;
+      p->pos[1][n] = y;
+      n++;
+    }
+  p->n = n;
+  set_unit_density(p, dx * dx);
+  st = finish(&l2, p, (size_t)-1);
+  if (st) {
+    vsph_particles_free(p);
+    return st;
+  }
+  *out = p;
+  return VSPH_OK;
+}

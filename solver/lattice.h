@@ -71,4 +71,13 @@ int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
 int vsph_lattice_disc(const struct vsph_lattice_props *lp, double radius,
                       size_t nacross, struct vsph_particles **out);
 
+/** @brief Disc (2-D) of radius @p radius cut from a square lattice of
+ *  spacing dx = 2R/nacross: the nodes ((a + 1/2) dx - R, (b + 1/2) dx - R)
+ *  with r < R, each of volume dx^2 (so the volumes add up to pi R^2 only
+ *  to O(dx)). The layout whose lattice error converges for azimuthal
+ *  shear (docs/theory.md, section 6). lp->dx is ignored. */
+int vsph_lattice_disc_cartesian(const struct vsph_lattice_props *lp,
+                                double radius, size_t nacross,
+                                struct vsph_particles **out);
+
 #endif /* VSPH_SOLVER_LATTICE_H */

@@ -3,6 +3,7 @@
 
 #include <stddef.h>
 
+#include "../common/params.h"
 #include "walls.h"
 
 struct vsph_particles;
@@ -26,6 +27,7 @@ struct vsph_scene_vortex {
   double rho0;   /*!< reference density */
   double c0;     /*!< sound speed (m/s); 0: THEORY 5's rule */
   double t_end;  /*!< default end time (s) */
+  char layout[VSPH_PARAMS_NAME_MAX]; /*!< rings, cartesian [reconstructed] */
 };
 
 /** Stretching square (THEORY 6.2). */

@@ -56,11 +56,42 @@ START_TEST(test_baseline) {
 }
 END_TEST
 
+/* The energy budget of report_runs.c on synthetic rows: a run that loses
+ * its energy exactly like the reference (E = E_k(0) e^{-g t} while
+ * E_m = E_m(0) e^{-g t}, whatever the offsets E_p, E_c and the E_k(0)
+ * against E_m(0) normalisation) scores 1 to rounding; one that loses twice
+ * as much scores 2; the kinetic/potential split does not enter. */
+START_TEST(test_loss_ratio) {
+  enum { N = 5 };
+  double t[N], Ek[N], Ep[N], Ec[N], Emr[N];
+  const double g = 0.37, E0 = 0.25;
+  for (int k = 0; k < N; k++) {
+    t[k] = 0.5 * k;
+    const double E = E0 * exp(-g * t[k]);
+    const double share = 0.5 * (1 + cos(3.1 * t[k])); /* kinetic share */
+    Ek[k] = share * E;
+    Ep[k] = -4.9 + (1 - share) * E; /* hydrostatic offset */
+    Ec[k] = 0.016;
+    Emr[k] = 1.07 * E0 * exp(-g * t[k]); /* another E(0) */
+  }
+  Ek[0] = E0, Ep[0] = -4.9; /* all kinetic at t = 0 */
+  struct vsph_report_run r = {
+      .nrow = N, .t = t, .Ek = Ek, .Ep = Ep, .Ec = Ec, .Emr = Emr};
+  for (size_t k = 1; k < N; k++)
+    ck_assert_double_eq_tol(vsph_report_runs_loss_ratio(&r, k), 1.0, 1e-12);
+  ck_assert(isnan(vsph_report_runs_loss_ratio(&r, 0)));
+  for (int k = 1; k < N; k++) Ec[k] -= E0 * (1 - exp(-g * t[k]));
+  for (size_t k = 1; k < N; k++)
+    ck_assert_double_eq_tol(vsph_report_runs_loss_ratio(&r, k), 2.0, 1e-12);
+}
+END_TEST
+
 Suite *vsph_baseline_suite(void) {
   Suite *s = suite_create("baseline");
   TCase *tc = tcase_create("quick report");
   tcase_set_timeout(tc, 180);
   tcase_add_test(tc, test_baseline);
+  tcase_add_test(tc, test_loss_ratio);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -35,6 +35,34 @@ START_TEST(test_lattice_volumes) {
 }
 END_TEST
 
+/* Cartesian disc: every node inside, the set symmetric (centroid at the
+ * origin to rounding), and the volume within the band of cells the circle
+ * cuts: |n dx^2 - pi R^2| <= 2 pi R sqrt(2) dx (each cut cell lies within
+ * half a diagonal of the circle). */
+START_TEST(test_disc_cartesian) {
+  struct vsph_lattice_props lp = {.dim = 2};
+  struct vsph_particles *p = NULL;
+  const double R = 0.6180;
+  const size_t nacross = 50;
+  const double dx = 2 * R / (double)nacross;
+  ck_assert_int_eq(vsph_lattice_disc_cartesian(&lp, R, nacross, &p), 0);
+  double sx = 0, sy = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    ck_assert_double_lt(hypot(p->pos[0][i], p->pos[1][i]), R);
+    ck_assert_double_eq_tol(p->vol[i], dx * dx, 1e-15);
+    sx += p->pos[0][i];
+    sy += p->pos[1][i];
+  }
+  ck_assert_double_le(fabs(sx) + fabs(sy), 1e-12);
+  ck_assert_double_le(fabs(total_volume(p) - VSPH_PI * R * R),
+                      2 * VSPH_PI * R * sqrt(2.0) * dx);
+  ck_assert_uint_gt(p->n, 0.9 * VSPH_PI * 25 * 25);
+  vsph_particles_free(p);
+  vsph_test_silence();
+  ck_assert_int_ne(vsph_lattice_disc_cartesian(&lp, -1.0, 10, &p), 0);
+}
+END_TEST
+
 /* Half-space patch: the centre is at the origin, nothing lies above the
  * depth plane, and the hexagonal lattice keeps the volume per particle. */
 START_TEST(test_halfspace) {
@@ -152,6 +180,7 @@ Suite *vsph_cells_suite(void) {
   TCase *tc = tcase_create("core");
   tcase_add_test(tc, test_lattice_volumes);
   tcase_add_test(tc, test_halfspace);
+  tcase_add_test(tc, test_disc_cartesian);
   tcase_add_test(tc, test_cells_vs_direct);
   tcase_add_test(tc, test_cells_errors);
   suite_add_tcase(s, tc);

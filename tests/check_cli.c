@@ -118,6 +118,12 @@ static const char *const bad_inputs[] = {
     "tensors --depth 0x10",
     "tensors --hdx 1e-300",
     "dissipation --formulation mgf --field strain --hdx 1e6",
+    /* issue 10 */
+    "dissipation --formulation mgf --field rotation --angle 30",
+    "dissipation --formulation mgf --field strain --angle 400",
+    "run vortex-patch --set Scene:layout=hex",
+    "report --only scenes:nowhere",
+    "report --only tensors:vortex-patch",
     "",
 };
 
@@ -221,7 +227,7 @@ START_TEST(test_run_outputs) {
   vsph_test_slurp(path, head, sizeof head);
   ck_assert_msg(strncmp(head, "t,Ek,Ep,Ec,P_visc,", 18) == 0, "%s", head);
   ck_assert_ptr_nonnull(strstr(head, "residual,Px,Py,Lz"));
-  ck_assert_ptr_nonnull(strstr(head, "Ek_ref,dEk_ref"));
+  ck_assert_ptr_nonnull(strstr(head, "Ek_ref,dEk_ref,Em_ref,dEm_ref"));
   snprintf(path, sizeof path, "%s/ok/run.json", dir);
   static char js[8192];
   vsph_test_slurp(path, js, sizeof js);
@@ -244,6 +250,16 @@ START_TEST(test_run_outputs) {
     ck_assert_msg(cJSON_HasObjectItem(j, keys[i]), "missing %s", keys[i]);
   ck_assert_str_eq(cJSON_GetObjectItem(j, "status")->valuestring, "ok");
   ck_assert_int_eq(cJSON_GetObjectItem(j, "n_particles")->valueint, 144);
+  /* the command line as given, and the start date (ISO 8601, UTC) */
+  const cJSON *cline = cJSON_GetObjectItem(j, "command");
+  ck_assert(cJSON_IsString(cline));
+  ck_assert_msg(strstr(cline->valuestring,
+                       "vsph run stretching-square --res "
+                       "12 --t-end 0.02") != NULL,
+                "%s", cline->valuestring);
+  const cJSON *date = cJSON_GetObjectItem(j, "date");
+  ck_assert(cJSON_IsString(date) && strlen(date->valuestring) == 20 &&
+            date->valuestring[10] == 'T' && date->valuestring[19] == 'Z');
   /* the process's peak memory holds at least the integrator's buffers */
   ck_assert_double_ge(cJSON_GetObjectItem(j, "peak_rss_bytes")->valuedouble,
                       cJSON_GetObjectItem(j, "memory_bytes")->valuedouble);

@@ -281,6 +281,41 @@ START_TEST(test_wave_initial_power) {
 }
 END_TEST
 
+/* The wave's mechanical reference is Lighthill's envelope: at t = 0 all
+ * of the wave's energy is kinetic (flat surface), so E_m(0) = E_k,ref(0);
+ * E_m >= E_k,ref always, with equality at the kinetic peaks
+ * (cos 2 omega t = 1); dE_m/dt = -4 nu k^2 E_m (its definition, checked
+ * against a centred difference of E_m, truncation O(dt^2) ~ 1e-10). */
+START_TEST(test_wave_mech) {
+  struct vsph_params *prm = vsph_params_alloc();
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_standing_wave_type, prm), 0);
+  vsph_params_free(prm);
+  struct vsph_references_scene *ref = vsph_references_scene_alloc(&sc);
+  const struct vsph_scene_wave *w = &sc.u.wave;
+  double Ek, dEk, Em, dEm;
+  ck_assert_int_eq(vsph_references_scene_eval(ref, 0.0, &Ek, &dEk), 0);
+  ck_assert_int_eq(vsph_references_scene_mech(ref, 0.0, &Em, &dEm), 0);
+  ck_assert_double_eq_tol(Em, Ek, 1e-14 * Ek);
+  for (int k = 1; k <= 40; k++) {
+    const double t = 0.137 * k;
+    vsph_references_scene_eval(ref, t, &Ek, &dEk);
+    vsph_references_scene_mech(ref, t, &Em, &dEm);
+    ck_assert_double_le(Ek, Em * (1 + 1e-14));
+    double a, b, da, db;
+    const double h = 1e-4;
+    vsph_references_scene_mech(ref, t + h, &a, &da);
+    vsph_references_scene_mech(ref, t - h, &b, &db);
+    ck_assert_double_eq_tol(dEm, (a - b) / (2 * h), 1e-8 * fabs(dEm));
+  }
+  const double tp = VSPH_PI / w->omega; /* a kinetic peak */
+  vsph_references_scene_eval(ref, tp, &Ek, &dEk);
+  vsph_references_scene_mech(ref, tp, &Em, &dEm);
+  ck_assert_double_eq_tol(Ek, Em, 1e-12 * Em);
+  vsph_references_scene_free(ref);
+}
+END_TEST
+
 START_TEST(test_errors) {
   vsph_test_silence();
   ck_assert_ptr_null(vsph_references_vortex_alloc(-1.0, 0.1, 1, 1e-3, 5));
@@ -298,6 +333,7 @@ Suite *vsph_references_suite(void) {
   tcase_add_test(tc, test_series_vs_mol);
   tcase_add_test(tc, test_energy_rate);
   tcase_add_test(tc, test_lighthill_initial);
+  tcase_add_test(tc, test_wave_mech);
   tcase_add_test(tc, test_norm_closed_form);
   tcase_add_test(tc, test_wave_initial_power);
   tcase_add_test(tc, test_errors);

@@ -5,6 +5,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <math.h>
+#include <string.h>
 
 #include "../../common/consts.h"
 #include "../../common/params.h"
@@ -29,6 +30,10 @@ static const struct vsph_params_spec params[] = {
     VSPH_PARAMS_REAL_SPEC(V, c0, 0.0, 0.0, 1e9,
                           "sound speed (m/s); 0: 10 max(U, sqrt(dp/rho0))"),
     VSPH_PARAMS_REAL_SPEC(V, t_end, 100.0, 1e-9, 1e9, "default end time (s)"),
+    VSPH_PARAMS_NAME_SPEC(V, layout, "rings",
+                          "particle layout: rings (concentric, equal "
+                          "volumes) or cartesian (square lattice cut to "
+                          "the disc) [reconstructed]"),
 };
 #undef V
 
@@ -59,6 +64,10 @@ static int pressure(const struct vsph_scene_vortex *vp,
 static int setup(struct vsph_scene *sc) {
   const struct vsph_scene_vortex *vp = &sc->u.vortex;
   const double R = vp->R;
+  if (strcmp(vp->layout, "rings") && strcmp(vp->layout, "cartesian"))
+    VSPH_FAIL(VSPH_EINVAL,
+              "vortex-patch: unknown layout '%s' (rings, cartesian)",
+              vp->layout);
   sc->ref_length = R;
   sc->rho0 = vp->rho0;
   sc->mu = vp->rho0 * vp->nu;
@@ -98,7 +107,9 @@ static int init(const struct vsph_scene *sc, size_t res,
                 struct vsph_particles **out) {
   const struct vsph_scene_vortex *vp = &sc->u.vortex;
   struct vsph_lattice_props lp = {.dim = 2};
-  int st = vsph_lattice_disc(&lp, vp->R, 2 * res, out);
+  int st = strcmp(vp->layout, "cartesian")
+               ? vsph_lattice_disc(&lp, vp->R, 2 * res, out)
+               : vsph_lattice_disc_cartesian(&lp, vp->R, 2 * res, out);
   if (st) return st;
   struct vsph_particles *p = *out;
   gsl_integration_workspace *ws = gsl_integration_workspace_alloc(100);
