@@ -17,6 +17,7 @@
 #include "../common/status.h"
 #include "../common/sysinfo.h"
 #include "../kernels/kernel.h"
+#include "../solver/diagnostics.h"
 #include "../solver/integrate.h"
 #include "../solver/run.h"
 #include "../solver/scene.h"
@@ -124,7 +125,7 @@ static int is_run_file(const char *name) {
     if (!strcmp(name, exact[k])) return 1;
   const size_t n = strlen(name);
   return (!strncmp(name, "snap_", 5) && n > 9 &&
-          !strcmp(name + n - 4, ".vtk")) ||
+          (!strcmp(name + n - 4, ".vtp") || !strcmp(name + n - 4, ".vtk"))) ||
          (n > 4 && !strcmp(name + n - 4, ".tmp"));
 }
 
@@ -210,9 +211,15 @@ static int write_row(struct outputs *o, struct vsph_run *run,
 
 static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
   char name[64];
-  snprintf(name, sizeof name, "snap_%04zu.vtk", o->nsnap++);
+  snprintf(name, sizeof name, "snap_%04zu.vtp", o->nsnap++);
   const struct vsph_integrate *s = run->integ;
-  int st = vsph_vtk_write(o->dir, name, s->p, s->n_fluid, s->t);
+  struct vsph_diagnostics dg;
+  int st = vsph_diagnostics_compute(s->p, s->n_fluid, s->props.eq.visc.kernel,
+                                    s->props.eq.visc.h, &dg);
+  if (!st) {
+    st = vsph_vtk_write(o->dir, name, s->p, s->n_fluid, s->t, &dg);
+    vsph_diagnostics_free(&dg);
+  }
   if (!st) st = vsph_vtk_pvd_add(&o->pvd, s->t, name);
   if (st)
     snprintf(o->error, sizeof o->error, "cannot write snapshot %s/%s", o->dir,

@@ -11,6 +11,7 @@
 #include "../io/csv.h"
 #include "../io/files.h"
 #include "../io/plot.h"
+#include "../io/vtk.h"
 #include "../solver/scene.h"
 #include "report_internal.h"
 
@@ -48,34 +49,19 @@ static int vortex_profile(struct vsph_report *R, const char *snap,
                           const char *out, size_t nbins,
                           const struct vsph_references_vortex *ref,
                           double *t_snap) {
-  char *text = vsph_files_slurp(snap, NULL);
-  if (!text) VSPH_FAIL(VSPH_EIO, "cannot read %s", snap);
-  const char *tl = strstr(text, "t = ");
-  *t_snap = tl ? strtod(tl + 4, NULL) : (double)NAN;
-  const char *pts = strstr(text, "POINTS ");
-  const char *vel = strstr(text, "VECTORS velocity double");
-  if (!pts || !vel) {
-    free(text);
-    VSPH_FAIL(VSPH_EIO, "%s is not a vsph snapshot", snap);
-  }
-  char *c;
-  const size_t n = strtoul(pts + 7, &c, 10);
-  c = strchr(c, '\n') + 1;
-  double *x = malloc(3 * n * sizeof *x);
+  struct vsph_vtk_snapshot sn;
+  int rd = vsph_vtk_read(snap, &sn);
+  if (rd) return rd;
+  *t_snap = sn.t;
   double *sum = calloc(2 * nbins, sizeof *sum), *cnt = sum + nbins;
-  if (!x || !sum) {
-    free(text);
-    free(x);
-    free(sum);
+  if (!sum) {
+    vsph_vtk_snapshot_free(&sn);
     VSPH_FAIL(VSPH_ENOMEM, "cannot bin %s", snap);
   }
-  for (size_t i = 0; i < 3 * n; i++) x[i] = strtod(c, &c);
-  c = strchr(vel, '\n') + 1;
   const double R0 = ref->R;
-  for (size_t i = 0; i < n; i++) {
-    const double u = strtod(c, &c), v = strtod(c, &c);
-    (void)strtod(c, &c);
-    const double px = x[3 * i], py = x[3 * i + 1], r = hypot(px, py);
+  for (size_t i = 0; i < sn.n; i++) {
+    const double u = sn.vel[3 * i], v = sn.vel[3 * i + 1];
+    const double px = sn.pos[3 * i], py = sn.pos[3 * i + 1], r = hypot(px, py);
     if (!(r > 0 && r < R0)) continue; /* outside, or not finite */
     const size_t b = (size_t)(r / R0 * (double)nbins);
     if (b < nbins) {
@@ -83,8 +69,7 @@ static int vortex_profile(struct vsph_report *R, const char *snap,
       cnt[b] += 1.0;
     }
   }
-  free(x);
-  free(text);
+  vsph_vtk_snapshot_free(&sn);
   FILE *f = vsph_csv_open(R->dir, out, "r,u_theta_sph,u_theta_ref");
   int st = f ? VSPH_OK : VSPH_EIO;
   for (size_t b = 0; b < nbins && !st; b++) {
@@ -121,7 +106,7 @@ static int vortex_profiles(struct vsph_report *R, FILE *figs, int f,
                  "azimuthal velocity u_{theta} (m/s)");
   for (int k = 0; k < NSNAP && !st; k++) {
     char snap[700], file[96], tp[48], ts_[48], sp[48], ss[48];
-    snprintf(snap, sizeof snap, "%s/snap_%04d.vtk", run->dir, k);
+    snprintf(snap, sizeof snap, "%s/snap_%04d.vtp", run->dir, k);
     snprintf(file, sizeof file, "profile_%s_%d.csv", form, k);
     double ts = 0.0;
     st = vortex_profile(R, snap, file, res / 2, ref, &ts);

@@ -217,7 +217,7 @@ START_TEST(test_run_outputs) {
   struct vsph_test_outcome *o = vsph_test_cli(args);
   ck_assert_msg(o->status == 0, "run failed: %s", o->err);
   const char *files[] = {"energy.csv", "run.json", "used_parameters.yml",
-                         "snap_0000.vtk", "snapshots.pvd"};
+                         "snap_0000.vtp", "snapshots.pvd"};
   for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
     snprintf(path, sizeof path, "%s/ok/%s", dir, files[i]);
     ck_assert_msg(access(path, R_OK) == 0, "missing %s", files[i]);

@@ -201,7 +201,7 @@ START_TEST(test_reused_folder) {
            "run stretching-square --res 10 --t-end 0.1 --out %s/r --quiet",
            dir);
   ck_assert_int_eq(vsph_test_cli(args)->status, 0);
-  snprintf(path, sizeof path, "%s/r/snap_0004.vtk", dir);
+  snprintf(path, sizeof path, "%s/r/snap_0004.vtp", dir);
   ck_assert(exists(path));
   snprintf(path, sizeof path, "%s/r/notes.txt", dir);
   FILE *f = fopen(path, "w");
@@ -212,7 +212,7 @@ START_TEST(test_reused_folder) {
            "--set Solver:snapshots=2",
            dir);
   ck_assert_int_eq(vsph_test_cli(args)->status, 0);
-  snprintf(path, sizeof path, "%s/r/snap_0004.vtk", dir);
+  snprintf(path, sizeof path, "%s/r/snap_0004.vtp", dir);
   ck_assert_msg(!exists(path), "a snapshot of the earlier run stayed");
   snprintf(path, sizeof path, "%s/r/notes.txt", dir);
   ck_assert(exists(path));

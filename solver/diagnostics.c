@@ -1,0 +1,110 @@
+#include "diagnostics.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "../common/status.h"
+#include "../kernels/kernel.h"
+#include "cells.h"
+#include "pair.h"
+#include "particles.h"
+
+double vsph_diagnostics_surface_threshold(int dim) {
+  return dim == 3 ? 2.4 : dim == 2 ? 1.5 : 0.75;
+}
+
+void vsph_diagnostics_free(struct vsph_diagnostics *d) {
+  for (int a = 0; a < 3; a++) free(d->vort[a]);
+  free(d->divr);
+  free(d->surf);
+  memset(d, 0, sizeof *d);
+}
+
+/* A copy of the fields the sums read. */
+static struct vsph_particles *copy_of(const struct vsph_particles *p) {
+  struct vsph_particles *q = vsph_particles_alloc(p->n ? p->n : 1, p->dim);
+  if (!q) return NULL;
+  q->n = p->n;
+  for (int a = 0; a < p->dim; a++) {
+    memcpy(q->pos[a], p->pos[a], p->n * sizeof(double));
+    memcpy(q->vel[a], p->vel[a], p->n * sizeof(double));
+  }
+  memcpy(q->vol, p->vol, p->n * sizeof(double));
+  memcpy(q->m, p->m, p->n * sizeof(double));
+  memcpy(q->rho, p->rho, p->n * sizeof(double));
+  memcpy(q->id, p->id, p->n * sizeof(size_t));
+  return q;
+}
+
+int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
+                             const struct vsph_kernel_type *k, double h,
+                             struct vsph_diagnostics *d) {
+  memset(d, 0, sizeof *d);
+  const int dim = p->dim;
+  d->n = n;
+  d->dim = dim;
+  const size_t len = n ? n : 1;
+  for (int a = 0; a < 3; a++) d->vort[a] = calloc(len, sizeof(double));
+  d->divr = calloc(len, sizeof(double));
+  d->surf = calloc(len, 1);
+  struct vsph_particles *q = copy_of(p);
+  struct vsph_cells *cells = vsph_cells_alloc();
+  int st = VSPH_OK;
+  if (!d->vort[0] || !d->vort[1] || !d->vort[2] || !d->divr || !d->surf || !q ||
+      !cells) {
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot allocate the diagnostics of %zu particles", n);
+    st = VSPH_ENOMEM;
+  }
+  if (!st) st = vsph_cells_build(cells, q, k->kappa * h);
+  if (!st) {
+    struct vsph_pair_kernel pk;
+    vsph_pair_kernel_init(&pk, k, dim, h);
+    const double thr = vsph_diagnostics_surface_threshold(dim);
+    const int kid = pk.dfq_id;
+    /* gather: particle i writes only its own entries */
+#pragma omp parallel for schedule(dynamic, 16)
+    for (size_t c = 0; c < cells->ncells; c++) {
+      struct vsph_pair_ranges rg;
+      vsph_pair_ranges_cell(&rg, cells, c);
+      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+           i++) {
+        const size_t id = q->id[i];
+        if (id >= n) continue;
+        double w[3] = {0, 0, 0}, dr = 0.0, ui[3] = {0, 0, 0};
+        for (int a = 0; a < dim; a++) ui[a] = q->vel[a][i];
+        struct vsph_pair_iter it;
+        struct vsph_pair_chunk b;
+        vsph_pair_begin(&it, &pk, q, &rg, i);
+        while (vsph_pair_gather(&it, dim, kid, &b)) {
+          for (size_t m = 0; m < b.m; m++) {
+            const size_t j = b.j[m];
+            double du[3] = {0, 0, 0}, x[3] = {0, 0, 0};
+            for (int a = 0; a < dim; a++) {
+              du[a] = q->vel[a][j] - ui[a];
+              x[a] = b.x[a][m];
+            }
+            /* grad_i W_ij = -x F: omega -= VF x cross du, div r -= VF s2 */
+            dr -= b.VF[m] * b.s2[m];
+            w[2] -= b.VF[m] * (x[0] * du[1] - x[1] * du[0]);
+            if (dim == 3) {
+              w[0] -= b.VF[m] * (x[1] * du[2] - x[2] * du[1]);
+              w[1] -= b.VF[m] * (x[2] * du[0] - x[0] * du[2]);
+            }
+          }
+        }
+        if (dim >= 2) d->vort[2][id] = w[2];
+        if (dim == 3) {
+          d->vort[0][id] = w[0];
+          d->vort[1][id] = w[1];
+        }
+        d->divr[id] = dr;
+        d->surf[id] = dr < thr;
+      }
+    }
+  }
+  vsph_cells_free(cells);
+  vsph_particles_free(q);
+  if (st) vsph_diagnostics_free(d);
+  return st;
+}

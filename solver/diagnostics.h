@@ -1,0 +1,47 @@
+#ifndef VSPH_SOLVER_DIAGNOSTICS_H
+#define VSPH_SOLVER_DIAGNOSTICS_H
+
+#include <stddef.h>
+
+struct vsph_particles;
+struct vsph_kernel_type;
+
+/** @file diagnostics.h
+ *  @brief Per-particle fields for pictures and snapshots, not used by the
+ *  time stepping: the SPH vorticity
+ *    omega_i = sum_j V_j grad_i W_ij x (u_j - u_i),
+ *  and the divergence of the position
+ *    (div r)_i = sum_j V_j (r_j - r_i).grad_i W_ij,
+ *  which is d inside the fluid (to the lattice error) and falls towards
+ *  d/2 at a free surface, with the free-surface flag (div r)_i below a
+ *  threshold (docs/theory.md section 5: 1.5 in 2-D, 2.4 in 3-D, as in Lee
+ *  et al. 2008). Both sums run over the pair iterator of solver/pair.h,
+ *  on a sorted copy of the set, so the caller's particles are neither
+ *  moved nor reordered (a run's results do not depend on whether it wrote
+ *  snapshots). No I/O. */
+
+/** Diagnostics of the particles with id < n, indexed by id. */
+struct vsph_diagnostics {
+  size_t n;            /*!< particles described */
+  int dim;             /*!< 1, 2 or 3 */
+  double *vort[3];     /*!< vorticity; 2-D: vort[2] only (the others 0) */
+  double *divr;        /*!< div r */
+  unsigned char *surf; /*!< 1: free surface (div r below the threshold) */
+};
+
+/** @brief The free-surface threshold on div r in @p dim dimensions. */
+double vsph_diagnostics_surface_threshold(int dim);
+
+/** @brief Compute the diagnostics of the particles of @p p whose id is
+ *  below @p n (the fluid; the others, e.g. ghosts, count as neighbours),
+ *  with kernel @p k and smoothing length @p h (m), into @p d (allocated
+ *  here; free with vsph_diagnostics_free).
+ *  @return VSPH_OK, VSPH_ENOMEM or VSPH_EINVAL (non-finite positions). */
+int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
+                             const struct vsph_kernel_type *k, double h,
+                             struct vsph_diagnostics *d);
+
+/** @brief Free the arrays of @p d (the struct itself is the caller's). */
+void vsph_diagnostics_free(struct vsph_diagnostics *d);
+
+#endif /* VSPH_SOLVER_DIAGNOSTICS_H */
