@@ -48,4 +48,23 @@ int vsph_plot_add(struct vsph_plot *pl, const char *file, const char *using,
  *  its messages are in DIR/NAME.log). */
 int vsph_plot_write(const struct vsph_plot *pl);
 
+/** One panel of a particle picture: a CSV of particles and its title. */
+struct vsph_plot_panel {
+  char file[128];  /*!< CSV with a header row, relative to the folder */
+  char title[128]; /*!< panel title */
+};
+
+/** @brief A particle picture DIR/NAME.png (and .gp): @p n panels side by
+ *  side (two rows from 3 panels on), each the particles of a CSV drawn as
+ *  dots at columns 1:2 (x, y) coloured by the column @p col, axes to
+ *  scale. @p diverging: a blue-white-red palette centred on 0 (signed
+ *  fields such as vorticity), else a sequential one. @p box: x and y
+ *  ranges (xlo, xhi, ylo, yhi) every panel shares, or NULL (each its own).
+ *  At most 8 panels.
+ *  @return VSPH_OK, VSPH_EINVAL or VSPH_EIO (as vsph_plot_write). */
+int vsph_plot_particles(const char *dir, const char *name, const char *title,
+                        const struct vsph_plot_panel *pn, size_t n, int col,
+                        const char *cblabel, int diverging,
+                        const double box[4]);
+
 #endif /* VSPH_IO_PLOT_H */

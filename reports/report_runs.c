@@ -116,8 +116,9 @@ static size_t run_key(const struct vsph_report *R,
                       size_t nkey) {
   snprintf(dir, ndir, "%s/runs/%s-%s-%zu%s%s", R->dir, rs->scene, rs->visc,
            rs->res, rs->tag ? "-" : "", rs->tag ? rs->tag : "");
-  /* the vortex patch's ladder keeps snapshots for the u_theta profiles */
-  const int snaps = !strcmp(rs->scene, "vortex-patch") && !rs->tag ? 4 : 0;
+  /* the ladders keep snapshots: the vortex patch's u_theta profiles and
+   * the particle pictures of section 5 read them */
+  const int snaps = !rs->tag ? 4 : 0;
   *nset = settings(rs, snaps, set, 16);
   int len = snprintf(key, nkey, "vsph %s %s\nscene %s\n", VSPH_VERSION,
                      vsph_source_hash_id, rs->scene);

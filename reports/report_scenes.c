@@ -128,6 +128,95 @@ static int vortex_profiles(struct vsph_report *R, FILE *figs, int f,
   return st;
 }
 
+/* The particles of snapshot @p snap as a CSV for a picture: x, y,
+ * pressure, vorticity (z), free-surface flag. Its time into @p t. */
+static int particles_csv(struct vsph_report *R, const char *snap,
+                         const char *out, double *t, double box[4]) {
+  struct vsph_vtk_snapshot sn;
+  int st = vsph_vtk_read(snap, &sn);
+  if (st) return st;
+  *t = sn.t;
+  for (size_t i = 0; i < sn.n; i++) { /* the shared frame, NaN skipped */
+    box[0] = fmin(box[0], sn.pos[3 * i]);
+    box[1] = fmax(box[1], sn.pos[3 * i]);
+    box[2] = fmin(box[2], sn.pos[3 * i + 1]);
+    box[3] = fmax(box[3], sn.pos[3 * i + 1]);
+  }
+  FILE *f = vsph_csv_open(R->dir, out, "x,y,pressure,vorticity,free_surface");
+  if (!f) {
+    vsph_vtk_snapshot_free(&sn);
+    return VSPH_EIO;
+  }
+  for (size_t i = 0; i < sn.n; i++)
+    fprintf(f, "%.6g,%.6g,%.6g,%.6g,%d\n", sn.pos[3 * i], sn.pos[3 * i + 1],
+            sn.p[i], sn.vort[3 * i + 2], sn.surf[i] != 0.0);
+  vsph_vtk_snapshot_free(&sn);
+  return vsph_csv_close(f, R->dir, out);
+}
+
+/* The last snapshot of a run folder (the end, or the stop of an unstable
+ * run), as its index, or -1. */
+static int last_snapshot(const char *dir) {
+  int last = -1;
+  for (int k = 0; k < 10000; k++) {
+    char path[700];
+    snprintf(path, sizeof path, "%s/snap_%04d.vtp", dir, k);
+    FILE *f = fopen(path, "r");
+    if (!f) break;
+    fclose(f);
+    last = k;
+  }
+  return last;
+}
+
+/* Particle pictures of a scene (paper Figs. 2, 3, 6): the initial state
+ * and each formulation's last state, coloured by pressure and by
+ * vorticity. */
+static int pictures(struct vsph_report *R, int sc, FILE *md,
+                    const struct vsph_report_run run[NFORM]) {
+  const char *scn = vsph_report_runs_ladder(R, sc, 0)->scene;
+  struct vsph_plot_panel pn[NFORM + 1];
+  double box[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
+  int st = VSPH_OK;
+  for (int k = 0; k <= NFORM && !st; k++) {
+    const int f = k ? k - 1 : 0;
+    const int idx = k ? last_snapshot(run[f].dir) : 0;
+    if (idx < 0) VSPH_FAIL(VSPH_EIO, "%s holds no snapshot", run[f].dir);
+    char snap[700];
+    snprintf(snap, sizeof snap, "%s/snap_%04d.vtp", run[f].dir, idx);
+    snprintf(pn[k].file, sizeof pn[k].file, "particles_%s_%s.csv", scn,
+             k ? vsph_viscous_name(f) : "initial");
+    double t = 0.0;
+    st = particles_csv(R, snap, pn[k].file, &t, box);
+    if (!k)
+      snprintf(pn[k].title, sizeof pn[k].title, "t = 0 (every formulation)");
+    else if (run[f].ok)
+      snprintf(pn[k].title, sizeof pn[k].title, "%s, t = %.3g s",
+               vsph_viscous_label(f), t);
+    else
+      snprintf(pn[k].title, sizeof pn[k].title,
+               "%s, t = %.3g s (stopped: unstable)", vsph_viscous_label(f), t);
+  }
+  const double mx = 0.05 * (box[1] - box[0]), my = 0.05 * (box[3] - box[2]);
+  box[0] -= mx, box[1] += mx, box[2] -= my, box[3] += my;
+  static const char *const what[2] = {"pressure", "vorticity"};
+  static const char *const unit[2] = {"p (Pa)", "omega (1/s)"};
+  for (int w = 0; w < 2 && !st; w++) {
+    char name[96], title[160];
+    snprintf(name, sizeof name, "pic_%s_%s", scn, what[w]);
+    snprintf(title, sizeof title, "%s: particles coloured by %s", scn, what[w]);
+    st = vsph_plot_particles(R->dir, name, title, pn, NFORM + 1, w ? 4 : 3,
+                             unit[w], w, box);
+    if (!st)
+      fprintf(md,
+              "![%s](%s.png)\n\n*Figure: %s. Data: `particles_%s_<form>."
+              "csv` (x, y, pressure, vorticity, free-surface flag), from the "
+              "runs' snapshots (`runs/*/snap_*.vtp`).*\n\n",
+              title, name, title, scn);
+  }
+  return st;
+}
+
 /* The four figures of a scene: E_k, dE_k/dt, the decay error and the
  * budget residual, each with MGF, MEAF and PVWF. */
 static int scene_figures(struct vsph_report *R, int sc, char names[NFORM][96],
@@ -205,11 +294,15 @@ static int scene(struct vsph_report *R, int sc) {
   size_t figlen = 0;
   FILE *figs = open_memstream(&figbuf, &figlen); /* after the table */
   if (!figs) VSPH_FAIL(VSPH_ENOMEM, "cannot buffer the figures");
+  struct vsph_report_run runs[NFORM];
+  memset(runs, 0, sizeof runs);
   for (int f = 0; f < NFORM && !st; f++) {
     struct vsph_report_runspec rs = {
         L->scene, vsph_viscous_name(f), res, L->t_end, NULL, NULL};
     struct vsph_report_run r;
     if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+    snprintf(runs[f].dir, sizeof runs[f].dir, "%s", r.dir);
+    runs[f].ok = r.ok;
     snprintf(names[f], sizeof names[f], "scene_%s_%s.csv", L->scene,
              vsph_viscous_name(f));
     st = write_derived(R, names[f], &r, square ? &rr : NULL);
@@ -232,6 +325,7 @@ static int scene(struct vsph_report *R, int sc) {
     if (!st && sc == 0) st = vortex_profiles(R, figs, f, &r, res);
     vsph_report_runs_free(&r);
   }
+  if (!st) st = pictures(R, sc, figs, runs);
   fclose(figs);
   fprintf(R->md, "\n");
   fwrite(figbuf, 1, figlen, R->md);

@@ -1,5 +1,6 @@
 #include "diagnostics.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -55,6 +56,20 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
     vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
                        "cannot allocate the diagnostics of %zu particles", n);
     st = VSPH_ENOMEM;
+  }
+  /* a state stopped as unstable may hold non-finite positions: its
+   * diagnostics are NaN (the snapshot is still written) */
+  int finite = 1;
+  for (int a = 0; a < dim && !st; a++)
+    for (size_t i = 0; i < p->n; i++) finite &= isfinite(p->pos[a][i]) != 0;
+  if (!st && !finite) {
+    for (size_t i = 0; i < n; i++) {
+      for (int a = 0; a < 3; a++) d->vort[a][i] = NAN;
+      d->divr[i] = NAN;
+    }
+    vsph_cells_free(cells);
+    vsph_particles_free(q);
+    return VSPH_OK;
   }
   if (!st) st = vsph_cells_build(cells, q, k->kappa * h);
   if (!st) {

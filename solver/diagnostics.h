@@ -36,7 +36,8 @@ double vsph_diagnostics_surface_threshold(int dim);
  *  below @p n (the fluid; the others, e.g. ghosts, count as neighbours),
  *  with kernel @p k and smoothing length @p h (m), into @p d (allocated
  *  here; free with vsph_diagnostics_free).
- *  @return VSPH_OK, VSPH_ENOMEM or VSPH_EINVAL (non-finite positions). */
+ *  Non-finite positions (a run stopped as unstable) give NaN fields.
+ *  @return VSPH_OK or VSPH_ENOMEM. */
 int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
                              const struct vsph_kernel_type *k, double h,
                              struct vsph_diagnostics *d);
