@@ -47,8 +47,16 @@ static int scene(struct vsph_report *R, int sc) {
     fprintf(R->md, "| %s | ladder | | | **%.2f** |\n", vsph_viscous_name(f),
             order);
     if ((st = vsph_csv_close(c, R->dir, files[f]))) break;
-    st = vsph_plot_add(&pl, files[f], "1:2", vsph_viscous_label(f),
-                       "linespoints pt 7 lw 2");
+    char style[96];
+    snprintf(style, sizeof style, "linespoints pt %d lw 2 %s",
+             vsph_report_runs_point(f), vsph_report_runs_colour(f));
+    st = vsph_plot_add(&pl, files[f], "1:2", vsph_viscous_label(f), style);
+    int any = 0; /* unstable runs ringed */
+    for (int k = 0; k < VSPH_REPORT_LADDER; k++) any |= !lr.ok[f][k];
+    if (!st && any)
+      st = vsph_plot_add(&pl, files[f], "1:($5==0 ? $2 : 1/0)",
+                         "stopped as unstable (error up to the stop)",
+                         "points pt 6 ps 3 lw 2 lc rgb 'black'");
   }
   if (!st)
     st = vsph_plot_add(&pl, files[0], "1:($1*0.1)", "first order",
@@ -129,8 +137,9 @@ static int vortex_layouts(struct vsph_report *R) {
               vsph_scaling_slope(dx, a0, VSPH_REPORT_LADDER));
       if ((st = vsph_csv_close(c, R->dir, file))) break;
       snprintf(lab, sizeof lab, "%s, %s", vsph_viscous_label(f), lay[l]);
-      snprintf(style, sizeof style, "linespoints pt %d lw 2 lc %d%s",
-               vsph_report_runs_point(f), f + 1, l ? " dt 2" : "");
+      snprintf(style, sizeof style, "linespoints pt %d lw 2 %s%s",
+               vsph_report_runs_point(f), vsph_report_runs_colour(f),
+               l ? " dt 2" : "");
       st = vsph_plot_add(&pl, file, "1:4", lab, style);
     }
   if (st) return st;

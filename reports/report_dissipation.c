@@ -166,15 +166,16 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
   snprintf(a.extra, sizeof a.extra, "set xrange [15:200]\n");
   int st = VSPH_OK;
   for (int form = 0; form < NFORM && !st; form++) {
-    char title[64], style[64];
+    char title[64], style[96];
     snprintf(title, sizeof title, "%s total", vsph_viscous_label(form));
-    snprintf(style, sizeof style, "linespoints pt %d lw 2 lc %d",
-             vsph_report_runs_point(form), form + 1);
+    snprintf(style, sizeof style, "linespoints pt %d lw 2 %s",
+             vsph_report_runs_point(form), vsph_report_runs_colour(form));
     st = vsph_plot_add(&a, tb->res_name[form], "1:2", title, style);
     if (!st && form != VSPH_VISCOUS_PVWF) { /* PVWF's is rounding */
       snprintf(title, sizeof title, "%s surface part",
                vsph_viscous_label(form));
-      snprintf(style, sizeof style, "linespoints pt 6 dt 2 lc %d", form + 1);
+      snprintf(style, sizeof style, "linespoints pt 6 dt 2 %s",
+               vsph_report_runs_colour(form));
       st = vsph_plot_add(&a, tb->res_name[form], "1:4", title, style);
     }
   }
@@ -197,8 +198,11 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
       char tl[64];
       snprintf(tl, sizeof tl, "%s, %s", vsph_viscous_name(form),
                vsph_fields_name(field));
-      st = vsph_plot_add(&b, tb->hdx_name[form][field], "1:3", tl,
-                         "linespoints lw 2");
+      char style[96];
+      snprintf(style, sizeof style, "linespoints pt %d lw 2 %s%s",
+               vsph_report_runs_point(form), vsph_report_runs_colour(form),
+               field == 2 ? " dt 2" : "");
+      st = vsph_plot_add(&b, tb->hdx_name[form][field], "1:3", tl, style);
     }
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
   if (!st) st = vsph_report_figure_say(R, &b, "dissipation.caption_hdx");
@@ -250,10 +254,10 @@ static int angle_figure(struct vsph_report *R) {
                  "lattice error (negative: more dissipation)");
   snprintf(pl.extra, sizeof pl.extra, "set xrange [0:90]\nset xtics 0,15,90\n");
   for (int form = 0; form < NFORM && !st; form++) {
-    char cols[16], style[64];
+    char cols[16], style[96];
     snprintf(cols, sizeof cols, "1:%d", form + 2);
-    snprintf(style, sizeof style, "linespoints pt %d lw 2 lc %d",
-             vsph_report_runs_point(form), form + 1);
+    snprintf(style, sizeof style, "linespoints pt %d lw 2 %s",
+             vsph_report_runs_point(form), vsph_report_runs_colour(form));
     st = vsph_plot_add(&pl, name, cols, vsph_viscous_label(form), style);
   }
   return st ? st : vsph_report_figure_say(R, &pl, "dissipation.angle_caption");

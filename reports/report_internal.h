@@ -175,6 +175,10 @@ double vsph_report_runs_interp(const double *t, const double *y, size_t n,
 /* gnuplot's point type for formulation f: the same in every figure. */
 int vsph_report_runs_point(int f);
 
+/* gnuplot's colour for formulation f ("lc rgb '#1f77b4'"): the same in
+ * every figure (MGF blue, MEAF red, PVWF green). */
+const char *vsph_report_runs_colour(int f);
+
 /* The figures of scene @p sc's ladder (memoised in R). */
 int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
                                     struct vsph_report_ladder *out);

@@ -416,6 +416,13 @@ int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
   return VSPH_OK;
 }
 
+const char *vsph_report_runs_colour(int f) {
+  static const char *const lc[] = {"lc rgb '#1f77b4'", "lc rgb '#d62728'",
+                                   "lc rgb '#2ca02c'", "lc rgb '#9467bd'",
+                                   "lc rgb '#ff7f0e'", "lc rgb '#8c564b'"};
+  return lc[(size_t)f % (sizeof lc / sizeof lc[0])];
+}
+
 int vsph_report_runs_point(int f) {
   static const int pt[] = {7, 5, 9, 11, 13, 3};
   return pt[(size_t)f % (sizeof pt / sizeof pt[0])];

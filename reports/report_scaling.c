@@ -36,11 +36,17 @@ static int sweep(struct vsph_report *R, struct tables *tb,
   if (k == vsph_kernel_get(0)) { /* the 3h Gaussian's sweep, for figures */
     char name[64];
     snprintf(name, sizeof name, "scaling_%s_%dd.csv", fn, dim);
-    FILE *f = vsph_csv_open(R->dir, name, "h,mgf,meaf,pvwf,hF,hN");
+    FILE *f =
+        vsph_csv_open(R->dir, name, "h,mgf,meaf,pvwf,hF,hN,rounding_level");
     if (!f) return VSPH_EIO;
+    /* the level below which an operator counts as rounding (scaling.c) */
+    const double U =
+        fk == VSPH_FIELDS_STRAIN ? fabs(sp.field.A) : fabs(sp.field.Omega);
+    const double round = sp.round_tol * sp.mu * U / r.h[r.levels - 1];
     for (size_t l = 0; l < r.levels; l++)
-      fprintf(f, "%.6e,%.6e,%.6e,%.6e,%.10f,%.10f\n", r.h[l], r.magnitude[0][l],
-              r.magnitude[1][l], r.magnitude[2][l], r.hF[l], r.hN[l]);
+      fprintf(f, "%.6e,%.6e,%.6e,%.6e,%.10f,%.10f,%.6e\n", r.h[l],
+              r.magnitude[0][l], r.magnitude[1][l], r.magnitude[2][l], r.hF[l],
+              r.hN[l], round);
     if ((st = vsph_csv_close(f, R->dir, name))) return st;
   }
   for (size_t l = 0; l < r.levels; l++)
@@ -79,17 +85,24 @@ static int figure(struct vsph_report *R, int dim, int fk) {
   vsph_plot_init(&pl, R->dir, pname, title, "smoothing length h (m)",
                  "|(div V)_i| at the surface particle (N/m^d)");
   pl.logx = pl.logy = 1;
+  /* the sweep's h range (h0 = 0.1 halved 4 times), not whole decades */
+  snprintf(pl.extra, sizeof pl.extra, "set xrange [0.0045:0.14]\n");
   int st = VSPH_OK;
   for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++) {
-    char using[16], style[48];
+    char using[16], style[96];
     snprintf(using, sizeof using, "1:%d", f + 2);
-    snprintf(style, sizeof style, "linespoints pt %d lw 2",
-             vsph_report_runs_point(f));
+    snprintf(style, sizeof style, "linespoints pt %d lw 2 %s",
+             vsph_report_runs_point(f), vsph_report_runs_colour(f));
     st = vsph_plot_add(&pl, data, using, vsph_viscous_label(f), style);
   }
   if (!st)
     st = vsph_plot_add(&pl, data, "1:(1e-3*$1**-1)", "slope -1",
                        "lines dt 2 lc 'black'");
+  if (!st) /* below this, values are rounding noise: no slope is fitted */
+    st = vsph_plot_add(&pl, data, "1:($7*1e-10):7",
+                       "rounding level (below: noise, no slope)",
+                       "filledcurves fc rgb '#cccccc' fs transparent solid "
+                       "0.5");
   if (st) return st;
   vsph_text_set(&R->tv, "field", "%s", fn);
   vsph_text_set(&R->tv, "dim", "%d", dim);

@@ -254,9 +254,12 @@ static int scene_figures(struct vsph_report *R, int sc, char names[NFORM][96],
     struct vsph_plot pl;
     vsph_plot_init(&pl, R->dir, pname, title, "time t (s)", ylab[w]);
     pl.logy = w == 3;
-    for (int f = 0; f < NFORM && !st; f++)
-      st = vsph_plot_add(&pl, names[f], cols[w], vsph_viscous_label(f),
-                         "lines lw 2");
+    for (int f = 0; f < NFORM && !st; f++) {
+      char style[96];
+      snprintf(style, sizeof style, "lines lw 2 %s",
+               vsph_report_runs_colour(f));
+      st = vsph_plot_add(&pl, names[f], cols[w], vsph_viscous_label(f), style);
+    }
     if (!st && w == 4) /* the exact ratio */
       st = vsph_plot_add(&pl, names[0], "1:(1)", "exact (1)",
                          "lines dt 2 lw 2 lc 'black'");

@@ -31,8 +31,10 @@ static int scene(struct vsph_report *R, int sc) {
       fprintf(c, "%.6e,%.4f,%.6e,%.4f,%.2f\n", lr.err[f][k], lr.wall[f][k],
               lr.pairs[f][k], lr.cpu[f][k], lr.load[f][k]);
     if ((st = vsph_csv_close(c, R->dir, file))) break;
-    st = vsph_plot_add(&pl, file, "1:2", vsph_viscous_label(f),
-                       "linespoints pt 7 lw 2");
+    char style[96];
+    snprintf(style, sizeof style, "linespoints pt %d lw 2 %s",
+             vsph_report_runs_point(f), vsph_report_runs_colour(f));
+    st = vsph_plot_add(&pl, file, "1:2", vsph_viscous_label(f), style);
   }
   if (st) return st;
   vsph_text_set(&R->tv, "title", "%s", title);
