@@ -31,7 +31,9 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
   char *text = vsph_files_slurp(path, &len);
   if (!text) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
   cmark_gfm_core_extensions_ensure_registered();
-  cmark_parser *ps = cmark_parser_new(CMARK_OPT_DEFAULT);
+  /* UNSAFE keeps the report's own anchors (<a id>) for its links; the
+   * Markdown is vsph's own output, never a user's */
+  cmark_parser *ps = cmark_parser_new(CMARK_OPT_DEFAULT | CMARK_OPT_UNSAFE);
   cmark_syntax_extension *table = cmark_find_syntax_extension("table");
   if (!ps || !table) {
     free(text);
@@ -41,7 +43,7 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
   cmark_parser_attach_syntax_extension(ps, table);
   cmark_parser_feed(ps, text, len);
   cmark_node *doc = cmark_parser_finish(ps);
-  char *body = cmark_render_html(doc, CMARK_OPT_DEFAULT,
+  char *body = cmark_render_html(doc, CMARK_OPT_DEFAULT | CMARK_OPT_UNSAFE,
                                  cmark_parser_get_syntax_extensions(ps));
   cmark_node_free(doc);
   cmark_parser_free(ps);

@@ -99,7 +99,7 @@ int vsph_plot_write(const struct vsph_plot *pl) {
           "set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11'\n"
           "set output '%s.png'\nset datafile separator ','\n"
           "set title \"%s\"\nset xlabel \"%s\"\nset ylabel \"%s\"\n"
-          "set grid\nset key outside right top\n%s%s%s\n",
+          "set grid\nset key below\n%s%s%s\n",
           pl->name, pl->name, pl->name, pl->title, pl->xlabel, pl->ylabel,
           pl->logx ? "set logscale x\nset format x '10^{%L}'\n" : "",
           pl->logy ? "set logscale y\nset format y '10^{%L}'\n" : "",

@@ -95,6 +95,7 @@ int vsph_report_claim(struct vsph_report *R, const char *claim,
   snprintf(c->paper, sizeof c->paper, "%s", paper);
   snprintf(c->ours, sizeof c->ours, "%s", ours);
   snprintf(c->verdict, sizeof c->verdict, "%s", verdict);
+  snprintf(c->see, sizeof c->see, "%s", R->claim_see ? R->claim_see : "");
   return VSPH_OK;
 }
 
@@ -196,15 +197,50 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
   vsph_text_set(tv, "quick_note", "%s",
                 R->full ? "" : vsph_text_get("report.quick_note"));
   int st = vsph_report_say(R, "report.head");
-  for (size_t p = 0; p < NPARTS && !st; p++) {
+  /* every part present, the claims first (the summary); a part's text
+   * after its "<!-- appendix -->" mark goes to the appendices at the end */
+  char *text[NPARTS] = {0};
+  const char *appendix[NPARTS] = {0};
+  for (size_t p = 0; p < NPARTS; p++) {
     char path[700];
     snprintf(path, sizeof path, "%s/%s.md", parts_dir, PARTS[p].name);
-    char *text = vsph_files_slurp(path, NULL);
-    if (text) {
-      fputs(text, md);
-      free(text);
+    if (!(text[p] = vsph_files_slurp(path, NULL))) continue;
+    char *mark = strstr(text[p], "<!-- appendix -->");
+    if (mark) {
+      *mark = '\0';
+      appendix[p] = mark + strlen("<!-- appendix -->");
     }
   }
+  const int claims = vsph_report_part_find("claims");
+  size_t order[NPARTS], n = 0;
+  if (text[claims]) order[n++] = (size_t)claims;
+  for (size_t p = 0; p < NPARTS; p++)
+    if (text[p] && (int)p != claims) order[n++] = p;
+  if (!st && n) { /* contents, from each part's first heading */
+    fprintf(md, "**Contents**\n\n");
+    for (size_t k = 0; k < n; k++) {
+      const char *h = strstr(text[order[k]], "\n## ");
+      h = h ? h + 4
+            : (!strncmp(text[order[k]], "## ", 3) ? text[order[k]] + 3 : NULL);
+      const int len = h ? (int)strcspn(h, "\n") : 0;
+      fprintf(md, "- [%.*s](#sec-%s)\n", len, h ? h : "", PARTS[order[k]].name);
+    }
+    for (size_t p = 0; p < NPARTS; p++)
+      if (appendix[p])
+        fprintf(md, "- [Appendix: %s tables](#appendix-%s)\n", PARTS[p].name,
+                PARTS[p].name);
+    fprintf(md, "- [Run facts](#run-facts)\n\n");
+  }
+  for (size_t k = 0; k < n && !st; k++) {
+    fprintf(md, "<a id=\"sec-%s\"></a>\n\n", PARTS[order[k]].name);
+    fputs(text[order[k]], md);
+  }
+  for (size_t p = 0; p < NPARTS && !st; p++)
+    if (appendix[p]) {
+      fprintf(md, "<a id=\"appendix-%s\"></a>\n\n", PARTS[p].name);
+      fputs(appendix[p], md);
+    }
+  for (size_t p = 0; p < NPARTS; p++) free(text[p]);
   if (!st) st = vsph_report_say(R, "report.facts_head");
   for (size_t p = 0; p < NPARTS && !st; p++) {
     if (!(want >> p & 1)) continue;

@@ -44,6 +44,7 @@ struct vsph_report_ladder {
 /* One row of the claims table. */
 struct vsph_report_claim {
   char claim[256], paper[256], ours[320], verdict[256];
+  char see[32]; /* the part that shows it ("scenes"): the link in the table */
 };
 
 /* The report being written. */
@@ -54,6 +55,7 @@ struct vsph_report {
   FILE *md;        /* the current part's Markdown */
   gsl_integration_workspace *wo, *wi; /* quadrature workspaces */
   struct vsph_report_claim *claims;   /* the claims table (growing) */
+  const char *claim_see;              /* part of the claims added next */
   size_t nclaims, cap_claims;
   struct vsph_report_ladder ladder[VSPH_REPORT_NSCENES]; /* memo */
   int have_ladder[VSPH_REPORT_NSCENES];
@@ -140,14 +142,36 @@ int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all);
 /* Free a run's loaded data. */
 void vsph_report_runs_free(struct vsph_report_run *r);
 
-/* The stretching square's reference for t > 0: first-order Richardson
- * extrapolation 2 E(L/dx) - E(L/dx / 2) of the two finest MGF runs, on 101
- * equally spaced times. */
+/* The stretching square's reference for t > 0, free of MGF's lattice
+ * bias at h/dx = 4/3 (-6 %, section 4): MGF at h/dx = 3, where the lattice
+ * error is -0.2 %, extrapolated in h by first-order Richardson
+ * 2 E(L/dx) - E(L/dx / 2) over two resolutions (quick 40 and 80, full 160
+ * and 320), which removes the surface deficit (first order in h/L), on 101
+ * equally spaced times, with its rate dE/dt by differences. */
 struct vsph_report_richardson {
-  double t[101], E[101];
+  double t[101], E[101], dE[101];
+  size_t res[2]; /* the two resolutions L/dx */
+  double diss0;  /* its initial dissipation error, extrapolated alike */
 };
 int vsph_report_runs_richardson(struct vsph_report *R,
                                 struct vsph_report_richardson *rr);
+
+/* The two runs behind it (tag "hdx3", extra settings Solver:hdx=3). */
+extern const char *const vsph_report_runs_hdx3[2];
+void vsph_report_runs_reference_specs(const struct vsph_report *R,
+                                      struct vsph_report_runspec rs[2]);
+
+/* The threshold of the onset (the reference's own uncertainty, its
+ * lattice error and the Richardson remainder, is below 1 %). */
+#define VSPH_REPORT_ONSET 0.1
+
+/* PVWF's onset of instability, the paper's way (the time its dissipation
+ * departs from the reference, not the time it is stopped): the first of
+ * the reference's times at which |dE_k/dt - dE_ref/dt| exceeds
+ * @p threshold |dE_ref/dt| (or the run has stopped); NaN if never. */
+double vsph_report_runs_onset(const struct vsph_report_run *r,
+                              const struct vsph_report_richardson *rr,
+                              double threshold);
 
 /* Reference E_k at row @p row: the run's own, or the Richardson curve. */
 double vsph_report_runs_eref(const struct vsph_report_run *r, size_t row,
@@ -164,6 +188,12 @@ double vsph_report_runs_error(const struct vsph_report_run *r,
  * Lighthill's envelope). Above 1: too much damping. NaN at t = 0 or
  * without a reference. */
 double vsph_report_runs_loss_ratio(const struct vsph_report_run *r, size_t row);
+
+/* The same with only the viscous part of the loss, -int_0^t P_visc dt
+ * (trapezoidal rule over the rows), so the two split the loss into the
+ * viscous formulation's share and the rest (acoustic exchange, walls). */
+double vsph_report_runs_visc_loss_ratio(const struct vsph_report_run *r,
+                                        size_t row);
 
 /* Initial dissipation error (P_visc(0) - dEk_ref(0)) / |dEk_ref(0)|. */
 double vsph_report_runs_diss0(const struct vsph_report_run *r);

@@ -272,10 +272,17 @@ const char *const vsph_report_runs_cartesian[2] = {"Scene:layout=cartesian",
 
 int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all) {
   enum {
-    N = (VSPH_REPORT_NSCENES + 1) * VSPH_VISCOUS_FORM_COUNT * VSPH_REPORT_LADDER
+    N = (VSPH_REPORT_NSCENES + 1) * VSPH_VISCOUS_FORM_COUNT *
+            VSPH_REPORT_LADDER +
+        2
   };
   struct vsph_report_runspec specs[N];
   size_t n = 0;
+  /* the stretching square's reference runs */
+  if (all || vsph_report_scene_on(R, 1)) {
+    vsph_report_runs_reference_specs(R, &specs[n]);
+    n += 2;
+  }
   /* the vortex patch's ladder again on a Cartesian disc (section 6) */
   const struct vsph_report_ladderdef *V = vsph_report_runs_ladder(R, 0, 0);
   for (int f = 0;
@@ -327,24 +334,65 @@ double vsph_report_runs_interp(const double *t, const double *y, size_t n,
   return y[a] + (y[b] - y[a]) * (x - t[a]) / (t[b] - t[a]);
 }
 
+const char *const vsph_report_runs_hdx3[2] = {"Solver:hdx=3", NULL};
+
+void vsph_report_runs_reference_specs(const struct vsph_report *R,
+                                      struct vsph_report_runspec rs[2]) {
+  static const size_t quick[2] = {40, 80}, full[2] = {160, 320};
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 1, 0);
+  for (int k = 0; k < 2; k++) {
+    const struct vsph_report_runspec s = {L->scene,
+                                          "mgf",
+                                          R->full ? full[k] : quick[k],
+                                          L->t_end,
+                                          vsph_report_runs_hdx3,
+                                          "hdx3"};
+    rs[k] = s;
+  }
+}
+
 int vsph_report_runs_richardson(struct vsph_report *R,
                                 struct vsph_report_richardson *rr) {
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 1, 0);
-  struct vsph_report_runspec a = {L->scene, "mgf", L->res[1],
-                                  L->t_end, NULL,  NULL};
-  struct vsph_report_runspec b = a;
-  b.res = L->res[2];
+  struct vsph_report_runspec rs[2];
+  vsph_report_runs_reference_specs(R, rs);
+  const double t_end = rs[0].t_end;
   struct vsph_report_run ra, rb;
-  int st = vsph_report_runs_get(R, &a, &ra);
-  if (!st) st = vsph_report_runs_get(R, &b, &rb);
+  int st = vsph_report_runs_get(R, &rs[0], &ra);
+  if (!st) st = vsph_report_runs_get(R, &rs[1], &rb);
+  if (!st && (!ra.ok || !rb.ok))
+    VSPH_FAIL(VSPH_ELIB,
+              "the stretching square's reference runs (MGF, h/dx = 3) went "
+              "unstable");
   for (int k = 0; !st && k <= 100; k++) {
-    rr->t[k] = L->t_end * k / 100.0;
+    rr->t[k] = t_end * k / 100.0;
     rr->E[k] = 2.0 * vsph_report_runs_interp(rb.t, rb.Ek, rb.nrow, rr->t[k]) -
                vsph_report_runs_interp(ra.t, ra.Ek, ra.nrow, rr->t[k]);
+  }
+  /* its rate: centred differences inside, one-sided at the ends, O(dt^2)
+   * and O(dt) with dt = t_end/100 */
+  for (int k = 0; !st && k <= 100; k++) {
+    const int a = k ? k - 1 : 0, b = k < 100 ? k + 1 : 100;
+    rr->dE[k] = (rr->E[b] - rr->E[a]) / (rr->t[b] - rr->t[a]);
+  }
+  if (!st) {
+    rr->res[0] = rs[0].res;
+    rr->res[1] = rs[1].res;
+    rr->diss0 = 2.0 * vsph_report_runs_diss0(&rb) - vsph_report_runs_diss0(&ra);
   }
   vsph_report_runs_free(&ra);
   vsph_report_runs_free(&rb);
   return st;
+}
+
+double vsph_report_runs_onset(const struct vsph_report_run *r,
+                              const struct vsph_report_richardson *rr,
+                              double threshold) {
+  for (int k = 1; k <= 100; k++) {
+    const double d = vsph_report_runs_interp(r->t, r->dEk, r->nrow, rr->t[k]);
+    if (!isfinite(d)) return rr->t[k]; /* past the run's stop */
+    if (fabs(d - rr->dE[k]) > threshold * fabs(rr->dE[k])) return rr->t[k];
+  }
+  return (double)NAN;
 }
 
 double vsph_report_runs_eref(const struct vsph_report_run *r, size_t row,
@@ -375,6 +423,16 @@ double vsph_report_runs_loss_ratio(const struct vsph_report_run *r,
                                    size_t row) {
   const double lost =
       (r->Ek[0] + r->Ep[0] + r->Ec[0]) - (r->Ek[row] + r->Ep[row] + r->Ec[row]);
+  const double lost_ref = 1.0 - r->Emr[row] / r->Emr[0];
+  return row > 0 && lost_ref != 0.0 ? (lost / r->Ek[0]) / lost_ref
+                                    : (double)NAN;
+}
+
+double vsph_report_runs_visc_loss_ratio(const struct vsph_report_run *r,
+                                        size_t row) {
+  double lost = 0.0;
+  for (size_t k = 1; k <= row; k++)
+    lost -= 0.5 * (r->Pv[k] + r->Pv[k - 1]) * (r->t[k] - r->t[k - 1]);
   const double lost_ref = 1.0 - r->Emr[row] / r->Emr[0];
   return row > 0 && lost_ref != 0.0 ? (lost / r->Ek[0]) / lost_ref
                                     : (double)NAN;

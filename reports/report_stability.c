@@ -109,7 +109,8 @@ static int stability_map(struct vsph_report *R, const char *map,
 /* PVWF's pairing: the stretching square across its ladder. */
 static int square_ladder(struct vsph_report *R) {
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 1, 0);
-  int st = VSPH_OK;
+  struct vsph_report_richardson rr;
+  int st = vsph_report_runs_richardson(R, &rr);
   for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
     fprintf(R->md, "| %s | L/dx = %zu |", L->scene, L->res[k]);
     for (int f = 0; f < NFORM && !st; f++) {
@@ -119,7 +120,13 @@ static int square_ladder(struct vsph_report *R) {
       if ((st = vsph_report_runs_get(R, &rs, &r))) break;
       char cell[160];
       verdict(cell, sizeof cell, &r);
-      fprintf(R->md, " %s |", cell);
+      const double on = vsph_report_runs_onset(&r, &rr, VSPH_REPORT_ONSET);
+      if (isfinite(on))
+        fprintf(R->md, " %s; departs from the reference at t A0 = %.2f |", cell,
+                on);
+      else
+        fprintf(R->md, " %s; within %g %% of the reference throughout |", cell,
+                100 * VSPH_REPORT_ONSET);
       vsph_report_runs_free(&r);
     }
     fprintf(R->md, "\n");
@@ -205,6 +212,7 @@ int vsph_report_stability_write(struct vsph_report *R) {
     sws[1 + sc] = p;
   }
   vsph_text_set(&R->tv, "res", "%zu", res);
+  vsph_text_set(&R->tv, "onset", "%g", 100 * VSPH_REPORT_ONSET);
   st = vsph_report_say(R, "stability.intro");
   if (!st) st = prefetch(R, sws, sizeof sws / sizeof sws[0]);
   if (!st) st = square_ladder(R);
