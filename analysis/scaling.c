@@ -280,3 +280,49 @@ int vsph_scaling_interior(const struct vsph_scaling_props *sp,
   }
   return VSPH_OK;
 }
+
+int vsph_scaling_axis(const struct vsph_scaling_props *sp, size_t nacross,
+                      double *y, double *f[VSPH_VISCOUS_FORM_COUNT],
+                      size_t *n) {
+  if (sp->field.dim != 2)
+    VSPH_FAIL(VSPH_EINVAL, "the square's axis needs a 2-D field");
+  struct vsph_lattice_props lp = {.dim = 2, .kind = VSPH_LATTICE_SQUARE};
+  struct vsph_particles *p = NULL;
+  int st = vsph_lattice_square(&lp, 1.0, nacross, &p);
+  if (st) return st;
+  const double dx = 1.0 / (double)nacross, h = sp->hdx * dx;
+  /* the column x = dx/2 (ids on the lattice: b * nacross + a) */
+  const size_t a = nacross / 2;
+  *n = nacross;
+  for (size_t b = 0; b < nacross; b++) y[b] = p->pos[1][b * nacross + a];
+  struct vsph_cells *cells = vsph_cells_alloc();
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(p->n, 2);
+  double *buf = malloc(2 * p->n * sizeof *buf);
+  if (!cells || !ws || !buf) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot allocate the axis");
+  }
+  for (size_t i = 0; i < p->n && !st; i++) {
+    double x[3] = {p->pos[0][i], p->pos[1][i], 0}, u[3], g[9];
+    vsph_fields_eval(&sp->field, x, u, g);
+    p->vel[0][i] = u[0];
+    p->vel[1][i] = u[1];
+  }
+  if (!st) st = vsph_cells_build(cells, p, sp->kernel->kappa * h);
+  double *out[3] = {buf, buf ? buf + p->n : NULL, NULL};
+  for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT && !st; form++) {
+    struct vsph_viscous_props vp;
+    if ((st = vsph_viscous_props_init(&vp, form, sp->kernel, 2, h, sp->mu)))
+      break;
+    if ((st = vsph_viscous_compute(&vp, p, cells, ws, out, NULL))) break;
+    for (size_t i = 0; i < p->n; i++) { /* sorted by cell: find by id */
+      const size_t id = p->id[i];
+      if (id % nacross == a) f[form][id / nacross] = out[1][i];
+    }
+  }
+  free(buf);
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+  return st;
+}

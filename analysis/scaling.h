@@ -95,4 +95,16 @@ int vsph_scaling_interior(const struct vsph_scaling_props *sp,
                           const double *hdx, size_t n,
                           struct vsph_scaling_interior *res);
 
+/** @brief The viscous term along the vertical symmetry axis of a square
+ *  (side 1 m, square lattice, @p nacross particles across, h = sp->hdx dx)
+ *  carrying the field of @p sp (2-D strain: the stretching square's start,
+ *  paper Fig. 7): for the column of particles nearest x = 0 (x = dx/2),
+ *  bottom to top, their y into @p y and the y component of (div V) of each
+ *  formulation into @p f[form] (arrays of at least @p nacross).
+ *  The exact value is 0 (a linear field); the surface rows show the 1/h
+ *  truncation error.
+ *  @return VSPH_OK, VSPH_EINVAL (not a 2-D field), VSPH_ENOMEM. */
+int vsph_scaling_axis(const struct vsph_scaling_props *sp, size_t nacross,
+                      double *y, double *f[VSPH_VISCOUS_FORM_COUNT], size_t *n);
+
 #endif /* VSPH_ANALYSIS_SCALING_H */

@@ -110,6 +110,57 @@ static int figure(struct vsph_report *R, int dim, int fk) {
   return vsph_report_figure_say(R, &pl, "scaling.caption");
 }
 
+/* The viscous term along the square's symmetry axis at the stretching
+ * square's start, for decreasing h (paper Fig. 7): one figure per
+ * formulation, one curve per resolution. */
+static int axis(struct vsph_report *R) {
+  static const size_t RES[3] = {20, 40, 80};
+  struct vsph_scaling_props sp;
+  int st = vsph_scaling_props_init(&sp, NULL);
+  if (!st) st = vsph_fields_props_init(&sp.field, VSPH_FIELDS_STRAIN, 2);
+  if (st) return st;
+  double y[80], v[VSPH_VISCOUS_FORM_COUNT][80];
+  double *f[VSPH_VISCOUS_FORM_COUNT] = {v[0], v[1], v[2]};
+  char name[3][64];
+  for (int r = 0; r < 3 && !st; r++) {
+    size_t n = 0;
+    if ((st = vsph_scaling_axis(&sp, RES[r], y, f, &n))) break;
+    snprintf(name[r], sizeof name[r], "axis_%zu.csv", RES[r]);
+    FILE *c = vsph_csv_open(R->dir, name[r], "y,mgf,meaf,pvwf");
+    if (!c) return VSPH_EIO;
+    for (size_t k = 0; k < n; k++)
+      fprintf(c, "%.8g,%.8e,%.8e,%.8e\n", y[k], v[0][k], v[1][k], v[2][k]);
+    if ((st = vsph_csv_close(c, R->dir, name[r]))) break;
+  }
+  vsph_text_set(&R->tv, "A", "%g", sp.field.A);
+  vsph_text_set(&R->tv, "mu", "%g", sp.mu);
+  if (!st) st = vsph_report_say(R, "scaling.axis_head");
+  for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT && !st; form++) {
+    char pname[64], title[160];
+    snprintf(pname, sizeof pname, "fig_axis_%s", vsph_viscous_name(form));
+    snprintf(title, sizeof title,
+             "%s: (div V)_y along the square's axis x = dx/2, pure strain",
+             vsph_viscous_label(form));
+    struct vsph_plot pl;
+    vsph_plot_init(&pl, R->dir, pname, title,
+                   "y (m), free surfaces at -0.5 and 0.5",
+                   "(div V)_y (N/m^2), exact 0");
+    for (int r = 0; r < 3 && !st; r++) {
+      char cols[16], lab[48], style[96];
+      snprintf(cols, sizeof cols, "1:%d", form + 2);
+      snprintf(lab, sizeof lab, "L/dx = %zu", RES[r]);
+      snprintf(style, sizeof style, "linespoints pt 7 ps 0.6 lw %d %s", r + 1,
+               vsph_report_runs_colour(form));
+      st = vsph_plot_add(&pl, name[r], cols, lab, style);
+    }
+    if (!st) {
+      vsph_text_set(&R->tv, "title", "%s", title);
+      st = vsph_report_figure_say(R, &pl, "scaling.axis_caption");
+    }
+  }
+  return st;
+}
+
 static int interior(struct vsph_report *R, FILE *in) {
   int st = vsph_report_say(R, "scaling.interior");
   for (size_t ki = 0; ki < vsph_kernel_count() && !st; ki++) {
@@ -163,6 +214,7 @@ int vsph_report_scaling_write(struct vsph_report *R) {
   if (!st) st = vsph_report_say(R, "scaling.patch");
   for (int dim = 2; dim <= 3 && !st; dim++)
     for (int fk = 0; fk < 2 && !st; fk++) st = figure(R, dim, fk);
+  if (!st) st = axis(R);
   if (!st) st = interior(R, tb.in);
   const char *names[3] = {"scaling.csv", "slopes.csv", "interior.csv"};
   FILE *files[3] = {tb.csv, tb.sl, tb.in};
