@@ -145,8 +145,8 @@ void vsph_report_runs_free(struct vsph_report_run *r);
 /* The stretching square's reference for t > 0, free of MGF's lattice
  * bias at h/dx = 4/3 (-6 %, section 4): MGF at h/dx = 3, where the lattice
  * error is -0.2 %, extrapolated in h by first-order Richardson
- * 2 E(L/dx) - E(L/dx / 2) over two resolutions (quick 40 and 80, full 160
- * and 320), which removes the surface deficit (first order in h/L), on 101
+ * 2 E(L/dx) - E(L/dx / 2) over two resolutions (quick 40 and 80, full 80
+ * and 160), which removes the surface deficit (first order in h/L), on 101
  * equally spaced times, with its rate dE/dt by differences. */
 struct vsph_report_richardson {
   double t[101], E[101], dE[101];

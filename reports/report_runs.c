@@ -338,7 +338,7 @@ const char *const vsph_report_runs_hdx3[2] = {"Solver:hdx=3", NULL};
 
 void vsph_report_runs_reference_specs(const struct vsph_report *R,
                                       struct vsph_report_runspec rs[2]) {
-  static const size_t quick[2] = {40, 80}, full[2] = {160, 320};
+  static const size_t quick[2] = {40, 80}, full[2] = {80, 160};
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 1, 0);
   for (int k = 0; k < 2; k++) {
     const struct vsph_report_runspec s = {L->scene,
