@@ -279,25 +279,16 @@ static int vortex_claims(struct vsph_report *R, const struct finest *fi) {
         yes_no(err[PVWF] < err[MGF], "reproduced at this resolution",
                "not reproduced at this resolution"));
   /* MGF's initial dissipation error on both disc layouts (section 6) */
-  double d0[2][VSPH_REPORT_LADDER], dx[VSPH_REPORT_LADDER];
-  for (int l = 0; l < 2 && !st; l++)
-    for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
-      struct vsph_report_runspec rs = {L->scene,
-                                       "mgf",
-                                       L->res[k],
-                                       L->t_end,
-                                       l ? vsph_report_runs_cartesian : NULL,
-                                       l ? "cartesian" : NULL};
-      struct vsph_report_run r;
-      if ((st = vsph_report_runs_get(R, &rs, &r))) break;
-      d0[l][k] = vsph_report_runs_diss0(&r);
-      dx[k] = 1.0 / (double)L->res[k];
-      vsph_report_runs_free(&r);
-    }
+  struct vsph_report_layouts ly;
+  if (!st) st = vsph_report_runs_layouts(R, &ly);
   if (!st) {
-    double a0[2][VSPH_REPORT_LADDER];
+    double d0[2][VSPH_REPORT_LADDER], a0[2][VSPH_REPORT_LADDER];
+    const double *dx = ly.dx;
     for (int l = 0; l < 2; l++)
-      for (int k = 0; k < VSPH_REPORT_LADDER; k++) a0[l][k] = fabs(d0[l][k]);
+      for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
+        d0[l][k] = ly.d0[l][MGF][k];
+        a0[l][k] = fabs(d0[l][k]);
+      }
     const double o_r = vsph_scaling_slope(dx, a0[0], VSPH_REPORT_LADDER);
     const double o_c = vsph_scaling_slope(dx, a0[1], VSPH_REPORT_LADDER);
     snprintf(ours, sizeof ours,

@@ -48,8 +48,7 @@ static int scene(struct vsph_report *R, int sc) {
             order);
     if ((st = vsph_csv_close(c, R->dir, files[f]))) break;
     char style[96];
-    snprintf(style, sizeof style, "linespoints pt %d lw 2 %s",
-             vsph_report_runs_point(f), vsph_report_runs_colour(f));
+    vsph_report_runs_style(style, sizeof style, f, "");
     st = vsph_plot_add(&pl, files[f], "1:2", vsph_viscous_label(f), style);
     int any = 0; /* unstable runs ringed */
     for (int k = 0; k < VSPH_REPORT_LADDER; k++) any |= !lr.ok[f][k];
@@ -73,30 +72,14 @@ static int scene(struct vsph_report *R, int sc) {
 static int vortex_layouts(struct vsph_report *R) {
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 0, 0);
   static const char *const lay[2] = {"rings", "cartesian"};
-  double dx[VSPH_REPORT_LADDER], err[2][NFORM][VSPH_REPORT_LADDER];
-  double d0[2][NFORM][VSPH_REPORT_LADDER];
-  int ok[2][NFORM][VSPH_REPORT_LADDER];
-  double tu[2][NFORM][VSPH_REPORT_LADDER];
-  int st = VSPH_OK;
-  for (int l = 0; l < 2 && !st; l++)
-    for (int f = 0; f < NFORM && !st; f++)
-      for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
-        struct vsph_report_runspec rs = {L->scene,
-                                         vsph_viscous_name(f),
-                                         L->res[k],
-                                         L->t_end,
-                                         l ? vsph_report_runs_cartesian : NULL,
-                                         l ? "cartesian" : NULL};
-        struct vsph_report_run r;
-        if ((st = vsph_report_runs_get(R, &rs, &r))) break;
-        dx[k] = 1.0 / (double)L->res[k];
-        err[l][f][k] = vsph_report_runs_error(&r, NULL);
-        d0[l][f][k] = vsph_report_runs_diss0(&r);
-        ok[l][f][k] = r.ok;
-        tu[l][f][k] = r.t_unstable;
-        vsph_report_runs_free(&r);
-      }
+  struct vsph_report_layouts ly;
+  int st = vsph_report_runs_layouts(R, &ly);
   if (st) return st;
+  const double *dx = ly.dx;
+  double(*err)[NFORM][VSPH_REPORT_LADDER] = ly.err;
+  double(*d0)[NFORM][VSPH_REPORT_LADDER] = ly.d0;
+  double(*tu)[NFORM][VSPH_REPORT_LADDER] = ly.tu;
+  int(*ok)[NFORM][VSPH_REPORT_LADDER] = ly.ok;
   if ((st = vsph_report_say(R, "convergence.layout_head"))) return st;
   struct vsph_plot pl;
   vsph_plot_init(&pl, R->dir, "fig_convergence_vortex-layouts",
@@ -137,9 +120,7 @@ static int vortex_layouts(struct vsph_report *R) {
               vsph_scaling_slope(dx, a0, VSPH_REPORT_LADDER));
       if ((st = vsph_csv_close(c, R->dir, file))) break;
       snprintf(lab, sizeof lab, "%s, %s", vsph_viscous_label(f), lay[l]);
-      snprintf(style, sizeof style, "linespoints pt %d lw 2 %s%s",
-               vsph_report_runs_point(f), vsph_report_runs_colour(f),
-               l ? " dt 2" : "");
+      vsph_report_runs_style(style, sizeof style, f, l ? " dt 2" : "");
       st = vsph_plot_add(&pl, file, "1:4", lab, style);
     }
   if (st) return st;

@@ -168,8 +168,7 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
   for (int form = 0; form < NFORM && !st; form++) {
     char title[64], style[96];
     snprintf(title, sizeof title, "%s total", vsph_viscous_label(form));
-    snprintf(style, sizeof style, "linespoints pt %d lw 2 %s",
-             vsph_report_runs_point(form), vsph_report_runs_colour(form));
+    vsph_report_runs_style(style, sizeof style, form, "");
     st = vsph_plot_add(&a, tb->res_name[form], "1:2", title, style);
     if (!st && form != VSPH_VISCOUS_PVWF) { /* PVWF's is rounding */
       snprintf(title, sizeof title, "%s surface part",
@@ -199,9 +198,8 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
       snprintf(tl, sizeof tl, "%s, %s", vsph_viscous_name(form),
                vsph_fields_name(field));
       char style[96];
-      snprintf(style, sizeof style, "linespoints pt %d lw 2 %s%s",
-               vsph_report_runs_point(form), vsph_report_runs_colour(form),
-               field == 2 ? " dt 2" : "");
+      vsph_report_runs_style(style, sizeof style, form,
+                             field == 2 ? " dt 2" : "");
       st = vsph_plot_add(&b, tb->hdx_name[form][field], "1:3", tl, style);
     }
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
@@ -256,8 +254,7 @@ static int angle_figure(struct vsph_report *R) {
   for (int form = 0; form < NFORM && !st; form++) {
     char cols[16], style[96];
     snprintf(cols, sizeof cols, "1:%d", form + 2);
-    snprintf(style, sizeof style, "linespoints pt %d lw 2 %s",
-             vsph_report_runs_point(form), vsph_report_runs_colour(form));
+    vsph_report_runs_style(style, sizeof style, form, "");
     st = vsph_plot_add(&pl, name, cols, vsph_viscous_label(form), style);
   }
   return st ? st : vsph_report_figure_say(R, &pl, "dissipation.angle_caption");

@@ -134,6 +134,19 @@ int vsph_report_runs_prefetch(struct vsph_report *R,
  * runs carry the tag "cartesian"). */
 extern const char *const vsph_report_runs_cartesian[2];
 
+/* The vortex patch's ladder on both disc layouts (0 rings, 1 Cartesian):
+ * per formulation and resolution the decay error, the initial dissipation
+ * error, the stability verdict and stop time (convergence and claims). */
+struct vsph_report_layouts {
+  double dx[VSPH_REPORT_LADDER]; /* 1 / (R/dx) */
+  double err[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  double d0[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  double tu[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  int ok[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+};
+int vsph_report_runs_layouts(struct vsph_report *R,
+                             struct vsph_report_layouts *out);
+
 /* The same for every run of the three ladders and the vortex patch's
  * Cartesian ladder (scenes, convergence, speed and claims read them):
  * those of the scenes on (vsph_report_scene_on), or all when @p all. */
@@ -208,6 +221,10 @@ int vsph_report_runs_point(int f);
 /* gnuplot's colour for formulation f ("lc rgb '#1f77b4'"): the same in
  * every figure (MGF blue, MEAF red, PVWF green). */
 const char *vsph_report_runs_colour(int f);
+
+/* The line style of formulation f in every figure: "linespoints pt P lw 2
+ * COLOUR" with @p more appended (e.g. " dt 2"; "" for none). */
+void vsph_report_runs_style(char *buf, size_t len, int f, const char *more);
 
 /* The figures of scene @p sc's ladder (memoised in R). */
 int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,

@@ -270,6 +270,32 @@ int vsph_report_runs_prefetch(struct vsph_report *R,
 const char *const vsph_report_runs_cartesian[2] = {"Scene:layout=cartesian",
                                                    NULL};
 
+int vsph_report_runs_layouts(struct vsph_report *R,
+                             struct vsph_report_layouts *out) {
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 0, 0);
+  int st = VSPH_OK;
+  for (int l = 0; l < 2 && !st; l++)
+    for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++)
+      for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
+        const struct vsph_report_runspec rs = {
+            L->scene,
+            vsph_viscous_name(f),
+            L->res[k],
+            L->t_end,
+            l ? vsph_report_runs_cartesian : NULL,
+            l ? "cartesian" : NULL};
+        struct vsph_report_run r;
+        if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+        out->dx[k] = 1.0 / (double)L->res[k];
+        out->err[l][f][k] = vsph_report_runs_error(&r, NULL);
+        out->d0[l][f][k] = vsph_report_runs_diss0(&r);
+        out->ok[l][f][k] = r.ok;
+        out->tu[l][f][k] = r.t_unstable;
+        vsph_report_runs_free(&r);
+      }
+  return st;
+}
+
 int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all) {
   enum {
     N = (VSPH_REPORT_NSCENES + 1) * VSPH_VISCOUS_FORM_COUNT *
@@ -479,6 +505,11 @@ const char *vsph_report_runs_colour(int f) {
                                    "lc rgb '#2ca02c'", "lc rgb '#9467bd'",
                                    "lc rgb '#ff7f0e'", "lc rgb '#8c564b'"};
   return lc[(size_t)f % (sizeof lc / sizeof lc[0])];
+}
+
+void vsph_report_runs_style(char *buf, size_t len, int f, const char *more) {
+  snprintf(buf, len, "linespoints pt %d lw 2 %s%s", vsph_report_runs_point(f),
+           vsph_report_runs_colour(f), more);
 }
 
 int vsph_report_runs_point(int f) {

@@ -91,8 +91,7 @@ static int figure(struct vsph_report *R, int dim, int fk) {
   for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++) {
     char using[16], style[96];
     snprintf(using, sizeof using, "1:%d", f + 2);
-    snprintf(style, sizeof style, "linespoints pt %d lw 2 %s",
-             vsph_report_runs_point(f), vsph_report_runs_colour(f));
+    vsph_report_runs_style(style, sizeof style, f, "");
     st = vsph_plot_add(&pl, data, using, vsph_viscous_label(f), style);
   }
   if (!st)

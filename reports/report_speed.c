@@ -32,8 +32,7 @@ static int scene(struct vsph_report *R, int sc) {
               lr.pairs[f][k], lr.cpu[f][k], lr.load[f][k]);
     if ((st = vsph_csv_close(c, R->dir, file))) break;
     char style[96];
-    snprintf(style, sizeof style, "linespoints pt %d lw 2 %s",
-             vsph_report_runs_point(f), vsph_report_runs_colour(f));
+    vsph_report_runs_style(style, sizeof style, f, "");
     st = vsph_plot_add(&pl, file, "1:2", vsph_viscous_label(f), style);
   }
   if (st) return st;

@@ -143,12 +143,11 @@ int vsph_lattice_halfspace(const struct vsph_lattice_props *lp, double radius,
   return VSPH_OK;
 }
 
-int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
-                        size_t nacross, struct vsph_particles **out) {
-  if (lp->dim != 2 || lp->kind != VSPH_LATTICE_SQUARE)
-    VSPH_FAIL(VSPH_EINVAL, "the square set is a 2-D square lattice");
-  if (nacross < 1 || !(side > 0.0))
-    VSPH_FAIL(VSPH_EINVAL, "square needs side > 0 and at least 1 particle");
+/* The nodes ((a + 1/2) dx - side/2, (b + 1/2) dx - side/2) of a square
+ * of side @p side, dx = side/nacross, b outer and a inner, keeping those
+ * with r < @p radius (INFINITY: all), each of volume dx^2. */
+static int grid(const struct vsph_lattice_props *lp, double side,
+                size_t nacross, double radius, struct vsph_particles **out) {
   const double dx = side / (double)nacross;
   struct vsph_lattice_props l2 = *lp;
   l2.dx = dx;
@@ -159,8 +158,11 @@ int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
   size_t n = 0;
   for (size_t b = 0; b < nacross; b++)
     for (size_t a = 0; a < nacross; a++) {
-      p->pos[0][n] = -0.5 * side + ((double)a + 0.5) * dx;
-      p->pos[1][n] = -0.5 * side + ((double)b + 0.5) * dx;
+      const double x = -0.5 * side + ((double)a + 0.5) * dx;
+      const double y = -0.5 * side + ((double)b + 0.5) * dx;
+      if (x * x + y * y >= radius * radius) continue;
+      p->pos[0][n] = x;
+      p->pos[1][n] = y;
       n++;
     }
   p->n = n;
@@ -172,6 +174,15 @@ int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
   }
   *out = p;
   return VSPH_OK;
+}
+
+int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
+                        size_t nacross, struct vsph_particles **out) {
+  if (lp->dim != 2 || lp->kind != VSPH_LATTICE_SQUARE)
+    VSPH_FAIL(VSPH_EINVAL, "the square set is a 2-D square lattice");
+  if (nacross < 1 || !(side > 0.0))
+    VSPH_FAIL(VSPH_EINVAL, "square needs side > 0 and at least 1 particle");
+  return grid(lp, side, nacross, INFINITY, out);
 }
 
 int vsph_lattice_disc(const struct vsph_lattice_props *lp, double radius,
@@ -225,30 +236,5 @@ int vsph_lattice_disc_cartesian(const struct vsph_lattice_props *lp,
   if (lp->dim != 2) VSPH_FAIL(VSPH_EINVAL, "the disc set is 2-D");
   if (nacross < 2 || !(radius > 0.0))
     VSPH_FAIL(VSPH_EINVAL, "disc needs radius > 0 and at least 2 particles");
-  const double dx = 2.0 * radius / (double)nacross;
-  struct vsph_lattice_props l2 = *lp;
-  l2.dx = dx;
-  int st = check_props(&l2);
-  if (st) return st;
-  struct vsph_particles *p = vsph_particles_alloc(nacross * nacross, 2);
-  if (!p) return VSPH_ENOMEM;
-  size_t n = 0;
-  for (size_t b = 0; b < nacross; b++)
-    for (size_t a = 0; a < nacross; a++) {
-      const double x = ((double)a + 0.5) * dx - radius;
-      const double y = ((double)b + 0.5) * dx - radius;
-      if (x * x + y * y >= radius * radius) continue;
-      p->pos[0][n] = x;
-      p->pos[1][n] = y;
-      n++;
-    }
-  p->n = n;
-  set_unit_density(p, dx * dx);
-  st = finish(&l2, p, (size_t)-1);
-  if (st) {
-    vsph_particles_free(p);
-    return st;
-  }
-  *out = p;
-  return VSPH_OK;
+  return grid(lp, 2.0 * radius, nacross, radius, out);
 }
