@@ -302,7 +302,8 @@ static int vortex_claims(struct vsph_report *R, const struct finest *fi) {
         R, "Vortex patch: MGF converges with resolution (VI A)",
         "MGF close to the reference at R/dx = 100 (layout not stated)", ours,
         o_c > 0.8 && o_c > o_r + 0.3
-            ? "on a Cartesian disc; on rings MGF's lattice error (shear at "
+            ? "reproduced on a Cartesian disc; on rings MGF's lattice error "
+              "(shear at "
               "45 degrees to the local lattice) slows it (section 4)"
         : o_c > 0.8 ? "reproduced on both layouts"
                     : "not reproduced at these resolutions");
