@@ -182,6 +182,7 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
   if (st) return st;
   int pv_unstable = 0;
   double tpv = INFINITY, on_lo = INFINITY, on_hi = -INFINITY;
+  double on_fine = (double)NAN;
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 1, 0);
   for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
     if (!lr->ok[PVWF][k]) {
@@ -198,6 +199,7 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
       on_lo = fmin(on_lo, on);
       on_hi = fmax(on_hi, on);
     }
+    on_fine = on; /* the finest last */
   }
   if (st) return st;
   snprintf(ours, sizeof ours,
@@ -207,21 +209,27 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
            L->res[0], L->res[2], 100 * VSPH_REPORT_ONSET, on_lo, on_hi,
            pv_unstable, VSPH_REPORT_LADDER, pv_unstable ? tpv : (double)NAN);
   char verdict[256];
-  if (!isfinite(on_lo))
-    snprintf(verdict, sizeof verdict, "not reproduced at these resolutions");
+  /* judged at the finest resolution: a coarse run departs early from its
+   * own truncation error, not from pairing */
+  if (!isfinite(on_fine))
+    snprintf(verdict, sizeof verdict,
+             "not reproduced at L/dx = %zu: no departure", L->res[2]);
   else
     snprintf(verdict, sizeof verdict,
-             "%s: the onset, measured the paper's way, at t A0 = %.2f-%.2f "
-             "(the crash comes later)",
-             on_lo < 0.15 ? "reproduced" : "reproduced later", on_lo, on_hi);
+             "%s: at L/dx = %zu the dissipation departs at t A0 = %.2f, "
+             "the run is stopped later",
+             on_fine < 0.15 ? "reproduced"
+                            : "reproduced qualitatively, later than the "
+                              "paper's 0.1",
+             L->res[2], on_fine);
   st = vsph_report_claim(
       R, "PVWF on the stretching square becomes unstable (VI B)",
       "deviates after t A0 of about 0.1", ours, verdict);
   snprintf(ours, sizeof ours,
-           "fitted order %.2f over L/dx %zu-%zu against MGF at h/dx = 3 "
-           "extrapolated in h (L/dx %zu, %zu)",
+           "fitted order %.2f over L/dx %zu-%zu against MGF extrapolated "
+           "in h and h/dx (h/dx 2 and 3, L/dx %zu-%zu)",
            vsph_scaling_slope(lr->dx[MGF], lr->err[MGF], VSPH_REPORT_LADDER),
-           L->res[0], L->res[2], rr.res[0], rr.res[1]);
+           L->res[0], L->res[2], rr.res[0], rr.res[3]);
   const double order =
       vsph_scaling_slope(lr->dx[MGF], lr->err[MGF], VSPH_REPORT_LADDER);
   if (!st)
@@ -238,7 +246,7 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
   const double share_p = 1 - run[PVWF].Ek[run[PVWF].nrow - 1] / run[PVWF].Ek[0];
   const double share_r = 1 - rr.E[100] / rr.E[0];
   snprintf(ours, sizeof ours,
-           "reference (MGF at h/dx = 3, extrapolated in h) %.0f %%; at L/dx = "
+           "reference (MGF extrapolated in h and h/dx) %.0f %%; at L/dx = "
            "%zu: MGF %.0f %%, PVWF %.0f %%%s",
            100 * share_r, L->res[2], 100 * share_m, 100 * share_p,
            run[PVWF].ok ? "" : " (until PVWF was stopped)");

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../analysis/dissipation.h"
 #include "../common/consts.h"
 #include "../common/params.h"
 #include "../common/status.h"
@@ -300,14 +301,14 @@ int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all) {
   enum {
     N = (VSPH_REPORT_NSCENES + 1) * VSPH_VISCOUS_FORM_COUNT *
             VSPH_REPORT_LADDER +
-        2
+        4
   };
   struct vsph_report_runspec specs[N];
   size_t n = 0;
   /* the stretching square's reference runs */
   if (all || vsph_report_scene_on(R, 1)) {
     vsph_report_runs_reference_specs(R, &specs[n]);
-    n += 2;
+    n += 4;
   }
   /* the vortex patch's ladder again on a Cartesian disc (section 6) */
   const struct vsph_report_ladderdef *V = vsph_report_runs_ladder(R, 0, 0);
@@ -360,39 +361,76 @@ double vsph_report_runs_interp(const double *t, const double *y, size_t n,
   return y[a] + (y[b] - y[a]) * (x - t[a]) / (t[b] - t[a]);
 }
 
-const char *const vsph_report_runs_hdx3[2] = {"Solver:hdx=3", NULL};
+const char *const vsph_report_runs_hdx[2][2] = {{"Solver:hdx=2", NULL},
+                                                {"Solver:hdx=3", NULL}};
 
 void vsph_report_runs_reference_specs(const struct vsph_report *R,
-                                      struct vsph_report_runspec rs[2]) {
-  static const size_t quick[2] = {40, 80}, full[2] = {80, 160};
+                                      struct vsph_report_runspec rs[4]) {
+  /* h/dx = 2 at L/dx 30, 60 and h/dx = 3 at 40, 80 (full: twice these):
+   * h = 0.067, 0.033 and 0.075, 0.038 */
+  static const size_t res[2][2] = {{30, 60}, {40, 80}};
+  static const char *const tag[2] = {"hdx2", "hdx3"};
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 1, 0);
-  for (int k = 0; k < 2; k++) {
-    const struct vsph_report_runspec s = {L->scene,
-                                          "mgf",
-                                          R->full ? full[k] : quick[k],
-                                          L->t_end,
-                                          vsph_report_runs_hdx3,
-                                          "hdx3"};
-    rs[k] = s;
-  }
+  for (int r = 0; r < 2; r++)
+    for (int k = 0; k < 2; k++) {
+      const struct vsph_report_runspec s = {L->scene,
+                                            "mgf",
+                                            (R->full ? 2 : 1) * res[r][k],
+                                            L->t_end,
+                                            vsph_report_runs_hdx[r],
+                                            tag[r]};
+      rs[2 * r + k] = s;
+    }
+}
+
+double vsph_report_runs_extrapolate(double e[2][2], const double eps[2]) {
+  const double e2 = 2.0 * e[0][1] - e[0][0], e3 = 2.0 * e[1][1] - e[1][0];
+  return e3 - eps[1] * (e2 - e3) / (eps[0] - eps[1]);
+}
+
+/* MGF's lattice error of the dissipation of pure strain on the square
+ * lattice at h/dx (section 4; full support, independent of h). */
+static int lattice_error(double hdx, double *eps) {
+  struct vsph_dissipation_props dp;
+  struct vsph_dissipation_result d;
+  int st = vsph_dissipation_props_init(&dp, NULL);
+  dp.form = VSPH_VISCOUS_MGF;
+  dp.nacross = 160;
+  dp.hdx = hdx;
+  if (!st) st = vsph_dissipation_compute(&dp, &d);
+  *eps = d.lattice_error;
+  return st;
 }
 
 int vsph_report_runs_richardson(struct vsph_report *R,
                                 struct vsph_report_richardson *rr) {
-  struct vsph_report_runspec rs[2];
+  struct vsph_report_runspec rs[4];
   vsph_report_runs_reference_specs(R, rs);
   const double t_end = rs[0].t_end;
-  struct vsph_report_run ra, rb;
-  int st = vsph_report_runs_get(R, &rs[0], &ra);
-  if (!st) st = vsph_report_runs_get(R, &rs[1], &rb);
-  if (!st && (!ra.ok || !rb.ok))
-    VSPH_FAIL(VSPH_ELIB,
-              "the stretching square's reference runs (MGF, h/dx = 3) went "
-              "unstable");
+  struct vsph_report_run run[4];
+  memset(run, 0, sizeof run);
+  int st = VSPH_OK;
+  for (int k = 0; k < 4 && !st; k++) {
+    st = vsph_report_runs_get(R, &rs[k], &run[k]);
+    if (!st && !run[k].ok)
+      VSPH_FAIL(VSPH_ELIB,
+                "the stretching square's reference run %s went unstable",
+                run[k].dir);
+  }
+  if (!st) st = lattice_error(2.0, &rr->eps[0]);
+  if (!st) st = lattice_error(3.0, &rr->eps[1]);
+  rr->correction = 0.0;
   for (int k = 0; !st && k <= 100; k++) {
     rr->t[k] = t_end * k / 100.0;
-    rr->E[k] = 2.0 * vsph_report_runs_interp(rb.t, rb.Ek, rb.nrow, rr->t[k]) -
-               vsph_report_runs_interp(ra.t, ra.Ek, ra.nrow, rr->t[k]);
+    double e[2][2];
+    for (int r = 0; r < 2; r++)
+      for (int m = 0; m < 2; m++) {
+        const struct vsph_report_run *u = &run[2 * r + m];
+        e[r][m] = vsph_report_runs_interp(u->t, u->Ek, u->nrow, rr->t[k]);
+      }
+    rr->E[k] = vsph_report_runs_extrapolate(e, rr->eps);
+    rr->correction =
+        fmax(rr->correction, fabs(rr->E[k] - (2.0 * e[1][1] - e[1][0])));
   }
   /* its rate: centred differences inside, one-sided at the ends, O(dt^2)
    * and O(dt) with dt = t_end/100 */
@@ -401,12 +439,15 @@ int vsph_report_runs_richardson(struct vsph_report *R,
     rr->dE[k] = (rr->E[b] - rr->E[a]) / (rr->t[b] - rr->t[a]);
   }
   if (!st) {
-    rr->res[0] = rs[0].res;
-    rr->res[1] = rs[1].res;
-    rr->diss0 = 2.0 * vsph_report_runs_diss0(&rb) - vsph_report_runs_diss0(&ra);
+    rr->correction /= rr->E[0];
+    for (int k = 0; k < 4; k++) rr->res[k] = rs[k].res;
+    double d[2][2];
+    for (int r = 0; r < 2; r++)
+      for (int m = 0; m < 2; m++)
+        d[r][m] = vsph_report_runs_diss0(&run[2 * r + m]);
+    rr->diss0 = vsph_report_runs_extrapolate(d, rr->eps);
   }
-  vsph_report_runs_free(&ra);
-  vsph_report_runs_free(&rb);
+  for (int k = 0; k < 4; k++) vsph_report_runs_free(&run[k]);
   return st;
 }
 

@@ -270,7 +270,7 @@ static int scene_figures(struct vsph_report *R, int sc, char names[NFORM][96],
     if (!st && refcol[w])
       st = vsph_plot_add(
           &pl, names[0], refcol[w],
-          square ? "reference (MGF at h/dx 3, extrapolated in h)" : "reference",
+          square ? "reference (MGF extrapolated in h and h/dx)" : "reference",
           "lines dt 2 lw 2 lc 'black'");
     if (!st && w == 3) /* the viscous power, for scale */
       st = vsph_plot_add(&pl, names[0], "1:8", "|P_{visc}| (MGF), for scale",
@@ -390,11 +390,17 @@ int vsph_report_scenes_write(struct vsph_report *R) {
   struct vsph_report_richardson rr;
   if (!st && vsph_report_scene_on(R, 1)) {
     st = vsph_report_runs_richardson(R, &rr);
-    vsph_text_set(&R->tv, "ref_res", "L/dx = %zu and %zu", rr.res[0],
-                  rr.res[1]);
+    vsph_text_set(&R->tv, "ref_res",
+                  "L/dx = %zu and %zu at h/dx = 2, %zu and %zu at h/dx = 3",
+                  rr.res[0], rr.res[1], rr.res[2], rr.res[3]);
+    vsph_text_set(&R->tv, "ref_eps", "%+.2f %% and %+.2f %%", 100 * rr.eps[0],
+                  100 * rr.eps[1]);
+    vsph_text_set(&R->tv, "ref_corr", "%.2f", 100 * rr.correction);
     vsph_text_set(&R->tv, "ref_d0", "%+.2f", 100 * rr.diss0);
   } else {
-    vsph_text_set(&R->tv, "ref_res", "see the full report");
+    vsph_text_set(&R->tv, "ref_res", "see the report with the square");
+    vsph_text_set(&R->tv, "ref_eps", "n/a");
+    vsph_text_set(&R->tv, "ref_corr", "n/a");
     vsph_text_set(&R->tv, "ref_d0", "n/a");
   }
   if (!st) st = vsph_report_say(R, "scenes.intro");

@@ -86,12 +86,33 @@ START_TEST(test_loss_ratio) {
 }
 END_TEST
 
+/* The square's reference extrapolation recovers E* exactly from data of
+ * the model it assumes, E(h, r) = E* + a h + b eps(r) (first order in h,
+ * error proportional to the lattice error at h/dx = r), for any a and b;
+ * and it is the identity when the data carry no error. Rounding only. */
+START_TEST(test_extrapolate) {
+  const double eps[2] = {-0.0115, -0.00195}, Es = 0.0833;
+  const double h[2][2] = {{0.0667, 0.0333}, {0.075, 0.0375}};
+  for (int t = 0; t < 3; t++) {
+    const double a = 0.3 * (t + 1), b = -2.1 + t;
+    double e[2][2];
+    for (int r = 0; r < 2; r++)
+      for (int m = 0; m < 2; m++)
+        e[r][m] = Es + a * (m ? h[r][0] / 2 : h[r][0]) + b * eps[r];
+    ck_assert_double_eq_tol(vsph_report_runs_extrapolate(e, eps), Es, 1e-13);
+  }
+  double flat[2][2] = {{Es, Es}, {Es, Es}};
+  ck_assert_double_eq_tol(vsph_report_runs_extrapolate(flat, eps), Es, 1e-15);
+}
+END_TEST
+
 Suite *vsph_baseline_suite(void) {
   Suite *s = suite_create("baseline");
   TCase *tc = tcase_create("quick report");
   tcase_set_timeout(tc, 180);
   tcase_add_test(tc, test_baseline);
   tcase_add_test(tc, test_loss_ratio);
+  tcase_add_test(tc, test_extrapolate);
   suite_add_tcase(s, tc);
   return s;
 }
