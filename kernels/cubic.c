@@ -23,12 +23,19 @@ static double df_cubic(double q) {
   return 0.0;
 }
 
+static double d2f_cubic(double q) {
+  if (q < 1.0) return -3.0 + 4.5 * q;
+  if (q < 2.0) return 1.5 * (2.0 - q);
+  return 0.0;
+}
+
 const struct vsph_kernel_type vsph_cubic_type = {
     .name = "cubic",
     .kappa = 2.0,
     .sigma = {2.0 / 3.0, 10.0 / (7.0 * VSPH_PI), 1.0 / VSPH_PI},
     .f = {f_cubic, f_cubic, f_cubic},
     .df = {df_cubic, df_cubic, df_cubic},
+    .d2f = {d2f_cubic, d2f_cubic, d2f_cubic},
     .dfq = {vsph_kernel_dfq_cubic, vsph_kernel_dfq_cubic,
             vsph_kernel_dfq_cubic},
     .dfq_id = {VSPH_KERNEL_DFQ_CUBIC, VSPH_KERNEL_DFQ_CUBIC,

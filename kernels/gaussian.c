@@ -15,6 +15,10 @@ static double df_gauss(double q) {
   return q < 3.0 ? -2.0 * q * exp(-q * q) : 0.0;
 }
 
+static double d2f_gauss(double q) {
+  return q < 3.0 ? (4.0 * q * q - 2.0) * exp(-q * q) : 0.0;
+}
+
 /* sigma_d = 1 / int_{|q|<3} (e^{-q^2} - e^{-9}) d^d q, in closed form:
  *   d=1: sqrt(pi) erf(3) - 6 e^{-9}
  *   d=2: pi (1 - 10 e^{-9})            (THEORY.md)
@@ -28,6 +32,7 @@ const struct vsph_kernel_type vsph_gaussian_type = {
               1.0 / (VSPH_PI * VSPH_SQRTPI * ERF3 - 42.0 * VSPH_PI * E9)},
     .f = {f_gauss, f_gauss, f_gauss},
     .df = {df_gauss, df_gauss, df_gauss},
+    .d2f = {d2f_gauss, d2f_gauss, d2f_gauss},
     .dfq = {vsph_kernel_dfq_gaussian, vsph_kernel_dfq_gaussian,
             vsph_kernel_dfq_gaussian},
     .dfq_id = {VSPH_KERNEL_DFQ_GAUSSIAN, VSPH_KERNEL_DFQ_GAUSSIAN,

@@ -34,6 +34,7 @@ struct vsph_kernel_type {
   double sigma[3];        /*!< normalisation sigma_d for d = 1, 2, 3 */
   vsph_kernel_fn *f[3];   /*!< un-normalised shape f_d(q), 0 for q>=kappa */
   vsph_kernel_fn *df[3];  /*!< df_d/dq */
+  vsph_kernel_fn *d2f[3]; /*!< d^2f_d/dq^2 (the direct Laplacian, VISC-02) */
   vsph_kernel_fn *dfq[3]; /*!< (df_d/dq)/q from q^2: the loops need W'/s */
   int dfq_id[3];          /*!< the same as a vsph_kernel_dfq_id */
   const char *reference;  /*!< source of the shape and constants */
@@ -68,6 +69,12 @@ static inline double vsph_kernel_w(const struct vsph_kernel_type *k, int dim,
 static inline double vsph_kernel_dw(const struct vsph_kernel_type *k, int dim,
                                     double q) {
   return k->sigma[dim - 1] * k->df[dim - 1](q);
+}
+
+/** @brief Normalised second derivative w''(q) in dimension dim. */
+static inline double vsph_kernel_d2w(const struct vsph_kernel_type *k, int dim,
+                                     double q) {
+  return k->sigma[dim - 1] * k->d2f[dim - 1](q);
 }
 
 /* ------------------------------------------------ inline, for the loops */

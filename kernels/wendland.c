@@ -54,12 +54,35 @@ static double df_c4_1d(double q) {
   return -3.5 * q * t4 * (2.0 * q + 1.0);
 }
 
+/* Second derivatives, by differentiating the df above once more. */
+static double d2f_c2(double q) {
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q;
+  return 5.0 * t * t * (2.0 * q - 1.0);
+}
+static double d2f_c2_1d(double q) {
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q;
+  return 3.0 * t * (1.5 * q - 1.0);
+}
+static double d2f_c4(double q) {
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q, t4 = t * t * t * t;
+  return 7.0 / 3.0 * t4 * (17.5 * q * q - 4.0 * q - 2.0);
+}
+static double d2f_c4_1d(double q) {
+  if (q >= 2.0) return 0.0;
+  const double t = 1.0 - 0.5 * q;
+  return 3.5 * t * t * t * (6.0 * q * q - 1.5 * q - 1.0);
+}
+
 const struct vsph_kernel_type vsph_wendland_c2_type = {
     .name = "wendland2",
     .kappa = 2.0,
     .sigma = {5.0 / 8.0, 7.0 / (4.0 * VSPH_PI), 21.0 / (16.0 * VSPH_PI)},
     .f = {f_c2_1d, f_c2, f_c2},
     .df = {df_c2_1d, df_c2, df_c2},
+    .d2f = {d2f_c2_1d, d2f_c2, d2f_c2},
     .dfq = {vsph_kernel_dfq_c2_1d, vsph_kernel_dfq_c2, vsph_kernel_dfq_c2},
     .dfq_id = {VSPH_KERNEL_DFQ_C2_1D, VSPH_KERNEL_DFQ_C2, VSPH_KERNEL_DFQ_C2},
     .reference = "Wendland C2 (Wendland 1995), support 2h",
@@ -71,6 +94,7 @@ const struct vsph_kernel_type vsph_wendland_c4_type = {
     .sigma = {3.0 / 4.0, 9.0 / (4.0 * VSPH_PI), 495.0 / (256.0 * VSPH_PI)},
     .f = {f_c4_1d, f_c4, f_c4},
     .df = {df_c4_1d, df_c4, df_c4},
+    .d2f = {d2f_c4_1d, d2f_c4, d2f_c4},
     .dfq = {vsph_kernel_dfq_c4_1d, vsph_kernel_dfq_c4, vsph_kernel_dfq_c4},
     .dfq_id = {VSPH_KERNEL_DFQ_C4_1D, VSPH_KERNEL_DFQ_C4, VSPH_KERNEL_DFQ_C4},
     .reference = "Wendland C4 (Wendland 1995), support 2h",

@@ -56,6 +56,15 @@ START_TEST(test_derivative_fd) {
     /* centred difference: error ~ eps^2 w''' / 6 ~ 1e-10, rounding
      * ~ 1e-16 / eps = 1e-11; 1e-8 of the slope scale covers both */
     ck_assert_double_eq_tol(vsph_kernel_dw(k, dim, q), fd, 1e-8 * scale);
+    /* and w'' against a centred difference of w' (same error budget on
+     * the scale of w'') */
+    double scale2 = 0.0;
+    for (double p = 0.0; p < k->kappa; p += 0.01)
+      scale2 = fmax(scale2, fabs(vsph_kernel_d2w(k, dim, p)));
+    const double fd2 =
+        (vsph_kernel_dw(k, dim, q + eps) - vsph_kernel_dw(k, dim, q - eps)) /
+        (2.0 * eps);
+    ck_assert_double_eq_tol(vsph_kernel_d2w(k, dim, q), fd2, 1e-8 * scale2);
   }
 }
 END_TEST
