@@ -9,6 +9,7 @@
 #include "args.h"
 #include "cmd_bench.h"
 #include "cmd_dissipation.h"
+#include "cmd_laplacian.h"
 #include "cmd_report.h"
 #include "cmd_run.h"
 #include "cmd_scaling.h"
@@ -27,6 +28,8 @@ static const struct command commands[] = {
      "1/h truncation-error scaling at the surface; interior convergence"},
     {"dissipation", vsph_cmd_dissipation_main,
      "dissipation integral of MGF, MEAF or PVWF on a disc or square"},
+    {"laplacian", vsph_cmd_laplacian_main,
+     "Laplacian patch test of the forms VISC-01..04 (Zheng et al. 2018)"},
     {"run", vsph_cmd_run_main, "run the free-surface WCSPH solver on a scene"},
     {"scenes", vsph_cmd_run_scenes,
      "list the scenes, their parameters and defaults"},

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "../analysis/dissipation.h"
+#include "../analysis/laplacian.h"
 #include "../analysis/moments.h"
 #include "../analysis/scaling.h"
 #include "../common/status.h"
@@ -181,5 +182,29 @@ cJSON *vsph_json_dissipation(const struct vsph_dissipation_props *dp,
   cJSON_AddNumberToObject(o, "momentum", r->momentum);
   cJSON_AddNumberToObject(o, "angular", r->angular);
   cJSON_AddNumberToObject(o, "n_fallback", (double)r->n_fallback);
+  return o;
+}
+
+cJSON *vsph_json_laplacian(const struct vsph_laplacian_props *lp,
+                           const struct vsph_laplacian_result *r) {
+  cJSON *o = cJSON_CreateObject();
+  cJSON_AddStringToObject(o, "form", vsph_laplacian_form_name(lp->form));
+  cJSON_AddStringToObject(o, "field", vsph_laplacian_field_name(lp->field));
+  cJSON_AddStringToObject(o, "kernel", lp->kernel->name);
+  cJSON_AddNumberToObject(o, "dim", lp->dim);
+  cJSON_AddNumberToObject(o, "n", (double)lp->n);
+  cJSON_AddNumberToObject(o, "hdx", lp->hdx);
+  cJSON_AddNumberToObject(o, "perturb", lp->perturb);
+  cJSON_AddNumberToObject(o, "seed", (double)lp->seed);
+  cJSON_AddNumberToObject(o, "eta", lp->eta);
+  cJSON_AddNumberToObject(o, "n_eval", (double)r->n_eval);
+  cJSON_AddNumberToObject(o, "n_total", (double)r->n_total);
+  cJSON_AddNumberToObject(o, "dx", r->dx);
+  cJSON_AddNumberToObject(o, "h", r->h);
+  vsph_json_number(o, "err_literal", r->err_literal);
+  vsph_json_number(o, "err_exact", r->err_exact);
+  vsph_json_number(o, "err_paper", r->err_paper);
+  cJSON_AddNumberToObject(o, "abs_max", r->abs_max);
+  cJSON_AddNumberToObject(o, "ref_max", r->ref_max);
   return o;
 }

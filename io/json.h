@@ -11,6 +11,8 @@ struct vsph_scaling_props;
 struct vsph_scaling_result;
 struct vsph_dissipation_props;
 struct vsph_dissipation_result;
+struct vsph_laplacian_props;
+struct vsph_laplacian_result;
 
 /** @file json.h
  *  @brief JSON through cJSON: arrays of numbers (NaN and infinities become
@@ -62,5 +64,10 @@ cJSON *vsph_json_scaling(const struct vsph_scaling_props *sp,
  *  result (non-finite values as null). */
 cJSON *vsph_json_dissipation(const struct vsph_dissipation_props *dp,
                              const struct vsph_dissipation_result *r);
+
+/** @brief `vsph laplacian --json`: the props and every field of the
+ *  result. */
+cJSON *vsph_json_laplacian(const struct vsph_laplacian_props *lp,
+                           const struct vsph_laplacian_result *r);
 
 #endif /* VSPH_IO_JSON_H */

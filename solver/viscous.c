@@ -106,9 +106,7 @@ void vsph_viscous_ws_free(struct vsph_viscous_ws *ws) {
   free(ws);
 }
 
-/* Inverse of a symmetric positive semi-definite d x d matrix (row-major);
- * returns 0 and leaves inv untouched when det <= tol (tr/d)^d. */
-static int invert_sym(int dim, const double *b, double *inv, double tol) {
+int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol) {
   double tr = 0.0;
   for (int a = 0; a < dim; a++) tr += b[a * dim + a];
   double scale = tr / dim;
@@ -195,7 +193,7 @@ VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
     B[e] = Bs[e];
     Mg[e] = Ms[e];
   }
-  ws->fallback[i] = !invert_sym(dim, B, L, vp->det_tol);
+  ws->fallback[i] = !vsph_viscous_invert_sym(dim, B, L, vp->det_tol);
   if (ws->fallback[i])
     for (int a = 0; a < dim; a++) L[a * dim + a] = 1.0;
   /* (grad u)_ab = sum_j V_j du_a (L grad_i W)_b = (Mg L^T)_ab, L symmetric */

@@ -77,6 +77,12 @@ struct vsph_viscous_ws *vsph_viscous_ws_alloc(size_t cap, int dim);
 /** @brief Free a workspace; NULL is a no-op. */
 void vsph_viscous_ws_free(struct vsph_viscous_ws *ws);
 
+/** @brief Inverse of a symmetric positive semi-definite @p dim x @p dim
+ *  matrix @p b (row-major) into @p inv: PVWF's L and the renormalisation
+ *  Gamma of the Laplacian forms share it. Returns 0 and leaves @p inv
+ *  untouched when det <= tol (tr/d)^d (singular: the caller falls back). */
+int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol);
+
 /** @brief PVWF first pass: L_i, the renormalised grad u, D_i, T_i, and
  *  A_i = T_i L_i for every particle (into @p ws), and the count of
  *  particles whose L fell back to the identity. Other forms: no-op.

@@ -124,6 +124,13 @@ static const char *const bad_inputs[] = {
     "run vortex-patch --set Scene:layout=hex",
     "report --only scenes:nowhere",
     "report --only tensors:vortex-patch",
+    /* issue 11 */
+    "laplacian --form visc05",
+    "laplacian --dim 4",
+    "laplacian --perturb 0.6",
+    "laplacian --field cubic",
+    "laplacian --n 1",
+    "laplacian --kernel spline",
     "",
 };
 

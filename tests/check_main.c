@@ -30,6 +30,7 @@ int main(void) {
   srunner_add_suite(sr, vsph_pair_suite());
   srunner_add_suite(sr, vsph_scaling_suite());
   srunner_add_suite(sr, vsph_dissipation_suite());
+  srunner_add_suite(sr, vsph_laplacian_suite());
   srunner_add_suite(sr, vsph_poisson_suite());
   srunner_add_suite(sr, vsph_references_suite());
   srunner_add_suite(sr, vsph_solver_suite());

@@ -12,6 +12,7 @@ Suite *vsph_viscous_suite(void);
 Suite *vsph_pair_suite(void);
 Suite *vsph_scaling_suite(void);
 Suite *vsph_dissipation_suite(void);
+Suite *vsph_laplacian_suite(void);
 Suite *vsph_poisson_suite(void);
 Suite *vsph_references_suite(void);
 Suite *vsph_solver_suite(void);

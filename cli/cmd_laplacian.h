@@ -1,0 +1,6 @@
+#ifndef VSPH_CLI_CMD_LAPLACIAN_H
+#define VSPH_CLI_CMD_LAPLACIAN_H
+/** @file cmd_laplacian.h @brief `vsph laplacian`. */
+/** @brief Entry point; returns the process exit status. */
+int vsph_cmd_laplacian_main(int argc, char **argv);
+#endif /* VSPH_CLI_CMD_LAPLACIAN_H */
