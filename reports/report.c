@@ -46,6 +46,8 @@ static const struct part PARTS[] = {
     {"speed", vsph_report_speed_write, 0, "wall time against error"},
     {"stability", vsph_report_stability_write, 0,
      "hard cases: PVWF, high Re, perturbed start, low c0, CFL"},
+    {"patch", vsph_report_patch_write, 1,
+     "Laplacian patch tests of VISC-01..04 beside Zheng et al. (2018)"},
     {"claims", vsph_report_claims_write, 0,
      "the paper's claims beside our figures"},
 };

@@ -269,5 +269,9 @@ int vsph_report_convergence_write(struct vsph_report *R);
 int vsph_report_speed_write(struct vsph_report *R);
 int vsph_report_stability_write(struct vsph_report *R);
 int vsph_report_claims_write(struct vsph_report *R);
+int vsph_report_patch_write(struct vsph_report *R);
+
+/* The claims of Zheng, Ma & Shao (2018) for section 9 (report_patch.c). */
+int vsph_report_patch_claims(struct vsph_report *R);
 
 #endif /* VSPH_REPORTS_REPORT_INTERNAL_H */
