@@ -1,6 +1,7 @@
 #ifndef VSPH_CLI_ARGS_H
 #define VSPH_CLI_ARGS_H
 
+#include <signal.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -76,6 +77,11 @@ int vsph_args_parse(const struct vsph_args_cmd *c, int argc, char **argv,
 /** @brief Install the CLI error handler: it keeps the first library message
  *  so the command can print exactly one line. */
 void vsph_args_install_handler(void);
+
+/** @brief Catch SIGINT and SIGTERM: the signal's number is stored in the
+ *  flag returned, which the long commands pass on as their stop request
+ *  (the run ends after its current step; exit status 128 + signal). */
+const volatile sig_atomic_t *vsph_args_catch_stop(void);
 
 /** @brief Report a failed library call as one line (the first library
  *  message since the last report, else the status's name); returns 2 for

@@ -12,10 +12,6 @@
 
 static const char *const CMD = "report";
 
-/* SIGINT/SIGTERM: the run in progress stops after its step, uncached. */
-static volatile sig_atomic_t stop_signal;
-static void on_signal(int sig) { stop_signal = sig; }
-
 int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
   int full = 0;
@@ -55,7 +51,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
   const int rc = vsph_args_parse(&c, argc, argv, NULL);
   if (rc >= 0) return vsph_args_finish(CMD, rc);
   struct vsph_report_props rp = {
-      .dir = dir, .full = full, .parts = 0, .stop = &stop_signal};
+      .dir = dir, .full = full, .parts = 0, .stop = NULL};
   if (only) {
     char buf[256];
     if (strlen(only) >= sizeof buf)
@@ -90,19 +86,15 @@ int vsph_cmd_report_main(int argc, char **argv) {
     if (!rp.parts)
       return vsph_args_fail(CMD, "--only names no part (see --help)");
   }
-  struct sigaction sa;
-  memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_signal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, NULL);
-  sigaction(SIGTERM, &sa, NULL);
+  /* SIGINT/SIGTERM: the run in progress stops after its step, uncached */
+  const volatile sig_atomic_t *stop = rp.stop = vsph_args_catch_stop();
   const int st = vsph_report_write(&rp);
   if (st == VSPH_EINTR) {
     fprintf(stderr,
             "vsph report: interrupted by signal %d; finished runs "
             "are cached, rerun to go on\n",
-            (int)stop_signal);
-    return 128 + (int)stop_signal;
+            (int)*stop);
+    return 128 + (int)*stop;
   }
   return st ? vsph_args_status(CMD, st) : vsph_args_finish(CMD, 0);
 }

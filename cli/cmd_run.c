@@ -37,19 +37,6 @@ static const char ABOUT[] =
     "A run that goes unstable stops cleanly, keeps its output and is marked\n"
     "unstable in run.json (exit status 0: stability is a result).";
 
-/* SIGINT/SIGTERM: the run stops after the current step (io/rundir). */
-static volatile sig_atomic_t stop_signal;
-static void on_signal(int sig) { stop_signal = sig; }
-
-static void catch_signals(void) {
-  struct sigaction sa;
-  memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_signal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, NULL);
-  sigaction(SIGTERM, &sa, NULL);
-}
-
 int vsph_cmd_run_main(int argc, char **argv) {
   const char *out_dir = NULL;
   size_t threads = 0;
@@ -87,7 +74,8 @@ int vsph_cmd_run_main(int argc, char **argv) {
     return rc;
   }
   if (threads > 0) omp_set_num_threads((int)threads);
-  catch_signals();
+  /* SIGINT/SIGTERM: the run stops after the current step (io/rundir) */
+  const volatile sig_atomic_t *stop = vsph_args_catch_stop();
   /* the command line as given, for run.json (arguments with a space or a
    * quote are single-quoted) */
   char command[2048];
@@ -103,7 +91,7 @@ int vsph_cmd_run_main(int argc, char **argv) {
   command[len] = '\0';
   const struct vsph_rundir_opts opts = {.dir = out_dir,
                                         .progress = quiet ? NULL : stderr,
-                                        .stop = &stop_signal,
+                                        .stop = stop,
                                         .command = command};
   struct vsph_rundir_result res;
   const int st = vsph_rundir_execute(prm, argv[1], &opts, &res);
@@ -112,8 +100,8 @@ int vsph_cmd_run_main(int argc, char **argv) {
     fprintf(stderr,
             "vsph run: interrupted by signal %d at t = %.6g (output kept in "
             "%s, run.json says interrupted)\n",
-            (int)stop_signal, res.t, res.dir);
-    return 128 + (int)stop_signal;
+            (int)*stop, res.t, res.dir);
+    return 128 + (int)*stop;
   }
   if (st) return vsph_args_status(CMD, st);
   if (quiet && res.unstable)

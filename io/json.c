@@ -9,6 +9,7 @@
 #include "../analysis/moments.h"
 #include "../analysis/scaling.h"
 #include "../common/status.h"
+#include "../common/sysinfo.h"
 #include "../kernels/kernel.h"
 #include "../solver/lattice.h"
 #include "../solver/viscous.h"
@@ -27,6 +28,19 @@ void vsph_json_number(cJSON *obj, const char *key, double v) {
     cJSON_AddNumberToObject(obj, key, v);
   else
     cJSON_AddNullToObject(obj, key);
+}
+
+void vsph_json_load(cJSON *obj, const double start[3], const double end[3]) {
+  const char *when[2] = {"load_average_start", "load_average_end"};
+  const double *load[2] = {start, end};
+  for (int w = 0; w < 2; w++) {
+    cJSON *la = cJSON_AddArrayToObject(obj, when[w]);
+    for (int k = 0; la && k < 3; k++)
+      cJSON_AddItemToArray(la, isfinite(load[w][k])
+                                   ? cJSON_CreateNumber(load[w][k])
+                                   : cJSON_CreateNull());
+  }
+  cJSON_AddStringToObject(obj, "omp_wait_policy", vsph_sysinfo_wait_policy());
 }
 
 void vsph_json_moments(cJSON *obj, const struct vsph_moments *m) {

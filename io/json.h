@@ -25,6 +25,11 @@ cJSON *vsph_json_array(const double *v, size_t n);
 /** @brief Add a number to @p obj, or null when it is not finite. */
 void vsph_json_number(cJSON *obj, const char *key, double v);
 
+/** @brief The machine's state beside a timing: "load_average_start" and
+ *  "load_average_end" (1, 5, 15 min; null where unknown) from @p start
+ *  and @p end, and "omp_wait_policy". */
+void vsph_json_load(cJSON *obj, const double start[3], const double end[3]);
+
 /** @brief The tensors as nested arrays: F d x d x d, G d^4, N d, M d x d,
  *  added to @p obj under the keys "F", "G", "N", "M". */
 void vsph_json_moments(cJSON *obj, const struct vsph_moments *m);

@@ -81,15 +81,7 @@ static int write_run_json(const struct vsph_run *run,
   /* a timing is read beside the machine's state: CPU time (all threads),
    * the load averages before and after, the OpenMP wait policy */
   vsph_json_number(o, "cpu_s", res->cpu_s);
-  const char *when[2] = {"load_average_start", "load_average_end"};
-  for (int w = 0; w < 2; w++) {
-    cJSON *la = cJSON_AddArrayToObject(o, when[w]);
-    for (int k = 0; la && k < 3; k++)
-      cJSON_AddItemToArray(la, isfinite(res->load[w][k])
-                                   ? cJSON_CreateNumber(res->load[w][k])
-                                   : cJSON_CreateNull());
-  }
-  cJSON_AddStringToObject(o, "omp_wait_policy", vsph_sysinfo_wait_policy());
+  vsph_json_load(o, res->load[0], res->load[1]);
   vsph_json_number(o, "pairs_per_s",
                    res->wall_s > 0 ? res->pairs / res->wall_s : (double)NAN);
   vsph_json_number(o, "particle_steps_per_s",

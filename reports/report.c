@@ -291,15 +291,7 @@ static int write_run_json(const struct vsph_report *R, unsigned long want,
   cJSON_AddItemToObject(o, "wall_s", w);
   cJSON_AddNumberToObject(o, "wall_total_s", total);
   vsph_json_number(o, "cpu_total_s", vsph_sysinfo_cpu_s());
-  const char *when[2] = {"load_average_start", "load_average_end"};
-  for (int k = 0; k < 2; k++) {
-    cJSON *la = cJSON_AddArrayToObject(o, when[k]);
-    for (int m = 0; la && m < 3; m++)
-      cJSON_AddItemToArray(la, isfinite(R->load[k][m])
-                                   ? cJSON_CreateNumber(R->load[k][m])
-                                   : cJSON_CreateNull());
-  }
-  cJSON_AddStringToObject(o, "omp_wait_policy", vsph_sysinfo_wait_policy());
+  vsph_json_load(o, R->load[0], R->load[1]);
   return vsph_json_write(o, R->dir, "run.json");
 }
 

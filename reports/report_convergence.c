@@ -75,11 +75,6 @@ static int vortex_layouts(struct vsph_report *R) {
   struct vsph_report_layouts ly;
   int st = vsph_report_runs_layouts(R, &ly);
   if (st) return st;
-  const double *dx = ly.dx;
-  double(*err)[NFORM][VSPH_REPORT_LADDER] = ly.err;
-  double(*d0)[NFORM][VSPH_REPORT_LADDER] = ly.d0;
-  double(*tu)[NFORM][VSPH_REPORT_LADDER] = ly.tu;
-  int(*ok)[NFORM][VSPH_REPORT_LADDER] = ly.ok;
   if ((st = vsph_report_say(R, "convergence.layout_head"))) return st;
   struct vsph_plot pl;
   vsph_plot_init(&pl, R->dir, "fig_convergence_vortex-layouts",
@@ -100,24 +95,24 @@ static int vortex_layouts(struct vsph_report *R) {
                               "abs_initial_dissipation_error,stable");
       if (!c) return VSPH_EIO;
       for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
-        fprintf(c, "%.6e,%.6e,%.6e,%.6e,%d\n", dx[k], err[l][f][k], d0[l][f][k],
-                fabs(d0[l][f][k]), ok[l][f][k]);
+        fprintf(c, "%.6e,%.6e,%.6e,%.6e,%d\n", ly.dx[k], ly.err[l][f][k],
+                ly.d0[l][f][k], fabs(ly.d0[l][f][k]), ly.ok[l][f][k]);
         char stable[64];
-        if (ok[l][f][k])
+        if (ly.ok[l][f][k])
           snprintf(stable, sizeof stable, "yes");
         else
           snprintf(stable, sizeof stable, "no: stopped at t = %.3g s",
-                   tu[l][f][k]);
+                   ly.tu[l][f][k]);
         fprintf(R->md, "| %s | %s | %zu | %.3e | %+.3e | %s |\n", lay[l],
-                vsph_viscous_name(f), L->res[k], err[l][f][k], d0[l][f][k],
-                stable);
+                vsph_viscous_name(f), L->res[k], ly.err[l][f][k],
+                ly.d0[l][f][k], stable);
       }
       double a0[VSPH_REPORT_LADDER];
-      for (int k = 0; k < VSPH_REPORT_LADDER; k++) a0[k] = fabs(d0[l][f][k]);
+      for (int k = 0; k < VSPH_REPORT_LADDER; k++) a0[k] = fabs(ly.d0[l][f][k]);
       fprintf(R->md, "| %s | %s | order | **%.2f** | **%.2f** | |\n", lay[l],
               vsph_viscous_name(f),
-              vsph_scaling_slope(dx, err[l][f], VSPH_REPORT_LADDER),
-              vsph_scaling_slope(dx, a0, VSPH_REPORT_LADDER));
+              vsph_scaling_slope(ly.dx, ly.err[l][f], VSPH_REPORT_LADDER),
+              vsph_scaling_slope(ly.dx, a0, VSPH_REPORT_LADDER));
       if ((st = vsph_csv_close(c, R->dir, file))) break;
       snprintf(lab, sizeof lab, "%s, %s", vsph_viscous_label(f), lay[l]);
       vsph_report_runs_style(style, sizeof style, f, l ? " dt 2" : "");

@@ -217,7 +217,7 @@ static int angle_figure(struct vsph_report *R) {
                           "angle_deg,mgf_lattice,meaf_lattice,pvwf_lattice");
   if (!c) return VSPH_EIO;
   int st = VSPH_OK;
-  double at[NFORM][2]; /* at 0 and 45 degrees */
+  double mgf0 = 0.0, mgf45 = 0.0; /* MGF at 0 and 45 degrees, for the text */
   for (int a = 0; a < NANG && !st; a++) {
     const double deg = 5.0 * a;
     fprintf(c, "%g", deg);
@@ -230,8 +230,8 @@ static int angle_figure(struct vsph_report *R) {
       if (!st) st = vsph_dissipation_compute(&dp, &r);
       if (st) break;
       fprintf(c, ",%.6e", r.lattice_error);
-      if (a == 0) at[form][0] = r.lattice_error;
-      if (a == 9) at[form][1] = r.lattice_error;
+      if (form == VSPH_VISCOUS_MGF && a == 0) mgf0 = r.lattice_error;
+      if (form == VSPH_VISCOUS_MGF && a == 9) mgf45 = r.lattice_error;
     }
     fprintf(c, "\n");
   }
@@ -240,8 +240,8 @@ static int angle_figure(struct vsph_report *R) {
     return st;
   }
   if ((st = vsph_csv_close(c, R->dir, name))) return st;
-  vsph_text_set(&R->tv, "mgf0", "%+.2f", 100 * at[VSPH_VISCOUS_MGF][0]);
-  vsph_text_set(&R->tv, "mgf45", "%+.2f", 100 * at[VSPH_VISCOUS_MGF][1]);
+  vsph_text_set(&R->tv, "mgf0", "%+.2f", 100 * mgf0);
+  vsph_text_set(&R->tv, "mgf45", "%+.2f", 100 * mgf45);
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
   if ((st = vsph_report_say(R, "dissipation.angle_head"))) return st;
   struct vsph_plot pl;

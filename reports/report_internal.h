@@ -41,6 +41,33 @@ struct vsph_report_ladder {
   double t_unstable[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
 };
 
+/* The stretching square's reference for t > 0, free of MGF's lattice
+ * bias at h/dx = 4/3 (-6 %, section 4), extrapolated in both h and h/dx:
+ * MGF at h/dx = 2 and 3, each extrapolated in h by first-order Richardson
+ * 2 E(L/dx) - E(L/dx / 2) over two resolutions (which removes the surface
+ * deficit, first order in h/L), then to h/dx -> infinity with the error
+ * taken proportional to the measured lattice error eps(h/dx) of section 4
+ * (-1.2 % and -0.2 %); on 101 equally spaced times, with its rate dE/dt
+ * by differences. */
+struct vsph_report_richardson {
+  double t[101], E[101], dE[101];
+  size_t res[4];     /* L/dx: h/dx = 2 (two), then h/dx = 3 (two) */
+  double eps[2];     /* lattice errors at h/dx = 2 and 3 */
+  double correction; /* largest h/dx step, max |E - E(h/dx = 3)| / E(0) */
+  double diss0;      /* its initial dissipation error, extrapolated alike */
+};
+
+/* The vortex patch's ladder on both disc layouts (0 rings, 1 Cartesian):
+ * per formulation and resolution the decay error, the initial dissipation
+ * error, the stability verdict and stop time (convergence and claims). */
+struct vsph_report_layouts {
+  double dx[VSPH_REPORT_LADDER]; /* 1 / (R/dx) */
+  double err[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  double d0[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  double tu[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  int ok[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+};
+
 /* One row of the claims table. */
 struct vsph_report_claim {
   char claim[256], paper[256], ours[320], verdict[256];
@@ -59,6 +86,10 @@ struct vsph_report {
   size_t nclaims, cap_claims;
   struct vsph_report_ladder ladder[VSPH_REPORT_NSCENES]; /* memo */
   int have_ladder[VSPH_REPORT_NSCENES];
+  struct vsph_report_richardson rr; /* memo: the square's reference */
+  int have_rr;
+  struct vsph_report_layouts layouts; /* memo: the vortex disc layouts */
+  int have_layouts;
   struct vsph_text_vars tv;          /* scratch values for the prose blocks */
   const volatile sig_atomic_t *stop; /* stop request, or NULL */
   double load[2][3]; /* load averages before and after (run.json) */
@@ -134,16 +165,7 @@ int vsph_report_runs_prefetch(struct vsph_report *R,
  * runs carry the tag "cartesian"). */
 extern const char *const vsph_report_runs_cartesian[2];
 
-/* The vortex patch's ladder on both disc layouts (0 rings, 1 Cartesian):
- * per formulation and resolution the decay error, the initial dissipation
- * error, the stability verdict and stop time (convergence and claims). */
-struct vsph_report_layouts {
-  double dx[VSPH_REPORT_LADDER]; /* 1 / (R/dx) */
-  double err[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
-  double d0[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
-  double tu[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
-  int ok[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
-};
+/* The layouts' figures (memoised in R; the runs through the cache). */
 int vsph_report_runs_layouts(struct vsph_report *R,
                              struct vsph_report_layouts *out);
 
@@ -155,21 +177,7 @@ int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all);
 /* Free a run's loaded data. */
 void vsph_report_runs_free(struct vsph_report_run *r);
 
-/* The stretching square's reference for t > 0, free of MGF's lattice
- * bias at h/dx = 4/3 (-6 %, section 4), extrapolated in both h and h/dx:
- * MGF at h/dx = 2 and 3, each extrapolated in h by first-order Richardson
- * 2 E(L/dx) - E(L/dx / 2) over two resolutions (which removes the surface
- * deficit, first order in h/L), then to h/dx -> infinity with the error
- * taken proportional to the measured lattice error eps(h/dx) of section 4
- * (-1.2 % and -0.2 %); on 101 equally spaced times, with its rate dE/dt
- * by differences. */
-struct vsph_report_richardson {
-  double t[101], E[101], dE[101];
-  size_t res[4];     /* L/dx: h/dx = 2 (two), then h/dx = 3 (two) */
-  double eps[2];     /* lattice errors at h/dx = 2 and 3 */
-  double correction; /* largest h/dx step, max |E - E(h/dx = 3)| / E(0) */
-  double diss0;      /* its initial dissipation error, extrapolated alike */
-};
+/* The square's reference (memoised in R; its runs through the cache). */
 int vsph_report_runs_richardson(struct vsph_report *R,
                                 struct vsph_report_richardson *rr);
 

@@ -273,6 +273,10 @@ const char *const vsph_report_runs_cartesian[2] = {"Scene:layout=cartesian",
 
 int vsph_report_runs_layouts(struct vsph_report *R,
                              struct vsph_report_layouts *out) {
+  if (R->have_layouts) {
+    *out = R->layouts;
+    return VSPH_OK;
+  }
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 0, 0);
   int st = VSPH_OK;
   for (int l = 0; l < 2 && !st; l++)
@@ -294,7 +298,10 @@ int vsph_report_runs_layouts(struct vsph_report *R,
         out->tu[l][f][k] = r.t_unstable;
         vsph_report_runs_free(&r);
       }
-  return st;
+  if (st) return st;
+  R->layouts = *out;
+  R->have_layouts = 1;
+  return VSPH_OK;
 }
 
 int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all) {
@@ -404,6 +411,10 @@ static int lattice_error(double hdx, double *eps) {
 
 int vsph_report_runs_richardson(struct vsph_report *R,
                                 struct vsph_report_richardson *rr) {
+  if (R->have_rr) {
+    *rr = R->rr;
+    return VSPH_OK;
+  }
   struct vsph_report_runspec rs[4];
   vsph_report_runs_reference_specs(R, rs);
   const double t_end = rs[0].t_end;
@@ -448,7 +459,10 @@ int vsph_report_runs_richardson(struct vsph_report *R,
     rr->diss0 = vsph_report_runs_extrapolate(d, rr->eps);
   }
   for (int k = 0; k < 4; k++) vsph_report_runs_free(&run[k]);
-  return st;
+  if (st) return st;
+  R->rr = *rr;
+  R->have_rr = 1;
+  return VSPH_OK;
 }
 
 double vsph_report_runs_onset(const struct vsph_report_run *r,

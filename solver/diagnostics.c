@@ -21,7 +21,8 @@ void vsph_diagnostics_free(struct vsph_diagnostics *d) {
   memset(d, 0, sizeof *d);
 }
 
-/* A copy of the fields the sums read. */
+/* A copy of the fields the sums read (positions, velocities, volumes,
+ * ids; the cell list sorts it). */
 static struct vsph_particles *copy_of(const struct vsph_particles *p) {
   struct vsph_particles *q = vsph_particles_alloc(p->n ? p->n : 1, p->dim);
   if (!q) return NULL;
@@ -31,8 +32,6 @@ static struct vsph_particles *copy_of(const struct vsph_particles *p) {
     memcpy(q->vel[a], p->vel[a], p->n * sizeof(double));
   }
   memcpy(q->vol, p->vol, p->n * sizeof(double));
-  memcpy(q->m, p->m, p->n * sizeof(double));
-  memcpy(q->rho, p->rho, p->n * sizeof(double));
   memcpy(q->id, p->id, p->n * sizeof(size_t));
   return q;
 }
