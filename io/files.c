@@ -51,18 +51,28 @@ int vsph_files_write(const char *dir, const char *name, const char *text) {
   return vsph_files_close(f, dir, name);
 }
 
+/* A folder that cannot be made where it was asked for (a file in the
+ * path, no such parent, no permission, a read-only file system) is a bad
+ * path: VSPH_EINVAL (exit 2); a device that fails (full, I/O): VSPH_EIO. */
+static int mkdir_failed(const char *path) {
+  const int e = errno;
+  const int bad = e == ENOTDIR || e == ENOENT || e == EACCES || e == EPERM ||
+                  e == EROFS || e == ENAMETOOLONG || e == ELOOP;
+  VSPH_FAIL(bad ? VSPH_EINVAL : VSPH_EIO, "cannot create %s: %s", path,
+            strerror(e));
+}
+
 int vsph_files_mkdir(const char *dir) {
   char buf[PATH_MAX_LEN];
-  snprintf(buf, sizeof buf, "%s", dir);
+  if (snprintf(buf, sizeof buf, "%s", dir) >= (int)sizeof buf)
+    VSPH_FAIL(VSPH_EINVAL, "folder name too long: %.60s...", dir);
   for (char *c = buf + 1; *c; c++) {
     if (*c != '/') continue;
     *c = '\0';
-    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-      VSPH_FAIL(VSPH_EIO, "cannot create %s: %s", buf, strerror(errno));
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST) return mkdir_failed(buf);
     *c = '/';
   }
-  if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-    VSPH_FAIL(VSPH_EIO, "cannot create %s: %s", buf, strerror(errno));
+  if (mkdir(buf, 0777) != 0 && errno != EEXIST) return mkdir_failed(buf);
   return VSPH_OK;
 }
 

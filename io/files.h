@@ -29,8 +29,9 @@ void vsph_files_discard(FILE *f, const char *dir, const char *name);
  *  VSPH_EIO. */
 int vsph_files_write(const char *dir, const char *name, const char *text);
 
-/** @brief Create directory @p dir and its parents. @return VSPH_OK or
- *  VSPH_EIO. */
+/** @brief Create directory @p dir and its parents. @return VSPH_OK,
+ *  VSPH_EINVAL (a path that cannot be made: a file in it, no such parent,
+ *  no permission, read-only), VSPH_EIO (the device failed). */
 int vsph_files_mkdir(const char *dir);
 
 /** @brief A whole file as a NUL-terminated string (caller frees), its

@@ -131,6 +131,9 @@ static const char *const bad_inputs[] = {
     "laplacian --field cubic",
     "laplacian --n 1",
     "laplacian --kernel spline",
+    /* an --out that cannot be made: a file in the path */
+    "run stretching-square --res 10 --t-end 0.01 --out /dev/null/r",
+    "report --only patch --out /dev/null/r",
     "",
 };
 
