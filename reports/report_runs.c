@@ -497,16 +497,22 @@ double vsph_report_runs_error(const struct vsph_report_run *r,
   return err;
 }
 
-/* Both losses are normalised by their own initial energy (the run's E_k(0),
+/* Energy @p lost by row @p row over the reference's lost share. Both
+ * losses are normalised by their own initial energy (the run's E_k(0),
  * the reference's E_m(0)), as the decay error is: the weakly compressible
  * start's O(Ma^2) offset of E_k(0) is not the formulation's doing. */
-double vsph_report_runs_loss_ratio(const struct vsph_report_run *r,
-                                   size_t row) {
-  const double lost =
-      (r->Ek[0] + r->Ep[0] + r->Ec[0]) - (r->Ek[row] + r->Ep[row] + r->Ec[row]);
+static double over_reference(const struct vsph_report_run *r, size_t row,
+                             double lost) {
   const double lost_ref = 1.0 - r->Emr[row] / r->Emr[0];
   return row > 0 && lost_ref != 0.0 ? (lost / r->Ek[0]) / lost_ref
                                     : (double)NAN;
+}
+
+double vsph_report_runs_loss_ratio(const struct vsph_report_run *r,
+                                   size_t row) {
+  return over_reference(r, row,
+                        (r->Ek[0] + r->Ep[0] + r->Ec[0]) -
+                            (r->Ek[row] + r->Ep[row] + r->Ec[row]));
 }
 
 double vsph_report_runs_visc_loss_ratio(const struct vsph_report_run *r,
@@ -514,9 +520,7 @@ double vsph_report_runs_visc_loss_ratio(const struct vsph_report_run *r,
   double lost = 0.0;
   for (size_t k = 1; k <= row; k++)
     lost -= 0.5 * (r->Pv[k] + r->Pv[k - 1]) * (r->t[k] - r->t[k - 1]);
-  const double lost_ref = 1.0 - r->Emr[row] / r->Emr[0];
-  return row > 0 && lost_ref != 0.0 ? (lost / r->Ek[0]) / lost_ref
-                                    : (double)NAN;
+  return over_reference(r, row, lost);
 }
 
 double vsph_report_runs_diss0(const struct vsph_report_run *r) {
