@@ -52,9 +52,13 @@ static int run(int form, size_t n, double perturb,
   lp.form = form;
   lp.n = n;
   lp.perturb = perturb;
-  const double t0 = omp_get_wtime();
-  if (!st) st = vsph_laplacian_patch(&lp, r);
-  if (wall) *wall = omp_get_wtime() - t0;
+  /* timed: the best of 3 (the machine is shared; one run is a few ms) */
+  if (wall) *wall = INFINITY;
+  for (int rep = 0; rep < (wall ? 3 : 1) && !st; rep++) {
+    const double t0 = omp_get_wtime();
+    st = vsph_laplacian_patch(&lp, r);
+    if (wall) *wall = fmin(*wall, omp_get_wtime() - t0);
+  }
   return st;
 }
 
