@@ -13,7 +13,7 @@
 #include "../kernels/kernel.h"
 #include "report_internal.h"
 
-#define NFORM VSPH_VISCOUS_FORM_COUNT
+#define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 enum {
   MGF = VSPH_VISCOUS_MGF,
   MEAF = VSPH_VISCOUS_MEAF,

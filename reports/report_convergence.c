@@ -10,7 +10,7 @@
 #include "../io/plot.h"
 #include "report_internal.h"
 
-#define NFORM VSPH_VISCOUS_FORM_COUNT
+#define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 
 static int scene(struct vsph_report *R, int sc) {
   struct vsph_report_ladder lr;

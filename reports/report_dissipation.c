@@ -12,7 +12,7 @@
 #include "../io/plot.h"
 #include "report_internal.h"
 
-#define NFORM VSPH_VISCOUS_FORM_COUNT
+#define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 /* The fields of this section: rotation, strain, mixed. */
 #define NFIELD 3
 

@@ -280,7 +280,7 @@ int vsph_report_runs_layouts(struct vsph_report *R,
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 0, 0);
   int st = VSPH_OK;
   for (int l = 0; l < 2 && !st; l++)
-    for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++)
+    for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT && !st; f++)
       for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
         const struct vsph_report_runspec rs = {
             L->scene,
@@ -306,7 +306,7 @@ int vsph_report_runs_layouts(struct vsph_report *R,
 
 int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all) {
   enum {
-    N = (VSPH_REPORT_NSCENES + 1) * VSPH_VISCOUS_FORM_COUNT *
+    N = (VSPH_REPORT_NSCENES + 1) * VSPH_VISCOUS_PAPER_COUNT *
             VSPH_REPORT_LADDER +
         4
   };
@@ -320,7 +320,7 @@ int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all) {
   /* the vortex patch's ladder again on a Cartesian disc (section 6) */
   const struct vsph_report_ladderdef *V = vsph_report_runs_ladder(R, 0, 0);
   for (int f = 0;
-       f < VSPH_VISCOUS_FORM_COUNT && (all || vsph_report_scene_on(R, 0)); f++)
+       f < VSPH_VISCOUS_PAPER_COUNT && (all || vsph_report_scene_on(R, 0)); f++)
     for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
       const struct vsph_report_runspec rs = {
           V->scene, vsph_viscous_name(f),       V->res[k],
@@ -330,7 +330,7 @@ int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all) {
   for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++) {
     if (!all && !vsph_report_scene_on(R, sc)) continue;
     const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
-    for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
+    for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT; f++)
       for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
         const struct vsph_report_runspec rs = {
             L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
@@ -537,7 +537,7 @@ int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
   struct vsph_report_richardson rr;
   int st = sc == 1 ? vsph_report_runs_richardson(R, &rr) : VSPH_OK;
-  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++)
+  for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT && !st; f++)
     for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
       struct vsph_report_runspec rs = {
           L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
@@ -577,15 +577,15 @@ int vsph_report_runs_point(int f) {
 }
 
 size_t vsph_report_runs_baseline_count(void) {
-  return VSPH_REPORT_NSCENES * VSPH_VISCOUS_FORM_COUNT;
+  return VSPH_REPORT_NSCENES * VSPH_VISCOUS_PAPER_COUNT;
 }
 
 int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
                               struct vsph_report_baseline *b) {
   if (i >= vsph_report_runs_baseline_count())
     VSPH_FAIL(VSPH_EINVAL, "no baseline row %zu", i);
-  const int sc = (int)(i / VSPH_VISCOUS_FORM_COUNT);
-  const int f = (int)(i % VSPH_VISCOUS_FORM_COUNT);
+  const int sc = (int)(i / VSPH_VISCOUS_PAPER_COUNT);
+  const int f = (int)(i % VSPH_VISCOUS_PAPER_COUNT);
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 1);
   struct vsph_report_runspec rs = {
       L->scene, vsph_viscous_name(f), L->res[0], L->t_end, NULL, NULL};

@@ -119,7 +119,8 @@ static int axis(struct vsph_report *R) {
   if (!st) st = vsph_fields_props_init(&sp.field, VSPH_FIELDS_STRAIN, 2);
   if (st) return st;
   double y[80], v[VSPH_VISCOUS_FORM_COUNT][80];
-  double *f[VSPH_VISCOUS_FORM_COUNT] = {v[0], v[1], v[2]};
+  double *f[VSPH_VISCOUS_FORM_COUNT];
+  for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++) f[k] = v[k];
   char name[3][64];
   for (int r = 0; r < 3 && !st; r++) {
     size_t n = 0;

@@ -15,7 +15,7 @@
 #include "../solver/scene.h"
 #include "report_internal.h"
 
-#define NFORM VSPH_VISCOUS_FORM_COUNT
+#define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 
 /* Snapshots of the vortex patch's ladder runs (report_runs.c keeps 4, plus
  * the one at t = 0). */

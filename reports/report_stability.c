@@ -13,7 +13,7 @@
 #include "../solver/scene.h"
 #include "report_internal.h"
 
-#define NFORM VSPH_VISCOUS_FORM_COUNT
+#define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 
 /* One cell of a stability table: "stable" or "unstable t = x (kind)". */
 static void verdict(char *buf, size_t n, const struct vsph_report_run *r) {

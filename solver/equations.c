@@ -187,14 +187,16 @@ static size_t rhs_general(const struct rhs_ctx *rc,
 
 /* The loop for the run's shape, chosen once per evaluation. */
 static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
-  static rhs_cell_fn *const table[2][VSPH_VISCOUS_FORM_COUNT][2] = {
+  /* the loop shapes: MGF (and its Brookshaw kin), MEAF, PVWF */
+  static rhs_cell_fn *const table[2][3][2] = {
       {{rhs_mgf2, rhs_mgf2d}, {rhs_meaf2, rhs_meaf2d}, {rhs_pvwf2, rhs_pvwf2d}},
       {{rhs_mgf3, rhs_mgf3d},
        {rhs_meaf3, rhs_meaf3d},
        {rhs_pvwf3, rhs_pvwf3d}}};
   if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2)
     return rhs_general;
-  return table[rc->pk.dim - 2][rc->vl.form][rc->dhc > 0.0];
+  return table[rc->pk.dim - 2][vsph_viscous_loop_form(rc->vl.form)]
+              [rc->dhc > 0.0];
 }
 
 int vsph_equations_rhs(const struct vsph_equations_props *ep,

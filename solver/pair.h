@@ -280,16 +280,21 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_pressure(const struct vsph_pair *pr,
   for (int k = 0; k < dim; k++) f[k] = c * pr->x[k];
 }
 
-/** @brief MGF, Monaghan & Gingold, Eq. (4.20), THEORY 3:
- *  (div V)_i = K mu sum_j V_j (u_j - u_i).(r_j - r_i)/s^2 grad_i W_ij.
- *  Sets @p f to the pair's -K mu V_j F (du.x)/s^2 x.
- *  @param Kmu K mu with K = vsph_kernel_mg_factor(dim) (Pa s).
- *  @return the pair's dissipation density (K mu/2) V_j F (du.x)^2/s^2
- *  (THEORY 4), so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
+/** @brief MGF, Monaghan & Gingold, Eq. (4.20), THEORY 3, and its
+ *  Brookshaw-type kin (docs/theory.md, section 9):
+ *  (div V)_i = K mu sum_j V_j (u_j - u_i).(r_j - r_i)/(s^2 + eta^2)
+ *  grad_i W_ij. MGF: K = 2(d+2), eta = 0; Violeau & Issa (Basa's model C):
+ *  K = 2(d+2), eta = 0.1 h; Cleary (model D): K = 2 xi, eta = 0.1 h.
+ *  Sets @p f to the pair's -K mu V_j F (du.x)/(s^2 + eta^2) x.
+ *  @param Kmu K mu (Pa s); @param eta2 eta^2 (m^2; 0 for MGF, which then
+ *  adds an exact zero).
+ *  @return the pair's dissipation density (K mu/2) V_j F (du.x)^2/
+ *  (s^2 + eta^2) (THEORY 4), so that sum_i V_i of the sums is
+ *  sum_i V_i u_i.(div V)_i. */
 VSPH_CONSTS_SPECIALISE double vsph_pair_mgf(const struct vsph_pair *pr, int dim,
-                                            double Kmu, double dux,
+                                            double Kmu, double eta2, double dux,
                                             double f[3]) {
-  const double c = -Kmu * pr->VF * dux / pr->s2;
+  const double c = -Kmu * pr->VF * dux / (pr->s2 + eta2);
   for (int k = 0; k < dim; k++) f[k] = c * pr->x[k];
   return -0.5 * c * dux; /* (K mu/2) V_j F (du.x)^2/s^2, one division */
 }

@@ -18,7 +18,11 @@
 #define P struct vsph_run_props
 static const struct vsph_params_spec SOLVER[] = {
     VSPH_PARAMS_NAME_SPEC(P, visc, "mgf",
-                          "viscous formulation: mgf, meaf, pvwf"),
+                          "viscous formulation: mgf, meaf, pvwf, vi "
+                          "(Violeau-Issa, model C), cleary (model D)"),
+    VSPH_PARAMS_REAL_SPEC(P, xi, VSPH_VISCOUS_XI_CLEARY, 0.1, 100.0,
+                          "Cleary's coefficient xi (visc = cleary only; "
+                          "4.96333 Cleary, 4.24 Basa et al.)"),
     VSPH_PARAMS_NAME_SPEC(P, kernel, "gaussian",
                           "gaussian, cubic, quintic, wendland2, wendland4"),
     VSPH_PARAMS_INT_SPEC(P, res, 40, 4, 4000,
@@ -161,6 +165,7 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
   ip.rho_band = rp->rho_band;
   ip.min_dist = rp->min_gap * r->dx;
   ip.eq.delta = rp->delta;
+  ip.eq.visc.xi = rp->xi;
   r->n_fluid = fluid->n;
   r->integ = vsph_integrate_alloc(&ip, fluid); /* takes fluid */
   fluid = NULL;

@@ -44,7 +44,8 @@ enum vsph_run_state {
 
 /** The "Solver" section (defaults and bounds in run.c's table). */
 struct vsph_run_props {
-  char visc[VSPH_PARAMS_NAME_MAX];   /*!< formulation: mgf, meaf, pvwf */
+  char visc[VSPH_PARAMS_NAME_MAX];   /*!< formulation (vsph_viscous_name) */
+  double xi;                         /*!< Cleary's coefficient */
   char kernel[VSPH_PARAMS_NAME_MAX]; /*!< kernel name */
   size_t res;        /*!< particles across the reference length */
   double hdx;        /*!< h/dx */

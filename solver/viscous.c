@@ -13,9 +13,9 @@
 #include "particles.h"
 
 static const char *const viscous_names[] = {
-    [VSPH_VISCOUS_MGF] = "mgf",
-    [VSPH_VISCOUS_MEAF] = "meaf",
-    [VSPH_VISCOUS_PVWF] = "pvwf",
+    [VSPH_VISCOUS_MGF] = "mgf",       [VSPH_VISCOUS_MEAF] = "meaf",
+    [VSPH_VISCOUS_PVWF] = "pvwf",     [VSPH_VISCOUS_VI] = "vi",
+    [VSPH_VISCOUS_CLEARY] = "cleary",
 };
 _Static_assert(sizeof viscous_names / sizeof viscous_names[0] ==
                    VSPH_VISCOUS_FORM_COUNT,
@@ -27,9 +27,9 @@ const char *vsph_viscous_name(int form) {
 }
 
 static const char *const viscous_labels[] = {
-    [VSPH_VISCOUS_MGF] = "MGF",
-    [VSPH_VISCOUS_MEAF] = "MEAF",
-    [VSPH_VISCOUS_PVWF] = "PVWF",
+    [VSPH_VISCOUS_MGF] = "MGF",       [VSPH_VISCOUS_MEAF] = "MEAF",
+    [VSPH_VISCOUS_PVWF] = "PVWF",     [VSPH_VISCOUS_VI] = "VI",
+    [VSPH_VISCOUS_CLEARY] = "Cleary",
 };
 _Static_assert(sizeof viscous_labels / sizeof viscous_labels[0] ==
                    VSPH_VISCOUS_FORM_COUNT,
@@ -77,6 +77,10 @@ int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
   /* THEORY.md section 3: MGF implies lambda = mu; PVWF zero bulk viscosity. */
   vp->lambda = form == VSPH_VISCOUS_PVWF ? -2.0 * mu / dim : mu;
   vp->det_tol = 1e-8;
+  vp->xi = VSPH_VISCOUS_XI_CLEARY;
+  vp->eta = form == VSPH_VISCOUS_VI || form == VSPH_VISCOUS_CLEARY
+                ? VSPH_VISCOUS_ETA
+                : 0.0;
   return VSPH_OK;
 }
 
@@ -310,11 +314,11 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
     vsph_pair_ranges_cell(&rg, cells, c);
     const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
     for (size_t i = i0; i < i1; i++) { /* dimension fixed outside the loop */
-      const int f = vp->form;
+      const int f = vsph_viscous_loop_form(vp->form);
       const struct vsph_viscous_shape mgf2 = {2, VSPH_VISCOUS_MGF},
                                       meaf2 = {2, VSPH_VISCOUS_MEAF},
                                       pvwf2 = {2, VSPH_VISCOUS_PVWF},
-                                      any = {dim, f};
+                                      any = {dim, vp->form};
       const int G = VSPH_KERNEL_DFQ_GAUSSIAN;
       double pd;
       if (dim != 2 || pk.dfq_id != G)

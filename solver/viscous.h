@@ -26,8 +26,25 @@ enum vsph_viscous_form {
   VSPH_VISCOUS_MGF = 0, /*!< Monaghan & Gingold, Eq. (4.20) */
   VSPH_VISCOUS_MEAF,    /*!< Morris, Fox & Zhu 1997, Eq. (4.30) */
   VSPH_VISCOUS_PVWF,    /*!< principle of virtual work, Eqs. (4.18)-(4.19) */
+  VSPH_VISCOUS_VI,      /*!< Violeau & Issa 2007 (Basa et al.'s model C) */
+  VSPH_VISCOUS_CLEARY,  /*!< Cleary 1998 (Basa et al.'s model D), xi */
   VSPH_VISCOUS_FORM_COUNT
 };
+
+/** The free-surface study's formulations (Colagrossi et al. 2011) are the
+ *  first this many; the report's free-surface ladders run these, the
+ *  analysis and the internal flows run every form. */
+#define VSPH_VISCOUS_PAPER_COUNT 3
+
+/** Cleary's calibrated coefficient (Couette flow). */
+#define VSPH_VISCOUS_XI_CLEARY 4.96333
+
+/** Basa et al.'s recalibrated coefficient (uncorrected Poiseuille,
+ *  Re = 0.5, dx/h = 0.637). */
+#define VSPH_VISCOUS_XI_BASA 4.24
+
+/** The regulariser of models C and D: eta = 0.1 h (Basa et al. 2009). */
+#define VSPH_VISCOUS_ETA 0.1
 
 /** What the operators need: constant smoothing length and viscosities. */
 struct vsph_viscous_props {
@@ -39,6 +56,8 @@ struct vsph_viscous_props {
   double lambda;  /*!< second viscosity (Pa s); MGF implies lambda = mu */
   double det_tol; /*!< PVWF: det(B) <= det_tol (tr B / d)^d counts as
                        singular and L falls back to the identity */
+  double xi;      /*!< Cleary: K = 2 xi (default VSPH_VISCOUS_XI_CLEARY) */
+  double eta;     /*!< Brookshaw forms: s^2 + (eta h)^2 (fraction of h) */
 };
 
 /** Per-particle scratch of the PVWF two-pass operator. */
@@ -51,7 +70,7 @@ struct vsph_viscous_ws {
   size_t n_fallback;       /*!< how many particles fell back, last call */
 };
 
-/** @brief Formulation name ("mgf", "meaf", "pvwf"). */
+/** @brief Formulation name ("mgf", "meaf", "pvwf", "vi", "cleary"). */
 const char *vsph_viscous_name(int form);
 
 /** @brief Formulation called @p name, or -1. */
@@ -111,7 +130,9 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
 struct vsph_viscous_loop {
   int form;      /*!< vsph_viscous_form */
   int dim;       /*!< dimension */
-  double Kmu;    /*!< MGF: K mu, K = vsph_kernel_mg_factor(dim) */
+  double Kmu;    /*!< MGF, VI: K mu, K = vsph_kernel_mg_factor(dim);
+                      Cleary: 2 xi mu */
+  double eta2;   /*!< Brookshaw forms: (eta h)^2 (m^2), 0 for MGF */
   double two_mu; /*!< MEAF: 2 mu */
   double *A[9];  /*!< PVWF: A = T L of every particle (workspace) */
 };
@@ -123,7 +144,10 @@ static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
                                           const struct vsph_viscous_ws *ws) {
   lp->form = vp->form;
   lp->dim = vp->dim;
-  lp->Kmu = vsph_kernel_mg_factor(vp->dim) * vp->mu;
+  lp->Kmu = (vp->form == VSPH_VISCOUS_CLEARY ? 2.0 * vp->xi
+                                             : vsph_kernel_mg_factor(vp->dim)) *
+            vp->mu;
+  lp->eta2 = vp->eta * vp->h * vp->eta * vp->h;
   lp->two_mu = 2.0 * vp->mu;
   for (int a = 0; a < 9; a++) lp->A[a] = ws ? ws->A[a] : NULL;
 }
@@ -147,13 +171,23 @@ VSPH_CONSTS_SPECIALISE double vsph_viscous_pair(
     const double Ai[9], double f[3]) {
   switch (sh.form) {
     case VSPH_VISCOUS_MGF:
-      return vsph_pair_mgf(pr, sh.dim, lp->Kmu, dux, f);
+    case VSPH_VISCOUS_VI:
+    case VSPH_VISCOUS_CLEARY:
+      return vsph_pair_mgf(pr, sh.dim, lp->Kmu, lp->eta2, dux, f);
     case VSPH_VISCOUS_MEAF:
       return vsph_pair_meaf(pr, sh.dim, lp->two_mu, du, f);
     default:
       vsph_pair_pvwf_force(pr, sh.dim, Ai, lp->A, f);
       return 0.0;
   }
+}
+
+/** @brief The form whose specialised loop serves @p form: the Brookshaw
+ *  forms (VI, Cleary) share MGF's, their constants being in the loop. */
+static inline int vsph_viscous_loop_form(int form) {
+  return form == VSPH_VISCOUS_VI || form == VSPH_VISCOUS_CLEARY
+             ? VSPH_VISCOUS_MGF
+             : form;
 }
 
 /** @brief PVWF's A_i of particle @p i from the workspace, for the loop. */

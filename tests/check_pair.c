@@ -160,6 +160,15 @@ static void twin_run(const struct vsph_viscous_props *vp,
       if (vp->form == VSPH_VISCOUS_MGF) {
         for (int a = 0; a < d; a++) av[a] += K * vp->mu * V * dux / s2 * gW[a];
         dens += 0.5 * K * vp->mu * V * F * dux * dux / s2;
+      } else if (vp->form == VSPH_VISCOUS_VI ||
+                 vp->form == VSPH_VISCOUS_CLEARY) {
+        /* Basa et al. 2009, eqs. (33)-(34) with uniform mu and the volume
+         * V_j = m_j/rho_j: K = 8 (2-D; 10 in 3-D) or 2 xi, eta = 0.1 h */
+        const double Kb =
+            vp->form == VSPH_VISCOUS_VI ? K : 2.0 * 4.96333;
+        const double r2 = s2 + 0.01 * vp->h * vp->h;
+        for (int a = 0; a < d; a++) av[a] += Kb * vp->mu * V * dux / r2 * gW[a];
+        dens += 0.5 * Kb * vp->mu * V * F * dux * dux / r2;
       } else if (vp->form == VSPH_VISCOUS_MEAF) {
         for (int a = 0; a < d; a++) av[a] += 2.0 * vp->mu * V * F * (-du[a]);
         dens += vp->mu * V * F * du2;

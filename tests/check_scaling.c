@@ -134,14 +134,15 @@ START_TEST(test_square_axis) {
    * outside at another (0.1 % at L/dx = 20): 1.3 keeps every node off
    * the edge */
   sp.hdx = 1.3;
-  double y[2][40], v[2][3][40];
+  double y[2][40], v[2][VSPH_VISCOUS_FORM_COUNT][40];
   size_t n[2];
   for (int r = 0; r < 2; r++) {
-    double *f[3] = {v[r][0], v[r][1], v[r][2]};
+    double *f[VSPH_VISCOUS_FORM_COUNT];
+    for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++) f[k] = v[r][k];
     ck_assert_int_eq(vsph_scaling_axis(&sp, 20 * (r + 1), y[r], f, &n[r]), 0);
   }
   ck_assert_uint_eq(n[1], 40);
-  for (int form = 0; form < 3; form++) {
+  for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT; form++) {
     const double top1 = v[0][form][19], top2 = v[1][form][39];
     ck_assert_double_gt(fabs(top1), 0.1);
     ck_assert_double_eq_tol(top2 / top1, 2.0, 1e-9);
