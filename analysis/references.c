@@ -8,6 +8,7 @@
 
 #include "../common/consts.h"
 #include "../common/status.h"
+#include "../solver/particles.h"
 #include "../solver/scene.h"
 
 /* Quadrature limits of the private workspace and the accuracy asked. */
@@ -228,10 +229,148 @@ void vsph_references_scene_free(struct vsph_references_scene *r) {
   free(r);
 }
 
+double vsph_references_poiseuille(double y, double t, double W, double nu,
+                                  double U0, double *dudt) {
+  const double d = 0.5 * W, yc = y - d;
+  if (t <= 0.0) {
+    if (dudt) *dudt = 2.0 * nu * U0 / (d * d);
+    return 0.0;
+  }
+  double sum = 0.0, dsum = 0.0;
+  const double a = M_PI * M_PI * nu * t / (4.0 * d * d);
+  for (int n = 0; n < 1000000; n++) {
+    const double m = 2.0 * n + 1.0, e = exp(-m * m * a);
+    const double c =
+        (n % 2 ? -1.0 : 1.0) / (m * m * m) * cos(m * M_PI * yc / (2.0 * d));
+    sum += c * e;
+    dsum += c * e * m * m;
+    if (e < 1e-17 * m) break; /* later terms of both sums below e/m */
+  }
+  const double k = 32.0 / (M_PI * M_PI * M_PI);
+  if (dudt) *dudt = U0 * k * dsum * M_PI * M_PI * nu / (4.0 * d * d);
+  return U0 * (1.0 - (yc / d) * (yc / d) - k * sum);
+}
+
+double vsph_references_couette(double y, double t, double W, double nu,
+                               double v0, double *dudt) {
+  if (t <= 0.0) {
+    if (dudt) *dudt = NAN;
+    return y >= W ? v0 : 0.0;
+  }
+  double sum = 0.0, dsum = 0.0;
+  const double a = M_PI * M_PI * nu * t / (W * W);
+  for (int n = 1; n < 1000000; n++) {
+    const double e = exp(-(double)n * n * a);
+    const double c =
+        (n % 2 ? -1.0 : 1.0) * 2.0 / (n * M_PI) * sin(n * M_PI * y / W);
+    sum += c * e;
+    dsum -= c * e * n * n * a / t;
+    if (e * n < 1e-17) break; /* later terms below e n (rate) */
+  }
+  if (dudt) *dudt = v0 * dsum;
+  return v0 * (y / W + sum);
+}
+
+double vsph_references_channel(const struct vsph_scene_channel *ch, double y,
+                               double t, double *dudt) {
+  return ch->couette
+             ? vsph_references_couette(y, t, ch->W, ch->nu, ch->U, dudt)
+             : vsph_references_poiseuille(y, t, ch->W, ch->nu, ch->U, dudt);
+}
+
+static int is_channel(const struct vsph_scene *sc) {
+  return sc->type == &vsph_channel_poiseuille_type ||
+         sc->type == &vsph_channel_couette_type;
+}
+
+void vsph_references_profile_error(const struct vsph_scene *sc,
+                                   const struct vsph_particles *p,
+                                   size_t n_fluid, double t,
+                                   struct vsph_references_profile_err *e) {
+  e->rms = e->rms_rel = e->v_rms = NAN;
+  if (!is_channel(sc)) return;
+  const struct vsph_scene_channel *ch = &sc->u.channel;
+  double s = 0.0, sr = 0.0, sv = 0.0;
+  size_t n = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= n_fluid) continue;
+    const double U = vsph_references_channel(ch, p->pos[1][i], t, NULL);
+    const double du = p->vel[0][i] - U;
+    s += du * du;
+    sr += du * du / (U * U); /* inf or NaN where U = 0: reported so */
+    sv += p->vel[1][i] * p->vel[1][i];
+    n++;
+  }
+  if (n == 0) return;
+  e->rms = sqrt(s / n) / ch->U;
+  e->rms_rel = isfinite(sr) ? sqrt(sr / n) : (double)NAN;
+  e->v_rms = sqrt(sv / n) / ch->U;
+}
+
+int vsph_references_profile_bins(const struct vsph_scene *sc,
+                                 const struct vsph_particles *p, size_t n_fluid,
+                                 double t, size_t nb, double *y, double *u,
+                                 double *U, size_t *count) {
+  if (!is_channel(sc) || nb == 0)
+    VSPH_FAIL(VSPH_EINVAL, "scene '%s' has no velocity profile",
+              sc->type->name);
+  const struct vsph_scene_channel *ch = &sc->u.channel;
+  for (size_t k = 0; k < nb; k++) y[k] = u[k] = 0.0, count[k] = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= n_fluid) continue;
+    const double yi = p->pos[1][i];
+    long k = (long)floor(yi / ch->W * (double)nb);
+    k = k < 0 ? 0 : k >= (long)nb ? (long)nb - 1 : k;
+    y[k] += yi;
+    u[k] += p->vel[0][i];
+    count[k]++;
+  }
+  for (size_t k = 0; k < nb; k++) {
+    if (count[k]) {
+      y[k] /= (double)count[k];
+      u[k] /= (double)count[k];
+    } else {
+      y[k] = (k + 0.5) * ch->W / (double)nb;
+      u[k] = NAN;
+    }
+    U[k] = vsph_references_channel(ch, y[k], t, NULL);
+  }
+  return VSPH_OK;
+}
+
+/* Channel E_k = (rho/2) length int_0^W U^2 dy and its rate
+ * rho length int U dU/dt dy, by 64-point Gauss-Legendre (the series is
+ * smooth for t > 0; exact zeros at t = 0). */
+static void channel_energy(const struct vsph_scene *sc, double t, double *Ek,
+                           double *dEk) {
+  const struct vsph_scene_channel *ch = &sc->u.channel;
+  *Ek = *dEk = 0.0;
+  if (t <= 0.0) return;
+  gsl_integration_glfixed_table *tb = gsl_integration_glfixed_table_alloc(64);
+  if (!tb) {
+    *Ek = *dEk = NAN;
+    return;
+  }
+  for (size_t k = 0; k < 64; k++) {
+    double x, w, ut;
+    gsl_integration_glfixed_point(0.0, ch->W, k, &x, &w, tb);
+    const double U = vsph_references_channel(ch, x, t, &ut);
+    *Ek += w * U * U;
+    *dEk += w * U * ut;
+  }
+  gsl_integration_glfixed_table_free(tb);
+  *Ek *= 0.5 * sc->rho0 * ch->length;
+  *dEk *= sc->rho0 * ch->length;
+}
+
 int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
                                double *Ek, double *dEk_dt) {
   const struct vsph_scene *sc = r->scene;
   *Ek = *dEk_dt = NAN;
+  if (is_channel(sc)) {
+    channel_energy(sc, t, Ek, dEk_dt);
+    return VSPH_OK;
+  }
   if (r->vortex) {
     vsph_references_vortex_energy_series(r->vortex, t, sc->rho0, Ek, dEk_dt);
     return VSPH_OK;

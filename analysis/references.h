@@ -63,6 +63,58 @@ void vsph_references_vortex_energy_series(
 
 struct vsph_scene;
 struct vsph_scene_wave;
+struct vsph_scene_channel;
+struct vsph_particles;
+
+/** @brief Poiseuille start-up from rest (Basa et al. 2009, eq. 36 with its
+ *  sign corrected; docs/theory.md, section 10): the velocity U(y, t) at
+ *  height @p y above the lower wall of a channel of width @p W, kinematic
+ *  viscosity @p nu, steady centreline speed @p U0, d = W/2, yc = y - d:
+ *  U/U0 = 1 - (yc/d)^2 - (32/pi^3) sum_n (-1)^n/(2n+1)^3
+ *  cos((2n+1) pi yc/(2d)) exp(-(2n+1)^2 pi^2 nu t/(4 d^2)), and dU/dt
+ *  into @p dudt (may be NULL). Terms are summed until they fall below
+ *  1e-17 U0; at t = 0 the exact values U = 0, dU/dt = 2 nu U0/d^2. */
+double vsph_references_poiseuille(double y, double t, double W, double nu,
+                                  double U0, double *dudt);
+
+/** @brief Couette start-up (Morris et al. 1997, eq. 23 of Zheng et al.):
+ *  the wall y = W moves at @p v0 from t = 0:
+ *  U = v0 y/W + sum_{n>=1} (2 v0/(n pi)) (-1)^n sin(n pi y/W)
+ *  exp(-n^2 pi^2 nu t/W^2), and dU/dt into @p dudt (may be NULL). At
+ *  t = 0: U = 0 below the wall (dU/dt is singular there: NaN). */
+double vsph_references_couette(double y, double t, double W, double nu,
+                               double v0, double *dudt);
+
+/** @brief The channel's reference velocity U(y, t) (Poiseuille or
+ *  Couette by @p ch), and dU/dt into @p dudt (may be NULL). */
+double vsph_references_channel(const struct vsph_scene_channel *ch, double y,
+                               double t, double *dudt);
+
+/** Velocity-profile errors of a channel run against its series. */
+struct vsph_references_profile_err {
+  double rms;     /*!< sqrt(mean (u_i - U(y_i))^2) / U (U0 or v0) */
+  double rms_rel; /*!< Basa et al.'s eq. (38): sqrt(mean ((u_i - U)/U)^2),
+                       ill-conditioned near the walls and at start-up; NaN
+                       where U(y_i) = 0 (t = 0) */
+  double v_rms;   /*!< sqrt(mean v_i^2) / U: transverse agitation */
+};
+
+/** @brief The errors of the fluid particles (ids < @p n_fluid) of @p p at
+ *  time @p t against the channel's series; NaN for every field when the
+ *  scene @p sc is not a channel. */
+void vsph_references_profile_error(const struct vsph_scene *sc,
+                                   const struct vsph_particles *p,
+                                   size_t n_fluid, double t,
+                                   struct vsph_references_profile_err *e);
+
+/** @brief The velocity profile binned into @p nb rows across the channel:
+ *  per bin the mean y, mean u_x, the series at that mean y and the count
+ *  (bins with no particle: y the bin centre, u NaN).
+ *  @return VSPH_OK, or VSPH_EINVAL when @p sc is not a channel. */
+int vsph_references_profile_bins(const struct vsph_scene *sc,
+                                 const struct vsph_particles *p, size_t n_fluid,
+                                 double t, size_t nb, double *y, double *u,
+                                 double *U, size_t *count);
 
 /** @brief Lighthill's standing-wave kinetic energy (THEORY 6.3) for the
  *  wave @p w (g, A, L, nu, k, omega) at density @p rho and time @p t:
@@ -71,10 +123,11 @@ double vsph_references_lighthill(const struct vsph_scene_wave *w, double rho,
                                  double t);
 
 /** A scene's reference curve: E_k(t) and dE_k/dt(t), NaN where the scene
- *  has none (stretching square: only t = 0, exact dE_k/dt = -4 mu A0^2 L^2
- *  and E_k = rho A0^2 L^4/12). Standing wave: Lighthill's E_k(t) and its
- *  derivative, except at t = 0 where dE_k/dt is the exact viscous power of
- *  the initial potential flow, -2 rho nu k^2 g A^2 L. */
+ *  has none (channels: (rho/2) length int U^2 dy by 64-point
+ *  Gauss-Legendre quadrature of the series) (stretching square: only t = 0,
+ * exact dE_k/dt = -4 mu A0^2 L^2 and E_k = rho A0^2 L^4/12). Standing wave:
+ * Lighthill's E_k(t) and its derivative, except at t = 0 where dE_k/dt is the
+ * exact viscous power of the initial potential flow, -2 rho nu k^2 g A^2 L. */
 struct vsph_references_scene {
   const struct vsph_scene *scene;        /*!< borrowed */
   struct vsph_references_vortex *vortex; /*!< vortex patch only */
@@ -99,7 +152,7 @@ int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
  *  exp(-4 nu k^2 t), dE_m/dt = -4 nu k^2 E_m, the energy the wave has left
  *  whatever its phase; vortex patch: its E_k (its body-force potential
  *  energy stays constant while the disc stays round); stretching square:
- *  t = 0 only (E_k and the exact viscous power).
+ *  t = 0 only (E_k and the exact viscous power); channels: their E_k.
  *  @return VSPH_OK or VSPH_ELIB. */
 int vsph_references_scene_mech(struct vsph_references_scene *r, double t,
                                double *Em, double *dEm_dt);

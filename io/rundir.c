@@ -111,8 +111,9 @@ static int write_run_json(const struct vsph_run *run,
 /* The files vsph writes into a run folder (run.json first: once the old
  * status is gone, nothing can call the new files ok). */
 static int is_run_file(const char *name) {
-  static const char *const exact[] = {"run.json", "energy.csv", "snapshots.pvd",
-                                      "used_parameters.yml", "key.txt"};
+  static const char *const exact[] = {
+      "run.json",    "energy.csv",          "snapshots.pvd",
+      "profile.csv", "used_parameters.yml", "key.txt"};
   for (size_t k = 0; k < sizeof exact / sizeof exact[0]; k++)
     if (!strcmp(name, exact[k])) return 1;
   const size_t n = strlen(name);
@@ -172,6 +173,7 @@ static int prepare_dir(const char *dir) {
 struct outputs {
   const char *dir;
   FILE *csv;
+  FILE *profile; /* channels: profile.csv at each snapshot */
   struct vsph_vtk_pvd pvd;
   size_t nsnap;
   char error[1200]; /* the write that failed, for run.json */
@@ -187,18 +189,47 @@ static int write_row(struct outputs *o, struct vsph_run *run,
   if (st) return st;
   const struct vsph_equations_energy *en = &row.en;
   const struct vsph_equations_budget *b = &row.b;
+  struct vsph_references_profile_err pe;
+  vsph_references_profile_error(&run->scene, run->integ->p, run->n_fluid, row.t,
+                                &pe);
   errno = 0;
   fprintf(o->csv,
           "%.10g,%.12e,%.12e,%.12e,%.12e,%.12e,%.6e,%.6e,%.6e,%.12e,"
-          "%.12e,%.12e,%.12e,%.12e,%.12e\n",
+          "%.12e,%.12e,%.12e,%.12e,%.12e,%.8e,%.8e,%.8e\n",
           row.t, en->Ek, en->Ep, en->Ec, b->P_visc, b->P_delta, b->residual,
-          en->P[0], en->P[1], en->Lz, b->dEk, Er, dEr, Em, dEm);
+          en->P[0], en->P[1], en->Lz, b->dEk, Er, dEr, Em, dEm, pe.rms,
+          pe.rms_rel, pe.v_rms);
   if (fflush(o->csv) != 0 || ferror(o->csv)) {
     snprintf(o->error, sizeof o->error, "cannot write %s/energy.csv: %s",
              o->dir, errno ? strerror(errno) : "write error");
     VSPH_FAIL(VSPH_EIO, "%s", o->error);
   }
   return VSPH_OK;
+}
+
+/* A channel's velocity profile at a snapshot: one row per row of
+ * particles (res bins across the width), beside the series. */
+static int write_profile(struct outputs *o, const struct vsph_run *run) {
+  const size_t nb = run->props.res;
+  double *buf = malloc(3 * nb * sizeof *buf);
+  size_t *cnt = malloc(nb * sizeof *cnt);
+  int st = buf && cnt ? VSPH_OK : VSPH_ENOMEM;
+  if (!st)
+    st = vsph_references_profile_bins(&run->scene, run->integ->p, run->n_fluid,
+                                      run->integ->t, nb, buf, buf + nb,
+                                      buf + 2 * nb, cnt);
+  errno = 0;
+  for (size_t k = 0; k < nb && !st; k++)
+    fprintf(o->profile, "%.10g,%.10e,%.10e,%.10e,%zu\n", run->integ->t, buf[k],
+            buf[nb + k], buf[2 * nb + k], cnt[k]);
+  if (!st && (fflush(o->profile) != 0 || ferror(o->profile))) {
+    snprintf(o->error, sizeof o->error, "cannot write %s/profile.csv: %s",
+             o->dir, errno ? strerror(errno) : "write error");
+    st = VSPH_EIO;
+  }
+  free(buf);
+  free(cnt);
+  return st;
 }
 
 static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
@@ -213,6 +244,7 @@ static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
     vsph_diagnostics_free(&dg);
   }
   if (!st) st = vsph_vtk_pvd_add(&o->pvd, s->t, name);
+  if (!st && o->profile) st = write_profile(o, run);
   if (st)
     snprintf(o->error, sizeof o->error, "cannot write snapshot %s/%s", o->dir,
              name);
@@ -307,8 +339,19 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   }
   fprintf(o.csv,
           "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,Ek_ref,"
-          "dEk_ref,Em_ref,dEm_ref\n");
+          "dEk_ref,Em_ref,dEm_ref,u_err,u_err_rel,v_rms\n");
   if (rp.snapshots > 0 && (st = vsph_vtk_pvd_open(&o.pvd, res->dir))) goto done;
+  if (rp.snapshots > 0 && (type == &vsph_channel_poiseuille_type ||
+                           type == &vsph_channel_couette_type)) {
+    snprintf(path, sizeof path, "%s/profile.csv", res->dir);
+    if (!(o.profile = fopen(path, "w"))) {
+      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot write %s: %s",
+                         path, strerror(errno));
+      st = VSPH_EIO;
+      goto done;
+    }
+    fprintf(o.profile, "t,y,u,u_ref,n\n");
+  }
   res->n_particles = run->n_fluid;
   res->h = run->h;
   res->dx = run->dx;
@@ -337,6 +380,17 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
     vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "%s", o.error);
     st = VSPH_EIO;
   }
+  if (o.profile) {
+    errno = 0;
+    const int c = fclose(o.profile);
+    o.profile = NULL;
+    if (!st && c != 0) {
+      snprintf(o.error, sizeof o.error, "cannot write %s/profile.csv: %s",
+               res->dir, errno ? strerror(errno) : "write error");
+      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "%s", o.error);
+      st = VSPH_EIO;
+    }
+  }
   if (o.pvd.f) {
     const int c = vsph_vtk_pvd_close(&o.pvd);
     if (c && !o.error[0])
@@ -362,6 +416,7 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   }
 done:
   if (o.csv) fclose(o.csv);
+  if (o.profile) fclose(o.profile);
   if (o.pvd.f) fclose(o.pvd.f);
   vsph_references_scene_free(ref);
   vsph_run_free(run);

@@ -18,6 +18,8 @@ void vsph_equations_body_force(const struct vsph_equations_props *ep,
     for (int k = 0; k < d; k++) g[k] = -ep->beta * ep->beta * x[k];
   } else if (ep->body == VSPH_EQUATIONS_BODY_GRAVITY) {
     g[d - 1] = -ep->g; /* the last axis points up */
+  } else if (ep->body == VSPH_EQUATIONS_BODY_UNIFORM) {
+    g[0] = ep->f;
   }
 }
 

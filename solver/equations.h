@@ -21,6 +21,7 @@ enum vsph_equations_body {
   VSPH_EQUATIONS_BODY_NONE = 0, /*!< no body force, none computed */
   VSPH_EQUATIONS_BODY_RADIAL,   /*!< g = -beta^2 r (vortex patch) */
   VSPH_EQUATIONS_BODY_GRAVITY,  /*!< g = -g e_y */
+  VSPH_EQUATIONS_BODY_UNIFORM,  /*!< g = f e_x, a channel's drive */
   VSPH_EQUATIONS_BODY_COUNT
 };
 
@@ -33,6 +34,7 @@ struct vsph_equations_props {
   int body;                       /*!< vsph_equations_body */
   double beta;                    /*!< radial force rate (1/s) */
   double g;                       /*!< gravity (m/s^2) */
+  double f;                       /*!< uniform drive along x (m/s^2) */
 };
 
 /** Where the right-hand side goes (caller arrays of length p->n; rows of
@@ -67,7 +69,10 @@ struct vsph_equations_budget {
 void vsph_equations_body_force(const struct vsph_equations_props *ep,
                                const double x[3], double g[3]);
 
-/** @brief Potential Phi(x) with g = -grad Phi (J/kg). */
+/** @brief Potential Phi(x) with g = -grad Phi (J/kg). The uniform drive
+ *  of a periodic channel has none that stays bounded (Phi = -f x jumps
+ *  where a particle wraps): 0 there, its power -sum m f u_x is in the
+ *  budget's dEp. */
 double vsph_equations_potential(const struct vsph_equations_props *ep,
                                 const double x[3]);
 

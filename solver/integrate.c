@@ -41,7 +41,8 @@ static int buffers_alloc(struct vsph_integrate *s) {
   if (s->props.eq.visc.form == VSPH_VISCOUS_PVWF &&
       !(s->vws = vsph_viscous_ws_alloc(cap, d)))
     return VSPH_ENOMEM;
-  if (s->props.walls.n > 0 && !(s->gh = vsph_walls_ghosts_alloc(cap)))
+  if (s->props.walls.n > 0 &&
+      !(s->gh = vsph_walls_ghosts_alloc(&s->props.walls, cap)))
     return VSPH_ENOMEM;
   int ok = (s->where = malloc(cap * sizeof *s->where)) != NULL;
   for (int f = 0; f < nfields(d); f++) {
@@ -121,6 +122,7 @@ double vsph_integrate_dt(const struct vsph_integrate *s) {
   if (nu > 0.0) dt = fmin(dt, 0.125 * h * h / nu);
   double gmax = 0.0;
   if (ep->body == VSPH_EQUATIONS_BODY_GRAVITY) gmax = fabs(ep->g);
+  if (ep->body == VSPH_EQUATIONS_BODY_UNIFORM) gmax = fabs(ep->f);
   if (ep->body == VSPH_EQUATIONS_BODY_RADIAL) {
     const struct vsph_particles *p = s->p;
     for (size_t i = 0; i < p->n; i++) {
@@ -140,9 +142,13 @@ static int prepare(struct vsph_integrate *s, double skin) {
   int st;
   if (s->props.walls.n > 0) {
     const struct vsph_walls *w = &s->props.walls;
-    const size_t ng = vsph_walls_count(w, s->p, s->n_fluid, H + skin);
+    vsph_walls_wrap(w, s->p, s->n_fluid);
+    /* a two-pass form (PVWF) differentiates its first pass: ghosts two
+     * supports deep (Basa et al.: 4h rather than 2h) */
+    const double reach = (vp->form == VSPH_VISCOUS_PVWF ? 2.0 : 1.0) * H;
+    const size_t ng = vsph_walls_count(w, s->p, s->n_fluid, reach + skin);
     if ((st = reserve(s, s->n_fluid + ng)) ||
-        (st = vsph_walls_generate(w, s->p, s->n_fluid, H + skin, s->gh)))
+        (st = vsph_walls_generate(w, s->p, s->n_fluid, reach + skin, s->gh)))
       return st;
   }
   if ((st = vsph_cells_build(s->cells, s->p, H + skin))) return st;

@@ -108,7 +108,17 @@ static int check_cost(const struct vsph_run_props *rp,
       sc->type->area * pow((double)rp->res, sc->dim) + 4.0 * (double)rp->res;
   /* ghosts: a layer of reach/dx + 1 particles along each wall, over at
    * most twice the fluid's side (n^((d-1)/d)), corners included */
-  const double layers = ceil(rp->ktype->kappa * rp->hdx) + 1.0;
+  const double deep = rp->form == VSPH_VISCOUS_PVWF ? 2.0 : 1.0;
+  for (int a = 0; a < sc->dim; a++) {
+    const double L = vsph_walls_period(&sc->walls, a);
+    const double reach = deep * rp->ktype->kappa * h;
+    if (L > 0.0 && !(L > 1.25 * reach))
+      VSPH_FAIL(VSPH_EINVAL,
+                "the periodic length %g m is too short for the kernel's "
+                "reach %g m%s: lengthen it (Scene:length) or raise res",
+                L, reach, deep > 1 ? " (two supports for PVWF)" : "");
+  }
+  const double layers = ceil(deep * rp->ktype->kappa * rp->hdx) + 1.0;
   const double ghosts =
       sc->walls.n * layers * 2.0 * pow(n, (sc->dim - 1.0) / sc->dim);
   /* the lattice the scene lays, which the integrator takes */
@@ -126,7 +136,8 @@ static int check_cost(const struct vsph_run_props *rp,
   const double gmax = sc->body == VSPH_EQUATIONS_BODY_GRAVITY ? fabs(sc->g)
                       : sc->body == VSPH_EQUATIONS_BODY_RADIAL
                           ? sc->beta * sc->beta * sc->ref_length
-                          : 0.0;
+                      : sc->body == VSPH_EQUATIONS_BODY_UNIFORM ? fabs(sc->f)
+                                                                : 0.0;
   if (gmax > 0.0) dt = fmin(dt, 0.25 * sqrt(h / gmax));
   const double steps = t_end / dt;
   if (!(steps <= (double)rp->max_steps))

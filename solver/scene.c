@@ -9,9 +9,9 @@
 #include "particles.h"
 
 static const struct vsph_scene_type *const scene_table[] = {
-    &vsph_vortex_patch_type,
-    &vsph_stretching_square_type,
-    &vsph_standing_wave_type,
+    &vsph_vortex_patch_type,    &vsph_stretching_square_type,
+    &vsph_standing_wave_type,   &vsph_channel_poiseuille_type,
+    &vsph_channel_couette_type,
 };
 
 size_t vsph_scene_count(void) {
@@ -59,7 +59,12 @@ int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
   ip->eq.body = sc->body;
   ip->eq.beta = sc->beta;
   ip->eq.g = sc->g;
+  ip->eq.f = sc->f;
   ip->walls = sc->walls;
+  /* linear extrapolation [reconstructed]: the wall shear fitted to the
+   * fluid within h of the wall and within h along it */
+  ip->walls.band = h;
+  ip->walls.window = h;
   for (int a = 0; a < 3; a++) {
     ip->box_lo[a] = sc->box_lo[a];
     ip->box_hi[a] = sc->box_hi[a];

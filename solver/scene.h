@@ -58,6 +58,23 @@ struct vsph_scene_wave {
   double nu;    /*!< kinematic viscosity lambda U_max/Re (m^2/s) */
 };
 
+/** Channel start-up (Poiseuille or Couette; docs/theory.md, section 10):
+ *  walls y = 0 and y = W, periodic in x over `length`, from rest. */
+struct vsph_scene_channel {
+  double W;      /*!< width between the walls (m) */
+  double length; /*!< periodic length along x (m) */
+  double Re;     /*!< Poiseuille: U0 (W/2)/nu; Couette: v0 W/nu */
+  double nu;     /*!< kinematic viscosity (m^2/s) */
+  double rho0;   /*!< reference density */
+  double c0;     /*!< sound speed (m/s); 0: THEORY 5's rule */
+  double t_end;  /*!< default end time (s) */
+  char walls[VSPH_PARAMS_NAME_MAX]; /*!< wall velocity: linear, mirror */
+  /* derived by the scene's setup */
+  double U;    /*!< Poiseuille: steady centreline speed U0; Couette: v0 */
+  double f;    /*!< Poiseuille: drive 2 nu U0/(W/2)^2 (m/s^2); Couette: 0 */
+  int couette; /*!< 1: Couette (top wall at v0), 0: Poiseuille */
+};
+
 struct vsph_scene;
 
 /** Scene descriptor. */
@@ -89,20 +106,23 @@ struct vsph_scene {
   double dp_max;                      /*!< largest initial pressure range */
   double t_end;                       /*!< default end time (s) */
   int body;                           /*!< vsph_equations_body */
-  double beta, g;                     /*!< body-force parameters */
+  double beta, g, f;                  /*!< body-force parameters */
   struct vsph_walls walls;            /*!< walls (n = 0: none) */
   double box_lo[3], box_hi[3];        /*!< escape box */
   /** The scene's own typed parameters: the member of its type. */
   union {
-    struct vsph_scene_vortex vortex; /*!< vortex-patch */
-    struct vsph_scene_square square; /*!< stretching-square */
-    struct vsph_scene_wave wave;     /*!< standing-wave */
+    struct vsph_scene_vortex vortex;   /*!< vortex-patch */
+    struct vsph_scene_square square;   /*!< stretching-square */
+    struct vsph_scene_wave wave;       /*!< standing-wave */
+    struct vsph_scene_channel channel; /*!< poiseuille, couette */
   } u;
 };
 
 extern const struct vsph_scene_type vsph_vortex_patch_type;
 extern const struct vsph_scene_type vsph_stretching_square_type;
 extern const struct vsph_scene_type vsph_standing_wave_type;
+extern const struct vsph_scene_type vsph_channel_poiseuille_type;
+extern const struct vsph_scene_type vsph_channel_couette_type;
 
 /** @brief Number of scenes. */
 size_t vsph_scene_count(void);

@@ -1,18 +1,90 @@
 #include "walls.h"
 
+#include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "../common/status.h"
 #include "particles.h"
 
-struct vsph_walls_ghosts *vsph_walls_ghosts_alloc(size_t cap) {
+/* One nearest-row entry: coordinates, the tangential velocity relative to
+ * the wall (3), the depth. */
+#define BAND_STRIDE 7
+
+static const char *const velocity_names[] = {
+    [VSPH_WALLS_VEL_MIRROR] = "mirror",
+    [VSPH_WALLS_VEL_LINEAR] = "linear",
+};
+_Static_assert(sizeof velocity_names / sizeof velocity_names[0] ==
+                   VSPH_WALLS_VEL_COUNT,
+               "wall-velocity name table out of sync");
+
+const char *vsph_walls_velocity_name(int v) {
+  return v >= 0 && v < VSPH_WALLS_VEL_COUNT ? velocity_names[v] : "unknown";
+}
+
+int vsph_walls_velocity_resolve(const char *name, int *v) {
+  for (int k = 0; k < VSPH_WALLS_VEL_COUNT; k++)
+    if (!strcmp(name, velocity_names[k])) {
+      *v = k;
+      return VSPH_OK;
+    }
+  VSPH_FAIL(VSPH_EINVAL, "unknown wall velocity '%s' (mirror, linear)", name);
+}
+
+int vsph_walls_add_periodic(struct vsph_walls *w, int axis, double lo,
+                            double hi) {
+  if (w->n + 2 > VSPH_WALLS_MAX || !(hi > lo) || axis < 0 || axis > 2)
+    VSPH_FAIL(VSPH_EINVAL, "cannot add a periodic axis %d over [%g, %g)", axis,
+              lo, hi);
+  for (int e = 0; e < 2; e++) {
+    const int q = w->n++;
+    w->axis[q] = axis;
+    w->pos[q] = e ? hi : lo;
+    w->side[q] = e ? -1 : +1;
+    w->kind[q] = VSPH_WALLS_PERIODIC;
+    w->uw[q][0] = w->uw[q][1] = w->uw[q][2] = 0.0;
+  }
+  return VSPH_OK;
+}
+
+double vsph_walls_period(const struct vsph_walls *w, int axis) {
+  double lo = NAN, hi = NAN;
+  for (int q = 0; q < w->n; q++)
+    if (w->kind[q] == VSPH_WALLS_PERIODIC && w->axis[q] == axis)
+      *(w->side[q] > 0 ? &lo : &hi) = w->pos[q];
+  return isfinite(lo) && isfinite(hi) ? hi - lo : 0.0;
+}
+
+void vsph_walls_wrap(const struct vsph_walls *w, struct vsph_particles *p,
+                     size_t n_fluid) {
+  for (int q = 0; q < w->n; q++) {
+    if (w->kind[q] != VSPH_WALLS_PERIODIC || w->side[q] < 0) continue;
+    const int a = w->axis[q];
+    const double lo = w->pos[q], L = vsph_walls_period(w, a);
+    double *x = p->pos[a];
+    for (size_t i = 0; i < p->n; i++) {
+      if (p->id[i] >= n_fluid) continue;
+      if (x[i] < lo) x[i] += L * ceil((lo - x[i]) / L);
+      if (x[i] >= lo + L) x[i] -= L * floor((x[i] - lo) / L);
+    }
+  }
+}
+
+struct vsph_walls_ghosts *vsph_walls_ghosts_alloc(const struct vsph_walls *w,
+                                                  size_t cap) {
   struct vsph_walls_ghosts *gh = calloc(1, sizeof *gh);
+  const size_t c = cap ? cap : 1;
+  const int linear = w->noslip && w->velocity == VSPH_WALLS_VEL_LINEAR;
   if (gh) {
     gh->cap = cap;
-    gh->src = malloc((cap ? cap : 1) * sizeof *gh->src);
-    gh->mask = malloc((cap ? cap : 1) * sizeof *gh->mask);
+    gh->src = malloc(c * sizeof *gh->src);
+    gh->mask = malloc(c * sizeof *gh->mask);
+    /* each nearest-row particle has a ghost across its plane (band <=
+     * reach): at most cap entries */
+    if (linear) gh->band = malloc(c * BAND_STRIDE * sizeof *gh->band);
   }
-  if (!gh || !gh->src || !gh->mask) {
+  if (!gh || !gh->src || !gh->mask || (linear && !gh->band)) {
     vsph_walls_ghosts_free(gh);
     vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
                        "cannot allocate %zu ghosts", cap);
@@ -25,22 +97,82 @@ void vsph_walls_ghosts_free(struct vsph_walls_ghosts *gh) {
   if (!gh) return;
   free(gh->src);
   free(gh->mask);
+  free(gh->band);
   free(gh);
 }
 
-/* Copy source s into ghost slot i, mirrored across the planes in mask. */
-static void mirror(const struct vsph_walls *w, struct vsph_particles *p,
-                   size_t s, size_t i, unsigned mask) {
+/* Distance of particle s from plane q (positive on the fluid side). */
+static double depth(const struct vsph_walls *w, const struct vsph_particles *p,
+                    size_t s, int q) {
+  return w->side[q] * (p->pos[w->axis[q]][s] - w->pos[q]);
+}
+
+/* Linear extrapolation of ghost i (its position set) across plane q at
+ * depth d behind it: the tangential velocity u_w - gamma d, gamma fitted
+ * by hat-weighted least squares to the nearest row of plane q. Returns 0
+ * (the caller mirrors) where no row particle lies within the window. */
+static int extrapolate(const struct vsph_walls *w,
+                       const struct vsph_walls_ghosts *gh,
+                       const struct vsph_particles *p, size_t i, int q,
+                       double d) {
+  const int dim = p->dim, a = w->axis[q];
+  double per[3] = {0, 0, 0};
+  for (int k = 0; k < dim; k++)
+    if (k != a) per[k] = vsph_walls_period(w, k);
+  double num[3] = {0, 0, 0}, den = 0.0;
+  const double *b = gh->band + gh->bstart[q] * BAND_STRIDE;
+  for (size_t e = 0; e < gh->nband[q]; e++, b += BAND_STRIDE) {
+    double r2 = 0.0;
+    for (int k = 0; k < dim; k++) {
+      if (k == a) continue;
+      double dx = b[k] - p->pos[k][i];
+      if (per[k] > 0.0) dx -= per[k] * nearbyint(dx / per[k]);
+      r2 += dx * dx;
+    }
+    const double r = sqrt(r2);
+    if (r >= w->window) continue;
+    const double db = b[6];
+    const double wt = (1.0 - r / w->window) * (1.0 - db / w->band);
+    for (int k = 0; k < dim; k++) num[k] += wt * db * b[3 + k];
+    den += wt * db * db;
+  }
+  if (!(den > 0.0)) return 0;
+  for (int k = 0; k < dim; k++)
+    if (k != a) p->vel[k][i] = w->uw[q][k] - num[k] / den * d;
+  return 1;
+}
+
+/* Copy source s into ghost slot i, imaged across the planes in mask. */
+static void image(const struct vsph_walls *w,
+                  const struct vsph_walls_ghosts *gh, struct vsph_particles *p,
+                  size_t s, size_t i, unsigned mask) {
   const int d = p->dim;
+  int nmirror = 0, last = -1;
+  double uw[3] = {0, 0, 0};
   for (int k = 0; k < d; k++) {
     p->pos[k][i] = p->pos[k][s];
-    p->vel[k][i] = w->noslip ? -p->vel[k][s] : p->vel[k][s];
+    p->vel[k][i] = p->vel[k][s];
   }
   for (int q = 0; q < w->n; q++) {
     if (!(mask & (1u << q))) continue;
     const int a = w->axis[q];
+    if (w->kind[q] == VSPH_WALLS_PERIODIC) {
+      p->pos[a][i] += w->side[q] * vsph_walls_period(w, a);
+      continue;
+    }
     p->pos[a][i] = 2.0 * w->pos[q] - p->pos[a][i];
     if (!w->noslip) p->vel[a][i] = -p->vel[a][i]; /* normal reversed */
+    for (int k = 0; k < d; k++) uw[k] += w->uw[q][k];
+    nmirror++;
+    last = q;
+  }
+  if (w->noslip && nmirror > 0) {
+    const int lin = w->velocity == VSPH_WALLS_VEL_LINEAR && nmirror == 1;
+    const int a = last >= 0 ? w->axis[last] : 0;
+    if (lin) p->vel[a][i] = -p->vel[a][s]; /* normal reversed */
+    if (!lin || !extrapolate(w, gh, p, i, last, depth(w, p, s, last)))
+      for (int k = 0; k < d; k++)
+        p->vel[k][i] = 2.0 * uw[k] / nmirror - p->vel[k][s];
   }
   double pr = w->c0 * w->c0 * (p->rho[s] - w->rho0);
   if (w->g != 0.0) pr += w->rho0 * w->g * (p->pos[d - 1][s] - p->pos[d - 1][i]);
@@ -50,25 +182,79 @@ static void mirror(const struct vsph_walls *w, struct vsph_particles *p,
   p->vol[i] = p->m[i] / p->rho[i];
 }
 
+/* The two ends of each periodic axis as a bit mask, after checking that
+ * its period exceeds the reach (one image per end is then enough). */
+static int pairs(const struct vsph_walls *w, double reach, unsigned pair[3]) {
+  pair[0] = pair[1] = pair[2] = 0;
+  for (int q = 0; q < w->n; q++) {
+    if (w->kind[q] != VSPH_WALLS_PERIODIC) continue;
+    const double L = vsph_walls_period(w, w->axis[q]);
+    if (!(L > reach))
+      VSPH_FAIL(VSPH_EINVAL,
+                "periodic length %g is not longer than the reach %g", L, reach);
+    pair[w->axis[q]] |= 1u << q;
+  }
+  return VSPH_OK;
+}
+
+/* An image across the planes of mask exists unless it holds both ends of
+ * a periodic axis (their shifts cancel). */
+static int image_ok(unsigned mask, const unsigned pair[3]) {
+  for (int a = 0; a < 3; a++)
+    if (pair[a] && (mask & pair[a]) == pair[a]) return 0;
+  return 1;
+}
+
 /* The planes within reach of fluid particle s, as a bit mask. */
 static unsigned near_planes(const struct vsph_walls *w,
                             const struct vsph_particles *p, size_t s,
                             double reach) {
   unsigned near = 0;
-  for (int q = 0; q < w->n; q++) {
-    const double dist = w->side[q] * (p->pos[w->axis[q]][s] - w->pos[q]);
-    if (dist < reach) near |= 1u << q;
-  }
+  for (int q = 0; q < w->n; q++)
+    if (depth(w, p, s, q) < reach) near |= 1u << q;
   return near;
+}
+
+/* The nearest row of each no-slip plane (linear extrapolation): serial, in
+ * index order, so the fits are the same for any thread count. */
+static void rows(const struct vsph_walls *w, const struct vsph_particles *p,
+                 size_t n_fluid, struct vsph_walls_ghosts *gh) {
+  size_t e = 0;
+  for (int q = 0; q < w->n; q++) {
+    gh->bstart[q] = e;
+    gh->nband[q] = 0;
+    if (w->kind[q] != VSPH_WALLS_MIRROR) continue;
+    for (size_t i = 0; i < p->n && e < gh->cap; i++) {
+      if (p->id[i] >= n_fluid) continue;
+      const double d = depth(w, p, i, q);
+      if (!(d > 0.0 && d < w->band)) continue;
+      double *b = gh->band + e * BAND_STRIDE;
+      for (int k = 0; k < 3; k++) {
+        b[k] = k < p->dim ? p->pos[k][i] : 0.0;
+        b[3 + k] =
+            k < p->dim && k != w->axis[q] ? p->vel[k][i] - w->uw[q][k] : 0.0;
+      }
+      b[6] = d;
+      e++;
+      gh->nband[q]++;
+    }
+  }
 }
 
 size_t vsph_walls_count(const struct vsph_walls *w,
                         const struct vsph_particles *p, size_t n_fluid,
                         double reach) {
+  unsigned pair[3] = {0, 0, 0};
+  for (int q = 0; q < w->n; q++)
+    if (w->kind[q] == VSPH_WALLS_PERIODIC) pair[w->axis[q]] |= 1u << q;
   size_t n = 0;
-  for (size_t i = 0; i < p->n; i++)
-    if (p->id[i] < n_fluid) /* a non-empty subset of the near planes each */
-      n += (1u << __builtin_popcount(near_planes(w, p, i, reach))) - 1;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= n_fluid) continue;
+    /* the non-empty subsets of the near planes that make an image */
+    const unsigned near = near_planes(w, p, i, reach);
+    for (unsigned mask = near; mask; mask = (mask - 1) & near)
+      n += (size_t)image_ok(mask, pair);
+  }
   return n;
 }
 
@@ -96,10 +282,16 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
   }
   p->n = n;
   gh->n = 0;
+  if (gh->band) rows(w, p, n_fluid, gh);
+  unsigned pair[3];
+  int st = pairs(w, reach, pair);
+  if (st) return st;
   for (size_t s = 0; s < n_fluid; s++) {
     const unsigned near = near_planes(w, p, s, reach);
-    /* every non-empty subset of the near planes: images and corner images */
+    /* every non-empty subset of the near planes: images and corner images
+     * (never both ends of one periodic axis: their shifts cancel) */
     for (unsigned mask = near; mask; mask = (mask - 1) & near) {
+      if (!image_ok(mask, pair)) continue;
       if (gh->n >= gh->cap || p->n >= p->cap)
         VSPH_FAIL(VSPH_ENOMEM, "ghost capacity %zu exceeded", gh->cap);
       const size_t i = p->n++;
@@ -107,19 +299,20 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
       gh->mask[gh->n] = mask;
       p->id[i] = n_fluid + gh->n;
       gh->n++;
-      mirror(w, p, s, i, mask);
+      image(w, gh, p, s, i, mask);
     }
   }
   return VSPH_OK;
 }
 
 void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
-                       size_t n_fluid, const struct vsph_walls_ghosts *gh,
+                       size_t n_fluid, struct vsph_walls_ghosts *gh,
                        const size_t *where) {
+  if (gh->band) rows(w, p, n_fluid, gh);
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < p->n; i++) {
     if (p->id[i] < n_fluid) continue;
     const size_t g = p->id[i] - n_fluid;
-    mirror(w, p, where[gh->src[g]], i, gh->mask[g]);
+    image(w, gh, p, where[gh->src[g]], i, gh->mask[g]);
   }
 }

@@ -7,25 +7,61 @@ struct vsph_particles;
 
 /** @file walls.h
  *  @brief Planar walls by mirrored ghost particles ("ghost fluid", THEORY
- *  section 5), only for scenes that declare walls. A fluid particle within
- *  reach of a wall gets an image across it (and across both walls near a
- *  corner). Free slip: the normal velocity is reversed, the tangential kept;
- *  no slip: the velocity is reversed. Density and pressure are mirrored,
- *  with the hydrostatic correction p_g = p_s + rho0 g (y_s - y_g) under
- *  gravity. Ghosts carry ids n_fluid + g. No I/O. */
+ *  section 5) and periodic boundaries by image particles, only for scenes
+ *  that declare them. A fluid particle within reach of a plane gets an
+ *  image across it (and across every combination of the planes it is near,
+ *  corners included). Periodic planes come in pairs on one axis: an image
+ *  is shifted by the period and carries the source's state unchanged.
+ *
+ *  Mirror planes. Free slip: the normal velocity is reversed, the
+ *  tangential kept. No slip, the tangential velocity of the ghost by one of
+ *  two treatments (docs/theory.md, section 10):
+ *  - mirroring, u_g = 2 u_w - u_s (odd reflection about the wall's
+ *    velocity u_w);
+ *  - linear extrapolation [reconstructed]: the wall shear rate is fitted
+ *    to the fluid nearest the wall (within `band` of the wall and within
+ *    `window` of the ghost along the wall, both h; weights falling
+ *    linearly to zero in both directions, least squares through the wall
+ *    velocity) and the ghost at depth d behind the wall
+ *    gets u_w - gamma d: a constant shear into the wall, whatever the
+ *    source's own value (Basa et al. 2009, Sec. 5.2); where no fluid
+ *    particle is in that window, mirroring.
+ *  The normal velocity is reversed in both; a ghost across two no-slip
+ *  planes (a corner) is mirrored about the mean of their velocities.
+ *  Density and pressure are mirrored, with the hydrostatic correction
+ *  p_g = p_s + rho0 g (y_s - y_g) under gravity. Ghosts carry ids
+ *  n_fluid + g. No I/O. */
 
-/** At most this many planes. */
-#define VSPH_WALLS_MAX 4
+/** At most this many planes (a periodic pair counts two). */
+#define VSPH_WALLS_MAX 6
+
+/** What a plane is. */
+enum vsph_walls_kind {
+  VSPH_WALLS_MIRROR = 0, /*!< a wall: mirrored ghosts */
+  VSPH_WALLS_PERIODIC    /*!< one end of a periodic axis: shifted images */
+};
+
+/** How no-slip ghosts get their tangential velocity. */
+enum vsph_walls_velocity {
+  VSPH_WALLS_VEL_MIRROR = 0, /*!< u_g = 2 u_w - u_s */
+  VSPH_WALLS_VEL_LINEAR,     /*!< u_g = u_w - gamma d, gamma fitted */
+  VSPH_WALLS_VEL_COUNT
+};
 
 /** Wall set of a scene. */
 struct vsph_walls {
-  int n;                      /*!< number of planes */
-  int axis[VSPH_WALLS_MAX];   /*!< axis normal to the plane */
-  double pos[VSPH_WALLS_MAX]; /*!< plane coordinate (m) */
-  int side[VSPH_WALLS_MAX];   /*!< +1: fluid at larger coordinate, -1 less */
-  int noslip;                 /*!< 1: no slip, 0: free slip */
-  double g;                   /*!< gravity along -e_d for the correction */
-  double rho0, c0;            /*!< state equation for the ghost density */
+  int n;                        /*!< number of planes */
+  int axis[VSPH_WALLS_MAX];     /*!< axis normal to the plane */
+  double pos[VSPH_WALLS_MAX];   /*!< plane coordinate (m) */
+  int side[VSPH_WALLS_MAX];     /*!< +1: fluid at larger coordinate, -1 less */
+  int kind[VSPH_WALLS_MAX];     /*!< vsph_walls_kind */
+  double uw[VSPH_WALLS_MAX][3]; /*!< wall velocity (tangential; m/s) */
+  int noslip;                   /*!< 1: no slip, 0: free slip */
+  int velocity;                 /*!< vsph_walls_velocity (no slip) */
+  double band;                  /*!< linear: the nearest row, depth (m) */
+  double window;                /*!< linear: half-width along the wall (m) */
+  double g;                     /*!< gravity along -e_d for the correction */
+  double rho0, c0;              /*!< state equation for the ghost density */
 };
 
 /** Ghost bookkeeping, owned by the caller (sized by vsph_walls_count). */
@@ -33,11 +69,37 @@ struct vsph_walls_ghosts {
   size_t cap;     /*!< capacity */
   size_t n;       /*!< ghosts made by the last _generate */
   size_t *src;    /*!< source fluid id of ghost g */
-  unsigned *mask; /*!< bit w set: mirrored across plane w */
+  unsigned *mask; /*!< bit w set: imaged across plane w */
+  /* linear extrapolation only: the nearest rows, refreshed per update */
+  double *band; /*!< per entry: coordinates (3), shear terms (3), depth */
+  size_t nband[VSPH_WALLS_MAX];  /*!< entries of plane w */
+  size_t bstart[VSPH_WALLS_MAX]; /*!< first entry of plane w */
 };
 
-/** @brief Ghost bookkeeping for up to @p cap ghosts. NULL on failure. */
-struct vsph_walls_ghosts *vsph_walls_ghosts_alloc(size_t cap);
+/** @brief Name of a wall-velocity treatment ("mirror", "linear"). */
+const char *vsph_walls_velocity_name(int v);
+
+/** @brief Treatment called @p name into @p v.
+ *  @return VSPH_OK, or VSPH_EINVAL naming the choices. */
+int vsph_walls_velocity_resolve(const char *name, int *v);
+
+/** @brief Append a periodic pair on @p axis: images across [lo, hi).
+ *  @return VSPH_OK or VSPH_EINVAL (no room, hi <= lo). */
+int vsph_walls_add_periodic(struct vsph_walls *w, int axis, double lo,
+                            double hi);
+
+/** @brief The period of @p axis (m), or 0 if it is not periodic. */
+double vsph_walls_period(const struct vsph_walls *w, int axis);
+
+/** @brief Bring every fluid particle (id < n_fluid) back into the periodic
+ *  range of each periodic axis. */
+void vsph_walls_wrap(const struct vsph_walls *w, struct vsph_particles *p,
+                     size_t n_fluid);
+
+/** @brief Ghost bookkeeping for up to @p cap ghosts of wall set @p w (the
+ *  nearest-row scratch only for linear extrapolation). NULL on failure. */
+struct vsph_walls_ghosts *vsph_walls_ghosts_alloc(const struct vsph_walls *w,
+                                                  size_t cap);
 
 /** @brief Free; NULL is a no-op. */
 void vsph_walls_ghosts_free(struct vsph_walls_ghosts *gh);
@@ -48,7 +110,7 @@ size_t vsph_walls_count(const struct vsph_walls *w,
                         double reach);
 
 /** @brief Drop the ghosts (ids >= n_fluid) and append fresh images of
- *  every fluid particle within @p reach of a wall.
+ *  every fluid particle within @p reach of a plane.
  *  @return VSPH_OK or VSPH_ENOMEM (particle or ghost capacity exceeded). */
 int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
                         size_t n_fluid, double reach,
@@ -57,7 +119,7 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
 /** @brief Refresh every ghost from its source; @p where maps an id to its
  *  current index. */
 void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
-                       size_t n_fluid, const struct vsph_walls_ghosts *gh,
+                       size_t n_fluid, struct vsph_walls_ghosts *gh,
                        const size_t *where);
 
 #endif /* VSPH_SOLVER_WALLS_H */

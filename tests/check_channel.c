@@ -1,0 +1,318 @@
+/* Internal flows (issue 11): the channel series against an independent
+ * finite-difference solution and the digests' figures, the energy
+ * reference, periodic and no-slip walls in short solver runs. */
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_vector.h>
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../analysis/references.h"
+#include "../common/params.h"
+#include "../solver/integrate.h"
+#include "../solver/particles.h"
+#include "../solver/run.h"
+#include "../solver/scene.h"
+#include "../solver/walls.h"
+#include "check_suites.h"
+
+/* u_t = u_yy + f on 0 < y < 1, u(0) = 0, u(1) = top, from rest, to time
+ * t by backward Euler on N interior nodes (second-order differences):
+ * an independent solution of the start-up problems in units W = nu = 1.
+ * Returns u at the node nearest y. */
+static double fd_solve(double f, double top, double t, double y) {
+  const size_t N = 399, steps = 20000;
+  const double dy = 1.0 / (N + 1), dt = t / steps, r = dt / (dy * dy);
+  gsl_vector *u = gsl_vector_calloc(N), *b = gsl_vector_alloc(N);
+  gsl_vector *dg = gsl_vector_alloc(N), *off = gsl_vector_alloc(N - 1);
+  gsl_vector_set_all(dg, 1.0 + 2.0 * r);
+  gsl_vector_set_all(off, -r);
+  for (size_t s = 0; s < steps; s++) {
+    for (size_t i = 0; i < N; i++)
+      gsl_vector_set(b, i, gsl_vector_get(u, i) + dt * f);
+    gsl_vector_set(b, N - 1, gsl_vector_get(b, N - 1) + r * top);
+    gsl_linalg_solve_symm_tridiag(dg, off, b, u);
+  }
+  const double v = gsl_vector_get(u, (size_t)lround(y / dy) - 1);
+  gsl_vector_free(u);
+  gsl_vector_free(b);
+  gsl_vector_free(dg);
+  gsl_vector_free(off);
+  return v;
+}
+
+/* The series against that solution at y = 1/2 and 1/4, t = 0.02 and 0.1
+ * (W = nu = 1): backward Euler's error is O(dt) = 5e-6 t per unit time
+ * and the differences' O(dy^2/12 u'''') about 1e-6 of the scale, so 2e-5
+ * of U0 (or v0). */
+START_TEST(test_series_vs_fd) {
+  static const double ts[2] = {0.02, 0.1}, ys[2] = {0.5, 0.25};
+  for (int a = 0; a < 2; a++)
+    for (int b = 0; b < 2; b++) {
+      /* Poiseuille, U0 = 1: f = 2 nu U0/d^2 = 8 */
+      const double up = vsph_references_poiseuille(ys[b], ts[a], 1, 1, 1, NULL);
+      ck_assert_double_eq_tol(up, fd_solve(8.0, 0.0, ts[a], ys[b]), 2e-5);
+      const double uc = vsph_references_couette(ys[b], ts[a], 1, 1, 1, NULL);
+      ck_assert_double_eq_tol(uc, fd_solve(0.0, 1.0, ts[a], ys[b]), 2e-5);
+    }
+}
+END_TEST
+
+/* The digests' own evaluations (five printed digits: 1e-5): Basa et al.'s
+ * U(0, t*)/U0 = 0.62034 at t* = 1 and 0.86033 at t* = 2,
+ * t* = t pi^2 nu/(4 d^2); Morris' set-up (W = 1 mm, nu = 1e-6): the
+ * Poiseuille centreline 0.65999 v0 at t = 0.1125 s, the Couette midpoint
+ * 0.86181 v0/2 at 0.225 s and v(W/4) = 5.030e-6 m/s at 0.225 s (v0 =
+ * 2.5e-5). dU/dt against a centred difference (step 1e-6 of the time:
+ * error ~1e-10 relative). */
+START_TEST(test_series_digest) {
+  const double d = 0.5, k = M_PI * M_PI / (4 * d * d);
+  ck_assert_double_eq_tol(vsph_references_poiseuille(0.5, 1.0 / k, 1, 1, 1, 0),
+                          0.62034, 1e-5);
+  ck_assert_double_eq_tol(vsph_references_poiseuille(0.5, 2.0 / k, 1, 1, 1, 0),
+                          0.86033, 1e-5);
+  const double W = 1e-3, nu = 1e-6, v0 = 2.5e-5;
+  ck_assert_double_eq_tol(
+      vsph_references_poiseuille(W / 2, 0.1125, W, nu, v0, 0) / v0, 0.65999,
+      1e-5);
+  ck_assert_double_eq_tol(
+      vsph_references_couette(W / 2, 0.225, W, nu, v0, 0) / (v0 / 2), 0.86181,
+      1e-5);
+  ck_assert_double_eq_tol(vsph_references_couette(W / 4, 0.225, W, nu, v0, 0),
+                          5.030e-6, 1e-9);
+  for (int c = 0; c < 2; c++) {
+    const double t = 0.05, e = 1e-6 * t;
+    double rate;
+    double (*fn)(double, double, double, double, double, double *) =
+        c ? vsph_references_couette : vsph_references_poiseuille;
+    fn(0.3, t, 1, 1, 1, &rate);
+    const double fd =
+        (fn(0.3, t + e, 1, 1, 1, NULL) - fn(0.3, t - e, 1, 1, 1, NULL)) /
+        (2 * e);
+    ck_assert_double_eq_tol(rate, fd, 1e-7 * fabs(fd));
+  }
+}
+END_TEST
+
+/* A scene with one --set. */
+static void scene(struct vsph_scene *sc, const char *name, const char *key,
+                  const char *val) {
+  struct vsph_params *prm = vsph_params_alloc();
+  if (key) ck_assert_int_eq(vsph_params_set(prm, key, val), 0);
+  ck_assert_int_eq(vsph_scene_init(sc, vsph_scene_find(name), prm), 0);
+  vsph_params_free(prm);
+}
+
+/* The energy reference: at t* = 40 the transient is e^-40 of the steady
+ * profile, whose energy is (rho/2) length U0^2 W 8/15 exactly (the
+ * quadrature is exact on that quartic: 1e-12); dE_k/dt against a centred
+ * difference of E_k (1e-6 relative). */
+START_TEST(test_channel_energy) {
+  struct vsph_scene sc;
+  scene(&sc, "poiseuille", "Scene:Re", "2");
+  struct vsph_references_scene *r = vsph_references_scene_alloc(&sc);
+  ck_assert_ptr_nonnull(r);
+  const struct vsph_scene_channel *ch = &sc.u.channel;
+  double E, dE, Ea, Eb, x;
+  const double d = ch->W / 2, tl = 40.0 * 4 * d * d / (M_PI * M_PI * ch->nu);
+  ck_assert_int_eq(vsph_references_scene_eval(r, tl, &E, &dE), 0);
+  const double Es = 0.5 * sc.rho0 * ch->length * ch->U * ch->U * ch->W * 8 / 15;
+  ck_assert_double_eq_tol(E, Es, 1e-12 * Es);
+  const double t = 0.05, e = 1e-5;
+  ck_assert_int_eq(vsph_references_scene_eval(r, t, &E, &dE), 0);
+  vsph_references_scene_eval(r, t + e, &Ea, &x);
+  vsph_references_scene_eval(r, t - e, &Eb, &x);
+  ck_assert_double_eq_tol(dE, (Ea - Eb) / (2 * e), 1e-6 * fabs(dE));
+  vsph_references_scene_free(r);
+}
+END_TEST
+
+/* A channel run through the driver to t_end; returns the last row's
+ * profile errors. */
+static void channel_run(const char *name, const char *visc, const char *walls,
+                        size_t res, double t_end,
+                        struct vsph_references_profile_err *e, int *ok) {
+  struct vsph_params *prm = vsph_params_alloc();
+  char buf[32];
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:visc", visc), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Scene:walls", walls), 0);
+  snprintf(buf, sizeof buf, "%zu", res);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:res", buf), 0);
+  snprintf(buf, sizeof buf, "%.17g", t_end);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:t_end", buf), 0);
+  struct vsph_run_props rp;
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
+  ck_assert_int_eq(vsph_scene_init(&sc, vsph_scene_find(name), prm), 0);
+  vsph_params_free(prm);
+  struct vsph_run *run = NULL;
+  ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+  while (run->state == VSPH_RUN_RUNNING)
+    ck_assert_int_eq(vsph_run_iterate(run), 0);
+  *ok = run->state == VSPH_RUN_DONE;
+  vsph_references_profile_error(&run->scene, run->integ->p, run->n_fluid,
+                                vsph_run_time(run), e);
+  vsph_run_free(run);
+}
+
+/* Couette's steady profile is linear, which the single-pass forms
+ * reproduce exactly in the interior and both wall treatments continue
+ * exactly into the walls: at t = 1.5 s (Morris' units) the series'
+ * transient is 2e-7 v0, so what is left is time-stepping and density
+ * noise. Bound 1e-3 v0 (measured 8e-7 to 3e-5 at W/dx = 20). */
+START_TEST(test_couette_steady) {
+  static const char *const forms[3] = {"mgf", "meaf", "cleary"};
+  for (int w = 0; w < 2; w++) {
+    struct vsph_references_profile_err e;
+    int ok;
+    channel_run("couette", forms[_i], w ? "mirror" : "linear", 20, 1.5, &e,
+                &ok);
+    ck_assert(ok);
+    ck_assert_double_lt(e.rms, 1e-3);
+  }
+}
+END_TEST
+
+/* Basa et al.'s start-up finding: mirrored wall velocities under-estimate
+ * the near-wall shear, linear extrapolation does better. Poiseuille at
+ * W/dx = 20, t = 0.01 s (t* = 0.1): the RMS error with linear
+ * extrapolation is below mirroring's for MGF, MEAF and PVWF (measured
+ * 0.14/0.17, 0.12/0.17 and 0.45/1.29 % of U0). */
+START_TEST(test_startup_walls) {
+  static const char *const forms[3] = {"mgf", "meaf", "pvwf"};
+  struct vsph_references_profile_err lin, mir;
+  int ok;
+  channel_run("poiseuille", forms[_i], "linear", 20, 0.01, &lin, &ok);
+  ck_assert(ok);
+  channel_run("poiseuille", forms[_i], "mirror", 20, 0.01, &mir, &ok);
+  ck_assert(ok);
+  ck_assert_double_lt(lin.rms, mir.rms);
+  /* both within the start-up error of a 20-row channel (< 2 % of U0) */
+  ck_assert_double_lt(mir.rms, 0.02);
+}
+END_TEST
+
+/* Poiseuille start-up with MEAF (Morris, model E) at W/dx = 20 to t* = 2:
+ * within 1 % of U0 (RMS; measured 0.28 %, transverse agitation 5e-5 U0; the
+ * interior lattice error of the Laplacian at h/dx = 4/3 is about 1 %,
+ * test_morris_lattice). */
+START_TEST(test_poiseuille_meaf) {
+  struct vsph_references_profile_err e;
+  int ok;
+  channel_run("poiseuille", "meaf", "linear", 20, 0.2, &e, &ok);
+  ck_assert(ok);
+  ck_assert_double_lt(e.rms, 0.01);
+  ck_assert_double_lt(e.v_rms, 1e-3); /* ordered rows: 20x measured */
+}
+END_TEST
+
+/* Periodic images: a channel at rest with uniform density feels no force
+ * at all (each particle sees the same lattice across the seam), and one
+ * and two threads step it bitwise alike under a drive. */
+START_TEST(test_periodic_rest_threads) {
+  double *state[2];
+  size_t n = 0;
+  for (int t = 0; t < 2; t++) {
+    omp_set_num_threads(t + 1);
+    struct vsph_params *prm = vsph_params_alloc();
+    ck_assert_int_eq(vsph_params_set(prm, "Solver:res", "12"), 0);
+    struct vsph_run_props rp;
+    struct vsph_scene sc;
+    ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
+    ck_assert_int_eq(vsph_scene_init(&sc, &vsph_channel_poiseuille_type, prm),
+                     0);
+    vsph_params_free(prm);
+    struct vsph_run *run = NULL;
+    ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+    struct vsph_integrate *s = run->integ;
+    if (t == 0) { /* no drive: no motion, to rounding */
+      const double f = s->props.eq.f;
+      s->props.eq.f = 0.0;
+      ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+      for (size_t i = 0; i < s->p->n; i++)
+        if (s->p->id[i] < s->n_fluid)
+          for (int k = 0; k < 2; k++)
+            ck_assert_double_le(fabs(s->p->acc[k][i]), 1e-9 * f);
+      s->props.eq.f = f;
+    }
+    for (int k = 0; k < 8; k++) ck_assert_int_eq(vsph_run_iterate(run), 0);
+    n = s->n_fluid;
+    state[t] = calloc(3 * n, sizeof(double));
+    for (size_t i = 0; i < s->p->n; i++) {
+      const size_t id = s->p->id[i];
+      if (id >= n) continue;
+      state[t][id] = s->p->pos[0][i];
+      state[t][n + id] = s->p->vel[0][i];
+      state[t][2 * n + id] = s->p->rho[i];
+    }
+    vsph_run_free(run);
+  }
+  ck_assert_int_eq(memcmp(state[0], state[1], 3 * n * sizeof(double)), 0);
+  free(state[0]);
+  free(state[1]);
+}
+END_TEST
+
+/* Linear extrapolation of a wall with a known shear: fluid carrying
+ * u = gamma y above the wall y = 0 gives every ghost u_g = -gamma d, d
+ * its depth (the fit is exact on a linear profile: 1e-12 relative). */
+START_TEST(test_linear_extrapolation) {
+  struct vsph_walls w = {.n = 1,
+                         .axis = {1},
+                         .pos = {0.0},
+                         .side = {+1},
+                         .noslip = 1,
+                         .velocity = VSPH_WALLS_VEL_LINEAR,
+                         .band = 0.3,
+                         .window = 0.3,
+                         .rho0 = 1,
+                         .c0 = 1};
+  ck_assert_int_eq(vsph_walls_add_periodic(&w, 0, 0.0, 1.0), 0);
+  struct vsph_particles *p = vsph_particles_alloc(400, 2);
+  const double gamma = 2.5;
+  for (int j = 0; j < 8; j++)
+    for (int i = 0; i < 10; i++) {
+      const size_t k = p->n++;
+      p->id[k] = k;
+      p->pos[0][k] = (i + 0.5) / 10;
+      p->pos[1][k] = (j + 0.5) / 10;
+      p->vel[0][k] = gamma * p->pos[1][k];
+      p->vel[1][k] = 0.0;
+      p->rho[k] = p->m[k] = 1.0;
+    }
+  const size_t nf = p->n;
+  struct vsph_walls_ghosts *gh = vsph_walls_ghosts_alloc(&w, 300);
+  ck_assert_int_eq(vsph_walls_generate(&w, p, nf, 0.25, gh), 0);
+  size_t nmirror = 0;
+  for (size_t i = nf; i < p->n; i++) {
+    const double y = p->pos[1][i];
+    if (y < 0) {
+      nmirror++;
+      ck_assert_double_eq_tol(p->vel[0][i], gamma * y, 1e-12 * gamma);
+      ck_assert_double_eq_tol(p->vel[1][i], 0.0, 1e-15);
+    }
+  }
+  /* two rows within reach 0.25, and their images across the seam (two
+   * columns at each end) */
+  ck_assert_uint_eq(nmirror, 2 * 10 + 4 * 2);
+  vsph_walls_ghosts_free(gh);
+  vsph_particles_free(p);
+}
+END_TEST
+
+Suite *vsph_channel_suite(void) {
+  Suite *s = suite_create("channel");
+  TCase *tc = tcase_create("internal");
+  tcase_set_timeout(tc, 120);
+  tcase_add_test(tc, test_series_vs_fd);
+  tcase_add_test(tc, test_series_digest);
+  tcase_add_test(tc, test_channel_energy);
+  tcase_add_test(tc, test_linear_extrapolation);
+  tcase_add_test(tc, test_periodic_rest_threads);
+  tcase_add_loop_test(tc, test_couette_steady, 0, 3);
+  tcase_add_loop_test(tc, test_startup_walls, 0, 3);
+  tcase_add_test(tc, test_poiseuille_meaf);
+  suite_add_tcase(s, tc);
+  return s;
+}
