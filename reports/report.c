@@ -48,6 +48,8 @@ static const struct part PARTS[] = {
      "hard cases: PVWF, high Re, perturbed start, low c0, CFL"},
     {"patch", vsph_report_patch_write, 1,
      "Laplacian patch tests of VISC-01..04 beside Zheng et al. (2018)"},
+    {"channel", vsph_report_channel_write, 0,
+     "internal flows (Poiseuille, Couette) and the other formulations"},
     {"claims", vsph_report_claims_write, 0,
      "the paper's claims beside our figures"},
 };

@@ -282,4 +282,9 @@ int vsph_report_patch_write(struct vsph_report *R);
 /* The claims of Zheng, Ma & Shao (2018) for section 9 (report_patch.c). */
 int vsph_report_patch_claims(struct vsph_report *R);
 
+/* Section 11: internal flows and the other formulations
+ * (report_channel.c), and their claims. */
+int vsph_report_channel_write(struct vsph_report *R);
+int vsph_report_channel_claims(struct vsph_report *R);
+
 #endif /* VSPH_REPORTS_REPORT_INTERNAL_H */
