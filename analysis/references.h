@@ -67,7 +67,7 @@ struct vsph_scene_channel;
 struct vsph_particles;
 
 /** @brief Poiseuille start-up from rest (Basa et al. 2009, eq. 36 with its
- *  sign corrected; docs/theory.md, section 10): the velocity U(y, t) at
+ *  sign corrected; docs/theory.md, section 9): the velocity U(y, t) at
  *  height @p y above the lower wall of a channel of width @p W, kinematic
  *  viscosity @p nu, steady centreline speed @p U0, d = W/2, yc = y - d:
  *  U/U0 = 1 - (yc/d)^2 - (32/pi^3) sum_n (-1)^n/(2n+1)^3

@@ -1,6 +1,6 @@
 /* Section 11 of the report: internal flows and the other formulations
  * (Basa, Quinlan & Lastiwka 2009; Zheng, Ma & Shao 2018; docs/theory.md
- * sections 9-10): Poiseuille start-up at Basa et al.'s set-up for every
+ * sections 8-9): Poiseuille start-up at Basa et al.'s set-up for every
  * formulation, Cleary's xi, the wall-velocity treatments at start-up, and
  * Couette start-up at Morris' set-up; their claims for the claims table. */
 #include <math.h>

@@ -281,7 +281,7 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_pressure(const struct vsph_pair *pr,
 }
 
 /** @brief MGF, Monaghan & Gingold, Eq. (4.20), THEORY 3, and its
- *  Brookshaw-type kin (docs/theory.md, section 9):
+ *  Brookshaw-type kin (docs/theory.md, section 8):
  *  (div V)_i = K mu sum_j V_j (u_j - u_i).(r_j - r_i)/(s^2 + eta^2)
  *  grad_i W_ij. MGF: K = 2(d+2), eta = 0; Violeau & Issa (Basa's model C):
  *  K = 2(d+2), eta = 0.1 h; Cleary (model D): K = 2 xi, eta = 0.1 h.

@@ -58,7 +58,7 @@ struct vsph_scene_wave {
   double nu;    /*!< kinematic viscosity lambda U_max/Re (m^2/s) */
 };
 
-/** Channel start-up (Poiseuille or Couette; docs/theory.md, section 10):
+/** Channel start-up (Poiseuille or Couette; docs/theory.md, section 9):
  *  walls y = 0 and y = W, periodic in x over `length`, from rest. */
 struct vsph_scene_channel {
   double W;      /*!< width between the walls (m) */

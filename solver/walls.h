@@ -15,7 +15,7 @@ struct vsph_particles;
  *
  *  Mirror planes. Free slip: the normal velocity is reversed, the
  *  tangential kept. No slip, the tangential velocity of the ghost by one of
- *  two treatments (docs/theory.md, section 10):
+ *  two treatments (docs/theory.md, section 9):
  *  - mirroring, u_g = 2 u_w - u_s (odd reflection about the wall's
  *    velocity u_w);
  *  - linear extrapolation [reconstructed]: the wall shear rate is fitted

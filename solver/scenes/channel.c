@@ -1,5 +1,5 @@
 /* Channel start-up flows (Basa, Quinlan & Lastiwka 2009; Morris, Fox & Zhu
- * 1997; docs/theory.md, section 10): fluid between no-slip walls y = 0 and
+ * 1997; docs/theory.md, section 9): fluid between no-slip walls y = 0 and
  * y = W, periodic in x, from rest. Poiseuille: driven by a uniform force
  * f = 2 nu U0/d^2 (d = W/2), Re = U0 d/nu (Basa et al.'s definition).
  * Couette: the wall y = W moves at v0 from t = 0, Re = v0 W/nu (Morris').
