@@ -57,7 +57,7 @@ static int sweep(struct vsph_report *R, struct tables *tb,
             r.magnitude[1][l], r.magnitude[2][l]);
   fprintf(tb->sl, "%s,%d,%s", k->name, dim, fn);
   fprintf(R->md, "| %s | %d | %s", k->name, dim, fn);
-  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++) {
+  for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT; f++) {
     if (r.rounding[f]) {
       fprintf(tb->sl, ",");
       fprintf(R->md, " | round");
@@ -88,7 +88,7 @@ static int figure(struct vsph_report *R, int dim, int fk) {
   /* the sweep's h range (h0 = 0.1 halved 4 times), not whole decades */
   snprintf(pl.extra, sizeof pl.extra, "set xrange [0.0045:0.14]\n");
   int st = VSPH_OK;
-  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++) {
+  for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT && !st; f++) {
     char using[16], style[96];
     snprintf(using, sizeof using, "1:%d", f + 2);
     vsph_report_runs_style(style, sizeof style, f, "");
@@ -135,7 +135,7 @@ static int axis(struct vsph_report *R) {
   vsph_text_set(&R->tv, "A", "%g", sp.field.A);
   vsph_text_set(&R->tv, "mu", "%g", sp.mu);
   if (!st) st = vsph_report_say(R, "scaling.axis_head");
-  for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT && !st; form++) {
+  for (int form = 0; form < VSPH_VISCOUS_PAPER_COUNT && !st; form++) {
     char pname[64], title[160];
     snprintf(pname, sizeof pname, "fig_axis_%s", vsph_viscous_name(form));
     snprintf(title, sizeof title,
