@@ -127,6 +127,13 @@ static void stop_cell(FILE *md, const struct vsph_report_run *r, double ts) {
             strstr(r->reason, "pairing") ? "pairing" : r->reason);
 }
 
+/* A run's energy.csv as gnuplot sees it from the report folder (the runs
+ * live in its runs/). */
+static void data_file(char *buf, size_t len, const struct vsph_report_run *r) {
+  const char *base = strrchr(r->dir, '/');
+  snprintf(buf, len, "runs/%s/energy.csv", base ? base + 1 : r->dir);
+}
+
 /* Error against t* of every Poiseuille run, and against t of Couette's. */
 static int figures(struct vsph_report *R, const struct chan *c) {
   struct vsph_plot pl;
@@ -141,7 +148,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
   int st = VSPH_OK;
   for (int f = 0; f < NPOIS && !st; f++) {
     char file[600], style[96], cols[64];
-    snprintf(file, sizeof file, "%s/energy.csv", c->pois[f].dir);
+    data_file(file, sizeof file, &c->pois[f]);
     snprintf(cols, sizeof cols, "($1*%.10g):16", TSTAR);
     vsph_report_runs_style(style, sizeof style, f, "");
     st = vsph_plot_add(&pl, file, cols, POIS_LABEL[f], style);
@@ -158,7 +165,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
   pl.logy = 1;
   for (int f = 0; f < NCOU && !st; f++) {
     char file[600], style[96];
-    snprintf(file, sizeof file, "%s/energy.csv", c->cou[f].dir);
+    data_file(file, sizeof file, &c->cou[f]);
     vsph_report_runs_style(style, sizeof style, f, "");
     st = vsph_plot_add(&pl, file, "1:16", vsph_viscous_label(f), style);
   }
