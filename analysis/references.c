@@ -210,6 +210,14 @@ struct vsph_references_scene *vsph_references_scene_alloc(
     return NULL;
   }
   r->scene = sc;
+  /* channels: 64-point Gauss-Legendre for E_k, made once */
+  if (vsph_scene_is_channel(sc->type) &&
+      !(r->gl = gsl_integration_glfixed_table_alloc(64))) {
+    free(r);
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot allocate a quadrature table");
+    return NULL;
+  }
   if (sc->type == &vsph_vortex_patch_type) {
     const struct vsph_scene_vortex *vp = &sc->u.vortex;
     /* 80 terms: the initial profile to ~3e-7, better at every t > 0 */
@@ -226,6 +234,7 @@ struct vsph_references_scene *vsph_references_scene_alloc(
 void vsph_references_scene_free(struct vsph_references_scene *r) {
   if (!r) return;
   vsph_references_vortex_free(r->vortex);
+  if (r->gl) gsl_integration_glfixed_table_free(r->gl);
   free(r);
 }
 
@@ -278,17 +287,12 @@ double vsph_references_channel(const struct vsph_scene_channel *ch, double y,
              : vsph_references_poiseuille(y, t, ch->W, ch->nu, ch->U, dudt);
 }
 
-static int is_channel(const struct vsph_scene *sc) {
-  return sc->type == &vsph_channel_poiseuille_type ||
-         sc->type == &vsph_channel_couette_type;
-}
-
 void vsph_references_profile_error(const struct vsph_scene *sc,
                                    const struct vsph_particles *p,
                                    size_t n_fluid, double t,
                                    struct vsph_references_profile_err *e) {
   e->rms = e->rms_rel = e->v_rms = NAN;
-  if (!is_channel(sc)) return;
+  if (!vsph_scene_is_channel(sc->type)) return;
   const struct vsph_scene_channel *ch = &sc->u.channel;
   double s = 0.0, sr = 0.0, sv = 0.0;
   size_t n = 0;
@@ -311,7 +315,7 @@ int vsph_references_profile_bins(const struct vsph_scene *sc,
                                  const struct vsph_particles *p, size_t n_fluid,
                                  double t, size_t nb, double *y, double *u,
                                  double *U, size_t *count) {
-  if (!is_channel(sc) || nb == 0)
+  if (!vsph_scene_is_channel(sc->type) || nb == 0)
     VSPH_FAIL(VSPH_EINVAL, "scene '%s' has no velocity profile",
               sc->type->name);
   const struct vsph_scene_channel *ch = &sc->u.channel;
@@ -339,36 +343,32 @@ int vsph_references_profile_bins(const struct vsph_scene *sc,
 }
 
 /* Channel E_k = (rho/2) length int_0^W U^2 dy and its rate
- * rho length int U dU/dt dy, by 64-point Gauss-Legendre (the series is
- * smooth for t > 0; exact zeros at t = 0). */
-static void channel_energy(const struct vsph_scene *sc, double t, double *Ek,
-                           double *dEk) {
-  const struct vsph_scene_channel *ch = &sc->u.channel;
+ * rho length int U dU/dt dy, by Gauss-Legendre quadrature on the table
+ * made with the reference (the series is smooth for t > 0; exact zeros at
+ * t = 0). */
+static void channel_energy(const struct vsph_references_scene *r, double t,
+                           double *Ek, double *dEk) {
+  const struct vsph_scene_channel *ch = &r->scene->u.channel;
   *Ek = *dEk = 0.0;
   if (t <= 0.0) return;
-  gsl_integration_glfixed_table *tb = gsl_integration_glfixed_table_alloc(64);
-  if (!tb) {
-    *Ek = *dEk = NAN;
-    return;
-  }
-  for (size_t k = 0; k < 64; k++) {
+  const gsl_integration_glfixed_table *gl = r->gl;
+  for (size_t k = 0; k < gl->n; k++) {
     double x, w, ut;
-    gsl_integration_glfixed_point(0.0, ch->W, k, &x, &w, tb);
+    gsl_integration_glfixed_point(0.0, ch->W, k, &x, &w, gl);
     const double U = vsph_references_channel(ch, x, t, &ut);
     *Ek += w * U * U;
     *dEk += w * U * ut;
   }
-  gsl_integration_glfixed_table_free(tb);
-  *Ek *= 0.5 * sc->rho0 * ch->length;
-  *dEk *= sc->rho0 * ch->length;
+  *Ek *= 0.5 * r->scene->rho0 * ch->length;
+  *dEk *= r->scene->rho0 * ch->length;
 }
 
 int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
                                double *Ek, double *dEk_dt) {
   const struct vsph_scene *sc = r->scene;
   *Ek = *dEk_dt = NAN;
-  if (is_channel(sc)) {
-    channel_energy(sc, t, Ek, dEk_dt);
+  if (r->gl) {
+    channel_energy(r, t, Ek, dEk_dt);
     return VSPH_OK;
   }
   if (r->vortex) {

@@ -131,6 +131,7 @@ double vsph_references_lighthill(const struct vsph_scene_wave *w, double rho,
 struct vsph_references_scene {
   const struct vsph_scene *scene;        /*!< borrowed */
   struct vsph_references_vortex *vortex; /*!< vortex patch only */
+  void *gl; /*!< channels: their gsl_integration_glfixed_table */
 };
 
 /** @brief Reference of @p sc (kept by reference until _free).

@@ -341,8 +341,7 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
           "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,Ek_ref,"
           "dEk_ref,Em_ref,dEm_ref,u_err,u_err_rel,v_rms\n");
   if (rp.snapshots > 0 && (st = vsph_vtk_pvd_open(&o.pvd, res->dir))) goto done;
-  if (rp.snapshots > 0 && (type == &vsph_channel_poiseuille_type ||
-                           type == &vsph_channel_couette_type)) {
+  if (rp.snapshots > 0 && vsph_scene_is_channel(type)) {
     snprintf(path, sizeof path, "%s/profile.csv", res->dir);
     if (!(o.profile = fopen(path, "w"))) {
       vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot write %s: %s",

@@ -314,7 +314,7 @@ static int bench_solver(FILE *out, int busy) {
     for (int thr = 1; thr <= 2; thr++) {
       omp_set_num_threads(thr);
       double t, med, inter;
-      const double passes = cases[c].form == VSPH_VISCOUS_PVWF ? 2.0 : 1.0;
+      const double passes = vsph_viscous_passes(cases[c].form);
       if (cases[c].step) {
         t = timed(7, step_once, &a, &med);
         inter = passes * (double)a.s->interactions;
@@ -445,7 +445,7 @@ static int bench_operators(FILE *out, size_t side) {
     if ((st = vsph_viscous_props_init(&va.vp, form, &vsph_gaussian_type, 2, h,
                                       0.01)))
       break;
-    const double passes = form == VSPH_VISCOUS_PVWF ? 2.0 : 1.0;
+    const double passes = vsph_viscous_passes(form);
     omp_set_num_threads(1);
     const double t1 = best_of(5, visc_once, &va);
     omp_set_num_threads(2);

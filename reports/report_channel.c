@@ -24,25 +24,25 @@ static const char *const POIS_LABEL[NPOIS] = {"MGF",
                                               "VI (C)",
                                               "Cleary (D), xi 4.96333",
                                               "Cleary (D), xi 4.24"};
+/* Basa et al.'s kernel: cubic spline, dx/h = 0.637 */
+#define BASA "Solver:kernel=cubic", "Solver:hdx=1.5699"
 static const char *const POIS_XTRA[NPOIS][4] = {
-    {"Solver:kernel=cubic", "Solver:hdx=1.5699", NULL, NULL},
-    {"Solver:kernel=cubic", "Solver:hdx=1.5699", NULL, NULL},
-    {"Solver:kernel=cubic", "Solver:hdx=1.5699", NULL, NULL},
-    {"Solver:kernel=cubic", "Solver:hdx=1.5699", NULL, NULL},
-    {"Solver:kernel=cubic", "Solver:hdx=1.5699", "Solver:xi=4.96333", NULL},
-    {"Solver:kernel=cubic", "Solver:hdx=1.5699", "Solver:xi=4.24", NULL}};
+    {BASA, NULL},
+    {BASA, NULL},
+    {BASA, NULL},
+    {BASA, NULL},
+    {BASA, "Solver:xi=4.96333", NULL},
+    {BASA, "Solver:xi=4.24", NULL}};
 static const char *const POIS_TAG[NPOIS] = {"basa", "basa", "basa",
                                             "basa", "basa", "basa424"};
 /* the wall treatments at start-up: t* = 0.49 */
-static const char *const WALL_XTRA[2][4] = {
-    {"Solver:kernel=cubic", "Solver:hdx=1.5699", "Scene:walls=linear", NULL},
-    {"Solver:kernel=cubic", "Solver:hdx=1.5699", "Scene:walls=mirror", NULL}};
+static const char *const WALL_XTRA[2][4] = {{BASA, "Scene:walls=linear", NULL},
+                                            {BASA, "Scene:walls=mirror", NULL}};
 /* Couette: Morris' set-up to 1 s; FULL as Zheng et al. run it (40 rows,
  * cubic spline, h = 2.2 dx), quick at 20 rows with Basa et al.'s
  * dx/h = 0.637 (a sixteenth of the cost) */
 static const char *const COU_XTRA[2][3] = {
-    {"Solver:kernel=cubic", "Solver:hdx=1.5699", NULL},
-    {"Solver:kernel=cubic", "Solver:hdx=2.2", NULL}};
+    {BASA, NULL}, {"Solver:kernel=cubic", "Solver:hdx=2.2", NULL}};
 #define NCOU VSPH_VISCOUS_FORM_COUNT
 
 /* t* = t pi^2 nu/(4 d^2) for Basa's channel (W = 1, nu = 1) */

@@ -145,7 +145,7 @@ static int prepare(struct vsph_integrate *s, double skin) {
     vsph_walls_wrap(w, s->p, s->n_fluid);
     /* a two-pass form (PVWF) differentiates its first pass: ghosts two
      * supports deep (Basa et al.: 4h rather than 2h) */
-    const double reach = (vp->form == VSPH_VISCOUS_PVWF ? 2.0 : 1.0) * H;
+    const double reach = vsph_viscous_passes(vp->form) * H;
     const size_t ng = vsph_walls_count(w, s->p, s->n_fluid, reach + skin);
     if ((st = reserve(s, s->n_fluid + ng)) ||
         (st = vsph_walls_generate(w, s->p, s->n_fluid, reach + skin, s->gh)))

@@ -108,7 +108,7 @@ static int check_cost(const struct vsph_run_props *rp,
       sc->type->area * pow((double)rp->res, sc->dim) + 4.0 * (double)rp->res;
   /* ghosts: a layer of reach/dx + 1 particles along each wall, over at
    * most twice the fluid's side (n^((d-1)/d)), corners included */
-  const double deep = rp->form == VSPH_VISCOUS_PVWF ? 2.0 : 1.0;
+  const double deep = vsph_viscous_passes(rp->form);
   for (int a = 0; a < sc->dim; a++) {
     const double L = vsph_walls_period(&sc->walls, a);
     const double reach = deep * rp->ktype->kappa * h;

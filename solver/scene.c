@@ -14,6 +14,11 @@ static const struct vsph_scene_type *const scene_table[] = {
     &vsph_channel_couette_type,
 };
 
+int vsph_scene_is_channel(const struct vsph_scene_type *type) {
+  return type == &vsph_channel_poiseuille_type ||
+         type == &vsph_channel_couette_type;
+}
+
 size_t vsph_scene_count(void) {
   return sizeof scene_table / sizeof scene_table[0];
 }

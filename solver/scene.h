@@ -124,6 +124,10 @@ extern const struct vsph_scene_type vsph_standing_wave_type;
 extern const struct vsph_scene_type vsph_channel_poiseuille_type;
 extern const struct vsph_scene_type vsph_channel_couette_type;
 
+/** @brief 1 if @p type is a channel (Poiseuille or Couette: a velocity
+ *  profile with a series reference), else 0. */
+int vsph_scene_is_channel(const struct vsph_scene_type *type);
+
 /** @brief Number of scenes. */
 size_t vsph_scene_count(void);
 

@@ -182,6 +182,13 @@ VSPH_CONSTS_SPECIALISE double vsph_viscous_pair(
   }
 }
 
+/** @brief Neighbour passes of @p form per evaluation: 2 for PVWF, whose
+ *  second pass differentiates its first (so its ghost layers are two
+ *  supports deep), 1 for the others. */
+static inline int vsph_viscous_passes(int form) {
+  return form == VSPH_VISCOUS_PVWF ? 2 : 1;
+}
+
 /** @brief The form whose specialised loop serves @p form: the Brookshaw
  *  forms (VI, Cleary) share MGF's, their constants being in the loop. */
 static inline int vsph_viscous_loop_form(int form) {

@@ -168,8 +168,7 @@ static void image(const struct vsph_walls *w,
   }
   if (w->noslip && nmirror > 0) {
     const int lin = w->velocity == VSPH_WALLS_VEL_LINEAR && nmirror == 1;
-    const int a = last >= 0 ? w->axis[last] : 0;
-    if (lin) p->vel[a][i] = -p->vel[a][s]; /* normal reversed */
+    if (lin) p->vel[w->axis[last]][i] = -p->vel[w->axis[last]][s]; /* normal */
     if (!lin || !extrapolate(w, gh, p, i, last, depth(w, p, s, last)))
       for (int k = 0; k < d; k++)
         p->vel[k][i] = 2.0 * uw[k] / nmirror - p->vel[k][s];
@@ -182,19 +181,11 @@ static void image(const struct vsph_walls *w,
   p->vol[i] = p->m[i] / p->rho[i];
 }
 
-/* The two ends of each periodic axis as a bit mask, after checking that
- * its period exceeds the reach (one image per end is then enough). */
-static int pairs(const struct vsph_walls *w, double reach, unsigned pair[3]) {
+/* The two ends of each periodic axis as a bit mask. */
+static void ends(const struct vsph_walls *w, unsigned pair[3]) {
   pair[0] = pair[1] = pair[2] = 0;
-  for (int q = 0; q < w->n; q++) {
-    if (w->kind[q] != VSPH_WALLS_PERIODIC) continue;
-    const double L = vsph_walls_period(w, w->axis[q]);
-    if (!(L > reach))
-      VSPH_FAIL(VSPH_EINVAL,
-                "periodic length %g is not longer than the reach %g", L, reach);
-    pair[w->axis[q]] |= 1u << q;
-  }
-  return VSPH_OK;
+  for (int q = 0; q < w->n; q++)
+    if (w->kind[q] == VSPH_WALLS_PERIODIC) pair[w->axis[q]] |= 1u << q;
 }
 
 /* An image across the planes of mask exists unless it holds both ends of
@@ -244,9 +235,8 @@ static void rows(const struct vsph_walls *w, const struct vsph_particles *p,
 size_t vsph_walls_count(const struct vsph_walls *w,
                         const struct vsph_particles *p, size_t n_fluid,
                         double reach) {
-  unsigned pair[3] = {0, 0, 0};
-  for (int q = 0; q < w->n; q++)
-    if (w->kind[q] == VSPH_WALLS_PERIODIC) pair[w->axis[q]] |= 1u << q;
+  unsigned pair[3];
+  ends(w, pair);
   size_t n = 0;
   for (size_t i = 0; i < p->n; i++) {
     if (p->id[i] >= n_fluid) continue;
@@ -283,9 +273,15 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
   p->n = n;
   gh->n = 0;
   if (gh->band) rows(w, p, n_fluid, gh);
+  /* one image per end is enough only when the period exceeds the reach */
+  for (int a = 0; a < p->dim; a++) {
+    const double L = vsph_walls_period(w, a);
+    if (L > 0.0 && !(L > reach))
+      VSPH_FAIL(VSPH_EINVAL,
+                "periodic length %g is not longer than the reach %g", L, reach);
+  }
   unsigned pair[3];
-  int st = pairs(w, reach, pair);
-  if (st) return st;
+  ends(w, pair);
   for (size_t s = 0; s < n_fluid; s++) {
     const unsigned near = near_planes(w, p, s, reach);
     /* every non-empty subset of the near planes: images and corner images

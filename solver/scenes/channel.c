@@ -50,11 +50,8 @@ static int setup(struct vsph_scene *sc, int couette) {
   struct vsph_scene_channel *ch = &sc->u.channel;
   const double W = ch->W, d = 0.5 * W;
   int wv;
-  if (vsph_walls_velocity_resolve(ch->walls, &wv))
-    VSPH_FAIL(VSPH_EINVAL,
-              "Scene:walls: unknown wall velocity '%s' "
-              "(linear, mirror)",
-              ch->walls);
+  /* an unknown name is reported by the resolver */
+  if (vsph_walls_velocity_resolve(ch->walls, &wv)) return VSPH_EINVAL;
   ch->couette = couette;
   ch->U = couette ? ch->Re * ch->nu / W : ch->Re * ch->nu / d;
   ch->f = couette ? 0.0 : 2.0 * ch->nu * ch->U / (d * d);
