@@ -179,6 +179,42 @@ struct outputs {
   char error[1200]; /* the write that failed, for run.json */
 };
 
+/* The live tables (energy.csv, profile.csv: flushed row by row, so a run
+ * stopped early keeps what it wrote). A failed write is said once, in
+ * o->error (for run.json) and on the status channel. */
+static int live_failed(struct outputs *o, const char *name) {
+  snprintf(o->error, sizeof o->error, "cannot write %s/%s: %s", o->dir, name,
+           errno ? strerror(errno) : "write error");
+  vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "%s", o->error);
+  return VSPH_EIO;
+}
+
+static FILE *live_open(struct outputs *o, const char *name, const char *header,
+                       int *st) {
+  char path[600];
+  snprintf(path, sizeof path, "%s/%s", o->dir, name);
+  errno = 0;
+  FILE *f = fopen(path, "w");
+  if (!f)
+    *st = live_failed(o, name);
+  else
+    fputs(header, f);
+  return f;
+}
+
+static int live_flush(struct outputs *o, FILE *f, const char *name) {
+  return fflush(f) != 0 || ferror(f) ? live_failed(o, name) : VSPH_OK;
+}
+
+/* Close *f (if open); a failure counts only when nothing failed before. */
+static int live_close(struct outputs *o, FILE **f, const char *name, int st) {
+  if (!*f) return st;
+  errno = 0;
+  const int c = fclose(*f);
+  *f = NULL;
+  return !st && c != 0 ? live_failed(o, name) : st;
+}
+
 static int write_row(struct outputs *o, struct vsph_run *run,
                      struct vsph_references_scene *ref) {
   struct vsph_run_row row;
@@ -199,12 +235,7 @@ static int write_row(struct outputs *o, struct vsph_run *run,
           row.t, en->Ek, en->Ep, en->Ec, b->P_visc, b->P_delta, b->residual,
           en->P[0], en->P[1], en->Lz, b->dEk, Er, dEr, Em, dEm, pe.rms,
           pe.rms_rel, pe.v_rms);
-  if (fflush(o->csv) != 0 || ferror(o->csv)) {
-    snprintf(o->error, sizeof o->error, "cannot write %s/energy.csv: %s",
-             o->dir, errno ? strerror(errno) : "write error");
-    VSPH_FAIL(VSPH_EIO, "%s", o->error);
-  }
-  return VSPH_OK;
+  return live_flush(o, o->csv, "energy.csv");
 }
 
 /* A channel's velocity profile at a snapshot: one row per row of
@@ -222,11 +253,7 @@ static int write_profile(struct outputs *o, const struct vsph_run *run) {
   for (size_t k = 0; k < nb && !st; k++)
     fprintf(o->profile, "%.10g,%.10e,%.10e,%.10e,%zu\n", run->integ->t, buf[k],
             buf[nb + k], buf[2 * nb + k], cnt[k]);
-  if (!st && (fflush(o->profile) != 0 || ferror(o->profile))) {
-    snprintf(o->error, sizeof o->error, "cannot write %s/profile.csv: %s",
-             o->dir, errno ? strerror(errno) : "write error");
-    st = VSPH_EIO;
-  }
+  if (!st) st = live_flush(o, o->profile, "profile.csv");
   free(buf);
   free(cnt);
   return st;
@@ -329,28 +356,15 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   struct outputs o = {.dir = res->dir};
   if ((st = prepare_dir(res->dir)) || (st = write_used(prm, res->dir)))
     goto done;
-  char path[600];
-  snprintf(path, sizeof path, "%s/energy.csv", res->dir);
-  if (!(o.csv = fopen(path, "w"))) {
-    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot write %s: %s",
-                       path, strerror(errno));
-    st = VSPH_EIO;
-    goto done;
-  }
-  fprintf(o.csv,
-          "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,Ek_ref,"
-          "dEk_ref,Em_ref,dEm_ref,u_err,u_err_rel,v_rms\n");
+  o.csv = live_open(&o, "energy.csv",
+                    "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,"
+                    "Ek_ref,dEk_ref,Em_ref,dEm_ref,u_err,u_err_rel,v_rms\n",
+                    &st);
+  if (st) goto done;
   if (rp.snapshots > 0 && (st = vsph_vtk_pvd_open(&o.pvd, res->dir))) goto done;
-  if (rp.snapshots > 0 && vsph_scene_is_channel(type)) {
-    snprintf(path, sizeof path, "%s/profile.csv", res->dir);
-    if (!(o.profile = fopen(path, "w"))) {
-      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot write %s: %s",
-                         path, strerror(errno));
-      st = VSPH_EIO;
-      goto done;
-    }
-    fprintf(o.profile, "t,y,u,u_ref,n\n");
-  }
+  if (rp.snapshots > 0 && vsph_scene_is_channel(type) &&
+      !(o.profile = live_open(&o, "profile.csv", "t,y,u,u_ref,n\n", &st)))
+    goto done;
   res->n_particles = run->n_fluid;
   res->h = run->h;
   res->dx = run->dx;
@@ -370,26 +384,8 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   res->steps = vsph_run_steps(run);
   res->t = vsph_run_time(run);
   res->pairs = run->pairs;
-  errno = 0;
-  const int closed = fclose(o.csv);
-  o.csv = NULL;
-  if (!st && closed != 0) {
-    snprintf(o.error, sizeof o.error, "cannot write %s: %s", path,
-             errno ? strerror(errno) : "write error");
-    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "%s", o.error);
-    st = VSPH_EIO;
-  }
-  if (o.profile) {
-    errno = 0;
-    const int c = fclose(o.profile);
-    o.profile = NULL;
-    if (!st && c != 0) {
-      snprintf(o.error, sizeof o.error, "cannot write %s/profile.csv: %s",
-               res->dir, errno ? strerror(errno) : "write error");
-      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "%s", o.error);
-      st = VSPH_EIO;
-    }
-  }
+  st = live_close(&o, &o.csv, "energy.csv", st);
+  st = live_close(&o, &o.profile, "profile.csv", st);
   if (o.pvd.f) {
     const int c = vsph_vtk_pvd_close(&o.pvd);
     if (c && !o.error[0])
