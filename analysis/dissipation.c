@@ -55,7 +55,8 @@ struct raw {
 
 #define P struct raw
 static const struct vsph_params_spec DISSIPATION[] = {
-    VSPH_PARAMS_NAME_SPEC(P, formulation, "mgf", "mgf, meaf or pvwf"),
+    VSPH_PARAMS_NAME_SPEC(P, formulation, "mgf",
+                          "viscous formulation: " VSPH_VISCOUS_NAMES),
     VSPH_PARAMS_NAME_SPEC(P, field, "strain",
                           "rotation (exact P = 0), strain (exact -4 mu A^2 "
                           "|S|) or mixed"),
@@ -94,9 +95,6 @@ int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
                             sizeof DISSIPATION / sizeof DISSIPATION[0], &r);
   if (st) return st;
   if ((st = vsph_viscous_resolve(r.formulation, &dp->form))) return st;
-  if (dp->form < 0)
-    VSPH_FAIL(VSPH_EINVAL, "unknown formulation '%s' (mgf, meaf, pvwf)",
-              r.formulation);
   const int fk = vsph_fields_find(r.field);
   if (fk != VSPH_FIELDS_ROTATION && fk != VSPH_FIELDS_STRAIN &&
       fk != VSPH_FIELDS_MIXED)

@@ -61,13 +61,26 @@ static void print_table(const struct vsph_scaling_props *sp,
       vsph_fields_name(sp->field.kind),
       sp->perturb > 0 ? "perturbed" : vsph_lattice_name(sp->lattice), sp->hdx,
       sp->mu, hF_th, hN_th);
-  printf("%10s %11s %11s %13s %13s %13s %13s %13s %13s\n", "h", "hF_ddd",
-         "hN_d", "MGF.n", "MEAF.n", "PVWF.n", "|MGF|", "|MEAF|", "|PVWF|");
-  for (size_t l = 0; l < r->levels; l++)
-    printf("%10.6f %11.6f %11.6f %13.5e %13.5e %13.5e %13.5e %13.5e %13.5e\n",
-           r->h[l], r->hF[l], r->hN[l], r->normal[0][l], r->normal[1][l],
-           r->normal[2][l], r->magnitude[0][l], r->magnitude[1][l],
-           r->magnitude[2][l]);
+  /* every formulation: its normal component, then its magnitude */
+  printf("%10s %11s %11s", "h", "hF_ddd", "hN_d");
+  char head[32];
+  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++) {
+    snprintf(head, sizeof head, "%s.n", vsph_viscous_name(f));
+    printf(" %12s", head);
+  }
+  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++) {
+    snprintf(head, sizeof head, "|%s|", vsph_viscous_name(f));
+    printf(" %12s", head);
+  }
+  printf("\n");
+  for (size_t l = 0; l < r->levels; l++) {
+    printf("%10.6f %11.6f %11.6f", r->h[l], r->hF[l], r->hN[l]);
+    for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
+      printf(" %12.5e", r->normal[f][l]);
+    for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
+      printf(" %12.5e", r->magnitude[f][l]);
+    printf("\n");
+  }
   printf("# log-log slope of |(div V)_i| against h:");
   for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++) {
     if (r->rounding[f])
@@ -82,7 +95,7 @@ int vsph_cmd_scaling_main(int argc, char **argv) {
   int json = 0;
   const struct vsph_args_spec own[] = {
       {"--json", VSPH_ARGS_FLAG, &json, NULL,
-       "JSON with keys h, hF, hN, mgf, meaf, pvwf (normal components), "
+       "JSON with keys h, hF, hN, one per formulation (normal components), "
        "*_tangential, *_magnitude, slope_*, rounding_*, hF_theory, "
        "hN_theory; quadratic: hdx, mgf, meaf, slope_mgf, slope_meaf"}};
   size_t n;

@@ -27,7 +27,7 @@ static const struct command commands[] = {
     {"scaling", vsph_cmd_scaling_main,
      "1/h truncation-error scaling at the surface; interior convergence"},
     {"dissipation", vsph_cmd_dissipation_main,
-     "dissipation integral of MGF, MEAF or PVWF on a disc or square"},
+     "dissipation integral of a formulation on a disc or square"},
     {"laplacian", vsph_cmd_laplacian_main,
      "Laplacian patch test of the forms VISC-01..04 (Zheng et al. 2018)"},
     {"run", vsph_cmd_run_main, "run the free-surface WCSPH solver on a scene"},

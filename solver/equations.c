@@ -108,6 +108,7 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(const struct rhs_ctx *rc,
   }
   ap[0] = ap0, ap[1] = ap1, ap[2] = ap2;
   av[0] = av0, av[1] = av1, av[2] = av2;
+  vsph_viscous_own(&rc->vl, i, av);
   const double rinv = 1.0 / rhoi;
   double g[3];
   vsph_equations_body_force(rc->ep, it.xi, g);
@@ -195,10 +196,11 @@ static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
       {{rhs_mgf3, rhs_mgf3d},
        {rhs_meaf3, rhs_meaf3d},
        {rhs_pvwf3, rhs_pvwf3d}}};
-  if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2)
+  const int lf = vsph_viscous_loop_form(rc->vl.form);
+  if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 ||
+      lf > VSPH_VISCOUS_PVWF)
     return rhs_general;
-  return table[rc->pk.dim - 2][vsph_viscous_loop_form(rc->vl.form)]
-              [rc->dhc > 0.0];
+  return table[rc->pk.dim - 2][lf][rc->dhc > 0.0];
 }
 
 int vsph_equations_rhs(const struct vsph_equations_props *ep,
@@ -224,7 +226,8 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
       .parts = out->acc_visc[0] != NULL && out->drho_delta != NULL,
   };
   vsph_pair_kernel_init(&rc.pk, vp->kernel, vp->dim, vp->h);
-  vsph_viscous_loop_init(&rc.vl, vp, vp->form == VSPH_VISCOUS_PVWF ? ws : NULL);
+  vsph_viscous_loop_init(&rc.vl, vp,
+                         vsph_viscous_first_pass(vp->form) ? ws : NULL);
   rhs_cell_fn *const cell_loop = rhs_choose(&rc);
   size_t total = 0;
   double min_s2 = INFINITY;

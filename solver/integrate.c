@@ -38,7 +38,7 @@ static int buffers_alloc(struct vsph_integrate *s) {
     free(s->extra[f]);
     s->extra[f] = NULL;
   }
-  if (s->props.eq.visc.form == VSPH_VISCOUS_PVWF &&
+  if (vsph_viscous_first_pass(s->props.eq.visc.form) &&
       !(s->vws = vsph_viscous_ws_alloc(cap, d)))
     return VSPH_ENOMEM;
   if (s->props.walls.n > 0 &&

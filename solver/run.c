@@ -19,10 +19,15 @@
 static const struct vsph_params_spec SOLVER[] = {
     VSPH_PARAMS_NAME_SPEC(P, visc, "mgf",
                           "viscous formulation: mgf, meaf, pvwf, vi "
-                          "(Violeau-Issa, model C), cleary (model D)"),
+                          "(Violeau-Issa, model C), cleary (model D), twopass "
+                          "(model B), takeda (model A), takeda0 (model A, "
+                          "Shepard-corrected), er (Espanol-Revenga)"),
     VSPH_PARAMS_REAL_SPEC(P, xi, VSPH_VISCOUS_XI_CLEARY, 0.1, 100.0,
                           "Cleary's coefficient xi (visc = cleary only; "
                           "4.96333 Cleary, 4.24 Basa et al.)"),
+    VSPH_PARAMS_REAL_SPEC(P, zeta, 0.0, 0.0, 1e6,
+                          "bulk viscosity over the shear viscosity, zeta/mu "
+                          "(visc = er only; 0: MEAF in 2-D)"),
     VSPH_PARAMS_NAME_SPEC(P, kernel, "gaussian",
                           "gaussian, cubic, quintic, wendland2, wendland4"),
     VSPH_PARAMS_INT_SPEC(P, res, 40, 4, 4000,
@@ -116,14 +121,15 @@ static int check_cost(const struct vsph_run_props *rp,
       VSPH_FAIL(VSPH_EINVAL,
                 "the periodic length %g m is too short for the kernel's "
                 "reach %g m%s: lengthen it (Scene:length) or raise res",
-                L, reach, deep > 1 ? " (two supports for PVWF)" : "");
+                L, reach,
+                deep > 1 ? " (two supports for a two-pass form)" : "");
   }
   const double layers = ceil(deep * rp->ktype->kappa * rp->hdx) + 1.0;
   const double ghosts =
       sc->walls.n * layers * 2.0 * pow(n, (sc->dim - 1.0) / sc->dim);
   /* the lattice the scene lays, which the integrator takes */
   const double bytes = vsph_integrate_bytes_estimate(
-      sc->dim, n, ghosts, rp->form == VSPH_VISCOUS_PVWF);
+      sc->dim, n, ghosts, vsph_viscous_first_pass(rp->form));
   const double gib = bytes / (1024.0 * 1024.0 * 1024.0);
   if (gib > rp->max_memory)
     VSPH_FAIL(VSPH_EINVAL,
@@ -177,6 +183,7 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
   ip.min_dist = rp->min_gap * r->dx;
   ip.eq.delta = rp->delta;
   ip.eq.visc.xi = rp->xi;
+  ip.eq.visc.zeta = rp->zeta * ip.eq.visc.mu;
   r->n_fluid = fluid->n;
   r->integ = vsph_integrate_alloc(&ip, fluid); /* takes fluid */
   fluid = NULL;

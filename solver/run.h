@@ -46,6 +46,7 @@ enum vsph_run_state {
 struct vsph_run_props {
   char visc[VSPH_PARAMS_NAME_MAX];   /*!< formulation (vsph_viscous_name) */
   double xi;                         /*!< Cleary's coefficient */
+  double zeta;                       /*!< Espanol-Revenga: zeta / mu */
   char kernel[VSPH_PARAMS_NAME_MAX]; /*!< kernel name */
   size_t res;        /*!< particles across the reference length */
   double hdx;        /*!< h/dx */

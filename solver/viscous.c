@@ -15,7 +15,9 @@
 static const char *const viscous_names[] = {
     [VSPH_VISCOUS_MGF] = "mgf",       [VSPH_VISCOUS_MEAF] = "meaf",
     [VSPH_VISCOUS_PVWF] = "pvwf",     [VSPH_VISCOUS_VI] = "vi",
-    [VSPH_VISCOUS_CLEARY] = "cleary",
+    [VSPH_VISCOUS_CLEARY] = "cleary", [VSPH_VISCOUS_TWOPASS] = "twopass",
+    [VSPH_VISCOUS_TAKEDA] = "takeda", [VSPH_VISCOUS_TAKEDA0] = "takeda0",
+    [VSPH_VISCOUS_ER] = "er",
 };
 _Static_assert(sizeof viscous_names / sizeof viscous_names[0] ==
                    VSPH_VISCOUS_FORM_COUNT,
@@ -29,7 +31,9 @@ const char *vsph_viscous_name(int form) {
 static const char *const viscous_labels[] = {
     [VSPH_VISCOUS_MGF] = "MGF",       [VSPH_VISCOUS_MEAF] = "MEAF",
     [VSPH_VISCOUS_PVWF] = "PVWF",     [VSPH_VISCOUS_VI] = "VI",
-    [VSPH_VISCOUS_CLEARY] = "Cleary",
+    [VSPH_VISCOUS_CLEARY] = "Cleary", [VSPH_VISCOUS_TWOPASS] = "B",
+    [VSPH_VISCOUS_TAKEDA] = "A",      [VSPH_VISCOUS_TAKEDA0] = "A[0]",
+    [VSPH_VISCOUS_ER] = "ER",
 };
 _Static_assert(sizeof viscous_labels / sizeof viscous_labels[0] ==
                    VSPH_VISCOUS_FORM_COUNT,
@@ -74,8 +78,15 @@ int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
   vp->kernel = kernel;
   vp->h = h;
   vp->mu = mu;
-  /* THEORY.md section 3: MGF implies lambda = mu; PVWF zero bulk viscosity. */
+  /* THEORY.md section 3: MGF implies lambda = mu; PVWF zero bulk viscosity.
+   * Models A and B (docs/theory.md section 8): Basa et al.'s eq. (4) and
+   * Vukcevic et al.'s eq. (13) take lambda = -2 mu/3, the 3-D Stokes value,
+   * in 2-D too; kept as the papers have it. */
   vp->lambda = form == VSPH_VISCOUS_PVWF ? -2.0 * mu / dim : mu;
+  if (form == VSPH_VISCOUS_TWOPASS || form == VSPH_VISCOUS_TAKEDA ||
+      form == VSPH_VISCOUS_TAKEDA0)
+    vp->lambda = -2.0 * mu / 3.0;
+  vp->zeta = 0.0;
   vp->det_tol = 1e-8;
   vp->xi = VSPH_VISCOUS_XI_CLEARY;
   vp->eta = form == VSPH_VISCOUS_VI || form == VSPH_VISCOUS_CLEARY
@@ -152,13 +163,16 @@ int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol) {
 
 /* PVWF pass 1 for particle i: the sums B and Mg over its neighbours
  * (vsph_pair_pvwf_grad), then L_i = B^-1, the renormalised grad u, D_i,
- * T_i = 2 mu D_i + lambda tr(D_i) I, A_i = T_i L_i and -T_i:D_i. */
+ * T_i = 2 mu D_i + lambda tr(D_i) I, A_i = T_i L_i and -T_i:D_i. Model B
+ * (renorm 0): L_i = I, Watkins' differenced gradient sum_j V_j du (x)
+ * grad_i W (Basa's model B, Vukcevic's eq. 13). */
 VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
                                        const struct vsph_pair_kernel *pk,
                                        const struct vsph_particles *p,
                                        const struct vsph_pair_ranges *rg,
                                        size_t i, struct vsph_viscous_ws *ws,
-                                       const int dim, const int kid) {
+                                       const int dim, const int kid,
+                                       const int renorm) {
   double B[9] = {0}, Mg[9] = {0}, L[9] = {0}, G[9] = {0}, ui[3] = {0};
   for (int a = 0; a < dim; a++) ui[a] = p->vel[a][i];
   struct vsph_pair_iter it;
@@ -197,8 +211,9 @@ VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
     B[e] = Bs[e];
     Mg[e] = Ms[e];
   }
-  ws->fallback[i] = !vsph_viscous_invert_sym(dim, B, L, vp->det_tol);
-  if (ws->fallback[i])
+  ws->fallback[i] =
+      renorm ? !vsph_viscous_invert_sym(dim, B, L, vp->det_tol) : 0;
+  if (ws->fallback[i] || !renorm)
     for (int a = 0; a < dim; a++) L[a * dim + a] = 1.0;
   /* (grad u)_ab = sum_j V_j du_a (L grad_i W)_b = (Mg L^T)_ab, L symmetric */
   for (int a = 0; a < dim; a++)
@@ -226,13 +241,63 @@ VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
   ws->dens[i] = -TD;
 }
 
+/* Model A for particle i: the sums of direct second derivatives over its
+ * neighbours and itself (vsph_pair_takeda_add, _self), finished plain or
+ * Shepard-corrected into its force density (in A[0..dim-1]), and the
+ * density u_i.(div V)_i. W and W'' need s itself: one square root per
+ * pair, the price of this form. */
+static void takeda_pass(const struct vsph_viscous_props *vp,
+                        const struct vsph_pair_kernel *pk,
+                        const struct vsph_particles *p,
+                        const struct vsph_pair_ranges *rg, size_t i,
+                        struct vsph_viscous_ws *ws) {
+  const int dim = vp->dim;
+  const struct vsph_kernel_type *k = vp->kernel;
+  const double h = vp->h, wfac = pow(h, -dim), d2fac = wfac / (h * h);
+  struct vsph_pair_takeda acc;
+  memset(&acc, 0, sizeof acc);
+  double ui[3] = {0, 0, 0};
+  for (int a = 0; a < dim; a++) ui[a] = p->vel[a][i];
+  vsph_pair_takeda_self(&acc, dim, p->vol[i], ui,
+                        vsph_kernel_w(k, dim, 0.0) * wfac,
+                        vsph_kernel_d2w(k, dim, 0.0) * d2fac);
+  struct vsph_pair_iter it;
+  struct vsph_pair_chunk bt;
+  vsph_pair_begin(&it, pk, p, rg, i);
+  while (vsph_pair_gather(&it, dim, pk->dfq_id, &bt)) {
+    for (size_t q = 0; q < bt.m; q++) {
+      struct vsph_pair pr;
+      vsph_pair_at(&bt, q, dim, &pr);
+      const double s = sqrt(pr.s2) / h;
+      double uj[3] = {0, 0, 0};
+      for (int a = 0; a < dim; a++) uj[a] = p->vel[a][pr.j];
+      vsph_pair_takeda_add(&acc, &pr, dim, p->vol[pr.j], uj,
+                           vsph_kernel_w(k, dim, s) * wfac,
+                           vsph_kernel_d2w(k, dim, s) * d2fac);
+    }
+  }
+  double f[3];
+  vsph_pair_takeda_finish(&acc, dim, vp->form == VSPH_VISCOUS_TAKEDA0, vp->mu,
+                          vp->lambda, f);
+  double P = 0.0;
+  for (int a = 0; a < dim; a++) {
+    ws->A[a][i] = f[a];
+    P += ui[a] * f[a];
+  }
+  ws->dens[i] = P;
+  ws->fallback[i] = 0;
+}
+
 int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
                          const struct vsph_particles *p,
                          const struct vsph_cells *cells,
                          struct vsph_viscous_ws *ws) {
-  if (vp->form != VSPH_VISCOUS_PVWF) return VSPH_OK;
+  if (!vsph_viscous_first_pass(vp->form)) return VSPH_OK;
   if (!ws || ws->cap < p->n || ws->dim != p->dim)
-    VSPH_FAIL(VSPH_EINVAL, "PVWF needs a workspace for %zu particles", p->n);
+    VSPH_FAIL(VSPH_EINVAL, "%s needs a workspace for %zu particles",
+              vsph_viscous_label(vp->form), p->n);
+  const int renorm = vp->form == VSPH_VISCOUS_PVWF,
+            takeda = vsph_viscous_passes(vp->form) == 1;
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, vp->kernel, vp->dim, vp->h);
 #pragma omp parallel for schedule(dynamic, 8)
@@ -245,10 +310,12 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
     const int G = VSPH_KERNEL_DFQ_GAUSSIAN,
               gauss2 = vp->dim == 2 && pk.dfq_id == G;
     for (size_t i = i0; i < i1; i++)
-      if (gauss2)
-        pvwf_pass1(vp, &pk, p, &rg, i, ws, 2, G);
+      if (takeda)
+        takeda_pass(vp, &pk, p, &rg, i, ws);
+      else if (gauss2)
+        pvwf_pass1(vp, &pk, p, &rg, i, ws, 2, G, renorm);
       else
-        pvwf_pass1(vp, &pk, p, &rg, i, ws, vp->dim, pk.dfq_id);
+        pvwf_pass1(vp, &pk, p, &rg, i, ws, vp->dim, pk.dfq_id, renorm);
   }
   size_t nf = 0; /* serial: reproducible */
   for (size_t i = 0; i < p->n; i++) nf += ws->fallback[i];
@@ -290,6 +357,7 @@ VSPH_CONSTS_SPECIALISE double force_one(
       for (int k = 0; k < dim; k++) acc[k] += fv[k][q];
     }
   }
+  vsph_viscous_own(lp, i, acc);
   for (int k = 0; k < dim; k++) out[k][i] = acc[k];
   return pd;
 }
@@ -303,11 +371,11 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
     VSPH_FAIL(VSPH_EINVAL, "props dimension %d, particles %d", vp->dim, p->dim);
   const int st = vsph_viscous_prepare(vp, p, cells, ws);
   if (st) return st;
-  const int dim = vp->dim, pvwf = vp->form == VSPH_VISCOUS_PVWF;
+  const int dim = vp->dim, first = vsph_viscous_first_pass(vp->form);
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, vp->kernel, dim, vp->h);
   struct vsph_viscous_loop lp;
-  vsph_viscous_loop_init(&lp, vp, pvwf ? ws : NULL);
+  vsph_viscous_loop_init(&lp, vp, first ? ws : NULL);
 #pragma omp parallel for schedule(dynamic, 8)
   for (size_t c = 0; c < cells->ncells; c++) {
     struct vsph_pair_ranges rg;
@@ -321,7 +389,7 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
                                       any = {dim, vp->form};
       const int G = VSPH_KERNEL_DFQ_GAUSSIAN;
       double pd;
-      if (dim != 2 || pk.dfq_id != G)
+      if (dim != 2 || pk.dfq_id != G || f > VSPH_VISCOUS_PVWF)
         pd = force_one(&lp, &pk, p, &rg, i, out, any, pk.dfq_id);
       else if (f == VSPH_VISCOUS_MGF)
         pd = force_one(&lp, &pk, p, &rg, i, out, mgf2, G);
@@ -329,7 +397,7 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
         pd = force_one(&lp, &pk, p, &rg, i, out, meaf2, G);
       else
         pd = force_one(&lp, &pk, p, &rg, i, out, pvwf2, G);
-      if (dens) dens[i] = pvwf ? ws->dens[i] : pd;
+      if (dens) dens[i] = first ? ws->dens[i] : pd;
     }
   }
   return VSPH_OK;

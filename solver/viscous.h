@@ -28,8 +28,18 @@ enum vsph_viscous_form {
   VSPH_VISCOUS_PVWF,    /*!< principle of virtual work, Eqs. (4.18)-(4.19) */
   VSPH_VISCOUS_VI,      /*!< Violeau & Issa 2007 (Basa et al.'s model C) */
   VSPH_VISCOUS_CLEARY,  /*!< Cleary 1998 (Basa et al.'s model D), xi */
+  VSPH_VISCOUS_TWOPASS, /*!< two-pass strain rate (Basa's model B; P003) */
+  VSPH_VISCOUS_TAKEDA,  /*!< direct second derivatives (Basa's model A) */
+  VSPH_VISCOUS_TAKEDA0, /*!< model A, Shepard-corrected (Basa's eq. 23) */
+  VSPH_VISCOUS_ER,      /*!< Espanol & Revenga 2003, bulk viscosity zeta */
   VSPH_VISCOUS_FORM_COUNT
 };
+
+/** Every formulation's name, for help texts (the name table in viscous.c
+ *  is checked against the enum; this line is checked against the table in
+ *  tests/check_viscous.c). */
+#define VSPH_VISCOUS_NAMES \
+  "mgf, meaf, pvwf, vi, cleary, twopass, takeda, takeda0, er"
 
 /** The free-surface study's formulations (Colagrossi et al. 2011) are the
  *  first this many; the report's free-surface ladders run these, the
@@ -58,19 +68,24 @@ struct vsph_viscous_props {
                        singular and L falls back to the identity */
   double xi;      /*!< Cleary: K = 2 xi (default VSPH_VISCOUS_XI_CLEARY) */
   double eta;     /*!< Brookshaw forms: s^2 + (eta h)^2 (fraction of h) */
+  double zeta;    /*!< Espanol-Revenga: bulk viscosity (Pa s), default 0 */
 };
 
-/** Per-particle scratch of the PVWF two-pass operator. */
+/** Per-particle scratch of the operators with a first pass: PVWF and
+ *  model B (A_i), model A (its force, whole from the first pass). */
 struct vsph_viscous_ws {
   size_t cap;              /*!< particles it can hold */
   int dim;                 /*!< dimension */
-  double *A[9];            /*!< A_i = T_i L_i, entry (a,b) in A[a*dim+b][i] */
-  double *dens;            /*!< PVWF dissipation density -T_i:D_i */
+  double *A[9];            /*!< A_i = T_i L_i, entry (a,b) in A[a*dim+b][i];
+                                model A: its force density in A[0..dim-1] */
+  double *dens;            /*!< PVWF, B: dissipation density -T_i:D_i;
+                                A: u_i.(div V)_i */
   unsigned char *fallback; /*!< 1 where L_i fell back to the identity */
   size_t n_fallback;       /*!< how many particles fell back, last call */
 };
 
-/** @brief Formulation name ("mgf", "meaf", "pvwf", "vi", "cleary"). */
+/** @brief Formulation name ("mgf", "meaf", "pvwf", "vi", "cleary",
+ *  "twopass", "takeda", "takeda0", "er"). */
 const char *vsph_viscous_name(int form);
 
 /** @brief Formulation called @p name, or -1. */
@@ -84,7 +99,10 @@ int vsph_viscous_resolve(const char *name, int *form);
 const char *vsph_viscous_label(int form);
 
 /** @brief Fill props with the defaults of THEORY.md section 3: lambda = mu
- *  for MGF, -2 mu / dim for PVWF (zero bulk viscosity), det_tol = 1e-8.
+ *  for MGF, -2 mu / dim for PVWF (zero bulk viscosity), det_tol = 1e-8;
+ *  and of docs/theory.md section 8: lambda = -2 mu / 3 for models A and B
+ *  (the papers' Stokes factor, kept in 2-D), eta = 0.1 h for C and D,
+ *  zeta = 0.
  *  @return VSPH_OK or VSPH_EINVAL (bad form, dim, h or mu). */
 int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
                             const struct vsph_kernel_type *kernel, int dim,
@@ -102,9 +120,12 @@ void vsph_viscous_ws_free(struct vsph_viscous_ws *ws);
  *  untouched when det <= tol (tr/d)^d (singular: the caller falls back). */
 int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol);
 
-/** @brief PVWF first pass: L_i, the renormalised grad u, D_i, T_i, and
- *  A_i = T_i L_i for every particle (into @p ws), and the count of
- *  particles whose L fell back to the identity. Other forms: no-op.
+/** @brief The first pass, into @p ws. PVWF: L_i, the renormalised grad u,
+ *  D_i, T_i, and A_i = T_i L_i for every particle, and the count of
+ *  particles whose L fell back to the identity. Model B: the same with
+ *  L = I (Watkins' differenced gradient, no renormalisation). Model A:
+ *  its whole force density (one pass of direct second derivatives).
+ *  Other forms: no-op.
  *  @return VSPH_OK or VSPH_EINVAL (workspace too small). */
 int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
                          const struct vsph_particles *p,
@@ -134,11 +155,15 @@ struct vsph_viscous_loop {
                       Cleary: 2 xi mu */
   double eta2;   /*!< Brookshaw forms: (eta h)^2 (m^2), 0 for MGF */
   double two_mu; /*!< MEAF: 2 mu */
-  double *A[9];  /*!< PVWF: A = T L of every particle (workspace) */
+  double er_a;   /*!< Espanol-Revenga: a = zeta - mu (d+2)/d */
+  double er_b;   /*!< Espanol-Revenga: b = -(d+2)(zeta + mu (d-2)/d) */
+  double *A[9];  /*!< PVWF, B: A = T L of every particle (workspace);
+                      A: the force density of every particle in A[0..d-1] */
 };
 
-/** @brief The loop constants of @p vp; @p ws is the PVWF workspace after
- *  vsph_viscous_prepare (may be NULL for the other forms). */
+/** @brief The loop constants of @p vp; @p ws is the workspace after
+ *  vsph_viscous_prepare (may be NULL for the forms without a first pass,
+ *  vsph_viscous_first_pass). */
 static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
                                           const struct vsph_viscous_props *vp,
                                           const struct vsph_viscous_ws *ws) {
@@ -149,6 +174,9 @@ static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
             vp->mu;
   lp->eta2 = vp->eta * vp->h * vp->eta * vp->h;
   lp->two_mu = 2.0 * vp->mu;
+  const double d = vp->dim;
+  lp->er_a = vp->zeta - vp->mu * (d + 2.0) / d;
+  lp->er_b = -(d + 2.0) * (vp->zeta + vp->mu * (d - 2.0) / d);
   for (int a = 0; a < 9; a++) lp->A[a] = ws ? ws->A[a] : NULL;
 }
 
@@ -176,31 +204,57 @@ VSPH_CONSTS_SPECIALISE double vsph_viscous_pair(
       return vsph_pair_mgf(pr, sh.dim, lp->Kmu, lp->eta2, dux, f);
     case VSPH_VISCOUS_MEAF:
       return vsph_pair_meaf(pr, sh.dim, lp->two_mu, du, f);
-    default:
+    case VSPH_VISCOUS_ER:
+      return vsph_pair_er(pr, sh.dim, lp->er_a, lp->er_b, du, dux, f);
+    case VSPH_VISCOUS_PVWF:
+    case VSPH_VISCOUS_TWOPASS:
       vsph_pair_pvwf_force(pr, sh.dim, Ai, lp->A, f);
+      return 0.0;
+    default: /* model A: whole from the first pass (vsph_viscous_own) */
+      for (int k = 0; k < sh.dim; k++) f[k] = 0.0;
       return 0.0;
   }
 }
 
-/** @brief Neighbour passes of @p form per evaluation: 2 for PVWF, whose
- *  second pass differentiates its first (so its ghost layers are two
- *  supports deep), 1 for the others. */
+/** @brief Add the part of (div V)_i that is particle i's own, not a sum of
+ *  pair shares, to @p acc: model A's force from its first pass; nothing
+ *  for the other forms. */
+static inline void vsph_viscous_own(const struct vsph_viscous_loop *lp,
+                                    size_t i, double acc[3]) {
+  if (lp->form == VSPH_VISCOUS_TAKEDA || lp->form == VSPH_VISCOUS_TAKEDA0)
+    for (int k = 0; k < lp->dim; k++) acc[k] += lp->A[k][i];
+}
+
+/** @brief Whether @p form has a first pass (vsph_viscous_prepare) whose
+ *  per-particle density -T:D or u.(div V) replaces the pair densities:
+ *  PVWF, B and A. */
+static inline int vsph_viscous_first_pass(int form) {
+  return form == VSPH_VISCOUS_PVWF || form == VSPH_VISCOUS_TWOPASS ||
+         form == VSPH_VISCOUS_TAKEDA || form == VSPH_VISCOUS_TAKEDA0;
+}
+
+/** @brief Neighbour passes of @p form per evaluation: 2 for PVWF and
+ *  model B, whose second pass differentiates their first (so their ghost
+ *  layers are two supports deep), 1 for the others (model A's one pass
+ *  comes before the right-hand side's but reaches one support). */
 static inline int vsph_viscous_passes(int form) {
-  return form == VSPH_VISCOUS_PVWF ? 2 : 1;
+  return form == VSPH_VISCOUS_PVWF || form == VSPH_VISCOUS_TWOPASS ? 2 : 1;
 }
 
 /** @brief The form whose specialised loop serves @p form: the Brookshaw
- *  forms (VI, Cleary) share MGF's, their constants being in the loop. */
+ *  forms (VI, Cleary) share MGF's, their constants being in the loop;
+ *  model B shares PVWF's (its A_i in the workspace). The others (A, ER)
+ *  return themselves and run the general loop. */
 static inline int vsph_viscous_loop_form(int form) {
-  return form == VSPH_VISCOUS_VI || form == VSPH_VISCOUS_CLEARY
-             ? VSPH_VISCOUS_MGF
-             : form;
+  if (form == VSPH_VISCOUS_VI || form == VSPH_VISCOUS_CLEARY)
+    return VSPH_VISCOUS_MGF;
+  return form == VSPH_VISCOUS_TWOPASS ? VSPH_VISCOUS_PVWF : form;
 }
 
-/** @brief PVWF's A_i of particle @p i from the workspace, for the loop. */
+/** @brief PVWF's (B's) A_i of particle @p i from the workspace. */
 static inline void vsph_viscous_load_A(const struct vsph_viscous_loop *lp,
                                        size_t i, double Ai[9]) {
-  const int n = lp->form == VSPH_VISCOUS_PVWF ? lp->dim * lp->dim : 0;
+  const int n = vsph_viscous_passes(lp->form) == 2 ? lp->dim * lp->dim : 0;
   for (int a = 0; a < n; a++) Ai[a] = lp->A[a][i];
 }
 

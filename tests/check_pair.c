@@ -4,7 +4,10 @@
  * 1. An O(N^2) brute-force twin written here from THEORY sections 3 and 5,
  *    independently of the library: its own distance and cut-off, its own
  *    kernel derivative (W'(s) = h^{-d-1} w'(q) from the kernel's dw, not the
- *    loops' (dw/dq)/q of q^2), its own PVWF with GSL's LU inverse. The
+ *    loops' (dw/dq)/q of q^2), its own PVWF with GSL's LU inverse (model B
+ *    without it), its own model A from the Gaussian's closed-form second
+ *    derivatives (not eq. 28 and w''), Espanol-Revenga with its own a, b
+ *    and a non-zero bulk viscosity. The
  *    right-hand side (continuity, pressure, each viscous formulation,
  *    delta-SPH) and each operator (force and dissipation density) must
  *    match it.
@@ -74,10 +77,13 @@ static double twin_F(const struct vsph_kernel_type *k, int dim, double h,
   return pow(h, -dim - 1) * vsph_kernel_dw(k, dim, q) / s;
 }
 
-/* PVWF's A_i = T_i L_i and -T_i:D_i of every particle (THEORY 3). */
+/* PVWF's A_i = T_i L_i and -T_i:D_i of every particle (THEORY 3); model B
+ * (renorm 0): L = I and lambda = -2 mu/3 (Basa et al.'s eq. 4). */
 static void twin_pvwf(const struct vsph_viscous_props *vp,
-                      const struct vsph_particles *p, double *A, double *dens) {
+                      const struct vsph_particles *p, double *A, double *dens,
+                      int renorm) {
   const int d = vp->dim;
+  const double lambda = renorm ? -2.0 * vp->mu / d : -2.0 * vp->mu / 3.0;
   for (size_t i = 0; i < p->n; i++) {
     gsl_matrix *B = gsl_matrix_calloc(d, d), *L = gsl_matrix_alloc(d, d);
     double Mg[3][3] = {{0}};
@@ -96,6 +102,7 @@ static void twin_pvwf(const struct vsph_viscous_props *vp,
     int sign;
     gsl_linalg_LU_decomp(B, perm, &sign);
     gsl_linalg_LU_invert(B, perm, L);
+    if (!renorm) gsl_matrix_set_identity(L);
     gsl_permutation_free(perm);
     double G[3][3] = {{0}}, D[3][3], T[3][3], tr = 0.0, TD = 0.0;
     for (int a = 0; a < d; a++)
@@ -106,7 +113,7 @@ static void twin_pvwf(const struct vsph_viscous_props *vp,
     for (int a = 0; a < d; a++)
       for (int b = 0; b < d; b++) {
         D[a][b] = 0.5 * (G[a][b] + G[b][a]);
-        T[a][b] = 2.0 * vp->mu * D[a][b] + (a == b ? vp->lambda * tr : 0.0);
+        T[a][b] = 2.0 * vp->mu * D[a][b] + (a == b ? lambda * tr : 0.0);
         TD += T[a][b] * D[a][b];
       }
     for (int a = 0; a < d; a++)
@@ -121,6 +128,70 @@ static void twin_pvwf(const struct vsph_viscous_props *vp,
   }
 }
 
+/* Model A on the truncated Gaussian W = sigma h^-d (e^{-q^2} - e^{-9}),
+ * q < 3 (shifted to vanish at the cut, THEORY 1): with
+ * r = r_i - r_j, d_a W = -2 r_a W/h^2 and d_ab W = (4 r_a r_b/h^4 -
+ * 2 delta_ab/h^2) W (the closed form, not eq. 28). The sums of Basa's
+ * eq. (27) over j and i itself; shepard: the second derivatives of
+ * <u>/<1> by the quotient rule (eq. 23); force mu lap u + (mu/3) grad div
+ * u (eq. 6); into A[k n + i] and dens u_i.f. */
+static void twin_takeda(const struct vsph_viscous_props *vp,
+                        const struct vsph_particles *p, double *A, double *dens,
+                        int shepard) {
+  const int d = vp->dim;
+  const double h = vp->h, sig = vsph_gaussian_type.sigma[d - 1] * pow(h, -d);
+  for (size_t i = 0; i < p->n; i++) {
+    double S0 = 0, S1[3] = {0}, S2[3][3] = {{0}};
+    double U0[3] = {0}, U1[3][3] = {{0}}, U2[3][3][3] = {{{0}}};
+    for (size_t j = 0; j < p->n; j++) {
+      double r[3] = {0}, r2 = 0.0;
+      for (int a = 0; a < d; a++) {
+        r[a] = p->pos[a][i] - p->pos[a][j];
+        r2 += r[a] * r[a];
+      }
+      if (r2 >= 9.0 * h * h) continue;
+      const double E = sig * exp(-r2 / (h * h)), V = p->vol[j];
+      const double W = E - sig * exp(-9.0);
+      S0 += V * W;
+      for (int c = 0; c < d; c++) U0[c] += V * W * p->vel[c][j];
+      for (int a = 0; a < d; a++) {
+        const double g = -2.0 * r[a] / (h * h) * E;
+        S1[a] += V * g;
+        for (int c = 0; c < d; c++) U1[c][a] += V * g * p->vel[c][j];
+        for (int b = 0; b < d; b++) {
+          const double g2 =
+              (4.0 * r[a] * r[b] / pow(h, 4) - (a == b ? 2.0 / (h * h) : 0.0)) *
+              E;
+          S2[a][b] += V * g2;
+          for (int c = 0; c < d; c++) U2[c][a][b] += V * g2 * p->vel[c][j];
+        }
+      }
+    }
+    double Dd[3][3][3];
+    for (int c = 0; c < d; c++)
+      for (int a = 0; a < d; a++)
+        for (int b = 0; b < d; b++) {
+          /* (U/S)_ab = U_ab/S - (U_a S_b + U_b S_a)/S^2 - U S_ab/S^2
+           *            + 2 U S_a S_b/S^3 */
+          Dd[c][a][b] =
+              shepard ? U2[c][a][b] / S0 -
+                            (U1[c][a] * S1[b] + U1[c][b] * S1[a]) / (S0 * S0) -
+                            U0[c] * S2[a][b] / (S0 * S0) +
+                            2.0 * U0[c] * S1[a] * S1[b] / (S0 * S0 * S0)
+                      : U2[c][a][b];
+        }
+    double P = 0.0;
+    for (int a = 0; a < d; a++) {
+      double f = 0.0;
+      for (int b = 0; b < d; b++)
+        f += vp->mu * Dd[a][b][b] + vp->mu / 3.0 * Dd[b][a][b];
+      A[a * p->n + i] = f;
+      P += p->vel[a][i] * f;
+    }
+    dens[i] = P;
+  }
+}
+
 /* Everything the twin computes, per particle. */
 struct twin {
   double *drho, *acc[3], *visc[3], *ddelta, *dens;
@@ -131,7 +202,11 @@ static void twin_run(const struct vsph_viscous_props *vp,
   const int d = vp->dim;
   const size_t n = p->n;
   double *A = calloc(9 * n, sizeof *A), *pd = calloc(n, sizeof *pd);
-  if (vp->form == VSPH_VISCOUS_PVWF) twin_pvwf(vp, p, A, pd);
+  const int takeda =
+      vp->form == VSPH_VISCOUS_TAKEDA || vp->form == VSPH_VISCOUS_TAKEDA0;
+  if (vp->form == VSPH_VISCOUS_PVWF || vp->form == VSPH_VISCOUS_TWOPASS)
+    twin_pvwf(vp, p, A, pd, vp->form == VSPH_VISCOUS_PVWF);
+  if (takeda) twin_takeda(vp, p, A, pd, vp->form == VSPH_VISCOUS_TAKEDA0);
   const double K = 2.0 * (d + 2); /* THEORY 0 */
   for (size_t i = 0; i < n; i++) {
     const double pi = C0 * C0 * (p->rho[i] - RHO0);
@@ -172,6 +247,23 @@ static void twin_run(const struct vsph_viscous_props *vp,
       } else if (vp->form == VSPH_VISCOUS_MEAF) {
         for (int a = 0; a < d; a++) av[a] += 2.0 * vp->mu * V * F * (-du[a]);
         dens += vp->mu * V * F * du2;
+      } else if (vp->form == VSPH_VISCOUS_ER) {
+        /* Espanol & Revenga (2003) with the number density 1/V: force
+         * density sum_j V_j F_ER (a v_ij + b e (e.v_ij)), F_ER = -W'/s,
+         * v_ij = u_i - u_j, e = r_ij/s (docs/theory.md section 8) */
+        const double mu = vp->mu, z = vp->zeta;
+        const double ea = z - mu * (d + 2.0) / d,
+                     eb = -(d + 2.0) * (z + mu * (d - 2.0) / d);
+        double ev = 0.0; /* e.v_ij = (-x/s).(-du) */
+        for (int a = 0; a < d; a++) ev += (-x[a] / sqrt(s2)) * (-du[a]);
+        for (int a = 0; a < d; a++) {
+          const double fa =
+              V * (-F) * (ea * (-du[a]) + eb * (-x[a] / sqrt(s2)) * ev);
+          av[a] += fa;
+          dens -= 0.5 * fa * du[a];
+        }
+      } else if (takeda) {
+        /* the force comes whole from twin_takeda */
       } else {
         for (int a = 0; a < d; a++)
           for (int b = 0; b < d; b++)
@@ -183,10 +275,13 @@ static void twin_run(const struct vsph_viscous_props *vp,
     tw->drho[i] = p->rho[i] * cont + dhc * dl;
     tw->ddelta[i] = dhc * dl;
     for (int a = 0; a < d; a++) {
+      if (takeda) av[a] = A[a * n + i];
       tw->acc[a][i] = (ap[a] + av[a]) / p->rho[i];
       tw->visc[a][i] = av[a];
     }
-    tw->dens[i] = vp->form == VSPH_VISCOUS_PVWF ? pd[i] : dens;
+    const int first = vp->form == VSPH_VISCOUS_PVWF ||
+                      vp->form == VSPH_VISCOUS_TWOPASS || takeda;
+    tw->dens[i] = first ? pd[i] : dens;
   }
   free(A);
   free(pd);
@@ -218,6 +313,7 @@ START_TEST(test_twin) {
   ck_assert_int_eq(vsph_viscous_props_init(&ep.visc, form, &vsph_gaussian_type,
                                            dim, HDX * DX, MU),
                    0);
+  ep.visc.zeta = 0.731 * MU; /* Espanol-Revenga's b != 0 in 2-D too */
   /* the twin first, on the input order */
   double *tb = calloc(9 * n, sizeof *tb);
   struct twin tw = {column(tb, n, 0),

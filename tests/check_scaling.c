@@ -124,7 +124,11 @@ END_TEST
  * (ratio 2 when L/dx doubles, to rounding: the far edges lie beyond the
  * support); the bottom row mirrors the top (u_y = -A y is odd in y); rows
  * further than 2 kappa h from both edges see a symmetric lattice, where a
- * linear field's term is zero (odd moments vanish) to rounding. */
+ * linear field's term is zero (odd moments vanish) to rounding. Model A
+ * uncorrected (Basa's eq. 27) is the exception: it is not zero-order
+ * consistent, so its term holds u_i sum V d2W ~ u_i/h^2 besides the 1/h
+ * part, and the top row's ratio lies between 2 and 4 (measured 3.82); its
+ * interior rows carry u_i times the lattice's uniform-field error. */
 START_TEST(test_square_axis) {
   struct vsph_scaling_props sp;
   ck_assert_int_eq(vsph_scaling_props_init(&sp, NULL), 0);
@@ -145,6 +149,11 @@ START_TEST(test_square_axis) {
   for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT; form++) {
     const double top1 = v[0][form][19], top2 = v[1][form][39];
     ck_assert_double_gt(fabs(top1), 0.1);
+    if (form == VSPH_VISCOUS_TAKEDA) {
+      ck_assert_double_gt(top2 / top1, 3.0);
+      ck_assert_double_lt(top2 / top1, 4.0);
+      continue;
+    }
     ck_assert_double_eq_tol(top2 / top1, 2.0, 1e-9);
     ck_assert_double_eq_tol(v[1][form][0], -top2, 1e-9 * fabs(top2));
     const double reach = 2 * 3.0 * sp.hdx / 40.0 + 1.0 / 40.0;
