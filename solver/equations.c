@@ -42,6 +42,8 @@ struct rhs_ctx {
   struct vsph_viscous_loop vl; /* the viscous term */
   double dhc;                  /* delta h c0 (delta-SPH), 0: off */
   int parts;                   /* fill acc_visc / drho_delta */
+  int gas;                     /* the gas law: the energy equation too */
+  int reduce;                  /* Basa's pressure reduction */
 };
 
 /* One fluid particle: every term of THEORY 5 gathered over its neighbours,
@@ -51,13 +53,11 @@ struct rhs_ctx {
  * order. Inlined once per dimension, formulation and delta switch (see
  * rhs_cell): the constants unroll the component loops and fold the
  * dispatch away. */
-VSPH_CONSTS_SPECIALISE size_t rhs_one(const struct rhs_ctx *rc,
-                                      const struct vsph_particles *p,
-                                      const struct vsph_pair_ranges *rg,
-                                      size_t i, struct vsph_equations_out *out,
-                                      double *min_s2,
-                                      const struct vsph_viscous_shape sh,
-                                      const int delta, const int kid) {
+VSPH_CONSTS_SPECIALISE size_t rhs_one(
+    const struct rhs_ctx *rc, const struct vsph_particles *p,
+    const struct vsph_pair_ranges *rg, size_t i, struct vsph_equations_out *out,
+    double *min_s2, const struct vsph_viscous_shape sh, const int delta,
+    const int kid, const int reduce) {
   const int dim = sh.dim;
   double ui[3] = {0, 0, 0}, Ai[9] = {0};
   for (int k = 0; k < dim; k++) ui[k] = p->vel[k][i];
@@ -67,6 +67,8 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(const struct rhs_ctx *rc,
   const double *const vel[3] = {p->vel[0], dim > 1 ? p->vel[1] : NULL,
                                 dim > 2 ? p->vel[2] : NULL};
   double cont = 0.0, dsum = 0.0, ap[3] = {0, 0, 0}, av[3] = {0, 0, 0};
+  /* the reduction's neighbour pressures and sum_j V_j F x */
+  double pn = 0.0, gx0 = 0.0, gx1 = 0.0, gx2 = 0.0;
   size_t nint = 0;
   double ms2 = INFINITY;
   struct vsph_pair_iter it;
@@ -77,8 +79,8 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(const struct rhs_ctx *rc,
   double ap0 = 0, ap1 = 0, ap2 = 0, av0 = 0, av1 = 0, av2 = 0;
   while (vsph_pair_gather(&it, dim, kid, &b)) {
     const size_t m = b.m;
-#pragma omp simd reduction(+ : cont, dsum, ap0, ap1, ap2, av0, av1, av2) \
-    reduction(min : ms2)
+#pragma omp simd reduction(+ : cont, dsum, ap0, ap1, ap2, av0, av1, av2, \
+                              pn, gx0, gx1, gx2) reduction(min : ms2)
     for (size_t k = 0; k < m; k++) {
       struct vsph_pair pr;
       vsph_pair_at(&b, k, dim, &pr);
@@ -92,6 +94,12 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(const struct rhs_ctx *rc,
       cont += vsph_pair_continuity(&pr, dux);
       if (delta) dsum += vsph_pair_delta(&pr, rho[j] - rhoi);
       vsph_pair_pressure(&pr, dim, pi + pp[j], f);
+      if (reduce) {
+        pn += pp[j];
+        gx0 += pr.VF * pr.x[0];
+        if (dim > 1) gx1 += pr.VF * pr.x[1];
+        if (dim > 2) gx2 += pr.VF * pr.x[2];
+      }
       vsph_viscous_pair(&rc->vl, sh, &pr, du, dux, Ai, g);
       ap0 += f[0];
       av0 += g[0];
@@ -109,7 +117,15 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(const struct rhs_ctx *rc,
   ap[0] = ap0, ap[1] = ap1, ap[2] = ap2;
   av[0] = av0, av[1] = av1, av[2] = av2;
   vsph_viscous_own(&rc->vl, i, av);
+  if (reduce) { /* Basa's eq. (20): p_i + p_j - 2 pbar_i, i among the mean */
+    const double pbar = (pi + pn) / (double)(nint + 1), gx[3] = {gx0, gx1, gx2};
+    for (int k = 0; k < dim; k++) ap[k] -= 2.0 * pbar * gx[k];
+  }
   const double rinv = 1.0 / rhoi;
+  /* the gas law's energy equation, de/dt = (p/rho^2) (d rho/dt) of the
+   * continuity sum (docs/theory.md section 10): the compression work of
+   * the pressure terms, ghosts included; delta-SPH moves rho, not e */
+  if (rc->gas) out->de[i] = pi * cont * rinv;
   double g[3];
   vsph_equations_body_force(rc->ep, it.xi, g);
   out->drho[i] = rhoi * cont + rc->dhc * dsum;
@@ -128,7 +144,8 @@ VSPH_CONSTS_SPECIALISE size_t
 rhs_cell(const struct rhs_ctx *rc, const struct vsph_particles *p,
          const struct vsph_cells *cells, size_t c, size_t n_fluid,
          struct vsph_equations_out *out, double *min_s2,
-         const struct vsph_viscous_shape sh, const int delta, const int kid) {
+         const struct vsph_viscous_shape sh, const int delta, const int kid,
+         const int reduce) {
   struct vsph_pair_ranges rg;
   vsph_pair_ranges_cell(&rg, cells, c);
   const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
@@ -137,7 +154,7 @@ rhs_cell(const struct rhs_ctx *rc, const struct vsph_particles *p,
   for (size_t i = i0; i < i1; i++) {
     if (p->id[i] >= n_fluid) continue;
     double m;
-    total += rhs_one(rc, p, &rg, i, out, &m, sh, delta, kid);
+    total += rhs_one(rc, p, &rg, i, out, &m, sh, delta, kid, reduce);
     ms2 = m < ms2 ? m : ms2;
   }
   *min_s2 = ms2;
@@ -161,7 +178,7 @@ typedef size_t rhs_cell_fn(const struct rhs_ctx *rc,
                      struct vsph_equations_out *out, double *min_s2) {         \
     const struct vsph_viscous_shape sh = {D, FORM};                            \
     return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, DELTA,          \
-                    VSPH_KERNEL_DFQ_GAUSSIAN);                                 \
+                    VSPH_KERNEL_DFQ_GAUSSIAN, 0);                              \
   }
 RHS_CELL_SHAPE(rhs_mgf2, 2, VSPH_VISCOUS_MGF, 0)
 RHS_CELL_SHAPE(rhs_mgf2d, 2, VSPH_VISCOUS_MGF, 1)
@@ -177,7 +194,8 @@ RHS_CELL_SHAPE(rhs_pvwf3, 3, VSPH_VISCOUS_PVWF, 0)
 RHS_CELL_SHAPE(rhs_pvwf3d, 3, VSPH_VISCOUS_PVWF, 1)
 #undef RHS_CELL_SHAPE
 
-/* Any other shape (1-D, another kernel): the general copy. */
+/* Any other shape (1-D, another kernel, models A and ER, the pressure
+ * reduction): the general copy. */
 static size_t rhs_general(const struct rhs_ctx *rc,
                           const struct vsph_particles *p,
                           const struct vsph_cells *cells, size_t c,
@@ -185,7 +203,7 @@ static size_t rhs_general(const struct rhs_ctx *rc,
                           double *min_s2) {
   const struct vsph_viscous_shape sh = {rc->pk.dim, rc->vl.form};
   return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, rc->dhc > 0.0,
-                  rc->pk.dfq_id);
+                  rc->pk.dfq_id, rc->reduce);
 }
 
 /* The loop for the run's shape, chosen once per evaluation. */
@@ -198,7 +216,7 @@ static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
        {rhs_pvwf3, rhs_pvwf3d}}};
   const int lf = vsph_viscous_loop_form(rc->vl.form);
   if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 ||
-      lf > VSPH_VISCOUS_PVWF)
+      lf > VSPH_VISCOUS_PVWF || rc->reduce)
     return rhs_general;
   return table[rc->pk.dim - 2][lf][rc->dhc > 0.0];
 }
@@ -212,10 +230,12 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   if (vp->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "props dimension %d, particles %d", vp->dim, p->dim);
   const size_t n = p->n;
-  const double c2 = ep->c0 * ep->c0;
+  const int gas = ep->eos == VSPH_EQUATIONS_EOS_GAS;
+  if (gas && !out->de)
+    VSPH_FAIL(VSPH_EINVAL, "the gas law needs an energy rate array");
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) {
-    p->p[i] = c2 * (p->rho[i] - ep->rho0); /* linear state equation */
+    p->p[i] = vsph_equations_pressure(ep, p->rho[i], p->e[i]);
     p->vol[i] = p->m[i] / p->rho[i];
   }
   const int st = vsph_viscous_prepare(vp, p, cells, ws);
@@ -224,6 +244,8 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
       .ep = ep,
       .dhc = ep->delta * vp->h * ep->c0,
       .parts = out->acc_visc[0] != NULL && out->drho_delta != NULL,
+      .gas = gas,
+      .reduce = ep->reduce,
   };
   vsph_pair_kernel_init(&rc.pk, vp->kernel, vp->dim, vp->h);
   vsph_viscous_loop_init(&rc.vl, vp,
@@ -250,7 +272,8 @@ void vsph_equations_energy_compute(const struct vsph_equations_props *ep,
                                    struct vsph_equations_energy *en) {
   memset(en, 0, sizeof *en);
   const int d = p->dim;
-  const double c2 = ep->c0 * ep->c0;
+  const double c2 = ep->c0 * ep->c0, gt = VSPH_EQUATIONS_TAIT_GAMMA;
+  const double e0 = vsph_equations_gas_e0(ep);
   for (size_t i = 0; i < p->n; i++) {
     if (p->id[i] >= n_fluid) continue;
     const double m = p->m[i], rr = ep->rho0 / p->rho[i];
@@ -262,7 +285,14 @@ void vsph_equations_energy_compute(const struct vsph_equations_props *ep,
     }
     en->Ek += 0.5 * m * u2;
     en->Ep += m * vsph_equations_potential(ep, x);
-    en->Ec += m * c2 * (-log(rr) + rr - 1.0);
+    /* int_rho0^rho p/r^2 dr of the state equation (the gas: e - e0) */
+    if (ep->eos == VSPH_EQUATIONS_EOS_TAIT)
+      en->Ec += m * c2 / gt *
+                ((pow(1.0 / rr, gt - 1.0) - 1.0) / (gt - 1.0) + rr - 1.0);
+    else if (ep->eos == VSPH_EQUATIONS_EOS_GAS)
+      en->Ec += m * (p->e[i] - e0);
+    else
+      en->Ec += m * c2 * (-log(rr) + rr - 1.0);
     if (d >= 2) en->Lz += m * (x[0] * p->vel[1][i] - x[1] * p->vel[0][i]);
   }
 }
@@ -286,7 +316,12 @@ void vsph_equations_budget_compute(const struct vsph_equations_props *ep,
       b->dEp -= m * g[k] * u;
       if (out->acc_visc[0]) b->P_visc += m * u * out->acc_visc[k][i];
     }
-    /* e'(rho) = c0^2 (rho - rho0)/rho^2 = p/rho^2 */
+    if (ep->eos == VSPH_EQUATIONS_EOS_GAS) { /* e is its own field: delta-SPH
+                                                 moves rho, not e */
+      b->dEc += m * out->de[i];
+      continue;
+    }
+    /* a barotropic law: e'(rho) = p/rho^2 */
     const double de = p->p[i] / (rho * rho);
     b->dEc += m * de * out->drho[i];
     if (out->drho_delta) b->P_delta += m * de * out->drho_delta[i];

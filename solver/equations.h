@@ -1,6 +1,7 @@
 #ifndef VSPH_SOLVER_EQUATIONS_H
 #define VSPH_SOLVER_EQUATIONS_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "viscous.h"
@@ -10,11 +11,13 @@ struct vsph_cells;
 
 /** @file equations.h
  *  @brief The weakly compressible equations (THEORY.md section 5,
- *  Colagrossi et al. 2011 Eq. 3.13): continuity, the linear state equation
- *  p = c0^2 (rho - rho0), the PVW-compatible pressure gradient, the chosen
- *  viscous operator, optional delta-SPH density diffusion (Antuono et al.
- *  2010, simple form), and a body force; all in one gather loop. Also the
- *  energies and the energy budget. No I/O. */
+ *  Colagrossi et al. 2011 Eq. 3.13): continuity, a state equation (linear
+ *  p = c0^2 (rho - rho0) by default; Tait's, or the ideal gas with its
+ *  energy equation, docs/theory.md section 10), the PVW-compatible
+ *  pressure gradient (optionally with Basa et al.'s local pressure
+ *  reduction), the chosen viscous operator, optional delta-SPH density
+ *  diffusion (Antuono et al. 2010, simple form), and a body force; all in
+ *  one gather loop. Also the energies and the energy budget. No I/O. */
 
 /** Body force kinds: model only what a scene declares. */
 enum vsph_equations_body {
@@ -24,6 +27,23 @@ enum vsph_equations_body {
   VSPH_EQUATIONS_BODY_UNIFORM,  /*!< g = f e_x, a channel's drive */
   VSPH_EQUATIONS_BODY_COUNT
 };
+
+/** State equations: model only what a run asks for (the gas law alone
+ *  carries an energy equation). */
+enum vsph_equations_eos {
+  VSPH_EQUATIONS_EOS_LINEAR = 0, /*!< p = c0^2 (rho - rho0) (THEORY 5) */
+  VSPH_EQUATIONS_EOS_TAIT,       /*!< p = rho0 c0^2/gamma ((rho/rho0)^gamma
+                                      - 1), gamma = 7 (Basa's eq. 13) */
+  VSPH_EQUATIONS_EOS_GAS,        /*!< p = (gamma - 1) rho e, e by the
+                                      energy equation (Basa's eqs. 12, 14) */
+  VSPH_EQUATIONS_EOS_COUNT
+};
+
+/** Tait's exponent (Batchelor; Basa et al.'s eq. 13). */
+#define VSPH_EQUATIONS_TAIT_GAMMA 7.0
+/** The ideal gas's ratio of specific heats: Basa et al. give none; 1.4,
+ *  air's, is **[reconstructed]** (docs/theory.md section 10). */
+#define VSPH_EQUATIONS_GAS_GAMMA 1.4
 
 /** Physics of one run. */
 struct vsph_equations_props {
@@ -35,7 +55,38 @@ struct vsph_equations_props {
   double beta;                    /*!< radial force rate (1/s) */
   double g;                       /*!< gravity (m/s^2) */
   double f;                       /*!< uniform drive along x (m/s^2) */
+  int eos;                        /*!< vsph_equations_eos */
+  int reduce;                     /*!< 1: Basa's pressure reduction (eq. 20):
+                                       p_i - pbar_i and p_j - pbar_i in the
+                                       pressure gradient, pbar_i the plain
+                                       mean over i's neighbours and i */
 };
+
+/** @brief The pressure of density @p rho and specific internal energy
+ *  @p e (used by the gas law only) under the run's state equation. For
+ *  the gas, c0^2 = gamma p0/rho0 at the reference state. */
+static inline double vsph_equations_pressure(
+    const struct vsph_equations_props *ep, double rho, double e) {
+  switch (ep->eos) {
+    case VSPH_EQUATIONS_EOS_TAIT: {
+      const double g = VSPH_EQUATIONS_TAIT_GAMMA;
+      return ep->rho0 * ep->c0 * ep->c0 / g * (pow(rho / ep->rho0, g) - 1.0);
+    }
+    case VSPH_EQUATIONS_EOS_GAS:
+      return (VSPH_EQUATIONS_GAS_GAMMA - 1.0) * rho * e;
+    default:
+      return ep->c0 * ep->c0 * (rho - ep->rho0);
+  }
+}
+
+/** @brief The gas law's specific internal energy at the reference state,
+ *  e0 = p0/((gamma - 1) rho0) with p0 = rho0 c0^2/gamma (so that the
+ *  sound speed there is c0). */
+static inline double vsph_equations_gas_e0(
+    const struct vsph_equations_props *ep) {
+  const double g = VSPH_EQUATIONS_GAS_GAMMA;
+  return ep->c0 * ep->c0 / (g * (g - 1.0));
+}
 
 /** Where the right-hand side goes (caller arrays of length p->n; rows of
  *  ghost particles are left untouched). */
@@ -44,6 +95,7 @@ struct vsph_equations_out {
   double *acc[3];      /*!< du/dt */
   double *acc_visc[3]; /*!< optional: the viscous part (div V)/rho */
   double *drho_delta;  /*!< optional: the delta-SPH part of d rho/dt */
+  double *de;          /*!< the gas law only: de/dt (energy equation) */
   size_t interactions; /*!< out: pairs (i receiving from j) within kappa h */
   double min_s2;       /*!< out: smallest squared pair distance (m^2) */
 };
@@ -52,7 +104,9 @@ struct vsph_equations_out {
 struct vsph_equations_energy {
   double Ek;   /*!< kinetic, sum m |u|^2 / 2 */
   double Ep;   /*!< potential, sum m Phi with g = -grad Phi */
-  double Ec;   /*!< compressible, sum m c0^2 [ln(rho/rho0) + rho0/rho - 1] */
+  double Ec;   /*!< compressible: linear law sum m c0^2 [ln(rho/rho0) +
+                    rho0/rho - 1]; Tait's sum m int_rho0^rho p/r^2 dr; the
+                    gas sum m (e - e0) */
   double P[3]; /*!< linear momentum */
   double Lz;   /*!< angular momentum about the origin, z component */
 };

@@ -10,11 +10,17 @@
 #include "cells.h"
 #include "particles.h"
 
-static int nfields(int dim) { return 2 * dim + 1; } /* r, u, rho */
+/* The integrated fields: r, u, rho, and e for the gas law only. */
+static int nfields(const struct vsph_integrate *s) {
+  return 2 * s->p->dim + 1 + (s->props.eq.eos == VSPH_EQUATIONS_EOS_GAS);
+}
 
 static double *field(struct vsph_particles *p, int f) {
   const int d = p->dim;
-  return f < d ? p->pos[f] : f < 2 * d ? p->vel[f - d] : p->rho;
+  return f < d        ? p->pos[f]
+         : f < 2 * d  ? p->vel[f - d]
+         : f == 2 * d ? p->rho
+                      : p->e;
 }
 
 /* The per-particle buffers beside the particle set, for its capacity:
@@ -29,7 +35,7 @@ static int buffers_alloc(struct vsph_integrate *s) {
   s->vws = NULL;
   s->gh = NULL;
   s->where = NULL;
-  for (int f = 0; f < 7; f++) {
+  for (int f = 0; f < 8; f++) {
     free(s->y0[f]);
     free(s->ks[f]);
     s->y0[f] = s->ks[f] = NULL;
@@ -45,7 +51,7 @@ static int buffers_alloc(struct vsph_integrate *s) {
       !(s->gh = vsph_walls_ghosts_alloc(&s->props.walls, cap)))
     return VSPH_ENOMEM;
   int ok = (s->where = malloc(cap * sizeof *s->where)) != NULL;
-  for (int f = 0; f < nfields(d); f++) {
+  for (int f = 0; f < nfields(s); f++) {
     ok = ok && (s->y0[f] = malloc(cap * sizeof(double))) != NULL;
     ok = ok && (s->ks[f] = malloc(cap * sizeof(double))) != NULL;
   }
@@ -94,7 +100,7 @@ void vsph_integrate_free(struct vsph_integrate *s) {
   vsph_viscous_ws_free(s->vws);
   vsph_walls_ghosts_free(s->gh);
   free(s->where);
-  for (int f = 0; f < 7; f++) {
+  for (int f = 0; f < 8; f++) {
     free(s->y0[f]);
     free(s->ks[f]);
   }
@@ -161,7 +167,7 @@ static int rhs(struct vsph_integrate *s, int parts, size_t *nint,
   struct vsph_particles *p = s->p;
   if (s->props.walls.n > 0)
     vsph_walls_update(&s->props.walls, p, s->n_fluid, s->gh, s->where);
-  struct vsph_equations_out out = {.drho = p->drho};
+  struct vsph_equations_out out = {.drho = p->drho, .de = p->de};
   for (int k = 0; k < p->dim; k++) {
     out.acc[k] = p->acc[k];
     if (parts) out.acc_visc[k] = s->extra[k];
@@ -176,18 +182,19 @@ static int rhs(struct vsph_integrate *s, int parts, size_t *nint,
 
 int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   struct vsph_particles *p = s->p;
-  const int d = p->dim, nf = nfields(d);
+  const int d = p->dim, nf = nfields(s);
   /* Skin: a pair closes in by at most 2 dt max|u| over a step; factor 1.5
    * for the velocity change within the step. */
   const double skin = 3.0 * dt * max_speed(s);
   int st = prepare(s, skin);
   if (st) return st;
   const size_t n = p->n;
-  double *k[7], *y[7]; /* rates and state fields, looked up once */
+  double *k[8], *y[8]; /* rates and state fields, looked up once */
   for (int f = 0; f < nf; f++) y[f] = field(p, f);
   for (int f = 0; f < d; f++) k[f] = p->vel[f]; /* dr/dt = u */
   for (int f = 0; f < d; f++) k[d + f] = p->acc[f];
   k[2 * d] = p->drho;
+  k[2 * d + 1] = p->de; /* the gas law's energy (nf says whether) */
   for (int f = 0; f < nf; f++) {
     memcpy(s->y0[f], y[f], n * sizeof(double));
     memset(s->ks[f], 0, n * sizeof(double));
@@ -238,7 +245,7 @@ int vsph_integrate_check(struct vsph_integrate *s) {
   const double rho0 = ip->eq.rho0;
   for (size_t i = 0; i < p->n; i++) {
     if (p->id[i] >= s->n_fluid) continue;
-    int bad = !isfinite(p->rho[i]);
+    int bad = !isfinite(p->rho[i]) || !isfinite(p->e[i]);
     for (int k = 0; k < p->dim; k++)
       bad |= !isfinite(p->pos[k][i]) || !isfinite(p->vel[k][i]);
     if (bad) {
@@ -276,8 +283,8 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
   int st = prepare(s, 0.0);
   if (!st) st = rhs(s, 1, NULL, NULL);
   if (st) return st;
-  struct vsph_equations_out out = {.drho = s->p->drho,
-                                   .drho_delta = s->extra[s->p->dim]};
+  struct vsph_equations_out out = {
+      .drho = s->p->drho, .drho_delta = s->extra[s->p->dim], .de = s->p->de};
   for (int k = 0; k < s->p->dim; k++) {
     out.acc[k] = s->p->acc[k];
     out.acc_visc[k] = s->extra[k];
@@ -291,13 +298,13 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
  * dimensions, cell scratch for cap_n particles and cap_cells cells. */
 static size_t layout_bytes(size_t d, size_t cap, size_t cap_n, size_t cap_cells,
                            int pvwf, int ghosts) {
-  size_t b = cap * (3 * d + 5) * sizeof(double) + cap * sizeof(size_t);
+  size_t b = cap * (3 * d + 7) * sizeof(double) + cap * sizeof(size_t);
   b += cap_n * (3 * sizeof(size_t) + sizeof(double));
   b += cap_cells * 2 * sizeof(size_t);
   if (pvwf) b += cap * (d * d + 1) * sizeof(double) + cap;
   if (ghosts) b += cap * (sizeof(size_t) + sizeof(unsigned));
   b += cap * sizeof(size_t);                             /* where */
-  b += cap * (2 * (2 * d + 1) + d + 1) * sizeof(double); /* RK, extra */
+  b += cap * (2 * (2 * d + 2) + d + 1) * sizeof(double); /* RK, extra */
   return b;
 }
 

@@ -45,7 +45,7 @@ struct vsph_integrate {
   struct vsph_viscous_ws *vws;
   struct vsph_walls_ghosts *gh;
   size_t *where;
-  double *y0[7], *ks[7], *extra[4];
+  double *y0[8], *ks[8], *extra[4]; /* RK fields: r, u, rho (, e) */
 };
 
 /** @brief Take ownership of the fluid set @p fluid (ids 0..n-1) and set up

@@ -32,7 +32,8 @@ struct vsph_particles *vsph_particles_alloc(size_t cap, int dim) {
   }
   if (!(p->m = alloc_aligned(nb)) || !(p->rho = alloc_aligned(nb)) ||
       !(p->vol = alloc_aligned(nb)) || !(p->p = alloc_aligned(nb)) ||
-      !(p->drho = alloc_aligned(nb)) ||
+      !(p->drho = alloc_aligned(nb)) || !(p->e = alloc_aligned(nb)) ||
+      !(p->de = alloc_aligned(nb)) ||
       !(p->id = alloc_aligned(p->cap * sizeof(size_t))))
     goto fail;
   return p;
@@ -67,6 +68,8 @@ int vsph_particles_reserve(struct vsph_particles *p, size_t cap) {
        grow((void **)&p->vol, p->n, cap, sizeof(double)) &&
        grow((void **)&p->p, p->n, cap, sizeof(double)) &&
        grow((void **)&p->drho, p->n, cap, sizeof(double)) &&
+       grow((void **)&p->e, p->n, cap, sizeof(double)) &&
+       grow((void **)&p->de, p->n, cap, sizeof(double)) &&
        grow((void **)&p->id, p->n, cap, sizeof(size_t));
   /* a field that could not grow keeps its old size: cap stays until all
    * have grown */
@@ -88,6 +91,8 @@ void vsph_particles_free(struct vsph_particles *p) {
   free(p->vol);
   free(p->p);
   free(p->drho);
+  free(p->e);
+  free(p->de);
   free(p->id);
   free(p);
 }
@@ -115,6 +120,8 @@ void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
   permute_field(p->vol, perm, n, scratch);
   permute_field(p->p, perm, n, scratch);
   permute_field(p->drho, perm, n, scratch);
+  permute_field(p->e, perm, n, scratch);
+  permute_field(p->de, perm, n, scratch);
   for (size_t i = 0; i < n; i++) iscratch[i] = p->id[perm[i]];
   memcpy(p->id, iscratch, n * sizeof *p->id);
 }

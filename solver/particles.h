@@ -21,6 +21,8 @@ struct vsph_particles {
   double *vol;    /*!< volume V = m/rho, refreshed by _refresh_vol */
   double *p;      /*!< pressure (Pa) */
   double *drho;   /*!< density rate (kg/m^d/s) */
+  double *e;      /*!< specific internal energy (J/kg; the gas law only) */
+  double *de;     /*!< its rate (W/kg) */
   size_t *id;     /*!< original index; survives reordering */
 };
 

@@ -59,7 +59,31 @@ static const struct vsph_params_spec SOLVER[] = {
                          "one that reaches it"),
     VSPH_PARAMS_REAL_SPEC(P, max_memory, VSPH_CONSTS_MAX_MEMORY, 1e-3, 4096,
                           "refuse a run estimated to need more memory (GiB)"),
+    VSPH_PARAMS_NAME_SPEC(P, eos, "linear",
+                          "state equation: linear (c0^2 (rho - rho0)), tait "
+                          "(gamma 7) or gas (ideal gas, gamma 1.4, with the "
+                          "energy equation); not gas or tait with gravity"),
+    VSPH_PARAMS_REAL_SPEC(P, p0, 0.0, 0.0, 1e9,
+                          "gas: reference pressure (Pa), c0 = sqrt(1.4 "
+                          "p0/rho0); 0: p0 = rho0 c0^2/1.4 from the scene's "
+                          "c0"),
+    VSPH_PARAMS_INT_SPEC(P, reduce, 0, 0, 1,
+                         "1: Basa et al.'s local pressure reduction (p_i + "
+                         "p_j - 2 pbar_i in the pressure gradient)"),
 };
+
+static const char *const EOS_NAMES[VSPH_EQUATIONS_EOS_COUNT] = {
+    [VSPH_EQUATIONS_EOS_LINEAR] = "linear",
+    [VSPH_EQUATIONS_EOS_TAIT] = "tait",
+    [VSPH_EQUATIONS_EOS_GAS] = "gas"};
+
+/* The sound speed of the run: the scene's, or the gas law's at p0. */
+static double run_c0(const struct vsph_run_props *rp,
+                     const struct vsph_scene *sc) {
+  if (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS && rp->p0 > 0.0)
+    return sqrt(VSPH_EQUATIONS_GAS_GAMMA * rp->p0 / sc->rho0);
+  return sc->c0;
+}
 #undef P
 
 const struct vsph_params_spec *vsph_run_params(size_t *n) {
@@ -74,6 +98,15 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
   if (!st) st = vsph_viscous_resolve(rp->visc, &rp->form);
   if (!st) st = vsph_kernel_resolve(rp->kernel, &rp->ktype);
   if (st) return st;
+  rp->eos_kind = -1;
+  for (int k = 0; k < VSPH_EQUATIONS_EOS_COUNT; k++)
+    if (strcmp(rp->eos, EOS_NAMES[k]) == 0) rp->eos_kind = k;
+  if (rp->eos_kind < 0)
+    VSPH_FAIL(VSPH_EINVAL,
+              "unknown state equation Solver:eos = '%s' (linear, tait, gas)",
+              rp->eos);
+  if (rp->p0 > 0.0 && rp->eos_kind != VSPH_EQUATIONS_EOS_GAS)
+    VSPH_FAIL(VSPH_EINVAL, "Solver:p0 applies to Solver:eos = gas only");
   if (rp->snapshots > rp->outputs)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:snapshots (%zu) must not exceed "
@@ -136,7 +169,22 @@ static int check_cost(const struct vsph_run_props *rp,
               "res %zu needs up to about %.3g GiB (%.3g particles), more than "
               "Solver:max_memory = %g GiB: lower res or raise max_memory",
               rp->res, gib, n, rp->max_memory);
-  double dt = rp->cfl * h / (sc->c0 + sc->U_max);
+  unsigned sides = 0; /* bit 2a + (side > 0): a plane bounds axis a */
+  for (int q = 0; q < sc->walls.n; q++)
+    sides |= 1u << (2 * sc->walls.axis[q] + (sc->walls.side[q] > 0));
+  if (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS &&
+      sides != (1u << (2 * sc->dim)) - 1u)
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:eos = gas needs a confined scene (walls or periodic "
+              "ends all round): at rho0 its pressure is p0 > 0, and a free "
+              "surface would expand");
+  if (rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR &&
+      sc->body == VSPH_EQUATIONS_BODY_GRAVITY)
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:eos = %s needs a scene without gravity (the ghosts' "
+              "hydrostatic density follows the linear law)",
+              rp->eos);
+  double dt = rp->cfl * h / (run_c0(rp, sc) + sc->U_max);
   const double nu = sc->mu / sc->rho0;
   if (nu > 0.0) dt = fmin(dt, 0.125 * h * h / nu);
   const double gmax = sc->body == VSPH_EQUATIONS_BODY_GRAVITY ? fabs(sc->g)
@@ -184,6 +232,12 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
   ip.eq.delta = rp->delta;
   ip.eq.visc.xi = rp->xi;
   ip.eq.visc.zeta = rp->zeta * ip.eq.visc.mu;
+  ip.eq.eos = rp->eos_kind;
+  ip.eq.c0 = run_c0(rp, &r->scene);
+  ip.eq.reduce = (int)rp->reduce;
+  if (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS) /* p = p0 rho/rho0 at t = 0 */
+    for (size_t i = 0; i < fluid->n; i++)
+      fluid->e[i] = vsph_equations_gas_e0(&ip.eq);
   r->n_fluid = fluid->n;
   r->integ = vsph_integrate_alloc(&ip, fluid); /* takes fluid */
   fluid = NULL;

@@ -62,7 +62,11 @@ struct vsph_run_props {
   size_t max_steps;  /*!< refuse a run estimated to need more steps; stop
                           one that reaches it */
   double max_memory; /*!< refuse a run estimated to need more (GiB) */
+  char eos[VSPH_PARAMS_NAME_MAX]; /*!< state equation: linear, tait, gas */
+  double p0;     /*!< gas law: reference pressure (Pa); 0: from c0 */
+  size_t reduce; /*!< 1: Basa et al.'s local pressure reduction */
   /* resolved by vsph_run_props_init */
+  int eos_kind;                         /*!< vsph_equations_eos of eos */
   int form;                             /*!< vsph_viscous_form of visc */
   const struct vsph_kernel_type *ktype; /*!< the kernel called kernel */
 };
