@@ -130,7 +130,7 @@ int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
 
 static int write_baseline(struct vsph_report *R) {
   FILE *f = vsph_csv_open(R->dir, "baseline.csv",
-                          "scene,visc,res,t_end,ek_final,diss0,stable");
+                          "scene,visc,res,t_end,ek_final,diss0_or_uerr,stable");
   if (!f) return VSPH_EIO;
   int st = VSPH_OK;
   for (size_t i = 0; i < vsph_report_runs_baseline_count() && !st; i++) {

@@ -24,8 +24,7 @@ static const char *const POIS_LABEL[NPOIS] = {"MGF",
                                               "VI (C)",
                                               "Cleary (D), xi 4.96333",
                                               "Cleary (D), xi 4.24"};
-/* Basa et al.'s kernel: cubic spline, dx/h = 0.637 */
-#define BASA "Solver:kernel=cubic", "Solver:hdx=1.5699"
+#define BASA VSPH_REPORT_BASA
 static const char *const POIS_XTRA[NPOIS][4] = {
     {BASA, NULL},
     {BASA, NULL},

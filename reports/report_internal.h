@@ -119,6 +119,10 @@ int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
 /* ----------------------------------------------------- report_runs.c: runs */
 
 /* A solver run the report needs. */
+/* Basa et al.'s kernel settings (cubic spline, dx/h = 0.637), as a
+ * runspec's extra settings: the channel part and the channel baseline. */
+#define VSPH_REPORT_BASA "Solver:kernel=cubic", "Solver:hdx=1.5699"
+
 struct vsph_report_runspec {
   const char *scene;        /* scene name */
   const char *visc;         /* formulation name */
@@ -258,8 +262,9 @@ struct vsph_report_baseline {
   char scene[32], visc[16];
   size_t res;
   double t_end;
-  double ek_final; /* see above */
-  double diss0;    /* (P_visc(0) - dEk_ref(0)) / |dEk_ref(0)| */
+  double ek_final; /* see above; channels: (E_k - E_k,ref)/E_k,ref at t_end */
+  double diss0;    /* (P_visc(0) - dEk_ref(0)) / |dEk_ref(0)|; channels: the
+                      RMS velocity error (u - U)/U0 at t_end (u_err) */
   int ok;          /* stability verdict */
 };
 size_t vsph_report_runs_baseline_count(void);

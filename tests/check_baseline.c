@@ -1,6 +1,9 @@
 /* Regression baseline: the quick report's key figures for each scene and
  * formulation (its coarsest runs), committed in reports/baseline.csv, are
  * recomputed and compared. A change to the numerics shows up here.
+ * The channel rows (every formulation, Poiseuille and Couette, Basa et
+ * al.'s kernel) hold E_k against the series and the RMS velocity error at
+ * t_end in place of the free-surface rows' E_k and initial dissipation.
  * Tolerances: the verdict (stable or not) must match; the figures agree
  * to 1e-6 relative (plus 1e-9 absolute): the code is deterministic, so
  * only compiler or libm rounding (about 1e-12, grown over a few thousand
