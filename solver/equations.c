@@ -192,10 +192,14 @@ RHS_CELL_SHAPE(rhs_meaf3, 3, VSPH_VISCOUS_MEAF, 0)
 RHS_CELL_SHAPE(rhs_meaf3d, 3, VSPH_VISCOUS_MEAF, 1)
 RHS_CELL_SHAPE(rhs_pvwf3, 3, VSPH_VISCOUS_PVWF, 0)
 RHS_CELL_SHAPE(rhs_pvwf3d, 3, VSPH_VISCOUS_PVWF, 1)
+RHS_CELL_SHAPE(rhs_er2, 2, VSPH_VISCOUS_ER, 0)
+RHS_CELL_SHAPE(rhs_er2d, 2, VSPH_VISCOUS_ER, 1)
+RHS_CELL_SHAPE(rhs_er3, 3, VSPH_VISCOUS_ER, 0)
+RHS_CELL_SHAPE(rhs_er3d, 3, VSPH_VISCOUS_ER, 1)
 #undef RHS_CELL_SHAPE
 
-/* Any other shape (1-D, another kernel, models A and ER, the pressure
- * reduction): the general copy. */
+/* Any other shape (1-D, another kernel, model A, the pressure reduction):
+ * the general copy. */
 static size_t rhs_general(const struct rhs_ctx *rc,
                           const struct vsph_particles *p,
                           const struct vsph_cells *cells, size_t c,
@@ -208,17 +212,22 @@ static size_t rhs_general(const struct rhs_ctx *rc,
 
 /* The loop for the run's shape, chosen once per evaluation. */
 static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
-  /* the loop shapes: MGF (and its Brookshaw kin), MEAF, PVWF */
-  static rhs_cell_fn *const table[2][3][2] = {
-      {{rhs_mgf2, rhs_mgf2d}, {rhs_meaf2, rhs_meaf2d}, {rhs_pvwf2, rhs_pvwf2d}},
-      {{rhs_mgf3, rhs_mgf3d},
-       {rhs_meaf3, rhs_meaf3d},
-       {rhs_pvwf3, rhs_pvwf3d}}};
+  /* the loop shapes: MGF (and its Brookshaw kin), MEAF, PVWF (and B),
+   * Espanol-Revenga */
+  static rhs_cell_fn *const table[2][4][2] = {{{rhs_mgf2, rhs_mgf2d},
+                                               {rhs_meaf2, rhs_meaf2d},
+                                               {rhs_pvwf2, rhs_pvwf2d},
+                                               {rhs_er2, rhs_er2d}},
+                                              {{rhs_mgf3, rhs_mgf3d},
+                                               {rhs_meaf3, rhs_meaf3d},
+                                               {rhs_pvwf3, rhs_pvwf3d},
+                                               {rhs_er3, rhs_er3d}}};
   const int lf = vsph_viscous_loop_form(rc->vl.form);
-  if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 ||
-      lf > VSPH_VISCOUS_PVWF || rc->reduce)
+  const int row = lf <= VSPH_VISCOUS_PVWF ? lf : lf == VSPH_VISCOUS_ER ? 3 : -1;
+  if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 || row < 0 ||
+      rc->reduce)
     return rhs_general;
-  return table[rc->pk.dim - 2][lf][rc->dhc > 0.0];
+  return table[rc->pk.dim - 2][row][rc->dhc > 0.0];
 }
 
 int vsph_equations_rhs(const struct vsph_equations_props *ep,

@@ -246,12 +246,12 @@ VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
  * Shepard-corrected into its force density (in A[0..dim-1]), and the
  * density u_i.(div V)_i. W and W'' need s itself: one square root per
  * pair, the price of this form. */
-static void takeda_pass(const struct vsph_viscous_props *vp,
-                        const struct vsph_pair_kernel *pk,
-                        const struct vsph_particles *p,
-                        const struct vsph_pair_ranges *rg, size_t i,
-                        struct vsph_viscous_ws *ws) {
-  const int dim = vp->dim;
+VSPH_CONSTS_SPECIALISE void takeda_pass(const struct vsph_viscous_props *vp,
+                                        const struct vsph_pair_kernel *pk,
+                                        const struct vsph_particles *p,
+                                        const struct vsph_pair_ranges *rg,
+                                        size_t i, struct vsph_viscous_ws *ws,
+                                        const int dim) {
   const struct vsph_kernel_type *k = vp->kernel;
   const double h = vp->h, wfac = pow(h, -dim), d2fac = wfac / (h * h);
   struct vsph_pair_takeda acc;
@@ -310,8 +310,10 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
     const int G = VSPH_KERNEL_DFQ_GAUSSIAN,
               gauss2 = vp->dim == 2 && pk.dfq_id == G;
     for (size_t i = i0; i < i1; i++)
-      if (takeda)
-        takeda_pass(vp, &pk, p, &rg, i, ws);
+      if (takeda && vp->dim == 2)
+        takeda_pass(vp, &pk, p, &rg, i, ws, 2);
+      else if (takeda)
+        takeda_pass(vp, &pk, p, &rg, i, ws, vp->dim);
       else if (gauss2)
         pvwf_pass1(vp, &pk, p, &rg, i, ws, 2, G, renorm);
       else
@@ -386,11 +388,15 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
       const struct vsph_viscous_shape mgf2 = {2, VSPH_VISCOUS_MGF},
                                       meaf2 = {2, VSPH_VISCOUS_MEAF},
                                       pvwf2 = {2, VSPH_VISCOUS_PVWF},
+                                      er2 = {2, VSPH_VISCOUS_ER},
                                       any = {dim, vp->form};
       const int G = VSPH_KERNEL_DFQ_GAUSSIAN;
       double pd;
-      if (dim != 2 || pk.dfq_id != G || f > VSPH_VISCOUS_PVWF)
+      if (dim != 2 || pk.dfq_id != G ||
+          (f > VSPH_VISCOUS_PVWF && f != VSPH_VISCOUS_ER))
         pd = force_one(&lp, &pk, p, &rg, i, out, any, pk.dfq_id);
+      else if (f == VSPH_VISCOUS_ER)
+        pd = force_one(&lp, &pk, p, &rg, i, out, er2, G);
       else if (f == VSPH_VISCOUS_MGF)
         pd = force_one(&lp, &pk, p, &rg, i, out, mgf2, G);
       else if (f == VSPH_VISCOUS_MEAF)

@@ -243,8 +243,8 @@ static inline int vsph_viscous_passes(int form) {
 
 /** @brief The form whose specialised loop serves @p form: the Brookshaw
  *  forms (VI, Cleary) share MGF's, their constants being in the loop;
- *  model B shares PVWF's (its A_i in the workspace). The others (A, ER)
- *  return themselves and run the general loop. */
+ *  model B shares PVWF's (its A_i in the workspace). The others return
+ *  themselves: ER has loops of its own, A runs the general loop. */
 static inline int vsph_viscous_loop_form(int form) {
   if (form == VSPH_VISCOUS_VI || form == VSPH_VISCOUS_CLEARY)
     return VSPH_VISCOUS_MGF;
