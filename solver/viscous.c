@@ -17,7 +17,9 @@ static const char *const viscous_names[] = {
     [VSPH_VISCOUS_PVWF] = "pvwf",     [VSPH_VISCOUS_VI] = "vi",
     [VSPH_VISCOUS_CLEARY] = "cleary", [VSPH_VISCOUS_TWOPASS] = "twopass",
     [VSPH_VISCOUS_TAKEDA] = "takeda", [VSPH_VISCOUS_TAKEDA0] = "takeda0",
-    [VSPH_VISCOUS_ER] = "er",
+    [VSPH_VISCOUS_ER] = "er",         [VSPH_VISCOUS_VISC01] = "visc01",
+    [VSPH_VISCOUS_VISC02] = "visc02", [VSPH_VISCOUS_VISC03] = "visc03",
+    [VSPH_VISCOUS_VISC04] = "visc04",
 };
 _Static_assert(sizeof viscous_names / sizeof viscous_names[0] ==
                    VSPH_VISCOUS_FORM_COUNT,
@@ -29,11 +31,13 @@ const char *vsph_viscous_name(int form) {
 }
 
 static const char *const viscous_labels[] = {
-    [VSPH_VISCOUS_MGF] = "MGF",       [VSPH_VISCOUS_MEAF] = "MEAF",
-    [VSPH_VISCOUS_PVWF] = "PVWF",     [VSPH_VISCOUS_VI] = "VI",
-    [VSPH_VISCOUS_CLEARY] = "Cleary", [VSPH_VISCOUS_TWOPASS] = "B",
-    [VSPH_VISCOUS_TAKEDA] = "A",      [VSPH_VISCOUS_TAKEDA0] = "A[0]",
-    [VSPH_VISCOUS_ER] = "ER",
+    [VSPH_VISCOUS_MGF] = "MGF",        [VSPH_VISCOUS_MEAF] = "MEAF",
+    [VSPH_VISCOUS_PVWF] = "PVWF",      [VSPH_VISCOUS_VI] = "VI",
+    [VSPH_VISCOUS_CLEARY] = "Cleary",  [VSPH_VISCOUS_TWOPASS] = "B",
+    [VSPH_VISCOUS_TAKEDA] = "A",       [VSPH_VISCOUS_TAKEDA0] = "A[0]",
+    [VSPH_VISCOUS_ER] = "ER",          [VSPH_VISCOUS_VISC01] = "VISC-01",
+    [VSPH_VISCOUS_VISC02] = "VISC-02", [VSPH_VISCOUS_VISC03] = "VISC-03",
+    [VSPH_VISCOUS_VISC04] = "VISC-04",
 };
 _Static_assert(sizeof viscous_labels / sizeof viscous_labels[0] ==
                    VSPH_VISCOUS_FORM_COUNT,
@@ -89,7 +93,11 @@ int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
   vp->zeta = 0.0;
   vp->det_tol = 1e-8;
   vp->xi = VSPH_VISCOUS_XI_CLEARY;
-  vp->eta = form == VSPH_VISCOUS_VI || form == VSPH_VISCOUS_CLEARY
+  /* eta = 0.1 h: Basa et al.'s C and D; the usual choice for Zheng et
+   * al.'s hybrid forms, who give none (their patch test keeps 0) */
+  vp->eta = form == VSPH_VISCOUS_VI || form == VSPH_VISCOUS_CLEARY ||
+                    form == VSPH_VISCOUS_VISC01 ||
+                    form == VSPH_VISCOUS_VISC03 || form == VSPH_VISCOUS_VISC04
                 ? VSPH_VISCOUS_ETA
                 : 0.0;
   return VSPH_OK;
@@ -288,6 +296,59 @@ VSPH_CONSTS_SPECIALISE void takeda_pass(const struct vsph_viscous_props *vp,
   ws->fallback[i] = 0;
 }
 
+void vsph_viscous_laplacians(const struct vsph_pair_kernel *pk,
+                             const struct vsph_kernel_type *k, double h,
+                             double eta2, double tol, int lap,
+                             const struct vsph_particles *p,
+                             const struct vsph_pair_ranges *rg, size_t i,
+                             int nf, const double *const f[3], double out[3]) {
+  const int dim = pk->dim;
+  const double d2fac = pow(h, -(dim + 2));
+  struct vsph_pair_lap acc[3];
+  memset(acc, 0, sizeof acc);
+  struct vsph_pair_iter it;
+  struct vsph_pair_chunk b;
+  vsph_pair_begin(&it, pk, p, rg, i);
+  while (vsph_pair_gather(&it, dim, pk->dfq_id, &b))
+    for (size_t m = 0; m < b.m; m++) {
+      struct vsph_pair pr;
+      vsph_pair_at(&b, m, dim, &pr);
+      /* W'' only for VISC-02 (a square root per pair) */
+      const double d2w = lap == VSPH_PAIR_LAP_DIRECT
+                             ? vsph_kernel_d2w(k, dim, sqrt(pr.s2) / h) * d2fac
+                             : 0.0;
+      for (int c = 0; c < nf; c++)
+        vsph_pair_lap_add(&acc[c], &pr, dim, p->vol[pr.j], f[c][pr.j] - f[c][i],
+                          d2w, eta2);
+    }
+  double G[9] = {0};
+  for (int a = 0; a < dim; a++) G[a * dim + a] = 1.0;
+  vsph_viscous_invert_sym(dim, acc[0].M, G, tol);
+  for (int c = 0; c < nf; c++)
+    out[c] = vsph_pair_lap_finish(&acc[c], dim, lap, G);
+}
+
+/* VISC-0x for particle i: mu lap u_c of each component, into A[0..dim-1],
+ * and u_i.(div V)_i. */
+static void lap_pass(const struct vsph_viscous_props *vp,
+                     const struct vsph_pair_kernel *pk,
+                     const struct vsph_particles *p,
+                     const struct vsph_pair_ranges *rg, size_t i,
+                     struct vsph_viscous_ws *ws) {
+  const int dim = vp->dim;
+  const double *const vel[3] = {p->vel[0], p->vel[1], p->vel[2]};
+  double lap[3] = {0, 0, 0}, P = 0.0;
+  vsph_viscous_laplacians(
+      pk, vp->kernel, vp->h, vp->eta * vp->h * vp->eta * vp->h, vp->det_tol,
+      vp->form - VSPH_VISCOUS_VISC01, p, rg, i, dim, vel, lap);
+  for (int a = 0; a < dim; a++) {
+    ws->A[a][i] = vp->mu * lap[a];
+    P += p->vel[a][i] * ws->A[a][i];
+  }
+  ws->dens[i] = P;
+  ws->fallback[i] = 0;
+}
+
 int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
                          const struct vsph_particles *p,
                          const struct vsph_cells *cells,
@@ -297,7 +358,9 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
     VSPH_FAIL(VSPH_EINVAL, "%s needs a workspace for %zu particles",
               vsph_viscous_label(vp->form), p->n);
   const int renorm = vp->form == VSPH_VISCOUS_PVWF,
-            takeda = vsph_viscous_passes(vp->form) == 1;
+            takeda = vp->form == VSPH_VISCOUS_TAKEDA ||
+                     vp->form == VSPH_VISCOUS_TAKEDA0,
+            lapf = vp->form >= VSPH_VISCOUS_VISC01;
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, vp->kernel, vp->dim, vp->h);
 #pragma omp parallel for schedule(dynamic, 8)
@@ -310,7 +373,9 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
     const int G = VSPH_KERNEL_DFQ_GAUSSIAN,
               gauss2 = vp->dim == 2 && pk.dfq_id == G;
     for (size_t i = i0; i < i1; i++)
-      if (takeda && vp->dim == 2)
+      if (lapf)
+        lap_pass(vp, &pk, p, &rg, i, ws);
+      else if (takeda && vp->dim == 2)
         takeda_pass(vp, &pk, p, &rg, i, ws, 2);
       else if (takeda)
         takeda_pass(vp, &pk, p, &rg, i, ws, vp->dim);

@@ -32,14 +32,19 @@ enum vsph_viscous_form {
   VSPH_VISCOUS_TAKEDA,  /*!< direct second derivatives (Basa's model A) */
   VSPH_VISCOUS_TAKEDA0, /*!< model A, Shepard-corrected (Basa's eq. 23) */
   VSPH_VISCOUS_ER,      /*!< Espanol & Revenga 2003, bulk viscosity zeta */
+  VSPH_VISCOUS_VISC01,  /*!< Zheng et al.'s VISC-01: hybrid (Morris, eta) */
+  VSPH_VISCOUS_VISC02,  /*!< VISC-02: twice-differentiated kernel */
+  VSPH_VISCOUS_VISC03,  /*!< VISC-03: Schwaiger's corrected Laplacian */
+  VSPH_VISCOUS_VISC04,  /*!< VISC-04: Oger's renormalised gradient */
   VSPH_VISCOUS_FORM_COUNT
 };
 
 /** Every formulation's name, for help texts (the name table in viscous.c
  *  is checked against the enum; this line is checked against the table in
  *  tests/check_viscous.c). */
-#define VSPH_VISCOUS_NAMES \
-  "mgf, meaf, pvwf, vi, cleary, twopass, takeda, takeda0, er"
+#define VSPH_VISCOUS_NAMES                                              \
+  "mgf, meaf, pvwf, vi, cleary, twopass, takeda, takeda0, er, visc01, " \
+  "visc02, visc03, visc04"
 
 /** The free-surface study's formulations (Colagrossi et al. 2011) are the
  *  first this many; the report's free-surface ladders run these, the
@@ -72,7 +77,8 @@ struct vsph_viscous_props {
 };
 
 /** Per-particle scratch of the operators with a first pass: PVWF and
- *  model B (A_i), model A (its force, whole from the first pass). */
+ *  model B (A_i), model A and VISC-01..04 (the force, whole from the first
+ *  pass). */
 struct vsph_viscous_ws {
   size_t cap;              /*!< particles it can hold */
   int dim;                 /*!< dimension */
@@ -119,6 +125,20 @@ void vsph_viscous_ws_free(struct vsph_viscous_ws *ws);
  *  Gamma of the Laplacian forms share it. Returns 0 and leaves @p inv
  *  untouched when det <= tol (tr/d)^d (singular: the caller falls back). */
 int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol);
+
+/** @brief The Laplacians of @p nf scalar fields f[c] (each of length
+ *  p->n) at particle @p i by Laplacian form @p lap (vsph_pair_lap_form):
+ *  the sums of vsph_pair_lap_add over i's neighbours in @p rg, Gamma =
+ *  M^-1 (the identity where M is singular by @p tol, see
+ *  vsph_viscous_invert_sym), vsph_pair_lap_finish. The one evaluation of
+ *  the Laplacian forms: the patch test (analysis/laplacian.c) and the
+ *  solver's VISC-0x formulations call it. @p eta2 is (eta h)^2. */
+void vsph_viscous_laplacians(const struct vsph_pair_kernel *pk,
+                             const struct vsph_kernel_type *k, double h,
+                             double eta2, double tol, int lap,
+                             const struct vsph_particles *p,
+                             const struct vsph_pair_ranges *rg, size_t i,
+                             int nf, const double *const f[3], double out[3]);
 
 /** @brief The first pass, into @p ws. PVWF: L_i, the renormalised grad u,
  *  D_i, T_i, and A_i = T_i L_i for every particle, and the count of
@@ -180,6 +200,23 @@ static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
   for (int a = 0; a < 9; a++) lp->A[a] = ws ? ws->A[a] : NULL;
 }
 
+/** @brief Whether the whole of @p form's force comes from its first pass,
+ *  per particle (no pair shares): model A and the Laplacian forms
+ *  VISC-01..04, mu lap u with the Laplacian of pair.h applied to each
+ *  velocity component. */
+static inline int vsph_viscous_particle_form(int form) {
+  return form == VSPH_VISCOUS_TAKEDA || form == VSPH_VISCOUS_TAKEDA0 ||
+         (form >= VSPH_VISCOUS_VISC01 && form <= VSPH_VISCOUS_VISC04);
+}
+
+/** @brief Whether @p form has a first pass (vsph_viscous_prepare) whose
+ *  per-particle density -T:D or u.(div V) replaces the pair densities:
+ *  PVWF, B and the per-particle forms. */
+static inline int vsph_viscous_first_pass(int form) {
+  return form == VSPH_VISCOUS_PVWF || form == VSPH_VISCOUS_TWOPASS ||
+         vsph_viscous_particle_form(form);
+}
+
 /** The shape of a specialised loop: dimension and formulation, constants
  *  where the caller specialises (see equations.c), so the term functions
  *  unroll and the dispatch below folds away. */
@@ -210,7 +247,7 @@ VSPH_CONSTS_SPECIALISE double vsph_viscous_pair(
     case VSPH_VISCOUS_TWOPASS:
       vsph_pair_pvwf_force(pr, sh.dim, Ai, lp->A, f);
       return 0.0;
-    default: /* model A: whole from the first pass (vsph_viscous_own) */
+    default: /* A, VISC-0x: whole from the first pass (vsph_viscous_own) */
       for (int k = 0; k < sh.dim; k++) f[k] = 0.0;
       return 0.0;
   }
@@ -221,16 +258,8 @@ VSPH_CONSTS_SPECIALISE double vsph_viscous_pair(
  *  for the other forms. */
 static inline void vsph_viscous_own(const struct vsph_viscous_loop *lp,
                                     size_t i, double acc[3]) {
-  if (lp->form == VSPH_VISCOUS_TAKEDA || lp->form == VSPH_VISCOUS_TAKEDA0)
+  if (vsph_viscous_particle_form(lp->form))
     for (int k = 0; k < lp->dim; k++) acc[k] += lp->A[k][i];
-}
-
-/** @brief Whether @p form has a first pass (vsph_viscous_prepare) whose
- *  per-particle density -T:D or u.(div V) replaces the pair densities:
- *  PVWF, B and A. */
-static inline int vsph_viscous_first_pass(int form) {
-  return form == VSPH_VISCOUS_PVWF || form == VSPH_VISCOUS_TWOPASS ||
-         form == VSPH_VISCOUS_TAKEDA || form == VSPH_VISCOUS_TAKEDA0;
 }
 
 /** @brief Neighbour passes of @p form per evaluation: 2 for PVWF and

@@ -192,6 +192,87 @@ static void twin_takeda(const struct vsph_viscous_props *vp,
   }
 }
 
+/* Zheng et al.'s Laplacian forms (VISC-01..04, form k = 1..4) as the
+ * paper writes them, on the truncated Gaussian, with r_ij = r_i - r_j,
+ * grad_i W = -F x (x = r_j - r_i), u_ij = u_i - u_j, eta^2 = (0.1 h)^2
+ * for the hybrid forms:
+ *   VISC-01: 2 sum V u_ij r_ij.grad W/(r^2 + eta^2);
+ *   VISC-02: 2/(d + 2) sum V (u_j - u_i) (W'' - W'/r), W'' and W'/r of the
+ *            Gaussian in closed form;
+ *   VISC-03: (d/H) (VISC-01 - 2 (Gamma g).A), B = sum V grad W (x) x,
+ *            H = tr B, Gamma = B^-1, g = sum V (u_j - u_i) grad W,
+ *            A = sum V grad W;
+ *   VISC-04: 2 sum V u_ij r_ij.(Gamma grad W)/(r^2 + eta^2);
+ * Gamma by GSL's LU inverse; force mu lap u per component into A[k n + i],
+ * dens u_i.f. */
+static void twin_lap(const struct vsph_viscous_props *vp,
+                     const struct vsph_particles *p, double *A, double *dens,
+                     int k) {
+  const int d = vp->dim;
+  const double h = vp->h, sig = vsph_gaussian_type.sigma[d - 1] * pow(h, -d);
+  const double eta2 = k == 2 ? 0.0 : 0.01 * h * h;
+  for (size_t i = 0; i < p->n; i++) {
+    gsl_matrix *B = gsl_matrix_calloc(d, d), *G = gsl_matrix_alloc(d, d);
+    double Av[3] = {0};
+    for (size_t j = 0; j < p->n; j++) {
+      double x[3];
+      const double F = twin_F(vp->kernel, d, h, p, i, j, x);
+      if (F == 0.0) continue;
+      for (int a = 0; a < d; a++) {
+        Av[a] += p->vol[j] * (-F * x[a]);
+        for (int b = 0; b < d; b++)
+          *gsl_matrix_ptr(B, a, b) += p->vol[j] * (-F) * x[a] * x[b];
+      }
+    }
+    const double H = d == 2
+                         ? gsl_matrix_get(B, 0, 0) + gsl_matrix_get(B, 1, 1)
+                         : gsl_matrix_get(B, 0, 0) + gsl_matrix_get(B, 1, 1) +
+                               gsl_matrix_get(B, 2, 2);
+    gsl_permutation *perm = gsl_permutation_alloc(d);
+    int sign;
+    gsl_linalg_LU_decomp(B, perm, &sign);
+    gsl_linalg_LU_invert(B, perm, G);
+    gsl_permutation_free(perm);
+    double P = 0.0;
+    for (int c = 0; c < d; c++) {
+      double v01 = 0.0, v02 = 0.0, v04 = 0.0, g[3] = {0};
+      for (size_t j = 0; j < p->n; j++) {
+        double x[3];
+        const double F = twin_F(vp->kernel, d, h, p, i, j, x);
+        if (F == 0.0) continue;
+        double s2 = 0.0;
+        for (int a = 0; a < d; a++) s2 += x[a] * x[a];
+        const double V = p->vol[j], uij = p->vel[c][i] - p->vel[c][j];
+        const double E = sig * exp(-s2 / (h * h));
+        const double d2w = E * (4.0 * s2 / (h * h) - 2.0) / (h * h),
+                     dwr = -2.0 * E / (h * h);
+        double xGx = 0.0;
+        for (int a = 0; a < d; a++) {
+          g[a] += V * (-uij) * (-F * x[a]);
+          for (int b = 0; b < d; b++)
+            xGx += x[a] * gsl_matrix_get(G, a, b) * x[b];
+        }
+        v01 += 2.0 * V * uij * (F * s2) / (s2 + eta2); /* r_ij.grad W = F s^2 */
+        v02 += 2.0 / (d + 2.0) * V * (-uij) * (d2w - dwr);
+        v04 += 2.0 * V * uij * F * xGx / (s2 + eta2);
+      }
+      double gA = 0.0;
+      for (int a = 0; a < d; a++)
+        for (int b = 0; b < d; b++)
+          gA += gsl_matrix_get(G, a, b) * g[b] * Av[a];
+      const double lap = k == 1   ? v01
+                         : k == 2 ? v02
+                         : k == 3 ? d / H * (v01 - 2.0 * gA)
+                                  : v04;
+      A[c * p->n + i] = vp->mu * lap;
+      P += p->vel[c][i] * vp->mu * lap;
+    }
+    dens[i] = P;
+    gsl_matrix_free(B);
+    gsl_matrix_free(G);
+  }
+}
+
 /* Everything the twin computes, per particle. */
 struct twin {
   double *drho, *acc[3], *visc[3], *ddelta, *dens;
@@ -202,11 +283,15 @@ static void twin_run(const struct vsph_viscous_props *vp,
   const int d = vp->dim;
   const size_t n = p->n;
   double *A = calloc(9 * n, sizeof *A), *pd = calloc(n, sizeof *pd);
-  const int takeda =
-      vp->form == VSPH_VISCOUS_TAKEDA || vp->form == VSPH_VISCOUS_TAKEDA0;
+  const int lapf =
+      vp->form >= VSPH_VISCOUS_VISC01 && vp->form <= VSPH_VISCOUS_VISC04;
+  const int takeda = vp->form == VSPH_VISCOUS_TAKEDA ||
+                     vp->form == VSPH_VISCOUS_TAKEDA0 || lapf;
+  if (lapf) twin_lap(vp, p, A, pd, vp->form - VSPH_VISCOUS_VISC01 + 1);
   if (vp->form == VSPH_VISCOUS_PVWF || vp->form == VSPH_VISCOUS_TWOPASS)
     twin_pvwf(vp, p, A, pd, vp->form == VSPH_VISCOUS_PVWF);
-  if (takeda) twin_takeda(vp, p, A, pd, vp->form == VSPH_VISCOUS_TAKEDA0);
+  if (takeda && !lapf)
+    twin_takeda(vp, p, A, pd, vp->form == VSPH_VISCOUS_TAKEDA0);
   const double K = 2.0 * (d + 2); /* THEORY 0 */
   for (size_t i = 0; i < n; i++) {
     const double pi = C0 * C0 * (p->rho[i] - RHO0);

@@ -148,7 +148,9 @@ START_TEST(test_square_axis) {
   ck_assert_uint_eq(n[1], 40);
   for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT; form++) {
     const double top1 = v[0][form][19], top2 = v[1][form][39];
-    ck_assert_double_gt(fabs(top1), 0.1);
+    /* Schwaiger's VISC-03 corrects for the truncated support: its surface
+     * term is sixty times smaller than MEAF's, but still 1/h */
+    ck_assert_double_gt(fabs(top1), form == VSPH_VISCOUS_VISC03 ? 1e-3 : 0.1);
     if (form == VSPH_VISCOUS_TAKEDA) {
       ck_assert_double_gt(top2 / top1, 3.0);
       ck_assert_double_lt(top2 / top1, 4.0);

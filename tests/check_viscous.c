@@ -94,8 +94,10 @@ START_TEST(test_identities) {
   /* tol 1e-12: sums of ~1e3-1e4 terms of mixed sign, each exact to ~1e-16
    * relative; a missing factor or pair would show at O(1). */
   ck_assert_double_le(fabs(P - Pp), 1e-12 * Pabs);
-  const int takeda =
-      form == VSPH_VISCOUS_TAKEDA || form == VSPH_VISCOUS_TAKEDA0;
+  /* per-particle normalisations: model A, VISC-03, VISC-04 */
+  const int takeda = form == VSPH_VISCOUS_TAKEDA ||
+                     form == VSPH_VISCOUS_TAKEDA0 ||
+                     form == VSPH_VISCOUS_VISC03 || form == VSPH_VISCOUS_VISC04;
   const int central = form == VSPH_VISCOUS_MGF || form == VSPH_VISCOUS_VI ||
                       form == VSPH_VISCOUS_CLEARY || form == VSPH_VISCOUS_PVWF;
   double Fn = 0.0;
