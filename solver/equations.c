@@ -240,11 +240,11 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
     VSPH_FAIL(VSPH_EINVAL, "props dimension %d, particles %d", vp->dim, p->dim);
   const size_t n = p->n;
   const int gas = ep->eos == VSPH_EQUATIONS_EOS_GAS;
-  if (gas && !out->de)
-    VSPH_FAIL(VSPH_EINVAL, "the gas law needs an energy rate array");
+  if (gas && (!out->de || !p->e))
+    VSPH_FAIL(VSPH_EINVAL, "the gas law needs the particles' energy fields");
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) {
-    p->p[i] = vsph_equations_pressure(ep, p->rho[i], p->e[i]);
+    p->p[i] = vsph_equations_pressure(ep, p->rho[i], gas ? p->e[i] : 0.0);
     p->vol[i] = p->m[i] / p->rho[i];
   }
   const int st = vsph_viscous_prepare(vp, p, cells, ws);

@@ -245,7 +245,7 @@ int vsph_integrate_check(struct vsph_integrate *s) {
   const double rho0 = ip->eq.rho0;
   for (size_t i = 0; i < p->n; i++) {
     if (p->id[i] >= s->n_fluid) continue;
-    int bad = !isfinite(p->rho[i]) || !isfinite(p->e[i]);
+    int bad = !isfinite(p->rho[i]) || (p->e && !isfinite(p->e[i]));
     for (int k = 0; k < p->dim; k++)
       bad |= !isfinite(p->pos[k][i]) || !isfinite(p->vel[k][i]);
     if (bad) {
@@ -298,6 +298,7 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
  * dimensions, cell scratch for cap_n particles and cap_cells cells. */
 static size_t layout_bytes(size_t d, size_t cap, size_t cap_n, size_t cap_cells,
                            int pvwf, int ghosts) {
+  /* the fields, the gas law's e and de counted (an upper bound) */
   size_t b = cap * (3 * d + 7) * sizeof(double) + cap * sizeof(size_t);
   b += cap_n * (3 * sizeof(size_t) + sizeof(double));
   b += cap_cells * 2 * sizeof(size_t);

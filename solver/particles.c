@@ -32,8 +32,7 @@ struct vsph_particles *vsph_particles_alloc(size_t cap, int dim) {
   }
   if (!(p->m = alloc_aligned(nb)) || !(p->rho = alloc_aligned(nb)) ||
       !(p->vol = alloc_aligned(nb)) || !(p->p = alloc_aligned(nb)) ||
-      !(p->drho = alloc_aligned(nb)) || !(p->e = alloc_aligned(nb)) ||
-      !(p->de = alloc_aligned(nb)) ||
+      !(p->drho = alloc_aligned(nb)) ||
       !(p->id = alloc_aligned(p->cap * sizeof(size_t))))
     goto fail;
   return p;
@@ -68,14 +67,24 @@ int vsph_particles_reserve(struct vsph_particles *p, size_t cap) {
        grow((void **)&p->vol, p->n, cap, sizeof(double)) &&
        grow((void **)&p->p, p->n, cap, sizeof(double)) &&
        grow((void **)&p->drho, p->n, cap, sizeof(double)) &&
-       grow((void **)&p->e, p->n, cap, sizeof(double)) &&
-       grow((void **)&p->de, p->n, cap, sizeof(double)) &&
+       (!p->e || grow((void **)&p->e, p->n, cap, sizeof(double))) &&
+       (!p->de || grow((void **)&p->de, p->n, cap, sizeof(double))) &&
        grow((void **)&p->id, p->n, cap, sizeof(size_t));
   /* a field that could not grow keeps its old size: cap stays until all
    * have grown */
   if (!ok)
     VSPH_FAIL(VSPH_ENOMEM, "cannot grow a particle set to %zu particles", cap);
   p->cap = cap;
+  return VSPH_OK;
+}
+
+int vsph_particles_energy_alloc(struct vsph_particles *p) {
+  if (p->e && p->de) return VSPH_OK;
+  const size_t nb = p->cap * sizeof(double);
+  if ((!p->e && !(p->e = alloc_aligned(nb))) ||
+      (!p->de && !(p->de = alloc_aligned(nb))))
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the energy of %zu particles",
+              p->cap);
   return VSPH_OK;
 }
 
@@ -120,8 +129,8 @@ void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
   permute_field(p->vol, perm, n, scratch);
   permute_field(p->p, perm, n, scratch);
   permute_field(p->drho, perm, n, scratch);
-  permute_field(p->e, perm, n, scratch);
-  permute_field(p->de, perm, n, scratch);
+  if (p->e) permute_field(p->e, perm, n, scratch);
+  if (p->de) permute_field(p->de, perm, n, scratch);
   for (size_t i = 0; i < n; i++) iscratch[i] = p->id[perm[i]];
   memcpy(p->id, iscratch, n * sizeof *p->id);
 }

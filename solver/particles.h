@@ -21,8 +21,9 @@ struct vsph_particles {
   double *vol;    /*!< volume V = m/rho, refreshed by _refresh_vol */
   double *p;      /*!< pressure (Pa) */
   double *drho;   /*!< density rate (kg/m^d/s) */
-  double *e;      /*!< specific internal energy (J/kg; the gas law only) */
-  double *de;     /*!< its rate (W/kg) */
+  double *e;      /*!< specific internal energy (J/kg): NULL but for the
+                       gas law (vsph_particles_energy_alloc) */
+  double *de;     /*!< its rate (W/kg); NULL with e */
   size_t *id;     /*!< original index; survives reordering */
 };
 
@@ -34,6 +35,11 @@ struct vsph_particles *vsph_particles_alloc(size_t cap, int dim);
  *  smaller @p cap is a no-op). @return VSPH_OK or VSPH_ENOMEM (reported;
  *  the set is unchanged in size and still valid). */
 int vsph_particles_reserve(struct vsph_particles *p, size_t cap);
+
+/** @brief Give the set its energy fields e and de (zero), for the gas law:
+ *  other runs carry neither. A no-op when present.
+ *  @return VSPH_OK or VSPH_ENOMEM (reported). */
+int vsph_particles_energy_alloc(struct vsph_particles *p);
 
 /** @brief Free a set; NULL is a no-op. */
 void vsph_particles_free(struct vsph_particles *p);

@@ -235,9 +235,11 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
   ip.eq.eos = rp->eos_kind;
   ip.eq.c0 = run_c0(rp, &r->scene);
   ip.eq.reduce = (int)rp->reduce;
-  if (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS) /* p = p0 rho/rho0 at t = 0 */
+  if (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS) { /* p = p0 rho/rho0 at t = 0 */
+    if ((st = vsph_particles_energy_alloc(fluid))) goto fail;
     for (size_t i = 0; i < fluid->n; i++)
       fluid->e[i] = vsph_equations_gas_e0(&ip.eq);
+  }
   r->n_fluid = fluid->n;
   r->integ = vsph_integrate_alloc(&ip, fluid); /* takes fluid */
   fluid = NULL;

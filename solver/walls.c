@@ -177,7 +177,7 @@ static void image(const struct vsph_walls *w,
   if (w->g != 0.0) pr += w->rho0 * w->g * (p->pos[d - 1][s] - p->pos[d - 1][i]);
   p->rho[i] = w->rho0 + pr / (w->c0 * w->c0);
   p->p[i] = pr; /* the linear law's; a run's own law recomputes it */
-  p->e[i] = p->e[s];
+  if (p->e) p->e[i] = p->e[s];
   p->m[i] = p->m[s];
   p->vol[i] = p->m[i] / p->rho[i];
 }
@@ -267,7 +267,7 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
       p->vol[n] = p->vol[i];
       p->p[n] = p->p[i];
       p->drho[n] = p->drho[i];
-      p->e[n] = p->e[i];
+      if (p->e) p->e[n] = p->e[i];
       p->id[n] = p->id[i];
     }
     n++;

@@ -540,6 +540,7 @@ START_TEST(test_state_equations) {
   const int eos = _i == 0 ? VSPH_EQUATIONS_EOS_TAIT : VSPH_EQUATIONS_EOS_GAS;
   struct vsph_particles *p = random_set(2, 515);
   const double e0 = C0 * C0 / (1.4 * 0.4); /* p0/((gamma-1) rho0) */
+  ck_assert_int_eq(vsph_particles_energy_alloc(p), 0);
   for (size_t i = 0; i < p->n; i++)
     p->e[i] = e0 * (0.95 + 0.1 * (double)(i % 7) / 7.0);
   struct vsph_equations_props ep;
