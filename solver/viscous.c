@@ -296,13 +296,12 @@ VSPH_CONSTS_SPECIALISE void takeda_pass(const struct vsph_viscous_props *vp,
   ws->fallback[i] = 0;
 }
 
-void vsph_viscous_laplacians(const struct vsph_pair_kernel *pk,
-                             const struct vsph_kernel_type *k, double h,
-                             double eta2, double tol, int lap,
-                             const struct vsph_particles *p,
-                             const struct vsph_pair_ranges *rg, size_t i,
-                             int nf, const double *const f[3], double out[3]) {
-  const int dim = pk->dim;
+/* vsph_viscous_laplacians for dimension dim (a constant where inlined) */
+VSPH_CONSTS_SPECIALISE void laplacians(
+    const struct vsph_pair_kernel *pk, const struct vsph_kernel_type *k,
+    double h, double eta2, double tol, int lap, const struct vsph_particles *p,
+    const struct vsph_pair_ranges *rg, size_t i, int nf,
+    const double *const f[3], double out[3], const int dim) {
   const double d2fac = pow(h, -(dim + 2));
   struct vsph_pair_lap acc[3];
   memset(acc, 0, sizeof acc);
@@ -326,6 +325,18 @@ void vsph_viscous_laplacians(const struct vsph_pair_kernel *pk,
   vsph_viscous_invert_sym(dim, acc[0].M, G, tol);
   for (int c = 0; c < nf; c++)
     out[c] = vsph_pair_lap_finish(&acc[c], dim, lap, G);
+}
+
+void vsph_viscous_laplacians(const struct vsph_pair_kernel *pk,
+                             const struct vsph_kernel_type *k, double h,
+                             double eta2, double tol, int lap,
+                             const struct vsph_particles *p,
+                             const struct vsph_pair_ranges *rg, size_t i,
+                             int nf, const double *const f[3], double out[3]) {
+  if (pk->dim == 2)
+    laplacians(pk, k, h, eta2, tol, lap, p, rg, i, nf, f, out, 2);
+  else
+    laplacians(pk, k, h, eta2, tol, lap, p, rg, i, nf, f, out, pk->dim);
 }
 
 /* VISC-0x for particle i: mu lap u_c of each component, into A[0..dim-1],
