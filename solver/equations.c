@@ -38,13 +38,71 @@ double vsph_equations_potential(const struct vsph_equations_props *ep,
 /* Loop constants of the right-hand side, loaded once per evaluation. */
 struct rhs_ctx {
   const struct vsph_equations_props *ep;
-  struct vsph_pair_kernel pk;  /* kernel, h: the neighbour loop */
-  struct vsph_viscous_loop vl; /* the viscous term */
-  double dhc;                  /* delta h c0 (delta-SPH), 0: off */
-  int parts;                   /* fill acc_visc / drho_delta */
-  int gas;                     /* the gas law: the energy equation too */
-  int reduce;                  /* Basa's pressure reduction */
+  struct vsph_pair_kernel pk;       /* kernel, h: the neighbour loop */
+  struct vsph_viscous_loop vl;      /* the viscous term */
+  double dhc;                       /* delta h c0 (delta-SPH), 0: off */
+  int parts;                        /* fill acc_visc / drho_delta */
+  int gas;                          /* the gas law: the energy equation too */
+  int reduce;                       /* Basa's pressure reduction */
+  int corr;                         /* vsph_pair_corr */
+  const struct vsph_viscous_ws *ws; /* the corrections' S, a, L */
+  double w0;                        /* W(0) */
 };
+
+/* Basa et al.'s corrections, first pass: S_i = sum_j V_j W_ij (j = i
+ * included), a_i = sum_j V_j grad_i W_ij and, for Bonet-Lok, L_i = M_i^-1
+ * with M_i = sum_j V_j g0_ij (x) (r_j - r_i) (the identity where M is
+ * singular), for every fluid particle. W needs s: a square root per pair. */
+static void corr_pass(const struct vsph_equations_props *ep,
+                      const struct vsph_particles *p, size_t n_fluid,
+                      const struct vsph_cells *cells,
+                      const struct vsph_pair_kernel *pk, double w0,
+                      struct vsph_viscous_ws *ws) {
+  const int dim = p->dim, bl = ep->corr == VSPH_PAIR_CORR_BONETLOK;
+  const struct vsph_kernel_type *k = ep->visc.kernel;
+  const double h = ep->visc.h, wf = pow(h, -dim);
+#pragma omp parallel for schedule(dynamic, 8)
+  for (size_t c = 0; c < cells->ncells; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+         i++) {
+      if (p->id[i] >= n_fluid) continue;
+      double S = p->vol[i] * w0, a[3] = {0, 0, 0}, M[9] = {0},
+             L[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+      struct vsph_pair_iter it;
+      struct vsph_pair_chunk b;
+      for (int pass = 0; pass < 1 + bl; pass++) {
+        vsph_pair_begin(&it, pk, p, &rg, i);
+        while (vsph_pair_gather(&it, dim, pk->dfq_id, &b))
+          for (size_t q = 0; q < b.m; q++) {
+            struct vsph_pair pr;
+            vsph_pair_at(&b, q, dim, &pr);
+            const double vj = p->vol[pr.j];
+            const double w = vsph_kernel_w(k, dim, sqrt(pr.s2) / h) * wf;
+            if (pass == 0) {
+              S += vj * w;
+              for (int e = 0; e < dim; e++) a[e] -= vj * pr.F * pr.x[e];
+              continue;
+            }
+            double g0[3];
+            vsph_pair_corr_grad(&pr, dim, w, S, a, NULL, 0, g0);
+            for (int e = 0; e < dim; e++)
+              for (int f = 0; f < dim; f++)
+                M[e * dim + f] += vj * g0[e] * pr.x[f];
+          }
+      }
+      if (bl) {
+        for (int e = 0; e < 9; e++) L[e] = 0.0;
+        for (int e = 0; e < dim; e++) L[e * dim + e] = 1.0;
+        vsph_viscous_invert_sym(dim, M, L, ep->visc.det_tol);
+      }
+      ws->S[i] = S;
+      for (int e = 0; e < dim; e++) ws->a[e][i] = a[e];
+      for (int e = 0; e < dim * dim; e++) ws->L[e][i] = L[e];
+    }
+  }
+}
 
 /* One fluid particle: every term of THEORY 5 gathered over its neighbours,
  * each through its pair function (pair.h, viscous.h). Per chunk of
@@ -57,7 +115,7 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
     const struct rhs_ctx *rc, const struct vsph_particles *p,
     const struct vsph_pair_ranges *rg, size_t i, struct vsph_equations_out *out,
     double *min_s2, const struct vsph_viscous_shape sh, const int delta,
-    const int kid, const int reduce) {
+    const int kid, const int reduce, const int corr) {
   const int dim = sh.dim;
   double ui[3] = {0, 0, 0}, Ai[9] = {0};
   for (int k = 0; k < dim; k++) ui[k] = p->vel[k][i];
@@ -69,6 +127,16 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
   double cont = 0.0, dsum = 0.0, ap[3] = {0, 0, 0}, av[3] = {0, 0, 0};
   /* the reduction's neighbour pressures and sum_j V_j F x */
   double pn = 0.0, gx0 = 0.0, gx1 = 0.0, gx2 = 0.0;
+  /* the corrections: i's S, a, L (corr only) */
+  double cS = 1.0, ca[3] = {0, 0, 0}, cL[9] = {0};
+  const int bl = corr == VSPH_PAIR_CORR_BONETLOK;
+  const struct vsph_kernel_type *const kt = rc->ep->visc.kernel;
+  const double ch = rc->ep->visc.h, cwf = corr ? pow(ch, -dim) : 0.0;
+  if (corr) {
+    cS = rc->ws->S[i];
+    for (int e = 0; e < dim; e++) ca[e] = rc->ws->a[e][i];
+    for (int e = 0; e < dim * dim && bl; e++) cL[e] = rc->ws->L[e][i];
+  }
   size_t nint = 0;
   double ms2 = INFINITY;
   struct vsph_pair_iter it;
@@ -91,16 +159,26 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
         dux += du[a] * pr.x[a];
       }
       ms2 = pr.s2 < ms2 ? pr.s2 : ms2;
-      cont += vsph_pair_continuity(&pr, dux);
       if (delta) dsum += vsph_pair_delta(&pr, rho[j] - rhoi);
-      vsph_pair_pressure(&pr, dim, pi + pp[j], f);
+      if (corr) { /* every grad W corrected (the general loop only) */
+        double cg[3];
+        const double vj = p->vol[j];
+        const double w = vsph_kernel_w(kt, dim, sqrt(pr.s2) / ch) * cwf;
+        vsph_pair_corr_grad(&pr, dim, w, cS, ca, cL, bl, cg);
+        cont += vsph_pair_continuity_g(vj, dim, du, cg);
+        vsph_pair_pressure_g(vj, dim, pi + pp[j], cg, f);
+        vsph_viscous_pair_g(&rc->vl, &pr, vj, du, dux, cg, g);
+      } else {
+        cont += vsph_pair_continuity(&pr, dux);
+        vsph_pair_pressure(&pr, dim, pi + pp[j], f);
+        vsph_viscous_pair(&rc->vl, sh, &pr, du, dux, Ai, g);
+      }
       if (reduce) {
         pn += pp[j];
         gx0 += pr.VF * pr.x[0];
         if (dim > 1) gx1 += pr.VF * pr.x[1];
         if (dim > 2) gx2 += pr.VF * pr.x[2];
       }
-      vsph_viscous_pair(&rc->vl, sh, &pr, du, dux, Ai, g);
       ap0 += f[0];
       av0 += g[0];
       if (dim > 1) {
@@ -117,6 +195,13 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
   ap[0] = ap0, ap[1] = ap1, ap[2] = ap2;
   av[0] = av0, av[1] = av1, av[2] = av2;
   vsph_viscous_own(&rc->vl, i, av);
+  if (corr) { /* i's own term of the pressure sum: g_ii = -W(0) a/S^2 (L) */
+    struct vsph_pair self = {.j = i, .s2 = 0.0, .F = 0.0, .VF = 0.0};
+    double cg[3], fs[3];
+    vsph_pair_corr_grad(&self, dim, rc->w0, cS, ca, cL, bl, cg);
+    vsph_pair_pressure_g(p->vol[i], dim, 2.0 * pi, cg, fs);
+    for (int k = 0; k < dim; k++) ap[k] += fs[k];
+  }
   if (reduce) { /* Basa's eq. (20): p_i + p_j - 2 pbar_i, i among the mean */
     const double pbar = (pi + pn) / (double)(nint + 1), gx[3] = {gx0, gx1, gx2};
     for (int k = 0; k < dim; k++) ap[k] -= 2.0 * pbar * gx[k];
@@ -145,7 +230,7 @@ rhs_cell(const struct rhs_ctx *rc, const struct vsph_particles *p,
          const struct vsph_cells *cells, size_t c, size_t n_fluid,
          struct vsph_equations_out *out, double *min_s2,
          const struct vsph_viscous_shape sh, const int delta, const int kid,
-         const int reduce) {
+         const int reduce, const int corr) {
   struct vsph_pair_ranges rg;
   vsph_pair_ranges_cell(&rg, cells, c);
   const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
@@ -154,7 +239,7 @@ rhs_cell(const struct rhs_ctx *rc, const struct vsph_particles *p,
   for (size_t i = i0; i < i1; i++) {
     if (p->id[i] >= n_fluid) continue;
     double m;
-    total += rhs_one(rc, p, &rg, i, out, &m, sh, delta, kid, reduce);
+    total += rhs_one(rc, p, &rg, i, out, &m, sh, delta, kid, reduce, corr);
     ms2 = m < ms2 ? m : ms2;
   }
   *min_s2 = ms2;
@@ -178,7 +263,7 @@ typedef size_t rhs_cell_fn(const struct rhs_ctx *rc,
                      struct vsph_equations_out *out, double *min_s2) {         \
     const struct vsph_viscous_shape sh = {D, FORM};                            \
     return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, DELTA,          \
-                    VSPH_KERNEL_DFQ_GAUSSIAN, 0);                              \
+                    VSPH_KERNEL_DFQ_GAUSSIAN, 0, 0);                           \
   }
 RHS_CELL_SHAPE(rhs_mgf2, 2, VSPH_VISCOUS_MGF, 0)
 RHS_CELL_SHAPE(rhs_mgf2d, 2, VSPH_VISCOUS_MGF, 1)
@@ -207,7 +292,7 @@ static size_t rhs_general(const struct rhs_ctx *rc,
                           double *min_s2) {
   const struct vsph_viscous_shape sh = {rc->pk.dim, rc->vl.form};
   return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, rc->dhc > 0.0,
-                  rc->pk.dfq_id, rc->reduce);
+                  rc->pk.dfq_id, rc->reduce, rc->corr);
 }
 
 /* The loop for the run's shape, chosen once per evaluation. */
@@ -225,7 +310,7 @@ static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
   const int lf = vsph_viscous_loop_form(rc->vl.form);
   const int row = lf <= VSPH_VISCOUS_PVWF ? lf : lf == VSPH_VISCOUS_ER ? 3 : -1;
   if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 || row < 0 ||
-      rc->reduce)
+      rc->reduce || rc->corr)
     return rhs_general;
   return table[rc->pk.dim - 2][row][rc->dhc > 0.0];
 }
@@ -255,8 +340,21 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
       .parts = out->acc_visc[0] != NULL && out->drho_delta != NULL,
       .gas = gas,
       .reduce = ep->reduce,
+      .corr = ep->corr,
+      .ws = ws,
   };
   vsph_pair_kernel_init(&rc.pk, vp->kernel, vp->dim, vp->h);
+  if (ep->corr) {
+    if (!vsph_viscous_corrigible(vp->form))
+      VSPH_FAIL(VSPH_EINVAL,
+                "the kernel corrections apply to the pair forms (mgf, meaf, "
+                "vi, cleary, er), not %s",
+                vsph_viscous_name(vp->form));
+    if (!ws || !ws->S || ws->cap < p->n)
+      VSPH_FAIL(VSPH_EINVAL, "the kernel corrections need a workspace");
+    rc.w0 = vsph_kernel_w(vp->kernel, vp->dim, 0.0) * pow(vp->h, -vp->dim);
+    corr_pass(ep, p, n_fluid, cells, &rc.pk, rc.w0, ws);
+  }
   vsph_viscous_loop_init(&rc.vl, vp,
                          vsph_viscous_first_pass(vp->form) ? ws : NULL);
   rhs_cell_fn *const cell_loop = rhs_choose(&rc);

@@ -60,6 +60,11 @@ struct vsph_equations_props {
                                        p_i - pbar_i and p_j - pbar_i in the
                                        pressure gradient, pbar_i the plain
                                        mean over i's neighbours and i */
+  int corr;                       /*!< vsph_pair_corr: Basa's kernel
+                                       corrections of every grad W in
+                                       continuity, pressure and the viscous
+                                       term (corrigible forms; the workspace
+                                       needs vsph_viscous_ws_corr) */
 };
 
 /** @brief The pressure of density @p rho and specific internal energy

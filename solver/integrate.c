@@ -44,9 +44,11 @@ static int buffers_alloc(struct vsph_integrate *s) {
     free(s->extra[f]);
     s->extra[f] = NULL;
   }
-  if (vsph_viscous_first_pass(s->props.eq.visc.form) &&
+  const int corr = s->props.eq.corr != VSPH_PAIR_CORR_NONE;
+  if ((vsph_viscous_first_pass(s->props.eq.visc.form) || corr) &&
       !(s->vws = vsph_viscous_ws_alloc(cap, d)))
     return VSPH_ENOMEM;
+  if (corr && vsph_viscous_ws_corr(s->vws)) return VSPH_ENOMEM;
   if (s->props.walls.n > 0 &&
       !(s->gh = vsph_walls_ghosts_alloc(&s->props.walls, cap)))
     return VSPH_ENOMEM;

@@ -453,6 +453,62 @@ static inline void vsph_pair_takeda_finish(const struct vsph_pair_takeda *acc,
   }
 }
 
+/* ------------------------------- kernel corrections (Basa et al. §4) */
+
+/** Basa et al.'s consistency corrections of the kernel gradient (their
+ *  eqs. 21-26, docs/theory.md section 10), a switch of the solver: every
+ *  grad_i W_ij of the right-hand side replaced by g_ij. */
+enum vsph_pair_corr {
+  VSPH_PAIR_CORR_NONE = 0, /*!< grad_i W_ij */
+  VSPH_PAIR_CORR_SHEPARD,  /*!< [0]: the gradient of the Shepard kernel
+                                W_ij/S_i, grad W/S_i - W a_i/S_i^2 */
+  VSPH_PAIR_CORR_BONETLOK, /*!< [1]: L_i times the [0] gradient, L_i the
+                                inverse of sum_j V_j g0_ij (x) (r_j - r_i) */
+  VSPH_PAIR_CORR_COUNT
+};
+
+/** @brief The corrected gradient g_ij of pair @p pr (W_ij = @p w) for
+ *  particle i's sums S = sum_j V_j W_ij (j = i included), a = sum_j V_j
+ *  grad_i W_ij and (Bonet-Lok, @p bl = 1) L (row-major); @p w = W(0) and
+ *  F x = 0 give i's own term. */
+VSPH_CONSTS_SPECIALISE void vsph_pair_corr_grad(const struct vsph_pair *pr,
+                                                int dim, double w, double S,
+                                                const double a[3],
+                                                const double L[9], int bl,
+                                                double g[3]) {
+  const double r1 = 1.0 / S, r2 = w * r1 * r1;
+  double g0[3];
+  for (int k = 0; k < dim; k++) g0[k] = -pr->F * pr->x[k] * r1 - r2 * a[k];
+  for (int k = 0; k < dim; k++) {
+    if (!bl) {
+      g[k] = g0[k];
+      continue;
+    }
+    double y = 0.0;
+    for (int c = 0; c < dim; c++) y += L[k * dim + c] * g0[c];
+    g[k] = y;
+  }
+}
+
+/** @brief Continuity with a corrected gradient: the pair's
+ *  -V_j (u_j - u_i).g (the caller multiplies the sum by rho_i; with
+ *  g = grad_i W = -F x it is vsph_pair_continuity). */
+VSPH_CONSTS_SPECIALISE double vsph_pair_continuity_g(double vj, int dim,
+                                                     const double du[3],
+                                                     const double g[3]) {
+  double y = 0.0;
+  for (int k = 0; k < dim; k++) y += du[k] * g[k];
+  return -vj * y;
+}
+
+/** @brief The pressure gradient with a corrected gradient: sets @p f to
+ *  -V_j (p_i + p_j) g (with g = -F x, vsph_pair_pressure's share). */
+VSPH_CONSTS_SPECIALISE void vsph_pair_pressure_g(double vj, int dim,
+                                                 double psum, const double g[3],
+                                                 double f[3]) {
+  for (int k = 0; k < dim; k++) f[k] = -vj * psum * g[k];
+}
+
 /* ------------------------------------------- Laplacian forms (issue 11) */
 
 /** The four Laplacian forms of Zheng, Ma & Shao (2018) (docs/theory.md

@@ -70,7 +70,17 @@ static const struct vsph_params_spec SOLVER[] = {
     VSPH_PARAMS_INT_SPEC(P, reduce, 0, 0, 1,
                          "1: Basa et al.'s local pressure reduction (p_i + "
                          "p_j - 2 pbar_i in the pressure gradient)"),
+    VSPH_PARAMS_NAME_SPEC(P, correction, "none",
+                          "Basa et al.'s kernel-gradient correction of "
+                          "every term: none, shepard ([0]) or bonetlok "
+                          "([1]); the pair forms only (mgf, meaf, vi, "
+                          "cleary, er)"),
 };
+
+static const char *const CORR_NAMES[VSPH_PAIR_CORR_COUNT] = {
+    [VSPH_PAIR_CORR_NONE] = "none",
+    [VSPH_PAIR_CORR_SHEPARD] = "shepard",
+    [VSPH_PAIR_CORR_BONETLOK] = "bonetlok"};
 
 static const char *const EOS_NAMES[VSPH_EQUATIONS_EOS_COUNT] = {
     [VSPH_EQUATIONS_EOS_LINEAR] = "linear",
@@ -105,6 +115,19 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
     VSPH_FAIL(VSPH_EINVAL,
               "unknown state equation Solver:eos = '%s' (linear, tait, gas)",
               rp->eos);
+  rp->corr = -1;
+  for (int k = 0; k < VSPH_PAIR_CORR_COUNT; k++)
+    if (strcmp(rp->correction, CORR_NAMES[k]) == 0) rp->corr = k;
+  if (rp->corr < 0)
+    VSPH_FAIL(VSPH_EINVAL,
+              "unknown correction Solver:correction = '%s' (none, shepard, "
+              "bonetlok)",
+              rp->correction);
+  if (rp->corr != VSPH_PAIR_CORR_NONE && !vsph_viscous_corrigible(rp->form))
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:correction = %s applies to the pair forms (mgf, meaf, "
+              "vi, cleary, er), not %s",
+              rp->correction, rp->visc);
   if (rp->p0 > 0.0 && rp->eos_kind != VSPH_EQUATIONS_EOS_GAS)
     VSPH_FAIL(VSPH_EINVAL, "Solver:p0 applies to Solver:eos = gas only");
   if (rp->snapshots > rp->outputs)
@@ -235,6 +258,7 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
   ip.eq.eos = rp->eos_kind;
   ip.eq.c0 = run_c0(rp, &r->scene);
   ip.eq.reduce = (int)rp->reduce;
+  ip.eq.corr = rp->corr;
   if (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS) { /* p = p0 rho/rho0 at t = 0 */
     if ((st = vsph_particles_energy_alloc(fluid))) goto fail;
     for (size_t i = 0; i < fluid->n; i++)

@@ -65,8 +65,10 @@ struct vsph_run_props {
   char eos[VSPH_PARAMS_NAME_MAX]; /*!< state equation: linear, tait, gas */
   double p0;     /*!< gas law: reference pressure (Pa); 0: from c0 */
   size_t reduce; /*!< 1: Basa et al.'s local pressure reduction */
+  char correction[VSPH_PARAMS_NAME_MAX]; /*!< none, shepard, bonetlok */
   /* resolved by vsph_run_props_init */
   int eos_kind;                         /*!< vsph_equations_eos of eos */
+  int corr;                             /*!< vsph_pair_corr of correction */
   int form;                             /*!< vsph_viscous_form of visc */
   const struct vsph_kernel_type *ktype; /*!< the kernel called kernel */
 };

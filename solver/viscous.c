@@ -121,8 +121,25 @@ fail:
   return NULL;
 }
 
+int vsph_viscous_ws_corr(struct vsph_viscous_ws *ws) {
+  if (ws->S) return VSPH_OK;
+  const size_t c = ws->cap ? ws->cap : 1;
+  int ok = (ws->S = malloc(c * sizeof(double))) != NULL;
+  for (int a = 0; a < ws->dim; a++)
+    ok = ok && (ws->a[a] = malloc(c * sizeof(double))) != NULL;
+  for (int a = 0; a < ws->dim * ws->dim; a++)
+    ok = ok && (ws->L[a] = malloc(c * sizeof(double))) != NULL;
+  if (!ok)
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the corrections of %zu particles",
+              ws->cap);
+  return VSPH_OK;
+}
+
 void vsph_viscous_ws_free(struct vsph_viscous_ws *ws) {
   if (!ws) return;
+  free(ws->S);
+  for (int a = 0; a < 3; a++) free(ws->a[a]);
+  for (int a = 0; a < 9; a++) free(ws->L[a]);
   for (int a = 0; a < 9; a++) free(ws->A[a]);
   free(ws->dens);
   free(ws->fallback);

@@ -88,6 +88,11 @@ struct vsph_viscous_ws {
                                 A: u_i.(div V)_i */
   unsigned char *fallback; /*!< 1 where L_i fell back to the identity */
   size_t n_fallback;       /*!< how many particles fell back, last call */
+  /* the kernel corrections of the right-hand side (vsph_viscous_ws_corr;
+   * NULL without): per particle S = <1>, a = <grad 1>, Bonet-Lok's L */
+  double *S;    /*!< sum_j V_j W_ij, j = i included */
+  double *a[3]; /*!< sum_j V_j grad_i W_ij */
+  double *L[9]; /*!< (sum_j V_j g0_ij (x) (r_j - r_i))^-1, row-major */
 };
 
 /** @brief Formulation name ("mgf", "meaf", "pvwf", "vi", "cleary",
@@ -116,6 +121,10 @@ int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
 
 /** @brief Workspace for up to @p cap particles. NULL on failure. */
 struct vsph_viscous_ws *vsph_viscous_ws_alloc(size_t cap, int dim);
+
+/** @brief Give @p ws the arrays of the kernel corrections (S, a, L); a
+ *  no-op when present. @return VSPH_OK or VSPH_ENOMEM (reported). */
+int vsph_viscous_ws_corr(struct vsph_viscous_ws *ws);
 
 /** @brief Free a workspace; NULL is a no-op. */
 void vsph_viscous_ws_free(struct vsph_viscous_ws *ws);
@@ -251,6 +260,41 @@ VSPH_CONSTS_SPECIALISE double vsph_viscous_pair(
       for (int k = 0; k < sh.dim; k++) f[k] = 0.0;
       return 0.0;
   }
+}
+
+/** @brief Whether @p form is a sum of pair terms along grad_i W that the
+ *  kernel corrections can correct: MGF, VI, Cleary, MEAF, ER. */
+static inline int vsph_viscous_corrigible(int form) {
+  return form == VSPH_VISCOUS_MGF || form == VSPH_VISCOUS_VI ||
+         form == VSPH_VISCOUS_CLEARY || form == VSPH_VISCOUS_MEAF ||
+         form == VSPH_VISCOUS_ER;
+}
+
+/** @brief The viscous term of pair (i, j) of a corrigible form with the
+ *  corrected gradient @p g in place of grad_i W = -F x (Basa et al.'s
+ *  corrections, docs/theory.md section 10): MGF, VI, Cleary
+ *  K mu V_j (du.x)/(s^2 + eta^2) g; MEAF 2 mu V_j (x.g)/s^2 du; ER
+ *  -V_j (x.g)/s^2 (a du + b (du.x) x/s^2). With g = -F x each is its
+ *  uncorrected pair function. Sets @p f; returns -f.du/2. */
+static inline double vsph_viscous_pair_g(const struct vsph_viscous_loop *lp,
+                                         const struct vsph_pair *pr, double vj,
+                                         const double du[3], double dux,
+                                         const double g[3], double f[3]) {
+  const int dim = lp->dim;
+  double xg = 0.0, fdu = 0.0;
+  for (int k = 0; k < dim; k++) xg += pr->x[k] * g[k];
+  if (lp->form == VSPH_VISCOUS_MEAF) {
+    const double c = lp->two_mu * vj * xg / pr->s2;
+    for (int k = 0; k < dim; k++) f[k] = c * du[k];
+  } else if (lp->form == VSPH_VISCOUS_ER) {
+    const double c = -vj * xg / pr->s2, cb = lp->er_b * dux / pr->s2;
+    for (int k = 0; k < dim; k++) f[k] = c * (lp->er_a * du[k] + cb * pr->x[k]);
+  } else { /* MGF, VI, Cleary */
+    const double c = lp->Kmu * vj * dux / (pr->s2 + lp->eta2);
+    for (int k = 0; k < dim; k++) f[k] = c * g[k];
+  }
+  for (int k = 0; k < dim; k++) fdu += f[k] * du[k];
+  return -0.5 * fdu;
 }
 
 /** @brief Add the part of (div V)_i that is particle i's own, not a sum of
