@@ -18,10 +18,10 @@
 #define P struct vsph_run_props
 static const struct vsph_params_spec SOLVER[] = {
     VSPH_PARAMS_NAME_SPEC(P, visc, "mgf",
-                          "viscous formulation: mgf, meaf, pvwf, vi "
-                          "(Violeau-Issa, model C), cleary (model D), twopass "
-                          "(model B), takeda (model A), takeda0 (model A, "
-                          "Shepard-corrected), er (Espanol-Revenga)"),
+                          "viscous formulation: " VSPH_VISCOUS_NAMES
+                          " (docs/theory.md sections 3 and 8: vi, cleary, "
+                          "takeda(0), twopass are Basa et al.'s models C, D, "
+                          "A, B)"),
     VSPH_PARAMS_REAL_SPEC(P, xi, VSPH_VISCOUS_XI_CLEARY, 0.1, 100.0,
                           "Cleary's coefficient xi (visc = cleary only; "
                           "4.96333 Cleary, 4.24 Basa et al.)"),
