@@ -114,6 +114,16 @@ static const char *const CORR_XTRA[NCORR][2][5] = {
     {{BASA, "Solver:correction=shepard", NULL},
      {BASA, "Solver:correction=bonetlok", NULL}}};
 static const char *const CORR_TAG[2] = {"basa0", "basa1"};
+/* Cleary's xi on Basa et al.'s Poiseuille: the continuum value d + 2 = 4,
+ * the value that makes the operator exact on this lattice (4.221, the
+ * digest's Part IV), Basa's 4.24, 4.5 and Cleary's 4.96333 (the last two
+ * of the POIS rows) */
+#define NXI 3
+static const char *const XI_XTRA[NXI][4] = {{BASA, "Solver:xi=4", NULL},
+                                            {BASA, "Solver:xi=4.221", NULL},
+                                            {BASA, "Solver:xi=4.5", NULL}};
+static const char *const XI_TAG[NXI] = {"xi4", "xi4.221", "xi4.5"};
+static const double XI_VAL[NXI] = {4.0, 4.221, 4.5};
 /* Long-time robustness (Basa et al.'s Fig. 5, left): Poiseuille at their
  * 20 x 20 to the series' steady state t* = 27.66 (their stopping rule) over
  * Re, for their models; quick at three Re, FULL at five. (At 10 x 10 the
@@ -165,8 +175,13 @@ struct chan {
   struct vsph_report_run pois[NPOIS], wall[3][2], eos[NEOS], cou[NCOU];
   struct vsph_report_run map[NMAP][NRE];
   struct vsph_report_run corr[NCORR][2];
+  struct vsph_report_run xi[NXI];
   size_t res_p, res_c, res_m;
 };
+
+/* Every run of the part: the loops of specs() below, FULL's Re columns
+ * included (one count, so the array and the loops cannot drift apart) */
+#define NSPECS (NPOIS + 6 + NEOS + NCOU + NXI + 2 * NCORR + NMAP * NRE)
 
 static void specs(const struct vsph_report *R, struct vsph_report_runspec *s,
                   size_t *n, size_t res_p, size_t res_c, size_t res_m) {
@@ -187,6 +202,9 @@ static void specs(const struct vsph_report *R, struct vsph_report_runspec *s,
     s[k++] =
         (struct vsph_report_runspec){"couette", vsph_viscous_name(f), res_c,
                                      1.0,       COU_XTRA[R->full],    "morris"};
+  for (int x = 0; x < NXI; x++)
+    s[k++] = (struct vsph_report_runspec){"poiseuille", "cleary",   res_p,
+                                          0.5,          XI_XTRA[x], XI_TAG[x]};
   for (int f = 0; f < NCORR; f++)
     for (int c = 0; c < 2; c++)
       s[k++] = (struct vsph_report_runspec){
@@ -198,7 +216,7 @@ static void specs(const struct vsph_report *R, struct vsph_report_runspec *s,
       s[k++] = (struct vsph_report_runspec){
           "poiseuille",      MAP_VISC[f],         res_m,
           TSTAR_END / TSTAR, map_xtra[f][col[q]], MAP_TAG[col[q]]};
-  *n = k;
+  *n = k; /* k <= NSPECS: the loops above are NSPECS at most */
 }
 
 static int load(struct vsph_report *R, struct chan *c) {
@@ -207,8 +225,7 @@ static int load(struct vsph_report *R, struct chan *c) {
   c->res_p = R->full ? 40 : 20;
   c->res_c = R->full ? 40 : 20;
   c->res_m = 20;
-  struct vsph_report_runspec
-      s[NPOIS + 6 + NEOS + NCOU + 2 * NCORR + NMAP * NRE];
+  struct vsph_report_runspec s[NSPECS];
   size_t n;
   specs(R, s, &n, c->res_p, c->res_c, c->res_m);
   int st = vsph_report_runs_prefetch(R, s, n);
@@ -222,6 +239,8 @@ static int load(struct vsph_report *R, struct chan *c) {
     st = vsph_report_runs_get(R, &s[k++], &c->eos[f]);
   for (int f = 0; f < NCOU && !st; f++)
     st = vsph_report_runs_get(R, &s[k++], &c->cou[f]);
+  for (int x = 0; x < NXI && !st; x++)
+    st = vsph_report_runs_get(R, &s[k++], &c->xi[x]);
   for (int f = 0; f < NCORR && !st; f++)
     for (int q = 0; q < 2 && !st; q++)
       st = vsph_report_runs_get(R, &s[k++], &c->corr[f][q]);
@@ -243,6 +262,7 @@ static void unload(struct chan *c) {
     for (int r = 0; r < NRE; r++) vsph_report_runs_free(&c->map[f][r]);
   for (int f = 0; f < NCORR; f++)
     for (int q = 0; q < 2; q++) vsph_report_runs_free(&c->corr[f][q]);
+  for (int x = 0; x < NXI; x++) vsph_report_runs_free(&c->xi[x]);
 }
 
 /* Column @p col of run @p r at time t (NaN past its end). */
@@ -374,6 +394,23 @@ int vsph_report_channel_write(struct vsph_report *R) {
   }
   fprintf(R->md, "\n");
   if ((st = vsph_report_say(R, "channel.pois_reading"))) goto done;
+  if ((st = vsph_report_say(R, "channel.xi_head"))) goto done;
+  {
+    /* in xi order: 4, 4.221, 4.24, 4.5, 4.96333 */
+    const struct vsph_report_run *xr[5] = {&c.xi[0], &c.xi[1], &c.pois[P_D424],
+                                           &c.xi[2], &c.pois[P_D496]};
+    const double xv[5] = {XI_VAL[0], XI_VAL[1], 4.24, XI_VAL[2], 4.96333};
+    for (int x = 0; x < 5; x++) {
+      fprintf(R->md, "| %g |", xv[x]);
+      cell(R->md, final(xr[x], "u_err_rel"), 100);
+      cell(R->md, final(xr[x], "u_err"), 100);
+      cell(R->md, at(xr[x], "Px", 0.5) / at(&c.pois[P_E], "Px", 0.5) - 1.0,
+           100);
+      fprintf(R->md, "\n");
+    }
+    fprintf(R->md, "\n");
+  }
+  if ((st = vsph_report_say(R, "channel.xi_reading"))) goto done;
   if ((st = vsph_report_say(R, "channel.corr_head"))) goto done;
   for (int f = 0; f < NCORR; f++) {
     const struct vsph_report_run *r0 = &c.pois[CORR_POIS[f]];
