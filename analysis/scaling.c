@@ -128,7 +128,7 @@ int vsph_scaling_props_init(struct vsph_scaling_props *sp,
   return VSPH_OK;
 }
 
-/* Evaluate the three formulations on patch p; values at particle `id0`. */
+/* Evaluate every formulation on patch p; values at particle `id0`. */
 static int eval_forms(const struct vsph_scaling_props *sp,
                       struct vsph_particles *p, size_t id0, double h,
                       double vals[VSPH_VISCOUS_FORM_COUNT][3], size_t *centre) {

@@ -11,15 +11,18 @@ struct vsph_particles;
 struct vsph_cells;
 
 /** @file viscous.h
- *  @brief The three discrete viscous operators (div V)_i of THEORY.md
- *  section 3 (Colagrossi et al. 2011, Eqs. 4.18-4.20, 4.30): MGF
- *  (Monaghan-Gingold), MEAF (Morris-Fox-Zhu) and PVWF (principle of virtual
- *  work, renormalised two-pass form). Gather loops over a cell list: each
- *  particle's sum is taken by one thread in a fixed neighbour order, so the
- *  result is bitwise identical for any thread count. Each formulation is
- *  one pair function of pair.h, dispatched by vsph_viscous_pair; the
- *  solver's right-hand side (equations.c) calls the same dispatch, so the
- *  operators exist once. No I/O. */
+ *  @brief The discrete viscous operators (div V)_i: the free-surface
+ *  study's three of THEORY.md section 3 (Colagrossi et al. 2011, Eqs.
+ *  4.18-4.20, 4.30: MGF, MEAF and PVWF, the renormalised two-pass form)
+ *  and the ten more of docs/theory.md section 8 (Basa et al.'s models A-D,
+ *  Espanol & Revenga, Zheng et al.'s VISC-01..04). Gather loops over a
+ *  cell list: each particle's sum is taken by one thread in a fixed
+ *  neighbour order, so the result is bitwise identical for any thread
+ *  count. Each formulation is one pair function of pair.h (or, for the
+ *  per-particle forms, one first pass built from pair.h's sums),
+ *  dispatched by vsph_viscous_pair; the solver's right-hand side
+ *  (equations.c) calls the same dispatch, so the operators exist once.
+ *  No I/O. */
 
 /** Viscous formulation. */
 enum vsph_viscous_form {
