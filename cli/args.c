@@ -9,6 +9,7 @@
 
 #include "../common/params.h"
 #include "../common/status.h"
+#include "../io/json.h"
 
 int vsph_args_fail(const char *cmd, const char *fmt, ...) {
   va_list ap;
@@ -188,6 +189,11 @@ int vsph_args_finish(const char *cmd, int rc) {
     return 1;
   }
   return rc;
+}
+
+int vsph_args_json(const char *cmd, void *obj) {
+  return vsph_args_finish(
+      cmd, vsph_json_print(obj) ? vsph_args_status(cmd, VSPH_EIO) : 0);
 }
 
 static volatile sig_atomic_t stop_signal;

@@ -93,4 +93,9 @@ int vsph_args_status(const char *cmd, int status);
  *  through it. @return @p rc, or 1 if stdout failed. */
 int vsph_args_finish(const char *cmd, int rc);
 
+/** @brief Print @p obj (a cJSON object; freed) to stdout and end the
+ *  command through vsph_args_finish: the --json ending of the analysis
+ *  commands. @return 0, or the status of a failed print or write. */
+int vsph_args_json(const char *cmd, void *obj);
+
 #endif /* VSPH_CLI_ARGS_H */

@@ -75,10 +75,7 @@ int vsph_cmd_dissipation_main(int argc, char **argv) {
   struct vsph_dissipation_result r;
   if (!st) st = vsph_dissipation_compute(&dp, &r);
   if (st) return vsph_args_status(CMD, st);
-  if (json)
-    return vsph_args_finish(CMD, vsph_json_print(vsph_json_dissipation(&dp, &r))
-                                     ? vsph_args_status(CMD, VSPH_EIO)
-                                     : 0);
+  if (json) return vsph_args_json(CMD, vsph_json_dissipation(&dp, &r));
   print_table(&dp, &r);
   return vsph_args_finish(CMD, 0);
 }

@@ -71,10 +71,7 @@ int vsph_cmd_laplacian_main(int argc, char **argv) {
   struct vsph_laplacian_result r;
   if (!st) st = vsph_laplacian_patch(&lp, &r);
   if (st) return vsph_args_status(CMD, st);
-  if (json)
-    return vsph_args_finish(CMD, vsph_json_print(vsph_json_laplacian(&lp, &r))
-                                     ? vsph_args_status(CMD, VSPH_EIO)
-                                     : 0);
+  if (json) return vsph_args_json(CMD, vsph_json_laplacian(&lp, &r));
   print_table(&lp, &r);
   return vsph_args_finish(CMD, 0);
 }

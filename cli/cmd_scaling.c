@@ -141,10 +141,7 @@ int vsph_cmd_scaling_main(int argc, char **argv) {
   if (st) return vsph_args_status(CMD, st);
   /* Half-support theory: F_ddd = -C_F (1+1+1-1)/h = -2 C_F/h, N_d = -C_N/h */
   if (json)
-    return vsph_args_finish(
-        CMD, vsph_json_print(vsph_json_scaling(&sp, &r, -2 * C_F, -C_N))
-                 ? vsph_args_status(CMD, VSPH_EIO)
-                 : 0);
+    return vsph_args_json(CMD, vsph_json_scaling(&sp, &r, -2 * C_F, -C_N));
   print_table(&sp, &r, -2 * C_F, -C_N);
   return vsph_args_finish(CMD, 0);
 }

@@ -86,10 +86,7 @@ int vsph_cmd_tensors_main(int argc, char **argv) {
   if (rc >= 0) return rc;
   if (!st) st = vsph_moments_compute(&mp, &r);
   if (st) return vsph_args_status(CMD, st);
-  if (json)
-    return vsph_args_finish(CMD, vsph_json_print(vsph_json_tensors(&mp, &r))
-                                     ? vsph_args_status(CMD, VSPH_EIO)
-                                     : 0);
+  if (json) return vsph_args_json(CMD, vsph_json_tensors(&mp, &r));
   const int d = mp.dim;
   printf(
       "# vsph %s tensors: kernel %s, dim %d, depth %g h (kappa = %g), h = 1, "

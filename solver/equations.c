@@ -10,6 +10,35 @@
 #include "pair.h"
 #include "particles.h"
 
+static const char *const EOS_NAMES[VSPH_EQUATIONS_EOS_COUNT] = {
+    [VSPH_EQUATIONS_EOS_LINEAR] = "linear",
+    [VSPH_EQUATIONS_EOS_TAIT] = "tait",
+    [VSPH_EQUATIONS_EOS_GAS] = "gas"};
+
+static const char *const CORR_NAMES[VSPH_PAIR_CORR_COUNT] = {
+    [VSPH_PAIR_CORR_NONE] = "none",
+    [VSPH_PAIR_CORR_SHEPARD] = "shepard",
+    [VSPH_PAIR_CORR_BONETLOK] = "bonetlok"};
+
+int vsph_equations_eos_resolve(const char *name, int *eos) {
+  for (*eos = 0; *eos < VSPH_EQUATIONS_EOS_COUNT; ++*eos)
+    if (strcmp(name, EOS_NAMES[*eos]) == 0) return VSPH_OK;
+  *eos = -1;
+  VSPH_FAIL(VSPH_EINVAL,
+            "unknown state equation Solver:eos = '%s' (linear, tait, gas)",
+            name);
+}
+
+int vsph_equations_corr_resolve(const char *name, int *corr) {
+  for (*corr = 0; *corr < VSPH_PAIR_CORR_COUNT; ++*corr)
+    if (strcmp(name, CORR_NAMES[*corr]) == 0) return VSPH_OK;
+  *corr = -1;
+  VSPH_FAIL(VSPH_EINVAL,
+            "unknown correction Solver:correction = '%s' (none, shepard, "
+            "bonetlok)",
+            name);
+}
+
 void vsph_equations_body_force(const struct vsph_equations_props *ep,
                                const double x[3], double g[3]) {
   g[0] = g[1] = g[2] = 0.0;
@@ -47,6 +76,7 @@ struct rhs_ctx {
   int corr;                         /* vsph_pair_corr */
   const struct vsph_viscous_ws *ws; /* the corrections' S, a, L */
   double w0;                        /* W(0) */
+  double wf;                        /* h^-d: W = wf w(s/h) */
 };
 
 /* Basa et al.'s corrections, first pass: S_i = sum_j V_j W_ij (j = i
@@ -131,7 +161,7 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
   double cS = 1.0, ca[3] = {0, 0, 0}, cL[9] = {0};
   const int bl = corr == VSPH_PAIR_CORR_BONETLOK;
   const struct vsph_kernel_type *const kt = rc->ep->visc.kernel;
-  const double ch = rc->ep->visc.h, cwf = corr ? pow(ch, -dim) : 0.0;
+  const double ch = rc->ep->visc.h, cwf = rc->wf;
   if (corr) {
     cS = rc->ws->S[i];
     for (int e = 0; e < dim; e++) ca[e] = rc->ws->a[e][i];
@@ -352,7 +382,8 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
                 vsph_viscous_name(vp->form));
     if (!ws || !ws->S || ws->cap < p->n)
       VSPH_FAIL(VSPH_EINVAL, "the kernel corrections need a workspace");
-    rc.w0 = vsph_kernel_w(vp->kernel, vp->dim, 0.0) * pow(vp->h, -vp->dim);
+    rc.wf = pow(vp->h, -vp->dim);
+    rc.w0 = vsph_kernel_w(vp->kernel, vp->dim, 0.0) * rc.wf;
     corr_pass(ep, p, n_fluid, cells, &rc.pk, rc.w0, ws);
   }
   vsph_viscous_loop_init(&rc.vl, vp,

@@ -67,6 +67,16 @@ struct vsph_equations_props {
                                        needs vsph_viscous_ws_corr) */
 };
 
+/** @brief The state equation called @p name ("linear", "tait", "gas")
+ *  into @p eos. @return VSPH_OK, or VSPH_EINVAL with a message listing
+ *  them. */
+int vsph_equations_eos_resolve(const char *name, int *eos);
+
+/** @brief The kernel correction called @p name ("none", "shepard",
+ *  "bonetlok"; vsph_pair_corr) into @p corr. @return VSPH_OK, or
+ *  VSPH_EINVAL with a message listing them. */
+int vsph_equations_corr_resolve(const char *name, int *corr);
+
 /** @brief The pressure of density @p rho and specific internal energy
  *  @p e (used by the gas law only) under the run's state equation. For
  *  the gas, c0^2 = gamma p0/rho0 at the reference state. */

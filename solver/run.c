@@ -77,16 +77,6 @@ static const struct vsph_params_spec SOLVER[] = {
                           "cleary, er)"),
 };
 
-static const char *const CORR_NAMES[VSPH_PAIR_CORR_COUNT] = {
-    [VSPH_PAIR_CORR_NONE] = "none",
-    [VSPH_PAIR_CORR_SHEPARD] = "shepard",
-    [VSPH_PAIR_CORR_BONETLOK] = "bonetlok"};
-
-static const char *const EOS_NAMES[VSPH_EQUATIONS_EOS_COUNT] = {
-    [VSPH_EQUATIONS_EOS_LINEAR] = "linear",
-    [VSPH_EQUATIONS_EOS_TAIT] = "tait",
-    [VSPH_EQUATIONS_EOS_GAS] = "gas"};
-
 /* The sound speed of the run: the scene's, or the gas law's at p0. */
 static double run_c0(const struct vsph_run_props *rp,
                      const struct vsph_scene *sc) {
@@ -108,21 +98,9 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
   if (!st) st = vsph_viscous_resolve(rp->visc, &rp->form);
   if (!st) st = vsph_kernel_resolve(rp->kernel, &rp->ktype);
   if (st) return st;
-  rp->eos_kind = -1;
-  for (int k = 0; k < VSPH_EQUATIONS_EOS_COUNT; k++)
-    if (strcmp(rp->eos, EOS_NAMES[k]) == 0) rp->eos_kind = k;
-  if (rp->eos_kind < 0)
-    VSPH_FAIL(VSPH_EINVAL,
-              "unknown state equation Solver:eos = '%s' (linear, tait, gas)",
-              rp->eos);
-  rp->corr = -1;
-  for (int k = 0; k < VSPH_PAIR_CORR_COUNT; k++)
-    if (strcmp(rp->correction, CORR_NAMES[k]) == 0) rp->corr = k;
-  if (rp->corr < 0)
-    VSPH_FAIL(VSPH_EINVAL,
-              "unknown correction Solver:correction = '%s' (none, shepard, "
-              "bonetlok)",
-              rp->correction);
+  if ((st = vsph_equations_eos_resolve(rp->eos, &rp->eos_kind)) ||
+      (st = vsph_equations_corr_resolve(rp->correction, &rp->corr)))
+    return st;
   if (rp->corr != VSPH_PAIR_CORR_NONE && !vsph_viscous_corrigible(rp->form))
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:correction = %s applies to the pair forms (mgf, meaf, "

@@ -202,6 +202,16 @@ START_TEST(test_pvwf_fallback) {
 }
 END_TEST
 
+/* The particle of @p p nearest the origin (2-D). */
+static size_t nearest_origin(const struct vsph_particles *p) {
+  size_t best = 0;
+  for (size_t i = 1; i < p->n; i++)
+    if (hypot(p->pos[0][i], p->pos[1][i]) <
+        hypot(p->pos[0][best], p->pos[1][best]))
+      best = i;
+  return best;
+}
+
 /* Basa et al.'s models in the interior of a square lattice, cubic spline,
  * dx/h = 0.637, eta = 0.1 h for C and D, u = (y^2, 0): the operator's x
  * component over the exact value 2 mu (lap u = 2, div u = 0), against an
@@ -241,11 +251,7 @@ START_TEST(test_brookshaw_lattice) {
   double *buf = calloc(2 * p->n, sizeof *buf), *f[3] = {buf, buf + p->n, NULL};
   ck_assert_int_eq(vsph_viscous_compute(&vp, p, c, ws, f, NULL), 0);
   /* the particle nearest the centre: 2h = 3.1 dx of lattice all round */
-  size_t best = 0;
-  for (size_t i = 1; i < p->n; i++)
-    if (hypot(p->pos[0][i], p->pos[1][i]) <
-        hypot(p->pos[0][best], p->pos[1][best]))
-      best = i;
+  const size_t best = nearest_origin(p);
   ck_assert_double_eq_tol(f[0][best] / (2.0 * mu), want[k], 6e-4);
   ck_assert_double_le(fabs(f[1][best]), 1e-9 * fabs(f[0][best]));
   free(buf);
@@ -293,11 +299,7 @@ START_TEST(test_takeda_uniform) {
               &vsph_cubic_type, 2, dx / 0.637, mu),
           0);
       ck_assert_int_eq(vsph_viscous_compute(&vp, p, c, ws, f, NULL), 0);
-      size_t best = 0;
-      for (size_t i = 1; i < p->n; i++)
-        if (hypot(p->pos[0][i], p->pos[1][i]) <
-            hypot(p->pos[0][best], p->pos[1][best]))
-          best = i;
+      const size_t best = nearest_origin(p);
       if (shep) {
         for (size_t i = 0; i < p->n; i++)
           for (int k = 0; k < 2; k++)
