@@ -8,6 +8,7 @@
 
 #include "../common/consts.h"
 #include "../common/status.h"
+#include "../kernels/kernel.h"
 #include "../solver/particles.h"
 #include "../solver/scene.h"
 
@@ -417,4 +418,90 @@ int vsph_references_scene_mech(struct vsph_references_scene *r, double t,
   *Em = sc->rho0 * sc->g * w->A * w->A * sc->ref_length / 4.0 * exp(-gam * t);
   *dEm_dt = -gam * *Em;
   return VSPH_OK;
+}
+
+/* Ghia, Ghia & Shin (1982), J. Comput. Phys. 48, 387-411, Tables I and II
+ * (Re = 100, 400, 1000), as printed. */
+static const double GHIA_Y[17] = {
+    1.0000, 0.9766, 0.9688, 0.9609, 0.9531, 0.8516, 0.7344, 0.6172, 0.5000,
+    0.4531, 0.2813, 0.1719, 0.1016, 0.0703, 0.0625, 0.0547, 0.0000};
+static const double GHIA_U[3][17] = {
+    {1.00000, 0.84123, 0.78871, 0.73722, 0.68717, 0.23151, 0.00332, -0.13641,
+     -0.20581, -0.21090, -0.15662, -0.10150, -0.06434, -0.04775, -0.04192,
+     -0.03717, 0.00000},
+    {1.00000, 0.75837, 0.68439, 0.61756, 0.55892, 0.29093, 0.16256, 0.02135,
+     -0.11477, -0.17119, -0.32726, -0.24299, -0.14612, -0.10338, -0.09266,
+     -0.08186, 0.00000},
+    {1.00000, 0.65928, 0.57492, 0.51117, 0.46604, 0.33304, 0.18719, 0.05702,
+     -0.06080, -0.10648, -0.27805, -0.38289, -0.29730, -0.22220, -0.20196,
+     -0.18109, 0.00000}};
+static const double GHIA_X[17] = {
+    1.0000, 0.9688, 0.9609, 0.9531, 0.9453, 0.9063, 0.8594, 0.8047, 0.5000,
+    0.2344, 0.2266, 0.1563, 0.0938, 0.0781, 0.0703, 0.0625, 0.0000};
+static const double GHIA_V[3][17] = {
+    {0.00000, -0.05906, -0.07391, -0.08864, -0.10313, -0.16914, -0.22445,
+     -0.24533, 0.05454, 0.17527, 0.17507, 0.16077, 0.12317, 0.10890, 0.10091,
+     0.09233, 0.00000},
+    {0.00000, -0.12146, -0.15663, -0.19254, -0.22847, -0.23827, -0.44993,
+     -0.38598, 0.05186, 0.30174, 0.30203, 0.28124, 0.22965, 0.20920, 0.19713,
+     0.18360, 0.00000},
+    {0.00000, -0.21388, -0.27669, -0.33714, -0.39188, -0.51550, -0.42665,
+     -0.31966, 0.02526, 0.32235, 0.33075, 0.37095, 0.32627, 0.30353, 0.29012,
+     0.27485, 0.00000}};
+
+int vsph_references_ghia(double Re, struct vsph_references_ghia *g) {
+  static const double RE[3] = {100.0, 400.0, 1000.0};
+  for (int k = 0; k < 3; k++)
+    if (fabs(Re - RE[k]) <= 1e-9 * RE[k]) {
+      *g = (struct vsph_references_ghia){
+          .y = GHIA_Y, .u = GHIA_U[k], .x = GHIA_X, .v = GHIA_V[k], .n = 17};
+      return 1;
+    }
+  return 0;
+}
+
+void vsph_references_shepard(const struct vsph_particles *p, size_t n_fluid,
+                             const struct vsph_kernel_type *k, double h,
+                             const double x[3], double u[3]) {
+  const int d = p->dim;
+  double S = 0.0, su[3] = {0, 0, 0};
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= n_fluid) continue;
+    double s2 = 0.0;
+    for (int a = 0; a < d; a++) {
+      const double dx = p->pos[a][i] - x[a];
+      s2 += dx * dx;
+    }
+    const double w = vsph_kernel_w(k, d, sqrt(s2) / h);
+    if (w <= 0.0) continue;
+    S += w;
+    for (int a = 0; a < d; a++) su[a] += w * p->vel[a][i];
+  }
+  for (int a = 0; a < 3; a++) u[a] = a < d && S > 0.0 ? su[a] / S : (double)NAN;
+}
+
+void vsph_references_cavity_error(const struct vsph_scene *sc,
+                                  const struct vsph_particles *p,
+                                  size_t n_fluid,
+                                  const struct vsph_kernel_type *k, double h,
+                                  struct vsph_references_profile_err *e) {
+  e->rms = e->rms_rel = e->v_rms = NAN;
+  struct vsph_references_ghia g;
+  if (sc->type != &vsph_cavity_type) return;
+  const struct vsph_scene_cavity *cv = &sc->u.cavity;
+  if (!vsph_references_ghia(cv->Re, &g)) return;
+  double s2 = 0.0, mx = 0.0;
+  size_t n = 0;
+  for (size_t q = 1; q + 1 < g.n; q++) /* the walls' own points left out */
+    for (int line = 0; line < 2; line++) {
+      double x[3] = {0.5 * cv->L, 0.5 * cv->L, 0.0}, u[3];
+      x[line ? 0 : 1] = (line ? g.x[q] : g.y[q]) * cv->L;
+      vsph_references_shepard(p, n_fluid, k, h, x, u);
+      const double err = (line ? u[1] - g.v[q] * cv->U : u[0] - g.u[q] * cv->U);
+      s2 += err * err;
+      mx = fmax(mx, fabs(err));
+      n++;
+    }
+  e->rms = sqrt(s2 / (double)n) / cv->U;
+  e->rms_rel = mx / cv->U;
 }

@@ -65,6 +65,7 @@ struct vsph_scene;
 struct vsph_scene_wave;
 struct vsph_scene_channel;
 struct vsph_particles;
+struct vsph_kernel_type;
 
 /** @brief Poiseuille start-up from rest (Basa et al. 2009, eq. 36 with its
  *  sign corrected; docs/theory.md, section 9): the velocity U(y, t) at
@@ -115,6 +116,39 @@ int vsph_references_profile_bins(const struct vsph_scene *sc,
                                  const struct vsph_particles *p, size_t n_fluid,
                                  double t, size_t nb, double *y, double *u,
                                  double *U, size_t *count);
+
+/** Ghia, Ghia & Shin (1982), Tables I and II: the steady lid-driven
+ *  cavity's u on the vertical centreline x = L/2 at heights y, and v on the
+ *  horizontal centreline y = L/2 at abscissae x, over L and U, 17 points
+ *  each, the walls included (published data, carried over as printed). */
+struct vsph_references_ghia {
+  const double *y, *u; /*!< Table I: y/L, u/U */
+  const double *x, *v; /*!< Table II: x/L, v/U */
+  size_t n;            /*!< points per line (17) */
+};
+
+/** @brief Ghia et al.'s profiles at Reynolds number @p Re into @p g.
+ *  @return 1 for Re = 100, 400 or 1000 (to 1e-9), else 0 (g untouched). */
+int vsph_references_ghia(double Re, struct vsph_references_ghia *g);
+
+/** @brief The fluid's velocity at @p x by the Shepard average with kernel
+ *  @p k of smoothing length @p h: u = sum_i W_i u_i / sum_i W_i over the
+ *  fluid particles (id < n_fluid), NaN where none is within reach. */
+void vsph_references_shepard(const struct vsph_particles *p, size_t n_fluid,
+                             const struct vsph_kernel_type *k, double h,
+                             const double x[3], double u[3]);
+
+/** @brief The cavity's distance from Ghia et al. at its Re: the velocity
+ *  (Shepard average, vsph_references_shepard) at their interior points of
+ *  both centrelines (15 + 15, the walls' own values left out), against
+ *  their values, in units of U: e->rms the RMS, e->rms_rel the largest,
+ *  e->v_rms NaN. All NaN when the scene is not the cavity or Ghia et al.
+ *  have no table for its Re. */
+void vsph_references_cavity_error(const struct vsph_scene *sc,
+                                  const struct vsph_particles *p,
+                                  size_t n_fluid,
+                                  const struct vsph_kernel_type *k, double h,
+                                  struct vsph_references_profile_err *e);
 
 /** @brief Lighthill's standing-wave kinetic energy (THEORY 6.3) for the
  *  wave @p w (g, A, L, nu, k, omega) at density @p rho and time @p t:

@@ -226,8 +226,12 @@ static int write_row(struct outputs *o, struct vsph_run *run,
   const struct vsph_equations_energy *en = &row.en;
   const struct vsph_equations_budget *b = &row.b;
   struct vsph_references_profile_err pe;
-  vsph_references_profile_error(&run->scene, run->integ->p, run->n_fluid, row.t,
-                                &pe);
+  if (run->scene.type == &vsph_cavity_type)
+    vsph_references_cavity_error(&run->scene, run->integ->p, run->n_fluid,
+                                 run->props.ktype, run->h, &pe);
+  else
+    vsph_references_profile_error(&run->scene, run->integ->p, run->n_fluid,
+                                  row.t, &pe);
   errno = 0;
   fprintf(o->csv,
           "%.10g,%.12e,%.12e,%.12e,%.12e,%.12e,%.6e,%.6e,%.6e,%.12e,"
@@ -259,6 +263,29 @@ static int write_profile(struct outputs *o, const struct vsph_run *run) {
   return st;
 }
 
+/* The cavity's centrelines at a snapshot: u(y) on x = L/2 and v(x) on
+ * y = L/2 (Shepard averages) at Ghia et al.'s 17 points of each, beside
+ * their values (NaN where they have no table for the run's Re). */
+static int write_centreline(struct outputs *o, const struct vsph_run *run) {
+  const struct vsph_scene_cavity *cv = &run->scene.u.cavity;
+  struct vsph_references_ghia g;
+  const int have = vsph_references_ghia(cv->Re, &g);
+  if (!have) vsph_references_ghia(100.0, &g); /* their points, no values */
+  errno = 0;
+  for (int line = 0; line < 2; line++)
+    for (size_t q = 0; q < g.n; q++) {
+      const double s = line ? g.x[q] : g.y[q];
+      double x[3] = {0.5 * cv->L, 0.5 * cv->L, 0.0}, u[3];
+      x[line ? 0 : 1] = s * cv->L;
+      vsph_references_shepard(run->integ->p, run->n_fluid, run->props.ktype,
+                              run->h, x, u);
+      const double ref = have ? (line ? g.v[q] : g.u[q]) * cv->U : (double)NAN;
+      fprintf(o->profile, "%.10g,%s,%.10e,%.10e,%.10e\n", run->integ->t,
+              line ? "v(x)" : "u(y)", s * cv->L, u[line], ref);
+    }
+  return live_flush(o, o->profile, "centreline.csv");
+}
+
 static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
   char name[64];
   snprintf(name, sizeof name, "snap_%04zu.vtp", o->nsnap++);
@@ -271,7 +298,9 @@ static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
     vsph_diagnostics_free(&dg);
   }
   if (!st) st = vsph_vtk_pvd_add(&o->pvd, s->t, name);
-  if (!st && o->profile) st = write_profile(o, run);
+  if (!st && o->profile)
+    st = run->scene.type == &vsph_cavity_type ? write_centreline(o, run)
+                                              : write_profile(o, run);
   if (st)
     snprintf(o->error, sizeof o->error, "cannot write snapshot %s/%s", o->dir,
              name);
@@ -365,6 +394,10 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   if (rp.snapshots > 0 && vsph_scene_is_channel(type) &&
       !(o.profile = live_open(&o, "profile.csv", "t,y,u,u_ref,n\n", &st)))
     goto done;
+  if (rp.snapshots > 0 && type == &vsph_cavity_type &&
+      !(o.profile =
+            live_open(&o, "centreline.csv", "t,line,s,vel,vel_ghia\n", &st)))
+    goto done;
   res->n_particles = run->n_fluid;
   res->h = run->h;
   res->dx = run->dx;
@@ -385,7 +418,9 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   res->t = vsph_run_time(run);
   res->pairs = run->pairs;
   st = live_close(&o, &o.csv, "energy.csv", st);
-  st = live_close(&o, &o.profile, "profile.csv", st);
+  st = live_close(&o, &o.profile,
+                  type == &vsph_cavity_type ? "centreline.csv" : "profile.csv",
+                  st);
   if (o.pvd.f) {
     const int c = vsph_vtk_pvd_close(&o.pvd);
     if (c && !o.error[0])

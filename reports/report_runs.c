@@ -585,9 +585,38 @@ static const struct {
   double t_end;
 } CHANNEL_BASE[2] = {{"poiseuille", 10, 0.5}, {"couette", 16, 0.25}};
 
+/* The cavity rows: each pair form the transport-velocity scheme takes,
+ * Re = 100, 16 x 16 to t = 1 s (quintic, h = dx); E_k at the end and the
+ * RMS distance from Ghia et al. then (the flow is still developing). */
+static const char *const CAVITY_BASE[] = {"mgf", "meaf", "vi", "cleary", "er"};
+#define NCAVITY_BASE (sizeof CAVITY_BASE / sizeof CAVITY_BASE[0])
+
 size_t vsph_report_runs_baseline_count(void) {
   return VSPH_REPORT_NSCENES * VSPH_VISCOUS_PAPER_COUNT +
-         2 * VSPH_VISCOUS_FORM_COUNT;
+         2 * VSPH_VISCOUS_FORM_COUNT + NCAVITY_BASE;
+}
+
+/* Cavity row j of the baseline. */
+static int cavity_baseline(struct vsph_report *R, size_t j,
+                           struct vsph_report_baseline *b) {
+  static const char *const tvf[] = {"Solver:kernel=quintic", "Solver:hdx=1",
+                                    "Solver:tvf=1", NULL};
+  struct vsph_report_runspec rs = {"cavity", CAVITY_BASE[j], 16, 1.0,
+                                   tvf,      "base"};
+  struct vsph_report_run r;
+  const int st = vsph_report_runs_get(R, &rs, &r);
+  if (st) return st;
+  snprintf(b->scene, sizeof b->scene, "%s", rs.scene);
+  snprintf(b->visc, sizeof b->visc, "%s", rs.visc);
+  b->res = rs.res;
+  b->t_end = rs.t_end;
+  const size_t last = r.nrow - 1;
+  const double *ue = vsph_csv_column(r.energy, "u_err");
+  b->ek_final = r.Ek[last];
+  b->diss0 = ue ? ue[last] : (double)NAN;
+  b->ok = r.ok;
+  vsph_report_runs_free(&r);
+  return VSPH_OK;
 }
 
 /* Channel row j of the baseline. */
@@ -623,6 +652,8 @@ int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
   if (i >= vsph_report_runs_baseline_count())
     VSPH_FAIL(VSPH_EINVAL, "no baseline row %zu", i);
   const size_t nfree = VSPH_REPORT_NSCENES * VSPH_VISCOUS_PAPER_COUNT;
+  const size_t nchan = 2 * VSPH_VISCOUS_FORM_COUNT;
+  if (i >= nfree + nchan) return cavity_baseline(R, i - nfree - nchan, b);
   if (i >= nfree) return channel_baseline(R, i - nfree, b);
   const int sc = (int)(i / VSPH_VISCOUS_PAPER_COUNT);
   const int f = (int)(i % VSPH_VISCOUS_PAPER_COUNT);

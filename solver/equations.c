@@ -9,6 +9,7 @@
 #include "cells.h"
 #include "pair.h"
 #include "particles.h"
+#include "walls.h"
 
 static const char *const EOS_NAMES[VSPH_EQUATIONS_EOS_COUNT] = {
     [VSPH_EQUATIONS_EOS_LINEAR] = "linear",
@@ -75,6 +76,8 @@ struct rhs_ctx {
   int reduce;                       /* Basa's pressure reduction */
   int corr;                         /* vsph_pair_corr */
   const struct vsph_viscous_ws *ws; /* the corrections' S, a, L */
+  int tvf;                          /* the transport-velocity scheme */
+  double pb;                        /* its background pressure */
   double w0;                        /* W(0) */
   double wf;                        /* h^-d: W = wf w(s/h) */
 };
@@ -145,7 +148,7 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
     const struct rhs_ctx *rc, const struct vsph_particles *p,
     const struct vsph_pair_ranges *rg, size_t i, struct vsph_equations_out *out,
     double *min_s2, const struct vsph_viscous_shape sh, const int delta,
-    const int kid, const int reduce, const int corr) {
+    const int kid, const int reduce, const int corr, const int tvf) {
   const int dim = sh.dim;
   double ui[3] = {0, 0, 0}, Ai[9] = {0};
   for (int k = 0; k < dim; k++) ui[k] = p->vel[k][i];
@@ -155,6 +158,13 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
   const double *const vel[3] = {p->vel[0], dim > 1 ? p->vel[1] : NULL,
                                 dim > 2 ? p->vel[2] : NULL};
   double cont = 0.0, dsum = 0.0, ap[3] = {0, 0, 0}, av[3] = {0, 0, 0};
+  /* the transport-velocity scheme: A_i, the background push's sum */
+  double tA[9] = {0}, tb[3] = {0, 0, 0};
+  const double *const tv[3] = {p->tvel[0], p->tvel[1], p->tvel[2]};
+  if (tvf)
+    for (int a = 0; a < dim; a++)
+      for (int c = 0; c < dim; c++)
+        tA[a * dim + c] = rhoi * ui[a] * (tv[c][i] - ui[c]);
   /* the reduction's neighbour pressures and sum_j V_j F x */
   double pn = 0.0, gx0 = 0.0, gx1 = 0.0, gx2 = 0.0;
   /* the corrections: i's S, a, L (corr only) */
@@ -203,6 +213,19 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
         vsph_pair_pressure(&pr, dim, pi + pp[j], f);
         vsph_viscous_pair(&rc->vl, sh, &pr, du, dux, Ai, g);
       }
+      if (tvf) { /* (A_i + A_j) . grad_i W = -F (A_i + A_j) x; 2 pb */
+        double fb[3];
+        vsph_pair_pressure(&pr, dim, 2.0 * rc->pb, fb);
+        for (int a = 0; a < dim; a++) {
+          double s = 0.0;
+          for (int c = 0; c < dim; c++)
+            s += (tA[a * dim + c] +
+                  rho[j] * vel[a][j] * (tv[c][j] - vel[c][j])) *
+                 pr.x[c];
+          f[a] -= pr.VF * s;
+          tb[a] += fb[a];
+        }
+      }
       if (reduce) {
         pn += pp[j];
         gx0 += pr.VF * pr.x[0];
@@ -245,6 +268,8 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
   vsph_equations_body_force(rc->ep, it.xi, g);
   out->drho[i] = rhoi * cont + rc->dhc * dsum;
   for (int k = 0; k < dim; k++) out->acc[k][i] = rinv * (ap[k] + av[k]) + g[k];
+  if (tvf)
+    for (int k = 0; k < dim; k++) p->bacc[k][i] = rinv * tb[k];
   if (rc->parts) {
     for (int k = 0; k < dim; k++) out->acc_visc[k][i] = rinv * av[k];
     out->drho_delta[i] = rc->dhc * dsum;
@@ -260,7 +285,7 @@ rhs_cell(const struct rhs_ctx *rc, const struct vsph_particles *p,
          const struct vsph_cells *cells, size_t c, size_t n_fluid,
          struct vsph_equations_out *out, double *min_s2,
          const struct vsph_viscous_shape sh, const int delta, const int kid,
-         const int reduce, const int corr) {
+         const int reduce, const int corr, const int tvf) {
   struct vsph_pair_ranges rg;
   vsph_pair_ranges_cell(&rg, cells, c);
   const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
@@ -269,7 +294,7 @@ rhs_cell(const struct rhs_ctx *rc, const struct vsph_particles *p,
   for (size_t i = i0; i < i1; i++) {
     if (p->id[i] >= n_fluid) continue;
     double m;
-    total += rhs_one(rc, p, &rg, i, out, &m, sh, delta, kid, reduce, corr);
+    total += rhs_one(rc, p, &rg, i, out, &m, sh, delta, kid, reduce, corr, tvf);
     ms2 = m < ms2 ? m : ms2;
   }
   *min_s2 = ms2;
@@ -293,7 +318,7 @@ typedef size_t rhs_cell_fn(const struct rhs_ctx *rc,
                      struct vsph_equations_out *out, double *min_s2) {         \
     const struct vsph_viscous_shape sh = {D, FORM};                            \
     return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, DELTA,          \
-                    VSPH_KERNEL_DFQ_GAUSSIAN, 0, 0);                           \
+                    VSPH_KERNEL_DFQ_GAUSSIAN, 0, 0, 0);                        \
   }
 RHS_CELL_SHAPE(rhs_mgf2, 2, VSPH_VISCOUS_MGF, 0)
 RHS_CELL_SHAPE(rhs_mgf2d, 2, VSPH_VISCOUS_MGF, 1)
@@ -322,7 +347,7 @@ static size_t rhs_general(const struct rhs_ctx *rc,
                           double *min_s2) {
   const struct vsph_viscous_shape sh = {rc->pk.dim, rc->vl.form};
   return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, rc->dhc > 0.0,
-                  rc->pk.dfq_id, rc->reduce, rc->corr);
+                  rc->pk.dfq_id, rc->reduce, rc->corr, rc->tvf);
 }
 
 /* The loop for the run's shape, chosen once per evaluation. */
@@ -340,7 +365,7 @@ static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
   const int lf = vsph_viscous_loop_form(rc->vl.form);
   const int row = lf <= VSPH_VISCOUS_PVWF ? lf : lf == VSPH_VISCOUS_ER ? 3 : -1;
   if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 || row < 0 ||
-      rc->reduce || rc->corr)
+      rc->reduce || rc->corr || rc->tvf)
     return rhs_general;
   return table[rc->pk.dim - 2][row][rc->dhc > 0.0];
 }
@@ -357,10 +382,14 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   const int gas = ep->eos == VSPH_EQUATIONS_EOS_GAS;
   if (gas && (!out->de || !p->e))
     VSPH_FAIL(VSPH_EINVAL, "the gas law needs the particles' energy fields");
+  if (ep->tvf && !p->tvel[0])
+    VSPH_FAIL(VSPH_EINVAL, "the transport velocity needs its fields");
+  if (!ep->solid) {
 #pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < n; i++) {
-    p->p[i] = vsph_equations_pressure(ep, p->rho[i], gas ? p->e[i] : 0.0);
-    p->vol[i] = p->m[i] / p->rho[i];
+    for (size_t i = 0; i < n; i++) {
+      p->p[i] = vsph_equations_pressure(ep, p->rho[i], gas ? p->e[i] : 0.0);
+      p->vol[i] = p->m[i] / p->rho[i];
+    }
   }
   const int st = vsph_viscous_prepare(vp, p, cells, ws);
   if (st) return st;
@@ -372,6 +401,8 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
       .reduce = ep->reduce,
       .corr = ep->corr,
       .ws = ws,
+      .tvf = ep->tvf,
+      .pb = ep->pb,
   };
   vsph_pair_kernel_init(&rc.pk, vp->kernel, vp->dim, vp->h);
   if (ep->corr) {
@@ -401,6 +432,76 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   }
   out->interactions = total;
   out->min_s2 = min_s2;
+  return VSPH_OK;
+}
+
+int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
+                               const struct vsph_walls *w,
+                               struct vsph_particles *p, size_t n_fluid,
+                               const struct vsph_cells *cells) {
+  if (ep->eos != VSPH_EQUATIONS_EOS_LINEAR)
+    VSPH_FAIL(VSPH_EINVAL, "wall particles need the linear state equation");
+  const int dim = p->dim;
+  const struct vsph_kernel_type *k = ep->visc.kernel;
+  const double h = ep->visc.h, wf = pow(h, -dim);
+  const double w0 = vsph_kernel_w(k, dim, 0.0) * wf, c2 = ep->c0 * ep->c0;
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, k, dim, h);
+  /* two sweeps: the fluid (density, pressure, volume), then the walls,
+   * which read the fluid's pressure */
+  for (int sweep = 0; sweep < 2; sweep++) {
+#pragma omp parallel for schedule(dynamic, 8)
+    for (size_t c = 0; c < cells->ncells; c++) {
+      struct vsph_pair_ranges rg;
+      vsph_pair_ranges_cell(&rg, cells, c);
+      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+           i++) {
+        const int wall = p->id[i] >= n_fluid;
+        if (wall != sweep) continue;
+        if (!wall && !ep->tvf) { /* continuity's density */
+          p->p[i] = vsph_equations_pressure(ep, p->rho[i], 0.0);
+          p->vol[i] = p->m[i] / p->rho[i];
+          continue;
+        }
+        double S = wall ? 0.0 : p->m[i] * w0, sp = 0.0, su[3] = {0, 0, 0};
+        struct vsph_pair_iter it;
+        struct vsph_pair_chunk b;
+        vsph_pair_begin(&it, &pk, p, &rg, i);
+        while (vsph_pair_gather(&it, dim, pk.dfq_id, &b))
+          for (size_t q = 0; q < b.m; q++) {
+            struct vsph_pair pr;
+            vsph_pair_at(&b, q, dim, &pr);
+            const size_t j = pr.j;
+            const double wk = vsph_kernel_w(k, dim, sqrt(pr.s2) / h) * wf;
+            if (!wall) { /* summation: every neighbour's mass */
+              S += p->m[j] * wk;
+              continue;
+            }
+            if (p->id[j] >= n_fluid) continue;
+            S += wk;
+            sp += p->p[j] * wk;
+            for (int a = 0; a < dim; a++) su[a] += p->vel[a][j] * wk;
+          }
+        if (!wall) {
+          p->rho[i] = S;
+          p->p[i] = vsph_equations_pressure(ep, S, 0.0);
+          p->vol[i] = p->m[i] / S;
+          continue;
+        }
+        double x[3] = {0, 0, 0}, uw[3];
+        for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
+        vsph_walls_solid_velocity(w, dim, x, uw);
+        const double pw = S > 0.0 ? sp / S : 0.0;
+        p->p[i] = pw;
+        p->rho[i] = ep->rho0 + pw / c2; /* the linear law inverted */
+        p->vol[i] = p->m[i] / p->rho[i];
+        for (int a = 0; a < dim; a++) {
+          p->vel[a][i] = S > 0.0 ? 2.0 * uw[a] - su[a] / S : uw[a];
+          if (p->tvel[a]) p->tvel[a][i] = p->vel[a][i];
+        }
+      }
+    }
+  }
   return VSPH_OK;
 }
 

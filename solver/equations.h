@@ -65,6 +65,15 @@ struct vsph_equations_props {
                                        continuity, pressure and the viscous
                                        term (corrigible forms; the workspace
                                        needs vsph_viscous_ws_corr) */
+  int solid;                      /*!< 1: fixed wall particles; their state
+                                       and the fluid's pressure are set by
+                                       vsph_equations_walls_adami, not by
+                                       the right-hand side */
+  int tvf;                        /*!< 1: the transport-velocity scheme
+                                       (Adami, Hu & Adams 2013): summation
+                                       density, the A term, and the
+                                       background acceleration in bacc */
+  double pb;                      /*!< its background pressure (Pa) */
 };
 
 /** @brief The state equation called @p name ("linear", "tait", "gas")
@@ -145,9 +154,34 @@ void vsph_equations_body_force(const struct vsph_equations_props *ep,
 double vsph_equations_potential(const struct vsph_equations_props *ep,
                                 const double x[3]);
 
+struct vsph_walls;
+struct vsph_cells;
+
+/** @brief Fixed wall particles' state, Adami, Hu & Adams (2012), before
+ *  each evaluation (ep->solid; the linear law): with ep->tvf the fluid's
+ *  density by summation, rho_i = sum_j m_j W_ij over fluid and wall
+ *  particles (i included); then every fluid particle's p and V = m/rho;
+ *  then each wall particle w (id >= n_fluid) takes the Shepard average
+ *  of its fluid neighbours, p_w = sum_f p_f W_wf / sum_f W_wf (no body
+ *  force or wall acceleration: the scenes that use it have none), the
+ *  density of p_w under the linear law, and the velocity
+ *  2 u_prescribed - (Shepard average of u_f) (no slip; the transport
+ *  velocity equal to it, so its A term vanishes). A wall particle without
+ *  fluid neighbours keeps p = 0 and the prescribed velocity.
+ *  @return VSPH_OK or VSPH_EINVAL (not the linear law). */
+int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
+                               const struct vsph_walls *w,
+                               struct vsph_particles *p, size_t n_fluid,
+                               const struct vsph_cells *cells);
+
 /** @brief Evaluate the right-hand side for the fluid particles: those with
  *  id < n_fluid; the others are ghosts (neighbours only). Refreshes p->p
- *  and p->vol of every particle first.
+ *  and p->vol of every particle first (with ep->solid: the state
+ *  vsph_equations_walls_adami set is taken as it is). With ep->tvf, adds
+ *  the transport-velocity scheme's A term, (1/rho_i) sum_j V_j (A_i + A_j)
+ *  . grad_i W_ij with A = rho u (x) (tvel - u), to the acceleration and
+ *  sets bacc_i = -(2 pb/rho_i) sum_j V_j grad_i W_ij, the background
+ *  pressure's push that the transport velocity carries.
  *  @param ws viscous workspace (PVWF: for all p->n particles).
  *  @return VSPH_OK or VSPH_EINVAL. */
 int vsph_equations_rhs(const struct vsph_equations_props *ep,

@@ -70,6 +70,12 @@ int vsph_particles_reserve(struct vsph_particles *p, size_t cap) {
        (!p->e || grow((void **)&p->e, p->n, cap, sizeof(double))) &&
        (!p->de || grow((void **)&p->de, p->n, cap, sizeof(double))) &&
        grow((void **)&p->id, p->n, cap, sizeof(size_t));
+  for (int k = 0; k < p->dim; k++) {
+    ok = ok &&
+         (!p->tvel[k] || grow((void **)&p->tvel[k], p->n, cap, sizeof(double)));
+    ok = ok &&
+         (!p->bacc[k] || grow((void **)&p->bacc[k], p->n, cap, sizeof(double)));
+  }
   /* a field that could not grow keeps its old size: cap stays until all
    * have grown */
   if (!ok)
@@ -88,9 +94,22 @@ int vsph_particles_energy_alloc(struct vsph_particles *p) {
   return VSPH_OK;
 }
 
+int vsph_particles_tvf_alloc(struct vsph_particles *p) {
+  const size_t nb = p->cap * sizeof(double);
+  for (int k = 0; k < p->dim; k++)
+    if ((!p->tvel[k] && !(p->tvel[k] = alloc_aligned(nb))) ||
+        (!p->bacc[k] && !(p->bacc[k] = alloc_aligned(nb))))
+      VSPH_FAIL(VSPH_ENOMEM,
+                "cannot allocate the transport velocity of %zu particles",
+                p->cap);
+  return VSPH_OK;
+}
+
 void vsph_particles_free(struct vsph_particles *p) {
   if (!p) return;
   for (int k = 0; k < 3; k++) {
+    free(p->tvel[k]);
+    free(p->bacc[k]);
     free(p->pos[k]);
     free(p->vel[k]);
     free(p->acc[k]);
@@ -123,6 +142,8 @@ void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
     permute_field(p->pos[k], perm, n, scratch);
     permute_field(p->vel[k], perm, n, scratch);
     permute_field(p->acc[k], perm, n, scratch);
+    if (p->tvel[k]) permute_field(p->tvel[k], perm, n, scratch);
+    if (p->bacc[k]) permute_field(p->bacc[k], perm, n, scratch);
   }
   permute_field(p->m, perm, n, scratch);
   permute_field(p->rho, perm, n, scratch);

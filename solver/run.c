@@ -75,6 +75,13 @@ static const struct vsph_params_spec SOLVER[] = {
                           "every term: none, shepard ([0]) or bonetlok "
                           "([1]); the pair forms only (mgf, meaf, vi, "
                           "cleary, er)"),
+    VSPH_PARAMS_INT_SPEC(P, tvf, 0, 0, 1,
+                         "1: the transport-velocity scheme (Adami, Hu & "
+                         "Adams 2013: density by summation, background "
+                         "pressure, kick-drift-kick at cfl/4); scenes with "
+                         "wall particles (cavity), the pair forms only"),
+    VSPH_PARAMS_REAL_SPEC(P, pb, 0.0, 0.0, 1e12,
+                          "tvf: background pressure (Pa); 0: rho0 c0^2"),
 };
 
 /* The sound speed of the run: the scene's, or the gas law's at p0. */
@@ -106,6 +113,16 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
               "Solver:correction = %s applies to the pair forms (mgf, meaf, "
               "vi, cleary, er), not %s",
               rp->correction, rp->visc);
+  if (rp->tvf && (!vsph_viscous_corrigible(rp->form) ||
+                  rp->corr != VSPH_PAIR_CORR_NONE || rp->reduce ||
+                  rp->delta > 0.0 || rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR))
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:tvf = 1 takes a pair form (mgf, meaf, vi, cleary, er) "
+              "with the linear law and no correction, reduction or delta, "
+              "not visc = %s",
+              rp->visc);
+  if (rp->pb > 0.0 && !rp->tvf)
+    VSPH_FAIL(VSPH_EINVAL, "Solver:pb applies to Solver:tvf = 1 only");
   if (rp->p0 > 0.0 && rp->eos_kind != VSPH_EQUATIONS_EOS_GAS)
     VSPH_FAIL(VSPH_EINVAL, "Solver:p0 applies to Solver:eos = gas only");
   if (rp->snapshots > rp->outputs)
@@ -180,13 +197,24 @@ static int check_cost(const struct vsph_run_props *rp,
               "Solver:eos = gas needs a confined scene (walls or periodic "
               "ends all round): at rho0 its pressure is p0 > 0, and a free "
               "surface would expand");
+  if (rp->tvf && !sc->walls.solid)
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:tvf = 1 needs a scene with wall particles (cavity), "
+              "not %s",
+              sc->type->name);
+  if (sc->walls.solid && rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR)
+    VSPH_FAIL(VSPH_EINVAL,
+              "the wall particles of %s need Solver:eos = linear (their "
+              "density is the linear law's)",
+              sc->type->name);
   if (rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR &&
       sc->body == VSPH_EQUATIONS_BODY_GRAVITY)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:eos = %s needs a scene without gravity (the ghosts' "
               "hydrostatic density follows the linear law)",
               rp->eos);
-  double dt = rp->cfl * h / (run_c0(rp, sc) + sc->U_max);
+  double dt =
+      (rp->tvf ? 0.25 : 1.0) * rp->cfl * h / (run_c0(rp, sc) + sc->U_max);
   const double nu = sc->mu / sc->rho0;
   if (nu > 0.0) dt = fmin(dt, 0.125 * h * h / nu);
   const double gmax = sc->body == VSPH_EQUATIONS_BODY_GRAVITY ? fabs(sc->g)
@@ -238,6 +266,10 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
   ip.eq.c0 = run_c0(rp, &r->scene);
   ip.eq.reduce = (int)rp->reduce;
   ip.eq.corr = rp->corr;
+  ip.walls.dx = r->dx;
+  ip.eq.tvf = (int)rp->tvf;
+  ip.eq.pb = rp->pb > 0.0 ? rp->pb : ip.eq.rho0 * ip.eq.c0 * ip.eq.c0;
+  if (rp->tvf && (st = vsph_particles_tvf_alloc(fluid))) goto fail;
   if (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS) { /* p = p0 rho/rho0 at t = 0 */
     if ((st = vsph_particles_energy_alloc(fluid))) goto fail;
     for (size_t i = 0; i < fluid->n; i++)

@@ -66,6 +66,8 @@ struct vsph_run_props {
   double p0;     /*!< gas law: reference pressure (Pa); 0: from c0 */
   size_t reduce; /*!< 1: Basa et al.'s local pressure reduction */
   char correction[VSPH_PARAMS_NAME_MAX]; /*!< none, shepard, bonetlok */
+  size_t tvf; /*!< 1: the transport-velocity scheme */
+  double pb;  /*!< its background pressure (Pa); 0: rho0 c0^2 */
   /* resolved by vsph_run_props_init */
   int eos_kind;                         /*!< vsph_equations_eos of eos */
   int corr;                             /*!< vsph_pair_corr of correction */

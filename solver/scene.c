@@ -11,12 +11,16 @@
 static const struct vsph_scene_type *const scene_table[] = {
     &vsph_vortex_patch_type,    &vsph_stretching_square_type,
     &vsph_standing_wave_type,   &vsph_channel_poiseuille_type,
-    &vsph_channel_couette_type,
+    &vsph_channel_couette_type, &vsph_cavity_type,
 };
 
 int vsph_scene_is_channel(const struct vsph_scene_type *type) {
   return type == &vsph_channel_poiseuille_type ||
          type == &vsph_channel_couette_type;
+}
+
+int vsph_scene_has_profile(const struct vsph_scene_type *type) {
+  return vsph_scene_is_channel(type) || type == &vsph_cavity_type;
 }
 
 size_t vsph_scene_count(void) {
@@ -66,6 +70,7 @@ int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
   ip->eq.g = sc->g;
   ip->eq.f = sc->f;
   ip->walls = sc->walls;
+  ip->eq.solid = sc->walls.solid;
   /* linear extrapolation [reconstructed]: the wall shear fitted to the
    * fluid within h of the wall and within h along it */
   ip->walls.band = h;

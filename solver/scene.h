@@ -75,6 +75,19 @@ struct vsph_scene_channel {
   int couette; /*!< 1: Couette (top wall at v0), 0: Poiseuille */
 };
 
+/** Lid-driven cavity (docs/theory.md, section 9): the unit square, the
+ *  lid y = L sliding at U from rest. */
+struct vsph_scene_cavity {
+  double L;     /*!< side (m) */
+  double U;     /*!< lid speed (m/s) */
+  double Re;    /*!< U L/nu */
+  double rho0;  /*!< reference density */
+  double c0;    /*!< sound speed (m/s); 0: THEORY 5's rule (10 U) */
+  double t_end; /*!< default end time (s) */
+  /* derived by the scene's setup */
+  double nu; /*!< kinematic viscosity U L/Re (m^2/s) */
+};
+
 struct vsph_scene;
 
 /** Scene descriptor. */
@@ -115,6 +128,7 @@ struct vsph_scene {
     struct vsph_scene_square square;   /*!< stretching-square */
     struct vsph_scene_wave wave;       /*!< standing-wave */
     struct vsph_scene_channel channel; /*!< poiseuille, couette */
+    struct vsph_scene_cavity cavity;   /*!< cavity */
   } u;
 };
 
@@ -123,10 +137,16 @@ extern const struct vsph_scene_type vsph_stretching_square_type;
 extern const struct vsph_scene_type vsph_standing_wave_type;
 extern const struct vsph_scene_type vsph_channel_poiseuille_type;
 extern const struct vsph_scene_type vsph_channel_couette_type;
+extern const struct vsph_scene_type vsph_cavity_type;
 
 /** @brief 1 if @p type is a channel (Poiseuille or Couette: a velocity
  *  profile with a series reference), else 0. */
 int vsph_scene_is_channel(const struct vsph_scene_type *type);
+
+/** @brief 1 if runs of @p type write a velocity profile (profile.csv) and
+ *  a velocity error: the channels (against their series) and the cavity
+ *  (its vertical centreline, against Ghia et al.), else 0. */
+int vsph_scene_has_profile(const struct vsph_scene_type *type);
 
 /** @brief Number of scenes. */
 size_t vsph_scene_count(void);

@@ -314,3 +314,97 @@ void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
     image(w, gh, p, where[gh->src[g]], i, gh->mask[g]);
   }
 }
+
+/* The box of a solid wall set: lo/hi per axis from its planes; 0 when an
+ * axis of the first dim lacks either end. */
+static int solid_box(const struct vsph_walls *w, int dim, double lo[3],
+                     double hi[3]) {
+  unsigned have = 0;
+  for (int q = 0; q < w->n; q++) {
+    if (w->kind[q] != VSPH_WALLS_MIRROR || w->axis[q] >= dim) continue;
+    const int a = w->axis[q], up = w->side[q] > 0;
+    if (up)
+      lo[a] = w->pos[q];
+    else
+      hi[a] = w->pos[q];
+    have |= 1u << (2 * a + up);
+  }
+  return have == (1u << (2 * dim)) - 1u;
+}
+
+/* Lattice counts: n[a] cells across the box, l layers beyond it. */
+static int solid_lattice(const struct vsph_walls *w, int dim, double dx,
+                         double reach, double lo[3], long n[3], long *l) {
+  double hi[3] = {0, 0, 0};
+  lo[0] = lo[1] = lo[2] = 0.0;
+  if (!solid_box(w, dim, lo, hi) || !(dx > 0.0)) return 0;
+  for (int a = 0; a < 3; a++)
+    n[a] = a < dim ? (long)nearbyint((hi[a] - lo[a]) / dx) : 1;
+  *l = (long)ceil(reach / dx - 1e-9);
+  return 1;
+}
+
+size_t vsph_walls_solid_count(const struct vsph_walls *w, int dim, double dx,
+                              double reach) {
+  double lo[3];
+  long n[3], l;
+  if (!solid_lattice(w, dim, dx, reach, lo, n, &l)) return 0;
+  size_t all = 1, in = 1;
+  for (int a = 0; a < dim; a++) {
+    all *= (size_t)(n[a] + 2 * l);
+    in *= (size_t)n[a];
+  }
+  return all - in;
+}
+
+int vsph_walls_solid_generate(const struct vsph_walls *w,
+                              struct vsph_particles *p, size_t n_fluid,
+                              double dx, double reach) {
+  const int dim = p->dim;
+  double lo[3];
+  long n[3], l;
+  if (!solid_lattice(w, dim, dx, reach, lo, n, &l))
+    VSPH_FAIL(VSPH_EINVAL, "solid walls need two planes on every axis");
+  const size_t count = vsph_walls_solid_count(w, dim, dx, reach);
+  if (p->n + count > p->cap)
+    VSPH_FAIL(VSPH_ENOMEM, "room for %zu wall particles exceeded", count);
+  const double vol = pow(dx, dim);
+  const long kz = dim > 2 ? n[2] + l : 1, jy = dim > 1 ? n[1] + l : 1;
+  size_t g = 0;
+  for (long k = dim > 2 ? -l : 0; k < kz; k++)
+    for (long j = dim > 1 ? -l : 0; j < jy; j++)
+      for (long i = -l; i < n[0] + l; i++) {
+        const long c[3] = {i, j, k};
+        int inside = 1;
+        for (int a = 0; a < dim; a++) inside &= c[a] >= 0 && c[a] < n[a];
+        if (inside) continue;
+        const size_t q = p->n++;
+        for (int a = 0; a < dim; a++) {
+          p->pos[a][q] = lo[a] + ((double)c[a] + 0.5) * dx;
+          p->vel[a][q] = 0.0;
+        }
+        p->m[q] = w->rho0 * vol;
+        p->rho[q] = w->rho0;
+        p->vol[q] = vol;
+        p->p[q] = 0.0;
+        p->drho[q] = 0.0;
+        p->id[q] = n_fluid + g++;
+      }
+  return VSPH_OK;
+}
+
+void vsph_walls_solid_velocity(const struct vsph_walls *w, int dim,
+                               const double x[3], double u[3]) {
+  u[0] = u[1] = u[2] = 0.0;
+  for (int q = 0; q < w->n; q++) {
+    if (w->kind[q] != VSPH_WALLS_MIRROR) continue;
+    const int a = w->axis[q];
+    const int behind = w->side[q] > 0 ? x[a] < w->pos[q] : x[a] > w->pos[q];
+    int moving = 0;
+    for (int k = 0; k < dim; k++) moving |= w->uw[q][k] != 0.0;
+    if (behind && moving) {
+      for (int k = 0; k < dim; k++) u[k] = w->uw[q][k];
+      return;
+    }
+  }
+}

@@ -61,7 +61,10 @@ struct vsph_walls {
   double band;                  /*!< linear: the nearest row, depth (m) */
   double window;                /*!< linear: half-width along the wall (m) */
   double g;                     /*!< gravity along -e_d for the correction */
-  double rho0, c0;              /*!< state equation for the ghost density */
+  int solid; /*!< 1: fixed wall particles (Adami et al. 2012) outside a box
+                  of mirror planes, not mirrored ghosts */
+  double dx; /*!< solid: their lattice spacing, the fluid's (m) */
+  double rho0, c0; /*!< state equation for the ghost density */
 };
 
 /** Ghost bookkeeping, owned by the caller (sized by vsph_walls_count). */
@@ -121,5 +124,32 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
 void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
                        size_t n_fluid, struct vsph_walls_ghosts *gh,
                        const size_t *where);
+
+/* Fixed wall particles (Adami, Hu & Adams 2012; docs/theory.md section 9).
+ * The planes of a solid wall set bound a box, two per axis: the fluid's
+ * lattice, spacing dx at (i + 1/2) dx from the box's low corner, continued
+ * outward by ceil(reach/dx) layers, every lattice point outside the box a
+ * wall particle (corners included), laid once; the equations give them
+ * their state from the fluid each evaluation
+ * (vsph_equations_walls_adami). */
+
+/** @brief How many wall particles vsph_walls_solid_generate lays, or 0 when
+ *  the planes do not bound a box in @p dim dimensions. */
+size_t vsph_walls_solid_count(const struct vsph_walls *w, int dim, double dx,
+                              double reach);
+
+/** @brief Append the wall particles (ids n_fluid + g, mass rho0 dx^d, at
+ *  rest, density rho0) behind the fluid.
+ *  @return VSPH_OK, VSPH_EINVAL (no box) or VSPH_ENOMEM (capacity). */
+int vsph_walls_solid_generate(const struct vsph_walls *w,
+                              struct vsph_particles *p, size_t n_fluid,
+                              double dx, double reach);
+
+/** @brief Prescribed velocity @p u of the wall particle at @p x: that of
+ *  the first moving plane (in the set's order) it lies behind, else 0. A
+ *  particle behind a moving plane moves with it, corners included, as in
+ *  Adami et al. (2013)'s cavity [reconstructed]. */
+void vsph_walls_solid_velocity(const struct vsph_walls *w, int dim,
+                               const double x[3], double u[3]);
 
 #endif /* VSPH_SOLVER_WALLS_H */

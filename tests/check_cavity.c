@@ -1,0 +1,164 @@
+/* The lid-driven cavity (issue 11): Ghia et al.'s tables against mass
+ * conservation, the wall particles' state (Adami et al. 2012) and the
+ * summation density against a direct lattice sum, the transport
+ * velocity's background push on a uniform lattice, and 1 against 2
+ * threads. */
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../analysis/references.h"
+#include "../common/params.h"
+#include "../kernels/kernel.h"
+#include "../solver/integrate.h"
+#include "../solver/particles.h"
+#include "../solver/run.h"
+#include "../solver/scene.h"
+#include "check_suites.h"
+
+/* The steady flow carries no net flux across either centreline: the
+ * trapezoid rule on Ghia et al.'s 17 points gives int u dy = int v dx = 0
+ * up to its own error on their uneven spacing (panels up to 0.17 L wide,
+ * max|u''| dy^2/12 each): measured 0.2 % to 4.0 % of int |u|. Bound 6 %:
+ * it catches a flipped sign, a value in the wrong row or a slip in the
+ * first decimal, not a slip in the fifth (the tables were compared with
+ * two public transcriptions by hand). */
+START_TEST(test_ghia_flux) {
+  static const double RE[3] = {100.0, 400.0, 1000.0};
+  struct vsph_references_ghia g;
+  ck_assert(vsph_references_ghia(RE[_i], &g));
+  ck_assert_uint_eq(g.n, 17);
+  double fu = 0, au = 0, fv = 0, av = 0;
+  for (size_t q = 0; q + 1 < g.n; q++) {
+    double d = g.y[q] - g.y[q + 1];
+    ck_assert_double_gt(d, 0.0);
+    fu += 0.5 * d * (g.u[q] + g.u[q + 1]);
+    au += 0.5 * d * (fabs(g.u[q]) + fabs(g.u[q + 1]));
+    d = g.x[q] - g.x[q + 1];
+    ck_assert_double_gt(d, 0.0);
+    fv += 0.5 * d * (g.v[q] + g.v[q + 1]);
+    av += 0.5 * d * (fabs(g.v[q]) + fabs(g.v[q + 1]));
+  }
+  ck_assert_double_lt(fabs(fu), 0.06 * au);
+  ck_assert_double_lt(fabs(fv), 0.06 * av);
+  /* the walls: u = U on the lid, 0 elsewhere */
+  ck_assert_double_eq(g.u[0], 1.0);
+  ck_assert_double_eq(g.u[16] + g.v[0] + g.v[16], 0.0);
+  ck_assert(!vsph_references_ghia(200.0, &g));
+}
+END_TEST
+
+/* A cavity run of res 16 (quintic, h = dx), with or without the
+ * transport velocity. */
+static struct vsph_run *cavity_run(int tvf) {
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:res", "16"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:kernel", "quintic"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:hdx", "1"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:visc", "meaf"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:tvf", tvf ? "1" : "0"), 0);
+  struct vsph_run_props rp;
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
+  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_cavity_type, prm), 0);
+  vsph_params_free(prm);
+  struct vsph_run *run = NULL;
+  ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+  return run;
+}
+
+/* On the initial lattice, the wall particles continue the fluid's lattice
+ * (three layers for the quintic's 3h), so every fluid particle's
+ * summation density is the infinite lattice's, rho0 dx^2 sum_(i,j) W,
+ * summed here directly; every fluid pressure is c0^2 (rho - rho0); a wall
+ * particle with fluid neighbours takes that same pressure (a Shepard
+ * average of equal values) and the velocity 2 u_w - u_f for a uniform
+ * fluid velocity u_f; one without keeps p = 0 and u_w. The background
+ * push sums to zero over a full symmetric lattice. Rounding: 1e-12. */
+START_TEST(test_cavity_wall_state) {
+  struct vsph_run *run = cavity_run(1);
+  struct vsph_integrate *s = run->integ;
+  struct vsph_particles *p = s->p;
+  const double uf[2] = {0.3, -0.2}, dx = run->dx, h = run->h;
+  const double U = run->scene.u.cavity.U, c2 = s->props.eq.c0 * s->props.eq.c0;
+  for (size_t i = 0; i < p->n; i++)
+    for (int k = 0; k < 2; k++) p->vel[k][i] = uf[k];
+  struct vsph_equations_energy en;
+  struct vsph_equations_budget b;
+  ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &b), 0);
+  double lat = 0.0;
+  for (int i = -4; i <= 4; i++)
+    for (int j = -4; j <= 4; j++)
+      lat += vsph_kernel_w(run->props.ktype, 2, hypot(i, j) * dx / h) / (h * h);
+  const double rho = s->props.eq.rho0 * dx * dx * lat, pf = c2 * (rho - 1.0);
+  ck_assert_double_gt(fabs(rho - 1.0), 1e-6); /* not trivially rho0 */
+  size_t nwall = 0, nlid = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] < s->n_fluid) {
+      ck_assert_double_eq_tol(p->rho[i], rho, 1e-12);
+      ck_assert_double_eq_tol(p->p[i], pf, 1e-12 * c2);
+      for (int k = 0; k < 2; k++)
+        ck_assert_double_eq_tol(p->bacc[k][i], 0.0, 1e-12 * s->props.eq.pb);
+      continue;
+    }
+    nwall++;
+    const double x = p->pos[0][i], y = p->pos[1][i];
+    const int lid = y > 1.0;
+    nlid += (size_t)lid;
+    /* within the support of a fluid particle? (the fluid fills [0, 1]^2
+     * at (i + 1/2) dx: the nearest one is at the clamped point) */
+    const double cx = fmin(fmax(x, 0.5 * dx), 1.0 - 0.5 * dx);
+    const double cy = fmin(fmax(y, 0.5 * dx), 1.0 - 0.5 * dx);
+    const int near = hypot(x - cx, y - cy) < 3.0 * h * (1 - 1e-9);
+    const double uw = lid ? U : 0.0;
+    ck_assert_double_eq_tol(p->p[i], near ? pf : 0.0, 1e-12 * c2);
+    ck_assert_double_eq_tol(p->vel[0][i], near ? 2 * uw - uf[0] : uw, 1e-12);
+    ck_assert_double_eq_tol(p->vel[1][i], near ? -uf[1] : 0.0, 1e-12);
+  }
+  /* 22^2 - 16^2 lattice points outside the square, 22 x 3 above the lid */
+  ck_assert_uint_eq(nwall, 22 * 22 - 16 * 16);
+  ck_assert_uint_eq(nlid, 22 * 3);
+  vsph_run_free(run);
+}
+END_TEST
+
+/* Gather form: 1 and 2 threads give the same bits after 20 steps of the
+ * transport-velocity scheme (wall state, summation, kick-drift-kick). */
+START_TEST(test_cavity_threads) {
+  double *state[2];
+  size_t n = 0;
+  for (int t = 0; t < 2; t++) {
+    omp_set_num_threads(t + 1);
+    struct vsph_run *run = cavity_run(1);
+    for (int k = 0; k < 20; k++) ck_assert_int_eq(vsph_run_iterate(run), 0);
+    ck_assert_int_eq(run->state, VSPH_RUN_RUNNING);
+    const struct vsph_particles *p = run->integ->p;
+    n = run->n_fluid;
+    state[t] = calloc(4 * n, sizeof(double));
+    for (size_t i = 0; i < p->n; i++) {
+      const size_t id = p->id[i];
+      if (id >= n) continue;
+      state[t][id] = p->pos[0][i];
+      state[t][n + id] = p->pos[1][i];
+      state[t][2 * n + id] = p->vel[0][i];
+      state[t][3 * n + id] = p->rho[i];
+    }
+    vsph_run_free(run);
+  }
+  ck_assert_int_eq(memcmp(state[0], state[1], 4 * n * sizeof(double)), 0);
+  free(state[0]);
+  free(state[1]);
+}
+END_TEST
+
+Suite *vsph_cavity_suite(void) {
+  Suite *s = suite_create("cavity");
+  TCase *tc = tcase_create("cavity");
+  tcase_set_timeout(tc, 60);
+  tcase_add_loop_test(tc, test_ghia_flux, 0, 3);
+  tcase_add_test(tc, test_cavity_wall_state);
+  tcase_add_test(tc, test_cavity_threads);
+  suite_add_tcase(s, tc);
+  return s;
+}
