@@ -596,27 +596,35 @@ size_t vsph_report_runs_baseline_count(void) {
          2 * VSPH_VISCOUS_FORM_COUNT + NCAVITY_BASE;
 }
 
-/* Cavity row j of the baseline. */
-static int cavity_baseline(struct vsph_report *R, size_t j,
-                           struct vsph_report_baseline *b) {
-  static const char *const tvf[] = {"Solver:kernel=quintic", "Solver:hdx=1",
-                                    "Solver:tvf=1", NULL};
-  struct vsph_report_runspec rs = {"cavity", CAVITY_BASE[j], 16, 1.0,
-                                   tvf,      "base"};
+/* A baseline row from the run of @p rs: its final E_k (relative to the
+ * reference when @p rel, else as it is), its final u_err and verdict. */
+static int velocity_row(struct vsph_report *R,
+                        const struct vsph_report_runspec *rs, int rel,
+                        struct vsph_report_baseline *b) {
   struct vsph_report_run r;
-  const int st = vsph_report_runs_get(R, &rs, &r);
+  const int st = vsph_report_runs_get(R, rs, &r);
   if (st) return st;
-  snprintf(b->scene, sizeof b->scene, "%s", rs.scene);
-  snprintf(b->visc, sizeof b->visc, "%s", rs.visc);
-  b->res = rs.res;
-  b->t_end = rs.t_end;
+  snprintf(b->scene, sizeof b->scene, "%s", rs->scene);
+  snprintf(b->visc, sizeof b->visc, "%s", rs->visc);
+  b->res = rs->res;
+  b->t_end = rs->t_end;
   const size_t last = r.nrow - 1;
   const double *ue = vsph_csv_column(r.energy, "u_err");
-  b->ek_final = r.Ek[last];
+  b->ek_final = rel ? (r.Ek[last] - r.Ekr[last]) / r.Ekr[last] : r.Ek[last];
   b->diss0 = ue ? ue[last] : (double)NAN;
   b->ok = r.ok;
   vsph_report_runs_free(&r);
   return VSPH_OK;
+}
+
+/* Cavity row j of the baseline (no E_k reference: E_k itself). */
+static int cavity_baseline(struct vsph_report *R, size_t j,
+                           struct vsph_report_baseline *b) {
+  static const char *const tvf[] = {"Solver:kernel=quintic", "Solver:hdx=1",
+                                    "Solver:tvf=1", NULL};
+  const struct vsph_report_runspec rs = {"cavity", CAVITY_BASE[j], 16, 1.0,
+                                         tvf,      "base"};
+  return velocity_row(R, &rs, 0, b);
 }
 
 /* Channel row j of the baseline. */
@@ -625,26 +633,13 @@ static int channel_baseline(struct vsph_report *R, size_t j,
   static const char *const basa[] = {VSPH_REPORT_BASA, NULL};
   const int c = (int)(j / VSPH_VISCOUS_FORM_COUNT);
   const int f = (int)(j % VSPH_VISCOUS_FORM_COUNT);
-  struct vsph_report_runspec rs = {CHANNEL_BASE[c].scene,
-                                   vsph_viscous_name(f),
-                                   CHANNEL_BASE[c].res,
-                                   CHANNEL_BASE[c].t_end,
-                                   basa,
-                                   "base"};
-  struct vsph_report_run r;
-  const int st = vsph_report_runs_get(R, &rs, &r);
-  if (st) return st;
-  snprintf(b->scene, sizeof b->scene, "%s", rs.scene);
-  snprintf(b->visc, sizeof b->visc, "%s", rs.visc);
-  b->res = rs.res;
-  b->t_end = rs.t_end;
-  const size_t last = r.nrow - 1;
-  const double *ue = vsph_csv_column(r.energy, "u_err");
-  b->ek_final = (r.Ek[last] - r.Ekr[last]) / r.Ekr[last];
-  b->diss0 = ue ? ue[last] : (double)NAN;
-  b->ok = r.ok;
-  vsph_report_runs_free(&r);
-  return VSPH_OK;
+  const struct vsph_report_runspec rs = {CHANNEL_BASE[c].scene,
+                                         vsph_viscous_name(f),
+                                         CHANNEL_BASE[c].res,
+                                         CHANNEL_BASE[c].t_end,
+                                         basa,
+                                         "base"};
+  return velocity_row(R, &rs, 1, b);
 }
 
 int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
