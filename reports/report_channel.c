@@ -421,6 +421,26 @@ static int figures(struct vsph_report *R, const struct chan *c) {
   }
   vsph_text_set(&R->tv, "title", "%s", title);
   if (!st) st = vsph_report_figure_say(R, &pl, "channel.fig_couette");
+  if (st) return st;
+  snprintf(title, sizeof title,
+           "Lid-driven cavity: RMS distance from Ghia et al.'s centrelines "
+           "over time");
+  vsph_plot_init(&pl, R->dir, "fig_cavity_ghia", title, "t (s)",
+                 "RMS distance / U");
+  pl.logy = 1;
+  for (int q = 0; q < (R->full ? NCAV : NCAV_QUICK) && !st; q++) {
+    if (!c->cav[q].ok) continue; /* the run without TVF: a few rows */
+    char file[600], style[96], label[64];
+    data_file(file, sizeof file, &c->cav[q]);
+    snprintf(label, sizeof label, "Re %d, %s, %zu x %zu", CAV_RE[q],
+             vsph_viscous_label(vsph_viscous_find(CAV_VISC[q])), CAV_RES[q],
+             CAV_RES[q]);
+    vsph_report_runs_style(style, sizeof style, q,
+                           CAV_RE[q] > 100 ? " dt 2" : "");
+    st = vsph_plot_add(&pl, file, "1:16", label, style);
+  }
+  vsph_text_set(&R->tv, "title", "%s", title);
+  if (!st) st = vsph_report_figure_say(R, &pl, "channel.fig_cavity");
   return st;
 }
 

@@ -44,6 +44,7 @@ static int buffers_alloc(struct vsph_integrate *s) {
     free(s->extra[f]);
     s->extra[f] = NULL;
   }
+  s->tvf_have = 0; /* the rates kept by id are gone with ks */
   const int corr = s->props.eq.corr != VSPH_PAIR_CORR_NONE;
   if ((vsph_viscous_first_pass(s->props.eq.visc.form) || corr) &&
       !(s->vws = vsph_viscous_ws_alloc(cap, d)))
@@ -200,32 +201,60 @@ static int rhs(struct vsph_integrate *s, int parts, size_t *nint,
   return st;
 }
 
+/* Keep the evaluation's a and a_b by particle id (ks[0..2d-1], which the
+ * transport-velocity step does not otherwise use): an energy row between
+ * steps evaluates again at another velocity and must not change them. */
+static void tvf_keep(struct vsph_integrate *s) {
+  const struct vsph_particles *p = s->p;
+  const int d = p->dim;
+  const size_t n = p->n, nf = s->n_fluid;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < n; i++) {
+    const size_t id = p->id[i];
+    if (id >= nf) continue;
+    for (int k = 0; k < d; k++) {
+      s->ks[k][id] = p->acc[k][i];
+      s->ks[d + k][id] = p->bacc[k][i];
+    }
+  }
+  s->tvf_have = 1;
+}
+
 /* The transport-velocity scheme (Adami, Hu & Adams 2013), kick-drift-kick
- * with the density by summation: u += dt/2 a; tvel = u + dt/2 bacc;
- * r += dt tvel; evaluate; u += dt/2 a. The first kick's rate is evaluated
- * afresh at the step's start (two evaluations a step), so an energy row
- * between steps cannot change the run [reconstructed: Adami et al. reuse
- * the last step's]. */
+ * with the density by summation: u += dt/2 a; tvel = u + dt/2 a_b;
+ * r += dt tvel; evaluate; u += dt/2 a. The first kick reuses the last
+ * step's evaluation, as Adami et al. do (one evaluation a step; the very
+ * first step evaluates at its start). */
 static int step_tvf(struct vsph_integrate *s, double dt) {
   struct vsph_particles *p = s->p;
   const int d = p->dim;
   size_t nint = 0;
   double min_s2 = INFINITY;
   int st;
-  for (int half = 0; half < 2; half++) {
+  if (!s->tvf_have) {
     if ((st = prepare(s, 0.0)) || (st = rhs(s, 0, &nint, &min_s2))) return st;
+    tvf_keep(s);
+  }
+  for (int half = 0; half < 2; half++) {
+    if (half && ((st = prepare(s, 0.0)) || (st = rhs(s, 0, &nint, &min_s2))))
+      return st;
     const size_t n = p->n, nf = s->n_fluid;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < n; i++) {
-      if (p->id[i] >= nf) continue;
+      const size_t id = p->id[i];
+      if (id >= nf) continue;
       for (int k = 0; k < d; k++) {
-        p->vel[k][i] += 0.5 * dt * p->acc[k][i];
-        if (half) continue;
-        p->tvel[k][i] = p->vel[k][i] + 0.5 * dt * p->bacc[k][i];
+        if (half) {
+          p->vel[k][i] += 0.5 * dt * p->acc[k][i];
+          continue;
+        }
+        p->vel[k][i] += 0.5 * dt * s->ks[k][id];
+        p->tvel[k][i] = p->vel[k][i] + 0.5 * dt * s->ks[d + k][id];
         p->pos[k][i] += dt * p->tvel[k][i];
       }
     }
   }
+  tvf_keep(s);
   s->t += dt;
   s->steps++;
   s->interactions = nint;

@@ -46,6 +46,8 @@ struct vsph_integrate {
   struct vsph_walls_ghosts *gh;
   size_t *where;
   double *y0[8], *ks[8], *extra[4]; /* RK fields: r, u, rho (, e) */
+  int tvf_have; /* the transport-velocity step: ks[0..2d-1] hold the last
+                   evaluation's a and a_b by particle id */
 };
 
 /** @brief Take ownership of the fluid set @p fluid (ids 0..n-1) and set up

@@ -124,14 +124,20 @@ START_TEST(test_cavity_wall_state) {
 END_TEST
 
 /* Gather form: 1 and 2 threads give the same bits after 20 steps of the
- * transport-velocity scheme (wall state, summation, kick-drift-kick). */
+ * transport-velocity scheme (wall state, summation, kick-drift-kick); and
+ * an energy row after every step (an evaluation at another velocity) does
+ * not change them: the step keeps its own rates. */
 START_TEST(test_cavity_threads) {
-  double *state[2];
+  double *state[3];
   size_t n = 0;
-  for (int t = 0; t < 2; t++) {
-    omp_set_num_threads(t + 1);
+  for (int t = 0; t < 3; t++) {
+    omp_set_num_threads(t == 1 ? 2 : 1);
     struct vsph_run *run = cavity_run(1);
-    for (int k = 0; k < 20; k++) ck_assert_int_eq(vsph_run_iterate(run), 0);
+    for (int k = 0; k < 20; k++) {
+      ck_assert_int_eq(vsph_run_iterate(run), 0);
+      struct vsph_run_row row;
+      if (t == 2) ck_assert_int_eq(vsph_run_row(run, &row), 0);
+    }
     ck_assert_int_eq(run->state, VSPH_RUN_RUNNING);
     const struct vsph_particles *p = run->integ->p;
     n = run->n_fluid;
@@ -147,8 +153,8 @@ START_TEST(test_cavity_threads) {
     vsph_run_free(run);
   }
   ck_assert_int_eq(memcmp(state[0], state[1], 4 * n * sizeof(double)), 0);
-  free(state[0]);
-  free(state[1]);
+  ck_assert_int_eq(memcmp(state[0], state[2], 4 * n * sizeof(double)), 0);
+  for (int t = 0; t < 3; t++) free(state[t]);
 }
 END_TEST
 
