@@ -17,7 +17,8 @@
 static const char *const CMD = "run";
 
 static const char ABOUT[] =
-    "Run the weakly compressible free-surface solver (classical RK4) on a\n"
+    "Run the weakly compressible free-surface solver (classical RK4; with\n"
+    "--tvf 1 the transport-velocity kick-drift-kick) on a\n"
     "scene (see vsph scenes). Parameters come from FILE (YAML subset:\n"
     "Solver: and Scene: sections), then --set, then the options; an\n"
     "unknown key is an error and nothing is written. Writes to DIR (default\n"

@@ -37,7 +37,8 @@ static const struct vsph_params_spec SOLVER[] = {
     VSPH_PARAMS_REAL_SPEC(P, t_end, 0.0, 0.0, 1e9,
                           "end time (s); 0: the scene's"),
     VSPH_PARAMS_REAL_SPEC(P, cfl, 1.0, 1e-3, 4.0,
-                          "Courant number of the RK4 time step"),
+                          "Courant number of the RK4 time step (tvf: dt = "
+                          "cfl/4 h/(c0 + |u|max))"),
     VSPH_PARAMS_REAL_SPEC(P, delta, 0.0, 0.0, 1.0,
                           "delta-SPH coefficient; 0: off (0.1 is usual)"),
     VSPH_PARAMS_REAL_SPEC(P, rho_band, 0.2, 1e-6, 10.0,
