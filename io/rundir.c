@@ -112,8 +112,8 @@ static int write_run_json(const struct vsph_run *run,
  * status is gone, nothing can call the new files ok). */
 static int is_run_file(const char *name) {
   static const char *const exact[] = {
-      "run.json",    "energy.csv",          "snapshots.pvd",
-      "profile.csv", "used_parameters.yml", "key.txt"};
+      "run.json",       "energy.csv",          "snapshots.pvd", "profile.csv",
+      "centreline.csv", "used_parameters.yml", "key.txt"};
   for (size_t k = 0; k < sizeof exact / sizeof exact[0]; k++)
     if (!strcmp(name, exact[k])) return 1;
   const size_t n = strlen(name);

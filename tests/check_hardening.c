@@ -216,6 +216,18 @@ START_TEST(test_reused_folder) {
   ck_assert_msg(!exists(path), "a snapshot of the earlier run stayed");
   snprintf(path, sizeof path, "%s/r/notes.txt", dir);
   ck_assert(exists(path));
+  /* the cavity's centreline table goes too when the rerun writes none */
+  snprintf(args, sizeof args,
+           "run cavity --tvf 1 --res 8 --t-end 0.01 --out %s/c --quiet", dir);
+  ck_assert_int_eq(vsph_test_cli(args)->status, 0);
+  snprintf(path, sizeof path, "%s/c/centreline.csv", dir);
+  ck_assert(exists(path));
+  snprintf(args, sizeof args,
+           "run cavity --tvf 1 --res 8 --t-end 0.01 --out %s/c --quiet "
+           "--set Solver:snapshots=0",
+           dir);
+  ck_assert_int_eq(vsph_test_cli(args)->status, 0);
+  ck_assert_msg(!exists(path), "the earlier run's centreline.csv stayed");
   /* a folder of someone else's */
   snprintf(path, sizeof path, "%s/other", dir);
   ck_assert_int_eq(mkdir(path, 0777), 0);
