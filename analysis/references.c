@@ -480,6 +480,19 @@ void vsph_references_shepard(const struct vsph_particles *p, size_t n_fluid,
   for (int a = 0; a < 3; a++) u[a] = a < d && S > 0.0 ? su[a] / S : (double)NAN;
 }
 
+double vsph_references_cavity_point(
+    const struct vsph_scene_cavity *cv, const struct vsph_references_ghia *g,
+    int line, size_t q, const struct vsph_particles *p, size_t n_fluid,
+    const struct vsph_kernel_type *k, double h, double *sph, double *ref) {
+  const double s = (line ? g->x[q] : g->y[q]) * cv->L;
+  double x[3] = {0.5 * cv->L, 0.5 * cv->L, 0.0}, u[3];
+  x[line ? 0 : 1] = s;
+  vsph_references_shepard(p, n_fluid, k, h, x, u);
+  *sph = u[line];
+  *ref = (line ? g->v[q] : g->u[q]) * cv->U;
+  return s;
+}
+
 void vsph_references_cavity_error(const struct vsph_scene *sc,
                                   const struct vsph_particles *p,
                                   size_t n_fluid,
@@ -494,10 +507,10 @@ void vsph_references_cavity_error(const struct vsph_scene *sc,
   size_t n = 0;
   for (size_t q = 1; q + 1 < g.n; q++) /* the walls' own points left out */
     for (int line = 0; line < 2; line++) {
-      double x[3] = {0.5 * cv->L, 0.5 * cv->L, 0.0}, u[3];
-      x[line ? 0 : 1] = (line ? g.x[q] : g.y[q]) * cv->L;
-      vsph_references_shepard(p, n_fluid, k, h, x, u);
-      const double err = (line ? u[1] - g.v[q] * cv->U : u[0] - g.u[q] * cv->U);
+      double sph, ref;
+      vsph_references_cavity_point(cv, &g, line, q, p, n_fluid, k, h, &sph,
+                                   &ref);
+      const double err = sph - ref;
       s2 += err * err;
       mx = fmax(mx, fabs(err));
       n++;

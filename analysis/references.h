@@ -64,6 +64,7 @@ void vsph_references_vortex_energy_series(
 struct vsph_scene;
 struct vsph_scene_wave;
 struct vsph_scene_channel;
+struct vsph_scene_cavity;
 struct vsph_particles;
 struct vsph_kernel_type;
 
@@ -137,6 +138,16 @@ int vsph_references_ghia(double Re, struct vsph_references_ghia *g);
 void vsph_references_shepard(const struct vsph_particles *p, size_t n_fluid,
                              const struct vsph_kernel_type *k, double h,
                              const double x[3], double u[3]);
+
+/** @brief Point @p q of Ghia et al.'s centreline @p line of the cavity
+ *  @p cv (0: u on x = L/2 at their y_q; 1: v on y = L/2 at their x_q):
+ *  the SPH velocity there (vsph_references_shepard) into @p sph and
+ *  their value into @p ref (m/s). @return the point's position along the
+ *  line (m). */
+double vsph_references_cavity_point(
+    const struct vsph_scene_cavity *cv, const struct vsph_references_ghia *g,
+    int line, size_t q, const struct vsph_particles *p, size_t n_fluid,
+    const struct vsph_kernel_type *k, double h, double *sph, double *ref);
 
 /** @brief The cavity's distance from Ghia et al. at its Re: the velocity
  *  (Shepard average, vsph_references_shepard) at their interior points of

@@ -173,7 +173,9 @@ static int prepare_dir(const char *dir) {
 struct outputs {
   const char *dir;
   FILE *csv;
-  FILE *profile; /* channels: profile.csv at each snapshot */
+  FILE *profile; /* at each snapshot: channels' profile.csv, the cavity's
+                    centreline.csv */
+  const char *profile_name; /* which of the two */
   struct vsph_vtk_pvd pvd;
   size_t nsnap;
   char error[1200]; /* the write that failed, for run.json */
@@ -257,7 +259,7 @@ static int write_profile(struct outputs *o, const struct vsph_run *run) {
   for (size_t k = 0; k < nb && !st; k++)
     fprintf(o->profile, "%.10g,%.10e,%.10e,%.10e,%zu\n", run->integ->t, buf[k],
             buf[nb + k], buf[2 * nb + k], cnt[k]);
-  if (!st) st = live_flush(o, o->profile, "profile.csv");
+  if (!st) st = live_flush(o, o->profile, o->profile_name);
   free(buf);
   free(cnt);
   return st;
@@ -274,16 +276,14 @@ static int write_centreline(struct outputs *o, const struct vsph_run *run) {
   errno = 0;
   for (int line = 0; line < 2; line++)
     for (size_t q = 0; q < g.n; q++) {
-      const double s = line ? g.x[q] : g.y[q];
-      double x[3] = {0.5 * cv->L, 0.5 * cv->L, 0.0}, u[3];
-      x[line ? 0 : 1] = s * cv->L;
-      vsph_references_shepard(run->integ->p, run->n_fluid, run->props.ktype,
-                              run->h, x, u);
-      const double ref = have ? (line ? g.v[q] : g.u[q]) * cv->U : (double)NAN;
+      double sph, ref;
+      const double s = vsph_references_cavity_point(
+          cv, &g, line, q, run->integ->p, run->n_fluid, run->props.ktype,
+          run->h, &sph, &ref);
       fprintf(o->profile, "%.10g,%s,%.10e,%.10e,%.10e\n", run->integ->t,
-              line ? "v(x)" : "u(y)", s * cv->L, u[line], ref);
+              line ? "v(x)" : "u(y)", s, sph, have ? ref : (double)NAN);
     }
-  return live_flush(o, o->profile, "centreline.csv");
+  return live_flush(o, o->profile, o->profile_name);
 }
 
 static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
@@ -391,12 +391,12 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
                     &st);
   if (st) goto done;
   if (rp.snapshots > 0 && (st = vsph_vtk_pvd_open(&o.pvd, res->dir))) goto done;
-  if (rp.snapshots > 0 && vsph_scene_is_channel(type) &&
-      !(o.profile = live_open(&o, "profile.csv", "t,y,u,u_ref,n\n", &st)))
-    goto done;
-  if (rp.snapshots > 0 && type == &vsph_cavity_type &&
-      !(o.profile =
-            live_open(&o, "centreline.csv", "t,line,s,vel,vel_ghia\n", &st)))
+  const int cavity = type == &vsph_cavity_type;
+  o.profile_name = cavity ? "centreline.csv" : "profile.csv";
+  if (rp.snapshots > 0 && (cavity || vsph_scene_is_channel(type)) &&
+      !(o.profile = live_open(
+            &o, o.profile_name,
+            cavity ? "t,line,s,vel,vel_ghia\n" : "t,y,u,u_ref,n\n", &st)))
     goto done;
   res->n_particles = run->n_fluid;
   res->h = run->h;
@@ -418,9 +418,7 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   res->t = vsph_run_time(run);
   res->pairs = run->pairs;
   st = live_close(&o, &o.csv, "energy.csv", st);
-  st = live_close(&o, &o.profile,
-                  type == &vsph_cavity_type ? "centreline.csv" : "profile.csv",
-                  st);
+  st = live_close(&o, &o.profile, o.profile_name, st);
   if (o.pvd.f) {
     const int c = vsph_vtk_pvd_close(&o.pvd);
     if (c && !o.error[0])

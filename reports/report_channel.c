@@ -173,30 +173,46 @@ static void map_settings(void) {
  * and 30, MGF and Cleary's D (xi = 4.24) at 30, MEAF without the transport
  * velocity; Re 1000 to 30 s at 30. FULL adds MEAF at 50 x 50: Re 100, 400
  * (20 s) and 1000 (30 s). */
-#define NCAV 9
-#define NCAV_QUICK 6
-static const char *const CAV_VISC[NCAV] = {
-    "meaf", "meaf", "mgf", "cleary", "meaf", "meaf", "meaf", "meaf", "meaf"};
-static const size_t CAV_RES[NCAV] = {20, 30, 30, 30, 30, 30, 50, 50, 50};
-static const double CAV_T[NCAV] = {10, 10, 10, 10, 10, 30, 10, 20, 30};
-static const int CAV_RE[NCAV] = {100, 100, 100, 100, 100, 1000, 100, 400, 1000};
-static const char *const CAV_TAG[NCAV] = {"tvf", "tvf",      "tvf",
-                                          "tvf", "plain",    "tvfRe1000",
-                                          "tvf", "tvfRe400", "tvfRe1000"};
-static const char *const CAV_TVF[] = {"Solver:kernel=quintic", "Solver:hdx=1",
-                                      "Solver:tvf=1", NULL};
-static const char *const CAV_D[] = {"Solver:kernel=quintic", "Solver:hdx=1",
-                                    "Solver:tvf=1", "Solver:xi=4.24", NULL};
-static const char *const CAV_PLAIN[] = {"Solver:kernel=quintic", "Solver:hdx=1",
-                                        NULL};
-static const char *const CAV_RE400[] = {"Solver:kernel=quintic", "Solver:hdx=1",
-                                        "Solver:tvf=1", "Scene:Re=400", NULL};
-static const char *const CAV_RE1000[] = {"Solver:kernel=quintic",
-                                         "Solver:hdx=1", "Solver:tvf=1",
+static const char *const CAV_TVF[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1", NULL};
+static const char *const CAV_D[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1",
+                                    "Solver:xi=4.24", NULL};
+static const char *const CAV_PLAIN[] = {VSPH_REPORT_ADAMI, NULL};
+static const char *const CAV_RE400[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1",
+                                        "Scene:Re=400", NULL};
+static const char *const CAV_RE1000[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1",
                                          "Scene:Re=1000", NULL};
-static const char *const *const CAV_XTRA[NCAV] = {
-    CAV_TVF,    CAV_TVF, CAV_TVF,   CAV_D,     CAV_PLAIN,
-    CAV_RE1000, CAV_TVF, CAV_RE400, CAV_RE1000};
+/* the runs, by the role the claims give them; FULL's after CAV_QUICK */
+enum {
+  CAV_E20,
+  CAV_E30,
+  CAV_MGF30,
+  CAV_D30,
+  CAV_PLAIN30,
+  CAV_E1000,
+  CAV_QUICK,
+  CAV_E50 = CAV_QUICK,
+  CAV_E400_50,
+  CAV_E1000_50,
+  NCAV
+};
+static const struct {
+  const char *visc;
+  size_t res;
+  double t_end;            /* s */
+  int Re;                  /* U L/nu */
+  const char *tag;         /* folder suffix */
+  const char *const *xtra; /* settings */
+} CAV[NCAV] = {
+    [CAV_E20] = {"meaf", 20, 10, 100, "tvf", CAV_TVF},
+    [CAV_E30] = {"meaf", 30, 10, 100, "tvf", CAV_TVF},
+    [CAV_MGF30] = {"mgf", 30, 10, 100, "tvf", CAV_TVF},
+    [CAV_D30] = {"cleary", 30, 10, 100, "tvf", CAV_D},
+    [CAV_PLAIN30] = {"meaf", 30, 10, 100, "plain", CAV_PLAIN},
+    [CAV_E1000] = {"meaf", 30, 30, 1000, "tvfRe1000", CAV_RE1000},
+    [CAV_E50] = {"meaf", 50, 10, 100, "tvf", CAV_TVF},
+    [CAV_E400_50] = {"meaf", 50, 20, 400, "tvfRe400", CAV_RE400},
+    [CAV_E1000_50] = {"meaf", 50, 30, 1000, "tvfRe1000", CAV_RE1000},
+};
 
 /* t* = t pi^2 nu/(4 d^2) for Basa's channel (W = 1, nu = 1) */
 static const double TSTAR = M_PI * M_PI;
@@ -247,9 +263,10 @@ static void specs(const struct vsph_report *R, struct vsph_report_runspec *s,
       s[k++] = (struct vsph_report_runspec){
           "poiseuille",      MAP_VISC[f],         res_m,
           TSTAR_END / TSTAR, map_xtra[f][col[q]], MAP_TAG[col[q]]};
-  for (int q = 0; q < (R->full ? NCAV : NCAV_QUICK); q++)
-    s[k++] = (struct vsph_report_runspec){"cavity", CAV_VISC[q], CAV_RES[q],
-                                          CAV_T[q], CAV_XTRA[q], CAV_TAG[q]};
+  for (int q = 0; q < (R->full ? NCAV : CAV_QUICK); q++)
+    s[k++] =
+        (struct vsph_report_runspec){"cavity",     CAV[q].visc, CAV[q].res,
+                                     CAV[q].t_end, CAV[q].xtra, CAV[q].tag};
   *n = k; /* k <= NSPECS: the loops above are NSPECS at most */
 }
 
@@ -283,7 +300,7 @@ static int load(struct vsph_report *R, struct chan *c) {
   for (int f = 0; f < NMAP && !st; f++)
     for (int q = 0; q < nre && !st; q++)
       st = vsph_report_runs_get(R, &s[k++], &c->map[f][col[q]]);
-  for (int q = 0; q < (R->full ? NCAV : NCAV_QUICK) && !st; q++)
+  for (int q = 0; q < (R->full ? NCAV : CAV_QUICK) && !st; q++)
     st = vsph_report_runs_get(R, &s[k++], &c->cav[q]);
   return st;
 }
@@ -428,15 +445,15 @@ static int figures(struct vsph_report *R, const struct chan *c) {
   vsph_plot_init(&pl, R->dir, "fig_cavity_ghia", title, "t (s)",
                  "RMS distance / U");
   pl.logy = 1;
-  for (int q = 0; q < (R->full ? NCAV : NCAV_QUICK) && !st; q++) {
+  for (int q = 0; q < (R->full ? NCAV : CAV_QUICK) && !st; q++) {
     if (!c->cav[q].ok) continue; /* the run without TVF: a few rows */
     char file[600], style[96], label[64];
     data_file(file, sizeof file, &c->cav[q]);
-    snprintf(label, sizeof label, "Re %d, %s, %zu x %zu", CAV_RE[q],
-             vsph_viscous_label(vsph_viscous_find(CAV_VISC[q])), CAV_RES[q],
-             CAV_RES[q]);
+    snprintf(label, sizeof label, "Re %d, %s, %zu x %zu", CAV[q].Re,
+             vsph_viscous_label(vsph_viscous_find(CAV[q].visc)), CAV[q].res,
+             CAV[q].res);
     vsph_report_runs_style(style, sizeof style, q,
-                           CAV_RE[q] > 100 ? " dt 2" : "");
+                           CAV[q].Re > 100 ? " dt 2" : "");
     st = vsph_plot_add(&pl, file, "1:16", label, style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);
@@ -559,11 +576,11 @@ int vsph_report_channel_write(struct vsph_report *R) {
   fprintf(R->md, "\n");
   if ((st = vsph_report_say(R, "channel.couette_reading"))) goto done;
   if ((st = vsph_report_say(R, "channel.cavity_head"))) goto done;
-  for (int q = 0; q < (R->full ? NCAV : NCAV_QUICK); q++) {
+  for (int q = 0; q < (R->full ? NCAV : CAV_QUICK); q++) {
     const struct vsph_report_run *r = &c.cav[q];
-    fprintf(R->md, "| %d | %s | %s | %zu |", CAV_RE[q],
-            vsph_viscous_label(vsph_viscous_find(CAV_VISC[q])),
-            CAV_XTRA[q] == CAV_PLAIN ? "no" : "yes", CAV_RES[q]);
+    fprintf(R->md, "| %d | %s | %s | %zu |", CAV[q].Re,
+            vsph_viscous_label(vsph_viscous_find(CAV[q].visc)),
+            CAV[q].xtra == CAV_PLAIN ? "no" : "yes", CAV[q].res);
     if (r->ok)
       fprintf(R->md, " yes |");
     else
@@ -863,14 +880,14 @@ int vsph_report_channel_claims(struct vsph_report *R) {
   /* the cavity at Re 100: the finest quick run's distance from Ghia et
    * al. (RMS over both centrelines' 30 interior points, last fifth of the
    * run), and D against E at the same resolution */
-  const double eE = cavity_mean(&c.cav[1], "u_err"),
-               mE = cavity_mean(&c.cav[1], "u_err_rel"),
-               eD = cavity_mean(&c.cav[3], "u_err");
+  const double eE = cavity_mean(&c.cav[CAV_E30], "u_err"),
+               mE = cavity_mean(&c.cav[CAV_E30], "u_err_rel"),
+               eD = cavity_mean(&c.cav[CAV_D30], "u_err");
   snprintf(ours, sizeof ours,
            "Re 100, 30 x 30, t = 8-10 s, transport-velocity scheme: E RMS "
            "%.1f %% of U (largest %.1f %%); D (4.24) %.1f %%; without the "
            "transport velocity E stops at t = %.2g s",
-           100 * eE, 100 * mE, 100 * eD, c.cav[4].t_unstable);
+           100 * eE, 100 * mE, 100 * eD, c.cav[CAV_PLAIN30].t_unstable);
   if (!st)
     st = vsph_report_claim(
         R,
@@ -890,16 +907,16 @@ int vsph_report_channel_claims(struct vsph_report *R) {
         "D slightly better than E", ours,
         eD <= eE ? "reproduced" : "differs: E is closer to Ghia here");
   /* Re 1000: Basa et al. compare at t = 80 s; the quick run stops at 30 */
-  const double e1 = cavity_mean(&c.cav[5], "u_err"),
-               m1 = cavity_mean(&c.cav[5], "u_err_rel");
+  const double e1 = cavity_mean(&c.cav[CAV_E1000], "u_err"),
+               m1 = cavity_mean(&c.cav[CAV_E1000], "u_err_rel");
   snprintf(ours, sizeof ours,
            "Re 1000, 30 x 30, E, t = 24-30 s: RMS %.1f %% of U, largest %.1f "
            "%%; E_k %.4f at 30 s",
-           100 * e1, 100 * m1, final(&c.cav[5], "Ek"));
+           100 * e1, 100 * m1, final(&c.cav[CAV_E1000], "Ek"));
   char v1000[160];
-  if (!c.cav[5].ok)
+  if (!c.cav[CAV_E1000].ok)
     snprintf(v1000, sizeof v1000, "differs: the run stopped at t = %.3g s",
-             c.cav[5].t_unstable);
+             c.cav[CAV_E1000].t_unstable);
   else if (e1 < 0.05)
     snprintf(v1000, sizeof v1000, "reproduced");
   else

@@ -122,6 +122,8 @@ int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
 /* Basa et al.'s kernel settings (cubic spline, dx/h = 0.637), as a
  * runspec's extra settings: the channel part and the channel baseline. */
 #define VSPH_REPORT_BASA "Solver:kernel=cubic", "Solver:hdx=1.5699"
+/* Adami et al.'s kernel for the cavity: the quintic spline with h = dx */
+#define VSPH_REPORT_ADAMI "Solver:kernel=quintic", "Solver:hdx=1"
 
 struct vsph_report_runspec {
   const char *scene;        /* scene name */

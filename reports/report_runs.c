@@ -620,8 +620,7 @@ static int velocity_row(struct vsph_report *R,
 /* Cavity row j of the baseline (no E_k reference: E_k itself). */
 static int cavity_baseline(struct vsph_report *R, size_t j,
                            struct vsph_report_baseline *b) {
-  static const char *const tvf[] = {"Solver:kernel=quintic", "Solver:hdx=1",
-                                    "Solver:tvf=1", NULL};
+  static const char *const tvf[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1", NULL};
   const struct vsph_report_runspec rs = {"cavity", CAVITY_BASE[j], 16, 1.0,
                                          tvf,      "base"};
   return velocity_row(R, &rs, 0, b);

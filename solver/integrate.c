@@ -87,9 +87,19 @@ struct vsph_integrate *vsph_integrate_alloc(
   }
   s->props = *ip;
   s->n_fluid = fluid->n;
-  /* wall particles continue the fluid's lattice: its spacing, unless set */
-  if (ip->walls.solid && !(ip->walls.dx > 0.0) && fluid->n > 0)
-    s->props.walls.dx = pow(fluid->vol[0], 1.0 / fluid->dim);
+  /* wall particles continue the fluid's lattice, spacing dx = V^(1/d);
+   * a fluid particle has escaped once it passes their first row, dx/2
+   * behind the wall (the scene's box is the walls) */
+  if (ip->walls.solid && fluid->n > 0) {
+    const double v = fluid->vol[0], dx = fluid->dim == 1   ? v
+                                         : fluid->dim == 2 ? sqrt(v)
+                                                           : cbrt(v);
+    s->props.walls.dx = dx;
+    for (int a = 0; a < fluid->dim; a++) {
+      s->props.box_lo[a] -= 0.5 * dx;
+      s->props.box_hi[a] += 0.5 * dx;
+    }
+  }
   for (size_t i = 0; i < fluid->n; i++) fluid->id[i] = i;
   s->p = fluid; /* taken; the ghosts, if any, grow it in prepare */
   if (!(s->cells = vsph_cells_alloc()) || buffers_alloc(s)) {
@@ -201,11 +211,13 @@ static int rhs(struct vsph_integrate *s, int parts, size_t *nint,
   return st;
 }
 
-/* Keep the evaluation's a and a_b by particle id (ks[0..2d-1], which the
- * transport-velocity step does not otherwise use): an energy row between
- * steps evaluates again at another velocity and must not change them. */
-static void tvf_keep(struct vsph_integrate *s) {
-  const struct vsph_particles *p = s->p;
+/* After an evaluation: the closing kick u += kick a (kick 0 after the
+ * very first evaluation), and the evaluation's a and a_b kept by particle
+ * id in ks[0..2d-1] (which this step does not otherwise use): an energy
+ * row between steps evaluates again at another velocity and must not
+ * change the next step's opening kick. */
+static void tvf_close(struct vsph_integrate *s, double kick) {
+  struct vsph_particles *p = s->p;
   const int d = p->dim;
   const size_t n = p->n, nf = s->n_fluid;
 #pragma omp parallel for schedule(static)
@@ -213,6 +225,7 @@ static void tvf_keep(struct vsph_integrate *s) {
     const size_t id = p->id[i];
     if (id >= nf) continue;
     for (int k = 0; k < d; k++) {
+      p->vel[k][i] += kick * p->acc[k][i];
       s->ks[k][id] = p->acc[k][i];
       s->ks[d + k][id] = p->bacc[k][i];
     }
@@ -222,7 +235,7 @@ static void tvf_keep(struct vsph_integrate *s) {
 
 /* The transport-velocity scheme (Adami, Hu & Adams 2013), kick-drift-kick
  * with the density by summation: u += dt/2 a; tvel = u + dt/2 a_b;
- * r += dt tvel; evaluate; u += dt/2 a. The first kick reuses the last
+ * r += dt tvel; evaluate; u += dt/2 a. The opening kick reuses the last
  * step's evaluation, as Adami et al. do (one evaluation a step; the very
  * first step evaluates at its start). */
 static int step_tvf(struct vsph_integrate *s, double dt) {
@@ -233,28 +246,21 @@ static int step_tvf(struct vsph_integrate *s, double dt) {
   int st;
   if (!s->tvf_have) {
     if ((st = prepare(s, 0.0)) || (st = rhs(s, 0, &nint, &min_s2))) return st;
-    tvf_keep(s);
+    tvf_close(s, 0.0);
   }
-  for (int half = 0; half < 2; half++) {
-    if (half && ((st = prepare(s, 0.0)) || (st = rhs(s, 0, &nint, &min_s2))))
-      return st;
-    const size_t n = p->n, nf = s->n_fluid;
+  const size_t n = p->n, nf = s->n_fluid;
 #pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < n; i++) {
-      const size_t id = p->id[i];
-      if (id >= nf) continue;
-      for (int k = 0; k < d; k++) {
-        if (half) {
-          p->vel[k][i] += 0.5 * dt * p->acc[k][i];
-          continue;
-        }
-        p->vel[k][i] += 0.5 * dt * s->ks[k][id];
-        p->tvel[k][i] = p->vel[k][i] + 0.5 * dt * s->ks[d + k][id];
-        p->pos[k][i] += dt * p->tvel[k][i];
-      }
+  for (size_t i = 0; i < n; i++) {
+    const size_t id = p->id[i];
+    if (id >= nf) continue;
+    for (int k = 0; k < d; k++) {
+      p->vel[k][i] += 0.5 * dt * s->ks[k][id];
+      p->tvel[k][i] = p->vel[k][i] + 0.5 * dt * s->ks[d + k][id];
+      p->pos[k][i] += dt * p->tvel[k][i];
     }
   }
-  tvf_keep(s);
+  if ((st = prepare(s, 0.0)) || (st = rhs(s, 0, &nint, &min_s2))) return st;
+  tvf_close(s, 0.5 * dt);
   s->t += dt;
   s->steps++;
   s->interactions = nint;

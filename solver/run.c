@@ -267,14 +267,6 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
   ip.eq.c0 = run_c0(rp, &r->scene);
   ip.eq.reduce = (int)rp->reduce;
   ip.eq.corr = rp->corr;
-  ip.walls.dx = r->dx;
-  /* wall particles: a fluid particle has escaped once it passes the first
-   * row of them, dx/2 behind the wall (the scene's box is the walls) */
-  if (r->scene.walls.solid)
-    for (int a = 0; a < r->scene.dim; a++) {
-      ip.box_lo[a] -= 0.5 * r->dx;
-      ip.box_hi[a] += 0.5 * r->dx;
-    }
   ip.eq.tvf = (int)rp->tvf;
   ip.eq.pb = rp->pb > 0.0 ? rp->pb : ip.eq.rho0 * ip.eq.c0 * ip.eq.c0;
   if (rp->tvf && (st = vsph_particles_tvf_alloc(fluid))) goto fail;

@@ -63,7 +63,8 @@ struct vsph_walls {
   double g;                     /*!< gravity along -e_d for the correction */
   int solid; /*!< 1: fixed wall particles (Adami et al. 2012) outside a box
                   of mirror planes, not mirrored ghosts */
-  double dx; /*!< solid: their lattice spacing, the fluid's (m) */
+  double dx; /*!< solid: their lattice spacing, the fluid's (m); set by
+                  vsph_integrate_alloc from the fluid's volume */
   double rho0, c0; /*!< state equation for the ghost density */
 };
 

@@ -59,8 +59,8 @@ static int setup(struct vsph_scene *sc) {
                           .c0 = sc->c0};
   wl.uw[3][0] = cv->U;
   sc->walls = wl;
-  for (int a = 0; a < 2; a++) { /* the run widens it by dx/2: the first
-                                   row of wall particles */
+  for (int a = 0; a < 2; a++) { /* the integrator widens it by dx/2: the
+                                   first row of wall particles */
     sc->box_lo[a] = 0.0;
     sc->box_hi[a] = L;
   }
