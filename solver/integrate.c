@@ -386,7 +386,7 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
 /* Bytes of the integrator's buffers for particle capacity cap in d
  * dimensions, cell scratch for cap_n particles and cap_cells cells. */
 static size_t layout_bytes(size_t d, size_t cap, size_t cap_n, size_t cap_cells,
-                           int ws, int ghosts) {
+                           int ws, int ghosts, int tvf) {
   /* the fields, the gas law's e and de counted (an upper bound) */
   size_t b = cap * (3 * d + 7) * sizeof(double) + cap * sizeof(size_t);
   b += cap_n * (3 * sizeof(size_t) + sizeof(double));
@@ -395,6 +395,7 @@ static size_t layout_bytes(size_t d, size_t cap, size_t cap_n, size_t cap_cells,
   if (ws >= 1) b += cap * (d * d + 1) * sizeof(double) + cap;
   if (ws >= 2) b += cap * (1 + d + d * d) * sizeof(double);
   if (ghosts) b += cap * (sizeof(size_t) + sizeof(unsigned));
+  if (tvf) b += cap * 2 * d * sizeof(double);            /* tvel, bacc */
   b += cap * sizeof(size_t);                             /* where */
   b += cap * (2 * (2 * d + 2) + d + 1) * sizeof(double); /* RK, extra */
   return b;
@@ -403,16 +404,16 @@ static size_t layout_bytes(size_t d, size_t cap, size_t cap_n, size_t cap_cells,
 size_t vsph_integrate_bytes(const struct vsph_integrate *s) {
   return layout_bytes((size_t)s->p->dim, s->p->cap, s->cells->cap_n,
                       s->cells->cap_cells, s->vws ? (s->vws->S ? 2 : 1) : 0,
-                      s->gh != NULL);
+                      s->gh != NULL, s->p->tvel[0] != NULL);
 }
 
 double vsph_integrate_bytes_estimate(int dim, double n_fluid, double n_ghosts,
-                                     int ws) {
+                                     int ws, int tvf) {
   /* the capacity reserve() grows to, and the most cells vsph_cells_build
    * makes (8 per particle + 4096) */
   const int walls = n_ghosts > 0.0;
   const double n = n_fluid + n_ghosts;
   const double cap = walls ? n + n / 8 + 64 : n + 8;
-  const double per = (double)layout_bytes((size_t)dim, 1, 1, 8, ws, walls);
+  const double per = (double)layout_bytes((size_t)dim, 1, 1, 8, ws, walls, tvf);
   return cap * per + 4096.0 * 2 * sizeof(size_t);
 }

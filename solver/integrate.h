@@ -86,9 +86,10 @@ size_t vsph_integrate_bytes(const struct vsph_integrate *s);
 /** @brief The bytes an integrator for @p n_fluid particles and about
  *  @p n_ghosts ghosts (0: no walls) in @p dim dimensions will need at
  *  most, with the first-pass workspace (PVWF, B, A, VISC-0x) when @p ws is
- *  1, and with the kernel corrections' arrays too when 2: to refuse a run
- *  before allocating it. */
+ *  1, and with the kernel corrections' arrays too when 2, and the
+ *  transport velocity's fields when @p tvf: to refuse a run before
+ *  allocating it. */
 double vsph_integrate_bytes_estimate(int dim, double n_fluid, double n_ghosts,
-                                     int ws);
+                                     int ws, int tvf);
 
 #endif /* VSPH_SOLVER_INTEGRATE_H */

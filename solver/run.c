@@ -182,7 +182,8 @@ static int check_cost(const struct vsph_run_props *rp,
   /* the lattice the scene lays, which the integrator takes */
   const double bytes = vsph_integrate_bytes_estimate(
       sc->dim, n, ghosts,
-      rp->corr != VSPH_PAIR_CORR_NONE ? 2 : vsph_viscous_first_pass(rp->form));
+      rp->corr != VSPH_PAIR_CORR_NONE ? 2 : vsph_viscous_first_pass(rp->form),
+      (int)rp->tvf);
   const double gib = bytes / (1024.0 * 1024.0 * 1024.0);
   if (gib > rp->max_memory)
     VSPH_FAIL(VSPH_EINVAL,
