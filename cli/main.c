@@ -8,6 +8,7 @@
 #include "../common/consts.h"
 #include "args.h"
 #include "cmd_bench.h"
+#include "cmd_contact.h"
 #include "cmd_dissipation.h"
 #include "cmd_laplacian.h"
 #include "cmd_report.h"
@@ -31,6 +32,8 @@ static const struct command commands[] = {
     {"laplacian", vsph_cmd_laplacian_main,
      "Laplacian patch test of the forms VISC-01..04 (Zheng et al. 2018)"},
     {"run", vsph_cmd_run_main, "run the free-surface WCSPH solver on a scene"},
+    {"contact", vsph_cmd_contact_main,
+     "numerical viscosity of a scheme by Parshikov et al.'s shear test"},
     {"scenes", vsph_cmd_run_scenes,
      "list the scenes, their parameters and defaults"},
     {"report", vsph_cmd_report_main,

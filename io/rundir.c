@@ -61,7 +61,8 @@ static int write_run_json(const struct vsph_run *run,
   if (opts->command) cJSON_AddStringToObject(o, "command", opts->command);
   cJSON_AddStringToObject(o, "date", res->started);
   cJSON_AddStringToObject(o, "scene", run->scene.type->name);
-  cJSON_AddStringToObject(o, "visc", rp->visc);
+  cJSON_AddStringToObject(o, "visc", vsph_run_method(rp));
+  cJSON_AddStringToObject(o, "scheme", rp->scheme);
   cJSON_AddStringToObject(o, "kernel", rp->kernel);
   cJSON_AddNumberToObject(o, "res", (double)rp->res);
   cJSON_AddNumberToObject(o, "n_particles", (double)res->n_particles);
@@ -372,8 +373,8 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   if (opts->dir)
     snprintf(res->dir, sizeof res->dir, "%s", opts->dir);
   else
-    snprintf(res->dir, sizeof res->dir, "runs/%s-%s-%zu", type->name, rp.visc,
-             rp.res);
+    snprintf(res->dir, sizeof res->dir, "runs/%s-%s-%zu", type->name,
+             vsph_run_method(&rp), rp.res);
   struct vsph_run *run = NULL;
   if ((st = vsph_run_alloc(&rp, &sc, &run))) return st;
   struct vsph_references_scene *ref = vsph_references_scene_alloc(&run->scene);
@@ -408,8 +409,8 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
     fprintf(progress,
             "vsph run: %s, %s, %s, %zu particles, h = %.4g, c0 = %.4g, "
             "t_end = %g -> %s\n",
-            type->name, rp.visc, rp.kernel, run->n_fluid, run->h, run->scene.c0,
-            run->t_end, res->dir);
+            type->name, vsph_run_method(&rp), rp.kernel, run->n_fluid, run->h,
+            run->scene.c0, run->t_end, res->dir);
   st = time_loop(&o, run, ref, opts, res);
   res->unstable = run->state == VSPH_RUN_UNSTABLE;
   res->unstable_time = run->t_unstable;

@@ -80,6 +80,11 @@ struct rhs_ctx {
   double pb;                        /* its background pressure */
   double w0;                        /* W(0) */
   double wf;                        /* h^-d: W = wf w(s/h) */
+  /* contact SPH: each material's sound speed, and each pair of
+   * materials' eta_eff - zeta eta_eff^num (0: no viscous term) */
+  double cmat[VSPH_EQUATIONS_MAT_MAX];
+  double etap[VSPH_EQUATIONS_MAT_MAX][VSPH_EQUATIONS_MAT_MAX];
+  int cvisc;
 };
 
 /* Basa et al.'s corrections, first pass: S_i = sum_j V_j W_ij (j = i
@@ -278,6 +283,102 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
   return nint;
 }
 
+/* One fluid particle of contact SPH (P002 eqs. 5, 6, 35; docs/theory.md
+ * section 12): every pair through vsph_pair_contact (the Riemann solution)
+ * and, with a viscosity, vsph_pair_contact_visc. The acoustic solver's
+ * dissipative parts go to acc_visc and drho_delta, so that the energy
+ * budget accounts for them. */
+VSPH_CONSTS_SPECIALISE size_t contact_one(
+    const struct rhs_ctx *rc, const struct vsph_particles *p,
+    const struct vsph_pair_ranges *rg, size_t i, struct vsph_equations_out *out,
+    double *min_s2, const int dim, const int kid, const int visc) {
+  double ui[3] = {0, 0, 0};
+  for (int k = 0; k < dim; k++) ui[k] = p->vel[k][i];
+  const unsigned char *const mat = p->mat;
+  const int mi = mat ? mat[i] : 0;
+  const double rhoi = p->rho[i], pi = p->p[i], Zi = rhoi * rc->cmat[mi];
+  const double *const rho = p->rho, *const pp = p->p;
+  const double *const vel[3] = {p->vel[0], dim > 1 ? p->vel[1] : NULL,
+                                dim > 2 ? p->vel[2] : NULL};
+  double cont = 0.0, diff = 0.0, ms2 = INFINITY;
+  double ap0 = 0, ap1 = 0, ap2 = 0, av0 = 0, av1 = 0, av2 = 0;
+  size_t nint = 0;
+  struct vsph_pair_iter it;
+  struct vsph_pair_chunk b;
+  vsph_pair_begin(&it, &rc->pk, p, rg, i);
+  while (vsph_pair_gather(&it, dim, kid, &b)) {
+    const size_t m = b.m;
+#pragma omp simd reduction(+ : cont, diff, ap0, ap1, ap2, av0, av1, av2) \
+    reduction(min : ms2)
+    for (size_t k = 0; k < m; k++) {
+      struct vsph_pair pr;
+      vsph_pair_at(&b, k, dim, &pr);
+      const size_t j = pr.j;
+      const int mj = mat ? mat[j] : 0;
+      double uj[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dux = 0.0;
+      for (int a = 0; a < dim; a++) {
+        uj[a] = vel[a][j];
+        du[a] = uj[a] - ui[a];
+        dux += du[a] * pr.x[a];
+      }
+      ms2 = pr.s2 < ms2 ? pr.s2 : ms2;
+      struct vsph_pair_contact_share sh;
+      vsph_pair_contact(&pr, dim, sqrt(pr.s2), pi, pp[j], Zi,
+                        rho[j] * rc->cmat[mj], ui, uj, &sh);
+      double g[3] = {0, 0, 0};
+      if (visc) vsph_pair_contact_visc(&pr, dim, rc->etap[mi][mj], du, dux, g);
+      cont += sh.cont;
+      diff += sh.diff;
+      ap0 += sh.f[0] + g[0];
+      av0 += sh.fd[0] + g[0];
+      if (dim > 1) {
+        ap1 += sh.f[1] + g[1];
+        av1 += sh.fd[1] + g[1];
+      }
+      if (dim > 2) {
+        ap2 += sh.f[2] + g[2];
+        av2 += sh.fd[2] + g[2];
+      }
+    }
+    nint += m;
+  }
+  const double ap[3] = {ap0, ap1, ap2}, av[3] = {av0, av1, av2};
+  const double rinv = 1.0 / rhoi;
+  double gb[3];
+  vsph_equations_body_force(rc->ep, it.xi, gb);
+  out->drho[i] = rhoi * cont;
+  for (int k = 0; k < dim; k++) out->acc[k][i] = rinv * ap[k] + gb[k];
+  if (rc->parts) {
+    for (int k = 0; k < dim; k++) out->acc_visc[k][i] = rinv * av[k];
+    out->drho_delta[i] = rhoi * diff;
+  }
+  *min_s2 = ms2;
+  return nint;
+}
+
+/* The fluid particles of cell c for contact SPH. */
+VSPH_CONSTS_SPECIALISE size_t contact_cell(const struct rhs_ctx *rc,
+                                           const struct vsph_particles *p,
+                                           const struct vsph_cells *cells,
+                                           size_t c, size_t n_fluid,
+                                           struct vsph_equations_out *out,
+                                           double *min_s2, const int dim,
+                                           const int kid, const int visc) {
+  struct vsph_pair_ranges rg;
+  vsph_pair_ranges_cell(&rg, cells, c);
+  const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
+  size_t total = 0;
+  double ms2 = INFINITY;
+  for (size_t i = i0; i < i1; i++) {
+    if (p->id[i] >= n_fluid) continue;
+    double m;
+    total += contact_one(rc, p, &rg, i, out, &m, dim, kid, visc);
+    ms2 = m < ms2 ? m : ms2;
+  }
+  *min_s2 = ms2;
+  return total;
+}
+
 /* The fluid particles of cell c; returns the interactions, the closest
  * pair in *min_s2. Inlined into one function per loop shape below. */
 VSPH_CONSTS_SPECIALISE size_t
@@ -370,6 +471,86 @@ static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
   return table[rc->pk.dim - 2][row][rc->dhc > 0.0];
 }
 
+/* Every cell through the chosen loop, in parallel (gather form: each
+ * thread writes only its own particles). */
+static void run_cells(const struct rhs_ctx *rc, rhs_cell_fn *cell_loop,
+                      const struct vsph_particles *p,
+                      const struct vsph_cells *cells, size_t n_fluid,
+                      struct vsph_equations_out *out) {
+  size_t total = 0;
+  double min_s2 = INFINITY;
+  /* integer sum and min: exact, so the same for any thread count */
+#pragma omp parallel for schedule(dynamic, 8) reduction(+ : total) \
+    reduction(min : min_s2)
+  for (size_t c = 0; c < cells->ncells; c++) {
+    double m;
+    total += cell_loop(rc, p, cells, c, n_fluid, out, &m);
+    min_s2 = m < min_s2 ? m : min_s2;
+  }
+  out->interactions = total;
+  out->min_s2 = min_s2;
+}
+
+/* Contact SPH's loops: the shear test's shapes (3-D, Wendland C2 or the
+ * cubic B-spline, inviscid or viscous) specialised, any other general. */
+#define CONTACT_SHAPE(name, D, KID, VISC)                                      \
+  static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
+                     const struct vsph_cells *cells, size_t c, size_t n_fluid, \
+                     struct vsph_equations_out *out, double *min_s2) {         \
+    return contact_cell(rc, p, cells, c, n_fluid, out, min_s2, D, KID, VISC);  \
+  }
+CONTACT_SHAPE(contact_c2_3, 3, VSPH_KERNEL_DFQ_C2, 0)
+CONTACT_SHAPE(contact_c2_3v, 3, VSPH_KERNEL_DFQ_C2, 1)
+CONTACT_SHAPE(contact_cubic_3, 3, VSPH_KERNEL_DFQ_CUBIC, 0)
+CONTACT_SHAPE(contact_cubic_3v, 3, VSPH_KERNEL_DFQ_CUBIC, 1)
+#undef CONTACT_SHAPE
+
+static size_t contact_general(const struct rhs_ctx *rc,
+                              const struct vsph_particles *p,
+                              const struct vsph_cells *cells, size_t c,
+                              size_t n_fluid, struct vsph_equations_out *out,
+                              double *min_s2) {
+  return contact_cell(rc, p, cells, c, n_fluid, out, min_s2, rc->pk.dim,
+                      rc->pk.dfq_id, rc->cvisc);
+}
+
+static rhs_cell_fn *contact_choose(const struct rhs_ctx *rc) {
+  if (rc->pk.dim != 3) return contact_general;
+  if (rc->pk.dfq_id == VSPH_KERNEL_DFQ_C2)
+    return rc->cvisc ? contact_c2_3v : contact_c2_3;
+  if (rc->pk.dfq_id == VSPH_KERNEL_DFQ_CUBIC)
+    return rc->cvisc ? contact_cubic_3v : contact_cubic_3;
+  return contact_general;
+}
+
+/* Contact SPH's loop constants: each material's sound speed and each
+ * pair's eta_eff - zeta eta_eff^num (P002 eqs. 30-32 and 26). */
+static int contact_init(const struct vsph_equations_props *ep,
+                        struct rhs_ctx *rc) {
+  if (ep->nmat < 1 || ep->nmat > VSPH_EQUATIONS_MAT_MAX)
+    VSPH_FAIL(VSPH_EINVAL, "contact SPH needs 1 to %d materials, not %d",
+              VSPH_EQUATIONS_MAT_MAX, ep->nmat);
+  if (ep->eos != VSPH_EQUATIONS_EOS_LINEAR || ep->corr || ep->reduce ||
+      ep->tvf || ep->delta > 0.0 || ep->solid)
+    VSPH_FAIL(VSPH_EINVAL,
+              "contact SPH takes the linear law and no correction, "
+              "reduction, delta-SPH, transport velocity or wall particles");
+  rc->cvisc = 0;
+  for (int a = 0; a < ep->nmat; a++) {
+    const struct vsph_equations_mat *ma = &ep->mat[a];
+    rc->cmat[a] = ma->c0;
+    for (int b = 0; b < ep->nmat; b++) {
+      const struct vsph_equations_mat *mb = &ep->mat[b];
+      rc->etap[a][b] =
+          vsph_equations_eta_eff(ma->mu, ma->rho0, mb->mu, mb->rho0) -
+          ep->zeta_num * vsph_equations_eta_eff(ma->eta_num, ma->rho0,
+                                                mb->eta_num, mb->rho0);
+      rc->cvisc |= rc->etap[a][b] != 0.0;
+    }
+  }
+  return VSPH_OK;
+}
+
 int vsph_equations_rhs(const struct vsph_equations_props *ep,
                        struct vsph_particles *p, size_t n_fluid,
                        const struct vsph_cells *cells,
@@ -384,12 +565,28 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
     VSPH_FAIL(VSPH_EINVAL, "the gas law needs the particles' energy fields");
   if (ep->tvf && !p->tvel[0])
     VSPH_FAIL(VSPH_EINVAL, "the transport velocity needs its fields");
-  if (!ep->solid) {
+  if (!ep->solid && p->mat && ep->nmat > 1) { /* each material's law */
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < n; i++) {
+      const struct vsph_equations_mat *ma = &ep->mat[p->mat[i]];
+      p->p[i] = ma->c0 * ma->c0 * (p->rho[i] - ma->rho0);
+      p->vol[i] = p->m[i] / p->rho[i];
+    }
+  } else if (!ep->solid) {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < n; i++) {
       p->p[i] = vsph_equations_pressure(ep, p->rho[i], gas ? p->e[i] : 0.0);
       p->vol[i] = p->m[i] / p->rho[i];
     }
+  }
+  if (ep->scheme == VSPH_EQUATIONS_CONTACT) {
+    struct rhs_ctx rc = {
+        .ep = ep, .parts = out->acc_visc[0] != NULL && out->drho_delta != NULL};
+    const int st = contact_init(ep, &rc);
+    if (st) return st;
+    vsph_pair_kernel_init(&rc.pk, vp->kernel, vp->dim, vp->h);
+    run_cells(&rc, contact_choose(&rc), p, cells, n_fluid, out);
+    return VSPH_OK;
   }
   const int st = vsph_viscous_prepare(vp, p, cells, ws);
   if (st) return st;
@@ -419,19 +616,7 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   }
   vsph_viscous_loop_init(&rc.vl, vp,
                          vsph_viscous_first_pass(vp->form) ? ws : NULL);
-  rhs_cell_fn *const cell_loop = rhs_choose(&rc);
-  size_t total = 0;
-  double min_s2 = INFINITY;
-  /* integer sum and min: exact, so the same for any thread count */
-#pragma omp parallel for schedule(dynamic, 8) reduction(+ : total) \
-    reduction(min : min_s2)
-  for (size_t c = 0; c < cells->ncells; c++) {
-    double m;
-    total += cell_loop(&rc, p, cells, c, n_fluid, out, &m);
-    min_s2 = m < min_s2 ? m : min_s2;
-  }
-  out->interactions = total;
-  out->min_s2 = min_s2;
+  run_cells(&rc, rhs_choose(&rc), p, cells, n_fluid, out);
   return VSPH_OK;
 }
 
@@ -515,7 +700,9 @@ void vsph_equations_energy_compute(const struct vsph_equations_props *ep,
   const double e0 = vsph_equations_gas_e0(ep);
   for (size_t i = 0; i < p->n; i++) {
     if (p->id[i] >= n_fluid) continue;
-    const double m = p->m[i], rr = ep->rho0 / p->rho[i];
+    const int mi = p->mat ? p->mat[i] : 0; /* contact: its material */
+    const double m = p->m[i], rr = vsph_equations_rho0(ep, mi) / p->rho[i];
+    const double cm = vsph_equations_c0(ep, mi);
     double x[3] = {0, 0, 0}, u2 = 0.0;
     for (int k = 0; k < d; k++) {
       x[k] = p->pos[k][i];
@@ -531,7 +718,7 @@ void vsph_equations_energy_compute(const struct vsph_equations_props *ep,
     else if (ep->eos == VSPH_EQUATIONS_EOS_GAS)
       en->Ec += m * (p->e[i] - e0);
     else
-      en->Ec += m * c2 * (-log(rr) + rr - 1.0);
+      en->Ec += m * cm * cm * (-log(rr) + rr - 1.0);
     if (d >= 2) en->Lz += m * (x[0] * p->vel[1][i] - x[1] * p->vel[0][i]);
   }
 }

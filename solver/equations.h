@@ -39,6 +39,30 @@ enum vsph_equations_eos {
   VSPH_EQUATIONS_EOS_COUNT
 };
 
+/** The schemes: the weakly compressible SPH of THEORY 5 with a viscous
+ *  operator, or contact (Godunov-type) SPH, whose pairs interact through
+ *  the acoustic Riemann solution (Parshikov et al., P002 eqs. 5-9;
+ *  docs/theory.md section 12). Chosen once per evaluation, outside the
+ *  pair loop. */
+enum vsph_equations_scheme {
+  VSPH_EQUATIONS_WCSPH = 0, /*!< continuity, p_i + p_j, the viscous form */
+  VSPH_EQUATIONS_CONTACT,   /*!< 2 P*, 2 (U* - U_i^R), contact viscosity */
+  VSPH_EQUATIONS_SCHEME_COUNT
+};
+
+/** Materials a contact run may hold (a per-particle index, p->mat). */
+#define VSPH_EQUATIONS_MAT_MAX 2
+
+/** One material of a contact run: its linear state equation, its
+ *  physical viscosity and the numerical viscosity the correcting tensor
+ *  removes a fraction zeta_num of (P002 section 4). */
+struct vsph_equations_mat {
+  double rho0;    /*!< reference density (kg/m^d) */
+  double c0;      /*!< sound speed (m/s); Z = rho c0 */
+  double mu;      /*!< physical viscosity (Pa s) */
+  double eta_num; /*!< numerical viscosity (Pa s), P002 eq. (37) */
+};
+
 /** Tait's exponent (Batchelor; Basa et al.'s eq. 13). */
 #define VSPH_EQUATIONS_TAIT_GAMMA 7.0
 /** The ideal gas's ratio of specific heats: Basa et al. give none; 1.4,
@@ -74,7 +98,36 @@ struct vsph_equations_props {
                                        density, the A term, and the
                                        background acceleration in bacc */
   double pb;                      /*!< its background pressure (Pa) */
+  int scheme;                     /*!< vsph_equations_scheme */
+  double zeta_num;                /*!< contact: the fraction of the
+                                       numerical viscosity removed, zeta */
+  int nmat;                       /*!< contact: materials (>= 1) */
+  struct vsph_equations_mat mat[VSPH_EQUATIONS_MAT_MAX]; /*!< contact */
 };
+
+/** @brief The pair viscosity of contact SPH, P002 eqs. (30)-(32):
+ *  eta_eff = eta_i eta_j (1 + sqrt(nu_i/nu_j))/(eta_i + eta_j
+ *  sqrt(nu_i/nu_j)), nu = eta/rho0 at the reference densities
+ *  ([reconstructed]); eta for identical materials, 0 if either is 0. */
+static inline double vsph_equations_eta_eff(double eta_i, double rho_i,
+                                            double eta_j, double rho_j) {
+  if (!(eta_i > 0.0) || !(eta_j > 0.0)) return 0.0;
+  const double r = sqrt((eta_i / rho_i) / (eta_j / rho_j));
+  return eta_i * eta_j * (1.0 + r) / (eta_i + eta_j * r);
+}
+
+/** @brief Material @p m's reference density (ep->rho0 outside contact
+ *  runs). */
+static inline double vsph_equations_rho0(const struct vsph_equations_props *ep,
+                                         int m) {
+  return ep->nmat > m ? ep->mat[m].rho0 : ep->rho0;
+}
+
+/** @brief Material @p m's sound speed (ep->c0 outside contact runs). */
+static inline double vsph_equations_c0(const struct vsph_equations_props *ep,
+                                       int m) {
+  return ep->nmat > m ? ep->mat[m].c0 : ep->c0;
+}
 
 /** @brief The state equation called @p name ("linear", "tait", "gas")
  *  into @p eos. @return VSPH_OK, or VSPH_EINVAL with a message listing

@@ -141,9 +141,18 @@ double vsph_integrate_dt(const struct vsph_integrate *s) {
   const double h = ep->visc.h;
   /* the transport-velocity scheme's kick-drift-kick: Adami et al.'s
    * quarter of the acoustic step */
-  const double cfl = ep->tvf ? 0.25 * s->props.cfl : s->props.cfl;
-  double dt = cfl * h / (ep->c0 + max_speed(s));
-  const double nu = ep->visc.mu / ep->rho0;
+  const double cfl = ep->tvf ? 0.25 * s->props.cfl
+                     : ep->scheme == VSPH_EQUATIONS_CONTACT ? 0.5 * s->props.cfl
+                                                            : s->props.cfl;
+  double c0 = ep->c0, nu = ep->visc.mu / ep->rho0;
+  for (int m = 0; m < ep->nmat; m++) { /* contact: the fastest material,
+                                           its viscosity and the part of
+                                           the numerical one removed */
+    const struct vsph_equations_mat *ma = &ep->mat[m];
+    c0 = fmax(c0, ma->c0);
+    nu = fmax(nu, (ma->mu + ep->zeta_num * ma->eta_num) / ma->rho0);
+  }
+  double dt = cfl * h / (c0 + max_speed(s));
   if (nu > 0.0) dt = fmin(dt, 0.125 * h * h / nu);
   double gmax = 0.0;
   if (ep->body == VSPH_EQUATIONS_BODY_GRAVITY) gmax = fabs(ep->g);
@@ -331,9 +340,9 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
 int vsph_integrate_check(struct vsph_integrate *s) {
   const struct vsph_particles *p = s->p;
   const struct vsph_integrate_props *ip = &s->props;
-  const double rho0 = ip->eq.rho0;
   for (size_t i = 0; i < p->n; i++) {
     if (p->id[i] >= s->n_fluid) continue;
+    const double rho0 = vsph_equations_rho0(&ip->eq, p->mat ? p->mat[i] : 0);
     int bad = !isfinite(p->rho[i]) || (p->e && !isfinite(p->e[i]));
     for (int k = 0; k < p->dim; k++)
       bad |= !isfinite(p->pos[k][i]) || !isfinite(p->vel[k][i]);

@@ -369,6 +369,81 @@ VSPH_CONSTS_SPECIALISE double vsph_pair_er(const struct vsph_pair *pr, int dim,
   return -0.5 * (c1 * du2 + c2 * dux);
 }
 
+/* ------------------------------------------ contact SPH (issue 12) */
+
+/** @brief The acoustic (linearised) Riemann solution between particle i
+ *  (left) and j (right) along e = (r_j - r_i)/|r_j - r_i|, Parshikov et
+ *  al. (P002) eqs. (8)-(9): with Z = rho c the impedances and U^R = u.e,
+ *  P* = (p_j Z_i + p_i Z_j - Z_i Z_j (U_j^R - U_i^R))/(Z_i + Z_j),
+ *  U*^R = (U_i^R Z_i + U_j^R Z_j - p_j + p_i)/(Z_i + Z_j).
+ *  It is the exact solution of the linear acoustic Riemann problem: the
+ *  contact state keeps p + Z_i U along i's outgoing characteristic and
+ *  p - Z_j U along j's. */
+VSPH_CONSTS_SPECIALISE void vsph_pair_riemann(double pi, double pj, double Zi,
+                                              double Zj, double uRi, double uRj,
+                                              double *Pstar, double *Ustar) {
+  const double r = 1.0 / (Zi + Zj);
+  *Pstar = (pj * Zi + pi * Zj - Zi * Zj * (uRj - uRi)) * r;
+  *Ustar = (uRi * Zi + uRj * Zj - pj + pi) * r;
+}
+
+/** The shares of one pair in contact SPH (P002 eqs. 5-6), with the
+ *  acoustic Riemann solution in place of the pair averages. */
+struct vsph_pair_contact_share {
+  double cont;  /*!< 2 V_j F s (U*^R - U_i^R): the caller multiplies the sum
+                     by rho_i for d rho_i/dt = -rho_i eps_i (eq. 5; with
+                     U* the mean it is vsph_pair_continuity) */
+  double diff;  /*!< the part of cont from U*'s pressure term,
+                     2 V_j F s (p_i - p_j)/(Z_i + Z_j): a density diffusion */
+  double f[3];  /*!< 2 V_j F P* x: the caller divides the sum by rho_i
+                     (eq. 6; with P* the mean it is vsph_pair_pressure) */
+  double fd[3]; /*!< the part of f from P*'s velocity term,
+                     -2 V_j F Z_i Z_j/(Z_i + Z_j) (U_j^R - U_i^R) x: the
+                     acoustic solver's numerical viscosity */
+};
+
+/** @brief Pair @p pr's contact-SPH shares into @p sh: @p s = |x|, pressures
+ *  @p pi, @p pj, impedances @p Zi, @p Zj, velocities @p ui, @p uj.
+ *  Antisymmetric in i and j, so momentum is conserved pair by pair. */
+VSPH_CONSTS_SPECIALISE void vsph_pair_contact(
+    const struct vsph_pair *pr, int dim, double s, double pi, double pj,
+    double Zi, double Zj, const double ui[3], const double uj[3],
+    struct vsph_pair_contact_share *sh) {
+  double uRi = 0.0, uRj = 0.0;
+  for (int a = 0; a < dim; a++) {
+    uRi += ui[a] * pr->x[a];
+    uRj += uj[a] * pr->x[a];
+  }
+  const double rs = 1.0 / s;
+  uRi *= rs;
+  uRj *= rs;
+  double P, U;
+  vsph_pair_riemann(pi, pj, Zi, Zj, uRi, uRj, &P, &U);
+  const double c = 2.0 * pr->VF * s;
+  sh->cont = c * (U - uRi);
+  sh->diff = c * (pi - pj) / (Zi + Zj);
+  const double cf = 2.0 * pr->VF * P;
+  const double cd = -2.0 * pr->VF * Zi * Zj / (Zi + Zj) * (uRj - uRi);
+  for (int a = 0; a < dim; a++) {
+    sh->f[a] = cf * pr->x[a];
+    sh->fd[a] = cd * pr->x[a];
+  }
+}
+
+/** @brief The viscous traction of contact SPH, P002 eq. (35) in the
+ *  frame-free form (docs/theory.md section 12): the pair's
+ *  (2/rho_i) V_j |W'| tau^R with tau^R = eta' (du + (du.e) e/3)/s, i.e.
+ *  -2 eta' V_j F (du + (du.x) x/(3 s^2)): Espanol & Revenga's pair with
+ *  a = -2 eta', b = -2 eta'/3, through vsph_pair_er (the one copy).
+ *  @param etap eta_eff - zeta eta_eff^num (Pa s). @return the pair's
+ *  dissipation density. */
+VSPH_CONSTS_SPECIALISE double vsph_pair_contact_visc(const struct vsph_pair *pr,
+                                                     int dim, double etap,
+                                                     const double du[3],
+                                                     double dux, double g[3]) {
+  return vsph_pair_er(pr, dim, -2.0 * etap, -2.0 / 3.0 * etap, du, dux, g);
+}
+
 /** Per-particle sums of Takeda-type direct second derivatives (Basa et
  *  al.'s model A, docs/theory.md section 8), un-differenced as Basa's
  *  eq. (27): <d_ab f>_i = sum_j V_j f_j d_ab W_ij, the sum taking j = i

@@ -69,6 +69,7 @@ int vsph_particles_reserve(struct vsph_particles *p, size_t cap) {
        grow((void **)&p->drho, p->n, cap, sizeof(double)) &&
        (!p->e || grow((void **)&p->e, p->n, cap, sizeof(double))) &&
        (!p->de || grow((void **)&p->de, p->n, cap, sizeof(double))) &&
+       (!p->mat || grow((void **)&p->mat, p->n, cap, 1)) &&
        grow((void **)&p->id, p->n, cap, sizeof(size_t));
   for (int k = 0; k < p->dim; k++) {
     ok = ok &&
@@ -105,6 +106,15 @@ int vsph_particles_tvf_alloc(struct vsph_particles *p) {
   return VSPH_OK;
 }
 
+int vsph_particles_mat_alloc(struct vsph_particles *p) {
+  if (p->mat) return VSPH_OK;
+  if (!(p->mat = alloc_aligned(p->cap)))
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the materials of %zu particles",
+              p->cap);
+  memset(p->mat, 0, p->cap);
+  return VSPH_OK;
+}
+
 void vsph_particles_free(struct vsph_particles *p) {
   if (!p) return;
   for (int k = 0; k < 3; k++) {
@@ -121,6 +131,7 @@ void vsph_particles_free(struct vsph_particles *p) {
   free(p->drho);
   free(p->e);
   free(p->de);
+  free(p->mat);
   free(p->id);
   free(p);
 }
@@ -152,6 +163,10 @@ void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
   permute_field(p->drho, perm, n, scratch);
   if (p->e) permute_field(p->e, perm, n, scratch);
   if (p->de) permute_field(p->de, perm, n, scratch);
+  if (p->mat) { /* bytes, through the index scratch */
+    for (size_t i = 0; i < n; i++) iscratch[i] = p->mat[perm[i]];
+    for (size_t i = 0; i < n; i++) p->mat[i] = (unsigned char)iscratch[i];
+  }
   for (size_t i = 0; i < n; i++) iscratch[i] = p->id[perm[i]];
   memcpy(p->id, iscratch, n * sizeof *p->id);
 }

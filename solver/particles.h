@@ -10,25 +10,28 @@
 
 /** Particle set: one 64-byte aligned array per field, double throughout. */
 struct vsph_particles {
-  size_t n;        /*!< live particles */
-  size_t cap;      /*!< allocated length, a multiple of 8 */
-  int dim;         /*!< 1, 2 or 3 */
-  double *pos[3];  /*!< pos[k][i]: coordinate k of particle i (m) */
-  double *vel[3];  /*!< velocity (m/s) */
-  double *acc[3];  /*!< acceleration or force density scratch */
-  double *m;       /*!< mass (kg per unit depth in 2-D) */
-  double *rho;     /*!< density (kg/m^d) */
-  double *vol;     /*!< volume V = m/rho, refreshed by _refresh_vol */
-  double *p;       /*!< pressure (Pa) */
-  double *drho;    /*!< density rate (kg/m^d/s) */
-  double *e;       /*!< specific internal energy (J/kg): NULL but for the
-                        gas law (vsph_particles_energy_alloc) */
-  double *de;      /*!< its rate (W/kg); NULL with e */
-  double *tvel[3]; /*!< transport velocity (m/s): NULL but for the
-                        transport-velocity scheme (vsph_particles_tvf_alloc) */
-  double *bacc[3]; /*!< its background-pressure acceleration; NULL with
-                        tvel */
-  size_t *id;      /*!< original index; survives reordering */
+  size_t n;           /*!< live particles */
+  size_t cap;         /*!< allocated length, a multiple of 8 */
+  int dim;            /*!< 1, 2 or 3 */
+  double *pos[3];     /*!< pos[k][i]: coordinate k of particle i (m) */
+  double *vel[3];     /*!< velocity (m/s) */
+  double *acc[3];     /*!< acceleration or force density scratch */
+  double *m;          /*!< mass (kg per unit depth in 2-D) */
+  double *rho;        /*!< density (kg/m^d) */
+  double *vol;        /*!< volume V = m/rho, refreshed by _refresh_vol */
+  double *p;          /*!< pressure (Pa) */
+  double *drho;       /*!< density rate (kg/m^d/s) */
+  double *e;          /*!< specific internal energy (J/kg): NULL but for the
+                           gas law (vsph_particles_energy_alloc) */
+  double *de;         /*!< its rate (W/kg); NULL with e */
+  double *tvel[3];    /*!< transport velocity (m/s): NULL but for the
+                           transport-velocity scheme (vsph_particles_tvf_alloc) */
+  double *bacc[3];    /*!< its background-pressure acceleration; NULL with
+                           tvel */
+  unsigned char *mat; /*!< material index into the run's table (contact
+                           SPH with two materials): NULL but for such runs
+                           (vsph_particles_mat_alloc); NULL means 0 */
+  size_t *id;         /*!< original index; survives reordering */
 };
 
 /** @brief Allocate a set for up to @p cap particles in @p dim dimensions,
@@ -45,11 +48,15 @@ int vsph_particles_reserve(struct vsph_particles *p, size_t cap);
  *  @return VSPH_OK or VSPH_ENOMEM (reported). */
 int vsph_particles_energy_alloc(struct vsph_particles *p);
 
-/** @brief Free a set; NULL is a no-op. */
 /** @brief Allocate the transport-velocity scheme's fields tvel and bacc
  *  (zeroed), once. @return VSPH_OK or VSPH_ENOMEM. */
 int vsph_particles_tvf_alloc(struct vsph_particles *p);
 
+/** @brief Allocate the material index mat (zeroed: every particle of
+ *  material 0), once. @return VSPH_OK or VSPH_ENOMEM. */
+int vsph_particles_mat_alloc(struct vsph_particles *p);
+
+/** @brief Free a set; NULL is a no-op. */
 void vsph_particles_free(struct vsph_particles *p);
 
 /** @brief Set vol[i] = m[i] / rho[i] for every live particle. */

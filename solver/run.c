@@ -10,6 +10,7 @@
 #include "../kernels/kernel.h"
 #include "integrate.h"
 #include "lattice.h"
+#include "materials.h"
 #include "particles.h"
 #include "viscous.h"
 
@@ -38,7 +39,7 @@ static const struct vsph_params_spec SOLVER[] = {
                           "end time (s); 0: the scene's"),
     VSPH_PARAMS_REAL_SPEC(P, cfl, 1.0, 1e-3, 4.0,
                           "Courant number of the RK4 time step (tvf: dt = "
-                          "cfl/4 h/(c0 + |u|max))"),
+                          "cfl/4 h/(c0 + |u|max); contact: cfl/2)"),
     VSPH_PARAMS_REAL_SPEC(P, delta, 0.0, 0.0, 1.0,
                           "delta-SPH coefficient; 0: off (0.1 is usual)"),
     VSPH_PARAMS_REAL_SPEC(P, rho_band, 0.2, 1e-6, 10.0,
@@ -83,6 +84,21 @@ static const struct vsph_params_spec SOLVER[] = {
                          "wall particles (cavity), the pair forms only"),
     VSPH_PARAMS_REAL_SPEC(P, pb, 0.0, 0.0, 1e12,
                           "tvf: background pressure (Pa); 0: rho0 c0^2"),
+    VSPH_PARAMS_NAME_SPEC(P, scheme, "wcsph",
+                          "wcsph (THEORY 5 with the viscous formulation "
+                          "visc) or contact (Parshikov et al.'s Godunov-type "
+                          "SPH: the acoustic Riemann solution between each "
+                          "pair, the contact viscous stress; visc unused)"),
+    VSPH_PARAMS_REAL_SPEC(P, alpha, 0.0, 0.0, 4.0,
+                          "contact: h = 2 alpha dx (Parshikov's h_ij = "
+                          "alpha (D_i + D_j) at the initial spacing); 0: "
+                          "h = hdx dx"),
+    VSPH_PARAMS_REAL_SPEC(P, zeta_num, 0.0, 0.0, 1.0,
+                          "contact: the fraction zeta of the numerical "
+                          "viscosity removed by the correcting tensor"),
+    VSPH_PARAMS_REAL_SPEC(P, eta_num, 0.0, 0.0, 10.0,
+                          "contact: the numerical viscosity over Z dx; 0: "
+                          "Parshikov's fit, eq. (37), at alpha = h/(2 dx)"),
 };
 
 /* The sound speed of the run: the scene's, or the gas law's at p0. */
@@ -122,6 +138,32 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
               "with the linear law and no correction, reduction or delta, "
               "not visc = %s",
               rp->visc);
+  if (strcmp(rp->scheme, "contact") == 0)
+    rp->scheme_kind = VSPH_EQUATIONS_CONTACT;
+  else if (strcmp(rp->scheme, "wcsph") == 0)
+    rp->scheme_kind = VSPH_EQUATIONS_WCSPH;
+  else
+    VSPH_FAIL(VSPH_EINVAL,
+              "unknown scheme Solver:scheme = '%s' (wcsph, "
+              "contact)",
+              rp->scheme);
+  const int contact = rp->scheme_kind == VSPH_EQUATIONS_CONTACT;
+  if (!contact && (rp->alpha > 0.0 || rp->zeta_num > 0.0 || rp->eta_num > 0.0))
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:alpha, zeta_num and eta_num apply to Solver:scheme = "
+              "contact only");
+  if (contact && (rp->tvf || rp->corr != VSPH_PAIR_CORR_NONE || rp->reduce ||
+                  rp->delta > 0.0 || rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR))
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:scheme = contact takes the linear law and no tvf, "
+              "correction, reduction or delta (its Riemann solution does "
+              "their work)");
+  if (contact && rp->alpha > 0.0) {
+    if (!(2.0 * rp->alpha >= 0.5))
+      VSPH_FAIL(VSPH_EINVAL, "Solver:alpha = %g is below 0.25 (h < dx/2)",
+                rp->alpha);
+    rp->hdx = 2.0 * rp->alpha;
+  }
   if (rp->pb > 0.0 && !rp->tvf)
     VSPH_FAIL(VSPH_EINVAL, "Solver:pb applies to Solver:tvf = 1 only");
   if (rp->p0 > 0.0 && rp->eos_kind != VSPH_EQUATIONS_EOS_GAS)
@@ -162,7 +204,7 @@ static int check_cost(const struct vsph_run_props *rp,
                       const struct vsph_scene *sc, double t_end) {
   const double dx = sc->ref_length / (double)rp->res, h = rp->hdx * dx;
   const double n =
-      sc->type->area * pow((double)rp->res, sc->dim) + 4.0 * (double)rp->res;
+      sc->area * pow((double)rp->res, sc->dim) + 4.0 * (double)rp->res;
   /* ghosts: a layer of reach/dx + 1 particles along each wall, over at
    * most twice the fluid's side (n^((d-1)/d)), corners included */
   const double deep = vsph_viscous_passes(rp->form);
@@ -204,6 +246,14 @@ static int check_cost(const struct vsph_run_props *rp,
               "Solver:tvf = 1 needs a scene with wall particles (cavity), "
               "not %s",
               sc->type->name);
+  if (rp->scheme_kind == VSPH_EQUATIONS_CONTACT && sc->walls.solid)
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:scheme = contact has no wall particles (%s has them)",
+              sc->type->name);
+  if (rp->scheme_kind != VSPH_EQUATIONS_CONTACT && sc->nmat > 1)
+    VSPH_FAIL(VSPH_EINVAL,
+              "%s holds two materials: it needs Solver:scheme = contact",
+              sc->type->name);
   if (sc->walls.solid && rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR)
     VSPH_FAIL(VSPH_EINVAL,
               "the wall particles of %s need Solver:eos = linear (their "
@@ -215,8 +265,10 @@ static int check_cost(const struct vsph_run_props *rp,
               "Solver:eos = %s needs a scene without gravity (the ghosts' "
               "hydrostatic density follows the linear law)",
               rp->eos);
-  double dt =
-      (rp->tvf ? 0.25 : 1.0) * rp->cfl * h / (run_c0(rp, sc) + sc->U_max);
+  double dt = (rp->tvf                                     ? 0.25
+               : rp->scheme_kind == VSPH_EQUATIONS_CONTACT ? 0.5
+                                                           : 1.0) *
+              rp->cfl * h / (run_c0(rp, sc) + sc->U_max);
   const double nu = sc->mu / sc->rho0;
   if (nu > 0.0) dt = fmin(dt, 0.125 * h * h / nu);
   const double gmax = sc->body == VSPH_EQUATIONS_BODY_GRAVITY ? fabs(sc->g)
@@ -271,6 +323,23 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
   ip.eq.tvf = (int)rp->tvf;
   ip.eq.pb = rp->pb > 0.0 ? rp->pb : ip.eq.rho0 * ip.eq.c0 * ip.eq.c0;
   if (rp->tvf && (st = vsph_particles_tvf_alloc(fluid))) goto fail;
+  if (rp->scheme_kind == VSPH_EQUATIONS_CONTACT) {
+    /* each material's numerical viscosity, eta_num = k Z D0 with k from
+     * eq. (37) at alpha = h/(2 dx) unless given */
+    const double k = rp->eta_num > 0.0
+                         ? rp->eta_num
+                         : vsph_materials_eta_num_fit(0.5 * rp->hdx);
+    ip.eq.scheme = VSPH_EQUATIONS_CONTACT;
+    ip.eq.zeta_num = rp->zeta_num;
+    ip.eq.nmat = r->scene.nmat > 0 ? r->scene.nmat : 1;
+    if (r->scene.nmat > 0)
+      for (int m = 0; m < ip.eq.nmat; m++) ip.eq.mat[m] = r->scene.mat[m];
+    else
+      ip.eq.mat[0] = (struct vsph_equations_mat){
+          .rho0 = ip.eq.rho0, .c0 = ip.eq.c0, .mu = ip.eq.visc.mu};
+    for (int m = 0; m < ip.eq.nmat; m++)
+      ip.eq.mat[m].eta_num = k * ip.eq.mat[m].rho0 * ip.eq.mat[m].c0 * r->dx;
+  }
   if (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS) { /* p = p0 rho/rho0 at t = 0 */
     if ((st = vsph_particles_energy_alloc(fluid))) goto fail;
     for (size_t i = 0; i < fluid->n; i++)

@@ -68,10 +68,15 @@ struct vsph_run_props {
   char correction[VSPH_PARAMS_NAME_MAX]; /*!< none, shepard, bonetlok */
   size_t tvf; /*!< 1: the transport-velocity scheme */
   double pb;  /*!< its background pressure (Pa); 0: rho0 c0^2 */
+  char scheme[VSPH_PARAMS_NAME_MAX]; /*!< wcsph or contact */
+  double alpha;    /*!< contact: h = 2 alpha dx (0: from hdx) */
+  double zeta_num; /*!< contact: fraction of eta_num removed */
+  double eta_num;  /*!< contact: eta_num/(Z D0); 0: P002's eq. (37) */
   /* resolved by vsph_run_props_init */
   int eos_kind;                         /*!< vsph_equations_eos of eos */
   int corr;                             /*!< vsph_pair_corr of correction */
   int form;                             /*!< vsph_viscous_form of visc */
+  int scheme_kind;                      /*!< vsph_equations_scheme */
   const struct vsph_kernel_type *ktype; /*!< the kernel called kernel */
 };
 
@@ -98,6 +103,12 @@ struct vsph_run_row {
   struct vsph_equations_energy en; /*!< energies and momenta */
   struct vsph_equations_budget b;  /*!< power terms and residual */
 };
+
+/** @brief What the run's pairs compute, for names and metadata: the
+ *  viscous formulation (Solver:visc), or "contact" for contact SPH. */
+static inline const char *vsph_run_method(const struct vsph_run_props *rp) {
+  return rp->scheme_kind == VSPH_EQUATIONS_CONTACT ? "contact" : rp->visc;
+}
 
 /** @brief The "Solver" parameter table (@p n receives its length). */
 const struct vsph_params_spec *vsph_run_params(size_t *n);

@@ -12,6 +12,7 @@ static const struct vsph_scene_type *const scene_table[] = {
     &vsph_vortex_patch_type,    &vsph_stretching_square_type,
     &vsph_standing_wave_type,   &vsph_channel_poiseuille_type,
     &vsph_channel_couette_type, &vsph_cavity_type,
+    &vsph_shear_type,
 };
 
 int vsph_scene_is_channel(const struct vsph_scene_type *type) {
@@ -42,6 +43,7 @@ int vsph_scene_init(struct vsph_scene *sc, const struct vsph_scene_type *type,
   memset(sc, 0, sizeof *sc);
   sc->type = type;
   sc->dim = 2;
+  sc->area = type->area; /* a scene whose size is a parameter sets its own */
   /* the table's offsets are into the type's member of the union, which
    * starts at the union's address */
   const int st =

@@ -4,6 +4,7 @@
 #include <stddef.h>
 
 #include "../common/params.h"
+#include "equations.h"
 #include "walls.h"
 
 struct vsph_particles;
@@ -88,6 +89,22 @@ struct vsph_scene_cavity {
   double nu; /*!< kinematic viscosity U L/Re (m^2/s) */
 };
 
+/** Shear layer (Parshikov et al.'s shear test, P002 sections 3 and 5;
+ *  docs/theory.md section 12): a 3-D periodic box, u_y = +U0 for x > 0
+ *  and -U0 for x < 0. The period along x is twice the paper's box, W:
+ *  its slip walls at x = +-W/2 are then planes of symmetry, so the box
+ *  is the paper's and its mirror image, with no wall code. */
+struct vsph_scene_shear {
+  double W;       /*!< the paper's box along x, half the period (m) */
+  double Ly;      /*!< period along y (m) */
+  double Lz;      /*!< period along z (m) */
+  double U0;      /*!< initial speed of each half (m/s) */
+  double t_end;   /*!< default end time (s) */
+  size_t viscous; /*!< 1: the materials' physical viscosity; 0: none */
+  char material[VSPH_PARAMS_NAME_MAX]; /*!< x > 0 (Table 1) */
+  char left[VSPH_PARAMS_NAME_MAX];     /*!< x < 0: "same" or a material */
+};
+
 struct vsph_scene;
 
 /** Scene descriptor. */
@@ -118,10 +135,16 @@ struct vsph_scene {
   double U_max;                       /*!< largest initial speed (m/s) */
   double dp_max;                      /*!< largest initial pressure range */
   double t_end;                       /*!< default end time (s) */
-  int body;                           /*!< vsph_equations_body */
-  double beta, g, f;                  /*!< body-force parameters */
-  struct vsph_walls walls;            /*!< walls (n = 0: none) */
-  double box_lo[3], box_hi[3];        /*!< escape box */
+  double area;       /*!< fluid volume over ref_length^dim (type->area, or the
+                          scene's own when its size is a parameter) */
+  int body;          /*!< vsph_equations_body */
+  double beta, g, f; /*!< body-force parameters */
+  struct vsph_walls walls; /*!< walls (n = 0: none) */
+  int nmat; /*!< materials of a contact run (0: one, rho0, c0 and mu);
+                 with 2 the scene's init sets each particle's p->mat */
+  struct vsph_equations_mat mat[VSPH_EQUATIONS_MAT_MAX]; /*!< rho0, c0,
+                 mu of each (eta_num is the run's) */
+  double box_lo[3], box_hi[3];                           /*!< escape box */
   /** The scene's own typed parameters: the member of its type. */
   union {
     struct vsph_scene_vortex vortex;   /*!< vortex-patch */
@@ -129,6 +152,7 @@ struct vsph_scene {
     struct vsph_scene_wave wave;       /*!< standing-wave */
     struct vsph_scene_channel channel; /*!< poiseuille, couette */
     struct vsph_scene_cavity cavity;   /*!< cavity */
+    struct vsph_scene_shear shear;     /*!< shear */
   } u;
 };
 
@@ -138,6 +162,7 @@ extern const struct vsph_scene_type vsph_standing_wave_type;
 extern const struct vsph_scene_type vsph_channel_poiseuille_type;
 extern const struct vsph_scene_type vsph_channel_couette_type;
 extern const struct vsph_scene_type vsph_cavity_type;
+extern const struct vsph_scene_type vsph_shear_type;
 
 /** @brief 1 if @p type is a channel (Poiseuille or Couette: a velocity
  *  profile with a series reference), else 0. */

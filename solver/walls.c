@@ -178,6 +178,7 @@ static void image(const struct vsph_walls *w,
   p->rho[i] = w->rho0 + pr / (w->c0 * w->c0);
   p->p[i] = pr; /* the linear law's; a run's own law recomputes it */
   if (p->e) p->e[i] = p->e[s];
+  if (p->mat) p->mat[i] = p->mat[s];
   p->m[i] = p->m[s];
   p->vol[i] = p->m[i] / p->rho[i];
 }
@@ -268,6 +269,7 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
       p->p[n] = p->p[i];
       p->drho[n] = p->drho[i];
       if (p->e) p->e[n] = p->e[i];
+      if (p->mat) p->mat[n] = p->mat[i];
       p->id[n] = p->id[i];
     }
     n++;

@@ -1,0 +1,303 @@
+#include "contact.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../common/consts.h"
+#include "../common/params.h"
+#include "../common/status.h"
+#include "../kernels/kernel.h"
+#include "../solver/integrate.h"
+#include "../solver/particles.h"
+#include "../solver/run.h"
+#include "../solver/scene.h"
+
+/* The images of the square wave of period 2W that matter: |n| up to the
+ * first whose erf terms are within 1e-17 of +-1 everywhere on (-W, W). */
+static int images(double d, double W) {
+  const int n = (int)ceil(6.0 * d / (2.0 * W)) + 1;
+  return n > 1000 ? 1000 : n;
+}
+
+double vsph_contact_shear_u(double x, double t, double nu, double U0,
+                            double W) {
+  if (!(t > 0.0) || !(nu > 0.0)) {
+    const double xm = x - 2.0 * W * floor((x + W) / (2.0 * W));
+    return xm > 0.0 ? U0 : xm < 0.0 ? -U0 : 0.0;
+  }
+  const double d = sqrt(4.0 * nu * t);
+  const int N = images(d, W);
+  double s = -1.0;
+  for (int n = -N; n <= N; n++)
+    s += erf((x - 2.0 * n * W) / d) - erf((x - 2.0 * n * W - W) / d);
+  return U0 * s;
+}
+
+/* int_0^1 erf(xi/sqrt(s)) ds = sign(xi) [1 - (1 + 2 xi^2) erfc|xi| +
+ * 2|xi| e^{-xi^2}/sqrt(pi)] (4 i^2erfc(xi) = (1 + 2 xi^2) erfc xi -
+ * 2 xi e^{-xi^2}/sqrt(pi), Abramowitz & Stegun 7.2.5). */
+static double erf_time_mean(double xi) {
+  const double a = fabs(xi);
+  const double g = 1.0 - (1.0 + 2.0 * a * a) * erfc(a) +
+                   2.0 * a * exp(-a * a) / sqrt(VSPH_PI);
+  return xi < 0.0 ? -g : g;
+}
+
+double vsph_contact_shear_dy(double x, double t, double nu, double U0,
+                             double W) {
+  if (!(t > 0.0)) return 0.0;
+  if (!(nu > 0.0)) return t * vsph_contact_shear_u(x, 0.0, 0.0, U0, W);
+  const double d = sqrt(4.0 * nu * t);
+  const int N = images(d, W);
+  double s = -1.0;
+  for (int n = -N; n <= N; n++)
+    s += erf_time_mean((x - 2.0 * n * W) / d) -
+         erf_time_mean((x - 2.0 * n * W - W) / d);
+  return U0 * t * s;
+}
+
+double vsph_contact_bimaterial_u(double x, double t, double uL, double etaL,
+                                 double rhoL, double uR, double etaR,
+                                 double rhoR, double *ustar) {
+  const double eL = sqrt(etaL * rhoL), eR = sqrt(etaR * rhoR);
+  const double us = (eL * uL + eR * uR) / (eL + eR);
+  if (ustar) *ustar = us;
+  if (x > 0.0) return us + (uR - us) * erf(x / sqrt(4.0 * etaR / rhoR * t));
+  return us + (uL - us) * erf(-x / sqrt(4.0 * etaL / rhoL * t));
+}
+
+/* sum_j V_j |W'(r_j)| g(x_j, y_j, r_j) over the lattice of spacing 1
+ * (simple cubic in 3-D, square in 2-D), h = 2 alpha: the lattice sums of
+ * both predictions. */
+static double lattice_sum(const struct vsph_kernel_type *k, int dim,
+                          double alpha, int visc) {
+  const double h = 2.0 * alpha, H = k->kappa * h;
+  const int m = (int)ceil(H);
+  double s = 0.0;
+  for (int a = -m; a <= m; a++)
+    for (int b = -m; b <= m; b++)
+      for (int c = (dim == 3 ? -m : 0); c <= (dim == 3 ? m : 0); c++) {
+        const double r2 = (double)(a * a + b * b + c * c);
+        if (r2 == 0.0 || r2 >= H * H) continue;
+        const double r = sqrt(r2), x2 = (double)(a * a), y2 = (double)(b * b);
+        const double dw = fabs(vsph_kernel_dw(k, dim, r / h)) / pow(h, dim + 1);
+        s += visc ? dw / r * x2 * (1.0 + y2 / (3.0 * r2)) : x2 * (y2 / r2) * dw;
+      }
+  return s;
+}
+
+double vsph_contact_lattice_visc_factor(const struct vsph_kernel_type *k,
+                                        int dim, double alpha) {
+  return lattice_sum(k, dim, alpha, 1);
+}
+
+double vsph_contact_lattice_coef(const struct vsph_kernel_type *k, int dim,
+                                 double alpha) {
+  return 0.5 * lattice_sum(k, dim, alpha, 0);
+}
+
+/* The least-squares misfit of log(nu). */
+struct fit {
+  size_t n;
+  const double *x, *v;
+  int dy;
+  double t, U0, W;
+};
+
+static double misfit(double lognu, void *arg) {
+  const struct fit *f = arg;
+  const double nu = exp(lognu);
+  double s = 0.0;
+  for (size_t i = 0; i < f->n; i++) {
+    const double m = f->dy
+                         ? vsph_contact_shear_dy(f->x[i], f->t, nu, f->U0, f->W)
+                         : vsph_contact_shear_u(f->x[i], f->t, nu, f->U0, f->W);
+    s += (f->v[i] - m) * (f->v[i] - m);
+  }
+  return s;
+}
+
+double vsph_contact_fit_nu(size_t n, const double *x, const double *v, int dy,
+                           double t, double U0, double W, double lo, double hi,
+                           double *rms) {
+  struct fit f = {n, x, v, dy, t, U0, W};
+  if (!(n > 0) || !(lo > 0.0) || !(hi > lo) || !(t > 0.0)) {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "a viscosity fit needs data, 0 < lo < hi and t > 0");
+    return NAN;
+  }
+  /* scan: 81 log-spaced points, then Brent about the smallest */
+  enum { NS = 81 };
+  const double a = log(lo), b = log(hi), step = (b - a) / (NS - 1);
+  double best = INFINITY;
+  int kb = 0;
+  for (int k = 0; k < NS; k++) {
+    const double m = misfit(a + k * step, &f);
+    if (m < best) best = m, kb = k;
+  }
+  double lx = a + kb * step;
+  if (kb > 0 && kb < NS - 1) {
+    gsl_function fn = {misfit, &f};
+    gsl_min_fminimizer *mz = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+    if (!mz) {
+      vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__, "no minimiser");
+      return NAN;
+    }
+    int st = gsl_min_fminimizer_set_with_values(
+        mz, &fn, lx, best, lx - step, misfit(lx - step, &f), lx + step,
+        misfit(lx + step, &f));
+    for (int it = 0; !st && it < 100; it++) {
+      if ((st = gsl_min_fminimizer_iterate(mz))) break;
+      const double l = gsl_min_fminimizer_x_lower(mz),
+                   u = gsl_min_fminimizer_x_upper(mz);
+      if (gsl_min_test_interval(l, u, 1e-10, 0.0) == GSL_SUCCESS) break;
+    }
+    if (!st) {
+      lx = gsl_min_fminimizer_x_minimum(mz);
+      best = gsl_min_fminimizer_f_minimum(mz);
+    }
+    gsl_min_fminimizer_free(mz);
+  }
+  if (rms) *rms = sqrt(best / (double)n) / (dy ? U0 * t : U0);
+  return exp(lx);
+}
+
+void vsph_contact_shear_free(struct vsph_contact_shear *cs) {
+  free(cs->x);
+  cs->x = NULL;
+  for (int k = 0; k < 8; k++) {
+    free(cs->u[k]);
+    free(cs->dy[k]);
+    cs->u[k] = cs->dy[k] = NULL;
+  }
+}
+
+/* Slab means of u_y and of the displacement at the current state. */
+static void profile(const struct vsph_run *run, const double *disp,
+                    struct vsph_contact_shear *cs, size_t k, double *cnt) {
+  const struct vsph_particles *p = run->integ->p;
+  const size_t nb = cs->nbins;
+  for (size_t b = 0; b < nb; b++) cs->u[k][b] = cs->dy[k][b] = cnt[b] = 0.0;
+  for (size_t i = 0; i < p->n; i++) {
+    const size_t id = p->id[i];
+    if (id >= run->n_fluid) continue;
+    double x = p->pos[0][i] + cs->W; /* into [0, 2W) */
+    x -= 2.0 * cs->W * floor(x / (2.0 * cs->W));
+    size_t b = (size_t)(x / cs->D0);
+    if (b >= nb) b = nb - 1;
+    cs->u[k][b] += p->vel[1][i];
+    cs->dy[k][b] += disp[id];
+    cnt[b] += 1.0;
+  }
+  for (size_t b = 0; b < nb; b++)
+    if (cnt[b] > 0.0) {
+      cs->u[k][b] /= cnt[b];
+      cs->dy[k][b] /= cnt[b];
+    }
+}
+
+int vsph_contact_shear_measure(struct vsph_params *prm,
+                               struct vsph_contact_shear *cs) {
+  const size_t nprof = cs->nprof < 1 ? 1 : cs->nprof > 8 ? 8 : cs->nprof;
+  const int quiet = cs->quiet;
+  memset(cs, 0, sizeof *cs);
+  cs->nprof = nprof;
+  struct vsph_run_props rp;
+  struct vsph_scene sc;
+  int st = vsph_run_props_init(&rp, prm);
+  if (!st) st = vsph_scene_init(&sc, &vsph_shear_type, prm);
+  if (st) return st;
+  const char *unused = vsph_params_unused(prm);
+  if (unused) VSPH_FAIL(VSPH_EINVAL, "unknown parameter '%s'", unused);
+  rp.snapshots = 0;
+  struct vsph_run *run = NULL;
+  if ((st = vsph_run_alloc(&rp, &sc, &run))) return st;
+  const struct vsph_scene_shear *sh = &run->scene.u.shear;
+  cs->n = run->n_fluid;
+  cs->D0 = run->dx;
+  cs->W = sh->W;
+  cs->U0 = sh->U0;
+  cs->t_end = run->t_end;
+  cs->rho0 = run->scene.mat[0].rho0;
+  cs->c0 = run->scene.mat[0].c0;
+  cs->nbins = 2 * rp.res;
+  const size_t nf = run->n_fluid, nb = cs->nbins;
+  double *disp = calloc(nf, sizeof *disp), *prev = malloc(nf * sizeof *prev),
+         *cnt = malloc(nb * sizeof *cnt);
+  cs->x = malloc(nb * sizeof *cs->x);
+  for (size_t k = 0; k < nprof; k++) {
+    cs->u[k] = malloc(nb * sizeof(double));
+    cs->dy[k] = malloc(nb * sizeof(double));
+  }
+  int ok = disp && prev && cnt && cs->x;
+  for (size_t k = 0; k < nprof; k++) ok = ok && cs->u[k] && cs->dy[k];
+  if (!ok) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__,
+                       "cannot allocate the shear test's profiles");
+    goto done;
+  }
+  for (size_t b = 0; b < nb; b++) cs->x[b] = -cs->W + (b + 0.5) * cs->D0;
+  {
+    const struct vsph_particles *p = run->integ->p;
+    for (size_t i = 0; i < p->n; i++)
+      if (p->id[i] < nf) prev[p->id[i]] = p->pos[1][i];
+  }
+  const double Ly = sh->Ly, t0 = omp_get_wtime();
+  double last = t0;
+  size_t k = 0;
+  while (run->state == VSPH_RUN_RUNNING && k < nprof) {
+    if ((st = vsph_run_iterate(run))) goto done;
+    /* unwrap: a step moves a particle far less than Ly/2 */
+    const struct vsph_particles *p = run->integ->p;
+    for (size_t i = 0; i < p->n; i++) {
+      const size_t id = p->id[i];
+      if (id >= nf) continue;
+      double d = p->pos[1][i] - prev[id];
+      d -= Ly * nearbyint(d / Ly);
+      disp[id] += d;
+      prev[id] = p->pos[1][i];
+    }
+    const double t = vsph_run_time(run);
+    if (run->state != VSPH_RUN_UNSTABLE &&
+        t >= cs->t_end * (double)(k + 1) / (double)nprof * (1.0 - 1e-12)) {
+      profile(run, disp, cs, k, cnt);
+      cs->t[k] = t;
+      k++;
+    }
+    const double now = omp_get_wtime();
+    if (!quiet && now - last > 10.0) {
+      fprintf(stderr, "vsph contact: shear t = %.4g / %.4g s, %.0f s\n", t,
+              cs->t_end, now - t0);
+      last = now;
+    }
+  }
+  cs->nt = k;
+  cs->stable = run->state != VSPH_RUN_UNSTABLE;
+  cs->t_stop = vsph_run_time(run);
+  cs->steps = vsph_run_steps(run);
+  snprintf(cs->reason, sizeof cs->reason, "%s", run->reason);
+  cs->wall_s = omp_get_wtime() - t0;
+  /* fits between 1e-4 and 1e4 times the scale D0 c/10 */
+  const double scale = 0.1 * cs->D0 * cs->c0;
+  for (size_t q = 0; q < cs->nt; q++) {
+    cs->nu_u[q] =
+        vsph_contact_fit_nu(nb, cs->x, cs->u[q], 0, cs->t[q], cs->U0, cs->W,
+                            1e-4 * scale, 1e4 * scale, &cs->rms_u[q]);
+    cs->nu_dy[q] =
+        vsph_contact_fit_nu(nb, cs->x, cs->dy[q], 1, cs->t[q], cs->U0, cs->W,
+                            1e-4 * scale, 1e4 * scale, &cs->rms_dy[q]);
+  }
+done:
+  free(disp);
+  free(prev);
+  free(cnt);
+  vsph_run_free(run);
+  if (st) vsph_contact_shear_free(cs);
+  return st;
+}

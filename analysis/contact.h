@@ -1,0 +1,101 @@
+#ifndef VSPH_ANALYSIS_CONTACT_H
+#define VSPH_ANALYSIS_CONTACT_H
+
+#include <stddef.h>
+
+struct vsph_kernel_type;
+struct vsph_params;
+
+/** @file contact.h
+ *  @brief The numerical viscosity of contact SPH (Parshikov, Medin,
+ *  Rublev & Dyachkov, P002; docs/theory.md section 12): the exact shear
+ *  layer (Stokes' first problem, their eq. 10) and its control surface,
+ *  the lattice-sum prediction of the acoustic solver's viscosity, and the
+ *  paper's measurement: run the shear scene, fit the viscosity whose exact
+ *  solution matches the SPH profile. No I/O beyond the run's progress. */
+
+/** @brief u_y(x, t) of the shear layer u_y(x, 0) = U0 sign(x) on the
+ *  period (-W, W) (slip walls at +-W/2 are planes of symmetry):
+ *  U0 [sum_n erf((x - 2nW)/d) - erf((x - 2nW - W)/d) - 1], d = sqrt(4 nu
+ *  t), the images summed while they matter. Stokes' first problem, P002
+ *  eq. (10), while d << W. */
+double vsph_contact_shear_u(double x, double t, double nu, double U0, double W);
+
+/** @brief The displacement of the same flow's material line (P002's
+ *  "control surface"), int_0^t u_y dt, in closed form: per erf image,
+ *  t sign(xi) [1 - (1 + 2 xi^2) erfc|xi| + 2|xi| e^{-xi^2}/sqrt(pi)],
+ *  xi = x/d. */
+double vsph_contact_shear_dy(double x, double t, double nu, double U0,
+                             double W);
+
+/** @brief Two semi-infinite materials (left x < 0, right x > 0) sliding at
+ *  uL and uR with viscosities etaL, etaR and densities rhoL, rhoR: the
+ *  contact velocity (P002 eq. 27, the effusivity-weighted mean
+ *  sqrt(eta rho)) and u(x, t) = U* + (u_side - U*) erf(|x|/sqrt(4 nu_side
+ *  t)). @p ustar receives U* when not NULL. */
+double vsph_contact_bimaterial_u(double x, double t, double uL, double etaL,
+                                 double rhoL, double uR, double etaR,
+                                 double rhoR, double *ustar);
+
+/** @brief The acoustic solver's numerical viscosity predicted by a
+ *  lattice sum (docs/theory.md section 12): for identical particles in
+ *  shear, nu_num = (c/2) sum_j V_j x_j^2 (y_j/r_j)^2 |W'(r_j)| over the
+ *  simple cubic lattice of spacing D0 (3-D; the square one in 2-D), with
+ *  h = 2 alpha D0. @return nu_num/(c D0) = eta_num/(Z D0). */
+double vsph_contact_lattice_coef(const struct vsph_kernel_type *k, int dim,
+                                 double alpha);
+
+/** @brief The shear viscosity of contact SPH's viscous traction
+ *  (vsph_pair_contact_visc) on the same static lattice, over eta:
+ *  sum_j V_j |W'(r_j)|/r_j x_j^2 (1 + y_j^2/(3 r_j^2)) (docs/theory.md
+ *  section 12; its continuum limit is 1 + 1/(3(d + 2)), 16/15 in 3-D). */
+double vsph_contact_lattice_visc_factor(const struct vsph_kernel_type *k,
+                                        int dim, double alpha);
+
+/** @brief The viscosity nu in [lo, hi] whose shear-layer solution (@p dy
+ *  0: u_y, vsph_contact_shear_u; 1: the control surface,
+ *  vsph_contact_shear_dy) best fits the @p n values @p v at @p x in the
+ *  least-squares sense: a log-spaced scan, then Brent's minimiser (GSL).
+ *  @p rms receives the fit's RMS residual over U0 (u) or U0 t (dy).
+ *  @return nu, or NaN on failure (reported). */
+double vsph_contact_fit_nu(size_t n, const double *x, const double *v, int dy,
+                           double t, double U0, double W, double lo, double hi,
+                           double *rms);
+
+/** The shear test's outcome. */
+struct vsph_contact_shear {
+  /* in */
+  size_t nprof; /*!< profile times t_end (k + 1)/nprof, k < nprof (<= 8) */
+  int quiet;    /*!< 1: no progress line */
+  /* out */
+  size_t n;                          /*!< particles */
+  size_t nbins;                      /*!< slabs of width D0 along x (2 res) */
+  double D0, W, U0, t_end, rho0, c0; /*!< the run's, material x > 0 */
+  double t[8];                       /*!< the profile times reached */
+  double *x;                         /*!< slab centres (nbins) */
+  double *u[8];               /*!< mean u_y per slab at each profile time */
+  double *dy[8];              /*!< mean displacement along y per slab */
+  double nu_u[8];             /*!< nu fitted to u_y at each time */
+  double nu_dy[8];            /*!< nu fitted to the control surface */
+  double rms_u[8], rms_dy[8]; /*!< their RMS residuals */
+  size_t nt;                  /*!< profile times reached */
+  int stable;                 /*!< 0: stopped as unstable */
+  double t_stop;              /*!< time reached */
+  char reason[160];           /*!< why it stopped early */
+  double wall_s;              /*!< run time (s) */
+  size_t steps;               /*!< steps taken */
+};
+
+/** @brief Run the shear scene with the "Solver" and "Scene" sections of
+ *  @p prm (any scheme) and measure its viscosity: at each profile time
+ *  the slab means of u_y and of each particle's unwrapped displacement,
+ *  and the fitted nu of both. Free with vsph_contact_shear_free.
+ *  @return VSPH_OK (an unstable run is a result), VSPH_EINVAL (bad
+ *  parameters: the message names them), VSPH_ENOMEM. */
+int vsph_contact_shear_measure(struct vsph_params *prm,
+                               struct vsph_contact_shear *cs);
+
+/** @brief Free the profiles of @p cs. */
+void vsph_contact_shear_free(struct vsph_contact_shear *cs);
+
+#endif /* VSPH_ANALYSIS_CONTACT_H */

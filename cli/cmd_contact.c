@@ -1,0 +1,141 @@
+/* vsph contact: the numerical viscosity of contact SPH by Parshikov et
+ * al.'s shear test (analysis/contact), or its lattice-sum prediction. */
+#include "cmd_contact.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "../analysis/contact.h"
+#include "../common/consts.h"
+#include "../common/params.h"
+#include "../common/status.h"
+#include "../io/files.h"
+#include "../io/shear.h"
+#include "../kernels/kernel.h"
+#include "../solver/materials.h"
+#include "../solver/run.h"
+#include "args.h"
+
+static const char *const CMD = "contact";
+
+static const char ABOUT[] =
+    "The numerical viscosity of a scheme by Parshikov et al.'s shear test\n"
+    "(docs/theory.md section 12): run the shear scene (see vsph scenes;\n"
+    "lead at +-500 m/s by default), then fit the viscosity nu whose exact\n"
+    "solution (Stokes' first problem, with the period's images) best\n"
+    "matches the slab means of u_y and of the particles' displacement (the\n"
+    "paper's control surface). Prints, per profile time, nu and\n"
+    "eta/(Z D0) = nu/(c0 D0) of both fits and their RMS residuals.\n"
+    "Parameters as for vsph run shear (Solver: options below, Scene: by\n"
+    "--set); the paper's runs are --scheme contact --kernel wendland2\n"
+    "--alpha 0.5 --res 80 --set Scene:viscous=0. With --lattice, prints\n"
+    "instead the lattice-sum prediction eta_num/(Z D0) of the acoustic\n"
+    "solver for the Wendland C2 and cubic kernels, P002's fit (37), and\n"
+    "the shear factor of the contact viscous stress on the same lattice.";
+
+static int lattice_table(void) {
+  const struct vsph_kernel_type *w = vsph_kernel_find("wendland2"),
+                                *b = vsph_kernel_find("cubic");
+  static const double alphas[] = {0.5, 0.55, 0.6, 0.75, 1.0, 1.5, 2.0};
+  printf(
+      "# vsph %s: eta_num/(Z D0) of the acoustic Riemann solver, lattice "
+      "sum on the simple cubic lattice (h = 2 alpha D0), and P002's fit "
+      "(37)\n",
+      VSPH_VERSION);
+  printf(
+      "alpha,lattice_wendland2,lattice_cubic,fit37,visc_factor_wendland2,"
+      "visc_factor_cubic\n");
+  for (size_t k = 0; k < sizeof alphas / sizeof alphas[0]; k++)
+    printf("%g,%.5f,%.5f,%.5f,%.4f,%.4f\n", alphas[k],
+           vsph_contact_lattice_coef(w, 3, alphas[k]),
+           vsph_contact_lattice_coef(b, 3, alphas[k]),
+           vsph_materials_eta_num_fit(alphas[k]),
+           vsph_contact_lattice_visc_factor(w, 3, alphas[k]),
+           vsph_contact_lattice_visc_factor(b, 3, alphas[k]));
+  return vsph_args_finish(CMD, 0);
+}
+
+/* The profiles and both fits into FILE (atomically). */
+static int write_profiles(const char *path,
+                          const struct vsph_contact_shear *cs) {
+  char *buf = vsph_shear_csv_profiles(cs);
+  if (!buf) return VSPH_ENOMEM;
+  char dir[1024];
+  snprintf(dir, sizeof dir, "%s", path);
+  char *slash = strrchr(dir, '/');
+  const char *name = slash ? slash + 1 : path;
+  if (slash) *slash = '\0';
+  const int st =
+      vsph_files_write(slash ? (dir[0] ? dir : "/") : ".", name, buf);
+  free(buf);
+  return st;
+}
+
+int vsph_cmd_contact_main(int argc, char **argv) {
+  int lattice = 0;
+  size_t nprof = 3;
+  const char *csv = NULL;
+  const struct vsph_args_spec own[] = {
+      {"--lattice", VSPH_ARGS_FLAG, &lattice, NULL,
+       "print the lattice-sum prediction and exit"},
+      {"--profiles", VSPH_ARGS_SIZE, &nprof, "K",
+       "profile times t_end k/K, k = 1..K (1-8) [3]"},
+      {"--csv", VSPH_ARGS_STRING, &csv, "FILE",
+       "write the profiles and both fits (t, x, u, u_fit, dy, dy_fit)"},
+      {"--params", VSPH_ARGS_PARAMS, NULL, "FILE", "parameter file"},
+      {"--set", VSPH_ARGS_SET, NULL, "S:k=v",
+       "one parameter, e.g. Scene:material=water (repeatable)"}};
+  size_t n;
+  const struct vsph_params_spec *spec = vsph_run_params(&n);
+  const struct vsph_args_section sec = {"Solver", spec, n};
+  const struct vsph_args_cmd c = {
+      CMD, "[options]", ABOUT, own, sizeof own / sizeof own[0], &sec, 1, NULL};
+  struct vsph_params *prm = vsph_params_alloc();
+  if (!prm) return vsph_args_status(CMD, VSPH_ENOMEM);
+  int rc = vsph_args_parse(&c, argc, argv, prm);
+  if (rc < 0 && (nprof < 1 || nprof > 8))
+    rc = vsph_args_fail(CMD, "--profiles must lie in 1-8, got %zu", nprof);
+  if (rc >= 0) {
+    vsph_params_free(prm);
+    return rc;
+  }
+  if (lattice) {
+    vsph_params_free(prm);
+    return lattice_table();
+  }
+  if (csv) { /* before the run: a folder that is not there is bad input */
+    char dir[1024];
+    snprintf(dir, sizeof dir, "%s", csv);
+    char *slash = strrchr(dir, '/');
+    if (slash) *slash = '\0';
+    if (!slash) snprintf(dir, sizeof dir, ".");
+    if (access(dir[0] ? dir : "/", W_OK) != 0) {
+      vsph_params_free(prm);
+      return vsph_args_fail(CMD, "--csv %s: folder '%s' is not writable", csv,
+                            dir[0] ? dir : "/");
+    }
+  }
+  struct vsph_contact_shear cs = {.nprof = nprof};
+  int st = vsph_contact_shear_measure(prm, &cs);
+  vsph_params_free(prm);
+  if (st) return vsph_args_status(CMD, st);
+  printf(
+      "# vsph %s contact: shear test, %zu particles, D0 = %g m, U0 = %g "
+      "m/s, rho0 = %g, c0 = %g, %zu steps in %.1f s%s%s\n",
+      VSPH_VERSION, cs.n, cs.D0, cs.U0, cs.rho0, cs.c0, cs.steps, cs.wall_s,
+      cs.stable ? "" : ", UNSTABLE: ", cs.reason);
+  printf("t,nu_u,eta_u_over_ZD0,rms_u,nu_dy,eta_dy_over_ZD0,rms_dy\n");
+  const double zd = cs.c0 * cs.D0;
+  for (size_t k = 0; k < cs.nt; k++)
+    printf("%.6e,%.6e,%.5f,%.3e,%.6e,%.5f,%.3e\n", cs.t[k], cs.nu_u[k],
+           cs.nu_u[k] / zd, cs.rms_u[k], cs.nu_dy[k], cs.nu_dy[k] / zd,
+           cs.rms_dy[k]);
+  if (csv && (st = write_profiles(csv, &cs))) {
+    vsph_contact_shear_free(&cs);
+    return vsph_args_status(CMD, st);
+  }
+  vsph_contact_shear_free(&cs);
+  return vsph_args_finish(CMD, 0);
+}

@@ -1,0 +1,111 @@
+#include "shear.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../analysis/contact.h"
+#include "../common/status.h"
+#include "csv.h"
+
+char *vsph_shear_csv_profiles(const struct vsph_contact_shear *cs) {
+  char *buf = NULL;
+  size_t len = 0;
+  FILE *f = open_memstream(&buf, &len);
+  if (!f) {
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot build the shear profiles");
+    return NULL;
+  }
+  fprintf(f, "t,x,u,u_fit,dy,dy_fit\n");
+  for (size_t k = 0; k < cs->nt; k++)
+    for (size_t b = 0; b < cs->nbins; b++)
+      fprintf(
+          f, "%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n", cs->t[k], cs->x[b], cs->u[k][b],
+          vsph_contact_shear_u(cs->x[b], cs->t[k], cs->nu_u[k], cs->U0, cs->W),
+          cs->dy[k][b],
+          vsph_contact_shear_dy(cs->x[b], cs->t[k], cs->nu_dy[k], cs->U0,
+                                cs->W));
+  if (fclose(f) || !buf) {
+    free(buf);
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot build the shear profiles");
+    return NULL;
+  }
+  return buf;
+}
+
+char *vsph_shear_csv_summary(const struct vsph_contact_shear *cs) {
+  char *buf = NULL;
+  size_t len = 0;
+  FILE *f = open_memstream(&buf, &len);
+  if (!f) {
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot build the shear summary");
+    return NULL;
+  }
+  fprintf(f,
+          "t,nu_u,rms_u,nu_dy,rms_dy,n,D0,W,U0,rho0,c0,t_end,steps,wall_s,"
+          "stable,t_stop\n");
+  /* a run stopped before its first profile still leaves its facts */
+  const size_t rows = cs->nt ? cs->nt : 1;
+  for (size_t k = 0; k < rows; k++)
+    fprintf(f,
+            "%.9e,%.9e,%.6e,%.9e,%.6e,%zu,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%zu,"
+            "%.3f,%d,%.9e\n",
+            cs->nt ? cs->t[k] : (double)NAN, cs->nt ? cs->nu_u[k] : (double)NAN,
+            cs->nt ? cs->rms_u[k] : (double)NAN,
+            cs->nt ? cs->nu_dy[k] : (double)NAN,
+            cs->nt ? cs->rms_dy[k] : (double)NAN, cs->n, cs->D0, cs->W, cs->U0,
+            cs->rho0, cs->c0, cs->t_end, cs->steps, cs->wall_s, cs->stable,
+            cs->t_stop);
+  if (fclose(f) || !buf) {
+    free(buf);
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot build the shear summary");
+    return NULL;
+  }
+  return buf;
+}
+
+int vsph_shear_csv_load(const char *path, struct vsph_contact_shear *cs) {
+  memset(cs, 0, sizeof *cs);
+  FILE *probe = fopen(path, "r");
+  if (!probe) return VSPH_EIO;
+  fclose(probe);
+  struct vsph_csv *t = vsph_csv_read(path);
+  if (!t) return VSPH_EIO;
+  static const char *const NAMES[] = {
+      "t",  "nu_u", "rms_u", "nu_dy", "rms_dy", "n",      "D0",     "W",
+      "U0", "rho0", "c0",    "t_end", "steps",  "wall_s", "stable", "t_stop"};
+  const double *c[16];
+  int ok = t->nrow >= 1 && t->nrow <= 8;
+  for (int k = 0; k < 16 && ok; k++)
+    ok = (c[k] = vsph_csv_column(t, NAMES[k])) != NULL;
+  if (!ok) {
+    vsph_csv_free(t);
+    return VSPH_EIO;
+  }
+  cs->nt = c[0][0] == c[0][0] ? t->nrow : 0; /* NaN: no profile reached */
+  for (size_t k = 0; k < cs->nt; k++) {
+    cs->t[k] = c[0][k];
+    cs->nu_u[k] = c[1][k];
+    cs->rms_u[k] = c[2][k];
+    cs->nu_dy[k] = c[3][k];
+    cs->rms_dy[k] = c[4][k];
+  }
+  cs->n = (size_t)c[5][0];
+  cs->D0 = c[6][0];
+  cs->W = c[7][0];
+  cs->U0 = c[8][0];
+  cs->rho0 = c[9][0];
+  cs->c0 = c[10][0];
+  cs->t_end = c[11][0];
+  cs->steps = (size_t)c[12][0];
+  cs->wall_s = c[13][0];
+  cs->stable = (int)c[14][0];
+  cs->t_stop = c[15][0];
+  vsph_csv_free(t);
+  return VSPH_OK;
+}

@@ -1,0 +1,284 @@
+/* Contact SPH (issue 12; Parshikov et al., P002): the acoustic Riemann
+ * solver against the linear acoustic Riemann problem solved
+ * independently, the shear layer's closed forms, Table 1 and fit (37) as
+ * data, conservation and 1 against 2 threads, and the shear test in its
+ * static-lattice limit against the lattice sums (with and without the
+ * physical viscosity and the correcting tensor). */
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../analysis/contact.h"
+#include "../common/params.h"
+#include "../kernels/kernel.h"
+#include "../solver/integrate.h"
+#include "../solver/materials.h"
+#include "../solver/pair.h"
+#include "../solver/particles.h"
+#include "../solver/run.h"
+#include "../solver/scene.h"
+#include "check_suites.h"
+
+/* The linear acoustic Riemann problem between a left state (p_L, u_L,
+ * Z_L) and a right one: for t > 0 the contact state (p*, u*) keeps the
+ * invariant p + Z_L u of the characteristic leaving the left and p - Z_R u
+ * of the one leaving the right, a 2 x 2 linear system solved here by
+ * GSL's LU decomposition, independently of eqs. (8)-(9)'s closed form.
+ * Rounding: 1e-12 of the states' scale. Also: swapping the particles
+ * (and so reversing e) leaves P* and reverses U*. */
+START_TEST(test_riemann_exact) {
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 12);
+  for (int trial = 0; trial < 200; trial++) {
+    const double pL = 1e6 * (gsl_rng_uniform(r) - 0.5),
+                 pR = 1e6 * (gsl_rng_uniform(r) - 0.5);
+    const double uL = 100 * (gsl_rng_uniform(r) - 0.5),
+                 uR = 100 * (gsl_rng_uniform(r) - 0.5);
+    const double ZL = 1e5 + 3e7 * gsl_rng_uniform(r),
+                 ZR = 1e5 + 3e7 * gsl_rng_uniform(r);
+    double a[4] = {1.0, ZL, 1.0, -ZR}, bb[2] = {pL + ZL * uL, pR - ZR * uR};
+    gsl_matrix_view A = gsl_matrix_view_array(a, 2, 2);
+    gsl_vector_view B = gsl_vector_view_array(bb, 2);
+    gsl_vector *x = gsl_vector_alloc(2);
+    gsl_permutation *pm = gsl_permutation_alloc(2);
+    int sg;
+    ck_assert_int_eq(gsl_linalg_LU_decomp(&A.matrix, pm, &sg), 0);
+    ck_assert_int_eq(gsl_linalg_LU_solve(&A.matrix, pm, &B.vector, x), 0);
+    double P, U, P2, U2;
+    vsph_pair_riemann(pL, pR, ZL, ZR, uL, uR, &P, &U);
+    const double ps = 1e6 + 3e7 * 100, us = 100 + 1e6 / 1e5;
+    ck_assert_double_eq_tol(P, gsl_vector_get(x, 0), 1e-12 * ps);
+    ck_assert_double_eq_tol(U, gsl_vector_get(x, 1), 1e-12 * us);
+    vsph_pair_riemann(pR, pL, ZR, ZL, -uR, -uL, &P2, &U2);
+    ck_assert_double_eq_tol(P2, P, 1e-12 * ps);
+    ck_assert_double_eq_tol(U2, -U, 1e-12 * us);
+    gsl_vector_free(x);
+    gsl_permutation_free(pm);
+  }
+  gsl_rng_free(r);
+}
+END_TEST
+
+/* The shear layer's closed forms: the control surface's displacement is
+ * the time integral of u_y, checked by a central difference in t (its
+ * error ~ eps^2 u_ttt: 1e-7 of U0 at eps = 1e-3 t); u_y is odd in x and
+ * tends to the step at t -> 0; the period's images: u(-W) = 0. */
+START_TEST(test_shear_closed_forms) {
+  const double W = 800e-9, U0 = 500.0, nu = 1.7e-6, t = 4.5e-9;
+  for (int k = -9; k <= 9; k++) {
+    const double x = k * 0.1 * W, e = 1e-3 * t;
+    const double du = (vsph_contact_shear_dy(x, t + e, nu, U0, W) -
+                       vsph_contact_shear_dy(x, t - e, nu, U0, W)) /
+                      (2.0 * e);
+    ck_assert_double_eq_tol(du, vsph_contact_shear_u(x, t, nu, U0, W),
+                            1e-7 * U0);
+    ck_assert_double_eq_tol(vsph_contact_shear_u(-x, t, nu, U0, W),
+                            -vsph_contact_shear_u(x, t, nu, U0, W), 1e-12 * U0);
+  }
+  ck_assert_double_eq_tol(vsph_contact_shear_u(0.1 * W, 1e-18, nu, U0, W), U0,
+                          1e-12 * U0);
+  ck_assert_double_eq_tol(vsph_contact_shear_u(-W, 10 * t, nu, U0, W), 0.0,
+                          1e-12 * U0);
+  /* the bimaterial solution is continuous at the interface, at U* */
+  double us;
+  const double uL = vsph_contact_bimaterial_u(-1e-15, t, -1, 0.08, 910, 1, 1.48,
+                                              1250, &us),
+               uR = vsph_contact_bimaterial_u(1e-15, t, -1, 0.08, 910, 1, 1.48,
+                                              1250, NULL);
+  ck_assert_double_eq_tol(uL, us, 1e-6);
+  ck_assert_double_eq_tol(uR, us, 1e-6);
+  /* P002's digest: U* = 0.669 U0 for glycerol at +U0, paraffin at -U0
+   * (eta 80 mPa s), to its three digits */
+  ck_assert_double_eq_tol(us, 0.669, 0.0005);
+}
+END_TEST
+
+/* Table 1 as data: eta_num/(Z D0) is 0.0894 +- 0.0025 (Wendland; its
+ * rows spread 0.0872-0.0912) and
+ * 0.1078 +- 0.002 (B-spline; its rows spread 0.1061-0.1081) for every row but
+ * paraffin and nitromethane (the paper's own outliers), so a transcription slip
+ * in any column shows; fit (37) is continuous at alpha = 0.55 to its printed
+ * digits (1e-4) and gives 0.08942 at 0.5. */
+START_TEST(test_materials_table) {
+  ck_assert_int_eq(vsph_materials_count(), 20);
+  int normal = 0;
+  for (int i = 0; i < vsph_materials_count(); i++) {
+    const struct vsph_material *m = vsph_materials_get(i);
+    const double zd = m->rho0 * m->c0 * VSPH_MATERIALS_D0;
+    if (!strcmp(m->name, "paraffin") || !strcmp(m->name, "nitromethane"))
+      continue;
+    normal++;
+    ck_assert_double_eq_tol(m->eta_num_w / zd, 0.0894, 0.0025);
+    ck_assert_double_eq_tol(m->eta_num_b / zd, 0.1078, 0.002);
+  }
+  ck_assert_int_eq(normal, 18);
+  const struct vsph_material *lead;
+  ck_assert_int_eq(vsph_materials_resolve("lead", &lead), 0);
+  ck_assert_double_eq(lead->rho0, 11350.0);
+  vsph_test_silence();
+  ck_assert_int_ne(vsph_materials_resolve("unobtainium", &lead), 0);
+  ck_assert_double_eq_tol(vsph_materials_eta_num_fit(0.55),
+                          vsph_materials_eta_num_fit(0.55 + 1e-12), 1e-4);
+  ck_assert_double_eq_tol(vsph_materials_eta_num_fit(0.5), 0.08942, 1e-5);
+}
+END_TEST
+
+/* A contact run of the shear scene from @p set (NULL-terminated
+ * "key=value" strings) on top of a small lead box. */
+static struct vsph_run *shear_run(const char *const *set) {
+  struct vsph_params *prm = vsph_params_alloc();
+  static const char *const base[] = {
+      "Solver:scheme=contact", "Solver:kernel=wendland2",
+      "Solver:alpha=0.5",      "Solver:res=40",
+      "Scene:W=400e-9",        "Scene:Ly=40e-9",
+      "Scene:Lz=40e-9",        NULL};
+  for (int pass = 0; pass < 2; pass++)
+    for (const char *const *s = pass ? set : base; s && *s; s++) {
+      char kv[128];
+      snprintf(kv, sizeof kv, "%s", *s);
+      char *eq = strchr(kv, '=');
+      *eq = '\0';
+      ck_assert_int_eq(vsph_params_set(prm, kv, eq + 1), 0);
+    }
+  struct vsph_run_props rp;
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
+  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_shear_type, prm), 0);
+  vsph_params_free(prm);
+  struct vsph_run *run = NULL;
+  ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+  return run;
+}
+
+/* The pair shares are antisymmetric (the Riemann solution and the
+ * traction), so the total force vanishes to rounding on a disordered set
+ * of two materials (lead | water: unequal impedances) with random
+ * velocities and the corrected viscosity: |sum m a| <= 1e-12 sum m |a|. */
+START_TEST(test_contact_momentum) {
+  static const char *const set[] = {"Scene:left=water", "Solver:perturb=0.3",
+                                    "Solver:zeta_num=0.5", NULL};
+  struct vsph_run *run = shear_run(set);
+  struct vsph_integrate *s = run->integ;
+  struct vsph_particles *p = s->p;
+  gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(r, 7);
+  for (size_t i = 0; i < p->n; i++)
+    for (int k = 0; k < 3; k++) p->vel[k][i] += 50 * (gsl_rng_uniform(r) - 0.5);
+  gsl_rng_free(r);
+  ck_assert_ptr_nonnull(p->mat);
+  struct vsph_equations_energy en;
+  struct vsph_equations_budget b;
+  ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &b), 0);
+  double sum[3] = {0, 0, 0}, mag = 0.0;
+  size_t nmat1 = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= s->n_fluid) continue;
+    nmat1 += p->mat[i];
+    for (int k = 0; k < 3; k++) {
+      sum[k] += p->m[i] * p->acc[k][i];
+      mag += p->m[i] * fabs(p->acc[k][i]);
+    }
+  }
+  ck_assert_uint_eq(nmat1, s->n_fluid / 2);
+  ck_assert_double_gt(mag, 0.0);
+  for (int k = 0; k < 3; k++) ck_assert_double_le(fabs(sum[k]), 1e-12 * mag);
+  vsph_run_free(run);
+}
+END_TEST
+
+/* Gather form: 1 and 2 threads give the same bits after 20 steps of a
+ * disordered two-material viscous contact run. */
+START_TEST(test_contact_threads) {
+  static const char *const set[] = {"Scene:left=water", "Solver:perturb=0.2",
+                                    "Solver:zeta_num=1", NULL};
+  double *state[2];
+  size_t n = 0;
+  for (int t = 0; t < 2; t++) {
+    omp_set_num_threads(t + 1);
+    struct vsph_run *run = shear_run(set);
+    for (int k = 0; k < 20; k++) ck_assert_int_eq(vsph_run_iterate(run), 0);
+    ck_assert_int_eq(run->state, VSPH_RUN_RUNNING);
+    const struct vsph_particles *p = run->integ->p;
+    n = run->n_fluid;
+    state[t] = malloc(7 * n * sizeof(double));
+    for (size_t i = 0; i < p->n; i++) {
+      const size_t id = p->id[i];
+      if (id >= n) continue;
+      for (int k = 0; k < 3; k++) {
+        state[t][7 * id + k] = p->pos[k][i];
+        state[t][7 * id + 3 + k] = p->vel[k][i];
+      }
+      state[t][7 * id + 6] = p->rho[i];
+    }
+    vsph_run_free(run);
+  }
+  omp_set_num_threads(2);
+  ck_assert_int_eq(memcmp(state[0], state[1], 7 * n * sizeof(double)), 0);
+  free(state[0]);
+  free(state[1]);
+}
+END_TEST
+
+/* The shear test in its static-lattice limit: at U0 = 0.05 m/s the
+ * layers slide by 1e-2 D0 in 2 ns, so the lattice stays the simple cubic
+ * one and the measured viscosity must be the lattice sums' (docs/theory.md
+ * section 12): the acoustic solver's eta_num = k_lat Z D0, plus the
+ * traction's f_lat (eta - zeta eta_num^(37)). In units of Z D0:
+ *   lead, inviscid         k_lat                              = 0.0858
+ *   silica, zeta 0         k_lat + f_lat eta/(Z D0)           = 0.1844
+ *   silica, zeta 1         k_lat + f_lat (eta/(Z D0) - 0.08942) = 0.0931
+ * (silica: eta/(Z D0) = 0.0965, its profiles 18 and 25 D0 wide at
+ * 2 ns). Tolerance 4e-4 Z D0 (0.5 % of k_lat): measured within 2e-4 (the
+ * slabs' sampling of the profile); a 1 % slip in the traction's
+ * coefficient moves the zeta = 0 case by 1e-3, the correction dropped the
+ * zeta = 1 one by 0.09. Lead's profile is 11 D0 wide at 2 ns, and its
+ * control surface, which remembers the earlier, narrower and less
+ * resolved profiles, fits 0.7 % low: 1e-3 there. */
+START_TEST(test_shear_static_limit) {
+  static const char *const visc[3] = {"0", "1", "1"};
+  static const char *const zeta[3] = {"0", "0", "1"};
+  static const char *const mat[3] = {"lead", "silica", "silica"};
+  const struct vsph_kernel_type *k = vsph_kernel_find("wendland2");
+  const double klat = vsph_contact_lattice_coef(k, 3, 0.5),
+               flat = vsph_contact_lattice_visc_factor(k, 3, 0.5);
+  const double zd = 2480.0 * 4181.18 * 10e-9, eta = 10e-3;
+  const double want[3] = {klat, klat + flat * eta / zd,
+                          klat + flat * (eta / zd - 0.08942)};
+  struct vsph_params *prm = vsph_params_alloc();
+  const char *kv[][2] = {
+      {"Solver:scheme", "contact"}, {"Solver:kernel", "wendland2"},
+      {"Solver:alpha", "0.5"},      {"Solver:res", "40"},
+      {"Scene:W", "400e-9"},        {"Scene:Ly", "40e-9"},
+      {"Scene:Lz", "40e-9"},        {"Scene:U0", "0.05"},
+      {"Scene:t_end", "2e-9"},      {"Scene:viscous", visc[_i]},
+      {"Scene:material", mat[_i]},  {"Solver:zeta_num", zeta[_i]}};
+  for (size_t q = 0; q < sizeof kv / sizeof kv[0]; q++)
+    ck_assert_int_eq(vsph_params_set(prm, kv[q][0], kv[q][1]), 0);
+  struct vsph_contact_shear cs = {.nprof = 1, .quiet = 1};
+  ck_assert_int_eq(vsph_contact_shear_measure(prm, &cs), 0);
+  vsph_params_free(prm);
+  ck_assert(cs.stable);
+  ck_assert_uint_eq(cs.nt, 1);
+  ck_assert_double_eq_tol(cs.nu_u[0] / (cs.c0 * cs.D0), want[_i], 4e-4);
+  ck_assert_double_eq_tol(cs.nu_dy[0] / (cs.c0 * cs.D0), want[_i],
+                          _i ? 4e-4 : 1e-3);
+  vsph_contact_shear_free(&cs);
+}
+END_TEST
+
+Suite *vsph_contact_suite(void) {
+  Suite *s = suite_create("contact");
+  TCase *tc = tcase_create("contact");
+  tcase_set_timeout(tc, 60);
+  tcase_add_test(tc, test_riemann_exact);
+  tcase_add_test(tc, test_shear_closed_forms);
+  tcase_add_test(tc, test_materials_table);
+  tcase_add_test(tc, test_contact_momentum);
+  tcase_add_test(tc, test_contact_threads);
+  tcase_add_loop_test(tc, test_shear_static_limit, 0, 3);
+  suite_add_tcase(s, tc);
+  return s;
+}
