@@ -50,6 +50,8 @@ static const struct part PARTS[] = {
      "Laplacian patch tests of VISC-01..04 beside Zheng et al. (2018)"},
     {"channel", vsph_report_channel_write, 0,
      "internal flows (Poiseuille, Couette) and the other formulations"},
+    {"contact", vsph_report_contact_write, 0,
+     "contact SPH: the numerical viscosity of its Riemann solver"},
     {"claims", vsph_report_claims_write, 0,
      "the paper's claims beside our figures"},
 };

@@ -418,6 +418,8 @@ int vsph_report_claims_write(struct vsph_report *R) {
   if (!st) st = vsph_report_patch_claims(R);
   R->claim_see = "channel";
   if (!st) st = vsph_report_channel_claims(R);
+  R->claim_see = "contact";
+  if (!st) st = vsph_report_contact_claims(R);
   R->claim_see = NULL;
   for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++)
     for (int f = 0; f < NFORM; f++) vsph_report_runs_free(&fi.run[sc][f]);

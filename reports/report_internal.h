@@ -294,4 +294,9 @@ int vsph_report_patch_claims(struct vsph_report *R);
 int vsph_report_channel_write(struct vsph_report *R);
 int vsph_report_channel_claims(struct vsph_report *R);
 
+/* Section 12: contact SPH and its numerical viscosity
+ * (report_contact.c), and its claims. */
+int vsph_report_contact_write(struct vsph_report *R);
+int vsph_report_contact_claims(struct vsph_report *R);
+
 #endif /* VSPH_REPORTS_REPORT_INTERNAL_H */

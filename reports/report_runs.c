@@ -101,7 +101,11 @@ static int load_run_json(struct vsph_report_run *r) {
 static size_t settings(const struct vsph_report_runspec *rs, int snaps,
                        char set[][128], size_t cap) {
   size_t n = 0;
-  snprintf(set[n++], 128, "Solver:visc=%s", rs->visc);
+  /* "contact" names the scheme (contact SPH has no viscous form) */
+  if (!strcmp(rs->visc, "contact"))
+    snprintf(set[n++], 128, "Solver:scheme=contact");
+  else
+    snprintf(set[n++], 128, "Solver:visc=%s", rs->visc);
   snprintf(set[n++], 128, "Solver:res=%zu", rs->res);
   snprintf(set[n++], 128, "Solver:t_end=%.17g", rs->t_end);
   snprintf(set[n++], 128, "Solver:snapshots=%d", snaps);
@@ -591,9 +595,35 @@ static const struct {
 static const char *const CAVITY_BASE[] = {"mgf", "meaf", "vi", "cleary", "er"};
 #define NCAVITY_BASE (sizeof CAVITY_BASE / sizeof CAVITY_BASE[0])
 
+/* The contact-SPH rows: the shear scene at D0 = 40 nm to 1 ns (Wendland
+ * C2, alpha = 0.5, 3 D0 deep): lead inviscid, lead with its viscosity and
+ * the full correction, paraffin | glycerol at 10 m/s to 0.4 us with it;
+ * E_k(t_end)/E_k(0) and P_visc(t_end)/P_visc(0), the acoustic solver's
+ * dissipation and the stress's (the shear scene has no velocity error). */
+#define CONTACT_BASE_COMMON "Solver:kernel=wendland2", "Solver:alpha=0.5"
+static const char *const CONTACT_LEAD[] = {CONTACT_BASE_COMMON,
+                                           "Scene:Ly=120e-9", "Scene:Lz=120e-9",
+                                           "Scene:viscous=0", NULL};
+static const char *const CONTACT_LEADZ[] = {
+    CONTACT_BASE_COMMON, "Scene:Ly=120e-9", "Scene:Lz=120e-9",
+    "Solver:zeta_num=1", NULL};
+static const char *const CONTACT_BI[] = {
+    CONTACT_BASE_COMMON,   "Scene:W=600e-6",    "Scene:Ly=30e-6",
+    "Scene:Lz=30e-6",      "Scene:U0=10",       "Scene:material=glycerol",
+    "Scene:left=paraffin", "Solver:zeta_num=1", NULL};
+static const struct {
+  size_t res;
+  double t_end;
+  const char *const *set;
+  const char *tag;
+} CONTACT_BASE[] = {{20, 1e-9, CONTACT_LEAD, "contact-lead"},
+                    {20, 1e-9, CONTACT_LEADZ, "contact-leadz1"},
+                    {60, 0.4e-6, CONTACT_BI, "contact-bimaterial"}};
+#define NCONTACT_BASE (sizeof CONTACT_BASE / sizeof CONTACT_BASE[0])
+
 size_t vsph_report_runs_baseline_count(void) {
   return VSPH_REPORT_NSCENES * VSPH_VISCOUS_PAPER_COUNT +
-         2 * VSPH_VISCOUS_FORM_COUNT + NCAVITY_BASE;
+         2 * VSPH_VISCOUS_FORM_COUNT + NCAVITY_BASE + NCONTACT_BASE;
 }
 
 /* A baseline row from the run of @p rs: its final E_k (relative to the
@@ -626,6 +656,30 @@ static int cavity_baseline(struct vsph_report *R, size_t j,
   return velocity_row(R, &rs, 0, b);
 }
 
+/* Contact row j of the baseline. */
+static int contact_baseline(struct vsph_report *R, size_t j,
+                            struct vsph_report_baseline *b) {
+  const struct vsph_report_runspec rs = {"shear",
+                                         "contact",
+                                         CONTACT_BASE[j].res,
+                                         CONTACT_BASE[j].t_end,
+                                         CONTACT_BASE[j].set,
+                                         CONTACT_BASE[j].tag};
+  struct vsph_report_run r;
+  const int st = vsph_report_runs_get(R, &rs, &r);
+  if (st) return st;
+  snprintf(b->scene, sizeof b->scene, "shear");
+  snprintf(b->visc, sizeof b->visc, "contact");
+  b->res = rs.res;
+  b->t_end = rs.t_end;
+  const size_t last = r.nrow - 1;
+  b->ek_final = r.Ek[last] / r.Ek[0];
+  b->diss0 = r.Pv[last] / r.Pv[0];
+  b->ok = r.ok;
+  vsph_report_runs_free(&r);
+  return VSPH_OK;
+}
+
 /* Channel row j of the baseline. */
 static int channel_baseline(struct vsph_report *R, size_t j,
                             struct vsph_report_baseline *b) {
@@ -647,6 +701,8 @@ int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
     VSPH_FAIL(VSPH_EINVAL, "no baseline row %zu", i);
   const size_t nfree = VSPH_REPORT_NSCENES * VSPH_VISCOUS_PAPER_COUNT;
   const size_t nchan = 2 * VSPH_VISCOUS_FORM_COUNT;
+  if (i >= nfree + nchan + NCAVITY_BASE)
+    return contact_baseline(R, i - nfree - nchan - NCAVITY_BASE, b);
   if (i >= nfree + nchan) return cavity_baseline(R, i - nfree - nchan, b);
   if (i >= nfree) return channel_baseline(R, i - nfree, b);
   const int sc = (int)(i / VSPH_VISCOUS_PAPER_COUNT);

@@ -85,6 +85,7 @@ struct rhs_ctx {
   double cmat[VSPH_EQUATIONS_MAT_MAX];
   double etap[VSPH_EQUATIONS_MAT_MAX][VSPH_EQUATIONS_MAT_MAX];
   int cvisc;
+  int fixed[VSPH_EQUATIONS_MAT_MAX]; /* materials held in place */
 };
 
 /* Basa et al.'s corrections, first pass: S_i = sum_j V_j W_ij (j = i
@@ -343,9 +344,9 @@ VSPH_CONSTS_SPECIALISE size_t contact_one(
     nint += m;
   }
   const double ap[3] = {ap0, ap1, ap2}, av[3] = {av0, av1, av2};
-  const double rinv = 1.0 / rhoi;
-  double gb[3];
-  vsph_equations_body_force(rc->ep, it.xi, gb);
+  const double rinv = rc->fixed[mi] ? 0.0 : 1.0 / rhoi;
+  double gb[3] = {0, 0, 0};
+  if (!rc->fixed[mi]) vsph_equations_body_force(rc->ep, it.xi, gb);
   out->drho[i] = rhoi * cont;
   for (int k = 0; k < dim; k++) out->acc[k][i] = rinv * ap[k] + gb[k];
   if (rc->parts) {
@@ -539,6 +540,7 @@ static int contact_init(const struct vsph_equations_props *ep,
   for (int a = 0; a < ep->nmat; a++) {
     const struct vsph_equations_mat *ma = &ep->mat[a];
     rc->cmat[a] = ma->c0;
+    rc->fixed[a] = ma->fixed;
     for (int b = 0; b < ep->nmat; b++) {
       const struct vsph_equations_mat *mb = &ep->mat[b];
       rc->etap[a][b] =

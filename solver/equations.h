@@ -61,6 +61,11 @@ struct vsph_equations_mat {
   double c0;      /*!< sound speed (m/s); Z = rho c0 */
   double mu;      /*!< physical viscosity (Pa s) */
   double eta_num; /*!< numerical viscosity (Pa s), P002 eq. (37) */
+  int fixed;      /*!< 1: a rigid body held in place (a cylinder): its
+                       particles get no acceleration and no body force,
+                       their density follows the strain rate; mu = 0 and
+                       eta_num = 0, so the fluid sticks to them through the
+                       Riemann solution alone, uncorrected (P002's ball) */
 };
 
 /** Tait's exponent (Batchelor; Basa et al.'s eq. 13). */

@@ -32,6 +32,19 @@ static inline double vsph_materials_eta_num_fit(double alpha) {
   return alpha <= 0.55 ? 0.47142 * alpha - 0.14629 : 0.18093 * alpha + 0.01347;
 }
 
+/** @brief F/(eta U) of Stokes flow through a periodic row of cylinders of
+ *  diameter d at period S, U the mean velocity, as P002's eq. (39) after
+ *  Thilo, Meyer & Kasper (a Miyagi-type series in w = pi d/(2S)):
+ *  8 pi a0, a0 = [1 - 2 ln(2w) + 2w^2/3 - w^4/9 + 8w^6/135 - 53w^8/1350 +
+ *  1112w^10/42525 - 241643w^12/13395375 + 18776w^14/1488375]^-1; so that
+ *  C_D = 16 pi a0/Re. */
+double vsph_materials_drag_row(double d_over_S);
+
+/** @brief The same for the square array, Sangani & Acrivos (1982):
+ *  4 pi/(-ln(c)/2 - 0.738 + c - 0.887 c^2 + 2.038 c^3), c = pi d^2/(4S^2)
+ *  the solid fraction. */
+double vsph_materials_drag_square(double d_over_S);
+
 /** @brief Number of rows (20). */
 int vsph_materials_count(void);
 

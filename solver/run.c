@@ -214,7 +214,8 @@ static int check_cost(const struct vsph_run_props *rp,
     if (L > 0.0 && !(L > 1.25 * reach))
       VSPH_FAIL(VSPH_EINVAL,
                 "the periodic length %g m is too short for the kernel's "
-                "reach %g m%s: lengthen it (Scene:length) or raise res",
+                "reach %g m%s: lengthen the period (the scene's length, Ly or "
+                "Lz) or raise res",
                 L, reach,
                 deep > 1 ? " (two supports for a two-pass form)" : "");
   }
@@ -337,8 +338,10 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
     else
       ip.eq.mat[0] = (struct vsph_equations_mat){
           .rho0 = ip.eq.rho0, .c0 = ip.eq.c0, .mu = ip.eq.visc.mu};
-    for (int m = 0; m < ip.eq.nmat; m++)
-      ip.eq.mat[m].eta_num = k * ip.eq.mat[m].rho0 * ip.eq.mat[m].c0 * r->dx;
+    for (int m = 0; m < ip.eq.nmat; m++) /* none for a body held fixed */
+      ip.eq.mat[m].eta_num =
+          ip.eq.mat[m].fixed ? 0.0
+                             : k * ip.eq.mat[m].rho0 * ip.eq.mat[m].c0 * r->dx;
   }
   if (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS) { /* p = p0 rho/rho0 at t = 0 */
     if ((st = vsph_particles_energy_alloc(fluid))) goto fail;

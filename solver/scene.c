@@ -12,7 +12,7 @@ static const struct vsph_scene_type *const scene_table[] = {
     &vsph_vortex_patch_type,    &vsph_stretching_square_type,
     &vsph_standing_wave_type,   &vsph_channel_poiseuille_type,
     &vsph_channel_couette_type, &vsph_cavity_type,
-    &vsph_shear_type,
+    &vsph_shear_type,           &vsph_cylinders_type,
 };
 
 int vsph_scene_is_channel(const struct vsph_scene_type *type) {

@@ -105,6 +105,24 @@ struct vsph_scene_shear {
   char left[VSPH_PARAMS_NAME_MAX];     /*!< x < 0: "same" or a material */
 };
 
+/** Stokes flow through a periodic array of cylinders (P002 section 5.5;
+ *  docs/theory.md section 12): 2-D, one cylinder of diameter d in the
+ *  periodic square of side S, a held body of contact SPH particles,
+ *  the fluid driven by a uniform force along x. */
+struct vsph_scene_cylinders {
+  double d;     /*!< cylinder diameter (m) */
+  double dS;    /*!< d/S */
+  double Re;    /*!< rho U d/eta at the drive's Stokes velocity */
+  double t_end; /*!< default end time (s) */
+  char material[VSPH_PARAMS_NAME_MAX]; /*!< the fluid (Table 1) */
+  /* derived by the scene's setup */
+  double S;   /*!< period (m) */
+  double U;   /*!< superficial velocity the drive gives in Stokes flow with
+                   the physical viscosity, by eq. (39) (m/s) */
+  double f;   /*!< the drive (m/s^2) */
+  double eta; /*!< the fluid's viscosity (Pa s) */
+};
+
 struct vsph_scene;
 
 /** Scene descriptor. */
@@ -153,6 +171,7 @@ struct vsph_scene {
     struct vsph_scene_channel channel; /*!< poiseuille, couette */
     struct vsph_scene_cavity cavity;   /*!< cavity */
     struct vsph_scene_shear shear;     /*!< shear */
+    struct vsph_scene_cylinders cyl;   /*!< cylinders */
   } u;
 };
 
@@ -163,6 +182,7 @@ extern const struct vsph_scene_type vsph_channel_poiseuille_type;
 extern const struct vsph_scene_type vsph_channel_couette_type;
 extern const struct vsph_scene_type vsph_cavity_type;
 extern const struct vsph_scene_type vsph_shear_type;
+extern const struct vsph_scene_type vsph_cylinders_type;
 
 /** @brief 1 if @p type is a channel (Poiseuille or Couette: a velocity
  *  profile with a series reference), else 0. */

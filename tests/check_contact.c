@@ -269,6 +269,77 @@ START_TEST(test_shear_static_limit) {
 }
 END_TEST
 
+/* Eq. (39) and Sangani & Acrivos: C_D Re = 2 F/(eta U) at d/S = 0.5 and
+ * 0.3 against the digest's recomputation of P002's Table 2 (a0 = 2.1018
+ * and 0.79263, C_D = 21130 and 7968 at Re = 0.005; Sangani-Acrivos 19830
+ * and 7690), to their printed digits: a slip in any coefficient of the
+ * series shows at d/S = 0.5, where w^14 still weighs 1e-3. */
+START_TEST(test_drag_formulas) {
+  const double k5 = vsph_materials_drag_row(0.5),
+               k3 = vsph_materials_drag_row(0.3);
+  ck_assert_double_eq_tol(k5 / (8 * M_PI), 2.1018, 1e-4);
+  ck_assert_double_eq_tol(k3 / (8 * M_PI), 0.79263, 1e-5);
+  ck_assert_double_eq_tol(2 * k5 / 0.005, 21130, 5);
+  ck_assert_double_eq_tol(2 * k3 / 0.005, 7968, 1);
+  ck_assert_double_eq_tol(2 * vsph_materials_drag_square(0.5) / 0.005, 19830,
+                          10);
+  ck_assert_double_eq_tol(2 * vsph_materials_drag_square(0.3) / 0.005, 7690,
+                          10);
+}
+END_TEST
+
+/* The cylinder is held: after 30 steps of the driven flow its particles
+ * have not moved and have no velocity (exactly); the fluid has gained
+ * momentum along x, less than the drive alone gives (the cylinder holds
+ * it back), and none along y (the lattice and the cylinder are symmetric
+ * about y = S/2: rounding). */
+START_TEST(test_cylinder_held) {
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:scheme", "contact"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:kernel", "wendland2"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:alpha", "0.5"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:res", "20"), 0);
+  struct vsph_run_props rp;
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
+  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_cylinders_type, prm), 0);
+  vsph_params_free(prm);
+  struct vsph_run *run = NULL;
+  ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+  const size_t nf = run->n_fluid;
+  double *x0 = malloc(2 * nf * sizeof *x0);
+  const struct vsph_particles *p = run->integ->p;
+  for (size_t i = 0; i < p->n; i++)
+    if (p->id[i] < nf)
+      for (int k = 0; k < 2; k++) x0[2 * p->id[i] + k] = p->pos[k][i];
+  for (int s = 0; s < 30; s++) ck_assert_int_eq(vsph_run_iterate(run), 0);
+  p = run->integ->p;
+  double P[2] = {0, 0}, mf = 0.0;
+  size_t nsolid = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= nf) continue;
+    if (p->mat[i]) {
+      nsolid++;
+      for (int k = 0; k < 2; k++) {
+        ck_assert_double_eq(p->pos[k][i], x0[2 * p->id[i] + k]);
+        ck_assert_double_eq(p->vel[k][i], 0.0);
+      }
+      continue;
+    }
+    mf += p->m[i];
+    for (int k = 0; k < 2; k++) P[k] += p->m[i] * p->vel[k][i];
+  }
+  /* 20 x 20 lattice: the points within d/2 = 5 D0 of the centre */
+  ck_assert_uint_eq(nsolid, 80);
+  const double want = sc.u.cyl.f * mf * vsph_run_time(run);
+  ck_assert_double_gt(P[0], 0.5 * want);
+  ck_assert_double_lt(P[0], want);
+  ck_assert_double_le(fabs(P[1]), 1e-9 * want);
+  free(x0);
+  vsph_run_free(run);
+}
+END_TEST
+
 Suite *vsph_contact_suite(void) {
   Suite *s = suite_create("contact");
   TCase *tc = tcase_create("contact");
@@ -279,6 +350,8 @@ Suite *vsph_contact_suite(void) {
   tcase_add_test(tc, test_contact_momentum);
   tcase_add_test(tc, test_contact_threads);
   tcase_add_loop_test(tc, test_shear_static_limit, 0, 3);
+  tcase_add_test(tc, test_drag_formulas);
+  tcase_add_test(tc, test_cylinder_held);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -291,6 +291,41 @@ START_TEST(test_messages_name_the_problem) {
 }
 END_TEST
 
+/* Contact SPH's bad input (issue 12): each one line on stderr naming the
+ * problem, exit status 2, no folder. */
+START_TEST(test_contact_inputs) {
+  static const char *const cases[][2] = {
+      {"run shear --scheme nope", "Solver:scheme"},
+      {"run shear --res 200 --set Scene:left=water", "two materials"},
+      {"run cylinders", "two materials"},
+      {"run cavity --scheme contact --tvf 0", "wall particles"},
+      {"run shear --scheme contact --alpha 0.1", "Solver:alpha"},
+      {"run shear --zeta-num 0.5", "contact only"},
+      {"run shear --scheme contact --set Scene:Lz=1e-9", "periodic length"},
+      {"run shear --scheme contact --set Scene:material=unobtainium",
+       "unknown material"},
+      {"run shear --scheme contact --set Scene:material=lif", "no viscosity"},
+      {"run shear --scheme contact --delta 0.1", "linear law"},
+      {"run shear --scheme contact --set Scene:U0=nan", "Scene:U0"},
+      {"contact --profiles 0", "--profiles"},
+      {"contact --csv /nonexistent-dir/p.csv", "not writable"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    char args[300];
+    snprintf(args, sizeof args, "%s --out /tmp/vsph_never_contact",
+             cases[k][0]);
+    /* vsph contact has no --out: the case without it */
+    struct vsph_test_outcome *o =
+        vsph_test_cli(strncmp(cases[k][0], "contact", 7) ? args : cases[k][0]);
+    ck_assert_msg(o->status == 2, "'%s' exited %d", cases[k][0], o->status);
+    ck_assert_msg(o->err_lines == 1, "'%s' said %d lines: %s", cases[k][0],
+                  o->err_lines, o->err);
+    ck_assert_msg(strstr(o->err, cases[k][1]) != NULL, "'%s' said: %s",
+                  cases[k][0], o->err);
+    ck_assert_int_ne(access("/tmp/vsph_never_contact", F_OK), 0);
+  }
+}
+END_TEST
+
 Suite *vsph_hardening_suite(void) {
   Suite *s = suite_create("hardening");
   TCase *tc = tcase_create("defects");
@@ -303,6 +338,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_reused_folder);
   tcase_add_test(tc, test_several_params_files);
   tcase_add_test(tc, test_messages_name_the_problem);
+  tcase_add_test(tc, test_contact_inputs);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
