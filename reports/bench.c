@@ -92,9 +92,12 @@ static void step_once(void *v) {
 }
 
 /* Scene sc (the stretching square or the standing wave) at res across,
- * formulation form, delta-SPH coefficient delta, ready to step. */
+ * formulation form, delta-SPH coefficient delta (or contact SPH with the
+ * scene's viscosity, its stress uncorrected, when contact), ready to
+ * step. */
 static struct vsph_integrate *bench_run(const struct vsph_scene_type *type,
-                                        int form, size_t res, double delta) {
+                                        int form, size_t res, double delta,
+                                        int contact) {
   struct vsph_scene sc;
   struct vsph_particles *fluid = NULL;
   struct vsph_integrate_props ip;
@@ -108,6 +111,12 @@ static struct vsph_integrate *bench_run(const struct vsph_scene_type *type,
   ip.cfl = 1.0;
   ip.rho_band = 1.0;
   ip.eq.delta = delta;
+  if (contact) {
+    ip.eq.scheme = VSPH_EQUATIONS_CONTACT;
+    ip.eq.nmat = 1;
+    ip.eq.mat[0] = (struct vsph_equations_mat){
+        .rho0 = ip.eq.rho0, .c0 = ip.eq.c0, .mu = ip.eq.visc.mu};
+  }
   return vsph_integrate_alloc(&ip, fluid);
 }
 
@@ -166,7 +175,7 @@ static void print_row(FILE *out, const char *what, size_t n, int thr, double t,
  * run.json says peak_rss_bytes. 0 if it cannot be run. */
 static double run_peak_rss(const struct vsph_scene_type *type, int form,
                            size_t res, size_t *n) {
-  struct vsph_integrate *s = bench_run(type, form, res, 0.0);
+  struct vsph_integrate *s = bench_run(type, form, res, 0.0, 0);
   if (!s) return 0.0;
   const double t_end = 3.0 * vsph_integrate_dt(s);
   *n = s->n_fluid;
@@ -251,20 +260,24 @@ static int bench_solver(FILE *out, int busy) {
     const struct vsph_scene_type *type;
     int form;
     double delta;
-    int step; /* 0: one force evaluation, 1: one whole RK4 step */
+    int step;    /* 0: one force evaluation, 1: one whole RK4 step */
+    int contact; /* contact SPH instead of the viscous form */
   } cases[] = {
-      {"force MGF", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0, 0},
+      {"force MGF", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0, 0, 0},
       {"force MGF + delta 0.1", &vsph_stretching_square_type, VSPH_VISCOUS_MGF,
-       0.1, 0},
-      {"force MEAF", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 0.0, 0},
+       0.1, 0, 0},
+      {"force MEAF", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 0.0, 0,
+       0},
       {"force PVWF (2 passes)", &vsph_stretching_square_type, VSPH_VISCOUS_PVWF,
-       0.0, 0},
+       0.0, 0, 0},
+      {"force contact SPH", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF,
+       0.0, 0, 1},
       {"step MGF, stretching square", &vsph_stretching_square_type,
-       VSPH_VISCOUS_MGF, 0.0, 1},
+       VSPH_VISCOUS_MGF, 0.0, 1, 0},
       {"step PVWF, stretching square", &vsph_stretching_square_type,
-       VSPH_VISCOUS_PVWF, 0.0, 1},
+       VSPH_VISCOUS_PVWF, 0.0, 1, 0},
       {"step MGF, standing wave", &vsph_standing_wave_type, VSPH_VISCOUS_MGF,
-       0.0, 1},
+       0.0, 1, 0},
   };
   pid_t pids[8] = {0};
   if (busy > 8) busy = 8;
@@ -289,8 +302,8 @@ static int bench_solver(FILE *out, int busy) {
   busy_start(pids, busy);
   int st = VSPH_OK;
   for (size_t c = 0; c < sizeof cases / sizeof cases[0] && !st; c++) {
-    struct solver_arg a = {
-        .s = bench_run(cases[c].type, cases[c].form, res, cases[c].delta)};
+    struct solver_arg a = {.s = bench_run(cases[c].type, cases[c].form, res,
+                                          cases[c].delta, cases[c].contact)};
     if (!a.s) {
       st = VSPH_ENOMEM;
       break;

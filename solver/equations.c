@@ -493,7 +493,8 @@ static void run_cells(const struct rhs_ctx *rc, rhs_cell_fn *cell_loop,
 }
 
 /* Contact SPH's loops: the shear test's shapes (3-D, Wendland C2 or the
- * cubic B-spline, inviscid or viscous) specialised, any other general. */
+ * cubic B-spline, inviscid or viscous) and the cylinders' (2-D, Wendland
+ * C2) specialised, any other general. */
 #define CONTACT_SHAPE(name, D, KID, VISC)                                      \
   static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
                      const struct vsph_cells *cells, size_t c, size_t n_fluid, \
@@ -504,6 +505,8 @@ CONTACT_SHAPE(contact_c2_3, 3, VSPH_KERNEL_DFQ_C2, 0)
 CONTACT_SHAPE(contact_c2_3v, 3, VSPH_KERNEL_DFQ_C2, 1)
 CONTACT_SHAPE(contact_cubic_3, 3, VSPH_KERNEL_DFQ_CUBIC, 0)
 CONTACT_SHAPE(contact_cubic_3v, 3, VSPH_KERNEL_DFQ_CUBIC, 1)
+CONTACT_SHAPE(contact_c2_2, 2, VSPH_KERNEL_DFQ_C2, 0)
+CONTACT_SHAPE(contact_c2_2v, 2, VSPH_KERNEL_DFQ_C2, 1)
 #undef CONTACT_SHAPE
 
 static size_t contact_general(const struct rhs_ctx *rc,
@@ -516,6 +519,8 @@ static size_t contact_general(const struct rhs_ctx *rc,
 }
 
 static rhs_cell_fn *contact_choose(const struct rhs_ctx *rc) {
+  if (rc->pk.dim == 2 && rc->pk.dfq_id == VSPH_KERNEL_DFQ_C2)
+    return rc->cvisc ? contact_c2_2v : contact_c2_2;
   if (rc->pk.dim != 3) return contact_general;
   if (rc->pk.dfq_id == VSPH_KERNEL_DFQ_C2)
     return rc->cvisc ? contact_c2_3v : contact_c2_3;
