@@ -18,7 +18,8 @@ static const char *const CMD = "run";
 
 static const char ABOUT[] =
     "Run the weakly compressible free-surface solver (classical RK4; with\n"
-    "--tvf 1 the transport-velocity kick-drift-kick) on a\n"
+    "--tvf 1 the transport-velocity kick-drift-kick; with --scheme contact\n"
+    "contact SPH, each pair through the acoustic Riemann solution) on a\n"
     "scene (see vsph scenes). Parameters come from FILE (YAML subset:\n"
     "Solver: and Scene: sections), then --set, then the options; an\n"
     "unknown key is an error and nothing is written. Writes to DIR (default\n"

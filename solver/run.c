@@ -32,8 +32,8 @@ static const struct vsph_params_spec SOLVER[] = {
     VSPH_PARAMS_NAME_SPEC(P, kernel, "gaussian",
                           "gaussian, cubic, quintic, wendland2, wendland4"),
     VSPH_PARAMS_INT_SPEC(P, res, 40, 4, 4000,
-                         "particles across the reference length (R, L, H or "
-                         "W)"),
+                         "particles across the reference length (R, L, H, W "
+                         "or S)"),
     VSPH_PARAMS_REAL_SPEC(P, hdx, VSPH_CONSTS_HDX, 0.5, 8.0, "h/dx"),
     VSPH_PARAMS_REAL_SPEC(P, t_end, 0.0, 0.0, 1e9,
                           "end time (s); 0: the scene's"),
