@@ -716,11 +716,6 @@ int vsph_report_contact_write(struct vsph_report *R) {
   vsph_text_set(tv, "k2", "%.4f", cy.k2);
   vsph_text_set(tv, "k39", "%.2f", vsph_materials_drag_row(0.5));
   vsph_text_set(tv, "ksa", "%.2f", vsph_materials_drag_square(0.5));
-  vsph_text_set(tv, "lin", "%.1f",
-                100 *
-                    (cy.ratio[CY_Z05_40] -
-                     0.5 * (cy.ratio[CY_Z0_40] + cy.ratio[CY_Z1_40])) /
-                    (cy.ratio[CY_Z0_40] - cy.ratio[CY_Z1_40]));
   if ((st = vsph_report_say(R, "contact.cyl_head"))) return st;
   fprintf(md,
           "| fluid | d/S | particles per diameter | zeta | U/U_(39) | "
@@ -739,6 +734,11 @@ int vsph_report_contact_write(struct vsph_report *R) {
             cy.ratio[k], 100 * cy.drift[k], pp, cy.wall[k]);
   }
   fprintf(md, "\n");
+  vsph_text_set(tv, "lin", "%.1f",
+                100 *
+                    (cy.ratio[CY_Z05_40] -
+                     0.5 * (cy.ratio[CY_Z0_40] + cy.ratio[CY_Z1_40])) /
+                    (cy.ratio[CY_Z0_40] - cy.ratio[CY_Z1_40]));
   if ((st = vsph_report_say(R, "contact.cyl_tail"))) return st;
   if ((st = figures(R, &cr))) return st;
   /* cost */
