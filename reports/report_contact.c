@@ -895,10 +895,11 @@ int vsph_report_contact_claims(struct vsph_report *R) {
         "Falling-ball viscometer: 1/u linear in zeta, toward Stokes' law; "
         "zeta = 1 unstable (P002 Figs. 8-9)",
         "Fig. 8b (3-D ball, 48 M particles)", ours,
-        fabs(lin) < 0.1 ? "partly: in the 2-D analogue 1/U falls with zeta "
-                          "nearly linearly (the figure beside) and zeta = 1 is "
-                          "stable, where the paper's ball was not; the 3-D "
-                          "ball is not run"
-                        : "differs");
+        fabs(lin) < 0.1
+            ? "partly: in the 2-D analogue 1/U falls with zeta "
+              "nearly linearly (section 12's cylinder table) and zeta = 1 is "
+              "stable, where the paper's ball was not; the 3-D "
+              "ball is not run"
+            : "differs");
   return st;
 }
