@@ -91,6 +91,13 @@ int vsph_vtk_write(const char *dir, const char *name,
     fprintf(f, "%.10g\n", p->m[i] / p->rho[i]);
   }
   fprintf(f, "</DataArray>\n");
+  if (p->mat) { /* contact SPH with two materials (1: the second or a held
+                   body) */
+    const struct column mat = {"material", "UInt8", 1};
+    open_array(f, &mat);
+    for (size_t k = 0; k < n; k++) fprintf(f, "%d\n", p->mat[order[k]]);
+    fprintf(f, "</DataArray>\n");
+  }
   if (dg) {
     const struct column vort = {"vorticity", "Float64", 3};
     open_array(f, &vort);

@@ -10,7 +10,8 @@ struct vsph_diagnostics;
 /** @file vtk.h
  *  @brief Particle snapshots for ParaView and VisIt: VTK XML PolyData
  *  files (.vtp: points as vertices; velocity, density, pressure, volume,
- *  and with diagnostics vorticity, div_r and the free_surface flag; id;
+ *  the material index of a two-material contact run, and with
+ *  diagnostics vorticity, div_r and the free_surface flag; id;
  *  the time as TimeValue field data), and the PVD collection that lists
  *  them with their times, which ParaView opens as one time series. */
 

@@ -10,9 +10,11 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "../analysis/contact.h"
 #include "../common/params.h"
+#include "../io/vtk.h"
 #include "../kernels/kernel.h"
 #include "../solver/integrate.h"
 #include "../solver/materials.h"
@@ -335,6 +337,26 @@ START_TEST(test_cylinder_held) {
   ck_assert_double_gt(P[0], 0.5 * want);
   ck_assert_double_lt(P[0], want);
   ck_assert_double_le(fabs(P[1]), 1e-9 * want);
+  /* the snapshot carries the material, 80 ones among 400 values */
+  char dir[] = "/tmp/vsph_cylXXXXXX";
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  ck_assert_int_eq(vsph_vtk_write(dir, "s.vtp", p, nf, 0.0, NULL), 0);
+  char path[64], *text = malloc(1 << 20);
+  snprintf(path, sizeof path, "%s/s.vtp", dir);
+  vsph_test_slurp(path, text, 1 << 20);
+  const char *a = strstr(text, "Name=\"material\"");
+  ck_assert_ptr_nonnull(a);
+  a = strchr(a, '>') + 1;
+  size_t ones = 0, vals = 0;
+  for (char *end; vals < 400; vals++, a = end) {
+    const long v = strtol(a, &end, 10);
+    ck_assert_ptr_ne(end, a);
+    ones += (size_t)(v == 1);
+  }
+  ck_assert_uint_eq(ones, 80);
+  free(text);
+  remove(path);
+  rmdir(dir);
   free(x0);
   vsph_run_free(run);
 }
