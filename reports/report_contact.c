@@ -417,7 +417,7 @@ static const struct {
              [CY_Z05_40] = {40, 2e-4, CYL_Z05, "z05", 0.5},
              [CY_P0_40] = {40, 1.5e-5, CYL_P0, "paraffin-z0", 0},
              [CY_P1_40] = {40, 6e-5, CYL_P1, "paraffin-z1", 1},
-             [CY_G03_67] = {67, 1.5e-4, CYL_G03, "dS03-z0", 0},
+             [CY_G03_67] = {67, 4e-4, CYL_G03, "dS03-z0", 0},
              [CY_Z1_40] = {40, 5e-4, CYL_Z1, "z1", 1},
              [CY_Z0_80] = {80, 2e-4, CYL_Z0, "z0", 0}};
 
