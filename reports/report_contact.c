@@ -301,7 +301,7 @@ static double bimat_fit(const char *profiles, double t, double U0, double nuL,
 /* the numbers the tables, figures and claims share */
 struct cnum {
   double klat_w, klat_b, flat_w, fit05;
-  double paper_w, paper_b;        /* Table 1's means (the digest) */
+  double paper_w, paper_b;        /* Table 1's means over 18 rows */
   double lead_w, lead_b;          /* Table 1's lead row */
   double eta_eff[3], eta_want[3]; /* zeta 0, 0.5, 1: mPa s */
   double ustar[2][2], rms[2][2];  /* bimaterial: [zeta 1, 0][t] */

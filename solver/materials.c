@@ -6,10 +6,11 @@
 
 #include "../common/status.h"
 
-/* P002's Table 1, transcribed by hand from the OCR and checked against
- * the digest's ratios eta_num/(Z D0) (0.0894 +- 0.002 with Wendland C2,
- * 0.1078 +- 0.001 with the B-spline for 18 of the 20 rows). Viscosities
- * in mPa s here, Pa s in the struct. */
+/* P002's Table 1, transcribed by hand from the paper and checked by the
+ * ratios eta_num/(Z D0) it implies: 0.0894 +- 0.0025 with Wendland C2 and
+ * 0.1078 +- 0.002 with the B-spline for 18 of the 20 rows, paraffin and
+ * nitromethane the paper's own outliers (tests/check_contact.c).
+ * Viscosities in mPa s here, Pa s in the struct. */
 #define ROW(n, l, r, c, e, w, b) \
   { n, l, r, c, (double)(e)*1e-3, (w)*1e-3, (b)*1e-3 }
 static const struct vsph_material TABLE[] = {

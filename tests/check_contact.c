@@ -92,8 +92,9 @@ START_TEST(test_shear_closed_forms) {
                                               1250, NULL);
   ck_assert_double_eq_tol(uL, us, 1e-6);
   ck_assert_double_eq_tol(uR, us, 1e-6);
-  /* P002's digest: U* = 0.669 U0 for glycerol at +U0, paraffin at -U0
-   * (eta 80 mPa s), to its three digits */
+  /* eq. (27) by hand: effusivities sqrt(eta rho) 8.53 (paraffin, 80 mPa s)
+   * and 43.0 (glycerol), so U* = (43.0 - 8.53)/(43.0 + 8.53) U0 = 0.669
+   * U0 for glycerol at +U0 and paraffin at -U0, to three digits */
   ck_assert_double_eq_tol(us, 0.669, 0.0005);
 }
 END_TEST
@@ -272,7 +273,7 @@ START_TEST(test_shear_static_limit) {
 END_TEST
 
 /* Eq. (39) and Sangani & Acrivos: C_D Re = 2 F/(eta U) at d/S = 0.5 and
- * 0.3 against the digest's recomputation of P002's Table 2 (a0 = 2.1018
+ * 0.3 against the series summed by hand beside P002's Table 2 (a0 = 2.1018
  * and 0.79263, C_D = 21130 and 7968 at Re = 0.005; Sangani-Acrivos 19830
  * and 7690), to their printed digits: a slip in any coefficient of the
  * series shows at d/S = 0.5, where w^14 still weighs 1e-3. */
