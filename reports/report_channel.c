@@ -115,9 +115,9 @@ static const char *const CORR_XTRA[NCORR][2][5] = {
      {BASA, "Solver:correction=bonetlok", NULL}}};
 static const char *const CORR_TAG[2] = {"basa0", "basa1"};
 /* Cleary's xi on Basa et al.'s Poiseuille: the continuum value d + 2 = 4,
- * the value that makes the operator exact on this lattice (4.221, the
- * digest's Part IV), Basa's 4.24, 4.5 and Cleary's 4.96333 (the last two
- * of the POIS rows) */
+ * the value that makes the operator exact on this lattice (4.221, its
+ * lattice sum, docs/theory.md section 8), Basa's 4.24, 4.5 and Cleary's 4.96333
+ * (the last two of the POIS rows) */
 #define NXI 3
 static const char *const XI_XTRA[NXI][4] = {{BASA, "Solver:xi=4", NULL},
                                             {BASA, "Solver:xi=4.221", NULL},
@@ -638,7 +638,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Model C is robust but inaccurate: its factor 8 under-estimates "
-        "lap u by 5.2 % (P000 6.1.3; digest Part IV)",
+        "lap u by 5.2 % (P000 6.1.3; the lattice sum, docs/theory.md §8)",
         "about 5 % too fast at steady state", ours,
         c.pois[P_C].ok && u_c > u_e && e[P_C] > 0.02 ? "reproduced"
                                                      : "differs");
