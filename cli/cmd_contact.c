@@ -57,18 +57,30 @@ static int lattice_table(void) {
   return vsph_args_finish(CMD, 0);
 }
 
+/* FILE's folder into @p dir ("." without one, "/" at the root); returns
+ * the file's name within it. */
+static const char *split_path(const char *path, char *dir, size_t len) {
+  snprintf(dir, len, "%s", path);
+  char *slash = strrchr(dir, '/');
+  if (!slash) {
+    snprintf(dir, len, ".");
+    return path;
+  }
+  if (slash == dir)
+    slash[1] = '\0';
+  else
+    *slash = '\0';
+  return path + (slash - dir) + 1;
+}
+
 /* The profiles and both fits into FILE (atomically). */
 static int write_profiles(const char *path,
                           const struct vsph_contact_shear *cs) {
   char *buf = vsph_shear_csv_profiles(cs);
   if (!buf) return VSPH_ENOMEM;
   char dir[1024];
-  snprintf(dir, sizeof dir, "%s", path);
-  char *slash = strrchr(dir, '/');
-  const char *name = slash ? slash + 1 : path;
-  if (slash) *slash = '\0';
-  const int st =
-      vsph_files_write(slash ? (dir[0] ? dir : "/") : ".", name, buf);
+  const char *name = split_path(path, dir, sizeof dir);
+  const int st = vsph_files_write(dir, name, buf);
   free(buf);
   return st;
 }
@@ -107,14 +119,11 @@ int vsph_cmd_contact_main(int argc, char **argv) {
   }
   if (csv) { /* before the run: a folder that is not there is bad input */
     char dir[1024];
-    snprintf(dir, sizeof dir, "%s", csv);
-    char *slash = strrchr(dir, '/');
-    if (slash) *slash = '\0';
-    if (!slash) snprintf(dir, sizeof dir, ".");
-    if (access(dir[0] ? dir : "/", W_OK) != 0) {
+    split_path(csv, dir, sizeof dir);
+    if (access(dir, W_OK) != 0) {
       vsph_params_free(prm);
       return vsph_args_fail(CMD, "--csv %s: folder '%s' is not writable", csv,
-                            dir[0] ? dir : "/");
+                            dir);
     }
   }
   struct vsph_contact_shear cs = {.nprof = nprof};

@@ -21,6 +21,17 @@ static const char *const CORR_NAMES[VSPH_PAIR_CORR_COUNT] = {
     [VSPH_PAIR_CORR_SHEPARD] = "shepard",
     [VSPH_PAIR_CORR_BONETLOK] = "bonetlok"};
 
+static const char *const SCHEME_NAMES[VSPH_EQUATIONS_SCHEME_COUNT] = {
+    [VSPH_EQUATIONS_WCSPH] = "wcsph", [VSPH_EQUATIONS_CONTACT] = "contact"};
+
+int vsph_equations_scheme_resolve(const char *name, int *scheme) {
+  for (*scheme = 0; *scheme < VSPH_EQUATIONS_SCHEME_COUNT; ++*scheme)
+    if (strcmp(name, SCHEME_NAMES[*scheme]) == 0) return VSPH_OK;
+  *scheme = -1;
+  VSPH_FAIL(VSPH_EINVAL, "unknown scheme Solver:scheme = '%s' (wcsph, contact)",
+            name);
+}
+
 int vsph_equations_eos_resolve(const char *name, int *eos) {
   for (*eos = 0; *eos < VSPH_EQUATIONS_EOS_COUNT; ++*eos)
     if (strcmp(name, EOS_NAMES[*eos]) == 0) return VSPH_OK;

@@ -139,6 +139,10 @@ static inline double vsph_equations_c0(const struct vsph_equations_props *ep,
  *  them. */
 int vsph_equations_eos_resolve(const char *name, int *eos);
 
+/** @brief The scheme called @p name ("wcsph", "contact") into @p scheme.
+ *  @return VSPH_OK, or VSPH_EINVAL with a message listing them. */
+int vsph_equations_scheme_resolve(const char *name, int *scheme);
+
 /** @brief The kernel correction called @p name ("none", "shepard",
  *  "bonetlok"; vsph_pair_corr) into @p corr. @return VSPH_OK, or
  *  VSPH_EINVAL with a message listing them. */

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../common/consts.h"
 #include "../common/status.h"
 
 /* P002's Table 1, transcribed by hand from the paper and checked by the
@@ -60,7 +61,7 @@ int vsph_materials_resolve(const char *name, const struct vsph_material **out) {
 }
 
 double vsph_materials_drag_row(double d_over_S) {
-  const double w = 0.5 * 3.14159265358979323846 * d_over_S, w2 = w * w;
+  const double w = 0.5 * VSPH_PI * d_over_S, w2 = w * w;
   /* the coefficients of w^2, w^4, ..., w^14 */
   const double c[7] = {2.0 / 3.0,          -1.0 / 9.0,
                        8.0 / 135.0,        -53.0 / 1350.0,
@@ -69,11 +70,11 @@ double vsph_materials_drag_row(double d_over_S) {
   double s = 0.0; /* Horner in w^2 */
   for (int k = 6; k >= 0; k--) s = (s + c[k]) * w2;
   const double a0 = 1.0 / (1.0 - 2.0 * log(2.0 * w) + s);
-  return 8.0 * 3.14159265358979323846 * a0;
+  return 8.0 * VSPH_PI * a0;
 }
 
 double vsph_materials_drag_square(double d_over_S) {
-  const double c = 0.25 * 3.14159265358979323846 * d_over_S * d_over_S;
-  return 4.0 * 3.14159265358979323846 /
+  const double c = 0.25 * VSPH_PI * d_over_S * d_over_S;
+  return 4.0 * VSPH_PI /
          (-0.5 * log(c) - 0.738 + c - 0.887 * c * c + 2.038 * c * c * c);
 }

@@ -138,15 +138,8 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
               "with the linear law and no correction, reduction or delta, "
               "not visc = %s",
               rp->visc);
-  if (strcmp(rp->scheme, "contact") == 0)
-    rp->scheme_kind = VSPH_EQUATIONS_CONTACT;
-  else if (strcmp(rp->scheme, "wcsph") == 0)
-    rp->scheme_kind = VSPH_EQUATIONS_WCSPH;
-  else
-    VSPH_FAIL(VSPH_EINVAL,
-              "unknown scheme Solver:scheme = '%s' (wcsph, "
-              "contact)",
-              rp->scheme);
+  if ((st = vsph_equations_scheme_resolve(rp->scheme, &rp->scheme_kind)))
+    return st;
   const int contact = rp->scheme_kind == VSPH_EQUATIONS_CONTACT;
   if (!contact && (rp->alpha > 0.0 || rp->zeta_num > 0.0 || rp->eta_num > 0.0))
     VSPH_FAIL(VSPH_EINVAL,
