@@ -583,17 +583,16 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
     VSPH_FAIL(VSPH_EINVAL, "the gas law needs the particles' energy fields");
   if (ep->tvf && !p->tvel[0])
     VSPH_FAIL(VSPH_EINVAL, "the transport velocity needs its fields");
-  if (!ep->solid && p->mat && ep->nmat > 1) { /* each material's law */
+  if (!ep->solid) {
+    const unsigned char *const mat = ep->nmat > 1 ? p->mat : NULL;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < n; i++) {
-      const struct vsph_equations_mat *ma = &ep->mat[p->mat[i]];
-      p->p[i] = ma->c0 * ma->c0 * (p->rho[i] - ma->rho0);
-      p->vol[i] = p->m[i] / p->rho[i];
-    }
-  } else if (!ep->solid) {
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < n; i++) {
-      p->p[i] = vsph_equations_pressure(ep, p->rho[i], gas ? p->e[i] : 0.0);
+      if (mat) { /* two materials: each its own linear law */
+        const struct vsph_equations_mat *ma = &ep->mat[mat[i]];
+        p->p[i] = ma->c0 * ma->c0 * (p->rho[i] - ma->rho0);
+      } else {
+        p->p[i] = vsph_equations_pressure(ep, p->rho[i], gas ? p->e[i] : 0.0);
+      }
       p->vol[i] = p->m[i] / p->rho[i];
     }
   }
