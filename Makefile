@@ -48,7 +48,7 @@ TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
 .PHONY: all deps check test report baseline bench asan valgrind-check prefix-check \
-        format format-check mutate fuzz clean
+        format format-check mutate fuzz slurm-check clean
 
 all: deps $(BUILD)/vsph
 
@@ -107,6 +107,14 @@ baseline: deps
 bench: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph
 	$(BUILD)/vsph bench
+
+# `vsph report --slurm` on a real Slurm: installs slurm-wlm and munge,
+# starts a one-node cluster on this machine (its own slurm.conf and munge
+# key in a temporary folder), checks the Slurm report against a local one
+# and that a cancelled task is all a second submission reruns, and stops
+# every daemon it started. Not part of `make check` (a few minutes).
+slurm-check: deps
+	scripts/slurm-check
 
 # Each coefficient of each physical term mutated in turn (scripts/mutate):
 # a test must fail for every one. Slow (one rebuild per mutation); not part

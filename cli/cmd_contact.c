@@ -2,6 +2,7 @@
  * al.'s shear test (analysis/contact), or its lattice-sum prediction. */
 #include "cmd_contact.h"
 
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -88,7 +89,9 @@ static int write_profiles(const char *path,
 int vsph_cmd_contact_main(int argc, char **argv) {
   int lattice = 0;
   size_t nprof = 3;
-  const char *csv = NULL;
+  const char *csv = NULL, *out = NULL;
+  int cache = 0, quiet = 0;
+  size_t threads = 0;
   const struct vsph_args_spec own[] = {
       {"--lattice", VSPH_ARGS_FLAG, &lattice, NULL,
        "print the lattice-sum prediction and exit"},
@@ -96,6 +99,15 @@ int vsph_cmd_contact_main(int argc, char **argv) {
        "profile times t_end k/K, k = 1..K (1-8) [3]"},
       {"--csv", VSPH_ARGS_STRING, &csv, "FILE",
        "write the profiles and both fits (t, x, u, u_fit, dy, dy_fit)"},
+      {"--out", VSPH_ARGS_STRING, &out, "DIR",
+       "write summary.csv (one row per profile time) and profiles.csv into "
+       "DIR instead of printing (the report's shear tests)"},
+      {"--cache", VSPH_ARGS_FLAG, &cache, NULL,
+       "with --out: write key.txt (version, source hash, the parameters as "
+       "given) last, and skip the measurement when DIR's key.txt matches"},
+      {"--threads", VSPH_ARGS_SIZE, &threads, "T",
+       "OpenMP threads (default: OMP_NUM_THREADS or all cores)"},
+      {"--quiet", VSPH_ARGS_FLAG, &quiet, NULL, "no progress line"},
       {"--params", VSPH_ARGS_PARAMS, NULL, "FILE", "parameter file"},
       {"--set", VSPH_ARGS_SET, NULL, "S:k=v",
        "one parameter, e.g. Scene:material=water (repeatable)"}};
@@ -109,6 +121,12 @@ int vsph_cmd_contact_main(int argc, char **argv) {
   int rc = vsph_args_parse(&c, argc, argv, prm);
   if (rc < 0 && (nprof < 1 || nprof > 8))
     rc = vsph_args_fail(CMD, "--profiles must lie in 1-8, got %zu", nprof);
+  if (rc < 0 && threads > 1024)
+    rc = vsph_args_fail(CMD, "--threads must lie in 0-1024, got %zu", threads);
+  if (rc < 0 && cache && !out)
+    rc = vsph_args_fail(CMD, "--cache needs --out DIR");
+  if (rc < 0 && out && csv)
+    rc = vsph_args_fail(CMD, "--out writes profiles.csv itself: drop --csv");
   if (rc >= 0) {
     vsph_params_free(prm);
     return rc;
@@ -126,7 +144,19 @@ int vsph_cmd_contact_main(int argc, char **argv) {
                             dir);
     }
   }
-  struct vsph_contact_shear cs = {.nprof = nprof};
+  if (threads > 0) omp_set_num_threads((int)threads);
+  if (out) {
+    int cached;
+    const int st = vsph_shear_execute(prm, nprof, out, cache, quiet, &cached);
+    vsph_params_free(prm);
+    if (st) return vsph_args_status(CMD, st);
+    if (!quiet)
+      fprintf(stderr, "vsph contact: %s %s\n", out,
+              cached ? "is cached (its key.txt matches): not measured again"
+                     : "written");
+    return vsph_args_finish(CMD, 0);
+  }
+  struct vsph_contact_shear cs = {.nprof = nprof, .quiet = quiet};
   int st = vsph_contact_shear_measure(prm, &cs);
   vsph_params_free(prm);
   if (st) return vsph_args_status(CMD, st);

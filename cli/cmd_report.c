@@ -1,20 +1,66 @@
 /* vsph report: the main job (reports/report.c). */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include "cmd_report.h"
 
+#include <errno.h>
+#include <limits.h>
+#include <omp.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "../common/params.h"
 #include "../common/status.h"
+#include "../io/files.h"
 #include "../reports/report.h"
 #include "args.h"
 
 static const char *const CMD = "report";
 
+/* 1 if @p s is non-empty and every character is in @p ok. */
+static int only_of(const char *s, const char *ok) {
+  return *s && strspn(s, ok) == strlen(s);
+}
+
+/* 1 if an executable @p name is on PATH. */
+static int on_path(const char *name) {
+  const char *path = getenv("PATH");
+  char dir[4096];
+  for (const char *p = path ? path : ""; *p;) {
+    const size_t n = strcspn(p, ":");
+    if (n > 0 && n < sizeof dir - 64) {
+      snprintf(dir, sizeof dir, "%.*s/%s", (int)n, p, name);
+      if (access(dir, X_OK) == 0) return 1;
+    }
+    p += n + (p[n] == ':');
+  }
+  return 0;
+}
+
+/* @p s single-quoted for a POSIX shell into @p out. */
+static void shell_quote(const char *s, char *out, size_t len) {
+  size_t n = 0;
+  if (n + 1 < len) out[n++] = '\'';
+  for (; *s && n + 5 < len; s++) {
+    if (*s == '\'') {
+      memcpy(out + n, "'\\''", 4);
+      n += 4;
+    } else {
+      out[n++] = *s;
+    }
+  }
+  if (n + 1 < len) out[n++] = '\'';
+  out[n] = '\0';
+}
+
 int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
-  int full = 0;
+  const char *partition = NULL, *limit = NULL;
+  int full = 0, plan = 0, slurm = 0, assemble = 0;
+  size_t jobs = 0, threads = 0;
   const struct vsph_args_spec own[] = {
       {"--out", VSPH_ARGS_STRING, &dir, "DIR",
        "output folder (default reports/out)"},
@@ -23,7 +69,32 @@ int vsph_cmd_report_main(int argc, char **argv) {
        "present; PART:SCENE (scenes, convergence, speed) limits those parts "
        "to one scene, e.g. scenes:vortex-patch"},
       {"--full", VSPH_ARGS_FLAG, &full, NULL,
-       "the paper's resolutions and end times (hours)"}};
+       "the paper's resolutions and end times (hours)"},
+      {"--plan", VSPH_ARGS_FLAG, &plan, NULL,
+       "print the runs the report needs, one per line (tab-separated: "
+       "cached or missing, folder, key fingerprint, particles, steps, "
+       "memory in MiB, the exact command) and stop; writes nothing"},
+      {"--jobs", VSPH_ARGS_SIZE, &jobs, "N",
+       "run the missing runs as N child processes at a time (1-256), each "
+       "`vsph run` or `vsph contact` with its log in DIR/runs/logs; a run "
+       "that fails is listed in DIR/runs/failed.txt and the others go on; "
+       "then assemble"},
+      {"--threads", VSPH_ARGS_SIZE, &threads, "T",
+       "threads of each run with --jobs (default: cores / N, at least 1) "
+       "or CPUs per array task with --slurm (default 1)"},
+      {"--slurm", VSPH_ARGS_FLAG, &slurm, NULL,
+       "submit the missing runs as one Slurm job array (sbatch --array, one "
+       "task per run, memory and time from the largest run's estimate) and "
+       "the assembly as a job after it (afterany); DIR must be on a file "
+       "system every node shares. Scripts, logs and job ids in DIR/slurm"},
+      {"--partition", VSPH_ARGS_STRING, &partition, "P",
+       "with --slurm: the partition"},
+      {"--time", VSPH_ARGS_STRING, &limit, "T",
+       "with --slurm: each task's time limit in Slurm's form (MM, HH:MM:SS, "
+       "D-HH:MM:SS; default: estimated from the largest run)"},
+      {"--assemble", VSPH_ARGS_FLAG, &assemble, NULL,
+       "run nothing: assemble from the cached runs, naming any that is "
+       "missing (the Slurm assembly job)"}};
   char about[2048];
   size_t len = (size_t)snprintf(
       about, sizeof about, "%s",
@@ -35,13 +106,19 @@ int vsph_cmd_report_main(int argc, char **argv) {
       "quick (minutes on 2 cores: reduced resolutions and end times, stated\n"
       "in the report). Runs are cached by version, source hash and\n"
       "settings, the analysis parts by version, source hash and fidelity:\n"
-      "an unchanged input is never recomputed. Parts:");
+      "an unchanged input is never recomputed. Every part first lists the\n"
+      "runs it reads (--plan prints them); the missing ones run here two at\n"
+      "a time, or as N processes (--jobs N), or on Slurm (--slurm), then\n"
+      "the report is assembled. A stopped report resumes: finished runs\n"
+      "are cached, a half-written one is redone. Parts:");
   for (size_t p = 0; p < vsph_report_part_count() && len < sizeof about; p++)
     len += (size_t)snprintf(about + len, sizeof about - len, "\n  %-12s %s",
                             vsph_report_part_name(p), vsph_report_part_what(p));
   const struct vsph_args_cmd c = {CMD,
                                   "[--out DIR] [--only PART[,PART...]] "
-                                  "[--full]",
+                                  "[--full] [--plan | --jobs N | --slurm "
+                                  "[--partition P] [--time T] | --assemble] "
+                                  "[--threads T]",
                                   about,
                                   own,
                                   sizeof own / sizeof own[0],
@@ -50,6 +127,44 @@ int vsph_cmd_report_main(int argc, char **argv) {
                                   NULL};
   const int rc = vsph_args_parse(&c, argc, argv, NULL);
   if (rc >= 0) return vsph_args_finish(CMD, rc);
+  if (plan + slurm + assemble + (jobs > 0) > 1)
+    return vsph_args_fail(CMD,
+                          "--plan, --jobs, --slurm and --assemble exclude one "
+                          "another");
+  for (int k = 1; k < argc; k++)
+    if (!strcmp(argv[k], "--jobs") && jobs == 0)
+      return vsph_args_fail(CMD, "--jobs must lie in 1-256, got 0");
+  if (jobs > 256)
+    return vsph_args_fail(CMD, "--jobs must lie in 1-256, got %zu", jobs);
+  if (threads > 1024)
+    return vsph_args_fail(CMD, "--threads must lie in 1-1024, got %zu",
+                          threads);
+  for (int k = 1; k < argc; k++)
+    if (!strcmp(argv[k], "--threads") && threads == 0)
+      return vsph_args_fail(CMD, "--threads must lie in 1-1024, got 0");
+  if (threads && !jobs && !slurm)
+    return vsph_args_fail(CMD, "--threads needs --jobs or --slurm");
+  if ((partition || limit) && !slurm)
+    return vsph_args_fail(CMD, "--%s needs --slurm",
+                          partition ? "partition" : "time");
+  if (partition && (strlen(partition) > 64 ||
+                    !only_of(partition,
+                             "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstu"
+                             "vwxyz0123456789_.-,")))
+    return vsph_args_fail(CMD, "--partition '%.64s' is not a partition name",
+                          partition);
+  if (limit && (strlen(limit) > 16 || !only_of(limit, "0123456789:-") ||
+                !strchr("0123456789", limit[strlen(limit) - 1])))
+    return vsph_args_fail(CMD,
+                          "--time '%.16s' is not a Slurm time limit (MM, "
+                          "HH:MM:SS or D-HH:MM:SS)",
+                          limit);
+  if (slurm && !on_path("sbatch"))
+    return vsph_args_fail(CMD,
+                          "--slurm needs Slurm's sbatch on PATH, and it is "
+                          "not there");
+  if (strlen(dir) > 400)
+    return vsph_args_fail(CMD, "--out: the folder's name is too long");
   struct vsph_report_props rp = {
       .dir = dir, .full = full, .parts = 0, .stop = NULL};
   if (only) {
@@ -85,6 +200,42 @@ int vsph_cmd_report_main(int argc, char **argv) {
     }
     if (!rp.parts)
       return vsph_args_fail(CMD, "--only names no part (see --help)");
+  }
+  /* vsph itself, for the child processes and the Slurm scripts */
+  char exe[PATH_MAX], absdir[PATH_MAX], quoted[2][PATH_MAX + 64];
+  const ssize_t ne = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (ne <= 0) {
+    fprintf(stderr, "vsph report: cannot find vsph itself (/proc/self/exe)\n");
+    return vsph_args_status(CMD, VSPH_EIO);
+  }
+  exe[ne] = '\0';
+  rp.exe = exe;
+  rp.mode = plan       ? VSPH_REPORT_PLAN
+            : jobs     ? VSPH_REPORT_POOL
+            : slurm    ? VSPH_REPORT_SLURM
+            : assemble ? VSPH_REPORT_ASSEMBLE
+                       : VSPH_REPORT_LOCAL;
+  rp.plan_out = stdout;
+  rp.jobs = jobs;
+  const size_t cores = (size_t)omp_get_num_procs();
+  rp.threads = threads ? threads
+               : slurm ? 1
+               : jobs  ? (cores / jobs > 0 ? cores / jobs : 1)
+                       : 1;
+  char assemble_opts[3 * PATH_MAX + 300] = "";
+  if (slurm) { /* every path absolute: the jobs run elsewhere */
+    int st = vsph_files_mkdir(dir);
+    if (!st && !realpath(dir, absdir)) st = VSPH_EIO;
+    if (st) return vsph_args_fail(CMD, "--out %s: cannot create it", dir);
+    rp.dir = absdir;
+    rp.partition = partition;
+    rp.time = limit;
+    shell_quote(absdir, quoted[0], sizeof quoted[0]);
+    shell_quote(only ? only : "", quoted[1], sizeof quoted[1]);
+    snprintf(assemble_opts, sizeof assemble_opts, "--out %s%s%s%s", quoted[0],
+             full ? " --full" : "", only ? " --only " : "",
+             only ? quoted[1] : "");
+    rp.assemble = assemble_opts;
   }
   /* SIGINT/SIGTERM: the run in progress stops after its step, uncached */
   const volatile sig_atomic_t *stop = rp.stop = vsph_args_catch_stop();

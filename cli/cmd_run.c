@@ -52,7 +52,7 @@ static const char ABOUT[] =
 int vsph_cmd_run_main(int argc, char **argv) {
   const char *out_dir = NULL;
   size_t threads = 0;
-  int quiet = 0;
+  int quiet = 0, cache = 0;
   const struct vsph_args_spec own[] = {
       {"--out", VSPH_ARGS_STRING, &out_dir, "DIR", "output folder"},
       {"--threads", VSPH_ARGS_SIZE, &threads, "T",
@@ -61,7 +61,11 @@ int vsph_cmd_run_main(int argc, char **argv) {
       {"--set", VSPH_ARGS_SET, NULL, "S:k=v",
        "one parameter, e.g. Scene:nu=1e-4 (repeatable)"},
       {"--quiet", VSPH_ARGS_FLAG, &quiet, NULL,
-       "no progress; only an unstable verdict"}};
+       "no progress; only an unstable verdict"},
+      {"--cache", VSPH_ARGS_FLAG, &cache, NULL,
+       "write key.txt (version, source hash, the parameters as given) last, "
+       "for a run that ended; skip the run when DIR's key.txt matches (the "
+       "report's runs)"}};
   size_t n;
   const struct vsph_params_spec *spec = vsph_run_params(&n);
   const struct vsph_args_section sec = {"Solver", spec, n};
@@ -104,7 +108,8 @@ int vsph_cmd_run_main(int argc, char **argv) {
   const struct vsph_rundir_opts opts = {.dir = out_dir,
                                         .progress = quiet ? NULL : stderr,
                                         .stop = stop,
-                                        .command = command};
+                                        .command = command,
+                                        .cache = cache};
   struct vsph_rundir_result res;
   const int st = vsph_rundir_execute(prm, argv[1], &opts, &res);
   vsph_params_free(prm);
@@ -116,6 +121,7 @@ int vsph_cmd_run_main(int argc, char **argv) {
     return 128 + (int)*stop;
   }
   if (st) return vsph_args_status(CMD, st);
+  if (res.cached) return vsph_args_finish(CMD, 0);
   if (quiet && res.unstable)
     fprintf(stderr, "vsph run: unstable at t = %.6g: %s (output kept in %s)\n",
             res.unstable_time, res.reason, res.dir);

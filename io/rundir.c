@@ -27,6 +27,66 @@
 #include "json.h"
 #include "vtk.h"
 
+/* ----------------------------------------------------------- the cache */
+
+/* entries are {key, value} pairs: compare the keys */
+static int by_key(const void *a, const void *b) {
+  return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+char *vsph_rundir_key(const struct vsph_params *prm, const char *what) {
+  const size_t n = vsph_params_count(prm);
+  const char *(*kv)[2] = malloc((n ? n : 1) * sizeof *kv);
+  if (!kv) {
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot list %zu parameters", n);
+    return NULL;
+  }
+  for (size_t i = 0; i < n; i++) {
+    int used;
+    vsph_params_entry(prm, i, &kv[i][0], &kv[i][1], &used);
+  }
+  qsort(kv, n, sizeof *kv, by_key);
+  char *key = NULL;
+  size_t len = 0;
+  FILE *f = open_memstream(&key, &len);
+  if (!f) {
+    free(kv);
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__, "cannot build a key");
+    return NULL;
+  }
+  fprintf(f, "vsph %s %s\n%s\n", VSPH_VERSION, vsph_source_hash_id, what);
+  for (size_t i = 0; i < n; i++) fprintf(f, "%s=%s\n", kv[i][0], kv[i][1]);
+  free(kv);
+  if (fclose(f) != 0) {
+    free(key);
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__, "cannot build a key");
+    return NULL;
+  }
+  return key;
+}
+
+int vsph_rundir_key_matches(const char *dir, const char *key) {
+  char path[4200];
+  snprintf(path, sizeof path, "%s/key.txt", dir);
+  char *old = vsph_files_slurp(path, NULL);
+  const int hit = old && !strcmp(old, key);
+  free(old);
+  return hit;
+}
+
+int vsph_rundir_key_write(const char *dir, const char *key) {
+  return vsph_files_write(dir, "key.txt", key);
+}
+
+int vsph_rundir_key_remove(const char *dir) {
+  char path[4200];
+  snprintf(path, sizeof path, "%s/key.txt", dir);
+  if (remove(path) != 0 && errno != ENOENT && errno != ENOTDIR)
+    VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
+  return VSPH_OK;
+}
+
 /* Every parameter of the run, defaults filled in, section by section. */
 static int write_used(struct vsph_params *prm, const char *dir) {
   FILE *f = vsph_files_open(dir, "used_parameters.yml");
@@ -352,6 +412,10 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
   return st;
 }
 
+static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
+                   const char *key, const struct vsph_rundir_opts *opts,
+                   struct vsph_rundir_result *res);
+
 int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
                         const struct vsph_rundir_opts *opts,
                         struct vsph_rundir_result *res) {
@@ -363,6 +427,20 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   const struct vsph_scene_type *type = vsph_scene_find(scene);
   if (!type)
     VSPH_FAIL(VSPH_EINVAL, "unknown scene '%s' (see vsph scenes)", scene);
+  char *key = NULL; /* the parameters as given: before any is read */
+  if (opts->cache) {
+    char what[96];
+    snprintf(what, sizeof what, "scene %s", type->name);
+    if (!(key = vsph_rundir_key(prm, what))) return VSPH_ENOMEM;
+  }
+  const int st = execute(prm, type, key, opts, res);
+  free(key);
+  return st;
+}
+
+static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
+                   const char *key, const struct vsph_rundir_opts *opts,
+                   struct vsph_rundir_result *res) {
   struct vsph_run_props rp;
   struct vsph_scene sc;
   int st = vsph_run_props_init(&rp, prm);
@@ -375,6 +453,14 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   else
     snprintf(res->dir, sizeof res->dir, "runs/%s-%s-%zu", type->name,
              vsph_run_method(&rp), rp.res);
+  if (key && vsph_rundir_key_matches(res->dir, key)) {
+    res->cached = 1;
+    if (opts->progress)
+      fprintf(opts->progress,
+              "vsph run: %s is cached (its key.txt matches): not run again\n",
+              res->dir);
+    return VSPH_OK;
+  }
   struct vsph_run *run = NULL;
   if ((st = vsph_run_alloc(&rp, &sc, &run))) return st;
   struct vsph_references_scene *ref = vsph_references_scene_alloc(&run->scene);
@@ -382,9 +468,10 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
     vsph_run_free(run);
     return VSPH_ELIB;
   }
-  /* Only now, with every input checked, touch the folder. */
+  /* Only now, with every input checked, touch the folder: key.txt first */
   struct outputs o = {.dir = res->dir};
-  if ((st = prepare_dir(res->dir)) || (st = write_used(prm, res->dir)))
+  if ((key && (st = vsph_rundir_key_remove(res->dir))) ||
+      (st = prepare_dir(res->dir)) || (st = write_used(prm, res->dir)))
     goto done;
   o.csv = live_open(&o, "energy.csv",
                     "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,"
@@ -434,6 +521,8 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
                      st ? (o.error[0] ? o.error : "a write failed") : NULL);
   if (!st) st = js;
   if (!st && res->interrupted) st = VSPH_EINTR;
+  /* the key last: only a run that ended matches */
+  if (!st && key) st = vsph_rundir_key_write(res->dir, key);
   if (!st && progress) {
     if (res->unstable)
       fprintf(progress,

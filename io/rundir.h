@@ -27,6 +27,12 @@ struct vsph_rundir_opts {
   /** the command that asked for the run, as run.json records it; NULL:
    *  not recorded */
   const char *command;
+  /** 1: a cached run. Its key (vsph_rundir_key of the parameters as
+   *  given) is written to key.txt last, after run.json, and only for a
+   *  run that ended (ok or unstable); a folder whose key.txt already
+   *  matches is not run again (res->cached). key.txt goes first when a
+   *  run starts, so a half-written run never matches. */
+  int cache;
 };
 
 /** What one run reports back (also written to run.json). */
@@ -45,7 +51,27 @@ struct vsph_rundir_result {
   double h, dx, c0, mu; /*!< resolution and physics used */
   char dir[512];        /*!< the folder written */
   char started[32];     /*!< UTC date and time of the start (ISO 8601) */
+  int cached;           /*!< 1: opts.cache and the folder's key matched:
+                             nothing was run (the other fields are empty) */
 };
+
+/** @brief The cache key of a run or measurement: "vsph VERSION HASH",
+ *  then @p what (e.g. "scene vortex-patch"), then every parameter entry
+ *  of @p prm as "Section:key=value", sorted by key. Call it before any
+ *  value is read: it then holds the parameters as given (file, --set and
+ *  options alike), and the defaults are fixed by the source hash. Two
+ *  ways of giving the same settings give the same key.
+ *  @return the key (caller frees), or NULL after reporting. */
+char *vsph_rundir_key(const struct vsph_params *prm, const char *what);
+
+/** @brief 1 if @p dir/key.txt holds exactly @p key. */
+int vsph_rundir_key_matches(const char *dir, const char *key);
+
+/** @brief Write @p key to @p dir/key.txt (atomic). */
+int vsph_rundir_key_write(const char *dir, const char *key);
+
+/** @brief Remove @p dir/key.txt (absent is fine). */
+int vsph_rundir_key_remove(const char *dir);
 
 /** @brief Run scene @p scene with the parameters of @p prm as @p o says.
  *  The folder must be new, empty, or hold an earlier vsph run, whose files

@@ -8,6 +8,40 @@
 #include "../analysis/contact.h"
 #include "../common/status.h"
 #include "csv.h"
+#include "files.h"
+#include "rundir.h"
+
+int vsph_shear_execute(struct vsph_params *prm, size_t nprof, const char *dir,
+                       int cache, int quiet, int *cached) {
+  *cached = 0;
+  char *key = NULL;
+  if (cache) { /* the parameters as given: before any is read */
+    char what[64];
+    snprintf(what, sizeof what, "contact %zu", nprof);
+    if (!(key = vsph_rundir_key(prm, what))) return VSPH_ENOMEM;
+    if (vsph_rundir_key_matches(dir, key)) {
+      *cached = 1;
+      free(key);
+      return VSPH_OK;
+    }
+  }
+  struct vsph_contact_shear cs = {.nprof = nprof, .quiet = quiet};
+  int st = vsph_contact_shear_measure(prm, &cs);
+  char *sum = NULL, *prof = NULL;
+  if (!st && !((sum = vsph_shear_csv_summary(&cs)) &&
+               (prof = vsph_shear_csv_profiles(&cs))))
+    st = VSPH_ENOMEM;
+  vsph_contact_shear_free(&cs);
+  if (!st) st = vsph_files_mkdir(dir);
+  if (!st && key) st = vsph_rundir_key_remove(dir);
+  if (!st) st = vsph_files_write(dir, "summary.csv", sum);
+  if (!st) st = vsph_files_write(dir, "profiles.csv", prof);
+  if (!st && key) st = vsph_rundir_key_write(dir, key);
+  free(sum);
+  free(prof);
+  free(key);
+  return st;
+}
 
 char *vsph_shear_csv_profiles(const struct vsph_contact_shear *cs) {
   char *buf = NULL;

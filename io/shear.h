@@ -1,6 +1,8 @@
 #ifndef VSPH_IO_SHEAR_H
 #define VSPH_IO_SHEAR_H
 
+#include <stddef.h>
+
 struct vsph_contact_shear;
 
 /** @file shear.h
@@ -23,5 +25,18 @@ char *vsph_shear_csv_summary(const struct vsph_contact_shear *cs);
  *  profiles). @return VSPH_OK, or VSPH_EIO if it cannot be read or is
  *  not a summary (not reported: a missing cache is normal). */
 int vsph_shear_csv_load(const char *path, struct vsph_contact_shear *cs);
+
+struct vsph_params;
+
+/** @brief Measure (vsph_contact_shear_measure, @p nprof profile times,
+ *  silent when @p quiet) into folder @p dir: summary.csv and
+ *  profiles.csv. With @p cache, as io/rundir's cache: the key
+ *  (vsph_rundir_key of @p prm as given, after "contact NPROF") is written
+ *  to key.txt last, a folder whose key.txt matches is not measured again
+ *  (*cached = 1), and key.txt goes first when a measurement starts.
+ *  @return VSPH_OK (an unstable run is a result), VSPH_EINVAL (bad
+ *  parameters, nothing written), VSPH_EIO, VSPH_ENOMEM. */
+int vsph_shear_execute(struct vsph_params *prm, size_t nprof, const char *dir,
+                       int cache, int quiet, int *cached);
 
 #endif /* VSPH_IO_SHEAR_H */

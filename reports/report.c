@@ -4,6 +4,8 @@
 #include "report.h"
 
 #include <cjson/cJSON.h>
+#include <errno.h>
+#include <fcntl.h>
 #include <gsl/gsl_integration.h>
 #include <math.h>
 #include <omp.h>
@@ -12,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "../common/consts.h"
 #include "../common/status.h"
@@ -21,38 +24,46 @@
 #include "../io/html.h"
 #include "../io/json.h"
 #include "../io/plot.h"
+#include "../io/rundir.h"
 #include "report_internal.h"
 
 struct part {
   const char *name;
   int (*fn)(struct vsph_report *);
+  int (*plan)(struct vsph_report *); /* the runs it reads, or NULL */
   int cached; /* 1: skipped when its key matches (cheap, no runs) */
   const char *what;
 };
 
+/* convergence and speed read the ladders of the scenes on */
+static int plan_ladders(struct vsph_report *R) {
+  return vsph_report_runs_plan_ladders(R, 0);
+}
+
 static const struct part PARTS[] = {
-    {"tensors", vsph_report_tensors_write, 1,
+    {"tensors", vsph_report_tensors_write, NULL, 1,
      "F, G, N, M against theory; particle sums; C_F, C_N"},
-    {"profiles", vsph_report_profiles_write, 1,
+    {"profiles", vsph_report_profiles_write, NULL, 1,
      "the tensors against depth (figures)"},
-    {"scaling", vsph_report_scaling_write, 1,
+    {"scaling", vsph_report_scaling_write, NULL, 1,
      "1/h surface scaling, slopes; interior convergence"},
-    {"dissipation", vsph_report_dissipation_write, 1,
+    {"dissipation", vsph_report_dissipation_write, NULL, 1,
      "THEORY 4 dissipation integrals against resolution and h/dx"},
-    {"scenes", vsph_report_scenes_write, 0,
+    {"scenes", vsph_report_scenes_write, vsph_report_scenes_plan, 0,
      "the three scenes, each formulation, against the references"},
-    {"convergence", vsph_report_convergence_write, 0,
+    {"convergence", vsph_report_convergence_write, plan_ladders, 0,
      "error against resolution, fitted order"},
-    {"speed", vsph_report_speed_write, 0, "wall time against error"},
-    {"stability", vsph_report_stability_write, 0,
+    {"speed", vsph_report_speed_write, plan_ladders, 0,
+     "wall time against error"},
+    {"stability", vsph_report_stability_write, vsph_report_stability_plan, 0,
      "hard cases: PVWF, high Re, perturbed start, low c0, CFL"},
-    {"patch", vsph_report_patch_write, 1,
+    {"patch", vsph_report_patch_write, NULL, 1,
      "Laplacian patch tests of VISC-01..04 beside Zheng et al. (2018)"},
-    {"channel", vsph_report_channel_write, 0,
+    {"channel", vsph_report_channel_write, vsph_report_channel_plan, 0,
      "internal flows (Poiseuille, Couette) and the other formulations"},
-    {"contact", vsph_report_contact_write, 0,
+    {"contact", vsph_report_contact_write, vsph_report_contact_plan, 0,
      "contact SPH: the numerical viscosity of its Riemann solver"},
-    {"claims", vsph_report_claims_write, 0,
+    {"claims", vsph_report_claims_write, vsph_report_claims_plan, 0,
      "the paper's claims beside our figures"},
 };
 #define NPARTS (sizeof PARTS / sizeof PARTS[0])
@@ -294,9 +305,81 @@ static int write_run_json(const struct vsph_report *R, unsigned long want,
     }
   cJSON_AddItemToObject(o, "wall_s", w);
   cJSON_AddNumberToObject(o, "wall_total_s", total);
+  /* how its runs were made: the plan's size and the way */
+  cJSON_AddNumberToObject(o, "runs_planned", (double)R->plan->n);
+  cJSON_AddNumberToObject(o, "runs_made", (double)R->made);
+  cJSON_AddStringToObject(o, "runs_by", R->made_by);
   vsph_json_number(o, "cpu_total_s", vsph_sysinfo_cpu_s());
   vsph_json_load(o, R->load[0], R->load[1]);
   return vsph_json_write(o, R->dir, "run.json");
+}
+
+/* Every run the parts of @p want read (and baseline.csv, which comes with
+ * the scenes part on every scene). */
+static int plan(struct vsph_report *R, unsigned long want) {
+  int st = VSPH_OK;
+  for (size_t p = 0; p < NPARTS && !st; p++)
+    if ((want >> p & 1) && PARTS[p].plan) st = PARTS[p].plan(R);
+  const int scenes = vsph_report_part_find("scenes");
+  if (!st && (want >> scenes & 1) && !R->scenes)
+    st = vsph_report_runs_plan_baseline(R);
+  return st;
+}
+
+static void plan_free(struct vsph_report_plan *P) {
+  if (!P) return;
+  for (size_t k = 0; k < P->n; k++) vsph_report_jobs_free(&P->job[k]);
+  free(P->job);
+  free(P);
+}
+
+/* One report at a time writes a folder: a lock on DIR/report.lock (held
+ * until the process ends; released by the system if it dies). */
+static int lock_dir(const char *dir) {
+  char path[700];
+  snprintf(path, sizeof path, "%s/report.lock", dir);
+  const int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) VSPH_FAIL(VSPH_EIO, "cannot open %s: %s", path, strerror(errno));
+  struct flock fl;
+  memset(&fl, 0, sizeof fl);
+  fl.l_type = F_WRLCK;
+  fl.l_whence = SEEK_SET;
+  if (fcntl(fd, F_SETLK, &fl) == 0) return VSPH_OK; /* fd stays open */
+  const int e = errno;
+  struct flock who = fl;
+  const long pid = fcntl(fd, F_GETLK, &who) == 0 ? (long)who.l_pid : -1L;
+  close(fd);
+  if (e == EACCES || e == EAGAIN)
+    VSPH_FAIL(VSPH_EINVAL,
+              "another vsph report (pid %ld) is writing %s: wait for it or "
+              "choose another --out",
+              pid, dir);
+  VSPH_FAIL(VSPH_EIO, "cannot lock %s: %s", path, strerror(e));
+}
+
+/* Run what the plan misses, as the mode says. */
+static int run_missing(struct vsph_report *R,
+                       const struct vsph_report_props *rp) {
+  if (rp->mode == VSPH_REPORT_POOL)
+    return vsph_report_jobs_pool(R, rp->exe, rp->jobs, rp->threads);
+  return vsph_report_jobs_local(R, 2);
+}
+
+/* The assembly alone: every run must be there (checked before anything
+ * is written). */
+static int all_cached(const struct vsph_report *R) {
+  size_t m = 0, first = 0;
+  for (size_t k = 0; k < R->plan->n; k++)
+    if (!vsph_rundir_key_matches(R->plan->job[k].dir, R->plan->job[k].key) &&
+        !m++)
+      first = k;
+  if (m)
+    VSPH_FAIL(VSPH_EIO,
+              "%zu of the %zu runs are missing or unfinished (the first: %s; "
+              "a failed or cancelled task?): submit again (vsph report "
+              "--slurm) or run them (vsph report --jobs N); only they run",
+              m, R->plan->n, R->plan->job[first].dir);
+  return VSPH_OK;
 }
 
 int vsph_report_write(const struct vsph_report_props *rp) {
@@ -304,22 +387,51 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   const unsigned long want = rp->parts ? rp->parts & all : all;
   char parts_dir[600];
   snprintf(parts_dir, sizeof parts_dir, "%s/parts", rp->dir);
-  int st = vsph_files_mkdir(parts_dir);
-  if (st) return st;
   struct vsph_report *R = calloc(1, sizeof *R);
   if (!R) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the report");
   R->dir = rp->dir;
   R->full = rp->full;
   R->scenes = rp->scenes;
   R->stop = rp->stop;
+  const double t_all = omp_get_wtime();
+  vsph_sysinfo_load(R->load[0]);
+  int st = VSPH_OK;
+  if (!(R->plan = calloc(1, sizeof *R->plan))) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot allocate the plan");
+  }
+  if (!st) st = plan(R, want);
+  if (!st && rp->mode == VSPH_REPORT_PLAN) { /* writes nothing */
+    st = vsph_report_jobs_plan_print(R, rp->exe ? rp->exe : "vsph",
+                                     rp->plan_out);
+    plan_free(R->plan);
+    free(R);
+    return st;
+  }
+  if (!st && rp->mode == VSPH_REPORT_SLURM) {
+    const struct vsph_report_slurm s = {rp->exe, rp->partition, rp->time,
+                                        rp->threads, rp->assemble};
+    st = vsph_report_jobs_slurm(R, &s);
+    plan_free(R->plan);
+    free(R);
+    return st;
+  }
+  if (!st && rp->mode == VSPH_REPORT_ASSEMBLE) st = all_cached(R);
+  if (!st) st = vsph_files_mkdir(parts_dir);
+  if (!st) st = lock_dir(rp->dir);
+  if (!st && rp->mode != VSPH_REPORT_ASSEMBLE) {
+    for (size_t k = 0; k < R->plan->n; k++) R->made += !R->plan->job[k].cached;
+    R->made_by = rp->mode == VSPH_REPORT_POOL       ? "child processes"
+                 : rp->mode == VSPH_REPORT_ASSEMBLE ? "nothing: assembly only"
+                                                    : "this process";
+    st = run_missing(R, rp);
+  }
   R->wo = gsl_integration_workspace_alloc(1000);
   R->wi = gsl_integration_workspace_alloc(1000);
   if (!R->wo || !R->wi) {
     st = VSPH_ENOMEM;
     vsph_status_report(st, __FILE__, __LINE__, "cannot allocate workspaces");
   }
-  const double t_all = omp_get_wtime();
-  vsph_sysinfo_load(R->load[0]);
   double wall[NPARTS] = {0};
   int cached[NPARTS] = {0};
   char key[128];
@@ -344,6 +456,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   gsl_integration_workspace_free(R->wo);
   gsl_integration_workspace_free(R->wi);
   free(R->claims);
+  plan_free(R->plan);
   free(R);
   return st;
 }

@@ -3,6 +3,7 @@
 
 #include <signal.h>
 #include <stddef.h>
+#include <stdio.h>
 
 /** @file report.h
  *  @brief The main job: the report. It runs the analysis (THEORY 2-4) and
@@ -24,6 +25,26 @@ struct vsph_report_props {
    *  *stop became non-zero, and the report returns VSPH_EINTR (the run is
    *  redone next time: it is not cached) */
   const volatile sig_atomic_t *stop;
+  int mode;              /*!< VSPH_REPORT_LOCAL, ... (below) */
+  size_t jobs, threads;  /*!< POOL: processes at a time, threads each;
+                              SLURM: threads (CPUs) per task */
+  const char *exe;       /*!< POOL, SLURM: vsph itself (absolute path) */
+  const char *partition; /*!< SLURM: or NULL */
+  const char *time;      /*!< SLURM: time limit per task, or NULL */
+  const char *assemble;  /*!< SLURM: the assembly's report options */
+  FILE *plan_out;        /*!< PLAN: where the plan goes */
+};
+
+/** How the report's missing runs are run. Every mode first lists every
+ *  run the parts on will read (the plan); a run is one `vsph run` or
+ *  `vsph contact` command whose folder ends with key.txt. */
+enum vsph_report_mode {
+  VSPH_REPORT_LOCAL = 0, /*!< here, two at a time; then assemble */
+  VSPH_REPORT_PLAN,      /*!< print the plan and stop (writes nothing) */
+  VSPH_REPORT_POOL,      /*!< child processes, jobs at a time; assemble */
+  VSPH_REPORT_SLURM,     /*!< submit them as a Slurm job array, with the
+                              assembly as a job after it; stop */
+  VSPH_REPORT_ASSEMBLE   /*!< run nothing: fail unless every run is cached */
 };
 
 /** @brief Number of parts. */

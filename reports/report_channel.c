@@ -270,16 +270,32 @@ static void specs(const struct vsph_report *R, struct vsph_report_runspec *s,
   *n = k; /* k <= NSPECS: the loops above are NSPECS at most */
 }
 
-static int load(struct vsph_report *R, struct chan *c) {
-  memset(c, 0, sizeof *c);
-  /* Basa et al. 20 x 20 (FULL twice); Couette above */
+/* Basa et al. 20 x 20 (FULL twice); Couette above; the map at 20 */
+static void resolutions(const struct vsph_report *R, struct chan *c) {
   c->res_p = R->full ? 40 : 20;
   c->res_c = R->full ? 40 : 20;
   c->res_m = 20;
+}
+
+int vsph_report_channel_plan(struct vsph_report *R) {
+  struct chan c;
+  resolutions(R, &c);
+  struct vsph_report_runspec s[NSPECS];
+  size_t n;
+  specs(R, s, &n, c.res_p, c.res_c, c.res_m);
+  int st = VSPH_OK;
+  for (size_t k = 0; k < n && !st; k++)
+    st = vsph_report_jobs_plan_run(R, &s[k]);
+  return st;
+}
+
+static int load(struct vsph_report *R, struct chan *c) {
+  memset(c, 0, sizeof *c);
+  resolutions(R, c);
   struct vsph_report_runspec s[NSPECS];
   size_t n;
   specs(R, s, &n, c->res_p, c->res_c, c->res_m);
-  int st = vsph_report_runs_prefetch(R, s, n);
+  int st = VSPH_OK;
   size_t k = 0;
   for (int f = 0; f < NPOIS && !st; f++)
     st = vsph_report_runs_get(R, &s[k++], &c->pois[f]);

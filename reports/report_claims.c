@@ -397,6 +397,14 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
   return st;
 }
 
+int vsph_report_claims_plan(struct vsph_report *R) {
+  /* every scene, whatever the filter, and the runs of sections 11, 12 */
+  int st = vsph_report_runs_plan_ladders(R, 1);
+  if (!st) st = vsph_report_channel_plan(R);
+  if (!st) st = vsph_report_contact_plan(R);
+  return st;
+}
+
 int vsph_report_claims_write(struct vsph_report *R) {
   R->nclaims = 0;
   R->claim_see = "scaling";
@@ -405,8 +413,6 @@ int vsph_report_claims_write(struct vsph_report *R) {
   if (!st) st = dissipation_claims(R);
   struct finest fi;
   memset(&fi, 0, sizeof fi);
-  /* every scene, whatever the filter: say what must run, run it 2 at a time */
-  if (!st) st = vsph_report_runs_prefetch_ladders(R, 1);
   if (!st) st = load_finest(R, &fi);
   R->claim_see = "scenes";
   if (!st) st = square_claims(R, &fi);

@@ -7,7 +7,6 @@
  * their claims for the claims table. Each measurement is cached in
  * runs/contact-TAG (key.txt written last, as the run cache does). */
 #include <math.h>
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -138,98 +137,13 @@ static size_t settings(const struct cspec *c, char set[][96], size_t cap) {
   return n;
 }
 
-static void cdir(const struct vsph_report *R, const struct cspec *c, char *buf,
-                 size_t len) {
-  snprintf(buf, len, "%s/runs/contact-%s", R->dir, c->tag);
-}
-
-static size_t ckey(const struct cspec *c, char *key, size_t len) {
+/* The job of measurement @p c: `vsph contact --out runs/contact-TAG`. */
+static int cjob(const struct vsph_report *R, const struct cspec *c,
+                struct vsph_report_job *j) {
   char set[16][96];
   const size_t n = settings(c, set, 16);
-  int w = snprintf(key, len, "vsph %s %s\ncontact %zu\n", VSPH_VERSION,
-                   vsph_source_hash_id, c->nprof);
-  for (size_t k = 0; k < n && w < (int)len; k++)
-    w += snprintf(key + w, len - (size_t)w, "%s\n", set[k]);
-  return (size_t)w;
-}
-
-static int ccached(const struct vsph_report *R, const struct cspec *c) {
-  char dir[600], path[700], key[2048];
-  cdir(R, c, dir, sizeof dir);
-  ckey(c, key, sizeof key);
-  snprintf(path, sizeof path, "%s/key.txt", dir);
-  char *old = vsph_files_slurp(path, NULL);
-  const int hit = old && !strcmp(old, key);
-  free(old);
-  return hit;
-}
-
-/* Measure @p c into its folder: summary.csv, profiles.csv, key.txt last. */
-static int cmeasure(const struct vsph_report *R, const struct cspec *c) {
-  char dir[600], path[700], key[2048], set[16][96];
-  cdir(R, c, dir, sizeof dir);
-  ckey(c, key, sizeof key);
-  snprintf(path, sizeof path, "%s/key.txt", dir);
-  remove(path);
-  struct vsph_params *prm = vsph_params_alloc();
-  if (!prm) return VSPH_ENOMEM;
-  const size_t n = settings(c, set, 16);
-  int st = VSPH_OK;
-  for (size_t k = 0; k < n && !st; k++) {
-    char *eq = strchr(set[k], '=');
-    *eq = '\0';
-    st = vsph_params_set(prm, set[k], eq + 1);
-  }
-  struct vsph_contact_shear cs = {.nprof = c->nprof, .quiet = 1};
-  if (!st) st = vsph_contact_shear_measure(prm, &cs);
-  vsph_params_free(prm);
-  if (st) return st;
-  char *sum = vsph_shear_csv_summary(&cs), *prof = vsph_shear_csv_profiles(&cs);
-  vsph_contact_shear_free(&cs);
-  if (!sum || !prof) st = VSPH_ENOMEM;
-  if (!st) st = vsph_files_mkdir(dir);
-  if (!st) st = vsph_files_write(dir, "summary.csv", sum);
-  if (!st) st = vsph_files_write(dir, "profiles.csv", prof);
-  if (!st) st = vsph_files_write(dir, "key.txt", key);
-  free(sum);
-  free(prof);
-  return st;
-}
-
-/* Every measurement this report reads, those not in the cache two at a
- * time (one per thread, each on one thread: its numbers do not depend on
- * the thread count). */
-static int cprefetch(const struct vsph_report *R, int nc) {
-  int todo[NC], m = 0;
-  for (int k = 0; k < nc; k++)
-    if (!ccached(R, &CS[k])) todo[m++] = k;
-  if (m)
-    fprintf(stderr,
-            "vsph report: %d of the %d shear tests of section 12 are not in "
-            "the cache; running them, two at a time\n",
-            m, nc);
-  const double t0 = omp_get_wtime();
-  int st = VSPH_OK, done = 0;
-#pragma omp parallel for schedule(dynamic, 1)
-  for (int q = 0; q < m; q++) {
-    int failed;
-#pragma omp critical(vsph_report_contact_prefetch)
-    failed = st;
-    if (failed) continue;
-    omp_set_num_threads(1);
-    const double t1 = omp_get_wtime();
-    const int s = cmeasure(R, &CS[todo[q]]);
-#pragma omp critical(vsph_report_contact_prefetch)
-    {
-      if (s && !st) st = s;
-      done++;
-      fprintf(stderr,
-              "  [%d/%d] shear test %s: %s in %.1f s (%.0f s elapsed)\n", done,
-              m, CS[todo[q]].tag, s ? "failed" : "done", omp_get_wtime() - t1,
-              omp_get_wtime() - t0);
-    }
-  }
-  return st;
+  return vsph_report_jobs_shear(R, c->tag, (const char(*)[96])set, n, c->nprof,
+                                j);
 }
 
 /* All measurements, read back from the cache. */
@@ -240,12 +154,15 @@ struct cres {
 
 static int cload(struct vsph_report *R, struct cres *cr) {
   cr->nc = R->full ? NC : C_QUICK;
-  int st = cprefetch(R, cr->nc);
+  int st = VSPH_OK;
   for (int k = 0; k < cr->nc && !st; k++) {
-    char dir[600], path[700];
-    cdir(R, &CS[k], dir, sizeof dir);
-    snprintf(path, sizeof path, "%s/summary.csv", dir);
-    if (vsph_shear_csv_load(path, &cr->r[k]))
+    struct vsph_report_job j;
+    st = cjob(R, &CS[k], &j);
+    if (!st) st = vsph_report_jobs_ready(R, &j);
+    char path[700];
+    snprintf(path, sizeof path, "%s/summary.csv", j.dir);
+    vsph_report_jobs_free(&j);
+    if (!st && vsph_shear_csv_load(path, &cr->r[k]))
       VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
   }
   return st;
@@ -444,16 +361,41 @@ struct cyl {
   double k2; /* the 2-D static lattice's eta_num/(Z D0) */
 };
 
-static int cyl_load(struct vsph_report *R, struct cyl *cy) {
+/* The cylinder runs (their number is returned), with eta_num the 2-D
+ * static lattice's (@p k2). */
+static int cyl_specs(const struct vsph_report *R,
+                     struct vsph_report_runspec rs[NCY], double *k2) {
   const struct vsph_kernel_type *w = vsph_kernel_find("wendland2");
-  cy->k2 = vsph_contact_lattice_coef(w, 2, 0.5);
-  snprintf(cyl_eta_num, sizeof cyl_eta_num, "Solver:eta_num=%.6f", cy->k2);
-  cy->n = R->full ? NCY : CY_QUICK;
-  struct vsph_report_runspec rs[NCY];
-  for (int k = 0; k < cy->n; k++)
+  *k2 = vsph_contact_lattice_coef(w, 2, 0.5);
+  snprintf(cyl_eta_num, sizeof cyl_eta_num, "Solver:eta_num=%.6f", *k2);
+  const int n = R->full ? NCY : CY_QUICK;
+  for (int k = 0; k < n; k++)
     rs[k] = (struct vsph_report_runspec){"cylinders", "contact", CY[k].res,
                                          CY[k].t_end, CY[k].set, CY[k].tag};
-  int st = vsph_report_runs_prefetch(R, rs, (size_t)cy->n);
+  return n;
+}
+
+int vsph_report_contact_plan(struct vsph_report *R) {
+  int st = VSPH_OK;
+  for (int k = 0; k < (R->full ? NC : C_QUICK) && !st; k++) {
+    struct vsph_report_job j;
+    if ((st = cjob(R, &CS[k], &j))) {
+      vsph_report_jobs_free(&j);
+      break;
+    }
+    st = vsph_report_jobs_plan_add(R, &j);
+  }
+  struct vsph_report_runspec rs[NCY];
+  double k2;
+  const int n = cyl_specs(R, rs, &k2);
+  for (int k = 0; k < n && !st; k++) st = vsph_report_jobs_plan_run(R, &rs[k]);
+  return st;
+}
+
+static int cyl_load(struct vsph_report *R, struct cyl *cy) {
+  struct vsph_report_runspec rs[NCY];
+  cy->n = cyl_specs(R, rs, &cy->k2);
+  int st = VSPH_OK;
   for (int k = 0; k < cy->n && !st; k++) {
     /* the scene's derived values for the run's Scene: settings */
     struct vsph_params *prm = vsph_params_alloc();

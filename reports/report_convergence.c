@@ -124,7 +124,7 @@ static int vortex_layouts(struct vsph_report *R) {
 }
 
 int vsph_report_convergence_write(struct vsph_report *R) {
-  int st = vsph_report_runs_prefetch_ladders(R, 0);
+  int st = VSPH_OK;
   if (!st) st = vsph_report_say(R, "convergence.intro");
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     if (vsph_report_scene_on(R, sc)) st = scene(R, sc);

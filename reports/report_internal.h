@@ -74,6 +74,36 @@ struct vsph_report_claim {
   char see[32]; /* the part that shows it ("scenes"): the link in the table */
 };
 
+/* ------------------------------------------- report_jobs.c: the plan */
+
+/* What a job runs: the solver on a scene (`vsph run`), or the shear test
+ * of section 12 (`vsph contact`). */
+enum { VSPH_REPORT_JOB_RUN = 0, VSPH_REPORT_JOB_SHEAR };
+
+/* Settings a job holds at most. */
+#define VSPH_REPORT_JOB_NSET 20
+
+/* One run the report needs: the command that makes its folder, and what
+ * the scheduler knows of it. */
+struct vsph_report_job {
+  int kind;                            /* VSPH_REPORT_JOB_* */
+  char scene[32];                      /* RUN: the scene */
+  char dir[512];                       /* its output folder */
+  char set[VSPH_REPORT_JOB_NSET][128]; /* "Section:key=value" */
+  size_t nset, nprof;                  /* SHEAR: profile times */
+  char label[160];                     /* as progress names it */
+  char *key;                           /* its key.txt (owned) */
+  double particles, steps, bytes;      /* the solver's estimate */
+  int cached;                          /* its key.txt matches */
+  int failed;                          /* the pool: did not end */
+};
+
+/* Every run the parts on will read, listed before any is run. */
+struct vsph_report_plan {
+  struct vsph_report_job *job;
+  size_t n, cap;
+};
+
 /* The report being written. */
 struct vsph_report {
   const char *dir; /* output folder */
@@ -92,6 +122,9 @@ struct vsph_report {
   int have_layouts;
   struct vsph_text_vars tv;          /* scratch values for the prose blocks */
   const volatile sig_atomic_t *stop; /* stop request, or NULL */
+  struct vsph_report_plan *plan;     /* NULL: runs made as read (tests) */
+  size_t made;                       /* runs the plan missed at the start */
+  const char *made_by;               /* who made them (run.json) */
   double load[2][3]; /* load averages before and after (run.json) */
 };
 
@@ -115,6 +148,73 @@ int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
  * (then cleared). */
 int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
                            const char *name);
+
+/* The job of a solver run: its folder, settings and key (io/rundir's),
+ * and whether the cache holds it. Free with vsph_report_jobs_free. */
+struct vsph_report_runspec;
+int vsph_report_jobs_run(const struct vsph_report *R,
+                         const struct vsph_report_runspec *rs,
+                         struct vsph_report_job *j);
+
+/* The job of a shear test: folder runs/contact-TAG, @p n settings. */
+int vsph_report_jobs_shear(const struct vsph_report *R, const char *tag,
+                           const char (*set)[96], size_t n, size_t nprof,
+                           struct vsph_report_job *j);
+
+void vsph_report_jobs_free(struct vsph_report_job *j);
+
+/* Add @p j to R->plan (which takes its key), once per folder; a second
+ * job with the same folder and another key is a bug (two specs, one
+ * folder). Estimates its cost. Without a plan, frees @p j. */
+int vsph_report_jobs_plan_add(struct vsph_report *R, struct vsph_report_job *j);
+
+/* The same for a solver run. */
+int vsph_report_jobs_plan_run(struct vsph_report *R,
+                              const struct vsph_report_runspec *rs);
+
+/* Make sure the folder of @p j holds its run before a part reads it: with
+ * a sealed plan, it must be listed and cached (else a failure naming it);
+ * without a plan (the tests), it is run here if not cached. */
+int vsph_report_jobs_ready(const struct vsph_report *R,
+                           const struct vsph_report_job *j);
+
+/* The command of @p j as arguments (NULL-ended, pointing into @p j and
+ * @p buf): @p exe, then run or contact, --out, --cache and the settings;
+ * --quiet --threads T when @p threads > 0. */
+size_t vsph_report_jobs_argv(const struct vsph_report_job *j, const char *exe,
+                             size_t threads, char buf[2][24], const char **argv,
+                             size_t cap);
+
+/* The same as one shell line (arguments quoted where needed). */
+void vsph_report_jobs_command(const struct vsph_report_job *j, const char *exe,
+                              size_t threads, char *out, size_t len);
+
+/* The plan as a table (tab-separated: status, folder, key fingerprint,
+ * particles, steps, memory, command), those missing first. */
+int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
+                                FILE *f);
+
+/* The missing runs of the plan in this process, @p width at a time (one
+ * thread each), the costliest first. */
+int vsph_report_jobs_local(struct vsph_report *R, int width);
+
+/* The same as child processes of @p exe, @p njobs at a time with
+ * @p threads threads each; a run that fails is recorded (runs/failed.txt,
+ * its log in runs/logs/) and the others go on. */
+int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
+                          size_t threads);
+
+/* Submit the missing runs as one Slurm job array and the assembly as a
+ * job after it (afterany). */
+struct vsph_report_slurm {
+  const char *exe;       /* vsph, absolute */
+  const char *partition; /* or NULL */
+  const char *time;      /* Slurm's time limit, or NULL: estimated */
+  size_t threads;        /* --cpus-per-task of each run */
+  const char *assemble;  /* the assembly's options (--out, --full, --only) */
+};
+int vsph_report_jobs_slurm(struct vsph_report *R,
+                           const struct vsph_report_slurm *s);
 
 /* ----------------------------------------------------- report_runs.c: runs */
 
@@ -160,13 +260,6 @@ int vsph_report_runs_get(struct vsph_report *R,
                          const struct vsph_report_runspec *rs,
                          struct vsph_report_run *out);
 
-/* Make sure the @p n runs of @p specs exist, running the missing ones two
- * at a time (one thread each), the costliest first: a part calls it with
- * every run it will read, then reads them with vsph_report_runs_get. */
-int vsph_report_runs_prefetch(struct vsph_report *R,
-                              const struct vsph_report_runspec *specs,
-                              size_t n);
-
 /* The extra settings of the vortex patch's Cartesian-disc ladder (its
  * runs carry the tag "cartesian"). */
 extern const char *const vsph_report_runs_cartesian[2];
@@ -175,10 +268,16 @@ extern const char *const vsph_report_runs_cartesian[2];
 int vsph_report_runs_layouts(struct vsph_report *R,
                              struct vsph_report_layouts *out);
 
-/* The same for every run of the three ladders and the vortex patch's
- * Cartesian ladder (scenes, convergence, speed and claims read them):
- * those of the scenes on (vsph_report_scene_on), or all when @p all. */
-int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all);
+/* Plan scene @p sc's ladder (the runs the scene-wise parts read): with
+ * the stretching square's reference runs (sc = 1) or the vortex patch's
+ * Cartesian ladder (sc = 0). */
+int vsph_report_runs_plan_scene(struct vsph_report *R, int sc);
+
+/* The same for the scenes on (vsph_report_scene_on), or all when @p all. */
+int vsph_report_runs_plan_ladders(struct vsph_report *R, int all);
+
+/* Plan the runs of baseline.csv. */
+int vsph_report_runs_plan_baseline(struct vsph_report *R);
 
 /* Free a run's loaded data. */
 void vsph_report_runs_free(struct vsph_report_run *r);
@@ -274,6 +373,15 @@ int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
                               struct vsph_report_baseline *b);
 
 /* -------------------------------------------------------- the parts */
+
+/* Each part that reads runs declares them first (its plan): the report
+ * runs what is missing before any part is written, and a part that reads
+ * a run its plan does not list fails (vsph_report_jobs_ready). */
+int vsph_report_scenes_plan(struct vsph_report *R);
+int vsph_report_stability_plan(struct vsph_report *R);
+int vsph_report_channel_plan(struct vsph_report *R);
+int vsph_report_contact_plan(struct vsph_report *R);
+int vsph_report_claims_plan(struct vsph_report *R);
 
 int vsph_report_tensors_write(struct vsph_report *R);
 int vsph_report_profiles_write(struct vsph_report *R);

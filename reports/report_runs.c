@@ -96,182 +96,6 @@ static int load_run_json(struct vsph_report_run *r) {
   return VSPH_OK;
 }
 
-/* The settings of a run as "Section:key=value" lines: its cache key (after
- * the version and source hash) and its parameters alike. */
-static size_t settings(const struct vsph_report_runspec *rs, int snaps,
-                       char set[][128], size_t cap) {
-  size_t n = 0;
-  /* "contact" names the scheme (contact SPH has no viscous form) */
-  if (!strcmp(rs->visc, "contact"))
-    snprintf(set[n++], 128, "Solver:scheme=contact");
-  else
-    snprintf(set[n++], 128, "Solver:visc=%s", rs->visc);
-  snprintf(set[n++], 128, "Solver:res=%zu", rs->res);
-  snprintf(set[n++], 128, "Solver:t_end=%.17g", rs->t_end);
-  snprintf(set[n++], 128, "Solver:snapshots=%d", snaps);
-  for (size_t k = 0; rs->extra && rs->extra[k] && n < cap; k++)
-    snprintf(set[n++], 128, "%s", rs->extra[k]);
-  return n;
-}
-
-/* The run folder and cache key of a spec. */
-static size_t run_key(const struct vsph_report *R,
-                      const struct vsph_report_runspec *rs, char *dir,
-                      size_t ndir, char set[16][128], size_t *nset, char *key,
-                      size_t nkey) {
-  snprintf(dir, ndir, "%s/runs/%s-%s-%zu%s%s", R->dir, rs->scene, rs->visc,
-           rs->res, rs->tag ? "-" : "", rs->tag ? rs->tag : "");
-  /* the ladders keep snapshots: the vortex patch's u_theta profiles and
-   * the particle pictures of section 5 read them */
-  const int snaps = !rs->tag ? 4 : 0;
-  *nset = settings(rs, snaps, set, 16);
-  int len = snprintf(key, nkey, "vsph %s %s\nscene %s\n", VSPH_VERSION,
-                     vsph_source_hash_id, rs->scene);
-  for (size_t k = 0; k < *nset && len < (int)nkey; k++)
-    len += snprintf(key + len, nkey - (size_t)len, "%s\n", set[k]);
-  return (size_t)len;
-}
-
-/* 1 if the run of @p rs is in the cache: its folder's key.txt matches. */
-static int cached(const struct vsph_report *R,
-                  const struct vsph_report_runspec *rs) {
-  char dir[512], set[16][128], key[2600];
-  size_t nset;
-  run_key(R, rs, dir, sizeof dir, set, &nset, key, sizeof key);
-  char path[600];
-  snprintf(path, sizeof path, "%s/key.txt", dir);
-  char *old = vsph_files_slurp(path, NULL);
-  const int hit = old && !strcmp(old, key);
-  free(old);
-  return hit;
-}
-
-/* The run of @p rs in its folder: reused when its key.txt matches, else
- * run (io/rundir) and the key written last, so a half-finished run never
- * matches. Safe to call from several threads for different specs. */
-static int ensure(const struct vsph_report *R,
-                  const struct vsph_report_runspec *rs) {
-  char dir[512], set[16][128], key[2600];
-  size_t nset;
-  run_key(R, rs, dir, sizeof dir, set, &nset, key, sizeof key);
-  if (cached(R, rs)) return VSPH_OK;
-  char path[600];
-  snprintf(path, sizeof path, "%s/key.txt", dir);
-  struct vsph_params *prm = vsph_params_alloc();
-  if (!prm) return VSPH_ENOMEM;
-  int st = VSPH_OK;
-  for (size_t k = 0; k < nset && !st; k++) {
-    char *eq = strchr(set[k], '=');
-    if (!eq) {
-      vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                         "setting '%s' lacks '='", set[k]);
-      st = VSPH_EINVAL;
-      break;
-    }
-    *eq = '\0';
-    st = vsph_params_set(prm, set[k], eq + 1);
-  }
-  remove(path); /* a half-finished run never matches */
-  const struct vsph_rundir_opts opts = {
-      .dir = dir,
-      .progress = NULL,
-      .stop = R->stop,
-      .command = R->full ? "vsph report --full (a run of its ladders; "
-                           "settings in used_parameters.yml)"
-                         : "vsph report (a run of its ladders; settings in "
-                           "used_parameters.yml)"};
-  struct vsph_rundir_result rr;
-  if (!st) st = vsph_rundir_execute(prm, rs->scene, &opts, &rr);
-  vsph_params_free(prm);
-  if (st) return st;
-  if ((st = vsph_files_mkdir(dir))) return st;
-  return vsph_files_write(dir, "key.txt", key);
-}
-
-/* Cost of a run, for the order of a prefetch: particles^(1 + 1/d) times
- * the end time (steps grow with the resolution), the largest first. */
-static double run_cost(const struct vsph_report_runspec *rs) {
-  const double r = (double)rs->res;
-  return r * r * r * rs->t_end;
-}
-static int by_cost(const void *a, const void *b) {
-  const double x = run_cost(*(const struct vsph_report_runspec *const *)a),
-               y = run_cost(*(const struct vsph_report_runspec *const *)b);
-  return (x < y) - (x > y);
-}
-
-/* "vortex-patch mgf R/dx=40 (cartesian)": a run as the progress names it. */
-static void run_label(const struct vsph_report_runspec *rs, char *buf,
-                      size_t len) {
-  const struct vsph_scene_type *t = vsph_scene_find(rs->scene);
-  snprintf(buf, len, "%s %s %s/dx=%zu%s%s%s", rs->scene, rs->visc,
-           t ? t->length_name : "res", rs->res, rs->tag ? " (" : "",
-           rs->tag ? rs->tag : "", rs->tag ? ")" : "");
-}
-
-int vsph_report_runs_prefetch(struct vsph_report *R,
-                              const struct vsph_report_runspec *specs,
-                              size_t n) {
-  const struct vsph_report_runspec **order = malloc(n * sizeof *order);
-  if (!order) VSPH_FAIL(VSPH_ENOMEM, "cannot order %zu runs", n);
-  size_t m = 0; /* the runs not in the cache */
-  for (size_t k = 0; k < n; k++)
-    if (!cached(R, &specs[k])) order[m++] = &specs[k];
-  qsort(order, m, sizeof *order, by_cost);
-  double cost_all = 0.0, cost_done = 0.0;
-  for (size_t k = 0; k < m; k++) cost_all += run_cost(order[k]);
-  if (m)
-    fprintf(stderr,
-            "vsph report: %zu of the %zu runs this part reads are not in "
-            "the cache; running them, two at a time\n",
-            m, n);
-  const double t0 = omp_get_wtime();
-  size_t started = 0, done = 0;
-  int st = VSPH_OK;
-  /* one run per thread, each run's own loops on one thread (nested
-   * regions are inactive): the runs are independent, and a run's results
-   * do not depend on its thread count, so this changes only the time */
-#pragma omp parallel for schedule(dynamic, 1)
-  for (size_t k = 0; k < m; k++) {
-    int failed;
-    size_t me = 0;
-    char label[160];
-    run_label(order[k], label, sizeof label);
-#pragma omp critical(vsph_report_runs_prefetch)
-    {
-      failed = st;
-      if (!failed) {
-        me = ++started;
-        fprintf(stderr, "  [%zu/%zu] %s: started (%.0f s elapsed)\n", me, m,
-                label, omp_get_wtime() - t0);
-      }
-    }
-    if (failed) continue;
-    omp_set_num_threads(1); /* this thread's nested regions: itself alone */
-    const double t1 = omp_get_wtime();
-    const int s = ensure(R, order[k]);
-#pragma omp critical(vsph_report_runs_prefetch)
-    {
-      if (s && !st) st = s;
-      done++;
-      cost_done += run_cost(order[k]);
-      const double el = omp_get_wtime() - t0;
-      /* what is left, from the cost model of the order (particles^1.5 x
-       * end time) and the rate so far */
-      const double left = el * (cost_all - cost_done) / cost_done;
-      if (s)
-        fprintf(stderr, "  [%zu/%zu] %s: failed\n", me, m, label);
-      else
-        fprintf(stderr,
-                "  [%zu/%zu] %s: done in %.1f s; %zu of %zu done, %.0f s "
-                "elapsed, about %.0f s left\n",
-                me, m, label, omp_get_wtime() - t1, done, m, el, left);
-    }
-  }
-  free(order);
-  return st;
-}
-
 const char *const vsph_report_runs_cartesian[2] = {"Scene:layout=cartesian",
                                                    NULL};
 
@@ -308,50 +132,47 @@ int vsph_report_runs_layouts(struct vsph_report *R,
   return VSPH_OK;
 }
 
-int vsph_report_runs_prefetch_ladders(struct vsph_report *R, int all) {
-  enum {
-    N = (VSPH_REPORT_NSCENES + 1) * VSPH_VISCOUS_PAPER_COUNT *
-            VSPH_REPORT_LADDER +
-        4
-  };
-  struct vsph_report_runspec specs[N];
-  size_t n = 0;
+int vsph_report_runs_plan_scene(struct vsph_report *R, int sc) {
+  int st = VSPH_OK;
   /* the stretching square's reference runs */
-  if (all || vsph_report_scene_on(R, 1)) {
-    vsph_report_runs_reference_specs(R, &specs[n]);
-    n += 4;
+  if (sc == 1) {
+    struct vsph_report_runspec ref[4];
+    vsph_report_runs_reference_specs(R, ref);
+    for (int k = 0; k < 4 && !st; k++)
+      st = vsph_report_jobs_plan_run(R, &ref[k]);
   }
-  /* the vortex patch's ladder again on a Cartesian disc (section 6) */
-  const struct vsph_report_ladderdef *V = vsph_report_runs_ladder(R, 0, 0);
-  for (int f = 0;
-       f < VSPH_VISCOUS_PAPER_COUNT && (all || vsph_report_scene_on(R, 0)); f++)
-    for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+  for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT && !st; f++)
+    for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
       const struct vsph_report_runspec rs = {
-          V->scene, vsph_viscous_name(f),       V->res[k],
-          V->t_end, vsph_report_runs_cartesian, "cartesian"};
-      specs[n++] = rs;
+          L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
+      st = vsph_report_jobs_plan_run(R, &rs);
+      /* the vortex patch's ladder again on a Cartesian disc (section 6) */
+      const struct vsph_report_runspec cs = {
+          L->scene, vsph_viscous_name(f),       L->res[k],
+          L->t_end, vsph_report_runs_cartesian, "cartesian"};
+      if (!st && sc == 0) st = vsph_report_jobs_plan_run(R, &cs);
     }
-  for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++) {
-    if (!all && !vsph_report_scene_on(R, sc)) continue;
-    const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
-    for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT; f++)
-      for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
-        const struct vsph_report_runspec rs = {
-            L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
-        specs[n++] = rs;
-      }
-  }
-  return vsph_report_runs_prefetch(R, specs, n);
+  return st;
+}
+
+int vsph_report_runs_plan_ladders(struct vsph_report *R, int all) {
+  int st = VSPH_OK;
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
+    if (all || vsph_report_scene_on(R, sc))
+      st = vsph_report_runs_plan_scene(R, sc);
+  return st;
 }
 
 int vsph_report_runs_get(struct vsph_report *R,
                          const struct vsph_report_runspec *rs,
                          struct vsph_report_run *out) {
   memset(out, 0, sizeof *out);
-  char set[16][128], key[2600];
-  size_t nset;
-  run_key(R, rs, out->dir, sizeof out->dir, set, &nset, key, sizeof key);
-  int st = ensure(R, rs);
+  struct vsph_report_job j;
+  int st = vsph_report_jobs_run(R, rs, &j);
+  snprintf(out->dir, sizeof out->dir, "%s", j.dir);
+  if (!st) st = vsph_report_jobs_ready(R, &j);
+  vsph_report_jobs_free(&j);
   if (!st) st = load_run_json(out);
   if (!st) st = load_energy(out);
   return st;
@@ -647,80 +468,85 @@ static int velocity_row(struct vsph_report *R,
   return VSPH_OK;
 }
 
-/* Cavity row j of the baseline (no E_k reference: E_k itself). */
-static int cavity_baseline(struct vsph_report *R, size_t j,
-                           struct vsph_report_baseline *b) {
-  static const char *const tvf[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1", NULL};
-  const struct vsph_report_runspec rs = {"cavity", CAVITY_BASE[j], 16, 1.0,
-                                         tvf,      "base"};
-  return velocity_row(R, &rs, 0, b);
+/* The settings of the channel and cavity rows */
+static const char *const BASE_BASA[] = {VSPH_REPORT_BASA, NULL};
+static const char *const BASE_TVF[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1", NULL};
+
+/* The run behind baseline row @p i, and its kind: 0 free surface, 1
+ * channel, 2 cavity, 3 contact. */
+static int baseline_spec(const struct vsph_report *R, size_t i,
+                         struct vsph_report_runspec *rs) {
+  const size_t nfree = VSPH_REPORT_NSCENES * VSPH_VISCOUS_PAPER_COUNT;
+  const size_t nchan = 2 * VSPH_VISCOUS_FORM_COUNT;
+  if (i >= nfree + nchan + NCAVITY_BASE) {
+    const size_t j = i - nfree - nchan - NCAVITY_BASE;
+    *rs = (struct vsph_report_runspec){"shear",
+                                       "contact",
+                                       CONTACT_BASE[j].res,
+                                       CONTACT_BASE[j].t_end,
+                                       CONTACT_BASE[j].set,
+                                       CONTACT_BASE[j].tag};
+    return 3;
+  }
+  if (i >= nfree + nchan) {
+    *rs = (struct vsph_report_runspec){
+        "cavity", CAVITY_BASE[i - nfree - nchan], 16, 1.0, BASE_TVF, "base"};
+    return 2;
+  }
+  if (i >= nfree) {
+    const size_t c = (i - nfree) / VSPH_VISCOUS_FORM_COUNT;
+    const int f = (int)((i - nfree) % VSPH_VISCOUS_FORM_COUNT);
+    *rs = (struct vsph_report_runspec){CHANNEL_BASE[c].scene,
+                                       vsph_viscous_name(f),
+                                       CHANNEL_BASE[c].res,
+                                       CHANNEL_BASE[c].t_end,
+                                       BASE_BASA,
+                                       "base"};
+    return 1;
+  }
+  const int sc = (int)(i / VSPH_VISCOUS_PAPER_COUNT);
+  const int f = (int)(i % VSPH_VISCOUS_PAPER_COUNT);
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 1);
+  *rs = (struct vsph_report_runspec){
+      L->scene, vsph_viscous_name(f), L->res[0], L->t_end, NULL, NULL};
+  return 0;
 }
 
-/* Contact row j of the baseline. */
-static int contact_baseline(struct vsph_report *R, size_t j,
-                            struct vsph_report_baseline *b) {
-  const struct vsph_report_runspec rs = {"shear",
-                                         "contact",
-                                         CONTACT_BASE[j].res,
-                                         CONTACT_BASE[j].t_end,
-                                         CONTACT_BASE[j].set,
-                                         CONTACT_BASE[j].tag};
-  struct vsph_report_run r;
-  const int st = vsph_report_runs_get(R, &rs, &r);
-  if (st) return st;
-  snprintf(b->scene, sizeof b->scene, "shear");
-  snprintf(b->visc, sizeof b->visc, "contact");
-  b->res = rs.res;
-  b->t_end = rs.t_end;
-  const size_t last = r.nrow - 1;
-  b->ek_final = r.Ek[last] / r.Ek[0];
-  b->diss0 = r.Pv[last] / r.Pv[0];
-  b->ok = r.ok;
-  vsph_report_runs_free(&r);
-  return VSPH_OK;
-}
-
-/* Channel row j of the baseline. */
-static int channel_baseline(struct vsph_report *R, size_t j,
-                            struct vsph_report_baseline *b) {
-  static const char *const basa[] = {VSPH_REPORT_BASA, NULL};
-  const int c = (int)(j / VSPH_VISCOUS_FORM_COUNT);
-  const int f = (int)(j % VSPH_VISCOUS_FORM_COUNT);
-  const struct vsph_report_runspec rs = {CHANNEL_BASE[c].scene,
-                                         vsph_viscous_name(f),
-                                         CHANNEL_BASE[c].res,
-                                         CHANNEL_BASE[c].t_end,
-                                         basa,
-                                         "base"};
-  return velocity_row(R, &rs, 1, b);
+int vsph_report_runs_plan_baseline(struct vsph_report *R) {
+  int st = VSPH_OK;
+  for (size_t i = 0; i < vsph_report_runs_baseline_count() && !st; i++) {
+    struct vsph_report_runspec rs;
+    baseline_spec(R, i, &rs);
+    st = vsph_report_jobs_plan_run(R, &rs);
+  }
+  return st;
 }
 
 int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
                               struct vsph_report_baseline *b) {
   if (i >= vsph_report_runs_baseline_count())
     VSPH_FAIL(VSPH_EINVAL, "no baseline row %zu", i);
-  const size_t nfree = VSPH_REPORT_NSCENES * VSPH_VISCOUS_PAPER_COUNT;
-  const size_t nchan = 2 * VSPH_VISCOUS_FORM_COUNT;
-  if (i >= nfree + nchan + NCAVITY_BASE)
-    return contact_baseline(R, i - nfree - nchan - NCAVITY_BASE, b);
-  if (i >= nfree + nchan) return cavity_baseline(R, i - nfree - nchan, b);
-  if (i >= nfree) return channel_baseline(R, i - nfree, b);
-  const int sc = (int)(i / VSPH_VISCOUS_PAPER_COUNT);
-  const int f = (int)(i % VSPH_VISCOUS_PAPER_COUNT);
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 1);
-  struct vsph_report_runspec rs = {
-      L->scene, vsph_viscous_name(f), L->res[0], L->t_end, NULL, NULL};
+  struct vsph_report_runspec rs;
+  const int kind = baseline_spec(R, i, &rs);
+  if (kind == 1 || kind == 2) /* channels: to the series; cavity: itself */
+    return velocity_row(R, &rs, kind == 1, b);
   struct vsph_report_run r;
   const int st = vsph_report_runs_get(R, &rs, &r);
   if (st) return st;
-  snprintf(b->scene, sizeof b->scene, "%s", L->scene);
-  snprintf(b->visc, sizeof b->visc, "%s", vsph_viscous_name(f));
-  b->res = L->res[0];
-  b->t_end = L->t_end;
+  snprintf(b->scene, sizeof b->scene, "%s", rs.scene);
+  snprintf(b->visc, sizeof b->visc, "%s", rs.visc);
+  b->res = rs.res;
+  b->t_end = rs.t_end;
   const size_t last = r.nrow - 1;
-  b->ek_final =
-      sc == 1 ? r.Ek[last] / r.Ek[0] : (r.Ek[last] - r.Ekr[last]) / r.Ekr[0];
-  b->diss0 = vsph_report_runs_diss0(&r);
+  if (kind == 3) { /* contact: E_k and the dissipation, relative */
+    b->ek_final = r.Ek[last] / r.Ek[0];
+    b->diss0 = r.Pv[last] / r.Pv[0];
+  } else {
+    const int square = !strcmp(rs.scene, "stretching-square");
+    b->ek_final =
+        square ? r.Ek[last] / r.Ek[0] : (r.Ek[last] - r.Ekr[last]) / r.Ekr[0];
+    b->diss0 = vsph_report_runs_diss0(&r);
+  }
   b->ok = r.ok;
   vsph_report_runs_free(&r);
   return VSPH_OK;

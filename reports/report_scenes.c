@@ -346,13 +346,12 @@ static int scene(struct vsph_report *R, int sc) {
  * where potential theory and Lighthill's decay hold; the default 0.05 lies
  * outside it): the energy budget at eps = 0.005 and 0.01 beside 0.05, at
  * the ladder's middle resolution. */
-static int wave_eps(struct vsph_report *R) {
+static void eps_specs(const struct vsph_report *R,
+                      struct vsph_report_runspec specs[3 * NFORM]) {
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 2, 0);
-  static const char *const eps[3] = {"0.005", "0.01", "0.05"};
   static const char *const extra[3][2] = {
       {"Scene:eps=0.005", NULL}, {"Scene:eps=0.01", NULL}, {NULL, NULL}};
   static const char *const tag[3] = {"eps0.005", "eps0.01", NULL};
-  struct vsph_report_runspec specs[3 * NFORM];
   for (int e = 0; e < 3; e++)
     for (int f = 0; f < NFORM; f++) {
       const struct vsph_report_runspec s = {
@@ -360,7 +359,25 @@ static int wave_eps(struct vsph_report *R) {
           L->t_end, e < 2 ? extra[e] : NULL, tag[e]};
       specs[e * NFORM + f] = s;
     }
-  int st = vsph_report_runs_prefetch(R, specs, 3 * NFORM);
+}
+
+int vsph_report_scenes_plan(struct vsph_report *R) {
+  int st = vsph_report_runs_plan_ladders(R, 0);
+  if (vsph_report_scene_on(R, 2)) {
+    struct vsph_report_runspec specs[3 * NFORM];
+    eps_specs(R, specs);
+    for (int k = 0; k < 3 * NFORM && !st; k++)
+      st = vsph_report_jobs_plan_run(R, &specs[k]);
+  }
+  return st;
+}
+
+static int wave_eps(struct vsph_report *R) {
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 2, 0);
+  static const char *const eps[3] = {"0.005", "0.01", "0.05"};
+  struct vsph_report_runspec specs[3 * NFORM];
+  eps_specs(R, specs);
+  int st = VSPH_OK;
   vsph_text_set(&R->tv, "res", "%zu", L->res[1]);
   vsph_text_set(&R->tv, "t_end", "%g", L->t_end);
   if (!st) st = vsph_report_say(R, "scenes.eps_head");
@@ -386,9 +403,9 @@ static int wave_eps(struct vsph_report *R) {
 int vsph_report_scenes_write(struct vsph_report *R) {
   vsph_text_set(&R->tv, "quick_note", "%s",
                 R->full ? "" : vsph_text_get("scenes.quick_note"));
-  int st = vsph_report_runs_prefetch_ladders(R, 0);
+  int st = VSPH_OK;
   struct vsph_report_richardson rr;
-  if (!st && vsph_report_scene_on(R, 1)) {
+  if (vsph_report_scene_on(R, 1)) {
     st = vsph_report_runs_richardson(R, &rr);
     vsph_text_set(&R->tv, "ref_res",
                   "L/dx = %zu and %zu at h/dx = 2, %zu and %zu at h/dx = 3",

@@ -44,6 +44,19 @@ struct sweep {
   const char *map; /* map CSV, or NULL */
 };
 
+/* The run of sweep @p sw at value @p v and formulation @p f: its setting
+ * and tag in @p set and @p tag. */
+static struct vsph_report_runspec sweep_spec(const struct sweep *sw, size_t v,
+                                             int f, char set[128], char tag[48],
+                                             const char *extra[2]) {
+  snprintf(set, 128, "%s=%.10g", sw->key, sw->vals[v]);
+  snprintf(tag, 48, "%s%zu", sw->tag, v);
+  extra[0] = set;
+  extra[1] = NULL;
+  return (struct vsph_report_runspec){
+      sw->scene, vsph_viscous_name(f), sw->res, sw->t_end, extra, tag};
+}
+
 static int sweep(struct vsph_report *R, const struct sweep *sw) {
   FILE *m = NULL;
   if (sw->map &&
@@ -51,14 +64,12 @@ static int sweep(struct vsph_report *R, const struct sweep *sw) {
     return VSPH_EIO;
   int st = VSPH_OK;
   for (size_t v = 0; v < sw->nv && !st; v++) {
-    char set[128], tag[48];
-    snprintf(set, sizeof set, "%s=%.10g", sw->key, sw->vals[v]);
-    snprintf(tag, sizeof tag, "%s%zu", sw->tag, v);
-    const char *extra[2] = {set, NULL};
     fprintf(R->md, "| %s | %s = %.4g |", sw->scene, sw->label, sw->vals[v]);
     for (int f = 0; f < NFORM && !st; f++) {
-      struct vsph_report_runspec rs = {
-          sw->scene, vsph_viscous_name(f), sw->res, sw->t_end, extra, tag};
+      char set[128], tag[48];
+      const char *extra[2];
+      const struct vsph_report_runspec rs =
+          sweep_spec(sw, v, f, set, tag, extra);
       struct vsph_report_run r;
       if ((st = vsph_report_runs_get(R, &rs, &r))) break;
       char cell[160];
@@ -134,87 +145,76 @@ static int square_ladder(struct vsph_report *R) {
   return st;
 }
 
-/* Every run of the sweeps, made two at a time before the tables read
- * them (vsph_report_runs_prefetch). */
-static int prefetch(struct vsph_report *R, const struct sweep *sws, size_t n) {
-  size_t total = 0;
-  for (size_t k = 0; k < n; k++) total += sws[k].nv * NFORM;
-  struct vsph_report_runspec *specs = calloc(total, sizeof *specs);
-  char(*sets)[128] = calloc(total, sizeof *sets);
-  char(*tags)[48] = calloc(total, sizeof *tags);
-  const char *(*extras)[2] = calloc(total, sizeof *extras);
-  int st = VSPH_OK;
-  if (!specs || !sets || !tags || !extras) {
-    st = VSPH_ENOMEM;
-    vsph_status_report(st, __FILE__, __LINE__, "cannot list the sweeps");
-  }
-  size_t m = 0;
-  for (size_t k = 0; k < n && !st; k++)
-    for (size_t v = 0; v < sws[k].nv; v++)
-      for (int f = 0; f < NFORM; f++, m++) {
-        snprintf(sets[m], sizeof sets[m], "%s=%.10g", sws[k].key,
-                 sws[k].vals[v]);
-        snprintf(tags[m], sizeof tags[m], "%s%zu", sws[k].tag, v);
-        extras[m][0] = sets[m];
-        extras[m][1] = NULL;
-        const struct vsph_report_runspec rs = {
-            sws[k].scene, vsph_viscous_name(f),
-            sws[k].res,   sws[k].t_end,
-            extras[m],    tags[m]};
-        specs[m] = rs;
-      }
-  if (!st) st = vsph_report_runs_prefetch(R, specs, m);
-  free(specs);
-  free(sets);
-  free(tags);
-  free(extras);
-  return st;
-}
-
-int vsph_report_stability_write(struct vsph_report *R) {
+/* The sweeps: nu, a perturbed lattice per scene, c0 = k U_max with the
+ * vortex patch's U_max (values in @p c0s), CFL (two scenes). */
+#define NSWEEP 7
+static int sweeps(const struct vsph_report *R, struct sweep sws[NSWEEP],
+                  double c0s[4], struct vsph_scene *scene) {
   const size_t res = R->full ? 40 : 20;
   const char *vortex = vsph_report_runs_ladder(R, 0, 0)->scene;
   const char *wave = vsph_report_runs_ladder(R, 2, 0)->scene;
   const double tv = vsph_report_runs_ladder(R, 0, 0)->t_end;
   const double tw = vsph_report_runs_ladder(R, 2, 0)->t_end;
-  /* c0 = k U_max with the vortex patch's U_max */
-  struct vsph_scene scene;
-  int st = vsph_scene_init(&scene, &vsph_vortex_patch_type, NULL);
+  const int st = vsph_scene_init(scene, &vsph_vortex_patch_type, NULL);
   if (st) return st;
   static const double ks[4] = {10, 6, 4, 3};
-  double c0s[4] = {0};
-  for (int k = 0; k < 4; k++) c0s[k] = ks[k] * scene.U_max;
+  for (int k = 0; k < 4; k++) c0s[k] = ks[k] * scene->U_max;
   static const double nus[3] = {1e-3, 1e-4, 1e-5}, pert[1] = {0.2};
   static const double cfl[6] = {1.0, 1.5, 2.0, 2.5, 3.0, 3.5};
-  /* the sweeps: nu, a perturbed lattice per scene, c0, CFL (two scenes) */
-  struct sweep sws[7] = {
-      {vortex, res, tv, "nu (m^2/s)", "Scene:nu", nus, 3, "nu", NULL},
-      {NULL},
-      {NULL},
-      {NULL},
-      {vortex, res, tv, "c0 (m/s)", "Scene:c0", c0s, 4, "c0",
-       "stability_c0.csv"},
-      {vortex, res, tv / 2, "CFL", "Solver:cfl", cfl, 6, "cfl",
-       "stability_cfl_vortex.csv"},
-      {wave, res, tw / 3, "CFL", "Solver:cfl", cfl, 6, "cfl",
-       "stability_cfl_wave.csv"}};
+  sws[0] = (struct sweep){vortex, res, tv,   "nu (m^2/s)", "Scene:nu",
+                          nus,    3,   "nu", NULL};
   for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++) {
     const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
-    const struct sweep p = {L->scene,
-                            res,
-                            L->t_end,
-                            "initial shift / dx",
-                            "Solver:perturb",
-                            pert,
-                            1,
-                            "perturb",
-                            NULL};
-    sws[1 + sc] = p;
+    sws[1 + sc] = (struct sweep){L->scene,
+                                 res,
+                                 L->t_end,
+                                 "initial shift / dx",
+                                 "Solver:perturb",
+                                 pert,
+                                 1,
+                                 "perturb",
+                                 NULL};
   }
+  sws[4] = (struct sweep){vortex, res, tv,   "c0 (m/s)",        "Scene:c0",
+                          c0s,    4,   "c0", "stability_c0.csv"};
+  sws[5] = (struct sweep){vortex, res,          tv / 2,
+                          "CFL",  "Solver:cfl", cfl,
+                          6,      "cfl",        "stability_cfl_vortex.csv"};
+  sws[6] = (struct sweep){wave,  res,          tw / 3,
+                          "CFL", "Solver:cfl", cfl,
+                          6,     "cfl",        "stability_cfl_wave.csv"};
+  return VSPH_OK;
+}
+
+int vsph_report_stability_plan(struct vsph_report *R) {
+  struct sweep sws[NSWEEP];
+  double c0s[4];
+  struct vsph_scene scene;
+  int st = sweeps(R, sws, c0s, &scene);
+  for (size_t k = 0; k < NSWEEP && !st; k++)
+    for (size_t v = 0; v < sws[k].nv && !st; v++)
+      for (int f = 0; f < NFORM && !st; f++) {
+        char set[128], tag[48];
+        const char *extra[2];
+        const struct vsph_report_runspec rs =
+            sweep_spec(&sws[k], v, f, set, tag, extra);
+        st = vsph_report_jobs_plan_run(R, &rs);
+      }
+  /* PVWF's pairing: the stretching square's ladder and reference */
+  if (!st) st = vsph_report_runs_plan_scene(R, 1);
+  return st;
+}
+
+int vsph_report_stability_write(struct vsph_report *R) {
+  const size_t res = R->full ? 40 : 20;
+  struct sweep sws[NSWEEP];
+  double c0s[4];
+  struct vsph_scene scene;
+  int st = sweeps(R, sws, c0s, &scene);
+  if (st) return st;
   vsph_text_set(&R->tv, "res", "%zu", res);
   vsph_text_set(&R->tv, "onset", "%g", 100 * VSPH_REPORT_ONSET);
   st = vsph_report_say(R, "stability.intro");
-  if (!st) st = prefetch(R, sws, sizeof sws / sizeof sws[0]);
   if (!st) st = square_ladder(R);
   if (!st) st = vsph_report_say(R, "stability.hard");
   for (int k = 0; k < 4 && !st; k++) st = sweep(R, &sws[k]); /* nu, shift */

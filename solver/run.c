@@ -194,7 +194,8 @@ static unsigned schedule(struct vsph_run *r) {
  * estimate. Steps: t_end over THEORY 5's time step at t = 0 with the
  * scene's U_max and largest body force. */
 static int check_cost(const struct vsph_run_props *rp,
-                      const struct vsph_scene *sc, double t_end) {
+                      const struct vsph_scene *sc, double t_end,
+                      struct vsph_run_estimate *e) {
   const double dx = sc->ref_length / (double)rp->res, h = rp->hdx * dx;
   const double n =
       sc->area * pow((double)rp->res, sc->dim) + 4.0 * (double)rp->res;
@@ -220,6 +221,8 @@ static int check_cost(const struct vsph_run_props *rp,
       sc->dim, n, ghosts,
       rp->corr != VSPH_PAIR_CORR_NONE ? 2 : vsph_viscous_first_pass(rp->form),
       (int)rp->tvf);
+  e->particles = n;
+  e->bytes = bytes;
   const double gib = bytes / (1024.0 * 1024.0 * 1024.0);
   if (gib > rp->max_memory)
     VSPH_FAIL(VSPH_EINVAL,
@@ -272,6 +275,7 @@ static int check_cost(const struct vsph_run_props *rp,
                                                                 : 0.0;
   if (gmax > 0.0) dt = fmin(dt, 0.25 * sqrt(h / gmax));
   const double steps = t_end / dt;
+  e->steps = steps;
   if (!(steps <= (double)rp->max_steps))
     VSPH_FAIL(VSPH_EINVAL,
               "the run needs about %.3g steps (dt = %.3g s to t_end = %g s), "
@@ -281,10 +285,18 @@ static int check_cost(const struct vsph_run_props *rp,
   return VSPH_OK;
 }
 
+int vsph_run_estimate(const struct vsph_run_props *rp,
+                      const struct vsph_scene *sc,
+                      struct vsph_run_estimate *e) {
+  return check_cost(rp, sc, rp->t_end > 0 ? rp->t_end : sc->t_end, e);
+}
+
 int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
                    struct vsph_run **out) {
   *out = NULL;
-  const int cost = check_cost(rp, sc, rp->t_end > 0 ? rp->t_end : sc->t_end);
+  struct vsph_run_estimate e;
+  const int cost =
+      check_cost(rp, sc, rp->t_end > 0 ? rp->t_end : sc->t_end, &e);
   if (cost) return cost;
   struct vsph_run *r = calloc(1, sizeof *r);
   if (!r) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a run");

@@ -118,6 +118,21 @@ const struct vsph_params_spec *vsph_run_params(size_t *n);
  *  @return VSPH_OK or VSPH_EINVAL (the message names the parameter). */
 int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm);
 
+/** What a run will cost, estimated before anything is allocated. */
+struct vsph_run_estimate {
+  double particles; /*!< fluid particles */
+  double bytes;     /*!< memory at most (ghosts and buffers included) */
+  double steps;     /*!< steps to the end time at t = 0's time step */
+};
+
+/** @brief The estimate of a run of @p sc with @p rp (the figures
+ *  vsph_run_alloc checks against Solver:max_memory and max_steps), for a
+ *  scheduler: its order and resource requests.
+ *  @return VSPH_OK, or VSPH_EINVAL when the run would be refused (the
+ *  message says why). */
+int vsph_run_estimate(const struct vsph_run_props *rp,
+                      const struct vsph_scene *sc, struct vsph_run_estimate *e);
+
 /** @brief Lay out @p sc at rp->res particles across, perturb it if asked,
  *  and set up the integrator. Due at once: a row and (if any) a snapshot.
  *  @return VSPH_OK, VSPH_EINVAL, VSPH_ENOMEM, VSPH_ELIB. */

@@ -326,6 +326,53 @@ START_TEST(test_contact_inputs) {
 }
 END_TEST
 
+/* The report's ways of running (--plan, --jobs, --slurm, --assemble):
+ * bad options give one line, exit 2 and no folder; an assembly without
+ * its runs names the first missing one and writes nothing. */
+START_TEST(test_report_job_inputs) {
+  static const char *const cases[][2] = {
+      {"report --jobs 0", "--jobs"},
+      {"report --jobs 300", "--jobs"},
+      {"report --jobs x", "--jobs"},
+      {"report --plan --jobs 2", "exclude"},
+      {"report --slurm --assemble", "exclude"},
+      {"report --threads 2", "--threads needs"},
+      {"report --jobs 2 --threads 0", "--threads"},
+      {"report --partition p", "--partition needs --slurm"},
+      {"report --time 10", "--time needs --slurm"},
+      {"report --slurm --time 1h", "--time"},
+      {"report --slurm --time 10:", "--time"},
+      {"report --slurm --partition 'a b'", "--partition"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    char args[300];
+    snprintf(args, sizeof args, "%s --out /tmp/vsph_never_jobs", cases[k][0]);
+    struct vsph_test_outcome *o = vsph_test_cli(args);
+    ck_assert_msg(o->status == 2, "'%s' exited %d", cases[k][0], o->status);
+    ck_assert_msg(o->err_lines == 1, "'%s' said %d lines: %s", cases[k][0],
+                  o->err_lines, o->err);
+    ck_assert_msg(strstr(o->err, cases[k][1]) != NULL, "'%s' said: %s",
+                  cases[k][0], o->err);
+    ck_assert(!exists("/tmp/vsph_never_jobs"));
+  }
+  /* without sbatch on PATH */
+  struct vsph_test_outcome *o = vsph_test_shell(
+      "PATH=/nonexistent exec \"$VSPH_BIN\" report --slurm --out "
+      "/tmp/vsph_never_jobs");
+  ck_assert_int_eq(o->status, 2);
+  ck_assert_int_eq(o->err_lines, 1);
+  ck_assert_msg(strstr(o->err, "sbatch") != NULL, "%s", o->err);
+  ck_assert(!exists("/tmp/vsph_never_jobs"));
+  /* the assembly of nothing: not bad input (exit 1), nothing written */
+  o = vsph_test_cli(
+      "report --only stability --assemble --out "
+      "/tmp/vsph_never_jobs");
+  ck_assert_int_eq(o->status, 1);
+  ck_assert_int_eq(o->err_lines, 1);
+  ck_assert_msg(strstr(o->err, "missing or unfinished") != NULL, "%s", o->err);
+  ck_assert(!exists("/tmp/vsph_never_jobs"));
+}
+END_TEST
+
 Suite *vsph_hardening_suite(void) {
   Suite *s = suite_create("hardening");
   TCase *tc = tcase_create("defects");
@@ -339,6 +386,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_several_params_files);
   tcase_add_test(tc, test_messages_name_the_problem);
   tcase_add_test(tc, test_contact_inputs);
+  tcase_add_test(tc, test_report_job_inputs);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */

@@ -1,0 +1,817 @@
+/* The report's runs as jobs. Every part declares the runs it reads (its
+ * plan) before any is run; the report then runs what is missing and
+ * assembles. Three ways to run them: in this process, two at a time (the
+ * default); as child processes, N at a time (`--jobs N`); or as a Slurm
+ * job array with the assembly after it (`--slurm`). A job is one command
+ * (`vsph run ... --cache` or `vsph contact ... --cache`) whose folder ends
+ * with key.txt (io/rundir): the cache, and the proof that the run ended,
+ * whichever way ran it. */
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <omp.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/prctl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "../common/consts.h"
+#include "../common/params.h"
+#include "../common/status.h"
+#include "../io/files.h"
+#include "../io/json.h"
+#include "../io/rundir.h"
+#include "../io/shear.h"
+#include "../solver/run.h"
+#include "../solver/scene.h"
+#include "report_internal.h"
+
+extern char **environ; /* POSIX: the application declares it */
+
+/* ----------------------------------------------------------------- jobs */
+
+/* The parameters of @p j's settings, as given. */
+static int params_of(const struct vsph_report_job *j,
+                     struct vsph_params **out) {
+  struct vsph_params *prm = vsph_params_alloc();
+  if (!prm) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate parameters");
+  int st = VSPH_OK;
+  for (size_t k = 0; k < j->nset && !st; k++) {
+    char kv[128];
+    snprintf(kv, sizeof kv, "%s", j->set[k]);
+    char *eq = strchr(kv, '=');
+    if (!eq) {
+      vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                         "setting '%s' lacks '='", kv);
+      st = VSPH_EINVAL;
+      break;
+    }
+    *eq = '\0';
+    st = vsph_params_set(prm, kv, eq + 1);
+  }
+  if (st) {
+    vsph_params_free(prm);
+    return st;
+  }
+  *out = prm;
+  return VSPH_OK;
+}
+
+/* Its key (io/rundir's, from the settings as given) and cache state. */
+static int finish_job(struct vsph_report_job *j) {
+  struct vsph_params *prm;
+  int st = params_of(j, &prm);
+  if (st) return st;
+  char what[64];
+  if (j->kind == VSPH_REPORT_JOB_RUN)
+    snprintf(what, sizeof what, "scene %s", j->scene);
+  else
+    snprintf(what, sizeof what, "contact %zu", j->nprof);
+  j->key = vsph_rundir_key(prm, what);
+  vsph_params_free(prm);
+  if (!j->key) return VSPH_ENOMEM;
+  j->cached = vsph_rundir_key_matches(j->dir, j->key);
+  return VSPH_OK;
+}
+
+void vsph_report_jobs_free(struct vsph_report_job *j) {
+  free(j->key);
+  j->key = NULL;
+}
+
+int vsph_report_jobs_run(const struct vsph_report *R,
+                         const struct vsph_report_runspec *rs,
+                         struct vsph_report_job *j) {
+  memset(j, 0, sizeof *j);
+  j->kind = VSPH_REPORT_JOB_RUN;
+  snprintf(j->scene, sizeof j->scene, "%s", rs->scene);
+  snprintf(j->dir, sizeof j->dir, "%s/runs/%s-%s-%zu%s%s", R->dir, rs->scene,
+           rs->visc, rs->res, rs->tag ? "-" : "", rs->tag ? rs->tag : "");
+  size_t n = 0;
+  /* "contact" names the scheme (contact SPH has no viscous form) */
+  if (!strcmp(rs->visc, "contact"))
+    snprintf(j->set[n++], 128, "Solver:scheme=contact");
+  else
+    snprintf(j->set[n++], 128, "Solver:visc=%s", rs->visc);
+  snprintf(j->set[n++], 128, "Solver:res=%zu", rs->res);
+  snprintf(j->set[n++], 128, "Solver:t_end=%.17g", rs->t_end);
+  /* the ladders keep snapshots: the vortex patch's u_theta profiles and
+   * the particle pictures of section 5 read them */
+  snprintf(j->set[n++], 128, "Solver:snapshots=%d", rs->tag ? 0 : 4);
+  for (size_t k = 0; rs->extra && rs->extra[k]; k++) {
+    if (n == VSPH_REPORT_JOB_NSET)
+      VSPH_FAIL(VSPH_EINVAL, "%s: more than %d settings", j->dir,
+                VSPH_REPORT_JOB_NSET);
+    snprintf(j->set[n++], 128, "%s", rs->extra[k]);
+  }
+  j->nset = n;
+  const struct vsph_scene_type *t = vsph_scene_find(rs->scene);
+  snprintf(j->label, sizeof j->label, "%s %s %s/dx=%zu%s%s%s", rs->scene,
+           rs->visc, t ? t->length_name : "res", rs->res, rs->tag ? " (" : "",
+           rs->tag ? rs->tag : "", rs->tag ? ")" : "");
+  return finish_job(j);
+}
+
+int vsph_report_jobs_shear(const struct vsph_report *R, const char *tag,
+                           const char (*set)[96], size_t n, size_t nprof,
+                           struct vsph_report_job *j) {
+  memset(j, 0, sizeof *j);
+  j->kind = VSPH_REPORT_JOB_SHEAR;
+  snprintf(j->scene, sizeof j->scene, "shear");
+  snprintf(j->dir, sizeof j->dir, "%s/runs/contact-%s", R->dir, tag);
+  if (n > VSPH_REPORT_JOB_NSET)
+    VSPH_FAIL(VSPH_EINVAL, "%s: more than %d settings", j->dir,
+              VSPH_REPORT_JOB_NSET);
+  for (size_t k = 0; k < n; k++) snprintf(j->set[k], 128, "%s", set[k]);
+  j->nset = n;
+  j->nprof = nprof;
+  snprintf(j->label, sizeof j->label, "shear test %s", tag);
+  return finish_job(j);
+}
+
+/* The solver's estimate of @p j (particles, steps, memory). */
+static int estimate(struct vsph_report_job *j) {
+  struct vsph_params *prm;
+  int st = params_of(j, &prm);
+  if (st) return st;
+  struct vsph_run_props rp;
+  struct vsph_scene sc;
+  struct vsph_run_estimate e = {0, 0, 0};
+  const struct vsph_scene_type *t = vsph_scene_find(j->scene);
+  if (!t) {
+    vsph_params_free(prm);
+    VSPH_FAIL(VSPH_EINVAL, "%s: unknown scene '%s'", j->dir, j->scene);
+  }
+  st = vsph_run_props_init(&rp, prm);
+  if (!st) st = vsph_scene_init(&sc, t, prm);
+  if (!st) st = vsph_run_estimate(&rp, &sc, &e);
+  vsph_params_free(prm);
+  j->particles = e.particles;
+  j->steps = e.steps;
+  j->bytes = e.bytes;
+  return st;
+}
+
+int vsph_report_jobs_plan_add(struct vsph_report *R,
+                              struct vsph_report_job *j) {
+  struct vsph_report_plan *P = R->plan;
+  if (!P) {
+    vsph_report_jobs_free(j);
+    return VSPH_OK;
+  }
+  for (size_t k = 0; k < P->n; k++)
+    if (!strcmp(P->job[k].dir, j->dir)) {
+      const int same = !strcmp(P->job[k].key, j->key);
+      vsph_report_jobs_free(j);
+      if (same) return VSPH_OK;
+      VSPH_FAIL(VSPH_ELIB,
+                "two runs of the report share the folder %s with different "
+                "settings (a bug in the report's specs)",
+                P->job[k].dir);
+    }
+  int st = estimate(j);
+  if (!st && P->n == P->cap) {
+    const size_t cap = P->cap ? 2 * P->cap : 64;
+    struct vsph_report_job *g = realloc(P->job, cap * sizeof *g);
+    if (!g) {
+      st = VSPH_ENOMEM;
+      vsph_status_report(st, __FILE__, __LINE__, "cannot grow the plan");
+    } else {
+      P->job = g;
+      P->cap = cap;
+    }
+  }
+  if (st) {
+    vsph_report_jobs_free(j);
+    return st;
+  }
+  P->job[P->n++] = *j; /* the plan owns the key now */
+  j->key = NULL;
+  return VSPH_OK;
+}
+
+int vsph_report_jobs_plan_run(struct vsph_report *R,
+                              const struct vsph_report_runspec *rs) {
+  struct vsph_report_job j;
+  const int st = vsph_report_jobs_run(R, rs, &j);
+  if (st) {
+    vsph_report_jobs_free(&j);
+    return st;
+  }
+  return vsph_report_jobs_plan_add(R, &j);
+}
+
+/* Run @p j here: its folder ends with key.txt, or it failed. */
+static int execute(const struct vsph_report *R,
+                   const struct vsph_report_job *j) {
+  struct vsph_params *prm;
+  int st = params_of(j, &prm);
+  if (st) return st;
+  char command[4096];
+  vsph_report_jobs_command(j, "vsph", 0, command, sizeof command);
+  if (j->kind == VSPH_REPORT_JOB_RUN) {
+    const struct vsph_rundir_opts opts = {.dir = j->dir,
+                                          .progress = NULL,
+                                          .stop = R->stop,
+                                          .command = command,
+                                          .cache = 1};
+    struct vsph_rundir_result res;
+    st = vsph_rundir_execute(prm, j->scene, &opts, &res);
+  } else {
+    int cached;
+    st = vsph_shear_execute(prm, j->nprof, j->dir, 1, 1, &cached);
+  }
+  vsph_params_free(prm);
+  return st;
+}
+
+static const struct vsph_report_job *find(const struct vsph_report_plan *P,
+                                          const char *dir) {
+  for (size_t k = 0; k < P->n; k++)
+    if (!strcmp(P->job[k].dir, dir)) return &P->job[k];
+  return NULL;
+}
+
+int vsph_report_jobs_ready(const struct vsph_report *R,
+                           const struct vsph_report_job *j) {
+  if (!R->plan) return j->cached ? VSPH_OK : execute(R, j);
+  const struct vsph_report_job *p = find(R->plan, j->dir);
+  if (!p || strcmp(p->key, j->key))
+    VSPH_FAIL(VSPH_ELIB,
+              "the report reads %s, which no part's plan lists with these "
+              "settings (a bug: the part's plan function misses it)",
+              j->dir);
+  if (!vsph_rundir_key_matches(p->dir, p->key))
+    VSPH_FAIL(VSPH_EIO,
+              "run %s is missing or unfinished (no matching key.txt): run the "
+              "report's runs first (vsph report, --jobs N or --slurm)",
+              p->dir);
+  return VSPH_OK;
+}
+
+/* ------------------------------------------------------------- commands */
+
+size_t vsph_report_jobs_argv(const struct vsph_report_job *j, const char *exe,
+                             size_t threads, char buf[2][24], const char **argv,
+                             size_t cap) {
+  size_t n = 0;
+#define ARG(s) \
+  if (n + 1 < cap) argv[n++] = (s)
+  ARG(exe);
+  if (j->kind == VSPH_REPORT_JOB_RUN) {
+    ARG("run");
+    ARG(j->scene);
+  } else {
+    ARG("contact");
+  }
+  ARG("--out");
+  ARG(j->dir);
+  if (j->kind == VSPH_REPORT_JOB_SHEAR) {
+    snprintf(buf[0], 24, "%zu", j->nprof);
+    ARG("--profiles");
+    ARG(buf[0]);
+  }
+  ARG("--cache");
+  if (threads > 0) {
+    snprintf(buf[1], 24, "%zu", threads);
+    ARG("--quiet");
+    ARG("--threads");
+    ARG(buf[1]);
+  }
+  for (size_t k = 0; k < j->nset; k++) {
+    ARG("--set");
+    ARG(j->set[k]);
+  }
+#undef ARG
+  argv[n] = NULL;
+  return n;
+}
+
+/* @p s for a POSIX shell: as it is when every character is safe, else in
+ * single quotes (a quote inside as '\''). */
+static size_t quote(const char *s, char *out, size_t len) {
+  const int safe = *s && strspn(s,
+                                "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrs"
+                                "tuvwxyz0123456789_./:=+-,@%") == strlen(s);
+  size_t n = 0;
+#define PUT(c)                     \
+  do {                             \
+    if (n + 1 < len) out[n] = (c); \
+    n++;                           \
+  } while (0)
+  if (!safe) PUT('\'');
+  for (; *s; s++) {
+    if (!safe && *s == '\'') {
+      PUT('\'');
+      PUT('\\');
+      PUT('\'');
+    }
+    PUT(*s);
+  }
+  if (!safe) PUT('\'');
+#undef PUT
+  if (len) out[n < len ? n : len - 1] = '\0';
+  return n;
+}
+
+void vsph_report_jobs_command(const struct vsph_report_job *j, const char *exe,
+                              size_t threads, char *out, size_t len) {
+  const char *argv[2 * VSPH_REPORT_JOB_NSET + 16];
+  char buf[2][24];
+  const size_t n = vsph_report_jobs_argv(j, exe, threads, buf, argv,
+                                         sizeof argv / sizeof argv[0]);
+  size_t w = 0;
+  if (len) out[0] = '\0';
+  for (size_t k = 0; k < n && w + 1 < len; k++) {
+    if (k) out[w++] = ' ';
+    w += quote(argv[k], out + w, len - w);
+  }
+  if (w >= len && len) out[len - 1] = '\0';
+}
+
+/* FNV-1a, 64 bits: a short fingerprint of a key for the plan's table. */
+static unsigned long long fingerprint(const char *s) {
+  unsigned long long h = 14695981039346656037ull;
+  for (; *s; s++) h = (h ^ (unsigned char)*s) * 1099511628211ull;
+  return h;
+}
+
+int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
+                                FILE *f) {
+  const struct vsph_report_plan *P = R->plan;
+  size_t missing = 0;
+  double cost = 0.0;
+  for (size_t k = 0; k < P->n; k++)
+    if (!P->job[k].cached) {
+      missing++;
+      cost += P->job[k].particles * P->job[k].steps;
+    }
+  fprintf(f,
+          "# vsph %s report plan for %s (%s): %zu runs, %zu cached, %zu "
+          "missing (%.3g particle-steps)\n"
+          "# key: FNV-1a 64 of the run's key.txt (version, source hash, "
+          "settings); steps: at t = 0's time step; memory: the solver's "
+          "bound\n",
+          VSPH_VERSION, R->dir, R->full ? "full" : "quick", P->n,
+          P->n - missing, missing, cost);
+  fprintf(f, "status\tfolder\tkey\tparticles\tsteps\tmemory_mib\tcommand\n");
+  char *cmd = malloc(8192);
+  if (!cmd) VSPH_FAIL(VSPH_ENOMEM, "cannot print the plan");
+  for (int pass = 0; pass < 2; pass++)
+    for (size_t k = 0; k < P->n; k++) {
+      const struct vsph_report_job *j = &P->job[k];
+      if (j->cached != pass) continue;
+      vsph_report_jobs_command(j, exe, 0, cmd, 8192);
+      fprintf(f, "%s\t%s\t%016llx\t%.0f\t%.0f\t%.1f\t%s\n",
+              j->cached ? "cached" : "missing", j->dir, fingerprint(j->key),
+              j->particles, j->steps, j->bytes / 1048576.0, cmd);
+    }
+  free(cmd);
+  if (fflush(f) != 0 || ferror(f))
+    VSPH_FAIL(VSPH_EIO, "cannot write the plan: %s", strerror(errno));
+  return VSPH_OK;
+}
+
+/* ------------------------------------------------------ the missing runs */
+
+static double cost_of(const struct vsph_report_job *j) {
+  return j->particles * j->steps;
+}
+
+/* The missing jobs of the plan, the costliest first. */
+static int by_cost(const void *a, const void *b) {
+  const double x = cost_of(*(const struct vsph_report_job *const *)a),
+               y = cost_of(*(const struct vsph_report_job *const *)b);
+  return (x < y) - (x > y);
+}
+static size_t missing(struct vsph_report *R, struct vsph_report_job ***out) {
+  struct vsph_report_plan *P = R->plan;
+  *out = malloc((P->n ? P->n : 1) * sizeof **out);
+  if (!*out) return (size_t)-1;
+  size_t m = 0;
+  for (size_t k = 0; k < P->n; k++) {
+    P->job[k].failed = 0;
+    P->job[k].cached = vsph_rundir_key_matches(P->job[k].dir, P->job[k].key);
+    if (!P->job[k].cached) (*out)[m++] = &P->job[k];
+  }
+  qsort(*out, m, sizeof **out, by_cost);
+  return m;
+}
+
+int vsph_report_jobs_local(struct vsph_report *R, int width) {
+  struct vsph_report_job **order;
+  const size_t m = missing(R, &order);
+  if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
+  double cost_all = 0.0, cost_done = 0.0;
+  for (size_t k = 0; k < m; k++) cost_all += cost_of(order[k]);
+  if (m)
+    fprintf(stderr,
+            "vsph report: %zu of the %zu runs are not in the cache; running "
+            "them here, %d at a time\n",
+            m, R->plan->n, width);
+  const double t0 = omp_get_wtime();
+  size_t started = 0, done = 0;
+  int st = VSPH_OK;
+  /* one run per thread, each run's own loops on one thread (nested
+   * regions are inactive): the runs are independent, and a run's results
+   * do not depend on its thread count, so this changes only the time */
+#pragma omp parallel for schedule(dynamic, 1) num_threads(width)
+  for (size_t k = 0; k < m; k++) {
+    int failed;
+    size_t me = 0;
+#pragma omp critical(vsph_report_jobs_local)
+    {
+      failed = st;
+      if (!failed) {
+        me = ++started;
+        fprintf(stderr, "  [%zu/%zu] %s: started (%.0f s elapsed)\n", me, m,
+                order[k]->label, omp_get_wtime() - t0);
+      }
+    }
+    if (failed) continue;
+    omp_set_num_threads(1); /* this thread's nested regions: itself alone */
+    const double t1 = omp_get_wtime();
+    const int s = execute(R, order[k]);
+#pragma omp critical(vsph_report_jobs_local)
+    {
+      if (s && !st) st = s;
+      done++;
+      cost_done += cost_of(order[k]);
+      const double el = omp_get_wtime() - t0;
+      /* what is left, from the solver's estimate (particles x steps) and
+       * the rate so far */
+      const double left = el * (cost_all - cost_done) / fmax(cost_done, 1.0);
+      if (s)
+        fprintf(stderr, "  [%zu/%zu] %s: failed\n", me, m, order[k]->label);
+      else
+        fprintf(stderr,
+                "  [%zu/%zu] %s: done in %.1f s; %zu of %zu done, %.0f s "
+                "elapsed, about %.0f s left\n",
+                me, m, order[k]->label, omp_get_wtime() - t1, done, m, el,
+                left);
+    }
+  }
+  free(order);
+  for (size_t k = 0; k < R->plan->n; k++)
+    R->plan->job[k].cached =
+        vsph_rundir_key_matches(R->plan->job[k].dir, R->plan->job[k].key);
+  return st;
+}
+
+/* ------------------------------------------------------ the child pool */
+
+/* runs/logs/NAME.log of a job: its folder's last component. */
+static void log_path(const struct vsph_report *R,
+                     const struct vsph_report_job *j, char *buf, size_t len) {
+  const char *base = strrchr(j->dir, '/');
+  snprintf(buf, len, "%s/runs/logs/%s.log", R->dir, base ? base + 1 : j->dir);
+}
+
+/* Start @p j as a child of @p exe with its output in its log. */
+static pid_t spawn(const struct vsph_report *R, const struct vsph_report_job *j,
+                   const char *exe, size_t threads) {
+  const char *argv[2 * VSPH_REPORT_JOB_NSET + 16];
+  char buf[2][24], logf[700];
+  vsph_report_jobs_argv(j, exe, threads, buf, argv,
+                        sizeof argv / sizeof argv[0]);
+  log_path(R, j, logf, sizeof logf);
+  const int fd = open(logf, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) {
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot open %s: %s", logf,
+                       strerror(errno));
+    return -1;
+  }
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid == 0) { /* the child: async-signal-safe calls only, then exec */
+    /* it stops (after its step, uncached) if the report dies */
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(128 + SIGTERM);
+    if (dup2(fd, 1) < 0 || dup2(fd, 2) < 0) _exit(127);
+    close(fd);
+    execve(exe, (char *const *)argv, environ);
+    static const char msg[] = "vsph report: cannot start the run's command\n";
+    ssize_t w = write(2, msg, sizeof msg - 1);
+    (void)w;
+    _exit(127);
+  }
+  close(fd);
+  if (pid < 0)
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot fork: %s",
+                       strerror(errno));
+  return pid;
+}
+
+/* "ok", or "unstable at t = T" from a run's run.json. */
+static void verdict(const struct vsph_report_job *j, char *buf, size_t len) {
+  snprintf(buf, len, "ok");
+  if (j->kind != VSPH_REPORT_JOB_RUN) return;
+  char path[600];
+  snprintf(path, sizeof path, "%s/run.json", j->dir);
+  cJSON *o = vsph_json_read(path);
+  if (!o) return;
+  const cJSON *s = cJSON_GetObjectItemCaseSensitive(o, "status");
+  if (cJSON_IsString(s) && strcmp(s->valuestring, "ok"))
+    snprintf(buf, len, "%s at t = %.4g s", s->valuestring,
+             vsph_json_get_number(o, "unstable_time", (double)NAN));
+  cJSON_Delete(o);
+}
+
+/* runs/failed.txt: the runs that did not end, with their logs (removed
+ * when none failed). */
+static int record_failed(const struct vsph_report *R,
+                         struct vsph_report_job **order, size_t m,
+                         const int *status) {
+  char *text = NULL;
+  size_t len = 0, nf = 0;
+  FILE *f = open_memstream(&text, &len);
+  if (!f) VSPH_FAIL(VSPH_ENOMEM, "cannot list the failed runs");
+  fprintf(f,
+          "# runs of the last vsph report that did not end: folder, "
+          "exit status, log\n");
+  for (size_t k = 0; k < m; k++)
+    if (order[k]->failed) {
+      char logf[700];
+      log_path(R, order[k], logf, sizeof logf);
+      fprintf(f, "%s\t%d\t%s\n", order[k]->dir, status[k], logf);
+      nf++;
+    }
+  fclose(f);
+  char dir[600], path[700];
+  snprintf(dir, sizeof dir, "%s/runs", R->dir);
+  snprintf(path, sizeof path, "%s/failed.txt", dir);
+  int st = VSPH_OK;
+  if (nf)
+    st = vsph_files_write(dir, "failed.txt", text);
+  else if (remove(path) != 0 && errno != ENOENT)
+    st = VSPH_EIO;
+  free(text);
+  return st;
+}
+
+int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
+                          size_t threads) {
+  struct vsph_report_job **order;
+  const size_t m = missing(R, &order);
+  if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
+  char logs[600];
+  snprintf(logs, sizeof logs, "%s/runs/logs", R->dir);
+  int st = vsph_files_mkdir(logs);
+  pid_t *pid = calloc(m ? m : 1, sizeof *pid);
+  int *status = calloc(m ? m : 1, sizeof *status);
+  double *t1 = calloc(m ? m : 1, sizeof *t1);
+  if (!st && (!pid || !status || !t1)) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot track %zu runs", m);
+  }
+  if (m && !st)
+    fprintf(stderr,
+            "vsph report: %zu of the %zu runs are not in the cache; running "
+            "them as %zu processes of %zu threads (logs in %s)\n",
+            m, R->plan->n, njobs, threads, logs);
+  const double t0 = omp_get_wtime();
+  size_t next = 0, running = 0, done = 0, nfailed = 0;
+  int stopping = st != VSPH_OK, err = VSPH_OK;
+  while (running > 0 || (next < m && !stopping)) {
+    while (!stopping && next < m && running < njobs) {
+      if ((pid[next] = spawn(R, order[next], exe, threads)) < 0) {
+        err = VSPH_EIO; /* stop the others, as on a signal */
+        pid[next] = 0;
+        break;
+      }
+      t1[next] = omp_get_wtime();
+      fprintf(stderr, "  [%zu/%zu] %s: started, pid %ld (%.0f s elapsed)\n",
+              next + 1, m, order[next]->label, (long)pid[next], t1[next] - t0);
+      running++;
+      next++;
+    }
+    if (!stopping && (err || (R->stop && *R->stop))) { /* pass it on */
+      stopping = 1;
+      fprintf(stderr,
+              "vsph report: stopping; each running run stops after its "
+              "step (it stays uncached)\n");
+      for (size_t k = 0; k < next; k++)
+        if (pid[k] > 0) kill(pid[k], SIGTERM);
+    }
+    int ws;
+    const pid_t w = waitpid(-1, &ws, WNOHANG);
+    if (w == 0 || (w < 0 && errno == EINTR)) {
+      const struct timespec ts = {0, 100000000}; /* 0.1 s */
+      nanosleep(&ts, NULL);
+      continue;
+    }
+    if (w < 0) break; /* no child left */
+    size_t k = 0;
+    while (k < next && pid[k] != w) k++;
+    if (k == next) continue; /* not one of ours */
+    pid[k] = 0;
+    running--;
+    done++;
+    status[k] = WIFEXITED(ws) ? WEXITSTATUS(ws) : 128 + WTERMSIG(ws);
+    order[k]->cached =
+        status[k] == 0 && vsph_rundir_key_matches(order[k]->dir, order[k]->key);
+    const double el = omp_get_wtime() - t0;
+    if (order[k]->cached) {
+      char v[96];
+      verdict(order[k], v, sizeof v);
+      fprintf(stderr,
+              "  [%zu/%zu] %s: %s, %.1f s; %zu of %zu done, %.0f s elapsed\n",
+              k + 1, m, order[k]->label, v, omp_get_wtime() - t1[k], done, m,
+              el);
+    } else if (!stopping) {
+      char logf[700];
+      log_path(R, order[k], logf, sizeof logf);
+      order[k]->failed = 1;
+      nfailed++;
+      fprintf(stderr,
+              "  [%zu/%zu] %s: FAILED (exit status %d; see %s); the others "
+              "go on\n",
+              k + 1, m, order[k]->label, status[k], logf);
+    }
+  }
+  if (!st) st = record_failed(R, order, next, status);
+  free(order);
+  free(pid);
+  free(status);
+  free(t1);
+  if (st) return st;
+  if (err) return err;
+  if (stopping) return VSPH_EINTR;
+  if (nfailed)
+    VSPH_FAIL(VSPH_ELIB,
+              "%zu of %zu runs failed (listed in %s/runs/failed.txt with their "
+              "logs); the report is not assembled: mend them and rerun, only "
+              "they run again",
+              nfailed, m, R->dir);
+  return VSPH_OK;
+}
+
+/* ---------------------------------------------------------------- Slurm */
+
+/* A Slurm time limit from an estimate in seconds: D-HH:MM:SS. */
+static void slurm_time(double s, char *buf, size_t len) {
+  const long t = (long)ceil(s);
+  snprintf(buf, len, "%ld-%02ld:%02ld:%02ld", t / 86400, t / 3600 % 24,
+           t / 60 % 60, t % 60);
+}
+
+/* The job id that `sbatch --parsable` printed ("ID" or "ID;cluster"). */
+static int submit(const char *cmd, char *id, size_t len) {
+  FILE *p = popen(cmd, "r");
+  if (!p) VSPH_FAIL(VSPH_EIO, "cannot run '%s': %s", cmd, strerror(errno));
+  char line[256] = "";
+  const int got = fgets(line, sizeof line, p) != NULL;
+  const int rc = pclose(p);
+  line[strcspn(line, ";\n")] = '\0';
+  if (!got || rc != 0 || !*line || strspn(line, "0123456789") != strlen(line))
+    VSPH_FAIL(VSPH_EIO, "sbatch refused the job ('%s' answered '%s')", cmd,
+              line);
+  snprintf(id, len, "%.40s", line);
+  return VSPH_OK;
+}
+
+/* Particle-steps per second and thread the time limit assumes: a third of
+ * the slowest step this machine measured (`make bench`: the contact
+ * scheme's, about 2e5 particle-steps/s in 3-D; the 2-D scenes run
+ * 1e6-3e6), so that a cluster's slower core still fits. */
+#define SLURM_RATE 6e4
+
+int vsph_report_jobs_slurm(struct vsph_report *R,
+                           const struct vsph_report_slurm *s) {
+  struct vsph_report_job **order;
+  const size_t m = missing(R, &order);
+  if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
+  char dir[600], logs[700];
+  snprintf(dir, sizeof dir, "%s/slurm", R->dir);
+  snprintf(logs, sizeof logs, "%s/logs", dir);
+  int st = vsph_files_mkdir(logs);
+  double mem = 0.0, cost = 0.0;
+  for (size_t k = 0; k < m; k++) {
+    mem = fmax(mem, order[k]->bytes);
+    cost = fmax(cost, cost_of(order[k]));
+  }
+  /* memory: the largest run's bound and 256 MiB for the program itself;
+   * time: the costliest run at SLURM_RATE, at least 10 minutes */
+  const size_t mem_mib = (size_t)ceil(mem / 1048576.0) + 256;
+  char limit[40];
+  if (s->time)
+    snprintf(limit, sizeof limit, "%s", s->time);
+  else
+    slurm_time(fmax(600.0, cost / (SLURM_RATE * (double)s->threads)), limit,
+               sizeof limit);
+  char *text = NULL;
+  size_t len = 0;
+  char *cmd = malloc(8192);
+  FILE *f = st || !cmd ? NULL : open_memstream(&text, &len);
+  if (!st && !f) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot write the job array");
+  }
+  if (f) {
+    fprintf(f,
+            "#!/bin/sh\n"
+            "# vsph %s: the report's missing runs, one array task each "
+            "(written by vsph report --slurm)\n"
+            "#SBATCH --job-name=vsph-runs\n"
+            "#SBATCH --array=0-%zu\n"
+            "#SBATCH --ntasks=1\n"
+            "#SBATCH --cpus-per-task=%zu\n"
+            "#SBATCH --mem=%zuM\n"
+            "#SBATCH --time=%s\n"
+            "#SBATCH --output=%s/task-%%a.log\n",
+            VSPH_VERSION, m ? m - 1 : 0, s->threads, mem_mib, limit, logs);
+    if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
+    fprintf(f, "case \"$SLURM_ARRAY_TASK_ID\" in\n");
+    for (size_t k = 0; k < m; k++) {
+      vsph_report_jobs_command(order[k], s->exe, s->threads, cmd, 8192);
+      fprintf(f, "%zu) exec %s ;;\n", k, cmd);
+    }
+    fprintf(f,
+            "*) echo \"no task $SLURM_ARRAY_TASK_ID\" >&2; exit 2 ;;\n"
+            "esac\n");
+    if (fclose(f) != 0) st = VSPH_ENOMEM;
+    if (!st) st = vsph_files_write(dir, "runs.sbatch", text);
+    free(text);
+    text = NULL;
+  }
+  /* the assembly: the report again, reading the runs only */
+  if (!st && (f = open_memstream(&text, &len))) {
+    fprintf(f,
+            "#!/bin/sh\n"
+            "# vsph %s: the report's assembly after its runs (written by "
+            "vsph report --slurm)\n"
+            "#SBATCH --job-name=vsph-report\n"
+            "#SBATCH --ntasks=1\n"
+            "#SBATCH --cpus-per-task=%zu\n"
+            "#SBATCH --mem=2048M\n"
+            "#SBATCH --time=1:00:00\n"
+            "#SBATCH --output=%s/assemble.log\n",
+            VSPH_VERSION, s->threads, logs);
+    if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
+    quote(s->exe, cmd, 8192);
+    fprintf(f, "OMP_NUM_THREADS=%zu exec %s report %s --assemble\n", s->threads,
+            cmd, s->assemble);
+    if (fclose(f) != 0) st = VSPH_ENOMEM;
+    if (!st) st = vsph_files_write(dir, "assemble.sbatch", text);
+    free(text);
+  } else if (!st) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot write the assembly");
+  }
+  char array_id[64] = "", asm_id[64] = "";
+  if (!st && m) {
+    snprintf(cmd, 8192, "sbatch --parsable %s/runs.sbatch", dir);
+    st = submit(cmd, array_id, sizeof array_id);
+  }
+  if (!st) {
+    if (m)
+      snprintf(cmd, 8192,
+               "sbatch --parsable --dependency=afterany:%s "
+               "%s/assemble.sbatch",
+               array_id, dir);
+    else
+      snprintf(cmd, 8192, "sbatch --parsable %s/assemble.sbatch", dir);
+    st = submit(cmd, asm_id, sizeof asm_id);
+  }
+  if (!st) {
+    cJSON *o = cJSON_CreateObject();
+    const time_t now = time(NULL);
+    char stamp[32];
+    struct tm utc;
+    strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", gmtime_r(&now, &utc));
+    cJSON_AddStringToObject(o, "date", stamp);
+    cJSON_AddStringToObject(o, "array_job", array_id);
+    cJSON_AddStringToObject(o, "assembly_job", asm_id);
+    cJSON_AddNumberToObject(o, "tasks", (double)m);
+    cJSON_AddNumberToObject(o, "runs", (double)R->plan->n);
+    cJSON_AddNumberToObject(o, "cpus_per_task", (double)s->threads);
+    cJSON_AddNumberToObject(o, "mem_mib", (double)mem_mib);
+    cJSON_AddStringToObject(o, "time", limit);
+    cJSON *t = cJSON_AddArrayToObject(o, "task_folders");
+    for (size_t k = 0; k < m; k++)
+      cJSON_AddItemToArray(t, cJSON_CreateString(order[k]->dir));
+    st = vsph_json_write(o, dir, "submitted.json");
+  }
+  if (!st) {
+    if (m)
+      printf(
+          "vsph report: submitted %zu runs as array job %s (%zu CPUs, %zu "
+          "MiB, %s each) and the assembly as job %s after it; %s must be "
+          "on a file system every node shares\n",
+          m, array_id, s->threads, mem_mib, limit, asm_id, R->dir);
+    else
+      printf(
+          "vsph report: every run is cached; submitted the assembly as "
+          "job %s\n",
+          asm_id);
+    fflush(stdout);
+  }
+  free(cmd);
+  free(order);
+  return st;
+}

@@ -1,0 +1,243 @@
+/* The report's runs as jobs (reports/report_jobs.c, io/rundir's cache):
+ * the key is the same however the settings are given; the plan's command
+ * makes exactly the run the report makes in its own process; the child
+ * pool runs what is missing, records a failure and goes on, and resumes
+ * after a half-written run; a part may read only runs its plan lists. */
+#include <check.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "../common/params.h"
+#include "../common/status.h"
+#include "../io/files.h"
+#include "../io/rundir.h"
+#include "../reports/report_internal.h"
+#include "check_suites.h"
+
+static const char *bin(void) {
+  const char *b = getenv("VSPH_BIN");
+  return b ? b : "build/vsph";
+}
+
+/* Two tiny runs: the vortex patch and the stretching square, a few dozen
+ * steps each. */
+static const char *const TINY[] = {"Scene:nu=0.01", NULL};
+static const struct vsph_report_runspec SPEC[2] = {
+    {"vortex-patch", "mgf", 10, 1.0, TINY, "tiny"},
+    {"stretching-square", "pvwf", 10, 0.05, NULL, "tiny"}};
+
+static char *tmpdir(void) {
+  static char dir[64];
+  snprintf(dir, sizeof dir, "/tmp/vsph_jobsXXXXXX");
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  return dir;
+}
+
+static void rmrf(const char *dir) {
+  char cmd[256];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+  ck_assert_int_eq(system(cmd), 0);
+}
+
+/* The key is of the parameters as given, in any order: sorted. */
+START_TEST(test_key_canonical) {
+  struct vsph_params *a = vsph_params_alloc(), *b = vsph_params_alloc();
+  ck_assert_int_eq(vsph_params_set(a, "Solver:res", "20"), 0);
+  ck_assert_int_eq(vsph_params_set(a, "Scene:nu", "1e-3"), 0);
+  ck_assert_int_eq(vsph_params_set(b, "Scene:nu", "1e-3"), 0);
+  ck_assert_int_eq(vsph_params_set(b, "Solver:res", "20"), 0);
+  char *ka = vsph_rundir_key(a, "scene vortex-patch");
+  char *kb = vsph_rundir_key(b, "scene vortex-patch");
+  ck_assert_str_eq(ka, kb);
+  /* each setting and the scene are in it */
+  ck_assert_ptr_nonnull(strstr(ka, "\nScene:nu=1e-3\nSolver:res=20\n"));
+  char *kc = vsph_rundir_key(b, "scene standing-wave");
+  ck_assert_str_ne(ka, kc);
+  ck_assert_int_eq(vsph_params_set(b, "Solver:res", "21"), 0);
+  char *kd = vsph_rundir_key(b, "scene vortex-patch");
+  ck_assert_str_ne(ka, kd);
+  free(ka);
+  free(kb);
+  free(kc);
+  free(kd);
+  vsph_params_free(a);
+  vsph_params_free(b);
+}
+END_TEST
+
+/* The plan's command, run by a shell, makes the folder the report makes in
+ * its own process: the same key.txt and, bit for bit, the same energy.csv
+ * (a run's numbers do not depend on its thread count). */
+START_TEST(test_command_is_the_run) {
+  const char *dir = tmpdir();
+  struct vsph_report R;
+  memset(&R, 0, sizeof R);
+  R.dir = dir;
+  struct vsph_report_job j;
+  ck_assert_int_eq(vsph_report_jobs_run(&R, &SPEC[0], &j), 0);
+  ck_assert_int_eq(j.cached, 0);
+  /* in this process (no plan: the run is made when it is read) */
+  ck_assert_int_eq(vsph_report_jobs_ready(&R, &j), 0);
+  char a[700], b[700], ka[4096], kb[4096];
+  snprintf(a, sizeof a, "%s/energy.csv", j.dir);
+  char *ea = vsph_files_slurp(a, NULL);
+  ck_assert_ptr_nonnull(ea);
+  vsph_test_slurp((snprintf(a, sizeof a, "%s/key.txt", j.dir), a), ka,
+                  sizeof ka);
+  ck_assert_str_eq(ka, j.key);
+  /* by the command, into another folder */
+  char other[400];
+  snprintf(other, sizeof other, "%s/by-command", dir);
+  snprintf(j.dir, sizeof j.dir, "%s", other);
+  char cmd[8192];
+  vsph_report_jobs_command(&j, bin(), 2, cmd, sizeof cmd);
+  ck_assert_ptr_nonnull(strstr(cmd, " run vortex-patch --out "));
+  ck_assert_int_eq(system(cmd), 0);
+  snprintf(b, sizeof b, "%s/energy.csv", other);
+  char *eb = vsph_files_slurp(b, NULL);
+  ck_assert_ptr_nonnull(eb);
+  ck_assert_str_eq(ea, eb);
+  vsph_test_slurp((snprintf(b, sizeof b, "%s/key.txt", other), b), kb,
+                  sizeof kb);
+  ck_assert_str_eq(kb, j.key);
+  /* again: cached, not run (run.json untouched) */
+  snprintf(b, sizeof b, "%s/run.json", other);
+  struct stat s0, s1;
+  ck_assert_int_eq(stat(b, &s0), 0);
+  ck_assert_int_eq(system(cmd), 0);
+  ck_assert_int_eq(stat(b, &s1), 0);
+  ck_assert(s0.st_mtim.tv_sec == s1.st_mtim.tv_sec &&
+            s0.st_mtim.tv_nsec == s1.st_mtim.tv_nsec);
+  free(ea);
+  free(eb);
+  vsph_report_jobs_free(&j);
+  rmrf(dir);
+}
+END_TEST
+
+/* The pool: two good runs and one that cannot be written (its folder is a
+ * file). The failure is recorded and the others end; the plan's reads then
+ * pass for the good ones only. A half-written run is redone, alone. */
+START_TEST(test_pool) {
+  vsph_test_silence();
+  const char *dir = tmpdir();
+  struct vsph_report R;
+  memset(&R, 0, sizeof R);
+  R.dir = dir;
+  struct vsph_report_plan P;
+  memset(&P, 0, sizeof P);
+  R.plan = &P;
+  const struct vsph_report_runspec bad = {"vortex-patch", "meaf",   10, 1.0,
+                                          TINY,           "blocked"};
+  for (int k = 0; k < 2; k++)
+    ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &SPEC[k]), 0);
+  ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &bad), 0);
+  ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &SPEC[0]),
+                   0); /* listed once */
+  ck_assert_uint_eq(P.n, 3);
+  char path[700];
+  snprintf(path, sizeof path, "%s/runs", dir);
+  ck_assert_int_eq(vsph_files_mkdir(path), 0);
+  ck_assert_int_eq(vsph_files_write(path, "vortex-patch-meaf-10-blocked", "x"),
+                   0);
+  /* the estimate orders them; the vortex patch's is the solver's */
+  ck_assert(P.job[0].particles > 300 && P.job[0].particles < 400);
+  ck_assert_int_eq(vsph_report_jobs_pool(&R, bin(), 2, 1), VSPH_ELIB);
+  for (int k = 0; k < 2; k++) {
+    ck_assert_int_eq(P.job[k].cached, 1);
+    ck_assert_int_eq(vsph_report_jobs_ready(&R, &P.job[k]), 0);
+  }
+  ck_assert_int_eq(P.job[2].failed, 1);
+  ck_assert_int_eq(vsph_report_jobs_ready(&R, &P.job[2]), VSPH_EIO);
+  char failed[2048];
+  snprintf(path, sizeof path, "%s/runs/failed.txt", dir);
+  vsph_test_slurp(path, failed, sizeof failed);
+  ck_assert_ptr_nonnull(strstr(failed, "vortex-patch-meaf-10-blocked\t2\t"));
+  ck_assert_ptr_null(strstr(failed, "tiny"));
+  /* a run not in the plan is a bug the read names */
+  const struct vsph_report_runspec stray = {"vortex-patch", "pvwf", 10, 1.0,
+                                            TINY,           "tiny"};
+  struct vsph_report_job j;
+  ck_assert_int_eq(vsph_report_jobs_run(&R, &stray, &j), 0);
+  ck_assert_int_eq(vsph_report_jobs_ready(&R, &j), VSPH_ELIB);
+  vsph_report_jobs_free(&j);
+  /* half-written: its key gone, its table cut; the other one untouched */
+  char e0[700], keep[700];
+  snprintf(e0, sizeof e0, "%s/energy.csv", P.job[0].dir);
+  char *before = vsph_files_slurp(e0, NULL);
+  ck_assert_ptr_nonnull(before);
+  snprintf(path, sizeof path, "%s/key.txt", P.job[0].dir);
+  ck_assert_int_eq(remove(path), 0);
+  ck_assert_int_eq(truncate(e0, 40), 0);
+  snprintf(keep, sizeof keep, "%s/run.json", P.job[1].dir);
+  struct stat s0, s1;
+  ck_assert_int_eq(stat(keep, &s0), 0);
+  snprintf(path, sizeof path, "%s/runs/vortex-patch-meaf-10-blocked", dir);
+  ck_assert_int_eq(remove(path), 0); /* mended: it runs now */
+  ck_assert_int_eq(vsph_report_jobs_pool(&R, bin(), 2, 1), VSPH_OK);
+  for (int k = 0; k < 3; k++) ck_assert_int_eq(P.job[k].cached, 1);
+  char *after = vsph_files_slurp(e0, NULL);
+  ck_assert_str_eq(before, after);
+  ck_assert_int_eq(stat(keep, &s1), 0);
+  ck_assert(s0.st_mtim.tv_sec == s1.st_mtim.tv_sec &&
+            s0.st_mtim.tv_nsec == s1.st_mtim.tv_nsec);
+  snprintf(path, sizeof path, "%s/runs/failed.txt", dir);
+  ck_assert_int_ne(access(path, F_OK), 0); /* none failed this time */
+  free(before);
+  free(after);
+  for (size_t k = 0; k < P.n; k++) vsph_report_jobs_free(&P.job[k]);
+  free(P.job);
+  rmrf(dir);
+}
+END_TEST
+
+/* The plan of the whole quick report: every folder once, the scenes'
+ * baseline included, none cached in an empty folder, and the print lists
+ * each with its command. */
+START_TEST(test_plan_listing) {
+  const char *dir = tmpdir();
+  char out[700];
+  snprintf(out, sizeof out, "%s/plan.tsv", dir);
+  char cmd[1024];
+  snprintf(cmd, sizeof cmd, "%s report --plan --out %s/r > %s", bin(), dir,
+           out);
+  ck_assert_int_eq(system(cmd), 0);
+  char r[700];
+  snprintf(r, sizeof r, "%s/r", dir);
+  ck_assert_int_ne(access(r, F_OK), 0); /* --plan writes nothing */
+  FILE *f = fopen(out, "r");
+  ck_assert_ptr_nonnull(f);
+  char line[8192];
+  size_t n = 0, base = 0, shear = 0;
+  while (fgets(line, sizeof line, f)) {
+    if (line[0] == '#' || !strncmp(line, "status\t", 7)) continue;
+    n++;
+    ck_assert_msg(!strncmp(line, "missing\t", 8), "%s", line);
+    base += strstr(line, "-base\t") != NULL;
+    shear += strstr(line, " contact --out ") != NULL;
+  }
+  fclose(f);
+  /* the baseline's channel rows (Poiseuille and Couette, every form) and
+   * its 5 cavity rows have the tag "base"; the quick report's 19 shear
+   * tests are `vsph contact` */
+  ck_assert_uint_eq(base, 2 * VSPH_VISCOUS_FORM_COUNT + 5);
+  ck_assert_uint_eq(shear, 19);
+  ck_assert(n > 200);
+  rmrf(dir);
+}
+END_TEST
+
+Suite *vsph_jobs_suite(void) {
+  Suite *s = suite_create("jobs");
+  TCase *tc = tcase_create("jobs");
+  tcase_set_timeout(tc, 60);
+  tcase_add_test(tc, test_key_canonical);
+  tcase_add_test(tc, test_command_is_the_run);
+  tcase_add_test(tc, test_pool);
+  tcase_add_test(tc, test_plan_listing);
+  suite_add_tcase(s, tc);
+  return s;
+}
