@@ -94,6 +94,7 @@ struct vsph_report_job {
   char label[160];                     /* as progress names it */
   char *key;                           /* its key.txt (owned) */
   double particles, steps, bytes;      /* the solver's estimate */
+  double neighbours;                   /* of each particle, every pass */
   int cached;                          /* its key.txt matches */
   int failed;                          /* the pool: did not end */
 };

@@ -141,7 +141,7 @@ static int estimate(struct vsph_report_job *j) {
   if (st) return st;
   struct vsph_run_props rp;
   struct vsph_scene sc;
-  struct vsph_run_estimate e = {0, 0, 0};
+  struct vsph_run_estimate e = {0, 0, 0, 0};
   const struct vsph_scene_type *t = vsph_scene_find(j->scene);
   if (!t) {
     vsph_params_free(prm);
@@ -154,7 +154,13 @@ static int estimate(struct vsph_report_job *j) {
   j->particles = e.particles;
   j->steps = e.steps;
   j->bytes = e.bytes;
+  j->neighbours = e.neighbours;
   return st;
+}
+
+/* Pair interactions over the run: particles x neighbours x steps. */
+static double cost_of(const struct vsph_report_job *j) {
+  return j->particles * j->neighbours * j->steps;
 }
 
 int vsph_report_jobs_plan_add(struct vsph_report *R,
@@ -349,17 +355,19 @@ int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
   for (size_t k = 0; k < P->n; k++)
     if (!P->job[k].cached) {
       missing++;
-      cost += P->job[k].particles * P->job[k].steps;
+      cost += cost_of(&P->job[k]);
     }
   fprintf(f,
           "# vsph %s report plan for %s (%s): %zu runs, %zu cached, %zu "
-          "missing (%.3g particle-steps)\n"
+          "missing (%.3g pair interactions)\n"
           "# key: FNV-1a 64 of the run's key.txt (version, source hash, "
-          "settings); steps: at t = 0's time step; memory: the solver's "
-          "bound\n",
+          "settings); neighbours: within the kernel's reach (each pass); "
+          "steps: at t = 0's time step; memory: the solver's bound\n",
           VSPH_VERSION, R->dir, R->full ? "full" : "quick", P->n,
           P->n - missing, missing, cost);
-  fprintf(f, "status\tfolder\tkey\tparticles\tsteps\tmemory_mib\tcommand\n");
+  fprintf(f,
+          "status\tfolder\tkey\tparticles\tneighbours\tsteps\tmemory_mib\t"
+          "command\n");
   char *cmd = malloc(8192);
   if (!cmd) VSPH_FAIL(VSPH_ENOMEM, "cannot print the plan");
   for (int pass = 0; pass < 2; pass++)
@@ -367,9 +375,9 @@ int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
       const struct vsph_report_job *j = &P->job[k];
       if (j->cached != pass) continue;
       vsph_report_jobs_command(j, exe, 0, cmd, 8192);
-      fprintf(f, "%s\t%s\t%016llx\t%.0f\t%.0f\t%.1f\t%s\n",
+      fprintf(f, "%s\t%s\t%016llx\t%.0f\t%.1f\t%.0f\t%.1f\t%s\n",
               j->cached ? "cached" : "missing", j->dir, fingerprint(j->key),
-              j->particles, j->steps, j->bytes / 1048576.0, cmd);
+              j->particles, j->neighbours, j->steps, j->bytes / 1048576.0, cmd);
     }
   free(cmd);
   if (fflush(f) != 0 || ferror(f))
@@ -378,10 +386,6 @@ int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
 }
 
 /* ------------------------------------------------------ the missing runs */
-
-static double cost_of(const struct vsph_report_job *j) {
-  return j->particles * j->steps;
-}
 
 /* The missing jobs of the plan, the costliest first. */
 static int by_cost(const void *a, const void *b) {
@@ -675,11 +679,14 @@ static int submit(const char *cmd, char *id, size_t len) {
   return VSPH_OK;
 }
 
-/* Particle-steps per second and thread the time limit assumes: a third of
- * the slowest step this machine measured (`make bench`: the contact
- * scheme's, about 2e5 particle-steps/s in 3-D; the 2-D scenes run
- * 1e6-3e6), so that a cluster's slower core still fits. */
-#define SLURM_RATE 6e4
+/* The rate the time limit assumes, in estimated pair interactions
+ * (particles x neighbours x steps, vsph_run_estimate) per second and
+ * thread: a third of the slowest this machine made in the quick report's
+ * 239 runs (2.6e6 to 4.7e8 per second, two runs at a time on 2 cores,
+ * 2026-11-24; the slowest are the short channel runs, whose viscous time
+ * step the estimate at t = 0 undercounts), so that a cluster's slower
+ * core still fits. */
+#define SLURM_RATE 1e6
 
 int vsph_report_jobs_slurm(struct vsph_report *R,
                            const struct vsph_report_slurm *s) {
@@ -695,8 +702,9 @@ int vsph_report_jobs_slurm(struct vsph_report *R,
     mem = fmax(mem, order[k]->bytes);
     cost = fmax(cost, cost_of(order[k]));
   }
-  /* memory: the largest run's bound and 256 MiB for the program itself;
-   * time: the costliest run at SLURM_RATE, at least 10 minutes */
+  /* memory: the largest run's bound and 256 MiB for the program itself
+   * (a quick-report run peaks at about 10 MB); time: the costliest run at
+   * SLURM_RATE, at least 10 minutes */
   const size_t mem_mib = (size_t)ceil(mem / 1048576.0) + 256;
   char limit[40];
   if (s->time)
@@ -723,7 +731,7 @@ int vsph_report_jobs_slurm(struct vsph_report *R,
             "#SBATCH --cpus-per-task=%zu\n"
             "#SBATCH --mem=%zuM\n"
             "#SBATCH --time=%s\n"
-            "#SBATCH --output=%s/task-%%a.log\n",
+            "#SBATCH --output=%s/task-%%A_%%a.log\n",
             VSPH_VERSION, m ? m - 1 : 0, s->threads, mem_mib, limit, logs);
     if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
     fprintf(f, "case \"$SLURM_ARRAY_TASK_ID\" in\n");
@@ -750,7 +758,7 @@ int vsph_report_jobs_slurm(struct vsph_report *R,
             "#SBATCH --cpus-per-task=%zu\n"
             "#SBATCH --mem=2048M\n"
             "#SBATCH --time=1:00:00\n"
-            "#SBATCH --output=%s/assemble.log\n",
+            "#SBATCH --output=%s/assemble-%%j.log\n",
             VSPH_VERSION, s->threads, logs);
     if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
     quote(s->exe, cmd, 8192);

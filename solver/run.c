@@ -214,6 +214,8 @@ static int check_cost(const struct vsph_run_props *rp,
                 deep > 1 ? " (two supports for a two-pass form)" : "");
   }
   const double layers = ceil(deep * rp->ktype->kappa * rp->hdx) + 1.0;
+  e->neighbours = (sc->dim == 2 ? VSPH_PI : 4.0 * VSPH_PI / 3.0) *
+                  pow(rp->ktype->kappa * rp->hdx, sc->dim) * deep;
   const double ghosts =
       sc->walls.n * layers * 2.0 * pow(n, (sc->dim - 1.0) / sc->dim);
   /* the lattice the scene lays, which the integrator takes */

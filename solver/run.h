@@ -120,9 +120,10 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm);
 
 /** What a run will cost, estimated before anything is allocated. */
 struct vsph_run_estimate {
-  double particles; /*!< fluid particles */
-  double bytes;     /*!< memory at most (ghosts and buffers included) */
-  double steps;     /*!< steps to the end time at t = 0's time step */
+  double particles;  /*!< fluid particles */
+  double bytes;      /*!< memory at most (ghosts and buffers included) */
+  double steps;      /*!< steps to the end time at t = 0's time step */
+  double neighbours; /*!< particles within each one's reach (every pass) */
 };
 
 /** @brief The estimate of a run of @p sc with @p rp (the figures
