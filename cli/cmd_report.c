@@ -72,8 +72,8 @@ int vsph_cmd_report_main(int argc, char **argv) {
        "the paper's resolutions and end times (hours)"},
       {"--plan", VSPH_ARGS_FLAG, &plan, NULL,
        "print the runs the report needs, one per line (tab-separated: "
-       "cached or missing, folder, key fingerprint, particles, steps, "
-       "memory in MiB, the exact command) and stop; writes nothing"},
+       "cached or missing, folder, key fingerprint, particles, neighbours, "
+       "steps, memory in MiB, the exact command) and stop; writes nothing"},
       {"--jobs", VSPH_ARGS_SIZE, &jobs, "N",
        "run the missing runs as N child processes at a time (1-256), each "
        "`vsph run` or `vsph contact` with its log in DIR/runs/logs; a run "

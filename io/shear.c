@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "../analysis/contact.h"
 #include "../common/status.h"
@@ -25,14 +26,22 @@ int vsph_shear_execute(struct vsph_params *prm, size_t nprof, const char *dir,
       return VSPH_OK;
     }
   }
+  /* the folder first: one that cannot be made is bad input, found before
+   * the measurement rather than after it */
+  const int existed = access(dir, F_OK) == 0;
+  int st = vsph_files_mkdir(dir);
+  if (st) {
+    free(key);
+    return st;
+  }
   struct vsph_contact_shear cs = {.nprof = nprof, .quiet = quiet};
-  int st = vsph_contact_shear_measure(prm, &cs);
+  st = vsph_contact_shear_measure(prm, &cs);
+  if (st && !existed) rmdir(dir); /* refused: no folder left behind */
   char *sum = NULL, *prof = NULL;
   if (!st && !((sum = vsph_shear_csv_summary(&cs)) &&
                (prof = vsph_shear_csv_profiles(&cs))))
     st = VSPH_ENOMEM;
   vsph_contact_shear_free(&cs);
-  if (!st) st = vsph_files_mkdir(dir);
   if (!st && key) st = vsph_rundir_key_remove(dir);
   if (!st) st = vsph_files_write(dir, "summary.csv", sum);
   if (!st) st = vsph_files_write(dir, "profiles.csv", prof);

@@ -342,7 +342,10 @@ START_TEST(test_report_job_inputs) {
       {"report --time 10", "--time needs --slurm"},
       {"report --slurm --time 1h", "--time"},
       {"report --slurm --time 10:", "--time"},
-      {"report --slurm --partition 'a b'", "--partition"}};
+      {"report --slurm --partition 'a b'", "--partition"},
+      {"run vortex-patch --cache --res 0", "Solver:res"},
+      {"contact --res 4", "periodic length"},
+      {"contact --csv /tmp/vsph_never.csv", "drop --csv"}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     char args[300];
     snprintf(args, sizeof args, "%s --out /tmp/vsph_never_jobs", cases[k][0]);
