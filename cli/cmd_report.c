@@ -40,22 +40,6 @@ static int on_path(const char *name) {
   return 0;
 }
 
-/* @p s single-quoted for a POSIX shell into @p out. */
-static void shell_quote(const char *s, char *out, size_t len) {
-  size_t n = 0;
-  if (n + 1 < len) out[n++] = '\'';
-  for (; *s && n + 5 < len; s++) {
-    if (*s == '\'') {
-      memcpy(out + n, "'\\''", 4);
-      n += 4;
-    } else {
-      out[n++] = *s;
-    }
-  }
-  if (n + 1 < len) out[n++] = '\'';
-  out[n] = '\0';
-}
-
 int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
   const char *partition = NULL, *limit = NULL;
@@ -230,8 +214,8 @@ int vsph_cmd_report_main(int argc, char **argv) {
     rp.dir = absdir;
     rp.partition = partition;
     rp.time = limit;
-    shell_quote(absdir, quoted[0], sizeof quoted[0]);
-    shell_quote(only ? only : "", quoted[1], sizeof quoted[1]);
+    vsph_report_quote(absdir, quoted[0], sizeof quoted[0]);
+    vsph_report_quote(only ? only : "", quoted[1], sizeof quoted[1]);
     snprintf(assemble_opts, sizeof assemble_opts, "--out %s%s%s%s", quoted[0],
              full ? " --full" : "", only ? " --only " : "",
              only ? quoted[1] : "");

@@ -300,7 +300,7 @@ size_t vsph_report_jobs_argv(const struct vsph_report_job *j, const char *exe,
 
 /* @p s for a POSIX shell: as it is when every character is safe, else in
  * single quotes (a quote inside as '\''). */
-static size_t quote(const char *s, char *out, size_t len) {
+size_t vsph_report_jobs_quote(const char *s, char *out, size_t len) {
   const int safe = *s && strspn(s,
                                 "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrs"
                                 "tuvwxyz0123456789_./:=+-,@%") == strlen(s);
@@ -335,7 +335,7 @@ void vsph_report_jobs_command(const struct vsph_report_job *j, const char *exe,
   if (len) out[0] = '\0';
   for (size_t k = 0; k < n && w + 1 < len; k++) {
     if (k) out[w++] = ' ';
-    w += quote(argv[k], out + w, len - w);
+    w += vsph_report_jobs_quote(argv[k], out + w, len - w);
   }
   if (w >= len && len) out[len - 1] = '\0';
 }
@@ -761,7 +761,7 @@ int vsph_report_jobs_slurm(struct vsph_report *R,
             "#SBATCH --output=%s/assemble-%%j.log\n",
             VSPH_VERSION, s->threads, logs);
     if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
-    quote(s->exe, cmd, 8192);
+    vsph_report_jobs_quote(s->exe, cmd, 8192);
     fprintf(f, "OMP_NUM_THREADS=%zu exec %s report %s --assemble\n", s->threads,
             cmd, s->assemble);
     if (fclose(f) != 0) st = VSPH_ENOMEM;
