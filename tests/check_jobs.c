@@ -186,6 +186,18 @@ START_TEST(test_pool) {
             s0.st_mtim.tv_nsec == s1.st_mtim.tv_nsec);
   snprintf(path, sizeof path, "%s/runs/failed.txt", dir);
   ck_assert_int_ne(access(path, F_OK), 0); /* none failed this time */
+  /* the plan now marks all three cached, each with its command */
+  char *table = NULL;
+  size_t tlen = 0;
+  FILE *f = open_memstream(&table, &tlen);
+  ck_assert_int_eq(vsph_report_jobs_plan_print(&R, "vsph", f), 0);
+  fclose(f);
+  size_t cached = 0;
+  for (const char *s = table; (s = strstr(s, "\ncached\t")); s++) cached++;
+  ck_assert_uint_eq(cached, 3);
+  ck_assert_ptr_null(strstr(table, "\nmissing\t"));
+  ck_assert_ptr_nonnull(strstr(table, "\tvsph run stretching-square --out "));
+  free(table);
   free(before);
   free(after);
   for (size_t k = 0; k < P.n; k++) vsph_report_jobs_free(&P.job[k]);
