@@ -366,7 +366,7 @@ static int run_missing(struct vsph_report *R,
                        const struct vsph_report_props *rp) {
   if (rp->mode == VSPH_REPORT_POOL)
     return vsph_report_jobs_pool(R, rp->exe, rp->jobs, rp->threads);
-  return vsph_report_jobs_local(R, 2);
+  return vsph_report_jobs_local(R, omp_get_max_threads());
 }
 
 /* The assembly alone: every run must be there (checked before anything

@@ -200,7 +200,8 @@ int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
                                 FILE *f);
 
 /* The missing runs of the plan in this process, @p width at a time (one
- * thread each), the costliest first. */
+ * thread each; the report passes its thread count: two on 2 cores), the
+ * costliest first. */
 int vsph_report_jobs_local(struct vsph_report *R, int width);
 
 /* The same as child processes of @p exe, @p njobs at a time with
