@@ -208,9 +208,19 @@ int vsph_cmd_report_main(int argc, char **argv) {
                        : 1;
   char assemble_opts[3 * PATH_MAX + 300] = "";
   if (slurm) { /* every path absolute: the jobs run elsewhere */
+    const int existed = access(dir, F_OK) == 0;
     int st = vsph_files_mkdir(dir);
     if (!st && !realpath(dir, absdir)) st = VSPH_EIO;
     if (st) return vsph_args_fail(CMD, "--out %s: cannot create it", dir);
+    /* #SBATCH lines take no quotes, and % is Slurm's pattern sign */
+    if (strpbrk(absdir, " \t\n%'\"\\")) {
+      if (!existed) rmdir(dir);
+      return vsph_args_fail(CMD,
+                            "--slurm: the folder '%s' holds a space, a quote "
+                            "or '%%', which Slurm's #SBATCH lines cannot "
+                            "carry: choose another --out",
+                            absdir);
+    }
     rp.dir = absdir;
     rp.partition = partition;
     rp.time = limit;

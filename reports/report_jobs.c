@@ -771,19 +771,21 @@ int vsph_report_jobs_slurm(struct vsph_report *R,
     st = VSPH_ENOMEM;
     vsph_status_report(st, __FILE__, __LINE__, "cannot write the assembly");
   }
-  char array_id[64] = "", asm_id[64] = "";
+  char array_id[64] = "", asm_id[64] = "", script[2][1500];
+  snprintf(logs, sizeof logs, "%s/runs.sbatch", dir);
+  vsph_report_jobs_quote(logs, script[0], sizeof script[0]);
+  snprintf(logs, sizeof logs, "%s/assemble.sbatch", dir);
+  vsph_report_jobs_quote(logs, script[1], sizeof script[1]);
   if (!st && m) {
-    snprintf(cmd, 8192, "sbatch --parsable %s/runs.sbatch", dir);
+    snprintf(cmd, 8192, "sbatch --parsable %s", script[0]);
     st = submit(cmd, array_id, sizeof array_id);
   }
   if (!st) {
     if (m)
-      snprintf(cmd, 8192,
-               "sbatch --parsable --dependency=afterany:%s "
-               "%s/assemble.sbatch",
-               array_id, dir);
+      snprintf(cmd, 8192, "sbatch --parsable --dependency=afterany:%s %s",
+               array_id, script[1]);
     else
-      snprintf(cmd, 8192, "sbatch --parsable %s/assemble.sbatch", dir);
+      snprintf(cmd, 8192, "sbatch --parsable %s", script[1]);
     st = submit(cmd, asm_id, sizeof asm_id);
   }
   if (!st) {

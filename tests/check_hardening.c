@@ -343,12 +343,15 @@ START_TEST(test_report_job_inputs) {
       {"report --slurm --time 1h", "--time"},
       {"report --slurm --time 10:", "--time"},
       {"report --slurm --partition 'a b'", "--partition"},
+      {"report --slurm --out '/tmp/vsph_never jobs'", "Slurm's #SBATCH"},
       {"run vortex-patch --cache --res 0", "Solver:res"},
       {"contact --res 4", "periodic length"},
       {"contact --csv /tmp/vsph_never.csv", "drop --csv"}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     char args[300];
-    snprintf(args, sizeof args, "%s --out /tmp/vsph_never_jobs", cases[k][0]);
+    /* the cases without their own --out write nowhere either */
+    snprintf(args, sizeof args, "%s%s", cases[k][0],
+             strstr(cases[k][0], "--out") ? "" : " --out /tmp/vsph_never_jobs");
     struct vsph_test_outcome *o = vsph_test_cli(args);
     ck_assert_msg(o->status == 2, "'%s' exited %d", cases[k][0], o->status);
     ck_assert_msg(o->err_lines == 1, "'%s' said %d lines: %s", cases[k][0],
@@ -356,6 +359,7 @@ START_TEST(test_report_job_inputs) {
     ck_assert_msg(strstr(o->err, cases[k][1]) != NULL, "'%s' said: %s",
                   cases[k][0], o->err);
     ck_assert(!exists("/tmp/vsph_never_jobs"));
+    ck_assert(!exists("/tmp/vsph_never jobs"));
   }
   /* without sbatch on PATH */
   struct vsph_test_outcome *o = vsph_test_shell(
