@@ -39,7 +39,7 @@ struct vsph_report_props {
  *  run the parts on will read (the plan); a run is one `vsph run` or
  *  `vsph contact` command whose folder ends with key.txt. */
 enum vsph_report_mode {
-  VSPH_REPORT_LOCAL = 0, /*!< here, two at a time; then assemble */
+  VSPH_REPORT_LOCAL = 0, /*!< here, a run per thread; then assemble */
   VSPH_REPORT_PLAN,      /*!< print the plan and stop (writes nothing) */
   VSPH_REPORT_POOL,      /*!< child processes, jobs at a time; assemble */
   VSPH_REPORT_SLURM,     /*!< submit them as a Slurm job array, with the

@@ -1,6 +1,6 @@
 /* The report's runs as jobs. Every part declares the runs it reads (its
  * plan) before any is run; the report then runs what is missing and
- * assembles. Three ways to run them: in this process, two at a time (the
+ * assembles. Three ways to run them: in this process, a run per thread (the
  * default); as child processes, N at a time (`--jobs N`); or as a Slurm
  * job array with the assembly after it (`--slurm`). A job is one command
  * (`vsph run ... --cache` or `vsph contact ... --cache`) whose folder ends
