@@ -1,20 +1,17 @@
 /* vsph report: the main job (reports/report.c). */
-#define _XOPEN_SOURCE 700 /* realpath */
 #include "cmd_report.h"
 
-#include <errno.h>
 #include <limits.h>
 #include <omp.h>
 #include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "../common/params.h"
 #include "../common/status.h"
-#include "../io/files.h"
 #include "../reports/report.h"
 #include "args.h"
 
@@ -44,7 +41,8 @@ int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
   const char *partition = NULL, *limit = NULL;
   int full = 0, plan = 0, slurm = 0, assemble = 0;
-  size_t jobs = 0, threads = 0;
+  /* SIZE_MAX: not given (0 is a value, and refused) */
+  size_t jobs = SIZE_MAX, threads = SIZE_MAX;
   const struct vsph_args_spec own[] = {
       {"--out", VSPH_ARGS_STRING, &dir, "DIR",
        "output folder (default reports/out)"},
@@ -111,22 +109,17 @@ int vsph_cmd_report_main(int argc, char **argv) {
                                   NULL};
   const int rc = vsph_args_parse(&c, argc, argv, NULL);
   if (rc >= 0) return vsph_args_finish(CMD, rc);
-  if (plan + slurm + assemble + (jobs > 0) > 1)
+  const int pool = jobs != SIZE_MAX, own_threads = threads != SIZE_MAX;
+  if (plan + slurm + assemble + pool > 1)
     return vsph_args_fail(CMD,
                           "--plan, --jobs, --slurm and --assemble exclude one "
                           "another");
-  for (int k = 1; k < argc; k++)
-    if (!strcmp(argv[k], "--jobs") && jobs == 0)
-      return vsph_args_fail(CMD, "--jobs must lie in 1-256, got 0");
-  if (jobs > 256)
+  if (pool && (jobs < 1 || jobs > 256))
     return vsph_args_fail(CMD, "--jobs must lie in 1-256, got %zu", jobs);
-  if (threads > 1024)
+  if (own_threads && (threads < 1 || threads > 1024))
     return vsph_args_fail(CMD, "--threads must lie in 1-1024, got %zu",
                           threads);
-  for (int k = 1; k < argc; k++)
-    if (!strcmp(argv[k], "--threads") && threads == 0)
-      return vsph_args_fail(CMD, "--threads must lie in 1-1024, got 0");
-  if (threads && !jobs && !slurm)
+  if (own_threads && !pool && !slurm)
     return vsph_args_fail(CMD, "--threads needs --jobs or --slurm");
   if ((partition || limit) && !slurm)
     return vsph_args_fail(CMD, "--%s needs --slurm",
@@ -186,7 +179,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
       return vsph_args_fail(CMD, "--only names no part (see --help)");
   }
   /* vsph itself, for the child processes and the Slurm scripts */
-  char exe[PATH_MAX], absdir[PATH_MAX], quoted[2][PATH_MAX + 64];
+  char exe[PATH_MAX];
   const ssize_t ne = readlink("/proc/self/exe", exe, sizeof exe - 1);
   if (ne <= 0) {
     fprintf(stderr, "vsph report: cannot find vsph itself (/proc/self/exe)\n");
@@ -195,42 +188,20 @@ int vsph_cmd_report_main(int argc, char **argv) {
   exe[ne] = '\0';
   rp.exe = exe;
   rp.mode = plan       ? VSPH_REPORT_PLAN
-            : jobs     ? VSPH_REPORT_POOL
+            : pool     ? VSPH_REPORT_POOL
             : slurm    ? VSPH_REPORT_SLURM
             : assemble ? VSPH_REPORT_ASSEMBLE
                        : VSPH_REPORT_LOCAL;
   rp.plan_out = stdout;
-  rp.jobs = jobs;
+  rp.jobs = pool ? jobs : 0;
   const size_t cores = (size_t)omp_get_num_procs();
-  rp.threads = threads ? threads
-               : slurm ? 1
-               : jobs  ? (cores / jobs > 0 ? cores / jobs : 1)
-                       : 1;
-  char assemble_opts[3 * PATH_MAX + 300] = "";
-  if (slurm) { /* every path absolute: the jobs run elsewhere */
-    const int existed = access(dir, F_OK) == 0;
-    int st = vsph_files_mkdir(dir);
-    if (!st && !realpath(dir, absdir)) st = VSPH_EIO;
-    if (st) return vsph_args_fail(CMD, "--out %s: cannot create it", dir);
-    /* #SBATCH lines take no quotes, and % is Slurm's pattern sign */
-    if (strpbrk(absdir, " \t\n%'\"\\")) {
-      if (!existed) rmdir(dir);
-      return vsph_args_fail(CMD,
-                            "--slurm: the folder '%s' holds a space, a quote "
-                            "or '%%', which Slurm's #SBATCH lines cannot "
-                            "carry: choose another --out",
-                            absdir);
-    }
-    rp.dir = absdir;
-    rp.partition = partition;
-    rp.time = limit;
-    vsph_report_quote(absdir, quoted[0], sizeof quoted[0]);
-    vsph_report_quote(only ? only : "", quoted[1], sizeof quoted[1]);
-    snprintf(assemble_opts, sizeof assemble_opts, "--out %s%s%s%s", quoted[0],
-             full ? " --full" : "", only ? " --only " : "",
-             only ? quoted[1] : "");
-    rp.assemble = assemble_opts;
-  }
+  rp.threads = own_threads ? threads
+               : slurm     ? 1
+               : pool      ? (cores / jobs > 0 ? cores / jobs : 1)
+                           : 1;
+  rp.partition = partition;
+  rp.time = limit;
+  rp.only = only;
   /* SIGINT/SIGTERM: the run in progress stops after its step, uncached */
   const volatile sig_atomic_t *stop = rp.stop = vsph_args_catch_stop();
   const int st = vsph_report_write(&rp);

@@ -127,6 +127,17 @@ int vsph_params_set(struct vsph_params *prm, const char *key,
   return put(prm, key, value, 0, 0);
 }
 
+int vsph_params_assign(struct vsph_params *prm, const char *setting) {
+  const char *eq = strchr(setting, '=');
+  char key[2 * KEY_MAX + 2];
+  if (!eq || (size_t)(eq - setting) >= sizeof key)
+    VSPH_FAIL(VSPH_EINVAL,
+              "setting '%.80s' is not of the form Section:key=value", setting);
+  memcpy(key, setting, (size_t)(eq - setting));
+  key[eq - setting] = '\0';
+  return vsph_params_set(prm, key, eq + 1);
+}
+
 /* Store Section:key from file number `source`, refusing a key given twice
  * in that file; a key of an earlier file is overridden. */
 static int store_once(struct vsph_params *prm, const char *path, size_t line,

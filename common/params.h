@@ -38,6 +38,11 @@ int vsph_params_read_string(struct vsph_params *prm, const char *text,
 int vsph_params_set(struct vsph_params *prm, const char *key,
                     const char *value);
 
+/** @brief The same from one "Section:key=value" setting (the form of
+ *  `--set` and of the report's run settings).
+ *  @return VSPH_OK or VSPH_EINVAL (not of that form; reported). */
+int vsph_params_assign(struct vsph_params *prm, const char *setting);
+
 /** @brief Required number. @return VSPH_OK or VSPH_EINVAL (missing or not
  *  a finite number). */
 int vsph_params_get_double(struct vsph_params *prm, const char *key,

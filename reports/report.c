@@ -24,7 +24,6 @@
 #include "../io/html.h"
 #include "../io/json.h"
 #include "../io/plot.h"
-#include "../io/rundir.h"
 #include "report_internal.h"
 
 struct part {
@@ -373,10 +372,8 @@ static int run_missing(struct vsph_report *R,
  * is written). */
 static int all_cached(const struct vsph_report *R) {
   size_t m = 0, first = 0;
-  for (size_t k = 0; k < R->plan->n; k++)
-    if (!vsph_rundir_key_matches(R->plan->job[k].dir, R->plan->job[k].key) &&
-        !m++)
-      first = k;
+  for (size_t k = 0; k < R->plan->n; k++) /* as the plan found them */
+    if (!R->plan->job[k].cached && !m++) first = k;
   if (m)
     VSPH_FAIL(VSPH_EIO,
               "%zu of the %zu runs are missing or unfinished (the first: %s; "
@@ -400,7 +397,12 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   const double t_all = omp_get_wtime();
   vsph_sysinfo_load(R->load[0]);
   int st = VSPH_OK;
-  if (!(R->plan = calloc(1, sizeof *R->plan))) {
+  char absdir[600];
+  if (rp->mode == VSPH_REPORT_SLURM) { /* every path absolute */
+    st = vsph_report_jobs_slurm_dir(rp->dir, absdir, sizeof absdir);
+    R->dir = absdir;
+  }
+  if (!st && !(R->plan = calloc(1, sizeof *R->plan))) {
     st = VSPH_ENOMEM;
     vsph_status_report(st, __FILE__, __LINE__, "cannot allocate the plan");
   }
@@ -414,7 +416,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   }
   if (!st && rp->mode == VSPH_REPORT_SLURM) {
     const struct vsph_report_slurm s = {rp->exe, rp->partition, rp->time,
-                                        rp->threads, rp->assemble};
+                                        rp->threads, rp->only};
     st = vsph_report_jobs_slurm(R, &s);
     plan_free(R->plan);
     free(R);
@@ -423,11 +425,11 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   if (!st && rp->mode == VSPH_REPORT_ASSEMBLE) st = all_cached(R);
   if (!st) st = vsph_files_mkdir(parts_dir);
   if (!st) st = lock_dir(rp->dir);
+  R->made_by = rp->mode == VSPH_REPORT_POOL       ? "child processes"
+               : rp->mode == VSPH_REPORT_ASSEMBLE ? "nothing: assembly only"
+                                                  : "this process";
   if (!st && rp->mode != VSPH_REPORT_ASSEMBLE) {
     for (size_t k = 0; k < R->plan->n; k++) R->made += !R->plan->job[k].cached;
-    R->made_by = rp->mode == VSPH_REPORT_POOL       ? "child processes"
-                 : rp->mode == VSPH_REPORT_ASSEMBLE ? "nothing: assembly only"
-                                                    : "this process";
     st = run_missing(R, rp);
   }
   R->wo = gsl_integration_workspace_alloc(1000);

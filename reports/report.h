@@ -31,7 +31,7 @@ struct vsph_report_props {
   const char *exe;       /*!< POOL, SLURM: vsph itself (absolute path) */
   const char *partition; /*!< SLURM: or NULL */
   const char *time;      /*!< SLURM: time limit per task, or NULL */
-  const char *assemble;  /*!< SLURM: the assembly's report options */
+  const char *only;      /*!< SLURM: the --only text, for the assembly */
   FILE *plan_out;        /*!< PLAN: where the plan goes */
 };
 

@@ -270,19 +270,15 @@ static void specs(const struct vsph_report *R, struct vsph_report_runspec *s,
   *n = k; /* k <= NSPECS: the loops above are NSPECS at most */
 }
 
-/* Basa et al. 20 x 20 (FULL twice); Couette above; the map at 20 */
-static void resolutions(const struct vsph_report *R, struct chan *c) {
-  c->res_p = R->full ? 40 : 20;
-  c->res_c = R->full ? 40 : 20;
-  c->res_m = 20;
-}
+/* Poiseuille (Basa et al. 20 x 20, FULL twice), Couette, the map */
+#define RES_P(R) ((R)->full ? 40u : 20u)
+#define RES_C(R) ((R)->full ? 40u : 20u)
+#define RES_M 20u
 
 int vsph_report_channel_plan(struct vsph_report *R) {
-  struct chan c;
-  resolutions(R, &c);
   struct vsph_report_runspec s[NSPECS];
   size_t n;
-  specs(R, s, &n, c.res_p, c.res_c, c.res_m);
+  specs(R, s, &n, RES_P(R), RES_C(R), RES_M);
   int st = VSPH_OK;
   for (size_t k = 0; k < n && !st; k++)
     st = vsph_report_jobs_plan_run(R, &s[k]);
@@ -291,7 +287,9 @@ int vsph_report_channel_plan(struct vsph_report *R) {
 
 static int load(struct vsph_report *R, struct chan *c) {
   memset(c, 0, sizeof *c);
-  resolutions(R, c);
+  c->res_p = RES_P(R);
+  c->res_c = RES_C(R);
+  c->res_m = RES_M;
   struct vsph_report_runspec s[NSPECS];
   size_t n;
   specs(R, s, &n, c->res_p, c->res_c, c->res_m);

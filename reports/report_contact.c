@@ -401,13 +401,8 @@ static int cyl_load(struct vsph_report *R, struct cyl *cy) {
     struct vsph_params *prm = vsph_params_alloc();
     if (!prm) return VSPH_ENOMEM;
     for (size_t q = 0; CY[k].set[q] && !st; q++)
-      if (!strncmp(CY[k].set[q], "Scene:", 6)) {
-        char kv[96];
-        snprintf(kv, sizeof kv, "%s", CY[k].set[q]);
-        char *eq = strchr(kv, '=');
-        *eq = '\0';
-        st = vsph_params_set(prm, kv, eq + 1);
-      }
+      if (!strncmp(CY[k].set[q], "Scene:", 6))
+        st = vsph_params_assign(prm, CY[k].set[q]);
     struct vsph_scene sc;
     if (!st) st = vsph_scene_init(&sc, &vsph_cylinders_type, prm);
     vsph_params_free(prm);

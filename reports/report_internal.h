@@ -217,10 +217,15 @@ struct vsph_report_slurm {
   const char *partition; /* or NULL */
   const char *time;      /* Slurm's time limit, or NULL: estimated */
   size_t threads;        /* --cpus-per-task of each run */
-  const char *assemble;  /* the assembly's options (--out, --full, --only) */
+  const char *only;      /* the report's --only, for the assembly, or NULL */
 };
 int vsph_report_jobs_slurm(struct vsph_report *R,
                            const struct vsph_report_slurm *s);
+
+/* The folder of a Slurm report, made if new, as an absolute path into
+ * @p abs (the jobs run elsewhere); one that #SBATCH lines cannot carry
+ * (a space, a quote, '%') is refused, and left unmade. */
+int vsph_report_jobs_slurm_dir(const char *dir, char *abs, size_t len);
 
 /* ----------------------------------------------------- report_runs.c: runs */
 

@@ -6,8 +6,10 @@
  * (`vsph run ... --cache` or `vsph contact ... --cache`) whose folder ends
  * with key.txt (io/rundir): the cache, and the proof that the run ended,
  * whichever way ran it. */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <math.h>
 #include <omp.h>
 #include <signal.h>
@@ -41,19 +43,8 @@ static int params_of(const struct vsph_report_job *j,
   struct vsph_params *prm = vsph_params_alloc();
   if (!prm) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate parameters");
   int st = VSPH_OK;
-  for (size_t k = 0; k < j->nset && !st; k++) {
-    char kv[128];
-    snprintf(kv, sizeof kv, "%s", j->set[k]);
-    char *eq = strchr(kv, '=');
-    if (!eq) {
-      vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                         "setting '%s' lacks '='", kv);
-      st = VSPH_EINVAL;
-      break;
-    }
-    *eq = '\0';
-    st = vsph_params_set(prm, kv, eq + 1);
-  }
+  for (size_t k = 0; k < j->nset && !st; k++)
+    st = vsph_params_assign(prm, j->set[k]);
   if (st) {
     vsph_params_free(prm);
     return st;
@@ -688,11 +679,138 @@ static int submit(const char *cmd, char *id, size_t len) {
  * core still fits. */
 #define SLURM_RATE 1e6
 
+int vsph_report_jobs_slurm_dir(const char *dir, char *abs, size_t len) {
+  const int existed = access(dir, F_OK) == 0;
+  int st = vsph_files_mkdir(dir);
+  if (st) return st;
+  char buf[PATH_MAX];
+  if (!realpath(dir, buf))
+    VSPH_FAIL(VSPH_EIO, "cannot resolve %s: %s", dir, strerror(errno));
+  /* #SBATCH lines take no quotes, and % is Slurm's pattern sign */
+  if (strpbrk(buf, " \t\n%'\"\\") || strlen(buf) >= len) {
+    if (!existed) rmdir(dir);
+    VSPH_FAIL(VSPH_EINVAL,
+              "--slurm: the folder '%s' holds a space, a quote or '%%', "
+              "which Slurm's #SBATCH lines cannot carry: choose another --out",
+              buf);
+  }
+  snprintf(abs, len, "%s", buf);
+  return VSPH_OK;
+}
+
+/* The job array of the @p m runs of @p order: one task each, the
+ * resources of the largest. */
+static int array_script(const struct vsph_report_job *const *order, size_t m,
+                        const struct vsph_report_slurm *s, const char *logs,
+                        size_t mem_mib, const char *limit, char **text) {
+  size_t len;
+  char *cmd = malloc(8192);
+  FILE *f = cmd ? open_memstream(text, &len) : NULL;
+  if (!f) {
+    free(cmd);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot write the job array");
+  }
+  fprintf(f,
+          "#!/bin/sh\n"
+          "# vsph %s: the report's missing runs, one array task each "
+          "(written by vsph report --slurm)\n"
+          "#SBATCH --job-name=vsph-runs\n"
+          "#SBATCH --array=0-%zu\n"
+          "#SBATCH --ntasks=1\n"
+          "#SBATCH --cpus-per-task=%zu\n"
+          "#SBATCH --mem=%zuM\n"
+          "#SBATCH --time=%s\n"
+          "#SBATCH --output=%s/task-%%A_%%a.log\n",
+          VSPH_VERSION, m ? m - 1 : 0, s->threads, mem_mib, limit, logs);
+  if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
+  fprintf(f, "case \"$SLURM_ARRAY_TASK_ID\" in\n");
+  for (size_t k = 0; k < m; k++) {
+    vsph_report_jobs_command(order[k], s->exe, s->threads, cmd, 8192);
+    fprintf(f, "%zu) exec %s ;;\n", k, cmd);
+  }
+  fprintf(f,
+          "*) echo \"no task $SLURM_ARRAY_TASK_ID\" >&2; exit 2 ;;\n"
+          "esac\n");
+  free(cmd);
+  if (fclose(f) != 0) VSPH_FAIL(VSPH_ENOMEM, "cannot write the job array");
+  return VSPH_OK;
+}
+
+/* The assembly: the same report again (--out, --full, --only), reading
+ * the runs only. */
+static int assembly_script(const struct vsph_report *R,
+                           const struct vsph_report_slurm *s, const char *logs,
+                           char **text) {
+  char q[3][PATH_MAX + 64];
+  vsph_report_jobs_quote(s->exe, q[0], sizeof q[0]);
+  vsph_report_jobs_quote(R->dir, q[1], sizeof q[1]);
+  vsph_report_jobs_quote(s->only ? s->only : "", q[2], sizeof q[2]);
+  size_t len;
+  FILE *f = open_memstream(text, &len);
+  if (!f) VSPH_FAIL(VSPH_ENOMEM, "cannot write the assembly");
+  fprintf(f,
+          "#!/bin/sh\n"
+          "# vsph %s: the report's assembly after its runs (written by "
+          "vsph report --slurm)\n"
+          "#SBATCH --job-name=vsph-report\n"
+          "#SBATCH --ntasks=1\n"
+          "#SBATCH --cpus-per-task=%zu\n"
+          "#SBATCH --mem=2048M\n"
+          "#SBATCH --time=1:00:00\n"
+          "#SBATCH --output=%s/assemble-%%j.log\n",
+          VSPH_VERSION, s->threads, logs);
+  if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
+  fprintf(f, "OMP_NUM_THREADS=%zu exec %s report --out %s%s%s%s --assemble\n",
+          s->threads, q[0], q[1], R->full ? " --full" : "",
+          s->only ? " --only " : "", s->only ? q[2] : "");
+  if (fclose(f) != 0) VSPH_FAIL(VSPH_ENOMEM, "cannot write the assembly");
+  return VSPH_OK;
+}
+
+/* Write a script (@p text, freed) into @p dir as @p name and its path,
+ * quoted for a shell, into @p quoted. */
+static int put_script(const char *dir, const char *name, char *text,
+                      char *quoted, size_t len) {
+  const int st = vsph_files_write(dir, name, text);
+  free(text);
+  char path[PATH_MAX + 64];
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  vsph_report_jobs_quote(path, quoted, len);
+  return st;
+}
+
+/* submitted.json: the job ids and what was asked for. */
+static int record_submission(const struct vsph_report *R, const char *dir,
+                             const char *array_id, const char *asm_id,
+                             const struct vsph_report_job *const *order,
+                             size_t m, size_t threads, size_t mem_mib,
+                             const char *limit) {
+  cJSON *o = cJSON_CreateObject();
+  const time_t now = time(NULL);
+  char stamp[32];
+  struct tm utc;
+  strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", gmtime_r(&now, &utc));
+  cJSON_AddStringToObject(o, "date", stamp);
+  cJSON_AddStringToObject(o, "array_job", array_id);
+  cJSON_AddStringToObject(o, "assembly_job", asm_id);
+  cJSON_AddNumberToObject(o, "tasks", (double)m);
+  cJSON_AddNumberToObject(o, "runs", (double)R->plan->n);
+  cJSON_AddNumberToObject(o, "cpus_per_task", (double)threads);
+  cJSON_AddNumberToObject(o, "mem_mib", (double)mem_mib);
+  cJSON_AddStringToObject(o, "time", limit);
+  cJSON *t = cJSON_AddArrayToObject(o, "task_folders");
+  for (size_t k = 0; k < m; k++)
+    cJSON_AddItemToArray(t, cJSON_CreateString(order[k]->dir));
+  return vsph_json_write(o, dir, "submitted.json");
+}
+
 int vsph_report_jobs_slurm(struct vsph_report *R,
                            const struct vsph_report_slurm *s) {
   struct vsph_report_job **order;
   const size_t m = missing(R, &order);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
+  const struct vsph_report_job *const *jobs =
+      (const struct vsph_report_job *const *)order;
   char dir[600], logs[700];
   snprintf(dir, sizeof dir, "%s/slurm", R->dir);
   snprintf(logs, sizeof logs, "%s/logs", dir);
@@ -712,101 +830,27 @@ int vsph_report_jobs_slurm(struct vsph_report *R,
   else
     slurm_time(fmax(600.0, cost / (SLURM_RATE * (double)s->threads)), limit,
                sizeof limit);
-  char *text = NULL;
-  size_t len = 0;
-  char *cmd = malloc(8192);
-  FILE *f = st || !cmd ? NULL : open_memstream(&text, &len);
-  if (!st && !f) {
-    st = VSPH_ENOMEM;
-    vsph_status_report(st, __FILE__, __LINE__, "cannot write the job array");
-  }
-  if (f) {
-    fprintf(f,
-            "#!/bin/sh\n"
-            "# vsph %s: the report's missing runs, one array task each "
-            "(written by vsph report --slurm)\n"
-            "#SBATCH --job-name=vsph-runs\n"
-            "#SBATCH --array=0-%zu\n"
-            "#SBATCH --ntasks=1\n"
-            "#SBATCH --cpus-per-task=%zu\n"
-            "#SBATCH --mem=%zuM\n"
-            "#SBATCH --time=%s\n"
-            "#SBATCH --output=%s/task-%%A_%%a.log\n",
-            VSPH_VERSION, m ? m - 1 : 0, s->threads, mem_mib, limit, logs);
-    if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
-    fprintf(f, "case \"$SLURM_ARRAY_TASK_ID\" in\n");
-    for (size_t k = 0; k < m; k++) {
-      vsph_report_jobs_command(order[k], s->exe, s->threads, cmd, 8192);
-      fprintf(f, "%zu) exec %s ;;\n", k, cmd);
-    }
-    fprintf(f,
-            "*) echo \"no task $SLURM_ARRAY_TASK_ID\" >&2; exit 2 ;;\n"
-            "esac\n");
-    if (fclose(f) != 0) st = VSPH_ENOMEM;
-    if (!st) st = vsph_files_write(dir, "runs.sbatch", text);
-    free(text);
-    text = NULL;
-  }
-  /* the assembly: the report again, reading the runs only */
-  if (!st && (f = open_memstream(&text, &len))) {
-    fprintf(f,
-            "#!/bin/sh\n"
-            "# vsph %s: the report's assembly after its runs (written by "
-            "vsph report --slurm)\n"
-            "#SBATCH --job-name=vsph-report\n"
-            "#SBATCH --ntasks=1\n"
-            "#SBATCH --cpus-per-task=%zu\n"
-            "#SBATCH --mem=2048M\n"
-            "#SBATCH --time=1:00:00\n"
-            "#SBATCH --output=%s/assemble-%%j.log\n",
-            VSPH_VERSION, s->threads, logs);
-    if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
-    vsph_report_jobs_quote(s->exe, cmd, 8192);
-    fprintf(f, "OMP_NUM_THREADS=%zu exec %s report %s --assemble\n", s->threads,
-            cmd, s->assemble);
-    if (fclose(f) != 0) st = VSPH_ENOMEM;
-    if (!st) st = vsph_files_write(dir, "assemble.sbatch", text);
-    free(text);
-  } else if (!st) {
-    st = VSPH_ENOMEM;
-    vsph_status_report(st, __FILE__, __LINE__, "cannot write the assembly");
-  }
-  char array_id[64] = "", asm_id[64] = "", script[2][1500];
-  snprintf(logs, sizeof logs, "%s/runs.sbatch", dir);
-  vsph_report_jobs_quote(logs, script[0], sizeof script[0]);
-  snprintf(logs, sizeof logs, "%s/assemble.sbatch", dir);
-  vsph_report_jobs_quote(logs, script[1], sizeof script[1]);
+  char *text = NULL, script[2][PATH_MAX + 64], cmd[2 * PATH_MAX + 256];
+  if (!st && !(st = array_script(jobs, m, s, logs, mem_mib, limit, &text)))
+    st = put_script(dir, "runs.sbatch", text, script[0], sizeof script[0]);
+  if (!st && !(st = assembly_script(R, s, logs, &text)))
+    st = put_script(dir, "assemble.sbatch", text, script[1], sizeof script[1]);
+  char array_id[64] = "", asm_id[64] = "";
   if (!st && m) {
-    snprintf(cmd, 8192, "sbatch --parsable %s", script[0]);
+    snprintf(cmd, sizeof cmd, "sbatch --parsable %s", script[0]);
     st = submit(cmd, array_id, sizeof array_id);
   }
   if (!st) {
     if (m)
-      snprintf(cmd, 8192, "sbatch --parsable --dependency=afterany:%s %s",
+      snprintf(cmd, sizeof cmd, "sbatch --parsable --dependency=afterany:%s %s",
                array_id, script[1]);
     else
-      snprintf(cmd, 8192, "sbatch --parsable %s", script[1]);
+      snprintf(cmd, sizeof cmd, "sbatch --parsable %s", script[1]);
     st = submit(cmd, asm_id, sizeof asm_id);
   }
-  if (!st) {
-    cJSON *o = cJSON_CreateObject();
-    const time_t now = time(NULL);
-    char stamp[32];
-    struct tm utc;
-    strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", gmtime_r(&now, &utc));
-    cJSON_AddStringToObject(o, "date", stamp);
-    cJSON_AddStringToObject(o, "array_job", array_id);
-    cJSON_AddStringToObject(o, "assembly_job", asm_id);
-    cJSON_AddNumberToObject(o, "tasks", (double)m);
-    cJSON_AddNumberToObject(o, "runs", (double)R->plan->n);
-    cJSON_AddNumberToObject(o, "cpus_per_task", (double)s->threads);
-    cJSON_AddNumberToObject(o, "mem_mib", (double)mem_mib);
-    cJSON_AddStringToObject(o, "time", limit);
-    cJSON *t = cJSON_AddArrayToObject(o, "task_folders");
-    for (size_t k = 0; k < m; k++)
-      cJSON_AddItemToArray(t, cJSON_CreateString(order[k]->dir));
-    st = vsph_json_write(o, dir, "submitted.json");
-  }
+  if (!st)
+    st = record_submission(R, dir, array_id, asm_id, jobs, m, s->threads,
+                           mem_mib, limit);
   if (!st) {
     if (m)
       printf(
@@ -821,7 +865,6 @@ int vsph_report_jobs_slurm(struct vsph_report *R,
           asm_id);
     fflush(stdout);
   }
-  free(cmd);
   free(order);
   return st;
 }
