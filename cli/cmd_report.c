@@ -4,7 +4,6 @@
 #include <limits.h>
 #include <omp.h>
 #include <signal.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,8 +40,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
   const char *partition = NULL, *limit = NULL;
   int full = 0, plan = 0, slurm = 0, assemble = 0;
-  /* SIZE_MAX: not given (0 is a value, and refused) */
-  size_t jobs = SIZE_MAX, threads = SIZE_MAX;
+  size_t jobs = 0, threads = 0;
   const struct vsph_args_spec own[] = {
       {"--out", VSPH_ARGS_STRING, &dir, "DIR",
        "output folder (default reports/out)"},
@@ -109,7 +107,13 @@ int vsph_cmd_report_main(int argc, char **argv) {
                                   NULL};
   const int rc = vsph_args_parse(&c, argc, argv, NULL);
   if (rc >= 0) return vsph_args_finish(CMD, rc);
-  const int pool = jobs != SIZE_MAX, own_threads = threads != SIZE_MAX;
+  /* given: an option named in argv (its value is then parsed and valid;
+   * 0 is a value here, and refused) */
+  int pool = 0, own_threads = 0;
+  for (int k = 1; k < argc; k++) {
+    pool |= !strcmp(argv[k], "--jobs");
+    own_threads |= !strcmp(argv[k], "--threads");
+  }
   if (plan + slurm + assemble + pool > 1)
     return vsph_args_fail(CMD,
                           "--plan, --jobs, --slurm and --assemble exclude one "

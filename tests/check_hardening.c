@@ -333,6 +333,7 @@ START_TEST(test_report_job_inputs) {
   static const char *const cases[][2] = {
       {"report --jobs 0", "--jobs"},
       {"report --jobs 300", "--jobs"},
+      {"report --jobs 18446744073709551615", "--jobs"},
       {"report --jobs x", "--jobs"},
       {"report --plan --jobs 2", "exclude"},
       {"report --slurm --assemble", "exclude"},
