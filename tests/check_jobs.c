@@ -4,6 +4,7 @@
  * pool runs what is missing, records a failure and goes on, and resumes
  * after a half-written run; a part may read only runs its plan lists. */
 #include <check.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,6 +16,7 @@
 #include "../io/files.h"
 #include "../io/rundir.h"
 #include "../reports/report_internal.h"
+#include "../solver/run.h"
 #include "check_suites.h"
 
 static const char *bin(void) {
@@ -206,6 +208,38 @@ START_TEST(test_pool) {
 }
 END_TEST
 
+/* The cost estimate's neighbours: the support's area (2-D) or volume
+ * (3-D) in units of dx^d, twice for a two-pass form. */
+START_TEST(test_estimate_neighbours) {
+  struct vsph_report R;
+  memset(&R, 0, sizeof R);
+  R.dir = "/tmp/vsph_jobs_never";
+  struct vsph_report_plan P;
+  memset(&P, 0, sizeof P);
+  R.plan = &P;
+  ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &SPEC[0]), 0); /* mgf */
+  ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &SPEC[1]), 0); /* pvwf */
+  static const char set[][96] = {"Solver:scheme=contact",
+                                 "Solver:kernel=wendland2", "Solver:alpha=0.5",
+                                 "Solver:res=80", "Scene:Ly=30e-9",
+                                 "Scene:Lz=30e-9"};
+  struct vsph_report_job j;
+  ck_assert_int_eq(vsph_report_jobs_shear(&R, "n", set, 6, 1, &j), 0);
+  ck_assert_int_eq(vsph_report_jobs_plan_add(&R, &j), 0);
+  ck_assert_uint_eq(P.n, 3);
+  struct vsph_run_props rp;
+  ck_assert_int_eq(vsph_run_props_init(&rp, NULL), 0); /* the defaults */
+  const double r2 = rp.ktype->kappa * rp.hdx; /* reach / dx */
+  /* 2-D: pi r^2; PVWF differentiates its first pass: two supports */
+  ck_assert_double_eq_tol(P.job[0].neighbours, M_PI * r2 * r2, 1e-12);
+  ck_assert_double_eq_tol(P.job[1].neighbours, 2 * M_PI * r2 * r2, 1e-12);
+  /* 3-D, Wendland C2 (kappa = 2) at h = 2 alpha dx = dx: 4 pi 2^3 / 3 */
+  ck_assert_double_eq_tol(P.job[2].neighbours, 4 * M_PI * 8 / 3, 1e-12);
+  for (size_t k = 0; k < P.n; k++) vsph_report_jobs_free(&P.job[k]);
+  free(P.job);
+}
+END_TEST
+
 /* The plan of the whole quick report: every folder once, the scenes'
  * baseline included, none cached in an empty folder, and the print lists
  * each with its command. */
@@ -249,6 +283,7 @@ Suite *vsph_jobs_suite(void) {
   tcase_add_test(tc, test_key_canonical);
   tcase_add_test(tc, test_command_is_the_run);
   tcase_add_test(tc, test_pool);
+  tcase_add_test(tc, test_estimate_neighbours);
   tcase_add_test(tc, test_plan_listing);
   suite_add_tcase(s, tc);
   return s;
