@@ -219,17 +219,16 @@ START_TEST(test_estimate_neighbours) {
   R.plan = &P;
   ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &SPEC[0]), 0); /* mgf */
   ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &SPEC[1]), 0); /* pvwf */
-  static const char set[][96] = {"Solver:scheme=contact",
-                                 "Solver:kernel=wendland2", "Solver:alpha=0.5",
-                                 "Solver:res=80", "Scene:Ly=30e-9",
-                                 "Scene:Lz=30e-9"};
+  static const char set[][96] = {
+      "Solver:scheme=contact", "Solver:kernel=wendland2", "Solver:alpha=0.5",
+      "Solver:res=80",         "Scene:Ly=30e-9",          "Scene:Lz=30e-9"};
   struct vsph_report_job j;
   ck_assert_int_eq(vsph_report_jobs_shear(&R, "n", set, 6, 1, &j), 0);
   ck_assert_int_eq(vsph_report_jobs_plan_add(&R, &j), 0);
   ck_assert_uint_eq(P.n, 3);
   struct vsph_run_props rp;
   ck_assert_int_eq(vsph_run_props_init(&rp, NULL), 0); /* the defaults */
-  const double r2 = rp.ktype->kappa * rp.hdx; /* reach / dx */
+  const double r2 = rp.ktype->kappa * rp.hdx;          /* reach / dx */
   /* 2-D: pi r^2; PVWF differentiates its first pass: two supports */
   ck_assert_double_eq_tol(P.job[0].neighbours, M_PI * r2 * r2, 1e-12);
   ck_assert_double_eq_tol(P.job[1].neighbours, 2 * M_PI * r2 * r2, 1e-12);
