@@ -332,10 +332,6 @@ static void plan_free(struct vsph_report_plan *P) {
   free(P);
 }
 
-void vsph_report_quote(const char *s, char *out, size_t len) {
-  vsph_report_jobs_quote(s, out, len);
-}
-
 /* One report at a time writes a folder: a lock on DIR/report.lock (held
  * until the process ends; released by the system if it dies). */
 static int lock_dir(const char *dir) {

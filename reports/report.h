@@ -63,10 +63,6 @@ int vsph_report_part_find(const char *name);
  *  stretching-square, standing-wave), or NULL. */
 const char *vsph_report_scene_name(size_t s);
 
-/** @brief @p s for a POSIX shell into @p out (@p len bytes): as it is
- *  when every character is safe, else in single quotes. */
-void vsph_report_quote(const char *s, char *out, size_t len);
-
 /** @brief Write the report, printing one line per part to stderr.
  *  @return VSPH_OK or the first failure (reported). */
 int vsph_report_write(const struct vsph_report_props *rp);
