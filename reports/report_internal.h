@@ -125,6 +125,7 @@ struct vsph_report {
   const volatile sig_atomic_t *stop; /* stop request, or NULL */
   struct vsph_report_plan *plan;     /* NULL: runs made as read (tests) */
   size_t made;                       /* runs the plan missed at the start */
+  double runs_wall;                  /* their wall time (s) */
   const char *made_by;               /* who made them (run.json) */
   double load[2][3]; /* load averages before and after (run.json) */
 };
