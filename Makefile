@@ -2,7 +2,7 @@
 # work as the first command on a fresh machine: they install what is missing.
 
 CC       ?= gcc
-PKGS     := gsl fftw3 yaml-0.1 libcjson libcmark-gfm
+PKGS     := gsl fftw3 yaml-0.1 libcjson libcmark-gfm zlib
 TESTPKGS := check
 BUILD    ?= build
 WARN     := -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \

@@ -348,12 +348,26 @@ START_TEST(test_report_job_inputs) {
       {"run vortex-patch --cache --res 0", "Solver:res"},
       {"contact --res 4", "periodic length"},
       {"contact --csv /tmp/vsph_never.csv", "drop --csv"}};
+  /* A stand-in sbatch first on a private PATH, so that the --slurm cases
+   * reach the checks after "is sbatch there?" whether or not this machine
+   * has Slurm. Every case must be refused before anything is submitted:
+   * the stand-in leaves a mark if it is ever called. */
+  char bin[] = "/tmp/vsph_sbatchXXXXXX", mark[64], fake[64];
+  ck_assert_ptr_nonnull(mkdtemp(bin));
+  snprintf(mark, sizeof mark, "%s/called", bin);
+  snprintf(fake, sizeof fake, "%s/sbatch", bin);
+  FILE *sb = fopen(fake, "w");
+  ck_assert_ptr_nonnull(sb);
+  fprintf(sb, "#!/bin/sh\ntouch '%s'\nexit 1\n", mark);
+  ck_assert_int_eq(fclose(sb), 0);
+  ck_assert_int_eq(chmod(fake, 0700), 0);
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
-    char args[300];
+    char script[512];
     /* the cases without their own --out write nowhere either */
-    snprintf(args, sizeof args, "%s%s", cases[k][0],
+    snprintf(script, sizeof script,
+             "PATH='%s':\"$PATH\" exec \"$VSPH_BIN\" %s%s", bin, cases[k][0],
              strstr(cases[k][0], "--out") ? "" : " --out /tmp/vsph_never_jobs");
-    struct vsph_test_outcome *o = vsph_test_cli(args);
+    struct vsph_test_outcome *o = vsph_test_shell(script);
     ck_assert_msg(o->status == 2, "'%s' exited %d", cases[k][0], o->status);
     ck_assert_msg(o->err_lines == 1, "'%s' said %d lines: %s", cases[k][0],
                   o->err_lines, o->err);
@@ -361,7 +375,10 @@ START_TEST(test_report_job_inputs) {
                   cases[k][0], o->err);
     ck_assert(!exists("/tmp/vsph_never_jobs"));
     ck_assert(!exists("/tmp/vsph_never jobs"));
+    ck_assert_msg(!exists(mark), "'%s' called sbatch", cases[k][0]);
   }
+  ck_assert_int_eq(remove(fake), 0);
+  ck_assert_int_eq(rmdir(bin), 0);
   /* without sbatch on PATH */
   struct vsph_test_outcome *o = vsph_test_shell(
       "PATH=/nonexistent exec \"$VSPH_BIN\" report --slurm --out "
