@@ -48,7 +48,8 @@ TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
 .PHONY: all deps check test report baseline bench asan valgrind-check prefix-check \
-        format format-check mutate fuzz slurm-check clean
+        format format-check mutate fuzz slurm-check fresh-check \
+        fresh-check-tests clean
 
 all: deps $(BUILD)/vsph
 
@@ -115,6 +116,17 @@ bench: deps
 # every daemon it started. Not part of `make check` (a few minutes).
 slurm-check: deps
 	scripts/slurm-check
+
+# The README's two commands on a truly fresh machine: a minimal Debian 12
+# (debootstrap, cached outside the repository in /var/cache/vsph-fresh),
+# a new copy of it each time, only make and git installed, a clone of
+# HEAD, then `make check` and `make report` there, each timed with the
+# load (scripts/fresh-check). Needs root. fresh-check-tests runs
+# `make check` alone (.ci/run does, after the tests here).
+fresh-check:
+	scripts/fresh-check
+fresh-check-tests:
+	scripts/fresh-check --tests
 
 # Each coefficient of each physical term mutated in turn (scripts/mutate):
 # a test must fail for every one. Slow (one rebuild per mutation); not part
