@@ -60,9 +60,23 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
           "body{font-family:sans-serif;max-width:70em;margin:2em auto;"
           "padding:0 1em;line-height:1.45;color:#222}\n"
           "table{border-collapse:collapse;margin:1em 0;font-size:90%%}\n"
-          "th,td{border:1px solid #bbb;padding:.25em .6em;text-align:right}\n"
+          /* prose left, numbers right: a column is right-aligned only
+           * where its Markdown says so (---:), which cmark-gfm writes as
+           * align="right" */
+          "th,td{border:1px solid #bbb;padding:.25em .6em;text-align:left;"
+          "vertical-align:top}\n"
+          "th[align=right],td[align=right]{text-align:right}\n"
+          "th[align=center],td[align=center]{text-align:center}\n"
           "th{background:#eee}\nimg{max-width:100%%;border:1px solid #ddd}\n"
-          "code{background:#f4f4f4}\n</style></head><body>\n",
+          "code{background:#f4f4f4}\n"
+          /* the verdict classes of the claims table */
+          ".v{display:inline-block;padding:0 .35em;border-radius:.25em;"
+          "font-weight:bold;white-space:nowrap}\n"
+          ".v-rep{background:#d4edda;color:#14532d}\n"
+          ".v-part{background:#fff3cd;color:#7a4d00}\n"
+          ".v-diff{background:#f8d7da;color:#842029}\n"
+          ".v-none{background:#e2e3e5;color:#41464b}\n"
+          "</style></head><body>\n",
           title);
   /* Copy the body, replacing src="X.png" by an embedded data URI. */
   const char *c = body;

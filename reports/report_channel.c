@@ -1,4 +1,4 @@
-/* Section 11 of the report: internal flows and the other formulations
+/* Section 10 of the report: internal flows and the other formulations
  * (Basa, Quinlan & Lastiwka 2009; Zheng, Ma & Shao 2018; docs/theory.md
  * sections 8-10): Poiseuille start-up at Basa et al.'s set-up for every
  * formulation, Cleary's xi, the wall-velocity treatments at start-up, the
@@ -637,7 +637,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
            100 * e[P_D424], 100 * r[P_C], 100 * e[P_C], 100 * r[P_D496],
            100 * e[P_D496]);
   st = vsph_report_claim(
-      R, "Poiseuille: models D and E are the most accurate (P000 6.1.3)",
+      R, "Poiseuille: models D and E are the most accurate (Basa §6.1.3)",
       "D ~ E best, C among the least accurate (eq. 38)", ours,
       fmax(r[P_E], r[P_D424]) < fmin(r[P_C], r[P_D496]) ? "reproduced"
                                                         : "differs");
@@ -652,7 +652,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Model C is robust but inaccurate: its factor 8 under-estimates "
-        "lap u by 5.2 % (P000 6.1.3; the lattice sum, docs/theory.md §8)",
+        "lap u by 5.2 % (Basa §6.1.3; the lattice sum, docs/theory.md §8)",
         "about 5 % too fast at steady state", ours,
         c.pois[P_C].ok && u_c > u_e && e[P_C] > 0.02 ? "reproduced"
                                                      : "differs");
@@ -663,7 +663,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Cleary's xi = 4.96333 gives highly inaccurate Poiseuille velocities; "
-        "the recalibrated 4.24 gives good ones (P000 5)",
+        "the recalibrated 4.24 gives good ones (Basa §5)",
         "4.96333 at or beyond the 12 % failure level (eq. 38); 4.24 good", ours,
         r[P_D496] >= 0.12 && r[P_D424] < 0.05 ? "reproduced" : "differs");
   snprintf(ours, sizeof ours, "eq. 38 at t* = 4.9: A %.1f %%%s, A[0] %.1f %%%s",
@@ -673,7 +673,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Model A (direct second derivatives) is unusable uncorrected and "
-        "viable with the Shepard [0] correction (P000 6.1.3)",
+        "viable with the Shepard [0] correction (Basa §6.1.3)",
         "A fails (eq. 38 >= 12 %); A[0] runs", ours,
         r[P_A] >= 0.12 && c.pois[P_A0].ok && r[P_A0] < 0.12 ? "reproduced"
                                                             : "differs");
@@ -685,12 +685,12 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Model B (two-pass) is very accurate in Poiseuille, if the least "
-        "robust (P000 6.1.3)",
+        "robust (Basa §6.1.3)",
         "accuracy very good (beside D, E)", ours,
         r[P_B] <= 1.5 * fmax(r[P_E], r[P_D424])
             ? "reproduced (accuracy; robustness over long times not run)"
             : "differs: on eq. 38 B's near-wall error is about five times "
-              "E's here, as PVWF's (section 11)");
+              "E's here, as PVWF's (section 10)");
   const struct vsph_report_run *g = &c.eos[2], *gr = &c.eos[3], *ta = &c.eos[1];
   snprintf(ours, sizeof ours,
            "E, Re 0.3, gas 125 kPa: %s%.3g without the reduction, %s with "
@@ -702,14 +702,14 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Without the local pressure reduction the compressible runs fail; "
-        "with it they are stable (P000 6.1.1, Fig. 2: Re 0.3, model E)",
+        "with it they are stable (Basa §6.1.1, Fig. 2: Re 0.3, model E)",
         "unstable without, stable with", ours,
         !g->ok && gr->ok ? "reproduced" : "differs");
   if (!st)
     st = vsph_report_claim(
         R,
         "With Tait's law pressures are much lower and pressure-induced "
-        "instabilities weaker (P000 6.1.1)",
+        "instabilities weaker (Basa §6.1.1)",
         "Tait runs without the reduction", ours,
         ta->ok && !g->ok ? "reproduced" : "differs");
   snprintf(ours, sizeof ours,
@@ -721,7 +721,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Of the four Laplacian forms VISC-04 gives the best flow results "
-        "(P001 5, the lid-driven cavity)",
+        "(Zheng §5, the lid-driven cavity)",
         "VISC-04 closest to the reference", ours,
         r[P_V04] <= rmin ? "reproduced on Poiseuille (the paper's flow is "
                            "the cavity, which the VISC forms do not run "
@@ -750,7 +750,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
         R,
         "The consistency corrections bring small benefits to models C, D "
         "and E; for D the first-order [1] correction slightly degrades "
-        "accuracy (P000 6.1.3)",
+        "accuracy (Basa §6.1.3)",
         "[1] helps C and E a little, degrades D slightly", ours,
         !one   ? "differs"
         : zero ? "reproduced"
@@ -786,7 +786,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
   else if (first <= 10.0)
     snprintf(verdict, sizeof verdict,
              "partly: the failures start between Re = %g and %g on the Re "
-             "run (section 11)",
+             "run (section 10)",
              held, first);
   else
     snprintf(verdict, sizeof verdict, "differs");
@@ -794,7 +794,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Poiseuille runs fail in the long term at Re as low as about 1, far "
-        "below the physical limit (P000 6.1.4)",
+        "below the physical limit (Basa §6.1.4)",
         "failure from Re ~ 1", ours, verdict);
   /* Basa's Fig. 7: before the failure E_k sits on a plateau while the
    * transverse agitation is flat, then jumps; E at Re = 5 (in both
@@ -834,7 +834,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
       st = vsph_report_claim(
           R,
           "The failure comes as a sharp jump after a long plateau of the "
-          "kinetic energy, which hides its onset (P000 6.1.4, Fig. 7)",
+          "kinetic energy, which hides its onset (Basa §6.1.4, Fig. 7)",
           "E_k flat, then a sudden agitation", ours,
           isfinite(tf) && spread < 0.005 && vfail / med > 5.0 ? "reproduced"
                                                               : "differs");
@@ -848,7 +848,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Robustness in Poiseuille: D and E the most robust, C almost as "
-        "robust, B the least (P000 6.1.3)",
+        "robust, B the least (Basa §6.1.3)",
         "D ~ E >= C > B", ours,
         fmin(score[MAP_E], score[MAP_D]) >= score[MAP_C] &&
                 score[MAP_C] > score[MAP_B] && score[MAP_A0] > score[MAP_B]
@@ -868,12 +868,12 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "At start-up mirrored wall velocities under-estimate the near-wall "
-        "shear; linear extrapolation does better (P000 6.1.2)",
+        "shear; linear extrapolation does better (Basa §6.1.2)",
         "mirroring worst; use at least linear extrapolation", ours,
         better == 3   ? "reproduced"
         : better == 0 ? "differs"
                       : "partly: linear extrapolation is better for some "
-                        "forms only on this measure (section 11)");
+                        "forms only on this measure (section 10)");
   double worst = 0.0;
   int all_ok = 1;
   for (int f = 0; f < NCOU; f++) { /* A uncorrected: the claim on its own */
@@ -888,7 +888,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
            100 * last(&c.cou[VSPH_VISCOUS_TAKEDA], "u_err"));
   if (!st)
     st = vsph_report_claim(
-        R, "Couette profiles track Morris' series to steady state (P003 4)",
+        R, "Couette profiles track Morris' series to steady state (Vukčević §4)",
         "good agreement, steady by about 1 s", ours,
         all_ok && worst < 0.01 ? "reproduced" : "differs");
   /* the cavity at Re 100: the finest quick run's distance from Ghia et
@@ -905,19 +905,19 @@ int vsph_report_channel_claims(struct vsph_report *R) {
   if (!st)
     st = vsph_report_claim(
         R,
-        "Cavity centreline velocities at Re = 100 follow Ghia et al. (P000 "
+        "Cavity centreline velocities at Re = 100 follow Ghia et al. (Basa "
         "6.2, Fig. 10)",
         "close to Ghia at 50 x 50", ours,
         eE < 0.05 ? "reproduced, with Adami et al.'s walls and transport "
                     "velocity (the paper's own wall particles are not "
-                    "stable here; section 11)"
+                    "stable here; section 10)"
                   : "differs");
   snprintf(ours, sizeof ours,
            "RMS against Ghia, Re 100, 30 x 30: D %.2f %%, E %.2f %%", 100 * eD,
            100 * eE);
   if (!st)
     st = vsph_report_claim(
-        R, "In the cavity D is best, by a very small margin (P000 6.2)",
+        R, "In the cavity D is best, by a very small margin (Basa §6.2)",
         "D slightly better than E", ours,
         eD <= eE ? "reproduced" : "differs: E is closer to Ghia here");
   /* Re 1000: Basa et al. compare at t = 80 s; the quick run stops at 30 */
@@ -942,7 +942,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "The cavity at Re = 1000 runs with every model at 50 x 50 and its "
-        "profiles approach Ghia et al.'s (P000 6.2, Fig. 10)",
+        "profiles approach Ghia et al.'s (Basa §6.2, Fig. 10)",
         "stable; profiles near Ghia at 80 s", ours, v1000);
   unload(&c);
   return st;

@@ -398,7 +398,7 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
 }
 
 int vsph_report_claims_plan(struct vsph_report *R) {
-  /* every scene, whatever the filter, and the runs of sections 11, 12 */
+  /* every scene, whatever the filter, and the runs of sections 10, 11 */
   int st = vsph_report_runs_plan_ladders(R, 1);
   if (!st) st = vsph_report_channel_plan(R);
   if (!st) st = vsph_report_contact_plan(R);
@@ -433,11 +433,49 @@ int vsph_report_claims_write(struct vsph_report *R) {
   vsph_text_set(&R->tv, "quick_note", "%s",
                 R->full ? "" : vsph_text_get("claims.quick_note"));
   if ((st = vsph_report_say(R, "claims.head"))) return st;
+  return vsph_report_claims_table(R);
+}
+
+/* The verdict classes: the word each verdict is marked with, the symbol
+ * beside it (for Markdown readers without the HTML's colours) and the CSS
+ * class of report.html's style. */
+static const struct {
+  const char *word, *symbol, *css;
+} VERDICT[VSPH_REPORT_NVERDICTS] = {
+    [VSPH_REPORT_REPRODUCED] = {"reproduced", "\u2714", "v-rep"},
+    [VSPH_REPORT_PARTLY] = {"partly", "\u25d0", "v-part"},
+    [VSPH_REPORT_DIFFERS] = {"differs", "\u2718", "v-diff"},
+    [VSPH_REPORT_NOT_TESTED] = {"not tested", "\u2013", "v-none"}};
+
+int vsph_report_claims_class(const char *verdict) {
+  if (!strncmp(verdict, "not tested", 10)) return VSPH_REPORT_NOT_TESTED;
+  if (!strncmp(verdict, "partly", 6)) return VSPH_REPORT_PARTLY;
+  if (!strncmp(verdict, "reproduced", 10)) return VSPH_REPORT_REPRODUCED;
+  /* "not reproduced ...", "differs ...", "the reference differs ..." */
+  return VSPH_REPORT_DIFFERS;
+}
+
+int vsph_report_claims_table(struct vsph_report *R) {
+  size_t tally[VSPH_REPORT_NVERDICTS] = {0};
+  for (size_t k = 0; k < R->nclaims; k++)
+    tally[vsph_report_claims_class(R->claims[k].verdict)]++;
+  fprintf(R->md, "**%zu claims:**", R->nclaims);
+  for (int v = 0; v < VSPH_REPORT_NVERDICTS; v++)
+    fprintf(R->md, "%s <span class=\"v %s\">%s %zu %s</span>", v ? "," : "",
+            VERDICT[v].css, VERDICT[v].symbol, tally[v], VERDICT[v].word);
+  fprintf(R->md, ".\n\n");
+  const int st = vsph_report_say(R, "claims.table_head");
+  if (st) return st;
   for (size_t k = 0; k < R->nclaims; k++) {
     const char *cell[4] = {R->claims[k].claim, R->claims[k].paper,
                            R->claims[k].ours, R->claims[k].verdict};
     for (int c = 0; c < 4; c++) { /* a '|' inside a cell is escaped */
       fputs("| ", R->md);
+      if (c == 3) { /* the verdict: its class marked, then its words */
+        const int v = vsph_report_claims_class(cell[c]);
+        fprintf(R->md, "<span class=\"v %s\">%s %s</span> ", VERDICT[v].css,
+                VERDICT[v].symbol, VERDICT[v].word);
+      }
       for (const char *s = cell[c]; *s; s++) {
         if (*s == '|') fputc('\\', R->md);
         fputc(*s, R->md);
@@ -447,5 +485,5 @@ int vsph_report_claims_write(struct vsph_report *R) {
     fprintf(R->md, "| [%s](#sec-%s) |\n", R->claims[k].see, R->claims[k].see);
   }
   fprintf(R->md, "\n");
-  return VSPH_OK;
+  return ferror(R->md) ? VSPH_EIO : VSPH_OK;
 }

@@ -1,5 +1,5 @@
-/* Section 12: contact (Godunov-type) SPH and its numerical viscosity
- * (Parshikov, Medin, Rublev & Dyachkov, P002; docs/theory.md section 12):
+/* Section 11: contact (Godunov-type) SPH and its numerical viscosity
+ * (Parshikov, Medin, Rublev & Dyachkov, Parshikov; docs/theory.md section 12):
  * the shear test at alpha = 0.5 with both kernels against the paper's
  * Table 1 and the lattice sums, the static-lattice limit, the velocity,
  * resolution and material dependence, fit (37) in alpha, the correcting
@@ -44,7 +44,7 @@ struct cspec {
 
 /* the runs, by role */
 enum {
-  C_W,    /* lead, Wendland C2, alpha 0.5, +-500 m/s: P002 section 3 */
+  C_W,    /* lead, Wendland C2, alpha 0.5, +-500 m/s: Parshikov section 3 */
   C_B,    /* the same, cubic B-spline */
   C_WS,   /* Wendland, static lattice (U0 = 0.05 m/s) */
   C_BS,   /* B-spline, static lattice */
@@ -288,9 +288,9 @@ static void numbers(const struct cres *cr, const char *dir, struct cnum *nb) {
   }
 }
 
-/* ---------------------------------------------- cylinders (P002 5.5) */
+/* ---------------------------------------------- cylinders (Parshikov §5.5) */
 
-/* Glycerol, d = 1 mm, d/S = 0.5, Re = 0.005 (P002 Table 2's second case),
+/* Glycerol, d = 1 mm, d/S = 0.5, Re = 0.005 (Parshikov Table 2's second case),
  * 2-D: uncorrected at 20 and 30 particles per diameter, corrected
  * (zeta = 1, eta_num the 2-D static lattice's, set by cyl_spec) at 20;
  * FULL adds 40 per diameter uncorrected. End times: about five e-folds of
@@ -328,7 +328,7 @@ static const struct {
   const char *tag;
   double zeta;
   const char *fluid; /* the table's label */
-  double paper;      /* P002 Table 2: C_D^SPH / C_D,M as printed */
+  double paper;      /* Parshikov Table 2: C_D^SPH / C_D,M as printed */
 } CY[NCY] = {[CY_Z0_40] = {40, 1e-4, CYL_Z0, "z0", 0},
              [CY_Z0_60] = {60, 1.5e-4, CYL_Z0, "z0", 0},
              [CY_Z05_40] = {40, 2e-4, CYL_Z05, "z05", 0.5},
@@ -343,7 +343,7 @@ static void cyl_case(int k, const char **fluid, double *dS, double *paper) {
   const int para = k == CY_P0_40 || k == CY_P1_40, s03 = k == CY_G03_67;
   *fluid = para ? "paraffin" : "glycerol";
   *dS = s03 ? 0.3 : 0.5;
-  /* C_D^SPH/C_D,M of P002's Table 2 as printed (its C_D,M: 20200, 8000) */
+  /* C_D^SPH/C_D,M of Parshikov's Table 2 as printed (its C_D,M: 20200, 8000) */
   static const double P[2][2] = {{68700.0 / 20200, 26900.0 / 20200},
                                  {50600.0 / 20200, 22800.0 / 20200}};
   *paper = s03 ? (CY[k].zeta > 0 ? 10500.0 / 8000 : 25900.0 / 8000)
@@ -476,7 +476,7 @@ static int alpha_csv(struct vsph_report *R, const struct cres *cr) {
 static int figures(struct vsph_report *R, const struct cres *cr) {
   struct vsph_plot pl;
   char file[300], using[200], label[128];
-  /* P002 Fig. 6a: lead at 4.5 ns for each zeta, the exact profiles */
+  /* Parshikov Fig. 6a: lead at 4.5 ns for each zeta, the exact profiles */
   vsph_plot_init(&pl, R->dir, "fig_contact_zeta",
                  "Lead shear layer at t = 4.5 ns: the correcting tensor",
                  "x (nm)", "u_y / U0");
@@ -497,7 +497,7 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
                        "exact, the measured numerical eta", "lines lw 2 dt 2");
   if (!st) st = vsph_report_figure_say(R, &pl, "contact.fig_zeta");
   if (st) return st;
-  /* P002 Fig. 6b: zeta = 1, self-similar in xi = x sqrt(t0/t) */
+  /* Parshikov Fig. 6b: zeta = 1, self-similar in xi = x sqrt(t0/t) */
   vsph_plot_init(&pl, R->dir, "fig_contact_selfsim",
                  "Lead, zeta = 1: profiles against xi = x sqrt(t0/t), "
                  "t0 = 7 ns",
@@ -514,7 +514,7 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
   }
   if (!st) st = vsph_report_figure_say(R, &pl, "contact.fig_selfsim");
   if (st) return st;
-  /* P002 Fig. 4 / eq. (37): the coefficient against alpha */
+  /* Parshikov Fig. 4 / eq. (37): the coefficient against alpha */
   vsph_plot_init(&pl, R->dir, "fig_contact_alpha",
                  "Numerical viscosity of contact SPH against alpha (Wendland "
                  "C2, lead)",
@@ -523,14 +523,14 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
                      "measured (control surface, +-500 m/s)",
                      "linespoints pt 7 lw 2");
   if (!st)
-    st = vsph_plot_add(&pl, "contact_alpha.csv", "1:3", "P002 fit (37)",
+    st = vsph_plot_add(&pl, "contact_alpha.csv", "1:3", "Parshikov fit (37)",
                        "lines lw 2 dt 2");
   if (!st)
     st = vsph_plot_add(&pl, "contact_alpha.csv", "1:4", "lattice sum (static)",
                        "linespoints pt 6 dt 3");
   if (!st) st = vsph_report_figure_say(R, &pl, "contact.fig_alpha");
   if (st) return st;
-  /* P002 Fig. 7: paraffin | glycerol */
+  /* Parshikov Fig. 7: paraffin | glycerol */
   vsph_plot_init(&pl, R->dir, "fig_contact_bimaterial",
                  "Paraffin (x < 0) | glycerol (x > 0), zeta = 1", "x (um)",
                  "u_y / U0");
@@ -563,7 +563,7 @@ int vsph_report_contact_write(struct vsph_report *R) {
   /* Table: alpha = 0.5, both kernels */
   FILE *md = R->md;
   fprintf(md,
-          "| kernel | P002 Table 1, lead | P002, 18 materials | lattice sum | "
+          "| kernel | Parshikov Table 1, lead | Parshikov, 18 materials | lattice sum | "
           "measured, static lattice | measured, +-50 m/s | measured, +-500 "
           "m/s | the same, u_y fit |\n"
           "|:---|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -585,8 +585,8 @@ int vsph_report_contact_write(struct vsph_report *R) {
   if ((st = vsph_report_say(R, "contact.table_alpha05"))) return st;
   /* materials */
   fprintf(md,
-          "| material | Z (MPa s/m) | P002 eta_num (mPa s) | measured "
-          "(mPa s) | measured/P002 | measured / (Z D0) |\n"
+          "| material | Z (MPa s/m) | Parshikov eta_num (mPa s) | measured "
+          "(mPa s) | measured/Parshikov | measured / (Z D0) |\n"
           "|:---|---:|---:|---:|---:|---:|\n");
   static const int MAT[4] = {C_WATER, C_AL, C_TU, C_W};
   for (int k = 0; k < 4; k++) {
@@ -603,7 +603,7 @@ int vsph_report_contact_write(struct vsph_report *R) {
   /* alpha */
   if ((st = alpha_csv(R, &cr))) return st;
   fprintf(md,
-          "| alpha | D0 (nm) | measured | P002 fit (37) | measured/fit | "
+          "| alpha | D0 (nm) | measured | Parshikov fit (37) | measured/fit | "
           "lattice sum |\n|---:|---:|---:|---:|---:|---:|\n");
   static const int A[5] = {C_W, C_A055, C_A06, C_A075, C_A1};
   const struct vsph_kernel_type *wk = vsph_kernel_find("wendland2");
@@ -619,7 +619,7 @@ int vsph_report_contact_write(struct vsph_report *R) {
   if ((st = exact_csv(R, &cr, &nb))) return st;
   /* the correcting tensor */
   fprintf(md,
-          "| zeta | measured eta_eff (mPa s) | P002's expectation 2.3 + "
+          "| zeta | measured eta_eff (mPa s) | Parshikov's expectation 2.3 + "
           "(1 - zeta) 19.2 | ours: measured eta_num + f_lat (eta - zeta "
           "eta_num^(37)) |\n|---:|---:|---:|---:|\n");
   for (int k = 0; k < 3; k++) {
@@ -657,7 +657,7 @@ int vsph_report_contact_write(struct vsph_report *R) {
   fprintf(md,
           "| fluid | d/S | particles per diameter | zeta | U/U_(39) | "
           "(F/(eta U)) / eq. (39)'s | change of U over the last tenth | "
-          "P002 Table 2, C_D/C_D,M | run time (s) |\n"
+          "Parshikov Table 2, C_D/C_D,M | run time (s) |\n"
           "|:---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (int k = 0; k < cy.n; k++) {
     const char *fluid;
@@ -706,13 +706,13 @@ int vsph_report_contact_claims(struct vsph_report *R) {
       R,
       "The acoustic Riemann solver's numerical viscosity is eta_num = "
       "0.0894 Z D0 (Wendland C2) and 0.1078 Z D0 (B-spline) at alpha = 0.5 "
-      "(P002 Table 1)",
+      "(Parshikov Table 1)",
       "0.0894 +- 0.002, 0.1078 +- 0.001", ours,
       fabs(eb) < 0.03 && fabs(ew) < 0.03   ? "reproduced (within 3 %)"
       : fabs(eb) < 0.08 && fabs(ew) < 0.08 ? "partly: within 8 %; the static "
                                              "lattice gives the lattice sum "
                                              "exactly, and sliding layers add "
-                                             "to it (section 12)"
+                                             "to it (section 11)"
                                            : "differs");
   const double r50 = coef(&cr.r[C_W50]) / w - 1.0;
   double spread = 0;
@@ -729,11 +729,11 @@ int vsph_report_contact_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "eta_num is linear in Z and D0 and almost independent of the shear "
-        "velocity (50-500 m/s) (P002 Figs. 3-4)",
+        "velocity (50-500 m/s) (Parshikov Figs. 3-4)",
         "linear in Z and D0; \"almost independent\" of U0", ours,
         fabs(r50) < 0.03 && spread < 0.05 && fabs(rd) < 0.05
             ? "reproduced"
-            : "partly: see section 12");
+            : "partly: see section 11");
   static const int A[5] = {C_W, C_A055, C_A06, C_A075, C_A1};
   double dev = 0;
   for (int k = 0; k < 5; k++)
@@ -745,7 +745,7 @@ int vsph_report_contact_claims(struct vsph_report *R) {
            100 * dev);
   if (!st)
     st = vsph_report_claim(
-        R, "eta_num(alpha) follows the two-piece fit of eq. (37) (P002 Fig. 4)",
+        R, "eta_num(alpha) follows the two-piece fit of eq. (37) (Parshikov Fig. 4)",
         "two linear pieces meeting at alpha = 0.55", ours,
         dev < 0.15 ? "reproduced (within 15 %)" : "differs");
   snprintf(ours, sizeof ours,
@@ -756,7 +756,7 @@ int vsph_report_contact_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "The profiles are self-similar in x sqrt(t0/t), with and without the "
-        "correction (P002 Figs. 3a, 6b)",
+        "correction (Parshikov Figs. 3a, 6b)",
         "profiles coincide", ours,
         nb.ss_spread[0] < 5 && nb.ss_spread[1] < 10 ? "reproduced" : "partly");
   const double e1 = nb.eta_eff[2];
@@ -768,12 +768,12 @@ int vsph_report_contact_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "With zeta = 1 the lead shear layer follows erf with the physical "
-        "eta = 2.3 mPa s (P002 Fig. 6a)",
+        "eta = 2.3 mPa s (Parshikov Fig. 6a)",
         "coincides with theory at zeta = 1", ours,
         fabs(e1 / 2.3 - 1.0) < 0.25
             ? "reproduced (within 25 %)"
             : "partly: the correction removes eq. (37)'s eta_num, while the "
-              "sheared lattice's is larger (section 12)");
+              "sheared lattice's is larger (section 11)");
   snprintf(ours, sizeof ours,
            "U*/U0 fitted %.3f and %.3f at 2 and 4 us (eq. 27: %.3f); RMS "
            "misfit of the exact profile %.3f U0",
@@ -782,7 +782,7 @@ int vsph_report_contact_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Two fluids (paraffin | glycerol): with zeta = 1 the interface "
-        "moves at the effusivity-weighted velocity of eq. (27) (P002 Fig. 7)",
+        "moves at the effusivity-weighted velocity of eq. (27) (Parshikov Fig. 7)",
         "U* = 0.669 U0 (eta_paraffin = 80 mPa s)", ours,
         fabs(nb.ustar[0][0] - nb.ustar_exact[0]) < 0.05 ? "reproduced"
                                                         : "differs");
@@ -807,7 +807,7 @@ int vsph_report_contact_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Drag on a periodic row of cylinders at Re = 0.005: uncorrected "
-        "2.5-3.4 times theory, corrected within +13 % to +33 % (P002 Table "
+        "2.5-3.4 times theory, corrected within +13 % to +33 % (Parshikov Table "
         "2)",
         "glycerol 3.40 and 1.33, paraffin 2.50 and 1.13 (d/S = 0.5)", ours,
         cy.ratio[CY_Z1_40] < 1.35 && cy.ratio[CY_P1_40] < 1.35 &&
@@ -830,11 +830,11 @@ int vsph_report_contact_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Falling-ball viscometer: 1/u linear in zeta, toward Stokes' law; "
-        "zeta = 1 unstable (P002 Figs. 8-9)",
+        "zeta = 1 unstable (Parshikov Figs. 8-9)",
         "Fig. 8b (3-D ball, 48 M particles)", ours,
         fabs(lin) < 0.1
             ? "partly: in the 2-D analogue 1/U falls with zeta "
-              "nearly linearly (section 12's cylinder table) and zeta = 1 is "
+              "nearly linearly (section 11's cylinder table) and zeta = 1 is "
               "stable, where the paper's ball was not; the 3-D "
               "ball is not run"
             : "differs");

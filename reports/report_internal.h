@@ -404,6 +404,24 @@ int vsph_report_convergence_write(struct vsph_report *R);
 int vsph_report_speed_write(struct vsph_report *R);
 int vsph_report_stability_write(struct vsph_report *R);
 int vsph_report_claims_write(struct vsph_report *R);
+
+/* The four verdict classes of the claims table, in the tally's order. */
+enum {
+  VSPH_REPORT_REPRODUCED = 0,
+  VSPH_REPORT_PARTLY,
+  VSPH_REPORT_DIFFERS,
+  VSPH_REPORT_NOT_TESTED,
+  VSPH_REPORT_NVERDICTS
+};
+
+/* A verdict's class, from its first words: "reproduced...", "partly...",
+ * "not tested..."; anything else ("not reproduced...", "differs...")
+ * differs. */
+int vsph_report_claims_class(const char *verdict);
+
+/* The tally of R->claims by class, then the claims table (each verdict
+ * marked with its class's word, symbol and colour class), into R->md. */
+int vsph_report_claims_table(struct vsph_report *R);
 int vsph_report_patch_write(struct vsph_report *R);
 
 /* The claims of Zheng, Ma & Shao (2018) for section 9 (report_patch.c). */

@@ -1,4 +1,4 @@
-/* Section 10 of the report: the Laplacian patch test of Zheng, Ma & Shao
+/* Section 9 of the report: the Laplacian patch test of Zheng, Ma & Shao
  * (2018), Sec. 4 (docs/theory.md section 7): the four forms VISC-01..04 on
  * uniform and perturbed lattices beside the paper's Tables 1-3, and its
  * claims for section 9. */
@@ -177,7 +177,7 @@ int vsph_report_patch_claims(struct vsph_report *R) {
            "difference %.1e)",
            t.err[0][4][2], t.err[0][4][3], eq);
   st = vsph_report_claim(
-      R, "VISC-03 and VISC-04 coincide on uniform particles (P001 Sec. 4)",
+      R, "VISC-03 and VISC-04 coincide on uniform particles (Zheng Sec. 4)",
       "identical errors (Table 1)", ours,
       eq < 1e-6 ? "reproduced (identical to rounding)" : "differs");
   const double s1 = slope_n(&t.err[0][0][0], 0),
@@ -190,7 +190,7 @@ int vsph_report_patch_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Uniform particles: VISC-01/02 converge at about first order, "
-        "VISC-03/04 at second order (P001 Sec. 4)",
+        "VISC-03/04 at second order (Zheng Sec. 4)",
         "k = 1.11 (VISC-01), 2.10 (VISC-03) from Table 1", ours,
         fabs(s1 + 1.1) < 0.2 && s3 < -1.7
             ? "reproduced; the tabulated Err is the relative error times "
@@ -210,7 +210,7 @@ int vsph_report_patch_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Non-uniform particles: VISC-03 is the most accurate, VISC-04 "
-        "degrades to VISC-01, VISC-02 in between (P001 Sec. 4)",
+        "degrades to VISC-01, VISC-02 in between (Zheng Sec. 4)",
         "Table 2", ours,
         best == 2 && fabs(g1 - 1) < 0.1 && t.err[1][4][1] < t.err[1][4][0]
             ? "reproduced"

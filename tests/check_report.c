@@ -1,0 +1,91 @@
+/* The report's frame (reports/report_claims.c): the claims table's
+ * verdict classes and their tally, counted here independently of the
+ * writer. */
+#include <check.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../reports/report_internal.h"
+#include "check_suites.h"
+
+/* Each verdict form the claims code writes falls in its class. */
+START_TEST(test_verdict_classes) {
+  static const struct {
+    const char *verdict;
+    int cls;
+  } cases[] = {
+      {"reproduced (within 3 %)", VSPH_REPORT_REPRODUCED},
+      {"reproduced at this resolution", VSPH_REPORT_REPRODUCED},
+      {"partly: within 8 %", VSPH_REPORT_PARTLY},
+      {"partly, at H/dx = 80: MEAF fails", VSPH_REPORT_PARTLY},
+      {"not reproduced at H/dx = 80", VSPH_REPORT_DIFFERS},
+      {"differs by construction", VSPH_REPORT_DIFFERS},
+      {"the reference differs by more than 5 points", VSPH_REPORT_DIFFERS},
+      {"not tested: the cavity needs wall particles", VSPH_REPORT_NOT_TESTED}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
+    ck_assert_msg(vsph_report_claims_class(cases[k].verdict) == cases[k].cls,
+                  "'%s' classed %d, not %d", cases[k].verdict,
+                  vsph_report_claims_class(cases[k].verdict), cases[k].cls);
+}
+END_TEST
+
+/* Count the occurrences of @p needle in @p hay. */
+static size_t count(const char *hay, const char *needle) {
+  size_t n = 0;
+  for (const char *p = strstr(hay, needle); p; p = strstr(p + 1, needle)) n++;
+  return n;
+}
+
+/* The tally line counts each class, and every row carries its class's
+ * mark once, in the verdict cell, before the verdict's own words. */
+START_TEST(test_claims_tally) {
+  static const char *const verdicts[] = {
+      "reproduced (within 3 %)", "reproduced at this resolution",
+      "partly: see section 11",  "not reproduced at H/dx = 80",
+      "differs: E is closer",    "reproduced on both layouts",
+      "not tested: no run"};
+  const size_t n = sizeof verdicts / sizeof verdicts[0];
+  struct vsph_report R;
+  memset(&R, 0, sizeof R);
+  R.claim_see = "scenes";
+  for (size_t k = 0; k < n; k++)
+    ck_assert_int_eq(vsph_report_claim(&R, "a claim | with a bar", "paper",
+                                       "ours", verdicts[k]),
+                     0);
+  R.md = tmpfile();
+  ck_assert_ptr_nonnull(R.md);
+  ck_assert_int_eq(vsph_report_claims_table(&R), 0);
+  const long len = ftell(R.md);
+  char *text = calloc((size_t)len + 1, 1);
+  rewind(R.md);
+  ck_assert_uint_eq(fread(text, 1, (size_t)len, R.md), (size_t)len);
+  fclose(R.md);
+  /* the tally, counted by hand from verdicts[] above: 3 reproduced,
+   * 1 partly, 2 differ, 1 not tested */
+  ck_assert_msg(strstr(text, "**7 claims:**") != NULL, "%s", text);
+  ck_assert_msg(strstr(text, "3 reproduced</span>") != NULL, "%s", text);
+  ck_assert_msg(strstr(text, "1 partly</span>") != NULL, "%s", text);
+  ck_assert_msg(strstr(text, "2 differs</span>") != NULL, "%s", text);
+  ck_assert_msg(strstr(text, "1 not tested</span>") != NULL, "%s", text);
+  /* one row per claim, its verdict marked once: the tally has one mark
+   * of each class, the rows the rest */
+  ck_assert_uint_eq(count(text, "| a claim \\| with a bar |"), n);
+  ck_assert_uint_eq(count(text, "class=\"v v-rep\""), 1 + 3);
+  ck_assert_uint_eq(count(text, "class=\"v v-part\""), 1 + 1);
+  ck_assert_uint_eq(count(text, "class=\"v v-diff\""), 1 + 2);
+  ck_assert_uint_eq(count(text, "class=\"v v-none\""), 1 + 1);
+  ck_assert(strstr(text, "differs</span> not reproduced at H/dx = 80 |"));
+  free(text);
+  free(R.claims);
+}
+END_TEST
+
+Suite *vsph_report_suite(void) {
+  Suite *s = suite_create("report");
+  TCase *tc = tcase_create("frame");
+  tcase_add_test(tc, test_verdict_classes);
+  tcase_add_test(tc, test_claims_tally);
+  suite_add_tcase(s, tc);
+  return s;
+}
