@@ -92,11 +92,12 @@ struct vsph_report_job {
   char set[VSPH_REPORT_JOB_NSET][128]; /* "Section:key=value" */
   size_t nset, nprof;                  /* SHEAR: profile times */
   char label[160];                     /* as progress names it */
-  char *key;                           /* its key.txt (owned) */
-  double particles, steps, bytes;      /* the solver's estimate */
-  double neighbours;                   /* of each particle, every pass */
-  int cached;                          /* its key.txt matches */
-  int failed;                          /* the pool: did not end */
+  char family[64]; /* "scene formulation" (or "shear test"): its rate */
+  char *key;       /* its key.txt (owned) */
+  double particles, steps, bytes; /* the solver's estimate */
+  double neighbours;              /* of each particle, every pass */
+  int cached;                     /* its key.txt matches */
+  int failed;                     /* the pool: did not end */
 };
 
 /* Every run the parts on will read, listed before any is run. */
@@ -204,6 +205,29 @@ int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
  * thread each; the report passes its thread count: two on 2 cores), the
  * costliest first. */
 int vsph_report_jobs_local(struct vsph_report *R, int width);
+
+/* One run as the estimate of the time left sees it. */
+enum {
+  VSPH_REPORT_ETA_WAITING = 0,
+  VSPH_REPORT_ETA_RUNNING,
+  VSPH_REPORT_ETA_DONE
+};
+struct vsph_report_eta {
+  double cost;        /* the plan's estimate (particles x neighbours x steps) */
+  double wall;        /* DONE: its wall time; RUNNING: its time so far */
+  int state;          /* VSPH_REPORT_ETA_* */
+  const char *family; /* runs of one family share a rate */
+};
+
+/* The wall time left of @p n runs, in the order they start, @p width at a
+ * time: each run not done takes (its cost) x (the seconds per unit of cost
+ * that the finished runs of its family took; of all finished runs where
+ * its family has none finished yet), less what it has run; the runs are
+ * laid on the @p width lanes in their order, each on the lane free first.
+ * @return the seconds left, or -1 while no run has finished (nothing to
+ * measure a rate by). */
+double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
+                            size_t width);
 
 /* The same as child processes of @p exe, @p njobs at a time with
  * @p threads threads each; a run that fails is recorded (runs/failed.txt,

@@ -102,6 +102,7 @@ int vsph_report_jobs_run(const struct vsph_report *R,
   }
   j->nset = n;
   const struct vsph_scene_type *t = vsph_scene_find(rs->scene);
+  snprintf(j->family, sizeof j->family, "%s %s", rs->scene, rs->visc);
   snprintf(j->label, sizeof j->label, "%s %s %s/dx=%zu%s%s%s", rs->scene,
            rs->visc, t ? t->length_name : "res", rs->res, rs->tag ? " (" : "",
            rs->tag ? rs->tag : "", rs->tag ? ")" : "");
@@ -122,6 +123,7 @@ int vsph_report_jobs_shear(const struct vsph_report *R, const char *tag,
   j->nset = n;
   j->nprof = nprof;
   snprintf(j->label, sizeof j->label, "shear test %s", tag);
+  snprintf(j->family, sizeof j->family, "shear test");
   return finish_job(j);
 }
 
@@ -378,6 +380,40 @@ int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
 
 /* ------------------------------------------------------ the missing runs */
 
+double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
+                            size_t width) {
+  double cost_all = 0.0, wall_all = 0.0;
+  for (size_t k = 0; k < n; k++)
+    if (r[k].state == VSPH_REPORT_ETA_DONE) {
+      cost_all += r[k].cost;
+      wall_all += r[k].wall;
+    }
+  if (cost_all <= 0.0 || width < 1) return -1.0;
+  double lane[64] = {0.0}; /* when each lane is free, from now */
+  const size_t w = width < 64 ? width : 64;
+  for (size_t k = 0; k < n; k++) {
+    if (r[k].state == VSPH_REPORT_ETA_DONE) continue;
+    double c = 0.0, t = 0.0; /* the family's finished runs */
+    for (size_t i = 0; i < n; i++)
+      if (r[i].state == VSPH_REPORT_ETA_DONE &&
+          !strcmp(r[i].family, r[k].family)) {
+        c += r[i].cost;
+        t += r[i].wall;
+      }
+    const double rate = c > 0.0 ? t / c : wall_all / cost_all;
+    double need = rate * r[k].cost;
+    if (r[k].state == VSPH_REPORT_ETA_RUNNING)
+      need = fmax(need - r[k].wall, 0.0);
+    size_t first = 0; /* the lane free first takes it */
+    for (size_t i = 1; i < w; i++)
+      if (lane[i] < lane[first]) first = i;
+    lane[first] += need;
+  }
+  double left = 0.0;
+  for (size_t i = 0; i < w; i++) left = fmax(left, lane[i]);
+  return left;
+}
+
 /* The missing jobs of the plan, the costliest first. */
 static int by_cost(const void *a, const void *b) {
   const double x = cost_of(*(const struct vsph_report_job *const *)a),
@@ -398,12 +434,37 @@ static size_t missing(struct vsph_report *R, struct vsph_report_job ***out) {
   return m;
 }
 
+/* The runs' states for the estimate of the time left, in @p order's
+ * order (the order they start), or NULL. */
+static struct vsph_report_eta *eta_start(struct vsph_report_job **order,
+                                         size_t m) {
+  struct vsph_report_eta *e = calloc(m ? m : 1, sizeof *e);
+  for (size_t k = 0; e && k < m; k++) {
+    e[k].cost = cost_of(order[k]);
+    e[k].family = order[k]->family;
+  }
+  return e;
+}
+
+/* ", about N s left" from the runs' states at @p now (running runs'
+ * times so far from their start times @p t1), or "" while no run has
+ * finished: a rate is measured, never assumed. */
+static void eta_text(struct vsph_report_eta *e, const double *t1, size_t m,
+                     size_t width, double now, char *buf, size_t len) {
+  buf[0] = '\0';
+  if (!e) return;
+  for (size_t k = 0; k < m; k++)
+    if (e[k].state == VSPH_REPORT_ETA_RUNNING) e[k].wall = now - t1[k];
+  const double left = vsph_report_jobs_eta(e, m, width);
+  if (left >= 0.0) snprintf(buf, len, ", about %.0f s left", left);
+}
+
 int vsph_report_jobs_local(struct vsph_report *R, int width) {
   struct vsph_report_job **order;
   const size_t m = missing(R, &order);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
-  double cost_all = 0.0, cost_done = 0.0;
-  for (size_t k = 0; k < m; k++) cost_all += cost_of(order[k]);
+  struct vsph_report_eta *eta = eta_start(order, m);
+  double *t1 = calloc(m ? m : 1, sizeof *t1);
   if (m)
     fprintf(stderr,
             "vsph report: %zu of the %zu runs are not in the cache; running "
@@ -424,34 +485,40 @@ int vsph_report_jobs_local(struct vsph_report *R, int width) {
       failed = st;
       if (!failed) {
         me = ++started;
+        if (t1) t1[k] = omp_get_wtime();
+        if (eta) eta[k].state = VSPH_REPORT_ETA_RUNNING;
         fprintf(stderr, "  [%zu/%zu] %s: started (%.0f s elapsed)\n", me, m,
                 order[k]->label, omp_get_wtime() - t0);
       }
     }
     if (failed) continue;
     omp_set_num_threads(1); /* this thread's nested regions: itself alone */
-    const double t1 = omp_get_wtime();
+    const double t_start = omp_get_wtime();
     const int s = execute(R, order[k]);
 #pragma omp critical(vsph_report_jobs_local)
     {
       if (s && !st) st = s;
       done++;
-      cost_done += cost_of(order[k]);
-      const double el = omp_get_wtime() - t0;
-      /* what is left, from the solver's estimate (particles x steps) and
-       * the rate so far */
-      const double left = el * (cost_all - cost_done) / fmax(cost_done, 1.0);
+      const double now = omp_get_wtime();
+      if (eta) { /* a failed run measures nothing */
+        eta[k].state = VSPH_REPORT_ETA_DONE;
+        eta[k].wall = s ? 0.0 : now - t_start;
+        eta[k].cost = s ? 0.0 : eta[k].cost;
+      }
+      char left[64] = "";
+      if (t1) eta_text(eta, t1, m, (size_t)width, now, left, sizeof left);
       if (s)
         fprintf(stderr, "  [%zu/%zu] %s: failed\n", me, m, order[k]->label);
       else
         fprintf(stderr,
                 "  [%zu/%zu] %s: done in %.1f s; %zu of %zu done, %.0f s "
-                "elapsed, about %.0f s left\n",
-                me, m, order[k]->label, omp_get_wtime() - t1, done, m, el,
-                left);
+                "elapsed%s\n",
+                me, m, order[k]->label, now - t_start, done, m, now - t0, left);
     }
   }
   free(order);
+  free(eta);
+  free(t1);
   for (size_t k = 0; k < R->plan->n; k++)
     R->plan->job[k].cached =
         vsph_rundir_key_matches(R->plan->job[k].dir, R->plan->job[k].key);
@@ -560,7 +627,8 @@ int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
   pid_t *pid = calloc(m ? m : 1, sizeof *pid);
   int *status = calloc(m ? m : 1, sizeof *status);
   double *t1 = calloc(m ? m : 1, sizeof *t1);
-  if (!st && (!pid || !status || !t1)) {
+  struct vsph_report_eta *eta = eta_start(order, m);
+  if (!st && (!pid || !status || !t1 || !eta)) {
     st = VSPH_ENOMEM;
     vsph_status_report(st, __FILE__, __LINE__, "cannot track %zu runs", m);
   }
@@ -580,6 +648,7 @@ int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
         break;
       }
       t1[next] = omp_get_wtime();
+      eta[next].state = VSPH_REPORT_ETA_RUNNING;
       fprintf(stderr, "  [%zu/%zu] %s: started, pid %ld (%.0f s elapsed)\n",
               next + 1, m, order[next]->label, (long)pid[next], t1[next] - t0);
       running++;
@@ -610,14 +679,18 @@ int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
     status[k] = WIFEXITED(ws) ? WEXITSTATUS(ws) : 128 + WTERMSIG(ws);
     order[k]->cached =
         status[k] == 0 && vsph_rundir_key_matches(order[k]->dir, order[k]->key);
-    const double el = omp_get_wtime() - t0;
+    const double now = omp_get_wtime(), el = now - t0;
+    eta[k].state = VSPH_REPORT_ETA_DONE; /* a failed run measures nothing */
+    eta[k].wall = order[k]->cached ? now - t1[k] : 0.0;
+    eta[k].cost = order[k]->cached ? eta[k].cost : 0.0;
     if (order[k]->cached) {
-      char v[96];
+      char v[96], left[64];
       verdict(order[k], v, sizeof v);
+      eta_text(eta, t1, m, njobs, now, left, sizeof left);
       fprintf(stderr,
-              "  [%zu/%zu] %s: %s, %.1f s; %zu of %zu done, %.0f s elapsed\n",
-              k + 1, m, order[k]->label, v, omp_get_wtime() - t1[k], done, m,
-              el);
+              "  [%zu/%zu] %s: %s, %.1f s; %zu of %zu done, %.0f s "
+              "elapsed%s\n",
+              k + 1, m, order[k]->label, v, now - t1[k], done, m, el, left);
     } else if (!stopping) {
       char logf[700];
       log_path(R, order[k], logf, sizeof logf);
@@ -634,6 +707,7 @@ int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
   free(pid);
   free(status);
   free(t1);
+  free(eta);
   if (st) return st;
   if (err) return err;
   if (stopping) return VSPH_EINTR;
