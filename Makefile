@@ -48,7 +48,7 @@ TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
 .PHONY: all deps check test report baseline bench asan valgrind-check prefix-check \
-        format format-check mutate fuzz slurm-check clean
+        format format-check mutate fuzz slurm-check paraview-check clean
 
 all: deps $(BUILD)/vsph
 
@@ -115,6 +115,14 @@ bench: deps
 # every daemon it started. Not part of `make check` (a few minutes).
 slurm-check: deps
 	scripts/slurm-check
+
+# The snapshots as ParaView sees them: installs Debian's ParaView and xvfb,
+# runs a short 2-D and a short 3-D run into a temporary folder and opens
+# each snapshots.pvd with pvpython (scripts/paraview-check.py): the arrays,
+# their components, no NaN, and the times against energy.csv. Not part of
+# `make check` (ParaView is large).
+paraview-check:
+	scripts/paraview-check
 
 # Each coefficient of each physical term mutated in turn (scripts/mutate):
 # a test must fail for every one. Slow (one rebuild per mutation); not part
