@@ -49,7 +49,7 @@ CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
 .PHONY: all deps check test report baseline bench asan valgrind-check prefix-check \
         format format-check mutate fuzz slurm-check fresh-check \
-        fresh-check-tests clean
+        fresh-check-tests paraview-check clean
 
 all: deps $(BUILD)/vsph
 
@@ -127,6 +127,14 @@ fresh-check:
 	scripts/fresh-check
 fresh-check-tests:
 	scripts/fresh-check --tests
+
+# The snapshots as ParaView sees them: installs Debian's ParaView and xvfb,
+# runs a short 2-D and a short 3-D run into a temporary folder and opens
+# each snapshots.pvd with pvpython (scripts/paraview-check.py): the arrays,
+# their components, no NaN, and the times against energy.csv. Not part of
+# `make check` (ParaView is large).
+paraview-check:
+	scripts/paraview-check
 
 # Each coefficient of each physical term mutated in turn (scripts/mutate):
 # a test must fail for every one. Slow (one rebuild per mutation); not part

@@ -9,34 +9,58 @@ struct vsph_diagnostics;
 
 /** @file vtk.h
  *  @brief Particle snapshots for ParaView and VisIt: VTK XML PolyData
- *  files (.vtp: points as vertices; velocity, density, pressure, volume,
- *  the material index of a two-material contact run, and with
- *  diagnostics vorticity, div_r and the free_surface flag; id;
- *  the time as TimeValue field data), and the PVD collection that lists
- *  them with their times, which ParaView opens as one time series. */
+ *  files (.vtp) in the form ParaView writes itself (binary appended data,
+ *  zlib-compressed in VTK's block layout, UInt64 headers), read back here
+ *  for the report, and the PVD collection that lists them with their
+ *  times, which ParaView opens as one time series. Every array is named
+ *  and described, with its unit, in the file's own FieldData
+ *  (array_descriptions). Only file formats: no numerics. */
+
+/** Block size of the compressed arrays (bytes before compression): VTK's
+ *  default (vtkXMLWriter::BlockSize). */
+#define VSPH_VTK_BLOCK 32768
 
 /** @brief Snapshot of the particles with id < @p n_fluid, in id order, at
- *  time @p t, with the diagnostics @p dg (indexed by id; NULL: none),
- *  written atomically to DIR/NAME. @return VSPH_OK, VSPH_ENOMEM or
- *  VSPH_EIO. */
+ *  time @p t (s), with the diagnostics @p dg (indexed by id; NULL: none),
+ *  written atomically to DIR/NAME.
+ *
+ *  Points (m; 3 components, z = 0 in 2-D) as vertices; PointData:
+ *  velocity (m/s, 3 components, u_z = 0 in 2-D), density (kg/m^d),
+ *  pressure (Pa), volume m/rho (m^d), material (UInt8; two-material
+ *  contact runs only), with @p dg the vorticity (1/s: in 2-D the scalar
+ *  vorticity_z, signed; in 3-D the 3-vector vorticity; none in 1-D), div_r
+ *  and free_surface (UInt8), and id (Int64). FieldData: TimeValue (the
+ *  exact double @p t) and array_descriptions (one string per array:
+ *  "name: what (unit)"). Every number is stored bitwise: a snapshot read
+ *  back with vsph_vtk_read equals what was written.
+ *  @return VSPH_OK, VSPH_ENOMEM, VSPH_ELIB (zlib failed) or VSPH_EIO. */
 int vsph_vtk_write(const char *dir, const char *name,
                    const struct vsph_particles *p, size_t n_fluid, double t,
                    const struct vsph_diagnostics *dg);
 
-/** A snapshot read back (arrays of n tuples, 3 components for vectors). */
+/** A snapshot read back (arrays of n tuples in id order, 3 components for
+ *  vectors; an array the file lacks reads as zeros). */
 struct vsph_vtk_snapshot {
-  size_t n;     /*!< particles */
-  double t;     /*!< time (s) */
-  double *pos;  /*!< positions, x y z per particle */
-  double *vel;  /*!< velocities */
-  double *p;    /*!< pressures */
-  double *vort; /*!< vorticity (0 if the file has none) */
-  double *surf; /*!< free-surface flag as 0 or 1 (0 if none) */
+  size_t n;       /*!< particles */
+  double t;       /*!< time (s), the file's TimeValue */
+  int vort_ncomp; /*!< the file's vorticity components: 1 (2-D
+                       vorticity_z), 3 (3-D vorticity) or 0 (none) */
+  double *pos;    /*!< positions (m), x y z per particle */
+  double *vel;    /*!< velocities (m/s) */
+  double *rho;    /*!< densities (kg/m^d) */
+  double *p;      /*!< pressures (Pa) */
+  double *vol;    /*!< volumes (m^d) */
+  double *vort;   /*!< vorticity (1/s), x y z per particle; from a 2-D file
+                       (0, 0, omega_z) */
+  double *divr;   /*!< div r (dimensionless) */
+  double *surf;   /*!< free-surface flag as 0 or 1 */
+  double *mat;    /*!< material index (0 where the file has none) */
 };
 
-/** @brief Read a snapshot written by vsph_vtk_write.
- *  @return VSPH_OK, VSPH_EIO (unreadable or not a vsph snapshot, reported)
- *  or VSPH_ENOMEM. */
+/** @brief Read a snapshot written by vsph_vtk_write (binary appended,
+ *  zlib-compressed VTK XML PolyData in this machine's byte order).
+ *  @return VSPH_OK, VSPH_EIO (unreadable, not such a snapshot, e.g. one
+ *  of an older ASCII vsph, or damaged; reported) or VSPH_ENOMEM. */
 int vsph_vtk_read(const char *path, struct vsph_vtk_snapshot *s);
 
 /** @brief Free the arrays of a snapshot read back. */
@@ -51,8 +75,10 @@ struct vsph_vtk_pvd {
 /** @brief Start DIR/snapshots.pvd. @return VSPH_OK or VSPH_EIO. */
 int vsph_vtk_pvd_open(struct vsph_vtk_pvd *pvd, const char *dir);
 
-/** @brief List snapshot @p file at time @p t (flushed: the index is
- *  usable while the run goes on). @return VSPH_OK or VSPH_EIO. */
+/** @brief List snapshot @p file at time @p t (s), printed to 10
+ *  significant digits as energy.csv prints its t, so the two match
+ *  exactly (flushed: the index is usable while the run goes on).
+ *  @return VSPH_OK or VSPH_EIO. */
 int vsph_vtk_pvd_add(struct vsph_vtk_pvd *pvd, double t, const char *file);
 
 /** @brief Close the collection. @return VSPH_OK or VSPH_EIO. */

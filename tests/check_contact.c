@@ -342,20 +342,17 @@ START_TEST(test_cylinder_held) {
   char dir[] = "/tmp/vsph_cylXXXXXX";
   ck_assert_ptr_nonnull(mkdtemp(dir));
   ck_assert_int_eq(vsph_vtk_write(dir, "s.vtp", p, nf, 0.0, NULL), 0);
-  char path[64], *text = malloc(1 << 20);
+  char path[64];
   snprintf(path, sizeof path, "%s/s.vtp", dir);
-  vsph_test_slurp(path, text, 1 << 20);
-  const char *a = strstr(text, "Name=\"material\"");
-  ck_assert_ptr_nonnull(a);
-  a = strchr(a, '>') + 1;
-  size_t ones = 0, vals = 0;
-  for (char *end; vals < 400; vals++, a = end) {
-    const long v = strtol(a, &end, 10);
-    ck_assert_ptr_ne(end, a);
-    ones += (size_t)(v == 1);
-  }
+  int ncomp = 0;
+  size_t vals = 0, ones = 0;
+  double *mat = vsph_test_vtp_values(path, "material", &ncomp, &vals);
+  ck_assert_ptr_nonnull(mat);
+  ck_assert_int_eq(ncomp, 1);
+  ck_assert_uint_eq(vals, 400);
+  for (size_t k = 0; k < vals; k++) ones += (size_t)(mat[k] == 1.0);
   ck_assert_uint_eq(ones, 80);
-  free(text);
+  free(mat);
   remove(path);
   rmdir(dir);
   free(x0);

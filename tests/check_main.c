@@ -42,6 +42,7 @@ int main(void) {
   srunner_add_suite(sr, vsph_contact_suite());
   srunner_add_suite(sr, vsph_jobs_suite());
   srunner_add_suite(sr, vsph_report_suite());
+  srunner_add_suite(sr, vsph_vtk_suite());
   srunner_run_all(sr, CK_NORMAL);
   const int failed = srunner_ntests_failed(sr);
   srunner_free(sr);

@@ -24,6 +24,7 @@ Suite *vsph_cavity_suite(void);
 Suite *vsph_contact_suite(void);
 Suite *vsph_jobs_suite(void);
 Suite *vsph_report_suite(void);
+Suite *vsph_vtk_suite(void);
 
 /* What a run of the built binary ($VSPH_BIN) gave (tests/check_cli.c). */
 struct vsph_test_outcome {
@@ -38,6 +39,12 @@ struct vsph_test_outcome *vsph_test_cli(const char *args);
 struct vsph_test_outcome *vsph_test_shell(const char *script);
 /* The first n - 1 bytes of a file ("" if it cannot be read). */
 void vsph_test_slurp(const char *path, char *buf, size_t n);
+
+/* Array NAME of the snapshot at PATH, decoded by the test's own reader
+ * (tests/check_vtk.c) as doubles (malloc'd; NULL if the file has none):
+ * its components into ncomp, its values into count. */
+double *vsph_test_vtp_values(const char *path, const char *name, int *ncomp,
+                             size_t *count);
 
 /* Silent error handler for tests: records the last status. */
 void vsph_test_silence(void);
