@@ -23,6 +23,7 @@ Suite *vsph_channel_suite(void);
 Suite *vsph_cavity_suite(void);
 Suite *vsph_contact_suite(void);
 Suite *vsph_jobs_suite(void);
+Suite *vsph_plot_suite(void);
 
 /* What a run of the built binary ($VSPH_BIN) gave (tests/check_cli.c). */
 struct vsph_test_outcome {
