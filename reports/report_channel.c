@@ -24,12 +24,12 @@ static const char *const POIS_LABEL[NPOIS] = {"MGF",
                                               "MEAF (E)",
                                               "PVWF",
                                               "VI (C)",
-                                              "Cleary (D), xi 4.96333",
-                                              "Cleary (D), xi 4.24",
+                                              "Cleary (D), ξ 4.96333",
+                                              "Cleary (D), ξ 4.24",
                                               "Takeda (A)",
                                               "Takeda, Shepard (A[0])",
                                               "two-pass (B)",
-                                              "VISC-01 (hybrid, eta 0.1 h)",
+                                              "VISC-01 (hybrid, η 0.1 h)",
                                               "VISC-02 (direct)",
                                               "VISC-03 (Schwaiger)",
                                               "VISC-04 (Oger)"};
@@ -418,7 +418,8 @@ static int figures(struct vsph_report *R, const struct chan *c) {
            "against the series",
            c->res_p, c->res_p);
   vsph_plot_init(&pl, R->dir, "fig_poiseuille_error", title,
-                 "t* = t pi^2 nu/(4 d^2)", "RMS (u - U)/U0");
+                 "t^* = t π^2 ν/(4 d^2) (dimensionless)",
+                 "RMS (u − U)/U_0 (dimensionless)");
   pl.logy = 1;
   int st = VSPH_OK;
   for (int f = 0; f < NPOIS && !st; f++) {
@@ -439,7 +440,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
            "against the series",
            c->res_c);
   vsph_plot_init(&pl, R->dir, "fig_couette_error", title, "t (s)",
-                 "RMS (u - U)/v0");
+                 "RMS (u − U)/v_0 (dimensionless)");
   pl.logy = 1;
   for (int f = 0; f < NCOU && !st; f++) {
     char file[600], style[96];
@@ -457,7 +458,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
            "Lid-driven cavity: RMS distance from Ghia et al.'s centrelines "
            "over time");
   vsph_plot_init(&pl, R->dir, "fig_cavity_ghia", title, "t (s)",
-                 "RMS distance / U");
+                 "RMS distance / U (dimensionless)");
   pl.logy = 1;
   for (int q = 0; q < (R->full ? NCAV : CAV_QUICK) && !st; q++) {
     if (!c->cav[q].ok) continue; /* the run without TVF: a few rows */
