@@ -241,7 +241,7 @@ int vsph_plot_write(const struct vsph_plot *pl) {
   fprintf(f,
           "set title \"%s\"\nset xlabel \"%s\"\nset ylabel \"%s\"\n"
           "set grid lt 1 lc rgb '#cccccc' lw 1 dt 3\nset key below reverse "
-          "Left\n%s%s%s\n",
+          "Left height 1.5\n%s%s%s\n",
           pl->title, pl->xlabel, pl->ylabel,
           pl->logx ? "set logscale x\nset format x '10^{%L}'\n" : "",
           pl->logy ? "set logscale y\nset format y '10^{%L}'\n" : "",

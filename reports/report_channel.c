@@ -425,11 +425,12 @@ static int figures(struct vsph_report *R, const struct chan *c) {
   for (int f = 0; f < NPOIS && !st; f++) {
     char file[600], style[96], cols[64];
     data_file(file, sizeof file, &c->pois[f]);
+    /* a point every 12th output: the shapes tell the series apart */
     snprintf(cols, sizeof cols, "($1*%.10g):16", TSTAR);
     vsph_report_runs_style(style, sizeof style, f,
-                           f >= 12  ? " dt 3"
-                           : f >= 6 ? " dt 2"
-                                    : "");
+                           f >= 12  ? " dt 3 pi 12"
+                           : f >= 6 ? " dt 2 pi 12"
+                                    : " pi 12");
     st = vsph_plot_add(&pl, file, cols, POIS_LABEL[f], style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);
@@ -446,9 +447,9 @@ static int figures(struct vsph_report *R, const struct chan *c) {
     char file[600], style[96];
     data_file(file, sizeof file, &c->cou[f]);
     vsph_report_runs_style(style, sizeof style, f,
-                           f >= 12  ? " dt 3"
-                           : f >= 6 ? " dt 2"
-                                    : "");
+                           f >= 12  ? " dt 3 pi 12"
+                           : f >= 6 ? " dt 2 pi 12"
+                                    : " pi 12");
     st = vsph_plot_add(&pl, file, "1:16", vsph_viscous_label(f), style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);
@@ -468,7 +469,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
              vsph_viscous_label(vsph_viscous_find(CAV[q].visc)), CAV[q].res,
              CAV[q].res);
     vsph_report_runs_style(style, sizeof style, q,
-                           CAV[q].Re > 100 ? " dt 2" : "");
+                           CAV[q].Re > 100 ? " dt 2 pi 12" : " pi 12");
     st = vsph_plot_add(&pl, file, "1:16", label, style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);

@@ -545,12 +545,13 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
              "(abs($1-%.9g)<%.3g && abs($2)<3e-4 ? $2*1e6 : 1/0):($3/%g)",
              B->t[q], 1e-3 * B->t[q], CS[C_BI1].U0);
     snprintf(label, sizeof label, "SPH, t = %.3g μs", 1e6 * B->t[q]);
-    snprintf(style, sizeof style, "points pt %d ps 0.6 lc %zu",
-             vsph_plot_point(q), 2 * q + 1);
+    /* one colour per time: the SPH points and the exact line */
+    snprintf(style, sizeof style, "points pt %d ps 0.8 lc %zu",
+             vsph_plot_point(q), q + 1);
     st = vsph_plot_add(&pl, file, using, label, style);
     snprintf(using, sizeof using, "4:%zu", 5 + q);
     snprintf(label, sizeof label, "exact (eq. 27), t = %.3g μs", 1e6 * B->t[q]);
-    snprintf(style, sizeof style, "lines lw 2 lc %zu", 2 * q + 2);
+    snprintf(style, sizeof style, "lines lw 2 lc %zu", q + 1);
     if (!st) st = vsph_plot_add(&pl, "contact_exact.csv", using, label, style);
   }
   if (!st) st = vsph_report_figure_say(R, &pl, "contact.fig_bimaterial");

@@ -36,7 +36,7 @@ static int scene(struct vsph_report *R, int sc) {
   snprintf(title, sizeof title, "%s: E_k error against resolution", L->scene);
   struct vsph_plot pl;
   vsph_plot_init(&pl, R->dir, pname, title,
-                 "particle spacing dx / reference length",
+                 "particle spacing dx / reference length (dimensionless)",
                  "max_t |E_k - E_{k,ref}| / E_{k,ref}(0)");
   pl.logx = pl.logy = 1;
   /* the ladder's range, not whole decades; ticks at its resolutions */
@@ -93,7 +93,7 @@ static int vortex_layouts(struct vsph_report *R) {
   vsph_plot_init(&pl, R->dir, "fig_convergence_vortex-layouts",
                  "vortex-patch: initial dissipation error on rings (solid) "
                  "and on a Cartesian disc (dashed)",
-                 "particle spacing dx / R",
+                 "particle spacing dx / R (dimensionless)",
                  "|P_{visc}(0) - dE_{k,ref}/dt(0)| / |dE_{k,ref}/dt(0)|");
   pl.logx = pl.logy = 1;
   ladder_ticks(pl.extra, sizeof pl.extra, L);
