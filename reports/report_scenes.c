@@ -215,13 +215,16 @@ static int pictures(struct vsph_report *R, int sc, FILE *md,
                              unit[w], w, box, cb);
     if (!st)
       fprintf(md,
-              "![%s](%s.svg)\n\n*Figure: %s, one colour scale for every "
-              "panel: %s from %.4g to %.4g %s (%s of every particle). Data: "
-              "`particles_%s_<form>.csv` (x, y, pressure, vorticity, "
-              "free-surface flag), from the runs' snapshots "
+              "![%s](%s.png)\n\n*Figure: %s, one colour scale for every "
+              "panel: %s from %.4g to %.4g %s (%s of every particle). "
+              "Vector graphics: [%s.svg](%s.svg), [%s.pdf](%s.pdf) (this "
+              "page embeds the PNG: an SVG of thousands of particles is "
+              "megabytes). Data: `particles_%s_<form>.csv` (x, y, pressure, "
+              "vorticity, free-surface flag), from the runs' snapshots "
               "(`runs/*/snap_*.vtp`).*\n\n",
               title, name, title, what[w], cb[0], cb[1], w ? "1/s" : "Pa",
-              w ? "± the largest |ω|" : "the smallest and largest value", scn);
+              w ? "± the largest |ω|" : "the smallest and largest value", name,
+              name, name, name, scn);
   }
   return st;
 }
