@@ -79,7 +79,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
   size_t len = (size_t)snprintf(
       about, sizeof about, "%s",
       "Run the suite and write to DIR: report.md, report.html\n"
-      "(self-contained: figures embedded as SVG), the CSV behind every\n"
+      "(self-contained: figures embedded, as SVG), the CSV behind every\n"
       "table and figure, the figures (fig_*.png, .svg and .pdf beside\n"
       "their fig_*.gp gnuplot scripts), the solver runs (runs/),\n"
       "baseline.csv (the key figures of the quick ladder's coarsest runs)\n"
