@@ -79,10 +79,11 @@ int vsph_cmd_report_main(int argc, char **argv) {
   size_t len = (size_t)snprintf(
       about, sizeof about, "%s",
       "Run the suite and write to DIR: report.md, report.html\n"
-      "(self-contained: figures embedded), the CSV behind every table and\n"
-      "figure, the figures (fig_*.png beside their fig_*.gp gnuplot\n"
-      "scripts), the solver runs (runs/), baseline.csv (the key figures of\n"
-      "the quick ladder's coarsest runs) and run.json. Default fidelity is\n"
+      "(self-contained: figures embedded, as SVG), the CSV behind every\n"
+      "table and figure, the figures (fig_*.png, .svg and .pdf beside\n"
+      "their fig_*.gp gnuplot scripts), the solver runs (runs/),\n"
+      "baseline.csv (the key figures of the quick ladder's coarsest runs)\n"
+      "and run.json. Default fidelity is\n"
       "quick (minutes on 2 cores: reduced resolutions and end times, stated\n"
       "in the report). Runs are cached by version, source hash and\n"
       "settings, the analysis parts by version, source hash and fidelity:\n"

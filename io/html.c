@@ -67,7 +67,8 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
           "vertical-align:top}\n"
           "th[align=right],td[align=right]{text-align:right}\n"
           "th[align=center],td[align=center]{text-align:center}\n"
-          "th{background:#eee}\nimg{max-width:100%%;border:1px solid #ddd}\n"
+          "th{background:#eee}\nimg{max-width:100%%;height:auto;border:1px "
+          "solid #ddd}\n"
           "code{background:#f4f4f4}\n"
           /* the verdict classes of the claims table */
           ".v{display:inline-block;padding:0 .35em;border-radius:.25em;"
@@ -78,7 +79,8 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
           ".v-none{background:#e2e3e5;color:#41464b}\n"
           "</style></head><body>\n",
           title);
-  /* Copy the body, replacing src="X.png" by an embedded data URI. */
+  /* Copy the body, replacing src="X.png" or "X.svg" by an embedded data
+   * URI (an <img> of SVG keeps the figure vector graphics). */
   const char *c = body;
   for (;;) {
     const char *m = strstr(c, "src=\"");
@@ -90,17 +92,23 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
     char name[512];
     snprintf(name, sizeof name, "%.*s", (int)(nlen < 500 ? nlen : 500), m + 5);
     size_t plen = 0;
-    char *png = NULL;
-    if (nlen > 4 && !strcmp(name + strlen(name) - 4, ".png") &&
-        !strchr(name, ':')) {
-      snprintf(path, sizeof path, "%s/%s", dir, name);
-      png = vsph_files_slurp(path, &plen);
+    char *img = NULL;
+    const char *mime = NULL;
+    if (nlen > 4 && !strchr(name, ':')) {
+      const char *ext = name + strlen(name) - 4;
+      mime = !strcmp(ext, ".png")   ? "image/png"
+             : !strcmp(ext, ".svg") ? "image/svg+xml"
+                                    : NULL;
     }
-    if (png) {
-      fputs("src=\"data:image/png;base64,", f);
-      base64(f, (const unsigned char *)png, plen);
+    if (mime) {
+      snprintf(path, sizeof path, "%s/%s", dir, name);
+      img = vsph_files_slurp(path, &plen);
+    }
+    if (img) {
+      fprintf(f, "src=\"data:%s;base64,", mime);
+      base64(f, (const unsigned char *)img, plen);
       fputc('"', f);
-      free(png);
+      free(img);
     } else {
       fwrite(m, 1, (size_t)(q - m + 1), f);
     }

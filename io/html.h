@@ -3,8 +3,9 @@
 
 /** @file html.h
  *  @brief A Markdown report rendered to one self-contained HTML page with
- *  cmark-gfm (GitHub-flavoured tables), every local PNG embedded as a data
- *  URI so the page can be mailed or archived alone. */
+ *  cmark-gfm (GitHub-flavoured tables), every local PNG or SVG embedded as
+ *  a data URI (an SVG figure stays vector graphics) so the page can be
+ *  mailed or archived alone. */
 
 /** @brief Render DIR/MD to DIR/HTML (atomically) under @p title.
  *  @return VSPH_OK, VSPH_EIO or VSPH_ENOMEM. */

@@ -1,11 +1,51 @@
 #include "plot.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "../common/status.h"
 #include "files.h"
+
+/* The shared palette: the formulations' three first (MGF, MEAF, PVWF as
+ * the report has always drawn them), then colours chosen to stay apart
+ * from them and from each other on white; black is kept for references
+ * (exact solutions, slope guides). */
+static const char *const COLOURS[VSPH_PLOT_NSTYLES] = {
+    "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+    "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf",
+    "#0b2e6b", "#e6b800", "#7b0d1e", "#00796b", "#6a3d9a"};
+/* gnuplot's fifteen point shapes, filled ones first */
+static const int POINTS[VSPH_PLOT_NSTYLES] = {7, 5,  9,  11, 13, 15, 6, 4,
+                                              8, 10, 12, 14, 1,  2,  3};
+
+const char *vsph_plot_colour(size_t k) {
+  return COLOURS[k % VSPH_PLOT_NSTYLES];
+}
+
+int vsph_plot_point(size_t k) { return POINTS[k % VSPH_PLOT_NSTYLES]; }
+
+void vsph_plot_plain(char *out, size_t n, const char *text) {
+  if (!n) return;
+  size_t k = 0;
+  unsigned long drop = 0; /* bit d: the brace at depth d is dropped */
+  int depth = 0;
+  for (const char *c = text; *c && k + 1 < n; c++) {
+    if (*c == '{') {
+      const int markup = c > text && (c[-1] == '_' || c[-1] == '^');
+      if (depth < 63)
+        drop = markup ? drop | 1ul << depth : drop & ~(1ul << depth);
+      depth++;
+      if (markup) continue;
+    } else if (*c == '}' && depth > 0) {
+      depth--;
+      if (depth < 63 && drop >> depth & 1) continue;
+    }
+    out[k++] = *c;
+  }
+  out[k] = '\0';
+}
 
 void vsph_plot_init(struct vsph_plot *pl, const char *dir, const char *name,
                     const char *title, const char *xlabel, const char *ylabel) {
@@ -45,48 +85,151 @@ static int render(const char *dir, const char *gp, const char *name) {
   return VSPH_OK;
 }
 
-int vsph_plot_particles(const char *dir, const char *name, const char *title,
-                        const struct vsph_plot_panel *pn, size_t n, int col,
-                        const char *cblabel, int diverging,
-                        const double box[4]) {
-  if (n < 1 || n > 8)
-    VSPH_FAIL(VSPH_EINVAL, "picture %s: 1 to 8 panels, not %zu", name, n);
-  const size_t rows = n < 3 ? 1 : 2, cols = (n + rows - 1) / rows;
-  char gp[160];
-  snprintf(gp, sizeof gp, "%s.gp", name);
-  FILE *f = vsph_files_open(dir, gp);
-  if (!f) return VSPH_EIO;
+/* The script's common head: UTF-8 text (Greek letters as such), CSV data
+ * and the shared palette as linetypes 1, 2, ... */
+static void head(FILE *f, const char *what, const char *name) {
   fprintf(f,
-          "# vsph report picture: gnuplot %s.gp makes %s.png\n"
-          "set terminal pngcairo size %zu,%zu enhanced font 'DejaVu Sans,10'\n"
-          "set output '%s.png'\nset datafile separator ','\n"
-          "set size ratio -1\nunset key\nset cblabel \"%s\"\n%s"
-          "set multiplot layout %zu,%zu title \"%s\"\n",
-          name, name, 420 * cols, 400 * rows + 40, name, cblabel,
-          diverging ? "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 "
-                      "'#b2182b')\n"
-                    : "set palette defined (0 '#440154', 0.5 '#21918c', 1 "
-                      "'#fde725')\n",
-          rows, cols, title);
-  if (box)
-    fprintf(f, "set xrange [%.6g:%.6g]\nset yrange [%.6g:%.6g]\n", box[0],
-            box[1], box[2], box[3]);
-  for (size_t k = 0; k < n; k++) {
-    if (diverging) /* symmetric colour range, per panel */
-      fprintf(f,
-              "stats '%s' skip 1 using %d nooutput\n"
-              "M = (abs(STATS_min) > abs(STATS_max) ? abs(STATS_min) : "
-              "abs(STATS_max)); if (M == 0) M = 1\n"
-              "set cbrange [-M:M]\n",
-              pn[k].file, col);
-    fprintf(f,
-            "set title \"%s\"\nplot '%s' skip 1 using 1:2:%d with points pt "
-            "7 ps 0.35 lc palette\n",
-            pn[k].title, pn[k].file, col);
+          "# vsph report %s: `gnuplot %s.gp` makes %s.png, %s.svg and "
+          "%s.pdf\nset encoding utf8\nset datafile separator ','\n",
+          what, name, name, name, name);
+  for (size_t k = 0; k < VSPH_PLOT_NSTYLES; k++)
+    fprintf(f, "set linetype %zu lc rgb '%s' pt %d\n", k + 1, COLOURS[k],
+            POINTS[k]);
+  fprintf(f, "set linetype cycle %d\n", VSPH_PLOT_NSTYLES);
+}
+
+/* Open the loop over the three outputs: a W x H pixel PNG, the same as
+ * SVG (scalable in a page), a PDF of W/100 x H/100 inches. */
+static void outputs_open(FILE *f, const char *name, int w, int h, int font) {
+  fprintf(f,
+          "do for [fmt in \"png svg pdf\"] {\n"
+          "  if (fmt eq \"png\") {\n"
+          "    set terminal pngcairo size %d,%d enhanced font 'DejaVu "
+          "Sans,%d'\n"
+          "  } else {\n"
+          "    if (fmt eq \"svg\") {\n"
+          "      set terminal svg size %d,%d enhanced font 'DejaVu "
+          "Sans,%d' background '#ffffff'\n"
+          "    } else {\n"
+          "      set terminal pdfcairo size %.2fin,%.2fin enhanced font "
+          "'DejaVu Sans,%d'\n"
+          "    }\n"
+          "  }\n"
+          "  set output '%s.'.fmt\n",
+          w, h, font, w, h, font, w / 100.0, h / 100.0, font, name);
+}
+
+static void outputs_close(FILE *f) { fprintf(f, "  unset output\n}\n"); }
+
+/* @p using with its y field (the second) wrapped in rl(), the rounding
+ * floor: "1:2" -> "1:(rl($2))", "1:($2*3):4" -> "1:(rl(($2*3))):4". */
+static void wrap_y(char *out, size_t n, const char *using) {
+  int depth = 0;
+  const char *c = using, *y = NULL, *end = NULL;
+  for (; *c; c++) {
+    if (*c == '(') depth++;
+    if (*c == ')') depth--;
+    if (*c == ':' && !depth) {
+      if (!y)
+        y = c + 1;
+      else if (!end)
+        end = c;
+    }
   }
-  fprintf(f, "unset multiplot\n");
-  const int st = vsph_files_close(f, dir, gp);
-  return st ? st : render(dir, gp, name);
+  if (!y) {
+    snprintf(out, n, "%s", using);
+    return;
+  }
+  if (!end) end = c;
+  const int ylen = (int)(end - y);
+  const int col = strspn(y, "0123456789") == (size_t)ylen;
+  snprintf(out, n, "%.*s(rl(%s%.*s))%s", (int)(y - using), using,
+           col ? "$" : "", ylen, y, end);
+}
+
+static void plot_cmd(FILE *f, const struct vsph_plot *pl) {
+  fprintf(f, "  plot ");
+  for (size_t k = 0; k < pl->n; k++) {
+    char using[300];
+    if (pl->rounding > 0.0 && pl->logy)
+      wrap_y(using, sizeof using, pl->s[k].using);
+    else
+      snprintf(using, sizeof using, "%s", pl->s[k].using);
+    fprintf(f, "%s'%s' skip 1 using %s with %s title \"%s\"",
+            k ? ", \\\n       " : "", pl->s[k].file, using, pl->s[k].style,
+            pl->s[k].title);
+  }
+  if (pl->rounding > 0.0 && pl->logy)
+    fprintf(f,
+            ", \\\n       keyentry with boxes fs solid 1.0 fc rgb '#d9d9d9' "
+            "title ROUNDING_TITLE");
+  fprintf(f, "\n");
+}
+
+/* @p v as enhanced text: "10^{-13}" or "2.5×10^{-11}". */
+static void power_text(char *buf, size_t n, double v) {
+  const int e = (int)floor(log10(v));
+  const double m = v / pow(10.0, e);
+  if (fabs(m - 1.0) < 1e-9)
+    snprintf(buf, n, "10^{%d}", e);
+  else
+    snprintf(buf, n, "%.2g×10^{%d}", m, e);
+}
+
+/* After the dry pass: log axis @p a ('x' or 'y') gets a range and ticks
+ * from the data: every decade labelled; 1-2-5 ticks where the data span
+ * less than 3 decades, 1...9 under 0.7, so no axis has a single label.
+ * @p fixed: the range was set by the caller (kept as set). @p own_ticks:
+ * the caller set the ticks (kept, e.g. at the data's resolutions).
+ * @p rounding:
+ * room below the data for the rounding band (y only). */
+static void log_ticks(FILE *f, char a, int fixed, int own_ticks, int rounding) {
+  if (fixed)
+    fprintf(f, "lo = GPVAL_%c_MIN; hi = GPVAL_%c_MAX\n", a - 32, a - 32);
+  else /* the data, padded by 5 % of their span in decades */
+    fprintf(f,
+            "lo = GPVAL_DATA_%c_MIN; hi = GPVAL_DATA_%c_MAX\n"
+            "sp = log10(hi/lo); sp = sp < 0.3 ? 0.3 : sp\n"
+            "lo = lo/10**(0.05*sp); hi = hi*10**(0.05*sp)\n",
+            a - 32, a - 32);
+  if (own_ticks) fprintf(f, "set format %c '%%g'\n", a);
+  if (!own_ticks)
+    fprintf(f,
+            "d = log10(hi/lo)\n"
+            "ms = d < 0.7 ? \"1 2 3 4 5 6 7 8 9\" : (d < 3 ? \"1 2 5\" : "
+            "\"1\")\n"
+            "dec = lo > 0.00999 && hi < 10001\n"
+            "set %ctics () out mirror\n"
+            "do for [e = floor(log10(lo)):ceil(log10(hi))] {\n"
+            "  do for [m in ms] {\n"
+            "    v = real(m)*10.0**e\n"
+            "    if (v >= lo/1.0001 && v <= hi*1.0001) {\n"
+            "      set %ctics add (dec ? sprintf('%%g', v) : (m eq '1' ? "
+            "sprintf('10^{%%d}', e) : sprintf('%%s×10^{%%d}', m, e)) v)\n"
+            "    }\n"
+            "  }\n"
+            "  if (ms eq '1' && d < 8) {\n"
+            "    do for [k = 2:9] {\n"
+            "      v = k*10.0**e\n"
+            "      if (v >= lo && v <= hi) { set %ctics add ('' v 1) }\n"
+            "    }\n"
+            "  }\n"
+            "}\n",
+            a, a, a);
+  if (rounding) /* the band, 0.45 decade under the data, if any is there */
+    fprintf(f,
+            "if (NRL > 0) {\n"
+            "  RB0 = lo/10**0.6; RB1 = lo/10**0.15; RB = lo/10**0.375\n"
+            "  set object 1 rectangle from graph 0, first RB0 to graph 1, "
+            "first RB1 fc rgb '#d9d9d9' fs solid 1.0 noborder behind\n"
+            "  set ytics add ('rounding' RB)\n"
+            "  rl(y) = y < RL ? RB : y\n"
+            "  lo = RB0\n"
+            "} else {\n"
+            "  rl(y) = y\n"
+            "  ROUNDING_TITLE = ''\n"
+            "}\n");
+  fprintf(f, "set %crange [lo:hi]\n", a);
 }
 
 int vsph_plot_write(const struct vsph_plot *pl) {
@@ -94,22 +237,154 @@ int vsph_plot_write(const struct vsph_plot *pl) {
   snprintf(gp, sizeof gp, "%s.gp", pl->name);
   FILE *f = vsph_files_open(pl->dir, gp);
   if (!f) return VSPH_EIO;
+  head(f, "figure", pl->name);
   fprintf(f,
-          "# vsph report figure: gnuplot %s.gp makes %s.png\n"
-          "set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11'\n"
-          "set output '%s.png'\nset datafile separator ','\n"
           "set title \"%s\"\nset xlabel \"%s\"\nset ylabel \"%s\"\n"
-          "set grid\nset key below\n%s%s%s\n",
-          pl->name, pl->name, pl->name, pl->title, pl->xlabel, pl->ylabel,
+          "set grid lt 1 lc rgb '#cccccc' lw 1 dt 3\nset key below reverse "
+          "Left height 1.5\n%s%s%s\n",
+          pl->title, pl->xlabel, pl->ylabel,
           pl->logx ? "set logscale x\nset format x '10^{%L}'\n" : "",
           pl->logy ? "set logscale y\nset format y '10^{%L}'\n" : "",
           pl->extra);
-  fprintf(f, "plot ");
-  for (size_t k = 0; k < pl->n; k++)
-    fprintf(f, "%s'%s' skip 1 using %s with %s title \"%s\"",
-            k ? ", \\\n     " : "", pl->s[k].file, pl->s[k].using,
-            pl->s[k].style, pl->s[k].title);
-  fprintf(f, "\n");
+  const int rounding = pl->logy && pl->rounding > 0.0;
+  if (rounding) {
+    char rt[64];
+    power_text(rt, sizeof rt, pl->rounding);
+    fprintf(f,
+            "# below RL: rounding noise, drawn in the grey band under the "
+            "data\nRL = %.17g\nROUNDING_TITLE = \"rounding level (values "
+            "below %s, drawn in the band)\"\n"
+            "NRL = 0 # the dry pass counts them\n"
+            "rl(y) = y < RL ? (NRL = NRL + 1, NaN) : y\n",
+            pl->rounding, rt);
+  }
+  if (pl->logx || pl->logy) { /* a dry pass finds the data's range */
+    fprintf(f, "set table $DRY\n");
+    plot_cmd(f, pl);
+    fprintf(f, "unset table\n");
+    if (pl->logx)
+      log_ticks(f, 'x', strstr(pl->extra, "set xrange") != NULL,
+                strstr(pl->extra, "set xtics") != NULL, 0);
+    if (pl->logy)
+      log_ticks(f, 'y', strstr(pl->extra, "set yrange") != NULL,
+                strstr(pl->extra, "set ytics") != NULL, rounding);
+  }
+  outputs_open(f, pl->name, 900, 600, 11);
+  plot_cmd(f, pl);
+  outputs_close(f);
   const int st = vsph_files_close(f, pl->dir, gp);
   return st ? st : render(pl->dir, gp, pl->name);
+}
+
+/* Range of column @p col over the rows of DIR/FILE (header skipped,
+ * non-finite values skipped): min, max and count updated. */
+static int column_range(const char *dir, const char *file, int col, double *lo,
+                        double *hi, size_t *count) {
+  char path[1024];
+  snprintf(path, sizeof path, "%s/%s", dir, file);
+  FILE *f = fopen(path, "r");
+  if (!f) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
+  char line[2048];
+  int first = 1;
+  while (fgets(line, sizeof line, f)) {
+    if (first) { /* the header row */
+      first = 0;
+      continue;
+    }
+    const char *c = line;
+    for (int k = 1; k < col && c; k++) {
+      c = strchr(c, ',');
+      if (c) c++;
+    }
+    if (!c) continue;
+    char *end;
+    const double v = strtod(c, &end);
+    if (end == c || !isfinite(v)) continue;
+    *lo = fmin(*lo, v);
+    *hi = fmax(*hi, v);
+    ++*count;
+  }
+  const int bad = ferror(f);
+  fclose(f);
+  if (bad) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
+  return VSPH_OK;
+}
+
+int vsph_plot_particles(const char *dir, const char *name, const char *title,
+                        const struct vsph_plot_panel *pn, size_t n, int col,
+                        const char *cblabel, int diverging, const double box[4],
+                        double cb[2]) {
+  if (n < 1 || n > 8)
+    VSPH_FAIL(VSPH_EINVAL, "picture %s: 1 to 8 panels, not %zu", name, n);
+  /* one colour scale for the scene: every particle of every panel */
+  double lo = INFINITY, hi = -INFINITY;
+  size_t count = 0;
+  for (size_t k = 0; k < n; k++) {
+    const int st = column_range(dir, pn[k].file, col, &lo, &hi, &count);
+    if (st) return st;
+  }
+  if (!count)
+    VSPH_FAIL(VSPH_EINVAL, "picture %s: no finite value in column %d", name,
+              col);
+  if (diverging) {
+    const double m = fmax(fabs(lo), fabs(hi));
+    hi = m > 0.0 ? m : 1.0;
+    lo = -hi;
+  } else if (!(hi > lo)) { /* a uniform field: a range around it */
+    const double d = lo != 0.0 ? 0.01 * fabs(lo) : 1.0;
+    lo -= d, hi += d;
+  }
+  if (cb) cb[0] = lo, cb[1] = hi;
+  /* the layout: panels to scale (the box's aspect), colour bar at right */
+  const int rows = n < 3 ? 1 : 2, cols = (int)((n + (size_t)rows - 1) / rows);
+  double aspect = box ? (box[3] - box[2]) / (box[1] - box[0]) : 1.0;
+  if (!(aspect > 0.25)) aspect = 0.25;
+  if (aspect > 3.0) aspect = 3.0;
+  const int pw = 340, ph = (int)(pw * aspect);
+  const int ml = 70, mr = 130, mt = 50, mb = 10, gx = 80, gy = 90;
+  const int w = ml + cols * pw + (cols - 1) * gx + mr;
+  const int h = mt + rows * (ph + gy) + mb;
+  char gp[160];
+  snprintf(gp, sizeof gp, "%s.gp", name);
+  FILE *f = vsph_files_open(dir, gp);
+  if (!f) return VSPH_EIO;
+  head(f, "picture", name);
+  fprintf(f,
+          "set size ratio -1\nunset key\nset xlabel 'x (m)'\n"
+          "set ylabel 'y (m)'\nset cblabel \"%s\" offset char 1.5,0\n%s"
+          "# one colour scale for every panel: %s over all particles\n"
+          "set cbrange [%.17g:%.17g]\n",
+          cblabel,
+          diverging ? "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 "
+                      "'#b2182b')\n"
+                    : "set palette defined (0 '#440154', 0.5 '#21918c', 1 "
+                      "'#fde725')\n",
+          diverging ? "+-(largest |value|)" : "[min, max]", lo, hi);
+  if (box)
+    fprintf(f, "set xrange [%.6g:%.6g]\nset yrange [%.6g:%.6g]\n", box[0],
+            box[1], box[2], box[3]);
+  outputs_open(f, name, w, h, 10);
+  fprintf(f,
+          "  set multiplot layout %d,%d title \"%s\" margins %.4f,%.4f,%.4f,"
+          "%.4f spacing %.4f,%.4f\n",
+          rows, cols, title, (double)ml / w, 1.0 - (double)mr / w,
+          (double)(mb + gy - 45) / h, 1.0 - (double)mt / h, (double)gx / w,
+          (double)gy / h);
+  for (size_t k = 0; k < n; k++) {
+    if (k + 1 == n) /* the shared colour bar, once, right of the panels */
+      fprintf(f,
+              "  set colorbox user origin screen %.4f, screen %.4f size "
+              "screen %.4f, screen %.4f\n",
+              1.0 - (mr - 20.0) / w, 0.15, 18.0 / w, 0.7);
+    else
+      fprintf(f, "  unset colorbox\n");
+    fprintf(f,
+            "  set title \"%s\"\n  plot '%s' skip 1 using 1:2:%d with points "
+            "pt 7 ps 0.35 lc palette\n",
+            pn[k].title, pn[k].file, col);
+  }
+  fprintf(f, "  unset multiplot\n");
+  outputs_close(f);
+  const int st = vsph_files_close(f, dir, gp);
+  return st ? st : render(dir, gp, name);
 }

@@ -125,14 +125,17 @@ int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
                        const char *caption) {
   const int st = vsph_plot_write(pl);
   if (st) return st;
-  fprintf(R->md, "![%s](%s.png)\n\n*Figure: %s*\n\n", pl->title, pl->name,
-          caption);
+  char alt[256];
+  vsph_plot_plain(alt, sizeof alt, pl->title);
+  fprintf(R->md, "![%s](%s.svg)\n\n*Figure: %s*\n\n", alt, pl->name, caption);
   return VSPH_OK;
 }
 
 int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
                            const char *name) {
-  char caption[1024];
+  char caption[1024], title[256];
+  vsph_plot_plain(title, sizeof title, pl->title); /* {{title}}, as text */
+  vsph_text_set(&R->tv, "title", "%s", title);
   const int st = vsph_text_format(caption, sizeof caption, name, &R->tv);
   vsph_text_clear(&R->tv);
   return st ? st : vsph_report_figure(R, pl, caption);

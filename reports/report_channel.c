@@ -24,12 +24,12 @@ static const char *const POIS_LABEL[NPOIS] = {"MGF",
                                               "MEAF (E)",
                                               "PVWF",
                                               "VI (C)",
-                                              "Cleary (D), xi 4.96333",
-                                              "Cleary (D), xi 4.24",
+                                              "Cleary (D), ξ 4.96333",
+                                              "Cleary (D), ξ 4.24",
                                               "Takeda (A)",
                                               "Takeda, Shepard (A[0])",
                                               "two-pass (B)",
-                                              "VISC-01 (hybrid, eta 0.1 h)",
+                                              "VISC-01 (hybrid, η 0.1 h)",
                                               "VISC-02 (direct)",
                                               "VISC-03 (Schwaiger)",
                                               "VISC-04 (Oger)"};
@@ -418,17 +418,19 @@ static int figures(struct vsph_report *R, const struct chan *c) {
            "against the series",
            c->res_p, c->res_p);
   vsph_plot_init(&pl, R->dir, "fig_poiseuille_error", title,
-                 "t* = t pi^2 nu/(4 d^2)", "RMS (u - U)/U0");
+                 "t^* = t π^2 ν/(4 d^2) (dimensionless)",
+                 "RMS (u − U)/U_0 (dimensionless)");
   pl.logy = 1;
   int st = VSPH_OK;
   for (int f = 0; f < NPOIS && !st; f++) {
     char file[600], style[96], cols[64];
     data_file(file, sizeof file, &c->pois[f]);
+    /* a point every 12th output: the shapes tell the series apart */
     snprintf(cols, sizeof cols, "($1*%.10g):16", TSTAR);
     vsph_report_runs_style(style, sizeof style, f,
-                           f >= 12  ? " dt 3"
-                           : f >= 6 ? " dt 2"
-                                    : "");
+                           f >= 12  ? " dt 3 pi 12"
+                           : f >= 6 ? " dt 2 pi 12"
+                                    : " pi 12");
     st = vsph_plot_add(&pl, file, cols, POIS_LABEL[f], style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);
@@ -439,15 +441,15 @@ static int figures(struct vsph_report *R, const struct chan *c) {
            "against the series",
            c->res_c);
   vsph_plot_init(&pl, R->dir, "fig_couette_error", title, "t (s)",
-                 "RMS (u - U)/v0");
+                 "RMS (u − U)/v_0 (dimensionless)");
   pl.logy = 1;
   for (int f = 0; f < NCOU && !st; f++) {
     char file[600], style[96];
     data_file(file, sizeof file, &c->cou[f]);
     vsph_report_runs_style(style, sizeof style, f,
-                           f >= 12  ? " dt 3"
-                           : f >= 6 ? " dt 2"
-                                    : "");
+                           f >= 12  ? " dt 3 pi 12"
+                           : f >= 6 ? " dt 2 pi 12"
+                                    : " pi 12");
     st = vsph_plot_add(&pl, file, "1:16", vsph_viscous_label(f), style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);
@@ -457,7 +459,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
            "Lid-driven cavity: RMS distance from Ghia et al.'s centrelines "
            "over time");
   vsph_plot_init(&pl, R->dir, "fig_cavity_ghia", title, "t (s)",
-                 "RMS distance / U");
+                 "RMS distance / U (dimensionless)");
   pl.logy = 1;
   for (int q = 0; q < (R->full ? NCAV : CAV_QUICK) && !st; q++) {
     if (!c->cav[q].ok) continue; /* the run without TVF: a few rows */
@@ -467,7 +469,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
              vsph_viscous_label(vsph_viscous_find(CAV[q].visc)), CAV[q].res,
              CAV[q].res);
     vsph_report_runs_style(style, sizeof style, q,
-                           CAV[q].Re > 100 ? " dt 2" : "");
+                           CAV[q].Re > 100 ? " dt 2 pi 12" : " pi 12");
     st = vsph_plot_add(&pl, file, "1:16", label, style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);

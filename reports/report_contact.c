@@ -475,33 +475,35 @@ static int alpha_csv(struct vsph_report *R, const struct cres *cr) {
 
 static int figures(struct vsph_report *R, const struct cres *cr) {
   struct vsph_plot pl;
-  char file[300], using[200], label[128];
+  char file[300], using[200], label[128], style[96];
   /* Parshikov Fig. 6a: lead at 4.5 ns for each zeta, the exact profiles */
   vsph_plot_init(&pl, R->dir, "fig_contact_zeta",
                  "Lead shear layer at t = 4.5 ns: the correcting tensor",
-                 "x (nm)", "u_y / U0");
+                 "x (nm)", "u_y / U_0 (dimensionless)");
   static const int Z[3] = {C_Z0, C_Z05, C_Z1};
   int st = VSPH_OK;
   for (int k = 0; k < 3 && !st; k++) {
     snprintf(file, sizeof file, "runs/contact-%s/profiles.csv", CS[Z[k]].tag);
     snprintf(using, sizeof using, "(abs($2)<%g ? $2*1e9 : 1/0):($3/%g)",
              0.5 * CS[Z[k]].W, CS[Z[k]].U0);
-    snprintf(label, sizeof label, "SPH, zeta = %g", CS[Z[k]].zeta);
-    st = vsph_plot_add(&pl, file, using, label, "points pt 7 ps 0.6");
+    snprintf(label, sizeof label, "SPH, ζ = %g", CS[Z[k]].zeta);
+    snprintf(style, sizeof style, "points pt %d ps 0.6 lc %d",
+             vsph_plot_point((size_t)k), k + 1);
+    st = vsph_plot_add(&pl, file, using, label, style);
   }
   if (!st)
     st = vsph_plot_add(&pl, "contact_exact.csv", "1:2",
-                       "exact, eta = 2.3 mPa s (physical)", "lines lw 2");
+                       "exact, η = 2.3 mPa s (physical)", "lines lw 2");
   if (!st)
     st = vsph_plot_add(&pl, "contact_exact.csv", "1:3",
-                       "exact, the measured numerical eta", "lines lw 2 dt 2");
+                       "exact, the measured numerical η", "lines lw 2 dt 2");
   if (!st) st = vsph_report_figure_say(R, &pl, "contact.fig_zeta");
   if (st) return st;
   /* Parshikov Fig. 6b: zeta = 1, self-similar in xi = x sqrt(t0/t) */
   vsph_plot_init(&pl, R->dir, "fig_contact_selfsim",
-                 "Lead, zeta = 1: profiles against xi = x sqrt(t0/t), "
-                 "t0 = 7 ns",
-                 "xi (nm)", "u_y / U0");
+                 "Lead, ζ = 1: profiles against ξ = x (t_0/t)^{1/2}, "
+                 "t_0 = 7 ns",
+                 "ξ (nm)", "u_y / U_0 (dimensionless)");
   const struct vsph_contact_shear *L = &cr->r[C_Z1L];
   for (size_t q = 0; q < L->nt && !st; q++) {
     snprintf(file, sizeof file, "runs/contact-%s/profiles.csv", CS[C_Z1L].tag);
@@ -510,17 +512,19 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
              "1/0):($3/%g)",
              L->t[q], 1e-3 * L->t[q], 0.5 * CS[C_Z1L].W, CS[C_Z1L].U0);
     snprintf(label, sizeof label, "t = %.3g ns", 1e9 * L->t[q]);
-    st = vsph_plot_add(&pl, file, using, label, "linespoints pt 7 ps 0.5");
+    snprintf(style, sizeof style, "linespoints pt %d ps 0.5 lc %zu",
+             vsph_plot_point(q), q + 1);
+    st = vsph_plot_add(&pl, file, using, label, style);
   }
   if (!st) st = vsph_report_figure_say(R, &pl, "contact.fig_selfsim");
   if (st) return st;
   /* Parshikov Fig. 4 / eq. (37): the coefficient against alpha */
   vsph_plot_init(&pl, R->dir, "fig_contact_alpha",
-                 "Numerical viscosity of contact SPH against alpha (Wendland "
-                 "C2, lead)",
-                 "alpha", "eta_num / (Z D0)");
+                 "Numerical viscosity of contact SPH against α (Wendland "
+                 "C^2, lead)",
+                 "α (dimensionless)", "η_{num} / (Z D_0) (dimensionless)");
   st = vsph_plot_add(&pl, "contact_alpha.csv", "1:2",
-                     "measured (control surface, +-500 m/s)",
+                     "measured (control surface, ±500 m/s)",
                      "linespoints pt 7 lw 2");
   if (!st)
     st = vsph_plot_add(&pl, "contact_alpha.csv", "1:3", "Parshikov fit (37)",
@@ -532,20 +536,23 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
   if (st) return st;
   /* Parshikov Fig. 7: paraffin | glycerol */
   vsph_plot_init(&pl, R->dir, "fig_contact_bimaterial",
-                 "Paraffin (x < 0) | glycerol (x > 0), zeta = 1", "x (um)",
-                 "u_y / U0");
+                 "Paraffin (x < 0) | glycerol (x > 0), ζ = 1", "x (μm)",
+                 "u_y / U_0 (dimensionless)");
   const struct vsph_contact_shear *B = &cr->r[C_BI1];
   for (size_t q = 0; q < B->nt && q < 2 && !st; q++) {
     snprintf(file, sizeof file, "runs/contact-%s/profiles.csv", CS[C_BI1].tag);
     snprintf(using, sizeof using,
              "(abs($1-%.9g)<%.3g && abs($2)<3e-4 ? $2*1e6 : 1/0):($3/%g)",
              B->t[q], 1e-3 * B->t[q], CS[C_BI1].U0);
-    snprintf(label, sizeof label, "SPH, t = %.3g us", 1e6 * B->t[q]);
-    st = vsph_plot_add(&pl, file, using, label, "points pt 7 ps 0.6");
+    snprintf(label, sizeof label, "SPH, t = %.3g μs", 1e6 * B->t[q]);
+    /* one colour per time: the SPH points and the exact line */
+    snprintf(style, sizeof style, "points pt %d ps 0.8 lc %zu",
+             vsph_plot_point(q), q + 1);
+    st = vsph_plot_add(&pl, file, using, label, style);
     snprintf(using, sizeof using, "4:%zu", 5 + q);
-    snprintf(label, sizeof label, "exact (eq. 27), t = %.3g us", 1e6 * B->t[q]);
-    if (!st)
-      st = vsph_plot_add(&pl, "contact_exact.csv", using, label, "lines lw 2");
+    snprintf(label, sizeof label, "exact (eq. 27), t = %.3g μs", 1e6 * B->t[q]);
+    snprintf(style, sizeof style, "lines lw 2 lc %zu", q + 1);
+    if (!st) st = vsph_plot_add(&pl, "contact_exact.csv", using, label, style);
   }
   if (!st) st = vsph_report_figure_say(R, &pl, "contact.fig_bimaterial");
   return st;

@@ -12,6 +12,20 @@
 
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 
+/* The x range of a ladder's figure (dx over the reference length: the
+ * ladder's, not whole decades) and its ticks, at the ladder's
+ * resolutions: gnuplot commands into @p buf. */
+static void ladder_ticks(char *buf, size_t n,
+                         const struct vsph_report_ladderdef *L) {
+  size_t len =
+      (size_t)snprintf(buf, n, "set xrange [%g:%g]\nset xtics (",
+                       0.8 / L->res[VSPH_REPORT_LADDER - 1], 1.25 / L->res[0]);
+  for (int k = 0; k < VSPH_REPORT_LADDER && len < n; k++)
+    len += (size_t)snprintf(buf + len, n - len, "%s'1/%zu' %.6g", k ? ", " : "",
+                            L->res[k], 1.0 / L->res[k]);
+  if (len < n) snprintf(buf + len, n - len, ")\n");
+}
+
 static int scene(struct vsph_report *R, int sc) {
   struct vsph_report_ladder lr;
   int st = vsph_report_runs_ladder_figures(R, sc, &lr);
@@ -22,12 +36,11 @@ static int scene(struct vsph_report *R, int sc) {
   snprintf(title, sizeof title, "%s: E_k error against resolution", L->scene);
   struct vsph_plot pl;
   vsph_plot_init(&pl, R->dir, pname, title,
-                 "particle spacing dx / reference length",
+                 "particle spacing dx / reference length (dimensionless)",
                  "max_t |E_k - E_{k,ref}| / E_{k,ref}(0)");
   pl.logx = pl.logy = 1;
-  /* the ladder's range, not whole decades */
-  snprintf(pl.extra, sizeof pl.extra, "set xrange [%g:%g]\n",
-           0.8 / L->res[VSPH_REPORT_LADDER - 1], 1.25 / L->res[0]);
+  /* the ladder's range, not whole decades; ticks at its resolutions */
+  ladder_ticks(pl.extra, sizeof pl.extra, L);
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
   if ((st = vsph_report_say(R, "convergence.scene_head"))) return st;
   char files[NFORM][96];
@@ -80,11 +93,10 @@ static int vortex_layouts(struct vsph_report *R) {
   vsph_plot_init(&pl, R->dir, "fig_convergence_vortex-layouts",
                  "vortex-patch: initial dissipation error on rings (solid) "
                  "and on a Cartesian disc (dashed)",
-                 "particle spacing dx / R",
+                 "particle spacing dx / R (dimensionless)",
                  "|P_{visc}(0) - dE_{k,ref}/dt(0)| / |dE_{k,ref}/dt(0)|");
   pl.logx = pl.logy = 1;
-  snprintf(pl.extra, sizeof pl.extra, "set xrange [%g:%g]\n",
-           0.8 / L->res[VSPH_REPORT_LADDER - 1], 1.25 / L->res[0]);
+  ladder_ticks(pl.extra, sizeof pl.extra, L);
   for (int l = 0; l < 2 && !st; l++)
     for (int f = 0; f < NFORM && !st; f++) {
       char file[96], lab[64], style[96];

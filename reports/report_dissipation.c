@@ -163,7 +163,14 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
                  "particles across the square, L/dx",
                  "relative error of P (dimensionless)");
   a.logx = a.logy = 1;
-  snprintf(a.extra, sizeof a.extra, "set xrange [15:200]\n");
+  /* PVWF's error is exact to rounding (about 1e-15, sums of O(N) terms of
+   * size 1 each rounded at 1.1e-16): below 1e-13 it is shown in the
+   * rounding band, not on an axis stretched down to 1e-16 */
+  a.rounding = 1e-13;
+  /* ticks at the resolutions computed */
+  snprintf(a.extra, sizeof a.extra,
+           "set xrange [15:200]\nset xtics (%zu, %zu, %zu, %zu)\n", RES[0],
+           RES[1], RES[2], RES[3]);
   int st = VSPH_OK;
   for (int form = 0; form < NFORM && !st; form++) {
     char title[64], style[96];
@@ -173,8 +180,9 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
     if (!st && form != VSPH_VISCOUS_PVWF) { /* PVWF's is rounding */
       snprintf(title, sizeof title, "%s surface part",
                vsph_viscous_label(form));
-      snprintf(style, sizeof style, "linespoints pt 6 dt 2 %s",
-               vsph_report_runs_colour(form));
+      /* the formulation's colour and its open point shape */
+      snprintf(style, sizeof style, "linespoints pt %d dt 2 %s",
+               vsph_report_runs_point(form) - 1, vsph_report_runs_colour(form));
       st = vsph_plot_add(&a, tb->res_name[form], "1:4", title, style);
     }
   }
@@ -189,17 +197,23 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
            "Lattice error of the dissipation against h/dx (square, %zu "
            "across)",
            RES_HDX);
-  vsph_plot_init(&b, R->dir, "fig_dissipation_hdx", title, "h/dx",
-                 "|lattice error| (dimensionless)");
+  vsph_plot_init(&b, R->dir, "fig_dissipation_hdx", title,
+                 "h/dx (dimensionless)", "|lattice error| (dimensionless)");
   b.logx = b.logy = 1;
+  b.rounding = 1e-13; /* PVWF's strain: zero to rounding, as above */
+  snprintf(b.extra, sizeof b.extra,
+           "set xrange [0.9:4.4]\nset xtics (1, '4/3' %.17g, 2, 3, 4)\n",
+           VSPH_CONSTS_HDX);
   for (int form = 0; form < NFORM && !st; form++)
     for (int field = 1; field < NFIELD && !st; field++) { /* strain, mixed */
       char tl[64];
-      snprintf(tl, sizeof tl, "%s, %s", vsph_viscous_name(form),
+      snprintf(tl, sizeof tl, "%s, %s", vsph_viscous_label(form),
                vsph_fields_name(field));
+      /* the formulation's colour; mixed: dashed, its open point shape */
       char style[96];
-      vsph_report_runs_style(style, sizeof style, form,
-                             field == 2 ? " dt 2" : "");
+      snprintf(style, sizeof style, "linespoints pt %d lw 2 %s%s",
+               vsph_report_runs_point(form) - (field == 2),
+               vsph_report_runs_colour(form), field == 2 ? " dt 2" : "");
       st = vsph_plot_add(&b, tb->hdx_name[form][field], "1:3", tl, style);
     }
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);

@@ -378,8 +378,9 @@ double vsph_report_runs_interp(const double *t, const double *y, size_t n,
 /* gnuplot's point type for formulation f: the same in every figure. */
 int vsph_report_runs_point(int f);
 
-/* gnuplot's colour for formulation f ("lc rgb '#1f77b4'"): the same in
- * every figure (MGF blue, MEAF red, PVWF green). */
+/* gnuplot's colour for formulation (or series) f, "lc K": linetype K of
+ * the shared palette (io/plot.h), the same in every figure (MGF blue,
+ * MEAF red, PVWF green), distinct for VSPH_PLOT_NSTYLES series. */
 const char *vsph_report_runs_colour(int f);
 
 /* The line style of formulation f in every figure: "linespoints pt P lw 2

@@ -57,7 +57,7 @@ static int figure(struct vsph_report *R, int dim, int which) {
            dim);
   struct vsph_plot pl;
   vsph_plot_init(&pl, R->dir, pname, title,
-                 "depth of the point below the surface, delta / h",
+                 "depth of the point below the surface, δ/h (dimensionless)",
                  which ? "G_{nnnn}, M_{nn} (dimensionless)"
                        : "h F_{nnn}, h N_n (dimensionless, h = 1)");
   int st = VSPH_OK;

@@ -15,6 +15,7 @@
 #include "../io/csv.h"
 #include "../io/files.h"
 #include "../io/json.h"
+#include "../io/plot.h"
 #include "../io/rundir.h"
 #include "../solver/scene.h"
 #include "report_internal.h"
@@ -385,10 +386,12 @@ int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
 }
 
 const char *vsph_report_runs_colour(int f) {
-  static const char *const lc[] = {"lc rgb '#1f77b4'", "lc rgb '#d62728'",
-                                   "lc rgb '#2ca02c'", "lc rgb '#9467bd'",
-                                   "lc rgb '#ff7f0e'", "lc rgb '#8c564b'"};
-  return lc[(size_t)f % (sizeof lc / sizeof lc[0])];
+  /* linetype k of every script is colour k - 1 of the shared palette
+   * (io/plot.h): distinct for the first VSPH_PLOT_NSTYLES, then cycling */
+  static const char *const lc[VSPH_PLOT_NSTYLES] = {
+      "lc 1", "lc 2",  "lc 3",  "lc 4",  "lc 5",  "lc 6",  "lc 7", "lc 8",
+      "lc 9", "lc 10", "lc 11", "lc 12", "lc 13", "lc 14", "lc 15"};
+  return lc[(size_t)f % VSPH_PLOT_NSTYLES];
 }
 
 void vsph_report_runs_style(char *buf, size_t len, int f, const char *more) {
@@ -396,10 +399,7 @@ void vsph_report_runs_style(char *buf, size_t len, int f, const char *more) {
            vsph_report_runs_colour(f), more);
 }
 
-int vsph_report_runs_point(int f) {
-  static const int pt[] = {7, 5, 9, 11, 13, 3};
-  return pt[(size_t)f % (sizeof pt / sizeof pt[0])];
-}
+int vsph_report_runs_point(int f) { return vsph_plot_point((size_t)f); }
 
 /* The channel rows of the baseline: every formulation on Basa et al.'s
  * Poiseuille (10 x 10, t* = 4.9) and Morris' Couette (16 rows to 0.25 s,

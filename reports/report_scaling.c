@@ -17,6 +17,7 @@
 /* The three tables the sweeps fill. */
 struct tables {
   FILE *csv, *sl, *in;
+  double round[4][2]; /* the 3h Gaussian's rounding level, [dim][field] */
 };
 
 /* One kernel, dimension and field: the sweep, its rows and (3h Gaussian)
@@ -43,6 +44,7 @@ static int sweep(struct vsph_report *R, struct tables *tb,
     const double U =
         fk == VSPH_FIELDS_STRAIN ? fabs(sp.field.A) : fabs(sp.field.Omega);
     const double round = sp.round_tol * sp.mu * U / r.h[r.levels - 1];
+    tb->round[dim][fk] = round;
     for (size_t l = 0; l < r.levels; l++)
       fprintf(f, "%.6e,%.6e,%.6e,%.6e,%.10f,%.10f,%.6e\n", r.h[l],
               r.magnitude[0][l], r.magnitude[1][l], r.magnitude[2][l], r.hF[l],
@@ -73,7 +75,8 @@ static int sweep(struct vsph_report *R, struct tables *tb,
   return VSPH_OK;
 }
 
-static int figure(struct vsph_report *R, int dim, int fk) {
+static int figure(struct vsph_report *R, const struct tables *tb, int dim,
+                  int fk) {
   const char *fn = vsph_fields_name(fk);
   char pname[64], data[64], title[200];
   snprintf(pname, sizeof pname, "fig_scaling_%s_%dd", fn, dim);
@@ -85,6 +88,9 @@ static int figure(struct vsph_report *R, int dim, int fk) {
   vsph_plot_init(&pl, R->dir, pname, title, "smoothing length h (m)",
                  "|(div V)_i| at the surface particle (N/m^d)");
   pl.logx = pl.logy = 1;
+  /* below this, values are rounding noise (no slope is fitted): shown in
+   * a band under the data, not on the axis down to 1e-20 */
+  pl.rounding = tb->round[dim][fk];
   /* the sweep's h range (h0 = 0.1 halved 4 times), not whole decades */
   snprintf(pl.extra, sizeof pl.extra, "set xrange [0.0045:0.14]\n");
   int st = VSPH_OK;
@@ -97,15 +103,11 @@ static int figure(struct vsph_report *R, int dim, int fk) {
   if (!st)
     st = vsph_plot_add(&pl, data, "1:(1e-3*$1**-1)", "slope -1",
                        "lines dt 2 lc 'black'");
-  if (!st) /* below this, values are rounding noise: no slope is fitted */
-    st = vsph_plot_add(&pl, data, "1:($7*1e-10):7",
-                       "rounding level (below: noise, no slope)",
-                       "filledcurves fc rgb '#cccccc' fs transparent solid "
-                       "0.5");
   if (st) return st;
   vsph_text_set(&R->tv, "field", "%s", fn);
   vsph_text_set(&R->tv, "dim", "%d", dim);
   vsph_text_set(&R->tv, "data", "%s", data);
+  vsph_text_set(&R->tv, "round", "%.2g", tb->round[dim][fk]);
   return vsph_report_figure_say(R, &pl, "scaling.caption");
 }
 
@@ -149,8 +151,9 @@ static int axis(struct vsph_report *R) {
       char cols[16], lab[48], style[96];
       snprintf(cols, sizeof cols, "1:%d", form + 2);
       snprintf(lab, sizeof lab, "L/dx = %zu", RES[r]);
-      snprintf(style, sizeof style, "linespoints pt 7 ps 0.6 lw %d %s", r + 1,
-               vsph_report_runs_colour(form));
+      /* a colour and point type per resolution, none a formulation's */
+      snprintf(style, sizeof style, "linespoints pt %d ps 0.6 lw %d lc %d",
+               vsph_plot_point((size_t)r + 3), r + 1, r + 4);
       st = vsph_plot_add(&pl, name[r], cols, lab, style);
     }
     if (!st) {
@@ -190,7 +193,8 @@ int vsph_report_scaling_write(struct vsph_report *R) {
       vsph_csv_open(R->dir, "slopes.csv",
                     "kernel,dim,field,slope_mgf,slope_meaf,slope_pvwf"),
       vsph_csv_open(R->dir, "interior.csv",
-                    "kernel,hdx,mgf_rel_error,meaf_rel_error")};
+                    "kernel,hdx,mgf_rel_error,meaf_rel_error"),
+      {{0}}};
   struct vsph_scaling_props sp;
   int st =
       tb.csv && tb.sl && tb.in ? vsph_scaling_props_init(&sp, NULL) : VSPH_EIO;
@@ -213,7 +217,7 @@ int vsph_report_scaling_write(struct vsph_report *R) {
         st = sweep(R, &tb, vsph_kernel_get(ki), dim, fk);
   if (!st) st = vsph_report_say(R, "scaling.patch");
   for (int dim = 2; dim <= 3 && !st; dim++)
-    for (int fk = 0; fk < 2 && !st; fk++) st = figure(R, dim, fk);
+    for (int fk = 0; fk < 2 && !st; fk++) st = figure(R, &tb, dim, fk);
   if (!st) st = axis(R);
   if (!st) st = interior(R, tb.in);
   const char *names[3] = {"scaling.csv", "slopes.csv", "interior.csv"};

@@ -102,12 +102,12 @@ static int vortex_profiles(struct vsph_report *R, FILE *figs, int f,
   char pname[64], title[200];
   snprintf(pname, sizeof pname, "fig_vortex_profiles_%s", form);
   snprintf(title, sizeof title,
-           "Vortex patch, %s: u_{theta}(r) at five times (points) against "
+           "Vortex patch, %s: u_θ(r) at five times (points) against "
            "the Bessel series (lines)",
            form);
   struct vsph_plot pl;
   vsph_plot_init(&pl, R->dir, pname, title, "radius r (m)",
-                 "azimuthal velocity u_{theta} (m/s)");
+                 "azimuthal velocity u_θ (m/s)");
   for (int k = 0; k < NSNAP && !st; k++) {
     char snap[700], file[96], tp[48], ts_[48], sp[48], ss[48];
     snprintf(snap, sizeof snap, "%s/snap_%04d.vtp", run->dir, k);
@@ -117,7 +117,8 @@ static int vortex_profiles(struct vsph_report *R, FILE *figs, int f,
     snprintf(tp, sizeof tp, "SPH t = %.3g s", ts);
     snprintf(ts_, sizeof ts_, "series t = %.3g s", ts);
     /* one colour per time, points and line alike */
-    snprintf(sp, sizeof sp, "points pt 7 ps 0.9 lc %d", k + 1);
+    snprintf(sp, sizeof sp, "points pt %d ps 0.9 lc %d",
+             vsph_plot_point((size_t)k), k + 1);
     snprintf(ss, sizeof ss, "lines lw 1.5 lc %d", k + 1);
     if (!st) st = vsph_plot_add(&pl, file, "1:2", tp, sp);
     if (!st) st = vsph_plot_add(&pl, file, "1:3", ts_, ss);
@@ -204,19 +205,26 @@ static int pictures(struct vsph_report *R, int sc, FILE *md,
   const double mx = 0.05 * (box[1] - box[0]), my = 0.05 * (box[3] - box[2]);
   box[0] -= mx, box[1] += mx, box[2] -= my, box[3] += my;
   static const char *const what[2] = {"pressure", "vorticity"};
-  static const char *const unit[2] = {"p (Pa)", "omega (1/s)"};
+  static const char *const unit[2] = {"p (Pa)", "ω (1/s)"};
   for (int w = 0; w < 2 && !st; w++) {
     char name[96], title[160];
     snprintf(name, sizeof name, "pic_%s_%s", scn, what[w]);
     snprintf(title, sizeof title, "%s: particles coloured by %s", scn, what[w]);
+    double cb[2];
     st = vsph_plot_particles(R->dir, name, title, pn, NFORM + 1, w ? 4 : 3,
-                             unit[w], w, box);
+                             unit[w], w, box, cb);
     if (!st)
       fprintf(md,
-              "![%s](%s.png)\n\n*Figure: %s. Data: `particles_%s_<form>."
-              "csv` (x, y, pressure, vorticity, free-surface flag), from the "
-              "runs' snapshots (`runs/*/snap_*.vtp`).*\n\n",
-              title, name, title, scn);
+              "![%s](%s.png)\n\n*Figure: %s, one colour scale for every "
+              "panel: %s from %.4g to %.4g %s (%s of every particle). "
+              "Vector graphics: [%s.svg](%s.svg), [%s.pdf](%s.pdf) (this "
+              "page embeds the PNG: an SVG of thousands of particles is "
+              "megabytes). Data: `particles_%s_<form>.csv` (x, y, pressure, "
+              "vorticity, free-surface flag), from the runs' snapshots "
+              "(`runs/*/snap_*.vtp`).*\n\n",
+              title, name, title, what[w], cb[0], cb[1], w ? "1/s" : "Pa",
+              w ? "± the largest |ω|" : "the smallest and largest value", name,
+              name, name, name, scn);
   }
   return st;
 }
@@ -235,7 +243,7 @@ static int scene_figures(struct vsph_report *R, int sc, char names[NFORM][96],
   static const char *const what[5] = {"Ek", "dEk", "err", "residual", "loss"};
   const char *const heading[5] = {
       "kinetic energy against the reference",
-      wave ? "viscous power P_visc against Lighthill's -4 nu k^2 E"
+      wave ? "viscous power P_{visc} against Lighthill's −4 ν k^2 E"
            : "dissipation rate dE_k/dt against the reference",
       "error of the kinetic-energy decay", "energy-budget residual",
       "energy lost over the reference's loss"};
@@ -277,7 +285,9 @@ static int scene_figures(struct vsph_report *R, int sc, char names[NFORM][96],
                          "lines dt 2 lw 2 lc 'black'");
     if (st) break;
     if ((st = vsph_plot_write(&pl))) break;
-    fprintf(R->md, "![%s](%s.png)\n\n", title, pname);
+    char alt[256];
+    vsph_plot_plain(alt, sizeof alt, title);
+    fprintf(R->md, "![%s](%s.svg)\n\n", alt, pname);
   }
   return st;
 }

@@ -44,6 +44,15 @@ struct sweep {
   const char *map; /* map CSV, or NULL */
 };
 
+#define MAXV 8 /* most values of a sweep */
+
+/* A sweep's verdicts, for its map: ok[v][f], 1 if stable. */
+struct verdicts {
+  size_t nv;
+  double vals[MAXV];
+  int ok[MAXV][NFORM];
+};
+
 /* The run of sweep @p sw at value @p v and formulation @p f: its setting
  * and tag in @p set and @p tag. */
 static struct vsph_report_runspec sweep_spec(const struct sweep *sw, size_t v,
@@ -57,7 +66,14 @@ static struct vsph_report_runspec sweep_spec(const struct sweep *sw, size_t v,
       sw->scene, vsph_viscous_name(f), sw->res, sw->t_end, extra, tag};
 }
 
-static int sweep(struct vsph_report *R, const struct sweep *sw) {
+static int sweep(struct vsph_report *R, const struct sweep *sw,
+                 struct verdicts *vd) {
+  if (sw->nv > MAXV)
+    VSPH_FAIL(VSPH_EINVAL, "sweep of %s: more than %d values", sw->key, MAXV);
+  if (vd) {
+    vd->nv = sw->nv;
+    for (size_t v = 0; v < sw->nv; v++) vd->vals[v] = sw->vals[v];
+  }
   FILE *m = NULL;
   if (sw->map &&
       !(m = vsph_csv_open(R->dir, sw->map, "value,form,stable,t_unstable")))
@@ -75,6 +91,7 @@ static int sweep(struct vsph_report *R, const struct sweep *sw) {
       char cell[160];
       verdict(cell, sizeof cell, &r);
       fprintf(R->md, " %s |", cell);
+      if (vd) vd->ok[v][f] = r.ok;
       if (m)
         fprintf(m, "%.6g,%d,%d,%.6g\n", sw->vals[v], f + 1, r.ok,
                 r.ok ? (double)NAN : r.t_unstable);
@@ -91,9 +108,16 @@ static int sweep(struct vsph_report *R, const struct sweep *sw) {
   return st;
 }
 
+/* The map's own two colours, apart from every formulation's (blue, red,
+ * green): light grey for stable, near-black for unstable; the boundary is
+ * an orange bar (no formulation is orange among the three rows). */
+#define STABLE_RGB "#c8c8c8"
+#define UNSTABLE_RGB "#262626"
+#define BOUNDARY_RGB "#ff7f0e"
+
 static int stability_map(struct vsph_report *R, const char *map,
-                         const char *name, const char *title,
-                         const char *xlabel) {
+                         const struct verdicts *vd, const char *name,
+                         const char *title, const char *xlabel) {
   struct vsph_plot pl;
   vsph_plot_init(&pl, R->dir, name, title, xlabel, "formulation");
   /* one row per formulation, labelled from the formulation table */
@@ -102,18 +126,54 @@ static int stability_map(struct vsph_report *R, const char *map,
     len += (size_t)snprintf(pl.extra + len, sizeof pl.extra - len, "%s'%s' %d",
                             f ? ", " : "", vsph_viscous_label(f), f + 1);
   if (len < sizeof pl.extra)
-    snprintf(pl.extra + len, sizeof pl.extra - len,
-             ")\nset yrange [0.5:%g]\nset offsets graph 0.05, graph 0.05, "
-             "0, 0\n",
-             NFORM + 0.5);
+    len += (size_t)snprintf(pl.extra + len, sizeof pl.extra - len,
+                            ")\nset yrange [0.4:%g]\nset offsets graph 0.08, "
+                            "graph 0.08, 0, 0\nset grid noytics\n",
+                            NFORM + 0.6);
+  /* the boundary of each row: a bar between neighbouring values (in
+   * sorted order) of which one is stable and the other not; a row
+   * without one says so at its right end */
+  size_t idx[MAXV];
+  for (size_t v = 0; v < vd->nv; v++) idx[v] = v;
+  for (size_t a = 1; a < vd->nv; a++) /* insertion sort by value */
+    for (size_t b = a; b > 0 && vd->vals[idx[b]] < vd->vals[idx[b - 1]]; b--) {
+      const size_t t = idx[b];
+      idx[b] = idx[b - 1], idx[b - 1] = t;
+    }
+  int bars = 0;
+  for (int f = 0; f < NFORM && len < sizeof pl.extra; f++) {
+    int found = 0, all = 1;
+    for (size_t k = 0; k + 1 < vd->nv; k++) {
+      const size_t a = idx[k], b = idx[k + 1];
+      if (vd->ok[a][f] == vd->ok[b][f]) continue;
+      const double x = 0.5 * (vd->vals[a] + vd->vals[b]);
+      len += (size_t)snprintf(pl.extra + len, sizeof pl.extra - len,
+                              "set arrow from %.6g,%g to %.6g,%g nohead "
+                              "lw 4 lc rgb '" BOUNDARY_RGB "' front\n",
+                              x, f + 0.6, x, f + 1.4);
+      found = bars = 1;
+    }
+    for (size_t v = 0; v < vd->nv; v++) all &= vd->ok[v][f] == vd->ok[0][f];
+    if (!found && all && vd->nv && len < sizeof pl.extra)
+      len += (size_t)snprintf(
+          pl.extra + len, sizeof pl.extra - len,
+          "set label '%s at every value: boundary beyond the sweep' at "
+          "graph 0.5, first %g center front font ',9'\n",
+          vd->ok[0][f] ? "stable" : "unstable", f + 1.33);
+  }
+  if (len >= sizeof pl.extra)
+    VSPH_FAIL(VSPH_EINVAL, "map %s: its gnuplot commands are too long", name);
   int st = vsph_plot_add(&pl, map, "1:($3==1 ? $2 : 1/0)", "stable",
-                         "points pt 7 ps 2.5 lc rgb '#2a9d2a'");
+                         "points pt 5 ps 3 lc rgb '" STABLE_RGB "'");
   if (!st)
-    st = vsph_plot_add(&pl, map, "1:($3==0 ? $2 : 1/0)", "unstable",
-                       "points pt 2 ps 2.5 lw 3 lc rgb '#d62728'");
+    st = vsph_plot_add(&pl, map, "1:($3==0 ? $2 : 1/0)", "unstable (stopped)",
+                       "points pt 5 ps 3 lc rgb '" UNSTABLE_RGB "'");
+  if (!st && bars)
+    st = vsph_plot_add(&pl, map, "1:(1/0)",
+                       "stability boundary (between the values either side)",
+                       "lines lw 4 lc rgb '" BOUNDARY_RGB "'");
   if (st) return st;
   fprintf(R->md, "\n");
-  vsph_text_set(&R->tv, "title", "%s", title);
   return vsph_report_figure_say(R, &pl, "stability.map_caption");
 }
 
@@ -217,26 +277,30 @@ int vsph_report_stability_write(struct vsph_report *R) {
   st = vsph_report_say(R, "stability.intro");
   if (!st) st = square_ladder(R);
   if (!st) st = vsph_report_say(R, "stability.hard");
-  for (int k = 0; k < 4 && !st; k++) st = sweep(R, &sws[k]); /* nu, shift */
-  if (!st) st = sweep(R, &sws[4]);                           /* c0 */
+  struct verdicts vc0, vcfl, vwave;
+  for (int k = 0; k < 4 && !st; k++)
+    st = sweep(R, &sws[k], NULL);        /* nu, shift */
+  if (!st) st = sweep(R, &sws[4], &vc0); /* c0 */
   if (!st) {
     vsph_text_set(&R->tv, "U_max", "%.4f", scene.U_max);
     vsph_text_set(&R->tv, "c0", "%.4f", scene.c0);
     st = vsph_report_say(R, "stability.c0_note");
   }
   if (!st)
-    st = stability_map(R, "stability_c0.csv", "fig_stability_c0",
+    st = stability_map(R, "stability_c0.csv", &vc0, "fig_stability_c0",
                        "Vortex patch: stability against the sound speed",
-                       "sound speed c0 (m/s)");
+                       "sound speed c_0 (m/s)");
   if (!st) st = vsph_report_say(R, "stability.cfl");
-  if (!st) st = sweep(R, &sws[5]);
-  if (!st) st = sweep(R, &sws[6]);
+  if (!st) st = sweep(R, &sws[5], &vcfl);
+  if (!st) st = sweep(R, &sws[6], &vwave);
   if (!st)
-    st = stability_map(R, "stability_cfl_vortex.csv", "fig_stability_cfl",
-                       "Vortex patch: stability against the CFL number",
-                       "Courant number CFL (RK4)");
+    st =
+        stability_map(R, "stability_cfl_vortex.csv", &vcfl, "fig_stability_cfl",
+                      "Vortex patch: stability against the CFL number",
+                      "Courant number CFL (RK4)");
   if (!st)
-    st = stability_map(R, "stability_cfl_wave.csv", "fig_stability_cfl_wave",
+    st = stability_map(R, "stability_cfl_wave.csv", &vwave,
+                       "fig_stability_cfl_wave",
                        "Standing wave: stability against the CFL number",
                        "Courant number CFL (RK4)");
   return st;

@@ -1,0 +1,228 @@
+/* io/plot: the particle pictures' shared colour scale, every figure in
+ * three formats, the shared palette. Needs gnuplot (scripts/install-deps). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "../common/status.h"
+#include "../io/html.h"
+#include "../io/plot.h"
+#include "check_suites.h"
+
+static char dir[64];
+
+static void setup(void) {
+  snprintf(dir, sizeof dir, "/tmp/vsph_check_plot_XXXXXX");
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+}
+
+static void teardown(void) {
+  char cmd[128];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+  if (system(cmd) != 0) fprintf(stderr, "cannot remove %s\n", dir);
+}
+
+/* Three panels of n particles: x, y, pressure, vorticity. Panel 2 holds
+ * the largest |vorticity|, at a particle far outside the box the picture
+ * is drawn in; panel 1 the largest positive value, so a limit from one
+ * panel, from the box only, or from one sign, each comes out smaller. */
+enum { NPANEL = 3, NPART = 37 };
+static double X[NPANEL][NPART], Y[NPANEL][NPART], P[NPANEL][NPART],
+    W[NPANEL][NPART];
+
+static void panels(struct vsph_plot_panel pn[NPANEL]) {
+  for (int k = 0; k < NPANEL; k++) {
+    snprintf(pn[k].file, sizeof pn[k].file, "panel_%d.csv", k);
+    snprintf(pn[k].title, sizeof pn[k].title, "panel %d", k);
+    char path[128];
+    snprintf(path, sizeof path, "%s/%s", dir, pn[k].file);
+    FILE *f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fprintf(f, "x,y,pressure,vorticity,free_surface\n");
+    for (int i = 0; i < NPART; i++) {
+      const double s = 0.1 * i - 1.8; /* inside the box [-2, 2]^2 */
+      X[k][i] = s;
+      Y[k][i] = 0.7 * s;
+      P[k][i] = 101325.0 + 2.385 * (k + 1) * sin(1.2348 * i);
+      W[k][i] = 0.6 * (k + 1) * cos(2.385 * i) - 0.3 * k;
+    }
+    X[1][5] = 7.5, Y[1][5] = -9.25; /* outside the box */
+    W[1][5] = -4.71238898;
+    W[0][9] = 1.9 * 1.2348;
+    for (int i = 0; i < NPART; i++)
+      fprintf(f, "%.17g,%.17g,%.17g,%.17g,0\n", X[k][i], Y[k][i], P[k][i],
+              W[k][i]);
+    fclose(f);
+  }
+}
+
+/* The cbrange written into DIR/NAME.gp. */
+static void script_cbrange(const char *name, double *lo, double *hi) {
+  char path[128], line[512];
+  snprintf(path, sizeof path, "%s/%s.gp", dir, name);
+  FILE *f = fopen(path, "r");
+  ck_assert_ptr_nonnull(f);
+  int found = 0;
+  while (fgets(line, sizeof line, f))
+    if (sscanf(line, "set cbrange [%lf:%lf]", lo, hi) == 2) found++;
+  fclose(f);
+  ck_assert_int_eq(found, 1); /* one scale for every panel */
+}
+
+static int exists(const char *name, const char *ext, const char *magic) {
+  char path[160], buf[16] = {0};
+  snprintf(path, sizeof path, "%s/%s.%s", dir, name, ext);
+  FILE *f = fopen(path, "rb");
+  if (!f) return 0;
+  const size_t n = fread(buf, 1, sizeof buf - 1, f);
+  fclose(f);
+  return n >= strlen(magic) && !memcmp(buf, magic, strlen(magic));
+}
+
+START_TEST(test_vorticity_limit_all_panels) {
+  struct vsph_plot_panel pn[NPANEL];
+  panels(pn);
+  double M = 0.0; /* independently: the largest |vorticity| of all */
+  for (int k = 0; k < NPANEL; k++)
+    for (int i = 0; i < NPART; i++) M = fmax(M, fabs(W[k][i]));
+  const double box[4] = {-2.0, 2.0, -2.0, 2.0};
+  ck_assert_int_eq(vsph_plot_particles(dir, "pic_w", "vorticity", pn, NPANEL, 4,
+                                       "ω (1/s)", 1, box, NULL),
+                   VSPH_OK);
+  double lo, hi;
+  script_cbrange("pic_w", &lo, &hi);
+  /* exact: the CSV holds %.17g (a double's round trip) and the script
+   * writes the limit with %.17g too, so nothing rounds on the way */
+  ck_assert_double_eq(hi, M);
+  ck_assert_double_eq(lo, -M);
+  ck_assert(exists("pic_w", "png", "\x89PNG"));
+  ck_assert(exists("pic_w", "svg", "<?xml"));
+  ck_assert(exists("pic_w", "pdf", "%PDF"));
+}
+END_TEST
+
+START_TEST(test_pressure_range_all_panels) {
+  struct vsph_plot_panel pn[NPANEL];
+  panels(pn);
+  double lo = INFINITY, hi = -INFINITY; /* independently, every panel */
+  for (int k = 0; k < NPANEL; k++)
+    for (int i = 0; i < NPART; i++)
+      lo = fmin(lo, P[k][i]), hi = fmax(hi, P[k][i]);
+  ck_assert_int_eq(vsph_plot_particles(dir, "pic_p", "pressure", pn, NPANEL, 3,
+                                       "p (Pa)", 0, NULL, NULL),
+                   VSPH_OK);
+  double glo, ghi;
+  script_cbrange("pic_p", &glo, &ghi);
+  ck_assert_double_eq(glo, lo); /* exact, as above */
+  ck_assert_double_eq(ghi, hi);
+}
+END_TEST
+
+START_TEST(test_figure_three_formats) {
+  char path[128];
+  snprintf(path, sizeof path, "%s/line.csv", dir);
+  FILE *f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fprintf(f, "h,err\n");
+  for (int i = 0; i < 5; i++) /* a third of a decade, and one rounding */
+    fprintf(f, "%.6g,%.6g\n", 0.1 / (1 << i), i == 4 ? 2.385e-18 : 1.2348 + i);
+  fclose(f);
+  struct vsph_plot pl;
+  vsph_plot_init(&pl, dir, "fig_line", "η_{num} against h", "h (m)", "ν");
+  pl.logx = pl.logy = 1;
+  pl.rounding = 1e-13;
+  ck_assert_int_eq(
+      vsph_plot_add(&pl, "line.csv", "1:2", "P_{visc}", "linespoints lt 1"),
+      VSPH_OK);
+  ck_assert_int_eq(vsph_plot_write(&pl), VSPH_OK);
+  ck_assert(exists("fig_line", "png", "\x89PNG"));
+  ck_assert(exists("fig_line", "svg", "<?xml"));
+  ck_assert(exists("fig_line", "pdf", "%PDF"));
+  /* gnuplot said nothing: no warning, no error */
+  char log[256];
+  snprintf(log, sizeof log, "%s/fig_line.log", dir);
+  vsph_test_slurp(log, path, sizeof path);
+  ck_assert_str_eq(path, "");
+}
+END_TEST
+
+START_TEST(test_html_embeds_svg) {
+  char path[128];
+  snprintf(path, sizeof path, "%s/d.csv", dir);
+  FILE *f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fprintf(f, "x,y\n1.2348,2.385\n2.385,1.2348\n");
+  fclose(f);
+  struct vsph_plot pl;
+  vsph_plot_init(&pl, dir, "fig_d", "d", "x (m)", "y (m)");
+  ck_assert_int_eq(vsph_plot_add(&pl, "d.csv", "1:2", "d", "lines"), VSPH_OK);
+  ck_assert_int_eq(vsph_plot_write(&pl), VSPH_OK);
+  snprintf(path, sizeof path, "%s/r.md", dir);
+  f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fprintf(f, "![d](fig_d.svg)\n");
+  fclose(f);
+  ck_assert_int_eq(vsph_html_render(dir, "r.md", "r.html", "r"), VSPH_OK);
+  static char html[1 << 16];
+  snprintf(path, sizeof path, "%s/r.html", dir);
+  vsph_test_slurp(path, html, sizeof html);
+  /* the SVG itself, embedded, not a link to the file */
+  ck_assert_ptr_nonnull(strstr(html, "src=\"data:image/svg+xml;base64,"));
+  ck_assert_ptr_null(strstr(html, "src=\"fig_d.svg\""));
+}
+END_TEST
+
+START_TEST(test_plain_text) {
+  char out[64];
+  vsph_plot_plain(out, sizeof out, "E_{k,ref}/E_{k,ref}(0), u_θ, 10^{-13}");
+  ck_assert_str_eq(out, "E_k,ref/E_k,ref(0), u_θ, 10^-13");
+  vsph_plot_plain(out, sizeof out, "{a_{b}} c^{d{e}}");
+  ck_assert_str_eq(out, "{a_b} c^d{e}");
+  vsph_plot_plain(out, 5, "P_{visc}");
+  ck_assert_str_eq(out, "P_vi");
+}
+END_TEST
+
+START_TEST(test_palette_distinct) {
+  for (size_t a = 0; a < VSPH_PLOT_NSTYLES; a++)
+    for (size_t b = a + 1; b < VSPH_PLOT_NSTYLES; b++) {
+      ck_assert_str_ne(vsph_plot_colour(a), vsph_plot_colour(b));
+      ck_assert_int_ne(vsph_plot_point(a), vsph_plot_point(b));
+    }
+  /* the formulations' colours stay the report's: MGF blue, PVWF green */
+  ck_assert_str_eq(vsph_plot_colour(0), "#1f77b4");
+  ck_assert_str_eq(vsph_plot_colour(2), "#2ca02c");
+  ck_assert_str_eq(vsph_plot_colour(VSPH_PLOT_NSTYLES), vsph_plot_colour(0));
+}
+END_TEST
+
+START_TEST(test_particles_errors) {
+  vsph_test_silence();
+  struct vsph_plot_panel pn[1] = {{"missing.csv", "none"}};
+  ck_assert_int_eq(
+      vsph_plot_particles(dir, "x", "x", pn, 0, 4, "", 1, NULL, NULL),
+      VSPH_EINVAL);
+  ck_assert_int_eq(
+      vsph_plot_particles(dir, "x", "x", pn, 1, 4, "", 1, NULL, NULL),
+      VSPH_EIO);
+}
+END_TEST
+
+Suite *vsph_plot_suite(void) {
+  Suite *s = suite_create("plot");
+  TCase *tc = tcase_create("core");
+  tcase_add_checked_fixture(tc, setup, teardown);
+  /* gnuplot makes three files per figure: a few tenths of a second each */
+  tcase_set_timeout(tc, 60);
+  tcase_add_test(tc, test_vorticity_limit_all_panels);
+  tcase_add_test(tc, test_pressure_range_all_panels);
+  tcase_add_test(tc, test_figure_three_formats);
+  tcase_add_test(tc, test_html_embeds_svg);
+  tcase_add_test(tc, test_plain_text);
+  tcase_add_test(tc, test_palette_distinct);
+  tcase_add_test(tc, test_particles_errors);
+  suite_add_tcase(s, tc);
+  return s;
+}
