@@ -890,7 +890,8 @@ int vsph_report_channel_claims(struct vsph_report *R) {
            100 * last(&c.cou[VSPH_VISCOUS_TAKEDA], "u_err"));
   if (!st)
     st = vsph_report_claim(
-        R, "Couette profiles track Morris' series to steady state (Vukčević §4)",
+        R,
+        "Couette profiles track Morris' series to steady state (Vukčević §4)",
         "good agreement, steady by about 1 s", ours,
         all_ok && worst < 0.01 ? "reproduced" : "differs");
   /* the cavity at Re 100: the finest quick run's distance from Ghia et

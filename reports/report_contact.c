@@ -570,7 +570,8 @@ int vsph_report_contact_write(struct vsph_report *R) {
   /* Table: alpha = 0.5, both kernels */
   FILE *md = R->md;
   fprintf(md,
-          "| kernel | Parshikov Table 1, lead | Parshikov, 18 materials | lattice sum | "
+          "| kernel | Parshikov Table 1, lead | Parshikov, 18 materials | "
+          "lattice sum | "
           "measured, static lattice | measured, +-50 m/s | measured, +-500 "
           "m/s | the same, u_y fit |\n"
           "|:---|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -751,10 +752,11 @@ int vsph_report_contact_claims(struct vsph_report *R) {
            "alpha = 0.5-1.0: measured within %.0f %% of (37) at every alpha",
            100 * dev);
   if (!st)
-    st = vsph_report_claim(
-        R, "eta_num(alpha) follows the two-piece fit of eq. (37) (Parshikov Fig. 4)",
-        "two linear pieces meeting at alpha = 0.55", ours,
-        dev < 0.15 ? "reproduced (within 15 %)" : "differs");
+    st = vsph_report_claim(R,
+                           "eta_num(alpha) follows the two-piece fit of eq. "
+                           "(37) (Parshikov Fig. 4)",
+                           "two linear pieces meeting at alpha = 0.55", ours,
+                           dev < 0.15 ? "reproduced (within 15 %)" : "differs");
   snprintf(ours, sizeof ours,
            "the fitted nu varies by %.1f %% over t = 1.5-4.5 ns (zeta = 0) and "
            "%.1f %% over 2.3-14 ns (zeta = 1)",
@@ -789,7 +791,8 @@ int vsph_report_contact_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Two fluids (paraffin | glycerol): with zeta = 1 the interface "
-        "moves at the effusivity-weighted velocity of eq. (27) (Parshikov Fig. 7)",
+        "moves at the effusivity-weighted velocity of eq. (27) (Parshikov Fig. "
+        "7)",
         "U* = 0.669 U0 (eta_paraffin = 80 mPa s)", ours,
         fabs(nb.ustar[0][0] - nb.ustar_exact[0]) < 0.05 ? "reproduced"
                                                         : "differs");
@@ -814,7 +817,8 @@ int vsph_report_contact_claims(struct vsph_report *R) {
     st = vsph_report_claim(
         R,
         "Drag on a periodic row of cylinders at Re = 0.005: uncorrected "
-        "2.5-3.4 times theory, corrected within +13 % to +33 % (Parshikov Table "
+        "2.5-3.4 times theory, corrected within +13 % to +33 % (Parshikov "
+        "Table "
         "2)",
         "glycerol 3.40 and 1.33, paraffin 2.50 and 1.13 (d/S = 0.5)", ours,
         cy.ratio[CY_Z1_40] < 1.35 && cy.ratio[CY_P1_40] < 1.35 &&
