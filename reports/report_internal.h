@@ -221,11 +221,12 @@ struct vsph_report_eta {
 
 /* The wall time left of @p n runs, in the order they start, @p width at a
  * time: each run not done takes (its cost) x (the seconds per unit of cost
- * that the finished runs of its family took; of all finished runs where
- * its family has none finished yet), less what it has run; the runs are
- * laid on the @p width lanes in their order, each on the lane free first.
- * @return the seconds left, or -1 while no run has finished (nothing to
- * measure a rate by). */
+ * that the finished runs of its family took; where its family has none
+ * finished yet, the slowest family's: in this suite the families measured
+ * last are the contact scheme's, the costliest per unit), less what it has
+ * run; the runs are laid on the @p width lanes in their order, each on the
+ * lane free first. @return the seconds left, or -1 while no run has
+ * finished (nothing to measure a rate by). */
 double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
                             size_t width);
 

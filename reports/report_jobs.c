@@ -382,17 +382,12 @@ int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
 
 double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
                             size_t width) {
-  double cost_all = 0.0, wall_all = 0.0;
-  for (size_t k = 0; k < n; k++)
-    if (r[k].state == VSPH_REPORT_ETA_DONE) {
-      cost_all += r[k].cost;
-      wall_all += r[k].wall;
-    }
-  if (cost_all <= 0.0 || width < 1) return -1.0;
-  double lane[64] = {0.0}; /* when each lane is free, from now */
-  const size_t w = width < 64 ? width : 64;
+  /* each run's family rate (seconds per unit of cost), the slowest of
+   * them for a family with no finished run */
+  double slowest = -1.0;
+  double *rate = calloc(n ? n : 1, sizeof *rate);
+  if (!rate) return -1.0;
   for (size_t k = 0; k < n; k++) {
-    if (r[k].state == VSPH_REPORT_ETA_DONE) continue;
     double c = 0.0, t = 0.0; /* the family's finished runs */
     for (size_t i = 0; i < n; i++)
       if (r[i].state == VSPH_REPORT_ETA_DONE &&
@@ -400,8 +395,14 @@ double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
         c += r[i].cost;
         t += r[i].wall;
       }
-    const double rate = c > 0.0 ? t / c : wall_all / cost_all;
-    double need = rate * r[k].cost;
+    rate[k] = c > 0.0 ? t / c : -1.0;
+    slowest = fmax(slowest, rate[k]);
+  }
+  double lane[64] = {0.0}; /* when each lane is free, from now */
+  const size_t w = width < 64 ? width : 64;
+  for (size_t k = 0; k < n && slowest >= 0.0 && w > 0; k++) {
+    if (r[k].state == VSPH_REPORT_ETA_DONE) continue;
+    double need = (rate[k] >= 0.0 ? rate[k] : slowest) * r[k].cost;
     if (r[k].state == VSPH_REPORT_ETA_RUNNING)
       need = fmax(need - r[k].wall, 0.0);
     size_t first = 0; /* the lane free first takes it */
@@ -409,6 +410,8 @@ double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
       if (lane[i] < lane[first]) first = i;
     lane[first] += need;
   }
+  free(rate);
+  if (slowest < 0.0 || w == 0) return -1.0;
   double left = 0.0;
   for (size_t i = 0; i < w; i++) left = fmax(left, lane[i]);
   return left;
