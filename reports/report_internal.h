@@ -215,18 +215,22 @@ enum {
 struct vsph_report_eta {
   double cost;        /* the plan's estimate (particles x neighbours x steps) */
   double wall;        /* DONE: its wall time; RUNNING: its time so far */
+  double ended;       /* DONE: when it finished (any clock) */
   int state;          /* VSPH_REPORT_ETA_* */
   const char *family; /* runs of one family share a rate */
 };
 
 /* The wall time left of @p n runs, in the order they start, @p width at a
- * time: each run not done takes (its cost) x (the seconds per unit of cost
- * that the finished runs of its family took; where its family has none
- * finished yet, the slowest family's: in this suite the families measured
+ * time. Each run not done takes (its cost) x (the seconds per unit of
+ * cost of the run of its family that finished last: the runs go
+ * costliest first, so that is the finished run nearest in size, and a
+ * small run's fixed costs weigh more per unit; where its family has none
+ * finished yet, the slowest such rate: in this suite the families measured
  * last are the contact scheme's, the costliest per unit), less what it has
- * run; the runs are laid on the @p width lanes in their order, each on the
- * lane free first. @return the seconds left, or -1 while no run has
- * finished (nothing to measure a rate by). */
+ * run. The runs are laid on the @p width lanes in their order, each on
+ * the lane free first. A finished run of cost 0 measures nothing (a
+ * failed one). @return the seconds left, or -1 while no run has finished
+ * (nothing to measure a rate by). */
 double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
                             size_t width);
 

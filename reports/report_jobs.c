@@ -388,14 +388,13 @@ double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
   double *rate = calloc(n ? n : 1, sizeof *rate);
   if (!rate) return -1.0;
   for (size_t k = 0; k < n; k++) {
-    double c = 0.0, t = 0.0; /* the family's finished runs */
+    size_t last = n; /* the family's run that finished last */
     for (size_t i = 0; i < n; i++)
-      if (r[i].state == VSPH_REPORT_ETA_DONE &&
-          !strcmp(r[i].family, r[k].family)) {
-        c += r[i].cost;
-        t += r[i].wall;
-      }
-    rate[k] = c > 0.0 ? t / c : -1.0;
+      if (r[i].state == VSPH_REPORT_ETA_DONE && r[i].cost > 0.0 &&
+          !strcmp(r[i].family, r[k].family) &&
+          (last == n || r[i].ended > r[last].ended))
+        last = i;
+    rate[k] = last < n ? r[last].wall / r[last].cost : -1.0;
     slowest = fmax(slowest, rate[k]);
   }
   double lane[64] = {0.0}; /* when each lane is free, from now */
@@ -505,6 +504,7 @@ int vsph_report_jobs_local(struct vsph_report *R, int width) {
       const double now = omp_get_wtime();
       if (eta) { /* a failed run measures nothing */
         eta[k].state = VSPH_REPORT_ETA_DONE;
+        eta[k].ended = now - t0;
         eta[k].wall = s ? 0.0 : now - t_start;
         eta[k].cost = s ? 0.0 : eta[k].cost;
       }
@@ -684,6 +684,7 @@ int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
         status[k] == 0 && vsph_rundir_key_matches(order[k]->dir, order[k]->key);
     const double now = omp_get_wtime(), el = now - t0;
     eta[k].state = VSPH_REPORT_ETA_DONE; /* a failed run measures nothing */
+    eta[k].ended = el;
     eta[k].wall = order[k]->cached ? now - t1[k] : 0.0;
     eta[k].cost = order[k]->cached ? eta[k].cost : 0.0;
     if (order[k]->cached) {

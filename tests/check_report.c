@@ -82,27 +82,29 @@ START_TEST(test_claims_tally) {
 }
 END_TEST
 
-/* The time left of the report's runs, worked by hand: finished runs of
- * family A took 2 s per unit of cost, of B 4 s, so a family with none
- * finished takes the slowest rate, 4 s. */
+/* The time left of the report's runs, worked by hand: the run of family
+ * A that finished last took 2 s per unit of cost (an earlier one 1 s:
+ * the last one counts), of B 4 s, so a family with none finished takes
+ * the slowest rate, 4 s. */
 START_TEST(test_time_left) {
   struct vsph_report_eta r[] = {
-      {1.0, 2.0, VSPH_REPORT_ETA_DONE, "A"},
-      {1.0, 4.0, VSPH_REPORT_ETA_DONE, "B"},
-      {3.0, 1.0, VSPH_REPORT_ETA_RUNNING, "A"}, /* 3 x 2 - 1 = 5 s left */
-      {2.0, 0.0, VSPH_REPORT_ETA_WAITING, "C"}, /* 2 x 4 = 8 s */
-      {1.0, 0.0, VSPH_REPORT_ETA_WAITING, "A"}, /* 1 x 2 = 2 s */
+      {2.0, 2.0, 0.5, VSPH_REPORT_ETA_DONE, "A"},
+      {1.0, 2.0, 3.0, VSPH_REPORT_ETA_DONE, "A"},
+      {1.0, 4.0, 2.0, VSPH_REPORT_ETA_DONE, "B"},
+      {3.0, 1.0, 0.0, VSPH_REPORT_ETA_RUNNING, "A"}, /* 3 x 2 - 1 = 5 s */
+      {2.0, 0.0, 0.0, VSPH_REPORT_ETA_WAITING, "C"}, /* 2 x 4 = 8 s */
+      {1.0, 0.0, 0.0, VSPH_REPORT_ETA_WAITING, "A"}, /* 1 x 2 = 2 s */
   };
   /* two lanes: the running run holds one (5 s), C takes the other
    * (8 s), A the first free (5 + 2 = 7 s): 8 s; one lane: 5 + 8 + 2 */
-  ck_assert_double_eq_tol(vsph_report_jobs_eta(r, 5, 2), 8.0, 1e-12);
-  ck_assert_double_eq_tol(vsph_report_jobs_eta(r, 5, 1), 15.0, 1e-12);
+  ck_assert_double_eq_tol(vsph_report_jobs_eta(r, 6, 2), 8.0, 1e-12);
+  ck_assert_double_eq_tol(vsph_report_jobs_eta(r, 6, 1), 15.0, 1e-12);
   /* a running run past its estimate has nothing left, not less */
-  r[2].wall = 9.0;
-  ck_assert_double_eq_tol(vsph_report_jobs_eta(r, 5, 1), 10.0, 1e-12);
+  r[3].wall = 9.0;
+  ck_assert_double_eq_tol(vsph_report_jobs_eta(r, 6, 1), 10.0, 1e-12);
   /* nothing finished: no rate measured, no estimate */
-  r[0].state = r[1].state = VSPH_REPORT_ETA_WAITING;
-  ck_assert(vsph_report_jobs_eta(r, 5, 2) < 0.0);
+  r[0].state = r[1].state = r[2].state = VSPH_REPORT_ETA_WAITING;
+  ck_assert(vsph_report_jobs_eta(r, 6, 2) < 0.0);
 }
 END_TEST
 
