@@ -99,6 +99,12 @@ int vsph_report_part_find(const char *name) {
 int vsph_report_claim(struct vsph_report *R, const char *claim,
                       const char *paper, const char *ours,
                       const char *verdict) {
+  /* every verdict says its class first, so the tally cannot misread one */
+  if (vsph_report_claims_class(verdict) < 0)
+    VSPH_FAIL(VSPH_EINVAL,
+              "claim '%.60s': its verdict '%.40s' does not start with "
+              "reproduced, partly, differs, not reproduced or not tested",
+              claim, verdict);
   if (R->nclaims == R->cap_claims) {
     const size_t cap = R->cap_claims ? 2 * R->cap_claims : 32;
     struct vsph_report_claim *c = realloc(R->claims, cap * sizeof *c);

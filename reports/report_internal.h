@@ -445,8 +445,8 @@ enum {
 };
 
 /* A verdict's class, from its first words: "reproduced...", "partly...",
- * "not tested..."; anything else ("not reproduced...", "differs...")
- * differs. */
+ * "differs..." or "not reproduced...", "not tested..."; -1 for any other
+ * start (vsph_report_claim refuses such a verdict). */
 int vsph_report_claims_class(const char *verdict);
 
 /* The tally of R->claims by class, then the claims table (each verdict

@@ -22,12 +22,21 @@ START_TEST(test_verdict_classes) {
       {"partly, at H/dx = 80: MEAF fails", VSPH_REPORT_PARTLY},
       {"not reproduced at H/dx = 80", VSPH_REPORT_DIFFERS},
       {"differs by construction", VSPH_REPORT_DIFFERS},
-      {"the reference differs by more than 5 points", VSPH_REPORT_DIFFERS},
+      {"differs: the reference differs by 6 points", VSPH_REPORT_DIFFERS},
+      {"ranking reproduced", -1}, /* no class word first: refused */
+      {"the reference differs", -1},
       {"not tested: the cavity needs wall particles", VSPH_REPORT_NOT_TESTED}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
     ck_assert_msg(vsph_report_claims_class(cases[k].verdict) == cases[k].cls,
                   "'%s' classed %d, not %d", cases[k].verdict,
                   vsph_report_claims_class(cases[k].verdict), cases[k].cls);
+  /* the claims table takes no verdict without its class word first */
+  struct vsph_report R;
+  memset(&R, 0, sizeof R);
+  vsph_test_silence();
+  ck_assert_int_ne(vsph_report_claim(&R, "c", "p", "o", "ranking reproduced"),
+                   0);
+  ck_assert_uint_eq(R.nclaims, 0);
 }
 END_TEST
 
@@ -77,6 +86,11 @@ START_TEST(test_claims_tally) {
   ck_assert_uint_eq(count(text, "class=\"v v-diff\""), 1 + 2);
   ck_assert_uint_eq(count(text, "class=\"v v-none\""), 1 + 1);
   ck_assert(strstr(text, "differs</span> not reproduced at H/dx = 80 |"));
+  /* the class's own word once: "reproduced (within 3 %)" -> the mark and
+   * "(within 3 %)"; "partly: see ..." -> the mark and "see ..." */
+  ck_assert_msg(strstr(text, "reproduced</span> (within 3 %) |"), "%s", text);
+  ck_assert_msg(strstr(text, "partly</span> see section 11 |"), "%s", text);
+  ck_assert_msg(strstr(text, "differs</span> E is closer |"), "%s", text);
   free(text);
   free(R.claims);
 }
