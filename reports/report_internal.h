@@ -213,7 +213,8 @@ enum {
   VSPH_REPORT_ETA_DONE
 };
 struct vsph_report_eta {
-  double cost;        /* the plan's estimate (particles x neighbours x steps) */
+  double cost;        /* particles x neighbours x steps: DONE, the steps it took
+                         (0: it failed and measures nothing); else the plan's */
   double wall;        /* DONE: its wall time; RUNNING: its time so far */
   double ended;       /* DONE: when it finished (any clock) */
   int state;          /* VSPH_REPORT_ETA_* */
@@ -221,16 +222,15 @@ struct vsph_report_eta {
 };
 
 /* The wall time left of @p n runs, in the order they start, @p width at a
- * time. Each run not done takes (its cost) x (the seconds per unit of
- * cost of the run of its family that finished last: the runs go
- * costliest first, so that is the finished run nearest in size, and a
- * small run's fixed costs weigh more per unit; where its family has none
- * finished yet, the slowest such rate: in this suite the families measured
- * last are the contact scheme's, the costliest per unit), less what it has
- * run. The runs are laid on the @p width lanes in their order, each on
- * the lane free first. A finished run of cost 0 measures nothing (a
- * failed one). @return the seconds left, or -1 while no run has finished
- * (nothing to measure a rate by). */
+ * time. A run not done takes what its family's last two finished runs
+ * say: the line through their (cost, wall time), a fixed part and a rate,
+ * where both come out non-negative (a small run's fixed costs weigh more),
+ * else the last one's rate (the runs go costliest first, so the last is
+ * the nearest in size); a family with no finished run takes all finished
+ * runs' wall time over their cost. A running run's time so far is taken
+ * off. The runs are laid on the @p width lanes in their order, each on
+ * the lane free first. @return the seconds left, or -1 while no run has
+ * finished (nothing to measure a rate by). */
 double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
                             size_t width);
 

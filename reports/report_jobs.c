@@ -22,6 +22,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "../analysis/contact.h"
 #include "../common/consts.h"
 #include "../common/params.h"
 #include "../common/status.h"
@@ -382,26 +383,43 @@ int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
 
 double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
                             size_t width) {
-  /* each run's family rate (seconds per unit of cost), the slowest of
-   * them for a family with no finished run */
-  double slowest = -1.0;
-  double *rate = calloc(n ? n : 1, sizeof *rate);
-  if (!rate) return -1.0;
-  for (size_t k = 0; k < n; k++) {
-    size_t last = n; /* the family's run that finished last */
-    for (size_t i = 0; i < n; i++)
-      if (r[i].state == VSPH_REPORT_ETA_DONE && r[i].cost > 0.0 &&
-          !strcmp(r[i].family, r[k].family) &&
-          (last == n || r[i].ended > r[last].ended))
-        last = i;
-    rate[k] = last < n ? r[last].wall / r[last].cost : -1.0;
-    slowest = fmax(slowest, rate[k]);
-  }
+  double cost_all = 0.0, wall_all = 0.0; /* every finished run */
+  for (size_t k = 0; k < n; k++)
+    if (r[k].state == VSPH_REPORT_ETA_DONE && r[k].cost > 0.0) {
+      cost_all += r[k].cost;
+      wall_all += r[k].wall;
+    }
+  if (cost_all <= 0.0 || width < 1) return -1.0;
   double lane[64] = {0.0}; /* when each lane is free, from now */
   const size_t w = width < 64 ? width : 64;
-  for (size_t k = 0; k < n && slowest >= 0.0 && w > 0; k++) {
+  for (size_t k = 0; k < n; k++) {
     if (r[k].state == VSPH_REPORT_ETA_DONE) continue;
-    double need = (rate[k] >= 0.0 ? rate[k] : slowest) * r[k].cost;
+    size_t last = n, prev = n; /* the family's last two finished runs */
+    for (size_t i = 0; i < n; i++) {
+      if (r[i].state != VSPH_REPORT_ETA_DONE || r[i].cost <= 0.0 ||
+          strcmp(r[i].family, r[k].family))
+        continue;
+      if (last == n || r[i].ended > r[last].ended) {
+        prev = last;
+        last = i;
+      } else if (prev == n || r[i].ended > r[prev].ended) {
+        prev = i;
+      }
+    }
+    double fixed = 0.0, rate = wall_all / cost_all;
+    if (last < n) rate = r[last].wall / r[last].cost;
+    if (prev < n && r[prev].cost != r[last].cost) {
+      /* the line through the two: a fixed part and a rate, where both
+       * come out non-negative */
+      const double b =
+          (r[last].wall - r[prev].wall) / (r[last].cost - r[prev].cost);
+      const double a = r[last].wall - b * r[last].cost;
+      if (b >= 0.0 && a >= 0.0) {
+        fixed = a;
+        rate = b;
+      }
+    }
+    double need = fixed + rate * r[k].cost;
     if (r[k].state == VSPH_REPORT_ETA_RUNNING)
       need = fmax(need - r[k].wall, 0.0);
     size_t first = 0; /* the lane free first takes it */
@@ -409,11 +427,29 @@ double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
       if (lane[i] < lane[first]) first = i;
     lane[first] += need;
   }
-  free(rate);
-  if (slowest < 0.0 || w == 0) return -1.0;
   double left = 0.0;
   for (size_t i = 0; i < w; i++) left = fmax(left, lane[i]);
   return left;
+}
+
+/* The cost a finished run actually had: its particles x neighbours x the
+ * steps it took (run.json, or the shear test's summary.csv), which a run
+ * stopped early (a stability map's) or whose time step changed makes
+ * differ from the plan's estimate; the estimate where neither is read. */
+static double cost_taken(const struct vsph_report_job *j) {
+  char path[600];
+  double steps = -1.0;
+  if (j->kind == VSPH_REPORT_JOB_RUN) {
+    snprintf(path, sizeof path, "%s/run.json", j->dir);
+    cJSON *o = vsph_json_read(path);
+    if (o) steps = vsph_json_get_number(o, "steps", -1.0);
+    cJSON_Delete(o);
+  } else {
+    struct vsph_contact_shear cs;
+    snprintf(path, sizeof path, "%s/summary.csv", j->dir);
+    if (vsph_shear_csv_load(path, &cs) == VSPH_OK) steps = (double)cs.steps;
+  }
+  return steps > 0.0 ? j->particles * j->neighbours * steps : cost_of(j);
 }
 
 /* The missing jobs of the plan, the costliest first. */
@@ -506,7 +542,7 @@ int vsph_report_jobs_local(struct vsph_report *R, int width) {
         eta[k].state = VSPH_REPORT_ETA_DONE;
         eta[k].ended = now - t0;
         eta[k].wall = s ? 0.0 : now - t_start;
-        eta[k].cost = s ? 0.0 : eta[k].cost;
+        eta[k].cost = s ? 0.0 : cost_taken(order[k]);
       }
       char left[64] = "";
       if (t1) eta_text(eta, t1, m, (size_t)width, now, left, sizeof left);
@@ -686,7 +722,7 @@ int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
     eta[k].state = VSPH_REPORT_ETA_DONE; /* a failed run measures nothing */
     eta[k].ended = el;
     eta[k].wall = order[k]->cached ? now - t1[k] : 0.0;
-    eta[k].cost = order[k]->cached ? eta[k].cost : 0.0;
+    eta[k].cost = order[k]->cached ? cost_taken(order[k]) : 0.0;
     if (order[k]->cached) {
       char v[96], left[64];
       verdict(order[k], v, sizeof v);
