@@ -390,8 +390,9 @@ double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
       wall_all += r[k].wall;
     }
   if (cost_all <= 0.0 || width < 1) return -1.0;
-  double lane[64] = {0.0}; /* when each lane is free, from now */
-  const size_t w = width < 64 ? width : 64;
+  const size_t w = width;
+  double *lane = calloc(w, sizeof *lane); /* when each is free, from now */
+  if (!lane) return -1.0;
   for (size_t k = 0; k < n; k++) {
     if (r[k].state == VSPH_REPORT_ETA_DONE) continue;
     size_t last = n, prev = n; /* the family's last two finished runs */
@@ -429,6 +430,7 @@ double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
   }
   double left = 0.0;
   for (size_t i = 0; i < w; i++) left = fmax(left, lane[i]);
+  free(lane);
   return left;
 }
 
