@@ -110,6 +110,10 @@ static int pass_over(const struct vsph_args_cmd *c, int argc, char **argv,
     if (i + 1 >= argc) return vsph_args_fail(c->name, "%s needs a value", a);
     const char *v = argv[++i];
     const int kind = sp ? (int)sp->kind : -1;
+    /* no option of vsph means anything by an empty value: an empty --out
+     * would name the current folder's parent chain (`/` for a report) */
+    if (pass == 0 && kind == VSPH_ARGS_STRING && !*v)
+      return vsph_args_fail(c->name, "%s: an empty value", a);
     if (pass == 0 && kind == VSPH_ARGS_PARAMS) {
       if (vsph_params_read(prm, v))
         return vsph_args_status(c->name, VSPH_EINVAL);

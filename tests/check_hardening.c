@@ -326,6 +326,44 @@ START_TEST(test_contact_inputs) {
 }
 END_TEST
 
+/* Issue 23, defect 2: an empty value ("--out ''") is refused before
+ * anything is written (an empty report folder wrote into `/`). Each case
+ * runs in an empty folder of its own, which must stay empty. */
+START_TEST(test_empty_values) {
+  /* the harmless ones first: without the check, the first failure stops
+   * the test before a report could write into `/` */
+  static const char *const cases[] = {
+      "contact --csv ''",
+      "report --only '' --out vsph_never",
+      "report --slurm --partition '' --out vsph_never",
+      "report --slurm --time '' --out vsph_never",
+      "run poiseuille --out ''",
+      "report --only tensors --out ''"};
+  char bin[4096], cwd[2048]; /* VSPH_BIN made absolute: the cases cd */
+  const char *vb = getenv("VSPH_BIN");
+  ck_assert_ptr_nonnull(getcwd(cwd, sizeof cwd));
+  snprintf(bin, sizeof bin, "%s%s%s", vb[0] == '/' ? "" : cwd,
+           vb[0] == '/' ? "" : "/", vb);
+  char dir[] = "/tmp/vsph_emptyXXXXXX";
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    char script[4400];
+    snprintf(script, sizeof script, "cd '%s' && exec '%s' %s", dir, bin,
+             cases[k]);
+    struct vsph_test_outcome *o = vsph_test_shell(script);
+    ck_assert_msg(o->status == 2, "'%s' exited %d", cases[k], o->status);
+    ck_assert_msg(o->err_lines == 1, "'%s' said %d lines: %s", cases[k],
+                  o->err_lines, o->err);
+    ck_assert_msg(strstr(o->err, "an empty value") != NULL, "'%s' said: %s",
+                  cases[k], o->err);
+    ck_assert_int_eq(rmdir(dir), 0); /* still empty */
+    ck_assert_int_eq(mkdir(dir, 0700), 0);
+    ck_assert_int_ne(access("/report.lock", F_OK), 0);
+  }
+  ck_assert_int_eq(rmdir(dir), 0);
+}
+END_TEST
+
 /* The report's ways of running (--plan, --jobs, --slurm, --assemble):
  * bad options give one line, exit 2 and no folder; an assembly without
  * its runs names the first missing one and writes nothing. */
@@ -412,6 +450,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_messages_name_the_problem);
   tcase_add_test(tc, test_contact_inputs);
   tcase_add_test(tc, test_report_job_inputs);
+  tcase_add_test(tc, test_empty_values);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
