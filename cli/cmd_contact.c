@@ -143,6 +143,11 @@ int vsph_cmd_contact_main(int argc, char **argv) {
       return vsph_args_fail(CMD, "--csv %s: folder '%s' is not writable", csv,
                             dir);
     }
+    const int st = vsph_files_target(csv); /* never replace a device */
+    if (st) {
+      vsph_params_free(prm);
+      return vsph_args_status(CMD, st);
+    }
   }
   if (threads > 0) omp_set_num_threads((int)threads);
   if (out) {

@@ -73,7 +73,27 @@ int vsph_files_mkdir(const char *dir) {
     *c = '/';
   }
   if (mkdir(buf, 0777) != 0 && errno != EEXIST) return mkdir_failed(buf);
+  struct stat sb; /* there already: a folder, or a link to one */
+  if (stat(buf, &sb) != 0 || !S_ISDIR(sb.st_mode))
+    VSPH_FAIL(VSPH_EINVAL, "%s exists and is not a folder", buf);
   return VSPH_OK;
+}
+
+int vsph_files_target(const char *path) {
+  struct stat sb;
+  if (lstat(path, &sb) != 0) {
+    if (errno == ENOENT) return VSPH_OK; /* nothing there yet */
+    VSPH_FAIL(VSPH_EINVAL, "%s: %s", path, strerror(errno));
+  }
+  if (S_ISREG(sb.st_mode)) return VSPH_OK;
+  const char *what = S_ISDIR(sb.st_mode)    ? "a folder"
+                     : S_ISLNK(sb.st_mode)  ? "a symbolic link"
+                     : S_ISFIFO(sb.st_mode) ? "a FIFO"
+                     : S_ISSOCK(sb.st_mode) ? "a socket"
+                                            : "a device";
+  VSPH_FAIL(VSPH_EINVAL,
+            "%s is %s, not a regular file: vsph replaces only regular files",
+            path, what);
 }
 
 char *vsph_files_slurp(const char *path, size_t *len) {

@@ -34,6 +34,14 @@ int vsph_files_write(const char *dir, const char *name, const char *text);
  *  no permission, read-only), VSPH_EIO (the device failed). */
 int vsph_files_mkdir(const char *dir);
 
+/** @brief May vsph write the file @p path (by a temporary and a rename)?
+ *  Only where nothing is there yet or a regular file is: a device, FIFO,
+ *  socket, folder or symbolic link there would be replaced by the rename
+ *  (as root, /dev/full became a regular file), so it is refused.
+ *  @return VSPH_OK, or VSPH_EINVAL (reported, naming the path and what is
+ *  there). */
+int vsph_files_target(const char *path);
+
 /** @brief A whole file as a NUL-terminated string (caller frees), its
  *  length in @p len if not NULL; NULL if it cannot be read (not reported:
  *  a missing cache file is normal). */

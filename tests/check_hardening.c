@@ -364,6 +364,60 @@ START_TEST(test_empty_values) {
 }
 END_TEST
 
+/* Issue 23, defect 1: an output that is not a regular file is refused up
+ * front and left as it was (`--csv /dev/full` became a regular file); an
+ * --out that is a file is not a folder. Stand-ins for a device: a FIFO
+ * and a symbolic link, made here. */
+START_TEST(test_special_outputs) {
+  char dir[] = "/tmp/vsph_specialXXXXXX", fifo[64], link[64], file[64], sub[64];
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  snprintf(fifo, sizeof fifo, "%s/fifo", dir);
+  snprintf(link, sizeof link, "%s/link", dir);
+  snprintf(file, sizeof file, "%s/file", dir);
+  snprintf(sub, sizeof sub, "%s/sub", dir);
+  ck_assert_int_eq(mkfifo(fifo, 0600), 0);
+  FILE *f = fopen(file, "w");
+  ck_assert_ptr_nonnull(f);
+  fputs("mine\n", f);
+  ck_assert_int_eq(fclose(f), 0);
+  ck_assert_int_eq(symlink(file, link), 0);
+  ck_assert_int_eq(mkdir(sub, 0700), 0);
+  const char *const target[] = {fifo, link, sub};
+  const char *const what[] = {"a FIFO", "a symbolic link", "a folder"};
+  for (int k = 0; k < 3; k++) {
+    char args[200];
+    snprintf(args, sizeof args, "contact --csv %s", target[k]);
+    struct vsph_test_outcome *o = vsph_test_cli(args);
+    ck_assert_msg(o->status == 2, "'%s' exited %d", args, o->status);
+    ck_assert_msg(o->err_lines == 1, "'%s' said: %s", args, o->err);
+    ck_assert_msg(strstr(o->err, what[k]) != NULL, "'%s' said: %s", args,
+                  o->err);
+  }
+  struct stat sb;
+  ck_assert_int_eq(lstat(fifo, &sb), 0);
+  ck_assert(S_ISFIFO(sb.st_mode));
+  ck_assert_int_eq(lstat(link, &sb), 0);
+  ck_assert(S_ISLNK(sb.st_mode));
+  /* an --out that is a file: refused, the file as it was (vsph contact
+   * found out only when writing, exit 1) */
+  char args[300], text[16] = "";
+  snprintf(args, sizeof args,
+           "contact --scheme contact --kernel wendland2 --alpha 0.5 --res 8 "
+           "--set Scene:Lz=4e-7 --t-end 1e-10 --out %s",
+           file);
+  struct vsph_test_outcome *o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 2, "'%s' exited %d: %s", args, o->status, o->err);
+  ck_assert_msg(strstr(o->err, "is not a folder") != NULL, "%s", o->err);
+  vsph_test_slurp(file, text, sizeof text);
+  ck_assert_str_eq(text, "mine\n");
+  ck_assert_int_eq(remove(fifo), 0);
+  ck_assert_int_eq(remove(link), 0);
+  ck_assert_int_eq(remove(file), 0);
+  ck_assert_int_eq(rmdir(sub), 0);
+  ck_assert_int_eq(rmdir(dir), 0);
+}
+END_TEST
+
 /* The report's ways of running (--plan, --jobs, --slurm, --assemble):
  * bad options give one line, exit 2 and no folder; an assembly without
  * its runs names the first missing one and writes nothing. */
@@ -451,6 +505,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_contact_inputs);
   tcase_add_test(tc, test_report_job_inputs);
   tcase_add_test(tc, test_empty_values);
+  tcase_add_test(tc, test_special_outputs);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
