@@ -11,13 +11,40 @@
 #include "../common/status.h"
 #include "../io/json.h"
 
+/* Most characters of a message printed: a value echoed in it (a scene
+ * name of 100 000 characters) is cut, the cut marked. */
+enum { SAY_MAX = 512 };
+
+/* "vsph CMD: MSG" on one line of stderr: a control character of the
+ * message (a newline in a value) is written as an escape (\n, \t, \xHH),
+ * so one message is always one line, and the message is capped. */
+static void say(const char *cmd, const char *msg) {
+  fprintf(stderr, "vsph%s%s: ", *cmd ? " " : "", cmd);
+  size_t n = 0;
+  for (const unsigned char *c = (const unsigned char *)msg; *c; c++, n++) {
+    if (n == SAY_MAX) {
+      fputs("... (cut)", stderr);
+      break;
+    }
+    if (*c == '\n')
+      fputs("\\n", stderr);
+    else if (*c == '\t')
+      fputs("\\t", stderr);
+    else if (*c < 0x20 || *c == 0x7f)
+      fprintf(stderr, "\\x%02x", *c);
+    else
+      fputc(*c, stderr);
+  }
+  fputc('\n', stderr);
+}
+
 int vsph_args_fail(const char *cmd, const char *fmt, ...) {
+  char msg[2048];
   va_list ap;
   va_start(ap, fmt);
-  fprintf(stderr, "vsph%s%s: ", *cmd ? " " : "", cmd);
-  vfprintf(stderr, fmt, ap);
-  fputc('\n', stderr);
+  vsnprintf(msg, sizeof msg, fmt, ap);
   va_end(ap);
+  say(cmd, msg);
   return VSPH_ARGS_EXIT_USAGE;
 }
 
@@ -179,8 +206,7 @@ static void cli_handler(int status, const char *file, int line,
 void vsph_args_install_handler(void) { vsph_status_set_handler(cli_handler); }
 
 int vsph_args_status(const char *cmd, int status) {
-  fprintf(stderr, "vsph %s: %s\n", cmd,
-          last_msg[0] ? last_msg : vsph_status_str(status));
+  say(cmd, last_msg[0] ? last_msg : vsph_status_str(status));
   last_msg[0] = '\0';
   return status == VSPH_EINVAL ? VSPH_ARGS_EXIT_USAGE : 1;
 }

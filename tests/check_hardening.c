@@ -418,6 +418,36 @@ START_TEST(test_special_outputs) {
 }
 END_TEST
 
+/* Issue 23, defect 10: a message is one line whatever a value holds (a
+ * newline is written \n) and capped (a 100 000-character scene name was
+ * echoed whole). */
+START_TEST(test_messages_one_line) {
+  static const char *const cases[][2] = {
+      {"run \"$(printf 'vortex\\npatch')\"", "vortex\\npatch"},
+      {"run vortex-patch --res \"$(printf '1\\n2')\"", "Solver:res"},
+      {"run vortex-patch --set \"$(printf 'Scene:omega0=1\\t2')\"", "\\t"},
+      {"tensors --kernel \"$(printf 'a\\033[2Jb')\"", "\\x1b"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    char script[512];
+    snprintf(script, sizeof script, "exec \"$VSPH_BIN\" %s", cases[k][0]);
+    struct vsph_test_outcome *o = vsph_test_shell(script);
+    ck_assert_msg(o->status == 2, "'%s' exited %d", cases[k][0], o->status);
+    ck_assert_msg(o->err_lines == 1, "'%s' said %d lines: %s", cases[k][0],
+                  o->err_lines, o->err);
+    ck_assert_msg(strstr(o->err, cases[k][1]) != NULL, "'%s' said: %s",
+                  cases[k][0], o->err);
+  }
+  struct vsph_test_outcome *o = vsph_test_shell(
+      "exec \"$VSPH_BIN\" run \"$(head -c 100000 /dev/zero | tr '\\0' x)\"");
+  ck_assert_int_eq(o->status, 2);
+  ck_assert_int_eq(o->err_lines, 1);
+  /* "vsph run: " + at most 512 characters + "... (cut)" + newline */
+  ck_assert_msg(strlen(o->err) <= 10 + 512 + 9 + 1, "%zu characters",
+                strlen(o->err));
+  ck_assert(strstr(o->err, "... (cut)") != NULL);
+}
+END_TEST
+
 /* The report's ways of running (--plan, --jobs, --slurm, --assemble):
  * bad options give one line, exit 2 and no folder; an assembly without
  * its runs names the first missing one and writes nothing. */
@@ -506,6 +536,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_report_job_inputs);
   tcase_add_test(tc, test_empty_values);
   tcase_add_test(tc, test_special_outputs);
+  tcase_add_test(tc, test_messages_one_line);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
