@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <yaml.h>
 
 #include "status.h"
@@ -276,6 +277,15 @@ int vsph_params_read_string(struct vsph_params *prm, const char *text,
 }
 
 int vsph_params_read(struct vsph_params *prm, const char *path) {
+  /* a regular file only: opening a FIFO waits for a writer (forever), a
+   * folder "holds" LONG_MAX bytes, a device never ends */
+  struct stat sb;
+  if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode))
+    VSPH_FAIL(VSPH_EINVAL, "%s is %s, not a parameter file", path,
+              S_ISDIR(sb.st_mode)    ? "a folder"
+              : S_ISFIFO(sb.st_mode) ? "a FIFO"
+              : S_ISSOCK(sb.st_mode) ? "a socket"
+                                     : "a device");
   FILE *f = fopen(path, "rb");
   if (!f) VSPH_FAIL(VSPH_EIO, "cannot open '%s': %s", path, strerror(errno));
   /* refuse an oversized file before reading it (a pipe reports -1: read

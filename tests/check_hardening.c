@@ -418,6 +418,31 @@ START_TEST(test_special_outputs) {
 }
 END_TEST
 
+/* Issue 23, defect 10: --params that is not a regular file is refused at
+ * once, naming what it is (a folder "held 9223372036854775807 bytes", a
+ * FIFO hung waiting for a writer: `timeout` ends the case if it does). */
+START_TEST(test_params_not_a_file) {
+  char dir[] = "/tmp/vsph_paramsXXXXXX", fifo[64], script[300];
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  snprintf(fifo, sizeof fifo, "%s/p.yml", dir);
+  ck_assert_int_eq(mkfifo(fifo, 0600), 0);
+  const char *const path[] = {dir, fifo, "/dev/zero"};
+  const char *const what[] = {"a folder", "a FIFO", "a device"};
+  for (int k = 0; k < 3; k++) {
+    snprintf(script, sizeof script,
+             "exec timeout 20 \"$VSPH_BIN\" run vortex-patch --params %s "
+             "--out %s/never",
+             path[k], dir);
+    struct vsph_test_outcome *o = vsph_test_shell(script);
+    ck_assert_msg(o->status == 2, "%s: exit %d", path[k], o->status);
+    ck_assert_int_eq(o->err_lines, 1);
+    ck_assert_msg(strstr(o->err, what[k]) != NULL, "%s", o->err);
+  }
+  ck_assert_int_eq(remove(fifo), 0);
+  ck_assert_int_eq(rmdir(dir), 0); /* nothing else was made */
+}
+END_TEST
+
 /* Issue 23, defect 10: a message is one line whatever a value holds (a
  * newline is written \n) and capped (a 100 000-character scene name was
  * echoed whole). */
@@ -537,6 +562,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_empty_values);
   tcase_add_test(tc, test_special_outputs);
   tcase_add_test(tc, test_messages_one_line);
+  tcase_add_test(tc, test_params_not_a_file);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
