@@ -184,7 +184,8 @@ static int is_run_file(const char *name) {
 }
 
 /* A folder for the run: created if new; an earlier vsph run's files are
- * removed (run.json first); any other non-empty folder is refused. */
+ * removed (key.txt and run.json first); any other non-empty folder is
+ * refused before anything in it is touched. */
 static int prepare_dir(const char *dir) {
   struct stat sb;
   if (stat(dir, &sb) != 0) return vsph_files_mkdir(dir);
@@ -211,9 +212,14 @@ static int prepare_dir(const char *dir) {
               "%s is not empty and holds no vsph run (no used_parameters.yml "
               "written by vsph): choose another --out",
               dir);
-  snprintf(path, sizeof path, "%s/run.json", dir);
-  if (remove(path) != 0 && errno != ENOENT)
-    VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
+  /* the cache key first (nothing may vouch for a half-cleared folder),
+   * then run.json (nothing may call the new files ok) */
+  static const char *const first[] = {"key.txt", "run.json"};
+  for (int k = 0; k < 2; k++) {
+    snprintf(path, sizeof path, "%s/%s", dir, first[k]);
+    if (remove(path) != 0 && errno != ENOENT)
+      VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
+  }
   if (!(d = opendir(dir)))
     VSPH_FAIL(VSPH_EIO, "cannot read %s: %s", dir, strerror(errno));
   int st = VSPH_OK;
@@ -468,10 +474,11 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
     vsph_run_free(run);
     return VSPH_ELIB;
   }
-  /* Only now, with every input checked, touch the folder: key.txt first */
+  /* Only now, with every input checked, touch the folder, and only once
+   * it is known to be new, empty or an earlier vsph run's (prepare_dir
+   * removes that run's key.txt first): a refused run changes nothing */
   struct outputs o = {.dir = res->dir};
-  if ((key && (st = vsph_rundir_key_remove(res->dir))) ||
-      (st = prepare_dir(res->dir)) || (st = write_used(prm, res->dir)))
+  if ((st = prepare_dir(res->dir)) || (st = write_used(prm, res->dir)))
     goto done;
   o.csv = live_open(&o, "energy.csv",
                     "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,"

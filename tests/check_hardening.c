@@ -418,6 +418,36 @@ START_TEST(test_special_outputs) {
 }
 END_TEST
 
+/* Issue 23, defect 4: a run refused for its folder changes nothing in it
+ * (it removed the folder's key.txt before refusing). */
+START_TEST(test_refused_run_deletes_nothing) {
+  char dir[] = "/tmp/vsph_refusedXXXXXX", key[64], mine[64], args[200];
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  snprintf(key, sizeof key, "%s/key.txt", dir);
+  snprintf(mine, sizeof mine, "%s/mine.dat", dir);
+  FILE *f = fopen(key, "w");
+  ck_assert_ptr_nonnull(f);
+  fputs("x\n", f);
+  ck_assert_int_eq(fclose(f), 0);
+  ck_assert_ptr_nonnull(f = fopen(mine, "w"));
+  fputs("y\n", f);
+  ck_assert_int_eq(fclose(f), 0);
+  snprintf(args, sizeof args, "run poiseuille --cache --t-end 1e-9 --out %s",
+           dir);
+  struct vsph_test_outcome *o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 2, "exit %d: %s", o->status, o->err);
+  ck_assert_msg(strstr(o->err, "holds no vsph run") != NULL, "%s", o->err);
+  char text[16] = "";
+  vsph_test_slurp(key, text, sizeof text);
+  ck_assert_str_eq(text, "x\n");
+  vsph_test_slurp(mine, text, sizeof text);
+  ck_assert_str_eq(text, "y\n");
+  ck_assert_int_eq(remove(key), 0);
+  ck_assert_int_eq(remove(mine), 0);
+  ck_assert_int_eq(rmdir(dir), 0); /* nothing else was made */
+}
+END_TEST
+
 /* Issue 23, defect 10: --params that is not a regular file is refused at
  * once, naming what it is (a folder "held 9223372036854775807 bytes", a
  * FIFO hung waiting for a writer: `timeout` ends the case if it does). */
@@ -563,6 +593,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_special_outputs);
   tcase_add_test(tc, test_messages_one_line);
   tcase_add_test(tc, test_params_not_a_file);
+  tcase_add_test(tc, test_refused_run_deletes_nothing);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
