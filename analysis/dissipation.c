@@ -116,6 +116,15 @@ int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
               r.kernel);
   dp->nacross = r.res;
   dp->hdx = r.hdx;
+  /* the lattice's nearest neighbours lie at dx: a support that does not
+   * reach past them holds none, and every sum is 0/0 */
+  if (!(dp->kernel->kappa * dp->hdx > 1.0))
+    VSPH_FAIL(VSPH_EINVAL,
+              "Dissipation:hdx = %g: the %s kernel reaches %g h = %g dx, so "
+              "its support holds no neighbour of the lattice; raise hdx above "
+              "%g",
+              dp->hdx, r.kernel, dp->kernel->kappa, dp->kernel->kappa * dp->hdx,
+              1.0 / dp->kernel->kappa);
   dp->mu = r.mu;
   dp->perturb = r.perturb;
   dp->seed = (unsigned long)r.seed;

@@ -100,6 +100,15 @@ int vsph_laplacian_props_init(struct vsph_laplacian_props *lp,
   lp->dim = (int)r.dim;
   lp->n = r.n;
   lp->hdx = r.hdx;
+  /* the lattice's nearest neighbours lie at dx: a support that does not
+   * reach past them holds none (eq. 21 came out 3e14, its other measure
+   * NaN) */
+  if (lp->kernel && !(lp->kernel->kappa * lp->hdx > 1.0))
+    VSPH_FAIL(VSPH_EINVAL,
+              "Laplacian:hdx = %g: the %s kernel reaches %g h = %g dx, so its "
+              "support holds no neighbour of the lattice; raise hdx above %g",
+              lp->hdx, r.kernel, lp->kernel->kappa, lp->kernel->kappa * lp->hdx,
+              1.0 / lp->kernel->kappa);
   lp->perturb = r.perturb;
   lp->seed = (unsigned long)r.seed;
   lp->eta = r.eta;

@@ -418,6 +418,31 @@ START_TEST(test_special_outputs) {
 }
 END_TEST
 
+/* Issue 23, defect 8: a support that holds no neighbour of the lattice
+ * (cubic, reach 2h, at h/dx = 0.5: the nearest at dx, on its edge) is
+ * refused before computing (it printed nan, and "P": null); just past
+ * it, the computation runs and its numbers are numbers. */
+START_TEST(test_support_holds_no_neighbour) {
+  static const char *const cases[] = {
+      "laplacian --form visc03 --hdx 0.5",
+      "dissipation --formulation visc03 --field strain --shape square --res "
+      "10 --hdx 0.5 --kernel cubic --json",
+      "laplacian --form visc01 --kernel wendland2 --hdx 0.5"};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    struct vsph_test_outcome *o = vsph_test_cli(cases[k]);
+    ck_assert_msg(o->status == 2, "'%s' exited %d", cases[k], o->status);
+    ck_assert_int_eq(o->err_lines, 1);
+    ck_assert_msg(strstr(o->err, "holds no neighbour") != NULL, "%s", o->err);
+    ck_assert(o->out[0] == '\0');
+  }
+  struct vsph_test_outcome *o =
+      vsph_test_cli("laplacian --form visc03 --hdx 0.51 --json");
+  ck_assert_int_eq(o->status, 0);
+  ck_assert_msg(strstr(o->out, "nan") == NULL && strstr(o->out, "null") == NULL,
+                "%s", o->out);
+}
+END_TEST
+
 /* Issue 23, defect 4: a run refused for its folder changes nothing in it
  * (it removed the folder's key.txt before refusing). */
 START_TEST(test_refused_run_deletes_nothing) {
@@ -594,6 +619,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_messages_one_line);
   tcase_add_test(tc, test_params_not_a_file);
   tcase_add_test(tc, test_refused_run_deletes_nothing);
+  tcase_add_test(tc, test_support_holds_no_neighbour);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
