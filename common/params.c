@@ -233,7 +233,12 @@ int vsph_params_read_string(struct vsph_params *prm, const char *text,
         break;
       case YAML_SCALAR_EVENT: {
         const char *s = (const char *)ev.data.scalar.value;
-        if (ev.data.scalar.anchor) {
+        if (strlen(s) != ev.data.scalar.length) { /* "linear\0junk" */
+          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                             "%s:%zu: a value holds a NUL character", path,
+                             line);
+          st = VSPH_EINVAL;
+        } else if (ev.data.scalar.anchor) {
           vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
                              "%s:%zu: anchors are not allowed", path, line);
           st = VSPH_EINVAL;

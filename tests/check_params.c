@@ -63,6 +63,8 @@ static const char *const bad_files[] = {
     "cfl: 1\n",
     "Solver: [\n",
     "Solver:\n  cfl: *x\n",
+    /* a NUL inside a value (issue 23, defect 12): it was read as "linear" */
+    "Solver:\n  walls: \"linear\\u0000junk\"\n",
 };
 
 START_TEST(test_bad_files) {
