@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "../common/params.h"
+#include "../common/shell.h"
 #include "../common/status.h"
 #include "../io/rundir.h"
 #include "../solver/run.h"
@@ -95,16 +96,13 @@ int vsph_cmd_run_main(int argc, char **argv) {
   if (threads > 0) omp_set_num_threads((int)threads);
   /* SIGINT/SIGTERM: the run stops after the current step (io/rundir) */
   const volatile sig_atomic_t *stop = vsph_args_catch_stop();
-  /* the command line as given, for run.json (arguments with a space or a
-   * quote are single-quoted) */
+  /* the command line as given, for run.json, quoted as a shell reads it
+   * back (vsph_shell_quote) */
   char command[2048];
   size_t len = (size_t)snprintf(command, sizeof command, "vsph");
   for (int k = 0; k < argc && len + 1 < sizeof command; k++) {
-    const int q = strpbrk(argv[k], " \t'\"") != NULL;
-    const int w = snprintf(command + len, sizeof command - len, "%s%s%s%s", " ",
-                           q ? "'" : "", argv[k], q ? "'" : "");
-    if (w < 0) break;
-    len += (size_t)w;
+    command[len++] = ' ';
+    len += vsph_shell_quote(argv[k], command + len, sizeof command - len);
   }
   if (len >= sizeof command) len = sizeof command - 1;
   command[len] = '\0';

@@ -188,10 +188,6 @@ size_t vsph_report_jobs_argv(const struct vsph_report_job *j, const char *exe,
                              size_t threads, char buf[2][24], const char **argv,
                              size_t cap);
 
-/* @p s for a POSIX shell into @p out: as it is when every character is
- * safe, else in single quotes. Returns the length it needs. */
-size_t vsph_report_jobs_quote(const char *s, char *out, size_t len);
-
 /* The same as one shell line (arguments quoted where needed). */
 void vsph_report_jobs_command(const struct vsph_report_job *j, const char *exe,
                               size_t threads, char *out, size_t len);

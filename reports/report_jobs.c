@@ -25,6 +25,7 @@
 #include "../analysis/contact.h"
 #include "../common/consts.h"
 #include "../common/params.h"
+#include "../common/shell.h"
 #include "../common/status.h"
 #include "../io/files.h"
 #include "../io/json.h"
@@ -292,33 +293,6 @@ size_t vsph_report_jobs_argv(const struct vsph_report_job *j, const char *exe,
   return n;
 }
 
-/* @p s for a POSIX shell: as it is when every character is safe, else in
- * single quotes (a quote inside as '\''). */
-size_t vsph_report_jobs_quote(const char *s, char *out, size_t len) {
-  const int safe = *s && strspn(s,
-                                "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrs"
-                                "tuvwxyz0123456789_./:=+-,@%") == strlen(s);
-  size_t n = 0;
-#define PUT(c)                     \
-  do {                             \
-    if (n + 1 < len) out[n] = (c); \
-    n++;                           \
-  } while (0)
-  if (!safe) PUT('\'');
-  for (; *s; s++) {
-    if (!safe && *s == '\'') {
-      PUT('\'');
-      PUT('\\');
-      PUT('\'');
-    }
-    PUT(*s);
-  }
-  if (!safe) PUT('\'');
-#undef PUT
-  if (len) out[n < len ? n : len - 1] = '\0';
-  return n;
-}
-
 void vsph_report_jobs_command(const struct vsph_report_job *j, const char *exe,
                               size_t threads, char *out, size_t len) {
   const char *argv[2 * VSPH_REPORT_JOB_NSET + 16];
@@ -329,7 +303,7 @@ void vsph_report_jobs_command(const struct vsph_report_job *j, const char *exe,
   if (len) out[0] = '\0';
   for (size_t k = 0; k < n && w + 1 < len; k++) {
     if (k) out[w++] = ' ';
-    w += vsph_report_jobs_quote(argv[k], out + w, len - w);
+    w += vsph_shell_quote(argv[k], out + w, len - w);
   }
   if (w >= len && len) out[len - 1] = '\0';
 }
@@ -858,9 +832,9 @@ static int assembly_script(const struct vsph_report *R,
                            const struct vsph_report_slurm *s, const char *logs,
                            char **text) {
   char q[3][PATH_MAX + 64];
-  vsph_report_jobs_quote(s->exe, q[0], sizeof q[0]);
-  vsph_report_jobs_quote(R->dir, q[1], sizeof q[1]);
-  vsph_report_jobs_quote(s->only ? s->only : "", q[2], sizeof q[2]);
+  vsph_shell_quote(s->exe, q[0], sizeof q[0]);
+  vsph_shell_quote(R->dir, q[1], sizeof q[1]);
+  vsph_shell_quote(s->only ? s->only : "", q[2], sizeof q[2]);
   size_t len;
   FILE *f = open_memstream(text, &len);
   if (!f) VSPH_FAIL(VSPH_ENOMEM, "cannot write the assembly");
@@ -891,7 +865,7 @@ static int put_script(const char *dir, const char *name, char *text,
   free(text);
   char path[PATH_MAX + 64];
   snprintf(path, sizeof path, "%s/%s", dir, name);
-  vsph_report_jobs_quote(path, quoted, len);
+  vsph_shell_quote(path, quoted, len);
   return st;
 }
 

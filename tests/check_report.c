@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../common/shell.h"
+#include "../io/json.h"
 #include "../reports/report_internal.h"
 #include "check_suites.h"
 
@@ -130,12 +132,67 @@ START_TEST(test_time_left) {
 }
 END_TEST
 
+/* The one shell-quoting rule (common/shell.c) of the plan's commands,
+ * the Slurm scripts and run.json's command: each case written out by hand
+ * as POSIX sh reads it back. */
+START_TEST(test_shell_quote) {
+  static const char *const cases[][2] = {
+      {"abc-1.5_x/y:z=w,@%+", "abc-1.5_x/y:z=w,@%+"},
+      {"", "''"},
+      {"a b", "'a b'"},
+      {"quo'te", "'quo'\\''te'"},
+      {"$HOME", "'$HOME'"},
+      {"a\nb", "'a\nb'"}};
+  char out[64];
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    const size_t n = vsph_shell_quote(cases[k][0], out, sizeof out);
+    ck_assert_str_eq(out, cases[k][1]);
+    ck_assert_uint_eq(n, strlen(cases[k][1]));
+  }
+  /* cut to fit, as snprintf: the length it needs, a NUL-terminated prefix */
+  ck_assert_uint_eq(vsph_shell_quote("quo'te", out, 4), 11);
+  ck_assert_str_eq(out, "'qu");
+}
+END_TEST
+
+/* run.json's command reads back, through a shell, as the arguments given:
+ * an --out with a quote and a space (its quotes were unbalanced). */
+START_TEST(test_command_reads_back) {
+  const char *const dir = "/tmp/vsph_quo'te dir";
+  struct vsph_test_outcome *o = vsph_test_cli(
+      "run poiseuille --t-end 1e-9 --quiet --out \"/tmp/vsph_quo'te dir\"");
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  char path[128];
+  snprintf(path, sizeof path, "%s/run.json", dir);
+  cJSON *js = vsph_json_read(path);
+  ck_assert_ptr_nonnull(js);
+  const cJSON *c = cJSON_GetObjectItemCaseSensitive(js, "command");
+  ck_assert(cJSON_IsString(c));
+  /* the shell splits it back: the 8th word is the folder */
+  char script[512];
+  snprintf(script, sizeof script, "eval \"set -- %s\"; printf '%%s' \"$8\"",
+           c->valuestring);
+  cJSON_Delete(js);
+  FILE *p = fopen("/tmp/vsph_readback.sh", "w");
+  ck_assert_ptr_nonnull(p);
+  fputs(script, p);
+  ck_assert_int_eq(fclose(p), 0);
+  o = vsph_test_shell("sh /tmp/vsph_readback.sh");
+  ck_assert_str_eq(o->out, dir);
+  remove("/tmp/vsph_readback.sh");
+  o = vsph_test_shell("rm -r \"/tmp/vsph_quo'te dir\"");
+  ck_assert_int_eq(o->status, 0);
+}
+END_TEST
+
 Suite *vsph_report_suite(void) {
   Suite *s = suite_create("report");
   TCase *tc = tcase_create("frame");
   tcase_add_test(tc, test_verdict_classes);
   tcase_add_test(tc, test_claims_tally);
   tcase_add_test(tc, test_time_left);
+  tcase_add_test(tc, test_shell_quote);
+  tcase_add_test(tc, test_command_reads_back);
   suite_add_tcase(s, tc);
   return s;
 }
