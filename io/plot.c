@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "../common/status.h"
+#include "csv.h"
 #include "files.h"
 
 /* The shared palette: the formulations' three first (MGF, MEAF, PVWF as
@@ -276,37 +277,27 @@ int vsph_plot_write(const struct vsph_plot *pl) {
   return st ? st : render(pl->dir, gp, pl->name);
 }
 
-/* Range of column @p col over the rows of DIR/FILE (header skipped,
- * non-finite values skipped): min, max and count updated. */
+/* Range of column @p col (1-based, as gnuplot counts) over the rows of
+ * DIR/FILE, read by io/csv (non-finite values skipped): min, max and count
+ * updated. */
 static int column_range(const char *dir, const char *file, int col, double *lo,
                         double *hi, size_t *count) {
   char path[1024];
   snprintf(path, sizeof path, "%s/%s", dir, file);
-  FILE *f = fopen(path, "r");
-  if (!f) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
-  char line[2048];
-  int first = 1;
-  while (fgets(line, sizeof line, f)) {
-    if (first) { /* the header row */
-      first = 0;
-      continue;
-    }
-    const char *c = line;
-    for (int k = 1; k < col && c; k++) {
-      c = strchr(c, ',');
-      if (c) c++;
-    }
-    if (!c) continue;
-    char *end;
-    const double v = strtod(c, &end);
-    if (end == c || !isfinite(v)) continue;
-    *lo = fmin(*lo, v);
-    *hi = fmax(*hi, v);
+  struct vsph_csv *t = vsph_csv_read(path);
+  if (!t) return VSPH_EIO;
+  if (col < 1 || (size_t)col > t->ncol) {
+    vsph_csv_free(t);
+    VSPH_FAIL(VSPH_EINVAL, "%s has no column %d", path, col);
+  }
+  const double *v = t->data + (size_t)(col - 1) * t->nrow;
+  for (size_t r = 0; r < t->nrow; r++) {
+    if (!isfinite(v[r])) continue;
+    *lo = fmin(*lo, v[r]);
+    *hi = fmax(*hi, v[r]);
     ++*count;
   }
-  const int bad = ferror(f);
-  fclose(f);
-  if (bad) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
+  vsph_csv_free(t);
   return VSPH_OK;
 }
 

@@ -31,6 +31,15 @@ static int exists(const char *path) {
   return stat(path, &sb) == 0;
 }
 
+/* Bad input's answer: exit 2, one line on stderr, naming @p needle. */
+static void refused(const struct vsph_test_outcome *o, const char *what,
+                    const char *needle) {
+  ck_assert_msg(o->status == 2, "'%s' exited %d", what, o->status);
+  ck_assert_msg(o->err_lines == 1, "'%s' said %d lines: %s", what, o->err_lines,
+                o->err);
+  ck_assert_msg(strstr(o->err, needle) != NULL, "'%s' said: %s", what, o->err);
+}
+
 /* Defect 1: a Poisson grid of 2^61 nodes wrapped the size computation and
  * wrote past the heap (segfault); now it is refused by its bound. */
 START_TEST(test_poisson_grid_overflow) {
@@ -316,11 +325,7 @@ START_TEST(test_contact_inputs) {
     /* vsph contact has no --out: the case without it */
     struct vsph_test_outcome *o =
         vsph_test_cli(strncmp(cases[k][0], "contact", 7) ? args : cases[k][0]);
-    ck_assert_msg(o->status == 2, "'%s' exited %d", cases[k][0], o->status);
-    ck_assert_msg(o->err_lines == 1, "'%s' said %d lines: %s", cases[k][0],
-                  o->err_lines, o->err);
-    ck_assert_msg(strstr(o->err, cases[k][1]) != NULL, "'%s' said: %s",
-                  cases[k][0], o->err);
+    refused(o, cases[k][0], cases[k][1]);
     ck_assert_int_ne(access("/tmp/vsph_never_contact", F_OK), 0);
   }
 }
@@ -511,11 +516,7 @@ START_TEST(test_messages_one_line) {
     char script[512];
     snprintf(script, sizeof script, "exec \"$VSPH_BIN\" %s", cases[k][0]);
     struct vsph_test_outcome *o = vsph_test_shell(script);
-    ck_assert_msg(o->status == 2, "'%s' exited %d", cases[k][0], o->status);
-    ck_assert_msg(o->err_lines == 1, "'%s' said %d lines: %s", cases[k][0],
-                  o->err_lines, o->err);
-    ck_assert_msg(strstr(o->err, cases[k][1]) != NULL, "'%s' said: %s",
-                  cases[k][0], o->err);
+    refused(o, cases[k][0], cases[k][1]);
   }
   struct vsph_test_outcome *o = vsph_test_shell(
       "exec \"$VSPH_BIN\" run \"$(head -c 100000 /dev/zero | tr '\\0' x)\"");
@@ -570,11 +571,7 @@ START_TEST(test_report_job_inputs) {
              "PATH='%s':\"$PATH\" exec \"$VSPH_BIN\" %s%s", bin, cases[k][0],
              strstr(cases[k][0], "--out") ? "" : " --out /tmp/vsph_never_jobs");
     struct vsph_test_outcome *o = vsph_test_shell(script);
-    ck_assert_msg(o->status == 2, "'%s' exited %d", cases[k][0], o->status);
-    ck_assert_msg(o->err_lines == 1, "'%s' said %d lines: %s", cases[k][0],
-                  o->err_lines, o->err);
-    ck_assert_msg(strstr(o->err, cases[k][1]) != NULL, "'%s' said: %s",
-                  cases[k][0], o->err);
+    refused(o, cases[k][0], cases[k][1]);
     ck_assert(!exists("/tmp/vsph_never_jobs"));
     ck_assert(!exists("/tmp/vsph_never jobs"));
     ck_assert_msg(!exists(mark), "'%s' called sbatch", cases[k][0]);
