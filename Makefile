@@ -30,7 +30,7 @@ TESTLIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
 # Layers, lowest first: common <- kernels <- solver <- analysis <- io <-
 # reports <- cli. Everything but cli/main.c is linked into the tests.
 LIB_SRC  := $(wildcard common/*.c kernels/*.c solver/*.c solver/scenes/*.c \
-              analysis/*.c io/*.c reports/*.c)
+              analysis/*.c io/*.c runs/*.c reports/*.c)
 CLI_SRC  := $(wildcard cli/*.c)
 TEST_SRC := $(wildcard tests/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
@@ -38,7 +38,7 @@ LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 # report's cache keys include it, so any change to the code reruns.
 TEXT_SRC := $(sort $(wildcard reports/text/*.md))
 SRC_ALL  := $(sort $(wildcard common/*.[ch] kernels/*.[ch] solver/*.[ch] \
-              solver/scenes/*.c analysis/*.[ch] io/*.[ch] reports/*.[ch] \
+              solver/scenes/*.c analysis/*.[ch] io/*.[ch] runs/*.[ch] reports/*.[ch] \
               cli/*.[ch])) $(TEXT_SRC)
 HASH_OBJ := $(BUILD)/gen/source_hash.o
 # The report's prose (reports/text/*.md), compiled in.
@@ -190,7 +190,7 @@ prefix-check: $(LIB_OBJ) $(CLI_OBJ)
 	done; [ $$bad -eq 0 ] && echo "prefix-check: ok"
 
 FMT_SRC = $(wildcard common/*.[ch] kernels/*.[ch] solver/*.[ch] \
-            solver/scenes/*.c analysis/*.[ch] io/*.[ch] reports/*.[ch] \
+            solver/scenes/*.c analysis/*.[ch] io/*.[ch] runs/*.[ch] reports/*.[ch] \
             cli/*.[ch] tests/*.[ch] tests/fuzz/*.c)
 format:
 	clang-format -i $(FMT_SRC)

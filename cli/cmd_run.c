@@ -1,5 +1,5 @@
 /* vsph run: the free-surface WCSPH solver on one scene (THEORY 5-6) into a
- * folder (io/rundir); vsph scenes: every parameter with its default. */
+ * folder (runs/rundir); vsph scenes: every parameter with its default. */
 #include "cmd_run.h"
 
 #include <omp.h>
@@ -10,7 +10,7 @@
 #include "../common/params.h"
 #include "../common/shell.h"
 #include "../common/status.h"
-#include "../io/rundir.h"
+#include "../runs/rundir.h"
 #include "../solver/run.h"
 #include "../solver/scene.h"
 #include "args.h"
@@ -24,7 +24,7 @@ static const char ABOUT[] =
     "scene (see vsph scenes). Parameters come from FILE (YAML subset:\n"
     "Solver: and Scene: sections), then --set, then the options; an\n"
     "unknown key is an error and nothing is written. Writes to DIR (default\n"
-    "runs/SCENE-VISC-RES):\n"
+    "vsph-out/SCENE-VISC-RES):\n"
     "  energy.csv          t, Ek, Ep, Ec, P_visc, P_delta, residual, Px,\n"
     "                      Py, Lz, dEk_dt, Ek_ref, dEk_ref, Em_ref,\n"
     "                      dEm_ref (reference wave/mechanical energy and\n"
@@ -94,7 +94,7 @@ int vsph_cmd_run_main(int argc, char **argv) {
     return rc;
   }
   if (threads > 0) omp_set_num_threads((int)threads);
-  /* SIGINT/SIGTERM: the run stops after the current step (io/rundir) */
+  /* SIGINT/SIGTERM: the run stops after the current step (runs/rundir) */
   const volatile sig_atomic_t *stop = vsph_args_catch_stop();
   /* the command line as given, for run.json, quoted as a shell reads it
    * back (vsph_shell_quote) */

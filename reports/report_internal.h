@@ -152,7 +152,7 @@ int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
 int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
                            const char *name);
 
-/* The job of a solver run: its folder, settings and key (io/rundir's),
+/* The job of a solver run: its folder, settings and key (runs/rundir's),
  * and whether the cache holds it. Free with vsph_report_jobs_free. */
 struct vsph_report_runspec;
 int vsph_report_jobs_run(const struct vsph_report *R,
@@ -292,7 +292,7 @@ const struct vsph_report_ladderdef *vsph_report_runs_ladder(
     const struct vsph_report *R, int sc, int quick);
 
 /* A run through the cache: reuses its folder when its key (version, source
- * hash and every setting) matches, else runs the solver (io/rundir). */
+ * hash and every setting) matches, else runs the solver (runs/rundir). */
 int vsph_report_runs_get(struct vsph_report *R,
                          const struct vsph_report_runspec *rs,
                          struct vsph_report_run *out);

@@ -4,7 +4,7 @@
  * default); as child processes, N at a time (`--jobs N`); or as a Slurm
  * job array with the assembly after it (`--slurm`). A job is one command
  * (`vsph run ... --cache` or `vsph contact ... --cache`) whose folder ends
- * with key.txt (io/rundir): the cache, and the proof that the run ended,
+ * with key.txt (runs/rundir): the cache, and the proof that the run ended,
  * whichever way ran it. */
 #define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
@@ -29,8 +29,8 @@
 #include "../common/status.h"
 #include "../io/files.h"
 #include "../io/json.h"
-#include "../io/rundir.h"
-#include "../io/shear.h"
+#include "../runs/rundir.h"
+#include "../runs/shear.h"
 #include "../solver/run.h"
 #include "../solver/scene.h"
 #include "report_internal.h"
@@ -55,7 +55,7 @@ static int params_of(const struct vsph_report_job *j,
   return VSPH_OK;
 }
 
-/* Its key (io/rundir's, from the settings as given) and cache state. */
+/* Its key (runs/rundir's, from the settings as given) and cache state. */
 static int finish_job(struct vsph_report_job *j) {
   struct vsph_params *prm;
   int st = params_of(j, &prm);

@@ -16,7 +16,7 @@
 #include "../io/files.h"
 #include "../io/json.h"
 #include "../io/plot.h"
-#include "../io/rundir.h"
+#include "../runs/rundir.h"
 #include "../solver/scene.h"
 #include "report_internal.h"
 

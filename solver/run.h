@@ -16,7 +16,7 @@ struct vsph_params_spec;
  *  lays out a scene, advances it step by step with the integrator, stops it
  *  as unstable when the stability checks fail, and tells the caller when an
  *  energy row or a snapshot is due. It owns the "Solver" parameter section.
- *  No file I/O: the caller (io/rundir) writes what it is handed.
+ *  No file I/O: the caller (runs/rundir) writes what it is handed.
  *
  *  @code
  *  vsph_run_alloc(&rp, &scene, &run);

@@ -1,4 +1,4 @@
-/* The report's runs as jobs (reports/report_jobs.c, io/rundir's cache):
+/* The report's runs as jobs (reports/report_jobs.c, runs/rundir's cache):
  * the key is the same however the settings are given; the plan's command
  * makes exactly the run the report makes in its own process; the child
  * pool runs what is missing, records a failure and goes on, and resumes
@@ -14,8 +14,8 @@
 #include "../common/params.h"
 #include "../common/status.h"
 #include "../io/files.h"
-#include "../io/rundir.h"
 #include "../reports/report_internal.h"
+#include "../runs/rundir.h"
 #include "../solver/run.h"
 #include "check_suites.h"
 

@@ -18,7 +18,7 @@ struct vsph_params;
 
 /** How to run. */
 struct vsph_rundir_opts {
-  const char *dir; /*!< output folder; NULL: runs/SCENE-VISC-RES */
+  const char *dir; /*!< output folder; NULL: vsph-out/SCENE-VISC-RES */
   FILE *progress;  /*!< start line, a line every 2 s, closing line; NULL:
                         silence */
   /** if not NULL, the run stops after the step during which *stop became

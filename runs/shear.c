@@ -8,8 +8,8 @@
 
 #include "../analysis/contact.h"
 #include "../common/status.h"
-#include "csv.h"
-#include "files.h"
+#include "../io/csv.h"
+#include "../io/files.h"
 #include "rundir.h"
 
 int vsph_shear_execute(struct vsph_params *prm, size_t nprof, const char *dir,

@@ -16,16 +16,16 @@
 #include "../common/params.h"
 #include "../common/status.h"
 #include "../common/sysinfo.h"
+#include "../io/csv.h"
+#include "../io/files.h"
+#include "../io/json.h"
+#include "../io/vtk.h"
 #include "../kernels/kernel.h"
 #include "../solver/diagnostics.h"
 #include "../solver/integrate.h"
 #include "../solver/run.h"
 #include "../solver/scene.h"
 #include "../solver/viscous.h"
-#include "csv.h"
-#include "files.h"
-#include "json.h"
-#include "vtk.h"
 
 /* ----------------------------------------------------------- the cache */
 
@@ -457,7 +457,7 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
   if (opts->dir)
     snprintf(res->dir, sizeof res->dir, "%s", opts->dir);
   else
-    snprintf(res->dir, sizeof res->dir, "runs/%s-%s-%zu", type->name,
+    snprintf(res->dir, sizeof res->dir, "vsph-out/%s-%s-%zu", type->name,
              vsph_run_method(&rp), rp.res);
   if (key && vsph_rundir_key_matches(res->dir, key)) {
     res->cached = 1;

@@ -30,7 +30,7 @@ struct vsph_params;
 
 /** @brief Measure (vsph_contact_shear_measure, @p nprof profile times,
  *  silent when @p quiet) into folder @p dir: summary.csv and
- *  profiles.csv. With @p cache, as io/rundir's cache: the key
+ *  profiles.csv. With @p cache, as runs/rundir's cache: the key
  *  (vsph_rundir_key of @p prm as given, after "contact NPROF") is written
  *  to key.txt last, a folder whose key.txt matches is not measured again
  *  (*cached = 1), and key.txt goes first when a measurement starts.
