@@ -4,6 +4,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include "../common/status.h"
@@ -504,6 +505,17 @@ int vsph_vtk_pvd_open(struct vsph_vtk_pvd *pvd, const char *dir) {
   fprintf(pvd->f,
           "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
           "version=\"0.1\">\n<Collection>\n");
+  return VSPH_OK;
+}
+
+int vsph_vtk_pvd_reopen(struct vsph_vtk_pvd *pvd, const char *dir, long keep) {
+  char path[4096];
+  snprintf(path, sizeof path, "%s/snapshots.pvd", dir);
+  pvd->dir = dir;
+  pvd->f =
+      keep >= 0 && truncate(path, (off_t)keep) == 0 ? fopen(path, "a") : NULL;
+  if (!pvd->f)
+    VSPH_FAIL(VSPH_EIO, "cannot write %s: %s", path, strerror(errno));
   return VSPH_OK;
 }
 

@@ -75,6 +75,11 @@ struct vsph_vtk_pvd {
 /** @brief Start DIR/snapshots.pvd. @return VSPH_OK or VSPH_EIO. */
 int vsph_vtk_pvd_open(struct vsph_vtk_pvd *pvd, const char *dir);
 
+/** @brief Go on with DIR/snapshots.pvd, cut back to its first @p keep
+ *  bytes (a resumed run's: its entries up to a checkpoint).
+ *  @return VSPH_OK or VSPH_EIO. */
+int vsph_vtk_pvd_reopen(struct vsph_vtk_pvd *pvd, const char *dir, long keep);
+
 /** @brief List snapshot @p file at time @p t (s), printed to 10
  *  significant digits as energy.csv prints its t, so the two match
  *  exactly (flushed: the index is usable while the run goes on).

@@ -24,6 +24,7 @@
 #include "../io/html.h"
 #include "../io/json.h"
 #include "../io/plot.h"
+#include "../runs/folder.h"
 #include "report_internal.h"
 
 struct part {
@@ -346,28 +347,14 @@ static void plan_free(struct vsph_report_plan *P) {
   free(P);
 }
 
-/* One report at a time writes a folder: a lock on DIR/report.lock (held
- * until the process ends; released by the system if it dies). */
+/* One report at a time writes a folder, and only a folder that is new,
+ * empty or a report's (runs/folder's contract): the claim is held until
+ * the process ends (the system drops it if the process dies). */
+static struct vsph_folder report_folder = {.fd = -1};
+
 static int lock_dir(const char *dir) {
-  char path[700];
-  snprintf(path, sizeof path, "%s/report.lock", dir);
-  const int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) VSPH_FAIL(VSPH_EIO, "cannot open %s: %s", path, strerror(errno));
-  struct flock fl;
-  memset(&fl, 0, sizeof fl);
-  fl.l_type = F_WRLCK;
-  fl.l_whence = SEEK_SET;
-  if (fcntl(fd, F_SETLK, &fl) == 0) return VSPH_OK; /* fd stays open */
-  const int e = errno;
-  struct flock who = fl;
-  const long pid = fcntl(fd, F_GETLK, &who) == 0 ? (long)who.l_pid : -1L;
-  close(fd);
-  if (e == EACCES || e == EAGAIN)
-    VSPH_FAIL(VSPH_EINVAL,
-              "another vsph report (pid %ld) is writing %s: wait for it or "
-              "choose another --out",
-              pid, dir);
-  VSPH_FAIL(VSPH_EIO, "cannot lock %s: %s", path, strerror(e));
+  vsph_folder_release(&report_folder); /* a second report, in tests */
+  return vsph_folder_claim(&report_folder, dir, &vsph_folder_report);
 }
 
 /* Run what the plan misses, as the mode says. */
@@ -424,6 +411,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
     free(R);
     return st;
   }
+  if (!st && rp->mode == VSPH_REPORT_SLURM) st = lock_dir(R->dir);
   if (!st && rp->mode == VSPH_REPORT_SLURM) {
     const struct vsph_report_slurm s = {rp->exe, rp->partition, rp->time,
                                         rp->threads, rp->only};
@@ -433,8 +421,8 @@ int vsph_report_write(const struct vsph_report_props *rp) {
     return st;
   }
   if (!st && rp->mode == VSPH_REPORT_ASSEMBLE) st = all_cached(R);
-  if (!st) st = vsph_files_mkdir(parts_dir);
   if (!st) st = lock_dir(rp->dir);
+  if (!st) st = vsph_files_mkdir(parts_dir);
   R->made_by = rp->mode == VSPH_REPORT_POOL       ? "child processes"
                : rp->mode == VSPH_REPORT_ASSEMBLE ? "nothing: assembly only"
                                                   : "this process";

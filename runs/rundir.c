@@ -4,12 +4,14 @@
 #include <errno.h>
 #include <math.h>
 #include <omp.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include "../analysis/references.h"
 #include "../common/consts.h"
@@ -26,6 +28,7 @@
 #include "../solver/run.h"
 #include "../solver/scene.h"
 #include "../solver/viscous.h"
+#include "folder.h"
 
 /* ----------------------------------------------------------- the cache */
 
@@ -56,7 +59,11 @@ char *vsph_rundir_key(const struct vsph_params *prm, const char *what) {
     return NULL;
   }
   fprintf(f, "vsph %s %s\n%s\n", VSPH_VERSION, vsph_source_hash_id, what);
-  for (size_t i = 0; i < n; i++) fprintf(f, "%s=%s\n", kv[i][0], kv[i][1]);
+  /* the checkpoints' interval changes when state is saved, never the
+   * results: a run resumes whatever it is */
+  for (size_t i = 0; i < n; i++)
+    if (strcmp(kv[i][0], "Solver:checkpoint_s"))
+      fprintf(f, "%s=%s\n", kv[i][0], kv[i][1]);
   free(kv);
   if (fclose(f) != 0) {
     free(key);
@@ -67,24 +74,8 @@ char *vsph_rundir_key(const struct vsph_params *prm, const char *what) {
 }
 
 int vsph_rundir_key_matches(const char *dir, const char *key) {
-  char path[4200];
-  snprintf(path, sizeof path, "%s/key.txt", dir);
-  char *old = vsph_files_slurp(path, NULL);
-  const int hit = old && !strcmp(old, key);
-  free(old);
-  return hit;
-}
-
-int vsph_rundir_key_write(const char *dir, const char *key) {
-  return vsph_files_write(dir, "key.txt", key);
-}
-
-int vsph_rundir_key_remove(const char *dir) {
-  char path[4200];
-  snprintf(path, sizeof path, "%s/key.txt", dir);
-  if (remove(path) != 0 && errno != ENOENT && errno != ENOTDIR)
-    VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
-  return VSPH_OK;
+  return vsph_folder_verify(dir, &vsph_folder_scene_run, key, NULL, NULL, 0) ==
+         1;
 }
 
 /* Every parameter of the run, defaults filled in, section by section. */
@@ -139,6 +130,9 @@ static int write_run_json(const struct vsph_run *run,
   cJSON_AddNumberToObject(o, "threads",
                           omp_in_parallel() ? 1 : omp_get_max_threads());
   cJSON_AddNumberToObject(o, "wall_s", res->wall_s);
+  /* the processes the wall time was spent in (1 + the times it resumed
+   * from a checkpoint) */
+  cJSON_AddNumberToObject(o, "wall_segments", (double)res->segments);
   /* a timing is read beside the machine's state: CPU time (all threads),
    * the load averages before and after, the OpenMP wait policy */
   vsph_json_number(o, "cpu_s", res->cpu_s);
@@ -169,73 +163,6 @@ static int write_run_json(const struct vsph_run *run,
   return vsph_json_write(o, res->dir, "run.json");
 }
 
-/* The files vsph writes into a run folder (run.json first: once the old
- * status is gone, nothing can call the new files ok). */
-static int is_run_file(const char *name) {
-  static const char *const exact[] = {
-      "run.json",       "energy.csv",          "snapshots.pvd", "profile.csv",
-      "centreline.csv", "used_parameters.yml", "key.txt"};
-  for (size_t k = 0; k < sizeof exact / sizeof exact[0]; k++)
-    if (!strcmp(name, exact[k])) return 1;
-  const size_t n = strlen(name);
-  return (!strncmp(name, "snap_", 5) && n > 9 &&
-          (!strcmp(name + n - 4, ".vtp") || !strcmp(name + n - 4, ".vtk"))) ||
-         (n > 4 && !strcmp(name + n - 4, ".tmp"));
-}
-
-/* A folder for the run: created if new; an earlier vsph run's files are
- * removed (key.txt and run.json first); any other non-empty folder is
- * refused before anything in it is touched. */
-static int prepare_dir(const char *dir) {
-  struct stat sb;
-  if (stat(dir, &sb) != 0) return vsph_files_mkdir(dir);
-  if (!S_ISDIR(sb.st_mode))
-    VSPH_FAIL(VSPH_EINVAL, "%s exists and is not a folder", dir);
-  DIR *d = opendir(dir);
-  if (!d) VSPH_FAIL(VSPH_EIO, "cannot read %s: %s", dir, strerror(errno));
-  int other = 0, any = 0;
-  for (struct dirent *e; (e = readdir(d));) {
-    if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
-    any = 1;
-    other |= !is_run_file(e->d_name);
-  }
-  closedir(d);
-  if (!any) return VSPH_OK;
-  char path[4200];
-  snprintf(path, sizeof path, "%s/used_parameters.yml", dir);
-  char *head = vsph_files_slurp(path, NULL);
-  /* an earlier run: its parameters say so, or it holds only run files */
-  const int vsph_run = (head && !strncmp(head, "# vsph ", 7)) || !other;
-  free(head);
-  if (!vsph_run)
-    VSPH_FAIL(VSPH_EINVAL,
-              "%s is not empty and holds no vsph run (no used_parameters.yml "
-              "written by vsph): choose another --out",
-              dir);
-  /* the cache key first (nothing may vouch for a half-cleared folder),
-   * then run.json (nothing may call the new files ok) */
-  static const char *const first[] = {"key.txt", "run.json"};
-  for (int k = 0; k < 2; k++) {
-    snprintf(path, sizeof path, "%s/%s", dir, first[k]);
-    if (remove(path) != 0 && errno != ENOENT)
-      VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
-  }
-  if (!(d = opendir(dir)))
-    VSPH_FAIL(VSPH_EIO, "cannot read %s: %s", dir, strerror(errno));
-  int st = VSPH_OK;
-  for (struct dirent *e; !st && (e = readdir(d));) {
-    if (!is_run_file(e->d_name)) continue; /* the user's own files stay */
-    snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-    if (remove(path) != 0 && errno != ENOENT) {
-      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot remove %s: %s",
-                         path, strerror(errno));
-      st = VSPH_EIO;
-    }
-  }
-  closedir(d);
-  return st;
-}
-
 /* The files written while the run goes on. */
 struct outputs {
   const char *dir;
@@ -258,16 +185,20 @@ static int live_failed(struct outputs *o, const char *name) {
   return VSPH_EIO;
 }
 
+/* A live table: new with its header (@p keep < 0), or a resumed run's,
+ * cut back to the @p keep bytes its checkpoint saw written. */
 static FILE *live_open(struct outputs *o, const char *name, const char *header,
-                       int *st) {
-  char path[600];
+                       long keep, int *st) {
+  char path[4200];
   snprintf(path, sizeof path, "%s/%s", o->dir, name);
   errno = 0;
-  FILE *f = fopen(path, "w");
-  if (!f)
-    *st = live_failed(o, name);
-  else
-    fputs(header, f);
+  FILE *f = NULL;
+  if (keep < 0) {
+    if ((f = fopen(path, "w"))) fputs(header, f);
+  } else if (truncate(path, (off_t)keep) == 0) {
+    f = fopen(path, "a");
+  }
+  if (!f) *st = live_failed(o, name);
   return f;
 }
 
@@ -374,9 +305,166 @@ static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
   return st;
 }
 
-/* The time loop: rows and snapshots as the driver says they are due. */
+/* ------------------------------------------------------ checkpoints */
+
+/* checkpoint.bin: MAGIC, the key's length and text, struct ckpt, the
+ * run's packed state (vsph_run_pack), then the CRC-32 of all before it.
+ * Written to a temporary, synced and renamed: a checkpoint is whole or
+ * absent. */
+static const char CKPT_MAGIC[16] = "vsph checkpoint";
+enum { CKPT_VERSION = 1 };
+
+struct ckpt {
+  uint64_t version;
+  uint64_t csv, profile, pvd; /* the live files' lengths (bytes) */
+  uint64_t nsnap;             /* snapshots written */
+  uint64_t segments;          /* processes so far */
+  uint64_t state;             /* the packed state's length */
+  double wall_s, cpu_s;       /* spent so far */
+  char started[32];           /* the first start (UTC) */
+};
+
+static long tell(FILE *f) { return f ? ftell(f) : 0L; }
+
+static int checkpoint_write(struct outputs *o, const struct vsph_run *run,
+                            const char *key,
+                            const struct vsph_rundir_result *res, double wall,
+                            double cpu) {
+  struct ckpt c;
+  memset(&c, 0, sizeof c);
+  c.version = CKPT_VERSION;
+  c.csv = (uint64_t)tell(o->csv);
+  c.profile = (uint64_t)tell(o->profile);
+  c.pvd = (uint64_t)tell(o->pvd.f);
+  c.nsnap = o->nsnap;
+  c.segments = res->segments;
+  c.state = vsph_run_pack(run, NULL);
+  c.wall_s = wall;
+  c.cpu_s = cpu;
+  memcpy(c.started, res->started, sizeof c.started);
+  const uint64_t klen = strlen(key);
+  const size_t len = sizeof CKPT_MAGIC + sizeof klen + klen + sizeof c +
+                     c.state + sizeof(uint32_t);
+  unsigned char *buf = malloc(len);
+  if (!buf)
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a checkpoint of %zu bytes", len);
+  size_t at = 0;
+  memcpy(buf + at, CKPT_MAGIC, sizeof CKPT_MAGIC), at += sizeof CKPT_MAGIC;
+  memcpy(buf + at, &klen, sizeof klen), at += sizeof klen;
+  memcpy(buf + at, key, klen), at += klen;
+  memcpy(buf + at, &c, sizeof c), at += sizeof c;
+  at += vsph_run_pack(run, buf + at);
+  const uint32_t crc = (uint32_t)crc32(crc32(0L, Z_NULL, 0), buf, (uInt)at);
+  memcpy(buf + at, &crc, sizeof crc), at += sizeof crc;
+  char tmp[700], path[700];
+  snprintf(tmp, sizeof tmp, "%s/checkpoint.bin.tmp", o->dir);
+  snprintf(path, sizeof path, "%s/checkpoint.bin", o->dir);
+  errno = 0;
+  FILE *f = fopen(tmp, "wb");
+  int ok = f && fwrite(buf, 1, at, f) == at && fflush(f) == 0 &&
+           fsync(fileno(f)) == 0;
+  if (f && fclose(f) != 0) ok = 0;
+  ok = ok && rename(tmp, path) == 0;
+  free(buf);
+  if (!ok) {
+    const int e = errno;
+    remove(tmp);
+    snprintf(o->error, sizeof o->error, "cannot write %s: %s", path,
+             e ? strerror(e) : "write error");
+    VSPH_FAIL(VSPH_EIO, "%s", o->error);
+  }
+  return VSPH_OK;
+}
+
+/* A checkpoint to resume from: its header and state, if @p dir holds one
+ * whole, made by these sources with these settings (@p key); else NULL,
+ * with why in @p why when there was one ("" when none). Caller frees. */
+static unsigned char *checkpoint_read(const char *dir, const char *key,
+                                      struct ckpt *c, size_t *state_at,
+                                      char *why, size_t wlen) {
+  why[0] = '\0';
+  char path[4300];
+  snprintf(path, sizeof path, "%s/checkpoint.bin", dir);
+  struct stat sb;
+  if (lstat(path, &sb) != 0) return NULL;
+  size_t len = 0;
+  unsigned char *buf = (unsigned char *)vsph_files_slurp(path, &len);
+  const size_t klen = strlen(key);
+  uint64_t kl = 0;
+  uint32_t crc = 0;
+  const size_t fixed = sizeof CKPT_MAGIC + sizeof kl + sizeof *c + sizeof crc;
+  if (!buf || len < fixed) {
+    snprintf(why, wlen, "it cannot be read or is cut short");
+  } else {
+    memcpy(&crc, buf + len - sizeof crc, sizeof crc);
+    memcpy(&kl, buf + sizeof CKPT_MAGIC, sizeof kl);
+    if (memcmp(buf, CKPT_MAGIC, sizeof CKPT_MAGIC))
+      snprintf(why, wlen, "it is not a vsph checkpoint");
+    else if (crc != (uint32_t)crc32(crc32(0L, Z_NULL, 0), buf,
+                                    (uInt)(len - sizeof crc)))
+      snprintf(why, wlen, "it is damaged (its CRC-32 does not match)");
+    else if (kl != klen || len < fixed + klen ||
+             memcmp(buf + sizeof CKPT_MAGIC + sizeof kl, key, klen))
+      snprintf(why, wlen,
+               "it was made by other sources or with other settings");
+    else {
+      const size_t at = sizeof CKPT_MAGIC + sizeof kl + klen;
+      memcpy(c, buf + at, sizeof *c);
+      if (c->version != CKPT_VERSION || c->state != len - fixed - klen)
+        snprintf(why, wlen, "its layout is not this version's");
+      *state_at = at + sizeof *c;
+    }
+  }
+  if (why[0]) {
+    free(buf);
+    return NULL;
+  }
+  return buf;
+}
+
+/* A resumed folder: key.txt and run.json go (nothing may vouch for it
+ * while it runs), the live files must hold at least what the checkpoint
+ * saw, and snapshots past it go. */
+static int resume_dir(const char *dir, const struct ckpt *c,
+                      const char *profile_name, char *why, size_t wlen) {
+  char path[4300];
+  const struct {
+    const char *name;
+    uint64_t len;
+  } live[3] = {{"energy.csv", c->csv},
+               {profile_name, c->profile},
+               {"snapshots.pvd", c->pvd}};
+  for (int k = 0; k < 3; k++) {
+    if (!live[k].len) continue;
+    snprintf(path, sizeof path, "%s/%s", dir, live[k].name);
+    struct stat sb;
+    if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode) ||
+        (uint64_t)sb.st_size < live[k].len) {
+      snprintf(why, wlen, "%s is shorter than when it was saved", live[k].name);
+      return VSPH_EINVAL;
+    }
+  }
+  static const char *const first[] = {"key.txt", "run.json"};
+  for (int k = 0; k < 2; k++) {
+    snprintf(path, sizeof path, "%s/%s", dir, first[k]);
+    if (remove(path) != 0 && errno != ENOENT)
+      VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
+  }
+  for (uint64_t k = c->nsnap; k < 10000; k++) {
+    snprintf(path, sizeof path, "%s/snap_%04llu.vtp", dir,
+             (unsigned long long)k);
+    if (remove(path) != 0) {
+      if (errno == ENOENT) break;
+      VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
+    }
+  }
+  return VSPH_OK;
+}
+
+/* The time loop: rows and snapshots as the driver says they are due; a
+ * checkpoint every Solver:checkpoint_s of wall time and when stopped. */
 static int time_loop(struct outputs *o, struct vsph_run *run,
-                     struct vsph_references_scene *ref,
+                     struct vsph_references_scene *ref, const char *key,
                      const struct vsph_rundir_opts *opts,
                      struct vsph_rundir_result *res) {
   FILE *progress = opts->progress;
@@ -386,34 +474,50 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
   const double every = tty ? 0.5 : 2.0;
   vsph_sysinfo_load(res->load[0]);
   const double t0 = omp_get_wtime(), c0 = vsph_sysinfo_cpu_s();
-  double last = t0;
+  const double wall0 = res->wall_s, cpu0 = res->cpu_s; /* earlier segments */
+  const double sim0 = vsph_run_time(run);
+  const size_t step0 = vsph_run_steps(run);
+  double last = t0, saved = t0;
+  const double ckpt_every = run->props.checkpoint_s;
   int st = VSPH_OK;
   for (;;) {
     if ((run->due & VSPH_RUN_ROW) && (st = write_row(o, run, ref))) break;
     if ((run->due & VSPH_RUN_SNAPSHOT) && (st = write_snapshot(o, run))) break;
     if (run->state != VSPH_RUN_RUNNING) break;
-    if (opts->stop && *opts->stop) { /* after a whole step */
+    const int stop =
+        (opts->stop && *opts->stop) ||
+        (opts->stop_after && vsph_run_steps(run) - step0 >= opts->stop_after);
+    double now = omp_get_wtime();
+    if (stop || (ckpt_every > 0 && now - saved >= ckpt_every)) {
+      saved = now;
+      if ((st = checkpoint_write(o, run, key, res, wall0 + now - t0,
+                                 cpu0 + vsph_sysinfo_cpu_s() - c0)))
+        break;
+    }
+    if (stop) { /* after a whole step, its outputs and a checkpoint */
       res->interrupted = 1;
       break;
     }
     if ((st = vsph_run_iterate(run))) break;
-    const double now = omp_get_wtime();
+    now = omp_get_wtime();
     if (progress && now - last > every) {
       last = now;
-      const double frac = vsph_run_time(run) / run->t_end;
+      const double t = vsph_run_time(run);
+      const double frac = t / run->t_end;
+      const double rate = (t - sim0) / (now - t0); /* this process's */
       fprintf(progress,
               "%svsph run: t = %.4g / %g (%.1f%%), step %zu, %.3g pairs/s, "
               "%.0f s elapsed, ETA %.0f s%s",
-              tty ? "\r" : "", vsph_run_time(run), run->t_end, 100 * frac,
-              vsph_run_steps(run), run->pairs / (now - t0), now - t0,
-              (now - t0) * (1 - frac) / fmax(frac, 1e-9),
+              tty ? "\r" : "", t, run->t_end, 100 * frac, vsph_run_steps(run),
+              run->pairs / (wall0 + now - t0), wall0 + now - t0,
+              rate > 0 ? (run->t_end - t) / rate : (double)INFINITY,
               tty ? "\033[K" : "\n");
       fflush(progress);
     }
   }
   if (tty && last > t0) fprintf(progress, "\n");
-  res->wall_s = omp_get_wtime() - t0;
-  res->cpu_s = vsph_sysinfo_cpu_s() - c0;
+  res->wall_s = wall0 + omp_get_wtime() - t0;
+  res->cpu_s = cpu0 + vsph_sysinfo_cpu_s() - c0;
   vsph_sysinfo_load(res->load[1]);
   return st;
 }
@@ -433,15 +537,35 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
   const struct vsph_scene_type *type = vsph_scene_find(scene);
   if (!type)
     VSPH_FAIL(VSPH_EINVAL, "unknown scene '%s' (see vsph scenes)", scene);
-  char *key = NULL; /* the parameters as given: before any is read */
-  if (opts->cache) {
-    char what[96];
-    snprintf(what, sizeof what, "scene %s", type->name);
-    if (!(key = vsph_rundir_key(prm, what))) return VSPH_ENOMEM;
-  }
+  /* the key: the parameters as given, before any is read. Every run
+   * seals its folder with it; --cache also skips a run whose seal holds */
+  char what[96];
+  snprintf(what, sizeof what, "scene %s", type->name);
+  char *key = vsph_rundir_key(prm, what);
+  if (!key) return VSPH_ENOMEM;
   const int st = execute(prm, type, key, opts, res);
   free(key);
   return st;
+}
+
+/* Close the run's files and write run.json; an error (@p st) is recorded
+ * in it. */
+static int finish(struct outputs *o, struct vsph_run *run,
+                  const struct vsph_rundir_opts *opts,
+                  const struct vsph_rundir_result *res, int st) {
+  st = live_close(o, &o->csv, "energy.csv", st);
+  st = live_close(o, &o->profile, o->profile_name, st);
+  if (o->pvd.f) {
+    const int c = vsph_vtk_pvd_close(&o->pvd);
+    if (c && !o->error[0])
+      snprintf(o->error, sizeof o->error, "cannot write %s/snapshots.pvd",
+               res->dir);
+    if (!st) st = c;
+  }
+  const int js =
+      write_run_json(run, opts, res, (double)vsph_run_bytes(run),
+                     st ? (o->error[0] ? o->error : "a write failed") : NULL);
+  return st ? st : js;
 }
 
 static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
@@ -459,14 +583,16 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
   else
     snprintf(res->dir, sizeof res->dir, "vsph-out/%s-%s-%zu", type->name,
              vsph_run_method(&rp), rp.res);
-  if (key && vsph_rundir_key_matches(res->dir, key)) {
+  if (opts->cache && vsph_rundir_key_matches(res->dir, key)) {
     res->cached = 1;
     if (opts->progress)
       fprintf(opts->progress,
-              "vsph run: %s is cached (its key.txt matches): not run again\n",
+              "vsph run: %s is cached (its key.txt holds): not run again\n",
               res->dir);
     return VSPH_OK;
   }
+  /* the folder judged before the run is laid out: a refusal is quick */
+  if ((st = vsph_folder_judge(res->dir, &vsph_folder_scene_run))) return st;
   struct vsph_run *run = NULL;
   if ((st = vsph_run_alloc(&rp, &sc, &run))) return st;
   struct vsph_references_scene *ref = vsph_references_scene_alloc(&run->scene);
@@ -474,62 +600,122 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
     vsph_run_free(run);
     return VSPH_ELIB;
   }
-  /* Only now, with every input checked, touch the folder, and only once
-   * it is known to be new, empty or an earlier vsph run's (prepare_dir
-   * removes that run's key.txt first): a refused run changes nothing */
+  /* Only now, with every input checked, claim the folder (a lock, and a
+   * folder that is new, empty or this kind's: a refused run changes
+   * nothing) */
   struct outputs o = {.dir = res->dir};
-  if ((st = prepare_dir(res->dir)) || (st = write_used(prm, res->dir)))
+  struct vsph_folder fo = {.fd = -1};
+  if ((st = vsph_folder_claim(&fo, res->dir, &vsph_folder_scene_run)))
     goto done;
+  const int cavity = type == &vsph_cavity_type;
+  o.profile_name = cavity ? "centreline.csv" : "profile.csv";
+  const int with_profile =
+      rp.snapshots > 0 && (cavity || vsph_scene_is_channel(type));
+  /* a checkpoint of this very run: resume from it */
+  struct ckpt c;
+  size_t state_at = 0;
+  char why[200];
+  unsigned char *ck =
+      checkpoint_read(res->dir, key, &c, &state_at, why, sizeof why);
+  if (ck && (st = vsph_run_unpack(run, ck + state_at, (size_t)c.state))) {
+    /* not this run's after all: lay it out afresh */
+    snprintf(why, sizeof why, "its state does not fit this run");
+    free(ck);
+    ck = NULL;
+    vsph_run_free(run);
+    run = NULL;
+    if ((st = vsph_run_alloc(&rp, &sc, &run))) goto done;
+  }
+  if (ck && resume_dir(res->dir, &c, o.profile_name, why, sizeof why)) {
+    free(ck); /* (the run's state was restored: lay it out afresh) */
+    ck = NULL;
+    vsph_run_free(run);
+    run = NULL;
+    if ((st = vsph_run_alloc(&rp, &sc, &run))) goto done;
+  }
+  FILE *progress = opts->progress;
+  if (why[0] && progress)
+    fprintf(progress,
+            "vsph run: %s/checkpoint.bin is not used (%s): "
+            "starting over\n",
+            res->dir, why);
+  long keep[3] = {-1, -1, -1};
+  if (ck) {
+    keep[0] = (long)c.csv;
+    keep[1] = (long)c.profile;
+    keep[2] = (long)c.pvd;
+    o.nsnap = (size_t)c.nsnap;
+    res->segments = (size_t)c.segments + 1;
+    res->wall_s = c.wall_s;
+    res->cpu_s = c.cpu_s;
+    memcpy(res->started, c.started, sizeof res->started);
+    res->started[sizeof res->started - 1] = '\0';
+    free(ck);
+  } else {
+    res->segments = 1;
+    if ((st = vsph_folder_clear(&fo, NULL)) || (st = write_used(prm, res->dir)))
+      goto done;
+  }
   o.csv = live_open(&o, "energy.csv",
                     "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,"
                     "Ek_ref,dEk_ref,Em_ref,dEm_ref,u_err,u_err_rel,v_rms\n",
-                    &st);
+                    keep[0], &st);
   if (st) goto done;
-  if (rp.snapshots > 0 && (st = vsph_vtk_pvd_open(&o.pvd, res->dir))) goto done;
-  const int cavity = type == &vsph_cavity_type;
-  o.profile_name = cavity ? "centreline.csv" : "profile.csv";
-  if (rp.snapshots > 0 && (cavity || vsph_scene_is_channel(type)) &&
-      !(o.profile = live_open(
-            &o, o.profile_name,
-            cavity ? "t,line,s,vel,vel_ghia\n" : "t,y,u,u_ref,n\n", &st)))
+  if (rp.snapshots > 0 &&
+      (st = keep[0] < 0 ? vsph_vtk_pvd_open(&o.pvd, res->dir)
+                        : vsph_vtk_pvd_reopen(&o.pvd, res->dir, keep[2])))
+    goto done;
+  if (with_profile && !(o.profile = live_open(&o, o.profile_name,
+                                              cavity ? "t,line,s,vel,vel_ghia\n"
+                                                     : "t,y,u,u_ref,n\n",
+                                              keep[1], &st)))
     goto done;
   res->n_particles = run->n_fluid;
   res->h = run->h;
   res->dx = run->dx;
   res->c0 = run->scene.c0;
   res->mu = run->scene.mu;
-  FILE *progress = opts->progress;
-  if (progress)
+  if (progress) {
     fprintf(progress,
             "vsph run: %s, %s, %s, %zu particles, h = %.4g, c0 = %.4g, "
             "t_end = %g -> %s\n",
             type->name, vsph_run_method(&rp), rp.kernel, run->n_fluid, run->h,
             run->scene.c0, run->t_end, res->dir);
-  st = time_loop(&o, run, ref, opts, res);
+    if (keep[0] >= 0)
+      fprintf(progress,
+              "vsph run: resuming from its checkpoint at t = %.6g, step %zu "
+              "(process %zu of this run)\n",
+              vsph_run_time(run), vsph_run_steps(run), res->segments);
+  }
+  st = time_loop(&o, run, ref, key, opts, res);
   res->unstable = run->state == VSPH_RUN_UNSTABLE;
   res->unstable_time = run->t_unstable;
   snprintf(res->reason, sizeof res->reason, "%s", run->reason);
   res->steps = vsph_run_steps(run);
   res->t = vsph_run_time(run);
   res->pairs = run->pairs;
-  st = live_close(&o, &o.csv, "energy.csv", st);
-  st = live_close(&o, &o.profile, o.profile_name, st);
-  if (o.pvd.f) {
-    const int c = vsph_vtk_pvd_close(&o.pvd);
-    if (c && !o.error[0])
-      snprintf(o.error, sizeof o.error, "cannot write %s/snapshots.pvd",
-               res->dir);
-    if (!st) st = c;
+  /* an ended run: its checkpoint goes before run.json can call it ok */
+  char path[700];
+  snprintf(path, sizeof path, "%s/checkpoint.bin", res->dir);
+  if (!st && !res->interrupted && remove(path) != 0 && errno != ENOENT) {
+    snprintf(o.error, sizeof o.error, "cannot remove %s: %s", path,
+             strerror(errno));
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "%s", o.error);
+    st = VSPH_EIO;
   }
-  /* run.json last: its status says what became of the run, and a lost
-   * write never ends as "ok" */
-  const int js =
-      write_run_json(run, opts, res, (double)vsph_run_bytes(run),
-                     st ? (o.error[0] ? o.error : "a write failed") : NULL);
-  if (!st) st = js;
+  /* run.json: its status says what became of the run, and a lost write
+   * never ends as "ok" */
+  st = finish(&o, run, opts, res, st);
   if (!st && res->interrupted) st = VSPH_EINTR;
-  /* the key last: only a run that ended matches */
-  if (!st && key) st = vsph_rundir_key_write(res->dir, key);
+  /* the seal last: only a run that ended is sealed, and a seal that
+   * cannot be written takes "ok" back */
+  if (!st && (st = vsph_folder_seal(&fo, key, NULL))) {
+    snprintf(o.error, sizeof o.error, "cannot seal %s (key.txt)", res->dir);
+    if (write_run_json(run, opts, res, (double)vsph_run_bytes(run), o.error)) {
+      snprintf(path, sizeof path, "%s/run.json", res->dir);
+      remove(path); /* no status is better than a false one */
+    }
+  }
   if (!st && progress) {
     if (res->unstable)
       fprintf(progress,
@@ -543,6 +729,7 @@ done:
   if (o.csv) fclose(o.csv);
   if (o.profile) fclose(o.profile);
   if (o.pvd.f) fclose(o.pvd.f);
+  vsph_folder_release(&fo);
   vsph_references_scene_free(ref);
   vsph_run_free(run);
   return st;

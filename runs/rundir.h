@@ -27,12 +27,14 @@ struct vsph_rundir_opts {
   /** the command that asked for the run, as run.json records it; NULL:
    *  not recorded */
   const char *command;
-  /** 1: a cached run. Its key (vsph_rundir_key of the parameters as
-   *  given) is written to key.txt last, after run.json, and only for a
-   *  run that ended (ok or unstable); a folder whose key.txt already
-   *  matches is not run again (res->cached). key.txt goes first when a
-   *  run starts, so a half-written run never matches. */
+  /** 1: a cached run: a folder whose seal (key.txt: the key of the
+   *  parameters as given, vsph_rundir_key, and every file's size and
+   *  CRC-32, runs/folder) holds is not run again (res->cached). Every run
+   *  that ends (ok or unstable) is sealed, cached or not. */
   int cache;
+  /** if not 0, the run stops as through *stop after this many steps of
+   *  this process (tests of checkpoint and restart) */
+  size_t stop_after;
 };
 
 /** What one run reports back (also written to run.json). */
@@ -51,6 +53,7 @@ struct vsph_rundir_result {
   double h, dx, c0, mu; /*!< resolution and physics used */
   char dir[512];        /*!< the folder written */
   char started[32];     /*!< UTC date and time of the start (ISO 8601) */
+  size_t segments;      /*!< processes the run took: 1 + its resumptions */
   int cached;           /*!< 1: opts.cache and the folder's key matched:
                              nothing was run (the other fields are empty) */
 };
@@ -67,21 +70,20 @@ char *vsph_rundir_key(const struct vsph_params *prm, const char *what);
 /** @brief 1 if @p dir/key.txt holds exactly @p key. */
 int vsph_rundir_key_matches(const char *dir, const char *key);
 
-/** @brief Write @p key to @p dir/key.txt (atomic). */
-int vsph_rundir_key_write(const char *dir, const char *key);
-
-/** @brief Remove @p dir/key.txt (absent is fine). */
-int vsph_rundir_key_remove(const char *dir);
-
-/** @brief Run scene @p scene with the parameters of @p prm as @p o says.
- *  The folder must be new, empty, or hold an earlier vsph run, whose files
- *  are removed first (run.json first), so a folder never mixes two runs;
- *  any other non-empty folder is refused.
+/** @brief Run scene @p scene with the parameters of @p prm as @p o says,
+ *  into a folder under the contract of runs/folder (claimed and locked:
+ *  new, empty, or an earlier scene run's, whose files are removed, key.txt
+ *  and run.json first; anything else is refused before it is touched).
+ *  A folder holding a checkpoint of this very run (same sources, same
+ *  parameters but Solver:checkpoint_s) resumes from it; the finished run
+ *  is then bitwise the run never stopped, timings aside. A checkpoint is
+ *  written every Solver:checkpoint_s of wall time and when stopped.
  *  @return VSPH_OK (a run stopped as unstable is a result, and OK);
  *  VSPH_EINVAL for bad input (one message reported, nothing written);
  *  VSPH_EINTR when stopped through o->stop (run.json says "interrupted",
- *  the snapshot index is closed); VSPH_EIO (a write failed: run.json says
- *  "error" if it can still be written), VSPH_ENOMEM, VSPH_ELIB. */
+ *  the checkpoint is kept, the snapshot index is closed); VSPH_EIO (a
+ *  write failed: run.json says "error" if it can still be written, and
+ *  never "ok"), VSPH_ENOMEM, VSPH_ELIB. */
 int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
                         const struct vsph_rundir_opts *o,
                         struct vsph_rundir_result *res);

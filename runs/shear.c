@@ -10,42 +10,47 @@
 #include "../common/status.h"
 #include "../io/csv.h"
 #include "../io/files.h"
+#include "folder.h"
 #include "rundir.h"
 
 int vsph_shear_execute(struct vsph_params *prm, size_t nprof, const char *dir,
                        int cache, int quiet, int *cached) {
   *cached = 0;
-  char *key = NULL;
-  if (cache) { /* the parameters as given: before any is read */
-    char what[64];
-    snprintf(what, sizeof what, "contact %zu", nprof);
-    if (!(key = vsph_rundir_key(prm, what))) return VSPH_ENOMEM;
-    if (vsph_rundir_key_matches(dir, key)) {
-      *cached = 1;
-      free(key);
-      return VSPH_OK;
-    }
+  /* the parameters as given: before any is read */
+  char what[64];
+  snprintf(what, sizeof what, "contact %zu", nprof);
+  char *key = vsph_rundir_key(prm, what);
+  if (!key) return VSPH_ENOMEM;
+  if (cache && vsph_folder_verify(dir, &vsph_folder_shear_test, key, NULL, NULL,
+                                  0) == 1) {
+    *cached = 1;
+    free(key);
+    return VSPH_OK;
   }
-  /* the folder first: one that cannot be made is bad input, found before
-   * the measurement rather than after it */
-  const int existed = access(dir, F_OK) == 0;
-  int st = vsph_files_mkdir(dir);
+  /* the folder judged and claimed first: one that cannot be used is bad
+   * input, found before the measurement rather than after it */
+  struct vsph_folder fo;
+  int st = vsph_folder_claim(&fo, dir, &vsph_folder_shear_test);
   if (st) {
     free(key);
     return st;
   }
   struct vsph_contact_shear cs = {.nprof = nprof, .quiet = quiet};
   st = vsph_contact_shear_measure(prm, &cs);
-  if (st && !existed) rmdir(dir); /* refused: no folder left behind */
+  if (st == VSPH_EINVAL) /* refused: the folder as it was */
+    vsph_folder_abandon(&fo);
   char *sum = NULL, *prof = NULL;
   if (!st && !((sum = vsph_shear_csv_summary(&cs)) &&
                (prof = vsph_shear_csv_profiles(&cs))))
     st = VSPH_ENOMEM;
   vsph_contact_shear_free(&cs);
-  if (!st && key) st = vsph_rundir_key_remove(dir);
+  /* key.txt first (nothing may vouch for a half-written folder), the seal
+   * last */
+  if (!st) st = vsph_folder_clear(&fo, NULL);
   if (!st) st = vsph_files_write(dir, "summary.csv", sum);
   if (!st) st = vsph_files_write(dir, "profiles.csv", prof);
-  if (!st && key) st = vsph_rundir_key_write(dir, key);
+  if (!st) st = vsph_folder_seal(&fo, key, NULL);
+  vsph_folder_release(&fo);
   free(sum);
   free(prof);
   free(key);

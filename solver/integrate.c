@@ -1,6 +1,7 @@
 #include "integrate.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -425,4 +426,125 @@ double vsph_integrate_bytes_estimate(int dim, double n_fluid, double n_ghosts,
   const double cap = walls ? n + n / 8 + 64 : n + 8;
   const double per = (double)layout_bytes((size_t)dim, 1, 1, 8, ws, walls, tvf);
   return cap * per + 4096.0 * 2 * sizeof(size_t);
+}
+
+/* ------------------------------------------------------ the whole state */
+
+/* A cursor over a state buffer: sizing when buf is NULL. */
+struct cursor {
+  unsigned char *buf;
+  const unsigned char *in;
+  size_t at, len;
+};
+
+static void put(struct cursor *c, const void *src, size_t n) {
+  if (c->buf) memcpy(c->buf + c->at, src, n);
+  c->at += n;
+}
+
+static int get(struct cursor *c, void *dst, size_t n) {
+  if (n > c->len - c->at) return 0;
+  memcpy(dst, c->in + c->at, n);
+  c->at += n;
+  return 1;
+}
+
+/* The particle arrays in a fixed order, present or not: *n receives the
+ * count, sizes[] each element's size. */
+static int arrays(struct vsph_particles *p, void **a[32], size_t sz[32]) {
+  int n = 0;
+  for (int k = 0; k < p->dim; k++) {
+    sz[n] = sizeof(double), a[n++] = (void **)&p->pos[k];
+    sz[n] = sizeof(double), a[n++] = (void **)&p->vel[k];
+    sz[n] = sizeof(double), a[n++] = (void **)&p->acc[k];
+    sz[n] = sizeof(double), a[n++] = (void **)&p->tvel[k];
+    sz[n] = sizeof(double), a[n++] = (void **)&p->bacc[k];
+  }
+  double **sc[7] = {&p->m, &p->rho, &p->vol, &p->p, &p->drho, &p->e, &p->de};
+  for (int k = 0; k < 7; k++) sz[n] = sizeof(double), a[n++] = (void **)sc[k];
+  sz[n] = sizeof *p->mat, a[n++] = (void **)&p->mat;
+  sz[n] = sizeof *p->id, a[n++] = (void **)&p->id;
+  return n;
+}
+
+size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf) {
+  struct cursor c = {.buf = buf};
+  struct vsph_particles *p = s->p;
+  const uint64_t head[6] = {(uint64_t)p->dim,   (uint64_t)p->n,
+                            (uint64_t)p->cap,   (uint64_t)s->n_fluid,
+                            (uint64_t)s->steps, (uint64_t)s->interactions};
+  put(&c, head, sizeof head);
+  put(&c, &s->t, sizeof s->t);
+  put(&c, &s->min_dist, sizeof s->min_dist);
+  put(&c, s->reason, sizeof s->reason);
+  void **a[32];
+  size_t sz[32];
+  const int na = arrays(p, a, sz);
+  uint64_t have = 0;
+  for (int k = 0; k < na; k++) have |= (uint64_t)(*a[k] != NULL) << k;
+  put(&c, &have, sizeof have);
+  for (int k = 0; k < na; k++)
+    if (*a[k]) put(&c, *a[k], p->n * sz[k]);
+  const int32_t tvf = s->tvf_have;
+  put(&c, &tvf, sizeof tvf);
+  if (tvf) /* the last evaluation's a and a_b by particle id */
+    for (int f = 0; f < 2 * p->dim; f++)
+      put(&c, s->ks[f], s->n_fluid * sizeof(double));
+  return c.at;
+}
+
+int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
+                          size_t len, size_t *used) {
+  struct cursor c = {.in = buf, .len = len};
+  struct vsph_particles *p = s->p;
+  uint64_t head[6], have;
+  double t, min_dist;
+  char reason[sizeof s->reason];
+  if (!get(&c, head, sizeof head) || !get(&c, &t, sizeof t) ||
+      !get(&c, &min_dist, sizeof min_dist) || !get(&c, reason, sizeof reason) ||
+      !get(&c, &have, sizeof have))
+    VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
+  if (head[0] != (uint64_t)p->dim || head[3] != (uint64_t)s->n_fluid ||
+      head[1] < s->n_fluid || head[1] > head[2] || head[2] > (1ull << 40))
+    VSPH_FAIL(VSPH_EINVAL,
+              "the saved state holds %llu particles in %llu-D, this run "
+              "%zu in %d-D",
+              (unsigned long long)head[3], (unsigned long long)head[0],
+              s->n_fluid, p->dim);
+  void **a[32];
+  size_t sz[32];
+  const int na = arrays(p, a, sz);
+  for (int k = 0; k < na; k++)
+    if ((have >> k & 1) != (*a[k] != NULL))
+      VSPH_FAIL(VSPH_EINVAL, "the saved state's fields are not this run's");
+  /* the very capacity the run had: the buffers as they were */
+  int st = vsph_particles_reserve(p, (size_t)head[2]);
+  if (!st && p->cap != (size_t)head[2])
+    VSPH_FAIL(VSPH_EINVAL, "the saved capacity %llu cannot be restored",
+              (unsigned long long)head[2]);
+  if (!st) st = buffers_alloc(s);
+  if (st) return st;
+  p->n = (size_t)head[1];
+  for (int k = 0; k < na; k++)
+    if (*a[k] && !get(&c, *a[k], p->n * sz[k]))
+      VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
+  int32_t tvf;
+  if (!get(&c, &tvf, sizeof tvf))
+    VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
+  if (tvf)
+    for (int f = 0; f < 2 * p->dim; f++)
+      if (!get(&c, s->ks[f], s->n_fluid * sizeof(double)))
+        VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
+  for (size_t i = 0; i < p->n; i++)
+    if (p->id[i] >= p->n)
+      VSPH_FAIL(VSPH_EINVAL, "the saved state's particle ids are damaged");
+  s->tvf_have = tvf != 0;
+  s->t = t;
+  s->min_dist = min_dist;
+  s->steps = (size_t)head[4];
+  s->interactions = (size_t)head[5];
+  memcpy(s->reason, reason, sizeof reason);
+  s->reason[sizeof s->reason - 1] = '\0';
+  *used = c.at;
+  return VSPH_OK;
 }

@@ -79,6 +79,23 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
                                struct vsph_equations_energy *en,
                                struct vsph_equations_budget *b);
 
+/** @brief The integrator's whole state (every particle array in its
+ *  current order, ghosts and wall particles included, the capacity, time,
+ *  step count and the transport-velocity scheme's kept rates) packed into
+ *  @p buf, or only sized when @p buf is NULL: restored by
+ *  vsph_integrate_unpack into an integrator set up with the same
+ *  settings, the run goes on bitwise as if never stopped. In the
+ *  machine's byte order.
+ *  @return the bytes packed. */
+size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf);
+
+/** @brief Restore a state packed by vsph_integrate_pack (@p len bytes at
+ *  @p buf; *used receives those read).
+ *  @return VSPH_OK, VSPH_EINVAL (cut short, or not this set-up's: the
+ *  integrator is then unusable and must be freed), VSPH_ENOMEM. */
+int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
+                          size_t len, size_t *used);
+
 /** @brief Bytes allocated for particles, neighbour structures and
  *  integrator storage. */
 size_t vsph_integrate_bytes(const struct vsph_integrate *s);

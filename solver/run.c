@@ -1,6 +1,7 @@
 #include "run.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -61,6 +62,10 @@ static const struct vsph_params_spec SOLVER[] = {
                          "one that reaches it"),
     VSPH_PARAMS_REAL_SPEC(P, max_memory, VSPH_CONSTS_MAX_MEMORY, 1e-3, 4096,
                           "refuse a run estimated to need more memory (GiB)"),
+    VSPH_PARAMS_REAL_SPEC(P, checkpoint_s, 600.0, 0.0, 1e9,
+                          "wall time (s) between checkpoints of a run in a "
+                          "folder (runs/rundir; 0: only on SIGTERM/SIGINT); "
+                          "not part of the cache key"),
     VSPH_PARAMS_NAME_SPEC(P, eos, "linear",
                           "state equation: linear (c0^2 (rho - rho0)), tait "
                           "(gamma 7) or gas (ideal gas, gamma 1.4, with the "
@@ -423,4 +428,58 @@ size_t vsph_run_bytes(const struct vsph_run *r) {
 
 size_t vsph_run_fallbacks(const struct vsph_run *r) {
   return r->integ->vws ? r->integ->vws->n_fallback : 0;
+}
+
+/* The driver's own state beside the integrator's. */
+struct run_state {
+  double t_unstable, pairs, out_dt, snap_dt, next_out, next_snap, t_end;
+  int32_t due, state;
+  char reason[160];
+};
+
+size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf) {
+  struct run_state rs;
+  memset(&rs, 0, sizeof rs);
+  rs.t_unstable = r->t_unstable;
+  rs.pairs = r->pairs;
+  rs.out_dt = r->out_dt;
+  rs.snap_dt = r->snap_dt;
+  rs.next_out = r->next_out;
+  rs.next_snap = r->next_snap;
+  rs.t_end = r->t_end;
+  rs.due = (int32_t)r->due;
+  rs.state = r->state;
+  memcpy(rs.reason, r->reason, sizeof rs.reason);
+  if (buf) memcpy(buf, &rs, sizeof rs);
+  return sizeof rs +
+         vsph_integrate_pack(r->integ, buf ? buf + sizeof rs : NULL);
+}
+
+int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len) {
+  struct run_state rs;
+  if (len < sizeof rs) VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
+  memcpy(&rs, buf, sizeof rs);
+  /* the schedule must be this run's, to the bit */
+  if (memcmp(&rs.out_dt, &r->out_dt, sizeof rs.out_dt) ||
+      memcmp(&rs.t_end, &r->t_end, sizeof rs.t_end) ||
+      (rs.state != VSPH_RUN_RUNNING && rs.state != VSPH_RUN_DONE &&
+       rs.state != VSPH_RUN_UNSTABLE))
+    VSPH_FAIL(VSPH_EINVAL, "the saved state is not this run's");
+  size_t used = 0;
+  const int st =
+      vsph_integrate_unpack(r->integ, buf + sizeof rs, len - sizeof rs, &used);
+  if (st) return st;
+  if (used != len - sizeof rs)
+    VSPH_FAIL(VSPH_EINVAL, "the saved state has %zu bytes too many",
+              len - sizeof rs - used);
+  r->t_unstable = rs.t_unstable;
+  r->pairs = rs.pairs;
+  r->snap_dt = rs.snap_dt;
+  r->next_out = rs.next_out;
+  r->next_snap = rs.next_snap;
+  r->due = 0; /* packed after its due outputs were written */
+  r->state = rs.state;
+  memcpy(r->reason, rs.reason, sizeof rs.reason);
+  r->reason[sizeof r->reason - 1] = '\0';
+  return VSPH_OK;
 }

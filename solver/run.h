@@ -48,20 +48,22 @@ struct vsph_run_props {
   double xi;                         /*!< Cleary's coefficient */
   double zeta;                       /*!< Espanol-Revenga: zeta / mu */
   char kernel[VSPH_PARAMS_NAME_MAX]; /*!< kernel name */
-  size_t res;        /*!< particles across the reference length */
-  double hdx;        /*!< h/dx */
-  double t_end;      /*!< end time (s); 0: the scene's */
-  double cfl;        /*!< Courant number of RK4 */
-  double delta;      /*!< delta-SPH coefficient; 0: off */
-  double rho_band;   /*!< unstable when |rho/rho0 - 1| exceeds it */
-  double min_gap;    /*!< unstable when two particles come closer (dx) */
-  size_t outputs;    /*!< energy rows over the run */
-  size_t snapshots;  /*!< snapshots over the run; 0: none */
-  double perturb;    /*!< random shift of the initial lattice (dx) */
-  size_t seed;       /*!< seed of that shift (mt19937) */
-  size_t max_steps;  /*!< refuse a run estimated to need more steps; stop
-                          one that reaches it */
-  double max_memory; /*!< refuse a run estimated to need more (GiB) */
+  size_t res;          /*!< particles across the reference length */
+  double hdx;          /*!< h/dx */
+  double t_end;        /*!< end time (s); 0: the scene's */
+  double cfl;          /*!< Courant number of RK4 */
+  double delta;        /*!< delta-SPH coefficient; 0: off */
+  double rho_band;     /*!< unstable when |rho/rho0 - 1| exceeds it */
+  double min_gap;      /*!< unstable when two particles come closer (dx) */
+  size_t outputs;      /*!< energy rows over the run */
+  size_t snapshots;    /*!< snapshots over the run; 0: none */
+  double perturb;      /*!< random shift of the initial lattice (dx) */
+  size_t seed;         /*!< seed of that shift (mt19937) */
+  size_t max_steps;    /*!< refuse a run estimated to need more steps; stop
+                            one that reaches it */
+  double max_memory;   /*!< refuse a run estimated to need more (GiB) */
+  double checkpoint_s; /*!< wall time between checkpoints (s); 0: only on
+                            a signal (runs/rundir writes them) */
   char eos[VSPH_PARAMS_NAME_MAX]; /*!< state equation: linear, tait, gas */
   double p0;     /*!< gas law: reference pressure (Pa); 0: from c0 */
   size_t reduce; /*!< 1: Basa et al.'s local pressure reduction */
@@ -152,6 +154,21 @@ int vsph_run_iterate(struct vsph_run *r);
 /** @brief The energy row of the current state (one extra right-hand side).
  *  @return VSPH_OK or an internal failure. */
 int vsph_run_row(struct vsph_run *r, struct vsph_run_row *row);
+
+/** @brief The run's whole state (the driver's schedule and counters and
+ *  the integrator's, vsph_integrate_pack) packed into @p buf, or only
+ *  sized when @p buf is NULL. Between two vsph_run_iterate calls a run
+ *  restored from it by vsph_run_unpack goes on bitwise as if never
+ *  stopped. @return the bytes packed. */
+size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf);
+
+/** @brief Restore a state packed by vsph_run_pack into @p r, freshly made
+ *  by vsph_run_alloc with the same settings (@p len bytes at @p buf).
+ *  Nothing is due after it: a state is packed once its outputs are
+ *  written.
+ *  @return VSPH_OK; VSPH_EINVAL when it is cut short or not this run's (r
+ *  must then be freed); VSPH_ENOMEM. */
+int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len);
 
 /** @brief Time reached (s). */
 double vsph_run_time(const struct vsph_run *r);

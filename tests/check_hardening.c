@@ -201,8 +201,9 @@ START_TEST(test_signals) {
 END_TEST
 
 /* Defect 7: a reused folder mixed runs. A rerun replaces the earlier run's
- * files (no stale snapshot), keeps the user's own; a folder that holds no
- * vsph run is refused untouched; a killed rerun leaves no "ok". */
+ * files (no stale snapshot); a run folder that also holds the user's own
+ * file, or a folder that holds no vsph run, is refused untouched (issue
+ * 23's folder contract); a killed rerun leaves no "ok". */
 START_TEST(test_reused_folder) {
   char dir[] = "/tmp/vsph_reuseXXXXXX", args[800], path[700];
   scratch(dir);
@@ -212,10 +213,6 @@ START_TEST(test_reused_folder) {
   ck_assert_int_eq(vsph_test_cli(args)->status, 0);
   snprintf(path, sizeof path, "%s/r/snap_0004.vtp", dir);
   ck_assert(exists(path));
-  snprintf(path, sizeof path, "%s/r/notes.txt", dir);
-  FILE *f = fopen(path, "w");
-  fputs("mine\n", f);
-  fclose(f);
   snprintf(args, sizeof args,
            "run stretching-square --res 10 --t-end 0.1 --out %s/r --quiet "
            "--set Solver:snapshots=2",
@@ -223,8 +220,19 @@ START_TEST(test_reused_folder) {
   ck_assert_int_eq(vsph_test_cli(args)->status, 0);
   snprintf(path, sizeof path, "%s/r/snap_0004.vtp", dir);
   ck_assert_msg(!exists(path), "a snapshot of the earlier run stayed");
+  /* the user's file in a run folder: refused, nothing touched */
   snprintf(path, sizeof path, "%s/r/notes.txt", dir);
+  FILE *f = fopen(path, "w");
+  fputs("mine\n", f);
+  fclose(f);
+  ck_assert_int_eq(vsph_test_cli(args)->status, 2);
+  ck_assert_msg(strstr(vsph_test_cli(args)->err, "notes.txt") != NULL, "%s",
+                vsph_test_cli(args)->err);
   ck_assert(exists(path));
+  snprintf(path, sizeof path, "%s/r/snap_0002.vtp", dir);
+  ck_assert(exists(path));
+  snprintf(path, sizeof path, "%s/r/notes.txt", dir);
+  ck_assert_int_eq(remove(path), 0);
   /* the cavity's centreline table goes too when the rerun writes none */
   snprintf(args, sizeof args,
            "run cavity --tvf 1 --res 8 --t-end 0.01 --out %s/c --quiet", dir);
@@ -412,7 +420,7 @@ START_TEST(test_special_outputs) {
            file);
   struct vsph_test_outcome *o = vsph_test_cli(args);
   ck_assert_msg(o->status == 2, "'%s' exited %d: %s", args, o->status, o->err);
-  ck_assert_msg(strstr(o->err, "is not a folder") != NULL, "%s", o->err);
+  ck_assert_msg(strstr(o->err, "not a folder") != NULL, "%s", o->err);
   vsph_test_slurp(file, text, sizeof text);
   ck_assert_str_eq(text, "mine\n");
   ck_assert_int_eq(remove(fifo), 0);
@@ -466,7 +474,7 @@ START_TEST(test_refused_run_deletes_nothing) {
            dir);
   struct vsph_test_outcome *o = vsph_test_cli(args);
   ck_assert_msg(o->status == 2, "exit %d: %s", o->status, o->err);
-  ck_assert_msg(strstr(o->err, "holds no vsph run") != NULL, "%s", o->err);
+  ck_assert_msg(strstr(o->err, "vsph did not make it") != NULL, "%s", o->err);
   char text[16] = "";
   vsph_test_slurp(key, text, sizeof text);
   ck_assert_str_eq(text, "x\n");

@@ -89,7 +89,9 @@ START_TEST(test_command_is_the_run) {
   ck_assert_ptr_nonnull(ea);
   vsph_test_slurp((snprintf(a, sizeof a, "%s/key.txt", j.dir), a), ka,
                   sizeof ka);
-  ck_assert_str_eq(ka, j.key);
+  /* the seal: the key, then the files (their sizes and CRCs) */
+  ck_assert_int_eq(strncmp(ka, j.key, strlen(j.key)), 0);
+  ck_assert_ptr_nonnull(strstr(ka, "\nenergy.csv "));
   /* by the command, into another folder */
   char other[400];
   snprintf(other, sizeof other, "%s/by-command", dir);
@@ -104,7 +106,12 @@ START_TEST(test_command_is_the_run) {
   ck_assert_str_eq(ea, eb);
   vsph_test_slurp((snprintf(b, sizeof b, "%s/key.txt", other), b), kb,
                   sizeof kb);
-  ck_assert_str_eq(kb, j.key);
+  /* the same seal: energy.csv's size and CRC as the report's */
+  ck_assert_int_eq(strncmp(kb, j.key, strlen(j.key)), 0);
+  ck_assert_ptr_nonnull(strstr(kb, "\nenergy.csv "));
+  const char *la = strstr(ka, "\nenergy.csv "),
+             *lb = strstr(kb, "\nenergy.csv ");
+  ck_assert_int_eq(strncmp(la, lb, strcspn(la + 1, "\n") + 1), 0);
   /* again: cached, not run (run.json untouched) */
   snprintf(b, sizeof b, "%s/run.json", other);
   struct stat s0, s1;

@@ -1,0 +1,487 @@
+#include "folder.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include "../common/consts.h"
+#include "../common/status.h"
+#include "../io/files.h"
+
+/* ------------------------------------------------------------ the kinds */
+
+static int ends_with(const char *s, const char *tail) {
+  const size_t n = strlen(s), m = strlen(tail);
+  return n > m && !strcmp(s + n - m, tail);
+}
+
+/* NAME.tmp, the atomic writers' temporary of an owned NAME */
+static int tmp_of(const char *name, int (*owns)(const char *)) {
+  char base[256];
+  const size_t n = strlen(name);
+  if (n < 5 || n - 4 >= sizeof base || !ends_with(name, ".tmp")) return 0;
+  memcpy(base, name, n - 4);
+  base[n - 4] = '\0';
+  return owns(base) == VSPH_FOLDER_FILE;
+}
+
+static int one_of(const char *name, const char *const *list) {
+  for (; *list; list++)
+    if (!strcmp(name, *list)) return 1;
+  return 0;
+}
+
+static int owns_scene(const char *name) {
+  static const char *const exact[] = {
+      "run.json",    "energy.csv",     "snapshots.pvd",
+      "profile.csv", "centreline.csv", "used_parameters.yml",
+      "key.txt",     "checkpoint.bin", NULL};
+  if (one_of(name, exact)) return VSPH_FOLDER_FILE;
+  const size_t n = strlen(name);
+  if (n == 13 && !strncmp(name, "snap_", 5) && ends_with(name, ".vtp") &&
+      strspn(name + 5, "0123456789") == 4)
+    return VSPH_FOLDER_FILE;
+  return tmp_of(name, owns_scene) ? VSPH_FOLDER_FILE : VSPH_FOLDER_FOREIGN;
+}
+
+static int owns_shear(const char *name) {
+  static const char *const exact[] = {"summary.csv", "profiles.csv", "key.txt",
+                                      NULL};
+  if (one_of(name, exact)) return VSPH_FOLDER_FILE;
+  return tmp_of(name, owns_shear) ? VSPH_FOLDER_FILE : VSPH_FOLDER_FOREIGN;
+}
+
+/* A report: its text, tables, figures and their gnuplot scripts and
+ * logs, its parts, its runs and its Slurm scripts. */
+static int owns_report(const char *name) {
+  static const char *const dirs[] = {"parts", "runs", "slurm", NULL};
+  static const char *const ext[] = {".csv",  ".gp",   ".log", ".pdf",
+                                    ".png",  ".svg",  ".md",  ".html",
+                                    ".json", ".lock", ".tmp", NULL};
+  if (one_of(name, dirs)) return VSPH_FOLDER_SUBDIR;
+  if (name[0] == '.') return VSPH_FOLDER_FOREIGN;
+  for (const char *const *e = ext; *e; e++)
+    if (ends_with(name, *e)) return VSPH_FOLDER_FILE;
+  return VSPH_FOLDER_FOREIGN;
+}
+
+const struct vsph_folder_kind vsph_folder_scene_run = {"scene run", owns_scene};
+const struct vsph_folder_kind vsph_folder_shear_test = {"shear test",
+                                                        owns_shear};
+const struct vsph_folder_kind vsph_folder_report = {"report", owns_report};
+
+/* ----------------------------------------------------------- judging */
+
+static const char *type_of(mode_t m) {
+  return S_ISDIR(m)    ? "a folder"
+         : S_ISLNK(m)  ? "a symbolic link"
+         : S_ISFIFO(m) ? "a FIFO"
+         : S_ISSOCK(m) ? "a socket"
+         : S_ISREG(m)  ? "a file"
+                       : "a device";
+}
+
+/* The marker's text for @p kind. */
+static void marker_text(const struct vsph_folder_kind *kind, char *buf,
+                        size_t len) {
+  snprintf(buf, len, "vsph %s folder\n", kind->name);
+}
+
+int vsph_folder_judge(const char *dir, const struct vsph_folder_kind *kind) {
+  if (!dir[0]) VSPH_FAIL(VSPH_EINVAL, "the folder's name is empty");
+  if (strlen(dir) > 3000)
+    VSPH_FAIL(VSPH_EINVAL, "folder name too long: %.60s...", dir);
+  struct stat sb;
+  if (stat(dir, &sb) != 0) {
+    if (errno == ENOENT) return VSPH_OK; /* to be made */
+    VSPH_FAIL(VSPH_EINVAL, "%s: %s", dir, strerror(errno));
+  }
+  if (!S_ISDIR(sb.st_mode))
+    VSPH_FAIL(VSPH_EINVAL, "%s exists and is %s, not a folder", dir,
+              type_of(sb.st_mode));
+  DIR *d = opendir(dir);
+  if (!d) VSPH_FAIL(VSPH_EINVAL, "cannot read %s: %s", dir, strerror(errno));
+  char path[4400], first[256] = "", bad[600] = "";
+  int any = 0, marker = 0;
+  for (struct dirent *e; (e = readdir(d));) {
+    const char *n = e->d_name;
+    /* a lone lock: a writer's first step, or a refused claim's trace */
+    if (!strcmp(n, ".") || !strcmp(n, "..") || !strcmp(n, VSPH_FOLDER_LOCK))
+      continue;
+    if (!any++) snprintf(first, sizeof first, "%s", n);
+    snprintf(path, sizeof path, "%s/%s", dir, n);
+    struct stat eb;
+    if (lstat(path, &eb) != 0) continue; /* gone meanwhile */
+    const int want =
+        !strcmp(n, VSPH_FOLDER_MARKER) || !strcmp(n, VSPH_FOLDER_LOCK)
+            ? VSPH_FOLDER_FILE
+            : kind->owns(n);
+    if (!strcmp(n, VSPH_FOLDER_MARKER)) marker = S_ISREG(eb.st_mode);
+    if (bad[0]) continue;
+    if (want == VSPH_FOLDER_FOREIGN)
+      snprintf(bad, sizeof bad, "%.200s, which vsph does not write there", n);
+    else if (want == VSPH_FOLDER_FILE && !S_ISREG(eb.st_mode))
+      snprintf(bad, sizeof bad, "%.200s, which is %s, not a regular file", n,
+               type_of(eb.st_mode));
+    else if (want == VSPH_FOLDER_SUBDIR && !S_ISDIR(eb.st_mode))
+      snprintf(bad, sizeof bad, "%.200s, which is %s, not a folder", n,
+               type_of(eb.st_mode));
+  }
+  closedir(d);
+  if (!any) return VSPH_OK; /* empty: to be claimed */
+  if (!marker)
+    VSPH_FAIL(VSPH_EINVAL,
+              "%s is not empty (it holds %.200s) and vsph did not make it "
+              "(no %s): choose another folder",
+              dir, first, VSPH_FOLDER_MARKER);
+  snprintf(path, sizeof path, "%s/%s", dir, VSPH_FOLDER_MARKER);
+  size_t len = 0;
+  char *text = vsph_files_slurp(path, &len);
+  char want[128];
+  marker_text(kind, want, sizeof want);
+  const int same = text && !strcmp(text, want);
+  char other[64] = "";
+  if (text && !same && !strncmp(text, "vsph ", 5))
+    snprintf(other, sizeof other, "%.*s", (int)strcspn(text + 5, "\n"),
+             text + 5);
+  free(text);
+  if (!same)
+    VSPH_FAIL(VSPH_EINVAL, "%s is %s%s, not a vsph %s: choose another folder",
+              dir, other[0] ? "a vsph " : "not a vsph folder",
+              other[0] ? other : "", kind->name);
+  if (bad[0])
+    VSPH_FAIL(VSPH_EINVAL,
+              "%s holds %s: move it or choose another folder (vsph changes "
+              "nothing in it)",
+              dir, bad);
+  return VSPH_OK;
+}
+
+/* ------------------------------------------------------------ claiming */
+
+/* Failures to make or write the folder itself are bad paths (exit 2):
+ * nothing has been written. */
+static int refused_path(const char *what, const char *path, int e) {
+  const int bad = e == ENOTDIR || e == ENOENT || e == EACCES || e == EPERM ||
+                  e == EROFS || e == ENAMETOOLONG || e == ELOOP;
+  VSPH_FAIL(bad ? VSPH_EINVAL : VSPH_EIO, "cannot %s %s: %s", what, path,
+            strerror(e));
+}
+
+static int lock(struct vsph_folder *f) {
+  char path[4200];
+  snprintf(path, sizeof path, "%s/%s", f->dir, VSPH_FOLDER_LOCK);
+  const int fd =
+      open(path, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
+  if (fd < 0) return refused_path("write in", f->dir, errno);
+  struct stat sb;
+  if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+    close(fd);
+    VSPH_FAIL(VSPH_EINVAL, "%s is not a regular file", path);
+  }
+  struct flock fl;
+  memset(&fl, 0, sizeof fl);
+  fl.l_type = F_WRLCK;
+  fl.l_whence = SEEK_SET;
+  if (fcntl(fd, F_SETLK, &fl) == 0) {
+    char pid[32];
+    const int n = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
+    /* who holds it, for a person reading the folder (the lock itself is
+     * what counts) */
+    if (ftruncate(fd, 0) != 0 || pwrite(fd, pid, (size_t)n, 0) != n) {
+      const int e = errno;
+      close(fd);
+      return refused_path("write in", f->dir, e);
+    }
+    f->fd = fd;
+    return VSPH_OK;
+  }
+  const int e = errno;
+  struct flock who = fl;
+  const long pid = fcntl(fd, F_GETLK, &who) == 0 ? (long)who.l_pid : -1L;
+  close(fd);
+  if (e == EACCES || e == EAGAIN)
+    VSPH_FAIL(VSPH_EINVAL,
+              "%s is being written by process %ld (it holds %s): wait for it "
+              "or choose another folder",
+              f->dir, pid, VSPH_FOLDER_LOCK);
+  VSPH_FAIL(VSPH_EIO, "cannot lock %s: %s", path, strerror(e));
+}
+
+int vsph_folder_claim(struct vsph_folder *f, const char *dir,
+                      const struct vsph_folder_kind *kind) {
+  memset(f, 0, sizeof *f);
+  f->fd = -1;
+  f->kind = kind;
+  int st = vsph_folder_judge(dir, kind);
+  if (st) return st;
+  snprintf(f->dir, sizeof f->dir, "%s", dir);
+  struct stat sb;
+  if (stat(dir, &sb) != 0) {
+    f->fresh = 2;
+  } else {
+    char mk[4200];
+    snprintf(mk, sizeof mk, "%s/%s", dir, VSPH_FOLDER_MARKER);
+    f->fresh = access(mk, F_OK) != 0; /* judged: then it was empty */
+  }
+  if ((st = vsph_files_mkdir(dir))) return st;
+  if ((st = lock(f))) {
+    if (f->fresh == 2) rmdir(dir);
+    return st;
+  }
+  /* again under the lock: another writer may have been quicker */
+  if ((st = vsph_folder_judge(dir, kind))) {
+    vsph_folder_abandon(f);
+    return st;
+  }
+  char path[4200], text[128];
+  snprintf(path, sizeof path, "%s/%s", dir, VSPH_FOLDER_MARKER);
+  if (access(path, F_OK) == 0) return VSPH_OK;
+  marker_text(kind, text, sizeof text);
+  if ((st = vsph_files_write(dir, VSPH_FOLDER_MARKER, text)))
+    vsph_folder_abandon(f);
+  return st;
+}
+
+void vsph_folder_release(struct vsph_folder *f) {
+  if (f->fd >= 0) close(f->fd);
+  f->fd = -1;
+}
+
+void vsph_folder_abandon(struct vsph_folder *f) {
+  if (f->fresh && f->fd >= 0) {
+    char path[4200];
+    snprintf(path, sizeof path, "%s/%s", f->dir, VSPH_FOLDER_MARKER);
+    remove(path);
+    snprintf(path, sizeof path, "%s/%s", f->dir, VSPH_FOLDER_LOCK);
+    remove(path); /* while locked: no other writer is between */
+  }
+  vsph_folder_release(f);
+  if (f->fresh == 2) rmdir(f->dir); /* only if empty */
+  f->fresh = 0;
+}
+
+/* ------------------------------------------------------- clear and seal */
+
+static int skipped(const char *name, const char *const *skip) {
+  return !strcmp(name, VSPH_FOLDER_MARKER) || !strcmp(name, VSPH_FOLDER_LOCK) ||
+         (skip && one_of(name, skip));
+}
+
+int vsph_folder_clear(const struct vsph_folder *f, const char *const *keep) {
+  char path[4400];
+  static const char *const first[] = {"key.txt", "run.json"};
+  for (int k = 0; k < 2; k++) {
+    if (keep && one_of(first[k], keep)) continue;
+    snprintf(path, sizeof path, "%s/%s", f->dir, first[k]);
+    if (remove(path) != 0 && errno != ENOENT)
+      VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
+  }
+  DIR *d = opendir(f->dir);
+  if (!d) VSPH_FAIL(VSPH_EIO, "cannot read %s: %s", f->dir, strerror(errno));
+  int st = VSPH_OK;
+  for (struct dirent *e; !st && (e = readdir(d));) {
+    if (skipped(e->d_name, keep) ||
+        f->kind->owns(e->d_name) != VSPH_FOLDER_FILE)
+      continue;
+    snprintf(path, sizeof path, "%s/%s", f->dir, e->d_name);
+    if (remove(path) != 0 && errno != ENOENT) {
+      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot remove %s: %s",
+                         path, strerror(errno));
+      st = VSPH_EIO;
+    }
+  }
+  closedir(d);
+  return st;
+}
+
+int vsph_folder_checksum(const char *path, unsigned long *crc, size_t *size) {
+  const int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+  if (fd < 0) return VSPH_EIO;
+  struct stat sb;
+  if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+    close(fd);
+    return VSPH_EIO;
+  }
+  uLong c = crc32(0L, Z_NULL, 0);
+  size_t n = 0;
+  unsigned char buf[1 << 16];
+  for (;;) {
+    const ssize_t r = read(fd, buf, sizeof buf);
+    if (r < 0 && errno == EINTR) continue;
+    if (r < 0) {
+      close(fd);
+      return VSPH_EIO;
+    }
+    if (r == 0) break;
+    c = crc32(c, buf, (uInt)r);
+    n += (size_t)r;
+  }
+  close(fd);
+  *crc = (unsigned long)c;
+  *size = n;
+  return VSPH_OK;
+}
+
+static int by_name(const void *a, const void *b) {
+  return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* The regular files vsph writes in @p dir (kind's names), but the marker,
+ * the lock, key.txt and @p skip, sorted; *n receives the count. NULL on
+ * failure (not reported). */
+static char **listing(const char *dir, const struct vsph_folder_kind *kind,
+                      const char *const *skip, size_t *n) {
+  DIR *d = opendir(dir);
+  if (!d) return NULL;
+  size_t cap = 16, m = 0;
+  char **names = malloc(cap * sizeof *names);
+  int ok = names != NULL;
+  for (struct dirent *e; ok && (e = readdir(d));) {
+    const char *nm = e->d_name;
+    if (skipped(nm, skip) || !strcmp(nm, "key.txt") || ends_with(nm, ".tmp") ||
+        kind->owns(nm) != VSPH_FOLDER_FILE)
+      continue;
+    if (m == cap) {
+      char **g = realloc(names, 2 * cap * sizeof *names);
+      if (!g) {
+        ok = 0;
+        break;
+      }
+      names = g;
+      cap *= 2;
+    }
+    if (!(names[m] = strdup(nm)))
+      ok = 0;
+    else
+      m++;
+  }
+  closedir(d);
+  if (!ok) {
+    for (size_t k = 0; k < m; k++) free(names[k]);
+    free(names);
+    return NULL;
+  }
+  qsort(names, m, sizeof *names, by_name);
+  *n = m;
+  return names;
+}
+
+static void listing_free(char **names, size_t n) {
+  for (size_t k = 0; names && k < n; k++) free(names[k]);
+  free(names);
+}
+
+int vsph_folder_seal(const struct vsph_folder *f, const char *key,
+                     const char *const *skip) {
+  size_t n = 0;
+  char **names = listing(f->dir, f->kind, skip, &n);
+  if (!names) VSPH_FAIL(VSPH_EIO, "cannot list %s", f->dir);
+  char *text = NULL;
+  size_t len = 0;
+  FILE *m = open_memstream(&text, &len);
+  int st = m ? VSPH_OK : VSPH_ENOMEM;
+  if (m) fprintf(m, "%sfiles:\n", key);
+  char path[4400];
+  for (size_t k = 0; k < n && !st; k++) {
+    unsigned long crc;
+    size_t size;
+    snprintf(path, sizeof path, "%s/%s", f->dir, names[k]);
+    if (vsph_folder_checksum(path, &crc, &size)) {
+      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot read %s", path);
+      st = VSPH_EIO;
+    } else {
+      fprintf(m, "%s %zu %08lx\n", names[k], size, crc);
+    }
+  }
+  listing_free(names, n);
+  if (m && fclose(m) != 0 && !st) st = VSPH_ENOMEM;
+  if (st == VSPH_ENOMEM)
+    vsph_status_report(st, __FILE__, __LINE__, "cannot build %s/key.txt",
+                       f->dir);
+  if (!st) st = vsph_files_write(f->dir, "key.txt", text);
+  free(text);
+  return st;
+}
+
+__attribute__((format(printf, 3, 4))) static int say(char *why, size_t len,
+                                                     const char *fmt, ...) {
+  if (why && len) {
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(why, len, fmt, ap);
+    va_end(ap);
+  }
+  return -1;
+}
+
+int vsph_folder_verify(const char *dir, const struct vsph_folder_kind *kind,
+                       const char *key, const char *const *skip, char *why,
+                       size_t len) {
+  if (why && len) why[0] = '\0';
+  char path[4400];
+  snprintf(path, sizeof path, "%s/%s", dir, VSPH_FOLDER_MARKER);
+  struct stat sb;
+  if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) return 0;
+  snprintf(path, sizeof path, "%s/key.txt", dir);
+  if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) return 0;
+  char *text = vsph_files_slurp(path, NULL);
+  if (!text) return 0;
+  const size_t kl = strlen(key);
+  if (strncmp(text, key, kl) || strncmp(text + kl, "files:\n", 7)) {
+    free(text);
+    return 0;
+  }
+  size_t n = 0;
+  char **names = listing(dir, kind, skip, &n);
+  int res = names ? 1 : say(why, len, "cannot list %s", dir);
+  size_t k = 0;
+  for (char *line = text + kl + 7; res == 1 && *line;) {
+    char *end = strchr(line, '\n');
+    if (!end) {
+      res = say(why, len, "%s/key.txt is cut short", dir);
+      break;
+    }
+    *end = '\0';
+    char name[256];
+    size_t size;
+    unsigned long crc;
+    int used = 0;
+    if (sscanf(line, "%255s %zu %lx%n", name, &size, &crc, &used) != 3 ||
+        line[used] != '\0') {
+      res = say(why, len, "%s/key.txt has a damaged line", dir);
+      break;
+    }
+    if (k >= n || strcmp(names[k], name)) {
+      res = k >= n || strcmp(names[k], name) > 0
+                ? say(why, len, "%s/%s is missing", dir, name)
+                : say(why, len, "%s/%s is not in the folder's key", dir,
+                      names[k]);
+      break;
+    }
+    unsigned long c2;
+    size_t s2;
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    if (vsph_folder_checksum(path, &c2, &s2))
+      res = say(why, len, "%s/%s cannot be read as a regular file", dir, name);
+    else if (s2 != size || c2 != crc)
+      res = say(why, len,
+                "%s/%s differs from the folder's key (changed or cut "
+                "short since it was written)",
+                dir, name);
+    k++;
+    line = end + 1;
+  }
+  if (res == 1 && k < n)
+    res = say(why, len, "%s/%s is not in the folder's key", dir, names[k]);
+  listing_free(names, n);
+  free(text);
+  return res;
+}
