@@ -371,13 +371,25 @@ static int all_cached(const struct vsph_report *R) {
   size_t m = 0, first = 0;
   for (size_t k = 0; k < R->plan->n; k++) /* as the plan found them */
     if (!R->plan->job[k].cached && !m++) first = k;
-  if (m)
+  if (!m) return VSPH_OK;
+  /* a seal broken by a file: name it */
+  const struct vsph_report_job *j = &R->plan->job[first];
+  char why[700];
+  if (vsph_folder_verify(j->dir,
+                         j->kind == VSPH_REPORT_JOB_RUN
+                             ? &vsph_folder_scene_run
+                             : &vsph_folder_shear_test,
+                         j->key, NULL, why, sizeof why) < 0)
     VSPH_FAIL(VSPH_EIO,
-              "%zu of the %zu runs are missing or unfinished (the first: %s; "
-              "a failed or cancelled task?): submit again (vsph report "
-              "--slurm) or run them (vsph report --jobs N); only they run",
-              m, R->plan->n, R->plan->job[first].dir);
-  return VSPH_OK;
+              "%zu of the %zu runs are missing, unfinished or damaged (the "
+              "first: %s): rerun them (vsph report --jobs N or --slurm); only "
+              "they run",
+              m, R->plan->n, why);
+  VSPH_FAIL(VSPH_EIO,
+            "%zu of the %zu runs are missing or unfinished (the first: %s; "
+            "a failed or cancelled task?): submit again (vsph report "
+            "--slurm) or run them (vsph report --jobs N); only they run",
+            m, R->plan->n, j->dir);
 }
 
 int vsph_report_write(const struct vsph_report_props *rp) {

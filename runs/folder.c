@@ -430,6 +430,18 @@ int vsph_folder_verify(const char *dir, const struct vsph_folder_kind *kind,
   snprintf(path, sizeof path, "%s/%s", dir, VSPH_FOLDER_MARKER);
   struct stat sb;
   if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) return 0;
+  if (!kind) { /* the marker's */
+    static const struct vsph_folder_kind *const kinds[] = {
+        &vsph_folder_scene_run, &vsph_folder_shear_test, &vsph_folder_report};
+    char *mk = vsph_files_slurp(path, NULL);
+    for (int k = 0; mk && k < 3 && !kind; k++) {
+      char want[128];
+      marker_text(kinds[k], want, sizeof want);
+      if (!strcmp(mk, want)) kind = kinds[k];
+    }
+    free(mk);
+    if (!kind) return 0;
+  }
   snprintf(path, sizeof path, "%s/key.txt", dir);
   if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) return 0;
   char *text = vsph_files_slurp(path, NULL);

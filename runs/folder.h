@@ -97,7 +97,8 @@ int vsph_folder_clear(const struct vsph_folder *f, const char *const *keep);
 int vsph_folder_seal(const struct vsph_folder *f, const char *key,
                      const char *const *skip);
 
-/** @brief Does @p dir's seal hold for @p key? 1: key.txt's parameters are
+/** @brief Does @p dir's seal hold for @p key? (@p kind NULL: the kind
+ *  its marker names.) 1: key.txt's parameters are
  *  @p key and every file it lists has its size and CRC-32, and no other
  *  file vsph writes is there (the names in @p skip aside). 0: no seal or
  *  another key (a run not made, or made with other settings). -1: the

@@ -74,8 +74,7 @@ char *vsph_rundir_key(const struct vsph_params *prm, const char *what) {
 }
 
 int vsph_rundir_key_matches(const char *dir, const char *key) {
-  return vsph_folder_verify(dir, &vsph_folder_scene_run, key, NULL, NULL, 0) ==
-         1;
+  return vsph_folder_verify(dir, NULL, key, NULL, NULL, 0) == 1;
 }
 
 /* Every parameter of the run, defaults filled in, section by section. */

@@ -67,7 +67,9 @@ struct vsph_rundir_result {
  *  @return the key (caller frees), or NULL after reporting. */
 char *vsph_rundir_key(const struct vsph_params *prm, const char *what);
 
-/** @brief 1 if @p dir/key.txt holds exactly @p key. */
+/** @brief 1 if @p dir is a sealed vsph folder (a scene run or a shear
+ *  test, as its marker says) whose seal holds for @p key: its key.txt
+ *  holds @p key and every file's size and CRC-32 (runs/folder). */
 int vsph_rundir_key_matches(const char *dir, const char *key);
 
 /** @brief Run scene @p scene with the parameters of @p prm as @p o says,

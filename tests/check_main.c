@@ -41,6 +41,7 @@ int main(void) {
   srunner_add_suite(sr, vsph_cavity_suite());
   srunner_add_suite(sr, vsph_contact_suite());
   srunner_add_suite(sr, vsph_jobs_suite());
+  srunner_add_suite(sr, vsph_runs_suite());
   srunner_add_suite(sr, vsph_report_suite());
   srunner_add_suite(sr, vsph_vtk_suite());
   srunner_add_suite(sr, vsph_plot_suite());

@@ -1,0 +1,463 @@
+/* The runs/ layer: the folder contract (runs/folder: marker, lock, seal)
+ * and checkpoint and restart (runs/rundir): a run stopped at any step and
+ * resumed ends bitwise the run never stopped; a foreign, damaged or
+ * other settings' checkpoint is not used; a folder that is not vsph's, or
+ * holds anything vsph does not write, is refused untouched; a second
+ * writer is refused with the holder's pid; a seal names the file that
+ * broke it. */
+#include <check.h>
+#include <cjson/cJSON.h>
+#include <dirent.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "../common/params.h"
+#include "../common/status.h"
+#include "../io/files.h"
+#include "../runs/folder.h"
+#include "../runs/rundir.h"
+#include "check_suites.h"
+
+static void scratch(char *dir) { ck_assert_ptr_nonnull(mkdtemp(dir)); }
+
+static void rm_tree(const char *dir) {
+  char cmd[600];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+  ck_assert_int_eq(system(cmd), 0);
+}
+
+static int exists(const char *path) {
+  struct stat sb;
+  return lstat(path, &sb) == 0;
+}
+
+static void put(const char *path, const char *text) {
+  FILE *f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fputs(text, f);
+  ck_assert_int_eq(fclose(f), 0);
+}
+
+/* One run of @p scene with the "KEY=VALUE" settings @p set into @p dir,
+ * stopped after @p stop_after steps (0: not). */
+static int run(const char *scene, const char *const *set, const char *dir,
+               size_t stop_after, struct vsph_rundir_result *res) {
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_ptr_nonnull(prm);
+  for (size_t k = 0; set[k]; k++) {
+    char kv[200];
+    snprintf(kv, sizeof kv, "%s", set[k]);
+    char *eq = strchr(kv, '=');
+    ck_assert_ptr_nonnull(eq);
+    *eq = '\0';
+    ck_assert_int_eq(vsph_params_set(prm, kv, eq + 1), 0);
+  }
+  const struct vsph_rundir_opts o = {
+      .dir = dir, .command = "test", .stop_after = stop_after};
+  const int st = vsph_rundir_execute(prm, scene, &o, res);
+  vsph_params_free(prm);
+  return st;
+}
+
+/* run.json's fields that are timings or the machine's state: the only
+ * ones a resumed run may change */
+static int timing(const char *k) {
+  /* (and the date and command of the start: the two runs compared began
+   * at different times, into different folders) */
+  static const char *const t[] = {"date",
+                                  "command",
+                                  "wall_s",
+                                  "cpu_s",
+                                  "load_average_start",
+                                  "load_average_end",
+                                  "omp_wait_policy",
+                                  "pairs_per_s",
+                                  "particle_steps_per_s",
+                                  "peak_rss_bytes",
+                                  "wall_segments",
+                                  NULL};
+  for (size_t i = 0; t[i]; i++)
+    if (!strcmp(k, t[i])) return 1;
+  return 0;
+}
+
+/* Folders @p a and @p b hold the same run: every file byte for byte, but
+ * run.json (every field but the timings) and key.txt (every line but
+ * run.json's). */
+static void same_run(const char *a, const char *b) {
+  DIR *d = opendir(a);
+  ck_assert_ptr_nonnull(d);
+  size_t nfiles = 0;
+  for (struct dirent *e; (e = readdir(d));) {
+    const char *n = e->d_name;
+    if (n[0] == '.') continue;
+    char pa[700], pb[700];
+    snprintf(pa, sizeof pa, "%s/%s", a, n);
+    snprintf(pb, sizeof pb, "%s/%s", b, n);
+    size_t la = 0, lb = 0;
+    char *ta = vsph_files_slurp(pa, &la), *tb = vsph_files_slurp(pb, &lb);
+    ck_assert_msg(ta && tb, "%s: missing in one folder", n);
+    nfiles++;
+    if (!strcmp(n, "run.json")) {
+      cJSON *ja = cJSON_Parse(ta), *jb = cJSON_Parse(tb);
+      ck_assert(ja && jb);
+      ck_assert_int_eq(cJSON_GetArraySize(ja), cJSON_GetArraySize(jb));
+      for (cJSON *x = ja->child; x; x = x->next) {
+        if (timing(x->string)) continue;
+        cJSON *y = cJSON_GetObjectItemCaseSensitive(jb, x->string);
+        ck_assert_msg(y && cJSON_Compare(x, y, 1), "run.json: %s differs",
+                      x->string);
+      }
+      cJSON_Delete(ja);
+      cJSON_Delete(jb);
+    } else if (!strcmp(n, "key.txt")) {
+      char *ra = strstr(ta, "\nrun.json "), *rb = strstr(tb, "\nrun.json ");
+      ck_assert(ra && rb);
+      const char *ea = strchr(ra + 1, '\n'), *eb = strchr(rb + 1, '\n');
+      ck_assert(ea && eb);
+      *ra = *rb = '\0'; /* before run.json's line, and after it */
+      ck_assert_str_eq(ta, tb);
+      ck_assert_str_eq(ea, eb);
+    } else {
+      ck_assert_msg(la == lb && !memcmp(ta, tb, la), "%s differs", n);
+    }
+    free(ta);
+    free(tb);
+  }
+  closedir(d);
+  ck_assert_uint_ge(nfiles, 4);
+}
+
+/* Runs that carry every kind of state across a step: mirror ghosts
+ * (Poiseuille), wall particles and the transport velocity's kept rates
+ * (cavity, tvf), a free surface under gravity (standing wave), PVWF's
+ * two passes, the gas law's energy, contact SPH in 3-D. */
+static const char *const POIS[] = {"Solver:res=8", "Solver:t_end=0.1",
+                                   "Solver:outputs=30", NULL};
+static const char *const TVF[] = {"Solver:res=8", "Solver:t_end=0.03",
+                                  "Solver:tvf=1", NULL};
+static const char *const WAVE[] = {"Solver:res=8", "Solver:t_end=0.1", NULL};
+static const char *const PVWF[] = {"Solver:res=10", "Solver:t_end=0.2",
+                                   "Solver:visc=pvwf", NULL};
+static const char *const GAS[] = {"Solver:res=8", "Solver:t_end=0.1",
+                                  "Solver:eos=gas", NULL};
+static const char *const CONTACT[] = {"Solver:scheme=contact",
+                                      "Solver:kernel=wendland2",
+                                      "Solver:alpha=0.5",
+                                      "Solver:res=8",
+                                      "Scene:Lz=4e-7",
+                                      "Solver:t_end=1e-10",
+                                      NULL};
+static const struct {
+  const char *scene;
+  const char *const *set;
+} CASES[] = {{"poiseuille", POIS},    {"cavity", TVF},
+             {"standing-wave", WAVE}, {"stretching-square", PVWF},
+             {"poiseuille", GAS},     {"shear", CONTACT}};
+
+/* Stopped after 1, 2, 4, ... steps of each process (so between rows, at
+ * rows and at snapshots) and resumed each time: bitwise the run never
+ * stopped. */
+START_TEST(test_restart_bitwise) {
+  char dir[] = "/tmp/vsph_restartXXXXXX", a[300], b[300];
+  scratch(dir);
+  snprintf(a, sizeof a, "%s/a", dir);
+  snprintf(b, sizeof b, "%s/b", dir);
+  struct vsph_rundir_result ra, rb;
+  ck_assert_int_eq(run(CASES[_i].scene, CASES[_i].set, a, 0, &ra), 0);
+  ck_assert_uint_ge(ra.steps, 4);
+  int st, stops = 0;
+  for (size_t k = 1; (st = run(CASES[_i].scene, CASES[_i].set, b, k, &rb));
+       k *= 2) {
+    ck_assert_int_eq(st, VSPH_EINTR);
+    char ck[400];
+    snprintf(ck, sizeof ck, "%s/checkpoint.bin", b);
+    ck_assert(exists(ck));
+    stops++;
+  }
+  ck_assert_int_ge(stops, 2);
+  ck_assert_uint_eq(rb.segments, (size_t)stops + 1);
+  ck_assert_uint_eq(rb.steps, ra.steps);
+  same_run(a, b);
+  char ck[400];
+  snprintf(ck, sizeof ck, "%s/checkpoint.bin", b);
+  ck_assert_msg(!exists(ck), "an ended run kept its checkpoint");
+  rm_tree(dir);
+}
+END_TEST
+
+/* A checkpoint of other settings, or damaged, is not used: the run starts
+ * over and ends as a fresh one. */
+START_TEST(test_restart_refuses_foreign) {
+  char dir[] = "/tmp/vsph_foreignXXXXXX", a[300], b[300], ck[400];
+  scratch(dir);
+  snprintf(a, sizeof a, "%s/a", dir);
+  snprintf(b, sizeof b, "%s/b", dir);
+  snprintf(ck, sizeof ck, "%s/checkpoint.bin", b);
+  struct vsph_rundir_result r;
+  static const char *const other[] = {"Solver:res=8", "Solver:t_end=0.1",
+                                      "Solver:outputs=30", "Solver:cfl=0.9",
+                                      NULL};
+  ck_assert_int_eq(run("poiseuille", POIS, a, 0, &r), 0);
+  /* other settings (the cfl) */
+  ck_assert_int_eq(run("poiseuille", other, b, 5, &r), VSPH_EINTR);
+  ck_assert(exists(ck));
+  ck_assert_int_eq(run("poiseuille", POIS, b, 0, &r), 0);
+  ck_assert_uint_eq(r.segments, 1);
+  same_run(a, b);
+  /* the same settings, one byte of the state flipped */
+  ck_assert_int_eq(run("poiseuille", POIS, b, 5, &r), VSPH_EINTR);
+  size_t len = 0;
+  char *bytes = vsph_files_slurp(ck, &len);
+  ck_assert_ptr_nonnull(bytes);
+  bytes[len / 2] ^= 0x10;
+  FILE *f = fopen(ck, "wb");
+  ck_assert_uint_eq(fwrite(bytes, 1, len, f), len);
+  ck_assert_int_eq(fclose(f), 0);
+  free(bytes);
+  ck_assert_int_eq(run("poiseuille", POIS, b, 0, &r), 0);
+  ck_assert_uint_eq(r.segments, 1);
+  same_run(a, b);
+  rm_tree(dir);
+}
+END_TEST
+
+/* Killed outright (SIGKILL: no handler runs) with a checkpoint every step
+ * (Solver:checkpoint_s tiny), the same command resumes from the last one
+ * and ends bitwise as the run never stopped. */
+START_TEST(test_restart_after_kill) {
+  char dir[] = "/tmp/vsph_killXXXXXX", args[600], a[300], b[300];
+  scratch(dir);
+  snprintf(a, sizeof a, "%s/a", dir);
+  snprintf(b, sizeof b, "%s/b", dir);
+  const char *run_args =
+      "run vortex-patch --res 20 --t-end 1.5 --quiet "
+      "--set Solver:checkpoint_s=1e-9";
+  snprintf(args, sizeof args, "%s --out %s", run_args, a);
+  ck_assert_int_eq(vsph_test_cli(args)->status, 0);
+  const pid_t pid = fork();
+  ck_assert_int_ge(pid, 0);
+  if (pid == 0) {
+    if (!freopen("/dev/null", "w", stderr)) _exit(126);
+    execl(getenv("VSPH_BIN"), "vsph", "run", "vortex-patch", "--res", "20",
+          "--t-end", "1.5", "--quiet", "--set", "Solver:checkpoint_s=1e-9",
+          "--out", b, (char *)NULL);
+    _exit(127);
+  }
+  /* kill it once it has saved a few steps (at most 20 s) */
+  char energy[400];
+  snprintf(energy, sizeof energy, "%s/energy.csv", b);
+  for (int k = 0; k < 2000; k++) {
+    struct stat sb;
+    if (stat(energy, &sb) == 0 && sb.st_size > 2000) break;
+    nanosleep(&(struct timespec){0, 10000000}, NULL);
+  }
+  kill(pid, SIGKILL);
+  int ws;
+  waitpid(pid, &ws, 0);
+  ck_assert_msg(WIFSIGNALED(ws), "the run ended before it was killed");
+  snprintf(args, sizeof args, "%s --out %s", run_args, b);
+  struct vsph_test_outcome *o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  char js[4096];
+  snprintf(energy, sizeof energy, "%s/run.json", b);
+  vsph_test_slurp(energy, js, sizeof js);
+  ck_assert_ptr_nonnull(strstr(js, "\"wall_segments\":\t2"));
+  same_run(a, b);
+  rm_tree(dir);
+}
+END_TEST
+
+/* The marker: a folder that is not empty and has none is refused, each of
+ * vsph's own names alone included; another kind's folder too; a refusal
+ * changes nothing. */
+START_TEST(test_folder_marker) {
+  char dir[] = "/tmp/vsph_markerXXXXXX", sub[300], path[400], args[600];
+  scratch(dir);
+  static const char *const names[] = {
+      "run.json",      "energy.csv",     "profile.csv", "snapshots.pvd",
+      "snap_0000.vtp", "centreline.csv", "key.txt",     "summary.csv"};
+  for (size_t k = 0; k < sizeof names / sizeof names[0]; k++) {
+    snprintf(sub, sizeof sub, "%s/f%zu", dir, k);
+    ck_assert_int_eq(mkdir(sub, 0700), 0);
+    snprintf(path, sizeof path, "%s/%s", sub, names[k]);
+    put(path, "someone's\n");
+    const char *const cmds[] = {
+        "run poiseuille --res 8 --t-end 0.01 --out",
+        "contact --scheme contact --kernel wendland2 --alpha 0.5 --res 8 "
+        "--set Scene:Lz=4e-7 --t-end 1e-10 --out"};
+    for (int c = 0; c < 2; c++) {
+      snprintf(args, sizeof args, "%s %s", cmds[c], sub);
+      struct vsph_test_outcome *o = vsph_test_cli(args);
+      ck_assert_msg(o->status == 2 && o->err_lines == 1, "'%s': %d %s", args,
+                    o->status, o->err);
+      ck_assert_msg(strstr(o->err, "vsph did not make it"), "%s", o->err);
+      char text[32];
+      vsph_test_slurp(path, text, sizeof text);
+      ck_assert_str_eq(text, "someone's\n");
+      /* nothing added: the folder holds the one file */
+      DIR *d = opendir(sub);
+      int n = 0;
+      for (struct dirent *e; (e = readdir(d));) n += e->d_name[0] != '.';
+      closedir(d);
+      snprintf(path, sizeof path, "%s/%s", sub, VSPH_FOLDER_MARKER);
+      ck_assert_int_eq(n, 1);
+      ck_assert(!exists(path));
+      snprintf(path, sizeof path, "%s/%s", sub, names[k]);
+    }
+  }
+  /* a scene run's folder is not a shear test's, nor a report's */
+  snprintf(sub, sizeof sub, "%s/run", dir);
+  snprintf(args, sizeof args, "run poiseuille --res 8 --t-end 0.01 --out %s",
+           sub);
+  ck_assert_int_eq(vsph_test_cli(args)->status, 0);
+  snprintf(args, sizeof args,
+           "contact --scheme contact --kernel wendland2 --alpha 0.5 --res 8 "
+           "--set Scene:Lz=4e-7 --t-end 1e-10 --out %s",
+           sub);
+  struct vsph_test_outcome *o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 2 && strstr(o->err, "not a vsph shear test"),
+                "%d %s", o->status, o->err);
+  snprintf(args, sizeof args, "report --only tensors --out %s", sub);
+  o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 2 && strstr(o->err, "not a vsph report"), "%d %s",
+                o->status, o->err);
+  /* a shear test's seal holds for its own kind: cached the second time */
+  for (int k = 0; k < 2; k++) {
+    snprintf(args, sizeof args,
+             "contact --scheme contact --kernel wendland2 --alpha 0.5 --res 8 "
+             "--set Scene:Lz=4e-7 --t-end 1e-10 --cache --out %s/shear",
+             dir);
+    o = vsph_test_cli(args);
+    ck_assert_int_eq(o->status, 0);
+    ck_assert_msg((strstr(o->err, "is cached") != NULL) == k, "%d: %s", k,
+                  o->err);
+  }
+  /* a FIFO with a vsph name in a run folder: refused, not opened */
+  snprintf(path, sizeof path, "%s/profile.csv", sub);
+  ck_assert_int_eq(remove(path), 0);
+  ck_assert_int_eq(mkfifo(path, 0600), 0);
+  snprintf(args, sizeof args, "run poiseuille --res 8 --t-end 0.01 --out %s",
+           sub);
+  o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 2 && strstr(o->err, "a FIFO"), "%d %s", o->status,
+                o->err);
+  rm_tree(dir);
+}
+END_TEST
+
+/* The lock: while one writer holds a folder, a second is refused naming
+ * the holder's pid (here this process's), and changes nothing; once it is
+ * released, the second runs. */
+START_TEST(test_folder_lock) {
+  char dir[] = "/tmp/vsph_lockXXXXXX", sub[300], args[600], pid[32];
+  scratch(dir);
+  snprintf(sub, sizeof sub, "%s/r", dir);
+  struct vsph_folder f;
+  ck_assert_int_eq(vsph_folder_claim(&f, sub, &vsph_folder_scene_run), 0);
+  snprintf(args, sizeof args, "run poiseuille --res 8 --t-end 0.01 --out %s",
+           sub);
+  struct vsph_test_outcome *o = vsph_test_cli(args);
+  snprintf(pid, sizeof pid, "process %ld", (long)getpid());
+  ck_assert_msg(o->status == 2 && o->err_lines == 1 && strstr(o->err, pid),
+                "%d %s", o->status, o->err);
+  char path[400];
+  snprintf(path, sizeof path, "%s/used_parameters.yml", sub);
+  ck_assert(!exists(path));
+  vsph_folder_release(&f);
+  ck_assert_int_eq(vsph_test_cli(args)->status, 0);
+  ck_assert(exists(path));
+  rm_tree(dir);
+}
+END_TEST
+
+/* The seal: a cut, edited, added or missing file breaks it by name; the
+ * cache then runs again, and the run restores the seal. */
+START_TEST(test_folder_seal) {
+  char dir[] = "/tmp/vsph_sealXXXXXX", sub[300], path[400], args[600];
+  scratch(dir);
+  snprintf(sub, sizeof sub, "%s/r", dir);
+  struct vsph_rundir_result r;
+  static const char *const set[] = {"Solver:res=8", "Solver:t_end=0.02", NULL};
+  ck_assert_int_eq(run("poiseuille", set, sub, 0, &r), 0);
+  char key[4096];
+  snprintf(path, sizeof path, "%s/key.txt", sub);
+  vsph_test_slurp(path, key, sizeof key);
+  /* the parameters' key (vsph_rundir_key's) is what precedes "files:" */
+  char *files = strstr(key, "files:\n");
+  ck_assert_ptr_nonnull(files);
+  files[0] = '\0';
+  const char *k0 = key;
+  char why[600];
+  ck_assert_int_eq(vsph_folder_verify(sub, &vsph_folder_scene_run, k0, NULL,
+                                      why, sizeof why),
+                   1);
+  /* another key: no seal of that run (0), not a damaged one */
+  ck_assert_int_eq(vsph_folder_verify(sub, &vsph_folder_scene_run, "vsph x\n",
+                                      NULL, why, sizeof why),
+                   0);
+  struct {
+    const char *name, *how, *said;
+  } cases[] = {{"energy.csv", "cut", "energy.csv differs"},
+               {"profile.csv", "edit", "profile.csv differs"},
+               {"snap_0007.vtp", "add", "snap_0007.vtp is not in"},
+               {"snap_0001.vtp", "remove", "snap_0001.vtp is missing"}};
+  for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+    ck_assert_int_eq(run("poiseuille", set, sub, 0, &r), 0);
+    snprintf(path, sizeof path, "%s/%s", sub, cases[c].name);
+    if (!strcmp(cases[c].how, "cut")) {
+      ck_assert_int_eq(truncate(path, 100), 0);
+    } else if (!strcmp(cases[c].how, "edit")) {
+      FILE *f = fopen(path, "r+");
+      ck_assert_ptr_nonnull(f);
+      fseek(f, 40, SEEK_SET);
+      const int ch = fgetc(f);
+      fseek(f, 40, SEEK_SET);
+      fputc(ch == '9' ? '8' : '9', f);
+      ck_assert_int_eq(fclose(f), 0);
+    } else if (!strcmp(cases[c].how, "add")) {
+      put(path, "forged\n");
+    } else {
+      ck_assert_int_eq(remove(path), 0);
+    }
+    ck_assert_int_eq(vsph_folder_verify(sub, &vsph_folder_scene_run, k0, NULL,
+                                        why, sizeof why),
+                     -1);
+    ck_assert_msg(strstr(why, cases[c].said), "%s: %s", cases[c].name, why);
+    /* --cache redoes the run, which seals it again */
+    snprintf(args, sizeof args,
+             "run poiseuille --res 8 --t-end 0.02 --cache --quiet --out %s",
+             sub);
+    struct vsph_test_outcome *o = vsph_test_cli(args);
+    ck_assert_int_eq(o->status, 0);
+    ck_assert_int_eq(vsph_folder_verify(sub, &vsph_folder_scene_run, k0, NULL,
+                                        why, sizeof why),
+                     1);
+  }
+  rm_tree(dir);
+}
+END_TEST
+
+Suite *vsph_runs_suite(void) {
+  Suite *s = suite_create("runs");
+  TCase *tc = tcase_create("restart");
+  tcase_set_timeout(tc, 60);
+  tcase_add_loop_test(tc, test_restart_bitwise, 0,
+                      (int)(sizeof CASES / sizeof CASES[0]));
+  tcase_add_test(tc, test_restart_refuses_foreign);
+  tcase_add_test(tc, test_restart_after_kill);
+  suite_add_tcase(s, tc);
+  TCase *tf = tcase_create("folder");
+  tcase_set_timeout(tf, 60);
+  tcase_add_test(tf, test_folder_marker);
+  tcase_add_test(tf, test_folder_lock);
+  tcase_add_test(tf, test_folder_seal);
+  suite_add_tcase(s, tf);
+  return s;
+}
