@@ -788,8 +788,37 @@ int vsph_report_jobs_slurm_dir(const char *dir, char *abs, size_t len) {
   return VSPH_OK;
 }
 
+/* Minutes in a Slurm time limit (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S; as
+ * vsph report checks it); 0 if it is none of them. */
+static double limit_minutes(const char *t) {
+  double v[4] = {0};
+  int n = 0, days = 0;
+  const char *dash = strchr(t, '-');
+  if (dash) {
+    days = atoi(t);
+    t = dash + 1;
+  }
+  for (char *end; n < 4 && *t; n++, t = *end == ':' ? end + 1 : end) {
+    v[n] = strtod(t, &end);
+    if (end == t) return 0.0;
+  }
+  double min = 0.0;
+  if (dash) /* D-H, D-H:M, D-H:M:S */
+    min = 60.0 * v[0] + (n > 1 ? v[1] : 0.0) + (n > 2 ? v[2] / 60.0 : 0.0);
+  else if (n == 1) /* M */
+    min = v[0];
+  else if (n == 2) /* M:S */
+    min = v[0] + v[1] / 60.0;
+  else /* H:M:S */
+    min = 60.0 * v[0] + v[1] + v[2] / 60.0;
+  return 1440.0 * days + min;
+}
+
 /* The job array of the @p m runs of @p order: one task each, the
- * resources of the largest. */
+ * resources of the largest. A task that meets its time limit is sent
+ * SIGTERM (Slurm's --signal, 2 minutes ahead where the limit is 10
+ * minutes or more; else Slurm's own SIGTERM at the limit): it writes a
+ * checkpoint and stops, and the next submission resumes it. */
 static int array_script(const struct vsph_report_job *const *order, size_t m,
                         const struct vsph_report_slurm *s, const char *logs,
                         size_t mem_mib, const char *limit, char **text) {
@@ -813,6 +842,9 @@ static int array_script(const struct vsph_report_job *const *order, size_t m,
           "#SBATCH --output=%s/task-%%A_%%a.log\n",
           VSPH_VERSION, m ? m - 1 : 0, s->threads, mem_mib, limit, logs);
   if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
+  /* B: to the batch shell, which is vsph (exec); Slurm may send it up to
+   * a minute early */
+  if (limit_minutes(limit) >= 10.0) fprintf(f, "#SBATCH --signal=B:TERM@120\n");
   fprintf(f, "case \"$SLURM_ARRAY_TASK_ID\" in\n");
   for (size_t k = 0; k < m; k++) {
     vsph_report_jobs_command(order[k], s->exe, s->threads, cmd, 8192);

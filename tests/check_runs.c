@@ -444,6 +444,40 @@ START_TEST(test_folder_seal) {
 }
 END_TEST
 
+/* A Slurm task that meets its time limit gets SIGTERM ahead of it
+ * (--signal=B:TERM@120, where the limit is 10 minutes or more: Slurm may
+ * send it a minute early) and checkpoints; with a shorter limit, Slurm's
+ * own SIGTERM at the limit. A stand-in sbatch takes the scripts. */
+START_TEST(test_slurm_signal) {
+  char dir[] = "/tmp/vsph_slurmXXXXXX", fake[300], args[900], path[400];
+  scratch(dir);
+  snprintf(fake, sizeof fake, "%s/sbatch", dir);
+  put(fake, "#!/bin/sh\necho 4242\n");
+  ck_assert_int_eq(chmod(fake, 0700), 0);
+  static const struct {
+    const char *limit;
+    int signal;
+  } cases[] = {{"30:00", 1},  {"10", 1},  {"9:59", 0},
+               {"0-0:09", 0}, {"1-0", 1}, {"2:00:00", 1}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    snprintf(args, sizeof args,
+             "PATH='%s':\"$PATH\" exec \"$VSPH_BIN\" report --only stability "
+             "--slurm --time %s --out %s/r%zu",
+             dir, cases[k].limit, dir, k);
+    struct vsph_test_outcome *o = vsph_test_shell(args);
+    ck_assert_msg(o->status == 0, "%s: %s", args, o->err);
+    char text[1 << 15];
+    snprintf(path, sizeof path, "%s/r%zu/slurm/runs.sbatch", dir, k);
+    vsph_test_slurp(path, text, sizeof text);
+    ck_assert_ptr_nonnull(strstr(text, "#SBATCH --array"));
+    ck_assert_msg((strstr(text, "#SBATCH --signal=B:TERM@120\n") != NULL) ==
+                      cases[k].signal,
+                  "--time %s", cases[k].limit);
+  }
+  rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_runs_suite(void) {
   Suite *s = suite_create("runs");
   TCase *tc = tcase_create("restart");
@@ -458,6 +492,7 @@ Suite *vsph_runs_suite(void) {
   tcase_add_test(tf, test_folder_marker);
   tcase_add_test(tf, test_folder_lock);
   tcase_add_test(tf, test_folder_seal);
+  tcase_add_test(tf, test_slurm_signal);
   suite_add_tcase(s, tf);
   return s;
 }
