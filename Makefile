@@ -28,7 +28,7 @@ LDLIBS    = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcmark-gfm-extension
 TESTLIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
 
 # Layers, lowest first: common <- kernels <- solver <- analysis <- io <-
-# reports <- cli. Everything but cli/main.c is linked into the tests.
+# runs <- reports <- cli. Everything but cli/main.c is linked into the tests.
 LIB_SRC  := $(wildcard common/*.c kernels/*.c solver/*.c solver/scenes/*.c \
               analysis/*.c io/*.c runs/*.c reports/*.c)
 CLI_SRC  := $(wildcard cli/*.c)
@@ -142,24 +142,31 @@ paraview-check:
 mutate: deps
 	scripts/mutate
 
-# libFuzzer (clang) on the parameter file parser and the argument parser:
-# FUZZ_RUNS executions each, at most FUZZ_SECONDS each, from the seeds in
-# tests/fuzz/corpus (new inputs go to build-fuzz/corpus). Not part of
-# `make check`. A crash leaves its input as crash-* in the current folder.
+# libFuzzer (clang) on the parameter file parser, the argument parser and
+# the run-folder contract (random folder contents, then a run: a refusal
+# changes nothing, a run ends sealed ok): FUZZ_RUNS executions each, at
+# most FUZZ_SECONDS each, from the seeds in tests/fuzz/corpus (new inputs
+# go to build-fuzz/corpus). Not part of `make check`. A crash leaves its
+# input as crash-* in the current folder.
 FUZZ_RUNS    ?= 1000000
 FUZZ_SECONDS ?= 600
 FUZZ_SAN     := -fsanitize=fuzzer-no-link,address,undefined
 fuzz:
 	@scripts/install-deps fuzz
 	@$(MAKE) --no-print-directory BUILD=build-fuzz CC=clang OPT=-O1 \
-	  SAN="$(FUZZ_SAN)" build-fuzz/fuzz_params build-fuzz/fuzz_args
-	@mkdir -p build-fuzz/corpus/params build-fuzz/corpus/args
+	  SAN="$(FUZZ_SAN)" build-fuzz/fuzz_params build-fuzz/fuzz_args \
+	  build-fuzz/fuzz_folder
+	@mkdir -p build-fuzz/corpus/params build-fuzz/corpus/args \
+	  build-fuzz/corpus/folder
 	build-fuzz/fuzz_params -runs=$(FUZZ_RUNS) -max_total_time=$(FUZZ_SECONDS) \
 	  -close_fd_mask=2 -print_final_stats=1 \
 	  build-fuzz/corpus/params tests/fuzz/corpus/params
 	build-fuzz/fuzz_args -runs=$(FUZZ_RUNS) -max_total_time=$(FUZZ_SECONDS) \
 	  -close_fd_mask=2 -print_final_stats=1 \
 	  build-fuzz/corpus/args tests/fuzz/corpus/args
+	build-fuzz/fuzz_folder -runs=$(FUZZ_RUNS) -max_total_time=$(FUZZ_SECONDS) \
+	  -close_fd_mask=2 -print_final_stats=1 -timeout=20 \
+	  build-fuzz/corpus/folder tests/fuzz/corpus/folder
 
 $(BUILD)/fuzz_%: tests/fuzz/fuzz_%.c $(LIB_OBJ) $(CLI_LIB) $(HASH_OBJ) $(TEXT_OBJ)
 	$(CC) $(ALLCFLAGS) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)

@@ -50,6 +50,16 @@ static const char ABOUT[] =
     "  run.json            version, scene, visc, kernel, n_particles,\n"
     "                      steps, wall_s, pairs_per_s, status (ok or\n"
     "                      unstable), unstable_time, unstable_reason, ...\n"
+    "  key.txt             the seal, written last: the parameters as\n"
+    "                      given, then each file's size and CRC-32\n"
+    "  .vsph-folder        the marker: this folder is a vsph scene run\n"
+    "  .vsph-lock          held while a run writes: a second is refused\n"
+    "  checkpoint.bin      the whole state, every Solver:checkpoint_s of\n"
+    "                      wall time (default 600) and on SIGTERM/SIGINT;\n"
+    "                      the same command resumes from it, bitwise as if\n"
+    "                      never stopped; removed when the run ends\n"
+    "DIR must be new, empty or a vsph scene run's (its files are replaced);\n"
+    "anything else in it is refused before anything is touched.\n"
     "A run that goes unstable stops cleanly, keeps its output and is marked\n"
     "unstable in run.json (exit status 0: stability is a result).";
 

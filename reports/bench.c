@@ -22,6 +22,7 @@
 #include "../common/sysinfo.h"
 #include "../io/json.h"
 #include "../kernels/kernel.h"
+#include "../runs/jobs.h"
 #include "../solver/cells.h"
 #include "../solver/equations.h"
 #include "../solver/integrate.h"
@@ -180,45 +181,7 @@ static double run_peak_rss(const struct vsph_scene_type *type, int form,
   const double t_end = 3.0 * vsph_integrate_dt(s);
   *n = s->n_fluid;
   vsph_integrate_free(s);
-  char dir[] = "/tmp/vsph-bench-XXXXXX";
-  if (!mkdtemp(dir)) return 0.0;
-  char out[64], r[32], t[32];
-  snprintf(out, sizeof out, "%s/run", dir);
-  snprintf(r, sizeof r, "%zu", res);
-  snprintf(t, sizeof t, "%.17g", t_end);
-  const pid_t pid = fork();
-  if (pid == 0) { /* the child: only exec (safe after fork in threads) */
-    const int null = open("/dev/null", O_WRONLY);
-    if (null >= 0) {
-      dup2(null, 1);
-      dup2(null, 2);
-    }
-    execl("/proc/self/exe", "vsph", "run", type->name, "--visc",
-          vsph_viscous_name(form), "--res", r, "--t-end", t, "--outputs", "1",
-          "--snapshots", "0", "--out", out, (char *)NULL);
-    _exit(127);
-  }
-  int status = 1;
-  if (pid > 0) waitpid(pid, &status, 0);
-  double peak = 0.0;
-  char path[96];
-  snprintf(path, sizeof path, "%s/run.json", out);
-  cJSON *j = pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0
-                 ? vsph_json_read(path)
-                 : NULL;
-  if (j) peak = vsph_json_get_number(j, "peak_rss_bytes", 0.0);
-  cJSON_Delete(j);
-  DIR *d = opendir(out); /* the run's few files, then the folders */
-  for (struct dirent *e; d && (e = readdir(d));) {
-    if (e->d_name[0] == '.') continue;
-    char f[400];
-    snprintf(f, sizeof f, "%s/%s", out, e->d_name);
-    remove(f);
-  }
-  if (d) closedir(d);
-  remove(out);
-  remove(dir);
-  return peak;
+  return vsph_jobs_peak_rss(type->name, vsph_viscous_name(form), res, t_end);
 }
 
 /* Peak memory per particle of a whole run: the difference of the peaks at

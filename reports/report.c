@@ -278,7 +278,7 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
   /* the runs come before the parts, which only read them */
   if (!st)
     fprintf(md, "| the parts' runs (%zu of %zu made, by %s) | %.1f |\n",
-            R->made, R->plan->n, R->made_by, R->runs_wall);
+            R->made, R->jobs.n, R->made_by, R->runs_wall);
   vsph_text_set(tv, "compiler", "%s", __VERSION__);
   vsph_sysinfo_load(R->load[1]);
   vsph_text_set(tv, "load_start", "%.2f %.2f %.2f", R->load[0][0],
@@ -319,7 +319,7 @@ static int write_run_json(const struct vsph_report *R, unsigned long want,
   cJSON_AddItemToObject(o, "wall_s", w);
   cJSON_AddNumberToObject(o, "wall_total_s", total);
   /* how its runs were made: the plan's size and the way */
-  cJSON_AddNumberToObject(o, "runs_planned", (double)R->plan->n);
+  cJSON_AddNumberToObject(o, "runs_planned", (double)R->jobs.n);
   cJSON_AddNumberToObject(o, "runs_made", (double)R->made);
   cJSON_AddStringToObject(o, "runs_by", R->made_by);
   cJSON_AddNumberToObject(o, "runs_wall_s", R->runs_wall);
@@ -340,13 +340,6 @@ static int plan(struct vsph_report *R, unsigned long want) {
   return st;
 }
 
-static void plan_free(struct vsph_report_plan *P) {
-  if (!P) return;
-  for (size_t k = 0; k < P->n; k++) vsph_report_jobs_free(&P->job[k]);
-  free(P->job);
-  free(P);
-}
-
 /* One report at a time writes a folder, and only a folder that is new,
  * empty or a report's (runs/folder's contract): the claim is held until
  * the process ends (the system drops it if the process dies). */
@@ -361,35 +354,34 @@ static int lock_dir(const char *dir) {
 static int run_missing(struct vsph_report *R,
                        const struct vsph_report_props *rp) {
   if (rp->mode == VSPH_REPORT_POOL)
-    return vsph_report_jobs_pool(R, rp->exe, rp->jobs, rp->threads);
-  return vsph_report_jobs_local(R, omp_get_max_threads());
+    return vsph_jobs_pool(&R->jobs, rp->exe, rp->jobs, rp->threads);
+  return vsph_jobs_local(&R->jobs, omp_get_max_threads());
 }
 
 /* The assembly alone: every run must be there (checked before anything
  * is written). */
 static int all_cached(const struct vsph_report *R) {
   size_t m = 0, first = 0;
-  for (size_t k = 0; k < R->plan->n; k++) /* as the plan found them */
-    if (!R->plan->job[k].cached && !m++) first = k;
+  for (size_t k = 0; k < R->jobs.n; k++) /* as the plan found them */
+    if (!R->jobs.job[k].cached && !m++) first = k;
   if (!m) return VSPH_OK;
   /* a seal broken by a file: name it */
-  const struct vsph_report_job *j = &R->plan->job[first];
+  const struct vsph_jobs_job *j = &R->jobs.job[first];
   char why[700];
   if (vsph_folder_verify(j->dir,
-                         j->kind == VSPH_REPORT_JOB_RUN
-                             ? &vsph_folder_scene_run
-                             : &vsph_folder_shear_test,
+                         j->kind == VSPH_JOBS_RUN ? &vsph_folder_scene_run
+                                                  : &vsph_folder_shear_test,
                          j->key, NULL, why, sizeof why) < 0)
     VSPH_FAIL(VSPH_EIO,
               "%zu of the %zu runs are missing, unfinished or damaged (the "
               "first: %s): rerun them (vsph report --jobs N or --slurm); only "
               "they run",
-              m, R->plan->n, why);
+              m, R->jobs.n, why);
   VSPH_FAIL(VSPH_EIO,
             "%zu of the %zu runs are missing or unfinished (the first: %s; "
             "a failed or cancelled task?): submit again (vsph report "
             "--slurm) or run them (vsph report --jobs N); only they run",
-            m, R->plan->n, j->dir);
+            m, R->jobs.n, j->dir);
 }
 
 int vsph_report_write(const struct vsph_report_props *rp) {
@@ -408,27 +400,27 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   int st = VSPH_OK;
   char absdir[600];
   if (rp->mode == VSPH_REPORT_SLURM) { /* every path absolute */
-    st = vsph_report_jobs_slurm_dir(rp->dir, absdir, sizeof absdir);
+    st = vsph_jobs_slurm_dir(rp->dir, absdir, sizeof absdir);
     R->dir = absdir;
   }
-  if (!st && !(R->plan = calloc(1, sizeof *R->plan))) {
-    st = VSPH_ENOMEM;
-    vsph_status_report(st, __FILE__, __LINE__, "cannot allocate the plan");
-  }
+  R->jobs.dir = R->dir;
+  R->jobs.full = R->full;
+  R->jobs.stop = R->stop;
+  R->jobs.planned = 1;
   if (!st) st = plan(R, want);
   if (!st && rp->mode == VSPH_REPORT_PLAN) { /* writes nothing */
-    st = vsph_report_jobs_plan_print(R, rp->exe ? rp->exe : "vsph",
-                                     rp->plan_out);
-    plan_free(R->plan);
+    st = vsph_jobs_plan_print(&R->jobs, rp->exe ? rp->exe : "vsph",
+                              rp->plan_out);
+    vsph_jobs_plan_free(&R->jobs);
     free(R);
     return st;
   }
   if (!st && rp->mode == VSPH_REPORT_SLURM) st = lock_dir(R->dir);
   if (!st && rp->mode == VSPH_REPORT_SLURM) {
-    const struct vsph_report_slurm s = {rp->exe, rp->partition, rp->time,
-                                        rp->threads, rp->only};
-    st = vsph_report_jobs_slurm(R, &s);
-    plan_free(R->plan);
+    const struct vsph_jobs_slurm s = {rp->exe, rp->partition, rp->time,
+                                      rp->threads, rp->only};
+    st = vsph_jobs_slurm(&R->jobs, &s);
+    vsph_jobs_plan_free(&R->jobs);
     free(R);
     return st;
   }
@@ -439,7 +431,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
                : rp->mode == VSPH_REPORT_ASSEMBLE ? "nothing: assembly only"
                                                   : "this process";
   if (!st && rp->mode != VSPH_REPORT_ASSEMBLE) {
-    for (size_t k = 0; k < R->plan->n; k++) R->made += !R->plan->job[k].cached;
+    for (size_t k = 0; k < R->jobs.n; k++) R->made += !R->jobs.job[k].cached;
     const double t_runs = omp_get_wtime();
     st = run_missing(R, rp);
     R->runs_wall = omp_get_wtime() - t_runs;
@@ -474,7 +466,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   gsl_integration_workspace_free(R->wo);
   gsl_integration_workspace_free(R->wi);
   free(R->claims);
-  plan_free(R->plan);
+  vsph_jobs_plan_free(&R->jobs);
   free(R);
   return st;
 }

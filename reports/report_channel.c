@@ -218,11 +218,11 @@ static const struct {
 static const double TSTAR = M_PI * M_PI;
 
 struct chan {
-  struct vsph_report_run pois[NPOIS], wall[3][2], eos[NEOS], cou[NCOU];
-  struct vsph_report_run map[NMAP][NRE];
-  struct vsph_report_run corr[NCORR][2];
-  struct vsph_report_run xi[NXI];
-  struct vsph_report_run cav[NCAV];
+  struct vsph_jobs_run pois[NPOIS], wall[3][2], eos[NEOS], cou[NCOU];
+  struct vsph_jobs_run map[NMAP][NRE];
+  struct vsph_jobs_run corr[NCORR][2];
+  struct vsph_jobs_run xi[NXI];
+  struct vsph_jobs_run cav[NCAV];
   size_t res_p, res_c, res_m;
 };
 
@@ -230,42 +230,40 @@ struct chan {
  * included (one count, so the array and the loops cannot drift apart) */
 #define NSPECS (NPOIS + 6 + NEOS + NCOU + NXI + 2 * NCORR + NMAP * NRE + NCAV)
 
-static void specs(const struct vsph_report *R, struct vsph_report_runspec *s,
+static void specs(const struct vsph_report *R, struct vsph_jobs_spec *s,
                   size_t *n, size_t res_p, size_t res_c, size_t res_m) {
   size_t k = 0;
   map_settings();
   for (int f = 0; f < NPOIS; f++)
-    s[k++] = (struct vsph_report_runspec){
-        "poiseuille", POIS_VISC[f], res_p, 0.5, POIS_XTRA[f], POIS_TAG[f]};
+    s[k++] = (struct vsph_jobs_spec){"poiseuille", POIS_VISC[f], res_p,
+                                     0.5,          POIS_XTRA[f], POIS_TAG[f]};
   for (int f = 0; f < 3; f++)
     for (int w = 0; w < 2; w++)
-      s[k++] = (struct vsph_report_runspec){
-          "poiseuille", vsph_viscous_name(f), res_p,
-          0.05,         WALL_XTRA[w],         w ? "mirror" : "linear"};
+      s[k++] = (struct vsph_jobs_spec){"poiseuille", vsph_viscous_name(f),
+                                       res_p,        0.05,
+                                       WALL_XTRA[w], w ? "mirror" : "linear"};
   for (int f = 0; f < NEOS; f++)
-    s[k++] = (struct vsph_report_runspec){"poiseuille", EOS_VISC[f], res_p, 0.5,
-                                          EOS_XTRA[f],  EOS_TAG[f]};
+    s[k++] = (struct vsph_jobs_spec){"poiseuille", EOS_VISC[f], res_p,
+                                     0.5,          EOS_XTRA[f], EOS_TAG[f]};
   for (int f = 0; f < NCOU; f++)
-    s[k++] =
-        (struct vsph_report_runspec){"couette", vsph_viscous_name(f), res_c,
+    s[k++] = (struct vsph_jobs_spec){"couette", vsph_viscous_name(f), res_c,
                                      1.0,       COU_XTRA[R->full],    "morris"};
   for (int x = 0; x < NXI; x++)
-    s[k++] = (struct vsph_report_runspec){"poiseuille", "cleary",   res_p,
-                                          0.5,          XI_XTRA[x], XI_TAG[x]};
+    s[k++] = (struct vsph_jobs_spec){"poiseuille", "cleary",   res_p,
+                                     0.5,          XI_XTRA[x], XI_TAG[x]};
   for (int f = 0; f < NCORR; f++)
     for (int c = 0; c < 2; c++)
-      s[k++] = (struct vsph_report_runspec){
+      s[k++] = (struct vsph_jobs_spec){
           "poiseuille", CORR_VISC[f], res_p, 0.5, CORR_XTRA[f][c], CORR_TAG[c]};
   int nre;
   const int *col = map_cols(R, &nre);
   for (int f = 0; f < NMAP; f++)
     for (int q = 0; q < nre; q++)
-      s[k++] = (struct vsph_report_runspec){
+      s[k++] = (struct vsph_jobs_spec){
           "poiseuille",      MAP_VISC[f],         res_m,
           TSTAR_END / TSTAR, map_xtra[f][col[q]], MAP_TAG[col[q]]};
   for (int q = 0; q < (R->full ? NCAV : CAV_QUICK); q++)
-    s[k++] =
-        (struct vsph_report_runspec){"cavity",     CAV[q].visc, CAV[q].res,
+    s[k++] = (struct vsph_jobs_spec){"cavity",     CAV[q].visc, CAV[q].res,
                                      CAV[q].t_end, CAV[q].xtra, CAV[q].tag};
   *n = k; /* k <= NSPECS: the loops above are NSPECS at most */
 }
@@ -276,12 +274,12 @@ static void specs(const struct vsph_report *R, struct vsph_report_runspec *s,
 #define RES_M 20u
 
 int vsph_report_channel_plan(struct vsph_report *R) {
-  struct vsph_report_runspec s[NSPECS];
+  struct vsph_jobs_spec s[NSPECS];
   size_t n;
   specs(R, s, &n, RES_P(R), RES_C(R), RES_M);
   int st = VSPH_OK;
   for (size_t k = 0; k < n && !st; k++)
-    st = vsph_report_jobs_plan_run(R, &s[k]);
+    st = vsph_jobs_plan_run(&R->jobs, &s[k]);
   return st;
 }
 
@@ -290,7 +288,7 @@ static int load(struct vsph_report *R, struct chan *c) {
   c->res_p = RES_P(R);
   c->res_c = RES_C(R);
   c->res_m = RES_M;
-  struct vsph_report_runspec s[NSPECS];
+  struct vsph_jobs_spec s[NSPECS];
   size_t n;
   specs(R, s, &n, c->res_p, c->res_c, c->res_m);
   int st = VSPH_OK;
@@ -334,7 +332,7 @@ static void unload(struct chan *c) {
 }
 
 /* Column @p col of run @p r at time t (NaN past its end). */
-static double at(const struct vsph_report_run *r, const char *col, double t) {
+static double at(const struct vsph_jobs_run *r, const char *col, double t) {
   const double *y = vsph_csv_column(r->energy, col);
   if (!y || r->nrow == 0 || t > r->t[r->nrow - 1] * (1 + 1e-9))
     return (double)NAN;
@@ -342,20 +340,20 @@ static double at(const struct vsph_report_run *r, const char *col, double t) {
 }
 
 /* The last row's value of column @p col. */
-static double last(const struct vsph_report_run *r, const char *col) {
+static double last(const struct vsph_jobs_run *r, const char *col) {
   const double *y = vsph_csv_column(r->energy, col);
   return y && r->nrow ? y[r->nrow - 1] : (double)NAN;
 }
 
 /* The final value of a finished run; NaN ("-") for one stopped early. */
-static double final(const struct vsph_report_run *r, const char *col) {
+static double final(const struct vsph_jobs_run *r, const char *col) {
   return r->ok ? last(r, col) : (double)NAN;
 }
 
 /* A finished cavity run's column averaged over its last fifth (the rows
  * from 0.8 t_end on): the single rows of the Ghia error scatter by a few
  * per cent of U with the particle noise. NaN for a run stopped early. */
-static double cavity_mean(const struct vsph_report_run *r, const char *col) {
+static double cavity_mean(const struct vsph_jobs_run *r, const char *col) {
   const double *y = vsph_csv_column(r->energy, col);
   if (!r->ok || !y || r->nrow == 0) return (double)NAN;
   const double t0 = 0.8 * r->t[r->nrow - 1];
@@ -373,7 +371,7 @@ static void cell(FILE *md, double v, double scale) {
     fprintf(md, " - |");
 }
 
-static void stop_cell(FILE *md, const struct vsph_report_run *r, double ts) {
+static void stop_cell(FILE *md, const struct vsph_jobs_run *r, double ts) {
   if (r->ok)
     fprintf(md, " yes |");
   else
@@ -387,7 +385,7 @@ static void stop_cell(FILE *md, const struct vsph_report_run *r, double ts) {
  * next to the walls, where U is still small: **[reconstructed]**), or
  * infinity when neither comes by the end. *why: 'p' (stopped), 'e'
  * (eq. 38). */
-static double failure(const struct vsph_report_run *r, char *why) {
+static double failure(const struct vsph_jobs_run *r, char *why) {
   const double *e = vsph_csv_column(r->energy, "u_err_rel");
   *why = ' ';
   for (size_t k = 0; e && k < r->nrow; k++)
@@ -404,7 +402,7 @@ static double failure(const struct vsph_report_run *r, char *why) {
 
 /* A run's energy.csv as gnuplot sees it from the report folder (the runs
  * live in its runs/). */
-static void data_file(char *buf, size_t len, const struct vsph_report_run *r) {
+static void data_file(char *buf, size_t len, const struct vsph_jobs_run *r) {
   const char *base = strrchr(r->dir, '/');
   snprintf(buf, len, "runs/%s/energy.csv", base ? base + 1 : r->dir);
 }
@@ -488,7 +486,7 @@ int vsph_report_channel_write(struct vsph_report *R) {
   if ((st = vsph_report_say(R, "channel.intro"))) goto done;
   static const double TS[4] = {0.5, 1.0, 2.0, 4.9};
   for (int f = 0; f < NPOIS; f++) {
-    const struct vsph_report_run *r = &c.pois[f];
+    const struct vsph_jobs_run *r = &c.pois[f];
     fprintf(R->md, "| %s |", POIS_LABEL[f]);
     stop_cell(R->md, r, TSTAR);
     for (int k = 0; k < 4; k++) cell(R->md, at(r, "u_err", TS[k] / TSTAR), 100);
@@ -501,8 +499,8 @@ int vsph_report_channel_write(struct vsph_report *R) {
   if ((st = vsph_report_say(R, "channel.xi_head"))) goto done;
   {
     /* in xi order: 4, 4.221, 4.24, 4.5, 4.96333 */
-    const struct vsph_report_run *xr[5] = {&c.xi[0], &c.xi[1], &c.pois[P_D424],
-                                           &c.xi[2], &c.pois[P_D496]};
+    const struct vsph_jobs_run *xr[5] = {&c.xi[0], &c.xi[1], &c.pois[P_D424],
+                                         &c.xi[2], &c.pois[P_D496]};
     const double xv[5] = {XI_VAL[0], XI_VAL[1], 4.24, XI_VAL[2], 4.96333};
     for (int x = 0; x < 5; x++) {
       fprintf(R->md, "| %g |", xv[x]);
@@ -517,7 +515,7 @@ int vsph_report_channel_write(struct vsph_report *R) {
   if ((st = vsph_report_say(R, "channel.xi_reading"))) goto done;
   if ((st = vsph_report_say(R, "channel.corr_head"))) goto done;
   for (int f = 0; f < NCORR; f++) {
-    const struct vsph_report_run *r0 = &c.pois[CORR_POIS[f]];
+    const struct vsph_jobs_run *r0 = &c.pois[CORR_POIS[f]];
     fprintf(R->md, "| %s |", CORR_LABEL[f]);
     cell(R->md, final(r0, "u_err_rel"), 100);
     cell(R->md, final(&c.corr[f][0], "u_err_rel"), 100);
@@ -542,7 +540,7 @@ int vsph_report_channel_write(struct vsph_report *R) {
   if ((st = vsph_report_say(R, "channel.walls_reading"))) goto done;
   if ((st = vsph_report_say(R, "channel.eos_head"))) goto done;
   for (int f = 0; f < NEOS; f++) {
-    const struct vsph_report_run *r = &c.eos[f];
+    const struct vsph_jobs_run *r = &c.eos[f];
     fprintf(R->md, "| %s |", EOS_LABEL[f]);
     stop_cell(R->md, r, TSTAR);
     cell(R->md, at(r, "u_err", 1.0 / TSTAR), 100);
@@ -583,7 +581,7 @@ int vsph_report_channel_write(struct vsph_report *R) {
   if ((st = vsph_report_say(R, "channel.couette_head"))) goto done;
   static const double TC[4] = {0.0225, 0.1125, 0.225, 1.0};
   for (int f = 0; f < NCOU; f++) {
-    const struct vsph_report_run *r = &c.cou[f];
+    const struct vsph_jobs_run *r = &c.cou[f];
     fprintf(R->md, "| %s |", vsph_viscous_label(f));
     stop_cell(R->md, r, 1.0);
     for (int k = 0; k < 4; k++) cell(R->md, at(r, "u_err", TC[k]), 100);
@@ -593,7 +591,7 @@ int vsph_report_channel_write(struct vsph_report *R) {
   if ((st = vsph_report_say(R, "channel.couette_reading"))) goto done;
   if ((st = vsph_report_say(R, "channel.cavity_head"))) goto done;
   for (int q = 0; q < (R->full ? NCAV : CAV_QUICK); q++) {
-    const struct vsph_report_run *r = &c.cav[q];
+    const struct vsph_jobs_run *r = &c.cav[q];
     fprintf(R->md, "| %d | %s | %s | %zu |", CAV[q].Re,
             vsph_viscous_label(vsph_viscous_find(CAV[q].visc)),
             CAV[q].xtra == CAV_PLAIN ? "no" : "yes", CAV[q].res);
@@ -693,7 +691,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
             ? "reproduced (accuracy; robustness over long times not run)"
             : "differs: on eq. 38 B's near-wall error is about five times "
               "E's here, as PVWF's (section 10)");
-  const struct vsph_report_run *g = &c.eos[2], *gr = &c.eos[3], *ta = &c.eos[1];
+  const struct vsph_jobs_run *g = &c.eos[2], *gr = &c.eos[3], *ta = &c.eos[1];
   snprintf(ours, sizeof ours,
            "E, Re 0.3, gas 125 kPa: %s%.3g without the reduction, %s with "
            "it (eq. 38 %.1f %%); Tait %s",
@@ -803,7 +801,7 @@ int vsph_report_channel_claims(struct vsph_report *R) {
    * fidelities): the spread of E_k/E_k,ref over 5 <= t* <= t_fail - 1 and
    * v_rms at the failure over its median there */
   {
-    const struct vsph_report_run *r5 = &c.map[MAP_E][2];
+    const struct vsph_jobs_run *r5 = &c.map[MAP_E][2];
     char why;
     const double tf = failure(r5, &why);
     const double *vr = vsph_csv_column(r5->energy, "v_rms");

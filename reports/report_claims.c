@@ -128,7 +128,7 @@ static int dissipation_claims(struct vsph_report *R) {
 
 /* The finest run of each scene and formulation, with its decay error. */
 struct finest {
-  struct vsph_report_run run[VSPH_REPORT_NSCENES][NFORM];
+  struct vsph_jobs_run run[VSPH_REPORT_NSCENES][NFORM];
   double err[VSPH_REPORT_NSCENES][NFORM];
   struct vsph_report_ladder lr[VSPH_REPORT_NSCENES];
 };
@@ -139,12 +139,12 @@ static int load_finest(struct vsph_report *R, struct finest *fi) {
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     for (int f = 0; f < NFORM && !st; f++) {
       const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
-      struct vsph_report_runspec rs = {L->scene,
-                                       vsph_viscous_name(f),
-                                       L->res[VSPH_REPORT_LADDER - 1],
-                                       L->t_end,
-                                       NULL,
-                                       NULL};
+      struct vsph_jobs_spec rs = {L->scene,
+                                  vsph_viscous_name(f),
+                                  L->res[VSPH_REPORT_LADDER - 1],
+                                  L->t_end,
+                                  NULL,
+                                  NULL};
       st = vsph_report_runs_get(R, &rs, &fi->run[sc][f]);
       if (!st)
         fi->err[sc][f] =
@@ -156,7 +156,7 @@ static int load_finest(struct vsph_report *R, struct finest *fi) {
 }
 
 static int square_claims(struct vsph_report *R, const struct finest *fi) {
-  const struct vsph_report_run *run = fi->run[1];
+  const struct vsph_jobs_run *run = fi->run[1];
   const size_t rs = vsph_report_runs_ladder(R, 1, 0)->res[2];
   char ours[320];
   /* P/P_exact = 1 - d, with d = (P - P_exact)/|P_exact| and P_exact < 0 */
@@ -189,9 +189,9 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
       pv_unstable++;
       tpv = fmin(tpv, lr->t_unstable[PVWF][k]);
     }
-    struct vsph_report_runspec spec = {L->scene, "pvwf", L->res[k],
-                                       L->t_end, NULL,   NULL};
-    struct vsph_report_run r;
+    struct vsph_jobs_spec spec = {L->scene, "pvwf", L->res[k],
+                                  L->t_end, NULL,   NULL};
+    struct vsph_jobs_run r;
     if ((st = vsph_report_runs_get(R, &spec, &r))) break;
     const double on = vsph_report_runs_onset(&r, &rr, VSPH_REPORT_ONSET);
     vsph_report_runs_free(&r);
@@ -352,7 +352,7 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
    * against Lighthill's phase-free loss (report_runs.c); above 1 is too
    * much damping. The last E_k peak over Lighthill's value there is a
    * second measure: it also carries the phase of the exchange. */
-  const struct vsph_report_run *w = fi->run[2];
+  const struct vsph_jobs_run *w = fi->run[2];
   double loss[NFORM], ratio[NFORM], tpk = 0.0;
   for (int f = 0; f < NFORM; f++) {
     loss[f] = vsph_report_runs_loss_ratio(&w[f], w[f].nrow - 1);

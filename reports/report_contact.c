@@ -139,11 +139,11 @@ static size_t settings(const struct cspec *c, char set[][96], size_t cap) {
 
 /* The job of measurement @p c: `vsph contact --out runs/contact-TAG`. */
 static int cjob(const struct vsph_report *R, const struct cspec *c,
-                struct vsph_report_job *j) {
+                struct vsph_jobs_job *j) {
   char set[16][96];
   const size_t n = settings(c, set, 16);
-  return vsph_report_jobs_shear(R, c->tag, (const char(*)[96])set, n, c->nprof,
-                                j);
+  return vsph_jobs_shear(&R->jobs, c->tag, (const char(*)[96])set, n, c->nprof,
+                         j);
 }
 
 /* All measurements, read back from the cache. */
@@ -156,12 +156,13 @@ static int cload(struct vsph_report *R, struct cres *cr) {
   cr->nc = R->full ? NC : C_QUICK;
   int st = VSPH_OK;
   for (int k = 0; k < cr->nc && !st; k++) {
-    struct vsph_report_job j;
+    struct vsph_jobs_job j;
     st = cjob(R, &CS[k], &j);
-    if (!st) st = vsph_report_jobs_ready(R, &j);
+    if (!st) st = vsph_jobs_ready(&R->jobs, &j);
     char path[700];
-    snprintf(path, sizeof path, "%s/summary.csv", j.dir);
-    vsph_report_jobs_free(&j);
+    if (!st)
+      st = vsph_jobs_file(&R->jobs, j.dir, "summary.csv", path, sizeof path);
+    vsph_jobs_free(&j);
     if (!st && vsph_shear_csv_load(path, &cr->r[k]))
       VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
   }
@@ -226,7 +227,8 @@ struct cnum {
   double ss_spread[2];            /* self-similarity: nu spread (%) */
 };
 
-static void numbers(const struct cres *cr, const char *dir, struct cnum *nb) {
+static void numbers(const struct cres *cr, const struct vsph_jobs *J,
+                    struct cnum *nb) {
   const struct vsph_kernel_type *w = vsph_kernel_find("wendland2"),
                                 *b = vsph_kernel_find("cubic");
   nb->klat_w = vsph_contact_lattice_coef(w, 3, 0.5);
@@ -275,9 +277,10 @@ static void numbers(const struct cres *cr, const char *dir, struct cnum *nb) {
                  eR = gl->eta + (z ? nb->fit05 * gl->rho0 * gl->c0 * D0 : 0);
     vsph_contact_bimaterial_u(1.0, 1.0, -1.0, eL, pa->rho0, 1.0, eR, gl->rho0,
                               &nb->ustar_exact[z]);
-    char path[700];
-    snprintf(path, sizeof path, "%s/runs/contact-%s/profiles.csv", dir,
-             CS[k].tag);
+    char run[700], path[700] = "";
+    snprintf(run, sizeof run, "%s/runs/contact-%s", J->dir, CS[k].tag);
+    if (vsph_jobs_file(J, run, "profiles.csv", path, sizeof path))
+      path[0] = '\0'; /* (reported) no fit */
     for (int q = 0; q < 2; q++) {
       nb->ustar[z][q] = nb->rms[z][q] = NAN;
       if (q >= (int)r->nt) continue;
@@ -363,37 +366,37 @@ struct cyl {
 
 /* The cylinder runs (their number is returned), with eta_num the 2-D
  * static lattice's (@p k2). */
-static int cyl_specs(const struct vsph_report *R,
-                     struct vsph_report_runspec rs[NCY], double *k2) {
+static int cyl_specs(const struct vsph_report *R, struct vsph_jobs_spec rs[NCY],
+                     double *k2) {
   const struct vsph_kernel_type *w = vsph_kernel_find("wendland2");
   *k2 = vsph_contact_lattice_coef(w, 2, 0.5);
   snprintf(cyl_eta_num, sizeof cyl_eta_num, "Solver:eta_num=%.6f", *k2);
   const int n = R->full ? NCY : CY_QUICK;
   for (int k = 0; k < n; k++)
-    rs[k] = (struct vsph_report_runspec){"cylinders", "contact", CY[k].res,
-                                         CY[k].t_end, CY[k].set, CY[k].tag};
+    rs[k] = (struct vsph_jobs_spec){"cylinders", "contact", CY[k].res,
+                                    CY[k].t_end, CY[k].set, CY[k].tag};
   return n;
 }
 
 int vsph_report_contact_plan(struct vsph_report *R) {
   int st = VSPH_OK;
   for (int k = 0; k < (R->full ? NC : C_QUICK) && !st; k++) {
-    struct vsph_report_job j;
+    struct vsph_jobs_job j;
     if ((st = cjob(R, &CS[k], &j))) {
-      vsph_report_jobs_free(&j);
+      vsph_jobs_free(&j);
       break;
     }
-    st = vsph_report_jobs_plan_add(R, &j);
+    st = vsph_jobs_plan_add(&R->jobs, &j);
   }
-  struct vsph_report_runspec rs[NCY];
+  struct vsph_jobs_spec rs[NCY];
   double k2;
   const int n = cyl_specs(R, rs, &k2);
-  for (int k = 0; k < n && !st; k++) st = vsph_report_jobs_plan_run(R, &rs[k]);
+  for (int k = 0; k < n && !st; k++) st = vsph_jobs_plan_run(&R->jobs, &rs[k]);
   return st;
 }
 
 static int cyl_load(struct vsph_report *R, struct cyl *cy) {
-  struct vsph_report_runspec rs[NCY];
+  struct vsph_jobs_spec rs[NCY];
   cy->n = cyl_specs(R, rs, &cy->k2);
   int st = VSPH_OK;
   for (int k = 0; k < cy->n && !st; k++) {
@@ -407,7 +410,7 @@ static int cyl_load(struct vsph_report *R, struct cyl *cy) {
     if (!st) st = vsph_scene_init(&sc, &vsph_cylinders_type, prm);
     vsph_params_free(prm);
     if (st) break;
-    struct vsph_report_run r;
+    struct vsph_jobs_run r;
     if ((st = vsph_report_runs_get(R, &rs[k], &r))) break;
     const double *px = vsph_csv_column(r.energy, "Px");
     const size_t last = r.nrow - 1, tenth = last - last / 10;
@@ -564,7 +567,7 @@ int vsph_report_contact_write(struct vsph_report *R) {
   int st = cload(R, &cr);
   if (st) return st;
   struct cnum nb;
-  numbers(&cr, R->dir, &nb);
+  numbers(&cr, &R->jobs, &nb);
   struct vsph_text_vars *tv = &R->tv;
   if ((st = vsph_report_say(R, "contact.intro"))) return st;
   /* Table: alpha = 0.5, both kernels */
@@ -700,7 +703,7 @@ int vsph_report_contact_claims(struct vsph_report *R) {
   int st = cload(R, &cr);
   if (st) return st;
   struct cnum nb;
-  numbers(&cr, R->dir, &nb);
+  numbers(&cr, &R->jobs, &nb);
   char ours[320];
   const double w = coef(&cr.r[C_W]), b = coef(&cr.r[C_B]);
   const double ew = w / nb.paper_w - 1.0, eb = b / nb.paper_b - 1.0;

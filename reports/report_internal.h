@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "../runs/jobs.h"
 #include "../solver/viscous.h"
 #include "text.h"
 
@@ -74,38 +75,6 @@ struct vsph_report_claim {
   char see[32]; /* the part that shows it ("scenes"): the link in the table */
 };
 
-/* ------------------------------------------- report_jobs.c: the plan */
-
-/* What a job runs: the solver on a scene (`vsph run`), or the shear test
- * of section 12 (`vsph contact`). */
-enum { VSPH_REPORT_JOB_RUN = 0, VSPH_REPORT_JOB_SHEAR };
-
-/* Settings a job holds at most. */
-#define VSPH_REPORT_JOB_NSET 20
-
-/* One run the report needs: the command that makes its folder, and what
- * the scheduler knows of it. */
-struct vsph_report_job {
-  int kind;                            /* VSPH_REPORT_JOB_* */
-  char scene[32];                      /* RUN: the scene */
-  char dir[512];                       /* its output folder */
-  char set[VSPH_REPORT_JOB_NSET][128]; /* "Section:key=value" */
-  size_t nset, nprof;                  /* SHEAR: profile times */
-  char label[160];                     /* as progress names it */
-  char family[64]; /* "scene formulation" (or "shear test"): its rate */
-  char *key;       /* its key.txt (owned) */
-  double particles, steps, bytes; /* the solver's estimate */
-  double neighbours;              /* of each particle, every pass */
-  int cached;                     /* its key.txt matches */
-  int failed;                     /* the pool: did not end */
-};
-
-/* Every run the parts on will read, listed before any is run. */
-struct vsph_report_plan {
-  struct vsph_report_job *job;
-  size_t n, cap;
-};
-
 /* The report being written. */
 struct vsph_report {
   const char *dir; /* output folder */
@@ -124,11 +93,11 @@ struct vsph_report {
   int have_layouts;
   struct vsph_text_vars tv;          /* scratch values for the prose blocks */
   const volatile sig_atomic_t *stop; /* stop request, or NULL */
-  struct vsph_report_plan *plan;     /* NULL: runs made as read (tests) */
-  size_t made;                       /* runs the plan missed at the start */
-  double runs_wall;                  /* their wall time (s) */
-  const char *made_by;               /* who made them (run.json) */
-  double load[2][3]; /* load averages before and after (run.json) */
+  struct vsph_jobs jobs; /* the runs: planned, or made as read (tests) */
+  size_t made;           /* runs the plan missed at the start */
+  double runs_wall;      /* their wall time (s) */
+  const char *made_by;   /* who made them (run.json) */
+  double load[2][3];     /* load averages before and after (run.json) */
 };
 
 /* ------------------------------------------------------ report.c helpers */
@@ -152,107 +121,6 @@ int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
 int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
                            const char *name);
 
-/* The job of a solver run: its folder, settings and key (runs/rundir's),
- * and whether the cache holds it. Free with vsph_report_jobs_free. */
-struct vsph_report_runspec;
-int vsph_report_jobs_run(const struct vsph_report *R,
-                         const struct vsph_report_runspec *rs,
-                         struct vsph_report_job *j);
-
-/* The job of a shear test: folder runs/contact-TAG, @p n settings. */
-int vsph_report_jobs_shear(const struct vsph_report *R, const char *tag,
-                           const char (*set)[96], size_t n, size_t nprof,
-                           struct vsph_report_job *j);
-
-void vsph_report_jobs_free(struct vsph_report_job *j);
-
-/* Add @p j to R->plan (which takes its key), once per folder; a second
- * job with the same folder and another key is a bug (two specs, one
- * folder). Estimates its cost. Without a plan, frees @p j. */
-int vsph_report_jobs_plan_add(struct vsph_report *R, struct vsph_report_job *j);
-
-/* The same for a solver run. */
-int vsph_report_jobs_plan_run(struct vsph_report *R,
-                              const struct vsph_report_runspec *rs);
-
-/* Make sure the folder of @p j holds its run before a part reads it: with
- * a sealed plan, it must be listed and cached (else a failure naming it);
- * without a plan (the tests), it is run here if not cached. */
-int vsph_report_jobs_ready(const struct vsph_report *R,
-                           const struct vsph_report_job *j);
-
-/* The command of @p j as arguments (NULL-ended, pointing into @p j and
- * @p buf): @p exe, then run or contact, --out, --cache and the settings;
- * --quiet --threads T when @p threads > 0. */
-size_t vsph_report_jobs_argv(const struct vsph_report_job *j, const char *exe,
-                             size_t threads, char buf[2][24], const char **argv,
-                             size_t cap);
-
-/* The same as one shell line (arguments quoted where needed). */
-void vsph_report_jobs_command(const struct vsph_report_job *j, const char *exe,
-                              size_t threads, char *out, size_t len);
-
-/* The plan as a table (tab-separated: status, folder, key fingerprint,
- * particles, steps, memory, command), those missing first. */
-int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
-                                FILE *f);
-
-/* The missing runs of the plan in this process, @p width at a time (one
- * thread each; the report passes its thread count: two on 2 cores), the
- * costliest first. */
-int vsph_report_jobs_local(struct vsph_report *R, int width);
-
-/* One run as the estimate of the time left sees it. */
-enum {
-  VSPH_REPORT_ETA_WAITING = 0,
-  VSPH_REPORT_ETA_RUNNING,
-  VSPH_REPORT_ETA_DONE
-};
-struct vsph_report_eta {
-  double cost;        /* particles x neighbours x steps: DONE, the steps it took
-                         (0: it failed and measures nothing); else the plan's */
-  double wall;        /* DONE: its wall time; RUNNING: its time so far */
-  double ended;       /* DONE: when it finished (any clock) */
-  int state;          /* VSPH_REPORT_ETA_* */
-  const char *family; /* runs of one family share a rate */
-};
-
-/* The wall time left of @p n runs, in the order they start, @p width at a
- * time. A run not done takes what its family's last two finished runs
- * say: the line through their (cost, wall time), a fixed part and a rate,
- * where both come out non-negative (a small run's fixed costs weigh more),
- * else the last one's rate (the runs go costliest first, so the last is
- * the nearest in size); a family with no finished run takes all finished
- * runs' wall time over their cost. A running run's time so far is taken
- * off. The runs are laid on the @p width lanes in their order, each on
- * the lane free first. @return the seconds left, or -1 while no run has
- * finished (nothing to measure a rate by). */
-double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
-                            size_t width);
-
-/* The same as child processes of @p exe, @p njobs at a time with
- * @p threads threads each; a run that fails is recorded (runs/failed.txt,
- * its log in runs/logs/) and the others go on. */
-int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
-                          size_t threads);
-
-/* Submit the missing runs as one Slurm job array and the assembly as a
- * job after it (afterany). */
-struct vsph_report_slurm {
-  const char *exe;       /* vsph, absolute */
-  const char *partition; /* or NULL */
-  const char *time;      /* Slurm's time limit, or NULL: estimated */
-  size_t threads;        /* --cpus-per-task of each run */
-  const char *only;      /* the report's --only, for the assembly, or NULL */
-};
-int vsph_report_jobs_slurm(struct vsph_report *R,
-                           const struct vsph_report_slurm *s);
-
-/* The folder of a Slurm report, made if new, as an absolute path into
- * @p abs (the jobs run elsewhere); one that #SBATCH lines cannot carry
- * (a space, a quote, '%') is refused, and left unmade. */
-int vsph_report_jobs_slurm_dir(const char *dir, char *abs, size_t len);
-
 /* ----------------------------------------------------- report_runs.c: runs */
 
 /* A solver run the report needs. */
@@ -262,40 +130,14 @@ int vsph_report_jobs_slurm_dir(const char *dir, char *abs, size_t len);
 /* Adami et al.'s kernel for the cavity: the quintic spline with h = dx */
 #define VSPH_REPORT_ADAMI "Solver:kernel=quintic", "Solver:hdx=1"
 
-struct vsph_report_runspec {
-  const char *scene;        /* scene name */
-  const char *visc;         /* formulation name */
-  size_t res;               /* particles across */
-  double t_end;             /* end time (s) */
-  const char *const *extra; /* "Section:key=value" settings, NULL-ended */
-  const char *tag;          /* folder suffix, or NULL */
-};
-
-/* One run's figures, from the cache or a fresh run. */
-struct vsph_report_run {
-  char dir[512];     /* its output folder */
-  int ok;            /* 1: finished, 0: stopped as unstable */
-  double t_unstable; /* when, if unstable */
-  char reason[160];  /* why */
-  double wall_s, pairs;
-  double cpu_s, load; /* CPU time; 1-minute load average at its start */
-  size_t n, steps, res;
-  struct vsph_csv *energy; /* energy.csv */
-  size_t nrow;             /* its rows; the columns: */
-  const double *t, *Ek, *Pv, *res_b, *dEk, *Ekr, *dEkr;
-  const double *Ep, *Ec, *Emr, *dEmr; /* energies; reference E_m, dE_m/dt */
-};
-
 /* The ladder of scene @p sc (0..VSPH_REPORT_NSCENES-1) at the report's
  * fidelity, or the quick one when @p quick. */
 const struct vsph_report_ladderdef *vsph_report_runs_ladder(
     const struct vsph_report *R, int sc, int quick);
 
-/* A run through the cache: reuses its folder when its key (version, source
- * hash and every setting) matches, else runs the solver (runs/rundir). */
-int vsph_report_runs_get(struct vsph_report *R,
-                         const struct vsph_report_runspec *rs,
-                         struct vsph_report_run *out);
+/* A run through runs/jobs (vsph_jobs_get). */
+int vsph_report_runs_get(struct vsph_report *R, const struct vsph_jobs_spec *rs,
+                         struct vsph_jobs_run *out);
 
 /* The extra settings of the vortex patch's Cartesian-disc ladder (its
  * runs carry the tag "cartesian"). */
@@ -317,7 +159,7 @@ int vsph_report_runs_plan_ladders(struct vsph_report *R, int all);
 int vsph_report_runs_plan_baseline(struct vsph_report *R);
 
 /* Free a run's loaded data. */
-void vsph_report_runs_free(struct vsph_report_run *r);
+void vsph_report_runs_free(struct vsph_jobs_run *r);
 
 /* The square's reference (memoised in R; its runs through the cache). */
 int vsph_report_runs_richardson(struct vsph_report *R,
@@ -333,7 +175,7 @@ double vsph_report_runs_extrapolate(double e[2][2], const double eps[2]);
 /* The four runs behind it (tags "hdx2", "hdx3"). */
 extern const char *const vsph_report_runs_hdx[2][2];
 void vsph_report_runs_reference_specs(const struct vsph_report *R,
-                                      struct vsph_report_runspec rs[4]);
+                                      struct vsph_jobs_spec rs[4]);
 
 /* The threshold of the onset (the reference's own uncertainty, its
  * lattice error and the Richardson remainder, is below 1 %). */
@@ -343,16 +185,16 @@ void vsph_report_runs_reference_specs(const struct vsph_report *R,
  * departs from the reference, not the time it is stopped): the first of
  * the reference's times at which |dE_k/dt - dE_ref/dt| exceeds
  * @p threshold |dE_ref/dt| (or the run has stopped); NaN if never. */
-double vsph_report_runs_onset(const struct vsph_report_run *r,
+double vsph_report_runs_onset(const struct vsph_jobs_run *r,
                               const struct vsph_report_richardson *rr,
                               double threshold);
 
 /* Reference E_k at row @p row: the run's own, or the Richardson curve. */
-double vsph_report_runs_eref(const struct vsph_report_run *r, size_t row,
+double vsph_report_runs_eref(const struct vsph_jobs_run *r, size_t row,
                              const struct vsph_report_richardson *rr);
 
 /* Decay error max_t |E_k/E_k(0) - E_ref/E_ref(0)|. */
-double vsph_report_runs_error(const struct vsph_report_run *r,
+double vsph_report_runs_error(const struct vsph_jobs_run *r,
                               const struct vsph_report_richardson *rr);
 
 /* The energy budget at row @p row (the paper's measure of damping, free of
@@ -361,16 +203,16 @@ double vsph_report_runs_error(const struct vsph_report_run *r,
  * against the reference's lost share 1 - E_m(t)/E_m(0) (standing wave:
  * Lighthill's envelope). Above 1: too much damping. NaN at t = 0 or
  * without a reference. */
-double vsph_report_runs_loss_ratio(const struct vsph_report_run *r, size_t row);
+double vsph_report_runs_loss_ratio(const struct vsph_jobs_run *r, size_t row);
 
 /* The same with only the viscous part of the loss, -int_0^t P_visc dt
  * (trapezoidal rule over the rows), so the two split the loss into the
  * viscous formulation's share and the rest (acoustic exchange, walls). */
-double vsph_report_runs_visc_loss_ratio(const struct vsph_report_run *r,
+double vsph_report_runs_visc_loss_ratio(const struct vsph_jobs_run *r,
                                         size_t row);
 
 /* Initial dissipation error (P_visc(0) - dEk_ref(0)) / |dEk_ref(0)|. */
-double vsph_report_runs_diss0(const struct vsph_report_run *r);
+double vsph_report_runs_diss0(const struct vsph_jobs_run *r);
 
 /* Linear interpolation of y(t) on sample times t (NaN outside). */
 double vsph_report_runs_interp(const double *t, const double *y, size_t n,
@@ -414,7 +256,7 @@ int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
 
 /* Each part that reads runs declares them first (its plan): the report
  * runs what is missing before any part is written, and a part that reads
- * a run its plan does not list fails (vsph_report_jobs_ready). */
+ * a run its plan does not list fails (vsph_jobs_ready). */
 int vsph_report_scenes_plan(struct vsph_report *R);
 int vsph_report_stability_plan(struct vsph_report *R);
 int vsph_report_channel_plan(struct vsph_report *R);

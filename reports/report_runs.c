@@ -36,66 +36,7 @@ const struct vsph_report_ladderdef *vsph_report_runs_ladder(
   return R->full && !quick ? &FULL[sc] : &QUICK[sc];
 }
 
-void vsph_report_runs_free(struct vsph_report_run *r) {
-  vsph_csv_free(r->energy);
-  r->energy = NULL;
-}
-
-/* energy.csv: the columns the parts read, by name. */
-static int load_energy(struct vsph_report_run *r) {
-  char path[600];
-  snprintf(path, sizeof path, "%s/energy.csv", r->dir);
-  r->energy = vsph_csv_read(path);
-  if (!r->energy) return VSPH_EIO;
-  const struct vsph_csv *e = r->energy;
-  r->nrow = e->nrow;
-  r->t = vsph_csv_column(e, "t");
-  r->Ek = vsph_csv_column(e, "Ek");
-  r->Pv = vsph_csv_column(e, "P_visc");
-  r->res_b = vsph_csv_column(e, "residual");
-  r->dEk = vsph_csv_column(e, "dEk_dt");
-  r->Ekr = vsph_csv_column(e, "Ek_ref");
-  r->dEkr = vsph_csv_column(e, "dEk_ref");
-  r->Ep = vsph_csv_column(e, "Ep");
-  r->Ec = vsph_csv_column(e, "Ec");
-  r->Emr = vsph_csv_column(e, "Em_ref");
-  r->dEmr = vsph_csv_column(e, "dEm_ref");
-  if (!r->t || !r->Ek || !r->Pv || !r->res_b || !r->dEk || !r->Ekr ||
-      !r->dEkr || !r->Ep || !r->Ec || !r->Emr || !r->dEmr || r->nrow == 0)
-    VSPH_FAIL(VSPH_EIO, "%s lacks the columns of an energy table", path);
-  return VSPH_OK;
-}
-
-/* A count from run.json; 0 unless it is a whole number that fits, so a
- * damaged file never reaches an undefined conversion. */
-static size_t count_of(const cJSON *j, const char *key) {
-  const double v = vsph_json_get_number(j, key, 0.0);
-  return v >= 0.0 && v < 9007199254740992.0 ? (size_t)v : 0;
-}
-
-static int load_run_json(struct vsph_report_run *r) {
-  char path[600];
-  snprintf(path, sizeof path, "%s/run.json", r->dir);
-  cJSON *j = vsph_json_read(path);
-  if (!j) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
-  const cJSON *v = cJSON_GetObjectItemCaseSensitive(j, "status");
-  r->ok = cJSON_IsString(v) && !strcmp(v->valuestring, "ok");
-  r->t_unstable = vsph_json_get_number(j, "unstable_time", (double)NAN);
-  v = cJSON_GetObjectItemCaseSensitive(j, "unstable_reason");
-  snprintf(r->reason, sizeof r->reason, "%s",
-           cJSON_IsString(v) ? v->valuestring : "");
-  r->wall_s = vsph_json_get_number(j, "wall_s", (double)NAN);
-  r->pairs = vsph_json_get_number(j, "pairs_per_s", 0.0) * r->wall_s;
-  r->cpu_s = vsph_json_get_number(j, "cpu_s", (double)NAN);
-  v = cJSON_GetObjectItemCaseSensitive(j, "load_average_start");
-  const cJSON *l1 = cJSON_IsArray(v) ? cJSON_GetArrayItem(v, 0) : NULL;
-  r->load = cJSON_IsNumber(l1) ? l1->valuedouble : (double)NAN;
-  r->n = count_of(j, "n_particles");
-  r->steps = count_of(j, "steps");
-  r->res = count_of(j, "res");
-  cJSON_Delete(j);
-  return VSPH_OK;
-}
+void vsph_report_runs_free(struct vsph_jobs_run *r) { vsph_jobs_run_free(r); }
 
 const char *const vsph_report_runs_cartesian[2] = {"Scene:layout=cartesian",
                                                    NULL};
@@ -111,14 +52,13 @@ int vsph_report_runs_layouts(struct vsph_report *R,
   for (int l = 0; l < 2 && !st; l++)
     for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT && !st; f++)
       for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
-        const struct vsph_report_runspec rs = {
-            L->scene,
-            vsph_viscous_name(f),
-            L->res[k],
-            L->t_end,
-            l ? vsph_report_runs_cartesian : NULL,
-            l ? "cartesian" : NULL};
-        struct vsph_report_run r;
+        const struct vsph_jobs_spec rs = {L->scene,
+                                          vsph_viscous_name(f),
+                                          L->res[k],
+                                          L->t_end,
+                                          l ? vsph_report_runs_cartesian : NULL,
+                                          l ? "cartesian" : NULL};
+        struct vsph_jobs_run r;
         if ((st = vsph_report_runs_get(R, &rs, &r))) break;
         out->dx[k] = 1.0 / (double)L->res[k];
         out->err[l][f][k] = vsph_report_runs_error(&r, NULL);
@@ -137,22 +77,22 @@ int vsph_report_runs_plan_scene(struct vsph_report *R, int sc) {
   int st = VSPH_OK;
   /* the stretching square's reference runs */
   if (sc == 1) {
-    struct vsph_report_runspec ref[4];
+    struct vsph_jobs_spec ref[4];
     vsph_report_runs_reference_specs(R, ref);
     for (int k = 0; k < 4 && !st; k++)
-      st = vsph_report_jobs_plan_run(R, &ref[k]);
+      st = vsph_jobs_plan_run(&R->jobs, &ref[k]);
   }
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
   for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT && !st; f++)
     for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
-      const struct vsph_report_runspec rs = {
+      const struct vsph_jobs_spec rs = {
           L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
-      st = vsph_report_jobs_plan_run(R, &rs);
+      st = vsph_jobs_plan_run(&R->jobs, &rs);
       /* the vortex patch's ladder again on a Cartesian disc (section 6) */
-      const struct vsph_report_runspec cs = {
+      const struct vsph_jobs_spec cs = {
           L->scene, vsph_viscous_name(f),       L->res[k],
           L->t_end, vsph_report_runs_cartesian, "cartesian"};
-      if (!st && sc == 0) st = vsph_report_jobs_plan_run(R, &cs);
+      if (!st && sc == 0) st = vsph_jobs_plan_run(&R->jobs, &cs);
     }
   return st;
 }
@@ -165,18 +105,9 @@ int vsph_report_runs_plan_ladders(struct vsph_report *R, int all) {
   return st;
 }
 
-int vsph_report_runs_get(struct vsph_report *R,
-                         const struct vsph_report_runspec *rs,
-                         struct vsph_report_run *out) {
-  memset(out, 0, sizeof *out);
-  struct vsph_report_job j;
-  int st = vsph_report_jobs_run(R, rs, &j);
-  snprintf(out->dir, sizeof out->dir, "%s", j.dir);
-  if (!st) st = vsph_report_jobs_ready(R, &j);
-  vsph_report_jobs_free(&j);
-  if (!st) st = load_run_json(out);
-  if (!st) st = load_energy(out);
-  return st;
+int vsph_report_runs_get(struct vsph_report *R, const struct vsph_jobs_spec *rs,
+                         struct vsph_jobs_run *out) {
+  return vsph_jobs_get(&R->jobs, rs, out);
 }
 
 double vsph_report_runs_interp(const double *t, const double *y, size_t n,
@@ -198,7 +129,7 @@ const char *const vsph_report_runs_hdx[2][2] = {{"Solver:hdx=2", NULL},
                                                 {"Solver:hdx=3", NULL}};
 
 void vsph_report_runs_reference_specs(const struct vsph_report *R,
-                                      struct vsph_report_runspec rs[4]) {
+                                      struct vsph_jobs_spec rs[4]) {
   /* h/dx = 2 at L/dx 30, 60 and h/dx = 3 at 40, 80 (full: twice these):
    * h = 0.067, 0.033 and 0.075, 0.038 */
   static const size_t res[2][2] = {{30, 60}, {40, 80}};
@@ -206,12 +137,12 @@ void vsph_report_runs_reference_specs(const struct vsph_report *R,
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 1, 0);
   for (int r = 0; r < 2; r++)
     for (int k = 0; k < 2; k++) {
-      const struct vsph_report_runspec s = {L->scene,
-                                            "mgf",
-                                            (R->full ? 2 : 1) * res[r][k],
-                                            L->t_end,
-                                            vsph_report_runs_hdx[r],
-                                            tag[r]};
+      const struct vsph_jobs_spec s = {L->scene,
+                                       "mgf",
+                                       (R->full ? 2 : 1) * res[r][k],
+                                       L->t_end,
+                                       vsph_report_runs_hdx[r],
+                                       tag[r]};
       rs[2 * r + k] = s;
     }
 }
@@ -241,10 +172,10 @@ int vsph_report_runs_richardson(struct vsph_report *R,
     *rr = R->rr;
     return VSPH_OK;
   }
-  struct vsph_report_runspec rs[4];
+  struct vsph_jobs_spec rs[4];
   vsph_report_runs_reference_specs(R, rs);
   const double t_end = rs[0].t_end;
-  struct vsph_report_run run[4];
+  struct vsph_jobs_run run[4];
   memset(run, 0, sizeof run);
   int st = VSPH_OK;
   for (int k = 0; k < 4 && !st; k++) {
@@ -262,7 +193,7 @@ int vsph_report_runs_richardson(struct vsph_report *R,
     double e[2][2];
     for (int r = 0; r < 2; r++)
       for (int m = 0; m < 2; m++) {
-        const struct vsph_report_run *u = &run[2 * r + m];
+        const struct vsph_jobs_run *u = &run[2 * r + m];
         e[r][m] = vsph_report_runs_interp(u->t, u->Ek, u->nrow, rr->t[k]);
       }
     rr->E[k] = vsph_report_runs_extrapolate(e, rr->eps);
@@ -291,7 +222,7 @@ int vsph_report_runs_richardson(struct vsph_report *R,
   return VSPH_OK;
 }
 
-double vsph_report_runs_onset(const struct vsph_report_run *r,
+double vsph_report_runs_onset(const struct vsph_jobs_run *r,
                               const struct vsph_report_richardson *rr,
                               double threshold) {
   for (int k = 1; k <= 100; k++) {
@@ -302,7 +233,7 @@ double vsph_report_runs_onset(const struct vsph_report_run *r,
   return (double)NAN;
 }
 
-double vsph_report_runs_eref(const struct vsph_report_run *r, size_t row,
+double vsph_report_runs_eref(const struct vsph_jobs_run *r, size_t row,
                              const struct vsph_report_richardson *rr) {
   if (rr) return vsph_report_runs_interp(rr->t, rr->E, 101, r->t[row]);
   return r->Ekr[row];
@@ -312,7 +243,7 @@ double vsph_report_runs_eref(const struct vsph_report_run *r, size_t row,
  * that the weakly compressible start carries (m = rho V with
  * rho = rho0 + p/c0^2), which no resolution removes and which is not the
  * viscous formulation's doing. */
-double vsph_report_runs_error(const struct vsph_report_run *r,
+double vsph_report_runs_error(const struct vsph_jobs_run *r,
                               const struct vsph_report_richardson *rr) {
   const double e0 = vsph_report_runs_eref(r, 0, rr);
   double err = 0.0;
@@ -327,21 +258,20 @@ double vsph_report_runs_error(const struct vsph_report_run *r,
  * losses are normalised by their own initial energy (the run's E_k(0),
  * the reference's E_m(0)), as the decay error is: the weakly compressible
  * start's O(Ma^2) offset of E_k(0) is not the formulation's doing. */
-static double over_reference(const struct vsph_report_run *r, size_t row,
+static double over_reference(const struct vsph_jobs_run *r, size_t row,
                              double lost) {
   const double lost_ref = 1.0 - r->Emr[row] / r->Emr[0];
   return row > 0 && lost_ref != 0.0 ? (lost / r->Ek[0]) / lost_ref
                                     : (double)NAN;
 }
 
-double vsph_report_runs_loss_ratio(const struct vsph_report_run *r,
-                                   size_t row) {
+double vsph_report_runs_loss_ratio(const struct vsph_jobs_run *r, size_t row) {
   return over_reference(r, row,
                         (r->Ek[0] + r->Ep[0] + r->Ec[0]) -
                             (r->Ek[row] + r->Ep[row] + r->Ec[row]));
 }
 
-double vsph_report_runs_visc_loss_ratio(const struct vsph_report_run *r,
+double vsph_report_runs_visc_loss_ratio(const struct vsph_jobs_run *r,
                                         size_t row) {
   double lost = 0.0;
   for (size_t k = 1; k <= row; k++)
@@ -349,7 +279,7 @@ double vsph_report_runs_visc_loss_ratio(const struct vsph_report_run *r,
   return over_reference(r, row, lost);
 }
 
-double vsph_report_runs_diss0(const struct vsph_report_run *r) {
+double vsph_report_runs_diss0(const struct vsph_jobs_run *r) {
   return (r->Pv[0] - r->dEkr[0]) / fabs(r->dEkr[0]);
 }
 
@@ -365,9 +295,9 @@ int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
   int st = sc == 1 ? vsph_report_runs_richardson(R, &rr) : VSPH_OK;
   for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT && !st; f++)
     for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
-      struct vsph_report_runspec rs = {
+      struct vsph_jobs_spec rs = {
           L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
-      struct vsph_report_run r;
+      struct vsph_jobs_run r;
       if ((st = vsph_report_runs_get(R, &rs, &r))) break;
       lr->dx[f][k] = 1.0 / (double)L->res[k]; /* reference length 1 m */
       lr->err[f][k] = vsph_report_runs_error(&r, sc == 1 ? &rr : NULL);
@@ -449,10 +379,9 @@ size_t vsph_report_runs_baseline_count(void) {
 
 /* A baseline row from the run of @p rs: its final E_k (relative to the
  * reference when @p rel, else as it is), its final u_err and verdict. */
-static int velocity_row(struct vsph_report *R,
-                        const struct vsph_report_runspec *rs, int rel,
-                        struct vsph_report_baseline *b) {
-  struct vsph_report_run r;
+static int velocity_row(struct vsph_report *R, const struct vsph_jobs_spec *rs,
+                        int rel, struct vsph_report_baseline *b) {
+  struct vsph_jobs_run r;
   const int st = vsph_report_runs_get(R, rs, &r);
   if (st) return st;
   snprintf(b->scene, sizeof b->scene, "%s", rs->scene);
@@ -475,39 +404,39 @@ static const char *const BASE_TVF[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1", NULL};
 /* The run behind baseline row @p i, and its kind: 0 free surface, 1
  * channel, 2 cavity, 3 contact. */
 static int baseline_spec(const struct vsph_report *R, size_t i,
-                         struct vsph_report_runspec *rs) {
+                         struct vsph_jobs_spec *rs) {
   const size_t nfree = VSPH_REPORT_NSCENES * VSPH_VISCOUS_PAPER_COUNT;
   const size_t nchan = 2 * VSPH_VISCOUS_FORM_COUNT;
   if (i >= nfree + nchan + NCAVITY_BASE) {
     const size_t j = i - nfree - nchan - NCAVITY_BASE;
-    *rs = (struct vsph_report_runspec){"shear",
-                                       "contact",
-                                       CONTACT_BASE[j].res,
-                                       CONTACT_BASE[j].t_end,
-                                       CONTACT_BASE[j].set,
-                                       CONTACT_BASE[j].tag};
+    *rs = (struct vsph_jobs_spec){"shear",
+                                  "contact",
+                                  CONTACT_BASE[j].res,
+                                  CONTACT_BASE[j].t_end,
+                                  CONTACT_BASE[j].set,
+                                  CONTACT_BASE[j].tag};
     return 3;
   }
   if (i >= nfree + nchan) {
-    *rs = (struct vsph_report_runspec){
+    *rs = (struct vsph_jobs_spec){
         "cavity", CAVITY_BASE[i - nfree - nchan], 16, 1.0, BASE_TVF, "base"};
     return 2;
   }
   if (i >= nfree) {
     const size_t c = (i - nfree) / VSPH_VISCOUS_FORM_COUNT;
     const int f = (int)((i - nfree) % VSPH_VISCOUS_FORM_COUNT);
-    *rs = (struct vsph_report_runspec){CHANNEL_BASE[c].scene,
-                                       vsph_viscous_name(f),
-                                       CHANNEL_BASE[c].res,
-                                       CHANNEL_BASE[c].t_end,
-                                       BASE_BASA,
-                                       "base"};
+    *rs = (struct vsph_jobs_spec){CHANNEL_BASE[c].scene,
+                                  vsph_viscous_name(f),
+                                  CHANNEL_BASE[c].res,
+                                  CHANNEL_BASE[c].t_end,
+                                  BASE_BASA,
+                                  "base"};
     return 1;
   }
   const int sc = (int)(i / VSPH_VISCOUS_PAPER_COUNT);
   const int f = (int)(i % VSPH_VISCOUS_PAPER_COUNT);
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 1);
-  *rs = (struct vsph_report_runspec){
+  *rs = (struct vsph_jobs_spec){
       L->scene, vsph_viscous_name(f), L->res[0], L->t_end, NULL, NULL};
   return 0;
 }
@@ -515,9 +444,9 @@ static int baseline_spec(const struct vsph_report *R, size_t i,
 int vsph_report_runs_plan_baseline(struct vsph_report *R) {
   int st = VSPH_OK;
   for (size_t i = 0; i < vsph_report_runs_baseline_count() && !st; i++) {
-    struct vsph_report_runspec rs;
+    struct vsph_jobs_spec rs;
     baseline_spec(R, i, &rs);
-    st = vsph_report_jobs_plan_run(R, &rs);
+    st = vsph_jobs_plan_run(&R->jobs, &rs);
   }
   return st;
 }
@@ -526,11 +455,11 @@ int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
                               struct vsph_report_baseline *b) {
   if (i >= vsph_report_runs_baseline_count())
     VSPH_FAIL(VSPH_EINVAL, "no baseline row %zu", i);
-  struct vsph_report_runspec rs;
+  struct vsph_jobs_spec rs;
   const int kind = baseline_spec(R, i, &rs);
   if (kind == 1 || kind == 2) /* channels: to the series; cavity: itself */
     return velocity_row(R, &rs, kind == 1, b);
-  struct vsph_report_run r;
+  struct vsph_jobs_run r;
   const int st = vsph_report_runs_get(R, &rs, &r);
   if (st) return st;
   snprintf(b->scene, sizeof b->scene, "%s", rs.scene);

@@ -24,7 +24,7 @@
 /* Per-run table for the figures: t, Ek, Eref, dEk/dt, dEk_ref, relative
  * error, |residual|, |P_visc|. */
 static int write_derived(struct vsph_report *R, const char *name,
-                         const struct vsph_report_run *r,
+                         const struct vsph_jobs_run *r,
                          const struct vsph_report_richardson *rr) {
   FILE *f = vsph_csv_open(
       R->dir, name,
@@ -90,7 +90,7 @@ static int vortex_profile(struct vsph_report *R, const char *snap,
 /* The vortex patch's u_theta(r) at its snapshot times against the Bessel
  * series, for formulation f: a figure whose Markdown goes to figs. */
 static int vortex_profiles(struct vsph_report *R, FILE *figs, int f,
-                           const struct vsph_report_run *run, size_t res) {
+                           const struct vsph_jobs_run *run, size_t res) {
   struct vsph_scene scene;
   int st = vsph_scene_init(&scene, &vsph_vortex_patch_type, NULL);
   if (st) return st;
@@ -109,8 +109,10 @@ static int vortex_profiles(struct vsph_report *R, FILE *figs, int f,
   vsph_plot_init(&pl, R->dir, pname, title, "radius r (m)",
                  "azimuthal velocity u_θ (m/s)");
   for (int k = 0; k < NSNAP && !st; k++) {
-    char snap[700], file[96], tp[48], ts_[48], sp[48], ss[48];
-    snprintf(snap, sizeof snap, "%s/snap_%04d.vtp", run->dir, k);
+    char snap[700], name[32], file[96], tp[48], ts_[48], sp[48], ss[48];
+    snprintf(name, sizeof name, "snap_%04d.vtp", k);
+    if ((st = vsph_jobs_file(&R->jobs, run->dir, name, snap, sizeof snap)))
+      break;
     snprintf(file, sizeof file, "profile_%s_%d.csv", form, k);
     double ts = 0.0;
     st = vortex_profile(R, snap, file, res / 2, ref, &ts);
@@ -159,36 +161,23 @@ static int particles_csv(struct vsph_report *R, const char *snap,
   return vsph_csv_close(f, R->dir, out);
 }
 
-/* The last snapshot of a run folder (the end, or the stop of an unstable
- * run), as its index, or -1. */
-static int last_snapshot(const char *dir) {
-  int last = -1;
-  for (int k = 0; k < 10000; k++) {
-    char path[700];
-    snprintf(path, sizeof path, "%s/snap_%04d.vtp", dir, k);
-    FILE *f = fopen(path, "r");
-    if (!f) break;
-    fclose(f);
-    last = k;
-  }
-  return last;
-}
-
 /* Particle pictures of a scene (paper Figs. 2, 3, 6): the initial state
  * and each formulation's last state, coloured by pressure and by
  * vorticity. */
 static int pictures(struct vsph_report *R, int sc, FILE *md,
-                    const struct vsph_report_run run[NFORM]) {
+                    const struct vsph_jobs_run run[NFORM]) {
   const char *scn = vsph_report_runs_ladder(R, sc, 0)->scene;
   struct vsph_plot_panel pn[NFORM + 1];
   double box[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
   int st = VSPH_OK;
   for (int k = 0; k <= NFORM && !st; k++) {
     const int f = k ? k - 1 : 0;
-    const int idx = k ? last_snapshot(run[f].dir) : 0;
+    const int idx = k ? vsph_jobs_last_snapshot(&R->jobs, run[f].dir) : 0;
     if (idx < 0) VSPH_FAIL(VSPH_EIO, "%s holds no snapshot", run[f].dir);
-    char snap[700];
-    snprintf(snap, sizeof snap, "%s/snap_%04d.vtp", run[f].dir, idx);
+    char snap[700], name[32];
+    snprintf(name, sizeof name, "snap_%04d.vtp", idx);
+    if ((st = vsph_jobs_file(&R->jobs, run[f].dir, name, snap, sizeof snap)))
+      break;
     snprintf(pn[k].file, sizeof pn[k].file, "particles_%s_%s.csv", scn,
              k ? vsph_viscous_name(f) : "initial");
     double t = 0.0;
@@ -309,12 +298,12 @@ static int scene(struct vsph_report *R, int sc) {
   size_t figlen = 0;
   FILE *figs = open_memstream(&figbuf, &figlen); /* after the table */
   if (!figs) VSPH_FAIL(VSPH_ENOMEM, "cannot buffer the figures");
-  struct vsph_report_run runs[NFORM];
+  struct vsph_jobs_run runs[NFORM];
   memset(runs, 0, sizeof runs);
   for (int f = 0; f < NFORM && !st; f++) {
-    struct vsph_report_runspec rs = {
+    struct vsph_jobs_spec rs = {
         L->scene, vsph_viscous_name(f), res, L->t_end, NULL, NULL};
-    struct vsph_report_run r;
+    struct vsph_jobs_run r;
     if ((st = vsph_report_runs_get(R, &rs, &r))) break;
     snprintf(runs[f].dir, sizeof runs[f].dir, "%s", r.dir);
     runs[f].ok = r.ok;
@@ -357,14 +346,14 @@ static int scene(struct vsph_report *R, int sc) {
  * outside it): the energy budget at eps = 0.005 and 0.01 beside 0.05, at
  * the ladder's middle resolution. */
 static void eps_specs(const struct vsph_report *R,
-                      struct vsph_report_runspec specs[3 * NFORM]) {
+                      struct vsph_jobs_spec specs[3 * NFORM]) {
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 2, 0);
   static const char *const extra[3][2] = {
       {"Scene:eps=0.005", NULL}, {"Scene:eps=0.01", NULL}, {NULL, NULL}};
   static const char *const tag[3] = {"eps0.005", "eps0.01", NULL};
   for (int e = 0; e < 3; e++)
     for (int f = 0; f < NFORM; f++) {
-      const struct vsph_report_runspec s = {
+      const struct vsph_jobs_spec s = {
           L->scene, vsph_viscous_name(f),    L->res[1],
           L->t_end, e < 2 ? extra[e] : NULL, tag[e]};
       specs[e * NFORM + f] = s;
@@ -374,10 +363,10 @@ static void eps_specs(const struct vsph_report *R,
 int vsph_report_scenes_plan(struct vsph_report *R) {
   int st = vsph_report_runs_plan_ladders(R, 0);
   if (vsph_report_scene_on(R, 2)) {
-    struct vsph_report_runspec specs[3 * NFORM];
+    struct vsph_jobs_spec specs[3 * NFORM];
     eps_specs(R, specs);
     for (int k = 0; k < 3 * NFORM && !st; k++)
-      st = vsph_report_jobs_plan_run(R, &specs[k]);
+      st = vsph_jobs_plan_run(&R->jobs, &specs[k]);
   }
   return st;
 }
@@ -385,7 +374,7 @@ int vsph_report_scenes_plan(struct vsph_report *R) {
 static int wave_eps(struct vsph_report *R) {
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 2, 0);
   static const char *const eps[3] = {"0.005", "0.01", "0.05"};
-  struct vsph_report_runspec specs[3 * NFORM];
+  struct vsph_jobs_spec specs[3 * NFORM];
   eps_specs(R, specs);
   int st = VSPH_OK;
   vsph_text_set(&R->tv, "res", "%zu", L->res[1]);
@@ -394,7 +383,7 @@ static int wave_eps(struct vsph_report *R) {
   for (int e = 0; e < 3 && !st; e++) {
     fprintf(R->md, "| %s |", eps[e]);
     for (int f = 0; f < NFORM && !st; f++) {
-      struct vsph_report_run r;
+      struct vsph_jobs_run r;
       if ((st = vsph_report_runs_get(R, &specs[e * NFORM + f], &r))) break;
       const double loss = vsph_report_runs_loss_ratio(&r, r.nrow - 1);
       const double visc = vsph_report_runs_visc_loss_ratio(&r, r.nrow - 1);

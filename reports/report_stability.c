@@ -16,7 +16,7 @@
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 
 /* One cell of a stability table: "stable" or "unstable t = x (kind)". */
-static void verdict(char *buf, size_t n, const struct vsph_report_run *r) {
+static void verdict(char *buf, size_t n, const struct vsph_jobs_run *r) {
   if (r->ok) {
     snprintf(buf, n, "stable");
     return;
@@ -55,14 +55,14 @@ struct verdicts {
 
 /* The run of sweep @p sw at value @p v and formulation @p f: its setting
  * and tag in @p set and @p tag. */
-static struct vsph_report_runspec sweep_spec(const struct sweep *sw, size_t v,
-                                             int f, char set[128], char tag[48],
-                                             const char *extra[2]) {
+static struct vsph_jobs_spec sweep_spec(const struct sweep *sw, size_t v, int f,
+                                        char set[128], char tag[48],
+                                        const char *extra[2]) {
   snprintf(set, 128, "%s=%.10g", sw->key, sw->vals[v]);
   snprintf(tag, 48, "%s%zu", sw->tag, v);
   extra[0] = set;
   extra[1] = NULL;
-  return (struct vsph_report_runspec){
+  return (struct vsph_jobs_spec){
       sw->scene, vsph_viscous_name(f), sw->res, sw->t_end, extra, tag};
 }
 
@@ -84,9 +84,8 @@ static int sweep(struct vsph_report *R, const struct sweep *sw,
     for (int f = 0; f < NFORM && !st; f++) {
       char set[128], tag[48];
       const char *extra[2];
-      const struct vsph_report_runspec rs =
-          sweep_spec(sw, v, f, set, tag, extra);
-      struct vsph_report_run r;
+      const struct vsph_jobs_spec rs = sweep_spec(sw, v, f, set, tag, extra);
+      struct vsph_jobs_run r;
       if ((st = vsph_report_runs_get(R, &rs, &r))) break;
       char cell[160];
       verdict(cell, sizeof cell, &r);
@@ -185,9 +184,9 @@ static int square_ladder(struct vsph_report *R) {
   for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
     fprintf(R->md, "| %s | L/dx = %zu |", L->scene, L->res[k]);
     for (int f = 0; f < NFORM && !st; f++) {
-      struct vsph_report_runspec rs = {
+      struct vsph_jobs_spec rs = {
           L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
-      struct vsph_report_run r;
+      struct vsph_jobs_run r;
       if ((st = vsph_report_runs_get(R, &rs, &r))) break;
       char cell[160];
       verdict(cell, sizeof cell, &r);
@@ -256,9 +255,9 @@ int vsph_report_stability_plan(struct vsph_report *R) {
       for (int f = 0; f < NFORM && !st; f++) {
         char set[128], tag[48];
         const char *extra[2];
-        const struct vsph_report_runspec rs =
+        const struct vsph_jobs_spec rs =
             sweep_spec(&sws[k], v, f, set, tag, extra);
-        st = vsph_report_jobs_plan_run(R, &rs);
+        st = vsph_jobs_plan_run(&R->jobs, &rs);
       }
   /* PVWF's pairing: the stretching square's ladder and reference */
   if (!st) st = vsph_report_runs_plan_scene(R, 1);

@@ -226,6 +226,16 @@ int vsph_folder_claim(struct vsph_folder *f, const char *dir,
   struct stat sb;
   if (stat(dir, &sb) != 0) {
     f->fresh = 2;
+    /* the first folder of the path that is absent: the claim makes it */
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", dir);
+    f->made_from = strlen(buf);
+    for (size_t k = strlen(buf); k > 1; k--)
+      if (buf[k - 1] == '/' && k - 1 > 0) {
+        buf[k - 1] = '\0';
+        if (stat(buf, &sb) == 0) break;
+        f->made_from = k - 1;
+      }
   } else {
     char mk[4200];
     snprintf(mk, sizeof mk, "%s/%s", dir, VSPH_FOLDER_MARKER);
@@ -233,7 +243,8 @@ int vsph_folder_claim(struct vsph_folder *f, const char *dir,
   }
   if ((st = vsph_files_mkdir(dir))) return st;
   if ((st = lock(f))) {
-    if (f->fresh == 2) rmdir(dir);
+    f->fd = -1;
+    vsph_folder_abandon(f);
     return st;
   }
   /* again under the lock: another writer may have been quicker */
@@ -264,7 +275,15 @@ void vsph_folder_abandon(struct vsph_folder *f) {
     remove(path); /* while locked: no other writer is between */
   }
   vsph_folder_release(f);
-  if (f->fresh == 2) rmdir(f->dir); /* only if empty */
+  if (f->fresh == 2) { /* each folder the claim made, leaf first, if empty */
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", f->dir);
+    for (size_t k = strlen(buf); k >= f->made_from && k > 0; k--)
+      if (buf[k] == '/' || buf[k] == '\0') {
+        buf[k] = '\0';
+        if (rmdir(buf) != 0) break;
+      }
+  }
   f->fresh = 0;
 }
 

@@ -53,7 +53,9 @@ struct vsph_folder {
   char dir[4096];                      /*!< the folder */
   const struct vsph_folder_kind *kind; /*!< its kind */
   int fd;                              /*!< the lock file; -1: none */
-  int fresh; /*!< 1: it was absent or empty when claimed; 2: absent */
+  int fresh;        /*!< 1: it was absent or empty when claimed; 2: absent */
+  size_t made_from; /*!< fresh 2: length of the first folder of the path
+                         that was absent (made by the claim) */
 };
 
 /** @brief Judge @p dir for a writer of kind @p kind without touching it:

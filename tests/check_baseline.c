@@ -27,7 +27,7 @@ START_TEST(test_baseline) {
   ck_assert_ptr_nonnull(mkdtemp(dir));
   struct vsph_report R;
   memset(&R, 0, sizeof R);
-  R.dir = dir;
+  R.dir = R.jobs.dir = dir;
   size_t i = 0;
   while (fgets(line, sizeof line, f)) {
     char scene[32], visc[16];
@@ -78,7 +78,7 @@ START_TEST(test_loss_ratio) {
     Emr[k] = 1.07 * E0 * exp(-g * t[k]); /* another E(0) */
   }
   Ek[0] = E0, Ep[0] = -4.9; /* all kinetic at t = 0 */
-  struct vsph_report_run r = {
+  struct vsph_jobs_run r = {
       .nrow = N, .t = t, .Ek = Ek, .Ep = Ep, .Ec = Ec, .Emr = Emr};
   for (size_t k = 1; k < N; k++)
     ck_assert_double_eq_tol(vsph_report_runs_loss_ratio(&r, k), 1.0, 1e-12);

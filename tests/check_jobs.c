@@ -27,7 +27,7 @@ static const char *bin(void) {
 /* Two tiny runs: the vortex patch and the stretching square, a few dozen
  * steps each. */
 static const char *const TINY[] = {"Scene:nu=0.01", NULL};
-static const struct vsph_report_runspec SPEC[2] = {
+static const struct vsph_jobs_spec SPEC[2] = {
     {"vortex-patch", "mgf", 10, 1.0, TINY, "tiny"},
     {"stretching-square", "pvwf", 10, 0.05, NULL, "tiny"}};
 
@@ -77,12 +77,12 @@ START_TEST(test_command_is_the_run) {
   const char *dir = tmpdir();
   struct vsph_report R;
   memset(&R, 0, sizeof R);
-  R.dir = dir;
-  struct vsph_report_job j;
-  ck_assert_int_eq(vsph_report_jobs_run(&R, &SPEC[0], &j), 0);
+  R.dir = R.jobs.dir = dir;
+  struct vsph_jobs_job j;
+  ck_assert_int_eq(vsph_jobs_run(&R.jobs, &SPEC[0], &j), 0);
   ck_assert_int_eq(j.cached, 0);
   /* in this process (no plan: the run is made when it is read) */
-  ck_assert_int_eq(vsph_report_jobs_ready(&R, &j), 0);
+  ck_assert_int_eq(vsph_jobs_ready(&R.jobs, &j), 0);
   char a[700], b[700], ka[4096], kb[4096];
   snprintf(a, sizeof a, "%s/energy.csv", j.dir);
   char *ea = vsph_files_slurp(a, NULL);
@@ -97,7 +97,7 @@ START_TEST(test_command_is_the_run) {
   snprintf(other, sizeof other, "%s/by-command", dir);
   snprintf(j.dir, sizeof j.dir, "%s", other);
   char cmd[8192];
-  vsph_report_jobs_command(&j, bin(), 2, cmd, sizeof cmd);
+  vsph_jobs_command(&j, bin(), 2, cmd, sizeof cmd);
   ck_assert_ptr_nonnull(strstr(cmd, " run vortex-patch --out "));
   ck_assert_int_eq(system(cmd), 0);
   snprintf(b, sizeof b, "%s/energy.csv", other);
@@ -122,7 +122,7 @@ START_TEST(test_command_is_the_run) {
             s0.st_mtim.tv_nsec == s1.st_mtim.tv_nsec);
   free(ea);
   free(eb);
-  vsph_report_jobs_free(&j);
+  vsph_jobs_free(&j);
   rmrf(dir);
 }
 END_TEST
@@ -135,59 +135,56 @@ START_TEST(test_pool) {
   const char *dir = tmpdir();
   struct vsph_report R;
   memset(&R, 0, sizeof R);
-  R.dir = dir;
-  struct vsph_report_plan P;
-  memset(&P, 0, sizeof P);
-  R.plan = &P;
-  const struct vsph_report_runspec bad = {"vortex-patch", "meaf",   10, 1.0,
-                                          TINY,           "blocked"};
+  R.dir = R.jobs.dir = dir;
+  R.jobs.planned = 1;
+  const struct vsph_jobs_spec bad = {"vortex-patch", "meaf",   10, 1.0,
+                                     TINY,           "blocked"};
   for (int k = 0; k < 2; k++)
-    ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &SPEC[k]), 0);
-  ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &bad), 0);
-  ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &SPEC[0]),
-                   0); /* listed once */
-  ck_assert_uint_eq(P.n, 3);
+    ck_assert_int_eq(vsph_jobs_plan_run(&R.jobs, &SPEC[k]), 0);
+  ck_assert_int_eq(vsph_jobs_plan_run(&R.jobs, &bad), 0);
+  ck_assert_int_eq(vsph_jobs_plan_run(&R.jobs, &SPEC[0]), 0); /* listed once */
+  ck_assert_uint_eq(R.jobs.n, 3);
   char path[700];
   snprintf(path, sizeof path, "%s/runs", dir);
   ck_assert_int_eq(vsph_files_mkdir(path), 0);
   ck_assert_int_eq(vsph_files_write(path, "vortex-patch-meaf-10-blocked", "x"),
                    0);
   /* the estimate orders them; the vortex patch's is the solver's */
-  ck_assert(P.job[0].particles > 300 && P.job[0].particles < 400);
-  ck_assert_int_eq(vsph_report_jobs_pool(&R, bin(), 2, 1), VSPH_ELIB);
+  ck_assert(R.jobs.job[0].particles > 300 && R.jobs.job[0].particles < 400);
+  ck_assert_int_eq(vsph_jobs_pool(&R.jobs, bin(), 2, 1), VSPH_ELIB);
   for (int k = 0; k < 2; k++) {
-    ck_assert_int_eq(P.job[k].cached, 1);
-    ck_assert_int_eq(vsph_report_jobs_ready(&R, &P.job[k]), 0);
+    ck_assert_int_eq(R.jobs.job[k].cached, 1);
+    ck_assert_int_eq(vsph_jobs_ready(&R.jobs, &R.jobs.job[k]), 0);
   }
-  ck_assert_int_eq(P.job[2].failed, 1);
-  ck_assert_int_eq(vsph_report_jobs_ready(&R, &P.job[2]), VSPH_EIO);
+  ck_assert_int_eq(R.jobs.job[2].failed, 1);
+  ck_assert_int_eq(vsph_jobs_ready(&R.jobs, &R.jobs.job[2]), VSPH_EIO);
   char failed[2048];
   snprintf(path, sizeof path, "%s/runs/failed.txt", dir);
   vsph_test_slurp(path, failed, sizeof failed);
   ck_assert_ptr_nonnull(strstr(failed, "vortex-patch-meaf-10-blocked\t2\t"));
   ck_assert_ptr_null(strstr(failed, "tiny"));
   /* a run not in the plan is a bug the read names */
-  const struct vsph_report_runspec stray = {"vortex-patch", "pvwf", 10, 1.0,
-                                            TINY,           "tiny"};
-  struct vsph_report_job j;
-  ck_assert_int_eq(vsph_report_jobs_run(&R, &stray, &j), 0);
-  ck_assert_int_eq(vsph_report_jobs_ready(&R, &j), VSPH_ELIB);
-  vsph_report_jobs_free(&j);
+  const struct vsph_jobs_spec stray = {"vortex-patch", "pvwf", 10, 1.0,
+                                       TINY,           "tiny"};
+  struct vsph_jobs_job j;
+  ck_assert_int_eq(vsph_jobs_run(&R.jobs, &stray, &j), 0);
+  ck_assert_int_eq(vsph_jobs_ready(&R.jobs, &j), VSPH_ELIB);
+  vsph_jobs_free(&j);
   /* half-written: its key gone, its table cut; the other one untouched */
   char e0[700], keep[700];
-  snprintf(e0, sizeof e0, "%s/energy.csv", P.job[0].dir);
+  snprintf(e0, sizeof e0, "%s/energy.csv", R.jobs.job[0].dir);
   char *before = vsph_files_slurp(e0, NULL);
   ck_assert_ptr_nonnull(before);
-  snprintf(path, sizeof path, "%s/key.txt", P.job[0].dir);
+  snprintf(path, sizeof path, "%s/key.txt", R.jobs.job[0].dir);
   ck_assert_int_eq(remove(path), 0);
   ck_assert_int_eq(truncate(e0, 40), 0);
-  snprintf(keep, sizeof keep, "%s/run.json", P.job[1].dir);
+  snprintf(keep, sizeof keep, "%s/run.json", R.jobs.job[1].dir);
   struct stat s0, s1;
   ck_assert_int_eq(stat(keep, &s0), 0);
   snprintf(path, sizeof path, "%s/runs/vortex-patch-meaf-10-blocked", dir);
   ck_assert_int_eq(remove(path), 0); /* mended: it runs now */
-  ck_assert_int_eq(vsph_report_jobs_pool(&R, bin(), 2, 1), VSPH_OK);
-  for (int k = 0; k < 3; k++) ck_assert_int_eq(P.job[k].cached, 1);
+  ck_assert_int_eq(vsph_jobs_pool(&R.jobs, bin(), 2, 1), VSPH_OK);
+  for (int k = 0; k < 3; k++) ck_assert_int_eq(R.jobs.job[k].cached, 1);
   char *after = vsph_files_slurp(e0, NULL);
   ck_assert_str_eq(before, after);
   ck_assert_int_eq(stat(keep, &s1), 0);
@@ -199,7 +196,7 @@ START_TEST(test_pool) {
   char *table = NULL;
   size_t tlen = 0;
   FILE *f = open_memstream(&table, &tlen);
-  ck_assert_int_eq(vsph_report_jobs_plan_print(&R, "vsph", f), 0);
+  ck_assert_int_eq(vsph_jobs_plan_print(&R.jobs, "vsph", f), 0);
   fclose(f);
   size_t cached = 0;
   for (const char *s = table; (s = strstr(s, "\ncached\t")); s++) cached++;
@@ -209,8 +206,7 @@ START_TEST(test_pool) {
   free(table);
   free(before);
   free(after);
-  for (size_t k = 0; k < P.n; k++) vsph_report_jobs_free(&P.job[k]);
-  free(P.job);
+  vsph_jobs_plan_free(&R.jobs);
   rmrf(dir);
 }
 END_TEST
@@ -220,29 +216,26 @@ END_TEST
 START_TEST(test_estimate_neighbours) {
   struct vsph_report R;
   memset(&R, 0, sizeof R);
-  R.dir = "/tmp/vsph_jobs_never";
-  struct vsph_report_plan P;
-  memset(&P, 0, sizeof P);
-  R.plan = &P;
-  ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &SPEC[0]), 0); /* mgf */
-  ck_assert_int_eq(vsph_report_jobs_plan_run(&R, &SPEC[1]), 0); /* pvwf */
+  R.dir = R.jobs.dir = "/tmp/vsph_jobs_never";
+  R.jobs.planned = 1;
+  ck_assert_int_eq(vsph_jobs_plan_run(&R.jobs, &SPEC[0]), 0); /* mgf */
+  ck_assert_int_eq(vsph_jobs_plan_run(&R.jobs, &SPEC[1]), 0); /* pvwf */
   static const char set[][96] = {
       "Solver:scheme=contact", "Solver:kernel=wendland2", "Solver:alpha=0.5",
       "Solver:res=80",         "Scene:Ly=30e-9",          "Scene:Lz=30e-9"};
-  struct vsph_report_job j;
-  ck_assert_int_eq(vsph_report_jobs_shear(&R, "n", set, 6, 1, &j), 0);
-  ck_assert_int_eq(vsph_report_jobs_plan_add(&R, &j), 0);
-  ck_assert_uint_eq(P.n, 3);
+  struct vsph_jobs_job j;
+  ck_assert_int_eq(vsph_jobs_shear(&R.jobs, "n", set, 6, 1, &j), 0);
+  ck_assert_int_eq(vsph_jobs_plan_add(&R.jobs, &j), 0);
+  ck_assert_uint_eq(R.jobs.n, 3);
   struct vsph_run_props rp;
   ck_assert_int_eq(vsph_run_props_init(&rp, NULL), 0); /* the defaults */
   const double r2 = rp.ktype->kappa * rp.hdx;          /* reach / dx */
   /* 2-D: pi r^2; PVWF differentiates its first pass: two supports */
-  ck_assert_double_eq_tol(P.job[0].neighbours, M_PI * r2 * r2, 1e-12);
-  ck_assert_double_eq_tol(P.job[1].neighbours, 2 * M_PI * r2 * r2, 1e-12);
+  ck_assert_double_eq_tol(R.jobs.job[0].neighbours, M_PI * r2 * r2, 1e-12);
+  ck_assert_double_eq_tol(R.jobs.job[1].neighbours, 2 * M_PI * r2 * r2, 1e-12);
   /* 3-D, Wendland C2 (kappa = 2) at h = 2 alpha dx = dx: 4 pi 2^3 / 3 */
-  ck_assert_double_eq_tol(P.job[2].neighbours, 4 * M_PI * 8 / 3, 1e-12);
-  for (size_t k = 0; k < P.n; k++) vsph_report_jobs_free(&P.job[k]);
-  free(P.job);
+  ck_assert_double_eq_tol(R.jobs.job[2].neighbours, 4 * M_PI * 8 / 3, 1e-12);
+  vsph_jobs_plan_free(&R.jobs);
 }
 END_TEST
 

@@ -103,32 +103,32 @@ END_TEST
  * unit; B has one, 4 s per unit; C none: all finished runs' 12 s over
  * 7 units. */
 START_TEST(test_time_left) {
-  struct vsph_report_eta r[] = {
-      {4.0, 5.0, 1.0, VSPH_REPORT_ETA_DONE, "A"},
-      {2.0, 3.0, 2.0, VSPH_REPORT_ETA_DONE, "A"},
-      {1.0, 4.0, 3.0, VSPH_REPORT_ETA_DONE, "B"},
-      {3.0, 1.0, 0.0, VSPH_REPORT_ETA_RUNNING, "A"}, /* 1 + 3 - 1 = 3 s */
-      {2.0, 0.0, 0.0, VSPH_REPORT_ETA_WAITING, "C"}, /* 2 x 12/7 s */
-      {1.0, 0.0, 0.0, VSPH_REPORT_ETA_WAITING, "A"}, /* 1 + 1 = 2 s */
-      {0.5, 0.0, 0.0, VSPH_REPORT_ETA_WAITING, "B"}, /* 0.5 x 4 = 2 s */
-      {9.0, 0.0, 4.0, VSPH_REPORT_ETA_DONE, "C"},    /* failed: cost 0 */
+  struct vsph_jobs_eta r[] = {
+      {4.0, 5.0, 1.0, VSPH_JOBS_ETA_DONE, "A"},
+      {2.0, 3.0, 2.0, VSPH_JOBS_ETA_DONE, "A"},
+      {1.0, 4.0, 3.0, VSPH_JOBS_ETA_DONE, "B"},
+      {3.0, 1.0, 0.0, VSPH_JOBS_ETA_RUNNING, "A"}, /* 1 + 3 - 1 = 3 s */
+      {2.0, 0.0, 0.0, VSPH_JOBS_ETA_WAITING, "C"}, /* 2 x 12/7 s */
+      {1.0, 0.0, 0.0, VSPH_JOBS_ETA_WAITING, "A"}, /* 1 + 1 = 2 s */
+      {0.5, 0.0, 0.0, VSPH_JOBS_ETA_WAITING, "B"}, /* 0.5 x 4 = 2 s */
+      {9.0, 0.0, 4.0, VSPH_JOBS_ETA_DONE, "C"},    /* failed: cost 0 */
   };
   r[7].cost = 0.0;
   /* two lanes: the running run holds one (3 s), C the other (24/7 s),
    * A the first (5 s), B the second (24/7 + 2 s) */
-  ck_assert_double_eq_tol(vsph_report_jobs_eta(r, 8, 2), 38.0 / 7, 1e-12);
-  ck_assert_double_eq_tol(vsph_report_jobs_eta(r, 8, 1), 73.0 / 7, 1e-12);
+  ck_assert_double_eq_tol(vsph_jobs_eta(r, 8, 2), 38.0 / 7, 1e-12);
+  ck_assert_double_eq_tol(vsph_jobs_eta(r, 8, 1), 73.0 / 7, 1e-12);
   /* A's line with a negative fixed part (9 s at 4 units: 3 s per unit,
    * -3 s) is not used: A's last rate, 1.5 s per unit, is; all runs' rate
    * is 16/7: 1.5 x 3 - 1 + 32/7 + 1.5 + 2 s on one lane */
   r[0].wall = 9.0;
-  ck_assert_double_eq_tol(vsph_report_jobs_eta(r, 8, 1), 81.0 / 7, 1e-12);
+  ck_assert_double_eq_tol(vsph_jobs_eta(r, 8, 1), 81.0 / 7, 1e-12);
   /* a running run past its estimate has nothing left, not less */
   r[3].wall = 9.0;
-  ck_assert_double_eq_tol(vsph_report_jobs_eta(r, 8, 1), 32.0 / 7 + 3.5, 1e-12);
+  ck_assert_double_eq_tol(vsph_jobs_eta(r, 8, 1), 32.0 / 7 + 3.5, 1e-12);
   /* nothing finished: no rate measured, no estimate */
-  r[0].state = r[1].state = r[2].state = VSPH_REPORT_ETA_WAITING;
-  ck_assert(vsph_report_jobs_eta(r, 8, 2) < 0.0);
+  r[0].state = r[1].state = r[2].state = VSPH_JOBS_ETA_WAITING;
+  ck_assert(vsph_jobs_eta(r, 8, 2) < 0.0);
 }
 END_TEST
 

@@ -7,6 +7,9 @@
  * with key.txt (runs/rundir): the cache, and the proof that the run ended,
  * whichever way ran it. */
 #define _XOPEN_SOURCE 700 /* realpath */
+#include "jobs.h"
+
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -27,21 +30,21 @@
 #include "../common/params.h"
 #include "../common/shell.h"
 #include "../common/status.h"
+#include "../io/csv.h"
 #include "../io/files.h"
 #include "../io/json.h"
-#include "../runs/rundir.h"
-#include "../runs/shear.h"
 #include "../solver/run.h"
 #include "../solver/scene.h"
-#include "report_internal.h"
+#include "folder.h"
+#include "rundir.h"
+#include "shear.h"
 
 extern char **environ; /* POSIX: the application declares it */
 
 /* ----------------------------------------------------------------- jobs */
 
 /* The parameters of @p j's settings, as given. */
-static int params_of(const struct vsph_report_job *j,
-                     struct vsph_params **out) {
+static int params_of(const struct vsph_jobs_job *j, struct vsph_params **out) {
   struct vsph_params *prm = vsph_params_alloc();
   if (!prm) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate parameters");
   int st = VSPH_OK;
@@ -56,12 +59,12 @@ static int params_of(const struct vsph_report_job *j,
 }
 
 /* Its key (runs/rundir's, from the settings as given) and cache state. */
-static int finish_job(struct vsph_report_job *j) {
+static int finish_job(struct vsph_jobs_job *j) {
   struct vsph_params *prm;
   int st = params_of(j, &prm);
   if (st) return st;
   char what[64];
-  if (j->kind == VSPH_REPORT_JOB_RUN)
+  if (j->kind == VSPH_JOBS_RUN)
     snprintf(what, sizeof what, "scene %s", j->scene);
   else
     snprintf(what, sizeof what, "contact %zu", j->nprof);
@@ -72,18 +75,18 @@ static int finish_job(struct vsph_report_job *j) {
   return VSPH_OK;
 }
 
-void vsph_report_jobs_free(struct vsph_report_job *j) {
+void vsph_jobs_free(struct vsph_jobs_job *j) {
   free(j->key);
   j->key = NULL;
 }
 
-int vsph_report_jobs_run(const struct vsph_report *R,
-                         const struct vsph_report_runspec *rs,
-                         struct vsph_report_job *j) {
+int vsph_jobs_run(const struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
+                  struct vsph_jobs_job *j) {
+  if (!J->dir) VSPH_FAIL(VSPH_EINVAL, "the runs have no folder (a bug)");
   memset(j, 0, sizeof *j);
-  j->kind = VSPH_REPORT_JOB_RUN;
+  j->kind = VSPH_JOBS_RUN;
   snprintf(j->scene, sizeof j->scene, "%s", rs->scene);
-  snprintf(j->dir, sizeof j->dir, "%s/runs/%s-%s-%zu%s%s", R->dir, rs->scene,
+  snprintf(j->dir, sizeof j->dir, "%s/runs/%s-%s-%zu%s%s", J->dir, rs->scene,
            rs->visc, rs->res, rs->tag ? "-" : "", rs->tag ? rs->tag : "");
   size_t n = 0;
   /* "contact" names the scheme (contact SPH has no viscous form) */
@@ -97,9 +100,9 @@ int vsph_report_jobs_run(const struct vsph_report *R,
    * the particle pictures of section 5 read them */
   snprintf(j->set[n++], 128, "Solver:snapshots=%d", rs->tag ? 0 : 4);
   for (size_t k = 0; rs->extra && rs->extra[k]; k++) {
-    if (n == VSPH_REPORT_JOB_NSET)
+    if (n == VSPH_JOBS_NSET)
       VSPH_FAIL(VSPH_EINVAL, "%s: more than %d settings", j->dir,
-                VSPH_REPORT_JOB_NSET);
+                VSPH_JOBS_NSET);
     snprintf(j->set[n++], 128, "%s", rs->extra[k]);
   }
   j->nset = n;
@@ -111,16 +114,16 @@ int vsph_report_jobs_run(const struct vsph_report *R,
   return finish_job(j);
 }
 
-int vsph_report_jobs_shear(const struct vsph_report *R, const char *tag,
-                           const char (*set)[96], size_t n, size_t nprof,
-                           struct vsph_report_job *j) {
+int vsph_jobs_shear(const struct vsph_jobs *J, const char *tag,
+                    const char (*set)[96], size_t n, size_t nprof,
+                    struct vsph_jobs_job *j) {
+  if (!J->dir) VSPH_FAIL(VSPH_EINVAL, "the runs have no folder (a bug)");
   memset(j, 0, sizeof *j);
-  j->kind = VSPH_REPORT_JOB_SHEAR;
+  j->kind = VSPH_JOBS_SHEAR;
   snprintf(j->scene, sizeof j->scene, "shear");
-  snprintf(j->dir, sizeof j->dir, "%s/runs/contact-%s", R->dir, tag);
-  if (n > VSPH_REPORT_JOB_NSET)
-    VSPH_FAIL(VSPH_EINVAL, "%s: more than %d settings", j->dir,
-              VSPH_REPORT_JOB_NSET);
+  snprintf(j->dir, sizeof j->dir, "%s/runs/contact-%s", J->dir, tag);
+  if (n > VSPH_JOBS_NSET)
+    VSPH_FAIL(VSPH_EINVAL, "%s: more than %d settings", j->dir, VSPH_JOBS_NSET);
   for (size_t k = 0; k < n; k++) snprintf(j->set[k], 128, "%s", set[k]);
   j->nset = n;
   j->nprof = nprof;
@@ -130,7 +133,7 @@ int vsph_report_jobs_shear(const struct vsph_report *R, const char *tag,
 }
 
 /* The solver's estimate of @p j (particles, steps, memory). */
-static int estimate(struct vsph_report_job *j) {
+static int estimate(struct vsph_jobs_job *j) {
   struct vsph_params *prm;
   int st = params_of(j, &prm);
   if (st) return st;
@@ -154,21 +157,20 @@ static int estimate(struct vsph_report_job *j) {
 }
 
 /* Pair interactions over the run: particles x neighbours x steps. */
-static double cost_of(const struct vsph_report_job *j) {
+static double cost_of(const struct vsph_jobs_job *j) {
   return j->particles * j->neighbours * j->steps;
 }
 
-int vsph_report_jobs_plan_add(struct vsph_report *R,
-                              struct vsph_report_job *j) {
-  struct vsph_report_plan *P = R->plan;
+int vsph_jobs_plan_add(struct vsph_jobs *J, struct vsph_jobs_job *j) {
+  struct vsph_jobs *P = J;
   if (!P) {
-    vsph_report_jobs_free(j);
+    vsph_jobs_free(j);
     return VSPH_OK;
   }
   for (size_t k = 0; k < P->n; k++)
     if (!strcmp(P->job[k].dir, j->dir)) {
       const int same = !strcmp(P->job[k].key, j->key);
-      vsph_report_jobs_free(j);
+      vsph_jobs_free(j);
       if (same) return VSPH_OK;
       VSPH_FAIL(VSPH_ELIB,
                 "two runs of the report share the folder %s with different "
@@ -178,7 +180,7 @@ int vsph_report_jobs_plan_add(struct vsph_report *R,
   int st = estimate(j);
   if (!st && P->n == P->cap) {
     const size_t cap = P->cap ? 2 * P->cap : 64;
-    struct vsph_report_job *g = realloc(P->job, cap * sizeof *g);
+    struct vsph_jobs_job *g = realloc(P->job, cap * sizeof *g);
     if (!g) {
       st = VSPH_ENOMEM;
       vsph_status_report(st, __FILE__, __LINE__, "cannot grow the plan");
@@ -188,7 +190,7 @@ int vsph_report_jobs_plan_add(struct vsph_report *R,
     }
   }
   if (st) {
-    vsph_report_jobs_free(j);
+    vsph_jobs_free(j);
     return st;
   }
   P->job[P->n++] = *j; /* the plan owns the key now */
@@ -196,29 +198,27 @@ int vsph_report_jobs_plan_add(struct vsph_report *R,
   return VSPH_OK;
 }
 
-int vsph_report_jobs_plan_run(struct vsph_report *R,
-                              const struct vsph_report_runspec *rs) {
-  struct vsph_report_job j;
-  const int st = vsph_report_jobs_run(R, rs, &j);
+int vsph_jobs_plan_run(struct vsph_jobs *J, const struct vsph_jobs_spec *rs) {
+  struct vsph_jobs_job j;
+  const int st = vsph_jobs_run(J, rs, &j);
   if (st) {
-    vsph_report_jobs_free(&j);
+    vsph_jobs_free(&j);
     return st;
   }
-  return vsph_report_jobs_plan_add(R, &j);
+  return vsph_jobs_plan_add(J, &j);
 }
 
 /* Run @p j here: its folder ends with key.txt, or it failed. */
-static int execute(const struct vsph_report *R,
-                   const struct vsph_report_job *j) {
+static int execute(const struct vsph_jobs *J, const struct vsph_jobs_job *j) {
   struct vsph_params *prm;
   int st = params_of(j, &prm);
   if (st) return st;
   char command[4096];
-  vsph_report_jobs_command(j, "vsph", 0, command, sizeof command);
-  if (j->kind == VSPH_REPORT_JOB_RUN) {
+  vsph_jobs_command(j, "vsph", 0, command, sizeof command);
+  if (j->kind == VSPH_JOBS_RUN) {
     const struct vsph_rundir_opts opts = {.dir = j->dir,
                                           .progress = NULL,
-                                          .stop = R->stop,
+                                          .stop = J->stop,
                                           .command = command,
                                           .cache = 1};
     struct vsph_rundir_result res;
@@ -231,17 +231,16 @@ static int execute(const struct vsph_report *R,
   return st;
 }
 
-static const struct vsph_report_job *find(const struct vsph_report_plan *P,
-                                          const char *dir) {
+static const struct vsph_jobs_job *find(const struct vsph_jobs *P,
+                                        const char *dir) {
   for (size_t k = 0; k < P->n; k++)
     if (!strcmp(P->job[k].dir, dir)) return &P->job[k];
   return NULL;
 }
 
-int vsph_report_jobs_ready(const struct vsph_report *R,
-                           const struct vsph_report_job *j) {
-  if (!R->plan) return j->cached ? VSPH_OK : execute(R, j);
-  const struct vsph_report_job *p = find(R->plan, j->dir);
+int vsph_jobs_ready(const struct vsph_jobs *J, const struct vsph_jobs_job *j) {
+  if (!J->planned) return j->cached ? VSPH_OK : execute(J, j);
+  const struct vsph_jobs_job *p = find(J, j->dir);
   if (!p || strcmp(p->key, j->key))
     VSPH_FAIL(VSPH_ELIB,
               "the report reads %s, which no part's plan lists with these "
@@ -257,14 +256,14 @@ int vsph_report_jobs_ready(const struct vsph_report *R,
 
 /* ------------------------------------------------------------- commands */
 
-size_t vsph_report_jobs_argv(const struct vsph_report_job *j, const char *exe,
-                             size_t threads, char buf[2][24], const char **argv,
-                             size_t cap) {
+size_t vsph_jobs_argv(const struct vsph_jobs_job *j, const char *exe,
+                      size_t threads, char buf[2][24], const char **argv,
+                      size_t cap) {
   size_t n = 0;
 #define ARG(s) \
   if (n + 1 < cap) argv[n++] = (s)
   ARG(exe);
-  if (j->kind == VSPH_REPORT_JOB_RUN) {
+  if (j->kind == VSPH_JOBS_RUN) {
     ARG("run");
     ARG(j->scene);
   } else {
@@ -272,7 +271,7 @@ size_t vsph_report_jobs_argv(const struct vsph_report_job *j, const char *exe,
   }
   ARG("--out");
   ARG(j->dir);
-  if (j->kind == VSPH_REPORT_JOB_SHEAR) {
+  if (j->kind == VSPH_JOBS_SHEAR) {
     snprintf(buf[0], 24, "%zu", j->nprof);
     ARG("--profiles");
     ARG(buf[0]);
@@ -293,12 +292,12 @@ size_t vsph_report_jobs_argv(const struct vsph_report_job *j, const char *exe,
   return n;
 }
 
-void vsph_report_jobs_command(const struct vsph_report_job *j, const char *exe,
-                              size_t threads, char *out, size_t len) {
-  const char *argv[2 * VSPH_REPORT_JOB_NSET + 16];
+void vsph_jobs_command(const struct vsph_jobs_job *j, const char *exe,
+                       size_t threads, char *out, size_t len) {
+  const char *argv[2 * VSPH_JOBS_NSET + 16];
   char buf[2][24];
-  const size_t n = vsph_report_jobs_argv(j, exe, threads, buf, argv,
-                                         sizeof argv / sizeof argv[0]);
+  const size_t n =
+      vsph_jobs_argv(j, exe, threads, buf, argv, sizeof argv / sizeof argv[0]);
   size_t w = 0;
   if (len) out[0] = '\0';
   for (size_t k = 0; k < n && w + 1 < len; k++) {
@@ -315,9 +314,8 @@ static unsigned long long fingerprint(const char *s) {
   return h;
 }
 
-int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
-                                FILE *f) {
-  const struct vsph_report_plan *P = R->plan;
+int vsph_jobs_plan_print(const struct vsph_jobs *J, const char *exe, FILE *f) {
+  const struct vsph_jobs *P = J;
   size_t missing = 0;
   double cost = 0.0;
   for (size_t k = 0; k < P->n; k++)
@@ -331,7 +329,7 @@ int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
           "# key: FNV-1a 64 of the run's key.txt (version, source hash, "
           "settings); neighbours: within the kernel's reach (each pass); "
           "steps: at t = 0's time step; memory: the solver's bound\n",
-          VSPH_VERSION, R->dir, R->full ? "full" : "quick", P->n,
+          VSPH_VERSION, J->dir, J->full ? "full" : "quick", P->n,
           P->n - missing, missing, cost);
   fprintf(f,
           "status\tfolder\tkey\tparticles\tneighbours\tsteps\tmemory_mib\t"
@@ -340,9 +338,9 @@ int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
   if (!cmd) VSPH_FAIL(VSPH_ENOMEM, "cannot print the plan");
   for (int pass = 0; pass < 2; pass++)
     for (size_t k = 0; k < P->n; k++) {
-      const struct vsph_report_job *j = &P->job[k];
+      const struct vsph_jobs_job *j = &P->job[k];
       if (j->cached != pass) continue;
-      vsph_report_jobs_command(j, exe, 0, cmd, 8192);
+      vsph_jobs_command(j, exe, 0, cmd, 8192);
       fprintf(f, "%s\t%s\t%016llx\t%.0f\t%.1f\t%.0f\t%.1f\t%s\n",
               j->cached ? "cached" : "missing", j->dir, fingerprint(j->key),
               j->particles, j->neighbours, j->steps, j->bytes / 1048576.0, cmd);
@@ -355,11 +353,10 @@ int vsph_report_jobs_plan_print(const struct vsph_report *R, const char *exe,
 
 /* ------------------------------------------------------ the missing runs */
 
-double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
-                            size_t width) {
+double vsph_jobs_eta(const struct vsph_jobs_eta *r, size_t n, size_t width) {
   double cost_all = 0.0, wall_all = 0.0; /* every finished run */
   for (size_t k = 0; k < n; k++)
-    if (r[k].state == VSPH_REPORT_ETA_DONE && r[k].cost > 0.0) {
+    if (r[k].state == VSPH_JOBS_ETA_DONE && r[k].cost > 0.0) {
       cost_all += r[k].cost;
       wall_all += r[k].wall;
     }
@@ -368,10 +365,10 @@ double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
   double *lane = calloc(w, sizeof *lane); /* when each is free, from now */
   if (!lane) return -1.0;
   for (size_t k = 0; k < n; k++) {
-    if (r[k].state == VSPH_REPORT_ETA_DONE) continue;
+    if (r[k].state == VSPH_JOBS_ETA_DONE) continue;
     size_t last = n, prev = n; /* the family's last two finished runs */
     for (size_t i = 0; i < n; i++) {
-      if (r[i].state != VSPH_REPORT_ETA_DONE || r[i].cost <= 0.0 ||
+      if (r[i].state != VSPH_JOBS_ETA_DONE || r[i].cost <= 0.0 ||
           strcmp(r[i].family, r[k].family))
         continue;
       if (last == n || r[i].ended > r[last].ended) {
@@ -395,8 +392,7 @@ double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
       }
     }
     double need = fixed + rate * r[k].cost;
-    if (r[k].state == VSPH_REPORT_ETA_RUNNING)
-      need = fmax(need - r[k].wall, 0.0);
+    if (r[k].state == VSPH_JOBS_ETA_RUNNING) need = fmax(need - r[k].wall, 0.0);
     size_t first = 0; /* the lane free first takes it */
     for (size_t i = 1; i < w; i++)
       if (lane[i] < lane[first]) first = i;
@@ -412,10 +408,10 @@ double vsph_report_jobs_eta(const struct vsph_report_eta *r, size_t n,
  * steps it took (run.json, or the shear test's summary.csv), which a run
  * stopped early (a stability map's) or whose time step changed makes
  * differ from the plan's estimate; the estimate where neither is read. */
-static double cost_taken(const struct vsph_report_job *j) {
+static double cost_taken(const struct vsph_jobs_job *j) {
   char path[600];
   double steps = -1.0;
-  if (j->kind == VSPH_REPORT_JOB_RUN) {
+  if (j->kind == VSPH_JOBS_RUN) {
     snprintf(path, sizeof path, "%s/run.json", j->dir);
     cJSON *o = vsph_json_read(path);
     if (o) steps = vsph_json_get_number(o, "steps", -1.0);
@@ -430,12 +426,12 @@ static double cost_taken(const struct vsph_report_job *j) {
 
 /* The missing jobs of the plan, the costliest first. */
 static int by_cost(const void *a, const void *b) {
-  const double x = cost_of(*(const struct vsph_report_job *const *)a),
-               y = cost_of(*(const struct vsph_report_job *const *)b);
+  const double x = cost_of(*(const struct vsph_jobs_job *const *)a),
+               y = cost_of(*(const struct vsph_jobs_job *const *)b);
   return (x < y) - (x > y);
 }
-static size_t missing(struct vsph_report *R, struct vsph_report_job ***out) {
-  struct vsph_report_plan *P = R->plan;
+static size_t missing(struct vsph_jobs *J, struct vsph_jobs_job ***out) {
+  struct vsph_jobs *P = J;
   *out = malloc((P->n ? P->n : 1) * sizeof **out);
   if (!*out) return (size_t)-1;
   size_t m = 0;
@@ -450,9 +446,8 @@ static size_t missing(struct vsph_report *R, struct vsph_report_job ***out) {
 
 /* The runs' states for the estimate of the time left, in @p order's
  * order (the order they start), or NULL. */
-static struct vsph_report_eta *eta_start(struct vsph_report_job **order,
-                                         size_t m) {
-  struct vsph_report_eta *e = calloc(m ? m : 1, sizeof *e);
+static struct vsph_jobs_eta *eta_start(struct vsph_jobs_job **order, size_t m) {
+  struct vsph_jobs_eta *e = calloc(m ? m : 1, sizeof *e);
   for (size_t k = 0; e && k < m; k++) {
     e[k].cost = cost_of(order[k]);
     e[k].family = order[k]->family;
@@ -463,27 +458,27 @@ static struct vsph_report_eta *eta_start(struct vsph_report_job **order,
 /* ", about N s left" from the runs' states at @p now (running runs'
  * times so far from their start times @p t1), or "" while no run has
  * finished: a rate is measured, never assumed. */
-static void eta_text(struct vsph_report_eta *e, const double *t1, size_t m,
+static void eta_text(struct vsph_jobs_eta *e, const double *t1, size_t m,
                      size_t width, double now, char *buf, size_t len) {
   buf[0] = '\0';
   if (!e) return;
   for (size_t k = 0; k < m; k++)
-    if (e[k].state == VSPH_REPORT_ETA_RUNNING) e[k].wall = now - t1[k];
-  const double left = vsph_report_jobs_eta(e, m, width);
+    if (e[k].state == VSPH_JOBS_ETA_RUNNING) e[k].wall = now - t1[k];
+  const double left = vsph_jobs_eta(e, m, width);
   if (left >= 0.0) snprintf(buf, len, ", about %.0f s left", left);
 }
 
-int vsph_report_jobs_local(struct vsph_report *R, int width) {
-  struct vsph_report_job **order;
-  const size_t m = missing(R, &order);
+int vsph_jobs_local(struct vsph_jobs *J, int width) {
+  struct vsph_jobs_job **order;
+  const size_t m = missing(J, &order);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
-  struct vsph_report_eta *eta = eta_start(order, m);
+  struct vsph_jobs_eta *eta = eta_start(order, m);
   double *t1 = calloc(m ? m : 1, sizeof *t1);
   if (m)
     fprintf(stderr,
             "vsph report: %zu of the %zu runs are not in the cache; running "
             "them here, %d at a time\n",
-            m, R->plan->n, width);
+            m, J->n, width);
   const double t0 = omp_get_wtime();
   size_t started = 0, done = 0;
   int st = VSPH_OK;
@@ -494,13 +489,13 @@ int vsph_report_jobs_local(struct vsph_report *R, int width) {
   for (size_t k = 0; k < m; k++) {
     int failed;
     size_t me = 0;
-#pragma omp critical(vsph_report_jobs_local)
+#pragma omp critical(vsph_jobs_local)
     {
       failed = st;
       if (!failed) {
         me = ++started;
         if (t1) t1[k] = omp_get_wtime();
-        if (eta) eta[k].state = VSPH_REPORT_ETA_RUNNING;
+        if (eta) eta[k].state = VSPH_JOBS_ETA_RUNNING;
         fprintf(stderr, "  [%zu/%zu] %s: started (%.0f s elapsed)\n", me, m,
                 order[k]->label, omp_get_wtime() - t0);
       }
@@ -508,14 +503,14 @@ int vsph_report_jobs_local(struct vsph_report *R, int width) {
     if (failed) continue;
     omp_set_num_threads(1); /* this thread's nested regions: itself alone */
     const double t_start = omp_get_wtime();
-    const int s = execute(R, order[k]);
-#pragma omp critical(vsph_report_jobs_local)
+    const int s = execute(J, order[k]);
+#pragma omp critical(vsph_jobs_local)
     {
       if (s && !st) st = s;
       done++;
       const double now = omp_get_wtime();
       if (eta) { /* a failed run measures nothing */
-        eta[k].state = VSPH_REPORT_ETA_DONE;
+        eta[k].state = VSPH_JOBS_ETA_DONE;
         eta[k].ended = now - t0;
         eta[k].wall = s ? 0.0 : now - t_start;
         eta[k].cost = s ? 0.0 : cost_taken(order[k]);
@@ -534,29 +529,27 @@ int vsph_report_jobs_local(struct vsph_report *R, int width) {
   free(order);
   free(eta);
   free(t1);
-  for (size_t k = 0; k < R->plan->n; k++)
-    R->plan->job[k].cached =
-        vsph_rundir_key_matches(R->plan->job[k].dir, R->plan->job[k].key);
+  for (size_t k = 0; k < J->n; k++)
+    J->job[k].cached = vsph_rundir_key_matches(J->job[k].dir, J->job[k].key);
   return st;
 }
 
 /* ------------------------------------------------------ the child pool */
 
 /* runs/logs/NAME.log of a job: its folder's last component. */
-static void log_path(const struct vsph_report *R,
-                     const struct vsph_report_job *j, char *buf, size_t len) {
+static void log_path(const struct vsph_jobs *J, const struct vsph_jobs_job *j,
+                     char *buf, size_t len) {
   const char *base = strrchr(j->dir, '/');
-  snprintf(buf, len, "%s/runs/logs/%s.log", R->dir, base ? base + 1 : j->dir);
+  snprintf(buf, len, "%s/runs/logs/%s.log", J->dir, base ? base + 1 : j->dir);
 }
 
 /* Start @p j as a child of @p exe with its output in its log. */
-static pid_t spawn(const struct vsph_report *R, const struct vsph_report_job *j,
+static pid_t spawn(const struct vsph_jobs *J, const struct vsph_jobs_job *j,
                    const char *exe, size_t threads) {
-  const char *argv[2 * VSPH_REPORT_JOB_NSET + 16];
+  const char *argv[2 * VSPH_JOBS_NSET + 16];
   char buf[2][24], logf[700];
-  vsph_report_jobs_argv(j, exe, threads, buf, argv,
-                        sizeof argv / sizeof argv[0]);
-  log_path(R, j, logf, sizeof logf);
+  vsph_jobs_argv(j, exe, threads, buf, argv, sizeof argv / sizeof argv[0]);
+  log_path(J, j, logf, sizeof logf);
   const int fd = open(logf, O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (fd < 0) {
     vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot open %s: %s", logf,
@@ -585,9 +578,9 @@ static pid_t spawn(const struct vsph_report *R, const struct vsph_report_job *j,
 }
 
 /* "ok", or "unstable at t = T" from a run's run.json. */
-static void verdict(const struct vsph_report_job *j, char *buf, size_t len) {
+static void verdict(const struct vsph_jobs_job *j, char *buf, size_t len) {
   snprintf(buf, len, "ok");
-  if (j->kind != VSPH_REPORT_JOB_RUN) return;
+  if (j->kind != VSPH_JOBS_RUN) return;
   char path[600];
   snprintf(path, sizeof path, "%s/run.json", j->dir);
   cJSON *o = vsph_json_read(path);
@@ -601,8 +594,8 @@ static void verdict(const struct vsph_report_job *j, char *buf, size_t len) {
 
 /* runs/failed.txt: the runs that did not end, with their logs (removed
  * when none failed). */
-static int record_failed(const struct vsph_report *R,
-                         struct vsph_report_job **order, size_t m,
+static int record_failed(const struct vsph_jobs *J,
+                         struct vsph_jobs_job **order, size_t m,
                          const int *status) {
   char *text = NULL;
   size_t len = 0, nf = 0;
@@ -614,13 +607,13 @@ static int record_failed(const struct vsph_report *R,
   for (size_t k = 0; k < m; k++)
     if (order[k]->failed) {
       char logf[700];
-      log_path(R, order[k], logf, sizeof logf);
+      log_path(J, order[k], logf, sizeof logf);
       fprintf(f, "%s\t%d\t%s\n", order[k]->dir, status[k], logf);
       nf++;
     }
   fclose(f);
   char dir[600], path[700];
-  snprintf(dir, sizeof dir, "%s/runs", R->dir);
+  snprintf(dir, sizeof dir, "%s/runs", J->dir);
   snprintf(path, sizeof path, "%s/failed.txt", dir);
   int st = VSPH_OK;
   if (nf)
@@ -631,18 +624,18 @@ static int record_failed(const struct vsph_report *R,
   return st;
 }
 
-int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
-                          size_t threads) {
-  struct vsph_report_job **order;
-  const size_t m = missing(R, &order);
+int vsph_jobs_pool(struct vsph_jobs *J, const char *exe, size_t njobs,
+                   size_t threads) {
+  struct vsph_jobs_job **order;
+  const size_t m = missing(J, &order);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
   char logs[600];
-  snprintf(logs, sizeof logs, "%s/runs/logs", R->dir);
+  snprintf(logs, sizeof logs, "%s/runs/logs", J->dir);
   int st = vsph_files_mkdir(logs);
   pid_t *pid = calloc(m ? m : 1, sizeof *pid);
   int *status = calloc(m ? m : 1, sizeof *status);
   double *t1 = calloc(m ? m : 1, sizeof *t1);
-  struct vsph_report_eta *eta = eta_start(order, m);
+  struct vsph_jobs_eta *eta = eta_start(order, m);
   if (!st && (!pid || !status || !t1 || !eta)) {
     st = VSPH_ENOMEM;
     vsph_status_report(st, __FILE__, __LINE__, "cannot track %zu runs", m);
@@ -651,25 +644,25 @@ int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
     fprintf(stderr,
             "vsph report: %zu of the %zu runs are not in the cache; running "
             "them as %zu processes of %zu threads (logs in %s)\n",
-            m, R->plan->n, njobs, threads, logs);
+            m, J->n, njobs, threads, logs);
   const double t0 = omp_get_wtime();
   size_t next = 0, running = 0, done = 0, nfailed = 0;
   int stopping = st != VSPH_OK, err = VSPH_OK;
   while (running > 0 || (next < m && !stopping)) {
     while (!stopping && next < m && running < njobs) {
-      if ((pid[next] = spawn(R, order[next], exe, threads)) < 0) {
+      if ((pid[next] = spawn(J, order[next], exe, threads)) < 0) {
         err = VSPH_EIO; /* stop the others, as on a signal */
         pid[next] = 0;
         break;
       }
       t1[next] = omp_get_wtime();
-      eta[next].state = VSPH_REPORT_ETA_RUNNING;
+      eta[next].state = VSPH_JOBS_ETA_RUNNING;
       fprintf(stderr, "  [%zu/%zu] %s: started, pid %ld (%.0f s elapsed)\n",
               next + 1, m, order[next]->label, (long)pid[next], t1[next] - t0);
       running++;
       next++;
     }
-    if (!stopping && (err || (R->stop && *R->stop))) { /* pass it on */
+    if (!stopping && (err || (J->stop && *J->stop))) { /* pass it on */
       stopping = 1;
       fprintf(stderr,
               "vsph report: stopping; each running run stops after its "
@@ -695,7 +688,7 @@ int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
     order[k]->cached =
         status[k] == 0 && vsph_rundir_key_matches(order[k]->dir, order[k]->key);
     const double now = omp_get_wtime(), el = now - t0;
-    eta[k].state = VSPH_REPORT_ETA_DONE; /* a failed run measures nothing */
+    eta[k].state = VSPH_JOBS_ETA_DONE; /* a failed run measures nothing */
     eta[k].ended = el;
     eta[k].wall = order[k]->cached ? now - t1[k] : 0.0;
     eta[k].cost = order[k]->cached ? cost_taken(order[k]) : 0.0;
@@ -709,7 +702,7 @@ int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
               k + 1, m, order[k]->label, v, now - t1[k], done, m, el, left);
     } else if (!stopping) {
       char logf[700];
-      log_path(R, order[k], logf, sizeof logf);
+      log_path(J, order[k], logf, sizeof logf);
       order[k]->failed = 1;
       nfailed++;
       fprintf(stderr,
@@ -718,7 +711,7 @@ int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
               k + 1, m, order[k]->label, status[k], logf);
     }
   }
-  if (!st) st = record_failed(R, order, next, status);
+  if (!st) st = record_failed(J, order, next, status);
   free(order);
   free(pid);
   free(status);
@@ -732,7 +725,7 @@ int vsph_report_jobs_pool(struct vsph_report *R, const char *exe, size_t njobs,
               "%zu of %zu runs failed (listed in %s/runs/failed.txt with their "
               "logs); the report is not assembled: mend them and rerun, only "
               "they run again",
-              nfailed, m, R->dir);
+              nfailed, m, J->dir);
   return VSPH_OK;
 }
 
@@ -769,7 +762,7 @@ static int submit(const char *cmd, char *id, size_t len) {
  * core still fits. */
 #define SLURM_RATE 1e6
 
-int vsph_report_jobs_slurm_dir(const char *dir, char *abs, size_t len) {
+int vsph_jobs_slurm_dir(const char *dir, char *abs, size_t len) {
   const int existed = access(dir, F_OK) == 0;
   int st = vsph_files_mkdir(dir);
   if (st) return st;
@@ -819,8 +812,8 @@ static double limit_minutes(const char *t) {
  * SIGTERM (Slurm's --signal, 2 minutes ahead where the limit is 10
  * minutes or more; else Slurm's own SIGTERM at the limit): it writes a
  * checkpoint and stops, and the next submission resumes it. */
-static int array_script(const struct vsph_report_job *const *order, size_t m,
-                        const struct vsph_report_slurm *s, const char *logs,
+static int array_script(const struct vsph_jobs_job *const *order, size_t m,
+                        const struct vsph_jobs_slurm *s, const char *logs,
                         size_t mem_mib, const char *limit, char **text) {
   size_t len;
   char *cmd = malloc(8192);
@@ -847,7 +840,7 @@ static int array_script(const struct vsph_report_job *const *order, size_t m,
   if (limit_minutes(limit) >= 10.0) fprintf(f, "#SBATCH --signal=B:TERM@120\n");
   fprintf(f, "case \"$SLURM_ARRAY_TASK_ID\" in\n");
   for (size_t k = 0; k < m; k++) {
-    vsph_report_jobs_command(order[k], s->exe, s->threads, cmd, 8192);
+    vsph_jobs_command(order[k], s->exe, s->threads, cmd, 8192);
     fprintf(f, "%zu) exec %s ;;\n", k, cmd);
   }
   fprintf(f,
@@ -860,12 +853,12 @@ static int array_script(const struct vsph_report_job *const *order, size_t m,
 
 /* The assembly: the same report again (--out, --full, --only), reading
  * the runs only. */
-static int assembly_script(const struct vsph_report *R,
-                           const struct vsph_report_slurm *s, const char *logs,
+static int assembly_script(const struct vsph_jobs *J,
+                           const struct vsph_jobs_slurm *s, const char *logs,
                            char **text) {
   char q[3][PATH_MAX + 64];
   vsph_shell_quote(s->exe, q[0], sizeof q[0]);
-  vsph_shell_quote(R->dir, q[1], sizeof q[1]);
+  vsph_shell_quote(J->dir, q[1], sizeof q[1]);
   vsph_shell_quote(s->only ? s->only : "", q[2], sizeof q[2]);
   size_t len;
   FILE *f = open_memstream(text, &len);
@@ -883,7 +876,7 @@ static int assembly_script(const struct vsph_report *R,
           VSPH_VERSION, s->threads, logs);
   if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
   fprintf(f, "OMP_NUM_THREADS=%zu exec %s report --out %s%s%s%s --assemble\n",
-          s->threads, q[0], q[1], R->full ? " --full" : "",
+          s->threads, q[0], q[1], J->full ? " --full" : "",
           s->only ? " --only " : "", s->only ? q[2] : "");
   if (fclose(f) != 0) VSPH_FAIL(VSPH_ENOMEM, "cannot write the assembly");
   return VSPH_OK;
@@ -902,10 +895,10 @@ static int put_script(const char *dir, const char *name, char *text,
 }
 
 /* submitted.json: the job ids and what was asked for. */
-static int record_submission(const struct vsph_report *R, const char *dir,
+static int record_submission(const struct vsph_jobs *J, const char *dir,
                              const char *array_id, const char *asm_id,
-                             const struct vsph_report_job *const *order,
-                             size_t m, size_t threads, size_t mem_mib,
+                             const struct vsph_jobs_job *const *order, size_t m,
+                             size_t threads, size_t mem_mib,
                              const char *limit) {
   cJSON *o = cJSON_CreateObject();
   const time_t now = time(NULL);
@@ -916,7 +909,7 @@ static int record_submission(const struct vsph_report *R, const char *dir,
   cJSON_AddStringToObject(o, "array_job", array_id);
   cJSON_AddStringToObject(o, "assembly_job", asm_id);
   cJSON_AddNumberToObject(o, "tasks", (double)m);
-  cJSON_AddNumberToObject(o, "runs", (double)R->plan->n);
+  cJSON_AddNumberToObject(o, "runs", (double)J->n);
   cJSON_AddNumberToObject(o, "cpus_per_task", (double)threads);
   cJSON_AddNumberToObject(o, "mem_mib", (double)mem_mib);
   cJSON_AddStringToObject(o, "time", limit);
@@ -926,15 +919,14 @@ static int record_submission(const struct vsph_report *R, const char *dir,
   return vsph_json_write(o, dir, "submitted.json");
 }
 
-int vsph_report_jobs_slurm(struct vsph_report *R,
-                           const struct vsph_report_slurm *s) {
-  struct vsph_report_job **order;
-  const size_t m = missing(R, &order);
+int vsph_jobs_slurm(struct vsph_jobs *J, const struct vsph_jobs_slurm *s) {
+  struct vsph_jobs_job **order;
+  const size_t m = missing(J, &order);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
-  const struct vsph_report_job *const *jobs =
-      (const struct vsph_report_job *const *)order;
+  const struct vsph_jobs_job *const *jobs =
+      (const struct vsph_jobs_job *const *)order;
   char dir[600], logs[700];
-  snprintf(dir, sizeof dir, "%s/slurm", R->dir);
+  snprintf(dir, sizeof dir, "%s/slurm", J->dir);
   snprintf(logs, sizeof logs, "%s/logs", dir);
   int st = vsph_files_mkdir(logs);
   double mem = 0.0, cost = 0.0;
@@ -955,7 +947,7 @@ int vsph_report_jobs_slurm(struct vsph_report *R,
   char *text = NULL, script[2][PATH_MAX + 64], cmd[2 * PATH_MAX + 256];
   if (!st && !(st = array_script(jobs, m, s, logs, mem_mib, limit, &text)))
     st = put_script(dir, "runs.sbatch", text, script[0], sizeof script[0]);
-  if (!st && !(st = assembly_script(R, s, logs, &text)))
+  if (!st && !(st = assembly_script(J, s, logs, &text)))
     st = put_script(dir, "assemble.sbatch", text, script[1], sizeof script[1]);
   char array_id[64] = "", asm_id[64] = "";
   if (!st && m) {
@@ -971,7 +963,7 @@ int vsph_report_jobs_slurm(struct vsph_report *R,
     st = submit(cmd, asm_id, sizeof asm_id);
   }
   if (!st)
-    st = record_submission(R, dir, array_id, asm_id, jobs, m, s->threads,
+    st = record_submission(J, dir, array_id, asm_id, jobs, m, s->threads,
                            mem_mib, limit);
   if (!st) {
     if (m)
@@ -979,7 +971,7 @@ int vsph_report_jobs_slurm(struct vsph_report *R,
           "vsph report: submitted %zu runs as array job %s (%zu CPUs, %zu "
           "MiB, %s each) and the assembly as job %s after it; %s must be "
           "on a file system every node shares\n",
-          m, array_id, s->threads, mem_mib, limit, asm_id, R->dir);
+          m, array_id, s->threads, mem_mib, limit, asm_id, J->dir);
     else
       printf(
           "vsph report: every run is cached; submitted the assembly as "
@@ -989,4 +981,178 @@ int vsph_report_jobs_slurm(struct vsph_report *R,
   }
   free(order);
   return st;
+}
+
+/* ------------------------------------------------------- reading runs */
+
+void vsph_jobs_run_free(struct vsph_jobs_run *r) {
+  vsph_csv_free(r->energy);
+  r->energy = NULL;
+}
+
+/* energy.csv: the columns the parts read, by name. */
+static int load_energy(struct vsph_jobs_run *r) {
+  char path[600];
+  snprintf(path, sizeof path, "%s/energy.csv", r->dir);
+  r->energy = vsph_csv_read(path);
+  if (!r->energy) return VSPH_EIO;
+  const struct vsph_csv *e = r->energy;
+  r->nrow = e->nrow;
+  r->t = vsph_csv_column(e, "t");
+  r->Ek = vsph_csv_column(e, "Ek");
+  r->Pv = vsph_csv_column(e, "P_visc");
+  r->res_b = vsph_csv_column(e, "residual");
+  r->dEk = vsph_csv_column(e, "dEk_dt");
+  r->Ekr = vsph_csv_column(e, "Ek_ref");
+  r->dEkr = vsph_csv_column(e, "dEk_ref");
+  r->Ep = vsph_csv_column(e, "Ep");
+  r->Ec = vsph_csv_column(e, "Ec");
+  r->Emr = vsph_csv_column(e, "Em_ref");
+  r->dEmr = vsph_csv_column(e, "dEm_ref");
+  if (!r->t || !r->Ek || !r->Pv || !r->res_b || !r->dEk || !r->Ekr ||
+      !r->dEkr || !r->Ep || !r->Ec || !r->Emr || !r->dEmr || r->nrow == 0)
+    VSPH_FAIL(VSPH_EIO, "%s lacks the columns of an energy table", path);
+  return VSPH_OK;
+}
+
+/* A count from run.json; 0 unless it is a whole number that fits, so a
+ * damaged file never reaches an undefined conversion. */
+static size_t count_of(const cJSON *j, const char *key) {
+  const double v = vsph_json_get_number(j, key, 0.0);
+  return v >= 0.0 && v < 9007199254740992.0 ? (size_t)v : 0;
+}
+
+static int load_run_json(struct vsph_jobs_run *r) {
+  char path[600];
+  snprintf(path, sizeof path, "%s/run.json", r->dir);
+  cJSON *j = vsph_json_read(path);
+  if (!j) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
+  const cJSON *v = cJSON_GetObjectItemCaseSensitive(j, "status");
+  r->ok = cJSON_IsString(v) && !strcmp(v->valuestring, "ok");
+  r->t_unstable = vsph_json_get_number(j, "unstable_time", (double)NAN);
+  v = cJSON_GetObjectItemCaseSensitive(j, "unstable_reason");
+  snprintf(r->reason, sizeof r->reason, "%s",
+           cJSON_IsString(v) ? v->valuestring : "");
+  r->wall_s = vsph_json_get_number(j, "wall_s", (double)NAN);
+  r->pairs = vsph_json_get_number(j, "pairs_per_s", 0.0) * r->wall_s;
+  r->cpu_s = vsph_json_get_number(j, "cpu_s", (double)NAN);
+  v = cJSON_GetObjectItemCaseSensitive(j, "load_average_start");
+  const cJSON *l1 = cJSON_IsArray(v) ? cJSON_GetArrayItem(v, 0) : NULL;
+  r->load = cJSON_IsNumber(l1) ? l1->valuedouble : (double)NAN;
+  r->n = count_of(j, "n_particles");
+  r->steps = count_of(j, "steps");
+  r->res = count_of(j, "res");
+  cJSON_Delete(j);
+  return VSPH_OK;
+}
+
+int vsph_jobs_get(const struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
+                  struct vsph_jobs_run *out) {
+  memset(out, 0, sizeof *out);
+  struct vsph_jobs_job j;
+  int st = vsph_jobs_run(J, rs, &j);
+  snprintf(out->dir, sizeof out->dir, "%s", j.dir);
+  if (!st) st = vsph_jobs_ready(J, &j);
+  vsph_jobs_free(&j);
+  if (!st) st = load_run_json(out);
+  if (!st) st = load_energy(out);
+  return st;
+}
+
+/* A planned (or, unplanned, any) sealed run in folder @p dir whose seal
+ * lists @p name: its path. */
+int vsph_jobs_file(const struct vsph_jobs *J, const char *dir, const char *name,
+                   char *path, size_t len) {
+  const struct vsph_jobs_job *j = J->planned ? find(J, dir) : NULL;
+  if (J->planned && !j)
+    VSPH_FAIL(VSPH_EINVAL, "run %s is not in the plan (a bug)", dir);
+  char why[700] = "";
+  if (j && vsph_folder_verify(dir, NULL, j->key, NULL, why, sizeof why) != 1)
+    VSPH_FAIL(VSPH_EIO, "run %s is not sealed%s%s", dir, why[0] ? ": " : "",
+              why);
+  snprintf(path, len, "%s/key.txt", dir);
+  char *seal = vsph_files_slurp(path, NULL);
+  char line[300];
+  snprintf(line, sizeof line, "\n%s ", name);
+  const int listed = seal && strstr(seal, line) != NULL;
+  free(seal);
+  if (!listed)
+    VSPH_FAIL(VSPH_EIO, "run %s holds no %s under its seal", dir, name);
+  snprintf(path, len, "%s/%s", dir, name);
+  return VSPH_OK;
+}
+
+struct vsph_csv *vsph_jobs_table(const struct vsph_jobs *J, const char *dir,
+                                 const char *name) {
+  char path[700];
+  if (vsph_jobs_file(J, dir, name, path, sizeof path)) return NULL;
+  struct vsph_csv *c = vsph_csv_read(path);
+  if (!c)
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot read %s", path);
+  return c;
+}
+
+void vsph_jobs_plan_free(struct vsph_jobs *J) {
+  for (size_t k = 0; k < J->n; k++) vsph_jobs_free(&J->job[k]);
+  free(J->job);
+  J->job = NULL;
+  J->n = J->cap = 0;
+}
+
+int vsph_jobs_last_snapshot(const struct vsph_jobs *J, const char *dir) {
+  char path[700];
+  if (vsph_jobs_file(J, dir, "snapshots.pvd", path, sizeof path)) return -1;
+  snprintf(path, sizeof path, "%s/key.txt", dir);
+  char *seal = vsph_files_slurp(path, NULL);
+  int last = -1;
+  for (const char *c = seal; c && (c = strstr(c, "\nsnap_")); c++) {
+    int k;
+    if (sscanf(c + 6, "%4d.vtp ", &k) == 1 && k > last) last = k;
+  }
+  free(seal);
+  return last;
+}
+
+double vsph_jobs_peak_rss(const char *scene, const char *visc, size_t res,
+                          double t_end) {
+  char dir[] = "/tmp/vsph-bench-XXXXXX";
+  if (!mkdtemp(dir)) return 0.0;
+  char out[64], r[32], t[32];
+  snprintf(out, sizeof out, "%s/run", dir);
+  snprintf(r, sizeof r, "%zu", res);
+  snprintf(t, sizeof t, "%.17g", t_end);
+  const pid_t pid = fork();
+  if (pid == 0) { /* the child: only exec (safe after fork in threads) */
+    const int null = open("/dev/null", O_WRONLY);
+    if (null >= 0) {
+      dup2(null, 1);
+      dup2(null, 2);
+    }
+    execl("/proc/self/exe", "vsph", "run", scene, "--visc", visc, "--res", r,
+          "--t-end", t, "--outputs", "1", "--snapshots", "0", "--out", out,
+          (char *)NULL);
+    _exit(127);
+  }
+  int status = 1;
+  if (pid > 0) waitpid(pid, &status, 0);
+  double peak = 0.0;
+  char path[96];
+  snprintf(path, sizeof path, "%s/run.json", out);
+  cJSON *j = pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0
+                 ? vsph_json_read(path)
+                 : NULL;
+  if (j) peak = vsph_json_get_number(j, "peak_rss_bytes", 0.0);
+  cJSON_Delete(j);
+  /* the folder this made: the run's files, its marker and lock */
+  DIR *d = opendir(out);
+  for (struct dirent *e; d && (e = readdir(d));) {
+    if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+    char f[400];
+    snprintf(f, sizeof f, "%s/%s", out, e->d_name);
+    remove(f);
+  }
+  if (d) closedir(d);
+  remove(out);
+  remove(dir);
+  return peak;
 }

@@ -1,0 +1,213 @@
+#ifndef VSPH_RUNS_JOBS_H
+#define VSPH_RUNS_JOBS_H
+
+#include <signal.h>
+#include <stddef.h>
+#include <stdio.h>
+
+struct vsph_csv;
+
+/** @file jobs.h
+ *  @brief Runs as jobs: the one interface through which a report asks for
+ *  runs. Every part declares the runs it reads (a plan) before any is
+ *  run; the missing ones are then run in this process, as child processes
+ *  (--jobs N) or as a Slurm job array (--slurm), and read back through
+ *  vsph_jobs_get, which checks each folder's seal (runs/folder). A job is
+ *  one command (`vsph run ... --cache` or `vsph contact ... --cache`)
+ *  whose folder ends sealed: the cache, and the proof that the run ended,
+ *  whichever way ran it. A job stopped by a signal (or Slurm's time limit)
+ *  leaves a checkpoint, and the next time resumes from it. */
+
+/* What a job runs: the solver on a scene (`vsph run`), or the shear test
+ * of section 12 (`vsph contact`). */
+enum { VSPH_JOBS_RUN = 0, VSPH_JOBS_SHEAR };
+
+/* Settings a job holds at most. */
+#define VSPH_JOBS_NSET 20
+
+/* One run a report needs: the command that makes its folder, and what
+ * the scheduler knows of it. */
+struct vsph_jobs_job {
+  int kind;                      /* VSPH_JOBS_RUN or VSPH_JOBS_SHEAR */
+  char scene[32];                /* RUN: the scene */
+  char dir[512];                 /* its output folder */
+  char set[VSPH_JOBS_NSET][128]; /* "Section:key=value" */
+  size_t nset, nprof;            /* SHEAR: profile times */
+  char label[160];               /* as progress names it */
+  char family[64]; /* "scene formulation" (or "shear test"): its rate */
+  char *key;       /* its key.txt (owned) */
+  double particles, steps, bytes; /* the solver's estimate */
+  double neighbours;              /* of each particle, every pass */
+  int cached;                     /* its key.txt matches */
+  int failed;                     /* the pool: did not end */
+};
+
+/** The runs of a report (or of any caller that wants many runs): where
+ *  they go, and, once planned, every run that will be read, listed before
+ *  any is run. */
+struct vsph_jobs {
+  const char *dir; /*!< the runs go in DIR/runs/NAME */
+  int full;        /*!< the report's fidelity, for the plan's title and
+                        the Slurm assembly's command */
+  const volatile sig_atomic_t *stop; /*!< stop request, or NULL */
+  int planned; /*!< 1: a sealed plan: only listed, cached runs are read;
+                    0: a run is made when it is read (tests) */
+  struct vsph_jobs_job *job; /*!< the plan */
+  size_t n, cap;
+};
+
+/** A solver run a report needs. */
+struct vsph_jobs_spec {
+  const char *scene;        /* scene name */
+  const char *visc;         /* formulation name */
+  size_t res;               /* particles across */
+  double t_end;             /* end time (s) */
+  const char *const *extra; /* "Section:key=value" settings, NULL-ended */
+  const char *tag;          /* folder suffix, or NULL */
+};
+
+/* One run's figures, from the cache or a fresh run. */
+struct vsph_jobs_run {
+  char dir[512];     /* its output folder */
+  int ok;            /* 1: finished, 0: stopped as unstable */
+  double t_unstable; /* when, if unstable */
+  char reason[160];  /* why */
+  double wall_s, pairs;
+  double cpu_s, load; /* CPU time; 1-minute load average at its start */
+  size_t n, steps, res;
+  struct vsph_csv *energy; /* energy.csv */
+  size_t nrow;             /* its rows; the columns: */
+  const double *t, *Ek, *Pv, *res_b, *dEk, *Ekr, *dEkr;
+  const double *Ep, *Ec, *Emr, *dEmr; /* energies; reference E_m, dE_m/dt */
+};
+
+/** @brief Drop every job of @p J's plan (the plan is then empty). */
+void vsph_jobs_plan_free(struct vsph_jobs *J);
+
+/* The job of a solver run: its folder, settings and key (runs/rundir's),
+ * and whether the cache holds it. Free with vsph_jobs_free. */
+int vsph_jobs_run(const struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
+                  struct vsph_jobs_job *j);
+
+/* The job of a shear test: folder runs/contact-TAG, @p n settings. */
+int vsph_jobs_shear(const struct vsph_jobs *J, const char *tag,
+                    const char (*set)[96], size_t n, size_t nprof,
+                    struct vsph_jobs_job *j);
+
+void vsph_jobs_free(struct vsph_jobs_job *j);
+
+/* Add @p j to J (which takes its key), once per folder; a second
+ * job with the same folder and another key is a bug (two specs, one
+ * folder). Estimates its cost. Without a plan, frees @p j. */
+int vsph_jobs_plan_add(struct vsph_jobs *J, struct vsph_jobs_job *j);
+
+/* The same for a solver run. */
+int vsph_jobs_plan_run(struct vsph_jobs *J, const struct vsph_jobs_spec *rs);
+
+/* Make sure the folder of @p j holds its run before a part reads it: with
+ * a sealed plan, it must be listed and cached (else a failure naming it);
+ * without a plan (the tests), it is run here if not cached. */
+int vsph_jobs_ready(const struct vsph_jobs *J, const struct vsph_jobs_job *j);
+
+/* The command of @p j as arguments (NULL-ended, pointing into @p j and
+ * @p buf): @p exe, then run or contact, --out, --cache and the settings;
+ * --quiet --threads T when @p threads > 0. */
+size_t vsph_jobs_argv(const struct vsph_jobs_job *j, const char *exe,
+                      size_t threads, char buf[2][24], const char **argv,
+                      size_t cap);
+
+/* The same as one shell line (arguments quoted where needed). */
+void vsph_jobs_command(const struct vsph_jobs_job *j, const char *exe,
+                       size_t threads, char *out, size_t len);
+
+/* The plan as a table (tab-separated: status, folder, key fingerprint,
+ * particles, steps, memory, command), those missing first. */
+int vsph_jobs_plan_print(const struct vsph_jobs *J, const char *exe, FILE *f);
+
+/* The missing runs of the plan in this process, @p width at a time (one
+ * thread each; the report passes its thread count: two on 2 cores), the
+ * costliest first. */
+int vsph_jobs_local(struct vsph_jobs *J, int width);
+
+/* One run as the estimate of the time left sees it. */
+enum { VSPH_JOBS_ETA_WAITING = 0, VSPH_JOBS_ETA_RUNNING, VSPH_JOBS_ETA_DONE };
+struct vsph_jobs_eta {
+  double cost;        /* particles x neighbours x steps: DONE, the steps it took
+                         (0: it failed and measures nothing); else the plan's */
+  double wall;        /* DONE: its wall time; RUNNING: its time so far */
+  double ended;       /* DONE: when it finished (any clock) */
+  int state;          /* VSPH_JOBS_ETA_* */
+  const char *family; /* runs of one family share a rate */
+};
+
+/* The wall time left of @p n runs, in the order they start, @p width at a
+ * time. A run not done takes what its family's last two finished runs
+ * say: the line through their (cost, wall time), a fixed part and a rate,
+ * where both come out non-negative (a small run's fixed costs weigh more),
+ * else the last one's rate (the runs go costliest first, so the last is
+ * the nearest in size); a family with no finished run takes all finished
+ * runs' wall time over their cost. A running run's time so far is taken
+ * off. The runs are laid on the @p width lanes in their order, each on
+ * the lane free first. @return the seconds left, or -1 while no run has
+ * finished (nothing to measure a rate by). */
+double vsph_jobs_eta(const struct vsph_jobs_eta *r, size_t n, size_t width);
+
+/* The same as child processes of @p exe, @p njobs at a time with
+ * @p threads threads each; a run that fails is recorded (runs/failed.txt,
+ * its log in runs/logs/) and the others go on. */
+int vsph_jobs_pool(struct vsph_jobs *J, const char *exe, size_t njobs,
+                   size_t threads);
+
+/* Submit the missing runs as one Slurm job array and the assembly as a
+ * job after it (afterany). */
+struct vsph_jobs_slurm {
+  const char *exe;       /* vsph, absolute */
+  const char *partition; /* or NULL */
+  const char *time;      /* Slurm's time limit, or NULL: estimated */
+  size_t threads;        /* --cpus-per-task of each run */
+  const char *only;      /* the report's --only, for the assembly, or NULL */
+};
+int vsph_jobs_slurm(struct vsph_jobs *J, const struct vsph_jobs_slurm *s);
+
+/* The folder of a Slurm report, made if new, as an absolute path into
+ * @p abs (the jobs run elsewhere); one that #SBATCH lines cannot carry
+ * (a space, a quote, '%') is refused, and left unmade. */
+int vsph_jobs_slurm_dir(const char *dir, char *abs, size_t len);
+
+/** @brief A run of the plan read back (vsph_jobs_ready, then its seal,
+ *  run.json and energy.csv).
+ *  @return VSPH_OK, or a failure naming the run or the file. */
+int vsph_jobs_get(const struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
+                  struct vsph_jobs_run *out);
+
+/** @brief Free what vsph_jobs_get read; idempotent. */
+void vsph_jobs_run_free(struct vsph_jobs_run *r);
+
+/** @brief Table @p name (e.g. "profile.csv", "summary.csv") of the sealed
+ *  run in folder @p dir of the plan, read (io/csv) after its seal is
+ *  checked. NULL after reporting when the run is not planned and sealed
+ *  or the table cannot be read. */
+struct vsph_csv *vsph_jobs_table(const struct vsph_jobs *J, const char *dir,
+                                 const char *name);
+
+/** @brief The path of file @p name of the sealed run in folder @p dir of
+ *  the plan, for a reader of its own (a VTK snapshot), into @p path:
+ *  VSPH_OK if the plan lists the run, its seal holds and lists the file;
+ *  else a failure naming it. */
+int vsph_jobs_file(const struct vsph_jobs *J, const char *dir, const char *name,
+                   char *path, size_t len);
+
+/** @brief The index of the last snapshot (snap_NNNN.vtp) under the seal
+ *  of the planned run in folder @p dir: the end, or the stop of an
+ *  unstable run; -1 (reported) if it has none. */
+int vsph_jobs_last_snapshot(const struct vsph_jobs *J, const char *dir);
+
+/** @brief Peak resident memory (bytes) of a whole `vsph run SCENE --visc
+ *  VISC --res RES --t-end T_END` in a process of its own (this program
+ *  started again through /proc/self/exe, so nothing of the caller's
+ *  memory counts), as its run.json says, in a temporary folder removed
+ *  after; 0 if it cannot be run. For vsph bench. */
+double vsph_jobs_peak_rss(const char *scene, const char *visc, size_t res,
+                          double t_end);
+
+#endif /* VSPH_RUNS_JOBS_H */
