@@ -103,8 +103,9 @@ int vsph_cmd_contact_main(int argc, char **argv) {
        "write summary.csv (one row per profile time) and profiles.csv into "
        "DIR instead of printing (the report's shear tests)"},
       {"--cache", VSPH_ARGS_FLAG, &cache, NULL,
-       "with --out: write key.txt (version, source hash, the parameters as "
-       "given) last, and skip the measurement when DIR's key.txt matches"},
+       "with --out: skip the measurement when DIR's seal holds (key.txt: "
+       "version, source hash, the parameters as given, each file's size "
+       "and CRC-32; written last in any case)"},
       {"--threads", VSPH_ARGS_SIZE, &threads, "T",
        "OpenMP threads (default: OMP_NUM_THREADS or all cores)"},
       {"--quiet", VSPH_ARGS_FLAG, &quiet, NULL, "no progress line"},
@@ -157,7 +158,7 @@ int vsph_cmd_contact_main(int argc, char **argv) {
     if (st) return vsph_args_status(CMD, st);
     if (!quiet)
       fprintf(stderr, "vsph contact: %s %s\n", out,
-              cached ? "is cached (its key.txt matches): not measured again"
+              cached ? "is cached (its seal holds): not measured again"
                      : "written");
     return vsph_args_finish(CMD, 0);
   }

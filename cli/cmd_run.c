@@ -77,9 +77,9 @@ int vsph_cmd_run_main(int argc, char **argv) {
       {"--quiet", VSPH_ARGS_FLAG, &quiet, NULL,
        "no progress; only an unstable verdict"},
       {"--cache", VSPH_ARGS_FLAG, &cache, NULL,
-       "write key.txt (version, source hash, the parameters as given) last, "
-       "for a run that ended; skip the run when DIR's key.txt matches (the "
-       "report's runs)"}};
+       "skip the run when DIR's seal holds (key.txt: version, source hash, "
+       "the parameters as given, each file's size and CRC-32; written last "
+       "by every run that ended) (the report's runs)"}};
   size_t n;
   const struct vsph_params_spec *spec = vsph_run_params(&n);
   const struct vsph_args_section sec = {"Solver", spec, n};
