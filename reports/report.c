@@ -427,6 +427,13 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   if (!st && rp->mode == VSPH_REPORT_ASSEMBLE) st = all_cached(R);
   if (!st) st = lock_dir(rp->dir);
   if (!st) st = vsph_files_mkdir(parts_dir);
+  char seal_path[700]; /* nothing vouches for the folder while it changes */
+  snprintf(seal_path, sizeof seal_path, "%s/key.txt", rp->dir);
+  if (!st && remove(seal_path) != 0 && errno != ENOENT) {
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot remove %s: %s",
+                       seal_path, strerror(errno));
+    st = VSPH_EIO;
+  }
   R->made_by = rp->mode == VSPH_REPORT_POOL       ? "child processes"
                : rp->mode == VSPH_REPORT_ASSEMBLE ? "nothing: assembly only"
                                                   : "this process";
@@ -459,6 +466,20 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   if (!st) st = assemble(R, parts_dir, want, cached, wall, stamp);
   if (!st)
     st = write_run_json(R, want, cached, wall, stamp, omp_get_wtime() - t_all);
+  /* the seal last (runs/folder): the report's key, then each file of the
+   * folder's top with its size and CRC-32 */
+  if (!st) {
+    char seal[256];
+    size_t len = (size_t)snprintf(
+        seal, sizeof seal, "vsph %s %s\nreport %s:", VSPH_VERSION,
+        vsph_source_hash_id, R->full ? "full" : "quick");
+    for (size_t p = 0; p < NPARTS && len < sizeof seal - 40; p++)
+      if (want >> p & 1)
+        len += (size_t)snprintf(seal + len, sizeof seal - len, " %s",
+                                PARTS[p].name);
+    snprintf(seal + len, sizeof seal - len, "\n");
+    st = vsph_folder_seal(&report_folder, seal, NULL);
+  }
   if (!st)
     fprintf(stderr,
             "vsph report: wrote %s/report.md and report.html (%.0f s)\n",

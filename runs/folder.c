@@ -59,13 +59,14 @@ static int owns_shear(const char *name) {
 }
 
 /* A report: its text, tables, figures and their gnuplot scripts and
- * logs, its parts, its runs and its Slurm scripts. */
+ * logs, its seal, its parts, its runs and its Slurm scripts. */
 static int owns_report(const char *name) {
   static const char *const dirs[] = {"parts", "runs", "slurm", NULL};
   static const char *const ext[] = {".csv",  ".gp",   ".log", ".pdf",
                                     ".png",  ".svg",  ".md",  ".html",
                                     ".json", ".lock", ".tmp", NULL};
   if (one_of(name, dirs)) return VSPH_FOLDER_SUBDIR;
+  if (!strcmp(name, "key.txt")) return VSPH_FOLDER_FILE; /* the seal */
   if (name[0] == '.') return VSPH_FOLDER_FOREIGN;
   for (const char *const *e = ext; *e; e++)
     if (ends_with(name, *e)) return VSPH_FOLDER_FILE;

@@ -1,4 +1,4 @@
-/* The report's runs as jobs (reports/report_jobs.c, runs/rundir's cache):
+/* The report's runs as jobs (runs/jobs.c, runs/rundir and runs/folder):
  * the key is the same however the settings are given; the plan's command
  * makes exactly the run the report makes in its own process; the child
  * pool runs what is missing, records a failure and goes on, and resumes

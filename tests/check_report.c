@@ -1,6 +1,6 @@
 /* The report's frame: the claims table's verdict classes and their
  * tally (reports/report_claims.c), counted here independently of the
- * writer; the estimate of the time left (reports/report_jobs.c), worked
+ * writer; the estimate of the time left (runs/jobs.c), worked
  * by hand. */
 #include <check.h>
 #include <stdio.h>

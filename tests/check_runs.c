@@ -478,6 +478,41 @@ START_TEST(test_slurm_signal) {
 }
 END_TEST
 
+/* A report's folder is sealed too: its seal holds after the report, a
+ * changed report.md breaks it by name, and the next report (the folder
+ * is a report's) replaces it. */
+START_TEST(test_report_seal) {
+  char dir[] = "/tmp/vsph_repsealXXXXXX", out[300], path[400], args[600];
+  scratch(dir);
+  snprintf(out, sizeof out, "%s/rep", dir);
+  snprintf(args, sizeof args, "report --only tensors --out %s", out);
+  for (int pass = 0; pass < 2; pass++) {
+    ck_assert_int_eq(vsph_test_cli(args)->status, 0);
+    char key[1 << 14];
+    snprintf(path, sizeof path, "%s/key.txt", out);
+    vsph_test_slurp(path, key, sizeof key);
+    char *files = strstr(key, "files:\n");
+    ck_assert_ptr_nonnull(files);
+    ck_assert_ptr_nonnull(strstr(files, "\nreport.md "));
+    files[0] = '\0';
+    char why[600];
+    ck_assert_int_eq(vsph_folder_verify(out, &vsph_folder_report, key, NULL,
+                                        why, sizeof why),
+                     1);
+    snprintf(path, sizeof path, "%s/report.md", out);
+    FILE *f = fopen(path, "a");
+    ck_assert_ptr_nonnull(f);
+    fputs("edited\n", f);
+    ck_assert_int_eq(fclose(f), 0);
+    ck_assert_int_eq(vsph_folder_verify(out, &vsph_folder_report, key, NULL,
+                                        why, sizeof why),
+                     -1);
+    ck_assert_msg(strstr(why, "report.md differs") != NULL, "%s", why);
+  }
+  rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_runs_suite(void) {
   Suite *s = suite_create("runs");
   TCase *tc = tcase_create("restart");
@@ -493,6 +528,7 @@ Suite *vsph_runs_suite(void) {
   tcase_add_test(tf, test_folder_lock);
   tcase_add_test(tf, test_folder_seal);
   tcase_add_test(tf, test_slurm_signal);
+  tcase_add_test(tf, test_report_seal);
   suite_add_tcase(s, tf);
   return s;
 }
