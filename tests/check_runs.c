@@ -348,6 +348,21 @@ START_TEST(test_folder_marker) {
   o = vsph_test_cli(args);
   ck_assert_msg(o->status == 2 && strstr(o->err, "a FIFO"), "%d %s", o->status,
                 o->err);
+  /* key.txt a link to that FIFO: --cache neither hangs nor follows it */
+  char key[400];
+  snprintf(key, sizeof key, "%s/key.txt", sub);
+  ck_assert_int_eq(remove(key), 0);
+  ck_assert_int_eq(symlink(path, key), 0);
+  snprintf(args, sizeof args,
+           "run poiseuille --res 8 --t-end 0.01 --cache --out %s", sub);
+  o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 2 && o->err_lines == 1, "%d %s", o->status,
+                o->err);
+  ck_assert_int_eq(remove(path), 0); /* the link alone, then */
+  o = vsph_test_cli(args);
+  ck_assert_msg(
+      o->status == 2 && strstr(o->err, "key.txt, which is a symbolic"), "%d %s",
+      o->status, o->err);
   rm_tree(dir);
 }
 END_TEST
