@@ -633,8 +633,8 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
     if ((st = vsph_run_alloc(&rp, &sc, &run))) goto done;
   }
   FILE *progress = opts->progress;
-  if (why[0] && progress)
-    fprintf(progress,
+  if (why[0]) /* said even when quiet: an hour's work may be lost */
+    fprintf(progress ? progress : stderr,
             "vsph run: %s/checkpoint.bin is not used (%s): "
             "starting over\n",
             res->dir, why);
