@@ -4,6 +4,7 @@
  * read in quadratic time, a signal leaving no run.json, a reused folder
  * mixing two runs. Bad values that only needed bounds are in check_cli.c's
  * table of bad inputs. */
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,6 +14,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "../analysis/references.h"
 #include "../common/params.h"
 #include "check_suites.h"
 
@@ -597,6 +599,54 @@ START_TEST(test_report_job_inputs) {
 }
 END_TEST
 
+/* Seconds since an arbitrary start (CLOCK_MONOTONIC). */
+static double now_s(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Issue 23, defect 9: the channels' start-up series at a tiny time summed
+ * a million terms per call (t = 1e-300: 74 s for one energy row of a
+ * 40 x 40 channel, during which a signal went unheeded) and still missed:
+ * U(W/2) came out at rounding of U0 (1e-16) instead of the drive times t.
+ * Near t = 0 the centre moves as a rigid slab, U = g t with g = 2 nu
+ * U0/d^2 = 8 here (W = nu = U0 = 1) and dU/dt = g, the walls still (U = 0,
+ * dU/dt = 0), and Couette's fluid has not moved (U = 0); the wall
+ * layers reach sqrt(nu t) = 1e-150, so every correction is exp(-1e299):
+ * the values are exact to rounding (1e-12 allows for it). 2000 calls must
+ * take well under a second (the old sum: about 50 s; 2 s is the margin of
+ * a loaded machine for what takes milliseconds), and the one-step run of
+ * the defect within 10 s (it took 74 s; it takes about 0.1 s). */
+START_TEST(test_series_at_tiny_times) {
+  double rate;
+  const double u = vsph_references_poiseuille(0.5, 1e-300, 1, 1, 1, &rate);
+  ck_assert_msg(fabs(u - 8e-300) <= 1e-12 * 8e-300, "U = %g", u);
+  ck_assert_double_eq_tol(rate, 8.0, 1e-12 * 8.0);
+  ck_assert(vsph_references_poiseuille(0.0, 1e-300, 1, 1, 1, &rate) == 0.0);
+  ck_assert_double_eq_tol(rate, 0.0, 1e-12);
+  ck_assert_double_eq_tol(vsph_references_couette(0.5, 1e-300, 1, 1, 1, NULL),
+                          0.0, 1e-12);
+  double t0 = now_s(), sum = 0.0;
+  for (int k = 0; k < 1000; k++) {
+    sum += vsph_references_poiseuille(k / 999.0, 1e-300, 1, 1, 1, &rate);
+    sum += vsph_references_couette(k / 999.0, 1e-300, 1, 1, 1, &rate);
+  }
+  ck_assert_msg(now_s() - t0 < 2.0, "2000 calls took %.2f s", now_s() - t0);
+  ck_assert(isfinite(sum));
+  char dir[] = "/tmp/vsph_tinyXXXXXX", args[200];
+  scratch(dir);
+  snprintf(args, sizeof args,
+           "run poiseuille --res 40 --t-end 1e-300 --out %s/r --quiet", dir);
+  t0 = now_s();
+  struct vsph_test_outcome *o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 0, "exit %d: %s", o->status, o->err);
+  ck_assert_msg(now_s() - t0 < 10.0, "the one-step run took %.1f s",
+                now_s() - t0);
+  rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_hardening_suite(void) {
   Suite *s = suite_create("hardening");
   TCase *tc = tcase_create("defects");
@@ -617,6 +667,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_params_not_a_file);
   tcase_add_test(tc, test_refused_run_deletes_nothing);
   tcase_add_test(tc, test_support_holds_no_neighbour);
+  tcase_add_test(tc, test_series_at_tiny_times);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
