@@ -122,6 +122,15 @@ int vsph_cmd_run_main(int argc, char **argv) {
     return 128 + (int)*stop;
   }
   if (st) return vsph_args_status(CMD, st);
+  if (*stop) { /* the signal came after the last step, while the run's last
+                  row and files were written: the run is whole, and the
+                  signal still ends the command as a signal does */
+    fprintf(stderr,
+            "vsph run: signal %d came after the last step: the run is "
+            "complete (run.json in %s says so)\n",
+            (int)*stop, res.dir);
+    return 128 + (int)*stop;
+  }
   if (res.cached) return vsph_args_finish(CMD, 0);
   if (quiet && res.unstable)
     fprintf(stderr, "vsph run: unstable at t = %.6g: %s (output kept in %s)\n",

@@ -647,6 +647,40 @@ START_TEST(test_series_at_tiny_times) {
 }
 END_TEST
 
+/* Issue 23, defect 9: a stop requested during the set-up is honoured. A
+ * SIGTERM that is pending when vsph starts (sent while blocked: the mask
+ * and the pending signal survive exec) reached no handler, and the run
+ * went on to "ok" and exit 0. Now it is caught before the run: exit 143,
+ * run.json "interrupted" at t = 0. */
+START_TEST(test_signal_during_setup) {
+  char dir[] = "/tmp/vsph_setupXXXXXX", out[64], path[96];
+  scratch(dir);
+  snprintf(out, sizeof out, "%s/r", dir);
+  const pid_t pid = fork();
+  ck_assert_int_ge(pid, 0);
+  if (pid == 0) {
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGTERM);
+    sigprocmask(SIG_BLOCK, &set, NULL);
+    kill(getpid(), SIGTERM); /* pending */
+    if (!freopen("/dev/null", "w", stderr)) _exit(126);
+    execl(getenv("VSPH_BIN"), "vsph", "run", "poiseuille", "--res", "16",
+          "--t-end", "1e-300", "--out", out, "--quiet", (char *)NULL);
+    _exit(127);
+  }
+  int status;
+  ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+  ck_assert(WIFEXITED(status));
+  ck_assert_int_eq(WEXITSTATUS(status), 128 + SIGTERM);
+  snprintf(path, sizeof path, "%s/run.json", out);
+  vsph_test_slurp(path, js, sizeof js);
+  ck_assert_msg(strstr(js, "\"interrupted\"") != NULL, "%s", js);
+  ck_assert_ptr_null(strstr(js, "\"ok\""));
+  rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_hardening_suite(void) {
   Suite *s = suite_create("hardening");
   TCase *tc = tcase_create("defects");
@@ -668,6 +702,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_refused_run_deletes_nothing);
   tcase_add_test(tc, test_support_holds_no_neighbour);
   tcase_add_test(tc, test_series_at_tiny_times);
+  tcase_add_test(tc, test_signal_during_setup);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
