@@ -681,6 +681,37 @@ START_TEST(test_signal_during_setup) {
 }
 END_TEST
 
+/* Issue 23, defect 9: every lattice analysis estimates its work before it
+ * starts and refuses what exceeds its cap (exit 2, one line naming the
+ * estimate and the cap's parameter; `vsph laplacian --dim 3 --n 200
+ * --hdx 8` passed the memory check and ran for minutes). Each refusal is
+ * immediate: 5 s is the margin of a loaded machine. The estimate is the
+ * lattice's: n^d particles times pi (kappa hdx)^2 neighbours, 20^2 x
+ * 4 pi = 5027 for the default patch (cubic, kappa = 2, h = dx), so a cap
+ * of 5000 refuses it and 5100 lets it run. */
+START_TEST(test_work_estimates) {
+  static const char *const cases[][2] = {
+      {"laplacian --dim 3 --n 200 --hdx 8", "Laplacian:max_pairs"},
+      {"dissipation --formulation mgf --field strain --res 3500 --hdx 16",
+       "Dissipation:max_pairs"},
+      {"dissipation --formulation takeda --field strain --res 1000 --hdx 8",
+       "2 passes"},
+      {"scaling --hdx 16 --levels 8", "Scaling:max_pairs"},
+      {"scaling --dim 3 --hdx 4", "Scaling:max_pairs"},
+      {"laplacian --max-pairs 5000", "5.03e+03 neighbour interactions"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    const double t0 = now_s();
+    struct vsph_test_outcome *o = vsph_test_cli(cases[k][0]);
+    refused(o, cases[k][0], cases[k][1]);
+    ck_assert_msg(now_s() - t0 < 5.0, "'%s' took %.1f s", cases[k][0],
+                  now_s() - t0);
+    ck_assert(o->out[0] == '\0');
+  }
+  struct vsph_test_outcome *o = vsph_test_cli("laplacian --max-pairs 5100");
+  ck_assert_msg(o->status == 0, "%s", o->err);
+}
+END_TEST
+
 Suite *vsph_hardening_suite(void) {
   Suite *s = suite_create("hardening");
   TCase *tc = tcase_create("defects");
@@ -703,6 +734,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_support_holds_no_neighbour);
   tcase_add_test(tc, test_series_at_tiny_times);
   tcase_add_test(tc, test_signal_during_setup);
+  tcase_add_test(tc, test_work_estimates);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
