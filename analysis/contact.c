@@ -201,6 +201,13 @@ static void profile(const struct vsph_run *run, const double *disp,
     }
 }
 
+int vsph_contact_defaults(struct vsph_params *prm) {
+  int st = vsph_scene_solver_defaults(&vsph_shear_type, prm);
+  if (!st && !vsph_params_given(prm, "Scene:viscous"))
+    st = vsph_params_set(prm, "Scene:viscous", "0");
+  return st;
+}
+
 int vsph_contact_shear_measure(struct vsph_params *prm,
                                struct vsph_contact_shear *cs) {
   const size_t nprof = cs->nprof < 1 ? 1 : cs->nprof > 8 ? 8 : cs->nprof;

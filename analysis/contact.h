@@ -86,6 +86,14 @@ struct vsph_contact_shear {
   size_t steps;               /*!< steps taken */
 };
 
+/** @brief The measurement's own defaults into the parameters as given
+ *  (before any is read): the shear scene's Solver defaults
+ *  (vsph_scene_solver_defaults: contact SPH, Wendland C2, alpha 0.5, D0 =
+ *  10 nm) and, where Scene:viscous is not given, the inviscid run
+ *  (Scene:viscous = 0) of P002's Table 1, which measures the numerical
+ *  viscosity alone. @return VSPH_OK, VSPH_ENOMEM. */
+int vsph_contact_defaults(struct vsph_params *prm);
+
 /** @brief Run the shear scene with the "Solver" and "Scene" sections of
  *  @p prm (any scheme) and measure its viscosity: at each profile time
  *  the slab means of u_y and of each particle's unwrapped displacement,

@@ -149,6 +149,12 @@ int vsph_cmd_contact_main(int argc, char **argv) {
       return vsph_args_status(CMD, st);
     }
   }
+  /* the measurement's defaults (the paper's inviscid run), into the
+   * parameters as given: the report's jobs add the same */
+  if (vsph_contact_defaults(prm)) {
+    vsph_params_free(prm);
+    return vsph_args_status(CMD, VSPH_ENOMEM);
+  }
   if (threads > 0) omp_set_num_threads((int)threads);
   if (out) {
     int cached;

@@ -16,6 +16,7 @@
 
 #include "../analysis/references.h"
 #include "../common/params.h"
+#include "../solver/scene.h"
 #include "check_suites.h"
 
 static char js[1 << 14];
@@ -307,11 +308,12 @@ END_TEST
 START_TEST(test_contact_inputs) {
   static const char *const cases[][2] = {
       {"run shear --scheme nope", "Solver:scheme"},
-      {"run shear --res 200 --set Scene:left=water", "two materials"},
-      {"run cylinders", "two materials"},
+      {"run shear --scheme wcsph --res 200 --set Scene:left=water",
+       "two materials"},
+      {"run cylinders --scheme wcsph", "two materials"},
       {"run cavity --scheme contact --tvf 0", "wall particles"},
       {"run shear --scheme contact --alpha 0.1", "Solver:alpha"},
-      {"run shear --zeta-num 0.5", "contact only"},
+      {"run shear --scheme wcsph --zeta-num 0.5", "contact only"},
       {"run shear --scheme contact --set Scene:Lz=1e-9", "periodic length"},
       {"run shear --scheme contact --set Scene:material=unobtainium",
        "unknown material"},
@@ -712,6 +714,94 @@ START_TEST(test_work_estimates) {
 }
 END_TEST
 
+/* Issue 23, defect 10: --visc with --scheme contact was refused for "a
+ * two-pass form", a form contact SPH does not use (and --visc mgf ran,
+ * silently unused). Any visc given with the contact scheme is refused as
+ * having no effect, and --help says so. */
+START_TEST(test_visc_with_contact) {
+  static const char *const cases[] = {
+      "run shear --scheme contact --visc pvwf",
+      "run shear --scheme contact --visc mgf --t-end 1e-11",
+      "contact --scheme contact --visc meaf --t-end 1e-10"};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    char args[200];
+    snprintf(args, sizeof args, "%s%s", cases[k],
+             strncmp(cases[k], "run", 3) ? "" : " --out /tmp/vsph_never_visc");
+    struct vsph_test_outcome *o = vsph_test_cli(args);
+    refused(o, cases[k], "has no effect with Solver:scheme = contact");
+    ck_assert_ptr_null(strstr(o->err, "two-pass"));
+    ck_assert(!exists("/tmp/vsph_never_visc"));
+  }
+  struct vsph_test_outcome *o = vsph_test_cli("run --help");
+  ck_assert_int_eq(o->status, 0);
+  ck_assert_msg(strstr(o->out, "refused: contact SPH has no viscous form"),
+                "%s", o->out);
+}
+END_TEST
+
+/* Issue 23, defect 11: every command's default configuration runs (`vsph
+ * contact` and `vsph run shear` with no option said the periodic length
+ * 4e-08 m was too short for the kernel's reach; `vsph run cylinders` that
+ * it needs contact SPH; `vsph dissipation` that --formulation is
+ * required). Each command `vsph --help` lists: the analyses with no option
+ * at all; `vsph run` on every scene and `vsph contact` with only a short
+ * --t-end (and --out, --quiet); report (the whole report, minutes) and
+ * bench (timings, minutes) are not run here, by name, so that a new command
+ * cannot be missed. A run ends "ok"; the analyses print their table. */
+START_TEST(test_defaults_run) {
+  struct vsph_test_outcome *o = vsph_test_cli("--help");
+  ck_assert_int_eq(o->status, 0);
+  static char help[sizeof o->out];
+  memcpy(help, o->out, sizeof help);
+  const char *c = strstr(help, "commands:\n");
+  ck_assert_ptr_nonnull(c);
+  char dir[] = "/tmp/vsph_defaultsXXXXXX";
+  scratch(dir);
+  int seen = 0;
+  for (c = strchr(c, '\n') + 1; *c == ' '; c = strchr(c, '\n') + 1) {
+    char name[32];
+    ck_assert_int_eq(sscanf(c, " %31s", name), 1);
+    seen++;
+    if (!strcmp(name, "report") || !strcmp(name, "bench")) continue;
+    if (!strcmp(name, "run")) {
+      /* short end times: a few steps of each (the scenes' own end times
+       * take from seconds to minutes) */
+      for (size_t i = 0; i < vsph_scene_count(); i++) {
+        const struct vsph_scene_type *t = vsph_scene_get(i);
+        const char *t_end = t == &vsph_shear_type       ? "2e-11"
+                            : t == &vsph_cylinders_type ? "1e-7"
+                            : vsph_scene_is_channel(t)  ? "0.002"
+                                                        : "0.01";
+        char args[300], path[300];
+        snprintf(args, sizeof args, "run %s --t-end %s --out %s/%s --quiet",
+                 t->name, t_end, dir, t->name);
+        o = vsph_test_cli(args);
+        ck_assert_msg(o->status == 0, "'%s' exited %d: %s", args, o->status,
+                      o->err);
+        snprintf(path, sizeof path, "%s/%s/run.json", dir, t->name);
+        vsph_test_slurp(path, js, sizeof js);
+        ck_assert_msg(strstr(js, "\"status\":\t\"ok\"") != NULL, "%s: %s",
+                      t->name, js);
+      }
+      continue;
+    }
+    /* contact: 1.5e-10 s is about 70 steps, each profile a few D0 wide */
+    o = vsph_test_cli(
+        strcmp(name, "contact") ? name : "contact --t-end 1.5e-10 --quiet");
+    ck_assert_msg(o->status == 0, "'vsph %s' exited %d: %s", name, o->status,
+                  o->err);
+    ck_assert_msg(o->out[0] != '\0' && o->err[0] == '\0', "'vsph %s': %s", name,
+                  o->err);
+    if (!strcmp(name, "contact")) /* three profiles, each fitted */
+      ck_assert_msg(strstr(o->out, "nan") == NULL &&
+                        strstr(o->out, "\n1.500000e-10,") != NULL,
+                    "%s", o->out);
+  }
+  ck_assert_int_ge(seen, 9);
+  rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_hardening_suite(void) {
   Suite *s = suite_create("hardening");
   TCase *tc = tcase_create("defects");
@@ -735,6 +825,8 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_series_at_tiny_times);
   tcase_add_test(tc, test_signal_during_setup);
   tcase_add_test(tc, test_work_estimates);
+  tcase_add_test(tc, test_visc_with_contact);
+  tcase_add_test(tc, test_defaults_run);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
