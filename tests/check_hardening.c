@@ -802,6 +802,54 @@ START_TEST(test_defaults_run) {
 }
 END_TEST
 
+/* Issue 23, defect 12: --lattice skipped every check (`contact --lattice
+ * --res 0 --zeta-num 5 --out /dev/full` exited 0). Each option is checked
+ * against its bounds, and one that --lattice would ignore is refused. */
+START_TEST(test_lattice_checks) {
+  static const char *const cases[][2] = {
+      {"contact --lattice --res 0", "Solver:res"},
+      {"contact --lattice --zeta-num 5", "Solver:zeta_num"},
+      {"contact --lattice --out /dev/full", "--out"},
+      {"contact --lattice --res 0 --zeta-num 5 --out /dev/full", "--out"},
+      {"contact --lattice --csv /tmp/vsph_never.csv", "--csv"},
+      {"contact --lattice --profiles 4", "--profiles"},
+      {"contact --lattice --set Scene:bogus=1", "Scene:bogus"},
+      {"contact --lattice --set Scene:U0=-1", "Scene:U0"},
+      {"contact --lattice --res 40", "no effect with --lattice"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    struct vsph_test_outcome *o = vsph_test_cli(cases[k][0]);
+    refused(o, cases[k][0], cases[k][1]);
+    ck_assert(o->out[0] == '\0');
+  }
+  ck_assert(!exists("/tmp/vsph_never.csv"));
+  /* alone it prints the table: Wendland C2's lattice sum at alpha 0.5 */
+  struct vsph_test_outcome *o = vsph_test_cli("contact --lattice --threads 1");
+  ck_assert_int_eq(o->status, 0);
+  ck_assert_msg(strstr(o->out, "\n0.5,0.08583,") != NULL, "%s", o->out);
+}
+END_TEST
+
+/* Issue 23, defect 12: `contact --profiles 8 --t-end 1e-15` (one step)
+ * printed a fit of nu = 299.6 from one row. K profiles need K steps (one
+ * per step): fewer is refused up front. A profile one or two steps old is
+ * narrower than a slab: its fit is printed nan, with the reason. */
+START_TEST(test_fit_needs_information) {
+  struct vsph_test_outcome *o =
+      vsph_test_cli("contact --profiles 8 --t-end 1e-15");
+  refused(o, "contact --profiles 8 --t-end 1e-15", "8 profiles need 8 steps");
+  ck_assert(o->out[0] == '\0');
+  /* two steps (dt = 2.06e-12 s at D0 = 10 nm): both profiles too early */
+  o = vsph_test_cli("contact --profiles 2 --t-end 3e-12 --quiet");
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  ck_assert_msg(strstr(o->out, "\n3.000000e-12,nan,nan,nan,nan,nan,nan\n"),
+                "%s", o->out);
+  ck_assert_msg(strstr(o->out,
+                       "# t = 3.000000e-12: the u_y fit is not "
+                       "available (nan): the profile is narrower"),
+                "%s", o->out);
+}
+END_TEST
+
 Suite *vsph_hardening_suite(void) {
   Suite *s = suite_create("hardening");
   TCase *tc = tcase_create("defects");
@@ -827,6 +875,8 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_work_estimates);
   tcase_add_test(tc, test_visc_with_contact);
   tcase_add_test(tc, test_defaults_run);
+  tcase_add_test(tc, test_lattice_checks);
+  tcase_add_test(tc, test_fit_needs_information);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */
