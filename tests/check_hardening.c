@@ -515,7 +515,9 @@ START_TEST(test_messages_one_line) {
       {"run \"$(printf 'vortex\\npatch')\"", "vortex\\npatch"},
       {"run vortex-patch --res \"$(printf '1\\n2')\"", "Solver:res"},
       {"run vortex-patch --set \"$(printf 'Scene:omega0=1\\t2')\"", "\\t"},
-      {"tensors --kernel \"$(printf 'a\\033[2Jb')\"", "\\x1b"}};
+      {"tensors --kernel \"$(printf 'a\\033[2Jb')\"", "\\x1b"},
+      /* the command's name too (it was printed raw) */
+      {"\"$(printf 'ru\\nn')\"", "unknown command 'ru\\nn'"}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     char script[512];
     snprintf(script, sizeof script, "exec \"$VSPH_BIN\" %s", cases[k][0]);
