@@ -26,6 +26,7 @@ static int images(double d, double W) {
 
 double vsph_contact_shear_u(double x, double t, double nu, double U0,
                             double W) {
+  if (isnan(nu)) return NAN; /* a fit that is not available draws nothing */
   if (!(t > 0.0) || !(nu > 0.0)) {
     const double xm = x - 2.0 * W * floor((x + W) / (2.0 * W));
     return xm > 0.0 ? U0 : xm < 0.0 ? -U0 : 0.0;
@@ -50,6 +51,7 @@ static double erf_time_mean(double xi) {
 
 double vsph_contact_shear_dy(double x, double t, double nu, double U0,
                              double W) {
+  if (isnan(nu)) return NAN;
   if (!(t > 0.0)) return 0.0;
   if (!(nu > 0.0)) return t * vsph_contact_shear_u(x, 0.0, 0.0, U0, W);
   const double d = sqrt(4.0 * nu * t);
@@ -201,6 +203,31 @@ static void profile(const struct vsph_run *run, const double *disp,
     }
 }
 
+int vsph_contact_defaults(struct vsph_params *prm) {
+  int st = vsph_scene_solver_defaults(&vsph_shear_type, prm);
+  if (!st && !vsph_params_given(prm, "Scene:viscous"))
+    st = vsph_params_set(prm, "Scene:viscous", "0");
+  return st;
+}
+
+/* Why the fit @p nu of a profile at @p t is no result, or NULL: narrower
+ * than one slab (the profile's width sqrt(4 nu t) below D0: only the slab
+ * beside the interface departs from +-U0 by more than erfc(1.5) = 3 %, so
+ * one number sets the one parameter and its residual says nothing; a step
+ * or two after the start, when the discrete profile is no diffusion yet:
+ * there the fit came out anywhere from 0.08 to 0.12 Z D0, or 299.6 m^2/s),
+ * or at the end of the fit's search range. */
+static const char *no_fit(double nu, double t, double D0, double lo,
+                          double hi) {
+  if (!isfinite(nu)) return "the fit failed";
+  if (nu <= lo * (1.0 + 1e-9) || nu >= hi * (1.0 - 1e-9))
+    return "the fit reached the end of its search range";
+  if (sqrt(4.0 * nu * t) < D0)
+    return "the profile is narrower than one slab, sqrt(4 nu t) < D0: too "
+           "early to carry information";
+  return NULL;
+}
+
 int vsph_contact_shear_measure(struct vsph_params *prm,
                                struct vsph_contact_shear *cs) {
   const size_t nprof = cs->nprof < 1 ? 1 : cs->nprof > 8 ? 8 : cs->nprof;
@@ -215,6 +242,16 @@ int vsph_contact_shear_measure(struct vsph_params *prm,
   const char *unused = vsph_params_unused(prm);
   if (unused) VSPH_FAIL(VSPH_EINVAL, "unknown parameter '%s'", unused);
   rp.snapshots = 0;
+  /* a profile is taken at the first step past each t_end k/K: K profiles
+   * need K steps at least (a run of one step gave one profile, one step
+   * old, and its "fit") */
+  struct vsph_run_estimate e;
+  if ((st = vsph_run_estimate(&rp, &sc, &e))) return st;
+  if (!(ceil(e.steps) >= (double)nprof))
+    VSPH_FAIL(VSPH_EINVAL,
+              "%zu profiles need %zu steps at least, and the run to t_end = "
+              "%g s takes about %.3g: lengthen t_end or ask fewer profiles",
+              nprof, nprof, rp.t_end > 0 ? rp.t_end : sc.t_end, e.steps);
   struct vsph_run *run = NULL;
   if ((st = vsph_run_alloc(&rp, &sc, &run))) return st;
   const struct vsph_scene_shear *sh = &run->scene.u.shear;
@@ -285,13 +322,16 @@ int vsph_contact_shear_measure(struct vsph_params *prm,
   cs->wall_s = omp_get_wtime() - t0;
   /* fits between 1e-4 and 1e4 times the scale D0 c/10 */
   const double scale = 0.1 * cs->D0 * cs->c0;
+  const double lo = 1e-4 * scale, hi = 1e4 * scale;
   for (size_t q = 0; q < cs->nt; q++) {
-    cs->nu_u[q] =
-        vsph_contact_fit_nu(nb, cs->x, cs->u[q], 0, cs->t[q], cs->U0, cs->W,
-                            1e-4 * scale, 1e4 * scale, &cs->rms_u[q]);
-    cs->nu_dy[q] =
-        vsph_contact_fit_nu(nb, cs->x, cs->dy[q], 1, cs->t[q], cs->U0, cs->W,
-                            1e-4 * scale, 1e4 * scale, &cs->rms_dy[q]);
+    cs->nu_u[q] = vsph_contact_fit_nu(nb, cs->x, cs->u[q], 0, cs->t[q], cs->U0,
+                                      cs->W, lo, hi, &cs->rms_u[q]);
+    cs->nu_dy[q] = vsph_contact_fit_nu(nb, cs->x, cs->dy[q], 1, cs->t[q],
+                                       cs->U0, cs->W, lo, hi, &cs->rms_dy[q]);
+    if ((cs->na_u[q] = no_fit(cs->nu_u[q], cs->t[q], cs->D0, lo, hi)))
+      cs->nu_u[q] = cs->rms_u[q] = NAN;
+    if ((cs->na_dy[q] = no_fit(cs->nu_dy[q], cs->t[q], cs->D0, lo, hi)))
+      cs->nu_dy[q] = cs->rms_dy[q] = NAN;
   }
 done:
   free(disp);

@@ -18,7 +18,7 @@ struct vsph_params;
  *  period (-W, W) (slip walls at +-W/2 are planes of symmetry):
  *  U0 [sum_n erf((x - 2nW)/d) - erf((x - 2nW - W)/d) - 1], d = sqrt(4 nu
  *  t), the images summed while they matter. Stokes' first problem, P002
- *  eq. (10), while d << W. */
+ *  eq. (10), while d << W. NaN for a NaN @p nu (a fit not available). */
 double vsph_contact_shear_u(double x, double t, double nu, double U0, double W);
 
 /** @brief The displacement of the same flow's material line (P002's
@@ -78,20 +78,35 @@ struct vsph_contact_shear {
   double nu_u[8];             /*!< nu fitted to u_y at each time */
   double nu_dy[8];            /*!< nu fitted to the control surface */
   double rms_u[8], rms_dy[8]; /*!< their RMS residuals */
-  size_t nt;                  /*!< profile times reached */
-  int stable;                 /*!< 0: stopped as unstable */
-  double t_stop;              /*!< time reached */
-  char reason[160];           /*!< why it stopped early */
-  double wall_s;              /*!< run time (s) */
-  size_t steps;               /*!< steps taken */
+  /** why a fit is not available (its nu, its RMS are NaN), or NULL: a
+   *  profile narrower than one slab (sqrt(4 nu t) < D0, too early to
+   *  carry information), or a fit at the end of its search range */
+  const char *na_u[8], *na_dy[8];
+  size_t nt;        /*!< profile times reached */
+  int stable;       /*!< 0: stopped as unstable */
+  double t_stop;    /*!< time reached */
+  char reason[160]; /*!< why it stopped early */
+  double wall_s;    /*!< run time (s) */
+  size_t steps;     /*!< steps taken */
 };
+
+/** @brief The measurement's own defaults into the parameters as given
+ *  (before any is read): the shear scene's Solver defaults
+ *  (vsph_scene_solver_defaults: contact SPH, Wendland C2, alpha 0.5, D0 =
+ *  10 nm) and, where Scene:viscous is not given, the inviscid run
+ *  (Scene:viscous = 0) of P002's Table 1, which measures the numerical
+ *  viscosity alone. @return VSPH_OK, VSPH_ENOMEM. */
+int vsph_contact_defaults(struct vsph_params *prm);
 
 /** @brief Run the shear scene with the "Solver" and "Scene" sections of
  *  @p prm (any scheme) and measure its viscosity: at each profile time
  *  the slab means of u_y and of each particle's unwrapped displacement,
- *  and the fitted nu of both. Free with vsph_contact_shear_free.
+ *  and the fitted nu of both. A fit that carries no information is NaN
+ *  with its reason (na_u, na_dy). Free with vsph_contact_shear_free.
  *  @return VSPH_OK (an unstable run is a result), VSPH_EINVAL (bad
- *  parameters: the message names them), VSPH_ENOMEM. */
+ *  parameters, or a run too short for its profiles: fewer steps than
+ *  profiles, each needing a step of its own; the message names them, and
+ *  nothing was run), VSPH_ENOMEM. */
 int vsph_contact_shear_measure(struct vsph_params *prm,
                                struct vsph_contact_shear *cs);
 

@@ -51,6 +51,7 @@ struct raw {
   double angle;
   double epsrel;
   double max_memory;
+  double max_pairs;
 };
 
 #define P struct raw
@@ -79,6 +80,10 @@ static const struct vsph_params_spec DISSIPATION[] = {
                           "relative accuracy of the exact integrals"),
     VSPH_PARAMS_REAL_SPEC(P, max_memory, VSPH_CONSTS_MAX_MEMORY, 1e-3, 4096,
                           "refuse a set estimated to need more memory (GiB)"),
+    VSPH_PARAMS_REAL_SPEC(P, max_pairs, VSPH_CONSTS_MAX_PAIRS, 1e3, 1e15,
+                          "refuse a set estimated to need more neighbour "
+                          "interactions (particles x neighbours x passes; "
+                          "1e9: about 40 s on one core)"),
 };
 #undef P
 
@@ -130,6 +135,7 @@ int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
   dp->seed = (unsigned long)r.seed;
   dp->epsrel = r.epsrel;
   dp->max_memory = r.max_memory;
+  dp->max_pairs = r.max_pairs;
   return VSPH_OK;
 }
 
@@ -266,6 +272,21 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
               "Dissipation:max_memory = %g GiB: lower res or raise "
               "max_memory",
               dp->nacross, gib, n, dp->max_memory);
+  /* The work: every particle gathers from the pi (kappa hdx)^2 lattice
+   * points of its support, twice for a form with a first pass (PVWF, model
+   * A, B, VISC-01..04) */
+  const double r = dp->kernel->kappa * dp->hdx;
+  const double nb = VSPH_PI * r * r;
+  const double pairs = n * nb * (1.0 + vsph_viscous_first_pass(dp->form));
+  if (!(pairs <= dp->max_pairs))
+    VSPH_FAIL(VSPH_EINVAL,
+              "res %zu at h/dx = %g needs about %.3g neighbour interactions "
+              "(%.3g particles x %.3g neighbours%s), more than "
+              "Dissipation:max_pairs = %g: lower res or hdx, or raise "
+              "max_pairs",
+              dp->nacross, dp->hdx, pairs, n, nb,
+              vsph_viscous_first_pass(dp->form) ? " x 2 passes" : "",
+              dp->max_pairs);
   memset(res, 0, sizeof *res);
   const double dx = EXTENT / (double)dp->nacross, h = dp->hdx * dx;
   res->dx = dx;

@@ -38,6 +38,8 @@ struct vsph_dissipation_props {
   unsigned long seed;                    /*!< perturbation seed */
   double epsrel;                         /*!< accuracy of the exact integrals */
   double max_memory; /*!< refuse a set estimated to need more (GiB) */
+  double max_pairs;  /*!< refuse a set estimated to need more neighbour
+                          interactions (each pass counted) */
 };
 
 /** What one evaluation measured (powers in W per unit depth). */

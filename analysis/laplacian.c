@@ -48,6 +48,7 @@ struct raw {
   size_t seed;
   double eta;
   double max_memory;
+  double max_pairs;
 };
 
 #define P struct raw
@@ -71,6 +72,10 @@ static const struct vsph_params_spec LAPLACIAN[] = {
                           "regulariser eta/h of the hybrid forms"),
     VSPH_PARAMS_REAL_SPEC(P, max_memory, VSPH_CONSTS_MAX_MEMORY, 1e-3, 4096,
                           "refuse a set estimated to need more memory (GiB)"),
+    VSPH_PARAMS_REAL_SPEC(P, max_pairs, VSPH_CONSTS_MAX_PAIRS, 1e3, 1e15,
+                          "refuse a set estimated to need more neighbour "
+                          "interactions (particles x neighbours; 1e9: about "
+                          "40 s on one core)"),
 };
 #undef P
 
@@ -113,6 +118,7 @@ int vsph_laplacian_props_init(struct vsph_laplacian_props *lp,
   lp->seed = (unsigned long)r.seed;
   lp->eta = r.eta;
   lp->max_memory = r.max_memory;
+  lp->max_pairs = r.max_pairs;
   return VSPH_OK;
 }
 
@@ -201,6 +207,19 @@ int vsph_laplacian_patch(const struct vsph_laplacian_props *lp,
   /* ghosts: every evaluated particle (shifted by < dx/2) has full
    * support, kappa h + dx/2 + the shift of its neighbours */
   const size_t pad = (size_t)ceil(kap * lp->hdx) + 2;
+  /* the cost, before anything is laid: every evaluated particle gathers
+   * from the lattice points within its support, the ball of radius
+   * kappa hdx in units of dx */
+  const double r = kap * lp->hdx;
+  const double nb =
+      dim == 2 ? VSPH_PI * r * r : 4.0 / 3.0 * VSPH_PI * r * r * r;
+  const double ne = pow((double)lp->n, dim), pairs = ne * nb;
+  if (!(pairs <= lp->max_pairs))
+    VSPH_FAIL(VSPH_EINVAL,
+              "the patch needs about %.3g neighbour interactions (%.3g "
+              "particles x %.3g neighbours), more than Laplacian:max_pairs = "
+              "%g: lower n or hdx, or raise max_pairs",
+              pairs, ne, nb, lp->max_pairs);
   struct vsph_particles *p = NULL;
   int st = lattice(lp, pad, &p);
   if (st) return st;

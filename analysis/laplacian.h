@@ -35,6 +35,8 @@ struct vsph_laplacian_props {
   unsigned long seed; /*!< seed of that shift (mt19937) */
   double eta;         /*!< regulariser eta / h of the hybrid forms */
   double max_memory;  /*!< refuse a set estimated to need more (GiB) */
+  double max_pairs;   /*!< refuse a set estimated to need more neighbour
+                           interactions (n^d pi (kappa hdx)^d in 2-D) */
 };
 
 /** What one test measured. */
@@ -68,8 +70,9 @@ const struct vsph_params_spec *vsph_laplacian_params(size_t *n);
 int vsph_laplacian_props_init(struct vsph_laplacian_props *lp,
                               struct vsph_params *prm);
 
-/** @brief Run the patch test. @return VSPH_OK, VSPH_EINVAL (memory
- *  estimate above max_memory), VSPH_ENOMEM. */
+/** @brief Run the patch test. @return VSPH_OK, VSPH_EINVAL (the estimate
+ *  of its work above max_pairs or of its memory above max_memory, refused
+ *  before anything is allocated), VSPH_ENOMEM. */
 int vsph_laplacian_patch(const struct vsph_laplacian_props *lp,
                          struct vsph_laplacian_result *res);
 

@@ -75,15 +75,22 @@ struct vsph_kernel_type;
  *  U/U0 = 1 - (yc/d)^2 - (32/pi^3) sum_n (-1)^n/(2n+1)^3
  *  cos((2n+1) pi yc/(2d)) exp(-(2n+1)^2 pi^2 nu t/(4 d^2)), and dU/dt
  *  into @p dudt (may be NULL). Terms are summed until they fall below
- *  1e-17 U0; at t = 0 the exact values U = 0, dU/dt = 2 nu U0/d^2. */
+ *  1e-17 U0. Below nu t/W^2 = 0.05, where that series needs ever more
+ *  terms (a million at t = 1e-300), the same solution by the method of
+ *  images: U = g t - sum_n (-1)^n [V(y + n W) + V((n + 1) W - y)], V(s) =
+ *  4 g t i^2erfc(s/(2 sqrt(nu t))), g = 2 nu U0/d^2, a few terms at any t;
+ *  the two agree to rounding where they meet. At t = 0 the exact values
+ *  U = 0, dU/dt = 2 nu U0/d^2. */
 double vsph_references_poiseuille(double y, double t, double W, double nu,
                                   double U0, double *dudt);
 
 /** @brief Couette start-up (Morris et al. 1997, eq. 23 of Zheng et al.):
  *  the wall y = W moves at @p v0 from t = 0:
  *  U = v0 y/W + sum_{n>=1} (2 v0/(n pi)) (-1)^n sin(n pi y/W)
- *  exp(-n^2 pi^2 nu t/W^2), and dU/dt into @p dudt (may be NULL). At
- *  t = 0: U = 0 below the wall (dU/dt is singular there: NaN). */
+ *  exp(-n^2 pi^2 nu t/W^2), and dU/dt into @p dudt (may be NULL); below
+ *  nu t/W^2 = 0.05 by images, U = v0 sum_n [erfc(((2n+1) W - y)/s) -
+ *  erfc(((2n+1) W + y)/s)], s = 2 sqrt(nu t). At t = 0: U = 0 below the
+ *  wall (dU/dt is singular there: NaN). */
 double vsph_references_couette(double y, double t, double W, double nu,
                                double v0, double *dudt);
 

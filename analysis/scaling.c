@@ -28,6 +28,7 @@ struct raw {
   double hdx;
   double mu;
   double h0;
+  double max_pairs;
 };
 
 #define P struct raw
@@ -54,6 +55,10 @@ static const struct vsph_params_spec SCALING[] = {
     VSPH_PARAMS_REAL_SPEC(P, mu, VSPH_CONSTS_MU, 1e-12, 1e6,
                           "dynamic viscosity (Pa s)"),
     VSPH_PARAMS_REAL_SPEC(P, h0, 0.1, 1e-6, 1e3, "largest h (m)"),
+    VSPH_PARAMS_REAL_SPEC(P, max_pairs, VSPH_CONSTS_MAX_PAIRS, 1e3, 1e15,
+                          "refuse a sweep estimated to need more neighbour "
+                          "interactions (every form and level; 1e9: about 15 "
+                          "s in 2-D, 30 s in 3-D on one core)"),
 };
 #undef P
 
@@ -125,6 +130,31 @@ int vsph_scaling_props_init(struct vsph_scaling_props *sp,
   sp->hdx = r.hdx;
   sp->mu = r.mu;
   sp->round_tol = 1e-9;
+  sp->max_pairs = r.max_pairs;
+  return VSPH_OK;
+}
+
+/* The work of one patch of radius @p R dx (half a ball for @p half): each
+ * particle gathers from the ball of radius kappa hdx (in dx) once per pass
+ * of every form (eval_forms runs them all: 13 forms, 21 passes). */
+static double patch_pairs(const struct vsph_scaling_props *sp, int dim,
+                          double R, int half) {
+  const double r = sp->kernel->kappa * sp->hdx;
+  const double ball = dim == 1 ? 2.0 : dim == 2 ? VSPH_PI : 4.0 / 3.0 * VSPH_PI;
+  double passes = 0.0;
+  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
+    passes += 1.0 + vsph_viscous_first_pass(f);
+  return ball * pow(R, dim) * (half ? 0.5 : 1.0) * ball * pow(r, dim) * passes;
+}
+
+static int check_pairs(const struct vsph_scaling_props *sp, double pairs,
+                       const char *what) {
+  if (!(pairs <= sp->max_pairs))
+    VSPH_FAIL(VSPH_EINVAL,
+              "the %s needs about %.3g neighbour interactions (every form, "
+              "every level), more than Scaling:max_pairs = %g: lower hdx or "
+              "levels, or raise max_pairs",
+              what, pairs, sp->max_pairs);
   return VSPH_OK;
 }
 
@@ -178,6 +208,13 @@ int vsph_scaling_surface(const struct vsph_scaling_props *sp,
   if (sp->field.kind != VSPH_FIELDS_STRAIN &&
       sp->field.kind != VSPH_FIELDS_ROTATION)
     VSPH_FAIL(VSPH_EINVAL, "the surface sweep takes strain or rotation");
+  /* every level lays the same patch (radius 2 kappa hdx + 2 in dx) */
+  const int st0 = check_pairs(
+      sp,
+      (double)sp->levels *
+          patch_pairs(sp, dim, 2.0 * sp->kernel->kappa * sp->hdx + 2.0, 1),
+      "surface sweep");
+  if (st0) return st0;
   memset(res, 0, sizeof *res);
   res->levels = sp->levels;
   const double U = sp->field.kind == VSPH_FIELDS_STRAIN ? fabs(sp->field.A)

@@ -33,6 +33,8 @@ struct vsph_scaling_props {
   double hdx;                            /*!< h / dx, fixed */
   double mu;                             /*!< dynamic viscosity (Pa s) */
   double round_tol; /*!< |op| below round_tol mu U / h_min: rounding level */
+  double max_pairs; /*!< refuse a sweep estimated to need more neighbour
+                         interactions (every form, every pass, every level) */
 };
 
 /** Surface sweep results; index l is level l (h = h0 / 2^l). */
@@ -84,7 +86,9 @@ size_t vsph_scaling_hdx_ladder(const double **hdx);
 /** @brief Run the surface sweep: at each level a half-space patch of radius
  *  2 kappa h + 2 dx around the surface particle (exactly what the operators
  *  see: PVWF's second pass reaches 2 kappa h).
- *  @return VSPH_OK, VSPH_EINVAL, VSPH_ENOMEM, VSPH_ELIB. */
+ *  @return VSPH_OK, VSPH_EINVAL (bad props, or the estimate of its work
+ *  above max_pairs: refused before anything is laid), VSPH_ENOMEM,
+ *  VSPH_ELIB. */
 int vsph_scaling_surface(const struct vsph_scaling_props *sp,
                          struct vsph_scaling_result *res);
 

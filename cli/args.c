@@ -1,6 +1,7 @@
 #include "args.h"
 
 #include <errno.h>
+#include <pthread.h>
 #include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -236,5 +237,14 @@ const volatile sig_atomic_t *vsph_args_catch_stop(void) {
   sigemptyset(&sa.sa_mask);
   sigaction(SIGINT, &sa, NULL);
   sigaction(SIGTERM, &sa, NULL);
+  /* a process started with them blocked (the mask is inherited through
+   * fork and exec) would never see them: the run went on deaf to its
+   * stop, then ended "ok". Unblocked here, one already pending is caught
+   * at once, before the run is set up. */
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  pthread_sigmask(SIG_UNBLOCK, &set, NULL);
   return &stop_signal;
 }

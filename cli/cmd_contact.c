@@ -17,24 +17,32 @@
 #include "../runs/shear.h"
 #include "../solver/materials.h"
 #include "../solver/run.h"
+#include "../solver/scene.h"
 #include "args.h"
 
 static const char *const CMD = "contact";
 
 static const char ABOUT[] =
     "The numerical viscosity of a scheme by Parshikov et al.'s shear test\n"
-    "(docs/theory.md section 12): run the shear scene (see vsph scenes;\n"
-    "lead at +-500 m/s by default), then fit the viscosity nu whose exact\n"
-    "solution (Stokes' first problem, with the period's images) best\n"
-    "matches the slab means of u_y and of the particles' displacement (the\n"
-    "paper's control surface). Prints, per profile time, nu and\n"
-    "eta/(Z D0) = nu/(c0 D0) of both fits and their RMS residuals.\n"
-    "Parameters as for vsph run shear (Solver: options below, Scene: by\n"
-    "--set); the paper's runs are --scheme contact --kernel wendland2\n"
-    "--alpha 0.5 --res 80 --set Scene:viscous=0. With --lattice, prints\n"
-    "instead the lattice-sum prediction eta_num/(Z D0) of the acoustic\n"
-    "solver for the Wendland C2 and cubic kernels, P002's fit (37), and\n"
-    "the shear factor of the contact viscous stress on the same lattice.";
+    "(docs/theory.md section 12): run the shear scene (see vsph scenes),\n"
+    "then fit the viscosity nu whose exact solution (Stokes' first\n"
+    "problem, with the period's images) best matches the slab means of u_y\n"
+    "and of the particles' displacement (the paper's control surface).\n"
+    "Prints, per profile time, nu and eta/(Z D0) = nu/(c0 D0) of both fits\n"
+    "and their RMS residuals; a fit that carries no information (a profile\n"
+    "narrower than one slab D0, or a fit at the end of its search range) is\n"
+    "printed nan, with its reason on a # line. With no option it is the\n"
+    "paper's Table 1 run: lead at +-500 m/s, inviscid (Scene:viscous = 0\n"
+    "unless given), contact SPH with Wendland C2 at alpha 0.5, D0 = 10 nm\n"
+    "(res 80), to 4.5 ns (the shear scene's own Solver defaults, which apply\n"
+    "unless --visc or --scheme wcsph is given). Parameters as for vsph run\n"
+    "shear (Solver: options below, whose bracketed defaults are the\n"
+    "table's; Scene: by --set). K profiles need K steps at least: fewer is\n"
+    "refused. With --lattice, prints instead the lattice-sum prediction\n"
+    "eta_num/(Z D0) of the acoustic solver for the Wendland C2 and cubic\n"
+    "kernels, P002's fit (37), and the shear factor of the contact viscous\n"
+    "stress on the same lattice; its table is fixed, so any other option\n"
+    "(but --threads, --quiet) is refused as having no effect.";
 
 static int lattice_table(void) {
   const struct vsph_kernel_type *w = vsph_kernel_find("wendland2"),
@@ -86,6 +94,52 @@ static int write_profiles(const char *path,
   return st;
 }
 
+/* 1 if --profiles is on the line (parsed already: every option but the
+ * three flags takes a value). */
+static int profiles_given(int argc, char **argv) {
+  for (int i = 1; i < argc; i++) {
+    if (!strcmp(argv[i], "--profiles")) return 1;
+    if (strcmp(argv[i], "--lattice") && strcmp(argv[i], "--cache") &&
+        strcmp(argv[i], "--quiet"))
+      i++; /* its value */
+  }
+  return 0;
+}
+
+/* --lattice prints a fixed table: every option is still checked (bounds,
+ * names, unknown keys, the scene), and then one that would have no effect
+ * is refused rather than silently ignored. Returns -1 to go on. */
+static int lattice_checks(struct vsph_params *prm, const char *csv,
+                          const char *out, int cache, int profiles) {
+  const char *drop = out ? "--out" : csv ? "--csv" : cache ? "--cache" : NULL;
+  if (!drop && profiles) drop = "--profiles";
+  if (drop)
+    return vsph_args_fail(CMD,
+                          "%s has no effect with --lattice, which prints its "
+                          "table on standard output and runs nothing: drop %s",
+                          drop, drop);
+  struct vsph_run_props rp;
+  struct vsph_scene sc;
+  int st = vsph_run_props_init(&rp, prm);
+  if (!st) st = vsph_scene_init(&sc, &vsph_shear_type, prm);
+  if (st) return vsph_args_status(CMD, st);
+  const char *unused = vsph_params_unused(prm);
+  if (unused) return vsph_args_fail(CMD, "unknown parameter '%s'", unused);
+  for (size_t i = 0; i < vsph_params_count(prm); i++) {
+    const char *k, *v;
+    int used;
+    vsph_params_entry(prm, i, &k, &v, &used);
+    if (vsph_params_given(prm, k))
+      return vsph_args_fail(
+          CMD,
+          "%s has no effect with --lattice, whose table is fixed (Wendland "
+          "C2 and the cubic B-spline, alpha 0.5-2, the simple cubic "
+          "lattice): drop it",
+          k);
+  }
+  return -1;
+}
+
 int vsph_cmd_contact_main(int argc, char **argv) {
   int lattice = 0;
   size_t nprof = 3;
@@ -94,9 +148,10 @@ int vsph_cmd_contact_main(int argc, char **argv) {
   size_t threads = 0;
   const struct vsph_args_spec own[] = {
       {"--lattice", VSPH_ARGS_FLAG, &lattice, NULL,
-       "print the lattice-sum prediction and exit"},
+       "print the lattice-sum prediction and exit (no other option but "
+       "--threads and --quiet)"},
       {"--profiles", VSPH_ARGS_SIZE, &nprof, "K",
-       "profile times t_end k/K, k = 1..K (1-8) [3]"},
+       "profile times t_end k/K, k = 1..K (1-8; at most one per step) [3]"},
       {"--csv", VSPH_ARGS_STRING, &csv, "FILE",
        "write the profiles and both fits (t, x, u, u_fit, dy, dy_fit)"},
       {"--out", VSPH_ARGS_STRING, &out, "DIR",
@@ -128,6 +183,8 @@ int vsph_cmd_contact_main(int argc, char **argv) {
     rc = vsph_args_fail(CMD, "--cache needs --out DIR");
   if (rc < 0 && out && csv)
     rc = vsph_args_fail(CMD, "--out writes profiles.csv itself: drop --csv");
+  if (rc < 0 && lattice)
+    rc = lattice_checks(prm, csv, out, cache, profiles_given(argc, argv));
   if (rc >= 0) {
     vsph_params_free(prm);
     return rc;
@@ -149,6 +206,12 @@ int vsph_cmd_contact_main(int argc, char **argv) {
       vsph_params_free(prm);
       return vsph_args_status(CMD, st);
     }
+  }
+  /* the measurement's defaults (the paper's inviscid run), into the
+   * parameters as given: the report's jobs add the same */
+  if (vsph_contact_defaults(prm)) {
+    vsph_params_free(prm);
+    return vsph_args_status(CMD, VSPH_ENOMEM);
   }
   if (threads > 0) omp_set_num_threads((int)threads);
   if (out) {
@@ -177,6 +240,14 @@ int vsph_cmd_contact_main(int argc, char **argv) {
     printf("%.6e,%.6e,%.5f,%.3e,%.6e,%.5f,%.3e\n", cs.t[k], cs.nu_u[k],
            cs.nu_u[k] / zd, cs.rms_u[k], cs.nu_dy[k], cs.nu_dy[k] / zd,
            cs.rms_dy[k]);
+  /* a fit that is no result is nan above, and says why here */
+  for (size_t k = 0; k < cs.nt; k++)
+    for (int q = 0; q < 2; q++) {
+      const char *why = q ? cs.na_dy[k] : cs.na_u[k];
+      if (why)
+        printf("# t = %.6e: the %s fit is not available (nan): %s\n", cs.t[k],
+               q ? "control-surface" : "u_y", why);
+    }
   if (csv && (st = write_profiles(csv, &cs))) {
     vsph_contact_shear_free(&cs);
     return vsph_args_status(CMD, st);

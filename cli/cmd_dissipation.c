@@ -43,13 +43,12 @@ int vsph_cmd_dissipation_main(int argc, char **argv) {
        "JSON with keys P, P_exact, P_grad, rel_error, consistency_error, "
        "lattice_error, surface_error, P_pair, momentum, angular, "
        "n_particles, n_interior, h, dx, n_fallback"}};
-  static const char *const required[] = {"formulation", "field", NULL};
   size_t n;
   const struct vsph_params_spec *spec = vsph_dissipation_params(&n);
   const struct vsph_args_section sec = {"Dissipation", spec, n};
   const struct vsph_args_cmd c = {
       CMD,
-      "--formulation NAME --field NAME [options]",
+      "[--formulation NAME] [--field NAME] [options]",
       "Discrete dissipation P = sum_i V_i u_i.(div V)_i of a formulation for\n"
       "an analytic 2-D field on a square (side 1 m) or a disc (diameter 1 m,\n"
       "concentric rings): rotation u = Omega(-y, x) (exact P = 0), strain\n"
@@ -64,7 +63,7 @@ int vsph_cmd_dissipation_main(int argc, char **argv) {
       1,
       &sec,
       1,
-      required};
+      NULL};
   struct vsph_params *prm = vsph_params_alloc();
   if (!prm) return vsph_args_status(CMD, VSPH_ENOMEM);
   const int rc = vsph_args_parse(&c, argc, argv, prm);

@@ -61,7 +61,13 @@ static const char ABOUT[] =
     "DIR must be new, empty or a vsph scene run's (its files are replaced);\n"
     "anything else in it is refused before anything is touched.\n"
     "A run that goes unstable stops cleanly, keeps its output and is marked\n"
-    "unstable in run.json (exit status 0: stability is a result).";
+    "unstable in run.json (exit status 0: stability is a result). SIGINT\n"
+    "or SIGTERM ends the run after its step (run.json says interrupted)\n"
+    "with exit status 128 + the signal. The bracketed defaults below are\n"
+    "the Solver table's; a scene may take its own (vsph scenes lists them):\n"
+    "shear and cylinders run contact SPH (Wendland C2, alpha 0.5) unless\n"
+    "--visc or --scheme wcsph is given. --visc with --scheme contact is\n"
+    "refused: contact SPH has no viscous form.";
 
 int vsph_cmd_run_main(int argc, char **argv) {
   const char *out_dir = NULL;
@@ -103,6 +109,12 @@ int vsph_cmd_run_main(int argc, char **argv) {
     vsph_params_free(prm);
     return rc;
   }
+  /* the scene's own Solver defaults (vsph scenes lists them), into the
+   * parameters as given: the report's jobs add the same */
+  if (vsph_scene_solver_defaults(vsph_scene_find(argv[1]), prm)) {
+    vsph_params_free(prm);
+    return vsph_args_status(CMD, VSPH_ENOMEM);
+  }
   if (threads > 0) omp_set_num_threads((int)threads);
   /* SIGINT/SIGTERM: the run stops after the current step (runs/rundir) */
   const volatile sig_atomic_t *stop = vsph_args_catch_stop();
@@ -132,6 +144,15 @@ int vsph_cmd_run_main(int argc, char **argv) {
     return 128 + (int)*stop;
   }
   if (st) return vsph_args_status(CMD, st);
+  if (*stop) { /* the signal came after the last step, while the run's last
+                  row and files were written: the run is whole, and the
+                  signal still ends the command as a signal does */
+    fprintf(stderr,
+            "vsph run: signal %d came after the last step: the run is "
+            "complete (run.json in %s says so)\n",
+            (int)*stop, res.dir);
+    return 128 + (int)*stop;
+  }
   if (res.cached) return vsph_args_finish(CMD, 0);
   if (quiet && res.unstable)
     fprintf(stderr, "vsph run: unstable at t = %.6g: %s (output kept in %s)\n",
@@ -158,10 +179,17 @@ int vsph_cmd_run_scenes(int argc, char **argv) {
   print_table("Solver: section (all scenes)", spec, n);
   for (size_t i = 0; i < vsph_scene_count(); i++) {
     const struct vsph_scene_type *t = vsph_scene_get(i);
-    char title[256];
+    char title[640];
+    char sd[200];
+    vsph_scene_solver_defaults_text(t, sd, sizeof sd);
     snprintf(title, sizeof title,
-             "\n%s: %s\n  --res counts particles across %s. Scene: section",
-             t->name, t->description, t->length_name);
+             "\n%s: %s\n  --res counts particles across %s.%s%s%s Scene: "
+             "section",
+             t->name, t->description, t->length_name,
+             sd[0] ? "\n  Solver defaults of its own (unless --visc or "
+                     "--scheme wcsph is given): "
+                   : "",
+             sd, sd[0] ? "." : "");
     print_table(title, t->params, t->nparams);
   }
   return vsph_args_finish("scenes", 0);

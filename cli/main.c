@@ -90,6 +90,6 @@ int main(int argc, char **argv) {
     if (!strcmp(argv[1], commands[i].name))
       return vsph_args_finish(commands[i].name,
                               commands[i].fn(argc - 1, argv + 1));
-  fprintf(stderr, "vsph: unknown command '%s' (see vsph --help)\n", argv[1]);
-  return 2;
+  /* the name echoed through the one message path: escaped and capped */
+  return vsph_args_fail("", "unknown command '%s' (see vsph --help)", argv[1]);
 }

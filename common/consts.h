@@ -26,6 +26,16 @@ extern const char vsph_source_hash_id[];
  *  raise it). */
 #define VSPH_CONSTS_MAX_MEMORY 4.0
 
+/** Default work budget of one lattice analysis (vsph laplacian,
+ *  dissipation, scaling), in neighbour interactions (a particle gathering
+ *  from one neighbour, each pass counted): at most about 40 s on one core
+ *  of the project's machine (measured 2.6e7/s for the Laplacian forms in
+ *  3-D, 2.8e7/s for model A's two passes, 7e7/s for the scaling's every
+ *  form). Larger ones are refused up front with their estimate
+ *  (Laplacian:max_pairs, Dissipation:max_pairs, Scaling:max_pairs raise
+ *  it). */
+#define VSPH_CONSTS_MAX_PAIRS 1e9
+
 /** Default seed of the mt19937 generator that perturbs lattices. */
 #define VSPH_CONSTS_SEED 2385
 

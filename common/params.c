@@ -20,6 +20,7 @@ struct entry {
   char key[KEY_MAX];
   char value[VALUE_MAX];
   int used;
+  int given;       /* 1: set or read from a file; 0: a default filled in */
   unsigned source; /* the vsph_params_read that stored it; 0: not a file */
 };
 
@@ -112,9 +113,11 @@ static int put(struct vsph_params *prm, const char *key, const char *value,
     prm->e[prm->n++] = e;
     snprintf(e->key, KEY_MAX, "%s", key);
     e->used = 0;
+    e->given = 0;
   }
   snprintf(e->value, VALUE_MAX, "%s", value);
   e->used |= used;
+  e->given |= !used; /* the getters put defaults as used, and only those */
   e->source = source;
   return VSPH_OK;
 }
@@ -395,6 +398,11 @@ const char *vsph_params_unused(const struct vsph_params *prm) {
 }
 
 size_t vsph_params_count(const struct vsph_params *prm) { return prm->n; }
+
+int vsph_params_given(const struct vsph_params *prm, const char *key) {
+  const struct entry *e = prm ? find(prm, key) : NULL;
+  return e && e->given;
+}
 
 void vsph_params_entry(const struct vsph_params *prm, size_t i,
                        const char **key, const char **value, int *used) {

@@ -60,6 +60,11 @@ int vsph_params_get_string_or(struct vsph_params *prm, const char *key,
 /** @brief The first key given but never read, or NULL. */
 const char *vsph_params_unused(const struct vsph_params *prm);
 
+/** @brief 1 if @p key was given (by a file, a setting or an option), 0 if
+ *  it is absent or holds a default a getter filled in. @p prm may be NULL
+ *  (0). */
+int vsph_params_given(const struct vsph_params *prm, const char *key);
+
 /** @brief Number of entries (given or used). */
 size_t vsph_params_count(const struct vsph_params *prm);
 

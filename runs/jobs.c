@@ -50,6 +50,13 @@ static int params_of(const struct vsph_jobs_job *j, struct vsph_params **out) {
   int st = VSPH_OK;
   for (size_t k = 0; k < j->nset && !st; k++)
     st = vsph_params_assign(prm, j->set[k]);
+  /* the defaults the job's command adds (vsph run: the scene's Solver
+   * defaults; vsph contact: the measurement's), so that its key here is
+   * the one the command writes */
+  if (!st && j->kind == VSPH_REPORT_JOB_SHEAR)
+    st = vsph_contact_defaults(prm);
+  else if (!st && vsph_scene_find(j->scene))
+    st = vsph_scene_solver_defaults(vsph_scene_find(j->scene), prm);
   if (st) {
     vsph_params_free(prm);
     return st;

@@ -23,7 +23,7 @@ static const struct vsph_params_spec SOLVER[] = {
                           "viscous formulation: " VSPH_VISCOUS_NAMES
                           " (docs/theory.md sections 3 and 8: vi, cleary, "
                           "takeda(0), twopass are Basa et al.'s models C, D, "
-                          "A, B)"),
+                          "A, B); scheme wcsph only"),
     VSPH_PARAMS_REAL_SPEC(P, xi, VSPH_VISCOUS_XI_CLEARY, 0.1, 100.0,
                           "Cleary's coefficient xi (visc = cleary only; "
                           "4.96333 Cleary, 4.24 Basa et al.)"),
@@ -93,7 +93,8 @@ static const struct vsph_params_spec SOLVER[] = {
                           "wcsph (THEORY 5 with the viscous formulation "
                           "visc) or contact (Parshikov et al.'s Godunov-type "
                           "SPH: the acoustic Riemann solution between each "
-                          "pair, the contact viscous stress; visc unused)"),
+                          "pair, the contact viscous stress; a visc given "
+                          "with it is refused, as it would have no effect)"),
     VSPH_PARAMS_REAL_SPEC(P, alpha, 0.0, 0.0, 4.0,
                           "contact: h = 2 alpha dx (Parshikov's h_ij = "
                           "alpha (D_i + D_j) at the initial spacing); 0: "
@@ -146,6 +147,17 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
   if ((st = vsph_equations_scheme_resolve(rp->scheme, &rp->scheme_kind)))
     return st;
   const int contact = rp->scheme_kind == VSPH_EQUATIONS_CONTACT;
+  /* contact SPH has no viscous form: its pairs take the Riemann solution
+   * and the contact viscous stress, so a visc given with it would be
+   * silently unused (and PVWF's two supports asked for periods it does not
+   * need) */
+  if (contact && vsph_params_given(prm, "Solver:visc"))
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:visc = %s has no effect with Solver:scheme = contact "
+              "(its pairs take the Riemann solution and the contact viscous "
+              "stress, not a viscous form): drop visc, or choose scheme "
+              "wcsph",
+              rp->visc);
   if (!contact && (rp->alpha > 0.0 || rp->zeta_num > 0.0 || rp->eta_num > 0.0))
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:alpha, zeta_num and eta_num apply to Solver:scheme = "
@@ -206,7 +218,9 @@ static int check_cost(const struct vsph_run_props *rp,
       sc->area * pow((double)rp->res, sc->dim) + 4.0 * (double)rp->res;
   /* ghosts: a layer of reach/dx + 1 particles along each wall, over at
    * most twice the fluid's side (n^((d-1)/d)), corners included */
-  const double deep = vsph_viscous_passes(rp->form);
+  const double deep = rp->scheme_kind == VSPH_EQUATIONS_CONTACT
+                          ? 1.0
+                          : vsph_viscous_passes(rp->form);
   for (int a = 0; a < sc->dim; a++) {
     const double L = vsph_walls_period(&sc->walls, a);
     const double reach = deep * rp->ktype->kappa * h;

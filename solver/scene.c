@@ -1,6 +1,7 @@
 #include "scene.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "../common/params.h"
@@ -36,6 +37,39 @@ const struct vsph_scene_type *vsph_scene_find(const char *name) {
   for (size_t i = 0; i < vsph_scene_count(); i++)
     if (!strcmp(scene_table[i]->name, name)) return scene_table[i];
   return NULL;
+}
+
+int vsph_scene_solver_defaults(const struct vsph_scene_type *type,
+                               struct vsph_params *prm) {
+  if (!type->solver_defaults || vsph_params_given(prm, "Solver:visc"))
+    return VSPH_OK;
+  if (vsph_params_given(prm, "Solver:scheme")) { /* theirs, or none */
+    const char *given, *mine = "";
+    vsph_params_get_string_or(prm, "Solver:scheme", "", &given);
+    for (const char *const *d = type->solver_defaults; *d; d++)
+      if (!strncmp(*d, "scheme=", 7)) mine = *d + 7;
+    if (strcmp(given, mine)) return VSPH_OK;
+  }
+  for (const char *const *d = type->solver_defaults; *d; d++) {
+    const char *eq = strchr(*d, '=');
+    char key[64];
+    snprintf(key, sizeof key, "Solver:%.*s", (int)(eq - *d), *d);
+    if (vsph_params_given(prm, key)) continue;
+    /* a default alpha would set h = 2 alpha dx over a given hdx */
+    if (!strcmp(key, "Solver:alpha") && vsph_params_given(prm, "Solver:hdx"))
+      continue;
+    const int st = vsph_params_set(prm, key, eq + 1);
+    if (st) return st;
+  }
+  return VSPH_OK;
+}
+
+void vsph_scene_solver_defaults_text(const struct vsph_scene_type *type,
+                                     char *buf, size_t len) {
+  size_t n = 0;
+  buf[0] = '\0';
+  for (const char *const *d = type->solver_defaults; d && *d && n < len; d++)
+    n += (size_t)snprintf(buf + n, len - n, "%s%s", n ? " " : "", *d);
 }
 
 int vsph_scene_init(struct vsph_scene *sc, const struct vsph_scene_type *type,

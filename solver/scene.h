@@ -140,6 +140,10 @@ struct vsph_scene_type {
   /** Lay out the fluid: @p res particles across the reference length. */
   int (*init)(const struct vsph_scene *sc, size_t res,
               struct vsph_particles **out);
+  /** "key=value" settings of the Solver section that this scene takes
+   *  instead of the table's defaults, NULL-terminated (NULL: none); see
+   *  vsph_scene_solver_defaults. */
+  const char *const *solver_defaults;
 };
 
 /** A configured scene. */
@@ -201,6 +205,22 @@ const struct vsph_scene_type *vsph_scene_get(size_t i);
 
 /** @brief Scene called @p name, or NULL. */
 const struct vsph_scene_type *vsph_scene_find(const char *name);
+
+/** @brief Give @p prm the Solver settings of @p type's own defaults
+ *  (type->solver_defaults: the scenes that need contact SPH, or whose
+ *  paper ran it, run it by default): they apply unless Solver:visc is
+ *  given (a visc asks for the WCSPH scheme) or Solver:scheme is given as
+ *  another scheme than theirs, each only where its key is not given, and
+ *  alpha (which sets h = 2 alpha dx) not where Solver:hdx is given.
+ *  Called on the parameters as given, before any is read (the cache key
+ *  then holds them). @return VSPH_OK, VSPH_ENOMEM. */
+int vsph_scene_solver_defaults(const struct vsph_scene_type *type,
+                               struct vsph_params *prm);
+
+/** @brief The Solver defaults of @p type as one line ("scheme=contact
+ *  kernel=wendland2 ..."; "" for none) into @p buf. */
+void vsph_scene_solver_defaults_text(const struct vsph_scene_type *type,
+                                     char *buf, size_t len);
 
 /** @brief Read the scene's parameters ("Scene:<key>", defaults and bounds
  *  from its table; @p prm may be NULL for all defaults) into its typed

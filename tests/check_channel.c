@@ -42,13 +42,14 @@ static double fd_solve(double f, double top, double t, double y) {
   return v;
 }
 
-/* The series against that solution at y = 1/2 and 1/4, t = 0.02 and 0.1
- * (W = nu = 1): backward Euler's error is O(dt) = 5e-6 t per unit time
- * and the differences' O(dy^2/12 u'''') about 1e-6 of the scale, so 2e-5
- * of U0 (or v0). */
+/* The series against that solution at y = 1/2 and 1/4, t = 0.005, 0.02
+ * and 0.1 (W = nu = 1; below nu t/W^2 = 0.05 the references sum images,
+ * above it the Fourier series): backward Euler's error is O(dt) = 5e-6 t
+ * per unit time and the differences' O(dy^2/12 u'''') about 1e-6 of the
+ * scale, so 2e-5 of U0 (or v0). */
 START_TEST(test_series_vs_fd) {
-  static const double ts[2] = {0.02, 0.1}, ys[2] = {0.5, 0.25};
-  for (int a = 0; a < 2; a++)
+  static const double ts[3] = {0.005, 0.02, 0.1}, ys[2] = {0.5, 0.25};
+  for (int a = 0; a < 3; a++)
     for (int b = 0; b < 2; b++) {
       /* Poiseuille, U0 = 1: f = 2 nu U0/d^2 = 8 */
       const double up = vsph_references_poiseuille(ys[b], ts[a], 1, 1, 1, NULL);
@@ -81,17 +82,40 @@ START_TEST(test_series_digest) {
       1e-5);
   ck_assert_double_eq_tol(vsph_references_couette(W / 4, 0.225, W, nu, v0, 0),
                           5.030e-6, 1e-9);
-  for (int c = 0; c < 2; c++) {
-    const double t = 0.05, e = 1e-6 * t;
+  for (int c = 0; c < 4; c++) { /* t = 0.05: Fourier; 0.01: images */
+    const double t = c < 2 ? 0.05 : 0.01, e = 1e-6 * t;
     double rate;
     double (*fn)(double, double, double, double, double, double *) =
-        c ? vsph_references_couette : vsph_references_poiseuille;
+        c % 2 ? vsph_references_couette : vsph_references_poiseuille;
     fn(0.3, t, 1, 1, 1, &rate);
     const double fd =
         (fn(0.3, t + e, 1, 1, 1, NULL) - fn(0.3, t - e, 1, 1, 1, NULL)) /
         (2 * e);
     ck_assert_double_eq_tol(rate, fd, 1e-7 * fabs(fd));
   }
+}
+END_TEST
+
+/* The two forms of each series meet at nu t/W^2 = 0.05 (the images
+ * below, Fourier's above): either side of it, 1e-15 of the time apart (a
+ * change of U below 1e-14), U agrees to 1e-14 of U0 and dU/dt to 1e-12 of
+ * its scale (8 U0 nu/W^2: the rate sums lose more to rounding), at 21
+ * heights across (W = nu = U0 = 1). */
+START_TEST(test_series_forms_meet) {
+  const double t = 0.05;
+  for (int c = 0; c < 2; c++)
+    for (int k = 0; k <= 20; k++) {
+      double (*fn)(double, double, double, double, double, double *) =
+          c ? vsph_references_couette : vsph_references_poiseuille;
+      double ra, rb;
+      const double y = k / 20.0;
+      const double a = fn(y, t * (1 - 1e-15), 1, 1, 1, &ra);
+      const double b = fn(y, t, 1, 1, 1, &rb);
+      ck_assert_msg(fabs(a - b) <= 1e-14, "%s y = %g: %.17g, %.17g",
+                    c ? "couette" : "poiseuille", y, a, b);
+      ck_assert_msg(fabs(ra - rb) <= 8e-12, "%s y = %g: rate %.17g, %.17g",
+                    c ? "couette" : "poiseuille", y, ra, rb);
+    }
 }
 END_TEST
 
@@ -307,6 +331,7 @@ Suite *vsph_channel_suite(void) {
   tcase_set_timeout(tc, 120);
   tcase_add_test(tc, test_series_vs_fd);
   tcase_add_test(tc, test_series_digest);
+  tcase_add_test(tc, test_series_forms_meet);
   tcase_add_test(tc, test_channel_energy);
   tcase_add_test(tc, test_linear_extrapolation);
   tcase_add_test(tc, test_periodic_rest_threads);

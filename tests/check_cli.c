@@ -72,7 +72,7 @@ static const char *const bad_inputs[] = {
     "scaling --levels two",
     "scaling --hdx 0",
     "scaling --kernel nope",
-    "dissipation --field strain",
+    "dissipation --field strain --max-pairs 10",
     "dissipation --formulation sph --field strain",
     "dissipation --formulation mgf --field vortex",
     "dissipation --formulation mgf --field strain --shape circle",

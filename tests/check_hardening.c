@@ -4,6 +4,7 @@
  * read in quadratic time, a signal leaving no run.json, a reused folder
  * mixing two runs. Bad values that only needed bounds are in check_cli.c's
  * table of bad inputs. */
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,7 +14,9 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "../analysis/references.h"
 #include "../common/params.h"
+#include "../solver/scene.h"
 #include "check_suites.h"
 
 static char js[1 << 14];
@@ -313,11 +316,12 @@ END_TEST
 START_TEST(test_contact_inputs) {
   static const char *const cases[][2] = {
       {"run shear --scheme nope", "Solver:scheme"},
-      {"run shear --res 200 --set Scene:left=water", "two materials"},
-      {"run cylinders", "two materials"},
+      {"run shear --scheme wcsph --res 200 --set Scene:left=water",
+       "two materials"},
+      {"run cylinders --scheme wcsph", "two materials"},
       {"run cavity --scheme contact --tvf 0", "wall particles"},
       {"run shear --scheme contact --alpha 0.1", "Solver:alpha"},
-      {"run shear --zeta-num 0.5", "contact only"},
+      {"run shear --scheme wcsph --zeta-num 0.5", "contact only"},
       {"run shear --scheme contact --set Scene:Lz=1e-9", "periodic length"},
       {"run shear --scheme contact --set Scene:material=unobtainium",
        "unknown material"},
@@ -519,7 +523,9 @@ START_TEST(test_messages_one_line) {
       {"run \"$(printf 'vortex\\npatch')\"", "vortex\\npatch"},
       {"run vortex-patch --res \"$(printf '1\\n2')\"", "Solver:res"},
       {"run vortex-patch --set \"$(printf 'Scene:omega0=1\\t2')\"", "\\t"},
-      {"tensors --kernel \"$(printf 'a\\033[2Jb')\"", "\\x1b"}};
+      {"tensors --kernel \"$(printf 'a\\033[2Jb')\"", "\\x1b"},
+      /* the command's name too (it was printed raw) */
+      {"\"$(printf 'ru\\nn')\"", "unknown command 'ru\\nn'"}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     char script[512];
     snprintf(script, sizeof script, "exec \"$VSPH_BIN\" %s", cases[k][0]);
@@ -605,6 +611,255 @@ START_TEST(test_report_job_inputs) {
 }
 END_TEST
 
+/* Seconds since an arbitrary start (CLOCK_MONOTONIC). */
+static double now_s(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Issue 23, defect 9: the channels' start-up series at a tiny time summed
+ * a million terms per call (t = 1e-300: 74 s for one energy row of a
+ * 40 x 40 channel, during which a signal went unheeded) and still missed:
+ * U(W/2) came out at rounding of U0 (1e-16) instead of the drive times t.
+ * Near t = 0 the centre moves as a rigid slab, U = g t with g = 2 nu
+ * U0/d^2 = 8 here (W = nu = U0 = 1) and dU/dt = g, the walls still (U = 0,
+ * dU/dt = 0), and Couette's fluid has not moved (U = 0); the wall
+ * layers reach sqrt(nu t) = 1e-150, so every correction is exp(-1e299):
+ * the values are exact to rounding (1e-12 allows for it). 2000 calls must
+ * take well under a second (the old sum: about 50 s; 2 s is the margin of
+ * a loaded machine for what takes milliseconds), and the one-step run of
+ * the defect within 10 s (it took 74 s; it takes about 0.1 s). */
+START_TEST(test_series_at_tiny_times) {
+  double rate;
+  const double u = vsph_references_poiseuille(0.5, 1e-300, 1, 1, 1, &rate);
+  ck_assert_msg(fabs(u - 8e-300) <= 1e-12 * 8e-300, "U = %g", u);
+  ck_assert_double_eq_tol(rate, 8.0, 1e-12 * 8.0);
+  ck_assert(vsph_references_poiseuille(0.0, 1e-300, 1, 1, 1, &rate) == 0.0);
+  ck_assert_double_eq_tol(rate, 0.0, 1e-12);
+  ck_assert_double_eq_tol(vsph_references_couette(0.5, 1e-300, 1, 1, 1, NULL),
+                          0.0, 1e-12);
+  double t0 = now_s(), sum = 0.0;
+  for (int k = 0; k < 1000; k++) {
+    sum += vsph_references_poiseuille(k / 999.0, 1e-300, 1, 1, 1, &rate);
+    sum += vsph_references_couette(k / 999.0, 1e-300, 1, 1, 1, &rate);
+  }
+  ck_assert_msg(now_s() - t0 < 2.0, "2000 calls took %.2f s", now_s() - t0);
+  ck_assert(isfinite(sum));
+  char dir[] = "/tmp/vsph_tinyXXXXXX", args[200];
+  scratch(dir);
+  snprintf(args, sizeof args,
+           "run poiseuille --res 40 --t-end 1e-300 --out %s/r --quiet", dir);
+  t0 = now_s();
+  struct vsph_test_outcome *o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 0, "exit %d: %s", o->status, o->err);
+  ck_assert_msg(now_s() - t0 < 10.0, "the one-step run took %.1f s",
+                now_s() - t0);
+  rm_tree(dir);
+}
+END_TEST
+
+/* Issue 23, defect 9: a stop requested during the set-up is honoured. A
+ * SIGTERM that is pending when vsph starts (sent while blocked: the mask
+ * and the pending signal survive exec) reached no handler, and the run
+ * went on to "ok" and exit 0. Now it is caught before the run: exit 143,
+ * run.json "interrupted" at t = 0. */
+START_TEST(test_signal_during_setup) {
+  char dir[] = "/tmp/vsph_setupXXXXXX", out[64], path[96];
+  scratch(dir);
+  snprintf(out, sizeof out, "%s/r", dir);
+  const pid_t pid = fork();
+  ck_assert_int_ge(pid, 0);
+  if (pid == 0) {
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGTERM);
+    sigprocmask(SIG_BLOCK, &set, NULL);
+    kill(getpid(), SIGTERM); /* pending */
+    if (!freopen("/dev/null", "w", stderr)) _exit(126);
+    execl(getenv("VSPH_BIN"), "vsph", "run", "poiseuille", "--res", "16",
+          "--t-end", "1e-300", "--out", out, "--quiet", (char *)NULL);
+    _exit(127);
+  }
+  int status;
+  ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+  ck_assert(WIFEXITED(status));
+  ck_assert_int_eq(WEXITSTATUS(status), 128 + SIGTERM);
+  snprintf(path, sizeof path, "%s/run.json", out);
+  vsph_test_slurp(path, js, sizeof js);
+  ck_assert_msg(strstr(js, "\"interrupted\"") != NULL, "%s", js);
+  ck_assert_ptr_null(strstr(js, "\"ok\""));
+  rm_tree(dir);
+}
+END_TEST
+
+/* Issue 23, defect 9: every lattice analysis estimates its work before it
+ * starts and refuses what exceeds its cap (exit 2, one line naming the
+ * estimate and the cap's parameter; `vsph laplacian --dim 3 --n 200
+ * --hdx 8` passed the memory check and ran for minutes). Each refusal is
+ * immediate: 5 s is the margin of a loaded machine. The estimate is the
+ * lattice's: n^d particles times pi (kappa hdx)^2 neighbours, 20^2 x
+ * 4 pi = 5027 for the default patch (cubic, kappa = 2, h = dx), so a cap
+ * of 5000 refuses it and 5100 lets it run. */
+START_TEST(test_work_estimates) {
+  static const char *const cases[][2] = {
+      {"laplacian --dim 3 --n 200 --hdx 8", "Laplacian:max_pairs"},
+      {"dissipation --formulation mgf --field strain --res 3500 --hdx 16",
+       "Dissipation:max_pairs"},
+      {"dissipation --formulation takeda --field strain --res 1000 --hdx 8",
+       "2 passes"},
+      {"scaling --hdx 16 --levels 8", "Scaling:max_pairs"},
+      {"scaling --dim 3 --hdx 4", "Scaling:max_pairs"},
+      {"laplacian --max-pairs 5000", "5.03e+03 neighbour interactions"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    const double t0 = now_s();
+    struct vsph_test_outcome *o = vsph_test_cli(cases[k][0]);
+    refused(o, cases[k][0], cases[k][1]);
+    ck_assert_msg(now_s() - t0 < 5.0, "'%s' took %.1f s", cases[k][0],
+                  now_s() - t0);
+    ck_assert(o->out[0] == '\0');
+  }
+  struct vsph_test_outcome *o = vsph_test_cli("laplacian --max-pairs 5100");
+  ck_assert_msg(o->status == 0, "%s", o->err);
+}
+END_TEST
+
+/* Issue 23, defect 10: --visc with --scheme contact was refused for "a
+ * two-pass form", a form contact SPH does not use (and --visc mgf ran,
+ * silently unused). Any visc given with the contact scheme is refused as
+ * having no effect, and --help says so. */
+START_TEST(test_visc_with_contact) {
+  static const char *const cases[] = {
+      "run shear --scheme contact --visc pvwf",
+      "run shear --scheme contact --visc mgf --t-end 1e-11",
+      "contact --scheme contact --visc meaf --t-end 1e-10"};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    char args[200];
+    snprintf(args, sizeof args, "%s%s", cases[k],
+             strncmp(cases[k], "run", 3) ? "" : " --out /tmp/vsph_never_visc");
+    struct vsph_test_outcome *o = vsph_test_cli(args);
+    refused(o, cases[k], "has no effect with Solver:scheme = contact");
+    ck_assert_ptr_null(strstr(o->err, "two-pass"));
+    ck_assert(!exists("/tmp/vsph_never_visc"));
+  }
+  struct vsph_test_outcome *o = vsph_test_cli("run --help");
+  ck_assert_int_eq(o->status, 0);
+  ck_assert_msg(strstr(o->out, "refused: contact SPH has no viscous form"),
+                "%s", o->out);
+}
+END_TEST
+
+/* Issue 23, defect 11: every command's default configuration runs (`vsph
+ * contact` and `vsph run shear` with no option said the periodic length
+ * 4e-08 m was too short for the kernel's reach; `vsph run cylinders` that
+ * it needs contact SPH; `vsph dissipation` that --formulation is
+ * required). Each command `vsph --help` lists: the analyses with no option
+ * at all; `vsph run` on every scene and `vsph contact` with only a short
+ * --t-end (and --out, --quiet); report (the whole report, minutes) and
+ * bench (timings, minutes) are not run here, by name, so that a new command
+ * cannot be missed. A run ends "ok"; the analyses print their table. */
+START_TEST(test_defaults_run) {
+  struct vsph_test_outcome *o = vsph_test_cli("--help");
+  ck_assert_int_eq(o->status, 0);
+  static char help[sizeof o->out];
+  memcpy(help, o->out, sizeof help);
+  const char *c = strstr(help, "commands:\n");
+  ck_assert_ptr_nonnull(c);
+  char dir[] = "/tmp/vsph_defaultsXXXXXX";
+  scratch(dir);
+  int seen = 0;
+  for (c = strchr(c, '\n') + 1; *c == ' '; c = strchr(c, '\n') + 1) {
+    char name[32];
+    ck_assert_int_eq(sscanf(c, " %31s", name), 1);
+    seen++;
+    if (!strcmp(name, "report") || !strcmp(name, "bench")) continue;
+    if (!strcmp(name, "run")) {
+      /* short end times: a few steps of each (the scenes' own end times
+       * take from seconds to minutes) */
+      for (size_t i = 0; i < vsph_scene_count(); i++) {
+        const struct vsph_scene_type *t = vsph_scene_get(i);
+        const char *t_end = t == &vsph_shear_type       ? "2e-11"
+                            : t == &vsph_cylinders_type ? "1e-7"
+                            : vsph_scene_is_channel(t)  ? "0.002"
+                                                        : "0.01";
+        char args[300], path[300];
+        snprintf(args, sizeof args, "run %s --t-end %s --out %s/%s --quiet",
+                 t->name, t_end, dir, t->name);
+        o = vsph_test_cli(args);
+        ck_assert_msg(o->status == 0, "'%s' exited %d: %s", args, o->status,
+                      o->err);
+        snprintf(path, sizeof path, "%s/%s/run.json", dir, t->name);
+        vsph_test_slurp(path, js, sizeof js);
+        ck_assert_msg(strstr(js, "\"status\":\t\"ok\"") != NULL, "%s: %s",
+                      t->name, js);
+      }
+      continue;
+    }
+    /* contact: 1.5e-10 s is about 70 steps, each profile a few D0 wide */
+    o = vsph_test_cli(
+        strcmp(name, "contact") ? name : "contact --t-end 1.5e-10 --quiet");
+    ck_assert_msg(o->status == 0, "'vsph %s' exited %d: %s", name, o->status,
+                  o->err);
+    ck_assert_msg(o->out[0] != '\0' && o->err[0] == '\0', "'vsph %s': %s", name,
+                  o->err);
+    if (!strcmp(name, "contact")) /* three profiles, each fitted */
+      ck_assert_msg(strstr(o->out, "nan") == NULL &&
+                        strstr(o->out, "\n1.500000e-10,") != NULL,
+                    "%s", o->out);
+  }
+  ck_assert_int_ge(seen, 9);
+  rm_tree(dir);
+}
+END_TEST
+
+/* Issue 23, defect 12: --lattice skipped every check (`contact --lattice
+ * --res 0 --zeta-num 5 --out /dev/full` exited 0). Each option is checked
+ * against its bounds, and one that --lattice would ignore is refused. */
+START_TEST(test_lattice_checks) {
+  static const char *const cases[][2] = {
+      {"contact --lattice --res 0", "Solver:res"},
+      {"contact --lattice --zeta-num 5", "Solver:zeta_num"},
+      {"contact --lattice --out /dev/full", "--out"},
+      {"contact --lattice --res 0 --zeta-num 5 --out /dev/full", "--out"},
+      {"contact --lattice --csv /tmp/vsph_never.csv", "--csv"},
+      {"contact --lattice --profiles 4", "--profiles"},
+      {"contact --lattice --set Scene:bogus=1", "Scene:bogus"},
+      {"contact --lattice --set Scene:U0=-1", "Scene:U0"},
+      {"contact --lattice --res 40", "no effect with --lattice"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    struct vsph_test_outcome *o = vsph_test_cli(cases[k][0]);
+    refused(o, cases[k][0], cases[k][1]);
+    ck_assert(o->out[0] == '\0');
+  }
+  ck_assert(!exists("/tmp/vsph_never.csv"));
+  /* alone it prints the table: Wendland C2's lattice sum at alpha 0.5 */
+  struct vsph_test_outcome *o = vsph_test_cli("contact --lattice --threads 1");
+  ck_assert_int_eq(o->status, 0);
+  ck_assert_msg(strstr(o->out, "\n0.5,0.08583,") != NULL, "%s", o->out);
+}
+END_TEST
+
+/* Issue 23, defect 12: `contact --profiles 8 --t-end 1e-15` (one step)
+ * printed a fit of nu = 299.6 from one row. K profiles need K steps (one
+ * per step): fewer is refused up front. A profile one or two steps old is
+ * narrower than a slab: its fit is printed nan, with the reason. */
+START_TEST(test_fit_needs_information) {
+  struct vsph_test_outcome *o =
+      vsph_test_cli("contact --profiles 8 --t-end 1e-15");
+  refused(o, "contact --profiles 8 --t-end 1e-15", "8 profiles need 8 steps");
+  ck_assert(o->out[0] == '\0');
+  /* two steps (dt = 2.06e-12 s at D0 = 10 nm): both profiles too early */
+  o = vsph_test_cli("contact --profiles 2 --t-end 3e-12 --quiet");
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  ck_assert_msg(strstr(o->out, "\n3.000000e-12,nan,nan,nan,nan,nan,nan\n"),
+                "%s", o->out);
+  ck_assert_msg(strstr(o->out,
+                       "# t = 3.000000e-12: the u_y fit is not "
+                       "available (nan): the profile is narrower"),
+                "%s", o->out);
+}
+END_TEST
+
 Suite *vsph_hardening_suite(void) {
   Suite *s = suite_create("hardening");
   TCase *tc = tcase_create("defects");
@@ -625,6 +880,13 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_params_not_a_file);
   tcase_add_test(tc, test_refused_run_deletes_nothing);
   tcase_add_test(tc, test_support_holds_no_neighbour);
+  tcase_add_test(tc, test_series_at_tiny_times);
+  tcase_add_test(tc, test_signal_during_setup);
+  tcase_add_test(tc, test_work_estimates);
+  tcase_add_test(tc, test_visc_with_contact);
+  tcase_add_test(tc, test_defaults_run);
+  tcase_add_test(tc, test_lattice_checks);
+  tcase_add_test(tc, test_fit_needs_information);
   suite_add_tcase(s, tc);
   TCase *tp = tcase_create("parser");
   tcase_set_timeout(tp, 10); /* the old parser needed about 50 s */

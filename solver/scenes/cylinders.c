@@ -115,6 +115,12 @@ static int init(const struct vsph_scene *sc, size_t res,
   return VSPH_OK;
 }
 
+/* The scene holds two materials (the fluid and the held cylinder), which
+ * only contact SPH runs: by default the paper's (P002 §5.5), Wendland C2
+ * at alpha = 0.5. */
+static const char *const solver_defaults[] = {
+    "scheme=contact", "kernel=wendland2", "alpha=0.5", NULL};
+
 const struct vsph_scene_type vsph_cylinders_type = {
     .name = "cylinders",
     .description =
@@ -126,4 +132,5 @@ const struct vsph_scene_type vsph_cylinders_type = {
     .nparams = sizeof cylinders_params / sizeof cylinders_params[0],
     .setup = setup,
     .init = init,
+    .solver_defaults = solver_defaults,
 };
