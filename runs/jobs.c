@@ -53,7 +53,7 @@ static int params_of(const struct vsph_jobs_job *j, struct vsph_params **out) {
   /* the defaults the job's command adds (vsph run: the scene's Solver
    * defaults; vsph contact: the measurement's), so that its key here is
    * the one the command writes */
-  if (!st && j->kind == VSPH_REPORT_JOB_SHEAR)
+  if (!st && j->kind == VSPH_JOBS_SHEAR)
     st = vsph_contact_defaults(prm);
   else if (!st && vsph_scene_find(j->scene))
     st = vsph_scene_solver_defaults(vsph_scene_find(j->scene), prm);

@@ -147,13 +147,11 @@ static const char *const PVWF[] = {"Solver:res=10", "Solver:t_end=0.2",
                                    "Solver:visc=pvwf", NULL};
 static const char *const GAS[] = {"Solver:res=8", "Solver:t_end=0.1",
                                   "Solver:eos=gas", NULL};
-static const char *const CONTACT[] = {"Solver:scheme=contact",
-                                      "Solver:kernel=wendland2",
-                                      "Solver:alpha=0.5",
-                                      "Solver:res=8",
-                                      "Scene:Lz=4e-7",
-                                      "Solver:t_end=1e-10",
-                                      NULL};
+static const char *const CONTACT[] = {
+    "Solver:scheme=contact", "Solver:kernel=wendland2",
+    "Solver:alpha=0.5",      "Solver:res=8",
+    "Scene:Ly=4e-7",         "Scene:Lz=4e-7",
+    "Solver:t_end=1e-10",    NULL};
 static const struct {
   const char *scene;
   const char *const *set;
@@ -291,7 +289,7 @@ START_TEST(test_folder_marker) {
     const char *const cmds[] = {
         "run poiseuille --res 8 --t-end 0.01 --out",
         "contact --scheme contact --kernel wendland2 --alpha 0.5 --res 8 "
-        "--set Scene:Lz=4e-7 --t-end 1e-10 --out"};
+        "--set Scene:Ly=4e-7 --set Scene:Lz=4e-7 --t-end 1e-10 --out"};
     for (int c = 0; c < 2; c++) {
       snprintf(args, sizeof args, "%s %s", cmds[c], sub);
       struct vsph_test_outcome *o = vsph_test_cli(args);
@@ -319,7 +317,7 @@ START_TEST(test_folder_marker) {
   ck_assert_int_eq(vsph_test_cli(args)->status, 0);
   snprintf(args, sizeof args,
            "contact --scheme contact --kernel wendland2 --alpha 0.5 --res 8 "
-           "--set Scene:Lz=4e-7 --t-end 1e-10 --out %s",
+           "--set Scene:Ly=4e-7 --set Scene:Lz=4e-7 --t-end 1e-10 --out %s",
            sub);
   struct vsph_test_outcome *o = vsph_test_cli(args);
   ck_assert_msg(o->status == 2 && strstr(o->err, "not a vsph shear test"),
@@ -332,7 +330,8 @@ START_TEST(test_folder_marker) {
   for (int k = 0; k < 2; k++) {
     snprintf(args, sizeof args,
              "contact --scheme contact --kernel wendland2 --alpha 0.5 --res 8 "
-             "--set Scene:Lz=4e-7 --t-end 1e-10 --cache --out %s/shear",
+             "--set Scene:Ly=4e-7 --set Scene:Lz=4e-7 --t-end 1e-10 --cache "
+             "--out %s/shear",
              dir);
     o = vsph_test_cli(args);
     ck_assert_int_eq(o->status, 0);
