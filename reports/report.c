@@ -175,9 +175,17 @@ static int run_part(struct vsph_report *R, size_t p, const char *parts_dir,
   char md[96], kf[700];
   snprintf(md, sizeof md, "%s.md", PARTS[p].name);
   snprintf(kf, sizeof kf, "%s/%s.key", parts_dir, PARTS[p].name);
+  /* a part's key: the report's, then its text's size and CRC-32, so a
+   * cut, edited or missing NAME.md is made again */
+  char mdpath[700], pkey[256] = "";
+  snprintf(mdpath, sizeof mdpath, "%s/%s", parts_dir, md);
+  unsigned long crc;
+  size_t size;
+  if (!vsph_folder_checksum(mdpath, &crc, &size))
+    snprintf(pkey, sizeof pkey, "%s%s %zu %08lx\n", key, md, size, crc);
   if (PARTS[p].cached) {
     char *old = vsph_files_slurp(kf, NULL);
-    const int hit = old && !strcmp(old, key);
+    const int hit = old && pkey[0] && !strcmp(old, pkey);
     free(old);
     if (hit) {
       *cached = 1;
@@ -201,7 +209,10 @@ static int run_part(struct vsph_report *R, size_t p, const char *parts_dir,
   if (!st && PARTS[p].cached) {
     char kname[96];
     snprintf(kname, sizeof kname, "%s.key", PARTS[p].name);
-    st = vsph_files_write(parts_dir, kname, key);
+    if (vsph_folder_checksum(mdpath, &crc, &size))
+      VSPH_FAIL(VSPH_EIO, "cannot read %s", mdpath);
+    snprintf(pkey, sizeof pkey, "%s%s %zu %08lx\n", key, md, size, crc);
+    st = vsph_files_write(parts_dir, kname, pkey);
   }
   *wall = omp_get_wtime() - t;
   return st;

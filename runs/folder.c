@@ -95,6 +95,15 @@ static void marker_text(const struct vsph_folder_kind *kind, char *buf,
   snprintf(buf, len, "vsph %s folder\n", kind->name);
 }
 
+/* A lock file as vsph leaves it: a regular file of one link, no longer
+ * than a pid and a newline. (Only its metadata: opening it and closing it
+ * again would drop this process's own fcntl lock.) */
+static int lock_file_ours(const char *path) {
+  struct stat sb;
+  if (lstat(path, &sb) != 0) return 1; /* absent */
+  return S_ISREG(sb.st_mode) && sb.st_nlink == 1 && sb.st_size <= 24;
+}
+
 int vsph_folder_judge(const char *dir, const struct vsph_folder_kind *kind) {
   if (!dir[0]) VSPH_FAIL(VSPH_EINVAL, "the folder's name is empty");
   if (strlen(dir) > 3000)
@@ -113,9 +122,10 @@ int vsph_folder_judge(const char *dir, const struct vsph_folder_kind *kind) {
   int any = 0, marker = 0;
   for (struct dirent *e; (e = readdir(d));) {
     const char *n = e->d_name;
-    /* a lone lock: a writer's first step, or a refused claim's trace */
-    if (!strcmp(n, ".") || !strcmp(n, "..") || !strcmp(n, VSPH_FOLDER_LOCK))
-      continue;
+    if (!strcmp(n, ".") || !strcmp(n, "..")) continue;
+    /* a lone lock as vsph leaves it: a writer's first step */
+    snprintf(path, sizeof path, "%s/%s", dir, n);
+    if (!strcmp(n, VSPH_FOLDER_LOCK) && lock_file_ours(path)) continue;
     if (!any++) snprintf(first, sizeof first, "%s", n);
     snprintf(path, sizeof path, "%s/%s", dir, n);
     struct stat eb;
@@ -171,7 +181,8 @@ int vsph_folder_judge(const char *dir, const struct vsph_folder_kind *kind) {
  * nothing has been written. */
 static int refused_path(const char *what, const char *path, int e) {
   const int bad = e == ENOTDIR || e == ENOENT || e == EACCES || e == EPERM ||
-                  e == EROFS || e == ENAMETOOLONG || e == ELOOP;
+                  e == EROFS || e == ENAMETOOLONG || e == ELOOP ||
+                  e == EISDIR || e == EEXIST;
   VSPH_FAIL(bad ? VSPH_EINVAL : VSPH_EIO, "cannot %s %s: %s", what, path,
             strerror(e));
 }
@@ -179,29 +190,35 @@ static int refused_path(const char *what, const char *path, int e) {
 static int lock(struct vsph_folder *f) {
   char path[4200];
   snprintf(path, sizeof path, "%s/%s", f->dir, VSPH_FOLDER_LOCK);
-  const int fd =
-      open(path, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
+  if (!lock_file_ours(path))
+    VSPH_FAIL(VSPH_EINVAL,
+              "%s is not a lock file vsph wrote (a link, a folder, or "
+              "someone's data): choose another folder",
+              path);
+  const int flags = O_RDWR | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK;
+  int fd = open(path, flags | O_CREAT | O_EXCL, 0644);
+  if (fd >= 0)
+    f->made_lock = 1;
+  else if (errno == EEXIST)
+    fd = open(path, flags);
   if (fd < 0) return refused_path("write in", f->dir, errno);
   struct stat sb;
-  if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+  if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode) || sb.st_nlink != 1) {
     close(fd);
-    VSPH_FAIL(VSPH_EINVAL, "%s is not a regular file", path);
+    VSPH_FAIL(VSPH_EINVAL, "%s is not a regular file of its own", path);
   }
   struct flock fl;
   memset(&fl, 0, sizeof fl);
   fl.l_type = F_WRLCK;
   fl.l_whence = SEEK_SET;
   if (fcntl(fd, F_SETLK, &fl) == 0) {
+    f->fd = fd;
     char pid[32];
     const int n = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
     /* who holds it, for a person reading the folder (the lock itself is
      * what counts) */
-    if (ftruncate(fd, 0) != 0 || pwrite(fd, pid, (size_t)n, 0) != n) {
-      const int e = errno;
-      close(fd);
-      return refused_path("write in", f->dir, e);
-    }
-    f->fd = fd;
+    if (ftruncate(fd, 0) != 0 || pwrite(fd, pid, (size_t)n, 0) != n)
+      return refused_path("write in", f->dir, errno);
     return VSPH_OK;
   }
   const int e = errno;
@@ -216,6 +233,29 @@ static int lock(struct vsph_folder *f) {
   VSPH_FAIL(VSPH_EIO, "cannot lock %s: %s", path, strerror(e));
 }
 
+/* mkdir -p, each folder made recorded (so a refusal can take it back). */
+static int make_dirs(struct vsph_folder *f, const char *dir) {
+  char buf[4096];
+  snprintf(buf, sizeof buf, "%s", dir);
+  const size_t n = strlen(buf);
+  for (size_t k = 1; k <= n; k++) {
+    if (buf[k] != '/' && buf[k] != '\0') continue;
+    const char c = buf[k];
+    buf[k] = '\0';
+    if (mkdir(buf, 0777) == 0) {
+      if (f->nmade < 8)
+        snprintf(f->made[f->nmade++], sizeof f->made[0], "%s", buf);
+    } else if (errno != EEXIST) {
+      return refused_path("create", buf, errno);
+    }
+    buf[k] = c;
+  }
+  struct stat sb; /* there now: a folder, or a link to one */
+  if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
+    VSPH_FAIL(VSPH_EINVAL, "%s exists and is not a folder", dir);
+  return VSPH_OK;
+}
+
 int vsph_folder_claim(struct vsph_folder *f, const char *dir,
                       const struct vsph_folder_kind *kind) {
   memset(f, 0, sizeof *f);
@@ -224,32 +264,9 @@ int vsph_folder_claim(struct vsph_folder *f, const char *dir,
   int st = vsph_folder_judge(dir, kind);
   if (st) return st;
   snprintf(f->dir, sizeof f->dir, "%s", dir);
-  struct stat sb;
-  if (stat(dir, &sb) != 0) {
-    f->fresh = 2;
-    /* the first folder of the path that is absent: the claim makes it */
-    char buf[4096];
-    snprintf(buf, sizeof buf, "%s", dir);
-    f->made_from = strlen(buf);
-    for (size_t k = strlen(buf); k > 1; k--)
-      if (buf[k - 1] == '/' && k - 1 > 0) {
-        buf[k - 1] = '\0';
-        if (stat(buf, &sb) == 0) break;
-        f->made_from = k - 1;
-      }
-  } else {
-    char mk[4200];
-    snprintf(mk, sizeof mk, "%s/%s", dir, VSPH_FOLDER_MARKER);
-    f->fresh = access(mk, F_OK) != 0; /* judged: then it was empty */
-  }
-  if ((st = vsph_files_mkdir(dir))) return st;
-  if ((st = lock(f))) {
-    f->fd = -1;
-    vsph_folder_abandon(f);
-    return st;
-  }
-  /* again under the lock: another writer may have been quicker */
-  if ((st = vsph_folder_judge(dir, kind))) {
+  if ((st = make_dirs(f, dir)) || (st = lock(f)) ||
+      /* again under the lock: another writer may have been quicker */
+      (st = vsph_folder_judge(dir, kind))) {
     vsph_folder_abandon(f);
     return st;
   }
@@ -257,9 +274,12 @@ int vsph_folder_claim(struct vsph_folder *f, const char *dir,
   snprintf(path, sizeof path, "%s/%s", dir, VSPH_FOLDER_MARKER);
   if (access(path, F_OK) == 0) return VSPH_OK;
   marker_text(kind, text, sizeof text);
-  if ((st = vsph_files_write(dir, VSPH_FOLDER_MARKER, text)))
+  if ((st = vsph_files_write(dir, VSPH_FOLDER_MARKER, text))) {
     vsph_folder_abandon(f);
-  return st;
+    return st;
+  }
+  f->made_marker = 1;
+  return VSPH_OK;
 }
 
 void vsph_folder_release(struct vsph_folder *f) {
@@ -268,24 +288,20 @@ void vsph_folder_release(struct vsph_folder *f) {
 }
 
 void vsph_folder_abandon(struct vsph_folder *f) {
-  if (f->fresh && f->fd >= 0) {
-    char path[4200];
+  char path[4200];
+  if (f->made_marker) {
     snprintf(path, sizeof path, "%s/%s", f->dir, VSPH_FOLDER_MARKER);
     remove(path);
+  }
+  if (f->made_lock) { /* while still locked: no other writer between */
     snprintf(path, sizeof path, "%s/%s", f->dir, VSPH_FOLDER_LOCK);
-    remove(path); /* while locked: no other writer is between */
+    remove(path);
   }
   vsph_folder_release(f);
-  if (f->fresh == 2) { /* each folder the claim made, leaf first, if empty */
-    char buf[4096];
-    snprintf(buf, sizeof buf, "%s", f->dir);
-    for (size_t k = strlen(buf); k >= f->made_from && k > 0; k--)
-      if (buf[k] == '/' || buf[k] == '\0') {
-        buf[k] = '\0';
-        if (rmdir(buf) != 0) break;
-      }
-  }
-  f->fresh = 0;
+  for (int k = f->nmade - 1; k >= 0; k--) /* innermost first, if empty */
+    if (rmdir(f->made[k]) != 0) break;
+  f->made_marker = f->made_lock = 0;
+  f->nmade = 0;
 }
 
 /* ------------------------------------------------------- clear and seal */
@@ -366,7 +382,7 @@ static char **listing(const char *dir, const struct vsph_folder_kind *kind,
   int ok = names != NULL;
   for (struct dirent *e; ok && (e = readdir(d));) {
     const char *nm = e->d_name;
-    if (skipped(nm, skip) || !strcmp(nm, "key.txt") || ends_with(nm, ".tmp") ||
+    if (skipped(nm, skip) || !strcmp(nm, "key.txt") ||
         kind->owns(nm) != VSPH_FOLDER_FILE)
       continue;
     if (m == cap) {
@@ -401,9 +417,32 @@ static void listing_free(char **names, size_t n) {
 
 int vsph_folder_seal(const struct vsph_folder *f, const char *key,
                      const char *const *skip) {
+  return vsph_folder_seal_with(f, key, skip, NULL, NULL);
+}
+
+int vsph_folder_seal_with(const struct vsph_folder *f, const char *key,
+                          const char *const *skip, const char *name,
+                          const char *content) {
   size_t n = 0;
   char **names = listing(f->dir, f->kind, skip, &n);
   if (!names) VSPH_FAIL(VSPH_EIO, "cannot list %s", f->dir);
+  if (name) { /* the file still to come, in its sorted place */
+    size_t k = 0;
+    while (k < n && strcmp(names[k], name) < 0) k++;
+    if (k == n || strcmp(names[k], name)) {
+      char **g = realloc(names, (n + 1) * sizeof *names);
+      char *dup = strdup(name);
+      if (!g || !dup) {
+        listing_free(g ? g : names, n);
+        free(dup);
+        VSPH_FAIL(VSPH_ENOMEM, "cannot list %s", f->dir);
+      }
+      names = g;
+      memmove(names + k + 1, names + k, (n - k) * sizeof *names);
+      names[k] = dup;
+      n++;
+    }
+  }
   char *text = NULL;
   size_t len = 0;
   FILE *m = open_memstream(&text, &len);
@@ -414,7 +453,11 @@ int vsph_folder_seal(const struct vsph_folder *f, const char *key,
     unsigned long crc;
     size_t size;
     snprintf(path, sizeof path, "%s/%s", f->dir, names[k]);
-    if (vsph_folder_checksum(path, &crc, &size)) {
+    if (name && !strcmp(names[k], name)) {
+      size = strlen(content);
+      crc = crc32(crc32(0L, Z_NULL, 0), (const Bytef *)content, (uInt)size);
+      fprintf(m, "%s %zu %08lx\n", names[k], size, crc);
+    } else if (vsph_folder_checksum(path, &crc, &size)) {
       vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot read %s", path);
       st = VSPH_EIO;
     } else {
@@ -516,4 +559,124 @@ int vsph_folder_verify(const char *dir, const struct vsph_folder_kind *kind,
   listing_free(names, n);
   free(text);
   return res;
+}
+
+/* ------------------------------------------------------------ manifests */
+
+static int is_tmp(const char *name) { return ends_with(name, ".tmp"); }
+
+char *vsph_folder_manifest(const struct vsph_folder *f,
+                           const char *const *skip) {
+  size_t n = 0;
+  char **names = listing(f->dir, f->kind, skip, &n);
+  if (!names) return NULL;
+  char *text = NULL;
+  size_t len = 0;
+  FILE *m = open_memstream(&text, &len);
+  int ok = m != NULL;
+  char path[4400];
+  for (size_t k = 0; k < n && ok; k++) {
+    if (is_tmp(names[k])) continue;
+    unsigned long crc;
+    size_t size;
+    snprintf(path, sizeof path, "%s/%s", f->dir, names[k]);
+    ok = !vsph_folder_checksum(path, &crc, &size);
+    if (ok) fprintf(m, "%s %zu %08lx\n", names[k], size, crc);
+  }
+  listing_free(names, n);
+  if (m && fclose(m) != 0) ok = 0;
+  if (!ok) {
+    free(text);
+    return NULL;
+  }
+  return text;
+}
+
+/* CRC-32 of the first @p len bytes of regular file @p path. */
+static int crc_prefix(const char *path, size_t len, unsigned long *crc) {
+  const int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+  if (fd < 0) return VSPH_EIO;
+  struct stat sb;
+  if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode) || (size_t)sb.st_size < len) {
+    close(fd);
+    return VSPH_EIO;
+  }
+  uLong c = crc32(0L, Z_NULL, 0);
+  unsigned char buf[1 << 16];
+  for (size_t done = 0; done < len;) {
+    const size_t want = len - done < sizeof buf ? len - done : sizeof buf;
+    const ssize_t r = read(fd, buf, want);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) {
+      close(fd);
+      return VSPH_EIO;
+    }
+    c = crc32(c, buf, (uInt)r);
+    done += (size_t)r;
+  }
+  close(fd);
+  *crc = (unsigned long)c;
+  return VSPH_OK;
+}
+
+int vsph_folder_manifest_holds(const struct vsph_folder *f,
+                               const char *manifest, const char *const *grow,
+                               const char *const *skip, char *why,
+                               size_t wlen) {
+  size_t n = 0;
+  char **names = listing(f->dir, f->kind, skip, &n);
+  if (!names) return say(why, wlen, "cannot list %s", f->dir);
+  int res = 1;
+  size_t listed = 0;
+  char path[4400];
+  for (const char *line = manifest; res == 1 && *line;) {
+    const char *end = strchr(line, '\n');
+    char name[256];
+    size_t size;
+    unsigned long crc, c2;
+    int used = 0;
+    if (!end ||
+        sscanf(line, "%255s %zu %lx%n", name, &size, &crc, &used) != 3 ||
+        line + used != end) {
+      res = say(why, wlen, "its list of files is damaged");
+      break;
+    }
+    listed++;
+    snprintf(path, sizeof path, "%s/%s", f->dir, name);
+    struct stat sb;
+    const int may_grow = grow && one_of(name, grow);
+    if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode))
+      res = say(why, wlen, "%s is missing", name);
+    else if ((size_t)sb.st_size != size && !may_grow)
+      res = say(why, wlen, "%s changed size", name);
+    else if (crc_prefix(path, size, &c2) || c2 != crc)
+      res = say(why, wlen, "%s changed since the checkpoint", name);
+    line = end + 1;
+  }
+  /* nothing else of vsph's but temporaries */
+  size_t present = 0;
+  for (size_t k = 0; k < n; k++) present += !is_tmp(names[k]);
+  if (res == 1 && present != listed)
+    res = say(why, wlen, "it holds files the checkpoint did not see");
+  listing_free(names, n);
+  return res;
+}
+
+int vsph_folder_clear_tmp(const struct vsph_folder *f) {
+  DIR *d = opendir(f->dir);
+  if (!d) VSPH_FAIL(VSPH_EIO, "cannot read %s: %s", f->dir, strerror(errno));
+  int st = VSPH_OK;
+  char path[4400];
+  for (struct dirent *e; !st && (e = readdir(d));) {
+    if (!is_tmp(e->d_name) || f->kind->owns(e->d_name) != VSPH_FOLDER_FILE)
+      continue;
+    snprintf(path, sizeof path, "%s/%s", f->dir, e->d_name);
+    if (remove(path) != 0 && errno != ENOENT) {
+      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot remove %s: %s",
+                         path, strerror(errno));
+      st = VSPH_EIO;
+    }
+  }
+  closedir(d);
+  return st;
 }

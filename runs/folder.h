@@ -53,9 +53,10 @@ struct vsph_folder {
   char dir[4096];                      /*!< the folder */
   const struct vsph_folder_kind *kind; /*!< its kind */
   int fd;                              /*!< the lock file; -1: none */
-  int fresh;        /*!< 1: it was absent or empty when claimed; 2: absent */
-  size_t made_from; /*!< fresh 2: length of the first folder of the path
-                         that was absent (made by the claim) */
+  int made_marker;                     /*!< 1: the claim wrote the marker */
+  int made_lock; /*!< 1: the claim created the lock file */
+  int nmade;     /*!< folders the claim made (mkdir), outermost first */
+  char made[8][4096];
 };
 
 /** @brief Judge @p dir for a writer of kind @p kind without touching it:
@@ -78,10 +79,9 @@ int vsph_folder_claim(struct vsph_folder *f, const char *dir,
 void vsph_folder_release(struct vsph_folder *f);
 
 /** @brief Give the folder back as it was found, after a refusal that came
- *  only once it was claimed: a folder that was absent is removed again,
- *  one that was empty loses the marker and the lock file; a folder that
- *  was vsph's already keeps them. Releases the lock. Only the marker and
- *  the lock are removed, never anything else. */
+ *  only once it was claimed: the marker and the lock file go if the claim
+ *  made them, and so do the folders it made (if empty), innermost first;
+ *  nothing else is removed. Releases the lock. */
 void vsph_folder_abandon(struct vsph_folder *f);
 
 /** @brief Remove every file vsph writes in the claimed folder but the
@@ -99,6 +99,14 @@ int vsph_folder_clear(const struct vsph_folder *f, const char *const *keep);
 int vsph_folder_seal(const struct vsph_folder *f, const char *key,
                      const char *const *skip);
 
+/** @brief The same, with file @p name (not yet written, or to be
+ *  replaced) listed as holding @p content: write it after the seal, so
+ *  that a process killed between the two leaves a broken seal rather than
+ *  a file the seal does not vouch for. */
+int vsph_folder_seal_with(const struct vsph_folder *f, const char *key,
+                          const char *const *skip, const char *name,
+                          const char *content);
+
 /** @brief Does @p dir's seal hold for @p key? (@p kind NULL: the kind
  *  its marker names.) 1: key.txt's parameters are
  *  @p key and every file it lists has its size and CRC-32, and no other
@@ -110,6 +118,27 @@ int vsph_folder_seal(const struct vsph_folder *f, const char *key,
 int vsph_folder_verify(const char *dir, const struct vsph_folder_kind *kind,
                        const char *key, const char *const *skip, char *why,
                        size_t len);
+
+/** @brief The claimed folder's files as a checkpoint sees them: "NAME
+ *  SIZE CRC32" lines, sorted, for every regular file vsph writes there
+ *  but the marker, the lock, key.txt, temporaries and @p skip. Caller
+ *  frees; NULL (not reported) on failure. */
+char *vsph_folder_manifest(const struct vsph_folder *f,
+                           const char *const *skip);
+
+/** @brief Does the claimed folder still hold what @p manifest lists? 1:
+ *  every file is there with its size and CRC-32 (those named in @p grow
+ *  may have grown since: their first SIZE bytes count) and no other file
+ *  of vsph's (temporaries and @p skip aside); else -1 with what differs
+ *  in @p why. Never reports. */
+int vsph_folder_manifest_holds(const struct vsph_folder *f,
+                               const char *manifest, const char *const *grow,
+                               const char *const *skip, char *why, size_t wlen);
+
+/** @brief Remove the temporaries (NAME.tmp of a name vsph writes) that a
+ *  process killed while writing left in the claimed folder.
+ *  @return VSPH_OK or VSPH_EIO. */
+int vsph_folder_clear_tmp(const struct vsph_folder *f);
 
 /** @brief The CRC-32 (zlib's) and size of regular file @p path.
  *  @return VSPH_OK, or VSPH_EIO (not reported) when it is not a regular

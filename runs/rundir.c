@@ -103,7 +103,7 @@ static int write_used(struct vsph_params *prm, const char *dir) {
 static int write_run_json(const struct vsph_run *run,
                           const struct vsph_rundir_opts *opts,
                           const struct vsph_rundir_result *res, double bytes,
-                          const char *error) {
+                          const char *error, char **text) {
   const struct vsph_run_props *rp = &run->props;
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "version", VSPH_VERSION);
@@ -159,12 +159,26 @@ static int write_run_json(const struct vsph_run *run,
     cJSON_AddNumberToObject(o, "unstable_time", res->unstable_time);
     cJSON_AddStringToObject(o, "unstable_reason", res->reason);
   }
-  return vsph_json_write(o, res->dir, "run.json");
+  if (!text) return vsph_json_write(o, res->dir, "run.json");
+  /* the text only: the caller seals the folder with it, then writes it */
+  char *t = cJSON_Print(o);
+  cJSON_Delete(o);
+  if (!t) VSPH_FAIL(VSPH_ENOMEM, "cannot format run.json");
+  const size_t n = strlen(t);
+  char *g = realloc(t, n + 2);
+  if (!g) {
+    free(t);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot format run.json");
+  }
+  memcpy(g + n, "\n", 2); /* as vsph_json_write ends it */
+  *text = g;
+  return VSPH_OK;
 }
 
 /* The files written while the run goes on. */
 struct outputs {
   const char *dir;
+  const struct vsph_folder *fo; /* the claimed folder */
   FILE *csv;
   FILE *profile; /* at each snapshot: channels' profile.csv, the cavity's
                     centreline.csv */
@@ -311,7 +325,11 @@ static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
  * Written to a temporary, synced and renamed: a checkpoint is whole or
  * absent. */
 static const char CKPT_MAGIC[16] = "vsph checkpoint";
-enum { CKPT_VERSION = 1 };
+enum { CKPT_VERSION = 2 };
+
+/* the files a checkpoint saw, but itself and run.json (absent while a run
+ * goes on) */
+static const char *const CKPT_SKIP[] = {"checkpoint.bin", "run.json", NULL};
 
 struct ckpt {
   uint64_t version;
@@ -319,7 +337,9 @@ struct ckpt {
   uint64_t nsnap;             /* snapshots written */
   uint64_t segments;          /* processes so far */
   uint64_t state;             /* the packed state's length */
+  uint64_t manifest;          /* the folder's list's length (bytes) */
   double wall_s, cpu_s;       /* spent so far */
+  double bytes;               /* the buffers' bytes so far */
   char started[32];           /* the first start (UTC) */
 };
 
@@ -340,19 +360,33 @@ static int checkpoint_write(struct outputs *o, const struct vsph_run *run,
   c.state = vsph_run_pack(run, NULL);
   c.wall_s = wall;
   c.cpu_s = cpu;
+  c.bytes = fmax(res->bytes_before, (double)vsph_run_bytes(run));
+  /* every file so far, with its size and CRC: a resume goes on only in a
+   * folder that still holds them */
+  char *list = vsph_folder_manifest(o->fo, CKPT_SKIP);
+  if (!list) {
+    snprintf(o->error, sizeof o->error, "cannot list %s for a checkpoint",
+             o->dir);
+    VSPH_FAIL(VSPH_EIO, "%s", o->error);
+  }
+  c.manifest = strlen(list);
   memcpy(c.started, res->started, sizeof c.started);
   const uint64_t klen = strlen(key);
   const size_t len = sizeof CKPT_MAGIC + sizeof klen + klen + sizeof c +
-                     c.state + sizeof(uint32_t);
+                     c.state + c.manifest + sizeof(uint32_t);
   unsigned char *buf = malloc(len);
-  if (!buf)
+  if (!buf) {
+    free(list);
     VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a checkpoint of %zu bytes", len);
+  }
   size_t at = 0;
   memcpy(buf + at, CKPT_MAGIC, sizeof CKPT_MAGIC), at += sizeof CKPT_MAGIC;
   memcpy(buf + at, &klen, sizeof klen), at += sizeof klen;
   memcpy(buf + at, key, klen), at += klen;
   memcpy(buf + at, &c, sizeof c), at += sizeof c;
   at += vsph_run_pack(run, buf + at);
+  memcpy(buf + at, list, c.manifest), at += c.manifest;
+  free(list);
   const uint32_t crc = (uint32_t)crc32(crc32(0L, Z_NULL, 0), buf, (uInt)at);
   memcpy(buf + at, &crc, sizeof crc), at += sizeof crc;
   char tmp[700], path[700];
@@ -409,7 +443,8 @@ static unsigned char *checkpoint_read(const char *dir, const char *key,
     else {
       const size_t at = sizeof CKPT_MAGIC + sizeof kl + klen;
       memcpy(c, buf + at, sizeof *c);
-      if (c->version != CKPT_VERSION || c->state != len - fixed - klen)
+      if (c->version != CKPT_VERSION ||
+          c->state + c->manifest != len - fixed - klen)
         snprintf(why, wlen, "its layout is not this version's");
       *state_at = at + sizeof *c;
     }
@@ -424,40 +459,31 @@ static unsigned char *checkpoint_read(const char *dir, const char *key,
 /* A resumed folder: key.txt and run.json go (nothing may vouch for it
  * while it runs), the live files must hold at least what the checkpoint
  * saw, and snapshots past it go. */
-static int resume_dir(const char *dir, const struct ckpt *c,
-                      const char *profile_name, char *why, size_t wlen) {
+static int resume_dir(const struct vsph_folder *fo, const struct ckpt *c,
+                      const char *manifest, const char *profile_name, char *why,
+                      size_t wlen) {
   char path[4300];
-  const struct {
-    const char *name;
-    uint64_t len;
-  } live[3] = {{"energy.csv", c->csv},
-               {profile_name, c->profile},
-               {"snapshots.pvd", c->pvd}};
-  for (int k = 0; k < 3; k++) {
-    if (!live[k].len) continue;
-    snprintf(path, sizeof path, "%s/%s", dir, live[k].name);
-    struct stat sb;
-    if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode) ||
-        (uint64_t)sb.st_size < live[k].len) {
-      snprintf(why, wlen, "%s is shorter than when it was saved", live[k].name);
-      return VSPH_EINVAL;
-    }
-  }
   static const char *const first[] = {"key.txt", "run.json"};
   for (int k = 0; k < 2; k++) {
-    snprintf(path, sizeof path, "%s/%s", dir, first[k]);
+    snprintf(path, sizeof path, "%s/%s", fo->dir, first[k]);
     if (remove(path) != 0 && errno != ENOENT)
       VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
   }
   for (uint64_t k = c->nsnap; k < 10000; k++) {
-    snprintf(path, sizeof path, "%s/snap_%04llu.vtp", dir,
+    snprintf(path, sizeof path, "%s/snap_%04llu.vtp", fo->dir,
              (unsigned long long)k);
     if (remove(path) != 0) {
       if (errno == ENOENT) break;
       VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
     }
   }
-  return VSPH_OK;
+  /* every file as the checkpoint saw it (the live tables may have grown:
+   * their first bytes count, the rest is cut), nothing else */
+  const char *const grow[] = {"energy.csv", profile_name, "snapshots.pvd",
+                              NULL};
+  if (vsph_folder_manifest_holds(fo, manifest, grow, CKPT_SKIP, why, wlen) != 1)
+    return VSPH_EINVAL;
+  return vsph_folder_clear_tmp(fo);
 }
 
 /* The time loop: rows and snapshots as the driver says they are due; a
@@ -549,9 +575,17 @@ int vsph_rundir_execute(struct vsph_params *prm, const char *scene,
 
 /* Close the run's files and write run.json; an error (@p st) is recorded
  * in it. */
+/* The memory the run's buffers hold: the largest over all its processes
+ * (a buffer grows to the most it has needed, so a resumed run's is the
+ * larger of the checkpoint's and its own). */
+static double run_bytes(const struct vsph_run *run,
+                        const struct vsph_rundir_result *res) {
+  return fmax((double)vsph_run_bytes(run), res->bytes_before);
+}
+
 static int finish(struct outputs *o, struct vsph_run *run,
                   const struct vsph_rundir_opts *opts,
-                  const struct vsph_rundir_result *res, int st) {
+                  const struct vsph_rundir_result *res, int st, char **text) {
   st = live_close(o, &o->csv, "energy.csv", st);
   st = live_close(o, &o->profile, o->profile_name, st);
   if (o->pvd.f) {
@@ -561,10 +595,29 @@ static int finish(struct outputs *o, struct vsph_run *run,
                res->dir);
     if (!st) st = c;
   }
+  /* an ended run's run.json is written after its seal (the caller's):
+   * here only its text; an error or an interruption is written at once */
+  const int final = !st && !res->interrupted;
   const int js =
-      write_run_json(run, opts, res, (double)vsph_run_bytes(run),
-                     st ? (o->error[0] ? o->error : "a write failed") : NULL);
+      write_run_json(run, opts, res, run_bytes(run, res),
+                     st ? (o->error[0] ? o->error : "a write failed") : NULL,
+                     final ? text : NULL);
   return st ? st : js;
+}
+
+/* The run laid out afresh (a checkpoint not used after all), with the
+ * references of its own scene (they keep a pointer to it). */
+static int relayout(const struct vsph_run_props *rp,
+                    const struct vsph_scene *sc, struct vsph_run **run,
+                    struct vsph_references_scene **ref) {
+  vsph_references_scene_free(*ref);
+  *ref = NULL;
+  vsph_run_free(*run);
+  *run = NULL;
+  const int st = vsph_run_alloc(rp, sc, run);
+  if (st) return st;
+  if (!(*ref = vsph_references_scene_alloc(&(*run)->scene))) return VSPH_ELIB;
+  return VSPH_OK;
 }
 
 static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
@@ -577,6 +630,11 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
   if (st) return st;
   const char *unused = vsph_params_unused(prm);
   if (unused) VSPH_FAIL(VSPH_EINVAL, "unknown parameter '%s'", unused);
+  if (opts->dir && strlen(opts->dir) >= sizeof res->dir - 64)
+    VSPH_FAIL(VSPH_EINVAL,
+              "--out: the folder's name is too long (%zu characters; at most "
+              "%zu)",
+              strlen(opts->dir), sizeof res->dir - 65);
   if (opts->dir)
     snprintf(res->dir, sizeof res->dir, "%s", opts->dir);
   else
@@ -602,8 +660,8 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
   /* Only now, with every input checked, claim the folder (a lock, and a
    * folder that is new, empty or this kind's: a refused run changes
    * nothing) */
-  struct outputs o = {.dir = res->dir};
   struct vsph_folder fo = {.fd = -1};
+  struct outputs o = {.dir = res->dir, .fo = &fo};
   if ((st = vsph_folder_claim(&fo, res->dir, &vsph_folder_scene_run)))
     goto done;
   const int cavity = type == &vsph_cavity_type;
@@ -621,16 +679,20 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
     snprintf(why, sizeof why, "its state does not fit this run");
     free(ck);
     ck = NULL;
-    vsph_run_free(run);
-    run = NULL;
-    if ((st = vsph_run_alloc(&rp, &sc, &run))) goto done;
+    if ((st = relayout(&rp, &sc, &run, &ref))) goto done;
   }
-  if (ck && resume_dir(res->dir, &c, o.profile_name, why, sizeof why)) {
+  char *manifest =
+      ck ? strndup((const char *)ck + state_at + c.state, (size_t)c.manifest)
+         : NULL;
+  const int moved =
+      ck && (!manifest ||
+             resume_dir(&fo, &c, manifest, o.profile_name, why, sizeof why));
+  if (ck && !manifest) snprintf(why, sizeof why, "out of memory");
+  free(manifest);
+  if (moved) {
     free(ck); /* (the run's state was restored: lay it out afresh) */
     ck = NULL;
-    vsph_run_free(run);
-    run = NULL;
-    if ((st = vsph_run_alloc(&rp, &sc, &run))) goto done;
+    if ((st = relayout(&rp, &sc, &run, &ref))) goto done;
   }
   FILE *progress = opts->progress;
   if (why[0]) /* said even when quiet: an hour's work may be lost */
@@ -647,9 +709,12 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
     res->segments = (size_t)c.segments + 1;
     res->wall_s = c.wall_s;
     res->cpu_s = c.cpu_s;
+    res->bytes_before = c.bytes;
     memcpy(res->started, c.started, sizeof res->started);
     res->started[sizeof res->started - 1] = '\0';
     free(ck);
+    /* the parameters of this process (Solver:checkpoint_s may differ) */
+    if ((st = write_used(prm, res->dir))) goto done;
   } else {
     res->segments = 1;
     if ((st = vsph_folder_clear(&fo, NULL)) || (st = write_used(prm, res->dir)))
@@ -693,28 +758,34 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
   res->steps = vsph_run_steps(run);
   res->t = vsph_run_time(run);
   res->pairs = run->pairs;
-  /* an ended run: its checkpoint goes before run.json can call it ok */
+  /* an ended run: its checkpoint (and any temporary left by a process
+   * killed while writing one) goes before anything can call it ok */
   char path[700];
-  snprintf(path, sizeof path, "%s/checkpoint.bin", res->dir);
-  if (!st && !res->interrupted && remove(path) != 0 && errno != ENOENT) {
-    snprintf(o.error, sizeof o.error, "cannot remove %s: %s", path,
-             strerror(errno));
-    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "%s", o.error);
-    st = VSPH_EIO;
-  }
-  /* run.json: its status says what became of the run, and a lost write
-   * never ends as "ok" */
-  st = finish(&o, run, opts, res, st);
-  if (!st && res->interrupted) st = VSPH_EINTR;
-  /* the seal last: only a run that ended is sealed, and a seal that
-   * cannot be written takes "ok" back */
-  if (!st && (st = vsph_folder_seal(&fo, key, NULL))) {
-    snprintf(o.error, sizeof o.error, "cannot seal %s (key.txt)", res->dir);
-    if (write_run_json(run, opts, res, (double)vsph_run_bytes(run), o.error)) {
-      snprintf(path, sizeof path, "%s/run.json", res->dir);
-      remove(path); /* no status is better than a false one */
+  static const char *const gone[] = {"checkpoint.bin", "checkpoint.bin.tmp"};
+  for (int k = 0; k < 2 && !st && !res->interrupted; k++) {
+    snprintf(path, sizeof path, "%s/%s", res->dir, gone[k]);
+    if (remove(path) != 0 && errno != ENOENT) {
+      snprintf(o.error, sizeof o.error, "cannot remove %s: %s", path,
+               strerror(errno));
+      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "%s", o.error);
+      st = VSPH_EIO;
     }
   }
+  /* run.json: its status says what became of the run, and a lost write
+   * never ends as "ok". An ended run's is sealed first and written after
+   * (a process killed between the two leaves a broken seal and no
+   * run.json, never an "ok" the seal does not vouch for) */
+  char *json = NULL;
+  st = finish(&o, run, opts, res, st, &json);
+  if (!st && res->interrupted) st = VSPH_EINTR;
+  if (!st && json &&
+      (st = vsph_folder_seal_with(&fo, key, NULL, "run.json", json))) {
+    snprintf(o.error, sizeof o.error, "cannot seal %s (key.txt)", res->dir);
+    /* unsealed: say so if the disk still lets us (never "ok") */
+    write_run_json(run, opts, res, run_bytes(run, res), o.error, NULL);
+  }
+  if (!st && json) st = vsph_files_write(res->dir, "run.json", json);
+  free(json);
   if (!st && progress) {
     if (res->unstable)
       fprintf(progress,

@@ -54,6 +54,7 @@ struct vsph_rundir_result {
   char dir[512];        /*!< the folder written */
   char started[32];     /*!< UTC date and time of the start (ISO 8601) */
   size_t segments;      /*!< processes the run took: 1 + its resumptions */
+  double bytes_before;  /*!< buffers' bytes in earlier processes (resumed) */
   int cached;           /*!< 1: opts.cache and the folder's key matched:
                              nothing was run (the other fields are empty) */
 };

@@ -132,6 +132,13 @@ static void same_run(const char *a, const char *b) {
   }
   closedir(d);
   ck_assert_uint_ge(nfiles, 4);
+  /* and b holds nothing a does not (a temporary, a stale file) */
+  size_t nb = 0;
+  d = opendir(b);
+  ck_assert_ptr_nonnull(d);
+  for (struct dirent *e; (e = readdir(d));) nb += e->d_name[0] != '.';
+  closedir(d);
+  ck_assert_uint_eq(nb, nfiles);
 }
 
 /* Runs that carry every kind of state across a step: mirror ghosts
@@ -527,6 +534,119 @@ START_TEST(test_report_seal) {
 }
 END_TEST
 
+/* What a hostile pass found (issue 23's review): a resume checks every
+ * file the checkpoint saw (a snapshot removed, energy.csv edited in
+ * place at the same size, a stale temporary) and starts over rather than
+ * seal a mixture; the parameters file is this process's. */
+START_TEST(test_resume_checks_files) {
+  char dir[] = "/tmp/vsph_resumeXXXXXX", a[300], b[300], path[400];
+  scratch(dir);
+  snprintf(a, sizeof a, "%s/a", dir);
+  snprintf(b, sizeof b, "%s/b", dir);
+  struct vsph_rundir_result r;
+  ck_assert_int_eq(run("poiseuille", POIS, a, 0, &r), 0);
+  for (int c = 0; c < 3; c++) {
+    ck_assert_int_eq(run("poiseuille", POIS, b, 10, &r), VSPH_EINTR);
+    if (c == 0) { /* a snapshot gone */
+      snprintf(path, sizeof path, "%s/snap_0001.vtp", b);
+      ck_assert_int_eq(remove(path), 0);
+    } else if (c == 1) { /* one digit of a row changed, the size kept */
+      snprintf(path, sizeof path, "%s/energy.csv", b);
+      FILE *f = fopen(path, "r+");
+      ck_assert_ptr_nonnull(f);
+      fseek(f, 120, SEEK_SET);
+      const int ch = fgetc(f);
+      fseek(f, 120, SEEK_SET);
+      fputc(ch == '1' ? '2' : '1', f);
+      ck_assert_int_eq(fclose(f), 0);
+    } else { /* a temporary left by a killed writer: removed, not sealed */
+      snprintf(path, sizeof path, "%s/checkpoint.bin.tmp", b);
+      put(path, "half a checkpoint");
+    }
+    ck_assert_int_eq(run("poiseuille", POIS, b, 0, &r), 0);
+    ck_assert_msg(r.segments == (c == 2 ? 2u : 1u), "case %d: %zu", c,
+                  r.segments); /* started over */
+    same_run(a, b);
+  }
+  rm_tree(dir);
+}
+END_TEST
+
+/* Paths a refusal must leave as they were: a name too long for the run's
+ * folder (it was cut, and the run went into another folder), folders of
+ * the path made before the refusal, and another kind's folder reached
+ * through "..": its marker and lock stay. */
+START_TEST(test_refusal_leaves_paths) {
+  char dir[] = "/tmp/vsph_pathsXXXXXX", args[1600], path[1200];
+  scratch(dir);
+  char long_name[700];
+  memset(long_name, 'x', 600);
+  long_name[600] = '\0';
+  snprintf(args, sizeof args,
+           "run poiseuille --res 8 --t-end 0.01 --quiet --out %s/new/%s", dir,
+           long_name);
+  struct vsph_test_outcome *o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 2 && strstr(o->err, "too long"), "%d %s",
+                o->status, o->err);
+  snprintf(path, sizeof path, "%s/new", dir);
+  ck_assert(!exists(path));
+  /* a name no file system takes: the folders made on the way go again */
+  char deep[400];
+  memset(deep, 'y', 300);
+  deep[300] = '\0';
+  snprintf(args, sizeof args,
+           "contact --scheme contact --kernel wendland2 --alpha 0.5 --res 8 "
+           "--set Scene:Ly=4e-7 --set Scene:Lz=4e-7 --t-end 1e-10 --out "
+           "%s/new2/%s",
+           dir, deep);
+  o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 2, "%d %s", o->status, o->err);
+  snprintf(path, sizeof path, "%s/new2", dir);
+  ck_assert(!exists(path));
+  /* a shear test's folder reached through a new folder and ".." */
+  snprintf(args, sizeof args,
+           "contact --scheme contact --kernel wendland2 --alpha 0.5 --res 8 "
+           "--set Scene:Ly=4e-7 --set Scene:Lz=4e-7 --t-end 1e-10 --out "
+           "%s/sh",
+           dir);
+  ck_assert_int_eq(vsph_test_cli(args)->status, 0);
+  snprintf(args, sizeof args,
+           "run poiseuille --res 8 --t-end 0.01 --quiet --out %s/sh/newdir/..",
+           dir);
+  o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 2 && strstr(o->err, "shear test"), "%d %s",
+                o->status, o->err);
+  snprintf(path, sizeof path, "%s/sh/%s", dir, VSPH_FOLDER_MARKER);
+  ck_assert(exists(path));
+  snprintf(path, sizeof path, "%s/sh/%s", dir, VSPH_FOLDER_LOCK);
+  ck_assert(exists(path));
+  snprintf(path, sizeof path, "%s/sh/newdir", dir);
+  ck_assert(!exists(path));
+  /* a lock file that is a folder, or shares its inode: refused, exit 2 */
+  for (int k = 0; k < 2; k++) {
+    char sub[300], lock[400], victim[400];
+    snprintf(sub, sizeof sub, "%s/l%d", dir, k);
+    ck_assert_int_eq(mkdir(sub, 0700), 0);
+    snprintf(lock, sizeof lock, "%s/%s", sub, VSPH_FOLDER_LOCK);
+    snprintf(victim, sizeof victim, "%s/victim%d", dir, k);
+    put(victim, "keep me\n");
+    if (k == 0)
+      ck_assert_int_eq(mkdir(lock, 0700), 0);
+    else
+      ck_assert_int_eq(link(victim, lock), 0);
+    snprintf(args, sizeof args,
+             "run poiseuille --res 8 --t-end 0.01 --quiet --out %s", sub);
+    o = vsph_test_cli(args);
+    ck_assert_msg(o->status == 2 && o->err_lines == 1, "%d %s", o->status,
+                  o->err);
+    char text[32];
+    vsph_test_slurp(victim, text, sizeof text);
+    ck_assert_str_eq(text, "keep me\n");
+  }
+  rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_runs_suite(void) {
   Suite *s = suite_create("runs");
   TCase *tc = tcase_create("restart");
@@ -535,6 +655,7 @@ Suite *vsph_runs_suite(void) {
                       (int)(sizeof CASES / sizeof CASES[0]));
   tcase_add_test(tc, test_restart_refuses_foreign);
   tcase_add_test(tc, test_restart_after_kill);
+  tcase_add_test(tc, test_resume_checks_files);
   suite_add_tcase(s, tc);
   TCase *tf = tcase_create("folder");
   tcase_set_timeout(tf, 60);
@@ -543,6 +664,7 @@ Suite *vsph_runs_suite(void) {
   tcase_add_test(tf, test_folder_seal);
   tcase_add_test(tf, test_slurm_signal);
   tcase_add_test(tf, test_report_seal);
+  tcase_add_test(tf, test_refusal_leaves_paths);
   suite_add_tcase(s, tf);
   return s;
 }
