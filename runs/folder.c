@@ -311,20 +311,18 @@ static int skipped(const char *name, const char *const *skip) {
          (skip && one_of(name, skip));
 }
 
-int vsph_folder_clear(const struct vsph_folder *f, const char *const *keep) {
-  char path[4400];
-  static const char *const first[] = {"key.txt", "run.json"};
-  for (int k = 0; k < 2; k++) {
-    if (keep && one_of(first[k], keep)) continue;
-    snprintf(path, sizeof path, "%s/%s", f->dir, first[k]);
-    if (remove(path) != 0 && errno != ENOENT)
-      VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
-  }
+static int is_tmp(const char *name) { return ends_with(name, ".tmp"); }
+
+/* Remove the regular files vsph writes in the claimed folder but the
+ * marker, the lock and @p keep; only temporaries when @p tmp_only. */
+static int remove_files(const struct vsph_folder *f, const char *const *keep,
+                        int tmp_only) {
   DIR *d = opendir(f->dir);
   if (!d) VSPH_FAIL(VSPH_EIO, "cannot read %s: %s", f->dir, strerror(errno));
   int st = VSPH_OK;
+  char path[4400];
   for (struct dirent *e; !st && (e = readdir(d));) {
-    if (skipped(e->d_name, keep) ||
+    if (skipped(e->d_name, keep) || (tmp_only && !is_tmp(e->d_name)) ||
         f->kind->owns(e->d_name) != VSPH_FOLDER_FILE)
       continue;
     snprintf(path, sizeof path, "%s/%s", f->dir, e->d_name);
@@ -336,6 +334,18 @@ int vsph_folder_clear(const struct vsph_folder *f, const char *const *keep) {
   }
   closedir(d);
   return st;
+}
+
+int vsph_folder_clear(const struct vsph_folder *f, const char *const *keep) {
+  char path[4400];
+  static const char *const first[] = {"key.txt", "run.json"};
+  for (int k = 0; k < 2; k++) {
+    if (keep && one_of(first[k], keep)) continue;
+    snprintf(path, sizeof path, "%s/%s", f->dir, first[k]);
+    if (remove(path) != 0 && errno != ENOENT)
+      VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
+  }
+  return remove_files(f, keep, 0);
 }
 
 int vsph_folder_checksum(const char *path, unsigned long *crc, size_t *size) {
@@ -563,8 +573,6 @@ int vsph_folder_verify(const char *dir, const struct vsph_folder_kind *kind,
 
 /* ------------------------------------------------------------ manifests */
 
-static int is_tmp(const char *name) { return ends_with(name, ".tmp"); }
-
 char *vsph_folder_manifest(const struct vsph_folder *f,
                            const char *const *skip) {
   size_t n = 0;
@@ -663,20 +671,5 @@ int vsph_folder_manifest_holds(const struct vsph_folder *f,
 }
 
 int vsph_folder_clear_tmp(const struct vsph_folder *f) {
-  DIR *d = opendir(f->dir);
-  if (!d) VSPH_FAIL(VSPH_EIO, "cannot read %s: %s", f->dir, strerror(errno));
-  int st = VSPH_OK;
-  char path[4400];
-  for (struct dirent *e; !st && (e = readdir(d));) {
-    if (!is_tmp(e->d_name) || f->kind->owns(e->d_name) != VSPH_FOLDER_FILE)
-      continue;
-    snprintf(path, sizeof path, "%s/%s", f->dir, e->d_name);
-    if (remove(path) != 0 && errno != ENOENT) {
-      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot remove %s: %s",
-                         path, strerror(errno));
-      st = VSPH_EIO;
-    }
-  }
-  closedir(d);
-  return st;
+  return remove_files(f, NULL, 1);
 }
