@@ -76,19 +76,26 @@ int vsph_json_print(cJSON *obj) {
   return VSPH_OK;
 }
 
-int vsph_json_write(cJSON *obj, const char *dir, const char *name) {
+char *vsph_json_text(cJSON *obj) {
   char *s = cJSON_Print(obj);
   cJSON_Delete(obj);
-  if (!s) VSPH_FAIL(VSPH_ENOMEM, "cannot format JSON");
-  FILE *f = vsph_files_open(dir, name);
-  if (!f) {
+  const size_t n = s ? strlen(s) : 0;
+  char *t = s ? realloc(s, n + 2) : NULL;
+  if (!t) {
     free(s);
-    return VSPH_EIO;
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__, "cannot format JSON");
+    return NULL;
   }
-  fputs(s, f);
-  fputc('\n', f);
+  memcpy(t + n, "\n", 2);
+  return t;
+}
+
+int vsph_json_write(cJSON *obj, const char *dir, const char *name) {
+  char *s = vsph_json_text(obj);
+  if (!s) return VSPH_ENOMEM;
+  const int st = vsph_files_write(dir, name, s);
   free(s);
-  return vsph_files_close(f, dir, name);
+  return st;
 }
 
 cJSON *vsph_json_read(const char *path) {

@@ -41,6 +41,10 @@ int vsph_json_print(cJSON *obj);
 
 /** @brief Write @p obj to DIR/NAME atomically, and free it.
  *  @return VSPH_OK, VSPH_ENOMEM or VSPH_EIO. */
+/** @brief @p obj as the text vsph_json_write writes (pretty-printed, one
+ *  newline at the end); frees @p obj. Caller frees; NULL after reporting. */
+char *vsph_json_text(cJSON *obj);
+
 int vsph_json_write(cJSON *obj, const char *dir, const char *name);
 
 /** @brief Parse the JSON file @p path; NULL if it cannot be read or

@@ -161,18 +161,7 @@ static int write_run_json(const struct vsph_run *run,
   }
   if (!text) return vsph_json_write(o, res->dir, "run.json");
   /* the text only: the caller seals the folder with it, then writes it */
-  char *t = cJSON_Print(o);
-  cJSON_Delete(o);
-  if (!t) VSPH_FAIL(VSPH_ENOMEM, "cannot format run.json");
-  const size_t n = strlen(t);
-  char *g = realloc(t, n + 2);
-  if (!g) {
-    free(t);
-    VSPH_FAIL(VSPH_ENOMEM, "cannot format run.json");
-  }
-  memcpy(g + n, "\n", 2); /* as vsph_json_write ends it */
-  *text = g;
-  return VSPH_OK;
+  return (*text = vsph_json_text(o)) ? VSPH_OK : VSPH_ENOMEM;
 }
 
 /* The files written while the run goes on. */
