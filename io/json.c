@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "../analysis/dissipation.h"
 #include "../analysis/laplacian.h"
