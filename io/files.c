@@ -126,3 +126,38 @@ char *vsph_files_slurp(const char *path, size_t *len) {
   if (len) *len = (size_t)n;
   return b;
 }
+
+FILE *vsph_files_reopen(const char *dir, const char *name, long keep) {
+  char path[PATH_MAX_LEN], tmp[PATH_MAX_LEN];
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  snprintf(tmp, sizeof tmp, "%s/%s.tmp", dir, name);
+  const int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+  if (fd < 0) return NULL;
+  struct stat sb;
+  FILE *in = NULL;
+  if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode) || keep < 0 ||
+      sb.st_size < (off_t)keep || !(in = fdopen(fd, "rb"))) {
+    close(fd);
+    errno = EINVAL;
+    return NULL;
+  }
+  FILE *out = fopen(tmp, "wb");
+  char buf[1 << 16];
+  long left = keep;
+  while (out && left > 0) {
+    const size_t want = left < (long)sizeof buf ? (size_t)left : sizeof buf;
+    const size_t got = fread(buf, 1, want, in);
+    if (got == 0 || fwrite(buf, 1, got, out) != got) break;
+    left -= (long)got;
+  }
+  fclose(in);
+  int ok = out != NULL && left == 0;
+  if (out && fclose(out) != 0) ok = 0;
+  if (!ok || rename(tmp, path) != 0) {
+    const int e = errno ? errno : EIO;
+    remove(tmp);
+    errno = e;
+    return NULL;
+  }
+  return fopen(path, "a");
+}

@@ -42,6 +42,13 @@ int vsph_files_mkdir(const char *dir);
  *  there). */
 int vsph_files_target(const char *path);
 
+/** @brief Replace regular file DIR/NAME by a new file (a temporary and a
+ *  rename: a new inode, so a hard link to the old one keeps it) holding
+ *  its first @p keep bytes, and open that for appending.
+ *  @return the stream, or NULL (errno set) when it is shorter than
+ *  @p keep, not a regular file, or cannot be written. */
+FILE *vsph_files_reopen(const char *dir, const char *name, long keep);
+
 /** @brief A whole file as a NUL-terminated string (caller frees), its
  *  length in @p len if not NULL; NULL if it cannot be read (not reported:
  *  a missing cache file is normal). */

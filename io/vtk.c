@@ -512,8 +512,7 @@ int vsph_vtk_pvd_reopen(struct vsph_vtk_pvd *pvd, const char *dir, long keep) {
   char path[4096];
   snprintf(path, sizeof path, "%s/snapshots.pvd", dir);
   pvd->dir = dir;
-  pvd->f =
-      keep >= 0 && truncate(path, (off_t)keep) == 0 ? fopen(path, "a") : NULL;
+  pvd->f = vsph_files_reopen(dir, "snapshots.pvd", keep);
   if (!pvd->f)
     VSPH_FAIL(VSPH_EIO, "cannot write %s: %s", path, strerror(errno));
   return VSPH_OK;

@@ -197,8 +197,9 @@ static FILE *live_open(struct outputs *o, const char *name, const char *header,
   FILE *f = NULL;
   if (keep < 0) {
     if ((f = fopen(path, "w"))) fputs(header, f);
-  } else if (truncate(path, (off_t)keep) == 0) {
-    f = fopen(path, "a");
+  } else { /* a new file of the first bytes: a link to the old one keeps
+              it whole */
+    f = vsph_files_reopen(o->dir, name, keep);
   }
   if (!f) *st = live_failed(o, name);
   return f;

@@ -545,7 +545,9 @@ START_TEST(test_resume_checks_files) {
   snprintf(b, sizeof b, "%s/b", dir);
   struct vsph_rundir_result r;
   ck_assert_int_eq(run("poiseuille", POIS, a, 0, &r), 0);
-  for (int c = 0; c < 3; c++) {
+  char backup[400], before[8192], after[8192];
+  snprintf(backup, sizeof backup, "%s/energy-backup.csv", dir);
+  for (int c = 0; c < 4; c++) {
     ck_assert_int_eq(run("poiseuille", POIS, b, 10, &r), VSPH_EINTR);
     if (c == 0) { /* a snapshot gone */
       snprintf(path, sizeof path, "%s/snap_0001.vtp", b);
@@ -559,13 +561,23 @@ START_TEST(test_resume_checks_files) {
       fseek(f, 120, SEEK_SET);
       fputc(ch == '1' ? '2' : '1', f);
       ck_assert_int_eq(fclose(f), 0);
-    } else { /* a temporary left by a killed writer: removed, not sealed */
+    } else if (c == 2) { /* a temporary left by a killed writer: removed,
+                            not sealed */
       snprintf(path, sizeof path, "%s/checkpoint.bin.tmp", b);
       put(path, "half a checkpoint");
+    } else { /* a hard link kept of energy.csv: the resume leaves it be */
+      snprintf(path, sizeof path, "%s/energy.csv", b);
+      ck_assert_int_eq(link(path, backup), 0);
+      vsph_test_slurp(backup, before, sizeof before);
     }
     ck_assert_int_eq(run("poiseuille", POIS, b, 0, &r), 0);
-    ck_assert_msg(r.segments == (c == 2 ? 2u : 1u), "case %d: %zu", c,
-                  r.segments); /* started over */
+    ck_assert_msg(r.segments == (c >= 2 ? 2u : 1u), "case %d: %zu", c,
+                  r.segments); /* cases 0, 1: started over */
+    if (c == 3) {
+      vsph_test_slurp(backup, after, sizeof after);
+      ck_assert_str_eq(before, after);
+    }
+
     same_run(a, b);
   }
   rm_tree(dir);
