@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "../common/params.h"
 #include "../common/status.h"
@@ -227,8 +228,23 @@ int vsph_args_json(const char *cmd, void *obj) {
       cmd, vsph_json_print(obj) ? vsph_args_status(cmd, VSPH_EIO) : 0);
 }
 
-static volatile sig_atomic_t stop_signal;
-static void on_stop(int sig) { stop_signal = sig; }
+static volatile sig_atomic_t stop_signal, quick_armed, writing;
+static void on_stop(int sig) {
+  stop_signal = sig;
+  if (quick_armed && !writing) { /* nothing written yet: nothing to keep */
+    static const char msg[] =
+        "vsph: stopped by a signal during set-up; nothing was written\n";
+    ssize_t w = write(2, msg, sizeof msg - 1);
+    (void)w;
+    _exit(128 + sig);
+  }
+}
+
+volatile sig_atomic_t *vsph_args_quick_stop(void) {
+  writing = 0;
+  quick_armed = 1;
+  return &writing;
+}
 
 const volatile sig_atomic_t *vsph_args_catch_stop(void) {
   struct sigaction sa;

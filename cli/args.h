@@ -83,6 +83,14 @@ void vsph_args_install_handler(void);
  *  (the run ends after its current step; exit status 128 + signal). */
 const volatile sig_atomic_t *vsph_args_catch_stop(void);
 
+/** @brief From now on, until the flag returned is set to 1 (by the code
+ *  that starts writing, e.g. runs/rundir when it claims its folder), a
+ *  SIGINT or SIGTERM ends the process at once with 128 + signal and one
+ *  line on stderr: nothing has been written, so there is nothing to keep,
+ *  and a long set-up need not be waited for. Call after
+ *  vsph_args_catch_stop. */
+volatile sig_atomic_t *vsph_args_quick_stop(void);
+
 /** @brief Report a failed library call as one line (the first library
  *  message since the last report, else the status's name); returns 2 for
  *  invalid input and 1 for internal failures. */

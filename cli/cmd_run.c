@@ -128,11 +128,14 @@ int vsph_cmd_run_main(int argc, char **argv) {
   }
   if (len >= sizeof command) len = sizeof command - 1;
   command[len] = '\0';
+  /* until the run claims its folder nothing is written: a signal then
+   * ends vsph at once, however long the set-up */
   const struct vsph_rundir_opts opts = {.dir = out_dir,
                                         .progress = quiet ? NULL : stderr,
                                         .stop = stop,
                                         .command = command,
-                                        .cache = cache};
+                                        .cache = cache,
+                                        .writing = vsph_args_quick_stop()};
   struct vsph_rundir_result res;
   const int st = vsph_rundir_execute(prm, argv[1], &opts, &res);
   vsph_params_free(prm);

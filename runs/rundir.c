@@ -513,7 +513,15 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
       res->interrupted = 1;
       break;
     }
-    if ((st = vsph_run_iterate(run))) break;
+    if ((st = vsph_run_iterate(run)) == VSPH_EINTR) {
+      /* stopped within a step, which was put back: the state is the one
+       * after the last step, whose outputs are written */
+      st = checkpoint_write(o, run, key, res, wall0 + omp_get_wtime() - t0,
+                            cpu0 + vsph_sysinfo_cpu_s() - c0);
+      if (!st) res->interrupted = 1;
+      break;
+    }
+    if (st) break;
     now = omp_get_wtime();
     if (progress && now - last > every) {
       last = now;
@@ -652,6 +660,7 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
    * nothing) */
   struct vsph_folder fo = {.fd = -1};
   struct outputs o = {.dir = res->dir, .fo = &fo};
+  if (opts->writing) *opts->writing = 1; /* from here a stop keeps data */
   if ((st = vsph_folder_claim(&fo, res->dir, &vsph_folder_scene_run)))
     goto done;
   const int cavity = type == &vsph_cavity_type;
@@ -741,6 +750,7 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
               "(process %zu of this run)\n",
               vsph_run_time(run), vsph_run_steps(run), res->segments);
   }
+  run->integ->stop = opts->stop; /* a long step stops between stages */
   st = time_loop(&o, run, ref, key, opts, res);
   res->unstable = run->state == VSPH_RUN_UNSTABLE;
   res->unstable_time = run->t_unstable;

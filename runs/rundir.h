@@ -35,6 +35,10 @@ struct vsph_rundir_opts {
   /** if not 0, the run stops as through *stop after this many steps of
    *  this process (tests of checkpoint and restart) */
   size_t stop_after;
+  /** if not NULL, set to 1 just before the folder is claimed (the first
+   *  write): a caller's signal handler may end the process at once
+   *  before that (vsph_args_quick_stop) */
+  volatile sig_atomic_t *writing;
 };
 
 /** What one run reports back (also written to run.json). */

@@ -122,6 +122,7 @@ void vsph_integrate_free(struct vsph_integrate *s) {
     free(s->ks[f]);
   }
   for (int f = 0; f < 4; f++) free(s->extra[f]);
+  free(s->before);
   free(s);
 }
 
@@ -278,8 +279,13 @@ static int step_tvf(struct vsph_integrate *s, double dt) {
   return VSPH_OK;
 }
 
+static int keep_before(struct vsph_integrate *s);
+static void put_back(struct vsph_integrate *s);
+
 int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   if (s->props.eq.tvf) return step_tvf(s, dt);
+  /* the particles as the step finds them, to put back if it is stopped */
+  if (s->stop && keep_before(s)) return VSPH_ENOMEM;
   struct vsph_particles *p = s->p;
   const int d = p->dim, nf = nfields(s);
   /* Skin: a pair closes in by at most 2 dt max|u| over a step; factor 1.5
@@ -304,6 +310,10 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   const size_t nf_ = s->n_fluid;
   const size_t *const id = p->id;
   for (int stage = 0; stage < 4; stage++) {
+    if (s->stop && *s->stop) { /* between stages: as if never begun */
+      put_back(s);
+      return VSPH_EINTR;
+    }
     if ((st = rhs(s, 0, &nint, &min_s2))) return st;
     /* accumulate k_stage and form the next stage state, field by field
      * (contiguous, vectorised); ghosts are left alone (they are mirrored
@@ -547,4 +557,48 @@ int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
   s->reason[sizeof s->reason - 1] = '\0';
   *used = c.at;
   return VSPH_OK;
+}
+
+/* The particle arrays (every field present, n of each) copied into
+ * s->before, n first. */
+static int keep_before(struct vsph_integrate *s) {
+  struct vsph_particles *p = s->p;
+  void **a[32];
+  size_t sz[32], len = sizeof(size_t);
+  const int na = arrays(p, a, sz);
+  for (int k = 0; k < na; k++)
+    if (*a[k]) len += p->n * sz[k];
+  if (len > s->before_cap) {
+    unsigned char *g = realloc(s->before, len);
+    if (!g)
+      VSPH_FAIL(VSPH_ENOMEM, "cannot keep %zu bytes of a step's start", len);
+    s->before = g;
+    s->before_cap = len;
+  }
+  unsigned char *at = s->before;
+  memcpy(at, &p->n, sizeof(size_t));
+  at += sizeof(size_t);
+  for (int k = 0; k < na; k++)
+    if (*a[k]) {
+      memcpy(at, *a[k], p->n * sz[k]);
+      at += p->n * sz[k];
+    }
+  return VSPH_OK;
+}
+
+/* s->before back into the particles (the capacity is at least what it
+ * was: it only grows). */
+static void put_back(struct vsph_integrate *s) {
+  struct vsph_particles *p = s->p;
+  void **a[32];
+  size_t sz[32];
+  const int na = arrays(p, a, sz);
+  const unsigned char *at = s->before;
+  memcpy(&p->n, at, sizeof(size_t));
+  at += sizeof(size_t);
+  for (int k = 0; k < na; k++)
+    if (*a[k]) {
+      memcpy(*a[k], at, p->n * sz[k]);
+      at += p->n * sz[k];
+    }
 }

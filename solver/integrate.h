@@ -1,6 +1,7 @@
 #ifndef VSPH_SOLVER_INTEGRATE_H
 #define VSPH_SOLVER_INTEGRATE_H
 
+#include <signal.h>
 #include <stddef.h>
 
 #include "equations.h"
@@ -48,6 +49,12 @@ struct vsph_integrate {
   double *y0[8], *ks[8], *extra[4]; /* RK fields: r, u, rho (, e) */
   int tvf_have; /* the transport-velocity step: ks[0..2d-1] hold the last
                    evaluation's a and a_b by particle id */
+  /** if not NULL, an RK4 step is abandoned between its stages when *stop
+   *  becomes non-zero: the particles are put back as the step found them
+   *  (a copy taken before it) and the step returns VSPH_EINTR */
+  const volatile sig_atomic_t *stop;
+  unsigned char *before; /* that copy */
+  size_t before_cap;
 };
 
 /** @brief Take ownership of the fluid set @p fluid (ids 0..n-1) and set up

@@ -407,6 +407,7 @@ int vsph_run_iterate(struct vsph_run *r) {
   double dt = vsph_integrate_dt(s);
   if (s->t + dt > r->t_end) dt = r->t_end - s->t;
   const int st = vsph_integrate_step(s, dt);
+  if (st == VSPH_EINTR) return st; /* put back as the step found it */
   r->pairs += (double)s->interactions;
   int bad = vsph_integrate_check(s);
   if (st && !bad) return st; /* a failure of the code, not of the run */

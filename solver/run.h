@@ -148,7 +148,9 @@ void vsph_run_free(struct vsph_run *r);
 /** @brief One step (dt of THEORY 5, cut to land on t_end), then the
  *  stability checks; updates state and due. A run stopped as unstable is
  *  not an error.
- *  @return VSPH_OK, or an internal failure (VSPH_ENOMEM, ...). */
+ *  @return VSPH_OK; VSPH_EINTR when r->integ->stop asked for a stop
+ *  within the step (the run is then as before the call); or an internal
+ *  failure (VSPH_ENOMEM, ...). */
 int vsph_run_iterate(struct vsph_run *r);
 
 /** @brief The energy row of the current state (one extra right-hand side).

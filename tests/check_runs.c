@@ -659,6 +659,79 @@ START_TEST(test_refusal_leaves_paths) {
 }
 END_TEST
 
+/* `vsph run OUT ...` started in the background, its stderr to null. */
+static pid_t spawn_run(const char *const *args) {
+  const pid_t pid = fork();
+  ck_assert_int_ge(pid, 0);
+  if (pid == 0) {
+    if (!freopen("/dev/null", "w", stderr)) _exit(126);
+    execv(getenv("VSPH_BIN"), (char *const *)args);
+    _exit(127);
+  }
+  return pid;
+}
+
+static int wait_status(pid_t pid) {
+  int ws;
+  ck_assert_int_eq(waitpid(pid, &ws, 0), pid);
+  return WIFEXITED(ws) ? WEXITSTATUS(ws) : 128 + WTERMSIG(ws);
+}
+
+/* SIGTERM wherever it lands (between steps, within one, at an output),
+ * again and again until the run ends: bitwise the run never stopped. The
+ * signals come every 0.1-0.35 s (a step here takes milliseconds: most
+ * land within a step, which is put back as it began). */
+START_TEST(test_restart_any_signal) {
+  char dir[] = "/tmp/vsph_anysigXXXXXX", a[300], b[300], args[600];
+  scratch(dir);
+  snprintf(a, sizeof a, "%s/a", dir);
+  snprintf(b, sizeof b, "%s/b", dir);
+  snprintf(args, sizeof args,
+           "run vortex-patch --res 60 --t-end 0.5 --snapshots 3 --quiet "
+           "--out %s",
+           a);
+  ck_assert_int_eq(vsph_test_cli(args)->status, 0);
+  const char *const run_b[] = {
+      "vsph",        "run", "vortex-patch", "--res", "60", "--t-end", "0.5",
+      "--snapshots", "3",   "--quiet",      "--out", b,    NULL};
+  int rc = -1, stops = 0;
+  srand(2385); /* the same delays every time */
+  for (int k = 0; k < 60 && rc != 0; k++) {
+    const pid_t pid = spawn_run(run_b);
+    const long ms = 100 + rand() % 250;
+    nanosleep(&(struct timespec){ms / 1000, (ms % 1000) * 1000000L}, NULL);
+    kill(pid, SIGTERM);
+    rc = wait_status(pid);
+    ck_assert_msg(rc == 0 || rc == 128 + SIGTERM, "exit %d", rc);
+    stops += rc != 0;
+  }
+  ck_assert_int_eq(rc, 0);
+  ck_assert_int_ge(stops, 2);
+  same_run(a, b);
+  rm_tree(dir);
+}
+END_TEST
+
+/* A signal during a long set-up (a million particles: seconds of layout
+ * and Poisson solve) ends vsph at once, with one line: nothing had been
+ * written, and nothing is. */
+START_TEST(test_stop_during_setup) {
+  char dir[] = "/tmp/vsph_setupXXXXXX", out[300];
+  scratch(dir);
+  snprintf(out, sizeof out, "%s/big", dir);
+  const char *const run_big[] = {"vsph",  "run",     "stretching-square",
+                                 "--res", "1000",    "--t-end",
+                                 "1e-9",  "--quiet", "--out",
+                                 out,     NULL};
+  const pid_t pid = spawn_run(run_big);
+  nanosleep(&(struct timespec){0, 300000000L}, NULL);
+  kill(pid, SIGTERM);
+  ck_assert_int_eq(wait_status(pid), 128 + SIGTERM);
+  ck_assert_msg(!exists(out), "the stopped set-up wrote %s", out);
+  rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_runs_suite(void) {
   Suite *s = suite_create("runs");
   TCase *tc = tcase_create("restart");
@@ -668,6 +741,8 @@ Suite *vsph_runs_suite(void) {
   tcase_add_test(tc, test_restart_refuses_foreign);
   tcase_add_test(tc, test_restart_after_kill);
   tcase_add_test(tc, test_resume_checks_files);
+  tcase_add_test(tc, test_restart_any_signal);
+  tcase_add_test(tc, test_stop_during_setup);
   suite_add_tcase(s, tc);
   TCase *tf = tcase_create("folder");
   tcase_set_timeout(tf, 60);
