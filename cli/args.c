@@ -233,7 +233,8 @@ static void on_stop(int sig) {
   stop_signal = sig;
   if (quick_armed && !writing) { /* nothing written yet: nothing to keep */
     static const char msg[] =
-        "vsph: stopped by a signal during set-up; nothing was written\n";
+        "vsph: stopped by a signal (a file being written is left as its "
+        ".tmp, never in place)\n";
     ssize_t w = write(2, msg, sizeof msg - 1);
     (void)w;
     _exit(128 + sig);

@@ -209,6 +209,10 @@ int vsph_cmd_report_main(int argc, char **argv) {
   rp.only = only;
   /* SIGINT/SIGTERM: the run in progress stops after its step, uncached */
   const volatile sig_atomic_t *stop = rp.stop = vsph_args_catch_stop();
+  /* but for the runs (which stop after a checkpoint), a signal ends the
+   * report at once: its parts and files are written whole or not at all,
+   * and its seal is written last */
+  rp.writing = vsph_args_quick_stop();
   const int st = vsph_report_write(&rp);
   if (st == VSPH_EINTR) {
     fprintf(stderr,

@@ -358,7 +358,9 @@ static struct vsph_folder report_folder = {.fd = -1};
 
 static int lock_dir(const char *dir) {
   vsph_folder_release(&report_folder); /* a second report, in tests */
-  return vsph_folder_claim(&report_folder, dir, &vsph_folder_report);
+  const int st = vsph_folder_claim(&report_folder, dir, &vsph_folder_report);
+  /* the temporaries a report stopped by a signal left */
+  return st ? st : vsph_folder_clear_tmp(&report_folder);
 }
 
 /* Run what the plan misses, as the mode says. */
@@ -451,7 +453,9 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   if (!st && rp->mode != VSPH_REPORT_ASSEMBLE) {
     for (size_t k = 0; k < R->jobs.n; k++) R->made += !R->jobs.job[k].cached;
     const double t_runs = omp_get_wtime();
+    if (rp->writing) *rp->writing = 1; /* runs stop after a checkpoint */
     st = run_missing(R, rp);
+    if (rp->writing) *rp->writing = 0; /* parts: a stop ends at once */
     R->runs_wall = omp_get_wtime() - t_runs;
   }
   R->wo = gsl_integration_workspace_alloc(1000);

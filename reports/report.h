@@ -25,6 +25,11 @@ struct vsph_report_props {
    *  *stop became non-zero, and the report returns VSPH_EINTR (the run is
    *  redone next time: it is not cached) */
   const volatile sig_atomic_t *stop;
+  /** if not NULL, set to 1 while runs go on (a stop must let them
+   *  checkpoint) and to 0 around them, when a caller's handler may end
+   *  the process at once (vsph_args_quick_stop: every part and file is
+   *  written whole or not at all, and the seal comes last) */
+  volatile sig_atomic_t *writing;
   int mode;              /*!< VSPH_REPORT_LOCAL, ... (below) */
   size_t jobs, threads;  /*!< POOL: processes at a time, threads each;
                               SLURM: threads (CPUs) per task */

@@ -732,6 +732,38 @@ START_TEST(test_stop_during_setup) {
 }
 END_TEST
 
+/* A report's parts (no runs) stop at once on a signal: exit 143, no
+ * seal, nothing half written in place; the next report removes the
+ * temporaries and completes. */
+START_TEST(test_report_stops_at_once) {
+  char dir[] = "/tmp/vsph_repstopXXXXXX", out[300], path[400];
+  scratch(dir);
+  snprintf(out, sizeof out, "%s/rep", dir);
+  const char *const rep[] = {"vsph",  "report", "--only", "profiles",
+                             "--out", out,      NULL};
+  const pid_t pid = spawn_run(rep);
+  nanosleep(&(struct timespec){0, 300000000L}, NULL);
+  kill(pid, SIGTERM);
+  ck_assert_int_eq(wait_status(pid), 128 + SIGTERM);
+  snprintf(path, sizeof path, "%s/key.txt", out);
+  ck_assert(!exists(path));
+  snprintf(path, sizeof path, "%s/report.md", out);
+  ck_assert(!exists(path));
+  char args[600];
+  snprintf(args, sizeof args, "report --only profiles --out %s", out);
+  ck_assert_int_eq(vsph_test_cli(args)->status, 0);
+  DIR *d = opendir(out);
+  ck_assert_ptr_nonnull(d);
+  for (struct dirent *e; (e = readdir(d));) {
+    const size_t n = strlen(e->d_name);
+    ck_assert_msg(n < 4 || strcmp(e->d_name + n - 4, ".tmp"), "%s left",
+                  e->d_name);
+  }
+  closedir(d);
+  rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_runs_suite(void) {
   Suite *s = suite_create("runs");
   TCase *tc = tcase_create("restart");
@@ -743,6 +775,7 @@ Suite *vsph_runs_suite(void) {
   tcase_add_test(tc, test_resume_checks_files);
   tcase_add_test(tc, test_restart_any_signal);
   tcase_add_test(tc, test_stop_during_setup);
+  tcase_add_test(tc, test_report_stops_at_once);
   suite_add_tcase(s, tc);
   TCase *tf = tcase_create("folder");
   tcase_set_timeout(tf, 60);
