@@ -18,6 +18,14 @@ void vsph_test_slurp(const char *path, char *buf, size_t n) {
   if (f) fclose(f);
 }
 
+void vsph_test_scratch(char *dir) { ck_assert_ptr_nonnull(mkdtemp(dir)); }
+
+void vsph_test_rm_tree(const char *dir) {
+  char cmd[600];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+  ck_assert_int_eq(system(cmd), 0);
+}
+
 struct vsph_test_outcome *vsph_test_shell(const char *script) {
   static struct vsph_test_outcome o;
   ck_assert_msg(getenv("VSPH_BIN") != NULL,

@@ -21,14 +21,6 @@
 
 static char js[1 << 14];
 
-/* A scratch folder under /tmp, removed by rm_tree. */
-static void scratch(char *dir) { ck_assert_ptr_nonnull(mkdtemp(dir)); }
-static void rm_tree(const char *dir) {
-  char cmd[600];
-  snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-  ck_assert_int_eq(system(cmd), 0);
-}
-
 static int exists(const char *path) {
   struct stat sb;
   return stat(path, &sb) == 0;
@@ -62,7 +54,7 @@ END_TEST
  * run.json must say "error", never "ok". */
 START_TEST(test_lost_write_is_an_error) {
   char dir[] = "/tmp/vsph_fullXXXXXX", script[1024], path[700];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(script, sizeof script,
            "ulimit -f 8; trap '' XFSZ; exec \"$VSPH_BIN\" run "
            "stretching-square --res 10 --t-end 0.5 --set Solver:snapshots=0 "
@@ -76,7 +68,7 @@ START_TEST(test_lost_write_is_an_error) {
   vsph_test_slurp(path, js, sizeof js);
   ck_assert_msg(strstr(js, "\"status\":\t\"error\"") != NULL, "%s", js);
   ck_assert_ptr_null(strstr(js, "\"ok\""));
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -182,7 +174,7 @@ START_TEST(test_signals) {
   static const int sigs[2] = {SIGINT, SIGTERM};
   for (int k = 0; k < 2; k++) {
     char dir[] = "/tmp/vsph_sigXXXXXX", path[700];
-    scratch(dir);
+    vsph_test_scratch(dir);
     char out[600];
     snprintf(out, sizeof out, "%s/r", dir);
     const pid_t pid = start_run(out);
@@ -198,7 +190,7 @@ START_TEST(test_signals) {
     snprintf(path, sizeof path, "%s/snapshots.pvd", out);
     vsph_test_slurp(path, js, sizeof js);
     ck_assert_ptr_nonnull(strstr(js, "</VTKFile>"));
-    rm_tree(dir);
+    vsph_test_rm_tree(dir);
   }
 }
 END_TEST
@@ -209,7 +201,7 @@ END_TEST
  * 23's folder contract); a killed rerun leaves no "ok". */
 START_TEST(test_reused_folder) {
   char dir[] = "/tmp/vsph_reuseXXXXXX", args[800], path[700];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(args, sizeof args,
            "run stretching-square --res 10 --t-end 0.1 --out %s/r --quiet",
            dir);
@@ -270,7 +262,7 @@ START_TEST(test_reused_folder) {
   waitpid(pid, NULL, 0);
   snprintf(path, sizeof path, "%s/r/run.json", dir);
   ck_assert_msg(!exists(path), "the killed rerun left the old run.json");
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -278,7 +270,7 @@ END_TEST
  * the later one's value wins, and both are recorded. */
 START_TEST(test_several_params_files) {
   char dir[] = "/tmp/vsph_parXXXXXX", script[1400], path[700];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(script, sizeof script,
            "printf 'Solver:\\n  cfl: 0.5\\n  outputs: 17\\n' > %s/a.yml && "
            "printf 'Solver:\\n  cfl: 0.75\\n' > %s/b.yml && "
@@ -290,7 +282,7 @@ START_TEST(test_several_params_files) {
   vsph_test_slurp(path, js, sizeof js);
   ck_assert_msg(strstr(js, "cfl: 0.75") != NULL, "%s", js);
   ck_assert_msg(strstr(js, "outputs: 17") != NULL, "%s", js);
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -647,7 +639,7 @@ START_TEST(test_series_at_tiny_times) {
   ck_assert_msg(now_s() - t0 < 2.0, "2000 calls took %.2f s", now_s() - t0);
   ck_assert(isfinite(sum));
   char dir[] = "/tmp/vsph_tinyXXXXXX", args[200];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(args, sizeof args,
            "run poiseuille --res 40 --t-end 1e-300 --out %s/r --quiet", dir);
   t0 = now_s();
@@ -655,7 +647,7 @@ START_TEST(test_series_at_tiny_times) {
   ck_assert_msg(o->status == 0, "exit %d: %s", o->status, o->err);
   ck_assert_msg(now_s() - t0 < 10.0, "the one-step run took %.1f s",
                 now_s() - t0);
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -666,7 +658,7 @@ END_TEST
  * run.json "interrupted" at t = 0. */
 START_TEST(test_signal_during_setup) {
   char dir[] = "/tmp/vsph_setupXXXXXX", out[64], path[96];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(out, sizeof out, "%s/r", dir);
   const pid_t pid = fork();
   ck_assert_int_ge(pid, 0);
@@ -689,7 +681,7 @@ START_TEST(test_signal_during_setup) {
   vsph_test_slurp(path, js, sizeof js);
   ck_assert_msg(strstr(js, "\"interrupted\"") != NULL, "%s", js);
   ck_assert_ptr_null(strstr(js, "\"ok\""));
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -766,7 +758,7 @@ START_TEST(test_defaults_run) {
   const char *c = strstr(help, "commands:\n");
   ck_assert_ptr_nonnull(c);
   char dir[] = "/tmp/vsph_defaultsXXXXXX";
-  scratch(dir);
+  vsph_test_scratch(dir);
   int seen = 0;
   for (c = strchr(c, '\n') + 1; *c == ' '; c = strchr(c, '\n') + 1) {
     char name[32];
@@ -808,7 +800,7 @@ START_TEST(test_defaults_run) {
                     "%s", o->out);
   }
   ck_assert_int_ge(seen, 9);
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 

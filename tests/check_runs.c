@@ -24,14 +24,6 @@
 #include "../runs/rundir.h"
 #include "check_suites.h"
 
-static void scratch(char *dir) { ck_assert_ptr_nonnull(mkdtemp(dir)); }
-
-static void rm_tree(const char *dir) {
-  char cmd[600];
-  snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-  ck_assert_int_eq(system(cmd), 0);
-}
-
 static int exists(const char *path) {
   struct stat sb;
   return lstat(path, &sb) == 0;
@@ -171,7 +163,7 @@ static const struct {
  * stopped. */
 START_TEST(test_restart_bitwise) {
   char dir[] = "/tmp/vsph_restartXXXXXX", a[300], b[300];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(a, sizeof a, "%s/a", dir);
   snprintf(b, sizeof b, "%s/b", dir);
   struct vsph_rundir_result ra, rb;
@@ -193,7 +185,7 @@ START_TEST(test_restart_bitwise) {
   char ck[400];
   snprintf(ck, sizeof ck, "%s/checkpoint.bin", b);
   ck_assert_msg(!exists(ck), "an ended run kept its checkpoint");
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -201,7 +193,7 @@ END_TEST
  * over and ends as a fresh one. */
 START_TEST(test_restart_refuses_foreign) {
   char dir[] = "/tmp/vsph_foreignXXXXXX", a[300], b[300], ck[400];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(a, sizeof a, "%s/a", dir);
   snprintf(b, sizeof b, "%s/b", dir);
   snprintf(ck, sizeof ck, "%s/checkpoint.bin", b);
@@ -229,7 +221,7 @@ START_TEST(test_restart_refuses_foreign) {
   ck_assert_int_eq(run("poiseuille", POIS, b, 0, &r), 0);
   ck_assert_uint_eq(r.segments, 1);
   same_run(a, b);
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -238,7 +230,7 @@ END_TEST
  * and ends bitwise as the run never stopped. */
 START_TEST(test_restart_after_kill) {
   char dir[] = "/tmp/vsph_killXXXXXX", args[600], a[300], b[300];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(a, sizeof a, "%s/a", dir);
   snprintf(b, sizeof b, "%s/b", dir);
   const char *run_args =
@@ -275,7 +267,7 @@ START_TEST(test_restart_after_kill) {
   vsph_test_slurp(energy, js, sizeof js);
   ck_assert_ptr_nonnull(strstr(js, "\"wall_segments\":\t2"));
   same_run(a, b);
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -284,7 +276,7 @@ END_TEST
  * changes nothing. */
 START_TEST(test_folder_marker) {
   char dir[] = "/tmp/vsph_markerXXXXXX", sub[300], path[400], args[600];
-  scratch(dir);
+  vsph_test_scratch(dir);
   static const char *const names[] = {
       "run.json",      "energy.csv",     "profile.csv", "snapshots.pvd",
       "snap_0000.vtp", "centreline.csv", "key.txt",     "summary.csv"};
@@ -369,7 +361,7 @@ START_TEST(test_folder_marker) {
   ck_assert_msg(
       o->status == 2 && strstr(o->err, "key.txt, which is a symbolic"), "%d %s",
       o->status, o->err);
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -378,7 +370,7 @@ END_TEST
  * released, the second runs. */
 START_TEST(test_folder_lock) {
   char dir[] = "/tmp/vsph_lockXXXXXX", sub[300], args[600], pid[32];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(sub, sizeof sub, "%s/r", dir);
   struct vsph_folder f;
   ck_assert_int_eq(vsph_folder_claim(&f, sub, &vsph_folder_scene_run), 0);
@@ -394,7 +386,7 @@ START_TEST(test_folder_lock) {
   vsph_folder_release(&f);
   ck_assert_int_eq(vsph_test_cli(args)->status, 0);
   ck_assert(exists(path));
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -402,7 +394,7 @@ END_TEST
  * cache then runs again, and the run restores the seal. */
 START_TEST(test_folder_seal) {
   char dir[] = "/tmp/vsph_sealXXXXXX", sub[300], path[400], args[600];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(sub, sizeof sub, "%s/r", dir);
   struct vsph_rundir_result r;
   static const char *const set[] = {"Solver:res=8", "Solver:t_end=0.02", NULL};
@@ -461,7 +453,7 @@ START_TEST(test_folder_seal) {
                                         why, sizeof why),
                      1);
   }
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -471,7 +463,7 @@ END_TEST
  * own SIGTERM at the limit. A stand-in sbatch takes the scripts. */
 START_TEST(test_slurm_signal) {
   char dir[] = "/tmp/vsph_slurmXXXXXX", fake[300], args[900], path[400];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(fake, sizeof fake, "%s/sbatch", dir);
   put(fake, "#!/bin/sh\necho 4242\n");
   ck_assert_int_eq(chmod(fake, 0700), 0);
@@ -495,7 +487,7 @@ START_TEST(test_slurm_signal) {
                       cases[k].signal,
                   "--time %s", cases[k].limit);
   }
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -504,7 +496,7 @@ END_TEST
  * is a report's) replaces it. */
 START_TEST(test_report_seal) {
   char dir[] = "/tmp/vsph_repsealXXXXXX", out[300], path[400], args[600];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(out, sizeof out, "%s/rep", dir);
   snprintf(args, sizeof args, "report --only tensors --out %s", out);
   for (int pass = 0; pass < 2; pass++) {
@@ -530,7 +522,7 @@ START_TEST(test_report_seal) {
                      -1);
     ck_assert_msg(strstr(why, "report.md differs") != NULL, "%s", why);
   }
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -540,7 +532,7 @@ END_TEST
  * seal a mixture; the parameters file is this process's. */
 START_TEST(test_resume_checks_files) {
   char dir[] = "/tmp/vsph_resumeXXXXXX", a[300], b[300], path[400];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(a, sizeof a, "%s/a", dir);
   snprintf(b, sizeof b, "%s/b", dir);
   struct vsph_rundir_result r;
@@ -580,7 +572,7 @@ START_TEST(test_resume_checks_files) {
 
     same_run(a, b);
   }
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -590,7 +582,7 @@ END_TEST
  * through "..": its marker and lock stay. */
 START_TEST(test_refusal_leaves_paths) {
   char dir[] = "/tmp/vsph_pathsXXXXXX", args[1600], path[1200];
-  scratch(dir);
+  vsph_test_scratch(dir);
   char long_name[700];
   memset(long_name, 'x', 600);
   long_name[600] = '\0';
@@ -655,7 +647,7 @@ START_TEST(test_refusal_leaves_paths) {
     vsph_test_slurp(victim, text, sizeof text);
     ck_assert_str_eq(text, "keep me\n");
   }
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -683,7 +675,7 @@ static int wait_status(pid_t pid) {
  * land within a step, which is put back as it began). */
 START_TEST(test_restart_any_signal) {
   char dir[] = "/tmp/vsph_anysigXXXXXX", a[300], b[300], args[600];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(a, sizeof a, "%s/a", dir);
   snprintf(b, sizeof b, "%s/b", dir);
   snprintf(args, sizeof args,
@@ -708,7 +700,7 @@ START_TEST(test_restart_any_signal) {
   ck_assert_int_eq(rc, 0);
   ck_assert_int_ge(stops, 2);
   same_run(a, b);
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -717,7 +709,7 @@ END_TEST
  * written, and nothing is. */
 START_TEST(test_stop_during_setup) {
   char dir[] = "/tmp/vsph_setupXXXXXX", out[300];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(out, sizeof out, "%s/big", dir);
   const char *const run_big[] = {"vsph",  "run",     "stretching-square",
                                  "--res", "1000",    "--t-end",
@@ -728,7 +720,7 @@ START_TEST(test_stop_during_setup) {
   kill(pid, SIGTERM);
   ck_assert_int_eq(wait_status(pid), 128 + SIGTERM);
   ck_assert_msg(!exists(out), "the stopped set-up wrote %s", out);
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -737,7 +729,7 @@ END_TEST
  * temporaries and completes. */
 START_TEST(test_report_stops_at_once) {
   char dir[] = "/tmp/vsph_repstopXXXXXX", out[300], path[400];
-  scratch(dir);
+  vsph_test_scratch(dir);
   snprintf(out, sizeof out, "%s/rep", dir);
   const char *const rep[] = {"vsph",  "report", "--only", "profiles",
                              "--out", out,      NULL};
@@ -760,7 +752,7 @@ START_TEST(test_report_stops_at_once) {
                   e->d_name);
   }
   closedir(d);
-  rm_tree(dir);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 

@@ -39,6 +39,10 @@ struct vsph_test_outcome {
 struct vsph_test_outcome *vsph_test_cli(const char *args);
 /* Run a shell script (it may use $VSPH_BIN) and capture its output. */
 struct vsph_test_outcome *vsph_test_shell(const char *script);
+/* A scratch folder: DIR ends in XXXXXX (mkdtemp); removed with all it
+ * holds by vsph_test_rm_tree. */
+void vsph_test_scratch(char *dir);
+void vsph_test_rm_tree(const char *dir);
 /* The first n - 1 bytes of a file ("" if it cannot be read). */
 void vsph_test_slurp(const char *path, char *buf, size_t n);
 
