@@ -1,6 +1,7 @@
 #ifndef VSPH_IO_VTK_H
 #define VSPH_IO_VTK_H
 
+#include <signal.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -32,11 +33,16 @@ struct vsph_diagnostics;
  *  and free_surface (UInt8), and id (Int64). FieldData: TimeValue (the
  *  exact double @p t) and array_descriptions (one string per array:
  *  "name: what (unit)"). Every number is stored bitwise: a snapshot read
- *  back with vsph_vtk_read equals what was written.
- *  @return VSPH_OK, VSPH_ENOMEM, VSPH_ELIB (zlib failed) or VSPH_EIO. */
+ *  back with vsph_vtk_read equals what was written, and the bytes of the
+ *  file do not depend on the number of threads that compressed them.
+ *  If @p stop is not NULL, *stop is checked before each compressed block
+ *  (32 KiB): once it is set the file is abandoned before it is opened.
+ *  @return VSPH_OK, VSPH_EINTR (stopped through @p stop; nothing
+ *  written), VSPH_ENOMEM, VSPH_ELIB (zlib failed) or VSPH_EIO. */
 int vsph_vtk_write(const char *dir, const char *name,
                    const struct vsph_particles *p, size_t n_fluid, double t,
-                   const struct vsph_diagnostics *dg);
+                   const struct vsph_diagnostics *dg,
+                   const volatile sig_atomic_t *stop);
 
 /** A snapshot read back (arrays of n tuples in id order, 3 components for
  *  vectors; an array the file lacks reads as zeros). */

@@ -285,6 +285,9 @@ int vsph_folder_claim(struct vsph_folder *f, const char *dir,
 void vsph_folder_release(struct vsph_folder *f) {
   if (f->fd >= 0) close(f->fd);
   f->fd = -1;
+  free(f->crcs);
+  f->crcs = NULL;
+  f->ncrcs = 0;
 }
 
 void vsph_folder_abandon(struct vsph_folder *f) {
@@ -348,13 +351,40 @@ int vsph_folder_clear(const struct vsph_folder *f, const char *const *keep) {
   return remove_files(f, keep, 0);
 }
 
-int vsph_folder_checksum(const char *path, unsigned long *crc, size_t *size) {
+/* A file's identity for the manifest's cache: a file written anew (by
+ * rename, or in place) differs in one of these. */
+struct vsph_folder_crc {
+  char name[256];
+  dev_t dev;
+  ino_t ino;
+  off_t size;
+  struct timespec mtim, ctim;
+  unsigned long crc;
+};
+
+static int same_file(const struct vsph_folder_crc *c, const struct stat *sb) {
+  return c->dev == sb->st_dev && c->ino == sb->st_ino &&
+         c->size == sb->st_size && c->mtim.tv_sec == sb->st_mtim.tv_sec &&
+         c->mtim.tv_nsec == sb->st_mtim.tv_nsec &&
+         c->ctim.tv_sec == sb->st_ctim.tv_sec &&
+         c->ctim.tv_nsec == sb->st_ctim.tv_nsec;
+}
+
+/* The CRC-32 and size of regular file @p path, and its identity in @p sb,
+ * read unless @p known (may be NULL) holds it for that identity. */
+static int checksum(const char *path, const struct vsph_folder_crc *known,
+                    unsigned long *crc, size_t *size, struct stat *sb) {
   const int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
   if (fd < 0) return VSPH_EIO;
-  struct stat sb;
-  if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+  if (fstat(fd, sb) != 0 || !S_ISREG(sb->st_mode)) {
     close(fd);
     return VSPH_EIO;
+  }
+  if (known && same_file(known, sb)) {
+    close(fd);
+    *crc = known->crc;
+    *size = (size_t)sb->st_size;
+    return VSPH_OK;
   }
   uLong c = crc32(0L, Z_NULL, 0);
   size_t n = 0;
@@ -374,6 +404,48 @@ int vsph_folder_checksum(const char *path, unsigned long *crc, size_t *size) {
   *crc = (unsigned long)c;
   *size = n;
   return VSPH_OK;
+}
+
+int vsph_folder_checksum(const char *path, unsigned long *crc, size_t *size) {
+  struct stat sb;
+  return checksum(path, NULL, crc, size, &sb);
+}
+
+/* Record that file @p name of @p f, as @p sb identifies it, has CRC-32
+ * @p crc (the cache stays sorted by name). Best effort: a name too long
+ * or no memory only means the file is read again. */
+static void remember(struct vsph_folder *f, const char *name,
+                     const struct stat *sb, unsigned long crc) {
+  if (strlen(name) >= sizeof f->crcs->name) return;
+  size_t k = 0;
+  while (k < f->ncrcs && strcmp(f->crcs[k].name, name) < 0) k++;
+  if (k == f->ncrcs || strcmp(f->crcs[k].name, name)) {
+    struct vsph_folder_crc *c =
+        realloc(f->crcs, (f->ncrcs + 1) * sizeof *f->crcs);
+    if (!c) return;
+    f->crcs = c;
+    memmove(c + k + 1, c + k, (f->ncrcs - k) * sizeof *c);
+    f->ncrcs++;
+  }
+  struct vsph_folder_crc *c = &f->crcs[k];
+  snprintf(c->name, sizeof c->name, "%s", name);
+  c->dev = sb->st_dev;
+  c->ino = sb->st_ino;
+  c->size = sb->st_size;
+  c->mtim = sb->st_mtim;
+  c->ctim = sb->st_ctim;
+  c->crc = crc;
+}
+
+int vsph_folder_note(struct vsph_folder *f, const char *name) {
+  char path[4400];
+  snprintf(path, sizeof path, "%s/%s", f->dir, name);
+  unsigned long crc;
+  size_t size;
+  struct stat sb;
+  const int st = checksum(path, NULL, &crc, &size, &sb);
+  if (!st && (size_t)sb.st_size == size) remember(f, name, &sb, crc);
+  return st;
 }
 
 static int by_name(const void *a, const void *b) {
@@ -573,25 +645,52 @@ int vsph_folder_verify(const char *dir, const struct vsph_folder_kind *kind,
 
 /* ------------------------------------------------------------ manifests */
 
-char *vsph_folder_manifest(const struct vsph_folder *f,
-                           const char *const *skip) {
+char *vsph_folder_manifest(struct vsph_folder *f, const char *const *skip) {
   size_t n = 0;
   char **names = listing(f->dir, f->kind, skip, &n);
   if (!names) return NULL;
   char *text = NULL;
   size_t len = 0;
   FILE *m = open_memstream(&text, &len);
-  int ok = m != NULL;
+  /* this listing's identities replace the cache (sorted by name, as the
+   * listing is, and as the old one was) */
+  struct vsph_folder_crc *now = calloc(n ? n : 1, sizeof *now);
+  size_t nnow = 0, old = 0;
+  int ok = m != NULL && now != NULL;
   char path[4400];
   for (size_t k = 0; k < n && ok; k++) {
     if (is_tmp(names[k])) continue;
+    const int keep = strlen(names[k]) < sizeof now->name;
+    while (old < f->ncrcs && strcmp(f->crcs[old].name, names[k]) < 0) old++;
+    const struct vsph_folder_crc *known =
+        old < f->ncrcs && !strcmp(f->crcs[old].name, names[k]) ? &f->crcs[old]
+                                                               : NULL;
     unsigned long crc;
     size_t size;
+    struct stat sb;
     snprintf(path, sizeof path, "%s/%s", f->dir, names[k]);
-    ok = !vsph_folder_checksum(path, &crc, &size);
-    if (ok) fprintf(m, "%s %zu %08lx\n", names[k], size, crc);
+    ok = !checksum(path, known, &crc, &size, &sb);
+    if (!ok) break;
+    fprintf(m, "%s %zu %08lx\n", names[k], size, crc);
+    /* a file still being written (its size not the one read) is not
+     * remembered */
+    if (!keep || (size_t)sb.st_size != size) continue;
+    now[nnow++] = (struct vsph_folder_crc){.dev = sb.st_dev,
+                                           .ino = sb.st_ino,
+                                           .size = sb.st_size,
+                                           .mtim = sb.st_mtim,
+                                           .ctim = sb.st_ctim,
+                                           .crc = crc};
+    snprintf(now[nnow - 1].name, sizeof now->name, "%s", names[k]);
   }
   listing_free(names, n);
+  if (ok) {
+    free(f->crcs);
+    f->crcs = now;
+    f->ncrcs = nnow;
+  } else {
+    free(now);
+  }
   if (m && fclose(m) != 0) ok = 0;
   if (!ok) {
     free(text);
@@ -627,10 +726,9 @@ static int crc_prefix(const char *path, size_t len, unsigned long *crc) {
   return VSPH_OK;
 }
 
-int vsph_folder_manifest_holds(const struct vsph_folder *f,
-                               const char *manifest, const char *const *grow,
-                               const char *const *skip, char *why,
-                               size_t wlen) {
+int vsph_folder_manifest_holds(struct vsph_folder *f, const char *manifest,
+                               const char *const *grow, const char *const *skip,
+                               char *why, size_t wlen) {
   size_t n = 0;
   char **names = listing(f->dir, f->kind, skip, &n);
   if (!names) return say(why, wlen, "cannot list %s", f->dir);
@@ -659,6 +757,8 @@ int vsph_folder_manifest_holds(const struct vsph_folder *f,
       res = say(why, wlen, "%s changed size", name);
     else if (crc_prefix(path, size, &c2) || c2 != crc)
       res = say(why, wlen, "%s changed since the checkpoint", name);
+    else if ((size_t)sb.st_size == size) /* read whole: not again */
+      remember(f, name, &sb, crc);
     line = end + 1;
   }
   /* nothing else of vsph's but temporaries */

@@ -57,6 +57,11 @@ struct vsph_folder {
   int made_lock; /*!< 1: the claim created the lock file */
   int nmade;     /*!< folders the claim made (mkdir), outermost first */
   char made[8][4096];
+  /** the CRC-32s vsph_folder_manifest computed, by file identity (inode,
+   *  size, modification and change times): a file unchanged since is not
+   *  read again. Freed by vsph_folder_release. */
+  struct vsph_folder_crc *crcs;
+  size_t ncrcs;
 };
 
 /** @brief Judge @p dir for a writer of kind @p kind without touching it:
@@ -121,19 +126,28 @@ int vsph_folder_verify(const char *dir, const struct vsph_folder_kind *kind,
 
 /** @brief The claimed folder's files as a checkpoint sees them: "NAME
  *  SIZE CRC32" lines, sorted, for every regular file vsph writes there
- *  but the marker, the lock, key.txt, temporaries and @p skip. Caller
- *  frees; NULL (not reported) on failure. */
-char *vsph_folder_manifest(const struct vsph_folder *f,
-                           const char *const *skip);
+ *  but the marker, the lock, key.txt, temporaries and @p skip. A file
+ *  whose inode, size and modification and change times (ns) are those of
+ *  an earlier call is not read again (f->crcs): a run's snapshots are
+ *  read once, not at every checkpoint. Caller frees; NULL (not reported)
+ *  on failure. */
+char *vsph_folder_manifest(struct vsph_folder *f, const char *const *skip);
 
 /** @brief Does the claimed folder still hold what @p manifest lists? 1:
  *  every file is there with its size and CRC-32 (those named in @p grow
  *  may have grown since: their first SIZE bytes count) and no other file
  *  of vsph's (temporaries and @p skip aside); else -1 with what differs
- *  in @p why. Never reports. */
-int vsph_folder_manifest_holds(const struct vsph_folder *f,
-                               const char *manifest, const char *const *grow,
-                               const char *const *skip, char *why, size_t wlen);
+ *  in @p why. The files it reads whole go to f->crcs. Never reports. */
+int vsph_folder_manifest_holds(struct vsph_folder *f, const char *manifest,
+                               const char *const *grow, const char *const *skip,
+                               char *why, size_t wlen);
+
+/** @brief Read file @p name of the claimed folder once, now (just after
+ *  writing it, while the system still caches it), so that the manifests
+ *  that follow do not read it again while it is unchanged.
+ *  @return VSPH_OK, or VSPH_EIO (not reported) when it is not a regular
+ *  file or cannot be read. */
+int vsph_folder_note(struct vsph_folder *f, const char *name);
 
 /** @brief Remove the temporaries (NAME.tmp of a name vsph writes) that a
  *  process killed while writing left in the claimed folder.

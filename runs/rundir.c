@@ -167,7 +167,7 @@ static int write_run_json(const struct vsph_run *run,
 /* The files written while the run goes on. */
 struct outputs {
   const char *dir;
-  const struct vsph_folder *fo; /* the claimed folder */
+  struct vsph_folder *fo; /* the claimed folder */
   FILE *csv;
   FILE *profile; /* at each snapshot: channels' profile.csv, the cavity's
                     centreline.csv */
@@ -287,17 +287,25 @@ static int write_centreline(struct outputs *o, const struct vsph_run *run) {
   return live_flush(o, o->profile, o->profile_name);
 }
 
-static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
+/* A snapshot and its table rows; VSPH_EINTR, with nothing written, when
+ * *stop is set during its sums or its compression. */
+static int write_snapshot(struct outputs *o, const struct vsph_run *run,
+                          const volatile sig_atomic_t *stop) {
   char name[64];
-  snprintf(name, sizeof name, "snap_%04zu.vtp", o->nsnap++);
+  snprintf(name, sizeof name, "snap_%04zu.vtp", o->nsnap);
   const struct vsph_integrate *s = run->integ;
   struct vsph_diagnostics dg;
   int st = vsph_diagnostics_compute(s->p, s->n_fluid, s->props.eq.visc.kernel,
-                                    s->props.eq.visc.h, &dg);
+                                    s->props.eq.visc.h, &dg, stop);
   if (!st) {
-    st = vsph_vtk_write(o->dir, name, s->p, s->n_fluid, s->t, &dg);
+    st = vsph_vtk_write(o->dir, name, s->p, s->n_fluid, s->t, &dg, stop);
     vsph_diagnostics_free(&dg);
   }
+  if (st == VSPH_EINTR) return st;
+  if (!st) o->nsnap++;
+  /* read once now, while cached, not at each checkpoint (best effort: a
+   * checkpoint reads it if this fails) */
+  if (!st) (void)vsph_folder_note(o->fo, name);
   if (!st) st = vsph_vtk_pvd_add(&o->pvd, s->t, name);
   if (!st && o->profile)
     st = run->scene.type == &vsph_cavity_type ? write_centreline(o, run)
@@ -315,7 +323,7 @@ static int write_snapshot(struct outputs *o, const struct vsph_run *run) {
  * Written to a temporary, synced and renamed: a checkpoint is whole or
  * absent. */
 static const char CKPT_MAGIC[16] = "vsph checkpoint";
-enum { CKPT_VERSION = 2 };
+enum { CKPT_VERSION = 3 };
 
 /* the files a checkpoint saw, but itself and run.json (absent while a run
  * goes on) */
@@ -449,7 +457,7 @@ static unsigned char *checkpoint_read(const char *dir, const char *key,
 /* A resumed folder: key.txt and run.json go (nothing may vouch for it
  * while it runs), the live files must hold at least what the checkpoint
  * saw, and snapshots past it go. */
-static int resume_dir(const struct vsph_folder *fo, const struct ckpt *c,
+static int resume_dir(struct vsph_folder *fo, const struct ckpt *c,
                       const char *manifest, const char *profile_name, char *why,
                       size_t wlen) {
   char path[4300];
@@ -476,8 +484,12 @@ static int resume_dir(const struct vsph_folder *fo, const struct ckpt *c,
   return vsph_folder_clear_tmp(fo);
 }
 
-/* The time loop: rows and snapshots as the driver says they are due; a
- * checkpoint every Solver:checkpoint_s of wall time and when stopped. */
+/* The time loop: rows and snapshots as the driver says they are due, each
+ * bit of run->due cleared once its output is written; a checkpoint every
+ * Solver:checkpoint_s of wall time and when stopped. A stop is seen
+ * before each output, within a snapshot's sums and compression, between
+ * the stages of a step and after it: the checkpoint then keeps the
+ * outputs still due, and a resumed run writes them first. */
 static int time_loop(struct outputs *o, struct vsph_run *run,
                      struct vsph_references_scene *ref, const char *key,
                      const struct vsph_rundir_opts *opts,
@@ -494,22 +506,42 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
   const size_t step0 = vsph_run_steps(run);
   double last = t0, saved = t0;
   const double ckpt_every = run->props.checkpoint_s;
+  /* what stops the run: opts->stop (a signal), or in tests stop_after,
+   * raised through a flag of its own where opts->stop_in says */
+  volatile sig_atomic_t hook = 0;
+  const volatile sig_atomic_t *stop = opts->stop_after ? &hook : opts->stop;
+  run->integ->stop = stop; /* a long step stops between stages */
   int st = VSPH_OK;
   for (;;) {
-    if ((run->due & VSPH_RUN_ROW) && (st = write_row(o, run, ref))) break;
-    if ((run->due & VSPH_RUN_SNAPSHOT) && (st = write_snapshot(o, run))) break;
-    if (run->state != VSPH_RUN_RUNNING) break;
-    const int stop =
-        (opts->stop && *opts->stop) ||
-        (opts->stop_after && vsph_run_steps(run) - step0 >= opts->stop_after);
+    const int after =
+        opts->stop_after && vsph_run_steps(run) - step0 >= opts->stop_after;
+    if (after && (opts->stop_in & run->due & VSPH_RUN_ROW)) hook = 1;
+    if ((run->due & VSPH_RUN_ROW) && !(stop && *stop)) {
+      if ((st = write_row(o, run, ref))) break;
+      run->due &= ~(unsigned)VSPH_RUN_ROW;
+    }
+    if (after && (opts->stop_in & run->due & VSPH_RUN_SNAPSHOT)) hook = 1;
+    if (run->due & VSPH_RUN_SNAPSHOT) {
+      /* stopped before or within it, nothing is written and it stays due */
+      const int w = write_snapshot(o, run, stop);
+      if (w == VSPH_OK) run->due &= ~(unsigned)VSPH_RUN_SNAPSHOT;
+      if (w && w != VSPH_EINTR) {
+        st = w;
+        break;
+      }
+    }
+    if (after && !opts->stop_in) hook = 1;
+    const int stopped = stop && *stop;
+    /* an ended run whose outputs are all written is done, stop or not */
+    if (run->state != VSPH_RUN_RUNNING && !run->due) break;
     double now = omp_get_wtime();
-    if (stop || (ckpt_every > 0 && now - saved >= ckpt_every)) {
+    if (stopped || (ckpt_every > 0 && now - saved >= ckpt_every)) {
       saved = now;
       if ((st = checkpoint_write(o, run, key, res, wall0 + now - t0,
                                  cpu0 + vsph_sysinfo_cpu_s() - c0)))
         break;
     }
-    if (stop) { /* after a whole step, its outputs and a checkpoint */
+    if (stopped) { /* between steps, outputs maybe still due */
       res->interrupted = 1;
       break;
     }
@@ -538,6 +570,7 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
       fflush(progress);
     }
   }
+  run->integ->stop = opts->stop; /* the hook is gone with this frame */
   if (tty && last > t0) fprintf(progress, "\n");
   res->wall_s = wall0 + omp_get_wtime() - t0;
   res->cpu_s = cpu0 + vsph_sysinfo_cpu_s() - c0;
@@ -750,7 +783,6 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
               "(process %zu of this run)\n",
               vsph_run_time(run), vsph_run_steps(run), res->segments);
   }
-  run->integ->stop = opts->stop; /* a long step stops between stages */
   st = time_loop(&o, run, ref, key, opts, res);
   res->unstable = run->state == VSPH_RUN_UNSTABLE;
   res->unstable_time = run->t_unstable;

@@ -33,8 +33,13 @@ struct vsph_rundir_opts {
    *  that ends (ok or unstable) is sealed, cached or not. */
   int cache;
   /** if not 0, the run stops as through *stop after this many steps of
-   *  this process (tests of checkpoint and restart) */
+   *  this process (tests of checkpoint and restart; *stop is then not
+   *  consulted) */
   size_t stop_after;
+  /** where that stop comes: 0 after the step and its outputs; a
+   *  vsph_run_due bit: while that output is written, at the first state
+   *  past stop_after steps where it is due */
+  unsigned stop_in;
   /** if not NULL, set to 1 just before the folder is claimed (the first
    *  write): a caller's signal handler may end the process at once
    *  before that (vsph_args_quick_stop) */

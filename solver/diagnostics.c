@@ -38,8 +38,10 @@ static struct vsph_particles *copy_of(const struct vsph_particles *p) {
 
 int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
                              const struct vsph_kernel_type *k, double h,
-                             struct vsph_diagnostics *d) {
+                             struct vsph_diagnostics *d,
+                             const volatile sig_atomic_t *stop) {
   memset(d, 0, sizeof *d);
+  if (stop && *stop) return VSPH_EINTR;
   const int dim = p->dim;
   d->n = n;
   d->dim = dim;
@@ -79,6 +81,7 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
     /* gather: particle i writes only its own entries */
 #pragma omp parallel for schedule(dynamic, 16)
     for (size_t c = 0; c < cells->ncells; c++) {
+      if (stop && *stop) continue; /* a flag only ever raised: seen below */
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
@@ -119,6 +122,7 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
   }
   vsph_cells_free(cells);
   vsph_particles_free(q);
+  if (!st && stop && *stop) st = VSPH_EINTR;
   if (st) vsph_diagnostics_free(d);
   return st;
 }

@@ -1,6 +1,7 @@
 #ifndef VSPH_SOLVER_DIAGNOSTICS_H
 #define VSPH_SOLVER_DIAGNOSTICS_H
 
+#include <signal.h>
 #include <stddef.h>
 
 struct vsph_particles;
@@ -37,10 +38,14 @@ double vsph_diagnostics_surface_threshold(int dim);
  *  with kernel @p k and smoothing length @p h (m), into @p d (allocated
  *  here; free with vsph_diagnostics_free).
  *  Non-finite positions (a run stopped as unstable) give NaN fields.
- *  @return VSPH_OK or VSPH_ENOMEM. */
+ *  If @p stop is not NULL, *stop is checked first and before each cell:
+ *  once it is set the sums are abandoned.
+ *  @return VSPH_OK, VSPH_EINTR (stopped through @p stop; @p d freed) or
+ *  VSPH_ENOMEM. */
 int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
                              const struct vsph_kernel_type *k, double h,
-                             struct vsph_diagnostics *d);
+                             struct vsph_diagnostics *d,
+                             const volatile sig_atomic_t *stop);
 
 /** @brief Free the arrays of @p d (the struct itself is the caller's). */
 void vsph_diagnostics_free(struct vsph_diagnostics *d);

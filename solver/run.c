@@ -478,7 +478,8 @@ int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len) {
   if (memcmp(&rs.out_dt, &r->out_dt, sizeof rs.out_dt) ||
       memcmp(&rs.t_end, &r->t_end, sizeof rs.t_end) ||
       (rs.state != VSPH_RUN_RUNNING && rs.state != VSPH_RUN_DONE &&
-       rs.state != VSPH_RUN_UNSTABLE))
+       rs.state != VSPH_RUN_UNSTABLE) ||
+      (rs.due & ~(int32_t)(VSPH_RUN_ROW | VSPH_RUN_SNAPSHOT)))
     VSPH_FAIL(VSPH_EINVAL, "the saved state is not this run's");
   size_t used = 0;
   const int st =
@@ -492,7 +493,7 @@ int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len) {
   r->snap_dt = rs.snap_dt;
   r->next_out = rs.next_out;
   r->next_snap = rs.next_snap;
-  r->due = 0; /* packed after its due outputs were written */
+  r->due = (unsigned)rs.due; /* what its driver had not yet written */
   r->state = rs.state;
   memcpy(r->reason, rs.reason, sizeof rs.reason);
   r->reason[sizeof r->reason - 1] = '\0';

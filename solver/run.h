@@ -166,8 +166,9 @@ size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf);
 
 /** @brief Restore a state packed by vsph_run_pack into @p r, freshly made
  *  by vsph_run_alloc with the same settings (@p len bytes at @p buf).
- *  Nothing is due after it: a state is packed once its outputs are
- *  written.
+ *  Due after it is what was due when it was packed: a driver clears each
+ *  bit of vsph_run::due as it writes that output, so that a state packed
+ *  before its outputs were all written has the rest written on restore.
  *  @return VSPH_OK; VSPH_EINVAL when it is cut short or not this run's (r
  *  must then be freed); VSPH_ENOMEM. */
 int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len);

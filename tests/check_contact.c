@@ -341,7 +341,7 @@ START_TEST(test_cylinder_held) {
   /* the snapshot carries the material, 80 ones among 400 values */
   char dir[] = "/tmp/vsph_cylXXXXXX";
   ck_assert_ptr_nonnull(mkdtemp(dir));
-  ck_assert_int_eq(vsph_vtk_write(dir, "s.vtp", p, nf, 0.0, NULL), 0);
+  ck_assert_int_eq(vsph_vtk_write(dir, "s.vtp", p, nf, 0.0, NULL, NULL), 0);
   char path[64];
   snprintf(path, sizeof path, "%s/s.vtp", dir);
   int ncomp = 0;

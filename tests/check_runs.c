@@ -22,6 +22,7 @@
 #include "../io/files.h"
 #include "../runs/folder.h"
 #include "../runs/rundir.h"
+#include "../solver/run.h"
 #include "check_suites.h"
 
 static int exists(const char *path) {
@@ -37,9 +38,11 @@ static void put(const char *path, const char *text) {
 }
 
 /* One run of @p scene with the "KEY=VALUE" settings @p set into @p dir,
- * stopped after @p stop_after steps (0: not). */
-static int run(const char *scene, const char *const *set, const char *dir,
-               size_t stop_after, struct vsph_rundir_result *res) {
+ * stopped after @p stop_after steps (0: not), where @p stop_in says
+ * (vsph_rundir_opts). */
+static int run_in(const char *scene, const char *const *set, const char *dir,
+                  size_t stop_after, unsigned stop_in,
+                  struct vsph_rundir_result *res) {
   struct vsph_params *prm = vsph_params_alloc();
   ck_assert_ptr_nonnull(prm);
   for (size_t k = 0; set[k]; k++) {
@@ -50,11 +53,18 @@ static int run(const char *scene, const char *const *set, const char *dir,
     *eq = '\0';
     ck_assert_int_eq(vsph_params_set(prm, kv, eq + 1), 0);
   }
-  const struct vsph_rundir_opts o = {
-      .dir = dir, .command = "test", .stop_after = stop_after};
+  const struct vsph_rundir_opts o = {.dir = dir,
+                                     .command = "test",
+                                     .stop_after = stop_after,
+                                     .stop_in = stop_in};
   const int st = vsph_rundir_execute(prm, scene, &o, res);
   vsph_params_free(prm);
   return st;
+}
+
+static int run(const char *scene, const char *const *set, const char *dir,
+               size_t stop_after, struct vsph_rundir_result *res) {
+  return run_in(scene, set, dir, stop_after, 0, res);
 }
 
 /* run.json's fields that are timings or the machine's state: the only
@@ -185,6 +195,60 @@ START_TEST(test_restart_bitwise) {
   char ck[400];
   snprintf(ck, sizeof ck, "%s/checkpoint.bin", b);
   ck_assert_msg(!exists(ck), "an ended run kept its checkpoint");
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
+static size_t count_snapshots(const char *dir) {
+  size_t n = 0;
+  DIR *d = opendir(dir);
+  ck_assert_ptr_nonnull(d);
+  for (struct dirent *e; (e = readdir(d));)
+    n += !strncmp(e->d_name, "snap_", 5);
+  closedir(d);
+  return n;
+}
+
+/* Stopped while an output is written (before its energy row; within a
+ * snapshot's sums and compression), after 1, 2, 4, ... steps of each
+ * process and at the very end: the output is not written, the checkpoint
+ * keeps it due, and the resumed run writes it first: bitwise the run
+ * never stopped. (A checkpoint that forgot what was due would lose a row
+ * or a snapshot; one that remembered what was written would repeat it.) */
+START_TEST(test_restart_within_outputs) {
+  static const unsigned where[] = {VSPH_RUN_ROW, VSPH_RUN_SNAPSHOT};
+  static const char *const SNAPS[] = {"Solver:res=8", "Solver:t_end=0.1",
+                                      "Solver:outputs=30",
+                                      "Solver:snapshots=10", NULL};
+  char dir[] = "/tmp/vsph_withinXXXXXX", a[300], b[300], c[300];
+  vsph_test_scratch(dir);
+  snprintf(a, sizeof a, "%s/a", dir);
+  struct vsph_rundir_result ra, rb;
+  ck_assert_int_eq(run("poiseuille", SNAPS, a, 0, &ra), 0);
+  const size_t nsnap = count_snapshots(a);
+  ck_assert_uint_eq(nsnap, 11); /* t = 0, 10 intervals (the end among them) */
+  for (int w = 0; w < 2; w++) {
+    snprintf(b, sizeof b, "%s/b%d", dir, w);
+    int st, stops = 0;
+    for (size_t k = 1; (st = run_in("poiseuille", SNAPS, b, k, where[w], &rb));
+         k *= 2) {
+      ck_assert_int_eq(st, VSPH_EINTR);
+      ck_assert(rb.interrupted);
+      stops++;
+    }
+    ck_assert_int_ge(stops, 2);
+    same_run(a, b);
+    /* at the very end: the last step done, its snapshot (or row) due */
+    snprintf(c, sizeof c, "%s/c%d", dir, w);
+    ck_assert_int_eq(run_in("poiseuille", SNAPS, c, ra.steps, where[w], &rb),
+                     VSPH_EINTR);
+    ck_assert_uint_eq(rb.steps, ra.steps);
+    /* (a stop before the row keeps the snapshot due with it) */
+    ck_assert_uint_eq(count_snapshots(c), nsnap - 1);
+    ck_assert_int_eq(run("poiseuille", SNAPS, c, 0, &rb), 0);
+    ck_assert_uint_eq(rb.segments, 2);
+    same_run(a, c);
+  }
   vsph_test_rm_tree(dir);
 }
 END_TEST
@@ -392,6 +456,65 @@ END_TEST
 
 /* The seal: a cut, edited, added or missing file breaks it by name; the
  * cache then runs again, and the run restores the seal. */
+/* The manifest's line for file @p name of @p dir, read afresh. */
+static void manifest_line(const char *dir, const char *name, char *line,
+                          size_t len) {
+  char path[400];
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  unsigned long crc;
+  size_t size;
+  ck_assert_int_eq(vsph_folder_checksum(path, &crc, &size), 0);
+  snprintf(line, len, "%s %zu %08lx\n", name, size, crc);
+}
+
+/* A checkpoint's manifest reads a file again only when it changed: the
+ * same text from the cache as from the files; a file replaced (renamed
+ * over, same size), rewritten in place or grown is read anew; one noted
+ * (vsph_folder_note) is what a manifest would read. */
+START_TEST(test_folder_manifest_cache) {
+  char dir[] = "/tmp/vsph_manifestXXXXXX", sub[300], path[400], tmp[400];
+  vsph_test_scratch(dir);
+  snprintf(sub, sizeof sub, "%s/r", dir);
+  struct vsph_folder f;
+  ck_assert_int_eq(vsph_folder_claim(&f, sub, &vsph_folder_scene_run), 0);
+  snprintf(path, sizeof path, "%s/snap_0000.vtp", sub);
+  snprintf(tmp, sizeof tmp, "%s/snap_0000.vtp.tmp", sub);
+  put(path, "first snapshot");
+  char e[400], want[900];
+  snprintf(e, sizeof e, "%s/energy.csv", sub);
+  put(e, "t,Ek\n");
+  for (int round = 0; round < 5; round++) {
+    if (round == 1) { /* replaced, as vsph writes a snapshot: same size */
+      put(tmp, "other snapshot");
+      ck_assert_int_eq(rename(tmp, path), 0);
+    } else if (round == 2) { /* rewritten in place, same size */
+      nanosleep(&(struct timespec){0, 20000000}, NULL); /* a clock tick */
+      put(path, "third snapshot");
+    } else if (round == 3) { /* grown */
+      put(e, "t,Ek\n0,1\n");
+    } else if (round == 4) { /* replaced, then noted */
+      put(tmp, "fifth snapshot");
+      ck_assert_int_eq(rename(tmp, path), 0);
+      ck_assert_int_eq(vsph_folder_note(&f, "snap_0000.vtp"), 0);
+    }
+    char a[400], b[400];
+    manifest_line(sub, "energy.csv", a, sizeof a);
+    manifest_line(sub, "snap_0000.vtp", b, sizeof b);
+    snprintf(want, sizeof want, "%s%s", a, b);
+    for (int again = 0; again < 2; again++) { /* the second from the cache */
+      char *m = vsph_folder_manifest(&f, NULL);
+      ck_assert_ptr_nonnull(m);
+      ck_assert_str_eq(m, want);
+      free(m);
+    }
+    ck_assert_uint_eq(f.ncrcs, 2);
+  }
+  vsph_folder_release(&f);
+  ck_assert_ptr_null(f.crcs);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 START_TEST(test_folder_seal) {
   char dir[] = "/tmp/vsph_sealXXXXXX", sub[300], path[400], args[600];
   vsph_test_scratch(dir);
@@ -762,6 +885,7 @@ Suite *vsph_runs_suite(void) {
   tcase_set_timeout(tc, 60);
   tcase_add_loop_test(tc, test_restart_bitwise, 0,
                       (int)(sizeof CASES / sizeof CASES[0]));
+  tcase_add_test(tc, test_restart_within_outputs);
   tcase_add_test(tc, test_restart_refuses_foreign);
   tcase_add_test(tc, test_restart_after_kill);
   tcase_add_test(tc, test_resume_checks_files);
@@ -774,6 +898,7 @@ Suite *vsph_runs_suite(void) {
   tcase_add_test(tf, test_folder_marker);
   tcase_add_test(tf, test_folder_lock);
   tcase_add_test(tf, test_folder_seal);
+  tcase_add_test(tf, test_folder_manifest_cache);
   tcase_add_test(tf, test_slurm_signal);
   tcase_add_test(tf, test_report_seal);
   tcase_add_test(tf, test_refusal_leaves_paths);

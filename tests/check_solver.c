@@ -2,6 +2,7 @@
  * tolerances tied to theory or to the measured behaviour. */
 #include <math.h>
 #include <omp.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -9,6 +10,7 @@
 #include "../analysis/references.h"
 #include "../common/consts.h"
 #include "../common/params.h"
+#include "../common/status.h"
 #include "../io/vtk.h"
 #include "../kernels/kernel.h"
 #include "../solver/cells.h"
@@ -315,7 +317,7 @@ START_TEST(test_diagnostics) {
   const double x7 = p->pos[0][7];
   struct vsph_diagnostics dg;
   ck_assert_int_eq(
-      vsph_diagnostics_compute(p, p->n, &vsph_gaussian_type, h, &dg), 0);
+      vsph_diagnostics_compute(p, p->n, &vsph_gaussian_type, h, &dg, NULL), 0);
   ck_assert(p->pos[0][7] == x7 && p->id[7] == 7);
   size_t inner = 0;
   for (size_t i = 0; i < p->n; i++) {
@@ -333,9 +335,16 @@ START_TEST(test_diagnostics) {
     if (edge > 3.5 * dx) ck_assert_int_eq(dg.surf[id], 0);
   }
   ck_assert_uint_gt(inner, 100);
+  /* stopped (the flag raised): VSPH_EINTR, nothing left allocated */
+  struct vsph_diagnostics stopped;
+  volatile sig_atomic_t stop = 1;
+  ck_assert_int_eq(vsph_diagnostics_compute(p, p->n, &vsph_gaussian_type, h,
+                                            &stopped, &stop),
+                   VSPH_EINTR);
+  ck_assert(!stopped.divr && !stopped.surf && !stopped.vort[2]);
   char dir[] = "/tmp/vsph_vtpXXXXXX";
   ck_assert_ptr_nonnull(mkdtemp(dir));
-  ck_assert_int_eq(vsph_vtk_write(dir, "s.vtp", p, p->n, 1.25, &dg), 0);
+  ck_assert_int_eq(vsph_vtk_write(dir, "s.vtp", p, p->n, 1.25, &dg, NULL), 0);
   char path[64];
   snprintf(path, sizeof path, "%s/s.vtp", dir);
   struct vsph_vtk_snapshot sn;

@@ -9,6 +9,8 @@
  * same files in ParaView itself. */
 #include <gsl/gsl_rng.h>
 #include <math.h>
+#include <omp.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,6 +19,7 @@
 #include <zlib.h>
 
 #include "../common/status.h"
+#include "../io/files.h"
 #include "../io/vtk.h"
 #include "../solver/diagnostics.h"
 #include "../solver/particles.h"
@@ -255,8 +258,8 @@ static void write_case(int c, struct fixture *fx, char *dir, char *path,
                        size_t n) {
   fixture_make(fx, cases[c].dim, cases[c].n, cases[c].mat);
   ck_assert_ptr_nonnull(mkdtemp(dir));
-  ck_assert_int_eq(vsph_vtk_write(dir, "s.vtp", fx->p, fx->n, fx->t, &fx->dg),
-                   0);
+  ck_assert_int_eq(
+      vsph_vtk_write(dir, "s.vtp", fx->p, fx->n, fx->t, &fx->dg, NULL), 0);
   snprintf(path, n, "%s/s.vtp", dir);
 }
 
@@ -301,6 +304,49 @@ START_TEST(test_roundtrip) {
   }
   ck_assert_uint_eq(seen, fx.n);
   vsph_vtk_snapshot_free(&s);
+  clean_case(&fx, dir, path);
+}
+END_TEST
+
+/* The blocks are compressed in parallel: the file's bytes are the same
+ * whether 1 or 2 threads wrote it. With the stop flag raised the writer
+ * abandons the file before it is opened (VSPH_EINTR; the folder stays
+ * empty, no temporary), and writes it whole once the flag is down. */
+START_TEST(test_threads_and_stop) {
+  struct fixture fx;
+  char dir[] = "/tmp/vsph_vtkXXXXXX", path[64], two[80];
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  write_case(_i, &fx, dir, path, sizeof path);
+  size_t l1 = 0, l2 = 0;
+  char *b1 = vsph_files_slurp(path, &l1);
+  ck_assert_ptr_nonnull(b1);
+  omp_set_num_threads(2);
+  ck_assert_int_eq(
+      vsph_vtk_write(dir, "two.vtp", fx.p, fx.n, fx.t, &fx.dg, NULL), 0);
+  omp_set_num_threads(threads);
+  snprintf(two, sizeof two, "%s/two.vtp", dir);
+  char *b2 = vsph_files_slurp(two, &l2);
+  ck_assert_ptr_nonnull(b2);
+  ck_assert(l1 == l2 && !memcmp(b1, b2, l1));
+  free(b2);
+  remove(two);
+  remove(path);
+  volatile sig_atomic_t stop = 1;
+  ck_assert_int_eq(
+      vsph_vtk_write(dir, "s.vtp", fx.p, fx.n, fx.t, &fx.dg, &stop),
+      VSPH_EINTR);
+  ck_assert_int_eq(rmdir(dir), 0); /* empty: nothing was written */
+  ck_assert_ptr_nonnull(mkdtemp(strcpy(dir, "/tmp/vsph_vtkXXXXXX")));
+  stop = 0;
+  ck_assert_int_eq(
+      vsph_vtk_write(dir, "s.vtp", fx.p, fx.n, fx.t, &fx.dg, &stop), 0);
+  snprintf(path, sizeof path, "%s/s.vtp", dir);
+  b2 = vsph_files_slurp(path, &l2);
+  ck_assert_ptr_nonnull(b2);
+  ck_assert(l1 == l2 && !memcmp(b1, b2, l1));
+  free(b1);
+  free(b2);
   clean_case(&fx, dir, path);
 }
 END_TEST
@@ -572,6 +618,7 @@ Suite *vsph_vtk_suite(void) {
   tcase_set_timeout(tc, 20);
   tcase_add_loop_test(tc, test_roundtrip, 0, NCASES);
   tcase_add_loop_test(tc, test_layout, 0, NCASES);
+  tcase_add_loop_test(tc, test_threads_and_stop, 0, NCASES);
   tcase_add_loop_test(tc, test_descriptions, 0, NCASES);
   tcase_add_test(tc, test_read_errors);
   tcase_add_test(tc, test_run_times);
