@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/time.h>
 #include <unistd.h>
 
 #include "../common/params.h"
@@ -231,7 +232,8 @@ int vsph_args_json(const char *cmd, void *obj) {
 static volatile sig_atomic_t stop_signal, quick_armed, writing;
 static void on_stop(int sig) {
   stop_signal = sig;
-  if (quick_armed && !writing) { /* nothing written yet: nothing to keep */
+  /* nothing written yet: nothing to keep (a spent budget waits) */
+  if (quick_armed && !writing && sig != SIGALRM) {
     static const char msg[] =
         "vsph: stopped by a signal (a file being written is left as its "
         ".tmp, never in place)\n";
@@ -245,6 +247,23 @@ volatile sig_atomic_t *vsph_args_quick_stop(void) {
   writing = 0;
   quick_armed = 1;
   return &writing;
+}
+
+int vsph_args_stop_after(double seconds) {
+  struct sigaction sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_stop;
+  sigemptyset(&sa.sa_mask);
+  if (!(seconds > 0.0) || seconds > 1e9 || sigaction(SIGALRM, &sa, NULL))
+    return -1;
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGALRM);
+  pthread_sigmask(SIG_UNBLOCK, &set, NULL);
+  struct itimerval it = {{0, 0}, {(time_t)seconds, 0}};
+  it.it_value.tv_usec =
+      (suseconds_t)((seconds - (double)(time_t)seconds) * 1e6);
+  return setitimer(ITIMER_REAL, &it, NULL);
 }
 
 const volatile sig_atomic_t *vsph_args_catch_stop(void) {

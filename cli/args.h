@@ -91,6 +91,12 @@ const volatile sig_atomic_t *vsph_args_catch_stop(void);
  *  vsph_args_catch_stop. */
 volatile sig_atomic_t *vsph_args_quick_stop(void);
 
+/** @brief After @p seconds of wall time (> 0), raise the stop flag of
+ *  vsph_args_catch_stop as a signal would, with SIGALRM's number: a time
+ *  budget, spent. It never ends the process at once (a budget is not an
+ *  interruption). @return 0, or -1 when the timer cannot be set. */
+int vsph_args_stop_after(double seconds);
+
 /** @brief Report a failed library call as one line (the first library
  *  message since the last report, else the status's name); returns 2 for
  *  invalid input and 1 for internal failures. */

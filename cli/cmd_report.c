@@ -1,12 +1,14 @@
 /* vsph report: the main job (reports/report.c). */
 #include "cmd_report.h"
 
+#include <errno.h>
 #include <limits.h>
 #include <omp.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "../common/params.h"
@@ -38,7 +40,7 @@ static int on_path(const char *name) {
 
 int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
-  const char *partition = NULL, *limit = NULL;
+  const char *partition = NULL, *limit = NULL, *budget = NULL;
   int full = 0, plan = 0, slurm = 0, assemble = 0;
   size_t jobs = 0, threads = 0;
   const struct vsph_args_spec own[] = {
@@ -74,7 +76,14 @@ int vsph_cmd_report_main(int argc, char **argv) {
        "D-HH:MM:SS; default: estimated from the largest run)"},
       {"--assemble", VSPH_ARGS_FLAG, &assemble, NULL,
        "run nothing: assemble from the cached runs, naming any that is "
-       "missing (the Slurm assembly job)"}};
+       "missing (the Slurm assembly job)"},
+      {"--budget", VSPH_ARGS_STRING, &budget, "TIME",
+       "run only the missing runs that fit TIME of wall time (90s, 150m, "
+       "2.5h; a plain number is seconds), the costliest first, at the rates "
+       "the cached runs measured, niced, two at a time (or as --jobs says); "
+       "when TIME is spent the runs stop at a checkpoint and the next "
+       "--budget goes on from there; exit 0, and nothing is assembled (a "
+       "FULL report fills over several sittings this way)"}};
   char about[2048];
   size_t len = (size_t)snprintf(
       about, sizeof about, "%s",
@@ -99,7 +108,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
                                   "[--out DIR] [--only PART[,PART...]] "
                                   "[--full] [--plan | --jobs N | --slurm "
                                   "[--partition P] [--time T] | --assemble] "
-                                  "[--threads T]",
+                                  "[--threads T] [--budget TIME]",
                                   about,
                                   own,
                                   sizeof own / sizeof own[0],
@@ -141,6 +150,27 @@ int vsph_cmd_report_main(int argc, char **argv) {
                           "--time '%.16s' is not a Slurm time limit (MM, "
                           "HH:MM:SS or D-HH:MM:SS)",
                           limit);
+  double budget_s = 0.0;
+  if (budget) {
+    char *end = NULL;
+    errno = 0;
+    const double v = strtod(budget, &end);
+    const double unit = !strcmp(end, "") || !strcmp(end, "s") ? 1.0
+                        : !strcmp(end, "m")                   ? 60.0
+                        : !strcmp(end, "h")                   ? 3600.0
+                                                              : -1.0;
+    budget_s = v * unit;
+    if (end == budget || errno || unit < 0.0 || !(budget_s >= 1.0) ||
+        budget_s > 30 * 86400.0)
+      return vsph_args_fail(CMD,
+                            "--budget '%.32s' is not a time from 1 s to 30 "
+                            "days (e.g. 90s, 150m, 2.5h)",
+                            budget);
+    if (plan || slurm || assemble)
+      return vsph_args_fail(CMD,
+                            "--budget runs the runs here: not with --plan, "
+                            "--slurm or --assemble");
+  }
   if (slurm && !on_path("sbatch"))
     return vsph_args_fail(CMD,
                           "--slurm needs Slurm's sbatch on PATH, and it is "
@@ -207,13 +237,32 @@ int vsph_cmd_report_main(int argc, char **argv) {
   rp.partition = partition;
   rp.time = limit;
   rp.only = only;
+  rp.budget_s = budget_s;
   /* SIGINT/SIGTERM: the run in progress stops after its step, uncached */
   const volatile sig_atomic_t *stop = rp.stop = vsph_args_catch_stop();
   /* but for the runs (which stop after a checkpoint), a signal ends the
    * report at once: its parts and files are written whole or not at all,
    * and its seal is written last */
   rp.writing = vsph_args_quick_stop();
+  if (budget_s > 0.0) { /* beside the user's own work: lowest priority */
+    if (setpriority(PRIO_PROCESS, 0, 19) != 0) /* and its children's */
+      fprintf(stderr, "vsph report: cannot lower the priority: %s\n",
+              strerror(errno));
+    if (vsph_args_stop_after(budget_s)) {
+      fprintf(stderr, "vsph report: cannot set the budget's clock: %s\n",
+              strerror(errno));
+      return vsph_args_status(CMD, VSPH_EIO);
+    }
+  }
   const int st = vsph_report_write(&rp);
+  if (st == VSPH_EINTR && *stop == SIGALRM) {
+    fprintf(stderr,
+            "vsph report: the budget of %.0f s is spent; the runs in "
+            "progress stopped at a checkpoint, and the next --budget goes on "
+            "from there\n",
+            budget_s);
+    return vsph_args_finish(CMD, 0);
+  }
   if (st == VSPH_EINTR) {
     fprintf(stderr,
             "vsph report: interrupted by signal %d; finished runs "

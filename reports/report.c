@@ -420,6 +420,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   R->jobs.full = R->full;
   R->jobs.stop = R->stop;
   R->jobs.planned = 1;
+  R->jobs.budget_s = rp->budget_s;
   if (!st) st = plan(R, want);
   if (!st && rp->mode == VSPH_REPORT_PLAN) { /* writes nothing */
     st = vsph_jobs_plan_print(&R->jobs, rp->exe ? rp->exe : "vsph",
@@ -457,6 +458,18 @@ int vsph_report_write(const struct vsph_report_props *rp) {
     st = run_missing(R, rp);
     if (rp->writing) *rp->writing = 0; /* parts: a stop ends at once */
     R->runs_wall = omp_get_wtime() - t_runs;
+  }
+  if (rp->budget_s > 0.0) { /* runs only: say what is left */
+    size_t left = 0;
+    for (size_t k = 0; k < R->jobs.n; k++) left += !R->jobs.job[k].cached;
+    if (st == VSPH_OK || st == VSPH_EINTR)
+      fprintf(stderr,
+              "vsph report: %zu of the %zu runs are cached, %zu missing or "
+              "unfinished (%.0f s of runs); not assembled\n",
+              R->jobs.n - left, R->jobs.n, left, R->runs_wall);
+    vsph_jobs_plan_free(&R->jobs);
+    free(R);
+    return st;
   }
   R->wo = gsl_integration_workspace_alloc(1000);
   R->wi = gsl_integration_workspace_alloc(1000);

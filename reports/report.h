@@ -38,6 +38,10 @@ struct vsph_report_props {
   const char *time;      /*!< SLURM: time limit per task, or NULL */
   const char *only;      /*!< SLURM: the --only text, for the assembly */
   FILE *plan_out;        /*!< PLAN: where the plan goes */
+  /** > 0 (LOCAL, POOL): run only the missing runs that fit this many
+   *  seconds of wall time (vsph_jobs::budget_s), then stop without
+   *  assembling; the caller's clock raises *stop when it is spent */
+  double budget_s;
 };
 
 /** How the report's missing runs are run. Every mode first lists every

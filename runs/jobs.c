@@ -437,7 +437,114 @@ static int by_cost(const void *a, const void *b) {
                y = cost_of(*(const struct vsph_jobs_job *const *)b);
   return (x < y) - (x > y);
 }
-static size_t missing(struct vsph_jobs *J, struct vsph_jobs_job ***out) {
+/* The wall time and cost (particles x neighbours x steps) each cached
+ * solver run of @p J measured (run.json's wall_s and steps; 0 where none)
+ * into @p wall, @p cost. */
+static void measured(const struct vsph_jobs *J, double *wall, double *cost) {
+  char path[600];
+  for (size_t k = 0; k < J->n; k++) {
+    const struct vsph_jobs_job *j = &J->job[k];
+    wall[k] = cost[k] = 0.0;
+    if (!j->cached || j->kind != VSPH_JOBS_RUN) continue;
+    snprintf(path, sizeof path, "%s/run.json", j->dir);
+    cJSON *o = vsph_json_read(path);
+    const double w = o ? vsph_json_get_number(o, "wall_s", -1.0) : -1.0;
+    const double n = o ? vsph_json_get_number(o, "steps", -1.0) : -1.0;
+    cJSON_Delete(o);
+    if (w > 0.0 && n > 0.0) {
+      wall[k] = w;
+      cost[k] = j->particles * j->neighbours * n;
+    }
+  }
+}
+
+/* Seconds per unit of cost of the runs of family @p family (all, when
+ * NULL) from measured(); 0 when none measured one. */
+static double rate_of(const struct vsph_jobs *J, const double *wall,
+                      const double *cost, const char *family) {
+  double w = 0.0, c = 0.0;
+  for (size_t k = 0; k < J->n; k++)
+    if (!family || !strcmp(J->job[k].family, family)) {
+      w += wall[k];
+      c += cost[k];
+    }
+  return c > 0.0 ? w / c : 0.0;
+}
+
+size_t vsph_jobs_fit(const double *t, size_t m, size_t lanes, double budget,
+                     unsigned char *keep) {
+  double *free_at = calloc(lanes ? lanes : 1, sizeof *free_at);
+  size_t kept = 0;
+  for (size_t k = 0; k < m; k++) {
+    keep[k] = !free_at || lanes == 0; /* no lanes to lay out: all */
+    if (keep[k]) {
+      kept++;
+      continue;
+    }
+    size_t lane = 0;
+    for (size_t l = 1; l < lanes; l++)
+      if (free_at[l] < free_at[lane]) lane = l;
+    if (free_at[lane] + t[k] <= budget ||
+        (t[k] > budget && free_at[lane] == 0.0)) {
+      free_at[lane] += t[k];
+      keep[k] = 1;
+      kept++;
+    }
+  }
+  free(free_at);
+  return kept;
+}
+
+/* Of the missing runs @p order (costliest first), those that fit
+ * J->budget_s on @p lanes lanes (vsph_jobs_fit), in the same order;
+ * returns how many. Each run's time is its cost at its family's measured
+ * rate, else all cached runs' rate. With no rate measured yet, every run
+ * is kept, and the budget's clock alone stops them. */
+static size_t budget_fit(const struct vsph_jobs *J,
+                         struct vsph_jobs_job **order, size_t m, size_t lanes) {
+  double *t = calloc(m ? m : 1, sizeof *t);
+  unsigned char *keep = malloc(m ? m : 1);
+  double *wall = calloc(J->n ? J->n : 1, sizeof *wall);
+  double *cost = calloc(J->n ? J->n : 1, sizeof *cost);
+  if (wall && cost) measured(J, wall, cost);
+  const double all = wall && cost ? rate_of(J, wall, cost, NULL) : 0.0;
+  if (all <= 0.0 || !t || !keep) {
+    free(t);
+    free(keep);
+    free(wall);
+    free(cost);
+    if (all <= 0.0)
+      fprintf(stderr,
+              "vsph report: budget %.0f s: no cached run has measured a rate "
+              "yet; the %zu missing runs go costliest first until it is "
+              "spent\n",
+              J->budget_s, m);
+    return m;
+  }
+  for (size_t k = 0; k < m; k++) {
+    const double r = rate_of(J, wall, cost, order[k]->family);
+    t[k] = cost_of(order[k]) * (r > 0.0 ? r : all);
+  }
+  const size_t kept = vsph_jobs_fit(t, m, lanes, J->budget_s, keep);
+  size_t at = 0;
+  for (size_t k = 0; k < m; k++)
+    if (keep[k]) order[at++] = order[k];
+  free(t);
+  free(keep);
+  free(wall);
+  free(cost);
+  fprintf(stderr,
+          "vsph report: budget %.0f s: %zu of the %zu missing runs fit on "
+          "%zu lanes (their times at the rates the cached runs measured), "
+          "the costliest first; %zu are left for another sitting\n",
+          J->budget_s, kept, m, lanes, m - kept);
+  return kept;
+}
+
+/* The missing runs, costliest first; with a budget, those that fit it on
+ * @p lanes lanes. */
+static size_t missing(struct vsph_jobs *J, struct vsph_jobs_job ***out,
+                      size_t lanes) {
   struct vsph_jobs *P = J;
   *out = malloc((P->n ? P->n : 1) * sizeof **out);
   if (!*out) return (size_t)-1;
@@ -448,7 +555,7 @@ static size_t missing(struct vsph_jobs *J, struct vsph_jobs_job ***out) {
     if (!P->job[k].cached) (*out)[m++] = &P->job[k];
   }
   qsort(*out, m, sizeof **out, by_cost);
-  return m;
+  return J->budget_s > 0.0 ? budget_fit(J, *out, m, lanes) : m;
 }
 
 /* The runs' states for the estimate of the time left, in @p order's
@@ -477,7 +584,7 @@ static void eta_text(struct vsph_jobs_eta *e, const double *t1, size_t m,
 
 int vsph_jobs_local(struct vsph_jobs *J, int width) {
   struct vsph_jobs_job **order;
-  const size_t m = missing(J, &order);
+  const size_t m = missing(J, &order, (size_t)width);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
   struct vsph_jobs_eta *eta = eta_start(order, m);
   double *t1 = calloc(m ? m : 1, sizeof *t1);
@@ -634,7 +741,7 @@ static int record_failed(const struct vsph_jobs *J,
 int vsph_jobs_pool(struct vsph_jobs *J, const char *exe, size_t njobs,
                    size_t threads) {
   struct vsph_jobs_job **order;
-  const size_t m = missing(J, &order);
+  const size_t m = missing(J, &order, njobs);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
   char logs[600];
   snprintf(logs, sizeof logs, "%s/runs/logs", J->dir);
@@ -928,7 +1035,7 @@ static int record_submission(const struct vsph_jobs *J, const char *dir,
 
 int vsph_jobs_slurm(struct vsph_jobs *J, const struct vsph_jobs_slurm *s) {
   struct vsph_jobs_job **order;
-  const size_t m = missing(J, &order);
+  const size_t m = missing(J, &order, 1);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
   const struct vsph_jobs_job *const *jobs =
       (const struct vsph_jobs_job *const *)order;

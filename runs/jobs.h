@@ -50,8 +50,11 @@ struct vsph_jobs {
   int full;        /*!< the report's fidelity, for the plan's title and
                         the Slurm assembly's command */
   const volatile sig_atomic_t *stop; /*!< stop request, or NULL */
-  int planned; /*!< 1: a sealed plan: only listed, cached runs are read;
-                    0: a run is made when it is read (tests) */
+  int planned;     /*!< 1: a sealed plan: only listed, cached runs are read;
+                        0: a run is made when it is read (tests) */
+  double budget_s; /*!< > 0: vsph_jobs_local and vsph_jobs_pool run only
+                        the missing runs that fit this many seconds (the
+                        caller's clock stops them through stop) */
   struct vsph_jobs_job *job; /*!< the plan */
   size_t n, cap;
 };
@@ -151,6 +154,15 @@ struct vsph_jobs_eta {
  * the lane free first. @return the seconds left, or -1 while no run has
  * finished (nothing to measure a rate by). */
 double vsph_jobs_eta(const struct vsph_jobs_eta *r, size_t n, size_t width);
+
+/** @brief Which of @p m runs of wall times @p t (s, in the order they
+ *  would start) fit a budget of @p budget seconds on @p lanes lanes: each
+ *  laid on the lane free first, kept (@p keep[k] = 1) when it ends within
+ *  the budget, or when it is longer than the whole budget and its lane is
+ *  still empty (it goes on from its checkpoint in the next sitting).
+ *  @return how many are kept. */
+size_t vsph_jobs_fit(const double *t, size_t m, size_t lanes, double budget,
+                     unsigned char *keep);
 
 /* The same as child processes of @p exe, @p njobs at a time with
  * @p threads threads each; a run that fails is recorded (runs/failed.txt,

@@ -275,6 +275,59 @@ START_TEST(test_plan_listing) {
 }
 END_TEST
 
+/* The budget's lanes, worked by hand: times 100, 60, 50, 30, 10, 250 s
+ * on 2 lanes within 100 s: 100 fills lane 0 exactly (kept: "within"
+ * includes the end); 60 goes on lane 1; 50 would end lane 1 at 110
+ * (left); 30 ends it at 90 and 10 at 100 (kept); 250, longer than the
+ * whole budget, is left because no lane is empty. On 3 lanes the third is
+ * empty when 250 comes, so it is kept (it goes on from its checkpoint).
+ * One lane: 100 only, then nothing fits. */
+START_TEST(test_budget_fit) {
+  const double t[] = {100, 60, 50, 30, 10, 250};
+  unsigned char keep[6];
+  ck_assert_uint_eq(vsph_jobs_fit(t, 6, 2, 100.0, keep), 4);
+  const unsigned char two[] = {1, 1, 0, 1, 1, 0};
+  ck_assert(!memcmp(keep, two, 6));
+  /* 3 lanes: 100 | 60, 30, 10 | 50, then 250 finds no empty lane */
+  ck_assert_uint_eq(vsph_jobs_fit(t, 6, 3, 100.0, keep), 5);
+  const unsigned char three[] = {1, 1, 1, 1, 1, 0};
+  ck_assert(!memcmp(keep, three, 6));
+  /* 250 first, on 3 lanes: it takes an empty lane */
+  const double u[] = {250, 100, 60};
+  ck_assert_uint_eq(vsph_jobs_fit(u, 3, 3, 100.0, keep), 3);
+  ck_assert_uint_eq(vsph_jobs_fit(t, 6, 1, 100.0, keep), 1);
+  ck_assert_int_eq(keep[0], 1);
+}
+END_TEST
+
+/* `vsph report --budget`: a quick report given 4 s runs its costliest
+ * runs (no rate measured yet: all, costliest first) until the clock
+ * stops them at a checkpoint, exits 0 saying so, and assembles nothing;
+ * refused beside --plan, and for a time it cannot read. */
+START_TEST(test_budget_report) {
+  const char *dir = tmpdir();
+  char cmd[1200];
+  snprintf(cmd, sizeof cmd, "report --budget 4s --out %s/r", dir);
+  const struct vsph_test_outcome *o = vsph_test_cli(cmd);
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  ck_assert_msg(strstr(o->err, "budget of 4 s is spent"), "%s", o->err);
+  char path[800];
+  snprintf(path, sizeof path, "%s/r/report.md", dir);
+  ck_assert_int_ne(access(path, F_OK), 0);
+  /* the two runs in progress (the costliest) stopped at their checkpoint */
+  snprintf(cmd, sizeof cmd, "ls %s/r/runs/*/checkpoint.bin | wc -l", dir);
+  o = vsph_test_shell(cmd);
+  ck_assert_int_eq(atoi(o->out), 2);
+  snprintf(cmd, sizeof cmd, "report --budget 4s --plan --out %s/r", dir);
+  ck_assert_int_eq(vsph_test_cli(cmd)->status, 2);
+  snprintf(cmd, sizeof cmd, "report --budget 0.5s --out %s/r", dir);
+  o = vsph_test_cli(cmd);
+  ck_assert_int_eq(o->status, 2);
+  ck_assert_int_eq(o->err_lines, 1);
+  rmrf(dir);
+}
+END_TEST
+
 Suite *vsph_jobs_suite(void) {
   Suite *s = suite_create("jobs");
   TCase *tc = tcase_create("jobs");
@@ -284,6 +337,8 @@ Suite *vsph_jobs_suite(void) {
   tcase_add_test(tc, test_pool);
   tcase_add_test(tc, test_estimate_neighbours);
   tcase_add_test(tc, test_plan_listing);
+  tcase_add_test(tc, test_budget_fit);
+  tcase_add_test(tc, test_budget_report);
   suite_add_tcase(s, tc);
   return s;
 }
