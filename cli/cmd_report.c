@@ -160,7 +160,10 @@ int vsph_cmd_report_main(int argc, char **argv) {
                         : !strcmp(end, "h")                   ? 3600.0
                                                               : -1.0;
     budget_s = v * unit;
+    /* digits as people write them: no sign, blank, hex, inf or nan */
+    const size_t plain = strspn(budget, "0123456789.eE+-");
     if (end == budget || errno || unit < 0.0 || !(budget_s >= 1.0) ||
+        !strchr("0123456789.", budget[0]) || budget + plain < end ||
         budget_s > 30 * 86400.0)
       return vsph_args_fail(CMD,
                             "--budget '%.32s' is not a time from 1 s to 30 "
@@ -238,7 +241,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
   rp.time = limit;
   rp.only = only;
   rp.budget_s = budget_s;
-  /* SIGINT/SIGTERM: the run in progress stops after its step, uncached */
+  /* SIGINT/SIGTERM: the runs in progress stop at a checkpoint, uncached */
   const volatile sig_atomic_t *stop = rp.stop = vsph_args_catch_stop();
   /* but for the runs (which stop after a checkpoint), a signal ends the
    * report at once: its parts and files are written whole or not at all,

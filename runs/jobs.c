@@ -779,8 +779,8 @@ int vsph_jobs_pool(struct vsph_jobs *J, const char *exe, size_t njobs,
     if (!stopping && (err || (J->stop && *J->stop))) { /* pass it on */
       stopping = 1;
       fprintf(stderr,
-              "vsph report: stopping; each running run stops after its "
-              "step (it stays uncached)\n");
+              "vsph report: stopping; each running run stops at a "
+              "checkpoint (uncached: the next report resumes it)\n");
       for (size_t k = 0; k < next; k++)
         if (pid[k] > 0) kill(pid[k], SIGTERM);
     }

@@ -320,10 +320,16 @@ START_TEST(test_budget_report) {
   ck_assert_int_eq(atoi(o->out), 2);
   snprintf(cmd, sizeof cmd, "report --budget 4s --plan --out %s/r", dir);
   ck_assert_int_eq(vsph_test_cli(cmd)->status, 2);
-  snprintf(cmd, sizeof cmd, "report --budget 0.5s --out %s/r", dir);
-  o = vsph_test_cli(cmd);
-  ck_assert_int_eq(o->status, 2);
-  ck_assert_int_eq(o->err_lines, 1);
+  static const char *const bad[] = {"0.5s", "' 1h'", "0x10", "nan",
+                                    "-5m",  "2d",    "31d"};
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+    snprintf(cmd, sizeof cmd, "report --budget %s --out %s/q", bad[k], dir);
+    o = vsph_test_cli(cmd);
+    ck_assert_msg(o->status == 2 && o->err_lines == 1, "%s: %s", bad[k],
+                  o->err);
+  }
+  snprintf(cmd, sizeof cmd, "%s/q", dir);
+  ck_assert_int_ne(access(cmd, F_OK), 0); /* refused: nothing made */
   rmrf(dir);
 }
 END_TEST
