@@ -47,7 +47,7 @@ CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
-.PHONY: all deps check test report baseline bench asan valgrind-check prefix-check \
+.PHONY: all deps check test report baseline bench archive asan valgrind-check prefix-check \
         format format-check mutate fuzz slurm-check fresh-check \
         fresh-check-tests paraview-check clean
 
@@ -61,10 +61,14 @@ $(BUILD)/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(ALLCFLAGS) -MMD -MP -c $< -o $@
 
+# With it, the commit the sources were at when they changed last (git's
+# short id, "-dirty" when they differed from it; "unknown" outside git):
+# run.json records it beside the source hash, never in a key.
 $(BUILD)/gen/source_hash.c: $(SRC_ALL) Makefile
 	@mkdir -p $(dir $@)
-	@printf '/* generated: hash of the sources */\nconst char vsph_source_hash_id[] = "%s";\n' \
-	  "$$(cat $(SRC_ALL) | sha1sum | cut -c1-16)" > $@
+	@printf '/* generated: hash of the sources */\nconst char vsph_source_hash_id[] = "%s";\nconst char vsph_commit_id[] = "%s";\n' \
+	  "$$(cat $(SRC_ALL) | sha1sum | cut -c1-16)" \
+	  "$$(git describe --always --dirty --abbrev=12 2>/dev/null | tr -cd '0-9a-z-' || true)" > $@
 
 $(HASH_OBJ): $(BUILD)/gen/source_hash.c
 	$(CC) -std=c11 -c $< -o $@
@@ -81,6 +85,14 @@ $(BUILD)/vsph: $(LIB_OBJ) $(CLI_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
 
 $(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(TESTLIBS) $(LDLIBS)
+
+# The FULL report's runs that ended, kept compact in reports/full (see
+# README: vsph report --archive); the commit named for runs of these
+# sources is HEAD's.
+archive: deps $(BUILD)/vsph
+	VSPH_COMMIT="$$(git describe --always --dirty --abbrev=12 2>/dev/null \
+	  | tr -cd '0-9a-z-')" $(BUILD)/vsph report --out reports/out-full \
+	  --archive reports/full
 
 # Every test, through the single Check runner (STYLE B10).
 check: deps

@@ -14,6 +14,7 @@
 #include "../common/params.h"
 #include "../common/status.h"
 #include "../reports/report.h"
+#include "../runs/archive.h"
 #include "args.h"
 
 static const char *const CMD = "report";
@@ -40,7 +41,7 @@ static int on_path(const char *name) {
 
 int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
-  const char *partition = NULL, *limit = NULL, *budget = NULL;
+  const char *partition = NULL, *limit = NULL, *budget = NULL, *archive = NULL;
   int full = 0, plan = 0, slurm = 0, assemble = 0;
   size_t jobs = 0, threads = 0;
   const struct vsph_args_spec own[] = {
@@ -83,7 +84,15 @@ int vsph_cmd_report_main(int argc, char **argv) {
        "the cached runs measured, niced, two at a time (or as --jobs says); "
        "when TIME is spent the runs stop at a checkpoint and the next "
        "--budget goes on from there; exit 0, and nothing is assembled (a "
-       "FULL report fills over several sittings this way)"}};
+       "FULL report fills over several sittings this way)"},
+      {"--archive", VSPH_ARGS_STRING, &archive, "ADIR",
+       "run nothing: store the sealed runs of DIR/runs in the run archive "
+       "ADIR (reports/full for the FULL report): of each, what the parts "
+       "read (energy.csv, run.json, profiles), not its snapshots, as a "
+       "folder sealed under the run's own key (version, source hash, "
+       "settings); runs already there are kept, unended ones are named and "
+       "left out; then ADIR/index.tsv. The commit of entries made by this "
+       "build's sources is $VSPH_COMMIT (make archive sets it)"}};
   char about[2048];
   size_t len = (size_t)snprintf(
       about, sizeof about, "%s",
@@ -108,7 +117,8 @@ int vsph_cmd_report_main(int argc, char **argv) {
                                   "[--out DIR] [--only PART[,PART...]] "
                                   "[--full] [--plan | --jobs N | --slurm "
                                   "[--partition P] [--time T] | --assemble] "
-                                  "[--threads T] [--budget TIME]",
+                                  "[--threads T] [--budget TIME] | --archive "
+                                  "ADIR",
                                   about,
                                   own,
                                   sizeof own / sizeof own[0],
@@ -173,6 +183,31 @@ int vsph_cmd_report_main(int argc, char **argv) {
       return vsph_args_fail(CMD,
                             "--budget runs the runs here: not with --plan, "
                             "--slurm or --assemble");
+  }
+  if (archive) {
+    if (plan || slurm || assemble || pool || budget || only || full)
+      return vsph_args_fail(CMD,
+                            "--archive runs nothing: it takes --out alone");
+    if (!*archive || strlen(archive) > 400)
+      return vsph_args_fail(CMD,
+                            "--archive: a folder name of 1-400 "
+                            "characters");
+    const char *commit = getenv("VSPH_COMMIT");
+    if (commit && !*commit) commit = NULL; /* none known */
+    if (commit &&
+        (strlen(commit) > 64 || !only_of(commit,
+                                         "0123456789abcdefghijklmnopqrstuvwxyz"
+                                         "ABCDEFGHIJKLMNOPQRSTUVWXYZ._-")))
+      return vsph_args_fail(CMD, "VSPH_COMMIT '%.64s' is not a commit id",
+                            commit);
+    struct vsph_archive_counts n;
+    const int st = vsph_archive_store(dir, archive, commit, stderr, &n);
+    if (st) return vsph_args_status(CMD, st);
+    fprintf(stderr,
+            "vsph report: archived %zu runs of %s in %s (%zu already there, "
+            "%zu not ended, left out)\n",
+            n.stored, dir, archive, n.kept, n.skipped);
+    return vsph_args_finish(CMD, 0);
   }
   if (slurm && !on_path("sbatch"))
     return vsph_args_fail(CMD,

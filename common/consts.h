@@ -14,6 +14,11 @@
  *  Makefile); the report's cache keys include it. */
 extern const char vsph_source_hash_id[];
 
+/** The git commit those sources were at when built (short id, "-dirty"
+ *  when they differed from it), or "" outside a git checkout; run.json
+ *  records it, never a key. */
+extern const char vsph_commit_id[];
+
 /** Maximum spatial dimension. */
 #define VSPH_CONSTS_MAXDIM 3
 

@@ -314,6 +314,8 @@ static int write_run_json(const struct vsph_report *R, unsigned long want,
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "version", VSPH_VERSION);
   cJSON_AddStringToObject(o, "source_hash", vsph_source_hash_id);
+  cJSON_AddStringToObject(o, "commit",
+                          vsph_commit_id[0] ? vsph_commit_id : "unknown");
   cJSON_AddStringToObject(o, "date", stamp);
   cJSON_AddStringToObject(o, "fidelity", R->full ? "full" : "quick");
   cJSON_AddNumberToObject(o, "cores", omp_get_num_procs());

@@ -78,6 +78,17 @@ const struct vsph_folder_kind vsph_folder_shear_test = {"shear test",
                                                         owns_shear};
 const struct vsph_folder_kind vsph_folder_report = {"report", owns_report};
 
+/* An archive of runs: its index, its summary and its runs' folders. */
+static int owns_archive(const char *name) {
+  static const char *const files[] = {"index.tsv", "summary.md", "key.txt",
+                                      NULL};
+  if (!strcmp(name, "runs")) return VSPH_FOLDER_SUBDIR;
+  if (one_of(name, files)) return VSPH_FOLDER_FILE;
+  return tmp_of(name, owns_archive) ? VSPH_FOLDER_FILE : VSPH_FOLDER_FOREIGN;
+}
+const struct vsph_folder_kind vsph_folder_archive = {"run archive",
+                                                     owns_archive};
+
 /* ----------------------------------------------------------- judging */
 
 static const char *type_of(mode_t m) {
@@ -567,6 +578,26 @@ __attribute__((format(printf, 3, 4))) static int say(char *why, size_t len,
   return -1;
 }
 
+const struct vsph_folder_kind *vsph_folder_kind_of(const char *dir) {
+  static const struct vsph_folder_kind *const kinds[] = {
+      &vsph_folder_scene_run, &vsph_folder_shear_test, &vsph_folder_report,
+      &vsph_folder_archive};
+  char path[4400];
+  snprintf(path, sizeof path, "%s/%s", dir, VSPH_FOLDER_MARKER);
+  struct stat sb;
+  if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode) || sb.st_size > 128)
+    return NULL;
+  const struct vsph_folder_kind *kind = NULL;
+  char *mk = vsph_files_slurp(path, NULL);
+  for (size_t k = 0; mk && k < sizeof kinds / sizeof *kinds && !kind; k++) {
+    char want[128];
+    marker_text(kinds[k], want, sizeof want);
+    if (!strcmp(mk, want)) kind = kinds[k];
+  }
+  free(mk);
+  return kind;
+}
+
 int vsph_folder_verify(const char *dir, const struct vsph_folder_kind *kind,
                        const char *key, const char *const *skip, char *why,
                        size_t len) {
@@ -575,18 +606,7 @@ int vsph_folder_verify(const char *dir, const struct vsph_folder_kind *kind,
   snprintf(path, sizeof path, "%s/%s", dir, VSPH_FOLDER_MARKER);
   struct stat sb;
   if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) return 0;
-  if (!kind) { /* the marker's */
-    static const struct vsph_folder_kind *const kinds[] = {
-        &vsph_folder_scene_run, &vsph_folder_shear_test, &vsph_folder_report};
-    char *mk = vsph_files_slurp(path, NULL);
-    for (int k = 0; mk && k < 3 && !kind; k++) {
-      char want[128];
-      marker_text(kinds[k], want, sizeof want);
-      if (!strcmp(mk, want)) kind = kinds[k];
-    }
-    free(mk);
-    if (!kind) return 0;
-  }
+  if (!kind && !(kind = vsph_folder_kind_of(dir))) return 0;
   snprintf(path, sizeof path, "%s/key.txt", dir);
   if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) return 0;
   char *text = vsph_files_slurp(path, NULL);

@@ -47,6 +47,12 @@ struct vsph_folder_kind {
 extern const struct vsph_folder_kind vsph_folder_scene_run;
 extern const struct vsph_folder_kind vsph_folder_shear_test;
 extern const struct vsph_folder_kind vsph_folder_report;
+extern const struct vsph_folder_kind vsph_folder_archive;
+
+/** @brief The kind @p dir's marker names, or NULL (no marker, or not one
+ *  of vsph's kinds). Never blocks: a marker that is not a regular file is
+ *  not read. */
+const struct vsph_folder_kind *vsph_folder_kind_of(const char *dir);
 
 /** A claimed folder: the lock is held until vsph_folder_release. */
 struct vsph_folder {

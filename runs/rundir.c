@@ -108,6 +108,8 @@ static int write_run_json(const struct vsph_run *run,
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "version", VSPH_VERSION);
   cJSON_AddStringToObject(o, "source_hash", vsph_source_hash_id);
+  cJSON_AddStringToObject(o, "commit",
+                          vsph_commit_id[0] ? vsph_commit_id : "unknown");
   if (opts->command) cJSON_AddStringToObject(o, "command", opts->command);
   cJSON_AddStringToObject(o, "date", res->started);
   cJSON_AddStringToObject(o, "scene", run->scene.type->name);

@@ -330,6 +330,18 @@ START_TEST(test_budget_report) {
   }
   snprintf(cmd, sizeof cmd, "%s/q", dir);
   ck_assert_int_ne(access(cmd, F_OK), 0); /* refused: nothing made */
+  /* --archive runs nothing and takes --out alone; a commit id is one */
+  snprintf(cmd, sizeof cmd, "report --archive %s/q --full --out %s/r", dir,
+           dir);
+  o = vsph_test_cli(cmd);
+  ck_assert(o->status == 2 && o->err_lines == 1);
+  snprintf(cmd, sizeof cmd,
+           "VSPH_COMMIT='a;b' $VSPH_BIN report --archive %s/q --out %s/r", dir,
+           dir);
+  o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 2 && o->err_lines == 1, "%s", o->err);
+  snprintf(cmd, sizeof cmd, "%s/q", dir);
+  ck_assert_int_ne(access(cmd, F_OK), 0);
   rmrf(dir);
 }
 END_TEST

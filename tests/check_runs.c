@@ -17,9 +17,11 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "../common/consts.h"
 #include "../common/params.h"
 #include "../common/status.h"
 #include "../io/files.h"
+#include "../runs/archive.h"
 #include "../runs/folder.h"
 #include "../runs/rundir.h"
 #include "../solver/run.h"
@@ -515,6 +517,92 @@ START_TEST(test_folder_manifest_cache) {
 }
 END_TEST
 
+/* The run archive (runs/archive): of a report's runs/, each sealed run is
+ * stored as a folder of its kind sealed under the run's own key, with its
+ * tables byte for byte and without its snapshots; a run whose seal broke
+ * is left out and named; storing again keeps what is there; a redone run
+ * (another key) replaces its entry; index.tsv lists the entries with the
+ * source hash that made them; a foreign folder is refused untouched. */
+START_TEST(test_archive_store) {
+  char dir[] = "/tmp/vsph_archiveXXXXXX", rep[300], a[300], b[300], ar[300],
+       path[800], other[700];
+  vsph_test_scratch(dir);
+  snprintf(rep, sizeof rep, "%s/rep", dir);
+  snprintf(a, sizeof a, "%s/rep/runs/a", dir);
+  snprintf(b, sizeof b, "%s/rep/runs/b", dir);
+  snprintf(ar, sizeof ar, "%s/ar", dir);
+  static const char *const set[] = {"Solver:res=8", "Solver:t_end=0.02",
+                                    "Solver:snapshots=2", NULL};
+  static const char *const set2[] = {"Solver:res=8", "Solver:t_end=0.03",
+                                     "Solver:snapshots=2", NULL};
+  struct vsph_rundir_result r;
+  ck_assert_int_eq(run("poiseuille", set, a, 0, &r), 0);
+  ck_assert_int_eq(run("poiseuille", set, b, 0, &r), 0);
+  snprintf(path, sizeof path, "%s/energy.csv", b);
+  FILE *f = fopen(path, "a");
+  ck_assert_ptr_nonnull(f);
+  fputs("1,2\n", f); /* b's seal breaks */
+  ck_assert_int_eq(fclose(f), 0);
+  struct vsph_archive_counts n;
+  ck_assert_int_eq(vsph_archive_store(rep, ar, "abc1234", NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 1);
+  ck_assert_uint_eq(n.skipped, 1);
+  /* the entry: sealed under a's key, its tables as they were, no
+   * snapshots */
+  char key[4096], entry[400];
+  snprintf(path, sizeof path, "%s/key.txt", a);
+  vsph_test_slurp(path, key, sizeof key);
+  *strstr(key, "files:\n") = '\0';
+  snprintf(entry, sizeof entry, "%s/runs/a", ar);
+  ck_assert_int_eq(
+      vsph_folder_verify(entry, &vsph_folder_scene_run, key, NULL, NULL, 0), 1);
+  static const char *const same[] = {"energy.csv", "run.json", "profile.csv",
+                                     "used_parameters.yml", NULL};
+  for (size_t k = 0; same[k]; k++) {
+    snprintf(path, sizeof path, "%s/%s", a, same[k]);
+    snprintf(other, sizeof other, "%s/%s", entry, same[k]);
+    size_t la = 0, lb = 0;
+    char *ta = vsph_files_slurp(path, &la), *tb = vsph_files_slurp(other, &lb);
+    ck_assert_msg(ta && tb && la == lb && !memcmp(ta, tb, la), "%s", same[k]);
+    free(ta);
+    free(tb);
+  }
+  snprintf(path, sizeof path, "%s/snap_0000.vtp", a);
+  ck_assert(exists(path));
+  snprintf(path, sizeof path, "%s/snap_0000.vtp", entry);
+  ck_assert(!exists(path));
+  snprintf(path, sizeof path, "%s/runs/b", ar);
+  ck_assert(!exists(path));
+  /* index.tsv: a alone, with this build's source hash and the commit it
+   * recorded (run.json's; the caller's where the build knew none) */
+  char index[4096], row[300];
+  snprintf(path, sizeof path, "%s/index.tsv", ar);
+  vsph_test_slurp(path, index, sizeof index);
+  snprintf(row, sizeof row, "\na\tscene run\tok\t%s\t%s\t%s\t", VSPH_VERSION,
+           vsph_source_hash_id, vsph_commit_id[0] ? vsph_commit_id : "abc1234");
+  ck_assert_msg(strstr(index, row), "%s", index);
+  ck_assert_ptr_null(strstr(index, "\nb\t"));
+  /* again: kept; then a redone with other settings replaces its entry */
+  ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
+  ck_assert_uint_eq(n.kept, 1);
+  ck_assert_uint_eq(n.stored, 0);
+  ck_assert_int_eq(run("poiseuille", set2, a, 0, &r), 0);
+  ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 1);
+  ck_assert_int_eq(
+      vsph_folder_verify(entry, &vsph_folder_scene_run, key, NULL, NULL, 0), 0);
+  /* a foreign folder is refused, untouched */
+  snprintf(other, sizeof other, "%s/foreign", dir);
+  ck_assert_int_eq(mkdir(other, 0755), 0);
+  snprintf(path, sizeof path, "%s/mine.txt", other);
+  put(path, "mine");
+  ck_assert_int_eq(vsph_archive_store(rep, other, NULL, NULL, &n), VSPH_EINVAL);
+  snprintf(path, sizeof path, "%s/runs", other);
+  ck_assert(!exists(path));
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 START_TEST(test_folder_seal) {
   char dir[] = "/tmp/vsph_sealXXXXXX", sub[300], path[400], args[600];
   vsph_test_scratch(dir);
@@ -899,6 +987,7 @@ Suite *vsph_runs_suite(void) {
   tcase_add_test(tf, test_folder_lock);
   tcase_add_test(tf, test_folder_seal);
   tcase_add_test(tf, test_folder_manifest_cache);
+  tcase_add_test(tf, test_archive_store);
   tcase_add_test(tf, test_slurm_signal);
   tcase_add_test(tf, test_report_seal);
   tcase_add_test(tf, test_refusal_leaves_paths);

@@ -1,0 +1,46 @@
+#ifndef VSPH_RUNS_ARCHIVE_H
+#define VSPH_RUNS_ARCHIVE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+/** @file archive.h
+ *  @brief An archive of finished runs, compact enough to keep in a
+ *  repository (reports/full/ holds the FULL report's): of each sealed run
+ *  of a report's runs/ folder, what the report's parts read (energy.csv,
+ *  run.json, used_parameters.yml, the profile and centreline tables, a
+ *  shear test's summary and profiles), never its snapshots or checkpoint.
+ *
+ *  Each entry ARCHIVE/runs/NAME is itself a folder of its run's kind
+ *  (runs/folder), sealed under the run's own key: the version and source
+ *  hash that made it, then its settings, then each file it holds with its
+ *  size and CRC-32. So an entry says what made it and proves its files,
+ *  whatever the sources are today. ARCHIVE/index.tsv lists the entries:
+ *  name, kind, status, version, source hash, the commit (when known),
+ *  a fingerprint of the settings, wall time, steps and particles.
+ *
+ *  Storing is idempotent: an entry whose seal already holds for its run's
+ *  key is kept untouched; one of another key (the run was redone) is
+ *  replaced. A run folder whose seal does not hold (unfinished, stopped
+ *  at a checkpoint, damaged) is left out and said. */
+
+/** What one vsph_archive_store did. */
+struct vsph_archive_counts {
+  size_t stored;  /*!< entries written (new, or replacing another key's) */
+  size_t kept;    /*!< entries already there under the same key */
+  size_t skipped; /*!< run folders left out: not sealed */
+};
+
+/** @brief Store the sealed runs of report folder @p report (its runs/
+ *  sub-folder) in archive @p archive (made if new; refused, untouched,
+ *  when it is not empty and not a vsph run archive), then write its
+ *  index.tsv. The commit column holds @p commit (may be NULL) for entries
+ *  made by this build's sources (their source hash is this build's), else
+ *  "unknown". A line per run left out goes to @p progress (may be NULL).
+ *  @return VSPH_OK; VSPH_EINVAL (a folder refused, one line reported);
+ *  VSPH_EIO; VSPH_ENOMEM. */
+int vsph_archive_store(const char *report, const char *archive,
+                       const char *commit, FILE *progress,
+                       struct vsph_archive_counts *counts);
+
+#endif /* VSPH_RUNS_ARCHIVE_H */
