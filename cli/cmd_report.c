@@ -205,7 +205,8 @@ int vsph_cmd_report_main(int argc, char **argv) {
     if (st) return vsph_args_status(CMD, st);
     fprintf(stderr,
             "vsph report: archived %zu runs of %s in %s (%zu already there, "
-            "%zu not ended, left out)\n",
+            "%zu left out: unended, damaged or oddly named, each said "
+            "above)\n",
             n.stored, dir, archive, n.kept, n.skipped);
     return vsph_args_finish(CMD, 0);
   }

@@ -1,5 +1,6 @@
 /* Section 7 of the report: wall time against the decay error, per scene
  * and formulation, over the resolution ladder. */
+#include <math.h>
 #include <stdio.h>
 
 #include "../common/status.h"
@@ -40,9 +41,162 @@ static int scene(struct vsph_report *R, int sc) {
   return vsph_report_figure_say(R, &pl, "speed.caption");
 }
 
+/* ------------------------------------------------ the time step, measured */
+
+/* The Courant numbers of the study (1: the ladder's own runs), on the
+ * ladder's two coarsest resolutions. */
+#define NCFL 4
+#define NRES 2
+static const double CFLS[NCFL] = {0.5, 1.0, 1.5, 2.0};
+static const char *const SET_CFL[NCFL][2] = {{"Solver:cfl=0.5", NULL},
+                                             {NULL, NULL},
+                                             {"Solver:cfl=1.5", NULL},
+                                             {"Solver:cfl=2", NULL}};
+static const char *const TAG_CFL[NCFL] = {"step0.5", NULL, "step1.5", "step2"};
+
+/* The rule: a CFL is fine where every run of it is stable and its error
+ * moves from CFL 0.5's by at most this fraction of CFL 0.5's error (the
+ * resolution's own error, the time step's share all but gone). */
+#define CFL_FRACTION 0.1
+
+int vsph_report_speed_cfl_pick(const double *err, const int *ok, size_t n,
+                               int ncfl, double fraction) {
+  int best = 0;
+  for (int c = 1; c < ncfl; c++) {
+    int fine = 1;
+    for (size_t r = 0; r < n; r++) {
+      const double *e = err + r * (size_t)ncfl;
+      const int *s = ok + r * (size_t)ncfl;
+      if (s[c] && s[0]) fine &= fabs(e[c] - e[0]) <= fraction * e[0];
+    }
+    if (!fine) break; /* every smaller CFL must be fine too */
+    best = c;
+  }
+  return best;
+}
+
+static struct vsph_jobs_spec cfl_spec(const struct vsph_report *R, int sc,
+                                      int f, int k, int c) {
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+  return (struct vsph_jobs_spec){L->scene,
+                                 vsph_viscous_name(f),
+                                 L->res[k],
+                                 L->t_end,
+                                 SET_CFL[c][0] ? SET_CFL[c] : NULL,
+                                 TAG_CFL[c]};
+}
+
+int vsph_report_speed_plan(struct vsph_report *R) {
+  int st = vsph_report_runs_plan_ladders(R, 0);
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
+    if (vsph_report_scene_on(R, sc))
+      for (int f = 0; f < NFORM && !st; f++)
+        for (int k = 0; k < NRES && !st; k++)
+          for (int c = 0; c < NCFL && !st; c++) {
+            const struct vsph_jobs_spec rs = cfl_spec(R, sc, f, k, c);
+            st = vsph_jobs_plan_run(&R->jobs, &rs);
+          }
+  return st;
+}
+
+/* One scene: error against cost at each CFL, a line per formulation and
+ * resolution; the table of error changes; the CFL the rule picks. */
+static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
+  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+  struct vsph_report_richardson rr;
+  int st = sc == 1 ? vsph_report_runs_richardson(R, &rr) : VSPH_OK;
+  double err[NFORM][NRES][NCFL], wall[NFORM][NRES][NCFL];
+  int ok[NFORM][NRES][NCFL];
+  for (int f = 0; f < NFORM && !st; f++)
+    for (int k = 0; k < NRES && !st; k++)
+      for (int c = 0; c < NCFL && !st; c++) {
+        const struct vsph_jobs_spec rs = cfl_spec(R, sc, f, k, c);
+        struct vsph_jobs_run r;
+        if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+        err[f][k][c] = vsph_report_runs_error(&r, sc == 1 ? &rr : NULL);
+        wall[f][k][c] = r.wall_s;
+        ok[f][k][c] = r.ok;
+        vsph_report_runs_free(&r);
+      }
+  if (st) return st;
+  /* the largest CFL fine for accuracy (vsph_report_speed_cfl_pick); the runs
+   * stable at CFL 0.5 but not at a larger CFL are said apart */
+  const int best = vsph_report_speed_cfl_pick(&err[0][0][0], &ok[0][0][0],
+                                              NFORM * NRES, NCFL, CFL_FRACTION);
+  *pick = CFLS[best];
+  char unstable[512] = "";
+  size_t ul = 0;
+  for (int f = 0; f < NFORM; f++)
+    for (int k = 0; k < NRES; k++)
+      for (int c = 1; c < NCFL && ul < sizeof unstable - 64; c++)
+        if (ok[f][k][0] && !ok[f][k][c]) {
+          ul +=
+              (size_t)snprintf(unstable + ul, sizeof unstable - ul,
+                               "%s%s at %zu across from CFL %g", ul ? "; " : "",
+                               vsph_viscous_label(f), L->res[k], CFLS[c]);
+          break;
+        }
+  char pname[64], title[160];
+  snprintf(pname, sizeof pname, "fig_cfl_%s", L->scene);
+  snprintf(title, sizeof title,
+           "%s: E_k error against wall time at CFL 0.5, 1, 1.5, 2", L->scene);
+  struct vsph_plot pl;
+  vsph_plot_init(&pl, R->dir, pname, title, "wall time of the run (s)",
+                 "max_t |E_k/E_k(0) - E_{k,ref}/E_{k,ref}(0)|");
+  pl.logx = pl.logy = 1;
+  vsph_text_set(&R->tv, "scene", "%s", L->scene);
+  if ((st = vsph_report_say(R, "speed.cfl_head"))) return st;
+  for (int f = 0; f < NFORM && !st; f++)
+    for (int k = 0; k < NRES && !st; k++) {
+      char file[128], label[96], style[128];
+      snprintf(file, sizeof file, "cfl_%s_%s_%zu.csv", L->scene,
+               vsph_viscous_name(f), L->res[k]);
+      FILE *c = vsph_csv_open(R->dir, file, "cfl,wall_s,error,stable");
+      if (!c) return VSPH_EIO;
+      fprintf(R->md, "| %s | %zu | %.3e%s |", vsph_viscous_name(f), L->res[k],
+              err[f][k][0], ok[f][k][0] ? "" : " (unstable)");
+      for (int q = 0; q < NCFL; q++) {
+        fprintf(c, "%g,%.4f,%.6e,%d\n", CFLS[q], wall[f][k][q], err[f][k][q],
+                ok[f][k][q]);
+        if (q == 0) continue;
+        fprintf(R->md, " %+.1f %%%s |",
+                100.0 * (err[f][k][q] - err[f][k][0]) / err[f][k][0],
+                ok[f][k][q] ? "" : " (unstable)");
+      }
+      fprintf(R->md, "\n");
+      if ((st = vsph_csv_close(c, R->dir, file))) break;
+      snprintf(label, sizeof label, "%s, %zu across", vsph_viscous_label(f),
+               L->res[k]);
+      vsph_report_runs_style(style, sizeof style, f, k ? "" : " dt 2");
+      st = vsph_plot_add(&pl, file, "2:3", label, style);
+    }
+  if (st) return st;
+  fprintf(R->md, "\n");
+  vsph_text_set(&R->tv, "title", "%s", title);
+  vsph_text_set(&R->tv, "pick", "%g", *pick);
+  vsph_text_set(&R->tv, "scene", "%s", L->scene);
+  vsph_text_set(&R->tv, "unstable", "%s",
+                ul ? unstable : "none (every run stable at CFL 0.5 stays so)");
+  if ((st = vsph_report_say(R, "speed.cfl_pick"))) return st;
+  vsph_text_set(&R->tv, "title", "%s", title);
+  vsph_text_set(&R->tv, "scene", "%s", L->scene);
+  return vsph_report_figure_say(R, &pl, "speed.cfl_caption");
+}
+
 int vsph_report_speed_write(struct vsph_report *R) {
   int st = vsph_report_say(R, "speed.intro");
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     if (vsph_report_scene_on(R, sc)) st = scene(R, sc);
+  vsph_text_set(&R->tv, "fraction", "%g", 100.0 * CFL_FRACTION);
+  if (!st) st = vsph_report_say(R, "speed.cfl_intro");
+  double all = CFLS[NCFL - 1];
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
+    if (vsph_report_scene_on(R, sc)) {
+      double pick;
+      st = cfl_scene(R, sc, &pick);
+      all = fmin(all, pick);
+    }
+  vsph_text_set(&R->tv, "pick", "%g", all);
+  if (!st) st = vsph_report_say(R, "speed.cfl_all");
   return st;
 }

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <zlib.h>
 
 #include "../common/consts.h"
 #include "../common/status.h"
@@ -22,60 +23,141 @@ static int kept_file(const char *name) {
          strncmp(name, "checkpoint.bin", 14);
 }
 
-/* The key part of folder @p dir's key.txt (all before "files:\n"), or
- * NULL. Caller frees. */
-static char *key_of(const char *dir) {
+/* A name the index can hold as one TSV field: printable ASCII, no blank. */
+static int plain_name(const char *s) {
+  for (; *s; s++)
+    if ((unsigned char)*s < 0x21 || (unsigned char)*s > 0x7e) return 0;
+  return 1;
+}
+
+/* The key part of folder @p dir's key.txt (all before "files:\n") into
+ * *key and its files section into *files (one allocation: free *key), or
+ * VSPH_EIO. */
+static int key_of(const char *dir, char **key, const char **files) {
   char path[4400];
   snprintf(path, sizeof path, "%s/key.txt", dir);
   struct stat sb;
-  if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) return NULL;
+  *key = NULL;
+  if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) return VSPH_EIO;
   char *text = vsph_files_slurp(path, NULL);
-  char *files = text ? strstr(text, "files:\n") : NULL;
-  if (!files || (files != text && files[-1] != '\n')) {
+  char *f = text ? strstr(text, "files:\n") : NULL;
+  if (!f || (f != text && f[-1] != '\n')) {
     free(text);
-    return NULL;
+    return VSPH_EIO;
   }
-  *files = '\0';
-  return text;
+  *f = '\0';
+  *key = text;
+  *files = f + 7;
+  return VSPH_OK;
 }
 
-/* Copy run folder @p src (sealed under @p key, of @p kind) into entry
- * @p dst: claimed, cleared, the kept files written, then sealed. */
-static int store_one(const char *src, const char *dst, const char *key,
-                     const struct vsph_folder_kind *kind) {
-  struct vsph_folder f;
-  int st = vsph_folder_claim(&f, dst, kind);
-  if (st) return st;
-  st = vsph_folder_clear(&f, NULL);
-  DIR *d = st ? NULL : opendir(src);
-  if (!st && !d) {
-    st = VSPH_EIO;
-    vsph_status_report(st, __FILE__, __LINE__, "cannot list %s: %s", src,
-                       strerror(errno));
-  }
-  for (struct dirent *e; !st && d && (e = readdir(d));) {
-    const char *n = e->d_name;
-    if (n[0] == '.' || !strcmp(n, "key.txt") || !kept_file(n) ||
-        kind->owns(n) != VSPH_FOLDER_FILE)
-      continue;
+/* A folder's kind when it is a run's or an archive entry's (a real
+ * folder, not a link), else NULL. */
+static const struct vsph_folder_kind *entry_kind(const char *dir) {
+  struct stat sb;
+  if (lstat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode)) return NULL;
+  const struct vsph_folder_kind *k = vsph_folder_kind_of(dir);
+  return k == &vsph_folder_scene_run || k == &vsph_folder_shear_test ? k : NULL;
+}
+
+/* The files of an entry, read from its run's folder as its key.txt lists
+ * them (the kept ones), each checked against its listed size and CRC-32:
+ * what is written is what the seal vouched for. */
+struct copy {
+  size_t n;
+  char name[32][256];
+  char *text[32];
+};
+
+static void copy_free(struct copy *c) {
+  for (size_t k = 0; k < c->n; k++) free(c->text[k]);
+  c->n = 0;
+}
+
+/* 1 when every kept file of @p src was read as listed in @p files; 0 with
+ * why otherwise. */
+static int copy_read(const char *src, const char *files,
+                     const struct vsph_folder_kind *kind, struct copy *c,
+                     char *why, size_t wlen) {
+  c->n = 0;
+  for (const char *line = files; *line;) {
+    const char *end = strchr(line, '\n');
+    char name[256];
+    size_t size;
+    unsigned long crc;
+    int used = 0;
+    if (!end ||
+        sscanf(line, "%255s %zu %lx%n", name, &size, &crc, &used) != 3 ||
+        line + used != end) {
+      snprintf(why, wlen, "its key.txt's list of files is damaged");
+      return 0;
+    }
+    line = end + 1;
+    if (!kept_file(name) || kind->owns(name) != VSPH_FOLDER_FILE) continue;
+    if (c->n == sizeof c->text / sizeof *c->text) {
+      snprintf(why, wlen, "its key.txt lists too many files");
+      return 0;
+    }
     char path[4700];
-    snprintf(path, sizeof path, "%s/%s", src, n);
+    snprintf(path, sizeof path, "%s/%s", src, name);
     size_t len = 0;
     char *text = vsph_files_slurp(path, &len);
-    if (!text || strlen(text) != len) { /* text files only, whole */
+    if (!text || len != size || strlen(text) != len ||
+        crc32(crc32(0L, Z_NULL, 0), (const Bytef *)text, (uInt)len) != crc) {
       free(text);
-      st = VSPH_EIO;
-      vsph_status_report(st, __FILE__, __LINE__, "cannot read %s as text",
-                         path);
-      break;
+      snprintf(why, wlen, "%.255s is not as its seal lists it", name);
+      return 0;
     }
-    st = vsph_files_write(dst, n, text);
-    free(text);
+    snprintf(c->name[c->n], sizeof c->name[c->n], "%s", name);
+    c->text[c->n++] = text;
   }
-  if (!st) st = vsph_folder_seal(&f, key, NULL);
-  if (d) closedir(d);
+  return 1;
+}
+
+/* Remove archive entry @p dir (a folder of @p kind that vsph wrote): its
+ * files, marker and lock, then the folder. */
+static int remove_entry(const char *dir, const struct vsph_folder_kind *kind) {
+  if (!kind) VSPH_FAIL(VSPH_EIO, "%s is not an archive entry", dir);
+  struct vsph_folder f;
+  int st = vsph_folder_claim(&f, dir, kind);
+  if (st) return st;
+  st = vsph_folder_clear(&f, NULL);
+  char path[4400];
+  for (int k = 0; k < 2 && !st; k++) {
+    snprintf(path, sizeof path, "%s/%s", dir,
+             k ? VSPH_FOLDER_LOCK : VSPH_FOLDER_MARKER);
+    if (remove(path) != 0 && errno != ENOENT) st = VSPH_EIO;
+  }
   vsph_folder_release(&f);
-  return st;
+  if (!st && rmdir(dir) != 0) st = VSPH_EIO;
+  if (st) VSPH_FAIL(VSPH_EIO, "cannot remove the old entry %s", dir);
+  return VSPH_OK;
+}
+
+/* Entry @p dst of the run read into @p c, sealed under @p key: built
+ * beside it as DST.new, then swapped in; the old one, if any, goes only
+ * once the new one is whole and in place. */
+static int store_one(const char *dst, const char *key,
+                     const struct vsph_folder_kind *kind,
+                     const struct copy *c) {
+  char fresh[4500], old[4500];
+  snprintf(fresh, sizeof fresh, "%s.new", dst);
+  snprintf(old, sizeof old, "%s.old", dst);
+  struct vsph_folder f;
+  int st = vsph_folder_claim(&f, fresh, kind);
+  if (st) return st;
+  for (size_t k = 0; k < c->n && !st; k++)
+    st = vsph_files_write(fresh, c->name[k], c->text[k]);
+  if (!st) st = vsph_folder_seal(&f, key, NULL);
+  vsph_folder_release(&f);
+  if (st) return st;
+  const struct vsph_folder_kind *was = entry_kind(dst);
+  if (was && rename(dst, old) != 0)
+    VSPH_FAIL(VSPH_EIO, "cannot move %s aside: %s", dst, strerror(errno));
+  if (rename(fresh, dst) != 0)
+    VSPH_FAIL(VSPH_EIO, "cannot move %s into place: %s", fresh,
+              strerror(errno));
+  return was ? remove_entry(old, was) : VSPH_OK;
 }
 
 /* FNV-1a 64 of @p s. */
@@ -147,9 +229,11 @@ static int write_index(const char *archive, const char *runs,
   for (size_t k = 0; k < n; k++) {
     char dir[4400];
     snprintf(dir, sizeof dir, "%s/%s", runs, names[k]);
-    const struct vsph_folder_kind *kind = vsph_folder_kind_of(dir);
-    char *key = kind ? key_of(dir) : NULL;
-    if (!key || vsph_folder_verify(dir, kind, key, NULL, NULL, 0) != 1) {
+    const struct vsph_folder_kind *kind = entry_kind(dir);
+    char *key = NULL;
+    const char *files;
+    if (!kind || key_of(dir, &key, &files) ||
+        vsph_folder_verify(dir, kind, key, NULL, NULL, 0) != 1) {
       free(key);
       continue; /* not (or no longer) a whole entry */
     }
@@ -162,18 +246,21 @@ static int write_index(const char *archive, const char *runs,
     const cJSON *s = o ? cJSON_GetObjectItemCaseSensitive(o, "status") : NULL;
     /* the commit the run recorded, else the caller's for this build's */
     const cJSON *c = o ? cJSON_GetObjectItemCaseSensitive(o, "commit") : NULL;
-    const char *made = cJSON_IsString(c) && c->valuestring[0] &&
-                               strcmp(c->valuestring, "unknown")
-                           ? c->valuestring
-                       : commit && !strcmp(hash, vsph_source_hash_id)
-                           ? commit
-                           : "unknown";
-    fprintf(m, "%s\t%s\t%s\t%s\t%s\t%s\t%016llx\t%.6g\t%.0f\t%.0f\n", names[k],
-            kind->name, cJSON_IsString(s) ? s->valuestring : "ok", version,
-            hash, made, fnv1a(settings ? settings + 1 : ""),
-            o ? vsph_json_get_number(o, "wall_s", NAN) : (double)NAN,
-            o ? vsph_json_get_number(o, "steps", NAN) : (double)NAN,
-            o ? vsph_json_get_number(o, "n_particles", NAN) : (double)NAN);
+    const char *made =
+        cJSON_IsString(c) && c->valuestring[0] &&
+                strcmp(c->valuestring, "unknown") &&
+                strlen(c->valuestring) <= 64 && plain_name(c->valuestring)
+            ? c->valuestring
+        : commit && !strcmp(hash, vsph_source_hash_id) ? commit
+                                                       : "unknown";
+    fprintf(
+        m, "%s\t%s\t%s\t%s\t%s\t%s\t%016llx\t%.6g\t%.0f\t%.0f\n", names[k],
+        kind->name,
+        cJSON_IsString(s) && plain_name(s->valuestring) ? s->valuestring : "?",
+        version, hash, made, fnv1a(settings ? settings + 1 : ""),
+        o ? vsph_json_get_number(o, "wall_s", NAN) : (double)NAN,
+        o ? vsph_json_get_number(o, "steps", NAN) : (double)NAN,
+        o ? vsph_json_get_number(o, "n_particles", NAN) : (double)NAN);
     cJSON_Delete(o);
     free(key);
   }
@@ -187,6 +274,55 @@ static int write_index(const char *archive, const char *runs,
   return st;
 }
 
+/* Judge archive @p archive before anything is written: its top, and each
+ * entry of its runs/ a real folder of a run's kind that vsph wrote, with
+ * nothing else in it (or the .new or .old of an interrupted store). */
+static int judge(const char *archive, const char *runs) {
+  int st = vsph_folder_judge(archive, &vsph_folder_archive);
+  struct stat sb;
+  if (st || lstat(runs, &sb) != 0) return st;
+  if (!S_ISDIR(sb.st_mode))
+    VSPH_FAIL(VSPH_EINVAL, "%s is not a folder (a link?): not an archive's",
+              runs);
+  DIR *d = opendir(runs);
+  if (!d) VSPH_FAIL(VSPH_EINVAL, "cannot read %s: %s", runs, strerror(errno));
+  char bad[600] = "";
+  for (struct dirent *e; !bad[0] && (e = readdir(d));) {
+    if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+    char path[4500];
+    snprintf(path, sizeof path, "%s/%s", runs, e->d_name);
+    const struct vsph_folder_kind *k = entry_kind(path);
+    if (!k || vsph_folder_judge(path, k) != VSPH_OK)
+      snprintf(bad, sizeof bad, "%.300s", path);
+  }
+  closedir(d);
+  if (bad[0])
+    VSPH_FAIL(VSPH_EINVAL,
+              "%s is not an archive entry vsph wrote (a run's folder with "
+              "nothing else in it): nothing was archived",
+              bad);
+  return VSPH_OK;
+}
+
+/* Remove what a store stopped midway left: DST.new and DST.old entries. */
+static int clear_leftovers(const char *runs) {
+  size_t n = 0;
+  char **names = subdirs(runs, &n);
+  if (!names) VSPH_FAIL(VSPH_EIO, "cannot list %s", runs);
+  int st = VSPH_OK;
+  for (size_t k = 0; k < n && !st; k++) {
+    const size_t l = strlen(names[k]);
+    if (l > 4 && (!strcmp(names[k] + l - 4, ".new") ||
+                  !strcmp(names[k] + l - 4, ".old"))) {
+      char path[4500];
+      snprintf(path, sizeof path, "%s/%s", runs, names[k]);
+      st = remove_entry(path, entry_kind(path));
+    }
+  }
+  free_list(names, n);
+  return st;
+}
+
 int vsph_archive_store(const char *report, const char *archive,
                        const char *commit, FILE *progress,
                        struct vsph_archive_counts *counts) {
@@ -197,38 +333,54 @@ int vsph_archive_store(const char *report, const char *archive,
   struct stat sb;
   if (lstat(src_runs, &sb) != 0 || !S_ISDIR(sb.st_mode))
     VSPH_FAIL(VSPH_EINVAL, "%s is not a report's runs folder", src_runs);
-  struct vsph_folder top;
-  int st = vsph_folder_claim(&top, archive, &vsph_folder_archive);
+  int st = judge(archive, runs);
   if (st) return st;
-  st = vsph_files_mkdir(runs);
+  struct vsph_folder top;
+  if ((st = vsph_folder_claim(&top, archive, &vsph_folder_archive))) return st;
+  st = judge(archive, runs); /* again, under the lock */
+  if (!st) st = vsph_files_mkdir(runs);
+  if (!st) st = clear_leftovers(runs);
   size_t n = 0;
   char **names = st ? NULL : subdirs(src_runs, &n);
   if (!st && !names) {
     st = VSPH_EIO;
     vsph_status_report(st, __FILE__, __LINE__, "cannot list %s", src_runs);
   }
+  struct copy *c = st ? NULL : calloc(1, sizeof *c);
+  if (!st && !c) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot allocate a copy");
+  }
   for (size_t k = 0; k < n && !st; k++) {
     char src[4400], dst[4400];
     snprintf(src, sizeof src, "%s/%s", src_runs, names[k]);
     snprintf(dst, sizeof dst, "%s/%s", runs, names[k]);
-    const struct vsph_folder_kind *kind = vsph_folder_kind_of(src);
-    if (kind != &vsph_folder_scene_run && kind != &vsph_folder_shear_test)
-      continue; /* logs/, or not a run */
-    char *key = key_of(src);
+    const struct vsph_folder_kind *kind = entry_kind(src);
+    if (!kind) continue; /* logs/, or not a run */
+    char *key = NULL;
+    const char *files = NULL;
     char why[600] = "";
-    if (!key ||
-        vsph_folder_verify(src, kind, key, NULL, why, sizeof why) != 1) {
-      counts->skipped++;
-      if (progress)
-        fprintf(progress, "vsph report: %s is not archived: %s\n", src,
-                why[0] ? why : "its run has not ended (no seal)");
+    if (!plain_name(names[k]) || strlen(names[k]) > 200)
+      snprintf(why, sizeof why,
+               "its name is not plain printable ASCII of at most 200 "
+               "characters");
+    else if (key_of(src, &key, &files) ||
+             vsph_folder_verify(src, kind, key, NULL, why, sizeof why) != 1) {
+      if (!why[0]) snprintf(why, sizeof why, "it has not ended (no seal)");
     } else if (vsph_folder_verify(dst, kind, key, NULL, NULL, 0) == 1) {
       counts->kept++;
-    } else if (!(st = store_one(src, dst, key, kind))) {
-      counts->stored++;
+    } else if (copy_read(src, files, kind, c, why, sizeof why)) {
+      if (!(st = store_one(dst, key, kind, c))) counts->stored++;
+    }
+    copy_free(c);
+    if (why[0]) {
+      counts->skipped++;
+      if (progress)
+        fprintf(progress, "vsph report: %s is not archived: %s\n", src, why);
     }
     free(key);
   }
+  free(c);
   if (!st) st = write_index(archive, runs, commit);
   free_list(names, n);
   vsph_folder_release(&top);

@@ -513,7 +513,7 @@ static size_t budget_fit(const struct vsph_jobs *J,
     free(keep);
     free(wall);
     free(cost);
-    if (all <= 0.0)
+    if (all <= 0.0 && m > 0)
       fprintf(stderr,
               "vsph report: budget %.0f s: no cached run has measured a rate "
               "yet; the %zu missing runs go costliest first until it is "
@@ -631,7 +631,12 @@ int vsph_jobs_local(struct vsph_jobs *J, int width) {
       }
       char left[64] = "";
       if (t1) eta_text(eta, t1, m, (size_t)width, now, left, sizeof left);
-      if (s)
+      if (s == VSPH_EINTR)
+        fprintf(stderr,
+                "  [%zu/%zu] %s: stopped at a checkpoint (the next report "
+                "resumes it)\n",
+                me, m, order[k]->label);
+      else if (s)
         fprintf(stderr, "  [%zu/%zu] %s: failed\n", me, m, order[k]->label);
       else
         fprintf(stderr,

@@ -549,7 +549,7 @@ START_TEST(test_archive_store) {
   ck_assert_uint_eq(n.skipped, 1);
   /* the entry: sealed under a's key, its tables as they were, no
    * snapshots */
-  char key[4096], entry[400];
+  char key[4096], entry[400], cmd[1200], key2[400];
   snprintf(path, sizeof path, "%s/key.txt", a);
   vsph_test_slurp(path, key, sizeof key);
   *strstr(key, "files:\n") = '\0';
@@ -591,6 +591,62 @@ START_TEST(test_archive_store) {
   ck_assert_uint_eq(n.stored, 1);
   ck_assert_int_eq(
       vsph_folder_verify(entry, &vsph_folder_scene_run, key, NULL, NULL, 0), 0);
+  /* no .new or .old left by the swap; one left by a stopped store goes */
+  snprintf(path, sizeof path, "%s.new", entry);
+  ck_assert(!exists(path));
+  snprintf(path, sizeof path, "%s.old", entry);
+  ck_assert(!exists(path));
+  snprintf(cmd, sizeof cmd, "cp -a %s %s.new", entry, entry);
+  ck_assert_int_eq(system(cmd), 0);
+  ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
+  ck_assert(!exists(path));
+  /* a run whose file is not as its seal lists it is left out, and the
+   * entry it would replace stays whole */
+  snprintf(key2, sizeof key2, "%s/key.txt", a);
+  vsph_test_slurp(key2, key, sizeof key);
+  *strstr(key, "files:\n") = '\0';
+  ck_assert_int_eq(run("poiseuille", set, a, 0, &r), 0);
+  snprintf(path, sizeof path, "%s/profile.csv", a);
+  f = fopen(path, "r+");
+  ck_assert_ptr_nonnull(f);
+  fputc('#', f); /* same size, another CRC: the seal breaks */
+  ck_assert_int_eq(fclose(f), 0);
+  ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 0);
+  ck_assert_int_eq(
+      vsph_folder_verify(entry, &vsph_folder_scene_run, key, NULL, NULL, 0), 1);
+  /* a run whose name a TSV field cannot hold is left out; every row of
+   * the index has its 10 fields */
+  snprintf(cmd, sizeof cmd, "cp -a %s \"%s/rep/runs/t$(printf '\\t')x\"", entry,
+           dir);
+  ck_assert_int_eq(system(cmd), 0);
+  ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
+  ck_assert_uint_ge(n.skipped, 2);
+  snprintf(path, sizeof path, "%s/index.tsv", ar);
+  vsph_test_slurp(path, index, sizeof index);
+  for (char *line = strchr(index, '\n') + 1; *line;) {
+    char *end = strchr(line, '\n');
+    ck_assert_ptr_nonnull(end);
+    size_t tabs = 0;
+    for (char *q = line; q < end; q++) tabs += *q == '\t';
+    ck_assert_uint_eq(tabs, 9);
+    line = end + 1;
+  }
+  /* refused before anything is written: a link in the archive's runs/ (to
+   * a run elsewhere, which stays whole), a foreign file in an entry */
+  snprintf(other, sizeof other, "%s/victim", dir);
+  ck_assert_int_eq(run("poiseuille", set, other, 0, &r), 0);
+  snprintf(path, sizeof path, "%s/runs/zlink", ar);
+  ck_assert_int_eq(symlink(other, path), 0);
+  ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), VSPH_EINVAL);
+  snprintf(path, sizeof path, "%s/snap_0000.vtp", other);
+  ck_assert(exists(path));
+  snprintf(path, sizeof path, "%s/runs/zlink", ar);
+  ck_assert_int_eq(remove(path), 0);
+  snprintf(path, sizeof path, "%s/notes.txt", entry);
+  put(path, "mine");
+  ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), VSPH_EINVAL);
+  ck_assert(exists(path));
   /* a foreign folder is refused, untouched */
   snprintf(other, sizeof other, "%s/foreign", dir);
   ck_assert_int_eq(mkdir(other, 0755), 0);
