@@ -160,13 +160,6 @@ static int store_one(const char *dst, const char *key,
   return was ? remove_entry(old, was) : VSPH_OK;
 }
 
-/* FNV-1a 64 of @p s. */
-static unsigned long long fnv1a(const char *s) {
-  unsigned long long h = 1469598103934665603ull;
-  for (; *s; s++) h = (h ^ (unsigned char)*s) * 1099511628211ull;
-  return h;
-}
-
 static int by_name(const void *a, const void *b) {
   return strcmp(*(char *const *)a, *(char *const *)b);
 }
@@ -257,7 +250,8 @@ static int write_index(const char *archive, const char *runs,
         m, "%s\t%s\t%s\t%s\t%s\t%s\t%016llx\t%.6g\t%.0f\t%.0f\n", names[k],
         kind->name,
         cJSON_IsString(s) && plain_name(s->valuestring) ? s->valuestring : "?",
-        version, hash, made, fnv1a(settings ? settings + 1 : ""),
+        version, hash, made,
+        vsph_folder_fingerprint(settings ? settings + 1 : ""),
         o ? vsph_json_get_number(o, "wall_s", NAN) : (double)NAN,
         o ? vsph_json_get_number(o, "steps", NAN) : (double)NAN,
         o ? vsph_json_get_number(o, "n_particles", NAN) : (double)NAN);

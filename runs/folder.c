@@ -578,6 +578,12 @@ __attribute__((format(printf, 3, 4))) static int say(char *why, size_t len,
   return -1;
 }
 
+unsigned long long vsph_folder_fingerprint(const char *s) {
+  unsigned long long h = 14695981039346656037ull;
+  for (; *s; s++) h = (h ^ (unsigned char)*s) * 1099511628211ull;
+  return h;
+}
+
 const struct vsph_folder_kind *vsph_folder_kind_of(const char *dir) {
   static const struct vsph_folder_kind *const kinds[] = {
       &vsph_folder_scene_run, &vsph_folder_shear_test, &vsph_folder_report,

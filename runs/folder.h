@@ -49,6 +49,10 @@ extern const struct vsph_folder_kind vsph_folder_shear_test;
 extern const struct vsph_folder_kind vsph_folder_report;
 extern const struct vsph_folder_kind vsph_folder_archive;
 
+/** @brief FNV-1a 64 of @p s: the fingerprint of a key that the plan
+ *  (runs/jobs) and the archive's index (runs/archive) print. */
+unsigned long long vsph_folder_fingerprint(const char *s);
+
 /** @brief The kind @p dir's marker names, or NULL (no marker, or not one
  *  of vsph's kinds). Never blocks: a marker that is not a regular file is
  *  not read. */

@@ -314,13 +314,6 @@ void vsph_jobs_command(const struct vsph_jobs_job *j, const char *exe,
   if (w >= len && len) out[len - 1] = '\0';
 }
 
-/* FNV-1a, 64 bits: a short fingerprint of a key for the plan's table. */
-static unsigned long long fingerprint(const char *s) {
-  unsigned long long h = 14695981039346656037ull;
-  for (; *s; s++) h = (h ^ (unsigned char)*s) * 1099511628211ull;
-  return h;
-}
-
 int vsph_jobs_plan_print(const struct vsph_jobs *J, const char *exe, FILE *f) {
   const struct vsph_jobs *P = J;
   size_t missing = 0;
@@ -349,8 +342,9 @@ int vsph_jobs_plan_print(const struct vsph_jobs *J, const char *exe, FILE *f) {
       if (j->cached != pass) continue;
       vsph_jobs_command(j, exe, 0, cmd, 8192);
       fprintf(f, "%s\t%s\t%016llx\t%.0f\t%.1f\t%.0f\t%.1f\t%s\n",
-              j->cached ? "cached" : "missing", j->dir, fingerprint(j->key),
-              j->particles, j->neighbours, j->steps, j->bytes / 1048576.0, cmd);
+              j->cached ? "cached" : "missing", j->dir,
+              vsph_folder_fingerprint(j->key), j->particles, j->neighbours,
+              j->steps, j->bytes / 1048576.0, cmd);
     }
   free(cmd);
   if (fflush(f) != 0 || ferror(f))
