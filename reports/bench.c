@@ -225,14 +225,19 @@ static int bench_solver(FILE *out, int busy) {
     double delta;
     int step;    /* 0: one force evaluation, 1: one whole RK4 step */
     int contact; /* contact SPH instead of the viscous form */
+    int gather;  /* the per-particle gather instead of the symmetric sweep */
   } cases[] = {
       {"force MGF", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0, 0, 0},
+      {"force MGF, gather", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0,
+       0, 0, 1},
       {"force MGF + delta 0.1", &vsph_stretching_square_type, VSPH_VISCOUS_MGF,
        0.1, 0, 0},
       {"force MEAF", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 0.0, 0,
        0},
       {"force PVWF (2 passes)", &vsph_stretching_square_type, VSPH_VISCOUS_PVWF,
-       0.0, 0, 0},
+       0.0, 0, 0, 0},
+      {"force PVWF, gather", &vsph_stretching_square_type, VSPH_VISCOUS_PVWF,
+       0.0, 0, 0, 1},
       {"force contact SPH", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF,
        0.0, 0, 1},
       {"step MGF, stretching square", &vsph_stretching_square_type,
@@ -279,6 +284,7 @@ static int bench_solver(FILE *out, int busy) {
       vsph_integrate_free(a.s);
       VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the bench's buffers");
     }
+    a.out.sweep = cases[c].gather ? NULL : a.s->sweep;
     a.out.drho = buf;
     a.out.acc[0] = buf + p->n;
     a.out.acc[1] = buf + 2 * p->n;

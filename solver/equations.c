@@ -1,6 +1,7 @@
 #include "equations.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "../common/consts.h"
@@ -211,8 +212,9 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
       vsph_pair_at(&b, k, dim, &pr);
       const size_t j = pr.j;
       double du[3], dux = 0.0, f[3], g[3];
+      struct vsph_pair_vec duv;
       for (int a = 0; a < dim; a++) {
-        du[a] = vel[a][j] - ui[a];
+        du[a] = duv.v[a] = vel[a][j] - ui[a];
         dux += du[a] * pr.x[a];
       }
       ms2 = pr.s2 < ms2 ? pr.s2 : ms2;
@@ -227,12 +229,16 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
         vsph_viscous_pair_g(&rc->vl, &pr, vj, du, dux, cg, g);
       } else {
         cont += vsph_pair_continuity(&pr, dux);
-        vsph_pair_pressure(&pr, dim, pi + pp[j], f);
-        vsph_viscous_pair(&rc->vl, sh, &pr, du, dux, Ai, g);
+        const struct vsph_pair_vec fp =
+            vsph_pair_pressure(&pr, dim, pi + pp[j]);
+        const struct vsph_pair_visc gv =
+            vsph_viscous_pair(&rc->vl, sh, &pr, duv, dux, Ai);
+        for (int a = 0; a < dim; a++) f[a] = fp.v[a], g[a] = gv.f[a];
       }
       if (tvf) { /* (A_i + A_j) . grad_i W = -F (A_i + A_j) x; 2 pb */
-        double fb[3];
-        vsph_pair_pressure(&pr, dim, 2.0 * rc->pb, fb);
+        const struct vsph_pair_vec fbv =
+            vsph_pair_pressure(&pr, dim, 2.0 * rc->pb);
+        const double *const fb = fbv.v;
         for (int a = 0; a < dim; a++) {
           double s = 0.0;
           for (int c = 0; c < dim; c++)
@@ -569,6 +575,377 @@ static int contact_init(const struct vsph_equations_props *ep,
   return VSPH_OK;
 }
 
+/* ------------------------------------------------- the symmetric sweep */
+
+struct vsph_equations_sweep {
+  size_t nblk;    /* blocks of the last plan */
+  size_t cap_blk; /* allocated blocks */
+  size_t *c0;     /* first cell of each block; c0[nblk] = ncells */
+  size_t *lo;     /* the first particle each block's buffer holds ... */
+  size_t *hi;     /* ... and one past its last */
+  size_t *off;    /* where each block's buffer starts in buf (doubles) */
+  double *buf;    /* the blocks' buffers, nf doubles per particle */
+  size_t cap_buf; /* allocated doubles */
+};
+
+struct vsph_equations_sweep *vsph_equations_sweep_alloc(void) {
+  struct vsph_equations_sweep *sw = calloc(1, sizeof *sw);
+  if (!sw)
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot allocate a sweep workspace");
+  return sw;
+}
+
+void vsph_equations_sweep_free(struct vsph_equations_sweep *sw) {
+  if (!sw) return;
+  free(sw->c0);
+  free(sw->lo);
+  free(sw->hi);
+  free(sw->off);
+  free(sw->buf);
+  free(sw);
+}
+
+size_t vsph_equations_sweep_bytes(const struct vsph_equations_sweep *sw) {
+  if (!sw) return 0;
+  return sizeof *sw + (sw->cap_blk + 1) * 4 * sizeof(size_t) +
+         sw->cap_buf * sizeof(double);
+}
+
+/* Particles per block: enough blocks for any thread count to share out
+ * (32 at 42 000 particles), few enough that the buffers' overlap (a
+ * block's neighbours reach about two cell rows beyond it) stays small.
+ * A function of the particle count alone: never of the threads. */
+static size_t sweep_block_size(size_t n) {
+  size_t t = n / 32;
+  return t < 512 ? 512 : t > 8192 ? 8192 : t;
+}
+
+/* The blocks of this evaluation: runs of whole cells of about
+ * sweep_block_size particles, each with the index range its pairs reach
+ * (every j > i of its particles lies in its cells' ranges), and their
+ * buffers, nf doubles per particle, laid end to end. */
+static int sweep_plan(struct vsph_equations_sweep *sw,
+                      const struct vsph_cells *cells, size_t n, int nf) {
+  const size_t target = sweep_block_size(n);
+  size_t nblk = 0, acc = 0;
+  int open = 0; /* a block is open: the next cell joins it */
+  for (size_t c = 0; c < cells->ncells; c++) {
+    if (!open) nblk++, open = 1;
+    acc += cells->count[c];
+    if (acc >= target) acc = 0, open = 0;
+  }
+  if (nblk + 1 > sw->cap_blk) {
+    const size_t cap = 2 * (nblk + 1);
+    size_t *q[4] = {sw->c0, sw->lo, sw->hi, sw->off};
+    for (int a = 0; a < 4; a++) {
+      size_t *r = realloc(q[a], cap * sizeof *r);
+      if (!r) VSPH_FAIL(VSPH_ENOMEM, "cannot grow the sweep's %zu blocks", cap);
+      q[a] = r;
+      if (a == 0) sw->c0 = r;
+      if (a == 1) sw->lo = r;
+      if (a == 2) sw->hi = r;
+      if (a == 3) sw->off = r;
+    }
+    sw->cap_blk = cap;
+  }
+  size_t b = 0;
+  acc = 0;
+  open = 0;
+  for (size_t c = 0; c < cells->ncells; c++) {
+    if (!open) sw->c0[b++] = c, open = 1;
+    acc += cells->count[c];
+    if (acc >= target) acc = 0, open = 0;
+  }
+  sw->c0[nblk] = cells->ncells;
+  sw->nblk = nblk;
+  size_t total = 0;
+  for (b = 0; b < nblk; b++) {
+    const size_t first = sw->c0[b], last = sw->c0[b + 1];
+    size_t lo = cells->start[first], hi = lo;
+    for (size_t c = first; c < last; c++) {
+      size_t rlo[VSPH_CELLS_MAXRANGES], rhi[VSPH_CELLS_MAXRANGES];
+      const size_t nr = vsph_cells_ranges(cells, c, rlo, rhi);
+      for (size_t r = 0; r < nr; r++) hi = rhi[r] > hi ? rhi[r] : hi;
+      const size_t end = cells->start[c] + cells->count[c];
+      hi = end > hi ? end : hi;
+    }
+    sw->lo[b] = lo;
+    sw->hi[b] = hi;
+    sw->off[b] = total;
+    total += (hi - lo) * (size_t)nf;
+  }
+  (void)n;
+  if (total > sw->cap_buf) {
+    const size_t cap = total + total / 4;
+    double *r = realloc(sw->buf, cap * sizeof *r);
+    if (!r)
+      VSPH_FAIL(VSPH_ENOMEM, "cannot grow the sweep's buffers to %zu MiB",
+                cap * sizeof *r >> 20);
+    sw->buf = r;
+    sw->cap_buf = cap;
+  }
+  return VSPH_OK;
+}
+
+/* The buffer fields of a particle: the force (pressure and viscous) per
+ * component, the continuity sum, the delta-SPH sum, and, with parts, the
+ * viscous force alone. */
+#define SW_F 0
+#define SW_CONT(d) (d)
+#define SW_DELTA(d) ((d) + 1)
+#define SW_VISC(d) ((d) + 2)
+
+/* The sweep of one block: each particle i of its cells meets its
+ * neighbours j > i once. The pair's unit shares (V_i and V_j left out)
+ * are computed in one vectorised loop per chunk: the force s (pressure
+ * and viscous, odd in the pair: i gets V_j s, j gets -V_i s), the
+ * continuity c = F du.x (even: i gets V_j c, j V_i c) and the delta-SPH
+ * term d = -2 F (rho_j - rho_i) (odd). i's shares are summed in that loop
+ * (lane by lane, as the gather does), j's then added to the block's
+ * buffer in pair order; i's sums go to the buffer after its row, so every
+ * particle's entry in a block depends on the block's pairs and their
+ * order alone. Pairs of two ghosts are skipped. Returns the interactions
+ * (each fluid receiver of a pair counts once) and the closest pair. */
+VSPH_CONSTS_SPECIALISE size_t sweep_block(
+    const struct rhs_ctx *rc, const struct vsph_particles *p,
+    const struct vsph_cells *cells, size_t n_fluid,
+    const struct vsph_equations_sweep *sw, size_t blk, int nf, double *min_s2,
+    const struct vsph_viscous_shape sh, const int delta, const int kid) {
+  const int dim = sh.dim, parts = rc->parts;
+  const size_t lo = sw->lo[blk];
+  double *const buf = sw->buf + sw->off[blk];
+  memset(buf, 0, (sw->hi[blk] - lo) * (size_t)nf * sizeof *buf);
+  const double *const rho = p->rho, *const pp = p->p, *const vol = p->vol;
+  const size_t *const id = p->id;
+  const double *const vel[3] = {p->vel[0], dim > 1 ? p->vel[1] : NULL,
+                                dim > 2 ? p->vel[2] : NULL};
+  size_t total = 0;
+  double ms2 = INFINITY;
+  for (size_t c = sw->c0[blk]; c < sw->c0[blk + 1]; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+         i++) {
+      const int fi = id[i] < n_fluid;
+      double ui[3] = {0, 0, 0}, Ai[9] = {0};
+      for (int a = 0; a < dim; a++) ui[a] = vel[a][i];
+      vsph_viscous_load_A(&rc->vl, i, Ai);
+      const double rhoi = rho[i], pi = pp[i], Vi = vol[i];
+      double cont = 0, dsum = 0, f0 = 0, f1 = 0, f2 = 0, v0 = 0, v1 = 0, v2 = 0,
+             rs2 = INFINITY;
+      struct vsph_pair_iter it;
+      struct vsph_pair_chunk b;
+      vsph_pair_begin_upper(&it, &rc->pk, p, &rg, i);
+      while (vsph_pair_gather(&it, dim, kid, &b)) {
+        const size_t m = b.m;
+        /* i's unit shares; j's shares (V_i applied, signed for j) */
+        double sf[3][VSPH_PAIR_CHUNK_MAX], sv[3][VSPH_PAIR_CHUNK_MAX],
+            sc[VSPH_PAIR_CHUNK_MAX], sd[VSPH_PAIR_CHUNK_MAX],
+            vj[VSPH_PAIR_CHUNK_MAX], js[8][VSPH_PAIR_CHUNK_MAX];
+        /* the pairs' unit shares: a map, no sums, so that it vectorises */
+#pragma omp simd
+        for (size_t k = 0; k < m; k++) {
+          struct vsph_pair pr;
+          vsph_pair_at(&b, k, dim, &pr);
+          pr.VF = pr.F; /* unit shares: V_i, V_j applied below */
+          const size_t j = pr.j;
+          struct vsph_pair_vec du;
+          double dux = 0.0;
+          for (int a = 0; a < dim; a++) {
+            du.v[a] = vel[a][j] - ui[a];
+            dux += du.v[a] * pr.x[a];
+          }
+          sc[k] = vsph_pair_continuity(&pr, dux);
+          sd[k] = delta ? vsph_pair_delta(&pr, rho[j] - rhoi) : 0.0;
+          const struct vsph_pair_vec f =
+              vsph_pair_pressure(&pr, dim, pi + pp[j]);
+          const struct vsph_pair_visc g =
+              vsph_viscous_pair(&rc->vl, sh, &pr, du, dux, Ai);
+          for (int a = 0; a < dim; a++) {
+            sf[a][k] = f.v[a] + g.f[a];
+            sv[a][k] = g.f[a];
+            js[SW_F + a][k] = -(Vi * sf[a][k]);
+            js[SW_VISC(dim) + a][k] = -(Vi * g.f[a]);
+          }
+          js[SW_CONT(dim)][k] = Vi * sc[k];
+          js[SW_DELTA(dim)][k] = -(Vi * sd[k]);
+          vj[k] = vol[j];
+        }
+        /* i's sums, lane by lane */
+#pragma omp simd reduction(+ : cont, dsum, f0, f1, f2, v0, v1, v2)
+        for (size_t k = 0; k < m; k++) {
+          cont += vj[k] * sc[k];
+          dsum += vj[k] * sd[k];
+          f0 += vj[k] * sf[0][k];
+          v0 += vj[k] * sv[0][k];
+          if (dim > 1) {
+            f1 += vj[k] * sf[1][k];
+            v1 += vj[k] * sv[1][k];
+          }
+          if (dim > 2) {
+            f2 += vj[k] * sf[2][k];
+            v2 += vj[k] * sv[2][k];
+          }
+        }
+        for (size_t k = 0; k < m; k++) rs2 = b.s2[k] < rs2 ? b.s2[k] : rs2;
+        /* j's shares, in pair order (a ghost's are never read) */
+        if (!parts) /* the force, continuity and (delta) the diffusion */
+          for (size_t k = 0; k < m; k++) {
+            double *const q = buf + (b.j[k] - lo) * (size_t)nf;
+            for (int a = 0; a < SW_DELTA(dim) + delta; a++) q[a] += js[a][k];
+          }
+        else /* every field */
+          for (size_t k = 0; k < m; k++) {
+            double *const q = buf + (b.j[k] - lo) * (size_t)nf;
+            for (int a = 0; a < SW_VISC(dim) + dim; a++) q[a] += js[a][k];
+          }
+        size_t nfj = 0; /* fluid receivers j */
+        for (size_t k = 0; k < m; k++) nfj += id[b.j[k]] < n_fluid;
+        if (nfj < m && !fi)
+          for (size_t k = 0; k < m; k++)
+            if (id[b.j[k]] < n_fluid) ms2 = b.s2[k] < ms2 ? b.s2[k] : ms2;
+        total += nfj + (fi ? m : 0);
+      }
+      if (!fi) continue;
+      ms2 = rs2 < ms2 ? rs2 : ms2;
+      double *const q = buf + (i - lo) * (size_t)nf;
+      const double fs[3] = {f0, f1, f2}, vs[3] = {v0, v1, v2};
+      for (int a = 0; a < dim; a++) q[SW_F + a] += fs[a];
+      q[SW_CONT(dim)] += cont;
+      q[SW_DELTA(dim)] += dsum;
+      if (parts)
+        for (int a = 0; a < dim; a++) q[SW_VISC(dim) + a] += vs[a];
+    }
+  }
+  *min_s2 = ms2;
+  return total;
+}
+
+/* Each fluid particle's sums from the block buffers that hold it, in
+ * block order, into the right-hand side. */
+static void sweep_finish(const struct rhs_ctx *rc,
+                         const struct vsph_particles *p, size_t n_fluid,
+                         const struct vsph_cells *cells,
+                         const struct vsph_equations_sweep *sw, int nf,
+                         struct vsph_equations_out *out) {
+  const int dim = p->dim;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (size_t b = 0; b < sw->nblk; b++) {
+    const size_t last = sw->c0[b + 1] - 1;
+    const size_t i0 = sw->lo[b], i1 = cells->start[last] + cells->count[last];
+    size_t first = b; /* the first block whose pairs reach into this one */
+    for (size_t e = 0; e < b; e++)
+      if (sw->hi[e] > i0) {
+        first = e;
+        break;
+      }
+    for (size_t i = i0; i < i1; i++) {
+      if (p->id[i] >= n_fluid) continue;
+      double s[3 + 2 + 3] = {0};
+      for (size_t e = first; e <= b; e++) {
+        if (sw->hi[e] <= i) continue;
+        const double *q = sw->buf + sw->off[e] + (i - sw->lo[e]) * (size_t)nf;
+        for (int a = 0; a < nf; a++) s[a] += q[a];
+      }
+      const double rhoi = p->rho[i], rinv = 1.0 / rhoi;
+      const double cont = s[SW_CONT(dim)], dsum = s[SW_DELTA(dim)];
+      if (rc->gas) out->de[i] = p->p[i] * cont * rinv;
+      double x[3] = {0, 0, 0}, g[3];
+      for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
+      vsph_equations_body_force(rc->ep, x, g);
+      out->drho[i] = rhoi * cont + rc->dhc * dsum;
+      for (int a = 0; a < dim; a++) out->acc[a][i] = rinv * s[SW_F + a] + g[a];
+      if (rc->parts) {
+        for (int a = 0; a < dim; a++)
+          out->acc_visc[a][i] = rinv * s[SW_VISC(dim) + a];
+        out->drho_delta[i] = rc->dhc * dsum;
+      }
+    }
+  }
+}
+
+/* One block's sweep, specialised. */
+typedef size_t sweep_fn(const struct rhs_ctx *rc,
+                        const struct vsph_particles *p,
+                        const struct vsph_cells *cells, size_t n_fluid,
+                        const struct vsph_equations_sweep *sw, size_t blk,
+                        int nf, double *min_s2);
+
+/* sweep_block for dimension D, formulation FORM, delta switch DELTA and
+ * the 3h Gaussian, as RHS_CELL_SHAPE below. */
+#define SWEEP_SHAPE(name, D, FORM, DELTA)                                      \
+  static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
+                     const struct vsph_cells *cells, size_t n_fluid,           \
+                     const struct vsph_equations_sweep *sw, size_t blk,        \
+                     int nf, double *min_s2) {                                 \
+    const struct vsph_viscous_shape sh = {D, FORM};                            \
+    return sweep_block(rc, p, cells, n_fluid, sw, blk, nf, min_s2, sh, DELTA,  \
+                       VSPH_KERNEL_DFQ_GAUSSIAN);                              \
+  }
+SWEEP_SHAPE(sweep_mgf2, 2, VSPH_VISCOUS_MGF, 0)
+SWEEP_SHAPE(sweep_mgf2d, 2, VSPH_VISCOUS_MGF, 1)
+SWEEP_SHAPE(sweep_meaf2, 2, VSPH_VISCOUS_MEAF, 0)
+SWEEP_SHAPE(sweep_meaf2d, 2, VSPH_VISCOUS_MEAF, 1)
+SWEEP_SHAPE(sweep_pvwf2, 2, VSPH_VISCOUS_PVWF, 0)
+SWEEP_SHAPE(sweep_pvwf2d, 2, VSPH_VISCOUS_PVWF, 1)
+SWEEP_SHAPE(sweep_mgf3, 3, VSPH_VISCOUS_MGF, 0)
+SWEEP_SHAPE(sweep_mgf3d, 3, VSPH_VISCOUS_MGF, 1)
+SWEEP_SHAPE(sweep_meaf3, 3, VSPH_VISCOUS_MEAF, 0)
+SWEEP_SHAPE(sweep_meaf3d, 3, VSPH_VISCOUS_MEAF, 1)
+SWEEP_SHAPE(sweep_pvwf3, 3, VSPH_VISCOUS_PVWF, 0)
+SWEEP_SHAPE(sweep_pvwf3d, 3, VSPH_VISCOUS_PVWF, 1)
+SWEEP_SHAPE(sweep_er2, 2, VSPH_VISCOUS_ER, 0)
+SWEEP_SHAPE(sweep_er2d, 2, VSPH_VISCOUS_ER, 1)
+SWEEP_SHAPE(sweep_er3, 3, VSPH_VISCOUS_ER, 0)
+SWEEP_SHAPE(sweep_er3d, 3, VSPH_VISCOUS_ER, 1)
+#undef SWEEP_SHAPE
+
+/* The sweep for the run's shape, or NULL where only the general gather
+ * serves (as rhs_choose). */
+static sweep_fn *sweep_choose(const struct rhs_ctx *rc) {
+  static sweep_fn *const table[2][4][2] = {{{sweep_mgf2, sweep_mgf2d},
+                                            {sweep_meaf2, sweep_meaf2d},
+                                            {sweep_pvwf2, sweep_pvwf2d},
+                                            {sweep_er2, sweep_er2d}},
+                                           {{sweep_mgf3, sweep_mgf3d},
+                                            {sweep_meaf3, sweep_meaf3d},
+                                            {sweep_pvwf3, sweep_pvwf3d},
+                                            {sweep_er3, sweep_er3d}}};
+  const int lf = vsph_viscous_loop_form(rc->vl.form);
+  const int row = lf <= VSPH_VISCOUS_PVWF ? lf : lf == VSPH_VISCOUS_ER ? 3 : -1;
+  if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 || row < 0 ||
+      rc->reduce || rc->corr || rc->tvf)
+    return NULL;
+  return table[rc->pk.dim - 2][row][rc->dhc > 0.0];
+}
+
+/* The right-hand side by the symmetric sweep: the blocks in parallel
+ * (each its own buffer), then every particle from its buffers. */
+static int run_sweep(const struct rhs_ctx *rc, sweep_fn *fn,
+                     const struct vsph_particles *p,
+                     const struct vsph_cells *cells, size_t n_fluid,
+                     struct vsph_equations_out *out) {
+  struct vsph_equations_sweep *sw = out->sweep;
+  const int dim = p->dim, nf = dim + 2 + (rc->parts ? dim : 0);
+  const int st = sweep_plan(sw, cells, p->n, nf);
+  if (st) return st;
+  size_t total = 0;
+  double min_s2 = INFINITY;
+  /* integer sum and min: exact, so the same for any thread count */
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : total) \
+    reduction(min : min_s2)
+  for (size_t b = 0; b < sw->nblk; b++) {
+    double m;
+    total += fn(rc, p, cells, n_fluid, sw, b, nf, &m);
+    min_s2 = m < min_s2 ? m : min_s2;
+  }
+  sweep_finish(rc, p, n_fluid, cells, sw, nf, out);
+  out->interactions = total;
+  out->min_s2 = min_s2;
+  return VSPH_OK;
+}
+
 int vsph_equations_rhs(const struct vsph_equations_props *ep,
                        struct vsph_particles *p, size_t n_fluid,
                        const struct vsph_cells *cells,
@@ -633,6 +1010,8 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   }
   vsph_viscous_loop_init(&rc.vl, vp,
                          vsph_viscous_first_pass(vp->form) ? ws : NULL);
+  sweep_fn *sweep = out->sweep ? sweep_choose(&rc) : NULL;
+  if (sweep) return run_sweep(&rc, sweep, p, cells, n_fluid, out);
   run_cells(&rc, rhs_choose(&rc), p, cells, n_fluid, out);
   return VSPH_OK;
 }

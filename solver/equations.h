@@ -184,7 +184,32 @@ struct vsph_equations_out {
   double *de;          /*!< the gas law only: de/dt (energy equation) */
   size_t interactions; /*!< out: pairs (i receiving from j) within kappa h */
   double min_s2;       /*!< out: smallest squared pair distance (m^2) */
+  struct vsph_equations_sweep *sweep; /*!< optional: the symmetric sweep's
+                                           workspace (see below); NULL:
+                                           every loop gathers per particle */
 };
+
+/** The symmetric sweep's workspace (opaque). With it, the specialised
+ *  loops (2-D and 3-D, the 3h Gaussian, MGF and its Brookshaw kin, MEAF,
+ *  Espanol-Revenga, PVWF's second pass; no correction, reduction or
+ *  transport velocity) visit each unique pair (i < j) once per
+ *  evaluation: its geometry, kernel and pair terms are computed once, i's
+ *  share summed at once and j's added to a buffer of the pair's block (a
+ *  fixed run of cells, the same for any thread count); each particle's
+ *  result is then its block buffers summed in block order. 1 and 2
+ *  threads give bitwise-identical results; the per-particle gather agrees
+ *  to rounding. */
+struct vsph_equations_sweep;
+
+/** @brief An empty sweep workspace (it grows as the evaluations need);
+ *  NULL when out of memory. */
+struct vsph_equations_sweep *vsph_equations_sweep_alloc(void);
+
+/** @brief Free a sweep workspace; NULL is a no-op. */
+void vsph_equations_sweep_free(struct vsph_equations_sweep *sw);
+
+/** @brief The bytes the sweep workspace holds now. */
+size_t vsph_equations_sweep_bytes(const struct vsph_equations_sweep *sw);
 
 /** Energies and momenta of the fluid particles (per unit depth in 2-D). */
 struct vsph_equations_energy {

@@ -103,7 +103,8 @@ struct vsph_integrate *vsph_integrate_alloc(
   }
   for (size_t i = 0; i < fluid->n; i++) fluid->id[i] = i;
   s->p = fluid; /* taken; the ghosts, if any, grow it in prepare */
-  if (!(s->cells = vsph_cells_alloc()) || buffers_alloc(s)) {
+  if (!(s->cells = vsph_cells_alloc()) ||
+      !(s->sweep = vsph_equations_sweep_alloc()) || buffers_alloc(s)) {
     vsph_integrate_free(s);
     return NULL;
   }
@@ -114,6 +115,7 @@ void vsph_integrate_free(struct vsph_integrate *s) {
   if (!s) return;
   vsph_particles_free(s->p);
   vsph_cells_free(s->cells);
+  vsph_equations_sweep_free(s->sweep);
   vsph_viscous_ws_free(s->vws);
   vsph_walls_ghosts_free(s->gh);
   free(s->where);
@@ -210,7 +212,8 @@ static int rhs(struct vsph_integrate *s, int parts, size_t *nint,
   else if (s->props.walls.n > 0)
     vsph_walls_update(&s->props.walls, p, s->n_fluid, s->gh, s->where);
   if (st) return st;
-  struct vsph_equations_out out = {.drho = p->drho, .de = p->de};
+  struct vsph_equations_out out = {
+      .drho = p->drho, .de = p->de, .sweep = s->sweep};
   for (int k = 0; k < p->dim; k++) {
     out.acc[k] = p->acc[k];
     if (parts) out.acc_visc[k] = s->extra[k];
@@ -418,10 +421,15 @@ static size_t layout_bytes(size_t d, size_t cap, size_t cap_n, size_t cap_cells,
   if (tvf) b += cap * 2 * d * sizeof(double);            /* tvel, bacc */
   b += cap * sizeof(size_t);                             /* where */
   b += cap * (2 * (2 * d + 2) + d + 1) * sizeof(double); /* RK, extra */
+  /* the symmetric sweep's block buffers: 2 d + 2 doubles a particle at
+   * most, the blocks' overlap taken as one more set (an estimate) */
+  b += cap * 2 * (2 * d + 2) * sizeof(double);
   return b;
 }
 
 size_t vsph_integrate_bytes(const struct vsph_integrate *s) {
+  /* the sweep counted by its estimate: what it holds depends on the
+   * evaluations it has seen, and a resumed run must report the same */
   return layout_bytes((size_t)s->p->dim, s->p->cap, s->cells->cap_n,
                       s->cells->cap_cells, s->vws ? (s->vws->S ? 2 : 1) : 0,
                       s->gh != NULL, s->p->tvel[0] != NULL);

@@ -44,6 +44,7 @@ struct vsph_integrate {
   /* private below */
   struct vsph_cells *cells;
   struct vsph_viscous_ws *vws;
+  struct vsph_equations_sweep *sweep; /* the symmetric sweep's buffers */
   struct vsph_walls_ghosts *gh;
   size_t *where;
   double *y0[8], *ks[8], *extra[4]; /* RK fields: r, u, rho (, e) */

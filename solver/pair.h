@@ -85,6 +85,7 @@ struct vsph_pair_iter {
   const struct vsph_pair_ranges *rg; /*!< candidate ranges */
   size_t i;                          /*!< receiving particle */
   size_t r, j, end;                  /*!< range, next index, range end */
+  size_t jmin;                       /*!< no candidate below this index */
   double xi[3];                      /*!< r_i */
 };
 
@@ -130,10 +131,22 @@ static inline void vsph_pair_begin(struct vsph_pair_iter *it,
   it->r = 0;
   it->j = rg->n > 0 ? rg->lo[0] : 0;
   it->end = rg->n > 0 ? rg->hi[0] : 0;
+  it->jmin = 0;
   for (int k = 0; k < 3; k++) {
     it->pos[k] = k < pk->dim ? p->pos[k] : NULL;
     it->xi[k] = k < pk->dim ? p->pos[k][i] : 0.0;
   }
+}
+
+/** @brief Start iterating over the neighbours j > i of particle @p i only
+ *  (each unique pair once: the symmetric sweep of equations.c). */
+static inline void vsph_pair_begin_upper(struct vsph_pair_iter *it,
+                                         const struct vsph_pair_kernel *pk,
+                                         const struct vsph_particles *p,
+                                         const struct vsph_pair_ranges *rg,
+                                         size_t i) {
+  vsph_pair_begin(it, pk, p, rg, i);
+  it->jmin = i + 1;
 }
 
 /* F and VF of the chunk's m pairs from their q^2, for the kernel shape
@@ -181,7 +194,8 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_fvf(const struct vsph_pair_iter *it,
   }
 }
 
-/** @brief The next chunk of neighbours j != i with s^2 < H2 into @p b.
+/** @brief The next chunk of neighbours j != i (j > i after
+ *  vsph_pair_begin_upper) with s^2 < H2 into @p b.
  *  The candidates are tested 64 at a time in one vectorised loop that sets
  *  a bit per neighbour (no branch); the set bits, lowest first, give the
  *  neighbours in range order; then two vectorised loops give their
@@ -198,6 +212,7 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather(struct vsph_pair_iter *it,
   const size_t i = it->i;
   size_t m = 0;
   while (m < VSPH_PAIR_CHUNK) {
+    if (it->j < it->jmin) it->j = it->jmin;
     if (it->j >= it->end) {
       if (++it->r >= it->rg->n) break;
       it->j = it->rg->lo[it->r];
@@ -250,6 +265,27 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_at(const struct vsph_pair_chunk *b,
 
 /* ------------------------------------------------------------ the terms */
 
+/* The term functions return their vector shares by value: an output
+ * array passed by pointer from inside a vectorised loop makes the loop's
+ * locals addressable, and GCC then leaves the loop scalar. */
+
+/** A vector of a pair (entries beyond the dimension not set). */
+struct vsph_pair_vec {
+  double v[3]; /*!< components */
+};
+
+/** A pair's viscous share and its dissipation density. */
+struct vsph_pair_visc {
+  double f[3]; /*!< the share of (div V)_i (entries beyond dim not set) */
+  double dens; /*!< the pair's dissipation density (THEORY 4) */
+};
+
+/** The pair terms of PVWF's first pass (row-major d x d). */
+struct vsph_pair_grad {
+  double B[9]; /*!< the share of B */
+  double M[9]; /*!< the share of Mg */
+};
+
 /** @brief Continuity, Eq. (3.13) of Colagrossi et al. (2011), THEORY 5:
  *  d rho_i/dt = -rho_i sum_j V_j (u_j - u_i).grad_i W_ij
  *             =  rho_i sum_j V_j F (u_j - u_i).x.
@@ -270,14 +306,15 @@ VSPH_CONSTS_SPECIALISE double vsph_pair_delta(const struct vsph_pair *pr,
 }
 
 /** @brief Pressure gradient, the PVW-compatible form of Eq. (3.13):
- *  -(1/rho_i) sum_j V_j (p_i + p_j) grad_i W_ij. Sets @p f to the pair's
+ *  -(1/rho_i) sum_j V_j (p_i + p_j) grad_i W_ij. @return the pair's
  *  V_j F (p_i + p_j) x; the caller sums and divides by rho_i.
  *  @param psum p_i + p_j (Pa). */
-VSPH_CONSTS_SPECIALISE void vsph_pair_pressure(const struct vsph_pair *pr,
-                                               int dim, double psum,
-                                               double f[3]) {
+VSPH_CONSTS_SPECIALISE struct vsph_pair_vec vsph_pair_pressure(
+    const struct vsph_pair *pr, int dim, double psum) {
+  struct vsph_pair_vec f;
   const double c = pr->VF * psum;
-  for (int k = 0; k < dim; k++) f[k] = c * pr->x[k];
+  for (int k = 0; k < dim; k++) f.v[k] = c * pr->x[k];
+  return f;
 }
 
 /** @brief MGF, Monaghan & Gingold, Eq. (4.20), THEORY 3, and its
@@ -285,66 +322,71 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_pressure(const struct vsph_pair *pr,
  *  (div V)_i = K mu sum_j V_j (u_j - u_i).(r_j - r_i)/(s^2 + eta^2)
  *  grad_i W_ij. MGF: K = 2(d+2), eta = 0; Violeau & Issa (Basa's model C):
  *  K = 2(d+2), eta = 0.1 h; Cleary (model D): K = 2 xi, eta = 0.1 h.
- *  Sets @p f to the pair's -K mu V_j F (du.x)/(s^2 + eta^2) x.
  *  @param Kmu K mu (Pa s); @param eta2 eta^2 (m^2; 0 for MGF, which then
  *  adds an exact zero).
- *  @return the pair's dissipation density (K mu/2) V_j F (du.x)^2/
- *  (s^2 + eta^2) (THEORY 4), so that sum_i V_i of the sums is
- *  sum_i V_i u_i.(div V)_i. */
-VSPH_CONSTS_SPECIALISE double vsph_pair_mgf(const struct vsph_pair *pr, int dim,
-                                            double Kmu, double eta2, double dux,
-                                            double f[3]) {
+ *  @return the pair's share -K mu V_j F (du.x)/(s^2 + eta^2) x and its
+ *  dissipation density (K mu/2) V_j F (du.x)^2/(s^2 + eta^2) (THEORY 4),
+ *  so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_mgf(
+    const struct vsph_pair *pr, int dim, double Kmu, double eta2, double dux) {
+  struct vsph_pair_visc r;
   const double c = -Kmu * pr->VF * dux / (pr->s2 + eta2);
-  for (int k = 0; k < dim; k++) f[k] = c * pr->x[k];
-  return -0.5 * c * dux; /* (K mu/2) V_j F (du.x)^2/s^2, one division */
+  for (int k = 0; k < dim; k++) r.f[k] = c * pr->x[k];
+  r.dens = -0.5 * c * dux; /* (K mu/2) V_j F (du.x)^2/s^2, one division */
+  return r;
 }
 
 /** @brief MEAF, Morris, Fox & Zhu (1997), Eq. (4.30), THEORY 3:
- *  (div V)_i = 2 mu sum_j V_j W'/s (u_i - u_j). Sets @p f to the pair's
- *  -2 mu V_j F du (du = u_j - u_i). @param two_mu 2 mu (Pa s).
- *  @return the pair's dissipation density mu V_j F |du|^2 (THEORY 4). */
-VSPH_CONSTS_SPECIALISE double vsph_pair_meaf(const struct vsph_pair *pr,
-                                             int dim, double two_mu,
-                                             const double du[3], double f[3]) {
+ *  (div V)_i = 2 mu sum_j V_j W'/s (u_i - u_j). @param du u_j - u_i;
+ *  @param two_mu 2 mu (Pa s). @return the pair's share -2 mu V_j F du and
+ *  its dissipation density mu V_j F |du|^2 (THEORY 4). */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_meaf(
+    const struct vsph_pair *pr, int dim, double two_mu,
+    const struct vsph_pair_vec du) {
+  struct vsph_pair_visc r;
   const double c = -two_mu * pr->VF;
   double du2 = 0.0;
   for (int k = 0; k < dim; k++) {
-    f[k] = c * du[k];
-    du2 += du[k] * du[k];
+    r.f[k] = c * du.v[k];
+    du2 += du.v[k] * du.v[k];
   }
-  return 0.5 * two_mu * pr->VF * du2;
+  r.dens = 0.5 * two_mu * pr->VF * du2;
+  return r;
 }
 
 /** @brief PVWF pass 1, Eqs. (4.18)-(4.19), THEORY 3: the pair's terms of
  *  B = sum_j V_j grad_i W_ij (x) x = sum_j V_j (-F) x (x) x, whose inverse
  *  is L_i, and of Mg = sum_j V_j (-F) du (x) x, so that the renormalised
- *  gradient is (grad u)_i = Mg L_i (row-major d x d, entry [a*dim+b]). */
-VSPH_CONSTS_SPECIALISE void vsph_pair_pvwf_grad(const struct vsph_pair *pr,
-                                                int dim, const double du[3],
-                                                double bB[9], double bM[9]) {
+ *  gradient is (grad u)_i = Mg L_i (row-major d x d, entry [a*dim+b]).
+ *  @param du u_j - u_i. */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_grad vsph_pair_pvwf_grad(
+    const struct vsph_pair *pr, int dim, const struct vsph_pair_vec du) {
+  struct vsph_pair_grad r;
   const double c = -pr->VF;
   for (int a = 0; a < dim; a++)
     for (int b = 0; b < dim; b++) {
-      bB[a * dim + b] = c * pr->x[a] * pr->x[b];
-      bM[a * dim + b] = c * du[a] * pr->x[b];
+      r.B[a * dim + b] = c * pr->x[a] * pr->x[b];
+      r.M[a * dim + b] = c * du.v[a] * pr->x[b];
     }
+  return r;
 }
 
 /** @brief PVWF pass 2, Eq. (4.19), THEORY 3:
- *  (div V)_i = sum_j V_j (T_j L_j + T_i L_i) grad_i W_ij. Sets @p f to the
+ *  (div V)_i = sum_j V_j (T_j L_j + T_i L_i) grad_i W_ij. @return the
  *  pair's -V_j F (A_j + A_i) x with A = T L from pass 1.
  *  @param Ai A_i (row-major); @param A A[a*dim+b][j] of every particle. */
-VSPH_CONSTS_SPECIALISE void vsph_pair_pvwf_force(const struct vsph_pair *pr,
-                                                 int dim, const double Ai[9],
-                                                 double *const A[9],
-                                                 double f[3]) {
+VSPH_CONSTS_SPECIALISE struct vsph_pair_vec vsph_pair_pvwf_force(
+    const struct vsph_pair *pr, int dim, const double Ai[9],
+    double *const A[9]) {
+  struct vsph_pair_vec f;
   const size_t j = pr->j;
   for (int a = 0; a < dim; a++) {
     double y = 0.0;
     for (int b = 0; b < dim; b++)
       y += (A[a * dim + b][j] + Ai[a * dim + b]) * pr->x[b];
-    f[a] = -(pr->VF * y);
+    f.v[a] = -(pr->VF * y);
   }
+  return f;
 }
 
 /** @brief Espanol & Revenga (2003), docs/theory.md section 8: with
@@ -353,20 +395,21 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_pvwf_force(const struct vsph_pair *pr,
  *  a = zeta - mu (d+2)/d and b = -(d+2)(zeta + mu (d-2)/d) give
  *  mu lap u + (zeta + mu (1 - 2/d)) grad div u in the continuum (zeta the
  *  bulk viscosity). In 2-D with zeta = 0, b = 0 and a = -2 mu: MEAF.
- *  Sets @p f to the pair's share; @p a, @p b as above (Pa s).
- *  @return the pair's dissipation density -f.du/2 (THEORY 4), so that
- *  sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
-VSPH_CONSTS_SPECIALISE double vsph_pair_er(const struct vsph_pair *pr, int dim,
-                                           double a, double b,
-                                           const double du[3], double dux,
-                                           double f[3]) {
+ *  @p a, @p b as above (Pa s); @param du u_j - u_i.
+ *  @return the pair's share and its dissipation density -f.du/2
+ *  (THEORY 4), so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_er(
+    const struct vsph_pair *pr, int dim, double a, double b,
+    const struct vsph_pair_vec du, double dux) {
+  struct vsph_pair_visc r;
   const double c1 = a * pr->VF, c2 = b * pr->VF * dux / pr->s2;
   double du2 = 0.0;
   for (int k = 0; k < dim; k++) {
-    f[k] = c1 * du[k] + c2 * pr->x[k];
-    du2 += du[k] * du[k];
+    r.f[k] = c1 * du.v[k] + c2 * pr->x[k];
+    du2 += du.v[k] * du.v[k];
   }
-  return -0.5 * (c1 * du2 + c2 * dux);
+  r.dens = -0.5 * (c1 * du2 + c2 * dux);
+  return r;
 }
 
 /* ------------------------------------------ contact SPH (issue 12) */
@@ -441,7 +484,12 @@ VSPH_CONSTS_SPECIALISE double vsph_pair_contact_visc(const struct vsph_pair *pr,
                                                      int dim, double etap,
                                                      const double du[3],
                                                      double dux, double g[3]) {
-  return vsph_pair_er(pr, dim, -2.0 * etap, -2.0 / 3.0 * etap, du, dux, g);
+  struct vsph_pair_vec d = {
+      {du[0], dim > 1 ? du[1] : 0.0, dim > 2 ? du[2] : 0.0}};
+  const struct vsph_pair_visc r =
+      vsph_pair_er(pr, dim, -2.0 * etap, -2.0 / 3.0 * etap, d, dux);
+  for (int k = 0; k < dim; k++) g[k] = r.f[k];
+  return r.dens;
 }
 
 /** Per-particle sums of Takeda-type direct second derivatives (Basa et

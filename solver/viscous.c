@@ -215,9 +215,10 @@ VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
     for (size_t k = 0; k < m; k++) {
       struct vsph_pair pr;
       vsph_pair_at(&bt, k, dim, &pr);
-      double du[3], bB[9], bM[9];
-      for (int a = 0; a < dim; a++) du[a] = p->vel[a][pr.j] - ui[a];
-      vsph_pair_pvwf_grad(&pr, dim, du, bB, bM);
+      struct vsph_pair_vec du;
+      for (int a = 0; a < dim; a++) du.v[a] = p->vel[a][pr.j] - ui[a];
+      const struct vsph_pair_grad gr = vsph_pair_pvwf_grad(&pr, dim, du);
+      const double *const bB = gr.B, *const bM = gr.M;
       B0 += bB[0];
       M0 += bM[0];
       if (dd > 1) {
@@ -439,13 +440,16 @@ VSPH_CONSTS_SPECIALISE double force_one(
     for (size_t q = 0; q < m; q++) {
       struct vsph_pair pr;
       vsph_pair_at(&b, q, dim, &pr);
-      double du[3], dux = 0.0, f[3];
+      struct vsph_pair_vec du;
+      double dux = 0.0;
       for (int k = 0; k < dim; k++) {
-        du[k] = p->vel[k][pr.j] - ui[k];
-        dux += du[k] * pr.x[k];
+        du.v[k] = p->vel[k][pr.j] - ui[k];
+        dux += du.v[k] * pr.x[k];
       }
-      fd[q] = vsph_viscous_pair(lp, sh, &pr, du, dux, Ai, f);
-      for (int k = 0; k < dim; k++) fv[k][q] = f[k];
+      const struct vsph_pair_visc r =
+          vsph_viscous_pair(lp, sh, &pr, du, dux, Ai);
+      fd[q] = r.dens;
+      for (int k = 0; k < dim; k++) fv[k][q] = r.f[k];
     }
     for (size_t q = 0; q < m; q++) {
       pd += fd[q];

@@ -237,31 +237,36 @@ struct vsph_viscous_shape {
   int form; /*!< vsph_viscous_form */
 };
 
-/** @brief The viscous term of pair (i, j): sets @p f to the pair's share of
- *  (div V)_i and returns its dissipation density (0 for PVWF, whose density
- *  -T_i:D_i comes from pass 1). A new formulation adds its pair function
- *  to pair.h and a case here.
+/** @brief The viscous term of pair (i, j): the pair's share of (div V)_i
+ *  and its dissipation density (0 for PVWF, whose density -T_i:D_i comes
+ *  from pass 1). A new formulation adds its pair function to pair.h and a
+ *  case here.
  *  @param du u_j - u_i; @param dux du.x; @param Ai PVWF's A_i. */
-VSPH_CONSTS_SPECIALISE double vsph_viscous_pair(
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_viscous_pair(
     const struct vsph_viscous_loop *lp, struct vsph_viscous_shape sh,
-    const struct vsph_pair *pr, const double du[3], double dux,
-    const double Ai[9], double f[3]) {
+    const struct vsph_pair *pr, const struct vsph_pair_vec du, double dux,
+    const double Ai[9]) {
   switch (sh.form) {
     case VSPH_VISCOUS_MGF:
     case VSPH_VISCOUS_VI:
     case VSPH_VISCOUS_CLEARY:
-      return vsph_pair_mgf(pr, sh.dim, lp->Kmu, lp->eta2, dux, f);
+      return vsph_pair_mgf(pr, sh.dim, lp->Kmu, lp->eta2, dux);
     case VSPH_VISCOUS_MEAF:
-      return vsph_pair_meaf(pr, sh.dim, lp->two_mu, du, f);
+      return vsph_pair_meaf(pr, sh.dim, lp->two_mu, du);
     case VSPH_VISCOUS_ER:
-      return vsph_pair_er(pr, sh.dim, lp->er_a, lp->er_b, du, dux, f);
+      return vsph_pair_er(pr, sh.dim, lp->er_a, lp->er_b, du, dux);
     case VSPH_VISCOUS_PVWF:
-    case VSPH_VISCOUS_TWOPASS:
-      vsph_pair_pvwf_force(pr, sh.dim, Ai, lp->A, f);
-      return 0.0;
-    default: /* A, VISC-0x: whole from the first pass (vsph_viscous_own) */
-      for (int k = 0; k < sh.dim; k++) f[k] = 0.0;
-      return 0.0;
+    case VSPH_VISCOUS_TWOPASS: {
+      const struct vsph_pair_vec f =
+          vsph_pair_pvwf_force(pr, sh.dim, Ai, lp->A);
+      struct vsph_pair_visc r = {.dens = 0.0};
+      for (int k = 0; k < sh.dim; k++) r.f[k] = f.v[k];
+      return r;
+    }
+    default: { /* A, VISC-0x: whole from the first pass (vsph_viscous_own) */
+      const struct vsph_pair_visc r = {{0.0, 0.0, 0.0}, 0.0};
+      return r;
+    }
   }
 }
 

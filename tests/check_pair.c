@@ -13,10 +13,15 @@
  *    match it.
  * 2. The solver's viscous acceleration times rho equals
  *    vsph_viscous_compute on the same particles, for each formulation on
- *    each scene (ghost walls included). */
+ *    each scene (ghost walls included).
+ * 3. The symmetric sweep (each unique pair once, equations.h) gives the
+ *    per-particle gather's right-hand side to rounding on every scene, the
+ *    same interactions and closest pair exactly, and the same bits on 1
+ *    and 2 threads; through it the right-hand side matches the twin too. */
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -391,7 +396,9 @@ static void assert_close(const double *a, const double *b, size_t n, double tol,
  * PVWF, an LU inverse against cofactors (condition numbers ~10 at the
  * corners); a wrong coefficient shows at O(1e-2) or more. */
 START_TEST(test_twin) {
-  const int form = _i / 2, dim = 2 + _i % 2;
+  /* the second half: the right-hand side through the symmetric sweep */
+  const int sweep = _i >= 2 * VSPH_VISCOUS_FORM_COUNT;
+  const int form = _i % (2 * VSPH_VISCOUS_FORM_COUNT) / 2, dim = 2 + _i % 2;
   struct vsph_particles *p = random_set(dim, 2385 + (unsigned long)_i);
   const size_t n = p->n;
   struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0, .delta = DELTA};
@@ -416,8 +423,10 @@ START_TEST(test_twin) {
       .drho = column(lb, n, 0),
       .acc = {column(lb, n, 1), column(lb, n, 2), column(lb, n, 3)},
       .acc_visc = {column(lb, n, 4), column(lb, n, 5), column(lb, n, 6)},
-      .drho_delta = column(lb, n, 7)};
+      .drho_delta = column(lb, n, 7),
+      .sweep = sweep ? vsph_equations_sweep_alloc() : NULL};
   ck_assert_int_eq(vsph_equations_rhs(&ep, p, n, cells, ws, &out), 0);
+  vsph_equations_sweep_free(out.sweep);
   double *const f[3] = {column(lb, n, 8), column(lb, n, 9), column(lb, n, 10)};
   double *dens = column(lb, n, 11);
   ck_assert_int_eq(vsph_viscous_compute(&ep.visc, p, cells, ws, f, dens), 0);
@@ -505,6 +514,122 @@ START_TEST(test_solver_equals_operator) {
                 vsph_viscous_name(form), err, scale);
   free(buf);
   vsph_viscous_ws_free(ws);
+  vsph_integrate_free(s);
+}
+END_TEST
+
+/* ------------------------------------------------- the symmetric sweep */
+
+/* The right-hand side of s's particles with all its parts, through the
+ * sweep sw (NULL: the gather) on thr threads, into buf (6 n doubles). */
+static struct vsph_equations_out sweep_rhs(struct vsph_integrate *s,
+                                           struct vsph_equations_sweep *sw,
+                                           int thr, double *buf) {
+  const size_t n = s->p->n;
+  struct vsph_equations_out out = {.drho = buf,
+                                   .acc = {buf + n, buf + 2 * n},
+                                   .acc_visc = {buf + 3 * n, buf + 4 * n},
+                                   .drho_delta = buf + 5 * n,
+                                   .sweep = sw};
+  omp_set_num_threads(thr);
+  ck_assert_int_eq(vsph_equations_rhs(&s->props.eq, s->p, s->n_fluid, s->cells,
+                                      s->vws, &out),
+                   0);
+  omp_set_num_threads(2);
+  return out;
+}
+
+/* Scene sc_i (ghost walls where it has walls), at 16 across (channels
+ * 32), formulation form, delta-SPH 0.1, after three steps: the sweep on 1
+ * and 2 threads gives the same bits; interactions and the closest pair
+ * equal the gather's exactly (the same pairs, classified by the same s^2:
+ * (x_j - x_i)^2 = (x_i - x_j)^2 in floating point); every field equals
+ * the gather's to 1e-12 of its largest fluid value (sums of ~50 terms in
+ * another order: the pressure terms cancel to ~1e-3 of their size, so
+ * rounding shows at ~1e-13; a share with a wrong sign or volume shows at
+ * O(1)). Where a sum cancels (the steady channels: d rho/dt and the
+ * transverse acceleration ~1e-9 of their terms) the scale is the size of
+ * the terms: rho0 |u|/h for the continuity sum, |p|/(rho0 h) + mu |u|/
+ * (rho0 h^2) for the acceleration, mu |u|/(rho0 h^2) for its viscous
+ * part. */
+START_TEST(test_sweep_gather_threads) {
+  static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_MEAF,
+                              VSPH_VISCOUS_PVWF, VSPH_VISCOUS_ER,
+                              VSPH_VISCOUS_CLEARY};
+  const int nforms = (int)(sizeof forms / sizeof forms[0]);
+  /* past the scenes' cases: the stretching square at 136 across (18 496
+   * particles, 36 blocks, where the block size is not the smallest) */
+  const int big = _i >= (int)vsph_scene_count() * nforms;
+  const int form = forms[_i % nforms], sc_i = _i / nforms;
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_scene_init(&sc,
+                                   big ? &vsph_stretching_square_type
+                                       : vsph_scene_get((size_t)sc_i),
+                                   NULL),
+                   0);
+  struct vsph_particles *fluid = NULL;
+  const size_t res = big                                     ? 136
+                     : vsph_walls_period(&sc.walls, 0) > 0.0 ? 32
+                                                             : 16;
+  ck_assert_int_eq(sc.type->init(&sc, res, &fluid), 0);
+  struct vsph_integrate_props ip;
+  ck_assert_int_eq(
+      vsph_scene_integrate_props(&sc, form, &vsph_gaussian_type,
+                                 HDX * sc.ref_length / (double)res, &ip),
+      0);
+  ip.cfl = 1.0;
+  ip.rho_band = 0.2;
+  ip.eq.delta = 0.1;
+  struct vsph_integrate *s = vsph_integrate_alloc(&ip, fluid);
+  ck_assert_ptr_nonnull(s);
+  for (int k = 0; k < 3; k++)
+    ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  struct vsph_equations_energy en;
+  struct vsph_equations_budget b;
+  ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &b), 0); /* cells */
+  const size_t n = s->p->n;
+  double *buf = calloc(18 * n, sizeof *buf);
+  struct vsph_equations_sweep *sw = vsph_equations_sweep_alloc();
+  const struct vsph_equations_out g = sweep_rhs(s, NULL, 1, buf),
+                                  s1 = sweep_rhs(s, sw, 1, buf + 6 * n),
+                                  s2 = sweep_rhs(s, sw, 2, buf + 12 * n);
+  ck_assert_msg(memcmp(buf + 6 * n, buf + 12 * n, 6 * n * sizeof *buf) == 0,
+                "%s %s: the sweep on 1 and 2 threads differs", sc.type->name,
+                vsph_viscous_name(form));
+  ck_assert_uint_eq(s1.interactions, g.interactions);
+  ck_assert_uint_eq(s2.interactions, g.interactions);
+  ck_assert(s1.min_s2 == g.min_s2);
+  ck_assert(g.interactions > 0);
+  const char *what[6] = {"drho",       "acc x",      "acc y",
+                         "acc_visc x", "acc_visc y", "drho_delta"};
+  double umax = 0.0, pmax = 0.0;
+  for (size_t i = 0; i < n; i++)
+    if (s->p->id[i] < s->n_fluid) {
+      umax = fmax(umax, hypot(s->p->vel[0][i], s->p->vel[1][i]));
+      pmax = fmax(pmax, fabs(s->p->p[i]));
+    }
+  const double h = ip.eq.visc.h, rho0 = ip.eq.rho0;
+  const double visc = ip.eq.visc.mu * umax / (rho0 * h * h);
+  const double terms[6] = {rho0 * umax / h,
+                           pmax / (rho0 * h) + visc,
+                           pmax / (rho0 * h) + visc,
+                           visc,
+                           visc,
+                           0.0};
+  for (int q = 0; q < 6; q++) {
+    const double *a = buf + (size_t)q * n, *c = buf + (size_t)(6 + q) * n;
+    double scale = terms[q], err = 0.0;
+    for (size_t i = 0; i < n; i++) {
+      if (s->p->id[i] >= s->n_fluid) continue;
+      scale = fmax(scale, fabs(a[i]));
+      err = fmax(err, fabs(a[i] - c[i]));
+    }
+    ck_assert_msg(err <= 1e-12 * scale,
+                  "%s %s %s: |sweep - gather| %.3e of %.3e", sc.type->name,
+                  vsph_viscous_name(form), what[q], err, scale);
+  }
+  vsph_equations_sweep_free(sw);
+  free(buf);
   vsph_integrate_free(s);
 }
 END_TEST
@@ -817,7 +942,7 @@ Suite *vsph_pair_suite(void) {
   Suite *s = suite_create("pair");
   TCase *tc = tcase_create("twin");
   tcase_set_timeout(tc, 60);
-  tcase_add_loop_test(tc, test_twin, 0, 2 * VSPH_VISCOUS_FORM_COUNT);
+  tcase_add_loop_test(tc, test_twin, 0, 4 * VSPH_VISCOUS_FORM_COUNT);
   /* the scenes before the shear layer: it (3-D, a periodic depth below
    * these kernels' reach at 16 across) and the cylinders (two materials)
    * are contact SPH's, checked in tests/check_contact.c */
@@ -825,6 +950,10 @@ Suite *vsph_pair_suite(void) {
   while (vsph_scene_get(nwc) && vsph_scene_get(nwc) != &vsph_shear_type) nwc++;
   tcase_add_loop_test(tc, test_solver_equals_operator, 0,
                       (int)nwc * VSPH_VISCOUS_FORM_COUNT);
+  tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
+  tcase_add_loop_test(tc, test_sweep_gather_threads,
+                      (int)vsph_scene_count() * 5,
+                      (int)vsph_scene_count() * 5 + 1);
   tcase_add_loop_test(tc, test_state_equations, 0, 2);
   tcase_add_test(tc, test_pressure_reduction);
   tcase_add_loop_test(tc, test_corr_exact, 0, 2);
