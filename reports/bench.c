@@ -227,25 +227,26 @@ static int bench_solver(FILE *out, int busy) {
     int contact; /* contact SPH instead of the viscous form */
     int gather;  /* the per-particle gather instead of the symmetric sweep */
   } cases[] = {
-      {"force MGF", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0, 0, 0},
+      {"force MGF", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0, 0, 0,
+       0},
       {"force MGF, gather", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0,
        0, 0, 1},
       {"force MGF + delta 0.1", &vsph_stretching_square_type, VSPH_VISCOUS_MGF,
-       0.1, 0, 0},
-      {"force MEAF", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 0.0, 0,
+       0.1, 0, 0, 0},
+      {"force MEAF", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 0.0, 0, 0,
        0},
       {"force PVWF (2 passes)", &vsph_stretching_square_type, VSPH_VISCOUS_PVWF,
        0.0, 0, 0, 0},
       {"force PVWF, gather", &vsph_stretching_square_type, VSPH_VISCOUS_PVWF,
        0.0, 0, 0, 1},
       {"force contact SPH", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF,
-       0.0, 0, 1},
+       0.0, 0, 1, 0},
       {"step MGF, stretching square", &vsph_stretching_square_type,
-       VSPH_VISCOUS_MGF, 0.0, 1, 0},
+       VSPH_VISCOUS_MGF, 0.0, 1, 0, 0},
       {"step PVWF, stretching square", &vsph_stretching_square_type,
-       VSPH_VISCOUS_PVWF, 0.0, 1, 0},
+       VSPH_VISCOUS_PVWF, 0.0, 1, 0, 0},
       {"step MGF, standing wave", &vsph_standing_wave_type, VSPH_VISCOUS_MGF,
-       0.0, 1, 0},
+       0.0, 1, 0, 0},
   };
   pid_t pids[8] = {0};
   if (busy > 8) busy = 8;

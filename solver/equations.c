@@ -920,6 +920,117 @@ static sweep_fn *sweep_choose(const struct rhs_ctx *rc) {
   return table[rc->pk.dim - 2][row][rc->dhc > 0.0];
 }
 
+/* PVWF's (model B's) first pass by the sweep, one block: each pair's
+ * unit terms -F x (x) x and -F du (x) x of B and Mg (vsph_pair_pvwf_grad,
+ * even in the pair: i takes V_j of them, j V_i), i's summed field by
+ * field, j's added to the block's buffer, as sweep_block. Every particle
+ * receives, ghosts too: the second pass reads their A. */
+VSPH_CONSTS_SPECIALISE void grad_block(const struct vsph_pair_kernel *pk,
+                                       const struct vsph_particles *p,
+                                       const struct vsph_cells *cells,
+                                       const struct vsph_equations_sweep *sw,
+                                       size_t blk, const int dim,
+                                       const int kid) {
+  const int dd = dim * dim, nf = 2 * dd;
+  const size_t lo = sw->lo[blk];
+  double *const buf = sw->buf + sw->off[blk];
+  memset(buf, 0, (sw->hi[blk] - lo) * (size_t)nf * sizeof *buf);
+  const double *const vol = p->vol;
+  const double *const vel[3] = {p->vel[0], dim > 1 ? p->vel[1] : NULL,
+                                dim > 2 ? p->vel[2] : NULL};
+  for (size_t c = sw->c0[blk]; c < sw->c0[blk + 1]; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+         i++) {
+      double ui[3] = {0, 0, 0}, sums[18] = {0};
+      for (int a = 0; a < dim; a++) ui[a] = vel[a][i];
+      const double Vi = vol[i];
+      struct vsph_pair_iter it;
+      struct vsph_pair_chunk b;
+      vsph_pair_begin_upper(&it, pk, p, &rg, i);
+      while (vsph_pair_gather(&it, dim, kid, &b)) {
+        const size_t m = b.m;
+        double u[18][VSPH_PAIR_CHUNK_MAX], vj[VSPH_PAIR_CHUNK_MAX];
+#pragma omp simd
+        for (size_t k = 0; k < m; k++) {
+          struct vsph_pair pr;
+          vsph_pair_at(&b, k, dim, &pr);
+          pr.VF = pr.F; /* unit terms: V_i, V_j applied below */
+          struct vsph_pair_vec du;
+          for (int a = 0; a < dim; a++) du.v[a] = vel[a][pr.j] - ui[a];
+          const struct vsph_pair_grad gr = vsph_pair_pvwf_grad(&pr, dim, du);
+          for (int e = 0; e < dd; e++) {
+            u[e][k] = gr.B[e];
+            u[dd + e][k] = gr.M[e];
+          }
+          vj[k] = vol[pr.j];
+        }
+        for (int e = 0; e < nf; e++) { /* i's sums, lane by lane */
+          double s = 0.0;
+#pragma omp simd reduction(+ : s)
+          for (size_t k = 0; k < m; k++) s += vj[k] * u[e][k];
+          sums[e] += s;
+        }
+        for (size_t k = 0; k < m; k++) { /* j's, in pair order */
+          double *const q = buf + (b.j[k] - lo) * (size_t)nf;
+          for (int e = 0; e < nf; e++) q[e] += Vi * u[e][k];
+        }
+      }
+      double *const q = buf + (i - lo) * (size_t)nf;
+      for (int e = 0; e < nf; e++) q[e] += sums[e];
+    }
+  }
+}
+
+/* PVWF's first pass by the sweep for the 2-D and 3-D Gaussian: the
+ * blocks, then every particle's B and Mg from its buffers in block order,
+ * finished by vsph_viscous_pvwf_finish. */
+static int grad_sweep(const struct vsph_viscous_props *vp,
+                      const struct vsph_pair_kernel *pk,
+                      const struct vsph_particles *p,
+                      const struct vsph_cells *cells,
+                      struct vsph_equations_sweep *sw,
+                      struct vsph_viscous_ws *ws) {
+  if (!ws || ws->cap < p->n || ws->dim != p->dim)
+    VSPH_FAIL(VSPH_EINVAL, "%s needs a workspace for %zu particles",
+              vsph_viscous_label(vp->form), p->n);
+  const int dim = p->dim, dd = dim * dim, nf = 2 * dd;
+  const int st = sweep_plan(sw, cells, p->n, nf);
+  if (st) return st;
+  const int G = VSPH_KERNEL_DFQ_GAUSSIAN;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (size_t b = 0; b < sw->nblk; b++)
+    if (dim == 2)
+      grad_block(pk, p, cells, sw, b, 2, G);
+    else
+      grad_block(pk, p, cells, sw, b, 3, G);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (size_t b = 0; b < sw->nblk; b++) {
+    const size_t last = sw->c0[b + 1] - 1;
+    const size_t i0 = sw->lo[b], i1 = cells->start[last] + cells->count[last];
+    size_t first = b;
+    for (size_t e = 0; e < b; e++)
+      if (sw->hi[e] > i0) {
+        first = e;
+        break;
+      }
+    for (size_t i = i0; i < i1; i++) {
+      double s[18] = {0};
+      for (size_t e = first; e <= b; e++) {
+        if (sw->hi[e] <= i) continue;
+        const double *q = sw->buf + sw->off[e] + (i - sw->lo[e]) * (size_t)nf;
+        for (int a = 0; a < nf; a++) s[a] += q[a];
+      }
+      vsph_viscous_pvwf_finish(vp, ws, i, s, s + dd);
+    }
+  }
+  size_t nfb = 0; /* serial: reproducible */
+  for (size_t i = 0; i < p->n; i++) nfb += ws->fallback[i];
+  ws->n_fallback = nfb;
+  return VSPH_OK;
+}
+
 /* The right-hand side by the symmetric sweep: the blocks in parallel
  * (each its own buffer), then every particle from its buffers. */
 static int run_sweep(const struct rhs_ctx *rc, sweep_fn *fn,
@@ -982,8 +1093,6 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
     run_cells(&rc, contact_choose(&rc), p, cells, n_fluid, out);
     return VSPH_OK;
   }
-  const int st = vsph_viscous_prepare(vp, p, cells, ws);
-  if (st) return st;
   struct rhs_ctx rc = {
       .ep = ep,
       .dhc = ep->delta * vp->h * ep->c0,
@@ -996,6 +1105,14 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
       .pb = ep->pb,
   };
   vsph_pair_kernel_init(&rc.pk, vp->kernel, vp->dim, vp->h);
+  vsph_viscous_loop_init(&rc.vl, vp,
+                         vsph_viscous_first_pass(vp->form) ? ws : NULL);
+  sweep_fn *sweep = out->sweep ? sweep_choose(&rc) : NULL;
+  /* the first pass: by the sweep where the second goes by it */
+  const int st = sweep && vsph_viscous_passes(vp->form) == 2
+                     ? grad_sweep(vp, &rc.pk, p, cells, out->sweep, ws)
+                     : vsph_viscous_prepare(vp, p, cells, ws);
+  if (st) return st;
   if (ep->corr) {
     if (!vsph_viscous_corrigible(vp->form))
       VSPH_FAIL(VSPH_EINVAL,
@@ -1008,9 +1125,6 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
     rc.w0 = vsph_kernel_w(vp->kernel, vp->dim, 0.0) * rc.wf;
     corr_pass(ep, p, n_fluid, cells, &rc.pk, rc.w0, ws);
   }
-  vsph_viscous_loop_init(&rc.vl, vp,
-                         vsph_viscous_first_pass(vp->form) ? ws : NULL);
-  sweep_fn *sweep = out->sweep ? sweep_choose(&rc) : NULL;
   if (sweep) return run_sweep(&rc, sweep, p, cells, n_fluid, out);
   run_cells(&rc, rhs_choose(&rc), p, cells, n_fluid, out);
   return VSPH_OK;

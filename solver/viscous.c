@@ -196,9 +196,8 @@ VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
                                        const struct vsph_particles *p,
                                        const struct vsph_pair_ranges *rg,
                                        size_t i, struct vsph_viscous_ws *ws,
-                                       const int dim, const int kid,
-                                       const int renorm) {
-  double B[9] = {0}, Mg[9] = {0}, L[9] = {0}, G[9] = {0}, ui[3] = {0};
+                                       const int dim, const int kid) {
+  double B[9] = {0}, Mg[9] = {0}, ui[3] = {0};
   for (int a = 0; a < dim; a++) ui[a] = p->vel[a][i];
   struct vsph_pair_iter it;
   struct vsph_pair_chunk bt;
@@ -237,6 +236,14 @@ VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
     B[e] = Bs[e];
     Mg[e] = Ms[e];
   }
+  vsph_viscous_pvwf_finish(vp, ws, i, B, Mg);
+}
+
+void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
+                              struct vsph_viscous_ws *ws, size_t i,
+                              const double B[9], const double Mg[9]) {
+  const int dim = vp->dim, renorm = vp->form == VSPH_VISCOUS_PVWF;
+  double L[9] = {0}, G[9] = {0};
   ws->fallback[i] =
       renorm ? !vsph_viscous_invert_sym(dim, B, L, vp->det_tol) : 0;
   if (ws->fallback[i] || !renorm)
@@ -386,8 +393,7 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
   if (!ws || ws->cap < p->n || ws->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "%s needs a workspace for %zu particles",
               vsph_viscous_label(vp->form), p->n);
-  const int renorm = vp->form == VSPH_VISCOUS_PVWF,
-            takeda = vp->form == VSPH_VISCOUS_TAKEDA ||
+  const int takeda = vp->form == VSPH_VISCOUS_TAKEDA ||
                      vp->form == VSPH_VISCOUS_TAKEDA0,
             lapf = vp->form >= VSPH_VISCOUS_VISC01;
   struct vsph_pair_kernel pk;
@@ -409,9 +415,9 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
       else if (takeda)
         takeda_pass(vp, &pk, p, &rg, i, ws, vp->dim);
       else if (gauss2)
-        pvwf_pass1(vp, &pk, p, &rg, i, ws, 2, G, renorm);
+        pvwf_pass1(vp, &pk, p, &rg, i, ws, 2, G);
       else
-        pvwf_pass1(vp, &pk, p, &rg, i, ws, vp->dim, pk.dfq_id, renorm);
+        pvwf_pass1(vp, &pk, p, &rg, i, ws, vp->dim, pk.dfq_id);
   }
   size_t nf = 0; /* serial: reproducible */
   for (size_t i = 0; i < p->n; i++) nf += ws->fallback[i];

@@ -164,6 +164,15 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
                          const struct vsph_cells *cells,
                          struct vsph_viscous_ws *ws);
 
+/** @brief PVWF's (model B's) first pass for particle @p i from its sums
+ *  B = sum_j V_j (-F) x (x) x and Mg = sum_j V_j (-F) du (x) x (row-major
+ *  d x d, vsph_pair_pvwf_grad): L_i = B^-1 (the identity for model B or
+ *  where B is singular, marked in ws->fallback), the renormalised grad u,
+ *  D_i, T_i, A_i = T_i L_i and -T_i:D_i into @p ws. */
+void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
+                              struct vsph_viscous_ws *ws, size_t i,
+                              const double B[9], const double Mg[9]);
+
 /** @brief The viscous force density (div V)_i (N/m^d) of every particle.
  *  Uses pos, vel and vol of @p p.
  *  @param cells built with radius >= kappa h (or the direct path).
