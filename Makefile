@@ -90,6 +90,8 @@ $(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
 # README: vsph report --archive); the commit named for runs of these
 # sources is HEAD's.
 archive: deps $(BUILD)/vsph
+	scripts/source-commits $(BUILD)/history
+	VSPH_ARCHIVE_HISTORY=$(BUILD)/history \
 	VSPH_COMMIT="$$(git describe --always --dirty --abbrev=12 2>/dev/null \
 	  | tr -cd '0-9a-z-')" $(BUILD)/vsph report --out reports/out-full \
 	  --archive reports/full

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "../common/params.h"
@@ -37,6 +38,46 @@ static int on_path(const char *name) {
     p += n + (p[n] == ':');
   }
   return 0;
+}
+
+/* The archive's summary.md, judged against the current FULL plan (as
+ * planned for the report folder @p dir), the tree's reports/baseline.csv
+ * (read from the current folder, where make archive runs) and the history
+ * scripts/source-commits left in $VSPH_ARCHIVE_HISTORY. */
+static int summarise(const char *dir, const char *archive, const char *commit) {
+  struct vsph_jobs jobs;
+  memset(&jobs, 0, sizeof jobs);
+  int st = vsph_report_plan_jobs(dir, 1, &jobs);
+  if (st) return st;
+  const char **names = calloc(jobs.n + 1, sizeof *names);
+  const char **keys = calloc(jobs.n + 1, sizeof *keys);
+  if (!names || !keys) {
+    free(names);
+    free(keys);
+    vsph_jobs_plan_free(&jobs);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot list the FULL plan");
+  }
+  for (size_t k = 0; k < jobs.n; k++) {
+    const char *slash = strrchr(jobs.job[k].dir, '/');
+    names[k] = slash ? slash + 1 : jobs.job[k].dir;
+    keys[k] = jobs.job[k].key ? jobs.job[k].key : "";
+  }
+  const char *history = getenv("VSPH_ARCHIVE_HISTORY");
+  struct stat sb;
+  const struct vsph_archive_judge jd = {
+      .history = history && *history ? history : NULL,
+      .baseline = stat("reports/baseline.csv", &sb) == 0
+                      ? "reports/baseline.csv"
+                      : NULL,
+      .commit = commit,
+      .nplan = jobs.n,
+      .plan_name = names,
+      .plan_key = keys};
+  st = vsph_archive_summarise(archive, &jd);
+  free(names);
+  free(keys);
+  vsph_jobs_plan_free(&jobs);
+  return st;
 }
 
 int vsph_cmd_report_main(int argc, char **argv) {
@@ -201,13 +242,15 @@ int vsph_cmd_report_main(int argc, char **argv) {
       return vsph_args_fail(CMD, "VSPH_COMMIT '%.64s' is not a commit id",
                             commit);
     struct vsph_archive_counts n;
-    const int st = vsph_archive_store(dir, archive, commit, stderr, &n);
+    int st = vsph_archive_store(dir, archive, commit, stderr, &n);
     if (st) return vsph_args_status(CMD, st);
     fprintf(stderr,
             "vsph report: archived %zu runs of %s in %s (%zu already there, "
             "%zu left out: unended, damaged or oddly named, each said "
             "above)\n",
             n.stored, dir, archive, n.kept, n.skipped);
+    st = summarise(dir, archive, commit);
+    if (st) return vsph_args_status(CMD, st);
     return vsph_args_finish(CMD, 0);
   }
   if (slurm && !on_path("sbatch"))

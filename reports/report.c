@@ -399,6 +399,22 @@ static int all_cached(const struct vsph_report *R) {
             m, R->jobs.n, j->dir);
 }
 
+int vsph_report_plan_jobs(const char *dir, int full, struct vsph_jobs *jobs) {
+  struct vsph_report *R = calloc(1, sizeof *R);
+  if (!R) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the report");
+  R->dir = R->jobs.dir = dir;
+  R->full = R->jobs.full = full;
+  R->jobs.planned = 1;
+  const unsigned long all = (1ul << NPARTS) - 1;
+  const int st = plan(R, all);
+  if (st)
+    vsph_jobs_plan_free(&R->jobs);
+  else
+    *jobs = R->jobs;
+  free(R);
+  return st;
+}
+
 int vsph_report_write(const struct vsph_report_props *rp) {
   const unsigned long all = (1ul << NPARTS) - 1;
   const unsigned long want = rp->parts ? rp->parts & all : all;

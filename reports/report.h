@@ -5,6 +5,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "../runs/jobs.h"
+
 /** @file report.h
  *  @brief The main job: the report. It runs the analysis (THEORY 2-4) and
  *  the scenes (THEORY 5-6) part by part and writes report.md, a
@@ -75,5 +77,11 @@ const char *vsph_report_scene_name(size_t s);
 /** @brief Write the report, printing one line per part to stderr.
  *  @return VSPH_OK or the first failure (reported). */
 int vsph_report_write(const struct vsph_report_props *rp);
+
+/** @brief The runs the report of fidelity @p full (0 quick, 1 FULL) reads,
+ *  as planned for folder @p dir (each run's key, as its key.txt would
+ *  hold it), into @p jobs; nothing is written or run. Free with
+ *  vsph_jobs_plan_free. @return VSPH_OK or the plan's error. */
+int vsph_report_plan_jobs(const char *dir, int full, struct vsph_jobs *jobs);
 
 #endif /* VSPH_REPORTS_REPORT_H */

@@ -380,3 +380,211 @@ int vsph_archive_store(const char *report, const char *archive,
   vsph_folder_release(&top);
   return st;
 }
+
+/* ------------------------------------------------------------ summary */
+
+/* The lines of baseline.csv text @p text whose first field is @p scene,
+ * as one fingerprint; 0 when there are none. */
+static unsigned long long scene_rows(const char *text, const char *scene) {
+  if (!text) return 0;
+  char *rows = NULL;
+  size_t len = 0;
+  FILE *m = open_memstream(&rows, &len);
+  if (!m) return 0;
+  const size_t sl = strlen(scene);
+  for (const char *l = text; *l;) {
+    const char *e = strchr(l, '\n');
+    const size_t n = e ? (size_t)(e - l) : strlen(l);
+    if (n > sl && !strncmp(l, scene, sl) && l[sl] == ',')
+      fprintf(m, "%.*s\n", (int)n, l);
+    l += n + (e != NULL);
+  }
+  unsigned long long fp = 0;
+  if (fclose(m) == 0 && len > 0) fp = vsph_folder_fingerprint(rows);
+  free(rows);
+  return fp;
+}
+
+/* The commit whose sources hash to @p hash in the history's commits.tsv
+ * into @p out (NUL when not found). */
+static void commit_of(const char *history, const char *hash, char *out,
+                      size_t size) {
+  out[0] = '\0';
+  if (!history) return;
+  char path[4400];
+  snprintf(path, sizeof path, "%s/commits.tsv", history);
+  char *text = vsph_files_slurp(path, NULL);
+  for (const char *l = text; l && *l;) {
+    char h[64], c[64];
+    if (sscanf(l, "%63s %63s", h, c) == 2 && !strcmp(h, hash) &&
+        plain_name(c)) {
+      snprintf(out, size, "%s", c);
+      break;
+    }
+    const char *e = strchr(l, '\n');
+    l = e ? e + 1 : l + strlen(l);
+  }
+  free(text);
+}
+
+/* Whether entry @p name of settings @p settings stands, as the rule says,
+ * into @p why. */
+static void judge_entry(const struct vsph_archive_judge *jd, const char *name,
+                        const char *settings, const char *scene,
+                        const char *hash, const char *commit, const char *now,
+                        char *why, size_t size) {
+  size_t k = 0;
+  while (k < jd->nplan && strcmp(jd->plan_name[k], name)) k++;
+  if (k == jd->nplan) {
+    snprintf(why, size, "no: the current FULL plan has no run of this name");
+    return;
+  }
+  const char *ps = strchr(jd->plan_key[k], '\n');
+  if (!ps || strcmp(ps + 1, settings)) {
+    snprintf(why, size,
+             "no: the current FULL plan runs it with other settings");
+    return;
+  }
+  char *then_text = NULL;
+  if (commit[0] && jd->history) {
+    char path[4400];
+    snprintf(path, sizeof path, "%s/%s.csv", jd->history, commit);
+    then_text = vsph_files_slurp(path, NULL);
+  }
+  const unsigned long long then = then_text ? scene_rows(then_text, scene)
+                                  : !strcmp(hash, vsph_source_hash_id)
+                                      ? scene_rows(now, scene)
+                                      : 0;
+  free(then_text);
+  const unsigned long long rows_now = scene_rows(now, scene);
+  if (!then || !rows_now)
+    snprintf(why, size,
+             "unjudged: %s's rows of reports/baseline.csv at %s are not "
+             "known (make archive reads them from git)",
+             scene, commit[0] ? commit : "its commit");
+  else if (then != rows_now)
+    snprintf(why, size, "no: %s's rows of reports/baseline.csv changed since",
+             scene);
+  else
+    snprintf(why, size, "yes");
+}
+
+int vsph_archive_summarise(const char *archive,
+                           const struct vsph_archive_judge *jd) {
+  char runs[4200];
+  snprintf(runs, sizeof runs, "%s/runs", archive);
+  int st = judge(archive, runs);
+  if (st) return st;
+  struct vsph_folder top;
+  if ((st = vsph_folder_claim(&top, archive, &vsph_folder_archive))) return st;
+  size_t n = 0;
+  char **names = subdirs(runs, &n);
+  char *now = jd->baseline ? vsph_files_slurp(jd->baseline, NULL) : NULL;
+  char *text = NULL;
+  size_t len = 0;
+  FILE *m = names ? open_memstream(&text, &len) : NULL;
+  if (!m) {
+    free_list(names, n);
+    free(now);
+    vsph_folder_release(&top);
+    VSPH_FAIL(VSPH_EIO, "cannot list or summarise %s", runs);
+  }
+  fprintf(m,
+          "# The FULL run archive\n\n"
+          "Written by `vsph report --archive` (vsph %s, source hash %s, "
+          "commit %s). Each entry `runs/NAME` keeps what the report's parts "
+          "read of one run of `vsph report --full`, sealed under the key of "
+          "the run it keeps; `index.tsv` lists them.\n\n"
+          "## When an archived run still stands\n\n"
+          "An archived run stands for the current code when (1) the current "
+          "FULL plan asks for a run of its name with its settings, and (2) "
+          "its scene's rows of `reports/baseline.csv` are the same now as at "
+          "the commit that made it. `tests/check_baseline.c` holds those "
+          "rows (the quick ladder's coarsest runs of each scene and "
+          "formulation) to the code at 10^-6, so a change to a scene's "
+          "numerics changes them, and the runs it made before no longer "
+          "stand. A run whose commit or rows then are not known is "
+          "unjudged.\n\n",
+          VSPH_VERSION, vsph_source_hash_id,
+          jd->commit ? jd->commit : "unknown");
+  size_t stands = 0, total = 0;
+  double wall = 0.0;
+  fprintf(m,
+          "| run | particles | t reached / t_end (s) | status | steps | wall "
+          "(s) | source hash, commit | stands |\n"
+          "|---|---:|---|---|---:|---:|---|---|\n");
+  for (size_t k = 0; k < n; k++) {
+    char dir[4400];
+    snprintf(dir, sizeof dir, "%s/%s", runs, names[k]);
+    const struct vsph_folder_kind *kind = entry_kind(dir);
+    char *key = NULL;
+    const char *files;
+    if (!kind || key_of(dir, &key, &files) ||
+        vsph_folder_verify(dir, kind, key, NULL, NULL, 0) != 1) {
+      free(key);
+      continue;
+    }
+    char version[32] = "?", hash[64] = "?";
+    sscanf(key, "vsph %31s %63s", version, hash);
+    const char *settings = strchr(key, '\n');
+    char path[4500];
+    snprintf(path, sizeof path, "%s/run.json", dir);
+    cJSON *o = vsph_json_read(path);
+    const cJSON *sc = o ? cJSON_GetObjectItemCaseSensitive(o, "scene") : NULL;
+    const cJSON *s = o ? cJSON_GetObjectItemCaseSensitive(o, "status") : NULL;
+    const cJSON *c = o ? cJSON_GetObjectItemCaseSensitive(o, "commit") : NULL;
+    const cJSON *r =
+        o ? cJSON_GetObjectItemCaseSensitive(o, "unstable_reason") : NULL;
+    char commit[64] = "";
+    if (cJSON_IsString(c) && plain_name(c->valuestring) &&
+        strcmp(c->valuestring, "unknown") && strlen(c->valuestring) < 64)
+      snprintf(commit, sizeof commit, "%s", c->valuestring);
+    else if (jd->commit && !strcmp(hash, vsph_source_hash_id))
+      snprintf(commit, sizeof commit, "%s", jd->commit);
+    else
+      commit_of(jd->history, hash, commit, sizeof commit);
+    const char *scene = cJSON_IsString(sc) && plain_name(sc->valuestring)
+                            ? sc->valuestring
+                            : "?";
+    char why[400];
+    judge_entry(jd, names[k], settings ? settings + 1 : "", scene, hash, commit,
+                now, why, sizeof why);
+    const char *status =
+        cJSON_IsString(s) && plain_name(s->valuestring) ? s->valuestring : "?";
+    fprintf(
+        m,
+        "| %s | %.0f | %.4g / %.4g | %s%s%s%s | %.0f | %.0f | %s, %s | %s |\n",
+        names[k], vsph_json_get_number(o, "n_particles", NAN),
+        vsph_json_get_number(o, "t", NAN),
+        vsph_json_get_number(o, "t_end", NAN), status,
+        cJSON_IsString(r) ? " (" : "",
+        cJSON_IsString(r) && !strchr(r->valuestring, '|') ? r->valuestring : "",
+        cJSON_IsString(r) ? ")" : "", vsph_json_get_number(o, "steps", NAN),
+        vsph_json_get_number(o, "wall_s", NAN), hash,
+        commit[0] ? commit : "unknown", why);
+    stands += !strcmp(why, "yes");
+    total++;
+    wall += vsph_json_get_number(o, "wall_s", 0.0);
+    cJSON_Delete(o);
+    free(key);
+  }
+  fprintf(m,
+          "\n%zu of the %zu runs of the current FULL plan are archived "
+          "(%.0f s of runs); %zu of them stand. The claims table and the "
+          "convergence tables at the paper's resolutions are written when "
+          "the archive holds every run the FULL report reads; until then "
+          "each claim's verdict stays at the quick report's resolutions, "
+          "as the report says.\n",
+          total, jd->nplan, wall, stands);
+  free_list(names, n);
+  free(now);
+  if (fclose(m) != 0) {
+    free(text);
+    vsph_folder_release(&top);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot build %s/summary.md", archive);
+  }
+  st = vsph_files_write(archive, "summary.md", text);
+  free(text);
+  vsph_folder_release(&top);
+  return st;
+}

@@ -43,4 +43,29 @@ int vsph_archive_store(const char *report, const char *archive,
                        const char *commit, FILE *progress,
                        struct vsph_archive_counts *counts);
 
+/** What vsph_archive_summarise judges the entries against. */
+struct vsph_archive_judge {
+  const char *history;  /*!< scripts/source-commits' folder (commits.tsv:
+                             source hash and commit of recent commits;
+                             COMMIT.csv: reports/baseline.csv then), or NULL */
+  const char *baseline; /*!< the current reports/baseline.csv, or NULL */
+  const char *commit;   /*!< this build's commit (make archive), or NULL */
+  size_t nplan;         /*!< runs of the current FULL plan ... */
+  const char *const *plan_name; /*!< ... each run's folder name ... */
+  const char *const *plan_key;  /*!< ... and its key (key.txt's first part) */
+};
+
+/** @brief Write @p archive's summary.md: each entry (scene, formulation,
+ *  resolution, particles, time reached, status, steps, wall time, what
+ *  made it) and whether it still stands for the current code, by the
+ *  rule: (1) the current FULL plan asks for a run of its name with its
+ *  settings, and (2) its scene's rows of reports/baseline.csv are the same
+ *  now as at the commit that made it (the rows tests/check_baseline.c
+ *  holds to the code at 1e-6: a change to a scene's numerics changes
+ *  them). An entry whose commit or rows then are not known is said to be
+ *  unjudged, with why. @return VSPH_OK, VSPH_EINVAL (not an archive),
+ *  VSPH_EIO, VSPH_ENOMEM. */
+int vsph_archive_summarise(const char *archive,
+                           const struct vsph_archive_judge *jd);
+
 #endif /* VSPH_RUNS_ARCHIVE_H */

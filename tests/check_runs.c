@@ -517,6 +517,115 @@ START_TEST(test_folder_manifest_cache) {
 }
 END_TEST
 
+/* Write text to dir/name (a test's own file). */
+static void put_text(const char *dir, const char *name, const char *text) {
+  char path[900];
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  FILE *f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fputs(text, f);
+  ck_assert_int_eq(fclose(f), 0);
+}
+
+/* summary.md's row of entry @p name holds @p verdict (its last cell). */
+static void assert_stands(const char *ar, const char *name,
+                          const char *verdict) {
+  char path[700], text[8192], row[64];
+  snprintf(path, sizeof path, "%s/summary.md", ar);
+  vsph_test_slurp(path, text, sizeof text);
+  snprintf(row, sizeof row, "\n| %s |", name);
+  const char *r = strstr(text, row);
+  ck_assert_msg(r != NULL, "no row of %s in\n%s", name, text);
+  const char *e = strchr(r + 1, '\n');
+  char line[1024];
+  snprintf(line, sizeof line, "%.*s", (int)(e ? e - r - 1 : 1000), r + 1);
+  ck_assert_msg(strstr(line, verdict), "%s: want '%s' in\n%s", name, verdict,
+                line);
+}
+
+/* summary.md's rule, case by case: an entry made by this build's sources
+ * stands when the plan asks for it with its settings; one the plan does
+ * not name, or names with other settings, does not; an entry of other
+ * sources (a sealed folder under another source hash) is unjudged
+ * without the history, stands when its commit's baseline rows of its
+ * scene equal today's, and does not when they differ (another scene's
+ * rows changing is not its concern). */
+START_TEST(test_archive_summary) {
+  char dir[] = "/tmp/vsph_archsumXXXXXX", rep[300], a[300], ar[300], z[400],
+       hist[300], base[300], key[4096];
+  vsph_test_scratch(dir);
+  snprintf(rep, sizeof rep, "%s/rep", dir);
+  snprintf(a, sizeof a, "%s/rep/runs/a", dir);
+  snprintf(ar, sizeof ar, "%s/ar", dir);
+  snprintf(hist, sizeof hist, "%s/hist", dir);
+  static const char *const set[] = {"Solver:res=8", "Solver:t_end=0.02", NULL};
+  struct vsph_rundir_result r;
+  ck_assert_int_eq(run("poiseuille", set, a, 0, &r), 0);
+  struct vsph_archive_counts n;
+  ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 1);
+  /* z: an entry sealed under another source hash, the same settings */
+  char path[700];
+  snprintf(path, sizeof path, "%s/key.txt", a);
+  vsph_test_slurp(path, key, sizeof key);
+  *strstr(key, "files:\n") = '\0';
+  const char *settings = strchr(key, '\n') + 1;
+  char zkey[4200];
+  snprintf(zkey, sizeof zkey, "vsph %s 0123456789abcdef\n%s", VSPH_VERSION,
+           settings);
+  snprintf(z, sizeof z, "%s/runs/z", ar);
+  struct vsph_folder fz;
+  ck_assert_int_eq(vsph_folder_claim(&fz, z, &vsph_folder_scene_run), 0);
+  ck_assert_int_eq(vsph_files_write(z, "run.json",
+                                    "{\"scene\": \"poiseuille\", \"status\": "
+                                    "\"ok\", \"t\": 0.02, \"t_end\": 0.02}\n"),
+                   0);
+  ck_assert_int_eq(vsph_folder_seal(&fz, zkey, NULL), 0);
+  vsph_folder_release(&fz);
+  /* today's baseline: two scenes' rows */
+  ck_assert_int_eq(mkdir(hist, 0755), 0);
+  snprintf(base, sizeof base, "%s/baseline.csv", dir);
+  static const char *const now =
+      "scene,visc,res\npoiseuille,mgf,16\npoiseuille,pvwf,16\ncouette,mgf,"
+      "16\n";
+  put_text(dir, "baseline.csv", now);
+  const char *names[] = {"a", "z"}, *keys[] = {key, key};
+  struct vsph_archive_judge jd = {
+      .baseline = base, .nplan = 2, .plan_name = names, .plan_key = keys};
+  ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
+  assert_stands(ar, "a", "| yes |");
+  assert_stands(ar, "z", "unjudged");
+  /* the history: z's commit, its rows then equal today's (couette's
+   * differ: not z's scene) */
+  put_text(hist, "commits.tsv",
+           "fedcba9876543210\tc0de\n"
+           "0123456789abcdef\tc0ffee\n");
+  put_text(hist, "c0ffee.csv",
+           "scene,visc,res\npoiseuille,mgf,16\npoiseuille,pvwf,16\ncouette,"
+           "mgf,8\n");
+  jd.history = hist;
+  ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
+  assert_stands(ar, "z", "| yes |");
+  assert_stands(ar, "z", "c0ffee");
+  /* poiseuille's rows changed since c0ffee: z no longer stands */
+  put_text(hist, "c0ffee.csv",
+           "scene,visc,res\npoiseuille,mgf,8\npoiseuille,pvwf,16\n");
+  ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
+  assert_stands(ar, "z", "no: poiseuille's rows");
+  assert_stands(ar, "a", "| yes |");
+  /* the plan: a under other settings, z not at all */
+  char other[4200];
+  snprintf(other, sizeof other, "vsph %s %s\nscene poiseuille\nSolver:res=9\n",
+           VSPH_VERSION, vsph_source_hash_id);
+  keys[0] = other;
+  jd.nplan = 1;
+  ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
+  assert_stands(ar, "a", "other settings");
+  assert_stands(ar, "z", "no run of this name");
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 /* The run archive (runs/archive): of a report's runs/, each sealed run is
  * stored as a folder of its kind sealed under the run's own key, with its
  * tables byte for byte and without its snapshots; a run whose seal broke
@@ -1044,6 +1153,7 @@ Suite *vsph_runs_suite(void) {
   tcase_add_test(tf, test_folder_seal);
   tcase_add_test(tf, test_folder_manifest_cache);
   tcase_add_test(tf, test_archive_store);
+  tcase_add_test(tf, test_archive_summary);
   tcase_add_test(tf, test_slurm_signal);
   tcase_add_test(tf, test_report_seal);
   tcase_add_test(tf, test_refusal_leaves_paths);
