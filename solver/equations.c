@@ -659,7 +659,8 @@ static int sweep_plan(struct vsph_equations_sweep *sw,
   }
   sw->c0[nblk] = cells->ncells;
   sw->nblk = nblk;
-  size_t total = 0;
+  /* each block's reach: the cells' ranges, block by block in parallel */
+#pragma omp parallel for schedule(dynamic, 4)
   for (b = 0; b < nblk; b++) {
     const size_t first = sw->c0[b], last = sw->c0[b + 1];
     size_t lo = cells->start[first], hi = lo;
@@ -672,8 +673,11 @@ static int sweep_plan(struct vsph_equations_sweep *sw,
     }
     sw->lo[b] = lo;
     sw->hi[b] = hi;
+  }
+  size_t total = 0;
+  for (b = 0; b < nblk; b++) {
     sw->off[b] = total;
-    total += (hi - lo) * (size_t)nf;
+    total += (sw->hi[b] - sw->lo[b]) * (size_t)nf;
   }
   (void)n;
   if (total > sw->cap_buf) {
