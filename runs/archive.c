@@ -405,6 +405,29 @@ static unsigned long long scene_rows(const char *text, const char *scene) {
   return fp;
 }
 
+/* Whether @p s can stand for a commit, scene or status in summary.md:
+ * 1-63 letters, digits, '.', '_' or '-' (nothing a table cell breaks
+ * on). */
+static int id_name(const char *s) {
+  const size_t n = strlen(s);
+  if (n < 1 || n > 63) return 0;
+  for (; *s; s++)
+    if (!strchr("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                "0123456789._-",
+                *s))
+      return 0;
+  return 1;
+}
+
+/* @p s as text of a Markdown table cell into @p m: '|' escaped, line
+ * breaks and other control characters as blanks. */
+static void md_cell(FILE *m, const char *s) {
+  for (; *s; s++) {
+    if (*s == '|') fputc('\\', m);
+    fputc((unsigned char)*s < 0x20 ? ' ' : *s, m);
+  }
+}
+
 /* The commit whose sources hash to @p hash in the history's commits.tsv
  * into @p out (NUL when not found). */
 static void commit_of(const char *history, const char *hash, char *out,
@@ -416,8 +439,7 @@ static void commit_of(const char *history, const char *hash, char *out,
   char *text = vsph_files_slurp(path, NULL);
   for (const char *l = text; l && *l;) {
     char h[64], c[64];
-    if (sscanf(l, "%63s %63s", h, c) == 2 && !strcmp(h, hash) &&
-        plain_name(c)) {
+    if (sscanf(l, "%63s %63s", h, c) == 2 && !strcmp(h, hash) && id_name(c)) {
       snprintf(out, size, "%s", c);
       break;
     }
@@ -536,32 +558,35 @@ int vsph_archive_summarise(const char *archive,
     const cJSON *r =
         o ? cJSON_GetObjectItemCaseSensitive(o, "unstable_reason") : NULL;
     char commit[64] = "";
-    if (cJSON_IsString(c) && plain_name(c->valuestring) &&
-        strcmp(c->valuestring, "unknown") && strlen(c->valuestring) < 64)
+    if (cJSON_IsString(c) && id_name(c->valuestring) &&
+        strcmp(c->valuestring, "unknown"))
       snprintf(commit, sizeof commit, "%s", c->valuestring);
     else if (jd->commit && !strcmp(hash, vsph_source_hash_id))
       snprintf(commit, sizeof commit, "%s", jd->commit);
     else
       commit_of(jd->history, hash, commit, sizeof commit);
-    const char *scene = cJSON_IsString(sc) && plain_name(sc->valuestring)
-                            ? sc->valuestring
-                            : "?";
+    const char *scene =
+        cJSON_IsString(sc) && id_name(sc->valuestring) ? sc->valuestring : "?";
     char why[400];
     judge_entry(jd, names[k], settings ? settings + 1 : "", scene, hash, commit,
                 now, why, sizeof why);
     const char *status =
-        cJSON_IsString(s) && plain_name(s->valuestring) ? s->valuestring : "?";
-    fprintf(
-        m,
-        "| %s | %.0f | %.4g / %.4g | %s%s%s%s | %.0f | %.0f | %s, %s | %s |\n",
-        names[k], vsph_json_get_number(o, "n_particles", NAN),
-        vsph_json_get_number(o, "t", NAN),
-        vsph_json_get_number(o, "t_end", NAN), status,
-        cJSON_IsString(r) ? " (" : "",
-        cJSON_IsString(r) && !strchr(r->valuestring, '|') ? r->valuestring : "",
-        cJSON_IsString(r) ? ")" : "", vsph_json_get_number(o, "steps", NAN),
-        vsph_json_get_number(o, "wall_s", NAN), hash,
-        commit[0] ? commit : "unknown", why);
+        cJSON_IsString(s) && id_name(s->valuestring) ? s->valuestring : "?";
+    fputs("| ", m);
+    md_cell(m, names[k]);
+    fprintf(m, " | %.0f | %.4g / %.4g | %s",
+            vsph_json_get_number(o, "n_particles", NAN),
+            vsph_json_get_number(o, "t", NAN),
+            vsph_json_get_number(o, "t_end", NAN), status);
+    if (cJSON_IsString(r)) {
+      fputs(" (", m);
+      md_cell(m, r->valuestring);
+      fputs(")", m);
+    }
+    fprintf(m, " | %.0f | %.0f | ", vsph_json_get_number(o, "steps", NAN),
+            vsph_json_get_number(o, "wall_s", NAN));
+    md_cell(m, hash);
+    fprintf(m, ", %s | %s |\n", commit[0] ? commit : "unknown", why);
     stands += !strcmp(why, "yes");
     total++;
     wall += vsph_json_get_number(o, "wall_s", 0.0);

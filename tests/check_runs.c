@@ -576,10 +576,13 @@ START_TEST(test_archive_summary) {
   snprintf(z, sizeof z, "%s/runs/z", ar);
   struct vsph_folder fz;
   ck_assert_int_eq(vsph_folder_claim(&fz, z, &vsph_folder_scene_run), 0);
-  ck_assert_int_eq(vsph_files_write(z, "run.json",
-                                    "{\"scene\": \"poiseuille\", \"status\": "
-                                    "\"ok\", \"t\": 0.02, \"t_end\": 0.02}\n"),
-                   0);
+  /* its reason holds what would break a table row: escaped, blanked */
+  ck_assert_int_eq(
+      vsph_files_write(z, "run.json",
+                       "{\"scene\": \"poiseuille\", \"status\": \"ok\", "
+                       "\"t\": 0.02, \"t_end\": 0.02, \"unstable_reason\": "
+                       "\"a|b\\nc\", \"commit\": \"x|y\"}\n"),
+      0);
   ck_assert_int_eq(vsph_folder_seal(&fz, zkey, NULL), 0);
   vsph_folder_release(&fz);
   /* today's baseline: two scenes' rows */
@@ -595,6 +598,7 @@ START_TEST(test_archive_summary) {
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
   assert_stands(ar, "a", "| yes |");
   assert_stands(ar, "z", "unjudged");
+  assert_stands(ar, "z", "(a\\|b c) |");
   /* the history: z's commit, its rows then equal today's (couette's
    * differ: not z's scene) */
   put_text(hist, "commits.tsv",
