@@ -333,18 +333,23 @@ VSPH_CONSTS_SPECIALISE size_t contact_one(
       vsph_pair_at(&b, k, dim, &pr);
       const size_t j = pr.j;
       const int mj = mat ? mat[j] : 0;
-      double uj[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dux = 0.0;
+      double uj[3] = {0, 0, 0}, dux = 0.0;
+      struct vsph_pair_vec du = {{0, 0, 0}};
       for (int a = 0; a < dim; a++) {
         uj[a] = vel[a][j];
-        du[a] = uj[a] - ui[a];
-        dux += du[a] * pr.x[a];
+        du.v[a] = uj[a] - ui[a];
+        dux += du.v[a] * pr.x[a];
       }
       ms2 = pr.s2 < ms2 ? pr.s2 : ms2;
       struct vsph_pair_contact_share sh;
       vsph_pair_contact(&pr, dim, sqrt(pr.s2), pi, pp[j], Zi,
                         rho[j] * rc->cmat[mj], ui, uj, &sh);
       double g[3] = {0, 0, 0};
-      if (visc) vsph_pair_contact_visc(&pr, dim, rc->etap[mi][mj], du, dux, g);
+      if (visc) {
+        const struct vsph_pair_visc gv =
+            vsph_pair_contact_visc(&pr, dim, rc->etap[mi][mj], du, dux);
+        for (int a = 0; a < dim; a++) g[a] = gv.f[a];
+      }
       cont += sh.cont;
       diff += sh.diff;
       ap0 += sh.f[0] + g[0];

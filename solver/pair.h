@@ -478,18 +478,12 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_contact(
  *  (2/rho_i) V_j |W'| tau^R with tau^R = eta' (du + (du.e) e/3)/s, i.e.
  *  -2 eta' V_j F (du + (du.x) x/(3 s^2)): Espanol & Revenga's pair with
  *  a = -2 eta', b = -2 eta'/3, through vsph_pair_er (the one copy).
- *  @param etap eta_eff - zeta eta_eff^num (Pa s). @return the pair's
- *  dissipation density. */
-VSPH_CONSTS_SPECIALISE double vsph_pair_contact_visc(const struct vsph_pair *pr,
-                                                     int dim, double etap,
-                                                     const double du[3],
-                                                     double dux, double g[3]) {
-  struct vsph_pair_vec d = {
-      {du[0], dim > 1 ? du[1] : 0.0, dim > 2 ? du[2] : 0.0}};
-  const struct vsph_pair_visc r =
-      vsph_pair_er(pr, dim, -2.0 * etap, -2.0 / 3.0 * etap, d, dux);
-  for (int k = 0; k < dim; k++) g[k] = r.f[k];
-  return r.dens;
+ *  @param etap eta_eff - zeta eta_eff^num (Pa s); @param du u_j - u_i.
+ *  @return the pair's share and its dissipation density. */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_contact_visc(
+    const struct vsph_pair *pr, int dim, double etap,
+    const struct vsph_pair_vec du, double dux) {
+  return vsph_pair_er(pr, dim, -2.0 * etap, -2.0 / 3.0 * etap, du, dux);
 }
 
 /** Per-particle sums of Takeda-type direct second derivatives (Basa et
