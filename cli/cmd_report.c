@@ -64,6 +64,11 @@ static int summarise(const char *dir, const char *archive, const char *commit) {
   }
   const char *history = getenv("VSPH_ARCHIVE_HISTORY");
   struct stat sb;
+  if (stat("reports/baseline.csv", &sb) != 0)
+    fprintf(stderr,
+            "vsph report: no reports/baseline.csv here: summary.md leaves the "
+            "archive's entries unjudged (run it in the source tree's top "
+            "folder, as make archive does)\n");
   const struct vsph_archive_judge jd = {
       .history = history && *history ? history : NULL,
       .baseline = stat("reports/baseline.csv", &sb) == 0
@@ -241,6 +246,25 @@ int vsph_cmd_report_main(int argc, char **argv) {
                                          "ABCDEFGHIJKLMNOPQRSTUVWXYZ._-")))
       return vsph_args_fail(CMD, "VSPH_COMMIT '%.64s' is not a commit id",
                             commit);
+    /* what the summary reads, judged before anything is written */
+    const char *history = getenv("VSPH_ARCHIVE_HISTORY");
+    struct stat hs;
+    char tsv[600];
+    snprintf(tsv, sizeof tsv, "%s/commits.tsv", history ? history : "");
+    if (history && *history &&
+        (strlen(history) > 400 || stat(history, &hs) != 0 ||
+         !S_ISDIR(hs.st_mode) || stat(tsv, &hs) != 0 || !S_ISREG(hs.st_mode) ||
+         hs.st_size > VSPH_ARCHIVE_READ_MAX))
+      return vsph_args_fail(CMD,
+                            "VSPH_ARCHIVE_HISTORY '%.400s' is not a folder "
+                            "scripts/source-commits made (a commits.tsv of at "
+                            "most 16 MiB in it)",
+                            history);
+    if (stat("reports/baseline.csv", &hs) == 0 &&
+        (!S_ISREG(hs.st_mode) || hs.st_size > VSPH_ARCHIVE_READ_MAX))
+      return vsph_args_fail(CMD,
+                            "reports/baseline.csv is not a regular file of "
+                            "at most 16 MiB");
     struct vsph_archive_counts n;
     int st = vsph_archive_store(dir, archive, commit, stderr, &n);
     if (st) return vsph_args_status(CMD, st);

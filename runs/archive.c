@@ -428,33 +428,59 @@ static void md_cell(FILE *m, const char *s) {
   }
 }
 
-/* The commit whose sources hash to @p hash in the history's commits.tsv
- * into @p out (NUL when not found). */
-static void commit_of(const char *history, const char *hash, char *out,
+/* The text of regular file @p path when it is one of at most
+ * VSPH_ARCHIVE_READ_MAX bytes (links followed), else NULL: the history's
+ * and the baseline's files are small, and an odd one (a FIFO, a device,
+ * a huge file) is not waited for or read whole. */
+static char *read_small(const char *path) {
+  struct stat sb;
+  if (stat(path, &sb) != 0 || !S_ISREG(sb.st_mode) ||
+      sb.st_size > VSPH_ARCHIVE_READ_MAX)
+    return NULL;
+  return vsph_files_slurp(path, NULL);
+}
+
+/* The commit whose sources hash to @p hash in commits.tsv text @p tsv
+ * into @p out (NUL when not found): lines of exactly two tab-separated
+ * fields, the second a commit id (id_name); any other line is skipped. */
+static void commit_of(const char *tsv, const char *hash, char *out,
                       size_t size) {
   out[0] = '\0';
-  if (!history) return;
-  char path[4400];
-  snprintf(path, sizeof path, "%s/commits.tsv", history);
-  char *text = vsph_files_slurp(path, NULL);
-  for (const char *l = text; l && *l;) {
-    char h[64], c[64];
-    if (sscanf(l, "%63s %63s", h, c) == 2 && !strcmp(h, hash) && id_name(c)) {
-      snprintf(out, size, "%s", c);
-      break;
+  const size_t hl = strlen(hash);
+  for (const char *l = tsv; l && *l;) {
+    const size_t n = strcspn(l, "\n");
+    const char *tab = memchr(l, '\t', n);
+    if (tab && (size_t)(tab - l) == hl && !strncmp(l, hash, hl)) {
+      const size_t cl = n - (size_t)(tab - l) - 1;
+      char c[64];
+      if (cl < sizeof c && !memchr(tab + 1, '\t', cl)) {
+        memcpy(c, tab + 1, cl);
+        c[cl] = '\0';
+        if (id_name(c)) {
+          snprintf(out, size, "%s", c);
+          return;
+        }
+      }
     }
-    const char *e = strchr(l, '\n');
-    l = e ? e + 1 : l + strlen(l);
+    l += n + (l[n] == '\n');
   }
-  free(text);
+}
+
+/* The history's baseline.csv of commit @p commit, or NULL. */
+static char *baseline_then(const char *history, const char *commit) {
+  if (!history || !commit[0]) return NULL;
+  char path[4400];
+  snprintf(path, sizeof path, "%s/%s.csv", history, commit);
+  return read_small(path);
 }
 
 /* Whether entry @p name of settings @p settings stands, as the rule says,
  * into @p why. */
 static void judge_entry(const struct vsph_archive_judge *jd, const char *name,
                         const char *settings, const char *scene,
-                        const char *hash, const char *commit, const char *now,
-                        char *why, size_t size) {
+                        const char *hash, const char *commit,
+                        const char *then_text, const char *now, char *why,
+                        size_t size) {
   size_t k = 0;
   while (k < jd->nplan && strcmp(jd->plan_name[k], name)) k++;
   if (k == jd->nplan) {
@@ -467,19 +493,16 @@ static void judge_entry(const struct vsph_archive_judge *jd, const char *name,
              "no: the current FULL plan runs it with other settings");
     return;
   }
-  char *then_text = NULL;
-  if (commit[0] && jd->history) {
-    char path[4400];
-    snprintf(path, sizeof path, "%s/%s.csv", jd->history, commit);
-    then_text = vsph_files_slurp(path, NULL);
-  }
   const unsigned long long then = then_text ? scene_rows(then_text, scene)
                                   : !strcmp(hash, vsph_source_hash_id)
                                       ? scene_rows(now, scene)
                                       : 0;
-  free(then_text);
   const unsigned long long rows_now = scene_rows(now, scene);
-  if (!then || !rows_now)
+  if (!rows_now)
+    snprintf(why, size,
+             "unjudged: the current reports/baseline.csv has no rows of %s",
+             scene);
+  else if (!then)
     snprintf(why, size,
              "unjudged: %s's rows of reports/baseline.csv at %s are not "
              "known (make archive reads them from git)",
@@ -499,15 +522,26 @@ int vsph_archive_summarise(const char *archive,
   if (st) return st;
   struct vsph_folder top;
   if ((st = vsph_folder_claim(&top, archive, &vsph_folder_archive))) return st;
+  if ((st = judge(archive, runs))) { /* again, under the lock */
+    vsph_folder_release(&top);
+    return st;
+  }
   size_t n = 0;
   char **names = subdirs(runs, &n);
-  char *now = jd->baseline ? vsph_files_slurp(jd->baseline, NULL) : NULL;
+  char *now = jd->baseline ? read_small(jd->baseline) : NULL;
+  char *tsv = NULL;
+  if (jd->history) {
+    char path[4400];
+    snprintf(path, sizeof path, "%s/commits.tsv", jd->history);
+    tsv = read_small(path);
+  }
   char *text = NULL;
   size_t len = 0;
   FILE *m = names ? open_memstream(&text, &len) : NULL;
   if (!m) {
     free_list(names, n);
     free(now);
+    free(tsv);
     vsph_folder_release(&top);
     VSPH_FAIL(VSPH_EIO, "cannot list or summarise %s", runs);
   }
@@ -529,7 +563,7 @@ int vsph_archive_summarise(const char *archive,
           "unjudged.\n\n",
           VSPH_VERSION, vsph_source_hash_id,
           jd->commit ? jd->commit : "unknown");
-  size_t stands = 0, total = 0;
+  size_t stands = 0, total = 0, others = 0;
   double wall = 0.0;
   fprintf(m,
           "| run | particles | t reached / t_end (s) | status | steps | wall "
@@ -557,19 +591,30 @@ int vsph_archive_summarise(const char *archive,
     const cJSON *c = o ? cJSON_GetObjectItemCaseSensitive(o, "commit") : NULL;
     const cJSON *r =
         o ? cJSON_GetObjectItemCaseSensitive(o, "unstable_reason") : NULL;
+    /* the commit: run.json's (a -dirty one has no baseline of its own in
+     * the history), the caller's for this build's sources, or the one the
+     * history names for its source hash */
     char commit[64] = "";
     if (cJSON_IsString(c) && id_name(c->valuestring) &&
         strcmp(c->valuestring, "unknown"))
       snprintf(commit, sizeof commit, "%s", c->valuestring);
     else if (jd->commit && !strcmp(hash, vsph_source_hash_id))
       snprintf(commit, sizeof commit, "%s", jd->commit);
-    else
-      commit_of(jd->history, hash, commit, sizeof commit);
+    char *then = baseline_then(jd->history, commit);
+    if (!then) {
+      char h[64];
+      commit_of(tsv, hash, h, sizeof h);
+      if (h[0]) {
+        snprintf(commit, sizeof commit, "%s", h);
+        then = baseline_then(jd->history, commit);
+      }
+    }
     const char *scene =
         cJSON_IsString(sc) && id_name(sc->valuestring) ? sc->valuestring : "?";
     char why[400];
     judge_entry(jd, names[k], settings ? settings + 1 : "", scene, hash, commit,
-                now, why, sizeof why);
+                then, now, why, sizeof why);
+    free(then);
     const char *status =
         cJSON_IsString(s) && id_name(s->valuestring) ? s->valuestring : "?";
     fputs("| ", m);
@@ -588,21 +633,28 @@ int vsph_archive_summarise(const char *archive,
     md_cell(m, hash);
     fprintf(m, ", %s | %s |\n", commit[0] ? commit : "unknown", why);
     stands += !strcmp(why, "yes");
-    total++;
-    wall += vsph_json_get_number(o, "wall_s", 0.0);
+    size_t q = 0; /* the plan's runs only in the tally */
+    while (q < jd->nplan && strcmp(jd->plan_name[q], names[k])) q++;
+    if (q < jd->nplan) {
+      total++;
+      wall += vsph_json_get_number(o, "wall_s", 0.0);
+    }
+    others += q == jd->nplan;
     cJSON_Delete(o);
     free(key);
   }
   fprintf(m,
           "\n%zu of the %zu runs of the current FULL plan are archived "
-          "(%.0f s of runs); %zu of them stand. The claims table and the "
+          "(%.0f s of runs)%s; %zu entries stand. The claims table and the "
           "convergence tables at the paper's resolutions are written when "
           "the archive holds every run the FULL report reads; until then "
           "each claim's verdict stays at the quick report's resolutions, "
           "as the report says.\n",
-          total, jd->nplan, wall, stands);
+          total, jd->nplan, wall,
+          others ? ", beside entries the plan no longer names" : "", stands);
   free_list(names, n);
   free(now);
+  free(tsv);
   if (fclose(m) != 0) {
     free(text);
     vsph_folder_release(&top);

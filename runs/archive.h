@@ -43,6 +43,10 @@ int vsph_archive_store(const char *report, const char *archive,
                        const char *commit, FILE *progress,
                        struct vsph_archive_counts *counts);
 
+/** The largest history or baseline file vsph_archive_summarise reads
+ *  (bytes): 80 commits' baseline.csv is a few kB each. */
+#define VSPH_ARCHIVE_READ_MAX (16L << 20)
+
 /** What vsph_archive_summarise judges the entries against. */
 struct vsph_archive_judge {
   const char *history;  /*!< scripts/source-commits' folder (commits.tsv:

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -161,6 +162,36 @@ START_TEST(test_bad_input) {
   ck_assert_msg(o->out[0] == '\0', "'%s' wrote to stdout", bad_inputs[_i]);
   ck_assert_msg(strstr(o->err, "vsph") == o->err, "'%s': %s", bad_inputs[_i],
                 o->err);
+}
+END_TEST
+
+/* vsph report --archive's inputs beside the report folder: a history
+ * that is not a folder holding commits.tsv, and a reports/baseline.csv
+ * that is not a regular file, are refused with one line and exit 2,
+ * before the archive is made. */
+START_TEST(test_archive_inputs) {
+  static const char *const env[] = {
+      "VSPH_ARCHIVE_HISTORY=/etc/passwd", "VSPH_ARCHIVE_HISTORY=/nonexistent",
+      "VSPH_ARCHIVE_HISTORY=r", /* a folder without commits.tsv */
+      "mkdir -p reports/baseline.csv &&"};
+  char dir[] = "/tmp/vsph_arinXXXXXX";
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  char script[6000], path[600], bin[2048], cwd[1024];
+  const char *vb = getenv("VSPH_BIN");
+  ck_assert_ptr_nonnull(vb);
+  ck_assert_ptr_nonnull(getcwd(cwd, sizeof cwd));
+  snprintf(bin, sizeof bin, "%s%s%.1000s", vb[0] == '/' ? "" : cwd,
+           vb[0] == '/' ? "" : "/", vb);
+  snprintf(script, sizeof script,
+           "cd %s && mkdir -p r/runs && %s exec %s report --out r --archive a",
+           dir, env[_i], bin);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 2 && o->err_lines == 1, "%s: exit %d: %s", env[_i],
+                o->status, o->err);
+  snprintf(path, sizeof path, "%s/a", dir);
+  struct stat sb;
+  ck_assert_msg(stat(path, &sb) != 0, "%s: the archive was made", env[_i]);
+  vsph_test_rm_tree(dir);
 }
 END_TEST
 
@@ -351,6 +382,7 @@ Suite *vsph_cli_suite(void) {
   Suite *s = suite_create("cli");
   TCase *tc = tcase_create("errors");
   tcase_set_timeout(tc, 30);
+  tcase_add_loop_test(tc, test_archive_inputs, 0, 4);
   tcase_add_loop_test(tc, test_bad_input, 0,
                       (int)(sizeof bad_inputs / sizeof bad_inputs[0]));
   tcase_add_test(tc, test_help);

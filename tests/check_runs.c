@@ -585,6 +585,18 @@ START_TEST(test_archive_summary) {
       0);
   ck_assert_int_eq(vsph_folder_seal(&fz, zkey, NULL), 0);
   vsph_folder_release(&fz);
+  /* z2: the same, its run.json naming a -dirty commit (whose baseline the
+   * history cannot hold): judged by the commit its source hash names */
+  char z2[400];
+  snprintf(z2, sizeof z2, "%s/runs/z2", ar);
+  ck_assert_int_eq(vsph_folder_claim(&fz, z2, &vsph_folder_scene_run), 0);
+  ck_assert_int_eq(
+      vsph_files_write(z2, "run.json",
+                       "{\"scene\": \"poiseuille\", \"status\": \"ok\", "
+                       "\"commit\": \"c0ffee-dirty\"}\n"),
+      0);
+  ck_assert_int_eq(vsph_folder_seal(&fz, zkey, NULL), 0);
+  vsph_folder_release(&fz);
   /* today's baseline: two scenes' rows */
   ck_assert_int_eq(mkdir(hist, 0755), 0);
   snprintf(base, sizeof base, "%s/baseline.csv", dir);
@@ -592,25 +604,29 @@ START_TEST(test_archive_summary) {
       "scene,visc,res\npoiseuille,mgf,16\npoiseuille,pvwf,16\ncouette,mgf,"
       "16\n";
   put_text(dir, "baseline.csv", now);
-  const char *names[] = {"a", "z"}, *keys[] = {key, key};
+  const char *names[] = {"a", "z", "z2"}, *keys[] = {key, key, key};
   struct vsph_archive_judge jd = {
-      .baseline = base, .nplan = 2, .plan_name = names, .plan_key = keys};
+      .baseline = base, .nplan = 3, .plan_name = names, .plan_key = keys};
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
   assert_stands(ar, "a", "| yes |");
   assert_stands(ar, "z", "unjudged");
   assert_stands(ar, "z", "(a\\|b c) |");
   /* the history: z's commit, its rows then equal today's (couette's
    * differ: not z's scene) */
+  /* (a line without its tab, one with three fields and one of a longer
+   * hash are skipped, not read across) */
   put_text(hist, "commits.tsv",
-           "fedcba9876543210\tc0de\n"
-           "0123456789abcdef\tc0ffee\n");
+           "0123456789abcdef\nfedcba9876543210\tc0de\n0123456789abcdef0\tc1de\n"
+           "0123456789abcdef\tbad\textra\n0123456789abcdef\tc0ffee\n");
   put_text(hist, "c0ffee.csv",
            "scene,visc,res\npoiseuille,mgf,16\npoiseuille,pvwf,16\ncouette,"
            "mgf,8\n");
   jd.history = hist;
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
   assert_stands(ar, "z", "| yes |");
-  assert_stands(ar, "z", "c0ffee");
+  assert_stands(ar, "z", ", c0ffee |");
+  assert_stands(ar, "z2", "| yes |");
+  assert_stands(ar, "z2", ", c0ffee |");
   /* poiseuille's rows changed since c0ffee: z no longer stands */
   put_text(hist, "c0ffee.csv",
            "scene,visc,res\npoiseuille,mgf,8\npoiseuille,pvwf,16\n");
@@ -626,6 +642,13 @@ START_TEST(test_archive_summary) {
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
   assert_stands(ar, "a", "other settings");
   assert_stands(ar, "z", "no run of this name");
+  /* the tally counts the plan's runs only */
+  snprintf(path, sizeof path, "%s/summary.md", ar);
+  char text[8192];
+  vsph_test_slurp(path, text, sizeof text);
+  ck_assert_msg(strstr(text, "\n1 of the 1 runs of the current FULL plan") &&
+                    strstr(text, "beside entries the plan no longer names"),
+                "%s", text);
   vsph_test_rm_tree(dir);
 }
 END_TEST
