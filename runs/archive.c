@@ -200,6 +200,47 @@ static void free_list(char **v, size_t n) {
   free(v);
 }
 
+/* A whole entry of the archive's runs/ folder, read for the index and
+ * the summary: its kind, its key (free it), the version and source hash
+ * its key names, its settings, and its run.json (cJSON_Delete it; NULL
+ * when unreadable). */
+struct entry {
+  const struct vsph_folder_kind *kind;
+  char *key;
+  char version[32], hash[64];
+  const char *settings;
+  cJSON *run;
+};
+
+/* Entry @p name of @p runs into @p e; 0 when it is not (or no longer) a
+ * whole entry, its seal not holding. */
+static int entry_read(const char *runs, const char *name, struct entry *e) {
+  char dir[4400], path[4500];
+  snprintf(dir, sizeof dir, "%s/%s", runs, name);
+  memset(e, 0, sizeof *e);
+  const char *files;
+  e->kind = entry_kind(dir);
+  if (!e->kind || key_of(dir, &e->key, &files) ||
+      vsph_folder_verify(dir, e->kind, e->key, NULL, NULL, 0) != 1) {
+    free(e->key);
+    e->key = NULL;
+    return 0;
+  }
+  snprintf(e->version, sizeof e->version, "?");
+  snprintf(e->hash, sizeof e->hash, "?");
+  sscanf(e->key, "vsph %31s %63s", e->version, e->hash);
+  const char *nl = strchr(e->key, '\n');
+  e->settings = nl ? nl + 1 : "";
+  snprintf(path, sizeof path, "%s/run.json", dir);
+  e->run = vsph_json_read(path);
+  return 1;
+}
+
+static void entry_free(struct entry *e) {
+  free(e->key);
+  cJSON_Delete(e->run);
+}
+
 /* index.tsv of the archive's entries. */
 static int write_index(const char *archive, const char *runs,
                        const char *commit) {
@@ -220,22 +261,11 @@ static int write_index(const char *archive, const char *runs,
           "s\tsteps\tparticles\n",
           VSPH_VERSION);
   for (size_t k = 0; k < n; k++) {
-    char dir[4400];
-    snprintf(dir, sizeof dir, "%s/%s", runs, names[k]);
-    const struct vsph_folder_kind *kind = entry_kind(dir);
-    char *key = NULL;
-    const char *files;
-    if (!kind || key_of(dir, &key, &files) ||
-        vsph_folder_verify(dir, kind, key, NULL, NULL, 0) != 1) {
-      free(key);
-      continue; /* not (or no longer) a whole entry */
-    }
-    char version[32] = "?", hash[64] = "?";
-    sscanf(key, "vsph %31s %63s", version, hash);
-    const char *settings = strchr(key, '\n');
-    char path[4500];
-    snprintf(path, sizeof path, "%s/run.json", dir);
-    cJSON *o = vsph_json_read(path);
+    struct entry en;
+    if (!entry_read(runs, names[k], &en)) continue; /* not a whole entry */
+    const struct vsph_folder_kind *kind = en.kind;
+    const char *const version = en.version, *const hash = en.hash;
+    cJSON *o = en.run;
     const cJSON *s = o ? cJSON_GetObjectItemCaseSensitive(o, "status") : NULL;
     /* the commit the run recorded, else the caller's for this build's */
     const cJSON *c = o ? cJSON_GetObjectItemCaseSensitive(o, "commit") : NULL;
@@ -250,13 +280,11 @@ static int write_index(const char *archive, const char *runs,
         m, "%s\t%s\t%s\t%s\t%s\t%s\t%016llx\t%.6g\t%.0f\t%.0f\n", names[k],
         kind->name,
         cJSON_IsString(s) && plain_name(s->valuestring) ? s->valuestring : "?",
-        version, hash, made,
-        vsph_folder_fingerprint(settings ? settings + 1 : ""),
+        version, hash, made, vsph_folder_fingerprint(en.settings),
         o ? vsph_json_get_number(o, "wall_s", NAN) : (double)NAN,
         o ? vsph_json_get_number(o, "steps", NAN) : (double)NAN,
         o ? vsph_json_get_number(o, "n_particles", NAN) : (double)NAN);
-    cJSON_Delete(o);
-    free(key);
+    entry_free(&en);
   }
   free_list(names, n);
   if (fclose(m) != 0) {
@@ -570,22 +598,10 @@ int vsph_archive_summarise(const char *archive,
           "(s) | source hash, commit | stands |\n"
           "|---|---:|---|---|---:|---:|---|---|\n");
   for (size_t k = 0; k < n; k++) {
-    char dir[4400];
-    snprintf(dir, sizeof dir, "%s/%s", runs, names[k]);
-    const struct vsph_folder_kind *kind = entry_kind(dir);
-    char *key = NULL;
-    const char *files;
-    if (!kind || key_of(dir, &key, &files) ||
-        vsph_folder_verify(dir, kind, key, NULL, NULL, 0) != 1) {
-      free(key);
-      continue;
-    }
-    char version[32] = "?", hash[64] = "?";
-    sscanf(key, "vsph %31s %63s", version, hash);
-    const char *settings = strchr(key, '\n');
-    char path[4500];
-    snprintf(path, sizeof path, "%s/run.json", dir);
-    cJSON *o = vsph_json_read(path);
+    struct entry en;
+    if (!entry_read(runs, names[k], &en)) continue;
+    const char *const hash = en.hash;
+    cJSON *o = en.run;
     const cJSON *sc = o ? cJSON_GetObjectItemCaseSensitive(o, "scene") : NULL;
     const cJSON *s = o ? cJSON_GetObjectItemCaseSensitive(o, "status") : NULL;
     const cJSON *c = o ? cJSON_GetObjectItemCaseSensitive(o, "commit") : NULL;
@@ -612,8 +628,8 @@ int vsph_archive_summarise(const char *archive,
     const char *scene =
         cJSON_IsString(sc) && id_name(sc->valuestring) ? sc->valuestring : "?";
     char why[400];
-    judge_entry(jd, names[k], settings ? settings + 1 : "", scene, hash, commit,
-                then, now, why, sizeof why);
+    judge_entry(jd, names[k], en.settings, scene, hash, commit, then, now, why,
+                sizeof why);
     free(then);
     const char *status =
         cJSON_IsString(s) && id_name(s->valuestring) ? s->valuestring : "?";
@@ -640,8 +656,7 @@ int vsph_archive_summarise(const char *archive,
       wall += vsph_json_get_number(o, "wall_s", 0.0);
     }
     others += q == jd->nplan;
-    cJSON_Delete(o);
-    free(key);
+    entry_free(&en);
   }
   fprintf(m,
           "\n%zu of the %zu runs of the current FULL plan are archived "

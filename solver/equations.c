@@ -684,7 +684,6 @@ static int sweep_plan(struct vsph_equations_sweep *sw,
     sw->off[b] = total;
     total += (sw->hi[b] - sw->lo[b]) * (size_t)nf;
   }
-  (void)n;
   if (total > sw->cap_buf) {
     const size_t cap = total + total / 4;
     double *r = realloc(sw->buf, cap * sizeof *r);
@@ -831,6 +830,31 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block(
   return total;
 }
 
+/* Block b's particles [*i0, *i1); returns the first block whose pairs
+ * reach into it (blocks before it hold nothing of b's particles). */
+static size_t sweep_span(const struct vsph_equations_sweep *sw,
+                         const struct vsph_cells *cells, size_t b, size_t *i0,
+                         size_t *i1) {
+  const size_t last = sw->c0[b + 1] - 1;
+  *i0 = sw->lo[b];
+  *i1 = cells->start[last] + cells->count[last];
+  for (size_t e = 0; e < b; e++)
+    if (sw->hi[e] > *i0) return e;
+  return b;
+}
+
+/* Particle i's nf sums into s: its entries in blocks first..b, added in
+ * block order. */
+static void sweep_sums(const struct vsph_equations_sweep *sw, size_t first,
+                       size_t b, size_t i, int nf, double *s) {
+  for (int a = 0; a < nf; a++) s[a] = 0.0;
+  for (size_t e = first; e <= b; e++) {
+    if (sw->hi[e] <= i) continue;
+    const double *q = sw->buf + sw->off[e] + (i - sw->lo[e]) * (size_t)nf;
+    for (int a = 0; a < nf; a++) s[a] += q[a];
+  }
+}
+
 /* Each fluid particle's sums from the block buffers that hold it, in
  * block order, into the right-hand side. */
 static void sweep_finish(const struct rhs_ctx *rc,
@@ -841,22 +865,12 @@ static void sweep_finish(const struct rhs_ctx *rc,
   const int dim = p->dim;
 #pragma omp parallel for schedule(dynamic, 1)
   for (size_t b = 0; b < sw->nblk; b++) {
-    const size_t last = sw->c0[b + 1] - 1;
-    const size_t i0 = sw->lo[b], i1 = cells->start[last] + cells->count[last];
-    size_t first = b; /* the first block whose pairs reach into this one */
-    for (size_t e = 0; e < b; e++)
-      if (sw->hi[e] > i0) {
-        first = e;
-        break;
-      }
+    size_t i0, i1;
+    const size_t first = sweep_span(sw, cells, b, &i0, &i1);
     for (size_t i = i0; i < i1; i++) {
       if (p->id[i] >= n_fluid) continue;
-      double s[3 + 2 + 3] = {0};
-      for (size_t e = first; e <= b; e++) {
-        if (sw->hi[e] <= i) continue;
-        const double *q = sw->buf + sw->off[e] + (i - sw->lo[e]) * (size_t)nf;
-        for (int a = 0; a < nf; a++) s[a] += q[a];
-      }
+      double s[3 + 2 + 3];
+      sweep_sums(sw, first, b, i, nf, s);
       const double rhoi = p->rho[i], rinv = 1.0 / rhoi;
       const double cont = s[SW_CONT(dim)], dsum = s[SW_DELTA(dim)];
       if (rc->gas) out->de[i] = p->p[i] * cont * rinv;
@@ -1016,21 +1030,11 @@ static int grad_sweep(const struct vsph_viscous_props *vp,
       grad_block(pk, p, cells, sw, b, 3, G);
 #pragma omp parallel for schedule(dynamic, 1)
   for (size_t b = 0; b < sw->nblk; b++) {
-    const size_t last = sw->c0[b + 1] - 1;
-    const size_t i0 = sw->lo[b], i1 = cells->start[last] + cells->count[last];
-    size_t first = b;
-    for (size_t e = 0; e < b; e++)
-      if (sw->hi[e] > i0) {
-        first = e;
-        break;
-      }
+    size_t i0, i1;
+    const size_t first = sweep_span(sw, cells, b, &i0, &i1);
     for (size_t i = i0; i < i1; i++) {
-      double s[18] = {0};
-      for (size_t e = first; e <= b; e++) {
-        if (sw->hi[e] <= i) continue;
-        const double *q = sw->buf + sw->off[e] + (i - sw->lo[e]) * (size_t)nf;
-        for (int a = 0; a < nf; a++) s[a] += q[a];
-      }
+      double s[18];
+      sweep_sums(sw, first, b, i, nf, s);
       vsph_viscous_pvwf_finish(vp, ws, i, s, s + dd);
     }
   }
