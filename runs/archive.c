@@ -262,7 +262,8 @@ static int write_index(const char *archive, const char *runs,
           VSPH_VERSION);
   for (size_t k = 0; k < n; k++) {
     struct entry en;
-    if (!entry_read(runs, names[k], &en)) continue; /* not a whole entry */
+    /* a whole entry whose name a TSV field can hold (as the store asks) */
+    if (!plain_name(names[k]) || !entry_read(runs, names[k], &en)) continue;
     const struct vsph_folder_kind *kind = en.kind;
     const char *const version = en.version, *const hash = en.hash;
     cJSON *o = en.run;

@@ -597,6 +597,18 @@ START_TEST(test_archive_summary) {
       0);
   ck_assert_int_eq(vsph_folder_seal(&fz, zkey, NULL), 0);
   vsph_folder_release(&fz);
+  /* an entry named with a tab (sealed by hand): index.tsv leaves it out,
+   * summary.md blanks it */
+  char zt[400];
+  snprintf(zt, sizeof zt, "%s/runs/t\tx", ar);
+  ck_assert_int_eq(vsph_folder_claim(&fz, zt, &vsph_folder_scene_run), 0);
+  ck_assert_int_eq(vsph_folder_seal(&fz, zkey, NULL), 0);
+  vsph_folder_release(&fz);
+  ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
+  char index[4096];
+  snprintf(path, sizeof path, "%s/index.tsv", ar);
+  vsph_test_slurp(path, index, sizeof index);
+  ck_assert_msg(strstr(index, "\na\t") && !strstr(index, "t\tx"), "%s", index);
   /* today's baseline: two scenes' rows */
   ck_assert_int_eq(mkdir(hist, 0755), 0);
   snprintf(base, sizeof base, "%s/baseline.csv", dir);
@@ -611,6 +623,7 @@ START_TEST(test_archive_summary) {
   assert_stands(ar, "a", "| yes |");
   assert_stands(ar, "z", "unjudged");
   assert_stands(ar, "z", "(a\\|b c) |");
+  assert_stands(ar, "t x", "no run of this name");
   /* the history: z's commit, its rows then equal today's (couette's
    * differ: not z's scene) */
   /* (a line without its tab, one with three fields and one of a longer
