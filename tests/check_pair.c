@@ -458,6 +458,34 @@ END_TEST
 
 /* ------------------------------------------- solver against the operator */
 
+/* Scene @p type at @p res across, formulation @p form, delta-SPH
+ * @p delta (< 0: the scene's), after three steps and a diagnostics row (which
+ * builds the cells for the particles as they are): the set-up of the tests that
+ * compare two loops on the same particles. Its props go to @p ip. */
+static struct vsph_integrate *scene_stepped(const struct vsph_scene_type *type,
+                                            int form, size_t res, double delta,
+                                            struct vsph_integrate_props *ip) {
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_scene_init(&sc, type, NULL), 0);
+  struct vsph_particles *fluid = NULL;
+  ck_assert_int_eq(sc.type->init(&sc, res, &fluid), 0);
+  ck_assert_int_eq(
+      vsph_scene_integrate_props(&sc, form, &vsph_gaussian_type,
+                                 HDX * sc.ref_length / (double)res, ip),
+      0);
+  ip->cfl = 1.0;
+  ip->rho_band = 0.2;
+  if (delta >= 0.0) ip->eq.delta = delta;
+  struct vsph_integrate *s = vsph_integrate_alloc(ip, fluid);
+  ck_assert_ptr_nonnull(s);
+  for (int k = 0; k < 3; k++)
+    ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  struct vsph_equations_energy en;
+  struct vsph_equations_budget b;
+  ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &b), 0); /* cells */
+  return s;
+}
+
 /* Scene sc_i, formulation form at 16 across (channels 32) after three steps
  * (ghosts generated for the wave): the right-hand side's viscous part times rho
  * equals vsph_viscous_compute on the same particles and cells to 1e-14
@@ -469,25 +497,11 @@ START_TEST(test_solver_equals_operator) {
   struct vsph_scene sc;
   ck_assert_int_eq(vsph_scene_init(&sc, vsph_scene_get((size_t)sc_i), NULL), 0);
   ck_assert_int_eq(sc.dim, 2); /* the loop leaves out the contact scenes */
-  struct vsph_particles *fluid = NULL;
   /* a periodic channel (Couette: W/2 long) needs its period beyond PVWF's
    * two supports: 32 across there */
   const size_t res = vsph_walls_period(&sc.walls, 0) > 0.0 ? 32 : 16;
-  ck_assert_int_eq(sc.type->init(&sc, res, &fluid), 0);
   struct vsph_integrate_props ip;
-  ck_assert_int_eq(
-      vsph_scene_integrate_props(&sc, form, &vsph_gaussian_type,
-                                 HDX * sc.ref_length / (double)res, &ip),
-      0);
-  ip.cfl = 1.0;
-  ip.rho_band = 0.2;
-  struct vsph_integrate *s = vsph_integrate_alloc(&ip, fluid);
-  ck_assert_ptr_nonnull(s);
-  for (int k = 0; k < 3; k++)
-    ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
-  struct vsph_equations_energy en;
-  struct vsph_equations_budget b;
-  ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &b), 0); /* cells */
+  struct vsph_integrate *s = scene_stepped(sc.type, form, res, -1.0, &ip);
   struct vsph_particles *p = s->p;
   const size_t n = p->n;
   double *buf = calloc(7 * n, sizeof *buf);
@@ -567,26 +581,11 @@ START_TEST(test_sweep_gather_threads) {
                                        : vsph_scene_get((size_t)sc_i),
                                    NULL),
                    0);
-  struct vsph_particles *fluid = NULL;
   const size_t res = big                                     ? 136
                      : vsph_walls_period(&sc.walls, 0) > 0.0 ? 32
                                                              : 16;
-  ck_assert_int_eq(sc.type->init(&sc, res, &fluid), 0);
   struct vsph_integrate_props ip;
-  ck_assert_int_eq(
-      vsph_scene_integrate_props(&sc, form, &vsph_gaussian_type,
-                                 HDX * sc.ref_length / (double)res, &ip),
-      0);
-  ip.cfl = 1.0;
-  ip.rho_band = 0.2;
-  ip.eq.delta = 0.1;
-  struct vsph_integrate *s = vsph_integrate_alloc(&ip, fluid);
-  ck_assert_ptr_nonnull(s);
-  for (int k = 0; k < 3; k++)
-    ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
-  struct vsph_equations_energy en;
-  struct vsph_equations_budget b;
-  ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &b), 0); /* cells */
+  struct vsph_integrate *s = scene_stepped(sc.type, form, res, 0.1, &ip);
   const size_t n = s->p->n;
   double *buf = calloc(18 * n, sizeof *buf);
   struct vsph_equations_sweep *sw = vsph_equations_sweep_alloc();

@@ -527,6 +527,16 @@ static void put_text(const char *dir, const char *name, const char *text) {
   ck_assert_int_eq(fclose(f), 0);
 }
 
+/* An archive entry at @p dir sealed under @p key by hand, holding
+ * run.json @p run (none when NULL): an entry of other sources. */
+static void seal_entry(const char *dir, const char *key, const char *run) {
+  struct vsph_folder f;
+  ck_assert_int_eq(vsph_folder_claim(&f, dir, &vsph_folder_scene_run), 0);
+  if (run) ck_assert_int_eq(vsph_files_write(dir, "run.json", run), 0);
+  ck_assert_int_eq(vsph_folder_seal(&f, key, NULL), 0);
+  vsph_folder_release(&f);
+}
+
 /* summary.md's row of entry @p name holds @p verdict (its last cell). */
 static void assert_stands(const char *ar, const char *name,
                           const char *verdict) {
@@ -574,36 +584,23 @@ START_TEST(test_archive_summary) {
   snprintf(zkey, sizeof zkey, "vsph %s 0123456789abcdef\n%s", VSPH_VERSION,
            settings);
   snprintf(z, sizeof z, "%s/runs/z", ar);
-  struct vsph_folder fz;
-  ck_assert_int_eq(vsph_folder_claim(&fz, z, &vsph_folder_scene_run), 0);
   /* its reason holds what would break a table row: escaped, blanked */
-  ck_assert_int_eq(
-      vsph_files_write(z, "run.json",
-                       "{\"scene\": \"poiseuille\", \"status\": \"ok\", "
-                       "\"t\": 0.02, \"t_end\": 0.02, \"unstable_reason\": "
-                       "\"a|b\\nc\", \"commit\": \"x|y\"}\n"),
-      0);
-  ck_assert_int_eq(vsph_folder_seal(&fz, zkey, NULL), 0);
-  vsph_folder_release(&fz);
+  seal_entry(z, zkey,
+             "{\"scene\": \"poiseuille\", \"status\": \"ok\", \"t\": 0.02, "
+             "\"t_end\": 0.02, \"unstable_reason\": \"a|b\\nc\", \"commit\": "
+             "\"x|y\"}\n");
   /* z2: the same, its run.json naming a -dirty commit (whose baseline the
    * history cannot hold): judged by the commit its source hash names */
   char z2[400];
   snprintf(z2, sizeof z2, "%s/runs/z2", ar);
-  ck_assert_int_eq(vsph_folder_claim(&fz, z2, &vsph_folder_scene_run), 0);
-  ck_assert_int_eq(
-      vsph_files_write(z2, "run.json",
-                       "{\"scene\": \"poiseuille\", \"status\": \"ok\", "
-                       "\"commit\": \"c0ffee-dirty\"}\n"),
-      0);
-  ck_assert_int_eq(vsph_folder_seal(&fz, zkey, NULL), 0);
-  vsph_folder_release(&fz);
+  seal_entry(z2, zkey,
+             "{\"scene\": \"poiseuille\", \"status\": \"ok\", \"commit\": "
+             "\"c0ffee-dirty\"}\n");
   /* an entry named with a tab (sealed by hand): index.tsv leaves it out,
    * summary.md blanks it */
   char zt[400];
   snprintf(zt, sizeof zt, "%s/runs/t\tx", ar);
-  ck_assert_int_eq(vsph_folder_claim(&fz, zt, &vsph_folder_scene_run), 0);
-  ck_assert_int_eq(vsph_folder_seal(&fz, zkey, NULL), 0);
-  vsph_folder_release(&fz);
+  seal_entry(zt, zkey, NULL);
   ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
   char index[4096];
   snprintf(path, sizeof path, "%s/index.tsv", ar);
