@@ -47,7 +47,7 @@ CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
-.PHONY: all deps check test report baseline bench archive asan valgrind-check prefix-check \
+.PHONY: all deps check test report baseline bench archive full-sitting asan valgrind-check prefix-check \
         format format-check mutate fuzz slurm-check fresh-check \
         fresh-check-tests paraview-check clean
 
@@ -95,6 +95,16 @@ archive: deps $(BUILD)/vsph
 	VSPH_COMMIT="$$(git describe --always --dirty --abbrev=12 2>/dev/null \
 	  | tr -cd '0-9a-z-')" $(BUILD)/vsph report --out reports/out-full \
 	  --archive reports/full
+
+# One sitting of the FULL report's runs: the costliest runs that do not
+# stand in reports/full and fit BUDGET (default 150m), niced, two at a
+# time, checkpointed, into reports/out-full; then `make archive` keeps the
+# ones that ended (README: vsph report --budget, --skip-archived).
+BUDGET ?= 150m
+full-sitting: deps $(BUILD)/vsph
+	scripts/source-commits $(BUILD)/history
+	VSPH_ARCHIVE_HISTORY=$(BUILD)/history $(BUILD)/vsph report --full \
+	  --out reports/out-full --budget $(BUDGET) --skip-archived reports/full
 
 # Every test, through the single Check runner (STYLE B10).
 check: deps

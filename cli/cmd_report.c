@@ -85,9 +85,35 @@ static int summarise(const char *dir, const char *archive, const char *commit) {
   return st;
 }
 
+/* What a judge of the archive reads ($VSPH_ARCHIVE_HISTORY and
+ * reports/baseline.csv), checked before anything is written: 0, or the
+ * exit status of a refusal (one line said). */
+static int judge_inputs(void) {
+  const char *history = getenv("VSPH_ARCHIVE_HISTORY");
+  struct stat hs;
+  char tsv[600];
+  snprintf(tsv, sizeof tsv, "%s/commits.tsv", history ? history : "");
+  if (history && *history &&
+      (strlen(history) > 400 || stat(history, &hs) != 0 ||
+       !S_ISDIR(hs.st_mode) || stat(tsv, &hs) != 0 || !S_ISREG(hs.st_mode) ||
+       hs.st_size > VSPH_ARCHIVE_READ_MAX))
+    return vsph_args_fail(CMD,
+                          "VSPH_ARCHIVE_HISTORY '%.400s' is not a folder "
+                          "scripts/source-commits made (a commits.tsv of at "
+                          "most 16 MiB in it)",
+                          history);
+  if (stat("reports/baseline.csv", &hs) == 0 &&
+      (!S_ISREG(hs.st_mode) || hs.st_size > VSPH_ARCHIVE_READ_MAX))
+    return vsph_args_fail(CMD,
+                          "reports/baseline.csv is not a regular file of "
+                          "at most 16 MiB");
+  return 0;
+}
+
 int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
   const char *partition = NULL, *limit = NULL, *budget = NULL, *archive = NULL;
+  const char *skip = NULL;
   int full = 0, plan = 0, slurm = 0, assemble = 0;
   size_t jobs = 0, threads = 0;
   const struct vsph_args_spec own[] = {
@@ -131,6 +157,12 @@ int vsph_cmd_report_main(int argc, char **argv) {
        "when TIME is spent the runs stop at a checkpoint and the next "
        "--budget goes on from there; exit 0, and nothing is assembled (a "
        "FULL report fills over several sittings this way)"},
+      {"--skip-archived", VSPH_ARGS_STRING, &skip, "ADIR",
+       "with --budget: leave out the runs that stand in the run archive "
+       "ADIR (reports/full for the FULL report; judged as --archive's "
+       "summary.md judges them, from $VSPH_ARCHIVE_HISTORY and "
+       "reports/baseline.csv), so a sitting goes on from the archive "
+       "whatever build made it (make full-sitting)"},
       {"--archive", VSPH_ARGS_STRING, &archive, "ADIR",
        "run nothing: store the sealed runs of DIR/runs in the run archive "
        "ADIR (reports/full for the FULL report): of each, what the parts "
@@ -230,8 +262,23 @@ int vsph_cmd_report_main(int argc, char **argv) {
                             "--budget runs the runs here: not with --plan, "
                             "--slurm or --assemble");
   }
+  if (skip) {
+    if (!budget) return vsph_args_fail(CMD, "--skip-archived needs --budget");
+    if (!*skip || strlen(skip) > 400)
+      return vsph_args_fail(CMD,
+                            "--skip-archived: a folder name of 1-400 "
+                            "characters");
+    struct stat as;
+    if (stat(skip, &as) != 0 || !S_ISDIR(as.st_mode))
+      return vsph_args_fail(CMD,
+                            "--skip-archived: %.400s is not a folder (make "
+                            "archive makes reports/full)",
+                            skip);
+    const int bad = judge_inputs();
+    if (bad) return bad;
+  }
   if (archive) {
-    if (plan || slurm || assemble || pool || budget || only || full)
+    if (skip || plan || slurm || assemble || pool || budget || only || full)
       return vsph_args_fail(CMD,
                             "--archive runs nothing: it takes --out alone");
     if (!*archive || strlen(archive) > 400)
@@ -247,24 +294,8 @@ int vsph_cmd_report_main(int argc, char **argv) {
       return vsph_args_fail(CMD, "VSPH_COMMIT '%.64s' is not a commit id",
                             commit);
     /* what the summary reads, judged before anything is written */
-    const char *history = getenv("VSPH_ARCHIVE_HISTORY");
-    struct stat hs;
-    char tsv[600];
-    snprintf(tsv, sizeof tsv, "%s/commits.tsv", history ? history : "");
-    if (history && *history &&
-        (strlen(history) > 400 || stat(history, &hs) != 0 ||
-         !S_ISDIR(hs.st_mode) || stat(tsv, &hs) != 0 || !S_ISREG(hs.st_mode) ||
-         hs.st_size > VSPH_ARCHIVE_READ_MAX))
-      return vsph_args_fail(CMD,
-                            "VSPH_ARCHIVE_HISTORY '%.400s' is not a folder "
-                            "scripts/source-commits made (a commits.tsv of at "
-                            "most 16 MiB in it)",
-                            history);
-    if (stat("reports/baseline.csv", &hs) == 0 &&
-        (!S_ISREG(hs.st_mode) || hs.st_size > VSPH_ARCHIVE_READ_MAX))
-      return vsph_args_fail(CMD,
-                            "reports/baseline.csv is not a regular file of "
-                            "at most 16 MiB");
+    const int bad = judge_inputs();
+    if (bad) return bad;
     struct vsph_archive_counts n;
     int st = vsph_archive_store(dir, archive, commit, stderr, &n);
     if (st) return vsph_args_status(CMD, st);
@@ -344,6 +375,16 @@ int vsph_cmd_report_main(int argc, char **argv) {
   rp.time = limit;
   rp.only = only;
   rp.budget_s = budget_s;
+  struct stat bs;
+  const char *history = getenv("VSPH_ARCHIVE_HISTORY");
+  const struct vsph_archive_judge judge = {
+      .history = history && *history ? history : NULL,
+      .baseline = stat("reports/baseline.csv", &bs) == 0
+                      ? "reports/baseline.csv"
+                      : NULL,
+      .commit = NULL};
+  rp.skip_archive = skip;
+  rp.judge = &judge;
   /* SIGINT/SIGTERM: the runs in progress stop at a checkpoint, uncached */
   const volatile sig_atomic_t *stop = rp.stop = vsph_args_catch_stop();
   /* but for the runs (which stop after a checkpoint), a signal ends the

@@ -415,6 +415,42 @@ int vsph_report_plan_jobs(const char *dir, int full, struct vsph_jobs *jobs) {
   return st;
 }
 
+/* Mark the planned runs that stand in rp->skip_archive: they are not run
+ * (a FULL sitting goes on from the archive, whatever build made it). */
+static int mark_archived(struct vsph_report *R,
+                         const struct vsph_report_props *rp) {
+  const size_t n = R->jobs.n;
+  const char **names = calloc(n + 1, sizeof *names);
+  const char **keys = calloc(n + 1, sizeof *keys);
+  int *stands = calloc(n + 1, sizeof *stands);
+  int st = names && keys && stands ? VSPH_OK : VSPH_ENOMEM;
+  if (st) vsph_status_report(st, __FILE__, __LINE__, "cannot list the plan");
+  for (size_t k = 0; !st && k < n; k++) {
+    const char *slash = strrchr(R->jobs.job[k].dir, '/');
+    names[k] = slash ? slash + 1 : R->jobs.job[k].dir;
+    keys[k] = R->jobs.job[k].key ? R->jobs.job[k].key : "";
+  }
+  struct vsph_archive_judge jd = *rp->judge;
+  jd.nplan = n;
+  jd.plan_name = names;
+  jd.plan_key = keys;
+  if (!st) st = vsph_archive_standing(rp->skip_archive, &jd, stands);
+  size_t marked = 0;
+  for (size_t k = 0; !st && k < n; k++) {
+    R->jobs.job[k].archived = stands[k] && !R->jobs.job[k].cached;
+    marked += (size_t)R->jobs.job[k].archived;
+  }
+  if (!st)
+    fprintf(stderr,
+            "vsph report: %zu of the %zu runs stand in %s and are not run "
+            "again\n",
+            marked, n, rp->skip_archive);
+  free(names);
+  free(keys);
+  free(stands);
+  return st;
+}
+
 int vsph_report_write(const struct vsph_report_props *rp) {
   const unsigned long all = (1ul << NPARTS) - 1;
   const unsigned long want = rp->parts ? rp->parts & all : all;
@@ -440,6 +476,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   R->jobs.planned = 1;
   R->jobs.budget_s = rp->budget_s;
   if (!st) st = plan(R, want);
+  if (!st && rp->skip_archive) st = mark_archived(R, rp);
   if (!st && rp->mode == VSPH_REPORT_PLAN) { /* writes nothing */
     st = vsph_jobs_plan_print(&R->jobs, rp->exe ? rp->exe : "vsph",
                               rp->plan_out);
@@ -478,13 +515,17 @@ int vsph_report_write(const struct vsph_report_props *rp) {
     R->runs_wall = omp_get_wtime() - t_runs;
   }
   if (rp->budget_s > 0.0) { /* runs only: say what is left */
-    size_t left = 0;
-    for (size_t k = 0; k < R->jobs.n; k++) left += !R->jobs.job[k].cached;
+    size_t left = 0, kept = 0;
+    for (size_t k = 0; k < R->jobs.n; k++) {
+      kept += (size_t)R->jobs.job[k].archived;
+      left += !R->jobs.job[k].cached && !R->jobs.job[k].archived;
+    }
     if (st == VSPH_OK || st == VSPH_EINTR)
       fprintf(stderr,
-              "vsph report: %zu of the %zu runs are cached, %zu missing or "
-              "unfinished (%.0f s of runs); not assembled\n",
-              R->jobs.n - left, R->jobs.n, left, R->runs_wall);
+              "vsph report: %zu of the %zu runs are cached, %zu stand in the "
+              "archive, %zu missing or unfinished (%.0f s of runs); not "
+              "assembled\n",
+              R->jobs.n - left - kept, R->jobs.n, kept, left, R->runs_wall);
     vsph_jobs_plan_free(&R->jobs);
     free(R);
     return st;

@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "../runs/archive.h"
 #include "../runs/jobs.h"
 
 /** @file report.h
@@ -44,6 +45,11 @@ struct vsph_report_props {
    *  seconds of wall time (vsph_jobs::budget_s), then stop without
    *  assembling; the caller's clock raises *stop when it is spent */
   double budget_s;
+  /** LOCAL, POOL: if not NULL, the runs that stand in this run archive
+   *  (vsph_archive_standing, judged by *judge's history, baseline and
+   *  commit; its plan is the report's) are not run */
+  const char *skip_archive;
+  const struct vsph_archive_judge *judge;
 };
 
 /** How the report's missing runs are run. Every mode first lists every

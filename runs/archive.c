@@ -543,6 +543,81 @@ static void judge_entry(const struct vsph_archive_judge *jd, const char *name,
     snprintf(why, size, "yes");
 }
 
+/* Whether whole entry @p en (named @p name) stands, as the rule says,
+ * into @p why ("yes" when it does), and the commit that made it into
+ * @p commit (NUL when not known): run.json's (a -dirty one has no
+ * baseline of its own in the history), the caller's for this build's
+ * sources, or the one the history's commits.tsv (@p tsv) names for its
+ * source hash. @p now: the current baseline.csv's text, or NULL. */
+static void entry_verdict(const struct vsph_archive_judge *jd, const char *tsv,
+                          const char *now, const char *name,
+                          const struct entry *en, char *commit, size_t clen,
+                          char *why, size_t wlen) {
+  const cJSON *o = en->run;
+  const cJSON *sc = o ? cJSON_GetObjectItemCaseSensitive(o, "scene") : NULL;
+  const cJSON *c = o ? cJSON_GetObjectItemCaseSensitive(o, "commit") : NULL;
+  commit[0] = '\0';
+  if (cJSON_IsString(c) && id_name(c->valuestring) &&
+      strcmp(c->valuestring, "unknown"))
+    snprintf(commit, clen, "%s", c->valuestring);
+  else if (jd->commit && !strcmp(en->hash, vsph_source_hash_id))
+    snprintf(commit, clen, "%s", jd->commit);
+  char *then = baseline_then(jd->history, commit);
+  if (!then) {
+    char h[64];
+    commit_of(tsv, en->hash, h, sizeof h);
+    if (h[0]) {
+      snprintf(commit, clen, "%s", h);
+      then = baseline_then(jd->history, commit);
+    }
+  }
+  const char *scene =
+      cJSON_IsString(sc) && id_name(sc->valuestring) ? sc->valuestring : "?";
+  judge_entry(jd, name, en->settings, scene, en->hash, commit, then, now, why,
+              wlen);
+  free(then);
+}
+
+/* The current baseline's text and the history's commits.tsv of @p jd
+ * (each NULL when absent or not a small regular file). */
+static void judge_inputs(const struct vsph_archive_judge *jd, char **now,
+                         char **tsv) {
+  *now = jd->baseline ? read_small(jd->baseline) : NULL;
+  *tsv = NULL;
+  if (jd->history) {
+    char path[4400];
+    snprintf(path, sizeof path, "%s/commits.tsv", jd->history);
+    *tsv = read_small(path);
+  }
+}
+
+int vsph_archive_standing(const char *archive,
+                          const struct vsph_archive_judge *jd, int *stands) {
+  for (size_t k = 0; k < jd->nplan; k++) stands[k] = 0;
+  struct stat sb;
+  if (lstat(archive, &sb) != 0 && errno == ENOENT) return VSPH_OK;
+  char runs[4200];
+  snprintf(runs, sizeof runs, "%s/runs", archive);
+  int st = judge(archive, runs);
+  if (st) return st;
+  char *now, *tsv;
+  judge_inputs(jd, &now, &tsv);
+  for (size_t k = 0; k < jd->nplan; k++) {
+    struct entry en;
+    if (!plain_name(jd->plan_name[k]) ||
+        !entry_read(runs, jd->plan_name[k], &en))
+      continue;
+    char commit[64], why[400];
+    entry_verdict(jd, tsv, now, jd->plan_name[k], &en, commit, sizeof commit,
+                  why, sizeof why);
+    stands[k] = !strcmp(why, "yes");
+    entry_free(&en);
+  }
+  free(now);
+  free(tsv);
+  return VSPH_OK;
+}
+
 int vsph_archive_summarise(const char *archive,
                            const struct vsph_archive_judge *jd) {
   char runs[4200];
@@ -557,13 +632,8 @@ int vsph_archive_summarise(const char *archive,
   }
   size_t n = 0;
   char **names = subdirs(runs, &n);
-  char *now = jd->baseline ? read_small(jd->baseline) : NULL;
-  char *tsv = NULL;
-  if (jd->history) {
-    char path[4400];
-    snprintf(path, sizeof path, "%s/commits.tsv", jd->history);
-    tsv = read_small(path);
-  }
+  char *now, *tsv;
+  judge_inputs(jd, &now, &tsv);
   char *text = NULL;
   size_t len = 0;
   FILE *m = names ? open_memstream(&text, &len) : NULL;
@@ -603,35 +673,12 @@ int vsph_archive_summarise(const char *archive,
     if (!entry_read(runs, names[k], &en)) continue;
     const char *const hash = en.hash;
     cJSON *o = en.run;
-    const cJSON *sc = o ? cJSON_GetObjectItemCaseSensitive(o, "scene") : NULL;
     const cJSON *s = o ? cJSON_GetObjectItemCaseSensitive(o, "status") : NULL;
-    const cJSON *c = o ? cJSON_GetObjectItemCaseSensitive(o, "commit") : NULL;
     const cJSON *r =
         o ? cJSON_GetObjectItemCaseSensitive(o, "unstable_reason") : NULL;
-    /* the commit: run.json's (a -dirty one has no baseline of its own in
-     * the history), the caller's for this build's sources, or the one the
-     * history names for its source hash */
-    char commit[64] = "";
-    if (cJSON_IsString(c) && id_name(c->valuestring) &&
-        strcmp(c->valuestring, "unknown"))
-      snprintf(commit, sizeof commit, "%s", c->valuestring);
-    else if (jd->commit && !strcmp(hash, vsph_source_hash_id))
-      snprintf(commit, sizeof commit, "%s", jd->commit);
-    char *then = baseline_then(jd->history, commit);
-    if (!then) {
-      char h[64];
-      commit_of(tsv, hash, h, sizeof h);
-      if (h[0]) {
-        snprintf(commit, sizeof commit, "%s", h);
-        then = baseline_then(jd->history, commit);
-      }
-    }
-    const char *scene =
-        cJSON_IsString(sc) && id_name(sc->valuestring) ? sc->valuestring : "?";
-    char why[400];
-    judge_entry(jd, names[k], en.settings, scene, hash, commit, then, now, why,
-                sizeof why);
-    free(then);
+    char commit[64], why[400];
+    entry_verdict(jd, tsv, now, names[k], &en, commit, sizeof commit, why,
+                  sizeof why);
     const char *status =
         cJSON_IsString(s) && id_name(s->valuestring) ? s->valuestring : "?";
     fputs("| ", m);

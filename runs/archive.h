@@ -72,4 +72,13 @@ struct vsph_archive_judge {
 int vsph_archive_summarise(const char *archive,
                            const struct vsph_archive_judge *jd);
 
+/** @brief Which runs of the FULL plan in @p jd stand in @p archive, by
+ *  the rule of vsph_archive_summarise: @p stands[k] (jd->nplan of them)
+ *  is 1 when the archive holds a whole entry of name plan_name[k] that
+ *  stands, else 0 (absent, unended, stale or unjudged). Reads only; an
+ *  archive that does not exist holds nothing. @return VSPH_OK;
+ *  VSPH_EINVAL (@p archive is not a run archive). */
+int vsph_archive_standing(const char *archive,
+                          const struct vsph_archive_judge *jd, int *stands);
+
 #endif /* VSPH_RUNS_ARCHIVE_H */

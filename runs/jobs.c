@@ -546,7 +546,7 @@ static size_t missing(struct vsph_jobs *J, struct vsph_jobs_job ***out,
   for (size_t k = 0; k < P->n; k++) {
     P->job[k].failed = 0;
     P->job[k].cached = vsph_rundir_key_matches(P->job[k].dir, P->job[k].key);
-    if (!P->job[k].cached) (*out)[m++] = &P->job[k];
+    if (!P->job[k].cached && !P->job[k].archived) (*out)[m++] = &P->job[k];
   }
   qsort(*out, m, sizeof **out, by_cost);
   return J->budget_s > 0.0 ? budget_fit(J, *out, m, lanes) : m;

@@ -39,7 +39,8 @@ struct vsph_jobs_job {
   double particles, steps, bytes; /* the solver's estimate */
   double neighbours;              /* of each particle, every pass */
   int cached;                     /* its key.txt matches */
-  int failed;                     /* the pool: did not end */
+  int archived; /* a run archive holds it, standing: a budget skips it */
+  int failed;   /* the pool: did not end */
 };
 
 /** The runs of a report (or of any caller that wants many runs): where

@@ -14,7 +14,10 @@
 #include "../common/params.h"
 #include "../common/status.h"
 #include "../io/files.h"
+#include "../reports/report.h"
 #include "../reports/report_internal.h"
+#include "../runs/archive.h"
+#include "../runs/folder.h"
 #include "../runs/rundir.h"
 #include "../solver/run.h"
 #include "check_suites.h"
@@ -346,6 +349,84 @@ START_TEST(test_budget_report) {
 }
 END_TEST
 
+/* `vsph report --budget --skip-archived AR`: the quick plan's costliest
+ * run, its entry in AR sealed under its plan key by this build's sources
+ * (so it stands: the plan asks for it with its settings, and its scene's
+ * rows of the baseline are today's), is not started; the budget starts the
+ * next two costliest instead, and says how many stand. Without the flag
+ * the same budget starts it. A folder that is not there is refused. */
+START_TEST(test_budget_skip_archived) {
+  const char *dir = tmpdir();
+  char path[1200], cmd[2000], ar[600], name[300];
+  snprintf(path, sizeof path, "%s/r", dir);
+  struct vsph_jobs jobs;
+  memset(&jobs, 0, sizeof jobs);
+  ck_assert_int_eq(vsph_report_plan_jobs(path, 0, &jobs), 0);
+  size_t top = 0; /* the costliest, as the budget orders them */
+  for (size_t k = 1; k < jobs.n; k++)
+    if (jobs.job[k].particles * jobs.job[k].neighbours * jobs.job[k].steps >
+        jobs.job[top].particles * jobs.job[top].neighbours *
+            jobs.job[top].steps)
+      top = k;
+  ck_assert_int_eq(jobs.job[top].kind, VSPH_JOBS_RUN);
+  snprintf(name, sizeof name, "%s", strrchr(jobs.job[top].dir, '/') + 1);
+  /* an empty archive, then the entry */
+  snprintf(path, sizeof path, "%s/empty/runs", dir);
+  ck_assert_int_eq(vsph_files_mkdir(path), 0);
+  snprintf(path, sizeof path, "%s/empty", dir);
+  snprintf(ar, sizeof ar, "%s/ar", dir);
+  struct vsph_archive_counts n;
+  ck_assert_int_eq(vsph_archive_store(path, ar, NULL, NULL, &n), 0);
+  snprintf(path, sizeof path, "%s/runs/%s", ar, name);
+  struct vsph_folder f;
+  ck_assert_int_eq(vsph_folder_claim(&f, path, &vsph_folder_scene_run), 0);
+  snprintf(cmd, sizeof cmd, "{\"scene\": \"%s\", \"status\": \"ok\"}\n",
+           jobs.job[top].scene);
+  ck_assert_int_eq(vsph_files_write(path, "run.json", cmd), 0);
+  ck_assert_int_eq(vsph_folder_seal(&f, jobs.job[top].key, NULL), 0);
+  vsph_folder_release(&f);
+  /* today's baseline (the scene's rows), read from the current folder */
+  snprintf(path, sizeof path, "%s/reports", dir);
+  ck_assert_int_eq(vsph_files_mkdir(path), 0);
+  char rows[200];
+  snprintf(rows, sizeof rows, "scene,visc\n%s,mgf\n", jobs.job[top].scene);
+  ck_assert_int_eq(vsph_files_write(path, "baseline.csv", rows), 0);
+  const size_t nplan = jobs.n;
+  vsph_jobs_plan_free(&jobs);
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --budget 2s "
+           "--skip-archived ar --out r",
+           dir);
+  const struct vsph_test_outcome *o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  char said[200];
+  snprintf(said, sizeof said, "1 of the %zu runs stand in ar", nplan);
+  ck_assert_msg(strstr(o->err, said), "want '%s' in %s", said, o->err);
+  snprintf(path, sizeof path, "%s/r/runs/%s", dir, name);
+  ck_assert_msg(access(path, F_OK) != 0, "%s was run", path);
+  snprintf(cmd, sizeof cmd, "ls -d %s/r/runs/*/ | wc -l", dir);
+  ck_assert_int_eq(atoi(vsph_test_shell(cmd)->out), 2);
+  /* without the flag it is the first to start */
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --budget 2s "
+           "--out r2",
+           dir);
+  ck_assert_int_eq(vsph_test_shell(cmd)->status, 0);
+  snprintf(path, sizeof path, "%s/r2/runs/%s", dir, name);
+  ck_assert_msg(access(path, F_OK) == 0, "%s was not run", path);
+  /* a folder that is not there: refused, nothing made */
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --budget 2s "
+           "--skip-archived nowhere --out r3",
+           dir);
+  o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 2 && o->err_lines == 1, "%s", o->err);
+  snprintf(path, sizeof path, "%s/r3", dir);
+  ck_assert_int_ne(access(path, F_OK), 0);
+  rmrf(dir);
+}
+END_TEST
+
 Suite *vsph_jobs_suite(void) {
   Suite *s = suite_create("jobs");
   TCase *tc = tcase_create("jobs");
@@ -357,6 +438,7 @@ Suite *vsph_jobs_suite(void) {
   tcase_add_test(tc, test_plan_listing);
   tcase_add_test(tc, test_budget_fit);
   tcase_add_test(tc, test_budget_report);
+  tcase_add_test(tc, test_budget_skip_archived);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -553,7 +553,20 @@ static void assert_stands(const char *ar, const char *name,
                 line);
 }
 
-/* summary.md's rule, case by case: an entry made by this build's sources
+/* vsph_archive_standing agrees, run by run of @p jd's plan, with
+ * @p want (1 stands). */
+static void assert_standing(const char *ar, const struct vsph_archive_judge *jd,
+                            const int *want) {
+  int got[8];
+  ck_assert_uint_le(jd->nplan, 8);
+  ck_assert_int_eq(vsph_archive_standing(ar, jd, got), 0);
+  for (size_t k = 0; k < jd->nplan; k++)
+    ck_assert_msg(got[k] == want[k], "%s: stands %d, want %d", jd->plan_name[k],
+                  got[k], want[k]);
+}
+
+/* summary.md's rule, case by case (and vsph_archive_standing, the
+ * budget's reading of it, run by run): an entry made by this build's sources
  * stands when the plan asks for it with its settings; one the plan does
  * not name, or names with other settings, does not; an entry of other
  * sources (a sealed folder under another source hash) is unjudged
@@ -613,10 +626,13 @@ START_TEST(test_archive_summary) {
       "scene,visc,res\npoiseuille,mgf,16\npoiseuille,pvwf,16\ncouette,mgf,"
       "16\n";
   put_text(dir, "baseline.csv", now);
-  const char *names[] = {"a", "z", "z2"}, *keys[] = {key, key, key};
+  /* (and "gone", which the plan names and the archive lacks) */
+  const char *names[] = {"a", "z", "z2", "gone"},
+             *keys[] = {key, key, key, key};
   struct vsph_archive_judge jd = {
-      .baseline = base, .nplan = 3, .plan_name = names, .plan_key = keys};
+      .baseline = base, .nplan = 4, .plan_name = names, .plan_key = keys};
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
+  assert_standing(ar, &jd, (const int[]){1, 0, 0, 0});
   assert_stands(ar, "a", "| yes |");
   assert_stands(ar, "z", "unjudged");
   assert_stands(ar, "z", "(a\\|b c) |");
@@ -633,6 +649,7 @@ START_TEST(test_archive_summary) {
            "mgf,8\n");
   jd.history = hist;
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
+  assert_standing(ar, &jd, (const int[]){1, 1, 1, 0});
   assert_stands(ar, "z", "| yes |");
   assert_stands(ar, "z", ", c0ffee |");
   assert_stands(ar, "z2", "| yes |");
@@ -641,6 +658,7 @@ START_TEST(test_archive_summary) {
   put_text(hist, "c0ffee.csv",
            "scene,visc,res\npoiseuille,mgf,8\npoiseuille,pvwf,16\n");
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
+  assert_standing(ar, &jd, (const int[]){1, 0, 0, 0});
   assert_stands(ar, "z", "no: poiseuille's rows");
   assert_stands(ar, "a", "| yes |");
   /* the plan: a under other settings, z not at all */
@@ -650,6 +668,7 @@ START_TEST(test_archive_summary) {
   keys[0] = other;
   jd.nplan = 1;
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
+  assert_standing(ar, &jd, (const int[]){0});
   assert_stands(ar, "a", "other settings");
   assert_stands(ar, "z", "no run of this name");
   /* the tally counts the plan's runs only */
