@@ -117,9 +117,16 @@ test: check
 
 # The main job: the whole report into reports/out/ (quick; FULL=1 for the
 # paper's resolutions and end times).
+# The quick report shows beside its figures the paper-resolution runs of
+# reports/full, judged with the history scripts/source-commits keeps (none
+# outside a git clone: the archive's older runs are then unjudged).
 report: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph
-	$(BUILD)/vsph report --out reports/out $(if $(FULL),--full)
+	@scripts/source-commits $(BUILD)/history >/dev/null 2>&1 || \
+	  echo "make report: no git history here: reports/full's older runs stay unjudged"
+	VSPH_ARCHIVE_HISTORY=$$(test -f $(BUILD)/history/commits.tsv && \
+	  echo $(BUILD)/history) $(BUILD)/vsph report --out reports/out \
+	  $(if $(FULL),--full,--beside reports/full)
 
 # Re-record the regression baseline (tests/check_baseline.c) after an
 # intended change to the numerics; commit reports/baseline.csv with a reason.

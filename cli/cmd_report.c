@@ -113,7 +113,7 @@ static int judge_inputs(void) {
 int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
   const char *partition = NULL, *limit = NULL, *budget = NULL, *archive = NULL;
-  const char *skip = NULL;
+  const char *skip = NULL, *beside = NULL;
   int full = 0, plan = 0, slurm = 0, assemble = 0;
   size_t jobs = 0, threads = 0;
   const struct vsph_args_spec own[] = {
@@ -163,6 +163,11 @@ int vsph_cmd_report_main(int argc, char **argv) {
        "summary.md judges them, from $VSPH_ARCHIVE_HISTORY and "
        "reports/baseline.csv), so a sitting goes on from the archive "
        "whatever build made it (make full-sitting)"},
+      {"--beside", VSPH_ARGS_STRING, &beside, "ADIR",
+       "the summary shows, beside the quick ladder's finest run of each "
+       "scene and formulation, the run at the paper's resolution from the "
+       "run archive ADIR (reports/full; make report gives it), with "
+       "whether it stands (judged as --archive's summary.md judges it)"},
       {"--archive", VSPH_ARGS_STRING, &archive, "ADIR",
        "run nothing: store the sealed runs of DIR/runs in the run archive "
        "ADIR (reports/full for the FULL report): of each, what the parts "
@@ -277,8 +282,17 @@ int vsph_cmd_report_main(int argc, char **argv) {
     const int bad = judge_inputs();
     if (bad) return bad;
   }
+  if (beside) {
+    struct stat as;
+    if (!*beside || strlen(beside) > 400 || stat(beside, &as) != 0 ||
+        !S_ISDIR(as.st_mode))
+      return vsph_args_fail(CMD, "--beside: '%.400s' is not a folder", beside);
+    const int bad = judge_inputs();
+    if (bad) return bad;
+  }
   if (archive) {
-    if (skip || plan || slurm || assemble || pool || budget || only || full)
+    if (beside || skip || plan || slurm || assemble || pool || budget || only ||
+        full)
       return vsph_args_fail(CMD,
                             "--archive runs nothing: it takes --out alone");
     if (!*archive || strlen(archive) > 400)
@@ -384,6 +398,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
                       : NULL,
       .commit = NULL};
   rp.skip_archive = skip;
+  rp.beside = beside;
   rp.judge = &judge;
   /* SIGINT/SIGTERM: the runs in progress stop at a checkpoint, uncached */
   const volatile sig_atomic_t *stop = rp.stop = vsph_args_catch_stop();

@@ -462,6 +462,8 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   R->full = rp->full;
   R->scenes = rp->scenes;
   R->stop = rp->stop;
+  R->beside = rp->beside;
+  R->judge = rp->judge;
   const double t_all = omp_get_wtime();
   vsph_sysinfo_load(R->load[0]);
   int st = VSPH_OK;

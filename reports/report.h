@@ -50,6 +50,10 @@ struct vsph_report_props {
    *  commit; its plan is the report's) are not run */
   const char *skip_archive;
   const struct vsph_archive_judge *judge;
+  /** if not NULL: the run archive (reports/full) whose runs at the
+   *  paper's resolutions the summary shows beside the quick figures, each
+   *  judged by *judge (which must then be set) */
+  const char *beside;
 };
 
 /** How the report's missing runs are run. Every mode first lists every

@@ -4,13 +4,17 @@
  * cache; the scene claims read the runs of sections 5-8. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "../analysis/dissipation.h"
 #include "../analysis/scaling.h"
 #include "../common/consts.h"
 #include "../common/status.h"
 #include "../kernels/kernel.h"
+#include "../solver/scene.h"
+#include "report.h"
 #include "report_internal.h"
 
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
@@ -401,6 +405,133 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
   return st;
 }
 
+/* ------------------------------------- the paper's resolutions, archived */
+
+/* Scene @p sc's figure of run @p r, as its claims measure it: the vortex
+ * patch's largest E_k decay error against the Bessel series, the
+ * stretching square's (P - P_exact)/|P_exact| at t = 0 (its E_k reference
+ * is built from runs at the report's own fidelity), the wave's energy
+ * lost by its last row over Lighthill's and its E_k error; @p err: the
+ * error at hand, or NAN to compute it against the run's own reference. */
+static void scene_figure(char *buf, size_t len, int sc,
+                         const struct vsph_jobs_run *r, double err) {
+  char status[120];
+  if (r->ok)
+    snprintf(status, sizeof status, "ok to t = %.4g s", r->t[r->nrow - 1]);
+  else
+    snprintf(status, sizeof status, "**unstable** at t = %.3g s",
+             r->t_unstable);
+  if (!isfinite(err) && sc != 1) err = vsph_report_runs_error(r, NULL);
+  if (sc == 0)
+    snprintf(buf, len, "%s; E_k error %.2e", status, err);
+  else if (sc == 1)
+    snprintf(buf, len, "%s; (P - P_exact)/\\|P_exact\\| at t = 0: %+.2e",
+             status, vsph_report_runs_diss0(r));
+  else
+    snprintf(buf, len, "%s; energy lost over Lighthill's %.3f, E_k error %.2e",
+             status, vsph_report_runs_loss_ratio(r, r->nrow - 1), err);
+}
+
+/* The FULL plan's runs that stand in R->beside, by folder name: stands[k]
+ * for names[k] (k < *n), the names held in *pool; free all three. */
+static int standing(struct vsph_report *R, const char ***names, int **stands,
+                    char **pool, size_t *n) {
+  struct vsph_jobs jobs;
+  memset(&jobs, 0, sizeof jobs);
+  int st = vsph_report_plan_jobs(R->dir, 1, &jobs);
+  if (st) return st;
+  const char **keys = calloc(jobs.n + 1, sizeof *keys);
+  *names = calloc(jobs.n + 1, sizeof **names);
+  *stands = calloc(jobs.n + 1, sizeof **stands);
+  *pool = calloc(jobs.n + 1, sizeof jobs.job[0].dir);
+  if (!keys || !*names || !*stands || !*pool) {
+    free(keys);
+    vsph_jobs_plan_free(&jobs);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot list the FULL plan");
+  }
+  for (size_t k = 0; k < jobs.n; k++) {
+    const char *slash = strrchr(jobs.job[k].dir, '/');
+    char *at = *pool + k * sizeof jobs.job[0].dir;
+    snprintf(at, sizeof jobs.job[0].dir, "%s",
+             slash ? slash + 1 : jobs.job[k].dir);
+    (*names)[k] = at;
+    keys[k] = jobs.job[k].key ? jobs.job[k].key : "";
+  }
+  struct vsph_archive_judge jd = *R->judge;
+  jd.nplan = jobs.n;
+  jd.plan_name = *names;
+  jd.plan_key = keys;
+  st = vsph_archive_standing(R->beside, &jd, *stands);
+  *n = jobs.n;
+  free(keys);
+  vsph_jobs_plan_free(&jobs);
+  return st;
+}
+
+int vsph_report_claims_beside(struct vsph_report *R,
+                              const struct vsph_jobs_run run[][NFORM],
+                              const double err[][NFORM]) {
+  const char **names = NULL;
+  int *stands = NULL;
+  char *pool = NULL;
+  size_t n = 0;
+  int st = standing(R, &names, &stands, &pool, &n);
+  size_t held = 0, stand = 0;
+  char *rows = NULL;
+  size_t rlen = 0;
+  FILE *m = st ? NULL : open_memstream(&rows, &rlen);
+  if (!st && !m) st = VSPH_ENOMEM;
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
+    for (int f = 0; f < NFORM && !st; f++) {
+      const struct vsph_report_ladderdef *Q = vsph_report_runs_ladder(R, sc, 1);
+      const struct vsph_report_ladderdef *F = vsph_report_runs_full_ladder(sc);
+      const struct vsph_scene_type *t = vsph_scene_find(F->scene);
+      const char *dx = t ? t->length_name : "res";
+      char name[128], dir[700], quick[320], full[320] = "not archived yet";
+      snprintf(name, sizeof name, "%s-%s-%zu", F->scene, vsph_viscous_name(f),
+               F->res[VSPH_REPORT_LADDER - 1]);
+      scene_figure(quick, sizeof quick, sc, &run[sc][f], err[sc][f]);
+      const char *judged = "–";
+      snprintf(dir, sizeof dir, "%s/runs/%s", R->beside, name);
+      struct vsph_jobs_run r;
+      if (access(dir, F_OK) == 0) {
+        if ((st = vsph_jobs_load(dir, &r))) break;
+        held++;
+        scene_figure(full, sizeof full, sc, &r, (double)NAN);
+        vsph_jobs_run_free(&r);
+        size_t k = 0;
+        while (k < n && strcmp(names[k], name)) k++;
+        const int yes = k < n && stands[k];
+        stand += (size_t)yes;
+        judged = yes ? "yes" : "no (summary.md says why)";
+      }
+      fprintf(m,
+              "| %s | %s | %s/dx = %zu, t_end %g s: %s | %s/dx = %zu, "
+              "t_end %g s: %s | %s |\n",
+              F->scene, vsph_viscous_label(f), dx,
+              Q->res[VSPH_REPORT_LADDER - 1], Q->t_end, quick, dx,
+              F->res[VSPH_REPORT_LADDER - 1], F->t_end, full, judged);
+    }
+  if (m && fclose(m) != 0 && !st) st = VSPH_ENOMEM;
+  free(pool);
+  free(names);
+  free(stands);
+  if (!st) {
+    vsph_text_set(&R->tv, "archive", "%s", R->beside);
+    vsph_text_set(&R->tv, "held", "%zu", held);
+    vsph_text_set(&R->tv, "stand", "%zu", stand);
+    vsph_text_set(&R->tv, "total", "%d", VSPH_REPORT_NSCENES * NFORM);
+    st = vsph_report_say(R, "claims.archive_head");
+  }
+  if (!st) {
+    fputs(rows, R->md);
+    fputc('\n', R->md);
+  }
+  free(rows);
+  if (st) return st;
+  return ferror(R->md) ? VSPH_EIO : VSPH_OK;
+}
+
 int vsph_report_claims_plan(struct vsph_report *R) {
   /* every scene, whatever the filter, and the runs of sections 10, 11 */
   int st = vsph_report_runs_plan_ladders(R, 1);
@@ -431,13 +562,19 @@ int vsph_report_claims_write(struct vsph_report *R) {
   R->claim_see = "contact";
   if (!st) st = vsph_report_contact_claims(R);
   R->claim_see = NULL;
+  if (!st) {
+    vsph_text_set(&R->tv, "quick_note", "%s",
+                  R->full ? "" : vsph_text_get("claims.quick_note"));
+    st = vsph_report_say(R, "claims.head");
+  }
+  if (!st) st = vsph_report_claims_table(R);
+  if (!st && R->beside) /* (C11 adds const to arrays of arrays by cast) */
+    st = vsph_report_claims_beside(R,
+                                   (const struct vsph_jobs_run(*)[NFORM])fi.run,
+                                   (const double(*)[NFORM])fi.err);
   for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++)
     for (int f = 0; f < NFORM; f++) vsph_report_runs_free(&fi.run[sc][f]);
-  if (st) return st;
-  vsph_text_set(&R->tv, "quick_note", "%s",
-                R->full ? "" : vsph_text_get("claims.quick_note"));
-  if ((st = vsph_report_say(R, "claims.head"))) return st;
-  return vsph_report_claims_table(R);
+  return st;
 }
 
 /* The verdict classes: the word each verdict is marked with, the symbol

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "../runs/archive.h"
 #include "../runs/jobs.h"
 #include "../solver/viscous.h"
 #include "text.h"
@@ -98,6 +99,9 @@ struct vsph_report {
   double runs_wall;      /* their wall time (s) */
   const char *made_by;   /* who made them (run.json) */
   double load[2][3];     /* load averages before and after (run.json) */
+  const char *beside;    /* a run archive whose FULL runs the summary shows
+                            beside the quick ones, or NULL */
+  const struct vsph_archive_judge *judge; /* what judges its entries */
 };
 
 /* ------------------------------------------------------ report.c helpers */
@@ -129,6 +133,10 @@ int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
 #define VSPH_REPORT_BASA "Solver:kernel=cubic", "Solver:hdx=1.5699"
 /* Adami et al.'s kernel for the cavity: the quintic spline with h = dx */
 #define VSPH_REPORT_ADAMI "Solver:kernel=quintic", "Solver:hdx=1"
+
+/* The FULL ladder of scene @p sc (the paper's resolutions), whatever the
+ * report's fidelity. */
+const struct vsph_report_ladderdef *vsph_report_runs_full_ladder(int sc);
 
 /* The ladder of scene @p sc (0..VSPH_REPORT_NSCENES-1) at the report's
  * fidelity, or the quick one when @p quick. */
@@ -296,6 +304,16 @@ enum {
  * "differs..." or "not reproduced...", "not tested..."; -1 for any other
  * start (vsph_report_claim refuses such a verdict). */
 int vsph_report_claims_class(const char *verdict);
+
+/* Beside the quick ladder's finest run of each scene and formulation
+ * (@p run, with its E_k error @p err: the square's against its Richardson
+ * reference), the FULL plan's run (the paper's resolution) from the run
+ * archive R->beside where it holds it, with whether it stands (judged by
+ * R->judge): a table after the claims. */
+int vsph_report_claims_beside(
+    struct vsph_report *R,
+    const struct vsph_jobs_run run[][VSPH_VISCOUS_PAPER_COUNT],
+    const double err[][VSPH_VISCOUS_PAPER_COUNT]);
 
 /* The tally of R->claims by class, then the claims table (each verdict
  * marked with its class's word, symbol and colour class), into R->md. */

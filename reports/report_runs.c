@@ -36,6 +36,10 @@ const struct vsph_report_ladderdef *vsph_report_runs_ladder(
   return R->full && !quick ? &FULL[sc] : &QUICK[sc];
 }
 
+const struct vsph_report_ladderdef *vsph_report_runs_full_ladder(int sc) {
+  return &FULL[sc];
+}
+
 void vsph_report_runs_free(struct vsph_jobs_run *r) { vsph_jobs_run_free(r); }
 
 const char *const vsph_report_runs_cartesian[2] = {"Scene:layout=cartesian",

@@ -1159,6 +1159,16 @@ static int load_run_json(struct vsph_jobs_run *r) {
   return VSPH_OK;
 }
 
+int vsph_jobs_load(const char *dir, struct vsph_jobs_run *out) {
+  memset(out, 0, sizeof *out);
+  if (strlen(dir) >= sizeof out->dir)
+    VSPH_FAIL(VSPH_EINVAL, "%.60s...: the folder's name is too long", dir);
+  snprintf(out->dir, sizeof out->dir, "%s", dir);
+  int st = load_run_json(out);
+  if (!st) st = load_energy(out);
+  return st;
+}
+
 int vsph_jobs_get(const struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
                   struct vsph_jobs_run *out) {
   memset(out, 0, sizeof *out);
@@ -1166,9 +1176,8 @@ int vsph_jobs_get(const struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
   int st = vsph_jobs_run(J, rs, &j);
   snprintf(out->dir, sizeof out->dir, "%s", j.dir);
   if (!st) st = vsph_jobs_ready(J, &j);
+  if (!st) st = vsph_jobs_load(j.dir, out);
   vsph_jobs_free(&j);
-  if (!st) st = load_run_json(out);
-  if (!st) st = load_energy(out);
   return st;
 }
 

@@ -187,6 +187,12 @@ int vsph_jobs_slurm(struct vsph_jobs *J, const struct vsph_jobs_slurm *s);
  * (a space, a quote, '%') is refused, and left unmade. */
 int vsph_jobs_slurm_dir(const char *dir, char *abs, size_t len);
 
+/** @brief A run's tables (run.json, energy.csv) from any folder @p dir
+ *  that holds them (a run archive's entry): what vsph_jobs_get reads,
+ *  without a plan. Free with vsph_jobs_run_free.
+ *  @return VSPH_OK, or a failure naming the file. */
+int vsph_jobs_load(const char *dir, struct vsph_jobs_run *out);
+
 /** @brief A run of the plan read back (vsph_jobs_ready, then its seal,
  *  run.json and energy.csv).
  *  @return VSPH_OK, or a failure naming the run or the file. */

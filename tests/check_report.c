@@ -8,8 +8,11 @@
 #include <string.h>
 
 #include "../common/shell.h"
+#include "../io/files.h"
 #include "../io/json.h"
+#include "../reports/report.h"
 #include "../reports/report_internal.h"
+#include "../runs/folder.h"
 #include "check_suites.h"
 
 /* Each verdict form the claims code writes falls in its class. */
@@ -209,12 +212,131 @@ START_TEST(test_command_reads_back) {
 }
 END_TEST
 
+/* The summary's table of the paper's resolutions (report_claims.c): an
+ * archived FULL run (the standing wave with MGF at H/dx = 240, sealed
+ * under its FULL plan key, its energy table made by hand) is shown with
+ * its figures, computed here by hand from its rows, and judged to stand
+ * (made by these sources, its scene's rows in today's baseline); every
+ * other scene and formulation says it is not archived yet; once the
+ * baseline lacks its scene's rows (unjudged) it does not stand. */
+START_TEST(test_claims_beside) {
+  char dir[] = "/tmp/vsph_besideXXXXXX", path[700], ar[600], rep[600],
+       base[600];
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  snprintf(rep, sizeof rep, "%s/rep", dir);
+  snprintf(ar, sizeof ar, "%s/ar", dir);
+  struct vsph_jobs jobs;
+  memset(&jobs, 0, sizeof jobs);
+  ck_assert_int_eq(vsph_report_plan_jobs(rep, 1, &jobs), 0);
+  const char *key = NULL;
+  for (size_t k = 0; k < jobs.n; k++)
+    if (!strcmp(strrchr(jobs.job[k].dir, '/') + 1, "standing-wave-mgf-240"))
+      key = jobs.job[k].key;
+  ck_assert_ptr_nonnull(key);
+  snprintf(path, sizeof path, "%s/empty/runs", dir);
+  ck_assert_int_eq(vsph_files_mkdir(path), 0);
+  snprintf(path, sizeof path, "%s/empty", dir);
+  struct vsph_archive_counts n;
+  ck_assert_int_eq(vsph_archive_store(path, ar, NULL, NULL, &n), 0);
+  snprintf(path, sizeof path, "%s/runs/standing-wave-mgf-240", ar);
+  struct vsph_folder f;
+  ck_assert_int_eq(vsph_folder_claim(&f, path, &vsph_folder_scene_run), 0);
+  ck_assert_int_eq(
+      vsph_files_write(path, "run.json",
+                       "{\"scene\": \"standing-wave\", \"status\": \"ok\"}\n"),
+      0);
+  ck_assert_int_eq(
+      vsph_files_write(path, "energy.csv",
+                       "t,Ek,Ep,Ec,P_visc,residual,dEk_dt,Ek_ref,dEk_ref,"
+                       "Em_ref,dEm_ref\n"
+                       "0,2,1,0,-1,0,-1,2,-1,3,-1\n"
+                       "4,1.5,0.9,0,-1,0,-1,1.8,-1,2.7,-1\n"
+                       "8,1,0.8,0,-1,0,-1,1.2,-1,2.4,-1\n"),
+      0);
+  ck_assert_int_eq(vsph_folder_seal(&f, key, NULL), 0);
+  vsph_folder_release(&f);
+  vsph_jobs_plan_free(&jobs);
+  snprintf(base, sizeof base, "%s/baseline.csv", dir);
+  FILE *b = fopen(base, "w");
+  ck_assert_ptr_nonnull(b);
+  fputs("scene,visc\nstanding-wave,mgf\n", b);
+  ck_assert_int_eq(fclose(b), 0);
+  /* the quick runs: two rows each, all alike */
+  static const double t[2] = {0, 3}, Ek[2] = {1, 0.5}, z[2] = {0, 0},
+                      m1[2] = {-1, -1}, Em[2] = {1, 0.8};
+  struct vsph_jobs_run run[VSPH_REPORT_NSCENES][VSPH_VISCOUS_PAPER_COUNT];
+  double err[VSPH_REPORT_NSCENES][VSPH_VISCOUS_PAPER_COUNT];
+  memset(run, 0, sizeof run);
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++)
+    for (int k = 0; k < VSPH_VISCOUS_PAPER_COUNT; k++) {
+      struct vsph_jobs_run *r = &run[sc][k];
+      r->ok = 1;
+      r->nrow = 2;
+      r->t = t;
+      r->Ek = r->Ekr = Ek;
+      r->Ep = r->Ec = r->res_b = z;
+      r->Pv = r->dEk = r->dEkr = r->dEmr = m1;
+      r->Emr = Em;
+      err[sc][k] = 0.0123;
+    }
+  const struct vsph_archive_judge jd = {.baseline = base};
+  struct vsph_report R;
+  memset(&R, 0, sizeof R);
+  R.dir = rep;
+  R.beside = ar;
+  R.judge = &jd;
+  for (int pass = 0; pass < 2; pass++) {
+    R.md = tmpfile();
+    ck_assert_ptr_nonnull(R.md);
+    ck_assert_int_eq(
+        vsph_report_claims_beside(
+            &R, (const struct vsph_jobs_run(*)[VSPH_VISCOUS_PAPER_COUNT])run,
+            (const double(*)[VSPH_VISCOUS_PAPER_COUNT])err),
+        0);
+    const long len = ftell(R.md);
+    char *text = calloc((size_t)len + 1, 1);
+    rewind(R.md);
+    ck_assert_uint_eq(fread(text, 1, (size_t)len, R.md), (size_t)len);
+    fclose(R.md);
+    /* by hand: energy lost by t = 8, (2 + 1 - 1 - 0.8)/2 = 0.6, over
+     * Lighthill's 1 - 2.4/3 = 0.2: 3.000; the E_k error, the largest
+     * |Ek/Ek(0) - Ek_ref/Ek_ref(0)|: |0.75 - 0.9| = 0.15 at t = 4. The
+     * quick run's: (1 - 0.5)/1 over 1 - 0.8/1, 2.500; its error as given */
+    ck_assert_msg(strstr(text,
+                         "| standing-wave | MGF | H/dx = 40, t_end 3 s: "
+                         "ok to t = 3 s; energy lost over Lighthill's "
+                         "2.500, E_k error 1.23e-02 | H/dx = 240, "
+                         "t_end 8 s: ok to t = 8 s; energy lost over "
+                         "Lighthill's 3.000, E_k error 1.50e-01 |"),
+                  "%s", text);
+    ck_assert_msg(strstr(text, pass ? "1.50e-01 | no (summary.md says why) |"
+                                    : "1.50e-01 | yes |"),
+                  "%s", text);
+    ck_assert_msg(strstr(text, pass ? "1 of the 9 are archived, 0 of them"
+                                    : "1 of the 9 are archived, 1 of them"),
+                  "%s", text);
+    ck_assert_uint_eq(count(text, "not archived yet | – |"), 8);
+    free(text);
+    /* today's baseline without the scene's rows: unjudged, so it does
+     * not stand */
+    b = fopen(base, "w");
+    ck_assert_ptr_nonnull(b);
+    fputs("scene,visc\nvortex-patch,mgf\n", b);
+    ck_assert_int_eq(fclose(b), 0);
+  }
+  char cmd[700];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+  ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
 Suite *vsph_report_suite(void) {
   Suite *s = suite_create("report");
   TCase *tc = tcase_create("frame");
   tcase_add_test(tc, test_verdict_classes);
   tcase_add_test(tc, test_cfl_rule);
   tcase_add_test(tc, test_claims_tally);
+  tcase_add_test(tc, test_claims_beside);
   tcase_add_test(tc, test_time_left);
   tcase_add_test(tc, test_shell_quote);
   tcase_add_test(tc, test_command_reads_back);
