@@ -164,6 +164,19 @@ static inline double vsph_kernel_dfq_quintic(double q2) {
   return q < 3.0 ? -5.0 * (a4 - 6.0 * b4 + 15.0 * c4) / q : 0.0;
 }
 
+/** @brief Quintic spline: f(q) = (3-q)^5 - 6 (2-q)^5 + 15 (1-q)^5, each
+ *  term where positive, 0 for q >= 3 (the kernel's own f, inlined where a
+ *  loop is specialised on it). */
+static inline double vsph_kernel_f_quintic(double q) {
+  /* selects, not branches, so that loops vectorise (each term is 0 where
+   * its base is not positive: all three for q >= 3) */
+  const double a = 3.0 - q, b = 2.0 - q, c = 1.0 - q;
+  const double a5 = a > 0.0 ? a * a * a * a * a : 0.0;
+  const double b5 = b > 0.0 ? b * b * b * b * b : 0.0;
+  const double c5 = c > 0.0 ? c * c * c * c * c : 0.0;
+  return a5 - 6.0 * b5 + 15.0 * c5;
+}
+
 /** @brief Wendland C2 (2-D, 3-D): (df/dq)/q = -5 (1 - q/2)^3. */
 static inline double vsph_kernel_dfq_c2(double q2) {
   const double q = sqrt(q2);

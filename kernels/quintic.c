@@ -5,13 +5,9 @@
 #include "../common/consts.h"
 #include "kernel.h"
 
-static double pow5p(double t) { return t > 0.0 ? t * t * t * t * t : 0.0; }
 static double pow4p(double t) { return t > 0.0 ? t * t * t * t : 0.0; }
 
-static double f_quintic(double q) {
-  if (q >= 3.0) return 0.0;
-  return pow5p(3.0 - q) - 6.0 * pow5p(2.0 - q) + 15.0 * pow5p(1.0 - q);
-}
+static double f_quintic(double q) { return vsph_kernel_f_quintic(q); }
 
 static double df_quintic(double q) {
   if (q >= 3.0) return 0.0;

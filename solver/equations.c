@@ -177,7 +177,7 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
                                 dim > 2 ? p->vel[2] : NULL};
   double cont = 0.0, dsum = 0.0, ap[3] = {0, 0, 0}, av[3] = {0, 0, 0};
   /* the transport-velocity scheme: A_i, the background push's sum */
-  double tA[9] = {0}, tb[3] = {0, 0, 0};
+  double tA[9] = {0};
   const double *const tv[3] = {p->tvel[0], p->tvel[1], p->tvel[2]};
   if (tvf)
     for (int a = 0; a < dim; a++)
@@ -203,10 +203,12 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
   /* the sums, one per component: scalars, so the loop can reduce them
    * lane by lane */
   double ap0 = 0, ap1 = 0, ap2 = 0, av0 = 0, av1 = 0, av2 = 0;
+  double tb0 = 0, tb1 = 0, tb2 = 0; /* the background push's sum */
   while (vsph_pair_gather(&it, dim, kid, &b)) {
     const size_t m = b.m;
 #pragma omp simd reduction(+ : cont, dsum, ap0, ap1, ap2, av0, av1, av2, \
-                              pn, gx0, gx1, gx2) reduction(min : ms2)
+                              pn, gx0, gx1, gx2, tb0, tb1, tb2)         \
+    reduction(min : ms2)
     for (size_t k = 0; k < m; k++) {
       struct vsph_pair pr;
       vsph_pair_at(&b, k, dim, &pr);
@@ -238,7 +240,6 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
       if (tvf) { /* (A_i + A_j) . grad_i W = -F (A_i + A_j) x; 2 pb */
         const struct vsph_pair_vec fbv =
             vsph_pair_pressure(&pr, dim, 2.0 * rc->pb);
-        const double *const fb = fbv.v;
         for (int a = 0; a < dim; a++) {
           double s = 0.0;
           for (int c = 0; c < dim; c++)
@@ -246,8 +247,10 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
                   rho[j] * vel[a][j] * (tv[c][j] - vel[c][j])) *
                  pr.x[c];
           f[a] -= pr.VF * s;
-          tb[a] += fb[a];
         }
+        tb0 += fbv.v[0];
+        if (dim > 1) tb1 += fbv.v[1];
+        if (dim > 2) tb2 += fbv.v[2];
       }
       if (reduce) {
         pn += pp[j];
@@ -291,8 +294,10 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
   vsph_equations_body_force(rc->ep, it.xi, g);
   out->drho[i] = rhoi * cont + rc->dhc * dsum;
   for (int k = 0; k < dim; k++) out->acc[k][i] = rinv * (ap[k] + av[k]) + g[k];
-  if (tvf)
+  if (tvf) {
+    const double tb[3] = {tb0, tb1, tb2};
     for (int k = 0; k < dim; k++) p->bacc[k][i] = rinv * tb[k];
+  }
   if (rc->parts) {
     for (int k = 0; k < dim; k++) out->acc_visc[k][i] = rinv * av[k];
     out->drho_delta[i] = rc->dhc * dsum;
@@ -462,6 +467,37 @@ RHS_CELL_SHAPE(rhs_er3, 3, VSPH_VISCOUS_ER, 0)
 RHS_CELL_SHAPE(rhs_er3d, 3, VSPH_VISCOUS_ER, 1)
 #undef RHS_CELL_SHAPE
 
+/* The same for the transport-velocity scheme's shapes (the cavity after
+ * Adami et al.): 2-D, the quintic spline, no delta term. */
+#define RHS_TVF_SHAPE(name, FORM)                                              \
+  static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
+                     const struct vsph_cells *cells, size_t c, size_t n_fluid, \
+                     struct vsph_equations_out *out, double *min_s2) {         \
+    const struct vsph_viscous_shape sh = {2, FORM};                            \
+    return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, 0,              \
+                    VSPH_KERNEL_DFQ_QUINTIC, 0, 0, 1);                         \
+  }
+RHS_TVF_SHAPE(rhs_tvf_mgf2, VSPH_VISCOUS_MGF)
+RHS_TVF_SHAPE(rhs_tvf_meaf2, VSPH_VISCOUS_MEAF)
+RHS_TVF_SHAPE(rhs_tvf_er2, VSPH_VISCOUS_ER)
+#undef RHS_TVF_SHAPE
+
+/* And for the cubic B-spline in 2-D, no delta term (the channels after
+ * Basa et al.). */
+#define RHS_CUBIC_SHAPE(name, FORM)                                            \
+  static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
+                     const struct vsph_cells *cells, size_t c, size_t n_fluid, \
+                     struct vsph_equations_out *out, double *min_s2) {         \
+    const struct vsph_viscous_shape sh = {2, FORM};                            \
+    return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, 0,              \
+                    VSPH_KERNEL_DFQ_CUBIC, 0, 0, 0);                           \
+  }
+RHS_CUBIC_SHAPE(rhs_cubic_mgf2, VSPH_VISCOUS_MGF)
+RHS_CUBIC_SHAPE(rhs_cubic_meaf2, VSPH_VISCOUS_MEAF)
+RHS_CUBIC_SHAPE(rhs_cubic_pvwf2, VSPH_VISCOUS_PVWF)
+RHS_CUBIC_SHAPE(rhs_cubic_er2, VSPH_VISCOUS_ER)
+#undef RHS_CUBIC_SHAPE
+
 /* Any other shape (1-D, another kernel, model A, the pressure reduction):
  * the general copy. */
 static size_t rhs_general(const struct rhs_ctx *rc,
@@ -488,6 +524,16 @@ static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
                                                {rhs_er3, rhs_er3d}}};
   const int lf = vsph_viscous_loop_form(rc->vl.form);
   const int row = lf <= VSPH_VISCOUS_PVWF ? lf : lf == VSPH_VISCOUS_ER ? 3 : -1;
+  if (rc->ep->loop_general) return rhs_general;
+  if (rc->tvf && rc->pk.dfq_id == VSPH_KERNEL_DFQ_QUINTIC && rc->pk.dim == 2 &&
+      !rc->reduce && !rc->corr && !(rc->dhc > 0.0) &&
+      (row == 0 || row == 1 || row == 3))
+    return row == 0 ? rhs_tvf_mgf2 : row == 1 ? rhs_tvf_meaf2 : rhs_tvf_er2;
+  static rhs_cell_fn *const cubic[4] = {rhs_cubic_mgf2, rhs_cubic_meaf2,
+                                        rhs_cubic_pvwf2, rhs_cubic_er2};
+  if (!rc->tvf && rc->pk.dfq_id == VSPH_KERNEL_DFQ_CUBIC && rc->pk.dim == 2 &&
+      !rc->reduce && !rc->corr && !(rc->dhc > 0.0) && row >= 0)
+    return cubic[row];
   if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 || row < 0 ||
       rc->reduce || rc->corr || rc->tvf)
     return rhs_general;
@@ -1143,6 +1189,84 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   return VSPH_OK;
 }
 
+/* Adami et al.'s walls, particle i of cell range @p rg: a fluid
+ * particle's summation density (with the transport velocity), or a wall
+ * particle's pressure and velocity from its fluid neighbours. QUINTIC:
+ * the 2-D quintic spline inlined (the cavity's), else the kernel's f. */
+VSPH_CONSTS_SPECIALISE void adami_one(const struct vsph_equations_props *ep,
+                                      const struct vsph_walls *w,
+                                      struct vsph_particles *p, size_t n_fluid,
+                                      const struct vsph_pair_kernel *pk,
+                                      const struct vsph_pair_ranges *rg,
+                                      size_t i, double w0, double wf,
+                                      const int quintic) {
+  const int dim = quintic ? 2 : p->dim;
+  const struct vsph_kernel_type *k = ep->visc.kernel;
+  const double h = ep->visc.h, sig = k->sigma[dim - 1];
+  const int wall = p->id[i] >= n_fluid;
+  double S = wall ? 0.0 : p->m[i] * w0, sp = 0.0, su[3] = {0, 0, 0};
+  struct vsph_pair_iter it;
+  struct vsph_pair_chunk b;
+  vsph_pair_begin(&it, pk, p, rg, i);
+  const double *const m = p->m, *const pp = p->p;
+  const double *const v0 = p->vel[0], *const v1 = dim > 1 ? p->vel[1] : NULL,
+                      *const v2 = dim > 2 ? p->vel[2] : NULL;
+  const size_t *const id = p->id;
+  double su0 = 0.0, su1 = 0.0, su2 = 0.0;
+  while (vsph_pair_gather(&it, dim,
+                          quintic ? VSPH_KERNEL_DFQ_QUINTIC : pk->dfq_id, &b)) {
+    if (!wall) { /* summation: every neighbour's mass */
+#pragma omp simd reduction(+ : S)
+      for (size_t q = 0; q < b.m; q++) {
+        struct vsph_pair pr;
+        vsph_pair_at(&b, q, dim, &pr);
+        const double s = sqrt(pr.s2) / h;
+        S += m[pr.j] *
+             (quintic ? sig * vsph_kernel_f_quintic(s)
+                      : vsph_kernel_w(k, dim, s)) *
+             wf;
+      }
+      continue;
+    }
+    /* a wall particle: its fluid neighbours only */
+#pragma omp simd reduction(+ : S, sp, su0, su1, su2)
+    for (size_t q = 0; q < b.m; q++) {
+      struct vsph_pair pr;
+      vsph_pair_at(&b, q, dim, &pr);
+      const size_t j = pr.j;
+      const double s = sqrt(pr.s2) / h;
+      const double w1 = (quintic ? sig * vsph_kernel_f_quintic(s)
+                                 : vsph_kernel_w(k, dim, s)) *
+                        wf;
+      const double wk = id[j] < n_fluid ? w1 : 0.0;
+      S += wk;
+      sp += pp[j] * wk;
+      su0 += v0[j] * wk;
+      if (dim > 1) su1 += v1[j] * wk;
+      if (dim > 2) su2 += v2[j] * wk;
+    }
+  }
+  su[0] = su0, su[1] = su1, su[2] = su2;
+  if (!wall) {
+    p->rho[i] = S;
+    p->p[i] = vsph_equations_pressure(ep, S, 0.0);
+    p->vol[i] = p->m[i] / S;
+    return;
+  }
+  double x[3] = {0, 0, 0}, uw[3];
+  for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
+  vsph_walls_solid_velocity(w, dim, x, uw);
+  const double pw = S > 0.0 ? sp / S : 0.0;
+  const double c2 = ep->c0 * ep->c0;
+  p->p[i] = pw;
+  p->rho[i] = ep->rho0 + pw / c2; /* the linear law inverted */
+  p->vol[i] = p->m[i] / p->rho[i];
+  for (int a = 0; a < dim; a++) {
+    p->vel[a][i] = S > 0.0 ? 2.0 * uw[a] - su[a] / S : uw[a];
+    if (p->tvel[a]) p->tvel[a][i] = p->vel[a][i];
+  }
+}
+
 int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
                                const struct vsph_walls *w,
                                struct vsph_particles *p, size_t n_fluid,
@@ -1151,10 +1275,13 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
     VSPH_FAIL(VSPH_EINVAL, "wall particles need the linear state equation");
   const int dim = p->dim;
   const struct vsph_kernel_type *k = ep->visc.kernel;
-  const double h = ep->visc.h, wf = pow(h, -dim);
-  const double w0 = vsph_kernel_w(k, dim, 0.0) * wf, c2 = ep->c0 * ep->c0;
+  const double h = ep->visc.h;
+  const double wf = pow(h, -dim), w0 = vsph_kernel_w(k, dim, 0.0) * wf;
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, k, dim, h);
+  const int quintic = !ep->loop_general && dim == 2 &&
+                      pk.dfq_id == VSPH_KERNEL_DFQ_QUINTIC &&
+                      k->f[1] == vsph_quintic_type.f[1];
   /* two sweeps: the fluid (density, pressure, volume), then the walls,
    * which read the fluid's pressure */
   for (int sweep = 0; sweep < 2; sweep++) {
@@ -1171,42 +1298,10 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
           p->vol[i] = p->m[i] / p->rho[i];
           continue;
         }
-        double S = wall ? 0.0 : p->m[i] * w0, sp = 0.0, su[3] = {0, 0, 0};
-        struct vsph_pair_iter it;
-        struct vsph_pair_chunk b;
-        vsph_pair_begin(&it, &pk, p, &rg, i);
-        while (vsph_pair_gather(&it, dim, pk.dfq_id, &b))
-          for (size_t q = 0; q < b.m; q++) {
-            struct vsph_pair pr;
-            vsph_pair_at(&b, q, dim, &pr);
-            const size_t j = pr.j;
-            const double wk = vsph_kernel_w(k, dim, sqrt(pr.s2) / h) * wf;
-            if (!wall) { /* summation: every neighbour's mass */
-              S += p->m[j] * wk;
-              continue;
-            }
-            if (p->id[j] >= n_fluid) continue;
-            S += wk;
-            sp += p->p[j] * wk;
-            for (int a = 0; a < dim; a++) su[a] += p->vel[a][j] * wk;
-          }
-        if (!wall) {
-          p->rho[i] = S;
-          p->p[i] = vsph_equations_pressure(ep, S, 0.0);
-          p->vol[i] = p->m[i] / S;
-          continue;
-        }
-        double x[3] = {0, 0, 0}, uw[3];
-        for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
-        vsph_walls_solid_velocity(w, dim, x, uw);
-        const double pw = S > 0.0 ? sp / S : 0.0;
-        p->p[i] = pw;
-        p->rho[i] = ep->rho0 + pw / c2; /* the linear law inverted */
-        p->vol[i] = p->m[i] / p->rho[i];
-        for (int a = 0; a < dim; a++) {
-          p->vel[a][i] = S > 0.0 ? 2.0 * uw[a] - su[a] / S : uw[a];
-          if (p->tvel[a]) p->tvel[a][i] = p->vel[a][i];
-        }
+        if (quintic)
+          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, 1);
+        else
+          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, 0);
       }
     }
   }

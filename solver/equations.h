@@ -108,6 +108,9 @@ struct vsph_equations_props {
                                        numerical viscosity removed, zeta */
   int nmat;                       /*!< contact: materials (>= 1) */
   struct vsph_equations_mat mat[VSPH_EQUATIONS_MAT_MAX]; /*!< contact */
+  int loop_general; /*!< 1: every shape of the gather and of the Adami
+                         walls through the general loop, no specialised
+                         copy (the tests' reference for those copies) */
 };
 
 /** @brief The pair viscosity of contact SPH, P002 eqs. (30)-(32):

@@ -459,31 +459,47 @@ END_TEST
 /* ------------------------------------------- solver against the operator */
 
 /* Scene @p type at @p res across, formulation @p form, delta-SPH
- * @p delta (< 0: the scene's), after three steps and a diagnostics row (which
- * builds the cells for the particles as they are): the set-up of the tests that
- * compare two loops on the same particles. Its props go to @p ip. */
-static struct vsph_integrate *scene_stepped(const struct vsph_scene_type *type,
-                                            int form, size_t res, double delta,
-                                            struct vsph_integrate_props *ip) {
+ * @p delta (< 0: the scene's), kernel @p k at h/dx @p hdx, the
+ * transport-velocity scheme when @p tvf (its background pressure
+ * rho0 c0^2, as vsph run's), after three steps and a diagnostics row
+ * (which builds the cells for the particles as they are): the set-up of
+ * the tests that compare two loops on the same particles. Its props go
+ * to @p ip. */
+static struct vsph_integrate *scene_stepped_k(
+    const struct vsph_scene_type *type, int form, size_t res, double delta,
+    const struct vsph_kernel_type *k, double hdx, int tvf,
+    struct vsph_integrate_props *ip) {
   struct vsph_scene sc;
   ck_assert_int_eq(vsph_scene_init(&sc, type, NULL), 0);
   struct vsph_particles *fluid = NULL;
   ck_assert_int_eq(sc.type->init(&sc, res, &fluid), 0);
-  ck_assert_int_eq(
-      vsph_scene_integrate_props(&sc, form, &vsph_gaussian_type,
-                                 HDX * sc.ref_length / (double)res, ip),
-      0);
+  ck_assert_int_eq(vsph_scene_integrate_props(
+                       &sc, form, k, hdx * sc.ref_length / (double)res, ip),
+                   0);
   ip->cfl = 1.0;
   ip->rho_band = 0.2;
   if (delta >= 0.0) ip->eq.delta = delta;
+  if (tvf) {
+    ip->eq.tvf = 1;
+    ip->eq.pb = ip->eq.rho0 * ip->eq.c0 * ip->eq.c0;
+    ck_assert_int_eq(vsph_particles_tvf_alloc(fluid), 0);
+  }
   struct vsph_integrate *s = vsph_integrate_alloc(ip, fluid);
   ck_assert_ptr_nonnull(s);
-  for (int k = 0; k < 3; k++)
+  for (int step = 0; step < 3; step++)
     ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
   struct vsph_equations_energy en;
   struct vsph_equations_budget b;
   ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &b), 0); /* cells */
   return s;
+}
+
+/* The same with the 3h Gaussian at h/dx 4/3, no transport velocity. */
+static struct vsph_integrate *scene_stepped(const struct vsph_scene_type *type,
+                                            int form, size_t res, double delta,
+                                            struct vsph_integrate_props *ip) {
+  return scene_stepped_k(type, form, res, delta, &vsph_gaussian_type, HDX, 0,
+                         ip);
 }
 
 /* Scene sc_i, formulation form at 16 across (channels 32) after three steps
@@ -628,6 +644,118 @@ START_TEST(test_sweep_gather_threads) {
                   vsph_viscous_name(form), what[q], err, scale);
   }
   vsph_equations_sweep_free(sw);
+  free(buf);
+  vsph_integrate_free(s);
+}
+END_TEST
+
+/* The specialised gathers of the transport-velocity cavity (2-D quintic
+ * spline, h = dx, after Adami et al.) and of the channels (2-D cubic
+ * B-spline, h/dx 1.5699, after Basa et al.), case by case: on 1 and 2
+ * threads they give the same bits; against the general loop on the same
+ * particles (Solver's loop_general) the same interactions and closest
+ * pair, and each field to 1e-12 of the size of its terms (the same pair
+ * functions, sums in another order; the scales as in
+ * test_sweep_gather_threads). The cavity's Adami walls (summation
+ * density, wall pressure and velocity) with the quintic inlined equal the
+ * general kernel's to 1e-13 (sums of ~30 terms in another order). */
+START_TEST(test_gather_shapes) {
+  static const struct {
+    const struct vsph_scene_type *type;
+    const struct vsph_kernel_type *k;
+    double hdx;
+    int tvf, form;
+  } cases[] = {
+      {&vsph_cavity_type, &vsph_quintic_type, 1.0, 1, VSPH_VISCOUS_MGF},
+      {&vsph_cavity_type, &vsph_quintic_type, 1.0, 1, VSPH_VISCOUS_MEAF},
+      {&vsph_cavity_type, &vsph_quintic_type, 1.0, 1, VSPH_VISCOUS_ER},
+      {&vsph_cavity_type, &vsph_quintic_type, 1.0, 1, VSPH_VISCOUS_VI},
+      {&vsph_channel_poiseuille_type, &vsph_cubic_type, 1.5699, 0,
+       VSPH_VISCOUS_MGF},
+      {&vsph_channel_poiseuille_type, &vsph_cubic_type, 1.5699, 0,
+       VSPH_VISCOUS_MEAF},
+      {&vsph_channel_poiseuille_type, &vsph_cubic_type, 1.5699, 0,
+       VSPH_VISCOUS_PVWF},
+      {&vsph_channel_poiseuille_type, &vsph_cubic_type, 1.5699, 0,
+       VSPH_VISCOUS_ER},
+      {&vsph_channel_couette_type, &vsph_cubic_type, 1.5699, 0,
+       VSPH_VISCOUS_CLEARY},
+      {&vsph_channel_couette_type, &vsph_cubic_type, 1.5699, 0,
+       VSPH_VISCOUS_TWOPASS}};
+  const int c = _i;
+  struct vsph_integrate_props ip;
+  struct vsph_integrate *s =
+      scene_stepped_k(cases[c].type, cases[c].form, cases[c].tvf ? 16 : 32, 0.0,
+                      cases[c].k, cases[c].hdx, cases[c].tvf, &ip);
+  const char *name = cases[c].type->name;
+  const char *form = vsph_viscous_name(cases[c].form);
+  const size_t n = s->p->n;
+  double *buf = calloc(18 * n, sizeof *buf);
+  const struct vsph_equations_out s1 = sweep_rhs(s, NULL, 1, buf + 6 * n),
+                                  s2 = sweep_rhs(s, NULL, 2, buf + 12 * n);
+  ck_assert_msg(memcmp(buf + 6 * n, buf + 12 * n, 6 * n * sizeof *buf) == 0,
+                "%s %s: 1 and 2 threads differ", name, form);
+  s->props.eq.loop_general = 1;
+  const struct vsph_equations_out g = sweep_rhs(s, NULL, 1, buf);
+  s->props.eq.loop_general = 0;
+  ck_assert_uint_eq(s1.interactions, g.interactions);
+  ck_assert_uint_eq(s2.interactions, g.interactions);
+  ck_assert(s1.min_s2 == g.min_s2);
+  ck_assert(g.interactions > 0);
+  const char *what[6] = {"drho",       "acc x",      "acc y",
+                         "acc_visc x", "acc_visc y", "drho_delta"};
+  double umax = 0.0, pmax = 0.0;
+  for (size_t i = 0; i < n; i++)
+    if (s->p->id[i] < s->n_fluid) {
+      umax = fmax(umax, hypot(s->p->vel[0][i], s->p->vel[1][i]));
+      pmax = fmax(pmax, fabs(s->p->p[i]));
+    }
+  const double h = ip.eq.visc.h, rho0 = ip.eq.rho0;
+  const double visc = ip.eq.visc.mu * umax / (rho0 * h * h);
+  const double pterm = (pmax + ip.eq.pb * ip.eq.tvf) / (rho0 * h) + visc;
+  const double terms[6] = {rho0 * umax / h, pterm, pterm, visc, visc, 0.0};
+  for (int q = 0; q < 6; q++) {
+    const double *a = buf + (size_t)q * n, *b = buf + (size_t)(6 + q) * n;
+    double scale = terms[q], err = 0.0;
+    for (size_t i = 0; i < n; i++) {
+      if (s->p->id[i] >= s->n_fluid) continue;
+      scale = fmax(scale, fabs(a[i]));
+      err = fmax(err, fabs(a[i] - b[i]));
+    }
+    ck_assert_msg(err <= 1e-12 * scale,
+                  "%s %s %s: |specialised - general| %.3e of %.3e", name, form,
+                  what[q], err, scale);
+  }
+  if (cases[c].tvf) { /* the Adami walls, general then inlined */
+    struct vsph_particles *p = s->p;
+    const size_t cols = 5;
+    double *w = calloc(2 * cols * n, sizeof *w);
+    for (int pass = 0; pass < 2; pass++) {
+      s->props.eq.loop_general = !pass;
+      ck_assert_int_eq(vsph_equations_walls_adami(&s->props.eq, &s->props.walls,
+                                                  p, s->n_fluid, s->cells),
+                       0);
+      double *o = w + (size_t)pass * cols * n;
+      memcpy(o, p->rho, n * sizeof *o);
+      memcpy(o + n, p->p, n * sizeof *o);
+      memcpy(o + 2 * n, p->vol, n * sizeof *o);
+      memcpy(o + 3 * n, p->vel[0], n * sizeof *o);
+      memcpy(o + 4 * n, p->vel[1], n * sizeof *o);
+    }
+    s->props.eq.loop_general = 0;
+    static const char *const col[5] = {"rho", "p", "vol", "u", "v"};
+    for (size_t q = 0; q < cols; q++) {
+      double scale = 0.0, err = 0.0;
+      for (size_t i = 0; i < n; i++) {
+        scale = fmax(scale, fabs(w[q * n + i]));
+        err = fmax(err, fabs(w[q * n + i] - w[(cols + q) * n + i]));
+      }
+      ck_assert_msg(scale > 0.0 && err <= 1e-13 * scale,
+                    "walls %s: |inlined - general| %.3e of %.3e", col[q], err,
+                    scale);
+    }
+    free(w);
+  }
   free(buf);
   vsph_integrate_free(s);
 }
@@ -953,6 +1081,7 @@ Suite *vsph_pair_suite(void) {
   tcase_add_loop_test(tc, test_sweep_gather_threads,
                       (int)vsph_scene_count() * 5,
                       (int)vsph_scene_count() * 5 + 1);
+  tcase_add_loop_test(tc, test_gather_shapes, 0, 10);
   tcase_add_loop_test(tc, test_state_equations, 0, 2);
   tcase_add_test(tc, test_pressure_reduction);
   tcase_add_loop_test(tc, test_corr_exact, 0, 2);
