@@ -315,8 +315,8 @@ VSPH_CONSTS_SPECIALISE size_t contact_one(
     const struct rhs_ctx *rc, const struct vsph_particles *p,
     const struct vsph_pair_ranges *rg, size_t i, struct vsph_equations_out *out,
     double *min_s2, const int dim, const int kid, const int visc) {
-  double ui[3] = {0, 0, 0};
-  for (int k = 0; k < dim; k++) ui[k] = p->vel[k][i];
+  struct vsph_pair_vec ui = {{0, 0, 0}};
+  for (int k = 0; k < dim; k++) ui.v[k] = p->vel[k][i];
   const unsigned char *const mat = p->mat;
   const int mi = mat ? mat[i] : 0;
   const double rhoi = p->rho[i], pi = p->p[i], Zi = rhoi * rc->cmat[mi];
@@ -338,17 +338,16 @@ VSPH_CONSTS_SPECIALISE size_t contact_one(
       vsph_pair_at(&b, k, dim, &pr);
       const size_t j = pr.j;
       const int mj = mat ? mat[j] : 0;
-      double uj[3] = {0, 0, 0}, dux = 0.0;
-      struct vsph_pair_vec du = {{0, 0, 0}};
+      struct vsph_pair_vec uj = {{0, 0, 0}}, du = {{0, 0, 0}};
+      double dux = 0.0;
       for (int a = 0; a < dim; a++) {
-        uj[a] = vel[a][j];
-        du.v[a] = uj[a] - ui[a];
+        uj.v[a] = vel[a][j];
+        du.v[a] = uj.v[a] - ui.v[a];
         dux += du.v[a] * pr.x[a];
       }
       ms2 = pr.s2 < ms2 ? pr.s2 : ms2;
-      struct vsph_pair_contact_share sh;
-      vsph_pair_contact(&pr, dim, sqrt(pr.s2), pi, pp[j], Zi,
-                        rho[j] * rc->cmat[mj], ui, uj, &sh);
+      const struct vsph_pair_contact_share sh = vsph_pair_contact(
+          &pr, dim, sqrt(pr.s2), pi, pp[j], Zi, rho[j] * rc->cmat[mj], ui, uj);
       double g[3] = {0, 0, 0};
       if (visc) {
         const struct vsph_pair_visc gv =

@@ -414,6 +414,12 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_er(
 
 /* ------------------------------------------ contact SPH (issue 12) */
 
+/** The acoustic Riemann problem's contact state (vsph_pair_riemann). */
+struct vsph_pair_riemann_state {
+  double P; /*!< the contact pressure P* */
+  double U; /*!< the contact velocity U* along the pair's line */
+};
+
 /** @brief The acoustic (linearised) Riemann solution between particle i
  *  (left) and j (right) along e = (r_j - r_i)/|r_j - r_i|, Parshikov et
  *  al. (P002) eqs. (8)-(9): with Z = rho c the impedances and U^R = u.e,
@@ -422,12 +428,13 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_er(
  *  It is the exact solution of the linear acoustic Riemann problem: the
  *  contact state keeps p + Z_i U along i's outgoing characteristic and
  *  p - Z_j U along j's. */
-VSPH_CONSTS_SPECIALISE void vsph_pair_riemann(double pi, double pj, double Zi,
-                                              double Zj, double uRi, double uRj,
-                                              double *Pstar, double *Ustar) {
+VSPH_CONSTS_SPECIALISE struct vsph_pair_riemann_state vsph_pair_riemann(
+    double pi, double pj, double Zi, double Zj, double uRi, double uRj) {
   const double r = 1.0 / (Zi + Zj);
-  *Pstar = (pj * Zi + pi * Zj - Zi * Zj * (uRj - uRi)) * r;
-  *Ustar = (uRi * Zi + uRj * Zj - pj + pi) * r;
+  const struct vsph_pair_riemann_state st = {
+      (pj * Zi + pi * Zj - Zi * Zj * (uRj - uRi)) * r,
+      (uRi * Zi + uRj * Zj - pj + pi) * r};
+  return st;
 }
 
 /** The shares of one pair in contact SPH (P002 eqs. 5-6), with the
@@ -445,32 +452,36 @@ struct vsph_pair_contact_share {
                      acoustic solver's numerical viscosity */
 };
 
-/** @brief Pair @p pr's contact-SPH shares into @p sh: @p s = |x|, pressures
- *  @p pi, @p pj, impedances @p Zi, @p Zj, velocities @p ui, @p uj.
- *  Antisymmetric in i and j, so momentum is conserved pair by pair. */
-VSPH_CONSTS_SPECIALISE void vsph_pair_contact(
+/** @brief Pair @p pr's contact-SPH shares: @p s = |x|, pressures @p pi,
+ *  @p pj, impedances @p Zi, @p Zj, velocities @p ui, @p uj. Antisymmetric
+ *  in i and j, so momentum is conserved pair by pair. Returned by value,
+ *  as every pair function: a share written through a pointer makes the
+ *  caller's locals addressable, and the loop is then not vectorised. */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_contact_share vsph_pair_contact(
     const struct vsph_pair *pr, int dim, double s, double pi, double pj,
-    double Zi, double Zj, const double ui[3], const double uj[3],
-    struct vsph_pair_contact_share *sh) {
+    double Zi, double Zj, const struct vsph_pair_vec ui,
+    const struct vsph_pair_vec uj) {
   double uRi = 0.0, uRj = 0.0;
   for (int a = 0; a < dim; a++) {
-    uRi += ui[a] * pr->x[a];
-    uRj += uj[a] * pr->x[a];
+    uRi += ui.v[a] * pr->x[a];
+    uRj += uj.v[a] * pr->x[a];
   }
   const double rs = 1.0 / s;
   uRi *= rs;
   uRj *= rs;
-  double P, U;
-  vsph_pair_riemann(pi, pj, Zi, Zj, uRi, uRj, &P, &U);
+  const struct vsph_pair_riemann_state st =
+      vsph_pair_riemann(pi, pj, Zi, Zj, uRi, uRj);
+  struct vsph_pair_contact_share sh = {0.0, 0.0, {0, 0, 0}, {0, 0, 0}};
   const double c = 2.0 * pr->VF * s;
-  sh->cont = c * (U - uRi);
-  sh->diff = c * (pi - pj) / (Zi + Zj);
-  const double cf = 2.0 * pr->VF * P;
+  sh.cont = c * (st.U - uRi);
+  sh.diff = c * (pi - pj) / (Zi + Zj);
+  const double cf = 2.0 * pr->VF * st.P;
   const double cd = -2.0 * pr->VF * Zi * Zj / (Zi + Zj) * (uRj - uRi);
   for (int a = 0; a < dim; a++) {
-    sh->f[a] = cf * pr->x[a];
-    sh->fd[a] = cd * pr->x[a];
+    sh.f[a] = cf * pr->x[a];
+    sh.fd[a] = cd * pr->x[a];
   }
+  return sh;
 }
 
 /** @brief The viscous traction of contact SPH, P002 eq. (35) in the

@@ -49,12 +49,15 @@ START_TEST(test_riemann_exact) {
     int sg;
     ck_assert_int_eq(gsl_linalg_LU_decomp(&A.matrix, pm, &sg), 0);
     ck_assert_int_eq(gsl_linalg_LU_solve(&A.matrix, pm, &B.vector, x), 0);
-    double P, U, P2, U2;
-    vsph_pair_riemann(pL, pR, ZL, ZR, uL, uR, &P, &U);
+    const struct vsph_pair_riemann_state st =
+        vsph_pair_riemann(pL, pR, ZL, ZR, uL, uR);
+    const double P = st.P, U = st.U;
     const double ps = 1e6 + 3e7 * 100, us = 100 + 1e6 / 1e5;
     ck_assert_double_eq_tol(P, gsl_vector_get(x, 0), 1e-12 * ps);
     ck_assert_double_eq_tol(U, gsl_vector_get(x, 1), 1e-12 * us);
-    vsph_pair_riemann(pR, pL, ZR, ZL, -uR, -uL, &P2, &U2);
+    const struct vsph_pair_riemann_state st2 =
+        vsph_pair_riemann(pR, pL, ZR, ZL, -uR, -uL);
+    const double P2 = st2.P, U2 = st2.U;
     ck_assert_double_eq_tol(P2, P, 1e-12 * ps);
     ck_assert_double_eq_tol(U2, -U, 1e-12 * us);
     gsl_vector_free(x);
