@@ -32,7 +32,9 @@ int vsph_cmd_bench_main(int argc, char **argv) {
       "(the size the peer, DualSPHysics, was measured at), with 1 and 2\n"
       "threads: one force evaluation (continuity, pressure, viscous) per\n"
       "formulation and with delta-SPH, and one whole RK4 step on the\n"
-      "stretching square and on the standing wave (walls); interactions/s\n"
+      "stretching square and on the standing wave (walls), and MGF with\n"
+      "the cubic B-spline at h/dx 1.5699 (Basa's channels) by its own\n"
+      "specialised gather beside the general loop; interactions/s\n"
       "and particle-evaluations/s per core, the peak memory per particle of\n"
       "a whole run, the load average beside each row, the peer's figures\n"
       "below. --busy K measures the solver table beside K busy processes.",

@@ -94,18 +94,19 @@ static void step_once(void *v) {
 
 /* Scene sc (the stretching square or the standing wave) at res across,
  * formulation form, delta-SPH coefficient delta (or contact SPH with the
- * scene's viscosity, its stress uncorrected, when contact), ready to
- * step. */
+ * scene's viscosity, its stress uncorrected, when contact), kernel k at
+ * h/dx hdx, ready to step. */
 static struct vsph_integrate *bench_run(const struct vsph_scene_type *type,
                                         int form, size_t res, double delta,
-                                        int contact) {
+                                        int contact,
+                                        const struct vsph_kernel_type *k,
+                                        double hdx) {
   struct vsph_scene sc;
   struct vsph_particles *fluid = NULL;
   struct vsph_integrate_props ip;
   if (vsph_scene_init(&sc, type, NULL) || sc.type->init(&sc, res, &fluid) ||
-      vsph_scene_integrate_props(&sc, form, &vsph_gaussian_type,
-                                 VSPH_CONSTS_HDX * sc.ref_length / (double)res,
-                                 &ip)) {
+      vsph_scene_integrate_props(&sc, form, k,
+                                 hdx * sc.ref_length / (double)res, &ip)) {
     vsph_particles_free(fluid);
     return NULL;
   }
@@ -176,7 +177,8 @@ static void print_row(FILE *out, const char *what, size_t n, int thr, double t,
  * run.json says peak_rss_bytes. 0 if it cannot be run. */
 static double run_peak_rss(const struct vsph_scene_type *type, int form,
                            size_t res, size_t *n) {
-  struct vsph_integrate *s = bench_run(type, form, res, 0.0, 0);
+  struct vsph_integrate *s =
+      bench_run(type, form, res, 0.0, 0, &vsph_gaussian_type, VSPH_CONSTS_HDX);
   if (!s) return 0.0;
   const double t_end = 3.0 * vsph_integrate_dt(s);
   *n = s->n_fluid;
@@ -226,27 +228,33 @@ static int bench_solver(FILE *out, int busy) {
     int step;    /* 0: one force evaluation, 1: one whole RK4 step */
     int contact; /* contact SPH instead of the viscous form */
     int gather;  /* the per-particle gather instead of the symmetric sweep */
+    int cubic;   /* 1: the cubic B-spline at Basa's h/dx 1.5699 (a gather
+                    of its own), 2: the same through the general loop */
   } cases[] = {
       {"force MGF", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0, 0, 0,
-       0},
+       0, 0},
       {"force MGF, gather", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0,
-       0, 0, 1},
+       0, 0, 1, 0},
       {"force MGF + delta 0.1", &vsph_stretching_square_type, VSPH_VISCOUS_MGF,
-       0.1, 0, 0, 0},
+       0.1, 0, 0, 0, 0},
       {"force MEAF", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 0.0, 0, 0,
-       0},
+       0, 0},
       {"force PVWF (2 passes)", &vsph_stretching_square_type, VSPH_VISCOUS_PVWF,
-       0.0, 0, 0, 0},
+       0.0, 0, 0, 0, 0},
       {"force PVWF, gather", &vsph_stretching_square_type, VSPH_VISCOUS_PVWF,
-       0.0, 0, 0, 1},
+       0.0, 0, 0, 1, 0},
       {"force contact SPH", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF,
-       0.0, 0, 1, 0},
+       0.0, 0, 1, 0, 0},
       {"step MGF, stretching square", &vsph_stretching_square_type,
-       VSPH_VISCOUS_MGF, 0.0, 1, 0, 0},
+       VSPH_VISCOUS_MGF, 0.0, 1, 0, 0, 0},
       {"step PVWF, stretching square", &vsph_stretching_square_type,
-       VSPH_VISCOUS_PVWF, 0.0, 1, 0, 0},
+       VSPH_VISCOUS_PVWF, 0.0, 1, 0, 0, 0},
       {"step MGF, standing wave", &vsph_standing_wave_type, VSPH_VISCOUS_MGF,
-       0.0, 1, 0, 0},
+       0.0, 1, 0, 0, 0},
+      {"force MGF, cubic", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0,
+       0, 0, 1, 1},
+      {"force MGF, cubic, general", &vsph_stretching_square_type,
+       VSPH_VISCOUS_MGF, 0.0, 0, 0, 1, 2},
   };
   pid_t pids[8] = {0};
   if (busy > 8) busy = 8;
@@ -271,12 +279,16 @@ static int bench_solver(FILE *out, int busy) {
   busy_start(pids, busy);
   int st = VSPH_OK;
   for (size_t c = 0; c < sizeof cases / sizeof cases[0] && !st; c++) {
-    struct solver_arg a = {.s = bench_run(cases[c].type, cases[c].form, res,
-                                          cases[c].delta, cases[c].contact)};
+    struct solver_arg a = {
+        .s = bench_run(cases[c].type, cases[c].form, res, cases[c].delta,
+                       cases[c].contact,
+                       cases[c].cubic ? &vsph_cubic_type : &vsph_gaussian_type,
+                       cases[c].cubic ? 1.5699 : VSPH_CONSTS_HDX)};
     if (!a.s) {
       st = VSPH_ENOMEM;
       break;
     }
+    a.s->props.eq.loop_general = cases[c].cubic == 2;
     struct vsph_particles *p = a.s->p;
     a.dt = vsph_integrate_dt(a.s);
     vsph_integrate_step(a.s, a.dt); /* builds cells and ghosts, warms up */
