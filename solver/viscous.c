@@ -403,10 +403,12 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
     struct vsph_pair_ranges rg;
     vsph_pair_ranges_cell(&rg, cells, c);
     const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
-    /* dimension and kernel fixed outside the loop: the 2-D Gaussian has
-     * its own copy, any other runs the general one */
-    const int G = VSPH_KERNEL_DFQ_GAUSSIAN,
-              gauss2 = vp->dim == 2 && pk.dfq_id == G;
+    /* dimension and kernel fixed outside the loop: the 2-D Gaussian and
+     * cubic B-spline have their own copies, any other runs the general
+     * one */
+    const int G = VSPH_KERNEL_DFQ_GAUSSIAN, C = VSPH_KERNEL_DFQ_CUBIC,
+              gauss2 = vp->dim == 2 && pk.dfq_id == G,
+              cubic2 = vp->dim == 2 && pk.dfq_id == C;
     for (size_t i = i0; i < i1; i++)
       if (lapf)
         lap_pass(vp, &pk, p, &rg, i, ws);
@@ -416,6 +418,8 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
         takeda_pass(vp, &pk, p, &rg, i, ws, vp->dim);
       else if (gauss2)
         pvwf_pass1(vp, &pk, p, &rg, i, ws, 2, G);
+      else if (cubic2) /* Basa's channels */
+        pvwf_pass1(vp, &pk, p, &rg, i, ws, 2, C);
       else
         pvwf_pass1(vp, &pk, p, &rg, i, ws, vp->dim, pk.dfq_id);
   }
