@@ -100,11 +100,14 @@ archive: deps $(BUILD)/vsph
 # stand in reports/full and fit BUDGET (default 150m), niced, two at a
 # time, checkpointed, into reports/out-full; then `make archive` keeps the
 # ones that ended (README: vsph report --budget, --skip-archived).
+# BUDGET reaches vsph through the environment, as one argument that no
+# shell reads (vsph refuses what is not a time); the history as for
+# make report.
 BUDGET ?= 150m
+export BUDGET
 full-sitting: deps $(BUILD)/vsph
-	scripts/source-commits $(BUILD)/history
-	VSPH_ARCHIVE_HISTORY=$(BUILD)/history $(BUILD)/vsph report --full \
-	  --out reports/out-full --budget $(BUDGET) --skip-archived reports/full
+	@$(HISTORY); VSPH_ARCHIVE_HISTORY=$$h $(BUILD)/vsph report --full \
+	  --out reports/out-full --budget "$$BUDGET" --skip-archived reports/full
 
 # Every test, through the single Check runner (STYLE B10).
 check: deps
@@ -117,16 +120,20 @@ test: check
 
 # The main job: the whole report into reports/out/ (quick; FULL=1 for the
 # paper's resolutions and end times).
+# The history that judges the archive's runs (scripts/source-commits) into
+# shell variable h; when it cannot be made (outside a git clone, say), its
+# own reason is said, h stays empty and the archive's older runs unjudged.
+HISTORY = if err=$$(scripts/source-commits $(BUILD)/history 2>&1 >/dev/null); \
+	  then h=$(BUILD)/history; else h=; echo "make: $$err: reports/full's \
+	  older runs stay unjudged"; fi
+
 # The quick report shows beside its figures the paper-resolution runs of
-# reports/full, judged with the history scripts/source-commits keeps (none
-# outside a git clone: the archive's older runs are then unjudged).
+# reports/full (when there is one), judged with that history.
 report: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph
-	@scripts/source-commits $(BUILD)/history >/dev/null 2>&1 || \
-	  echo "make report: no git history here: reports/full's older runs stay unjudged"
-	VSPH_ARCHIVE_HISTORY=$$(test -f $(BUILD)/history/commits.tsv && \
-	  echo $(BUILD)/history) $(BUILD)/vsph report --out reports/out \
-	  $(if $(FULL),--full,--beside reports/full)
+	@$(HISTORY); VSPH_ARCHIVE_HISTORY=$$h $(BUILD)/vsph report \
+	  --out reports/out $(if $(FULL),--full,$(if $(wildcard \
+	  reports/full),--beside reports/full))
 
 # Re-record the regression baseline (tests/check_baseline.c) after an
 # intended change to the numerics; commit reports/baseline.csv with a reason.

@@ -1,4 +1,5 @@
 /* vsph report: the main job (reports/report.c). */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include "cmd_report.h"
 
 #include <errno.h>
@@ -83,6 +84,50 @@ static int summarise(const char *dir, const char *archive, const char *commit) {
   free(keys);
   vsph_jobs_plan_free(&jobs);
   return st;
+}
+
+/* 1 if folder @p out (made or not) lies in folder @p dir or is it: the
+ * canonical paths compared, @p out's deepest existing folder standing
+ * for it. */
+static int inside(const char *out, const char *dir) {
+  char d[PATH_MAX], o[PATH_MAX], probe[PATH_MAX];
+  if (!realpath(dir, d)) return 0;
+  snprintf(probe, sizeof probe, "%s", out);
+  while (!realpath(probe, o)) { /* up to the deepest existing folder */
+    char *slash = strrchr(probe, '/');
+    if (!slash || slash == probe) {
+      if (!realpath(slash == probe ? "/" : ".", o)) return 0;
+      break;
+    }
+    *slash = '\0';
+  }
+  const size_t n = strlen(d);
+  return !strncmp(o, d, n) && (o[n] == '/' || o[n] == '\0');
+}
+
+/* A run archive given to --skip-archived or --beside, checked before
+ * anything is written: a folder vsph wrote as an archive, and not where
+ * the report writes. 0, or the exit status of a refusal (one line). */
+static int archive_input(const char *opt, const char *adir, const char *out) {
+  struct stat as;
+  if (!*adir || strlen(adir) > 200 ||
+      !only_of(adir,
+               "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+               "0123456789._-/"))
+    return vsph_args_fail(CMD,
+                          "%s: '%.200s' is not a folder name of 1-200 "
+                          "letters, digits, '.', '_', '-' or '/'",
+                          opt, adir);
+  if (stat(adir, &as) != 0 || !S_ISDIR(as.st_mode))
+    return vsph_args_fail(CMD,
+                          "%s: %.200s is not a folder (make archive makes "
+                          "reports/full)",
+                          opt, adir);
+  if (inside(out, adir))
+    return vsph_args_fail(CMD, "%s: --out %.200s lies inside the archive %s",
+                          opt, out, adir);
+  const int st = vsph_archive_check(adir);
+  return st ? vsph_args_status(CMD, st) : 0;
 }
 
 /* What a judge of the archive reads ($VSPH_ARCHIVE_HISTORY and
@@ -200,8 +245,9 @@ int vsph_cmd_report_main(int argc, char **argv) {
                                   "[--out DIR] [--only PART[,PART...]] "
                                   "[--full] [--plan | --jobs N | --slurm "
                                   "[--partition P] [--time T] | --assemble] "
-                                  "[--threads T] [--budget TIME] | --archive "
-                                  "ADIR",
+                                  "[--threads T] [--budget TIME "
+                                  "[--skip-archived ADIR]] [--beside ADIR] "
+                                  "| --archive ADIR",
                                   about,
                                   own,
                                   sizeof own / sizeof own[0],
@@ -269,25 +315,18 @@ int vsph_cmd_report_main(int argc, char **argv) {
   }
   if (skip) {
     if (!budget) return vsph_args_fail(CMD, "--skip-archived needs --budget");
-    if (!*skip || strlen(skip) > 400)
-      return vsph_args_fail(CMD,
-                            "--skip-archived: a folder name of 1-400 "
-                            "characters");
-    struct stat as;
-    if (stat(skip, &as) != 0 || !S_ISDIR(as.st_mode))
-      return vsph_args_fail(CMD,
-                            "--skip-archived: %.400s is not a folder (make "
-                            "archive makes reports/full)",
-                            skip);
-    const int bad = judge_inputs();
+    int bad = archive_input("--skip-archived", skip, dir);
+    if (!bad) bad = judge_inputs();
     if (bad) return bad;
   }
   if (beside) {
-    struct stat as;
-    if (!*beside || strlen(beside) > 400 || stat(beside, &as) != 0 ||
-        !S_ISDIR(as.st_mode))
-      return vsph_args_fail(CMD, "--beside: '%.400s' is not a folder", beside);
-    const int bad = judge_inputs();
+    if (full || plan || budget || slurm)
+      return vsph_args_fail(CMD,
+                            "--beside sets the FULL archive beside a quick "
+                            "report: not with --full, --plan, --budget or "
+                            "--slurm");
+    int bad = archive_input("--beside", beside, dir);
+    if (!bad) bad = judge_inputs();
     if (bad) return bad;
   }
   if (archive) {

@@ -435,16 +435,9 @@ static int mark_archived(struct vsph_report *R,
   jd.plan_name = names;
   jd.plan_key = keys;
   if (!st) st = vsph_archive_standing(rp->skip_archive, &jd, stands);
-  size_t marked = 0;
-  for (size_t k = 0; !st && k < n; k++) {
-    R->jobs.job[k].archived = stands[k] && !R->jobs.job[k].cached;
-    marked += (size_t)R->jobs.job[k].archived;
-  }
-  if (!st)
-    fprintf(stderr,
-            "vsph report: %zu of the %zu runs stand in %s and are not run "
-            "again\n",
-            marked, n, rp->skip_archive);
+  for (size_t k = 0; !st && k < n; k++)
+    R->jobs.job[k].archived =
+        stands[k] == VSPH_ARCHIVE_STANDS && !R->jobs.job[k].cached;
   free(names);
   free(keys);
   free(stands);
@@ -524,10 +517,12 @@ int vsph_report_write(const struct vsph_report_props *rp) {
     }
     if (st == VSPH_OK || st == VSPH_EINTR)
       fprintf(stderr,
-              "vsph report: %zu of the %zu runs are cached, %zu stand in the "
-              "archive, %zu missing or unfinished (%.0f s of runs); not "
-              "assembled\n",
-              R->jobs.n - left - kept, R->jobs.n, kept, left, R->runs_wall);
+              "vsph report: %zu of the %zu runs are cached, %zu stand in "
+              "%s (not run again), %zu missing or unfinished (%.0f s of "
+              "runs); not assembled\n",
+              R->jobs.n - left - kept, R->jobs.n, kept,
+              rp->skip_archive ? rp->skip_archive : "no archive", left,
+              R->runs_wall);
     vsph_jobs_plan_free(&R->jobs);
     free(R);
     return st;

@@ -416,11 +416,20 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
 static void scene_figure(char *buf, size_t len, int sc,
                          const struct vsph_jobs_run *r, double err) {
   char status[120];
+  if (r->nrow < 2) { /* nothing to measure a decay or a loss on */
+    snprintf(buf, len, "%zu row%s of energy.csv only: no figure", r->nrow,
+             r->nrow == 1 ? "" : "s");
+    return;
+  }
   if (r->ok)
     snprintf(status, sizeof status, "ok to t = %.4g s", r->t[r->nrow - 1]);
-  else
+  else if (isfinite(r->t_unstable))
     snprintf(status, sizeof status, "**unstable** at t = %.3g s",
              r->t_unstable);
+  else
+    snprintf(status, sizeof status,
+             "**stopped** at t = %.4g s (its reason not recorded)",
+             r->t[r->nrow - 1]);
   if (!isfinite(err) && sc != 1) err = vsph_report_runs_error(r, NULL);
   if (sc == 0)
     snprintf(buf, len, "%s; E_k error %.2e", status, err);
@@ -476,7 +485,7 @@ int vsph_report_claims_beside(struct vsph_report *R,
   char *pool = NULL;
   size_t n = 0;
   int st = standing(R, &names, &stands, &pool, &n);
-  size_t held = 0, stand = 0;
+  size_t held = 0, stand = 0, unjudged = 0;
   char *rows = NULL;
   size_t rlen = 0;
   FILE *m = st ? NULL : open_memstream(&rows, &rlen);
@@ -493,17 +502,27 @@ int vsph_report_claims_beside(struct vsph_report *R,
       scene_figure(quick, sizeof quick, sc, &run[sc][f], err[sc][f]);
       const char *judged = "–";
       snprintf(dir, sizeof dir, "%s/runs/%s", R->beside, name);
+      size_t k = 0;
+      while (k < n && strcmp(names[k], name)) k++;
+      const int v = k < n ? stands[k] : VSPH_ARCHIVE_ABSENT;
       struct vsph_jobs_run r;
-      if (access(dir, F_OK) == 0) {
-        if ((st = vsph_jobs_load(dir, &r))) break;
+      if (v == VSPH_ARCHIVE_ABSENT && access(dir, F_OK) == 0) {
+        /* there, but not whole: not read (summary.md leaves it out) */
+        snprintf(full, sizeof full,
+                 "an entry whose seal does not hold: not read");
+      } else if (v != VSPH_ARCHIVE_ABSENT && vsph_jobs_load(dir, &r)) {
+        /* whole, but not tables this build reads (said on stderr) */
+        vsph_jobs_run_free(&r);
+        snprintf(full, sizeof full, "its tables cannot be read (see stderr)");
+      } else if (v != VSPH_ARCHIVE_ABSENT) {
         held++;
         scene_figure(full, sizeof full, sc, &r, (double)NAN);
         vsph_jobs_run_free(&r);
-        size_t k = 0;
-        while (k < n && strcmp(names[k], name)) k++;
-        const int yes = k < n && stands[k];
-        stand += (size_t)yes;
-        judged = yes ? "yes" : "no (summary.md says why)";
+        stand += v == VSPH_ARCHIVE_STANDS;
+        unjudged += v == VSPH_ARCHIVE_UNJUDGED;
+        judged = v == VSPH_ARCHIVE_STANDS     ? "yes"
+                 : v == VSPH_ARCHIVE_UNJUDGED ? "unjudged (summary.md says why)"
+                                              : "no (summary.md says why)";
       }
       fprintf(m,
               "| %s | %s | %s/dx = %zu, t_end %g s: %s | %s/dx = %zu, "
@@ -520,6 +539,7 @@ int vsph_report_claims_beside(struct vsph_report *R,
     vsph_text_set(&R->tv, "archive", "%s", R->beside);
     vsph_text_set(&R->tv, "held", "%zu", held);
     vsph_text_set(&R->tv, "stand", "%zu", stand);
+    vsph_text_set(&R->tv, "unjudged", "%zu", unjudged);
     vsph_text_set(&R->tv, "total", "%d", VSPH_REPORT_NSCENES * NFORM);
     st = vsph_report_say(R, "claims.archive_head");
   }

@@ -591,9 +591,15 @@ static void judge_inputs(const struct vsph_archive_judge *jd, char **now,
   }
 }
 
+int vsph_archive_check(const char *archive) {
+  char runs[4200];
+  snprintf(runs, sizeof runs, "%s/runs", archive);
+  return judge(archive, runs);
+}
+
 int vsph_archive_standing(const char *archive,
                           const struct vsph_archive_judge *jd, int *stands) {
-  for (size_t k = 0; k < jd->nplan; k++) stands[k] = 0;
+  for (size_t k = 0; k < jd->nplan; k++) stands[k] = VSPH_ARCHIVE_ABSENT;
   struct stat sb;
   if (lstat(archive, &sb) != 0 && errno == ENOENT) return VSPH_OK;
   char runs[4200];
@@ -610,7 +616,9 @@ int vsph_archive_standing(const char *archive,
     char commit[64], why[400];
     entry_verdict(jd, tsv, now, jd->plan_name[k], &en, commit, sizeof commit,
                   why, sizeof why);
-    stands[k] = !strcmp(why, "yes");
+    stands[k] = !strcmp(why, "yes")            ? VSPH_ARCHIVE_STANDS
+                : !strncmp(why, "unjudged", 8) ? VSPH_ARCHIVE_UNJUDGED
+                                               : VSPH_ARCHIVE_STALE;
     entry_free(&en);
   }
   free(now);

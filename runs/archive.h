@@ -72,10 +72,24 @@ struct vsph_archive_judge {
 int vsph_archive_summarise(const char *archive,
                            const struct vsph_archive_judge *jd);
 
+/** What vsph_archive_standing says of one run of the plan. */
+enum vsph_archive_verdict {
+  VSPH_ARCHIVE_ABSENT = -2,   /*!< no whole entry of its name (none, or
+                                   one whose seal does not hold) */
+  VSPH_ARCHIVE_UNJUDGED = -1, /*!< whole, but its commit's baseline rows
+                                   are not known (no history) */
+  VSPH_ARCHIVE_STALE = 0,     /*!< whole, and it does not stand */
+  VSPH_ARCHIVE_STANDS = 1     /*!< whole, and it stands */
+};
+
+/** @brief Whether @p archive is a run archive vsph wrote (its top, and
+ *  each entry of its runs/ a folder of a run's kind with nothing else in
+ *  it), reading only. @return VSPH_OK; VSPH_EINVAL (one line said). */
+int vsph_archive_check(const char *archive);
+
 /** @brief Which runs of the FULL plan in @p jd stand in @p archive, by
  *  the rule of vsph_archive_summarise: @p stands[k] (jd->nplan of them)
- *  is 1 when the archive holds a whole entry of name plan_name[k] that
- *  stands, else 0 (absent, unended, stale or unjudged). Reads only; an
+ *  is the vsph_archive_verdict of entry plan_name[k]. Reads only; an
  *  archive that does not exist holds nothing. @return VSPH_OK;
  *  VSPH_EINVAL (@p archive is not a run archive). */
 int vsph_archive_standing(const char *archive,

@@ -1166,6 +1166,7 @@ int vsph_jobs_load(const char *dir, struct vsph_jobs_run *out) {
   snprintf(out->dir, sizeof out->dir, "%s", dir);
   int st = load_run_json(out);
   if (!st) st = load_energy(out);
+  if (st) vsph_jobs_run_free(out); /* (a table read, its columns not) */
   return st;
 }
 

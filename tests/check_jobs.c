@@ -400,7 +400,8 @@ START_TEST(test_budget_skip_archived) {
   const struct vsph_test_outcome *o = vsph_test_shell(cmd);
   ck_assert_msg(o->status == 0, "%s", o->err);
   char said[200];
-  snprintf(said, sizeof said, "1 of the %zu runs stand in ar", nplan);
+  snprintf(said, sizeof said, "0 of the %zu runs are cached, 1 stand in ar",
+           nplan);
   ck_assert_msg(strstr(o->err, said), "want '%s' in %s", said, o->err);
   snprintf(path, sizeof path, "%s/r/runs/%s", dir, name);
   ck_assert_msg(access(path, F_OK) != 0, "%s was run", path);
@@ -414,6 +415,15 @@ START_TEST(test_budget_skip_archived) {
   ck_assert_int_eq(vsph_test_shell(cmd)->status, 0);
   snprintf(path, sizeof path, "%s/r2/runs/%s", dir, name);
   ck_assert_msg(access(path, F_OK) == 0, "%s was not run", path);
+  /* --out inside the archive: refused, nothing made */
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --budget 2s "
+           "--skip-archived ar --out ar/runs/zz",
+           dir);
+  o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 2 && o->err_lines == 1, "%s", o->err);
+  snprintf(path, sizeof path, "%s/ar/runs/zz", dir);
+  ck_assert_int_ne(access(path, F_OK), 0);
   /* a folder that is not there: refused, nothing made */
   snprintf(cmd, sizeof cmd,
            "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --budget 2s "

@@ -212,13 +212,35 @@ START_TEST(test_command_reads_back) {
 }
 END_TEST
 
+/* The table of vsph_report_claims_beside for R, quick runs @p run with
+ * errors @p err, as text (free it). */
+static char *beside_text(struct vsph_report *R,
+                         struct vsph_jobs_run run[][VSPH_VISCOUS_PAPER_COUNT],
+                         double err[][VSPH_VISCOUS_PAPER_COUNT]) {
+  R->md = tmpfile();
+  ck_assert_ptr_nonnull(R->md);
+  ck_assert_int_eq(
+      vsph_report_claims_beside(
+          R, (const struct vsph_jobs_run(*)[VSPH_VISCOUS_PAPER_COUNT])run,
+          (const double(*)[VSPH_VISCOUS_PAPER_COUNT])err),
+      0);
+  const long len = ftell(R->md);
+  char *text = calloc((size_t)len + 1, 1);
+  rewind(R->md);
+  ck_assert_uint_eq(fread(text, 1, (size_t)len, R->md), (size_t)len);
+  fclose(R->md);
+  R->md = NULL;
+  return text;
+}
+
 /* The summary's table of the paper's resolutions (report_claims.c): an
  * archived FULL run (the standing wave with MGF at H/dx = 240, sealed
  * under its FULL plan key, its energy table made by hand) is shown with
  * its figures, computed here by hand from its rows, and judged to stand
  * (made by these sources, its scene's rows in today's baseline); every
  * other scene and formulation says it is not archived yet; once the
- * baseline lacks its scene's rows (unjudged) it does not stand. */
+ * baseline lacks its scene's rows (unjudged) it does not stand; once a
+ * file of the entry changed after its seal it is not read at all. */
 START_TEST(test_claims_beside) {
   char dir[] = "/tmp/vsph_besideXXXXXX", path[700], ar[600], rep[600],
        base[600];
@@ -286,18 +308,7 @@ START_TEST(test_claims_beside) {
   R.beside = ar;
   R.judge = &jd;
   for (int pass = 0; pass < 2; pass++) {
-    R.md = tmpfile();
-    ck_assert_ptr_nonnull(R.md);
-    ck_assert_int_eq(
-        vsph_report_claims_beside(
-            &R, (const struct vsph_jobs_run(*)[VSPH_VISCOUS_PAPER_COUNT])run,
-            (const double(*)[VSPH_VISCOUS_PAPER_COUNT])err),
-        0);
-    const long len = ftell(R.md);
-    char *text = calloc((size_t)len + 1, 1);
-    rewind(R.md);
-    ck_assert_uint_eq(fread(text, 1, (size_t)len, R.md), (size_t)len);
-    fclose(R.md);
+    char *text = beside_text(&R, run, err);
     /* by hand: energy lost by t = 8, (2 + 1 - 1 - 0.8)/2 = 0.6, over
      * Lighthill's 1 - 2.4/3 = 0.2: 3.000; the E_k error, the largest
      * |Ek/Ek(0) - Ek_ref/Ek_ref(0)|: |0.75 - 0.9| = 0.15 at t = 4. The
@@ -309,11 +320,16 @@ START_TEST(test_claims_beside) {
                          "t_end 8 s: ok to t = 8 s; energy lost over "
                          "Lighthill's 3.000, E_k error 1.50e-01 |"),
                   "%s", text);
-    ck_assert_msg(strstr(text, pass ? "1.50e-01 | no (summary.md says why) |"
+    ck_assert_msg(strstr(text, pass ? "1.50e-01 | unjudged (summary.md says "
+                                      "why) |"
                                     : "1.50e-01 | yes |"),
                   "%s", text);
-    ck_assert_msg(strstr(text, pass ? "1 of the 9 are archived, 0 of them"
-                                    : "1 of the 9 are archived, 1 of them"),
+    ck_assert_msg(strstr(text, pass ? "1 of the 9 are archived, 0 of them "
+                                      "stand for the current code and 1 are "
+                                      "unjudged"
+                                    : "1 of the 9 are archived, 1 of them "
+                                      "stand for the current code and 0 are "
+                                      "unjudged"),
                   "%s", text);
     ck_assert_uint_eq(count(text, "not archived yet | – |"), 8);
     free(text);
@@ -324,6 +340,19 @@ START_TEST(test_claims_beside) {
     fputs("scene,visc\nvortex-patch,mgf\n", b);
     ck_assert_int_eq(fclose(b), 0);
   }
+  /* its energy.csv changed after the seal: not read, not counted */
+  snprintf(path, sizeof path, "%s/runs/standing-wave-mgf-240/energy.csv", ar);
+  b = fopen(path, "a");
+  ck_assert_ptr_nonnull(b);
+  fputs("9,9,9,0,-1,0,-1,9,-1,9,-1\n", b);
+  ck_assert_int_eq(fclose(b), 0);
+  char *text = beside_text(&R, run, err);
+  ck_assert_msg(strstr(text,
+                       "t_end 8 s: an entry whose seal does not hold: "
+                       "not read | – |") &&
+                    strstr(text, "0 of the 9 are archived"),
+                "%s", text);
+  free(text);
   char cmd[700];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
   ck_assert_int_eq(system(cmd), 0);

@@ -554,7 +554,8 @@ static void assert_stands(const char *ar, const char *name,
 }
 
 /* vsph_archive_standing agrees, run by run of @p jd's plan, with
- * @p want (1 stands). */
+ * @p want (its vsph_archive_verdict: 1 stands, 0 stale, -1 unjudged,
+ * -2 absent). */
 static void assert_standing(const char *ar, const struct vsph_archive_judge *jd,
                             const int *want) {
   int got[8];
@@ -632,7 +633,7 @@ START_TEST(test_archive_summary) {
   struct vsph_archive_judge jd = {
       .baseline = base, .nplan = 4, .plan_name = names, .plan_key = keys};
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
-  assert_standing(ar, &jd, (const int[]){1, 0, 0, 0});
+  assert_standing(ar, &jd, (const int[]){1, -1, -1, -2});
   assert_stands(ar, "a", "| yes |");
   assert_stands(ar, "z", "unjudged");
   assert_stands(ar, "z", "(a\\|b c) |");
@@ -649,7 +650,7 @@ START_TEST(test_archive_summary) {
            "mgf,8\n");
   jd.history = hist;
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
-  assert_standing(ar, &jd, (const int[]){1, 1, 1, 0});
+  assert_standing(ar, &jd, (const int[]){1, 1, 1, -2});
   assert_stands(ar, "z", "| yes |");
   assert_stands(ar, "z", ", c0ffee |");
   assert_stands(ar, "z2", "| yes |");
@@ -658,7 +659,7 @@ START_TEST(test_archive_summary) {
   put_text(hist, "c0ffee.csv",
            "scene,visc,res\npoiseuille,mgf,8\npoiseuille,pvwf,16\n");
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
-  assert_standing(ar, &jd, (const int[]){1, 0, 0, 0});
+  assert_standing(ar, &jd, (const int[]){1, 0, 0, -2});
   assert_stands(ar, "z", "no: poiseuille's rows");
   assert_stands(ar, "a", "| yes |");
   /* the plan: a under other settings, z not at all */
