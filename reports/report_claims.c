@@ -412,33 +412,44 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
  * stretching square's (P - P_exact)/|P_exact| at t = 0 (its E_k reference
  * is built from runs at the report's own fidelity), the wave's energy
  * lost by its last row over Lighthill's and its E_k error; @p err: the
- * error at hand, or NAN to compute it against the run's own reference. */
+ * error at hand, or NAN to compute it against the run's own reference;
+ * @p t_end: the run's end time (a run that stopped says how far it got,
+ * its figures being by its last row). */
 static void scene_figure(char *buf, size_t len, int sc,
-                         const struct vsph_jobs_run *r, double err) {
-  char status[120];
+                         const struct vsph_jobs_run *r, double err,
+                         double t_end) {
+  char status[200];
   if (r->nrow < 2) { /* nothing to measure a decay or a loss on */
     snprintf(buf, len, "%zu row%s of energy.csv only: no figure", r->nrow,
              r->nrow == 1 ? "" : "s");
     return;
   }
+  const double t1 = r->t[r->nrow - 1];
   if (r->ok)
-    snprintf(status, sizeof status, "ok to t = %.4g s", r->t[r->nrow - 1]);
-  else if (isfinite(r->t_unstable))
-    snprintf(status, sizeof status, "**unstable** at t = %.3g s",
-             r->t_unstable);
+    snprintf(status, sizeof status, "ok to t = %.4g s", t1);
   else
     snprintf(status, sizeof status,
-             "**stopped** at t = %.4g s (its reason not recorded)",
-             r->t[r->nrow - 1]);
+             "**%s** at t = %.3g s; figures by its last row, t = %.3g s "
+             "(%.0f %% of t_end)",
+             isfinite(r->t_unstable) ? "unstable" : "stopped (no reason kept)",
+             isfinite(r->t_unstable) ? r->t_unstable : t1, t1,
+             100.0 * t1 / t_end);
   if (!isfinite(err) && sc != 1) err = vsph_report_runs_error(r, NULL);
-  if (sc == 0)
+  if (sc == 0) {
     snprintf(buf, len, "%s; E_k error %.2e", status, err);
-  else if (sc == 1)
-    snprintf(buf, len, "%s; (P - P_exact)/\\|P_exact\\| at t = 0: %+.2e",
-             status, vsph_report_runs_diss0(r));
-  else
+  } else if (sc == 1) { /* PVWF's is exact on the square: round-off */
+    const double d = vsph_report_runs_diss0(r);
+    char dv[32];
+    if (fabs(d) < 1e-10)
+      snprintf(dv, sizeof dv, "round-off");
+    else
+      snprintf(dv, sizeof dv, "%+.2e", d);
+    snprintf(buf, len, "%s; (P - P_exact)/\\|P_exact\\| at t = 0: %s", status,
+             dv);
+  } else {
     snprintf(buf, len, "%s; energy lost over Lighthill's %.3f, E_k error %.2e",
              status, vsph_report_runs_loss_ratio(r, r->nrow - 1), err);
+  }
 }
 
 /* The FULL plan's runs that stand in R->beside, by folder name: stands[k]
@@ -485,7 +496,7 @@ int vsph_report_claims_beside(struct vsph_report *R,
   char *pool = NULL;
   size_t n = 0;
   int st = standing(R, &names, &stands, &pool, &n);
-  size_t held = 0, stand = 0, unjudged = 0;
+  size_t held = 0, stand = 0, unjudged = 0, stale = 0, unreadable = 0;
   char *rows = NULL;
   size_t rlen = 0;
   FILE *m = st ? NULL : open_memstream(&rows, &rlen);
@@ -499,7 +510,7 @@ int vsph_report_claims_beside(struct vsph_report *R,
       char name[128], dir[700], quick[320], full[320] = "not archived yet";
       snprintf(name, sizeof name, "%s-%s-%zu", F->scene, vsph_viscous_name(f),
                F->res[VSPH_REPORT_LADDER - 1]);
-      scene_figure(quick, sizeof quick, sc, &run[sc][f], err[sc][f]);
+      scene_figure(quick, sizeof quick, sc, &run[sc][f], err[sc][f], Q->t_end);
       const char *judged = "–";
       snprintf(dir, sizeof dir, "%s/runs/%s", R->beside, name);
       size_t k = 0;
@@ -510,16 +521,19 @@ int vsph_report_claims_beside(struct vsph_report *R,
         /* there, but not whole: not read (summary.md leaves it out) */
         snprintf(full, sizeof full,
                  "an entry whose seal does not hold: not read");
+        unreadable++;
       } else if (v != VSPH_ARCHIVE_ABSENT && vsph_jobs_load(dir, &r)) {
         /* whole, but not tables this build reads (said on stderr) */
         vsph_jobs_run_free(&r);
         snprintf(full, sizeof full, "its tables cannot be read (see stderr)");
+        unreadable++;
       } else if (v != VSPH_ARCHIVE_ABSENT) {
         held++;
-        scene_figure(full, sizeof full, sc, &r, (double)NAN);
+        scene_figure(full, sizeof full, sc, &r, (double)NAN, F->t_end);
         vsph_jobs_run_free(&r);
         stand += v == VSPH_ARCHIVE_STANDS;
         unjudged += v == VSPH_ARCHIVE_UNJUDGED;
+        stale += v == VSPH_ARCHIVE_STALE;
         judged = v == VSPH_ARCHIVE_STANDS     ? "yes"
                  : v == VSPH_ARCHIVE_UNJUDGED ? "unjudged (summary.md says why)"
                                               : "no (summary.md says why)";
@@ -540,6 +554,8 @@ int vsph_report_claims_beside(struct vsph_report *R,
     vsph_text_set(&R->tv, "held", "%zu", held);
     vsph_text_set(&R->tv, "stand", "%zu", stand);
     vsph_text_set(&R->tv, "unjudged", "%zu", unjudged);
+    vsph_text_set(&R->tv, "stale", "%zu", stale);
+    vsph_text_set(&R->tv, "unreadable", "%zu", unreadable);
     vsph_text_set(&R->tv, "total", "%d", VSPH_REPORT_NSCENES * NFORM);
     st = vsph_report_say(R, "claims.archive_head");
   }

@@ -301,6 +301,8 @@ START_TEST(test_claims_beside) {
       r->Emr = Em;
       err[sc][k] = 0.0123;
     }
+  run[2][1].ok = 0; /* the wave with MEAF stopped, as unstable, at 2.5 s */
+  run[2][1].t_unstable = 2.5;
   const struct vsph_archive_judge jd = {.baseline = base};
   struct vsph_report R;
   memset(&R, 0, sizeof R);
@@ -324,14 +326,22 @@ START_TEST(test_claims_beside) {
                                       "why) |"
                                     : "1.50e-01 | yes |"),
                   "%s", text);
-    ck_assert_msg(strstr(text, pass ? "1 of the 9 are archived, 0 of them "
-                                      "stand for the current code and 1 are "
+    ck_assert_msg(strstr(text, pass ? "Of the 9, 1 are archived and read: 0 "
+                                      "still valid for this code, 0 not, 1 "
                                       "unjudged"
-                                    : "1 of the 9 are archived, 1 of them "
-                                      "stand for the current code and 0 are "
+                                    : "Of the 9, 1 are archived and read: 1 "
+                                      "still valid for this code, 0 not, 0 "
                                       "unjudged"),
                   "%s", text);
     ck_assert_uint_eq(count(text, "not archived yet | – |"), 8);
+    /* a stopped run says how far it got; the square's t = 0 figure of
+     * these rows, (-1 - (-1))/1, is exact: round-off */
+    ck_assert_msg(strstr(text,
+                         "| standing-wave | MEAF | H/dx = 40, t_end 3 "
+                         "s: **unstable** at t = 2.5 s; figures by its "
+                         "last row, t = 3 s (100 % of t_end);"),
+                  "%s", text);
+    ck_assert_uint_eq(count(text, "at t = 0: round-off |"), 3);
     free(text);
     /* today's baseline without the scene's rows: unjudged, so it does
      * not stand */
@@ -350,7 +360,8 @@ START_TEST(test_claims_beside) {
   ck_assert_msg(strstr(text,
                        "t_end 8 s: an entry whose seal does not hold: "
                        "not read | – |") &&
-                    strstr(text, "0 of the 9 are archived"),
+                    strstr(text, "Of the 9, 0 are archived and read") &&
+                    strstr(text, "1 more entries are there but not read"),
                 "%s", text);
   free(text);
   char cmd[700];
