@@ -64,11 +64,19 @@ $(BUILD)/%.o: %.c
 # With it, the commit the sources were at when they changed last (git's
 # short id, "-dirty" when they differed from it; "unknown" outside git):
 # run.json records it beside the source hash, never in a key.
-$(BUILD)/gen/source_hash.c: $(SRC_ALL) Makefile
+# Made at every make (the commit it names moves without the sources: a
+# build after a commit that changed no source must not keep the older
+# commit's name), but replaced only when its text changes, so that nothing
+# is rebuilt for nothing.
+$(BUILD)/gen/source_hash.c: FORCE
 	@mkdir -p $(dir $@)
 	@printf '/* generated: hash of the sources */\nconst char vsph_source_hash_id[] = "%s";\nconst char vsph_commit_id[] = "%s";\n' \
 	  "$$(cat $(SRC_ALL) | sha1sum | cut -c1-16)" \
-	  "$$(git describe --always --dirty --abbrev=12 2>/dev/null | tr -cd '0-9a-z-' || true)" > $@
+	  "$$(git describe --always --dirty --abbrev=12 2>/dev/null | tr -cd '0-9a-z-' || true)" > $@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
+
+.PHONY: FORCE
+FORCE:
 
 $(HASH_OBJ): $(BUILD)/gen/source_hash.c
 	$(CC) -std=c11 -c $< -o $@
