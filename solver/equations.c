@@ -466,36 +466,25 @@ RHS_CELL_SHAPE(rhs_er3, 3, VSPH_VISCOUS_ER, 0)
 RHS_CELL_SHAPE(rhs_er3d, 3, VSPH_VISCOUS_ER, 1)
 #undef RHS_CELL_SHAPE
 
-/* The same for the transport-velocity scheme's shapes (the cavity after
- * Adami et al.): 2-D, the quintic spline, no delta term. */
-#define RHS_TVF_SHAPE(name, FORM)                                              \
+/* The same in 2-D without delta for kernel KID, the transport velocity
+ * when TVF: the cavity after Adami et al. (the quintic spline, TVF) and
+ * the channels after Basa et al. (the cubic B-spline). */
+#define RHS_2D_SHAPE(name, FORM, KID, TVF)                                     \
   static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
                      const struct vsph_cells *cells, size_t c, size_t n_fluid, \
                      struct vsph_equations_out *out, double *min_s2) {         \
     const struct vsph_viscous_shape sh = {2, FORM};                            \
-    return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, 0,              \
-                    VSPH_KERNEL_DFQ_QUINTIC, 0, 0, 1);                         \
+    return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, 0, KID, 0, 0,   \
+                    TVF);                                                      \
   }
-RHS_TVF_SHAPE(rhs_tvf_mgf2, VSPH_VISCOUS_MGF)
-RHS_TVF_SHAPE(rhs_tvf_meaf2, VSPH_VISCOUS_MEAF)
-RHS_TVF_SHAPE(rhs_tvf_er2, VSPH_VISCOUS_ER)
-#undef RHS_TVF_SHAPE
-
-/* And for the cubic B-spline in 2-D, no delta term (the channels after
- * Basa et al.). */
-#define RHS_CUBIC_SHAPE(name, FORM)                                            \
-  static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
-                     const struct vsph_cells *cells, size_t c, size_t n_fluid, \
-                     struct vsph_equations_out *out, double *min_s2) {         \
-    const struct vsph_viscous_shape sh = {2, FORM};                            \
-    return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, 0,              \
-                    VSPH_KERNEL_DFQ_CUBIC, 0, 0, 0);                           \
-  }
-RHS_CUBIC_SHAPE(rhs_cubic_mgf2, VSPH_VISCOUS_MGF)
-RHS_CUBIC_SHAPE(rhs_cubic_meaf2, VSPH_VISCOUS_MEAF)
-RHS_CUBIC_SHAPE(rhs_cubic_pvwf2, VSPH_VISCOUS_PVWF)
-RHS_CUBIC_SHAPE(rhs_cubic_er2, VSPH_VISCOUS_ER)
-#undef RHS_CUBIC_SHAPE
+RHS_2D_SHAPE(rhs_tvf_mgf2, VSPH_VISCOUS_MGF, VSPH_KERNEL_DFQ_QUINTIC, 1)
+RHS_2D_SHAPE(rhs_tvf_meaf2, VSPH_VISCOUS_MEAF, VSPH_KERNEL_DFQ_QUINTIC, 1)
+RHS_2D_SHAPE(rhs_tvf_er2, VSPH_VISCOUS_ER, VSPH_KERNEL_DFQ_QUINTIC, 1)
+RHS_2D_SHAPE(rhs_cubic_mgf2, VSPH_VISCOUS_MGF, VSPH_KERNEL_DFQ_CUBIC, 0)
+RHS_2D_SHAPE(rhs_cubic_meaf2, VSPH_VISCOUS_MEAF, VSPH_KERNEL_DFQ_CUBIC, 0)
+RHS_2D_SHAPE(rhs_cubic_pvwf2, VSPH_VISCOUS_PVWF, VSPH_KERNEL_DFQ_CUBIC, 0)
+RHS_2D_SHAPE(rhs_cubic_er2, VSPH_VISCOUS_ER, VSPH_KERNEL_DFQ_CUBIC, 0)
+#undef RHS_2D_SHAPE
 
 /* Any other shape (1-D, another kernel, model A, the pressure reduction):
  * the general copy. */

@@ -349,6 +349,17 @@ START_TEST(test_budget_report) {
 }
 END_TEST
 
+/* `vsph report --budget 2s ARGS` run in folder @p dir (where its relative
+ * paths and reports/baseline.csv are read). */
+static const struct vsph_test_outcome *budget_in(const char *dir,
+                                                 const char *args) {
+  char cmd[2000];
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --budget 2s %s",
+           dir, args);
+  return vsph_test_shell(cmd);
+}
+
 /* `vsph report --budget --skip-archived AR`: the quick plan's costliest
  * run, its entry in AR sealed under its plan key by this build's sources
  * (so it stands: the plan asks for it with its settings, and its scene's
@@ -393,11 +404,8 @@ START_TEST(test_budget_skip_archived) {
   ck_assert_int_eq(vsph_files_write(path, "baseline.csv", rows), 0);
   const size_t nplan = jobs.n;
   vsph_jobs_plan_free(&jobs);
-  snprintf(cmd, sizeof cmd,
-           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --budget 2s "
-           "--skip-archived ar --out r",
-           dir);
-  const struct vsph_test_outcome *o = vsph_test_shell(cmd);
+  const struct vsph_test_outcome *o =
+      budget_in(dir, "--skip-archived ar --out r");
   ck_assert_msg(o->status == 0, "%s", o->err);
   char said[200];
   snprintf(said, sizeof said, "0 of the %zu runs are cached, 1 stand in ar",
@@ -408,28 +416,16 @@ START_TEST(test_budget_skip_archived) {
   snprintf(cmd, sizeof cmd, "ls -d %s/r/runs/*/ | wc -l", dir);
   ck_assert_int_eq(atoi(vsph_test_shell(cmd)->out), 2);
   /* without the flag it is the first to start */
-  snprintf(cmd, sizeof cmd,
-           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --budget 2s "
-           "--out r2",
-           dir);
-  ck_assert_int_eq(vsph_test_shell(cmd)->status, 0);
+  ck_assert_int_eq(budget_in(dir, "--out r2")->status, 0);
   snprintf(path, sizeof path, "%s/r2/runs/%s", dir, name);
   ck_assert_msg(access(path, F_OK) == 0, "%s was not run", path);
   /* --out inside the archive: refused, nothing made */
-  snprintf(cmd, sizeof cmd,
-           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --budget 2s "
-           "--skip-archived ar --out ar/runs/zz",
-           dir);
-  o = vsph_test_shell(cmd);
+  o = budget_in(dir, "--skip-archived ar --out ar/runs/zz");
   ck_assert_msg(o->status == 2 && o->err_lines == 1, "%s", o->err);
   snprintf(path, sizeof path, "%s/ar/runs/zz", dir);
   ck_assert_int_ne(access(path, F_OK), 0);
   /* a folder that is not there: refused, nothing made */
-  snprintf(cmd, sizeof cmd,
-           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --budget 2s "
-           "--skip-archived nowhere --out r3",
-           dir);
-  o = vsph_test_shell(cmd);
+  o = budget_in(dir, "--skip-archived nowhere --out r3");
   ck_assert_msg(o->status == 2 && o->err_lines == 1, "%s", o->err);
   snprintf(path, sizeof path, "%s/r3", dir);
   ck_assert_int_ne(access(path, F_OK), 0);

@@ -592,6 +592,53 @@ static struct vsph_equations_out sweep_rhs(struct vsph_integrate *s,
   return out;
 }
 
+/* What two loops on the same particles must share: @p buf's second
+ * block (s1, one thread) and third (s2, two threads) hold the same bits;
+ * they have the reference's (first block, g) interactions and closest
+ * pair; every field equals the reference's to 1e-12 of the size of its
+ * terms over the fluid particles (rho0 |u|/h for the continuity sum,
+ * (|p| + pb with the transport velocity)/(rho0 h) + mu |u|/(rho0 h^2)
+ * for the acceleration, mu |u|/(rho0 h^2) for its viscous part: where a
+ * sum cancels, its terms set the scale). @p label names the pair. */
+static void assert_loops_agree(const struct vsph_integrate *s,
+                               const struct vsph_integrate_props *ip,
+                               const double *buf,
+                               const struct vsph_equations_out *g,
+                               const struct vsph_equations_out *s1,
+                               const struct vsph_equations_out *s2,
+                               const char *label) {
+  const size_t n = s->p->n;
+  ck_assert_msg(memcmp(buf + 6 * n, buf + 12 * n, 6 * n * sizeof *buf) == 0,
+                "%s: 1 and 2 threads differ", label);
+  ck_assert_uint_eq(s1->interactions, g->interactions);
+  ck_assert_uint_eq(s2->interactions, g->interactions);
+  ck_assert(s1->min_s2 == g->min_s2);
+  ck_assert(g->interactions > 0);
+  const char *what[6] = {"drho",       "acc x",      "acc y",
+                         "acc_visc x", "acc_visc y", "drho_delta"};
+  double umax = 0.0, pmax = 0.0;
+  for (size_t i = 0; i < n; i++)
+    if (s->p->id[i] < s->n_fluid) {
+      umax = fmax(umax, hypot(s->p->vel[0][i], s->p->vel[1][i]));
+      pmax = fmax(pmax, fabs(s->p->p[i]));
+    }
+  const double h = ip->eq.visc.h, rho0 = ip->eq.rho0;
+  const double visc = ip->eq.visc.mu * umax / (rho0 * h * h);
+  const double pterm = (pmax + ip->eq.pb * ip->eq.tvf) / (rho0 * h) + visc;
+  const double terms[6] = {rho0 * umax / h, pterm, pterm, visc, visc, 0.0};
+  for (int q = 0; q < 6; q++) {
+    const double *a = buf + (size_t)q * n, *b = buf + (size_t)(6 + q) * n;
+    double scale = terms[q], err = 0.0;
+    for (size_t i = 0; i < n; i++) {
+      if (s->p->id[i] >= s->n_fluid) continue;
+      scale = fmax(scale, fabs(a[i]));
+      err = fmax(err, fabs(a[i] - b[i]));
+    }
+    ck_assert_msg(err <= 1e-12 * scale, "%s, %s: differ by %.3e of %.3e", label,
+                  what[q], err, scale);
+  }
+}
+
 /* Scene sc_i (ghost walls where it has walls), at 16 across (channels
  * 32), formulation form, delta-SPH 0.1, after three steps: the sweep on 1
  * and 2 threads gives the same bits; interactions and the closest pair
@@ -631,41 +678,10 @@ START_TEST(test_sweep_gather_threads) {
   const struct vsph_equations_out g = sweep_rhs(s, NULL, 1, buf),
                                   s1 = sweep_rhs(s, sw, 1, buf + 6 * n),
                                   s2 = sweep_rhs(s, sw, 2, buf + 12 * n);
-  ck_assert_msg(memcmp(buf + 6 * n, buf + 12 * n, 6 * n * sizeof *buf) == 0,
-                "%s %s: the sweep on 1 and 2 threads differs", sc.type->name,
-                vsph_viscous_name(form));
-  ck_assert_uint_eq(s1.interactions, g.interactions);
-  ck_assert_uint_eq(s2.interactions, g.interactions);
-  ck_assert(s1.min_s2 == g.min_s2);
-  ck_assert(g.interactions > 0);
-  const char *what[6] = {"drho",       "acc x",      "acc y",
-                         "acc_visc x", "acc_visc y", "drho_delta"};
-  double umax = 0.0, pmax = 0.0;
-  for (size_t i = 0; i < n; i++)
-    if (s->p->id[i] < s->n_fluid) {
-      umax = fmax(umax, hypot(s->p->vel[0][i], s->p->vel[1][i]));
-      pmax = fmax(pmax, fabs(s->p->p[i]));
-    }
-  const double h = ip.eq.visc.h, rho0 = ip.eq.rho0;
-  const double visc = ip.eq.visc.mu * umax / (rho0 * h * h);
-  const double terms[6] = {rho0 * umax / h,
-                           pmax / (rho0 * h) + visc,
-                           pmax / (rho0 * h) + visc,
-                           visc,
-                           visc,
-                           0.0};
-  for (int q = 0; q < 6; q++) {
-    const double *a = buf + (size_t)q * n, *c = buf + (size_t)(6 + q) * n;
-    double scale = terms[q], err = 0.0;
-    for (size_t i = 0; i < n; i++) {
-      if (s->p->id[i] >= s->n_fluid) continue;
-      scale = fmax(scale, fabs(a[i]));
-      err = fmax(err, fabs(a[i] - c[i]));
-    }
-    ck_assert_msg(err <= 1e-12 * scale,
-                  "%s %s %s: |sweep - gather| %.3e of %.3e", sc.type->name,
-                  vsph_viscous_name(form), what[q], err, scale);
-  }
+  char label[96];
+  snprintf(label, sizeof label, "%s %s, sweep against gather", sc.type->name,
+           vsph_viscous_name(form));
+  assert_loops_agree(s, &ip, buf, &g, &s1, &s2, label);
   vsph_equations_sweep_free(sw);
   free(buf);
   vsph_integrate_free(s);
@@ -716,39 +732,13 @@ START_TEST(test_gather_shapes) {
   double *buf = calloc(18 * n, sizeof *buf);
   const struct vsph_equations_out s1 = sweep_rhs(s, NULL, 1, buf + 6 * n),
                                   s2 = sweep_rhs(s, NULL, 2, buf + 12 * n);
-  ck_assert_msg(memcmp(buf + 6 * n, buf + 12 * n, 6 * n * sizeof *buf) == 0,
-                "%s %s: 1 and 2 threads differ", name, form);
   s->props.eq.loop_general = 1;
   const struct vsph_equations_out g = sweep_rhs(s, NULL, 1, buf);
   s->props.eq.loop_general = 0;
-  ck_assert_uint_eq(s1.interactions, g.interactions);
-  ck_assert_uint_eq(s2.interactions, g.interactions);
-  ck_assert(s1.min_s2 == g.min_s2);
-  ck_assert(g.interactions > 0);
-  const char *what[6] = {"drho",       "acc x",      "acc y",
-                         "acc_visc x", "acc_visc y", "drho_delta"};
-  double umax = 0.0, pmax = 0.0;
-  for (size_t i = 0; i < n; i++)
-    if (s->p->id[i] < s->n_fluid) {
-      umax = fmax(umax, hypot(s->p->vel[0][i], s->p->vel[1][i]));
-      pmax = fmax(pmax, fabs(s->p->p[i]));
-    }
-  const double h = ip.eq.visc.h, rho0 = ip.eq.rho0;
-  const double visc = ip.eq.visc.mu * umax / (rho0 * h * h);
-  const double pterm = (pmax + ip.eq.pb * ip.eq.tvf) / (rho0 * h) + visc;
-  const double terms[6] = {rho0 * umax / h, pterm, pterm, visc, visc, 0.0};
-  for (int q = 0; q < 6; q++) {
-    const double *a = buf + (size_t)q * n, *b = buf + (size_t)(6 + q) * n;
-    double scale = terms[q], err = 0.0;
-    for (size_t i = 0; i < n; i++) {
-      if (s->p->id[i] >= s->n_fluid) continue;
-      scale = fmax(scale, fabs(a[i]));
-      err = fmax(err, fabs(a[i] - b[i]));
-    }
-    ck_assert_msg(err <= 1e-12 * scale,
-                  "%s %s %s: |specialised - general| %.3e of %.3e", name, form,
-                  what[q], err, scale);
-  }
+  char label[96];
+  snprintf(label, sizeof label, "%s %s, specialised against general", name,
+           form);
+  assert_loops_agree(s, &ip, buf, &g, &s1, &s2, label);
   if (cases[c].tvf) { /* the Adami walls, general then inlined */
     struct vsph_particles *p = s->p;
     const size_t cols = 5;
