@@ -50,19 +50,6 @@ static int summarise(const char *dir, const char *archive, const char *commit) {
   memset(&jobs, 0, sizeof jobs);
   int st = vsph_report_plan_jobs(dir, 1, &jobs);
   if (st) return st;
-  const char **names = calloc(jobs.n + 1, sizeof *names);
-  const char **keys = calloc(jobs.n + 1, sizeof *keys);
-  if (!names || !keys) {
-    free(names);
-    free(keys);
-    vsph_jobs_plan_free(&jobs);
-    VSPH_FAIL(VSPH_ENOMEM, "cannot list the FULL plan");
-  }
-  for (size_t k = 0; k < jobs.n; k++) {
-    const char *slash = strrchr(jobs.job[k].dir, '/');
-    names[k] = slash ? slash + 1 : jobs.job[k].dir;
-    keys[k] = jobs.job[k].key ? jobs.job[k].key : "";
-  }
   const char *history = getenv("VSPH_ARCHIVE_HISTORY");
   struct stat sb;
   if (stat("reports/baseline.csv", &sb) != 0)
@@ -70,18 +57,16 @@ static int summarise(const char *dir, const char *archive, const char *commit) {
             "vsph report: no reports/baseline.csv here: summary.md leaves the "
             "archive's entries unjudged (run it in the source tree's top "
             "folder, as make archive does)\n");
-  const struct vsph_archive_judge jd = {
+  const struct vsph_archive_judge base = {
       .history = history && *history ? history : NULL,
       .baseline = stat("reports/baseline.csv", &sb) == 0
                       ? "reports/baseline.csv"
                       : NULL,
-      .commit = commit,
-      .nplan = jobs.n,
-      .plan_name = names,
-      .plan_key = keys};
-  st = vsph_archive_summarise(archive, &jd);
-  free(names);
-  free(keys);
+      .commit = commit};
+  struct vsph_archive_judge jd = {0};
+  st = vsph_report_plan_judge(&jobs, &base, &jd);
+  if (!st) st = vsph_archive_summarise(archive, &jd);
+  vsph_report_plan_judge_free(&jd);
   vsph_jobs_plan_free(&jobs);
   return st;
 }

@@ -415,32 +415,53 @@ int vsph_report_plan_jobs(const char *dir, int full, struct vsph_jobs *jobs) {
   return st;
 }
 
+int vsph_report_plan_judge(const struct vsph_jobs *jobs,
+                           const struct vsph_archive_judge *base,
+                           struct vsph_archive_judge *jd) {
+  const char **names = calloc(jobs->n + 1, sizeof *names);
+  const char **keys = calloc(jobs->n + 1, sizeof *keys);
+  if (!names || !keys) {
+    free(names);
+    free(keys);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot list the plan");
+  }
+  for (size_t k = 0; k < jobs->n; k++) {
+    const char *slash = strrchr(jobs->job[k].dir, '/');
+    names[k] = slash ? slash + 1 : jobs->job[k].dir;
+    keys[k] = jobs->job[k].key ? jobs->job[k].key : "";
+  }
+  *jd = *base;
+  jd->nplan = jobs->n;
+  jd->plan_name = names;
+  jd->plan_key = keys;
+  return VSPH_OK;
+}
+
+void vsph_report_plan_judge_free(struct vsph_archive_judge *jd) {
+  free((void *)jd->plan_name);
+  free((void *)jd->plan_key);
+  jd->plan_name = jd->plan_key = NULL;
+  jd->nplan = 0;
+}
+
 /* Mark the planned runs that stand in rp->skip_archive: they are not run
  * (a FULL sitting goes on from the archive, whatever build made it). */
 static int mark_archived(struct vsph_report *R,
                          const struct vsph_report_props *rp) {
-  const size_t n = R->jobs.n;
-  const char **names = calloc(n + 1, sizeof *names);
-  const char **keys = calloc(n + 1, sizeof *keys);
-  int *stands = calloc(n + 1, sizeof *stands);
-  int st = names && keys && stands ? VSPH_OK : VSPH_ENOMEM;
-  if (st) vsph_status_report(st, __FILE__, __LINE__, "cannot list the plan");
-  for (size_t k = 0; !st && k < n; k++) {
-    const char *slash = strrchr(R->jobs.job[k].dir, '/');
-    names[k] = slash ? slash + 1 : R->jobs.job[k].dir;
-    keys[k] = R->jobs.job[k].key ? R->jobs.job[k].key : "";
+  struct vsph_archive_judge jd;
+  int st = vsph_report_plan_judge(&R->jobs, rp->judge, &jd);
+  if (st) return st;
+  int *stands = calloc(R->jobs.n + 1, sizeof *stands);
+  if (!stands) {
+    vsph_report_plan_judge_free(&jd);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot list the plan");
   }
-  struct vsph_archive_judge jd = *rp->judge;
-  jd.nplan = n;
-  jd.plan_name = names;
-  jd.plan_key = keys;
-  if (!st) st = vsph_archive_standing(rp->skip_archive, &jd, stands);
-  for (size_t k = 0; !st && k < n; k++)
+  st = vsph_archive_standing(rp->skip_archive, &jd, stands);
+  for (size_t k = 0; !st && k < R->jobs.n; k++)
     R->jobs.job[k].archived =
         stands[k] == VSPH_ARCHIVE_STANDS && !R->jobs.job[k].cached;
-  free(names);
-  free(keys);
   free(stands);
+  vsph_report_plan_judge_free(&jd);
   return st;
 }
 

@@ -94,4 +94,15 @@ int vsph_report_write(const struct vsph_report_props *rp);
  *  vsph_jobs_plan_free. @return VSPH_OK or the plan's error. */
 int vsph_report_plan_jobs(const char *dir, int full, struct vsph_jobs *jobs);
 
+/** @brief @p jd: @p base (history, baseline, commit) with the plan of
+ *  @p jobs (each run's folder name and key; they point into @p jobs,
+ *  which must outlive @p jd). Free with vsph_report_plan_judge_free.
+ *  @return VSPH_OK or VSPH_ENOMEM (reported). */
+int vsph_report_plan_judge(const struct vsph_jobs *jobs,
+                           const struct vsph_archive_judge *base,
+                           struct vsph_archive_judge *jd);
+
+/** @brief Free what vsph_report_plan_judge allocated. */
+void vsph_report_plan_judge_free(struct vsph_archive_judge *jd);
+
 #endif /* VSPH_REPORTS_REPORT_H */

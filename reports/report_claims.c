@@ -452,50 +452,23 @@ static void scene_figure(char *buf, size_t len, int sc,
   }
 }
 
-/* The FULL plan's runs that stand in R->beside, by folder name: stands[k]
- * for names[k] (k < *n), the names held in *pool; free all three. */
-static int standing(struct vsph_report *R, const char ***names, int **stands,
-                    char **pool, size_t *n) {
-  struct vsph_jobs jobs;
-  memset(&jobs, 0, sizeof jobs);
-  int st = vsph_report_plan_jobs(R->dir, 1, &jobs);
-  if (st) return st;
-  const char **keys = calloc(jobs.n + 1, sizeof *keys);
-  *names = calloc(jobs.n + 1, sizeof **names);
-  *stands = calloc(jobs.n + 1, sizeof **stands);
-  *pool = calloc(jobs.n + 1, sizeof jobs.job[0].dir);
-  if (!keys || !*names || !*stands || !*pool) {
-    free(keys);
-    vsph_jobs_plan_free(&jobs);
-    VSPH_FAIL(VSPH_ENOMEM, "cannot list the FULL plan");
-  }
-  for (size_t k = 0; k < jobs.n; k++) {
-    const char *slash = strrchr(jobs.job[k].dir, '/');
-    char *at = *pool + k * sizeof jobs.job[0].dir;
-    snprintf(at, sizeof jobs.job[0].dir, "%s",
-             slash ? slash + 1 : jobs.job[k].dir);
-    (*names)[k] = at;
-    keys[k] = jobs.job[k].key ? jobs.job[k].key : "";
-  }
-  struct vsph_archive_judge jd = *R->judge;
-  jd.nplan = jobs.n;
-  jd.plan_name = *names;
-  jd.plan_key = keys;
-  st = vsph_archive_standing(R->beside, &jd, *stands);
-  *n = jobs.n;
-  free(keys);
-  vsph_jobs_plan_free(&jobs);
-  return st;
-}
-
 int vsph_report_claims_beside(struct vsph_report *R,
                               const struct vsph_jobs_run run[][NFORM],
                               const double err[][NFORM]) {
-  const char **names = NULL;
-  int *stands = NULL;
-  char *pool = NULL;
-  size_t n = 0;
-  int st = standing(R, &names, &stands, &pool, &n);
+  /* the FULL plan, each run's verdict in the archive */
+  struct vsph_jobs jobs;
+  memset(&jobs, 0, sizeof jobs);
+  struct vsph_archive_judge jd = {0};
+  int st = vsph_report_plan_jobs(R->dir, 1, &jobs);
+  if (!st) st = vsph_report_plan_judge(&jobs, R->judge, &jd);
+  int *stands = st ? NULL : calloc(jobs.n + 1, sizeof *stands);
+  if (!st && !stands) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot list the FULL plan");
+  }
+  if (!st) st = vsph_archive_standing(R->beside, &jd, stands);
+  const char *const *names = jd.plan_name;
+  const size_t n = jd.nplan;
   size_t held = 0, stand = 0, unjudged = 0, stale = 0, unreadable = 0;
   char *rows = NULL;
   size_t rlen = 0;
@@ -546,9 +519,9 @@ int vsph_report_claims_beside(struct vsph_report *R,
               F->res[VSPH_REPORT_LADDER - 1], F->t_end, full, judged);
     }
   if (m && fclose(m) != 0 && !st) st = VSPH_ENOMEM;
-  free(pool);
-  free(names);
   free(stands);
+  vsph_report_plan_judge_free(&jd);
+  vsph_jobs_plan_free(&jobs);
   if (!st) {
     vsph_text_set(&R->tv, "archive", "%s", R->beside);
     vsph_text_set(&R->tv, "held", "%zu", held);
