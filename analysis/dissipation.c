@@ -249,6 +249,55 @@ static double edge_distance(int shape, const double x[3]) {
   return 0.5 * EXTENT - fmax(fabs(x[0]), fabs(x[1]));
 }
 
+/* (div V)_i into f and the pairwise density into dens for every particle
+ * of p (sorted by cell on the way), through a cell list and workspace of
+ * its own; PVWF's fallback count into *nfb. */
+static int evaluate(const struct vsph_viscous_props *vp,
+                    struct vsph_particles *p, double *const f[3], double *dens,
+                    size_t *nfb) {
+  struct vsph_cells *cells = vsph_cells_alloc();
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(p->n, vp->dim);
+  int st = VSPH_ENOMEM;
+  if (cells && ws &&
+      !(st = vsph_cells_build(cells, p, vp->kernel->kappa * vp->h)) &&
+      !(st = vsph_viscous_compute(vp, p, cells, ws, f, dens)))
+    *nfb = vp->form == VSPH_VISCOUS_PVWF ? ws->n_fallback : 0;
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(cells);
+  return st;
+}
+
+int vsph_dissipation_particles(const struct vsph_viscous_props *vp,
+                               struct vsph_particles *p,
+                               struct vsph_dissipation_power *out) {
+  if (!vp || !p || !out) VSPH_FAIL(VSPH_EINVAL, "no props, set or result");
+  if (vp->dim != p->dim)
+    VSPH_FAIL(VSPH_EINVAL, "props in %d-D, particles in %d-D", vp->dim, p->dim);
+  for (size_t i = 0; i < p->n; i++)
+    if (!(p->m[i] > 0.0) || !(p->rho[i] > 0.0) || !isfinite(p->m[i]) ||
+        !isfinite(p->rho[i]))
+      VSPH_FAIL(VSPH_EINVAL,
+                "particle %zu: mass %g and density %g must be positive", i,
+                p->m[i], p->rho[i]);
+  vsph_particles_refresh_vol(p);
+  const size_t n = p->n ? p->n : 1;
+  double *buf = malloc(4 * n * sizeof *buf);
+  if (!buf) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate %zu particles' sums", n);
+  double *f[3] = {buf, buf + n, buf + 2 * n}, *dens = buf + 3 * n;
+  const int st = evaluate(vp, p, f, dens, &out->n_fallback);
+  if (!st) { /* serial sums in particle order: any thread count */
+    out->P = out->P_pair = 0.0;
+    for (size_t i = 0; i < p->n; i++) {
+      double ud = 0.0;
+      for (int k = 0; k < p->dim; k++) ud += p->vel[k][i] * f[k][i];
+      out->P += p->vol[i] * ud;
+      out->P_pair += p->vol[i] * dens[i];
+    }
+  }
+  free(buf);
+  return st;
+}
+
 int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
                              struct vsph_dissipation_result *res) {
   if (dp->field.dim != 2)
@@ -302,10 +351,8 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
                : vsph_lattice_square(&lp, EXTENT, dp->nacross, &p);
   if (st) return st;
   struct vsph_viscous_props vp;
-  struct vsph_cells *cells = vsph_cells_alloc();
-  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(p->n, 2);
   double *buf = malloc(3 * p->n * sizeof *buf);
-  if (!cells || !ws || !buf) {
+  if (!buf) {
     st = VSPH_ENOMEM;
     goto done;
   }
@@ -317,9 +364,8 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
     p->vel[0][i] = u[0];
     p->vel[1][i] = u[1];
   }
-  if ((st = vsph_cells_build(cells, p, dp->kernel->kappa * h))) goto done;
   double *f[3] = {buf, buf + p->n, NULL}, *dens = buf + 2 * p->n;
-  if ((st = vsph_viscous_compute(&vp, p, cells, ws, f, dens))) goto done;
+  if ((st = evaluate(&vp, p, f, dens, &res->n_fallback))) goto done;
   if ((st = vsph_dissipation_exact(dp, &res->P_exact, &res->P_grad))) goto done;
 
   /* Serial sums in particle order: reproducible for any thread count. */
@@ -351,7 +397,6 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
   res->P_pair = Pp;
   res->momentum = mom_abs > 0.0 ? hypot(mom[0], mom[1]) / mom_abs : 0.0;
   res->angular = ang_abs > 0.0 ? fabs(ang) / ang_abs : 0.0;
-  res->n_fallback = vp.form == VSPH_VISCOUS_PVWF ? ws->n_fallback : 0;
 
   /* "Zero" exact dissipation: the field has D = 0 (rigid rotation), where
    * the quadrature returns 0 exactly; normalise by |P_grad| then. */
@@ -375,8 +420,6 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
   }
 done:
   free(buf);
-  vsph_viscous_ws_free(ws);
-  vsph_cells_free(cells);
   vsph_particles_free(p);
   return st;
 }

@@ -88,4 +88,27 @@ int vsph_dissipation_exact(const struct vsph_dissipation_props *dp,
 int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
                              struct vsph_dissipation_result *res);
 
+struct vsph_viscous_props;
+struct vsph_particles;
+
+/** The dissipation of a particle set (W, per unit depth in 2-D). */
+struct vsph_dissipation_power {
+  double P;          /*!< sum_i V_i u_i.(div V)_i */
+  double P_pair;     /*!< sum_i V_i p_i, the formulation's pairwise density
+                          (THEORY.md section 4; equal to P to rounding) */
+  size_t n_fallback; /*!< PVWF: particles whose L fell back to I */
+};
+
+/** @brief The dissipation of the formulation @p vp for a particle set of
+ *  the caller's (pos, vel, m and rho of its p->n particles; vol is set
+ *  to m/rho): every particle gathers from all the others within kappa h,
+ *  the set taken as it is (no walls, no ghosts, a free surface wherever it
+ *  ends). For regression tests of another code's dissipation.
+ *  @note Allocates and frees its own cell list and workspace; reorders
+ *  nothing (the cell list sorts indices, not the set).
+ *  @return VSPH_OK, VSPH_EINVAL (dimension, kernel), VSPH_ENOMEM. */
+int vsph_dissipation_particles(const struct vsph_viscous_props *vp,
+                               struct vsph_particles *p,
+                               struct vsph_dissipation_power *out);
+
 #endif /* VSPH_ANALYSIS_DISSIPATION_H */

@@ -1,8 +1,11 @@
 #include <math.h>
+#include <stdlib.h>
 
 #include "../analysis/dissipation.h"
 #include "../common/consts.h"
+#include "../common/status.h"
 #include "../kernels/kernel.h"
+#include "../solver/particles.h"
 #include "../solver/viscous.h"
 #include "check_suites.h"
 
@@ -177,12 +180,113 @@ START_TEST(test_strain_angle) {
 }
 END_TEST
 
+/* A set of the caller's: 12 x 11 particles, dx = 0.1, shifted by up to
+ * 0.2 dx in a fixed pattern, masses varying by 10 %, moving in the
+ * smooth field u = (sin 2y + 0.3 x, cos x - 0.5 y^2). */
+static struct vsph_particles *own_set(void) {
+  struct vsph_particles *p = vsph_particles_alloc(132, 2);
+  ck_assert_ptr_nonnull(p);
+  p->n = 132;
+  for (size_t i = 0; i < p->n; i++) {
+    const double a = 2.385 * (double)i;
+    const double x = 0.1 * (double)(i % 12) + 0.02 * sin(a);
+    const double y = 0.1 * (double)(i / 12) + 0.02 * cos(1.7 * a);
+    p->pos[0][i] = x;
+    p->pos[1][i] = y;
+    p->vel[0][i] = sin(2.0 * y) + 0.3 * x;
+    p->vel[1][i] = cos(x) - 0.5 * y * y;
+    p->rho[i] = 1000.0 * (1.0 + 0.05 * sin(3.1 * a));
+    p->m[i] = 10.0 * (1.0 + 0.1 * cos(a));
+    p->id[i] = i;
+  }
+  return p;
+}
+
+/* sum_i V_i u_i.(div V)_i by the pair formulas of THEORY.md section 3,
+ * every pair of the set in turn (no cell list, no pair.h), with
+ * grad_i W_ij = -W'(s) x/s, x = r_j - r_i:
+ * MGF  (div V)_i = 2(d+2) mu sum_j V_j (u_j - u_i).x/s^2 grad_i W_ij;
+ * MEAF (div V)_i = 2 mu sum_j V_j W'(s)/s (u_i - u_j). */
+static double brute(const struct vsph_particles *p, int form, double h,
+                    double mu) {
+  const struct vsph_kernel_type *k = &vsph_gaussian_type;
+  double P = 0.0;
+  for (size_t i = 0; i < p->n; i++) {
+    const double Vi = p->m[i] / p->rho[i];
+    double f[2] = {0.0, 0.0};
+    for (size_t j = 0; j < p->n; j++) {
+      if (j == i) continue;
+      const double x[2] = {p->pos[0][j] - p->pos[0][i],
+                           p->pos[1][j] - p->pos[1][i]};
+      const double s = hypot(x[0], x[1]);
+      if (s >= k->kappa * h) continue;
+      const double Wp = vsph_kernel_dw(k, 2, s / h) / (h * h * h);
+      const double Vj = p->m[j] / p->rho[j];
+      const double du[2] = {p->vel[0][j] - p->vel[0][i],
+                            p->vel[1][j] - p->vel[1][i]};
+      for (int a = 0; a < 2; a++)
+        f[a] += form == VSPH_VISCOUS_MGF
+                    ? 8.0 * mu * Vj * (du[0] * x[0] + du[1] * x[1]) / (s * s) *
+                          (-Wp * x[a] / s)
+                    : 2.0 * mu * Vj * Wp / s * (-du[a]);
+    }
+    P += Vi * (p->vel[0][i] * f[0] + p->vel[1][i] * f[1]);
+  }
+  return P;
+}
+
+/* vsph_dissipation_particles on a set of the caller's against the
+ * brute-force sums: the same terms in another order, so rounding,
+ * 1e-12 of |P|. */
+START_TEST(test_particles_brute) {
+  static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_MEAF};
+  const double h = 4.0 / 3.0 * 0.1, mu = 0.0137;
+  for (int f = 0; f < 2; f++) {
+    struct vsph_particles *p = own_set();
+    const double want = brute(p, forms[f], h, mu);
+    struct vsph_viscous_props vp;
+    ck_assert_int_eq(
+        vsph_viscous_props_init(&vp, forms[f], &vsph_gaussian_type, 2, h, mu),
+        0);
+    struct vsph_dissipation_power pw;
+    ck_assert_int_eq(vsph_dissipation_particles(&vp, p, &pw), 0);
+    ck_assert_msg(want < 0.0, "the field dissipates: %g", want);
+    ck_assert_msg(fabs(pw.P - want) <= 1e-12 * fabs(want),
+                  "%s: P = %.17g, brute force %.17g",
+                  vsph_viscous_name(forms[f]), pw.P, want);
+    ck_assert_double_le(fabs(pw.P_pair - want), 1e-12 * fabs(want));
+    vsph_particles_free(p);
+  }
+}
+END_TEST
+
+/* A set in the wrong dimension or with a non-positive density: refused
+ * with VSPH_EINVAL, nothing computed. */
+START_TEST(test_particles_refused) {
+  vsph_test_silence();
+  struct vsph_particles *p = own_set();
+  struct vsph_viscous_props vp;
+  ck_assert_int_eq(vsph_viscous_props_init(&vp, VSPH_VISCOUS_MGF,
+                                           &vsph_gaussian_type, 3, 0.1, 1.0),
+                   0);
+  struct vsph_dissipation_power pw = {.P = 7.0};
+  ck_assert_int_eq(vsph_dissipation_particles(&vp, p, &pw), VSPH_EINVAL);
+  vp.dim = 2;
+  p->rho[17] = 0.0;
+  ck_assert_int_eq(vsph_dissipation_particles(&vp, p, &pw), VSPH_EINVAL);
+  ck_assert_double_eq(pw.P, 7.0);
+  vsph_particles_free(p);
+}
+END_TEST
+
 Suite *vsph_dissipation_suite(void) {
   Suite *s = suite_create("dissipation");
   TCase *tc = tcase_create("integrals");
   tcase_set_timeout(tc, 60);
   tcase_add_test(tc, test_exact_integrals);
   tcase_add_test(tc, test_pvwf_exact);
+  tcase_add_test(tc, test_particles_brute);
+  tcase_add_test(tc, test_particles_refused);
   tcase_add_test(tc, test_mgf);
   tcase_add_test(tc, test_meaf);
   tcase_add_test(tc, test_mixed);

@@ -1,0 +1,161 @@
+/* libvsph as another code sees it: installed by scripts/install (make
+ * check stages a copy in $VSPH_STAGE), examples/regression built against
+ * it through pkg-config, shared and static, and run; the values it
+ * prints held to the closed forms here. Also the install's refusals and
+ * an uninstall that removes what the install made and nothing else. */
+#define _XOPEN_SOURCE 700 /* realpath */
+#include <check.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check_suites.h"
+
+/* What the example must print: the line's label, the value by closed
+ * form, and the tolerance (the example's own, see its comments). */
+struct expect_line {
+  const char *what;
+  double want;
+  double tol;
+};
+
+static const struct expect_line EXPECT[] = {
+    /* M = delta on the full support, delta/2 on the half (THEORY.md 2):
+     * quadrature at relative 1e-10, tenfold */
+    {"M_xx, full support", 1.0, 1e-9},
+    {"M_yy, full support", 1.0, 1e-9},
+    {"M_xx, half support", 0.5, 1e-9},
+    {"M_yy, half support", 0.5, 1e-9},
+    /* rigid rotation: MGF's du.x vanishes pair by pair, so P is rounding
+     * against the shear's */
+    {"MGF dissipation, rotation / shear's", 0.0, 1e-12},
+    {"MGF dissipation, shear < 0", 1.0, 0.0},
+    {"MGF pairwise = particle form, shear", 1.0, 1e-12},
+    /* W = 1, nu = 0.1, U0 = 1, y = 0.3: the steady parabola
+     * 1 - (yc/d)^2 = 1 - 0.16 at nu t/W^2 = 10 (the transient e^-247 of
+     * it), rest and dU/dt = 2 nu U0/d^2 = 0.8 at t = 0; rounding */
+    {"Poiseuille U, nu t/W^2 = 10", 0.84, 1e-14},
+    {"Poiseuille U, t = 0", 0.0, 0.0},
+    {"Poiseuille dU/dt, t = 0", 0.8, 1e-14},
+};
+#define NEXPECT (sizeof EXPECT / sizeof EXPECT[0])
+
+/* Every expected line in the output @p out, each value within its
+ * tolerance of the closed form, and no line marked FAIL. */
+static void assert_lines(const char *out, const char *which) {
+  ck_assert_msg(strstr(out, "FAIL") == NULL, "%s: a line failed:\n%s", which,
+                out);
+  for (size_t e = 0; e < NEXPECT; e++) {
+    const char *at = strstr(out, EXPECT[e].what);
+    ck_assert_msg(at != NULL, "%s printed no line '%s':\n%s", which,
+                  EXPECT[e].what, out);
+    double got = NAN;
+    ck_assert_int_eq(sscanf(at + strlen(EXPECT[e].what), "%lf", &got), 1);
+    ck_assert_msg(fabs(got - EXPECT[e].want) <= EXPECT[e].tol,
+                  "%s: %s = %.17g, closed form %.17g (tolerance %g)", which,
+                  EXPECT[e].what, got, EXPECT[e].want, EXPECT[e].tol);
+  }
+}
+
+/* The staged install's absolute path (make -C moves elsewhere). */
+static const char *staged(char *buf) {
+  const char *stage = getenv("VSPH_STAGE");
+  ck_assert_msg(stage && *stage,
+                "VSPH_STAGE (a staged install, made by make check) unset");
+  ck_assert_msg(realpath(stage, buf) != NULL, "VSPH_STAGE %s: no such folder",
+                stage);
+  return buf;
+}
+
+START_TEST(test_installed_example) {
+  char sbuf[4096];
+  const char *stage = staged(sbuf);
+  char dir[] = "/tmp/vsph-lib-XXXXXX", script[6 * 4096];
+  vsph_test_scratch(dir);
+  snprintf(script, sizeof script,
+           "PKG_CONFIG_PATH='%s/lib/pkgconfig' make -s -C examples/regression "
+           "OUT='%s' 2>&1 && '%s/regression' && '%s/regression-static' && "
+           "ldd '%s/regression' && echo static: && ldd '%s/regression-static'",
+           stage, dir, dir, dir, dir, dir);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 0, "example: exit %d\n%s\n%s", o->status, o->out,
+                o->err);
+  /* the shared run and the static run each print every line */
+  const char *second = strstr(o->out, "# 0 failed");
+  ck_assert_ptr_nonnull(second);
+  second = strstr(second + 1, "# libvsph");
+  ck_assert_msg(second != NULL, "the static build printed nothing:\n%s",
+                o->out);
+  char first[1 << 14];
+  const size_t n1 = (size_t)(second - o->out) < sizeof first
+                        ? (size_t)(second - o->out)
+                        : sizeof first - 1;
+  memcpy(first, o->out, n1);
+  first[n1] = '\0';
+  assert_lines(first, "shared");
+  assert_lines(second, "static");
+  /* the shared one loads the staged library; the static one none */
+  char want[4096 + 64];
+  snprintf(want, sizeof want, "libvsph.so.0 => %s/lib/libvsph.so.0", stage);
+  const char *st = strstr(o->out, "static:");
+  ck_assert_ptr_nonnull(st);
+  const char *so = strstr(o->out, want);
+  ck_assert_msg(so != NULL && so < st, "shared example not linked to %s:\n%s",
+                want, o->out);
+  ck_assert_msg(strstr(st, "libvsph") == NULL,
+                "static example loads libvsph:\n%s", st);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
+/* A bad PREFIX is refused with one line and exit 2, nothing written; an
+ * uninstall removes the install's files and leaves a file it did not
+ * make. */
+START_TEST(test_install_refusals) {
+  char dir[] = "/tmp/vsph-inst-XXXXXX", script[4096];
+  vsph_test_scratch(dir);
+  static const char *const bad[] = {"relative/path", "/with space", "/quote'd"};
+  for (size_t b = 0; b < 3; b++) {
+    snprintf(script, sizeof script,
+             "scripts/install '%s' \"%s\" 0.2.0 0 build vsph.h", dir, bad[b]);
+    struct vsph_test_outcome *o = vsph_test_shell(script);
+    ck_assert_msg(o->status == 2 && o->err_lines == 1,
+                  "PREFIX '%s': exit %d, %d lines: %s", bad[b], o->status,
+                  o->err_lines, o->err);
+  }
+  snprintf(script, sizeof script, "find '%s' -mindepth 1 | wc -l", dir);
+  ck_assert_str_eq(vsph_test_shell(script)->out, "0\n");
+  /* install under DESTDIR = dir, a foreign file beside, uninstall */
+  snprintf(script, sizeof script,
+           "scripts/install '%s' /opt/v 0.2.0 0 build vsph.h common/consts.h "
+           "> /dev/null && echo mine > '%s/opt/v/lib/other.so' && "
+           "test -L '%s/opt/v/lib/libvsph.so' && "
+           "scripts/install --uninstall '%s' /opt/v > /dev/null && "
+           "cd '%s/opt/v' && find . -type f -o -type l | sort",
+           dir, dir, dir, dir, dir);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 0, "install/uninstall: %d %s", o->status, o->err);
+  ck_assert_str_eq(o->out, "./lib/other.so\n");
+  /* no manifest, nothing to remove: refused, the foreign file kept */
+  snprintf(script, sizeof script,
+           "scripts/install --uninstall '%s' /opt/v; echo $?; "
+           "cat '%s/opt/v/lib/other.so'",
+           dir, dir);
+  o = vsph_test_shell(script);
+  ck_assert_str_eq(o->out, "2\nmine\n");
+  ck_assert_int_eq(o->err_lines, 1);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
+Suite *vsph_library_suite(void) {
+  Suite *s = suite_create("library");
+  TCase *tc = tcase_create("install");
+  tcase_set_timeout(tc, 120);
+  tcase_add_test(tc, test_installed_example);
+  tcase_add_test(tc, test_install_refusals);
+  suite_add_tcase(s, tc);
+  return s;
+}
