@@ -35,7 +35,15 @@
 #include "analysis/fields.h"
 #include "analysis/moments.h"
 #include "analysis/references.h"
+
+#ifdef __cplusplus
+}
+#endif
 #include "analysis/scaling.h"
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "common/consts.h"
 #include "common/params.h"
 #include "common/status.h"

@@ -268,33 +268,68 @@ static int evaluate(const struct vsph_viscous_props *vp,
 }
 
 int vsph_dissipation_particles(const struct vsph_viscous_props *vp,
-                               struct vsph_particles *p,
+                               const struct vsph_particles *p,
                                struct vsph_dissipation_power *out) {
   if (!vp || !p || !out) VSPH_FAIL(VSPH_EINVAL, "no props, set or result");
+  if (!vsph_viscous_type_get(vp->form))
+    VSPH_FAIL(VSPH_EINVAL, "unknown viscous formulation %d", vp->form);
+  if (!vp->kernel) VSPH_FAIL(VSPH_EINVAL, "no kernel given");
+  if (!(vp->h > 0.0) || !isfinite(vp->h))
+    VSPH_FAIL(VSPH_EINVAL, "smoothing length must be positive, got %g", vp->h);
   if (vp->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "props in %d-D, particles in %d-D", vp->dim, p->dim);
-  for (size_t i = 0; i < p->n; i++)
+  const int dim = p->dim;
+  for (size_t i = 0; i < p->n; i++) {
     if (!(p->m[i] > 0.0) || !(p->rho[i] > 0.0) || !isfinite(p->m[i]) ||
         !isfinite(p->rho[i]))
       VSPH_FAIL(VSPH_EINVAL,
                 "particle %zu: mass %g and density %g must be positive", i,
                 p->m[i], p->rho[i]);
-  vsph_particles_refresh_vol(p);
+    for (int k = 0; k < dim; k++)
+      if (!isfinite(p->pos[k][i]) || !isfinite(p->vel[k][i]))
+        VSPH_FAIL(VSPH_EINVAL,
+                  "particle %zu: position and velocity must be finite", i);
+  }
+  /* a copy of the set: the cell list sorts it, the caller's stays as it
+   * is */
+  struct vsph_particles *q = vsph_particles_alloc(p->n ? p->n : 1, dim);
   const size_t n = p->n ? p->n : 1;
-  double *buf = malloc(4 * n * sizeof *buf);
-  if (!buf) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate %zu particles' sums", n);
+  double *buf = q ? malloc(4 * n * sizeof *buf) : NULL;
+  if (!buf) {
+    vsph_particles_free(q);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot copy a set of %zu particles", p->n);
+  }
+  q->n = p->n;
+  for (size_t i = 0; i < p->n; i++) {
+    for (int k = 0; k < dim; k++) {
+      q->pos[k][i] = p->pos[k][i];
+      q->vel[k][i] = p->vel[k][i];
+    }
+    q->m[i] = p->m[i];
+    q->rho[i] = p->rho[i];
+    q->id[i] = i;
+  }
+  vsph_particles_refresh_vol(q);
   double *f[3] = {buf, buf + n, buf + 2 * n}, *dens = buf + 3 * n;
-  const int st = evaluate(vp, p, f, dens, &out->n_fallback);
-  if (!st) { /* serial sums in particle order: any thread count */
-    out->P = out->P_pair = 0.0;
-    for (size_t i = 0; i < p->n; i++) {
+  struct vsph_dissipation_power pw = {0.0, 0.0, 0};
+  int st = evaluate(vp, q, f, dens, &pw.n_fallback);
+  if (!st) { /* serial sums in the copy's order: any thread count */
+    for (size_t i = 0; i < q->n; i++) {
       double ud = 0.0;
-      for (int k = 0; k < p->dim; k++) ud += p->vel[k][i] * f[k][i];
-      out->P += p->vol[i] * ud;
-      out->P_pair += p->vol[i] * dens[i];
+      for (int k = 0; k < dim; k++) ud += q->vel[k][i] * f[k][i];
+      pw.P += q->vol[i] * ud;
+      pw.P_pair += q->vol[i] * dens[i];
+    }
+    if (!isfinite(pw.P) || !isfinite(pw.P_pair)) {
+      vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                         "the dissipation is not finite: two particles at "
+                         "one place?");
+      st = VSPH_EINVAL;
     }
   }
+  if (!st) *out = pw;
   free(buf);
+  vsph_particles_free(q);
   return st;
 }
 

@@ -100,15 +100,17 @@ struct vsph_dissipation_power {
 };
 
 /** @brief The dissipation of the formulation @p vp for a particle set of
- *  the caller's (pos, vel, m and rho of its p->n particles; vol is set
- *  to m/rho): every particle gathers from all the others within kappa h,
- *  the set taken as it is (no walls, no ghosts, a free surface wherever it
- *  ends). For regression tests of another code's dissipation.
- *  @note Allocates and frees its own cell list and workspace; reorders
- *  nothing (the cell list sorts indices, not the set).
- *  @return VSPH_OK, VSPH_EINVAL (dimension, kernel), VSPH_ENOMEM. */
+ *  the caller's (pos, vel, m and rho of its p->n particles): every
+ *  particle gathers from all the others within kappa h, the set taken as
+ *  it is (no walls, no ghosts, a free surface wherever it ends). For
+ *  regression tests of another code's dissipation. The set is read only:
+ *  the sums run over a copy, sorted by cell.
+ *  @return VSPH_OK; VSPH_EINVAL (bad props, dimension, a non-positive
+ *  mass or density, a non-finite position or velocity, particles too far
+ *  apart for a grid, a result that is not finite: two particles at one
+ *  place), @p out untouched; VSPH_ENOMEM. */
 int vsph_dissipation_particles(const struct vsph_viscous_props *vp,
-                               struct vsph_particles *p,
+                               const struct vsph_particles *p,
                                struct vsph_dissipation_power *out);
 
 #endif /* VSPH_ANALYSIS_DISSIPATION_H */

@@ -89,6 +89,11 @@ int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
       hi[k] = x > hi[k] ? x : hi[k];
     }
     if (n == 0) lo[k] = hi[k] = 0.0;
+    /* positions spread over more than the largest double: no grid */
+    if (!isfinite(hi[k] - lo[k]))
+      VSPH_FAIL(VSPH_EINVAL,
+                "the particles span %g to %g along axis %d: too far apart",
+                lo[k], hi[k], k);
   }
   /* Cell edge >= radius / SUB; widen the cells if the grid would hold far
    * more cells than particles (a scattered set), which keeps memory O(N). */

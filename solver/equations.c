@@ -1161,11 +1161,13 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
                      : vsph_viscous_prepare(vp, p, cells, ws);
   if (st) return st;
   if (ep->corr) {
-    if (!vsph_viscous_corrigible(vp->form))
+    if (!vsph_viscous_corrigible(vp->form)) {
+      char list[256];
       VSPH_FAIL(VSPH_EINVAL,
-                "the kernel corrections apply to the pair forms (mgf, meaf, "
-                "vi, cleary, er), not %s",
+                "the kernel corrections apply to the pair forms (%s), not %s",
+                vsph_viscous_list(VSPH_VISCOUS_CORRIGIBLE, list, sizeof list),
                 vsph_viscous_name(vp->form));
+    }
     if (!ws || !ws->S || ws->cap < p->n)
       VSPH_FAIL(VSPH_EINVAL, "the kernel corrections need a workspace");
     rc.wf = pow(vp->h, -vp->dim);

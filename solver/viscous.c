@@ -12,57 +12,165 @@
 #include "pair.h"
 #include "particles.h"
 
-static const char *const viscous_names[] = {
-    [VSPH_VISCOUS_MGF] = "mgf",       [VSPH_VISCOUS_MEAF] = "meaf",
-    [VSPH_VISCOUS_PVWF] = "pvwf",     [VSPH_VISCOUS_VI] = "vi",
-    [VSPH_VISCOUS_CLEARY] = "cleary", [VSPH_VISCOUS_TWOPASS] = "twopass",
-    [VSPH_VISCOUS_TAKEDA] = "takeda", [VSPH_VISCOUS_TAKEDA0] = "takeda0",
-    [VSPH_VISCOUS_ER] = "er",         [VSPH_VISCOUS_VISC01] = "visc01",
-    [VSPH_VISCOUS_VISC02] = "visc02", [VSPH_VISCOUS_VISC03] = "visc03",
-    [VSPH_VISCOUS_VISC04] = "visc04",
-};
-_Static_assert(sizeof viscous_names / sizeof viscous_names[0] ==
-                   VSPH_VISCOUS_FORM_COUNT,
-               "viscous name table out of sync");
-
-const char *vsph_viscous_name(int form) {
-  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT ? viscous_names[form]
-                                                     : "unknown";
+/* The pair functions of the descriptors (vsph_viscous_pair_fn): pair.h's
+ * terms with the loop's constants. */
+static struct vsph_pair_visc pair_brookshaw(const struct vsph_viscous_loop *lp,
+                                            int dim, const struct vsph_pair *pr,
+                                            struct vsph_pair_vec du, double dux,
+                                            const double Ai[9]) {
+  (void)du, (void)Ai;
+  return vsph_pair_mgf(pr, dim, lp->Kmu, lp->eta2, dux);
 }
 
-static const char *const viscous_labels[] = {
-    [VSPH_VISCOUS_MGF] = "MGF",        [VSPH_VISCOUS_MEAF] = "MEAF",
-    [VSPH_VISCOUS_PVWF] = "PVWF",      [VSPH_VISCOUS_VI] = "VI",
-    [VSPH_VISCOUS_CLEARY] = "Cleary",  [VSPH_VISCOUS_TWOPASS] = "B",
-    [VSPH_VISCOUS_TAKEDA] = "A",       [VSPH_VISCOUS_TAKEDA0] = "A[0]",
-    [VSPH_VISCOUS_ER] = "ER",          [VSPH_VISCOUS_VISC01] = "VISC-01",
-    [VSPH_VISCOUS_VISC02] = "VISC-02", [VSPH_VISCOUS_VISC03] = "VISC-03",
-    [VSPH_VISCOUS_VISC04] = "VISC-04",
+static struct vsph_pair_visc pair_meaf(const struct vsph_viscous_loop *lp,
+                                       int dim, const struct vsph_pair *pr,
+                                       struct vsph_pair_vec du, double dux,
+                                       const double Ai[9]) {
+  (void)dux, (void)Ai;
+  return vsph_pair_meaf(pr, dim, lp->two_mu, du);
+}
+
+static struct vsph_pair_visc pair_er(const struct vsph_viscous_loop *lp,
+                                     int dim, const struct vsph_pair *pr,
+                                     struct vsph_pair_vec du, double dux,
+                                     const double Ai[9]) {
+  (void)Ai;
+  return vsph_pair_er(pr, dim, lp->er_a, lp->er_b, du, dux);
+}
+
+static struct vsph_pair_visc pair_stress(const struct vsph_viscous_loop *lp,
+                                         int dim, const struct vsph_pair *pr,
+                                         struct vsph_pair_vec du, double dux,
+                                         const double Ai[9]) {
+  (void)du, (void)dux;
+  return vsph_viscous_pair_stress(pr, dim, Ai, lp->A);
+}
+
+#define FS VSPH_VISCOUS_FREE_SURFACE
+#define CO VSPH_VISCOUS_CORRIGIBLE
+/* Every formulation (docs/theory.md, sections 3 and 8). The first
+ * VSPH_VISCOUS_PAPER_COUNT are the free-surface study's. */
+const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
+    [VSPH_VISCOUS_MGF] = {"mgf", "MGF",
+                          "Monaghan & Gingold 1983; Colagrossi et al. 2011, "
+                          "Eq. (4.20)",
+                          VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MGF, FS | CO, -1,
+                          VSPH_VISCOUS_LAMBDA_MU, 0.0, "", pair_brookshaw},
+    [VSPH_VISCOUS_MEAF] = {"meaf", "MEAF",
+                           "Morris, Fox & Zhu 1997; Colagrossi et al. 2011, "
+                           "Eq. (4.30)",
+                           VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MEAF, FS | CO,
+                           -1, VSPH_VISCOUS_LAMBDA_MU, 0.0, "", pair_meaf},
+    [VSPH_VISCOUS_PVWF] = {"pvwf", "PVWF",
+                           "principle of virtual work, Colagrossi et al. "
+                           "2011, Eqs. (4.18)-(4.19)",
+                           VSPH_VISCOUS_PASS_STRESS, VSPH_VISCOUS_PVWF,
+                           FS | VSPH_VISCOUS_RENORM, -1,
+                           VSPH_VISCOUS_LAMBDA_STOKES, 0.0, "det_tol",
+                           pair_stress},
+    [VSPH_VISCOUS_VI] = {"vi", "VI",
+                         "Violeau & Issa 2007 (Basa et al. 2009, model C, "
+                         "eq. 33)",
+                         VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MGF, CO, -1,
+                         VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA, "eta",
+                         pair_brookshaw},
+    [VSPH_VISCOUS_CLEARY] = {"cleary", "Cleary",
+                             "Cleary 1998 (Basa et al. 2009, model D, eq. "
+                             "34)",
+                             VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MGF,
+                             CO | VSPH_VISCOUS_XI, -1, VSPH_VISCOUS_LAMBDA_MU,
+                             VSPH_VISCOUS_ETA, "xi, eta", pair_brookshaw},
+    [VSPH_VISCOUS_TWOPASS] = {"twopass", "B",
+                              "two-pass strain rate, Watkins et al. 1996 "
+                              "(Basa et al. 2009, model B, eq. 29; "
+                              "Vukcevic et al. 2012)",
+                              VSPH_VISCOUS_PASS_STRESS, VSPH_VISCOUS_PVWF, 0,
+                              -1, VSPH_VISCOUS_LAMBDA_STOKES3, 0.0, "",
+                              pair_stress},
+    [VSPH_VISCOUS_TAKEDA] = {"takeda", "A",
+                             "direct second derivatives, Takeda et al. 1994 "
+                             "(Basa et al. 2009, model A, eqs. 27-28)",
+                             VSPH_VISCOUS_PASS_TAKEDA, VSPH_VISCOUS_TAKEDA, 0,
+                             -1, VSPH_VISCOUS_LAMBDA_STOKES3, 0.0, "", NULL},
+    [VSPH_VISCOUS_TAKEDA0] = {"takeda0", "A[0]",
+                              "model A, Shepard-corrected (Basa et al. 2009, "
+                              "eq. 23)",
+                              VSPH_VISCOUS_PASS_TAKEDA, VSPH_VISCOUS_TAKEDA0,
+                              VSPH_VISCOUS_SHEPARD, -1,
+                              VSPH_VISCOUS_LAMBDA_STOKES3, 0.0, "", NULL},
+    [VSPH_VISCOUS_ER] = {"er", "ER",
+                         "Espanol & Revenga 2003 (docs/theory.md, section "
+                         "8)",
+                         VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_ER, CO, -1,
+                         VSPH_VISCOUS_LAMBDA_MU, 0.0, "zeta", pair_er},
+    [VSPH_VISCOUS_VISC01] = {"visc01", "VISC-01",
+                             "Zheng et al. 2018, VISC-01: Brookshaw/Morris "
+                             "hybrid (eq. 15)",
+                             VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC01,
+                             0, VSPH_PAIR_LAP_HYBRID, VSPH_VISCOUS_LAMBDA_MU,
+                             VSPH_VISCOUS_ETA, "eta", NULL},
+    [VSPH_VISCOUS_VISC02] = {"visc02", "VISC-02",
+                             "Zheng et al. 2018, VISC-02: twice-"
+                             "differentiated kernel (eq. 16)",
+                             VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC02,
+                             0, VSPH_PAIR_LAP_DIRECT, VSPH_VISCOUS_LAMBDA_MU,
+                             0.0, "", NULL},
+    [VSPH_VISCOUS_VISC03] = {"visc03", "VISC-03",
+                             "Zheng et al. 2018, VISC-03: Schwaiger's "
+                             "corrected Laplacian (eq. 17)",
+                             VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC03,
+                             0, VSPH_PAIR_LAP_SCHWAIGER, VSPH_VISCOUS_LAMBDA_MU,
+                             VSPH_VISCOUS_ETA, "eta, det_tol", NULL},
+    [VSPH_VISCOUS_VISC04] = {"visc04", "VISC-04",
+                             "Zheng et al. 2018, VISC-04: Oger's "
+                             "renormalised gradient (eq. 20)",
+                             VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC04,
+                             0, VSPH_PAIR_LAP_RENORMALISED,
+                             VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA,
+                             "eta, det_tol", NULL},
 };
-_Static_assert(sizeof viscous_labels / sizeof viscous_labels[0] ==
-                   VSPH_VISCOUS_FORM_COUNT,
-               "viscous label table out of sync");
+#undef FS
+#undef CO
+
+const struct vsph_viscous_type *vsph_viscous_type_get(int form) {
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT ? &vsph_viscous_types[form]
+                                                     : NULL;
+}
+
+const char *vsph_viscous_name(int form) {
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT
+             ? vsph_viscous_types[form].name
+             : "unknown";
+}
 
 int vsph_viscous_find(const char *name) {
   for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++)
-    if (strcmp(viscous_names[k], name) == 0) return k;
+    if (strcmp(vsph_viscous_types[k].name, name) == 0) return k;
   return -1;
 }
 
 const char *vsph_viscous_label(int form) {
-  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT ? viscous_labels[form]
-                                                     : "?";
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT
+             ? vsph_viscous_types[form].label
+             : "?";
+}
+
+const char *vsph_viscous_list(unsigned flags, char *buf, size_t n) {
+  size_t len = 0;
+  if (n) buf[0] = '\0';
+  for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT && len < n; k++)
+    if ((vsph_viscous_types[k].flags & flags) == flags)
+      len += (size_t)snprintf(buf + len, n - len, "%s%s", len ? ", " : "",
+                              vsph_viscous_types[k].name);
+  return buf;
 }
 
 int vsph_viscous_resolve(const char *name, int *form) {
   *form = vsph_viscous_find(name);
   if (*form >= 0) return VSPH_OK;
-  char list[128] = "";
-  size_t len = 0;
-  for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT && len < sizeof list; k++)
-    len += (size_t)snprintf(list + len, sizeof list - len, "%s%s",
-                            k ? ", " : "", viscous_names[k]);
-  VSPH_FAIL(VSPH_EINVAL, "unknown formulation '%s' (%s)", name, list);
+  char list[256];
+  VSPH_FAIL(VSPH_EINVAL, "unknown formulation '%s' (%s)", name,
+            vsph_viscous_list(0, list, sizeof list));
 }
 
 int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
@@ -86,20 +194,16 @@ int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
    * Models A and B (docs/theory.md section 8): Basa et al.'s eq. (4) and
    * Vukcevic et al.'s eq. (13) take lambda = -2 mu/3, the 3-D Stokes value,
    * in 2-D too; kept as the papers have it. */
-  vp->lambda = form == VSPH_VISCOUS_PVWF ? -2.0 * mu / dim : mu;
-  if (form == VSPH_VISCOUS_TWOPASS || form == VSPH_VISCOUS_TAKEDA ||
-      form == VSPH_VISCOUS_TAKEDA0)
-    vp->lambda = -2.0 * mu / 3.0;
+  const struct vsph_viscous_type *t = &vsph_viscous_types[form];
+  vp->lambda = t->lambda == VSPH_VISCOUS_LAMBDA_STOKES    ? -2.0 * mu / dim
+               : t->lambda == VSPH_VISCOUS_LAMBDA_STOKES3 ? -2.0 * mu / 3.0
+                                                          : mu;
   vp->zeta = 0.0;
   vp->det_tol = 1e-8;
   vp->xi = VSPH_VISCOUS_XI_CLEARY;
   /* eta = 0.1 h: Basa et al.'s C and D; the usual choice for Zheng et
    * al.'s hybrid forms, who give none (their patch test keeps 0) */
-  vp->eta = form == VSPH_VISCOUS_VI || form == VSPH_VISCOUS_CLEARY ||
-                    form == VSPH_VISCOUS_VISC01 ||
-                    form == VSPH_VISCOUS_VISC03 || form == VSPH_VISCOUS_VISC04
-                ? VSPH_VISCOUS_ETA
-                : 0.0;
+  vp->eta = t->eta;
   return VSPH_OK;
 }
 
@@ -242,7 +346,8 @@ VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
 void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
                               struct vsph_viscous_ws *ws, size_t i,
                               const double B[9], const double Mg[9]) {
-  const int dim = vp->dim, renorm = vp->form == VSPH_VISCOUS_PVWF;
+  const int dim = vp->dim, renorm = (vsph_viscous_types[vp->form].flags &
+                                     VSPH_VISCOUS_RENORM) != 0;
   double L[9] = {0}, G[9] = {0};
   ws->fallback[i] =
       renorm ? !vsph_viscous_invert_sym(dim, B, L, vp->det_tol) : 0;
@@ -310,8 +415,10 @@ VSPH_CONSTS_SPECIALISE void takeda_pass(const struct vsph_viscous_props *vp,
     }
   }
   double f[3];
-  vsph_pair_takeda_finish(&acc, dim, vp->form == VSPH_VISCOUS_TAKEDA0, vp->mu,
-                          vp->lambda, f);
+  vsph_pair_takeda_finish(
+      &acc, dim,
+      (vsph_viscous_types[vp->form].flags & VSPH_VISCOUS_SHEPARD) != 0, vp->mu,
+      vp->lambda, f);
   double P = 0.0;
   for (int a = 0; a < dim; a++) {
     ws->A[a][i] = f[a];
@@ -376,7 +483,7 @@ static void lap_pass(const struct vsph_viscous_props *vp,
   double lap[3] = {0, 0, 0}, P = 0.0;
   vsph_viscous_laplacians(
       pk, vp->kernel, vp->h, vp->eta * vp->h * vp->eta * vp->h, vp->det_tol,
-      vp->form - VSPH_VISCOUS_VISC01, p, rg, i, dim, vel, lap);
+      vsph_viscous_types[vp->form].lap, p, rg, i, dim, vel, lap);
   for (int a = 0; a < dim; a++) {
     ws->A[a][i] = vp->mu * lap[a];
     P += p->vel[a][i] * ws->A[a][i];
@@ -393,9 +500,9 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
   if (!ws || ws->cap < p->n || ws->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "%s needs a workspace for %zu particles",
               vsph_viscous_label(vp->form), p->n);
-  const int takeda = vp->form == VSPH_VISCOUS_TAKEDA ||
-                     vp->form == VSPH_VISCOUS_TAKEDA0,
-            lapf = vp->form >= VSPH_VISCOUS_VISC01;
+  const enum vsph_viscous_pass pass = vsph_viscous_types[vp->form].pass;
+  const int takeda = pass == VSPH_VISCOUS_PASS_TAKEDA,
+            lapf = pass == VSPH_VISCOUS_PASS_LAPLACIAN;
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, vp->kernel, vp->dim, vp->h);
 #pragma omp parallel for schedule(dynamic, 8)

@@ -42,17 +42,23 @@ enum vsph_viscous_form {
   VSPH_VISCOUS_FORM_COUNT
 };
 
-/** Every formulation's name, for help texts (the name table in viscous.c
- *  is checked against the enum; this line is checked against the table in
- *  tests/check_viscous.c). */
+/** Every formulation's name, for the static help texts of the parameter
+ *  tables (checked against the descriptor table by tests/check_viscous.c;
+ *  what prints at run time comes from the table, vsph_viscous_list). */
 #define VSPH_VISCOUS_NAMES                                              \
   "mgf, meaf, pvwf, vi, cleary, twopass, takeda, takeda0, er, visc01, " \
   "visc02, visc03, visc04"
 
 /** The free-surface study's formulations (Colagrossi et al. 2011) are the
- *  first this many; the report's free-surface ladders run these, the
- *  analysis and the internal flows run every form. */
+ *  first this many (those flagged VSPH_VISCOUS_FREE_SURFACE, checked by
+ *  tests/check_viscous.c); the report's free-surface ladders run these,
+ *  the analysis and the internal flows run every form. */
 #define VSPH_VISCOUS_PAPER_COUNT 3
+
+/** The pair forms the kernel corrections and the transport-velocity
+ *  scheme take, for static help texts (checked against the flag
+ *  VSPH_VISCOUS_CORRIGIBLE by tests/check_viscous.c). */
+#define VSPH_VISCOUS_CORRIGIBLE_NAMES "mgf, meaf, vi, cleary, er"
 
 /** Cleary's calibrated coefficient (Couette flow). */
 #define VSPH_VISCOUS_XI_CLEARY 4.96333
@@ -98,9 +104,85 @@ struct vsph_viscous_ws {
   double *L[9]; /*!< (sum_j V_j g0_ij (x) (r_j - r_i))^-1, row-major */
 };
 
-/** @brief Formulation name ("mgf", "meaf", "pvwf", "vi", "cleary",
- *  "twopass", "takeda", "takeda0", "er"). */
+struct vsph_viscous_loop;
+
+/** A formulation's first pass, if it has one (vsph_viscous_prepare). */
+enum vsph_viscous_pass {
+  VSPH_VISCOUS_PASS_NONE = 0, /*!< none: pair shares alone */
+  VSPH_VISCOUS_PASS_STRESS,   /*!< each particle's stress A_i = T_i L_i
+                                   from its velocity gradient (PVWF, B);
+                                   the pair shares then take A_i + A_j:
+                                   two neighbour passes */
+  VSPH_VISCOUS_PASS_TAKEDA,   /*!< the whole force by direct second
+                                   derivatives (Basa's model A) */
+  VSPH_VISCOUS_PASS_LAPLACIAN /*!< the whole force as mu lap u by one of
+                                   pair.h's Laplacians (VISC-01..04) */
+};
+
+/** Where a formulation applies and how it is built (bits of flags). */
+#define VSPH_VISCOUS_FREE_SURFACE 1u /*!< the free-surface study's three */
+#define VSPH_VISCOUS_CORRIGIBLE             \
+  2u /*!< a sum of pair terms along grad W: \
+          the kernel corrections and the    \
+          transport velocity apply */
+#define VSPH_VISCOUS_RENORM                                             \
+  4u                            /*!< stress pass: L = B^-1 (PVWF); else \
+                                     L = I (Watkins' gradient) */
+#define VSPH_VISCOUS_SHEPARD 8u /*!< Takeda pass: Shepard-corrected */
+#define VSPH_VISCOUS_XI 16u     /*!< K = 2 xi (Cleary), not 2(d+2) */
+
+/** The default second viscosity lambda of a formulation. */
+enum vsph_viscous_lambda {
+  VSPH_VISCOUS_LAMBDA_MU = 0, /*!< lambda = mu (MGF's implied value) */
+  VSPH_VISCOUS_LAMBDA_STOKES, /*!< -2 mu / d: zero bulk viscosity */
+  VSPH_VISCOUS_LAMBDA_STOKES3 /*!< -2 mu / 3 in any dimension, as Basa et
+                                   al. and Vukcevic et al. print it */
+};
+
+/** A pair's viscous share for the general loop (vsph_viscous_pair). */
+typedef struct vsph_pair_visc vsph_viscous_pair_fn(
+    const struct vsph_viscous_loop *lp, int dim, const struct vsph_pair *pr,
+    struct vsph_pair_vec du, double dux, const double Ai[9]);
+
+/** A viscous formulation, for the whole suite (as kernels have
+ *  vsph_kernel_type): its names, where it comes from, its first pass and
+ *  loop, where it applies, its parameters' defaults, and its pair
+ *  function. One entry of vsph_viscous_types per vsph_viscous_form;
+ *  every predicate below, the names the commands take and print, and the
+ *  report's lists of forms read it. docs/theory.md, section 8, says how to
+ *  add one. */
+struct vsph_viscous_type {
+  const char *name;            /*!< the command line's name ("mgf") */
+  const char *label;           /*!< in tables and figures ("MGF") */
+  const char *cite;            /*!< its source and equation */
+  enum vsph_viscous_pass pass; /*!< its first pass */
+  int loop;       /*!< the vsph_viscous_form whose specialised loops
+                       serve it (itself where it has its own, or where
+                       only the general loop serves it) */
+  unsigned flags; /*!< VSPH_VISCOUS_FREE_SURFACE, ... */
+  int lap;        /*!< Laplacian pass: its vsph_pair_lap_form */
+  enum vsph_viscous_lambda lambda; /*!< default lambda */
+  double eta;                 /*!< default regulariser eta (fraction of h) in
+                                   s^2 + (eta h)^2 */
+  const char *params;         /*!< the props it reads beyond mu, for --help */
+  vsph_viscous_pair_fn *pair; /*!< its pair share; NULL where its first
+                                   pass makes the whole force */
+};
+
+/** The table, indexed by vsph_viscous_form. */
+extern const struct vsph_viscous_type
+    vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT];
+
+/** @brief The descriptor of @p form (NULL when out of range). */
+const struct vsph_viscous_type *vsph_viscous_type_get(int form);
+
+/** @brief Formulation name ("mgf", "meaf", ...; "unknown" out of range). */
 const char *vsph_viscous_name(int form);
+
+/** @brief The names of the forms whose flags hold every bit of @p flags
+ *  (0: every form), ", "-separated, into @p buf of @p n bytes.
+ *  @return @p buf. */
+const char *vsph_viscous_list(unsigned flags, char *buf, size_t n);
 
 /** @brief Formulation called @p name, or -1. */
 int vsph_viscous_find(const char *name);
@@ -210,8 +292,9 @@ static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
                                           const struct vsph_viscous_ws *ws) {
   lp->form = vp->form;
   lp->dim = vp->dim;
-  lp->Kmu = (vp->form == VSPH_VISCOUS_CLEARY ? 2.0 * vp->xi
-                                             : vsph_kernel_mg_factor(vp->dim)) *
+  lp->Kmu = (vsph_viscous_types[vp->form].flags & VSPH_VISCOUS_XI
+                 ? 2.0 * vp->xi
+                 : vsph_kernel_mg_factor(vp->dim)) *
             vp->mu;
   lp->eta2 = vp->eta * vp->h * vp->eta * vp->h;
   lp->two_mu = 2.0 * vp->mu;
@@ -226,16 +309,14 @@ static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
  *  VISC-01..04, mu lap u with the Laplacian of pair.h applied to each
  *  velocity component. */
 static inline int vsph_viscous_particle_form(int form) {
-  return form == VSPH_VISCOUS_TAKEDA || form == VSPH_VISCOUS_TAKEDA0 ||
-         (form >= VSPH_VISCOUS_VISC01 && form <= VSPH_VISCOUS_VISC04);
+  return vsph_viscous_types[form].pair == NULL;
 }
 
 /** @brief Whether @p form has a first pass (vsph_viscous_prepare) whose
  *  per-particle density -T:D or u.(div V) replaces the pair densities:
  *  PVWF, B and the per-particle forms. */
 static inline int vsph_viscous_first_pass(int form) {
-  return form == VSPH_VISCOUS_PVWF || form == VSPH_VISCOUS_TWOPASS ||
-         vsph_viscous_particle_form(form);
+  return vsph_viscous_types[form].pass != VSPH_VISCOUS_PASS_NONE;
 }
 
 /** The shape of a specialised loop: dimension and formulation, constants
@@ -246,33 +327,41 @@ struct vsph_viscous_shape {
   int form; /*!< vsph_viscous_form */
 };
 
+/** @brief PVWF's and model B's pair share (their second pass): the
+ *  share -V_j F (A_j + A_i) x of vsph_pair_pvwf_force and no density
+ *  (theirs is -T_i:D_i, from the first pass). */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_viscous_pair_stress(
+    const struct vsph_pair *pr, int dim, const double Ai[9],
+    double *const A[9]) {
+  const struct vsph_pair_vec f = vsph_pair_pvwf_force(pr, dim, Ai, A);
+  struct vsph_pair_visc r = {.dens = 0.0};
+  for (int k = 0; k < dim; k++) r.f[k] = f.v[k];
+  return r;
+}
+
 /** @brief The viscous term of pair (i, j): the pair's share of (div V)_i
  *  and its dissipation density (0 for PVWF, whose density -T_i:D_i comes
- *  from pass 1). A new formulation adds its pair function to pair.h and a
- *  case here.
- *  @param du u_j - u_i; @param dux du.x; @param Ai PVWF's A_i. */
+ *  from pass 1). The specialised loops' forms (a constant there) inline
+ *  their pair functions; any other form, in the general loop, calls its
+ *  descriptor's (vsph_viscous_types), so a new formulation needs no case
+ *  here. @param du u_j - u_i; @param dux du.x; @param Ai PVWF's A_i. */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_viscous_pair(
     const struct vsph_viscous_loop *lp, struct vsph_viscous_shape sh,
     const struct vsph_pair *pr, const struct vsph_pair_vec du, double dux,
     const double Ai[9]) {
   switch (sh.form) {
     case VSPH_VISCOUS_MGF:
-    case VSPH_VISCOUS_VI:
-    case VSPH_VISCOUS_CLEARY:
       return vsph_pair_mgf(pr, sh.dim, lp->Kmu, lp->eta2, dux);
     case VSPH_VISCOUS_MEAF:
       return vsph_pair_meaf(pr, sh.dim, lp->two_mu, du);
     case VSPH_VISCOUS_ER:
       return vsph_pair_er(pr, sh.dim, lp->er_a, lp->er_b, du, dux);
     case VSPH_VISCOUS_PVWF:
-    case VSPH_VISCOUS_TWOPASS: {
-      const struct vsph_pair_vec f =
-          vsph_pair_pvwf_force(pr, sh.dim, Ai, lp->A);
-      struct vsph_pair_visc r = {.dens = 0.0};
-      for (int k = 0; k < sh.dim; k++) r.f[k] = f.v[k];
-      return r;
-    }
-    default: { /* A, VISC-0x: whole from the first pass (vsph_viscous_own) */
+      return vsph_viscous_pair_stress(pr, sh.dim, Ai, lp->A);
+    default: {
+      vsph_viscous_pair_fn *const fn = vsph_viscous_types[sh.form].pair;
+      if (fn) return fn(lp, sh.dim, pr, du, dux, Ai);
+      /* A, VISC-0x: whole from the first pass (vsph_viscous_own) */
       const struct vsph_pair_visc r = {{0.0, 0.0, 0.0}, 0.0};
       return r;
     }
@@ -282,9 +371,7 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_viscous_pair(
 /** @brief Whether @p form is a sum of pair terms along grad_i W that the
  *  kernel corrections can correct: MGF, VI, Cleary, MEAF, ER. */
 static inline int vsph_viscous_corrigible(int form) {
-  return form == VSPH_VISCOUS_MGF || form == VSPH_VISCOUS_VI ||
-         form == VSPH_VISCOUS_CLEARY || form == VSPH_VISCOUS_MEAF ||
-         form == VSPH_VISCOUS_ER;
+  return (vsph_viscous_types[form].flags & VSPH_VISCOUS_CORRIGIBLE) != 0;
 }
 
 /** @brief The viscous term of pair (i, j) of a corrigible form with the
@@ -328,7 +415,7 @@ static inline void vsph_viscous_own(const struct vsph_viscous_loop *lp,
  *  layers are two supports deep), 1 for the others (model A's one pass
  *  comes before the right-hand side's but reaches one support). */
 static inline int vsph_viscous_passes(int form) {
-  return form == VSPH_VISCOUS_PVWF || form == VSPH_VISCOUS_TWOPASS ? 2 : 1;
+  return vsph_viscous_types[form].pass == VSPH_VISCOUS_PASS_STRESS ? 2 : 1;
 }
 
 /** @brief The form whose specialised loop serves @p form: the Brookshaw
@@ -336,9 +423,7 @@ static inline int vsph_viscous_passes(int form) {
  *  model B shares PVWF's (its A_i in the workspace). The others return
  *  themselves: ER has loops of its own, A runs the general loop. */
 static inline int vsph_viscous_loop_form(int form) {
-  if (form == VSPH_VISCOUS_VI || form == VSPH_VISCOUS_CLEARY)
-    return VSPH_VISCOUS_MGF;
-  return form == VSPH_VISCOUS_TWOPASS ? VSPH_VISCOUS_PVWF : form;
+  return vsph_viscous_types[form].loop;
 }
 
 /** @brief PVWF's (B's) A_i of particle @p i from the workspace. */

@@ -249,7 +249,16 @@ START_TEST(test_particles_brute) {
         vsph_viscous_props_init(&vp, forms[f], &vsph_gaussian_type, 2, h, mu),
         0);
     struct vsph_dissipation_power pw;
+    const struct vsph_particles *const same = p;
     ck_assert_int_eq(vsph_dissipation_particles(&vp, p, &pw), 0);
+    /* the caller's set as it was: read, never sorted */
+    struct vsph_particles *fresh = own_set();
+    for (size_t i = 0; i < p->n; i++)
+      for (int a = 0; a < 2; a++) {
+        ck_assert_double_eq(same->pos[a][i], fresh->pos[a][i]);
+        ck_assert_double_eq(same->vel[a][i], fresh->vel[a][i]);
+      }
+    vsph_particles_free(fresh);
     ck_assert_msg(want < 0.0, "the field dissipates: %g", want);
     ck_assert_msg(fabs(pw.P - want) <= 1e-12 * fabs(want),
                   "%s: P = %.17g, brute force %.17g",
@@ -260,8 +269,9 @@ START_TEST(test_particles_brute) {
 }
 END_TEST
 
-/* A set in the wrong dimension or with a non-positive density: refused
- * with VSPH_EINVAL, nothing computed. */
+/* A set in the wrong dimension, with a non-positive density, two
+ * particles at one place, positions no grid spans, a NaN velocity, or no
+ * kernel: refused with VSPH_EINVAL, the result untouched. */
 START_TEST(test_particles_refused) {
   vsph_test_silence();
   struct vsph_particles *p = own_set();
@@ -273,6 +283,17 @@ START_TEST(test_particles_refused) {
   ck_assert_int_eq(vsph_dissipation_particles(&vp, p, &pw), VSPH_EINVAL);
   vp.dim = 2;
   p->rho[17] = 0.0;
+  ck_assert_int_eq(vsph_dissipation_particles(&vp, p, &pw), VSPH_EINVAL);
+  p->rho[17] = 1000.0;
+  /* two particles at one place: the pair terms divide by s^2 = 0 */
+  p->pos[0][3] = p->pos[0][2], p->pos[1][3] = p->pos[1][2];
+  ck_assert_int_eq(vsph_dissipation_particles(&vp, p, &pw), VSPH_EINVAL);
+  /* finite positions farther apart than any grid can span */
+  p->pos[0][3] = 1e308, p->pos[0][4] = -1e308;
+  ck_assert_int_eq(vsph_dissipation_particles(&vp, p, &pw), VSPH_EINVAL);
+  p->vel[1][9] = NAN;
+  ck_assert_int_eq(vsph_dissipation_particles(&vp, p, &pw), VSPH_EINVAL);
+  vp.kernel = NULL;
   ck_assert_int_eq(vsph_dissipation_particles(&vp, p, &pw), VSPH_EINVAL);
   ck_assert_double_eq(pw.P, 7.0);
   vsph_particles_free(p);

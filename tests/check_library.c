@@ -138,6 +138,29 @@ START_TEST(test_install_refusals) {
   struct vsph_test_outcome *o = vsph_test_shell(script);
   ck_assert_msg(o->status == 0, "install/uninstall: %d %s", o->status, o->err);
   ck_assert_str_eq(o->out, "./lib/other.so\n");
+  /* a file in the way that no install made: refused before anything is
+   * written, the file kept */
+  snprintf(script, sizeof script,
+           "mkdir -p '%s/q/bin' && echo theirs > '%s/q/bin/vsph' && "
+           "scripts/install '%s' /q 0.2.0 0 build vsph.h; echo $?; "
+           "cat '%s/q/bin/vsph'; find '%s/q' -type f | wc -l",
+           dir, dir, dir, dir, dir);
+  o = vsph_test_shell(script);
+  ck_assert_str_eq(o->out, "2\ntheirs\n1\n");
+  ck_assert_int_eq(o->err_lines, 1);
+  /* a manifest line reached through a linked folder (it would delete
+   * outside the install): refused before anything is removed */
+  snprintf(script, sizeof script,
+           "scripts/install '%s' /r 0.2.0 0 build vsph.h > /dev/null && "
+           "mkdir '%s/out' && echo theirs > '%s/out/f' && "
+           "ln -s '%s/out' '%s/r/lib/ext' && "
+           "echo lib/ext/f >> '%s/r/share/vsph/manifest' && "
+           "{ scripts/install --uninstall '%s' /r; echo $?; } && "
+           "cat '%s/out/f' && test -f '%s/r/bin/vsph' && echo kept",
+           dir, dir, dir, dir, dir, dir, dir, dir, dir);
+  o = vsph_test_shell(script);
+  ck_assert_str_eq(o->out, "2\ntheirs\nkept\n");
+  ck_assert_int_eq(o->err_lines, 1);
   /* no manifest, nothing to remove: refused, the foreign file kept */
   snprintf(script, sizeof script,
            "scripts/install --uninstall '%s' /opt/v; echo $?; "

@@ -404,6 +404,72 @@ START_TEST(test_errors) {
     strcat(names, vsph_viscous_name(k));
   }
   ck_assert_str_eq(names, VSPH_VISCOUS_NAMES);
+  /* the static help texts' lists are the descriptors' */
+  char list[256];
+  ck_assert_str_eq(vsph_viscous_list(0, list, sizeof list), VSPH_VISCOUS_NAMES);
+  ck_assert_str_eq(
+      vsph_viscous_list(VSPH_VISCOUS_CORRIGIBLE, list, sizeof list),
+      VSPH_VISCOUS_CORRIGIBLE_NAMES);
+  ck_assert_str_eq(vsph_viscous_list(VSPH_VISCOUS_FREE_SURFACE, list, 256),
+                   "mgf, meaf, pvwf");
+  ck_assert_str_eq(vsph_viscous_list(0, list, 9), "mgf, mea"); /* cut */
+  for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++) {
+    const struct vsph_viscous_type *t = vsph_viscous_type_get(k);
+    ck_assert_ptr_nonnull(t);
+    ck_assert_msg(t->name && t->label && t->cite && t->params, "form %d", k);
+    /* the free-surface forms come first (VSPH_VISCOUS_PAPER_COUNT) */
+    ck_assert_int_eq((t->flags & VSPH_VISCOUS_FREE_SURFACE) != 0,
+                     k < VSPH_VISCOUS_PAPER_COUNT);
+    /* a loop form serves itself; a form without a pair function is
+     * whole from its first pass, a pair form has none but the stress's */
+    ck_assert_int_eq(vsph_viscous_types[t->loop].loop, t->loop);
+    ck_assert_int_eq(t->pair == NULL,
+                     t->pass == VSPH_VISCOUS_PASS_TAKEDA ||
+                         t->pass == VSPH_VISCOUS_PASS_LAPLACIAN);
+    ck_assert_int_eq(t->lap >= 0, t->pass == VSPH_VISCOUS_PASS_LAPLACIAN);
+  }
+  /* README's table of formulations: one row per descriptor, its name,
+   * label, first pass and the parameters it reads (tests run in the
+   * repository's root) */
+  static char readme[1 << 17];
+  vsph_test_slurp("README.md", readme, sizeof readme);
+  ck_assert_msg(strlen(readme) > 1000, "README.md not read");
+  static const char *const pass_words[] = {
+      [VSPH_VISCOUS_PASS_NONE] = "none",
+      [VSPH_VISCOUS_PASS_STRESS] = "stress (two passes)",
+      [VSPH_VISCOUS_PASS_TAKEDA] = "whole force (direct second derivatives)",
+      [VSPH_VISCOUS_PASS_LAPLACIAN] = "whole force (Laplacian)"};
+  for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++) {
+    const struct vsph_viscous_type *t = &vsph_viscous_types[k];
+    char row[512], reads[128] = "";
+    /* "xi, eta" -> "`xi`, `eta`" */
+    for (const char *c = t->params; *c;) {
+      size_t w = strcspn(c, ", ");
+      if (w) {
+        strcat(reads, *reads ? ", `" : "`");
+        strncat(reads, c, w);
+        strcat(reads, "`");
+      }
+      c += w;
+      c += strspn(c, ", ");
+    }
+    const unsigned f = t->flags;
+    char where[128];
+    snprintf(
+        where, sizeof where, "%s%s%s",
+        f & VSPH_VISCOUS_FREE_SURFACE ? "free surface" : "",
+        (f & VSPH_VISCOUS_FREE_SURFACE) && (f & VSPH_VISCOUS_CORRIGIBLE) ? "; "
+                                                                         : "",
+        f & VSPH_VISCOUS_CORRIGIBLE ? "corrections, transport velocity" : "");
+    /* an empty cell is "| |" */
+    snprintf(row, sizeof row, "| `%s` | %s | %s |%s%s%s|%s%s%s|", t->name,
+             t->label, pass_words[t->pass], *where ? " " : " ", where,
+             *where ? " " : "", *reads ? " " : " ", reads, *reads ? " " : "");
+    ck_assert_msg(strstr(readme, row) != NULL, "README.md lacks the row\n%s",
+                  row);
+  }
+  ck_assert_ptr_null(vsph_viscous_type_get(VSPH_VISCOUS_FORM_COUNT));
+  ck_assert_ptr_null(vsph_viscous_type_get(-1));
   ck_assert_int_eq(vsph_viscous_find("sph"), -1);
   struct vsph_particles *p = random_set(2, 1);
   ck_assert_int_eq(vsph_viscous_props_init(&vp, VSPH_VISCOUS_PVWF,
