@@ -292,9 +292,16 @@ valgrind-check: deps
 # REBOUND-style name rule: every defined global symbol of <dir>/<file>.o
 # starts with vsph_<file>_ (main excepted in cli/main.o; a named OpenMP
 # critical section's lock, .gomp_critical_user_NAME, follows the rule by
-# its NAME).
+# its NAME); and a prefix belongs to one file: two files of one name in
+# two folders (runs/x.c and io/x.c) would share theirs, so the names of
+# the objects must differ across folders.
 prefix-check: $(LIB_OBJ) $(CLI_OBJ)
-	@bad=0; for o in $(LIB_OBJ) $(CLI_OBJ); do \
+	@bad=0; dup=$$(for o in $(LIB_OBJ) $(CLI_OBJ); do basename $$o; done | \
+	  sort | uniq -d); for d in $$dup; do \
+	  echo "prefix-check: two files named $${d%.o}.c share the prefix vsph_$${d%.o}_:" \
+	    $$(for o in $(LIB_OBJ) $(CLI_OBJ); do case $$o in */$$d) echo $$o ;; esac; done); \
+	  bad=1; done; \
+	for o in $(LIB_OBJ) $(CLI_OBJ); do \
 	  base=$$(basename $$o .o); \
 	  for s in $$(nm -g --defined-only $$o | awk '{print $$3}'); do \
 	    case $$s in vsph_$${base}_*|.gomp_critical_user_vsph_$${base}_*) ;; main) [ $$base = main ] || { echo "$$o: $$s"; bad=1; } ;; \

@@ -231,9 +231,12 @@ static const char *no_fit(double nu, double t, double D0, double lo,
 int vsph_contact_shear_measure(struct vsph_params *prm,
                                struct vsph_contact_shear *cs) {
   const size_t nprof = cs->nprof < 1 ? 1 : cs->nprof > 8 ? 8 : cs->nprof;
-  const int quiet = cs->quiet;
+  void (*const progress)(void *, double, double, double) = cs->progress;
+  void *const progress_ctx = cs->progress_ctx;
   memset(cs, 0, sizeof *cs);
   cs->nprof = nprof;
+  cs->progress = progress;
+  cs->progress_ctx = progress_ctx;
   struct vsph_run_props rp;
   struct vsph_scene sc;
   int st = vsph_run_props_init(&rp, prm);
@@ -308,9 +311,8 @@ int vsph_contact_shear_measure(struct vsph_params *prm,
       k++;
     }
     const double now = omp_get_wtime();
-    if (!quiet && now - last > 10.0) {
-      fprintf(stderr, "vsph contact: shear t = %.4g / %.4g s, %.0f s\n", t,
-              cs->t_end, now - t0);
+    if (progress && now - last > 10.0) {
+      progress(progress_ctx, t, cs->t_end, now - t0);
       last = now;
     }
   }

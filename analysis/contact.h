@@ -8,8 +8,8 @@ struct vsph_params;
 
 /** @file contact.h
  *  @brief The numerical viscosity of contact SPH (Parshikov, Medin,
- *  Rublev & Dyachkov, P002; docs/theory.md section 12): the exact shear
- *  layer (Stokes' first problem, their eq. 10) and its control surface,
+ *  Rublev & Dyachkov; docs/theory.md section 12): the exact
+ * shear layer (Stokes' first problem, their eq. 10) and its control surface,
  *  the lattice-sum prediction of the acoustic solver's viscosity, and the
  *  paper's measurement: run the shear scene, fit the viscosity whose exact
  *  solution matches the SPH profile. No I/O beyond the run's progress. */
@@ -17,11 +17,11 @@ struct vsph_params;
 /** @brief u_y(x, t) of the shear layer u_y(x, 0) = U0 sign(x) on the
  *  period (-W, W) (slip walls at +-W/2 are planes of symmetry):
  *  U0 [sum_n erf((x - 2nW)/d) - erf((x - 2nW - W)/d) - 1], d = sqrt(4 nu
- *  t), the images summed while they matter. Stokes' first problem, P002
- *  eq. (10), while d << W. NaN for a NaN @p nu (a fit not available). */
+ *  t), the images summed while they matter. Stokes' first problem, Parshikov et
+ * al. eq. (10), while d << W. NaN for a NaN @p nu (a fit not available). */
 double vsph_contact_shear_u(double x, double t, double nu, double U0, double W);
 
-/** @brief The displacement of the same flow's material line (P002's
+/** @brief The displacement of the same flow's material line (Parshikov et al.'s
  *  "control surface"), int_0^t u_y dt, in closed form: per erf image,
  *  t sign(xi) [1 - (1 + 2 xi^2) erfc|xi| + 2|xi| e^{-xi^2}/sqrt(pi)],
  *  xi = x/d. */
@@ -30,7 +30,7 @@ double vsph_contact_shear_dy(double x, double t, double nu, double U0,
 
 /** @brief Two semi-infinite materials (left x < 0, right x > 0) sliding at
  *  uL and uR with viscosities etaL, etaR and densities rhoL, rhoR: the
- *  contact velocity (P002 eq. 27, the effusivity-weighted mean
+ *  contact velocity (Parshikov et al. eq. 27, the effusivity-weighted mean
  *  sqrt(eta rho)) and u(x, t) = U* + (u_side - U*) erf(|x|/sqrt(4 nu_side
  *  t)). @p ustar receives U* when not NULL. */
 double vsph_contact_bimaterial_u(double x, double t, double uL, double etaL,
@@ -66,7 +66,11 @@ double vsph_contact_fit_nu(size_t n, const double *x, const double *v, int dy,
 struct vsph_contact_shear {
   /* in */
   size_t nprof; /*!< profile times t_end (k + 1)/nprof, k < nprof (<= 8) */
-  int quiet;    /*!< 1: no progress line */
+  /** called about every 10 s of wall time with the run's time, its end
+   *  time and the wall time so far (s); NULL: none (the analysis itself
+   *  prints nothing) */
+  void (*progress)(void *ctx, double t, double t_end, double wall);
+  void *progress_ctx; /*!< passed to progress */
   /* out */
   size_t n;                          /*!< particles */
   size_t nbins;                      /*!< slabs of width D0 along x (2 res) */
@@ -94,8 +98,8 @@ struct vsph_contact_shear {
  *  (before any is read): the shear scene's Solver defaults
  *  (vsph_scene_solver_defaults: contact SPH, Wendland C2, alpha 0.5, D0 =
  *  10 nm) and, where Scene:viscous is not given, the inviscid run
- *  (Scene:viscous = 0) of P002's Table 1, which measures the numerical
- *  viscosity alone. @return VSPH_OK, VSPH_ENOMEM. */
+ *  (Scene:viscous = 0) of Parshikov et al.'s Table 1, which measures the
+ * numerical viscosity alone. @return VSPH_OK, VSPH_ENOMEM. */
 int vsph_contact_defaults(struct vsph_params *prm);
 
 /** @brief Run the shear scene with the "Solver" and "Scene" sections of

@@ -296,17 +296,17 @@ double vsph_references_poiseuille(double y, double t, double W, double nu,
   if (nu * t / (W * W) < TAU_IMAGES)
     return poiseuille_images(y, t, W, nu, U0, dudt);
   double sum = 0.0, dsum = 0.0;
-  const double a = M_PI * M_PI * nu * t / (4.0 * d * d);
+  const double a = VSPH_PI * VSPH_PI * nu * t / (4.0 * d * d);
   for (int n = 0; n < 1000; n++) {
     const double m = 2.0 * n + 1.0, e = exp(-m * m * a);
     const double c =
-        (n % 2 ? -1.0 : 1.0) / (m * m * m) * cos(m * M_PI * yc / (2.0 * d));
+        (n % 2 ? -1.0 : 1.0) / (m * m * m) * cos(m * VSPH_PI * yc / (2.0 * d));
     sum += c * e;
     dsum += c * e * m * m;
     if (e < SERIES_TOL * m) break; /* later terms of both sums below e/m */
   }
-  const double k = 32.0 / (M_PI * M_PI * M_PI);
-  if (dudt) *dudt = U0 * k * dsum * M_PI * M_PI * nu / (4.0 * d * d);
+  const double k = 32.0 / (VSPH_PI * VSPH_PI * VSPH_PI);
+  if (dudt) *dudt = U0 * k * dsum * VSPH_PI * VSPH_PI * nu / (4.0 * d * d);
   return U0 * (1.0 - (yc / d) * (yc / d) - k * sum);
 }
 
@@ -336,11 +336,11 @@ double vsph_references_couette(double y, double t, double W, double nu,
   if (nu * t / (W * W) < TAU_IMAGES)
     return couette_images(y, t, W, nu, v0, dudt);
   double sum = 0.0, dsum = 0.0;
-  const double a = M_PI * M_PI * nu * t / (W * W);
+  const double a = VSPH_PI * VSPH_PI * nu * t / (W * W);
   for (int n = 1; n < 1000; n++) {
     const double e = exp(-(double)n * n * a);
     const double c =
-        (n % 2 ? -1.0 : 1.0) * 2.0 / (n * M_PI) * sin(n * M_PI * y / W);
+        (n % 2 ? -1.0 : 1.0) * 2.0 / (n * VSPH_PI) * sin(n * VSPH_PI * y / W);
     sum += c * e;
     dsum -= c * e * n * n * a / t;
     if (e * n < SERIES_TOL) break; /* later terms below e n (rate) */

@@ -14,7 +14,7 @@
 #include "../common/status.h"
 #include "../io/files.h"
 #include "../kernels/kernel.h"
-#include "../runs/shear.h"
+#include "../runs/sheartest.h"
 #include "../solver/materials.h"
 #include "../solver/run.h"
 #include "../solver/scene.h"
@@ -40,7 +40,8 @@ static const char ABOUT[] =
     "table's; Scene: by --set). K profiles need K steps at least: fewer is\n"
     "refused. With --lattice, prints instead the lattice-sum prediction\n"
     "eta_num/(Z D0) of the acoustic solver for the Wendland C2 and cubic\n"
-    "kernels, P002's fit (37), and the shear factor of the contact viscous\n"
+    "kernels, Parshikov et al.'s fit (37), and the shear factor of the contact "
+    "viscous\n"
     "stress on the same lattice; its table is fixed, so any other option\n"
     "(but --threads, --quiet) is refused as having no effect.";
 
@@ -50,7 +51,8 @@ static int lattice_table(void) {
   static const double alphas[] = {0.5, 0.55, 0.6, 0.75, 1.0, 1.5, 2.0};
   printf(
       "# vsph %s: eta_num/(Z D0) of the acoustic Riemann solver, lattice "
-      "sum on the simple cubic lattice (h = 2 alpha D0), and P002's fit "
+      "sum on the simple cubic lattice (h = 2 alpha D0), and Parshikov et "
+      "al.'s fit "
       "(37)\n",
       VSPH_VERSION);
   printf(
@@ -85,7 +87,7 @@ static const char *split_path(const char *path, char *dir, size_t len) {
 /* The profiles and both fits into FILE (atomically). */
 static int write_profiles(const char *path,
                           const struct vsph_contact_shear *cs) {
-  char *buf = vsph_shear_csv_profiles(cs);
+  char *buf = vsph_sheartest_csv_profiles(cs);
   if (!buf) return VSPH_ENOMEM;
   char dir[1024];
   const char *name = split_path(path, dir, sizeof dir);
@@ -216,7 +218,8 @@ int vsph_cmd_contact_main(int argc, char **argv) {
   if (threads > 0) omp_set_num_threads((int)threads);
   if (out) {
     int cached;
-    const int st = vsph_shear_execute(prm, nprof, out, cache, quiet, &cached);
+    const int st =
+        vsph_sheartest_execute(prm, nprof, out, cache, quiet, &cached);
     vsph_params_free(prm);
     if (st) return vsph_args_status(CMD, st);
     if (!quiet)
@@ -225,7 +228,8 @@ int vsph_cmd_contact_main(int argc, char **argv) {
                      : "written");
     return vsph_args_finish(CMD, 0);
   }
-  struct vsph_contact_shear cs = {.nprof = nprof, .quiet = quiet};
+  struct vsph_contact_shear cs = {
+      .nprof = nprof, .progress = quiet ? NULL : vsph_sheartest_progress};
   int st = vsph_contact_shear_measure(prm, &cs);
   vsph_params_free(prm);
   if (st) return vsph_args_status(CMD, st);

@@ -10,6 +10,8 @@ static const char *const vsph_status_names[] = {
     [VSPH_ENOCONV] = "no convergence",
     [VSPH_ELIB] = "numerical library failure",
     [VSPH_EINTR] = "interrupted",
+    [VSPH_EFAIL] = "a run it depends on failed",
+    [VSPH_EBUG] = "internal inconsistency (a bug)",
 };
 _Static_assert(sizeof vsph_status_names / sizeof vsph_status_names[0] ==
                    VSPH_STATUS_COUNT,

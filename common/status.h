@@ -17,6 +17,8 @@ enum vsph_status {
   VSPH_ENOCONV, /*!< iteration hit its limit without meeting tolerance */
   VSPH_ELIB,    /*!< failure reported by GSL or FFTW */
   VSPH_EINTR,   /*!< stopped on request (a signal): output kept, marked */
+  VSPH_EFAIL,   /*!< a run it depends on failed or went unstable */
+  VSPH_EBUG,    /*!< vsph's own parts disagree: a bug, never bad input */
   VSPH_STATUS_COUNT
 };
 

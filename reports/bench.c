@@ -143,9 +143,10 @@ static double timed(int reps, void (*fn)(void *), void *arg, double *median) {
 }
 
 /* The peer's figures, measured side by side on this 2-core machine when
- * issue 9 was filed: DualSPHysics v5.4 on the CPU (pair physics in float,
- * -O3 -ffast-math), 2-D, about 42k particles and 45 neighbours, 1 thread,
- * quiet. Quoted, not measured here: they sit beside our rows to compare. */
+ * the speed work began (README, "Speed"): DualSPHysics v5.4 on the CPU (pair
+ * physics in float, -O3 -ffast-math), 2-D, about 42k particles and 45
+ * neighbours, 1 thread, quiet. Quoted, not measured here: they sit beside our
+ * rows to compare. */
 static void print_peer(FILE *out) {
   fprintf(out,
           "%-30s %7s %3s %8s %8s %13s %15s %10s %6s\n"

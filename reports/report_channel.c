@@ -215,7 +215,7 @@ static const struct {
 };
 
 /* t* = t pi^2 nu/(4 d^2) for Basa's channel (W = 1, nu = 1) */
-static const double TSTAR = M_PI * M_PI;
+static const double TSTAR = VSPH_PI * VSPH_PI;
 
 struct chan {
   struct vsph_jobs_run pois[NPOIS], wall[3][2], eos[NEOS], cou[NCOU];

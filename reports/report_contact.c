@@ -19,7 +19,7 @@
 #include "../io/files.h"
 #include "../io/plot.h"
 #include "../kernels/kernel.h"
-#include "../runs/shear.h"
+#include "../runs/sheartest.h"
 #include "../solver/materials.h"
 #include "../solver/scene.h"
 #include "report_internal.h"
@@ -163,7 +163,7 @@ static int cload(struct vsph_report *R, struct cres *cr) {
     if (!st)
       st = vsph_jobs_file(&R->jobs, j.dir, "summary.csv", path, sizeof path);
     vsph_jobs_free(&j);
-    if (!st && vsph_shear_csv_load(path, &cr->r[k]))
+    if (!st && vsph_sheartest_csv_load(path, &cr->r[k]))
       VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
   }
   return st;

@@ -185,7 +185,7 @@ int vsph_report_runs_richardson(struct vsph_report *R,
   for (int k = 0; k < 4 && !st; k++) {
     st = vsph_report_runs_get(R, &rs[k], &run[k]);
     if (!st && !run[k].ok)
-      VSPH_FAIL(VSPH_ELIB,
+      VSPH_FAIL(VSPH_EFAIL,
                 "the stretching square's reference run %s went unstable",
                 run[k].dir);
   }

@@ -37,7 +37,7 @@
 #include "../solver/scene.h"
 #include "folder.h"
 #include "rundir.h"
-#include "shear.h"
+#include "sheartest.h"
 
 extern char **environ; /* POSIX: the application declares it */
 
@@ -179,7 +179,7 @@ int vsph_jobs_plan_add(struct vsph_jobs *J, struct vsph_jobs_job *j) {
       const int same = !strcmp(P->job[k].key, j->key);
       vsph_jobs_free(j);
       if (same) return VSPH_OK;
-      VSPH_FAIL(VSPH_ELIB,
+      VSPH_FAIL(VSPH_EBUG,
                 "two runs of the report share the folder %s with different "
                 "settings (a bug in the report's specs)",
                 P->job[k].dir);
@@ -232,7 +232,7 @@ static int execute(const struct vsph_jobs *J, const struct vsph_jobs_job *j) {
     st = vsph_rundir_execute(prm, j->scene, &opts, &res);
   } else {
     int cached;
-    st = vsph_shear_execute(prm, j->nprof, j->dir, 1, 1, &cached);
+    st = vsph_sheartest_execute(prm, j->nprof, j->dir, 1, 1, &cached);
   }
   vsph_params_free(prm);
   return st;
@@ -249,7 +249,7 @@ int vsph_jobs_ready(const struct vsph_jobs *J, const struct vsph_jobs_job *j) {
   if (!J->planned) return j->cached ? VSPH_OK : execute(J, j);
   const struct vsph_jobs_job *p = find(J, j->dir);
   if (!p || strcmp(p->key, j->key))
-    VSPH_FAIL(VSPH_ELIB,
+    VSPH_FAIL(VSPH_EBUG,
               "the report reads %s, which no part's plan lists with these "
               "settings (a bug: the part's plan function misses it)",
               j->dir);
@@ -420,7 +420,7 @@ static double cost_taken(const struct vsph_jobs_job *j) {
   } else {
     struct vsph_contact_shear cs;
     snprintf(path, sizeof path, "%s/summary.csv", j->dir);
-    if (vsph_shear_csv_load(path, &cs) == VSPH_OK) steps = (double)cs.steps;
+    if (vsph_sheartest_csv_load(path, &cs) == VSPH_OK) steps = (double)cs.steps;
   }
   return steps > 0.0 ? j->particles * j->neighbours * steps : cost_of(j);
 }
@@ -834,7 +834,7 @@ int vsph_jobs_pool(struct vsph_jobs *J, const char *exe, size_t njobs,
   if (err) return err;
   if (stopping) return VSPH_EINTR;
   if (nfailed)
-    VSPH_FAIL(VSPH_ELIB,
+    VSPH_FAIL(VSPH_EFAIL,
               "%zu of %zu runs failed (listed in %s/runs/failed.txt with their "
               "logs); the report is not assembled: mend them and rerun, only "
               "they run again",

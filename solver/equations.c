@@ -306,10 +306,10 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
   return nint;
 }
 
-/* One fluid particle of contact SPH (P002 eqs. 5, 6, 35; docs/theory.md
- * section 12): every pair through vsph_pair_contact (the Riemann solution)
- * and, with a viscosity, vsph_pair_contact_visc. The acoustic solver's
- * dissipative parts go to acc_visc and drho_delta, so that the energy
+/* One fluid particle of contact SPH (Parshikov et al. eqs. 5, 6, 35;
+ * docs/theory.md section 12): every pair through vsph_pair_contact (the Riemann
+ * solution) and, with a viscosity, vsph_pair_contact_visc. The acoustic
+ * solver's dissipative parts go to acc_visc and drho_delta, so that the energy
  * budget accounts for them. */
 VSPH_CONSTS_SPECIALISE size_t contact_one(
     const struct rhs_ctx *rc, const struct vsph_particles *p,
@@ -586,7 +586,7 @@ static rhs_cell_fn *contact_choose(const struct rhs_ctx *rc) {
 }
 
 /* Contact SPH's loop constants: each material's sound speed and each
- * pair's eta_eff - zeta eta_eff^num (P002 eqs. 30-32 and 26). */
+ * pair's eta_eff - zeta eta_eff^num (Parshikov et al. eqs. 30-32 and 26). */
 static int contact_init(const struct vsph_equations_props *ep,
                         struct rhs_ctx *rc) {
   if (ep->nmat < 1 || ep->nmat > VSPH_EQUATIONS_MAT_MAX)

@@ -41,7 +41,7 @@ enum vsph_equations_eos {
 
 /** The schemes: the weakly compressible SPH of THEORY 5 with a viscous
  *  operator, or contact (Godunov-type) SPH, whose pairs interact through
- *  the acoustic Riemann solution (Parshikov et al., P002 eqs. 5-9;
+ *  the acoustic Riemann solution (Parshikov et al., Parshikov et al. eqs. 5-9;
  *  docs/theory.md section 12). Chosen once per evaluation, outside the
  *  pair loop. */
 enum vsph_equations_scheme {
@@ -55,17 +55,18 @@ enum vsph_equations_scheme {
 
 /** One material of a contact run: its linear state equation, its
  *  physical viscosity and the numerical viscosity the correcting tensor
- *  removes a fraction zeta_num of (P002 section 4). */
+ *  removes a fraction zeta_num of (Parshikov et al. section 4). */
 struct vsph_equations_mat {
   double rho0;    /*!< reference density (kg/m^d) */
   double c0;      /*!< sound speed (m/s); Z = rho c0 */
   double mu;      /*!< physical viscosity (Pa s) */
-  double eta_num; /*!< numerical viscosity (Pa s), P002 eq. (37) */
+  double eta_num; /*!< numerical viscosity (Pa s), Parshikov et al. eq. (37) */
   int fixed;      /*!< 1: a rigid body held in place (a cylinder): its
                        particles get no acceleration and no body force,
                        their density follows the strain rate; mu = 0 and
                        eta_num = 0, so the fluid sticks to them through the
-                       Riemann solution alone, uncorrected (P002's ball) */
+                       Riemann solution alone, uncorrected (Parshikov et al.'s ball)
+                   */
 };
 
 /** Tait's exponent (Batchelor; Basa et al.'s eq. 13). */
@@ -113,7 +114,7 @@ struct vsph_equations_props {
                          copy (the tests' reference for those copies) */
 };
 
-/** @brief The pair viscosity of contact SPH, P002 eqs. (30)-(32):
+/** @brief The pair viscosity of contact SPH, Parshikov et al. eqs. (30)-(32):
  *  eta_eff = eta_i eta_j (1 + sqrt(nu_i/nu_j))/(eta_i + eta_j
  *  sqrt(nu_i/nu_j)), nu = eta/rho0 at the reference densities
  *  ([reconstructed]); eta for identical materials, 0 if either is 0. */

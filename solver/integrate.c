@@ -143,11 +143,6 @@ static double max_speed(const struct vsph_integrate *s) {
 double vsph_integrate_dt(const struct vsph_integrate *s) {
   const struct vsph_equations_props *ep = &s->props.eq;
   const double h = ep->visc.h;
-  /* the transport-velocity scheme's kick-drift-kick: Adami et al.'s
-   * quarter of the acoustic step */
-  const double cfl = ep->tvf ? 0.25 * s->props.cfl
-                     : ep->scheme == VSPH_EQUATIONS_CONTACT ? 0.5 * s->props.cfl
-                                                            : s->props.cfl;
   double c0 = ep->c0, nu = ep->visc.mu / ep->rho0;
   for (int m = 0; m < ep->nmat; m++) { /* contact: the fastest material,
                                            its viscosity and the part of
@@ -156,8 +151,6 @@ double vsph_integrate_dt(const struct vsph_integrate *s) {
     c0 = fmax(c0, ma->c0);
     nu = fmax(nu, (ma->mu + ep->zeta_num * ma->eta_num) / ma->rho0);
   }
-  double dt = cfl * h / (c0 + max_speed(s));
-  if (nu > 0.0) dt = fmin(dt, 0.125 * h * h / nu);
   double gmax = 0.0;
   if (ep->body == VSPH_EQUATIONS_BODY_GRAVITY) gmax = fabs(ep->g);
   if (ep->body == VSPH_EQUATIONS_BODY_UNIFORM) gmax = fabs(ep->f);
@@ -169,6 +162,16 @@ double vsph_integrate_dt(const struct vsph_integrate *s) {
       gmax = fmax(gmax, ep->beta * ep->beta * sqrt(r2));
     }
   }
+  return vsph_integrate_dt_rule(s->props.cfl, ep->tvf,
+                                ep->scheme == VSPH_EQUATIONS_CONTACT, h, c0,
+                                max_speed(s), nu, gmax);
+}
+
+double vsph_integrate_dt_rule(double cfl, int tvf, int contact, double h,
+                              double c0, double umax, double nu, double gmax) {
+  const double f = tvf ? 0.25 : contact ? 0.5 : 1.0;
+  double dt = f * cfl * h / (c0 + umax);
+  if (nu > 0.0) dt = fmin(dt, 0.125 * h * h / nu);
   if (gmax > 0.0) dt = fmin(dt, 0.25 * sqrt(h / gmax));
   return dt;
 }

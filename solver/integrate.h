@@ -72,6 +72,15 @@ void vsph_integrate_free(struct vsph_integrate *s);
 /** @brief Time step of THEORY section 5 for the current state. */
 double vsph_integrate_dt(const struct vsph_integrate *s);
 
+/** @brief The time-step rule itself (docs/theory.md section 5), for the
+ *  step (vsph_integrate_dt) and the run's estimate alike:
+ *  dt = min(f cfl h/(c0 + umax), 0.125 h^2/nu, 0.25 sqrt(h/gmax)), with
+ *  f = 1/4 for the transport-velocity scheme's kick-drift-kick (Adami et
+ *  al.'s quarter), 1/2 for contact SPH, else 1; a bound is left out where
+ *  nu or gmax is 0. */
+double vsph_integrate_dt_rule(double cfl, int tvf, int contact, double h,
+                              double c0, double umax, double nu, double gmax);
+
 /** @brief One RK4 step of length @p dt.
  *  @return VSPH_OK, or an error from the neighbour search (e.g. VSPH_EINVAL
  *  on non-finite positions: call _check). */

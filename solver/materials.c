@@ -7,8 +7,8 @@
 #include "../common/consts.h"
 #include "../common/status.h"
 
-/* P002's Table 1, transcribed by hand from the paper and checked by the
- * ratios eta_num/(Z D0) it implies: 0.0894 +- 0.0025 with Wendland C2 and
+/* Parshikov et al.'s Table 1, transcribed by hand from the paper and checked by
+ * the ratios eta_num/(Z D0) it implies: 0.0894 +- 0.0025 with Wendland C2 and
  * 0.1078 +- 0.002 with the B-spline for 18 of the 20 rows, paraffin and
  * nitromethane the paper's own outliers (tests/check_contact.c).
  * Viscosities in mPa s here, Pa s in the struct. */

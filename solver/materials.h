@@ -2,8 +2,8 @@
 #define VSPH_SOLVER_MATERIALS_H
 
 /** @file materials.h
- *  @brief Table 1 of Parshikov, Medin, Rublev & Dyachkov (P002) as data:
- *  each material's reference density and sound speed (the linear state
+ *  @brief Table 1 of Parshikov, Medin, Rublev & Dyachkov (2023 or later) as
+ * data: each material's reference density and sound speed (the linear state
  *  equation p = c0^2 (rho - rho0), their eq. 4), its handbook viscosity
  *  and the numerical viscosity they measured for contact SPH at
  *  alpha = 0.5, D0 = 10 nm, with the Wendland C2 and the cubic B-spline
@@ -25,19 +25,18 @@ struct vsph_material {
 /** The diameter of the table's particles, D0 = 10 nm (m). */
 #define VSPH_MATERIALS_D0 10e-9
 
-/** @brief P002's fit of the numerical viscosity of contact SPH, eq. (37)
- *  (Wendland C2, the shear test): eta_num/(Z D0) = 0.47142 alpha - 0.14629
+/** @brief Parshikov et al.'s fit of the numerical viscosity of contact SPH, eq.
+ * (37) (Wendland C2, the shear test): eta_num/(Z D0) = 0.47142 alpha - 0.14629
  *  for alpha <= 0.55, 0.18093 alpha + 0.01347 above. */
 static inline double vsph_materials_eta_num_fit(double alpha) {
   return alpha <= 0.55 ? 0.47142 * alpha - 0.14629 : 0.18093 * alpha + 0.01347;
 }
 
 /** @brief F/(eta U) of Stokes flow through a periodic row of cylinders of
- *  diameter d at period S, U the mean velocity, as P002's eq. (39) after
- *  Thilo, Meyer & Kasper (a Miyagi-type series in w = pi d/(2S)):
- *  8 pi a0, a0 = [1 - 2 ln(2w) + 2w^2/3 - w^4/9 + 8w^6/135 - 53w^8/1350 +
- *  1112w^10/42525 - 241643w^12/13395375 + 18776w^14/1488375]^-1; so that
- *  C_D = 16 pi a0/Re. */
+ *  diameter d at period S, U the mean velocity, as Parshikov et al.'s eq. (39)
+ * after Thilo, Meyer & Kasper (a Miyagi-type series in w = pi d/(2S)): 8 pi a0,
+ * a0 = [1 - 2 ln(2w) + 2w^2/3 - w^4/9 + 8w^6/135 - 53w^8/1350 + 1112w^10/42525
+ * - 241643w^12/13395375 + 18776w^14/1488375]^-1; so that C_D = 16 pi a0/Re. */
 double vsph_materials_drag_row(double d_over_S);
 
 /** @brief The same for the square array, Sangani & Acrivos (1982):

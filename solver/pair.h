@@ -412,7 +412,7 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_er(
   return r;
 }
 
-/* ------------------------------------------ contact SPH (issue 12) */
+/* ------------------------------- contact SPH (docs/theory.md, section 12) */
 
 /** The acoustic Riemann problem's contact state (vsph_pair_riemann). */
 struct vsph_pair_riemann_state {
@@ -422,12 +422,11 @@ struct vsph_pair_riemann_state {
 
 /** @brief The acoustic (linearised) Riemann solution between particle i
  *  (left) and j (right) along e = (r_j - r_i)/|r_j - r_i|, Parshikov et
- *  al. (P002) eqs. (8)-(9): with Z = rho c the impedances and U^R = u.e,
- *  P* = (p_j Z_i + p_i Z_j - Z_i Z_j (U_j^R - U_i^R))/(Z_i + Z_j),
- *  U*^R = (U_i^R Z_i + U_j^R Z_j - p_j + p_i)/(Z_i + Z_j).
- *  It is the exact solution of the linear acoustic Riemann problem: the
- *  contact state keeps p + Z_i U along i's outgoing characteristic and
- *  p - Z_j U along j's. */
+ *  al. eqs. (8)-(9): with Z = rho c the impedances and U^R =
+ * u.e, P* = (p_j Z_i + p_i Z_j - Z_i Z_j (U_j^R - U_i^R))/(Z_i + Z_j), U*^R =
+ * (U_i^R Z_i + U_j^R Z_j - p_j + p_i)/(Z_i + Z_j). It is the exact solution of
+ * the linear acoustic Riemann problem: the contact state keeps p + Z_i U along
+ * i's outgoing characteristic and p - Z_j U along j's. */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_riemann_state vsph_pair_riemann(
     double pi, double pj, double Zi, double Zj, double uRi, double uRj) {
   const double r = 1.0 / (Zi + Zj);
@@ -437,7 +436,7 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_riemann_state vsph_pair_riemann(
   return st;
 }
 
-/** The shares of one pair in contact SPH (P002 eqs. 5-6), with the
+/** The shares of one pair in contact SPH (Parshikov et al. eqs. 5-6), with the
  *  acoustic Riemann solution in place of the pair averages. */
 struct vsph_pair_contact_share {
   double cont;  /*!< 2 V_j F s (U*^R - U_i^R): the caller multiplies the sum
@@ -484,7 +483,7 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_contact_share vsph_pair_contact(
   return sh;
 }
 
-/** @brief The viscous traction of contact SPH, P002 eq. (35) in the
+/** @brief The viscous traction of contact SPH, Parshikov et al. eq. (35) in the
  *  frame-free form (docs/theory.md section 12): the pair's
  *  (2/rho_i) V_j |W'| tau^R with tau^R = eta' (du + (du.e) e/3)/s, i.e.
  *  -2 eta' V_j F (du + (du.x) x/(3 s^2)): Espanol & Revenga's pair with
@@ -637,7 +636,7 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_pressure_g(double vj, int dim,
   for (int k = 0; k < dim; k++) f[k] = -vj * psum * g[k];
 }
 
-/* ------------------------------------------- Laplacian forms (issue 11) */
+/* ---------------------------- Laplacian forms (docs/theory.md, section 7) */
 
 /** The four Laplacian forms of Zheng, Ma & Shao (2018) (docs/theory.md
  *  section 7), all applied per velocity component. */

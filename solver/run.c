@@ -283,18 +283,14 @@ static int check_cost(const struct vsph_run_props *rp,
               "Solver:eos = %s needs a scene without gravity (the ghosts' "
               "hydrostatic density follows the linear law)",
               rp->eos);
-  double dt = (rp->tvf                                     ? 0.25
-               : rp->scheme_kind == VSPH_EQUATIONS_CONTACT ? 0.5
-                                                           : 1.0) *
-              rp->cfl * h / (run_c0(rp, sc) + sc->U_max);
-  const double nu = sc->mu / sc->rho0;
-  if (nu > 0.0) dt = fmin(dt, 0.125 * h * h / nu);
   const double gmax = sc->body == VSPH_EQUATIONS_BODY_GRAVITY ? fabs(sc->g)
                       : sc->body == VSPH_EQUATIONS_BODY_RADIAL
                           ? sc->beta * sc->beta * sc->ref_length
                       : sc->body == VSPH_EQUATIONS_BODY_UNIFORM ? fabs(sc->f)
                                                                 : 0.0;
-  if (gmax > 0.0) dt = fmin(dt, 0.25 * sqrt(h / gmax));
+  const double dt = vsph_integrate_dt_rule(
+      rp->cfl, rp->tvf, rp->scheme_kind == VSPH_EQUATIONS_CONTACT, h,
+      run_c0(rp, sc), sc->U_max, sc->mu / sc->rho0, gmax);
   const double steps = t_end / dt;
   e->steps = steps;
   if (!(steps <= (double)rp->max_steps))

@@ -73,7 +73,8 @@ struct vsph_run_props {
   char scheme[VSPH_PARAMS_NAME_MAX]; /*!< wcsph or contact */
   double alpha;    /*!< contact: h = 2 alpha dx (0: from hdx) */
   double zeta_num; /*!< contact: fraction of eta_num removed */
-  double eta_num;  /*!< contact: eta_num/(Z D0); 0: P002's eq. (37) */
+  double
+      eta_num; /*!< contact: eta_num/(Z D0); 0: Parshikov et al.'s eq. (37) */
   /* resolved by vsph_run_props_init */
   int eos_kind;                         /*!< vsph_equations_eos of eos */
   int corr;                             /*!< vsph_pair_corr of correction */

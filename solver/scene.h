@@ -89,11 +89,11 @@ struct vsph_scene_cavity {
   double nu; /*!< kinematic viscosity U L/Re (m^2/s) */
 };
 
-/** Shear layer (Parshikov et al.'s shear test, P002 sections 3 and 5;
- *  docs/theory.md section 12): a 3-D periodic box, u_y = +U0 for x > 0
- *  and -U0 for x < 0. The period along x is twice the paper's box, W:
- *  its slip walls at x = +-W/2 are then planes of symmetry, so the box
- *  is the paper's and its mirror image, with no wall code. */
+/** Shear layer (Parshikov et al.'s shear test, Parshikov et al. sections 3 and
+ * 5; docs/theory.md section 12): a 3-D periodic box, u_y = +U0 for x > 0 and
+ * -U0 for x < 0. The period along x is twice the paper's box, W: its slip walls
+ * at x = +-W/2 are then planes of symmetry, so the box is the paper's and its
+ * mirror image, with no wall code. */
 struct vsph_scene_shear {
   double W;       /*!< the paper's box along x, half the period (m) */
   double Ly;      /*!< period along y (m) */
@@ -105,10 +105,10 @@ struct vsph_scene_shear {
   char left[VSPH_PARAMS_NAME_MAX];     /*!< x < 0: "same" or a material */
 };
 
-/** Stokes flow through a periodic array of cylinders (P002 section 5.5;
- *  docs/theory.md section 12): 2-D, one cylinder of diameter d in the
- *  periodic square of side S, a held body of contact SPH particles,
- *  the fluid driven by a uniform force along x. */
+/** Stokes flow through a periodic array of cylinders (Parshikov et al.
+ * section 5.5; docs/theory.md section 12): 2-D, one cylinder of diameter d in
+ * the periodic square of side S, a held body of contact SPH particles, the
+ * fluid driven by a uniform force along x. */
 struct vsph_scene_cylinders {
   double d;     /*!< cylinder diameter (m) */
   double dS;    /*!< d/S */

@@ -31,7 +31,8 @@ enum vsph_viscous_form {
   VSPH_VISCOUS_PVWF,    /*!< principle of virtual work, Eqs. (4.18)-(4.19) */
   VSPH_VISCOUS_VI,      /*!< Violeau & Issa 2007 (Basa et al.'s model C) */
   VSPH_VISCOUS_CLEARY,  /*!< Cleary 1998 (Basa et al.'s model D), xi */
-  VSPH_VISCOUS_TWOPASS, /*!< two-pass strain rate (Basa's model B; P003) */
+  VSPH_VISCOUS_TWOPASS, /*!< two-pass strain rate (Basa's model B; Vukcevic et
+                           al. (2012)) */
   VSPH_VISCOUS_TAKEDA,  /*!< direct second derivatives (Basa's model A) */
   VSPH_VISCOUS_TAKEDA0, /*!< model A, Shepard-corrected (Basa's eq. 23) */
   VSPH_VISCOUS_ER,      /*!< Espanol & Revenga 2003, bulk viscosity zeta */

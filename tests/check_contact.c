@@ -1,5 +1,5 @@
-/* Contact SPH (issue 12; Parshikov et al., P002): the acoustic Riemann
- * solver against the linear acoustic Riemann problem solved
+/* Contact SPH (issue 12; Parshikov et al., Parshikov et al.): the acoustic
+ * Riemann solver against the linear acoustic Riemann problem solved
  * independently, the shear layer's closed forms, Table 1 and fit (37) as
  * data, conservation and 1 against 2 threads, and the shear test in its
  * static-lattice limit against the lattice sums (with and without the
@@ -263,7 +263,7 @@ START_TEST(test_shear_static_limit) {
       {"Scene:material", mat[_i]},  {"Solver:zeta_num", zeta[_i]}};
   for (size_t q = 0; q < sizeof kv / sizeof kv[0]; q++)
     ck_assert_int_eq(vsph_params_set(prm, kv[q][0], kv[q][1]), 0);
-  struct vsph_contact_shear cs = {.nprof = 1, .quiet = 1};
+  struct vsph_contact_shear cs = {.nprof = 1};
   ck_assert_int_eq(vsph_contact_shear_measure(prm, &cs), 0);
   vsph_params_free(prm);
   ck_assert(cs.stable);
@@ -276,9 +276,9 @@ START_TEST(test_shear_static_limit) {
 END_TEST
 
 /* Eq. (39) and Sangani & Acrivos: C_D Re = 2 F/(eta U) at d/S = 0.5 and
- * 0.3 against the series summed by hand beside P002's Table 2 (a0 = 2.1018
- * and 0.79263, C_D = 21130 and 7968 at Re = 0.005; Sangani-Acrivos 19830
- * and 7690), to their printed digits: a slip in any coefficient of the
+ * 0.3 against the series summed by hand beside Parshikov et al.'s Table 2 (a0
+ * = 2.1018 and 0.79263, C_D = 21130 and 7968 at Re = 0.005; Sangani-Acrivos
+ * 19830 and 7690), to their printed digits: a slip in any coefficient of the
  * series shows at d/S = 0.5, where w^14 still weighs 1e-3. */
 START_TEST(test_drag_formulas) {
   const double k5 = vsph_materials_drag_row(0.5),

@@ -1,15 +1,14 @@
 /* Stokes flow through a periodic array of cylinders (Parshikov et al.,
- * P002 section 5.5, Table 2; docs/theory.md section 12): in 2-D, one
- * cylinder of diameter d at the centre of the periodic square of side
- * S = d/(d/S), held in place as a body of contact-SPH particles (the
- * lattice points inside it, a material with no viscosity of its own: the
- * fluid sticks to it through the Riemann solution, P002's "extremely
- * viscous" ball), the fluid driven by a uniform force f along x. f is the
- * force per unit mass that gives, in Stokes flow with the physical
- * viscosity, the superficial velocity U = Re eta/(rho d) by eq. (39):
- * f rho0 (S^2 - pi d^2/4) = eta U F/(eta U). Contact SPH only (the held
- * body is a second material). Parameters: struct vsph_scene_cylinders
- * (solver/scene.h). */
+ * Parshikov et al. section 5.5, Table 2; docs/theory.md section 12): in 2-D,
+ * one cylinder of diameter d at the centre of the periodic square of side S =
+ * d/(d/S), held in place as a body of contact-SPH particles (the lattice points
+ * inside it, a material with no viscosity of its own: the fluid sticks to it
+ * through the Riemann solution, Parshikov et al.'s "extremely viscous" ball),
+ * the fluid driven by a uniform force f along x. f is the force per unit mass
+ * that gives, in Stokes flow with the physical viscosity, the superficial
+ * velocity U = Re eta/(rho d) by eq. (39): f rho0 (S^2 - pi d^2/4) = eta U
+ * F/(eta U). Contact SPH only (the held body is a second material). Parameters:
+ * struct vsph_scene_cylinders (solver/scene.h). */
 #include <math.h>
 #include <stdio.h>
 
@@ -22,7 +21,8 @@
 #include "../scene.h"
 #include "../walls.h"
 
-/* Defaults: P002's glycerol case, d = 1 mm, d/S = 0.5, Re = 0.005 */
+/* Defaults: Parshikov et al.'s glycerol case, d = 1 mm, d/S = 0.5, Re = 0.005
+ */
 #define S struct vsph_scene_cylinders
 static const struct vsph_params_spec cylinders_params[] = {
     VSPH_PARAMS_REAL_SPEC(S, d, 1e-3, 1e-9, 1e3, "cylinder diameter (m)"),
@@ -116,8 +116,8 @@ static int init(const struct vsph_scene *sc, size_t res,
 }
 
 /* The scene holds two materials (the fluid and the held cylinder), which
- * only contact SPH runs: by default the paper's (P002 §5.5), Wendland C2
- * at alpha = 0.5. */
+ * only contact SPH runs: by default the paper's (Parshikov et al. §5.5),
+ * Wendland C2 at alpha = 0.5. */
 static const char *const solver_defaults[] = {
     "scheme=contact", "kernel=wendland2", "alpha=0.5", NULL};
 

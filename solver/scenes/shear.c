@@ -1,20 +1,20 @@
-/* The shear layer of Parshikov, Medin, Rublev & Dyachkov (P002 sections 3
- * and 5; docs/theory.md section 12): two half-spaces sliding at +-U0
+/* The shear layer of Parshikov, Medin, Rublev & Dyachkov (Parshikov et al.
+ * sections 3 and 5; docs/theory.md section 12): two half-spaces sliding at +-U0
  * along y, u_y = U0 sign(x), in a box periodic along y and z. The paper
  * bounds x by rigid slip walls at x = +-W/2; here x is periodic over 2W
  * instead, the paper's box and its mirror image: the slip walls are then
  * planes of symmetry of the initial state (the lattice is symmetric about
  * them), so the flow in (-W/2, W/2) is the paper's, with no wall code.
- * Materials from P002's Table 1 (solver/materials.c): `material` for
- * x > 0, `left` for x < 0 (two materials need contact SPH). By default
- * the paper's §3.1: lead at +-500 m/s, 800 nm between the slip walls, D0
- * = 10 nm (res 80), contact SPH with Wendland C2 at alpha = 0.5 (the
- * scene's Solver defaults), to 4.5 ns. The periods along y and z are 30
- * nm, not the paper's 400 and 40: the flow is uniform in y and z (every
- * particle of a slab of the lattice moves alike), so they need only
- * exceed the kernel's reach (20 nm here); 3 x 3 particles instead of 40 x
- * 4 make the default run 18 times cheaper (seconds, not minutes).
- * Parameters: struct vsph_scene_shear (solver/scene.h). */
+ * Materials from Parshikov et al.'s Table 1 (solver/materials.c): `material`
+ * for x > 0, `left` for x < 0 (two materials need contact SPH). By default the
+ * paper's §3.1: lead at +-500 m/s, 800 nm between the slip walls, D0 = 10 nm
+ * (res 80), contact SPH with Wendland C2 at alpha = 0.5 (the scene's Solver
+ * defaults), to 4.5 ns. The periods along y and z are 30 nm, not the paper's
+ * 400 and 40: the flow is uniform in y and z (every particle of a slab of the
+ * lattice moves alike), so they need only exceed the kernel's reach (20 nm
+ * here); 3 x 3 particles instead of 40 x 4 make the default run 18 times
+ * cheaper (seconds, not minutes). Parameters: struct vsph_scene_shear
+ * (solver/scene.h). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -57,8 +57,8 @@ static const struct vsph_params_spec shear_params[] = {
 };
 #undef S
 
-/* The paper's scheme and resolution (P002 §3.1): contact SPH, Wendland
- * C2 at alpha = 0.5 (h = D0), D0 = W/80 = 10 nm. */
+/* The paper's scheme and resolution (Parshikov et al. §3.1): contact SPH,
+ * Wendland C2 at alpha = 0.5 (h = D0), D0 = W/80 = 10 nm. */
 static const char *const solver_defaults[] = {
     "scheme=contact", "kernel=wendland2", "alpha=0.5", "res=80", NULL};
 

@@ -1,5 +1,5 @@
-#ifndef VSPH_IO_SHEAR_H
-#define VSPH_IO_SHEAR_H
+#ifndef VSPH_RUNS_SHEARTEST_H
+#define VSPH_RUNS_SHEARTEST_H
 
 #include <stddef.h>
 
@@ -14,19 +14,23 @@ struct vsph_contact_shear;
 /** @brief The profiles: t, x, u, u_fit, dy, dy_fit per slab and profile
  *  time (the fits' exact solutions at the fitted nu). Caller frees; NULL
  *  after reporting on failure. */
-char *vsph_shear_csv_profiles(const struct vsph_contact_shear *cs);
+char *vsph_sheartest_csv_profiles(const struct vsph_contact_shear *cs);
 
 /** @brief One row per profile time: t, nu_u, rms_u, nu_dy, rms_dy, and
  *  the run's n, D0, W, U0, rho0, c0, t_end, steps, wall_s, stable,
  *  t_stop on every row. Caller frees; NULL after reporting on failure. */
-char *vsph_shear_csv_summary(const struct vsph_contact_shear *cs);
+char *vsph_sheartest_csv_summary(const struct vsph_contact_shear *cs);
 
 /** @brief Read a summary back into @p cs (the scalars and fits; no
  *  profiles). @return VSPH_OK, or VSPH_EIO if it cannot be read or is
  *  not a summary (not reported: a missing cache is normal). */
-int vsph_shear_csv_load(const char *path, struct vsph_contact_shear *cs);
+int vsph_sheartest_csv_load(const char *path, struct vsph_contact_shear *cs);
 
 struct vsph_params;
+
+/** @brief The shear test's progress line on stderr ("vsph contact:
+ *  shear t = ... / ... s, ... s"), as vsph_contact_shear's progress. */
+void vsph_sheartest_progress(void *ctx, double t, double t_end, double wall);
 
 /** @brief Measure (vsph_contact_shear_measure, @p nprof profile times,
  *  silent when @p quiet) into folder @p dir: summary.csv and
@@ -36,7 +40,7 @@ struct vsph_params;
  *  (*cached = 1), and key.txt goes first when a measurement starts.
  *  @return VSPH_OK (an unstable run is a result), VSPH_EINVAL (bad
  *  parameters, nothing written), VSPH_EIO, VSPH_ENOMEM. */
-int vsph_shear_execute(struct vsph_params *prm, size_t nprof, const char *dir,
-                       int cache, int quiet, int *cached);
+int vsph_sheartest_execute(struct vsph_params *prm, size_t nprof,
+                           const char *dir, int cache, int quiet, int *cached);
 
-#endif /* VSPH_IO_SHEAR_H */
+#endif /* VSPH_RUNS_SHEARTEST_H */

@@ -1,4 +1,4 @@
-#include "shear.h"
+#include "sheartest.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -13,8 +13,14 @@
 #include "folder.h"
 #include "rundir.h"
 
-int vsph_shear_execute(struct vsph_params *prm, size_t nprof, const char *dir,
-                       int cache, int quiet, int *cached) {
+void vsph_sheartest_progress(void *ctx, double t, double t_end, double wall) {
+  (void)ctx;
+  fprintf(stderr, "vsph contact: shear t = %.4g / %.4g s, %.0f s\n", t, t_end,
+          wall);
+}
+
+int vsph_sheartest_execute(struct vsph_params *prm, size_t nprof,
+                           const char *dir, int cache, int quiet, int *cached) {
   *cached = 0;
   /* the parameters as given: before any is read */
   char what[64];
@@ -35,13 +41,14 @@ int vsph_shear_execute(struct vsph_params *prm, size_t nprof, const char *dir,
     free(key);
     return st;
   }
-  struct vsph_contact_shear cs = {.nprof = nprof, .quiet = quiet};
+  struct vsph_contact_shear cs = {
+      .nprof = nprof, .progress = quiet ? NULL : vsph_sheartest_progress};
   st = vsph_contact_shear_measure(prm, &cs);
   if (st == VSPH_EINVAL) /* refused: the folder as it was */
     vsph_folder_abandon(&fo);
   char *sum = NULL, *prof = NULL;
-  if (!st && !((sum = vsph_shear_csv_summary(&cs)) &&
-               (prof = vsph_shear_csv_profiles(&cs))))
+  if (!st && !((sum = vsph_sheartest_csv_summary(&cs)) &&
+               (prof = vsph_sheartest_csv_profiles(&cs))))
     st = VSPH_ENOMEM;
   vsph_contact_shear_free(&cs);
   /* key.txt first (nothing may vouch for a half-written folder), the seal
@@ -57,7 +64,7 @@ int vsph_shear_execute(struct vsph_params *prm, size_t nprof, const char *dir,
   return st;
 }
 
-char *vsph_shear_csv_profiles(const struct vsph_contact_shear *cs) {
+char *vsph_sheartest_csv_profiles(const struct vsph_contact_shear *cs) {
   char *buf = NULL;
   size_t len = 0;
   FILE *f = open_memstream(&buf, &len);
@@ -84,7 +91,7 @@ char *vsph_shear_csv_profiles(const struct vsph_contact_shear *cs) {
   return buf;
 }
 
-char *vsph_shear_csv_summary(const struct vsph_contact_shear *cs) {
+char *vsph_sheartest_csv_summary(const struct vsph_contact_shear *cs) {
   char *buf = NULL;
   size_t len = 0;
   FILE *f = open_memstream(&buf, &len);
@@ -117,7 +124,7 @@ char *vsph_shear_csv_summary(const struct vsph_contact_shear *cs) {
   return buf;
 }
 
-int vsph_shear_csv_load(const char *path, struct vsph_contact_shear *cs) {
+int vsph_sheartest_csv_load(const char *path, struct vsph_contact_shear *cs) {
   memset(cs, 0, sizeof *cs);
   FILE *probe = fopen(path, "r");
   if (!probe) return VSPH_EIO;
