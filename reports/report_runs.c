@@ -344,11 +344,24 @@ static const struct {
   double t_end;
 } CHANNEL_BASE[2] = {{"poiseuille", 10, 0.5}, {"couette", 16, 0.25}};
 
-/* The cavity rows: each pair form the transport-velocity scheme takes,
- * Re = 100, 16 x 16 to t = 1 s (quintic, h = dx); E_k at the end and the
- * RMS distance from Ghia et al. then (the flow is still developing). */
-static const char *const CAVITY_BASE[] = {"mgf", "meaf", "vi", "cleary", "er"};
-#define NCAVITY_BASE (sizeof CAVITY_BASE / sizeof CAVITY_BASE[0])
+/* The cavity rows: each pair form the transport-velocity scheme takes
+ * (the descriptor table's corrigible forms, in its order), Re = 100,
+ * 16 x 16 to t = 1 s (quintic, h = dx); E_k at the end and the RMS
+ * distance from Ghia et al. then (the flow is still developing). */
+static size_t cavity_base_count(void) {
+  size_t n = 0;
+  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
+    n += (size_t)vsph_viscous_corrigible(f);
+  return n;
+}
+
+/* The k-th of those forms' name. */
+static const char *cavity_base_form(size_t k) {
+  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
+    if (vsph_viscous_corrigible(f) && k-- == 0) return vsph_viscous_name(f);
+  return "?";
+}
+#define NCAVITY_BASE cavity_base_count()
 
 /* The contact-SPH rows: the shear scene at D0 = 40 nm to 1 ns (Wendland
  * C2, alpha = 0.5, 3 D0 deep): lead inviscid, lead with its viscosity and
@@ -422,8 +435,9 @@ static int baseline_spec(const struct vsph_report *R, size_t i,
     return 3;
   }
   if (i >= nfree + nchan) {
-    *rs = (struct vsph_jobs_spec){
-        "cavity", CAVITY_BASE[i - nfree - nchan], 16, 1.0, BASE_TVF, "base"};
+    *rs = (struct vsph_jobs_spec){"cavity", cavity_base_form(i - nfree - nchan),
+                                  16,       1.0,
+                                  BASE_TVF, "base"};
     return 2;
   }
   if (i >= nfree) {

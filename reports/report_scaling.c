@@ -18,6 +18,9 @@
 struct tables {
   FILE *csv, *sl, *in;
   double round[4][2]; /* the 3h Gaussian's rounding level, [dim][field] */
+  /* the 3h Gaussian's slope of every formulation, [dim][field][form];
+   * NaN: rounding */
+  double every[4][2][VSPH_VISCOUS_FORM_COUNT];
 };
 
 /* One kernel, dimension and field: the sweep, its rows and (3h Gaussian)
@@ -35,6 +38,8 @@ static int sweep(struct vsph_report *R, struct tables *tb,
   if (st) return st;
   const char *fn = vsph_fields_name(fk);
   if (k == vsph_kernel_get(0)) { /* the 3h Gaussian's sweep, for figures */
+    for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
+      tb->every[dim][fk][f] = r.rounding[f] ? (double)NAN : r.slope[f];
     char name[64];
     snprintf(name, sizeof name, "scaling_%s_%dd.csv", fn, dim);
     FILE *f =
@@ -73,6 +78,31 @@ static int sweep(struct vsph_report *R, struct tables *tb,
   fprintf(R->md, " | %.4f | %.4f | %.4f | %.4f |\n", r.hF[0], -2 * C_F, r.hN[0],
           -C_N);
   return VSPH_OK;
+}
+
+/* Every formulation of the descriptor table (the free-surface study's
+ * three in bold): its slopes with the 3h Gaussian, each dimension and
+ * field. */
+static int every_form(struct vsph_report *R, const struct tables *tb) {
+  struct vsph_scaling_props sp;
+  int st = vsph_scaling_props_init(&sp, NULL);
+  vsph_text_set(&R->tv, "hdx", "%.4g", sp.hdx);
+  if (!st) st = vsph_report_say(R, "scaling.every_head");
+  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++) {
+    const int paper = vsph_viscous_types[f].flags & VSPH_VISCOUS_FREE_SURFACE;
+    fprintf(R->md, "| %s%s%s", paper ? "**" : "", vsph_viscous_label(f),
+            paper ? "**" : "");
+    for (int dim = 2; dim <= 3; dim++)
+      for (int fk = 0; fk < 2; fk++) {
+        const double s = tb->every[dim][fk][f];
+        if (isnan(s))
+          fprintf(R->md, " | round");
+        else
+          fprintf(R->md, " | %.4f", s);
+      }
+    fprintf(R->md, " |\n");
+  }
+  return st ? st : vsph_report_say(R, "scaling.every_note");
 }
 
 static int figure(struct vsph_report *R, const struct tables *tb, int dim,
@@ -194,7 +224,8 @@ int vsph_report_scaling_write(struct vsph_report *R) {
                     "kernel,dim,field,slope_mgf,slope_meaf,slope_pvwf"),
       vsph_csv_open(R->dir, "interior.csv",
                     "kernel,hdx,mgf_rel_error,meaf_rel_error"),
-      {{0}}};
+      {{0}},
+      {{{0}}}};
   struct vsph_scaling_props sp;
   int st =
       tb.csv && tb.sl && tb.in ? vsph_scaling_props_init(&sp, NULL) : VSPH_EIO;
@@ -216,6 +247,7 @@ int vsph_report_scaling_write(struct vsph_report *R) {
       for (int fk = 0; fk < 2 && !st; fk++)
         st = sweep(R, &tb, vsph_kernel_get(ki), dim, fk);
   if (!st) st = vsph_report_say(R, "scaling.patch");
+  if (!st) st = every_form(R, &tb);
   for (int dim = 2; dim <= 3 && !st; dim++)
     for (int fk = 0; fk < 2 && !st; fk++) st = figure(R, &tb, dim, fk);
   if (!st) st = axis(R);
