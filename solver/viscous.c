@@ -30,6 +30,14 @@ static struct vsph_pair_visc pair_meaf(const struct vsph_viscous_loop *lp,
   return vsph_pair_meaf(pr, dim, lp->two_mu, du);
 }
 
+static struct vsph_pair_visc pair_meafeta(const struct vsph_viscous_loop *lp,
+                                          int dim, const struct vsph_pair *pr,
+                                          struct vsph_pair_vec du, double dux,
+                                          const double Ai[9]) {
+  (void)dux, (void)Ai;
+  return vsph_pair_meafeta(pr, dim, lp->two_mu, lp->eta2, du);
+}
+
 static struct vsph_pair_visc pair_er(const struct vsph_viscous_loop *lp,
                                      int dim, const struct vsph_pair *pr,
                                      struct vsph_pair_vec du, double dux,
@@ -128,6 +136,13 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
                              0, VSPH_PAIR_LAP_RENORMALISED,
                              VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA,
                              "eta, det_tol", NULL},
+    [VSPH_VISCOUS_MEAFETA] = {"meafeta", "MEAF-eta",
+                              "Morris, Fox & Zhu 1997 with r^2 + eta^2 (Basa "
+                              "et al. 2009, model E as Morris et al. print "
+                              "it)",
+                              VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MEAFETA, 0,
+                              -1, VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA,
+                              "eta", pair_meafeta},
 };
 #undef FS
 #undef CO

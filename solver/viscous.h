@@ -40,6 +40,7 @@ enum vsph_viscous_form {
   VSPH_VISCOUS_VISC02,  /*!< VISC-02: twice-differentiated kernel */
   VSPH_VISCOUS_VISC03,  /*!< VISC-03: Schwaiger's corrected Laplacian */
   VSPH_VISCOUS_VISC04,  /*!< VISC-04: Oger's renormalised gradient */
+  VSPH_VISCOUS_MEAFETA, /*!< Morris et al.'s original, with eta */
   VSPH_VISCOUS_FORM_COUNT
 };
 
@@ -48,7 +49,7 @@ enum vsph_viscous_form {
  *  what prints at run time comes from the table, vsph_viscous_list). */
 #define VSPH_VISCOUS_NAMES                                              \
   "mgf, meaf, pvwf, vi, cleary, twopass, takeda, takeda0, er, visc01, " \
-  "visc02, visc03, visc04"
+  "visc02, visc03, visc04, meafeta"
 
 /** The free-surface study's formulations (Colagrossi et al. 2011) are the
  *  first this many (those flagged VSPH_VISCOUS_FREE_SURFACE, checked by

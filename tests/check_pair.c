@@ -338,6 +338,18 @@ static void twin_run(const struct vsph_viscous_props *vp,
       } else if (vp->form == VSPH_VISCOUS_MEAF) {
         for (int a = 0; a < d; a++) av[a] += 2.0 * vp->mu * V * F * (-du[a]);
         dens += vp->mu * V * F * du2;
+      } else if (vp->form == VSPH_VISCOUS_MEAFETA) {
+        /* Morris et al. (1997) as printed, uniform mu: 2 mu V_j
+         * (r_ij.grad_i W)/(r_ij^2 + eta^2) u_ij, r_ij = -x, u_ij = -du,
+         * eta = 0.1 h; its density -f.du/2 */
+        double rg = 0.0;
+        for (int a = 0; a < d; a++) rg += -x[a] * gW[a];
+        const double r2 = s2 + 0.01 * vp->h * vp->h;
+        for (int a = 0; a < d; a++) {
+          const double fa = 2.0 * vp->mu * V * rg / r2 * (-du[a]);
+          av[a] += fa;
+          dens -= 0.5 * fa * du[a];
+        }
       } else if (vp->form == VSPH_VISCOUS_ER) {
         /* Espanol & Revenga (2003) with the number density 1/V: force
          * density sum_j V_j F_ER (a v_ij + b e (e.v_ij)), F_ER = -W'/s,
