@@ -71,10 +71,11 @@ _Static_assert(NPARTS <= 8 * sizeof(unsigned long), "part mask too narrow");
 
 size_t vsph_report_part_count(void) { return NPARTS; }
 
+/* The scenes' names are the ladders' (report_runs.c; the quick and the
+ * FULL ladder name the same scenes in the same order, tests/check_report.c) */
 const char *vsph_report_scene_name(size_t s) {
-  static const char *const names[VSPH_REPORT_NSCENES] = {
-      "vortex-patch", "stretching-square", "standing-wave"};
-  return s < VSPH_REPORT_NSCENES ? names[s] : NULL;
+  return s < VSPH_REPORT_NSCENES ? vsph_report_runs_full_ladder((int)s)->scene
+                                 : NULL;
 }
 
 int vsph_report_scene_on(const struct vsph_report *R, int sc) {

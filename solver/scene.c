@@ -123,3 +123,20 @@ void vsph_scene_set_pressure(const struct vsph_scene *sc,
   p->rho[i] = sc->rho0 + pr / (sc->c0 * sc->c0);
   p->m[i] = p->rho[i] * p->vol[i];
 }
+
+int vsph_scene_rectangle(const struct vsph_scene *sc, size_t nx, size_t ny,
+                         double dx, double dy, struct vsph_particles **out) {
+  struct vsph_particles *p = vsph_particles_alloc(nx * ny, 2);
+  if (!p) return VSPH_ENOMEM;
+  for (size_t j = 0; j < ny; j++)
+    for (size_t i = 0; i < nx; i++) {
+      const size_t k = p->n++;
+      p->pos[0][k] = (i + 0.5) * dx;
+      p->pos[1][k] = (j + 0.5) * dy;
+      p->vel[0][k] = p->vel[1][k] = 0.0;
+      p->vol[k] = dx * dy;
+      vsph_scene_set_pressure(sc, p, k, 0.0);
+    }
+  *out = p;
+  return VSPH_OK;
+}

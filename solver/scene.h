@@ -250,6 +250,13 @@ int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
 void vsph_scene_set_pressure(const struct vsph_scene *sc,
                              struct vsph_particles *p, size_t i, double pr);
 
+/** @brief A 2-D rectangle of @p nx x @p ny particles at rest at
+ *  ((i + 1/2) dx, (j + 1/2) dy), row by row, each of volume dx dy at
+ *  pressure 0 (vsph_scene_set_pressure): the cavity's and the channels'
+ *  initial set, none on a wall. @return VSPH_OK or VSPH_ENOMEM. */
+int vsph_scene_rectangle(const struct vsph_scene *sc, size_t nx, size_t ny,
+                         double dx, double dy, struct vsph_particles **out);
+
 /** @brief Standing wave's initial velocity u = grad phi0 at (x, y),
  *  phi0 = (A g/omega) cosh[k(y + H)]/cosh(kH) cos(kx) (THEORY 6.3). */
 void vsph_standing_wave_velocity(const struct vsph_scene_wave *w, double x,

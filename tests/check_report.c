@@ -13,6 +13,7 @@
 #include "../reports/report.h"
 #include "../reports/report_internal.h"
 #include "../runs/folder.h"
+#include "../solver/scene.h"
 #include "check_suites.h"
 
 /* Each verdict form the claims code writes falls in its class. */
@@ -22,6 +23,24 @@
  * unstable at CFL 1.5 and 2 (stable at 0.5) is left to the stability
  * verdict, not the accuracy rule; a row unstable at 0.5 counts nowhere;
  * a change of exactly the fraction passes (the bound is inclusive). */
+/* The scenes' names: one list, the ladders'. The quick and the FULL
+ * ladder name the same scenes in the same order, and each is a scene the
+ * solver knows. */
+START_TEST(test_scene_names) {
+  struct vsph_report R;
+  memset(&R, 0, sizeof R);
+  R.full = 1;
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++) {
+    const char *q = vsph_report_runs_ladder(&R, sc, 1)->scene;
+    const char *f = vsph_report_runs_ladder(&R, sc, 0)->scene;
+    ck_assert_str_eq(q, f);
+    ck_assert_str_eq(vsph_report_scene_name((size_t)sc), q);
+    ck_assert_ptr_nonnull(vsph_scene_find(q));
+  }
+  ck_assert_ptr_null(vsph_report_scene_name(VSPH_REPORT_NSCENES));
+}
+END_TEST
+
 START_TEST(test_cfl_rule) {
   const double e1[] = {1.0, 1.01, 1.05, 0.91};
   const int s1[] = {1, 1, 1, 1};
@@ -374,6 +393,7 @@ Suite *vsph_report_suite(void) {
   Suite *s = suite_create("report");
   TCase *tc = tcase_create("frame");
   tcase_add_test(tc, test_verdict_classes);
+  tcase_add_test(tc, test_scene_names);
   tcase_add_test(tc, test_cfl_rule);
   tcase_add_test(tc, test_claims_tally);
   tcase_add_test(tc, test_claims_beside);

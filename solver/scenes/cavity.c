@@ -72,19 +72,7 @@ static int setup(struct vsph_scene *sc) {
 static int init(const struct vsph_scene *sc, size_t res,
                 struct vsph_particles **out) {
   const double dx = sc->u.cavity.L / (double)res;
-  struct vsph_particles *p = vsph_particles_alloc(res * res, 2);
-  if (!p) return VSPH_ENOMEM;
-  for (size_t j = 0; j < res; j++)
-    for (size_t i = 0; i < res; i++) {
-      const size_t k = p->n++;
-      p->pos[0][k] = (i + 0.5) * dx;
-      p->pos[1][k] = (j + 0.5) * dx;
-      p->vel[0][k] = p->vel[1][k] = 0.0;
-      p->vol[k] = dx * dx;
-      vsph_scene_set_pressure(sc, p, k, 0.0);
-    }
-  *out = p;
-  return VSPH_OK;
+  return vsph_scene_rectangle(sc, res, res, dx, dx, out);
 }
 
 const struct vsph_scene_type vsph_cavity_type = {

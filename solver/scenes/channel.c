@@ -96,19 +96,7 @@ static int init(const struct vsph_scene *sc, size_t res,
   const double dxx = ch->length / (double)nx;
   if (nx > 1000000)
     VSPH_FAIL(VSPH_EINVAL, "channel: %zu columns is too many", nx);
-  struct vsph_particles *p = vsph_particles_alloc(nx * res, 2);
-  if (!p) return VSPH_ENOMEM;
-  for (size_t j = 0; j < res; j++)
-    for (size_t i = 0; i < nx; i++) {
-      const size_t k = p->n++;
-      p->pos[0][k] = (i + 0.5) * dxx;
-      p->pos[1][k] = (j + 0.5) * dy;
-      p->vel[0][k] = p->vel[1][k] = 0.0;
-      p->vol[k] = dxx * dy;
-      vsph_scene_set_pressure(sc, p, k, 0.0);
-    }
-  *out = p;
-  return VSPH_OK;
+  return vsph_scene_rectangle(sc, nx, res, dxx, dy, out);
 }
 
 const struct vsph_scene_type vsph_channel_poiseuille_type = {
