@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "../analysis/dissipation.h"
+#include "../analysis/series.h"
 #include "../common/consts.h"
 #include "../common/params.h"
 #include "../common/status.h"
@@ -116,17 +117,7 @@ int vsph_report_runs_get(struct vsph_report *R, const struct vsph_jobs_spec *rs,
 
 double vsph_report_runs_interp(const double *t, const double *y, size_t n,
                                double x) {
-  if (n == 0 || x < t[0] || x > t[n - 1]) return (double)NAN;
-  size_t a = 0, b = n - 1;
-  while (b - a > 1) {
-    const size_t m = (a + b) / 2;
-    if (t[m] <= x)
-      a = m;
-    else
-      b = m;
-  }
-  if (t[b] == t[a]) return y[a];
-  return y[a] + (y[b] - y[a]) * (x - t[a]) / (t[b] - t[a]);
+  return vsph_series_interp(t, y, n, x);
 }
 
 const char *const vsph_report_runs_hdx[2][2] = {{"Solver:hdx=2", NULL},
@@ -152,8 +143,7 @@ void vsph_report_runs_reference_specs(const struct vsph_report *R,
 }
 
 double vsph_report_runs_extrapolate(double e[2][2], const double eps[2]) {
-  const double e2 = 2.0 * e[0][1] - e[0][0], e3 = 2.0 * e[1][1] - e[1][0];
-  return e3 - eps[1] * (e2 - e3) / (eps[0] - eps[1]);
+  return vsph_series_extrapolate(e, eps);
 }
 
 /* MGF's lattice error of the dissipation of pure strain on the square
@@ -229,12 +219,8 @@ int vsph_report_runs_richardson(struct vsph_report *R,
 double vsph_report_runs_onset(const struct vsph_jobs_run *r,
                               const struct vsph_report_richardson *rr,
                               double threshold) {
-  for (int k = 1; k <= 100; k++) {
-    const double d = vsph_report_runs_interp(r->t, r->dEk, r->nrow, rr->t[k]);
-    if (!isfinite(d)) return rr->t[k]; /* past the run's stop */
-    if (fabs(d - rr->dE[k]) > threshold * fabs(rr->dE[k])) return rr->t[k];
-  }
-  return (double)NAN;
+  return vsph_series_onset(r->t, r->dEk, r->nrow, rr->t, rr->dE, 101,
+                           threshold);
 }
 
 double vsph_report_runs_eref(const struct vsph_jobs_run *r, size_t row,
@@ -249,13 +235,9 @@ double vsph_report_runs_eref(const struct vsph_jobs_run *r, size_t row,
  * viscous formulation's doing. */
 double vsph_report_runs_error(const struct vsph_jobs_run *r,
                               const struct vsph_report_richardson *rr) {
-  const double e0 = vsph_report_runs_eref(r, 0, rr);
-  double err = 0.0;
-  for (size_t k = 0; k < r->nrow; k++) {
-    const double e = vsph_report_runs_eref(r, k, rr);
-    if (isfinite(e)) err = fmax(err, fabs(r->Ek[k] / r->Ek[0] - e / e0));
-  }
-  return err;
+  return rr ? vsph_series_decay_error_table(r->t, r->Ek, r->nrow, rr->t, rr->E,
+                                            101)
+            : vsph_series_decay_error(r->Ek, r->Ekr, r->nrow);
 }
 
 /* Energy @p lost by row @p row over the reference's lost share. Both
@@ -264,9 +246,9 @@ double vsph_report_runs_error(const struct vsph_jobs_run *r,
  * start's O(Ma^2) offset of E_k(0) is not the formulation's doing. */
 static double over_reference(const struct vsph_jobs_run *r, size_t row,
                              double lost) {
-  const double lost_ref = 1.0 - r->Emr[row] / r->Emr[0];
-  return row > 0 && lost_ref != 0.0 ? (lost / r->Ek[0]) / lost_ref
-                                    : (double)NAN;
+  return row > 0
+             ? vsph_series_loss_ratio(lost, r->Ek[0], r->Emr[0], r->Emr[row])
+             : (double)NAN;
 }
 
 double vsph_report_runs_loss_ratio(const struct vsph_jobs_run *r, size_t row) {
@@ -277,10 +259,7 @@ double vsph_report_runs_loss_ratio(const struct vsph_jobs_run *r, size_t row) {
 
 double vsph_report_runs_visc_loss_ratio(const struct vsph_jobs_run *r,
                                         size_t row) {
-  double lost = 0.0;
-  for (size_t k = 1; k <= row; k++)
-    lost -= 0.5 * (r->Pv[k] + r->Pv[k - 1]) * (r->t[k] - r->t[k - 1]);
-  return over_reference(r, row, lost);
+  return over_reference(r, row, -vsph_series_integral(r->t, r->Pv, row));
 }
 
 double vsph_report_runs_diss0(const struct vsph_jobs_run *r) {

@@ -1,0 +1,66 @@
+#include "series.h"
+
+#include <math.h>
+
+double vsph_series_interp(const double *t, const double *y, size_t n,
+                          double x) {
+  if (n == 0 || x < t[0] || x > t[n - 1]) return (double)NAN;
+  size_t a = 0, b = n - 1;
+  while (b - a > 1) {
+    const size_t m = (a + b) / 2;
+    if (t[m] <= x)
+      a = m;
+    else
+      b = m;
+  }
+  if (t[b] == t[a]) return y[a];
+  return y[a] + (y[b] - y[a]) * (x - t[a]) / (t[b] - t[a]);
+}
+
+double vsph_series_extrapolate(double e[2][2], const double eps[2]) {
+  const double e2 = 2.0 * e[0][1] - e[0][0], e3 = 2.0 * e[1][1] - e[1][0];
+  return e3 - eps[1] * (e2 - e3) / (eps[0] - eps[1]);
+}
+
+double vsph_series_decay_error(const double *E, const double *R, size_t n) {
+  double err = 0.0;
+  for (size_t k = 0; k < n; k++)
+    if (isfinite(R[k])) err = fmax(err, fabs(E[k] / E[0] - R[k] / R[0]));
+  return err;
+}
+
+double vsph_series_decay_error_table(const double *t, const double *E, size_t n,
+                                     const double *tr, const double *Rr,
+                                     size_t m) {
+  if (n == 0) return 0.0;
+  const double R0 = vsph_series_interp(tr, Rr, m, t[0]);
+  double err = 0.0;
+  for (size_t k = 0; k < n; k++) {
+    const double R = vsph_series_interp(tr, Rr, m, t[k]);
+    if (isfinite(R)) err = fmax(err, fabs(E[k] / E[0] - R / R0));
+  }
+  return err;
+}
+
+double vsph_series_onset(const double *t, const double *dE, size_t n,
+                         const double *tr, const double *dR, size_t m,
+                         double threshold) {
+  for (size_t k = 1; k < m; k++) {
+    const double d = vsph_series_interp(t, dE, n, tr[k]);
+    if (!isfinite(d)) return tr[k]; /* past the run's end or stop */
+    if (fabs(d - dR[k]) > threshold * fabs(dR[k])) return tr[k];
+  }
+  return (double)NAN;
+}
+
+double vsph_series_integral(const double *t, const double *y, size_t row) {
+  double s = 0.0;
+  for (size_t k = 1; k <= row; k++)
+    s += 0.5 * (y[k] + y[k - 1]) * (t[k] - t[k - 1]);
+  return s;
+}
+
+double vsph_series_loss_ratio(double lost, double E0, double R0, double R) {
+  const double lost_ref = 1.0 - R / R0;
+  return lost_ref != 0.0 ? (lost / E0) / lost_ref : (double)NAN;
+}

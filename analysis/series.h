@@ -1,0 +1,62 @@
+#ifndef VSPH_ANALYSIS_SERIES_H
+#define VSPH_ANALYSIS_SERIES_H
+
+#include <stddef.h>
+
+/** @file series.h
+ *  @brief Measures of a run's energy series, on plain arrays (the columns
+ *  of its energy.csv): interpolation, the decay error against a
+ *  reference, the onset of a departure from it, the energy lost against
+ *  the reference's loss, the trapezoid integral of a rate, and the
+ *  extrapolation in h and h/dx that the stretching square's reference
+ *  takes (docs/theory.md section 6). The report's parts read runs and call
+ *  these; tests/check_series.c holds each to an independent computation.
+ *  No I/O, no allocation. */
+
+/** @brief y at @p x by linear interpolation in the table (t[k], y[k]),
+ *  t ascending (repeated values allowed); NaN outside [t[0], t[n-1]] or
+ *  for n = 0. */
+double vsph_series_interp(const double *t, const double *y, size_t n, double x);
+
+/** @brief The extrapolation to h -> 0 and then to the lattice error
+ *  eps -> 0 of four values e[r][m]: two h/dx values r (lattice errors
+ *  eps[r]), each at two resolutions m, the second twice the first. Per
+ *  r, Richardson for first order, E_r = 2 e[r][1] - e[r][0]; then linear
+ *  in eps through (eps[0], E_0) and (eps[1], E_1), at eps = 0. @p e is
+ *  read only (a C array of arrays cannot be passed as const). */
+double vsph_series_extrapolate(double e[2][2], const double eps[2]);
+
+/** @brief The decay error max_k |E_k/E_0 - R_k/R_0| of a series E against
+ *  a reference R taken at the same times, each normalised by its own
+ *  first value (a weakly compressible start carries an O(Ma^2) offset of
+ *  E_0 that no resolution removes). Rows where the reference is not
+ *  finite (past its table) are left out; so is a row whose term is NaN
+ *  (fmax drops it: a NaN of the run's is not seen here, the run's status
+ *  says it stopped); 0 when none is left. */
+double vsph_series_decay_error(const double *E, const double *R, size_t n);
+
+/** @brief The same against a reference given as a table (tr, Rr) of m
+ *  points, interpolated linearly at the run's times t (rows past the
+ *  table are left out). */
+double vsph_series_decay_error_table(const double *t, const double *E, size_t n,
+                                     const double *tr, const double *Rr,
+                                     size_t m);
+
+/** @brief When a run's rate dE/dt (table t, dE of n rows) first departs
+ *  from a reference rate (table tr, dR of m points) by more than
+ *  @p threshold of it, judged at the reference's points tr[1..m-1]: the
+ *  first such tr[k], or the first one past the run's end or stop (where
+ *  the run's rate is not finite); NaN when it never departs. */
+double vsph_series_onset(const double *t, const double *dE, size_t n,
+                         const double *tr, const double *dR, size_t m,
+                         double threshold);
+
+/** @brief The integral of y over [t[0], t[row]] by the trapezoid rule. */
+double vsph_series_integral(const double *t, const double *y, size_t row);
+
+/** @brief Energy @p lost over the reference's share lost: (lost/E0)
+ *  against 1 - R/R0 (each normalised by its own initial energy); NaN
+ *  where the reference has lost nothing (its first row). */
+double vsph_series_loss_ratio(double lost, double E0, double R0, double R);
+
+#endif /* VSPH_ANALYSIS_SERIES_H */

@@ -1,0 +1,109 @@
+/* analysis/series.c on plain arrays, each measure against a closed form
+ * computed here. */
+#include <check.h>
+#include <math.h>
+
+#include "../analysis/series.h"
+#include "check_suites.h"
+
+/* A linear function is interpolated exactly (to rounding: 1e-15 of its
+ * values) at any point, repeated abscissae included; outside the table,
+ * and for an empty one, NaN. */
+START_TEST(test_interp) {
+  const double t[6] = {0.0, 0.5, 0.5, 1.5, 2.25, 3.0};
+  double y[6];
+  for (int k = 0; k < 6; k++) y[k] = 2.0 * t[k] + 1.0;
+  for (double x = 0.0; x <= 3.0; x += 0.0625)
+    ck_assert_double_eq_tol(vsph_series_interp(t, y, 6, x), 2.0 * x + 1.0,
+                            1e-15 * 7.0);
+  ck_assert(isnan(vsph_series_interp(t, y, 6, -1e-9)));
+  ck_assert(isnan(vsph_series_interp(t, y, 6, 3.0 + 1e-9)));
+  ck_assert(isnan(vsph_series_interp(t, y, 0, 0.0)));
+}
+END_TEST
+
+/* Four values built as E* + k eps_r + c_r h_m, h_1 = h_0/2: first-order
+ * Richardson removes c_r h exactly and the line in eps lands on E*; to
+ * rounding (1e-14 of the values). */
+START_TEST(test_extrapolate) {
+  const double Es = 1.234, k = 5.0, eps[2] = {0.02, 0.005}, c[2] = {0.3, -0.7},
+               h0 = 0.1;
+  double e[2][2];
+  for (int r = 0; r < 2; r++)
+    for (int m = 0; m < 2; m++)
+      e[r][m] = Es + k * eps[r] + c[r] * h0 / (1 << m);
+  ck_assert_double_eq_tol(vsph_series_extrapolate(e, eps), Es, 1e-14 * 2.0);
+}
+END_TEST
+
+/* E = 3 e^-t against R = 7 e^-1.02t: the normalised gap e^-t - e^-1.02t
+ * peaks at t* = ln(1.02)/0.02, a sample point here; its value there by
+ * the closed form (rounding: 1e-15). Rows where R is NaN are left out,
+ * even one that would be larger. */
+START_TEST(test_decay_error) {
+  enum { N = 41 };
+  const double ts = log(1.02) / 0.02;
+  double t[N], E[N], R[N];
+  for (int k = 0; k < N; k++) {
+    t[k] = ts * k / 20.0; /* t[20] = t* */
+    E[k] = 3.0 * exp(-t[k]);
+    R[k] = 7.0 * exp(-1.02 * t[k]);
+  }
+  const double want = exp(-ts) - exp(-1.02 * ts);
+  ck_assert_double_eq_tol(vsph_series_decay_error(E, R, N), want, 1e-15);
+  E[30] = 0.0, R[30] = NAN; /* a gap of 1 - e^-... there: left out */
+  ck_assert_double_eq_tol(vsph_series_decay_error(E, R, N), want, 1e-15);
+  /* the same reference as a coarse table of a linear function: exact */
+  const double tr[3] = {0.0, 1.0, 4.0}, Rr[3] = {10.0, 8.0, 2.0};
+  double Et[5], tt[5] = {0.0, 0.5, 1.0, 2.0, 5.0};
+  for (int k = 0; k < 5; k++) Et[k] = 5.0;
+  /* 1 - (10 - 2 t)/10 = t/5 at t = 2 (t = 5 lies past the table) */
+  ck_assert_double_eq_tol(vsph_series_decay_error_table(tt, Et, 5, tr, Rr, 3),
+                          0.4, 1e-15);
+}
+END_TEST
+
+/* dE = -1 against dR = -1 + 0.1 t with threshold 0.05: the gap 0.1 t
+ * exceeds 0.05 |dR| past t = 0.05/0.105 = 0.476..., so at the reference's
+ * point 0.5; a run that stops at 0.3 departs at the first point past its
+ * end, 0.4; a threshold never reached gives NaN. */
+START_TEST(test_onset) {
+  double t[11], dE[11], tr[11], dR[11];
+  for (int k = 0; k <= 10; k++) {
+    t[k] = tr[k] = 0.1 * k;
+    dE[k] = -1.0;
+    dR[k] = -1.0 + 0.1 * tr[k];
+  }
+  ck_assert_double_eq(vsph_series_onset(t, dE, 11, tr, dR, 11, 0.05), tr[5]);
+  ck_assert_double_eq(vsph_series_onset(t, dE, 4, tr, dR, 11, 0.05), tr[4]);
+  ck_assert(isnan(vsph_series_onset(t, dE, 11, tr, dR, 11, 0.5)));
+}
+END_TEST
+
+/* The trapezoid rule integrates a linear rate exactly on an uneven grid:
+ * int_0^T (2 - 3t) dt = 2T - 1.5 T^2 (rounding, 1e-15); an energy lost
+ * over the reference's share by hand: (0.3/2)/(1 - 3/4) = 0.6. */
+START_TEST(test_integral_loss) {
+  const double t[5] = {0.0, 0.1, 0.35, 0.4, 1.0};
+  double y[5];
+  for (int k = 0; k < 5; k++) y[k] = 2.0 - 3.0 * t[k];
+  for (size_t row = 0; row < 5; row++)
+    ck_assert_double_eq_tol(vsph_series_integral(t, y, row),
+                            2.0 * t[row] - 1.5 * t[row] * t[row], 1e-15);
+  ck_assert_double_eq_tol(vsph_series_loss_ratio(0.3, 2.0, 4.0, 3.0), 0.6,
+                          1e-15);
+  ck_assert(isnan(vsph_series_loss_ratio(0.3, 2.0, 4.0, 4.0)));
+}
+END_TEST
+
+Suite *vsph_series_suite(void) {
+  Suite *s = suite_create("series");
+  TCase *tc = tcase_create("measures");
+  tcase_add_test(tc, test_interp);
+  tcase_add_test(tc, test_extrapolate);
+  tcase_add_test(tc, test_decay_error);
+  tcase_add_test(tc, test_onset);
+  tcase_add_test(tc, test_integral_loss);
+  suite_add_tcase(s, tc);
+  return s;
+}
