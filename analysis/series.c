@@ -64,3 +64,36 @@ double vsph_series_loss_ratio(double lost, double E0, double R0, double R) {
   const double lost_ref = 1.0 - R / R0;
   return lost_ref != 0.0 ? (lost / E0) / lost_ref : (double)NAN;
 }
+
+double vsph_series_first_reach(const double *t, const double *e, size_t n,
+                               double scale, double from, double level) {
+  for (size_t k = 0; k < n; k++)
+    if (t[k] * scale >= from && e[k] >= level) return t[k] * scale;
+  return (double)NAN;
+}
+
+void vsph_series_plateau(const double *t, const double *E, const double *R,
+                         const double *v, size_t n, double scale, double lo,
+                         double hi, double *work, size_t cap, double *spread,
+                         double *median) {
+  double qlo = INFINITY, qhi = -INFINITY;
+  size_t nv = 0;
+  for (size_t k = 0; k < n; k++) {
+    const double ts = t[k] * scale;
+    if (ts >= lo && ts <= hi && R[k] > 0.0) {
+      const double q = E[k] / R[k];
+      qlo = fmin(qlo, q);
+      qhi = fmax(qhi, q);
+      if (nv < cap) work[nv++] = v[k];
+    }
+  }
+  /* insertion sort: a few hundred values */
+  for (size_t a = 1; a < nv; a++)
+    for (size_t b = a; b > 0 && work[b - 1] > work[b]; b--) {
+      const double w = work[b];
+      work[b] = work[b - 1];
+      work[b - 1] = w;
+    }
+  *median = nv ? work[nv / 2] : (double)NAN;
+  *spread = nv ? (qhi - qlo) / (0.5 * (qhi + qlo)) : (double)NAN;
+}

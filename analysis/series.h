@@ -59,4 +59,20 @@ double vsph_series_integral(const double *t, const double *y, size_t row);
  *  where the reference has lost nothing (its first row). */
 double vsph_series_loss_ratio(double lost, double E0, double R0, double R);
 
+/** @brief The first scaled time scale t[k] >= @p from at which e[k]
+ *  reaches @p level (a failure criterion, as Basa et al.'s eq. (38) error
+ *  at 12 %); NaN when none does. */
+double vsph_series_first_reach(const double *t, const double *e, size_t n,
+                               double scale, double from, double level);
+
+/** @brief Over the rows whose scaled time scale t[k] lies in [lo, hi] and
+ *  whose R[k] > 0: the spread (max - min)/((max + min)/2) of E[k]/R[k]
+ *  into *spread, and the median of v[k] over the first @p cap of those
+ *  rows (the upper one of an even count; @p work holds @p cap doubles)
+ *  into *median; NaN for none. */
+void vsph_series_plateau(const double *t, const double *E, const double *R,
+                         const double *v, size_t n, double scale, double lo,
+                         double hi, double *work, size_t cap, double *spread,
+                         double *median);
+
 #endif /* VSPH_ANALYSIS_SERIES_H */

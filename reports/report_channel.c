@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../analysis/series.h"
 #include "../common/status.h"
 #include "../io/csv.h"
 #include "../io/plot.h"
@@ -388,11 +389,13 @@ static void stop_cell(FILE *md, const struct vsph_jobs_run *r, double ts) {
 static double failure(const struct vsph_jobs_run *r, char *why) {
   const double *e = vsph_csv_column(r->energy, "u_err_rel");
   *why = ' ';
-  for (size_t k = 0; e && k < r->nrow; k++)
-    if (r->t[k] * TSTAR >= 1.0 && e[k] >= 0.12) {
-      *why = 'e';
-      return r->t[k] * TSTAR;
-    }
+  const double te =
+      e ? vsph_series_first_reach(r->t, e, r->nrow, TSTAR, 1.0, 0.12)
+        : (double)NAN;
+  if (!isnan(te)) {
+    *why = 'e';
+    return te;
+  }
   if (!r->ok) {
     *why = 'p';
     return r->t_unstable * TSTAR;
@@ -805,27 +808,14 @@ int vsph_report_channel_claims(struct vsph_report *R) {
     char why;
     const double tf = failure(r5, &why);
     const double *vr = vsph_csv_column(r5->energy, "v_rms");
-    double lo = INFINITY, hi = -INFINITY, vfail = (double)NAN, vals[400];
-    size_t nv = 0;
-    for (size_t k = 0; vr && k < r5->nrow; k++) {
-      const double ts = r5->t[k] * TSTAR;
-      if (ts >= 5.0 && ts <= tf - 1.0 && r5->Ekr[k] > 0.0) {
-        const double q = r5->Ek[k] / r5->Ekr[k];
-        lo = fmin(lo, q);
-        hi = fmax(hi, q);
-        if (nv < 400) vals[nv++] = vr[k];
-      }
-      if (ts <= tf) vfail = vr[k];
-    }
-    /* the median of the plateau's v_rms (insertion sort: 400 at most) */
-    for (size_t a = 1; a < nv; a++)
-      for (size_t b = a; b > 0 && vals[b - 1] > vals[b]; b--) {
-        const double t = vals[b];
-        vals[b] = vals[b - 1];
-        vals[b - 1] = t;
-      }
-    const double med = nv ? vals[nv / 2] : (double)NAN;
-    const double spread = (hi - lo) / (0.5 * (hi + lo));
+    double vfail = (double)NAN, vals[400], spread = (double)NAN,
+           med = (double)NAN;
+    for (size_t k = 0; vr && k < r5->nrow; k++)
+      if (r5->t[k] * TSTAR <= tf) vfail = vr[k];
+    /* the plateau's E_k/E_k,ref spread and its v_rms median (400 rows) */
+    if (vr)
+      vsph_series_plateau(r5->t, r5->Ek, r5->Ekr, vr, r5->nrow, TSTAR, 5.0,
+                          tf - 1.0, vals, 400, &spread, &med);
     snprintf(ours, sizeof ours,
              "E, Re 5: E_k/E_k,ref within %.2f %% over t* = 5-%.1f; at the "
              "failure (t* = %.1f) v_rms is %.0f times its plateau median",

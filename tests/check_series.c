@@ -96,6 +96,40 @@ START_TEST(test_integral_loss) {
 }
 END_TEST
 
+/* The first reach of a level after a start, on a scaled time axis: e =
+ * t/4 reaches 0.12 at t = 0.48, the first sample at or past it 0.5, times
+ * scale 2 = 1.0; from a later start (scaled 1.6) it is that start's
+ * sample; a level never reached gives NaN. */
+START_TEST(test_first_reach) {
+  double t[11], e[11];
+  for (int k = 0; k <= 10; k++) t[k] = 0.1 * k, e[k] = t[k] / 4.0;
+  ck_assert_double_eq(vsph_series_first_reach(t, e, 11, 2.0, 0.0, 0.12),
+                      t[5] * 2.0);
+  ck_assert_double_eq(vsph_series_first_reach(t, e, 11, 2.0, 1.6, 0.12),
+                      t[8] * 2.0);
+  ck_assert(isnan(vsph_series_first_reach(t, e, 11, 2.0, 0.0, 0.3)));
+}
+END_TEST
+
+/* A plateau by hand: E/R = 1, 1.02, 0.98 on the rows inside [lo, hi]
+ * (R > 0), so the spread is 0.04/1.0; v there 5, 1, 3 (median 3); rows
+ * outside and one with R = 0 left out. */
+START_TEST(test_plateau) {
+  const double t[7] = {0, 1, 2, 3, 4, 5, 6};
+  const double R[7] = {1, 2, 2, 0, 5, 4, 1};
+  const double E[7] = {9, 2, 2.04, 7, 4.9, 4.0, 9};
+  const double v[7] = {100, 5, 1, 50, 3, 2, 100};
+  double work[8], spread, median;
+  /* scale 0.5: rows 1-5 have scaled times 0.5-2.5 inside [0.5, 2.0] */
+  vsph_series_plateau(t, E, R, v, 7, 0.5, 0.5, 2.0, work, 8, &spread, &median);
+  ck_assert_double_eq_tol(spread, 0.04 / 1.0, 1e-15);
+  ck_assert_double_eq(median, 3.0);
+  vsph_series_plateau(t, E, R, v, 7, 0.5, 10.0, 20.0, work, 8, &spread,
+                      &median);
+  ck_assert(isnan(spread) && isnan(median));
+}
+END_TEST
+
 Suite *vsph_series_suite(void) {
   Suite *s = suite_create("series");
   TCase *tc = tcase_create("measures");
@@ -104,6 +138,8 @@ Suite *vsph_series_suite(void) {
   tcase_add_test(tc, test_decay_error);
   tcase_add_test(tc, test_onset);
   tcase_add_test(tc, test_integral_loss);
+  tcase_add_test(tc, test_first_reach);
+  tcase_add_test(tc, test_plateau);
   suite_add_tcase(s, tc);
   return s;
 }
