@@ -343,3 +343,25 @@ done:
   if (st) vsph_contact_shear_free(cs);
   return st;
 }
+
+double vsph_contact_bimaterial_fit(const double *tt, const double *x,
+                                   const double *u, size_t n, double t,
+                                   double U0, double nuL, double nuR, double W,
+                                   double etaL, double rhoL, double etaR,
+                                   double rhoR, double *rms_exact) {
+  double num = 0, den = 0, e2 = 0;
+  size_t m = 0;
+  for (size_t i = 0; i < n; i++) {
+    if (fabs(tt[i] - t) > 1e-6 * t || fabs(x[i]) > 0.5 * W) continue;
+    const double side = x[i] > 0 ? U0 : -U0, nu = x[i] > 0 ? nuR : nuL;
+    const double e = erf(fabs(x[i]) / sqrt(4.0 * nu * t));
+    num += (1.0 - e) * (u[i] - side * e);
+    den += (1.0 - e) * (1.0 - e);
+    const double ex = vsph_contact_bimaterial_u(x[i], t, -U0, etaL, rhoL, U0,
+                                                etaR, rhoR, NULL);
+    e2 += (u[i] - ex) * (u[i] - ex);
+    m++;
+  }
+  *rms_exact = m ? sqrt(e2 / (double)m) / U0 : (double)NAN;
+  return den > 0 ? num / den / U0 : (double)NAN;
+}

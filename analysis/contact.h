@@ -28,6 +28,21 @@ double vsph_contact_shear_u(double x, double t, double nu, double U0, double W);
 double vsph_contact_shear_dy(double x, double t, double nu, double U0,
                              double W);
 
+/** @brief The contact velocity that best fits a two-material profile:
+ *  the @p n samples (x[i], u[i]) taken at time tt[i]; those at time @p t
+ *  (to 1e-6 relative) with |x| < W/2 (the paper's box: beyond it the
+ *  mirror image's interface) fit u = U* (1 - e) + u_side e, e =
+ *  erf(|x|/sqrt(4 nu_side t)), u_side = -U0 (x < 0) or U0, nu_side = nuL or
+ *  nuR; linear in U*, so least squares in closed form. @return U* over U0, NaN
+ *  for no sample. @p rms_exact receives the RMS misfit (over U0) of the
+ *  exact profile (vsph_contact_bimaterial_u with etaL, rhoL, etaR, rhoR)
+ *  at those samples. */
+double vsph_contact_bimaterial_fit(const double *tt, const double *x,
+                                   const double *u, size_t n, double t,
+                                   double U0, double nuL, double nuR, double W,
+                                   double etaL, double rhoL, double etaR,
+                                   double rhoR, double *rms_exact);
+
 /** @brief Two semi-infinite materials (left x < 0, right x > 0) sliding at
  *  uL and uR with viscosities etaL, etaR and densities rhoL, rhoR: the
  *  contact velocity (Parshikov et al. eq. 27, the effusivity-weighted mean

@@ -363,10 +363,46 @@ START_TEST(test_cylinder_held) {
 }
 END_TEST
 
+/* The two-material fit on a profile made here: u = U* (1 - e) + u_side e
+ * with U* = 0.3 U0 at time t, plus rows at another time and beyond the
+ * box (|x| > W/2) holding nonsense, which it must leave out: U* over U0 is
+ * 0.3 to rounding (1e-12: a 101-term least squares). And a profile that is
+ * the exact one shifted by 0.05 everywhere: its RMS misfit is 0.05 over
+ * U0. */
+START_TEST(test_bimaterial_fit) {
+  enum { N = 131 };
+  const double U0 = 10.0, t = 0.01, W = 1.0, rhoL = 1000.0, rhoR = 800.0,
+               etaL = 0.2, etaR = 0.4, nuL = etaL / rhoL, nuR = etaR / rhoR;
+  double tt[N], x[N], u[N], v[N];
+  for (int i = 0; i < N; i++) {
+    x[i] = -0.65 + 0.01 * i;
+    tt[i] = i % 13 == 5 ? 2.0 * t : t;
+    const double side = x[i] > 0 ? U0 : -U0, nu = x[i] > 0 ? nuR : nuL;
+    const double e = erf(fabs(x[i]) / sqrt(4.0 * nu * t));
+    u[i] = 0.3 * U0 * (1.0 - e) + side * e;
+    v[i] = vsph_contact_bimaterial_u(x[i], t, -U0, etaL, rhoL, U0, etaR, rhoR,
+                                     NULL) +
+           0.05;
+    if (tt[i] != t || fabs(x[i]) > 0.5 * W) u[i] = v[i] = 1e6; /* left out */
+  }
+  double rms;
+  ck_assert_double_eq_tol(
+      vsph_contact_bimaterial_fit(tt, x, u, N, t, U0, nuL, nuR, W, etaL, rhoL,
+                                  etaR, rhoR, &rms),
+      0.3, 1e-12);
+  vsph_contact_bimaterial_fit(tt, x, v, N, t, U0, nuL, nuR, W, etaL, rhoL, etaR,
+                              rhoR, &rms);
+  ck_assert_double_eq_tol(rms, 0.05 / U0, 1e-12);
+  ck_assert(isnan(vsph_contact_bimaterial_fit(
+      tt, x, u, N, 3.0 * t, U0, nuL, nuR, W, etaL, rhoL, etaR, rhoR, &rms)));
+}
+END_TEST
+
 Suite *vsph_contact_suite(void) {
   Suite *s = suite_create("contact");
   TCase *tc = tcase_create("contact");
   tcase_set_timeout(tc, 60);
+  tcase_add_test(tc, test_bimaterial_fit);
   tcase_add_test(tc, test_riemann_exact);
   tcase_add_test(tc, test_shear_closed_forms);
   tcase_add_test(tc, test_materials_table);
