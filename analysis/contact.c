@@ -365,3 +365,9 @@ double vsph_contact_bimaterial_fit(const double *tt, const double *x,
   *rms_exact = m ? sqrt(e2 / (double)m) / U0 : (double)NAN;
   return den > 0 ? num / den / U0 : (double)NAN;
 }
+
+double vsph_contact_eta_model(double C, double rho, double c, double D0,
+                              double flat, double eta, double zeta,
+                              double fit) {
+  return C * rho * c * D0 + flat * (eta - zeta * fit * rho * c * D0);
+}

@@ -28,6 +28,15 @@ double vsph_contact_shear_u(double x, double t, double nu, double U0, double W);
 double vsph_contact_shear_dy(double x, double t, double nu, double U0,
                              double W);
 
+/** @brief The effective viscosity that the correcting tensor leaves
+ *  (Parshikov et al.'s model, docs/theory.md section 12): the scheme's
+ *  own dynamic numerical viscosity C rho c D0 plus the lattice factor
+ *  f_lat times what the contact stress carries, the physical eta less
+ *  the removed fraction zeta of the fitted numerical one,
+ *  eta_num = fit rho c D0 (Pa s). */
+double vsph_contact_eta_model(double C, double rho, double c, double D0,
+                              double flat, double eta, double zeta, double fit);
+
 /** @brief The contact velocity that best fits a two-material profile:
  *  the @p n samples (x[i], u[i]) taken at time tt[i]; those at time @p t
  *  (to 1e-6 relative) with |x| < W/2 (the paper's box: beyond it the

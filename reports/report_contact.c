@@ -239,9 +239,8 @@ static void numbers(const struct cres *cr, const struct vsph_jobs *J,
     nb->eta_eff[k] =
         r->nt && r->stable ? 1e3 * r->nu_dy[r->nt - 1] * r->rho0 : (double)NAN;
     nb->eta_want[k] =
-        1e3 * (coef(&cr->r[C_W]) * r->rho0 * r->c0 * r->D0 +
-               nb->flat_w *
-                   (lead->eta - zeta[k] * nb->fit05 * r->rho0 * r->c0 * r->D0));
+        1e3 * vsph_contact_eta_model(coef(&cr->r[C_W]), r->rho0, r->c0, r->D0,
+                                     nb->flat_w, lead->eta, zeta[k], nb->fit05);
   }
   /* self-similarity: the spread of nu over the profile times */
   const int S[2] = {C_W, C_Z1L};

@@ -398,10 +398,24 @@ START_TEST(test_bimaterial_fit) {
 }
 END_TEST
 
+/* The correcting tensor's model by hand: C = 0.1, rho c D0 = 2 Pa s,
+ * f_lat = 0.9, eta = 1 Pa s, fit = 0.05: 0.2 + 0.9 (1 - zeta 0.1), so
+ * 1.1 at zeta = 0 and 1.01 at zeta = 1 (rounding). */
+START_TEST(test_eta_model) {
+  ck_assert_double_eq_tol(
+      vsph_contact_eta_model(0.1, 1000.0, 200.0, 1e-5, 0.9, 1.0, 0.0, 0.05),
+      1.1, 1e-15);
+  ck_assert_double_eq_tol(
+      vsph_contact_eta_model(0.1, 1000.0, 200.0, 1e-5, 0.9, 1.0, 1.0, 0.05),
+      1.01, 1e-15);
+}
+END_TEST
+
 Suite *vsph_contact_suite(void) {
   Suite *s = suite_create("contact");
   TCase *tc = tcase_create("contact");
   tcase_set_timeout(tc, 60);
+  tcase_add_test(tc, test_eta_model);
   tcase_add_test(tc, test_bimaterial_fit);
   tcase_add_test(tc, test_riemann_exact);
   tcase_add_test(tc, test_shear_closed_forms);
