@@ -78,10 +78,6 @@ const char *vsph_report_scene_name(size_t s) {
                                  : NULL;
 }
 
-int vsph_report_scene_on(const struct vsph_report *R, int sc) {
-  return !R->scenes || (R->scenes >> sc & 1u);
-}
-
 const char *vsph_report_part_name(size_t p) {
   return p < NPARTS ? PARTS[p].name : NULL;
 }

@@ -104,10 +104,14 @@ struct vsph_report {
   const struct vsph_archive_judge *judge; /* what judges its entries */
 };
 
-/* ------------------------------------------------------ report.c helpers */
+/* 1 if the scene-wise parts include scene @p sc: a reading of the
+ * report's settings, inline so that the ladders (report_runs.c) need
+ * nothing of report.c, which calls them. */
+static inline int vsph_report_scene_on(const struct vsph_report *R, int sc) {
+  return !R->scenes || (R->scenes >> sc & 1u);
+}
 
-/* 1 if the scene-wise parts include scene @p sc. */
-int vsph_report_scene_on(const struct vsph_report *R, int sc);
+/* ------------------------------------------------------ report.c helpers */
 
 /* Add a row to the claims table (copied). */
 int vsph_report_claim(struct vsph_report *R, const char *claim,
