@@ -152,22 +152,18 @@ static const int *map_cols(const struct vsph_report *R, int *n) {
 static const double TSTAR_END = 27.66; /* ln(32/(pi^3 1e-12)) */
 static const char *const MAP_TAG[NRE] = {"mapRe0.5", "mapRe2", "mapRe5",
                                          "mapRe10", "mapRe50"};
-/* the runs' extra settings, made once (static: the runspecs borrow them) */
-static char map_re[NRE][32];
-static const char *map_xtra[NMAP][NRE][5];
-static void map_settings(void) {
-  for (int r = 0; r < NRE; r++) {
-    snprintf(map_re[r], sizeof map_re[r], "Scene:Re=%g", MAP_RE[r]);
-    for (int f = 0; f < NMAP; f++) {
-      const char **x = map_xtra[f][r];
-      x[0] = "Solver:kernel=cubic";
-      x[1] = "Solver:hdx=1.5699";
-      x[2] = map_re[r];
-      x[3] = f == 1 ? "Solver:xi=4.24" : NULL;
-      x[4] = NULL;
-    }
-  }
-}
+/* the runs' extra settings at each Re of MAP_RE (its values as %g
+ * writes them; these literals replaced a table made at run time, and the
+ * FULL plan's 25 commands came out the same), Cleary's D with Basa's xi */
+#define MAP_SET(re, more) \
+  { "Solver:kernel=cubic", "Solver:hdx=1.5699", "Scene:Re=" re, more, NULL }
+static const char *const MAP_XTRA[2][NRE][5] = {
+    {MAP_SET("0.5", NULL), MAP_SET("2", NULL), MAP_SET("5", NULL),
+     MAP_SET("10", NULL), MAP_SET("50", NULL)},
+    {MAP_SET("0.5", "Solver:xi=4.24"), MAP_SET("2", "Solver:xi=4.24"),
+     MAP_SET("5", "Solver:xi=4.24"), MAP_SET("10", "Solver:xi=4.24"),
+     MAP_SET("50", "Solver:xi=4.24")}};
+#undef MAP_SET
 
 /* The lid-driven cavity: the transport-velocity scheme with Adami et al.'s
  * wall particles, quintic spline, h = dx. Re 100 to t = 10 s: MEAF at 20
@@ -234,7 +230,6 @@ struct chan {
 static void specs(const struct vsph_report *R, struct vsph_jobs_spec *s,
                   size_t *n, size_t res_p, size_t res_c, size_t res_m) {
   size_t k = 0;
-  map_settings();
   for (int f = 0; f < NPOIS; f++)
     s[k++] = (struct vsph_jobs_spec){"poiseuille", POIS_VISC[f], res_p,
                                      0.5,          POIS_XTRA[f], POIS_TAG[f]};
@@ -260,9 +255,12 @@ static void specs(const struct vsph_report *R, struct vsph_jobs_spec *s,
   const int *col = map_cols(R, &nre);
   for (int f = 0; f < NMAP; f++)
     for (int q = 0; q < nre; q++)
-      s[k++] = (struct vsph_jobs_spec){
-          "poiseuille",      MAP_VISC[f],         res_m,
-          TSTAR_END / TSTAR, map_xtra[f][col[q]], MAP_TAG[col[q]]};
+      s[k++] = (struct vsph_jobs_spec){"poiseuille",
+                                       MAP_VISC[f],
+                                       res_m,
+                                       TSTAR_END / TSTAR,
+                                       MAP_XTRA[f == MAP_D][col[q]],
+                                       MAP_TAG[col[q]]};
   for (int q = 0; q < (R->full ? NCAV : CAV_QUICK); q++)
     s[k++] = (struct vsph_jobs_spec){"cavity",     CAV[q].visc, CAV[q].res,
                                      CAV[q].t_end, CAV[q].xtra, CAV[q].tag};

@@ -288,16 +288,14 @@ static void numbers(const struct cres *cr, const struct vsph_jobs *J,
  * the slowest mode, S^2/(4 pi^2 nu), for each run's viscosity. */
 #define CYL_COMMON \
   "Solver:kernel=wendland2", "Solver:alpha=0.5", "Solver:outputs=50"
+/* (the corrected runs, zeta > 0, take eta_num too: cyl_specs appends it) */
 static const char *const CYL_Z0[] = {CYL_COMMON, NULL};
-static char cyl_eta_num[64]; /* "Solver:eta_num=<the 2-D lattice sum>" */
-static const char *const CYL_Z1[] = {CYL_COMMON, "Solver:zeta_num=1",
-                                     cyl_eta_num, NULL};
-static const char *const CYL_Z05[] = {CYL_COMMON, "Solver:zeta_num=0.5",
-                                      cyl_eta_num, NULL};
+static const char *const CYL_Z1[] = {CYL_COMMON, "Solver:zeta_num=1", NULL};
+static const char *const CYL_Z05[] = {CYL_COMMON, "Solver:zeta_num=0.5", NULL};
 #define CYL_PARA "Scene:material=paraffin", "Scene:d=1e-4"
 static const char *const CYL_P0[] = {CYL_COMMON, CYL_PARA, NULL};
 static const char *const CYL_P1[] = {CYL_COMMON, CYL_PARA, "Solver:zeta_num=1",
-                                     cyl_eta_num, NULL};
+                                     NULL};
 #define CYL_03 "Scene:dS=0.3"
 static const char *const CYL_G03[] = {CYL_COMMON, CYL_03, NULL};
 enum {
@@ -352,17 +350,30 @@ struct cyl {
   double k2; /* the 2-D static lattice's eta_num/(Z D0) */
 };
 
-/* The cylinder runs (their number is returned), with eta_num the 2-D
+/* The runs' settings with eta_num the 2-D static lattice's: the caller
+ * keeps them while it uses the specs that point into them. */
+struct cyl_sets {
+  char eta_num[64]; /* "Solver:eta_num=<the 2-D lattice sum>" */
+  const char *set[NCY][8];
+};
+
+/* The cylinder runs (their number is returned) into @p rs, their
+ * settings into @p cs: each run's of CY, then (zeta > 0) eta_num, the 2-D
  * static lattice's (@p k2). */
-static int cyl_specs(const struct vsph_report *R, struct vsph_jobs_spec rs[NCY],
-                     double *k2) {
+static int cyl_specs(const struct vsph_report *R, struct cyl_sets *cs,
+                     struct vsph_jobs_spec rs[NCY], double *k2) {
   const struct vsph_kernel_type *w = vsph_kernel_find("wendland2");
   *k2 = vsph_contact_lattice_coef(w, 2, 0.5);
-  snprintf(cyl_eta_num, sizeof cyl_eta_num, "Solver:eta_num=%.6f", *k2);
+  snprintf(cs->eta_num, sizeof cs->eta_num, "Solver:eta_num=%.6f", *k2);
   const int n = R->full ? NCY : CY_QUICK;
-  for (int k = 0; k < n; k++)
-    rs[k] = (struct vsph_jobs_spec){"cylinders", "contact", CY[k].res,
-                                    CY[k].t_end, CY[k].set, CY[k].tag};
+  for (int k = 0; k < n; k++) {
+    size_t q = 0;
+    for (; CY[k].set[q]; q++) cs->set[k][q] = CY[k].set[q];
+    if (CY[k].zeta > 0) cs->set[k][q++] = cs->eta_num;
+    cs->set[k][q] = NULL;
+    rs[k] = (struct vsph_jobs_spec){"cylinders", "contact",  CY[k].res,
+                                    CY[k].t_end, cs->set[k], CY[k].tag};
+  }
   return n;
 }
 
@@ -378,14 +389,16 @@ int vsph_report_contact_plan(struct vsph_report *R) {
   }
   struct vsph_jobs_spec rs[NCY];
   double k2;
-  const int n = cyl_specs(R, rs, &k2);
+  struct cyl_sets cs;
+  const int n = cyl_specs(R, &cs, rs, &k2);
   for (int k = 0; k < n && !st; k++) st = vsph_jobs_plan_run(&R->jobs, &rs[k]);
   return st;
 }
 
 static int cyl_load(struct vsph_report *R, struct cyl *cy) {
   struct vsph_jobs_spec rs[NCY];
-  cy->n = cyl_specs(R, rs, &cy->k2);
+  struct cyl_sets cs;
+  cy->n = cyl_specs(R, &cs, rs, &cy->k2);
   int st = VSPH_OK;
   for (int k = 0; k < cy->n && !st; k++) {
     /* the scene's derived values for the run's Scene: settings */
