@@ -1163,10 +1163,11 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   if (ep->corr) {
     if (!vsph_viscous_corrigible(vp->form)) {
       char list[256];
-      VSPH_FAIL(VSPH_EINVAL,
-                "the kernel corrections apply to the pair forms (%s), not %s",
-                vsph_viscous_list(VSPH_VISCOUS_CORRIGIBLE, list, sizeof list),
-                vsph_viscous_name(vp->form));
+      VSPH_FAIL(
+          VSPH_EINVAL,
+          "the kernel corrections apply to the corrigible forms (%s), not %s",
+          vsph_viscous_list(VSPH_VISCOUS_CORRIGIBLE, list, sizeof list),
+          vsph_viscous_name(vp->form));
     }
     if (!ws || !ws->S || ws->cap < p->n)
       VSPH_FAIL(VSPH_EINVAL, "the kernel corrections need a workspace");
