@@ -115,6 +115,12 @@ fail:
   return NULL;
 }
 
+size_t vsph_csv_column_number(const struct vsph_csv *t, const char *name) {
+  for (size_t c = 0; c < t->ncol; c++)
+    if (!strcmp(t->names[c], name)) return c + 1;
+  return 0;
+}
+
 const double *vsph_csv_column(const struct vsph_csv *t, const char *name) {
   for (size_t c = 0; c < t->ncol; c++)
     if (!strcmp(t->names[c], name)) return t->data + c * t->nrow;

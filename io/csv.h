@@ -36,4 +36,8 @@ void vsph_csv_free(struct vsph_csv *t);
 /** @brief The column called @p name (nrow values), or NULL. */
 const double *vsph_csv_column(const struct vsph_csv *t, const char *name);
 
+/** @brief The position of the column called @p name counted from 1, as
+ *  gnuplot's `using` counts, or 0 when there is none. */
+size_t vsph_csv_column_number(const struct vsph_csv *t, const char *name);
+
 #endif /* VSPH_IO_CSV_H */

@@ -408,6 +408,17 @@ static void data_file(char *buf, size_t len, const struct vsph_jobs_run *r) {
   snprintf(buf, len, "runs/%s/energy.csv", base ? base + 1 : r->dir);
 }
 
+/* gnuplot's "using" for t against the column @p name of the run's
+ * energy.csv, found by its name in the table's header; VSPH_EIO when the
+ * table has none. */
+static int using_column(char *buf, size_t len, const struct vsph_jobs_run *r,
+                        const char *name) {
+  const size_t c = r->energy ? vsph_csv_column_number(r->energy, name) : 0;
+  if (!c) VSPH_FAIL(VSPH_EIO, "%s/energy.csv has no column %s", r->dir, name);
+  snprintf(buf, len, "1:%zu", c);
+  return VSPH_OK;
+}
+
 /* Error against t* of every Poiseuille run, and against t of Couette's. */
 static int figures(struct vsph_report *R, const struct chan *c) {
   struct vsph_plot pl;
@@ -449,7 +460,9 @@ static int figures(struct vsph_report *R, const struct chan *c) {
                            f >= 12  ? " dt 3 pi 12"
                            : f >= 6 ? " dt 2 pi 12"
                                     : " pi 12");
-    st = vsph_plot_add(&pl, file, "1:16", vsph_viscous_label(f), style);
+    char use[32];
+    st = using_column(use, sizeof use, &c->cou[f], "u_err");
+    if (!st) st = vsph_plot_add(&pl, file, use, vsph_viscous_label(f), style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);
   if (!st) st = vsph_report_figure_say(R, &pl, "channel.fig_couette");
@@ -469,7 +482,9 @@ static int figures(struct vsph_report *R, const struct chan *c) {
              CAV[q].res);
     vsph_report_runs_style(style, sizeof style, q,
                            CAV[q].Re > 100 ? " dt 2 pi 12" : " pi 12");
-    st = vsph_plot_add(&pl, file, "1:16", label, style);
+    char use[32];
+    st = using_column(use, sizeof use, &c->cav[q], "u_err");
+    if (!st) st = vsph_plot_add(&pl, file, use, label, style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);
   if (!st) st = vsph_report_figure_say(R, &pl, "channel.fig_cavity");

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "../common/status.h"
+#include "../io/csv.h"
 #include "../io/html.h"
 #include "../io/plot.h"
 #include "check_suites.h"
@@ -210,6 +211,30 @@ START_TEST(test_particles_errors) {
 }
 END_TEST
 
+/* A table read back: its columns by name, and their positions as
+ * gnuplot's "using" counts them (from 1; 0 for none), so that a figure
+ * names the column it draws. */
+START_TEST(test_csv_columns) {
+  char sdir[] = "/tmp/vsph-csv-XXXXXX", path[64];
+  vsph_test_scratch(sdir);
+  snprintf(path, sizeof path, "%s/e.csv", sdir);
+  FILE *f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fputs("t,Ek,u_err\n0,1,0.5\n1,2,nan\n", f);
+  fclose(f);
+  struct vsph_csv *t = vsph_csv_read(path);
+  ck_assert_ptr_nonnull(t);
+  ck_assert_uint_eq(vsph_csv_column_number(t, "t"), 1);
+  ck_assert_uint_eq(vsph_csv_column_number(t, "u_err"), 3);
+  ck_assert_uint_eq(vsph_csv_column_number(t, "v_rms"), 0);
+  const double *u = vsph_csv_column(t, "u_err");
+  ck_assert_double_eq(u[0], 0.5);
+  ck_assert(isnan(u[1]));
+  vsph_csv_free(t);
+  vsph_test_rm_tree(sdir);
+}
+END_TEST
+
 Suite *vsph_plot_suite(void) {
   Suite *s = suite_create("plot");
   TCase *tc = tcase_create("core");
@@ -217,6 +242,7 @@ Suite *vsph_plot_suite(void) {
   /* gnuplot makes three files per figure: a few tenths of a second each */
   tcase_set_timeout(tc, 60);
   tcase_add_test(tc, test_vorticity_limit_all_panels);
+  tcase_add_test(tc, test_csv_columns);
   tcase_add_test(tc, test_pressure_range_all_panels);
   tcase_add_test(tc, test_figure_three_formats);
   tcase_add_test(tc, test_html_embeds_svg);
