@@ -31,19 +31,16 @@
  *
  *  Names: every symbol starts with vsph_<module>_ (REBOUND's rule). */
 
-#include "analysis/dissipation.h"
-#include "analysis/fields.h"
-#include "analysis/moments.h"
-#include "analysis/references.h"
-
-#ifdef __cplusplus
-}
-#endif
-#include "analysis/scaling.h"
+/* clang-format off: the includes stay inside the C linkage block */
 #ifdef __cplusplus
 extern "C" {
 #endif
 
+#include "analysis/dissipation.h"
+#include "analysis/fields.h"
+#include "analysis/moments.h"
+#include "analysis/references.h"
+#include "analysis/scaling.h"
 #include "common/consts.h"
 #include "common/params.h"
 #include "common/status.h"
@@ -54,5 +51,10 @@ extern "C" {
 #include "solver/run.h"
 #include "solver/scene.h"
 #include "solver/viscous.h"
+
+#ifdef __cplusplus
+}
+#endif
+/* clang-format on */
 
 #endif /* VSPH_H */
