@@ -31,7 +31,8 @@
  *
  *  Names: every symbol starts with vsph_<module>_ (REBOUND's rule). */
 
-/* clang-format off: the includes stay inside the C linkage block */
+/* C linkage for a C++ program; the includes are one block, which
+ * clang-format sorts within it (a blank line apart from the guards) */
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -55,6 +56,5 @@ extern "C" {
 #ifdef __cplusplus
 }
 #endif
-/* clang-format on */
 
 #endif /* VSPH_H */
