@@ -335,7 +335,7 @@ static double at(const struct vsph_jobs_run *r, const char *col, double t) {
   const double *y = vsph_csv_column(r->energy, col);
   if (!y || r->nrow == 0 || t > r->t[r->nrow - 1] * (1 + 1e-9))
     return (double)NAN;
-  return vsph_report_runs_interp(r->t, y, r->nrow, t);
+  return vsph_series_interp(r->t, y, r->nrow, t);
 }
 
 /* The last row's value of column @p col. */

@@ -177,13 +177,6 @@ void vsph_report_runs_free(struct vsph_jobs_run *r);
 int vsph_report_runs_richardson(struct vsph_report *R,
                                 struct vsph_report_richardson *rr);
 
-/* The extrapolation of one quantity: e[r][m] at h/dx = 2 (r = 0) and 3
- * (r = 1), coarse (m = 0) and fine (m = 1, h halved), with the lattice
- * errors eps[r]: Richardson in h at each h/dx, then
- * E3 - eps3 (E2 - E3)/(eps2 - eps3). @p e is read only (not const:
- * C17 does not convert double[2][2] to const double[2][2]). */
-double vsph_report_runs_extrapolate(double e[2][2], const double eps[2]);
-
 /* The four runs behind it (tags "hdx2", "hdx3"). */
 extern const char *const vsph_report_runs_hdx[2][2];
 void vsph_report_runs_reference_specs(const struct vsph_report *R,
@@ -225,10 +218,6 @@ double vsph_report_runs_visc_loss_ratio(const struct vsph_jobs_run *r,
 
 /* Initial dissipation error (P_visc(0) - dEk_ref(0)) / |dEk_ref(0)|. */
 double vsph_report_runs_diss0(const struct vsph_jobs_run *r);
-
-/* Linear interpolation of y(t) on sample times t (NaN outside). */
-double vsph_report_runs_interp(const double *t, const double *y, size_t n,
-                               double x);
 
 /* gnuplot's point type for formulation f: the same in every figure. */
 int vsph_report_runs_point(int f);

@@ -115,11 +115,6 @@ int vsph_report_runs_get(struct vsph_report *R, const struct vsph_jobs_spec *rs,
   return vsph_jobs_get(&R->jobs, rs, out);
 }
 
-double vsph_report_runs_interp(const double *t, const double *y, size_t n,
-                               double x) {
-  return vsph_series_interp(t, y, n, x);
-}
-
 const char *const vsph_report_runs_hdx[2][2] = {{"Solver:hdx=2", NULL},
                                                 {"Solver:hdx=3", NULL}};
 
@@ -140,10 +135,6 @@ void vsph_report_runs_reference_specs(const struct vsph_report *R,
                                        tag[r]};
       rs[2 * r + k] = s;
     }
-}
-
-double vsph_report_runs_extrapolate(double e[2][2], const double eps[2]) {
-  return vsph_series_extrapolate(e, eps);
 }
 
 /* MGF's lattice error of the dissipation of pure strain on the square
@@ -188,9 +179,9 @@ int vsph_report_runs_richardson(struct vsph_report *R,
     for (int r = 0; r < 2; r++)
       for (int m = 0; m < 2; m++) {
         const struct vsph_jobs_run *u = &run[2 * r + m];
-        e[r][m] = vsph_report_runs_interp(u->t, u->Ek, u->nrow, rr->t[k]);
+        e[r][m] = vsph_series_interp(u->t, u->Ek, u->nrow, rr->t[k]);
       }
-    rr->E[k] = vsph_report_runs_extrapolate(e, rr->eps);
+    rr->E[k] = vsph_series_extrapolate(e, rr->eps);
     rr->correction =
         fmax(rr->correction, fabs(rr->E[k] - (2.0 * e[1][1] - e[1][0])));
   }
@@ -207,7 +198,7 @@ int vsph_report_runs_richardson(struct vsph_report *R,
     for (int r = 0; r < 2; r++)
       for (int m = 0; m < 2; m++)
         d[r][m] = vsph_report_runs_diss0(&run[2 * r + m]);
-    rr->diss0 = vsph_report_runs_extrapolate(d, rr->eps);
+    rr->diss0 = vsph_series_extrapolate(d, rr->eps);
   }
   for (int k = 0; k < 4; k++) vsph_report_runs_free(&run[k]);
   if (st) return st;
@@ -225,7 +216,7 @@ double vsph_report_runs_onset(const struct vsph_jobs_run *r,
 
 double vsph_report_runs_eref(const struct vsph_jobs_run *r, size_t row,
                              const struct vsph_report_richardson *rr) {
-  if (rr) return vsph_report_runs_interp(rr->t, rr->E, 101, r->t[row]);
+  if (rr) return vsph_series_interp(rr->t, rr->E, 101, r->t[row]);
   return r->Ekr[row];
 }
 

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "../analysis/references.h"
+#include "../analysis/series.h"
 #include "../common/status.h"
 #include "../io/csv.h"
 #include "../io/files.h"
@@ -36,7 +37,7 @@ static int write_derived(struct vsph_report *R, const char *name,
     const double e = vsph_report_runs_eref(r, k, rr);
     /* the square's reference rate for t > 0 from the extrapolated curve */
     const double de = rr && k > 0
-                          ? vsph_report_runs_interp(rr->t, rr->dE, 101, r->t[k])
+                          ? vsph_series_interp(rr->t, rr->dE, 101, r->t[k])
                           : r->dEkr[k];
     fprintf(f, "%.8g,%.10e,%.10e,%.10e,%.10e,%.6e,%.6e,%.6e,%.10e,%.10e,%.6e\n",
             r->t[k], r->Ek[k], e, r->dEk[k], de, r->Ek[k] / r->Ek[0] - e / e0,

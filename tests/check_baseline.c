@@ -15,6 +15,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "../analysis/series.h"
 #include "../reports/report_internal.h"
 #include "check_suites.h"
 
@@ -102,10 +103,10 @@ START_TEST(test_extrapolate) {
     for (int r = 0; r < 2; r++)
       for (int m = 0; m < 2; m++)
         e[r][m] = Es + a * (m ? h[r][0] / 2 : h[r][0]) + b * eps[r];
-    ck_assert_double_eq_tol(vsph_report_runs_extrapolate(e, eps), Es, 1e-13);
+    ck_assert_double_eq_tol(vsph_series_extrapolate(e, eps), Es, 1e-13);
   }
   double flat[2][2] = {{Es, Es}, {Es, Es}};
-  ck_assert_double_eq_tol(vsph_report_runs_extrapolate(flat, eps), Es, 1e-15);
+  ck_assert_double_eq_tol(vsph_series_extrapolate(flat, eps), Es, 1e-15);
 }
 END_TEST
 
