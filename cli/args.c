@@ -229,6 +229,28 @@ int vsph_args_json(const char *cmd, void *obj) {
       cmd, vsph_json_print(obj) ? vsph_args_status(cmd, VSPH_EIO) : 0);
 }
 
+int vsph_args_analysis_main(const struct vsph_args_analysis *a, void *work,
+                            int argc, char **argv) {
+  int json = 0;
+  const struct vsph_args_spec own[] = {
+      {"--json", VSPH_ARGS_FLAG, &json, NULL, a->json_keys}};
+  size_t n;
+  const struct vsph_params_spec *spec = a->params(&n);
+  const struct vsph_args_section sec = {a->section, spec, n};
+  const struct vsph_args_cmd c = {a->name, a->synopsis, a->about, own,
+                                  1,       &sec,        1,        NULL};
+  struct vsph_params *prm = vsph_params_alloc();
+  if (!prm) return vsph_args_status(a->name, VSPH_ENOMEM);
+  const int rc = vsph_args_parse(&c, argc, argv, prm);
+  int st = rc < 0 ? a->init(work, prm) : 0;
+  vsph_params_free(prm);
+  if (rc >= 0) return rc;
+  if (!st) st = a->compute(work);
+  if (st) return vsph_args_status(a->name, st);
+  if (json) return vsph_args_json(a->name, a->json(work));
+  return vsph_args_finish(a->name, a->print(work));
+}
+
 static volatile sig_atomic_t stop_signal, quick_armed, writing;
 static void on_stop(int sig) {
   stop_signal = sig;

@@ -112,4 +112,32 @@ int vsph_args_finish(const char *cmd, int rc);
  *  commands. @return 0, or the status of a failed print or write. */
 int vsph_args_json(const char *cmd, void *obj);
 
+/** An analysis command (tensors, scaling, dissipation, laplacian): its
+ *  options are --json and one module's parameter section; it computes one
+ *  result and prints it as a table or as JSON. The four hooks work on the
+ *  command's own state @p work (its props and result). */
+struct vsph_args_analysis {
+  const char *name;      /*!< "tensors" */
+  const char *synopsis;  /*!< what follows "usage: vsph NAME" */
+  const char *about;     /*!< a paragraph on what it does */
+  const char *json_keys; /*!< the help line of --json */
+  const char *section;   /*!< the module's parameter section */
+  /** the section's table (its length in *n) */
+  const struct vsph_params_spec *(*params)(size_t *n);
+  /** the props from the parsed settings (a status) */
+  int (*init)(void *work, struct vsph_params *prm);
+  /** the computation (a status) */
+  int (*compute)(void *work);
+  /** the result as a cJSON object, or NULL when it cannot be built */
+  void *(*json)(const void *work);
+  /** the table on stdout (0, or a status reported already: 1 or 2) */
+  int (*print)(const void *work);
+};
+
+/** @brief The whole body of an analysis command: parse, init, compute,
+ *  then the table or (--json) the JSON, ended through vsph_args_finish.
+ *  @return the exit status. */
+int vsph_args_analysis_main(const struct vsph_args_analysis *a, void *work,
+                            int argc, char **argv);
+
 #endif /* VSPH_CLI_ARGS_H */

@@ -13,10 +13,29 @@
 #include "../solver/viscous.h"
 #include "args.h"
 
-static const char *const CMD = "dissipation";
+/* the command's state */
+struct work {
+  struct vsph_dissipation_props dp;
+  struct vsph_dissipation_result r;
+};
 
-static void print_table(const struct vsph_dissipation_props *dp,
-                        const struct vsph_dissipation_result *r) {
+static int init(void *w, struct vsph_params *prm) {
+  return vsph_dissipation_props_init(&((struct work *)w)->dp, prm);
+}
+
+static int compute(void *w) {
+  struct work *k = w;
+  return vsph_dissipation_compute(&k->dp, &k->r);
+}
+
+static void *json(const void *w) {
+  const struct work *k = w;
+  return vsph_json_dissipation(&k->dp, &k->r);
+}
+
+static int print_table(const void *w) {
+  const struct vsph_dissipation_props *dp = &((const struct work *)w)->dp;
+  const struct vsph_dissipation_result *r = &((const struct work *)w)->r;
   printf(
       "# vsph %s dissipation: %s, field %s, %s, %zu across, h/dx = %g, "
       "kernel %s, mu = %g, perturbation %g dx\n",
@@ -34,20 +53,12 @@ static void print_table(const struct vsph_dissipation_props *dp,
   printf("  lattice (h/dx)   %+.6e\n", r->lattice_error);
   printf("  surface (h/L)    %+.6e\n", r->surface_error);
   printf("momentum residual  %.3e   angular %.3e\n", r->momentum, r->angular);
+  return 0;
 }
 
 int vsph_cmd_dissipation_main(int argc, char **argv) {
-  int json = 0;
-  const struct vsph_args_spec own[] = {
-      {"--json", VSPH_ARGS_FLAG, &json, NULL,
-       "JSON with keys P, P_exact, P_grad, rel_error, consistency_error, "
-       "lattice_error, surface_error, P_pair, momentum, angular, "
-       "n_particles, n_interior, h, dx, n_fallback"}};
-  size_t n;
-  const struct vsph_params_spec *spec = vsph_dissipation_params(&n);
-  const struct vsph_args_section sec = {"Dissipation", spec, n};
-  const struct vsph_args_cmd c = {
-      CMD,
+  static const struct vsph_args_analysis a = {
+      "dissipation",
       "[--formulation NAME] [--field NAME] [options]",
       "Discrete dissipation P = sum_i V_i u_i.(div V)_i of a formulation for\n"
       "an analytic 2-D field on a square (side 1 m) or a disc (diameter 1 m,\n"
@@ -59,22 +70,15 @@ int vsph_cmd_dissipation_main(int argc, char **argv) {
       "consistency (MEAF's limit is P_grad), lattice (full-support particles\n"
       "against the limit: depends on h/dx only) and surface (the rest:\n"
       "shrinks like h/L) errors.",
-      own,
-      1,
-      &sec,
-      1,
-      NULL};
-  struct vsph_params *prm = vsph_params_alloc();
-  if (!prm) return vsph_args_status(CMD, VSPH_ENOMEM);
-  const int rc = vsph_args_parse(&c, argc, argv, prm);
-  struct vsph_dissipation_props dp;
-  int st = rc < 0 ? vsph_dissipation_props_init(&dp, prm) : 0;
-  vsph_params_free(prm);
-  if (rc >= 0) return rc;
-  struct vsph_dissipation_result r;
-  if (!st) st = vsph_dissipation_compute(&dp, &r);
-  if (st) return vsph_args_status(CMD, st);
-  if (json) return vsph_args_json(CMD, vsph_json_dissipation(&dp, &r));
-  print_table(&dp, &r);
-  return vsph_args_finish(CMD, 0);
+      "JSON with keys P, P_exact, P_grad, rel_error, consistency_error, "
+      "lattice_error, surface_error, P_pair, momentum, angular, "
+      "n_particles, n_interior, h, dx, n_fallback",
+      "Dissipation",
+      vsph_dissipation_params,
+      init,
+      compute,
+      json,
+      print_table};
+  struct work w;
+  return vsph_args_analysis_main(&a, &w, argc, argv);
 }

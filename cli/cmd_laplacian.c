@@ -12,10 +12,29 @@
 #include "../kernels/kernel.h"
 #include "args.h"
 
-static const char *const CMD = "laplacian";
+/* the command's state */
+struct work {
+  struct vsph_laplacian_props lp;
+  struct vsph_laplacian_result r;
+};
 
-static void print_table(const struct vsph_laplacian_props *lp,
-                        const struct vsph_laplacian_result *r) {
+static int init(void *w, struct vsph_params *prm) {
+  return vsph_laplacian_props_init(&((struct work *)w)->lp, prm);
+}
+
+static int compute(void *w) {
+  struct work *k = w;
+  return vsph_laplacian_patch(&k->lp, &k->r);
+}
+
+static void *json(const void *w) {
+  const struct work *k = w;
+  return vsph_json_laplacian(&k->lp, &k->r);
+}
+
+static int print_table(const void *w) {
+  const struct vsph_laplacian_props *lp = &((const struct work *)w)->lp;
+  const struct vsph_laplacian_result *r = &((const struct work *)w)->r;
   printf(
       "# vsph %s laplacian: %s, field %s, %d-D, %zu across, h/dx = %g, "
       "kernel %s, perturbation %g dx (seed %lu), eta/h = %g\n",
@@ -31,20 +50,12 @@ static void print_table(const struct vsph_laplacian_props *lp,
   printf("paper's scale        %.6e   the above times dx^2\n", r->err_paper);
   printf("max |num - exact|    %.6e   (max |exact| %.6e)\n", r->abs_max,
          r->ref_max);
+  return 0;
 }
 
 int vsph_cmd_laplacian_main(int argc, char **argv) {
-  int json = 0;
-  const struct vsph_args_spec own[] = {
-      {"--json", VSPH_ARGS_FLAG, &json, NULL,
-       "JSON with keys form, field, kernel, dim, n, hdx, perturb, seed, eta, "
-       "n_eval, n_total, dx, h, err_literal, err_exact, err_paper, abs_max, "
-       "ref_max"}};
-  size_t n;
-  const struct vsph_params_spec *spec = vsph_laplacian_params(&n);
-  const struct vsph_args_section sec = {"Laplacian", spec, n};
-  const struct vsph_args_cmd c = {
-      CMD,
+  static const struct vsph_args_analysis a = {
+      "laplacian",
       "[--form visc01|visc02|visc03|visc04] [options]",
       "The Laplacian patch test of Zheng, Ma & Shao (2018), Sec. 4: a form\n"
       "applied to a field sampled on n^d particles over the unit square\n"
@@ -56,22 +67,15 @@ int vsph_cmd_laplacian_main(int argc, char **argv) {
       "Oger renormalised. Errors: eq. (21) (numerical denominator), the\n"
       "same with the exact denominator, and that times dx^2 (the scale of\n"
       "the paper's tables, docs/theory.md section 7).",
-      own,
-      1,
-      &sec,
-      1,
-      NULL};
-  struct vsph_params *prm = vsph_params_alloc();
-  if (!prm) return vsph_args_status(CMD, VSPH_ENOMEM);
-  const int rc = vsph_args_parse(&c, argc, argv, prm);
-  struct vsph_laplacian_props lp;
-  int st = rc < 0 ? vsph_laplacian_props_init(&lp, prm) : 0;
-  vsph_params_free(prm);
-  if (rc >= 0) return rc;
-  struct vsph_laplacian_result r;
-  if (!st) st = vsph_laplacian_patch(&lp, &r);
-  if (st) return vsph_args_status(CMD, st);
-  if (json) return vsph_args_json(CMD, vsph_json_laplacian(&lp, &r));
-  print_table(&lp, &r);
-  return vsph_args_finish(CMD, 0);
+      "JSON with keys form, field, kernel, dim, n, hdx, perturb, seed, eta, "
+      "n_eval, n_total, dx, h, err_literal, err_exact, err_paper, abs_max, "
+      "ref_max",
+      "Laplacian",
+      vsph_laplacian_params,
+      init,
+      compute,
+      json,
+      print_table};
+  struct work w;
+  return vsph_args_analysis_main(&a, &w, argc, argv);
 }

@@ -17,42 +17,86 @@
 #include "../solver/lattice.h"
 #include "args.h"
 
-static const char *const CMD = "scaling";
+/* the command's state: the surface scaling with the half-support
+ * theory, or (the quadratic field) the interior convergence with its
+ * log-log slopes against h/dx */
+struct work {
+  struct vsph_scaling_props sp;
+  struct vsph_scaling_result r;
+  double hF_th, hN_th; /* -2 C_F and -C_N: h F_ddd and h N_d, half support */
+  struct vsph_scaling_interior in;
+  size_t nin;           /* its levels */
+  double s_mgf, s_meaf; /* its slopes */
+};
 
-static int run_interior(const struct vsph_scaling_props *sp, int json) {
-  const double *ladder;
-  const size_t nl = vsph_scaling_hdx_ladder(&ladder);
-  const size_t n = sp->levels < nl ? sp->levels : nl;
-  struct vsph_scaling_interior r;
-  const int st = vsph_scaling_interior(sp, ladder, n, &r);
-  if (st) return vsph_args_status(CMD, st);
-  /* the log-log slope of the error against h/dx */
-  const double s_mgf = vsph_scaling_slope(r.hdx, r.mgf, n);
-  const double s_meaf = vsph_scaling_slope(r.hdx, r.meaf, n);
-  if (json) {
-    cJSON *o = cJSON_CreateObject();
-    cJSON_AddStringToObject(o, "kernel", sp->kernel->name);
-    cJSON_AddStringToObject(o, "field", "quadratic");
-    cJSON_AddItemToObject(o, "hdx", vsph_json_array(r.hdx, n));
-    cJSON_AddItemToObject(o, "mgf", vsph_json_array(r.mgf, n));
-    cJSON_AddItemToObject(o, "meaf", vsph_json_array(r.meaf, n));
-    vsph_json_number(o, "slope_mgf", s_mgf);
-    vsph_json_number(o, "slope_meaf", s_meaf);
-    return vsph_json_print(o) ? vsph_args_status(CMD, VSPH_EIO) : 0;
+static int init(void *w, struct vsph_params *prm) {
+  return vsph_scaling_props_init(&((struct work *)w)->sp, prm);
+}
+
+static int compute(void *w) {
+  struct work *k = w;
+  const struct vsph_scaling_props *sp = &k->sp;
+  if (sp->field.kind == VSPH_FIELDS_QUADRATIC) {
+    const double *ladder;
+    const size_t nl = vsph_scaling_hdx_ladder(&ladder);
+    k->nin = sp->levels < nl ? sp->levels : nl;
+    const int st = vsph_scaling_interior(sp, ladder, k->nin, &k->in);
+    if (st) return st;
+    /* the log-log slope of the error against h/dx */
+    k->s_mgf = vsph_scaling_slope(k->in.hdx, k->in.mgf, k->nin);
+    k->s_meaf = vsph_scaling_slope(k->in.hdx, k->in.meaf, k->nin);
+    return VSPH_OK;
   }
+  double C_F = NAN, C_N = NAN;
+  int st = vsph_scaling_surface(sp, &k->r);
+  gsl_integration_workspace *ws = gsl_integration_workspace_alloc(200);
+  if (!st)
+    st = ws ? vsph_moments_constants(sp->kernel, sp->field.dim, 1e-10, ws, &C_F,
+                                     &C_N)
+            : VSPH_ENOMEM;
+  gsl_integration_workspace_free(ws);
+  /* Half-support theory: F_ddd = -C_F (1+1+1-1)/h = -2 C_F/h, N_d = -C_N/h */
+  k->hF_th = -2 * C_F;
+  k->hN_th = -C_N;
+  return st;
+}
+
+static void *json(const void *w) {
+  const struct work *k = w;
+  if (k->sp.field.kind != VSPH_FIELDS_QUADRATIC)
+    return vsph_json_scaling(&k->sp, &k->r, k->hF_th, k->hN_th);
+  cJSON *o = cJSON_CreateObject();
+  if (!o) return NULL;
+  cJSON_AddStringToObject(o, "kernel", k->sp.kernel->name);
+  cJSON_AddStringToObject(o, "field", "quadratic");
+  cJSON_AddItemToObject(o, "hdx", vsph_json_array(k->in.hdx, k->nin));
+  cJSON_AddItemToObject(o, "mgf", vsph_json_array(k->in.mgf, k->nin));
+  cJSON_AddItemToObject(o, "meaf", vsph_json_array(k->in.meaf, k->nin));
+  vsph_json_number(o, "slope_mgf", k->s_mgf);
+  vsph_json_number(o, "slope_meaf", k->s_meaf);
+  return o;
+}
+
+static void print_interior(const struct work *k) {
   printf(
       "# vsph %s scaling: interior, kernel %s, quadratic field, relative "
       "error against the continuous limit\n%8s %14s %14s\n",
-      VSPH_VERSION, sp->kernel->name, "h/dx", "MGF", "MEAF");
-  for (size_t i = 0; i < n; i++)
-    printf("%8.4f %14.6e %14.6e\n", r.hdx[i], r.mgf[i], r.meaf[i]);
-  printf("# log-log slope against h/dx: MGF %.3f, MEAF %.3f\n", s_mgf, s_meaf);
-  return 0;
+      VSPH_VERSION, k->sp.kernel->name, "h/dx", "MGF", "MEAF");
+  for (size_t i = 0; i < k->nin; i++)
+    printf("%8.4f %14.6e %14.6e\n", k->in.hdx[i], k->in.mgf[i], k->in.meaf[i]);
+  printf("# log-log slope against h/dx: MGF %.3f, MEAF %.3f\n", k->s_mgf,
+         k->s_meaf);
 }
 
-static void print_table(const struct vsph_scaling_props *sp,
-                        const struct vsph_scaling_result *r, double hF_th,
-                        double hN_th) {
+static int print_table(const void *w) {
+  const struct work *k = w;
+  if (k->sp.field.kind == VSPH_FIELDS_QUADRATIC) {
+    print_interior(k);
+    return 0;
+  }
+  const struct vsph_scaling_props *sp = &k->sp;
+  const struct vsph_scaling_result *r = &k->r;
+  const double hF_th = k->hF_th, hN_th = k->hN_th;
   printf(
       "# vsph %s scaling: kernel %s, dim %d, field %s, %s lattice, h/dx = "
       "%g, mu = %g\n# half-support theory: h F_ddd = -2 C_F = %.6f, "
@@ -89,20 +133,12 @@ static void print_table(const struct vsph_scaling_props *sp,
       printf("  %s: %.4f", vsph_viscous_name(f), r->slope[f]);
   }
   printf("\n");
+  return 0;
 }
 
 int vsph_cmd_scaling_main(int argc, char **argv) {
-  int json = 0;
-  const struct vsph_args_spec own[] = {
-      {"--json", VSPH_ARGS_FLAG, &json, NULL,
-       "JSON with keys h, hF, hN, one per formulation (normal components), "
-       "*_tangential, *_magnitude, slope_*, rounding_*, hF_theory, "
-       "hN_theory; quadratic: hdx, mgf, meaf, slope_mgf, slope_meaf"}};
-  size_t n;
-  const struct vsph_params_spec *spec = vsph_scaling_params(&n);
-  const struct vsph_args_section sec = {"Scaling", spec, n};
-  const struct vsph_args_cmd c = {
-      CMD,
+  static const struct vsph_args_analysis a = {
+      "scaling",
       "[options]",
       "strain, rotation: at a surface particle (outward normal +e_d), with\n"
       "h/dx fixed and h halved from h0: h F_ddd, h N_d and each operator\n"
@@ -114,34 +150,15 @@ int vsph_cmd_scaling_main(int argc, char **argv) {
       "quadratic (2-D): interior relative errors of MGF against\n"
       "mu(lap u + 2 grad div u) and MEAF against mu lap u for the first\n"
       "`levels` h/dx of 1, 4/3, 2, 3, 4, 6.",
-      own,
-      1,
-      &sec,
-      1,
-      NULL};
-  struct vsph_params *prm = vsph_params_alloc();
-  if (!prm) return vsph_args_status(CMD, VSPH_ENOMEM);
-  const int rc = vsph_args_parse(&c, argc, argv, prm);
-  struct vsph_scaling_props sp;
-  int st = rc < 0 ? vsph_scaling_props_init(&sp, prm) : 0;
-  vsph_params_free(prm);
-  if (rc >= 0) return rc;
-  if (st) return vsph_args_status(CMD, st);
-  if (sp.field.kind == VSPH_FIELDS_QUADRATIC)
-    return vsph_args_finish(CMD, run_interior(&sp, json));
-  struct vsph_scaling_result r;
-  double C_F = NAN, C_N = NAN;
-  st = vsph_scaling_surface(&sp, &r);
-  gsl_integration_workspace *ws = gsl_integration_workspace_alloc(200);
-  if (!st)
-    st = ws ? vsph_moments_constants(sp.kernel, sp.field.dim, 1e-10, ws, &C_F,
-                                     &C_N)
-            : VSPH_ENOMEM;
-  gsl_integration_workspace_free(ws);
-  if (st) return vsph_args_status(CMD, st);
-  /* Half-support theory: F_ddd = -C_F (1+1+1-1)/h = -2 C_F/h, N_d = -C_N/h */
-  if (json)
-    return vsph_args_json(CMD, vsph_json_scaling(&sp, &r, -2 * C_F, -C_N));
-  print_table(&sp, &r, -2 * C_F, -C_N);
-  return vsph_args_finish(CMD, 0);
+      "JSON with keys h, hF, hN, one per formulation (normal components), "
+      "*_tangential, *_magnitude, slope_*, rounding_*, hF_theory, "
+      "hN_theory; quadratic: hdx, mgf, meaf, slope_mgf, slope_meaf",
+      "Scaling",
+      vsph_scaling_params,
+      init,
+      compute,
+      json,
+      print_table};
+  struct work w;
+  return vsph_args_analysis_main(&a, &w, argc, argv);
 }
