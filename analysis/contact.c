@@ -63,6 +63,18 @@ double vsph_contact_shear_dy(double x, double t, double nu, double U0,
   return U0 * t * s;
 }
 
+double vsph_contact_drag_ratio(const double *px, size_t n, double rho, double S,
+                               double U_drive, double *U, double *drift) {
+  if (n == 0) {
+    *U = *drift = (double)NAN;
+    return (double)NAN;
+  }
+  const size_t last = n - 1, tenth = last - last / 10;
+  *U = px[last] / (rho * S * S);
+  *drift = (px[last] - px[tenth]) / px[last];
+  return U_drive / *U;
+}
+
 double vsph_contact_bimaterial_u(double x, double t, double uL, double etaL,
                                  double rhoL, double uR, double etaR,
                                  double rhoR, double *ustar) {

@@ -52,6 +52,16 @@ double vsph_contact_bimaterial_fit(const double *tt, const double *x,
                                    double etaL, double rhoL, double etaR,
                                    double rhoR, double *rms_exact);
 
+/** @brief The drag of a square array of cylinders (period S, fluid
+ *  density @p rho) driven by eq. (39)'s force at the target superficial
+ *  velocity @p U_drive, from the run's momentum series px (n rows): the
+ *  reached velocity *U = px[n-1]/(rho S^2), its relative change over the
+ *  last tenth of the rows *drift = (px[n-1] - px[n-1-(n-1)/10])/px[n-1],
+ *  and the drag ratio (F/(eta U))_SPH over eq. (39)'s, U_drive / *U (the
+ *  force is eq. (39)'s at U_drive). NaN for n = 0. */
+double vsph_contact_drag_ratio(const double *px, size_t n, double rho, double S,
+                               double U_drive, double *U, double *drift);
+
 /** @brief Two semi-infinite materials (left x < 0, right x > 0) sliding at
  *  uL and uR with viscosities etaL, etaR and densities rhoL, rhoR: the
  *  contact velocity (Parshikov et al. eq. 27, the effusivity-weighted mean

@@ -72,6 +72,34 @@ double vsph_series_first_reach(const double *t, const double *e, size_t n,
   return (double)NAN;
 }
 
+double vsph_series_failure(const double *t, const double *e, size_t n,
+                           double scale, double from, double level,
+                           double t_stop, char *why) {
+  const double te =
+      e ? vsph_series_first_reach(t, e, n, scale, from, level) : (double)NAN;
+  if (!isnan(te)) {
+    *why = 'e';
+    return te;
+  }
+  if (!isnan(t_stop)) {
+    *why = 'p';
+    return t_stop * scale;
+  }
+  *why = ' ';
+  return (double)INFINITY;
+}
+
+double vsph_series_tail_mean(const double *t, const double *y, size_t n,
+                             double frac) {
+  if (n == 0) return (double)NAN;
+  const double t0 = frac * t[n - 1];
+  double s = 0.0;
+  size_t m = 0;
+  for (size_t k = 0; k < n; k++)
+    if (t[k] >= t0) s += y[k], m++;
+  return s / (double)m; /* m >= 1: the last row is in */
+}
+
 void vsph_series_plateau(const double *t, const double *E, const double *R,
                          const double *v, size_t n, double scale, double lo,
                          double hi, double *work, size_t cap, double *spread,

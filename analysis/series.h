@@ -65,6 +65,22 @@ double vsph_series_loss_ratio(double lost, double E0, double R0, double R);
 double vsph_series_first_reach(const double *t, const double *e, size_t n,
                                double scale, double from, double level);
 
+/** @brief A long run's failure time, Basa et al.'s way: the first scaled
+ *  time at or past @p from at which the error e reaches @p level
+ *  (vsph_series_first_reach; *why = 'e'), else the scaled time
+ *  @p t_stop * scale at which the solver stopped the run as unstable
+ *  (*why = 'p'; @p t_stop NaN for a run that finished), else infinity
+ *  (*why = ' '). A NULL @p e (no error column) never reaches. */
+double vsph_series_failure(const double *t, const double *e, size_t n,
+                           double scale, double from, double level,
+                           double t_stop, char *why);
+
+/** @brief The mean of y over the rows with t[k] >= @p frac t[n-1] (the
+ *  last 1 - frac of the run: a steady state's value with its row noise
+ *  averaged); NaN for n = 0. */
+double vsph_series_tail_mean(const double *t, const double *y, size_t n,
+                             double frac);
+
 /** @brief Over the rows whose scaled time scale t[k] lies in [lo, hi] and
  *  whose R[k] > 0: the spread (max - min)/((max + min)/2) of E[k]/R[k]
  *  into *spread, and the median of v[k] over the first @p cap of those

@@ -354,13 +354,8 @@ static double final(const struct vsph_jobs_run *r, const char *col) {
  * per cent of U with the particle noise. NaN for a run stopped early. */
 static double cavity_mean(const struct vsph_jobs_run *r, const char *col) {
   const double *y = vsph_csv_column(r->energy, col);
-  if (!r->ok || !y || r->nrow == 0) return (double)NAN;
-  const double t0 = 0.8 * r->t[r->nrow - 1];
-  double s = 0.0;
-  size_t n = 0;
-  for (size_t k = 0; k < r->nrow; k++)
-    if (r->t[k] >= t0) s += y[k], n++;
-  return n ? s / (double)n : (double)NAN;
+  if (!r->ok || !y) return (double)NAN;
+  return vsph_series_tail_mean(r->t, y, r->nrow, 0.8);
 }
 
 static void cell(FILE *md, double v, double scale) {
@@ -385,20 +380,9 @@ static void stop_cell(FILE *md, const struct vsph_jobs_run *r, double ts) {
  * infinity when neither comes by the end. *why: 'p' (stopped), 'e'
  * (eq. 38). */
 static double failure(const struct vsph_jobs_run *r, char *why) {
-  const double *e = vsph_csv_column(r->energy, "u_err_rel");
-  *why = ' ';
-  const double te =
-      e ? vsph_series_first_reach(r->t, e, r->nrow, TSTAR, 1.0, 0.12)
-        : (double)NAN;
-  if (!isnan(te)) {
-    *why = 'e';
-    return te;
-  }
-  if (!r->ok) {
-    *why = 'p';
-    return r->t_unstable * TSTAR;
-  }
-  return (double)INFINITY;
+  return vsph_series_failure(r->t, vsph_csv_column(r->energy, "u_err_rel"),
+                             r->nrow, TSTAR, 1.0, 0.12,
+                             r->ok ? (double)NAN : r->t_unstable, why);
 }
 
 /* A run's energy.csv as gnuplot sees it from the report folder (the runs

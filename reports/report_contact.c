@@ -414,12 +414,10 @@ static int cyl_load(struct vsph_report *R, struct cyl *cy) {
     struct vsph_jobs_run r;
     if ((st = vsph_report_runs_get(R, &rs[k], &r))) break;
     const double *px = vsph_csv_column(r.energy, "Px");
-    const size_t last = r.nrow - 1, tenth = last - last / 10;
-    const double S = sc.u.cyl.S, rho = sc.rho0;
-    cy->U[k] = px ? px[last] / (rho * S * S) : (double)NAN;
-    cy->drift[k] = px ? (px[last] - px[tenth]) / px[last] : (double)NAN;
     /* F/(eta U) against eq. (39)'s: the drive is eq. (39)'s at U_target */
-    cy->ratio[k] = sc.u.cyl.U / cy->U[k];
+    cy->ratio[k] =
+        vsph_contact_drag_ratio(px, px ? r.nrow : 0, sc.rho0, sc.u.cyl.S,
+                                sc.u.cyl.U, &cy->U[k], &cy->drift[k]);
     cy->ok[k] = r.ok;
     cy->wall[k] = r.wall_s;
     vsph_report_runs_free(&r);

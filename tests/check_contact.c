@@ -401,6 +401,26 @@ END_TEST
 /* The correcting tensor's model by hand: C = 0.1, rho c D0 = 2 Pa s,
  * f_lat = 0.9, eta = 1 Pa s, fit = 0.05: 0.2 + 0.9 (1 - zeta 0.1), so
  * 1.1 at zeta = 0 and 1.01 at zeta = 1 (rounding). */
+/* The drag ratio on a momentum series of an exponential approach,
+ * px(t) = rho S^2 U_inf (1 - exp(-t/tau)), t = 0, 0.1, ..., 3 tau (31
+ * rows, t/tau = k/10): the reached U = U_inf (1 - e^-3), its drift over the
+ * last tenth (rows 27 to 30) (e^-2.7 - e^-3)/(1 - e^-3), and the ratio
+ * U_drive/U; in closed form, to rounding (1e-14 relative). */
+START_TEST(test_drag_ratio) {
+  const double rho = 1260.0, S = 2e-4, Uinf = 3e-3, Ud = 2.5e-3;
+  double px[31];
+  for (int k = 0; k <= 30; k++) px[k] = rho * S * S * Uinf * -expm1(-0.1 * k);
+  double U, drift;
+  const double r = vsph_contact_drag_ratio(px, 31, rho, S, Ud, &U, &drift);
+  const double Uend = Uinf * -expm1(-3.0);
+  ck_assert_double_eq_tol(U, Uend, 1e-14 * Uend);
+  ck_assert_double_eq_tol(drift, (exp(-2.7) - exp(-3.0)) / -expm1(-3.0), 1e-13);
+  ck_assert_double_eq_tol(r, Ud / Uend, 1e-14 * Ud / Uend);
+  ck_assert(isnan(vsph_contact_drag_ratio(px, 0, rho, S, Ud, &U, &drift)) &&
+            isnan(U) && isnan(drift));
+}
+END_TEST
+
 START_TEST(test_eta_model) {
   ck_assert_double_eq_tol(
       vsph_contact_eta_model(0.1, 1000.0, 200.0, 1e-5, 0.9, 1.0, 0.0, 0.05),
@@ -416,6 +436,7 @@ Suite *vsph_contact_suite(void) {
   TCase *tc = tcase_create("contact");
   tcase_set_timeout(tc, 60);
   tcase_add_test(tc, test_eta_model);
+  tcase_add_test(tc, test_drag_ratio);
   tcase_add_test(tc, test_bimaterial_fit);
   tcase_add_test(tc, test_riemann_exact);
   tcase_add_test(tc, test_shear_closed_forms);

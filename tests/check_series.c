@@ -111,6 +111,41 @@ START_TEST(test_first_reach) {
 }
 END_TEST
 
+/* Basa's failure time on e = t/4 (scale 2): reaching 0.12 first (at the
+ * scaled 1.0, as test_first_reach) wins over a later stop; a stop with
+ * the level never reached gives the stop's scaled time, 2 x 0.7; neither
+ * gives infinity; a missing error column only the stop. */
+START_TEST(test_failure) {
+  double t[11], e[11];
+  for (int k = 0; k <= 10; k++) t[k] = 0.1 * k, e[k] = t[k] / 4.0;
+  char why = 'x';
+  ck_assert_double_eq(vsph_series_failure(t, e, 11, 2.0, 0.0, 0.12, 0.7, &why),
+                      t[5] * 2.0);
+  ck_assert_int_eq(why, 'e');
+  ck_assert_double_eq(vsph_series_failure(t, e, 11, 2.0, 0.0, 0.3, 0.7, &why),
+                      1.4);
+  ck_assert_int_eq(why, 'p');
+  ck_assert(isinf(vsph_series_failure(t, e, 11, 2.0, 0.0, 0.3, NAN, &why)));
+  ck_assert_int_eq(why, ' ');
+  ck_assert_double_eq(
+      vsph_series_failure(t, NULL, 11, 2.0, 0.0, 0.12, 0.7, &why), 1.4);
+  ck_assert_int_eq(why, 'p');
+}
+END_TEST
+
+/* The tail mean of y = t^2 on t = 0, 0.1, ..., 1 from 0.8 t_end: the
+ * rows 0.8, 0.9, 1.0, (0.64 + 0.81 + 1)/3 by hand (the row at 0.8 is in:
+ * 0.8 x 1.0 is 0.8 in doubles as 0.1 x 8 is); one row: itself; none: NaN. */
+START_TEST(test_tail_mean) {
+  double t[11], y[11];
+  for (int k = 0; k <= 10; k++) t[k] = k / 10.0, y[k] = t[k] * t[k];
+  ck_assert_double_eq_tol(vsph_series_tail_mean(t, y, 11, 0.8),
+                          (0.64 + 0.81 + 1.0) / 3.0, 1e-15);
+  ck_assert_double_eq(vsph_series_tail_mean(t, y, 1, 0.8), y[0]);
+  ck_assert(isnan(vsph_series_tail_mean(t, y, 0, 0.8)));
+}
+END_TEST
+
 /* A plateau by hand: E/R = 1, 1.02, 0.98 on the rows inside [lo, hi]
  * (R > 0), so the spread is 0.04/1.0; v there 5, 1, 3 (median 3); rows
  * outside and one with R = 0 left out. */
@@ -140,6 +175,8 @@ Suite *vsph_series_suite(void) {
   tcase_add_test(tc, test_integral_loss);
   tcase_add_test(tc, test_first_reach);
   tcase_add_test(tc, test_plateau);
+  tcase_add_test(tc, test_failure);
+  tcase_add_test(tc, test_tail_mean);
   suite_add_tcase(s, tc);
   return s;
 }
