@@ -125,3 +125,19 @@ void vsph_series_plateau(const double *t, const double *E, const double *R,
   *median = nv ? work[nv / 2] : (double)NAN;
   *spread = nv ? (qhi - qlo) / (0.5 * (qhi + qlo)) : (double)NAN;
 }
+
+int vsph_series_cfl_pick(const double *err, const int *ok, size_t n, int ncfl,
+                         double fraction) {
+  int best = 0;
+  for (int c = 1; c < ncfl; c++) {
+    int fine = 1;
+    for (size_t r = 0; r < n; r++) {
+      const double *e = err + r * (size_t)ncfl;
+      const int *s = ok + r * (size_t)ncfl;
+      if (s[c] && s[0]) fine &= fabs(e[c] - e[0]) <= fraction * e[0];
+    }
+    if (!fine) break; /* every smaller CFL must be fine too */
+    best = c;
+  }
+  return best;
+}

@@ -91,4 +91,12 @@ void vsph_series_plateau(const double *t, const double *E, const double *R,
                          double hi, double *work, size_t cap, double *spread,
                          double *median);
 
+/** @brief The time step's rule: of @p n rows of @p ncfl errors (@p err) and
+ *  stability flags (@p ok) at increasing CFL numbers, the first the
+ *  smallest CFL, the largest index c such that every row stable at c and
+ *  at the first has |err_c - err_0| <= @p fraction err_0, and so does every
+ *  smaller index (0 when none). */
+int vsph_series_cfl_pick(const double *err, const int *ok, size_t n, int ncfl,
+                         double fraction);
+
 #endif /* VSPH_ANALYSIS_SERIES_H */

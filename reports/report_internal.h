@@ -274,13 +274,6 @@ int vsph_report_speed_write(struct vsph_report *R);
 /* The speed part's runs: the ladders, and the ladder's two coarsest
  * resolutions again at CFL 0.5, 1.5 and 2. */
 int vsph_report_speed_plan(struct vsph_report *R);
-/* The time step's rule: of @p n rows of @p ncfl errors (@p err) and
- * stability flags (@p ok) at increasing CFL numbers, the first the
- * smallest CFL, the largest index c such that every row stable at c and
- * at the first has |err_c - err_0| <= @p fraction err_0, and so does every
- * smaller index (0 when none). */
-int vsph_report_speed_cfl_pick(const double *err, const int *ok, size_t n,
-                               int ncfl, double fraction);
 int vsph_report_stability_write(struct vsph_report *R);
 int vsph_report_claims_write(struct vsph_report *R);
 

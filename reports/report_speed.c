@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "../analysis/series.h"
 #include "../common/status.h"
 #include "../io/csv.h"
 #include "../io/plot.h"
@@ -59,22 +60,6 @@ static const char *const TAG_CFL[NCFL] = {"step0.5", NULL, "step1.5", "step2"};
  * resolution's own error, the time step's share all but gone). */
 #define CFL_FRACTION 0.1
 
-int vsph_report_speed_cfl_pick(const double *err, const int *ok, size_t n,
-                               int ncfl, double fraction) {
-  int best = 0;
-  for (int c = 1; c < ncfl; c++) {
-    int fine = 1;
-    for (size_t r = 0; r < n; r++) {
-      const double *e = err + r * (size_t)ncfl;
-      const int *s = ok + r * (size_t)ncfl;
-      if (s[c] && s[0]) fine &= fabs(e[c] - e[0]) <= fraction * e[0];
-    }
-    if (!fine) break; /* every smaller CFL must be fine too */
-    best = c;
-  }
-  return best;
-}
-
 static struct vsph_jobs_spec cfl_spec(const struct vsph_report *R, int sc,
                                       int f, int k, int c) {
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
@@ -119,10 +104,10 @@ static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
         vsph_report_runs_free(&r);
       }
   if (st) return st;
-  /* the largest CFL fine for accuracy (vsph_report_speed_cfl_pick); the runs
+  /* the largest CFL fine for accuracy (vsph_series_cfl_pick); the runs
    * stable at CFL 0.5 but not at a larger CFL are said apart */
-  const int best = vsph_report_speed_cfl_pick(&err[0][0][0], &ok[0][0][0],
-                                              NFORM * NRES, NCFL, CFL_FRACTION);
+  const int best = vsph_series_cfl_pick(&err[0][0][0], &ok[0][0][0],
+                                        NFORM * NRES, NCFL, CFL_FRACTION);
   *pick = CFLS[best];
   char unstable[512] = "";
   size_t ul = 0;

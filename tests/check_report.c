@@ -17,12 +17,6 @@
 #include "check_suites.h"
 
 /* Each verdict form the claims code writes falls in its class. */
-/* The time step's rule, worked by hand on rows of errors at CFL 0.5, 1,
- * 1.5, 2 (10 %): changes of 1 %, 5 %, 9 % all pass (index 3, CFL 2);
- * 11 % at CFL 1.5 stops it at CFL 1 even if CFL 2 were fine again; a row
- * unstable at CFL 1.5 and 2 (stable at 0.5) is left to the stability
- * verdict, not the accuracy rule; a row unstable at 0.5 counts nowhere;
- * a change of exactly the fraction passes (the bound is inclusive). */
 /* The scenes' names: one list, the ladders'. The quick and the FULL
  * ladder name the same scenes in the same order, and each is a scene the
  * solver knows. */
@@ -38,24 +32,6 @@ START_TEST(test_scene_names) {
     ck_assert_ptr_nonnull(vsph_scene_find(q));
   }
   ck_assert_ptr_null(vsph_report_scene_name(VSPH_REPORT_NSCENES));
-}
-END_TEST
-
-START_TEST(test_cfl_rule) {
-  const double e1[] = {1.0, 1.01, 1.05, 0.91};
-  const int s1[] = {1, 1, 1, 1};
-  ck_assert_int_eq(vsph_report_speed_cfl_pick(e1, s1, 1, 4, 0.1), 3);
-  const double e2[] = {1.0, 1.01, 1.05, 0.91, 2.0, 2.02, 2.22, 2.0};
-  const int s2[] = {1, 1, 1, 1, 1, 1, 1, 1};
-  ck_assert_int_eq(vsph_report_speed_cfl_pick(e2, s2, 2, 4, 0.1), 1);
-  const double e3[] = {1.0, 1.01, 5.0, 9.0, 2.0, 2.0, 2.1, 2.1};
-  const int s3[] = {1, 1, 0, 0, 1, 1, 1, 1};
-  ck_assert_int_eq(vsph_report_speed_cfl_pick(e3, s3, 2, 4, 0.1), 3);
-  const int s4[] = {0, 1, 1, 1, 1, 1, 1, 1};
-  const double e4[] = {1.0, 9.0, 9.0, 9.0, 2.0, 2.0, 2.0, 2.0};
-  ck_assert_int_eq(vsph_report_speed_cfl_pick(e4, s4, 2, 4, 0.1), 3);
-  const double e5[] = {1.0, 1.125, 1.25, 1.25}; /* exact in binary */
-  ck_assert_int_eq(vsph_report_speed_cfl_pick(e5, s1, 1, 4, 0.125), 1);
 }
 END_TEST
 
@@ -394,7 +370,6 @@ Suite *vsph_report_suite(void) {
   TCase *tc = tcase_create("frame");
   tcase_add_test(tc, test_verdict_classes);
   tcase_add_test(tc, test_scene_names);
-  tcase_add_test(tc, test_cfl_rule);
   tcase_add_test(tc, test_claims_tally);
   tcase_add_test(tc, test_claims_beside);
   tcase_add_test(tc, test_time_left);
