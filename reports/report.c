@@ -25,7 +25,8 @@
 #include "../io/json.h"
 #include "../io/plot.h"
 #include "../runs/folder.h"
-#include "report_internal.h"
+#include "report_claims.h"
+#include "report_parts.h"
 
 struct part {
   const char *name;
@@ -37,7 +38,7 @@ struct part {
 
 /* convergence and speed read the ladders of the scenes on */
 static int plan_ladders(struct vsph_report *R) {
-  return vsph_report_runs_plan_ladders(R, 0);
+  return vsph_report_runs_plan_ladders(&R->runs, 0);
 }
 
 static const struct part PARTS[] = {
@@ -154,7 +155,7 @@ static int write_baseline(struct vsph_report *R) {
   int st = VSPH_OK;
   for (size_t i = 0; i < vsph_report_runs_baseline_count() && !st; i++) {
     struct vsph_report_baseline b;
-    st = vsph_report_runs_baseline(R, i, &b);
+    st = vsph_report_runs_baseline(&R->runs, i, &b);
     if (!st)
       fprintf(f, "%s,%s,%zu,%g,%.10e,%.10e,%d\n", b.scene, b.visc, b.res,
               b.t_end, b.ek_final, b.diss0, b.ok);
@@ -225,11 +226,11 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
   struct vsph_text_vars *tv = &R->tv;
   vsph_text_set(tv, "version", "%s", VSPH_VERSION);
   vsph_text_set(tv, "date", "%s", stamp);
-  vsph_text_set(tv, "fidelity", "%s", R->full ? "full" : "quick");
+  vsph_text_set(tv, "fidelity", "%s", R->runs.full ? "full" : "quick");
   vsph_text_set(tv, "cores", "%d", omp_get_num_procs());
   vsph_text_set(tv, "threads", "%d", omp_get_max_threads());
   vsph_text_set(tv, "quick_note", "%s",
-                R->full ? "" : vsph_text_get("report.quick_note"));
+                R->runs.full ? "" : vsph_text_get("report.quick_note"));
   int st = vsph_report_say(R, "report.head");
   /* every part present, the claims first (the summary); a part's text
    * after its "<!-- appendix -->" mark goes to the appendices at the end */
@@ -286,7 +287,7 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
   /* the runs come before the parts, which only read them */
   if (!st)
     fprintf(md, "| the parts' runs (%zu of %zu made, by %s) | %.1f |\n",
-            R->made, R->jobs.n, R->made_by, R->runs_wall);
+            R->runs.made, R->runs.jobs.n, R->runs.made_by, R->runs.runs_wall);
   vsph_text_set(tv, "compiler", "%s", __VERSION__);
   vsph_sysinfo_load(R->load[1]);
   vsph_text_set(tv, "load_start", "%.2f %.2f %.2f", R->load[0][0],
@@ -314,7 +315,7 @@ static int write_run_json(const struct vsph_report *R, unsigned long want,
   cJSON_AddStringToObject(o, "commit",
                           vsph_commit_id[0] ? vsph_commit_id : "unknown");
   cJSON_AddStringToObject(o, "date", stamp);
-  cJSON_AddStringToObject(o, "fidelity", R->full ? "full" : "quick");
+  cJSON_AddStringToObject(o, "fidelity", R->runs.full ? "full" : "quick");
   cJSON_AddNumberToObject(o, "cores", omp_get_num_procs());
   cJSON_AddNumberToObject(o, "threads", omp_get_max_threads());
   cJSON_AddStringToObject(o, "compiler", __VERSION__);
@@ -329,10 +330,10 @@ static int write_run_json(const struct vsph_report *R, unsigned long want,
   cJSON_AddItemToObject(o, "wall_s", w);
   cJSON_AddNumberToObject(o, "wall_total_s", total);
   /* how its runs were made: the plan's size and the way */
-  cJSON_AddNumberToObject(o, "runs_planned", (double)R->jobs.n);
-  cJSON_AddNumberToObject(o, "runs_made", (double)R->made);
-  cJSON_AddStringToObject(o, "runs_by", R->made_by);
-  cJSON_AddNumberToObject(o, "runs_wall_s", R->runs_wall);
+  cJSON_AddNumberToObject(o, "runs_planned", (double)R->runs.jobs.n);
+  cJSON_AddNumberToObject(o, "runs_made", (double)R->runs.made);
+  cJSON_AddStringToObject(o, "runs_by", R->runs.made_by);
+  cJSON_AddNumberToObject(o, "runs_wall_s", R->runs.runs_wall);
   vsph_json_number(o, "cpu_total_s", vsph_sysinfo_cpu_s());
   vsph_json_load(o, R->load[0], R->load[1]);
   return vsph_json_write(o, R->dir, "run.json");
@@ -345,8 +346,8 @@ static int plan(struct vsph_report *R, unsigned long want) {
   for (size_t p = 0; p < NPARTS && !st; p++)
     if ((want >> p & 1) && PARTS[p].plan) st = PARTS[p].plan(R);
   const int scenes = vsph_report_part_find("scenes");
-  if (!st && (want >> scenes & 1) && !R->scenes)
-    st = vsph_report_runs_plan_baseline(R);
+  if (!st && (want >> scenes & 1) && !R->runs.scenes)
+    st = vsph_report_runs_plan_baseline(&R->runs);
   return st;
 }
 
@@ -366,19 +367,19 @@ static int lock_dir(const char *dir) {
 static int run_missing(struct vsph_report *R,
                        const struct vsph_report_props *rp) {
   if (rp->mode == VSPH_REPORT_POOL)
-    return vsph_jobs_pool(&R->jobs, rp->exe, rp->jobs, rp->threads);
-  return vsph_jobs_local(&R->jobs, omp_get_max_threads());
+    return vsph_jobs_pool(&R->runs.jobs, rp->exe, rp->jobs, rp->threads);
+  return vsph_jobs_local(&R->runs.jobs, omp_get_max_threads());
 }
 
 /* The assembly alone: every run must be there (checked before anything
  * is written). */
 static int all_cached(const struct vsph_report *R) {
   size_t m = 0, first = 0;
-  for (size_t k = 0; k < R->jobs.n; k++) /* as the plan found them */
-    if (!R->jobs.job[k].cached && !m++) first = k;
+  for (size_t k = 0; k < R->runs.jobs.n; k++) /* as the plan found them */
+    if (!R->runs.jobs.job[k].cached && !m++) first = k;
   if (!m) return VSPH_OK;
   /* a seal broken by a file: name it */
-  const struct vsph_jobs_job *j = &R->jobs.job[first];
+  const struct vsph_jobs_job *j = &R->runs.jobs.job[first];
   char why[700];
   if (vsph_folder_verify(j->dir,
                          j->kind == VSPH_JOBS_RUN ? &vsph_folder_scene_run
@@ -388,26 +389,26 @@ static int all_cached(const struct vsph_report *R) {
               "%zu of the %zu runs are missing, unfinished or damaged (the "
               "first: %s): rerun them (vsph report --jobs N or --slurm); only "
               "they run",
-              m, R->jobs.n, why);
+              m, R->runs.jobs.n, why);
   VSPH_FAIL(VSPH_EIO,
             "%zu of the %zu runs are missing or unfinished (the first: %s; "
             "a failed or cancelled task?): submit again (vsph report "
             "--slurm) or run them (vsph report --jobs N); only they run",
-            m, R->jobs.n, j->dir);
+            m, R->runs.jobs.n, j->dir);
 }
 
 int vsph_report_plan_jobs(const char *dir, int full, struct vsph_jobs *jobs) {
   struct vsph_report *R = calloc(1, sizeof *R);
   if (!R) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the report");
-  R->dir = R->jobs.dir = dir;
-  R->full = R->jobs.full = full;
-  R->jobs.planned = 1;
+  R->dir = R->runs.jobs.dir = dir;
+  R->runs.full = R->runs.jobs.full = full;
+  R->runs.jobs.planned = 1;
   const unsigned long all = (1ul << NPARTS) - 1;
   const int st = plan(R, all);
   if (st)
-    vsph_jobs_plan_free(&R->jobs);
+    vsph_jobs_plan_free(&R->runs.jobs);
   else
-    *jobs = R->jobs;
+    *jobs = R->runs.jobs;
   free(R);
   return st;
 }
@@ -446,17 +447,17 @@ void vsph_report_plan_judge_free(struct vsph_archive_judge *jd) {
 static int mark_archived(struct vsph_report *R,
                          const struct vsph_report_props *rp) {
   struct vsph_archive_judge jd;
-  int st = vsph_report_plan_judge(&R->jobs, rp->judge, &jd);
+  int st = vsph_report_plan_judge(&R->runs.jobs, rp->judge, &jd);
   if (st) return st;
-  int *stands = calloc(R->jobs.n + 1, sizeof *stands);
+  int *stands = calloc(R->runs.jobs.n + 1, sizeof *stands);
   if (!stands) {
     vsph_report_plan_judge_free(&jd);
     VSPH_FAIL(VSPH_ENOMEM, "cannot list the plan");
   }
   st = vsph_archive_standing(rp->skip_archive, &jd, stands);
-  for (size_t k = 0; !st && k < R->jobs.n; k++)
-    R->jobs.job[k].archived =
-        stands[k] == VSPH_ARCHIVE_STANDS && !R->jobs.job[k].cached;
+  for (size_t k = 0; !st && k < R->runs.jobs.n; k++)
+    R->runs.jobs.job[k].archived =
+        stands[k] == VSPH_ARCHIVE_STANDS && !R->runs.jobs.job[k].cached;
   free(stands);
   vsph_report_plan_judge_free(&jd);
   return st;
@@ -470,9 +471,9 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   struct vsph_report *R = calloc(1, sizeof *R);
   if (!R) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the report");
   R->dir = rp->dir;
-  R->full = rp->full;
-  R->scenes = rp->scenes;
-  R->stop = rp->stop;
+  R->runs.full = rp->full;
+  R->runs.scenes = rp->scenes;
+  R->runs.stop = rp->stop;
   R->beside = rp->beside;
   R->judge = rp->judge;
   const double t_all = omp_get_wtime();
@@ -483,17 +484,17 @@ int vsph_report_write(const struct vsph_report_props *rp) {
     st = vsph_jobs_slurm_dir(rp->dir, absdir, sizeof absdir);
     R->dir = absdir;
   }
-  R->jobs.dir = R->dir;
-  R->jobs.full = R->full;
-  R->jobs.stop = R->stop;
-  R->jobs.planned = 1;
-  R->jobs.budget_s = rp->budget_s;
+  R->runs.jobs.dir = R->dir;
+  R->runs.jobs.full = R->runs.full;
+  R->runs.jobs.stop = R->runs.stop;
+  R->runs.jobs.planned = 1;
+  R->runs.jobs.budget_s = rp->budget_s;
   if (!st) st = plan(R, want);
   if (!st && rp->skip_archive) st = mark_archived(R, rp);
   if (!st && rp->mode == VSPH_REPORT_PLAN) { /* writes nothing */
-    st = vsph_jobs_plan_print(&R->jobs, rp->exe ? rp->exe : "vsph",
+    st = vsph_jobs_plan_print(&R->runs.jobs, rp->exe ? rp->exe : "vsph",
                               rp->plan_out);
-    vsph_jobs_plan_free(&R->jobs);
+    vsph_jobs_plan_free(&R->runs.jobs);
     free(R);
     return st;
   }
@@ -501,8 +502,8 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   if (!st && rp->mode == VSPH_REPORT_SLURM) {
     const struct vsph_jobs_slurm s = {rp->exe, rp->partition, rp->time,
                                       rp->threads, rp->only};
-    st = vsph_jobs_slurm(&R->jobs, &s);
-    vsph_jobs_plan_free(&R->jobs);
+    st = vsph_jobs_slurm(&R->runs.jobs, &s);
+    vsph_jobs_plan_free(&R->runs.jobs);
     free(R);
     return st;
   }
@@ -516,32 +517,34 @@ int vsph_report_write(const struct vsph_report_props *rp) {
                        seal_path, strerror(errno));
     st = VSPH_EIO;
   }
-  R->made_by = rp->mode == VSPH_REPORT_POOL       ? "child processes"
-               : rp->mode == VSPH_REPORT_ASSEMBLE ? "nothing: assembly only"
-                                                  : "this process";
+  R->runs.made_by = rp->mode == VSPH_REPORT_POOL ? "child processes"
+                    : rp->mode == VSPH_REPORT_ASSEMBLE
+                        ? "nothing: assembly only"
+                        : "this process";
   if (!st && rp->mode != VSPH_REPORT_ASSEMBLE) {
-    for (size_t k = 0; k < R->jobs.n; k++) R->made += !R->jobs.job[k].cached;
+    for (size_t k = 0; k < R->runs.jobs.n; k++)
+      R->runs.made += !R->runs.jobs.job[k].cached;
     const double t_runs = omp_get_wtime();
     if (rp->writing) *rp->writing = 1; /* runs stop after a checkpoint */
     st = run_missing(R, rp);
     if (rp->writing) *rp->writing = 0; /* parts: a stop ends at once */
-    R->runs_wall = omp_get_wtime() - t_runs;
+    R->runs.runs_wall = omp_get_wtime() - t_runs;
   }
   if (rp->budget_s > 0.0) { /* runs only: say what is left */
     size_t left = 0, kept = 0;
-    for (size_t k = 0; k < R->jobs.n; k++) {
-      kept += (size_t)R->jobs.job[k].archived;
-      left += !R->jobs.job[k].cached && !R->jobs.job[k].archived;
+    for (size_t k = 0; k < R->runs.jobs.n; k++) {
+      kept += (size_t)R->runs.jobs.job[k].archived;
+      left += !R->runs.jobs.job[k].cached && !R->runs.jobs.job[k].archived;
     }
     if (st == VSPH_OK || st == VSPH_EINTR)
       fprintf(stderr,
               "vsph report: %zu of the %zu runs are cached, %zu stand in "
               "%s (not run again), %zu missing or unfinished (%.0f s of "
               "runs); not assembled\n",
-              R->jobs.n - left - kept, R->jobs.n, kept,
+              R->runs.jobs.n - left - kept, R->runs.jobs.n, kept,
               rp->skip_archive ? rp->skip_archive : "no archive", left,
-              R->runs_wall);
-    vsph_jobs_plan_free(&R->jobs);
+              R->runs.runs_wall);
+    vsph_jobs_plan_free(&R->runs.jobs);
     free(R);
     return st;
   }
@@ -555,13 +558,13 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   int cached[NPARTS] = {0};
   char key[128];
   snprintf(key, sizeof key, "vsph %s %s, %s\n", VSPH_VERSION,
-           vsph_source_hash_id, R->full ? "full" : "quick");
+           vsph_source_hash_id, R->runs.full ? "full" : "quick");
   for (size_t p = 0; p < NPARTS && !st; p++)
     if (want >> p & 1)
       st = run_part(R, p, parts_dir, key, &cached[p], &wall[p]);
   /* the baseline comes with the scenes part (its coarsest runs) */
   const int scenes = vsph_report_part_find("scenes");
-  if (!st && (want >> scenes & 1) && !R->scenes) st = write_baseline(R);
+  if (!st && (want >> scenes & 1) && !R->runs.scenes) st = write_baseline(R);
   const time_t now = time(NULL);
   char stamp[64];
   strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
@@ -574,7 +577,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
     char seal[256];
     size_t len = (size_t)snprintf(
         seal, sizeof seal, "vsph %s %s\nreport %s:", VSPH_VERSION,
-        vsph_source_hash_id, R->full ? "full" : "quick");
+        vsph_source_hash_id, R->runs.full ? "full" : "quick");
     for (size_t p = 0; p < NPARTS && len < sizeof seal - 40; p++)
       if (want >> p & 1)
         len += (size_t)snprintf(seal + len, sizeof seal - len, " %s",
@@ -589,7 +592,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   gsl_integration_workspace_free(R->wo);
   gsl_integration_workspace_free(R->wi);
   free(R->claims);
-  vsph_jobs_plan_free(&R->jobs);
+  vsph_jobs_plan_free(&R->runs.jobs);
   free(R);
   return st;
 }

@@ -13,7 +13,7 @@
 #include "../io/csv.h"
 #include "../io/plot.h"
 #include "../solver/viscous.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 /* Poiseuille runs: Basa et al.'s set-up (Re = 0.5, cubic spline,
  * dx/h = 0.637, linear extrapolation) to t* = 4.9 (0.5 s). */
@@ -146,8 +146,8 @@ static const int MAP_QUICK[NRE_QUICK] = {0, 2, 4};
 /* the Re columns of this fidelity: *n of them, their MAP_RE indices */
 static const int *map_cols(const struct vsph_report *R, int *n) {
   static const int all[NRE] = {0, 1, 2, 3, 4};
-  *n = R->full ? NRE : NRE_QUICK;
-  return R->full ? all : MAP_QUICK;
+  *n = R->runs.full ? NRE : NRE_QUICK;
+  return R->runs.full ? all : MAP_QUICK;
 }
 static const double TSTAR_END = 27.66; /* ln(32/(pi^3 1e-12)) */
 static const char *const MAP_TAG[NRE] = {"mapRe0.5", "mapRe2", "mapRe5",
@@ -242,8 +242,9 @@ static void specs(const struct vsph_report *R, struct vsph_jobs_spec *s,
     s[k++] = (struct vsph_jobs_spec){"poiseuille", EOS_VISC[f], res_p,
                                      0.5,          EOS_XTRA[f], EOS_TAG[f]};
   for (int f = 0; f < NCOU; f++)
-    s[k++] = (struct vsph_jobs_spec){"couette", vsph_viscous_name(f), res_c,
-                                     1.0,       COU_XTRA[R->full],    "morris"};
+    s[k++] =
+        (struct vsph_jobs_spec){"couette", vsph_viscous_name(f),   res_c,
+                                1.0,       COU_XTRA[R->runs.full], "morris"};
   for (int x = 0; x < NXI; x++)
     s[k++] = (struct vsph_jobs_spec){"poiseuille", "cleary",   res_p,
                                      0.5,          XI_XTRA[x], XI_TAG[x]};
@@ -261,15 +262,15 @@ static void specs(const struct vsph_report *R, struct vsph_jobs_spec *s,
                                        TSTAR_END / TSTAR,
                                        MAP_XTRA[f == MAP_D][col[q]],
                                        MAP_TAG[col[q]]};
-  for (int q = 0; q < (R->full ? NCAV : CAV_QUICK); q++)
+  for (int q = 0; q < (R->runs.full ? NCAV : CAV_QUICK); q++)
     s[k++] = (struct vsph_jobs_spec){"cavity",     CAV[q].visc, CAV[q].res,
                                      CAV[q].t_end, CAV[q].xtra, CAV[q].tag};
   *n = k; /* k <= NSPECS: the loops above are NSPECS at most */
 }
 
 /* Poiseuille (Basa et al. 20 x 20, FULL twice), Couette, the map */
-#define RES_P(R) ((R)->full ? 40u : 20u)
-#define RES_C(R) ((R)->full ? 40u : 20u)
+#define RES_P(R) ((R)->runs.full ? 40u : 20u)
+#define RES_C(R) ((R)->runs.full ? 40u : 20u)
 #define RES_M 20u
 
 int vsph_report_channel_plan(struct vsph_report *R) {
@@ -278,7 +279,7 @@ int vsph_report_channel_plan(struct vsph_report *R) {
   specs(R, s, &n, RES_P(R), RES_C(R), RES_M);
   int st = VSPH_OK;
   for (size_t k = 0; k < n && !st; k++)
-    st = vsph_jobs_plan_run(&R->jobs, &s[k]);
+    st = vsph_jobs_plan_run(&R->runs.jobs, &s[k]);
   return st;
 }
 
@@ -293,26 +294,26 @@ static int load(struct vsph_report *R, struct chan *c) {
   int st = VSPH_OK;
   size_t k = 0;
   for (int f = 0; f < NPOIS && !st; f++)
-    st = vsph_report_runs_get(R, &s[k++], &c->pois[f]);
+    st = vsph_report_runs_get(&R->runs, &s[k++], &c->pois[f]);
   for (int f = 0; f < 3 && !st; f++)
     for (int w = 0; w < 2 && !st; w++)
-      st = vsph_report_runs_get(R, &s[k++], &c->wall[f][w]);
+      st = vsph_report_runs_get(&R->runs, &s[k++], &c->wall[f][w]);
   for (int f = 0; f < NEOS && !st; f++)
-    st = vsph_report_runs_get(R, &s[k++], &c->eos[f]);
+    st = vsph_report_runs_get(&R->runs, &s[k++], &c->eos[f]);
   for (int f = 0; f < NCOU && !st; f++)
-    st = vsph_report_runs_get(R, &s[k++], &c->cou[f]);
+    st = vsph_report_runs_get(&R->runs, &s[k++], &c->cou[f]);
   for (int x = 0; x < NXI && !st; x++)
-    st = vsph_report_runs_get(R, &s[k++], &c->xi[x]);
+    st = vsph_report_runs_get(&R->runs, &s[k++], &c->xi[x]);
   for (int f = 0; f < NCORR && !st; f++)
     for (int q = 0; q < 2 && !st; q++)
-      st = vsph_report_runs_get(R, &s[k++], &c->corr[f][q]);
+      st = vsph_report_runs_get(&R->runs, &s[k++], &c->corr[f][q]);
   int nre;
   const int *col = map_cols(R, &nre);
   for (int f = 0; f < NMAP && !st; f++)
     for (int q = 0; q < nre && !st; q++)
-      st = vsph_report_runs_get(R, &s[k++], &c->map[f][col[q]]);
-  for (int q = 0; q < (R->full ? NCAV : CAV_QUICK) && !st; q++)
-    st = vsph_report_runs_get(R, &s[k++], &c->cav[q]);
+      st = vsph_report_runs_get(&R->runs, &s[k++], &c->map[f][col[q]]);
+  for (int q = 0; q < (R->runs.full ? NCAV : CAV_QUICK) && !st; q++)
+    st = vsph_report_runs_get(&R->runs, &s[k++], &c->cav[q]);
   return st;
 }
 
@@ -457,7 +458,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
   vsph_plot_init(&pl, R->dir, "fig_cavity_ghia", title, "t (s)",
                  "RMS distance / U (dimensionless)");
   pl.logy = 1;
-  for (int q = 0; q < (R->full ? NCAV : CAV_QUICK) && !st; q++) {
+  for (int q = 0; q < (R->runs.full ? NCAV : CAV_QUICK) && !st; q++) {
     if (!c->cav[q].ok) continue; /* the run without TVF: a few rows */
     char file[600], style[96], label[64];
     data_file(file, sizeof file, &c->cav[q]);
@@ -575,9 +576,9 @@ int vsph_report_channel_write(struct vsph_report *R) {
   if ((st = vsph_report_say(R, "channel.map_reading"))) goto done;
   vsph_text_set(&R->tv, "resc", "%zu", c.res_c);
   vsph_text_set(&R->tv, "hdxc", "%s",
-                R->full ? "h = 2.2 dx (Zheng et al.'s)"
-                        : "dx/h = 0.637 (Basa et al.'s; FULL: 40 rows, "
-                          "h = 2.2 dx as Zheng et al.)");
+                R->runs.full ? "h = 2.2 dx (Zheng et al.'s)"
+                             : "dx/h = 0.637 (Basa et al.'s; FULL: 40 rows, "
+                               "h = 2.2 dx as Zheng et al.)");
   if ((st = vsph_report_say(R, "channel.couette_head"))) goto done;
   static const double TC[4] = {0.0225, 0.1125, 0.225, 1.0};
   for (int f = 0; f < NCOU; f++) {
@@ -590,7 +591,7 @@ int vsph_report_channel_write(struct vsph_report *R) {
   fprintf(R->md, "\n");
   if ((st = vsph_report_say(R, "channel.couette_reading"))) goto done;
   if ((st = vsph_report_say(R, "channel.cavity_head"))) goto done;
-  for (int q = 0; q < (R->full ? NCAV : CAV_QUICK); q++) {
+  for (int q = 0; q < (R->runs.full ? NCAV : CAV_QUICK); q++) {
     const struct vsph_jobs_run *r = &c.cav[q];
     fprintf(R->md, "| %d | %s | %s | %zu |", CAV[q].Re,
             vsph_viscous_label(vsph_viscous_find(CAV[q].visc)),

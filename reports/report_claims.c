@@ -2,6 +2,8 @@
  * a verdict. The analysis claims (THEORY 2-4) are recomputed here (they are
  * cheap), so the table is complete even when those parts come from the
  * cache; the scene claims read the runs of sections 5-8. */
+#include "report_claims.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,7 +17,7 @@
 #include "../kernels/kernel.h"
 #include "../solver/scene.h"
 #include "report.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 enum {
@@ -139,29 +141,30 @@ struct finest {
 
 static int load_finest(struct vsph_report *R, struct finest *fi) {
   struct vsph_report_richardson rr;
-  int st = vsph_report_runs_richardson(R, &rr);
+  int st = vsph_report_runs_richardson(&R->runs, &rr);
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     for (int f = 0; f < NFORM && !st; f++) {
-      const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+      const struct vsph_report_ladderdef *L =
+          vsph_report_runs_ladder(&R->runs, sc, 0);
       struct vsph_jobs_spec rs = {L->scene,
                                   vsph_viscous_name(f),
                                   L->res[VSPH_REPORT_LADDER - 1],
                                   L->t_end,
                                   NULL,
                                   NULL};
-      st = vsph_report_runs_get(R, &rs, &fi->run[sc][f]);
+      st = vsph_report_runs_get(&R->runs, &rs, &fi->run[sc][f]);
       if (!st)
         fi->err[sc][f] =
             vsph_report_runs_error(&fi->run[sc][f], sc == 1 ? &rr : NULL);
     }
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
-    st = vsph_report_runs_ladder_figures(R, sc, &fi->lr[sc]);
+    st = vsph_report_runs_ladder_figures(&R->runs, sc, &fi->lr[sc]);
   return st;
 }
 
 static int square_claims(struct vsph_report *R, const struct finest *fi) {
   const struct vsph_jobs_run *run = fi->run[1];
-  const size_t rs = vsph_report_runs_ladder(R, 1, 0)->res[2];
+  const size_t rs = vsph_report_runs_ladder(&R->runs, 1, 0)->res[2];
   char ours[320];
   /* P/P_exact = 1 - d, with d = (P - P_exact)/|P_exact| and P_exact < 0 */
   const double d_m = vsph_report_runs_diss0(&run[MGF]);
@@ -182,12 +185,13 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
              "differs"));
   const struct vsph_report_ladder *lr = &fi->lr[1];
   struct vsph_report_richardson rr;
-  if (!st) st = vsph_report_runs_richardson(R, &rr);
+  if (!st) st = vsph_report_runs_richardson(&R->runs, &rr);
   if (st) return st;
   int pv_unstable = 0;
   double tpv = INFINITY, on_lo = INFINITY, on_hi = -INFINITY;
   double on_fine = (double)NAN;
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 1, 0);
+  const struct vsph_report_ladderdef *L =
+      vsph_report_runs_ladder(&R->runs, 1, 0);
   for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
     if (!lr->ok[PVWF][k]) {
       pv_unstable++;
@@ -196,7 +200,7 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
     struct vsph_jobs_spec spec = {L->scene, "pvwf", L->res[k],
                                   L->t_end, NULL,   NULL};
     struct vsph_jobs_run r;
-    if ((st = vsph_report_runs_get(R, &spec, &r))) break;
+    if ((st = vsph_report_runs_get(&R->runs, &spec, &r))) break;
     const double on = vsph_report_runs_onset(&r, &rr, VSPH_REPORT_ONSET);
     vsph_report_runs_free(&r);
     if (isfinite(on)) {
@@ -266,7 +270,8 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
 
 static int vortex_claims(struct vsph_report *R, const struct finest *fi) {
   const double *err = fi->err[0];
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 0, 0);
+  const struct vsph_report_ladderdef *L =
+      vsph_report_runs_ladder(&R->runs, 0, 0);
   char ours[320];
   snprintf(ours, sizeof ours,
            "max decay error on rings: MGF %.2e, PVWF %.2e, MEAF %.2e (R/dx "
@@ -292,7 +297,7 @@ static int vortex_claims(struct vsph_report *R, const struct finest *fi) {
                "not reproduced at this resolution"));
   /* MGF's initial dissipation error on both disc layouts (section 6) */
   struct vsph_report_layouts ly;
-  if (!st) st = vsph_report_runs_layouts(R, &ly);
+  if (!st) st = vsph_report_runs_layouts(&R->runs, &ly);
   if (!st) {
     double d0[2][VSPH_REPORT_LADDER], a0[2][VSPH_REPORT_LADDER];
     const double *dx = ly.dx;
@@ -337,7 +342,8 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
            vsph_scaling_slope(lr->dx[MGF], lr->err[MGF], VSPH_REPORT_LADDER),
            vsph_scaling_slope(lr->dx[MEAF], lr->err[MEAF], VSPH_REPORT_LADDER),
            vsph_scaling_slope(lr->dx[PVWF], lr->err[PVWF], VSPH_REPORT_LADDER));
-  const struct vsph_report_ladderdef *WL = vsph_report_runs_ladder(R, 2, 0);
+  const struct vsph_report_ladderdef *WL =
+      vsph_report_runs_ladder(&R->runs, 2, 0);
   double omin = INFINITY;
   for (int f = 0; f < NFORM; f++)
     omin = fmin(omin,
@@ -348,7 +354,7 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
                        : "not reproduced for every formulation (an order "
                          "below 0.8)",
            WL->res[0], WL->res[2], WL->t_end,
-           R->full ? "" : "; the paper's H/dx = 240 needs FULL=1");
+           R->runs.full ? "" : "; the paper's H/dx = 240 needs FULL=1");
   int st = vsph_report_claim(
       R, "Standing wave: all formulations converge linearly (VI C)",
       "converged at H/dx = 240", ours, verdict0);
@@ -367,7 +373,7 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
                   : (double)NAN;
     if (f == MGF) tpk = w[f].t[pk];
   }
-  const size_t res = vsph_report_runs_ladder(R, 2, 0)->res[2];
+  const size_t res = vsph_report_runs_ladder(&R->runs, 2, 0)->res[2];
   snprintf(ours, sizeof ours,
            "energy lost by t = %g s over Lighthill's (H/dx = %zu): PVWF "
            "%.3f, MGF %.3f, MEAF %.3f (1 = exact, > 1 too much damping); "
@@ -476,7 +482,8 @@ int vsph_report_claims_beside(struct vsph_report *R,
   if (!st && !m) st = VSPH_ENOMEM;
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     for (int f = 0; f < NFORM && !st; f++) {
-      const struct vsph_report_ladderdef *Q = vsph_report_runs_ladder(R, sc, 1);
+      const struct vsph_report_ladderdef *Q =
+          vsph_report_runs_ladder(&R->runs, sc, 1);
       const struct vsph_report_ladderdef *F = vsph_report_runs_full_ladder(sc);
       const struct vsph_scene_type *t = vsph_scene_find(F->scene);
       const char *dx = t ? t->length_name : "res";
@@ -543,7 +550,7 @@ int vsph_report_claims_beside(struct vsph_report *R,
 
 int vsph_report_claims_plan(struct vsph_report *R) {
   /* every scene, whatever the filter, and the runs of sections 10, 11 */
-  int st = vsph_report_runs_plan_ladders(R, 1);
+  int st = vsph_report_runs_plan_ladders(&R->runs, 1);
   if (!st) st = vsph_report_channel_plan(R);
   if (!st) st = vsph_report_contact_plan(R);
   return st;
@@ -573,7 +580,7 @@ int vsph_report_claims_write(struct vsph_report *R) {
   R->claim_see = NULL;
   if (!st) {
     vsph_text_set(&R->tv, "quick_note", "%s",
-                  R->full ? "" : vsph_text_get("claims.quick_note"));
+                  R->runs.full ? "" : vsph_text_get("claims.quick_note"));
     st = vsph_report_say(R, "claims.head");
   }
   if (!st) st = vsph_report_claims_table(R);

@@ -22,7 +22,7 @@
 #include "../runs/sheartest.h"
 #include "../solver/materials.h"
 #include "../solver/scene.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 /* One shear-test measurement. Lengths in m; Ly = Lz (the flow does not
  * depend on y or z, and the lattice is periodic there: any depth above
@@ -142,8 +142,8 @@ static int cjob(const struct vsph_report *R, const struct cspec *c,
                 struct vsph_jobs_job *j) {
   char set[16][96];
   const size_t n = settings(c, set, 16);
-  return vsph_jobs_shear(&R->jobs, c->tag, (const char(*)[96])set, n, c->nprof,
-                         j);
+  return vsph_jobs_shear(&R->runs.jobs, c->tag, (const char(*)[96])set, n,
+                         c->nprof, j);
 }
 
 /* All measurements, read back from the cache. */
@@ -153,15 +153,16 @@ struct cres {
 };
 
 static int cload(struct vsph_report *R, struct cres *cr) {
-  cr->nc = R->full ? NC : C_QUICK;
+  cr->nc = R->runs.full ? NC : C_QUICK;
   int st = VSPH_OK;
   for (int k = 0; k < cr->nc && !st; k++) {
     struct vsph_jobs_job j;
     st = cjob(R, &CS[k], &j);
-    if (!st) st = vsph_jobs_ready(&R->jobs, &j);
+    if (!st) st = vsph_jobs_ready(&R->runs.jobs, &j);
     char path[700];
     if (!st)
-      st = vsph_jobs_file(&R->jobs, j.dir, "summary.csv", path, sizeof path);
+      st = vsph_jobs_file(&R->runs.jobs, j.dir, "summary.csv", path,
+                          sizeof path);
     vsph_jobs_free(&j);
     if (!st && vsph_sheartest_csv_load(path, &cr->r[k]))
       VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
@@ -365,7 +366,7 @@ static int cyl_specs(const struct vsph_report *R, struct cyl_sets *cs,
   const struct vsph_kernel_type *w = vsph_kernel_find("wendland2");
   *k2 = vsph_contact_lattice_coef(w, 2, 0.5);
   snprintf(cs->eta_num, sizeof cs->eta_num, "Solver:eta_num=%.6f", *k2);
-  const int n = R->full ? NCY : CY_QUICK;
+  const int n = R->runs.full ? NCY : CY_QUICK;
   for (int k = 0; k < n; k++) {
     size_t q = 0;
     for (; CY[k].set[q]; q++) cs->set[k][q] = CY[k].set[q];
@@ -379,19 +380,20 @@ static int cyl_specs(const struct vsph_report *R, struct cyl_sets *cs,
 
 int vsph_report_contact_plan(struct vsph_report *R) {
   int st = VSPH_OK;
-  for (int k = 0; k < (R->full ? NC : C_QUICK) && !st; k++) {
+  for (int k = 0; k < (R->runs.full ? NC : C_QUICK) && !st; k++) {
     struct vsph_jobs_job j;
     if ((st = cjob(R, &CS[k], &j))) {
       vsph_jobs_free(&j);
       break;
     }
-    st = vsph_jobs_plan_add(&R->jobs, &j);
+    st = vsph_jobs_plan_add(&R->runs.jobs, &j);
   }
   struct vsph_jobs_spec rs[NCY];
   double k2;
   struct cyl_sets cs;
   const int n = cyl_specs(R, &cs, rs, &k2);
-  for (int k = 0; k < n && !st; k++) st = vsph_jobs_plan_run(&R->jobs, &rs[k]);
+  for (int k = 0; k < n && !st; k++)
+    st = vsph_jobs_plan_run(&R->runs.jobs, &rs[k]);
   return st;
 }
 
@@ -412,7 +414,7 @@ static int cyl_load(struct vsph_report *R, struct cyl *cy) {
     vsph_params_free(prm);
     if (st) break;
     struct vsph_jobs_run r;
-    if ((st = vsph_report_runs_get(R, &rs[k], &r))) break;
+    if ((st = vsph_report_runs_get(&R->runs, &rs[k], &r))) break;
     const double *px = vsph_csv_column(r.energy, "Px");
     /* F/(eta U) against eq. (39)'s: the drive is eq. (39)'s at U_target */
     cy->ratio[k] =
@@ -566,7 +568,7 @@ int vsph_report_contact_write(struct vsph_report *R) {
   int st = cload(R, &cr);
   if (st) return st;
   struct cnum nb;
-  numbers(&cr, &R->jobs, &nb);
+  numbers(&cr, &R->runs.jobs, &nb);
   struct vsph_text_vars *tv = &R->tv;
   if ((st = vsph_report_say(R, "contact.intro"))) return st;
   /* Table: alpha = 0.5, both kernels */
@@ -702,7 +704,7 @@ int vsph_report_contact_claims(struct vsph_report *R) {
   int st = cload(R, &cr);
   if (st) return st;
   struct cnum nb;
-  numbers(&cr, &R->jobs, &nb);
+  numbers(&cr, &R->runs.jobs, &nb);
   char ours[320];
   const double w = coef(&cr.r[C_W]), b = coef(&cr.r[C_B]);
   const double ew = w / nb.paper_w - 1.0, eb = b / nb.paper_b - 1.0;

@@ -8,7 +8,7 @@
 #include "../io/csv.h"
 #include "../io/files.h"
 #include "../io/plot.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 
@@ -28,9 +28,10 @@ static void ladder_ticks(char *buf, size_t n,
 
 static int scene(struct vsph_report *R, int sc) {
   struct vsph_report_ladder lr;
-  int st = vsph_report_runs_ladder_figures(R, sc, &lr);
+  int st = vsph_report_runs_ladder_figures(&R->runs, sc, &lr);
   if (st) return st;
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+  const struct vsph_report_ladderdef *L =
+      vsph_report_runs_ladder(&R->runs, sc, 0);
   char pname[64], title[160];
   snprintf(pname, sizeof pname, "fig_convergence_%s", L->scene);
   snprintf(title, sizeof title, "%s: E_k error against resolution", L->scene);
@@ -83,10 +84,11 @@ static int scene(struct vsph_report *R, int sc) {
 /* The vortex patch on both disc layouts: decay error and initial
  * dissipation error against R/dx, with fitted orders. */
 static int vortex_layouts(struct vsph_report *R) {
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 0, 0);
+  const struct vsph_report_ladderdef *L =
+      vsph_report_runs_ladder(&R->runs, 0, 0);
   static const char *const lay[2] = {"rings", "cartesian"};
   struct vsph_report_layouts ly;
-  int st = vsph_report_runs_layouts(R, &ly);
+  int st = vsph_report_runs_layouts(&R->runs, &ly);
   if (st) return st;
   if ((st = vsph_report_say(R, "convergence.layout_head"))) return st;
   struct vsph_plot pl;
@@ -139,7 +141,7 @@ int vsph_report_convergence_write(struct vsph_report *R) {
   int st = VSPH_OK;
   if (!st) st = vsph_report_say(R, "convergence.intro");
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
-    if (vsph_report_scene_on(R, sc)) st = scene(R, sc);
-  if (!st && vsph_report_scene_on(R, 0)) st = vortex_layouts(R);
+    if (vsph_report_scene_on(&R->runs, sc)) st = scene(R, sc);
+  if (!st && vsph_report_scene_on(&R->runs, 0)) st = vortex_layouts(R);
   return st;
 }

@@ -10,7 +10,7 @@
 #include "../io/csv.h"
 #include "../io/files.h"
 #include "../io/plot.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 /* The fields of this section: rotation, strain, mixed. */

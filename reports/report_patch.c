@@ -12,7 +12,7 @@
 #include "../common/sysinfo.h"
 #include "../io/csv.h"
 #include "../io/plot.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 #define NLAP 4
 #define NRES 5

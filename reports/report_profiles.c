@@ -8,7 +8,7 @@
 #include "../io/csv.h"
 #include "../io/plot.h"
 #include "../kernels/kernel.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 /* Depth step of the profiles (units of h). */
 static const double STEP = 0.05;

@@ -2,6 +2,8 @@
  * version, the source hash and every setting (so an unchanged run is never
  * repeated), the error measures the parts share, the stretching square's
  * Richardson reference, and the regression baseline. */
+#include "report_runs.h"
+
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
@@ -19,7 +21,6 @@
 #include "../io/plot.h"
 #include "../runs/rundir.h"
 #include "../solver/scene.h"
-#include "report_internal.h"
 
 /* Resolution ladders and end times: quick (default) and full (the paper's
  * resolutions: R/dx 100, L/dx 320, H/dx 240; t_end 100 s, 1 s, 8 s). */
@@ -33,7 +34,7 @@ static const struct vsph_report_ladderdef FULL[VSPH_REPORT_NSCENES] = {
     {"standing-wave", {60, 120, 240}, 8.0}};
 
 const struct vsph_report_ladderdef *vsph_report_runs_ladder(
-    const struct vsph_report *R, int sc, int quick) {
+    const struct vsph_report_runs *R, int sc, int quick) {
   return R->full && !quick ? &FULL[sc] : &QUICK[sc];
 }
 
@@ -46,7 +47,7 @@ void vsph_report_runs_free(struct vsph_jobs_run *r) { vsph_jobs_run_free(r); }
 const char *const vsph_report_runs_cartesian[2] = {"Scene:layout=cartesian",
                                                    NULL};
 
-int vsph_report_runs_layouts(struct vsph_report *R,
+int vsph_report_runs_layouts(struct vsph_report_runs *R,
                              struct vsph_report_layouts *out) {
   if (R->have_layouts) {
     *out = R->layouts;
@@ -78,7 +79,7 @@ int vsph_report_runs_layouts(struct vsph_report *R,
   return VSPH_OK;
 }
 
-int vsph_report_runs_plan_scene(struct vsph_report *R, int sc) {
+int vsph_report_runs_plan_scene(struct vsph_report_runs *R, int sc) {
   int st = VSPH_OK;
   /* the stretching square's reference runs */
   if (sc == 1) {
@@ -102,7 +103,7 @@ int vsph_report_runs_plan_scene(struct vsph_report *R, int sc) {
   return st;
 }
 
-int vsph_report_runs_plan_ladders(struct vsph_report *R, int all) {
+int vsph_report_runs_plan_ladders(struct vsph_report_runs *R, int all) {
   int st = VSPH_OK;
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     if (all || vsph_report_scene_on(R, sc))
@@ -110,7 +111,8 @@ int vsph_report_runs_plan_ladders(struct vsph_report *R, int all) {
   return st;
 }
 
-int vsph_report_runs_get(struct vsph_report *R, const struct vsph_jobs_spec *rs,
+int vsph_report_runs_get(struct vsph_report_runs *R,
+                         const struct vsph_jobs_spec *rs,
                          struct vsph_jobs_run *out) {
   return vsph_jobs_get(&R->jobs, rs, out);
 }
@@ -118,7 +120,7 @@ int vsph_report_runs_get(struct vsph_report *R, const struct vsph_jobs_spec *rs,
 const char *const vsph_report_runs_hdx[2][2] = {{"Solver:hdx=2", NULL},
                                                 {"Solver:hdx=3", NULL}};
 
-void vsph_report_runs_reference_specs(const struct vsph_report *R,
+void vsph_report_runs_reference_specs(const struct vsph_report_runs *R,
                                       struct vsph_jobs_spec rs[4]) {
   /* h/dx = 2 at L/dx 30, 60 and h/dx = 3 at 40, 80 (full: twice these):
    * h = 0.067, 0.033 and 0.075, 0.038 */
@@ -151,7 +153,7 @@ static int lattice_error(double hdx, double *eps) {
   return st;
 }
 
-int vsph_report_runs_richardson(struct vsph_report *R,
+int vsph_report_runs_richardson(struct vsph_report_runs *R,
                                 struct vsph_report_richardson *rr) {
   if (R->have_rr) {
     *rr = R->rr;
@@ -257,7 +259,7 @@ double vsph_report_runs_diss0(const struct vsph_jobs_run *r) {
   return (r->Pv[0] - r->dEkr[0]) / fabs(r->dEkr[0]);
 }
 
-int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
+int vsph_report_runs_ladder_figures(struct vsph_report_runs *R, int sc,
                                     struct vsph_report_ladder *out) {
   if (R->have_ladder[sc]) {
     *out = R->ladder[sc];
@@ -366,8 +368,9 @@ size_t vsph_report_runs_baseline_count(void) {
 
 /* A baseline row from the run of @p rs: its final E_k (relative to the
  * reference when @p rel, else as it is), its final u_err and verdict. */
-static int velocity_row(struct vsph_report *R, const struct vsph_jobs_spec *rs,
-                        int rel, struct vsph_report_baseline *b) {
+static int velocity_row(struct vsph_report_runs *R,
+                        const struct vsph_jobs_spec *rs, int rel,
+                        struct vsph_report_baseline *b) {
   struct vsph_jobs_run r;
   const int st = vsph_report_runs_get(R, rs, &r);
   if (st) return st;
@@ -390,7 +393,7 @@ static const char *const BASE_TVF[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1", NULL};
 
 /* The run behind baseline row @p i, and its kind: 0 free surface, 1
  * channel, 2 cavity, 3 contact. */
-static int baseline_spec(const struct vsph_report *R, size_t i,
+static int baseline_spec(const struct vsph_report_runs *R, size_t i,
                          struct vsph_jobs_spec *rs) {
   const size_t nfree = VSPH_REPORT_NSCENES * VSPH_VISCOUS_PAPER_COUNT;
   const size_t nchan = 2 * VSPH_VISCOUS_FORM_COUNT;
@@ -429,7 +432,7 @@ static int baseline_spec(const struct vsph_report *R, size_t i,
   return 0;
 }
 
-int vsph_report_runs_plan_baseline(struct vsph_report *R) {
+int vsph_report_runs_plan_baseline(struct vsph_report_runs *R) {
   int st = VSPH_OK;
   for (size_t i = 0; i < vsph_report_runs_baseline_count() && !st; i++) {
     struct vsph_jobs_spec rs;
@@ -439,7 +442,7 @@ int vsph_report_runs_plan_baseline(struct vsph_report *R) {
   return st;
 }
 
-int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
+int vsph_report_runs_baseline(struct vsph_report_runs *R, size_t i,
                               struct vsph_report_baseline *b) {
   if (i >= vsph_report_runs_baseline_count())
     VSPH_FAIL(VSPH_EINVAL, "no baseline row %zu", i);

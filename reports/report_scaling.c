@@ -12,7 +12,7 @@
 #include "../io/files.h"
 #include "../io/plot.h"
 #include "../kernels/kernel.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 /* The three tables the sweeps fill. */
 struct tables {

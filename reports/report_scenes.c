@@ -14,7 +14,7 @@
 #include "../io/plot.h"
 #include "../io/vtk.h"
 #include "../solver/scene.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 
@@ -112,7 +112,7 @@ static int vortex_profiles(struct vsph_report *R, FILE *figs, int f,
   for (int k = 0; k < NSNAP && !st; k++) {
     char snap[700], name[32], file[96], tp[48], ts_[48], sp[48], ss[48];
     snprintf(name, sizeof name, "snap_%04d.vtp", k);
-    if ((st = vsph_jobs_file(&R->jobs, run->dir, name, snap, sizeof snap)))
+    if ((st = vsph_jobs_file(&R->runs.jobs, run->dir, name, snap, sizeof snap)))
       break;
     snprintf(file, sizeof file, "profile_%s_%d.csv", form, k);
     double ts = 0.0;
@@ -167,17 +167,18 @@ static int particles_csv(struct vsph_report *R, const char *snap,
  * vorticity. */
 static int pictures(struct vsph_report *R, int sc, FILE *md,
                     const struct vsph_jobs_run run[NFORM]) {
-  const char *scn = vsph_report_runs_ladder(R, sc, 0)->scene;
+  const char *scn = vsph_report_runs_ladder(&R->runs, sc, 0)->scene;
   struct vsph_plot_panel pn[NFORM + 1];
   double box[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY};
   int st = VSPH_OK;
   for (int k = 0; k <= NFORM && !st; k++) {
     const int f = k ? k - 1 : 0;
-    const int idx = k ? vsph_jobs_last_snapshot(&R->jobs, run[f].dir) : 0;
+    const int idx = k ? vsph_jobs_last_snapshot(&R->runs.jobs, run[f].dir) : 0;
     if (idx < 0) VSPH_FAIL(VSPH_EIO, "%s holds no snapshot", run[f].dir);
     char snap[700], name[32];
     snprintf(name, sizeof name, "snap_%04d.vtp", idx);
-    if ((st = vsph_jobs_file(&R->jobs, run[f].dir, name, snap, sizeof snap)))
+    if ((st = vsph_jobs_file(&R->runs.jobs, run[f].dir, name, snap,
+                             sizeof snap)))
       break;
     snprintf(pn[k].file, sizeof pn[k].file, "particles_%s_%s.csv", scn,
              k ? vsph_viscous_name(f) : "initial");
@@ -223,7 +224,7 @@ static int pictures(struct vsph_report *R, int sc, FILE *md,
  * budget residual, each with MGF, MEAF and PVWF. */
 static int scene_figures(struct vsph_report *R, int sc, char names[NFORM][96],
                          int square) {
-  const char *scn = vsph_report_runs_ladder(R, sc, 0)->scene;
+  const char *scn = vsph_report_runs_ladder(&R->runs, sc, 0)->scene;
   /* The standing wave's dE_k/dt is dominated by the kinetic/potential
    * exchange: its figure shows the viscous power against the rate of
    * Lighthill's phase-free envelope instead, and the energy-budget ratio
@@ -284,11 +285,12 @@ static int scene_figures(struct vsph_report *R, int sc, char names[NFORM][96],
 
 /* One scene: its table, the per-run data, and its figures. */
 static int scene(struct vsph_report *R, int sc) {
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+  const struct vsph_report_ladderdef *L =
+      vsph_report_runs_ladder(&R->runs, sc, 0);
   const size_t res = L->res[VSPH_REPORT_LADDER - 1];
   const int square = sc == 1;
   struct vsph_report_richardson rr;
-  int st = square ? vsph_report_runs_richardson(R, &rr) : VSPH_OK;
+  int st = square ? vsph_report_runs_richardson(&R->runs, &rr) : VSPH_OK;
   if (st) return st;
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
   vsph_text_set(&R->tv, "res", "%zu", res);
@@ -305,7 +307,7 @@ static int scene(struct vsph_report *R, int sc) {
     struct vsph_jobs_spec rs = {
         L->scene, vsph_viscous_name(f), res, L->t_end, NULL, NULL};
     struct vsph_jobs_run r;
-    if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+    if ((st = vsph_report_runs_get(&R->runs, &rs, &r))) break;
     snprintf(runs[f].dir, sizeof runs[f].dir, "%s", r.dir);
     runs[f].ok = r.ok;
     snprintf(names[f], sizeof names[f], "scene_%s_%s.csv", L->scene,
@@ -348,7 +350,8 @@ static int scene(struct vsph_report *R, int sc) {
  * the ladder's middle resolution. */
 static void eps_specs(const struct vsph_report *R,
                       struct vsph_jobs_spec specs[3 * NFORM]) {
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 2, 0);
+  const struct vsph_report_ladderdef *L =
+      vsph_report_runs_ladder(&R->runs, 2, 0);
   static const char *const extra[3][2] = {
       {"Scene:eps=0.005", NULL}, {"Scene:eps=0.01", NULL}, {NULL, NULL}};
   static const char *const tag[3] = {"eps0.005", "eps0.01", NULL};
@@ -362,18 +365,19 @@ static void eps_specs(const struct vsph_report *R,
 }
 
 int vsph_report_scenes_plan(struct vsph_report *R) {
-  int st = vsph_report_runs_plan_ladders(R, 0);
-  if (vsph_report_scene_on(R, 2)) {
+  int st = vsph_report_runs_plan_ladders(&R->runs, 0);
+  if (vsph_report_scene_on(&R->runs, 2)) {
     struct vsph_jobs_spec specs[3 * NFORM];
     eps_specs(R, specs);
     for (int k = 0; k < 3 * NFORM && !st; k++)
-      st = vsph_jobs_plan_run(&R->jobs, &specs[k]);
+      st = vsph_jobs_plan_run(&R->runs.jobs, &specs[k]);
   }
   return st;
 }
 
 static int wave_eps(struct vsph_report *R) {
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 2, 0);
+  const struct vsph_report_ladderdef *L =
+      vsph_report_runs_ladder(&R->runs, 2, 0);
   static const char *const eps[3] = {"0.005", "0.01", "0.05"};
   struct vsph_jobs_spec specs[3 * NFORM];
   eps_specs(R, specs);
@@ -385,7 +389,8 @@ static int wave_eps(struct vsph_report *R) {
     fprintf(R->md, "| %s |", eps[e]);
     for (int f = 0; f < NFORM && !st; f++) {
       struct vsph_jobs_run r;
-      if ((st = vsph_report_runs_get(R, &specs[e * NFORM + f], &r))) break;
+      if ((st = vsph_report_runs_get(&R->runs, &specs[e * NFORM + f], &r)))
+        break;
       const double loss = vsph_report_runs_loss_ratio(&r, r.nrow - 1);
       const double visc = vsph_report_runs_visc_loss_ratio(&r, r.nrow - 1);
       if (r.ok)
@@ -402,11 +407,11 @@ static int wave_eps(struct vsph_report *R) {
 
 int vsph_report_scenes_write(struct vsph_report *R) {
   vsph_text_set(&R->tv, "quick_note", "%s",
-                R->full ? "" : vsph_text_get("scenes.quick_note"));
+                R->runs.full ? "" : vsph_text_get("scenes.quick_note"));
   int st = VSPH_OK;
   struct vsph_report_richardson rr;
-  if (vsph_report_scene_on(R, 1)) {
-    st = vsph_report_runs_richardson(R, &rr);
+  if (vsph_report_scene_on(&R->runs, 1)) {
+    st = vsph_report_runs_richardson(&R->runs, &rr);
     vsph_text_set(&R->tv, "ref_res",
                   "L/dx = %zu and %zu at h/dx = 2, %zu and %zu at h/dx = 3",
                   rr.res[0], rr.res[1], rr.res[2], rr.res[3]);
@@ -422,7 +427,7 @@ int vsph_report_scenes_write(struct vsph_report *R) {
   }
   if (!st) st = vsph_report_say(R, "scenes.intro");
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
-    if (vsph_report_scene_on(R, sc)) st = scene(R, sc);
-  if (!st && vsph_report_scene_on(R, 2)) st = wave_eps(R);
+    if (vsph_report_scene_on(&R->runs, sc)) st = scene(R, sc);
+  if (!st && vsph_report_scene_on(&R->runs, 2)) st = wave_eps(R);
   return st;
 }

@@ -7,15 +7,15 @@
 #include "../common/status.h"
 #include "../io/csv.h"
 #include "../io/plot.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 
 static int scene(struct vsph_report *R, int sc) {
   struct vsph_report_ladder lr;
-  int st = vsph_report_runs_ladder_figures(R, sc, &lr);
+  int st = vsph_report_runs_ladder_figures(&R->runs, sc, &lr);
   if (st) return st;
-  const char *scn = vsph_report_runs_ladder(R, sc, 0)->scene;
+  const char *scn = vsph_report_runs_ladder(&R->runs, sc, 0)->scene;
   char pname[64], title[160];
   snprintf(pname, sizeof pname, "fig_speed_%s", scn);
   snprintf(title, sizeof title, "%s: wall time against E_k error", scn);
@@ -62,7 +62,8 @@ static const char *const TAG_CFL[NCFL] = {"step0.5", NULL, "step1.5", "step2"};
 
 static struct vsph_jobs_spec cfl_spec(const struct vsph_report *R, int sc,
                                       int f, int k, int c) {
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+  const struct vsph_report_ladderdef *L =
+      vsph_report_runs_ladder(&R->runs, sc, 0);
   return (struct vsph_jobs_spec){L->scene,
                                  vsph_viscous_name(f),
                                  L->res[k],
@@ -72,14 +73,14 @@ static struct vsph_jobs_spec cfl_spec(const struct vsph_report *R, int sc,
 }
 
 int vsph_report_speed_plan(struct vsph_report *R) {
-  int st = vsph_report_runs_plan_ladders(R, 0);
+  int st = vsph_report_runs_plan_ladders(&R->runs, 0);
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
-    if (vsph_report_scene_on(R, sc))
+    if (vsph_report_scene_on(&R->runs, sc))
       for (int f = 0; f < NFORM && !st; f++)
         for (int k = 0; k < NRES && !st; k++)
           for (int c = 0; c < NCFL && !st; c++) {
             const struct vsph_jobs_spec rs = cfl_spec(R, sc, f, k, c);
-            st = vsph_jobs_plan_run(&R->jobs, &rs);
+            st = vsph_jobs_plan_run(&R->runs.jobs, &rs);
           }
   return st;
 }
@@ -87,9 +88,10 @@ int vsph_report_speed_plan(struct vsph_report *R) {
 /* One scene: error against cost at each CFL, a line per formulation and
  * resolution; the table of error changes; the CFL the rule picks. */
 static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+  const struct vsph_report_ladderdef *L =
+      vsph_report_runs_ladder(&R->runs, sc, 0);
   struct vsph_report_richardson rr;
-  int st = sc == 1 ? vsph_report_runs_richardson(R, &rr) : VSPH_OK;
+  int st = sc == 1 ? vsph_report_runs_richardson(&R->runs, &rr) : VSPH_OK;
   double err[NFORM][NRES][NCFL], wall[NFORM][NRES][NCFL];
   int ok[NFORM][NRES][NCFL];
   for (int f = 0; f < NFORM && !st; f++)
@@ -97,7 +99,7 @@ static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
       for (int c = 0; c < NCFL && !st; c++) {
         const struct vsph_jobs_spec rs = cfl_spec(R, sc, f, k, c);
         struct vsph_jobs_run r;
-        if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+        if ((st = vsph_report_runs_get(&R->runs, &rs, &r))) break;
         err[f][k][c] = vsph_report_runs_error(&r, sc == 1 ? &rr : NULL);
         wall[f][k][c] = r.wall_s;
         ok[f][k][c] = r.ok;
@@ -171,12 +173,12 @@ static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
 int vsph_report_speed_write(struct vsph_report *R) {
   int st = vsph_report_say(R, "speed.intro");
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
-    if (vsph_report_scene_on(R, sc)) st = scene(R, sc);
+    if (vsph_report_scene_on(&R->runs, sc)) st = scene(R, sc);
   vsph_text_set(&R->tv, "fraction", "%g", 100.0 * CFL_FRACTION);
   if (!st) st = vsph_report_say(R, "speed.cfl_intro");
   double all = CFLS[NCFL - 1];
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
-    if (vsph_report_scene_on(R, sc)) {
+    if (vsph_report_scene_on(&R->runs, sc)) {
       double pick;
       st = cfl_scene(R, sc, &pick);
       all = fmin(all, pick);

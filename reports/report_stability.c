@@ -11,7 +11,7 @@
 #include "../io/files.h"
 #include "../io/plot.h"
 #include "../solver/scene.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
 
@@ -86,7 +86,7 @@ static int sweep(struct vsph_report *R, const struct sweep *sw,
       const char *extra[2];
       const struct vsph_jobs_spec rs = sweep_spec(sw, v, f, set, tag, extra);
       struct vsph_jobs_run r;
-      if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+      if ((st = vsph_report_runs_get(&R->runs, &rs, &r))) break;
       char cell[160];
       verdict(cell, sizeof cell, &r);
       fprintf(R->md, " %s |", cell);
@@ -178,16 +178,17 @@ static int stability_map(struct vsph_report *R, const char *map,
 
 /* PVWF's pairing: the stretching square across its ladder. */
 static int square_ladder(struct vsph_report *R) {
-  const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 1, 0);
+  const struct vsph_report_ladderdef *L =
+      vsph_report_runs_ladder(&R->runs, 1, 0);
   struct vsph_report_richardson rr;
-  int st = vsph_report_runs_richardson(R, &rr);
+  int st = vsph_report_runs_richardson(&R->runs, &rr);
   for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
     fprintf(R->md, "| %s | L/dx = %zu |", L->scene, L->res[k]);
     for (int f = 0; f < NFORM && !st; f++) {
       struct vsph_jobs_spec rs = {
           L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
       struct vsph_jobs_run r;
-      if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+      if ((st = vsph_report_runs_get(&R->runs, &rs, &r))) break;
       char cell[160];
       verdict(cell, sizeof cell, &r);
       const double on = vsph_report_runs_onset(&r, &rr, VSPH_REPORT_ONSET);
@@ -209,11 +210,11 @@ static int square_ladder(struct vsph_report *R) {
 #define NSWEEP 7
 static int sweeps(const struct vsph_report *R, struct sweep sws[NSWEEP],
                   double c0s[4], struct vsph_scene *scene) {
-  const size_t res = R->full ? 40 : 20;
-  const char *vortex = vsph_report_runs_ladder(R, 0, 0)->scene;
-  const char *wave = vsph_report_runs_ladder(R, 2, 0)->scene;
-  const double tv = vsph_report_runs_ladder(R, 0, 0)->t_end;
-  const double tw = vsph_report_runs_ladder(R, 2, 0)->t_end;
+  const size_t res = R->runs.full ? 40 : 20;
+  const char *vortex = vsph_report_runs_ladder(&R->runs, 0, 0)->scene;
+  const char *wave = vsph_report_runs_ladder(&R->runs, 2, 0)->scene;
+  const double tv = vsph_report_runs_ladder(&R->runs, 0, 0)->t_end;
+  const double tw = vsph_report_runs_ladder(&R->runs, 2, 0)->t_end;
   const int st = vsph_scene_init(scene, &vsph_vortex_patch_type, NULL);
   if (st) return st;
   static const double ks[4] = {10, 6, 4, 3};
@@ -223,7 +224,8 @@ static int sweeps(const struct vsph_report *R, struct sweep sws[NSWEEP],
   sws[0] = (struct sweep){vortex, res, tv,   "nu (m^2/s)", "Scene:nu",
                           nus,    3,   "nu", NULL};
   for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++) {
-    const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
+    const struct vsph_report_ladderdef *L =
+        vsph_report_runs_ladder(&R->runs, sc, 0);
     sws[1 + sc] = (struct sweep){L->scene,
                                  res,
                                  L->t_end,
@@ -257,15 +259,15 @@ int vsph_report_stability_plan(struct vsph_report *R) {
         const char *extra[2];
         const struct vsph_jobs_spec rs =
             sweep_spec(&sws[k], v, f, set, tag, extra);
-        st = vsph_jobs_plan_run(&R->jobs, &rs);
+        st = vsph_jobs_plan_run(&R->runs.jobs, &rs);
       }
   /* PVWF's pairing: the stretching square's ladder and reference */
-  if (!st) st = vsph_report_runs_plan_scene(R, 1);
+  if (!st) st = vsph_report_runs_plan_scene(&R->runs, 1);
   return st;
 }
 
 int vsph_report_stability_write(struct vsph_report *R) {
-  const size_t res = R->full ? 40 : 20;
+  const size_t res = R->runs.full ? 40 : 20;
   struct sweep sws[NSWEEP];
   double c0s[4];
   struct vsph_scene scene;

@@ -12,7 +12,7 @@
 #include "../kernels/kernel.h"
 #include "../solver/lattice.h"
 #include "../solver/particles.h"
-#include "report_internal.h"
+#include "report_parts.h"
 
 /* The h/dx values of the particle sums. */
 static const double HDX[3] = {VSPH_CONSTS_HDX, 2.0, 4.0};

@@ -16,7 +16,8 @@
 #include <unistd.h>
 
 #include "../analysis/series.h"
-#include "../reports/report_internal.h"
+#include "../reports/report_claims.h"
+#include "../reports/report_parts.h"
 #include "check_suites.h"
 
 START_TEST(test_baseline) {
@@ -28,7 +29,7 @@ START_TEST(test_baseline) {
   ck_assert_ptr_nonnull(mkdtemp(dir));
   struct vsph_report R;
   memset(&R, 0, sizeof R);
-  R.dir = R.jobs.dir = dir;
+  R.dir = R.runs.jobs.dir = dir;
   size_t i = 0;
   while (fgets(line, sizeof line, f)) {
     char scene[32], visc[16];
@@ -39,7 +40,7 @@ START_TEST(test_baseline) {
                             visc, &res, &t_end, &ek, &d0, &ok),
                      7);
     struct vsph_report_baseline b;
-    ck_assert_int_eq(vsph_report_runs_baseline(&R, i, &b), 0);
+    ck_assert_int_eq(vsph_report_runs_baseline(&R.runs, i, &b), 0);
     ck_assert_str_eq(b.scene, scene);
     ck_assert_str_eq(b.visc, visc);
     ck_assert_uint_eq(b.res, res);

@@ -15,7 +15,8 @@
 #include "../common/status.h"
 #include "../io/files.h"
 #include "../reports/report.h"
-#include "../reports/report_internal.h"
+#include "../reports/report_claims.h"
+#include "../reports/report_parts.h"
 #include "../runs/archive.h"
 #include "../runs/folder.h"
 #include "../runs/rundir.h"
@@ -80,12 +81,12 @@ START_TEST(test_command_is_the_run) {
   const char *dir = tmpdir();
   struct vsph_report R;
   memset(&R, 0, sizeof R);
-  R.dir = R.jobs.dir = dir;
+  R.dir = R.runs.jobs.dir = dir;
   struct vsph_jobs_job j;
-  ck_assert_int_eq(vsph_jobs_run(&R.jobs, &SPEC[0], &j), 0);
+  ck_assert_int_eq(vsph_jobs_run(&R.runs.jobs, &SPEC[0], &j), 0);
   ck_assert_int_eq(j.cached, 0);
   /* in this process (no plan: the run is made when it is read) */
-  ck_assert_int_eq(vsph_jobs_ready(&R.jobs, &j), 0);
+  ck_assert_int_eq(vsph_jobs_ready(&R.runs.jobs, &j), 0);
   char a[700], b[700], ka[4096], kb[4096];
   snprintf(a, sizeof a, "%s/energy.csv", j.dir);
   char *ea = vsph_files_slurp(a, NULL);
@@ -138,29 +139,32 @@ START_TEST(test_pool) {
   const char *dir = tmpdir();
   struct vsph_report R;
   memset(&R, 0, sizeof R);
-  R.dir = R.jobs.dir = dir;
-  R.jobs.planned = 1;
+  R.dir = R.runs.jobs.dir = dir;
+  R.runs.jobs.planned = 1;
   const struct vsph_jobs_spec bad = {"vortex-patch", "meaf",   10, 1.0,
                                      TINY,           "blocked"};
   for (int k = 0; k < 2; k++)
-    ck_assert_int_eq(vsph_jobs_plan_run(&R.jobs, &SPEC[k]), 0);
-  ck_assert_int_eq(vsph_jobs_plan_run(&R.jobs, &bad), 0);
-  ck_assert_int_eq(vsph_jobs_plan_run(&R.jobs, &SPEC[0]), 0); /* listed once */
-  ck_assert_uint_eq(R.jobs.n, 3);
+    ck_assert_int_eq(vsph_jobs_plan_run(&R.runs.jobs, &SPEC[k]), 0);
+  ck_assert_int_eq(vsph_jobs_plan_run(&R.runs.jobs, &bad), 0);
+  ck_assert_int_eq(vsph_jobs_plan_run(&R.runs.jobs, &SPEC[0]),
+                   0); /* listed once */
+  ck_assert_uint_eq(R.runs.jobs.n, 3);
   char path[700];
   snprintf(path, sizeof path, "%s/runs", dir);
   ck_assert_int_eq(vsph_files_mkdir(path), 0);
   ck_assert_int_eq(vsph_files_write(path, "vortex-patch-meaf-10-blocked", "x"),
                    0);
   /* the estimate orders them; the vortex patch's is the solver's */
-  ck_assert(R.jobs.job[0].particles > 300 && R.jobs.job[0].particles < 400);
-  ck_assert_int_eq(vsph_jobs_pool(&R.jobs, bin(), 2, 1), VSPH_EFAIL);
+  ck_assert(R.runs.jobs.job[0].particles > 300 &&
+            R.runs.jobs.job[0].particles < 400);
+  ck_assert_int_eq(vsph_jobs_pool(&R.runs.jobs, bin(), 2, 1), VSPH_EFAIL);
   for (int k = 0; k < 2; k++) {
-    ck_assert_int_eq(R.jobs.job[k].cached, 1);
-    ck_assert_int_eq(vsph_jobs_ready(&R.jobs, &R.jobs.job[k]), 0);
+    ck_assert_int_eq(R.runs.jobs.job[k].cached, 1);
+    ck_assert_int_eq(vsph_jobs_ready(&R.runs.jobs, &R.runs.jobs.job[k]), 0);
   }
-  ck_assert_int_eq(R.jobs.job[2].failed, 1);
-  ck_assert_int_eq(vsph_jobs_ready(&R.jobs, &R.jobs.job[2]), VSPH_EIO);
+  ck_assert_int_eq(R.runs.jobs.job[2].failed, 1);
+  ck_assert_int_eq(vsph_jobs_ready(&R.runs.jobs, &R.runs.jobs.job[2]),
+                   VSPH_EIO);
   char failed[2048];
   snprintf(path, sizeof path, "%s/runs/failed.txt", dir);
   vsph_test_slurp(path, failed, sizeof failed);
@@ -170,24 +174,24 @@ START_TEST(test_pool) {
   const struct vsph_jobs_spec stray = {"vortex-patch", "pvwf", 10, 1.0,
                                        TINY,           "tiny"};
   struct vsph_jobs_job j;
-  ck_assert_int_eq(vsph_jobs_run(&R.jobs, &stray, &j), 0);
-  ck_assert_int_eq(vsph_jobs_ready(&R.jobs, &j), VSPH_EBUG);
+  ck_assert_int_eq(vsph_jobs_run(&R.runs.jobs, &stray, &j), 0);
+  ck_assert_int_eq(vsph_jobs_ready(&R.runs.jobs, &j), VSPH_EBUG);
   vsph_jobs_free(&j);
   /* half-written: its key gone, its table cut; the other one untouched */
   char e0[700], keep[700];
-  snprintf(e0, sizeof e0, "%s/energy.csv", R.jobs.job[0].dir);
+  snprintf(e0, sizeof e0, "%s/energy.csv", R.runs.jobs.job[0].dir);
   char *before = vsph_files_slurp(e0, NULL);
   ck_assert_ptr_nonnull(before);
-  snprintf(path, sizeof path, "%s/key.txt", R.jobs.job[0].dir);
+  snprintf(path, sizeof path, "%s/key.txt", R.runs.jobs.job[0].dir);
   ck_assert_int_eq(remove(path), 0);
   ck_assert_int_eq(truncate(e0, 40), 0);
-  snprintf(keep, sizeof keep, "%s/run.json", R.jobs.job[1].dir);
+  snprintf(keep, sizeof keep, "%s/run.json", R.runs.jobs.job[1].dir);
   struct stat s0, s1;
   ck_assert_int_eq(stat(keep, &s0), 0);
   snprintf(path, sizeof path, "%s/runs/vortex-patch-meaf-10-blocked", dir);
   ck_assert_int_eq(remove(path), 0); /* mended: it runs now */
-  ck_assert_int_eq(vsph_jobs_pool(&R.jobs, bin(), 2, 1), VSPH_OK);
-  for (int k = 0; k < 3; k++) ck_assert_int_eq(R.jobs.job[k].cached, 1);
+  ck_assert_int_eq(vsph_jobs_pool(&R.runs.jobs, bin(), 2, 1), VSPH_OK);
+  for (int k = 0; k < 3; k++) ck_assert_int_eq(R.runs.jobs.job[k].cached, 1);
   char *after = vsph_files_slurp(e0, NULL);
   ck_assert_str_eq(before, after);
   ck_assert_int_eq(stat(keep, &s1), 0);
@@ -199,7 +203,7 @@ START_TEST(test_pool) {
   char *table = NULL;
   size_t tlen = 0;
   FILE *f = open_memstream(&table, &tlen);
-  ck_assert_int_eq(vsph_jobs_plan_print(&R.jobs, "vsph", f), 0);
+  ck_assert_int_eq(vsph_jobs_plan_print(&R.runs.jobs, "vsph", f), 0);
   fclose(f);
   size_t cached = 0;
   for (const char *s = table; (s = strstr(s, "\ncached\t")); s++) cached++;
@@ -209,7 +213,7 @@ START_TEST(test_pool) {
   free(table);
   free(before);
   free(after);
-  vsph_jobs_plan_free(&R.jobs);
+  vsph_jobs_plan_free(&R.runs.jobs);
   rmrf(dir);
 }
 END_TEST
@@ -219,26 +223,28 @@ END_TEST
 START_TEST(test_estimate_neighbours) {
   struct vsph_report R;
   memset(&R, 0, sizeof R);
-  R.dir = R.jobs.dir = "/tmp/vsph_jobs_never";
-  R.jobs.planned = 1;
-  ck_assert_int_eq(vsph_jobs_plan_run(&R.jobs, &SPEC[0]), 0); /* mgf */
-  ck_assert_int_eq(vsph_jobs_plan_run(&R.jobs, &SPEC[1]), 0); /* pvwf */
+  R.dir = R.runs.jobs.dir = "/tmp/vsph_jobs_never";
+  R.runs.jobs.planned = 1;
+  ck_assert_int_eq(vsph_jobs_plan_run(&R.runs.jobs, &SPEC[0]), 0); /* mgf */
+  ck_assert_int_eq(vsph_jobs_plan_run(&R.runs.jobs, &SPEC[1]), 0); /* pvwf */
   static const char set[][96] = {
       "Solver:scheme=contact", "Solver:kernel=wendland2", "Solver:alpha=0.5",
       "Solver:res=80",         "Scene:Ly=30e-9",          "Scene:Lz=30e-9"};
   struct vsph_jobs_job j;
-  ck_assert_int_eq(vsph_jobs_shear(&R.jobs, "n", set, 6, 1, &j), 0);
-  ck_assert_int_eq(vsph_jobs_plan_add(&R.jobs, &j), 0);
-  ck_assert_uint_eq(R.jobs.n, 3);
+  ck_assert_int_eq(vsph_jobs_shear(&R.runs.jobs, "n", set, 6, 1, &j), 0);
+  ck_assert_int_eq(vsph_jobs_plan_add(&R.runs.jobs, &j), 0);
+  ck_assert_uint_eq(R.runs.jobs.n, 3);
   struct vsph_run_props rp;
   ck_assert_int_eq(vsph_run_props_init(&rp, NULL), 0); /* the defaults */
   const double r2 = rp.ktype->kappa * rp.hdx;          /* reach / dx */
   /* 2-D: pi r^2; PVWF differentiates its first pass: two supports */
-  ck_assert_double_eq_tol(R.jobs.job[0].neighbours, M_PI * r2 * r2, 1e-12);
-  ck_assert_double_eq_tol(R.jobs.job[1].neighbours, 2 * M_PI * r2 * r2, 1e-12);
+  ck_assert_double_eq_tol(R.runs.jobs.job[0].neighbours, M_PI * r2 * r2, 1e-12);
+  ck_assert_double_eq_tol(R.runs.jobs.job[1].neighbours, 2 * M_PI * r2 * r2,
+                          1e-12);
   /* 3-D, Wendland C2 (kappa = 2) at h = 2 alpha dx = dx: 4 pi 2^3 / 3 */
-  ck_assert_double_eq_tol(R.jobs.job[2].neighbours, 4 * M_PI * 8 / 3, 1e-12);
-  vsph_jobs_plan_free(&R.jobs);
+  ck_assert_double_eq_tol(R.runs.jobs.job[2].neighbours, 4 * M_PI * 8 / 3,
+                          1e-12);
+  vsph_jobs_plan_free(&R.runs.jobs);
 }
 END_TEST
 

@@ -11,7 +11,8 @@
 #include "../io/files.h"
 #include "../io/json.h"
 #include "../reports/report.h"
-#include "../reports/report_internal.h"
+#include "../reports/report_claims.h"
+#include "../reports/report_parts.h"
 #include "../runs/folder.h"
 #include "../solver/scene.h"
 #include "check_suites.h"
@@ -23,10 +24,10 @@
 START_TEST(test_scene_names) {
   struct vsph_report R;
   memset(&R, 0, sizeof R);
-  R.full = 1;
+  R.runs.full = 1;
   for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++) {
-    const char *q = vsph_report_runs_ladder(&R, sc, 1)->scene;
-    const char *f = vsph_report_runs_ladder(&R, sc, 0)->scene;
+    const char *q = vsph_report_runs_ladder(&R.runs, sc, 1)->scene;
+    const char *f = vsph_report_runs_ladder(&R.runs, sc, 0)->scene;
     ck_assert_str_eq(q, f);
     ck_assert_str_eq(vsph_report_scene_name((size_t)sc), q);
     ck_assert_ptr_nonnull(vsph_scene_find(q));

@@ -1,21 +1,16 @@
-#ifndef VSPH_REPORTS_REPORT_INTERNAL_H
-#define VSPH_REPORTS_REPORT_INTERNAL_H
+#ifndef VSPH_REPORTS_REPORT_RUNS_H
+#define VSPH_REPORTS_REPORT_RUNS_H
 
-/* Internals shared by the files of reports/; never included from another
- * folder except by the tests. */
+/* The runs the report reads (report_runs.c): the scenes' ladders, the
+ * stretching square's reference, the vortex patch's disc layouts, the
+ * baseline's figures, and the line styles every figure shares. Within
+ * reports/ and the tests only. */
 
-#include <gsl/gsl_integration.h>
 #include <signal.h>
 #include <stddef.h>
-#include <stdio.h>
 
-#include "../runs/archive.h"
 #include "../runs/jobs.h"
 #include "../solver/viscous.h"
-#include "text.h"
-
-struct vsph_plot;
-struct vsph_csv;
 
 /** The report's scenes: the three of the paper, in its order. */
 #define VSPH_REPORT_NSCENES 3
@@ -70,68 +65,32 @@ struct vsph_report_layouts {
   int ok[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
 };
 
-/* One row of the claims table. */
-struct vsph_report_claim {
-  char claim[256], paper[256], ours[320], verdict[256];
-  char see[32]; /* the part that shows it ("scenes"): the link in the table */
-};
-
-/* The report being written. */
-struct vsph_report {
-  const char *dir; /* output folder */
+/* What reads runs: the report's fidelity and scenes, its runs (planned,
+ * or made as read in the tests), what made them, and the figures of the
+ * ladders computed once per report invocation. The parts reach it as
+ * R->runs (report_doc.h); nothing here writes the report. */
+struct vsph_report_runs {
   int full;        /* 1: the paper's resolutions and end times */
   unsigned scenes; /* scene-wise parts: bit s on (0: all) */
-  FILE *md;        /* the current part's Markdown */
-  gsl_integration_workspace *wo, *wi; /* quadrature workspaces */
-  struct vsph_report_claim *claims;   /* the claims table (growing) */
-  const char *claim_see;              /* part of the claims added next */
-  size_t nclaims, cap_claims;
+  const volatile sig_atomic_t *stop; /* stop request, or NULL */
+  struct vsph_jobs jobs; /* the runs: planned, or made as read (tests) */
+  size_t made;           /* runs the plan missed at the start */
+  double runs_wall;      /* their wall time (s) */
+  const char *made_by;   /* who made them (run.json) */
   struct vsph_report_ladder ladder[VSPH_REPORT_NSCENES]; /* memo */
   int have_ladder[VSPH_REPORT_NSCENES];
   struct vsph_report_richardson rr; /* memo: the square's reference */
   int have_rr;
   struct vsph_report_layouts layouts; /* memo: the vortex disc layouts */
   int have_layouts;
-  struct vsph_text_vars tv;          /* scratch values for the prose blocks */
-  const volatile sig_atomic_t *stop; /* stop request, or NULL */
-  struct vsph_jobs jobs; /* the runs: planned, or made as read (tests) */
-  size_t made;           /* runs the plan missed at the start */
-  double runs_wall;      /* their wall time (s) */
-  const char *made_by;   /* who made them (run.json) */
-  double load[2][3];     /* load averages before and after (run.json) */
-  const char *beside;    /* a run archive whose FULL runs the summary shows
-                            beside the quick ones, or NULL */
-  const struct vsph_archive_judge *judge; /* what judges its entries */
 };
 
-/* 1 if the scene-wise parts include scene @p sc: a reading of the
- * report's settings, inline so that the ladders (report_runs.c) need
- * nothing of report.c, which calls them. */
-static inline int vsph_report_scene_on(const struct vsph_report *R, int sc) {
+/* 1 if the scene-wise parts include scene @p sc. */
+static inline int vsph_report_scene_on(const struct vsph_report_runs *R,
+                                       int sc) {
   return !R->scenes || (R->scenes >> sc & 1u);
 }
 
-/* ------------------------------------------------------ report.c helpers */
-
-/* Add a row to the claims table (copied). */
-int vsph_report_claim(struct vsph_report *R, const char *claim,
-                      const char *paper, const char *ours, const char *verdict);
-
-/* Write prose block NAME with the values in R->tv, then clear them. */
-int vsph_report_say(struct vsph_report *R, const char *name);
-
-/* Render figure @p pl and put it in the Markdown with its caption. */
-int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
-                       const char *caption);
-
-/* The same with the caption from prose block NAME and the values in R->tv
- * (then cleared). */
-int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
-                           const char *name);
-
-/* ----------------------------------------------------- report_runs.c: runs */
-
-/* A solver run the report needs. */
 /* Basa et al.'s kernel settings (cubic spline, dx/h = 0.637), as a
  * runspec's extra settings: the channel part and the channel baseline. */
 #define VSPH_REPORT_BASA "Solver:kernel=cubic", "Solver:hdx=1.5699"
@@ -145,10 +104,11 @@ const struct vsph_report_ladderdef *vsph_report_runs_full_ladder(int sc);
 /* The ladder of scene @p sc (0..VSPH_REPORT_NSCENES-1) at the report's
  * fidelity, or the quick one when @p quick. */
 const struct vsph_report_ladderdef *vsph_report_runs_ladder(
-    const struct vsph_report *R, int sc, int quick);
+    const struct vsph_report_runs *R, int sc, int quick);
 
 /* A run through runs/jobs (vsph_jobs_get). */
-int vsph_report_runs_get(struct vsph_report *R, const struct vsph_jobs_spec *rs,
+int vsph_report_runs_get(struct vsph_report_runs *R,
+                         const struct vsph_jobs_spec *rs,
                          struct vsph_jobs_run *out);
 
 /* The extra settings of the vortex patch's Cartesian-disc ladder (its
@@ -156,30 +116,30 @@ int vsph_report_runs_get(struct vsph_report *R, const struct vsph_jobs_spec *rs,
 extern const char *const vsph_report_runs_cartesian[2];
 
 /* The layouts' figures (memoised in R; the runs through the cache). */
-int vsph_report_runs_layouts(struct vsph_report *R,
+int vsph_report_runs_layouts(struct vsph_report_runs *R,
                              struct vsph_report_layouts *out);
 
 /* Plan scene @p sc's ladder (the runs the scene-wise parts read): with
  * the stretching square's reference runs (sc = 1) or the vortex patch's
  * Cartesian ladder (sc = 0). */
-int vsph_report_runs_plan_scene(struct vsph_report *R, int sc);
+int vsph_report_runs_plan_scene(struct vsph_report_runs *R, int sc);
 
 /* The same for the scenes on (vsph_report_scene_on), or all when @p all. */
-int vsph_report_runs_plan_ladders(struct vsph_report *R, int all);
+int vsph_report_runs_plan_ladders(struct vsph_report_runs *R, int all);
 
 /* Plan the runs of baseline.csv. */
-int vsph_report_runs_plan_baseline(struct vsph_report *R);
+int vsph_report_runs_plan_baseline(struct vsph_report_runs *R);
 
 /* Free a run's loaded data. */
 void vsph_report_runs_free(struct vsph_jobs_run *r);
 
 /* The square's reference (memoised in R; its runs through the cache). */
-int vsph_report_runs_richardson(struct vsph_report *R,
+int vsph_report_runs_richardson(struct vsph_report_runs *R,
                                 struct vsph_report_richardson *rr);
 
 /* The four runs behind it (tags "hdx2", "hdx3"). */
 extern const char *const vsph_report_runs_hdx[2][2];
-void vsph_report_runs_reference_specs(const struct vsph_report *R,
+void vsph_report_runs_reference_specs(const struct vsph_report_runs *R,
                                       struct vsph_jobs_spec rs[4]);
 
 /* The threshold of the onset (the reference's own uncertainty, its
@@ -232,7 +192,7 @@ const char *vsph_report_runs_colour(int f);
 void vsph_report_runs_style(char *buf, size_t len, int f, const char *more);
 
 /* The figures of scene @p sc's ladder (memoised in R). */
-int vsph_report_runs_ladder_figures(struct vsph_report *R, int sc,
+int vsph_report_runs_ladder_figures(struct vsph_report_runs *R, int sc,
                                     struct vsph_report_ladder *out);
 
 /* Baseline figures of the quick ladder's coarsest runs (tests reuse it):
@@ -250,73 +210,7 @@ struct vsph_report_baseline {
   int ok;          /* stability verdict */
 };
 size_t vsph_report_runs_baseline_count(void);
-int vsph_report_runs_baseline(struct vsph_report *R, size_t i,
+int vsph_report_runs_baseline(struct vsph_report_runs *R, size_t i,
                               struct vsph_report_baseline *b);
 
-/* -------------------------------------------------------- the parts */
-
-/* Each part that reads runs declares them first (its plan): the report
- * runs what is missing before any part is written, and a part that reads
- * a run its plan does not list fails (vsph_jobs_ready). */
-int vsph_report_scenes_plan(struct vsph_report *R);
-int vsph_report_stability_plan(struct vsph_report *R);
-int vsph_report_channel_plan(struct vsph_report *R);
-int vsph_report_contact_plan(struct vsph_report *R);
-int vsph_report_claims_plan(struct vsph_report *R);
-
-int vsph_report_tensors_write(struct vsph_report *R);
-int vsph_report_profiles_write(struct vsph_report *R);
-int vsph_report_scaling_write(struct vsph_report *R);
-int vsph_report_dissipation_write(struct vsph_report *R);
-int vsph_report_scenes_write(struct vsph_report *R);
-int vsph_report_convergence_write(struct vsph_report *R);
-int vsph_report_speed_write(struct vsph_report *R);
-/* The speed part's runs: the ladders, and the ladder's two coarsest
- * resolutions again at CFL 0.5, 1.5 and 2. */
-int vsph_report_speed_plan(struct vsph_report *R);
-int vsph_report_stability_write(struct vsph_report *R);
-int vsph_report_claims_write(struct vsph_report *R);
-
-/* The four verdict classes of the claims table, in the tally's order. */
-enum {
-  VSPH_REPORT_REPRODUCED = 0,
-  VSPH_REPORT_PARTLY,
-  VSPH_REPORT_DIFFERS,
-  VSPH_REPORT_NOT_TESTED,
-  VSPH_REPORT_NVERDICTS
-};
-
-/* A verdict's class, from its first words: "reproduced...", "partly...",
- * "differs..." or "not reproduced...", "not tested..."; -1 for any other
- * start (vsph_report_claim refuses such a verdict). */
-int vsph_report_claims_class(const char *verdict);
-
-/* Beside the quick ladder's finest run of each scene and formulation
- * (@p run, with its E_k error @p err: the square's against its Richardson
- * reference), the FULL plan's run (the paper's resolution) from the run
- * archive R->beside where it holds it, with whether it stands (judged by
- * R->judge): a table after the claims. */
-int vsph_report_claims_beside(
-    struct vsph_report *R,
-    const struct vsph_jobs_run run[][VSPH_VISCOUS_PAPER_COUNT],
-    const double err[][VSPH_VISCOUS_PAPER_COUNT]);
-
-/* The tally of R->claims by class, then the claims table (each verdict
- * marked with its class's word, symbol and colour class), into R->md. */
-int vsph_report_claims_table(struct vsph_report *R);
-int vsph_report_patch_write(struct vsph_report *R);
-
-/* The claims of Zheng, Ma & Shao (2018) for section 9 (report_patch.c). */
-int vsph_report_patch_claims(struct vsph_report *R);
-
-/* Section 11: internal flows and the other formulations
- * (report_channel.c), and their claims. */
-int vsph_report_channel_write(struct vsph_report *R);
-int vsph_report_channel_claims(struct vsph_report *R);
-
-/* Section 12: contact SPH and its numerical viscosity
- * (report_contact.c), and its claims. */
-int vsph_report_contact_write(struct vsph_report *R);
-int vsph_report_contact_claims(struct vsph_report *R);
-
-#endif /* VSPH_REPORTS_REPORT_INTERNAL_H */
+#endif /* VSPH_REPORTS_REPORT_RUNS_H */

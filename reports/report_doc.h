@@ -1,0 +1,57 @@
+#ifndef VSPH_REPORTS_REPORT_DOC_H
+#define VSPH_REPORTS_REPORT_DOC_H
+
+/* The report being written (report.c): what a part writes with (its
+ * Markdown, the claims table, prose blocks and figures). Within reports/
+ * and the tests only. */
+
+#include <gsl/gsl_integration.h>
+#include <stddef.h>
+#include <stdio.h>
+
+#include "../runs/archive.h"
+#include "report_runs.h"
+#include "text.h"
+
+struct vsph_plot;
+
+/* One row of the claims table. */
+struct vsph_report_claim {
+  char claim[256], paper[256], ours[320], verdict[256];
+  char see[32]; /* the part that shows it ("scenes"): the link in the table */
+};
+
+/* The report being written: its folder and Markdown, the claims table,
+ * the prose blocks' values, and the runs it reads (R->runs). */
+struct vsph_report {
+  const char *dir;                    /* output folder */
+  FILE *md;                           /* the current part's Markdown */
+  gsl_integration_workspace *wo, *wi; /* quadrature workspaces */
+  struct vsph_report_claim *claims;   /* the claims table (growing) */
+  const char *claim_see;              /* part of the claims added next */
+  size_t nclaims, cap_claims;
+  struct vsph_text_vars tv; /* scratch values for the prose blocks */
+  double load[2][3];        /* load averages before and after (run.json) */
+  const char *beside;       /* a run archive whose FULL runs the summary shows
+                               beside the quick ones, or NULL */
+  const struct vsph_archive_judge *judge; /* what judges its entries */
+  struct vsph_report_runs runs;           /* what reads the runs */
+};
+
+/* Add a row to the claims table (copied). */
+int vsph_report_claim(struct vsph_report *R, const char *claim,
+                      const char *paper, const char *ours, const char *verdict);
+
+/* Write prose block NAME with the values in R->tv, then clear them. */
+int vsph_report_say(struct vsph_report *R, const char *name);
+
+/* Render figure @p pl and put it in the Markdown with its caption. */
+int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
+                       const char *caption);
+
+/* The same with the caption from prose block NAME and the values in R->tv
+ * (then cleared). */
+int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
+                           const char *name);
+
+#endif /* VSPH_REPORTS_REPORT_DOC_H */
