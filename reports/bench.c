@@ -218,20 +218,69 @@ static void busy_stop(const pid_t *pids, int k) {
     }
 }
 
+/* One case of the solver bench. */
+struct bench_case {
+  const char *what;
+  const struct vsph_scene_type *type;
+  int form;
+  double delta;
+  int step;    /* 0: one force evaluation, 1: one whole RK4 step */
+  int contact; /* contact SPH instead of the viscous form */
+  int gather;  /* the per-particle gather instead of the symmetric sweep */
+  int cubic;   /* 1: the cubic B-spline at Basa's h/dx 1.5699 (a gather
+                  of its own), 2: the same through the general loop */
+};
+
+/* One case: its force evaluation or step timed on 1 and 2 threads. */
+static int bench_case(FILE *out, const struct bench_case *bc, size_t res) {
+  struct solver_arg a = {
+      .s = bench_run(bc->type, bc->form, res, bc->delta, bc->contact,
+                     bc->cubic ? &vsph_cubic_type : &vsph_gaussian_type,
+                     bc->cubic ? 1.5699 : VSPH_CONSTS_HDX)};
+  if (!a.s) {
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the bench's run");
+  }
+  a.s->props.eq.loop_general = bc->cubic == 2;
+  struct vsph_particles *p = a.s->p;
+  a.dt = vsph_integrate_dt(a.s);
+  vsph_integrate_step(a.s, a.dt); /* builds cells and ghosts, warms up */
+  double *buf = malloc(3 * p->n * sizeof *buf);
+  if (!buf) {
+    vsph_integrate_free(a.s);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the bench's buffers");
+  }
+  a.out.sweep = bc->gather ? NULL : a.s->sweep;
+  a.out.drho = buf;
+  a.out.acc[0] = buf + p->n;
+  a.out.acc[1] = buf + 2 * p->n;
+  const size_t n = a.s->n_fluid;
+  const double bytes = bc->step && bc->delta == 0.0
+                           ? peak_bytes_per_particle(bc->type, bc->form)
+                           : 0.0;
+  for (int thr = 1; thr <= 2; thr++) {
+    omp_set_num_threads(thr);
+    double t, med, inter;
+    const double passes = vsph_viscous_passes(bc->form);
+    if (bc->step) {
+      t = timed(7, step_once, &a, &med);
+      inter = passes * (double)a.s->interactions;
+    } else {
+      rhs_once(&a);
+      inter = passes * (double)a.out.interactions;
+      t = timed(15, rhs_once, &a, &med);
+    }
+    print_row(out, bc->what, n, thr, t, med, inter,
+              (bc->step ? 4.0 : 1.0) * (double)n, bytes);
+  }
+  free(buf);
+  vsph_integrate_free(a.s);
+  return VSPH_OK;
+}
+
 static int bench_solver(FILE *out, int busy) {
   /* the peer's size: 205^2 = 42025 particles */
   const size_t res = 205;
-  struct {
-    const char *what;
-    const struct vsph_scene_type *type;
-    int form;
-    double delta;
-    int step;    /* 0: one force evaluation, 1: one whole RK4 step */
-    int contact; /* contact SPH instead of the viscous form */
-    int gather;  /* the per-particle gather instead of the symmetric sweep */
-    int cubic;   /* 1: the cubic B-spline at Basa's h/dx 1.5699 (a gather
-                    of its own), 2: the same through the general loop */
-  } cases[] = {
+  static const struct bench_case cases[] = {
       {"force MGF", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0, 0, 0,
        0, 0},
       {"force MGF, gather", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0,
@@ -280,50 +329,7 @@ static int bench_solver(FILE *out, int busy) {
   busy_start(pids, busy);
   int st = VSPH_OK;
   for (size_t c = 0; c < sizeof cases / sizeof cases[0] && !st; c++) {
-    struct solver_arg a = {
-        .s = bench_run(cases[c].type, cases[c].form, res, cases[c].delta,
-                       cases[c].contact,
-                       cases[c].cubic ? &vsph_cubic_type : &vsph_gaussian_type,
-                       cases[c].cubic ? 1.5699 : VSPH_CONSTS_HDX)};
-    if (!a.s) {
-      st = VSPH_ENOMEM;
-      break;
-    }
-    a.s->props.eq.loop_general = cases[c].cubic == 2;
-    struct vsph_particles *p = a.s->p;
-    a.dt = vsph_integrate_dt(a.s);
-    vsph_integrate_step(a.s, a.dt); /* builds cells and ghosts, warms up */
-    double *buf = malloc(3 * p->n * sizeof *buf);
-    if (!buf) {
-      vsph_integrate_free(a.s);
-      VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the bench's buffers");
-    }
-    a.out.sweep = cases[c].gather ? NULL : a.s->sweep;
-    a.out.drho = buf;
-    a.out.acc[0] = buf + p->n;
-    a.out.acc[1] = buf + 2 * p->n;
-    const size_t n = a.s->n_fluid;
-    const double bytes =
-        cases[c].step && cases[c].delta == 0.0
-            ? peak_bytes_per_particle(cases[c].type, cases[c].form)
-            : 0.0;
-    for (int thr = 1; thr <= 2; thr++) {
-      omp_set_num_threads(thr);
-      double t, med, inter;
-      const double passes = vsph_viscous_passes(cases[c].form);
-      if (cases[c].step) {
-        t = timed(7, step_once, &a, &med);
-        inter = passes * (double)a.s->interactions;
-      } else {
-        rhs_once(&a);
-        inter = passes * (double)a.out.interactions;
-        t = timed(15, rhs_once, &a, &med);
-      }
-      print_row(out, cases[c].what, n, thr, t, med, inter,
-                (cases[c].step ? 4.0 : 1.0) * (double)n, bytes);
-    }
-    free(buf);
-    vsph_integrate_free(a.s);
+    st = bench_case(out, &cases[c], res);
   }
   busy_stop(pids, busy);
   omp_set_num_threads(2);

@@ -463,6 +463,105 @@ static int mark_archived(struct vsph_report *R,
   return st;
 }
 
+/* Before the parts: the folder locked and unsealed, then the missing
+ * runs made (unless only assembling, which checks they are all cached). */
+static int make_runs(struct vsph_report *R, const struct vsph_report_props *rp,
+                     const char *parts_dir) {
+  int st = VSPH_OK;
+  if (rp->mode == VSPH_REPORT_ASSEMBLE) st = all_cached(R);
+  if (!st) st = lock_dir(rp->dir);
+  if (!st) st = vsph_files_mkdir(parts_dir);
+  char seal_path[700]; /* nothing vouches for the folder while it changes */
+  snprintf(seal_path, sizeof seal_path, "%s/key.txt", rp->dir);
+  if (!st && remove(seal_path) != 0 && errno != ENOENT) {
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot remove %s: %s",
+                       seal_path, strerror(errno));
+    st = VSPH_EIO;
+  }
+  R->runs.made_by = rp->mode == VSPH_REPORT_POOL ? "child processes"
+                    : rp->mode == VSPH_REPORT_ASSEMBLE
+                        ? "nothing: assembly only"
+                        : "this process";
+  if (!st && rp->mode != VSPH_REPORT_ASSEMBLE) {
+    for (size_t k = 0; k < R->runs.jobs.n; k++)
+      R->runs.made += !R->runs.jobs.job[k].cached;
+    const double t_runs = omp_get_wtime();
+    if (rp->writing) *rp->writing = 1; /* runs stop after a checkpoint */
+    st = run_missing(R, rp);
+    if (rp->writing) *rp->writing = 0; /* parts: a stop ends at once */
+    R->runs.runs_wall = omp_get_wtime() - t_runs;
+  }
+  return st;
+}
+
+/* A budgeted sitting's end: what is cached, archived and left. */
+static void say_left(const struct vsph_report *R,
+                     const struct vsph_report_props *rp, int st) {
+  size_t left = 0, kept = 0;
+  for (size_t k = 0; k < R->runs.jobs.n; k++) {
+    kept += (size_t)R->runs.jobs.job[k].archived;
+    left += !R->runs.jobs.job[k].cached && !R->runs.jobs.job[k].archived;
+  }
+  if (st == VSPH_OK || st == VSPH_EINTR)
+    fprintf(stderr,
+            "vsph report: %zu of the %zu runs are cached, %zu stand in "
+            "%s (not run again), %zu missing or unfinished (%.0f s of "
+            "runs); not assembled\n",
+            R->runs.jobs.n - left - kept, R->runs.jobs.n, kept,
+            rp->skip_archive ? rp->skip_archive : "no archive", left,
+            R->runs.runs_wall);
+}
+
+/* The seal, last (runs/folder): the report's key, then each file of the
+ * folder's top with its size and CRC-32. */
+static int seal(const struct vsph_report *R, unsigned long want) {
+  char seal[256];
+  size_t len = (size_t)snprintf(
+      seal, sizeof seal, "vsph %s %s\nreport %s:", VSPH_VERSION,
+      vsph_source_hash_id, R->runs.full ? "full" : "quick");
+  for (size_t p = 0; p < NPARTS && len < sizeof seal - 40; p++)
+    if (want >> p & 1)
+      len +=
+          (size_t)snprintf(seal + len, sizeof seal - len, " %s", PARTS[p].name);
+  snprintf(seal + len, sizeof seal - len, "\n");
+  return vsph_folder_seal(&report_folder, seal, NULL);
+}
+
+/* The parts, then report.md and report.html, run.json and the seal. */
+static int write_parts(struct vsph_report *R, unsigned long want,
+                       const char *parts_dir, double t_all) {
+  int st = VSPH_OK;
+  R->wo = gsl_integration_workspace_alloc(1000);
+  R->wi = gsl_integration_workspace_alloc(1000);
+  if (!R->wo || !R->wi) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot allocate workspaces");
+  }
+  double wall[NPARTS] = {0};
+  int cached[NPARTS] = {0};
+  char key[128];
+  snprintf(key, sizeof key, "vsph %s %s, %s\n", VSPH_VERSION,
+           vsph_source_hash_id, R->runs.full ? "full" : "quick");
+  for (size_t p = 0; p < NPARTS && !st; p++)
+    if (want >> p & 1)
+      st = run_part(R, p, parts_dir, key, &cached[p], &wall[p]);
+  /* the baseline comes with the scenes part (its coarsest runs) */
+  const int scenes = vsph_report_part_find("scenes");
+  if (!st && (want >> scenes & 1) && !R->runs.scenes) st = write_baseline(R);
+  const time_t now = time(NULL);
+  char stamp[64];
+  strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
+  if (!st) st = assemble(R, parts_dir, want, cached, wall, stamp);
+  if (!st)
+    st = write_run_json(R, want, cached, wall, stamp, omp_get_wtime() - t_all);
+  if (!st) st = seal(R, want);
+  if (!st)
+    fprintf(stderr,
+            "vsph report: wrote %s/report.md and report.html (%.0f s)\n",
+            R->dir, omp_get_wtime() - t_all);
+  return st;
+}
+
 int vsph_report_write(const struct vsph_report_props *rp) {
   const unsigned long all = (1ul << NPARTS) - 1;
   const unsigned long want = rp->parts ? rp->parts & all : all;
@@ -507,88 +606,14 @@ int vsph_report_write(const struct vsph_report_props *rp) {
     free(R);
     return st;
   }
-  if (!st && rp->mode == VSPH_REPORT_ASSEMBLE) st = all_cached(R);
-  if (!st) st = lock_dir(rp->dir);
-  if (!st) st = vsph_files_mkdir(parts_dir);
-  char seal_path[700]; /* nothing vouches for the folder while it changes */
-  snprintf(seal_path, sizeof seal_path, "%s/key.txt", rp->dir);
-  if (!st && remove(seal_path) != 0 && errno != ENOENT) {
-    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot remove %s: %s",
-                       seal_path, strerror(errno));
-    st = VSPH_EIO;
-  }
-  R->runs.made_by = rp->mode == VSPH_REPORT_POOL ? "child processes"
-                    : rp->mode == VSPH_REPORT_ASSEMBLE
-                        ? "nothing: assembly only"
-                        : "this process";
-  if (!st && rp->mode != VSPH_REPORT_ASSEMBLE) {
-    for (size_t k = 0; k < R->runs.jobs.n; k++)
-      R->runs.made += !R->runs.jobs.job[k].cached;
-    const double t_runs = omp_get_wtime();
-    if (rp->writing) *rp->writing = 1; /* runs stop after a checkpoint */
-    st = run_missing(R, rp);
-    if (rp->writing) *rp->writing = 0; /* parts: a stop ends at once */
-    R->runs.runs_wall = omp_get_wtime() - t_runs;
-  }
+  if (!st) st = make_runs(R, rp, parts_dir);
   if (rp->budget_s > 0.0) { /* runs only: say what is left */
-    size_t left = 0, kept = 0;
-    for (size_t k = 0; k < R->runs.jobs.n; k++) {
-      kept += (size_t)R->runs.jobs.job[k].archived;
-      left += !R->runs.jobs.job[k].cached && !R->runs.jobs.job[k].archived;
-    }
-    if (st == VSPH_OK || st == VSPH_EINTR)
-      fprintf(stderr,
-              "vsph report: %zu of the %zu runs are cached, %zu stand in "
-              "%s (not run again), %zu missing or unfinished (%.0f s of "
-              "runs); not assembled\n",
-              R->runs.jobs.n - left - kept, R->runs.jobs.n, kept,
-              rp->skip_archive ? rp->skip_archive : "no archive", left,
-              R->runs.runs_wall);
+    say_left(R, rp, st);
     vsph_jobs_plan_free(&R->runs.jobs);
     free(R);
     return st;
   }
-  R->wo = gsl_integration_workspace_alloc(1000);
-  R->wi = gsl_integration_workspace_alloc(1000);
-  if (!R->wo || !R->wi) {
-    st = VSPH_ENOMEM;
-    vsph_status_report(st, __FILE__, __LINE__, "cannot allocate workspaces");
-  }
-  double wall[NPARTS] = {0};
-  int cached[NPARTS] = {0};
-  char key[128];
-  snprintf(key, sizeof key, "vsph %s %s, %s\n", VSPH_VERSION,
-           vsph_source_hash_id, R->runs.full ? "full" : "quick");
-  for (size_t p = 0; p < NPARTS && !st; p++)
-    if (want >> p & 1)
-      st = run_part(R, p, parts_dir, key, &cached[p], &wall[p]);
-  /* the baseline comes with the scenes part (its coarsest runs) */
-  const int scenes = vsph_report_part_find("scenes");
-  if (!st && (want >> scenes & 1) && !R->runs.scenes) st = write_baseline(R);
-  const time_t now = time(NULL);
-  char stamp[64];
-  strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
-  if (!st) st = assemble(R, parts_dir, want, cached, wall, stamp);
-  if (!st)
-    st = write_run_json(R, want, cached, wall, stamp, omp_get_wtime() - t_all);
-  /* the seal last (runs/folder): the report's key, then each file of the
-   * folder's top with its size and CRC-32 */
-  if (!st) {
-    char seal[256];
-    size_t len = (size_t)snprintf(
-        seal, sizeof seal, "vsph %s %s\nreport %s:", VSPH_VERSION,
-        vsph_source_hash_id, R->runs.full ? "full" : "quick");
-    for (size_t p = 0; p < NPARTS && len < sizeof seal - 40; p++)
-      if (want >> p & 1)
-        len += (size_t)snprintf(seal + len, sizeof seal - len, " %s",
-                                PARTS[p].name);
-    snprintf(seal + len, sizeof seal - len, "\n");
-    st = vsph_folder_seal(&report_folder, seal, NULL);
-  }
-  if (!st)
-    fprintf(stderr,
-            "vsph report: wrote %s/report.md and report.html (%.0f s)\n",
-            R->dir, omp_get_wtime() - t_all);
+  if (!st) st = write_parts(R, want, parts_dir, t_all);
   gsl_integration_workspace_free(R->wo);
   gsl_integration_workspace_free(R->wi);
   free(R->claims);
