@@ -34,6 +34,7 @@ struct vsph_laplacian_props {
   double perturb;     /*!< each coordinate shifted by U(-a, a) dx */
   unsigned long seed; /*!< seed of that shift (mt19937) */
   double eta;         /*!< regulariser eta / h of the hybrid forms */
+  double line_x;      /*!< the line x = line_x of the line errors */
   double max_memory;  /*!< refuse a set estimated to need more (GiB) */
   double max_pairs;   /*!< refuse a set estimated to need more neighbour
                            interactions (n^d pi (kappa hdx)^d in 2-D) */
@@ -49,6 +50,11 @@ struct vsph_laplacian_result {
   double err_paper;   /*!< err_exact dx^2: the scale of the paper's tables */
   double abs_max;     /*!< max |num - exact| */
   double ref_max;     /*!< max |exact| (0 for the linear field) */
+  /** the paper's Fig. 2 sampling: the particles within (1/2 + perturb) dx
+   *  of the line x = line_x (the nearest one or two lattice columns) */
+  size_t n_line;           /*!< how many */
+  double err_line_literal; /*!< eq. (21) over them, times dx^2 */
+  double err_line_paper;   /*!< the same with the exact denominator */
 };
 
 /** @brief Name of form @p form ("visc01" ...), or "unknown". */

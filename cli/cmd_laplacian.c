@@ -50,6 +50,10 @@ static int print_table(const void *w) {
   printf("paper's scale        %.6e   the above times dx^2\n", r->err_paper);
   printf("max |num - exact|    %.6e   (max |exact| %.6e)\n", r->abs_max,
          r->ref_max);
+  printf(
+      "on the line x = %g   %.6e   eq. (21) times dx^2 over its %zu "
+      "particles (%.6e with the exact denom.)\n",
+      lp->line_x, r->err_line_literal, r->n_line, r->err_line_paper);
   return 0;
 }
 
@@ -69,7 +73,7 @@ int vsph_cmd_laplacian_main(int argc, char **argv) {
       "the paper's tables, docs/theory.md section 7).",
       "JSON with keys form, field, kernel, dim, n, hdx, perturb, seed, eta, "
       "n_eval, n_total, dx, h, err_literal, err_exact, err_paper, abs_max, "
-      "ref_max",
+      "ref_max, line_x, n_line, err_line_literal, err_line_paper",
       "Laplacian",
       vsph_laplacian_params,
       init,

@@ -228,5 +228,9 @@ cJSON *vsph_json_laplacian(const struct vsph_laplacian_props *lp,
   vsph_json_number(o, "err_paper", r->err_paper);
   cJSON_AddNumberToObject(o, "abs_max", r->abs_max);
   cJSON_AddNumberToObject(o, "ref_max", r->ref_max);
+  cJSON_AddNumberToObject(o, "line_x", lp->line_x);
+  cJSON_AddNumberToObject(o, "n_line", (double)r->n_line);
+  vsph_json_number(o, "err_line_literal", r->err_line_literal);
+  vsph_json_number(o, "err_line_paper", r->err_line_paper);
   return o;
 }
