@@ -100,6 +100,16 @@ double vsph_series_tail_mean(const double *t, const double *y, size_t n,
   return s / (double)m; /* m >= 1: the last row is in */
 }
 
+double vsph_series_tail_range(const double *t, const double *y, size_t n,
+                              double frac) {
+  if (n == 0) return (double)NAN;
+  const double t0 = frac * t[n - 1];
+  double lo = INFINITY, hi = -INFINITY;
+  for (size_t k = 0; k < n; k++)
+    if (t[k] >= t0) lo = fmin(lo, y[k]), hi = fmax(hi, y[k]);
+  return hi - lo; /* the last row is in */
+}
+
 void vsph_series_plateau(const double *t, const double *E, const double *R,
                          const double *v, size_t n, double scale, double lo,
                          double hi, double *work, size_t cap, double *spread,

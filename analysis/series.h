@@ -81,6 +81,12 @@ double vsph_series_failure(const double *t, const double *e, size_t n,
 double vsph_series_tail_mean(const double *t, const double *y, size_t n,
                              double frac);
 
+/** @brief The spread max - min of y over the same rows as
+ *  vsph_series_tail_mean (t[k] >= @p frac t[n-1]): the swing of a steady
+ *  state's value over its averaging window; NaN for n = 0. */
+double vsph_series_tail_range(const double *t, const double *y, size_t n,
+                              double frac);
+
 /** @brief Over the rows whose scaled time scale t[k] lies in [lo, hi] and
  *  whose R[k] > 0: the spread (max - min)/((max + min)/2) of E[k]/R[k]
  *  into *spread, and the median of v[k] over the first @p cap of those

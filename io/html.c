@@ -74,6 +74,7 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
           ".v{display:inline-block;padding:0 .35em;border-radius:.25em;"
           "font-weight:bold;white-space:nowrap}\n"
           ".v-rep{background:#d4edda;color:#14532d}\n"
+          ".v-sub{background:#d1ecf1;color:#0c5460}\n"
           ".v-part{background:#fff3cd;color:#7a4d00}\n"
           ".v-diff{background:#f8d7da;color:#842029}\n"
           ".v-none{background:#e2e3e5;color:#41464b}\n"

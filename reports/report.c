@@ -96,14 +96,17 @@ int vsph_report_part_find(const char *name) {
 /* --------------------------------------------------------------- helpers */
 
 int vsph_report_claim(struct vsph_report *R, const char *claim,
-                      const char *paper, const char *ours,
+                      const char *paper, const char *ours, const char *setup,
                       const char *verdict) {
   /* every verdict says its class first, so the tally cannot misread one */
   if (vsph_report_claims_class(verdict) < 0)
     VSPH_FAIL(VSPH_EINVAL,
               "claim '%.60s': its verdict '%.40s' does not start with "
-              "reproduced, partly, differs, not reproduced or not tested",
+              "reproduced, reproduced on a substitute, partly, differs, not "
+              "reproduced or not tested",
               claim, verdict);
+  if (!setup || !*setup)
+    VSPH_FAIL(VSPH_EINVAL, "claim '%.60s' says nothing of its set-up", claim);
   if (R->nclaims == R->cap_claims) {
     const size_t cap = R->cap_claims ? 2 * R->cap_claims : 32;
     struct vsph_report_claim *c = realloc(R->claims, cap * sizeof *c);
@@ -116,6 +119,7 @@ int vsph_report_claim(struct vsph_report *R, const char *claim,
   snprintf(c->paper, sizeof c->paper, "%s", paper);
   snprintf(c->ours, sizeof c->ours, "%s", ours);
   snprintf(c->verdict, sizeof c->verdict, "%s", verdict);
+  snprintf(c->setup, sizeof c->setup, "%s", setup);
   snprintf(c->see, sizeof c->see, "%s", R->claim_see ? R->claim_see : "");
   return VSPH_OK;
 }

@@ -7,18 +7,21 @@
 
 #include "report_doc.h"
 
-/* The four verdict classes of the claims table, in the tally's order. */
+/* The five verdict classes of the claims table, in the tally's order
+ * (the rule: docs/theory.md section 12). */
 enum {
   VSPH_REPORT_REPRODUCED = 0,
+  VSPH_REPORT_SUBSTITUTE, /* reproduced on a substitute set-up */
   VSPH_REPORT_PARTLY,
   VSPH_REPORT_DIFFERS,
   VSPH_REPORT_NOT_TESTED,
   VSPH_REPORT_NVERDICTS
 };
 
-/* A verdict's class, from its first words: "reproduced...", "partly...",
- * "differs..." or "not reproduced...", "not tested..."; -1 for any other
- * start (vsph_report_claim refuses such a verdict). */
+/* A verdict's class, from its first words: "reproduced on a
+ * substitute...", "reproduced...", "partly...", "differs..." or "not
+ * reproduced...", "not tested..."; -1 for any other start
+ * (vsph_report_claim refuses such a verdict). */
 int vsph_report_claims_class(const char *verdict);
 
 /* Beside the quick ladder's finest run of each scene and formulation

@@ -750,6 +750,10 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
       "0.0894 Z D0 (Wendland C2) and 0.1078 Z D0 (B-spline) at alpha = 0.5 "
       "(Parshikov Table 1)",
       "0.0894 +- 0.002, 0.1078 +- 0.001", ours,
+      "the paper's shear test (its box, lead, alpha 0.5, D0 10 nm, +-500 "
+      "m/s); a 3-D lattice periodic in y and z [reconstructed depth]; time "
+      "integration [reconstructed: the paper gives none]; eta_num from the "
+      "control-surface fit at the last profile time",
       fabs(eb) < 0.03 && fabs(ew) < 0.03   ? "reproduced (within 3 %)"
       : fabs(eb) < 0.08 && fabs(ew) < 0.08 ? "partly: within 8 %; the static "
                                              "lattice gives the lattice sum "
@@ -773,6 +777,7 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
         "eta_num is linear in Z and D0 and almost independent of the shear "
         "velocity (50-500 m/s) (Parshikov Figs. 3-4)",
         "linear in Z and D0; \"almost independent\" of U0", ours,
+        "as the row above, with the paper's materials and speeds",
         fabs(r50) < 0.03 && spread < 0.05 && fabs(rd) < 0.05
             ? "reproduced"
             : "partly: see section 11");
@@ -782,15 +787,35 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
     dev = fmax(dev, fabs(coef(&cr->r[A[k]]) /
                              vsph_materials_eta_num_fit(CS[A[k]].alpha) -
                          1.0));
+  /* measured over (37) from the smallest alpha to the largest, and
+   * whether it grows at every step */
+  double q[5];
+  int grows = 1;
+  for (int k = 0; k < 5; k++) {
+    q[k] = coef(&cr->r[A[k]]) / vsph_materials_eta_num_fit(CS[A[k]].alpha);
+    if (k) grows &= q[k] > q[k - 1];
+  }
   snprintf(ours, sizeof ours,
-           "alpha = 0.5-1.0: measured within %.0f %% of (37) at every alpha",
-           100 * dev);
+           "alpha = 0.5-1.0: measured over (37) %.3f, %.3f, %.3f, %.3f, %.3f "
+           "(largest departure %.0f %%)",
+           q[0], q[1], q[2], q[3], q[4], 100 * dev);
+  char va[220];
+  if (dev < 0.05) /* the fit's own scatter in Fig. 4 is a few per cent */
+    snprintf(va, sizeof va, "reproduced (within 5 %%)");
+  else if (dev < 0.15)
+    snprintf(va, sizeof va,
+             "partly: within %.0f %% at every alpha, but the ratio %s from "
+             "%.2f to %.2f: the measured slope is steeper than (37)'s (the "
+             "lattice sums grow alike, section 11)",
+             100 * dev, grows ? "grows steadily" : "drifts", q[0], q[4]);
+  else
+    snprintf(va, sizeof va, "differs");
   if (!st)
     st = vsph_report_claim(R,
                            "eta_num(alpha) follows the two-piece fit of eq. "
                            "(37) (Parshikov Fig. 4)",
                            "two linear pieces meeting at alpha = 0.55", ours,
-                           dev < 0.15 ? "reproduced (within 15 %)" : "differs");
+                           "as the first row, at alpha 0.5-1.0", va);
   snprintf(ours, sizeof ours,
            "the fitted nu varies by %.1f %% over t = 1.5-4.5 ns (zeta = 0) and "
            "%.1f %% over 2.3-14 ns (zeta = 1)",
@@ -801,6 +826,7 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
         "The profiles are self-similar in x sqrt(t0/t), with and without the "
         "correction (Parshikov Figs. 3a, 6b)",
         "profiles coincide", ours,
+        "as the first row; zeta = 1 with eta_num of (37)",
         nb->ss_spread[0] < 5 && nb->ss_spread[1] < 10 ? "reproduced"
                                                       : "partly");
   return st;
@@ -821,6 +847,9 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
         "With zeta = 1 the lead shear layer follows erf with the physical "
         "eta = 2.3 mPa s (Parshikov Fig. 6a)",
         "coincides with theory at zeta = 1", ours,
+        "the paper's lead shear flow; the correction's placement in the "
+        "momentum equation only [reconstructed: eqs. 33 and 36 as printed "
+        "lose the divergence and the viscous work]",
         fabs(e1 / 2.3 - 1.0) < 0.25
             ? "reproduced (within 25 %)"
             : "partly: the correction removes eq. (37)'s eta_num, while the "
@@ -836,6 +865,9 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
         "moves at the effusivity-weighted velocity of eq. (27) (Parshikov Fig. "
         "7)",
         "U* = 0.669 U0 (eta_paraffin = 80 mPa s)", ours,
+        "U0 = 10 m/s [reconstructed: not given; the problem is linear in "
+        "it]; paraffin's eta = 80 mPa s [reconstructed: the handbook gives "
+        "25-80]; U* fitted to the profiles",
         fabs(nb->ustar[0][0] - nb->ustar_exact[0]) < 0.05 ? "reproduced"
                                                           : "differs");
   if (!st)
@@ -846,6 +878,7 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
         "exact",
         "make check: |sum m a| <= 1e-12 sum m |a| on a disordered "
         "two-material set with the correction",
+        "none (a property of the scheme, checked on a set of the test's)",
         "reproduced (test)");
   return st;
 }
@@ -857,6 +890,17 @@ static int cyl_claims(struct vsph_report *R) {
   struct cyl cy;
   memset(&cy, 0, sizeof cy);
   st = cyl_load(R, &cy);
+  char vd[320];
+  if (cy.ratio[CY_Z1_40] < 1.35 && cy.ratio[CY_P1_40] < 1.35 &&
+      cy.ratio[CY_Z0_40] > 2.0)
+    snprintf(vd, sizeof vd,
+             "partly: the correction removes most of the excess (corrected "
+             "%.2f and %.2f against the paper's 1.33 and 1.13), but "
+             "uncorrected ours is %.1f times theory against its 3.40: ours "
+             "is 2-D and coarser, and the excess is linear in D0",
+             cy.ratio[CY_Z1_40], cy.ratio[CY_P1_40], cy.ratio[CY_Z0_40]);
+  else
+    snprintf(vd, sizeof vd, "differs");
   snprintf(ours, sizeof ours,
            "2-D, d/S = 0.5, times eq. (39): glycerol uncorrected %.2f (20 per "
            "diameter) and %.2f (30), corrected %.2f; paraffin %.2f and %.2f",
@@ -870,12 +914,10 @@ static int cyl_claims(struct vsph_report *R) {
         "Table "
         "2)",
         "glycerol 3.40 and 1.33, paraffin 2.50 and 1.13 (d/S = 0.5)", ours,
-        cy.ratio[CY_Z1_40] < 1.35 && cy.ratio[CY_P1_40] < 1.35 &&
-                cy.ratio[CY_Z0_40] > 2.0
-            ? "reproduced in kind: the uncorrected excess is the numerical "
-              "viscosity (linear in D0; ours is 2-D and coarser), the "
-              "correction removes most of it"
-            : "differs");
+        "a 2-D periodic array [reconstructed: the paper's dimension is not "
+        "stated] at 20 and 30 particles per diameter (coarser than the "
+        "paper's); eta_num of the correction the 2-D static lattice's",
+        vd);
   /* the 2-D analogue: 1/U against zeta at 20 per diameter, linear? */
   const double i0 = 1.0 / cy.U[CY_Z0_40], i5 = 1.0 / cy.U[CY_Z05_40],
                i1 = 1.0 / cy.U[CY_Z1_40];
@@ -892,12 +934,23 @@ static int cyl_claims(struct vsph_report *R) {
         "Falling-ball viscometer: 1/u linear in zeta, toward Stokes' law; "
         "zeta = 1 unstable (Parshikov Figs. 8-9)",
         "Fig. 8b (3-D ball, 48 M particles)", ours,
+        "a held 2-D cylinder in a periodic array (the paper: a 3-D ball "
+        "falling through the fluid); none of the paper's quantities is "
+        "measured",
         fabs(lin) < 0.1
-            ? "partly: in the 2-D analogue 1/U falls with zeta "
-              "nearly linearly (section 11's cylinder table) and zeta = 1 is "
-              "stable, where the paper's ball was not; the 3-D "
-              "ball is not run"
-            : "differs");
+            ? "not tested: the 3-D ball (48 M particles) is not run; the 2-D "
+              "analogue (1/U nearly linear in zeta, zeta = 1 stable) is "
+              "context only"
+            : "not tested: the 3-D ball is not run (the 2-D analogue is not "
+              "linear in zeta)");
+  if (!st)
+    st = vsph_report_claim(
+        R,
+        "The falling ball and the shear test give consistent numerical "
+        "viscosities at three resolutions (Parshikov §5.4, Fig. 9)",
+        "consistent", "-", "the 3-D ball is not run",
+        "not tested: the 3-D ball at three resolutions (48 M particles at "
+        "the finest)");
   return st;
 }
 

@@ -18,6 +18,9 @@ struct vsph_plot;
 /* One row of the claims table. */
 struct vsph_report_claim {
   char claim[256], paper[256], ours[320], verdict[256];
+  char setup[600]; /* how our set-up, quantity and method differ from the
+                      paper's, and the [reconstructed] choices the verdict
+                      rests on ("none" where nothing differs) */
   char see[32]; /* the part that shows it ("scenes"): the link in the table */
 };
 
@@ -38,9 +41,12 @@ struct vsph_report {
   struct vsph_report_runs runs;           /* what reads the runs */
 };
 
-/* Add a row to the claims table (copied). */
+/* Add a row to the claims table (copied): the claim, the paper's figure,
+ * ours, the set-up differences (never empty: "none" where nothing
+ * differs) and the verdict, which starts with its class's word. */
 int vsph_report_claim(struct vsph_report *R, const char *claim,
-                      const char *paper, const char *ours, const char *verdict);
+                      const char *paper, const char *ours, const char *setup,
+                      const char *verdict);
 
 /* Write prose block NAME with the values in R->tv, then clear them. */
 int vsph_report_say(struct vsph_report *R, const char *name);

@@ -62,9 +62,12 @@ static int run(int form, size_t n, double perturb,
   return st;
 }
 
-/* Our Err (the paper's scale) of every form and resolution. */
+/* Our Err (the paper's scale) of every form and resolution: over the
+ * whole set (err), and eq. (21) as printed over the particles of the
+ * paper's Fig. 2 line x = 0.5 (line: the one or two lattice columns
+ * nearest it, our lattice being cell-centred **[reconstructed]**). */
 struct table {
-  double err[2][NRES][NLAP], wall[NRES][NLAP];
+  double err[2][NRES][NLAP], line[2][NRES][NLAP], wall[NRES][NLAP];
 };
 
 static int measure(struct table *t) {
@@ -75,6 +78,7 @@ static int measure(struct table *t) {
         struct vsph_laplacian_result r;
         st = run(f, RES[k], u ? PERTURB : 0.0, &r, u ? &t->wall[k][f] : NULL);
         t->err[u][k][f] = r.err_paper;
+        t->line[u][k][f] = r.err_line_literal;
       }
   return st;
 }
@@ -105,7 +109,9 @@ int vsph_report_patch_write(struct vsph_report *R) {
       break;
     FILE *c = vsph_csv_open(R->dir, name[u],
                             "n,visc01,visc02,visc03,visc04,paper_visc01,"
-                            "paper_visc02,paper_visc03,paper_visc04");
+                            "paper_visc02,paper_visc03,paper_visc04,"
+                            "line_visc01,line_visc02,line_visc03,"
+                            "line_visc04");
     if (!c) return VSPH_EIO;
     for (int k = 0; k < NRES; k++) {
       fprintf(R->md, "| %zu x %zu |", RES[k], RES[k]);
@@ -115,12 +121,26 @@ int vsph_report_patch_write(struct vsph_report *R) {
         fprintf(c, ",%.6e", t.err[u][k][f]);
       }
       for (int f = 0; f < NLAP; f++) fprintf(c, ",%.3e", PAPER[u][k][f]);
+      for (int f = 0; f < NLAP; f++) fprintf(c, ",%.6e", t.line[u][k][f]);
       fprintf(c, "\n");
       fprintf(R->md, "\n");
     }
     fprintf(R->md, "| slope vs N |");
     for (int f = 0; f < NLAP; f++)
       fprintf(R->md, " %.2f (%.2f) |", slope_n(&t.err[u][0][0], f),
+              slope_n(&PAPER[u][0][0], f));
+    fprintf(R->md, "\n\n");
+    if ((st = vsph_report_say(R, "patch.line_head"))) break;
+    for (int k = 0; k < NRES; k++) {
+      fprintf(R->md, "| %zu x %zu |", RES[k], RES[k]);
+      for (int f = 0; f < NLAP; f++)
+        fprintf(R->md, " %.3g (%.2f) |", t.line[u][k][f],
+                t.line[u][k][f] / PAPER[u][k][f]);
+      fprintf(R->md, "\n");
+    }
+    fprintf(R->md, "| slope vs N |");
+    for (int f = 0; f < NLAP; f++)
+      fprintf(R->md, " %.2f (%.2f) |", slope_n(&t.line[u][0][0], f),
               slope_n(&PAPER[u][0][0], f));
     fprintf(R->md, "\n\n");
     if ((st = vsph_csv_close(c, R->dir, name[u]))) break;
@@ -179,24 +199,63 @@ int vsph_report_patch_claims(struct vsph_report *R) {
   st = vsph_report_claim(
       R, "VISC-03 and VISC-04 coincide on uniform particles (Zheng Sec. 4)",
       "identical errors (Table 1)", ours,
+      "cubic spline, h = dx [reconstructed: h/dx not stated]; cell-centred "
+      "lattice padded with ghosts carrying f [reconstructed]",
       eq < 1e-6 ? "reproduced (identical to rounding)" : "differs");
-  const double s1 = slope_n(&t.err[0][0][0], 0),
-               s3 = slope_n(&t.err[0][0][0], 2);
+  /* the slopes on the paper's sampling (the Fig. 2 line), and how far
+   * each sampling's values are from Table 1: the largest factor either
+   * way over the forms and resolutions */
+  const double s1 = slope_n(&t.line[0][0][0], 0),
+               s3 = slope_n(&t.line[0][0][0], 2);
+  /* far[s][g]: sampling s (0 the line, 1 the whole set), forms g (0
+   * VISC-01/02, 1 VISC-03/04) */
+  double far[2][2] = {{1.0, 1.0}, {1.0, 1.0}};
+  for (int k = 0; k < NRES; k++)
+    for (int f = 0; f < NLAP; f++) {
+      const double a = t.line[0][k][f] / PAPER[0][k][f],
+                   b = t.err[0][k][f] / PAPER[0][k][f];
+      far[0][f / 2] = fmax(far[0][f / 2], fmax(a, 1.0 / a));
+      far[1][f / 2] = fmax(far[1][f / 2], fmax(b, 1.0 / b));
+    }
   snprintf(ours, sizeof ours,
-           "uniform, n = 20-100: slope of Err against N: VISC-01 %.2f, "
-           "VISC-02 %.2f, VISC-03 %.2f",
-           s1, slope_n(&t.err[0][0][0], 1), s3);
+           "uniform, n = 20-100, on the Fig. 2 line: slope of Err against N "
+           "VISC-01 %.2f, VISC-02 %.2f, VISC-03 %.2f; largest factor from "
+           "Table 1, VISC-01/02 and 03/04: on the line %.2f and %.2f, over "
+           "the whole set %.2f and %.2f",
+           s1, slope_n(&t.line[0][0][0], 1), s3, far[0][0], far[0][1],
+           far[1][0], far[1][1]);
+  /* independent reproductions of the table agree to about 10 % (the
+   * seeds' digest); a sampling reproduces it when every value is within */
+  const int line_ok = fmax(far[0][0], far[0][1]) <= 1.1,
+            all_ok = fmax(far[1][0], far[1][1]) <= 1.1;
+  char vu[320];
+  if (!(fabs(s1 + 1.1) < 0.2 && s3 < -1.7))
+    snprintf(vu, sizeof vu, "differs");
+  else if (line_ok || all_ok)
+    snprintf(vu, sizeof vu,
+             "reproduced on a substitute: the slopes, and Table 1's values "
+             "within 10 %% %s",
+             line_ok ? "on the Fig. 2 line" : "over the whole set");
+  else {
+    /* for each pair of forms, the sampling nearer the table */
+    const int n0 = far[1][0] < far[0][0], n1 = far[1][1] < far[0][1];
+    snprintf(vu, sizeof vu,
+             "partly: the slopes agree, but no one sampling reproduces Table "
+             "1 within 10 %%: VISC-01/02 come within %.2f %s, VISC-03/04 "
+             "within %.2f %s",
+             far[n0][0], n0 ? "over the whole set" : "on the Fig. 2 line",
+             far[n1][1], n1 ? "over the whole set" : "on the Fig. 2 line");
+  }
   if (!st)
     st = vsph_report_claim(
         R,
         "Uniform particles: VISC-01/02 converge at about first order, "
         "VISC-03/04 at second order (Zheng Sec. 4)",
         "k = 1.11 (VISC-01), 2.10 (VISC-03) from Table 1", ours,
-        fabs(s1 + 1.1) < 0.2 && s3 < -1.7
-            ? "reproduced; the tabulated Err is the relative error times "
-              "dx^2, so first order there means no convergence of the "
-              "relative error (docs/theory.md section 7)"
-            : "differs");
+        "as above; the Fig. 2 line is the two lattice columns dx/2 either "
+        "side of x = 0.5 [reconstructed]; eq. (21) times dx^2 (the scale "
+        "the tables agree with)",
+        vu);
   int best = 0;
   for (int f = 1; f < NLAP; f++)
     if (t.err[1][4][f] < t.err[1][4][best]) best = f;
@@ -212,8 +271,11 @@ int vsph_report_patch_claims(struct vsph_report *R) {
         "Non-uniform particles: VISC-03 is the most accurate, VISC-04 "
         "degrades to VISC-01, VISC-02 in between (Zheng Sec. 4)",
         "Table 2", ours,
+        "each coordinate shifted by U(-0.2, 0.2) dx [reconstructed: the "
+        "printed 0.5 dx gives 2-8 times Table 2]; whole-set metric; as above "
+        "otherwise",
         best == 2 && fabs(g1 - 1) < 0.1 && t.err[1][4][1] < t.err[1][4][0]
-            ? "reproduced"
+            ? "reproduced on a substitute (the ranking)"
             : "differs");
   return st;
 }

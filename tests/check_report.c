@@ -17,7 +17,6 @@
 #include "../solver/scene.h"
 #include "check_suites.h"
 
-/* Each verdict form the claims code writes falls in its class. */
 /* The scenes' names: one list, the ladders'. The quick and the FULL
  * ladder name the same scenes in the same order, and each is a scene the
  * solver knows. */
@@ -36,6 +35,9 @@ START_TEST(test_scene_names) {
 }
 END_TEST
 
+/* Each verdict form the claims code writes falls in its class (the rule
+ * of docs/theory.md section 13: "reproduced on a substitute" is its own
+ * class, not "reproduced"). */
 START_TEST(test_verdict_classes) {
   static const struct {
     const char *verdict;
@@ -43,6 +45,9 @@ START_TEST(test_verdict_classes) {
   } cases[] = {
       {"reproduced (within 3 %)", VSPH_REPORT_REPRODUCED},
       {"reproduced at this resolution", VSPH_REPORT_REPRODUCED},
+      {"reproduced on a substitute: Adami's walls", VSPH_REPORT_SUBSTITUTE},
+      {"reproduced on a substitute", VSPH_REPORT_SUBSTITUTE},
+      {"reproduced on a", VSPH_REPORT_REPRODUCED},
       {"partly: within 8 %", VSPH_REPORT_PARTLY},
       {"partly, at H/dx = 80: MEAF fails", VSPH_REPORT_PARTLY},
       {"not reproduced at H/dx = 80", VSPH_REPORT_DIFFERS},
@@ -59,8 +64,11 @@ START_TEST(test_verdict_classes) {
   struct vsph_report R;
   memset(&R, 0, sizeof R);
   vsph_test_silence();
-  ck_assert_int_ne(vsph_report_claim(&R, "c", "p", "o", "ranking reproduced"),
-                   0);
+  ck_assert_int_ne(
+      vsph_report_claim(&R, "c", "p", "o", "none", "ranking reproduced"), 0);
+  /* nor a row that says nothing of its set-up */
+  ck_assert_int_ne(vsph_report_claim(&R, "c", "p", "o", "", "reproduced"), 0);
+  ck_assert_int_ne(vsph_report_claim(&R, "c", "p", "o", NULL, "reproduced"), 0);
   ck_assert_uint_eq(R.nclaims, 0);
 }
 END_TEST
@@ -76,18 +84,20 @@ static size_t count(const char *hay, const char *needle) {
  * mark once, in the verdict cell, before the verdict's own words. */
 START_TEST(test_claims_tally) {
   static const char *const verdicts[] = {
-      "reproduced (within 3 %)", "reproduced at this resolution",
-      "partly: see section 11",  "not reproduced at H/dx = 80",
-      "differs: E is closer",    "reproduced on both layouts",
-      "not tested: no run"};
+      "reproduced (within 3 %)",   "reproduced at this resolution",
+      "partly: see section 11",    "not reproduced at H/dx = 80",
+      "differs: E is closer",      "reproduced on both layouts",
+      "not tested: no run",        "reproduced on a substitute: 2-D",
+      "reproduced on a substitute"};
   const size_t n = sizeof verdicts / sizeof verdicts[0];
   struct vsph_report R;
   memset(&R, 0, sizeof R);
   R.claim_see = "scenes";
   for (size_t k = 0; k < n; k++)
-    ck_assert_int_eq(vsph_report_claim(&R, "a claim | with a bar", "paper",
-                                       "ours", verdicts[k]),
-                     0);
+    ck_assert_int_eq(
+        vsph_report_claim(&R, "a claim | with a bar", "paper", "ours",
+                          "its set-up | differs", verdicts[k]),
+        0);
   R.md = tmpfile();
   ck_assert_ptr_nonnull(R.md);
   ck_assert_int_eq(vsph_report_claims_table(&R), 0);
@@ -97,9 +107,11 @@ START_TEST(test_claims_tally) {
   ck_assert_uint_eq(fread(text, 1, (size_t)len, R.md), (size_t)len);
   fclose(R.md);
   /* the tally, counted by hand from verdicts[] above: 3 reproduced,
-   * 1 partly, 2 differ, 1 not tested */
-  ck_assert_msg(strstr(text, "**7 claims:**") != NULL, "%s", text);
+   * 2 on a substitute, 1 partly, 2 differ, 1 not tested */
+  ck_assert_msg(strstr(text, "**9 claims:**") != NULL, "%s", text);
   ck_assert_msg(strstr(text, "3 reproduced</span>") != NULL, "%s", text);
+  ck_assert_msg(strstr(text, "2 reproduced on a substitute</span>") != NULL,
+                "%s", text);
   ck_assert_msg(strstr(text, "1 partly</span>") != NULL, "%s", text);
   ck_assert_msg(strstr(text, "2 differs</span>") != NULL, "%s", text);
   ck_assert_msg(strstr(text, "1 not tested</span>") != NULL, "%s", text);
@@ -107,6 +119,9 @@ START_TEST(test_claims_tally) {
    * of each class, the rows the rest */
   ck_assert_uint_eq(count(text, "| a claim \\| with a bar |"), n);
   ck_assert_uint_eq(count(text, "class=\"v v-rep\""), 1 + 3);
+  ck_assert_uint_eq(count(text, "class=\"v v-sub\""), 1 + 2);
+  /* the set-up column, its bar escaped, in every row */
+  ck_assert_uint_eq(count(text, "| its set-up \\| differs |"), n);
   ck_assert_uint_eq(count(text, "class=\"v v-part\""), 1 + 1);
   ck_assert_uint_eq(count(text, "class=\"v v-diff\""), 1 + 2);
   ck_assert_uint_eq(count(text, "class=\"v v-none\""), 1 + 1);
@@ -116,6 +131,8 @@ START_TEST(test_claims_tally) {
   ck_assert_msg(strstr(text, "reproduced</span> (within 3 %) |"), "%s", text);
   ck_assert_msg(strstr(text, "partly</span> see section 11 |"), "%s", text);
   ck_assert_msg(strstr(text, "differs</span> E is closer |"), "%s", text);
+  ck_assert_msg(strstr(text, "reproduced on a substitute</span> 2-D |"), "%s",
+                text);
   free(text);
   free(R.claims);
 }

@@ -143,6 +143,12 @@ START_TEST(test_tail_mean) {
                           (0.64 + 0.81 + 1.0) / 3.0, 1e-15);
   ck_assert_double_eq(vsph_series_tail_mean(t, y, 1, 0.8), y[0]);
   ck_assert(isnan(vsph_series_tail_mean(t, y, 0, 0.8)));
+  /* its range there: y rises, so y(1) - y(0.8) = 1 - 0.64; a row before
+   * the window (y[0] = 5) does not count */
+  y[0] = 5.0;
+  ck_assert_double_eq_tol(vsph_series_tail_range(t, y, 11, 0.8), 1.0 - 0.64,
+                          1e-15);
+  ck_assert(isnan(vsph_series_tail_range(t, y, 0, 0.8)));
 }
 END_TEST
 
