@@ -1258,6 +1258,40 @@ VSPH_CONSTS_SPECIALISE void adami_one(const struct vsph_equations_props *ep,
   }
 }
 
+void vsph_equations_density_sum(const struct vsph_equations_props *ep,
+                                struct vsph_particles *p, size_t n_fluid,
+                                const struct vsph_cells *cells) {
+  const int dim = p->dim;
+  const struct vsph_kernel_type *k = ep->visc.kernel;
+  const double h = ep->visc.h, wf = pow(h, -dim);
+  const double w0 = vsph_kernel_w(k, dim, 0.0) * wf;
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, k, dim, h);
+  const double *const m = p->m;
+#pragma omp parallel for schedule(dynamic, 8)
+  for (size_t c = 0; c < cells->ncells; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+         i++) {
+      if (p->id[i] >= n_fluid) continue;
+      double S = m[i] * w0; /* i itself: the gather leaves it out */
+      struct vsph_pair_iter it;
+      struct vsph_pair_chunk b;
+      vsph_pair_begin(&it, &pk, p, &rg, i);
+      while (vsph_pair_gather(&it, dim, pk.dfq_id, &b)) {
+#pragma omp simd reduction(+ : S)
+        for (size_t q = 0; q < b.m; q++) {
+          struct vsph_pair pr;
+          vsph_pair_at(&b, q, dim, &pr);
+          S += m[pr.j] * vsph_kernel_w(k, dim, sqrt(pr.s2) / h) * wf;
+        }
+      }
+      p->rho[i] = S;
+    }
+  }
+}
+
 int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
                                const struct vsph_walls *w,
                                struct vsph_particles *p, size_t n_fluid,
@@ -1284,7 +1318,7 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
            i++) {
         const int wall = p->id[i] >= n_fluid;
         if (wall != sweep) continue;
-        if (!wall && !ep->tvf) { /* continuity's density */
+        if (!wall && !ep->summation) { /* continuity's density */
           p->p[i] = vsph_equations_pressure(ep, p->rho[i], 0.0);
           p->vol[i] = p->m[i] / p->rho[i];
           continue;

@@ -104,6 +104,11 @@ struct vsph_equations_props {
                                        density, the A term, and the
                                        background acceleration in bacc */
   double pb;                      /*!< its background pressure (Pa) */
+  int summation;                  /*!< 1: the fluid's density by summation,
+                                       rho_i = sum_j m_j W_ij over fluid and
+                                       ghosts or wall particles, before each
+                                       evaluation (the integrator leaves it
+                                       alone); tvf implies it */
   int scheme;                     /*!< vsph_equations_scheme */
   double zeta_num;                /*!< contact: the fraction of the
                                        numerical viscosity removed, zeta */
@@ -264,6 +269,15 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
                                const struct vsph_walls *w,
                                struct vsph_particles *p, size_t n_fluid,
                                const struct vsph_cells *cells);
+
+/** @brief The fluid particles' density by summation (ep->summation, ghost
+ *  walls or none): rho_i = sum_j m_j W_ij over every particle within
+ *  reach, i itself and the ghosts included (their masses are their
+ *  sources'). Positions as they are; the ghosts' own density is left to
+ *  vsph_walls_update. */
+void vsph_equations_density_sum(const struct vsph_equations_props *ep,
+                                struct vsph_particles *p, size_t n_fluid,
+                                const struct vsph_cells *cells);
 
 /** @brief Evaluate the right-hand side for the fluid particles: those with
  *  id < n_fluid; the others are ghosts (neighbours only). Refreshes p->p

@@ -209,11 +209,18 @@ static int rhs(struct vsph_integrate *s, int parts, size_t *nint,
                double *min_s2) {
   struct vsph_particles *p = s->p;
   int st = VSPH_OK;
-  if (s->props.walls.solid)
+  if (s->props.walls.solid) {
     st = vsph_equations_walls_adami(&s->props.eq, &s->props.walls, p,
                                     s->n_fluid, s->cells);
-  else if (s->props.walls.n > 0)
-    vsph_walls_update(&s->props.walls, p, s->n_fluid, s->gh, s->where);
+  } else {
+    if (s->props.walls.n > 0) /* the ghosts where their sources are */
+      vsph_walls_update(&s->props.walls, p, s->n_fluid, s->gh, s->where);
+    if (s->props.eq.summation) {
+      vsph_equations_density_sum(&s->props.eq, p, s->n_fluid, s->cells);
+      if (s->props.walls.n > 0) /* and their density from the new sum */
+        vsph_walls_update(&s->props.walls, p, s->n_fluid, s->gh, s->where);
+    }
+  }
   if (st) return st;
   struct vsph_equations_out out = {
       .drho = p->drho, .de = p->de, .sweep = s->sweep};
@@ -315,6 +322,9 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   double min_s2 = INFINITY;
   const size_t nf_ = s->n_fluid;
   const size_t *const id = p->id;
+  /* a summed density is no state: each evaluation sums it afresh (its
+   * continuity rate is kept for the budget only) */
+  const int fixed = s->props.eq.summation ? 2 * d : -1;
   for (int stage = 0; stage < 4; stage++) {
     if (s->stop && *s->stop) { /* between stages: as if never begun */
       put_back(s);
@@ -327,6 +337,7 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
     const double c = stage < 3 ? a[stage + 1] * dt : 0.0, wk = w[stage];
 #pragma omp parallel
     for (int f = 0; f < nf; f++) {
+      if (f == fixed) continue;
       const double *const kf = k[f], *const y0f = s->y0[f];
       double *const ksf = s->ks[f], *const yf = y[f];
       /* static: each thread keeps its particles from field to field */
@@ -341,6 +352,7 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   }
 #pragma omp parallel
   for (int f = 0; f < nf; f++) {
+    if (f == fixed) continue;
     const double *const ksf = s->ks[f], *const y0f = s->y0[f];
     double *const yf = y[f];
 #pragma omp for schedule(static) nowait

@@ -89,6 +89,12 @@ static const struct vsph_params_spec SOLVER[] = {
                          "wall particles (cavity), the corrigible forms only"),
     VSPH_PARAMS_REAL_SPEC(P, pb, 0.0, 0.0, 1e12,
                           "tvf: background pressure (Pa); 0: rho0 c0^2"),
+    VSPH_PARAMS_NAME_SPEC(P, density, "continuity",
+                          "the density: continuity (integrated) or "
+                          "summation (rho_i = sum_j m_j W_ij over the fluid "
+                          "and the ghosts or wall particles, before each "
+                          "evaluation; Basa et al.'s choice); tvf sums "
+                          "always; not with scheme contact"),
     VSPH_PARAMS_NAME_SPEC(P, scheme, "wcsph",
                           "wcsph (THEORY 5 with the viscous formulation "
                           "visc) or contact (Parshikov et al.'s Godunov-type "
@@ -178,6 +184,17 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
   }
   if (rp->pb > 0.0 && !rp->tvf)
     VSPH_FAIL(VSPH_EINVAL, "Solver:pb applies to Solver:tvf = 1 only");
+  if (!strcmp(rp->density, "summation"))
+    rp->summation = 1;
+  else if (strcmp(rp->density, "continuity"))
+    VSPH_FAIL(VSPH_EINVAL,
+              "unknown Solver:density '%s' (continuity or summation)",
+              rp->density);
+  if (contact && rp->summation)
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:density = summation does not apply to Solver:scheme = "
+              "contact (its density follows the Riemann solution's strain "
+              "rate)");
   if (rp->p0 > 0.0 && rp->eos_kind != VSPH_EQUATIONS_EOS_GAS)
     VSPH_FAIL(VSPH_EINVAL, "Solver:p0 applies to Solver:eos = gas only");
   if (rp->snapshots > rp->outputs)
@@ -346,6 +363,7 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
   ip.eq.reduce = (int)rp->reduce;
   ip.eq.corr = rp->corr;
   ip.eq.tvf = (int)rp->tvf;
+  ip.eq.summation = rp->summation || rp->tvf;
   ip.eq.pb = rp->pb > 0.0 ? rp->pb : ip.eq.rho0 * ip.eq.c0 * ip.eq.c0;
   if (rp->tvf && (st = vsph_particles_tvf_alloc(fluid))) goto fail;
   if (rp->scheme_kind == VSPH_EQUATIONS_CONTACT) {

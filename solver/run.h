@@ -70,7 +70,8 @@ struct vsph_run_props {
   char correction[VSPH_PARAMS_NAME_MAX]; /*!< none, shepard, bonetlok */
   size_t tvf; /*!< 1: the transport-velocity scheme */
   double pb;  /*!< its background pressure (Pa); 0: rho0 c0^2 */
-  char scheme[VSPH_PARAMS_NAME_MAX]; /*!< wcsph or contact */
+  char density[VSPH_PARAMS_NAME_MAX]; /*!< continuity or summation */
+  char scheme[VSPH_PARAMS_NAME_MAX];  /*!< wcsph or contact */
   double alpha;    /*!< contact: h = 2 alpha dx (0: from hdx) */
   double zeta_num; /*!< contact: fraction of eta_num removed */
   double
@@ -80,6 +81,7 @@ struct vsph_run_props {
   int corr;                             /*!< vsph_pair_corr of correction */
   int form;                             /*!< vsph_viscous_form of visc */
   int scheme_kind;                      /*!< vsph_equations_scheme */
+  int summation;                        /*!< 1: density = summation */
   const struct vsph_kernel_type *ktype; /*!< the kernel called kernel */
 };
 
