@@ -548,6 +548,25 @@ void vsph_references_shepard(const struct vsph_particles *p, size_t n_fluid,
   for (int a = 0; a < 3; a++) u[a] = a < d && S > 0.0 ? su[a] / S : (double)NAN;
 }
 
+size_t vsph_references_cavity_umin(const double *t, const double *vel, size_t n,
+                                   size_t npts, double Re, double *t_out,
+                                   double *err, size_t cap) {
+  struct vsph_references_ghia g;
+  if (!vsph_references_ghia(Re, &g) || npts == 0 || n % (2 * npts)) return 0;
+  double ref = INFINITY;
+  for (size_t q = 0; q < g.n; q++) ref = fmin(ref, g.u[q]);
+  size_t m = 0;
+  for (size_t b = 0; b < n && m < cap; b += 2 * npts) {
+    double u = INFINITY;
+    for (size_t q = 0; q < 2 * npts; q++)
+      if (t[b + q] != t[b]) return 0; /* a block of one time */
+    for (size_t q = 0; q < npts; q++) u = fmin(u, vel[b + q]);
+    t_out[m] = t[b];
+    err[m++] = fabs(u - ref);
+  }
+  return m;
+}
+
 double vsph_references_cavity_point(
     const struct vsph_scene_cavity *cv, const struct vsph_references_ghia *g,
     int line, size_t q, const struct vsph_particles *p, size_t n_fluid,

@@ -168,6 +168,18 @@ void vsph_references_cavity_error(const struct vsph_scene *sc,
                                   const struct vsph_kernel_type *k, double h,
                                   struct vsph_references_profile_err *e);
 
+/** @brief Zheng et al.'s cavity metric (their Fig. 10), |u_min - u_min,Ghia|
+ *  over U: the smallest u on the vertical centreline against Ghia et al.'s
+ *  (the smallest of their Table I at @p Re), per output time, from a
+ *  centreline table as runs/ writes it (centreline.csv: per time, the
+ *  @p npts points of u(y) first, then as many of v(x); columns t and vel,
+ *  @p n rows). The times into @p t_out and the errors into @p err (at most
+ *  @p cap). @return the number of times, 0 when Ghia et al. have no table
+ *  for @p Re or a time's block is not whole. */
+size_t vsph_references_cavity_umin(const double *t, const double *vel, size_t n,
+                                   size_t npts, double Re, double *t_out,
+                                   double *err, size_t cap);
+
 /** @brief Lighthill's standing-wave kinetic energy (THEORY 6.3) for the
  *  wave @p w (g, A, L, nu, k, omega) at density @p rho and time @p t:
  *  E_k = (rho g A^2 L / 8) exp(-4 nu k^2 t) [1 + cos(2 omega t)]. */

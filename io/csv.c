@@ -1,5 +1,6 @@
 #include "csv.h"
 
+#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -79,6 +80,14 @@ struct vsph_csv *vsph_csv_read(const char *path) {
     free(row);
     goto fail;
   }
+  /* a column whose first row holds a word (centreline's "u(y)") is text:
+   * it reads as NaN in every row, so its rows are kept */
+  unsigned char *text_col = calloc(t->ncol, 1);
+  if (!text_col) {
+    free(row);
+    free(rm);
+    goto fail;
+  }
   size_t n = 0;
   for (char *line = eol + 1; line && *line;) {
     char *next = strchr(line, '\n');
@@ -91,6 +100,9 @@ struct vsph_csv *vsph_csv_read(const char *path) {
       const size_t len =
           comma ? (size_t)(comma - f) : llen - (size_t)(f - line);
       ok = field(f, len, &row[c]);
+      if (n == 0 && !ok && len > 0 && isalpha((unsigned char)f[0]))
+        text_col[c] = 1; /* a word, not a broken number */
+      if (text_col[c]) row[c] = (double)NAN, ok = 1;
       c++;
       if (!comma) break;
       f = comma + 1;
@@ -99,6 +111,7 @@ struct vsph_csv *vsph_csv_read(const char *path) {
       memcpy(rm + n++ * t->ncol, row, t->ncol * sizeof *row);
     line = next ? next + 1 : NULL;
   }
+  free(text_col);
   free(row);
   t->nrow = n;
   for (size_t r = 0; r < n; r++)

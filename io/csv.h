@@ -26,8 +26,10 @@ struct vsph_csv {
 };
 
 /** @brief Read the CSV file @p path (header row, then numbers; an empty
- *  field or "nan" reads as NaN). NULL after reporting if it cannot be read
- *  or has no header. */
+ *  field or "nan" reads as NaN; a column whose first row holds text, as
+ *  centreline.csv's "line", reads as NaN throughout; a row with another
+ *  field that is no number, or too few fields, is skipped). NULL after
+ *  reporting if it cannot be read or has no header. */
 struct vsph_csv *vsph_csv_read(const char *path);
 
 /** @brief Free; NULL is a no-op. */

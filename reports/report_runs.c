@@ -316,8 +316,9 @@ static const struct {
   double t_end;
 } CHANNEL_BASE[2] = {{"poiseuille", 10, 0.5}, {"couette", 16, 0.25}};
 
-/* The cavity rows: each pair form the transport-velocity scheme takes
- * (the descriptor table's corrigible forms, in its order), Re = 100,
+/* The cavity rows: each corrigible form of the descriptor table (the
+ * pair forms the transport-velocity scheme first took), in its order,
+ * Re = 100,
  * 16 x 16 to t = 1 s (quintic, h = dx); E_k at the end and the RMS
  * distance from Ghia et al. then (the flow is still developing). */
 static size_t cavity_base_count(void) {

@@ -86,7 +86,8 @@ static const struct vsph_params_spec SOLVER[] = {
                          "1: the transport-velocity scheme (Adami, Hu & "
                          "Adams 2013: density by summation, background "
                          "pressure, kick-drift-kick at cfl/4); scenes with "
-                         "wall particles (cavity), the corrigible forms only"),
+                         "wall particles (cavity); the pair forms and the "
+                         "Laplacians (the table of formulations)"),
     VSPH_PARAMS_REAL_SPEC(P, pb, 0.0, 0.0, 1e12,
                           "tvf: background pressure (Pa); 0: rho0 c0^2"),
     VSPH_PARAMS_NAME_SPEC(P, density, "continuity",
@@ -144,14 +145,17 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
         VSPH_EINVAL,
         "Solver:correction = %s applies to the corrigible forms (%s), not %s",
         rp->correction, pair_forms, rp->visc);
-  if (rp->tvf && (!vsph_viscous_corrigible(rp->form) ||
-                  rp->corr != VSPH_PAIR_CORR_NONE || rp->reduce ||
-                  rp->delta > 0.0 || rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR))
-    VSPH_FAIL(
-        VSPH_EINVAL,
-        "Solver:tvf = 1 takes a corrigible form (%s) with the linear law and "
-        "no correction, reduction or delta, not visc = %s",
-        pair_forms, rp->visc);
+  if (rp->tvf &&
+      (!(vsph_viscous_type_get(rp->form)->flags & VSPH_VISCOUS_TVF) ||
+       rp->corr != VSPH_PAIR_CORR_NONE || rp->reduce || rp->delta > 0.0 ||
+       rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR)) {
+    char tvf_forms[256];
+    vsph_viscous_list(VSPH_VISCOUS_TVF, tvf_forms, sizeof tvf_forms);
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:tvf = 1 takes one of %s with the linear law and no "
+              "correction, reduction or delta, not visc = %s",
+              tvf_forms, rp->visc);
+  }
   if ((st = vsph_equations_scheme_resolve(rp->scheme, &rp->scheme_kind)))
     return st;
   const int contact = rp->scheme_kind == VSPH_EQUATIONS_CONTACT;

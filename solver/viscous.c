@@ -56,19 +56,22 @@ static struct vsph_pair_visc pair_stress(const struct vsph_viscous_loop *lp,
 
 #define FS VSPH_VISCOUS_FREE_SURFACE
 #define CO VSPH_VISCOUS_CORRIGIBLE
+#define TV VSPH_VISCOUS_TVF
 /* Every formulation (docs/theory.md, sections 3 and 8). The first
  * VSPH_VISCOUS_PAPER_COUNT are the free-surface study's. */
 const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
     [VSPH_VISCOUS_MGF] = {"mgf", "MGF",
                           "Monaghan & Gingold 1983; Colagrossi et al. 2011, "
                           "Eq. (4.20)",
-                          VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MGF, FS | CO, -1,
-                          VSPH_VISCOUS_LAMBDA_MU, 0.0, "", pair_brookshaw},
+                          VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MGF,
+                          FS | CO | TV, -1, VSPH_VISCOUS_LAMBDA_MU, 0.0, "",
+                          pair_brookshaw},
     [VSPH_VISCOUS_MEAF] = {"meaf", "MEAF",
                            "Morris, Fox & Zhu 1997; Colagrossi et al. 2011, "
                            "Eq. (4.30)",
-                           VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MEAF, FS | CO,
-                           -1, VSPH_VISCOUS_LAMBDA_MU, 0.0, "", pair_meaf},
+                           VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MEAF,
+                           FS | CO | TV, -1, VSPH_VISCOUS_LAMBDA_MU, 0.0, "",
+                           pair_meaf},
     [VSPH_VISCOUS_PVWF] = {"pvwf", "PVWF",
                            "principle of virtual work, Colagrossi et al. "
                            "2011, Eqs. (4.18)-(4.19)",
@@ -79,15 +82,16 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
     [VSPH_VISCOUS_VI] = {"vi", "VI",
                          "Violeau & Issa 2007 (Basa et al. 2009, model C, "
                          "eq. 33)",
-                         VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MGF, CO, -1,
+                         VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MGF, CO | TV, -1,
                          VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA, "eta",
                          pair_brookshaw},
     [VSPH_VISCOUS_CLEARY] = {"cleary", "Cleary",
                              "Cleary 1998 (Basa et al. 2009, model D, eq. "
                              "34)",
                              VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MGF,
-                             CO | VSPH_VISCOUS_XI, -1, VSPH_VISCOUS_LAMBDA_MU,
-                             VSPH_VISCOUS_ETA, "xi, eta", pair_brookshaw},
+                             CO | TV | VSPH_VISCOUS_XI, -1,
+                             VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA,
+                             "xi, eta", pair_brookshaw},
     [VSPH_VISCOUS_TWOPASS] = {"twopass", "B",
                               "two-pass strain rate, Watkins et al. 1996 "
                               "(Basa et al. 2009, model B, eq. 29; "
@@ -109,42 +113,44 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
     [VSPH_VISCOUS_ER] = {"er", "ER",
                          "Espanol & Revenga 2003 (docs/theory.md, section "
                          "8)",
-                         VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_ER, CO, -1,
+                         VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_ER, CO | TV, -1,
                          VSPH_VISCOUS_LAMBDA_MU, 0.0, "zeta", pair_er},
     [VSPH_VISCOUS_VISC01] = {"visc01", "VISC-01",
                              "Zheng et al. 2018, VISC-01: Brookshaw/Morris "
                              "hybrid (eq. 15)",
                              VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC01,
-                             0, VSPH_PAIR_LAP_HYBRID, VSPH_VISCOUS_LAMBDA_MU,
+                             TV, VSPH_PAIR_LAP_HYBRID, VSPH_VISCOUS_LAMBDA_MU,
                              VSPH_VISCOUS_ETA, "eta", NULL},
     [VSPH_VISCOUS_VISC02] = {"visc02", "VISC-02",
                              "Zheng et al. 2018, VISC-02: twice-"
                              "differentiated kernel (eq. 16)",
                              VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC02,
-                             0, VSPH_PAIR_LAP_DIRECT, VSPH_VISCOUS_LAMBDA_MU,
+                             TV, VSPH_PAIR_LAP_DIRECT, VSPH_VISCOUS_LAMBDA_MU,
                              0.0, "", NULL},
     [VSPH_VISCOUS_VISC03] = {"visc03", "VISC-03",
                              "Zheng et al. 2018, VISC-03: Schwaiger's "
                              "corrected Laplacian (eq. 17)",
                              VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC03,
-                             0, VSPH_PAIR_LAP_SCHWAIGER, VSPH_VISCOUS_LAMBDA_MU,
-                             VSPH_VISCOUS_ETA, "eta, det_tol", NULL},
+                             TV, VSPH_PAIR_LAP_SCHWAIGER,
+                             VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA,
+                             "eta, det_tol", NULL},
     [VSPH_VISCOUS_VISC04] = {"visc04", "VISC-04",
                              "Zheng et al. 2018, VISC-04: Oger's "
                              "renormalised gradient (eq. 20)",
                              VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC04,
-                             0, VSPH_PAIR_LAP_RENORMALISED,
+                             TV, VSPH_PAIR_LAP_RENORMALISED,
                              VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA,
                              "eta, det_tol", NULL},
     [VSPH_VISCOUS_MEAFETA] = {"meafeta", "MEAF-eta",
                               "Morris, Fox & Zhu 1997 with r^2 + eta^2 (Basa "
                               "et al. 2009, model E as Morris et al. print "
                               "it)",
-                              VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MEAFETA, 0,
+                              VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MEAFETA, TV,
                               -1, VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA,
                               "eta", pair_meafeta},
 };
 #undef FS
+#undef TV
 #undef CO
 
 const struct vsph_viscous_type *vsph_viscous_type_get(int form) {

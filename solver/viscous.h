@@ -125,13 +125,19 @@ enum vsph_viscous_pass {
 #define VSPH_VISCOUS_FREE_SURFACE 1u /*!< the free-surface study's three */
 #define VSPH_VISCOUS_CORRIGIBLE             \
   2u /*!< a sum of pair terms along grad W: \
-          the kernel corrections and the    \
-          transport velocity apply */
+          the kernel corrections apply */
 #define VSPH_VISCOUS_RENORM                                             \
   4u                            /*!< stress pass: L = B^-1 (PVWF); else \
                                      L = I (Watkins' gradient) */
 #define VSPH_VISCOUS_SHEPARD 8u /*!< Takeda pass: Shepard-corrected */
 #define VSPH_VISCOUS_XI 16u     /*!< K = 2 xi (Cleary), not 2(d+2) */
+#define VSPH_VISCOUS_TVF                         \
+  32u /*!< runs the transport-velocity scheme    \
+           (the cavity, Solver:tvf): a pair form \
+           or a Laplacian, each velocity         \
+           component's own (not the stress       \
+           passes, whose second pass needs the   \
+           wall particles' first)                */
 
 /** The default second viscosity lambda of a formulation. */
 enum vsph_viscous_lambda {

@@ -231,6 +231,19 @@ START_TEST(test_csv_columns) {
   ck_assert_double_eq(u[0], 0.5);
   ck_assert(isnan(u[1]));
   vsph_csv_free(t);
+  /* a text column (centreline.csv's "line"): NaN, its rows kept; a row
+   * with text in a number column, or a field short, is skipped */
+  f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fputs("t,line,vel\n0,u(y),0.5\n1,v(x),-0.25\n2,u(y),x\n3,u(y)\n", f);
+  fclose(f);
+  t = vsph_csv_read(path);
+  ck_assert_ptr_nonnull(t);
+  ck_assert_uint_eq(t->nrow, 2);
+  ck_assert(isnan(vsph_csv_column(t, "line")[1]));
+  ck_assert_double_eq(vsph_csv_column(t, "vel")[1], -0.25);
+  ck_assert_double_eq(vsph_csv_column(t, "t")[1], 1.0);
+  vsph_csv_free(t);
   vsph_test_rm_tree(sdir);
 }
 END_TEST

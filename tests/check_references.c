@@ -323,6 +323,34 @@ START_TEST(test_errors) {
 }
 END_TEST
 
+/* Zheng et al.'s u_min metric on a table made by hand: two times of
+ * 3 + 3 rows (u(y) first); Ghia et al.'s smallest u at Re 1000 is
+ * -0.38289 (their Table I, y = 0.1719), so u rows {0.1, -0.30, 0.2} give
+ * |-0.30 + 0.38289| = 0.08289 and {-0.5, 0, 1} give 0.11711; the v rows
+ * (-0.9) are not read. A torn block or an Re without a table: 0 times. */
+START_TEST(test_cavity_umin) {
+  const double t[12] = {1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2};
+  const double v[12] = {0.1,  -0.30, 0.2, -0.9, -0.9, -0.9,
+                        -0.5, 0.0,   1.0, -0.9, -0.9, -0.9};
+  double to[4], e[4];
+  ck_assert_uint_eq(vsph_references_cavity_umin(t, v, 12, 3, 1000.0, to, e, 4),
+                    2);
+  ck_assert_double_eq(to[0], 1.0);
+  ck_assert_double_eq(to[1], 2.0);
+  ck_assert_double_eq_tol(e[0], 0.08289, 1e-15);
+  ck_assert_double_eq_tol(e[1], 0.11711, 1e-15);
+  ck_assert_uint_eq(vsph_references_cavity_umin(t, v, 12, 3, 1000.0, to, e, 1),
+                    1);
+  ck_assert_uint_eq(vsph_references_cavity_umin(t, v, 10, 3, 1000.0, to, e, 4),
+                    0);
+  ck_assert_uint_eq(vsph_references_cavity_umin(t, v, 12, 3, 50.0, to, e, 4),
+                    0);
+  const double torn[6] = {1, 1, 1, 1, 1, 2};
+  ck_assert_uint_eq(
+      vsph_references_cavity_umin(torn, v, 6, 3, 1000.0, to, e, 4), 0);
+}
+END_TEST
+
 Suite *vsph_references_suite(void) {
   Suite *s = suite_create("references");
   TCase *tc = tcase_create("vortex");
@@ -332,6 +360,7 @@ Suite *vsph_references_suite(void) {
   tcase_add_test(tc, test_angular_momentum);
   tcase_add_test(tc, test_series_vs_mol);
   tcase_add_test(tc, test_energy_rate);
+  tcase_add_test(tc, test_cavity_umin);
   tcase_add_test(tc, test_lighthill_initial);
   tcase_add_test(tc, test_wave_mech);
   tcase_add_test(tc, test_norm_closed_form);

@@ -534,12 +534,12 @@ START_TEST(test_errors) {
     }
     const unsigned f = t->flags;
     char where[128];
-    snprintf(
-        where, sizeof where, "%s%s%s",
-        f & VSPH_VISCOUS_FREE_SURFACE ? "free surface" : "",
-        (f & VSPH_VISCOUS_FREE_SURFACE) && (f & VSPH_VISCOUS_CORRIGIBLE) ? "; "
-                                                                         : "",
-        f & VSPH_VISCOUS_CORRIGIBLE ? "corrections, transport velocity" : "");
+    const int fs = (f & VSPH_VISCOUS_FREE_SURFACE) != 0,
+              co = (f & VSPH_VISCOUS_CORRIGIBLE) != 0,
+              tv = (f & VSPH_VISCOUS_TVF) != 0;
+    snprintf(where, sizeof where, "%s%s%s%s%s", fs ? "free surface" : "",
+             fs && (co || tv) ? "; " : "", co ? "corrections" : "",
+             co && tv ? ", " : "", tv ? "transport velocity" : "");
     /* an empty cell is "| |" */
     snprintf(row, sizeof row, "| `%s` | %s | %s |%s%s%s|%s%s%s|", t->name,
              t->label, pass_words[t->pass], *where ? " " : " ", where,
