@@ -1318,7 +1318,7 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
            i++) {
         const int wall = p->id[i] >= n_fluid;
         if (wall != sweep) continue;
-        if (!wall && !ep->summation) { /* continuity's density */
+        if (!wall && !ep->summation && !ep->tvf) { /* continuity's density */
           p->p[i] = vsph_equations_pressure(ep, p->rho[i], 0.0);
           p->vol[i] = p->m[i] / p->rho[i];
           continue;
