@@ -356,15 +356,19 @@ static int plan(struct vsph_report *R, unsigned long want) {
 }
 
 /* One report at a time writes a folder, and only a folder that is new,
- * empty or a report's (runs/folder's contract): the claim is held until
- * the process ends (the system drops it if the process dies). */
-static struct vsph_folder report_folder = {.fd = -1};
-
-static int lock_dir(const char *dir) {
-  vsph_folder_release(&report_folder); /* a second report, in tests */
-  const int st = vsph_folder_claim(&report_folder, dir, &vsph_folder_report);
+ * empty or a report's (runs/folder's contract): R->folder holds the claim
+ * until the report is done (the system drops it if the process dies). */
+static int lock_dir(struct vsph_report *R, const char *dir) {
+  vsph_folder_release(&R->folder); /* Slurm's absolute path, then rp's */
+  const int st = vsph_folder_claim(&R->folder, dir, &vsph_folder_report);
   /* the temporaries a report stopped by a signal left */
-  return st ? st : vsph_folder_clear_tmp(&report_folder);
+  return st ? st : vsph_folder_clear_tmp(&R->folder);
+}
+
+/* The report's end: its folder's claim dropped, its memory freed. */
+static void report_free(struct vsph_report *R) {
+  vsph_folder_release(&R->folder);
+  free(R);
 }
 
 /* Run what the plan misses, as the mode says. */
@@ -473,7 +477,7 @@ static int make_runs(struct vsph_report *R, const struct vsph_report_props *rp,
                      const char *parts_dir) {
   int st = VSPH_OK;
   if (rp->mode == VSPH_REPORT_ASSEMBLE) st = all_cached(R);
-  if (!st) st = lock_dir(rp->dir);
+  if (!st) st = lock_dir(R, rp->dir);
   if (!st) st = vsph_files_mkdir(parts_dir);
   char seal_path[700]; /* nothing vouches for the folder while it changes */
   snprintf(seal_path, sizeof seal_path, "%s/key.txt", rp->dir);
@@ -518,7 +522,7 @@ static void say_left(const struct vsph_report *R,
 
 /* The seal, last (runs/folder): the report's key, then each file of the
  * folder's top with its size and CRC-32. */
-static int seal(const struct vsph_report *R, unsigned long want) {
+static int seal(struct vsph_report *R, unsigned long want) {
   char seal[256];
   size_t len = (size_t)snprintf(
       seal, sizeof seal, "vsph %s %s\nreport %s:", VSPH_VERSION,
@@ -528,7 +532,7 @@ static int seal(const struct vsph_report *R, unsigned long want) {
       len +=
           (size_t)snprintf(seal + len, sizeof seal - len, " %s", PARTS[p].name);
   snprintf(seal + len, sizeof seal - len, "\n");
-  return vsph_folder_seal(&report_folder, seal, NULL);
+  return vsph_folder_seal(&R->folder, seal, NULL);
 }
 
 /* The parts, then report.md and report.html, run.json and the seal. */
@@ -573,6 +577,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   snprintf(parts_dir, sizeof parts_dir, "%s/parts", rp->dir);
   struct vsph_report *R = calloc(1, sizeof *R);
   if (!R) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the report");
+  R->folder.fd = -1; /* no claim yet */
   R->dir = rp->dir;
   R->runs.full = rp->full;
   R->runs.scenes = rp->scenes;
@@ -598,23 +603,23 @@ int vsph_report_write(const struct vsph_report_props *rp) {
     st = vsph_jobs_plan_print(&R->runs.jobs, rp->exe ? rp->exe : "vsph",
                               rp->plan_out);
     vsph_jobs_plan_free(&R->runs.jobs);
-    free(R);
+    report_free(R);
     return st;
   }
-  if (!st && rp->mode == VSPH_REPORT_SLURM) st = lock_dir(R->dir);
+  if (!st && rp->mode == VSPH_REPORT_SLURM) st = lock_dir(R, R->dir);
   if (!st && rp->mode == VSPH_REPORT_SLURM) {
     const struct vsph_jobs_slurm s = {rp->exe, rp->partition, rp->time,
                                       rp->threads, rp->only};
     st = vsph_jobs_slurm(&R->runs.jobs, &s);
     vsph_jobs_plan_free(&R->runs.jobs);
-    free(R);
+    report_free(R);
     return st;
   }
   if (!st) st = make_runs(R, rp, parts_dir);
   if (rp->budget_s > 0.0) { /* runs only: say what is left */
     say_left(R, rp, st);
     vsph_jobs_plan_free(&R->runs.jobs);
-    free(R);
+    report_free(R);
     return st;
   }
   if (!st) st = write_parts(R, want, parts_dir, t_all);
@@ -622,6 +627,6 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   gsl_integration_workspace_free(R->wi);
   free(R->claims);
   vsph_jobs_plan_free(&R->runs.jobs);
-  free(R);
+  report_free(R);
   return st;
 }

@@ -10,6 +10,7 @@
 #include <stdio.h>
 
 #include "../runs/archive.h"
+#include "../runs/folder.h"
 #include "report_runs.h"
 #include "text.h"
 
@@ -38,7 +39,8 @@ struct vsph_report {
   const char *beside;       /* a run archive whose FULL runs the summary shows
                                beside the quick ones, or NULL */
   const struct vsph_archive_judge *judge; /* what judges its entries */
-  struct vsph_report_runs runs;           /* what reads the runs */
+  struct vsph_folder folder;    /* the claim on dir while it is written */
+  struct vsph_report_runs runs; /* what reads the runs */
 };
 
 /* Add a row to the claims table (copied): the claim, the paper's figure,
