@@ -6,6 +6,7 @@
  * Morris' set-up; their claims for the claims table. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "../analysis/references.h"
@@ -335,15 +336,21 @@ static int cavity_umin(struct vsph_report *R, const struct vsph_jobs_run *r,
   const double *tt = vsph_csv_column(t, "t"), *v = vsph_csv_column(t, "vel");
   struct vsph_references_ghia g;
   vsph_references_ghia(100.0, &g); /* the points per line: any table's */
-  double to[64], e[64];
+  const size_t cap = t->nrow / (2 * g.n) + 1; /* a time per block */
+  double *to = malloc(2 * cap * sizeof *to), *e = to ? to + cap : NULL;
+  if (!to) {
+    vsph_csv_free(t);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot read %s/centreline.csv", r->dir);
+  }
   const size_t m = tt && v ? vsph_references_cavity_umin(tt, v, t->nrow, g.n,
-                                                         (double)Re, to, e, 64)
+                                                         (double)Re, to, e, cap)
                            : 0;
   vsph_csv_free(t);
   if (m) {
     *mean = vsph_series_tail_mean(to, e, m, 0.8);
     *swing = vsph_series_tail_range(to, e, m, 0.8);
   }
+  free(to);
   return VSPH_OK;
 }
 
