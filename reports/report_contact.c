@@ -671,13 +671,20 @@ static void cyl_rows(FILE *md, const struct cyl *cy) {
   fprintf(md, "\n");
 }
 
+/* The measurements and the numbers the part's tables and claims share. */
+static int contact_load(struct vsph_report *R, struct cres *cr,
+                        struct cnum *nb) {
+  memset(cr, 0, sizeof *cr);
+  const int st = cload(R, cr);
+  if (!st) numbers(cr, &R->runs.jobs, nb);
+  return st;
+}
+
 int vsph_report_contact_write(struct vsph_report *R) {
   struct cres cr;
-  memset(&cr, 0, sizeof cr);
-  int st = cload(R, &cr);
-  if (st) return st;
   struct cnum nb;
-  numbers(&cr, &R->runs.jobs, &nb);
+  int st = contact_load(R, &cr, &nb);
+  if (st) return st;
   struct vsph_text_vars *tv = &R->tv;
   if ((st = vsph_report_say(R, "contact.intro"))) return st;
   /* Table: alpha = 0.5, both kernels */
@@ -956,11 +963,9 @@ static int cyl_claims(struct vsph_report *R) {
 
 int vsph_report_contact_claims(struct vsph_report *R) {
   struct cres cr;
-  memset(&cr, 0, sizeof cr);
-  int st = cload(R, &cr);
-  if (st) return st;
   struct cnum nb;
-  numbers(&cr, &R->runs.jobs, &nb);
+  int st = contact_load(R, &cr, &nb);
+  if (st) return st;
   if (!st) st = shear_claims(R, &cr, &nb);
   if (!st) st = zeta_claims(R, &nb);
   if (!st) st = cyl_claims(R);
