@@ -1258,6 +1258,14 @@ VSPH_CONSTS_SPECIALISE void adami_one(const struct vsph_equations_props *ep,
   }
 }
 
+/* Whether the Adami sweeps take their specialised quintic copy. */
+static int adami_quintic(const struct vsph_equations_props *ep,
+                         const struct vsph_pair_kernel *pk, int dim) {
+  return !ep->loop_general && dim == 2 &&
+         pk->dfq_id == VSPH_KERNEL_DFQ_QUINTIC &&
+         ep->visc.kernel->f[1] == vsph_quintic_type.f[1];
+}
+
 void vsph_equations_density_sum(const struct vsph_equations_props *ep,
                                 struct vsph_particles *p, size_t n_fluid,
                                 const struct vsph_cells *cells) {
@@ -1267,7 +1275,8 @@ void vsph_equations_density_sum(const struct vsph_equations_props *ep,
   const double w0 = vsph_kernel_w(k, dim, 0.0) * wf;
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, k, dim, h);
-  const double *const m = p->m;
+  const int quintic = adami_quintic(ep, &pk, dim);
+  /* the fluid's sweep of the Adami walls (no wall is read there) */
 #pragma omp parallel for schedule(dynamic, 8)
   for (size_t c = 0; c < cells->ncells; c++) {
     struct vsph_pair_ranges rg;
@@ -1275,19 +1284,10 @@ void vsph_equations_density_sum(const struct vsph_equations_props *ep,
     for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
          i++) {
       if (p->id[i] >= n_fluid) continue;
-      double S = m[i] * w0; /* i itself: the gather leaves it out */
-      struct vsph_pair_iter it;
-      struct vsph_pair_chunk b;
-      vsph_pair_begin(&it, &pk, p, &rg, i);
-      while (vsph_pair_gather(&it, dim, pk.dfq_id, &b)) {
-#pragma omp simd reduction(+ : S)
-        for (size_t q = 0; q < b.m; q++) {
-          struct vsph_pair pr;
-          vsph_pair_at(&b, q, dim, &pr);
-          S += m[pr.j] * vsph_kernel_w(k, dim, sqrt(pr.s2) / h) * wf;
-        }
-      }
-      p->rho[i] = S;
+      if (quintic)
+        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, 1);
+      else
+        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, 0);
     }
   }
 }
@@ -1304,9 +1304,7 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
   const double wf = pow(h, -dim), w0 = vsph_kernel_w(k, dim, 0.0) * wf;
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, k, dim, h);
-  const int quintic = !ep->loop_general && dim == 2 &&
-                      pk.dfq_id == VSPH_KERNEL_DFQ_QUINTIC &&
-                      k->f[1] == vsph_quintic_type.f[1];
+  const int quintic = adami_quintic(ep, &pk, dim);
   /* two sweeps: the fluid (density, pressure, volume), then the walls,
    * which read the fluid's pressure */
   for (int sweep = 0; sweep < 2; sweep++) {

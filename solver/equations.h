@@ -273,7 +273,9 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
 /** @brief The fluid particles' density by summation (ep->summation, ghost
  *  walls or none): rho_i = sum_j m_j W_ij over every particle within
  *  reach, i itself and the ghosts included (their masses are their
- *  sources'). Positions as they are; the ghosts' own density is left to
+ *  sources'), then p_i (with e = 0: the right-hand side recomputes it) and
+ *  V_i = m_i/rho_i; the fluid sweep of vsph_equations_walls_adami.
+ *  Positions as they are; the ghosts' own density is left to
  *  vsph_walls_update. */
 void vsph_equations_density_sum(const struct vsph_equations_props *ep,
                                 struct vsph_particles *p, size_t n_fluid,
