@@ -1331,6 +1331,66 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
   return VSPH_OK;
 }
 
+/* An evolving wall particle i (Basa et al. 2009): its continuity rate
+ * from the fluid neighbours, the particle at rest,
+ * d rho_i/dt = rho_i sum_f V_f F u_f.x. */
+static void evolving_one(struct vsph_particles *p, size_t n_fluid,
+                         const struct vsph_pair_kernel *pk,
+                         const struct vsph_pair_ranges *rg, size_t i) {
+  const int dim = p->dim;
+  struct vsph_pair_iter it;
+  struct vsph_pair_chunk b;
+  vsph_pair_begin(&it, pk, p, rg, i);
+  double cont = 0.0;
+  while (vsph_pair_gather(&it, dim, pk->dfq_id, &b))
+    for (size_t q = 0; q < b.m; q++) {
+      struct vsph_pair pr;
+      vsph_pair_at(&b, q, dim, &pr);
+      if (p->id[pr.j] >= n_fluid) continue;
+      double dux = 0.0;
+      for (int a = 0; a < dim; a++) dux += p->vel[a][pr.j] * pr.x[a];
+      cont += vsph_pair_continuity(&pr, dux);
+    }
+  p->drho[i] = p->rho[i] * cont;
+}
+
+int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
+                                  struct vsph_particles *p, size_t n_fluid,
+                                  const struct vsph_cells *cells) {
+  if (ep->eos == VSPH_EQUATIONS_EOS_GAS)
+    VSPH_FAIL(VSPH_EINVAL, "evolving wall particles take a barotropic law");
+  const int dim = p->dim;
+  const struct vsph_kernel_type *k = ep->visc.kernel;
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, k, dim, ep->visc.h);
+  /* the walls' p and V first (the fluid's sum reads only masses), then
+   * the fluid: summed or continuity's density, p and V */
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < p->n; i++)
+    if (p->id[i] >= n_fluid) {
+      p->p[i] = vsph_equations_pressure(ep, p->rho[i], 0.0);
+      p->vol[i] = p->m[i] / p->rho[i];
+    }
+  if (ep->summation)
+    vsph_equations_density_sum(ep, p, n_fluid, cells);
+  else
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n; i++)
+      if (p->id[i] < n_fluid) {
+        p->p[i] = vsph_equations_pressure(ep, p->rho[i], 0.0);
+        p->vol[i] = p->m[i] / p->rho[i];
+      }
+      /* the walls' continuity rates read the fluid's volumes */
+#pragma omp parallel for schedule(dynamic, 8)
+  for (size_t c = 0; c < cells->ncells; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c]; i++)
+      if (p->id[i] >= n_fluid) evolving_one(p, n_fluid, &pk, &rg, i);
+  }
+  return VSPH_OK;
+}
+
 void vsph_equations_energy_compute(const struct vsph_equations_props *ep,
                                    const struct vsph_particles *p,
                                    size_t n_fluid,

@@ -270,6 +270,23 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
                                struct vsph_particles *p, size_t n_fluid,
                                const struct vsph_cells *cells);
 
+/** @brief Evolving wall particles' state (ep->solid = VSPH_WALLS_EVOLVING;
+ *  Basa, Quinlan & Lastiwka 2009, cavity: "density and pressure evolve by
+ *  continuity and the state equation"), before each evaluation: every wall
+ *  particle's p by the run's law from its density (which the integrator
+ *  advances) and V = m/rho; the fluid's density by summation over fluid
+ *  and wall particles (ep->summation) or its integrated one, its p and V;
+ *  then each wall particle's continuity rate in p->drho from its fluid
+ *  neighbours, the particle at rest (it does not move; the lid's sliding
+ *  enters only the viscous term), rho_w sum_f V_f F u_f.x
+ *  [reconstructed: fluid neighbours only, and at rest, so that the lid's
+ *  corner particles are not drained by the sliding they only stand for].
+ *  The velocities are vsph_walls_solid_extrapolate's.
+ *  @return VSPH_OK or VSPH_EINVAL (the gas law). */
+int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
+                                  struct vsph_particles *p, size_t n_fluid,
+                                  const struct vsph_cells *cells);
+
 /** @brief The fluid particles' density by summation (ep->summation, ghost
  *  walls or none): rho_i = sum_j m_j W_ij over every particle within
  *  reach, i itself and the ghosts included (their masses are their

@@ -9,6 +9,7 @@
 #include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "cells.h"
+#include "pair.h"
 #include "particles.h"
 
 /* The integrated fields: r, u, rho, and e for the gas law only. */
@@ -51,8 +52,12 @@ static int buffers_alloc(struct vsph_integrate *s) {
       !(s->vws = vsph_viscous_ws_alloc(cap, d)))
     return VSPH_ENOMEM;
   if (corr && vsph_viscous_ws_corr(s->vws)) return VSPH_ENOMEM;
-  if (s->props.walls.n > 0 && !s->props.walls.solid &&
-      !(s->gh = vsph_walls_ghosts_alloc(&s->props.walls, cap)))
+  const int evolving = s->props.walls.solid == VSPH_WALLS_EVOLVING;
+  /* evolving wall particles: the nearest rows' scratch only, a particle
+   * in the rows of at most d planes */
+  if (s->props.walls.n > 0 && (!s->props.walls.solid || evolving) &&
+      !(s->gh = vsph_walls_ghosts_alloc(
+            &s->props.walls, evolving ? (size_t)d * s->n_fluid + 1 : cap)))
     return VSPH_ENOMEM;
   int ok = (s->where = malloc(cap * sizeof *s->where)) != NULL;
   for (int f = 0; f < nfields(s); f++) {
@@ -176,6 +181,23 @@ double vsph_integrate_dt_rule(double cfl, int tvf, int contact, double h,
   return dt;
 }
 
+/* The summed density of a particle on the full lattice of spacing dx
+ * (rho0 = 1): dx^d sum_k W(|k| dx): what every particle of the initial
+ * lattice sums where the wall particles continue it. */
+static double lattice_sum(const struct vsph_viscous_props *vp, double dx) {
+  const int d = vp->dim;
+  const double H = vp->kernel->kappa * vp->h;
+  const long L = (long)ceil(H / dx);
+  double S = 0.0;
+  for (long a = -L; a <= L; a++)
+    for (long b = d > 1 ? -L : 0; b <= (d > 1 ? L : 0); b++)
+      for (long c = d > 2 ? -L : 0; c <= (d > 2 ? L : 0); c++) {
+        const double r = dx * sqrt((double)(a * a + b * b + c * c));
+        if (r < H) S += vsph_kernel_w(vp->kernel, d, r / vp->h);
+      }
+  return S * pow(dx / vp->h, d);
+}
+
 /* Ghosts (walls only), the cell list with a skin, and the id -> index map. */
 static int prepare(struct vsph_integrate *s, double skin) {
   const struct vsph_viscous_props *vp = &s->props.eq.visc;
@@ -188,6 +210,12 @@ static int prepare(struct vsph_integrate *s, double skin) {
       if ((st = reserve(s, s->n_fluid + nw)) ||
           (st = vsph_walls_solid_generate(w, s->p, s->n_fluid, w->dx, H)))
         return st;
+      /* evolving walls start where the fluid's sum starts: the full
+       * lattice's density [reconstructed], so the fluid at rest stays so */
+      if (w->solid == VSPH_WALLS_EVOLVING && s->props.eq.summation) {
+        const double rho = w->rho0 * lattice_sum(vp, w->dx);
+        for (size_t i = s->n_fluid; i < s->p->n; i++) s->p->rho[i] = rho;
+      }
     }
   } else if (s->props.walls.n > 0) {
     const struct vsph_walls *w = &s->props.walls;
@@ -209,7 +237,10 @@ static int rhs(struct vsph_integrate *s, int parts, size_t *nint,
                double *min_s2) {
   struct vsph_particles *p = s->p;
   int st = VSPH_OK;
-  if (s->props.walls.solid) {
+  if (s->props.walls.solid == VSPH_WALLS_EVOLVING) {
+    vsph_walls_solid_extrapolate(&s->props.walls, p, s->n_fluid, s->gh);
+    st = vsph_equations_walls_evolving(&s->props.eq, p, s->n_fluid, s->cells);
+  } else if (s->props.walls.solid) {
     st = vsph_equations_walls_adami(&s->props.eq, &s->props.walls, p,
                                     s->n_fluid, s->cells);
   } else {
@@ -320,11 +351,14 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   static const double a[4] = {0.0, 0.5, 0.5, 1.0}, w[4] = {1, 2, 2, 1};
   size_t nint = 0;
   double min_s2 = INFINITY;
-  const size_t nf_ = s->n_fluid;
   const size_t *const id = p->id;
-  /* a summed density is no state: each evaluation sums it afresh (its
-   * continuity rate is kept for the budget only) */
-  const int fixed = s->props.eq.summation ? 2 * d : -1;
+  /* each field over the ids [lo, hi): the fluid's; a summed density is no
+   * state (each evaluation sums it afresh; its continuity rate is kept for
+   * the budget only); evolving wall particles' density is */
+  size_t lo[8], hi[8];
+  for (int f = 0; f < nf; f++) lo[f] = 0, hi[f] = s->n_fluid;
+  if (s->props.eq.summation) lo[2 * d] = s->n_fluid;
+  if (s->props.walls.solid == VSPH_WALLS_EVOLVING) hi[2 * d] = SIZE_MAX;
   for (int stage = 0; stage < 4; stage++) {
     if (s->stop && *s->stop) { /* between stages: as if never begun */
       put_back(s);
@@ -337,13 +371,14 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
     const double c = stage < 3 ? a[stage + 1] * dt : 0.0, wk = w[stage];
 #pragma omp parallel
     for (int f = 0; f < nf; f++) {
-      if (f == fixed) continue;
+      const size_t lof = lo[f], hif = hi[f];
+      if (lof >= hif) continue;
       const double *const kf = k[f], *const y0f = s->y0[f];
       double *const ksf = s->ks[f], *const yf = y[f];
       /* static: each thread keeps its particles from field to field */
 #pragma omp for schedule(static) nowait
       for (size_t i = 0; i < n; i++) {
-        if (id[i] >= nf_) continue;
+        if (id[i] < lof || id[i] >= hif) continue;
         const double kv = kf[i];
         ksf[i] += wk * kv;
         if (stage < 3) yf[i] = y0f[i] + c * kv;
@@ -352,18 +387,45 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   }
 #pragma omp parallel
   for (int f = 0; f < nf; f++) {
-    if (f == fixed) continue;
+    const size_t lof = lo[f], hif = hi[f];
+    if (lof >= hif) continue;
     const double *const ksf = s->ks[f], *const y0f = s->y0[f];
     double *const yf = y[f];
 #pragma omp for schedule(static) nowait
     for (size_t i = 0; i < n; i++)
-      if (id[i] < nf_) yf[i] = y0f[i] + dt / 6.0 * ksf[i];
+      if (id[i] >= lof && id[i] < hif) yf[i] = y0f[i] + dt / 6.0 * ksf[i];
   }
   s->t += dt;
   s->steps++;
   s->interactions = nint;
   s->min_dist = sqrt(min_s2);
   return VSPH_OK;
+}
+
+/* The closest two fluid particles within a cell's ranges (a stop for
+ * pairing says where): their indices, or none (*a = *b = n). */
+static void closest_pair(const struct vsph_integrate *s, size_t *a, size_t *b) {
+  const struct vsph_particles *p = s->p;
+  double best = INFINITY;
+  *a = *b = p->n;
+  for (size_t c = 0; c < s->cells->ncells; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, s->cells, c);
+    for (size_t i = s->cells->start[c];
+         i < s->cells->start[c] + s->cells->count[c]; i++) {
+      if (p->id[i] >= s->n_fluid) continue;
+      for (size_t r = 0; r < rg.n; r++)
+        for (size_t j = rg.lo[r]; j < rg.hi[r]; j++) {
+          if (j == i || p->id[j] >= s->n_fluid) continue;
+          double d2 = 0.0;
+          for (int k = 0; k < p->dim; k++) {
+            const double d = p->pos[k][j] - p->pos[k][i];
+            d2 += d * d;
+          }
+          if (d2 < best) best = d2, *a = i, *b = j;
+        }
+    }
+  }
 }
 
 int vsph_integrate_check(struct vsph_integrate *s) {
@@ -395,9 +457,20 @@ int vsph_integrate_check(struct vsph_integrate *s) {
     }
   }
   if (s->steps > 0 && s->min_dist < ip->min_dist) {
-    snprintf(s->reason, sizeof s->reason,
-             "particle pairing: two particles %.3g apart (limit %.3g)",
-             s->min_dist, ip->min_dist);
+    /* where: the closest pair now (the cells are the step's, the
+     * positions moved by one step since) */
+    size_t a, b;
+    closest_pair(s, &a, &b);
+    if (a < p->n)
+      snprintf(s->reason, sizeof s->reason,
+               "particle pairing: two particles %.3g apart (limit %.3g), "
+               "%zu and %zu near (%.3g, %.3g)",
+               s->min_dist, ip->min_dist, p->id[a], p->id[b], p->pos[0][a],
+               p->dim > 1 ? p->pos[1][a] : 0.0);
+    else
+      snprintf(s->reason, sizeof s->reason,
+               "particle pairing: two particles %.3g apart (limit %.3g)",
+               s->min_dist, ip->min_dist);
     return 1;
   }
   s->reason[0] = '\0';

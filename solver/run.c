@@ -282,10 +282,10 @@ static int check_cost(const struct vsph_run_props *rp,
               "Solver:eos = gas needs a confined scene (walls or periodic "
               "ends all round): at rho0 its pressure is p0 > 0, and a free "
               "surface would expand");
-  if (rp->tvf && !sc->walls.solid)
+  if (rp->tvf && sc->walls.solid != VSPH_WALLS_ADAMI)
     VSPH_FAIL(VSPH_EINVAL,
-              "Solver:tvf = 1 needs a scene with wall particles (cavity), "
-              "not %s",
+              "Solver:tvf = 1 needs a scene with Adami et al.'s wall "
+              "particles (cavity with Scene:walls = adami), not %s",
               sc->type->name);
   if (rp->scheme_kind == VSPH_EQUATIONS_CONTACT && sc->walls.solid)
     VSPH_FAIL(VSPH_EINVAL,
@@ -295,11 +295,18 @@ static int check_cost(const struct vsph_run_props *rp,
     VSPH_FAIL(VSPH_EINVAL,
               "%s holds two materials: it needs Solver:scheme = contact",
               sc->type->name);
-  if (sc->walls.solid && rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR)
+  if (sc->walls.solid == VSPH_WALLS_ADAMI &&
+      rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR)
     VSPH_FAIL(VSPH_EINVAL,
               "the wall particles of %s need Solver:eos = linear (their "
-              "density is the linear law's)",
+              "density is the linear law's; Scene:walls = evolving takes "
+              "tait)",
               sc->type->name);
+  if (sc->walls.solid == VSPH_WALLS_EVOLVING &&
+      rp->eos_kind == VSPH_EQUATIONS_EOS_GAS)
+    VSPH_FAIL(VSPH_EINVAL,
+              "evolving wall particles take Solver:eos = linear or tait, not "
+              "gas");
   if (rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR &&
       sc->body == VSPH_EQUATIONS_BODY_GRAVITY)
     VSPH_FAIL(VSPH_EINVAL,

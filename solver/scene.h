@@ -85,6 +85,7 @@ struct vsph_scene_cavity {
   double rho0;  /*!< reference density */
   double c0;    /*!< sound speed (m/s); 0: THEORY 5's rule (10 U) */
   double t_end; /*!< default end time (s) */
+  char walls[VSPH_PARAMS_NAME_MAX]; /*!< wall particles: adami, evolving */
   /* derived by the scene's setup */
   double nu; /*!< kinematic viscosity U L/Re (m^2/s) */
 };

@@ -11,6 +11,28 @@
  * the wall (3), the depth. */
 #define BAND_STRIDE 7
 
+static const char *const solid_names[] = {
+    [VSPH_WALLS_GHOSTS] = "ghosts",
+    [VSPH_WALLS_ADAMI] = "adami",
+    [VSPH_WALLS_EVOLVING] = "evolving",
+};
+_Static_assert(sizeof solid_names / sizeof solid_names[0] ==
+                   VSPH_WALLS_SOLID_COUNT,
+               "wall-particle name table out of sync");
+
+const char *vsph_walls_solid_name(int s) {
+  return s >= 0 && s < VSPH_WALLS_SOLID_COUNT ? solid_names[s] : "unknown";
+}
+
+int vsph_walls_solid_resolve(const char *name, int *s) {
+  for (int k = VSPH_WALLS_ADAMI; k < VSPH_WALLS_SOLID_COUNT; k++)
+    if (!strcmp(name, solid_names[k])) {
+      *s = k;
+      return VSPH_OK;
+    }
+  VSPH_FAIL(VSPH_EINVAL, "unknown wall particles '%s' (adami, evolving)", name);
+}
+
 static const char *const velocity_names[] = {
     [VSPH_WALLS_VEL_MIRROR] = "mirror",
     [VSPH_WALLS_VEL_LINEAR] = "linear",
@@ -408,5 +430,29 @@ void vsph_walls_solid_velocity(const struct vsph_walls *w, int dim,
       for (int k = 0; k < dim; k++) u[k] = w->uw[q][k];
       return;
     }
+  }
+}
+
+void vsph_walls_solid_extrapolate(const struct vsph_walls *w,
+                                  struct vsph_particles *p, size_t n_fluid,
+                                  struct vsph_walls_ghosts *gh) {
+  rows(w, p, n_fluid, gh);
+  const int dim = p->dim;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] < n_fluid) continue;
+    double x[3] = {0, 0, 0}, u[3];
+    for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
+    vsph_walls_solid_velocity(w, dim, x, u);
+    int nbehind = 0, last = -1;
+    for (int q = 0; q < w->n; q++)
+      if (w->kind[q] == VSPH_WALLS_MIRROR && depth(w, p, i, q) < 0.0) {
+        nbehind++;
+        last = q;
+      }
+    for (int a = 0; a < dim; a++) p->vel[a][i] = u[a];
+    /* behind one plane: the tangential components extrapolated, the
+     * normal one the prescribed (the plane's velocity is tangential) */
+    if (nbehind == 1) extrapolate(w, gh, p, i, last, -depth(w, p, i, last));
   }
 }

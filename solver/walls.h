@@ -48,6 +48,26 @@ enum vsph_walls_velocity {
   VSPH_WALLS_VEL_COUNT
 };
 
+/** Fixed wall particles (solid != 0): how they get their state. */
+enum vsph_walls_solid {
+  VSPH_WALLS_GHOSTS = 0, /*!< none: mirrored ghosts per step */
+  VSPH_WALLS_ADAMI,      /*!< Adami, Hu & Adams (2012): pressure and
+                              velocity Shepard-averaged from the fluid,
+                              each evaluation (the linear law) */
+  VSPH_WALLS_EVOLVING,   /*!< Basa, Quinlan & Lastiwka (2009), cavity:
+                              density by continuity (integrated), pressure
+                              by the run's law, tangential velocity
+                              extrapolated linearly into the wall */
+  VSPH_WALLS_SOLID_COUNT
+};
+
+/** @brief Name of a wall-particle model ("ghosts", "adami", "evolving"). */
+const char *vsph_walls_solid_name(int s);
+
+/** @brief Wall-particle model called @p name into @p s (adami or evolving).
+ *  @return VSPH_OK, or VSPH_EINVAL naming the choices. */
+int vsph_walls_solid_resolve(const char *name, int *s);
+
 /** Wall set of a scene. */
 struct vsph_walls {
   int n;                        /*!< number of planes */
@@ -61,10 +81,10 @@ struct vsph_walls {
   double band;                  /*!< linear: the nearest row, depth (m) */
   double window;                /*!< linear: half-width along the wall (m) */
   double g;                     /*!< gravity along -e_d for the correction */
-  int solid; /*!< 1: fixed wall particles (Adami et al. 2012) outside a box
-                  of mirror planes, not mirrored ghosts */
-  double dx; /*!< solid: their lattice spacing, the fluid's (m); set by
-                  vsph_integrate_alloc from the fluid's volume */
+  int solid;       /*!< vsph_walls_solid: non-zero, fixed wall particles outside
+                        a box of mirror planes, not mirrored ghosts */
+  double dx;       /*!< solid: their lattice spacing, the fluid's (m); set by
+                        vsph_integrate_alloc from the fluid's volume */
   double rho0, c0; /*!< state equation for the ghost density */
 };
 
@@ -152,5 +172,21 @@ int vsph_walls_solid_generate(const struct vsph_walls *w,
  *  Adami et al. (2013)'s cavity [reconstructed]. */
 void vsph_walls_solid_velocity(const struct vsph_walls *w, int dim,
                                const double x[3], double u[3]);
+
+/** @brief Velocities of evolving wall particles (VSPH_WALLS_EVOLVING,
+ *  Basa et al. 2009: "tangential velocities extrapolated normally to the
+ *  wall"), [reconstructed] as the channels' linear extrapolation: a wall
+ *  particle behind one plane at depth d gets the tangential velocity
+ *  u_w - gamma d, gamma fitted to the fluid's nearest rows within the
+ *  window along the wall (vsph_walls_generate's fit), and the normal
+ *  velocity the prescribed (0: a plane moves along itself); one behind
+ *  two planes (a corner), or with no fluid in its
+ *  window, its prescribed velocity (vsph_walls_solid_velocity). @p gh
+ *  holds the rows' scratch (vsph_walls_ghosts_alloc with the linear
+ *  velocity, capacity at least dim n_fluid). Serial rows, then each wall
+ *  particle by itself: the same for any thread count. */
+void vsph_walls_solid_extrapolate(const struct vsph_walls *w,
+                                  struct vsph_particles *p, size_t n_fluid,
+                                  struct vsph_walls_ghosts *gh);
 
 #endif /* VSPH_SOLVER_WALLS_H */

@@ -3,11 +3,12 @@
  * t = 0, no-slip walls all round. Re = U L/nu; Ghia, Ghia & Shin (1982)
  * tabulate the steady centreline profiles at Re = 100, 400 and 1000
  * (analysis/references.c). Walls: fixed wall particles with Adami et al.'s
- * (2012) state, the lid's rows (corners included) moving at U. No body
- * force. Stable with the transport-velocity scheme (Solver:tvf = 1); the
- * mirrored ghosts of the channels pair at the singular corners within
- * 0.05 s (docs/theory.md, section 9). Parameters: struct vsph_scene_cavity
- * (solver/scene.h). */
+ * (2012) state (the default) or Basa et al.'s (2009) evolving density and
+ * extrapolated tangential velocity (Scene:walls = evolving), the lid's
+ * rows (corners included) moving at U. No body force. Stable with the
+ * transport-velocity scheme (Solver:tvf = 1); the mirrored ghosts of the
+ * channels pair at the singular corners within 0.05 s (docs/theory.md, section
+ * 9). Parameters: struct vsph_scene_cavity (solver/scene.h). */
 #include <math.h>
 #include <stdio.h>
 
@@ -31,12 +32,20 @@ static const struct vsph_params_spec cavity_params[] = {
                           "reference density (kg/m^2)"),
     VSPH_PARAMS_REAL_SPEC(S, c0, 0.0, 0.0, 1e9, "sound speed (m/s); 0: 10 U"),
     VSPH_PARAMS_REAL_SPEC(S, t_end, 10.0, 1e-9, 1e9, "default end time (s)"),
+    VSPH_PARAMS_NAME_SPEC(S, walls, "adami",
+                          "wall particles: adami (Adami et al. 2012: "
+                          "pressure and velocity from the fluid) or evolving "
+                          "(Basa et al. 2009: density by continuity, the "
+                          "tangential velocity extrapolated)"),
 };
 #undef S
 
 static int setup(struct vsph_scene *sc) {
   struct vsph_scene_cavity *cv = &sc->u.cavity;
   const double L = cv->L;
+  int solid;
+  /* an unknown name is reported by the resolver */
+  if (vsph_walls_solid_resolve(cv->walls, &solid)) return VSPH_EINVAL;
   cv->nu = cv->U * L / cv->Re;
   sc->ref_length = L;
   sc->rho0 = cv->rho0;
@@ -54,7 +63,8 @@ static int setup(struct vsph_scene *sc) {
                           .kind = {VSPH_WALLS_MIRROR, VSPH_WALLS_MIRROR,
                                    VSPH_WALLS_MIRROR, VSPH_WALLS_MIRROR},
                           .noslip = 1,
-                          .solid = 1,
+                          .velocity = VSPH_WALLS_VEL_LINEAR,
+                          .solid = solid,
                           .rho0 = sc->rho0,
                           .c0 = sc->c0};
   wl.uw[3][0] = cv->U;
