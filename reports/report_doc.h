@@ -18,7 +18,7 @@ struct vsph_plot;
 
 /* One row of the claims table. */
 struct vsph_report_claim {
-  char claim[256], paper[256], ours[320], verdict[256];
+  char claim[256], paper[256], ours[480], verdict[256];
   char setup[600]; /* how our set-up, quantity and method differ from the
                       paper's, and the [reconstructed] choices the verdict
                       rests on ("none" where nothing differs) */
