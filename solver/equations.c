@@ -15,7 +15,8 @@
 static const char *const EOS_NAMES[VSPH_EQUATIONS_EOS_COUNT] = {
     [VSPH_EQUATIONS_EOS_LINEAR] = "linear",
     [VSPH_EQUATIONS_EOS_TAIT] = "tait",
-    [VSPH_EQUATIONS_EOS_GAS] = "gas"};
+    [VSPH_EQUATIONS_EOS_GAS] = "gas",
+    [VSPH_EQUATIONS_EOS_ISOTHERMAL] = "isothermal"};
 
 static const char *const CORR_NAMES[VSPH_PAIR_CORR_COUNT] = {
     [VSPH_PAIR_CORR_NONE] = "none",
@@ -38,7 +39,8 @@ int vsph_equations_eos_resolve(const char *name, int *eos) {
     if (strcmp(name, EOS_NAMES[*eos]) == 0) return VSPH_OK;
   *eos = -1;
   VSPH_FAIL(VSPH_EINVAL,
-            "unknown state equation Solver:eos = '%s' (linear, tait, gas)",
+            "unknown state equation Solver:eos = '%s' (linear, tait, gas, "
+            "isothermal)",
             name);
 }
 
@@ -1418,6 +1420,8 @@ void vsph_equations_energy_compute(const struct vsph_equations_props *ep,
                 ((pow(1.0 / rr, gt - 1.0) - 1.0) / (gt - 1.0) + rr - 1.0);
     else if (ep->eos == VSPH_EQUATIONS_EOS_GAS)
       en->Ec += m * (p->e[i] - e0);
+    else if (ep->eos == VSPH_EQUATIONS_EOS_ISOTHERMAL) /* c^2 ln(rho/rho0) */
+      en->Ec -= m * cm * cm * log(rr);
     else
       en->Ec += m * cm * cm * (-log(rr) + rr - 1.0);
     if (d >= 2) en->Lz += m * (x[0] * p->vel[1][i] - x[1] * p->vel[0][i]);

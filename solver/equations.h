@@ -36,6 +36,9 @@ enum vsph_equations_eos {
                                       - 1), gamma = 7 (Basa's eq. 13) */
   VSPH_EQUATIONS_EOS_GAS,        /*!< p = (gamma - 1) rho e, e by the
                                       energy equation (Basa's eqs. 12, 14) */
+  VSPH_EQUATIONS_EOS_ISOTHERMAL, /*!< p = c0^2 rho, the absolute pressure
+                                      (Morris et al. 1997; Vukcevic et
+                                      al.'s eq. 20) */
   VSPH_EQUATIONS_EOS_COUNT
 };
 
@@ -169,6 +172,8 @@ static inline double vsph_equations_pressure(
     }
     case VSPH_EQUATIONS_EOS_GAS:
       return (VSPH_EQUATIONS_GAS_GAMMA - 1.0) * rho * e;
+    case VSPH_EQUATIONS_EOS_ISOTHERMAL:
+      return ep->c0 * ep->c0 * rho;
     default:
       return ep->c0 * ep->c0 * (rho - ep->rho0);
   }

@@ -68,8 +68,10 @@ static const struct vsph_params_spec SOLVER[] = {
                           "not part of the cache key"),
     VSPH_PARAMS_NAME_SPEC(P, eos, "linear",
                           "state equation: linear (c0^2 (rho - rho0)), tait "
-                          "(gamma 7) or gas (ideal gas, gamma 1.4, with the "
-                          "energy equation); not gas or tait with gravity"),
+                          "(gamma 7), gas (ideal gas, gamma 1.4, with the "
+                          "energy equation) or isothermal (c0^2 rho, the "
+                          "absolute pressure: Morris et al. 1997); only "
+                          "linear with gravity"),
     VSPH_PARAMS_REAL_SPEC(P, p0, 0.0, 0.0, 1e9,
                           "gas: reference pressure (Pa), c0 = sqrt(1.4 "
                           "p0/rho0); 0: p0 = rho0 c0^2/1.4 from the scene's "
@@ -276,12 +278,14 @@ static int check_cost(const struct vsph_run_props *rp,
   unsigned sides = 0; /* bit 2a + (side > 0): a plane bounds axis a */
   for (int q = 0; q < sc->walls.n; q++)
     sides |= 1u << (2 * sc->walls.axis[q] + (sc->walls.side[q] > 0));
-  if (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS &&
+  if ((rp->eos_kind == VSPH_EQUATIONS_EOS_GAS ||
+       rp->eos_kind == VSPH_EQUATIONS_EOS_ISOTHERMAL) &&
       sides != (1u << (2 * sc->dim)) - 1u)
     VSPH_FAIL(VSPH_EINVAL,
-              "Solver:eos = gas needs a confined scene (walls or periodic "
+              "Solver:eos = %s needs a confined scene (walls or periodic "
               "ends all round): at rho0 its pressure is p0 > 0, and a free "
-              "surface would expand");
+              "surface would expand",
+              rp->eos);
   if (rp->tvf && sc->walls.solid != VSPH_WALLS_ADAMI)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:tvf = 1 needs a scene with Adami et al.'s wall "

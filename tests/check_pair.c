@@ -807,15 +807,19 @@ static void rhs_eos(struct vsph_particles *p, int eos, int reduce,
   vsph_cells_free(cells);
 }
 
-/* Tait's law (Basa's eq. 13) and the gas law against their closed forms,
+/* Tait's law (Basa's eq. 13), the gas law and the isothermal law (p =
+ * c0^2 rho, Morris et al.'s) against their closed forms,
  * and the energies: on a random set without viscosity or delta-SPH the
  * pressure terms exchange kinetic and compressible energy only, so
  * dEk/dt + dEc/dt = 0 to rounding (1e-12 of sum |m u.a|: ~1e3 terms of
- * mixed sign). For Tait dEc uses e'(rho) = p/rho^2 of Ec's closed form
+ * mixed sign). For Tait and the isothermal law dEc uses e'(rho) = p/rho^2
+ * of Ec's closed form
  * (checked by a centred difference of Ec in rho, 1e-7: step 1e-5, error
  * O(step^2)); for the gas, dEc = sum m de/dt of the energy equation. */
 START_TEST(test_state_equations) {
-  const int eos = _i == 0 ? VSPH_EQUATIONS_EOS_TAIT : VSPH_EQUATIONS_EOS_GAS;
+  static const int EOS[3] = {VSPH_EQUATIONS_EOS_TAIT, VSPH_EQUATIONS_EOS_GAS,
+                             VSPH_EQUATIONS_EOS_ISOTHERMAL};
+  const int eos = EOS[_i];
   struct vsph_particles *p = random_set(2, 515);
   const double e0 = C0 * C0 / (1.4 * 0.4); /* p0/((gamma-1) rho0) */
   ck_assert_int_eq(vsph_particles_energy_alloc(p), 0);
@@ -827,7 +831,9 @@ START_TEST(test_state_equations) {
     const double r = p->rho[i] / RHO0;
     const double want = eos == VSPH_EQUATIONS_EOS_TAIT
                             ? RHO0 * C0 * C0 / 7.0 * (pow(r, 7.0) - 1.0)
-                            : 0.4 * p->rho[i] * p->e[i];
+                        : eos == VSPH_EQUATIONS_EOS_GAS
+                            ? 0.4 * p->rho[i] * p->e[i]
+                            : C0 * C0 * p->rho[i];
     ck_assert_double_eq_tol(p->p[i], want, 1e-14 * fabs(RHO0 * C0 * C0));
   }
   ck_assert_double_eq_tol(vsph_equations_gas_e0(&ep), e0, 1e-14 * e0);
@@ -841,7 +847,7 @@ START_TEST(test_state_equations) {
                         fabs(p->vel[1][i] * p->acc[1][i]));
   ck_assert_double_gt(fabs(b.dEk), 1e-3 * scale);
   ck_assert_double_le(fabs(b.dEk + b.dEc), 1e-12 * scale);
-  if (eos == VSPH_EQUATIONS_EOS_TAIT) { /* e'(rho) of Ec = p/rho^2 */
+  if (eos != VSPH_EQUATIONS_EOS_GAS) { /* e'(rho) of Ec = p/rho^2 */
     struct vsph_particles *q = vsph_particles_alloc(1, 2);
     q->n = 1;
     q->m[0] = 1.0;
@@ -852,7 +858,9 @@ START_TEST(test_state_equations) {
     vsph_equations_energy_compute(&ep, q, 1, &ea);
     q->rho[0] = rho - dr;
     vsph_equations_energy_compute(&ep, q, 1, &eb);
-    const double pr = RHO0 * C0 * C0 / 7.0 * (pow(1.013, 7.0) - 1.0);
+    const double pr = eos == VSPH_EQUATIONS_EOS_TAIT
+                          ? RHO0 * C0 * C0 / 7.0 * (pow(1.013, 7.0) - 1.0)
+                          : C0 * C0 * rho;
     ck_assert_double_eq_tol((ea.Ec - eb.Ec) / (2 * dr), pr / (rho * rho),
                             1e-7 * pr / (rho * rho));
     vsph_particles_free(q);
@@ -1108,7 +1116,7 @@ Suite *vsph_pair_suite(void) {
                       (int)vsph_scene_count() * 5,
                       (int)vsph_scene_count() * 5 + 1);
   tcase_add_loop_test(tc, test_gather_shapes, 0, 10);
-  tcase_add_loop_test(tc, test_state_equations, 0, 2);
+  tcase_add_loop_test(tc, test_state_equations, 0, 3);
   tcase_add_test(tc, test_pressure_reduction);
   tcase_add_loop_test(tc, test_corr_exact, 0, 2);
   tcase_add_loop_test(tc, test_corr_twin, 0, 6);
