@@ -19,6 +19,7 @@ static const char *const CMD = "run";
 
 static const char ABOUT[] =
     "Run the weakly compressible free-surface solver (classical RK4; with\n"
+    "--set Solver:integrator=leapfrog a drift-kick-drift leapfrog; with\n"
     "--tvf 1 the transport-velocity kick-drift-kick; with --scheme contact\n"
     "contact SPH, each pair through the acoustic Riemann solution) on a\n"
     "scene (see vsph scenes). Parameters come from FILE (YAML subset:\n"

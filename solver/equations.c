@@ -1356,6 +1356,39 @@ static void evolving_one(struct vsph_particles *p, size_t n_fluid,
   p->drho[i] = p->rho[i] * cont;
 }
 
+void vsph_equations_xsph(const struct vsph_equations_props *ep,
+                         const struct vsph_particles *p, size_t n_fluid,
+                         const struct vsph_cells *cells, double eps,
+                         double *const w[3]) {
+  const int dim = p->dim;
+  const struct vsph_kernel_type *k = ep->visc.kernel;
+  const double h = ep->visc.h, wf = pow(h, -dim);
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, k, dim, h);
+#pragma omp parallel for schedule(dynamic, 8)
+  for (size_t c = 0; c < cells->ncells; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+         i++) {
+      if (p->id[i] >= n_fluid) continue;
+      double sum[3] = {0, 0, 0};
+      struct vsph_pair_iter it;
+      struct vsph_pair_chunk b;
+      vsph_pair_begin(&it, &pk, p, &rg, i);
+      while (vsph_pair_gather(&it, dim, pk.dfq_id, &b))
+        for (size_t q = 0; q < b.m; q++) {
+          const size_t j = b.j[q];
+          const double Wij = vsph_kernel_w(k, dim, sqrt(b.s2[q]) / h) * wf;
+          const double Vj = p->m[j] / p->rho[j];
+          for (int a = 0; a < dim; a++)
+            sum[a] += Vj * (p->vel[a][j] - p->vel[a][i]) * Wij;
+        }
+      for (int a = 0; a < dim; a++) w[a][i] = p->vel[a][i] + eps * sum[a];
+    }
+  }
+}
+
 int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
                                   struct vsph_particles *p, size_t n_fluid,
                                   const struct vsph_cells *cells) {

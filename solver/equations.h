@@ -292,6 +292,16 @@ int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
                                   struct vsph_particles *p, size_t n_fluid,
                                   const struct vsph_cells *cells);
 
+/** @brief XSPH's drift velocity (Monaghan 1989, in Vukcevic et al.'s
+ *  eq. 21 form) of every fluid particle i (id < n_fluid):
+ *  w_i = u_i + eps sum_j (m_j/rho_j) (u_j - u_i) W_ij over its neighbours
+ *  within the support (ghosts and wall particles included, i itself not),
+ *  into w[k][i] by index; positions and velocities as they are. */
+void vsph_equations_xsph(const struct vsph_equations_props *ep,
+                         const struct vsph_particles *p, size_t n_fluid,
+                         const struct vsph_cells *cells, double eps,
+                         double *const w[3]);
+
 /** @brief The fluid particles' density by summation (ep->summation, ghost
  *  walls or none): rho_i = sum_j m_j W_ij over every particle within
  *  reach, i itself and the ghosts included (their masses are their

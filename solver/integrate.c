@@ -46,7 +46,7 @@ static int buffers_alloc(struct vsph_integrate *s) {
     free(s->extra[f]);
     s->extra[f] = NULL;
   }
-  s->tvf_have = 0; /* the rates kept by id are gone with ks */
+  s->kept = 0; /* the rates kept by id are gone with ks */
   const int corr = s->props.eq.corr != VSPH_PAIR_CORR_NONE;
   if ((vsph_viscous_first_pass(s->props.eq.visc.form) || corr) &&
       !(s->vws = vsph_viscous_ws_alloc(cap, d)))
@@ -167,7 +167,7 @@ double vsph_integrate_dt(const struct vsph_integrate *s) {
       gmax = fmax(gmax, ep->beta * ep->beta * sqrt(r2));
     }
   }
-  return vsph_integrate_dt_rule(s->props.cfl, ep->tvf,
+  return vsph_integrate_dt_rule(s->props.cfl, ep->tvf || s->props.leapfrog,
                                 ep->scheme == VSPH_EQUATIONS_CONTACT, h, c0,
                                 max_speed(s), nu, gmax);
 }
@@ -285,7 +285,7 @@ static void tvf_close(struct vsph_integrate *s, double kick) {
       s->ks[d + k][id] = p->bacc[k][i];
     }
   }
-  s->tvf_have = 1;
+  s->kept = 1;
 }
 
 /* The transport-velocity scheme (Adami, Hu & Adams 2013), kick-drift-kick
@@ -299,7 +299,7 @@ static int step_tvf(struct vsph_integrate *s, double dt) {
   size_t nint = 0;
   double min_s2 = INFINITY;
   int st;
-  if (!s->tvf_have) {
+  if (!s->kept) {
     if ((st = prepare(s, 0.0)) || (st = rhs(s, 0, &nint, &min_s2))) return st;
     tvf_close(s, 0.0);
   }
@@ -323,11 +323,130 @@ static int step_tvf(struct vsph_integrate *s, double dt) {
   return VSPH_OK;
 }
 
+/* The leapfrog's drift velocity at the current positions and velocities,
+ * by particle id into ks[0..d-1]: u, plus XSPH's share with the ghosts'
+ * velocities refreshed from their sources. */
+static void drift_velocity(struct vsph_integrate *s) {
+  struct vsph_particles *p = s->p;
+  const int d = p->dim;
+  const size_t n = p->n, nf = s->n_fluid;
+  if (s->props.xsph > 0.0) {
+    if (s->props.walls.n > 0 && !s->props.walls.solid)
+      vsph_walls_update(&s->props.walls, p, nf, s->gh, s->where);
+    double *w[3] = {s->extra[0], d > 1 ? s->extra[1] : NULL,
+                    d > 2 ? s->extra[2] : NULL};
+    vsph_equations_xsph(&s->props.eq, p, nf, s->cells, s->props.xsph, w);
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < n; i++)
+      for (int k = 0; k < d; k++)
+        s->ks[k][p->id[i]] = p->id[i] < nf ? w[k][i] : 0.0;
+  } else {
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < n; i++)
+      for (int k = 0; k < d; k++)
+        s->ks[k][p->id[i]] = p->id[i] < nf ? p->vel[k][i] : 0.0;
+  }
+  s->kept = 1;
+}
+
+/* Half a drift: r += dt/2 w, w by id. */
+static void half_drift(struct vsph_integrate *s, double dt) {
+  struct vsph_particles *p = s->p;
+  const int d = p->dim;
+  const size_t n = p->n, nf = s->n_fluid;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < n; i++)
+    if (p->id[i] < nf)
+      for (int k = 0; k < d; k++) p->pos[k][i] += 0.5 * dt * s->ks[k][p->id[i]];
+}
+
+/* The leapfrog's rates by particle id for the next step's mid-step
+ * prediction: a into ks[d..2d-1], d rho/dt into ks[2d] (wall particles'
+ * too). */
+static void keep_rates(struct vsph_integrate *s) {
+  struct vsph_particles *p = s->p;
+  const int d = p->dim;
+  const size_t n = p->n;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < n; i++) {
+    const size_t id = p->id[i]; /* every particle (a checkpoint writes
+                                   them all; only fluid and evolving walls
+                                   are read) */
+    for (int k = 0; k < d; k++) s->ks[d + k][id] = p->acc[k][i];
+    s->ks[2 * d][id] = p->drho[i];
+  }
+}
+
+/* Vukcevic et al.'s drift-kick-drift leapfrog (vsph_integrate_step). The
+ * mid-step evaluation takes the velocity and the integrated density
+ * predicted with the last step's rates, u + dt/2 a_prev, rho + dt/2
+ * drho_prev [reconstructed: the paper does not say which velocity enters
+ * the velocity-dependent forces; with u_n the scheme is first order, with
+ * the prediction second, as the paper's "error roughly dt^2" asks]. */
+static int step_leapfrog(struct vsph_integrate *s, double dt) {
+  struct vsph_particles *p = s->p;
+  const int d = p->dim;
+  size_t nint = 0;
+  double min_s2 = INFINITY;
+  int st;
+  if (!s->kept) { /* the very first step: w and the rates at the start */
+    if ((st = prepare(s, 0.0)) || (st = rhs(s, 0, NULL, NULL))) return st;
+    keep_rates(s);
+    drift_velocity(s);
+  }
+  half_drift(s, dt);
+  const int rho_fluid = !s->props.eq.summation,
+            rho_wall = s->props.walls.solid == VSPH_WALLS_EVOLVING;
+  const size_t nf = s->n_fluid;
+  double *const rho0 = s->y0[2 * d];
+  /* u_n and rho_n by id, then the prediction where the particles now are */
+  for (size_t i = 0; i < p->n; i++) {
+    const size_t id = p->id[i];
+    if (id < nf) {
+      for (int k = 0; k < d; k++) s->y0[k][id] = p->vel[k][i];
+      rho0[id] = p->rho[i];
+    } else if (rho_wall) {
+      rho0[id] = p->rho[i];
+    }
+  }
+  if ((st = prepare(s, 0.0))) return st;
+  const size_t n = p->n;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < n; i++) {
+    const size_t id = p->id[i];
+    const int fluid = id < nf;
+    if (fluid ? rho_fluid : rho_wall)
+      p->rho[i] = rho0[id] + 0.5 * dt * s->ks[2 * d][id];
+    if (fluid)
+      for (int k = 0; k < d; k++)
+        p->vel[k][i] = s->y0[k][id] + 0.5 * dt * s->ks[d + k][id];
+  }
+  if ((st = rhs(s, 0, &nint, &min_s2))) return st;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < n; i++) { /* the kick, from u_n and rho_n */
+    const size_t id = p->id[i];
+    const int fluid = id < nf;
+    if (fluid ? rho_fluid : rho_wall) p->rho[i] = rho0[id] + dt * p->drho[i];
+    if (fluid)
+      for (int k = 0; k < d; k++)
+        p->vel[k][i] = s->y0[k][id] + dt * p->acc[k][i];
+  }
+  keep_rates(s);
+  drift_velocity(s);
+  half_drift(s, dt);
+  s->t += dt;
+  s->steps++;
+  s->interactions = nint;
+  s->min_dist = sqrt(min_s2);
+  return VSPH_OK;
+}
+
 static int keep_before(struct vsph_integrate *s);
 static void put_back(struct vsph_integrate *s);
 
 int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   if (s->props.eq.tvf) return step_tvf(s, dt);
+  if (s->props.leapfrog) return step_leapfrog(s, dt);
   /* the particles as the step finds them, to put back if it is stopped */
   if (s->stop && keep_before(s)) return VSPH_ENOMEM;
   struct vsph_particles *p = s->p;
@@ -576,6 +695,20 @@ static int arrays(struct vsph_particles *p, void **a[32], size_t sz[32]) {
   return n;
 }
 
+/* The fields kept by id between steps (s->kept): 2d for the transport
+ * velocity, 2d + 1 for the leapfrog (w, a, d rho/dt), none for RK4. */
+static int kept_fields(const struct vsph_integrate *s) {
+  return s->props.eq.tvf     ? 2 * s->p->dim
+         : s->props.leapfrog ? 2 * s->p->dim + 1
+                             : 0;
+}
+
+/* ... and their length: the transport velocity's by fluid id, the
+ * leapfrog's by every id (evolving wall particles' density rates). */
+static size_t kept_len(const struct vsph_integrate *s) {
+  return s->props.eq.tvf ? s->n_fluid : s->p->n;
+}
+
 size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf) {
   struct cursor c = {.buf = buf};
   struct vsph_particles *p = s->p;
@@ -594,11 +727,11 @@ size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf) {
   put(&c, &have, sizeof have);
   for (int k = 0; k < na; k++)
     if (*a[k]) put(&c, *a[k], p->n * sz[k]);
-  const int32_t tvf = s->tvf_have;
-  put(&c, &tvf, sizeof tvf);
-  if (tvf) /* the last evaluation's a and a_b by particle id */
-    for (int f = 0; f < 2 * p->dim; f++)
-      put(&c, s->ks[f], s->n_fluid * sizeof(double));
+  const int32_t kept = s->kept;
+  put(&c, &kept, sizeof kept);
+  if (kept) /* the rates kept by particle id */
+    for (int f = 0; f < kept_fields(s); f++)
+      put(&c, s->ks[f], kept_len(s) * sizeof(double));
   return c.at;
 }
 
@@ -637,17 +770,19 @@ int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
   for (int k = 0; k < na; k++)
     if (*a[k] && !get(&c, *a[k], p->n * sz[k]))
       VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
-  int32_t tvf;
-  if (!get(&c, &tvf, sizeof tvf))
+  int32_t kept;
+  if (!get(&c, &kept, sizeof kept))
     VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
-  if (tvf)
-    for (int f = 0; f < 2 * p->dim; f++)
-      if (!get(&c, s->ks[f], s->n_fluid * sizeof(double)))
+  if (kept && !kept_fields(s))
+    VSPH_FAIL(VSPH_EINVAL, "the saved state's fields are not this run's");
+  if (kept)
+    for (int f = 0; f < kept_fields(s); f++)
+      if (!get(&c, s->ks[f], kept_len(s) * sizeof(double)))
         VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
   for (size_t i = 0; i < p->n; i++)
     if (p->id[i] >= p->n)
       VSPH_FAIL(VSPH_EINVAL, "the saved state's particle ids are damaged");
-  s->tvf_have = tvf != 0;
+  s->kept = kept != 0;
   s->t = t;
   s->min_dist = min_dist;
   s->steps = (size_t)head[4];

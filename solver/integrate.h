@@ -29,6 +29,9 @@ struct vsph_integrate_props {
   double min_dist;                /*!< stop when two particles come closer
                                        (m): pairing, a zero-energy mode */
   double box_lo[3], box_hi[3];    /*!< stop when a particle leaves the box */
+  int leapfrog;                   /*!< 1: drift-kick-drift leapfrog instead
+                                       of RK4 (not with eq.tvf) */
+  double xsph;                    /*!< leapfrog: XSPH's epsilon; 0: off */
 };
 
 /** Integrator state. */
@@ -48,8 +51,9 @@ struct vsph_integrate {
   struct vsph_walls_ghosts *gh;
   size_t *where;
   double *y0[8], *ks[8], *extra[4]; /* RK fields: r, u, rho (, e) */
-  int tvf_have; /* the transport-velocity step: ks[0..2d-1] hold the last
-                   evaluation's a and a_b by particle id */
+  int kept; /* ks[0..] hold rates kept by particle id between steps: the
+              transport velocity's a and a_b (2d fields), the leapfrog's
+              drift velocity, a and d rho/dt (2d + 1 fields) */
   /** if not NULL, an RK4 step is abandoned between its stages when *stop
    *  becomes non-zero: the particles are put back as the step found them
    *  (a copy taken before it) and the step returns VSPH_EINTR */
@@ -81,7 +85,15 @@ double vsph_integrate_dt(const struct vsph_integrate *s);
 double vsph_integrate_dt_rule(double cfl, int tvf, int contact, double h,
                               double c0, double umax, double nu, double gmax);
 
-/** @brief One RK4 step of length @p dt.
+/** @brief One step of length @p dt: RK4; the transport velocity's
+ *  kick-drift-kick (props.eq.tvf); or the drift-kick-drift leapfrog
+ *  (props.leapfrog; Vukcevic et al.'s eq. 22): r += dt/2 w;
+ *  evaluate at (r, u, rho); u += dt a, rho += dt drho (continuity, and
+ *  evolving wall particles); w = u + xsph sum_j (m_j/rho_j) (u_j - u_i)
+ *  W_ij at the mid-step positions (or w = u without XSPH); r += dt/2 w.
+ *  The drift velocity w is kept by particle id for the next step's first
+ *  drift [reconstructed: the paper does not say which velocity drifts]:
+ *  one evaluation a step.
  *  @return VSPH_OK, or an error from the neighbour search (e.g. VSPH_EINVAL
  *  on non-finite positions: call _check). */
 int vsph_integrate_step(struct vsph_integrate *s, double dt);

@@ -98,6 +98,15 @@ static const struct vsph_params_spec SOLVER[] = {
                           "and the ghosts or wall particles, before each "
                           "evaluation; Basa et al.'s choice); tvf sums "
                           "always; not with scheme contact"),
+    VSPH_PARAMS_NAME_SPEC(P, integrator, "rk4",
+                          "time stepping: rk4 (classical Runge-Kutta) or "
+                          "leapfrog (drift-kick-drift at cfl/4, Vukcevic et "
+                          "al.'s eq. 22); tvf has its own kick-drift-kick"),
+    VSPH_PARAMS_REAL_SPEC(P, xsph, 0.0, 0.0, 1.0,
+                          "XSPH's epsilon: the particles drift with u + eps "
+                          "sum_j (m_j/rho_j) (u_j - u_i) W_ij (Vukcevic et "
+                          "al. 0.3); leapfrog only, not with wall particles; "
+                          "0: off"),
     VSPH_PARAMS_NAME_SPEC(P, scheme, "wcsph",
                           "wcsph (THEORY 5 with the viscous formulation "
                           "visc) or contact (Parshikov et al.'s Godunov-type "
@@ -203,6 +212,20 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
               "rate)");
   if (rp->p0 > 0.0 && rp->eos_kind != VSPH_EQUATIONS_EOS_GAS)
     VSPH_FAIL(VSPH_EINVAL, "Solver:p0 applies to Solver:eos = gas only");
+  if (!strcmp(rp->integrator, "leapfrog"))
+    rp->leapfrog = 1;
+  else if (strcmp(rp->integrator, "rk4"))
+    VSPH_FAIL(VSPH_EINVAL, "unknown Solver:integrator '%s' (rk4 or leapfrog)",
+              rp->integrator);
+  if (rp->leapfrog && (rp->tvf || contact))
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:integrator = leapfrog does not apply with tvf = 1 or "
+              "scheme contact (each has its own stepping)");
+  if (rp->leapfrog && rp->eos_kind == VSPH_EQUATIONS_EOS_GAS)
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:integrator = leapfrog takes a barotropic law, not gas");
+  if (rp->xsph > 0.0 && !rp->leapfrog)
+    VSPH_FAIL(VSPH_EINVAL, "Solver:xsph needs Solver:integrator = leapfrog");
   if (rp->snapshots > rp->outputs)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:snapshots (%zu) must not exceed "
@@ -286,6 +309,12 @@ static int check_cost(const struct vsph_run_props *rp,
               "ends all round): at rho0 its pressure is p0 > 0, and a free "
               "surface would expand",
               rp->eos);
+  if (rp->xsph > 0.0 && sc->walls.solid)
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:xsph does not take wall particles yet (%s has them): "
+              "their velocities are set per evaluation, the drift reads them "
+              "after the kick",
+              sc->type->name);
   if (rp->tvf && sc->walls.solid != VSPH_WALLS_ADAMI)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:tvf = 1 needs a scene with Adami et al.'s wall "
@@ -323,8 +352,9 @@ static int check_cost(const struct vsph_run_props *rp,
                       : sc->body == VSPH_EQUATIONS_BODY_UNIFORM ? fabs(sc->f)
                                                                 : 0.0;
   const double dt = vsph_integrate_dt_rule(
-      rp->cfl, rp->tvf, rp->scheme_kind == VSPH_EQUATIONS_CONTACT, h,
-      run_c0(rp, sc), sc->U_max, sc->mu / sc->rho0, gmax);
+      rp->cfl, rp->tvf || rp->leapfrog,
+      rp->scheme_kind == VSPH_EQUATIONS_CONTACT, h, run_c0(rp, sc), sc->U_max,
+      sc->mu / sc->rho0, gmax);
   const double steps = t_end / dt;
   e->steps = steps;
   if (!(steps <= (double)rp->max_steps))
@@ -379,6 +409,8 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
   ip.eq.corr = rp->corr;
   ip.eq.tvf = (int)rp->tvf;
   ip.eq.summation = rp->summation || rp->tvf;
+  ip.leapfrog = rp->leapfrog;
+  ip.xsph = rp->xsph;
   ip.eq.pb = rp->pb > 0.0 ? rp->pb : ip.eq.rho0 * ip.eq.c0 * ip.eq.c0;
   if (rp->tvf && (st = vsph_particles_tvf_alloc(fluid))) goto fail;
   if (rp->scheme_kind == VSPH_EQUATIONS_CONTACT) {

@@ -70,8 +70,10 @@ struct vsph_run_props {
   char correction[VSPH_PARAMS_NAME_MAX]; /*!< none, shepard, bonetlok */
   size_t tvf; /*!< 1: the transport-velocity scheme */
   double pb;  /*!< its background pressure (Pa); 0: rho0 c0^2 */
-  char density[VSPH_PARAMS_NAME_MAX]; /*!< continuity or summation */
-  char scheme[VSPH_PARAMS_NAME_MAX];  /*!< wcsph or contact */
+  char density[VSPH_PARAMS_NAME_MAX];    /*!< continuity or summation */
+  char integrator[VSPH_PARAMS_NAME_MAX]; /*!< rk4 or leapfrog */
+  double xsph; /*!< XSPH's epsilon (leapfrog only); 0: off */
+  char scheme[VSPH_PARAMS_NAME_MAX]; /*!< wcsph or contact */
   double alpha;    /*!< contact: h = 2 alpha dx (0: from hdx) */
   double zeta_num; /*!< contact: fraction of eta_num removed */
   double
@@ -82,6 +84,7 @@ struct vsph_run_props {
   int form;                             /*!< vsph_viscous_form of visc */
   int scheme_kind;                      /*!< vsph_equations_scheme */
   int summation;                        /*!< 1: density = summation */
+  int leapfrog;                         /*!< 1: integrator = leapfrog */
   const struct vsph_kernel_type *ktype; /*!< the kernel called kernel */
 };
 

@@ -298,6 +298,84 @@ START_TEST(test_summation_density) {
 }
 END_TEST
 
+/* The leapfrog (drift-kick-drift, Vukcevic et al.'s eq. 22) is second
+ * order in time: Poiseuille's start-up (res 8, the lattice shifted by
+ * 0.1 dx at random so that positions matter) to T = 4 dt0, dt0 the step
+ * rule's, with steps dt0/2, dt0/4 and dt0/8; the change of the velocity
+ * field, and of the positions, between successive halvings falls by 4
+ * (2^2), here taken within [3.2, 4.8] (measured 4.09 and 3.87; a
+ * first-order scheme gives 2, RK4 16: the mid-step evaluation at u_n
+ * instead of the predicted velocity, or a drift with the velocity before
+ * the kick, fail it). _i = 1: with XSPH (eps 0.3) and summation density,
+ * Vukcevic et al.'s (measured 4.23 and 3.89). Their isothermal law is
+ * left out here: its background pressure c0^2 rho0 makes the lattice's
+ * errors stiff, and these steps are not yet in the asymptotic range
+ * (measured 2.6). */
+static void leap_run(int xsph, double dt, size_t nstep, double *u) {
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:res", "8"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:integrator", "leapfrog"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:perturb", "0.1"), 0);
+  if (xsph) {
+    ck_assert_int_eq(vsph_params_set(prm, "Solver:xsph", "0.3"), 0);
+    ck_assert_int_eq(vsph_params_set(prm, "Solver:density", "summation"), 0);
+  }
+  struct vsph_run_props rp;
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
+  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_channel_poiseuille_type, prm), 0);
+  vsph_params_free(prm);
+  struct vsph_run *run = NULL;
+  ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+  struct vsph_integrate *s = run->integ;
+  if (!(dt > 0.0)) { /* only the rule's step */
+    u[0] = vsph_integrate_dt(s);
+    vsph_run_free(run);
+    return;
+  }
+  for (size_t k = 0; k < nstep; k++)
+    ck_assert_int_eq(vsph_integrate_step(s, dt), 0);
+  for (size_t i = 0; i < s->p->n; i++) {
+    const size_t id = s->p->id[i];
+    if (id >= s->n_fluid) continue;
+    u[4 * id] = s->p->vel[0][i];
+    u[4 * id + 1] = s->p->vel[1][i];
+    u[4 * id + 2] = s->p->pos[0][i];
+    u[4 * id + 3] = s->p->pos[1][i];
+  }
+  vsph_run_free(run);
+}
+
+START_TEST(test_leapfrog_order) {
+  double dt0;
+  leap_run(_i, 0.0, 0, &dt0);
+  const size_t n = 4 * 64;
+  const double L = 1.0; /* the period: x compared modulo it */
+  double *u[3];
+  for (int r = 0; r < 3; r++) {
+    u[r] = calloc(n, sizeof(double));
+    leap_run(_i, dt0 / (2 << r), (size_t)8 << r, u[r]);
+  }
+  for (int f = 0; f < 2; f++) { /* velocities, then positions */
+    double e1 = 0.0, e2 = 0.0, umax = 0.0;
+    for (size_t k = 2 * (size_t)f; k < n; k += 4)
+      for (size_t c = k; c < k + 2; c++) {
+        double a = u[0][c] - u[1][c], b = u[1][c] - u[2][c];
+        if (f && c == k) a -= L * nearbyint(a / L), b -= L * nearbyint(b / L);
+        e1 += a * a;
+        e2 += b * b;
+        umax = fmax(umax, fabs(u[2][c]));
+      }
+    ck_assert_double_gt(umax, 0.0);
+    ck_assert_double_gt(sqrt(e2), 1e-12 * umax); /* above rounding */
+    const double ratio = sqrt(e1 / e2);
+    ck_assert_msg(ratio > 3.2 && ratio < 4.8, "order ratio %g (field %d)",
+                  ratio, f);
+  }
+  for (int r = 0; r < 3; r++) free(u[r]);
+}
+END_TEST
+
 /* Periodic images: a channel at rest with uniform density feels no force
  * at all (each particle sees the same lattice across the seam), and one
  * and two threads step it bitwise alike under a drive. */
@@ -402,6 +480,7 @@ Suite *vsph_channel_suite(void) {
   tcase_add_test(tc, test_channel_energy);
   tcase_add_test(tc, test_linear_extrapolation);
   tcase_add_test(tc, test_periodic_rest_threads);
+  tcase_add_loop_test(tc, test_leapfrog_order, 0, 2);
   tcase_add_loop_test(tc, test_couette_steady, 0, 3);
   tcase_add_loop_test(tc, test_startup_walls, 0, 3);
   tcase_add_test(tc, test_poiseuille_meaf);

@@ -148,7 +148,8 @@ static void same_run(const char *a, const char *b) {
 /* Runs that carry every kind of state across a step: mirror ghosts
  * (Poiseuille), wall particles and the transport velocity's kept rates
  * (cavity, tvf), a free surface under gravity (standing wave), PVWF's
- * two passes, the gas law's energy, contact SPH in 3-D. */
+ * two passes, the gas law's energy, contact SPH in 3-D, the leapfrog's
+ * kept drift velocity (with XSPH), evolving wall particles' density. */
 static const char *const POIS[] = {"Solver:res=8", "Solver:t_end=0.1",
                                    "Solver:outputs=30", NULL};
 static const char *const TVF[] = {"Solver:res=8", "Solver:t_end=0.03",
@@ -158,6 +159,19 @@ static const char *const PVWF[] = {"Solver:res=10", "Solver:t_end=0.2",
                                    "Solver:visc=pvwf", NULL};
 static const char *const GAS[] = {"Solver:res=8", "Solver:t_end=0.1",
                                   "Solver:eos=gas", NULL};
+static const char *const LEAP[] = {"Solver:res=8",
+                                   "Solver:t_end=0.1",
+                                   "Solver:outputs=30",
+                                   "Solver:xsph=0.3",
+                                   "Solver:integrator=leapfrog",
+                                   "Solver:eos=isothermal",
+                                   "Solver:density=summation",
+                                   NULL};
+static const char *const EVOLVE[] = {
+    "Solver:res=8",         "Solver:t_end=0.1",
+    "Solver:kernel=cubic",  "Solver:hdx=1.5699",
+    "Solver:eos=tait",      "Solver:density=summation",
+    "Scene:walls=evolving", NULL};
 static const char *const CONTACT[] = {
     "Solver:scheme=contact", "Solver:kernel=wendland2",
     "Solver:alpha=0.5",      "Solver:res=8",
@@ -168,7 +182,8 @@ static const struct {
   const char *const *set;
 } CASES[] = {{"poiseuille", POIS},    {"cavity", TVF},
              {"standing-wave", WAVE}, {"stretching-square", PVWF},
-             {"poiseuille", GAS},     {"shear", CONTACT}};
+             {"poiseuille", GAS},     {"shear", CONTACT},
+             {"poiseuille", LEAP},    {"cavity", EVOLVE}};
 
 /* Stopped after 1, 2, 4, ... steps of each process (so between rows, at
  * rows and at snapshots) and resumed each time: bitwise the run never
