@@ -52,10 +52,11 @@ static int buffers_alloc(struct vsph_integrate *s) {
       !(s->vws = vsph_viscous_ws_alloc(cap, d)))
     return VSPH_ENOMEM;
   if (corr && vsph_viscous_ws_corr(s->vws)) return VSPH_ENOMEM;
-  const int evolving = s->props.walls.solid == VSPH_WALLS_EVOLVING;
+  const int evolving = s->props.walls.solid == VSPH_WALLS_EVOLVING,
+            fixed = s->props.walls.solid == VSPH_WALLS_FIXED;
   /* evolving wall particles: the nearest rows' scratch only, a particle
-   * in the rows of at most d planes */
-  if (s->props.walls.n > 0 && (!s->props.walls.solid || evolving) &&
+   * in the rows of at most d planes; fixed ones: the periodic images */
+  if (s->props.walls.n > 0 && (!s->props.walls.solid || evolving || fixed) &&
       !(s->gh = vsph_walls_ghosts_alloc(
             &s->props.walls, evolving ? (size_t)d * s->n_fluid + 1 : cap)))
     return VSPH_ENOMEM;
@@ -198,18 +199,42 @@ static double lattice_sum(const struct vsph_viscous_props *vp, double dx) {
   return S * pow(dx / vp->h, d);
 }
 
+/* How deep wall particles are laid: a support; fixed ones two, so that
+ * every one a fluid particle reaches sums a full support (and a two-pass
+ * form's first pass has its own). */
+static double solid_reach(const struct vsph_integrate *s) {
+  const struct vsph_viscous_props *vp = &s->props.eq.visc;
+  const double H = vp->kernel->kappa * vp->h;
+  return s->props.walls.solid == VSPH_WALLS_FIXED ? 2.0 * H : H;
+}
+
+/* The wall particles (ids n_fluid ..), laid once. */
+static size_t n_wall(const struct vsph_integrate *s) {
+  const struct vsph_walls *w = &s->props.walls;
+  return w->solid ? vsph_walls_solid_count(w, s->p->dim, w->dx, solid_reach(s))
+                  : 0;
+}
+
 /* Ghosts (walls only), the cell list with a skin, and the id -> index map. */
 static int prepare(struct vsph_integrate *s, double skin) {
   const struct vsph_viscous_props *vp = &s->props.eq.visc;
   const double H = vp->kernel->kappa * vp->h;
   int st;
+  const int fixed = s->props.walls.solid == VSPH_WALLS_FIXED;
   if (s->props.walls.solid) { /* laid once, fixed */
     const struct vsph_walls *w = &s->props.walls;
     if (s->p->n == s->n_fluid) {
-      const size_t nw = vsph_walls_solid_count(w, s->p->dim, w->dx, H);
+      const size_t nw = n_wall(s), n0 = s->p->n;
       if ((st = reserve(s, s->n_fluid + nw)) ||
-          (st = vsph_walls_solid_generate(w, s->p, s->n_fluid, w->dx, H)))
+          (st = vsph_walls_solid_generate(w, s->p, s->n_fluid, w->dx,
+                                          solid_reach(s))))
         return st;
+      for (size_t i = n0; i < s->p->n; i++) { /* the walls' own velocity */
+        double x[3] = {0, 0, 0}, u[3];
+        for (int a = 0; a < s->p->dim; a++) x[a] = s->p->pos[a][i];
+        vsph_walls_solid_velocity(w, s->p->dim, x, u);
+        for (int a = 0; a < s->p->dim; a++) s->p->vel[a][i] = u[a];
+      }
       /* evolving walls start where the fluid's sum starts: the full
        * lattice's density [reconstructed], so the fluid at rest stays so */
       if (w->solid == VSPH_WALLS_EVOLVING && s->props.eq.summation) {
@@ -217,15 +242,21 @@ static int prepare(struct vsph_integrate *s, double skin) {
         for (size_t i = s->n_fluid; i < s->p->n; i++) s->p->rho[i] = rho;
       }
     }
-  } else if (s->props.walls.n > 0) {
+  }
+  if (s->props.walls.n > 0 && (!s->props.walls.solid || fixed)) {
+    /* ghosts; beside fixed wall particles, the fluid's periodic images */
     const struct vsph_walls *w = &s->props.walls;
     vsph_walls_wrap(w, s->p, s->n_fluid);
     /* a two-pass form (PVWF) differentiates its first pass: ghosts two
-     * supports deep (Basa et al.: 4h rather than 2h) */
-    const double reach = vsph_viscous_passes(vp->form) * H;
+     * supports deep (Basa et al.: 4h rather than 2h); so do the fluid's
+     * periodic images beside fixed wall particles, which a wall particle
+     * a support beyond the period's end sums */
+    const double reach = (fixed ? 2.0 : vsph_viscous_passes(vp->form)) * H;
+    const size_t nw = n_wall(s);
     const size_t ng = vsph_walls_count(w, s->p, s->n_fluid, reach + skin);
-    if ((st = reserve(s, s->n_fluid + ng)) ||
-        (st = vsph_walls_generate(w, s->p, s->n_fluid, reach + skin, s->gh)))
+    if ((st = reserve(s, s->n_fluid + nw + ng))) return st;
+    s->gh->keep = nw; /* after reserve: it may make gh afresh */
+    if ((st = vsph_walls_generate(w, s->p, s->n_fluid, reach + skin, s->gh)))
       return st;
   }
   if ((st = vsph_cells_build(s->cells, s->p, H + skin))) return st;
@@ -240,14 +271,15 @@ static int rhs(struct vsph_integrate *s, int parts, size_t *nint,
   if (s->props.walls.solid == VSPH_WALLS_EVOLVING) {
     vsph_walls_solid_extrapolate(&s->props.walls, p, s->n_fluid, s->gh);
     st = vsph_equations_walls_evolving(&s->props.eq, p, s->n_fluid, s->cells);
-  } else if (s->props.walls.solid) {
+  } else if (s->props.walls.solid == VSPH_WALLS_ADAMI) {
     st = vsph_equations_walls_adami(&s->props.eq, &s->props.walls, p,
                                     s->n_fluid, s->cells);
   } else {
     if (s->props.walls.n > 0) /* the ghosts where their sources are */
       vsph_walls_update(&s->props.walls, p, s->n_fluid, s->gh, s->where);
-    if (s->props.eq.summation) {
-      vsph_equations_density_sum(&s->props.eq, p, s->n_fluid, s->cells);
+    if (s->props.eq.summation) { /* fixed wall particles sum theirs too */
+      vsph_equations_density_sum(&s->props.eq, p, s->n_fluid + n_wall(s),
+                                 s->cells);
       if (s->props.walls.n > 0) /* and their density from the new sum */
         vsph_walls_update(&s->props.walls, p, s->n_fluid, s->gh, s->where);
     }

@@ -266,8 +266,10 @@ static int check_cost(const struct vsph_run_props *rp,
       sc->area * pow((double)rp->res, sc->dim) + 4.0 * (double)rp->res;
   /* ghosts: a layer of reach/dx + 1 particles along each wall, over at
    * most twice the fluid's side (n^((d-1)/d)), corners included */
-  const double deep = rp->scheme_kind == VSPH_EQUATIONS_CONTACT
-                          ? 1.0
+  /* fixed wall particles' periodic images reach two supports too */
+  const double deep = rp->scheme_kind == VSPH_EQUATIONS_CONTACT ? 1.0
+                      : sc->walls.solid == VSPH_WALLS_FIXED
+                          ? fmax(2.0, vsph_viscous_passes(rp->form))
                           : vsph_viscous_passes(rp->form);
   for (int a = 0; a < sc->dim; a++) {
     const double L = vsph_walls_period(&sc->walls, a);
@@ -278,7 +280,9 @@ static int check_cost(const struct vsph_run_props *rp,
                 "reach %g m%s: lengthen the period (the scene's length, Ly or "
                 "Lz) or raise res",
                 L, reach,
-                deep > 1 ? " (two supports for a two-pass form)" : "");
+                deep > 1 ? " (two supports for a two-pass form or fixed wall "
+                           "particles)"
+                         : "");
   }
   const double layers = ceil(deep * rp->ktype->kappa * rp->hdx) + 1.0;
   e->neighbours = (sc->dim == 2 ? VSPH_PI : 4.0 * VSPH_PI / 3.0) *
@@ -309,7 +313,7 @@ static int check_cost(const struct vsph_run_props *rp,
               "ends all round): at rho0 its pressure is p0 > 0, and a free "
               "surface would expand",
               rp->eos);
-  if (rp->xsph > 0.0 && sc->walls.solid)
+  if (rp->xsph > 0.0 && sc->walls.solid && sc->walls.solid != VSPH_WALLS_FIXED)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:xsph does not take wall particles yet (%s has them): "
               "their velocities are set per evaluation, the drift reads them "

@@ -106,7 +106,10 @@ int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
   ip->eq.g = sc->g;
   ip->eq.f = sc->f;
   ip->walls = sc->walls;
-  ip->eq.solid = sc->walls.solid;
+  /* fixed wall particles' p and V follow from their density by the law,
+   * like every particle's: not set aside by the equations */
+  ip->eq.solid =
+      sc->walls.solid == VSPH_WALLS_FIXED ? VSPH_WALLS_GHOSTS : sc->walls.solid;
   /* linear extrapolation [reconstructed]: the wall shear fitted to the
    * fluid within h of the wall and within h along it */
   ip->walls.band = h;

@@ -15,6 +15,7 @@ static const char *const solid_names[] = {
     [VSPH_WALLS_GHOSTS] = "ghosts",
     [VSPH_WALLS_ADAMI] = "adami",
     [VSPH_WALLS_EVOLVING] = "evolving",
+    [VSPH_WALLS_FIXED] = "fixed",
 };
 _Static_assert(sizeof solid_names / sizeof solid_names[0] ==
                    VSPH_WALLS_SOLID_COUNT,
@@ -30,7 +31,8 @@ int vsph_walls_solid_resolve(const char *name, int *s) {
       *s = k;
       return VSPH_OK;
     }
-  VSPH_FAIL(VSPH_EINVAL, "unknown wall particles '%s' (adami, evolving)", name);
+  VSPH_FAIL(VSPH_EINVAL, "unknown wall particles '%s' (adami, evolving, fixed)",
+            name);
 }
 
 static const char *const velocity_names[] = {
@@ -225,8 +227,10 @@ static unsigned near_planes(const struct vsph_walls *w,
                             const struct vsph_particles *p, size_t s,
                             double reach) {
   unsigned near = 0;
-  for (int q = 0; q < w->n; q++)
-    if (depth(w, p, s, q) < reach) near |= 1u << q;
+  for (int q = 0; q < w->n; q++) /* a solid set's walls are particles */
+    if (depth(w, p, s, q) < reach &&
+        !(w->solid && w->kind[q] == VSPH_WALLS_MIRROR))
+      near |= 1u << q;
   return near;
 }
 
@@ -275,10 +279,12 @@ size_t vsph_walls_count(const struct vsph_walls *w,
 int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
                         size_t n_fluid, double reach,
                         struct vsph_walls_ghosts *gh) {
-  /* Compact: keep the fluid in its current order. */
+  /* Compact: keep the fluid (and the fixed wall particles) in their
+   * current order. */
+  const size_t base = n_fluid + gh->keep;
   size_t n = 0;
   for (size_t i = 0; i < p->n; i++) {
-    if (p->id[i] >= n_fluid) continue;
+    if (p->id[i] >= base) continue;
     if (n != i) {
       for (int k = 0; k < p->dim; k++) {
         p->pos[k][n] = p->pos[k][i];
@@ -308,7 +314,8 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
   }
   unsigned pair[3];
   ends(w, pair);
-  for (size_t s = 0; s < n_fluid; s++) {
+  for (size_t s = 0; s < n; s++) { /* the fluid, among the kept walls */
+    if (p->id[s] >= n_fluid) continue;
     const unsigned near = near_planes(w, p, s, reach);
     /* every non-empty subset of the near planes: images and corner images
      * (never both ends of one periodic axis: their shifts cancel) */
@@ -319,7 +326,7 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
       const size_t i = p->n++;
       gh->src[gh->n] = p->id[s];
       gh->mask[gh->n] = mask;
-      p->id[i] = n_fluid + gh->n;
+      p->id[i] = base + gh->n;
       gh->n++;
       image(w, gh, p, s, i, mask);
     }
@@ -331,10 +338,11 @@ void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
                        size_t n_fluid, struct vsph_walls_ghosts *gh,
                        const size_t *where) {
   if (gh->band) rows(w, p, n_fluid, gh);
+  const size_t base = n_fluid + gh->keep;
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < p->n; i++) {
-    if (p->id[i] < n_fluid) continue;
-    const size_t g = p->id[i] - n_fluid;
+    if (p->id[i] < base) continue;
+    const size_t g = p->id[i] - base;
     image(w, gh, p, where[gh->src[g]], i, gh->mask[g]);
   }
 }
@@ -342,11 +350,18 @@ void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
 /* The box of a solid wall set: lo/hi per axis from its planes; 0 when an
  * axis of the first dim lacks either end. */
 static int solid_box(const struct vsph_walls *w, int dim, double lo[3],
-                     double hi[3]) {
+                     double hi[3], unsigned *periodic) {
   unsigned have = 0;
+  *periodic = 0;
   for (int q = 0; q < w->n; q++) {
-    if (w->kind[q] != VSPH_WALLS_MIRROR || w->axis[q] >= dim) continue;
+    if (w->axis[q] >= dim) continue;
     const int a = w->axis[q], up = w->side[q] > 0;
+    /* a periodic axis bounds the box too: its wall particles run over the
+     * period and a reach beyond (fixed walls only) */
+    if (w->kind[q] == VSPH_WALLS_PERIODIC) {
+      if (w->solid != VSPH_WALLS_FIXED) continue;
+      *periodic |= 1u << a;
+    }
     if (up)
       lo[a] = w->pos[q];
     else
@@ -356,12 +371,14 @@ static int solid_box(const struct vsph_walls *w, int dim, double lo[3],
   return have == (1u << (2 * dim)) - 1u;
 }
 
-/* Lattice counts: n[a] cells across the box, l layers beyond it. */
+/* Lattice counts: n[a] cells across the box, l layers beyond it; bit a of
+ * *periodic: axis a is periodic. */
 static int solid_lattice(const struct vsph_walls *w, int dim, double dx,
-                         double reach, double lo[3], long n[3], long *l) {
+                         double reach, double lo[3], long n[3], long *l,
+                         unsigned *periodic) {
   double hi[3] = {0, 0, 0};
   lo[0] = lo[1] = lo[2] = 0.0;
-  if (!solid_box(w, dim, lo, hi) || !(dx > 0.0)) return 0;
+  if (!solid_box(w, dim, lo, hi, periodic) || !(dx > 0.0)) return 0;
   for (int a = 0; a < 3; a++)
     n[a] = a < dim ? (long)nearbyint((hi[a] - lo[a]) / dx) : 1;
   *l = (long)ceil(reach / dx - 1e-9);
@@ -372,11 +389,12 @@ size_t vsph_walls_solid_count(const struct vsph_walls *w, int dim, double dx,
                               double reach) {
   double lo[3];
   long n[3], l;
-  if (!solid_lattice(w, dim, dx, reach, lo, n, &l)) return 0;
-  size_t all = 1, in = 1;
+  unsigned per;
+  if (!solid_lattice(w, dim, dx, reach, lo, n, &l, &per)) return 0;
+  size_t all = 1, in = 1; /* in: the fluid's and its periodic images' */
   for (int a = 0; a < dim; a++) {
     all *= (size_t)(n[a] + 2 * l);
-    in *= (size_t)n[a];
+    in *= (size_t)(per >> a & 1 ? n[a] + 2 * l : n[a]);
   }
   return all - in;
 }
@@ -387,7 +405,8 @@ int vsph_walls_solid_generate(const struct vsph_walls *w,
   const int dim = p->dim;
   double lo[3];
   long n[3], l;
-  if (!solid_lattice(w, dim, dx, reach, lo, n, &l))
+  unsigned per;
+  if (!solid_lattice(w, dim, dx, reach, lo, n, &l, &per))
     VSPH_FAIL(VSPH_EINVAL, "solid walls need two planes on every axis");
   const size_t count = vsph_walls_solid_count(w, dim, dx, reach);
   if (p->n + count > p->cap)
@@ -400,7 +419,8 @@ int vsph_walls_solid_generate(const struct vsph_walls *w,
       for (long i = -l; i < n[0] + l; i++) {
         const long c[3] = {i, j, k};
         int inside = 1;
-        for (int a = 0; a < dim; a++) inside &= c[a] >= 0 && c[a] < n[a];
+        for (int a = 0; a < dim; a++)
+          inside &= (per >> a & 1) || (c[a] >= 0 && c[a] < n[a]);
         if (inside) continue;
         const size_t q = p->n++;
         for (int a = 0; a < dim; a++) {

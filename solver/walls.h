@@ -58,13 +58,19 @@ enum vsph_walls_solid {
                               density by continuity (integrated), pressure
                               by the run's law, tangential velocity
                               extrapolated linearly into the wall */
+  VSPH_WALLS_FIXED,      /*!< Vukcevic et al.: fixed particles at the
+                              wall's own velocity, density summed as the
+                              fluid's (or rho0), pressure by the run's law;
+                              periodic axes allowed (the fluid imaged) */
   VSPH_WALLS_SOLID_COUNT
 };
 
-/** @brief Name of a wall-particle model ("ghosts", "adami", "evolving"). */
+/** @brief Name of a wall-particle model ("ghosts", "adami", "evolving",
+ *  "fixed"). */
 const char *vsph_walls_solid_name(int s);
 
-/** @brief Wall-particle model called @p name into @p s (adami or evolving).
+/** @brief Wall-particle model called @p name into @p s (adami, evolving,
+ *  fixed).
  *  @return VSPH_OK, or VSPH_EINVAL naming the choices. */
 int vsph_walls_solid_resolve(const char *name, int *s);
 
@@ -98,6 +104,9 @@ struct vsph_walls_ghosts {
   double *band; /*!< per entry: coordinates (3), shear terms (3), depth */
   size_t nband[VSPH_WALLS_MAX];  /*!< entries of plane w */
   size_t bstart[VSPH_WALLS_MAX]; /*!< first entry of plane w */
+  size_t keep; /*!< fixed wall particles (ids n_fluid .. n_fluid + keep - 1)
+                    kept by _generate; the ghosts' ids follow them. With
+                    a solid set only its periodic planes image the fluid */
 };
 
 /** @brief Name of a wall-velocity treatment ("mirror", "linear"). */

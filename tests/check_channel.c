@@ -11,6 +11,7 @@
 #include "../analysis/references.h"
 #include "../common/consts.h"
 #include "../common/params.h"
+#include "../kernels/kernel.h"
 #include "../solver/integrate.h"
 #include "../solver/particles.h"
 #include "../solver/run.h"
@@ -376,6 +377,120 @@ START_TEST(test_leapfrog_order) {
 }
 END_TEST
 
+/* Vukcevic et al.'s fixed wall particles in the periodic channel
+ * (Scene:walls = fixed), res 12 with summation density and Basa's cubic
+ * spline at dx/h = 0.637: the wall lattice runs over the period and a
+ * reach beyond each end, two supports deep ((12 + 2 l) 2 l particles,
+ * l = ceil(2 kappa h/dx) = 7), at rest; the
+ * fluid's periodic images are ghosts beside it. At rest every fluid
+ * particle, and every wall particle within a support of the fluid, sums
+ * the full lattice's density (written out here), so without the drive
+ * nothing moves (accelerations 1e-9 of the drive); with it, 1 and 2
+ * threads step bitwise alike. */
+START_TEST(test_fixed_walls) {
+  double *state[2];
+  size_t n = 0;
+  for (int t = 0; t < 2; t++) {
+    omp_set_num_threads(t + 1);
+    struct vsph_params *prm = vsph_params_alloc();
+    ck_assert_int_eq(vsph_params_set(prm, "Solver:res", "12"), 0);
+    ck_assert_int_eq(vsph_params_set(prm, "Solver:density", "summation"), 0);
+    ck_assert_int_eq(vsph_params_set(prm, "Scene:walls", "fixed"), 0);
+    ck_assert_int_eq(vsph_params_set(prm, "Solver:kernel", "cubic"), 0);
+    ck_assert_int_eq(vsph_params_set(prm, "Solver:hdx", "1.5699"), 0);
+    struct vsph_run_props rp;
+    struct vsph_scene sc;
+    ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
+    ck_assert_int_eq(vsph_scene_init(&sc, &vsph_channel_poiseuille_type, prm),
+                     0);
+    vsph_params_free(prm);
+    struct vsph_run *run = NULL;
+    ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+    struct vsph_integrate *s = run->integ;
+    /* both thread counts evaluate once without the drive (an evaluation
+     * leaves its cell order behind) */
+    const double f = s->props.eq.f;
+    s->props.eq.f = 0.0;
+    struct vsph_equations_energy en;
+    struct vsph_equations_budget bu;
+    ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &bu), 0);
+    s->props.eq.f = f;
+    if (t == 0) {
+      const double dx = run->dx, h = run->h, H = rp.ktype->kappa * h;
+      double lat = 0.0;
+      for (int a = -5; a <= 5; a++)
+        for (int b = -5; b <= 5; b++)
+          lat += vsph_kernel_w(rp.ktype, 2, hypot(a, b) * dx / h) / (h * h);
+      lat *= dx * dx;
+      ck_assert_double_gt(fabs(lat - 1.0), 1e-6); /* not trivially 1 */
+      size_t nwall = 0, nnear = 0;
+      const struct vsph_particles *p = s->p;
+      for (size_t i = 0; i < p->n; i++) {
+        const size_t id = p->id[i];
+        const double y = p->pos[1][i];
+        if (id >= s->n_fluid && (y > 0.0 && y < 1.0)) continue; /* ghost */
+        if (id >= s->n_fluid) {
+          nwall++;
+          ck_assert_double_eq(p->vel[0][i], 0.0);
+          /* within a support of the fluid (rows at dx/2 from the wall,
+           * columns over [0, 1)) */
+          const double depth = y < 0.0 ? -y : y - 1.0, x = p->pos[0][i];
+          if (!(depth + 0.5 * dx < H && x > -H && x < 1.0 + H)) continue;
+          nnear++;
+        }
+        ck_assert_double_eq_tol(p->rho[i], sc.rho0 * lat, 1e-12);
+        if (id < s->n_fluid)
+          for (int k = 0; k < 2; k++)
+            ck_assert_double_le(fabs(p->acc[k][i]), 1e-9 * f);
+      }
+      ck_assert_uint_eq(nwall, (12 + 14) * 14);
+      /* 3 rows within 2h, over 12 + 2 x 3 columns */
+      ck_assert_uint_eq(nnear, (12 + 6) * 2 * 3);
+    }
+    for (int k = 0; k < 8; k++) ck_assert_int_eq(vsph_run_iterate(run), 0);
+    n = s->n_fluid;
+    state[t] = calloc(3 * n, sizeof(double));
+    for (size_t i = 0; i < s->p->n; i++) {
+      const size_t id = s->p->id[i];
+      if (id >= n) continue;
+      state[t][id] = s->p->pos[0][i];
+      state[t][n + id] = s->p->vel[0][i];
+      state[t][2 * n + id] = s->p->rho[i];
+    }
+    vsph_run_free(run);
+  }
+  ck_assert_int_eq(memcmp(state[0], state[1], 3 * n * sizeof(double)), 0);
+  free(state[0]);
+  free(state[1]);
+  /* Couette: the particles above the moving wall move with it (v0), the
+   * others rest */
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:res", "12"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Scene:walls", "fixed"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Scene:length", "1e-3"), 0);
+  struct vsph_run_props rp;
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
+  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_channel_couette_type, prm), 0);
+  vsph_params_free(prm);
+  struct vsph_run *run = NULL;
+  ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+  ck_assert_int_eq(vsph_run_iterate(run), 0);
+  const struct vsph_particles *p = run->integ->p;
+  const double W = sc.u.channel.W, v0 = sc.u.channel.U;
+  size_t up = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    const double y = p->pos[1][i];
+    if (p->id[i] < run->n_fluid || (y > 0.0 && y < W)) continue;
+    up += y > W;
+    ck_assert_double_eq(p->vel[0][i], y > W ? v0 : 0.0);
+    ck_assert_double_eq(p->vel[1][i], 0.0);
+  }
+  ck_assert_uint_gt(up, 0);
+  vsph_run_free(run);
+}
+END_TEST
+
 /* Periodic images: a channel at rest with uniform density feels no force
  * at all (each particle sees the same lattice across the seam), and one
  * and two threads step it bitwise alike under a drive. */
@@ -481,6 +596,7 @@ Suite *vsph_channel_suite(void) {
   tcase_add_test(tc, test_linear_extrapolation);
   tcase_add_test(tc, test_periodic_rest_threads);
   tcase_add_loop_test(tc, test_leapfrog_order, 0, 2);
+  tcase_add_test(tc, test_fixed_walls);
   tcase_add_loop_test(tc, test_couette_steady, 0, 3);
   tcase_add_loop_test(tc, test_startup_walls, 0, 3);
   tcase_add_test(tc, test_poiseuille_meaf);

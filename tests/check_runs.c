@@ -149,7 +149,8 @@ static void same_run(const char *a, const char *b) {
  * (Poiseuille), wall particles and the transport velocity's kept rates
  * (cavity, tvf), a free surface under gravity (standing wave), PVWF's
  * two passes, the gas law's energy, contact SPH in 3-D, the leapfrog's
- * kept drift velocity (with XSPH), evolving wall particles' density. */
+ * kept rates with XSPH on fixed wall particles (Vukcevic et al.'s set-up),
+ * evolving wall particles' density. */
 static const char *const POIS[] = {"Solver:res=8", "Solver:t_end=0.1",
                                    "Solver:outputs=30", NULL};
 static const char *const TVF[] = {"Solver:res=8", "Solver:t_end=0.03",
@@ -159,14 +160,10 @@ static const char *const PVWF[] = {"Solver:res=10", "Solver:t_end=0.2",
                                    "Solver:visc=pvwf", NULL};
 static const char *const GAS[] = {"Solver:res=8", "Solver:t_end=0.1",
                                   "Solver:eos=gas", NULL};
-static const char *const LEAP[] = {"Solver:res=8",
-                                   "Solver:t_end=0.1",
-                                   "Solver:outputs=30",
-                                   "Solver:xsph=0.3",
-                                   "Solver:integrator=leapfrog",
-                                   "Solver:eos=isothermal",
-                                   "Solver:density=summation",
-                                   NULL};
+static const char *const LEAP[] = {
+    "Solver:res=12",         "Solver:t_end=0.1",           "Solver:outputs=30",
+    "Solver:xsph=0.3",       "Solver:integrator=leapfrog", "Scene:walls=fixed",
+    "Solver:eos=isothermal", "Solver:density=summation",   NULL};
 static const char *const EVOLVE[] = {
     "Solver:res=8",         "Solver:t_end=0.1",
     "Solver:kernel=cubic",  "Solver:hdx=1.5699",

@@ -8,6 +8,7 @@
  * Parameters: struct vsph_scene_channel (solver/scene.h). */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "../../common/params.h"
 #include "../../common/status.h"
@@ -35,8 +36,11 @@
       VSPH_PARAMS_REAL_SPEC(S, t_end, TEND, 1e-9, 1e9,                       \
                             "default end time (s)"),                         \
       VSPH_PARAMS_NAME_SPEC(S, walls, "linear",                              \
-                            "wall velocity of the ghosts: linear "           \
-                            "(extrapolated wall shear) or mirror")
+                            "walls: ghosts with the wall velocity linear "   \
+                            "(extrapolated wall shear) or mirror; or fixed " \
+                            "(wall particles at the wall's velocity, "       \
+                            "Vukcevic et al.; the period a whole number of " \
+                            "rows' spacing)")
 static const struct vsph_params_spec poiseuille_params[] = {CHANNEL_SPECS(
     1.0, 1.0, 0.5, 1.0, 1.0, 0.5,
     "Reynolds number U0 (W/2)/nu, U0 the steady centreline speed")};
@@ -49,9 +53,10 @@ static const struct vsph_params_spec couette_params[] = {
 static int setup(struct vsph_scene *sc, int couette) {
   struct vsph_scene_channel *ch = &sc->u.channel;
   const double W = ch->W, d = 0.5 * W;
-  int wv;
+  int wv = VSPH_WALLS_VEL_MIRROR;
+  const int fixed = !strcmp(ch->walls, "fixed");
   /* an unknown name is reported by the resolver */
-  if (vsph_walls_velocity_resolve(ch->walls, &wv)) return VSPH_EINVAL;
+  if (!fixed && vsph_walls_velocity_resolve(ch->walls, &wv)) return VSPH_EINVAL;
   ch->couette = couette;
   ch->U = couette ? ch->Re * ch->nu / W : ch->Re * ch->nu / d;
   ch->f = couette ? 0.0 : 2.0 * ch->nu * ch->U / (d * d);
@@ -71,6 +76,7 @@ static int setup(struct vsph_scene *sc, int couette) {
                           .kind = {VSPH_WALLS_MIRROR, VSPH_WALLS_MIRROR},
                           .noslip = 1,
                           .velocity = wv,
+                          .solid = fixed ? VSPH_WALLS_FIXED : 0,
                           .rho0 = sc->rho0,
                           .c0 = sc->c0};
   if (couette) wl.uw[1][0] = ch->U;
@@ -96,6 +102,12 @@ static int init(const struct vsph_scene *sc, size_t res,
   const double dxx = ch->length / (double)nx;
   if (nx > 1000000)
     VSPH_FAIL(VSPH_EINVAL, "channel: %zu columns is too many", nx);
+  /* fixed wall particles continue one square lattice across the seam */
+  if (sc->walls.solid && !(fabs(dxx - dy) <= 1e-9 * dy))
+    VSPH_FAIL(VSPH_EINVAL,
+              "channel: fixed walls need the period (%g m) to hold a whole "
+              "number of the rows' spacing %g m (res %zu)",
+              ch->length, dy, res);
   return vsph_scene_rectangle(sc, nx, res, dxx, dy, out);
 }
 
