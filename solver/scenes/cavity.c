@@ -46,6 +46,10 @@ static int setup(struct vsph_scene *sc) {
   int solid;
   /* an unknown name is reported by the resolver */
   if (vsph_walls_solid_resolve(cv->walls, &solid)) return VSPH_EINVAL;
+  if (solid == VSPH_WALLS_FIXED)
+    VSPH_FAIL(VSPH_EINVAL,
+              "cavity: Scene:walls = adami or evolving (fixed is the "
+              "channels')");
   cv->nu = cv->U * L / cv->Re;
   sc->ref_length = L;
   sc->rho0 = cv->rho0;

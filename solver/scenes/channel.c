@@ -56,6 +56,9 @@ static int setup(struct vsph_scene *sc, int couette) {
   int wv = VSPH_WALLS_VEL_MIRROR;
   const int fixed = !strcmp(ch->walls, "fixed");
   /* an unknown name is reported by the resolver */
+  if (!fixed && strcmp(ch->walls, "linear") && strcmp(ch->walls, "mirror"))
+    VSPH_FAIL(VSPH_EINVAL, "unknown Scene:walls '%s' (linear, mirror, fixed)",
+              ch->walls);
   if (!fixed && vsph_walls_velocity_resolve(ch->walls, &wv)) return VSPH_EINVAL;
   ch->couette = couette;
   ch->U = couette ? ch->Re * ch->nu / W : ch->Re * ch->nu / d;
