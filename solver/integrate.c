@@ -37,16 +37,14 @@ static int buffers_alloc(struct vsph_integrate *s) {
   s->vws = NULL;
   s->gh = NULL;
   s->where = NULL;
-  for (int f = 0; f < 8; f++) {
+  for (int f = 0; f < 8; f++) { /* ks grows below, keeping its rates */
     free(s->y0[f]);
-    free(s->ks[f]);
-    s->y0[f] = s->ks[f] = NULL;
+    s->y0[f] = NULL;
   }
   for (int f = 0; f < 4; f++) {
     free(s->extra[f]);
     s->extra[f] = NULL;
   }
-  s->kept = 0; /* the rates kept by id are gone with ks */
   const int corr = s->props.eq.corr != VSPH_PAIR_CORR_NONE;
   if ((vsph_viscous_first_pass(s->props.eq.visc.form) || corr) &&
       !(s->vws = vsph_viscous_ws_alloc(cap, d)))
@@ -55,15 +53,20 @@ static int buffers_alloc(struct vsph_integrate *s) {
   const int evolving = s->props.walls.solid == VSPH_WALLS_EVOLVING,
             fixed = s->props.walls.solid == VSPH_WALLS_FIXED;
   /* evolving wall particles: the nearest rows' scratch only, a particle
-   * in the rows of at most d planes; fixed ones: the periodic images */
+   * in the rows of at most every plane; fixed ones: the periodic images */
   if (s->props.walls.n > 0 && (!s->props.walls.solid || evolving || fixed) &&
       !(s->gh = vsph_walls_ghosts_alloc(
-            &s->props.walls, evolving ? (size_t)d * s->n_fluid + 1 : cap)))
+            &s->props.walls,
+            evolving ? (size_t)s->props.walls.n * s->n_fluid + 1 : cap)))
     return VSPH_ENOMEM;
   int ok = (s->where = malloc(cap * sizeof *s->where)) != NULL;
   for (int f = 0; f < nfields(s); f++) {
     ok = ok && (s->y0[f] = malloc(cap * sizeof(double))) != NULL;
-    ok = ok && (s->ks[f] = malloc(cap * sizeof(double))) != NULL;
+    /* the rates kept by id (transport velocity, leapfrog) survive a
+     * growth of the set within a step: realloc keeps them */
+    double *const k = ok ? realloc(s->ks[f], cap * sizeof(double)) : NULL;
+    if (k) s->ks[f] = k;
+    ok = ok && k != NULL;
   }
   for (int f = 0; f < d + 1; f++)
     ok = ok && (s->extra[f] = malloc(cap * sizeof(double))) != NULL;
@@ -168,16 +171,20 @@ double vsph_integrate_dt(const struct vsph_integrate *s) {
       gmax = fmax(gmax, ep->beta * ep->beta * sqrt(r2));
     }
   }
-  return vsph_integrate_dt_rule(s->props.cfl, ep->tvf || s->props.leapfrog,
+  return vsph_integrate_dt_rule(s->props.cfl,
+                                s->props.leapfrog ? 2
+                                : ep->tvf         ? 1
+                                                  : 0,
                                 ep->scheme == VSPH_EQUATIONS_CONTACT, h, c0,
                                 max_speed(s), nu, gmax);
 }
 
-double vsph_integrate_dt_rule(double cfl, int tvf, int contact, double h,
+double vsph_integrate_dt_rule(double cfl, int split, int contact, double h,
                               double c0, double umax, double nu, double gmax) {
-  const double f = tvf ? 0.25 : contact ? 0.5 : 1.0;
+  const double f = split ? 0.25 : contact ? 0.5 : 1.0;
+  const double g = split == 2 ? 0.25 : 1.0;
   double dt = f * cfl * h / (c0 + umax);
-  if (nu > 0.0) dt = fmin(dt, 0.125 * h * h / nu);
+  if (nu > 0.0) dt = fmin(dt, g * 0.125 * h * h / nu);
   if (gmax > 0.0) dt = fmin(dt, 0.25 * sqrt(h / gmax));
   return dt;
 }
@@ -363,7 +370,9 @@ static void drift_velocity(struct vsph_integrate *s) {
   const int d = p->dim;
   const size_t n = p->n, nf = s->n_fluid;
   if (s->props.xsph > 0.0) {
-    if (s->props.walls.n > 0 && !s->props.walls.solid)
+    if (s->props.walls.n > 0 &&
+        (!s->props.walls.solid ||
+         s->props.walls.solid == VSPH_WALLS_FIXED)) /* the kicked u */
       vsph_walls_update(&s->props.walls, p, nf, s->gh, s->where);
     double *w[3] = {s->extra[0], d > 1 ? s->extra[1] : NULL,
                     d > 2 ? s->extra[2] : NULL};
@@ -430,8 +439,12 @@ static int step_leapfrog(struct vsph_integrate *s, double dt) {
   const int rho_fluid = !s->props.eq.summation,
             rho_wall = s->props.walls.solid == VSPH_WALLS_EVOLVING;
   const size_t nf = s->n_fluid;
+  /* the cells and ghosts at the mid-step positions (this may grow the
+   * set: y0 is made afresh, ks keeps its rates) */
+  if ((st = prepare(s, 0.0))) return st;
   double *const rho0 = s->y0[2 * d];
-  /* u_n and rho_n by id, then the prediction where the particles now are */
+  /* u_n and rho_n by id (prepare moved no velocity or density), then the
+   * prediction */
   for (size_t i = 0; i < p->n; i++) {
     const size_t id = p->id[i];
     if (id < nf) {
@@ -441,7 +454,6 @@ static int step_leapfrog(struct vsph_integrate *s, double dt) {
       rho0[id] = p->rho[i];
     }
   }
-  if ((st = prepare(s, 0.0))) return st;
   const size_t n = p->n;
 #pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) {
@@ -553,8 +565,9 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   return VSPH_OK;
 }
 
-/* The closest two fluid particles within a cell's ranges (a stop for
- * pairing says where): their indices, or none (*a = *b = n). */
+/* The closest pair with a fluid particle a, its neighbour b any particle
+ * (fluid, a ghost or periodic image, a wall particle): a stop for pairing
+ * says where. Their indices, or none (*a = *b = n). */
 static void closest_pair(const struct vsph_integrate *s, size_t *a, size_t *b) {
   const struct vsph_particles *p = s->p;
   double best = INFINITY;
@@ -567,7 +580,7 @@ static void closest_pair(const struct vsph_integrate *s, size_t *a, size_t *b) {
       if (p->id[i] >= s->n_fluid) continue;
       for (size_t r = 0; r < rg.n; r++)
         for (size_t j = rg.lo[r]; j < rg.hi[r]; j++) {
-          if (j == i || p->id[j] >= s->n_fluid) continue;
+          if (j == i) continue;
           double d2 = 0.0;
           for (int k = 0; k < p->dim; k++) {
             const double d = p->pos[k][j] - p->pos[k][i];
@@ -615,9 +628,10 @@ int vsph_integrate_check(struct vsph_integrate *s) {
     if (a < p->n)
       snprintf(s->reason, sizeof s->reason,
                "particle pairing: two particles %.3g apart (limit %.3g), "
-               "%zu and %zu near (%.3g, %.3g)",
-               s->min_dist, ip->min_dist, p->id[a], p->id[b], p->pos[0][a],
-               p->dim > 1 ? p->pos[1][a] : 0.0);
+               "%zu and %s%zu near (%.3g, %.3g)",
+               s->min_dist, ip->min_dist, p->id[a],
+               p->id[b] < s->n_fluid ? "" : "image/wall ", p->id[b],
+               p->pos[0][a], p->dim > 1 ? p->pos[1][a] : 0.0);
     else
       snprintf(s->reason, sizeof s->reason,
                "particle pairing: two particles %.3g apart (limit %.3g)",

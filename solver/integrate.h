@@ -78,11 +78,13 @@ double vsph_integrate_dt(const struct vsph_integrate *s);
 
 /** @brief The time-step rule itself (docs/theory.md section 5), for the
  *  step (vsph_integrate_dt) and the run's estimate alike:
- *  dt = min(f cfl h/(c0 + umax), 0.125 h^2/nu, 0.25 sqrt(h/gmax)), with
- *  f = 1/4 for the transport-velocity scheme's kick-drift-kick (Adami et
- *  al.'s quarter), 1/2 for contact SPH, else 1; a bound is left out where
- *  nu or gmax is 0. */
-double vsph_integrate_dt_rule(double cfl, int tvf, int contact, double h,
+ *  dt = min(f cfl h/(c0 + umax), g 0.125 h^2/nu, 0.25 sqrt(h/gmax)), with
+ *  f = 1/4 for the split schemes (@p split 1: the transport velocity's
+ *  kick-drift-kick, Adami et al.'s quarter; 2: the leapfrog), 1/2 for
+ *  contact SPH, else 1; g = 1/4 for the leapfrog (its predicted mid-step
+ *  velocity keeps pure diffusion stable only to dt |lambda| < 1, RK4 to
+ *  about 2.8), else 1; a bound is left out where nu or gmax is 0. */
+double vsph_integrate_dt_rule(double cfl, int split, int contact, double h,
                               double c0, double umax, double nu, double gmax);
 
 /** @brief One step of length @p dt: RK4; the transport velocity's

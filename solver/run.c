@@ -105,8 +105,8 @@ static const struct vsph_params_spec SOLVER[] = {
     VSPH_PARAMS_REAL_SPEC(P, xsph, 0.0, 0.0, 1.0,
                           "XSPH's epsilon: the particles drift with u + eps "
                           "sum_j (m_j/rho_j) (u_j - u_i) W_ij (Vukcevic et "
-                          "al. 0.3); leapfrog only, not with wall particles; "
-                          "0: off"),
+                          "al. 0.3); leapfrog only, not with the cavity's "
+                          "wall particles; 0: off"),
     VSPH_PARAMS_NAME_SPEC(P, scheme, "wcsph",
                           "wcsph (THEORY 5 with the viscous formulation "
                           "visc) or contact (Parshikov et al.'s Godunov-type "
@@ -337,13 +337,13 @@ static int check_cost(const struct vsph_run_props *rp,
     VSPH_FAIL(VSPH_EINVAL,
               "the wall particles of %s need Solver:eos = linear (their "
               "density is the linear law's; Scene:walls = evolving takes "
-              "tait)",
+              "tait or isothermal)",
               sc->type->name);
   if (sc->walls.solid == VSPH_WALLS_EVOLVING &&
       rp->eos_kind == VSPH_EQUATIONS_EOS_GAS)
     VSPH_FAIL(VSPH_EINVAL,
-              "evolving wall particles take Solver:eos = linear or tait, not "
-              "gas");
+              "evolving wall particles take Solver:eos = linear, tait or "
+              "isothermal, not gas");
   if (rp->eos_kind != VSPH_EQUATIONS_EOS_LINEAR &&
       sc->body == VSPH_EQUATIONS_BODY_GRAVITY)
     VSPH_FAIL(VSPH_EINVAL,
@@ -356,7 +356,10 @@ static int check_cost(const struct vsph_run_props *rp,
                       : sc->body == VSPH_EQUATIONS_BODY_UNIFORM ? fabs(sc->f)
                                                                 : 0.0;
   const double dt = vsph_integrate_dt_rule(
-      rp->cfl, rp->tvf || rp->leapfrog,
+      rp->cfl,
+      rp->leapfrog ? 2
+      : rp->tvf    ? 1
+                   : 0,
       rp->scheme_kind == VSPH_EQUATIONS_CONTACT, h, run_c0(rp, sc), sc->U_max,
       sc->mu / sc->rho0, gmax);
   const double steps = t_end / dt;

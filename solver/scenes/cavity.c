@@ -11,6 +11,7 @@
  * 9). Parameters: struct vsph_scene_cavity (solver/scene.h). */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "../../common/params.h"
 #include "../../common/status.h"
@@ -44,12 +45,10 @@ static int setup(struct vsph_scene *sc) {
   struct vsph_scene_cavity *cv = &sc->u.cavity;
   const double L = cv->L;
   int solid;
-  /* an unknown name is reported by the resolver */
+  if (strcmp(cv->walls, "adami") && strcmp(cv->walls, "evolving"))
+    VSPH_FAIL(VSPH_EINVAL, "unknown Scene:walls '%s' (adami, evolving)",
+              cv->walls);
   if (vsph_walls_solid_resolve(cv->walls, &solid)) return VSPH_EINVAL;
-  if (solid == VSPH_WALLS_FIXED)
-    VSPH_FAIL(VSPH_EINVAL,
-              "cavity: Scene:walls = adami or evolving (fixed is the "
-              "channels')");
   cv->nu = cv->U * L / cv->Re;
   sc->ref_length = L;
   sc->rho0 = cv->rho0;
