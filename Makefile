@@ -111,7 +111,7 @@ $(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
 # README: vsph report --archive); the commit named for runs of these
 # sources is HEAD's.
 archive: deps $(BUILD)/vsph
-	scripts/source-commits $(BUILD)/history
+	scripts/source-commits $(BUILD)/history $(HISTORY_N)
 	VSPH_ARCHIVE_HISTORY=$(BUILD)/history \
 	VSPH_COMMIT="$$(git describe --always --dirty --abbrev=12 2>/dev/null \
 	  | tr -cd '0-9a-z-')" $(BUILD)/vsph report --out reports/out-full \
@@ -186,12 +186,18 @@ check: deps
 
 test: check
 
+# How many commits back the archive's runs are traced to the commit that
+# made them (scripts/source-commits): the archive holds runs made up to a
+# few hundred commits ago.
+HISTORY_N = 400
+
 # The main job: the whole report into reports/out/ (quick; FULL=1 for the
 # paper's resolutions and end times).
 # The history that judges the archive's runs (scripts/source-commits) into
 # shell variable h; when it cannot be made (outside a git clone, say), its
 # own reason is said, h stays empty and the archive's older runs unjudged.
-HISTORY = if err=$$(scripts/source-commits $(BUILD)/history 2>&1 >/dev/null); \
+HISTORY = if err=$$(scripts/source-commits $(BUILD)/history $(HISTORY_N) \
+	  2>&1 >/dev/null); \
 	  then h=$(BUILD)/history; else h=; echo "make: $$err: reports/full's \
 	  older runs stay unjudged"; fi
 
