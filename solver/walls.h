@@ -192,7 +192,8 @@ void vsph_walls_solid_velocity(const struct vsph_walls *w, int dim,
  *  two planes (a corner), or with no fluid in its
  *  window, its prescribed velocity (vsph_walls_solid_velocity). @p gh
  *  holds the rows' scratch (vsph_walls_ghosts_alloc with the linear
- *  velocity, capacity at least dim n_fluid). Serial rows, then each wall
+ *  velocity, capacity at least w->n n_fluid: a particle can lie in every
+ *  plane's rows). Serial rows, then each wall
  *  particle by itself: the same for any thread count. */
 void vsph_walls_solid_extrapolate(const struct vsph_walls *w,
                                   struct vsph_particles *p, size_t n_fluid,
