@@ -157,22 +157,15 @@ END_TEST
  * dx/h = 0.637, summation density, Tait's law, Cleary's form (their D)
  * and evolving wall particles. */
 static struct vsph_run *cavity_run_basa(void) {
-  struct vsph_params *prm = vsph_params_alloc();
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:res", "16"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:kernel", "cubic"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:hdx", "1.5699"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:visc", "cleary"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:density", "summation"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:eos", "tait"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Scene:walls", "evolving"), 0);
-  struct vsph_run_props rp;
-  struct vsph_scene sc;
-  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
-  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_cavity_type, prm), 0);
-  vsph_params_free(prm);
-  struct vsph_run *run = NULL;
-  ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
-  return run;
+  static const char *const SET[] = {"Solver:res=16",
+                                    "Solver:kernel=cubic",
+                                    "Solver:hdx=1.5699",
+                                    "Solver:visc=cleary",
+                                    "Solver:density=summation",
+                                    "Solver:eos=tait",
+                                    "Scene:walls=evolving",
+                                    NULL};
+  return vsph_test_run(&vsph_cavity_type, SET, NULL);
 }
 
 /* The full lattice's summed density, rho0 dx^2 sum_(i,j) W, summed here

@@ -313,21 +313,13 @@ END_TEST
  * errors stiff, and these steps are not yet in the asymptotic range
  * (measured 2.6). */
 static void leap_run(int xsph, double dt, size_t nstep, double *u) {
-  struct vsph_params *prm = vsph_params_alloc();
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:res", "8"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:integrator", "leapfrog"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:perturb", "0.1"), 0);
-  if (xsph) {
-    ck_assert_int_eq(vsph_params_set(prm, "Solver:xsph", "0.3"), 0);
-    ck_assert_int_eq(vsph_params_set(prm, "Solver:density", "summation"), 0);
-  }
-  struct vsph_run_props rp;
-  struct vsph_scene sc;
-  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
-  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_channel_poiseuille_type, prm), 0);
-  vsph_params_free(prm);
-  struct vsph_run *run = NULL;
-  ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+  static const char *const SET[2][6] = {
+      {"Solver:res=8", "Solver:integrator=leapfrog", "Solver:perturb=0.1",
+       NULL},
+      {"Solver:res=8", "Solver:integrator=leapfrog", "Solver:perturb=0.1",
+       "Solver:xsph=0.3", "Solver:density=summation", NULL}};
+  struct vsph_run *run =
+      vsph_test_run(&vsph_channel_poiseuille_type, SET[xsph != 0], NULL);
   struct vsph_integrate *s = run->integ;
   if (!(dt > 0.0)) { /* only the rule's step */
     u[0] = vsph_integrate_dt(s);
@@ -383,17 +375,10 @@ END_TEST
  * 0.04 s: its predicted velocity keeps diffusion stable only to
  * dt |lambda| < 1), and the step is a quarter of RK4's there. */
 START_TEST(test_leapfrog_viscous_step) {
-  struct vsph_params *prm = vsph_params_alloc();
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:res", "20"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:t_end", "0.3"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:integrator", "leapfrog"), 0);
-  struct vsph_run_props rp;
+  static const char *const SET[] = {"Solver:res=20", "Solver:t_end=0.3",
+                                    "Solver:integrator=leapfrog", NULL};
   struct vsph_scene sc;
-  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
-  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_channel_couette_type, prm), 0);
-  vsph_params_free(prm);
-  struct vsph_run *run = NULL;
-  ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+  struct vsph_run *run = vsph_test_run(&vsph_channel_couette_type, SET, &sc);
   const double h = run->h, nu = sc.mu / sc.rho0;
   ck_assert_double_eq_tol(vsph_integrate_dt(run->integ),
                           0.25 * 0.125 * h * h / nu, 1e-12 * h * h / nu);
@@ -418,20 +403,12 @@ START_TEST(test_fixed_walls) {
   size_t n = 0;
   for (int t = 0; t < 2; t++) {
     omp_set_num_threads(t + 1);
-    struct vsph_params *prm = vsph_params_alloc();
-    ck_assert_int_eq(vsph_params_set(prm, "Solver:res", "12"), 0);
-    ck_assert_int_eq(vsph_params_set(prm, "Solver:density", "summation"), 0);
-    ck_assert_int_eq(vsph_params_set(prm, "Scene:walls", "fixed"), 0);
-    ck_assert_int_eq(vsph_params_set(prm, "Solver:kernel", "cubic"), 0);
-    ck_assert_int_eq(vsph_params_set(prm, "Solver:hdx", "1.5699"), 0);
-    struct vsph_run_props rp;
+    static const char *const SET[] = {
+        "Solver:res=12",       "Solver:density=summation", "Scene:walls=fixed",
+        "Solver:kernel=cubic", "Solver:hdx=1.5699",        NULL};
     struct vsph_scene sc;
-    ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
-    ck_assert_int_eq(vsph_scene_init(&sc, &vsph_channel_poiseuille_type, prm),
-                     0);
-    vsph_params_free(prm);
-    struct vsph_run *run = NULL;
-    ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+    struct vsph_run *run =
+        vsph_test_run(&vsph_channel_poiseuille_type, SET, &sc);
     struct vsph_integrate *s = run->integ;
     /* both thread counts evaluate once without the drive (an evaluation
      * leaves its cell order behind) */
@@ -442,11 +419,12 @@ START_TEST(test_fixed_walls) {
     ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &bu), 0);
     s->props.eq.f = f;
     if (t == 0) {
-      const double dx = run->dx, h = run->h, H = rp.ktype->kappa * h;
+      const double dx = run->dx, h = run->h, H = run->props.ktype->kappa * h;
       double lat = 0.0;
       for (int a = -5; a <= 5; a++)
         for (int b = -5; b <= 5; b++)
-          lat += vsph_kernel_w(rp.ktype, 2, hypot(a, b) * dx / h) / (h * h);
+          lat += vsph_kernel_w(run->props.ktype, 2, hypot(a, b) * dx / h) /
+                 (h * h);
       lat *= dx * dx;
       ck_assert_double_gt(fabs(lat - 1.0), 1e-6); /* not trivially 1 */
       size_t nwall = 0, nnear = 0;
@@ -490,17 +468,10 @@ START_TEST(test_fixed_walls) {
   free(state[1]);
   /* Couette: the particles above the moving wall move with it (v0), the
    * others rest */
-  struct vsph_params *prm = vsph_params_alloc();
-  ck_assert_int_eq(vsph_params_set(prm, "Solver:res", "12"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Scene:walls", "fixed"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Scene:length", "1e-3"), 0);
-  struct vsph_run_props rp;
+  static const char *const COU[] = {"Solver:res=12", "Scene:walls=fixed",
+                                    "Scene:length=1e-3", NULL};
   struct vsph_scene sc;
-  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
-  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_channel_couette_type, prm), 0);
-  vsph_params_free(prm);
-  struct vsph_run *run = NULL;
-  ck_assert_int_eq(vsph_run_alloc(&rp, &sc, &run), 0);
+  struct vsph_run *run = vsph_test_run(&vsph_channel_couette_type, COU, &sc);
   ck_assert_int_eq(vsph_run_iterate(run), 0);
   const struct vsph_particles *p = run->integ->p;
   const double W = sc.u.channel.W, v0 = sc.u.channel.U;

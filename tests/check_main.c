@@ -2,8 +2,12 @@
  * srunner_run_all: forked tests would deadlock in their first one. */
 #include <gsl/gsl_errno.h>
 #include <stdlib.h>
+#include <string.h>
 
+#include "../common/params.h"
 #include "../common/status.h"
+#include "../solver/run.h"
+#include "../solver/scene.h"
 #include "check_suites.h"
 
 static int last_status;
@@ -13,6 +17,29 @@ static void silent(int status, const char *file, int line, const char *msg) {
   (void)msg;
   last_status = status;
 }
+struct vsph_run *vsph_test_run(const struct vsph_scene_type *type,
+                               const char *const *set, struct vsph_scene *sc) {
+  struct vsph_params *prm = vsph_params_alloc();
+  for (size_t k = 0; set[k]; k++) {
+    char key[128];
+    const char *eq = strchr(set[k], '=');
+    ck_assert_ptr_nonnull(eq);
+    ck_assert_uint_lt((size_t)(eq - set[k]), sizeof key);
+    memcpy(key, set[k], (size_t)(eq - set[k]));
+    key[eq - set[k]] = '\0';
+    ck_assert_int_eq(vsph_params_set(prm, key, eq + 1), 0);
+  }
+  struct vsph_run_props rp;
+  struct vsph_scene scene;
+  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
+  ck_assert_int_eq(vsph_scene_init(&scene, type, prm), 0);
+  vsph_params_free(prm);
+  struct vsph_run *run = NULL;
+  ck_assert_int_eq(vsph_run_alloc(&rp, &scene, &run), 0);
+  if (sc) *sc = scene;
+  return run;
+}
+
 void vsph_test_silence(void) {
   last_status = 0;
   vsph_status_set_handler(silent);

@@ -54,6 +54,15 @@ void vsph_test_slurp(const char *path, char *buf, size_t n);
 double *vsph_test_vtp_values(const char *path, const char *name, int *ncomp,
                              size_t *count);
 
+struct vsph_run;
+struct vsph_scene;
+struct vsph_scene_type;
+/* A run of scene TYPE with the settings SET ("Section:key=value" strings,
+ * NULL-terminated), every step asserted to succeed; the scene into *sc
+ * when sc is not NULL. */
+struct vsph_run *vsph_test_run(const struct vsph_scene_type *type,
+                               const char *const *set, struct vsph_scene *sc);
+
 /* Silent error handler for tests: records the last status. */
 void vsph_test_silence(void);
 int vsph_test_last_status(void);
