@@ -150,6 +150,7 @@ static double max_speed(const struct vsph_integrate *s) {
 }
 
 double vsph_integrate_dt(const struct vsph_integrate *s) {
+  if (s->props.dt > 0.0) return s->props.dt;
   const struct vsph_equations_props *ep = &s->props.eq;
   const double h = ep->visc.h;
   double c0 = ep->c0, nu = ep->visc.mu / ep->rho0;

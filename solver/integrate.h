@@ -25,6 +25,8 @@ struct vsph_integrate_props {
   struct vsph_equations_props eq; /*!< physics */
   struct vsph_walls walls;        /*!< walls (n = 0: none, no wall code) */
   double cfl;                     /*!< Courant number (RK4 default 1.0) */
+  double dt;                      /*!< a fixed step (s) in place of the
+                                       rule's, stable or not; 0: the rule */
   double rho_band;                /*!< stop when |rho/rho0 - 1| > band */
   double min_dist;                /*!< stop when two particles come closer
                                        (m): pairing, a zero-energy mode */
@@ -73,7 +75,8 @@ struct vsph_integrate *vsph_integrate_alloc(
 /** @brief Free; NULL is a no-op. */
 void vsph_integrate_free(struct vsph_integrate *s);
 
-/** @brief Time step of THEORY section 5 for the current state. */
+/** @brief Time step of THEORY section 5 for the current state; props.dt
+ *  in its place where that is set. */
 double vsph_integrate_dt(const struct vsph_integrate *s);
 
 /** @brief The time-step rule itself (docs/theory.md section 5), for the

@@ -41,6 +41,11 @@ static const struct vsph_params_spec SOLVER[] = {
     VSPH_PARAMS_REAL_SPEC(P, cfl, 1.0, 1e-3, 4.0,
                           "Courant number of the RK4 time step (tvf: dt = "
                           "cfl/4 h/(c0 + |u|max); contact: cfl/2)"),
+    VSPH_PARAMS_REAL_SPEC(P, dt, 0.0, 0.0, 1e9,
+                          "a fixed time step (s) in place of the rule's "
+                          "(cfl), stable or not: a run it makes unstable "
+                          "stops cleanly (Vukcevic et al. fix 1e-6 s); 0: "
+                          "the rule"),
     VSPH_PARAMS_REAL_SPEC(P, delta, 0.0, 0.0, 1.0,
                           "delta-SPH coefficient; 0: off (0.1 is usual)"),
     VSPH_PARAMS_REAL_SPEC(P, rho_band, 0.2, 1e-6, 10.0,
@@ -355,13 +360,14 @@ static int check_cost(const struct vsph_run_props *rp,
                           ? sc->beta * sc->beta * sc->ref_length
                       : sc->body == VSPH_EQUATIONS_BODY_UNIFORM ? fabs(sc->f)
                                                                 : 0.0;
-  const double dt = vsph_integrate_dt_rule(
+  const double rule = vsph_integrate_dt_rule(
       rp->cfl,
       rp->leapfrog ? 2
       : rp->tvf    ? 1
                    : 0,
       rp->scheme_kind == VSPH_EQUATIONS_CONTACT, h, run_c0(rp, sc), sc->U_max,
       sc->mu / sc->rho0, gmax);
+  const double dt = rp->dt > 0 ? rp->dt : rule;
   const double steps = t_end / dt;
   e->steps = steps;
   if (!(steps <= (double)rp->max_steps))
@@ -405,6 +411,7 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
                                        &ip)))
     goto fail;
   ip.cfl = rp->cfl;
+  ip.dt = rp->dt;
   ip.rho_band = rp->rho_band;
   ip.min_dist = rp->min_gap * r->dx;
   ip.eq.delta = rp->delta;

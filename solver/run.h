@@ -52,6 +52,7 @@ struct vsph_run_props {
   double hdx;          /*!< h/dx */
   double t_end;        /*!< end time (s); 0: the scene's */
   double cfl;          /*!< Courant number of RK4 */
+  double dt;           /*!< a fixed time step (s); 0: the rule's */
   double delta;        /*!< delta-SPH coefficient; 0: off */
   double rho_band;     /*!< unstable when |rho/rho0 - 1| exceeds it */
   double min_gap;      /*!< unstable when two particles come closer (dx) */

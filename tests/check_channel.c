@@ -388,6 +388,42 @@ START_TEST(test_leapfrog_viscous_step) {
 }
 END_TEST
 
+/* A fixed step (Solver:dt) in place of the rule's, on the Couette above:
+ * half the rule's step is taken as given (the estimate and the run count
+ * t_end/dt steps, the last one shortened to land on t_end) and the run
+ * ends; four times the rule's (RK4's viscous bound, where the test above
+ * found the leapfrog unstable by 0.04 s) is taken too, and the run stops
+ * cleanly as unstable before t_end. */
+START_TEST(test_fixed_step) {
+  struct vsph_scene sc;
+  static const char *const RULE[] = {"Solver:res=20", "Solver:t_end=0.1",
+                                     "Solver:integrator=leapfrog", NULL};
+  struct vsph_run *run = vsph_test_run(&vsph_channel_couette_type, RULE, &sc);
+  const double rule = vsph_integrate_dt(run->integ);
+  vsph_run_free(run);
+  for (int k = 0; k < 2; k++) {
+    const double dt = k ? 4.0 * rule : 0.5 * rule;
+    char set_dt[64];
+    snprintf(set_dt, sizeof set_dt, "Solver:dt=%.17g", dt);
+    const char *const SET[] = {RULE[0], RULE[1], RULE[2], set_dt, NULL};
+    run = vsph_test_run(&vsph_channel_couette_type, SET, &sc);
+    struct vsph_run_estimate e;
+    ck_assert_int_eq(vsph_run_estimate(&run->props, &sc, &e), 0);
+    ck_assert_double_eq_tol(e.steps, 0.1 / dt, 1e-9 * e.steps);
+    ck_assert_double_eq(vsph_integrate_dt(run->integ), dt);
+    while (run->state == VSPH_RUN_RUNNING) vsph_run_iterate(run);
+    if (k == 0) {
+      ck_assert_int_eq(run->state, VSPH_RUN_DONE);
+      ck_assert_uint_eq(vsph_run_steps(run), (size_t)ceil(0.1 / dt - 1e-9));
+    } else {
+      ck_assert_int_eq(run->state, VSPH_RUN_UNSTABLE);
+      ck_assert_double_lt(vsph_run_time(run), 0.1);
+    }
+    vsph_run_free(run);
+  }
+}
+END_TEST
+
 /* Vukcevic et al.'s fixed wall particles in the periodic channel
  * (Scene:walls = fixed), res 12 with summation density and Basa's cubic
  * spline at dx/h = 0.637: the wall lattice runs over the period and a
@@ -595,6 +631,7 @@ Suite *vsph_channel_suite(void) {
   tcase_add_loop_test(tc, test_leapfrog_order, 0, 2);
   tcase_add_test(tc, test_fixed_walls);
   tcase_add_test(tc, test_leapfrog_viscous_step);
+  tcase_add_test(tc, test_fixed_step);
   tcase_add_loop_test(tc, test_couette_steady, 0, 3);
   tcase_add_loop_test(tc, test_startup_walls, 0, 3);
   tcase_add_test(tc, test_poiseuille_meaf);
