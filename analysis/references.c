@@ -380,6 +380,24 @@ void vsph_references_profile_error(const struct vsph_scene *sc,
   e->v_rms = sqrt(sv / n) / ch->U;
 }
 
+void vsph_references_profile_zigzag(const double *y, const double *u,
+                                    const double *U, size_t nb, double scale,
+                                    struct vsph_references_zigzag *z) {
+  double s2 = 0.0;
+  z->max = z->y_max = (double)NAN;
+  z->n = 0;
+  for (size_t k = 1; k + 1 < nb; k++) {
+    const double zk =
+        (2.0 * (u[k] - U[k]) - (u[k - 1] - U[k - 1]) - (u[k + 1] - U[k + 1])) /
+        (4.0 * scale);
+    if (!isfinite(zk)) continue;
+    s2 += zk * zk;
+    if (!(fabs(zk) <= z->max)) z->max = fabs(zk), z->y_max = y[k];
+    z->n++;
+  }
+  z->rms = z->n ? sqrt(s2 / (double)z->n) : (double)NAN;
+}
+
 int vsph_references_profile_bins(const struct vsph_scene *sc,
                                  const struct vsph_particles *p, size_t n_fluid,
                                  double t, size_t nb, double *y, double *u,

@@ -125,6 +125,26 @@ int vsph_references_profile_bins(const struct vsph_scene *sc,
                                  double t, size_t nb, double *y, double *u,
                                  double *U, size_t *count);
 
+/** The row-to-row oscillation of a binned profile, apart from its smooth
+ *  error: per interior bin k, the second difference of the error
+ *  e = u - U, z_k = (2 e_k - e_{k-1} - e_{k+1}) / 4, which is A for an
+ *  alternating error A (-1)^k, vanishes for an error linear in k (a slip,
+ *  a tilt) and is -q/2 for a parabola q k^2 (the smooth error's share,
+ *  O(dx^2) on a resolved profile). */
+struct vsph_references_zigzag {
+  double rms;   /*!< sqrt(mean z_k^2) over @p scale */
+  double max;   /*!< max |z_k| over @p scale */
+  double y_max; /*!< the y of that bin */
+  size_t n;     /*!< the bins counted (0: none; rms, max NaN) */
+};
+
+/** @brief The zigzag of the profile @p y, @p u, @p U (@p nb bins, as
+ *  vsph_references_profile_bins writes them; a triple with a NaN is left
+ *  out), over @p scale (the peak speed). */
+void vsph_references_profile_zigzag(const double *y, const double *u,
+                                    const double *U, size_t nb, double scale,
+                                    struct vsph_references_zigzag *z);
+
 /** Ghia, Ghia & Shin (1982), Tables I and II: the steady lid-driven
  *  cavity's u on the vertical centreline x = L/2 at heights y, and v on the
  *  horizontal centreline y = L/2 at abscissae x, over L and U, 17 points

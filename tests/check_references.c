@@ -351,6 +351,41 @@ START_TEST(test_cavity_umin) {
 }
 END_TEST
 
+/* The profile's zigzag against hand-worked errors on 9 bins (7 interior):
+ * an alternating error A (-1)^k over a slip and a tilt (both invisible to
+ * the measure) gives A in every bin; a parabola q k^2 gives -q/2 in every
+ * bin; a single bump B at bin 4 gives B/2 there and -B/4 beside it
+ * (sqrt((1/4 + 2/16)/7) B in RMS); a NaN bin drops the triples that
+ * hold it (two here: bin 0 is no centre). Exact but for rounding. */
+START_TEST(test_profile_zigzag) {
+  enum { NB = 9 };
+  double y[NB], u[NB], U[NB];
+  const double A = 0.03, q = 2e-3, B = 0.4, s = 2.0;
+  struct vsph_references_zigzag z;
+  for (int k = 0; k < NB; k++) {
+    y[k] = 0.1 * k;
+    U[k] = 1.0 - 0.05 * (k - 4) * (k - 4); /* the series: any shape */
+    u[k] = U[k] + A * (k % 2 ? -1 : 1) + 0.3 + 0.01 * k;
+  }
+  vsph_references_profile_zigzag(y, u, U, NB, s, &z);
+  ck_assert_uint_eq(z.n, NB - 2);
+  ck_assert_double_eq_tol(z.rms, A / s, 1e-15);
+  ck_assert_double_eq_tol(z.max, A / s, 1e-15);
+  for (int k = 0; k < NB; k++) u[k] = U[k] + q * k * k;
+  vsph_references_profile_zigzag(y, u, U, NB, 1.0, &z);
+  ck_assert_double_eq_tol(z.rms, q / 2, 1e-15);
+  for (int k = 0; k < NB; k++) u[k] = U[k] + (k == 4 ? B : 0.0);
+  vsph_references_profile_zigzag(y, u, U, NB, 1.0, &z);
+  ck_assert_double_eq_tol(z.max, B / 2, 1e-15);
+  ck_assert_double_eq_tol(z.y_max, 0.4, 1e-15);
+  ck_assert_double_eq_tol(z.rms, sqrt((0.25 + 2.0 / 16.0) / 7.0) * B, 1e-15);
+  u[1] = (double)NAN;
+  vsph_references_profile_zigzag(y, u, U, NB, 1.0, &z);
+  ck_assert_uint_eq(z.n, NB - 2 - 2); /* bins 1 and 2 (bin 0 is no centre) */
+  ck_assert_double_eq_tol(z.max, B / 2, 1e-15);
+}
+END_TEST
+
 Suite *vsph_references_suite(void) {
   Suite *s = suite_create("references");
   TCase *tc = tcase_create("vortex");
@@ -366,6 +401,7 @@ Suite *vsph_references_suite(void) {
   tcase_add_test(tc, test_norm_closed_form);
   tcase_add_test(tc, test_wave_initial_power);
   tcase_add_test(tc, test_errors);
+  tcase_add_test(tc, test_profile_zigzag);
   suite_add_tcase(s, tc);
   return s;
 }
