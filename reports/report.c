@@ -107,6 +107,17 @@ int vsph_report_claim(struct vsph_report *R, const char *claim,
               claim, verdict);
   if (!setup || !*setup)
     VSPH_FAIL(VSPH_EINVAL, "claim '%.60s' says nothing of its set-up", claim);
+  /* a field cut short would change what the row says: a bug, not a row */
+  const struct vsph_report_claim *sz = NULL;
+  const char *const field[5] = {claim, paper, ours, verdict, setup};
+  const size_t room[5] = {sizeof sz->claim, sizeof sz->paper, sizeof sz->ours,
+                          sizeof sz->verdict, sizeof sz->setup};
+  for (int k = 0; k < 5; k++)
+    if (strlen(field[k]) >= room[k])
+      VSPH_FAIL(VSPH_EINVAL,
+                "claim '%.60s': a field of %zu characters, more than the "
+                "table's %zu",
+                claim, strlen(field[k]), room[k] - 1);
   if (R->nclaims == R->cap_claims) {
     const size_t cap = R->cap_claims ? 2 * R->cap_claims : 32;
     struct vsph_report_claim *c = realloc(R->claims, cap * sizeof *c);

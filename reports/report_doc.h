@@ -18,8 +18,8 @@ struct vsph_plot;
 
 /* One row of the claims table. */
 struct vsph_report_claim {
-  char claim[256], paper[256], ours[480], verdict[256];
-  char setup[600]; /* how our set-up, quantity and method differ from the
+  char claim[256], paper[256], ours[800], verdict[400];
+  char setup[800]; /* how our set-up, quantity and method differ from the
                       paper's, and the [reconstructed] choices the verdict
                       rests on ("none" where nothing differs) */
   char see[32]; /* the part that shows it ("scenes"): the link in the table */

@@ -30,7 +30,7 @@ extern const unsigned long vsph_text_nblocks;
 struct vsph_text_vars {
   size_t n;                         /*!< values set */
   char key[VSPH_TEXT_MAXVARS][32];  /*!< placeholder names */
-  char val[VSPH_TEXT_MAXVARS][256]; /*!< their text */
+  char val[VSPH_TEXT_MAXVARS][768]; /*!< their text */
 };
 
 /** @brief No values. */

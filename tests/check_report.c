@@ -69,7 +69,18 @@ START_TEST(test_verdict_classes) {
   /* nor a row that says nothing of its set-up */
   ck_assert_int_ne(vsph_report_claim(&R, "c", "p", "o", "", "reproduced"), 0);
   ck_assert_int_ne(vsph_report_claim(&R, "c", "p", "o", NULL, "reproduced"), 0);
+  /* nor one whose text would be cut short: its ours one character past
+   * the table's room, then just within it (the row is taken) */
+  char ours[sizeof R.claims->ours + 1];
+  memset(ours, 'x', sizeof ours - 1);
+  ours[sizeof ours - 1] = '\0';
+  ck_assert_int_ne(vsph_report_claim(&R, "c", "p", ours, "none", "partly"), 0);
   ck_assert_uint_eq(R.nclaims, 0);
+  ours[sizeof ours - 2] = '\0';
+  ck_assert_int_eq(vsph_report_claim(&R, "c", "p", ours, "none", "partly"), 0);
+  ck_assert_uint_eq(R.nclaims, 1);
+  ck_assert_str_eq(R.claims[0].ours, ours);
+  free(R.claims);
 }
 END_TEST
 
