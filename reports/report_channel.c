@@ -1263,7 +1263,7 @@ static int visc_claims(struct vsph_report *R, const struct chan *c) {
   int st = VSPH_OK;
   char ours[320], setup[600], v[320];
   /* Zheng et al.'s metric at the finest resolution run: their 40 x 40 to
-   * 40 s at FULL, 30 x 30 to 30 s quick */
+   * 40 s at FULL, 20 x 20 to 30 s quick */
   const int base = R->runs.full ? CAV_V01_40 : CAV_V01;
   const double *u = &c->umin[base], *w = &c->umin_swing[base];
   int best = 0, all = 1;
