@@ -20,8 +20,12 @@ int vsph_text_set(struct vsph_text_vars *tv, const char *key, const char *fmt,
   }
   va_list ap;
   va_start(ap, fmt);
-  vsnprintf(tv->val[k], sizeof tv->val[k], fmt, ap);
+  const int w = vsnprintf(tv->val[k], sizeof tv->val[k], fmt, ap);
   va_end(ap);
+  tv->cut[k] = w < 0 || (size_t)w >= sizeof tv->val[k];
+  if (tv->cut[k])
+    VSPH_FAIL(VSPH_EINVAL, "the value of {{%s}} is longer than %zu characters",
+              key, sizeof tv->val[k] - 1);
   return VSPH_OK;
 }
 
@@ -52,6 +56,10 @@ int vsph_text_write(FILE *out, const char *name,
                 "prose block '%s' uses {{%.*s}}, which has no "
                 "value",
                 name, (int)len, open + 2);
+    if (tv->cut[k])
+      VSPH_FAIL(VSPH_EINVAL,
+                "prose block '%s': the value of {{%s}} was cut short", name,
+                tv->key[k]);
     fputs(tv->val[k], out);
     c = close + 2;
   }

@@ -28,16 +28,19 @@ extern const unsigned long vsph_text_nblocks;
 
 /** Values for the placeholders of one block. */
 struct vsph_text_vars {
-  size_t n;                         /*!< values set */
-  char key[VSPH_TEXT_MAXVARS][32];  /*!< placeholder names */
-  char val[VSPH_TEXT_MAXVARS][768]; /*!< their text */
+  size_t n;                             /*!< values set */
+  char key[VSPH_TEXT_MAXVARS][32];      /*!< placeholder names */
+  char val[VSPH_TEXT_MAXVARS][1024];    /*!< their text */
+  unsigned char cut[VSPH_TEXT_MAXVARS]; /*!< 1: cut short (writing it fails) */
 };
 
 /** @brief No values. */
 void vsph_text_clear(struct vsph_text_vars *tv);
 
 /** @brief Set {{key}} to the printf-formatted text (a later set of the
- *  same key replaces it). @return VSPH_OK or VSPH_EINVAL (too many). */
+ *  same key replaces it). @return VSPH_OK or VSPH_EINVAL (too many, or a
+ *  text too long for the value, which then fails the block that uses
+ *  it). */
 int vsph_text_set(struct vsph_text_vars *tv, const char *key, const char *fmt,
                   ...);
 

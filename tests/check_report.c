@@ -93,6 +93,25 @@ static size_t count(const char *hay, const char *needle) {
 
 /* The tally line counts each class, and every row carries its class's
  * mark once, in the verdict cell, before the verdict's own words. */
+/* A prose value too long for its room is refused, and the block that
+ * uses it is not written with the cut text; a short one goes in whole. */
+START_TEST(test_text_value_room) {
+  static struct vsph_text_vars tv; /* 24 KiB: not on the stack */
+  char big[sizeof tv.val[0] + 1], out[4096];
+  memset(big, 'x', sizeof big - 1);
+  big[sizeof big - 1] = '\0';
+  vsph_text_clear(&tv);
+  vsph_test_silence();
+  ck_assert_int_ne(vsph_text_set(&tv, "swread", "%s", big), 0);
+  ck_assert_int_ne(
+      vsph_text_format(out, sizeof out, "channel.sweep_reading", &tv), 0);
+  ck_assert_int_eq(vsph_text_set(&tv, "swread", "%s", "short"), 0);
+  ck_assert_int_eq(
+      vsph_text_format(out, sizeof out, "channel.sweep_reading", &tv), 0);
+  ck_assert_str_eq(out, "Reading: short");
+}
+END_TEST
+
 START_TEST(test_claims_tally) {
   static const char *const verdicts[] = {
       "reproduced (within 3 %)",   "reproduced at this resolution",
@@ -400,6 +419,7 @@ Suite *vsph_report_suite(void) {
   tcase_add_test(tc, test_verdict_classes);
   tcase_add_test(tc, test_scene_names);
   tcase_add_test(tc, test_claims_tally);
+  tcase_add_test(tc, test_text_value_room);
   tcase_add_test(tc, test_claims_beside);
   tcase_add_test(tc, test_time_left);
   tcase_add_test(tc, test_shell_quote);
