@@ -139,7 +139,7 @@ struct vsph_references_zigzag {
 };
 
 /** @brief The zigzag of the profile @p y, @p u, @p U (@p nb bins, as
- *  vsph_references_profile_bins writes them; a triple with a NaN is left
+ *  vsph_references_profile_bins writes them; a triple with a NaN u or U is left
  *  out), over @p scale (the peak speed). */
 void vsph_references_profile_zigzag(const double *y, const double *u,
                                     const double *U, size_t nb, double scale,
