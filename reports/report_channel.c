@@ -1101,12 +1101,7 @@ static void cavity_rows(struct vsph_report *R, const struct chan *c) {
     fprintf(R->md, "| %d | %s | %s | %zu |", CAV[q].Re,
             vsph_viscous_label(vsph_viscous_find(CAV[q].visc)), CAV[q].scheme,
             CAV[q].res);
-    char why[200];
-    if (r->ok)
-      fprintf(R->md, " yes |");
-    else
-      fprintf(R->md, " stopped at t = %.3g s (%s) |", r->t_unstable,
-              stop_words(r, why, sizeof why));
+    stop_cell_s(R->md, r);
     cell(R->md, final(r, "Ek"), 1.0);
     cell(R->md, cavity_mean(r, "u_err"), 100);
     cell(R->md, cavity_mean(r, "u_err_rel"), 100);
