@@ -8,6 +8,7 @@
 #include <check.h>
 #include <cjson/cJSON.h>
 #include <dirent.h>
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -1116,8 +1117,12 @@ static int wait_status(pid_t pid) {
 
 /* SIGTERM wherever it lands (between steps, within one, at an output),
  * again and again until the run ends: bitwise the run never stopped. The
- * signals come every 0.1-0.35 s (a step here takes milliseconds: most
- * land within a step, which is put back as it began). */
+ * signals come after 8-30 % of the uninterrupted run's wall time T (at
+ * least 30 ms), so at least two land before the end unless the machine
+ * runs the stopped runs over twice as fast as it ran the first (a fixed
+ * 0.1-0.35 s let a fast machine finish at the second try: T was 0.5 s).
+ * A step here takes milliseconds: most signals land within a step, which
+ * is put back as it began. */
 START_TEST(test_restart_any_signal) {
   char dir[] = "/tmp/vsph_anysigXXXXXX", a[300], b[300], args[600];
   vsph_test_scratch(dir);
@@ -1127,15 +1132,21 @@ START_TEST(test_restart_any_signal) {
            "run vortex-patch --res 60 --t-end 0.5 --snapshots 3 --quiet "
            "--out %s",
            a);
+  struct timespec t0, t1;
+  clock_gettime(CLOCK_MONOTONIC, &t0);
   ck_assert_int_eq(vsph_test_cli(args)->status, 0);
+  clock_gettime(CLOCK_MONOTONIC, &t1);
+  const double T_ms = 1e3 * (double)(t1.tv_sec - t0.tv_sec) +
+                      1e-6 * (double)(t1.tv_nsec - t0.tv_nsec);
   const char *const run_b[] = {
       "vsph",        "run", "vortex-patch", "--res", "60", "--t-end", "0.5",
       "--snapshots", "3",   "--quiet",      "--out", b,    NULL};
   int rc = -1, stops = 0;
-  srand(2385); /* the same delays every time */
+  srand(2385); /* the same fractions every time */
   for (int k = 0; k < 60 && rc != 0; k++) {
     const pid_t pid = spawn_run(run_b);
-    const long ms = 100 + rand() % 250;
+    const double u = (double)rand() / ((double)RAND_MAX + 1.0);
+    const long ms = (long)fmax(30.0, T_ms * (0.08 + 0.22 * u));
     nanosleep(&(struct timespec){ms / 1000, (ms % 1000) * 1000000L}, NULL);
     kill(pid, SIGTERM);
     rc = wait_status(pid);
