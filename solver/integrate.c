@@ -671,7 +671,10 @@ static size_t layout_bytes(size_t d, size_t cap, size_t cap_n, size_t cap_cells,
   /* the first-pass workspace (ws >= 1) and its corrections' S, a, L (2) */
   if (ws >= 1) b += cap * (d * d + 1) * sizeof(double) + cap;
   if (ws >= 2) b += cap * (1 + d + d * d) * sizeof(double);
-  if (ghosts) b += cap * (sizeof(size_t) + sizeof(unsigned));
+  /* ghosts: source and mask, and (linear walls) the nearest rows' entries
+   * (7 doubles) and their bins (two indices), counted for any wall */
+  if (ghosts)
+    b += cap * (3 * sizeof(size_t) + sizeof(unsigned) + 7 * sizeof(double));
   if (tvf) b += cap * 2 * d * sizeof(double);            /* tvel, bacc */
   b += cap * sizeof(size_t);                             /* where */
   b += cap * (2 * (2 * d + 2) + d + 1) * sizeof(double); /* RK, extra */

@@ -106,9 +106,15 @@ struct vsph_walls_ghosts *vsph_walls_ghosts_alloc(const struct vsph_walls *w,
     gh->mask = malloc(c * sizeof *gh->mask);
     /* each nearest-row particle has a ghost across its plane (band <=
      * reach): at most cap entries */
-    if (linear) gh->band = malloc(c * BAND_STRIDE * sizeof *gh->band);
+    if (linear) {
+      gh->band = malloc(c * BAND_STRIDE * sizeof *gh->band);
+      gh->bent = malloc(c * sizeof *gh->bent);
+      /* at most as many bins as entries, one more bound per plane */
+      gh->bfirst = malloc((c + VSPH_WALLS_MAX) * sizeof *gh->bfirst);
+    }
   }
-  if (!gh || !gh->src || !gh->mask || (linear && !gh->band)) {
+  if (!gh || !gh->src || !gh->mask ||
+      (linear && (!gh->band || !gh->bent || !gh->bfirst))) {
     vsph_walls_ghosts_free(gh);
     vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
                        "cannot allocate %zu ghosts", cap);
@@ -122,6 +128,8 @@ void vsph_walls_ghosts_free(struct vsph_walls_ghosts *gh) {
   free(gh->src);
   free(gh->mask);
   free(gh->band);
+  free(gh->bent);
+  free(gh->bfirst);
   free(gh);
 }
 
@@ -129,6 +137,77 @@ void vsph_walls_ghosts_free(struct vsph_walls_ghosts *gh) {
 static double depth(const struct vsph_walls *w, const struct vsph_particles *p,
                     size_t s, int q) {
   return w->side[q] * (p->pos[w->axis[q]][s] - w->pos[q]);
+}
+
+/* Entry band b's share of a fit at tangential distance r (m) from the
+ * ghost: the sums of extrapolate. */
+static void fit_add(const struct vsph_walls *w, const double *b, double r,
+                    int dim, double num[3], double *den) {
+  const double db = b[6];
+  const double wt = (1.0 - r / w->window) * (1.0 - db / w->band);
+  for (int k = 0; k < dim; k++) num[k] += wt * db * b[3 + k];
+  *den += wt * db * db;
+}
+
+/* The bin of coordinate x along plane q's binned axis: in [0, nbin) for a
+ * periodic axis (x reduced into one period), else possibly outside it. */
+static double bin_of(const struct vsph_walls_ghosts *gh, int q, double x) {
+  const double L = gh->bper[q];
+  double u = x - gh->bx0[q];
+  if (L > 0.0) {
+    u -= L * floor(u / L);
+    if (u >= L) u -= L;
+  }
+  return floor(u / gh->bwidth[q]);
+}
+
+/* Bin plane q's entries (after rows has listed them) along its first
+ * tangential axis in bins at least the window wide; too few entries or
+ * bins (or a non-finite coordinate) leave it unbinned. */
+static void bin_plane(const struct vsph_walls *w, struct vsph_walls_ghosts *gh,
+                      int dim, int q, size_t *nbins) {
+  gh->nbin[q] = 0;
+  gh->boff[q] = *nbins;
+  const size_t ne = gh->nband[q];
+  int t = 0;
+  while (t == w->axis[q]) t++;
+  if (t >= dim || ne < 8 || !(w->window > 0.0)) return;
+  const double *b0 = gh->band + gh->bstart[q] * BAND_STRIDE;
+  /* the bins at least the window wide, with a margin for rounding */
+  const double wmin = w->window * (1.0 + 1e-9);
+  double lo = INFINITY, hi = -INFINITY;
+  for (size_t e = 0; e < ne; e++) {
+    const double x = b0[e * BAND_STRIDE + t];
+    if (!isfinite(x)) return;
+    lo = fmin(lo, x);
+    hi = fmax(hi, x);
+  }
+  const double L = vsph_walls_period(w, t);
+  const double span = L > 0.0 ? L : hi - lo;
+  const double nb_d = floor(span / wmin);
+  size_t nb = nb_d < (double)ne ? (size_t)nb_d : ne;
+  if (nb < 3) return; /* three bins would be the whole row */
+  gh->baxis[q] = t;
+  gh->bper[q] = L;
+  gh->bx0[q] = L > 0.0 ? 0.0 : lo;
+  gh->bwidth[q] = span / (double)nb;
+  size_t *const first = gh->bfirst + *nbins;
+  for (size_t k = 0; k <= nb; k++) first[k] = 0;
+  for (size_t e = 0; e < ne; e++) { /* counts, then starts */
+    const double bb = bin_of(gh, q, b0[e * BAND_STRIDE + t]);
+    first[(bb < (double)nb ? (size_t)bb : nb - 1) + 1]++;
+  }
+  for (size_t k = 0; k < nb; k++) first[k + 1] += first[k];
+  size_t *const ent = gh->bent + gh->bstart[q];
+  for (size_t e = 0; e < ne; e++) { /* stable: ascending within a bin */
+    const double bb = bin_of(gh, q, b0[e * BAND_STRIDE + t]);
+    const size_t k = bb < (double)nb ? (size_t)bb : nb - 1;
+    ent[first[k]++] = e;
+  }
+  for (size_t k = nb; k > 0; k--) first[k] = first[k - 1]; /* restore */
+  first[0] = 0;
+  gh->nbin[q] = nb;
+  *nbins += nb + 1;
 }
 
 /* Linear extrapolation of ghost i (its position set) across plane q at
@@ -144,8 +223,38 @@ static int extrapolate(const struct vsph_walls *w,
   for (int k = 0; k < dim; k++)
     if (k != a) per[k] = vsph_walls_period(w, k);
   double num[3] = {0, 0, 0}, den = 0.0;
-  const double *b = gh->band + gh->bstart[q] * BAND_STRIDE;
-  for (size_t e = 0; e < gh->nband[q]; e++, b += BAND_STRIDE) {
+  const double *const b0 = gh->band + gh->bstart[q] * BAND_STRIDE;
+  /* the entries to visit, ascending: three bins' (merged), or all */
+  const size_t *lst[3] = {NULL, NULL, NULL};
+  size_t len[3] = {0, 0, 0}, nl = 0, ne = gh->nband[q];
+  const double xb = gh->nbin[q] ? p->pos[gh->baxis[q]][i] : (double)NAN;
+  if (isfinite(xb)) {
+    const size_t nb = gh->nbin[q];
+    const size_t *const first = gh->bfirst + gh->boff[q];
+    const size_t *const ent = gh->bent + gh->bstart[q];
+    const double bb = bin_of(gh, q, xb);
+    for (int o = -1; o <= 1; o++) {
+      double k = bb + o;
+      if (gh->bper[q] > 0.0) /* circular: nb >= 3, so three distinct */
+        k = k < 0.0 ? k + (double)nb : k >= (double)nb ? k - (double)nb : k;
+      if (!(k >= 0.0 && k < (double)nb)) continue;
+      const size_t kk = (size_t)k;
+      lst[nl] = ent + first[kk];
+      len[nl++] = first[kk + 1] - first[kk];
+    }
+    ne = len[0] + len[1] + len[2];
+  }
+  size_t at[3] = {0, 0, 0};
+  for (size_t v = 0; v < ne; v++) {
+    size_t e = v;
+    if (nl) { /* the smallest head of the lists */
+      int best = -1;
+      for (int l = 0; l < (int)nl; l++)
+        if (at[l] < len[l] && (best < 0 || lst[l][at[l]] < lst[best][at[best]]))
+          best = l;
+      e = lst[best][at[best]++];
+    }
+    const double *const b = b0 + e * BAND_STRIDE;
     double r2 = 0.0;
     for (int k = 0; k < dim; k++) {
       if (k == a) continue;
@@ -155,10 +264,7 @@ static int extrapolate(const struct vsph_walls *w,
     }
     const double r = sqrt(r2);
     if (r >= w->window) continue;
-    const double db = b[6];
-    const double wt = (1.0 - r / w->window) * (1.0 - db / w->band);
-    for (int k = 0; k < dim; k++) num[k] += wt * db * b[3 + k];
-    den += wt * db * db;
+    fit_add(w, b, r, dim, num, &den);
   }
   if (!(den > 0.0)) return 0;
   for (int k = 0; k < dim; k++)
@@ -238,10 +344,11 @@ static unsigned near_planes(const struct vsph_walls *w,
  * index order, so the fits are the same for any thread count. */
 static void rows(const struct vsph_walls *w, const struct vsph_particles *p,
                  size_t n_fluid, struct vsph_walls_ghosts *gh) {
-  size_t e = 0;
+  size_t e = 0, nbins = 0;
   for (int q = 0; q < w->n; q++) {
     gh->bstart[q] = e;
     gh->nband[q] = 0;
+    gh->nbin[q] = 0;
     if (w->kind[q] != VSPH_WALLS_MIRROR) continue;
     for (size_t i = 0; i < p->n && e < gh->cap; i++) {
       if (p->id[i] >= n_fluid) continue;
@@ -257,6 +364,7 @@ static void rows(const struct vsph_walls *w, const struct vsph_particles *p,
       e++;
       gh->nband[q]++;
     }
+    bin_plane(w, gh, p->dim, q, &nbins);
   }
 }
 

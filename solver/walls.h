@@ -104,6 +104,19 @@ struct vsph_walls_ghosts {
   double *band; /*!< per entry: coordinates (3), shear terms (3), depth */
   size_t nband[VSPH_WALLS_MAX];  /*!< entries of plane w */
   size_t bstart[VSPH_WALLS_MAX]; /*!< first entry of plane w */
+  /* the entries of each plane binned along its first tangential axis, in
+   * bins at least `window` wide, so that a ghost's fit visits the three
+   * bins around it instead of the whole row (the same entries in the
+   * same order: the same bits) */
+  size_t *bent;                  /*!< each plane's entries (from 0), bin
+                                      by bin, ascending within a bin */
+  size_t *bfirst;                /*!< per bin: its first slot in bent */
+  size_t boff[VSPH_WALLS_MAX];   /*!< plane w's first bin in bfirst */
+  size_t nbin[VSPH_WALLS_MAX];   /*!< plane w's bins; 0: not binned */
+  int baxis[VSPH_WALLS_MAX];     /*!< the binned axis */
+  double bx0[VSPH_WALLS_MAX];    /*!< its origin (m) */
+  double bwidth[VSPH_WALLS_MAX]; /*!< the bins' width (m) */
+  double bper[VSPH_WALLS_MAX];   /*!< its period (m); 0: not periodic */
   size_t keep; /*!< fixed wall particles (ids n_fluid .. n_fluid + keep - 1)
                     kept by _generate; the ghosts' ids follow them. With
                     a solid set only its periodic planes image the fluid */
