@@ -5,14 +5,7 @@
 #include "../common/consts.h"
 #include "kernel.h"
 
-static double f_cubic(double q) {
-  if (q < 1.0) return 1.0 - 1.5 * q * q + 0.75 * q * q * q;
-  if (q < 2.0) {
-    const double t = 2.0 - q;
-    return 0.25 * t * t * t;
-  }
-  return 0.0;
-}
+static double f_cubic(double q) { return vsph_kernel_f_cubic(q); }
 
 static double df_cubic(double q) {
   if (q < 1.0) return -3.0 * q + 2.25 * q * q;

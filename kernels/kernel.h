@@ -177,6 +177,17 @@ static inline double vsph_kernel_f_quintic(double q) {
   return a5 - 6.0 * b5 + 15.0 * c5;
 }
 
+/** @brief Cubic B-spline: f(q) = 1 - 3/2 q^2 + 3/4 q^3 (q < 1),
+ *  (2 - q)^3/4 (q < 2), 0 beyond (the kernel's own f, inlined where a
+ *  loop is specialised on it). */
+static inline double vsph_kernel_f_cubic(double q) {
+  /* selects, not branches, so that loops vectorise */
+  const double t = 2.0 - q;
+  const double inner = 1.0 - 1.5 * q * q + 0.75 * q * q * q;
+  const double outer = q < 2.0 ? 0.25 * t * t * t : 0.0;
+  return q < 1.0 ? inner : outer;
+}
+
 /** @brief Wendland C2 (2-D, 3-D): (df/dq)/q = -5 (1 - q/2)^3. */
 static inline double vsph_kernel_dfq_c2(double q2) {
   const double q = sqrt(q2);

@@ -1182,18 +1182,24 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   return VSPH_OK;
 }
 
+/* The Adami sweeps' and XSPH's kernel shapes: the kernel's own f, or
+ * one of two 2-D kernels inlined (the same operations: the same bits). */
+enum { SHAPE_GENERAL = 0, SHAPE_QUINTIC2, SHAPE_CUBIC2 };
+
 /* Adami et al.'s walls, particle i of cell range @p rg: a fluid
  * particle's summation density (with the transport velocity), or a wall
- * particle's pressure and velocity from its fluid neighbours. QUINTIC:
- * the 2-D quintic spline inlined (the cavity's), else the kernel's f. */
+ * particle's pressure and velocity from its fluid neighbours. SHAPE: the
+ * 2-D quintic spline (the cavity's) or cubic B-spline (the channels')
+ * inlined, else the kernel's f. */
 VSPH_CONSTS_SPECIALISE void adami_one(const struct vsph_equations_props *ep,
                                       const struct vsph_walls *w,
                                       struct vsph_particles *p, size_t n_fluid,
                                       const struct vsph_pair_kernel *pk,
                                       const struct vsph_pair_ranges *rg,
                                       size_t i, double w0, double wf,
-                                      const int quintic) {
-  const int dim = quintic ? 2 : p->dim;
+                                      const int shape) {
+  const int quintic = shape == SHAPE_QUINTIC2, cubic = shape == SHAPE_CUBIC2;
+  const int dim = quintic || cubic ? 2 : p->dim;
   const struct vsph_kernel_type *k = ep->visc.kernel;
   const double h = ep->visc.h, sig = k->sigma[dim - 1];
   const int wall = p->id[i] >= n_fluid;
@@ -1207,7 +1213,10 @@ VSPH_CONSTS_SPECIALISE void adami_one(const struct vsph_equations_props *ep,
   const size_t *const id = p->id;
   double su0 = 0.0, su1 = 0.0, su2 = 0.0;
   while (vsph_pair_gather(&it, dim,
-                          quintic ? VSPH_KERNEL_DFQ_QUINTIC : pk->dfq_id, &b)) {
+                          quintic ? VSPH_KERNEL_DFQ_QUINTIC
+                          : cubic ? VSPH_KERNEL_DFQ_CUBIC
+                                  : pk->dfq_id,
+                          &b)) {
     if (!wall) { /* summation: every neighbour's mass */
 #pragma omp simd reduction(+ : S)
       for (size_t q = 0; q < b.m; q++) {
@@ -1216,6 +1225,7 @@ VSPH_CONSTS_SPECIALISE void adami_one(const struct vsph_equations_props *ep,
         const double s = sqrt(pr.s2) / h;
         S += m[pr.j] *
              (quintic ? sig * vsph_kernel_f_quintic(s)
+              : cubic ? sig * vsph_kernel_f_cubic(s)
                       : vsph_kernel_w(k, dim, s)) *
              wf;
       }
@@ -1229,6 +1239,7 @@ VSPH_CONSTS_SPECIALISE void adami_one(const struct vsph_equations_props *ep,
       const size_t j = pr.j;
       const double s = sqrt(pr.s2) / h;
       const double w1 = (quintic ? sig * vsph_kernel_f_quintic(s)
+                         : cubic ? sig * vsph_kernel_f_cubic(s)
                                  : vsph_kernel_w(k, dim, s)) *
                         wf;
       const double wk = id[j] < n_fluid ? w1 : 0.0;
@@ -1261,11 +1272,16 @@ VSPH_CONSTS_SPECIALISE void adami_one(const struct vsph_equations_props *ep,
 }
 
 /* Whether the Adami sweeps take their specialised quintic copy. */
-static int adami_quintic(const struct vsph_equations_props *ep,
-                         const struct vsph_pair_kernel *pk, int dim) {
-  return !ep->loop_general && dim == 2 &&
-         pk->dfq_id == VSPH_KERNEL_DFQ_QUINTIC &&
-         ep->visc.kernel->f[1] == vsph_quintic_type.f[1];
+static int adami_shape(const struct vsph_equations_props *ep,
+                       const struct vsph_pair_kernel *pk, int dim) {
+  if (ep->loop_general || dim != 2) return SHAPE_GENERAL;
+  if (pk->dfq_id == VSPH_KERNEL_DFQ_QUINTIC &&
+      ep->visc.kernel->f[1] == vsph_quintic_type.f[1])
+    return SHAPE_QUINTIC2;
+  if (pk->dfq_id == VSPH_KERNEL_DFQ_CUBIC &&
+      ep->visc.kernel->f[1] == vsph_cubic_type.f[1])
+    return SHAPE_CUBIC2;
+  return SHAPE_GENERAL;
 }
 
 void vsph_equations_density_sum(const struct vsph_equations_props *ep,
@@ -1277,7 +1293,7 @@ void vsph_equations_density_sum(const struct vsph_equations_props *ep,
   const double w0 = vsph_kernel_w(k, dim, 0.0) * wf;
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, k, dim, h);
-  const int quintic = adami_quintic(ep, &pk, dim);
+  const int shape = adami_shape(ep, &pk, dim);
   /* the fluid's sweep of the Adami walls (no wall is read there) */
 #pragma omp parallel for schedule(dynamic, 8)
   for (size_t c = 0; c < cells->ncells; c++) {
@@ -1286,10 +1302,12 @@ void vsph_equations_density_sum(const struct vsph_equations_props *ep,
     for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
          i++) {
       if (p->id[i] >= n_fluid) continue;
-      if (quintic)
-        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, 1);
+      if (shape == SHAPE_QUINTIC2)
+        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_QUINTIC2);
+      else if (shape == SHAPE_CUBIC2)
+        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_CUBIC2);
       else
-        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, 0);
+        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_GENERAL);
     }
   }
 }
@@ -1306,7 +1324,7 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
   const double wf = pow(h, -dim), w0 = vsph_kernel_w(k, dim, 0.0) * wf;
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, k, dim, h);
-  const int quintic = adami_quintic(ep, &pk, dim);
+  const int shape = adami_shape(ep, &pk, dim);
   /* two sweeps: the fluid (density, pressure, volume), then the walls,
    * which read the fluid's pressure */
   for (int sweep = 0; sweep < 2; sweep++) {
@@ -1323,10 +1341,12 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
           p->vol[i] = p->m[i] / p->rho[i];
           continue;
         }
-        if (quintic)
-          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, 1);
+        if (shape == SHAPE_QUINTIC2)
+          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_QUINTIC2);
+        else if (shape == SHAPE_CUBIC2)
+          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_CUBIC2);
         else
-          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, 0);
+          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_GENERAL);
       }
     }
   }
@@ -1356,6 +1376,41 @@ static void evolving_one(struct vsph_particles *p, size_t n_fluid,
   p->drho[i] = p->rho[i] * cont;
 }
 
+/* XSPH's velocity of particle i (range rg), for a kernel shape (as
+ * adami_one: the 2-D cubic B-spline inlined, else the kernel's f). */
+VSPH_CONSTS_SPECIALISE void xsph_one(const struct vsph_equations_props *ep,
+                                     const struct vsph_particles *p,
+                                     const struct vsph_pair_kernel *pk,
+                                     const struct vsph_pair_ranges *rg,
+                                     size_t i, double eps, double wf,
+                                     double *const w[3], const int shape) {
+  const int cubic = shape == SHAPE_CUBIC2, dim = cubic ? 2 : p->dim;
+  const struct vsph_kernel_type *k = ep->visc.kernel;
+  const double h = ep->visc.h, sig = k->sigma[dim - 1];
+  double sum[3] = {0, 0, 0};
+  struct vsph_pair_iter it;
+  struct vsph_pair_chunk b;
+  vsph_pair_begin(&it, pk, p, rg, i);
+  while (vsph_pair_gather(&it, dim, cubic ? VSPH_KERNEL_DFQ_CUBIC : pk->dfq_id,
+                          &b)) {
+    double Wq[VSPH_PAIR_CHUNK_MAX];
+#pragma omp simd
+    for (size_t q = 0; q < b.m; q++) {
+      const double s = sqrt(b.s2[q]) / h;
+      Wq[q] =
+          (cubic ? sig * vsph_kernel_f_cubic(s) : vsph_kernel_w(k, dim, s)) *
+          wf;
+    }
+    for (size_t q = 0; q < b.m; q++) { /* in pair order */
+      const size_t j = b.j[q];
+      const double Vj = p->m[j] / p->rho[j];
+      for (int a = 0; a < dim; a++)
+        sum[a] += Vj * (p->vel[a][j] - p->vel[a][i]) * Wq[q];
+    }
+  }
+  for (int a = 0; a < dim; a++) w[a][i] = p->vel[a][i] + eps * sum[a];
+}
+
 void vsph_equations_xsph(const struct vsph_equations_props *ep,
                          const struct vsph_particles *p, size_t n_fluid,
                          const struct vsph_cells *cells, double eps,
@@ -1365,6 +1420,7 @@ void vsph_equations_xsph(const struct vsph_equations_props *ep,
   const double h = ep->visc.h, wf = pow(h, -dim);
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, k, dim, h);
+  const int cubic = adami_shape(ep, &pk, dim) == SHAPE_CUBIC2;
 #pragma omp parallel for schedule(dynamic, 8)
   for (size_t c = 0; c < cells->ncells; c++) {
     struct vsph_pair_ranges rg;
@@ -1372,19 +1428,10 @@ void vsph_equations_xsph(const struct vsph_equations_props *ep,
     for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
          i++) {
       if (p->id[i] >= n_fluid) continue;
-      double sum[3] = {0, 0, 0};
-      struct vsph_pair_iter it;
-      struct vsph_pair_chunk b;
-      vsph_pair_begin(&it, &pk, p, &rg, i);
-      while (vsph_pair_gather(&it, dim, pk.dfq_id, &b))
-        for (size_t q = 0; q < b.m; q++) {
-          const size_t j = b.j[q];
-          const double Wij = vsph_kernel_w(k, dim, sqrt(b.s2[q]) / h) * wf;
-          const double Vj = p->m[j] / p->rho[j];
-          for (int a = 0; a < dim; a++)
-            sum[a] += Vj * (p->vel[a][j] - p->vel[a][i]) * Wij;
-        }
-      for (int a = 0; a < dim; a++) w[a][i] = p->vel[a][i] + eps * sum[a];
+      if (cubic)
+        xsph_one(ep, p, &pk, &rg, i, eps, wf, w, SHAPE_CUBIC2);
+      else
+        xsph_one(ep, p, &pk, &rg, i, eps, wf, w, SHAPE_GENERAL);
     }
   }
 }
