@@ -157,6 +157,9 @@ static double bin_of(const struct vsph_walls_ghosts *gh, int q, double x) {
   if (L > 0.0) {
     u -= L * floor(u / L);
     if (u >= L) u -= L;
+    /* a rounding below 0 (u/L rounded up to a whole number): position 0,
+     * which is next to the last bin on the circle */
+    if (u < 0.0) u = 0.0;
   }
   return floor(u / gh->bwidth[q]);
 }
@@ -177,13 +180,17 @@ static void bin_plane(const struct vsph_walls *w, struct vsph_walls_ghosts *gh,
   const double wmin = w->window * (1.0 + 1e-9);
   double lo = INFINITY, hi = -INFINITY;
   for (size_t e = 0; e < ne; e++) {
+    /* any non-finite tangential coordinate: the whole row, as before, so
+     * that a NaN reaches every fit it reached */
+    for (int k = 0; k < dim; k++)
+      if (k != w->axis[q] && !isfinite(b0[e * BAND_STRIDE + k])) return;
     const double x = b0[e * BAND_STRIDE + t];
-    if (!isfinite(x)) return;
     lo = fmin(lo, x);
     hi = fmax(hi, x);
   }
   const double L = vsph_walls_period(w, t);
   const double span = L > 0.0 ? L : hi - lo;
+  if (!isfinite(span)) return;
   const double nb_d = floor(span / wmin);
   size_t nb = nb_d < (double)ne ? (size_t)nb_d : ne;
   if (nb < 3) return; /* three bins would be the whole row */
@@ -227,8 +234,12 @@ static int extrapolate(const struct vsph_walls *w,
   /* the entries to visit, ascending: three bins' (merged), or all */
   const size_t *lst[3] = {NULL, NULL, NULL};
   size_t len[3] = {0, 0, 0}, nl = 0, ne = gh->nband[q];
-  const double xb = gh->nbin[q] ? p->pos[gh->baxis[q]][i] : (double)NAN;
-  if (isfinite(xb)) {
+  /* the bins only for a ghost at a finite place (else the whole row) */
+  int finite = gh->nbin[q] != 0;
+  for (int k = 0; k < dim && finite; k++)
+    if (k != a) finite = isfinite(p->pos[k][i]);
+  if (finite) {
+    const double xb = p->pos[gh->baxis[q]][i];
     const size_t nb = gh->nbin[q];
     const size_t *const first = gh->bfirst + gh->boff[q];
     const size_t *const ent = gh->bent + gh->bstart[q];

@@ -639,7 +639,7 @@ static double fit_brute(const struct vsph_particles *p, size_t nf, double x,
     num += wt * de * p->vel[0][e];
     den += wt * de * de;
   }
-  return den > 0.0 ? 0.0 - num / den * d : NAN;
+  return den > 0.0 ? 0.0 - num / den * d : (double)NAN;
 }
 
 /* The binned fit (walls.c: each plane's nearest row in bins at least the
@@ -649,8 +649,7 @@ static double fit_brute(const struct vsph_particles *p, size_t nf, double x,
  * tangential velocity equals the brute-force fit's bit for bit; a missed
  * or extra entry (weights down to about 1e-3 near the window's edge)
  * would move it by far more than rounding. _i = 0: a periodic wall
- * (ghosts across the seam too); 1: an open row (no period), ghosts
- * beyond its ends. */
+ * (ghosts across the seam too); 1: an open row (no period). */
 START_TEST(test_linear_extrapolation_binned) {
   const int periodic = _i == 0;
   const double L = 4.0, band = 0.3, window = 0.3;
@@ -708,6 +707,59 @@ START_TEST(test_linear_extrapolation_binned) {
 }
 END_TEST
 
+/* The bins at a period that does not start at 0, with an entry drifted
+ * just past its upper end (between the cell list's rebuilds the fluid is
+ * not wrapped): x = 3.0000000000000004 over [1.99201897695660590,
+ * 2.99201897695660610) reduces to a position a rounding below 0 (an
+ * independent referee's case, 2026-11-26), which must fall in the first
+ * bin, not bin -1 (an out-of-range cast and a write before the bins).
+ * Every ghost's fit equals the brute-force fit bit for bit, as in
+ * test_linear_extrapolation_binned; the velocity varies along the wall
+ * so that a misplaced entry shows. */
+START_TEST(test_linear_extrapolation_seam) {
+  const double lo = 1.9920189769566059, hi = 2.9920189769566061;
+  const double band = 0.3, window = 0.1;
+  struct vsph_walls w = {.n = 1,
+                         .axis = {1},
+                         .pos = {0.0},
+                         .side = {+1},
+                         .noslip = 1,
+                         .velocity = VSPH_WALLS_VEL_LINEAR,
+                         .band = band,
+                         .window = window,
+                         .rho0 = 1,
+                         .c0 = 1};
+  ck_assert_int_eq(vsph_walls_add_periodic(&w, 0, lo, hi), 0);
+  struct vsph_particles *p = vsph_particles_alloc(200, 2);
+  for (int i = 0; i < 20; i++) {
+    const size_t k = p->n++;
+    p->id[k] = k;
+    p->pos[0][k] = i == 0 ? 3.0000000000000004 : lo + 0.05 * i;
+    p->pos[1][k] = 0.1;
+    p->vel[0][k] = 1.0 + sin(7.0 * p->pos[0][k]);
+    p->vel[1][k] = 0.0;
+    p->rho[k] = p->m[k] = 1.0;
+  }
+  const size_t nf = p->n;
+  struct vsph_walls_ghosts *gh = vsph_walls_ghosts_alloc(&w, 150);
+  ck_assert_int_eq(vsph_walls_generate(&w, p, nf, 0.2, gh), 0);
+  ck_assert_uint_ge(gh->nbin[0], 3); /* binned: the case under test */
+  size_t checked = 0;
+  for (size_t i = nf; i < p->n; i++) {
+    const double y = p->pos[1][i];
+    if (!(y < 0.0)) continue;
+    const double u = fit_brute(p, nf, p->pos[0][i], -y, hi - lo, band, window);
+    ck_assert_msg(p->vel[0][i] == u,
+                  "ghost %zu at x = %.17g: %.17g, brute %.17g", i, p->pos[0][i],
+                  p->vel[0][i], u);
+    checked++;
+  }
+  ck_assert_uint_ge(checked, 20);
+  vsph_walls_ghosts_free(gh);
+  vsph_particles_free(p);
+}
+END_TEST
+
 Suite *vsph_channel_suite(void) {
   Suite *s = suite_create("channel");
   TCase *tc = tcase_create("internal");
@@ -718,6 +770,7 @@ Suite *vsph_channel_suite(void) {
   tcase_add_test(tc, test_channel_energy);
   tcase_add_test(tc, test_linear_extrapolation);
   tcase_add_loop_test(tc, test_linear_extrapolation_binned, 0, 2);
+  tcase_add_test(tc, test_linear_extrapolation_seam);
   tcase_add_test(tc, test_periodic_rest_threads);
   tcase_add_loop_test(tc, test_leapfrog_order, 0, 2);
   tcase_add_test(tc, test_fixed_walls);
