@@ -571,6 +571,18 @@ START_TEST(test_periodic_rest_threads) {
 }
 END_TEST
 
+/* Append a fluid particle of unit mass and density at (@p x, @p y) with
+ * velocity (@p u, 0) to 2-D set @p p, its id its index. */
+static void put_fluid(struct vsph_particles *p, double x, double y, double u) {
+  const size_t k = p->n++;
+  p->id[k] = k;
+  p->pos[0][k] = x;
+  p->pos[1][k] = y;
+  p->vel[0][k] = u;
+  p->vel[1][k] = 0.0;
+  p->rho[k] = p->m[k] = 1.0;
+}
+
 /* A no-slip wall y = 0 (fluid above) with linear extrapolation: the
  * nearest row's depth @p band and the fit's half-width @p window (m). */
 static struct vsph_walls linear_wall(double band, double window) {
@@ -596,15 +608,8 @@ START_TEST(test_linear_extrapolation) {
   struct vsph_particles *p = vsph_particles_alloc(400, 2);
   const double gamma = 2.5;
   for (int j = 0; j < 8; j++)
-    for (int i = 0; i < 10; i++) {
-      const size_t k = p->n++;
-      p->id[k] = k;
-      p->pos[0][k] = (i + 0.5) / 10;
-      p->pos[1][k] = (j + 0.5) / 10;
-      p->vel[0][k] = gamma * p->pos[1][k];
-      p->vel[1][k] = 0.0;
-      p->rho[k] = p->m[k] = 1.0;
-    }
+    for (int i = 0; i < 10; i++)
+      put_fluid(p, (i + 0.5) / 10, (j + 0.5) / 10, gamma * ((j + 0.5) / 10));
   const size_t nf = p->n;
   struct vsph_walls_ghosts *gh = vsph_walls_ghosts_alloc(&w, 300);
   ck_assert_int_eq(vsph_walls_generate(&w, p, nf, 0.25, gh), 0);
@@ -688,18 +693,13 @@ START_TEST(test_linear_extrapolation_binned) {
   unsigned long long r = 12345;
   for (int j = 0; j < 5; j++)
     for (int i = 0; i < 40; i++) {
-      const size_t k = p->n++;
       double jit[2];
       for (int a = 0; a < 2; a++) { /* a fixed LCG: +-0.03 */
         r = r * 6364136223846793005ull + 1442695040888963407ull;
         jit[a] = 0.06 * ((double)(r >> 11) / 9007199254740992.0 - 0.5);
       }
-      p->id[k] = k;
-      p->pos[0][k] = (i + 0.5) / 10 + jit[0];
-      p->pos[1][k] = (j + 0.5) / 10 + jit[1];
-      p->vel[0][k] = 2.5 * p->pos[1][k] + sin(3.0 * p->pos[0][k]);
-      p->vel[1][k] = 0.0;
-      p->rho[k] = p->m[k] = 1.0;
+      const double x = (i + 0.5) / 10 + jit[0], y = (j + 0.5) / 10 + jit[1];
+      put_fluid(p, x, y, 2.5 * y + sin(3.0 * x));
     }
   const size_t nf = p->n;
   struct vsph_walls_ghosts *gh = vsph_walls_ghosts_alloc(&w, 1500);
@@ -732,13 +732,8 @@ START_TEST(test_linear_extrapolation_seam) {
   ck_assert_int_eq(vsph_walls_add_periodic(&w, 0, lo, hi), 0);
   struct vsph_particles *p = vsph_particles_alloc(200, 2);
   for (int i = 0; i < 20; i++) {
-    const size_t k = p->n++;
-    p->id[k] = k;
-    p->pos[0][k] = i == 0 ? 3.0000000000000004 : lo + 0.05 * i;
-    p->pos[1][k] = 0.1;
-    p->vel[0][k] = 1.0 + sin(7.0 * p->pos[0][k]);
-    p->vel[1][k] = 0.0;
-    p->rho[k] = p->m[k] = 1.0;
+    const double x = i == 0 ? 3.0000000000000004 : lo + 0.05 * i;
+    put_fluid(p, x, 0.1, 1.0 + sin(7.0 * x));
   }
   const size_t nf = p->n;
   struct vsph_walls_ghosts *gh = vsph_walls_ghosts_alloc(&w, 150);
