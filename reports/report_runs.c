@@ -362,9 +362,20 @@ static const struct {
                     {60, 0.4e-6, CONTACT_BI, "contact-bimaterial"}};
 #define NCONTACT_BASE (sizeof CONTACT_BASE / sizeof CONTACT_BASE[0])
 
+/* The cylinders row: the report's Stokes flow past a periodic array of
+ * held cylinders (glycerol, d/S = 0.5, uncorrected, its settings) at 20
+ * particles across the cell to 10 us, some 400 steps. It starts at rest
+ * (E_k(0) = 0), so its figures are E_k(t_end)/E_k(t_end/2), how the
+ * driven flow grows, and P_visc(t_end) t_end / E_k(t_end), the viscous
+ * work against it: both O(1), both set by the set-up and the contact
+ * pair function. */
+static const char *const CYL_BASE[] = {
+    "Solver:kernel=wendland2", "Solver:alpha=0.5", "Solver:outputs=50", NULL};
+#define NCYL_BASE 1
+
 size_t vsph_report_runs_baseline_count(void) {
   return VSPH_REPORT_NSCENES * VSPH_VISCOUS_PAPER_COUNT +
-         2 * VSPH_VISCOUS_FORM_COUNT + NCAVITY_BASE + NCONTACT_BASE;
+         2 * VSPH_VISCOUS_FORM_COUNT + NCAVITY_BASE + NCONTACT_BASE + NCYL_BASE;
 }
 
 /* A baseline row from the run of @p rs: its final E_k (relative to the
@@ -393,11 +404,16 @@ static const char *const BASE_BASA[] = {VSPH_REPORT_BASA, NULL};
 static const char *const BASE_TVF[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1", NULL};
 
 /* The run behind baseline row @p i, and its kind: 0 free surface, 1
- * channel, 2 cavity, 3 contact. */
+ * channel, 2 cavity, 3 contact, 4 cylinders. */
 static int baseline_spec(const struct vsph_report_runs *R, size_t i,
                          struct vsph_jobs_spec *rs) {
   const size_t nfree = VSPH_REPORT_NSCENES * VSPH_VISCOUS_PAPER_COUNT;
   const size_t nchan = 2 * VSPH_VISCOUS_FORM_COUNT;
+  if (i >= nfree + nchan + NCAVITY_BASE + NCONTACT_BASE) {
+    *rs = (struct vsph_jobs_spec){"cylinders", "contact", 20,
+                                  1e-5,        CYL_BASE,  "base"};
+    return 4;
+  }
   if (i >= nfree + nchan + NCAVITY_BASE) {
     const size_t j = i - nfree - nchan - NCAVITY_BASE;
     *rs = (struct vsph_jobs_spec){"shear",
@@ -462,6 +478,9 @@ int vsph_report_runs_baseline(struct vsph_report_runs *R, size_t i,
   if (kind == 3) { /* contact: E_k and the dissipation, relative */
     b->ek_final = r.Ek[last] / r.Ek[0];
     b->diss0 = r.Pv[last] / r.Pv[0];
+  } else if (kind == 4) { /* cylinders: from rest (see CYL_BASE) */
+    b->ek_final = r.Ek[last] / r.Ek[last / 2];
+    b->diss0 = r.Pv[last] * rs.t_end / r.Ek[last];
   } else {
     const int square = !strcmp(rs.scene, "stretching-square");
     b->ek_final =

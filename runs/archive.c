@@ -571,8 +571,13 @@ static void entry_verdict(const struct vsph_archive_judge *jd, const char *tsv,
       then = baseline_then(jd->history, commit);
     }
   }
-  const char *scene =
-      cJSON_IsString(sc) && id_name(sc->valuestring) ? sc->valuestring : "?";
+  /* a shear test (vsph contact) is the shear scene under contact SPH
+   * (analysis/contact), the numerics the baseline's shear rows pin; its
+   * folder has no run.json to name it */
+  const char *scene = en->kind == &vsph_folder_shear_test ? "shear"
+                      : cJSON_IsString(sc) && id_name(sc->valuestring)
+                          ? sc->valuestring
+                          : "?";
   judge_entry(jd, name, en->settings, scene, en->hash, commit, then, now, why,
               wlen);
   free(then);

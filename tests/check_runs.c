@@ -540,14 +540,20 @@ static void put_text(const char *dir, const char *name, const char *text) {
   ck_assert_int_eq(fclose(f), 0);
 }
 
-/* An archive entry at @p dir sealed under @p key by hand, holding
- * run.json @p run (none when NULL): an entry of other sources. */
-static void seal_entry(const char *dir, const char *key, const char *run) {
+/* An archive entry of @p kind at @p dir sealed under @p key by hand,
+ * holding run.json @p run (none when NULL): an entry of other sources. */
+static void seal_kind(const char *dir, const struct vsph_folder_kind *kind,
+                      const char *key, const char *run) {
   struct vsph_folder f;
-  ck_assert_int_eq(vsph_folder_claim(&f, dir, &vsph_folder_scene_run), 0);
+  ck_assert_int_eq(vsph_folder_claim(&f, dir, kind), 0);
   if (run) ck_assert_int_eq(vsph_files_write(dir, "run.json", run), 0);
   ck_assert_int_eq(vsph_folder_seal(&f, key, NULL), 0);
   vsph_folder_release(&f);
+}
+
+/* A scene run's entry, as seal_kind. */
+static void seal_entry(const char *dir, const char *key, const char *run) {
+  seal_kind(dir, &vsph_folder_scene_run, key, run);
 }
 
 /* summary.md's row of entry @p name holds @p verdict (its last cell). */
@@ -586,7 +592,8 @@ static void assert_standing(const char *ar, const struct vsph_archive_judge *jd,
  * sources (a sealed folder under another source hash) is unjudged
  * without the history, stands when its commit's baseline rows of its
  * scene equal today's, and does not when they differ (another scene's
- * rows changing is not its concern). */
+ * rows changing is not its concern). A shear test's entry (no run.json)
+ * is judged by the shear scene's rows, its numerics. */
 START_TEST(test_archive_summary) {
   char dir[] = "/tmp/vsph_archsumXXXXXX", rep[300], a[300], ar[300], z[400],
        hist[300], base[300], key[4096];
@@ -628,6 +635,10 @@ START_TEST(test_archive_summary) {
   char zt[400];
   snprintf(zt, sizeof zt, "%s/runs/t\tx", ar);
   seal_entry(zt, zkey, NULL);
+  /* s: a shear test's entry, no run.json */
+  char s[400];
+  snprintf(s, sizeof s, "%s/runs/s", ar);
+  seal_kind(s, &vsph_folder_shear_test, zkey, NULL);
   ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
   char index[4096];
   snprintf(path, sizeof path, "%s/index.tsv", ar);
@@ -638,15 +649,16 @@ START_TEST(test_archive_summary) {
   snprintf(base, sizeof base, "%s/baseline.csv", dir);
   static const char *const now =
       "scene,visc,res\npoiseuille,mgf,16\npoiseuille,pvwf,16\ncouette,mgf,"
-      "16\n";
+      "16\nshear,contact,20\n";
   put_text(dir, "baseline.csv", now);
   /* (and "gone", which the plan names and the archive lacks) */
-  const char *names[] = {"a", "z", "z2", "gone"},
-             *keys[] = {key, key, key, key};
+  const char *names[] = {"a", "z", "z2", "gone", "s"},
+             *keys[] = {key, key, key, key, key};
   struct vsph_archive_judge jd = {
-      .baseline = base, .nplan = 4, .plan_name = names, .plan_key = keys};
+      .baseline = base, .nplan = 5, .plan_name = names, .plan_key = keys};
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
-  assert_standing(ar, &jd, (const int[]){1, -1, -1, -2});
+  assert_standing(ar, &jd, (const int[]){1, -1, -1, -2, -1});
+  assert_stands(ar, "s", "unjudged: shear's rows");
   assert_stands(ar, "a", "| yes |");
   assert_stands(ar, "z", "unjudged");
   assert_stands(ar, "z", "(a\\|b c) |");
@@ -660,19 +672,23 @@ START_TEST(test_archive_summary) {
            "0123456789abcdef\tbad\textra\n0123456789abcdef\tc0ffee\n");
   put_text(hist, "c0ffee.csv",
            "scene,visc,res\npoiseuille,mgf,16\npoiseuille,pvwf,16\ncouette,"
-           "mgf,8\n");
+           "mgf,8\nshear,contact,20\n");
   jd.history = hist;
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
-  assert_standing(ar, &jd, (const int[]){1, 1, 1, -2});
+  assert_standing(ar, &jd, (const int[]){1, 1, 1, -2, 1});
+  assert_stands(ar, "s", "| yes |");
   assert_stands(ar, "z", "| yes |");
   assert_stands(ar, "z", ", c0ffee |");
   assert_stands(ar, "z2", "| yes |");
   assert_stands(ar, "z2", ", c0ffee |");
-  /* poiseuille's rows changed since c0ffee: z no longer stands */
+  /* poiseuille's and shear's rows changed since c0ffee: z and s no
+   * longer stand */
   put_text(hist, "c0ffee.csv",
-           "scene,visc,res\npoiseuille,mgf,8\npoiseuille,pvwf,16\n");
+           "scene,visc,res\npoiseuille,mgf,8\npoiseuille,pvwf,16\nshear,"
+           "contact,40\n");
   ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
-  assert_standing(ar, &jd, (const int[]){1, 0, 0, -2});
+  assert_standing(ar, &jd, (const int[]){1, 0, 0, -2, 0});
+  assert_stands(ar, "s", "no: shear's rows");
   assert_stands(ar, "z", "no: poiseuille's rows");
   assert_stands(ar, "a", "| yes |");
   /* the plan: a under other settings, z not at all */
