@@ -51,7 +51,7 @@ CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
-.PHONY: all deps check test report baseline bench archive full-sitting asan valgrind-check prefix-check \
+.PHONY: all deps check test report baseline bench archive full-sitting full-report asan valgrind-check prefix-check \
         lib install uninstall \
         format format-check mutate fuzz slurm-check fresh-check \
         fresh-check-tests paraview-check clean
@@ -129,6 +129,13 @@ export BUDGET
 full-sitting: deps $(BUILD)/vsph
 	@$(HISTORY); VSPH_ARCHIVE_HISTORY=$$h $(BUILD)/vsph report --full \
 	  --out reports/out-full --budget "$$BUDGET" --skip-archived reports/full
+
+# The FULL report assembled into reports/out-full from its own runs and
+# the ones that stand in reports/full (README: --from-archive); then
+# reports/full/summary.md holds its claims and convergence tables.
+full-report: deps $(BUILD)/vsph
+	@$(HISTORY); VSPH_ARCHIVE_HISTORY=$$h $(BUILD)/vsph report --full \
+	  --assemble --out reports/out-full --from-archive reports/full
 
 # ------------------------------------------------------------ the library
 # libvsph, static and shared: every layer but the command line, from the

@@ -41,7 +41,7 @@ static int on_path(const char *name) {
   return 0;
 }
 
-/* The archive's summary.md, judged against the current FULL plan (as
+/* The archive's entries.md, judged against the current FULL plan (as
  * planned for the report folder @p dir), the tree's reports/baseline.csv
  * (read from the current folder, where make archive runs) and the history
  * scripts/source-commits left in $VSPH_ARCHIVE_HISTORY. */
@@ -54,7 +54,7 @@ static int summarise(const char *dir, const char *archive, const char *commit) {
   struct stat sb;
   if (stat("reports/baseline.csv", &sb) != 0)
     fprintf(stderr,
-            "vsph report: no reports/baseline.csv here: summary.md leaves the "
+            "vsph report: no reports/baseline.csv here: entries.md leaves the "
             "archive's entries unjudged (run it in the source tree's top "
             "folder, as make archive does)\n");
   const struct vsph_archive_judge base = {
@@ -143,7 +143,7 @@ static int judge_inputs(void) {
 int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
   const char *partition = NULL, *limit = NULL, *budget = NULL, *archive = NULL;
-  const char *skip = NULL, *beside = NULL;
+  const char *skip = NULL, *beside = NULL, *from = NULL;
   int full = 0, plan = 0, slurm = 0, assemble = 0;
   size_t jobs = 0, threads = 0;
   const struct vsph_args_spec own[] = {
@@ -190,14 +190,21 @@ int vsph_cmd_report_main(int argc, char **argv) {
       {"--skip-archived", VSPH_ARGS_STRING, &skip, "ADIR",
        "with --budget: leave out the runs that stand in the run archive "
        "ADIR (reports/full for the FULL report; judged as --archive's "
-       "summary.md judges them, from $VSPH_ARCHIVE_HISTORY and "
+       "entries.md judges them, from $VSPH_ARCHIVE_HISTORY and "
        "reports/baseline.csv), so a sitting goes on from the archive "
        "whatever build made it (make full-sitting)"},
+      {"--from-archive", VSPH_ARGS_STRING, &from, "ADIR",
+       "with --full --assemble: each run DIR lacks that stands in the run "
+       "archive ADIR (judged as for --skip-archived) is read from its entry "
+       "there; then ADIR/summary.md gets the report's claims and "
+       "convergence tables (make full-report). A part that draws "
+       "snapshots leaves out the pictures of a run read from the archive, "
+       "which keeps none, and says so"},
       {"--beside", VSPH_ARGS_STRING, &beside, "ADIR",
        "the summary shows, beside the quick ladder's finest run of each "
        "scene and formulation, the run at the paper's resolution from the "
        "run archive ADIR (reports/full; make report gives it), with "
-       "whether it stands (judged as --archive's summary.md judges it)"},
+       "whether it stands (judged as --archive's entries.md judges it)"},
       {"--archive", VSPH_ARGS_STRING, &archive, "ADIR",
        "run nothing: store the sealed runs of DIR/runs in the run archive "
        "ADIR (reports/full for the FULL report): of each, what the parts "
@@ -232,6 +239,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
                                   "[--partition P] [--time T] | --assemble] "
                                   "[--threads T] [--budget TIME "
                                   "[--skip-archived ADIR]] [--beside ADIR] "
+                                  "[--from-archive ADIR] "
                                   "| --archive ADIR",
                                   about,
                                   own,
@@ -304,6 +312,16 @@ int vsph_cmd_report_main(int argc, char **argv) {
     if (!bad) bad = judge_inputs();
     if (bad) return bad;
   }
+  if (from) {
+    if (!assemble || !full)
+      return vsph_args_fail(CMD,
+                            "--from-archive reads the FULL report's runs "
+                            "from a run archive: only with --full "
+                            "--assemble");
+    int bad = archive_input("--from-archive", from, dir);
+    if (!bad) bad = judge_inputs();
+    if (bad) return bad;
+  }
   if (beside) {
     if (full || plan || budget || slurm)
       return vsph_args_fail(CMD,
@@ -315,8 +333,8 @@ int vsph_cmd_report_main(int argc, char **argv) {
     if (bad) return bad;
   }
   if (archive) {
-    if (beside || skip || plan || slurm || assemble || pool || budget || only ||
-        full)
+    if (beside || skip || from || plan || slurm || assemble || pool || budget ||
+        only || full)
       return vsph_args_fail(CMD,
                             "--archive runs nothing: it takes --out alone");
     if (!*archive || strlen(archive) > 400)
@@ -422,6 +440,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
                       : NULL,
       .commit = NULL};
   rp.skip_archive = skip;
+  rp.from_archive = from;
   rp.beside = beside;
   rp.judge = &judge;
   /* SIGINT/SIGTERM: the runs in progress stop at a checkpoint, uncached */

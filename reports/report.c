@@ -303,6 +303,12 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
   if (!st)
     fprintf(md, "| the parts' runs (%zu of %zu made, by %s) | %.1f |\n",
             R->runs.made, R->runs.jobs.n, R->runs.made_by, R->runs.runs_wall);
+  if (!st && R->runs.from_archive)
+    fprintf(md,
+            "| of them read from the run archive `%s` (each still standing "
+            "for this code by the archive's rule; its wall time is in its "
+            "entry) | %zu runs |\n",
+            R->runs.archive, R->runs.from_archive);
   vsph_text_set(tv, "compiler", "%s", __VERSION__);
   vsph_sysinfo_load(R->load[1]);
   vsph_text_set(tv, "load_start", "%.2f %.2f %.2f", R->load[0][0],
@@ -348,6 +354,11 @@ static int write_run_json(const struct vsph_report *R, unsigned long want,
   cJSON_AddNumberToObject(o, "runs_planned", (double)R->runs.jobs.n);
   cJSON_AddNumberToObject(o, "runs_made", (double)R->runs.made);
   cJSON_AddStringToObject(o, "runs_by", R->runs.made_by);
+  if (R->runs.from_archive) {
+    cJSON_AddStringToObject(o, "runs_archive", R->runs.archive);
+    cJSON_AddNumberToObject(o, "runs_from_archive",
+                            (double)R->runs.from_archive);
+  }
   cJSON_AddNumberToObject(o, "runs_wall_s", R->runs.runs_wall);
   vsph_json_number(o, "cpu_total_s", vsph_sysinfo_cpu_s());
   vsph_json_load(o, R->load[0], R->load[1]);
@@ -395,7 +406,8 @@ static int run_missing(struct vsph_report *R,
 static int all_cached(const struct vsph_report *R) {
   size_t m = 0, first = 0;
   for (size_t k = 0; k < R->runs.jobs.n; k++) /* as the plan found them */
-    if (!R->runs.jobs.job[k].cached && !m++) first = k;
+    if (!R->runs.jobs.job[k].cached && !R->runs.jobs.job[k].from[0] && !m++)
+      first = k;
   if (!m) return VSPH_OK;
   /* a seal broken by a file: name it */
   const struct vsph_jobs_job *j = &R->runs.jobs.job[first];
@@ -461,8 +473,26 @@ void vsph_report_plan_judge_free(struct vsph_archive_judge *jd) {
   jd->nplan = 0;
 }
 
+/* The planned runs that stand in rp->from_archive and are not cached:
+ * read from their entries there. */
+static int read_archived(struct vsph_report *R, const char *adir,
+                         const int *stands) {
+  for (size_t k = 0; k < R->runs.jobs.n; k++) {
+    struct vsph_jobs_job *j = &R->runs.jobs.job[k];
+    if (j->cached || stands[k] != VSPH_ARCHIVE_STANDS) continue;
+    const char *slash = strrchr(j->dir, '/');
+    if (!vsph_archive_entry(adir, slash ? slash + 1 : j->dir, j->from,
+                            sizeof j->from, &j->from_key))
+      VSPH_FAIL(VSPH_EIO, "cannot read the entry of %s in %s", j->dir, adir);
+    R->runs.from_archive++;
+  }
+  R->runs.archive = adir;
+  return VSPH_OK;
+}
+
 /* Mark the planned runs that stand in rp->skip_archive: they are not run
- * (a FULL sitting goes on from the archive, whatever build made it). */
+ * (a FULL sitting goes on from the archive, whatever build made it); or,
+ * assembling from rp->from_archive, read them from there. */
 static int mark_archived(struct vsph_report *R,
                          const struct vsph_report_props *rp) {
   struct vsph_archive_judge jd;
@@ -473,10 +503,12 @@ static int mark_archived(struct vsph_report *R,
     vsph_report_plan_judge_free(&jd);
     VSPH_FAIL(VSPH_ENOMEM, "cannot list the plan");
   }
-  st = vsph_archive_standing(rp->skip_archive, &jd, stands);
+  const char *adir = rp->from_archive ? rp->from_archive : rp->skip_archive;
+  st = vsph_archive_standing(adir, &jd, stands);
   for (size_t k = 0; !st && k < R->runs.jobs.n; k++)
     R->runs.jobs.job[k].archived =
         stands[k] == VSPH_ARCHIVE_STANDS && !R->runs.jobs.job[k].cached;
+  if (!st && rp->from_archive) st = read_archived(R, adir, stands);
   free(stands);
   vsph_report_plan_judge_free(&jd);
   return st;
@@ -546,6 +578,66 @@ static int seal(struct vsph_report *R, unsigned long want) {
   return vsph_folder_seal(&R->folder, seal, NULL);
 }
 
+/* Part @p name's text (before its appendix) into @p m without its
+ * figures (the image lines and their captions: the pictures stay in the
+ * report); 0 when the part is not there. */
+static int copy_tables(FILE *m, const char *parts_dir, const char *name) {
+  char path[700];
+  snprintf(path, sizeof path, "%s/%s.md", parts_dir, name);
+  char *text = vsph_files_slurp(path, NULL);
+  if (!text) return 0;
+  char *mark = strstr(text, "<!-- appendix -->");
+  if (mark) *mark = '\0';
+  for (char *line = text; *line;) {
+    char *end = strchr(line, '\n');
+    const size_t n = end ? (size_t)(end - line) + 1 : strlen(line);
+    if (strncmp(line, "![", 2) && strncmp(line, "*Figure", 7))
+      fwrite(line, 1, n, m);
+    line += n;
+  }
+  fputs("\n", m);
+  free(text);
+  return 1;
+}
+
+/* The archive's summary.md (an assembly from it): the FULL report's
+ * claims and convergence tables, and what made them. */
+static int archive_summary(const struct vsph_report *R, const char *parts_dir,
+                           const char *stamp) {
+  char *text = NULL;
+  size_t len = 0;
+  FILE *m = open_memstream(&text, &len);
+  if (!m) VSPH_FAIL(VSPH_ENOMEM, "cannot build the archive's summary");
+  fprintf(m,
+          "# The FULL report at the papers' resolutions: its claims and "
+          "convergence tables\n\n"
+          "Assembled %s by `vsph report --full --assemble --from-archive "
+          "%s` (vsph %s, source hash %s, commit %s): %zu runs, %zu of them "
+          "read from this archive's entries (each still standing for this "
+          "code by the rule of `entries.md`, which names the build that made "
+          "it), the other %zu cached in `%s` by this build. The whole report, "
+          "with every part and figure, is `%s/report.html`; it is not kept "
+          "here. A verdict below is at the papers' resolutions and end times "
+          "where the FULL plan has them (the report's section on each "
+          "scene says which).\n\n",
+          stamp, R->runs.archive, VSPH_VERSION, vsph_source_hash_id,
+          vsph_commit_id[0] ? vsph_commit_id : "unknown", R->runs.jobs.n,
+          R->runs.from_archive, R->runs.jobs.n - R->runs.from_archive, R->dir,
+          R->dir);
+  const int claims = copy_tables(m, parts_dir, "claims");
+  const int conv = copy_tables(m, parts_dir, "convergence");
+  if (fclose(m) != 0) {
+    free(text);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot build the archive's summary");
+  }
+  int st = VSPH_OK;
+  if (claims || conv) st = vsph_archive_write_summary(R->runs.archive, text);
+  free(text);
+  if (!st && (claims || conv))
+    fprintf(stderr, "vsph report: wrote %s/summary.md\n", R->runs.archive);
+  return st;
+}
+
 /* The parts, then report.md and report.html, run.json and the seal. */
 static int write_parts(struct vsph_report *R, unsigned long want,
                        const char *parts_dir, double t_all) {
@@ -578,6 +670,7 @@ static int write_parts(struct vsph_report *R, unsigned long want,
     fprintf(stderr,
             "vsph report: wrote %s/report.md and report.html (%.0f s)\n",
             R->dir, omp_get_wtime() - t_all);
+  if (!st && R->runs.archive) st = archive_summary(R, parts_dir, stamp);
   return st;
 }
 
@@ -609,7 +702,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   R->runs.jobs.planned = 1;
   R->runs.jobs.budget_s = rp->budget_s;
   if (!st) st = plan(R, want);
-  if (!st && rp->skip_archive) st = mark_archived(R, rp);
+  if (!st && (rp->skip_archive || rp->from_archive)) st = mark_archived(R, rp);
   if (!st && rp->mode == VSPH_REPORT_PLAN) { /* writes nothing */
     st = vsph_jobs_plan_print(&R->runs.jobs, rp->exe ? rp->exe : "vsph",
                               rp->plan_out);

@@ -49,6 +49,11 @@ struct vsph_report_props {
    *  (vsph_archive_standing, judged by *judge's history, baseline and
    *  commit; its plan is the report's) are not run */
   const char *skip_archive;
+  /** ASSEMBLE: if not NULL, each run the plan needs that is not cached
+   *  in DIR and stands in this run archive (judged as skip_archive) is
+   *  read from its entry there, and the archive's summary.md gets the
+   *  report's claims and convergence tables */
+  const char *from_archive;
   const struct vsph_archive_judge *judge;
   /** if not NULL: the run archive (reports/full) whose runs at the
    *  paper's resolutions the summary shows beside the quick figures, each

@@ -615,10 +615,10 @@ static double failure(const struct vsph_jobs_run *r, char *why) {
 }
 
 /* A run's energy.csv as gnuplot sees it from the report folder (the runs
- * live in its runs/). */
-static void data_file(char *buf, size_t len, const struct vsph_jobs_run *r) {
-  const char *base = strrchr(r->dir, '/');
-  snprintf(buf, len, "runs/%s/energy.csv", base ? base + 1 : r->dir);
+ * live in its runs/, or in a run archive's entries). */
+static void data_file(const struct vsph_report *R, char *buf, size_t len,
+                      const struct vsph_jobs_run *r) {
+  vsph_jobs_data_path(&R->runs.jobs, r->dir, "energy.csv", buf, len);
 }
 
 /* gnuplot's "using" for t (times @p tscale) against the column @p name
@@ -650,7 +650,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
   int st = VSPH_OK;
   for (int f = 0; f < NPOIS && !st; f++) {
     char file[600], style[96], cols[64];
-    data_file(file, sizeof file, &c->pois[f]);
+    data_file(R, file, sizeof file, &c->pois[f]);
     /* a point every 12th output: the shapes tell the series apart */
     vsph_report_runs_style(style, sizeof style, f,
                            f >= 12  ? " dt 3 pi 12"
@@ -671,7 +671,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
   pl.logy = 1;
   for (int f = 0; f < NCOU && !st; f++) {
     char file[600], style[96];
-    data_file(file, sizeof file, &c->cou[f]);
+    data_file(R, file, sizeof file, &c->cou[f]);
     vsph_report_runs_style(style, sizeof style, f,
                            f >= 12  ? " dt 3 pi 12"
                            : f >= 6 ? " dt 2 pi 12"
@@ -692,7 +692,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
   for (int q = 0; q < (R->runs.full ? NCAV : CAV_QUICK) && !st; q++) {
     if (!c->cav[q].ok) continue; /* the run without TVF: a few rows */
     char file[600], style[96], label[64];
-    data_file(file, sizeof file, &c->cav[q]);
+    data_file(R, file, sizeof file, &c->cav[q]);
     snprintf(label, sizeof label, "Re %d, %s, %zu x %zu", CAV[q].Re,
              vsph_viscous_label(vsph_viscous_find(CAV[q].visc)), CAV[q].res,
              CAV[q].res);

@@ -568,7 +568,7 @@ int vsph_report_claims_beside(struct vsph_report *R,
       const int v = k < n ? stands[k] : VSPH_ARCHIVE_ABSENT;
       struct vsph_jobs_run r;
       if (v == VSPH_ARCHIVE_ABSENT && access(dir, F_OK) == 0) {
-        /* there, but not whole: not read (summary.md leaves it out) */
+        /* there, but not whole: not read (entries.md leaves it out) */
         snprintf(full, sizeof full,
                  "an entry whose seal does not hold: not read");
         unreadable++;
@@ -585,8 +585,8 @@ int vsph_report_claims_beside(struct vsph_report *R,
         unjudged += v == VSPH_ARCHIVE_UNJUDGED;
         stale += v == VSPH_ARCHIVE_STALE;
         judged = v == VSPH_ARCHIVE_STANDS     ? "yes"
-                 : v == VSPH_ARCHIVE_UNJUDGED ? "unjudged (summary.md says why)"
-                                              : "no (summary.md says why)";
+                 : v == VSPH_ARCHIVE_UNJUDGED ? "unjudged (entries.md says why)"
+                                              : "no (entries.md says why)";
       }
       fprintf(m,
               "| %s | %s | %s/dx = %zu, t_end %g s: %s | %s/dx = %zu, "

@@ -477,6 +477,15 @@ static int alpha_csv(struct vsph_report *R, const struct cres *cr) {
   return vsph_files_write(R->dir, "contact_alpha.csv", buf);
 }
 
+/* Shear test @p tag's profiles.csv as gnuplot sees it from the report
+ * folder (the test's folder, or its run archive's entry). */
+static void profiles_file(const struct vsph_report *R, const char *tag,
+                          char *buf, size_t len) {
+  char run[700];
+  snprintf(run, sizeof run, "%s/runs/contact-%s", R->runs.jobs.dir, tag);
+  vsph_jobs_data_path(&R->runs.jobs, run, "profiles.csv", buf, len);
+}
+
 static int figures(struct vsph_report *R, const struct cres *cr) {
   struct vsph_plot pl;
   char file[300], using[200], label[128], style[96];
@@ -487,7 +496,7 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
   static const int Z[3] = {C_Z0, C_Z05, C_Z1};
   int st = VSPH_OK;
   for (int k = 0; k < 3 && !st; k++) {
-    snprintf(file, sizeof file, "runs/contact-%s/profiles.csv", CS[Z[k]].tag);
+    profiles_file(R, CS[Z[k]].tag, file, sizeof file);
     snprintf(using, sizeof using, "(abs($2)<%g ? $2*1e9 : 1/0):($3/%g)",
              0.5 * CS[Z[k]].W, CS[Z[k]].U0);
     snprintf(label, sizeof label, "SPH, ζ = %g", CS[Z[k]].zeta);
@@ -510,7 +519,7 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
                  "ξ (nm)", "u_y / U_0 (dimensionless)");
   const struct vsph_contact_shear *L = &cr->r[C_Z1L];
   for (size_t q = 0; q < L->nt && !st; q++) {
-    snprintf(file, sizeof file, "runs/contact-%s/profiles.csv", CS[C_Z1L].tag);
+    profiles_file(R, CS[C_Z1L].tag, file, sizeof file);
     snprintf(using, sizeof using,
              "(abs($1-%.9g)<%.3g && abs($2)<%g ? $2*1e9*sqrt(7e-9/$1) : "
              "1/0):($3/%g)",
@@ -544,7 +553,7 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
                  "u_y / U_0 (dimensionless)");
   const struct vsph_contact_shear *B = &cr->r[C_BI1];
   for (size_t q = 0; q < B->nt && q < 2 && !st; q++) {
-    snprintf(file, sizeof file, "runs/contact-%s/profiles.csv", CS[C_BI1].tag);
+    profiles_file(R, CS[C_BI1].tag, file, sizeof file);
     snprintf(using, sizeof using,
              "(abs($1-%.9g)<%.3g && abs($2)<3e-4 ? $2*1e6 : 1/0):($3/%g)",
              B->t[q], 1e-3 * B->t[q], CS[C_BI1].U0);

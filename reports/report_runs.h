@@ -77,6 +77,8 @@ struct vsph_report_runs {
   size_t made;           /* runs the plan missed at the start */
   double runs_wall;      /* their wall time (s) */
   const char *made_by;   /* who made them (run.json) */
+  size_t from_archive;   /* runs read from a run archive's entries */
+  const char *archive;   /* that archive, or NULL */
   struct vsph_report_ladder ladder[VSPH_REPORT_NSCENES]; /* memo */
   int have_ladder[VSPH_REPORT_NSCENES];
   struct vsph_report_richardson rr; /* memo: the square's reference */

@@ -303,6 +303,7 @@ static int scene(struct vsph_report *R, int sc) {
   if (!figs) VSPH_FAIL(VSPH_ENOMEM, "cannot buffer the figures");
   struct vsph_jobs_run runs[NFORM];
   memset(runs, 0, sizeof runs);
+  int nosnap = -1; /* a formulation whose run has no snapshots */
   for (int f = 0; f < NFORM && !st; f++) {
     struct vsph_jobs_spec rs = {
         L->scene, vsph_viscous_name(f), res, L->t_end, NULL, NULL};
@@ -329,10 +330,21 @@ static int scene(struct vsph_report *R, int sc) {
             vsph_report_runs_error(&r, square ? &rr : NULL),
             r.Ek[r.nrow - 1] / r.Ek[0], lossb, vsph_report_runs_diss0(&r),
             r.wall_s);
-    if (!st && sc == 0) st = vortex_profiles(R, figs, f, &r, res);
+    /* a run read from a run archive keeps no snapshots: no profiles */
+    const int snaps = !strcmp(vsph_jobs_where(&R->runs.jobs, r.dir), r.dir) ||
+                      vsph_jobs_holds(&R->runs.jobs, r.dir, "snap_0000.vtp");
+    if (!snaps) nosnap = f;
+    if (!st && sc == 0 && snaps) st = vortex_profiles(R, figs, f, &r, res);
     vsph_report_runs_free(&r);
   }
-  if (!st) st = pictures(R, sc, figs, runs);
+  if (!st && nosnap < 0) st = pictures(R, sc, figs, runs);
+  if (!st && nosnap >= 0)
+    fprintf(figs,
+            "*The particle pictures%s of this scene are left out: run `%s` "
+            "is read from the run archive `%s`, which keeps no "
+            "snapshots.*\n\n",
+            sc == 0 ? " and the u_θ(r) profiles" : "", runs[nosnap].dir,
+            R->runs.archive ? R->runs.archive : "?");
   fclose(figs);
   fprintf(R->md, "\n");
   fwrite(figbuf, 1, figlen, R->md);

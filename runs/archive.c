@@ -434,7 +434,7 @@ static unsigned long long scene_rows(const char *text, const char *scene) {
   return fp;
 }
 
-/* Whether @p s can stand for a commit, scene or status in summary.md:
+/* Whether @p s can stand for a commit, scene or status in entries.md:
  * 1-63 letters, digits, '.', '_' or '-' (nothing a table cell breaks
  * on). */
 static int id_name(const char *s) {
@@ -596,6 +596,35 @@ static void judge_inputs(const struct vsph_archive_judge *jd, char **now,
   }
 }
 
+int vsph_archive_entry(const char *archive, const char *name, char *dir,
+                       size_t len, char **key) {
+  *key = NULL;
+  char runs[4200];
+  snprintf(runs, sizeof runs, "%s/runs", archive);
+  struct entry en;
+  if (!plain_name(name) || strchr(name, '/') || !entry_read(runs, name, &en))
+    return 0;
+  const int fits = (size_t)snprintf(dir, len, "%s/%s", runs, name) < len;
+  if (fits) {
+    *key = en.key; /* (entry_free would free it) */
+    en.key = NULL;
+  }
+  entry_free(&en);
+  return fits;
+}
+
+int vsph_archive_write_summary(const char *archive, const char *text) {
+  char runs[4200];
+  snprintf(runs, sizeof runs, "%s/runs", archive);
+  int st = judge(archive, runs);
+  if (st) return st;
+  struct vsph_folder top;
+  if ((st = vsph_folder_claim(&top, archive, &vsph_folder_archive))) return st;
+  st = vsph_files_write(archive, "summary.md", text);
+  vsph_folder_release(&top);
+  return st;
+}
+
 int vsph_archive_check(const char *archive) {
   char runs[4200];
   snprintf(runs, sizeof runs, "%s/runs", archive);
@@ -722,10 +751,10 @@ int vsph_archive_summarise(const char *archive,
   fprintf(m,
           "\n%zu of the %zu runs of the current FULL plan are archived "
           "(%.0f s of runs)%s; %zu entries stand. The claims table and the "
-          "convergence tables at the paper's resolutions are written when "
-          "the archive holds every run the FULL report reads; until then "
-          "each claim's verdict stays at the quick report's resolutions, "
-          "as the report says.\n",
+          "convergence tables at the paper's resolutions are in summary.md, "
+          "which the FULL report's assembly from this archive writes (`make "
+          "full-report`: `vsph report --full --assemble --from-archive`) "
+          "when every run it reads stands here.\n",
           total, jd->nplan, wall,
           others ? ", beside entries the plan no longer names" : "", stands);
   free_list(names, n);
@@ -734,9 +763,9 @@ int vsph_archive_summarise(const char *archive,
   if (fclose(m) != 0) {
     free(text);
     vsph_folder_release(&top);
-    VSPH_FAIL(VSPH_ENOMEM, "cannot build %s/summary.md", archive);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot build %s/entries.md", archive);
   }
-  st = vsph_files_write(archive, "summary.md", text);
+  st = vsph_files_write(archive, "entries.md", text);
   free(text);
   vsph_folder_release(&top);
   return st;

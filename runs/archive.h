@@ -59,7 +59,7 @@ struct vsph_archive_judge {
   const char *const *plan_key;  /*!< ... and its key (key.txt's first part) */
 };
 
-/** @brief Write @p archive's summary.md: each entry (scene, formulation,
+/** @brief Write @p archive's entries.md: each entry (scene, formulation,
  *  resolution, particles, time reached, status, steps, wall time, what
  *  made it) and whether it still stands for the current code, by the
  *  rule: (1) the current FULL plan asks for a run of its name with its
@@ -81,6 +81,20 @@ enum vsph_archive_verdict {
   VSPH_ARCHIVE_STALE = 0,     /*!< whole, and it does not stand */
   VSPH_ARCHIVE_STANDS = 1     /*!< whole, and it stands */
 };
+
+/** @brief Entry @p name of @p archive, when it is whole (its seal
+ *  holds): its folder into @p dir (@p len bytes) and the key it is sealed
+ *  under (key.txt before "files:", the run's own) into *@p key (caller
+ *  frees). Reads only. @return 1; 0 when there is no whole entry of that
+ *  name (*@p key NULL; not reported). */
+int vsph_archive_entry(const char *archive, const char *name, char *dir,
+                       size_t len, char **key);
+
+/** @brief Write @p text as @p archive's summary.md (the FULL report's
+ *  claims and convergence tables, from its assembly from the archive),
+ *  under the archive's claim, after judging it an archive. @return
+ *  VSPH_OK; VSPH_EINVAL (not an archive); VSPH_EIO. */
+int vsph_archive_write_summary(const char *archive, const char *text);
 
 /** @brief Whether @p archive is a run archive vsph wrote (its top, and
  *  each entry of its runs/ a folder of a run's kind with nothing else in

@@ -80,8 +80,8 @@ const struct vsph_folder_kind vsph_folder_report = {"report", owns_report};
 
 /* An archive of runs: its index, its summary and its runs' folders. */
 static int owns_archive(const char *name) {
-  static const char *const files[] = {"index.tsv", "summary.md", "key.txt",
-                                      NULL};
+  static const char *const files[] = {"index.tsv", "entries.md", "summary.md",
+                                      "key.txt", NULL};
   if (!strcmp(name, "runs")) return VSPH_FOLDER_SUBDIR;
   if (one_of(name, files)) return VSPH_FOLDER_FILE;
   return tmp_of(name, owns_archive) ? VSPH_FOLDER_FILE : VSPH_FOLDER_FOREIGN;

@@ -84,7 +84,8 @@ static int finish_job(struct vsph_jobs_job *j) {
 
 void vsph_jobs_free(struct vsph_jobs_job *j) {
   free(j->key);
-  j->key = NULL;
+  free(j->from_key);
+  j->key = j->from_key = NULL;
 }
 
 int vsph_jobs_run(const struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
@@ -245,6 +246,19 @@ static const struct vsph_jobs_job *find(const struct vsph_jobs *P,
   return NULL;
 }
 
+/* The folder a planned job's files are read from, and the key its seal
+ * must hold for. */
+static const char *where_of(const struct vsph_jobs_job *p, const char **key) {
+  *key = p->from[0] ? p->from_key : p->key;
+  return p->from[0] ? p->from : p->dir;
+}
+
+const char *vsph_jobs_where(const struct vsph_jobs *J, const char *dir) {
+  const struct vsph_jobs_job *p = J->planned ? find(J, dir) : NULL;
+  const char *key;
+  return p ? where_of(p, &key) : dir;
+}
+
 int vsph_jobs_ready(const struct vsph_jobs *J, const struct vsph_jobs_job *j) {
   if (!J->planned) return j->cached ? VSPH_OK : execute(J, j);
   const struct vsph_jobs_job *p = find(J, j->dir);
@@ -253,6 +267,14 @@ int vsph_jobs_ready(const struct vsph_jobs *J, const struct vsph_jobs_job *j) {
               "the report reads %s, which no part's plan lists with these "
               "settings (a bug: the part's plan function misses it)",
               j->dir);
+  if (p->from[0]) { /* an archive's entry: its own seal must still hold */
+    char why[700] = "";
+    if (vsph_folder_verify(p->from, NULL, p->from_key, NULL, why, sizeof why) !=
+        1)
+      VSPH_FAIL(VSPH_EIO, "archived run %s is no longer whole%s%s", p->from,
+                why[0] ? ": " : "", why);
+    return VSPH_OK;
+  }
   if (!vsph_rundir_key_matches(p->dir, p->key))
     VSPH_FAIL(VSPH_EIO,
               "run %s is missing or unfinished (no matching key.txt): run the "
@@ -1177,7 +1199,9 @@ int vsph_jobs_get(const struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
   int st = vsph_jobs_run(J, rs, &j);
   snprintf(out->dir, sizeof out->dir, "%s", j.dir);
   if (!st) st = vsph_jobs_ready(J, &j);
-  if (!st) st = vsph_jobs_load(j.dir, out);
+  if (!st) st = vsph_jobs_load(vsph_jobs_where(J, j.dir), out);
+  /* the parts name a run by its planned folder, wherever it was read */
+  snprintf(out->dir, sizeof out->dir, "%s", j.dir);
   vsph_jobs_free(&j);
   return st;
 }
@@ -1189,8 +1213,10 @@ int vsph_jobs_file(const struct vsph_jobs *J, const char *dir, const char *name,
   const struct vsph_jobs_job *j = J->planned ? find(J, dir) : NULL;
   if (J->planned && !j)
     VSPH_FAIL(VSPH_EINVAL, "run %s is not in the plan (a bug)", dir);
+  const char *key = NULL;
+  if (j) dir = where_of(j, &key);
   char why[700] = "";
-  if (j && vsph_folder_verify(dir, NULL, j->key, NULL, why, sizeof why) != 1)
+  if (j && vsph_folder_verify(dir, NULL, key, NULL, why, sizeof why) != 1)
     VSPH_FAIL(VSPH_EIO, "run %s is not sealed%s%s", dir, why[0] ? ": " : "",
               why);
   snprintf(path, len, "%s/key.txt", dir);
@@ -1222,10 +1248,51 @@ void vsph_jobs_plan_free(struct vsph_jobs *J) {
   J->n = J->cap = 0;
 }
 
+int vsph_jobs_holds(const struct vsph_jobs *J, const char *dir,
+                    const char *name) {
+  char path[700], line[300];
+  snprintf(path, sizeof path, "%s/key.txt", vsph_jobs_where(J, dir));
+  char *seal = vsph_files_slurp(path, NULL);
+  snprintf(line, sizeof line, "\n%s ", name);
+  const int listed = seal && strstr(seal, line) != NULL;
+  free(seal);
+  return listed;
+}
+
+/* Folder @p a's path relative to folder @p b, both as realpath gives
+ * them, into @p buf: "../" for each of b's components below their
+ * common ancestor, then the rest of a. */
+static void relative_path(const char *a, const char *b, char *buf, size_t len) {
+  size_t c = 0, k = 0;
+  for (; a[k] && a[k] == b[k]; k++)
+    if (a[k] == '/') c = k;
+  if (!a[k] && (!b[k] || b[k] == '/')) c = k; /* a is b, or above it */
+  if (!b[k] && a[k] == '/') c = k;            /* b is above a */
+  size_t n = 0;
+  buf[0] = '\0';
+  for (const char *s = b + c; *s; s++)
+    if (*s == '/' && n + 4 < len)
+      n += (size_t)snprintf(buf + n, len - n, "../");
+  snprintf(buf + n, len - n, "%s", a[c] == '/' ? a + c + 1 : a + c);
+}
+
+void vsph_jobs_data_path(const struct vsph_jobs *J, const char *dir,
+                         const char *name, char *buf, size_t len) {
+  const char *where = vsph_jobs_where(J, dir);
+  const char *base = strrchr(dir, '/');
+  char ra[PATH_MAX], rb[PATH_MAX], rel[2 * PATH_MAX];
+  if (where == dir || !realpath(where, ra) || !realpath(J->dir, rb)) {
+    snprintf(buf, len, "runs/%s/%s", base ? base + 1 : dir, name);
+    return;
+  }
+  relative_path(ra, rb, rel, sizeof rel);
+  snprintf(buf, len, "%s/%s", rel, name);
+}
+
 int vsph_jobs_last_snapshot(const struct vsph_jobs *J, const char *dir) {
   char path[700];
   if (vsph_jobs_file(J, dir, "snapshots.pvd", path, sizeof path)) return -1;
-  snprintf(path, sizeof path, "%s/key.txt", dir);
+  snprintf(path, sizeof path, "%s/key.txt", vsph_jobs_where(J, dir));
   char *seal = vsph_files_slurp(path, NULL);
   int last = -1;
   for (const char *c = seal; c && (c = strstr(c, "\nsnap_")); c++) {

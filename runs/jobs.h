@@ -41,6 +41,11 @@ struct vsph_jobs_job {
   int cached;                     /* its key.txt matches */
   int archived; /* a run archive holds it, standing: a budget skips it */
   int failed;   /* the pool: did not end */
+  /* an assembly from a run archive: the entry its files are read from
+   * when its own folder lacks it ("" otherwise), and the key that entry
+   * is sealed under (the run's own, of the build that made it; owned) */
+  char from[512];
+  char *from_key;
 };
 
 /** The runs of a report (or of any caller that wants many runs): where
@@ -215,6 +220,24 @@ struct vsph_csv *vsph_jobs_table(const struct vsph_jobs *J, const char *dir,
  *  else a failure naming it. */
 int vsph_jobs_file(const struct vsph_jobs *J, const char *dir, const char *name,
                    char *path, size_t len);
+
+/** @brief The folder the files of planned run @p dir are read from: a
+ *  run archive's entry when the assembly reads it from there, else
+ *  @p dir itself. */
+const char *vsph_jobs_where(const struct vsph_jobs *J, const char *dir);
+
+/** @brief Whether the seal of the planned run in folder @p dir lists file
+ *  @p name (1) or not (0), saying nothing: an archived run keeps no
+ *  snapshots, and a part then leaves out what it draws from them. */
+int vsph_jobs_holds(const struct vsph_jobs *J, const char *dir,
+                    const char *name);
+
+/** @brief The path of file @p name of planned run @p dir as a file of the
+ *  report folder J->dir sees it (for a gnuplot script there):
+ *  "runs/NAME/name", or the relative path to the run archive's entry the
+ *  run is read from. */
+void vsph_jobs_data_path(const struct vsph_jobs *J, const char *dir,
+                         const char *name, char *buf, size_t len);
 
 /** @brief The index of the last snapshot (snap_NNNN.vtp) under the seal
  *  of the planned run in folder @p dir: the end, or the stop of an

@@ -274,10 +274,10 @@ START_TEST(test_plan_listing) {
     shear += strstr(line, " contact --out ") != NULL;
   }
   fclose(f);
-  /* the baseline's channel rows (Poiseuille and Couette, every form) and
-   * its 5 cavity rows have the tag "base"; the quick report's 19 shear
-   * tests are `vsph contact` */
-  ck_assert_uint_eq(base, 2 * VSPH_VISCOUS_FORM_COUNT + 5);
+  /* the baseline's channel rows (Poiseuille and Couette, every form),
+   * its 5 cavity rows and its cylinders row have the tag "base"; the
+   * quick report's 19 shear tests are `vsph contact` */
+  ck_assert_uint_eq(base, 2 * VSPH_VISCOUS_FORM_COUNT + 5 + 1);
   ck_assert_uint_eq(shear, 19);
   ck_assert(n > 200);
   rmrf(dir);
@@ -439,11 +439,166 @@ START_TEST(test_budget_skip_archived) {
 }
 END_TEST
 
+/* The resolution in a run folder's name: its first all-digit field. */
+static size_t res_of(const char *name) {
+  for (const char *c = strchr(name, '-'); c; c = strchr(c + 1, '-'))
+    if (c[1] >= '0' && c[1] <= '9') return (size_t)strtoul(c + 1, NULL, 10);
+  return 0;
+}
+
+/* `vsph report --full --assemble --from-archive AR --only convergence`:
+ * every free-surface run of the FULL plan is an entry of AR sealed under
+ * its plan key by this build's sources (so it stands), none is in the
+ * report's own folder, and the report is assembled from AR alone. Each
+ * entry's E_k falls from 1 to 1 - 1/res against a constant reference, so
+ * the vortex patch's E_k error is 1/res (by hand: 4.000e-02, 2.000e-02,
+ * 1.000e-02 at R/dx = 25, 50, 100, to the table's four digits) and its
+ * fitted order exactly 1; P_visc(0) is -(1 + 1/res) against dE_k,ref/dt
+ * = -1, so the initial dissipation error, (P_visc(0) - dE_k,ref/dt(0)) /
+ * |dE_k,ref/dt(0)|, is -1/res. AR/summary.md then holds the convergence
+ * tables and says how many runs came from AR; the report's facts and
+ * run.json say it too. Refused (exit 2, nothing written): without --full
+ * or --assemble, or with --out inside AR. An entry changed after its seal
+ * no longer stands: the assembly fails naming the missing run (exit 1),
+ * and AR/summary.md is untouched. */
+START_TEST(test_assemble_from_archive) {
+  const char *dir = tmpdir();
+  char path[1200], ar[600], text[600];
+  snprintf(path, sizeof path, "%s/r", dir);
+  struct vsph_jobs jobs;
+  memset(&jobs, 0, sizeof jobs);
+  ck_assert_int_eq(vsph_report_plan_jobs(path, 1, &jobs), 0);
+  snprintf(path, sizeof path, "%s/empty/runs", dir);
+  ck_assert_int_eq(vsph_files_mkdir(path), 0);
+  snprintf(path, sizeof path, "%s/empty", dir);
+  snprintf(ar, sizeof ar, "%s/ar", dir);
+  struct vsph_archive_counts n;
+  ck_assert_int_eq(vsph_archive_store(path, ar, NULL, NULL, &n), 0);
+  static const char *const scenes[] = {"vortex-patch", "stretching-square",
+                                       "standing-wave"};
+  size_t made = 0;
+  for (size_t k = 0; k < jobs.n; k++) {
+    const struct vsph_jobs_job *j = &jobs.job[k];
+    int free_surface = 0;
+    for (int s = 0; s < 3; s++) free_surface |= !strcmp(j->scene, scenes[s]);
+    if (j->kind != VSPH_JOBS_RUN || !free_surface) continue;
+    const char *name = strrchr(j->dir, '/') + 1;
+    const size_t res = res_of(name);
+    ck_assert_uint_gt(res, 0);
+    snprintf(path, sizeof path, "%s/runs/%s", ar, name);
+    struct vsph_folder f;
+    ck_assert_int_eq(vsph_folder_claim(&f, path, &vsph_folder_scene_run), 0);
+    snprintf(text, sizeof text,
+             "{\"scene\": \"%s\", \"status\": \"ok\", \"res\": %zu}\n",
+             j->scene, res);
+    ck_assert_int_eq(vsph_files_write(path, "run.json", text), 0);
+    snprintf(text, sizeof text,
+             "t,Ek,Ep,Ec,P_visc,residual,dEk_dt,Ek_ref,dEk_ref,Em_ref,"
+             "dEm_ref\n0,1,0,0,%.17g,0,-1,1,-1,1,-1\n1,%.17g,0,0,-1,0,-1,1,"
+             "-1,1,-1\n",
+             -1.0 - 1.0 / (double)res, 1.0 - 1.0 / (double)res);
+    ck_assert_int_eq(vsph_files_write(path, "energy.csv", text), 0);
+    ck_assert_int_eq(vsph_folder_seal(&f, j->key, NULL), 0);
+    vsph_folder_release(&f);
+    made++;
+  }
+  vsph_jobs_plan_free(&jobs);
+  ck_assert_uint_ge(made, 40);
+  /* today's baseline: the three scenes' rows */
+  snprintf(path, sizeof path, "%s/reports", dir);
+  ck_assert_int_eq(vsph_files_mkdir(path), 0);
+  ck_assert_int_eq(
+      vsph_files_write(path, "baseline.csv",
+                       "scene,visc\nvortex-patch,mgf\nstretching-square,"
+                       "mgf\nstanding-wave,mgf\n"),
+      0);
+  /* refused, nothing written */
+  static const char *const refused[] = {
+      "--full --from-archive ar --out r",
+      "--assemble --from-archive ar --out r",
+      "--full --assemble --from-archive ar --out ar/runs/x",
+      "--full --assemble --from-archive nowhere --out r"};
+  char cmd[2000];
+  for (int k = 0; k < 4; k++) {
+    snprintf(cmd, sizeof cmd,
+             "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report %s "
+             "--only convergence",
+             dir, refused[k]);
+    const struct vsph_test_outcome *o = vsph_test_shell(cmd);
+    ck_assert_msg(o->status == 2 && o->err_lines == 1, "%s: %s", refused[k],
+                  o->err);
+    snprintf(path, sizeof path, "%s/r", dir);
+    ck_assert_msg(access(path, F_OK) != 0, "%s: r was made", refused[k]);
+  }
+  snprintf(path, sizeof path, "%s/ar/summary.md", dir);
+  ck_assert_int_ne(access(path, F_OK), 0);
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --full "
+           "--assemble --from-archive ar --out r --only convergence",
+           dir);
+  const struct vsph_test_outcome *o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  static char summary[65536];
+  vsph_test_slurp(path, summary, sizeof summary);
+  /* every run the part reads came from the archive (its plan: the three
+   * ladders, the vortex patch's second layout, the square's references) */
+  const char *said = strstr(summary, "): ");
+  size_t nrun = 0, nread = 0;
+  ck_assert_msg(said && sscanf(said,
+                               "): %zu runs, %zu of them read from "
+                               "this archive's entries",
+                               &nrun, &nread) == 2,
+                "%.3000s", summary);
+  ck_assert_uint_eq(nread, nrun);
+  ck_assert_uint_eq(nrun, 3 * 3 * 3 + 9 + 4);
+  ck_assert_msg(strstr(summary,
+                       "| mgf | 25 | 4.000e-02 | yes | |\n"
+                       "| mgf | 50 | 2.000e-02 | yes | |\n"
+                       "| mgf | 100 | 1.000e-02 | yes | |\n"
+                       "| mgf | ladder | | | **1.00** |"),
+                "%.3000s", summary);
+  ck_assert_msg(strstr(summary,
+                       "| cartesian | pvwf | 100 | 1.000e-02 | "
+                       "-1.000e-02 | yes |"),
+                "%.3000s", summary);
+  ck_assert_msg(!strstr(summary, "![") && !strstr(summary, "*Figure"),
+                "%.3000s", summary);
+  snprintf(path, sizeof path, "%s/r/report.md", dir);
+  static char report[1 << 18];
+  vsph_test_slurp(path, report, sizeof report);
+  snprintf(text, sizeof text,
+           "| of them read from the run archive `ar` (each still standing "
+           "for this code by the archive's rule; its wall time is in its "
+           "entry) | %zu runs |",
+           nrun);
+  ck_assert_msg(strstr(report, text), "want '%s'", text);
+  /* an entry changed after its seal: it no longer stands */
+  snprintf(path, sizeof path, "%s/ar/runs/vortex-patch-mgf-50/energy.csv", dir);
+  FILE *f = fopen(path, "a");
+  ck_assert_ptr_nonnull(f);
+  fputs("2,0.5,0,0,-1,0,-1,1,-1,1,-1\n", f);
+  ck_assert_int_eq(fclose(f), 0);
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --full "
+           "--assemble --from-archive ar --out r2 --only convergence",
+           dir);
+  o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 1 && strstr(o->err, "vortex-patch-mgf-50"), "%s",
+                o->err);
+  snprintf(path, sizeof path, "%s/ar/summary.md", dir);
+  static char again[65536];
+  vsph_test_slurp(path, again, sizeof again);
+  ck_assert_str_eq(again, summary);
+  rmrf(dir);
+}
+END_TEST
+
 Suite *vsph_jobs_suite(void) {
   Suite *s = suite_create("jobs");
   TCase *tc = tcase_create("jobs");
   tcase_set_timeout(tc, 60);
   tcase_add_test(tc, test_key_canonical);
+  tcase_add_test(tc, test_assemble_from_archive);
   tcase_add_test(tc, test_command_is_the_run);
   tcase_add_test(tc, test_pool);
   tcase_add_test(tc, test_estimate_neighbours);

@@ -365,7 +365,7 @@ START_TEST(test_claims_beside) {
                          "t_end 8 s: ok to t = 8 s; energy lost over "
                          "Lighthill's 3.000, E_k error 1.50e-01 |"),
                   "%s", text);
-    ck_assert_msg(strstr(text, pass ? "1.50e-01 | unjudged (summary.md says "
+    ck_assert_msg(strstr(text, pass ? "1.50e-01 | unjudged (entries.md says "
                                       "why) |"
                                     : "1.50e-01 | yes |"),
                   "%s", text);

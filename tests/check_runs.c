@@ -556,11 +556,11 @@ static void seal_entry(const char *dir, const char *key, const char *run) {
   seal_kind(dir, &vsph_folder_scene_run, key, run);
 }
 
-/* summary.md's row of entry @p name holds @p verdict (its last cell). */
+/* entries.md's row of entry @p name holds @p verdict (its last cell). */
 static void assert_stands(const char *ar, const char *name,
                           const char *verdict) {
   char path[700], text[8192], row[64];
-  snprintf(path, sizeof path, "%s/summary.md", ar);
+  snprintf(path, sizeof path, "%s/entries.md", ar);
   vsph_test_slurp(path, text, sizeof text);
   snprintf(row, sizeof row, "\n| %s |", name);
   const char *r = strstr(text, row);
@@ -585,7 +585,7 @@ static void assert_standing(const char *ar, const struct vsph_archive_judge *jd,
                   got[k], want[k]);
 }
 
-/* summary.md's rule, case by case (and vsph_archive_standing, the
+/* entries.md's rule, case by case (and vsph_archive_standing, the
  * budget's reading of it, run by run): an entry made by this build's sources
  * stands when the plan asks for it with its settings; one the plan does
  * not name, or names with other settings, does not; an entry of other
@@ -631,7 +631,7 @@ START_TEST(test_archive_summary) {
              "{\"scene\": \"poiseuille\", \"status\": \"ok\", \"commit\": "
              "\"c0ffee-dirty\"}\n");
   /* an entry named with a tab (sealed by hand): index.tsv leaves it out,
-   * summary.md blanks it */
+   * entries.md blanks it */
   char zt[400];
   snprintf(zt, sizeof zt, "%s/runs/t\tx", ar);
   seal_entry(zt, zkey, NULL);
@@ -702,7 +702,7 @@ START_TEST(test_archive_summary) {
   assert_stands(ar, "a", "other settings");
   assert_stands(ar, "z", "no run of this name");
   /* the tally counts the plan's runs only */
-  snprintf(path, sizeof path, "%s/summary.md", ar);
+  snprintf(path, sizeof path, "%s/entries.md", ar);
   char text[8192];
   vsph_test_slurp(path, text, sizeof text);
   ck_assert_msg(strstr(text, "\n1 of the 1 runs of the current FULL plan") &&
