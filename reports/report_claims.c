@@ -444,17 +444,34 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
     if (f == MGF) tpk = w[f].t[pk];
   }
   const size_t res = vsph_report_runs_ladder(&R->runs, 2, 0)->res[2];
-  snprintf(ours, sizeof ours,
-           "energy lost by t = %g s over Lighthill's (H/dx = %zu): PVWF "
-           "%.3f, MGF %.3f, MEAF %.3f (1 = exact, > 1 too much damping); "
-           "second measure, last E_k peak (t = %.2f s) over Lighthill's: "
-           "PVWF %.3f, MGF %.3f, MEAF %.3f",
-           w[MGF].t[w[MGF].nrow - 1], res, loss[PVWF], loss[MGF], loss[MEAF],
-           tpk, ratio[PVWF], ratio[MGF], ratio[MEAF]);
+  /* a run that stopped: its figures are by its last row, said */
+  char stopped[160] = "";
+  int first = -1;
+  for (int f = 0, n = 0; f < NFORM; f++)
+    if (!w[f].ok) {
+      if (first < 0) first = f;
+      n += snprintf(stopped + n, sizeof stopped - (size_t)n,
+                    "; %s stopped (unstable) at t = %.3g s",
+                    vsph_viscous_label(f), w[f].t_unstable);
+    }
+  snprintf(
+      ours, sizeof ours,
+      "energy lost by t = %g s over Lighthill's (H/dx = %zu): PVWF "
+      "%.3f, MGF %.3f, MEAF %.3f (1 = exact, > 1 too much damping); "
+      "second measure, last E_k peak (t = %.2f s) over Lighthill's: "
+      "PVWF %.3f, MGF %.3f, MEAF %.3f%s%s",
+      w[MGF].t[w[MGF].nrow - 1], res, loss[PVWF], loss[MGF], loss[MEAF], tpk,
+      ratio[PVWF], ratio[MGF], ratio[MEAF], stopped,
+      stopped[0] ? " (its figures by then; nan: no E_k peak by then)" : "");
   const double em = fabs(loss[MGF] - 1), ep = fabs(loss[PVWF] - 1);
   const double ee = fabs(loss[MEAF] - 1);
   char verdict[256];
-  if (ee > 2 * fmax(em, ep) && ep < em)
+  if (first >= 0) /* the damping over the whole run is not measured */
+    snprintf(verdict, sizeof verdict,
+             "differs at H/dx = %zu: %s stopped (unstable) at t = %.3g s of "
+             "%g s",
+             res, vsph_viscous_label(first), w[first].t_unstable, WL->t_end);
+  else if (ee > 2 * fmax(em, ep) && ep < em)
     snprintf(verdict, sizeof verdict,
              loss[MGF] > 1
                  ? "partly, at H/dx = %zu: the ranking holds by the energy "

@@ -1259,15 +1259,14 @@ int vsph_jobs_holds(const struct vsph_jobs *J, const char *dir,
   return listed;
 }
 
-/* Folder @p a's path relative to folder @p b, both as realpath gives
- * them, into @p buf: "../" for each of b's components below their
- * common ancestor, then the rest of a. */
+/* Folder @p a's path relative to folder @p b, both absolute as realpath
+ * gives them, into @p buf: "../" for each of b's components below the
+ * last folder their paths share (the last '/' of their common prefix),
+ * then the rest of a. */
 static void relative_path(const char *a, const char *b, char *buf, size_t len) {
-  size_t c = 0, k = 0;
-  for (; a[k] && a[k] == b[k]; k++)
+  size_t c = 0;
+  for (size_t k = 0; a[k] && a[k] == b[k]; k++)
     if (a[k] == '/') c = k;
-  if (!a[k] && (!b[k] || b[k] == '/')) c = k; /* a is b, or above it */
-  if (!b[k] && a[k] == '/') c = k;            /* b is above a */
   size_t n = 0;
   buf[0] = '\0';
   for (const char *s = b + c; *s; s++)
@@ -1281,7 +1280,7 @@ void vsph_jobs_data_path(const struct vsph_jobs *J, const char *dir,
   const char *where = vsph_jobs_where(J, dir);
   const char *base = strrchr(dir, '/');
   char ra[PATH_MAX], rb[PATH_MAX], rel[2 * PATH_MAX];
-  if (where == dir || !realpath(where, ra) || !realpath(J->dir, rb)) {
+  if (!strcmp(where, dir) || !realpath(where, ra) || !realpath(J->dir, rb)) {
     snprintf(buf, len, "runs/%s/%s", base ? base + 1 : dir, name);
     return;
   }

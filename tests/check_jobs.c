@@ -572,6 +572,40 @@ START_TEST(test_assemble_from_archive) {
            "entry) | %zu runs |",
            nrun);
   ck_assert_msg(strstr(report, text), "want '%s'", text);
+  /* assembled three folders down, the report works as well, and the path
+   * by which its gnuplot scripts reach an entry's table climbs out of
+   * x/y/r3 and into the archive */
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --full "
+           "--assemble --from-archive ar --out x/y/r3 --only convergence",
+           dir);
+  o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  {
+    struct vsph_jobs J3;
+    memset(&J3, 0, sizeof J3);
+    snprintf(path, sizeof path, "%s/x/y/r3", dir);
+    ck_assert_int_eq(vsph_report_plan_jobs(path, 1, &J3), 0);
+    size_t k = 0;
+    while (k < J3.n &&
+           strcmp(strrchr(J3.job[k].dir, '/') + 1, "vortex-patch-mgf-25"))
+      k++;
+    ck_assert_uint_lt(k, J3.n);
+    char *key = NULL;
+    snprintf(text, sizeof text, "%s/ar", dir);
+    ck_assert_int_eq(
+        vsph_archive_entry(text, "vortex-patch-mgf-25", J3.job[k].from,
+                           sizeof J3.job[k].from, &key),
+        1);
+    J3.job[k].from_key = key;
+    J3.planned = 1;
+    char rel[600];
+    vsph_jobs_data_path(&J3, J3.job[k].dir, "energy.csv", rel, sizeof rel);
+    ck_assert_str_eq(rel, "../../../ar/runs/vortex-patch-mgf-25/energy.csv");
+    vsph_jobs_plan_free(&J3);
+  }
+  snprintf(path, sizeof path, "%s/ar/summary.md", dir); /* (its own now) */
+  vsph_test_slurp(path, summary, sizeof summary);
   /* an entry changed after its seal: it no longer stands */
   snprintf(path, sizeof path, "%s/ar/runs/vortex-patch-mgf-50/energy.csv", dir);
   FILE *f = fopen(path, "a");
@@ -588,7 +622,7 @@ START_TEST(test_assemble_from_archive) {
   snprintf(path, sizeof path, "%s/ar/summary.md", dir);
   static char again[65536];
   vsph_test_slurp(path, again, sizeof again);
-  ck_assert_str_eq(again, summary);
+  ck_assert_msg(!strcmp(again, summary), "ar/summary.md changed");
   rmrf(dir);
 }
 END_TEST
