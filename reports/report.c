@@ -409,6 +409,13 @@ static int all_cached(const struct vsph_report *R) {
     if (!R->runs.jobs.job[k].cached && !R->runs.jobs.job[k].from[0] && !m++)
       first = k;
   if (!m) return VSPH_OK;
+  if (R->runs.unjudged) /* an assembly from an archive without its history */
+    VSPH_FAIL(VSPH_EIO,
+              "%zu of the %zu runs are missing, %zu of them unjudged in the "
+              "archive %s (their commit's baseline rows are not known: "
+              "VSPH_ARCHIVE_HISTORY names scripts/source-commits' folder; "
+              "make full-report sets it)",
+              m, R->runs.jobs.n, R->runs.unjudged, R->runs.archive);
   /* a seal broken by a file: name it */
   const struct vsph_jobs_job *j = &R->runs.jobs.job[first];
   char why[700];
@@ -479,6 +486,7 @@ static int read_archived(struct vsph_report *R, const char *adir,
                          const int *stands) {
   for (size_t k = 0; k < R->runs.jobs.n; k++) {
     struct vsph_jobs_job *j = &R->runs.jobs.job[k];
+    R->runs.unjudged += !j->cached && stands[k] == VSPH_ARCHIVE_UNJUDGED;
     if (j->cached || stands[k] != VSPH_ARCHIVE_STANDS) continue;
     const char *slash = strrchr(j->dir, '/');
     if (!vsph_archive_entry(adir, slash ? slash + 1 : j->dir, j->from,

@@ -78,6 +78,7 @@ struct vsph_report_runs {
   double runs_wall;      /* their wall time (s) */
   const char *made_by;   /* who made them (run.json) */
   size_t from_archive;   /* runs read from a run archive's entries */
+  size_t unjudged;       /* runs missing here that it holds unjudged */
   const char *archive;   /* that archive, or NULL */
   struct vsph_report_ladder ladder[VSPH_REPORT_NSCENES]; /* memo */
   int have_ladder[VSPH_REPORT_NSCENES];

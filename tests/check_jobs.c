@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "../common/consts.h"
 #include "../common/params.h"
 #include "../common/status.h"
 #include "../io/files.h"
@@ -439,6 +440,16 @@ START_TEST(test_budget_skip_archived) {
 }
 END_TEST
 
+/* The assembly from archive "ar" into @p out, run in @p dir. */
+static const char *cmd_of(char *cmd, size_t len, const char *dir,
+                          const char *out) {
+  snprintf(cmd, len,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --full "
+           "--assemble --from-archive ar --out %s --only convergence",
+           dir, out);
+  return cmd;
+}
+
 /* The resolution in a run folder's name: its first all-digit field. */
 static size_t res_of(const char *name) {
   for (const char *c = strchr(name, '-'); c; c = strchr(c + 1, '-'))
@@ -623,6 +634,35 @@ START_TEST(test_assemble_from_archive) {
   static char again[65536];
   vsph_test_slurp(path, again, sizeof again);
   ck_assert_msg(!strcmp(again, summary), "ar/summary.md changed");
+  /* the entry made again by other sources (another source hash, the same
+   * settings): without the history it is unjudged, and the refusal says
+   * how to judge it */
+  snprintf(cmd, sizeof cmd, "rm -rf '%s/ar/runs/vortex-patch-mgf-50'", dir);
+  ck_assert_int_eq(system(cmd), 0);
+  {
+    struct vsph_jobs J4;
+    memset(&J4, 0, sizeof J4);
+    snprintf(path, sizeof path, "%s/r", dir);
+    ck_assert_int_eq(vsph_report_plan_jobs(path, 1, &J4), 0);
+    size_t k = 0;
+    while (k < J4.n &&
+           strcmp(strrchr(J4.job[k].dir, '/') + 1, "vortex-patch-mgf-50"))
+      k++;
+    ck_assert_uint_lt(k, J4.n);
+    char other[4096];
+    snprintf(other, sizeof other, "vsph %s 0123456789abcdef\n%s", VSPH_VERSION,
+             strchr(J4.job[k].key, '\n') + 1);
+    vsph_jobs_plan_free(&J4);
+    snprintf(path, sizeof path, "%s/ar/runs/vortex-patch-mgf-50", dir);
+    struct vsph_folder fo;
+    ck_assert_int_eq(vsph_folder_claim(&fo, path, &vsph_folder_scene_run), 0);
+    ck_assert_int_eq(vsph_folder_seal(&fo, other, NULL), 0);
+    vsph_folder_release(&fo);
+  }
+  o = vsph_test_shell(cmd_of(cmd, sizeof cmd, dir, "r4"));
+  ck_assert_msg(o->status == 1 && strstr(o->err, "1 of them unjudged") &&
+                    strstr(o->err, "VSPH_ARCHIVE_HISTORY"),
+                "%s", o->err);
   rmrf(dir);
 }
 END_TEST
