@@ -93,7 +93,8 @@ static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
   struct vsph_report_richardson rr;
   int st = sc == 1 ? vsph_report_runs_richardson(&R->runs, &rr) : VSPH_OK;
   double err[NFORM][NRES][NCFL], wall[NFORM][NRES][NCFL];
-  int ok[NFORM][NRES][NCFL];
+  int ok[NFORM][NRES][NCFL], same = 1; /* every CFL the same steps */
+  size_t steps[NCFL];
   for (int f = 0; f < NFORM && !st; f++)
     for (int k = 0; k < NRES && !st; k++)
       for (int c = 0; c < NCFL && !st; c++) {
@@ -103,6 +104,8 @@ static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
         err[f][k][c] = vsph_report_runs_error(&r, sc == 1 ? &rr : NULL);
         wall[f][k][c] = r.wall_s;
         ok[f][k][c] = r.ok;
+        steps[c] = r.steps;
+        same &= steps[c] == steps[0];
         vsph_report_runs_free(&r);
       }
   if (st) return st;
@@ -164,6 +167,13 @@ static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
   vsph_text_set(&R->tv, "unstable", "%s",
                 ul ? unstable : "none (every run stable at CFL 0.5 stays so)");
+  /* a scene whose step another bound sets (the viscous one) */
+  vsph_text_set(&R->tv, "same_steps", "%s",
+                same ? " But every run here takes the same number of steps "
+                       "at every CFL: its time step is set by another bound "
+                       "(docs/theory.md section 5), not by the CFL, so the "
+                       "pick says nothing for this scene."
+                     : "");
   if ((st = vsph_report_say(R, "speed.cfl_pick"))) return st;
   vsph_text_set(&R->tv, "title", "%s", title);
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
@@ -184,6 +194,13 @@ int vsph_report_speed_write(struct vsph_report *R) {
       all = fmin(all, pick);
     }
   vsph_text_set(&R->tv, "pick", "%g", all);
+  vsph_text_set(&R->tv, "cfl_where", "%s",
+                R->runs.full
+                    ? "these are the FULL report's ladders, whose finest "
+                      "rungs the CFL sweep does not run"
+                    : "these are the quick resolutions, where the time "
+                      "step's share of the error is small beside the "
+                      "resolution's, and the FULL report decides");
   if (!st) st = vsph_report_say(R, "speed.cfl_all");
   return st;
 }
