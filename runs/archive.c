@@ -613,13 +613,23 @@ int vsph_archive_entry(const char *archive, const char *name, char *dir,
   return fits;
 }
 
-int vsph_archive_write_summary(const char *archive, const char *text) {
-  char runs[4200];
-  snprintf(runs, sizeof runs, "%s/runs", archive);
+/* Archive @p archive judged, claimed into @p top, and judged again under
+ * the claim (its runs/ folder into @p runs); nothing held on failure. */
+static int claim_judged(const char *archive, char runs[4200],
+                        struct vsph_folder *top) {
+  snprintf(runs, 4200, "%s/runs", archive);
   int st = judge(archive, runs);
   if (st) return st;
+  if ((st = vsph_folder_claim(top, archive, &vsph_folder_archive))) return st;
+  if ((st = judge(archive, runs))) vsph_folder_release(top);
+  return st;
+}
+
+int vsph_archive_write_summary(const char *archive, const char *text) {
+  char runs[4200];
   struct vsph_folder top;
-  if ((st = vsph_folder_claim(&top, archive, &vsph_folder_archive))) return st;
+  int st = claim_judged(archive, runs, &top);
+  if (st) return st;
   st = vsph_files_write(archive, "summary.md", text);
   vsph_folder_release(&top);
   return st;
@@ -663,15 +673,9 @@ int vsph_archive_standing(const char *archive,
 int vsph_archive_summarise(const char *archive,
                            const struct vsph_archive_judge *jd) {
   char runs[4200];
-  snprintf(runs, sizeof runs, "%s/runs", archive);
-  int st = judge(archive, runs);
-  if (st) return st;
   struct vsph_folder top;
-  if ((st = vsph_folder_claim(&top, archive, &vsph_folder_archive))) return st;
-  if ((st = judge(archive, runs))) { /* again, under the lock */
-    vsph_folder_release(&top);
-    return st;
-  }
+  int st = claim_judged(archive, runs, &top);
+  if (st) return st;
   size_t n = 0;
   char **names = subdirs(runs, &n);
   char *now, *tsv;

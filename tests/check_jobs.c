@@ -450,6 +450,15 @@ static const char *cmd_of(char *cmd, size_t len, const char *dir,
   return cmd;
 }
 
+/* The index of the job of @p J whose folder is named @p name (asserted
+ * to be there). */
+static size_t job_named(const struct vsph_jobs *J, const char *name) {
+  size_t k = 0;
+  while (k < J->n && strcmp(strrchr(J->job[k].dir, '/') + 1, name)) k++;
+  ck_assert_uint_lt(k, J->n);
+  return k;
+}
+
 /* The resolution in a run folder's name: its first all-digit field. */
 static size_t res_of(const char *name) {
   for (const char *c = strchr(name, '-'); c; c = strchr(c + 1, '-'))
@@ -597,11 +606,7 @@ START_TEST(test_assemble_from_archive) {
     memset(&J3, 0, sizeof J3);
     snprintf(path, sizeof path, "%s/x/y/r3", dir);
     ck_assert_int_eq(vsph_report_plan_jobs(path, 1, &J3), 0);
-    size_t k = 0;
-    while (k < J3.n &&
-           strcmp(strrchr(J3.job[k].dir, '/') + 1, "vortex-patch-mgf-25"))
-      k++;
-    ck_assert_uint_lt(k, J3.n);
+    const size_t k = job_named(&J3, "vortex-patch-mgf-25");
     char *key = NULL;
     snprintf(text, sizeof text, "%s/ar", dir);
     ck_assert_int_eq(
@@ -644,11 +649,7 @@ START_TEST(test_assemble_from_archive) {
     memset(&J4, 0, sizeof J4);
     snprintf(path, sizeof path, "%s/r", dir);
     ck_assert_int_eq(vsph_report_plan_jobs(path, 1, &J4), 0);
-    size_t k = 0;
-    while (k < J4.n &&
-           strcmp(strrchr(J4.job[k].dir, '/') + 1, "vortex-patch-mgf-50"))
-      k++;
-    ck_assert_uint_lt(k, J4.n);
+    const size_t k = job_named(&J4, "vortex-patch-mgf-50");
     char other[4096];
     snprintf(other, sizeof other, "vsph %s 0123456789abcdef\n%s", VSPH_VERSION,
              strchr(J4.job[k].key, '\n') + 1);
