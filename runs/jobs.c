@@ -1206,6 +1206,17 @@ int vsph_jobs_get(const struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
   return st;
 }
 
+/* Whether the seal (key.txt) of folder @p dir lists file @p name. */
+static int seal_lists(const char *dir, const char *name) {
+  char path[700], line[300];
+  snprintf(path, sizeof path, "%s/key.txt", dir);
+  char *seal = vsph_files_slurp(path, NULL);
+  snprintf(line, sizeof line, "\n%s ", name);
+  const int listed = seal && strstr(seal, line) != NULL;
+  free(seal);
+  return listed;
+}
+
 /* A planned (or, unplanned, any) sealed run in folder @p dir whose seal
  * lists @p name: its path. */
 int vsph_jobs_file(const struct vsph_jobs *J, const char *dir, const char *name,
@@ -1219,13 +1230,7 @@ int vsph_jobs_file(const struct vsph_jobs *J, const char *dir, const char *name,
   if (j && vsph_folder_verify(dir, NULL, key, NULL, why, sizeof why) != 1)
     VSPH_FAIL(VSPH_EIO, "run %s is not sealed%s%s", dir, why[0] ? ": " : "",
               why);
-  snprintf(path, len, "%s/key.txt", dir);
-  char *seal = vsph_files_slurp(path, NULL);
-  char line[300];
-  snprintf(line, sizeof line, "\n%s ", name);
-  const int listed = seal && strstr(seal, line) != NULL;
-  free(seal);
-  if (!listed)
+  if (!seal_lists(dir, name))
     VSPH_FAIL(VSPH_EIO, "run %s holds no %s under its seal", dir, name);
   snprintf(path, len, "%s/%s", dir, name);
   return VSPH_OK;
@@ -1250,13 +1255,7 @@ void vsph_jobs_plan_free(struct vsph_jobs *J) {
 
 int vsph_jobs_holds(const struct vsph_jobs *J, const char *dir,
                     const char *name) {
-  char path[700], line[300];
-  snprintf(path, sizeof path, "%s/key.txt", vsph_jobs_where(J, dir));
-  char *seal = vsph_files_slurp(path, NULL);
-  snprintf(line, sizeof line, "\n%s ", name);
-  const int listed = seal && strstr(seal, line) != NULL;
-  free(seal);
-  return listed;
+  return seal_lists(vsph_jobs_where(J, dir), name);
 }
 
 /* Folder @p a's path relative to folder @p b, both absolute as realpath

@@ -367,6 +367,18 @@ static const struct vsph_test_outcome *budget_in(const char *dir,
   return vsph_test_shell(cmd);
 }
 
+/* An empty run archive DIR/ar (stored from an empty report folder
+ * DIR/empty), its path into @p ar. */
+static void empty_archive(const char *dir, char *ar, size_t len) {
+  char path[700];
+  snprintf(path, sizeof path, "%s/empty/runs", dir);
+  ck_assert_int_eq(vsph_files_mkdir(path), 0);
+  snprintf(path, sizeof path, "%s/empty", dir);
+  snprintf(ar, len, "%s/ar", dir);
+  struct vsph_archive_counts n;
+  ck_assert_int_eq(vsph_archive_store(path, ar, NULL, NULL, &n), 0);
+}
+
 /* `vsph report --budget --skip-archived AR`: the quick plan's costliest
  * run, its entry in AR sealed under its plan key by this build's sources
  * (so it stands: the plan asks for it with its settings, and its scene's
@@ -389,12 +401,7 @@ START_TEST(test_budget_skip_archived) {
   ck_assert_int_eq(jobs.job[top].kind, VSPH_JOBS_RUN);
   snprintf(name, sizeof name, "%s", strrchr(jobs.job[top].dir, '/') + 1);
   /* an empty archive, then the entry */
-  snprintf(path, sizeof path, "%s/empty/runs", dir);
-  ck_assert_int_eq(vsph_files_mkdir(path), 0);
-  snprintf(path, sizeof path, "%s/empty", dir);
-  snprintf(ar, sizeof ar, "%s/ar", dir);
-  struct vsph_archive_counts n;
-  ck_assert_int_eq(vsph_archive_store(path, ar, NULL, NULL, &n), 0);
+  empty_archive(dir, ar, sizeof ar);
   snprintf(path, sizeof path, "%s/runs/%s", ar, name);
   struct vsph_folder f;
   ck_assert_int_eq(vsph_folder_claim(&f, path, &vsph_folder_scene_run), 0);
@@ -488,12 +495,7 @@ START_TEST(test_assemble_from_archive) {
   struct vsph_jobs jobs;
   memset(&jobs, 0, sizeof jobs);
   ck_assert_int_eq(vsph_report_plan_jobs(path, 1, &jobs), 0);
-  snprintf(path, sizeof path, "%s/empty/runs", dir);
-  ck_assert_int_eq(vsph_files_mkdir(path), 0);
-  snprintf(path, sizeof path, "%s/empty", dir);
-  snprintf(ar, sizeof ar, "%s/ar", dir);
-  struct vsph_archive_counts n;
-  ck_assert_int_eq(vsph_archive_store(path, ar, NULL, NULL, &n), 0);
+  empty_archive(dir, ar, sizeof ar);
   static const char *const scenes[] = {"vortex-patch", "stretching-square",
                                        "standing-wave"};
   size_t made = 0;
