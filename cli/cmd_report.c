@@ -313,11 +313,12 @@ int vsph_cmd_report_main(int argc, char **argv) {
     if (bad) return bad;
   }
   if (from) {
-    if (!assemble || !full)
+    if (full ? !assemble : plan || budget || slurm)
       return vsph_args_fail(CMD,
-                            "--from-archive reads the FULL report's runs "
-                            "from a run archive: only with --full "
-                            "--assemble");
+                            "--from-archive reads runs from a run archive: "
+                            "with --full only when assembling (--assemble); "
+                            "a quick report not with --plan, --budget or "
+                            "--slurm");
     int bad = archive_input("--from-archive", from, dir);
     if (!bad) bad = judge_inputs();
     if (bad) return bad;

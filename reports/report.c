@@ -244,9 +244,17 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
   vsph_text_set(tv, "fidelity", "%s", R->runs.full ? "full" : "quick");
   vsph_text_set(tv, "cores", "%d", omp_get_num_procs());
   vsph_text_set(tv, "threads", "%d", omp_get_max_threads());
-  vsph_text_set(tv, "quick_note", "%s",
-                R->runs.full ? "" : vsph_text_get("report.quick_note"));
-  int st = vsph_report_say(R, "report.head");
+  char shared[1024] = "";
+  int st = VSPH_OK;
+  if (!R->runs.full && R->runs.from_archive) { /* the runs it read */
+    vsph_text_set(tv, "nread", "%zu", R->runs.from_archive);
+    vsph_text_set(tv, "nrun", "%zu", R->runs.jobs.n);
+    vsph_text_set(tv, "archive", "%s", R->runs.archive);
+    st = vsph_text_format(shared, sizeof shared, "report.quick_archive", tv);
+  }
+  vsph_text_set(tv, "quick_note", "%s%s",
+                R->runs.full ? "" : vsph_text_get("report.quick_note"), shared);
+  if (!st) st = vsph_report_say(R, "report.head");
   /* every part present, the claims first (the summary); a part's text
    * after its "<!-- appendix -->" mark goes to the appendices at the end */
   char *text[NPARTS] = {0};
@@ -486,6 +494,7 @@ static int read_archived(struct vsph_report *R, const char *adir,
                          const int *stands) {
   for (size_t k = 0; k < R->runs.jobs.n; k++) {
     struct vsph_jobs_job *j = &R->runs.jobs.job[k];
+    if (j->here && !R->runs.full) continue; /* a quick report makes it */
     R->runs.unjudged += !j->cached && stands[k] == VSPH_ARCHIVE_UNJUDGED;
     if (j->cached || stands[k] != VSPH_ARCHIVE_STANDS) continue;
     const char *slash = strrchr(j->dir, '/');
@@ -514,8 +523,9 @@ static int mark_archived(struct vsph_report *R,
   const char *adir = rp->from_archive ? rp->from_archive : rp->skip_archive;
   st = vsph_archive_standing(adir, &jd, stands);
   for (size_t k = 0; !st && k < R->runs.jobs.n; k++)
-    R->runs.jobs.job[k].archived =
-        stands[k] == VSPH_ARCHIVE_STANDS && !R->runs.jobs.job[k].cached;
+    R->runs.jobs.job[k].archived = stands[k] == VSPH_ARCHIVE_STANDS &&
+                                   !R->runs.jobs.job[k].cached &&
+                                   (rp->full || !R->runs.jobs.job[k].here);
   if (!st && rp->from_archive) st = read_archived(R, adir, stands);
   free(stands);
   vsph_report_plan_judge_free(&jd);
@@ -678,7 +688,8 @@ static int write_parts(struct vsph_report *R, unsigned long want,
     fprintf(stderr,
             "vsph report: wrote %s/report.md and report.html (%.0f s)\n",
             R->dir, omp_get_wtime() - t_all);
-  if (!st && R->runs.archive) st = archive_summary(R, parts_dir, stamp);
+  if (!st && R->runs.archive && R->runs.full)
+    st = archive_summary(R, parts_dir, stamp);
   return st;
 }
 

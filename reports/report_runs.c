@@ -93,7 +93,9 @@ int vsph_report_runs_plan_scene(struct vsph_report_runs *R, int sc) {
     for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
       const struct vsph_jobs_spec rs = {
           L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
-      st = vsph_jobs_plan_run(&R->jobs, &rs);
+      /* the finest rung's snapshots: the scene's pictures and profiles */
+      st = k == VSPH_REPORT_LADDER - 1 ? vsph_jobs_plan_here(&R->jobs, &rs)
+                                       : vsph_jobs_plan_run(&R->jobs, &rs);
       /* the vortex patch's ladder again on a Cartesian disc (section 6) */
       const struct vsph_jobs_spec cs = {
           L->scene, vsph_viscous_name(f),       L->res[k],
@@ -454,7 +456,7 @@ int vsph_report_runs_plan_baseline(struct vsph_report_runs *R) {
   for (size_t i = 0; i < vsph_report_runs_baseline_count() && !st; i++) {
     struct vsph_jobs_spec rs;
     baseline_spec(R, i, &rs);
-    st = vsph_jobs_plan_run(&R->jobs, &rs);
+    st = vsph_jobs_plan_here(&R->jobs, &rs); /* the archive's judge */
   }
   return st;
 }

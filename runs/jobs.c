@@ -178,6 +178,7 @@ int vsph_jobs_plan_add(struct vsph_jobs *J, struct vsph_jobs_job *j) {
   for (size_t k = 0; k < P->n; k++)
     if (!strcmp(P->job[k].dir, j->dir)) {
       const int same = !strcmp(P->job[k].key, j->key);
+      P->job[k].here |= j->here;
       vsph_jobs_free(j);
       if (same) return VSPH_OK;
       VSPH_FAIL(VSPH_EBUG,
@@ -213,6 +214,17 @@ int vsph_jobs_plan_run(struct vsph_jobs *J, const struct vsph_jobs_spec *rs) {
     vsph_jobs_free(&j);
     return st;
   }
+  return vsph_jobs_plan_add(J, &j);
+}
+
+int vsph_jobs_plan_here(struct vsph_jobs *J, const struct vsph_jobs_spec *rs) {
+  struct vsph_jobs_job j;
+  const int st = vsph_jobs_run(J, rs, &j);
+  if (st) {
+    vsph_jobs_free(&j);
+    return st;
+  }
+  j.here = 1;
   return vsph_jobs_plan_add(J, &j);
 }
 

@@ -40,6 +40,9 @@ struct vsph_jobs_job {
   double neighbours;              /* of each particle, every pass */
   int cached;                     /* its key.txt matches */
   int archived; /* a run archive holds it, standing: a budget skips it */
+  int here;     /* a quick report makes it here, never reads it from a run
+                   archive: a baseline row's run, or one whose snapshots a
+                   part reads (vsph_jobs_plan_here) */
   int failed;   /* the pool: did not end */
   /* an assembly from a run archive: the entry its files are read from
    * when its own folder lacks it ("" otherwise), and the key that entry
@@ -112,6 +115,13 @@ int vsph_jobs_plan_add(struct vsph_jobs *J, struct vsph_jobs_job *j);
 
 /* The same for a solver run. */
 int vsph_jobs_plan_run(struct vsph_jobs *J, const struct vsph_jobs_spec *rs);
+
+/* The same, the run marked `here`: a quick report makes it itself even
+ * where a run archive holds it standing (a baseline row's run, whose
+ * figures the archive's rule is judged by; a run whose snapshots a part
+ * reads, which the archive does not keep). Planned both ways, it is
+ * `here`. */
+int vsph_jobs_plan_here(struct vsph_jobs *J, const struct vsph_jobs_spec *rs);
 
 /* Make sure the folder of @p j holds its run before a part reads it: with
  * a sealed plan, it must be listed and cached (else a failure naming it);

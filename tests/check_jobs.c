@@ -18,6 +18,7 @@
 #include "../reports/report.h"
 #include "../reports/report_claims.h"
 #include "../reports/report_parts.h"
+#include "../reports/report_runs.h"
 #include "../runs/archive.h"
 #include "../runs/folder.h"
 #include "../runs/rundir.h"
@@ -484,8 +485,8 @@ static size_t res_of(const char *name) {
  * = -1, so the initial dissipation error, (P_visc(0) - dE_k,ref/dt(0)) /
  * |dE_k,ref/dt(0)|, is -1/res. AR/summary.md then holds the convergence
  * tables and says how many runs came from AR; the report's facts and
- * run.json say it too. Refused (exit 2, nothing written): without --full
- * or --assemble, or with --out inside AR. An entry changed after its seal
+ * run.json say it too. Refused (exit 2, nothing written): --full without
+ * --assemble, a --plan, or --out inside AR. An entry changed after its seal
  * no longer stands: the assembly fails naming the missing run (exit 1),
  * and AR/summary.md is untouched. */
 START_TEST(test_assemble_from_archive) {
@@ -536,8 +537,7 @@ START_TEST(test_assemble_from_archive) {
       0);
   /* refused, nothing written */
   static const char *const refused[] = {
-      "--full --from-archive ar --out r",
-      "--assemble --from-archive ar --out r",
+      "--full --from-archive ar --out r", "--plan --from-archive ar --out r",
       "--full --assemble --from-archive ar --out ar/runs/x",
       "--full --assemble --from-archive nowhere --out r"};
   char cmd[2000];
@@ -670,12 +670,120 @@ START_TEST(test_assemble_from_archive) {
 }
 END_TEST
 
+/* A quick report with --from-archive AR: a run of its plan that stands in
+ * AR (here: an entry sealed under the quick run's own key by this build's
+ * sources) is read from there, except the runs it must make itself (its
+ * plan marks them `here`): the finest rung of each ladder, whose
+ * snapshots the scenes part draws, and the baseline rows' runs. With
+ * entries for every free-surface run and nothing cached, the quick
+ * assembly of the convergence part (which runs nothing) misses exactly
+ * the `here` runs of that part's plan, counted independently from the
+ * plan, and names one of them. Without --from-archive it misses every
+ * run. */
+START_TEST(test_quick_from_archive) {
+  const char *dir = tmpdir();
+  char path[1200], ar[600], text[600], cmd[2000];
+  snprintf(path, sizeof path, "%s/q", dir);
+  struct vsph_jobs jobs;
+  memset(&jobs, 0, sizeof jobs);
+  ck_assert_int_eq(vsph_report_plan_jobs(path, 0, &jobs), 0);
+  empty_archive(dir, ar, sizeof ar);
+  static const char *const scenes[] = {"vortex-patch", "stretching-square",
+                                       "standing-wave"};
+  size_t made = 0;
+  for (size_t k = 0; k < jobs.n; k++) {
+    const struct vsph_jobs_job *j = &jobs.job[k];
+    int free_surface = 0;
+    for (int s = 0; s < 3; s++) free_surface |= !strcmp(j->scene, scenes[s]);
+    if (j->kind != VSPH_JOBS_RUN || !free_surface) continue;
+    const char *name = strrchr(j->dir, '/') + 1;
+    snprintf(path, sizeof path, "%s/runs/%s", ar, name);
+    struct vsph_folder f;
+    ck_assert_int_eq(vsph_folder_claim(&f, path, &vsph_folder_scene_run), 0);
+    snprintf(text, sizeof text, "{\"scene\": \"%s\", \"status\": \"ok\"}\n",
+             j->scene);
+    ck_assert_int_eq(vsph_files_write(path, "run.json", text), 0);
+    ck_assert_int_eq(
+        vsph_files_write(path, "energy.csv",
+                         "t,Ek,Ep,Ec,P_visc,residual,dEk_dt,Ek_ref,dEk_ref,"
+                         "Em_ref,dEm_ref\n0,1,0,0,-1,0,-1,1,-1,1,-1\n"),
+        0);
+    ck_assert_int_eq(vsph_folder_seal(&f, j->key, NULL), 0);
+    vsph_folder_release(&f);
+    made++;
+  }
+  vsph_jobs_plan_free(&jobs);
+  ck_assert_uint_ge(made, 40);
+  snprintf(path, sizeof path, "%s/reports", dir);
+  ck_assert_int_eq(vsph_files_mkdir(path), 0);
+  ck_assert_int_eq(
+      vsph_files_write(path, "baseline.csv",
+                       "scene,visc\nvortex-patch,mgf\nstretching-square,"
+                       "mgf\nstanding-wave,mgf\n"),
+      0);
+  /* the convergence part's plan: the three ladders (the vortex patch's
+   * twice), the square's four references; its `here` runs, counted from
+   * the ladders' finest rung on the rings layout */
+  size_t nplan = 0, nhere = 0;
+  {
+    struct vsph_report_runs R;
+    memset(&R, 0, sizeof R);
+    snprintf(path, sizeof path, "%s/q", dir);
+    R.jobs.dir = path;
+    ck_assert_int_eq(vsph_report_runs_plan_ladders(&R, 1), 0);
+    nplan = R.jobs.n;
+    for (size_t k = 0; k < R.jobs.n; k++) {
+      const char *name = strrchr(R.jobs.job[k].dir, '/') + 1;
+      size_t finest = 0;
+      for (int s = 0; s < 3; s++) {
+        const struct vsph_report_ladderdef *L =
+            vsph_report_runs_ladder(&R, s, 0);
+        for (int f = 0; f < 3; f++) {
+          char want[128];
+          snprintf(want, sizeof want, "%s-%s-%zu", L->scene,
+                   vsph_viscous_name(f), L->res[VSPH_REPORT_LADDER - 1]);
+          finest += !strcmp(name, want);
+        }
+      }
+      ck_assert_msg(R.jobs.job[k].here == (finest > 0), "%s: here %d", name,
+                    R.jobs.job[k].here);
+      nhere += finest;
+    }
+    /* a baseline row's run, planned before by its ladder, is `here` now */
+    ck_assert_int_eq(vsph_report_runs_plan_baseline(&R), 0);
+    const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(&R, 0, 0);
+    snprintf(text, sizeof text, "%s-mgf-%zu", L->scene, L->res[0]);
+    ck_assert_int_eq(R.jobs.job[job_named(&R.jobs, text)].here, 1);
+    vsph_jobs_plan_free(&R.jobs);
+  }
+  ck_assert_uint_eq(nhere, 9);
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --assemble "
+           "--from-archive ar --out q --only convergence",
+           dir);
+  const struct vsph_test_outcome *o = vsph_test_shell(cmd);
+  snprintf(text, sizeof text, "%zu of the %zu runs are missing", nhere, nplan);
+  ck_assert_msg(o->status == 1 && strstr(o->err, text) && strstr(o->err, "-40"),
+                "want '%s' naming a finest rung: %s", text, o->err);
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --assemble "
+           "--out q2 --only convergence",
+           dir);
+  o = vsph_test_shell(cmd);
+  snprintf(text, sizeof text, "%zu of the %zu runs are missing", nplan, nplan);
+  ck_assert_msg(o->status == 1 && strstr(o->err, text), "want '%s': %s", text,
+                o->err);
+  rmrf(dir);
+}
+END_TEST
+
 Suite *vsph_jobs_suite(void) {
   Suite *s = suite_create("jobs");
   TCase *tc = tcase_create("jobs");
   tcase_set_timeout(tc, 60);
   tcase_add_test(tc, test_key_canonical);
   tcase_add_test(tc, test_assemble_from_archive);
+  tcase_add_test(tc, test_quick_from_archive);
   tcase_add_test(tc, test_command_is_the_run);
   tcase_add_test(tc, test_pool);
   tcase_add_test(tc, test_estimate_neighbours);
