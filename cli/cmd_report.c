@@ -194,12 +194,14 @@ int vsph_cmd_report_main(int argc, char **argv) {
        "reports/baseline.csv), so a sitting goes on from the archive "
        "whatever build made it (make full-sitting)"},
       {"--from-archive", VSPH_ARGS_STRING, &from, "ADIR",
-       "with --full --assemble: each run DIR lacks that stands in the run "
-       "archive ADIR (judged as for --skip-archived) is read from its entry "
-       "there; then ADIR/summary.md gets the report's claims and "
-       "convergence tables (make full-report). A part that draws "
-       "snapshots leaves out the pictures of a run read from the archive, "
-       "which keeps none, and says so"},
+       "each run DIR lacks that stands in the run archive ADIR (judged as "
+       "for --skip-archived) is read from its entry there instead of run. "
+       "With --full (and --assemble): then ADIR/summary.md gets the "
+       "report's claims and convergence tables (make full-report), and a "
+       "part that draws snapshots leaves out the pictures of a run read "
+       "from the archive, which keeps none, and says so. A quick report "
+       "(make report gives it reports/full) still makes its baseline rows' "
+       "runs and the runs whose snapshots it draws"},
       {"--beside", VSPH_ARGS_STRING, &beside, "ADIR",
        "the summary shows, beside the quick ladder's finest run of each "
        "scene and formulation, the run at the paper's resolution from the "
