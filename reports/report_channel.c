@@ -1470,17 +1470,20 @@ static int map_claims(struct vsph_report *R, const struct chan *c) {
            "1 [reconstructed] or the solver's stop",
            c->res_m, c->res_m, R->runs.full ? "0.5-50" : "0.5, 5, 50");
   pois_setup(setup, sizeof setup, what);
-  /* the robustness map: the first Re at which E, D or C fails, and each
+  /* the robustness map: the first Re at which any model fails (the
+   * paper's "all models"), the first at which E, D or C fails, and each
    * form's robustness as the sum over the Re run of min(t*_fail, 27.66) */
   int nre;
   const int *col = map_cols(R, &nre);
-  double score[NMAP] = {0}, first = INFINITY, held = 0.0;
+  double score[NMAP] = {0}, first = INFINITY, any = INFINITY, held = 0.0;
+  int who = -1; /* the model that fails first (the first in table order) */
   for (int f = 0; f < NMAP; f++)
     for (int q = 0; q < nre; q++) {
       char why;
       const double tf = failure(&c->map[f][col[q]], &why);
       score[f] += fmin(tf, TSTAR_END);
       if (f <= MAP_C && isfinite(tf)) first = fmin(first, MAP_RE[col[q]]);
+      if (isfinite(tf) && MAP_RE[col[q]] < any) any = MAP_RE[col[q]], who = f;
     }
   for (int q = 0; q < nre; q++) { /* the largest Re all of E, D, C hold */
     int all = 1;
@@ -1491,17 +1494,21 @@ static int map_claims(struct vsph_report *R, const struct chan *c) {
     if (all) held = fmax(held, MAP_RE[col[q]]);
   }
   snprintf(ours, sizeof ours,
-           "%zu x %zu to t* = 27.7: E, D and C hold at Re = %g, the first "
-           "failure at Re = %g",
-           c->res_m, c->res_m, held, first);
-  char verdict[160];
-  if (first <= 2.0)
-    snprintf(verdict, sizeof verdict, "reproduced on a substitute");
-  else if (first <= 10.0)
+           "%zu x %zu to t* = 27.7: the first failure at Re = %g, by %s; E, "
+           "D and C hold at Re = %g and fail from Re = %g",
+           c->res_m, c->res_m, any, who >= 0 ? MAP_LABEL[who] : "none", held,
+           first);
+  char verdict[200];
+  if (any <= 2.0)
     snprintf(verdict, sizeof verdict,
-             "partly: the failures start between Re = %g and %g on the Re "
-             "run (section 10)",
-             held, first);
+             "reproduced on a substitute: the failure criterion (eq. 38 >= 12 "
+             "%%) is ours [reconstructed]; the robust models E, D, C hold "
+             "longer (section 10)");
+  else if (any <= 10.0)
+    snprintf(verdict, sizeof verdict,
+             "partly: the first failure is at Re = %g on the Re run (section "
+             "10)",
+             any);
   else
     snprintf(verdict, sizeof verdict, "differs");
   if (!st)
