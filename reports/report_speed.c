@@ -197,7 +197,10 @@ int vsph_report_speed_write(struct vsph_report *R) {
   vsph_text_set(&R->tv, "cfl_where", "%s",
                 R->runs.full
                     ? "these are the FULL report's ladders, whose finest "
-                      "rungs the CFL sweep does not run"
+                      "rungs the CFL sweep does not run; raising the default "
+                      "changes the baseline rows of the scenes it steps, so "
+                      "their archived runs would be made again first "
+                      "(docs/theory.md section 5)"
                     : "these are the quick resolutions, where the time "
                       "step's share of the error is small beside the "
                       "resolution's, and the FULL report decides");
