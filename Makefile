@@ -211,13 +211,14 @@ HISTORY = if err=$$(scripts/source-commits $(BUILD)/history $(HISTORY_N) \
 # The quick report shows beside its figures the paper-resolution runs of
 # reports/full (when there is one), judged with that history, and reads
 # from there the runs it shares with the FULL plan that stand (README:
-# --from-archive); FRESH=1 makes them here instead.
+# --from-archive); FRESH=1 makes them here instead (FRESH=0 or unset:
+# read).
 report: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph
 	@$(HISTORY); VSPH_ARCHIVE_HISTORY=$$h $(BUILD)/vsph report \
 	  --out reports/out $(if $(FULL),--full,$(if $(wildcard \
-	  reports/full),--beside reports/full $(if $(FRESH),,--from-archive \
-	  reports/full)))
+	  reports/full),--beside reports/full $(if $(filter-out 0,$(FRESH)),, \
+	  --from-archive reports/full)))
 
 # Re-record the regression baseline (tests/check_baseline.c) after an
 # intended change to the numerics; commit reports/baseline.csv with a reason.

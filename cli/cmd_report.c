@@ -200,8 +200,9 @@ int vsph_cmd_report_main(int argc, char **argv) {
        "report's claims and convergence tables (make full-report), and a "
        "part that draws snapshots leaves out the pictures of a run read "
        "from the archive, which keeps none, and says so. A quick report "
-       "(make report gives it reports/full) still makes its baseline rows' "
-       "runs and the runs whose snapshots it draws"},
+       "(make report gives it reports/full) still makes the runs whose "
+       "snapshots it draws and, with its scenes part, its baseline rows' "
+       "runs"},
       {"--beside", VSPH_ARGS_STRING, &beside, "ADIR",
        "the summary shows, beside the quick ladder's finest run of each "
        "scene and formulation, the run at the paper's resolution from the "

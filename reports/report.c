@@ -244,17 +244,17 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
   vsph_text_set(tv, "fidelity", "%s", R->runs.full ? "full" : "quick");
   vsph_text_set(tv, "cores", "%d", omp_get_num_procs());
   vsph_text_set(tv, "threads", "%d", omp_get_max_threads());
-  char shared[1024] = "";
-  int st = VSPH_OK;
-  if (!R->runs.full && R->runs.from_archive) { /* the runs it read */
-    vsph_text_set(tv, "nread", "%zu", R->runs.from_archive);
-    vsph_text_set(tv, "nrun", "%zu", R->runs.jobs.n);
-    vsph_text_set(tv, "archive", "%s", R->runs.archive);
-    st = vsph_text_format(shared, sizeof shared, "report.quick_archive", tv);
-  }
-  vsph_text_set(tv, "quick_note", "%s%s",
-                R->runs.full ? "" : vsph_text_get("report.quick_note"), shared);
-  if (!st) st = vsph_report_say(R, "report.head");
+  vsph_text_set(tv, "quick_note", "%s",
+                R->runs.full ? "" : vsph_text_get("report.quick_note"));
+  int st = vsph_report_say(R, "report.head");
+  /* the runs a quick report read from the archive: a paragraph of its own
+   * (the archive's name is at most 200 characters) */
+  vsph_text_set(tv, "nread", "%zu", R->runs.from_archive);
+  vsph_text_set(tv, "nrun", "%zu", R->runs.jobs.n);
+  vsph_text_set(tv, "archive", "%s", R->runs.archive ? R->runs.archive : "");
+  if (!st && !R->runs.full && R->runs.from_archive)
+    st = vsph_report_say(R, "report.quick_archive");
+  if (!st) st = vsph_report_say(R, "report.head_sources");
   /* every part present, the claims first (the summary); a part's text
    * after its "<!-- appendix -->" mark goes to the appendices at the end */
   char *text[NPARTS] = {0};
@@ -552,8 +552,9 @@ static int make_runs(struct vsph_report *R, const struct vsph_report_props *rp,
                         ? "nothing: assembly only"
                         : "this process";
   if (!st && rp->mode != VSPH_REPORT_ASSEMBLE) {
-    for (size_t k = 0; k < R->runs.jobs.n; k++)
-      R->runs.made += !R->runs.jobs.job[k].cached;
+    for (size_t k = 0; k < R->runs.jobs.n; k++) /* not those read */
+      R->runs.made +=
+          !R->runs.jobs.job[k].cached && !R->runs.jobs.job[k].from[0];
     const double t_runs = omp_get_wtime();
     if (rp->writing) *rp->writing = 1; /* runs stop after a checkpoint */
     st = run_missing(R, rp);
