@@ -1,6 +1,7 @@
 #include "cells.h"
 
 #include <math.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -56,8 +57,15 @@ static int reserve_particles(struct vsph_cells *c, size_t n) {
   return VSPH_OK;
 }
 
+/* The next build's number: unique across every cell list and thread. */
+static unsigned long next_gen(void) {
+  static atomic_ulong gen = 0;
+  return atomic_fetch_add(&gen, 1) + 1;
+}
+
 int vsph_cells_build_direct(struct vsph_cells *c,
                             const struct vsph_particles *p) {
+  c->gen = 0; /* no longer the build a plan was made on */
   int st = reserve_cells(c, 1);
   if (st) return st;
   c->dim = p->dim;
@@ -67,6 +75,7 @@ int vsph_cells_build_direct(struct vsph_cells *c,
   c->ncells = 1;
   c->start[0] = 0;
   c->count[0] = p->n;
+  c->gen = next_gen();
   return VSPH_OK;
 }
 
@@ -74,6 +83,7 @@ int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
                      double radius) {
   const int dim = p->dim;
   const size_t n = p->n;
+  c->gen = 0; /* no longer the build a plan was made on */
   if (!(radius > 0.0) || !isfinite(radius))
     VSPH_FAIL(VSPH_EINVAL, "cell radius must be positive, got %g", radius);
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
@@ -141,6 +151,7 @@ int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
   for (size_t i = 0; i < n; i++) c->perm[c->start[c->key[i]]++] = i;
   for (size_t q = 0; q < ncells; q++) c->start[q] -= c->count[q];
   vsph_particles_permute(p, c->perm, c->dscratch, c->iscratch);
+  c->gen = next_gen();
   return VSPH_OK;
 }
 

@@ -23,20 +23,23 @@ struct vsph_particles;
 
 /** Uniform grid of cells with edge >= radius / VSPH_CELLS_SUB. */
 struct vsph_cells {
-  int dim;          /*!< dimension */
-  int direct;       /*!< 1: a single cell, the O(N^2) reference path */
-  double edge;      /*!< cell edge (m) */
-  double lo[3];     /*!< lower corner of the grid (m) */
-  size_t nc[3];     /*!< cells along each axis (1 beyond dim) */
-  size_t ncells;    /*!< total cells */
-  size_t *start;    /*!< first particle of each cell */
-  size_t *count;    /*!< particles in each cell */
-  size_t cap_cells; /*!< allocated length of start and count */
-  size_t *key;      /*!< scratch: cell of each particle */
-  size_t *perm;     /*!< scratch: sorting permutation */
-  double *dscratch; /*!< scratch for the particle permutation */
-  size_t *iscratch; /*!< scratch for the particle permutation */
-  size_t cap_n;     /*!< allocated length of the per-particle scratch */
+  int dim;           /*!< dimension */
+  int direct;        /*!< 1: a single cell, the O(N^2) reference path */
+  double edge;       /*!< cell edge (m) */
+  double lo[3];      /*!< lower corner of the grid (m) */
+  size_t nc[3];      /*!< cells along each axis (1 beyond dim) */
+  size_t ncells;     /*!< total cells */
+  size_t *start;     /*!< first particle of each cell */
+  size_t *count;     /*!< particles in each cell */
+  size_t cap_cells;  /*!< allocated length of start and count */
+  size_t *key;       /*!< scratch: cell of each particle */
+  size_t *perm;      /*!< scratch: sorting permutation */
+  double *dscratch;  /*!< scratch for the particle permutation */
+  size_t *iscratch;  /*!< scratch for the particle permutation */
+  size_t cap_n;      /*!< allocated length of the per-particle scratch */
+  unsigned long gen; /*!< this build's number, unique among all cell lists
+                          of the process (0: never built): what a workspace
+                          planned on the cells compares */
 };
 
 /** @brief Allocate an empty cell list. NULL on failure. */

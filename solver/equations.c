@@ -619,14 +619,17 @@ static int contact_init(const struct vsph_equations_props *ep,
 /* ------------------------------------------------- the symmetric sweep */
 
 struct vsph_equations_sweep {
-  size_t nblk;    /* blocks of the last plan */
-  size_t cap_blk; /* allocated blocks */
-  size_t *c0;     /* first cell of each block; c0[nblk] = ncells */
-  size_t *lo;     /* the first particle each block's buffer holds ... */
-  size_t *hi;     /* ... and one past its last */
-  size_t *off;    /* where each block's buffer starts in buf (doubles) */
-  double *buf;    /* the blocks' buffers, nf doubles per particle */
-  size_t cap_buf; /* allocated doubles */
+  size_t nblk;       /* blocks of the last plan */
+  size_t cap_blk;    /* allocated blocks */
+  size_t *c0;        /* first cell of each block; c0[nblk] = ncells */
+  size_t *lo;        /* the first particle each block's buffer holds ... */
+  size_t *hi;        /* ... and one past its last */
+  size_t *off;       /* where each block's buffer starts in buf (doubles) */
+  double *buf;       /* the blocks' buffers, nf doubles per particle */
+  size_t cap_buf;    /* allocated doubles */
+  unsigned long gen; /* the cells' build the blocks were planned on (0:
+                        none): the RK4 stages of a step share it */
+  size_t plan_n;     /* and the particle count */
 };
 
 struct vsph_equations_sweep *vsph_equations_sweep_alloc(void) {
@@ -666,8 +669,39 @@ static size_t sweep_block_size(size_t n) {
  * sweep_block_size particles, each with the index range its pairs reach
  * (every j > i of its particles lies in its cells' ranges), and their
  * buffers, nf doubles per particle, laid end to end. */
+static int sweep_blocks(struct vsph_equations_sweep *sw,
+                        const struct vsph_cells *cells, size_t n);
+
 static int sweep_plan(struct vsph_equations_sweep *sw,
                       const struct vsph_cells *cells, size_t n, int nf) {
+  /* the blocks and their reach: as planned on this build of the cells
+   * (the four RK4 stages of a step), or planned now */
+  if (!cells->gen || sw->gen != cells->gen || sw->plan_n != n) {
+    const int st = sweep_blocks(sw, cells, n);
+    if (st) return st;
+  }
+  size_t total = 0;
+  for (size_t b = 0; b < sw->nblk; b++) {
+    sw->off[b] = total;
+    total += (sw->hi[b] - sw->lo[b]) * (size_t)nf;
+  }
+  if (total > sw->cap_buf) {
+    const size_t cap = total + total / 4;
+    double *r = realloc(sw->buf, cap * sizeof *r);
+    if (!r)
+      VSPH_FAIL(VSPH_ENOMEM, "cannot grow the sweep's buffers to %zu MiB",
+                cap * sizeof *r >> 20);
+    sw->buf = r;
+    sw->cap_buf = cap;
+  }
+  return VSPH_OK;
+}
+
+/* The blocks of the cells' build: runs of whole cells of about
+ * sweep_block_size particles, and each one's reach (sweep_plan). */
+static int sweep_blocks(struct vsph_equations_sweep *sw,
+                        const struct vsph_cells *cells, size_t n) {
+  sw->gen = 0; /* valid once planned whole */
   const size_t target = sweep_block_size(n);
   size_t nblk = 0, acc = 0;
   int open = 0; /* a block is open: the next cell joins it */
@@ -715,20 +749,8 @@ static int sweep_plan(struct vsph_equations_sweep *sw,
     sw->lo[b] = lo;
     sw->hi[b] = hi;
   }
-  size_t total = 0;
-  for (b = 0; b < nblk; b++) {
-    sw->off[b] = total;
-    total += (sw->hi[b] - sw->lo[b]) * (size_t)nf;
-  }
-  if (total > sw->cap_buf) {
-    const size_t cap = total + total / 4;
-    double *r = realloc(sw->buf, cap * sizeof *r);
-    if (!r)
-      VSPH_FAIL(VSPH_ENOMEM, "cannot grow the sweep's buffers to %zu MiB",
-                cap * sizeof *r >> 20);
-    sw->buf = r;
-    sw->cap_buf = cap;
-  }
+  sw->gen = cells->gen;
+  sw->plan_n = n;
   return VSPH_OK;
 }
 
@@ -857,7 +879,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block(
       const double fs[3] = {f0, f1, f2}, vs[3] = {v0, v1, v2};
       for (int a = 0; a < dim; a++) q[SW_F + a] += fs[a];
       q[SW_CONT(dim)] += cont;
-      q[SW_DELTA(dim)] += dsum;
+      if (nf > SW_DELTA(dim)) q[SW_DELTA(dim)] += dsum;
       if (parts)
         for (int a = 0; a < dim; a++) q[SW_VISC(dim) + a] += vs[a];
     }
@@ -879,49 +901,89 @@ static size_t sweep_span(const struct vsph_equations_sweep *sw,
   return b;
 }
 
-/* Particle i's nf sums into s: its entries in blocks first..b, added in
- * block order. */
-static void sweep_sums(const struct vsph_equations_sweep *sw, size_t first,
-                       size_t b, size_t i, int nf, double *s) {
-  for (int a = 0; a < nf; a++) s[a] = 0.0;
+/* The particles of block b, [i0, i1), their nf sums each into the rows
+ * of @p t: every buffer of blocks first..b that reaches into the block
+ * added over the block's particles in one contiguous run, in block order
+ * (so each particle's sum is its entries added in block order, from
+ * zero). */
+static void sweep_rows(const struct vsph_equations_sweep *sw, size_t first,
+                       size_t b, size_t i0, size_t i1, int nf, double *t) {
+  memset(t, 0, (i1 - i0) * (size_t)nf * sizeof *t);
   for (size_t e = first; e <= b; e++) {
-    if (sw->hi[e] <= i) continue;
-    const double *q = sw->buf + sw->off[e] + (i - sw->lo[e]) * (size_t)nf;
-    for (int a = 0; a < nf; a++) s[a] += q[a];
+    const size_t end = sw->hi[e] < i1 ? sw->hi[e] : i1;
+    if (end <= i0) continue;
+    const double *q = sw->buf + sw->off[e] + (i0 - sw->lo[e]) * (size_t)nf;
+    const size_t m = (end - i0) * (size_t)nf;
+    for (size_t k = 0; k < m; k++) t[k] += q[k];
+  }
+}
+
+/* The particles of the largest block (the rows sweep_rows needs). */
+static size_t sweep_most(const struct vsph_equations_sweep *sw,
+                         const struct vsph_cells *cells) {
+  size_t most = 1;
+  for (size_t b = 0; b < sw->nblk; b++) {
+    const size_t last = sw->c0[b + 1] - 1,
+                 end = cells->start[last] + cells->count[last];
+    most = end - sw->lo[b] > most ? end - sw->lo[b] : most;
+  }
+  return most;
+}
+
+/* Particle i's right-hand side from its sums @p s (sweep_finish). */
+static inline void finish_one(const struct rhs_ctx *rc,
+                              const struct vsph_particles *p, size_t i, int dim,
+                              const double *s, struct vsph_equations_out *out) {
+  const double rhoi = p->rho[i], rinv = 1.0 / rhoi;
+  const double cont = s[SW_CONT(dim)], dsum = s[SW_DELTA(dim)];
+  if (rc->gas) out->de[i] = p->p[i] * cont * rinv;
+  double x[3] = {0, 0, 0}, g[3];
+  for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
+  vsph_equations_body_force(rc->ep, x, g);
+  out->drho[i] = rhoi * cont + rc->dhc * dsum;
+  for (int a = 0; a < dim; a++) out->acc[a][i] = rinv * s[SW_F + a] + g[a];
+  if (rc->parts) {
+    for (int a = 0; a < dim; a++)
+      out->acc_visc[a][i] = rinv * s[SW_VISC(dim) + a];
+    out->drho_delta[i] = rc->dhc * dsum;
   }
 }
 
 /* Each fluid particle's sums from the block buffers that hold it, in
- * block order, into the right-hand side. */
-static void sweep_finish(const struct rhs_ctx *rc,
-                         const struct vsph_particles *p, size_t n_fluid,
-                         const struct vsph_cells *cells,
-                         const struct vsph_equations_sweep *sw, int nf,
-                         struct vsph_equations_out *out) {
+ * block order, into the right-hand side: block by block, each buffer
+ * that reaches into the block added over the block's particles in one
+ * contiguous run (the same additions, in the same order per particle, as
+ * sweep_sums), into a scratch row of @p nf doubles a particle. Fields past
+ * nf (the delta-SPH sum without delta-SPH) are zero. */
+static int sweep_finish(const struct rhs_ctx *rc,
+                        const struct vsph_particles *p, size_t n_fluid,
+                        const struct vsph_cells *cells,
+                        const struct vsph_equations_sweep *sw, int nf,
+                        struct vsph_equations_out *out) {
   const int dim = p->dim;
-#pragma omp parallel for schedule(dynamic, 1)
-  for (size_t b = 0; b < sw->nblk; b++) {
-    size_t i0, i1;
-    const size_t first = sweep_span(sw, cells, b, &i0, &i1);
-    for (size_t i = i0; i < i1; i++) {
-      if (p->id[i] >= n_fluid) continue;
-      double s[3 + 2 + 3];
-      sweep_sums(sw, first, b, i, nf, s);
-      const double rhoi = p->rho[i], rinv = 1.0 / rhoi;
-      const double cont = s[SW_CONT(dim)], dsum = s[SW_DELTA(dim)];
-      if (rc->gas) out->de[i] = p->p[i] * cont * rinv;
-      double x[3] = {0, 0, 0}, g[3];
-      for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
-      vsph_equations_body_force(rc->ep, x, g);
-      out->drho[i] = rhoi * cont + rc->dhc * dsum;
-      for (int a = 0; a < dim; a++) out->acc[a][i] = rinv * s[SW_F + a] + g[a];
-      if (rc->parts) {
-        for (int a = 0; a < dim; a++)
-          out->acc_visc[a][i] = rinv * s[SW_VISC(dim) + a];
-        out->drho_delta[i] = rc->dhc * dsum;
+  const size_t most = sweep_most(sw, cells);
+  int bad = 0;
+#pragma omp parallel reduction(| : bad)
+  {
+    double *const t = malloc(most * (size_t)nf * sizeof *t);
+    bad = !t;
+#pragma omp for schedule(dynamic, 1)
+    for (size_t b = 0; b < sw->nblk; b++) {
+      if (!t) continue;
+      size_t i0, i1;
+      const size_t first = sweep_span(sw, cells, b, &i0, &i1);
+      sweep_rows(sw, first, b, i0, i1, nf, t);
+      for (size_t i = i0; i < i1; i++) {
+        if (p->id[i] >= n_fluid) continue;
+        double s[3 + 2 + 3] = {0};
+        for (int a = 0; a < nf; a++) s[a] = t[(i - i0) * (size_t)nf + a];
+        finish_one(rc, p, i, dim, s, out);
       }
     }
+    free(t);
   }
+  if (bad) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the sweep's finishing rows");
+  return VSPH_OK;
 }
 
 /* One block's sweep, specialised. */
@@ -1064,16 +1126,27 @@ static int grad_sweep(const struct vsph_viscous_props *vp,
       grad_block(pk, p, cells, sw, b, 2, G);
     else
       grad_block(pk, p, cells, sw, b, 3, G);
-#pragma omp parallel for schedule(dynamic, 1)
-  for (size_t b = 0; b < sw->nblk; b++) {
-    size_t i0, i1;
-    const size_t first = sweep_span(sw, cells, b, &i0, &i1);
-    for (size_t i = i0; i < i1; i++) {
-      double s[18];
-      sweep_sums(sw, first, b, i, nf, s);
-      vsph_viscous_pvwf_finish(vp, ws, i, s, s + dd);
+  const size_t most = sweep_most(sw, cells);
+  int bad = 0;
+#pragma omp parallel reduction(| : bad)
+  {
+    double *const t = malloc(most * (size_t)nf * sizeof *t);
+    bad = !t;
+#pragma omp for schedule(dynamic, 1)
+    for (size_t b = 0; b < sw->nblk; b++) {
+      if (!t) continue;
+      size_t i0, i1;
+      const size_t first = sweep_span(sw, cells, b, &i0, &i1);
+      sweep_rows(sw, first, b, i0, i1, nf, t);
+      for (size_t i = i0; i < i1; i++) {
+        const double *s = t + (i - i0) * (size_t)nf;
+        vsph_viscous_pvwf_finish(vp, ws, i, s, s + dd);
+      }
     }
+    free(t);
   }
+  if (bad)
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the sweep's first-pass rows");
   size_t nfb = 0; /* serial: reproducible */
   for (size_t i = 0; i < p->n; i++) nfb += ws->fallback[i];
   ws->n_fallback = nfb;
@@ -1087,7 +1160,10 @@ static int run_sweep(const struct rhs_ctx *rc, sweep_fn *fn,
                      const struct vsph_cells *cells, size_t n_fluid,
                      struct vsph_equations_out *out) {
   struct vsph_equations_sweep *sw = out->sweep;
-  const int dim = p->dim, nf = dim + 2 + (rc->parts ? dim : 0);
+  /* the fields: force and continuity; the delta-SPH sum with delta-SPH
+   * or the parts; the viscous force with the parts */
+  const int dim = p->dim,
+            nf = dim + 1 + (rc->dhc > 0.0 || rc->parts) + (rc->parts ? dim : 0);
   const int st = sweep_plan(sw, cells, p->n, nf);
   if (st) return st;
   size_t total = 0;
@@ -1100,7 +1176,8 @@ static int run_sweep(const struct rhs_ctx *rc, sweep_fn *fn,
     total += fn(rc, p, cells, n_fluid, sw, b, nf, &m);
     min_s2 = m < min_s2 ? m : min_s2;
   }
-  sweep_finish(rc, p, n_fluid, cells, sw, nf, out);
+  const int sf = sweep_finish(rc, p, n_fluid, cells, sw, nf, out);
+  if (sf) return sf;
   out->interactions = total;
   out->min_s2 = min_s2;
   return VSPH_OK;
