@@ -955,12 +955,16 @@ static inline void finish_one(const struct rhs_ctx *rc,
  * contiguous run (the same additions, in the same order per particle, as
  * sweep_sums), into a scratch row of @p nf doubles a particle. Fields past
  * nf (the delta-SPH sum without delta-SPH) are zero. */
-static int sweep_finish(const struct rhs_ctx *rc,
-                        const struct vsph_particles *p, size_t n_fluid,
-                        const struct vsph_cells *cells,
-                        const struct vsph_equations_sweep *sw, int nf,
-                        struct vsph_equations_out *out) {
-  const int dim = p->dim;
+/* What a finish does with one block's rows (sweep_each_block): the
+ * particles [i0, i1), nf sums each in @p t. */
+typedef void sweep_rows_fn(void *ctx, size_t i0, size_t i1, int nf,
+                           const double *t);
+
+/* Every block's rows (sweep_rows) handed to @p fn, the blocks in
+ * parallel, each thread with scratch rows of its own. */
+static int sweep_each_block(const struct vsph_equations_sweep *sw,
+                            const struct vsph_cells *cells, int nf,
+                            sweep_rows_fn *fn, void *ctx) {
   const size_t most = sweep_most(sw, cells);
   int bad = 0;
 #pragma omp parallel reduction(| : bad)
@@ -973,17 +977,43 @@ static int sweep_finish(const struct rhs_ctx *rc,
       size_t i0, i1;
       const size_t first = sweep_span(sw, cells, b, &i0, &i1);
       sweep_rows(sw, first, b, i0, i1, nf, t);
-      for (size_t i = i0; i < i1; i++) {
-        if (p->id[i] >= n_fluid) continue;
-        double s[3 + 2 + 3] = {0};
-        for (int a = 0; a < nf; a++) s[a] = t[(i - i0) * (size_t)nf + a];
-        finish_one(rc, p, i, dim, s, out);
-      }
+      fn(ctx, i0, i1, nf, t);
     }
     free(t);
   }
-  if (bad) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the sweep's finishing rows");
+  if (bad) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the sweep's rows");
   return VSPH_OK;
+}
+
+/* The right-hand side's finish (sweep_finish). */
+struct finish_ctx {
+  const struct rhs_ctx *rc;
+  const struct vsph_particles *p;
+  size_t n_fluid;
+  struct vsph_equations_out *out;
+};
+
+static void finish_rows(void *ctx, size_t i0, size_t i1, int nf,
+                        const double *t) {
+  const struct finish_ctx *f = ctx;
+  for (size_t i = i0; i < i1; i++) {
+    if (f->p->id[i] >= f->n_fluid) continue;
+    double s[3 + 2 + 3] = {0};
+    for (int a = 0; a < nf; a++) s[a] = t[(i - i0) * (size_t)nf + a];
+    finish_one(f->rc, f->p, i, f->p->dim, s, f->out);
+  }
+}
+
+/* Each fluid particle's sums from the block buffers that hold it, in
+ * block order (sweep_rows), into the right-hand side. Fields past nf
+ * (the delta-SPH sum without delta-SPH) are zero. */
+static int sweep_finish(const struct rhs_ctx *rc,
+                        const struct vsph_particles *p, size_t n_fluid,
+                        const struct vsph_cells *cells,
+                        const struct vsph_equations_sweep *sw, int nf,
+                        struct vsph_equations_out *out) {
+  struct finish_ctx f = {rc, p, n_fluid, out};
+  return sweep_each_block(sw, cells, nf, finish_rows, &f);
 }
 
 /* One block's sweep, specialised. */
@@ -1104,6 +1134,21 @@ VSPH_CONSTS_SPECIALISE void grad_block(const struct vsph_pair_kernel *pk,
   }
 }
 
+/* PVWF's first pass's finish (grad_sweep): B and Mg of each particle. */
+struct grad_ctx {
+  const struct vsph_viscous_props *vp;
+  struct vsph_viscous_ws *ws;
+};
+
+static void grad_rows(void *ctx, size_t i0, size_t i1, int nf,
+                      const double *t) {
+  const struct grad_ctx *g = ctx;
+  for (size_t i = i0; i < i1; i++) {
+    const double *s = t + (i - i0) * (size_t)nf;
+    vsph_viscous_pvwf_finish(g->vp, g->ws, i, s, s + nf / 2);
+  }
+}
+
 /* PVWF's first pass by the sweep for the 2-D and 3-D Gaussian: the
  * blocks, then every particle's B and Mg from its buffers in block order,
  * finished by vsph_viscous_pvwf_finish. */
@@ -1126,27 +1171,9 @@ static int grad_sweep(const struct vsph_viscous_props *vp,
       grad_block(pk, p, cells, sw, b, 2, G);
     else
       grad_block(pk, p, cells, sw, b, 3, G);
-  const size_t most = sweep_most(sw, cells);
-  int bad = 0;
-#pragma omp parallel reduction(| : bad)
-  {
-    double *const t = malloc(most * (size_t)nf * sizeof *t);
-    bad = !t;
-#pragma omp for schedule(dynamic, 1)
-    for (size_t b = 0; b < sw->nblk; b++) {
-      if (!t) continue;
-      size_t i0, i1;
-      const size_t first = sweep_span(sw, cells, b, &i0, &i1);
-      sweep_rows(sw, first, b, i0, i1, nf, t);
-      for (size_t i = i0; i < i1; i++) {
-        const double *s = t + (i - i0) * (size_t)nf;
-        vsph_viscous_pvwf_finish(vp, ws, i, s, s + dd);
-      }
-    }
-    free(t);
-  }
-  if (bad)
-    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the sweep's first-pass rows");
+  struct grad_ctx g = {vp, ws};
+  const int sf = sweep_each_block(sw, cells, nf, grad_rows, &g);
+  if (sf) return sf;
   size_t nfb = 0; /* serial: reproducible */
   for (size_t i = 0; i < p->n; i++) nfb += ws->fallback[i];
   ws->n_fallback = nfb;

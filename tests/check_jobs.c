@@ -478,33 +478,20 @@ static size_t res_of(const char *name) {
   return 0;
 }
 
-/* `vsph report --full --assemble --from-archive AR --only convergence`:
- * every free-surface run of the FULL plan is an entry of AR sealed under
- * its plan key by this build's sources (so it stands), none is in the
- * report's own folder, and the report is assembled from AR alone. Each
- * entry's E_k falls from 1 to 1 - 1/res against a constant reference, so
- * the vortex patch's E_k error is 1/res (by hand: 4.000e-02, 2.000e-02,
- * 1.000e-02 at R/dx = 25, 50, 100, to the table's four digits) and its
- * fitted order exactly 1; P_visc(0) is -(1 + 1/res) against dE_k,ref/dt
- * = -1, so the initial dissipation error, (P_visc(0) - dE_k,ref/dt(0)) /
- * |dE_k,ref/dt(0)|, is -1/res. AR/summary.md then holds the convergence
- * tables and says how many runs came from AR; the report's facts and
- * run.json say it too. Refused (exit 2, nothing written): --full without
- * --assemble, a --plan, or --out inside AR. An entry changed after its seal
- * no longer stands: the assembly fails naming the missing run (exit 1),
- * and AR/summary.md is untouched. */
-START_TEST(test_assemble_from_archive) {
-  /* the judge's history of this clone would judge the synthetic entries
-   * by its real baseline rows: without it, entries of this build's
-   * sources are judged by the test's own rows alone */
-  unsetenv("VSPH_ARCHIVE_HISTORY");
-  const char *dir = tmpdir();
-  char path[1200], ar[600], text[600];
-  snprintf(path, sizeof path, "%s/r", dir);
+/* An archive dir/ar (empty_archive) with an entry for every run of the
+ * free-surface scenes in the plan of report folder dir/@p out (FULL or
+ * quick), each sealed under the run's own key by this build's sources
+ * (so it stands): E_k falls from 1 to 1 - 1/res against a constant
+ * reference, P_visc(0) is -(1 + 1/res) against dE_k,ref/dt = -1. Returns
+ * the entries made. */
+static size_t free_surface_entries(const char *dir, const char *out, int full,
+                                   char *ar, size_t len) {
+  char path[1200], text[600];
+  snprintf(path, sizeof path, "%s/%s", dir, out);
   struct vsph_jobs jobs;
   memset(&jobs, 0, sizeof jobs);
-  ck_assert_int_eq(vsph_report_plan_jobs(path, 1, &jobs), 0);
-  empty_archive(dir, ar, sizeof ar);
+  ck_assert_int_eq(vsph_report_plan_jobs(path, full, &jobs), 0);
+  empty_archive(dir, ar, len);
   static const char *const scenes[] = {"vortex-patch", "stretching-square",
                                        "standing-wave"};
   size_t made = 0;
@@ -534,7 +521,32 @@ START_TEST(test_assemble_from_archive) {
     made++;
   }
   vsph_jobs_plan_free(&jobs);
-  ck_assert_uint_ge(made, 40);
+  return made;
+}
+
+/* `vsph report --full --assemble --from-archive AR --only convergence`:
+ * every free-surface run of the FULL plan is an entry of AR sealed under
+ * its plan key by this build's sources (so it stands), none is in the
+ * report's own folder, and the report is assembled from AR alone. Each
+ * entry's E_k falls from 1 to 1 - 1/res against a constant reference, so
+ * the vortex patch's E_k error is 1/res (by hand: 4.000e-02, 2.000e-02,
+ * 1.000e-02 at R/dx = 25, 50, 100, to the table's four digits) and its
+ * fitted order exactly 1; P_visc(0) is -(1 + 1/res) against dE_k,ref/dt
+ * = -1, so the initial dissipation error, (P_visc(0) - dE_k,ref/dt(0)) /
+ * |dE_k,ref/dt(0)|, is -1/res. AR/summary.md then holds the convergence
+ * tables and says how many runs came from AR; the report's facts and
+ * run.json say it too. Refused (exit 2, nothing written): --full without
+ * --assemble, a --plan, or --out inside AR. An entry changed after its seal
+ * no longer stands: the assembly fails naming the missing run (exit 1),
+ * and AR/summary.md is untouched. */
+START_TEST(test_assemble_from_archive) {
+  /* the judge's history of this clone would judge the synthetic entries
+   * by its real baseline rows: without it, entries of this build's
+   * sources are judged by the test's own rows alone */
+  unsetenv("VSPH_ARCHIVE_HISTORY");
+  const char *dir = tmpdir();
+  char path[1200], ar[600], text[600];
+  ck_assert_uint_ge(free_surface_entries(dir, "r", 1, ar, sizeof ar), 40);
   /* today's baseline: the three scenes' rows */
   snprintf(path, sizeof path, "%s/reports", dir);
   ck_assert_int_eq(vsph_files_mkdir(path), 0);
@@ -698,37 +710,7 @@ START_TEST(test_quick_from_archive) {
   unsetenv("VSPH_ARCHIVE_HISTORY");
   const char *dir = tmpdir();
   char path[1200], ar[600], text[600], cmd[2000];
-  snprintf(path, sizeof path, "%s/q", dir);
-  struct vsph_jobs jobs;
-  memset(&jobs, 0, sizeof jobs);
-  ck_assert_int_eq(vsph_report_plan_jobs(path, 0, &jobs), 0);
-  empty_archive(dir, ar, sizeof ar);
-  static const char *const scenes[] = {"vortex-patch", "stretching-square",
-                                       "standing-wave"};
-  size_t made = 0;
-  for (size_t k = 0; k < jobs.n; k++) {
-    const struct vsph_jobs_job *j = &jobs.job[k];
-    int free_surface = 0;
-    for (int s = 0; s < 3; s++) free_surface |= !strcmp(j->scene, scenes[s]);
-    if (j->kind != VSPH_JOBS_RUN || !free_surface) continue;
-    const char *name = strrchr(j->dir, '/') + 1;
-    snprintf(path, sizeof path, "%s/runs/%s", ar, name);
-    struct vsph_folder f;
-    ck_assert_int_eq(vsph_folder_claim(&f, path, &vsph_folder_scene_run), 0);
-    snprintf(text, sizeof text, "{\"scene\": \"%s\", \"status\": \"ok\"}\n",
-             j->scene);
-    ck_assert_int_eq(vsph_files_write(path, "run.json", text), 0);
-    ck_assert_int_eq(
-        vsph_files_write(path, "energy.csv",
-                         "t,Ek,Ep,Ec,P_visc,residual,dEk_dt,Ek_ref,dEk_ref,"
-                         "Em_ref,dEm_ref\n0,1,0,0,-1,0,-1,1,-1,1,-1\n"),
-        0);
-    ck_assert_int_eq(vsph_folder_seal(&f, j->key, NULL), 0);
-    vsph_folder_release(&f);
-    made++;
-  }
-  vsph_jobs_plan_free(&jobs);
-  ck_assert_uint_ge(made, 40);
+  ck_assert_uint_ge(free_surface_entries(dir, "q", 0, ar, sizeof ar), 40);
   snprintf(path, sizeof path, "%s/reports", dir);
   ck_assert_int_eq(vsph_files_mkdir(path), 0);
   ck_assert_int_eq(
