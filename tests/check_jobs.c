@@ -774,6 +774,35 @@ START_TEST(test_quick_from_archive) {
 }
 END_TEST
 
+/* scripts/source-commits names each commit by the source hash that the
+ * Makefile links in (vsph_source_hash_id): the archive's rule finds the
+ * commit that made a run by it, so the two must hash the same files the
+ * same way. On a checkout whose hashed sources are HEAD's (a clean clone:
+ * CI, make fresh-check) the script's hash of HEAD is this build's; on a
+ * tree with local changes to them, or outside a git clone, there is
+ * nothing to compare it with, and the test compares nothing. */
+START_TEST(test_source_commits_hash) {
+  const struct vsph_test_outcome *o = vsph_test_shell(
+      "git rev-parse --is-inside-work-tree >/dev/null 2>&1 || exit 3; "
+      "git status --porcelain --untracked-files=all | grep -qE "
+      "'^.. (vsph\\.h|(common|kernels|solver|analysis|io|runs|reports|cli)/"
+      "[^/]+\\.[ch]|solver/scenes/[^/]+\\.c|reports/text/[^/]+\\.md)$' "
+      "&& exit 4; exit 0");
+  if (o->status != 0) return; /* not a clone, or local changes */
+  const char *dir = tmpdir();
+  char cmd[1200], path[1200], tsv[4096];
+  snprintf(cmd, sizeof cmd, "scripts/source-commits '%s/h' 1", dir);
+  o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  snprintf(path, sizeof path, "%s/h/commits.tsv", dir);
+  vsph_test_slurp(path, tsv, sizeof tsv);
+  ck_assert_msg(!strncmp(tsv, vsph_source_hash_id, 16) && tsv[16] == '\t',
+                "source-commits hashes HEAD as %.16s, this build is %s", tsv,
+                vsph_source_hash_id);
+  rmrf(dir);
+}
+END_TEST
+
 Suite *vsph_jobs_suite(void) {
   Suite *s = suite_create("jobs");
   TCase *tc = tcase_create("jobs");
@@ -781,6 +810,7 @@ Suite *vsph_jobs_suite(void) {
   tcase_add_test(tc, test_key_canonical);
   tcase_add_test(tc, test_assemble_from_archive);
   tcase_add_test(tc, test_quick_from_archive);
+  tcase_add_test(tc, test_source_commits_hash);
   tcase_add_test(tc, test_command_is_the_run);
   tcase_add_test(tc, test_pool);
   tcase_add_test(tc, test_estimate_neighbours);
