@@ -482,8 +482,9 @@ static size_t res_of(const char *name) {
  * free-surface scenes in the plan of report folder dir/@p out (FULL or
  * quick), each sealed under the run's own key by this build's sources
  * (so it stands): E_k falls from 1 to 1 - 1/res against a constant
- * reference, P_visc(0) is -(1 + 1/res) against dE_k,ref/dt = -1. Returns
- * the entries made. */
+ * reference, P_visc(0) is -(1 + 1/res) against dE_k,ref/dt = -1; and
+ * dir/reports/baseline.csv with the three scenes' rows. Returns the
+ * entries made. */
 static size_t free_surface_entries(const char *dir, const char *out, int full,
                                    char *ar, size_t len) {
   char path[1200], text[600];
@@ -521,6 +522,14 @@ static size_t free_surface_entries(const char *dir, const char *out, int full,
     made++;
   }
   vsph_jobs_plan_free(&jobs);
+  /* today's baseline, read from dir: the three scenes' rows */
+  snprintf(path, sizeof path, "%s/reports", dir);
+  ck_assert_int_eq(vsph_files_mkdir(path), 0);
+  ck_assert_int_eq(
+      vsph_files_write(path, "baseline.csv",
+                       "scene,visc\nvortex-patch,mgf\nstretching-square,"
+                       "mgf\nstanding-wave,mgf\n"),
+      0);
   return made;
 }
 
@@ -547,14 +556,6 @@ START_TEST(test_assemble_from_archive) {
   const char *dir = tmpdir();
   char path[1200], ar[600], text[600];
   ck_assert_uint_ge(free_surface_entries(dir, "r", 1, ar, sizeof ar), 40);
-  /* today's baseline: the three scenes' rows */
-  snprintf(path, sizeof path, "%s/reports", dir);
-  ck_assert_int_eq(vsph_files_mkdir(path), 0);
-  ck_assert_int_eq(
-      vsph_files_write(path, "baseline.csv",
-                       "scene,visc\nvortex-patch,mgf\nstretching-square,"
-                       "mgf\nstanding-wave,mgf\n"),
-      0);
   /* refused, nothing written */
   static const char *const refused[] = {
       "--full --from-archive ar --out r", "--plan --from-archive ar --out r",
@@ -711,13 +712,6 @@ START_TEST(test_quick_from_archive) {
   const char *dir = tmpdir();
   char path[1200], ar[600], text[600], cmd[2000];
   ck_assert_uint_ge(free_surface_entries(dir, "q", 0, ar, sizeof ar), 40);
-  snprintf(path, sizeof path, "%s/reports", dir);
-  ck_assert_int_eq(vsph_files_mkdir(path), 0);
-  ck_assert_int_eq(
-      vsph_files_write(path, "baseline.csv",
-                       "scene,visc\nvortex-patch,mgf\nstretching-square,"
-                       "mgf\nstanding-wave,mgf\n"),
-      0);
   /* the convergence part's plan: the three ladders (the vortex patch's
    * twice), the square's four references; its `here` runs, counted from
    * the ladders' finest rung on the rings layout */
