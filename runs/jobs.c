@@ -569,6 +569,19 @@ static size_t budget_fit(const struct vsph_jobs *J,
   return kept;
 }
 
+/* ", N more stand in a run archive" when the plan has such runs, for the
+ * progress's first line. */
+static void archived_note(const struct vsph_jobs *J, char *buf, size_t len) {
+  size_t na = 0;
+  for (size_t k = 0; k < J->n; k++)
+    na += J->job[k].archived && !J->job[k].cached;
+  if (na)
+    snprintf(buf, len, " (%zu more stand in the run archive and are not run)",
+             na);
+  else
+    buf[0] = '\0';
+}
+
 /* The missing runs, costliest first; with a budget, those that fit it on
  * @p lanes lanes. */
 static size_t missing(struct vsph_jobs *J, struct vsph_jobs_job ***out,
@@ -616,11 +629,13 @@ int vsph_jobs_local(struct vsph_jobs *J, int width) {
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
   struct vsph_jobs_eta *eta = eta_start(order, m);
   double *t1 = calloc(m ? m : 1, sizeof *t1);
+  char na[96];
+  archived_note(J, na, sizeof na);
   if (m)
     fprintf(stderr,
-            "vsph report: %zu of the %zu runs are not in the cache; running "
-            "them here, %d at a time\n",
-            m, J->n, width);
+            "vsph report: %zu of the %zu runs are not in the cache%s; "
+            "running them here, %d at a time\n",
+            m, J->n, na, width);
   const double t0 = omp_get_wtime();
   size_t started = 0, done = 0;
   int st = VSPH_OK;
@@ -787,11 +802,13 @@ int vsph_jobs_pool(struct vsph_jobs *J, const char *exe, size_t njobs,
     st = VSPH_ENOMEM;
     vsph_status_report(st, __FILE__, __LINE__, "cannot track %zu runs", m);
   }
+  char na[96];
+  archived_note(J, na, sizeof na);
   if (m && !st)
     fprintf(stderr,
-            "vsph report: %zu of the %zu runs are not in the cache; running "
-            "them as %zu processes of %zu threads (logs in %s)\n",
-            m, J->n, njobs, threads, logs);
+            "vsph report: %zu of the %zu runs are not in the cache%s; "
+            "running them as %zu processes of %zu threads (logs in %s)\n",
+            m, J->n, na, njobs, threads, logs);
   const double t0 = omp_get_wtime();
   size_t next = 0, running = 0, done = 0, nfailed = 0;
   int stopping = st != VSPH_OK, err = VSPH_OK;

@@ -430,6 +430,11 @@ START_TEST(test_budget_skip_archived) {
   snprintf(said, sizeof said, "0 of the %zu runs are cached, 1 stand in ar",
            nplan);
   ck_assert_msg(strstr(o->err, said), "want '%s' in %s", said, o->err);
+  /* and the progress's first line says the one it does not run */
+  ck_assert_msg(strstr(o->err,
+                       "(1 more stand in the run archive and are not "
+                       "run)"),
+                "%s", o->err);
   snprintf(path, sizeof path, "%s/r/runs/%s", dir, name);
   ck_assert_msg(access(path, F_OK) != 0, "%s was run", path);
   snprintf(cmd, sizeof cmd, "ls -d %s/r/runs/*/ | wc -l", dir);
