@@ -207,25 +207,25 @@ int vsph_jobs_plan_add(struct vsph_jobs *J, struct vsph_jobs_job *j) {
   return VSPH_OK;
 }
 
-int vsph_jobs_plan_run(struct vsph_jobs *J, const struct vsph_jobs_spec *rs) {
+/* A solver run planned, marked `here` or not. */
+static int plan_spec(struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
+                     int here) {
   struct vsph_jobs_job j;
   const int st = vsph_jobs_run(J, rs, &j);
   if (st) {
     vsph_jobs_free(&j);
     return st;
   }
+  j.here = here;
   return vsph_jobs_plan_add(J, &j);
 }
 
+int vsph_jobs_plan_run(struct vsph_jobs *J, const struct vsph_jobs_spec *rs) {
+  return plan_spec(J, rs, 0);
+}
+
 int vsph_jobs_plan_here(struct vsph_jobs *J, const struct vsph_jobs_spec *rs) {
-  struct vsph_jobs_job j;
-  const int st = vsph_jobs_run(J, rs, &j);
-  if (st) {
-    vsph_jobs_free(&j);
-    return st;
-  }
-  j.here = 1;
-  return vsph_jobs_plan_add(J, &j);
+  return plan_spec(J, rs, 1);
 }
 
 /* Run @p j here: its folder ends with key.txt, or it failed. */
