@@ -183,17 +183,21 @@ int vsph_cmd_run_scenes(int argc, char **argv) {
   print_table("Solver: section (all scenes)", spec, n);
   for (size_t i = 0; i < vsph_scene_count(); i++) {
     const struct vsph_scene_type *t = vsph_scene_get(i);
-    char title[640];
-    char sd[200];
+    char title[720];
+    char sd[200], cf[96] = "";
     vsph_scene_solver_defaults_text(t, sd, sizeof sd);
+    if (t->cfl > 0.0)
+      snprintf(cf, sizeof cf,
+               "\n  Its own Courant number (unless Solver:cfl is given): %g.",
+               t->cfl);
     snprintf(title, sizeof title,
-             "\n%s: %s\n  --res counts particles across %s.%s%s%s Scene: "
+             "\n%s: %s\n  --res counts particles across %s.%s%s%s%s Scene: "
              "section",
              t->name, t->description, t->length_name,
              sd[0] ? "\n  Solver defaults of its own (unless --visc or "
                      "--scheme wcsph is given): "
                    : "",
-             sd, sd[0] ? "." : "");
+             sd, sd[0] ? "." : "", cf);
     print_table(title, t->params, t->nparams);
   }
   return vsph_args_finish("scenes", 0);

@@ -7,6 +7,7 @@
 #include "../common/status.h"
 #include "../io/csv.h"
 #include "../io/plot.h"
+#include "../solver/scene.h"
 #include "report_parts.h"
 
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
@@ -44,16 +45,24 @@ static int scene(struct vsph_report *R, int sc) {
 
 /* ------------------------------------------------ the time step, measured */
 
-/* The Courant numbers of the study (1: the ladder's own runs), on the
- * ladder's two coarsest resolutions. */
+/* The Courant numbers of the study, on the ladder's two coarsest
+ * resolutions; the scene's own (scene_cfl) is the ladder's own run. */
 #define NCFL 4
 #define NRES 2
 static const double CFLS[NCFL] = {0.5, 1.0, 1.5, 2.0};
 static const char *const SET_CFL[NCFL][2] = {{"Solver:cfl=0.5", NULL},
-                                             {NULL, NULL},
+                                             {"Solver:cfl=1", NULL},
                                              {"Solver:cfl=1.5", NULL},
                                              {"Solver:cfl=2", NULL}};
-static const char *const TAG_CFL[NCFL] = {"step0.5", NULL, "step1.5", "step2"};
+static const char *const TAG_CFL[NCFL] = {"step0.5", "step1", "step1.5",
+                                          "step2"};
+
+/* The default Courant number of the scene called @p name (its own, or
+ * the solver's 1). */
+static double scene_cfl(const char *name) {
+  const struct vsph_scene_type *t = vsph_scene_find(name);
+  return t && t->cfl > 0.0 ? t->cfl : 1.0;
+}
 
 /* The rule: a CFL is fine where every run of it is stable and its error
  * moves from CFL 0.5's by at most this fraction of CFL 0.5's error (the
@@ -64,12 +73,10 @@ static struct vsph_jobs_spec cfl_spec(const struct vsph_report *R, int sc,
                                       int f, int k, int c) {
   const struct vsph_report_ladderdef *L =
       vsph_report_runs_ladder(&R->runs, sc, 0);
-  return (struct vsph_jobs_spec){L->scene,
-                                 vsph_viscous_name(f),
-                                 L->res[k],
-                                 L->t_end,
-                                 SET_CFL[c][0] ? SET_CFL[c] : NULL,
-                                 TAG_CFL[c]};
+  const int own = CFLS[c] == scene_cfl(L->scene); /* the ladder's run */
+  return (struct vsph_jobs_spec){
+      L->scene, vsph_viscous_name(f),    L->res[k],
+      L->t_end, own ? NULL : SET_CFL[c], own ? NULL : TAG_CFL[c]};
 }
 
 int vsph_report_speed_plan(struct vsph_report *R) {
@@ -165,6 +172,12 @@ static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
   vsph_text_set(&R->tv, "title", "%s", title);
   vsph_text_set(&R->tv, "pick", "%g", *pick);
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
+  /* the scene's own default against the pick */
+  const double own = scene_cfl(L->scene);
+  vsph_text_set(&R->tv, "own", "Its default is CFL %g%s", own,
+                same           ? "."
+                : own <= *pick ? ", which the rule finds fine."
+                               : ", **larger than the rule allows**.");
   vsph_text_set(&R->tv, "unstable", "%s",
                 ul ? unstable : "none (every run stable at CFL 0.5 stays so)");
   /* a scene whose step another bound sets (the viscous one) */
@@ -196,14 +209,13 @@ int vsph_report_speed_write(struct vsph_report *R) {
   vsph_text_set(&R->tv, "pick", "%g", all);
   vsph_text_set(&R->tv, "cfl_where", "%s",
                 R->runs.full
-                    ? "these are the FULL report's ladders, whose finest "
-                      "rungs the CFL sweep does not run; raising the default "
-                      "changes the baseline rows of the scenes it steps, so "
-                      "their archived runs would be made again first "
-                      "(docs/theory.md section 5)"
-                    : "these are the quick resolutions, where the time "
+                    ? "These are the FULL report's ladders' two coarsest "
+                      "rungs (the papers' resolutions); the finest rungs are "
+                      "not swept"
+                    : "These are the quick resolutions, where the time "
                       "step's share of the error is small beside the "
-                      "resolution's, and the FULL report decides");
+                      "resolution's; the FULL report's study measures the "
+                      "papers' resolutions (reports/full/summary.md)");
   if (!st) st = vsph_report_say(R, "speed.cfl_all");
   return st;
 }

@@ -39,8 +39,9 @@ static const struct vsph_params_spec SOLVER[] = {
     VSPH_PARAMS_REAL_SPEC(P, t_end, 0.0, 0.0, 1e9,
                           "end time (s); 0: the scene's"),
     VSPH_PARAMS_REAL_SPEC(P, cfl, 1.0, 1e-3, 4.0,
-                          "Courant number of the RK4 time step (tvf: dt = "
-                          "cfl/4 h/(c0 + |u|max); contact: cfl/2)"),
+                          "Courant number of the RK4 time step (the "
+                          "standing wave's and the vortex patch's own: 2; tvf: "
+                          "dt = cfl/4 h/(c0 + |u|max); contact: cfl/2)"),
     VSPH_PARAMS_REAL_SPEC(P, dt, 0.0, 0.0, 1e9,
                           "a fixed time step (s) in place of the rule's "
                           "(cfl), stable or not: a run it makes unstable "

@@ -41,6 +41,12 @@ const struct vsph_scene_type *vsph_scene_find(const char *name) {
 
 int vsph_scene_solver_defaults(const struct vsph_scene_type *type,
                                struct vsph_params *prm) {
+  if (type->cfl > 0.0 && !vsph_params_given(prm, "Solver:cfl")) {
+    char v[32];
+    snprintf(v, sizeof v, "%.17g", type->cfl);
+    const int st = vsph_params_set(prm, "Solver:cfl", v);
+    if (st) return st;
+  }
   if (!type->solver_defaults || vsph_params_given(prm, "Solver:visc"))
     return VSPH_OK;
   if (vsph_params_given(prm, "Solver:scheme")) { /* theirs, or none */

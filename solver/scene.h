@@ -136,6 +136,11 @@ struct vsph_scene_type {
   const struct vsph_params_spec *params; /*!< the "Scene" section: offsets
                                               into the scene's typed struct */
   size_t nparams;                        /*!< its length */
+  /** The scene's own default Courant number of RK4 (Solver:cfl; 0: the
+   *  table's, 1): the largest CFL the report's time-step study finds fine
+   *  for accuracy on this scene and no less stable than CFL 1
+   *  (docs/theory.md section 5). It applies whatever the scheme. */
+  double cfl;
   /** Derive the scene from its typed parameters (VSPH_OK or VSPH_EINVAL). */
   int (*setup)(struct vsph_scene *sc);
   /** Lay out the fluid: @p res particles across the reference length. */
@@ -213,6 +218,8 @@ const struct vsph_scene_type *vsph_scene_find(const char *name);
  *  given (a visc asks for the WCSPH scheme) or Solver:scheme is given as
  *  another scheme than theirs, each only where its key is not given, and
  *  alpha (which sets h = 2 alpha dx) not where Solver:hdx is given.
+ *  The scene's own Courant number (type->cfl) applies wherever
+ *  Solver:cfl is not given, whatever else is.
  *  Called on the parameters as given, before any is read (the cache key
  *  then holds them). @return VSPH_OK, VSPH_ENOMEM. */
 int vsph_scene_solver_defaults(const struct vsph_scene_type *type,

@@ -368,6 +368,68 @@ START_TEST(test_diagnostics) {
 }
 END_TEST
 
+/* The scenes' own Courant number (docs/theory.md 5: the time-step study
+ * picks CFL 2 for the standing wave and the vortex patch): it enters the
+ * parameters unless Solver:cfl is given, a given visc included (unlike
+ * the contact scenes' defaults); the others keep the table's 1. Then,
+ * through `vsph run`: the default run of the wave is the run at
+ * --set Solver:cfl=2 byte for byte (energy.csv), and it takes half the
+ * steps of the run at CFL 1 (the rule's dt is linear in the CFL: the
+ * counts agree to 1 step over the 0.6 s, where max|u| barely moves). */
+static double cfl_of(const char *scene, const char *key, const char *val) {
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_ptr_nonnull(prm);
+  if (key) ck_assert_int_eq(vsph_params_set(prm, key, val), 0);
+  ck_assert_int_eq(vsph_scene_solver_defaults(vsph_scene_find(scene), prm), 0);
+  double cfl;
+  ck_assert_int_eq(vsph_params_get_double_or(prm, "Solver:cfl", 1.0, &cfl), 0);
+  vsph_params_free(prm);
+  return cfl;
+}
+
+static double run_steps(const char *dir, const char *name, const char *set,
+                        char *csv, size_t n) {
+  char args[600], path[600];
+  snprintf(args, sizeof args,
+           "run standing-wave --res 10 --t-end 0.6 --snapshots 0 %s --out "
+           "%s/%s --quiet",
+           set, dir, name);
+  struct vsph_test_outcome *o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  snprintf(path, sizeof path, "%s/%s/energy.csv", dir, name);
+  vsph_test_slurp(path, csv, n);
+  static char js[1 << 14];
+  snprintf(path, sizeof path, "%s/%s/run.json", dir, name);
+  vsph_test_slurp(path, js, sizeof js);
+  const char *s = strstr(js, "\"steps\":");
+  ck_assert_ptr_nonnull(s);
+  return strtod(s + 8, NULL);
+}
+
+START_TEST(test_scene_cfl) {
+  ck_assert_double_eq(cfl_of("standing-wave", NULL, NULL), 2.0);
+  ck_assert_double_eq(cfl_of("vortex-patch", NULL, NULL), 2.0);
+  ck_assert_double_eq(cfl_of("vortex-patch", "Solver:visc", "pvwf"), 2.0);
+  ck_assert_double_eq(cfl_of("standing-wave", "Solver:cfl", "0.7"), 0.7);
+  ck_assert_double_eq(cfl_of("stretching-square", NULL, NULL), 1.0);
+  ck_assert_double_eq(cfl_of("poiseuille", NULL, NULL), 1.0);
+  ck_assert_double_eq(cfl_of("cavity", NULL, NULL), 1.0);
+  char dir[] = "/tmp/vsph_cflXXXXXX";
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  static char a[1 << 16], b[1 << 16], c[1 << 16];
+  const double na = run_steps(dir, "own", "", a, sizeof a);
+  const double nb = run_steps(dir, "two", "--set Solver:cfl=2", b, sizeof b);
+  const double nc = run_steps(dir, "one", "--set Solver:cfl=1", c, sizeof c);
+  ck_assert_str_eq(a, b);
+  ck_assert_double_eq(na, nb);
+  ck_assert_double_gt(na, 10.0);
+  ck_assert_double_eq_tol(nc, 2.0 * na, 1.0);
+  char cmd[700];
+  snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+  ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
 Suite *vsph_solver_suite(void) {
   Suite *s = suite_create("solver");
   TCase *tc = tcase_create("runs");
@@ -377,6 +439,7 @@ Suite *vsph_solver_suite(void) {
   tcase_add_test(tc, test_vortex_angular_momentum);
   tcase_add_test(tc, test_budget_residual);
   tcase_add_test(tc, test_standing_wave_period);
+  tcase_add_test(tc, test_scene_cfl);
   tcase_add_loop_test(tc, test_threads_bitwise, 0, VSPH_VISCOUS_FORM_COUNT);
   tcase_add_test(tc, test_ghost_capacity);
   tcase_add_test(tc, test_hydrostatic_rest);

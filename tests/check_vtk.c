@@ -562,7 +562,7 @@ START_TEST(test_run_times) {
   char dir[] = "/tmp/vsph_pvdXXXXXX", args[700], path[700];
   ck_assert_ptr_nonnull(mkdtemp(dir));
   snprintf(args, sizeof args,
-           "run standing-wave --res 10 --t-end 0.05 --outputs 8 --snapshots 4 "
+           "run standing-wave --res 10 --t-end 0.1 --outputs 8 --snapshots 4 "
            "--out %s/r --quiet",
            dir);
   struct vsph_test_outcome *o = vsph_test_cli(args);

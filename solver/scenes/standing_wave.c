@@ -105,6 +105,7 @@ const struct vsph_scene_type vsph_standing_wave_type = {
     .area = 1.0,
     .params = params,
     .nparams = sizeof params / sizeof params[0],
+    .cfl = 2.0, /* the time-step study's pick (docs/theory.md 5) */
     .setup = setup,
     .init = init,
 };

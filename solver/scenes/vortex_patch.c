@@ -136,6 +136,7 @@ const struct vsph_scene_type vsph_vortex_patch_type = {
     .area = VSPH_PI,
     .params = params,
     .nparams = sizeof params / sizeof params[0],
+    .cfl = 2.0, /* the time-step study's pick (docs/theory.md 5) */
     .setup = setup,
     .init = init,
 };
