@@ -214,6 +214,15 @@ int vsph_args_status(const char *cmd, int status) {
   return status == VSPH_EINVAL ? VSPH_ARGS_EXIT_USAGE : 1;
 }
 
+int vsph_args_status_about(const char *cmd, const char *what, int status) {
+  char line[1200];
+  snprintf(line, sizeof line, "%s: %s", what,
+           last_msg[0] ? last_msg : vsph_status_str(status));
+  last_msg[0] = '\0';
+  say(cmd, line);
+  return status == VSPH_EINVAL ? VSPH_ARGS_EXIT_USAGE : 1;
+}
+
 int vsph_args_finish(const char *cmd, int rc) {
   errno = 0;
   if ((fflush(stdout) != 0 || ferror(stdout)) && rc == 0) {

@@ -102,6 +102,11 @@ int vsph_args_stop_after(double seconds);
  *  invalid input and 1 for internal failures. */
 int vsph_args_status(const char *cmd, int status);
 
+/** @brief The same, the line headed by @p what (an option's name, say:
+ *  "--from-archive: ..."), so a message from deep in the library says
+ *  which input it is about. */
+int vsph_args_status_about(const char *cmd, const char *what, int status);
+
 /** @brief Flush stdout and report a failed write (exit status 1) unless
  *  @p rc already says a failure (reported then). Every sub-command ends
  *  through it. @return @p rc, or 1 if stdout failed. */

@@ -112,7 +112,7 @@ static int archive_input(const char *opt, const char *adir, const char *out) {
     return vsph_args_fail(CMD, "%s: --out %.200s lies inside the archive %s",
                           opt, out, adir);
   const int st = vsph_archive_check(adir);
-  return st ? vsph_args_status(CMD, st) : 0;
+  return st ? vsph_args_status_about(CMD, opt, st) : 0;
 }
 
 /* What a judge of the archive reads ($VSPH_ARCHIVE_HISTORY and

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -417,6 +418,14 @@ static int all_cached(const struct vsph_report *R) {
     if (!R->runs.jobs.job[k].cached && !R->runs.jobs.job[k].from[0] && !m++)
       first = k;
   if (!m) return VSPH_OK;
+  struct stat bs; /* the rule's rows of now: the source tree's top folder */
+  if (R->runs.unjudged && stat("reports/baseline.csv", &bs) != 0)
+    VSPH_FAIL(VSPH_EIO,
+              "%zu of the %zu runs are missing, %zu of them unjudged in the "
+              "archive %s: there is no reports/baseline.csv here, whose rows "
+              "judge them (run it in the source tree's top folder, as make "
+              "full-report does)",
+              m, R->runs.jobs.n, R->runs.unjudged, R->runs.archive);
   if (R->runs.unjudged) /* an assembly from an archive without its history */
     VSPH_FAIL(VSPH_EIO,
               "%zu of the %zu runs are missing, %zu of them unjudged in the "

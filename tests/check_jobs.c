@@ -550,9 +550,12 @@ static size_t free_surface_entries(const char *dir, const char *out, int full,
  * |dE_k,ref/dt(0)|, is -1/res. AR/summary.md then holds the convergence
  * tables and says how many runs came from AR; the report's facts and
  * run.json say it too. Refused (exit 2, nothing written): --full without
- * --assemble, a --plan, or --out inside AR. An entry changed after its seal
- * no longer stands: the assembly fails naming the missing run (exit 1),
- * and AR/summary.md is untouched. */
+ * --assemble, a --plan, or --out inside AR; a folder that is not a run
+ * archive, the message naming the option. Run where there is no
+ * reports/baseline.csv (outside the source tree's top), every entry is
+ * unjudged and the assembly fails saying that file is missing (exit 1).
+ * An entry changed after its seal no longer stands: the assembly fails
+ * naming the missing run (exit 1), and AR/summary.md is untouched. */
 START_TEST(test_assemble_from_archive) {
   /* the judge's history of this clone would judge the synthetic entries
    * by its real baseline rows: without it, entries of this build's
@@ -578,13 +581,33 @@ START_TEST(test_assemble_from_archive) {
     snprintf(path, sizeof path, "%s/r", dir);
     ck_assert_msg(access(path, F_OK) != 0, "%s: r was made", refused[k]);
   }
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && mkdir plain && touch "
+           "plain/mine.txt && $B report --full --assemble --from-archive "
+           "plain --out r --only convergence",
+           dir);
+  const struct vsph_test_outcome *o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 2 && o->err_lines == 1 &&
+                    strstr(o->err, "vsph report: --from-archive: plain "),
+                "%s", o->err);
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && mkdir sub && cd sub && "
+           "$B report --full --assemble --from-archive ../ar --out ../r "
+           "--only convergence",
+           dir);
+  o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 1 && o->err_lines == 1 &&
+                    strstr(o->err, "there is no reports/baseline.csv here"),
+                "%s", o->err);
+  snprintf(path, sizeof path, "%s/r", dir);
+  ck_assert_int_ne(access(path, F_OK), 0);
   snprintf(path, sizeof path, "%s/ar/summary.md", dir);
   ck_assert_int_ne(access(path, F_OK), 0);
   snprintf(cmd, sizeof cmd,
            "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --full "
            "--assemble --from-archive ar --out r --only convergence",
            dir);
-  const struct vsph_test_outcome *o = vsph_test_shell(cmd);
+  o = vsph_test_shell(cmd);
   ck_assert_msg(o->status == 0, "%s", o->err);
   static char summary[65536];
   vsph_test_slurp(path, summary, sizeof summary);
