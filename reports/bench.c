@@ -181,7 +181,9 @@ static double run_peak_rss(const struct vsph_scene_type *type, int form,
   struct vsph_integrate *s =
       bench_run(type, form, res, 0.0, 0, &vsph_gaussian_type, VSPH_CONSTS_HDX);
   if (!s) return 0.0;
-  const double t_end = 3.0 * vsph_integrate_dt(s);
+  /* the run takes the scene's own CFL, the bench's step CFL 1 */
+  const double t_end =
+      3.0 * vsph_integrate_dt(s) * (type->cfl > 1.0 ? type->cfl : 1.0);
   *n = s->n_fluid;
   vsph_integrate_free(s);
   return vsph_jobs_peak_rss(type->name, vsph_viscous_name(form), res, t_end);

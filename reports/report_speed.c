@@ -214,8 +214,9 @@ int vsph_report_speed_write(struct vsph_report *R) {
                       "not swept"
                     : "These are the quick resolutions, where the time "
                       "step's share of the error is small beside the "
-                      "resolution's; the FULL report's study measures the "
-                      "papers' resolutions (reports/full/summary.md)");
+                      "resolution's; the FULL report's study, on the FULL "
+                      "ladders' two coarsest rungs, is quoted in "
+                      "docs/theory.md section 5");
   if (!st) st = vsph_report_say(R, "speed.cfl_all");
   return st;
 }

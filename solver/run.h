@@ -123,7 +123,10 @@ static inline const char *vsph_run_method(const struct vsph_run_props *rp) {
 const struct vsph_params_spec *vsph_run_params(size_t *n);
 
 /** @brief Read the "Solver" section of @p prm (NULL: defaults) into
- *  @p rp, check it and resolve the formulation and kernel names.
+ *  @p rp, check it and resolve the formulation and kernel names. The
+ *  scene's own Solver defaults (its CFL, contact SPH's settings) are not
+ *  applied here: call vsph_scene_solver_defaults on @p prm first, as
+ *  `vsph run` and the report's jobs do.
  *  @return VSPH_OK or VSPH_EINVAL (the message names the parameter). */
 int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm);
 

@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "../common/params.h"
@@ -39,9 +40,30 @@ const struct vsph_scene_type *vsph_scene_find(const char *name) {
   return NULL;
 }
 
+/* 1 if @p key is given with another value than @p plain (read as a
+ * string; the solver reads each of these keys anyway). */
+static int given_other(struct vsph_params *prm, const char *key,
+                       const char *plain) {
+  if (!vsph_params_given(prm, key)) return 0;
+  const char *v;
+  if (vsph_params_get_string_or(prm, key, plain, &v)) return 1;
+  if (!strcmp(plain, "0")) { /* a number: 0 in any spelling is plain */
+    char *end;
+    const double x = strtod(v, &end);
+    return !(end != v && *end == '\0' && x == 0.0);
+  }
+  return strcmp(v, plain) != 0;
+}
+
 int vsph_scene_solver_defaults(const struct vsph_scene_type *type,
                                struct vsph_params *prm) {
-  if (type->cfl > 0.0 && !vsph_params_given(prm, "Solver:cfl")) {
+  /* the scene's own CFL: its RK4 runs of the WCSPH scheme (the study's),
+   * not contact SPH, the transport velocity, leapfrog or a fixed step */
+  if (type->cfl > 0.0 && !vsph_params_given(prm, "Solver:cfl") &&
+      !given_other(prm, "Solver:scheme", "wcsph") &&
+      !given_other(prm, "Solver:tvf", "0") &&
+      !given_other(prm, "Solver:integrator", "rk4") &&
+      !given_other(prm, "Solver:dt", "0")) {
     char v[32];
     snprintf(v, sizeof v, "%.17g", type->cfl);
     const int st = vsph_params_set(prm, "Solver:cfl", v);

@@ -139,7 +139,9 @@ struct vsph_scene_type {
   /** The scene's own default Courant number of RK4 (Solver:cfl; 0: the
    *  table's, 1): the largest CFL the report's time-step study finds fine
    *  for accuracy on this scene and no less stable than CFL 1
-   *  (docs/theory.md section 5). It applies whatever the scheme. */
+   *  (docs/theory.md section 5). It applies to the study's runs alone: the
+   *  WCSPH scheme with RK4 and the rule's step (not where Solver:scheme,
+   *  tvf, integrator or dt is given as another). */
   double cfl;
   /** Derive the scene from its typed parameters (VSPH_OK or VSPH_EINVAL). */
   int (*setup)(struct vsph_scene *sc);
@@ -219,7 +221,8 @@ const struct vsph_scene_type *vsph_scene_find(const char *name);
  *  another scheme than theirs, each only where its key is not given, and
  *  alpha (which sets h = 2 alpha dx) not where Solver:hdx is given.
  *  The scene's own Courant number (type->cfl) applies wherever
- *  Solver:cfl is not given, whatever else is.
+ *  Solver:cfl is not given, a visc included, unless Solver:scheme, tvf,
+ *  integrator or dt asks for another scheme, integrator or a fixed step.
  *  Called on the parameters as given, before any is read (the cache key
  *  then holds them). @return VSPH_OK, VSPH_ENOMEM. */
 int vsph_scene_solver_defaults(const struct vsph_scene_type *type,

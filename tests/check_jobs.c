@@ -252,7 +252,11 @@ END_TEST
 
 /* The plan of the whole quick report: every folder once, the scenes'
  * baseline included, none cached in an empty folder, and the print lists
- * each with its command. */
+ * each with its command. The time-step study's runs are named from each
+ * scene's own CFL (the ladder's run): the standing wave and the vortex
+ * patch (CFL 2) have -step0.5, -step1 and -step1.5 runs and no -step2;
+ * the stretching square (CFL 1) -step0.5, -step1.5 and -step2 and no
+ * -step1; each of these for 3 forms on 2 resolutions. */
 START_TEST(test_plan_listing) {
   const char *dir = tmpdir();
   char out[700];
@@ -267,15 +271,26 @@ START_TEST(test_plan_listing) {
   FILE *f = fopen(out, "r");
   ck_assert_ptr_nonnull(f);
   char line[8192];
-  size_t n = 0, base = 0, shear = 0;
+  size_t n = 0, base = 0, shear = 0, step[3][2] = {{0}};
+  static const char *const scn[3] = {
+      "runs/standing-wave-", "runs/vortex-patch-", "runs/stretching-square-"};
   while (fgets(line, sizeof line, f)) {
     if (line[0] == '#' || !strncmp(line, "status\t", 7)) continue;
     n++;
     ck_assert_msg(!strncmp(line, "missing\t", 8), "%s", line);
     base += strstr(line, "-base\t") != NULL;
     shear += strstr(line, " contact --out ") != NULL;
+    for (int s = 0; s < 3; s++)
+      if (strstr(line, scn[s])) {
+        step[s][0] += strstr(line, "-step1\t") != NULL;
+        step[s][1] += strstr(line, "-step2\t") != NULL;
+      }
   }
   fclose(f);
+  for (int s = 0; s < 3; s++) {
+    ck_assert_uint_eq(step[s][0], s < 2 ? 6 : 0);
+    ck_assert_uint_eq(step[s][1], s < 2 ? 0 : 6);
+  }
   /* the baseline's channel rows (Poiseuille and Couette, every form),
    * its 5 cavity rows and its cylinders row have the tag "base"; the
    * quick report's 19 shear tests are `vsph contact` */

@@ -371,7 +371,9 @@ END_TEST
 /* The scenes' own Courant number (docs/theory.md 5: the time-step study
  * picks CFL 2 for the standing wave and the vortex patch): it enters the
  * parameters unless Solver:cfl is given, a given visc included (unlike
- * the contact scenes' defaults); the others keep the table's 1. Then,
+ * the contact scenes' defaults), and only for the study's runs (WCSPH,
+ * RK4, the rule's step: not with contact SPH, the transport velocity,
+ * leapfrog or a fixed dt); the others keep the table's 1. Then,
  * through `vsph run`: the default run of the wave is the run at
  * --set Solver:cfl=2 byte for byte (energy.csv), and it takes half the
  * steps of the run at CFL 1 (the rule's dt is linear in the CFL: the
@@ -411,6 +413,14 @@ START_TEST(test_scene_cfl) {
   ck_assert_double_eq(cfl_of("vortex-patch", NULL, NULL), 2.0);
   ck_assert_double_eq(cfl_of("vortex-patch", "Solver:visc", "pvwf"), 2.0);
   ck_assert_double_eq(cfl_of("standing-wave", "Solver:cfl", "0.7"), 0.7);
+  /* the study's runs alone: WCSPH, RK4, the rule's step */
+  ck_assert_double_eq(cfl_of("standing-wave", "Solver:scheme", "wcsph"), 2.0);
+  ck_assert_double_eq(cfl_of("vortex-patch", "Solver:scheme", "contact"), 1.0);
+  ck_assert_double_eq(cfl_of("standing-wave", "Solver:integrator", "leapfrog"),
+                      1.0);
+  ck_assert_double_eq(cfl_of("standing-wave", "Solver:tvf", "1"), 1.0);
+  ck_assert_double_eq(cfl_of("standing-wave", "Solver:dt", "1e-4"), 1.0);
+  ck_assert_double_eq(cfl_of("standing-wave", "Solver:dt", "0.0"), 2.0);
   ck_assert_double_eq(cfl_of("stretching-square", NULL, NULL), 1.0);
   ck_assert_double_eq(cfl_of("poiseuille", NULL, NULL), 1.0);
   ck_assert_double_eq(cfl_of("cavity", NULL, NULL), 1.0);
