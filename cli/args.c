@@ -209,14 +209,12 @@ static void cli_handler(int status, const char *file, int line,
 void vsph_args_install_handler(void) { vsph_status_set_handler(cli_handler); }
 
 int vsph_args_status(const char *cmd, int status) {
-  say(cmd, last_msg[0] ? last_msg : vsph_status_str(status));
-  last_msg[0] = '\0';
-  return status == VSPH_EINVAL ? VSPH_ARGS_EXIT_USAGE : 1;
+  return vsph_args_status_about(cmd, NULL, status);
 }
 
 int vsph_args_status_about(const char *cmd, const char *what, int status) {
   char line[1200];
-  snprintf(line, sizeof line, "%s: %s", what,
+  snprintf(line, sizeof line, "%s%s%s", what ? what : "", what ? ": " : "",
            last_msg[0] ? last_msg : vsph_status_str(status));
   last_msg[0] = '\0';
   say(cmd, line);

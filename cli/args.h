@@ -103,8 +103,8 @@ int vsph_args_stop_after(double seconds);
 int vsph_args_status(const char *cmd, int status);
 
 /** @brief The same, the line headed by @p what (an option's name, say:
- *  "--from-archive: ..."), so a message from deep in the library says
- *  which input it is about. */
+ *  "--from-archive: ..."; NULL: none), so a message from deep in the
+ *  library says which input it is about. */
 int vsph_args_status_about(const char *cmd, const char *what, int status);
 
 /** @brief Flush stdout and report a failed write (exit status 1) unless
