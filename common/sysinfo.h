@@ -16,6 +16,11 @@ void vsph_sysinfo_load(double la[3]);
 /** @brief CPU time of this process so far, all threads (s). */
 double vsph_sysinfo_cpu_s(void);
 
+/** @brief CPU time of the calling thread alone (s), NaN where the clock is
+ *  missing: a run's when it is one of several runs sharing the process,
+ *  each on a thread of its own (a report's lanes). */
+double vsph_sysinfo_thread_cpu_s(void);
+
 /** @brief The OpenMP wait policy this process runs under, as the
  *  environment gives it: "GOMP_SPINCOUNT=1000" (what the vsph program
  *  sets unless told otherwise), "OMP_WAIT_POLICY=...", both, or "libgomp

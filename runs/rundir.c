@@ -492,6 +492,14 @@ static int resume_dir(struct vsph_folder *fo, const struct ckpt *c,
  * before each output, within a snapshot's sums and compression, between
  * the stages of a step and after it: the checkpoint then keeps the
  * outputs still due, and a resumed run writes them first. */
+/* The CPU time a run spends: the process's when the run has it to itself;
+ * inside an active parallel region (a report running several runs at once,
+ * one per thread, their own regions nested and so inactive) the calling
+ * thread's, since the process's clock counts the other runs too. */
+static double run_cpu_s(void) {
+  return omp_in_parallel() ? vsph_sysinfo_thread_cpu_s() : vsph_sysinfo_cpu_s();
+}
+
 static int time_loop(struct outputs *o, struct vsph_run *run,
                      struct vsph_references_scene *ref, const char *key,
                      const struct vsph_rundir_opts *opts,
@@ -502,7 +510,7 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
   const int tty = progress && isatty(fileno(progress));
   const double every = tty ? 0.5 : 2.0;
   vsph_sysinfo_load(res->load[0]);
-  const double t0 = omp_get_wtime(), c0 = vsph_sysinfo_cpu_s();
+  const double t0 = omp_get_wtime(), c0 = run_cpu_s();
   const double wall0 = res->wall_s, cpu0 = res->cpu_s; /* earlier segments */
   const double sim0 = vsph_run_time(run);
   const size_t step0 = vsph_run_steps(run);
@@ -540,7 +548,7 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
     if (stopped || (ckpt_every > 0 && now - saved >= ckpt_every)) {
       saved = now;
       if ((st = checkpoint_write(o, run, key, res, wall0 + now - t0,
-                                 cpu0 + vsph_sysinfo_cpu_s() - c0)))
+                                 cpu0 + run_cpu_s() - c0)))
         break;
     }
     if (stopped) { /* between steps, outputs maybe still due */
@@ -551,7 +559,7 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
       /* stopped within a step, which was put back: the state is the one
        * after the last step, whose outputs are written */
       st = checkpoint_write(o, run, key, res, wall0 + omp_get_wtime() - t0,
-                            cpu0 + vsph_sysinfo_cpu_s() - c0);
+                            cpu0 + run_cpu_s() - c0);
       if (!st) res->interrupted = 1;
       break;
     }
@@ -575,7 +583,7 @@ static int time_loop(struct outputs *o, struct vsph_run *run,
   run->integ->stop = opts->stop; /* the hook is gone with this frame */
   if (tty && last > t0) fprintf(progress, "\n");
   res->wall_s = wall0 + omp_get_wtime() - t0;
-  res->cpu_s = cpu0 + vsph_sysinfo_cpu_s() - c0;
+  res->cpu_s = cpu0 + run_cpu_s() - c0;
   vsph_sysinfo_load(res->load[1]);
   return st;
 }

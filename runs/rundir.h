@@ -56,7 +56,7 @@ struct vsph_rundir_result {
   size_t steps;         /*!< steps taken */
   double t;             /*!< time reached (s) */
   double wall_s;        /*!< wall time of the time loop (s) */
-  double cpu_s;         /*!< CPU time of the time loop, all threads (s) */
+  double cpu_s;         /*!< CPU time of the time loop, the run's threads (s) */
   double load[2][3];    /*!< load averages (1, 5, 15 min) before, after */
   double pairs;         /*!< interactions gathered over the run */
   double h, dx, c0, mu; /*!< resolution and physics used */

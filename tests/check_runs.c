@@ -9,6 +9,7 @@
 #include <cjson/cJSON.h>
 #include <dirent.h>
 #include <math.h>
+#include <omp.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,6 +22,7 @@
 #include "../common/consts.h"
 #include "../common/params.h"
 #include "../common/status.h"
+#include "../common/sysinfo.h"
 #include "../io/files.h"
 #include "../runs/archive.h"
 #include "../runs/folder.h"
@@ -1228,6 +1230,50 @@ START_TEST(test_report_stops_at_once) {
 }
 END_TEST
 
+/* A run made as one of several in a process, one per thread of an active
+ * parallel region (a report's lanes), counts its own CPU time, not the
+ * process's: here its neighbour thread spins for as long as it runs. One
+ * thread cannot spend more CPU time than wall time; the 5 % and 10 ms
+ * allow for the two clocks being read a few calls apart and their
+ * granularity. Counting the process's clock instead gives the run about
+ * wall_s + spun, which the spin's own minimum (a tenth of the wall time,
+ * below the share it gets even beside a make -j2) puts outside that. */
+START_TEST(test_cpu_own_lane) {
+  static const char *const LONG[] = {"Solver:res=16", "Solver:t_end=0.5", NULL};
+  char dir[] = "/tmp/vsph_laneXXXXXX", a[300];
+  vsph_test_scratch(dir);
+  snprintf(a, sizeof a, "%s/a", dir);
+  struct vsph_rundir_result r;
+  int st = -1, done = 0, threads = 0;
+  double spun = 0.0;
+#pragma omp parallel num_threads(2) shared(st, done, spun, threads, r)
+  {
+#pragma omp single nowait
+    threads = omp_get_num_threads();
+    if (omp_get_thread_num() == 0) {
+      omp_set_num_threads(1); /* as a report's lane: its loops on itself */
+      st = run("poiseuille", LONG, a, 0, &r);
+#pragma omp atomic write
+      done = 1;
+    } else {
+      const double c0 = vsph_sysinfo_thread_cpu_s();
+      for (int d = 0; !d;) {
+#pragma omp atomic read
+        d = done;
+      }
+      spun = vsph_sysinfo_thread_cpu_s() - c0;
+    }
+  }
+  ck_assert_int_eq(threads, 2);
+  ck_assert_int_eq(st, 0);
+  ck_assert_msg(spun > 0.1 * r.wall_s, "the neighbour spun %g s in %g s", spun,
+                r.wall_s);
+  ck_assert_msg(r.cpu_s > 0.0 && r.cpu_s <= 1.05 * r.wall_s + 0.01,
+                "one thread's run: %g s of CPU in %g s", r.cpu_s, r.wall_s);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_runs_suite(void) {
   Suite *s = suite_create("runs");
   TCase *tc = tcase_create("restart");
@@ -1241,6 +1287,7 @@ Suite *vsph_runs_suite(void) {
   tcase_add_test(tc, test_restart_any_signal);
   tcase_add_test(tc, test_stop_during_setup);
   tcase_add_test(tc, test_report_stops_at_once);
+  tcase_add_test(tc, test_cpu_own_lane);
   suite_add_tcase(s, tc);
   TCase *tf = tcase_create("folder");
   tcase_set_timeout(tf, 60);
