@@ -71,6 +71,36 @@ static int summarise(const char *dir, const char *archive, const char *commit) {
   return st;
 }
 
+/* The sealed runs of report folder @p dir stored in @p archive, with the
+ * frames the FULL report's pictures and profiles read (its plan's
+ * VSPH_JOBS_FRAME_* runs). */
+static int store(const char *dir, const char *archive, const char *commit,
+                 struct vsph_archive_counts *n) {
+  struct vsph_jobs jobs;
+  memset(&jobs, 0, sizeof jobs);
+  int st = vsph_report_plan_jobs(dir, 1, &jobs);
+  if (st) return st;
+  const char **name = calloc(jobs.n ? jobs.n : 1, sizeof *name);
+  unsigned *want = calloc(jobs.n ? jobs.n : 1, sizeof *want);
+  struct vsph_archive_frames fr = {
+      .name = name, .want = want, .bits = VSPH_ARCHIVE_FRAME_BITS};
+  if (!name || !want) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot list the frames");
+  }
+  for (size_t k = 0; !st && k < jobs.n; k++)
+    if (jobs.job[k].frames) {
+      const char *slash = strrchr(jobs.job[k].dir, '/');
+      name[fr.n] = slash ? slash + 1 : jobs.job[k].dir;
+      want[fr.n++] = jobs.job[k].frames;
+    }
+  if (!st) st = vsph_archive_store_frames(dir, archive, commit, &fr, stderr, n);
+  free(name);
+  free(want);
+  vsph_jobs_plan_free(&jobs);
+  return st;
+}
+
 /* 1 if folder @p out (made or not) lies in folder @p dir or is it: the
  * canonical paths compared, @p out's deepest existing folder standing
  * for it. */
@@ -357,7 +387,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
     const int bad = judge_inputs();
     if (bad) return bad;
     struct vsph_archive_counts n;
-    int st = vsph_archive_store(dir, archive, commit, stderr, &n);
+    int st = store(dir, archive, commit, &n);
     if (st) return vsph_args_status(CMD, st);
     fprintf(stderr,
             "vsph report: archived %zu runs of %s in %s (%zu already there, "

@@ -1,6 +1,7 @@
 #include "vtk.h"
 
 #include <errno.h>
+#include <math.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -18,6 +19,10 @@
  * deflate little beyond the zeros and the repeated high bytes) in 13 ms
  * against 34 ms and 275 ms (measured 2026-11-25). */
 enum { LEVEL = 1 };
+
+/* A frame's level, 9: written once, for an archive, so its size counts
+ * rather than its time (measured: FRAME_LEVEL_NOTE). */
+enum { FRAME_LEVEL = 9 };
 
 /* The arrays of one file: 2 FieldData, Points, 2 Verts, at most 9
  * PointData. */
@@ -49,6 +54,9 @@ struct out {
   char desc[DESC_LEN];
   size_t desc_len, ndesc;
   const volatile sig_atomic_t *stop; /* NULL, or stop when set */
+  size_t nverts;                     /* vertex cells: n, or 0 (a frame) */
+  int level;                         /* zlib's: LEVEL, or FRAME_LEVEL */
+  int no_scalars, no_vectors;        /* a frame without pressure, velocity */
 };
 
 /* Append @p nbytes at @p raw as one array in the layout of
@@ -88,7 +96,7 @@ static int add_array(struct out *o, enum section sec, const char *name,
     uLongf zlen = (uLongf)slot;
     const int zs =
         compress2(z0 + b * slot, &zlen, (const Bytef *)raw + b * VSPH_VTK_BLOCK,
-                  (uLong)in, LEVEL);
+                  (uLong)in, o->level);
     if (zs != Z_OK && zs < bad) bad = zs;
     zl[b] = zlen;
   }
@@ -283,8 +291,9 @@ static void write_file(FILE *f, const struct out *o, size_t n, double t) {
           "</FieldData>\n"
           "<Piece NumberOfPoints=\"%zu\" NumberOfVerts=\"%zu\" "
           "NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
-          "<PointData Scalars=\"pressure\" Vectors=\"velocity\">\n",
-          n, n);
+          "<PointData%s%s>\n",
+          n, o->nverts, o->no_scalars ? "" : " Scalars=\"pressure\"",
+          o->no_vectors ? "" : " Vectors=\"velocity\"");
   write_section(f, o, POINT_DATA);
   fprintf(f, "</PointData>\n<Points>\n");
   write_section(f, o, POINTS);
@@ -312,6 +321,8 @@ int vsph_vtk_write(const char *dir, const char *name,
     VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot of %zu particles", n);
   }
   o->stop = stop;
+  o->nverts = n;
+  o->level = LEVEL;
   for (size_t i = 0; i < p->n; i++)
     if (p->id[i] < n) order[p->id[i]] = i;
   int st = build(o, p, order, n, t, dg, buf);
@@ -324,6 +335,108 @@ int vsph_vtk_write(const char *dir, const char *name,
     st = vsph_files_close(f, dir, name);
   }
   free(o->data);
+  free(o);
+  return st;
+}
+
+/* ---- frames ---- */
+
+/* @p v in single precision rounded to nearest (ties away from zero) at
+ * @p bits mantissa bits: the low 23 - bits bits of its pattern dropped
+ * after adding half of the last kept one, a carry into the exponent
+ * being the correct rounding up; NaN and infinities as they are. */
+static float round_bits(double v, int bits) {
+  float f = (float)v;
+  if (bits >= 23 || !isfinite(f)) return f;
+  uint32_t u;
+  memcpy(&u, &f, sizeof u);
+  const uint32_t drop = (uint32_t)(23 - bits);
+  u = (u + (UINT32_C(1) << (drop - 1))) & ~((UINT32_C(1) << drop) - 1);
+  memcpy(&f, &u, sizeof f);
+  return f;
+}
+
+static int build_frame(struct out *o, const struct vsph_vtk_snapshot *s,
+                       int bits, unsigned fields, float *x, unsigned char *u8) {
+  const size_t n = s->n, n4 = n * sizeof(float);
+  const double b = bits, fl = fields;
+  int st =
+      add_array(o, FIELD, "TimeValue", "Float64", 1, 1, &s->t, sizeof s->t);
+  describe(o, "TimeValue", "time of the frame, the exact double", "s", 2);
+  if (!st)
+    st = add_array(o, FIELD, "frame_bits", "Float64", 1, 1, &b, sizeof b);
+  describe(o, "frame_bits",
+           "a frame: every Float32 here is its run's double rounded to this "
+           "many mantissa bits (relative error at most 2^-(bits+1))",
+           "dimensionless", 2);
+  if (!st)
+    st = add_array(o, FIELD, "frame_fields", "Float64", 1, 1, &fl, sizeof fl);
+  describe(o, "frame_fields",
+           "what the frame holds beyond the positions: 1 the velocity, 2 the "
+           "pressure, vorticity and free-surface flag, 3 both",
+           "dimensionless", 2);
+  for (size_t k = 0; k < 3 * n; k++) x[k] = round_bits(s->pos[k], bits);
+  if (!st) st = add_array(o, POINTS, "Points", "Float32", 3, 0, x, 3 * n4);
+  describe(o, "Points", "particle positions x, y, z", "m", 2);
+  if (fields & VSPH_VTK_FRAME_VELOCITY) {
+    for (size_t k = 0; k < 3 * n; k++) x[k] = round_bits(s->vel[k], bits);
+    if (!st)
+      st = add_array(o, POINT_DATA, "velocity", "Float32", 3, 0, x, 3 * n4);
+    describe(o, "velocity", "velocity u_x, u_y, u_z", "m/s", 2);
+  }
+  if (fields & VSPH_VTK_FRAME_SCALARS) {
+    for (size_t k = 0; k < n; k++) x[k] = round_bits(s->p[k], bits);
+    if (!st) st = add_array(o, POINT_DATA, "pressure", "Float32", 1, 0, x, n4);
+    describe(o, "pressure", "pressure p from the state equation", "Pa", 2);
+    if (s->vort_ncomp == 1) {
+      for (size_t k = 0; k < n; k++)
+        x[k] = round_bits(s->vort[3 * k + 2], bits);
+      if (!st)
+        st = add_array(o, POINT_DATA, "vorticity_z", "Float32", 1, 0, x, n4);
+      describe(o, "vorticity_z", "SPH vorticity omega_z, signed", "1/s", 2);
+    }
+    for (size_t k = 0; k < n; k++) u8[k] = s->surf[k] != 0.0;
+    if (!st)
+      st = add_array(o, POINT_DATA, "free_surface", "UInt8", 1, 0, u8, n);
+    describe(o, "free_surface", "free-surface flag (as in the snapshot)",
+             "dimensionless", 2);
+  }
+  if (!st)
+    st = add_array(o, FIELD, "array_descriptions", "String", 1, o->ndesc,
+                   o->desc, o->desc_len);
+  return st;
+}
+
+int vsph_vtk_write_frame(const char *dir, const char *name,
+                         const struct vsph_vtk_snapshot *s, int bits,
+                         unsigned fields) {
+  if (bits < 1 || bits > 23)
+    VSPH_FAIL(VSPH_EINVAL, "a frame keeps 1-23 mantissa bits, not %d", bits);
+  if (fields > (VSPH_VTK_FRAME_VELOCITY | VSPH_VTK_FRAME_SCALARS))
+    VSPH_FAIL(VSPH_EINVAL, "a frame's fields are 0-3, not %u", fields);
+  const size_t len = s->n ? s->n : 1;
+  float *x = malloc(3 * len * sizeof *x);
+  unsigned char *u8 = malloc(len);
+  struct out *o = calloc(1, sizeof *o);
+  int st = x && u8 && o ? VSPH_OK : VSPH_ENOMEM;
+  if (st)
+    vsph_status_report(st, __FILE__, __LINE__,
+                       "cannot allocate a frame of %zu particles", s->n);
+  if (!st) {
+    o->level = FRAME_LEVEL;
+    o->no_vectors = !(fields & VSPH_VTK_FRAME_VELOCITY);
+    o->no_scalars = !(fields & VSPH_VTK_FRAME_SCALARS);
+    st = build_frame(o, s, bits, fields, x, u8);
+  }
+  free(x);
+  free(u8);
+  FILE *f = st ? NULL : vsph_files_open(dir, name);
+  if (!st && !f) st = VSPH_EIO;
+  if (!st) {
+    write_file(f, o, s->n, s->t);
+    st = vsph_files_close(f, dir, name);
+  }
+  if (o) free(o->data);
   free(o);
   return st;
 }
@@ -406,6 +519,16 @@ static int read_array(const struct in *in, const char *name, int ncomp,
   const size_t offset = strtoull(val, NULL, 10), count = ntuples * nc;
   if (!strcmp(type, "Float64"))
     return inflate_array(in, offset, out, count * sizeof(double)) ? -1 : 1;
+  if (!strcmp(type, "Float32")) { /* a frame's: widened in place, from the
+                                     end (float k lies below double k) */
+    if (inflate_array(in, offset, out, count * sizeof(float))) return -1;
+    for (size_t k = count; k-- > 0;) {
+      float f;
+      memcpy(&f, (const unsigned char *)out + k * sizeof f, sizeof f);
+      out[k] = f;
+    }
+    return 1;
+  }
   if (strcmp(type, "UInt8")) return -1;
   unsigned char *u8 = malloc(count ? count : 1);
   const int bad = !u8 || inflate_array(in, offset, u8, count);
@@ -480,13 +603,24 @@ int vsph_vtk_read(const char *path, struct vsph_vtk_snapshot *s) {
     vsph_vtk_snapshot_free(s);
     VSPH_FAIL(VSPH_ENOMEM, "cannot allocate %s (%zu particles)", path, n);
   }
-  /* the state must be there; the diagnostics and material may not be */
-  bad = read_array(&in, "TimeValue", 1, 1, &s->t) != 1 ||
+  /* the state must be there (a frame's part of it); the diagnostics and
+   * material may not be */
+  double fb = 0.0, ff = 0.0;
+  const int frame = read_array(&in, "frame_bits", 1, 1, &fb);
+  const int ffs = read_array(&in, "frame_fields", 1, 1, &ff);
+  s->frame_bits = frame == 1 ? (int)fb : 0;
+  s->frame_fields = ffs == 1 && ff >= 0.0 && ff <= 3.0 ? (unsigned)ff : 0u;
+  const int vel = !frame || (s->frame_fields & VSPH_VTK_FRAME_VELOCITY);
+  const int sca = !frame || (s->frame_fields & VSPH_VTK_FRAME_SCALARS);
+  bad = frame < 0 || ffs != frame ||
+        (frame && (fb < 1.0 || fb > 23.0 || fb != s->frame_bits ||
+                   ff != s->frame_fields)) ||
+        read_array(&in, "TimeValue", 1, 1, &s->t) != 1 ||
         read_array(&in, "Points", 3, n, s->pos) != 1 ||
-        read_array(&in, "velocity", 3, n, s->vel) != 1 ||
-        read_array(&in, "density", 1, n, s->rho) != 1 ||
-        read_array(&in, "pressure", 1, n, s->p) != 1 ||
-        read_array(&in, "volume", 1, n, s->vol) != 1 ||
+        read_array(&in, "velocity", 3, n, s->vel) != vel ||
+        read_array(&in, "density", 1, n, s->rho) != !frame ||
+        read_array(&in, "pressure", 1, n, s->p) != sca ||
+        read_array(&in, "volume", 1, n, s->vol) != !frame ||
         read_array(&in, "div_r", 1, n, s->divr) < 0 ||
         read_array(&in, "free_surface", 1, n, s->surf) < 0 ||
         read_array(&in, "material", 1, n, s->mat) < 0;

@@ -61,13 +61,41 @@ struct vsph_vtk_snapshot {
   double *divr;   /*!< div r (dimensionless) */
   double *surf;   /*!< free-surface flag as 0 or 1 */
   double *mat;    /*!< material index (0 where the file has none) */
+  int frame_bits; /*!< 0: a snapshot, every number as written; else a
+                       frame (vsph_vtk_write_frame): its floats rounded to
+                       this many mantissa bits, no density or volume */
+  unsigned frame_fields; /*!< a frame's VSPH_VTK_FRAME_* (0: a snapshot,
+                              which holds every field) */
 };
 
-/** @brief Read a snapshot written by vsph_vtk_write (binary appended,
- *  zlib-compressed VTK XML PolyData in this machine's byte order).
+/** A frame's fields beyond the positions and time (vsph_vtk_write_frame):
+ *  the velocity (a profile's), and the pressure, 2-D vorticity and
+ *  free-surface flag (a picture's). */
+enum { VSPH_VTK_FRAME_VELOCITY = 1u, VSPH_VTK_FRAME_SCALARS = 2u };
+
+/** @brief Read a snapshot written by vsph_vtk_write or a frame written by
+ *  vsph_vtk_write_frame (binary appended, zlib-compressed VTK XML
+ *  PolyData in this machine's byte order).
  *  @return VSPH_OK, VSPH_EIO (unreadable, not such a snapshot, e.g. one
  *  of an older ASCII vsph, or damaged; reported) or VSPH_ENOMEM. */
 int vsph_vtk_read(const char *path, struct vsph_vtk_snapshot *s);
+
+/** @brief Frame of snapshot @p s written atomically to DIR/NAME: what a
+ *  picture or a profile reads, compact enough for a run archive. The
+ *  positions, and the fields @p fields names (VSPH_VTK_FRAME_*: the
+ *  velocity; the pressure, 2-D vorticity and free-surface flag), floats
+ *  as Float32 rounded to nearest at @p bits mantissa bits (1-23: a
+ *  relative error of at most 2^-(bits+1) beyond single precision's
+ *  2^-24); TimeValue exact; FieldData frame_bits = @p bits and
+ *  frame_fields = @p fields. No density, volume, div_r, material, id or
+ *  vertex cells (ParaView shows its points with the Point Gaussian
+ *  representation). vsph_vtk_read reads it back with frame_bits and
+ *  frame_fields set, the fields it lacks as zeros.
+ *  @return VSPH_OK, VSPH_EINVAL (@p bits or @p fields out of range),
+ *  VSPH_ENOMEM, VSPH_ELIB or VSPH_EIO. */
+int vsph_vtk_write_frame(const char *dir, const char *name,
+                         const struct vsph_vtk_snapshot *s, int bits,
+                         unsigned fields);
 
 /** @brief Free the arrays of a snapshot read back. */
 void vsph_vtk_snapshot_free(struct vsph_vtk_snapshot *s);

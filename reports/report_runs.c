@@ -93,9 +93,15 @@ int vsph_report_runs_plan_scene(struct vsph_report_runs *R, int sc) {
     for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
       const struct vsph_jobs_spec rs = {
           L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
-      /* the finest rung's snapshots: the scene's pictures and profiles */
-      st = k == VSPH_REPORT_LADDER - 1 ? vsph_jobs_plan_here(&R->jobs, &rs)
-                                       : vsph_jobs_plan_run(&R->jobs, &rs);
+      /* the finest rung's snapshots: the scene's pictures (the first
+       * formulation's first, each one's last) and the vortex patch's
+       * profiles (every snapshot's velocities) */
+      const unsigned fr = VSPH_JOBS_FRAME_LAST |
+                          (f == 0 ? VSPH_JOBS_FRAME_FIRST : 0u) |
+                          (sc == 0 ? VSPH_JOBS_FRAME_ALL : 0u);
+      st = k == VSPH_REPORT_LADDER - 1
+               ? vsph_jobs_plan_frames(&R->jobs, &rs, fr)
+               : vsph_jobs_plan_run(&R->jobs, &rs);
       /* the vortex patch's ladder again on a Cartesian disc (section 6) */
       const struct vsph_jobs_spec cs = {
           L->scene, vsph_viscous_name(f),       L->res[k],

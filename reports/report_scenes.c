@@ -304,6 +304,7 @@ static int scene(struct vsph_report *R, int sc) {
   struct vsph_jobs_run runs[NFORM];
   memset(runs, 0, sizeof runs);
   int nosnap = -1; /* a formulation whose run has no snapshots */
+  int framed = 0;  /* a run read from a run archive's frames */
   for (int f = 0; f < NFORM && !st; f++) {
     struct vsph_jobs_spec rs = {
         L->scene, vsph_viscous_name(f), res, L->t_end, NULL, NULL};
@@ -330,10 +331,13 @@ static int scene(struct vsph_report *R, int sc) {
             vsph_report_runs_error(&r, square ? &rr : NULL),
             r.Ek[r.nrow - 1] / r.Ek[0], lossb, vsph_report_runs_diss0(&r),
             r.wall_s);
-    /* a run read from a run archive keeps no snapshots: no profiles */
-    const int snaps = !strcmp(vsph_jobs_where(&R->runs.jobs, r.dir), r.dir) ||
-                      vsph_jobs_holds(&R->runs.jobs, r.dir, "snap_0000.vtp");
+    /* a run read from a run archive keeps only the frames the pictures
+     * and profiles read (vsph_archive_store_frames), if any */
+    const int here = !strcmp(vsph_jobs_where(&R->runs.jobs, r.dir), r.dir);
+    const int snaps =
+        here || vsph_jobs_last_snapshot(&R->runs.jobs, r.dir) >= 0;
     if (!snaps) nosnap = f;
+    if (!here && snaps) framed = 1;
     if (!st && sc == 0 && snaps) st = vortex_profiles(R, figs, f, &r, res);
     vsph_report_runs_free(&r);
   }
@@ -342,11 +346,18 @@ static int scene(struct vsph_report *R, int sc) {
     fprintf(figs,
             "*The particle pictures%s of this scene are left out: run `%s` "
             "is read from the run archive `%s`, which keeps no "
-            "snapshots.*\n\n",
+            "frames of its snapshots.*\n\n",
             sc == 0 ? " and the u_θ(r) profiles" : "", runs[nosnap].dir,
             R->runs.archive ? R->runs.archive : "?");
   fclose(figs);
   fprintf(R->md, "\n");
+  if (!st && framed && nosnap < 0)
+    fprintf(R->md,
+            "*The particle pictures%s below are drawn from the run archive's "
+            "frames of the snapshots they read: single precision rounded to "
+            "%d mantissa bits, a relative error of at most 2^-%d.*\n\n",
+            sc == 0 ? " and the u_θ(r) profiles" : "", VSPH_ARCHIVE_FRAME_BITS,
+            VSPH_ARCHIVE_FRAME_BITS + 1);
   fwrite(figbuf, 1, figlen, R->md);
   free(figbuf);
   if (!st) st = scene_figures(R, sc, names, square);

@@ -14,7 +14,9 @@
 #include "../common/status.h"
 #include "../io/files.h"
 #include "../io/json.h"
+#include "../io/vtk.h"
 #include "folder.h"
+#include "jobs.h"
 
 /* A run's file the archive keeps: all but snapshots, their index and a
  * checkpoint (bulk, and not what the report's parts read). */
@@ -67,19 +69,67 @@ struct copy {
   size_t n;
   char name[32][256];
   char *text[32];
+  size_t nframe; /* the snapshots kept as frames, with their fields */
+  char frame[64][32];
+  unsigned fields[64];
 };
+
+/* The VSPH_JOBS_FRAME_* @p fr asks for run @p name (0: none). */
+static unsigned frames_wanted(const struct vsph_archive_frames *fr,
+                              const char *name) {
+  for (size_t k = 0; fr && k < fr->n; k++)
+    if (!strcmp(fr->name[k], name)) return fr->want[k];
+  return 0u;
+}
+
+/* Snapshot NNNN of "snap_NNNN.vtp" (a name of exactly that form), or -1. */
+static int snap_index(const char *name) {
+  int k, used = 0;
+  if (strncmp(name, "snap_", 5) || strlen(name) != 13 ||
+      sscanf(name, "snap_%4d.vtp%n", &k, &used) != 1 || used != 13 || k < 0)
+    return -1;
+  return k;
+}
+
+/* The frame fields (VSPH_VTK_FRAME_*) snapshot @p k of @p last keeps
+ * for @p want (VSPH_JOBS_FRAME_*). */
+static unsigned frame_fields(unsigned want, int k, int last) {
+  unsigned f = 0u;
+  if ((want & VSPH_JOBS_FRAME_FIRST) && k == 0) f |= VSPH_VTK_FRAME_SCALARS;
+  if ((want & VSPH_JOBS_FRAME_LAST) && k == last) f |= VSPH_VTK_FRAME_SCALARS;
+  if (want & VSPH_JOBS_FRAME_ALL) f |= VSPH_VTK_FRAME_VELOCITY;
+  return f;
+}
 
 static void copy_free(struct copy *c) {
   for (size_t k = 0; k < c->n; k++) free(c->text[k]);
   c->n = 0;
+  c->nframe = 0;
 }
 
-/* 1 when every kept file of @p src was read as listed in @p files; 0 with
- * why otherwise. */
-static int copy_read(const char *src, const char *files,
+/* The last snapshot @p files lists, or -1. */
+static int last_snapshot(const char *files) {
+  int last = -1;
+  for (const char *line = files; *line;) {
+    char name[256];
+    const char *end = strchr(line, '\n');
+    if (!end) break;
+    if (sscanf(line, "%255s", name) == 1 && snap_index(name) > last)
+      last = snap_index(name);
+    line = end + 1;
+  }
+  return last;
+}
+
+/* 1 when every kept file of @p src was read as listed in @p files, and
+ * each snapshot @p want asks for found as listed (its frame is made as
+ * the entry is stored); 0 with why otherwise. */
+static int copy_read(const char *src, const char *files, unsigned want,
                      const struct vsph_folder_kind *kind, struct copy *c,
                      char *why, size_t wlen) {
   c->n = 0;
+  c->nframe = 0;
+  const int last = want ? last_snapshot(files) : -1;
   for (const char *line = files; *line;) {
     const char *end = strchr(line, '\n');
     char name[256];
@@ -93,6 +143,25 @@ static int copy_read(const char *src, const char *files,
       return 0;
     }
     line = end + 1;
+    const int snap = want ? snap_index(name) : -1;
+    const unsigned ff = snap >= 0 ? frame_fields(want, snap, last) : 0u;
+    if (ff) { /* a frame's snapshot: as its seal lists it (binary) */
+      char path[4700];
+      snprintf(path, sizeof path, "%s/%s", src, name);
+      size_t len = 0;
+      char *bytes = vsph_files_slurp(path, &len);
+      const int ok =
+          bytes && len == size &&
+          crc32(crc32(0L, Z_NULL, 0), (const Bytef *)bytes, (uInt)len) == crc;
+      free(bytes);
+      if (!ok || c->nframe == sizeof c->frame / sizeof *c->frame) {
+        snprintf(why, wlen, "%.255s is not as its seal lists it", name);
+        return 0;
+      }
+      snprintf(c->frame[c->nframe], sizeof c->frame[c->nframe], "%s", name);
+      c->fields[c->nframe++] = ff;
+      continue;
+    }
     if (!kept_file(name) || kind->owns(name) != VSPH_FOLDER_FILE) continue;
     if (c->n == sizeof c->text / sizeof *c->text) {
       snprintf(why, wlen, "its key.txt lists too many files");
@@ -138,8 +207,8 @@ static int remove_entry(const char *dir, const struct vsph_folder_kind *kind) {
  * beside it as DST.new, then swapped in; the old one, if any, goes only
  * once the new one is whole and in place. */
 static int store_one(const char *dst, const char *key,
-                     const struct vsph_folder_kind *kind,
-                     const struct copy *c) {
+                     const struct vsph_folder_kind *kind, const struct copy *c,
+                     const char *src, int bits) {
   char fresh[4500], old[4500];
   snprintf(fresh, sizeof fresh, "%s.new", dst);
   snprintf(old, sizeof old, "%s.old", dst);
@@ -148,6 +217,22 @@ static int store_one(const char *dst, const char *key,
   if (st) return st;
   for (size_t k = 0; k < c->n && !st; k++)
     st = vsph_files_write(fresh, c->name[k], c->text[k]);
+  /* the frames, and their snapshots.pvd: ParaView's time series, and
+   * where a report finds them */
+  struct vsph_vtk_pvd pvd = {0};
+  if (!st && c->nframe) st = vsph_vtk_pvd_open(&pvd, fresh);
+  for (size_t k = 0; k < c->nframe && !st; k++) {
+    char path[4500];
+    snprintf(path, sizeof path, "%s/%s", src, c->frame[k]);
+    struct vsph_vtk_snapshot s;
+    st = vsph_vtk_read(path, &s);
+    if (!st)
+      st = vsph_vtk_write_frame(fresh, c->frame[k], &s, bits, c->fields[k]);
+    if (!st) st = vsph_vtk_pvd_add(&pvd, s.t, c->frame[k]);
+    vsph_vtk_snapshot_free(&s);
+  }
+  const int pst = vsph_vtk_pvd_close(&pvd);
+  if (!st) st = pst;
   if (!st) st = vsph_folder_seal(&f, key, NULL);
   vsph_folder_release(&f);
   if (st) return st;
@@ -346,9 +431,29 @@ static int clear_leftovers(const char *runs) {
   return st;
 }
 
+/* 1 when entry @p dst holds a frame of every snapshot @p c lists. */
+static int holds_frames(const char *dst, const struct copy *c) {
+  for (size_t k = 0; k < c->nframe; k++) {
+    char path[4500];
+    snprintf(path, sizeof path, "%s/%s", dst, c->frame[k]);
+    struct stat sb;
+    if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) return 0;
+  }
+  return 1;
+}
+
 int vsph_archive_store(const char *report, const char *archive,
                        const char *commit, FILE *progress,
                        struct vsph_archive_counts *counts) {
+  return vsph_archive_store_frames(report, archive, commit, NULL, progress,
+                                   counts);
+}
+
+int vsph_archive_store_frames(const char *report, const char *archive,
+                              const char *commit,
+                              const struct vsph_archive_frames *frames,
+                              FILE *progress,
+                              struct vsph_archive_counts *counts) {
   memset(counts, 0, sizeof *counts);
   char src_runs[4200], runs[4200];
   snprintf(src_runs, sizeof src_runs, "%s/runs", report);
@@ -390,10 +495,14 @@ int vsph_archive_store(const char *report, const char *archive,
     else if (key_of(src, &key, &files) ||
              vsph_folder_verify(src, kind, key, NULL, why, sizeof why) != 1) {
       if (!why[0]) snprintf(why, sizeof why, "it has not ended (no seal)");
-    } else if (vsph_folder_verify(dst, kind, key, NULL, NULL, 0) == 1) {
-      counts->kept++;
-    } else if (copy_read(src, files, kind, c, why, sizeof why)) {
-      if (!(st = store_one(dst, key, kind, c))) counts->stored++;
+    } else if (copy_read(src, files, frames_wanted(frames, names[k]), kind, c,
+                         why, sizeof why)) {
+      if (vsph_folder_verify(dst, kind, key, NULL, NULL, 0) == 1 &&
+          holds_frames(dst, c))
+        counts->kept++;
+      else if (!(st = store_one(dst, key, kind, c, src,
+                                frames ? frames->bits : 0)))
+        counts->stored++;
     }
     copy_free(c);
     if (why[0]) {

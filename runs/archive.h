@@ -9,7 +9,9 @@
  *  repository (reports/full/ holds the FULL report's): of each sealed run
  *  of a report's runs/ folder, what the report's parts read (energy.csv,
  *  run.json, used_parameters.yml, the profile and centreline tables, a
- *  shear test's summary and profiles), never its snapshots or checkpoint.
+ *  shear test's summary and profiles), never its checkpoint, and of its
+ *  snapshots only the frames a report's pictures and profiles read
+ *  (vsph_archive_store_frames), rounded and compressed.
  *
  *  Each entry ARCHIVE/runs/NAME is itself a folder of its run's kind
  *  (runs/folder), sealed under the run's own key: the version and source
@@ -30,6 +32,35 @@ struct vsph_archive_counts {
   size_t kept;    /*!< entries already there under the same key */
   size_t skipped; /*!< run folders left out: not sealed */
 };
+
+/** Mantissa bits an archive's frames keep (vsph_vtk_write_frame): a
+ *  relative error of at most 2^-11 = 4.9e-4, a tenth of a particle
+ *  spacing at the stretching square's L/dx = 320 and under two colour
+ *  levels of 256 in a picture; at 10 bits the FULL report's frames come
+ *  to about 9 MB (README, the FULL archive). */
+#define VSPH_ARCHIVE_FRAME_BITS 10
+
+/** The snapshots a run archive keeps of some runs, as frames
+ *  (vsph_vtk_write_frame): what a report's parts read from them. */
+struct vsph_archive_frames {
+  size_t n;                /*!< runs with frames ... */
+  const char *const *name; /*!< ... each run's folder name ... */
+  const unsigned *want;    /*!< ... and its VSPH_JOBS_FRAME_* (runs/jobs.h):
+                                the first snapshot's or the last's pressure,
+                                vorticity and free-surface flag, every
+                                snapshot's velocities */
+  int bits;                /*!< mantissa bits (VSPH_ARCHIVE_FRAME_BITS) */
+};
+
+/** @brief vsph_archive_store, keeping of the runs @p frames names (NULL:
+ *  none) the snapshots and fields it asks for as frames, snap_NNNN.vtp in
+ *  the entry (its seal lists them). An entry already there under the same
+ *  key but without them is stored again. */
+int vsph_archive_store_frames(const char *report, const char *archive,
+                              const char *commit,
+                              const struct vsph_archive_frames *frames,
+                              FILE *progress,
+                              struct vsph_archive_counts *counts);
 
 /** @brief Store the sealed runs of report folder @p report (its runs/
  *  sub-folder) in archive @p archive (made if new; refused, untouched,

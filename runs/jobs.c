@@ -179,6 +179,7 @@ int vsph_jobs_plan_add(struct vsph_jobs *J, struct vsph_jobs_job *j) {
     if (!strcmp(P->job[k].dir, j->dir)) {
       const int same = !strcmp(P->job[k].key, j->key);
       P->job[k].here |= j->here;
+      P->job[k].frames |= j->frames;
       vsph_jobs_free(j);
       if (same) return VSPH_OK;
       VSPH_FAIL(VSPH_EBUG,
@@ -209,7 +210,7 @@ int vsph_jobs_plan_add(struct vsph_jobs *J, struct vsph_jobs_job *j) {
 
 /* A solver run planned, marked `here` or not. */
 static int plan_spec(struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
-                     int here) {
+                     int here, unsigned frames) {
   struct vsph_jobs_job j;
   const int st = vsph_jobs_run(J, rs, &j);
   if (st) {
@@ -217,15 +218,21 @@ static int plan_spec(struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
     return st;
   }
   j.here = here;
+  j.frames = frames;
   return vsph_jobs_plan_add(J, &j);
 }
 
 int vsph_jobs_plan_run(struct vsph_jobs *J, const struct vsph_jobs_spec *rs) {
-  return plan_spec(J, rs, 0);
+  return plan_spec(J, rs, 0, 0u);
 }
 
 int vsph_jobs_plan_here(struct vsph_jobs *J, const struct vsph_jobs_spec *rs) {
-  return plan_spec(J, rs, 1);
+  return plan_spec(J, rs, 1, 0u);
+}
+
+int vsph_jobs_plan_frames(struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
+                          unsigned frames) {
+  return plan_spec(J, rs, 1, frames);
 }
 
 /* Run @p j here: its folder ends with key.txt, or it failed. */

@@ -39,11 +39,13 @@ struct vsph_jobs_job {
   double particles, steps, bytes; /* the solver's estimate */
   double neighbours;              /* of each particle, every pass */
   int cached;                     /* its key.txt matches */
-  int archived; /* a run archive holds it, standing: a budget skips it */
-  int here;     /* a quick report makes it here, never reads it from a run
-                   archive: a baseline row's run, or one whose snapshots a
-                   part reads (vsph_jobs_plan_here) */
-  int failed;   /* the pool: did not end */
+  int archived;    /* a run archive holds it, standing: a budget skips it */
+  int here;        /* a quick report makes it here, never reads it from a run
+                      archive: a baseline row's run, or one whose snapshots a
+                      part reads (vsph_jobs_plan_here) */
+  unsigned frames; /* what parts read from its snapshots, which a run
+                      archive keeps as frames: VSPH_JOBS_FRAME_* */
+  int failed;      /* the pool: did not end */
   /* an assembly from a run archive: the entry its files are read from
    * when its own folder lacks it ("" otherwise), and the key that entry
    * is sealed under (the run's own, of the build that made it; owned) */
@@ -122,6 +124,20 @@ int vsph_jobs_plan_run(struct vsph_jobs *J, const struct vsph_jobs_spec *rs);
  * reads, which the archive does not keep). Planned both ways, it is
  * `here`. */
 int vsph_jobs_plan_here(struct vsph_jobs *J, const struct vsph_jobs_spec *rs);
+
+/* What a report's parts read from a run's snapshots (the report's
+ * pictures and profiles): a run archive keeps these as frames
+ * (vsph_archive_store_frames). */
+enum {
+  VSPH_JOBS_FRAME_FIRST = 1u, /* the first snapshot's picture fields */
+  VSPH_JOBS_FRAME_LAST = 2u,  /* the last snapshot's picture fields */
+  VSPH_JOBS_FRAME_ALL = 4u    /* every snapshot's velocities */
+};
+
+/* The same as vsph_jobs_plan_here, the run's snapshots read as @p frames
+ * says (VSPH_JOBS_FRAME_*; planned twice, the union). */
+int vsph_jobs_plan_frames(struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
+                          unsigned frames);
 
 /* Make sure the folder of @p j holds its run before a part reads it: with
  * a sealed plan, it must be listed and cached (else a failure naming it);

@@ -769,6 +769,9 @@ START_TEST(test_quick_from_archive) {
     for (size_t k = 0; k < R.jobs.n; k++) {
       const char *name = strrchr(R.jobs.job[k].dir, '/') + 1;
       size_t finest = 0;
+      unsigned frames = 0u; /* the pictures': the first formulation's
+                               first snapshot, each one's last; the vortex
+                               patch's profiles: every snapshot */
       for (int s = 0; s < 3; s++) {
         const struct vsph_report_ladderdef *L =
             vsph_report_runs_ladder(&R, s, 0);
@@ -776,11 +779,17 @@ START_TEST(test_quick_from_archive) {
           char want[128];
           snprintf(want, sizeof want, "%s-%s-%zu", L->scene,
                    vsph_viscous_name(f), L->res[VSPH_REPORT_LADDER - 1]);
-          finest += !strcmp(name, want);
+          if (strcmp(name, want)) continue;
+          finest++;
+          frames =
+              VSPH_JOBS_FRAME_LAST | (f == 0 ? VSPH_JOBS_FRAME_FIRST : 0u) |
+              (!strcmp(L->scene, "vortex-patch") ? VSPH_JOBS_FRAME_ALL : 0u);
         }
       }
       ck_assert_msg(R.jobs.job[k].here == (finest > 0), "%s: here %d", name,
                     R.jobs.job[k].here);
+      ck_assert_msg(R.jobs.job[k].frames == frames, "%s: frames %u", name,
+                    R.jobs.job[k].frames);
       nhere += finest;
     }
     /* a baseline row's run, planned before by its ladder, is `here` now */

@@ -24,8 +24,10 @@
 #include "../common/status.h"
 #include "../common/sysinfo.h"
 #include "../io/files.h"
+#include "../io/vtk.h"
 #include "../runs/archive.h"
 #include "../runs/folder.h"
+#include "../runs/jobs.h"
 #include "../runs/rundir.h"
 #include "../solver/run.h"
 #include "check_suites.h"
@@ -720,6 +722,107 @@ END_TEST
  * is left out and named; storing again keeps what is there; a redone run
  * (another key) replaces its entry; index.tsv lists the entries with the
  * source hash that made them; a foreign folder is refused untouched. */
+/* Entry NAME's frame of snapshot @p k in archive entry @p entry against
+ * the run's snapshot in @p run: its fields, bits, time and positions
+ * (each within the rounding's 2^-(bits+1) and single precision's 2^-24,
+ * bounded by 2^-11 + 2^-23 at 10 bits: vsph_vtk_write_frame). */
+static void frame_is(const char *run, const char *entry, int k,
+                     unsigned fields) {
+  char sp[700], fp[700];
+  snprintf(sp, sizeof sp, "%s/snap_%04d.vtp", run, k);
+  snprintf(fp, sizeof fp, "%s/snap_%04d.vtp", entry, k);
+  if (!fields) {
+    ck_assert_msg(!exists(fp), "%s", fp);
+    return;
+  }
+  struct vsph_vtk_snapshot s, f;
+  ck_assert_int_eq(vsph_vtk_read(sp, &s), 0);
+  ck_assert_int_eq(vsph_vtk_read(fp, &f), 0);
+  ck_assert_int_eq(f.frame_bits, VSPH_ARCHIVE_FRAME_BITS);
+  ck_assert_uint_eq(f.frame_fields, fields);
+  ck_assert_uint_eq(f.n, s.n);
+  ck_assert(f.t == s.t);
+  const double bound = ldexp(1.0, -(VSPH_ARCHIVE_FRAME_BITS + 1)) + 0x1p-23;
+  for (size_t i = 0; i < 3 * s.n; i++)
+    ck_assert(fabs(f.pos[i] - s.pos[i]) <= bound * fabs(s.pos[i]));
+  vsph_vtk_snapshot_free(&s);
+  vsph_vtk_snapshot_free(&f);
+}
+
+/* The frames an archive keeps of a run's snapshots, as a report's parts
+ * ask (VSPH_JOBS_FRAME_*): the first's and the last's picture fields, or
+ * every snapshot's velocities, nothing else; an entry stored before
+ * without them is stored again, then kept; its seal lists them. */
+START_TEST(test_archive_frames) {
+  char dir[] = "/tmp/vsph_framesXXXXXX", rep[300], a[300], ar[300], entry[400],
+       path[800];
+  vsph_test_scratch(dir);
+  snprintf(rep, sizeof rep, "%s/rep", dir);
+  snprintf(a, sizeof a, "%s/rep/runs/a", dir);
+  snprintf(ar, sizeof ar, "%s/ar", dir);
+  snprintf(entry, sizeof entry, "%s/runs/a", ar);
+  static const char *const set[] = {"Solver:res=8", "Solver:t_end=0.02",
+                                    "Solver:snapshots=3", NULL};
+  struct vsph_rundir_result r;
+  ck_assert_int_eq(run("poiseuille", set, a, 0, &r), 0);
+  int last = -1; /* the run's last snapshot, found on disk */
+  for (int k = 0; k < 100; k++) {
+    snprintf(path, sizeof path, "%s/snap_%04d.vtp", a, k);
+    if (exists(path)) last = k;
+  }
+  ck_assert_int_eq(last, 3); /* t = 0 and 3 more */
+  struct vsph_archive_counts n;
+  ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 1);
+  for (int k = 0; k <= last; k++) frame_is(a, entry, k, 0u);
+  static const char *const name[] = {"a", "nothing-of-that-name"};
+  unsigned want[] = {VSPH_JOBS_FRAME_FIRST | VSPH_JOBS_FRAME_LAST,
+                     VSPH_JOBS_FRAME_ALL};
+  const struct vsph_archive_frames fr = {2, name, want,
+                                         VSPH_ARCHIVE_FRAME_BITS};
+  ck_assert_int_eq(vsph_archive_store_frames(rep, ar, NULL, &fr, NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 1);
+  for (int k = 0; k <= last; k++)
+    frame_is(a, entry, k, k == 0 || k == last ? VSPH_VTK_FRAME_SCALARS : 0u);
+  char key[4096], seal[4096];
+  snprintf(path, sizeof path, "%s/key.txt", a);
+  vsph_test_slurp(path, key, sizeof key);
+  *strstr(key, "files:\n") = '\0';
+  ck_assert_int_eq(
+      vsph_folder_verify(entry, &vsph_folder_scene_run, key, NULL, NULL, 0), 1);
+  snprintf(path, sizeof path, "%s/key.txt", entry);
+  vsph_test_slurp(path, seal, sizeof seal);
+  ck_assert_ptr_nonnull(strstr(seal, "\nsnap_0003.vtp "));
+  ck_assert_ptr_null(strstr(seal, "\nsnap_0001.vtp "));
+  /* ParaView's time series of the frames, each at its snapshot's time as
+   * the run's own collection gives it */
+  char pvd[4096], runpvd[4096], line[200];
+  snprintf(path, sizeof path, "%s/snapshots.pvd", entry);
+  vsph_test_slurp(path, pvd, sizeof pvd);
+  snprintf(path, sizeof path, "%s/snapshots.pvd", a);
+  vsph_test_slurp(path, runpvd, sizeof runpvd);
+  for (int k = 0; k <= last; k++) {
+    snprintf(line, sizeof line, "file=\"snap_%04d.vtp\"", k);
+    const char *l = strstr(runpvd, line);
+    ck_assert_ptr_nonnull(l);
+    while (l > runpvd && l[-1] != '\n') l--;
+    snprintf(line, sizeof line, "%.*s", (int)(strchr(l, '\n') - l), l);
+    ck_assert_msg(!strstr(pvd, line) == !(k == 0 || k == last), "%s", line);
+  }
+  ck_assert_int_eq(vsph_archive_store_frames(rep, ar, NULL, &fr, NULL, &n), 0);
+  ck_assert_uint_eq(n.kept, 1);
+  ck_assert_uint_eq(n.stored, 0);
+  want[0] = VSPH_JOBS_FRAME_ALL | VSPH_JOBS_FRAME_LAST;
+  ck_assert_int_eq(vsph_archive_store_frames(rep, ar, NULL, &fr, NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 1);
+  for (int k = 0; k <= last; k++)
+    frame_is(
+        a, entry, k,
+        VSPH_VTK_FRAME_VELOCITY | (k == last ? VSPH_VTK_FRAME_SCALARS : 0u));
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 START_TEST(test_archive_store) {
   char dir[] = "/tmp/vsph_archiveXXXXXX", rep[300], a[300], b[300], ar[300],
        path[800], other[700];
@@ -1296,6 +1399,7 @@ Suite *vsph_runs_suite(void) {
   tcase_add_test(tf, test_folder_seal);
   tcase_add_test(tf, test_folder_manifest_cache);
   tcase_add_test(tf, test_archive_store);
+  tcase_add_test(tf, test_archive_frames);
   tcase_add_test(tf, test_archive_summary);
   tcase_add_test(tf, test_slurm_signal);
   tcase_add_test(tf, test_report_seal);

@@ -154,6 +154,12 @@ static double vtp_value(const struct vtp_array *a, size_t k) {
     memcpy(&x, a->bytes + 8 * k, 8);
     return x;
   }
+  if (!strcmp(a->type, "Float32")) {
+    ck_assert_uint_le((k + 1) * 4, a->nbytes);
+    float x;
+    memcpy(&x, a->bytes + 4 * k, 4);
+    return x;
+  }
   if (!strcmp(a->type, "Int64")) {
     ck_assert_uint_le((k + 1) * 8, a->nbytes);
     int64_t x;
@@ -303,6 +309,108 @@ START_TEST(test_roundtrip) {
     ck_assert(s.mat[k] == (p->mat ? p->mat[i] : 0));
   }
   ck_assert_uint_eq(seen, fx.n);
+  vsph_vtk_snapshot_free(&s);
+  clean_case(&fx, dir, path);
+}
+END_TEST
+
+/* A frame (vsph_vtk_write_frame) of a written snapshot, at 10 and 4
+ * mantissa bits and each choice of fields, read by the reader written
+ * here: each float it holds is its double rounded to nearest at that many
+ * bits, so its dropped bits are zero and it lies within 2^-(bits+1) of
+ * single precision's value, itself within 2^-24 of the double (the 2^-23
+ * below covers both the latter and the product of the two); the largest
+ * error over the 5003 random values is above 2^-(bits+2), so the rounding
+ * is at @p bits, not finer. No density, volume or vertex cells, and a
+ * field not asked for is absent. vsph_vtk_read gives the same floats,
+ * widened, frame_bits and frame_fields; an out-of-range bits or fields is
+ * refused with nothing written. */
+START_TEST(test_frame) {
+  struct fixture fx;
+  char dir[] = "/tmp/vsph_vtkXXXXXX", path[64], fpath[80];
+  write_case(_i, &fx, dir, path, sizeof path);
+  struct vsph_vtk_snapshot s;
+  ck_assert_int_eq(vsph_vtk_read(path, &s), 0);
+  ck_assert_int_eq(s.frame_bits, 0);
+  ck_assert_uint_eq(s.frame_fields, 0u);
+  const size_t n = s.n;
+  snprintf(fpath, sizeof fpath, "%s/f.vtp", dir);
+  static const int bitsv[2] = {10, 4};
+  for (int b = 0; b < 2; b++)
+    for (unsigned fields = 0; fields < 4; fields++) {
+      const int bits = bitsv[b];
+      ck_assert_int_eq(vsph_vtk_write_frame(dir, "f.vtp", &s, bits, fields), 0);
+      struct vtp v;
+      vtp_load(fpath, &v);
+      char val[32];
+      ck_assert(tag_attr(v.piece, "NumberOfVerts", val, sizeof val));
+      ck_assert_str_eq(val, "0");
+      ck_assert_ptr_null(vtp_find(&v, "density"));
+      ck_assert_ptr_null(vtp_find(&v, "volume"));
+      ck_assert_ptr_null(vtp_find(&v, "connectivity"));
+      const int vel = fields & VSPH_VTK_FRAME_VELOCITY,
+                sca = (fields & VSPH_VTK_FRAME_SCALARS) != 0;
+      const int w2 = sca && cases[_i].dim == 2;
+      const struct {
+        const char *name;
+        int present, ncomp, stride, comp;
+        const double *of;
+      } arr[] = {{"Points", 1, 3, 1, 0, s.pos},
+                 {"velocity", vel, 3, 1, 0, s.vel},
+                 {"pressure", sca, 1, 1, 0, s.p},
+                 {"vorticity_z", w2, 1, 3, 2, s.vort}};
+      const double bound = ldexp(1.0, -(bits + 1)) + ldexp(1.0, -23);
+      const uint32_t low = (UINT32_C(1) << (23 - bits)) - 1;
+      double worst = 0.0;
+      for (size_t a = 0; a < sizeof arr / sizeof *arr; a++) {
+        const struct vtp_array *fa = vtp_find(&v, arr[a].name);
+        if (!arr[a].present) {
+          ck_assert_ptr_null(fa);
+          continue;
+        }
+        ck_assert_ptr_nonnull(fa);
+        ck_assert_str_eq(fa->type, "Float32");
+        ck_assert_int_eq(fa->ncomp, arr[a].ncomp);
+        ck_assert_uint_eq(fa->nbytes, 4 * n * (size_t)arr[a].ncomp);
+        for (size_t k = 0; k < n * (size_t)arr[a].ncomp; k++) {
+          const double x = arr[a].of[arr[a].stride * k + arr[a].comp];
+          uint32_t u;
+          memcpy(&u, fa->bytes + 4 * k, 4);
+          ck_assert_uint_eq(u & low, 0u);
+          const double y = vtp_value(fa, k), e = fabs(y - x);
+          ck_assert_msg(e <= bound * fabs(x), "%s[%zu]: %.17g for %.17g",
+                        arr[a].name, k, y, x);
+          if (x != 0.0) worst = fmax(worst, e / fabs(x));
+        }
+      }
+      const struct vtp_array *fs = vtp_find(&v, "free_surface");
+      ck_assert(sca ? fs != NULL : fs == NULL);
+      for (size_t k = 0; sca && k < n; k++)
+        ck_assert(vtp_value(fs, k) == s.surf[k]);
+      if (n > 1000) ck_assert(worst > ldexp(1.0, -(bits + 2)));
+      struct vsph_vtk_snapshot f;
+      ck_assert_int_eq(vsph_vtk_read(fpath, &f), 0);
+      ck_assert_int_eq(f.frame_bits, bits);
+      ck_assert_uint_eq(f.frame_fields, fields);
+      ck_assert_uint_eq(f.n, n);
+      ck_assert(f.t == s.t);
+      const struct vtp_array *fp = vtp_find(&v, "Points");
+      for (size_t k = 0; k < 3 * n; k++) {
+        ck_assert(f.pos[k] == vtp_value(fp, k));
+        ck_assert(vel || f.vel[k] == 0.0);
+      }
+      for (size_t k = 0; k < n; k++) {
+        ck_assert(f.rho[k] == 0.0 && f.vol[k] == 0.0);
+        ck_assert(sca || (f.p[k] == 0.0 && f.surf[k] == 0.0));
+      }
+      vsph_vtk_snapshot_free(&f);
+      vtp_free(&v);
+      remove(fpath);
+    }
+  ck_assert_int_eq(vsph_vtk_write_frame(dir, "f.vtp", &s, 0, 3u), VSPH_EINVAL);
+  ck_assert_int_eq(vsph_vtk_write_frame(dir, "f.vtp", &s, 24, 3u), VSPH_EINVAL);
+  ck_assert_int_eq(vsph_vtk_write_frame(dir, "f.vtp", &s, 10, 4u), VSPH_EINVAL);
+  ck_assert_int_eq(access(fpath, F_OK), -1);
   vsph_vtk_snapshot_free(&s);
   clean_case(&fx, dir, path);
 }
@@ -617,6 +725,7 @@ Suite *vsph_vtk_suite(void) {
   TCase *tc = tcase_create("snapshots");
   tcase_set_timeout(tc, 20);
   tcase_add_loop_test(tc, test_roundtrip, 0, NCASES);
+  tcase_add_loop_test(tc, test_frame, 0, NCASES);
   tcase_add_loop_test(tc, test_layout, 0, NCASES);
   tcase_add_loop_test(tc, test_threads_and_stop, 0, NCASES);
   tcase_add_loop_test(tc, test_descriptions, 0, NCASES);
