@@ -335,7 +335,8 @@ static int scene(struct vsph_report *R, int sc) {
      * and profiles read (vsph_archive_store_frames), if any */
     const int here = !strcmp(vsph_jobs_where(&R->runs.jobs, r.dir), r.dir);
     const int snaps =
-        here || vsph_jobs_last_snapshot(&R->runs.jobs, r.dir) >= 0;
+        here || (vsph_jobs_holds(&R->runs.jobs, r.dir, "snapshots.pvd") &&
+                 vsph_jobs_last_snapshot(&R->runs.jobs, r.dir) >= 0);
     if (!snaps) nosnap = f;
     if (!here && snaps) framed = 1;
     if (!st && sc == 0 && snaps) st = vortex_profiles(R, figs, f, &r, res);
