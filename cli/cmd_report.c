@@ -391,7 +391,8 @@ int vsph_cmd_report_main(int argc, char **argv) {
     if (st) return vsph_args_status(CMD, st);
     fprintf(stderr,
             "vsph report: archived %zu runs of %s in %s (%zu already there, "
-            "%zu left out: unended, damaged or oddly named, each said "
+            "%zu left out: unended, damaged, oddly named or older than "
+            "their entries, each said "
             "above)\n",
             n.stored, dir, archive, n.kept, n.skipped);
     st = summarise(dir, archive, commit);

@@ -366,8 +366,10 @@ static int build_frame(struct out *o, const struct vsph_vtk_snapshot *s,
   if (!st)
     st = add_array(o, FIELD, "frame_bits", "Float64", 1, 1, &b, sizeof b);
   describe(o, "frame_bits",
-           "a frame: every Float32 here is its run's double rounded to this "
-           "many mantissa bits (relative error at most 2^-(bits+1))",
+           "a frame: every Float32 here is its run's double in single "
+           "precision rounded to nearest at this many mantissa bits (a "
+           "relative error of at most 2^-(bits+1) beyond single precision's "
+           "2^-24, for normal floats)",
            "dimensionless", 2);
   if (!st)
     st = add_array(o, FIELD, "frame_fields", "Float64", 1, 1, &fl, sizeof fl);
@@ -414,6 +416,8 @@ int vsph_vtk_write_frame(const char *dir, const char *name,
     VSPH_FAIL(VSPH_EINVAL, "a frame keeps 1-23 mantissa bits, not %d", bits);
   if (fields > (VSPH_VTK_FRAME_VELOCITY | VSPH_VTK_FRAME_SCALARS))
     VSPH_FAIL(VSPH_EINVAL, "a frame's fields are 0-3, not %u", fields);
+  if (s->frame_bits)
+    VSPH_FAIL(VSPH_EINVAL, "a frame is made of a snapshot, not of a frame");
   const size_t len = s->n ? s->n : 1;
   float *x = malloc(3 * len * sizeof *x);
   unsigned char *u8 = malloc(len);
@@ -448,6 +452,7 @@ struct in {
   const char *head;
   const unsigned char *data;
   size_t len;
+  int frame; /* a frame's (vsph_vtk_write_frame): Float32 arrays allowed */
 };
 
 /* The value of attribute KEY in the tag [tag, end) into val; 0 if absent. */
@@ -500,8 +505,8 @@ static int inflate_array(const struct in *in, size_t offset, void *dst,
 }
 
 /* Array NAME (@p ntuples tuples of @p ncomp components of type Float64 or
- * UInt8) into @p out as doubles: 1, 0 if the file has no such array, -1
- * if it differs or is damaged. */
+ * UInt8, or in a frame Float32) into @p out as doubles: 1, 0 if the file
+ * has no such array, -1 if it differs or is damaged. */
 static int read_array(const struct in *in, const char *name, int ncomp,
                       size_t ntuples, double *out) {
   char key[64], type[16], val[32];
@@ -519,8 +524,9 @@ static int read_array(const struct in *in, const char *name, int ncomp,
   const size_t offset = strtoull(val, NULL, 10), count = ntuples * nc;
   if (!strcmp(type, "Float64"))
     return inflate_array(in, offset, out, count * sizeof(double)) ? -1 : 1;
-  if (!strcmp(type, "Float32")) { /* a frame's: widened in place, from the
-                                     end (float k lies below double k) */
+  if (!strcmp(type, "Float32") && in->frame) { /* widened in place, from
+                                                  the end (float k lies
+                                                  below double k) */
     if (inflate_array(in, offset, out, count * sizeof(float))) return -1;
     for (size_t k = count; k-- > 0;) {
       float f;
@@ -605,29 +611,38 @@ int vsph_vtk_read(const char *path, struct vsph_vtk_snapshot *s) {
   }
   /* the state must be there (a frame's part of it); the diagnostics and
    * material may not be */
-  double fb = 0.0, ff = 0.0;
+  double fb = 0.0, ff = 0.0; /* a frame: both, each a whole number in range */
+  in.frame = 0;
   const int frame = read_array(&in, "frame_bits", 1, 1, &fb);
   const int ffs = read_array(&in, "frame_fields", 1, 1, &ff);
-  s->frame_bits = frame == 1 ? (int)fb : 0;
-  s->frame_fields = ffs == 1 && ff >= 0.0 && ff <= 3.0 ? (unsigned)ff : 0u;
-  const int vel = !frame || (s->frame_fields & VSPH_VTK_FRAME_VELOCITY);
-  const int sca = !frame || (s->frame_fields & VSPH_VTK_FRAME_SCALARS);
-  bad = frame < 0 || ffs != frame ||
-        (frame && (fb < 1.0 || fb > 23.0 || fb != s->frame_bits ||
-                   ff != s->frame_fields)) ||
+  const int framed = frame == 1 && ffs == 1 && fb >= 1.0 && fb <= 23.0 &&
+                     fb == floor(fb) && ff >= 0.0 && ff <= 3.0 &&
+                     ff == floor(ff);
+  s->frame_bits = framed ? (int)fb : 0;
+  s->frame_fields = framed ? (unsigned)ff : 0u;
+  in.frame = framed;
+  const int vel = !framed || (s->frame_fields & VSPH_VTK_FRAME_VELOCITY);
+  const int sca = !framed || (s->frame_fields & VSPH_VTK_FRAME_SCALARS);
+  /* a frame holds exactly what frame_fields says (the 2-D vorticity and
+   * the free-surface flag with the pressure), a snapshot all but the
+   * optional diagnostics and material */
+  bad = frame < 0 || ffs != frame || (frame && !framed) ||
         read_array(&in, "TimeValue", 1, 1, &s->t) != 1 ||
         read_array(&in, "Points", 3, n, s->pos) != 1 ||
         read_array(&in, "velocity", 3, n, s->vel) != vel ||
-        read_array(&in, "density", 1, n, s->rho) != !frame ||
+        read_array(&in, "density", 1, n, s->rho) != !framed ||
         read_array(&in, "pressure", 1, n, s->p) != sca ||
-        read_array(&in, "volume", 1, n, s->vol) != !frame ||
-        read_array(&in, "div_r", 1, n, s->divr) < 0 ||
-        read_array(&in, "free_surface", 1, n, s->surf) < 0 ||
-        read_array(&in, "material", 1, n, s->mat) < 0;
+        read_array(&in, "volume", 1, n, s->vol) != !framed ||
+        (framed ? read_array(&in, "div_r", 1, n, s->divr) != 0
+                : read_array(&in, "div_r", 1, n, s->divr) < 0) ||
+        (framed ? read_array(&in, "free_surface", 1, n, s->surf) != sca
+                : read_array(&in, "free_surface", 1, n, s->surf) < 0) ||
+        (framed ? read_array(&in, "material", 1, n, s->mat) != 0
+                : read_array(&in, "material", 1, n, s->mat) < 0);
   if (!bad) { /* 2-D: omega_z, spread into the z slots; 3-D: the vector */
     const int w1 = read_array(&in, "vorticity_z", 1, n, s->vort);
     const int w3 = w1 ? 0 : read_array(&in, "vorticity", 3, n, s->vort);
-    bad = w1 < 0 || w3 < 0;
+    bad = w1 < 0 || w3 < 0 || (framed && !sca && (w1 || w3));
     s->vort_ncomp = w1 > 0 ? 1 : w3 > 0 ? 3 : 0;
     for (size_t k = n; w1 > 0 && k-- > 0;) { /* k < 3k: not yet overwritten */
       const double w = s->vort[k];

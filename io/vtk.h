@@ -91,8 +91,9 @@ int vsph_vtk_read(const char *path, struct vsph_vtk_snapshot *s);
  *  vertex cells (ParaView shows its points with the Point Gaussian
  *  representation). vsph_vtk_read reads it back with frame_bits and
  *  frame_fields set, the fields it lacks as zeros.
- *  @return VSPH_OK, VSPH_EINVAL (@p bits or @p fields out of range),
- *  VSPH_ENOMEM, VSPH_ELIB or VSPH_EIO. */
+ *  Float subnormals (below 1.2e-38 in magnitude) keep fewer bits.
+ *  @return VSPH_OK, VSPH_EINVAL (@p bits or @p fields out of range, or
+ *  @p s itself a frame), VSPH_ENOMEM, VSPH_ELIB or VSPH_EIO. */
 int vsph_vtk_write_frame(const char *dir, const char *name,
                          const struct vsph_vtk_snapshot *s, int bits,
                          unsigned fields);

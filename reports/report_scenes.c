@@ -57,6 +57,10 @@ static int vortex_profile(struct vsph_report *R, const char *snap,
   struct vsph_vtk_snapshot sn;
   int rd = vsph_vtk_read(snap, &sn);
   if (rd) return rd;
+  if (sn.frame_bits && !(sn.frame_fields & VSPH_VTK_FRAME_VELOCITY)) {
+    vsph_vtk_snapshot_free(&sn);
+    VSPH_FAIL(VSPH_EIO, "%s is a frame without the velocities", snap);
+  }
   *t_snap = sn.t;
   double *sum = calloc(2 * nbins, sizeof *sum), *cnt = sum + nbins;
   if (!sum) {
@@ -143,6 +147,11 @@ static int particles_csv(struct vsph_report *R, const char *snap,
   struct vsph_vtk_snapshot sn;
   int st = vsph_vtk_read(snap, &sn);
   if (st) return st;
+  if (sn.frame_bits && !(sn.frame_fields & VSPH_VTK_FRAME_SCALARS)) {
+    vsph_vtk_snapshot_free(&sn);
+    VSPH_FAIL(VSPH_EIO, "%s is a frame without the pressure and vorticity",
+              snap);
+  }
   *t = sn.t;
   for (size_t i = 0; i < sn.n; i++) { /* the shared frame, NaN skipped */
     box[0] = fmin(box[0], sn.pos[3 * i]);

@@ -154,8 +154,22 @@ static int copy_read(const char *src, const char *files, unsigned want,
           bytes && len == size &&
           crc32(crc32(0L, Z_NULL, 0), (const Bytef *)bytes, (uInt)len) == crc;
       free(bytes);
-      if (!ok || c->nframe == sizeof c->frame / sizeof *c->frame) {
+      if (!ok) {
         snprintf(why, wlen, "%.255s is not as its seal lists it", name);
+        return 0;
+      }
+      if (c->nframe == sizeof c->frame / sizeof *c->frame) {
+        snprintf(why, wlen,
+                 "more than %zu of its snapshots are asked as frames",
+                 sizeof c->frame / sizeof *c->frame);
+        return 0;
+      }
+      struct vsph_vtk_snapshot s; /* readable as a frame's source */
+      const int rd = vsph_vtk_read(path, &s);
+      const int framed = !rd && s.frame_bits;
+      vsph_vtk_snapshot_free(&s);
+      if (rd || framed) {
+        snprintf(why, wlen, "%.255s cannot be read as a snapshot", name);
         return 0;
       }
       snprintf(c->frame[c->nframe], sizeof c->frame[c->nframe], "%s", name);
@@ -431,15 +445,40 @@ static int clear_leftovers(const char *runs) {
   return st;
 }
 
-/* 1 when entry @p dst holds a frame of every snapshot @p c lists. */
-static int holds_frames(const char *dst, const struct copy *c) {
+/* 1 when entry @p dst holds a frame of every snapshot @p c lists, at
+ * @p bits with the fields asked, and no other snapshot. */
+static int holds_frames(const char *dst, const struct copy *c, int bits,
+                        const char *files) {
   for (size_t k = 0; k < c->nframe; k++) {
     char path[4500];
     snprintf(path, sizeof path, "%s/%s", dst, c->frame[k]);
     struct stat sb;
     if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) return 0;
+    struct vsph_vtk_snapshot s;
+    if (vsph_vtk_read(path, &s)) return 0;
+    const int same = s.frame_bits == bits && s.frame_fields == c->fields[k];
+    vsph_vtk_snapshot_free(&s);
+    if (!same) return 0;
   }
-  return 1;
+  size_t listed = 0; /* the snapshots the entry's seal lists */
+  for (const char *line = files; line && *line;) {
+    const char *end = strchr(line, '\n');
+    char name[256];
+    if (sscanf(line, "%255s", name) == 1 && snap_index(name) >= 0) listed++;
+    line = end ? end + 1 : NULL;
+  }
+  return listed == c->nframe;
+}
+
+/* Run folder @p dir's start (run.json's date, ISO 8601 UTC, so that two
+ * compare as strings) into @p buf; "" when it has none (a shear test). */
+static void run_date(const char *dir, char *buf, size_t len) {
+  char path[4500];
+  snprintf(path, sizeof path, "%s/run.json", dir);
+  cJSON *o = vsph_json_read(path);
+  const cJSON *d = o ? cJSON_GetObjectItemCaseSensitive(o, "date") : NULL;
+  snprintf(buf, len, "%s", cJSON_IsString(d) ? d->valuestring : "");
+  cJSON_Delete(o);
 }
 
 int vsph_archive_store(const char *report, const char *archive,
@@ -497,9 +536,24 @@ int vsph_archive_store_frames(const char *report, const char *archive,
       if (!why[0]) snprintf(why, sizeof why, "it has not ended (no seal)");
     } else if (copy_read(src, files, frames_wanted(frames, names[k]), kind, c,
                          why, sizeof why)) {
-      if (vsph_folder_verify(dst, kind, key, NULL, NULL, 0) == 1 &&
-          holds_frames(dst, c))
+      char *dkey = NULL;
+      const char *dfiles = NULL;
+      const int same = vsph_folder_verify(dst, kind, key, NULL, NULL, 0) == 1 &&
+                       !key_of(dst, &dkey, &dfiles) &&
+                       holds_frames(dst, c, frames ? frames->bits : 0, dfiles);
+      free(dkey);
+      char was[64] = "", now[64] = ""; /* an entry of a later run stays */
+      if (!same && entry_kind(dst)) {
+        run_date(dst, was, sizeof was);
+        run_date(src, now, sizeof now);
+      }
+      if (same)
         counts->kept++;
+      else if (was[0] && now[0] && strcmp(now, was) < 0)
+        snprintf(why, sizeof why,
+                 "it began %s, before the run its archive entry keeps (%s), "
+                 "which stays",
+                 now, was);
       else if (!(st = store_one(dst, key, kind, c, src,
                                 frames ? frames->bits : 0)))
         counts->stored++;

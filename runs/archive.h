@@ -23,8 +23,10 @@
  *
  *  Storing is idempotent: an entry whose seal already holds for its run's
  *  key is kept untouched; one of another key (the run was redone) is
- *  replaced. A run folder whose seal does not hold (unfinished, stopped
- *  at a checkpoint, damaged) is left out and said. */
+ *  replaced, unless the run began before the one the entry keeps
+ *  (run.json's date), which stays. A run folder whose seal does not hold
+ *  (unfinished, stopped at a checkpoint, damaged) is left out and said,
+ *  and so is an older run. */
 
 /** What one vsph_archive_store did. */
 struct vsph_archive_counts {
@@ -34,10 +36,12 @@ struct vsph_archive_counts {
 };
 
 /** Mantissa bits an archive's frames keep (vsph_vtk_write_frame): a
- *  relative error of at most 2^-11 = 4.9e-4, a tenth of a particle
- *  spacing at the stretching square's L/dx = 320 and under two colour
- *  levels of 256 in a picture; at 10 bits the FULL report's frames come
- *  to about 9 MB (README, the FULL archive). */
+ *  relative error of at most 2^-11 = 4.9e-4 (beyond single precision's),
+ *  so a position within 2^-12 m below 1 m, 0.08 of a particle spacing at
+ *  the stretching square's L/dx = 320 (0.16 from 1 to 2 m), and a value
+ *  within an eighth of a picture's colour level (256 over a scale that
+ *  spans zero); at 10 bits the FULL report's 23 frames come to about 9 MB
+ *  (README, the FULL archive). */
 #define VSPH_ARCHIVE_FRAME_BITS 10
 
 /** The snapshots a run archive keeps of some runs, as frames

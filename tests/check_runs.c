@@ -819,6 +819,84 @@ START_TEST(test_archive_frames) {
     frame_is(
         a, entry, k,
         VSPH_VTK_FRAME_VELOCITY | (k == last ? VSPH_VTK_FRAME_SCALARS : 0u));
+  /* the same snapshots with more fields, or at other bits: stored again */
+  want[0] |= VSPH_JOBS_FRAME_FIRST;
+  ck_assert_int_eq(vsph_archive_store_frames(rep, ar, NULL, &fr, NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 1);
+  frame_is(a, entry, 0, VSPH_VTK_FRAME_VELOCITY | VSPH_VTK_FRAME_SCALARS);
+  struct vsph_archive_frames fr4 = fr;
+  fr4.bits = 4;
+  ck_assert_int_eq(vsph_archive_store_frames(rep, ar, NULL, &fr4, NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 1);
+  {
+    struct vsph_vtk_snapshot f;
+    snprintf(path, sizeof path, "%s/snap_0001.vtp", entry);
+    ck_assert_int_eq(vsph_vtk_read(path, &f), 0);
+    ck_assert_int_eq(f.frame_bits, 4);
+    vsph_vtk_snapshot_free(&f);
+  }
+  /* fewer snapshots asked: stored again, the others gone */
+  want[0] = VSPH_JOBS_FRAME_FIRST | VSPH_JOBS_FRAME_LAST;
+  ck_assert_int_eq(vsph_archive_store_frames(rep, ar, NULL, &fr, NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 1);
+  for (int k = 0; k <= last; k++)
+    frame_is(a, entry, k, k == 0 || k == last ? VSPH_VTK_FRAME_SCALARS : 0u);
+  want[0] = VSPH_JOBS_FRAME_FIRST; /* the first alone, unchanged */
+  ck_assert_int_eq(vsph_archive_store_frames(rep, ar, NULL, &fr, NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 1);
+  for (int k = 0; k <= last; k++)
+    frame_is(a, entry, k, k == 0 ? VSPH_VTK_FRAME_SCALARS : 0u);
+  /* a run asking more frames than an entry holds (64: here 71, a
+   * snapshot at each of 70 outputs over 0.4 s and t = 0) is left out,
+   * said as such; the other runs are stored */
+  char b[300];
+  snprintf(b, sizeof b, "%s/rep/runs/b", dir);
+  static const char *const many[] = {"Solver:res=8", "Solver:t_end=0.4",
+                                     "Solver:snapshots=70", NULL};
+  ck_assert_int_eq(run("poiseuille", many, b, 0, &r), 0);
+  static const char *const name2[] = {"a", "b"};
+  const unsigned want2[] = {VSPH_JOBS_FRAME_ALL, VSPH_JOBS_FRAME_ALL};
+  const struct vsph_archive_frames fr2 = {2, name2, want2,
+                                          VSPH_ARCHIVE_FRAME_BITS};
+  char log[4096] = "";
+  FILE *lf = fmemopen(log, sizeof log - 1, "w");
+  ck_assert_ptr_nonnull(lf);
+  ck_assert_int_eq(vsph_archive_store_frames(rep, ar, NULL, &fr2, lf, &n), 0);
+  fclose(lf);
+  ck_assert_uint_eq(n.stored, 1);
+  ck_assert_uint_eq(n.skipped, 1);
+  ck_assert_msg(strstr(log,
+                       "runs/b is not archived: more than 64 of its "
+                       "snapshots are asked as frames"),
+                "%s", log);
+  snprintf(path, sizeof path, "%s/runs/b", ar);
+  ck_assert(!exists(path));
+  /* a run that began before the one an entry keeps does not replace it
+   * (a stale report folder), said as such: run c, then a second later
+   * c again with other settings in another report, stored first */
+  char rep2[300], c1[300], c2[300], keyc[4096];
+  snprintf(rep2, sizeof rep2, "%s/rep2", dir);
+  snprintf(c1, sizeof c1, "%s/rep/runs/c", dir);
+  snprintf(c2, sizeof c2, "%s/rep2/runs/c", dir);
+  ck_assert_int_eq(run("poiseuille", set, c1, 0, &r), 0);
+  sleep(1); /* run.json's date counts seconds */
+  static const char *const set2[] = {"Solver:res=8", "Solver:t_end=0.03", NULL};
+  ck_assert_int_eq(run("poiseuille", set2, c2, 0, &r), 0);
+  ck_assert_int_eq(vsph_archive_store(rep2, ar, NULL, NULL, &n), 0);
+  ck_assert_uint_eq(n.stored, 1);
+  lf = fmemopen(log, sizeof log - 1, "w");
+  ck_assert_ptr_nonnull(lf);
+  ck_assert_int_eq(vsph_archive_store_frames(rep, ar, NULL, &fr, lf, &n), 0);
+  fclose(lf);
+  ck_assert_msg(strstr(log, "runs/c is not archived: it began ") &&
+                    strstr(log, "which stays"),
+                "%s", log);
+  snprintf(path, sizeof path, "%s/key.txt", c2);
+  vsph_test_slurp(path, keyc, sizeof keyc);
+  *strstr(keyc, "files:\n") = '\0';
+  snprintf(path, sizeof path, "%s/runs/c", ar);
+  ck_assert_int_eq(
+      vsph_folder_verify(path, &vsph_folder_scene_run, keyc, NULL, NULL, 0), 1);
   vsph_test_rm_tree(dir);
 }
 END_TEST

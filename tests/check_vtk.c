@@ -7,6 +7,7 @@
  * 2-D vorticity is the scalar omega_z; every array is described; a run's
  * snapshots.pvd gives energy.csv's times. `make paraview-check` opens the
  * same files in ParaView itself. */
+#include <float.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
 #include <omp.h>
@@ -416,6 +417,82 @@ START_TEST(test_frame) {
 }
 END_TEST
 
+/* x in single precision, then rounded to nearest (ties away from zero) at
+ * @p bits mantissa bits by frexp and round: an independent statement of
+ * the frame's rounding (normal floats; NaN, infinities and zeros as they
+ * are; past FLT_MAX it overflows to infinity, as IEEE conversion does). */
+static float ref_round(double x, int bits) {
+  const float f = (float)x;
+  if (!isfinite(f) || f == 0.0f) return f;
+  int e;
+  const double m = frexp((double)f, &e); /* f = m 2^e, 0.5 <= |m| < 1 */
+  return (float)ldexp(round(ldexp(m, bits + 1)), e - bits - 1);
+}
+
+/* The frame's rounding on chosen values, each float the file holds
+ * equal to ref_round's: exact ties (away from zero), a carry into the
+ * exponent, negatives, zeros of both signs, infinities, NaN, FLT_MAX
+ * (to infinity), a tiny normal float and plain values; at 10 and 3
+ * bits. A frame is not made of a frame. */
+START_TEST(test_frame_rounding) {
+  const double tie = 1.0 + ldexp(1.0, -11),
+               v[] = {1.0, -1.0,    tie,   -tie,       1.0 - ldexp(1.0, -13),
+                      3.0, 0.0,     -0.0,  INFINITY,   -INFINITY,
+                      NAN, FLT_MAX, 1e-30, 123456.789, -0.0371};
+  const size_t n = sizeof v / sizeof *v;
+  struct vsph_vtk_snapshot s = {0};
+  s.n = n;
+  s.vort_ncomp = 1;
+  double *buf = calloc(13 * n, sizeof *buf);
+  ck_assert_ptr_nonnull(buf);
+  s.pos = buf, s.vel = buf + 3 * n, s.vort = buf + 6 * n, s.p = buf + 9 * n;
+  s.surf = buf + 10 * n, s.rho = buf + 11 * n, s.vol = buf + 12 * n;
+  for (size_t k = 0; k < n; k++) {
+    s.pos[3 * k] = v[k];
+    s.vel[3 * k + 1] = -v[k];
+    s.p[k] = 0.5 * v[k];
+  }
+  char dir[] = "/tmp/vsph_vtkXXXXXX", fpath[80];
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  snprintf(fpath, sizeof fpath, "%s/f.vtp", dir);
+  static const int bitsv[2] = {10, 3};
+  for (int b = 0; b < 2; b++) {
+    const int bits = bitsv[b];
+    ck_assert_int_eq(vsph_vtk_write_frame(dir, "f.vtp", &s, bits, 3u), 0);
+    struct vtp f;
+    vtp_load(fpath, &f);
+    const struct vtp_array *pa = vtp_find(&f, "Points"),
+                           *va = vtp_find(&f, "velocity"),
+                           *ra = vtp_find(&f, "pressure");
+    ck_assert(pa && va && ra);
+    for (size_t k = 0; k < n; k++) {
+      const double want[3] = {v[k], -v[k], 0.5 * v[k]};
+      const double got[3] = {vtp_value(pa, 3 * k), vtp_value(va, 3 * k + 1),
+                             vtp_value(ra, k)};
+      for (int a = 0; a < 3; a++) {
+        const float r = ref_round(want[a], bits);
+        ck_assert_msg(
+            isnan(r) ? isnan(got[a])
+                     : got[a] == (double)r && !signbit(got[a]) == !signbit(r),
+            "%.17g at %d bits: %.17g, not %.9g", want[a], bits, got[a],
+            (double)r);
+      }
+    }
+    ck_assert(vtp_value(pa, 3 * 2) == 1.0 + ldexp(1.0, -bits) || bits != 10);
+    ck_assert(vtp_value(pa, 3 * 4) == 1.0 || bits != 10);
+    vtp_free(&f);
+    remove(fpath);
+  }
+  struct vsph_vtk_snapshot f = s;
+  f.frame_bits = 10;
+  vsph_test_silence();
+  ck_assert_int_eq(vsph_vtk_write_frame(dir, "f.vtp", &f, 10, 3u), VSPH_EINVAL);
+  ck_assert_int_eq(access(fpath, F_OK), -1);
+  rmdir(dir);
+  free(buf);
+}
+END_TEST
+
 /* The blocks are compressed in parallel: the file's bytes are the same
  * whether 1 or 2 threads wrote it. With the stop flag raised the writer
  * abandons the file before it is opened (VSPH_EINTR; the folder stays
@@ -726,6 +803,7 @@ Suite *vsph_vtk_suite(void) {
   tcase_set_timeout(tc, 20);
   tcase_add_loop_test(tc, test_roundtrip, 0, NCASES);
   tcase_add_loop_test(tc, test_frame, 0, NCASES);
+  tcase_add_test(tc, test_frame_rounding);
   tcase_add_loop_test(tc, test_layout, 0, NCASES);
   tcase_add_loop_test(tc, test_threads_and_stop, 0, NCASES);
   tcase_add_loop_test(tc, test_descriptions, 0, NCASES);
