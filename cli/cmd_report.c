@@ -42,14 +42,11 @@ static int on_path(const char *name) {
 }
 
 /* The archive's entries.md, judged against the current FULL plan (as
- * planned for the report folder @p dir), the tree's reports/baseline.csv
+ * @p jobs, planned for the report folder), the tree's reports/baseline.csv
  * (read from the current folder, where make archive runs) and the history
  * scripts/source-commits left in $VSPH_ARCHIVE_HISTORY. */
-static int summarise(const char *dir, const char *archive, const char *commit) {
-  struct vsph_jobs jobs;
-  memset(&jobs, 0, sizeof jobs);
-  int st = vsph_report_plan_jobs(dir, 1, &jobs);
-  if (st) return st;
+static int summarise(const struct vsph_jobs *jobs, const char *archive,
+                     const char *commit) {
   const char *history = getenv("VSPH_ARCHIVE_HISTORY");
   struct stat sb;
   if (stat("reports/baseline.csv", &sb) != 0)
@@ -64,40 +61,36 @@ static int summarise(const char *dir, const char *archive, const char *commit) {
                       : NULL,
       .commit = commit};
   struct vsph_archive_judge jd = {0};
-  st = vsph_report_plan_judge(&jobs, &base, &jd);
+  int st = vsph_report_plan_judge(jobs, &base, &jd);
   if (!st) st = vsph_archive_summarise(archive, &jd);
   vsph_report_plan_judge_free(&jd);
-  vsph_jobs_plan_free(&jobs);
   return st;
 }
 
 /* The sealed runs of report folder @p dir stored in @p archive, with the
- * frames the FULL report's pictures and profiles read (its plan's
- * VSPH_JOBS_FRAME_* runs). */
-static int store(const char *dir, const char *archive, const char *commit,
+ * frames the FULL report's pictures and profiles read (the
+ * VSPH_JOBS_FRAME_* runs of its plan, @p jobs). */
+static int store(const char *dir, const struct vsph_jobs *jobs,
+                 const char *archive, const char *commit,
                  struct vsph_archive_counts *n) {
-  struct vsph_jobs jobs;
-  memset(&jobs, 0, sizeof jobs);
-  int st = vsph_report_plan_jobs(dir, 1, &jobs);
-  if (st) return st;
-  const char **name = calloc(jobs.n ? jobs.n : 1, sizeof *name);
-  unsigned *want = calloc(jobs.n ? jobs.n : 1, sizeof *want);
+  int st = VSPH_OK;
+  const char **name = calloc(jobs->n ? jobs->n : 1, sizeof *name);
+  unsigned *want = calloc(jobs->n ? jobs->n : 1, sizeof *want);
   struct vsph_archive_frames fr = {
       .name = name, .want = want, .bits = VSPH_ARCHIVE_FRAME_BITS};
   if (!name || !want) {
     st = VSPH_ENOMEM;
     vsph_status_report(st, __FILE__, __LINE__, "cannot list the frames");
   }
-  for (size_t k = 0; !st && k < jobs.n; k++)
-    if (jobs.job[k].frames) {
-      const char *slash = strrchr(jobs.job[k].dir, '/');
-      name[fr.n] = slash ? slash + 1 : jobs.job[k].dir;
-      want[fr.n++] = jobs.job[k].frames;
+  for (size_t k = 0; !st && k < jobs->n; k++)
+    if (jobs->job[k].frames) {
+      const char *slash = strrchr(jobs->job[k].dir, '/');
+      name[fr.n] = slash ? slash + 1 : jobs->job[k].dir;
+      want[fr.n++] = jobs->job[k].frames;
     }
   if (!st) st = vsph_archive_store_frames(dir, archive, commit, &fr, stderr, n);
   free(name);
   free(want);
-  vsph_jobs_plan_free(&jobs);
   return st;
 }
 
@@ -386,16 +379,23 @@ int vsph_cmd_report_main(int argc, char **argv) {
     /* what the summary reads, judged before anything is written */
     const int bad = judge_inputs();
     if (bad) return bad;
+    struct vsph_jobs full_plan; /* the FULL plan: the frames and the judge */
+    memset(&full_plan, 0, sizeof full_plan);
     struct vsph_archive_counts n;
-    int st = store(dir, archive, commit, &n);
-    if (st) return vsph_args_status(CMD, st);
+    int st = vsph_report_plan_jobs(dir, 1, &full_plan);
+    if (!st) st = store(dir, &full_plan, archive, commit, &n);
+    if (st) {
+      vsph_jobs_plan_free(&full_plan);
+      return vsph_args_status(CMD, st);
+    }
     fprintf(stderr,
             "vsph report: archived %zu runs of %s in %s (%zu already there, "
             "%zu left out: unended, damaged, oddly named or older than "
             "their entries, each said "
             "above)\n",
             n.stored, dir, archive, n.kept, n.skipped);
-    st = summarise(dir, archive, commit);
+    st = summarise(&full_plan, archive, commit);
+    vsph_jobs_plan_free(&full_plan);
     if (st) return vsph_args_status(CMD, st);
     return vsph_args_finish(CMD, 0);
   }

@@ -107,18 +107,22 @@ static void copy_free(struct copy *c) {
   c->nframe = 0;
 }
 
-/* The last snapshot @p files lists, or -1. */
-static int last_snapshot(const char *files) {
-  int last = -1;
-  for (const char *line = files; *line;) {
-    char name[256];
+/* The snapshots a seal's list of files @p files names (NULL: none), and
+ * the last of them into *last (-1: none). */
+static size_t listed_snapshots(const char *files, int *last) {
+  size_t n = 0;
+  *last = -1;
+  for (const char *line = files; line && *line;) {
     const char *end = strchr(line, '\n');
-    if (!end) break;
-    if (sscanf(line, "%255s", name) == 1 && snap_index(name) > last)
-      last = snap_index(name);
-    line = end + 1;
+    char name[256];
+    const int k = sscanf(line, "%255s", name) == 1 ? snap_index(name) : -1;
+    if (k >= 0) {
+      n++;
+      *last = k > *last ? k : *last;
+    }
+    line = end ? end + 1 : NULL;
   }
-  return last;
+  return n;
 }
 
 /* 1 when every kept file of @p src was read as listed in @p files, and
@@ -129,7 +133,8 @@ static int copy_read(const char *src, const char *files, unsigned want,
                      char *why, size_t wlen) {
   c->n = 0;
   c->nframe = 0;
-  const int last = want ? last_snapshot(files) : -1;
+  int last = -1;
+  if (want) listed_snapshots(files, &last);
   for (const char *line = files; *line;) {
     const char *end = strchr(line, '\n');
     char name[256];
@@ -460,14 +465,8 @@ static int holds_frames(const char *dst, const struct copy *c, int bits,
     vsph_vtk_snapshot_free(&s);
     if (!same) return 0;
   }
-  size_t listed = 0; /* the snapshots the entry's seal lists */
-  for (const char *line = files; line && *line;) {
-    const char *end = strchr(line, '\n');
-    char name[256];
-    if (sscanf(line, "%255s", name) == 1 && snap_index(name) >= 0) listed++;
-    line = end ? end + 1 : NULL;
-  }
-  return listed == c->nframe;
+  int last;
+  return listed_snapshots(files, &last) == c->nframe; /* and no others */
 }
 
 /* Run folder @p dir's start (run.json's date, ISO 8601 UTC, so that two
