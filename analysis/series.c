@@ -2,6 +2,8 @@
 
 #include <math.h>
 
+#include "../common/status.h"
+
 double vsph_series_interp(const double *t, const double *y, size_t n,
                           double x) {
   if (n == 0 || x < t[0] || x > t[n - 1]) return (double)NAN;
@@ -150,4 +152,126 @@ int vsph_series_cfl_pick(const double *err, const int *ok, size_t n, int ncfl,
     best = c;
   }
   return best;
+}
+
+double vsph_series_interp_cubic(const double *t, const double *y, size_t n,
+                                double x) {
+  if (n < 4) return vsph_series_interp(t, y, n, x);
+  if (x < t[0] || x > t[n - 1]) return (double)NAN;
+  size_t a = 0, b = n - 1; /* t[a] <= x <= t[b], b = a + 1 */
+  while (b - a > 1) {
+    const size_t m = (a + b) / 2;
+    if (t[m] <= x)
+      a = m;
+    else
+      b = m;
+  }
+  const size_t s = a == 0 ? 0 : a + 2 >= n ? n - 4 : a - 1;
+  double v = 0.0;
+  for (size_t i = s; i < s + 4; i++) {
+    double l = 1.0;
+    for (size_t j = s; j < s + 4; j++) {
+      if (j == i) continue;
+      if (!(t[i] != t[j])) return vsph_series_interp(t, y, n, x); /* repeat */
+      l *= (x - t[j]) / (t[i] - t[j]);
+    }
+    v += l * y[i];
+  }
+  return v;
+}
+
+/* r_f^p (r_c^p - 1)/(r_f^p - 1), continuous through p = 0 */
+static double order_ratio(double p, double lc, double lf) {
+  if (p == 0.0) return lc / lf;
+  return exp(p * lf) * expm1(p * lc) / expm1(p * lf);
+}
+
+double vsph_series_order(double d_c, double d_f, double r_c, double r_f) {
+  if (!(d_c > 0.0 && d_f > 0.0 && isfinite(d_c) && isfinite(d_f) && r_c > 1.0 &&
+        r_f > 1.0 && isfinite(r_c) && isfinite(r_f)))
+    return (double)NAN;
+  const double q = d_c / d_f, lc = log(r_c), lf = log(r_f);
+  if (r_c == r_f) { /* the usual ladder: the closed form */
+    const double p = log(q) / lc;
+    return fabs(p) <= 20.0 ? p : (double)NAN;
+  }
+  double lo = -20.0, hi = 20.0; /* the ratio rises with p */
+  if (!(order_ratio(lo, lc, lf) <= q && q <= order_ratio(hi, lc, lf)))
+    return (double)NAN;
+  for (int it = 0; it < 200 && hi - lo > 1e-13; it++) {
+    const double m = 0.5 * (lo + hi);
+    if (order_ratio(m, lc, lf) < q)
+      lo = m;
+    else
+      hi = m;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/* The leading rows of a rung whose time and value are finite. */
+static size_t finite_rows(const struct vsph_series_rung *r) {
+  size_t n = 0;
+  while (n < r->n && isfinite(r->t[n]) && isfinite(r->E[n])) n++;
+  return n;
+}
+
+int vsph_series_selfconv(const struct vsph_series_rung *rung, size_t nrung,
+                         struct vsph_series_selfconv *out) {
+  if (nrung < 2 || nrung > VSPH_SERIES_RUNGS_MAX)
+    VSPH_FAIL(VSPH_EINVAL, "a ladder of %zu rungs (2 to %d)", nrung,
+              VSPH_SERIES_RUNGS_MAX);
+  size_t nf[VSPH_SERIES_RUNGS_MAX];
+  double span = INFINITY, longest = -INFINITY;
+  for (size_t k = 0; k < nrung; k++) {
+    nf[k] = finite_rows(&rung[k]);
+    if (nf[k] == 0 || rung[k].E[0] == 0.0)
+      VSPH_FAIL(VSPH_EINVAL, "rung %zu has no finite first row, or E(0) = 0",
+                k + 1);
+    if (!(rung[k].h > 0.0) || (k > 0 && !(rung[k].h < rung[k - 1].h)))
+      VSPH_FAIL(VSPH_EINVAL, "rung %zu: the spacing must fall, coarse first",
+                k + 1);
+    const double end = rung[k].t[nf[k] - 1];
+    span = fmin(span, end);
+    longest = fmax(longest, end);
+  }
+  out->nrung = nrung;
+  out->span = span;
+  out->partial = span < longest - 1e-9 * fabs(longest);
+  /* every pair on one set of times, the finest rung's rows in the span:
+   * the differences then differ only by the rungs, not by where they
+   * were sampled (both rungs of a pair by the cubic, the finest itself) */
+  const struct vsph_series_rung *fin = &rung[nrung - 1];
+  for (size_t k = 0; k + 1 < nrung; k++) {
+    const struct vsph_series_rung *c = &rung[k], *f = &rung[k + 1];
+    double mx = 0.0, sq = 0.0, t0 = NAN, tp = NAN, dp = NAN;
+    for (size_t i = 0; i < nf[nrung - 1] && fin->t[i] <= span; i++) {
+      const double x = fin->t[i];
+      const double ec = vsph_series_interp_cubic(c->t, c->E, nf[k], x);
+      const double ef =
+          k + 2 == nrung ? fin->E[i]
+                         : vsph_series_interp_cubic(f->t, f->E, nf[k + 1], x);
+      if (!isfinite(ec) || !isfinite(ef)) continue; /* before a first row */
+      const double d = ef / f->E[0] - ec / c->E[0];
+      mx = fmax(mx, fabs(d));
+      if (isnan(t0))
+        t0 = x;
+      else
+        sq += 0.5 * (d * d + dp * dp) * (x - tp);
+      tp = x;
+      dp = d;
+    }
+    out->dmax[k] = mx;
+    out->drms[k] = tp > t0 ? sqrt(sq / (tp - t0)) : fabs(dp);
+  }
+  out->order_max = out->order_rms = out->remainder = (double)NAN;
+  if (nrung >= 3) {
+    const size_t k = nrung - 3;
+    const double rc = rung[k].h / rung[k + 1].h;
+    const double rf = rung[k + 1].h / rung[k + 2].h;
+    out->order_max = vsph_series_order(out->dmax[k], out->dmax[k + 1], rc, rf);
+    out->order_rms = vsph_series_order(out->drms[k], out->drms[k + 1], rc, rf);
+    if (out->order_max > 0.0)
+      out->remainder = out->dmax[k + 1] / expm1(out->order_max * log(rf));
+  }
+  return VSPH_OK;
 }

@@ -11,7 +11,8 @@
  *  extrapolation in h and h/dx that the stretching square's reference
  *  takes (docs/theory.md section 6). The report's parts read runs and call
  *  these; tests/check_series.c holds each to an independent computation.
- *  No I/O, no allocation. */
+ *  Also the self-convergence of a resolution ladder (successive rungs
+ *  against each other, vsph_series_selfconv). No I/O, no allocation. */
 
 /** @brief y at @p x by linear interpolation in the table (t[k], y[k]),
  *  t ascending (repeated values allowed); NaN outside [t[0], t[n-1]] or
@@ -104,5 +105,68 @@ void vsph_series_plateau(const double *t, const double *E, const double *R,
  *  smaller index (0 when none). */
 int vsph_series_cfl_pick(const double *err, const int *ok, size_t n, int ncfl,
                          double fraction);
+
+/** @brief y at @p x by the cubic through the four rows nearest @p x
+ *  (Lagrange's form, on any grid; the four end rows at the table's ends,
+ *  the line through two rows for n < 4): exact for a cubic polynomial,
+ *  and an error O(dt^4) on a smooth series where the linear
+ *  vsph_series_interp leaves O(dt^2) -- the difference that decides when
+ *  two runs' series are compared at slightly different output times
+ *  (vsph_series_selfconv). NaN outside [t[0], t[n-1]] or for n = 0; t
+ *  strictly ascending. */
+double vsph_series_interp_cubic(const double *t, const double *y, size_t n,
+                                double x);
+
+/** Most rungs a resolution ladder may have (vsph_series_selfconv). */
+#define VSPH_SERIES_RUNGS_MAX 8
+
+/** One rung of a resolution ladder: a run's series (@p t, @p E, @p n
+ *  rows, those past a stop absent or not finite) and its particle spacing
+ *  @p h (any unit: only the ratios between rungs are read). */
+struct vsph_series_rung {
+  const double *t, *E;
+  size_t n;
+  double h;
+};
+
+/** A ladder's self-convergence: how successive resolutions approach each
+ *  other, whatever the reference (the measure of "converges linearly";
+ *  docs/theory.md section 6). */
+struct vsph_series_selfconv {
+  size_t nrung; /*!< rungs, coarse first */
+  double span;  /*!< the common time span [0, span]: every rung's last
+                     finite row reaches it */
+  int partial;  /*!< 1: a rung ends before another (stopped): span is the
+                     earliest end, not the run's */
+  /** per pair of successive rungs k, k + 1 (k < nrung - 1), over the
+   *  span at the finest rung's rows (one set of times for every pair):
+   *  max |E_{k+1}/E_{k+1}(0) - E_k/E_k(0)| (a rung other than the finest
+   *  interpolated by vsph_series_interp_cubic), and the same
+   *  difference's RMS over time (trapezoid rule) */
+  double dmax[VSPH_SERIES_RUNGS_MAX - 1], drms[VSPH_SERIES_RUNGS_MAX - 1];
+  /** the observed order from the last two differences of each kind
+   *  (vsph_series_order); NaN with two rungs */
+  double order_max, order_rms;
+  /** the finest rung's estimated distance from the limit, by Richardson:
+   *  the last max difference / (r^p - 1) at the observed order p and the
+   *  last ratio r (NaN where p <= 0 or is NaN) */
+  double remainder;
+};
+
+/** @brief The order p of E_h = E + C h^p from two successive differences
+ *  d_c = |E_{h0} - E_{h1}| and d_f = |E_{h1} - E_{h2}| and the refinement
+ *  ratios r_c = h0/h1, r_f = h1/h2 (> 1): the root of
+ *  r_f^p (r_c^p - 1)/(r_f^p - 1) = d_c/d_f, ln(d_c/d_f)/ln r for equal
+ *  ratios r; negative when the differences grow. NaN for a difference
+ *  not positive and finite, a ratio not above 1, or a root outside
+ *  [-20, 20]. */
+double vsph_series_order(double d_c, double d_f, double r_c, double r_f);
+
+/** @brief The self-convergence of @p nrung rungs (2 to
+ *  VSPH_SERIES_RUNGS_MAX, coarse first, h decreasing) into @p out.
+ *  @return VSPH_OK, or VSPH_EINVAL (rung count, a rung without a finite
+ *  first row or with E(0) = 0, h not decreasing). */
+int vsph_series_selfconv(const struct vsph_series_rung *rung, size_t nrung,
+                         struct vsph_series_selfconv *out);
 
 #endif /* VSPH_ANALYSIS_SERIES_H */

@@ -34,11 +34,15 @@ static int scene(struct vsph_report *R, int sc) {
       vsph_report_runs_ladder(&R->runs, sc, 0);
   char pname[64], title[160];
   snprintf(pname, sizeof pname, "fig_convergence_%s", L->scene);
-  snprintf(title, sizeof title, "%s: E_k error against resolution", L->scene);
+  snprintf(title, sizeof title,
+           "%s: E_k error against the reference (solid) and between "
+           "successive resolutions (dashed)",
+           L->scene);
   struct vsph_plot pl;
   vsph_plot_init(&pl, R->dir, pname, title,
                  "particle spacing dx / reference length (dimensionless)",
-                 "max_t |E_k - E_{k,ref}| / E_{k,ref}(0)");
+                 "max_t of |E_k/E_k(0) - E_{k,ref}/E_{k,ref}(0)| or "
+                 "|ΔE_k/E_k(0)|");
   pl.logx = pl.logy = 1;
   /* the ladder's range, not whole decades; ticks at its resolutions */
   ladder_ticks(pl.extra, sizeof pl.extra, L);
@@ -48,22 +52,53 @@ static int scene(struct vsph_report *R, int sc) {
   for (int f = 0; f < NFORM && !st; f++) {
     const double order =
         vsph_scaling_slope(lr.dx[f], lr.err[f], VSPH_REPORT_LADDER);
+    const struct vsph_series_selfconv *sv = &lr.self[f];
     snprintf(files[f], sizeof files[f], "convergence_%s_%s.csv", L->scene,
              vsph_viscous_name(f));
-    FILE *c = vsph_csv_open(R->dir, files[f], "dx,error,wall_s,pairs,stable");
+    /* a rung's successive difference is from the rung before it, drawn
+     * at its own dx; the first rung has none (NaN) */
+    FILE *c = vsph_csv_open(R->dir, files[f],
+                            "dx,error,wall_s,pairs,stable,"
+                            "difference_max,difference_rms,span_s");
     if (!c) return VSPH_EIO;
     for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
-      fprintf(c, "%.6e,%.6e,%.4f,%.6e,%d\n", lr.dx[f][k], lr.err[f][k],
-              lr.wall[f][k], lr.pairs[f][k], lr.ok[f][k]);
-      fprintf(R->md, "| %s | %zu | %.3e | %s | |\n", vsph_viscous_name(f),
-              L->res[k], lr.err[f][k], lr.ok[f][k] ? "yes" : "no");
+      const double dm = k ? sv->dmax[k - 1] : (double)NAN;
+      const double dr = k ? sv->drms[k - 1] : (double)NAN;
+      fprintf(c, "%.6e,%.6e,%.4f,%.6e,%d,%.6e,%.6e,%.6g\n", lr.dx[f][k],
+              lr.err[f][k], lr.wall[f][k], lr.pairs[f][k], lr.ok[f][k], dm, dr,
+              sv->span);
+      char dmb[32] = "–", drb[32] = "–", stable[64] = "yes";
+      if (k) {
+        snprintf(dmb, sizeof dmb, "%.3e", dm);
+        snprintf(drb, sizeof drb, "%.3e", dr);
+      }
+      if (!lr.ok[f][k])
+        snprintf(stable, sizeof stable, "no: stopped at t = %.3g s",
+                 lr.t_unstable[f][k]);
+      fprintf(R->md, "| %s | %zu | %.3e | %s | %s | %s |\n",
+              vsph_viscous_name(f), L->res[k], lr.err[f][k], dmb, drb, stable);
     }
-    fprintf(R->md, "| %s | ladder | | | **%.2f** |\n", vsph_viscous_name(f),
-            order);
+    char span[96];
+    if (sv->partial)
+      snprintf(span, sizeof span,
+               "differences over t <= %.3g s only (a rung "
+               "stopped)",
+               sv->span);
+    else
+      snprintf(span, sizeof span, "differences over the whole run");
+    fprintf(R->md,
+            "| %s | order | **%.2f** (fitted) | **%.2f** | **%.2f** | %s |\n",
+            vsph_viscous_name(f), order, sv->order_max, sv->order_rms, span);
     if ((st = vsph_csv_close(c, R->dir, files[f]))) break;
-    char style[96];
+    char style[96], lab[96];
     vsph_report_runs_style(style, sizeof style, f, "");
-    st = vsph_plot_add(&pl, files[f], "1:2", vsph_viscous_label(f), style);
+    snprintf(lab, sizeof lab, "%s: error against the reference",
+             vsph_viscous_label(f));
+    st = vsph_plot_add(&pl, files[f], "1:2", lab, style);
+    snprintf(lab, sizeof lab, "%s: difference from the coarser rung (max)",
+             vsph_viscous_label(f));
+    vsph_report_runs_style(style, sizeof style, f, " dt 2");
+    if (!st) st = vsph_plot_add(&pl, files[f], "1:6", lab, style);
     int any = 0; /* unstable runs ringed */
     for (int k = 0; k < VSPH_REPORT_LADDER; k++) any |= !lr.ok[f][k];
     if (!st && any)
@@ -117,16 +152,26 @@ static int vortex_layouts(struct vsph_report *R) {
         else
           snprintf(stable, sizeof stable, "no: stopped at t = %.3g s",
                    ly.tu[l][f][k]);
-        fprintf(R->md, "| %s | %s | %zu | %.3e | %+.3e | %s |\n", lay[l],
-                vsph_viscous_name(f), L->res[k], ly.err[l][f][k],
+        char dmb[32] = "–";
+        if (k) snprintf(dmb, sizeof dmb, "%.3e", ly.self[l][f].dmax[k - 1]);
+        fprintf(R->md, "| %s | %s | %zu | %.3e | %s | %+.3e | %s |\n", lay[l],
+                vsph_viscous_name(f), L->res[k], ly.err[l][f][k], dmb,
                 ly.d0[l][f][k], stable);
       }
       double a0[VSPH_REPORT_LADDER];
       for (int k = 0; k < VSPH_REPORT_LADDER; k++) a0[k] = fabs(ly.d0[l][f][k]);
-      fprintf(R->md, "| %s | %s | order | **%.2f** | **%.2f** | |\n", lay[l],
-              vsph_viscous_name(f),
+      const struct vsph_series_selfconv *sv = &ly.self[l][f];
+      char span[96] = "";
+      if (sv->partial)
+        snprintf(span, sizeof span, "differences over t <= %.3g s only",
+                 sv->span);
+      fprintf(R->md,
+              "| %s | %s | order | **%.2f** (fitted) | **%.2f** (max), "
+              "**%.2f** (RMS) | **%.2f** | %s |\n",
+              lay[l], vsph_viscous_name(f),
               vsph_scaling_slope(ly.dx, ly.err[l][f], VSPH_REPORT_LADDER),
-              vsph_scaling_slope(ly.dx, a0, VSPH_REPORT_LADDER));
+              sv->order_max, sv->order_rms,
+              vsph_scaling_slope(ly.dx, a0, VSPH_REPORT_LADDER), span);
       if ((st = vsph_csv_close(c, R->dir, file))) break;
       snprintf(lab, sizeof lab, "%s, %s", vsph_viscous_label(f), lay[l]);
       vsph_report_runs_style(style, sizeof style, f, l ? " dt 2" : "");

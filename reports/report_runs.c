@@ -56,7 +56,9 @@ int vsph_report_runs_layouts(struct vsph_report_runs *R,
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, 0, 0);
   int st = VSPH_OK;
   for (int l = 0; l < 2 && !st; l++)
-    for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT && !st; f++)
+    for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT && !st; f++) {
+      struct vsph_jobs_run run[VSPH_REPORT_LADDER];
+      memset(run, 0, sizeof run);
       for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
         const struct vsph_jobs_spec rs = {L->scene,
                                           vsph_viscous_name(f),
@@ -64,15 +66,18 @@ int vsph_report_runs_layouts(struct vsph_report_runs *R,
                                           L->t_end,
                                           l ? vsph_report_runs_cartesian : NULL,
                                           l ? "cartesian" : NULL};
-        struct vsph_jobs_run r;
-        if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+        struct vsph_jobs_run *r = &run[k];
+        if ((st = vsph_report_runs_get(R, &rs, r))) break;
         out->dx[k] = 1.0 / (double)L->res[k];
-        out->err[l][f][k] = vsph_report_runs_error(&r, NULL);
-        out->d0[l][f][k] = vsph_report_runs_diss0(&r);
-        out->ok[l][f][k] = r.ok;
-        out->tu[l][f][k] = r.t_unstable;
-        vsph_report_runs_free(&r);
+        out->err[l][f][k] = vsph_report_runs_error(r, NULL);
+        out->d0[l][f][k] = vsph_report_runs_diss0(r);
+        out->ok[l][f][k] = r->ok;
+        out->tu[l][f][k] = r->t_unstable;
       }
+      if (!st) st = vsph_report_runs_selfconv(run, out->dx, &out->self[l][f]);
+      for (int k = 0; k < VSPH_REPORT_LADDER; k++)
+        vsph_report_runs_free(&run[k]);
+    }
   if (st) return st;
   R->layouts = *out;
   R->have_layouts = 1;
@@ -267,6 +272,16 @@ double vsph_report_runs_diss0(const struct vsph_jobs_run *r) {
   return (r->Pv[0] - r->dEkr[0]) / fabs(r->dEkr[0]);
 }
 
+int vsph_report_runs_selfconv(const struct vsph_jobs_run run[],
+                              const double dx[],
+                              struct vsph_series_selfconv *out) {
+  struct vsph_series_rung rung[VSPH_REPORT_LADDER];
+  for (int k = 0; k < VSPH_REPORT_LADDER; k++)
+    rung[k] =
+        (struct vsph_series_rung){run[k].t, run[k].Ek, run[k].nrow, dx[k]};
+  return vsph_series_selfconv(rung, VSPH_REPORT_LADDER, out);
+}
+
 int vsph_report_runs_ladder_figures(struct vsph_report_runs *R, int sc,
                                     struct vsph_report_ladder *out) {
   if (R->have_ladder[sc]) {
@@ -277,22 +292,26 @@ int vsph_report_runs_ladder_figures(struct vsph_report_runs *R, int sc,
   const struct vsph_report_ladderdef *L = vsph_report_runs_ladder(R, sc, 0);
   struct vsph_report_richardson rr;
   int st = sc == 1 ? vsph_report_runs_richardson(R, &rr) : VSPH_OK;
-  for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT && !st; f++)
+  for (int f = 0; f < VSPH_VISCOUS_PAPER_COUNT && !st; f++) {
+    struct vsph_jobs_run run[VSPH_REPORT_LADDER];
+    memset(run, 0, sizeof run);
     for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
       struct vsph_jobs_spec rs = {
           L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
-      struct vsph_jobs_run r;
-      if ((st = vsph_report_runs_get(R, &rs, &r))) break;
+      struct vsph_jobs_run *r = &run[k];
+      if ((st = vsph_report_runs_get(R, &rs, r))) break;
       lr->dx[f][k] = 1.0 / (double)L->res[k]; /* reference length 1 m */
-      lr->err[f][k] = vsph_report_runs_error(&r, sc == 1 ? &rr : NULL);
-      lr->wall[f][k] = r.wall_s;
-      lr->pairs[f][k] = r.pairs;
-      lr->cpu[f][k] = r.cpu_s;
-      lr->load[f][k] = r.load;
-      lr->ok[f][k] = r.ok;
-      lr->t_unstable[f][k] = r.t_unstable;
-      vsph_report_runs_free(&r);
+      lr->err[f][k] = vsph_report_runs_error(r, sc == 1 ? &rr : NULL);
+      lr->wall[f][k] = r->wall_s;
+      lr->pairs[f][k] = r->pairs;
+      lr->cpu[f][k] = r->cpu_s;
+      lr->load[f][k] = r->load;
+      lr->ok[f][k] = r->ok;
+      lr->t_unstable[f][k] = r->t_unstable;
     }
+    if (!st) st = vsph_report_runs_selfconv(run, lr->dx[f], &lr->self[f]);
+    for (int k = 0; k < VSPH_REPORT_LADDER; k++) vsph_report_runs_free(&run[k]);
+  }
   if (st) return st;
   R->have_ladder[sc] = 1;
   *out = *lr;

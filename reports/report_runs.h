@@ -9,6 +9,7 @@
 #include <signal.h>
 #include <stddef.h>
 
+#include "../analysis/series.h"
 #include "../runs/jobs.h"
 #include "../solver/viscous.h"
 
@@ -36,6 +37,8 @@ struct vsph_report_ladder {
   double load[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   int ok[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   double t_unstable[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  /* the ladder's self-convergence: successive rungs against each other */
+  struct vsph_series_selfconv self[VSPH_VISCOUS_FORM_COUNT];
 };
 
 /* The stretching square's reference for t > 0, free of MGF's lattice
@@ -63,6 +66,7 @@ struct vsph_report_layouts {
   double d0[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   double tu[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   int ok[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  struct vsph_series_selfconv self[2][VSPH_VISCOUS_FORM_COUNT];
 };
 
 /* What reads runs: the report's fidelity and scenes, its runs (planned,
@@ -193,6 +197,12 @@ const char *vsph_report_runs_colour(int f);
 /* The line style of formulation f in every figure: "linespoints pt P lw 2
  * COLOUR" with @p more appended (e.g. " dt 2"; "" for none). */
 void vsph_report_runs_style(char *buf, size_t len, int f, const char *more);
+
+/* The self-convergence of a ladder's runs (coarse first, E_k, spacings
+ * @p dx): vsph_series_selfconv on their energy series. */
+int vsph_report_runs_selfconv(const struct vsph_jobs_run run[],
+                              const double dx[],
+                              struct vsph_series_selfconv *out);
 
 /* The figures of scene @p sc's ladder (memoised in R). */
 int vsph_report_runs_ladder_figures(struct vsph_report_runs *R, int sc,

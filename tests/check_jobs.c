@@ -560,7 +560,10 @@ static size_t free_surface_entries(const char *dir, const char *out, int full,
  * entry's E_k falls from 1 to 1 - 1/res against a constant reference, so
  * the vortex patch's E_k error is 1/res (by hand: 4.000e-02, 2.000e-02,
  * 1.000e-02 at R/dx = 25, 50, 100, to the table's four digits) and its
- * fitted order exactly 1; P_visc(0) is -(1 + 1/res) against dE_k,ref/dt
+ * fitted order exactly 1; its successive differences are 1/res_k -
+ * 1/res_{k+1} at t = 1 (2.000e-02, 1.000e-02: the self-convergence order
+ * exactly 1), their RMS over [0, 1] by the trapezoid rule on the two rows
+ * 1/sqrt(2) of that (1.414e-02, 7.071e-03); P_visc(0) is -(1 + 1/res) against dE_k,ref/dt
  * = -1, so the initial dissipation error, (P_visc(0) - dE_k,ref/dt(0)) /
  * |dE_k,ref/dt(0)|, is -1/res. AR/summary.md then holds the convergence
  * tables and says how many runs came from AR; the report's facts and
@@ -638,13 +641,16 @@ START_TEST(test_assemble_from_archive) {
   ck_assert_uint_eq(nread, nrun);
   ck_assert_uint_eq(nrun, 3 * 3 * 3 + 9 + 4);
   ck_assert_msg(strstr(summary,
-                       "| mgf | 25 | 4.000e-02 | yes | |\n"
-                       "| mgf | 50 | 2.000e-02 | yes | |\n"
-                       "| mgf | 100 | 1.000e-02 | yes | |\n"
-                       "| mgf | ladder | | | **1.00** |"),
+                       "| mgf | 25 | 4.000e-02 | – | – | yes |\n"
+                       "| mgf | 50 | 2.000e-02 | 2.000e-02 | 1.414e-02 | yes "
+                       "|\n"
+                       "| mgf | 100 | 1.000e-02 | 1.000e-02 | 7.071e-03 | yes "
+                       "|\n"
+                       "| mgf | order | **1.00** (fitted) | **1.00** | "
+                       "**1.00** | differences over the whole run |"),
                 "%.3000s", summary);
   ck_assert_msg(strstr(summary,
-                       "| cartesian | pvwf | 100 | 1.000e-02 | "
+                       "| cartesian | pvwf | 100 | 1.000e-02 | 1.000e-02 | "
                        "-1.000e-02 | yes |"),
                 "%.3000s", summary);
   ck_assert_msg(!strstr(summary, "![") && !strstr(summary, "*Figure"),

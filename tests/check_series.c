@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "../analysis/series.h"
+#include "../common/status.h"
 #include "check_suites.h"
 
 /* A linear function is interpolated exactly (to rounding: 1e-15 of its
@@ -195,6 +196,119 @@ START_TEST(test_cfl_rule) {
 }
 END_TEST
 
+/* The cubic through the nearest four rows reproduces a cubic polynomial
+ * on an uneven grid to rounding (1e-13 of its values, a few operations
+ * on numbers of order 10), at the table's ends too; three rows fall back
+ * to the line (exact on a line); outside the table, NaN. */
+START_TEST(test_interp_cubic) {
+  const double t[7] = {0.0, 0.3, 0.45, 1.2, 1.25, 2.0, 3.1};
+  double y[7];
+  for (int k = 0; k < 7; k++)
+    y[k] = 1.0 - 2.0 * t[k] + 0.5 * t[k] * t[k] + 0.25 * t[k] * t[k] * t[k];
+  for (double x = 0.0; x <= 3.1; x += 0.01) {
+    const double want = 1.0 - 2.0 * x + 0.5 * x * x + 0.25 * x * x * x;
+    ck_assert_double_eq_tol(vsph_series_interp_cubic(t, y, 7, x), want,
+                            1e-13 * (1.0 + fabs(want)));
+  }
+  ck_assert(isnan(vsph_series_interp_cubic(t, y, 7, -1e-9)));
+  ck_assert(isnan(vsph_series_interp_cubic(t, y, 7, 3.1 + 1e-9)));
+  const double tl[3] = {0.0, 1.0, 3.0}, yl[3] = {1.0, 3.0, 7.0};
+  ck_assert_double_eq_tol(vsph_series_interp_cubic(tl, yl, 3, 2.0), 5.0, 1e-15);
+}
+END_TEST
+
+/* The order of E_h = E + C h^p from two successive differences, worked by
+ * hand: C (h0^p - h1^p) and C (h1^p - h2^p) give p back, p = 1 and 2 at
+ * the ratio 2 (the closed form, rounding: 1e-12) and p = 1.3 at the
+ * unequal ratios 2.5 and 1.6 (the bisection's root, to 1e-9); differences
+ * that grow by the ratio give -1; a zero difference or a ratio of 1, NaN. */
+START_TEST(test_order) {
+  const double C = 0.37;
+  for (int p = 1; p <= 2; p++) {
+    const double dc = C * (pow(0.1, p) - pow(0.05, p));
+    const double df = C * (pow(0.05, p) - pow(0.025, p));
+    ck_assert_double_eq_tol(vsph_series_order(dc, df, 2.0, 2.0), p, 1e-12);
+  }
+  const double p = 1.3, h0 = 0.1, h1 = 0.04, h2 = 0.025;
+  const double dc = C * (pow(h0, p) - pow(h1, p)),
+               df = C * (pow(h1, p) - pow(h2, p));
+  ck_assert_double_eq_tol(vsph_series_order(dc, df, h0 / h1, h1 / h2), p, 1e-9);
+  ck_assert_double_eq_tol(vsph_series_order(1.0, 2.0, 2.0, 2.0), -1.0, 1e-15);
+  ck_assert(isnan(vsph_series_order(0.0, 1.0, 2.0, 2.0)));
+  ck_assert(isnan(vsph_series_order(1.0, 0.5, 1.0, 2.0)));
+}
+END_TEST
+
+/* A synthetic ladder E_h(t) = E(t) + C h^p t, E(t) = 2 + e^-t cos 3t, at
+ * h = 0.1, 0.05, 0.025 on three unequal, jittered time grids (about 400
+ * rows over [0, 2]): every E_h(0) = E(0) = 3, so the successive
+ * differences of E_h/E_h(0) are C (h_k^p - h_{k+1}^p) t / 3, whose max
+ * over [0, 2] is at t = 2 and whose RMS over it is 2/sqrt(3) times the
+ * factor. Tolerances: the coarser rung is interpolated by the cubic,
+ * whose error at these steps (fourth derivative at most 100, dt^4/24 at
+ * most 1e-10) is below 1e-6 of the differences' 1e-4 to 1e-2 scale; the
+ * trapezoid rule on t^2 errs by about dt^2/6 (1e-5 relative) on the RMS;
+ * the orders then by less than 1e-3. The finest rung's remainder by
+ * Richardson is C h_2^p 2/3 exactly at the exact order. Then the finest
+ * rung stopped at t = 1.3 (its later rows NaN): the span is its last row
+ * and the differences end there. */
+START_TEST(test_selfconv) {
+  enum { NMAX = 420 };
+  static double t[3][NMAX], E[3][NMAX];
+  const double C = 0.5, hs[3] = {0.1, 0.05, 0.025}, T = 2.0;
+  for (int p = 1; p <= 2; p++) {
+    struct vsph_series_rung rung[3];
+    for (int k = 0; k < 3; k++) {
+      const size_t n = 380 + 17 * (size_t)k;
+      const double dt = T / (double)(n - 1);
+      for (size_t i = 0; i < n; i++) {
+        t[k][i] = i == 0 || i == n - 1
+                      ? dt * (double)i
+                      : dt * ((double)i + 0.3 * sin((double)(i + k)));
+        E[k][i] = 2.0 + exp(-t[k][i]) * cos(3.0 * t[k][i]) +
+                  C * pow(hs[k], p) * t[k][i];
+      }
+      rung[k] = (struct vsph_series_rung){t[k], E[k], n, hs[k]};
+    }
+    struct vsph_series_selfconv sc;
+    ck_assert_int_eq(vsph_series_selfconv(rung, 3, &sc), VSPH_OK);
+    ck_assert_int_eq(sc.partial, 0);
+    ck_assert_double_eq_tol(sc.span, T, 1e-15);
+    for (int k = 0; k < 2; k++) {
+      const double f = C * (pow(hs[k], p) - pow(hs[k + 1], p)) / 3.0;
+      ck_assert_double_eq_tol(sc.dmax[k], f * T, 1e-6 * f * T);
+      ck_assert_double_eq_tol(sc.drms[k], f * T / sqrt(3.0), 1e-4 * f * T);
+    }
+    ck_assert_double_eq_tol(sc.order_max, p, 1e-3);
+    ck_assert_double_eq_tol(sc.order_rms, p, 1e-3);
+    const double rem = C * pow(hs[2], p) * T / 3.0;
+    ck_assert_double_eq_tol(sc.remainder, rem, 1e-3 * rem);
+    /* the finest rung stops at t = 1.3 */
+    size_t stop = 0;
+    while (t[2][stop + 1] <= 1.3) stop++;
+    for (size_t i = stop + 1; i < rung[2].n; i++) E[2][i] = NAN;
+    ck_assert_int_eq(vsph_series_selfconv(rung, 3, &sc), VSPH_OK);
+    ck_assert_int_eq(sc.partial, 1);
+    ck_assert_double_eq(sc.span, t[2][stop]);
+    for (int k = 0; k < 2; k++) {
+      const double f = C * (pow(hs[k], p) - pow(hs[k + 1], p)) / 3.0;
+      ck_assert_double_eq_tol(sc.dmax[k], f * sc.span, 1e-6 * f * T);
+    }
+    ck_assert_double_eq_tol(sc.order_max, p, 1e-3);
+  }
+  /* refused: one rung, a spacing that does not fall, E(0) = 0 */
+  vsph_test_silence();
+  struct vsph_series_rung r2[2] = {{t[0], E[0], 10, 0.1},
+                                   {t[1], E[1], 10, 0.1}};
+  struct vsph_series_selfconv sc;
+  ck_assert_int_eq(vsph_series_selfconv(r2, 1, &sc), VSPH_EINVAL);
+  ck_assert_int_eq(vsph_series_selfconv(r2, 2, &sc), VSPH_EINVAL);
+  const double z[2] = {0.0, 1.0};
+  r2[1] = (struct vsph_series_rung){t[1], z, 2, 0.05};
+  ck_assert_int_eq(vsph_series_selfconv(r2, 2, &sc), VSPH_EINVAL);
+}
+END_TEST
+
 Suite *vsph_series_suite(void) {
   Suite *s = suite_create("series");
   TCase *tc = tcase_create("measures");
@@ -208,6 +322,9 @@ Suite *vsph_series_suite(void) {
   tcase_add_test(tc, test_failure);
   tcase_add_test(tc, test_tail_mean);
   tcase_add_test(tc, test_cfl_rule);
+  tcase_add_test(tc, test_interp_cubic);
+  tcase_add_test(tc, test_order);
+  tcase_add_test(tc, test_selfconv);
   suite_add_tcase(s, tc);
   return s;
 }
