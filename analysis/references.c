@@ -22,7 +22,7 @@ static const double NUM_EPSABS = 1e-17;
 double vsph_references_vortex_initial(const struct vsph_references_vortex *v,
                                       double r) {
   /* the scene's profile: one definition (THEORY 6.1, [reconstructed]) */
-  return vsph_vortex_patch_omega(v->omega0, v->l2, v->R, r);
+  return vsph_vortex_patch_omega(v->omega0, v->l2, v->a, v->R, r);
 }
 
 /* phi(x) = 2 J_1(x)/x, with its series near 0 (J_1(x)/x = 1/2 - x^2/16 +
@@ -62,12 +62,10 @@ static int integrate(gsl_integration_workspace *ws,
   return VSPH_OK;
 }
 
-struct vsph_references_vortex *vsph_references_vortex_alloc(double R, double l2,
-                                                            double omega0,
-                                                            double nu,
-                                                            size_t nterms) {
+struct vsph_references_vortex *vsph_references_vortex_alloc(
+    double R, double l2, double a, double omega0, double nu, size_t nterms) {
   if (!(R > 0.0) || !(l2 > 0.0) || !(nu >= 0.0) || !isfinite(omega0) ||
-      nterms < 1) {
+      !isfinite(a) || nterms < 1) {
     vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
                        "vortex reference: need R > 0, l^2 > 0, nu >= 0, "
                        "terms >= 1");
@@ -77,6 +75,7 @@ struct vsph_references_vortex *vsph_references_vortex_alloc(double R, double l2,
   if (!v) goto nomem;
   v->R = R;
   v->l2 = l2;
+  v->a = a;
   v->omega0 = omega0;
   v->nu = nu;
   v->nterms = nterms;
@@ -222,8 +221,8 @@ struct vsph_references_scene *vsph_references_scene_alloc(
   if (sc->type == &vsph_vortex_patch_type) {
     const struct vsph_scene_vortex *vp = &sc->u.vortex;
     /* 80 terms: the initial profile to ~3e-7, better at every t > 0 */
-    r->vortex =
-        vsph_references_vortex_alloc(vp->R, vp->l2, vp->omega0, vp->nu, 80);
+    r->vortex = vsph_references_vortex_alloc(vp->R, vp->l2, vp->a, vp->omega0,
+                                             vp->nu, 80);
     if (!r->vortex) {
       free(r);
       return NULL;

@@ -8,13 +8,15 @@
  *  section 6). Vortex patch: the Bessel-series solution of Eq. (6.38) of
  *  Colagrossi et al. (2011), d omega/dt = nu (omega'' + 3 omega'/r),
  *  omega'(R) = 0, from the [reconstructed] initial profile
- *  omega(r,0) = omega0 l^2 [1/(l^2 + r^2) + r^2/(l^2 + R^2)^2]. No I/O. */
+ *  omega(r,0) = omega0 [1 - a + a l^2 (1/(l^2 + r^2) + r^2/(l^2 + R^2)^2)]
+ *  (vsph_vortex_patch_omega). No I/O. */
 
 /** Vortex-patch series: omega = c_0 + sum_n c_n phi_n(r) exp(-nu k_n^2 t),
  *  phi_n = 2 J_1(k_n r)/(k_n r), J_2(k_n R) = 0. */
 struct vsph_references_vortex {
   double R;      /*!< patch radius (m) */
   double l2;     /*!< profile parameter l^2 (m^2) */
+  double a;      /*!< the profile's weight over a rigid rotation */
   double omega0; /*!< angular velocity at the centre (rad/s) */
   double nu;     /*!< kinematic viscosity (m^2/s) */
   size_t nterms; /*!< series terms beyond c_0 */
@@ -28,10 +30,8 @@ struct vsph_references_vortex {
 /** @brief Build the series: zeros of J_2 (gsl_sf_bessel_zero_Jnu) and the
  *  coefficients c_n = int omega(r,0) phi_n r^3 dr / int phi_n^2 r^3 dr by
  *  GSL quadrature. NULL (after reporting) on bad values or failure. */
-struct vsph_references_vortex *vsph_references_vortex_alloc(double R, double l2,
-                                                            double omega0,
-                                                            double nu,
-                                                            size_t nterms);
+struct vsph_references_vortex *vsph_references_vortex_alloc(
+    double R, double l2, double a, double omega0, double nu, size_t nterms);
 
 /** @brief Free; NULL is a no-op. */
 void vsph_references_vortex_free(struct vsph_references_vortex *v);

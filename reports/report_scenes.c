@@ -100,8 +100,8 @@ static int vortex_profiles(struct vsph_report *R, FILE *figs, int f,
   int st = vsph_scene_init(&scene, &vsph_vortex_patch_type, NULL);
   if (st) return st;
   const struct vsph_scene_vortex *vp = &scene.u.vortex;
-  struct vsph_references_vortex *ref =
-      vsph_references_vortex_alloc(vp->R, vp->l2, vp->omega0, vp->nu, 200);
+  struct vsph_references_vortex *ref = vsph_references_vortex_alloc(
+      vp->R, vp->l2, vp->a, vp->omega0, vp->nu, 200);
   if (!ref) return VSPH_ELIB;
   const char *form = vsph_viscous_name(f);
   char pname[64], title[200];

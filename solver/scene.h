@@ -21,7 +21,9 @@ struct vsph_params_spec;
 /** Vortex patch (THEORY 6.1): given values, then derived ones. */
 struct vsph_scene_vortex {
   double R;      /*!< patch radius (m) */
-  double l2;     /*!< profile parameter l^2 (m^2) [reconstructed] */
+  double l2;     /*!< profile parameter l^2 (m^2) */
+  double a;      /*!< weight of the l^2 profile over a rigid rotation,
+                      1 - a [reconstructed] (THEORY 6.1) */
   double omega0; /*!< angular velocity at the centre (rad/s) */
   double beta;   /*!< radial body force -beta^2 r (1/s) */
   double nu;     /*!< kinematic viscosity (m^2/s) */
@@ -274,8 +276,19 @@ void vsph_standing_wave_velocity(const struct vsph_scene_wave *w, double x,
                                  double y, double u[2]);
 
 /** @brief Vortex patch's initial angular velocity (THEORY 6.1,
- *  [reconstructed]): omega0 l^2 [1/(l^2 + r^2) + r^2/(l^2 + R^2)^2]. The
- *  one definition of the profile: the reference solution uses it too. */
-double vsph_vortex_patch_omega(double omega0, double l2, double R, double r);
+ *  [reconstructed]): omega0 [1 - a + a l^2 (1/(l^2 + r^2) +
+ *  r^2/(l^2 + R^2)^2)], so omega(0) = omega0 and d omega/dr (R) = 0 for
+ *  any a. The one definition of the profile: the reference solution uses
+ *  it too. */
+double vsph_vortex_patch_omega(double omega0, double l2, double a, double R,
+                               double r);
+
+/** The vortex patch's default a [reconstructed]: the one value that meets
+ *  the paper's two stated figures of its own profile, Re = R u_theta(R,0)/nu
+ *  = 256 and omega_inf = 0.2848 omega0, with equal and opposite relative
+ *  errors (-0.27 % and +0.27 %; at l^2 = 0.1, R = 1, nu = 1e-3, no a meets
+ *  both exactly: Re = 256 alone gives omega_inf 0.50 % high, omega_inf
+ *  alone Re 0.59 % low). docs/theory.md section 6 derives it. */
+#define VSPH_VORTEX_PATCH_A 0.90108
 
 #endif /* VSPH_SOLVER_SCENE_H */

@@ -1,6 +1,7 @@
 /* Vortex patch: a disc with non-uniform angular velocity held by a radial
  * body force (Colagrossi et al. 2011, Sec. VI A; THEORY 6.1). The initial
- * profile is [reconstructed]: the seed's Eq. (6.39) is unreadable.
+ * profile is [reconstructed]: the seed's Eq. (6.39) is unreadable; its
+ * form and weight meet every fact the paper states (THEORY 6.1).
  * Parameters: struct vsph_scene_vortex (solver/scene.h). */
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
@@ -19,7 +20,10 @@
 static const struct vsph_params_spec params[] = {
     VSPH_PARAMS_REAL_SPEC(V, R, 1.0, 1e-6, 1e6, "patch radius (m)"),
     VSPH_PARAMS_REAL_SPEC(V, l2, 0.1, 1e-12, 1e12,
-                          "profile parameter l^2 (m^2) [reconstructed]"),
+                          "profile parameter l^2 (m^2)"),
+    VSPH_PARAMS_REAL_SPEC(V, a, VSPH_VORTEX_PATCH_A, -1e6, 1e6,
+                          "weight of the l^2 profile over a rigid rotation "
+                          "(1: no rotation added) [reconstructed]"),
     VSPH_PARAMS_REAL_SPEC(V, omega0, 1.0, -1e6, 1e6,
                           "angular velocity at the centre (rad/s)"),
     VSPH_PARAMS_REAL_SPEC(V, beta, VSPH_PI / 8.0, 0.0, 1e6,
@@ -37,15 +41,17 @@ static const struct vsph_params_spec params[] = {
 };
 #undef V
 
-double vsph_vortex_patch_omega(double omega0, double l2, double R, double r) {
-  return omega0 * l2 *
-         (1.0 / (l2 + r * r) + r * r / ((l2 + R * R) * (l2 + R * R)));
+double vsph_vortex_patch_omega(double omega0, double l2, double a, double R,
+                               double r) {
+  const double g =
+      l2 * (1.0 / (l2 + r * r) + r * r / ((l2 + R * R) * (l2 + R * R)));
+  return omega0 * (1.0 - a + a * g);
 }
 
 /* dp/dr = rho0 (omega^2 - beta^2) r, p(R) = 0 (THEORY 6.1). */
 static double dpdr(double r, void *v) {
   const struct vsph_scene_vortex *vp = v;
-  const double w = vsph_vortex_patch_omega(vp->omega0, vp->l2, vp->R, r);
+  const double w = vsph_vortex_patch_omega(vp->omega0, vp->l2, vp->a, vp->R, r);
   return vp->rho0 * (w * w - vp->beta * vp->beta) * r;
 }
 
@@ -82,8 +88,8 @@ static int setup(struct vsph_scene *sc) {
   for (int k = 0; k <= 1000 && !st; k++) { /* profile sampled at R/1000 */
     const double r = R * k / 1000.0;
     double p = 0.0;
-    sc->U_max = fmax(
-        sc->U_max, r * fabs(vsph_vortex_patch_omega(vp->omega0, vp->l2, R, r)));
+    sc->U_max = fmax(sc->U_max, r * fabs(vsph_vortex_patch_omega(
+                                        vp->omega0, vp->l2, vp->a, R, r)));
     st = pressure(vp, ws, r, &p);
     pmin = fmin(pmin, p);
     pmax = fmax(pmax, p);
@@ -116,7 +122,8 @@ static int init(const struct vsph_scene *sc, size_t res,
   if (!ws) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a workspace");
   for (size_t i = 0; i < p->n && !st; i++) {
     const double x = p->pos[0][i], y = p->pos[1][i], r = hypot(x, y);
-    const double w = vsph_vortex_patch_omega(vp->omega0, vp->l2, vp->R, r);
+    const double w =
+        vsph_vortex_patch_omega(vp->omega0, vp->l2, vp->a, vp->R, r);
     p->vel[0][i] = -w * y;
     p->vel[1][i] = w * x;
     double pr = 0.0;
