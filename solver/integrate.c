@@ -566,13 +566,29 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   return VSPH_OK;
 }
 
-/* The closest pair with a fluid particle a, its neighbour b any particle
- * (fluid, a ghost or periodic image, a wall particle): a stop for pairing
- * says where. Their indices, or none (*a = *b = n). */
-static void closest_pair(const struct vsph_integrate *s, size_t *a, size_t *b) {
+/* 1 when particle j is an image of fluid particle i itself (a mirrored
+ * ghost or periodic image made from it, corners included; never a fixed
+ * wall particle). */
+static int own_image(const struct vsph_integrate *s, size_t i, size_t j) {
   const struct vsph_particles *p = s->p;
-  double best = INFINITY;
-  *a = *b = p->n;
+  if (!s->gh) return 0;
+  const size_t base = s->n_fluid + s->gh->keep;
+  return p->id[j] >= base && p->id[j] - base < s->gh->n &&
+         s->gh->src[p->id[j] - base] == p->id[i];
+}
+
+/* The closest pair with a fluid particle a, its neighbour b any particle
+ * (fluid, a ghost or periodic image, a wall particle): into a[0], b[0]
+ * with its squared distance returned; and the closest pair but for a
+ * particle and its own image into a[1], b[1], d2[1] (a particle at a
+ * mirror plane meets its own image there, and that is no pairing: its
+ * image is itself, mirrored; vsph_integrate_check). One scan; none:
+ * index n, distance infinity. A stop for pairing says where. */
+static void closest_pair(const struct vsph_integrate *s, size_t a[2],
+                         size_t b[2], double d2[2]) {
+  const struct vsph_particles *p = s->p;
+  d2[0] = d2[1] = INFINITY;
+  a[0] = b[0] = a[1] = b[1] = p->n;
   for (size_t c = 0; c < s->cells->ncells; c++) {
     struct vsph_pair_ranges rg;
     vsph_pair_ranges_cell(&rg, s->cells, c);
@@ -582,12 +598,13 @@ static void closest_pair(const struct vsph_integrate *s, size_t *a, size_t *b) {
       for (size_t r = 0; r < rg.n; r++)
         for (size_t j = rg.lo[r]; j < rg.hi[r]; j++) {
           if (j == i) continue;
-          double d2 = 0.0;
+          double e = 0.0;
           for (int k = 0; k < p->dim; k++) {
             const double d = p->pos[k][j] - p->pos[k][i];
-            d2 += d * d;
+            e += d * d;
           }
-          if (d2 < best) best = d2, *a = i, *b = j;
+          if (e < d2[0]) d2[0] = e, a[0] = i, b[0] = j;
+          if (e < d2[1] && !own_image(s, i, j)) d2[1] = e, a[1] = i, b[1] = j;
         }
     }
   }
@@ -623,14 +640,28 @@ int vsph_integrate_check(struct vsph_integrate *s) {
   }
   if (s->steps > 0 && s->min_dist < ip->min_dist) {
     /* where: the closest pair now (the cells are the step's, the
-     * positions moved by one step since) */
-    size_t a, b;
-    closest_pair(s, &a, &b);
+     * positions moved by one step since). A particle and its own image
+     * across a free-slip plane, a plane of symmetry, are one fluid element
+     * mirrored (the image may meet it at the plane, or pass it): no
+     * pairing, and the closest distinct pair decides. Across a no-slip
+     * plane the particle has reached the wall: a stop, as any pair */
+    size_t aa[2], bb[2];
+    double dd[2];
+    closest_pair(s, aa, bb, dd);
+    size_t a = aa[0], b = bb[0];
+    double d = s->min_dist;
+    if (a < p->n && !s->props.walls.noslip && own_image(s, a, b)) {
+      if (!(sqrt(dd[1]) < ip->min_dist)) {
+        s->reason[0] = '\0';
+        return 0;
+      }
+      a = aa[1], b = bb[1], d = sqrt(dd[1]);
+    }
     if (a < p->n)
       snprintf(s->reason, sizeof s->reason,
                "particle pairing: two particles %.3g apart (limit %.3g), "
                "%zu and %s%zu near (%.3g, %.3g)",
-               s->min_dist, ip->min_dist, p->id[a],
+               d, ip->min_dist, p->id[a],
                p->id[b] < s->n_fluid ? "" : "image/wall ", p->id[b],
                p->pos[0][a], p->dim > 1 ? p->pos[1][a] : 0.0);
     else

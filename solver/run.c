@@ -49,6 +49,13 @@ static const struct vsph_params_spec SOLVER[] = {
                           "the rule"),
     VSPH_PARAMS_REAL_SPEC(P, delta, 0.0, 0.0, 1.0,
                           "delta-SPH coefficient; 0: off (0.1 is usual)"),
+    VSPH_PARAMS_REAL_SPEC(P, relax, 0.0, 0.0, 1e3,
+                          "relaxed start: the particles first settle at rest "
+                          "for this long (s), their velocity damped with the "
+                          "time constant relax/20, then take the scene's "
+                          "initial velocity where they settled (scenes whose "
+                          "initial state is at rest but for the velocity: "
+                          "the standing wave); 0: start on the lattice"),
     VSPH_PARAMS_REAL_SPEC(P, rho_band, 0.2, 1e-6, 10.0,
                           "stop as unstable when |rho/rho0 - 1| exceeds it"),
     VSPH_PARAMS_REAL_SPEC(P, min_gap, 0.05, 0.0, 0.99,
@@ -325,6 +332,14 @@ static int check_cost(const struct vsph_run_props *rp,
               "their velocities are set per evaluation, the drift reads them "
               "after the kick",
               sc->type->name);
+  if (rp->relax > 0.0 && (!sc->type->rest_velocity || rp->tvf || rp->leapfrog ||
+                          rp->scheme_kind == VSPH_EQUATIONS_CONTACT))
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:relax needs a scene whose initial state is at rest "
+              "but for its velocity (the standing wave), run by RK4 with "
+              "WCSPH; %s%s cannot start relaxed",
+              sc->type->name,
+              sc->type->rest_velocity ? " with this scheme or integrator" : "");
   if (rp->tvf && sc->walls.solid != VSPH_WALLS_ADAMI)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:tvf = 1 needs a scene with Adami et al.'s wall "
@@ -384,6 +399,47 @@ int vsph_run_estimate(const struct vsph_run_props *rp,
                       const struct vsph_scene *sc,
                       struct vsph_run_estimate *e) {
   return check_cost(rp, sc, rp->t_end > 0 ? rp->t_end : sc->t_end, e);
+}
+
+/* The relaxed start (Solver:relax, docs/theory.md section 5): the fluid
+ * at rest, its density and pressure the scene's, runs for relax seconds
+ * with its velocity damped after each step by exp(-dt/tau), tau =
+ * relax/20 (20 time constants: any motion the lattice's imbalance at the
+ * surface starts falls by e^-20, and a slow mode of angular frequency w
+ * settles unless w^2 tau^2 << 1/400); then the clock is set back to 0 and
+ * each fluid particle takes the scene's initial velocity where it settled,
+ * with the density it settled to. A relaxation that goes unstable is an
+ * error (the run cannot start). */
+static int relax(struct vsph_run *r) {
+  struct vsph_integrate *s = r->integ;
+  struct vsph_particles *p = s->p;
+  const double T = r->props.relax, tau = T / 20.0;
+  for (size_t i = 0; i < p->n; i++)
+    if (p->id[i] < r->n_fluid)
+      for (int k = 0; k < p->dim; k++) p->vel[k][i] = 0.0;
+  while (s->t < T * (1.0 - 1e-12)) {
+    double dt = vsph_integrate_dt(s);
+    if (s->t + dt > T) dt = T - s->t;
+    int st = vsph_integrate_step(s, dt);
+    if (st) return st;
+    if (vsph_integrate_check(s))
+      VSPH_FAIL(VSPH_EFAIL, "the relaxed start went unstable at t = %.3g s: %s",
+                s->t, s->reason);
+    const double damp = exp(-dt / tau);
+    for (size_t i = 0; i < p->n; i++)
+      if (p->id[i] < r->n_fluid)
+        for (int k = 0; k < p->dim; k++) p->vel[k][i] *= damp;
+  }
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= r->n_fluid) continue;
+    double x[3] = {0.0, 0.0, 0.0}, u[3];
+    for (int k = 0; k < p->dim; k++) x[k] = p->pos[k][i];
+    r->scene.type->rest_velocity(&r->scene, x, u);
+    for (int k = 0; k < p->dim; k++) p->vel[k][i] = u[k];
+  }
+  s->t = 0.0;
+  s->steps = 0;
+  return VSPH_OK;
 }
 
 int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
@@ -459,6 +515,7 @@ int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
     st = VSPH_ENOMEM;
     goto fail;
   }
+  if (rp->relax > 0.0 && (st = relax(r))) goto fail;
   r->out_dt = r->t_end / (double)rp->outputs;
   r->snap_dt =
       rp->snapshots > 0 ? r->t_end / (double)rp->snapshots : (double)INFINITY;

@@ -54,6 +54,9 @@ struct vsph_run_props {
   double cfl;          /*!< Courant number of RK4 */
   double dt;           /*!< a fixed time step (s); 0: the rule's */
   double delta;        /*!< delta-SPH coefficient; 0: off */
+  double relax;        /*!< relaxed start: time (s) the particles settle at
+                            rest, damped, before the scene's velocity is
+                            given them; 0: start on the lattice */
   double rho_band;     /*!< unstable when |rho/rho0 - 1| exceeds it */
   double min_gap;      /*!< unstable when two particles come closer (dx) */
   size_t outputs;      /*!< energy rows over the run */

@@ -150,6 +150,14 @@ struct vsph_scene_type {
   /** Lay out the fluid: @p res particles across the reference length. */
   int (*init)(const struct vsph_scene *sc, size_t res,
               struct vsph_particles **out);
+  /** The initial velocity at @p x (its first two components in 2-D), for
+   *  a scene whose initial pressure and density are those of the fluid at
+   *  rest (the standing wave: a flat surface, hydrostatic), so that a
+   *  relaxed start (Solver:relax) can let the particles settle at rest
+   *  first and then give them this velocity where they settled. NULL: the
+   *  scene cannot start relaxed. */
+  void (*rest_velocity)(const struct vsph_scene *sc, const double x[3],
+                        double u[3]);
   /** "key=value" settings of the Solver section that this scene takes
    *  instead of the table's defaults, NULL-terminated (NULL: none); see
    *  vsph_scene_solver_defaults. */

@@ -18,6 +18,7 @@
 #include "../solver/integrate.h"
 #include "../solver/lattice.h"
 #include "../solver/particles.h"
+#include "../solver/run.h"
 #include "../solver/scene.h"
 #include "check_suites.h"
 
@@ -262,6 +263,98 @@ START_TEST(test_ghost_capacity) {
 }
 END_TEST
 
+/* A particle on a free-slip plane meets its own mirror image there: one
+ * fluid element, mirrored, and no pairing (docs/theory.md section 5). The
+ * standing wave at rest, H/dx = 10: the particle nearest (L, -H/2) moved
+ * to 1e-4 dx from the wall x = L, one step: the step's closest pair (the
+ * particle and its image, 2e-4 dx apart) is below the 0.05 dx limit, yet
+ * the check lets the run go on. Across a no-slip plane the same stops it
+ * (the particle reached the wall); and two distinct particles 0.01 dx
+ * apart stop it on either. */
+START_TEST(test_own_image) {
+  for (int pass = 0; pass < 3; pass++) {
+    struct vsph_scene sc;
+    struct vsph_integrate *s =
+        make_run("standing-wave", VSPH_VISCOUS_MGF, 10, &sc, NULL, NULL);
+    struct vsph_particles *p = s->p;
+    const double L = sc.ref_length, dx = L / 10.0;
+    size_t a = 0, b = 0;
+    double best = INFINITY, second = INFINITY;
+    for (size_t i = 0; i < p->n; i++) {
+      p->vel[0][i] = p->vel[1][i] = 0.0;
+      const double d = hypot(p->pos[0][i] - L, p->pos[1][i] + 0.5 * L);
+      if (d < best)
+        second = best, b = a, best = d, a = i;
+      else if (d < second)
+        second = d, b = i;
+    }
+    p->pos[0][a] = L - 1e-4 * dx;
+    if (pass == 1) s->props.walls.noslip = 1;
+    if (pass == 2) { /* a distinct pair, away from the wall */
+      p->pos[0][a] = p->pos[0][b] - 0.01 * dx;
+      p->pos[1][a] = p->pos[1][b];
+    }
+    ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+    ck_assert_double_lt(s->min_dist, s->props.min_dist);
+    const int bad = vsph_integrate_check(s);
+    ck_assert_msg(bad == (pass > 0), "pass %d: %s", pass, s->reason);
+    if (pass) ck_assert_ptr_nonnull(strstr(s->reason, "pairing"));
+    vsph_integrate_free(s);
+  }
+}
+END_TEST
+
+/* The relaxed start (Solver:relax): the standing wave at H/dx = 10 settles
+ * 0.5 s at rest, then its clock reads 0 with no step taken, every fluid
+ * particle has the scene's initial velocity where it settled (to the bit:
+ * the same function at the same point), and the particles moved, but by
+ * far less than a spacing (measured 3e-3 dx; bound 0.1 dx). A scene whose
+ * initial state is not at rest (the vortex patch) refuses it. */
+START_TEST(test_relax) {
+  static const char *const set[] = {"Solver:res=10", "Solver:relax=0.5",
+                                    "Solver:t_end=1", NULL};
+  struct vsph_scene sc;
+  struct vsph_run *run = vsph_test_run(&vsph_standing_wave_type, set, &sc);
+  const struct vsph_particles *p = run->integ->p;
+  ck_assert_double_eq(run->integ->t, 0.0);
+  ck_assert_uint_eq(run->integ->steps, 0);
+  /* the lattice it started from */
+  struct vsph_particles *lat = NULL;
+  ck_assert_int_eq(sc.type->init(&sc, 10, &lat), 0);
+  const double dx = sc.ref_length / 10.0;
+  double moved = 0.0;
+  size_t nf = 0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= run->n_fluid) continue;
+    nf++;
+    const size_t j = p->id[i];
+    moved = fmax(moved, hypot(p->pos[0][i] - lat->pos[0][j],
+                              p->pos[1][i] - lat->pos[1][j]));
+    double u[2];
+    vsph_standing_wave_velocity(&run->scene.u.wave, p->pos[0][i], p->pos[1][i],
+                                u);
+    ck_assert(p->vel[0][i] == u[0] && p->vel[1][i] == u[1]);
+  }
+  ck_assert_uint_eq(nf, lat->n);
+  ck_assert_double_gt(moved, 1e-9 * dx);
+  ck_assert_double_lt(moved, 0.1 * dx);
+  vsph_particles_free(lat);
+  vsph_run_free(run);
+  /* refused where the start is not at rest */
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:relax", "1"), 0);
+  struct vsph_run_props rp;
+  struct vsph_scene vs;
+  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
+  ck_assert_int_eq(vsph_scene_init(&vs, &vsph_vortex_patch_type, prm), 0);
+  vsph_params_free(prm);
+  vsph_test_silence();
+  struct vsph_run *r2 = NULL;
+  ck_assert_int_eq(vsph_run_alloc(&rp, &vs, &r2), VSPH_EINVAL);
+  ck_assert_ptr_null(r2);
+}
+END_TEST
+
 /* The right-hand side with the cell list against the O(N^2) path. */
 START_TEST(test_rhs_cells_vs_direct) {
   struct vsph_scene sc;
@@ -453,6 +546,8 @@ Suite *vsph_solver_suite(void) {
   tcase_add_loop_test(tc, test_threads_bitwise, 0, VSPH_VISCOUS_FORM_COUNT);
   tcase_add_test(tc, test_ghost_capacity);
   tcase_add_test(tc, test_hydrostatic_rest);
+  tcase_add_test(tc, test_own_image);
+  tcase_add_test(tc, test_relax);
   tcase_add_test(tc, test_unstable_detected);
   tcase_add_test(tc, test_rhs_cells_vs_direct);
   suite_add_tcase(s, tc);

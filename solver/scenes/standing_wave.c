@@ -98,6 +98,15 @@ static int init(const struct vsph_scene *sc, size_t res,
   return VSPH_OK;
 }
 
+static void rest_velocity(const struct vsph_scene *sc, const double x[3],
+                          double u[3]) {
+  double v[2];
+  vsph_standing_wave_velocity(&sc->u.wave, x[0], x[1], v);
+  u[0] = v[0];
+  u[1] = v[1];
+  u[2] = 0.0;
+}
+
 const struct vsph_scene_type vsph_standing_wave_type = {
     .name = "standing-wave",
     .description = "standing wave in a tank with free-slip walls (Sec. VI C)",
@@ -108,4 +117,5 @@ const struct vsph_scene_type vsph_standing_wave_type = {
     .cfl = 2.0, /* the time-step study's pick (docs/theory.md 5) */
     .setup = setup,
     .init = init,
+    .rest_velocity = rest_velocity,
 };
