@@ -1,5 +1,6 @@
 #include "references.h"
 
+#include <complex.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_sf_bessel.h>
@@ -621,4 +622,41 @@ void vsph_references_cavity_error(const struct vsph_scene *sc,
     }
   e->rms = sqrt(s2 / (double)n) / cv->U;
   e->rms_rel = mx / cv->U;
+}
+
+/* Lamb's relation, its residual at s */
+static double complex lamb_f(double complex s, double k, double nu,
+                             double w02) {
+  const double complex a = s + 2.0 * nu * k * k;
+  return a * a + w02 - 4.0 * nu * nu * k * k * k * csqrt(k * k + s / nu);
+}
+
+int vsph_references_wave_decay(double g, double k, double H, double nu,
+                               double *gamma, double *omega) {
+  if (!(g > 0.0 && k > 0.0 && H > 0.0 && nu >= 0.0) || !isfinite(nu))
+    VSPH_FAIL(VSPH_EINVAL, "wave decay: need g, k, H > 0 and nu >= 0");
+  const double w02 = g * k * tanh(k * H);
+  if (nu == 0.0) { /* inviscid: no decay */
+    *gamma = 0.0;
+    *omega = sqrt(w02);
+    return VSPH_OK;
+  }
+  double complex s = CMPLX(-2.0 * nu * k * k, sqrt(w02));
+  for (int it = 0; it < 60; it++) {
+    const double complex f = lamb_f(s, k, nu, w02);
+    /* the derivative in closed form: 2a - 2 nu k^3 / sqrt(k^2 + s/nu) */
+    const double complex df = 2.0 * (s + 2.0 * nu * k * k) -
+                              2.0 * nu * k * k * k / csqrt(k * k + s / nu);
+    const double complex ds = f / df;
+    s -= ds;
+    if (cabs(ds) <= 1e-14 * cabs(s)) {
+      *gamma = -creal(s);
+      *omega = cimag(s);
+      return VSPH_OK;
+    }
+  }
+  VSPH_FAIL(VSPH_ENOCONV,
+            "wave decay: Newton's method did not converge "
+            "(nu = %g, k = %g)",
+            nu, k);
 }

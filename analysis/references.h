@@ -200,6 +200,22 @@ size_t vsph_references_cavity_umin(const double *t, const double *vel, size_t n,
                                    size_t npts, double Re, double *t_out,
                                    double *err, size_t cap);
 
+/** @brief The exact decay of a small standing (or progressive) gravity
+ *  wave of wavenumber @p k on water of depth @p H, kinematic viscosity
+ *  @p nu, gravity @p g, by linear viscous theory (Lamb 1932, art. 349):
+ *  the root s = -gamma + i omega of (s + 2 nu k^2)^2 + omega0^2 =
+ *  4 nu^2 k^3 sqrt(k^2 + s/nu), omega0^2 = g k tanh(kH) (the deep-water
+ *  relation with the finite depth's inviscid frequency: a free-slip bottom
+ *  at kH = pi changes it by about e^{-2 kH}), found by Newton's method from
+ *  Lighthill's s = -2 nu k^2 + i omega0. Its energy decays as e^{-2 gamma
+ *  t}; Lighthill's leading order is gamma = 2 nu k^2, and the next term,
+ *  -(2 nu k^2)(nu k^2/omega0)^{1/2}/sqrt 2, is 6 % of it at the standing
+ *  wave's Re = 140 and eps = 0.05 (docs/theory.md section 6).
+ *  @return VSPH_OK, VSPH_EINVAL (a value not positive, nu < 0),
+ *  VSPH_ENOCONV (Newton's method did not converge to 1e-14). */
+int vsph_references_wave_decay(double g, double k, double H, double nu,
+                               double *gamma, double *omega);
+
 /** @brief Lighthill's standing-wave kinetic energy (THEORY 6.3) for the
  *  wave @p w (g, A, L, nu, k, omega) at density @p rho and time @p t:
  *  E_k = (rho g A^2 L / 8) exp(-4 nu k^2 t) [1 + cos(2 omega t)]. */
