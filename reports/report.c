@@ -65,6 +65,9 @@ static const struct part PARTS[] = {
      "internal flows (Poiseuille, Couette) and the other formulations"},
     {"contact", vsph_report_contact_write, vsph_report_contact_plan, 0,
      "contact SPH: the numerical viscosity of its Riemann solver"},
+    {"choices", vsph_report_choices_write, vsph_report_choices_plan, 0,
+     "the scheme's own choices isolated: the wave's start, steepness, "
+     "delta-SPH, c0, time step; the two-pass null mode"},
     {"claims", vsph_report_claims_write, vsph_report_claims_plan, 0,
      "the paper's claims beside our figures"},
 };

@@ -11,11 +11,18 @@
 #include <unistd.h>
 
 #include "../analysis/dissipation.h"
+#include "../analysis/fields.h"
+#include "../analysis/moments.h"
+#include "../analysis/references.h"
 #include "../analysis/scaling.h"
 #include "../common/consts.h"
 #include "../common/status.h"
 #include "../kernels/kernel.h"
+#include "../solver/lattice.h"
+#include "../solver/particles.h"
 #include "../solver/scene.h"
+#include "../solver/viscous.h"
+#include "grade.h"
 #include "report.h"
 #include "report_parts.h"
 
@@ -59,10 +66,11 @@ static int scaling_claims(struct vsph_report *R) {
       "slope -1", ours,
       "none (the paper's result is analytic; ours are particle sums, "
       "Gaussian kernel, h/dx 4/3)",
-      yes_no(fabs(slope[1][MGF] + 1) < 0.01 &&
-                 fabs(slope[1][MEAF] + 1) < 0.01 &&
-                 fabs(slope[1][PVWF] + 1) < 0.01,
-             "reproduced", "differs"));
+      /* an order claim: the nearest integer decides (grade.h) */
+      yes_no(vsph_grade_order_is(slope[1][MGF], -1) == 1 &&
+                 vsph_grade_order_is(slope[1][MEAF], -1) == 1 &&
+                 vsph_grade_order_is(slope[1][PVWF], -1) == 1,
+             "reproduced", "differs: a slope that does not round to -1"));
   snprintf(ours, sizeof ours,
            "rigid rotation, same ladder: MGF %s, PVWF %s, MEAF slope %.3f "
            "(its term is tangential)",
@@ -75,53 +83,75 @@ static int scaling_claims(struct vsph_report *R) {
         "diverges like 1/h (App. B)",
         "MEAF ~ -mu C_N/h du/dn", ours, "none (as above)",
         yes_no(round_[0][MGF] && round_[0][PVWF] &&
-                   fabs(slope[0][MEAF] + 1) < 0.01,
+                   vsph_grade_order_is(slope[0][MEAF], -1) == 1,
                "reproduced", "differs"));
   return st;
 }
 
 static int dissipation_claims(struct vsph_report *R) {
-  struct vsph_dissipation_result d[4];
-  static const int forms[4] = {MGF, MEAF, PVWF, MGF};
-  static const int fields[4] = {VSPH_FIELDS_STRAIN, VSPH_FIELDS_ROTATION,
-                                VSPH_FIELDS_STRAIN, VSPH_FIELDS_STRAIN};
-  static const double hdxs[4] = {VSPH_CONSTS_HDX, VSPH_CONSTS_HDX,
-                                 VSPH_CONSTS_HDX, 3.0};
-  for (int k = 0; k < 4; k++) {
+  /* MGF, MEAF, PVWF at h/dx 4/3 on 160 across; MGF at h/dx 3; MGF at
+   * h/dx 4/3 on 80 across (the surface part's fall with h/L) */
+  enum { ND = 5 };
+  struct vsph_dissipation_result d[ND];
+  static const int forms[ND] = {MGF, MEAF, PVWF, MGF, MGF};
+  static const int fields[ND] = {VSPH_FIELDS_STRAIN, VSPH_FIELDS_ROTATION,
+                                 VSPH_FIELDS_STRAIN, VSPH_FIELDS_STRAIN,
+                                 VSPH_FIELDS_STRAIN};
+  static const double hdxs[ND] = {VSPH_CONSTS_HDX, VSPH_CONSTS_HDX,
+                                  VSPH_CONSTS_HDX, 3.0, VSPH_CONSTS_HDX};
+  static const size_t across[ND] = {160, 160, 160, 160, 80};
+  for (int k = 0; k < ND; k++) {
     struct vsph_dissipation_props dp;
     int st = vsph_dissipation_props_init(&dp, NULL);
     dp.form = forms[k];
-    dp.nacross = 160;
+    dp.nacross = across[k];
     dp.hdx = hdxs[k];
     if (!st) st = vsph_fields_props_init(&dp.field, fields[k], 2);
     if (!st) st = vsph_dissipation_compute(&dp, &d[k]);
     if (st) return st;
   }
+  /* the surface part's order in h/L from 80 to 160 across */
+  const double so = log2(fabs(d[4].surface_error) / fabs(d[0].surface_error));
   char ours[320];
   snprintf(ours, sizeof ours,
-           "square, 160 across: lattice error %+.2f %% at h/dx 4/3, %+.2f %% "
-           "at h/dx 3; surface part %+.2f %% (falls like h/L)",
+           "square: lattice error %+.2f %% at h/dx 4/3, %+.2f %% at h/dx 3; "
+           "surface part %+.2f %% at 80 across, %+.2f %% at 160 (order %.2f "
+           "in h/L)",
            100 * d[0].lattice_error, 100 * d[3].lattice_error,
-           100 * d[0].surface_error);
+           100 * d[4].surface_error, 100 * d[0].surface_error, so);
+  /* consistent up to O(h): the surface part falls at first order in h/L
+   * (the nearest-integer rule) and the lattice part falls as h/dx grows */
+  const int cons = vsph_grade_order_is(so, 1) == 1 &&
+                   fabs(d[3].lattice_error) < fabs(d[0].lattice_error);
   int st = vsph_report_claim(
       R,
       "MGF is globally consistent: P -> -int V:D despite the 1/h surface "
       "force (5.35)",
       "consistent up to O(h)", ours,
       "none (a property of the operator, measured on an analytic strain "
-      "field: square of 160 across, h/dx 4/3 and 3)",
-      "reproduced in the limit: the surface part vanishes with h/L and the "
-      "lattice part with h/dx (docs/theory.md §4: about 6 % at h/dx 4/3)");
+      "field: squares of 80 and 160 across, h/dx 4/3 and 3)",
+      yes_no(cons,
+             "reproduced in the limit: the surface part falls at first order "
+             "in h/L and the lattice part with h/dx (docs/theory.md §4: "
+             "about 6 % at h/dx 4/3)",
+             "differs: the surface part does not fall at first order, or "
+             "the lattice part does not fall with h/dx"));
   snprintf(ours, sizeof ours,
            "rigid rotation, square, 160 across, h/dx 4/3: P/|P_grad| = %.3f",
            d[1].rel_error);
+  /* -1 within the discrete sums' own lattice error at this h/dx (MGF's on
+   * strain, section 4: about 6 %) */
   if (!st)
     st = vsph_report_claim(
         R,
         "MEAF converges to -mu int |grad u|^2 and dissipates rigid rotation "
         "(5.36)",
         "wrong limit", ours, "none (as above)",
-        yes_no(fabs(d[1].rel_error + 1) < 0.05, "reproduced", "differs"));
+        yes_no(
+            vsph_grade_within(d[1].rel_error, -1.0, fabs(d[0].lattice_error)),
+            "reproduced: -1 within the lattice error of the sums at this "
+            "h/dx (section 4)",
+            "differs"));
   snprintf(ours, sizeof ours,
            "pure strain, square, 160 across, h/dx 4/3: rel. error %.1e",
            d[2].rel_error);
@@ -130,7 +160,269 @@ static int dissipation_claims(struct vsph_report *R) {
         R,
         "PVWF's dissipation is -int V:D exactly at the discrete level (4.18)",
         "exact", ours, "none (as above)",
-        yes_no(fabs(d[2].rel_error) < 1e-12, "reproduced", "differs"));
+        yes_no(fabs(d[2].rel_error) < VSPH_GRADE_ROUNDING, "reproduced",
+               "differs"));
+  return st;
+}
+
+/* ------------------------------ the moment tensors and the operators */
+
+/* The largest gap of tensor k (0 F, 1 G, 2 N, 3 M) between quadrature and
+ * theory over every kernel, in 2-D and 3-D, at half (@p half = 1) or full
+ * support. */
+static int tensor_gaps(struct vsph_report *R, int half, double gmax[4]) {
+  for (int t = 0; t < 4; t++) gmax[t] = 0.0;
+  for (size_t ki = 0; ki < vsph_kernel_count(); ki++) {
+    const struct vsph_kernel_type *k = vsph_kernel_get(ki);
+    for (int dim = 2; dim <= 3; dim++) {
+      double C_F, C_N, g[4];
+      struct vsph_moments q, th;
+      int st = vsph_moments_constants(k, dim, 1e-12, R->wo, &C_F, &C_N);
+      if (!st)
+        st = vsph_moments_quadrature(k, dim, half ? 0.0 : k->kappa, 1e-10,
+                                     R->wo, R->wi, &q);
+      if (st) return st;
+      vsph_moments_theory(dim, half, C_F, C_N, &th);
+      vsph_moments_gap(&q, &th, g);
+      for (int t = 0; t < 4; t++) gmax[t] = fmax(gmax[t], g[t]);
+    }
+  }
+  return VSPH_OK;
+}
+
+/* The quadrature asks 1e-10 relative of its outer integrals; a tensor
+ * entry of order 1 then carries at most about 1e-9 (ten times that, for
+ * the nested inner integrals): the tolerance of "exactly" here. */
+#define TENSOR_QUAD_TOL 1e-9
+
+static int tensor_claims(struct vsph_report *R) {
+  double gh[4], gf[4];
+  int st = tensor_gaps(R, 1, gh);
+  if (!st) st = tensor_gaps(R, 0, gf);
+  if (st) return st;
+  const size_t nk = vsph_kernel_count();
+  char ours[800];
+  snprintf(ours, sizeof ours,
+           "largest entry gap to S (full support) and S/2 (half), by "
+           "quadrature, over the %zu kernels in 2-D and 3-D: %.1e and %.1e",
+           nk, gf[1], gh[1]);
+  const char *setup =
+      "the paper's result is analytic and kernel-free; ours by GSL "
+      "quadrature (1e-10) for every kernel vsph has (section 1 adds the "
+      "particle sums and their lattice error)";
+  st = vsph_report_claim(
+      R,
+      "G = S in the interior and S/2 at the surface, whatever the kernel "
+      "(App. A)",
+      "exactly", ours, setup,
+      yes_no(gf[1] < TENSOR_QUAD_TOL && gh[1] < TENSOR_QUAD_TOL,
+             "reproduced: to the quadrature's accuracy, for every kernel",
+             "differs: a gap above the quadrature's accuracy"));
+  snprintf(ours, sizeof ours,
+           "largest entry gap to delta (full) and delta/2 (half), as above: "
+           "%.1e and %.1e",
+           gf[3], gh[3]);
+  if (!st)
+    st = vsph_report_claim(
+        R, "M = delta inside and delta/2 at the surface (IV C)", "exactly",
+        ours, setup,
+        yes_no(gf[3] < TENSOR_QUAD_TOL && gh[3] < TENSOR_QUAD_TOL,
+               "reproduced: to the quadrature's accuracy, for every kernel",
+               "differs: a gap above the quadrature's accuracy"));
+  /* Appendix B's constants for the untruncated Gaussian in 2-D, C_F =
+   * K/(3 sqrt pi) and C_N = 2/sqrt pi, against ours for the renormalised
+   * 3h Gaussian: the two differ by its factor I/I_inf = (erf 3 - 6 e^-9 /
+   * sqrt pi)/(1 - 10 e^-9) exactly (THEORY 2's formula), so ours over the
+   * paper's times that factor's inverse is 1 to the quadrature */
+  const struct vsph_kernel_type *gk = vsph_kernel_find("gaussian");
+  double C_F, C_N;
+  if (!gk) VSPH_FAIL(VSPH_EINVAL, "no gaussian kernel");
+  if ((st = vsph_moments_constants(gk, 2, 1e-12, R->wo, &C_F, &C_N))) return st;
+  const double e9 = exp(-9.0);
+  const double trunc = (erf(3.0) - 6.0 * e9 / VSPH_SQRTPI) / (1.0 - 10.0 * e9);
+  const double CF_paper = vsph_kernel_mg_factor(2) / (3.0 * VSPH_SQRTPI),
+               CN_paper = 2.0 / VSPH_SQRTPI;
+  const double rf = C_F / (CF_paper * trunc) - 1.0,
+               rn = C_N / (CN_paper * trunc) - 1.0;
+  snprintf(ours, sizeof ours,
+           "2-D, renormalised 3h Gaussian: C_F = %.7f, C_N = %.7f; the "
+           "paper's untruncated K/(3 sqrt pi) = %.7f and 2/sqrt pi = %.7f, "
+           "times the truncation's factor %.6f: ours over those %+.1e and "
+           "%+.1e; the half-support quadrature's N and F against -(C/h) n "
+           "and F's form: gaps %.1e and %.1e",
+           C_F, C_N, CF_paper, CN_paper, trunc, rf, rn, gh[2], gh[0]);
+  if (!st)
+    st = vsph_report_claim(
+        R,
+        "At the surface N = -(C_N/h) n and F = -(C_F/h)(...), with C_F = "
+        "K/(3 sqrt pi), C_N = 2/sqrt pi for the 2-D Gaussian (App. B)",
+        "K/(3 sqrt pi), 2/sqrt pi (untruncated Gaussian)", ours,
+        "the paper's constants are for the untruncated Gaussian, ours for "
+        "the renormalised 3h Gaussian the paper's runs use: they differ by "
+        "the truncation's factor, computed in closed form",
+        yes_no(fabs(rf) < TENSOR_QUAD_TOL && fabs(rn) < TENSOR_QUAD_TOL &&
+                   gh[0] < TENSOR_QUAD_TOL && gh[2] < TENSOR_QUAD_TOL,
+               "reproduced on a substitute: the constants are the paper's "
+               "times the 3h kernel's truncation factor, to the quadrature",
+               "differs"));
+  return st;
+}
+
+/* MGF's tangential share bounded while its normal share diverges (App. B,
+ * Conclusions): the surface sweep on pure strain, whose top face has
+ * tau.D.n = 0 and n.D.n != 0. */
+static int tangential_claim(struct vsph_report *R) {
+  struct vsph_scaling_props sp;
+  struct vsph_scaling_result r;
+  int st = vsph_scaling_props_init(&sp, NULL);
+  if (!st) st = vsph_fields_props_init(&sp.field, VSPH_FIELDS_STRAIN, 2);
+  if (!st) st = vsph_scaling_surface(&sp, &r);
+  if (st) return st;
+  double nn[VSPH_SCALING_MAXLEVELS], tt[VSPH_SCALING_MAXLEVELS], tmax = 0.0;
+  for (size_t l = 0; l < r.levels; l++) {
+    nn[l] = fabs(r.normal[MGF][l]);
+    tt[l] = r.tangential[MGF][l];
+    tmax = fmax(tmax, tt[l] / nn[l]);
+  }
+  const double sn = vsph_scaling_slope(r.h, nn, r.levels);
+  const double stt = vsph_scaling_slope(r.h, tt, r.levels);
+  char ours[800];
+  snprintf(ours, sizeof ours,
+           "pure strain, 2-D, h/dx 4/3, h halved %zu times from %g: MGF's "
+           "normal share slope %.3f; its tangential share at most %.1e of "
+           "the normal one (slope %.2f: rounding, or bounded)",
+           r.levels - 1, r.h[0], sn, tmax, stt);
+  /* diverges: the normal share's order rounds to -1; bounded: the
+   * tangential one's does not (it is rounding, below 1e-9 of the normal,
+   * or its order rounds to 0 or above) */
+  const int bounded = tmax < 1e-9 || vsph_grade_order_is(stt, -1) == 0;
+  return vsph_report_claim(
+      R,
+      "MGF's tangential component stays bounded at the surface while its "
+      "normal one diverges like 1/h (App. B, Conclusions)",
+      "tangential bounded, normal ~ 1/h", ours,
+      "none (the paper's result is analytic; ours are particle sums, "
+      "Gaussian kernel, h/dx 4/3)",
+      yes_no(vsph_grade_order_is(sn, -1) == 1 && bounded, "reproduced",
+             "differs"));
+}
+
+/* MGF implies lambda = mu (4.21): it dissipates an isotropic expansion u
+ * = A x, for which the Stokes hypothesis (lambda = -2 mu/d) gives no
+ * dissipation in 2-D. On a square of 160 across at h/dx 4/3: MGF's P
+ * against its continuum limit -(2 mu D:D + mu (tr D)^2)|Omega| = -8 mu A^2
+ * L^2; PVWF (lambda = -2 mu/d, exact on linear fields) against 0. */
+static int stokes_claim(struct vsph_report *R) {
+  const size_t n = 160;
+  const double A = 1.2348, L = 1.0, mu = 0.0137;
+  struct vsph_lattice_props lp = {.dim = 2};
+  struct vsph_particles *p = NULL;
+  int st = vsph_lattice_square(&lp, L, n, &p);
+  if (st) return st;
+  for (size_t i = 0; i < p->n; i++)
+    for (int k = 0; k < 2; k++) p->vel[k][i] = A * p->pos[k][i];
+  const struct vsph_kernel_type *gk = vsph_kernel_find("gaussian");
+  const double dx = L / (double)n, h = VSPH_CONSTS_HDX * dx;
+  struct vsph_dissipation_power pw[2];
+  const int forms[2] = {MGF, PVWF};
+  for (int f = 0; f < 2 && !st; f++) {
+    struct vsph_viscous_props vp;
+    st = vsph_viscous_props_init(&vp, forms[f], gk, 2, h, mu);
+    if (!st) st = vsph_dissipation_particles(&vp, p, &pw[f]);
+  }
+  vsph_particles_free(p);
+  if (st) return st;
+  const double P_mg = -8.0 * mu * A * A * L * L;  /* lambda = mu */
+  const double P_div = -4.0 * mu * A * A * L * L; /* 2 mu D:D alone */
+  char ours[800];
+  snprintf(ours, sizeof ours,
+           "isotropic expansion u = A x, square of %zu across, h/dx 4/3: MGF "
+           "dissipates %.4f of -(2 mu D:D + mu (tr D)^2)|Omega| (its lambda "
+           "= mu limit; Stokes' lambda = -mu gives 0 in 2-D); PVWF (lambda "
+           "= -mu) %.1e of 2 mu D:D |Omega|",
+           n, pw[0].P / P_mg, fabs(pw[1].P / P_div));
+  /* MGF's share within its lattice and surface errors of the limit (about
+   * 6 % and 1 %, section 4: within 10 %), and PVWF's zero to rounding */
+  const int ok = vsph_grade_within(pw[0].P / P_mg, 1.0, 0.1) &&
+                 fabs(pw[1].P / P_div) < VSPH_GRADE_ROUNDING;
+  return vsph_report_claim(
+      R,
+      "MGF implies lambda = mu and does not satisfy the Stokes hypothesis "
+      "(4.21)",
+      "lambda = mu", ours,
+      "none (a property of the operator, measured on an analytic field; "
+      "the 10 % band is MGF's lattice and surface error at h/dx 4/3, "
+      "section 4)",
+      yes_no(ok,
+             "reproduced: MGF dissipates an isotropic expansion as lambda = "
+             "mu says, where Stokes' lambda gives none (PVWF: zero to "
+             "rounding)",
+             "differs"));
+}
+
+/* PVWF takes both signs near the surface (VI B, Fig. 6 right), MGF and
+ * MEAF one: the y component of the operator along the stretching square's
+ * axis at t = 0 (section 3's axis data), over the rows within kappa h of
+ * the top surface. */
+static int signs_claim(struct vsph_report *R) {
+  struct vsph_scaling_props sp;
+  int st = vsph_scaling_props_init(&sp, NULL);
+  if (!st) st = vsph_fields_props_init(&sp.field, VSPH_FIELDS_STRAIN, 2);
+  if (st) return st;
+  const size_t nacross = 80;
+  double y[80], *f[VSPH_VISCOUS_FORM_COUNT] = {NULL};
+  double buf[VSPH_VISCOUS_FORM_COUNT][80];
+  for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++) f[k] = buf[k];
+  size_t n = 0;
+  if ((st = vsph_scaling_axis(&sp, nacross, y, f, &n))) return st;
+  const double dx = 1.0 / (double)nacross, h = sp.hdx * dx;
+  int changes[NFORM] = {0};
+  for (int fm = 0; fm < NFORM; fm++) {
+    int last = 0;
+    for (size_t k = 0; k < n; k++) {
+      if (0.5 - y[k] > 3.0 * h) continue; /* within kappa h of the top */
+      if (fabs(f[fm][k]) < 1e-12 * fabs(f[fm][n - 1])) continue; /* zero */
+      const int s = f[fm][k] > 0 ? 1 : -1;
+      changes[fm] += last && s != last;
+      last = s;
+    }
+  }
+  char ours[800];
+  snprintf(ours, sizeof ours,
+           "sign changes of the y component along the stretching square's "
+           "axis at t = 0, over the rows within 3h of the top (%zu across, "
+           "h/dx 4/3): PVWF %d, MGF %d, MEAF %d",
+           nacross, changes[PVWF], changes[MGF], changes[MEAF]);
+  return vsph_report_claim(
+      R,
+      "PVWF's operator takes both signs near the surface, MGF's and MEAF's "
+      "one (VI B, Fig. 6)",
+      "PVWF both signs; MGF, MEAF not", ours,
+      "none (the operators on the stretching square's initial field, "
+      "section 3's axis; the paper's Fig. 6 shows L/dx = 80 too)",
+      yes_no(changes[PVWF] > 0 && changes[MGF] == 0 && changes[MEAF] == 0,
+             "reproduced", "differs"));
+}
+
+static int theory_claims(struct vsph_report *R) {
+  int st = tensor_claims(R);
+  if (!st) st = tangential_claim(R);
+  if (!st) st = stokes_claim(R);
+  if (!st) st = signs_claim(R);
+  if (!st)
+    st = vsph_report_claim(
+        R,
+        "On the vortex patch n.D.n = 0 at the surface, so MGF is locally "
+        "consistent there (VI A)",
+        "n.D.n = 0 (analytic)",
+        "not measured: for any u = omega(r) r e_theta, D_rr = du_r/dr = 0 "
+        "exactly, so the claim holds for the continuous field; the "
+        "particles' own strain rate at the disc's surface is not output",
+        "the discrete strain rate at the surface particles of either disc "
+        "layout (PVWF's first pass computes it; vsph keeps it internal)",
+        "not tested: it needs the discrete strain rate at the disc's surface "
+        "particles, which vsph's PVWF first pass computes but does not "
+        "expose");
   return st;
 }
 
@@ -234,7 +526,7 @@ static int square_onset_claim(struct vsph_report *R,
 static int square_claims(struct vsph_report *R, const struct finest *fi) {
   const struct vsph_jobs_run *run = fi->run[1];
   const size_t rs = vsph_report_runs_ladder(&R->runs, 1, 0)->res[2];
-  char ours[320];
+  char ours[800];
   /* P/P_exact = 1 - d, with d = (P - P_exact)/|P_exact| and P_exact < 0 */
   const double d_m = vsph_report_runs_diss0(&run[MGF]);
   const double d_e = vsph_report_runs_diss0(&run[MEAF]);
@@ -252,17 +544,26 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
            R->runs.full ? ""
                         : " (the paper's 320: the surface deficit "
                           "falls like h/L)");
+  /* each figure within the precision the paper writes it to: PVWF's
+   * 0.04 % an upper bound (ours is exact), MGF's "about 5 %" and MEAF's
+   * "about half" to one digit (0.05 +- 0.005, 0.5 +- 0.05) */
+  const int ok0 =
+      fabs(d_p) <= 4e-4 + vsph_grade_halfunit(4e-4, 1) &&
+      vsph_grade_within(fabs(d_m), 0.05, vsph_grade_halfunit(0.05, 1)) &&
+      vsph_grade_within(1 - d_e, 0.5, vsph_grade_halfunit(0.5, 1));
   int st = vsph_report_claim(
       R, "Stretching square, initial dissipation error (VI B)",
       "PVWF 0.04 %, MGF about 5 %, MEAF about half", ours, setup,
-      yes_no(fabs(d_p) < 4e-4 && fabs(1 - d_e - 0.5) < 0.1 && fabs(d_m) < 0.1,
+      yes_no(ok0,
              R->runs.full
-                 ? "reproduced: PVWF exact, MEAF half; MGF's figure is its "
-                   "lattice error (-6 %, section 4) less a surface deficit"
-                 : "reproduced on a substitute: PVWF exact, MEAF half; MGF's "
-                   "figure is its lattice error (-6 %, section 4) less a "
-                   "surface deficit that falls like h/L",
-             "differs"));
+                 ? "reproduced: PVWF exact, MEAF half, MGF within the paper's "
+                   "'about 5 %' (its lattice error, -6 %, section 4, less a "
+                   "surface deficit)"
+                 : "reproduced on a substitute: PVWF exact, MEAF half, MGF "
+                   "within 'about 5 %' (its lattice error, -6 %, section 4, "
+                   "less a surface deficit that falls like h/L)",
+             "differs: a figure outside the precision the paper gives it "
+             "(0.04 %; 5 % and one half to one digit)"));
   const struct vsph_report_ladder *lr = &fi->lr[1];
   struct vsph_report_richardson rr;
   if (!st) st = vsph_report_runs_richardson(&R->runs, &rr);
@@ -270,29 +571,50 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
   const struct vsph_report_ladderdef *L =
       vsph_report_runs_ladder(&R->runs, 1, 0);
   st = square_onset_claim(R, lr, &rr);
+  /* MGF "converges linearly": the ladder's self-convergence (successive
+   * resolutions), the paper's "linear convergence"; its 0.55 % is a level
+   * against a finite-volume solution vsph does not have */
+  const struct vsph_series_selfconv *sv = &lr->self[MGF];
   snprintf(ours, sizeof ours,
-           "fitted order %.2f over L/dx %zu-%zu against MGF extrapolated "
-           "in h and h/dx (h/dx 2 and 3, L/dx %zu-%zu)",
-           vsph_scaling_slope(lr->dx[MGF], lr->err[MGF], VSPH_REPORT_LADDER),
-           L->res[0], L->res[2], rr.res[0], rr.res[3]);
-  const double order =
-      vsph_scaling_slope(lr->dx[MGF], lr->err[MGF], VSPH_REPORT_LADDER);
+           "MGF, L/dx %zu-%zu: successive differences of E_k/E_k(0) %.2e, "
+           "%.2e (orders %.2f largest, %.2f RMS; the finest rung about "
+           "%.1e from the limit by Richardson); error against MGF "
+           "extrapolated in h and h/dx (h/dx 2 and 3, L/dx %zu-%zu) %.2e at "
+           "L/dx = %zu, fitted order %.2f",
+           L->res[0], L->res[2], sv->dmax[0], sv->dmax[1], sv->order_max,
+           sv->order_rms, sv->remainder, rr.res[0], rr.res[3], lr->err[MGF][2],
+           L->res[2],
+           vsph_scaling_slope(lr->dx[MGF], lr->err[MGF], VSPH_REPORT_LADDER));
   snprintf(setup, sizeof setup,
-           "reference: MGF extrapolated in h and h/dx [reconstructed] (the "
-           "paper's finite-volume solution is not available, so its 0.55 %% "
-           "is not comparable); L/dx %zu-%zu (the paper's 320)",
+           "order: successive resolutions, no reference needed; level: the "
+           "paper's is against a finite-volume solution (STAR-CCM+, L/dx = "
+           "320) that vsph does not have (its stand-in: MGF extrapolated in "
+           "h and h/dx [reconstructed], whose own error is not known to "
+           "0.55 %%); L/dx %zu-%zu (the paper's 320)",
            L->res[0], L->res[2]);
+  const enum vsph_grade g =
+      vsph_grade_orders(sv->order_max, sv->order_rms, 1, sv->partial);
+  char verdict[400];
+  if (g == VSPH_GRADE_AGREES)
+    snprintf(verdict, sizeof verdict,
+             "partly: MGF converges at first order between successive "
+             "resolutions (both orders round to 1); the paper's 0.55 %% "
+             "against its finite-volume solution is not tested here, and "
+             "against the extrapolated stand-in MGF stays %.1f %% off, level "
+             "with resolution",
+             100 * lr->err[MGF][2]);
+  else
+    snprintf(verdict, sizeof verdict,
+             "differs: MGF's successive differences do not fall at first "
+             "order by %s (orders %.2f, %.2f)",
+             g == VSPH_GRADE_PARTLY ? "both measures" : "either measure",
+             sv->order_max, sv->order_rms);
   if (!st)
     st = vsph_report_claim(
         R, "MGF converges linearly on the stretching square (VI B)",
-        "0.55 % error at L/dx = 320 against a finite-volume solution", ours,
-        setup,
-        fabs(order - 1) < 0.3
-            ? "partly: first order against a reference without MGF's "
-              "h/dx = 4/3 lattice bias (the paper's finite-volume solution "
-              "is not available here)"
-            : "differs: not first order at these resolutions: MGF's lattice "
-              "error at h/dx = 4/3 does not fall with h (section 4)");
+        "linear convergence; 0.55 % error at L/dx = 320 against a "
+        "finite-volume solution",
+        ours, setup, verdict);
   const double share_m = 1 - run[MGF].Ek[run[MGF].nrow - 1] / run[MGF].Ek[0];
   const double share_p = 1 - run[PVWF].Ek[run[PVWF].nrow - 1] / run[PVWF].Ek[0];
   const double share_r = 1 - rr.E[100] / rr.E[0];
@@ -306,205 +628,334 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
     snprintf(ours + n, sizeof ours - n, "%.3g: PVWF stopped, unstable)",
              run[PVWF].t_unstable / L->t_end);
   }
+  /* "about 80 %": one digit, 0.8 +- 0.05 */
   if (!st)
     st = vsph_report_claim(
         R, "Stretching square: share of E_k dissipated by t A0 = 1 (VI B)",
         "about 80 %", ours,
         "the share is our reference's (MGF extrapolated in h and h/dx "
         "[reconstructed]), not a finite-volume solution's",
-        yes_no(fabs(share_r - 0.8) < 0.05,
-               "reproduced on a substitute: by the extrapolated reference "
-               "(within 5 points)",
-               "differs: the reference differs by more than 5 points"));
+        yes_no(vsph_grade_within(share_r, 0.8, vsph_grade_halfunit(0.8, 1)),
+               "reproduced on a substitute: by the extrapolated reference, "
+               "within the paper's 'about 80 %' (80 +- 5 %)",
+               "differs: the reference's share lies outside 80 +- 5 %"));
   return st;
 }
 
+/* What stopped where on one vortex layout's finest rung: "" when every
+ * form ran to its end, else "; PVWF stopped at t = 3.68 s (pairing)". */
+static void vortex_stops(char *buf, size_t len,
+                         const struct vsph_report_layouts *ly, int l) {
+  size_t m = 0;
+  buf[0] = '\0';
+  for (int f = 0; f < NFORM && m < len; f++)
+    if (!ly->ok[l][f][VSPH_REPORT_LADDER - 1])
+      m += (size_t)snprintf(buf + m, len - m, "; %s stopped at t = %.3g s",
+                            vsph_viscous_label(f),
+                            ly->tu[l][f][VSPH_REPORT_LADDER - 1]);
+}
+
 static int vortex_claims(struct vsph_report *R, const struct finest *fi) {
-  const double *err = fi->err[0];
+  (void)fi;
+  static const char *const lay[2] = {"rings", "Cartesian"};
   const struct vsph_report_ladderdef *L =
       vsph_report_runs_ladder(&R->runs, 0, 0);
-  char ours[320], setup[600];
-  /* the initial profile differs from the paper's whatever the resolution:
-   * agreement is on a substitute */
+  const int K = VSPH_REPORT_LADDER - 1; /* the finest rung */
+  struct vsph_report_layouts ly;
+  int st = vsph_report_runs_layouts(&R->runs, &ly);
+  if (st) return st;
+  /* the profile's own figures, which its weight was chosen to meet */
+  struct vsph_scene scene;
+  if ((st = vsph_scene_init(&scene, &vsph_vortex_patch_type, NULL))) return st;
+  const struct vsph_scene_vortex *vp = &scene.u.vortex;
+  struct vsph_references_vortex *ref = vsph_references_vortex_alloc(
+      vp->R, vp->l2, vp->a, vp->omega0, vp->nu, 10);
+  if (!ref) return VSPH_ELIB;
+  const double winf = ref->c0 / vp->omega0;
+  const double Re =
+      vp->R * vp->R * vsph_references_vortex_initial(ref, vp->R) / vp->nu;
+  vsph_references_vortex_free(ref);
+  char setup[600], ours[800], verdict[400], stops[2][160];
   snprintf(setup, sizeof setup,
-           "initial profile (6.39) [reconstructed]: Re 174 against the "
-           "paper's 256; disc on rings [reconstructed: the layout is not "
-           "stated]; R/dx = %zu to %g s%s",
-           L->res[2], L->t_end,
+           "initial profile (6.39) [reconstructed] to meet the paper's "
+           "stated Re and omega_inf (Re %.1f, omega_inf %.4f omega0); disc "
+           "layout [reconstructed: not stated], both run: rings and "
+           "Cartesian; R/dx = %zu to %g s%s",
+           Re, winf, L->res[K], L->t_end,
            R->runs.full ? "" : " (the paper's 100 to 100 s)");
+  for (int l = 0; l < 2; l++) vortex_stops(stops[l], sizeof stops[l], &ly, l);
+  /* (1) MGF and PVWF follow the reference, MEAF departs: by the energy
+   * lost over the reference's loss at the end (the decay error is diluted
+   * by the rigid rotation, which does not decay), layout by layout */
+  int follows[2], departs[2];
+  for (int l = 0; l < 2; l++) {
+    const double em = fabs(ly.loss[l][MGF][K] - 1),
+                 ep = fabs(ly.loss[l][PVWF][K] - 1),
+                 ee = fabs(ly.loss[l][MEAF][K] - 1);
+    follows[l] = ly.ok[l][MGF][K] && ly.ok[l][PVWF][K];
+    departs[l] = vsph_grade_apart(ee, fmax(em, ep));
+  }
   snprintf(ours, sizeof ours,
-           "max decay error on rings: MGF %.2e, PVWF %.2e, MEAF %.2e (R/dx "
-           "= %zu, t_end %g s)",
-           err[MGF], err[PVWF], err[MEAF], L->res[2], L->t_end);
-  int st = vsph_report_claim(
+           "energy lost by t = %g s over the reference's loss (1 exact), R/dx "
+           "= %zu: rings MGF %.3f, PVWF %.3f, MEAF %.3f%s; Cartesian MGF "
+           "%.3f, PVWF %.3f, MEAF %.3f%s (a stopped run: its figure by its "
+           "stop)",
+           L->t_end, L->res[K], ly.loss[0][MGF][K], ly.loss[0][PVWF][K],
+           ly.loss[0][MEAF][K], stops[0], ly.loss[1][MGF][K],
+           ly.loss[1][PVWF][K], ly.loss[1][MEAF][K], stops[1]);
+  if (follows[0] && follows[1] && departs[0] && departs[1])
+    snprintf(verdict, sizeof verdict,
+             "reproduced on a substitute on both layouts: MEAF's departure "
+             "from 1 is at least sqrt(10) times MGF's and PVWF's");
+  else if ((follows[0] && departs[0]) || (follows[1] && departs[1]))
+    snprintf(verdict, sizeof verdict,
+             "partly: on %s MGF and PVWF run to the end and MEAF departs "
+             "sqrt(10) times more; on %s %s",
+             follows[0] && departs[0] ? lay[0] : lay[1],
+             follows[0] && departs[0] ? lay[1] : lay[0],
+             !(follows[0] && follows[1]) ? "a run of MGF or PVWF stops (above)"
+                                         : "MEAF is not that far apart");
+  else
+    snprintf(verdict, sizeof verdict,
+             "differs: on neither layout do MGF and PVWF run to the end with "
+             "MEAF sqrt(10) times further off");
+  st = vsph_report_claim(
       R,
       "Vortex patch: MGF and PVWF follow the reference, MEAF diverges (VI A)",
       "MGF, PVWF close to the analytical u_theta up to t = 100 s; MEAF "
       "departs quickly",
-      ours, setup,
-      yes_no(err[MEAF] > 3 * fmax(err[MGF], err[PVWF]),
-             "reproduced on a substitute (the set-up column)",
-             "differs at this resolution and end time"));
-  snprintf(ours, sizeof ours, "PVWF %.3e vs MGF %.3e (rings, R/dx = %zu)",
-           err[PVWF], err[MGF], L->res[2]);
+      ours, setup, verdict);
+  /* (2) PVWF's E_k error below MGF's (Fig. 5, right: the relative E_k
+   * error), layout by layout; a stopped PVWF run is not measured */
+  int below[2];
+  for (int l = 0; l < 2; l++)
+    below[l] = ly.ok[l][PVWF][K] ? ly.err[l][PVWF][K] < ly.err[l][MGF][K] : -1;
+  snprintf(ours, sizeof ours,
+           "max |E_k/E_k(0) - E_ref/E_ref(0)| at R/dx = %zu: rings PVWF "
+           "%.3e, MGF %.3e; Cartesian PVWF %.3e, MGF %.3e%s%s",
+           L->res[K], ly.err[0][PVWF][K], ly.err[0][MGF][K], ly.err[1][PVWF][K],
+           ly.err[1][MGF][K], stops[0], stops[1]);
+  if (below[0] == 1 && below[1] == 1)
+    snprintf(verdict, sizeof verdict,
+             "reproduced on a substitute on both layouts");
+  else if (below[0] == 1 || below[1] == 1)
+    snprintf(verdict, sizeof verdict, "partly: on %s; on %s %s",
+             below[0] == 1 ? lay[0] : lay[1], below[0] == 1 ? lay[1] : lay[0],
+             below[below[0] == 1 ? 1 : 0] < 0
+                 ? "PVWF stops before the end (above), so not over the run"
+                 : "PVWF's error is the larger");
+  else
+    snprintf(verdict, sizeof verdict,
+             "differs: on neither layout is PVWF's error the smaller over "
+             "the whole run");
   if (!st)
     st = vsph_report_claim(
-        R, "Vortex patch: PVWF's E_k error is smaller than MGF's (VI A)", "yes",
-        ours, setup,
-        yes_no(err[PVWF] < err[MGF], "reproduced on a substitute",
-               "not reproduced at this resolution"));
-  /* MGF's initial dissipation error on both disc layouts (section 6) */
-  struct vsph_report_layouts ly;
-  if (!st) st = vsph_report_runs_layouts(&R->runs, &ly);
-  if (!st) {
-    double d0[2][VSPH_REPORT_LADDER], a0[2][VSPH_REPORT_LADDER];
-    const double *dx = ly.dx;
-    for (int l = 0; l < 2; l++)
-      for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
-        d0[l][k] = ly.d0[l][MGF][k];
-        a0[l][k] = fabs(d0[l][k]);
-      }
-    const double o_r = vsph_scaling_slope(dx, a0[0], VSPH_REPORT_LADDER);
-    const double o_c = vsph_scaling_slope(dx, a0[1], VSPH_REPORT_LADDER);
-    snprintf(ours, sizeof ours,
-             "MGF initial dissipation error at R/dx %zu, %zu, %zu: rings "
-             "%+.2f, %+.2f, %+.2f %% (order %.2f); Cartesian %+.2f, %+.2f, "
-             "%+.2f %% (order %.2f)",
-             L->res[0], L->res[1], L->res[2], 100 * d0[0][0], 100 * d0[0][1],
-             100 * d0[0][2], o_r, 100 * d0[1][0], 100 * d0[1][1],
-             100 * d0[1][2], o_c);
-    char setup2[600];
-    snprintf(setup2, sizeof setup2,
-             "measure: MGF's initial dissipation error against resolution "
-             "(the paper's: u_theta against the reference at R/dx = 100); "
-             "initial profile (6.39) and both disc layouts [reconstructed]; "
-             "R/dx %zu-%zu",
-             L->res[0], L->res[2]);
+        R, "Vortex patch: PVWF's E_k error is smaller than MGF's (VI A)",
+        "yes (Fig. 5, right)", ours, setup, verdict);
+  /* (3) MGF converges with resolution: its ladder's self-convergence on
+   * both layouts, beside its level against the reference */
+  enum vsph_grade g[2];
+  for (int l = 0; l < 2; l++)
+    g[l] = vsph_grade_converges(ly.self[l][MGF].order_max,
+                                ly.self[l][MGF].order_rms,
+                                ly.self[l][MGF].partial);
+  snprintf(
+      ours, sizeof ours,
+      "MGF, R/dx %zu-%zu: successive differences of E_k/E_k(0) on "
+      "rings %.2e, %.2e (orders %.2f largest, %.2f RMS), E_k error "
+      "against the reference %.2e at %zu; Cartesian %.2e, %.2e (orders "
+      "%.2f, %.2f), error %.2e",
+      L->res[0], L->res[K], ly.self[0][MGF].dmax[0], ly.self[0][MGF].dmax[1],
+      ly.self[0][MGF].order_max, ly.self[0][MGF].order_rms, ly.err[0][MGF][K],
+      L->res[K], ly.self[1][MGF].dmax[0], ly.self[1][MGF].dmax[1],
+      ly.self[1][MGF].order_max, ly.self[1][MGF].order_rms, ly.err[1][MGF][K]);
+  char setup2[800];
+  snprintf(setup2, sizeof setup2,
+           "measure: the ladder's self-convergence (successive resolutions, "
+           "no reference) and the error against the Bessel series at the "
+           "finest (the paper: u_theta against the series at R/dx = 100, "
+           "Fig. 4); %s",
+           setup);
+  snprintf(verdict, sizeof verdict,
+           g[0] == VSPH_GRADE_AGREES && g[1] == VSPH_GRADE_AGREES
+               ? "reproduced on a substitute: MGF converges on both layouts "
+                 "(every order rounds to 1 or more), to within %.1e of the "
+                 "reference's E_k at R/dx = %zu"
+               : "partly: MGF's successive differences fall on one layout "
+                 "or by one measure only (above); within %.1e of the "
+                 "reference's E_k at R/dx = %zu",
+           fmax(ly.err[0][MGF][K], ly.err[1][MGF][K]), L->res[K]);
+  if (!st)
     st = vsph_report_claim(
         R, "Vortex patch: MGF converges with resolution (VI A)",
         "MGF close to the reference at R/dx = 100 (layout not stated)", ours,
-        setup2,
-        o_c > 0.8 && o_c > o_r + 0.3
-            ? "partly: MGF converges on a Cartesian disc; on rings its "
-              "lattice error (shear at 45 degrees to the local lattice) slows "
-              "it (section 4); another measure than the paper's"
-        : o_c > 0.8 ? "partly: MGF converges on both layouts, by another "
-                      "measure than the paper's"
-                    : "not reproduced at these resolutions");
-  }
+        setup2, verdict);
+  /* (4) the final rigid rotation: an input of the reconstruction */
+  snprintf(ours, sizeof ours,
+           "omega_inf = %.4f omega0 and Re = %.1f for the reconstructed "
+           "profile (the reference series' c_0; R^2 omega(R, 0)/nu)",
+           winf, Re);
   if (!st)
     st = vsph_report_claim(
         R, "Vortex patch: final rigid rotation omega_inf (VI A)",
-        "0.2848 omega0, Re = 256 (the paper's own profile)",
-        "0.2071 omega0, Re = 174 (our profile)",
-        "initial profile (6.39) [reconstructed] (unreadable in the source)",
-        "differs by construction: the initial profile (6.39) is unreadable "
-        "in the source and [reconstructed] in docs/theory.md §6");
+        "0.2848 omega0, Re = 256 (the paper's own profile)", ours,
+        "initial profile (6.39) [reconstructed]: its weight was chosen to "
+        "meet these two figures (docs/theory.md §6), so they are an input "
+        "here, not a result",
+        "not tested: agreement is by construction (the profile was "
+        "reconstructed from these figures; -0.27 % and +0.27 %); a test "
+        "needs the paper's own (6.39)");
   return st;
+}
+
+/* Whether formulation @p f's stops on scene @p sc hold when only the time
+ * step changes, on the step study's two rungs (vsph_grade_stop_holds):
+ * 1 both hold, 0 one moves (marginal), and a phrase saying which into
+ * @p buf ("" when no run of the study stopped). */
+static int stops_hold(struct vsph_report *R, int sc, int f, char *buf,
+                      size_t len, int *holds) {
+  const struct vsph_report_ladderdef *L =
+      vsph_report_runs_ladder(&R->runs, sc, 0);
+  static const char *const cfl[VSPH_REPORT_SPEED_NCFL] = {"0.5", "1", "1.5",
+                                                          "2"};
+  *holds = 1;
+  buf[0] = '\0';
+  size_t m = 0;
+  for (int k = 0; k < 2; k++) {
+    int s[VSPH_REPORT_SPEED_NCFL];
+    double t[VSPH_REPORT_SPEED_NCFL];
+    const int st = vsph_report_speed_stops(R, sc, f, k, s, t);
+    if (st) return st;
+    if (vsph_grade_stop_holds(s, VSPH_REPORT_SPEED_NCFL)) continue;
+    *holds = 0;
+    m += (size_t)snprintf(buf + m, m < len ? len - m : 0,
+                          "%s at %s/dx = %zu it stops at CFL", m ? ";" : "",
+                          vsph_scene_find(L->scene)->length_name, L->res[k]);
+    int first = 1;
+    for (int c = 0; c < VSPH_REPORT_SPEED_NCFL; c++)
+      if (s[c]) {
+        m += (size_t)snprintf(buf + m, m < len ? len - m : 0, "%s %s (%.2g s)",
+                              first ? "" : ",", cfl[c], t[c]);
+        first = 0;
+      }
+    m += (size_t)snprintf(buf + m, m < len ? len - m : 0, " but not at");
+    first = 1;
+    for (int c = 0; c < VSPH_REPORT_SPEED_NCFL; c++)
+      if (!s[c]) {
+        m += (size_t)snprintf(buf + m, m < len ? len - m : 0, "%s %s",
+                              first ? "" : ",", cfl[c]);
+        first = 0;
+      }
+  }
+  return VSPH_OK;
 }
 
 static int wave_claims(struct vsph_report *R, const struct finest *fi) {
   const struct vsph_report_ladder *lr = &fi->lr[2];
-  char ours[320];
-  int n = snprintf(
-      ours, sizeof ours, "fitted orders MGF %.2f, MEAF %.2f, PVWF %.2f",
-      vsph_scaling_slope(lr->dx[MGF], lr->err[MGF], VSPH_REPORT_LADDER),
-      vsph_scaling_slope(lr->dx[MEAF], lr->err[MEAF], VSPH_REPORT_LADDER),
-      vsph_scaling_slope(lr->dx[PVWF], lr->err[PVWF], VSPH_REPORT_LADDER));
-  int stops = 0; /* runs that stopped: their errors up to the stop */
-  for (int f = 0; f < NFORM; f++)
-    for (int k = 0; k < VSPH_REPORT_LADDER; k++)
-      if (!lr->ok[f][k] && n > 0 && (size_t)n < sizeof ours)
-        n += snprintf(ours + n, sizeof ours - (size_t)n,
-                      "%s%s at rung %d stopped at t = %.3g s",
-                      stops++ ? ", " : "; ", vsph_viscous_label(f), k + 1,
-                      lr->t_unstable[f][k]);
-  if (stops && n > 0 && (size_t)n < sizeof ours)
-    snprintf(ours + n, sizeof ours - (size_t)n, " (errors up to the stop)");
   const struct vsph_report_ladderdef *WL =
       vsph_report_runs_ladder(&R->runs, 2, 0);
-  double omin = INFINITY;
-  for (int f = 0; f < NFORM; f++)
-    omin = fmin(omin,
-                vsph_scaling_slope(lr->dx[f], lr->err[f], VSPH_REPORT_LADDER));
-  char verdict0[256];
-  snprintf(verdict0, sizeof verdict0, "%s at H/dx %zu-%zu, t_end %g s%s",
-           stops         ? "differs: runs of the ladder stopped as unstable"
-           : omin >= 0.8 ? "reproduced on a substitute (every order >= 0.8)"
-                         : "not reproduced for every formulation (an order "
-                           "below 0.8)",
-           WL->res[0], WL->res[2], WL->t_end,
-           R->runs.full ? "" : "; the paper's H/dx = 240 needs FULL=1");
-  char setup[600];
+  const int K = VSPH_REPORT_LADDER - 1;
+  char ours[800], body[600], setup[600], verdict[400];
   snprintf(setup, sizeof setup,
            "steepness eps = 0.05 [reconstructed] (illegible in the source, "
-           "which bounds Lighthill's decay to eps < 0.01); free-slip bottom "
-           "[reconstructed]; H/dx %zu-%zu to %g s%s",
-           WL->res[0], WL->res[2], WL->t_end,
+           "which bounds Lighthill's decay to eps < 0.01; section 5 runs "
+           "0.005 and 0.01 beside it); free-slip bottom [reconstructed]; no "
+           "delta-SPH, RK4 at CFL 2 [reconstructed: the paper names "
+           "neither]; H/dx %zu-%zu to %g s%s",
+           WL->res[0], WL->res[K], WL->t_end,
            R->runs.full ? "" : " (the paper's 240 to 8 s)");
-  int st = vsph_report_claim(
-      R, "Standing wave: all formulations converge linearly (VI C)",
-      "converged at H/dx = 240", ours, setup, verdict0);
-  /* Damping, the paper's way: the energy the wave has lost by t_end
-   * against Lighthill's phase-free loss (report_runs.c); above 1 is too
-   * much damping. The last E_k peak over Lighthill's value there is a
-   * second measure: it also carries the phase of the exchange. */
+  /* (1) every form converges linearly: each ladder's self-convergence */
+  enum vsph_grade g[NFORM];
+  int holds[NFORM], worst = VSPH_GRADE_AGREES, st = VSPH_OK;
+  char marg[NFORM][200];
+  size_t m = 0;
+  for (int f = 0; f < NFORM && !st; f++) {
+    const struct vsph_series_selfconv *sv = &lr->self[f];
+    g[f] = vsph_grade_orders(sv->order_max, sv->order_rms, 1, sv->partial);
+    st = stops_hold(R, 2, f, marg[f], sizeof marg[f], &holds[f]);
+    m += (size_t)snprintf(body + m, m < sizeof body ? sizeof body - m : 0,
+                          "%s%s %.2e, %.2e (orders %.2f, %.2f)", f ? "; " : "",
+                          vsph_viscous_label(f), sv->dmax[0], sv->dmax[1],
+                          sv->order_max, sv->order_rms);
+    if (sv->partial)
+      m +=
+          (size_t)snprintf(body + m, m < sizeof body ? sizeof body - m : 0,
+                           " over t <= %.2g s only (a rung stopped)", sv->span);
+    if (g[f] == VSPH_GRADE_DIFFERS) worst = VSPH_GRADE_DIFFERS;
+    if (g[f] != VSPH_GRADE_AGREES && worst == VSPH_GRADE_AGREES)
+      worst = VSPH_GRADE_PARTLY;
+  }
+  if (st) return st;
+  snprintf(ours, sizeof ours,
+           "successive differences of E_k/E_k(0) over H/dx %zu-%zu, largest "
+           "over the run and RMS orders: %s",
+           WL->res[0], WL->res[K], body);
+  static const char *const gw[4] = {"first order by both measures",
+                                    "first order by one measure only",
+                                    "not first order", "not measured"};
+  m = (size_t)snprintf(verdict, sizeof verdict, "%s: ",
+                       worst == VSPH_GRADE_AGREES ? "reproduced on a substitute"
+                       : worst == VSPH_GRADE_DIFFERS ? "differs"
+                                                     : "partly");
+  for (int f = 0; f < NFORM; f++)
+    m += (size_t)snprintf(
+        verdict + m, m < sizeof verdict ? sizeof verdict - m : 0, "%s%s %s%s",
+        f ? "; " : "", vsph_viscous_label(f), gw[g[f]],
+        !holds[f] ? " (its stops move with the time step: "
+                    "marginal)"
+                  : "");
+  st = vsph_report_claim(
+      R,
+      "Standing wave: all formulations converge linearly, converged at "
+      "H/dx = 240 (VI C)",
+      "linear convergence; converged at H/dx = 240", ours, setup, verdict);
+  /* (2) damping, the paper's way: the energy lost by t_end over
+   * Lighthill's phase-free loss (1 exact, above 1 too much damping) */
   const struct vsph_jobs_run *w = fi->run[2];
-  double loss[NFORM], ratio[NFORM], tpk = 0.0;
+  double loss[NFORM];
+  char stopped[200] = "";
+  size_t sl = 0;
   for (int f = 0; f < NFORM; f++) {
     loss[f] = vsph_report_runs_loss_ratio(&w[f], w[f].nrow - 1);
-    size_t pk = 0;
-    for (size_t k = 1; k + 1 < w[f].nrow; k++)
-      if (w[f].Ek[k] > w[f].Ek[k - 1] && w[f].Ek[k] >= w[f].Ek[k + 1]) pk = k;
-    ratio[f] = pk ? (w[f].Ek[pk] / w[f].Ek[0]) / (w[f].Ekr[pk] / w[f].Ekr[0])
-                  : (double)NAN;
-    if (f == MGF) tpk = w[f].t[pk];
+    if (!w[f].ok)
+      sl += (size_t)snprintf(stopped + sl,
+                             sl < sizeof stopped ? sizeof stopped - sl : 0,
+                             "; %s stopped (unstable) at t = %.3g s (its "
+                             "figure by then)%s%s",
+                             vsph_viscous_label(f), w[f].t_unstable,
+                             holds[f] ? "" : "; ", holds[f] ? "" : marg[f]);
   }
-  const size_t res = vsph_report_runs_ladder(&R->runs, 2, 0)->res[2];
-  /* a run that stopped: its figures are by its last row, said */
-  char stopped[160] = "";
-  int first = -1;
-  for (int f = 0, m = 0; f < NFORM; f++)
-    if (!w[f].ok) {
-      if (first < 0) first = f;
-      m += snprintf(stopped + m, sizeof stopped - (size_t)m,
-                    "; %s stopped (unstable) at t = %.3g s",
-                    vsph_viscous_label(f), w[f].t_unstable);
-    }
-  snprintf(
-      ours, sizeof ours,
-      "energy lost by t = %g s over Lighthill's (H/dx = %zu): PVWF "
-      "%.3f, MGF %.3f, MEAF %.3f (1 = exact, > 1 too much damping); "
-      "second measure, last E_k peak (t = %.2f s) over Lighthill's: "
-      "PVWF %.3f, MGF %.3f, MEAF %.3f%s%s",
-      w[MGF].t[w[MGF].nrow - 1], res, loss[PVWF], loss[MGF], loss[MEAF], tpk,
-      ratio[PVWF], ratio[MGF], ratio[MEAF], stopped,
-      stopped[0] ? " (its figures by then; nan: no E_k peak by then)" : "");
-  const double em = fabs(loss[MGF] - 1), ep = fabs(loss[PVWF] - 1);
-  const double ee = fabs(loss[MEAF] - 1);
-  char verdict[256];
-  if (first >= 0) /* the damping over the whole run is not measured */
+  snprintf(ours, sizeof ours,
+           "energy lost by t_end over Lighthill's (H/dx = %zu; 1 exact, "
+           "above 1 too much damping): PVWF %.3f, MGF %.3f, MEAF %.3f%s",
+           WL->res[K], loss[PVWF], loss[MGF], loss[MEAF], stopped);
+  const double em = fabs(loss[MGF] - 1), ee = fabs(loss[MEAF] - 1),
+               ep = fabs(loss[PVWF] - 1);
+  const int meaf_fails = vsph_grade_apart(ee, em);
+  const int mgf_under = loss[MGF] < 1.0;
+  if (!w[PVWF].ok)
     snprintf(verdict, sizeof verdict,
-             "differs at H/dx = %zu: %s stopped (unstable) at t = %.3g s of "
-             "%g s",
-             res, vsph_viscous_label(first), w[first].t_unstable, WL->t_end);
-  else if (ee > 2 * fmax(em, ep) && ep < em)
+             "partly: %s; MGF damps %.1f %% too %s%s; PVWF's run stopped at "
+             "t = %.3g s of %g s%s, so 'PVWF best' is not measured at H/dx = "
+             "%zu",
+             meaf_fails ? "MEAF fails (its departure from 1 at least sqrt(10) "
+                          "times MGF's)"
+                        : "MEAF is not apart from MGF",
+             100 * em, mgf_under ? "little" : "much",
+             mgf_under ? ", as the paper says" : ", not slightly too little",
+             w[PVWF].t_unstable, WL->t_end,
+             holds[PVWF] ? "" : " (marginal: its stops move with the step)",
+             WL->res[K]);
+  else if (meaf_fails && ep < em && mgf_under)
     snprintf(verdict, sizeof verdict,
-             loss[MGF] > 1
-                 ? "partly, at H/dx = %zu: the ranking holds by the energy "
-                   "budget (PVWF closest, then MGF, MEAF far off), but MGF "
-                   "damps too much here, not too little"
-                 : "reproduced on a substitute at H/dx = %zu by the energy "
-                   "budget (PVWF closest, then MGF, MEAF far off); MGF damps "
-                   "too little, as the paper says",
-             res);
-  else if (ee > 2 * fmax(em, ep))
-    snprintf(verdict, sizeof verdict,
-             "partly, at H/dx = %zu: MEAF fails, but MGF's budget is closer "
-             "than PVWF's",
-             res);
+             "reproduced on a substitute: PVWF closest, MGF slightly too "
+             "little damping, MEAF apart");
   else
-    snprintf(verdict, sizeof verdict, "not reproduced at H/dx = %zu", res);
+    snprintf(verdict, sizeof verdict,
+             "partly: %s; %s; MGF damps %.1f %% too %s",
+             meaf_fails ? "MEAF fails" : "MEAF is not apart from MGF",
+             ep < em ? "PVWF closest" : "PVWF not the closest", 100 * em,
+             mgf_under ? "little" : "much");
   if (!st)
     st = vsph_report_claim(
         R,
@@ -653,8 +1104,10 @@ int vsph_report_claims_beside(struct vsph_report *R,
 }
 
 int vsph_report_claims_plan(struct vsph_report *R) {
-  /* every scene, whatever the filter, and the runs of sections 10, 11 */
+  /* every scene, whatever the filter, the wave's time-step study (its
+   * stops' marginality), and the runs of sections 10, 11 */
   int st = vsph_report_runs_plan_ladders(&R->runs, 1);
+  if (!st) st = vsph_report_speed_plan_steps(R, 2);
   if (!st) st = vsph_report_channel_plan(R);
   if (!st) st = vsph_report_contact_plan(R);
   return st;
@@ -666,6 +1119,8 @@ int vsph_report_claims_write(struct vsph_report *R) {
   int st = scaling_claims(R);
   R->claim_see = "dissipation";
   if (!st) st = dissipation_claims(R);
+  R->claim_see = "tensors";
+  if (!st) st = theory_claims(R);
   struct finest fi;
   memset(&fi, 0, sizeof fi);
   if (!st) st = load_finest(R, &fi);

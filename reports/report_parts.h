@@ -25,7 +25,28 @@ int vsph_report_speed_write(struct vsph_report *R);
 /* The speed part's runs: the ladders, and the ladder's two coarsest
  * resolutions again at CFL 0.5, 1.5 and 2. */
 int vsph_report_speed_plan(struct vsph_report *R);
+/* The study's run of scene @p sc, formulation @p f, rung @p k (0, 1) at
+ * CFL index @p c (0.5, 1, 1.5, 2; the scene's own CFL: the ladder's run). */
+struct vsph_jobs_spec vsph_report_speed_spec(const struct vsph_report *R,
+                                             int sc, int f, int k, int c);
+/* Those of scene @p sc alone (the claims read them too). */
+int vsph_report_speed_plan_steps(struct vsph_report *R, int sc);
+/* The Courant numbers of the step study: 0.5, 1, 1.5, 2. */
+#define VSPH_REPORT_SPEED_NCFL 4
+/* Of scene @p sc, formulation @p f, rung @p k (0 or 1: the study's two
+ * coarsest): at each CFL of the study, whether the run stopped as
+ * unstable and when (NaN: it ran to its end). */
+int vsph_report_speed_stops(struct vsph_report *R, int sc, int f, int k,
+                            int stopped[VSPH_REPORT_SPEED_NCFL],
+                            double t_stop[VSPH_REPORT_SPEED_NCFL]);
 int vsph_report_stability_write(struct vsph_report *R);
+/* The scheme's own choices, isolated: the standing wave's variants, the
+ * two-pass forms' null mode, the symmetry planes (report_choices.c). */
+int vsph_report_choices_plan(struct vsph_report *R);
+int vsph_report_choices_write(struct vsph_report *R);
+/* Form @p form's dissipation of the particle-scale checkerboard over
+ * MEAF's, on a square of @p n across at h/dx 4/3 (the null mode). */
+int vsph_report_choices_null(size_t n, int form, double *ratio);
 int vsph_report_claims_write(struct vsph_report *R);
 
 int vsph_report_patch_write(struct vsph_report *R);

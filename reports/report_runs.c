@@ -73,6 +73,7 @@ int vsph_report_runs_layouts(struct vsph_report_runs *R,
         out->d0[l][f][k] = vsph_report_runs_diss0(r);
         out->ok[l][f][k] = r->ok;
         out->tu[l][f][k] = r->t_unstable;
+        out->loss[l][f][k] = vsph_report_runs_loss_ratio(r, r->nrow - 1);
       }
       if (!st) st = vsph_report_runs_selfconv(run, out->dx, &out->self[l][f]);
       for (int k = 0; k < VSPH_REPORT_LADDER; k++)
@@ -308,6 +309,7 @@ int vsph_report_runs_ladder_figures(struct vsph_report_runs *R, int sc,
       lr->load[f][k] = r->load;
       lr->ok[f][k] = r->ok;
       lr->t_unstable[f][k] = r->t_unstable;
+      lr->loss[f][k] = vsph_report_runs_loss_ratio(r, r->nrow - 1);
     }
     if (!st) st = vsph_report_runs_selfconv(run, lr->dx[f], &lr->self[f]);
     for (int k = 0; k < VSPH_REPORT_LADDER; k++) vsph_report_runs_free(&run[k]);

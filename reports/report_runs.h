@@ -37,6 +37,9 @@ struct vsph_report_ladder {
   double load[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   int ok[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   double t_unstable[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  /* energy lost by the last row over the reference's loss (1 exact; NaN
+   * without a reference for t > 0: the square) */
+  double loss[VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   /* the ladder's self-convergence: successive rungs against each other */
   struct vsph_series_selfconv self[VSPH_VISCOUS_FORM_COUNT];
 };
@@ -66,6 +69,7 @@ struct vsph_report_layouts {
   double d0[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   double tu[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
   int ok[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER];
+  double loss[2][VSPH_VISCOUS_FORM_COUNT][VSPH_REPORT_LADDER]; /* as above */
   struct vsph_series_selfconv self[2][VSPH_VISCOUS_FORM_COUNT];
 };
 

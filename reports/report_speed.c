@@ -47,7 +47,7 @@ static int scene(struct vsph_report *R, int sc) {
 
 /* The Courant numbers of the study, on the ladder's two coarsest
  * resolutions; the scene's own (scene_cfl) is the ladder's own run. */
-#define NCFL 4
+#define NCFL VSPH_REPORT_SPEED_NCFL
 #define NRES 2
 static const double CFLS[NCFL] = {0.5, 1.0, 1.5, 2.0};
 static const char *const SET_CFL[NCFL][2] = {{"Solver:cfl=0.5", NULL},
@@ -79,17 +79,45 @@ static struct vsph_jobs_spec cfl_spec(const struct vsph_report *R, int sc,
       L->t_end, own ? NULL : SET_CFL[c], own ? NULL : TAG_CFL[c]};
 }
 
+struct vsph_jobs_spec vsph_report_speed_spec(const struct vsph_report *R,
+                                             int sc, int f, int k, int c) {
+  return cfl_spec(R, sc, f, k, c);
+}
+
+int vsph_report_speed_plan_steps(struct vsph_report *R, int sc) {
+  int st = VSPH_OK;
+  for (int f = 0; f < NFORM && !st; f++)
+    for (int k = 0; k < NRES && !st; k++)
+      for (int c = 0; c < NCFL && !st; c++) {
+        const struct vsph_jobs_spec rs = cfl_spec(R, sc, f, k, c);
+        st = vsph_jobs_plan_run(&R->runs.jobs, &rs);
+      }
+  return st;
+}
+
 int vsph_report_speed_plan(struct vsph_report *R) {
   int st = vsph_report_runs_plan_ladders(&R->runs, 0);
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     if (vsph_report_scene_on(&R->runs, sc))
-      for (int f = 0; f < NFORM && !st; f++)
-        for (int k = 0; k < NRES && !st; k++)
-          for (int c = 0; c < NCFL && !st; c++) {
-            const struct vsph_jobs_spec rs = cfl_spec(R, sc, f, k, c);
-            st = vsph_jobs_plan_run(&R->runs.jobs, &rs);
-          }
+      st = vsph_report_speed_plan_steps(R, sc);
   return st;
+}
+
+int vsph_report_speed_stops(struct vsph_report *R, int sc, int f, int k,
+                            int stopped[VSPH_REPORT_SPEED_NCFL],
+                            double t_stop[VSPH_REPORT_SPEED_NCFL]) {
+  if (k < 0 || k >= NRES)
+    VSPH_FAIL(VSPH_EINVAL, "the time step was varied on rungs 1-%d only", NRES);
+  for (int c = 0; c < NCFL; c++) {
+    const struct vsph_jobs_spec rs = cfl_spec(R, sc, f, k, c);
+    struct vsph_jobs_run r;
+    const int st = vsph_report_runs_get(&R->runs, &rs, &r);
+    if (st) return st;
+    stopped[c] = !r.ok;
+    t_stop[c] = r.ok ? (double)NAN : r.t_unstable;
+    vsph_report_runs_free(&r);
+  }
+  return VSPH_OK;
 }
 
 /* One scene: error against cost at each CFL, a line per formulation and

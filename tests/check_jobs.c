@@ -563,11 +563,11 @@ static size_t free_surface_entries(const char *dir, const char *out, int full,
  * fitted order exactly 1; its successive differences are 1/res_k -
  * 1/res_{k+1} at t = 1 (2.000e-02, 1.000e-02: the self-convergence order
  * exactly 1), their RMS over [0, 1] by the trapezoid rule on the two rows
- * 1/sqrt(2) of that (1.414e-02, 7.071e-03); P_visc(0) is -(1 + 1/res) against dE_k,ref/dt
- * = -1, so the initial dissipation error, (P_visc(0) - dE_k,ref/dt(0)) /
- * |dE_k,ref/dt(0)|, is -1/res. AR/summary.md then holds the convergence
- * tables and says how many runs came from AR; the report's facts and
- * run.json say it too. Refused (exit 2, nothing written): --full without
+ * 1/sqrt(2) of that (1.414e-02, 7.071e-03); P_visc(0) is -(1 + 1/res) against
+ * dE_k,ref/dt = -1, so the initial dissipation error, (P_visc(0) -
+ * dE_k,ref/dt(0)) / |dE_k,ref/dt(0)|, is -1/res. AR/summary.md then holds the
+ * convergence tables and says how many runs came from AR; the report's facts
+ * and run.json say it too. Refused (exit 2, nothing written): --full without
  * --assemble, a --plan, or --out inside AR; a folder that is not a run
  * archive, the message naming the option. Run where there is no
  * reports/baseline.csv (outside the source tree's top), every entry is

@@ -15,6 +15,7 @@
 #include "../reports/report_parts.h"
 #include "../runs/folder.h"
 #include "../solver/scene.h"
+#include "../solver/viscous.h"
 #include "check_suites.h"
 
 /* The scenes' names: one list, the ladders'. The quick and the FULL
@@ -413,6 +414,28 @@ START_TEST(test_claims_beside) {
 }
 END_TEST
 
+/* The two-pass forms' null mode (report_choices.c): the particle-scale
+ * checkerboard has no gradient at an interior particle by either first
+ * pass, so PVWF's and model B's dissipation of it is a surface share only,
+ * which halves as the square is laid twice as fine (80 against 40 across:
+ * 0.5 within 10 %, the surface rows' own lattice effects) and is below
+ * 5 % of MEAF's already at 40 across. MGF's over MEAF's is K/2 <cos^2> = 2
+ * exactly: the field is along x, and the lattice's four-fold symmetry
+ * makes the weighted mean of cos^2 one half (rounding: 1e-12). */
+START_TEST(test_null_mode) {
+  double q40, q80;
+  const int forms[2] = {VSPH_VISCOUS_PVWF, vsph_viscous_find("twopass")};
+  for (int k = 0; k < 2; k++) {
+    ck_assert_int_eq(vsph_report_choices_null(40, forms[k], &q40), 0);
+    ck_assert_int_eq(vsph_report_choices_null(80, forms[k], &q80), 0);
+    ck_assert_double_lt(q40, 0.05);
+    ck_assert_double_eq_tol(q80 / q40, 0.5, 0.05);
+  }
+  ck_assert_int_eq(vsph_report_choices_null(40, VSPH_VISCOUS_MGF, &q40), 0);
+  ck_assert_double_eq_tol(q40, 2.0, 1e-12);
+}
+END_TEST
+
 Suite *vsph_report_suite(void) {
   Suite *s = suite_create("report");
   TCase *tc = tcase_create("frame");
@@ -424,6 +447,7 @@ Suite *vsph_report_suite(void) {
   tcase_add_test(tc, test_time_left);
   tcase_add_test(tc, test_shell_quote);
   tcase_add_test(tc, test_command_reads_back);
+  tcase_add_test(tc, test_null_mode);
   suite_add_tcase(s, tc);
   return s;
 }
