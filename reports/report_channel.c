@@ -15,6 +15,7 @@
 #include "../io/csv.h"
 #include "../io/plot.h"
 #include "../solver/viscous.h"
+#include "grade.h"
 #include "report_parts.h"
 
 /* Poiseuille runs: Basa et al.'s set-up (Re = 0.5, cubic spline,
@@ -1287,22 +1288,33 @@ static int pois_claims(struct vsph_report *R, const struct chan *c,
               "below the gap between the models the paper ranks apart (E "
               "and C)"
             : "differs: the density's difference is as large as the models'");
+  /* the transverse agitation v_rms (over U0) at the end: what B's error
+   * is made of (section 12: the two-pass forms' null mode) */
+  const double vb = last(&c->pois[P_B], "v_rms"),
+               vp = last(&c->pois[P_PVWF], "v_rms"),
+               va = last(&c->pois[P_A0], "v_rms"),
+               ve = last(&c->pois[P_E], "v_rms");
   snprintf(ours, sizeof ours,
            "eq. 38 at t* = 4.9: B %.1f %% against E %.1f %%, D (4.24) "
-           "%.1f %%",
-           100 * r[P_B], 100 * r[P_E], 100 * r[P_D424]);
-  char bverdict[160];
+           "%.1f %%; transverse agitation v_rms/U0 at the end: B %.2g and "
+           "PVWF %.2g (the two two-pass forms), E %.2g, A[0] %.2g",
+           100 * r[P_B], 100 * r[P_E], 100 * r[P_D424], vb, vp, ve, va);
+  char bverdict[400];
   snprintf(bverdict, sizeof bverdict,
-           "differs: on eq. 38 B's near-wall error is %.0f times E's here "
-           "(section 10)",
-           r[P_B] / r[P_E]);
+           "differs: on eq. 38 B's error is %.0f times E's here; its flow is "
+           "agitated across the channel (v_rms %.0f times E's), as PVWF's, "
+           "the other two-pass form, is: both passes are blind to "
+           "particle-scale alternation (section 12)",
+           r[P_B] / r[P_E], vb / ve);
+  /* "very accurate": within the others' error, to the separation factor
+   * the grade allows (grade.h: half a decade) */
   if (!st)
     st = vsph_report_claim(
         R,
         "Model B (two-pass) is very accurate in Poiseuille, if the least "
         "robust (Basa §6.1.3)",
         "accuracy very good (beside D, E)", ours, setup,
-        r[P_B] <= 1.5 * fmax(r[P_E], r[P_D424])
+        !vsph_grade_apart(r[P_B], fmax(r[P_E], r[P_D424]))
             ? "reproduced on a substitute (accuracy; robustness: the map)"
             : bverdict);
   return st;
@@ -1339,7 +1351,11 @@ static int eos_claims(struct vsph_report *R, const struct chan *c) {
         "With Tait's law pressures are much lower and pressure-induced "
         "instabilities weaker (Basa §6.1.1)",
         "Tait runs without the reduction", ours, setup,
-        ta->ok && !g->ok ? "reproduced on a substitute" : "differs");
+        ta->ok && !g->ok
+            ? "partly: Tait runs without the reduction where the gas law "
+              "stops (the instability part, on a substitute); the pressures "
+              "themselves are not measured here"
+            : "differs");
   return st;
 }
 
@@ -1351,15 +1367,18 @@ static int visc_claims(struct vsph_report *R, const struct chan *c) {
    * 40 s at FULL, 20 x 20 to 30 s quick */
   const int base = R->runs.full ? CAV_V01_40 : CAV_V01;
   const double *u = &c->umin[base], *w = &c->umin_swing[base];
-  int best = 0, all = 1;
+  /* the forms that ran to their end compete; a stopped one gives no
+   * flow result (it is said in the verdict) */
+  int best = -1, all = 1;
   double swing = 0.0, next = INFINITY;
   for (int f = 0; f < 4; f++) {
     all &= c->cav[base + f].ok;
+    if (!c->cav[base + f].ok) continue;
     swing = fmax(swing, w[f]);
-    if (u[f] < u[best]) best = f;
+    if (best < 0 || u[f] < u[best]) best = f;
   }
   for (int f = 0; f < 4; f++)
-    if (f != best) next = fmin(next, u[f]);
+    if (f != best && c->cav[base + f].ok) next = fmin(next, u[f]);
   snprintf(ours, sizeof ours,
            "Re 1000, %zu x %zu, mean over t = %.0f-%.0f s: |u_min - u_min,"
            "Ghia|/U VISC-01 %.1f %%, VISC-02 %.1f %%, VISC-03 %.1f %%, "
@@ -1376,25 +1395,32 @@ static int visc_claims(struct vsph_report *R, const struct chan *c) {
            R->runs.full ? "40 x 40 to 200 x 200 to 40 s; ours its coarsest"
                         : "40 x 40 to 200 x 200 to 40 s; ours 20 x 20 to "
                           "30 s, a quick report's cost");
-  if (!all) { /* which stopped, and when (their figure: nan) */
-    int m = snprintf(v, sizeof v,
-                     "differs: stopped as unstable in the cavity "
-                     "here (nan above):");
-    for (int f = 0; f < 4; f++)
-      if (!c->cav[base + f].ok && m > 0 && (size_t)m < sizeof v)
-        m += snprintf(v + m, sizeof v - (size_t)m, "%s VISC-0%d at t = %.3g s",
-                      v[m - 1] == ':' ? "" : ";", f + 1,
-                      c->cav[base + f].t_unstable);
-  } else if (!(next - u[best] > swing))
+  /* which stopped, and when (their figure: nan) */
+  char stopped[200] = "";
+  for (int f = 0, m = 0; f < 4 && !all; f++)
+    if (!c->cav[base + f].ok && m >= 0 && (size_t)m < sizeof stopped)
+      m += snprintf(stopped + m, sizeof stopped - (size_t)m,
+                    "%sVISC-0%d stopped at t = %.3g s", m ? "; " : " (",
+                    f + 1, c->cav[base + f].t_unstable);
+  if (!all) strncat(stopped, ")", sizeof stopped - strlen(stopped) - 1);
+  if (!c->cav[base + 3].ok)
+    snprintf(v, sizeof v, "differs: VISC-04 itself stopped as unstable%s",
+             stopped);
+  else if (isfinite(next) && !(next - u[best] > swing))
     snprintf(v, sizeof v,
-             "not tested: the forms' gap (%.1f points) is below the runs' "
-             "swing over the window (%.1f points)",
-             100 * (next - u[best]), 100 * swing);
+             "not tested: among the forms that ran to the end the gap "
+             "(%.1f points) is below the runs' swing over the window (%.1f "
+             "points)%s",
+             100 * (next - u[best]), 100 * swing, stopped);
   else if (best == 3)
-    snprintf(v, sizeof v, "reproduced on a substitute: VISC-04 closest");
+    snprintf(v, sizeof v,
+             "reproduced on a substitute: VISC-04 closest beyond the "
+             "swing%s",
+             stopped);
   else
-    snprintf(v, sizeof v, "differs: VISC-0%d is closest here, beyond the swing",
-             best + 1);
+    snprintf(v, sizeof v,
+             "differs: VISC-0%d is closest here, beyond the swing%s",
+             best + 1, stopped);
   if (!st)
     st = vsph_report_claim(
         R,
@@ -1629,6 +1655,26 @@ static const struct {
      "x 40)",
      "not tested: needs the paper's 100 x 100 and 200 x 200 to 40 s (hours "
      "per form at 200 x 200 on 2 cores)"},
+    {"In the lid-driven cavity with a cylinder (d = 0.5 L) at Re 1000 the "
+     "four forms give similar profiles in the two gaps, VISC-04 closest to "
+     "OpenFOAM (Zheng §5.2, Figs. 11-14)",
+     "VISC-04 closest to OpenFOAM",
+     "vsph has no cavity with a held cylinder (wall particles on a curved "
+     "boundary) and no finite-volume reference of it",
+     "not tested: needs the cavity scene with a cylinder of wall particles "
+     "and an OpenFOAM solution of the same flow (issue 43's finite-volume "
+     "references); the profiles then exist in the gaps only, 50 particles "
+     "wide at the paper's dx = 0.005"},
+    {"Quadratic extrapolation of the wall velocities, and particles placed "
+     "on the walls, give the start-up's near-wall shear better than "
+     "mirroring (Basa §6.1.2, Figs. 3-4)",
+     "linear and quadratic extrapolation alike, mirroring worst",
+     "vsph's ghost walls offer mirroring and linear extrapolation only "
+     "(section 10's row on them)",
+     "not tested: needs a quadratic (or Watkins' global parabola) wall "
+     "velocity and a wall-particle layout on the walls themselves, each "
+     "beside the linear one on Basa's start-up (two runs per form, "
+     "seconds)"},
 };
 
 /* VISC-02 in a flow, at the paper's coarsest cavity (FULL): the four
@@ -1746,10 +1792,10 @@ static int walls_couette_claims(struct vsph_report *R, const struct chan *c) {
            "RMS error at t = 0.0225 s and 1 s: E %.2f and %.3f %%, B %.2f and "
            "%.3f %% of v0; where it sits across the gap: not measured",
            100 * e0, 100 * e1, 100 * b0, 100 * b1);
-  char early[200]; /* the grade asks each early error above 3 late ones */
+  char early[200]; /* "larger", as the paper says, with no factor asked */
   snprintf(early, sizeof early,
-           "differs: early over late, E %.3g times, B %.3g times (the grade "
-           "asks more than 3 for each)",
+           "differs: the early error is not the larger (early over late, E "
+           "%.3g times, B %.3g times)",
            e0 / e1, b0 / b1);
   if (!st)
     st = vsph_report_claim(
@@ -1757,9 +1803,9 @@ static int walls_couette_claims(struct vsph_report *R, const struct chan *c) {
         "Errors are larger at small t and near the walls, from particle "
         "deficiency and kernel truncation (Vukčević §5)",
         "larger early and near the walls", ours, setup,
-        e0 > 3 * e1 && b0 > 3 * b1
-            ? "partly: larger early, on a substitute set-up; near the walls "
-              "not measured (profiles.csv holds it)"
+        vsph_grade_larger(e0, e1, 0.0) && vsph_grade_larger(b0, b1, 0.0)
+            ? "partly: larger early (E and B), on a substitute set-up; near "
+              "the walls not measured (profiles.csv holds it)"
             : early);
   return st;
 }

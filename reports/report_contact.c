@@ -884,8 +884,27 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
         "U0 = 10 m/s [reconstructed: not given; the problem is linear in "
         "it]; paraffin's eta = 80 mPa s [reconstructed: the handbook gives "
         "25-80]; U* fitted to the profiles",
-        fabs(nb->ustar[0][0] - nb->ustar_exact[0]) < 0.05 ? "reproduced"
-                                                          : "differs");
+        /* within a twentieth of U0: a documented choice of ours (the
+         * paper's 0.669 is eq. (27) itself, exact; ours is fitted to the
+         * particles' profile, whose error the choice allows); on a
+         * substitute: U0 and paraffin's viscosity are reconstructed */
+        fabs(nb->ustar[0][0] - nb->ustar_exact[0]) < 0.05
+            ? "reproduced on a substitute: the interface at eq. (27)'s "
+              "velocity, with U0 and paraffin's viscosity reconstructed"
+            : "differs");
+  if (!st)
+    st = vsph_report_claim(
+        R,
+        "A water cylinder spreading on a rigid surface under gravity spreads "
+        "faster with zeta = 1 than with zeta = 0 (Parshikov §5.6, Fig. 12)",
+        "the less viscous (zeta = 1) drop spreads faster; no geometry, "
+        "times or g given",
+        "-",
+        "vsph's contact SPH has no free-surface scene with gravity on a "
+        "rigid wall",
+        "not tested: needs a contact-SPH drop scene (gravity, a wall of "
+        "fixed particles, no surface tension) at two zeta; the paper gives "
+        "no size, time or gravity, so only the ranking could be tested");
   if (!st)
     st = vsph_report_claim(
         R,
