@@ -243,16 +243,19 @@ int vsph_series_selfconv(const struct vsph_series_rung *rung, size_t nrung,
   const struct vsph_series_rung *fin = &rung[nrung - 1];
   for (size_t k = 0; k + 1 < nrung; k++) {
     const struct vsph_series_rung *c = &rung[k], *f = &rung[k + 1];
-    double mx = 0.0, sq = 0.0, t0 = NAN, tp = NAN, dp = NAN;
-    for (size_t i = 0; i < nf[nrung - 1] && fin->t[i] <= span; i++) {
-      const double x = fin->t[i];
+    double mx = NAN, sq = 0.0, t0 = NAN, tp = NAN, dp = NAN;
+    /* the span's end within the tolerance partial allows, so a last row
+     * that ends a hair past it (a run's end at t_end (1 - 1e-12)) is in */
+    const double tend = span + 1e-9 * fabs(span);
+    for (size_t i = 0; i < nf[nrung - 1] && fin->t[i] <= tend; i++) {
+      const double x = fmin(fin->t[i], span);
       const double ec = vsph_series_interp_cubic(c->t, c->E, nf[k], x);
       const double ef =
           k + 2 == nrung ? fin->E[i]
                          : vsph_series_interp_cubic(f->t, f->E, nf[k + 1], x);
       if (!isfinite(ec) || !isfinite(ef)) continue; /* before a first row */
       const double d = ef / f->E[0] - ec / c->E[0];
-      mx = fmax(mx, fabs(d));
+      mx = isnan(mx) ? fabs(d) : fmax(mx, fabs(d));
       if (isnan(t0))
         t0 = x;
       else
@@ -260,7 +263,7 @@ int vsph_series_selfconv(const struct vsph_series_rung *rung, size_t nrung,
       tp = x;
       dp = d;
     }
-    out->dmax[k] = mx;
+    out->dmax[k] = mx; /* NaN where the rungs share no row */
     out->drms[k] = tp > t0 ? sqrt(sq / (tp - t0)) : fabs(dp);
   }
   out->order_max = out->order_rms = out->remainder = (double)NAN;

@@ -142,7 +142,8 @@ struct vsph_series_selfconv {
    *  span at the finest rung's rows (one set of times for every pair):
    *  max |E_{k+1}/E_{k+1}(0) - E_k/E_k(0)| (a rung other than the finest
    *  interpolated by vsph_series_interp_cubic), and the same
-   *  difference's RMS over time (trapezoid rule) */
+   *  difference's RMS over time (trapezoid rule); both NaN where the
+   *  rungs share no row */
   double dmax[VSPH_SERIES_RUNGS_MAX - 1], drms[VSPH_SERIES_RUNGS_MAX - 1];
   /** the observed order from the last two differences of each kind
    *  (vsph_series_order); NaN with two rungs */

@@ -21,7 +21,7 @@ enum vsph_grade vsph_grade_orders(double p_max, double p_rms, int n,
 enum vsph_grade vsph_grade_converges(double p_max, double p_rms, int partial) {
   if (partial || isnan(p_max) || isnan(p_rms)) return VSPH_GRADE_UNMEASURED;
   const double lo = 1.0 - VSPH_GRADE_ORDER_HALFWIDTH;
-  const int a = p_max >= lo, b = p_rms >= lo;
+  const int a = p_max > lo, b = p_rms > lo;
   return a && b   ? VSPH_GRADE_AGREES
          : a || b ? VSPH_GRADE_PARTLY
                   : VSPH_GRADE_DIFFERS;

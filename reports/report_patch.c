@@ -284,8 +284,10 @@ int vsph_report_patch_claims(struct vsph_report *R) {
   int agree = 0;
   char *o = ours;
   size_t left = sizeof ours;
-  int m = snprintf(o, left, "perturbed +-%g dx, n = 20-100, order in dx "
-                   "(-2 x slope against N), ours (paper's):", PERTURB);
+  int m = snprintf(o, left,
+                   "perturbed +-%g dx, n = 20-100, order in dx "
+                   "(-2 x slope against N), ours (paper's):",
+                   PERTURB);
   for (int f = 0; f < NLAP && m > 0 && (size_t)m < left; f++) {
     const double p = -2.0 * slope_n(&t.err[1][0][0], f),
                  pp = -2.0 * slope_n(&PAPER[1][0][0], f);
@@ -298,9 +300,9 @@ int vsph_report_patch_claims(struct vsph_report *R) {
   if (!st)
     st = vsph_report_claim(
         R,
-        "Under disorder VISC-01, 02 and 04 converge at about first order in "
-        "dx (their relative error grows like 1/dx) and VISC-03 at about "
-        "second (Zheng Table 2, Fig. 5)",
+        "Under disorder the paper's Err (eq. 21, which carries a factor dx^2) "
+        "falls at about first order in dx for VISC-01, 02 and 04 and at about "
+        "second for VISC-03 (Zheng Table 2, Fig. 5)",
         "slopes against N -0.55, -0.54, -1.06, -0.55 (Table 2)", ours,
         "each coordinate shifted by U(-0.2, 0.2) dx [reconstructed]; "
         "whole-set metric; as above otherwise",
@@ -332,9 +334,10 @@ int vsph_report_patch_claims(struct vsph_report *R) {
         "cheapest (Zheng Table 3, Sec. 6)",
         "VISC-02 : 01 : 03 : 04 = 0.81 : 1 : 2.25 : 1.93", ours,
         "vsph's implementation (one neighbour pass for all four; VISC-03 "
-        "and 04 add the renormalisation) on this machine, whatever its "
-        "load (report.md's run facts); the paper's code and machine are "
-        "not ours, so only the ranking is compared",
+        "and 04 add the renormalisation) on this machine, one best-of-3 "
+        "timing per form with no spread measured, whatever the load "
+        "(report.md's run facts); the paper's code and machine are not "
+        "ours, so only the ranking is compared",
         dear == 2 && cheap == 1
             ? "reproduced on a substitute: the same dearest and cheapest"
             : "differs: another ranking here");

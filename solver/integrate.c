@@ -577,6 +577,16 @@ static int own_image(const struct vsph_integrate *s, size_t i, size_t j) {
          s->gh->src[p->id[j] - base] == p->id[i];
 }
 
+/* 1 when the run's walls hold a free-slip mirror plane (a plane of
+ * symmetry, where a particle may meet its own image). */
+static int symmetry_planes(const struct vsph_integrate *s) {
+  const struct vsph_walls *w = &s->props.walls;
+  if (!s->gh || w->solid || w->noslip) return 0;
+  for (int q = 0; q < w->n; q++)
+    if (w->kind[q] == VSPH_WALLS_MIRROR) return 1;
+  return 0;
+}
+
 /* The closest pair with a fluid particle a, its neighbour b any particle
  * (fluid, a ghost or periodic image, a wall particle): into a[0], b[0]
  * with its squared distance returned; and the closest pair but for a
@@ -650,7 +660,9 @@ int vsph_integrate_check(struct vsph_integrate *s) {
     closest_pair(s, aa, bb, dd);
     size_t a = aa[0], b = bb[0];
     double d = s->min_dist;
-    if (a < p->n && !s->props.walls.noslip && own_image(s, a, b)) {
+    if (a < p->n && symmetry_planes(s)) {
+      /* the step's closest pair may have been an own image at one of its
+       * stages: the closest distinct pair now decides */
       if (!(sqrt(dd[1]) < ip->min_dist)) {
         s->reason[0] = '\0';
         return 0;

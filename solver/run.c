@@ -404,12 +404,14 @@ int vsph_run_estimate(const struct vsph_run_props *rp,
 /* The relaxed start (Solver:relax, docs/theory.md section 5): the fluid
  * at rest, its density and pressure the scene's, runs for relax seconds
  * with its velocity damped after each step by exp(-dt/tau), tau =
- * relax/20 (20 time constants: any motion the lattice's imbalance at the
- * surface starts falls by e^-20, and a slow mode of angular frequency w
- * settles unless w^2 tau^2 << 1/400); then the clock is set back to 0 and
- * each fluid particle takes the scene's initial velocity where it settled,
- * with the density it settled to. A relaxation that goes unstable is an
- * error (the run cannot start). */
+ * relax/20 (a drag -u/tau: an underdamped mode's amplitude falls by
+ * e^(-T/(2 tau)) = e^-10 over the relaxation; an overdamped slow mode of
+ * angular frequency w decays as e^(-w^2 tau T) = e^(-20 w^2 tau^2), so it
+ * settles where w^2 tau^2 is not much below 1/20: the standing wave's own
+ * mode, w tau of about 0.55 at relax = 2 s, is near critical); then the
+ * clock is set back to 0 and each fluid particle takes the scene's
+ * initial velocity where it settled, with the density it settled to. A
+ * relaxation that goes unstable is an error (the run cannot start). */
 static int relax(struct vsph_run *r) {
   struct vsph_integrate *s = r->integ;
   struct vsph_particles *p = s->p;

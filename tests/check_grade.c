@@ -33,13 +33,16 @@ START_TEST(test_orders) {
 }
 END_TEST
 
-/* Converges at some order: both orders at or above 0.5 (0.5 itself
- * counts: it rounds up to 1), one of them, neither; NaN or a stop. The
- * vortex patch's MGF on rings (1.89, 1.88) converges. */
+/* Converges at some order: both orders above 0.5 (0.5 itself does not
+ * count, as vsph_grade_order_is has it: it does not round to 1), one of
+ * them, neither; NaN or a stop. The vortex patch's MGF on rings (1.89,
+ * 1.88) converges. */
 START_TEST(test_converges) {
   ck_assert_int_eq(vsph_grade_converges(1.89, 1.88, 0), VSPH_GRADE_AGREES);
-  ck_assert_int_eq(vsph_grade_converges(0.5, 0.5, 0), VSPH_GRADE_AGREES);
-  ck_assert_int_eq(vsph_grade_converges(0.5, nextafter(0.5, 0.0), 0),
+  ck_assert_int_eq(
+      vsph_grade_converges(nextafter(0.5, 1.0), nextafter(0.5, 1.0), 0),
+      VSPH_GRADE_AGREES);
+  ck_assert_int_eq(vsph_grade_converges(nextafter(0.5, 1.0), 0.5, 0),
                    VSPH_GRADE_PARTLY);
   ck_assert_int_eq(vsph_grade_converges(0.3, -1.0, 0), VSPH_GRADE_DIFFERS);
   ck_assert_int_eq(vsph_grade_converges(1.0, 1.0, 1), VSPH_GRADE_UNMEASURED);
@@ -104,8 +107,8 @@ START_TEST(test_larger) {
 END_TEST
 
 /* A stop holds when every run at the steps tried stopped, or none did;
- * PVWF on the wave at H/dx = 120 (stopped at CFL 0.5, 1 and 1.5, ran at
- * 2) is marginal; no runs: -1. */
+ * one that stopped at three CFLs and ran at the fourth (as PVWF on the
+ * wave at H/dx = 120 once did) is marginal; no runs: -1. */
 START_TEST(test_stop_holds) {
   const int all[3] = {1, 1, 1}, none[2] = {0, 0}, mixed[4] = {1, 1, 1, 0};
   ck_assert_int_eq(vsph_grade_stop_holds(all, 3), 1);

@@ -416,10 +416,13 @@ END_TEST
 
 /* The two-pass forms' null mode (report_choices.c): the particle-scale
  * checkerboard has no gradient at an interior particle by either first
- * pass, so PVWF's and model B's dissipation of it is a surface share only,
- * which halves as the square is laid twice as fine (80 against 40 across:
- * 0.5 within 10 %, the surface rows' own lattice effects) and is below
- * 5 % of MEAF's already at 40 across. MGF's over MEAF's is K/2 <cos^2> = 2
+ * pass, so PVWF's and model B's dissipation of it is a surface share only:
+ * the surface rows are 4n of the n^2 particles, so it halves as the square
+ * is laid twice as fine (80 against 40 across: 0.5, within 10 % for the
+ * corners' and the rows' own lattice effects, measured 0.498 and 0.498),
+ * and at 40 across it is below 5 % of MEAF's (measured 2.8 % and 0.8 %:
+ * the surface rows' share, about 4/40 of the particles, times how much
+ * less they dissipate). MGF's over MEAF's is K/2 <cos^2> = 2
  * exactly: the field is along x, and the lattice's four-fold symmetry
  * makes the weighted mean of cos^2 one half (rounding: 1e-12). */
 START_TEST(test_null_mode) {

@@ -214,6 +214,18 @@ START_TEST(test_interp_cubic) {
   ck_assert(isnan(vsph_series_interp_cubic(t, y, 7, 3.1 + 1e-9)));
   const double tl[3] = {0.0, 1.0, 3.0}, yl[3] = {1.0, 3.0, 7.0};
   ck_assert_double_eq_tol(vsph_series_interp_cubic(tl, yl, 3, 2.0), 5.0, 1e-15);
+  /* local: the four rows nearest x, no other. On y = t^4 at t = 0..6, x =
+   * 2.5 takes rows 1-4, whose cubic through (1,1), (2,16), (3,81), (4,256)
+   * gives 2.5^4 - (2.5-1)(2.5-2)(2.5-3)(2.5-4) = 39.0625 - 0.5625 = 38.5
+   * (a quartic's Lagrange remainder, worked by hand); a far row changed
+   * moves nothing */
+  double t4[7], y4[7];
+  for (int k = 0; k < 7; k++) t4[k] = k, y4[k] = pow(k, 4.0);
+  ck_assert_double_eq_tol(vsph_series_interp_cubic(t4, y4, 7, 2.5), 38.5,
+                          1e-12);
+  y4[6] = 1e6;
+  ck_assert_double_eq_tol(vsph_series_interp_cubic(t4, y4, 7, 2.5), 38.5,
+                          1e-12);
 }
 END_TEST
 
@@ -244,14 +256,19 @@ END_TEST
  * rows over [0, 2]): every E_h(0) = E(0) = 3, so the successive
  * differences of E_h/E_h(0) are C (h_k^p - h_{k+1}^p) t / 3, whose max
  * over [0, 2] is at t = 2 and whose RMS over it is 2/sqrt(3) times the
- * factor. Tolerances: the coarser rung is interpolated by the cubic,
- * whose error at these steps (fourth derivative at most 100, dt^4/24 at
- * most 1e-10) is below 1e-6 of the differences' 1e-4 to 1e-2 scale; the
- * trapezoid rule on t^2 errs by about dt^2/6 (1e-5 relative) on the RMS;
- * the orders then by less than 1e-3. The finest rung's remainder by
- * Richardson is C h_2^p 2/3 exactly at the exact order. Then the finest
- * rung stopped at t = 1.3 (its later rows NaN): the span is its last row
- * and the differences end there. */
+ * factor. Tolerances: the rungs are interpolated by the cubic, whose
+ * error here is at most 2e-9 of E (measured), 7e-10 of E/E(0); the
+ * largest difference sits at t = 2, a row every rung shares, where no
+ * interpolation enters, so dmax holds to 1e-6 relative; stopped at 1.3,
+ * the last row is the finest rung's own and the others' error, 7e-10,
+ * stays within 1e-6 of 2 f (2e-9 at the smallest f, p = 2); the trapezoid
+ * rule on t^2 errs by about dt^2/6 (1e-5 relative) on the RMS; the orders
+ * then by less than 1e-3. The finest rung's remainder by Richardson is
+ * C h_2^p T/3 exactly at the exact order. Then the finest rung stopped at
+ * t = 1.3 (its later rows NaN): the span is its last row and the
+ * differences end there. Last, unequal ratios (h = 0.1, 0.04, 0.025: 2.5
+ * then 1.6) at p = 1.3: the order by the bisection, and the remainder at
+ * the last ratio 1.6, again C h_2^p T/3 (1e-3 relative). */
 START_TEST(test_selfconv) {
   enum { NMAX = 420 };
   static double t[3][NMAX], E[3][NMAX];
@@ -295,6 +312,30 @@ START_TEST(test_selfconv) {
       ck_assert_double_eq_tol(sc.dmax[k], f * sc.span, 1e-6 * f * T);
     }
     ck_assert_double_eq_tol(sc.order_max, p, 1e-3);
+  }
+  /* unequal ratios, p = 1.3 */
+  {
+    const double hu[3] = {0.1, 0.04, 0.025}, p = 1.3;
+    struct vsph_series_rung rung[3];
+    for (int k = 0; k < 3; k++) {
+      const size_t n = 380 + 17 * (size_t)k;
+      const double dt = T / (double)(n - 1);
+      for (size_t i = 0; i < n; i++) {
+        t[k][i] = i == 0 || i == n - 1
+                      ? dt * (double)i
+                      : dt * ((double)i + 0.3 * sin((double)(i + k)));
+        E[k][i] = 2.0 + exp(-t[k][i]) * cos(3.0 * t[k][i]) +
+                  C * pow(hu[k], p) * t[k][i];
+      }
+      rung[k] = (struct vsph_series_rung){t[k], E[k], n, hu[k]};
+    }
+    struct vsph_series_selfconv sc;
+    ck_assert_int_eq(vsph_series_selfconv(rung, 3, &sc), VSPH_OK);
+    ck_assert_double_eq_tol(sc.order_max, p, 1e-3);
+    ck_assert_double_eq_tol(sc.order_rms, p, 1e-3);
+    /* Richardson at the last ratio 1.6: d_12 / (1.6^p - 1) = C h_2^p T/3 */
+    const double rem = C * pow(hu[2], p) * T / 3.0;
+    ck_assert_double_eq_tol(sc.remainder, rem, 1e-3 * rem);
   }
   /* refused: one rung, a spacing that does not fall, E(0) = 0 */
   vsph_test_silence();
