@@ -367,20 +367,20 @@ static int wave_table(struct vsph_report *R) {
   const struct wave_fig *e = &fig[V_EPS005][M], *er = &fig[V_EPS005R][M];
   snprintf(t, sizeof t,
            "MGF's energy lost beyond Lighthill's loss is %.3f, %.3f, %.3f and "
-           "%.3f mJ/m at eps = 0.05, 0.02, 0.01 and 0.005%s, while the wave's "
-           "own energy E_k(0) falls a hundredfold, so at eps = 0.005 it is "
-           "%.1f times Lighthill's loss. A start relaxed at rest takes it to "
-           "%.3f mJ/m there, and the still tank, relaxed, loses %.4f mJ/m "
-           "beyond Lighthill's: it comes with the wave's motion, not with the "
-           "start%s",
+           "%.3f mJ/m at eps = 0.05, 0.02, 0.01 and 0.005%s; the wave's own "
+           "energy E_k(0) falls a hundredfold over that range, so at eps = "
+           "0.005 the loss is %.1f times Lighthill's. A start relaxed at rest "
+           "takes the excess to %.3f mJ/m there, and the still tank, relaxed, "
+           "loses %.4f mJ/m beyond Lighthill's: the excess comes with the "
+           "wave's motion, not with the start%s",
            xs[0], xs[1], xs[2], xs[3],
            /* within a factor 2 (a documented choice), against the
             * hundredfold fall of E_k(0) */
            xhi < 2.0 * xlo
-               ? ": within a factor 2 at every steepness, one loss that does "
-                 "not shrink with the wave"
-               : ": it shrinks with the steepness, but far slower than the "
-                 "wave's energy",
+               ? " (within a factor 2 at every steepness: one loss that does "
+                 "not shrink with the wave)"
+               : " (it shrinks with the steepness, far less than the wave's "
+                 "energy does)",
            e->loss, 1e3 * er->excess, 1e3 * fig[V_STILL + 1][M].excess,
            /* the excess larger than the wave's own loss */
            e->loss > 2.0 ? ". So inside the paper's range, eps < 0.01, the "
