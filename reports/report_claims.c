@@ -875,9 +875,11 @@ static int vortex_claims(struct vsph_report *R, const struct finest *fi) {
 }
 
 /* Whether formulation @p f's stops on scene @p sc hold when only the time
- * step changes, on the step study's two rungs (vsph_grade_stop_holds):
- * 1 both hold, 0 one moves (marginal), and a phrase saying which into
- * @p buf ("" when no run of the study stopped). */
+ * step changes, on the step study's two rungs (vsph_grade_stop_holds),
+ * and (the standing wave) when only the rounding does, at section 12's
+ * rung: 1 they hold, 0 one moves (marginal), and a phrase saying which
+ * into @p buf ("" when none moved). The scene's own CFL is the study's
+ * last (2). */
 static int stops_hold(struct vsph_report *R, int sc, int f, char *buf,
                       size_t len, int *holds) {
   const struct vsph_report_ladderdef *L =
@@ -910,6 +912,28 @@ static int stops_hold(struct vsph_report *R, int sc, int f, char *buf,
         first = 0;
       }
   }
+  if (sc != 2) return VSPH_OK;
+  /* with rounding: the run at the scene's own step against the same run
+   * with its lattice shifted by 1e-9 dx (section 12) */
+  struct vsph_jobs_spec rs;
+  int k;
+  int st = vsph_report_choices_rounding(R, f, &rs, &k);
+  if (st) return st;
+  int s[VSPH_REPORT_SPEED_NCFL];
+  double t[VSPH_REPORT_SPEED_NCFL];
+  if ((st = vsph_report_speed_stops(R, sc, f, k, s, t))) return st;
+  struct vsph_jobs_run r;
+  if ((st = vsph_report_runs_get(&R->runs, &rs, &r))) return st;
+  const int shifted = !r.ok, own = s[VSPH_REPORT_SPEED_NCFL - 1];
+  if (shifted != own) {
+    *holds = 0;
+    append(buf, len, &m,
+           "%s at %s/dx = %zu it stops %s its lattice shifted by 1e-9 dx "
+           "(another rounding) and runs on %s",
+           m ? ";" : "", vsph_scene_find(L->scene)->length_name, L->res[k],
+           shifted ? "with" : "without", shifted ? "without" : "with");
+  }
+  vsph_report_runs_free(&r);
   return VSPH_OK;
 }
 
@@ -1052,7 +1076,7 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
              mg, w[PVWF].t_unstable, WL->t_end,
              holds[PVWF] ? ""
                          : " (marginal: at the coarser rungs its stops move "
-                           "with the time step)",
+                           "with the time step or with rounding)",
              WL->res[K]);
   else if (meaf_fails && pvwf_best && mgf_under)
     snprintf(verdict, sizeof verdict,
@@ -1248,6 +1272,7 @@ int vsph_report_claims_plan(struct vsph_report *R) {
    * stops' marginality), and the runs of sections 10, 11 */
   int st = vsph_report_runs_plan_ladders(&R->runs, 1);
   if (!st) st = vsph_report_speed_plan_steps(R, 2);
+  if (!st) st = vsph_report_choices_plan_rounding(R);
   if (!st) st = vsph_report_channel_plan(R);
   if (!st) st = vsph_report_contact_plan(R);
   return st;

@@ -44,6 +44,13 @@ int vsph_report_stability_write(struct vsph_report *R);
  * two-pass forms' null mode, the symmetry planes (report_choices.c). */
 int vsph_report_choices_plan(struct vsph_report *R);
 int vsph_report_choices_write(struct vsph_report *R);
+/* The standing wave's run of formulation @p f at the defaults with the
+ * lattice shifted by 1e-9 dx (another rounding of the same run) into
+ * @p rs, and the ladder's rung it runs at (the speed study's) into
+ * @p rung_k; and its plan, for every formulation (the claims read it). */
+int vsph_report_choices_rounding(const struct vsph_report *R, int f,
+                                 struct vsph_jobs_spec *rs, int *rung_k);
+int vsph_report_choices_plan_rounding(struct vsph_report *R);
 /* Form @p form's dissipation of the particle-scale checkerboard over
  * MEAF's, on a square of @p n across at h/dx 4/3 (the null mode). */
 int vsph_report_choices_null(size_t n, int form, double *ratio);
