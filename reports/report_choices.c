@@ -197,6 +197,15 @@ struct wave_fig {
   char why[64];
 };
 
+double vsph_report_choices_peak(const double *t, const double *Ek, size_t n,
+                                double *tpeak) {
+  size_t m = 0;
+  for (size_t k = 1; k < n; k++)
+    if (Ek[k] > Ek[m]) m = k;
+  *tpeak = t[m];
+  return Ek[m] / Ek[0];
+}
+
 static int wave_fig(struct vsph_report *R, const struct vsph_jobs_spec *rs,
                     struct wave_fig *w) {
   struct vsph_scene sc;
@@ -219,14 +228,7 @@ static int wave_fig(struct vsph_report *R, const struct vsph_jobs_spec *rs,
                E1 = r.Ek[n] + r.Ep[n] + r.Ec[n];
   const double lost = (E0 - E1) / r.Ek[0];
   w->t = r.t[n];
-  w->peak = r.Ek[0];
-  w->tpeak = r.t[0];
-  for (size_t k = 1; k <= n; k++)
-    if (r.Ek[k] > w->peak) {
-      w->peak = r.Ek[k];
-      w->tpeak = r.t[k];
-    }
-  w->peak /= r.Ek[0];
+  w->peak = vsph_report_choices_peak(r.t, r.Ek, n + 1, &w->tpeak);
   w->loss = vsph_report_runs_loss_ratio(&r, n);
   w->lamb = lost / -expm1(-2.0 * gamma * r.t[n]);
   w->excess = (E0 - E1) - r.Ek[0] * (1.0 - r.Emr[n] / r.Emr[0]);

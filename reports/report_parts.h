@@ -54,6 +54,11 @@ int vsph_report_choices_plan_rounding(struct vsph_report *R);
 /* Form @p form's dissipation of the particle-scale checkerboard over
  * MEAF's, on a square of @p n across at h/dx 4/3 (the null mode). */
 int vsph_report_choices_null(size_t n, int form, double *ratio);
+/* The largest of the @p n > 0 values @p Ek over the first, and its time
+ * t[k] into @p tpeak (the first of equal peaks): above 1 only where a run
+ * gains kinetic energy, as a tank that stirs itself at rest. */
+double vsph_report_choices_peak(const double *t, const double *Ek, size_t n,
+                                double *tpeak);
 int vsph_report_claims_write(struct vsph_report *R);
 
 int vsph_report_patch_write(struct vsph_report *R);
