@@ -1387,12 +1387,19 @@ static int visc_claims(struct vsph_report *R, const struct chan *c) {
   }
   for (int f = 0; f < 4; f++)
     if (f != best && c->cav[base + f].ok) next = fmin(next, u[f]);
+  /* each form's figure, or "stopped" where its run did not end */
+  char fig[4][32];
+  for (int f = 0; f < 4; f++)
+    if (c->cav[base + f].ok && isfinite(u[f]))
+      snprintf(fig[f], sizeof fig[f], "%.1f %%", 100 * u[f]);
+    else
+      snprintf(fig[f], sizeof fig[f], "stopped");
   snprintf(ours, sizeof ours,
            "Re 1000, %zu x %zu, mean over t = %.0f-%.0f s: |u_min - u_min,"
-           "Ghia|/U VISC-01 %.1f %%, VISC-02 %.1f %%, VISC-03 %.1f %%, "
-           "VISC-04 %.1f %% (largest swing over that window %.1f points)",
+           "Ghia|/U VISC-01 %s, VISC-02 %s, VISC-03 %s, VISC-04 %s (largest "
+           "swing over that window %.1f points)",
            CAV[base].res, CAV[base].res, 0.8 * CAV[base].t_end, CAV[base].t_end,
-           100 * u[0], 100 * u[1], 100 * u[2], 100 * u[3], 100 * swing);
+           fig[0], fig[1], fig[2], fig[3], 100 * swing);
   snprintf(setup, sizeof setup,
            "the paper's cavity at Re 1000 on our weakly compressible "
            "transport-velocity scheme with Adami et al.'s wall particles "
@@ -1820,7 +1827,9 @@ static int walls_couette_claims(struct vsph_report *R, const struct chan *c) {
         "larger early and near the walls", ours, setup,
         vsph_grade_larger(e0, e1, 0.0) && vsph_grade_larger(b0, b1, 0.0)
             ? "partly: larger early (E and B), on a substitute set-up; near "
-              "the walls not measured (profiles.csv holds it)"
+              "the walls not measured (the runs keep profiles at the start "
+              "and the end only: an early profile across the gap is what it "
+              "would take)"
             : early);
   return st;
 }

@@ -189,10 +189,12 @@ static int wave_of(const struct vsph_jobs_spec *rs, struct vsph_scene *sc) {
  * (loss) and the exact linear decay's (lamb); the energy lost beyond
  * Lighthill's, in J/m, whatever the wave's size (excess: phase-free, as
  * both losses are); delta-SPH's work over E_k(0) (delta: positive, it
- * adds energy); the kinetic energy's peak over E_k(0) and when (peak,
- * tpeak: above 1 only where the run stirs itself, as in the still tank). */
+ * adds energy); the viscous power's share of the loss, -int P_visc dt
+ * over Lighthill's loss as loss is (visc); the kinetic energy's peak over
+ * E_k(0) and when (peak, tpeak: above 1 only where the run stirs itself, as in
+ * the still tank). */
 struct wave_fig {
-  double loss, lamb, excess, delta, t, peak, tpeak;
+  double loss, lamb, excess, delta, t, peak, tpeak, visc;
   int ok;
   char why[64];
 };
@@ -232,6 +234,10 @@ static int wave_fig(struct vsph_report *R, const struct vsph_jobs_spec *rs,
   w->loss = vsph_report_runs_loss_ratio(&r, n);
   w->lamb = lost / -expm1(-2.0 * gamma * r.t[n]);
   w->excess = (E0 - E1) - r.Ek[0] * (1.0 - r.Emr[n] / r.Emr[0]);
+  /* the viscous term's own share: -int P_visc dt over E_k(0), against
+   * Lighthill's lost share as loss is */
+  w->visc = -vsph_series_integral(r.t, r.Pv, n) / r.Ek[0] /
+            (1.0 - r.Emr[n] / r.Emr[0]);
   const double *pd = vsph_csv_column(r.energy, "P_delta");
   w->delta = pd ? vsph_series_integral(r.t, pd, n) / r.Ek[0] : 0.0;
   w->ok = r.ok;
@@ -371,29 +377,38 @@ static int wave_table(struct vsph_report *R) {
       fig[V_BASE][P].loss - 1.0 > 0.5 * (b->loss - 1.0) && b->loss > 1.0;
   const double dr = fig[V_RELAX][M].loss - b->loss,
                dc = fig[V_C0][M].loss - b->loss;
-  char t[1000];
+  char t[1600];
   snprintf(t, sizeof t,
            "MGF loses %.3f of Lighthill's loss (%.3f of the exact linear "
            "decay's), PVWF %.3f%s; a relaxed start %s (%.3f); the time step "
            "moves it within %.3f to %.3f (CFL 0.5 to 2)",
            b->loss, b->lamb, fig[V_BASE][P].loss,
            pvwf_too ? ": PVWF, whose dissipation is exact at the discrete "
-                      "level, carries the excess too, so it is not MGF's "
-                      "lattice bias"
+                      "level, carries about as much, a sign that the excess "
+                      "is not MGF's lattice bias (not a proof: PVWF's still "
+                      "tank stirs itself, below)"
                     : "",
            fabs(dr) <= noise ? "leaves it"
            : dr > 0          ? "raises it"
                              : "lowers it",
            fig[V_RELAX][M].loss, lo, hi);
   vsph_text_set(&R->tv, "excess", "%s", t);
-  snprintf(t, sizeof t, "doubling the sound speed %s it (%.3f)%s",
+  snprintf(t, sizeof t,
+           "doubling the sound speed %s it (%.3f)%s; the viscous power "
+           "carries %s of it (-int P_visc dt: %.3f of Lighthill's loss, the "
+           "whole %.3f; with c0 doubled %.3f and %.3f): the viscous term "
+           "dissipates more than the wave's own shear would, and what it "
+           "damps beyond that (acoustic or particle-scale motion) is not "
+           "isolated here",
            fabs(dc) <= noise ? "leaves"
            : dc > 0          ? "raises"
                              : "lowers",
            fig[V_C0][M].loss,
-           dc > noise ? ": it goes with the weakly compressible scheme's "
-                        "acoustics, not with the viscous term"
-                      : "");
+           dc > noise ? ", which a compressibility error of order Mach^2 "
+                        "would not do"
+                      : "",
+           fabs(b->visc - b->loss) <= noise ? "all" : "part", b->visc, b->loss,
+           fig[V_C0][M].visc, fig[V_C0][M].loss);
   vsph_text_set(&R->tv, "c0", "%s", t);
   /* the energy lost beyond Lighthill's, in mJ/m, over the steepness */
   double xs[4], xlo = INFINITY, xhi = -INFINITY;
@@ -409,9 +424,10 @@ static int wave_table(struct vsph_report *R) {
            "%.3f mJ/m at eps = 0.05, 0.02, 0.01 and 0.005%s; the wave's own "
            "energy E_k(0) falls a hundredfold over that range, so at eps = "
            "0.005 the loss is %.1f times Lighthill's. A start relaxed at rest "
-           "takes the excess to %.3f mJ/m there, and the still tank, relaxed, "
-           "loses %.4f mJ/m beyond Lighthill's: the excess comes with the "
-           "wave's motion, not with the start%s",
+           "takes the excess to %.3f mJ/m there, and the still tank, relaxed "
+           "(eps = 0.05's viscosity: a like-for-like control at 0.05 only), "
+           "loses %.4f mJ/m beyond Lighthill's: at eps = 0.05 MGF's excess "
+           "comes with the wave's motion, not with the start%s",
            xs[0], xs[1], xs[2], xs[3],
            /* within a factor 2 (a documented choice), against the
             * hundredfold fall of E_k(0) */
@@ -432,8 +448,10 @@ static int wave_table(struct vsph_report *R) {
   snprintf(t, sizeof t,
            "delta-SPH in its simple form %s (its work %+.2f E_k(0); the "
            "energy lost over Lighthill's %.3f)",
-           d->delta > 0.0 ? "adds energy under gravity: it diffuses the "
-                            "hydrostatic density gradient itself"
+           d->delta > 0.0 ? "adds energy under gravity, most likely by "
+                            "diffusing the hydrostatic density gradient "
+                            "itself (not isolated here: a still tank with "
+                            "delta-SPH would)"
                           : "takes energy",
            d->delta, d->loss);
   vsph_text_set(&R->tv, "delta", "%s", t);
