@@ -447,13 +447,13 @@ static int wave_table(struct vsph_report *R) {
   const struct wave_fig *d = &fig[V_DELTA][M];
   snprintf(t, sizeof t,
            "delta-SPH in its simple form %s (its work %+.2f E_k(0); the "
-           "energy lost over Lighthill's %.3f)",
-           d->delta > 0.0 ? "adds energy under gravity, most likely by "
-                            "diffusing the hydrostatic density gradient "
-                            "itself (not isolated here: a still tank with "
-                            "delta-SPH would)"
-                          : "takes energy",
-           d->delta, d->loss);
+           "energy lost over Lighthill's %.3f)%s",
+           d->delta > 0.0 ? "adds energy under gravity" : "takes energy",
+           d->delta, d->loss,
+           d->delta > 0.0 ? ", most likely by diffusing the hydrostatic "
+                            "density gradient itself (not isolated here: a "
+                            "still tank with delta-SPH would)"
+                          : "");
   vsph_text_set(&R->tv, "delta", "%s", t);
   /* the still tank, relaxed: does a form stir itself at rest? Its kinetic
    * energy's peak above ten times its start (a documented choice: a

@@ -740,10 +740,14 @@ static int cart_holds(struct vsph_report *R,
   size_t m = 0;
   if (*holds && !s[NCART]) return VSPH_OK; /* none stopped: nothing to say */
   if (*holds) {
+    char a[32], b[32];
+    snprintf(a, sizeof a, "%.3g", tlo);
+    snprintf(b, sizeof b, "%.3g", thi);
     append(buf, len, &m,
            "%s's Cartesian stop at R/dx = %zu holds at CFL 0.5, 1, 1.5 and 2 "
-           "and with a 1e-9 dx shift (t = %.3g-%.3g s)",
-           vsph_viscous_label(f), L->res[0], tlo, thi);
+           "and with a 1e-9 dx shift (t = %s%s%s s)",
+           vsph_viscous_label(f), L->res[0], a, strcmp(a, b) ? "-" : "",
+           strcmp(a, b) ? b : "");
     return VSPH_OK;
   }
   append(buf, len, &m,
