@@ -1156,7 +1156,8 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
                        "%.1e)",
              d1, d2);
     if (!holds[f])
-      append(verdict, sizeof verdict, &m, " (marginal:%s)", marg[f]);
+      append(verdict, sizeof verdict, &m, " (its stability marginal:%s)",
+             marg[f]);
   }
   append(verdict, sizeof verdict, &m,
          "; 'converged at 240' is not graded (the paper gives no precision; "

@@ -18,7 +18,7 @@ struct vsph_plot;
 
 /* One row of the claims table. */
 struct vsph_report_claim {
-  char claim[256], paper[256], ours[800], verdict[400];
+  char claim[256], paper[256], ours[1200], verdict[600];
   char setup[800]; /* how our set-up, quantity and method differ from the
                       paper's, and the [reconstructed] choices the verdict
                       rests on ("none" where nothing differs) */
