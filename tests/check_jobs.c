@@ -256,7 +256,10 @@ END_TEST
  * scene's own CFL (the ladder's run): the standing wave and the vortex
  * patch (CFL 2) have -step0.5, -step1 and -step1.5 runs and no -step2;
  * the stretching square (CFL 1) -step0.5, -step1.5 and -step2 and no
- * -step1; each of these for 3 forms on 2 resolutions. */
+ * -step1; each of these for 3 forms on 2 resolutions. The vortex patch's
+ * Cartesian disc has its coarsest rung again at CFL 0.5, 1, 1.5 and with
+ * a 1e-9 dx shift (-cartesian-step1 and -cartesian-perturb1e-9 once per
+ * form), counted apart. */
 START_TEST(test_plan_listing) {
   const char *dir = tmpdir();
   char out[700];
@@ -271,7 +274,8 @@ START_TEST(test_plan_listing) {
   FILE *f = fopen(out, "r");
   ck_assert_ptr_nonnull(f);
   char line[8192];
-  size_t n = 0, base = 0, shear = 0, step[3][2] = {{0}};
+  size_t n = 0, base = 0, shear = 0, step[3][2] = {{0}}, cstep[3] = {0},
+         cround[3] = {0};
   static const char *const scn[3] = {
       "runs/standing-wave-", "runs/vortex-patch-", "runs/stretching-square-"};
   while (fgets(line, sizeof line, f)) {
@@ -282,14 +286,21 @@ START_TEST(test_plan_listing) {
     shear += strstr(line, " contact --out ") != NULL;
     for (int s = 0; s < 3; s++)
       if (strstr(line, scn[s])) {
-        step[s][0] += strstr(line, "-step1\t") != NULL;
-        step[s][1] += strstr(line, "-step2\t") != NULL;
+        const int cart = strstr(line, "-cartesian-step") != NULL;
+        step[s][0] += !cart && strstr(line, "-step1\t") != NULL;
+        step[s][1] += !cart && strstr(line, "-step2\t") != NULL;
+        cstep[s] += cart && strstr(line, "-cartesian-step1\t") != NULL;
+        cround[s] += strstr(line, "-cartesian-perturb1e-9\t") != NULL;
       }
   }
   fclose(f);
   for (int s = 0; s < 3; s++) {
     ck_assert_uint_eq(step[s][0], s < 2 ? 6 : 0);
     ck_assert_uint_eq(step[s][1], s < 2 ? 0 : 6);
+    /* the Cartesian disc's coarsest rung again (the claims' stop check):
+     * the vortex patch only, 3 forms, one rung */
+    ck_assert_uint_eq(cstep[s], s == 1 ? 3 : 0);
+    ck_assert_uint_eq(cround[s], s == 1 ? 3 : 0);
   }
   /* the baseline's channel rows (Poiseuille and Couette, every form),
    * its 5 cavity rows and its cylinders row have the tag "base"; the
