@@ -874,13 +874,24 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
            "U*/U0 fitted %.3f and %.3f at 2 and 4 us (eq. 27: %.3f); RMS "
            "misfit of the exact profile %.3f U0",
            nb->ustar[0][0], nb->ustar[0][1], nb->ustar_exact[0], nb->rms[0][0]);
-  char verdict[240];
+  /* U* = (e_R - e_L)/(e_R + e_L) with e = sqrt(rho eta) on each side
+   * (U0 = 1, the sides at -1 and +1): the ratio a = e_R/e_L = (1 + U*)/
+   * (1 - U*), so a fitted U* gives the viscosity ratio the particles
+   * carry, glycerol's over paraffin's (a_fit/a_exact)^2 = 1 + vr times
+   * eq. (27)'s (paraffin's over glycerol's: 1/(1 + vr)) */
+  const double u0 = nb->ustar[0][0], ue = nb->ustar_exact[0];
+  const double vr =
+      pow(((1 + u0) / (1 - u0)) / ((1 + ue) / (1 - ue)), 2.0) - 1.0;
+  char verdict[400];
   snprintf(verdict, sizeof verdict,
-           "reproduced on a substitute: the interface within a twentieth of "
-           "U0 of eq. (27)'s velocity (fitted %+.1f %% and %+.1f %% of it at "
-           "2 and 4 us), with U0 and paraffin's viscosity reconstructed",
-           100 * (nb->ustar[0][0] / nb->ustar_exact[0] - 1),
-           100 * (nb->ustar[0][1] / nb->ustar_exact[0] - 1));
+           "partly: the interface's velocity is %+.1f %% and %+.1f %% off "
+           "eq. (27)'s at 2 and 4 us; U* goes with the square root of "
+           "the viscosity ratio, so the particles carry paraffin's over "
+           "glycerol's %+.0f %% off eq. (27)'s, of the order of the numerical "
+           "viscosity the lead rows measure (U0 and paraffin's viscosity "
+           "reconstructed)",
+           100 * (u0 / ue - 1), 100 * (nb->ustar[0][1] / ue - 1),
+           100 * (1 / (1 + vr) - 1));
   if (!st)
     st = vsph_report_claim(
         R,
@@ -891,12 +902,11 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
         "U0 = 10 m/s [reconstructed: not given; the problem is linear in "
         "it]; paraffin's eta = 80 mPa s [reconstructed: the handbook gives "
         "25-80]; U* fitted to the profiles",
-        /* within a twentieth of U0: a documented choice of ours (the
-         * paper's 0.669 is eq. (27) itself, exact; ours is fitted to the
-         * particles' profile, whose error the choice allows); on a
-         * substitute: U0 and paraffin's viscosity are reconstructed */
-        fabs(nb->ustar[0][0] - nb->ustar_exact[0]) < 0.05 ? verdict
-                                                          : "differs");
+        /* eq. (27) is exact and the paper's Fig. 7 states no precision:
+         * a fitted U* off it is "partly", with the viscosity ratio it
+         * implies; beyond a tenth of U0 (a documented choice: twice the
+         * profile's RMS misfit, 0.03-0.04 U0) it "differs" */
+        fabs(u0 - ue) < 0.1 ? verdict : "differs");
   if (!st)
     st = vsph_report_claim(
         R,
