@@ -259,7 +259,8 @@ END_TEST
  * -step1; each of these for 3 forms on 2 resolutions. The vortex patch's
  * Cartesian disc has its coarsest rung again at CFL 0.5, 1, 1.5 and with
  * a 1e-9 dx shift (-cartesian-step1 and -cartesian-perturb1e-9 once per
- * form), counted apart. */
+ * form), counted apart; the stretching square's PVWF at its coarsest rung
+ * with delta-SPH once (its stop's check). */
 START_TEST(test_plan_listing) {
   const char *dir = tmpdir();
   char out[700];
@@ -275,7 +276,7 @@ START_TEST(test_plan_listing) {
   ck_assert_ptr_nonnull(f);
   char line[8192];
   size_t n = 0, base = 0, shear = 0, step[3][2] = {{0}}, cstep[3] = {0},
-         cround[3] = {0};
+         cround[3] = {0}, sdelta[3] = {0};
   static const char *const scn[3] = {
       "runs/standing-wave-", "runs/vortex-patch-", "runs/stretching-square-"};
   while (fgets(line, sizeof line, f)) {
@@ -291,6 +292,7 @@ START_TEST(test_plan_listing) {
         step[s][1] += !cart && strstr(line, "-step2\t") != NULL;
         cstep[s] += cart && strstr(line, "-cartesian-step1\t") != NULL;
         cround[s] += strstr(line, "-cartesian-perturb1e-9\t") != NULL;
+        sdelta[s] += strstr(line, "-delta0.1\t") != NULL;
       }
   }
   fclose(f);
@@ -301,6 +303,9 @@ START_TEST(test_plan_listing) {
      * the vortex patch only, 3 forms, one rung */
     ck_assert_uint_eq(cstep[s], s == 1 ? 3 : 0);
     ck_assert_uint_eq(cround[s], s == 1 ? 3 : 0);
+    /* delta-SPH at the coarsest rung: the square's PVWF (its stop's
+     * check) and the wave's three forms (section 12) */
+    ck_assert_uint_eq(sdelta[s], s == 2 ? 1 : s == 0 ? 3 : 0);
   }
   /* the baseline's channel rows (Poiseuille and Couette, every form),
    * its 5 cavity rows and its cylinders row have the tag "base"; the
