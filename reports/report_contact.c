@@ -906,7 +906,10 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
          * a fitted U* off it is "partly", with the viscosity ratio it
          * implies; beyond a tenth of U0 (a documented choice: twice the
          * profile's RMS misfit, 0.03-0.04 U0) it "differs" */
-        fabs(u0 - ue) < 0.1 ? verdict : "differs");
+        !isfinite(u0)         ? "not tested: no interface velocity fitted (the "
+                                "run's profiles.csv)"
+        : fabs(u0 - ue) < 0.1 ? verdict
+                              : "differs");
   if (!st)
     st = vsph_report_claim(
         R,

@@ -18,8 +18,8 @@ struct vsph_plot;
 
 /* One row of the claims table. */
 struct vsph_report_claim {
-  char claim[256], paper[256], ours[1200], verdict[600];
-  char setup[800]; /* how our set-up, quantity and method differ from the
+  char claim[256], paper[256], ours[1600], verdict[1000];
+  char setup[1000]; /* how our set-up, quantity and method differ from the
                       paper's, and the [reconstructed] choices the verdict
                       rests on ("none" where nothing differs) */
   char see[32]; /* the part that shows it ("scenes"): the link in the table */
