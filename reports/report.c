@@ -99,6 +99,16 @@ int vsph_report_part_find(const char *name) {
 
 /* --------------------------------------------------------------- helpers */
 
+/* the parts build a claim's text in buffers larger than every field, so
+ * a text too long for its field reaches the check below whole */
+_Static_assert(VSPH_REPORT_CLAIM_BUF >
+                       sizeof((struct vsph_report_claim *)0)->ours &&
+                   VSPH_REPORT_CLAIM_BUF >
+                       sizeof((struct vsph_report_claim *)0)->verdict &&
+                   VSPH_REPORT_CLAIM_BUF >
+                       sizeof((struct vsph_report_claim *)0)->setup,
+               "a part's claim buffer must exceed the table's fields");
+
 int vsph_report_claim(struct vsph_report *R, const char *claim,
                       const char *paper, const char *ours, const char *setup,
                       const char *verdict) {

@@ -1206,7 +1206,7 @@ static void pois_setup(char *buf, size_t len, const char *what) {
 static int pois_claims(struct vsph_report *R, const struct chan *c,
                        const double *r, const double *e) {
   int st = VSPH_OK;
-  char ours[320];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   snprintf(ours, sizeof ours,
            "Re 0.5, %zu x %zu, t* = 4.9, eq. 38 (RMS (u-U)/U0): E %.1f %% "
            "(%.2f %%), D (4.24) %.1f %% (%.2f %%), C %.1f %% (%.2f %%), "
@@ -1214,7 +1214,7 @@ static int pois_claims(struct vsph_report *R, const struct chan *c,
            c->res_p, c->res_p, 100 * r[P_E], 100 * e[P_E], 100 * r[P_D424],
            100 * e[P_D424], 100 * r[P_C], 100 * e[P_C], 100 * r[P_D496],
            100 * e[P_D496]);
-  char setup[600], what[96];
+  char setup[VSPH_REPORT_CLAIM_BUF], what[96];
   snprintf(what, sizeof what, "Re 0.5, cubic spline, dx/h 0.637, %zu x %zu%s",
            c->res_p, c->res_p,
            c->res_p == 20 ? " as the paper's" : " (the paper's: 20 x 20)");
@@ -1299,7 +1299,7 @@ static int pois_claims(struct vsph_report *R, const struct chan *c,
            "%.1f %%; transverse agitation v_rms/U0 at the end: B %.2g and "
            "PVWF %.2g (the two two-pass forms), E %.2g, A[0] %.2g",
            100 * r[P_B], 100 * r[P_E], 100 * r[P_D424], vb, vp, ve, va);
-  char bverdict[400];
+  char bverdict[VSPH_REPORT_CLAIM_BUF];
   /* an agitation where v_rms is at least half a decade (grade.h) above
    * E's; PVWF's named where it is agitated alike */
   snprintf(bverdict, sizeof bverdict,
@@ -1331,7 +1331,7 @@ static int pois_claims(struct vsph_report *R, const struct chan *c,
 /* The state equations and the pressure reduction (Basa §6.1.1). */
 static int eos_claims(struct vsph_report *R, const struct chan *c) {
   int st = VSPH_OK;
-  char ours[320], setup[600], what[160];
+  char ours[VSPH_REPORT_CLAIM_BUF], setup[VSPH_REPORT_CLAIM_BUF], what[160];
   snprintf(
       what, sizeof what,
       "E at Re 0.3, %zu x %zu (the paper's Fig. 2: 20 x 20); gas gamma 1.4 and "
@@ -1370,7 +1370,8 @@ static int eos_claims(struct vsph_report *R, const struct chan *c) {
 /* Zheng et al.'s four Laplacian forms on Poiseuille. */
 static int visc_claims(struct vsph_report *R, const struct chan *c) {
   int st = VSPH_OK;
-  char ours[320], setup[600], v[320];
+  char ours[VSPH_REPORT_CLAIM_BUF], setup[VSPH_REPORT_CLAIM_BUF],
+      v[VSPH_REPORT_CLAIM_BUF];
   /* Zheng et al.'s metric at the finest resolution run: their 40 x 40 to
    * 40 s at FULL, 20 x 20 to 30 s quick */
   const int base = R->runs.full ? CAV_V01_40 : CAV_V01;
@@ -1454,7 +1455,7 @@ static int visc_claims(struct vsph_report *R, const struct chan *c) {
 static int corr_claims(struct vsph_report *R, const struct chan *c,
                        const double *r) {
   int st = VSPH_OK;
-  char ours[320], setup[600], what[160];
+  char ours[VSPH_REPORT_CLAIM_BUF], setup[VSPH_REPORT_CLAIM_BUF], what[160];
   snprintf(what, sizeof what,
            "Re 0.5, %zu x %zu; how the corrections enter each form "
            "[reconstructed]",
@@ -1509,7 +1510,7 @@ static int corr_claims(struct vsph_report *R, const struct chan *c,
 /* The long-time robustness over Re (Basa §6.1.4, Fig. 5 and 7). */
 static int map_claims(struct vsph_report *R, const struct chan *c) {
   int st = VSPH_OK;
-  char ours[320], setup[600], what[200];
+  char ours[VSPH_REPORT_CLAIM_BUF], setup[VSPH_REPORT_CLAIM_BUF], what[200];
   snprintf(what, sizeof what,
            "%zu x %zu as the paper's, to t* = 27.7 (its stopping rule), Re "
            "%s (the paper's 0.1 to 10^4); failure: eq. 38 >= 12 %% from t* = "
@@ -1544,7 +1545,7 @@ static int map_claims(struct vsph_report *R, const struct chan *c) {
            "D and C hold at Re = %g and fail from Re = %g",
            c->res_m, c->res_m, any, who >= 0 ? MAP_LABEL[who] : "none", held,
            first);
-  char verdict[200];
+  char verdict[VSPH_REPORT_CLAIM_BUF];
   if (any <= 2.0)
     snprintf(verdict, sizeof verdict,
              "reproduced on a substitute: the failure criterion (eq. 38 >= 12 "
@@ -1715,7 +1716,7 @@ static int visc02_claim(struct vsph_report *R, const struct chan *c) {
   int first = !v[1]->ok && t[1] < 0.1 * t_end;
   for (int f = 0; f < 4; f++)
     if (f != 1) first &= t[f] >= 10.0 * t[1];
-  char ours[1400];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   snprintf(ours, sizeof ours,
            "Re 1000 cavity, 40 x 40 (the paper's coarsest) to %g s, "
            "transport velocity: VISC-02 %s; VISC-01 %s; VISC-03 %s; VISC-04 "
@@ -1746,7 +1747,7 @@ static int untested_claims(struct vsph_report *R, const struct chan *c) {
 /* The wall velocities at start-up and Couette's start-up. */
 static int walls_couette_claims(struct vsph_report *R, const struct chan *c) {
   int st = VSPH_OK;
-  char ours[320];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   int better = 0;
   char *p = ours;
   p += snprintf(p, sizeof ours, "RMS at t* = 0.1, linear / mirror:");
@@ -1783,7 +1784,7 @@ static int walls_couette_claims(struct vsph_report *R, const struct chan *c) {
            "%% of v0 (A uncorrected left out: not Galilean invariant, and not "
            "the paper's scheme)",
            c->res_c, 100 * worst);
-  char setup[600];
+  char setup[VSPH_REPORT_CLAIM_BUF];
   snprintf(setup, sizeof setup,
            "Morris' set-up as the paper's, %zu rows, cubic spline, %s; our "
            "scheme: continuity density, linear law, RK4, ghost walls (the "
@@ -1814,7 +1815,7 @@ static int walls_couette_claims(struct vsph_report *R, const struct chan *c) {
   /* "larger", as the paper says, with no factor asked; each error comes
    * from one row of one run, with no swing measured beside it, so any
    * excess counts (the ratios are in the row) */
-  char early[200];
+  char early[VSPH_REPORT_CLAIM_BUF];
   snprintf(early, sizeof early,
            "differs: the early error is not the larger (early over late, E "
            "%.3g times, B %.3g times)",
@@ -1859,7 +1860,7 @@ static int p003_claim(struct vsph_report *R, const struct chan *c) {
     else
       snprintf(w[q], sizeof w[q], "stopped at %.3g s", c->p3[q].t_unstable);
   }
-  char ours[1024], setup[1024];
+  char ours[VSPH_REPORT_CLAIM_BUF], setup[VSPH_REPORT_CLAIM_BUF];
   snprintf(ours, sizeof ours,
            "40 rows, t = 1 s, RMS error over the peak speed: Poiseuille B "
            "%s, E %s; Couette B %s, E %s; Poiseuille with ghost walls in "
@@ -1873,7 +1874,7 @@ static int p003_claim(struct vsph_report *R, const struct chan *c) {
            "step rule's dt (the paper: 1e-6 s), " P003_DIFFS);
   const double worst = fmax(e[0], e[2]);
   const int grows = ok && e[0] > 1.05 * at(&c->p3[0], "u_err", 0.5);
-  char vd[1024];
+  char vd[VSPH_REPORT_CLAIM_BUF];
   if (ok && worst < 0.01)
     snprintf(vd, sizeof vd, "reproduced: B within %.2f %% of the series",
              100 * worst);
@@ -1903,7 +1904,8 @@ static int p003_claim(struct vsph_report *R, const struct chan *c) {
 
 /* Vukcevic et al.'s small oscillations, measured as the rows' zigzag. */
 static int p003_osc_claim(struct vsph_report *R, const struct chan *c) {
-  char ours[1024], setup[1024], vd[1024];
+  char ours[VSPH_REPORT_CLAIM_BUF], setup[VSPH_REPORT_CLAIM_BUF],
+      vd[VSPH_REPORT_CLAIM_BUF];
   const struct vsph_references_zigzag *z = c->z3;
   snprintf(ours, sizeof ours,
            "the rows' zigzag at t = 1 s (second difference of the error, "
@@ -1957,7 +1959,8 @@ static int p003_osc_claim(struct vsph_report *R, const struct chan *c) {
 static int p003_sweep_claims(struct vsph_report *R, const struct chan *c) {
   struct sweep w;
   sweep_figures(c, &w);
-  char read[1024], ours[1600], setup[1024], vd[1024];
+  char read[1024], ours[VSPH_REPORT_CLAIM_BUF], setup[VSPH_REPORT_CLAIM_BUF],
+      vd[VSPH_REPORT_CLAIM_BUF];
   sweep_read(c, read, sizeof read);
   snprintf(ours, sizeof ours,
            "B on the paper's Poiseuille at c = 2.236e-6 (the printed), "
@@ -2058,7 +2061,8 @@ static double cavity_swing(const struct vsph_jobs_run *r, const char *col) {
 
 /* Basa et al.'s own cavity set-up, as far as the paper gives it. */
 static int cavity_p000_claim(struct vsph_report *R, const struct chan *c) {
-  char a[240], b[240], w[240], ours[900], setup[600];
+  char a[240], b[240], w[240], ours[VSPH_REPORT_CLAIM_BUF],
+      setup[VSPH_REPORT_CLAIM_BUF];
   stop_phrase(&c->cav[CAV_P000], a, sizeof a);
   stop_phrase(&c->cav[CAV_P000_1000], b, sizeof b);
   stop_phrase(&c->cav[CAV_P000_W], w, sizeof w);
@@ -2089,7 +2093,7 @@ static int cavity_p000_claim(struct vsph_report *R, const struct chan *c) {
 
 static int cavity_claims(struct vsph_report *R, const struct chan *c) {
   int st = cavity_p000_claim(R, c);
-  char ours[320], setup[600];
+  char ours[VSPH_REPORT_CLAIM_BUF], setup[VSPH_REPORT_CLAIM_BUF];
   snprintf(setup, sizeof setup,
            "Adami et al.'s wall particles and transport velocity (density by "
            "summation over fluid and walls), quintic h = dx, linear law, "
@@ -2139,7 +2143,7 @@ static int cavity_claims(struct vsph_report *R, const struct chan *c) {
            "%%, E %.2f %% (gap %.2f points); their swing over that window: "
            "D %.2f, E %.2f points",
            100 * eD, 100 * eE, 100 * gap, 100 * sD, 100 * sE);
-  char vd[200];
+  char vd[VSPH_REPORT_CLAIM_BUF];
   if (!(gap > swing))
     snprintf(vd, sizeof vd,
              "not tested: the gap (%.2f points) is below the runs' own swing "

@@ -67,7 +67,7 @@ static int scaling_claims(struct vsph_report *R) {
       round_[fk][f] = r.rounding[f];
     }
   }
-  char ours[320];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   snprintf(ours, sizeof ours,
            "pure strain, 2-D, h/dx 4/3, h halved 4 times from 0.1: slopes "
            "MGF %.3f, MEAF %.3f, PVWF %.3f",
@@ -125,7 +125,7 @@ static int dissipation_claims(struct vsph_report *R) {
   }
   /* the surface part's order in h/L from 80 to 160 across */
   const double so = log2(fabs(d[4].surface_error) / fabs(d[0].surface_error));
-  char ours[320];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   snprintf(ours, sizeof ours,
            "square: lattice error %+.2f %% at h/dx 4/3, %+.2f %% at h/dx 3; "
            "surface part %+.2f %% at 80 across, %+.2f %% at 160 (order %.2f "
@@ -214,7 +214,7 @@ static int tensor_claims(struct vsph_report *R) {
   if (!st) st = tensor_gaps(R, 0, gf);
   if (st) return st;
   const size_t nk = vsph_kernel_count();
-  char ours[800];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   snprintf(ours, sizeof ours,
            "largest entry gap to S (full support) and S/2 (half), by "
            "quadrature, over the %zu kernels in 2-D and 3-D: %.1e and %.1e",
@@ -299,7 +299,7 @@ static int tangential_claim(struct vsph_report *R) {
   }
   const double sn = vsph_scaling_slope(r.h, nn, r.levels);
   const double stt = vsph_scaling_slope(r.h, tt, r.levels);
-  char ours[800];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   char tang[96];
   if (tmax < 1e-9)
     snprintf(tang, sizeof tang, "at rounding level (at most %.1e of it)", tmax);
@@ -352,7 +352,7 @@ static int stokes_claim(struct vsph_report *R) {
   if (st) return st;
   const double P_mg = -8.0 * mu * A * A * L * L;  /* lambda = mu */
   const double P_div = -4.0 * mu * A * A * L * L; /* 2 mu D:D alone */
-  char ours[800];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   snprintf(ours, sizeof ours,
            "isotropic expansion u = A x, square of %zu across, h/dx 4/3: MGF "
            "dissipates %.4f of -(2 mu D:D + mu (tr D)^2)|Omega| (its lambda "
@@ -409,7 +409,7 @@ static int signs_claim(struct vsph_report *R) {
       last = s;
     }
   }
-  char ours[800];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   snprintf(ours, sizeof ours,
            "sign changes of the y component along the stretching square's "
            "axis at t = 0, over the rows within 3h of the top (%zu across, "
@@ -498,7 +498,7 @@ static int square_onset_claim(struct vsph_report *R,
                               const struct vsph_report_ladder *lr,
                               const struct vsph_report_richardson *rr) {
   int st = VSPH_OK;
-  char ours[600];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   const struct vsph_report_ladderdef *L =
       vsph_report_runs_ladder(&R->runs, 1, 0);
   int pv_unstable = 0;
@@ -551,7 +551,8 @@ static int square_onset_claim(struct vsph_report *R,
   /* the stop goes with the scheme's missing density diffusion where the
    * coarsest rung stopped without it and runs to its end with it */
   const int stop_is_scheme = !lr->ok[PVWF][0] && dok;
-  char verdict[1100], setup[1100], dclause[400];
+  char verdict[VSPH_REPORT_CLAIM_BUF], setup[VSPH_REPORT_CLAIM_BUF],
+      dclause[400];
   snprintf(dclause, sizeof dclause,
            "; at L/dx = %zu the stop goes with the scheme's lack of density "
            "diffusion [reconstructed: off], the departure survives it (with "
@@ -600,7 +601,7 @@ static int square_onset_claim(struct vsph_report *R,
 static int square_claims(struct vsph_report *R, const struct finest *fi) {
   const struct vsph_jobs_run *run = fi->run[1];
   const size_t rs = vsph_report_runs_ladder(&R->runs, 1, 0)->res[2];
-  char ours[800];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   /* P/P_exact = 1 - d, with d = (P - P_exact)/|P_exact| and P_exact < 0 */
   const double d_m = vsph_report_runs_diss0(&run[MGF]);
   const double d_e = vsph_report_runs_diss0(&run[MEAF]);
@@ -610,7 +611,7 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
            "%+.2f %% (negative: more dissipation than exact), MEAF at %.1f "
            "%% of exact",
            rs, d_p, 100 * d_m, 100 * (1 - d_e));
-  char setup[600];
+  char setup[VSPH_REPORT_CLAIM_BUF];
   snprintf(setup, sizeof setup,
            "t = 0 only, the discrete initial field (Poisson pressure by FFT); "
            "L/dx = %zu%s",
@@ -674,7 +675,7 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
            L->res[0], L->res[2]);
   const enum vsph_grade g =
       vsph_grade_orders(sv->order_max, sv->order_rms, 1, sv->partial);
-  char verdict[400];
+  char verdict[VSPH_REPORT_CLAIM_BUF];
   if (g == VSPH_GRADE_AGREES)
     snprintf(verdict, sizeof verdict,
              "partly: MGF converges at first order between successive "
@@ -860,7 +861,8 @@ static int vortex_claims(struct vsph_report *R, const struct finest *fi) {
   const double Re =
       vp->R * vp->R * vsph_references_vortex_initial(ref, vp->R) / vp->nu;
   vsph_references_vortex_free(ref);
-  char setup[1100], ours[1700], verdict[1100], stops[2][600];
+  char setup[VSPH_REPORT_CLAIM_BUF], ours[VSPH_REPORT_CLAIM_BUF],
+      verdict[VSPH_REPORT_CLAIM_BUF], stops[2][600];
   snprintf(setup, sizeof setup,
            "initial profile (6.39) [reconstructed] to meet the paper's "
            "stated Re and omega_inf (Re %.1f, omega_inf %.4f omega0); disc "
@@ -991,7 +993,7 @@ static int vortex_claims(struct vsph_report *R, const struct finest *fi) {
       ly.self[0][MGF].order_max, ly.self[0][MGF].order_rms, ly.err[0][MGF][K],
       L->res[K], ly.self[1][MGF].dmax[0], ly.self[1][MGF].dmax[1],
       ly.self[1][MGF].order_max, ly.self[1][MGF].order_rms, ly.err[1][MGF][K]);
-  char setup2[1400];
+  char setup2[VSPH_REPORT_CLAIM_BUF + 256];
   snprintf(setup2, sizeof setup2,
            "measure: the ladder's self-convergence (successive resolutions, "
            "no reference) and the error against the Bessel series at the "
@@ -1161,7 +1163,8 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
   const struct vsph_report_ladderdef *WL =
       vsph_report_runs_ladder(&R->runs, 2, 0);
   const int K = VSPH_REPORT_LADDER - 1;
-  char ours[1700], body[800], setup[1100], verdict[1100];
+  char ours[VSPH_REPORT_CLAIM_BUF], body[800], setup[VSPH_REPORT_CLAIM_BUF],
+      verdict[VSPH_REPORT_CLAIM_BUF];
   snprintf(setup, sizeof setup,
            "steepness eps = 0.05 [reconstructed] (illegible in the source, "
            "which bounds Lighthill's decay to eps < 0.01); free-slip bottom "
@@ -1378,7 +1381,7 @@ static int cost_claim(struct vsph_report *R, const struct finest *fi) {
                ? v[f].cpu_s / ((double)v[f].steps * (double)v[f].n)
                : (double)NAN;
   const double noise = fabs(c[MEAF] / c[MGF] - 1.0), q = c[PVWF] / c[MGF];
-  char ours[400];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   snprintf(ours, sizeof ours,
            "CPU time per particle and step on the vortex patch (R/dx = %zu, "
            "rings): PVWF %.2f times MGF's, MEAF %.2f (the runs' "

@@ -751,7 +751,7 @@ int vsph_report_contact_write(struct vsph_report *R) {
 static int shear_claims(struct vsph_report *R, const struct cres *cr,
                         const struct cnum *nb) {
   int st = VSPH_OK;
-  char ours[320];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   const double w = coef(&cr->r[C_W]), b = coef(&cr->r[C_B]);
   const double ew = w / nb->paper_w - 1.0, eb = b / nb->paper_b - 1.0;
   snprintf(ours, sizeof ours,
@@ -851,7 +851,7 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
 /* The correcting tensor and two materials (Parshikov §4). */
 static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
   int st = VSPH_OK;
-  char ours[320];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   const double e1 = nb->eta_eff[2];
   snprintf(ours, sizeof ours,
            "zeta = 1: eta_eff = %.2f mPa s against the physical 2.3; zeta = "
@@ -882,7 +882,7 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
   const double u0 = nb->ustar[0][0], ue = nb->ustar_exact[0];
   const double vr =
       pow(((1 + u0) / (1 - u0)) / ((1 + ue) / (1 - ue)), 2.0) - 1.0;
-  char verdict[400];
+  char verdict[VSPH_REPORT_CLAIM_BUF];
   snprintf(verdict, sizeof verdict,
            "partly: the interface's velocity is %+.1f %% and %+.1f %% off "
            "eq. (27)'s at 2 and 4 us; U* goes with the square root of "
@@ -939,7 +939,7 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
 /* The cylinder arrays' drag (Parshikov §5). */
 static int cyl_claims(struct vsph_report *R) {
   int st = VSPH_OK;
-  char ours[320];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   struct cyl cy;
   memset(&cy, 0, sizeof cy);
   st = cyl_load(R, &cy);
@@ -947,7 +947,7 @@ static int cyl_claims(struct vsph_report *R) {
    * paper's third case, d/S = 0.3 (20 per diameter) */
   const int full = R->runs.full;
   const double fine = full ? cy.ratio[CY_Z0_80] : cy.ratio[CY_Z0_60];
-  char vd[400];
+  char vd[VSPH_REPORT_CLAIM_BUF];
   if (cy.ratio[CY_Z1_40] < 1.35 && cy.ratio[CY_P1_40] < 1.35 &&
       cy.ratio[CY_Z0_40] > 2.0)
     snprintf(vd, sizeof vd,

@@ -191,7 +191,7 @@ int vsph_report_patch_claims(struct vsph_report *R) {
   struct table t;
   int st = measure(&t);
   if (st) return st;
-  char ours[320];
+  char ours[VSPH_REPORT_CLAIM_BUF];
   const double eq = fabs(t.err[0][4][2] - t.err[0][4][3]) / t.err[0][4][2];
   snprintf(ours, sizeof ours,
            "uniform, 100 x 100: VISC-03 %.3g, VISC-04 %.3g (relative "
@@ -331,7 +331,7 @@ int vsph_report_patch_claims(struct vsph_report *R) {
    * tenth of each other are not ranked (a documented choice: the timing
    * scatter of a shared two-core machine, several per cent) */
   const double spread = w[dear] / w[cheap] - 1.0;
-  char verdict[600];
+  char verdict[VSPH_REPORT_CLAIM_BUF];
   if (spread < 0.10)
     snprintf(verdict, sizeof verdict,
              "differs on a substitute: in vsph's implementation (one "
