@@ -269,24 +269,34 @@ END_TEST
  * differences end there. Last, unequal ratios (h = 0.1, 0.04, 0.025: 2.5
  * then 1.6) at p = 1.3: the order by the bisection, and the remainder at
  * the last ratio 1.6, again C h_2^p T/3 (1e-3 relative). */
+enum { NMAX = 420 };
+
+/* Three rungs E_h(t) = 2 + e^-t cos 3t + C h_k^p t on [0, T], rung k on
+ * its own jittered grid of 380 + 17 k rows (both ends exact), into @p t,
+ * @p E and @p rung. */
+static void ladder(double t[3][NMAX], double E[3][NMAX], const double h[3],
+                   double C, double p, double T,
+                   struct vsph_series_rung rung[3]) {
+  for (int k = 0; k < 3; k++) {
+    const size_t n = 380 + 17 * (size_t)k;
+    const double dt = T / (double)(n - 1);
+    for (size_t i = 0; i < n; i++) {
+      t[k][i] = i == 0 || i == n - 1
+                    ? dt * (double)i
+                    : dt * ((double)i + 0.3 * sin((double)(i + k)));
+      E[k][i] =
+          2.0 + exp(-t[k][i]) * cos(3.0 * t[k][i]) + C * pow(h[k], p) * t[k][i];
+    }
+    rung[k] = (struct vsph_series_rung){t[k], E[k], n, h[k]};
+  }
+}
+
 START_TEST(test_selfconv) {
-  enum { NMAX = 420 };
   static double t[3][NMAX], E[3][NMAX];
   const double C = 0.5, hs[3] = {0.1, 0.05, 0.025}, T = 2.0;
   for (int p = 1; p <= 2; p++) {
     struct vsph_series_rung rung[3];
-    for (int k = 0; k < 3; k++) {
-      const size_t n = 380 + 17 * (size_t)k;
-      const double dt = T / (double)(n - 1);
-      for (size_t i = 0; i < n; i++) {
-        t[k][i] = i == 0 || i == n - 1
-                      ? dt * (double)i
-                      : dt * ((double)i + 0.3 * sin((double)(i + k)));
-        E[k][i] = 2.0 + exp(-t[k][i]) * cos(3.0 * t[k][i]) +
-                  C * pow(hs[k], p) * t[k][i];
-      }
-      rung[k] = (struct vsph_series_rung){t[k], E[k], n, hs[k]};
-    }
+    ladder(t, E, hs, C, p, T, rung);
     struct vsph_series_selfconv sc;
     ck_assert_int_eq(vsph_series_selfconv(rung, 3, &sc), VSPH_OK);
     ck_assert_int_eq(sc.partial, 0);
@@ -317,18 +327,7 @@ START_TEST(test_selfconv) {
   {
     const double hu[3] = {0.1, 0.04, 0.025}, p = 1.3;
     struct vsph_series_rung rung[3];
-    for (int k = 0; k < 3; k++) {
-      const size_t n = 380 + 17 * (size_t)k;
-      const double dt = T / (double)(n - 1);
-      for (size_t i = 0; i < n; i++) {
-        t[k][i] = i == 0 || i == n - 1
-                      ? dt * (double)i
-                      : dt * ((double)i + 0.3 * sin((double)(i + k)));
-        E[k][i] = 2.0 + exp(-t[k][i]) * cos(3.0 * t[k][i]) +
-                  C * pow(hu[k], p) * t[k][i];
-      }
-      rung[k] = (struct vsph_series_rung){t[k], E[k], n, hu[k]};
-    }
+    ladder(t, E, hu, C, p, T, rung);
     struct vsph_series_selfconv sc;
     ck_assert_int_eq(vsph_series_selfconv(rung, 3, &sc), VSPH_OK);
     ck_assert_double_eq_tol(sc.order_max, p, 1e-3);
