@@ -1201,18 +1201,11 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
            WL->res[0], WL->res[K], body, lr->self[MGF].remainder);
   /* beside E_k's differences, the energy lost by t_end (the damping the
    * next row grades), rung by rung: does it close in as E_k does? */
+  /* the ladder's own losses (read with it), NaN where a rung stopped */
   double qr[NFORM][VSPH_REPORT_LADDER];
-  for (int f = 0; f < NFORM && !st; f++)
-    for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
-      const struct vsph_jobs_spec rs = {
-          WL->scene, vsph_viscous_name(f), WL->res[k], WL->t_end, NULL, NULL};
-      struct vsph_jobs_run r;
-      if ((st = vsph_report_runs_get(&R->runs, &rs, &r))) break;
-      qr[f][k] =
-          r.ok ? vsph_report_runs_loss_ratio(&r, r.nrow - 1) : (double)NAN;
-      vsph_report_runs_free(&r);
-    }
-  if (st) return st;
+  for (int f = 0; f < NFORM; f++)
+    for (int k = 0; k < VSPH_REPORT_LADDER; k++)
+      qr[f][k] = lr->ok[f][k] ? lr->loss[f][k] : (double)NAN;
   m = strlen(ours);
   append(ours, sizeof ours, &m,
          "; the energy lost by t_end over Lighthill's loss, rung by rung:");
@@ -1304,8 +1297,7 @@ static int wave_claims(struct vsph_report *R, const struct finest *fi) {
   const double em = fabs(loss[MGF] - 1), ee = fabs(loss[MEAF] - 1),
                ep = fabs(loss[PVWF] - 1);
   const int meaf_fails = vsph_grade_apart(ee, em);
-  double noise = NAN;
-  if ((st = wave_noise(R, &noise))) return st;
+  const double noise = wnoise; /* the damping figure's, as above */
   const int mgf_under = vsph_grade_larger(1.0, loss[MGF], noise),
             mgf_over = vsph_grade_larger(loss[MGF], 1.0, noise);
   const int pvwf_best = vsph_grade_larger(fmin(em, ee), ep, noise);
