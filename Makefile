@@ -54,7 +54,7 @@ CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 .PHONY: all deps check test report baseline bench archive full-sitting full-report asan valgrind-check prefix-check \
         lib install uninstall \
         format format-check mutate fuzz slurm-check fresh-check \
-        fresh-check-tests paraview-check clean
+        fresh-check-tests paraview-check reference clean
 
 all: deps $(BUILD)/vsph
 
@@ -258,6 +258,19 @@ fresh-check-tests:
 # `make check` (ParaView is large).
 paraview-check:
 	scripts/paraview-check
+
+# The finite-volume references the report reads from reference/data
+# (OpenFOAM v1912: the stretching square by interFoam, the cavity by
+# icoFoam; reference/README.md): each case run again in build/reference
+# (an interrupted one resumes there) and compared with the committed files
+# to REFERENCE_TOL of each column's largest magnitude. Hours on two cores;
+# REFERENCE_CASES picks some (scripts/reference --list). Not part of
+# `make check` or `make report`.
+REFERENCE_TOL ?= 1e-6
+REFERENCE_CASES ?=
+reference:
+	@scripts/install-deps openfoam
+	scripts/reference --tol $(REFERENCE_TOL) $(REFERENCE_CASES)
 
 # Each coefficient of each physical term mutated in turn (scripts/mutate):
 # a test must fail for every one. Slow (one rebuild per mutation); not part
