@@ -42,6 +42,7 @@ struct vsph_scene_square {
   double c0;           /*!< sound speed (m/s); 0: THEORY 5's rule */
   double t_end;        /*!< default end time (s) */
   size_t poisson_grid; /*!< interior nodes per side; 0: 4 res */
+  size_t pressure;     /*!< initial pressure: 1 the Poisson solution, 0 zero */
 };
 
 /** Standing wave (THEORY 6.3): given values, then derived ones. */

@@ -1,6 +1,7 @@
 /* Stretching square: a free square under pure strain (Colagrossi et al.
  * 2011, Sec. VI B; THEORY 6.2). Initial pressure from lap p = -2 rho A0^2
- * with p = 2 mu n.D0.n on the edges, by the FFTW sine-transform solver.
+ * with p = 2 mu n.D0.n on the edges, by the FFTW sine-transform solver
+ * (or zero, Scene:pressure=0, to measure what the Poisson start is worth).
  * Parameters: struct vsph_scene_square (solver/scene.h). */
 #include <math.h>
 
@@ -27,6 +28,9 @@ static const struct vsph_params_spec params[] = {
     VSPH_PARAMS_INT_SPEC(S, poisson_grid, 0, 0, 4096,
                          "interior nodes per side of the pressure grid; 0: "
                          "4 res (at least 16)"),
+    VSPH_PARAMS_INT_SPEC(S, pressure, 1, 0, 1,
+                         "initial pressure: 1 the Poisson solution, 0 zero "
+                         "(the flow then settles it by sound waves)"),
 };
 #undef S
 
@@ -118,7 +122,8 @@ static int init(const struct vsph_scene *sc, size_t res,
     const double x = p->pos[0][i], y = p->pos[1][i];
     p->vel[0][i] = sq->A0 * x;
     p->vel[1][i] = -sq->A0 * y;
-    vsph_scene_set_pressure(sc, p, i, vsph_poisson_interp(ps, x, y));
+    vsph_scene_set_pressure(sc, p, i,
+                            sq->pressure ? vsph_poisson_interp(ps, x, y) : 0.0);
   }
   vsph_poisson_free(ps);
   return VSPH_OK;
