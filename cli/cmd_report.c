@@ -166,7 +166,7 @@ static int judge_inputs(void) {
 int vsph_cmd_report_main(int argc, char **argv) {
   const char *dir = "reports/out", *only = NULL;
   const char *partition = NULL, *limit = NULL, *budget = NULL, *archive = NULL;
-  const char *skip = NULL, *beside = NULL, *from = NULL;
+  const char *skip = NULL, *beside = NULL, *from = NULL, *fv = NULL;
   int full = 0, plan = 0, slurm = 0, assemble = 0;
   size_t jobs = 0, threads = 0;
   const struct vsph_args_spec own[] = {
@@ -231,6 +231,11 @@ int vsph_cmd_report_main(int argc, char **argv) {
        "scene and formulation, the run at the paper's resolution from the "
        "run archive ADIR (reports/full; make report gives it), with "
        "whether it stands (judged as --archive's entries.md judges it)"},
+      {"--fv", VSPH_ARGS_STRING, &fv, "FDIR",
+       "the committed finite-volume references the stretching square and "
+       "the cavity are judged against (OpenFOAM runs that make reference "
+       "made; reference/README.md): default reference/data when it is a "
+       "folder here; none: without them (their rows say not tested)"},
       {"--archive", VSPH_ARGS_STRING, &archive, "ADIR",
        "run nothing: store the sealed runs of DIR/runs in the run archive "
        "ADIR (reports/full for the FULL report): of each, what the parts "
@@ -265,7 +270,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
                                   "[--partition P] [--time T] | --assemble] "
                                   "[--threads T] [--budget TIME "
                                   "[--skip-archived ADIR]] [--beside ADIR] "
-                                  "[--from-archive ADIR] "
+                                  "[--from-archive ADIR] [--fv FDIR] "
                                   "| --archive ADIR",
                                   about,
                                   own,
@@ -359,9 +364,18 @@ int vsph_cmd_report_main(int argc, char **argv) {
     if (!bad) bad = judge_inputs();
     if (bad) return bad;
   }
+  /* the finite-volume references: a folder, or none */
+  const char *fv_dir = NULL;
+  struct stat fs;
+  if (fv && strcmp(fv, "none")) {
+    if (!*fv || strlen(fv) > 400 || stat(fv, &fs) != 0 || !S_ISDIR(fs.st_mode))
+      return vsph_args_fail(CMD, "--fv: '%.400s' is not a folder", fv);
+    fv_dir = fv;
+  } else if (!fv && stat("reference/data", &fs) == 0 && S_ISDIR(fs.st_mode))
+    fv_dir = "reference/data";
   if (archive) {
-    if (beside || skip || from || plan || slurm || assemble || pool || budget ||
-        only || full)
+    if (fv || beside || skip || from || plan || slurm || assemble || pool ||
+        budget || only || full)
       return vsph_args_fail(CMD,
                             "--archive runs nothing: it takes --out alone");
     if (!*archive || strlen(archive) > 400)
@@ -478,6 +492,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
   rp.from_archive = from;
   rp.beside = beside;
   rp.judge = &judge;
+  rp.fv = fv_dir;
   /* SIGINT/SIGTERM: the runs in progress stop at a checkpoint, uncached */
   const volatile sig_atomic_t *stop = rp.stop = vsph_args_catch_stop();
   /* but for the runs (which stop after a checkpoint), a signal ends the

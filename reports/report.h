@@ -59,6 +59,10 @@ struct vsph_report_props {
    *  paper's resolutions the summary shows beside the quick figures, each
    *  judged by *judge (which must then be set) */
   const char *beside;
+  /** if not NULL: the folder of committed finite-volume references
+   *  (reference/data; reports/fvref.h) the square and the cavity are
+   *  judged against; NULL: those rows say not tested */
+  const char *fv;
 };
 
 /** How the report's missing runs are run. Every mode first lists every

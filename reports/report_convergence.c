@@ -8,6 +8,7 @@
 #include "../io/csv.h"
 #include "../io/files.h"
 #include "../io/plot.h"
+#include "report_fv.h"
 #include "report_parts.h"
 
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
@@ -113,7 +114,9 @@ static int scene(struct vsph_report *R, int sc) {
   fprintf(R->md, "\n");
   vsph_text_set(&R->tv, "title", "%s", title);
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
-  return vsph_report_figure_say(R, &pl, "convergence.caption");
+  st = vsph_report_figure_say(R, &pl, "convergence.caption");
+  if (!st && sc == 1) st = vsph_report_fv_convergence(R, &lr);
+  return st;
 }
 
 /* The vortex patch on both disc layouts: decay error and initial

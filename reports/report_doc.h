@@ -11,6 +11,7 @@
 
 #include "../runs/archive.h"
 #include "../runs/folder.h"
+#include "fvref.h"
 #include "report_runs.h"
 #include "text.h"
 
@@ -39,6 +40,8 @@ struct vsph_report {
   const char *beside;       /* a run archive whose FULL runs the summary shows
                                beside the quick ones, or NULL */
   const struct vsph_archive_judge *judge; /* what judges its entries */
+  struct vsph_fvref *fv;        /* the committed finite-volume references (never
+                                   NULL; fv->sq.ok, fv->cav[w].ok: read) */
   struct vsph_folder folder;    /* the claim on dir while it is written */
   struct vsph_report_runs runs; /* what reads the runs */
 };

@@ -14,6 +14,7 @@
 #include "../io/plot.h"
 #include "../io/vtk.h"
 #include "../solver/scene.h"
+#include "report_fv.h"
 #include "report_parts.h"
 
 #define NFORM VSPH_VISCOUS_PAPER_COUNT /* the free-surface study's three */
@@ -374,6 +375,7 @@ static int scene(struct vsph_report *R, int sc) {
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
   vsph_text_set(&R->tv, "res", "%zu", res);
   if (!st) st = vsph_report_say(R, "scenes.scene_tail");
+  if (!st && square) st = vsph_report_fv_square(R);
   return st;
 }
 
@@ -399,6 +401,7 @@ static void eps_specs(const struct vsph_report *R,
 
 int vsph_report_scenes_plan(struct vsph_report *R) {
   int st = vsph_report_runs_plan_ladders(&R->runs, 0);
+  if (!st && vsph_report_scene_on(&R->runs, 1)) st = vsph_report_fv_plan(R);
   if (vsph_report_scene_on(&R->runs, 2)) {
     struct vsph_jobs_spec specs[3 * NFORM];
     eps_specs(R, specs);

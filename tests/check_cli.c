@@ -151,6 +151,9 @@ static const char *const bad_inputs[] = {
     /* an --out that cannot be made: a file in the path */
     "run stretching-square --res 10 --t-end 0.01 --out /dev/null/r",
     "report --only patch --out /dev/null/r",
+    /* issue 43: a finite-volume folder that is not one */
+    "report --only patch --fv /nonexistent",
+    "report --only patch --fv /etc/passwd",
     "",
 };
 

@@ -1,0 +1,119 @@
+/* The committed finite-volume references (reference/data; reports/fvref.h):
+ * they read whole and hold what is known of them exactly, and a damaged or
+ * hand-edited copy is caught. No OpenFOAM is run here: make reference does
+ * that. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../reports/fvref.h"
+#include "check_suites.h"
+
+#define DATA "reference/data"
+
+START_TEST(test_committed) {
+  struct vsph_fvref *fv = malloc(sizeof *fv);
+  ck_assert_ptr_nonnull(fv);
+  ck_assert_int_eq(vsph_fvref_read(DATA, fv), 0);
+  ck_assert_msg(fv->sq.ok, "the square's ladder is not all in " DATA);
+  ck_assert_msg(fv->cav[0].ok && fv->cav[1].ok,
+                "the cavity's ladders are not all in " DATA);
+  ck_assert_msg(fv->sq.dt40.ok && fv->sq.dt80.ok && fv->sq.dt160.ok &&
+                    fv->sq.r100.ok && fv->sq.r10000.ok && fv->sq.wide.ok,
+                "a check beside the square's ladder is missing");
+  char why[512];
+  const int bad = vsph_fvref_check(fv, why, sizeof why);
+  ck_assert_msg(bad == 0, "%d checks fail; the first: %s", bad, why);
+  /* the finest grid's band is what the report grades against: finite,
+   * positive, and below the paper's 0.55 % it would judge (else no level
+   * could be told apart) */
+  ck_assert(fv->sq.band > 0 && fv->sq.band < 0.0055);
+  free(fv);
+}
+END_TEST
+
+/* Copy reference/data into a scratch folder, pass file @p file there
+ * through the awk program @p prog (fields split at commas), and return
+ * what vsph_fvref_read and vsph_fvref_check make of it: -1 read refused,
+ * else the failed checks. */
+static int damaged(const char *file, const char *prog) {
+  char dir[] = "/tmp/vsph_fvrefXXXXXX";
+  vsph_test_scratch(dir);
+  char cmd[1024];
+  snprintf(cmd, sizeof cmd,
+           "cp " DATA
+           "/* '%s'/ && cd '%s' && awk -F, -v OFS=, '%s' '%s' > t "
+           "&& mv t '%s'",
+           dir, dir, prog, file, file);
+  ck_assert_int_eq(system(cmd), 0);
+  struct vsph_fvref *fv = malloc(sizeof *fv);
+  ck_assert_ptr_nonnull(fv);
+  int r = vsph_fvref_read(dir, fv) ? -1 : 0;
+  char why[512];
+  if (!r) r = vsph_fvref_check(fv, why, sizeof why);
+  free(fv);
+  vsph_test_rm_tree(dir);
+  return r;
+}
+
+START_TEST(test_damaged) {
+  /* an untouched copy passes: the damage below is what fails */
+  ck_assert_int_eq(damaged("square-n320.csv", "1"), 0);
+  /* E_k(0) off in its 7th digit */
+  ck_assert_int_ne(damaged("square-n320.csv",
+                           "NR == 2 { $2 = sprintf(\"%.12e\", "
+                           "$2 * (1 + 1e-6)) } 1"),
+                   0);
+  /* the viscous power at t = 0 off by 1e-6 */
+  ck_assert_int_ne(
+      damaged("square-n160.csv",
+              "NR == 2 { $4 = sprintf(\"%.12e\", $4 * (1 + 1e-6)) } 1"),
+      0);
+  /* a row's liquid volume off by 1e-5 */
+  ck_assert_int_ne(damaged("square-n80.csv", "NR == 50 { $5 = 1.00001 } 1"), 0);
+  /* E_k rising at one row */
+  ck_assert_int_ne(damaged("square-n40.csv", "NR == 150 { $2 = $2 * 1.05 } 1"),
+                   0);
+  /* a row lost: refused on reading */
+  ck_assert_int_eq(damaged("square-n40.csv", "NR != 100"), -1);
+  /* a Ghia value edited in a cavity file */
+  ck_assert_int_ne(
+      damaged("cavity-re1000-n256-centreline.csv", "NR == 5 { $4 = 0.5 } 1"),
+      0);
+  /* the finest cavity grid's profile moved by 0.02 U at one point */
+  ck_assert_int_ne(damaged("cavity-re100-n256-centreline.csv",
+                           "NR == 10 { $3 = $3 + 0.02 } 1"),
+                   0);
+}
+END_TEST
+
+/* A folder without the references reads as "none": every part's ok 0,
+ * nothing failed, and the checks have nothing to hold (the report then
+ * says not tested). NULL reads the same. */
+START_TEST(test_absent) {
+  char dir[] = "/tmp/vsph_fvrefXXXXXX";
+  vsph_test_scratch(dir);
+  struct vsph_fvref *fv = malloc(sizeof *fv);
+  ck_assert_ptr_nonnull(fv);
+  for (int k = 0; k < 2; k++) {
+    ck_assert_int_eq(vsph_fvref_read(k ? NULL : dir, fv), 0);
+    ck_assert(!fv->sq.ok && !fv->cav[0].ok && !fv->cav[1].ok);
+    char why[64];
+    ck_assert_int_eq(vsph_fvref_check(fv, why, sizeof why), 0);
+    ck_assert(isnan(vsph_fvref_square_at(&fv->sq, 0.5)));
+  }
+  free(fv);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
+Suite *vsph_fvref_suite(void) {
+  Suite *s = suite_create("fvref");
+  TCase *tc = tcase_create("committed");
+  tcase_add_test(tc, test_committed);
+  tcase_add_test(tc, test_damaged);
+  tcase_add_test(tc, test_absent);
+  suite_add_tcase(s, tc);
+  return s;
+}
