@@ -129,8 +129,9 @@ static int read_square(const char *dir, struct vsph_fvref_square *s) {
   /* the step's share: every grid runs the same step, so the Courant
    * number doubles with the grid, and the outer correctors' splitting
    * error with it. d_g(t), the difference from half the step, is measured
-   * at 40, 80 and 160 cells and carried on to 320 at the last growth per
-   * doubling (at least 1). Each grid is corrected as for an error of
+   * at 40, 80 and 160 cells (the 320-cell run is not corrected: its
+   * difference is not measured, and it grows too fast per doubling to
+   * carry on). Each grid is corrected as for an error of
    * second order in the step (4/3 d: the order measured by halving the
    * Courant number twice at 40 cells, 1.9, reference/README.md); the
    * correction's uncertainty, up to a first-order error's 2 d, goes into
@@ -144,43 +145,46 @@ static int read_square(const char *dir, struct vsph_fvref_square *s) {
       s->time_err[g] = fmax(s->time_err[g], fabs(d[g][k]));
     }
   }
-  const double grow = fmax(1.0, s->time_err[2] / s->time_err[1]);
-  s->time_err[3] = 0;
-  for (size_t k = 0; k < VSPH_FVREF_SQ_ROWS; k++) {
-    d[3][k] = grow * d[2][k];
-    s->time_err[3] = fmax(s->time_err[3], fabs(d[3][k]));
-  }
-  struct vsph_series_rung rung[VSPH_FVREF_SQ_GRIDS];
+  s->time_err[3] = s->time_err[2] / s->time_err[1];
+  struct vsph_series_rung rung[VSPH_FVREF_SQ_LADDER];
   for (int g = 0; g < VSPH_FVREF_SQ_GRIDS; g++) {
     for (size_t k = 0; k < VSPH_FVREF_SQ_ROWS; k++)
-      s->Ec[g][k] = s->g[g].E[k] / s->g[g].E[0] - 4.0 / 3.0 * d[g][k];
-    rung[g] = (struct vsph_series_rung){s->t, s->Ec[g], VSPH_FVREF_SQ_ROWS,
-                                        1.0 / SQ_N[g]};
+      s->Ec[g][k] = s->g[g].E[k] / s->g[g].E[0] -
+                    (g < VSPH_FVREF_SQ_LADDER ? 4.0 / 3.0 * d[g][k] : 0.0);
+    if (g < VSPH_FVREF_SQ_LADDER)
+      rung[g] = (struct vsph_series_rung){s->t, s->Ec[g], VSPH_FVREF_SQ_ROWS,
+                                          1.0 / SQ_N[g]};
   }
-  if ((st = vsph_series_selfconv(rung, VSPH_FVREF_SQ_GRIDS, &s->sc)))
+  if ((st = vsph_series_selfconv(rung, VSPH_FVREF_SQ_LADDER, &s->sc)))
     VSPH_FAIL(st, "the square's finite-volume ladder in %s", dir);
   s->air_err = maxdiff(&s->g[1], &s->r10000);
   s->air_err100 = maxdiff(&s->r100, &s->g[1]);
   s->dom_err = maxdiff(&s->wide, &s->g[1]);
   /* the band: the ladder's remainder, the step correction's uncertainty
-   * at 320, the air's and the far sides' shares, added (NaN where one is
+   * at 160, the air's and the far sides' shares, added (NaN where one is
    * not measured: nothing is then graded against it) */
-  s->band =
-      s->sc.remainder + 2.0 / 3.0 * s->time_err[3] + s->air_err + s->dom_err;
-  const struct vsph_fvref_sqseries *f = &s->g[VSPH_FVREF_SQ_GRIDS - 1];
-  s->budget = 0;
+  s->band = s->sc.remainder + 2.0 / 3.0 * s->time_err[2] + s->air_err +
+            s->dom_err;
+  const struct vsph_fvref_sqseries *f = &s->g[VSPH_FVREF_SQ_LADDER - 1];
+  const struct vsph_fvref_sqseries *f4 = &s->g[VSPH_FVREF_SQ_GRIDS - 1];
+  s->budget = s->budget320 = 0;
   for (size_t k = 0; k < VSPH_FVREF_SQ_ROWS; k++) {
-    if (s->t[k] >= 0.05 - 1e-12)
+    if (s->t[k] >= 0.05 - 1e-12) {
       s->budget = fmax(s->budget, fabs(f->dE[k] - f->P[k]) / fabs(f->P[k]));
+      s->budget320 =
+          fmax(s->budget320, fabs(f4->dE[k] - f4->P[k]) / fabs(f4->P[k]));
+    }
     /* Richardson at the observed order of the largest differences (first
      * order when it is not measured) */
     const double p = isfinite(s->sc.order_max) && s->sc.order_max > 0
                          ? s->sc.order_max
                          : 1.0;
-    const double ef = s->Ec[VSPH_FVREF_SQ_GRIDS - 1][k],
-                 ec = s->Ec[VSPH_FVREF_SQ_GRIDS - 2][k];
+    const double ef = s->Ec[VSPH_FVREF_SQ_LADDER - 1][k],
+                 ec = s->Ec[VSPH_FVREF_SQ_LADDER - 2][k];
     s->Ex[k] = ef + (ef - ec) / (pow(2.0, p) - 1);
   }
+  const int last = VSPH_FVREF_SQ_ROWS - 1;
+  s->excess320 = s->Ec[VSPH_FVREF_SQ_GRIDS - 1][last] - s->Ex[last];
   s->ok = 1;
   return VSPH_OK;
 }
@@ -279,7 +283,7 @@ int vsph_fvref_read(const char *dir, struct vsph_fvref *fv) {
 
 double vsph_fvref_square_at(const struct vsph_fvref_square *s, double t) {
   if (!s->ok) return NAN;
-  return vsph_series_interp(s->t, s->Ec[VSPH_FVREF_SQ_GRIDS - 1],
+  return vsph_series_interp(s->t, s->Ec[VSPH_FVREF_SQ_LADDER - 1],
                             VSPH_FVREF_SQ_ROWS, t);
 }
 
@@ -388,14 +392,14 @@ int vsph_fvref_check(const struct vsph_fvref *fv, char *why, size_t n) {
         }
       }
     }
-    /* the finest grid against Ghia within the table's precision: at Re
-     * 1000 Ghia's u_min (-0.38289) is 0.0057 U from Botella & Peyret's
-     * spectral -0.38857 (1998) and their v at x = 0.9063 (-0.51550) about
-     * 0.012 U from the spectral minimum -0.52708 close by, their 129 x
-     * 129 grid's error; 0.015 U bounds it, at both Re (the same grid and
-     * scheme) */
+    /* the finest grid against Ghia within the two solutions' precision:
+     * Ghia's 129 x 129 grid is 0.0057 U (u_min) and 0.012 U (v_min) from
+     * Botella & Peyret's spectral values at Re 1000 (1998), and the
+     * finest grid here still moves by up to 0.005 U from the coarser in
+     * the right-wall layer at Re 1000 (x >= 0.94, six of Ghia's cells
+     * across); 0.02 U bounds their sum, at both Re (the same grids) */
     const struct vsph_fvref_cavgrid *f = &c->g[VSPH_FVREF_CAV_GRIDS - 1];
-    const double tol = 0.015;
+    const double tol = 0.02;
     if (!(f->ghia_max <= tol))
       FVREF_FAIL(
           "cavity Re %g: the finest grid is %.4f U from Ghia at most "
