@@ -163,8 +163,8 @@ static int read_square(const char *dir, struct vsph_fvref_square *s) {
   /* the band: the ladder's remainder, the step correction's uncertainty
    * at 160, the air's and the far sides' shares, added (NaN where one is
    * not measured: nothing is then graded against it) */
-  s->band = s->sc.remainder + 2.0 / 3.0 * s->time_err[2] + s->air_err +
-            s->dom_err;
+  s->band =
+      s->sc.remainder + 2.0 / 3.0 * s->time_err[2] + s->air_err + s->dom_err;
   const struct vsph_fvref_sqseries *f = &s->g[VSPH_FVREF_SQ_LADDER - 1];
   const struct vsph_fvref_sqseries *f4 = &s->g[VSPH_FVREF_SQ_GRIDS - 1];
   s->budget = s->budget320 = 0;
