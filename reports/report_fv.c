@@ -221,11 +221,11 @@ static int sq_figures(struct vsph_report *R) {
   vsph_plot_init(&pe, R->dir, "fig_fv_square_Ek",
                  "stretching-square: E_k/E_k(0), finite volume and SPH",
                  "time t A0 (dimensionless)", "E_k(t)/E_k(0)");
-  vsph_plot_init(&pd, R->dir, "fig_fv_square_diff",
-                 "stretching-square: E_k/E_k(0) minus the finest finite-volume "
-                 "grid's",
-                 "time t A0 (dimensionless)",
-                 "E_k/E_k(0) - E_{k,FV}/E_{k,FV}(0)");
+  vsph_plot_init(
+      &pd, R->dir, "fig_fv_square_diff",
+      "stretching-square: E_k/E_k(0) minus the 160-cell finite-volume "
+      "grid's",
+      "time t A0 (dimensionless)", "E_k/E_k(0) - E_{k,FV}/E_{k,FV}(0)");
   static const char *const gcol[VSPH_FVREF_SQ_GRIDS] = {"1:2", "1:3", "1:4",
                                                         "1:5"};
   static const char *const gdiff[VSPH_FVREF_SQ_GRIDS] = {
@@ -244,7 +244,7 @@ static int sq_figures(struct vsph_report *R) {
   snprintf(band, sizeof band, "1:(%.6e)", s->band);
   if (!st)
     st = vsph_plot_add(&pd, "fv_square.csv", band,
-                       "± the finest grid's error band",
+                       "± the 160-cell grid's error band",
                        "lines dt 2 lw 1 lc rgb '#aa0000'");
   snprintf(band, sizeof band, "1:(%.6e)", -s->band);
   if (!st)
