@@ -276,7 +276,7 @@ START_TEST(test_plan_listing) {
   ck_assert_ptr_nonnull(f);
   char line[8192];
   size_t n = 0, base = 0, shear = 0, step[3][2] = {{0}}, cstep[3] = {0},
-         cround[3] = {0}, sdelta[3] = {0};
+         cround[3] = {0}, sdelta[3] = {0}, why = 0;
   static const char *const scn[3] = {
       "runs/standing-wave-", "runs/vortex-patch-", "runs/stretching-square-"};
   while (fgets(line, sizeof line, f)) {
@@ -294,6 +294,12 @@ START_TEST(test_plan_listing) {
         cround[s] += strstr(line, "-perturb1e-9\t") != NULL;
         sdelta[s] += strstr(line, "-delta0.1\t") != NULL;
       }
+    /* the runs that isolate MGF's level against the finite volume
+     * (reports/report_fv.c): MGF at L/dx 80, one choice changed each */
+    why += strstr(line, "runs/stretching-square-mgf-80-") &&
+           (strstr(line, "-p0\t") || strstr(line, "-leapfrog\t") ||
+            strstr(line, "-c0x2\t") || strstr(line, "-delta0.1\t") ||
+            strstr(line, "-hdx2\t") || strstr(line, "-hdx3\t"));
   }
   fclose(f);
   for (int s = 0; s < 3; s++) {
@@ -306,9 +312,13 @@ START_TEST(test_plan_listing) {
     ck_assert_uint_eq(cstep[s], s == 1 ? 9 : 0);
     ck_assert_uint_eq(cround[s], s < 2 ? 3 : 0);
     /* delta-SPH at the coarsest rung: the square's PVWF (its stop's
-     * check) and the wave's three forms (section 12) */
-    ck_assert_uint_eq(sdelta[s], s == 2 ? 1 : s == 0 ? 3 : 0);
+     * check) and MGF at L/dx 80 (its level against the finite volume),
+     * and the wave's three forms (section 12) */
+    ck_assert_uint_eq(sdelta[s], s == 2 ? 2 : s == 0 ? 3 : 0);
   }
+  /* h/dx 2 and 3 (3: the extrapolated reference's own run), a zero
+   * start, leapfrog, c0 doubled, delta-SPH */
+  ck_assert_uint_eq(why, 6);
   /* the baseline's channel rows (Poiseuille and Couette, every form),
    * its 5 cavity rows and its cylinders row have the tag "base"; the
    * quick report's 19 shear tests are `vsph contact` */
