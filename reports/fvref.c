@@ -136,16 +136,17 @@ static int read_square(const char *dir, struct vsph_fvref_square *s) {
    * Courant number twice at 40 cells, 1.9, reference/README.md); the
    * correction's uncertainty, up to a first-order error's 2 d, goes into
    * the band. */
-  const struct vsph_fvref_sqseries *half[3] = {&s->dt40, &s->dt80, &s->dt160};
-  double d[VSPH_FVREF_SQ_GRIDS][VSPH_FVREF_SQ_ROWS];
-  for (int g = 0; g < 3; g++) {
+  const struct vsph_fvref_sqseries *half[VSPH_FVREF_SQ_LADDER] = {
+      &s->dt40, &s->dt80, &s->dt160};
+  double d[VSPH_FVREF_SQ_LADDER][VSPH_FVREF_SQ_ROWS];
+  for (int g = 0; g < VSPH_FVREF_SQ_LADDER; g++) {
     s->time_err[g] = 0;
     for (size_t k = 0; k < VSPH_FVREF_SQ_ROWS; k++) {
       d[g][k] = s->g[g].E[k] / s->g[g].E[0] - half[g]->E[k] / half[g]->E[0];
       s->time_err[g] = fmax(s->time_err[g], fabs(d[g][k]));
     }
   }
-  s->time_err[3] = s->time_err[2] / s->time_err[1];
+  s->time_grow = s->time_err[2] / s->time_err[1];
   struct vsph_series_rung rung[VSPH_FVREF_SQ_LADDER];
   for (int g = 0; g < VSPH_FVREF_SQ_GRIDS; g++) {
     for (size_t k = 0; k < VSPH_FVREF_SQ_ROWS; k++)

@@ -79,9 +79,10 @@ struct vsph_fvref_square {
   /** max over t of the |E/E0| difference between the ladder's step and
    *  half of it, at 40, 80 and 160 cells (the step is the same, so the
    *  Courant number doubles with the grid and the outer correctors'
-   *  splitting error grows with it); [3]: the growth per doubling from
-   *  80 to 160 */
-  double time_err[4];
+   *  splitting error grows with it) */
+  double time_err[3];
+  /** its growth per doubling, time_err[2] / time_err[1] */
+  double time_grow;
   /** the 320-cell run's E_k(1)/E_k(0) minus the judged ladder's limit:
    *  what its step leaves (with its own small grid error) */
   double excess320;

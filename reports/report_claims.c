@@ -689,9 +689,7 @@ static int square_claims(struct vsph_report *R, const struct finest *fi) {
   }
   const double fv_end = vsph_fvref_square_at(fv, 1.0);
   /* the extrapolated stand-in against the finite volume */
-  double sd = 0;
-  for (int k = 0; k <= 100; k++)
-    sd = fmax(sd, fabs(rr.E[k] / rr.E[0] - vsph_fvref_square_at(fv, rr.t[k])));
+  const double sd = vsph_report_fv_standin_gap(R, &rr);
   snprintf(ours, sizeof ours,
            "MGF, L/dx %zu-%zu: successive differences of E_k/E_k(0) %.2e, "
            "%.2e (orders %.2f largest, %.2f RMS; the finest rung about "

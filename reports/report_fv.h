@@ -28,6 +28,11 @@ int vsph_report_fv_plan(struct vsph_report *R);
 double vsph_report_fv_error(const struct vsph_report *R,
                             const struct vsph_jobs_run *r);
 
+/* The extrapolated MGF's (section 5's stand-in, @p rr) decay error
+ * against the finest judged grid (NaN without the references). */
+double vsph_report_fv_standin_gap(const struct vsph_report *R,
+                                  const struct vsph_report_richardson *rr);
+
 /* The first time run @p r's dE_k/dt departs from the finest grid's by
  * more than @p threshold of it (vsph_series_onset; NaN without the
  * references or without a departure). */

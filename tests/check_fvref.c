@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../io/csv.h"
 #include "../reports/fvref.h"
 #include "check_suites.h"
 
@@ -29,6 +30,29 @@ START_TEST(test_committed) {
    * positive, and below the paper's 0.55 % it would judge (else no level
    * could be told apart) */
   ck_assert(fv->sq.band > 0 && fv->sq.band < 0.0055);
+  free(fv);
+}
+END_TEST
+
+/* The step correction against an independent reading of the files: at
+ * 160 cells and t A0 = 1, E/E0 less 4/3 of its difference from the half
+ * step's (second order in the step), to rounding. */
+START_TEST(test_step_correction) {
+  struct vsph_fvref *fv = malloc(sizeof *fv);
+  ck_assert_ptr_nonnull(fv);
+  ck_assert_int_eq(vsph_fvref_read(DATA, fv), 0);
+  double e[2];
+  static const char *const file[2] = {DATA "/square-n160.csv",
+                                      DATA "/square-n160-dt0.5.csv"};
+  for (int k = 0; k < 2; k++) {
+    struct vsph_csv *c = vsph_csv_read(file[k]);
+    ck_assert_ptr_nonnull(c);
+    const double *E = vsph_csv_column(c, "Ek");
+    e[k] = E[c->nrow - 1] / E[0];
+    vsph_csv_free(c);
+  }
+  const double want = e[0] - 4.0 / 3.0 * (e[0] - e[1]);
+  ck_assert_double_eq_tol(fv->sq.Ec[2][VSPH_FVREF_SQ_ROWS - 1], want, 1e-12);
   free(fv);
 }
 END_TEST
@@ -114,6 +138,7 @@ Suite *vsph_fvref_suite(void) {
   tcase_add_test(tc, test_committed);
   tcase_add_test(tc, test_damaged);
   tcase_add_test(tc, test_absent);
+  tcase_add_test(tc, test_step_correction);
   suite_add_tcase(s, tc);
   return s;
 }
