@@ -458,8 +458,6 @@ int vsph_report_fv_cavity(struct vsph_report *R,
     st =
         vsph_plot_add(&pl, "fv_cavity_re1000.csv", gcol[g], lab, GRID_STYLE[g]);
   }
-  static const char *const col[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7",
-                                    "#e69f00", "#56b4e9", "#f0e442", "#000080"};
   for (size_t k = 0; k < nrun && !st; k++) {
     char name[64], style[96];
     snprintf(name, sizeof name, "fv_cavity_sph_%zu.csv", k);
@@ -469,7 +467,7 @@ int vsph_report_fv_cavity(struct vsph_report *R,
       fprintf(g, "%.6g,%.8e\n", runs[k]->t[i], runs[k]->Ek[i]);
     if ((st = vsph_csv_close(g, R->dir, name))) break;
     snprintf(style, sizeof style, "lines lw 2 lc rgb '%s'",
-             col[k % (sizeof col / sizeof col[0])]);
+             vsph_plot_colour(k));
     st = vsph_plot_add(&pl, name, "1:2", labels[k], style);
   }
   if (!st) st = vsph_report_figure_say(R, &pl, "fv.fig_cavity_Ek");
