@@ -139,16 +139,18 @@ int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
   return VSPH_OK;
 }
 
-/* Dissipation densities at x: 2 mu D:D + lambda (tr D)^2 with the Stokes
- * lambda = -2 mu / d, and mu |grad u|^2; MGF's limit uses lambda = mu. */
+/* Dissipation densities at x: V:D = 2 mu D:D + lambda (tr D)^2 with the
+ * Stokes lambda = -2 mu / d, 2 mu D:D and tr D apart (for a form's own
+ * lambda), mu |grad u|^2, and -u . mu lap u. */
 struct densities {
-  double vd_stokes, vd_mgf, grad2;
+  double vd_stokes, dd2, tr2, grad2, ulap;
 };
 
 static struct densities densities_at(const struct vsph_fields_props *fp,
                                      double mu, const double x[3]) {
-  double u[3], g[9];
+  double u[3], g[9], lap[3], graddiv[3];
   vsph_fields_eval(fp, x, u, g);
+  vsph_fields_second(fp, x, lap, graddiv);
   const int d = fp->dim;
   double DD = 0.0, tr = 0.0, G2 = 0.0;
   for (int a = 0; a < d; a++) {
@@ -159,14 +161,30 @@ static struct densities densities_at(const struct vsph_fields_props *fp,
       G2 += g[a * d + b] * g[a * d + b];
     }
   }
-  struct densities r = {2.0 * mu * DD - 2.0 * mu / d * tr * tr,
-                        2.0 * mu * DD + mu * tr * tr, mu * G2};
+  double ul = 0.0;
+  for (int a = 0; a < d; a++) ul += u[a] * lap[a];
+  struct densities r = {2.0 * mu * DD - 2.0 * mu / d * tr * tr, 2.0 * mu * DD,
+                        tr * tr, mu * G2, -mu * ul};
   return r;
+}
+
+/* The continuum limit of a formulation's dissipation density (its
+ * descriptor's limit, with its lambda for the stress limit). */
+static double limit_density(const struct densities *d, int limit,
+                            double lambda) {
+  switch (limit) {
+    case VSPH_VISCOUS_LIMIT_GRADIENT:
+      return d->grad2;
+    case VSPH_VISCOUS_LIMIT_LAPLACIAN:
+      return d->ulap;
+    default:
+      return d->dd2 + lambda * d->tr2;
+  }
 }
 
 struct exact_ctx {
   const struct vsph_dissipation_props *dp;
-  int which;        /* 0: V:D (Stokes), 1: |grad u|^2 */
+  int which;        /* 0: V:D (Stokes), 1: |grad u|^2, 2: -u . lap u */
   double outer_var; /* r (disc) or x (square) */
   gsl_integration_workspace *inner;
   double epsrel;
@@ -175,7 +193,7 @@ struct exact_ctx {
 
 static double exact_density(const struct exact_ctx *e, const double x[3]) {
   const struct densities d = densities_at(&e->dp->field, e->dp->mu, x);
-  return e->which ? d.grad2 : d.vd_stokes;
+  return e->which == 2 ? d.ulap : e->which ? d.grad2 : d.vd_stokes;
 }
 
 static double inner_fn(double t, void *v) {
@@ -206,8 +224,10 @@ static double outer_fn(double s, void *v) {
   return res;
 }
 
-int vsph_dissipation_exact(const struct vsph_dissipation_props *dp,
-                           double *P_exact, double *P_grad) {
+/* The first n of -int V:D, -mu int |grad u|^2 and mu int u . lap u over
+ * the shape into out[0..n-1]. */
+static int exact_integrals(const struct vsph_dissipation_props *dp, int n,
+                           double out[3]) {
   gsl_integration_workspace *wo = gsl_integration_workspace_alloc(200);
   gsl_integration_workspace *wi = gsl_integration_workspace_alloc(200);
   if (!wo || !wi) {
@@ -217,9 +237,8 @@ int vsph_dissipation_exact(const struct vsph_dissipation_props *dp,
   }
   const int disc = dp->shape == VSPH_DISSIPATION_DISC;
   const double lo = disc ? 0.0 : -0.5 * EXTENT, hi = 0.5 * EXTENT;
-  double out[2];
   int rc = VSPH_OK;
-  for (int which = 0; which < 2 && !rc; which++) {
+  for (int which = 0; which < n && !rc; which++) {
     struct exact_ctx e = {dp, which, 0.0, wi, dp->epsrel, 0};
     gsl_function fn = {outer_fn, &e};
     double err;
@@ -237,9 +256,18 @@ int vsph_dissipation_exact(const struct vsph_dissipation_props *dp,
   }
   gsl_integration_workspace_free(wo);
   gsl_integration_workspace_free(wi);
+  /* 0.0 - x, not -x: an integral of zero prints as 0, not -0 */
+  for (int which = 0; which < n; which++) out[which] = 0.0 - out[which];
+  return rc;
+}
+
+int vsph_dissipation_exact(const struct vsph_dissipation_props *dp,
+                           double *P_exact, double *P_grad) {
+  double out[3];
+  const int rc = exact_integrals(dp, 2, out);
   if (rc) return rc;
-  *P_exact = -out[0];
-  *P_grad = -out[1];
+  *P_exact = out[0];
+  *P_grad = out[1];
   return VSPH_OK;
 }
 
@@ -261,7 +289,7 @@ static int evaluate(const struct vsph_viscous_props *vp,
   if (cells && ws &&
       !(st = vsph_cells_build(cells, p, vp->kernel->kappa * vp->h)) &&
       !(st = vsph_viscous_compute(vp, p, cells, ws, f, dens)))
-    *nfb = vp->form == VSPH_VISCOUS_PVWF ? ws->n_fallback : 0;
+    *nfb = vsph_viscous_first_pass(vp->form) ? ws->n_fallback : 0;
   vsph_viscous_ws_free(ws);
   vsph_cells_free(cells);
   return st;
@@ -401,7 +429,19 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
   }
   double *f[3] = {buf, buf + p->n, NULL}, *dens = buf + 2 * p->n;
   if ((st = evaluate(&vp, p, f, dens, &res->n_fallback))) goto done;
-  if ((st = vsph_dissipation_exact(dp, &res->P_exact, &res->P_grad))) goto done;
+  /* the continuum limit this form's dissipation tends to (its descriptor) */
+  const int limit = vsph_viscous_types[dp->form].limit;
+  double ex[3];
+  if ((st = exact_integrals(dp, limit == VSPH_VISCOUS_LIMIT_LAPLACIAN ? 3 : 2,
+                            ex)))
+    goto done;
+  res->P_exact = ex[0];
+  res->P_grad = ex[1];
+  /* All dissipation fields are divergence-free, so a stress limit is
+   * P_exact whatever the form's lambda. */
+  res->P_limit = limit == VSPH_VISCOUS_LIMIT_GRADIENT    ? ex[1]
+                 : limit == VSPH_VISCOUS_LIMIT_LAPLACIAN ? ex[2]
+                                                         : ex[0];
 
   /* Serial sums in particle order: reproducible for any thread count. */
   const double H = dp->kernel->kappa * h;
@@ -418,9 +458,7 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
     ang_abs += V * hypot(x[0], x[1]) * hypot(f[0][i], f[1][i]);
     if (edge_distance(dp->shape, x) >= H) {
       const struct densities d = densities_at(&dp->field, dp->mu, x);
-      const double lim = dp->form == VSPH_VISCOUS_MEAF  ? d.grad2
-                         : dp->form == VSPH_VISCOUS_MGF ? d.vd_mgf
-                                                        : d.vd_stokes;
+      const double lim = limit_density(&d, limit, vp.lambda);
       res->n_interior++;
       Pint += V * dens[i];
       Pint_lim -= V * lim;
@@ -438,10 +476,7 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
   const int exact_zero = fabs(res->P_exact) <= 1e-12 * fabs(res->P_grad);
   const double norm = exact_zero ? fabs(res->P_grad) : fabs(res->P_exact);
   res->rel_error = exact_zero ? P / norm : (P - res->P_exact) / norm;
-  /* All dissipation fields are divergence-free, so MGF's lambda = mu and
-   * the Stokes lambda give the same limit; MEAF's limit is P_grad. */
-  const double P_limit =
-      dp->form == VSPH_VISCOUS_MEAF ? res->P_grad : res->P_exact;
+  const double P_limit = res->P_limit;
   res->consistency_error = (P_limit - res->P_exact) / norm;
   if (res->n_interior > 0) {
     const double nint = fabs(Pint_lim) > 1e-12 * fabs(Pint_grad)

@@ -51,8 +51,13 @@ struct vsph_dissipation_result {
   double P_pair;            /*!< sum_i V_i p_i (pairwise form; = P exactly) */
   double P_exact;           /*!< -int V:D dV (Stokes lambda = -2 mu/d) */
   double P_grad;            /*!< -mu int |grad u|^2 dV */
+  double P_limit;           /*!< the form's continuum limit of P (its
+                                 descriptor's limit): P_exact (stress),
+                                 P_grad (gradient) or mu int u.lap u dV
+                                 (a per-particle Laplacian) */
   double rel_error;         /*!< (P - P_exact)/|P_exact|, or P/|P_grad| */
-  double consistency_error; /*!< (P_limit - P_exact)/norm: MEAF's W:W term */
+  double consistency_error; /*!< (P_limit - P_exact)/norm: MEAF's W:W term,
+                                 a Laplacian's lost surface term */
   double lattice_error;     /*!< interior sum vs its continuous limit */
   double surface_error;     /*!< the rest: (P - P_limit)/norm - lattice */
   double momentum;          /*!< |sum V_i (div V)_i| / sum V_i |(div V)_i| */

@@ -189,6 +189,8 @@ int vsph_moments_quadrature(const struct vsph_kernel_type *k, int dim,
                             gsl_integration_workspace *outer,
                             gsl_integration_workspace *inner,
                             struct vsph_moments *out) {
+  if (!k || !outer || !inner || !out)
+    VSPH_FAIL(VSPH_EINVAL, "no kernel, workspace or result");
   if (dim < 1 || dim > 3)
     VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", dim);
   if (!(depth >= 0.0) || !isfinite(depth))
@@ -244,6 +246,8 @@ static double i_integrand(double qv, void *v) {
 int vsph_moments_constants(const struct vsph_kernel_type *k, int dim,
                            double epsrel, gsl_integration_workspace *ws,
                            double *C_F, double *C_N) {
+  if (!k || !ws || !C_F || !C_N)
+    VSPH_FAIL(VSPH_EINVAL, "no kernel, workspace or result");
   if (dim < 1 || dim > 3)
     VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", dim);
   const double K = vsph_kernel_mg_factor(dim);
@@ -302,6 +306,8 @@ void vsph_moments_theory(int dim, int half, double C_F, double C_N,
 int vsph_moments_sum(const struct vsph_kernel_type *k,
                      const struct vsph_particles *p, size_t centre, double h,
                      struct vsph_moments *out) {
+  if (!k || !p || !out)
+    VSPH_FAIL(VSPH_EINVAL, "no kernel, particles or result");
   const int dim = p->dim;
   if (centre >= p->n) VSPH_FAIL(VSPH_EINVAL, "centre %zu out of range", centre);
   if (!(h > 0.0)) VSPH_FAIL(VSPH_EINVAL, "h must be positive, got %g", h);
@@ -424,7 +430,6 @@ int vsph_moments_props_init(struct vsph_moments_props *mp,
   if ((st = vsph_lattice_resolve(r.lattice, mp->dim, r.perturb,
                                  &mp->lattice_kind, &mp->perturb)))
     return st;
-  snprintf(mp->lattice, sizeof mp->lattice, "%s", r.lattice);
   /* A patch of radius (kappa + 2/hdx) h holds ~(kappa hdx)^d particles:
    * cap it at a few million. */
   const double hdx_max = mp->dim == 3 ? 32.0 : 256.0;
@@ -439,9 +444,33 @@ int vsph_moments_props_init(struct vsph_moments_props *mp,
   return VSPH_OK;
 }
 
+/* Props as vsph_moments_props_init leaves them, for callers that fill
+ * the struct themselves. */
+static int check_props(const struct vsph_moments_props *mp) {
+  if (!mp->kernel) VSPH_FAIL(VSPH_EINVAL, "no kernel given");
+  if (mp->dim < 1 || mp->dim > 3)
+    VSPH_FAIL(VSPH_EINVAL, "dimension %d outside 1-3", mp->dim);
+  if (!(mp->depth >= 0.0) || !isfinite(mp->depth))
+    VSPH_FAIL(VSPH_EINVAL, "depth must be finite and non-negative, got %g",
+              mp->depth);
+  if (!(mp->epsrel > 0.0 && mp->epsrel < 1.0))
+    VSPH_FAIL(VSPH_EINVAL, "epsrel must lie in (0, 1), got %g", mp->epsrel);
+  if (!mp->particles) return VSPH_OK;
+  if (mp->lattice_kind < 0 || mp->lattice_kind >= VSPH_LATTICE_KIND_COUNT)
+    VSPH_FAIL(VSPH_EINVAL, "unknown lattice kind %d", mp->lattice_kind);
+  const double hdx_max = mp->dim == 3 ? 32.0 : 256.0;
+  if (!(mp->hdx > 0.0 && mp->hdx <= hdx_max))
+    VSPH_FAIL(VSPH_EINVAL, "h/dx must lie in (0, %g] in %d-D, got %g", hdx_max,
+              mp->dim, mp->hdx);
+  return VSPH_OK;
+}
+
 int vsph_moments_compute(const struct vsph_moments_props *mp,
                          struct vsph_moments_result *res) {
+  if (!mp || !res) VSPH_FAIL(VSPH_EINVAL, "no props or result");
   memset(res, 0, sizeof *res);
+  const int bad = check_props(mp);
+  if (bad) return bad;
   const struct vsph_kernel_type *k = mp->kernel;
   gsl_integration_workspace *wo = gsl_integration_workspace_alloc(1000);
   gsl_integration_workspace *wi = gsl_integration_workspace_alloc(1000);

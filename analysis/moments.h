@@ -73,9 +73,10 @@ struct vsph_moments_props {
   int dim;                               /*!< 1, 2 or 3 */
   double depth;       /*!< depth below the surface (units of h) */
   int particles;      /*!< 1: also particle sums over a lattice */
-  char lattice[32];   /*!< lattice name as given (square, hex, perturbed) */
-  int lattice_kind;   /*!< its vsph_lattice_kind */
-  double perturb;     /*!< perturbation amplitude (dx); 0 unless perturbed */
+  int lattice_kind;   /*!< vsph_lattice_kind (square or hex) */
+  double perturb;     /*!< perturbation amplitude (dx), 0 for none; its
+                           name is vsph_lattice_label(lattice_kind,
+                           perturb) */
   unsigned long seed; /*!< seed of the perturbation */
   double hdx;         /*!< h/dx of the lattice */
   double epsrel;      /*!< relative accuracy of the quadrature */

@@ -48,6 +48,9 @@ static int print_table(const void *w) {
   printf("P (pairwise form)  %.12e\n", r->P_pair);
   printf("P_exact  -int V:D  %.12e\n", r->P_exact);
   printf("P_grad   -mu|gu|^2 %.12e\n", r->P_grad);
+  printf("P_limit  (%-9s) %.12e\n",
+         vsph_viscous_limit_name(vsph_viscous_types[dp->form].limit),
+         r->P_limit);
   printf("rel_error          %+.6e\n", r->rel_error);
   printf("  consistency      %+.6e\n", r->consistency_error);
   printf("  lattice (h/dx)   %+.6e\n", r->lattice_error);
@@ -67,10 +70,14 @@ int vsph_cmd_dissipation_main(int argc, char **argv) {
       "Taylor-Green cell; against P_exact = -int V:D dV and\n"
       "P_grad = -mu int |grad u|^2 dV (GSL quadrature). rel_error =\n"
       "(P - P_exact)/|P_exact| (P/|P_grad| when P_exact = 0), split into\n"
-      "consistency (MEAF's limit is P_grad), lattice (full-support particles\n"
-      "against the limit: depends on h/dx only) and surface (the rest:\n"
-      "shrinks like h/L) errors.",
-      "JSON with keys P, P_exact, P_grad, rel_error, consistency_error, "
+      "consistency (P_limit - P_exact: the form's continuum limit P_limit is\n"
+      "P_exact for a stress form, P_grad for a pair form along the velocity\n"
+      "difference (MEAF, ER), mu int u.lap u dV for a per-particle\n"
+      "Laplacian (A, VISC-0x)), lattice (full-support particles against the\n"
+      "limit: depends on h/dx only) and surface (the rest: shrinks like h/L)\n"
+      "errors.",
+      "JSON with keys P, P_exact, P_grad, P_limit, limit, rel_error, "
+      "consistency_error, "
       "lattice_error, surface_error, P_pair, momentum, angular, "
       "n_particles, n_interior, h, dx, n_fallback",
       "Dissipation",

@@ -103,8 +103,8 @@ static int print_table(const void *w) {
       "h N_d = -C_N = %.6f\n",
       VSPH_VERSION, sp->kernel->name, sp->field.dim,
       vsph_fields_name(sp->field.kind),
-      sp->perturb > 0 ? "perturbed" : vsph_lattice_name(sp->lattice), sp->hdx,
-      sp->mu, hF_th, hN_th);
+      vsph_lattice_label(sp->lattice, sp->perturb), sp->hdx, sp->mu, hF_th,
+      hN_th);
   /* every formulation: its normal component, then its magnitude */
   printf("%10s %11s %11s", "h", "hF_ddd", "hN_d");
   char head[32];

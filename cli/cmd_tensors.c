@@ -10,6 +10,7 @@
 #include "../common/status.h"
 #include "../io/json.h"
 #include "../kernels/kernel.h"
+#include "../solver/lattice.h"
 #include "args.h"
 
 /* One table row per non-negligible entry: value, and reference and gap. */
@@ -85,7 +86,8 @@ static int print(const void *w) {
     printf(
         "# particle sums on a %s lattice, h/dx = %g, %zu particles; gap = "
         "sum - quadrature\n",
-        mp->lattice, mp->hdx, r->n_particles);
+        vsph_lattice_label(mp->lattice_kind, mp->perturb), mp->hdx,
+        r->n_particles);
     print_table(&r->sum, &r->quad, "quadrature");
   } else if (r->have_theory) {
     printf("# quadrature against the theoretical %s-support values\n",

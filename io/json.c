@@ -126,7 +126,8 @@ cJSON *vsph_json_tensors(const struct vsph_moments_props *mp,
   cJSON_AddNumberToObject(o, "C_N", r->C_N);
   cJSON_AddNumberToObject(o, "kappa", mp->kernel->kappa);
   if (mp->particles) {
-    cJSON_AddStringToObject(o, "lattice", mp->lattice);
+    cJSON_AddStringToObject(o, "lattice",
+                            vsph_lattice_label(mp->lattice_kind, mp->perturb));
     cJSON_AddNumberToObject(o, "hdx", mp->hdx);
     if (mp->perturb > 0) {
       cJSON_AddNumberToObject(o, "perturb", mp->perturb);
@@ -152,9 +153,8 @@ cJSON *vsph_json_scaling(const struct vsph_scaling_props *sp,
   cJSON_AddStringToObject(o, "kernel", sp->kernel->name);
   cJSON_AddNumberToObject(o, "dim", sp->field.dim);
   cJSON_AddStringToObject(o, "field", vsph_fields_name(sp->field.kind));
-  cJSON_AddStringToObject(
-      o, "lattice",
-      sp->perturb > 0 ? "perturbed" : vsph_lattice_name(sp->lattice));
+  cJSON_AddStringToObject(o, "lattice",
+                          vsph_lattice_label(sp->lattice, sp->perturb));
   cJSON_AddNumberToObject(o, "hdx", sp->hdx);
   cJSON_AddNumberToObject(o, "mu", sp->mu);
   cJSON_AddItemToObject(o, "h", vsph_json_array(r->h, L));
@@ -197,6 +197,9 @@ cJSON *vsph_json_dissipation(const struct vsph_dissipation_props *dp,
   cJSON_AddNumberToObject(o, "P_pair", r->P_pair);
   cJSON_AddNumberToObject(o, "P_exact", r->P_exact);
   cJSON_AddNumberToObject(o, "P_grad", r->P_grad);
+  cJSON_AddNumberToObject(o, "P_limit", r->P_limit);
+  cJSON_AddStringToObject(
+      o, "limit", vsph_viscous_limit_name(vsph_viscous_types[dp->form].limit));
   cJSON_AddNumberToObject(o, "rel_error", r->rel_error);
   cJSON_AddNumberToObject(o, "consistency_error", r->consistency_error);
   vsph_json_number(o, "lattice_error", r->lattice_error);

@@ -21,6 +21,10 @@ const char *vsph_lattice_name(int kind) {
                                                      : "unknown";
 }
 
+const char *vsph_lattice_label(int kind, double perturb) {
+  return perturb > 0.0 ? "perturbed" : vsph_lattice_name(kind);
+}
+
 int vsph_lattice_find(const char *name) {
   for (int k = 0; k < VSPH_LATTICE_KIND_COUNT; k++)
     if (strcmp(lattice_names[k], name) == 0) return k;

@@ -31,6 +31,11 @@ struct vsph_lattice_props {
 /** @brief Name of a lattice kind ("square", "hex"). */
 const char *vsph_lattice_name(int kind);
 
+/** @brief What a lattice is called in outputs: "perturbed" when
+ *  @p perturb > 0 (vsph_lattice_resolve's amplitude), else its kind's
+ *  name. */
+const char *vsph_lattice_label(int kind, double perturb);
+
 /** @brief Kind called @p name, or -1. */
 int vsph_lattice_find(const char *name);
 

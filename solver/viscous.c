@@ -60,94 +60,198 @@ static struct vsph_pair_visc pair_stress(const struct vsph_viscous_loop *lp,
 /* Every formulation (docs/theory.md, sections 3 and 8). The first
  * VSPH_VISCOUS_PAPER_COUNT are the free-surface study's. */
 const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
-    [VSPH_VISCOUS_MGF] = {"mgf", "MGF",
-                          "Monaghan & Gingold 1983; Colagrossi et al. 2011, "
-                          "Eq. (4.20)",
-                          VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MGF,
-                          FS | CO | TV, -1, VSPH_VISCOUS_LAMBDA_MU, 0.0, "",
-                          pair_brookshaw},
-    [VSPH_VISCOUS_MEAF] = {"meaf", "MEAF",
-                           "Morris, Fox & Zhu 1997; Colagrossi et al. 2011, "
-                           "Eq. (4.30)",
-                           VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MEAF,
-                           FS | CO | TV, -1, VSPH_VISCOUS_LAMBDA_MU, 0.0, "",
-                           pair_meaf},
-    [VSPH_VISCOUS_PVWF] = {"pvwf", "PVWF",
-                           "principle of virtual work, Colagrossi et al. "
-                           "2011, Eqs. (4.18)-(4.19)",
-                           VSPH_VISCOUS_PASS_STRESS, VSPH_VISCOUS_PVWF,
-                           FS | VSPH_VISCOUS_RENORM, -1,
-                           VSPH_VISCOUS_LAMBDA_STOKES, 0.0, "det_tol",
-                           pair_stress},
-    [VSPH_VISCOUS_VI] = {"vi", "VI",
-                         "Violeau & Issa 2007 (Basa et al. 2009, model C, "
-                         "eq. 33)",
-                         VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MGF, CO | TV, -1,
-                         VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA, "eta",
-                         pair_brookshaw},
-    [VSPH_VISCOUS_CLEARY] = {"cleary", "Cleary",
-                             "Cleary 1998 (Basa et al. 2009, model D, eq. "
-                             "34)",
-                             VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MGF,
-                             CO | TV | VSPH_VISCOUS_XI, -1,
-                             VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA,
-                             "xi, eta", pair_brookshaw},
-    [VSPH_VISCOUS_TWOPASS] = {"twopass", "B",
-                              "two-pass strain rate, Watkins et al. 1996 "
-                              "(Basa et al. 2009, model B, eq. 29; "
-                              "Vukcevic et al. 2012)",
-                              VSPH_VISCOUS_PASS_STRESS, VSPH_VISCOUS_PVWF, 0,
-                              -1, VSPH_VISCOUS_LAMBDA_STOKES3, 0.0, "",
-                              pair_stress},
-    [VSPH_VISCOUS_TAKEDA] = {"takeda", "A",
-                             "direct second derivatives, Takeda et al. 1994 "
-                             "(Basa et al. 2009, model A, eqs. 27-28)",
-                             VSPH_VISCOUS_PASS_TAKEDA, VSPH_VISCOUS_TAKEDA, 0,
-                             -1, VSPH_VISCOUS_LAMBDA_STOKES3, 0.0, "", NULL},
-    [VSPH_VISCOUS_TAKEDA0] = {"takeda0", "A[0]",
-                              "model A, Shepard-corrected (Basa et al. 2009, "
-                              "eq. 23)",
-                              VSPH_VISCOUS_PASS_TAKEDA, VSPH_VISCOUS_TAKEDA0,
-                              VSPH_VISCOUS_SHEPARD, -1,
-                              VSPH_VISCOUS_LAMBDA_STOKES3, 0.0, "", NULL},
-    [VSPH_VISCOUS_ER] = {"er", "ER",
-                         "Espanol & Revenga 2003 (docs/theory.md, section "
-                         "8)",
-                         VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_ER, CO | TV, -1,
-                         VSPH_VISCOUS_LAMBDA_MU, 0.0, "zeta", pair_er},
-    [VSPH_VISCOUS_VISC01] = {"visc01", "VISC-01",
-                             "Zheng et al. 2018, VISC-01: Brookshaw/Morris "
-                             "hybrid (eq. 15)",
-                             VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC01,
-                             TV, VSPH_PAIR_LAP_HYBRID, VSPH_VISCOUS_LAMBDA_MU,
-                             VSPH_VISCOUS_ETA, "eta", NULL},
-    [VSPH_VISCOUS_VISC02] = {"visc02", "VISC-02",
-                             "Zheng et al. 2018, VISC-02: twice-"
-                             "differentiated kernel (eq. 16)",
-                             VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC02,
-                             TV, VSPH_PAIR_LAP_DIRECT, VSPH_VISCOUS_LAMBDA_MU,
-                             0.0, "", NULL},
-    [VSPH_VISCOUS_VISC03] = {"visc03", "VISC-03",
-                             "Zheng et al. 2018, VISC-03: Schwaiger's "
-                             "corrected Laplacian (eq. 17)",
-                             VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC03,
-                             TV, VSPH_PAIR_LAP_SCHWAIGER,
-                             VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA,
-                             "eta, det_tol", NULL},
-    [VSPH_VISCOUS_VISC04] = {"visc04", "VISC-04",
-                             "Zheng et al. 2018, VISC-04: Oger's "
-                             "renormalised gradient (eq. 20)",
-                             VSPH_VISCOUS_PASS_LAPLACIAN, VSPH_VISCOUS_VISC04,
-                             TV, VSPH_PAIR_LAP_RENORMALISED,
-                             VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA,
-                             "eta, det_tol", NULL},
-    [VSPH_VISCOUS_MEAFETA] = {"meafeta", "MEAF-eta",
-                              "Morris, Fox & Zhu 1997 with r^2 + eta^2 (Basa "
-                              "et al. 2009, model E as Morris et al. print "
-                              "it)",
-                              VSPH_VISCOUS_PASS_NONE, VSPH_VISCOUS_MEAFETA, TV,
-                              -1, VSPH_VISCOUS_LAMBDA_MU, VSPH_VISCOUS_ETA,
-                              "eta", pair_meafeta},
+    [VSPH_VISCOUS_MGF] =
+        {.name = "mgf",
+         .label = "MGF",
+         .cite = "Monaghan & Gingold 1983; Colagrossi et al. 2011, "
+                 "Eq. (4.20)",
+         .pass = VSPH_VISCOUS_PASS_NONE,
+         .loop = VSPH_VISCOUS_MGF,
+         .flags = FS | CO | TV,
+         .lap = -1,
+         .lambda = VSPH_VISCOUS_LAMBDA_MU,
+         .limit = VSPH_VISCOUS_LIMIT_STRESS,
+         .eta = 0.0,
+         .params = "",
+         .pair = pair_brookshaw},
+    [VSPH_VISCOUS_MEAF] =
+        {.name = "meaf",
+         .label = "MEAF",
+         .cite = "Morris, Fox & Zhu 1997; Colagrossi et al. 2011, "
+                 "Eq. (4.30)",
+         .pass = VSPH_VISCOUS_PASS_NONE,
+         .loop = VSPH_VISCOUS_MEAF,
+         .flags = FS | CO | TV,
+         .lap = -1,
+         .lambda = VSPH_VISCOUS_LAMBDA_MU,
+         .limit = VSPH_VISCOUS_LIMIT_GRADIENT,
+         .eta = 0.0,
+         .params = "",
+         .pair = pair_meaf},
+    [VSPH_VISCOUS_PVWF] =
+        {.name = "pvwf",
+         .label = "PVWF",
+         .cite = "principle of virtual work, Colagrossi et al. 2011, "
+                 "Eqs. (4.18)-(4.19)",
+         .pass = VSPH_VISCOUS_PASS_STRESS,
+         .loop = VSPH_VISCOUS_PVWF,
+         .flags = FS | VSPH_VISCOUS_RENORM,
+         .lap = -1,
+         .lambda = VSPH_VISCOUS_LAMBDA_STOKES,
+         .limit = VSPH_VISCOUS_LIMIT_STRESS,
+         .eta = 0.0,
+         .params = "det_tol",
+         .pair = pair_stress},
+    [VSPH_VISCOUS_VI] =
+        {.name = "vi",
+         .label = "VI",
+         .cite = "Violeau & Issa 2007 (Basa et al. 2009, model C, eq. 33)",
+         .pass = VSPH_VISCOUS_PASS_NONE,
+         .loop = VSPH_VISCOUS_MGF,
+         .flags = CO | TV,
+         .lap = -1,
+         .lambda = VSPH_VISCOUS_LAMBDA_MU,
+         .limit = VSPH_VISCOUS_LIMIT_STRESS,
+         .eta = VSPH_VISCOUS_ETA,
+         .params = "eta",
+         .pair = pair_brookshaw},
+    [VSPH_VISCOUS_CLEARY] =
+        {.name = "cleary",
+         .label = "Cleary",
+         .cite = "Cleary 1998 (Basa et al. 2009, model D, eq. 34)",
+         .pass = VSPH_VISCOUS_PASS_NONE,
+         .loop = VSPH_VISCOUS_MGF,
+         .flags = CO | TV | VSPH_VISCOUS_XI,
+         .lap = -1,
+         .lambda = VSPH_VISCOUS_LAMBDA_MU,
+         .limit = VSPH_VISCOUS_LIMIT_STRESS,
+         .eta = VSPH_VISCOUS_ETA,
+         .params = "xi, eta",
+         .pair = pair_brookshaw},
+    [VSPH_VISCOUS_TWOPASS] =
+        {.name = "twopass",
+         .label = "B",
+         .cite = "two-pass strain rate, Watkins et al. 1996 (Basa et al. "
+                 "2009, model B, eq. 29; Vukcevic et al. 2012)",
+         .pass = VSPH_VISCOUS_PASS_STRESS,
+         .loop = VSPH_VISCOUS_PVWF,
+         .flags = 0,
+         .lap = -1,
+         .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,
+         .limit = VSPH_VISCOUS_LIMIT_STRESS,
+         .eta = 0.0,
+         .params = "",
+         .pair = pair_stress},
+    [VSPH_VISCOUS_TAKEDA] =
+        {.name = "takeda",
+         .label = "A",
+         .cite = "direct second derivatives, Takeda et al. 1994 (Basa et "
+                 "al. 2009, model A, eqs. 27-28)",
+         .pass = VSPH_VISCOUS_PASS_TAKEDA,
+         .loop = VSPH_VISCOUS_TAKEDA,
+         .flags = 0,
+         .lap = -1,
+         .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,
+         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
+         .eta = 0.0,
+         .params = "",
+         .pair = NULL},
+    [VSPH_VISCOUS_TAKEDA0] =
+        {.name = "takeda0",
+         .label = "A[0]",
+         .cite = "model A, Shepard-corrected (Basa et al. 2009, eq. 23)",
+         .pass = VSPH_VISCOUS_PASS_TAKEDA,
+         .loop = VSPH_VISCOUS_TAKEDA0,
+         .flags = VSPH_VISCOUS_SHEPARD,
+         .lap = -1,
+         .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,
+         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
+         .eta = 0.0,
+         .params = "",
+         .pair = NULL},
+    [VSPH_VISCOUS_ER] =
+        {.name = "er",
+         .label = "ER",
+         .cite = "Espanol & Revenga 2003 (docs/theory.md, section 8)",
+         .pass = VSPH_VISCOUS_PASS_NONE,
+         .loop = VSPH_VISCOUS_ER,
+         .flags = CO | TV,
+         .lap = -1,
+         .lambda = VSPH_VISCOUS_LAMBDA_MU,
+         .limit = VSPH_VISCOUS_LIMIT_GRADIENT,
+         .eta = 0.0,
+         .params = "zeta",
+         .pair = pair_er},
+    [VSPH_VISCOUS_VISC01] =
+        {.name = "visc01",
+         .label = "VISC-01",
+         .cite = "Zheng et al. 2018, VISC-01: Brookshaw/Morris hybrid "
+                 "(eq. 15)",
+         .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
+         .loop = VSPH_VISCOUS_VISC01,
+         .flags = TV,
+         .lap = VSPH_PAIR_LAP_HYBRID,
+         .lambda = VSPH_VISCOUS_LAMBDA_MU,
+         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
+         .eta = VSPH_VISCOUS_ETA,
+         .params = "eta",
+         .pair = NULL},
+    [VSPH_VISCOUS_VISC02] =
+        {.name = "visc02",
+         .label = "VISC-02",
+         .cite = "Zheng et al. 2018, VISC-02: twice-differentiated kernel "
+                 "(eq. 16)",
+         .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
+         .loop = VSPH_VISCOUS_VISC02,
+         .flags = TV,
+         .lap = VSPH_PAIR_LAP_DIRECT,
+         .lambda = VSPH_VISCOUS_LAMBDA_MU,
+         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
+         .eta = 0.0,
+         .params = "",
+         .pair = NULL},
+    [VSPH_VISCOUS_VISC03] =
+        {.name = "visc03",
+         .label = "VISC-03",
+         .cite = "Zheng et al. 2018, VISC-03: Schwaiger's corrected "
+                 "Laplacian (eq. 17)",
+         .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
+         .loop = VSPH_VISCOUS_VISC03,
+         .flags = TV,
+         .lap = VSPH_PAIR_LAP_SCHWAIGER,
+         .lambda = VSPH_VISCOUS_LAMBDA_MU,
+         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
+         .eta = VSPH_VISCOUS_ETA,
+         .params = "eta, det_tol",
+         .pair = NULL},
+    [VSPH_VISCOUS_VISC04] =
+        {.name = "visc04",
+         .label = "VISC-04",
+         .cite = "Zheng et al. 2018, VISC-04: Oger's renormalised "
+                 "gradient (eq. 20)",
+         .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
+         .loop = VSPH_VISCOUS_VISC04,
+         .flags = TV,
+         .lap = VSPH_PAIR_LAP_RENORMALISED,
+         .lambda = VSPH_VISCOUS_LAMBDA_MU,
+         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
+         .eta = VSPH_VISCOUS_ETA,
+         .params = "eta, det_tol",
+         .pair = NULL},
+    [VSPH_VISCOUS_MEAFETA] =
+        {.name = "meafeta",
+         .label = "MEAF-eta",
+         .cite = "Morris, Fox & Zhu 1997 with r^2 + eta^2 (Basa et al. "
+                 "2009, model E as Morris et al. print it)",
+         .pass = VSPH_VISCOUS_PASS_NONE,
+         .loop = VSPH_VISCOUS_MEAFETA,
+         .flags = TV,
+         .lap = -1,
+         .lambda = VSPH_VISCOUS_LAMBDA_MU,
+         .limit = VSPH_VISCOUS_LIMIT_GRADIENT,
+         .eta = VSPH_VISCOUS_ETA,
+         .params = "eta",
+         .pair = pair_meafeta},
 };
 #undef FS
 #undef TV
@@ -156,6 +260,16 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
 const struct vsph_viscous_type *vsph_viscous_type_get(int form) {
   return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT ? &vsph_viscous_types[form]
                                                      : NULL;
+}
+
+const char *vsph_viscous_limit_name(int limit) {
+  static const char *const names[] = {
+      [VSPH_VISCOUS_LIMIT_STRESS] = "stress",
+      [VSPH_VISCOUS_LIMIT_GRADIENT] = "gradient",
+      [VSPH_VISCOUS_LIMIT_LAPLACIAN] = "laplacian"};
+  return limit >= 0 && limit < (int)(sizeof names / sizeof *names)
+             ? names[limit]
+             : "unknown";
 }
 
 const char *vsph_viscous_name(int form) {

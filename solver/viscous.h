@@ -147,6 +147,22 @@ enum vsph_viscous_lambda {
                                    al. and Vukcevic et al. print it */
 };
 
+/** What a formulation's dissipation density tends to as h -> 0 inside a
+ *  fluid (the continuum limit analysis/dissipation.c splits its error
+ *  against, THEORY.md section 4). */
+enum vsph_viscous_limit {
+  VSPH_VISCOUS_LIMIT_STRESS = 0, /*!< T:D = 2 mu D:D + lambda (tr D)^2,
+                                      lambda the form's (a pair form along
+                                      grad W, or a stress pass) */
+  VSPH_VISCOUS_LIMIT_GRADIENT,   /*!< mu |grad u|^2: a pair form along the
+                                      pair's velocity difference (MEAF's
+                                      W:W term, Colagrossi et al. 2011,
+                                      Eq. 4.31) */
+  VSPH_VISCOUS_LIMIT_LAPLACIAN   /*!< -u . mu lap u: a per-particle
+                                      Laplacian, whose density is
+                                      u_i.(div V)_i itself */
+};
+
 /** A pair's viscous share for the general loop (vsph_viscous_pair). */
 typedef struct vsph_pair_visc vsph_viscous_pair_fn(
     const struct vsph_viscous_loop *lp, int dim, const struct vsph_pair *pr,
@@ -170,6 +186,7 @@ struct vsph_viscous_type {
   unsigned flags; /*!< VSPH_VISCOUS_FREE_SURFACE, ... */
   int lap;        /*!< Laplacian pass: its vsph_pair_lap_form */
   enum vsph_viscous_lambda lambda; /*!< default lambda */
+  enum vsph_viscous_limit limit;   /*!< its dissipation's continuum limit */
   double eta;                 /*!< default regulariser eta (fraction of h) in
                                    s^2 + (eta h)^2 */
   const char *params;         /*!< the props it reads beyond mu, for --help */
@@ -191,6 +208,10 @@ const char *vsph_viscous_name(int form);
  *  (0: every form), ", "-separated, into @p buf of @p n bytes.
  *  @return @p buf. */
 const char *vsph_viscous_list(unsigned flags, char *buf, size_t n);
+
+/** @brief Name of a continuum limit ("stress", "gradient", "laplacian";
+ *  "unknown" out of range). */
+const char *vsph_viscous_limit_name(int limit);
 
 /** @brief Formulation called @p name, or -1. */
 int vsph_viscous_find(const char *name);

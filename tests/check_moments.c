@@ -3,6 +3,7 @@
 
 #include "../analysis/moments.h"
 #include "../common/consts.h"
+#include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "../solver/lattice.h"
 #include "../solver/particles.h"
@@ -167,6 +168,47 @@ START_TEST(test_errors) {
 }
 END_TEST
 
+/* The public entry points refuse a NULL or out-of-range argument with
+ * VSPH_EINVAL instead of dereferencing it: an unknown kernel name gives a
+ * NULL vsph_kernel_find, which a caller may pass on. */
+START_TEST(test_refusals) {
+  vsph_test_silence();
+  struct vsph_moments q;
+  double cf, cn;
+  const struct vsph_kernel_type *k = &vsph_cubic_type;
+  ck_assert_ptr_null(vsph_kernel_find("no-such-kernel"));
+  ck_assert_int_eq(vsph_moments_quadrature(NULL, 2, 0.0, 1e-10, wo, wi, &q),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(vsph_moments_quadrature(k, 2, 0.0, 1e-10, NULL, wi, &q),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(vsph_moments_quadrature(k, 2, 0.0, 1e-10, wo, wi, NULL),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(vsph_moments_constants(NULL, 2, 1e-10, wo, &cf, &cn),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(vsph_moments_constants(k, 2, 1e-10, wo, NULL, &cn),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(vsph_moments_sum(k, NULL, 0, 1.0, &q), VSPH_EINVAL);
+  struct vsph_moments_result r;
+  ck_assert_int_eq(vsph_moments_compute(NULL, &r), VSPH_EINVAL);
+  struct vsph_moments_props mp;
+  ck_assert_int_eq(vsph_moments_props_init(&mp, NULL), VSPH_OK);
+  ck_assert_int_eq(vsph_moments_compute(&mp, NULL), VSPH_EINVAL);
+  /* each field out of range in turn, the rest as the defaults */
+  struct vsph_moments_props bad[7];
+  for (int i = 0; i < 7; i++) bad[i] = mp;
+  bad[0].kernel = vsph_kernel_find("no-such-kernel");
+  bad[1].dim = 0;
+  bad[2].dim = 4;
+  bad[3].depth = -1.0;
+  bad[4].epsrel = 0.0;
+  bad[5].particles = 1, bad[5].lattice_kind = 7;
+  bad[6].particles = 1, bad[6].hdx = 0.0;
+  for (int i = 0; i < 7; i++)
+    ck_assert_msg(vsph_moments_compute(&bad[i], &r) == VSPH_EINVAL,
+                  "case %d accepted", i);
+}
+END_TEST
+
 Suite *vsph_moments_suite(void) {
   Suite *s = suite_create("moments");
   TCase *tc = tcase_create("quadrature");
@@ -175,6 +217,7 @@ Suite *vsph_moments_suite(void) {
   tcase_add_test(tc, test_paper_gaussian_constants);
   tcase_add_test(tc, test_depth_profiles);
   tcase_add_test(tc, test_errors);
+  tcase_add_test(tc, test_refusals);
   suite_add_tcase(s, tc);
   TCase *ts = tcase_create("sums");
   tcase_add_checked_fixture(ts, ws_setup, ws_teardown);
