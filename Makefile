@@ -1,3 +1,5 @@
+# Copyright (C) 2026 the vsph developers.
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE).
 # vsph: one non-recursive Makefile (STYLE B11). `make check` and `make report`
 # work as the first command on a fresh machine: they install what is missing.
 
@@ -345,7 +347,9 @@ FMT_SRC = $(wildcard vsph.h common/*.[ch] kernels/*.[ch] solver/*.[ch] \
 format:
 	clang-format -i $(FMT_SRC)
 format-check:
-	@clang-format --dry-run --Werror $(FMT_SRC) && echo "format-check: ok"
+	@if command -v clang-format > /dev/null; then \
+	  clang-format --dry-run --Werror $(FMT_SRC) && echo "format-check: ok"; \
+	else echo "format-check: skipped (no clang-format)"; fi
 
 clean:
 	rm -rf build build-asan build-fuzz

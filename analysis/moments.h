@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #ifndef VSPH_ANALYSIS_MOMENTS_H
 #define VSPH_ANALYSIS_MOMENTS_H
 

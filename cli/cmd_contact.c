@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* vsph contact: the numerical viscosity of contact SPH by Parshikov et
  * al.'s shear test (analysis/contact), or its lattice-sum prediction. */
 #include "cmd_contact.h"

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #ifndef VSPH_CLI_CMD_CONTACT_H
 #define VSPH_CLI_CMD_CONTACT_H
 /** @file cmd_contact.h @brief `vsph contact`. */

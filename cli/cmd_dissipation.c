@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* vsph dissipation: P = sum V_i u_i.(div V)_i against -int V:D and
  * -mu int |grad u|^2 (THEORY 4). */
 #include "cmd_dissipation.h"

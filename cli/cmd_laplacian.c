@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* vsph laplacian: the patch test of the four Laplacian forms of Zheng, Ma
  * & Shao (2018) (docs/theory.md section 7). */
 #include "cmd_laplacian.h"

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* vsph report: the main job (reports/report.c). */
 #define _XOPEN_SOURCE 700 /* realpath */
 #include "cmd_report.h"

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* vsph run: the free-surface WCSPH solver on one scene (THEORY 5-6) into a
  * folder (runs/rundir); vsph scenes: every parameter with its default. */
 #include "cmd_run.h"

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #ifndef VSPH_CLI_CMD_RUN_H
 #define VSPH_CLI_CMD_RUN_H
 /** @file cmd_run.h @brief `vsph run` and `vsph scenes`. */

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* vsph scaling: h F, h N and the surface operators as h halves at fixed
  * h/dx (THEORY 2, "Truncation-error scaling"); interior convergence on a
  * quadratic field as h/dx grows. */

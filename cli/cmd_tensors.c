@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* vsph tensors: F, G, N, M at a depth below the free surface (THEORY 2). */
 #include "cmd_tensors.h"
 

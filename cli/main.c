@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* vsph: viscous SPH at a free surface. Dispatches the sub-commands. */
 #include <gsl/gsl_errno.h>
 #include <stdio.h>

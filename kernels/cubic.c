@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Cubic B-spline, Monaghan (1992), Annu. Rev. Astron. Astrophys. 30, 543,
  * Eq. (2.6); THEORY.md section 1. */
 #include <math.h>

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Renormalised Gaussian truncated at 3h: the kernel of Colagrossi et al.,
  * PRE 84, 026705 (2011), Sec. VI; THEORY.md section 1. */
 #include <math.h>

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Quintic spline, Morris, Fox & Zhu (1997), J. Comput. Phys. 136, 214,
  * Eq. (27); THEORY.md section 1. */
 #include <math.h>

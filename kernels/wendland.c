@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Wendland C2 and C4 kernels, support 2h: Wendland (1995), Adv. Comput.
  * Math. 4, 389; normalisations as in Dehnen & Aly (2012), MNRAS 425, 1068,
  * Table 1 (rescaled to support 2h); THEORY.md section 1. The 1-D variants

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* `make bench`: timings of the quadrature, the particle sums, the viscous
  * operators and the solver. Timings live here, never in the tests. */
 #include "bench.h"

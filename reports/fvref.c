@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The committed finite-volume references (reference/data), read and
  * judged: reports/fvref.h. */
 #include "fvref.h"

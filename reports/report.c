@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The report's driver: its parts in order, their cache, the assembly of
  * report.md and report.html, baseline.csv and run.json; and the helpers the
  * parts share (claims, prose, figures, fitted slopes). */

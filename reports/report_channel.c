@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 10 of the report: internal flows and the other formulations
  * (Basa, Quinlan & Lastiwka 2009; Zheng, Ma & Shao 2018; docs/theory.md
  * sections 8-10): Poiseuille start-up at Basa et al.'s set-up for every

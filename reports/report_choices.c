@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 12 of the report: the scheme's own choices, isolated (docs/theory.md
  * sections 5 and 6). The paper states neither its time integrator, nor a
  * diffusive term, nor how it laid and started its particles, nor the

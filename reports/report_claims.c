@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 9 of the report: the paper's claims beside our figures, each with
  * a verdict. The analysis claims (THEORY 2-4) are recomputed here (they are
  * cheap), so the table is complete even when those parts come from the

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 11: contact (Godunov-type) SPH and its numerical viscosity
  * (Parshikov, Medin, Rublev & Dyachkov, Parshikov; docs/theory.md section 12):
  * the shear test at alpha = 0.5 with both kernels against the paper's

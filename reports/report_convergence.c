@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 6 of the report: the decay error of each scene and formulation
  * against resolution, with the fitted order. */
 #include <math.h>

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 4 of the report: the dissipation integrals of MGF, MEAF and PVWF
  * on analytic fields (THEORY 4), against resolution, h/dx and a perturbed
  * lattice, with the error split into consistency, lattice and surface. */

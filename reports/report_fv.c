@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The finite-volume references in the report (reports/fvref.h): the
  * stretching square's OpenFOAM ladder beside SPH's, the runs that isolate
  * what sets MGF's level against it, and the cavity's E_k history and

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 9 of the report: the Laplacian patch test of Zheng, Ma & Shao
  * (2018), Sec. 4 (docs/theory.md section 7): the four forms VISC-01..04 on
  * uniform and perturbed lattices beside the paper's Tables 1-3, and its

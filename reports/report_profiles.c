@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 2 of the report: the tensors against the depth below the free
  * surface, from half support (depth 0) to full support (depth kappa). */
 #include <math.h>

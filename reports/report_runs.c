@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The report's solver runs: the resolution ladders, a cache keyed by the
  * version, the source hash and every setting (so an unchanged run is never
  * repeated), the error measures the parts share, the stretching square's

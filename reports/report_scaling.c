@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 3 of the report: the 1/h truncation-error scaling of the viscous
  * operators at the surface (THEORY 2, Appendix B of the paper), and their
  * interior convergence on a quadratic field. */

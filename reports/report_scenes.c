@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 5 of the report: the three scenes with each formulation against
  * their references (THEORY 5-6): E_k, dE_k/dt, the decay error and the
  * energy-budget residual, and the vortex patch's u_theta(r) profiles. */

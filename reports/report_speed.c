@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 7 of the report: wall time against the decay error, per scene
  * and formulation, over the resolution ladder. */
 #include <math.h>

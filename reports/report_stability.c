@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 8 of the report: stability on hard cases: PVWF's pairing on the
  * stretching square, high Reynolds number, a perturbed start, low sound
  * speed and large time steps. A run stopped as unstable is a result. */

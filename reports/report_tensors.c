@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Section 1 of the report: the moment tensors F, G, N, M (THEORY 2) for
  * every kernel, by quadrature against theory and by particle sums against
  * quadrature, with the surface constants C_F, C_N. */

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The report's runs as jobs. Every part declares the runs it reads (its
  * plan) before any is run; the report then runs what is missing and
  * assembles. Three ways to run them: in this process, a run per thread (the

@@ -1,3 +1,5 @@
+# Copyright (C) 2026 the vsph developers.
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE).
 # scripts/paraview-check.py RUNDIR [DIM]: run by scripts/paraview-check
 # under `xvfb-run -a pvpython`. Opens RUNDIR/snapshots.pvd with ParaView's
 # own reader, as the GUI does, and checks what a user of ParaView sees:

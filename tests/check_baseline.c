@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Regression baseline: the quick report's key figures for each scene and
  * formulation (its coarsest runs), committed in reports/baseline.csv, are
  * recomputed and compared. A change to the numerics shows up here.

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The lid-driven cavity (issue 11): Ghia et al.'s tables against mass
  * conservation, the wall particles' state (Adami et al. 2012) and the
  * summation density against a direct lattice sum, the transport

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Internal flows (issue 11): the channel series against an independent
  * finite-difference solution and the digests' figures, the energy
  * reference, periodic and no-slip walls in short solver runs. */

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The CLI as a user meets it: every bad input is one line on stderr and
  * exit status 2, with nothing on stdout; --help works; JSON has the keys
  * the README promises. Runs the built binary ($VSPH_BIN). */

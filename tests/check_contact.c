@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Contact SPH (issue 12; Parshikov et al., Parshikov et al.): the acoustic
  * Riemann solver against the linear acoustic Riemann problem solved
  * independently, the shear layer's closed forms, Table 1 and fit (37) as

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The committed finite-volume references (reference/data; reports/fvref.h):
  * they read whole and hold what is known of them exactly, and a damaged or
  * hand-edited copy is caught. No OpenFOAM is run here: make reference does

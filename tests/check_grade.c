@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* reports/grade.c: every rule at, just below and just above its
  * threshold, on values worked by hand. */
 #include <check.h>

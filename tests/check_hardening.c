@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Hardening (issue 8): each defect found by a hostile user, tried again.
  * Every test here failed on the code before the fix: a segfault, a run
  * reporting "ok" after a lost write, an endless loop, a parameter file

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The report's runs as jobs (runs/jobs.c, runs/rundir and runs/folder):
  * the key is the same however the settings are given; the plan's command
  * makes exactly the run the report makes in its own process; the child

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The Laplacian forms VISC-01..04 and their patch test (issue 11;
  * docs/theory.md section 7). */
 #include <math.h>

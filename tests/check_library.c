@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* libvsph as another code sees it: installed by scripts/install (make
  * check stages a copy in $VSPH_STAGE), examples/regression built against
  * it through pkg-config, shared and static, and run; the values it
@@ -173,12 +175,46 @@ START_TEST(test_install_refusals) {
 }
 END_TEST
 
+/* scripts/install-deps on a machine without Debian's package tools (a
+ * cluster, another distribution): with the compiler, pkg-config's
+ * libraries and gnuplot on PATH it passes without apt; lacking one it
+ * refuses in one line naming it, exit 2; an optional group, which needs
+ * Debian's packages, is refused likewise. */
+START_TEST(test_deps_without_apt) {
+  char dir[] = "/tmp/vsph-deps-XXXXXX", script[4096];
+  vsph_test_scratch(dir);
+  snprintf(script, sizeof script,
+           "for c in sh cc pkg-config gnuplot grep id cat; do "
+           "ln -s \"$(command -v $c)\" '%s'/$c || exit 1; done",
+           dir);
+  ck_assert_int_eq(vsph_test_shell(script)->status, 0);
+  snprintf(script, sizeof script, "PATH='%s' sh scripts/install-deps", dir);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 0 && o->err_lines == 0, "exit %d: %s", o->status,
+                o->err);
+  snprintf(script, sizeof script,
+           "rm '%s/gnuplot' && PATH='%s' '%s/sh' scripts/install-deps", dir,
+           dir, dir);
+  o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 2 && o->err_lines == 1 &&
+                    strstr(o->err, "no gnuplot") != NULL,
+                "exit %d: %s", o->status, o->err);
+  snprintf(script, sizeof script, "PATH='%s' '%s/sh' scripts/install-deps fuzz",
+           dir, dir);
+  o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 2 && o->err_lines == 1, "exit %d: %s", o->status,
+                o->err);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_library_suite(void) {
   Suite *s = suite_create("library");
   TCase *tc = tcase_create("install");
   tcase_set_timeout(tc, 120);
   tcase_add_test(tc, test_installed_example);
   tcase_add_test(tc, test_install_refusals);
+  tcase_add_test(tc, test_deps_without_apt);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The single Check runner. No OpenMP region may run before
  * srunner_run_all: forked tests would deadlock in their first one. */
 #include <gsl/gsl_errno.h>

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The pair functions (solver/pair.h) through the two codes that use them:
  * the solver's right-hand side and the analysis operators.
  *

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* io/plot: the particle pictures' shared colour scale, every figure in
  * three formats, the shared palette. Needs gnuplot (scripts/install-deps). */
 #include <math.h>

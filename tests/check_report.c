@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The report's frame: the claims table's verdict classes and their
  * tally (reports/report_claims.c), counted here independently of the
  * writer; the estimate of the time left (runs/jobs.c), worked

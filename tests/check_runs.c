@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The runs/ layer: the folder contract (runs/folder: marker, lock, seal)
  * and checkpoint and restart (runs/rundir): a run stopped at any step and
  * resumed ends bitwise the run never stopped; a foreign, damaged or

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* analysis/series.c on plain arrays, each measure against a closed form
  * computed here. */
 #include <check.h>

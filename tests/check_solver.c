@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Solver regression tests (issue 3): short runs at low resolution with
  * tolerances tied to theory or to the measured behaviour. */
 #include <math.h>

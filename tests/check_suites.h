@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #ifndef VSPH_TESTS_CHECK_SUITES_H
 #define VSPH_TESTS_CHECK_SUITES_H
 /* One suite per module, all run by tests/check_main.c (STYLE B10). */

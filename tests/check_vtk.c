@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* io/vtk (issue 6 of the ParaView review): snapshots as VTK XML PolyData
  * with binary appended, zlib-compressed data, the form ParaView writes
  * itself. The writer against vsph_vtk_read (bitwise round trip) and

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* A regression test of another code, written against libvsph alone: the
  * installed headers and library, found by pkg-config (see Makefile here
  * and README, "vsph as a library"). It checks three things a code of

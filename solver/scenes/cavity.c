@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The lid-driven cavity (SPHERIC benchmark 3; docs/theory.md, section 9):
  * fluid in the square [0, L]^2 from rest, the lid y = L sliding at U from
  * t = 0, no-slip walls all round. Re = U L/nu; Ghia, Ghia & Shin (1982)

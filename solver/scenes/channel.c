@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Channel start-up flows (Basa, Quinlan & Lastiwka 2009; Morris, Fox & Zhu
  * 1997; docs/theory.md, section 9): fluid between no-slip walls y = 0 and
  * y = W, periodic in x, from rest. Poiseuille: driven by a uniform force

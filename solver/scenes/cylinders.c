@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Stokes flow through a periodic array of cylinders (Parshikov et al.,
  * Parshikov et al. section 5.5, Table 2; docs/theory.md section 12): in 2-D,
  * one cylinder of diameter d at the centre of the periodic square of side S =

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The shear layer of Parshikov, Medin, Rublev & Dyachkov (Parshikov et al.
  * sections 3 and 5; docs/theory.md section 12): two half-spaces sliding at +-U0
  * along y, u_y = U0 sign(x), in a box periodic along y and z. The paper

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Standing wave in a tank with free-slip walls (Colagrossi et al. 2011,
  * Sec. VI C; THEORY 6.3). The amplitude eps = 2A/lambda = 0.05 is
  * [reconstructed]: the seed's value is unreadable.

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Stretching square: a free square under pure strain (Colagrossi et al.
  * 2011, Sec. VI B; THEORY 6.2). Initial pressure from lap p = -2 rho A0^2
  * with p = 2 mu n.D0.n on the edges, by the FFTW sine-transform solver

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* Vortex patch: a disc with non-uniform angular velocity held by a radial
  * body force (Colagrossi et al. 2011, Sec. VI A; THEORY 6.1). The initial
  * profile is [reconstructed]: the seed's Eq. (6.39) is unreadable; its

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* libFuzzer target (make fuzz): the command-line parser with the options
  * of `vsph run` (the Solver table, files, --set), then the props it feeds.
  * The input is split into arguments at newlines. */

@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* libFuzzer target (make fuzz): the run-folder contract (runs/folder,
  * runs/rundir). The input lays out a folder (entries with vsph's names and
  * others, as regular files, folders, FIFOs or symbolic links, a marker of

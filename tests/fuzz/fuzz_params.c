@@ -1,3 +1,5 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* libFuzzer target (make fuzz): the parameter file parser and the
  * parameter tables. Any input must end in a clean status: no crash, no
  * leak, no undefined behaviour, no hang. */
