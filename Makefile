@@ -26,17 +26,22 @@ CFLAGS   ?= $(OPT) $(ARCH) -g
 # -fPIC: the program, libvsph.a and libvsph.so share one set of objects
 # (measured: the same results bit for bit and the same speed, README);
 # -fno-semantic-interposition lets the library's calls to its own
-# functions stay direct.
+# functions stay direct; -fvisibility=hidden: libvsph.so exports only what
+# the public headers mark VSPH_API (common/api.h).
 ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L -fopenmp -fno-math-errno \
-            -fPIC -fno-semantic-interposition $(WARN) $(CFLAGS) \
+            -fPIC -fno-semantic-interposition -fvisibility=hidden \
+            $(WARN) $(CFLAGS) \
             $(SAN) $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 LDLIBS    = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcmark-gfm-extensions -lm
 TESTLIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
 
 # Layers, lowest first: common <- kernels <- solver <- analysis <- io <-
 # runs <- reports <- cli. Everything but cli/main.c is linked into the tests.
-LIB_SRC  := $(wildcard common/*.c kernels/*.c solver/*.c solver/scenes/*.c \
-              analysis/*.c io/*.c runs/*.c reports/*.c)
+# The library, libvsph, is the lower five layers (common to io); runs,
+# reports and cli are the program that uses it.
+CORE_SRC := $(wildcard common/*.c kernels/*.c solver/*.c solver/scenes/*.c \
+              analysis/*.c io/*.c)
+LIB_SRC  := $(CORE_SRC) $(wildcard runs/*.c reports/*.c)
 CLI_SRC  := $(wildcard cli/*.c)
 TEST_SRC := $(wildcard tests/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
@@ -140,8 +145,9 @@ full-report: deps $(BUILD)/vsph
 	  --assemble --out reports/out-full --from-archive reports/full
 
 # ------------------------------------------------------------ the library
-# libvsph, static and shared: every layer but the command line, from the
-# program's own objects. The public headers (the front door, vsph.h, and
+# libvsph, static and shared: the lower five layers (common, kernels,
+# solver, analysis, io) and the source hash, from the program's own
+# objects; runs/, reports/ and cli/ stay in the program. The public headers (the front door, vsph.h, and
 # what it includes) install under include/vsph/ with their folders; a
 # program links it through pkg-config (vsph.pc), as examples/regression
 # shows (README, "vsph as a library").
@@ -149,12 +155,12 @@ VERSION := $(shell sed -n 's/^\#define VSPH_VERSION "\(.*\)"/\1/p' common/consts
 SOVER   := 0
 LIBA    := $(BUILD)/libvsph.a
 LIBSO   := $(BUILD)/libvsph.so.$(VERSION)
-PUB_HDR := vsph.h common/consts.h common/status.h common/params.h \
+PUB_HDR := vsph.h common/api.h common/consts.h common/status.h common/params.h \
            kernels/kernel.h solver/particles.h solver/cells.h solver/pair.h \
            solver/viscous.h solver/equations.h solver/walls.h solver/scene.h \
            solver/run.h solver/lattice.h analysis/moments.h analysis/fields.h \
            analysis/scaling.h analysis/dissipation.h analysis/references.h
-LIB_ALL := $(LIB_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
+LIB_ALL := $(CORE_SRC:%.c=$(BUILD)/%.o) $(HASH_OBJ)
 
 $(LIBA): $(LIB_ALL)
 	@rm -f $@

@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
 #include "fields.h"
 
 struct vsph_kernel_type;
@@ -68,32 +69,32 @@ struct vsph_dissipation_result {
 };
 
 /** @brief Name of a shape ("disc", "square"). */
-const char *vsph_dissipation_shape_name(int shape);
+VSPH_API const char *vsph_dissipation_shape_name(int shape);
 
 /** @brief Shape called @p name, or -1. */
-int vsph_dissipation_shape_find(const char *name);
+VSPH_API int vsph_dissipation_shape_find(const char *name);
 
 /** @brief The "Dissipation" parameter table (@p n receives its length). */
-const struct vsph_params_spec *vsph_dissipation_params(size_t *n);
+VSPH_API const struct vsph_params_spec *vsph_dissipation_params(size_t *n);
 
 /** @brief Props from the "Dissipation" section of @p prm (NULL: the
  *  defaults: MGF, strain, square, 3h Gaussian, 40 across, h/dx = 4/3,
  *  mu = 0.0137, no perturbation, seed 2385, epsrel 1e-10), checked and
  *  resolved. @return VSPH_OK or VSPH_EINVAL. */
-int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
-                                struct vsph_params *prm);
+VSPH_API int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
+                                         struct vsph_params *prm);
 
 /** @brief Exact -int V:D dV and -mu int |grad u|^2 dV over the shape, by
  *  nested GSL quadrature. @return VSPH_OK, VSPH_ELIB, VSPH_ENOMEM. */
-int vsph_dissipation_exact(const struct vsph_dissipation_props *dp,
-                           double *P_exact, double *P_grad);
+VSPH_API int vsph_dissipation_exact(const struct vsph_dissipation_props *dp,
+                                    double *P_exact, double *P_grad);
 
 /** @brief Build the set, evaluate the formulation, fill @p res.
  *  @note Allocates and frees its own particle set, cell list and workspace
  *  (a driver, not a hot function).
  *  @return VSPH_OK, VSPH_EINVAL, VSPH_ENOMEM, VSPH_ELIB. */
-int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
-                             struct vsph_dissipation_result *res);
+VSPH_API int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
+                                      struct vsph_dissipation_result *res);
 
 struct vsph_viscous_props;
 struct vsph_particles;
@@ -116,8 +117,8 @@ struct vsph_dissipation_power {
  *  mass or density, a non-finite position or velocity, particles too far
  *  apart for a grid, a result that is not finite: two particles at one
  *  place), @p out untouched; VSPH_ENOMEM. */
-int vsph_dissipation_particles(const struct vsph_viscous_props *vp,
-                               const struct vsph_particles *p,
-                               struct vsph_dissipation_power *out);
+VSPH_API int vsph_dissipation_particles(const struct vsph_viscous_props *vp,
+                                        const struct vsph_particles *p,
+                                        struct vsph_dissipation_power *out);
 
 #endif /* VSPH_ANALYSIS_DISSIPATION_H */

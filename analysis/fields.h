@@ -3,6 +3,8 @@
 #ifndef VSPH_ANALYSIS_FIELDS_H
 #define VSPH_ANALYSIS_FIELDS_H
 
+#include "../common/api.h"
+
 /** @file fields.h
  *  @brief Analytic velocity fields sampled on particle sets by the
  *  dissipation and scaling analyses (THEORY.md sections 2 and 4), with their
@@ -35,22 +37,24 @@ struct vsph_fields_props {
 };
 
 /** @brief Name of a field kind. */
-const char *vsph_fields_name(int kind);
+VSPH_API const char *vsph_fields_name(int kind);
 
 /** @brief Kind called @p name, or -1. */
-int vsph_fields_find(const char *name);
+VSPH_API int vsph_fields_find(const char *name);
 
 /** @brief Defaults: A = 1.2348, Omega = 0.8731, U = 0.4, k = pi,
  *  c = (0.7, -1.3, 0.45, -0.35, 0.9, 1.1) (GSL-style high-entropy values).
  *  @return VSPH_OK or VSPH_EINVAL (kind not defined in this dimension). */
-int vsph_fields_props_init(struct vsph_fields_props *fp, int kind, int dim);
+VSPH_API int vsph_fields_props_init(struct vsph_fields_props *fp, int kind,
+                                    int dim);
 
 /** @brief Velocity u(x) and gradient grad[a*dim+b] = du_a/dx_b at x. */
-void vsph_fields_eval(const struct vsph_fields_props *fp, const double x[3],
-                      double u[3], double grad[9]);
+VSPH_API void vsph_fields_eval(const struct vsph_fields_props *fp,
+                               const double x[3], double u[3], double grad[9]);
 
 /** @brief Laplacian and grad(div u) at x (exact). */
-void vsph_fields_second(const struct vsph_fields_props *fp, const double x[3],
-                        double lap[3], double graddiv[3]);
+VSPH_API void vsph_fields_second(const struct vsph_fields_props *fp,
+                                 const double x[3], double lap[3],
+                                 double graddiv[3]);
 
 #endif /* VSPH_ANALYSIS_FIELDS_H */

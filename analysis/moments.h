@@ -6,6 +6,8 @@
 #include <gsl/gsl_integration.h>
 #include <stddef.h>
 
+#include "../common/api.h"
+
 struct vsph_kernel_type;
 struct vsph_particles;
 struct vsph_params;
@@ -35,37 +37,38 @@ struct vsph_moments {
  *  @param epsrel relative accuracy of the outer integrals (>= 1e-13).
  *  @param outer,inner caller-owned GSL workspaces (distinct).
  *  @return VSPH_OK, VSPH_EINVAL, VSPH_ELIB (GSL failed to converge). */
-int vsph_moments_quadrature(const struct vsph_kernel_type *k, int dim,
-                            double depth, double epsrel,
-                            gsl_integration_workspace *outer,
-                            gsl_integration_workspace *inner,
-                            struct vsph_moments *out);
+VSPH_API int vsph_moments_quadrature(const struct vsph_kernel_type *k, int dim,
+                                     double depth, double epsrel,
+                                     gsl_integration_workspace *outer,
+                                     gsl_integration_workspace *inner,
+                                     struct vsph_moments *out);
 
 /** @brief The surface constants of THEORY.md section 2 from the closed
  *  formula: I = int_0^kappa q^{d-2} w(q) dq, C_F = K (d-1) beta_d I,
  *  C_N = 2 (d-1) gamma_d I; in 1-D C_F = K w(0)/2, C_N = 2 w(0).
  *  @return VSPH_OK, VSPH_EINVAL, VSPH_ELIB. */
-int vsph_moments_constants(const struct vsph_kernel_type *k, int dim,
-                           double epsrel, gsl_integration_workspace *ws,
-                           double *C_F, double *C_N);
+VSPH_API int vsph_moments_constants(const struct vsph_kernel_type *k, int dim,
+                                    double epsrel,
+                                    gsl_integration_workspace *ws, double *C_F,
+                                    double *C_N);
 
 /** @brief Theoretical values: full support (half = 0) G = S, M = delta,
  *  F = N = 0; half support (half = 1) G = S/2, M = delta/2,
  *  F = -C_F (d_ij n_k + d_ik n_j + d_jk n_i - n_i n_j n_k), N = -C_N n. */
-void vsph_moments_theory(int dim, int half, double C_F, double C_N,
-                         struct vsph_moments *out);
+VSPH_API void vsph_moments_theory(int dim, int half, double C_F, double C_N,
+                                  struct vsph_moments *out);
 
 /** @brief The tensors as particle sums sum_j V_j (...) about particle
  *  @p centre of @p p, for smoothing length @p h (values then scale as
  *  F, N ~ 1/h, G, M ~ 1). O(N).
  *  @return VSPH_OK or VSPH_EINVAL. */
-int vsph_moments_sum(const struct vsph_kernel_type *k,
-                     const struct vsph_particles *p, size_t centre, double h,
-                     struct vsph_moments *out);
+VSPH_API int vsph_moments_sum(const struct vsph_kernel_type *k,
+                              const struct vsph_particles *p, size_t centre,
+                              double h, struct vsph_moments *out);
 
 /** @brief Largest absolute entry difference of F, G, N, M (gap[0..3]). */
-void vsph_moments_gap(const struct vsph_moments *a,
-                      const struct vsph_moments *b, double gap[4]);
+VSPH_API void vsph_moments_gap(const struct vsph_moments *a,
+                               const struct vsph_moments *b, double gap[4]);
 
 /* ------------------------------------------------ one evaluation (driver) */
 
@@ -96,19 +99,19 @@ struct vsph_moments_result {
 };
 
 /** @brief The "Tensors" parameter table (@p n receives its length). */
-const struct vsph_params_spec *vsph_moments_params(size_t *n);
+VSPH_API const struct vsph_params_spec *vsph_moments_params(size_t *n);
 
 /** @brief Props from the "Tensors" section of @p prm (NULL: defaults: 3h
  *  Gaussian, 2-D, depth 0, quadrature, square lattice at h/dx 4/3), checked
  *  and resolved. @return VSPH_OK or VSPH_EINVAL. */
-int vsph_moments_props_init(struct vsph_moments_props *mp,
-                            struct vsph_params *prm);
+VSPH_API int vsph_moments_props_init(struct vsph_moments_props *mp,
+                                     struct vsph_params *prm);
 
 /** @brief Evaluate: quadrature, constants, theory where it exists and the
  *  particle sums if asked.
  *  @note Allocates its own workspaces and particle set (a driver).
  *  @return VSPH_OK, VSPH_EINVAL, VSPH_ENOMEM, VSPH_ELIB. */
-int vsph_moments_compute(const struct vsph_moments_props *mp,
-                         struct vsph_moments_result *res);
+VSPH_API int vsph_moments_compute(const struct vsph_moments_props *mp,
+                                  struct vsph_moments_result *res);
 
 #endif /* VSPH_ANALYSIS_MOMENTS_H */

@@ -5,6 +5,8 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
+
 /** @file references.h
  *  @brief Exact reference solutions of the free-surface scenes (THEORY.md
  *  section 6). Vortex patch: the Bessel-series solution of Eq. (6.38) of
@@ -32,34 +34,35 @@ struct vsph_references_vortex {
 /** @brief Build the series: zeros of J_2 (gsl_sf_bessel_zero_Jnu) and the
  *  coefficients c_n = int omega(r,0) phi_n r^3 dr / int phi_n^2 r^3 dr by
  *  GSL quadrature. NULL (after reporting) on bad values or failure. */
-struct vsph_references_vortex *vsph_references_vortex_alloc(
+VSPH_API struct vsph_references_vortex *vsph_references_vortex_alloc(
     double R, double l2, double a, double omega0, double nu, size_t nterms);
 
 /** @brief Free; NULL is a no-op. */
-void vsph_references_vortex_free(struct vsph_references_vortex *v);
+VSPH_API void vsph_references_vortex_free(struct vsph_references_vortex *v);
 
 /** @brief The initial profile omega(r, 0), closed form. */
-double vsph_references_vortex_initial(const struct vsph_references_vortex *v,
-                                      double r);
+VSPH_API double vsph_references_vortex_initial(
+    const struct vsph_references_vortex *v, double r);
 
 /** @brief omega(r, t) and d omega/dr (r, t) from the series. */
-void vsph_references_vortex_eval(const struct vsph_references_vortex *v,
-                                 double r, double t, double *omega,
-                                 double *domega_dr);
+VSPH_API void vsph_references_vortex_eval(
+    const struct vsph_references_vortex *v, double r, double t, double *omega,
+    double *domega_dr);
 
 /** @brief Kinetic energy E_k = pi rho int omega^2 r^3 dr and its rate
  *  dE_k/dt = -mu int (r domega/dr)^2 dV (Eq. 6.41), per unit depth, by
  *  GSL quadrature of the series. @return VSPH_OK or VSPH_ELIB.
  *  @note Uses the object's workspace: not for concurrent calls. */
-int vsph_references_vortex_energy(struct vsph_references_vortex *v, double t,
-                                  double rho, double *Ek, double *dEk_dt);
+VSPH_API int vsph_references_vortex_energy(struct vsph_references_vortex *v,
+                                           double t, double rho, double *Ek,
+                                           double *dEk_dt);
 
 /** @brief The same E_k and dE_k/dt from the series coefficients alone:
  *  by orthogonality (weight r^3) E_k = pi rho [c_0^2 R^4/4 + sum c_n^2
  *  N_n e^{-2 nu k_n^2 t}], N_n = int phi_n^2 r^3 dr, and dE_k/dt =
  *  -2 pi rho nu sum k_n^2 c_n^2 N_n e^{-2 nu k_n^2 t}. Fast; checked
  *  against the quadrature version in the tests. */
-void vsph_references_vortex_energy_series(
+VSPH_API void vsph_references_vortex_energy_series(
     const struct vsph_references_vortex *v, double t, double rho, double *Ek,
     double *dEk_dt);
 
@@ -83,8 +86,8 @@ struct vsph_kernel_type;
  *  4 g t i^2erfc(s/(2 sqrt(nu t))), g = 2 nu U0/d^2, a few terms at any t;
  *  the two agree to rounding where they meet. At t = 0 the exact values
  *  U = 0, dU/dt = 2 nu U0/d^2. */
-double vsph_references_poiseuille(double y, double t, double W, double nu,
-                                  double U0, double *dudt);
+VSPH_API double vsph_references_poiseuille(double y, double t, double W,
+                                           double nu, double U0, double *dudt);
 
 /** @brief Couette start-up (Morris et al. 1997, eq. 23 of Zheng et al.):
  *  the wall y = W moves at @p v0 from t = 0:
@@ -93,13 +96,13 @@ double vsph_references_poiseuille(double y, double t, double W, double nu,
  *  nu t/W^2 = 0.05 by images, U = v0 sum_n [erfc(((2n+1) W - y)/s) -
  *  erfc(((2n+1) W + y)/s)], s = 2 sqrt(nu t). At t = 0: U = 0 below the
  *  wall (dU/dt is singular there: NaN). */
-double vsph_references_couette(double y, double t, double W, double nu,
-                               double v0, double *dudt);
+VSPH_API double vsph_references_couette(double y, double t, double W, double nu,
+                                        double v0, double *dudt);
 
 /** @brief The channel's reference velocity U(y, t) (Poiseuille or
  *  Couette by @p ch), and dU/dt into @p dudt (may be NULL). */
-double vsph_references_channel(const struct vsph_scene_channel *ch, double y,
-                               double t, double *dudt);
+VSPH_API double vsph_references_channel(const struct vsph_scene_channel *ch,
+                                        double y, double t, double *dudt);
 
 /** Velocity-profile errors of a channel run against its series. */
 struct vsph_references_profile_err {
@@ -113,19 +116,19 @@ struct vsph_references_profile_err {
 /** @brief The errors of the fluid particles (ids < @p n_fluid) of @p p at
  *  time @p t against the channel's series; NaN for every field when the
  *  scene @p sc is not a channel. */
-void vsph_references_profile_error(const struct vsph_scene *sc,
-                                   const struct vsph_particles *p,
-                                   size_t n_fluid, double t,
-                                   struct vsph_references_profile_err *e);
+VSPH_API void vsph_references_profile_error(
+    const struct vsph_scene *sc, const struct vsph_particles *p, size_t n_fluid,
+    double t, struct vsph_references_profile_err *e);
 
 /** @brief The velocity profile binned into @p nb rows across the channel:
  *  per bin the mean y, mean u_x, the series at that mean y and the count
  *  (bins with no particle: y the bin centre, u NaN).
  *  @return VSPH_OK, or VSPH_EINVAL when @p sc is not a channel. */
-int vsph_references_profile_bins(const struct vsph_scene *sc,
-                                 const struct vsph_particles *p, size_t n_fluid,
-                                 double t, size_t nb, double *y, double *u,
-                                 double *U, size_t *count);
+VSPH_API int vsph_references_profile_bins(const struct vsph_scene *sc,
+                                          const struct vsph_particles *p,
+                                          size_t n_fluid, double t, size_t nb,
+                                          double *y, double *u, double *U,
+                                          size_t *count);
 
 /** The row-to-row oscillation of a binned profile, apart from its smooth
  *  error: per interior bin k, the second difference of the error
@@ -143,9 +146,10 @@ struct vsph_references_zigzag {
 /** @brief The zigzag of the profile @p y, @p u, @p U (@p nb bins, as
  *  vsph_references_profile_bins writes them; a triple with a NaN u or U is left
  *  out), over @p scale (the peak speed). */
-void vsph_references_profile_zigzag(const double *y, const double *u,
-                                    const double *U, size_t nb, double scale,
-                                    struct vsph_references_zigzag *z);
+VSPH_API void vsph_references_profile_zigzag(const double *y, const double *u,
+                                             const double *U, size_t nb,
+                                             double scale,
+                                             struct vsph_references_zigzag *z);
 
 /** Ghia, Ghia & Shin (1982), Tables I and II: the steady lid-driven
  *  cavity's u on the vertical centreline x = L/2 at heights y, and v on the
@@ -159,21 +163,22 @@ struct vsph_references_ghia {
 
 /** @brief Ghia et al.'s profiles at Reynolds number @p Re into @p g.
  *  @return 1 for Re = 100, 400 or 1000 (to 1e-9), else 0 (g untouched). */
-int vsph_references_ghia(double Re, struct vsph_references_ghia *g);
+VSPH_API int vsph_references_ghia(double Re, struct vsph_references_ghia *g);
 
 /** @brief The fluid's velocity at @p x by the Shepard average with kernel
  *  @p k of smoothing length @p h: u = sum_i W_i u_i / sum_i W_i over the
  *  fluid particles (id < n_fluid), NaN where none is within reach. */
-void vsph_references_shepard(const struct vsph_particles *p, size_t n_fluid,
-                             const struct vsph_kernel_type *k, double h,
-                             const double x[3], double u[3]);
+VSPH_API void vsph_references_shepard(const struct vsph_particles *p,
+                                      size_t n_fluid,
+                                      const struct vsph_kernel_type *k,
+                                      double h, const double x[3], double u[3]);
 
 /** @brief Point @p q of Ghia et al.'s centreline @p line of the cavity
  *  @p cv (0: u on x = L/2 at their y_q; 1: v on y = L/2 at their x_q):
  *  the SPH velocity there (vsph_references_shepard) into @p sph and
  *  their value into @p ref (m/s). @return the point's position along the
  *  line (m). */
-double vsph_references_cavity_point(
+VSPH_API double vsph_references_cavity_point(
     const struct vsph_scene_cavity *cv, const struct vsph_references_ghia *g,
     int line, size_t q, const struct vsph_particles *p, size_t n_fluid,
     const struct vsph_kernel_type *k, double h, double *sph, double *ref);
@@ -184,11 +189,10 @@ double vsph_references_cavity_point(
  *  their values, in units of U: e->rms the RMS, e->rms_rel the largest,
  *  e->v_rms NaN. All NaN when the scene is not the cavity or Ghia et al.
  *  have no table for its Re. */
-void vsph_references_cavity_error(const struct vsph_scene *sc,
-                                  const struct vsph_particles *p,
-                                  size_t n_fluid,
-                                  const struct vsph_kernel_type *k, double h,
-                                  struct vsph_references_profile_err *e);
+VSPH_API void vsph_references_cavity_error(
+    const struct vsph_scene *sc, const struct vsph_particles *p, size_t n_fluid,
+    const struct vsph_kernel_type *k, double h,
+    struct vsph_references_profile_err *e);
 
 /** @brief Zheng et al.'s cavity metric (their Fig. 10), |u_min - u_min,Ghia|
  *  over U: the smallest u on the vertical centreline against Ghia et al.'s
@@ -198,9 +202,10 @@ void vsph_references_cavity_error(const struct vsph_scene *sc,
  *  @p n rows). The times into @p t_out and the errors into @p err (at most
  *  @p cap). @return the number of times, 0 when Ghia et al. have no table
  *  for @p Re or a time's block is not whole. */
-size_t vsph_references_cavity_umin(const double *t, const double *vel, size_t n,
-                                   size_t npts, double Re, double *t_out,
-                                   double *err, size_t cap);
+VSPH_API size_t vsph_references_cavity_umin(const double *t, const double *vel,
+                                            size_t n, size_t npts, double Re,
+                                            double *t_out, double *err,
+                                            size_t cap);
 
 /** @brief The exact decay of a small standing (or progressive) gravity
  *  wave of wavenumber @p k on water of depth @p H, kinematic viscosity
@@ -215,14 +220,14 @@ size_t vsph_references_cavity_umin(const double *t, const double *vel, size_t n,
  *  wave's Re = 140 and eps = 0.05 (docs/theory.md section 6).
  *  @return VSPH_OK, VSPH_EINVAL (a value not positive, nu < 0),
  *  VSPH_ENOCONV (Newton's method did not converge to 1e-14). */
-int vsph_references_wave_decay(double g, double k, double H, double nu,
-                               double *gamma, double *omega);
+VSPH_API int vsph_references_wave_decay(double g, double k, double H, double nu,
+                                        double *gamma, double *omega);
 
 /** @brief Lighthill's standing-wave kinetic energy (THEORY 6.3) for the
  *  wave @p w (g, A, L, nu, k, omega) at density @p rho and time @p t:
  *  E_k = (rho g A^2 L / 8) exp(-4 nu k^2 t) [1 + cos(2 omega t)]. */
-double vsph_references_lighthill(const struct vsph_scene_wave *w, double rho,
-                                 double t);
+VSPH_API double vsph_references_lighthill(const struct vsph_scene_wave *w,
+                                          double rho, double t);
 
 /** A scene's reference curve: E_k(t) and dE_k/dt(t), NaN where the scene
  *  has none (channels: (rho/2) length int U^2 dy by 64-point
@@ -238,16 +243,16 @@ struct vsph_references_scene {
 
 /** @brief Reference of @p sc (kept by reference until _free).
  *  NULL (after reporting) on failure. */
-struct vsph_references_scene *vsph_references_scene_alloc(
+VSPH_API struct vsph_references_scene *vsph_references_scene_alloc(
     const struct vsph_scene *sc);
 
 /** @brief Free; NULL is a no-op. */
-void vsph_references_scene_free(struct vsph_references_scene *r);
+VSPH_API void vsph_references_scene_free(struct vsph_references_scene *r);
 
 /** @brief E_k and dE_k/dt of the reference at time t (NaN where none).
  *  @return VSPH_OK or VSPH_ELIB. */
-int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
-                               double *Ek, double *dEk_dt);
+VSPH_API int vsph_references_scene_eval(struct vsph_references_scene *r,
+                                        double t, double *Ek, double *dEk_dt);
 
 /** @brief The reference's mechanical (wave) energy E_m(t) and its rate
  *  dE_m/dt, which the viscous power must match (NaN where none). Standing
@@ -257,7 +262,7 @@ int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
  *  energy stays constant while the disc stays round); stretching square:
  *  t = 0 only (E_k and the exact viscous power); channels: their E_k.
  *  @return VSPH_OK or VSPH_ELIB. */
-int vsph_references_scene_mech(struct vsph_references_scene *r, double t,
-                               double *Em, double *dEm_dt);
+VSPH_API int vsph_references_scene_mech(struct vsph_references_scene *r,
+                                        double t, double *Em, double *dEm_dt);
 
 #endif /* VSPH_ANALYSIS_REFERENCES_H */

@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
 #include "../solver/viscous.h"
 #include "fields.h"
 
@@ -68,22 +69,22 @@ struct vsph_scaling_interior {
 
 /** @brief The "Scaling" parameter table (@p n receives its length):
  *  kernel, dim, field, lattice, perturb, seed, levels, hdx, mu, h0. */
-const struct vsph_params_spec *vsph_scaling_params(size_t *n);
+VSPH_API const struct vsph_params_spec *vsph_scaling_params(size_t *n);
 
 /** @brief Props from the "Scaling" section of @p prm (NULL: the defaults:
  *  3h Gaussian, 2-D strain, square lattice, 5 levels from h0 = 0.1, h/dx =
  *  4/3, mu = 0.0137, round_tol = 1e-9), checked and resolved.
  *  @return VSPH_OK or VSPH_EINVAL (the message names the parameter). */
-int vsph_scaling_props_init(struct vsph_scaling_props *sp,
-                            struct vsph_params *prm);
+VSPH_API int vsph_scaling_props_init(struct vsph_scaling_props *sp,
+                                     struct vsph_params *prm);
 
 /** @brief Least-squares slope of log y against log x over the points with
  *  x, y > 0 and finite (GSL gsl_fit_linear); NaN if fewer than two. */
-double vsph_scaling_slope(const double *x, const double *y, size_t n);
+VSPH_API double vsph_scaling_slope(const double *x, const double *y, size_t n);
 
 /** @brief The h/dx values of the interior sweep (1, 4/3, 2, 3, 4, 6) into
  *  @p hdx; returns their number. */
-size_t vsph_scaling_hdx_ladder(const double **hdx);
+VSPH_API size_t vsph_scaling_hdx_ladder(const double **hdx);
 
 /** @brief Run the surface sweep: at each level a half-space patch of radius
  *  2 kappa h + 2 dx around the surface particle (exactly what the operators
@@ -91,15 +92,15 @@ size_t vsph_scaling_hdx_ladder(const double **hdx);
  *  @return VSPH_OK, VSPH_EINVAL (bad props, or the estimate of its work
  *  above max_pairs: refused before anything is laid), VSPH_ENOMEM,
  *  VSPH_ELIB. */
-int vsph_scaling_surface(const struct vsph_scaling_props *sp,
-                         struct vsph_scaling_result *res);
+VSPH_API int vsph_scaling_surface(const struct vsph_scaling_props *sp,
+                                  struct vsph_scaling_result *res);
 
 /** @brief Interior convergence of MGF and MEAF on the 2-D quadratic field
  *  of @p sp->field, at the centre of a full patch, for each h/dx in
  *  @p hdx (n values). */
-int vsph_scaling_interior(const struct vsph_scaling_props *sp,
-                          const double *hdx, size_t n,
-                          struct vsph_scaling_interior *res);
+VSPH_API int vsph_scaling_interior(const struct vsph_scaling_props *sp,
+                                   const double *hdx, size_t n,
+                                   struct vsph_scaling_interior *res);
 
 /** @brief The viscous term along the vertical symmetry axis of a square
  *  (side 1 m, square lattice, @p nacross particles across, h = sp->hdx dx)
@@ -110,7 +111,8 @@ int vsph_scaling_interior(const struct vsph_scaling_props *sp,
  *  The exact value is 0 (a linear field); the surface rows show the 1/h
  *  truncation error.
  *  @return VSPH_OK, VSPH_EINVAL (not a 2-D field), VSPH_ENOMEM. */
-int vsph_scaling_axis(const struct vsph_scaling_props *sp, size_t nacross,
-                      double *y, double *f[VSPH_VISCOUS_FORM_COUNT], size_t *n);
+VSPH_API int vsph_scaling_axis(const struct vsph_scaling_props *sp,
+                               size_t nacross, double *y,
+                               double *f[VSPH_VISCOUS_FORM_COUNT], size_t *n);
 
 #endif /* VSPH_ANALYSIS_SCALING_H */

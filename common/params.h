@@ -5,6 +5,8 @@
 
 #include <stddef.h>
 
+#include "api.h"
+
 /** @file params.h
  *  @brief Run parameters as "Section:key" -> value, from a YAML-subset file
  *  (SWIFT shape: `Section:` then `key: value`, scalars and [a, b] lists,
@@ -17,10 +19,10 @@
 struct vsph_params;
 
 /** @brief Empty store. NULL on failure. */
-struct vsph_params *vsph_params_alloc(void);
+VSPH_API struct vsph_params *vsph_params_alloc(void);
 
 /** @brief Free; NULL is a no-op. */
-void vsph_params_free(struct vsph_params *prm);
+VSPH_API void vsph_params_free(struct vsph_params *prm);
 
 /** @brief Read a parameter file (at most 1 MiB): its values override
  *  those of files read before it and of earlier vsph_params_set calls, so
@@ -28,52 +30,53 @@ void vsph_params_free(struct vsph_params *prm);
  *  @return VSPH_OK, VSPH_EIO (cannot open or read), VSPH_EINVAL (too large;
  *  outside the subset: anchors, aliases, deeper nesting, several
  *  documents, a key given twice in the same file; malformed), VSPH_ENOMEM. */
-int vsph_params_read(struct vsph_params *prm, const char *path);
+VSPH_API int vsph_params_read(struct vsph_params *prm, const char *path);
 
 /** @brief The same from @p len bytes of @p text; @p path names it in
  *  messages. */
-int vsph_params_read_string(struct vsph_params *prm, const char *text,
-                            size_t len, const char *path);
+VSPH_API int vsph_params_read_string(struct vsph_params *prm, const char *text,
+                                     size_t len, const char *path);
 
 /** @brief Set "Section:key" to @p value (overrides the file).
  *  @return VSPH_OK or VSPH_EINVAL (key not of the form Section:key). */
-int vsph_params_set(struct vsph_params *prm, const char *key,
-                    const char *value);
+VSPH_API int vsph_params_set(struct vsph_params *prm, const char *key,
+                             const char *value);
 
 /** @brief The same from one "Section:key=value" setting (the form of
  *  `--set` and of the report's run settings).
  *  @return VSPH_OK or VSPH_EINVAL (not of that form; reported). */
-int vsph_params_assign(struct vsph_params *prm, const char *setting);
+VSPH_API int vsph_params_assign(struct vsph_params *prm, const char *setting);
 
 /** @brief Required number. @return VSPH_OK or VSPH_EINVAL (missing or not
  *  a finite number). */
-int vsph_params_get_double(struct vsph_params *prm, const char *key,
-                           double *out);
+VSPH_API int vsph_params_get_double(struct vsph_params *prm, const char *key,
+                                    double *out);
 
 /** @brief Optional number with a default (recorded as used). */
-int vsph_params_get_double_or(struct vsph_params *prm, const char *key,
-                              double def, double *out);
+VSPH_API int vsph_params_get_double_or(struct vsph_params *prm, const char *key,
+                                       double def, double *out);
 
 /** @brief Optional string with a default (recorded as used).
  *  @note The pointer lives as long as the store. */
-int vsph_params_get_string_or(struct vsph_params *prm, const char *key,
-                              const char *def, const char **out);
+VSPH_API int vsph_params_get_string_or(struct vsph_params *prm, const char *key,
+                                       const char *def, const char **out);
 
 /** @brief The first key given but never read, or NULL. */
-const char *vsph_params_unused(const struct vsph_params *prm);
+VSPH_API const char *vsph_params_unused(const struct vsph_params *prm);
 
 /** @brief 1 if @p key was given (by a file, a setting or an option), 0 if
  *  it is absent or holds a default a getter filled in. @p prm may be NULL
  *  (0). */
-int vsph_params_given(const struct vsph_params *prm, const char *key);
+VSPH_API int vsph_params_given(const struct vsph_params *prm, const char *key);
 
 /** @brief Number of entries (given or used). */
-size_t vsph_params_count(const struct vsph_params *prm);
+VSPH_API size_t vsph_params_count(const struct vsph_params *prm);
 
 /** @brief Entry @p i in insertion order: key, value, and whether it was
  *  read (used). */
-void vsph_params_entry(const struct vsph_params *prm, size_t i,
-                       const char **key, const char **value, int *used);
+VSPH_API void vsph_params_entry(const struct vsph_params *prm, size_t i,
+                                const char **key, const char **value,
+                                int *used);
 
 /* ------------------------------------------------------- parameter tables */
 
@@ -125,21 +128,21 @@ struct vsph_params_spec {
  *  must be integral. Every value is recorded as used.
  *  @return VSPH_OK or VSPH_EINVAL (malformed or out of bounds: the message
  *  names the key, the value and the bounds), VSPH_ENOMEM. */
-int vsph_params_load(struct vsph_params *prm, const char *section,
-                     const struct vsph_params_spec *spec, size_t n,
-                     void *props);
+VSPH_API int vsph_params_load(struct vsph_params *prm, const char *section,
+                              const struct vsph_params_spec *spec, size_t n,
+                              void *props);
 
 /** @brief The spec called @p key in a table, or NULL. */
-const struct vsph_params_spec *vsph_params_spec_find(
+VSPH_API const struct vsph_params_spec *vsph_params_spec_find(
     const struct vsph_params_spec *spec, size_t n, const char *key);
 
 /** @brief A spec's default as text ("1.3333333333333333", "40", "mgf"). */
-void vsph_params_spec_default(const struct vsph_params_spec *s, char *buf,
-                              size_t len);
+VSPH_API void vsph_params_spec_default(const struct vsph_params_spec *s,
+                                       char *buf, size_t len);
 
 /** @brief Strict number: decimal notation only (digits, one point, an
  *  exponent), no leading or trailing space, no hex, inf or nan.
  *  @return VSPH_OK or VSPH_EINVAL (not reported: the caller words it). */
-int vsph_params_parse_number(const char *s, double *out);
+VSPH_API int vsph_params_parse_number(const char *s, double *out);
 
 #endif /* VSPH_COMMON_PARAMS_H */

@@ -3,6 +3,8 @@
 #ifndef VSPH_COMMON_STATUS_H
 #define VSPH_COMMON_STATUS_H
 
+#include "api.h"
+
 /** @file status.h
  *  @brief Status codes and the replaceable error handler (the GSL model,
  *  without abort). Library code reports through vsph_status_report and
@@ -29,16 +31,17 @@ typedef void vsph_status_handler_fn(int status, const char *file, int line,
                                     const char *msg);
 
 /** @brief Human-readable name of a status code ("invalid argument", ...). */
-const char *vsph_status_str(int status);
+VSPH_API const char *vsph_status_str(int status);
 
 /** @brief Format a message and pass it to the current handler.
  *  @note The default handler writes "file:line: message" to stderr. */
-void vsph_status_report(int status, const char *file, int line, const char *fmt,
-                        ...);
+VSPH_API void vsph_status_report(int status, const char *file, int line,
+                                 const char *fmt, ...);
 
 /** @brief Install a handler (NULL restores the default); returns the old one.
  *  @note Process-global: set it before any OpenMP region starts. */
-vsph_status_handler_fn *vsph_status_set_handler(vsph_status_handler_fn *fn);
+VSPH_API vsph_status_handler_fn *vsph_status_set_handler(
+    vsph_status_handler_fn *fn);
 
 /** Report, then return the code from the current function. */
 #define VSPH_FAIL(s, ...)                                     \

@@ -7,6 +7,8 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "../common/api.h"
+
 /** @file kernel.h
  *  @brief Smoothing kernels as runtime descriptors (THEORY.md section 1).
  *  A kernel is W(s; h) = h^-d w(q), q = s/h, w(q) = sigma_d f_d(q), with
@@ -42,24 +44,25 @@ struct vsph_kernel_type {
   const char *reference;  /*!< source of the shape and constants */
 };
 
-extern const struct vsph_kernel_type vsph_gaussian_type;
-extern const struct vsph_kernel_type vsph_cubic_type;
-extern const struct vsph_kernel_type vsph_quintic_type;
-extern const struct vsph_kernel_type vsph_wendland_c2_type;
-extern const struct vsph_kernel_type vsph_wendland_c4_type;
+extern VSPH_API const struct vsph_kernel_type vsph_gaussian_type;
+extern VSPH_API const struct vsph_kernel_type vsph_cubic_type;
+extern VSPH_API const struct vsph_kernel_type vsph_quintic_type;
+extern VSPH_API const struct vsph_kernel_type vsph_wendland_c2_type;
+extern VSPH_API const struct vsph_kernel_type vsph_wendland_c4_type;
 
 /** @brief Number of kernels in the table. */
-size_t vsph_kernel_count(void);
+VSPH_API size_t vsph_kernel_count(void);
 
 /** @brief The i-th kernel of the table (NULL when i is out of range). */
-const struct vsph_kernel_type *vsph_kernel_get(size_t i);
+VSPH_API const struct vsph_kernel_type *vsph_kernel_get(size_t i);
 
 /** @brief The kernel called @p name, or NULL if there is none. */
-const struct vsph_kernel_type *vsph_kernel_find(const char *name);
+VSPH_API const struct vsph_kernel_type *vsph_kernel_find(const char *name);
 
 /** @brief The kernel called @p name into @p out.
  *  @return VSPH_OK, or VSPH_EINVAL with a message listing the kernels. */
-int vsph_kernel_resolve(const char *name, const struct vsph_kernel_type **out);
+VSPH_API int vsph_kernel_resolve(const char *name,
+                                 const struct vsph_kernel_type **out);
 
 /** @brief Normalised kernel w(q) in dimension dim (dimensionless). */
 static inline double vsph_kernel_w(const struct vsph_kernel_type *k, int dim,

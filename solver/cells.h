@@ -5,6 +5,8 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
+
 struct vsph_particles;
 
 /** @file cells.h
@@ -45,10 +47,10 @@ struct vsph_cells {
 };
 
 /** @brief Allocate an empty cell list. NULL on failure. */
-struct vsph_cells *vsph_cells_alloc(void);
+VSPH_API struct vsph_cells *vsph_cells_alloc(void);
 
 /** @brief Free a cell list; NULL is a no-op. */
-void vsph_cells_free(struct vsph_cells *c);
+VSPH_API void vsph_cells_free(struct vsph_cells *c);
 
 /** @brief Bin the particles into cells of edge >= @p radius / 2 and sort
  *  them by cell (fields are permuted; id[] keeps the original index).
@@ -56,20 +58,20 @@ void vsph_cells_free(struct vsph_cells *c);
  *  @return VSPH_OK, VSPH_EINVAL (radius <= 0 or non-finite positions),
  *  VSPH_ENOMEM.
  *  @note Grows its own buffers when the particle or cell count grows. */
-int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
-                     double radius);
+VSPH_API int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
+                              double radius);
 
 /** @brief Set up the O(N^2) reference path: one cell holding all particles
  *  (particles are not reordered). */
-int vsph_cells_build_direct(struct vsph_cells *c,
-                            const struct vsph_particles *p);
+VSPH_API int vsph_cells_build_direct(struct vsph_cells *c,
+                                     const struct vsph_particles *p);
 
 /** @brief Index ranges [lo[r], hi[r]) of the cells within reach of
  *  @p cell (itself included), in a fixed order: every particle within the
  *  build radius of a particle of @p cell lies in them. Returns the number
  *  of ranges. */
-size_t vsph_cells_ranges(const struct vsph_cells *c, size_t cell,
-                         size_t lo[VSPH_CELLS_MAXRANGES],
-                         size_t hi[VSPH_CELLS_MAXRANGES]);
+VSPH_API size_t vsph_cells_ranges(const struct vsph_cells *c, size_t cell,
+                                  size_t lo[VSPH_CELLS_MAXRANGES],
+                                  size_t hi[VSPH_CELLS_MAXRANGES]);
 
 #endif /* VSPH_SOLVER_CELLS_H */

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "../common/api.h"
 #include "viscous.h"
 
 struct vsph_particles;
@@ -151,16 +152,16 @@ static inline double vsph_equations_c0(const struct vsph_equations_props *ep,
 /** @brief The state equation called @p name ("linear", "tait", "gas")
  *  into @p eos. @return VSPH_OK, or VSPH_EINVAL with a message listing
  *  them. */
-int vsph_equations_eos_resolve(const char *name, int *eos);
+VSPH_API int vsph_equations_eos_resolve(const char *name, int *eos);
 
 /** @brief The scheme called @p name ("wcsph", "contact") into @p scheme.
  *  @return VSPH_OK, or VSPH_EINVAL with a message listing them. */
-int vsph_equations_scheme_resolve(const char *name, int *scheme);
+VSPH_API int vsph_equations_scheme_resolve(const char *name, int *scheme);
 
 /** @brief The kernel correction called @p name ("none", "shepard",
  *  "bonetlok"; vsph_pair_corr) into @p corr. @return VSPH_OK, or
  *  VSPH_EINVAL with a message listing them. */
-int vsph_equations_corr_resolve(const char *name, int *corr);
+VSPH_API int vsph_equations_corr_resolve(const char *name, int *corr);
 
 /** @brief The pressure of density @p rho and specific internal energy
  *  @p e (used by the gas law only) under the run's state equation. For
@@ -219,13 +220,14 @@ struct vsph_equations_sweep;
 
 /** @brief An empty sweep workspace (it grows as the evaluations need);
  *  NULL when out of memory. */
-struct vsph_equations_sweep *vsph_equations_sweep_alloc(void);
+VSPH_API struct vsph_equations_sweep *vsph_equations_sweep_alloc(void);
 
 /** @brief Free a sweep workspace; NULL is a no-op. */
-void vsph_equations_sweep_free(struct vsph_equations_sweep *sw);
+VSPH_API void vsph_equations_sweep_free(struct vsph_equations_sweep *sw);
 
 /** @brief The bytes the sweep workspace holds now. */
-size_t vsph_equations_sweep_bytes(const struct vsph_equations_sweep *sw);
+VSPH_API size_t
+vsph_equations_sweep_bytes(const struct vsph_equations_sweep *sw);
 
 /** Energies and momenta of the fluid particles (per unit depth in 2-D). */
 struct vsph_equations_energy {
@@ -247,15 +249,15 @@ struct vsph_equations_budget {
 };
 
 /** @brief Body force at x (m/s^2). */
-void vsph_equations_body_force(const struct vsph_equations_props *ep,
-                               const double x[3], double g[3]);
+VSPH_API void vsph_equations_body_force(const struct vsph_equations_props *ep,
+                                        const double x[3], double g[3]);
 
 /** @brief Potential Phi(x) with g = -grad Phi (J/kg). The uniform drive
  *  of a periodic channel has none that stays bounded (Phi = -f x jumps
  *  where a particle wraps): 0 there, its power -sum m f u_x is in the
  *  budget's dEp. */
-double vsph_equations_potential(const struct vsph_equations_props *ep,
-                                const double x[3]);
+VSPH_API double vsph_equations_potential(const struct vsph_equations_props *ep,
+                                         const double x[3]);
 
 struct vsph_walls;
 struct vsph_cells;
@@ -272,10 +274,11 @@ struct vsph_cells;
  *  velocity equal to it, so its A term vanishes). A wall particle without
  *  fluid neighbours keeps p = 0 and the prescribed velocity.
  *  @return VSPH_OK or VSPH_EINVAL (not the linear law). */
-int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
-                               const struct vsph_walls *w,
-                               struct vsph_particles *p, size_t n_fluid,
-                               const struct vsph_cells *cells);
+VSPH_API int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
+                                        const struct vsph_walls *w,
+                                        struct vsph_particles *p,
+                                        size_t n_fluid,
+                                        const struct vsph_cells *cells);
 
 /** @brief Evolving wall particles' state (ep->solid = VSPH_WALLS_EVOLVING;
  *  Basa, Quinlan & Lastiwka 2009, cavity: "density and pressure evolve by
@@ -290,19 +293,20 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
  *  corner particles are not drained by the sliding they only stand for].
  *  The velocities are vsph_walls_solid_extrapolate's.
  *  @return VSPH_OK or VSPH_EINVAL (the gas law). */
-int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
-                                  struct vsph_particles *p, size_t n_fluid,
-                                  const struct vsph_cells *cells);
+VSPH_API int vsph_equations_walls_evolving(
+    const struct vsph_equations_props *ep, struct vsph_particles *p,
+    size_t n_fluid, const struct vsph_cells *cells);
 
 /** @brief XSPH's drift velocity (Monaghan 1989, in Vukcevic et al.'s
  *  eq. 21 form) of every fluid particle i (id < n_fluid):
  *  w_i = u_i + eps sum_j (m_j/rho_j) (u_j - u_i) W_ij over its neighbours
  *  within the support (ghosts and wall particles included, i itself not),
  *  into w[k][i] by index; positions and velocities as they are. */
-void vsph_equations_xsph(const struct vsph_equations_props *ep,
-                         const struct vsph_particles *p, size_t n_fluid,
-                         const struct vsph_cells *cells, double eps,
-                         double *const w[3]);
+VSPH_API void vsph_equations_xsph(const struct vsph_equations_props *ep,
+                                  const struct vsph_particles *p,
+                                  size_t n_fluid,
+                                  const struct vsph_cells *cells, double eps,
+                                  double *const w[3]);
 
 /** @brief The fluid particles' density by summation (ep->summation, ghost
  *  walls or none): rho_i = sum_j m_j W_ij over every particle within
@@ -311,9 +315,10 @@ void vsph_equations_xsph(const struct vsph_equations_props *ep,
  *  V_i = m_i/rho_i; the fluid sweep of vsph_equations_walls_adami.
  *  Positions as they are; the ghosts' own density is left to
  *  vsph_walls_update. */
-void vsph_equations_density_sum(const struct vsph_equations_props *ep,
-                                struct vsph_particles *p, size_t n_fluid,
-                                const struct vsph_cells *cells);
+VSPH_API void vsph_equations_density_sum(const struct vsph_equations_props *ep,
+                                         struct vsph_particles *p,
+                                         size_t n_fluid,
+                                         const struct vsph_cells *cells);
 
 /** @brief Evaluate the right-hand side for the fluid particles: those with
  *  id < n_fluid; the others are ghosts (neighbours only). Refreshes p->p
@@ -325,25 +330,23 @@ void vsph_equations_density_sum(const struct vsph_equations_props *ep,
  *  pressure's push that the transport velocity carries.
  *  @param ws viscous workspace (PVWF: for all p->n particles).
  *  @return VSPH_OK or VSPH_EINVAL. */
-int vsph_equations_rhs(const struct vsph_equations_props *ep,
-                       struct vsph_particles *p, size_t n_fluid,
-                       const struct vsph_cells *cells,
-                       struct vsph_viscous_ws *ws,
-                       struct vsph_equations_out *out);
+VSPH_API int vsph_equations_rhs(const struct vsph_equations_props *ep,
+                                struct vsph_particles *p, size_t n_fluid,
+                                const struct vsph_cells *cells,
+                                struct vsph_viscous_ws *ws,
+                                struct vsph_equations_out *out);
 
 /** @brief Energies and momenta of the fluid particles (serial sums in
  *  index order). */
-void vsph_equations_energy_compute(const struct vsph_equations_props *ep,
-                                   const struct vsph_particles *p,
-                                   size_t n_fluid,
-                                   struct vsph_equations_energy *en);
+VSPH_API void vsph_equations_energy_compute(
+    const struct vsph_equations_props *ep, const struct vsph_particles *p,
+    size_t n_fluid, struct vsph_equations_energy *en);
 
 /** @brief The budget from a right-hand side evaluated with acc_visc and
  *  drho_delta. */
-void vsph_equations_budget_compute(const struct vsph_equations_props *ep,
-                                   const struct vsph_particles *p,
-                                   size_t n_fluid,
-                                   const struct vsph_equations_out *out,
-                                   struct vsph_equations_budget *b);
+VSPH_API void vsph_equations_budget_compute(
+    const struct vsph_equations_props *ep, const struct vsph_particles *p,
+    size_t n_fluid, const struct vsph_equations_out *out,
+    struct vsph_equations_budget *b);
 
 #endif /* VSPH_SOLVER_EQUATIONS_H */

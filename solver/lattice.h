@@ -5,6 +5,8 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
+
 struct vsph_particles;
 
 /** @file lattice.h
@@ -31,23 +33,23 @@ struct vsph_lattice_props {
 };
 
 /** @brief Name of a lattice kind ("square", "hex"). */
-const char *vsph_lattice_name(int kind);
+VSPH_API const char *vsph_lattice_name(int kind);
 
 /** @brief What a lattice is called in outputs: "perturbed" when
  *  @p perturb > 0 (vsph_lattice_resolve's amplitude), else its kind's
  *  name. */
-const char *vsph_lattice_label(int kind, double perturb);
+VSPH_API const char *vsph_lattice_label(int kind, double perturb);
 
 /** @brief Kind called @p name, or -1. */
-int vsph_lattice_find(const char *name);
+VSPH_API int vsph_lattice_find(const char *name);
 
 /** @brief Resolve a lattice named @p name ("square", "hex" or "perturbed",
  *  the square lattice shifted by up to @p perturb dx per component) in
  *  dimension @p dim into a kind and a perturbation amplitude (0 unless
  *  perturbed). @return VSPH_OK or VSPH_EINVAL (unknown name, hex outside
  *  2-D, perturb outside [0, 0.5)). */
-int vsph_lattice_resolve(const char *name, int dim, double perturb, int *kind,
-                         double *amp);
+VSPH_API int vsph_lattice_resolve(const char *name, int dim, double perturb,
+                                  int *kind, double *amp);
 
 /** @brief Lattice nodes x with |x| <= radius and x_d <= depth (x_d the last
  *  coordinate), the origin being a node and particle @p centre. The centre
@@ -55,36 +57,39 @@ int vsph_lattice_resolve(const char *name, int dim, double perturb, int *kind,
  *  (uniform). Rows that lie exactly at x_d = depth are kept.
  *  @param out receives a new set (free with vsph_particles_free).
  *  @return VSPH_OK, VSPH_EINVAL (bad props), VSPH_ENOMEM. */
-int vsph_lattice_halfspace(const struct vsph_lattice_props *lp, double radius,
-                           double depth, struct vsph_particles **out,
-                           size_t *centre);
+VSPH_API int vsph_lattice_halfspace(const struct vsph_lattice_props *lp,
+                                    double radius, double depth,
+                                    struct vsph_particles **out,
+                                    size_t *centre);
 
 /** @brief Shift every particle (except index @p skip; pass (size_t)-1 for
  *  none) by a uniform random amount in [-amp, amp] per component, from an
  *  mt19937 generator seeded with @p seed. @return VSPH_OK or VSPH_ENOMEM. */
-int vsph_lattice_perturb(struct vsph_particles *p, double amp,
-                         unsigned long seed, size_t skip);
+VSPH_API int vsph_lattice_perturb(struct vsph_particles *p, double amp,
+                                  unsigned long seed, size_t skip);
 
 /** @brief Square (2-D) of side @p side centred at the origin with
  *  @p nacross particles along each edge at the cell centres (spacing
  *  side/nacross; lp->dx is ignored). */
-int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
-                        size_t nacross, struct vsph_particles **out);
+VSPH_API int vsph_lattice_square(const struct vsph_lattice_props *lp,
+                                 double side, size_t nacross,
+                                 struct vsph_particles **out);
 
 /** @brief Disc (2-D) of radius @p radius centred at the origin, made of
  *  nacross/2 concentric rings of width dr = 2R/nacross; ring k at radius
  *  (k + 1/2) dr holds round(2 pi r_k / dr) particles of equal volume, so
  *  the volumes add up to pi R^2 exactly. lp->dx is ignored. */
-int vsph_lattice_disc(const struct vsph_lattice_props *lp, double radius,
-                      size_t nacross, struct vsph_particles **out);
+VSPH_API int vsph_lattice_disc(const struct vsph_lattice_props *lp,
+                               double radius, size_t nacross,
+                               struct vsph_particles **out);
 
 /** @brief Disc (2-D) of radius @p radius cut from a square lattice of
  *  spacing dx = 2R/nacross: the nodes ((a + 1/2) dx - R, (b + 1/2) dx - R)
  *  with r < R, each of volume dx^2 (so the volumes add up to pi R^2 only
  *  to O(dx)). The layout whose lattice error converges for azimuthal
  *  shear (docs/theory.md, section 6). lp->dx is ignored. */
-int vsph_lattice_disc_cartesian(const struct vsph_lattice_props *lp,
-                                double radius, size_t nacross,
-                                struct vsph_particles **out);
+VSPH_API int vsph_lattice_disc_cartesian(const struct vsph_lattice_props *lp,
+                                         double radius, size_t nacross,
+                                         struct vsph_particles **out);
 
 #endif /* VSPH_SOLVER_LATTICE_H */

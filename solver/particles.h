@@ -5,6 +5,8 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
+
 /** @file particles.h
  *  @brief Particle state in structure-of-arrays form (STYLE B6). This module
  *  owns every particle array; cell lists and workspaces only index into it.
@@ -38,36 +40,37 @@ struct vsph_particles {
 
 /** @brief Allocate a set for up to @p cap particles in @p dim dimensions,
  *  all fields zero, n = 0. Returns NULL (after reporting) on failure. */
-struct vsph_particles *vsph_particles_alloc(size_t cap, int dim);
+VSPH_API struct vsph_particles *vsph_particles_alloc(size_t cap, int dim);
 
 /** @brief Room for at least @p cap particles, the n live ones kept (a
  *  smaller @p cap is a no-op). @return VSPH_OK or VSPH_ENOMEM (reported;
  *  the set is unchanged in size and still valid). */
-int vsph_particles_reserve(struct vsph_particles *p, size_t cap);
+VSPH_API int vsph_particles_reserve(struct vsph_particles *p, size_t cap);
 
 /** @brief Give the set its energy fields e and de (zero), for the gas law:
  *  other runs carry neither. A no-op when present.
  *  @return VSPH_OK or VSPH_ENOMEM (reported). */
-int vsph_particles_energy_alloc(struct vsph_particles *p);
+VSPH_API int vsph_particles_energy_alloc(struct vsph_particles *p);
 
 /** @brief Allocate the transport-velocity scheme's fields tvel and bacc
  *  (zeroed), once. @return VSPH_OK or VSPH_ENOMEM. */
-int vsph_particles_tvf_alloc(struct vsph_particles *p);
+VSPH_API int vsph_particles_tvf_alloc(struct vsph_particles *p);
 
 /** @brief Allocate the material index mat (zeroed: every particle of
  *  material 0), once. @return VSPH_OK or VSPH_ENOMEM. */
-int vsph_particles_mat_alloc(struct vsph_particles *p);
+VSPH_API int vsph_particles_mat_alloc(struct vsph_particles *p);
 
 /** @brief Free a set; NULL is a no-op. */
-void vsph_particles_free(struct vsph_particles *p);
+VSPH_API void vsph_particles_free(struct vsph_particles *p);
 
 /** @brief Set vol[i] = m[i] / rho[i] for every live particle. */
-void vsph_particles_refresh_vol(struct vsph_particles *p);
+VSPH_API void vsph_particles_refresh_vol(struct vsph_particles *p);
 
 /** @brief Reorder every field so that new index i holds old index perm[i].
  *  @param scratch caller buffer of at least n doubles.
  *  @param iscratch caller buffer of at least n size_t. */
-void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
-                            double *scratch, size_t *iscratch);
+VSPH_API void vsph_particles_permute(struct vsph_particles *p,
+                                     const size_t *perm, double *scratch,
+                                     size_t *iscratch);
 
 #endif /* VSPH_SOLVER_PARTICLES_H */

@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
 #include "../common/params.h"
 #include "equations.h"
 #include "scene.h"
@@ -125,7 +126,7 @@ static inline const char *vsph_run_method(const struct vsph_run_props *rp) {
 }
 
 /** @brief The "Solver" parameter table (@p n receives its length). */
-const struct vsph_params_spec *vsph_run_params(size_t *n);
+VSPH_API const struct vsph_params_spec *vsph_run_params(size_t *n);
 
 /** @brief Read the "Solver" section of @p prm (NULL: defaults) into
  *  @p rp, check it and resolve the formulation and kernel names. The
@@ -133,7 +134,8 @@ const struct vsph_params_spec *vsph_run_params(size_t *n);
  *  applied here: call vsph_scene_solver_defaults on @p prm first, as
  *  `vsph run` and the report's jobs do.
  *  @return VSPH_OK or VSPH_EINVAL (the message names the parameter). */
-int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm);
+VSPH_API int vsph_run_props_init(struct vsph_run_props *rp,
+                                 struct vsph_params *prm);
 
 /** What a run will cost, estimated before anything is allocated. */
 struct vsph_run_estimate {
@@ -148,17 +150,18 @@ struct vsph_run_estimate {
  *  scheduler: its order and resource requests.
  *  @return VSPH_OK, or VSPH_EINVAL when the run would be refused (the
  *  message says why). */
-int vsph_run_estimate(const struct vsph_run_props *rp,
-                      const struct vsph_scene *sc, struct vsph_run_estimate *e);
+VSPH_API int vsph_run_estimate(const struct vsph_run_props *rp,
+                               const struct vsph_scene *sc,
+                               struct vsph_run_estimate *e);
 
 /** @brief Lay out @p sc at rp->res particles across, perturb it if asked,
  *  and set up the integrator. Due at once: a row and (if any) a snapshot.
  *  @return VSPH_OK, VSPH_EINVAL, VSPH_ENOMEM, VSPH_ELIB. */
-int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
-                   struct vsph_run **out);
+VSPH_API int vsph_run_alloc(const struct vsph_run_props *rp,
+                            const struct vsph_scene *sc, struct vsph_run **out);
 
 /** @brief Free; NULL is a no-op. */
-void vsph_run_free(struct vsph_run *r);
+VSPH_API void vsph_run_free(struct vsph_run *r);
 
 /** @brief One step (dt of THEORY 5, cut to land on t_end), then the
  *  stability checks; updates state and due. A run stopped as unstable is
@@ -166,18 +169,18 @@ void vsph_run_free(struct vsph_run *r);
  *  @return VSPH_OK; VSPH_EINTR when r->integ->stop asked for a stop
  *  within the step (the run is then as before the call); or an internal
  *  failure (VSPH_ENOMEM, ...). */
-int vsph_run_iterate(struct vsph_run *r);
+VSPH_API int vsph_run_iterate(struct vsph_run *r);
 
 /** @brief The energy row of the current state (one extra right-hand side).
  *  @return VSPH_OK or an internal failure. */
-int vsph_run_row(struct vsph_run *r, struct vsph_run_row *row);
+VSPH_API int vsph_run_row(struct vsph_run *r, struct vsph_run_row *row);
 
 /** @brief The run's whole state (the driver's schedule and counters and
- *  the integrator's, vsph_integrate_pack) packed into @p buf, or only
+ *  the integrator's state) packed into @p buf, or only
  *  sized when @p buf is NULL. Between two vsph_run_iterate calls a run
  *  restored from it by vsph_run_unpack goes on bitwise as if never
  *  stopped. @return the bytes packed. */
-size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf);
+VSPH_API size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf);
 
 /** @brief Restore a state packed by vsph_run_pack into @p r, freshly made
  *  by vsph_run_alloc with the same settings (@p len bytes at @p buf).
@@ -186,19 +189,20 @@ size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf);
  *  before its outputs were all written has the rest written on restore.
  *  @return VSPH_OK; VSPH_EINVAL when it is cut short or not this run's (r
  *  must then be freed); VSPH_ENOMEM. */
-int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len);
+VSPH_API int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf,
+                             size_t len);
 
 /** @brief Time reached (s). */
-double vsph_run_time(const struct vsph_run *r);
+VSPH_API double vsph_run_time(const struct vsph_run *r);
 
 /** @brief Steps taken. */
-size_t vsph_run_steps(const struct vsph_run *r);
+VSPH_API size_t vsph_run_steps(const struct vsph_run *r);
 
 /** @brief Bytes allocated for particles, neighbours and the integrator. */
-size_t vsph_run_bytes(const struct vsph_run *r);
+VSPH_API size_t vsph_run_bytes(const struct vsph_run *r);
 
 /** @brief PVWF particles whose L fell back to the identity in the last
  *  evaluation (0 for the other forms). */
-size_t vsph_run_fallbacks(const struct vsph_run *r);
+VSPH_API size_t vsph_run_fallbacks(const struct vsph_run *r);
 
 #endif /* VSPH_SOLVER_RUN_H */

@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
 #include "../common/params.h"
 #include "equations.h"
 #include "walls.h"
@@ -200,32 +201,32 @@ struct vsph_scene {
   } u;
 };
 
-extern const struct vsph_scene_type vsph_vortex_patch_type;
-extern const struct vsph_scene_type vsph_stretching_square_type;
-extern const struct vsph_scene_type vsph_standing_wave_type;
-extern const struct vsph_scene_type vsph_channel_poiseuille_type;
-extern const struct vsph_scene_type vsph_channel_couette_type;
-extern const struct vsph_scene_type vsph_cavity_type;
-extern const struct vsph_scene_type vsph_shear_type;
-extern const struct vsph_scene_type vsph_cylinders_type;
+extern VSPH_API const struct vsph_scene_type vsph_vortex_patch_type;
+extern VSPH_API const struct vsph_scene_type vsph_stretching_square_type;
+extern VSPH_API const struct vsph_scene_type vsph_standing_wave_type;
+extern VSPH_API const struct vsph_scene_type vsph_channel_poiseuille_type;
+extern VSPH_API const struct vsph_scene_type vsph_channel_couette_type;
+extern VSPH_API const struct vsph_scene_type vsph_cavity_type;
+extern VSPH_API const struct vsph_scene_type vsph_shear_type;
+extern VSPH_API const struct vsph_scene_type vsph_cylinders_type;
 
 /** @brief 1 if @p type is a channel (Poiseuille or Couette: a velocity
  *  profile with a series reference), else 0. */
-int vsph_scene_is_channel(const struct vsph_scene_type *type);
+VSPH_API int vsph_scene_is_channel(const struct vsph_scene_type *type);
 
 /** @brief 1 if runs of @p type write a velocity profile (profile.csv) and
  *  a velocity error: the channels (against their series) and the cavity
  *  (its vertical centreline, against Ghia et al.), else 0. */
-int vsph_scene_has_profile(const struct vsph_scene_type *type);
+VSPH_API int vsph_scene_has_profile(const struct vsph_scene_type *type);
 
 /** @brief Number of scenes. */
-size_t vsph_scene_count(void);
+VSPH_API size_t vsph_scene_count(void);
 
 /** @brief Scene @p i of the table, or NULL. */
-const struct vsph_scene_type *vsph_scene_get(size_t i);
+VSPH_API const struct vsph_scene_type *vsph_scene_get(size_t i);
 
 /** @brief Scene called @p name, or NULL. */
-const struct vsph_scene_type *vsph_scene_find(const char *name);
+VSPH_API const struct vsph_scene_type *vsph_scene_find(const char *name);
 
 /** @brief Give @p prm the Solver settings of @p type's own defaults
  *  (type->solver_defaults: the scenes that need contact SPH, or whose
@@ -238,25 +239,26 @@ const struct vsph_scene_type *vsph_scene_find(const char *name);
  *  integrator or dt asks for another scheme, integrator or a fixed step.
  *  Called on the parameters as given, before any is read (the cache key
  *  then holds them). @return VSPH_OK, VSPH_ENOMEM. */
-int vsph_scene_solver_defaults(const struct vsph_scene_type *type,
-                               struct vsph_params *prm);
+VSPH_API int vsph_scene_solver_defaults(const struct vsph_scene_type *type,
+                                        struct vsph_params *prm);
 
 /** @brief The Solver defaults of @p type as one line ("scheme=contact
  *  kernel=wendland2 ..."; "" for none) into @p buf. */
-void vsph_scene_solver_defaults_text(const struct vsph_scene_type *type,
-                                     char *buf, size_t len);
+VSPH_API void vsph_scene_solver_defaults_text(
+    const struct vsph_scene_type *type, char *buf, size_t len);
 
 /** @brief Read the scene's parameters ("Scene:<key>", defaults and bounds
  *  from its table; @p prm may be NULL for all defaults) into its typed
  *  struct and derive the scene. c0 = 0 means THEORY's rule
  *  c0 = 10 max(U_max, sqrt(dp_max / rho0)).
  *  @return VSPH_OK or VSPH_EINVAL. */
-int vsph_scene_init(struct vsph_scene *sc, const struct vsph_scene_type *type,
-                    struct vsph_params *prm);
+VSPH_API int vsph_scene_init(struct vsph_scene *sc,
+                             const struct vsph_scene_type *type,
+                             struct vsph_params *prm);
 
 /** @brief Sound speed by THEORY section 5's rule, unless @p c0 (the scene's
  *  c0 parameter) is positive. */
-double vsph_scene_sound_speed(const struct vsph_scene *sc, double c0);
+VSPH_API double vsph_scene_sound_speed(const struct vsph_scene *sc, double c0);
 
 struct vsph_integrate_props;
 struct vsph_kernel_type;
@@ -265,34 +267,37 @@ struct vsph_kernel_type;
  *  formulation @p form, kernel @p k and smoothing length @p h; leaves cfl,
  *  rho_band and min_dist at zero for the caller.
  *  @return VSPH_OK or VSPH_EINVAL. */
-int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
-                               const struct vsph_kernel_type *k, double h,
-                               struct vsph_integrate_props *ip);
+VSPH_API int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
+                                        const struct vsph_kernel_type *k,
+                                        double h,
+                                        struct vsph_integrate_props *ip);
 
 /** @brief Set particle i's density from pressure @p pr by the linear state
  *  equation, rho = rho0 + p/c0^2, and its mass m = rho V. */
-void vsph_scene_set_pressure(const struct vsph_scene *sc,
-                             struct vsph_particles *p, size_t i, double pr);
+VSPH_API void vsph_scene_set_pressure(const struct vsph_scene *sc,
+                                      struct vsph_particles *p, size_t i,
+                                      double pr);
 
 /** @brief A 2-D rectangle of @p nx x @p ny particles at rest at
  *  ((i + 1/2) dx, (j + 1/2) dy), row by row, each of volume dx dy at
  *  pressure 0 (vsph_scene_set_pressure): the cavity's and the channels'
  *  initial set, none on a wall. @return VSPH_OK or VSPH_ENOMEM. */
-int vsph_scene_rectangle(const struct vsph_scene *sc, size_t nx, size_t ny,
-                         double dx, double dy, struct vsph_particles **out);
+VSPH_API int vsph_scene_rectangle(const struct vsph_scene *sc, size_t nx,
+                                  size_t ny, double dx, double dy,
+                                  struct vsph_particles **out);
 
 /** @brief Standing wave's initial velocity u = grad phi0 at (x, y),
  *  phi0 = (A g/omega) cosh[k(y + H)]/cosh(kH) cos(kx) (THEORY 6.3). */
-void vsph_standing_wave_velocity(const struct vsph_scene_wave *w, double x,
-                                 double y, double u[2]);
+VSPH_API void vsph_standing_wave_velocity(const struct vsph_scene_wave *w,
+                                          double x, double y, double u[2]);
 
 /** @brief Vortex patch's initial angular velocity (THEORY 6.1,
  *  [reconstructed]): omega0 [1 - a + a l^2 (1/(l^2 + r^2) +
  *  r^2/(l^2 + R^2)^2)], so omega(0) = omega0 and d omega/dr (R) = 0 for
  *  any a. The one definition of the profile: the reference solution uses
  *  it too. */
-double vsph_vortex_patch_omega(double omega0, double l2, double a, double R,
-                               double r);
+VSPH_API double vsph_vortex_patch_omega(double omega0, double l2, double a,
+                                        double R, double r);
 
 /** The vortex patch's default a [reconstructed]: the one value that meets
  *  the paper's two stated figures of its own profile, Re = R u_theta(R,0)/nu

@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
 #include "../common/consts.h"
 #include "pair.h"
 
@@ -197,33 +198,33 @@ struct vsph_viscous_type {
 };
 
 /** The table, indexed by vsph_viscous_form. */
-extern const struct vsph_viscous_type
+extern VSPH_API const struct vsph_viscous_type
     vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT];
 
 /** @brief The descriptor of @p form (NULL when out of range). */
-const struct vsph_viscous_type *vsph_viscous_type_get(int form);
+VSPH_API const struct vsph_viscous_type *vsph_viscous_type_get(int form);
 
 /** @brief Formulation name ("mgf", "meaf", ...; "unknown" out of range). */
-const char *vsph_viscous_name(int form);
+VSPH_API const char *vsph_viscous_name(int form);
 
 /** @brief The names of the forms whose flags hold every bit of @p flags
  *  (0: every form), ", "-separated, into @p buf of @p n bytes.
  *  @return @p buf. */
-const char *vsph_viscous_list(unsigned flags, char *buf, size_t n);
+VSPH_API const char *vsph_viscous_list(unsigned flags, char *buf, size_t n);
 
 /** @brief Name of a continuum limit ("stress", "gradient", "laplacian";
  *  "unknown" out of range). */
-const char *vsph_viscous_limit_name(int limit);
+VSPH_API const char *vsph_viscous_limit_name(int limit);
 
 /** @brief Formulation called @p name, or -1. */
-int vsph_viscous_find(const char *name);
+VSPH_API int vsph_viscous_find(const char *name);
 
 /** @brief The formulation called @p name into @p form.
  *  @return VSPH_OK, or VSPH_EINVAL with a message listing them. */
-int vsph_viscous_resolve(const char *name, int *form);
+VSPH_API int vsph_viscous_resolve(const char *name, int *form);
 
 /** @brief The formulation's label in tables and figures ("MGF"). */
-const char *vsph_viscous_label(int form);
+VSPH_API const char *vsph_viscous_label(int form);
 
 /** @brief Fill props with the defaults of THEORY.md section 3: lambda = mu
  *  for MGF, -2 mu / dim for PVWF (zero bulk viscosity), det_tol = 1e-8;
@@ -231,25 +232,26 @@ const char *vsph_viscous_label(int form);
  *  (the papers' Stokes factor, kept in 2-D), eta = 0.1 h for C and D,
  *  zeta = 0.
  *  @return VSPH_OK or VSPH_EINVAL (bad form, dim, h or mu). */
-int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
-                            const struct vsph_kernel_type *kernel, int dim,
-                            double h, double mu);
+VSPH_API int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
+                                     const struct vsph_kernel_type *kernel,
+                                     int dim, double h, double mu);
 
 /** @brief Workspace for up to @p cap particles. NULL on failure. */
-struct vsph_viscous_ws *vsph_viscous_ws_alloc(size_t cap, int dim);
+VSPH_API struct vsph_viscous_ws *vsph_viscous_ws_alloc(size_t cap, int dim);
 
 /** @brief Give @p ws the arrays of the kernel corrections (S, a, L); a
  *  no-op when present. @return VSPH_OK or VSPH_ENOMEM (reported). */
-int vsph_viscous_ws_corr(struct vsph_viscous_ws *ws);
+VSPH_API int vsph_viscous_ws_corr(struct vsph_viscous_ws *ws);
 
 /** @brief Free a workspace; NULL is a no-op. */
-void vsph_viscous_ws_free(struct vsph_viscous_ws *ws);
+VSPH_API void vsph_viscous_ws_free(struct vsph_viscous_ws *ws);
 
 /** @brief Inverse of a symmetric positive semi-definite @p dim x @p dim
  *  matrix @p b (row-major) into @p inv: PVWF's L and the renormalisation
  *  Gamma of the Laplacian forms share it. Returns 0 and leaves @p inv
  *  untouched when det <= tol (tr/d)^d (singular: the caller falls back). */
-int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol);
+VSPH_API int vsph_viscous_invert_sym(int dim, const double *b, double *inv,
+                                     double tol);
 
 /** @brief The Laplacians of @p nf scalar fields f[c] (each of length
  *  p->n) at particle @p i by Laplacian form @p lap (vsph_pair_lap_form):
@@ -258,12 +260,13 @@ int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol);
  *  vsph_viscous_invert_sym), vsph_pair_lap_finish. The one evaluation of
  *  the Laplacian forms: the patch test (analysis/laplacian.c) and the
  *  solver's VISC-0x formulations call it. @p eta2 is (eta h)^2. */
-void vsph_viscous_laplacians(const struct vsph_pair_kernel *pk,
-                             const struct vsph_kernel_type *k, double h,
-                             double eta2, double tol, int lap,
-                             const struct vsph_particles *p,
-                             const struct vsph_pair_ranges *rg, size_t i,
-                             int nf, const double *const f[3], double out[3]);
+VSPH_API void vsph_viscous_laplacians(const struct vsph_pair_kernel *pk,
+                                      const struct vsph_kernel_type *k,
+                                      double h, double eta2, double tol,
+                                      int lap, const struct vsph_particles *p,
+                                      const struct vsph_pair_ranges *rg,
+                                      size_t i, int nf,
+                                      const double *const f[3], double out[3]);
 
 /** @brief The first pass, into @p ws. PVWF: L_i, the renormalised grad u,
  *  D_i, T_i, and A_i = T_i L_i for every particle, and the count of
@@ -272,19 +275,19 @@ void vsph_viscous_laplacians(const struct vsph_pair_kernel *pk,
  *  its whole force density (one pass of direct second derivatives).
  *  Other forms: no-op.
  *  @return VSPH_OK or VSPH_EINVAL (workspace too small). */
-int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
-                         const struct vsph_particles *p,
-                         const struct vsph_cells *cells,
-                         struct vsph_viscous_ws *ws);
+VSPH_API int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
+                                  const struct vsph_particles *p,
+                                  const struct vsph_cells *cells,
+                                  struct vsph_viscous_ws *ws);
 
 /** @brief PVWF's (model B's) first pass for particle @p i from its sums
  *  B = sum_j V_j (-F) x (x) x and Mg = sum_j V_j (-F) du (x) x (row-major
  *  d x d, vsph_pair_pvwf_grad): L_i = B^-1 (the identity for model B or
  *  where B is singular, marked in ws->fallback), the renormalised grad u,
  *  D_i, T_i, A_i = T_i L_i and -T_i:D_i into @p ws. */
-void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
-                              struct vsph_viscous_ws *ws, size_t i,
-                              const double B[9], const double Mg[9]);
+VSPH_API void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
+                                       struct vsph_viscous_ws *ws, size_t i,
+                                       const double B[9], const double Mg[9]);
 
 /** @brief The viscous force density (div V)_i (N/m^d) of every particle.
  *  Uses pos, vel and vol of @p p.
@@ -295,11 +298,11 @@ void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
  *  MGF: (K mu / 2) sum_j V_j ((u_j-u_i).x)^2 W'/s^3;
  *  MEAF: mu sum_j V_j W'/s |u_i - u_j|^2;  PVWF: -T_i : D_i.
  *  @return VSPH_OK or VSPH_EINVAL (workspace too small, bad props). */
-int vsph_viscous_compute(const struct vsph_viscous_props *vp,
-                         const struct vsph_particles *p,
-                         const struct vsph_cells *cells,
-                         struct vsph_viscous_ws *ws, double *const out[3],
-                         double *dens);
+VSPH_API int vsph_viscous_compute(const struct vsph_viscous_props *vp,
+                                  const struct vsph_particles *p,
+                                  const struct vsph_cells *cells,
+                                  struct vsph_viscous_ws *ws,
+                                  double *const out[3], double *dens);
 
 /** What the viscous pair term needs inside a loop, loaded once. */
 struct vsph_viscous_loop {

@@ -5,6 +5,8 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
+
 struct vsph_particles;
 
 /** @file walls.h
@@ -69,12 +71,12 @@ enum vsph_walls_solid {
 
 /** @brief Name of a wall-particle model ("ghosts", "adami", "evolving",
  *  "fixed"). */
-const char *vsph_walls_solid_name(int s);
+VSPH_API const char *vsph_walls_solid_name(int s);
 
 /** @brief Wall-particle model called @p name into @p s (adami, evolving,
  *  fixed).
  *  @return VSPH_OK, or VSPH_EINVAL naming the choices. */
-int vsph_walls_solid_resolve(const char *name, int *s);
+VSPH_API int vsph_walls_solid_resolve(const char *name, int *s);
 
 /** Wall set of a scene. */
 struct vsph_walls {
@@ -92,7 +94,7 @@ struct vsph_walls {
   int solid;       /*!< vsph_walls_solid: non-zero, fixed wall particles outside
                         a box of mirror planes, not mirrored ghosts */
   double dx;       /*!< solid: their lattice spacing, the fluid's (m); set by
-                        vsph_integrate_alloc from the fluid's volume */
+                        the integrator from the fluid's volume */
   double rho0, c0; /*!< state equation for the ghost density */
 };
 
@@ -125,50 +127,51 @@ struct vsph_walls_ghosts {
 };
 
 /** @brief Name of a wall-velocity treatment ("mirror", "linear"). */
-const char *vsph_walls_velocity_name(int v);
+VSPH_API const char *vsph_walls_velocity_name(int v);
 
 /** @brief Treatment called @p name into @p v.
  *  @return VSPH_OK, or VSPH_EINVAL naming the choices. */
-int vsph_walls_velocity_resolve(const char *name, int *v);
+VSPH_API int vsph_walls_velocity_resolve(const char *name, int *v);
 
 /** @brief Append a periodic pair on @p axis: images across [lo, hi).
  *  @return VSPH_OK or VSPH_EINVAL (no room, hi <= lo). */
-int vsph_walls_add_periodic(struct vsph_walls *w, int axis, double lo,
-                            double hi);
+VSPH_API int vsph_walls_add_periodic(struct vsph_walls *w, int axis, double lo,
+                                     double hi);
 
 /** @brief The period of @p axis (m), or 0 if it is not periodic. */
-double vsph_walls_period(const struct vsph_walls *w, int axis);
+VSPH_API double vsph_walls_period(const struct vsph_walls *w, int axis);
 
 /** @brief Bring every fluid particle (id < n_fluid) back into the periodic
  *  range of each periodic axis. */
-void vsph_walls_wrap(const struct vsph_walls *w, struct vsph_particles *p,
-                     size_t n_fluid);
+VSPH_API void vsph_walls_wrap(const struct vsph_walls *w,
+                              struct vsph_particles *p, size_t n_fluid);
 
 /** @brief Ghost bookkeeping for up to @p cap ghosts of wall set @p w (the
  *  nearest-row scratch only for linear extrapolation). NULL on failure. */
-struct vsph_walls_ghosts *vsph_walls_ghosts_alloc(const struct vsph_walls *w,
-                                                  size_t cap);
+VSPH_API struct vsph_walls_ghosts *vsph_walls_ghosts_alloc(
+    const struct vsph_walls *w, size_t cap);
 
 /** @brief Free; NULL is a no-op. */
-void vsph_walls_ghosts_free(struct vsph_walls_ghosts *gh);
+VSPH_API void vsph_walls_ghosts_free(struct vsph_walls_ghosts *gh);
 
 /** @brief How many ghosts vsph_walls_generate would make now. */
-size_t vsph_walls_count(const struct vsph_walls *w,
-                        const struct vsph_particles *p, size_t n_fluid,
-                        double reach);
+VSPH_API size_t vsph_walls_count(const struct vsph_walls *w,
+                                 const struct vsph_particles *p, size_t n_fluid,
+                                 double reach);
 
 /** @brief Drop the ghosts (ids >= n_fluid) and append fresh images of
  *  every fluid particle within @p reach of a plane.
  *  @return VSPH_OK or VSPH_ENOMEM (particle or ghost capacity exceeded). */
-int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
-                        size_t n_fluid, double reach,
-                        struct vsph_walls_ghosts *gh);
+VSPH_API int vsph_walls_generate(const struct vsph_walls *w,
+                                 struct vsph_particles *p, size_t n_fluid,
+                                 double reach, struct vsph_walls_ghosts *gh);
 
 /** @brief Refresh every ghost from its source; @p where maps an id to its
  *  current index. */
-void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
-                       size_t n_fluid, struct vsph_walls_ghosts *gh,
-                       const size_t *where);
+VSPH_API void vsph_walls_update(const struct vsph_walls *w,
+                                struct vsph_particles *p, size_t n_fluid,
+                                struct vsph_walls_ghosts *gh,
+                                const size_t *where);
 
 /* Fixed wall particles (Adami, Hu & Adams 2012; docs/theory.md section 9).
  * The planes of a solid wall set bound a box, two per axis: the fluid's
@@ -180,22 +183,22 @@ void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
 
 /** @brief How many wall particles vsph_walls_solid_generate lays, or 0 when
  *  the planes do not bound a box in @p dim dimensions. */
-size_t vsph_walls_solid_count(const struct vsph_walls *w, int dim, double dx,
-                              double reach);
+VSPH_API size_t vsph_walls_solid_count(const struct vsph_walls *w, int dim,
+                                       double dx, double reach);
 
 /** @brief Append the wall particles (ids n_fluid + g, mass rho0 dx^d, at
  *  rest, density rho0) behind the fluid.
  *  @return VSPH_OK, VSPH_EINVAL (no box) or VSPH_ENOMEM (capacity). */
-int vsph_walls_solid_generate(const struct vsph_walls *w,
-                              struct vsph_particles *p, size_t n_fluid,
-                              double dx, double reach);
+VSPH_API int vsph_walls_solid_generate(const struct vsph_walls *w,
+                                       struct vsph_particles *p, size_t n_fluid,
+                                       double dx, double reach);
 
 /** @brief Prescribed velocity @p u of the wall particle at @p x: that of
  *  the first moving plane (in the set's order) it lies behind, else 0. A
  *  particle behind a moving plane moves with it, corners included, as in
  *  Adami et al. (2013)'s cavity [reconstructed]. */
-void vsph_walls_solid_velocity(const struct vsph_walls *w, int dim,
-                               const double x[3], double u[3]);
+VSPH_API void vsph_walls_solid_velocity(const struct vsph_walls *w, int dim,
+                                        const double x[3], double u[3]);
 
 /** @brief Velocities of evolving wall particles (VSPH_WALLS_EVOLVING,
  *  Basa et al. 2009: "tangential velocities extrapolated normally to the
@@ -210,8 +213,9 @@ void vsph_walls_solid_velocity(const struct vsph_walls *w, int dim,
  *  velocity, capacity at least w->n n_fluid: a particle can lie in every
  *  plane's rows). Serial rows, then each wall
  *  particle by itself: the same for any thread count. */
-void vsph_walls_solid_extrapolate(const struct vsph_walls *w,
-                                  struct vsph_particles *p, size_t n_fluid,
-                                  struct vsph_walls_ghosts *gh);
+VSPH_API void vsph_walls_solid_extrapolate(const struct vsph_walls *w,
+                                           struct vsph_particles *p,
+                                           size_t n_fluid,
+                                           struct vsph_walls_ghosts *gh);
 
 #endif /* VSPH_SOLVER_WALLS_H */

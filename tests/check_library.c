@@ -112,6 +112,41 @@ START_TEST(test_installed_example) {
 }
 END_TEST
 
+/* The installed libvsph.so exports what the installed headers declare
+ * (marked VSPH_API, common/api.h; -fvisibility=hidden hides the rest):
+ * every global symbol of libvsph.a that a header names is exported, and
+ * every exported one is named by a header, so no helper and nothing of
+ * the program's layers (runs/, reports/, cli/) leaks out. OpenMP's
+ * named-critical locks (.gomp_critical_*) are the compiler's. */
+START_TEST(test_exports) {
+  char stage[PATH_MAX], script[3 * PATH_MAX], dir[] = "/tmp/vsph-exp-XXXXXX";
+  staged(stage);
+  vsph_test_scratch(dir);
+  snprintf(script, sizeof script,
+           "cd '%s' && syms() { nm --defined-only \"$@\" | awk '$2 ~ "
+           "/^[TDRBV]$/ && $3 !~ /^\\.gomp/ { print $3 }' | sort -u; } && "
+           "syms -D lib/libvsph.so > '%s/exported' && "
+           "syms lib/libvsph.a | comm -23 - '%s/exported' > '%s/hidden' && "
+           "wc -l < '%s/exported' && "
+           "echo hidden but named: && "
+           "grep -rowhFf '%s/hidden' include/vsph | sort -u; "
+           "echo exported but not named: && "
+           "grep -rowhFf '%s/exported' include/vsph | sort -u | "
+           "comm -13 - '%s/exported'; echo end",
+           stage, dir, dir, dir, dir, dir, dir, dir);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  int n = 0;
+  ck_assert_msg(sscanf(o->out, "%d", &n) == 1, "no count: %s %s", o->out,
+                o->err);
+  const char *want = "hidden but named:\nexported but not named:\nend\n";
+  const char *at = strstr(o->out, "hidden but named:");
+  ck_assert_msg(at && !strcmp(at, want), "%s", o->out);
+  /* the public interface of README, "vsph as a library": ~190 names */
+  ck_assert_int_gt(n, 150);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 /* A bad PREFIX is refused with one line and exit 2, nothing written; an
  * uninstall removes the install's files and leaves a file it did not
  * make. */
@@ -213,6 +248,7 @@ Suite *vsph_library_suite(void) {
   TCase *tc = tcase_create("install");
   tcase_set_timeout(tc, 120);
   tcase_add_test(tc, test_installed_example);
+  tcase_add_test(tc, test_exports);
   tcase_add_test(tc, test_install_refusals);
   tcase_add_test(tc, test_deps_without_apt);
   suite_add_tcase(s, tc);
