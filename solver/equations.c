@@ -504,25 +504,30 @@ static size_t rhs_general(const struct rhs_ctx *rc,
 
 /* The loop for the run's shape, chosen once per evaluation. */
 static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
-  /* the loop shapes: MGF (and its Brookshaw kin), MEAF, PVWF (and B),
-   * Espanol-Revenga */
-  static rhs_cell_fn *const table[2][4][2] = {{{rhs_mgf2, rhs_mgf2d},
-                                               {rhs_meaf2, rhs_meaf2d},
-                                               {rhs_pvwf2, rhs_pvwf2d},
-                                               {rhs_er2, rhs_er2d}},
-                                              {{rhs_mgf3, rhs_mgf3d},
-                                               {rhs_meaf3, rhs_meaf3d},
-                                               {rhs_pvwf3, rhs_pvwf3d},
-                                               {rhs_er3, rhs_er3d}}};
-  const int lf = vsph_viscous_loop_form(rc->vl.form);
-  const int row = lf <= VSPH_VISCOUS_PVWF ? lf : lf == VSPH_VISCOUS_ER ? 3 : -1;
+  /* the loop shapes by family (enum vsph_viscous_family): MGF (and its
+   * Brookshaw kin), MEAF, PVWF (and B), Espanol-Revenga */
+  static rhs_cell_fn *const table[2][VSPH_VISCOUS_FAMILY_COUNT][2] = {
+      {[VSPH_VISCOUS_FAMILY_BROOKSHAW] = {rhs_mgf2, rhs_mgf2d},
+       [VSPH_VISCOUS_FAMILY_MORRIS] = {rhs_meaf2, rhs_meaf2d},
+       [VSPH_VISCOUS_FAMILY_STRESS] = {rhs_pvwf2, rhs_pvwf2d},
+       [VSPH_VISCOUS_FAMILY_ER] = {rhs_er2, rhs_er2d}},
+      {[VSPH_VISCOUS_FAMILY_BROOKSHAW] = {rhs_mgf3, rhs_mgf3d},
+       [VSPH_VISCOUS_FAMILY_MORRIS] = {rhs_meaf3, rhs_meaf3d},
+       [VSPH_VISCOUS_FAMILY_STRESS] = {rhs_pvwf3, rhs_pvwf3d},
+       [VSPH_VISCOUS_FAMILY_ER] = {rhs_er3, rhs_er3d}}};
+  const int row = vsph_viscous_family(rc->vl.form);
   if (rc->ep->loop_general) return rhs_general;
   if (rc->tvf && rc->pk.dfq_id == VSPH_KERNEL_DFQ_QUINTIC && rc->pk.dim == 2 &&
-      !rc->reduce && !rc->corr && !(rc->dhc > 0.0) &&
-      (row == 0 || row == 1 || row == 3))
-    return row == 0 ? rhs_tvf_mgf2 : row == 1 ? rhs_tvf_meaf2 : rhs_tvf_er2;
-  static rhs_cell_fn *const cubic[4] = {rhs_cubic_mgf2, rhs_cubic_meaf2,
-                                        rhs_cubic_pvwf2, rhs_cubic_er2};
+      !rc->reduce && !rc->corr && !(rc->dhc > 0.0) && row >= 0 &&
+      row != VSPH_VISCOUS_FAMILY_STRESS)
+    return row == VSPH_VISCOUS_FAMILY_BROOKSHAW ? rhs_tvf_mgf2
+           : row == VSPH_VISCOUS_FAMILY_MORRIS  ? rhs_tvf_meaf2
+                                                : rhs_tvf_er2;
+  static rhs_cell_fn *const cubic[VSPH_VISCOUS_FAMILY_COUNT] = {
+      [VSPH_VISCOUS_FAMILY_BROOKSHAW] = rhs_cubic_mgf2,
+      [VSPH_VISCOUS_FAMILY_MORRIS] = rhs_cubic_meaf2,
+      [VSPH_VISCOUS_FAMILY_STRESS] = rhs_cubic_pvwf2,
+      [VSPH_VISCOUS_FAMILY_ER] = rhs_cubic_er2};
   if (!rc->tvf && rc->pk.dfq_id == VSPH_KERNEL_DFQ_CUBIC && rc->pk.dim == 2 &&
       !rc->reduce && !rc->corr && !(rc->dhc > 0.0) && row >= 0)
     return cubic[row];
@@ -1057,16 +1062,16 @@ SWEEP_SHAPE(sweep_er3d, 3, VSPH_VISCOUS_ER, 1)
 /* The sweep for the run's shape, or NULL where only the general gather
  * serves (as rhs_choose). */
 static sweep_fn *sweep_choose(const struct rhs_ctx *rc) {
-  static sweep_fn *const table[2][4][2] = {{{sweep_mgf2, sweep_mgf2d},
-                                            {sweep_meaf2, sweep_meaf2d},
-                                            {sweep_pvwf2, sweep_pvwf2d},
-                                            {sweep_er2, sweep_er2d}},
-                                           {{sweep_mgf3, sweep_mgf3d},
-                                            {sweep_meaf3, sweep_meaf3d},
-                                            {sweep_pvwf3, sweep_pvwf3d},
-                                            {sweep_er3, sweep_er3d}}};
-  const int lf = vsph_viscous_loop_form(rc->vl.form);
-  const int row = lf <= VSPH_VISCOUS_PVWF ? lf : lf == VSPH_VISCOUS_ER ? 3 : -1;
+  static sweep_fn *const table[2][VSPH_VISCOUS_FAMILY_COUNT][2] = {
+      {[VSPH_VISCOUS_FAMILY_BROOKSHAW] = {sweep_mgf2, sweep_mgf2d},
+       [VSPH_VISCOUS_FAMILY_MORRIS] = {sweep_meaf2, sweep_meaf2d},
+       [VSPH_VISCOUS_FAMILY_STRESS] = {sweep_pvwf2, sweep_pvwf2d},
+       [VSPH_VISCOUS_FAMILY_ER] = {sweep_er2, sweep_er2d}},
+      {[VSPH_VISCOUS_FAMILY_BROOKSHAW] = {sweep_mgf3, sweep_mgf3d},
+       [VSPH_VISCOUS_FAMILY_MORRIS] = {sweep_meaf3, sweep_meaf3d},
+       [VSPH_VISCOUS_FAMILY_STRESS] = {sweep_pvwf3, sweep_pvwf3d},
+       [VSPH_VISCOUS_FAMILY_ER] = {sweep_er3, sweep_er3d}}};
+  const int row = vsph_viscous_family(rc->vl.form);
   if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 || row < 0 ||
       rc->reduce || rc->corr || rc->tvf)
     return NULL;

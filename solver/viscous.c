@@ -68,7 +68,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .cite = "Monaghan & Gingold 1983; Colagrossi et al. 2011, "
                  "Eq. (4.20)",
          .pass = VSPH_VISCOUS_PASS_NONE,
-         .loop = VSPH_VISCOUS_MGF,
+         .family = VSPH_VISCOUS_FAMILY_BROOKSHAW,
          .flags = FS | CO | TV,
          .lap = -1,
          .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -82,7 +82,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .cite = "Morris, Fox & Zhu 1997; Colagrossi et al. 2011, "
                  "Eq. (4.30)",
          .pass = VSPH_VISCOUS_PASS_NONE,
-         .loop = VSPH_VISCOUS_MEAF,
+         .family = VSPH_VISCOUS_FAMILY_MORRIS,
          .flags = FS | CO | TV,
          .lap = -1,
          .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -96,7 +96,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .cite = "principle of virtual work, Colagrossi et al. 2011, "
                  "Eqs. (4.18)-(4.19)",
          .pass = VSPH_VISCOUS_PASS_STRESS,
-         .loop = VSPH_VISCOUS_PVWF,
+         .family = VSPH_VISCOUS_FAMILY_STRESS,
          .flags = FS | VSPH_VISCOUS_RENORM,
          .lap = -1,
          .lambda = VSPH_VISCOUS_LAMBDA_STOKES,
@@ -109,7 +109,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .label = "VI",
          .cite = "Violeau & Issa 2007 (Basa et al. 2009, model C, eq. 33)",
          .pass = VSPH_VISCOUS_PASS_NONE,
-         .loop = VSPH_VISCOUS_MGF,
+         .family = VSPH_VISCOUS_FAMILY_BROOKSHAW,
          .flags = CO | TV,
          .lap = -1,
          .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -122,7 +122,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .label = "Cleary",
          .cite = "Cleary 1998 (Basa et al. 2009, model D, eq. 34)",
          .pass = VSPH_VISCOUS_PASS_NONE,
-         .loop = VSPH_VISCOUS_MGF,
+         .family = VSPH_VISCOUS_FAMILY_BROOKSHAW,
          .flags = CO | TV | VSPH_VISCOUS_XI,
          .lap = -1,
          .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -136,7 +136,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .cite = "two-pass strain rate, Watkins et al. 1996 (Basa et al. "
                  "2009, model B, eq. 29; Vukcevic et al. 2012)",
          .pass = VSPH_VISCOUS_PASS_STRESS,
-         .loop = VSPH_VISCOUS_PVWF,
+         .family = VSPH_VISCOUS_FAMILY_STRESS,
          .flags = 0,
          .lap = -1,
          .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,
@@ -150,7 +150,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .cite = "direct second derivatives, Takeda et al. 1994 (Basa et "
                  "al. 2009, model A, eqs. 27-28)",
          .pass = VSPH_VISCOUS_PASS_TAKEDA,
-         .loop = VSPH_VISCOUS_TAKEDA,
+         .family = VSPH_VISCOUS_FAMILY_NONE,
          .flags = 0,
          .lap = -1,
          .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,
@@ -163,7 +163,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .label = "A[0]",
          .cite = "model A, Shepard-corrected (Basa et al. 2009, eq. 23)",
          .pass = VSPH_VISCOUS_PASS_TAKEDA,
-         .loop = VSPH_VISCOUS_TAKEDA0,
+         .family = VSPH_VISCOUS_FAMILY_NONE,
          .flags = VSPH_VISCOUS_SHEPARD,
          .lap = -1,
          .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,
@@ -176,7 +176,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .label = "ER",
          .cite = "Espanol & Revenga 2003 (docs/theory.md, section 8)",
          .pass = VSPH_VISCOUS_PASS_NONE,
-         .loop = VSPH_VISCOUS_ER,
+         .family = VSPH_VISCOUS_FAMILY_ER,
          .flags = CO | TV,
          .lap = -1,
          .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -190,7 +190,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .cite = "Zheng et al. 2018, VISC-01: Brookshaw/Morris hybrid "
                  "(eq. 15)",
          .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-         .loop = VSPH_VISCOUS_VISC01,
+         .family = VSPH_VISCOUS_FAMILY_NONE,
          .flags = TV,
          .lap = VSPH_PAIR_LAP_HYBRID,
          .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -204,7 +204,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .cite = "Zheng et al. 2018, VISC-02: twice-differentiated kernel "
                  "(eq. 16)",
          .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-         .loop = VSPH_VISCOUS_VISC02,
+         .family = VSPH_VISCOUS_FAMILY_NONE,
          .flags = TV,
          .lap = VSPH_PAIR_LAP_DIRECT,
          .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -218,7 +218,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .cite = "Zheng et al. 2018, VISC-03: Schwaiger's corrected "
                  "Laplacian (eq. 17)",
          .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-         .loop = VSPH_VISCOUS_VISC03,
+         .family = VSPH_VISCOUS_FAMILY_NONE,
          .flags = TV,
          .lap = VSPH_PAIR_LAP_SCHWAIGER,
          .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -232,7 +232,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .cite = "Zheng et al. 2018, VISC-04: Oger's renormalised "
                  "gradient (eq. 20)",
          .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-         .loop = VSPH_VISCOUS_VISC04,
+         .family = VSPH_VISCOUS_FAMILY_NONE,
          .flags = TV,
          .lap = VSPH_PAIR_LAP_RENORMALISED,
          .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -246,7 +246,7 @@ const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
          .cite = "Morris, Fox & Zhu 1997 with r^2 + eta^2 (Basa et al. "
                  "2009, model E as Morris et al. print it)",
          .pass = VSPH_VISCOUS_PASS_NONE,
-         .loop = VSPH_VISCOUS_MEAFETA,
+         .family = VSPH_VISCOUS_FAMILY_NONE,
          .flags = TV,
          .lap = -1,
          .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -735,7 +735,7 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
     vsph_pair_ranges_cell(&rg, cells, c);
     const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
     for (size_t i = i0; i < i1; i++) { /* dimension fixed outside the loop */
-      const int f = vsph_viscous_loop_form(vp->form);
+      const int fam = vsph_viscous_family(vp->form);
       const struct vsph_viscous_shape mgf2 = {2, VSPH_VISCOUS_MGF},
                                       meaf2 = {2, VSPH_VISCOUS_MEAF},
                                       pvwf2 = {2, VSPH_VISCOUS_PVWF},
@@ -743,14 +743,13 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
                                       any = {dim, vp->form};
       const int G = VSPH_KERNEL_DFQ_GAUSSIAN;
       double pd;
-      if (dim != 2 || pk.dfq_id != G ||
-          (f > VSPH_VISCOUS_PVWF && f != VSPH_VISCOUS_ER))
+      if (dim != 2 || pk.dfq_id != G || fam == VSPH_VISCOUS_FAMILY_NONE)
         pd = force_one(&lp, &pk, p, &rg, i, out, any, pk.dfq_id);
-      else if (f == VSPH_VISCOUS_ER)
+      else if (fam == VSPH_VISCOUS_FAMILY_ER)
         pd = force_one(&lp, &pk, p, &rg, i, out, er2, G);
-      else if (f == VSPH_VISCOUS_MGF)
+      else if (fam == VSPH_VISCOUS_FAMILY_BROOKSHAW)
         pd = force_one(&lp, &pk, p, &rg, i, out, mgf2, G);
-      else if (f == VSPH_VISCOUS_MEAF)
+      else if (fam == VSPH_VISCOUS_FAMILY_MORRIS)
         pd = force_one(&lp, &pk, p, &rg, i, out, meaf2, G);
       else
         pd = force_one(&lp, &pk, p, &rg, i, out, pvwf2, G);

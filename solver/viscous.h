@@ -150,6 +150,22 @@ enum vsph_viscous_lambda {
                                    al. and Vukcevic et al. print it */
 };
 
+/** The family of specialised neighbour loops that serves a formulation
+ *  (solver/equations.c's and vsph_viscous_compute's tables are indexed by
+ *  it): a form of a family runs its family's loops, its own constants in
+ *  the loop; a form of none runs the general loop (or its first pass
+ *  makes the whole force). */
+enum vsph_viscous_family {
+  VSPH_VISCOUS_FAMILY_NONE = -1, /*!< the general loop only */
+  VSPH_VISCOUS_FAMILY_BROOKSHAW, /*!< along grad W with F/s^2: MGF, VI,
+                                      Cleary (MGF's loops) */
+  VSPH_VISCOUS_FAMILY_MORRIS,    /*!< MEAF's loops */
+  VSPH_VISCOUS_FAMILY_STRESS,    /*!< A_i + A_j of a stress pass: PVWF,
+                                      model B (PVWF's loops) */
+  VSPH_VISCOUS_FAMILY_ER,        /*!< Espanol & Revenga's loops */
+  VSPH_VISCOUS_FAMILY_COUNT
+};
+
 /** What a formulation's dissipation density tends to as h -> 0 inside a
  *  fluid (the continuum limit analysis/dissipation.c splits its error
  *  against, THEORY.md section 4). */
@@ -179,15 +195,14 @@ typedef struct vsph_pair_visc vsph_viscous_pair_fn(
  *  report's lists of forms read it. docs/theory.md, section 8, says how to
  *  add one. */
 struct vsph_viscous_type {
-  const char *name;            /*!< the command line's name ("mgf") */
-  const char *label;           /*!< in tables and figures ("MGF") */
-  const char *cite;            /*!< its source and equation */
-  enum vsph_viscous_pass pass; /*!< its first pass */
-  int loop;       /*!< the vsph_viscous_form whose specialised loops
-                       serve it (itself where it has its own, or where
-                       only the general loop serves it) */
-  unsigned flags; /*!< VSPH_VISCOUS_FREE_SURFACE, ... */
-  int lap;        /*!< Laplacian pass: its vsph_pair_lap_form */
+  const char *name;                /*!< the command line's name ("mgf") */
+  const char *label;               /*!< in tables and figures ("MGF") */
+  const char *cite;                /*!< its source and equation */
+  enum vsph_viscous_pass pass;     /*!< its first pass */
+  enum vsph_viscous_family family; /*!< the specialised loops that serve
+                                       it (NONE: the general loop) */
+  unsigned flags;                  /*!< VSPH_VISCOUS_FREE_SURFACE, ... */
+  int lap; /*!< Laplacian pass: its vsph_pair_lap_form */
   enum vsph_viscous_lambda lambda; /*!< default lambda */
   enum vsph_viscous_limit limit;   /*!< its dissipation's continuum limit */
   double eta;                 /*!< default regulariser eta (fraction of h) in
@@ -452,12 +467,30 @@ static inline int vsph_viscous_passes(int form) {
   return vsph_viscous_types[form].pass == VSPH_VISCOUS_PASS_STRESS ? 2 : 1;
 }
 
-/** @brief The form whose specialised loop serves @p form: the Brookshaw
- *  forms (VI, Cleary) share MGF's, their constants being in the loop;
- *  model B shares PVWF's (its A_i in the workspace). The others return
- *  themselves: ER has loops of its own, A runs the general loop. */
+/** @brief The family of specialised loops that serves @p form
+ *  (VSPH_VISCOUS_FAMILY_NONE: the general loop). */
+static inline int vsph_viscous_family(int form) {
+  return vsph_viscous_types[form].family;
+}
+
+/** @brief The form whose specialised loop serves @p form, the pair
+ *  dispatch's compile-time shape (vsph_viscous_pair): its family's head
+ *  (the Brookshaw forms VI and Cleary share MGF's loop, their constants
+ *  being in the loop; model B shares PVWF's, its A_i in the workspace),
+ *  or @p form itself where no family serves it. */
 static inline int vsph_viscous_loop_form(int form) {
-  return vsph_viscous_types[form].loop;
+  switch (vsph_viscous_types[form].family) {
+    case VSPH_VISCOUS_FAMILY_BROOKSHAW:
+      return VSPH_VISCOUS_MGF;
+    case VSPH_VISCOUS_FAMILY_MORRIS:
+      return VSPH_VISCOUS_MEAF;
+    case VSPH_VISCOUS_FAMILY_STRESS:
+      return VSPH_VISCOUS_PVWF;
+    case VSPH_VISCOUS_FAMILY_ER:
+      return VSPH_VISCOUS_ER;
+    default:
+      return form;
+  }
 }
 
 /** @brief PVWF's (B's) A_i of particle @p i from the workspace. */

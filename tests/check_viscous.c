@@ -503,7 +503,11 @@ START_TEST(test_errors) {
                      k < VSPH_VISCOUS_PAPER_COUNT);
     /* a loop form serves itself; a form without a pair function is
      * whole from its first pass, a pair form has none but the stress's */
-    ck_assert_int_eq(vsph_viscous_types[t->loop].loop, t->loop);
+    const int lf = vsph_viscous_loop_form(k);
+    ck_assert_int_eq(vsph_viscous_family(lf), t->family);
+    ck_assert_int_eq(vsph_viscous_loop_form(lf), lf);
+    ck_assert(t->family == VSPH_VISCOUS_FAMILY_NONE ? lf == k
+                                                    : t->pair != NULL);
     ck_assert_int_eq(t->pair == NULL,
                      t->pass == VSPH_VISCOUS_PASS_TAKEDA ||
                          t->pass == VSPH_VISCOUS_PASS_LAPLACIAN);
