@@ -16,21 +16,23 @@
 #include "../solver/particles.h"
 #include "../solver/viscous.h"
 
-static const char *const form_names[] = {"visc01", "visc02", "visc03",
-                                         "visc04"};
 static const char *const field_names[] = {"quartic", "quadratic", "linear"};
 _Static_assert(sizeof field_names / sizeof field_names[0] ==
                    VSPH_LAPLACIAN_FIELD_COUNT,
                "field name table out of sync");
 
+/* A Laplacian form is named by the viscous formulation that applies it
+ * (its descriptor's lap): one list, vsph_viscous_types. */
 const char *vsph_laplacian_form_name(int form) {
-  return form >= 0 && form < 4 ? form_names[form] : "unknown";
+  for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++)
+    if (form >= 0 && vsph_viscous_types[k].lap == form)
+      return vsph_viscous_types[k].name;
+  return "unknown";
 }
 
 int vsph_laplacian_form_find(const char *name) {
-  for (int k = 0; k < 4; k++)
-    if (!strcmp(form_names[k], name)) return k;
-  return -1;
+  const int k = vsph_viscous_find(name);
+  return k >= 0 ? vsph_viscous_types[k].lap : -1;
 }
 
 const char *vsph_laplacian_field_name(int field) {

@@ -665,10 +665,11 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_pressure_g(double vj, int dim,
 /** The four Laplacian forms of Zheng, Ma & Shao (2018) (docs/theory.md
  *  section 7), all applied per velocity component. */
 enum vsph_pair_lap_form {
-  VSPH_PAIR_LAP_HYBRID = 0,  /*!< VISC-01, Brookshaw / Morris (15) */
-  VSPH_PAIR_LAP_DIRECT,      /*!< VISC-02, twice-differentiated kernel (16) */
-  VSPH_PAIR_LAP_SCHWAIGER,   /*!< VISC-03, Schwaiger (2008) corrected (17) */
-  VSPH_PAIR_LAP_RENORMALISED /*!< VISC-04, Oger et al. (2007) (20) */
+  VSPH_PAIR_LAP_HYBRID = 0,   /*!< VISC-01, Brookshaw / Morris (15) */
+  VSPH_PAIR_LAP_DIRECT,       /*!< VISC-02, twice-differentiated kernel (16) */
+  VSPH_PAIR_LAP_SCHWAIGER,    /*!< VISC-03, Schwaiger (2008) corrected (17) */
+  VSPH_PAIR_LAP_RENORMALISED, /*!< VISC-04, Oger et al. (2007) (20) */
+  VSPH_PAIR_LAP_COUNT
 };
 
 /** Per-particle sums from which every form is finished (one neighbour

@@ -7,6 +7,7 @@
 #include "../analysis/laplacian.h"
 #include "../kernels/kernel.h"
 #include "../solver/pair.h"
+#include "../solver/viscous.h"
 #include "check_suites.h"
 
 static struct vsph_laplacian_result patch(int form, int field, int dim,
@@ -32,6 +33,26 @@ static struct vsph_laplacian_result patch(int form, int field, int dim,
  * (1e-12 relative). The paper's line x = 0.5 falls between two columns of
  * the cell-centred lattice and takes both (40); with n = 21 a column sits
  * on it (21). */
+/* The Laplacian forms are named by the viscous formulations that apply
+ * them (one list, the descriptors' lap): each of the four has exactly one
+ * (VISC-01..04, Zheng et al. 2018, eqs. 15-20), its name finds it back,
+ * and a formulation without a Laplacian pass names none. */
+START_TEST(test_form_names) {
+  for (int f = 0; f < VSPH_PAIR_LAP_COUNT; f++) {
+    int owners = 0;
+    for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++)
+      owners += vsph_viscous_types[k].lap == f;
+    ck_assert_int_eq(owners, 1);
+    ck_assert_int_eq(vsph_laplacian_form_find(vsph_laplacian_form_name(f)), f);
+  }
+  ck_assert_str_eq(vsph_laplacian_form_name(VSPH_PAIR_LAP_SCHWAIGER), "visc03");
+  ck_assert_int_eq(vsph_laplacian_form_find("mgf"), -1);
+  ck_assert_int_eq(vsph_laplacian_form_find("nonesuch"), -1);
+  ck_assert_str_eq(vsph_laplacian_form_name(VSPH_PAIR_LAP_COUNT), "unknown");
+  ck_assert_str_eq(vsph_laplacian_form_name(-1), "unknown");
+}
+END_TEST
+
 START_TEST(test_line_sampling) {
   struct vsph_laplacian_props lp;
   ck_assert_int_eq(vsph_laplacian_props_init(&lp, NULL), 0);
@@ -193,6 +214,7 @@ Suite *vsph_laplacian_suite(void) {
   tcase_add_test(tc, test_perturbed_growth);
   tcase_add_test(tc, test_morris_lattice);
   tcase_add_test(tc, test_line_sampling);
+  tcase_add_test(tc, test_form_names);
   suite_add_tcase(s, tc);
   return s;
 }
