@@ -31,17 +31,16 @@ double vsph_sysinfo_thread_cpu_s(void) {
   return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-const char *vsph_sysinfo_wait_policy(void) {
-  static char buf[128];
+const char *vsph_sysinfo_wait_policy(char *buf, size_t n) {
+  if (!buf || !n) return "";
   const char *w = getenv("OMP_WAIT_POLICY"), *c = getenv("GOMP_SPINCOUNT");
   if (w && c)
-    snprintf(buf, sizeof buf, "OMP_WAIT_POLICY=%.40s GOMP_SPINCOUNT=%.40s", w,
-             c);
+    snprintf(buf, n, "OMP_WAIT_POLICY=%.40s GOMP_SPINCOUNT=%.40s", w, c);
   else if (w || c)
-    snprintf(buf, sizeof buf, "%s=%.40s",
-             w ? "OMP_WAIT_POLICY" : "GOMP_SPINCOUNT", w ? w : c);
+    snprintf(buf, n, "%s=%.40s", w ? "OMP_WAIT_POLICY" : "GOMP_SPINCOUNT",
+             w ? w : c);
   else
-    snprintf(buf, sizeof buf, "libgomp default");
+    snprintf(buf, n, "libgomp default");
   return buf;
 }
 

@@ -26,8 +26,9 @@ double vsph_sysinfo_thread_cpu_s(void);
 /** @brief The OpenMP wait policy this process runs under, as the
  *  environment gives it: "GOMP_SPINCOUNT=1000" (what the vsph program
  *  sets unless told otherwise), "OMP_WAIT_POLICY=...", both, or "libgomp
- *  default". */
-const char *vsph_sysinfo_wait_policy(void);
+ *  default"), into the caller's @p buf of @p n bytes (128 hold any).
+ *  @return @p buf. */
+const char *vsph_sysinfo_wait_policy(char *buf, size_t n);
 
 /** @brief Peak resident memory of this process so far (bytes; 0 if
  *  unknown). */

@@ -43,7 +43,9 @@ void vsph_json_load(cJSON *obj, const double start[3], const double end[3]) {
                                    ? cJSON_CreateNumber(load[w][k])
                                    : cJSON_CreateNull());
   }
-  cJSON_AddStringToObject(obj, "omp_wait_policy", vsph_sysinfo_wait_policy());
+  char wp[128];
+  cJSON_AddStringToObject(obj, "omp_wait_policy",
+                          vsph_sysinfo_wait_policy(wp, sizeof wp));
 }
 
 void vsph_json_moments(cJSON *obj, const struct vsph_moments *m) {

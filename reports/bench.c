@@ -364,11 +364,12 @@ static size_t count_interactions(const struct vsph_cells *c,
 /* The machine's load and the OpenMP wait policy. */
 static void print_load(FILE *out) {
   double la[3];
+  char wp[128];
   vsph_sysinfo_load(la);
   fprintf(out,
           "# load average %.2f %.2f %.2f (1, 5, 15 min); OMP_WAIT_POLICY "
           "%s\n",
-          la[0], la[1], la[2], vsph_sysinfo_wait_policy());
+          la[0], la[1], la[2], vsph_sysinfo_wait_policy(wp, sizeof wp));
 }
 
 static int bench_quadrature(FILE *out) {

@@ -339,7 +339,9 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
                 R->load[0][1], R->load[0][2]);
   vsph_text_set(tv, "load_end", "%.2f %.2f %.2f", R->load[1][0], R->load[1][1],
                 R->load[1][2]);
-  vsph_text_set(tv, "wait_policy", "%s", vsph_sysinfo_wait_policy());
+  char wp[128];
+  vsph_text_set(tv, "wait_policy", "%s",
+                vsph_sysinfo_wait_policy(wp, sizeof wp));
   vsph_text_set(tv, "cpu", "%.0f", vsph_sysinfo_cpu_s());
   if (!st) st = vsph_report_say(R, "report.facts_tail");
   R->md = NULL;

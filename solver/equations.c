@@ -3,6 +3,7 @@
 #include "equations.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -637,6 +638,8 @@ struct vsph_equations_sweep {
   unsigned long gen; /* the cells' build the blocks were planned on (0:
                         none): the RK4 stages of a step share it */
   size_t plan_n;     /* and the particle count */
+  double *rows;      /* each thread's scratch rows (sweep_each_block) */
+  size_t cap_rows;   /* allocated doubles */
 };
 
 struct vsph_equations_sweep *vsph_equations_sweep_alloc(void) {
@@ -654,6 +657,7 @@ void vsph_equations_sweep_free(struct vsph_equations_sweep *sw) {
   free(sw->hi);
   free(sw->off);
   free(sw->buf);
+  free(sw->rows);
   free(sw);
 }
 
@@ -968,27 +972,33 @@ typedef void sweep_rows_fn(void *ctx, size_t i0, size_t i1, int nf,
                            const double *t);
 
 /* Every block's rows (sweep_rows) handed to @p fn, the blocks in
- * parallel, each thread with scratch rows of its own. */
-static int sweep_each_block(const struct vsph_equations_sweep *sw,
+ * parallel, each thread with scratch rows of its own in the workspace
+ * (grown here, outside the parallel region: no allocation per
+ * evaluation once it has its size). */
+static int sweep_each_block(struct vsph_equations_sweep *sw,
                             const struct vsph_cells *cells, int nf,
                             sweep_rows_fn *fn, void *ctx) {
-  const size_t most = sweep_most(sw, cells);
-  int bad = 0;
-#pragma omp parallel reduction(| : bad)
+  if (!sw->nblk) return VSPH_OK;
+  const size_t most = sweep_most(sw, cells), per = most * (size_t)nf;
+  const size_t need = per * (size_t)omp_get_max_threads();
+  if (need > sw->cap_rows) {
+    double *r = realloc(sw->rows, need * sizeof *r);
+    if (!r) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the sweep's rows");
+    sw->rows = r;
+    sw->cap_rows = need;
+  }
+  double *const rows = sw->rows;
+#pragma omp parallel
   {
-    double *const t = malloc(most * (size_t)nf * sizeof *t);
-    bad = !t;
+    double *const t = rows + per * (size_t)omp_get_thread_num();
 #pragma omp for schedule(dynamic, 1)
     for (size_t b = 0; b < sw->nblk; b++) {
-      if (!t) continue;
       size_t i0, i1;
       const size_t first = sweep_span(sw, cells, b, &i0, &i1);
       sweep_rows(sw, first, b, i0, i1, nf, t);
       fn(ctx, i0, i1, nf, t);
     }
-    free(t);
   }
-  if (bad) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the sweep's rows");
   return VSPH_OK;
 }
 
@@ -1017,7 +1027,7 @@ static void finish_rows(void *ctx, size_t i0, size_t i1, int nf,
 static int sweep_finish(const struct rhs_ctx *rc,
                         const struct vsph_particles *p, size_t n_fluid,
                         const struct vsph_cells *cells,
-                        const struct vsph_equations_sweep *sw, int nf,
+                        struct vsph_equations_sweep *sw, int nf,
                         struct vsph_equations_out *out) {
   struct finish_ctx f = {rc, p, n_fluid, out};
   return sweep_each_block(sw, cells, nf, finish_rows, &f);
