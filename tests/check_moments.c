@@ -158,7 +158,7 @@ START_TEST(test_sums_converge) {
 }
 END_TEST
 
-START_TEST(test_errors) {
+START_TEST(test_bad_args_refused) {
   vsph_test_silence();
   struct vsph_moments q;
   const struct vsph_kernel_type *k = &vsph_cubic_type;
@@ -173,7 +173,7 @@ END_TEST
 /* The public entry points refuse a NULL or out-of-range argument with
  * VSPH_EINVAL instead of dereferencing it: an unknown kernel name gives a
  * NULL vsph_kernel_find, which a caller may pass on. */
-START_TEST(test_refusals) {
+START_TEST(test_null_and_out_of_range_refused) {
   vsph_test_silence();
   struct vsph_moments q;
   double cf, cn;
@@ -218,8 +218,8 @@ Suite *vsph_moments_suite(void) {
   tcase_add_loop_test(tc, test_theory_values, 0, (int)vsph_kernel_count() * 3);
   tcase_add_test(tc, test_paper_gaussian_constants);
   tcase_add_test(tc, test_depth_profiles);
-  tcase_add_test(tc, test_errors);
-  tcase_add_test(tc, test_refusals);
+  tcase_add_test(tc, test_bad_args_refused);
+  tcase_add_test(tc, test_null_and_out_of_range_refused);
   suite_add_tcase(s, tc);
   TCase *ts = tcase_create("sums");
   tcase_add_checked_fixture(ts, ws_setup, ws_teardown);

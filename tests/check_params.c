@@ -79,7 +79,7 @@ START_TEST(test_bad_files) {
 }
 END_TEST
 
-START_TEST(test_errors) {
+START_TEST(test_bad_files_keys_values_refused) {
   vsph_test_silence();
   struct vsph_params *p = vsph_params_alloc();
   ck_assert_int_eq(vsph_params_read(p, "/nonexistent/x.yml"), 3 /* EIO */);
@@ -100,7 +100,7 @@ Suite *vsph_params_suite(void) {
   tcase_add_test(tc, test_read_and_get);
   tcase_add_loop_test(tc, test_bad_files, 0,
                       (int)(sizeof bad_files / sizeof bad_files[0]));
-  tcase_add_test(tc, test_errors);
+  tcase_add_test(tc, test_bad_files_keys_values_refused);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -81,7 +81,7 @@ START_TEST(test_interpolation) {
 }
 END_TEST
 
-START_TEST(test_errors) {
+START_TEST(test_bad_grid_or_length_refused) {
   vsph_test_silence();
   ck_assert_ptr_null(vsph_poisson_alloc(1, 1.0));
   ck_assert_ptr_null(vsph_poisson_alloc(8, -1.0));
@@ -94,7 +94,7 @@ Suite *vsph_poisson_suite(void) {
   tcase_add_test(tc, test_cubic_exact);
   tcase_add_test(tc, test_second_order);
   tcase_add_test(tc, test_interpolation);
-  tcase_add_test(tc, test_errors);
+  tcase_add_test(tc, test_bad_grid_or_length_refused);
   suite_add_tcase(s, tc);
   return s;
 }

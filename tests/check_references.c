@@ -348,7 +348,7 @@ START_TEST(test_wave_mech) {
 }
 END_TEST
 
-START_TEST(test_errors) {
+START_TEST(test_vortex_bad_args_refused) {
   vsph_test_silence();
   ck_assert_ptr_null(vsph_references_vortex_alloc(-1.0, 0.1, 1, 1, 1e-3, 5));
   ck_assert_ptr_null(vsph_references_vortex_alloc(1.0, 0.1, 1, 1, 1e-3, 0));
@@ -471,7 +471,7 @@ Suite *vsph_references_suite(void) {
   tcase_add_test(tc, test_wave_mech);
   tcase_add_test(tc, test_norm_closed_form);
   tcase_add_test(tc, test_wave_initial_power);
-  tcase_add_test(tc, test_errors);
+  tcase_add_test(tc, test_vortex_bad_args_refused);
   tcase_add_test(tc, test_profile_zigzag);
   tcase_add_test(tc, test_wave_decay);
   suite_add_tcase(s, tc);

@@ -468,7 +468,7 @@ START_TEST(test_digest_lattice) {
 }
 END_TEST
 
-START_TEST(test_errors) {
+START_TEST(test_bad_props_refused_names_listed) {
   vsph_test_silence();
   struct vsph_viscous_props vp;
   ck_assert_int_eq(vsph_viscous_props_init(&vp, VSPH_VISCOUS_FORM_COUNT,
@@ -581,7 +581,7 @@ Suite *vsph_viscous_suite(void) {
   tcase_add_loop_test(tc, test_takeda_fd, 0, 2);
   tcase_add_test(tc, test_pvwf_linear_exact);
   tcase_add_test(tc, test_pvwf_fallback);
-  tcase_add_test(tc, test_errors);
+  tcase_add_test(tc, test_bad_props_refused_names_listed);
   tcase_add_test(tc, test_digest_lattice);
   suite_add_tcase(s, tc);
   return s;
