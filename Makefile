@@ -59,7 +59,7 @@ TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
 .PHONY: all deps check test report baseline bench archive full-sitting full-report asan valgrind-check prefix-check \
-        lib install uninstall \
+        lib doc install uninstall \
         format format-check mutate fuzz slurm-check fresh-check \
         fresh-check-tests paraview-check reference clean
 
@@ -174,7 +174,19 @@ $(BUILD)/vsph.1: $(BUILD)/vsph scripts/make-man
 	scripts/make-man $(BUILD)/vsph > $@.tmp && mv $@.tmp $@
 
 lib: deps
-	@$(MAKE) --no-print-directory $(LIBA) $(LIBSO) $(BUILD)/vsph.1
+	@$(MAKE) --no-print-directory $(LIBA) $(LIBSO) $(BUILD)/vsph.1 doc
+
+# The reference manual of the public headers (docs/Doxyfile), by Debian's
+# doxygen (scripts/install-deps); skipped with a note where it is absent.
+doc: $(BUILD)/doc/html/index.html
+$(BUILD)/doc/html/index.html: docs/Doxyfile $(PUB_HDR)
+	@if command -v doxygen > /dev/null; then \
+	  rm -rf $(BUILD)/doc && mkdir -p $(BUILD)/doc && \
+	  { cat docs/Doxyfile; echo "INPUT = $(PUB_HDR)"; \
+	    echo "OUTPUT_DIRECTORY = $(BUILD)/doc"; \
+	    echo "WARN_LOGFILE = $(BUILD)/doc/warnings.log"; } | doxygen - && \
+	  echo "doc: the reference manual in $(BUILD)/doc/html"; \
+	else echo "doc: skipped (no doxygen; scripts/install-deps installs it)"; fi
 
 # make install [PREFIX=/usr/local] [DESTDIR=]: the program, the libraries,
 # the headers, vsph.pc and vsph(1), each file listed in
