@@ -166,9 +166,18 @@ enum vsph_viscous_family {
   VSPH_VISCOUS_FAMILY_COUNT
 };
 
-/** What a formulation's dissipation density tends to as h -> 0 inside a
- *  fluid (the continuum limit analysis/dissipation.c splits its error
- *  against, THEORY.md section 4). */
+/** What a formulation's dissipation density is meant to tend to as
+ *  h -> 0 inside a fluid (the continuum limit analysis/dissipation.c
+ *  splits its error against, THEORY.md section 4). A form's own constants
+ *  can keep it off that limit, and the split then books the offset as a
+ *  lattice error that does not vanish with h/dx: Cleary's K = 2 xi
+ *  instead of 2(d + 2) (-24 % in 2-D), the regulariser eta of VI and
+ *  MEAF-eta (about 1 %); ER's is the gradient limit in 2-D with zeta = 0
+ *  (what vsph runs), not in general. For a per-particle Laplacian the
+ *  truncated support at a free surface gives back part of the surface
+ *  term mu (closed integral) u.du/dn that its limit lacks, so its surface
+ *  part tends to a constant instead of vanishing like h/L: its
+ *  consistency and surface parts are to be read together. */
 enum vsph_viscous_limit {
   VSPH_VISCOUS_LIMIT_STRESS = 0, /*!< T:D = 2 mu D:D + lambda (tr D)^2,
                                       lambda the form's (a pair form along
@@ -473,8 +482,8 @@ static inline int vsph_viscous_family(int form) {
   return vsph_viscous_types[form].family;
 }
 
-/** @brief The form whose specialised loop serves @p form, the pair
- *  dispatch's compile-time shape (vsph_viscous_pair): its family's head
+/** @brief The form whose specialised loop serves @p form (the form id
+ *  a vsph_viscous_shape of its family's loops carries): its family's head
  *  (the Brookshaw forms VI and Cleary share MGF's loop, their constants
  *  being in the loop; model B shares PVWF's, its A_i in the workspace),
  *  or @p form itself where no family serves it. */

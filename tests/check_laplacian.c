@@ -25,14 +25,6 @@ static struct vsph_laplacian_result patch(int form, int field, int dim,
   return r;
 }
 
-/* The Fig. 2 line's sampling against the whole set, on the uniform
- * lattice (VISC-01, n = 20): the line through each column's centre takes
- * that column alone (20 particles; its neighbours lie dx away, beyond
- * dx/2), so the 20 columns' line means, weighted by their counts, are
- * the whole set's mean: the same sums split by column, to rounding
- * (1e-12 relative). The paper's line x = 0.5 falls between two columns of
- * the cell-centred lattice and takes both (40); with n = 21 a column sits
- * on it (21). */
 /* The Laplacian forms are named by the viscous formulations that apply
  * them (one list, the descriptors' lap): each of the four has exactly one
  * (VISC-01..04, Zheng et al. 2018, eqs. 15-20), its name finds it back,
@@ -53,6 +45,14 @@ START_TEST(test_form_names) {
 }
 END_TEST
 
+/* The Fig. 2 line's sampling against the whole set, on the uniform
+ * lattice (VISC-01, n = 20): the line through each column's centre takes
+ * that column alone (20 particles; its neighbours lie dx away, beyond
+ * dx/2), so the 20 columns' line means, weighted by their counts, are
+ * the whole set's mean: the same sums split by column, to rounding
+ * (1e-12 relative). The paper's line x = 0.5 falls between two columns of
+ * the cell-centred lattice and takes both (40); with n = 21 a column sits
+ * on it (21). */
 START_TEST(test_line_sampling) {
   struct vsph_laplacian_props lp;
   ck_assert_int_eq(vsph_laplacian_props_init(&lp, NULL), 0);

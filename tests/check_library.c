@@ -249,6 +249,20 @@ START_TEST(test_deps_without_apt) {
   o = vsph_test_shell(script);
   ck_assert_msg(o->status == 2 && o->err_lines == 1, "exit %d: %s", o->status,
                 o->err);
+  /* Debian's tools but packages missing, no root and no sudo: refused in
+   * one line before any apt-get (a dpkg-query that finds nothing, an
+   * apt-get that would fail the test, an id of 1000) */
+  snprintf(script, sizeof script,
+           "cd '%s' && printf '#!/bin/sh\\nexit 1\\n' > dpkg-query && "
+           "printf '#!/bin/sh\\necho apt-get ran >&2\\n' > apt-get && "
+           "rm id && printf '#!/bin/sh\\necho 1000\\n' > id && "
+           "chmod +x dpkg-query apt-get id && cd - > /dev/null && "
+           "PATH='%s' '%s/sh' scripts/install-deps",
+           dir, dir, dir);
+  o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 2 && o->err_lines == 1 &&
+                    strstr(o->err, "neither root nor sudo") != NULL,
+                "exit %d: %s", o->status, o->err);
   vsph_test_rm_tree(dir);
 }
 END_TEST
