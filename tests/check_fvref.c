@@ -22,8 +22,9 @@ START_TEST(test_committed) {
   ck_assert_msg(fv->sq.ok, "the square's ladder is not all in " DATA);
   ck_assert_msg(fv->cav[0].ok && fv->cav[1].ok,
                 "the cavity's ladders are not all in " DATA);
-  ck_assert_msg(fv->sq.dt40.ok && fv->sq.dt80.ok && fv->sq.dt160.ok &&
-                    fv->sq.r100.ok && fv->sq.r10000.ok && fv->sq.wide.ok,
+  ck_assert_msg(fv->sq.half[0].ok && fv->sq.half[1].ok && fv->sq.half[2].ok &&
+                    fv->sq.half[3].ok && fv->sq.co2.ok && fv->sq.r100.ok &&
+                    fv->sq.r10000.ok && fv->sq.wide.ok,
                 "a check beside the square's ladder is missing");
   char why[512];
   const int bad = vsph_fvref_check(fv, why, sizeof why);
@@ -38,23 +39,33 @@ END_TEST
 
 /* The step correction against an independent reading of the files: at
  * 160 cells and t A0 = 1, E/E0 less 4/3 of its difference from the half
- * step's (second order in the step), to rounding. */
+ * step's, and at 320 cells the same from half the common step and a
+ * quarter of it (second order in the step), to rounding; the finest
+ * grid's band holds 2/3 of that difference at 320 (the correction's
+ * uncertainty, up to a first order's 2). */
 START_TEST(test_step_correction) {
   struct vsph_fvref *fv = malloc(sizeof *fv);
   ck_assert_ptr_nonnull(fv);
   ck_assert_int_eq(vsph_fvref_read(DATA, fv), 0);
-  double e[2];
-  static const char *const file[2] = {DATA "/square-n160.csv",
-                                      DATA "/square-n160-dt0.5.csv"};
-  for (int k = 0; k < 2; k++) {
+  double e[4];
+  static const char *const file[4] = {
+      DATA "/square-n160.csv", DATA "/square-n160-dt0.5.csv",
+      DATA "/square-n320-dt0.5.csv", DATA "/square-n320-dt0.25.csv"};
+  for (int k = 0; k < 4; k++) {
     struct vsph_csv *c = vsph_csv_read(file[k]);
     ck_assert_ptr_nonnull(c);
     const double *E = vsph_csv_column(c, "Ek");
     e[k] = E[c->nrow - 1] / E[0];
     vsph_csv_free(c);
   }
-  const double want = e[0] - 4.0 / 3.0 * (e[0] - e[1]);
-  ck_assert_double_eq_tol(fv->sq.Ec[2][VSPH_FVREF_SQ_ROWS - 1], want, 1e-12);
+  for (int g = 0; g < 2; g++) {
+    const double want = e[2 * g] - 4.0 / 3.0 * (e[2 * g] - e[2 * g + 1]);
+    ck_assert_double_eq_tol(fv->sq.Ec[2 + g][VSPH_FVREF_SQ_ROWS - 1], want,
+                            1e-12);
+  }
+  /* the band's step share is the largest difference over time, which at
+   * t A0 = 1 is at least this one */
+  ck_assert_double_ge(fv->sq.band, 2.0 / 3.0 * fabs(e[2] - e[3]));
   free(fv);
 }
 END_TEST
@@ -101,8 +112,14 @@ START_TEST(test_damaged) {
   /* E_k rising at one row */
   ck_assert_int_ne(damaged("square-n40.csv", "NR == 150 { $2 = $2 * 1.05 } 1"),
                    0);
-  /* a row lost: refused on reading */
+  /* a row lost: refused on reading, the finest grid's half step too */
   ck_assert_int_eq(damaged("square-n40.csv", "NR != 100"), -1);
+  ck_assert_int_eq(damaged("square-n320-dt0.25.csv", "NR != 60"), -1);
+  /* the 320-cell run at the common step, read as a check, is checked too */
+  ck_assert_int_ne(damaged("square-n320.csv",
+                           "NR == 2 { $4 = sprintf(\"%.12e\", "
+                           "$4 * (1 + 1e-6)) } 1"),
+                   0);
   /* a Ghia value edited in a cavity file */
   ck_assert_int_ne(
       damaged("cavity-re1000-n256-centreline.csv", "NR == 5 { $4 = 0.5 } 1"),
