@@ -47,15 +47,18 @@ START_TEST(test_step_correction) {
   struct vsph_fvref *fv = malloc(sizeof *fv);
   ck_assert_ptr_nonnull(fv);
   ck_assert_int_eq(vsph_fvref_read(DATA, fv), 0);
-  double e[4];
+  double e[4], r[2][VSPH_FVREF_SQ_ROWS];
   static const char *const file[4] = {
       DATA "/square-n160.csv", DATA "/square-n160-dt0.5.csv",
       DATA "/square-n320-dt0.5.csv", DATA "/square-n320-dt0.25.csv"};
   for (int k = 0; k < 4; k++) {
     struct vsph_csv *c = vsph_csv_read(file[k]);
     ck_assert_ptr_nonnull(c);
+    ck_assert_int_eq(c->nrow, VSPH_FVREF_SQ_ROWS);
     const double *E = vsph_csv_column(c, "Ek");
     e[k] = E[c->nrow - 1] / E[0];
+    if (k >= 2)
+      for (size_t i = 0; i < VSPH_FVREF_SQ_ROWS; i++) r[k - 2][i] = E[i] / E[0];
     vsph_csv_free(c);
   }
   for (int g = 0; g < 2; g++) {
@@ -66,6 +69,15 @@ START_TEST(test_step_correction) {
   /* the band's step share is the largest difference over time, which at
    * t A0 = 1 is at least this one */
   ck_assert_double_ge(fv->sq.band, 2.0 / 3.0 * fabs(e[2] - e[3]));
+  /* and exactly: the band is the remainder, the air's and the far sides'
+   * shares and 2/3 of the 320-cell grid's largest step difference over
+   * time, read here from the files (rounding) */
+  double m = 0;
+  for (size_t i = 0; i < VSPH_FVREF_SQ_ROWS; i++)
+    m = fmax(m, fabs(r[0][i] - r[1][i]));
+  ck_assert_double_eq_tol(
+      fv->sq.band - fv->sq.sc.remainder - fv->sq.air_err - fv->sq.dom_err,
+      2.0 / 3.0 * m, 1e-12);
   free(fv);
 }
 END_TEST
