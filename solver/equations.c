@@ -503,6 +503,14 @@ static size_t rhs_general(const struct rhs_ctx *rc,
                   rc->pk.dfq_id, rc->reduce, rc->corr, rc->tvf);
 }
 
+/* Whether the run's shape has the Gaussian's specialised loops (the
+ * right-hand side's and the sweep's tables): 2-D or 3-D, a loop family,
+ * no reduced pairs, corrections or transport velocity. */
+static int gauss_specialised(const struct rhs_ctx *rc, int row) {
+  return rc->pk.dfq_id == VSPH_KERNEL_DFQ_GAUSSIAN && rc->pk.dim >= 2 &&
+         row >= 0 && !rc->reduce && !rc->corr && !rc->tvf;
+}
+
 /* The loop for the run's shape, chosen once per evaluation. */
 static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
   /* the loop shapes by family (enum vsph_viscous_family): MGF (and its
@@ -532,9 +540,7 @@ static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
   if (!rc->tvf && rc->pk.dfq_id == VSPH_KERNEL_DFQ_CUBIC && rc->pk.dim == 2 &&
       !rc->reduce && !rc->corr && !(rc->dhc > 0.0) && row >= 0)
     return cubic[row];
-  if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 || row < 0 ||
-      rc->reduce || rc->corr || rc->tvf)
-    return rhs_general;
+  if (!gauss_specialised(rc, row)) return rhs_general;
   return table[rc->pk.dim - 2][row][rc->dhc > 0.0];
 }
 
@@ -1082,9 +1088,7 @@ static sweep_fn *sweep_choose(const struct rhs_ctx *rc) {
        [VSPH_VISCOUS_FAMILY_STRESS] = {sweep_pvwf3, sweep_pvwf3d},
        [VSPH_VISCOUS_FAMILY_ER] = {sweep_er3, sweep_er3d}}};
   const int row = vsph_viscous_family(rc->vl.form);
-  if (rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 || row < 0 ||
-      rc->reduce || rc->corr || rc->tvf)
-    return NULL;
+  if (!gauss_specialised(rc, row)) return NULL;
   return table[rc->pk.dim - 2][row][rc->dhc > 0.0];
 }
 
