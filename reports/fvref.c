@@ -109,6 +109,17 @@ static double maxdiff(const struct vsph_fvref_sqseries *a,
   return m;
 }
 
+/* What is known exactly of a square series on n cells per L (the
+ * set-up of reference/square/run: rho = 1, mu = 0.05, A0 = 1, L = 1):
+ * E_k(0) over (rho A0^2 L^4/12)(1 - (dx/L)^2), and P(0) over
+ * -4 mu A0^2 L^2. */
+static double e0_ratio(const struct vsph_fvref_sqseries *q, double n) {
+  return q->E[0] / ((1 - 1 / (n * n)) / 12.0);
+}
+static double p0_ratio(const struct vsph_fvref_sqseries *q) {
+  return q->P[0] / (-4 * 0.05);
+}
+
 static int read_square(const char *dir, struct vsph_fvref_square *s) {
   int st = VSPH_OK;
   int all = 1;
@@ -126,12 +137,10 @@ static int read_square(const char *dir, struct vsph_fvref_square *s) {
    * one of its shares would be narrower than measured */
   all &= s->co2.ok && s->r100.ok && s->r10000.ok && s->wide.ok;
   if (st || !all) return st;
-  const double mu = 0.05, A0 = 1, L = 1; /* reference/square/run */
   for (int g = 0; g < VSPH_FVREF_SQ_GRIDS; g++) {
     const struct vsph_fvref_sqseries *q = &s->g[g];
-    const double n = SQ_N[g];
-    s->e0_ratio[g] = q->E[0] / ((1 - 1 / (n * n)) / 12.0);
-    s->p0_ratio[g] = q->P[0] / (-4 * mu * A0 * A0 * L * L);
+    s->e0_ratio[g] = e0_ratio(q, SQ_N[g]);
+    s->p0_ratio[g] = p0_ratio(q);
     s->share[g] = 1 - q->E[VSPH_FVREF_SQ_ROWS - 1] / q->E[0];
   }
   /* the step's share: every grid runs the same step, so the Courant
@@ -321,16 +330,18 @@ int vsph_fvref_check(const struct vsph_fvref *fv, char *why, size_t n) {
   if (s->ok) {
     /* every run of the ladder, each at half its step, and the 320-cell
      * run at the common step */
+    const struct vsph_fvref_sqseries *runs[2 * VSPH_FVREF_SQ_GRIDS + 1];
+    int ncells[2 * VSPH_FVREF_SQ_GRIDS + 1];
+    for (int g = 0; g < VSPH_FVREF_SQ_GRIDS; g++) {
+      runs[2 * g] = &s->g[g], runs[2 * g + 1] = &s->half[g];
+      ncells[2 * g] = ncells[2 * g + 1] = s->n[g];
+    }
+    runs[2 * VSPH_FVREF_SQ_GRIDS] = &s->co2;
+    ncells[2 * VSPH_FVREF_SQ_GRIDS] = s->n[VSPH_FVREF_SQ_GRIDS - 1];
     for (int r = 0; r < 2 * VSPH_FVREF_SQ_GRIDS + 1; r++) {
-      const int g =
-          r < 2 * VSPH_FVREF_SQ_GRIDS ? r / 2 : VSPH_FVREF_SQ_GRIDS - 1;
-      const struct vsph_fvref_sqseries *q = r == 2 * VSPH_FVREF_SQ_GRIDS
-                                                ? &s->co2
-                                            : r % 2 ? &s->half[g]
-                                                    : &s->g[g];
-      const double nn = s->n[g], mu = 0.05; /* reference/square/run */
-      const double e0 = q->E[0] / ((1 - 1 / (nn * nn)) / 12.0),
-                   p0 = q->P[0] / (-4 * mu);
+      const struct vsph_fvref_sqseries *q = runs[r];
+      const int nc = ncells[r];
+      const double e0 = e0_ratio(q, nc), p0 = p0_ratio(q);
       /* E_k(0): the initial field sampled at the cell centres and summed
        * over the cells of the square (aligned with the grid) is exactly
        * (rho A0^2 L^4/12)(1 - (dx/L)^2); written with 13 digits, so 1e-10
@@ -339,12 +350,12 @@ int vsph_fvref_check(const struct vsph_fvref *fv, char *why, size_t n) {
         FVREF_FAIL(
             "square, %d cells: E_k(0) %.12e is not (6.42)'s energy "
             "on its cells (ratio %.12f)",
-            s->n[g], q->E[0], e0);
+            nc, q->E[0], e0);
       /* P(0): the Gauss gradient of a linear field is exact, so D:D = 2
        * A0^2 in every cell of the square and P(0) = -4 mu A0^2 L^2 to
        * rounding (written with 9 digits: 1e-8) */
       if (!(fabs(p0 - 1) <= 1e-8))
-        FVREF_FAIL("square, %d cells: P(0) %.9e is not -4 mu A0^2 L^2", s->n[g],
+        FVREF_FAIL("square, %d cells: P(0) %.9e is not -4 mu A0^2 L^2", nc,
                    q->P[0]);
       for (size_t k = 0; k < VSPH_FVREF_SQ_ROWS; k++) {
         /* the volume of fluid conserves the liquid to its solvers'
@@ -353,13 +364,12 @@ int vsph_fvref_check(const struct vsph_fvref *fv, char *why, size_t n) {
           FVREF_FAIL(
               "square, %d cells: the liquid's volume %.10f at t A0 "
               "= %g is not 1",
-              s->n[g], q->vol[k], s->t[k]);
+              nc, q->vol[k], s->t[k]);
           break;
         }
         /* nothing drives the square: its E_k can only fall */
         if (k && !(q->E[k] < q->E[k - 1])) {
-          FVREF_FAIL("square, %d cells: E_k rises at t A0 = %g", s->n[g],
-                     s->t[k]);
+          FVREF_FAIL("square, %d cells: E_k rises at t A0 = %g", nc, s->t[k]);
           break;
         }
       }
