@@ -47,12 +47,13 @@ TEST_SRC := $(wildcard tests/*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 # A hash of every source file, linked in as vsph_source_hash_id: the
 # report's cache keys include it, so any change to the code reruns.
-TEXT_SRC := $(sort $(wildcard reports/text/*.md))
+TEXT_SRC := $(sort $(wildcard reports/text/*.md reports/claims/*.md))
 SRC_ALL  := $(sort $(wildcard vsph.h common/*.[ch] kernels/*.[ch] solver/*.[ch] \
               solver/scenes/*.c analysis/*.[ch] io/*.[ch] runs/*.[ch] reports/*.[ch] \
               cli/*.[ch])) $(TEXT_SRC)
 HASH_OBJ := $(BUILD)/gen/source_hash.o
-# The report's prose (reports/text/*.md), compiled in.
+# The report's prose (reports/text/*.md) and claims (reports/claims/*.md),
+# compiled in.
 TEXT_OBJ := $(BUILD)/gen/text_blocks.o
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)

@@ -1,8 +1,9 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
-/* The report's driver: its parts in order, their cache, the assembly of
- * report.md and report.html, baseline.csv and run.json; and the helpers the
- * parts share (claims, prose, figures, fitted slopes). */
+/* The report's driver: its parts in order, their plans, their cache, the
+ * claims each grades, the assembly of report.md and report.html,
+ * baseline.csv and run.json. The parts write with report_doc.c and never
+ * call back here. */
 #include "report.h"
 
 #include <cjson/cJSON.h>
@@ -37,7 +38,14 @@ struct part {
   int (*plan)(struct vsph_report *); /* the runs it reads, or NULL */
   int cached; /* 1: skipped when its key matches (cheap, no runs) */
   const char *what;
+  /* the claims it grades into the claims table, or NULL (graded by the
+   * claims part, whatever parts are written: they read the part's runs
+   * again, so the table is whole when the part comes from the cache) */
+  int (*grade)(struct vsph_report *);
 };
+
+static int claims_plan(struct vsph_report *R);
+static int claims_write(struct vsph_report *R);
 
 /* convergence and speed read the ladders of the scenes on */
 static int plan_ladders(struct vsph_report *R) {
@@ -45,33 +53,63 @@ static int plan_ladders(struct vsph_report *R) {
 }
 
 static const struct part PARTS[] = {
-    {"tensors", vsph_report_tensors_write, NULL, 1,
-     "F, G, N, M against theory; particle sums; C_F, C_N"},
-    {"profiles", vsph_report_profiles_write, NULL, 1,
-     "the tensors against depth (figures)"},
-    {"scaling", vsph_report_scaling_write, NULL, 1,
-     "1/h surface scaling, slopes; interior convergence"},
-    {"dissipation", vsph_report_dissipation_write, NULL, 1,
-     "THEORY 4 dissipation integrals against resolution and h/dx"},
-    {"scenes", vsph_report_scenes_write, vsph_report_scenes_plan, 0,
-     "the three scenes, each formulation, against the references"},
-    {"convergence", vsph_report_convergence_write, plan_ladders, 0,
-     "error against resolution, fitted order"},
-    {"speed", vsph_report_speed_write, vsph_report_speed_plan, 0,
-     "wall time against error; the time step's error against CFL"},
-    {"stability", vsph_report_stability_write, vsph_report_stability_plan, 0,
-     "hard cases: PVWF, high Re, perturbed start, low c0, CFL"},
-    {"patch", vsph_report_patch_write, NULL, 1,
-     "Laplacian patch tests of VISC-01..04 beside Zheng et al. (2018)"},
-    {"channel", vsph_report_channel_write, vsph_report_channel_plan, 0,
-     "internal flows (Poiseuille, Couette) and the other formulations"},
-    {"contact", vsph_report_contact_write, vsph_report_contact_plan, 0,
-     "contact SPH: the numerical viscosity of its Riemann solver"},
-    {"choices", vsph_report_choices_write, vsph_report_choices_plan, 0,
-     "the scheme's own choices isolated: the wave's start, steepness, "
-     "delta-SPH, c0, time step; the two-pass null mode"},
-    {"claims", vsph_report_claims_write, vsph_report_claims_plan, 0,
-     "the paper's claims beside our figures"},
+    {.name = "tensors",
+     .fn = vsph_report_tensors_write,
+     .cached = 1,
+     .what = "F, G, N, M against theory; particle sums; C_F, C_N"},
+    {.name = "profiles",
+     .fn = vsph_report_profiles_write,
+     .cached = 1,
+     .what = "the tensors against depth (figures)"},
+    {.name = "scaling",
+     .fn = vsph_report_scaling_write,
+     .cached = 1,
+     .what = "1/h surface scaling, slopes; interior convergence"},
+    {.name = "dissipation",
+     .fn = vsph_report_dissipation_write,
+     .cached = 1,
+     .what = "THEORY 4 dissipation integrals against resolution and h/dx"},
+    {.name = "scenes",
+     .fn = vsph_report_scenes_write,
+     .plan = vsph_report_scenes_plan,
+     .what = "the three scenes, each formulation, against the references"},
+    {.name = "convergence",
+     .fn = vsph_report_convergence_write,
+     .plan = plan_ladders,
+     .what = "error against resolution, fitted order"},
+    {.name = "speed",
+     .fn = vsph_report_speed_write,
+     .plan = vsph_report_speed_plan,
+     .what = "wall time against error; the time step's error against CFL"},
+    {.name = "stability",
+     .fn = vsph_report_stability_write,
+     .plan = vsph_report_stability_plan,
+     .what = "hard cases: PVWF, high Re, perturbed start, low c0, CFL"},
+    {.name = "patch",
+     .fn = vsph_report_patch_write,
+     .cached = 1,
+     .grade = vsph_report_patch_claims,
+     .what = "Laplacian patch tests of VISC-01..04 beside Zheng et al. (2018)"},
+    {.name = "channel",
+     .fn = vsph_report_channel_write,
+     .plan = vsph_report_channel_plan,
+     .grade = vsph_report_channel_claims,
+     .what = "internal flows (Poiseuille, Couette) and the other formulations"},
+    {.name = "contact",
+     .fn = vsph_report_contact_write,
+     .plan = vsph_report_contact_plan,
+     .grade = vsph_report_contact_claims,
+     .what = "contact SPH: the numerical viscosity of its Riemann solver"},
+    {.name = "choices",
+     .fn = vsph_report_choices_write,
+     .plan = vsph_report_choices_plan,
+     .what = "the scheme's own choices isolated: the wave's start, steepness, "
+             "delta-SPH, c0, time step; the two-pass null mode"},
+    {.name = "claims",
+     .fn = claims_write,
+     .plan = claims_plan,
+     .grade = vsph_report_paper_claims,
+     .what = "the paper's claims beside our figures"},
 };
 #define NPARTS (sizeof PARTS / sizeof PARTS[0])
 _Static_assert(NPARTS <= 8 * sizeof(unsigned long), "part mask too narrow");
@@ -99,82 +137,65 @@ int vsph_report_part_find(const char *name) {
   return -1;
 }
 
-/* --------------------------------------------------------------- helpers */
+/* ---------------------------------------------------------------- claims */
 
-/* the parts build a claim's text in buffers larger than every field, so
- * a text too long for its field reaches the check below whole */
-_Static_assert(VSPH_REPORT_CLAIM_BUF >
-                       sizeof((struct vsph_report_claim *)0)->ours &&
-                   VSPH_REPORT_CLAIM_BUF >
-                       sizeof((struct vsph_report_claim *)0)->verdict &&
-                   VSPH_REPORT_CLAIM_BUF >
-                       sizeof((struct vsph_report_claim *)0)->setup,
-               "a part's claim buffer must exceed the table's fields");
-
-int vsph_report_claim(struct vsph_report *R, const char *claim,
-                      const char *paper, const char *ours, const char *setup,
-                      const char *verdict) {
-  /* every verdict says its class first, so the tally cannot misread one */
-  if (vsph_report_claims_class(verdict) < 0)
-    VSPH_FAIL(VSPH_EINVAL,
-              "claim '%.60s': its verdict '%.40s' does not start with "
-              "reproduced, reproduced on a substitute, partly, differs, not "
-              "reproduced or not tested",
-              claim, verdict);
-  if (!setup || !*setup)
-    VSPH_FAIL(VSPH_EINVAL, "claim '%.60s' says nothing of its set-up", claim);
-  /* a field cut short would change what the row says: a bug, not a row */
-  const struct vsph_report_claim *sz = NULL;
-  const char *const field[5] = {claim, paper, ours, verdict, setup};
-  const size_t room[5] = {sizeof sz->claim, sizeof sz->paper, sizeof sz->ours,
-                          sizeof sz->verdict, sizeof sz->setup};
-  for (int k = 0; k < 5; k++)
-    if (strlen(field[k]) >= room[k])
-      VSPH_FAIL(VSPH_EINVAL,
-                "claim '%.60s': a field of %zu characters, more than the "
-                "table's %zu",
-                claim, strlen(field[k]), room[k] - 1);
-  if (R->nclaims == R->cap_claims) {
-    const size_t cap = R->cap_claims ? 2 * R->cap_claims : 32;
-    struct vsph_report_claim *c = realloc(R->claims, cap * sizeof *c);
-    if (!c) VSPH_FAIL(VSPH_ENOMEM, "cannot grow the claims table");
-    R->claims = c;
-    R->cap_claims = cap;
-  }
-  struct vsph_report_claim *c = &R->claims[R->nclaims++];
-  snprintf(c->claim, sizeof c->claim, "%s", claim);
-  snprintf(c->paper, sizeof c->paper, "%s", paper);
-  snprintf(c->ours, sizeof c->ours, "%s", ours);
-  snprintf(c->verdict, sizeof c->verdict, "%s", verdict);
-  snprintf(c->setup, sizeof c->setup, "%s", setup);
-  snprintf(c->see, sizeof c->see, "%s", R->claim_see ? R->claim_see : "");
-  return VSPH_OK;
-}
-
-int vsph_report_say(struct vsph_report *R, const char *name) {
-  const int st = vsph_text_write(R->md, name, &R->tv);
-  vsph_text_clear(&R->tv);
+/* The claims part reads what every grading part reads. */
+static int claims_plan(struct vsph_report *R) {
+  int st = vsph_report_paper_plan(R);
+  for (size_t p = 0; p < NPARTS && !st; p++)
+    if (PARTS[p].grade && PARTS[p].plan && PARTS[p].plan != claims_plan)
+      st = PARTS[p].plan(R);
   return st;
 }
 
-int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
-                       const char *caption) {
-  const int st = vsph_plot_write(pl);
-  if (st) return st;
-  char alt[256];
-  vsph_plot_plain(alt, sizeof alt, pl->title);
-  fprintf(R->md, "![%s](%s.svg)\n\n*Figure: %s*\n\n", alt, pl->name, caption);
-  return VSPH_OK;
+/* The claims table: the core paper's claims first (their own part), then
+ * each part's in the report's order, tallied and tabled; then the FULL
+ * runs beside the quick ones where an archive is given. */
+static int claims_write(struct vsph_report *R) {
+  R->nclaims = 0;
+  int st = VSPH_OK;
+  const int self = vsph_report_part_find("claims");
+  if (PARTS[self].grade) st = PARTS[self].grade(R);
+  for (size_t p = 0; p < NPARTS && !st; p++)
+    if (PARTS[p].grade && (int)p != self) {
+      R->claim_see = PARTS[p].name;
+      st = PARTS[p].grade(R);
+    }
+  R->claim_see = NULL;
+  if (!st) {
+    vsph_text_set(&R->tv, "quick_note", "%s",
+                  R->runs.full ? "" : vsph_text_get("claims.quick_note"));
+    st = vsph_report_say(R, "claims.head");
+  }
+  if (!st) st = vsph_report_claims_table(R);
+  if (!st && R->beside) st = vsph_report_paper_beside(R);
+  return st;
 }
 
-int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
-                           const char *name) {
-  char caption[1024], title[256];
-  vsph_plot_plain(title, sizeof title, pl->title); /* {{title}}, as text */
-  vsph_text_set(&R->tv, "title", "%s", title);
-  const int st = vsph_text_format(caption, sizeof caption, name, &R->tv);
-  vsph_text_clear(&R->tv);
-  return st ? st : vsph_report_figure(R, pl, caption);
+int vsph_report_beside_prepare(struct vsph_report *R) {
+  vsph_report_beside_free(R);
+  int st = vsph_report_plan_jobs(R->dir, 1, &R->beside_jobs);
+  if (!st)
+    st = vsph_report_plan_judge(&R->beside_jobs, R->judge, &R->beside_jd);
+  if (!st) {
+    R->beside_stands = calloc(R->beside_jobs.n + 1, sizeof *R->beside_stands);
+    if (!R->beside_stands) {
+      st = VSPH_ENOMEM;
+      vsph_status_report(st, __FILE__, __LINE__, "cannot list the FULL plan");
+    }
+  }
+  if (!st)
+    st = vsph_archive_standing(R->beside, &R->beside_jd, R->beside_stands);
+  if (st) vsph_report_beside_free(R);
+  return st;
+}
+
+void vsph_report_beside_free(struct vsph_report *R) {
+  free(R->beside_stands);
+  R->beside_stands = NULL;
+  vsph_report_plan_judge_free(&R->beside_jd);
+  vsph_jobs_plan_free(&R->beside_jobs);
+  memset(&R->beside_jobs, 0, sizeof R->beside_jobs);
 }
 
 /* ---------------------------------------------------------------- driver */
@@ -699,9 +720,13 @@ static int write_parts(struct vsph_report *R, unsigned long want,
   char key[128];
   snprintf(key, sizeof key, "vsph %s %s, %s\n", VSPH_VERSION,
            vsph_source_hash_id, R->runs.full ? "full" : "quick");
+  const int claims = vsph_report_part_find("claims");
+  if (!st && R->beside && (want >> claims & 1))
+    st = vsph_report_beside_prepare(R);
   for (size_t p = 0; p < NPARTS && !st; p++)
     if (want >> p & 1)
       st = run_part(R, p, parts_dir, key, &cached[p], &wall[p]);
+  vsph_report_beside_free(R);
   /* the baseline comes with the scenes part (its coarsest runs) */
   const int scenes = vsph_report_part_find("scenes");
   if (!st && (want >> scenes & 1) && !R->runs.scenes) st = write_baseline(R);

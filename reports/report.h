@@ -116,4 +116,15 @@ int vsph_report_plan_judge(const struct vsph_jobs *jobs,
 /** @brief Free what vsph_report_plan_judge allocated. */
 void vsph_report_plan_judge_free(struct vsph_archive_judge *jd);
 
+struct vsph_report;
+/** @brief The FULL plan and each of its runs' standing in the archive
+ *  R->beside, into R (for the table after the claims, which reads them):
+ *  the driver's, before the parts are written. Free with
+ *  vsph_report_beside_free. @return VSPH_OK or the first failure
+ *  (reported). */
+int vsph_report_beside_prepare(struct vsph_report *R);
+
+/** @brief Free what vsph_report_beside_prepare made (none: nothing). */
+void vsph_report_beside_free(struct vsph_report *R);
+
 #endif /* VSPH_REPORTS_REPORT_H */

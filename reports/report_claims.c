@@ -1604,25 +1604,18 @@ static void scene_figure(char *buf, size_t len, int sc,
 int vsph_report_claims_beside(struct vsph_report *R,
                               const struct vsph_jobs_run run[][NFORM],
                               const double err[][NFORM]) {
-  /* the FULL plan, each run's verdict in the archive */
-  struct vsph_jobs jobs;
-  memset(&jobs, 0, sizeof jobs);
-  struct vsph_archive_judge jd = {0};
-  int st = vsph_report_plan_jobs(R->dir, 1, &jobs);
-  if (!st) st = vsph_report_plan_judge(&jobs, R->judge, &jd);
-  int *stands = st ? NULL : calloc(jobs.n + 1, sizeof *stands);
-  if (!st && !stands) {
-    st = VSPH_ENOMEM;
-    vsph_status_report(st, __FILE__, __LINE__, "cannot list the FULL plan");
-  }
-  if (!st) st = vsph_archive_standing(R->beside, &jd, stands);
-  const char *const *names = jd.plan_name;
-  const size_t n = jd.nplan;
+  /* the FULL plan, each run's standing in the archive (the driver's) */
+  if (!R->beside_stands)
+    VSPH_FAIL(VSPH_EINVAL, "the FULL plan beside the archive is not judged");
+  const char *const *names = R->beside_jd.plan_name;
+  const int *stands = R->beside_stands;
+  const size_t n = R->beside_jd.nplan;
+  int st = VSPH_OK;
   size_t held = 0, stand = 0, unjudged = 0, stale = 0, unreadable = 0;
   char *rows = NULL;
   size_t rlen = 0;
-  FILE *m = st ? NULL : open_memstream(&rows, &rlen);
-  if (!st && !m) st = VSPH_ENOMEM;
+  FILE *m = open_memstream(&rows, &rlen);
+  if (!m) st = VSPH_ENOMEM;
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     for (int f = 0; f < NFORM && !st; f++) {
       const struct vsph_report_ladderdef *Q =
@@ -1669,9 +1662,6 @@ int vsph_report_claims_beside(struct vsph_report *R,
               F->res[VSPH_REPORT_LADDER - 1], F->t_end, full, judged);
     }
   if (m && fclose(m) != 0 && !st) st = VSPH_ENOMEM;
-  free(stands);
-  vsph_report_plan_judge_free(&jd);
-  vsph_jobs_plan_free(&jobs);
   if (!st) {
     vsph_text_set(&R->tv, "archive", "%s", R->beside);
     vsph_text_set(&R->tv, "held", "%zu", held);
@@ -1691,10 +1681,7 @@ int vsph_report_claims_beside(struct vsph_report *R,
   return ferror(R->md) ? VSPH_EIO : VSPH_OK;
 }
 
-int vsph_report_claims_plan(struct vsph_report *R) {
-  /* every scene, whatever the filter, the wave's time-step study and
-   * rounding run (its stops' marginality), the Cartesian disc's (the
-   * same), and the runs of sections 10, 11 */
+int vsph_report_paper_plan(struct vsph_report *R) {
   int st = vsph_report_runs_plan_ladders(&R->runs, 1);
   if (!st) st = vsph_report_speed_plan_steps(R, 2);
   if (!st) st = vsph_report_choices_plan_rounding(R);
@@ -1704,13 +1691,15 @@ int vsph_report_claims_plan(struct vsph_report *R) {
     const struct vsph_jobs_spec ds = square_delta_spec(R);
     st = vsph_jobs_plan_run(&R->runs.jobs, &ds);
   }
-  if (!st) st = vsph_report_channel_plan(R);
-  if (!st) st = vsph_report_contact_plan(R);
   return st;
 }
 
-int vsph_report_claims_write(struct vsph_report *R) {
-  R->nclaims = 0;
+static void free_finest(struct finest *fi) {
+  for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++)
+    for (int f = 0; f < NFORM; f++) vsph_report_runs_free(&fi->run[sc][f]);
+}
+
+int vsph_report_paper_claims(struct vsph_report *R) {
   R->claim_see = "scaling";
   int st = scaling_claims(R);
   R->claim_see = "dissipation";
@@ -1728,90 +1717,19 @@ int vsph_report_claims_write(struct vsph_report *R) {
   if (!st) st = wave_claims(R, &fi);
   R->claim_see = "speed";
   if (!st) st = cost_claim(R, &fi);
-  R->claim_see = "patch";
-  if (!st) st = vsph_report_patch_claims(R);
-  R->claim_see = "channel";
-  if (!st) st = vsph_report_channel_claims(R);
-  R->claim_see = "contact";
-  if (!st) st = vsph_report_contact_claims(R);
   R->claim_see = NULL;
-  if (!st) {
-    vsph_text_set(&R->tv, "quick_note", "%s",
-                  R->runs.full ? "" : vsph_text_get("claims.quick_note"));
-    st = vsph_report_say(R, "claims.head");
-  }
-  if (!st) st = vsph_report_claims_table(R);
-  if (!st && R->beside) /* (C11 adds const to arrays of arrays by cast) */
-    st = vsph_report_claims_beside(R,
-                                   (const struct vsph_jobs_run(*)[NFORM])fi.run,
-                                   (const double(*)[NFORM])fi.err);
-  for (int sc = 0; sc < VSPH_REPORT_NSCENES; sc++)
-    for (int f = 0; f < NFORM; f++) vsph_report_runs_free(&fi.run[sc][f]);
+  free_finest(&fi);
   return st;
 }
 
-/* The verdict classes: the word each verdict is marked with, the symbol
- * beside it (for Markdown readers without the HTML's colours) and the CSS
- * class of report.html's style. */
-static const struct {
-  const char *word, *symbol, *css;
-} VERDICT[VSPH_REPORT_NVERDICTS] = {
-    [VSPH_REPORT_REPRODUCED] = {"reproduced", "\u2714", "v-rep"},
-    [VSPH_REPORT_SUBSTITUTE] = {"reproduced on a substitute", "\u2713",
-                                "v-sub"},
-    [VSPH_REPORT_PARTLY] = {"partly", "\u25d0", "v-part"},
-    [VSPH_REPORT_DIFFERS] = {"differs", "\u2718", "v-diff"},
-    [VSPH_REPORT_NOT_TESTED] = {"not tested", "\u2013", "v-none"}};
-
-int vsph_report_claims_class(const char *verdict) {
-  if (!strncmp(verdict, "not tested", 10)) return VSPH_REPORT_NOT_TESTED;
-  if (!strncmp(verdict, "partly", 6)) return VSPH_REPORT_PARTLY;
-  if (!strncmp(verdict, "reproduced on a substitute", 26))
-    return VSPH_REPORT_SUBSTITUTE;
-  if (!strncmp(verdict, "reproduced", 10)) return VSPH_REPORT_REPRODUCED;
-  if (!strncmp(verdict, "differs", 7) ||
-      !strncmp(verdict, "not reproduced", 14))
-    return VSPH_REPORT_DIFFERS;
-  return -1;
-}
-
-int vsph_report_claims_table(struct vsph_report *R) {
-  size_t tally[VSPH_REPORT_NVERDICTS] = {0};
-  for (size_t k = 0; k < R->nclaims; k++)
-    tally[vsph_report_claims_class(R->claims[k].verdict)]++;
-  fprintf(R->md, "**%zu claims:**", R->nclaims);
-  for (int v = 0; v < VSPH_REPORT_NVERDICTS; v++)
-    fprintf(R->md, "%s <span class=\"v %s\">%s %zu %s</span>", v ? "," : "",
-            VERDICT[v].css, VERDICT[v].symbol, tally[v], VERDICT[v].word);
-  fprintf(R->md, ".\n\n");
-  const int st = vsph_report_say(R, "claims.table_head");
-  if (st) return st;
-  for (size_t k = 0; k < R->nclaims; k++) {
-    const char *cell[5] = {R->claims[k].claim, R->claims[k].paper,
-                           R->claims[k].ours, R->claims[k].setup,
-                           R->claims[k].verdict};
-    for (int c = 0; c < 5; c++) { /* a '|' inside a cell is escaped */
-      fputs("| ", R->md);
-      const char *text = cell[c];
-      if (c == 4) { /* the verdict: its class marked, then the rest of its
-                     * words (the class's own word once, not twice) */
-        const int v = vsph_report_claims_class(text);
-        fprintf(R->md, "<span class=\"v %s\">%s %s</span> ", VERDICT[v].css,
-                VERDICT[v].symbol, VERDICT[v].word);
-        const size_t w = strlen(VERDICT[v].word);
-        if (!strncmp(text, VERDICT[v].word, w)) {
-          text += w;
-          text += strspn(text, ":, ");
-        }
-      }
-      for (const char *s = text; *s; s++) {
-        if (*s == '|') fputc('\\', R->md);
-        fputc(*s, R->md);
-      }
-      fputc(' ', R->md);
-    }
-    fprintf(R->md, "| [%s](#sec-%s) |\n", R->claims[k].see, R->claims[k].see);
-  }
-  fprintf(R->md, "\n");
-  return ferror(R->md) ? VSPH_EIO : VSPH_OK;
+int vsph_report_paper_beside(struct vsph_report *R) {
+  struct finest fi;
+  memset(&fi, 0, sizeof fi);
+  int st = load_finest(R, &fi);
+  if (!st) /* (C11 adds const to arrays of arrays by cast) */
+    st = vsph_report_claims_beside(R,
+                                   (const struct vsph_jobs_run(*)[NFORM])fi.run,
+                                   (const double(*)[NFORM])fi.err);
+  free_finest(&fi);
+  return st;
 }

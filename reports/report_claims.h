@@ -3,40 +3,31 @@
 #ifndef VSPH_REPORTS_REPORT_CLAIMS_H
 #define VSPH_REPORTS_REPORT_CLAIMS_H
 
-/* The claims table (report_claims.c): its verdict classes, the tally and
- * the table, and the FULL runs beside the quick ones. Within reports/ and
- * the tests only. */
+/* The core paper's claims (report_claims.c), graded first by the driver's
+ * claims part (report.c), and the FULL runs beside the quick ones. Within
+ * reports/ and the tests only. */
 
 #include "report_doc.h"
 
-/* The five verdict classes of the claims table, in the tally's order
- * (the rule: docs/theory.md section 12). */
-enum {
-  VSPH_REPORT_REPRODUCED = 0,
-  VSPH_REPORT_SUBSTITUTE, /* reproduced on a substitute set-up */
-  VSPH_REPORT_PARTLY,
-  VSPH_REPORT_DIFFERS,
-  VSPH_REPORT_NOT_TESTED,
-  VSPH_REPORT_NVERDICTS
-};
+/* The runs the core paper's claims read: every scene's ladder, whatever
+ * the filter, the wave's time-step study and rounding run, the Cartesian
+ * disc's, the finite-volume comparison's and the square with delta-SPH. */
+int vsph_report_paper_plan(struct vsph_report *R);
 
-/* A verdict's class, from its first words: "reproduced on a
- * substitute...", "reproduced...", "partly...", "differs..." or "not
- * reproduced...", "not tested..."; -1 for any other start
- * (vsph_report_claim refuses such a verdict). */
-int vsph_report_claims_class(const char *verdict);
+/* The core paper's claims into R's table (each sets the part that shows
+ * it). */
+int vsph_report_paper_claims(struct vsph_report *R);
 
-/* Beside the quick ladder's finest run of each scene and formulation
- * (@p run, with its E_k error @p err: the square's against its Richardson
- * reference), the FULL plan's run (the paper's resolution) from the run
- * archive R->beside where it holds it, with whether it stands (judged by
- * R->judge): a table after the claims. */
+/* The table of the paper's resolutions after the claims: beside the quick
+ * ladder's finest run of each scene and formulation, the FULL plan's run
+ * from the run archive R->beside where it holds it, judged as
+ * R->beside_plan says (vsph_report_beside_prepare). */
+int vsph_report_paper_beside(struct vsph_report *R);
+
+/* The same for given quick runs @p run with their E_k errors @p err (the
+ * square's against its Richardson reference). */
 int vsph_report_claims_beside(
     struct vsph_report *R,
     const struct vsph_jobs_run run[][VSPH_VISCOUS_PAPER_COUNT],
     const double err[][VSPH_VISCOUS_PAPER_COUNT]);
-
-/* The tally of R->claims by class, then the claims table (each verdict
- * marked with its class's word, symbol and colour class), into R->md. */
-int vsph_report_claims_table(struct vsph_report *R);
 #endif /* VSPH_REPORTS_REPORT_CLAIMS_H */

@@ -751,131 +751,61 @@ int vsph_report_contact_write(struct vsph_report *R) {
 /* The shear test: the numerical viscosity, its independence of speed, material
  * and resolution, the fit (37) and self-similarity (Parshikov §3). */
 static int shear_claims(struct vsph_report *R, const struct cres *cr,
-                        const struct cnum *nb) {
-  int st = VSPH_OK;
-  char ours[VSPH_REPORT_CLAIM_BUF];
+                        const struct cnum *nb, struct vsph_claim_vals *v) {
   const double w = coef(&cr->r[C_W]), b = coef(&cr->r[C_B]);
-  const double ew = w / nb->paper_w - 1.0, eb = b / nb->paper_b - 1.0;
-  snprintf(ours, sizeof ours,
-           "+-500 m/s, control surface: Wendland %.4f (%+.1f %%), B-spline "
-           "%.4f (%+.1f %%); static lattice %.4f / %.4f (the lattice sums "
-           "%.4f / %.4f)",
-           w, 100 * ew, b, 100 * eb, coef(&cr->r[C_WS]), coef(&cr->r[C_BS]),
-           nb->klat_w, nb->klat_b);
-  st = vsph_report_claim(
-      R,
-      "The acoustic Riemann solver's numerical viscosity is eta_num = "
-      "0.0894 Z D0 (Wendland C2) and 0.1078 Z D0 (B-spline) at alpha = 0.5 "
-      "(Parshikov Table 1)",
-      "0.0894 +- 0.002, 0.1078 +- 0.001", ours,
-      "the paper's shear test (its box, lead, alpha 0.5, D0 10 nm, +-500 "
-      "m/s); a 3-D lattice periodic in y and z [reconstructed depth]; time "
-      "integration [reconstructed: the paper gives none]; eta_num from the "
-      "control-surface fit at the last profile time",
-      fabs(eb) < 0.03 && fabs(ew) < 0.03   ? "reproduced (within 3 %)"
-      : fabs(eb) < 0.08 && fabs(ew) < 0.08 ? "partly: within 8 %; the static "
-                                             "lattice gives the lattice sum "
-                                             "exactly, and sliding layers add "
-                                             "to it (section 11)"
-                                           : "differs");
-  const double r50 = coef(&cr->r[C_W50]) / w - 1.0;
+  vsph_claim_clear(v);
+  vsph_claim_num(v, "w", w);
+  vsph_claim_num(v, "b", b);
+  vsph_claim_num(v, "ew", w / nb->paper_w - 1.0);
+  vsph_claim_num(v, "eb", b / nb->paper_b - 1.0);
+  vsph_claim_num(v, "ws", coef(&cr->r[C_WS]));
+  vsph_claim_num(v, "bs", coef(&cr->r[C_BS]));
+  vsph_claim_num(v, "klw", nb->klat_w);
+  vsph_claim_num(v, "klb", nb->klat_b);
+  int st = vsph_report_grade(R, "claims/contact.eta_num", v);
   double spread = 0;
   static const int MAT[3] = {C_WATER, C_AL, C_TU};
   for (int k = 0; k < 3; k++)
     spread = fmax(spread, fabs(coef(&cr->r[MAT[k]]) / w - 1.0));
-  const double rd = coef(&cr->r[C_W20]) / w - 1.0;
-  snprintf(ours, sizeof ours,
-           "eta_num/(Z D0): +-50 against +-500 m/s %+.1f %%; water, "
-           "aluminium, tungsten within %.1f %% of lead; D0 = 20 against 10 nm "
-           "%+.1f %%",
-           100 * r50, 100 * spread, 100 * rd);
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "eta_num is linear in Z and D0 and almost independent of the shear "
-        "velocity (50-500 m/s) (Parshikov Figs. 3-4)",
-        "linear in Z and D0; \"almost independent\" of U0", ours,
-        "as the row above, with the paper's materials and speeds",
-        fabs(r50) < 0.03 && spread < 0.05 && fabs(rd) < 0.05
-            ? "reproduced"
-            : "partly: see section 11");
+  vsph_claim_clear(v);
+  vsph_claim_num(v, "r50", coef(&cr->r[C_W50]) / w - 1.0);
+  vsph_claim_num(v, "spread", spread);
+  vsph_claim_num(v, "rd", coef(&cr->r[C_W20]) / w - 1.0);
+  if (!st) st = vsph_report_grade(R, "claims/contact.eta_linear", v);
+  /* measured over (37) from the smallest alpha to the largest, its
+   * largest departure, and whether it grows at every step */
   static const int A[5] = {C_W, C_A055, C_A06, C_A075, C_A1};
-  double dev = 0;
-  for (int k = 0; k < 5; k++)
-    dev = fmax(dev, fabs(coef(&cr->r[A[k]]) /
-                             vsph_materials_eta_num_fit(CS[A[k]].alpha) -
-                         1.0));
-  /* measured over (37) from the smallest alpha to the largest, and
-   * whether it grows at every step */
-  double q[5];
+  double q[5], dev = 0;
   int grows = 1;
+  vsph_claim_clear(v);
   for (int k = 0; k < 5; k++) {
     q[k] = coef(&cr->r[A[k]]) / vsph_materials_eta_num_fit(CS[A[k]].alpha);
+    dev = fmax(dev, fabs(q[k] - 1.0));
     if (k) grows &= q[k] > q[k - 1];
+    char key[4];
+    snprintf(key, sizeof key, "q%d", k);
+    vsph_claim_num(v, key, q[k]);
   }
-  snprintf(ours, sizeof ours,
-           "alpha = 0.5-1.0: measured over (37) %.3f, %.3f, %.3f, %.3f, %.3f "
-           "(largest departure %.0f %%)",
-           q[0], q[1], q[2], q[3], q[4], 100 * dev);
-  char va[220];
-  if (dev < 0.05) /* the fit's own scatter in Fig. 4 is a few per cent */
-    snprintf(va, sizeof va, "reproduced (within 5 %%)");
-  else if (dev < 0.15)
-    snprintf(va, sizeof va,
-             "partly: within %.0f %% at every alpha, but the ratio %s from "
-             "%.2f to %.2f: the measured slope is steeper than (37)'s (the "
-             "lattice sums grow alike, section 11)",
-             100 * dev, grows ? "grows steadily" : "drifts", q[0], q[4]);
-  else
-    snprintf(va, sizeof va, "differs");
-  if (!st)
-    st = vsph_report_claim(R,
-                           "eta_num(alpha) follows the two-piece fit of eq. "
-                           "(37) (Parshikov Fig. 4)",
-                           "two linear pieces meeting at alpha = 0.55", ours,
-                           "as the first row, at alpha 0.5-1.0", va);
-  snprintf(ours, sizeof ours,
-           "the fitted nu varies by %.1f %% over t = 1.5-4.5 ns (zeta = 0) and "
-           "%.1f %% over 2.3-14 ns (zeta = 1)",
-           nb->ss_spread[0], nb->ss_spread[1]);
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "The profiles are self-similar in x sqrt(t0/t), with and without the "
-        "correction (Parshikov Figs. 3a, 6b)",
-        "profiles coincide", ours,
-        "as the first row; zeta = 1 with eta_num of (37)",
-        nb->ss_spread[0] < 5 && nb->ss_spread[1] < 10 ? "reproduced"
-                                                      : "partly");
+  vsph_claim_num(v, "dev", dev);
+  vsph_claim_str(v, "grows", "%s", grows ? "grows steadily" : "drifts");
+  if (!st) st = vsph_report_grade(R, "claims/contact.eta_fit", v);
+  vsph_claim_clear(v);
+  vsph_claim_num(v, "ss0", nb->ss_spread[0]);
+  vsph_claim_num(v, "ss1", nb->ss_spread[1]);
+  if (!st) st = vsph_report_grade(R, "claims/contact.self_similar", v);
   return st;
 }
 
 /* The correcting tensor and two materials (Parshikov §4). */
-static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
-  int st = VSPH_OK;
-  char ours[VSPH_REPORT_CLAIM_BUF];
+static int zeta_claims(struct vsph_report *R, const struct cnum *nb,
+                       struct vsph_claim_vals *v) {
   const double e1 = nb->eta_eff[2];
-  snprintf(ours, sizeof ours,
-           "zeta = 1: eta_eff = %.2f mPa s against the physical 2.3; zeta = "
-           "0: %.1f, 0.5: %.1f",
-           e1, nb->eta_eff[0], nb->eta_eff[1]);
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "With zeta = 1 the lead shear layer follows erf with the physical "
-        "eta = 2.3 mPa s (Parshikov Fig. 6a)",
-        "coincides with theory at zeta = 1", ours,
-        "the paper's lead shear flow; the correction's placement in the "
-        "momentum equation only [reconstructed: eqs. 33 and 36 as printed "
-        "lose the divergence and the viscous work]",
-        fabs(e1 / 2.3 - 1.0) < 0.25
-            ? "reproduced (within 25 %)"
-            : "partly: the correction removes eq. (37)'s eta_num, while the "
-              "sheared lattice's is larger (section 11)");
-  snprintf(ours, sizeof ours,
-           "U*/U0 fitted %.3f and %.3f at 2 and 4 us (eq. 27: %.3f); RMS "
-           "misfit of the exact profile %.3f U0",
-           nb->ustar[0][0], nb->ustar[0][1], nb->ustar_exact[0], nb->rms[0][0]);
+  vsph_claim_clear(v);
+  vsph_claim_num(v, "e1", e1);
+  vsph_claim_num(v, "e0", nb->eta_eff[0]);
+  vsph_claim_num(v, "e05", nb->eta_eff[1]);
+  vsph_claim_num(v, "rel", e1 / 2.3 - 1.0);
+  int st = vsph_report_grade(R, "claims/contact.zeta_one", v);
   /* U* = (e_R - e_L)/(e_R + e_L) with e = sqrt(rho eta) on each side
    * (U0 = 1, the sides at -1 and +1): the ratio a = e_R/e_L = (1 + U*)/
    * (1 - U*), so a fitted U* gives the viscosity ratio the particles
@@ -884,146 +814,60 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb) {
   const double u0 = nb->ustar[0][0], ue = nb->ustar_exact[0];
   const double vr =
       pow(((1 + u0) / (1 - u0)) / ((1 + ue) / (1 - ue)), 2.0) - 1.0;
-  char verdict[VSPH_REPORT_CLAIM_BUF];
-  snprintf(verdict, sizeof verdict,
-           "partly: the interface's velocity is %+.1f %% and %+.1f %% off "
-           "eq. (27)'s at 2 and 4 us; U* goes with the square root of "
-           "the viscosity ratio, so the particles carry paraffin's over "
-           "glycerol's %+.0f %% off eq. (27)'s, of the order of the numerical "
-           "viscosity the lead rows measure (U0 and paraffin's viscosity "
-           "reconstructed)",
-           100 * (u0 / ue - 1), 100 * (nb->ustar[0][1] / ue - 1),
-           100 * (1 / (1 + vr) - 1));
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "Two fluids (paraffin | glycerol): with zeta = 1 the interface "
-        "moves at the effusivity-weighted velocity of eq. (27) (Parshikov Fig. "
-        "7)",
-        "U* = 0.669 U0 (eta_paraffin = 80 mPa s)", ours,
-        "U0 = 10 m/s [reconstructed: not given; the problem is linear in "
-        "it]; paraffin's eta = 80 mPa s [reconstructed: the handbook gives "
-        "25-80]; U* fitted to the profiles",
-        /* eq. (27) is exact and the paper's Fig. 7 states no precision:
-         * a fitted U* off it is "partly", with the viscosity ratio it
-         * implies; beyond a tenth of U0 (a documented choice: twice the
-         * profile's RMS misfit, 0.03-0.04 U0) it "differs" */
-        !isfinite(u0)         ? "not tested: no interface velocity fitted (the "
-                                "run's profiles.csv)"
-        : fabs(u0 - ue) < 0.1 ? verdict
-                              : "differs");
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "A water cylinder spreading on a rigid surface under gravity spreads "
-        "faster with zeta = 1 than with zeta = 0 (Parshikov §5.6, Fig. 12)",
-        "the less viscous (zeta = 1) drop spreads faster; no geometry, "
-        "times or g given",
-        "-",
-        "vsph's contact SPH has no free-surface scene with gravity on a "
-        "rigid wall",
-        "not tested: needs a contact-SPH drop scene (gravity, a wall of "
-        "fixed particles, no surface tension) at two zeta; the paper gives "
-        "no size, time or gravity, so only the ranking could be tested");
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "Contact SPH conserves momentum exactly (pairwise antisymmetric "
-        "Riemann solution and stress)",
-        "exact",
-        "make check: |sum m a| <= 1e-12 sum m |a| on a disordered "
-        "two-material set with the correction",
-        "none (a property of the scheme, checked on a set of the test's)",
-        "reproduced (test)");
+  vsph_claim_clear(v);
+  vsph_claim_num(v, "u0", u0);
+  vsph_claim_num(v, "u1", nb->ustar[0][1]);
+  vsph_claim_num(v, "ue", ue);
+  vsph_claim_num(v, "rms", nb->rms[0][0]);
+  vsph_claim_num(v, "du0", 100 * (u0 / ue - 1));
+  vsph_claim_num(v, "du1", 100 * (nb->ustar[0][1] / ue - 1));
+  vsph_claim_num(v, "dvr", 100 * (1 / (1 + vr) - 1));
+  if (!st) st = vsph_report_grade(R, "claims/contact.two_fluids", v);
+  vsph_claim_clear(v);
+  if (!st) st = vsph_report_grade(R, "claims/contact.drop", v);
+  if (!st) st = vsph_report_grade(R, "claims/contact.momentum", v);
   return st;
 }
 
 /* The cylinder arrays' drag (Parshikov §5). */
-static int cyl_claims(struct vsph_report *R) {
-  int st = VSPH_OK;
-  char ours[VSPH_REPORT_CLAIM_BUF];
+static int cyl_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
   struct cyl cy;
   memset(&cy, 0, sizeof cy);
-  st = cyl_load(R, &cy);
+  int st = cyl_load(R, &cy);
+  if (st) return st;
   /* the FULL plan adds glycerol uncorrected at 40 per diameter and the
    * paper's third case, d/S = 0.3 (20 per diameter) */
   const int full = R->runs.full;
-  const double fine = full ? cy.ratio[CY_Z0_80] : cy.ratio[CY_Z0_60];
-  char vd[VSPH_REPORT_CLAIM_BUF];
-  if (cy.ratio[CY_Z1_40] < 1.35 && cy.ratio[CY_P1_40] < 1.35 &&
-      cy.ratio[CY_Z0_40] > 2.0)
-    snprintf(vd, sizeof vd,
-             "partly: the correction removes most of the excess (corrected "
-             "%.2f and %.2f against the paper's 1.33 and 1.13), but "
-             "uncorrected ours is %.2f times theory at %d per diameter "
-             "against its 3.40: ours is 2-D and coarser, and the excess is "
-             "linear in D0",
-             cy.ratio[CY_Z1_40], cy.ratio[CY_P1_40], fine, full ? 40 : 30);
-  else
-    snprintf(vd, sizeof vd, "differs");
-  char g40[48] = "", g03[96] = "";
+  vsph_claim_clear(v);
+  vsph_claim_num(v, "z0", cy.ratio[CY_Z0_40]);
+  vsph_claim_num(v, "z0_30", cy.ratio[CY_Z0_60]);
+  vsph_claim_num(v, "z1", cy.ratio[CY_Z1_40]);
+  vsph_claim_num(v, "p0", cy.ratio[CY_P0_40]);
+  vsph_claim_num(v, "p1", cy.ratio[CY_P1_40]);
+  vsph_claim_num(v, "fine", full ? cy.ratio[CY_Z0_80] : cy.ratio[CY_Z0_60]);
+  vsph_claim_str(v, "fine_res", "%d", full ? 40 : 30);
+  vsph_claim_str(v, "g40", "%s", "");
+  vsph_claim_str(v, "g03", "%s", "");
   if (full) {
-    snprintf(g40, sizeof g40, ", %.2f (40)", cy.ratio[CY_Z0_80]);
-    snprintf(g03, sizeof g03,
-             "; d/S = 0.3 uncorrected %.2f (20 per diameter; the paper's "
-             "3.24)",
-             cy.ratio[CY_G03_67]);
+    vsph_claim_str(v, "g40", ", %.2f (40)", cy.ratio[CY_Z0_80]);
+    vsph_claim_str(v, "g03",
+                   "; d/S = 0.3 uncorrected %.2f (20 per diameter; the "
+                   "paper's 3.24)",
+                   cy.ratio[CY_G03_67]);
   }
-  snprintf(ours, sizeof ours,
-           "2-D, d/S = 0.5, times eq. (39): glycerol uncorrected %.2f (20 per "
-           "diameter), %.2f (30)%s, corrected %.2f; paraffin %.2f and %.2f%s",
-           cy.ratio[CY_Z0_40], cy.ratio[CY_Z0_60], g40, cy.ratio[CY_Z1_40],
-           cy.ratio[CY_P0_40], cy.ratio[CY_P1_40], g03);
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "Drag on a periodic row of cylinders at Re = 0.005: uncorrected "
-        "2.5-3.4 times theory, corrected within +13 % to +33 % (Parshikov "
-        "Table "
-        "2)",
-        "glycerol 3.40 and 1.33, paraffin 2.50 and 1.13 (d/S = 0.5)", ours,
-        full ? "a 2-D periodic array [reconstructed: the paper's dimension "
-               "is not stated] at 20, 30 and 40 particles per diameter "
-               "(coarser than the paper's, about 60 by its ratios); eta_num "
-               "of the correction the 2-D static lattice's"
-             : "a 2-D periodic array [reconstructed: the paper's dimension "
-               "is not stated] at 20 and 30 particles per diameter (coarser "
-               "than the paper's); eta_num of the correction the 2-D static "
-               "lattice's",
-        vd);
+  vsph_claim_str(v, "resolutions", "%s", full ? "20, 30 and 40" : "20 and 30");
+  vsph_claim_str(v, "paper_res", "%s", full ? ", about 60 by its ratios" : "");
+  st = vsph_report_grade(R, "claims/contact.drag", v);
   /* the 2-D analogue: 1/U against zeta at 20 per diameter, linear? */
   const double i0 = 1.0 / cy.U[CY_Z0_40], i5 = 1.0 / cy.U[CY_Z05_40],
                i1 = 1.0 / cy.U[CY_Z1_40];
-  const double lin = (i5 - 0.5 * (i0 + i1)) / (i0 - i1);
-  snprintf(ours, sizeof ours,
-           "2-D analogue (a cylinder settling through a periodic array is, "
-           "in its frame, the held cylinder above): 1/U at zeta = 0, 0.5, 1 "
-           "in the ratio %.2f : %.2f : 1, the middle off the straight line "
-           "by %.1f %% of the range; zeta = 1 stable",
-           i0 / i1, i5 / i1, 100 * lin);
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "Falling-ball viscometer: 1/u linear in zeta, toward Stokes' law; "
-        "zeta = 1 unstable (Parshikov Figs. 8-9)",
-        "Fig. 8b (3-D ball, 48 M particles)", ours,
-        "a held 2-D cylinder in a periodic array (the paper: a 3-D ball "
-        "falling through the fluid); none of the paper's quantities is "
-        "measured",
-        fabs(lin) < 0.1
-            ? "not tested: the 3-D ball (48 M particles) is not run; the 2-D "
-              "analogue (1/U nearly linear in zeta, zeta = 1 stable) is "
-              "context only"
-            : "not tested: the 3-D ball is not run (the 2-D analogue is not "
-              "linear in zeta)");
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "The falling ball and the shear test give consistent numerical "
-        "viscosities at three resolutions (Parshikov §5.4, Fig. 9)",
-        "consistent", "-", "the 3-D ball is not run",
-        "not tested: the 3-D ball at three resolutions (48 M particles at "
-        "the finest)");
+  vsph_claim_clear(v);
+  vsph_claim_num(v, "i0", i0 / i1);
+  vsph_claim_num(v, "i5", i5 / i1);
+  vsph_claim_num(v, "lin", (i5 - 0.5 * (i0 + i1)) / (i0 - i1));
+  if (!st) st = vsph_report_grade(R, "claims/contact.falling_ball", v);
+  vsph_claim_clear(v);
+  if (!st) st = vsph_report_grade(R, "claims/contact.ball_consistent", v);
   return st;
 }
 
@@ -1032,8 +876,11 @@ int vsph_report_contact_claims(struct vsph_report *R) {
   struct cnum nb;
   int st = contact_load(R, &cr, &nb);
   if (st) return st;
-  if (!st) st = shear_claims(R, &cr, &nb);
-  if (!st) st = zeta_claims(R, &nb);
-  if (!st) st = cyl_claims(R);
+  struct vsph_claim_vals *v = malloc(sizeof *v);
+  if (!v) VSPH_FAIL(VSPH_ENOMEM, "cannot grade the contact claims");
+  if (!st) st = shear_claims(R, &cr, &nb, v);
+  if (!st) st = zeta_claims(R, &nb, v);
+  if (!st) st = cyl_claims(R, v);
+  free(v);
   return st;
 }

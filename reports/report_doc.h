@@ -13,6 +13,7 @@
 
 #include "../runs/archive.h"
 #include "../runs/folder.h"
+#include "claim.h"
 #include "fvref.h"
 #include "report_runs.h"
 #include "text.h"
@@ -46,7 +47,40 @@ struct vsph_report {
                                    NULL; fv->sq.ok, fv->cav[w].ok: read) */
   struct vsph_folder folder;    /* the claim on dir while it is written */
   struct vsph_report_runs runs; /* what reads the runs */
+  /* the FULL plan (its runs' names in beside_jd) and each run's standing
+   * in the archive R->beside, for the table after the claims: made by the
+   * driver (vsph_report_beside_prepare) before the parts are written */
+  struct vsph_jobs beside_jobs;
+  struct vsph_archive_judge beside_jd;
+  int *beside_stands;
 };
+
+/* The size of a buffer a part builds a claim's text in: larger than any
+ * field of the claims table, so a text too long for its field is refused
+ * loudly by vsph_report_claim instead of being cut short there without a
+ * word. */
+#define VSPH_REPORT_CLAIM_BUF 2048
+
+/* The five verdict classes of the claims table, in the tally's order
+ * (the engine's, claim.h; the rule: docs/theory.md section 13). */
+enum {
+  VSPH_REPORT_REPRODUCED = VSPH_CLAIM_REPRODUCED,
+  VSPH_REPORT_SUBSTITUTE = VSPH_CLAIM_SUBSTITUTE,
+  VSPH_REPORT_PARTLY = VSPH_CLAIM_PARTLY,
+  VSPH_REPORT_DIFFERS = VSPH_CLAIM_DIFFERS,
+  VSPH_REPORT_NOT_TESTED = VSPH_CLAIM_NOT_TESTED,
+  VSPH_REPORT_NVERDICTS = VSPH_CLAIM_NCLASSES
+};
+
+/* A verdict's class, from its first words: "reproduced on a
+ * substitute...", "reproduced...", "partly...", "differs..." or "not
+ * reproduced...", "not tested..."; -1 for any other start
+ * (vsph_report_claim refuses such a verdict). */
+int vsph_report_claims_class(const char *verdict);
+
+/* The tally of R->claims by class, then the claims table (each verdict
+ * marked with its class's word, symbol and colour class), into R->md. */
+int vsph_report_claims_table(struct vsph_report *R);
 
 /* Add a row to the claims table (copied): the claim, the paper's figure,
  * ours, the set-up differences (never empty: "none" where nothing
@@ -54,6 +88,11 @@ struct vsph_report {
 int vsph_report_claim(struct vsph_report *R, const char *claim,
                       const char *paper, const char *ours, const char *setup,
                       const char *verdict);
+
+/* Grade claim block "claims/PART.NAME" (@p name, claim.h) on the measures
+ * and words @p v into a row of the claims table. */
+int vsph_report_grade(struct vsph_report *R, const char *name,
+                      const struct vsph_claim_vals *v);
 
 /* Write prose block NAME with the values in R->tv, then clear them. */
 int vsph_report_say(struct vsph_report *R, const char *name);

@@ -15,7 +15,6 @@ int vsph_report_scenes_plan(struct vsph_report *R);
 int vsph_report_stability_plan(struct vsph_report *R);
 int vsph_report_channel_plan(struct vsph_report *R);
 int vsph_report_contact_plan(struct vsph_report *R);
-int vsph_report_claims_plan(struct vsph_report *R);
 
 int vsph_report_tensors_write(struct vsph_report *R);
 int vsph_report_profiles_write(struct vsph_report *R);
@@ -61,12 +60,6 @@ int vsph_report_choices_null(size_t n, int form, double *ratio);
  * gains kinetic energy, as a tank that stirs itself at rest. */
 double vsph_report_choices_peak(const double *t, const double *Ek, size_t n,
                                 double *tpeak);
-/* The size of a buffer a part builds a claim's text in: larger than any
- * field of the claims table (report_doc.h), so a text too long for its
- * field is refused loudly by vsph_report_claim instead of being cut short
- * here without a word. */
-#define VSPH_REPORT_CLAIM_BUF 2048
-int vsph_report_claims_write(struct vsph_report *R);
 
 int vsph_report_patch_write(struct vsph_report *R);
 

@@ -7,6 +7,7 @@
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "../analysis/laplacian.h"
 #include "../analysis/scaling.h"
@@ -193,25 +194,19 @@ int vsph_report_patch_claims(struct vsph_report *R) {
   struct table t;
   int st = measure(&t);
   if (st) return st;
-  char ours[VSPH_REPORT_CLAIM_BUF];
-  const double eq = fabs(t.err[0][4][2] - t.err[0][4][3]) / t.err[0][4][2];
-  snprintf(ours, sizeof ours,
-           "uniform, 100 x 100: VISC-03 %.3g, VISC-04 %.3g (relative "
-           "difference %.1e)",
-           t.err[0][4][2], t.err[0][4][3], eq);
-  st = vsph_report_claim(
-      R, "VISC-03 and VISC-04 coincide on uniform particles (Zheng Sec. 4)",
-      "identical errors (Table 1)", ours,
-      "cubic spline, h = dx [reconstructed: h/dx not stated]; cell-centred "
-      "lattice padded with ghosts carrying f [reconstructed]",
-      eq < 1e-6 ? "reproduced (identical to rounding)" : "differs");
+  struct vsph_claim_vals *v = malloc(sizeof *v);
+  if (!v) VSPH_FAIL(VSPH_ENOMEM, "cannot grade the patch claims");
+  /* uniform, 100 x 100: VISC-03 against VISC-04 */
+  vsph_claim_clear(v);
+  vsph_claim_num(v, "e03", t.err[0][4][2]);
+  vsph_claim_num(v, "e04", t.err[0][4][3]);
+  vsph_claim_num(v, "reldiff",
+                 fabs(t.err[0][4][2] - t.err[0][4][3]) / t.err[0][4][2]);
+  st = vsph_report_grade(R, "claims/patch.coincide", v);
   /* the slopes on the paper's sampling (the Fig. 2 line), and how far
    * each sampling's values are from Table 1: the largest factor either
-   * way over the forms and resolutions */
-  const double s1 = slope_n(&t.line[0][0][0], 0),
-               s3 = slope_n(&t.line[0][0][0], 2);
-  /* far[s][g]: sampling s (0 the line, 1 the whole set), forms g (0
-   * VISC-01/02, 1 VISC-03/04) */
+   * way over the forms and resolutions; far[s][g]: sampling s (0 the
+   * line, 1 the whole set), forms g (0 VISC-01/02, 1 VISC-03/04) */
   double far[2][2] = {{1.0, 1.0}, {1.0, 1.0}};
   for (int k = 0; k < NRES; k++)
     for (int f = 0; f < NLAP; f++) {
@@ -220,98 +215,52 @@ int vsph_report_patch_claims(struct vsph_report *R) {
       far[0][f / 2] = fmax(far[0][f / 2], fmax(a, 1.0 / a));
       far[1][f / 2] = fmax(far[1][f / 2], fmax(b, 1.0 / b));
     }
-  snprintf(ours, sizeof ours,
-           "uniform, n = 20-100, on the Fig. 2 line: slope of Err against N "
-           "VISC-01 %.2f, VISC-02 %.2f, VISC-03 %.2f; largest factor from "
-           "Table 1, VISC-01/02 and 03/04: on the line %.2f and %.2f, over "
-           "the whole set %.2f and %.2f",
-           s1, slope_n(&t.line[0][0][0], 1), s3, far[0][0], far[0][1],
-           far[1][0], far[1][1]);
-  /* independent reproductions of the table agree to about 10 % (the
-   * seeds' digest); a sampling reproduces it when every value is within */
-  const int line_ok = fmax(far[0][0], far[0][1]) <= 1.1,
-            all_ok = fmax(far[1][0], far[1][1]) <= 1.1;
-  char vu[320];
-  if (!(fabs(s1 + 1.1) < 0.2 && s3 < -1.7))
-    snprintf(vu, sizeof vu, "differs");
-  else if (line_ok || all_ok)
-    snprintf(vu, sizeof vu,
-             "reproduced on a substitute: the slopes, and Table 1's values "
-             "within 10 %% %s",
-             line_ok ? "on the Fig. 2 line" : "over the whole set");
-  else {
-    /* for each pair of forms, the sampling nearer the table */
-    const int n0 = far[1][0] < far[0][0], n1 = far[1][1] < far[0][1];
-    snprintf(vu, sizeof vu,
-             "partly: the slopes agree, but no one sampling reproduces Table "
-             "1 within 10 %%: VISC-01/02 come within %.2f %s, VISC-03/04 "
-             "within %.2f %s",
-             far[n0][0], n0 ? "over the whole set" : "on the Fig. 2 line",
-             far[n1][1], n1 ? "over the whole set" : "on the Fig. 2 line");
+  vsph_claim_clear(v);
+  for (int f = 0; f < 3; f++) {
+    char key[8];
+    snprintf(key, sizeof key, "s0%d", f + 1);
+    vsph_claim_num(v, key, slope_n(&t.line[0][0][0], f));
   }
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "Uniform particles: VISC-01/02 converge at about first order, "
-        "VISC-03/04 at second order (Zheng Sec. 4)",
-        "k = 1.11 (VISC-01), 2.10 (VISC-03) from Table 1", ours,
-        "as above; the Fig. 2 line is the two lattice columns dx/2 either "
-        "side of x = 0.5 [reconstructed]; eq. (21) times dx^2 (the scale "
-        "the tables agree with)",
-        vu);
-  int best = 0;
-  for (int f = 1; f < NLAP; f++)
-    if (t.err[1][4][f] < t.err[1][4][best]) best = f;
-  const double g1 = t.err[1][4][0] / t.err[1][4][3];
-  snprintf(ours, sizeof ours,
-           "perturbed +-%g dx, 100 x 100: VISC-01 %.3g, VISC-02 %.3g, "
-           "VISC-03 %.3g, VISC-04 %.3g",
-           PERTURB, t.err[1][4][0], t.err[1][4][1], t.err[1][4][2],
-           t.err[1][4][3]);
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "Non-uniform particles: VISC-03 is the most accurate, VISC-04 "
-        "degrades to VISC-01, VISC-02 in between (Zheng Sec. 4)",
-        "Table 2", ours,
-        "each coordinate shifted by U(-0.2, 0.2) dx [reconstructed: the "
-        "printed 0.5 dx gives 2-8 times Table 2]; whole-set metric; as above "
-        "otherwise",
-        best == 2 && fabs(g1 - 1) < 0.1 && t.err[1][4][1] < t.err[1][4][0]
-            ? "reproduced on a substitute (the ranking)"
-            : "differs");
+  vsph_claim_num(v, "line01", far[0][0]);
+  vsph_claim_num(v, "line03", far[0][1]);
+  vsph_claim_num(v, "all01", far[1][0]);
+  vsph_claim_num(v, "all03", far[1][1]);
+  vsph_claim_num(v, "line_worst", fmax(far[0][0], far[0][1]));
+  vsph_claim_num(v, "all_worst", fmax(far[1][0], far[1][1]));
+  /* for each pair of forms, the sampling nearer the table */
+  for (int g = 0; g < 2; g++) {
+    const int n = far[1][g] < far[0][g];
+    vsph_claim_num(v, g ? "near03" : "near01", far[n][g]);
+    vsph_claim_str(v, g ? "near03_on" : "near01_on", "%s",
+                   n ? "over the whole set" : "on the Fig. 2 line");
+  }
+  if (!st) st = vsph_report_grade(R, "claims/patch.uniform_orders", v);
+  /* perturbed, 100 x 100: the ranking */
+  vsph_claim_clear(v);
+  vsph_claim_num(v, "perturb", PERTURB);
+  for (int f = 0; f < NLAP; f++) {
+    char key[8];
+    snprintf(key, sizeof key, "e0%d", f + 1);
+    vsph_claim_num(v, key, t.err[1][4][f]);
+  }
+  vsph_claim_num(v, "ratio_01_04", t.err[1][4][0] / t.err[1][4][3]);
+  if (!st) st = vsph_report_grade(R, "claims/patch.disorder_ranking", v);
   /* the orders under disorder (Table 2, Fig. 5): the slope of Err against
-   * N is -p/2 for an error ~ dx^p; ours and the paper's each rounded to
-   * the nearest integer p (grade.h's rule for orders) */
-  int agree = 0;
-  char *o = ours;
-  size_t left = sizeof ours;
-  int m = snprintf(o, left,
-                   "perturbed +-%g dx, n = 20-100, order in dx "
-                   "(-2 x slope against N), ours (paper's):",
-                   PERTURB);
-  for (int f = 0; f < NLAP && m > 0 && (size_t)m < left; f++) {
-    const double p = -2.0 * slope_n(&t.err[1][0][0], f),
-                 pp = -2.0 * slope_n(&PAPER[1][0][0], f);
-    agree += vsph_grade_order_is(p, (int)lround(pp)) == 1;
-    o += m;
-    left -= (size_t)m;
-    m = snprintf(o, left, "%s VISC-0%d %.2f (%.2f)", f ? "," : "", f + 1, p,
-                 pp);
+   * N is -p/2 for an error ~ dx^p; ours, and the paper's with its own
+   * rounded to the nearest integer */
+  vsph_claim_clear(v);
+  vsph_claim_num(v, "perturb", PERTURB);
+  for (int f = 0; f < NLAP; f++) {
+    char key[3][8];
+    snprintf(key[0], sizeof key[0], "p0%d", f + 1);
+    snprintf(key[1], sizeof key[1], "pp0%d", f + 1);
+    snprintf(key[2], sizeof key[2], "n0%d", f + 1);
+    const double pp = -2.0 * slope_n(&PAPER[1][0][0], f);
+    vsph_claim_num(v, key[0], -2.0 * slope_n(&t.err[1][0][0], f));
+    vsph_claim_num(v, key[1], pp);
+    vsph_claim_num(v, key[2], (double)lround(pp));
   }
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "Under disorder the paper's Err (eq. 21, which carries a factor dx^2) "
-        "falls at about first order in dx for VISC-01, 02 and 04 and at about "
-        "second for VISC-03 (Zheng Table 2, Fig. 5)",
-        "slopes against N -0.55, -0.54, -1.06, -0.55 (Table 2)", ours,
-        "each coordinate shifted by U(-0.2, 0.2) dx [reconstructed]; "
-        "whole-set metric; as above otherwise",
-        agree == NLAP ? "reproduced on a substitute: every order rounds to "
-                        "the paper's"
-        : agree       ? "partly: some orders round to the paper's, not all"
-                      : "differs");
+  if (!st) st = vsph_report_grade(R, "claims/patch.disorder_orders", v);
   /* the CPU ranking (Table 3): our best-of-3 wall times at 100 x 100,
    * perturbed, against the paper's; VISC-03 dearest and VISC-02 cheapest
    * is the claim (its ratios 0.81 : 1 : 2.25 : 1.93 are its code's) */
@@ -321,54 +270,23 @@ int vsph_report_patch_claims(struct vsph_report *R) {
     if (w[f] > w[dear]) dear = f;
     if (w[f] < w[cheap]) cheap = f;
   }
-  snprintf(ours, sizeof ours,
-           "wall time at 100 x 100, perturbed, best of 3, over VISC-01's: "
-           "VISC-02 %.2f, VISC-03 %.2f, VISC-04 %.2f (the paper's %.2f, %.2f, "
-           "%.2f)",
-           w[1] / w[0], w[2] / w[0], w[3] / w[0],
-           PAPER_CPU[NRES - 1][1] / PAPER_CPU[NRES - 1][0],
-           PAPER_CPU[NRES - 1][2] / PAPER_CPU[NRES - 1][0],
-           PAPER_CPU[NRES - 1][3] / PAPER_CPU[NRES - 1][0]);
-  /* one best-of-3 timing per form, no spread measured: forms within a
-   * tenth of each other are not ranked (a documented choice: the timing
-   * scatter of a shared two-core machine, several per cent) */
-  const double spread = w[dear] / w[cheap] - 1.0;
-  char verdict[VSPH_REPORT_CLAIM_BUF];
-  if (spread < 0.10)
-    snprintf(verdict, sizeof verdict,
-             "differs on a substitute: in vsph's implementation (one "
-             "neighbour pass for all four) the four lie within %.0f %% of "
-             "each other, so none is dearest or cheapest beyond the timing "
-             "scatter; VISC-03 costs %.2f of VISC-01's time (the paper's "
-             "2.25): the paper's ranking is its code's",
-             100 * spread, w[2] / w[0]);
-  else if (dear == 2 && cheap == 1)
-    snprintf(verdict, sizeof verdict,
-             "partly: the same dearest and cheapest in vsph's implementation "
-             "(a substitute), at ratios of its own (VISC-03 %.2f of "
-             "VISC-01's time, the paper's 2.25)",
-             w[2] / w[0]);
-  else
-    snprintf(verdict, sizeof verdict,
-             "differs on a substitute: in vsph's implementation (one "
-             "neighbour pass for all four) the dearest is VISC-0%d and the "
-             "cheapest VISC-0%d, %.0f %% apart; VISC-03 costs %.2f of "
-             "VISC-01's time (the paper's 2.25)",
-             dear + 1, cheap + 1, 100 * spread, w[2] / w[0]);
-  if (!st)
-    st = vsph_report_claim(
-        R,
-        "VISC-03 is the most CPU-expensive of the four and VISC-02 the "
-        "cheapest (Zheng Table 3, Sec. 6)",
-        "VISC-02 : 01 : 03 : 04 = 0.81 : 1 : 2.25 : 1.93", ours,
-        "vsph's implementation (one neighbour pass for all four; VISC-03 "
-        "and 04 add the renormalisation) on this machine, one best-of-3 "
-        "timing per form with no spread measured, whatever the load "
-        "(report.md's run facts); the paper's code and machine are not "
-        "ours, so only the ranking is compared",
-        /* graded as PVWF's cost is, on vsph's implementation as a
-         * substitute: vsph's four forms share one neighbour pass and
-         * differ only in its finishing step */
-        verdict);
+  vsph_claim_clear(v);
+  for (int f = 0; f < NLAP; f++) {
+    char key[3][8];
+    snprintf(key[0], sizeof key[0], "w0%d", f + 1);
+    snprintf(key[1], sizeof key[1], "r0%d", f + 1);
+    snprintf(key[2], sizeof key[2], "pr0%d", f + 1);
+    vsph_claim_num(v, key[0], w[f]);
+    vsph_claim_num(v, key[1], w[f] / w[0]);
+    vsph_claim_num(v, key[2], PAPER_CPU[NRES - 1][f] / PAPER_CPU[NRES - 1][0]);
+  }
+  vsph_claim_num(v, "spread", w[dear] / w[cheap] - 1.0);
+  vsph_claim_str(v, "dear", "%d", dear + 1);
+  vsph_claim_str(v, "cheap", "%d", cheap + 1);
+  /* graded as PVWF's cost is, on vsph's implementation as a substitute:
+   * vsph's four forms share one neighbour pass and differ only in its
+   * finishing step */
+  if (!st) st = vsph_report_grade(R, "claims/patch.cpu", v);
+  free(v);
   return st;
 }

@@ -76,6 +76,7 @@ int main(void) {
   srunner_add_suite(sr, vsph_plot_suite());
   srunner_add_suite(sr, vsph_series_suite());
   srunner_add_suite(sr, vsph_grade_suite());
+  srunner_add_suite(sr, vsph_claim_suite());
   srunner_add_suite(sr, vsph_fvref_suite());
   srunner_add_suite(sr, vsph_library_suite());
   srunner_run_all(sr, CK_NORMAL);

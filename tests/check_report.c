@@ -265,11 +265,13 @@ static char *beside_text(struct vsph_report *R,
                          double err[][VSPH_VISCOUS_PAPER_COUNT]) {
   R->md = tmpfile();
   ck_assert_ptr_nonnull(R->md);
+  ck_assert_int_eq(vsph_report_beside_prepare(R), 0);
   ck_assert_int_eq(
       vsph_report_claims_beside(
           R, (const struct vsph_jobs_run(*)[VSPH_VISCOUS_PAPER_COUNT])run,
           (const double(*)[VSPH_VISCOUS_PAPER_COUNT])err),
       0);
+  vsph_report_beside_free(R);
   const long len = ftell(R->md);
   char *text = calloc((size_t)len + 1, 1);
   rewind(R->md);

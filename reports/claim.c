@@ -1,0 +1,563 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* The verdict engine (claim.h): a claim's block parsed, its tests run on
+ * the part's measures, its verdict chosen by the first expression of tests
+ * that holds, its templates filled. */
+#include "claim.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../common/status.h"
+#include "grade.h"
+#include "text.h"
+
+/* Most tests and verdicts one claim may hold. */
+#define MAXTESTS 16
+#define MAXIFS 16
+
+void vsph_claim_clear(struct vsph_claim_vals *v) {
+  v->n = 0;
+  v->overflow = 0;
+}
+
+/* The slot of @p key (a new one at the end when absent), or NULL. */
+static size_t slot(struct vsph_claim_vals *v, const char *key) {
+  size_t k = 0;
+  while (k < v->n && strcmp(v->key[k], key)) k++;
+  if (k == v->n) {
+    if (v->n == VSPH_CLAIM_MAXVALS || strlen(key) >= sizeof v->key[0]) {
+      v->overflow = 1;
+      return VSPH_CLAIM_MAXVALS;
+    }
+    snprintf(v->key[v->n++], sizeof v->key[0], "%s", key);
+  }
+  return k;
+}
+
+void vsph_claim_num(struct vsph_claim_vals *v, const char *key, double x) {
+  const size_t k = slot(v, key);
+  if (k == VSPH_CLAIM_MAXVALS) return;
+  v->num[k] = x;
+  v->str[k][0] = '\0';
+  v->is_str[k] = 0;
+}
+
+void vsph_claim_str(struct vsph_claim_vals *v, const char *key, const char *fmt,
+                    ...) {
+  const size_t k = slot(v, key);
+  if (k == VSPH_CLAIM_MAXVALS) return;
+  va_list ap;
+  va_start(ap, fmt);
+  const int m = vsnprintf(v->str[k], sizeof v->str[0], fmt, ap);
+  va_end(ap);
+  if (m < 0 || (size_t)m >= sizeof v->str[0]) v->overflow = 1;
+  v->num[k] = (double)NAN;
+  v->is_str[k] = 1;
+}
+
+/* ------------------------------------------------------------- parsing */
+
+/* One test: its name, kind, arguments (as written) and origin. */
+struct test {
+  char name[32], kind[16], arg[3][32], origin[400];
+  int nargs;
+};
+
+/* A claim's block, parsed: each field's text (continuations joined). */
+struct block {
+  char claim[256], where[128], paper[256], ours[1600], setup[1000];
+  char checked[160]; /* the make-check test a claim without tests rests on */
+  struct test test[MAXTESTS];
+  int ntests;
+  char cond[MAXIFS][256], verdict[MAXIFS][1000]; /* the last: else */
+  int nifs, has_else;
+};
+
+static const struct {
+  const char *kind;
+  int nargs;
+} KINDS[] = {{"below", 2},  {"above", 2}, {"atmost", 2}, {"atleast", 2},
+             {"within", 3}, {"order", 2}, {"apart", 2},  {"larger", 3},
+             {"flag", 1},   {"finite", 1}};
+#define NKINDS (sizeof KINDS / sizeof KINDS[0])
+
+/* A copy of @p s without blanks at either end into @p buf. */
+static int trim_copy(char *buf, size_t len, const char *s, size_t n) {
+  while (n && isspace((unsigned char)*s)) s++, n--;
+  while (n && isspace((unsigned char)s[n - 1])) n--;
+  if (n >= len) return -1;
+  memcpy(buf, s, n);
+  buf[n] = '\0';
+  return 0;
+}
+
+static int parse_test(const char *name, const char *head, const char *val,
+                      struct test *t) {
+  /* head: "test NAME" */
+  if (trim_copy(t->name, sizeof t->name, head + 4, strlen(head + 4)) ||
+      !t->name[0])
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: a test without a name", name);
+  for (const char *c = t->name; *c; c++)
+    if (!isalnum((unsigned char)*c) && *c != '_')
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: test name '%s' is not a word", name,
+                t->name);
+  const char *dash = strstr(val, " -- ");
+  if (!dash ||
+      trim_copy(t->origin, sizeof t->origin, dash + 4, strlen(dash + 4)) ||
+      !t->origin[0])
+    VSPH_FAIL(VSPH_EINVAL,
+              "claim %s: test %s gives no origin of its threshold "
+              "(' -- ORIGIN')",
+              name, t->name);
+  char rule[200];
+  if (trim_copy(rule, sizeof rule, val, (size_t)(dash - val)))
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: test %s too long", name, t->name);
+  char *save = NULL, *tok = strtok_r(rule, " \t", &save);
+  if (!tok || strlen(tok) >= sizeof t->kind)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: test %s has no kind", name, t->name);
+  snprintf(t->kind, sizeof t->kind, "%s", tok);
+  size_t k = 0;
+  while (k < NKINDS && strcmp(KINDS[k].kind, t->kind)) k++;
+  if (k == NKINDS)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: test %s: no kind '%s'", name, t->name,
+              t->kind);
+  t->nargs = 0;
+  while ((tok = strtok_r(NULL, " \t", &save))) {
+    if (t->nargs == 3 || strlen(tok) >= sizeof t->arg[0])
+      VSPH_FAIL(VSPH_EINVAL,
+                "claim %s: test %s: too many or too long "
+                "arguments",
+                name, t->name);
+    snprintf(t->arg[t->nargs++], sizeof t->arg[0], "%s", tok);
+  }
+  if (t->nargs != KINDS[k].nargs)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: test %s: %s takes %d arguments, not %d",
+              name, t->name, t->kind, KINDS[k].nargs, t->nargs);
+  return VSPH_OK;
+}
+
+/* One field "key: value" into the block. */
+static int field(const char *name, struct block *b, const char *key,
+                 const char *val) {
+  struct {
+    const char *key;
+    char *buf;
+    size_t len;
+  } plain[] = {{"claim", b->claim, sizeof b->claim},
+               {"where", b->where, sizeof b->where},
+               {"paper", b->paper, sizeof b->paper},
+               {"ours", b->ours, sizeof b->ours},
+               {"setup", b->setup, sizeof b->setup},
+               {"checked", b->checked, sizeof b->checked}};
+  for (size_t k = 0; k < sizeof plain / sizeof plain[0]; k++)
+    if (!strcmp(key, plain[k].key)) {
+      if (plain[k].buf[0])
+        VSPH_FAIL(VSPH_EINVAL, "claim %s: field %s given twice", name, key);
+      if (trim_copy(plain[k].buf, plain[k].len, val, strlen(val)))
+        VSPH_FAIL(VSPH_EINVAL, "claim %s: field %s too long", name, key);
+      return VSPH_OK;
+    }
+  if (!strncmp(key, "test ", 5)) {
+    if (b->ntests == MAXTESTS)
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: more than %d tests", name, MAXTESTS);
+    int st = parse_test(name, key, val, &b->test[b->ntests]);
+    if (st) return st;
+    for (int k = 0; k < b->ntests; k++)
+      if (!strcmp(b->test[k].name, b->test[b->ntests].name))
+        VSPH_FAIL(VSPH_EINVAL, "claim %s: test %s given twice", name,
+                  b->test[k].name);
+    b->ntests++;
+    return VSPH_OK;
+  }
+  const int is_if = !strncmp(key, "if ", 3), is_else = !strcmp(key, "else");
+  if (is_if || is_else) {
+    if (b->has_else)
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: a verdict after 'else'", name);
+    if (b->nifs == MAXIFS)
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: more than %d verdicts", name, MAXIFS);
+    const char *e = is_if ? key + 3 : "";
+    if (trim_copy(b->cond[b->nifs], sizeof b->cond[0], e, strlen(e)) ||
+        trim_copy(b->verdict[b->nifs], sizeof b->verdict[0], val, strlen(val)))
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: a verdict too long", name);
+    if (vsph_claim_class(b->verdict[b->nifs]) < 0)
+      VSPH_FAIL(VSPH_EINVAL,
+                "claim %s: verdict '%.40s' does not start with reproduced, "
+                "reproduced on a substitute, partly, differs, not "
+                "reproduced or not tested",
+                name, b->verdict[b->nifs]);
+    b->nifs++;
+    b->has_else = is_else;
+    return VSPH_OK;
+  }
+  VSPH_FAIL(VSPH_EINVAL, "claim %s: no field '%s'", name, key);
+}
+
+/* One logical line "key: value" into the block. */
+static int line(const char *name, struct block *b, char *l) {
+  char *colon = strchr(l, ':');
+  if (!colon)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: a line that is no field: '%.40s'", name,
+              l);
+  *colon = '\0';
+  return field(name, b, l, colon + 1);
+}
+
+/* Block @p text into @p b: its physical lines joined into logical ones
+ * (a line that starts with a blank continues the one before, after one
+ * space), each a field. */
+static int parse(const char *name, const char *text, struct block *b) {
+  memset(b, 0, sizeof *b);
+  const size_t len = strlen(text);
+  char *buf = malloc(len + 2);
+  if (!buf) VSPH_FAIL(VSPH_ENOMEM, "cannot parse claim %s", name);
+  size_t m = 0;
+  int open = 0; /* a logical line is being built */
+  for (const char *s = text; *s;) {
+    const char *eol = strchr(s, '\n');
+    const size_t n = eol ? (size_t)(eol - s) : strlen(s);
+    const size_t lead = strspn(s, " \t");
+    if (lead >= n) { /* blank: ends the line before */
+      open = 0;
+    } else if (lead > 0) { /* continues it */
+      if (!open) {
+        free(buf);
+        VSPH_FAIL(VSPH_EINVAL, "claim %s: a continued line with no field",
+                  name);
+      }
+      buf[m++] = ' ';
+      memcpy(buf + m, s + lead, n - lead);
+      m += n - lead;
+    } else {
+      if (open) buf[m++] = '\n';
+      memcpy(buf + m, s, n);
+      m += n;
+      open = 1;
+    }
+    s += n + (eol != NULL);
+  }
+  buf[m] = '\0';
+  int st = VSPH_OK;
+  char *save = NULL;
+  for (char *l = strtok_r(buf, "\n", &save); l && !st;
+       l = strtok_r(NULL, "\n", &save))
+    st = line(name, b, l);
+  free(buf);
+  if (st) return st;
+  const char *need[] = {b->claim, b->where, b->paper, b->ours, b->setup};
+  const char *called[] = {"claim", "where", "paper", "ours", "setup"};
+  for (int k = 0; k < 5; k++)
+    if (!need[k][0])
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: no field %s", name, called[k]);
+  if (!b->has_else)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: no 'else' verdict (the last)", name);
+  /* a claim without tests is not graded here: it says so ("not tested"),
+   * or names the test of make check that holds it */
+  if (!b->ntests && (b->nifs != 1 || (vsph_claim_class(b->verdict[0]) !=
+                                          VSPH_CLAIM_NOT_TESTED &&
+                                      !b->checked[0])))
+    VSPH_FAIL(VSPH_EINVAL,
+              "claim %s: no test, yet a verdict other than 'not tested' "
+              "and no 'checked:' test of make check named",
+              name);
+  if (b->ntests && b->checked[0])
+    VSPH_FAIL(VSPH_EINVAL,
+              "claim %s: 'checked:' is for a claim without "
+              "tests",
+              name);
+  return VSPH_OK;
+}
+
+/* ---------------------------------------------------------------- tests */
+
+int vsph_claim_class(const char *verdict) {
+  if (!strncmp(verdict, "not tested", 10)) return VSPH_CLAIM_NOT_TESTED;
+  if (!strncmp(verdict, "partly", 6)) return VSPH_CLAIM_PARTLY;
+  if (!strncmp(verdict, "reproduced on a substitute", 26))
+    return VSPH_CLAIM_SUBSTITUTE;
+  if (!strncmp(verdict, "reproduced", 10)) return VSPH_CLAIM_REPRODUCED;
+  if (!strncmp(verdict, "differs", 7) ||
+      !strncmp(verdict, "not reproduced", 14))
+    return VSPH_CLAIM_DIFFERS;
+  return -1;
+}
+
+/* Argument @p a: a number as written, or the measure of that name (with
+ * @p v NULL, for the lint, 0). */
+static int arg(const char *name, const char *a, const struct vsph_claim_vals *v,
+               double *x) {
+  char *end;
+  const double lit = strtod(a, &end);
+  if (end != a && !*end) {
+    *x = lit;
+    return VSPH_OK;
+  }
+  if (!isalpha((unsigned char)a[0]) && a[0] != '_')
+    VSPH_FAIL(VSPH_EINVAL,
+              "claim %s: argument '%s' is neither a number nor "
+              "a name",
+              name, a);
+  if (!v) {
+    *x = 0.0;
+    return VSPH_OK;
+  }
+  for (size_t k = 0; k < v->n; k++)
+    if (!strcmp(v->key[k], a)) {
+      if (v->is_str[k])
+        VSPH_FAIL(VSPH_EINVAL, "claim %s: '%s' is a word, not a measure", name,
+                  a);
+      *x = v->num[k];
+      return VSPH_OK;
+    }
+  VSPH_FAIL(VSPH_EINVAL, "claim %s: no measure '%s' (the part sets none)", name,
+            a);
+}
+
+int vsph_claim_test(const char *kind, const double *x) {
+  if (!strcmp(kind, "below")) return x[0] < x[1];
+  if (!strcmp(kind, "above")) return x[0] > x[1];
+  if (!strcmp(kind, "atmost")) return x[0] <= x[1];
+  if (!strcmp(kind, "atleast")) return x[0] >= x[1];
+  if (!strcmp(kind, "within")) return vsph_grade_within(x[0], x[1], x[2]);
+  if (!strcmp(kind, "order")) {
+    const double n = x[1];
+    if (!(n == floor(n)) || fabs(n) > 64) return -1;
+    return vsph_grade_order_is(x[0], (int)n) == 1;
+  }
+  if (!strcmp(kind, "apart")) return vsph_grade_apart(x[0], x[1]);
+  if (!strcmp(kind, "larger")) return vsph_grade_larger(x[0], x[1], x[2]);
+  if (!strcmp(kind, "flag")) return x[0] == 1.0;
+  if (!strcmp(kind, "finite")) return isfinite(x[0]) != 0;
+  return -1;
+}
+
+/* ----------------------------------------------------------- expression */
+
+struct expr {
+  const char *s, *name;
+  const struct block *b;
+  const int *holds; /* each test's result */
+  int err;
+};
+
+static void skip(struct expr *e) {
+  while (*e->s == ' ' || *e->s == '\t') e->s++;
+}
+
+static int expr_or(struct expr *e);
+
+static int expr_atom(struct expr *e) {
+  skip(e);
+  if (*e->s == '!') {
+    e->s++;
+    return !expr_atom(e);
+  }
+  if (*e->s == '(') {
+    e->s++;
+    const int r = expr_or(e);
+    skip(e);
+    if (*e->s != ')')
+      e->err = 1;
+    else
+      e->s++;
+    return r;
+  }
+  const size_t n = strspn(e->s,
+                          "abcdefghijklmnopqrstuvwxyz"
+                          "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_");
+  for (int k = 0; n && k < e->b->ntests; k++)
+    if (strlen(e->b->test[k].name) == n &&
+        !strncmp(e->b->test[k].name, e->s, n)) {
+      e->s += n;
+      return e->holds[k];
+    }
+  e->err = 1;
+  e->s += n ? n : strlen(e->s); /* no such test: stop here */
+  return 0;
+}
+
+static int expr_and(struct expr *e) {
+  int r = expr_atom(e);
+  for (skip(e); *e->s == '&'; skip(e)) {
+    e->s++;
+    r = expr_atom(e) && r; /* both sides parsed, whatever the first says */
+  }
+  return r;
+}
+
+static int expr_or(struct expr *e) {
+  int r = expr_and(e);
+  for (skip(e); *e->s == '|'; skip(e)) {
+    e->s++;
+    r = expr_and(e) || r;
+  }
+  return r;
+}
+
+/* Expression @p cond on the tests' results: 1, 0, or -1 if malformed. */
+static int eval(const char *cond, const struct block *b, const int *holds) {
+  struct expr e = {cond, NULL, b, holds, 0};
+  const int r = expr_or(&e);
+  skip(&e);
+  return e.err || *e.s ? -1 : r;
+}
+
+/* ------------------------------------------------------------ templates */
+
+/* Template @p t filled from @p v into @p out (@p len bytes); with @p v
+ * NULL only its placeholders' form is checked. */
+static int fill(const char *name, const char *t,
+                const struct vsph_claim_vals *v, char *out, size_t len) {
+  size_t m = 0;
+  for (const char *s = t; *s;) {
+    const char *open = strstr(s, "{{");
+    const size_t lit = open ? (size_t)(open - s) : strlen(s);
+    if (m + lit >= len)
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: a text longer than its field (%zu)",
+                name, len - 1);
+    memcpy(out + m, s, lit);
+    m += lit;
+    if (!open) break;
+    const char *close = strstr(open + 2, "}}");
+    char ph[96];
+    if (!close || (size_t)(close - open - 2) >= sizeof ph)
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: a placeholder without '}}'", name);
+    memcpy(ph, open + 2, (size_t)(close - open - 2));
+    ph[close - open - 2] = '\0';
+    s = close + 2;
+    /* name[*100][:FMT] */
+    char *fmt = strchr(ph, ':');
+    if (fmt) *fmt++ = '\0';
+    char *scale = strstr(ph, "*100");
+    const double mult = scale ? 100.0 : 1.0;
+    if (scale) {
+      if (scale[4])
+        VSPH_FAIL(VSPH_EINVAL,
+                  "claim %s: {{%s}}: only *100 "
+                  "scales",
+                  name, ph);
+      *scale = '\0';
+    }
+    if (fmt) { /* flags, width, precision, then one of e f g E G */
+      const size_t f = strspn(fmt, "-+ 0#");
+      const size_t w = f + strspn(fmt + f, "0123456789.");
+      if (!fmt[w] || !strchr("efgEG", fmt[w]) || fmt[w + 1] || strlen(fmt) > 12)
+        VSPH_FAIL(VSPH_EINVAL,
+                  "claim %s: {{%s:%s}}: not a format of a "
+                  "number (%%[flags][width][.prec]e|f|g)",
+                  name, ph, fmt);
+    }
+    char piece[700];
+    if (!v) {
+      piece[0] = '\0';
+    } else {
+      size_t k = 0;
+      while (k < v->n && strcmp(v->key[k], ph)) k++;
+      if (k == v->n)
+        VSPH_FAIL(VSPH_EINVAL, "claim %s: {{%s}} has no value", name, ph);
+      if (v->is_str[k]) {
+        if (fmt || scale)
+          VSPH_FAIL(VSPH_EINVAL, "claim %s: {{%s}} is a word: no format", name,
+                    ph);
+        snprintf(piece, sizeof piece, "%s", v->str[k]);
+      } else {
+        char f[16];
+        snprintf(f, sizeof f, "%%%s", fmt ? fmt : "g");
+        /* f is checked above: one conversion of a double */
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wformat-nonliteral"
+        snprintf(piece, sizeof piece, f, mult * v->num[k]);
+#pragma GCC diagnostic pop
+      }
+    }
+    const size_t pn = strlen(piece);
+    if (m + pn >= len)
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: a text longer than its field (%zu)",
+                name, len - 1);
+    memcpy(out + m, piece, pn);
+    m += pn;
+  }
+  out[m] = '\0';
+  return VSPH_OK;
+}
+
+/* --------------------------------------------------------------- grading */
+
+/* Block @p b graded (or, with @p v NULL, only checked) into @p row. */
+static int grade(const char *name, const struct block *b,
+                 const struct vsph_claim_vals *v, struct vsph_claim_row *row) {
+  if (v && v->overflow)
+    VSPH_FAIL(VSPH_EINVAL,
+              "claim %s: the part set too many or too long "
+              "values",
+              name);
+  int holds[MAXTESTS];
+  for (int k = 0; k < b->ntests; k++) {
+    double x[3] = {0};
+    for (int a = 0; a < b->test[k].nargs; a++) {
+      const int st = arg(name, b->test[k].arg[a], v, &x[a]);
+      if (st) return st;
+    }
+    holds[k] = vsph_claim_test(b->test[k].kind, x);
+    if (holds[k] < 0 && v)
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: test %s: %s of %s is no integer order",
+                name, b->test[k].name, b->test[k].kind, b->test[k].arg[1]);
+    if (holds[k] < 0) holds[k] = 0;
+  }
+  int pick = -1;
+  for (int k = 0; k < b->nifs; k++) {
+    const int r = b->cond[k][0] ? eval(b->cond[k], b, holds) : 1;
+    if (r < 0)
+      VSPH_FAIL(VSPH_EINVAL,
+                "claim %s: 'if %s': not an expression of its "
+                "tests (names, &, |, !, parentheses)",
+                name, b->cond[k]);
+    if (r && pick < 0) pick = k; /* every one checked, the first taken */
+  }
+  const char *where = b->where;
+  char claim[sizeof row->claim];
+  /* the core paper's claims carry no mark in the table (its head says so) */
+  if (!strncmp(where, "Colagrossi", 10))
+    snprintf(claim, sizeof claim, "%s", b->claim);
+  else if (snprintf(claim, sizeof claim, "%s (%s)", b->claim, where) >=
+           (int)sizeof claim)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: a claim longer than its field", name);
+  int st = fill(name, claim, v, row->claim, sizeof row->claim);
+  if (!st) st = fill(name, b->paper, v, row->paper, sizeof row->paper);
+  if (!st) st = fill(name, b->ours, v, row->ours, sizeof row->ours);
+  if (!st) st = fill(name, b->setup, v, row->setup, sizeof row->setup);
+  for (int k = 0; k < b->nifs && !st; k++)
+    if (!v || k == pick) /* the lint checks every verdict's placeholders */
+      st = fill(name, b->verdict[k], v, row->verdict, sizeof row->verdict);
+  return st;
+}
+
+int vsph_claim_grade_text(const char *name, const char *text,
+                          const struct vsph_claim_vals *v,
+                          struct vsph_claim_row *row) {
+  struct block *b = malloc(sizeof *b);
+  if (!b) VSPH_FAIL(VSPH_ENOMEM, "cannot grade claim %s", name);
+  int st = parse(name, text, b);
+  if (!st) st = grade(name, b, v, row);
+  free(b);
+  return st;
+}
+
+int vsph_claim_grade(const char *name, const struct vsph_claim_vals *v,
+                     struct vsph_claim_row *row) {
+  const char *text = vsph_text_get(name);
+  if (!text) VSPH_FAIL(VSPH_EINVAL, "no claim %s in reports/claims", name);
+  return vsph_claim_grade_text(name, text, v, row);
+}
+
+int vsph_claim_lint(const char *name, const char *text) {
+  struct vsph_claim_row *row = malloc(sizeof *row);
+  if (!row) VSPH_FAIL(VSPH_ENOMEM, "cannot check claim %s", name);
+  const int st = vsph_claim_grade_text(name, text, NULL, row);
+  free(row);
+  return st;
+}

@@ -1,0 +1,277 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* reports/claim.c, the verdict engine: every test kind at, just below and
+ * just above its threshold on values worked by hand; the verdict chosen by
+ * the first expression that holds; templates filled; each malformed block
+ * refused with a status; and every claim block compiled in (from
+ * reports/claims/) well formed. */
+#include <check.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../common/status.h"
+#include "../reports/claim.h"
+#include "../reports/grade.h"
+#include "../reports/text.h"
+#include "check_suites.h"
+
+/* Kind @p kind on the values @p a, @p b, @p c. */
+static int t3(const char *kind, double a, double b, double c) {
+  const double x[3] = {a, b, c};
+  return vsph_claim_test(kind, x);
+}
+
+/* The four comparisons at their threshold (1), just below and just
+ * above it (the next doubles), and with NaN on either side (never). */
+START_TEST(test_kinds_compare) {
+  const double th = 0.12, lo = nextafter(th, 0.0), hi = nextafter(th, 1.0);
+  /* below: a < b, strict */
+  ck_assert_int_eq(t3("below", lo, th, 0), 1);
+  ck_assert_int_eq(t3("below", th, th, 0), 0);
+  ck_assert_int_eq(t3("below", hi, th, 0), 0);
+  /* atmost: a <= b */
+  ck_assert_int_eq(t3("atmost", lo, th, 0), 1);
+  ck_assert_int_eq(t3("atmost", th, th, 0), 1);
+  ck_assert_int_eq(t3("atmost", hi, th, 0), 0);
+  /* above: a > b, strict */
+  ck_assert_int_eq(t3("above", lo, th, 0), 0);
+  ck_assert_int_eq(t3("above", th, th, 0), 0);
+  ck_assert_int_eq(t3("above", hi, th, 0), 1);
+  /* atleast: a >= b */
+  ck_assert_int_eq(t3("atleast", lo, th, 0), 0);
+  ck_assert_int_eq(t3("atleast", th, th, 0), 1);
+  ck_assert_int_eq(t3("atleast", hi, th, 0), 1);
+  static const char *const k4[] = {"below", "atmost", "above", "atleast"};
+  for (int k = 0; k < 4; k++) {
+    ck_assert_int_eq(t3(k4[k], NAN, th, 0), 0);
+    ck_assert_int_eq(t3(k4[k], th, NAN, 0), 0);
+  }
+}
+END_TEST
+
+/* within: |a - s| <= w, inclusive (2.5 from 2 by 0.5 is within; the next
+ * double beyond is not); order: rounds to n (0.5 from 1 is not, the next
+ * double inside is); apart: bad >= sqrt(10) good; larger: a > b + noise
+ * (at b + noise it is not); flag: exactly 1; an unknown kind and a
+ * fractional order: -1. */
+START_TEST(test_kinds_rules) {
+  ck_assert_int_eq(t3("within", 2.5, 2.0, 0.5), 1);
+  ck_assert_int_eq(t3("within", nextafter(2.5, 3.0), 2.0, 0.5), 0);
+  ck_assert_int_eq(t3("within", nextafter(2.5, 2.0), 2.0, 0.5), 1);
+  ck_assert_int_eq(t3("within", 1.5, 2.0, 0.5), 1);
+  ck_assert_int_eq(t3("within", NAN, 2.0, 0.5), 0);
+  ck_assert_int_eq(t3("order", 0.5, 1, 0), 0);
+  ck_assert_int_eq(t3("order", nextafter(0.5, 1.0), 1, 0), 1);
+  ck_assert_int_eq(t3("order", nextafter(1.5, 1.0), 1, 0), 1);
+  ck_assert_int_eq(t3("order", 1.5, 1, 0), 0);
+  ck_assert_int_eq(t3("order", NAN, 1, 0), 0);
+  ck_assert_int_eq(t3("order", 1.0, 1.5, 0), -1);
+  ck_assert_int_eq(t3("apart", VSPH_GRADE_APART, 1.0, 0), 1);
+  ck_assert_int_eq(t3("apart", nextafter(VSPH_GRADE_APART, 0.0), 1.0, 0), 0);
+  ck_assert_int_eq(t3("apart", 4.0, 1.0, 0), 1);
+  ck_assert_int_eq(t3("larger", 1.5, 1.0, 0.5), 0);
+  ck_assert_int_eq(t3("larger", nextafter(1.5, 2.0), 1.0, 0.5), 1);
+  ck_assert_int_eq(t3("larger", 1.4, 1.0, 0.5), 0);
+  ck_assert_int_eq(t3("flag", 1.0, 0, 0), 1);
+  ck_assert_int_eq(t3("flag", 0.0, 0, 0), 0);
+  ck_assert_int_eq(t3("flag", nextafter(1.0, 2.0), 0, 0), 0);
+  ck_assert_int_eq(t3("flag", NAN, 0, 0), 0);
+  ck_assert_int_eq(t3("nearly", 1.0, 1.0, 0), -1);
+}
+END_TEST
+
+/* A claim in the style of Basa et al.'s: Cleary's xi fails (eq. 38 at or
+ * beyond 12 %) while the recalibrated one is good (below 5 %). */
+static const char *const XI =
+    "claim: Cleary's xi gives inaccurate velocities\n"
+    "where: Basa §5\n"
+    "paper: at or beyond 12 %\n"
+    "ours: xi = 4.96333 {{bad*100:.1f}} %, xi = 4.24\n"
+    "  {{good*100:.1f}} % ({{what}})\n"
+    "setup: none\n"
+    "test fails: atleast bad 0.12 -- the paper's failure level\n"
+    "test good: below good 0.05 -- the paper's \"good\"\n"
+    "if fails & good: reproduced: both\n"
+    "if fails | good: partly: {{which}} holds\n"
+    "else: differs: neither\n";
+
+static int grade(const char *text, const struct vsph_claim_vals *v,
+                 struct vsph_claim_row *row) {
+  return vsph_claim_grade_text("test.claim", text, v, row);
+}
+
+/* The verdict is the first whose expression holds: both tests, one, none;
+ * each at its threshold (12 % fails; 5 % is not good); the templates
+ * filled with the measures (scaled, formatted) and words; the claim
+ * marked with where it stands; the class follows. */
+START_TEST(test_verdict_follows) {
+  struct vsph_claim_vals v;
+  struct vsph_claim_row row;
+  const struct {
+    double bad, good;
+    const char *verdict;
+  } cases[] = {{0.12, nextafter(0.05, 0.0), "reproduced: both"},
+               {nextafter(0.12, 0.0), 0.01, "partly: the one holds"},
+               {0.20, 0.05, "partly: the one holds"},
+               {0.11, 0.05, "differs: neither"},
+               {NAN, 0.01, "partly: the one holds"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    vsph_claim_clear(&v);
+    vsph_claim_num(&v, "bad", cases[k].bad);
+    vsph_claim_num(&v, "good", cases[k].good);
+    vsph_claim_str(&v, "what", "at t* = %.1f", 4.9);
+    vsph_claim_str(&v, "which", "the one");
+    ck_assert_int_eq(grade(XI, &v, &row), VSPH_OK);
+    ck_assert_msg(!strcmp(row.verdict, cases[k].verdict), "case %zu: '%s'", k,
+                  row.verdict);
+  }
+  vsph_claim_clear(&v);
+  vsph_claim_num(&v, "bad", 0.1734);
+  vsph_claim_num(&v, "good", 0.0123);
+  vsph_claim_str(&v, "what", "at t* = 4.9");
+  vsph_claim_str(&v, "which", "one");
+  ck_assert_int_eq(grade(XI, &v, &row), VSPH_OK);
+  ck_assert_str_eq(row.claim,
+                   "Cleary's xi gives inaccurate velocities (Basa §5)");
+  ck_assert_str_eq(row.ours,
+                   "xi = 4.96333 17.3 %, xi = 4.24 1.2 % (at t* = 4.9)");
+  ck_assert_str_eq(row.setup, "none");
+  ck_assert_str_eq(row.verdict, "reproduced: both");
+  ck_assert_int_eq(vsph_claim_class(row.verdict), VSPH_CLAIM_REPRODUCED);
+  /* the core paper's claims carry no mark */
+  const char *w = strstr(XI, "Basa §5");
+  ck_assert_ptr_nonnull(w);
+  char *core = malloc(strlen(XI) + 32);
+  ck_assert_ptr_nonnull(core);
+  sprintf(core, "%.*sColagrossi%s", (int)(w - XI), XI, w + strlen("Basa §5"));
+  ck_assert_int_eq(grade(core, &v, &row), VSPH_OK);
+  ck_assert_str_eq(row.claim, "Cleary's xi gives inaccurate velocities");
+  free(core);
+}
+END_TEST
+
+/* The classes from a verdict's first words. */
+START_TEST(test_classes) {
+  ck_assert_int_eq(vsph_claim_class("reproduced (within 3 %)"),
+                   VSPH_CLAIM_REPRODUCED);
+  ck_assert_int_eq(vsph_claim_class("reproduced on a substitute: x"),
+                   VSPH_CLAIM_SUBSTITUTE);
+  ck_assert_int_eq(vsph_claim_class("partly"), VSPH_CLAIM_PARTLY);
+  ck_assert_int_eq(vsph_claim_class("differs on a substitute"),
+                   VSPH_CLAIM_DIFFERS);
+  ck_assert_int_eq(vsph_claim_class("not reproduced"), VSPH_CLAIM_DIFFERS);
+  ck_assert_int_eq(vsph_claim_class("not tested: no runs"),
+                   VSPH_CLAIM_NOT_TESTED);
+  ck_assert_int_eq(vsph_claim_class("agrees"), -1);
+}
+END_TEST
+
+/* Text @p from replaced by @p to in XI (the first), graded with good
+ * values: the status. */
+static int variant(const char *from, const char *to, int set_values) {
+  const char *at = strstr(XI, from);
+  ck_assert_ptr_nonnull(at);
+  const size_t n = strlen(XI) - strlen(from) + strlen(to) + 1;
+  char *text = malloc(n);
+  ck_assert_ptr_nonnull(text);
+  snprintf(text, n, "%.*s%s%s", (int)(at - XI), XI, to, at + strlen(from));
+  struct vsph_claim_vals v;
+  vsph_claim_clear(&v);
+  if (set_values) {
+    vsph_claim_num(&v, "bad", 0.2);
+    vsph_claim_num(&v, "good", 0.01);
+    vsph_claim_str(&v, "what", "x");
+    vsph_claim_str(&v, "which", "y");
+  }
+  struct vsph_claim_row row;
+  const int st = grade(text, &v, &row);
+  free(text);
+  return st;
+}
+
+/* Each fault refused with a status (one line on stderr each): a field
+ * missing, repeated or unknown; a test without an origin, of no known
+ * kind, with an argument too few, naming a measure the part did not set or
+ * a word; an expression naming no test or left open; a verdict without a
+ * class, or none that holds; a placeholder without a value or a format
+ * that is no number's; a continued line with no field. */
+START_TEST(test_faults_refused) {
+  ck_assert_int_eq(variant("", "", 1), VSPH_OK); /* the block itself */
+  ck_assert_int_eq(variant("where: Basa §5\n", "", 1), VSPH_EINVAL);
+  ck_assert_int_eq(variant("setup: none\n", "setup: none\nsetup: x\n", 1),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(variant("setup: none\n", "set-up: none\n", 1), VSPH_EINVAL);
+  ck_assert_int_eq(variant(" -- the paper's failure level", "", 1),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(variant("atleast bad", "nearly bad", 1), VSPH_EINVAL);
+  ck_assert_int_eq(variant("atleast bad 0.12", "atleast bad", 1), VSPH_EINVAL);
+  ck_assert_int_eq(variant("atleast bad 0.12", "atleast worse 0.12", 1),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(variant("atleast bad 0.12", "atleast what 0.12", 1),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(variant("if fails & good", "if fails & god", 1),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(variant("if fails & good", "if (fails & good", 1),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(variant("reproduced: both", "agrees: both", 1), VSPH_EINVAL);
+  ck_assert_int_eq(variant("else: differs: neither\n", "", 1), VSPH_EINVAL);
+  ck_assert_int_eq(variant("", "", 0), VSPH_EINVAL); /* no values */
+  ck_assert_int_eq(variant("{{what}}", "{{when}}", 1), VSPH_EINVAL);
+  ck_assert_int_eq(variant("{{good*100:.1f}}", "{{good*100:.1d}}", 1),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(variant("{{good*100:.1f}}", "{{good:s}}", 1), VSPH_EINVAL);
+  ck_assert_int_eq(variant("claim:", "  claim:", 1), VSPH_EINVAL);
+  ck_assert_int_eq(variant("{{what}}", "{{what:.1f}}", 1), VSPH_EINVAL);
+}
+END_TEST
+
+/* The test of make check that a claim's "checked:" names ("tests/FILE.c
+ * test_NAME") is there: 1, or 0. */
+static int checked_exists(const char *text) {
+  const char *c = strstr(text, "checked: ");
+  if (!c) return 1; /* none named */
+  char file[128], test[96], want[128];
+  if (sscanf(c + 9, "%127s %95s", file, test) != 2) return 0;
+  snprintf(want, sizeof want, "START_TEST(%s)", test);
+  FILE *f = fopen(file, "r"); /* the tests run in the source tree */
+  if (!f) return 0;
+  char line[512];
+  int found = 0;
+  while (!found && fgets(line, sizeof line, f)) found = !!strstr(line, want);
+  fclose(f);
+  return found;
+}
+
+/* Every claim block compiled in from reports/claims/ is well formed (each
+ * field, test and expression; its placeholders' forms), a test of make
+ * check it names is there, and there are some. */
+START_TEST(test_blocks_well_formed) {
+  size_t n = 0;
+  for (size_t k = 0; k < vsph_text_nblocks; k++)
+    if (!strncmp(vsph_text_blocks[k].name, "claims/", 7)) {
+      ck_assert_msg(vsph_claim_lint(vsph_text_blocks[k].name,
+                                    vsph_text_blocks[k].text) == VSPH_OK,
+                    "%s", vsph_text_blocks[k].name);
+      ck_assert_msg(checked_exists(vsph_text_blocks[k].text),
+                    "%s: the test it names as checked is not there",
+                    vsph_text_blocks[k].name);
+      n++;
+    }
+  ck_assert_uint_ge(n, 5);
+}
+END_TEST
+
+Suite *vsph_claim_suite(void) {
+  Suite *s = suite_create("claim");
+  TCase *tc = tcase_create("core");
+  tcase_add_test(tc, test_kinds_compare);
+  tcase_add_test(tc, test_kinds_rules);
+  tcase_add_test(tc, test_verdict_follows);
+  tcase_add_test(tc, test_classes);
+  tcase_add_test(tc, test_faults_refused);
+  tcase_add_test(tc, test_blocks_well_formed);
+  suite_add_tcase(s, tc);
+  return s;
+}
