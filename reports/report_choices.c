@@ -494,7 +494,9 @@ static int null_table(struct vsph_report *R) {
   FILE *c = vsph_csv_open(R->dir, "choices_null.csv", "form,n40,n80,n160");
   if (!c) return VSPH_EIO;
   int st = vsph_report_say(R, "choices.null_head");
-  double pv = NAN, tp = NAN;
+  /* each form's ratio at the finest square, {{NAME}} for the prose (which
+   * quotes the two-pass forms') */
+  double fine[VSPH_VISCOUS_FORM_COUNT];
   for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++) {
     const struct vsph_viscous_type *t = vsph_viscous_type_get(f);
     fprintf(R->md, "| %s |", t->label);
@@ -504,8 +506,7 @@ static int null_table(struct vsph_report *R) {
       if ((st = checker_ratio(NS[k], f, &q))) break;
       fprintf(R->md, " %.3g |", q);
       fprintf(c, ",%.6e", q);
-      if (k == 2 && f == VSPH_VISCOUS_PVWF) pv = q;
-      if (k == 2 && !strcmp(t->name, "twopass")) tp = q;
+      fine[f] = q;
     }
     fprintf(R->md, "\n");
     fprintf(c, "\n");
@@ -516,8 +517,8 @@ static int null_table(struct vsph_report *R) {
   }
   if ((st = vsph_csv_close(c, R->dir, "choices_null.csv"))) return st;
   fprintf(R->md, "\n");
-  vsph_text_set(&R->tv, "pvwf", "%.2g", pv);
-  vsph_text_set(&R->tv, "twopass", "%.2g", tp);
+  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
+    vsph_text_set(&R->tv, vsph_viscous_name(f), "%.2g", fine[f]);
   return vsph_report_say(R, "choices.null_tail");
 }
 

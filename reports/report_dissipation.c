@@ -30,12 +30,15 @@ struct tables {
   FILE *res[NFORM];         /* strain on the square against resolution */
   FILE *hdx[NFORM][NFIELD]; /* each field against h/dx */
   char res_name[NFORM][64], hdx_name[NFORM][NFIELD][64];
+  double res_rel[NFORM]; /* the largest |relative error| of res[form] */
 };
 
 /* One evaluation: its row in dissipation.csv and the Markdown table, and
- * (if plot) its point (x, |rel|, |lattice|, |surface|) of a figure. */
+ * (if plot) its point (x, |rel|, |lattice|, |surface|) of a figure, and
+ * (if rel_max) the largest |relative error| so far. */
 static int row(struct vsph_report *R, FILE *csv,
-               const struct vsph_dissipation_props *dp, FILE *plot, double x) {
+               const struct vsph_dissipation_props *dp, FILE *plot, double x,
+               double *rel_max) {
   struct vsph_dissipation_result r;
   const int st = vsph_dissipation_compute(dp, &r);
   if (st) return st;
@@ -54,6 +57,7 @@ static int row(struct vsph_report *R, FILE *csv,
   if (plot)
     fprintf(plot, "%.6g,%.6e,%.6e,%.6e\n", x, fabs(r.rel_error),
             fabs(r.lattice_error), fabs(r.surface_error));
+  if (rel_max) *rel_max = fmax(*rel_max, fabs(r.rel_error));
   return VSPH_OK;
 }
 
@@ -132,7 +136,7 @@ static int tables(struct vsph_report *R, struct tables *tb) {
           if (!(st = props(&dp, form, field, shape, RES[r], VSPH_CONSTS_HDX,
                            0.0)))
             st = row(R, tb->csv, &dp, fig ? tb->res[form] : NULL,
-                     (double)RES[r]);
+                     (double)RES[r], fig ? &tb->res_rel[form] : NULL);
         }
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
   if (!st) st = vsph_report_say(R, "dissipation.by_hdx");
@@ -142,7 +146,7 @@ static int tables(struct vsph_report *R, struct tables *tb) {
       for (int h = 0; h < 5 && !st; h++)
         if (!(st = props(&dp, form, field, VSPH_DISSIPATION_SQUARE, RES_HDX,
                          HDX[h], 0.0)))
-          st = row(R, tb->csv, &dp, tb->hdx[form][field], HDX[h]);
+          st = row(R, tb->csv, &dp, tb->hdx[form][field], HDX[h], NULL);
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
   vsph_text_set(&R->tv, "percent", "%g", 100 * PERTURB);
   vsph_text_set(&R->tv, "seed", "%lu", dp.seed);
@@ -152,7 +156,7 @@ static int tables(struct vsph_report *R, struct tables *tb) {
     for (int field = 0; field < NFIELD && !st; field++)
       if (!(st = props(&dp, form, field, VSPH_DISSIPATION_SQUARE, RES_HDX,
                        VSPH_CONSTS_HDX, PERTURB)))
-        st = row(R, tb->csv, &dp, NULL, 0.0);
+        st = row(R, tb->csv, &dp, NULL, 0.0, NULL);
   fprintf(R->md, "\n");
   return st;
 }
@@ -215,7 +219,9 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
     snprintf(title, sizeof title, "%s total", vsph_viscous_label(form));
     vsph_report_runs_style(style, sizeof style, form, "");
     st = vsph_plot_add(&a, tb->res_name[form], "1:2", title, style);
-    if (!st && form != VSPH_VISCOUS_PVWF) { /* PVWF's is rounding */
+    /* a form whose dissipation is exact to rounding (PVWF's identity) has
+     * no surface part to show: its total sits in the rounding band */
+    if (!st && tb->res_rel[form] >= a.rounding) {
       snprintf(title, sizeof title, "%s surface part",
                vsph_viscous_label(form));
       /* the formulation's colour and its open point shape */
@@ -269,7 +275,9 @@ static int angle_figure(struct vsph_report *R) {
                           "angle_deg,mgf_lattice,meaf_lattice,pvwf_lattice");
   if (!c) return VSPH_EIO;
   int st = VSPH_OK;
-  double mgf0 = 0.0, mgf45 = 0.0; /* MGF at 0 and 45 degrees, for the text */
+  /* each form's lattice error at 0 and 45 degrees, {{NAME0}} and
+   * {{NAME45}} for the text (which quotes MGF's) */
+  double at0[NFORM] = {0}, at45[NFORM] = {0};
   for (int a = 0; a < NANG && !st; a++) {
     const double deg = 5.0 * a;
     fprintf(c, "%g", deg);
@@ -282,8 +290,8 @@ static int angle_figure(struct vsph_report *R) {
       if (!st) st = vsph_dissipation_compute(&dp, &r);
       if (st) break;
       fprintf(c, ",%.6e", r.lattice_error);
-      if (form == VSPH_VISCOUS_MGF && a == 0) mgf0 = r.lattice_error;
-      if (form == VSPH_VISCOUS_MGF && a == 9) mgf45 = r.lattice_error;
+      if (a == 0) at0[form] = r.lattice_error;
+      if (a == 9) at45[form] = r.lattice_error;
     }
     fprintf(c, "\n");
   }
@@ -292,8 +300,13 @@ static int angle_figure(struct vsph_report *R) {
     return st;
   }
   if ((st = vsph_csv_close(c, R->dir, name))) return st;
-  vsph_text_set(&R->tv, "mgf0", "%+.2f", 100 * mgf0);
-  vsph_text_set(&R->tv, "mgf45", "%+.2f", 100 * mgf45);
+  for (int form = 0; form < NFORM; form++) {
+    char key[32];
+    snprintf(key, sizeof key, "%s0", vsph_viscous_name(form));
+    vsph_text_set(&R->tv, key, "%+.2f", 100 * at0[form]);
+    snprintf(key, sizeof key, "%s45", vsph_viscous_name(form));
+    vsph_text_set(&R->tv, key, "%+.2f", 100 * at45[form]);
+  }
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
   if ((st = vsph_report_say(R, "dissipation.angle_head"))) return st;
   struct vsph_plot pl;
