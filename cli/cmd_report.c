@@ -165,90 +165,21 @@ static int judge_inputs(void) {
   return 0;
 }
 
-int vsph_cmd_report_main(int argc, char **argv) {
-  const char *dir = "reports/out", *only = NULL;
-  const char *partition = NULL, *limit = NULL, *budget = NULL, *archive = NULL;
-  const char *skip = NULL, *beside = NULL, *from = NULL, *fv = NULL;
-  int full = 0, plan = 0, slurm = 0, assemble = 0;
-  size_t jobs = 0, threads = 0;
-  const struct vsph_args_spec own[] = {
-      {"--out", VSPH_ARGS_STRING, &dir, "DIR",
-       "output folder (default reports/out)"},
-      {"--only", VSPH_ARGS_STRING, &only, "P[,P]",
-       "only these parts (see below); report.md gathers every part "
-       "present; PART:SCENE (scenes, convergence, speed) limits those parts "
-       "to one scene, e.g. scenes:vortex-patch"},
-      {"--full", VSPH_ARGS_FLAG, &full, NULL,
-       "the paper's resolutions and end times (hours)"},
-      {"--plan", VSPH_ARGS_FLAG, &plan, NULL,
-       "print the runs the report needs, one per line (tab-separated: "
-       "cached or missing, folder, key fingerprint, particles, neighbours, "
-       "steps, memory in MiB, the exact command) and stop; writes nothing"},
-      {"--jobs", VSPH_ARGS_SIZE, &jobs, "N",
-       "run the missing runs as N child processes at a time (1-256), each "
-       "`vsph run` or `vsph contact` with its log in DIR/runs/logs; a run "
-       "that fails is listed in DIR/runs/failed.txt and the others go on; "
-       "then assemble"},
-      {"--threads", VSPH_ARGS_SIZE, &threads, "T",
-       "threads of each run with --jobs (default: cores / N, at least 1) "
-       "or CPUs per array task with --slurm (default 1)"},
-      {"--slurm", VSPH_ARGS_FLAG, &slurm, NULL,
-       "submit the missing runs as one Slurm job array (sbatch --array, one "
-       "task per run, memory and time from the largest run's estimate) and "
-       "the assembly as a job after it (afterany); DIR must be on a file "
-       "system every node shares. Scripts, logs and job ids in DIR/slurm"},
-      {"--partition", VSPH_ARGS_STRING, &partition, "P",
-       "with --slurm: the partition"},
-      {"--time", VSPH_ARGS_STRING, &limit, "T",
-       "with --slurm: each task's time limit in Slurm's form (MM, HH:MM:SS, "
-       "D-HH:MM:SS; default: estimated from the largest run)"},
-      {"--assemble", VSPH_ARGS_FLAG, &assemble, NULL,
-       "run nothing: assemble from the cached runs, naming any that is "
-       "missing (the Slurm assembly job)"},
-      {"--budget", VSPH_ARGS_STRING, &budget, "TIME",
-       "run only the missing runs that fit TIME of wall time (90s, 150m, "
-       "2.5h; a plain number is seconds), the costliest first, at the rates "
-       "the cached runs measured, niced, two at a time (or as --jobs says); "
-       "when TIME is spent the runs stop at a checkpoint and the next "
-       "--budget goes on from there; exit 0, and nothing is assembled (a "
-       "FULL report fills over several sittings this way)"},
-      {"--skip-archived", VSPH_ARGS_STRING, &skip, "ADIR",
-       "with --budget: leave out the runs that stand in the run archive "
-       "ADIR (reports/full for the FULL report; judged as --archive's "
-       "entries.md judges them, from $VSPH_ARCHIVE_HISTORY and "
-       "reports/baseline.csv), so a sitting goes on from the archive "
-       "whatever build made it (make full-sitting)"},
-      {"--from-archive", VSPH_ARGS_STRING, &from, "ADIR",
-       "each run DIR lacks that stands in the run archive ADIR (judged as "
-       "for --skip-archived) is read from its entry there instead of run. "
-       "With --full (and --assemble): then ADIR/summary.md gets the "
-       "report's claims and convergence tables (make full-report), and a "
-       "part that draws snapshots leaves out the pictures of a run read "
-       "from the archive, which keeps none, and says so. A quick report "
-       "(make report gives it reports/full) still makes the runs whose "
-       "snapshots it draws and, with its scenes part, its baseline rows' "
-       "runs"},
-      {"--beside", VSPH_ARGS_STRING, &beside, "ADIR",
-       "the summary shows, beside the quick ladder's finest run of each "
-       "scene and formulation, the run at the paper's resolution from the "
-       "run archive ADIR (reports/full; make report gives it), with "
-       "whether it stands (judged as --archive's entries.md judges it)"},
-      {"--fv", VSPH_ARGS_STRING, &fv, "FDIR",
-       "the committed finite-volume references the stretching square and "
-       "the cavity are judged against (OpenFOAM runs that make reference "
-       "made; reference/README.md): default reference/data when it is a "
-       "folder here; none: without them (their rows say not tested)"},
-      {"--archive", VSPH_ARGS_STRING, &archive, "ADIR",
-       "run nothing: store the sealed runs of DIR/runs in the run archive "
-       "ADIR (reports/full for the FULL report): of each, what the parts "
-       "read (energy.csv, run.json, profiles), not its snapshots, as a "
-       "folder sealed under the run's own key (version, source hash, "
-       "settings); runs already there are kept, unended ones are named and "
-       "left out; then ADIR/index.tsv. The commit of entries made by this "
-       "build's sources is $VSPH_COMMIT (make archive sets it)"}};
-  char about[2048];
+/* What the command line asked for. */
+struct opts {
+  const char *dir, *only, *partition, *limit, *budget, *archive;
+  const char *skip, *beside, *from, *fv;
+  int full, plan, slurm, assemble;
+  size_t jobs, threads;
+  int pool, own_threads; /* --jobs, --threads given */
+  double budget_s;       /* --budget in seconds (0: none) */
+  const char *fv_dir;    /* the finite-volume references, or NULL */
+};
+
+/* The help's text: what the report writes, then each part. */
+static void about_text(char *about, size_t size) {
   size_t len = (size_t)snprintf(
-      about, sizeof about, "%s",
+      about, size, "%s",
       "Run the suite and write to DIR: report.md, report.html\n"
       "(self-contained: figures embedded, as SVG), the CSV behind every\n"
       "table and figure, the figures (fig_*.png, .svg and .pdf beside\n"
@@ -263,9 +194,91 @@ int vsph_cmd_report_main(int argc, char **argv) {
       "a time, or as N processes (--jobs N), or on Slurm (--slurm), then\n"
       "the report is assembled. A stopped report resumes: finished runs\n"
       "are cached, a half-written one is redone. Parts:");
-  for (size_t p = 0; p < vsph_report_part_count() && len < sizeof about; p++)
-    len += (size_t)snprintf(about + len, sizeof about - len, "\n  %-12s %s",
+  for (size_t p = 0; p < vsph_report_part_count() && len < size; p++)
+    len += (size_t)snprintf(about + len, size - len, "\n  %-12s %s",
                             vsph_report_part_name(p), vsph_report_part_what(p));
+}
+
+/* The command line into @p o: -1 to go on, else the exit status (help,
+ * a bad option). */
+static int parse(struct opts *o, int argc, char **argv) {
+  const struct vsph_args_spec own[] = {
+      {"--out", VSPH_ARGS_STRING, &o->dir, "DIR",
+       "output folder (default reports/out)"},
+      {"--only", VSPH_ARGS_STRING, &o->only, "P[,P]",
+       "only these parts (see below); report.md gathers every part "
+       "present; PART:SCENE (scenes, convergence, speed) limits those parts "
+       "to one scene, e.g. scenes:vortex-patch"},
+      {"--full", VSPH_ARGS_FLAG, &o->full, NULL,
+       "the paper's resolutions and end times (hours)"},
+      {"--plan", VSPH_ARGS_FLAG, &o->plan, NULL,
+       "print the runs the report needs, one per line (tab-separated: "
+       "cached or missing, folder, key fingerprint, particles, neighbours, "
+       "steps, memory in MiB, the exact command) and stop; writes nothing"},
+      {"--jobs", VSPH_ARGS_SIZE, &o->jobs, "N",
+       "run the missing runs as N child processes at a time (1-256), each "
+       "`vsph run` or `vsph contact` with its log in DIR/runs/logs; a run "
+       "that fails is listed in DIR/runs/failed.txt and the others go on; "
+       "then assemble"},
+      {"--threads", VSPH_ARGS_SIZE, &o->threads, "T",
+       "threads of each run with --jobs (default: cores / N, at least 1) "
+       "or CPUs per array task with --slurm (default 1)"},
+      {"--slurm", VSPH_ARGS_FLAG, &o->slurm, NULL,
+       "submit the missing runs as one Slurm job array (sbatch --array, one "
+       "task per run, memory and time from the largest run's estimate) and "
+       "the assembly as a job after it (afterany); DIR must be on a file "
+       "system every node shares. Scripts, logs and job ids in DIR/slurm"},
+      {"--partition", VSPH_ARGS_STRING, &o->partition, "P",
+       "with --slurm: the partition"},
+      {"--time", VSPH_ARGS_STRING, &o->limit, "T",
+       "with --slurm: each task's time limit in Slurm's form (MM, HH:MM:SS, "
+       "D-HH:MM:SS; default: estimated from the largest run)"},
+      {"--assemble", VSPH_ARGS_FLAG, &o->assemble, NULL,
+       "run nothing: assemble from the cached runs, naming any that is "
+       "missing (the Slurm assembly job)"},
+      {"--budget", VSPH_ARGS_STRING, &o->budget, "TIME",
+       "run only the missing runs that fit TIME of wall time (90s, 150m, "
+       "2.5h; a plain number is seconds), the costliest first, at the rates "
+       "the cached runs measured, niced, two at a time (or as --jobs says); "
+       "when TIME is spent the runs stop at a checkpoint and the next "
+       "--budget goes on from there; exit 0, and nothing is assembled (a "
+       "FULL report fills over several sittings this way)"},
+      {"--skip-archived", VSPH_ARGS_STRING, &o->skip, "ADIR",
+       "with --budget: leave out the runs that stand in the run archive "
+       "ADIR (reports/full for the FULL report; judged as --archive's "
+       "entries.md judges them, from $VSPH_ARCHIVE_HISTORY and "
+       "reports/baseline.csv), so a sitting goes on from the archive "
+       "whatever build made it (make full-sitting)"},
+      {"--from-archive", VSPH_ARGS_STRING, &o->from, "ADIR",
+       "each run DIR lacks that stands in the run archive ADIR (judged as "
+       "for --skip-archived) is read from its entry there instead of run. "
+       "With --full (and --assemble): then ADIR/summary.md gets the "
+       "report's claims and convergence tables (make full-report), and a "
+       "part that draws snapshots leaves out the pictures of a run read "
+       "from the archive, which keeps none, and says so. A quick report "
+       "(make report gives it reports/full) still makes the runs whose "
+       "snapshots it draws and, with its scenes part, its baseline rows' "
+       "runs"},
+      {"--beside", VSPH_ARGS_STRING, &o->beside, "ADIR",
+       "the summary shows, beside the quick ladder's finest run of each "
+       "scene and formulation, the run at the paper's resolution from the "
+       "run archive ADIR (reports/full; make report gives it), with "
+       "whether it stands (judged as --archive's entries.md judges it)"},
+      {"--fv", VSPH_ARGS_STRING, &o->fv, "FDIR",
+       "the committed finite-volume references the stretching square and "
+       "the cavity are judged against (OpenFOAM runs that make reference "
+       "made; reference/README.md): default reference/data when it is a "
+       "folder here; none: without them (their rows say not tested)"},
+      {"--archive", VSPH_ARGS_STRING, &o->archive, "ADIR",
+       "run nothing: store the sealed runs of DIR/runs in the run archive "
+       "ADIR (reports/full for the FULL report): of each, what the parts "
+       "read (energy.csv, run.json, profiles), not its snapshots, as a "
+       "folder sealed under the run's own key (version, source hash, "
+       "settings); runs already there are kept, unended ones are named and "
+       "left out; then ADIR/index.tsv. The commit of entries made by this "
+       "build's sources is $VSPH_COMMIT (make archive sets it)"}};
+  char about[2048];
+  about_text(about, sizeof about);
   const struct vsph_args_cmd c = {CMD,
                                   "[--out DIR] [--only PART[,PART...]] "
                                   "[--full] [--plan | --jobs N | --slurm "
@@ -284,11 +297,24 @@ int vsph_cmd_report_main(int argc, char **argv) {
   if (rc >= 0) return vsph_args_finish(CMD, rc);
   /* given: an option named in argv (its value is then parsed and valid;
    * 0 is a value here, and refused) */
-  int pool = 0, own_threads = 0;
   for (int k = 1; k < argc; k++) {
-    pool |= !strcmp(argv[k], "--jobs");
-    own_threads |= !strcmp(argv[k], "--threads");
+    o->pool |= !strcmp(argv[k], "--jobs");
+    o->own_threads |= !strcmp(argv[k], "--threads");
   }
+  return -1;
+}
+
+/* The modes and the options that go with them. */
+static int check_modes(const struct opts *o) {
+  const char *partition = o->partition;
+  const char *limit = o->limit;
+  const int plan = o->plan;
+  const int slurm = o->slurm;
+  const int assemble = o->assemble;
+  const size_t jobs = o->jobs;
+  const size_t threads = o->threads;
+  const int pool = o->pool;
+  const int own_threads = o->own_threads;
   if (plan + slurm + assemble + pool > 1)
     return vsph_args_fail(CMD,
                           "--plan, --jobs, --slurm and --assemble exclude one "
@@ -315,7 +341,15 @@ int vsph_cmd_report_main(int argc, char **argv) {
                           "--time '%.16s' is not a Slurm time limit (MM, "
                           "HH:MM:SS or D-HH:MM:SS)",
                           limit);
-  double budget_s = 0.0;
+  return 0;
+}
+
+/* --budget into seconds (o->budget_s). */
+static int check_budget(struct opts *o) {
+  const char *budget = o->budget;
+  const int plan = o->plan;
+  const int slurm = o->slurm;
+  const int assemble = o->assemble;
   if (budget) {
     char *end = NULL;
     errno = 0;
@@ -324,7 +358,8 @@ int vsph_cmd_report_main(int argc, char **argv) {
                         : !strcmp(end, "m")                   ? 60.0
                         : !strcmp(end, "h")                   ? 3600.0
                                                               : -1.0;
-    budget_s = v * unit;
+    o->budget_s = v * unit;
+    const double budget_s = o->budget_s;
     /* digits as people write them: no sign, blank, hex, inf or nan */
     const size_t plain = strspn(budget, "0123456789.eE+-");
     if (end == budget || errno || unit < 0.0 || !(budget_s >= 1.0) ||
@@ -339,6 +374,21 @@ int vsph_cmd_report_main(int argc, char **argv) {
                             "--budget runs the runs here: not with --plan, "
                             "--slurm or --assemble");
   }
+  return 0;
+}
+
+/* The run archives read, and the finite-volume references (o->fv_dir). */
+static int check_archives(struct opts *o) {
+  const char *dir = o->dir;
+  const char *budget = o->budget;
+  const char *skip = o->skip;
+  const char *beside = o->beside;
+  const char *from = o->from;
+  const char *fv = o->fv;
+  const int full = o->full;
+  const int plan = o->plan;
+  const int slurm = o->slurm;
+  const int assemble = o->assemble;
   if (skip) {
     if (!budget) return vsph_args_fail(CMD, "--skip-archived needs --budget");
     int bad = archive_input("--skip-archived", skip, dir);
@@ -367,62 +417,73 @@ int vsph_cmd_report_main(int argc, char **argv) {
     if (bad) return bad;
   }
   /* the finite-volume references: a folder, or none */
-  const char *fv_dir = NULL;
   struct stat fs;
   if (fv && strcmp(fv, "none")) {
     if (!*fv || strlen(fv) > 400 || stat(fv, &fs) != 0 || !S_ISDIR(fs.st_mode))
       return vsph_args_fail(CMD, "--fv: '%.400s' is not a folder", fv);
-    fv_dir = fv;
+    o->fv_dir = fv;
   } else if (!fv && stat("reference/data", &fs) == 0 && S_ISDIR(fs.st_mode))
-    fv_dir = "reference/data";
-  if (archive) {
-    if (fv || beside || skip || from || plan || slurm || assemble || pool ||
-        budget || only || full)
-      return vsph_args_fail(CMD,
-                            "--archive runs nothing: it takes --out alone");
-    if (!*archive || strlen(archive) > 400)
-      return vsph_args_fail(CMD,
-                            "--archive: a folder name of 1-400 "
-                            "characters");
-    const char *commit = getenv("VSPH_COMMIT");
-    if (commit && !*commit) commit = NULL; /* none known */
-    if (commit &&
-        (strlen(commit) > 64 || !only_of(commit,
-                                         "0123456789abcdefghijklmnopqrstuvwxyz"
-                                         "ABCDEFGHIJKLMNOPQRSTUVWXYZ._-")))
-      return vsph_args_fail(CMD, "VSPH_COMMIT '%.64s' is not a commit id",
-                            commit);
-    /* what the summary reads, judged before anything is written */
-    const int bad = judge_inputs();
-    if (bad) return bad;
-    struct vsph_jobs full_plan; /* the FULL plan: the frames and the judge */
-    memset(&full_plan, 0, sizeof full_plan);
-    struct vsph_archive_counts n;
-    int st = vsph_report_plan_jobs(dir, 1, &full_plan);
-    if (!st) st = store(dir, &full_plan, archive, commit, &n);
-    if (st) {
-      vsph_jobs_plan_free(&full_plan);
-      return vsph_args_status(CMD, st);
-    }
-    fprintf(stderr,
-            "vsph report: archived %zu runs of %s in %s (%zu already there, "
-            "%zu left out: unended, damaged, oddly named or older than "
-            "their entries, each said "
-            "above)\n",
-            n.stored, dir, archive, n.kept, n.skipped);
-    st = summarise(&full_plan, archive, commit);
-    vsph_jobs_plan_free(&full_plan);
-    if (st) return vsph_args_status(CMD, st);
-    return vsph_args_finish(CMD, 0);
-  }
-  if (slurm && !on_path("sbatch"))
+    o->fv_dir = "reference/data";
+  return 0;
+}
+
+/* --archive: the sealed runs of the output folder into the run archive,
+ * then its summary; nothing is run. */
+static int archive_main(const struct opts *o) {
+  const char *dir = o->dir;
+  const char *only = o->only;
+  const char *budget = o->budget;
+  const char *archive = o->archive;
+  const char *skip = o->skip;
+  const char *beside = o->beside;
+  const char *from = o->from;
+  const char *fv = o->fv;
+  const int full = o->full;
+  const int plan = o->plan;
+  const int slurm = o->slurm;
+  const int assemble = o->assemble;
+  const int pool = o->pool;
+  if (fv || beside || skip || from || plan || slurm || assemble || pool ||
+      budget || only || full)
+    return vsph_args_fail(CMD, "--archive runs nothing: it takes --out alone");
+  if (!*archive || strlen(archive) > 400)
     return vsph_args_fail(CMD,
-                          "--slurm needs Slurm's sbatch on PATH, and it is "
-                          "not there");
-  if (strlen(dir) > 400)
-    return vsph_args_fail(CMD, "--out: the folder's name is too long");
-  struct vsph_report_props rp = {
-      .dir = dir, .full = full, .parts = 0, .stop = NULL};
+                          "--archive: a folder name of 1-400 "
+                          "characters");
+  const char *commit = getenv("VSPH_COMMIT");
+  if (commit && !*commit) commit = NULL; /* none known */
+  if (commit &&
+      (strlen(commit) > 64 || !only_of(commit,
+                                       "0123456789abcdefghijklmnopqrstuvwxyz"
+                                       "ABCDEFGHIJKLMNOPQRSTUVWXYZ._-")))
+    return vsph_args_fail(CMD, "VSPH_COMMIT '%.64s' is not a commit id",
+                          commit);
+  /* what the summary reads, judged before anything is written */
+  const int bad = judge_inputs();
+  if (bad) return bad;
+  struct vsph_jobs full_plan; /* the FULL plan: the frames and the judge */
+  memset(&full_plan, 0, sizeof full_plan);
+  struct vsph_archive_counts n;
+  int st = vsph_report_plan_jobs(dir, 1, &full_plan);
+  if (!st) st = store(dir, &full_plan, archive, commit, &n);
+  if (st) {
+    vsph_jobs_plan_free(&full_plan);
+    return vsph_args_status(CMD, st);
+  }
+  fprintf(stderr,
+          "vsph report: archived %zu runs of %s in %s (%zu already there, "
+          "%zu left out: unended, damaged, oddly named or older than "
+          "their entries, each said "
+          "above)\n",
+          n.stored, dir, archive, n.kept, n.skipped);
+  st = summarise(&full_plan, archive, commit);
+  vsph_jobs_plan_free(&full_plan);
+  if (st) return vsph_args_status(CMD, st);
+  return vsph_args_finish(CMD, 0);
+}
+
+/* --only PART[,PART...] (PART:SCENE) into rp's parts and scenes. */
+static int only_parts(const char *only, struct vsph_report_props *rp) {
   if (only) {
     char buf[256];
     if (strlen(only) >= sizeof buf)
@@ -447,16 +508,36 @@ int vsph_cmd_report_main(int argc, char **argv) {
                                 "--only %s:%s: only scenes, convergence and "
                                 "speed take a scene",
                                 tok, colon + 1);
-        rp.scenes |= 1u << s;
+        rp->scenes |= 1u << s;
       }
       const int p = vsph_report_part_find(tok);
       if (p < 0)
         return vsph_args_fail(CMD, "unknown part '%s' (see --help)", tok);
-      rp.parts |= 1ul << p;
+      rp->parts |= 1ul << p;
     }
-    if (!rp.parts)
+    if (!rp->parts)
       return vsph_args_fail(CMD, "--only names no part (see --help)");
   }
+  return 0;
+}
+
+/* The report itself, as the options say; its exit status. */
+static int run_report(const struct opts *o, struct vsph_report_props *rp) {
+  const char *only = o->only;
+  const char *partition = o->partition;
+  const char *limit = o->limit;
+  const char *skip = o->skip;
+  const char *beside = o->beside;
+  const char *from = o->from;
+  const int plan = o->plan;
+  const int slurm = o->slurm;
+  const int assemble = o->assemble;
+  const size_t jobs = o->jobs;
+  const size_t threads = o->threads;
+  const int pool = o->pool;
+  const int own_threads = o->own_threads;
+  const double budget_s = o->budget_s;
+  const char *fv_dir = o->fv_dir;
   /* vsph itself, for the child processes and the Slurm scripts */
   char exe[PATH_MAX];
   const ssize_t ne = readlink("/proc/self/exe", exe, sizeof exe - 1);
@@ -465,23 +546,23 @@ int vsph_cmd_report_main(int argc, char **argv) {
     return vsph_args_status(CMD, VSPH_EIO);
   }
   exe[ne] = '\0';
-  rp.exe = exe;
-  rp.mode = plan       ? VSPH_REPORT_PLAN
-            : pool     ? VSPH_REPORT_POOL
-            : slurm    ? VSPH_REPORT_SLURM
-            : assemble ? VSPH_REPORT_ASSEMBLE
-                       : VSPH_REPORT_LOCAL;
-  rp.plan_out = stdout;
-  rp.jobs = pool ? jobs : 0;
+  rp->exe = exe;
+  rp->mode = plan       ? VSPH_REPORT_PLAN
+             : pool     ? VSPH_REPORT_POOL
+             : slurm    ? VSPH_REPORT_SLURM
+             : assemble ? VSPH_REPORT_ASSEMBLE
+                        : VSPH_REPORT_LOCAL;
+  rp->plan_out = stdout;
+  rp->jobs = pool ? jobs : 0;
   const size_t cores = (size_t)omp_get_num_procs();
-  rp.threads = own_threads ? threads
-               : slurm     ? 1
-               : pool      ? (cores / jobs > 0 ? cores / jobs : 1)
-                           : 1;
-  rp.partition = partition;
-  rp.time = limit;
-  rp.only = only;
-  rp.budget_s = budget_s;
+  rp->threads = own_threads ? threads
+                : slurm     ? 1
+                : pool      ? (cores / jobs > 0 ? cores / jobs : 1)
+                            : 1;
+  rp->partition = partition;
+  rp->time = limit;
+  rp->only = only;
+  rp->budget_s = budget_s;
   struct stat bs;
   const char *history = getenv("VSPH_ARCHIVE_HISTORY");
   const struct vsph_archive_judge judge = {
@@ -490,17 +571,17 @@ int vsph_cmd_report_main(int argc, char **argv) {
                       ? "reports/baseline.csv"
                       : NULL,
       .commit = NULL};
-  rp.skip_archive = skip;
-  rp.from_archive = from;
-  rp.beside = beside;
-  rp.judge = &judge;
-  rp.fv = fv_dir;
+  rp->skip_archive = skip;
+  rp->from_archive = from;
+  rp->beside = beside;
+  rp->judge = &judge;
+  rp->fv = fv_dir;
   /* SIGINT/SIGTERM: the runs in progress stop at a checkpoint, uncached */
-  const volatile sig_atomic_t *stop = rp.stop = vsph_args_catch_stop();
+  const volatile sig_atomic_t *stop = rp->stop = vsph_args_catch_stop();
   /* but for the runs (which stop after a checkpoint), a signal ends the
    * report at once: its parts and files are written whole or not at all,
    * and its seal is written last */
-  rp.writing = vsph_args_quick_stop();
+  rp->writing = vsph_args_quick_stop();
   if (budget_s > 0.0) { /* beside the user's own work: lowest priority */
     if (setpriority(PRIO_PROCESS, 0, 19) != 0) /* and its children's */
       fprintf(stderr, "vsph report: cannot lower the priority: %s\n",
@@ -511,7 +592,7 @@ int vsph_cmd_report_main(int argc, char **argv) {
       return vsph_args_status(CMD, VSPH_EIO);
     }
   }
-  const int st = vsph_report_write(&rp);
+  const int st = vsph_report_write(rp);
   if (st == VSPH_EINTR && *stop == SIGALRM) {
     fprintf(stderr,
             "vsph report: the budget of %.0f s is spent; the runs in "
@@ -528,4 +609,24 @@ int vsph_cmd_report_main(int argc, char **argv) {
     return 128 + (int)*stop;
   }
   return st ? vsph_args_status(CMD, st) : vsph_args_finish(CMD, 0);
+}
+
+int vsph_cmd_report_main(int argc, char **argv) {
+  struct opts o = {.dir = "reports/out"};
+  int rc = parse(&o, argc, argv);
+  if (rc >= 0) return rc;
+  if ((rc = check_modes(&o)) || (rc = check_budget(&o)) ||
+      (rc = check_archives(&o)))
+    return rc;
+  if (o.archive) return archive_main(&o);
+  if (o.slurm && !on_path("sbatch"))
+    return vsph_args_fail(CMD,
+                          "--slurm needs Slurm's sbatch on PATH, and it is "
+                          "not there");
+  if (strlen(o.dir) > 400)
+    return vsph_args_fail(CMD, "--out: the folder's name is too long");
+  struct vsph_report_props rp = {
+      .dir = o.dir, .full = o.full, .parts = 0, .stop = NULL};
+  if ((rc = only_parts(o.only, &rp))) return rc;
+  return run_report(&o, &rp);
 }
