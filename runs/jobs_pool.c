@@ -1,0 +1,220 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* The report's missing runs as child processes, N at a time (--jobs N),
+ * each with its log; a failed run is recorded and the others go on. Part
+ * of the jobs module (runs/jobs.c). */
+#define _XOPEN_SOURCE 700 /* realpath */
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "../common/status.h"
+#include "../io/files.h"
+#include "../io/json.h"
+#include "jobs.h"
+#include "jobs_internal.h"
+#include "rundir.h"
+
+extern char **environ; /* POSIX: the application declares it */
+
+/* runs/logs/NAME.log of a job: its folder's last component. */
+static void log_path(const struct vsph_jobs *J, const struct vsph_jobs_job *j,
+                     char *buf, size_t len) {
+  const char *base = strrchr(j->dir, '/');
+  snprintf(buf, len, "%s/runs/logs/%s.log", J->dir, base ? base + 1 : j->dir);
+}
+
+/* Start @p j as a child of @p exe with its output in its log. */
+static pid_t spawn(const struct vsph_jobs *J, const struct vsph_jobs_job *j,
+                   const char *exe, size_t threads) {
+  const char *argv[2 * VSPH_JOBS_NSET + 16];
+  char buf[2][24], logf[700];
+  vsph_jobs_argv(j, exe, threads, buf, argv, sizeof argv / sizeof argv[0]);
+  log_path(J, j, logf, sizeof logf);
+  const int fd = open(logf, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) {
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot open %s: %s", logf,
+                       strerror(errno));
+    return -1;
+  }
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid == 0) { /* the child: async-signal-safe calls only, then exec */
+    /* it stops (after its step, uncached) if the report dies */
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(128 + SIGTERM);
+    if (dup2(fd, 1) < 0 || dup2(fd, 2) < 0) _exit(127);
+    close(fd);
+    execve(exe, (char *const *)argv, environ);
+    static const char msg[] = "vsph report: cannot start the run's command\n";
+    ssize_t w = write(2, msg, sizeof msg - 1);
+    (void)w;
+    _exit(127);
+  }
+  close(fd);
+  if (pid < 0)
+    vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot fork: %s",
+                       strerror(errno));
+  return pid;
+}
+
+/* "ok", or "unstable at t = T" from a run's run.json. */
+static void verdict(const struct vsph_jobs_job *j, char *buf, size_t len) {
+  snprintf(buf, len, "ok");
+  if (j->kind != VSPH_JOBS_RUN) return;
+  char path[600];
+  snprintf(path, sizeof path, "%s/run.json", j->dir);
+  cJSON *o = vsph_json_read(path);
+  if (!o) return;
+  const cJSON *s = cJSON_GetObjectItemCaseSensitive(o, "status");
+  if (cJSON_IsString(s) && strcmp(s->valuestring, "ok"))
+    snprintf(buf, len, "%s at t = %.4g s", s->valuestring,
+             vsph_json_get_number(o, "unstable_time", (double)NAN));
+  cJSON_Delete(o);
+}
+
+/* runs/failed.txt: the runs that did not end, with their logs (removed
+ * when none failed). */
+static int record_failed(const struct vsph_jobs *J,
+                         struct vsph_jobs_job **order, size_t m,
+                         const int *status) {
+  char *text = NULL;
+  size_t len = 0, nf = 0;
+  FILE *f = open_memstream(&text, &len);
+  if (!f) VSPH_FAIL(VSPH_ENOMEM, "cannot list the failed runs");
+  fprintf(f,
+          "# runs of the last vsph report that did not end: folder, "
+          "exit status, log\n");
+  for (size_t k = 0; k < m; k++)
+    if (order[k]->failed) {
+      char logf[700];
+      log_path(J, order[k], logf, sizeof logf);
+      fprintf(f, "%s\t%d\t%s\n", order[k]->dir, status[k], logf);
+      nf++;
+    }
+  fclose(f);
+  char dir[600], path[700];
+  snprintf(dir, sizeof dir, "%s/runs", J->dir);
+  snprintf(path, sizeof path, "%s/failed.txt", dir);
+  int st = VSPH_OK;
+  if (nf)
+    st = vsph_files_write(dir, "failed.txt", text);
+  else if (remove(path) != 0 && errno != ENOENT)
+    st = VSPH_EIO;
+  free(text);
+  return st;
+}
+
+int vsph_jobs_pool(struct vsph_jobs *J, const char *exe, size_t njobs,
+                   size_t threads) {
+  struct vsph_jobs_job **order;
+  const size_t m = jobs_missing(J, &order, njobs);
+  if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
+  char logs[600];
+  snprintf(logs, sizeof logs, "%s/runs/logs", J->dir);
+  int st = vsph_files_mkdir(logs);
+  pid_t *pid = calloc(m ? m : 1, sizeof *pid);
+  int *status = calloc(m ? m : 1, sizeof *status);
+  double *t1 = calloc(m ? m : 1, sizeof *t1);
+  struct vsph_jobs_eta *eta = jobs_eta_start(order, m);
+  if (!st && (!pid || !status || !t1 || !eta)) {
+    st = VSPH_ENOMEM;
+    vsph_status_report(st, __FILE__, __LINE__, "cannot track %zu runs", m);
+  }
+  char na[96];
+  jobs_archived_note(J, na, sizeof na);
+  if (m && !st)
+    fprintf(stderr,
+            "vsph report: %zu of the %zu runs are not in the cache%s; "
+            "running them as %zu processes of %zu threads (logs in %s)\n",
+            m, J->n, na, njobs, threads, logs);
+  const double t0 = omp_get_wtime();
+  size_t next = 0, running = 0, done = 0, nfailed = 0;
+  int stopping = st != VSPH_OK, err = VSPH_OK;
+  while (running > 0 || (next < m && !stopping)) {
+    while (!stopping && next < m && running < njobs) {
+      if ((pid[next] = spawn(J, order[next], exe, threads)) < 0) {
+        err = VSPH_EIO; /* stop the others, as on a signal */
+        pid[next] = 0;
+        break;
+      }
+      t1[next] = omp_get_wtime();
+      eta[next].state = VSPH_JOBS_ETA_RUNNING;
+      fprintf(stderr, "  [%zu/%zu] %s: started, pid %ld (%.0f s elapsed)\n",
+              next + 1, m, order[next]->label, (long)pid[next], t1[next] - t0);
+      running++;
+      next++;
+    }
+    if (!stopping && (err || (J->stop && *J->stop))) { /* pass it on */
+      stopping = 1;
+      fprintf(stderr,
+              "vsph report: stopping; each running run stops at a "
+              "checkpoint (uncached: the next report resumes it)\n");
+      for (size_t k = 0; k < next; k++)
+        if (pid[k] > 0) kill(pid[k], SIGTERM);
+    }
+    int ws;
+    const pid_t w = waitpid(-1, &ws, WNOHANG);
+    if (w == 0 || (w < 0 && errno == EINTR)) {
+      const struct timespec ts = {0, 100000000}; /* 0.1 s */
+      nanosleep(&ts, NULL);
+      continue;
+    }
+    if (w < 0) break; /* no child left */
+    size_t k = 0;
+    while (k < next && pid[k] != w) k++;
+    if (k == next) continue; /* not one of ours */
+    pid[k] = 0;
+    running--;
+    done++;
+    status[k] = WIFEXITED(ws) ? WEXITSTATUS(ws) : 128 + WTERMSIG(ws);
+    order[k]->cached =
+        status[k] == 0 && vsph_rundir_key_matches(order[k]->dir, order[k]->key);
+    const double now = omp_get_wtime(), el = now - t0;
+    eta[k].state = VSPH_JOBS_ETA_DONE; /* a failed run measures nothing */
+    eta[k].ended = el;
+    eta[k].wall = order[k]->cached ? now - t1[k] : 0.0;
+    eta[k].cost = order[k]->cached ? jobs_cost_taken(order[k]) : 0.0;
+    if (order[k]->cached) {
+      char v[96], left[64];
+      verdict(order[k], v, sizeof v);
+      jobs_eta_text(eta, t1, m, njobs, now, left, sizeof left);
+      fprintf(stderr,
+              "  [%zu/%zu] %s: %s, %.1f s; %zu of %zu done, %.0f s "
+              "elapsed%s\n",
+              k + 1, m, order[k]->label, v, now - t1[k], done, m, el, left);
+    } else if (!stopping) {
+      char logf[700];
+      log_path(J, order[k], logf, sizeof logf);
+      order[k]->failed = 1;
+      nfailed++;
+      fprintf(stderr,
+              "  [%zu/%zu] %s: FAILED (exit status %d; see %s); the others "
+              "go on\n",
+              k + 1, m, order[k]->label, status[k], logf);
+    }
+  }
+  if (!st) st = record_failed(J, order, next, status);
+  free(order);
+  free(pid);
+  free(status);
+  free(t1);
+  free(eta);
+  if (st) return st;
+  if (err) return err;
+  if (stopping) return VSPH_EINTR;
+  if (nfailed)
+    VSPH_FAIL(VSPH_EFAIL,
+              "%zu of %zu runs failed (listed in %s/runs/failed.txt with their "
+              "logs); the report is not assembled: mend them and rerun, only "
+              "they run again",
+              nfailed, m, J->dir);
+  return VSPH_OK;
+}
