@@ -14,7 +14,6 @@
 
 #include "../common/status.h"
 #include "grade.h"
-#include "text.h"
 
 /* Most tests and verdicts one claim may hold. */
 #define MAXTESTS 16
@@ -545,13 +544,6 @@ int vsph_claim_grade_text(const char *name, const char *text,
   if (!st) st = grade(name, b, v, row);
   free(b);
   return st;
-}
-
-int vsph_claim_grade(const char *name, const struct vsph_claim_vals *v,
-                     struct vsph_claim_row *row) {
-  const char *text = vsph_text_get(name);
-  if (!text) VSPH_FAIL(VSPH_EINVAL, "no claim %s in reports/claims", name);
-  return vsph_claim_grade_text(name, text, v, row);
 }
 
 int vsph_claim_lint(const char *name, const char *text) {

@@ -103,11 +103,6 @@ int vsph_claim_grade_text(const char *name, const char *text,
                           const struct vsph_claim_vals *v,
                           struct vsph_claim_row *row);
 
-/** @brief The same for the compiled-in block @p name
- *  ("claims/PART.NAME"). */
-int vsph_claim_grade(const char *name, const struct vsph_claim_vals *v,
-                     struct vsph_claim_row *row);
-
 /** @brief Check block @p text's grammar without values (every field, test
  *  and expression well formed; measures not looked up). @return as
  *  vsph_claim_grade_text. */
