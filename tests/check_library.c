@@ -158,8 +158,9 @@ START_TEST(test_exports) {
 END_TEST
 
 /* A bad PREFIX is refused with one line and exit 2, nothing written; an
- * uninstall removes the install's files and leaves a file it did not
- * make. */
+ * uninstall removes the install's files and the folders it made, and
+ * leaves a file it did not make (and the folder that holds it); a second
+ * install over the first keeps the first's folders in its manifest. */
 START_TEST(test_install_refusals) {
   char dir[] = "/tmp/vsph-inst-XXXXXX", script[4096];
   vsph_test_scratch(dir);
@@ -179,12 +180,14 @@ START_TEST(test_install_refusals) {
            "scripts/install '%s' /opt/v 0.2.0 0 build vsph.h common/consts.h "
            "> /dev/null && echo mine > '%s/opt/v/lib/other.so' && "
            "test -L '%s/opt/v/lib/libvsph.so' && "
+           "scripts/install '%s' /opt/v 0.2.0 0 build vsph.h common/consts.h "
+           "> /dev/null && "
            "scripts/install --uninstall '%s' /opt/v > /dev/null && "
-           "cd '%s/opt/v' && find . -type f -o -type l | sort",
-           dir, dir, dir, dir, dir);
+           "cd '%s/opt/v' && find . -type f -o -type l -o -type d | sort",
+           dir, dir, dir, dir, dir, dir);
   struct vsph_test_outcome *o = vsph_test_shell(script);
   ck_assert_msg(o->status == 0, "install/uninstall: %d %s", o->status, o->err);
-  ck_assert_str_eq(o->out, "./lib/other.so\n");
+  ck_assert_str_eq(o->out, ".\n./lib\n./lib/other.so\n");
   /* a file in the way that no install made: refused before anything is
    * written, the file kept */
   snprintf(script, sizeof script,
