@@ -757,18 +757,38 @@ Suite *vsph_channel_suite(void) {
   tcase_add_test(tc, test_series_digest);
   tcase_add_test(tc, test_series_forms_meet);
   tcase_add_test(tc, test_channel_energy);
+  tcase_add_loop_test(tc, test_couette_steady, 0, 3);
+  tcase_add_test(tc, test_poiseuille_meaf);
+  tcase_add_test(tc, test_summation_density);
+  suite_add_tcase(s, tc);
+  return s;
+}
+
+/* solver/walls.c: the ghost walls' velocity (linear extrapolation, its
+ * bins and seam, mirroring at start-up), fixed walls and periodic rest. */
+Suite *vsph_walls_suite(void) {
+  Suite *s = suite_create("walls");
+  TCase *tc = tcase_create("ghosts");
+  tcase_set_timeout(tc, 120);
   tcase_add_test(tc, test_linear_extrapolation);
   tcase_add_loop_test(tc, test_linear_extrapolation_binned, 0, 2);
   tcase_add_test(tc, test_linear_extrapolation_seam);
   tcase_add_test(tc, test_periodic_rest_threads);
-  tcase_add_loop_test(tc, test_leapfrog_order, 0, 2);
   tcase_add_test(tc, test_fixed_walls);
+  tcase_add_loop_test(tc, test_startup_walls, 0, 3);
+  suite_add_tcase(s, tc);
+  return s;
+}
+
+/* solver/integrate.c: the leapfrog's order and viscous step, the fixed
+ * step. */
+Suite *vsph_integrate_suite(void) {
+  Suite *s = suite_create("integrate");
+  TCase *tc = tcase_create("steps");
+  tcase_set_timeout(tc, 120);
+  tcase_add_loop_test(tc, test_leapfrog_order, 0, 2);
   tcase_add_test(tc, test_leapfrog_viscous_step);
   tcase_add_test(tc, test_fixed_step);
-  tcase_add_loop_test(tc, test_couette_steady, 0, 3);
-  tcase_add_loop_test(tc, test_startup_walls, 0, 3);
-  tcase_add_test(tc, test_poiseuille_meaf);
-  tcase_add_test(tc, test_summation_density);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -57,6 +57,7 @@ int main(void) {
   srunner_add_suite(sr, vsph_cells_suite());
   srunner_add_suite(sr, vsph_viscous_suite());
   srunner_add_suite(sr, vsph_pair_suite());
+  srunner_add_suite(sr, vsph_equations_suite());
   srunner_add_suite(sr, vsph_scaling_suite());
   srunner_add_suite(sr, vsph_dissipation_suite());
   srunner_add_suite(sr, vsph_laplacian_suite());
@@ -67,10 +68,14 @@ int main(void) {
   srunner_add_suite(sr, vsph_cli_suite());
   srunner_add_suite(sr, vsph_hardening_suite());
   srunner_add_suite(sr, vsph_channel_suite());
+  srunner_add_suite(sr, vsph_walls_suite());
+  srunner_add_suite(sr, vsph_integrate_suite());
   srunner_add_suite(sr, vsph_cavity_suite());
   srunner_add_suite(sr, vsph_contact_suite());
   srunner_add_suite(sr, vsph_jobs_suite());
-  srunner_add_suite(sr, vsph_runs_suite());
+  srunner_add_suite(sr, vsph_rundir_suite());
+  srunner_add_suite(sr, vsph_folder_suite());
+  srunner_add_suite(sr, vsph_archive_suite());
   srunner_add_suite(sr, vsph_report_suite());
   srunner_add_suite(sr, vsph_vtk_suite());
   srunner_add_suite(sr, vsph_plot_suite());

@@ -1164,6 +1164,18 @@ Suite *vsph_pair_suite(void) {
   while (vsph_scene_get(nwc) && vsph_scene_get(nwc) != &vsph_shear_type) nwc++;
   tcase_add_loop_test(tc, test_solver_equals_operator, 0,
                       (int)nwc * VSPH_VISCOUS_FORM_COUNT);
+  suite_add_tcase(s, tc);
+  return s;
+}
+
+/* solver/equations.c: the right-hand side's sweep and gather loops, the
+ * state equations, XSPH, the pressure reduction and the corrections. */
+Suite *vsph_equations_suite(void) {
+  Suite *s = suite_create("equations");
+  TCase *tc = tcase_create("rhs");
+  tcase_set_timeout(tc, 60);
+  size_t nwc = 0;
+  while (vsph_scene_get(nwc) && vsph_scene_get(nwc) != &vsph_shear_type) nwc++;
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
   tcase_add_loop_test(tc, test_sweep_gather_threads,
                       (int)vsph_scene_count() * 5,

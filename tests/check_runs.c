@@ -1,12 +1,12 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
-/* The runs/ layer: the folder contract (runs/folder: marker, lock, seal)
- * and checkpoint and restart (runs/rundir): a run stopped at any step and
- * resumed ends bitwise the run never stopped; a foreign, damaged or
- * other settings' checkpoint is not used; a folder that is not vsph's, or
- * holds anything vsph does not write, is refused untouched; a second
- * writer is refused with the holder's pid; a seal names the file that
- * broke it. */
+/* The runs/ layer, one suite per module (rundir, folder, archive): the folder
+ * contract (runs/folder: marker, lock, seal) and checkpoint and restart
+ * (runs/rundir): a run stopped at any step and resumed ends bitwise the run
+ * never stopped; a foreign, damaged or other settings' checkpoint is not used;
+ * a folder that is not vsph's, or holds anything vsph does not write, is
+ * refused untouched; a second writer is refused with the holder's pid; a seal
+ * names the file that broke it. */
 #include <check.h>
 #include <cjson/cJSON.h>
 #include <dirent.h>
@@ -1457,8 +1457,10 @@ START_TEST(test_cpu_own_lane) {
 }
 END_TEST
 
-Suite *vsph_runs_suite(void) {
-  Suite *s = suite_create("runs");
+/* runs/rundir.c: restart byte for byte, after a kill or any signal, a
+ * stop during set-up, a report stopped at once, a run's CPU lane. */
+Suite *vsph_rundir_suite(void) {
+  Suite *s = suite_create("rundir");
   TCase *tc = tcase_create("restart");
   tcase_set_timeout(tc, 60);
   tcase_add_loop_test(tc, test_restart_bitwise, 0,
@@ -1472,18 +1474,34 @@ Suite *vsph_runs_suite(void) {
   tcase_add_test(tc, test_report_stops_at_once);
   tcase_add_test(tc, test_cpu_own_lane);
   suite_add_tcase(s, tc);
-  TCase *tf = tcase_create("folder");
+  return s;
+}
+
+/* runs/folder.c: the folder contract (marker, lock, seal, manifest cache),
+ * a report's seal, a Slurm task's signal, the paths a refusal leaves. */
+Suite *vsph_folder_suite(void) {
+  Suite *s = suite_create("folder");
+  TCase *tf = tcase_create("contract");
   tcase_set_timeout(tf, 60);
   tcase_add_test(tf, test_folder_marker);
   tcase_add_test(tf, test_folder_lock);
   tcase_add_test(tf, test_folder_seal);
   tcase_add_test(tf, test_folder_manifest_cache);
-  tcase_add_test(tf, test_archive_store);
-  tcase_add_test(tf, test_archive_frames);
-  tcase_add_test(tf, test_archive_summary);
   tcase_add_test(tf, test_slurm_signal);
   tcase_add_test(tf, test_report_seal);
   tcase_add_test(tf, test_refusal_leaves_paths);
   suite_add_tcase(s, tf);
+  return s;
+}
+
+/* runs/archive.c: storing sealed runs, their frames, the summary. */
+Suite *vsph_archive_suite(void) {
+  Suite *s = suite_create("archive");
+  TCase *tc = tcase_create("store");
+  tcase_set_timeout(tc, 60);
+  tcase_add_test(tc, test_archive_store);
+  tcase_add_test(tc, test_archive_frames);
+  tcase_add_test(tc, test_archive_summary);
+  suite_add_tcase(s, tc);
   return s;
 }
