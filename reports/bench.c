@@ -188,7 +188,8 @@ static double run_peak_rss(const struct vsph_scene_type *type, int form,
       3.0 * vsph_integrate_dt(s) * (type->cfl > 1.0 ? type->cfl : 1.0);
   *n = s->n_fluid;
   vsph_integrate_free(s);
-  return vsph_jobs_peak_rss(type->name, vsph_viscous_name(form), res, t_end);
+  return vsph_jobs_store_peak_rss(type->name, vsph_viscous_name(form), res,
+                                  t_end);
 }
 
 /* Peak memory per particle of a whole run: the difference of the peaks at

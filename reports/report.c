@@ -108,7 +108,7 @@ static const struct part PARTS[] = {
     {.name = "claims",
      .fn = claims_write,
      .plan = claims_plan,
-     .grade = vsph_report_paper_claims,
+     .grade = vsph_report_claims_grade,
      .what = "the paper's claims beside our figures"},
 };
 #define NPARTS (sizeof PARTS / sizeof PARTS[0])
@@ -141,7 +141,7 @@ int vsph_report_part_find(const char *name) {
 
 /* The claims part reads what every grading part reads. */
 static int claims_plan(struct vsph_report *R) {
-  int st = vsph_report_paper_plan(R);
+  int st = vsph_report_claims_plan(R);
   for (size_t p = 0; p < NPARTS && !st; p++)
     if (PARTS[p].grade && PARTS[p].plan && PARTS[p].plan != claims_plan)
       st = PARTS[p].plan(R);
@@ -165,10 +165,10 @@ static int claims_write(struct vsph_report *R) {
   if (!st) {
     vsph_text_set(&R->tv, "quick_note", "%s",
                   R->runs.full ? "" : vsph_text_get("claims.quick_note"));
-    st = vsph_report_say(R, "claims.head");
+    st = vsph_report_doc_say(R, "claims.head");
   }
-  if (!st) st = vsph_report_claims_table(R);
-  if (!st && R->beside) st = vsph_report_paper_beside(R);
+  if (!st) st = vsph_report_doc_claims_table(R);
+  if (!st && R->beside) st = vsph_report_claims_archived(R);
   return st;
 }
 
@@ -283,15 +283,15 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
   vsph_text_set(tv, "threads", "%d", omp_get_max_threads());
   vsph_text_set(tv, "quick_note", "%s",
                 R->runs.full ? "" : vsph_text_get("report.quick_note"));
-  int st = vsph_report_say(R, "report.head");
+  int st = vsph_report_doc_say(R, "report.head");
   /* the runs a quick report read from the archive: a paragraph of its own
    * (the archive's name is at most 200 characters) */
   vsph_text_set(tv, "nread", "%zu", R->runs.from_archive);
   vsph_text_set(tv, "nrun", "%zu", R->runs.jobs.n);
   vsph_text_set(tv, "archive", "%s", R->runs.archive ? R->runs.archive : "");
   if (!st && !R->runs.full && R->runs.from_archive)
-    st = vsph_report_say(R, "report.quick_archive");
-  if (!st) st = vsph_report_say(R, "report.head_sources");
+    st = vsph_report_doc_say(R, "report.quick_archive");
+  if (!st) st = vsph_report_doc_say(R, "report.head_sources");
   /* every part present, the claims first (the summary); a part's text
    * after its "<!-- appendix -->" mark goes to the appendices at the end */
   char *text[NPARTS] = {0};
@@ -336,7 +336,7 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
       fputs(appendix[p], md);
     }
   for (size_t p = 0; p < NPARTS; p++) free(text[p]);
-  if (!st) st = vsph_report_say(R, "report.facts_head");
+  if (!st) st = vsph_report_doc_say(R, "report.facts_head");
   for (size_t p = 0; p < NPARTS && !st; p++) {
     if (!(want >> p & 1)) continue;
     if (cached[p])
@@ -364,7 +364,7 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
   vsph_text_set(tv, "wait_policy", "%s",
                 vsph_sysinfo_wait_policy(wp, sizeof wp));
   vsph_text_set(tv, "cpu", "%.0f", vsph_sysinfo_cpu_s());
-  if (!st) st = vsph_report_say(R, "report.facts_tail");
+  if (!st) st = vsph_report_doc_say(R, "report.facts_tail");
   R->md = NULL;
   if (st) {
     vsph_files_discard(md, R->dir, "report.md");
@@ -445,8 +445,8 @@ static void report_free(struct vsph_report *R) {
 static int run_missing(struct vsph_report *R,
                        const struct vsph_report_props *rp) {
   if (rp->mode == VSPH_REPORT_POOL)
-    return vsph_jobs_pool(&R->runs.jobs, rp->exe, rp->jobs, rp->threads);
-  return vsph_jobs_local(&R->runs.jobs, omp_get_max_threads());
+    return vsph_jobs_pool_run(&R->runs.jobs, rp->exe, rp->jobs, rp->threads);
+  return vsph_jobs_local_run(&R->runs.jobs, omp_get_max_threads());
 }
 
 /* The assembly alone: every run must be there (checked before anything
@@ -807,7 +807,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
   if (!st && rp->mode == VSPH_REPORT_SLURM) {
     const struct vsph_jobs_slurm s = {rp->exe, rp->partition, rp->time,
                                       rp->threads, rp->only};
-    st = vsph_jobs_slurm(&R->runs.jobs, &s);
+    st = vsph_jobs_slurm_submit(&R->runs.jobs, &s);
     vsph_jobs_plan_free(&R->runs.jobs);
     report_free(R);
     return st;

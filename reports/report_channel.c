@@ -447,7 +447,8 @@ static int cavity_umin(struct vsph_report *R, const struct vsph_jobs_run *r,
                        int Re, double *mean, double *swing) {
   *mean = *swing = (double)NAN;
   if (!r->ok) return VSPH_OK;
-  struct vsph_csv *t = vsph_jobs_table(&R->runs.jobs, r->dir, "centreline.csv");
+  struct vsph_csv *t =
+      vsph_jobs_store_table(&R->runs.jobs, r->dir, "centreline.csv");
   if (!t) return VSPH_EIO;
   const double *tt = vsph_csv_column(t, "t"), *v = vsph_csv_column(t, "vel");
   struct vsph_references_ghia g;
@@ -479,7 +480,8 @@ static int p003_profile(struct vsph_report *R, const struct vsph_jobs_run *r,
       (struct vsph_references_zigzag){(double)NAN, (double)NAN, (double)NAN, 0};
   *back = (double)NAN;
   if (!r->ok) return VSPH_OK;
-  struct vsph_csv *t = vsph_jobs_table(&R->runs.jobs, r->dir, "profile.csv");
+  struct vsph_csv *t =
+      vsph_jobs_store_table(&R->runs.jobs, r->dir, "profile.csv");
   const double *tt = t ? vsph_csv_column(t, "t") : NULL,
                *y = t ? vsph_csv_column(t, "y") : NULL,
                *u = t ? vsph_csv_column(t, "u") : NULL,
@@ -622,7 +624,7 @@ static double failure(const struct vsph_jobs_run *r, char *why) {
  * live in its runs/, or in a run archive's entries). */
 static void data_file(const struct vsph_report *R, char *buf, size_t len,
                       const struct vsph_jobs_run *r) {
-  vsph_jobs_data_path(&R->runs.jobs, r->dir, "energy.csv", buf, len);
+  vsph_jobs_store_data_path(&R->runs.jobs, r->dir, "energy.csv", buf, len);
 }
 
 /* gnuplot's "using" for t (times @p tscale) against the column @p name
@@ -664,7 +666,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
     if (!st) st = vsph_plot_add(&pl, file, cols, POIS_LABEL[f], style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);
-  if (!st) st = vsph_report_figure_say(R, &pl, "channel.fig_pois");
+  if (!st) st = vsph_report_doc_figure_say(R, &pl, "channel.fig_pois");
   if (st) return st;
   snprintf(title, sizeof title,
            "Couette start-up (Morris et al.), %zu rows: RMS velocity error "
@@ -685,7 +687,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
     if (!st) st = vsph_plot_add(&pl, file, use, vsph_viscous_label(f), style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);
-  if (!st) st = vsph_report_figure_say(R, &pl, "channel.fig_couette");
+  if (!st) st = vsph_report_doc_figure_say(R, &pl, "channel.fig_couette");
   if (st) return st;
   snprintf(title, sizeof title,
            "Lid-driven cavity: RMS distance from Ghia et al.'s centrelines "
@@ -707,7 +709,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
     if (!st) st = vsph_plot_add(&pl, file, use, label, style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);
-  if (!st) st = vsph_report_figure_say(R, &pl, "channel.fig_cavity");
+  if (!st) st = vsph_report_doc_figure_say(R, &pl, "channel.fig_cavity");
   return st;
 }
 
@@ -1161,41 +1163,41 @@ int vsph_report_channel_write(struct vsph_report *R) {
     return st;
   }
   vsph_text_set(&R->tv, "res", "%zu", c.res_p);
-  if ((st = vsph_report_say(R, "channel.intro"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.intro"))) goto done;
   pois_rows(R, &c);
-  if ((st = vsph_report_say(R, "channel.pois_reading"))) goto done;
-  if ((st = vsph_report_say(R, "channel.xi_head"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.pois_reading"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.xi_head"))) goto done;
   xi_rows(R, &c);
-  if ((st = vsph_report_say(R, "channel.xi_reading"))) goto done;
-  if ((st = vsph_report_say(R, "channel.corr_head"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.xi_reading"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.corr_head"))) goto done;
   corr_rows(R, &c);
-  if ((st = vsph_report_say(R, "channel.corr_reading"))) goto done;
-  if ((st = vsph_report_say(R, "channel.walls_head"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.corr_reading"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.walls_head"))) goto done;
   walls_rows(R, &c);
-  if ((st = vsph_report_say(R, "channel.walls_reading"))) goto done;
-  if ((st = vsph_report_say(R, "channel.eos_head"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.walls_reading"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.eos_head"))) goto done;
   eos_rows(R, &c);
-  if ((st = vsph_report_say(R, "channel.eos_reading"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.eos_reading"))) goto done;
   vsph_text_set(&R->tv, "resm", "%zu", c.res_m);
-  if ((st = vsph_report_say(R, "channel.map_head"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.map_head"))) goto done;
   map_rows(R, &c);
-  if ((st = vsph_report_say(R, "channel.map_reading"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.map_reading"))) goto done;
   vsph_text_set(&R->tv, "resc", "%zu", c.res_c);
   vsph_text_set(&R->tv, "hdxc", "%s",
                 R->runs.full ? "h = 2.2 dx (Vukčević et al.'s)"
                              : "dx/h = 0.637 (Basa et al.'s; FULL: 40 rows, "
                                "h = 2.2 dx as Vukčević et al.)");
-  if ((st = vsph_report_say(R, "channel.couette_head"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.couette_head"))) goto done;
   couette_rows(R, &c);
-  if ((st = vsph_report_say(R, "channel.couette_reading"))) goto done;
-  if ((st = vsph_report_say(R, "channel.p003_head"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.couette_reading"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.p003_head"))) goto done;
   p003_rows(R, &c);
   {
     char t3[1536];
     p003_read(&c, t3, sizeof t3);
     vsph_text_set(&R->tv, "p003read", "%s", t3);
   }
-  if ((st = vsph_report_say(R, "channel.p003_reading"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.p003_reading"))) goto done;
   vsph_text_set(&R->tv, "swdt", "%s",
                 c.nd > 2 ? "4e-4 s (Morris' viscous bound 0.125 h²/nu is "
                            "3.8e-4 s; the leapfrog's own a quarter of it), "
@@ -1203,15 +1205,15 @@ int vsph_report_channel_write(struct vsph_report *R) {
                          : "4e-4 s (Morris' viscous bound 0.125 h²/nu is "
                            "3.8e-4 s; the leapfrog's own a quarter of it) "
                            "and 1e-4 s (FULL adds 2e-5 s, 50 000 steps)");
-  if ((st = vsph_report_say(R, "channel.sweep_head"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.sweep_head"))) goto done;
   sweep_rows(R, &c);
   {
     char tw[1536];
     sweep_read(&c, tw, sizeof tw);
     vsph_text_set(&R->tv, "swread", "%s", tw);
   }
-  if ((st = vsph_report_say(R, "channel.sweep_reading"))) goto done;
-  if ((st = vsph_report_say(R, "channel.cavity_head"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.sweep_reading"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.cavity_head"))) goto done;
   cavity_rows(R, &c);
   {
     char a[240], b[240], w[240];
@@ -1223,7 +1225,7 @@ int vsph_report_channel_write(struct vsph_report *R) {
                   stop_phrase(&c.cav[CAV_P000_W], w, sizeof w));
     vsph_text_set(&R->tv, "p000why", "%s", p000_why(&c));
   }
-  if ((st = vsph_report_say(R, "channel.cavity_reading"))) goto done;
+  if ((st = vsph_report_doc_say(R, "channel.cavity_reading"))) goto done;
   st = figures(R, &c);
   if (!st) st = cavity_fv(R, &c);
 done:
@@ -1274,7 +1276,7 @@ static int pois_claims(struct vsph_report *R, const struct chan *c,
   pois_vals(v, c, r, e);
   vsph_claim_num(v, "de_worse", fmax(r[P_E], r[P_D424]));
   vsph_claim_num(v, "cd_better", fmin(r[P_C], r[P_D496]));
-  int st = vsph_report_grade(R, "claims/channel.pois_best", v);
+  int st = vsph_report_doc_grade(R, "claims/channel.pois_best", v);
   /* C: the lattice factor (0.948 at dx/h = 0.637, test_brookshaw_lattice)
    * under-estimates the Laplacian, so the steady speed comes out high */
   const double u_c = at(&c->pois[P_C], "Px", 0.5),
@@ -1284,21 +1286,21 @@ static int pois_claims(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "uC", u_c);
   vsph_claim_num(v, "uE", u_e);
   vsph_claim_num(v, "flow", u_c / u_e - 1);
-  if (!st) st = vsph_report_grade(R, "claims/channel.pois_c", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.pois_c", v);
   pois_vals(v, c, r, e);
-  if (!st) st = vsph_report_grade(R, "claims/channel.pois_xi", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.pois_xi", v);
   pois_vals(v, c, r, e);
   vsph_claim_num(v, "okA0", (double)c->pois[P_A0].ok);
   vsph_claim_str(v, "stopA", "%s", c->pois[P_A].ok ? "" : " (stopped)");
   vsph_claim_str(v, "stopA0", "%s", c->pois[P_A0].ok ? "" : " (stopped)");
-  if (!st) st = vsph_report_grade(R, "claims/channel.pois_a", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.pois_a", v);
   /* summation against continuity, beside the gap between the models the
    * paper ranks apart on the same metric (E against C) */
   pois_vals(v, c, r, e);
   vsph_claim_num(v, "okEsum", (double)c->pois[P_ESUM].ok);
   vsph_claim_num(v, "ds", fabs(r[P_ESUM] - r[P_E]));
   vsph_claim_num(v, "dm", fabs(r[P_C] - r[P_E]));
-  if (!st) st = vsph_report_grade(R, "claims/channel.pois_density", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.pois_density", v);
   /* B beside D and E, and the transverse agitation v_rms (over U0) at the
    * end: what B's error is made of (section 12: the two-pass forms' null
    * mode) */
@@ -1310,7 +1312,7 @@ static int pois_claims(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "vP", last(&c->pois[P_PVWF], "v_rms"));
   vsph_claim_num(v, "vE", last(&c->pois[P_E], "v_rms"));
   vsph_claim_num(v, "vA0", last(&c->pois[P_A0], "v_rms"));
-  if (!st) st = vsph_report_grade(R, "claims/channel.pois_b", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.pois_b", v);
   return st;
 }
 
@@ -1335,7 +1337,7 @@ static int eos_claims(struct vsph_report *R, const struct chan *c,
     vsph_claim_str(v, "reduced", "%s", gr->ok ? "runs" : "stops");
     vsph_claim_num(v, "r_reduced", last(gr, "u_err_rel"));
     vsph_claim_str(v, "tait", "%s", ta->ok ? "runs" : "stops");
-    st = vsph_report_grade(R, NAME[k], v);
+    st = vsph_report_doc_grade(R, NAME[k], v);
   }
   return st;
 }
@@ -1391,7 +1393,7 @@ static int visc_claims(struct vsph_report *R, const struct chan *c,
   vsph_claim_str(v, "ours_res", "%s",
                  R->runs.full ? "ours its coarsest"
                               : "ours 20 x 20 to 30 s, a quick report's cost");
-  return vsph_report_grade(R, "claims/channel.visc_best", v);
+  return vsph_report_doc_grade(R, "claims/channel.visc_best", v);
 }
 
 /* Basa et al.'s kernel corrections: eq. 38 with none, [0] and [1] for E,
@@ -1413,14 +1415,14 @@ static int corr_claims(struct vsph_report *R, const struct chan *c,
     }
   vsph_claim_num(v, "res", (double)c->res_p);
   vsph_claim_str(v, "pois_setup", "%s", POIS_SETUP);
-  int st = vsph_report_grade(R, "claims/channel.corr_small", v);
+  int st = vsph_report_doc_grade(R, "claims/channel.corr_small", v);
   vsph_claim_clear(v);
   vsph_claim_num(v, "res", (double)c->res_p);
   vsph_claim_str(v, "pois_setup", "%s", POIS_SETUP);
   vsph_claim_num(v, "rA", r[P_A]);
   vsph_claim_num(v, "rA0", r[P_A0]);
   vsph_claim_num(v, "a_ratio", r[P_A0] / r[P_A]);
-  if (!st) st = vsph_report_grade(R, "claims/channel.corr_ab", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.corr_ab", v);
   return st;
 }
 
@@ -1456,7 +1458,7 @@ static int map_plateau_claim(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "t_plateau", tf - 1.0);
   vsph_claim_num(v, "t_fail", tf);
   vsph_claim_num(v, "jump", vfail / med);
-  return vsph_report_grade(R, "claims/channel.map_plateau", v);
+  return vsph_report_doc_grade(R, "claims/channel.map_plateau", v);
 }
 
 /* The long-time robustness over Re (Basa §6.1.4, Fig. 5 and 7): the first
@@ -1490,7 +1492,7 @@ static int map_claims(struct vsph_report *R, const struct chan *c,
   vsph_claim_str(v, "who", "%s", who >= 0 ? MAP_LABEL[who] : "none");
   vsph_claim_num(v, "held", held);
   vsph_claim_num(v, "first", first);
-  int st = vsph_report_grade(R, "claims/channel.map_failure", v);
+  int st = vsph_report_doc_grade(R, "claims/channel.map_failure", v);
   if (!st) st = map_plateau_claim(R, c, v);
   map_vals(R, c, v);
   vsph_claim_num(v, "sE", score[MAP_E]);
@@ -1498,7 +1500,7 @@ static int map_claims(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "sC", score[MAP_C]);
   vsph_claim_num(v, "sA0", score[MAP_A0]);
   vsph_claim_num(v, "sB", score[MAP_B]);
-  if (!st) st = vsph_report_grade(R, "claims/channel.map_robust", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.map_robust", v);
   return st;
 }
 
@@ -1536,7 +1538,7 @@ static int visc02_claim(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "t_end", t_end);
   vsph_claim_num(v, "t_coarse", CAV[CAV_V01].t_end);
   vsph_claim_num(v, "coarse", coarse);
-  return vsph_report_grade(R, "claims/channel.visc02", v);
+  return vsph_report_doc_grade(R, "claims/channel.visc02", v);
 }
 
 static int untested_claims(struct vsph_report *R, const struct chan *c,
@@ -1549,7 +1551,7 @@ static int untested_claims(struct vsph_report *R, const struct chan *c,
              visc02 ? "_untested" : "");
     vsph_claim_clear(v);
     st = visc02 && R->runs.full ? visc02_claim(R, c, v)
-                                : vsph_report_grade(R, name, v);
+                                : vsph_report_doc_grade(R, name, v);
   }
   return st;
 }
@@ -1578,7 +1580,7 @@ static int walls_couette_claims(struct vsph_report *R, const struct chan *c,
     vsph_claim_num(v, key[1], at(&c->wall[f][1], "u_err", 0.1 / TSTAR));
     vsph_claim_str(v, key[2], "%s", vsph_viscous_label(f));
   }
-  int st = vsph_report_grade(R, "claims/channel.walls_startup", v);
+  int st = vsph_report_doc_grade(R, "claims/channel.walls_startup", v);
   double worst = 0.0;
   int all_ok = 1;
   for (int f = 0; f < NCOU; f++) { /* A uncorrected: the claim on its own */
@@ -1589,7 +1591,7 @@ static int walls_couette_claims(struct vsph_report *R, const struct chan *c,
   couette_vals(R, c, v);
   vsph_claim_num(v, "all_ok", all_ok);
   vsph_claim_num(v, "worst", worst);
-  if (!st) st = vsph_report_grade(R, "claims/channel.couette", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.couette", v);
   /* early against late: MEAF (model E) and the two-pass B, the paper's
    * family */
   const int fe = VSPH_VISCOUS_MEAF, fb = vsph_viscous_find("twopass");
@@ -1604,7 +1606,7 @@ static int walls_couette_claims(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "b1", b1);
   vsph_claim_num(v, "ratio_e", e0 / e1);
   vsph_claim_num(v, "ratio_b", b0 / b1);
-  if (!st) st = vsph_report_grade(R, "claims/channel.couette_early", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.couette_early", v);
   return st;
 }
 
@@ -1643,7 +1645,7 @@ static int p003_claim(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "growth", e[0] / at(&c->p3[0], "u_err", 0.5));
   vsph_claim_num(v, "gain_e", e[1] / e[4]); /* fixed particles over ghosts */
   vsph_claim_num(v, "gain_b", e[0] / e[5]);
-  return vsph_report_grade(R, "claims/channel.p003", v);
+  return vsph_report_doc_grade(R, "claims/channel.p003", v);
 }
 
 /* Vukcevic et al.'s small oscillations, measured as the rows' zigzag. */
@@ -1669,7 +1671,7 @@ static int p003_osc_claim(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "zmax", fmax(z[0].max, z[2].max));
   vsph_claim_num(v, "ratio_e", z[1].rms / z[0].rms);
   vsph_claim_str(v, "p003_diffs", "%s", P003_DIFFS);
-  return vsph_report_grade(R, "claims/channel.p003_osc", v);
+  return vsph_report_doc_grade(R, "claims/channel.p003_osc", v);
 }
 
 /* The words the sweep's rows share. */
@@ -1694,7 +1696,7 @@ static int p003_sweep_claims(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "nbad", w.nbad);
   vsph_claim_num(v, "ntot", w.ntot);
   vsph_claim_num(v, "c_mixed", w.mixed >= 0 ? SW_C[w.mixed] : (double)NAN);
-  int st = vsph_report_grade(R, "claims/channel.p003_combos", v);
+  int st = vsph_report_doc_grade(R, "claims/channel.p003_combos", v);
   /* their §5: a smaller dt is "more accurate and more stable" */
   if (isfinite(w.acc))
     snprintf(acc, sizeof acc,
@@ -1732,7 +1734,7 @@ static int p003_sweep_claims(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "delayed", delayed);
   vsph_claim_str(v, "dt_run", "%s",
                  c->nd > 2 ? "4e-4 to 2e-5" : "4e-4 and 1e-4");
-  if (!st) st = vsph_report_grade(R, "claims/channel.p003_dt", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.p003_dt", v);
   return st;
 }
 
@@ -1761,7 +1763,7 @@ static int cavity_p000_claim(struct vsph_report *R, const struct chan *c,
                    stop_phrase(&c->cav[RUN[k].q], s, sizeof s));
     vsph_claim_num(v, RUN[k].ok, (double)c->cav[RUN[k].q].ok);
   }
-  return vsph_report_grade(R, "claims/channel.cavity_p000", v);
+  return vsph_report_doc_grade(R, "claims/channel.cavity_p000", v);
 }
 
 /* The words the cavity's rows on Adami et al.'s scheme share. */
@@ -1796,7 +1798,7 @@ static int cavity_claims(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "eD", eD);
   vsph_claim_num(v, "t_plain", c->cav[CAV_PLAIN30].t_unstable);
   vsph_claim_num(v, "t_sum", c->cav[CAV_SUM30].t_unstable);
-  if (!st) st = vsph_report_grade(R, "claims/channel.cavity_re100", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.cavity_re100", v);
   /* a gap below the runs' own swing over the averaging window decides
    * nothing (docs/theory.md section 13) */
   const double sE = cavity_swing(&c->cav[CAV_E30], "u_err"),
@@ -1808,7 +1810,7 @@ static int cavity_claims(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "sD", sD);
   vsph_claim_num(v, "sE", sE);
   vsph_claim_num(v, "swing", fmax(sE, sD));
-  if (!st) st = vsph_report_grade(R, "claims/channel.cavity_d_best", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.cavity_d_best", v);
   const struct vsph_jobs_run *r1 = &c->cav[CAV_E1000];
   cavity_vals(R, v);
   vsph_claim_num(v, "e1", cavity_mean(r1, "u_err"));
@@ -1816,7 +1818,7 @@ static int cavity_claims(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "ek", final(r1, "Ek"));
   vsph_claim_num(v, "ok", (double)r1->ok);
   vsph_claim_num(v, "t_stop", r1->t_unstable);
-  if (!st) st = vsph_report_grade(R, "claims/channel.cavity_re1000", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/channel.cavity_re1000", v);
   return st;
 }
 
@@ -1831,7 +1833,7 @@ static int cavity_ek_claim(struct vsph_report *R, const struct chan *c,
   const struct vsph_fvref_cavity *fv = &R->fv->cav[1];
   vsph_claim_clear(v);
   if (!fv->ok)
-    return vsph_report_grade(R, "claims/channel.cavity_ek_unread", v);
+    return vsph_report_doc_grade(R, "claims/channel.cavity_ek_unread", v);
   int q[16];
   const char *lab[16];
   const size_t n = cavity_re1000(R, q, lab);
@@ -1884,7 +1886,7 @@ static int cavity_ek_claim(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "n", (double)n);
   vsph_claim_num(v, "lo", lo);
   vsph_claim_num(v, "hi", hi);
-  return vsph_report_grade(R, "claims/channel.cavity_ek", v);
+  return vsph_report_doc_grade(R, "claims/channel.cavity_ek", v);
 }
 
 int vsph_report_channel_claims(struct vsph_report *R) {

@@ -330,7 +330,7 @@ static int wave_table(struct vsph_report *R) {
                 R->runs.full ? " (a quarter of the paper's 240)"
                              : " (quick fidelity: make report FULL=1 runs "
                                "H/dx = 60 to 8 s)");
-  int st = vsph_report_say(R, "choices.wave_head");
+  int st = vsph_report_doc_say(R, "choices.wave_head");
   struct wave_fig fig[NVAR][NFORM];
   for (size_t v = 0; v < NVAR && !st; v++) {
     fprintf(R->md, "| %s |", VAR[v].label);
@@ -486,14 +486,14 @@ static int wave_table(struct vsph_report *R) {
            1e3 * sp->excess, 1e3 * sm->excess, 1e3 * fig[V_BASE][P].excess,
            1e3 * b->excess);
   vsph_text_set(&R->tv, "still", "%s", t);
-  return vsph_report_say(R, "choices.wave_tail");
+  return vsph_report_doc_say(R, "choices.wave_tail");
 }
 
 static int null_table(struct vsph_report *R) {
   static const size_t NS[3] = {40, 80, 160};
   FILE *c = vsph_csv_open(R->dir, "choices_null.csv", "form,n40,n80,n160");
   if (!c) return VSPH_EIO;
-  int st = vsph_report_say(R, "choices.null_head");
+  int st = vsph_report_doc_say(R, "choices.null_head");
   /* each form's ratio at the finest square, {{NAME}} for the prose (which
    * quotes the two-pass forms') */
   double fine[VSPH_VISCOUS_FORM_COUNT];
@@ -519,13 +519,13 @@ static int null_table(struct vsph_report *R) {
   fprintf(R->md, "\n");
   for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
     vsph_text_set(&R->tv, vsph_viscous_name(f), "%.2g", fine[f]);
-  return vsph_report_say(R, "choices.null_tail");
+  return vsph_report_doc_say(R, "choices.null_tail");
 }
 
 int vsph_report_choices_write(struct vsph_report *R) {
-  int st = vsph_report_say(R, "choices.intro");
+  int st = vsph_report_doc_say(R, "choices.intro");
   if (!st) st = wave_table(R);
   if (!st) st = null_table(R);
-  if (!st) st = vsph_report_say(R, "choices.planes");
+  if (!st) st = vsph_report_doc_say(R, "choices.planes");
   return st;
 }

@@ -81,7 +81,7 @@ static int scaling_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
   vsph_claim_clear(v);
   for (int f = 0; f < NFORM; f++)
     vsph_claim_num(v, vsph_viscous_name(f), r[1].slope[f]);
-  int st = vsph_report_grade(R, "claims/paper.surface_slopes", v);
+  int st = vsph_report_doc_grade(R, "claims/paper.surface_slopes", v);
   vsph_claim_clear(v);
   for (int f = 0; f < NFORM; f++) {
     double mx = 0.0;
@@ -95,7 +95,7 @@ static int scaling_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
   }
   vsph_claim_num(v, "rounding", rounding);
   vsph_claim_num(v, "meaf", r[0].slope[MEAF]);
-  if (!st) st = vsph_report_grade(R, "claims/paper.rotation", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/paper.rotation", v);
   return st;
 }
 
@@ -133,18 +133,18 @@ static int dissipation_claims(struct vsph_report *R,
                  log2(fabs(d[4].surface_error) / fabs(d[0].surface_error)));
   vsph_claim_num(v, "abs_lat3", fabs(d[3].lattice_error));
   vsph_claim_num(v, "abs_lat43", fabs(d[0].lattice_error));
-  int st = vsph_report_grade(R, "claims/paper.mgf_consistent", v);
+  int st = vsph_report_doc_grade(R, "claims/paper.mgf_consistent", v);
   /* -1 within the discrete sums' own lattice error at this h/dx (MGF's on
    * strain, section 4: about 6 %) */
   vsph_claim_clear(v);
   vsph_claim_num(v, "rel", d[1].rel_error);
   vsph_claim_num(v, "lattice", fabs(d[0].lattice_error));
-  if (!st) st = vsph_report_grade(R, "claims/paper.meaf_limit", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/paper.meaf_limit", v);
   vsph_claim_clear(v);
   vsph_claim_num(v, "rel", d[2].rel_error);
   vsph_claim_num(v, "abs_rel", fabs(d[2].rel_error));
   vsph_claim_num(v, "rounding", VSPH_GRADE_ROUNDING);
-  if (!st) st = vsph_report_grade(R, "claims/paper.pvwf_exact", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/paper.pvwf_exact", v);
   return st;
 }
 
@@ -185,11 +185,11 @@ static int tensor_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
   vsph_claim_num(v, "nk", (double)vsph_kernel_count());
   vsph_claim_num(v, "full", gf[1]);
   vsph_claim_num(v, "half", gh[1]);
-  st = vsph_report_grade(R, "claims/paper.tensor_g", v);
+  st = vsph_report_doc_grade(R, "claims/paper.tensor_g", v);
   vsph_claim_clear(v);
   vsph_claim_num(v, "full", gf[3]);
   vsph_claim_num(v, "half", gh[3]);
-  if (!st) st = vsph_report_grade(R, "claims/paper.tensor_m", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/paper.tensor_m", v);
   if (st) return st;
   /* Appendix B's constants for the untruncated Gaussian in 2-D, C_F =
    * K/(3 sqrt pi) and C_N = 2/sqrt pi, against ours for the renormalised
@@ -214,7 +214,7 @@ static int tensor_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
   vsph_claim_num(v, "rn", C_N / (CN_paper * trunc) - 1.0);
   vsph_claim_num(v, "gn", gh[2]);
   vsph_claim_num(v, "gf", gh[0]);
-  return vsph_report_grade(R, "claims/paper.surface_constants", v);
+  return vsph_report_doc_grade(R, "claims/paper.surface_constants", v);
 }
 
 /* MGF's tangential share bounded while its normal share diverges (App. B,
@@ -251,7 +251,7 @@ static int tangential_claim(struct vsph_report *R, struct vsph_claim_vals *v) {
   else
     vsph_claim_str(v, "tangential", "at most %.1e of it, slope %.2f", tmax,
                    stt);
-  return vsph_report_grade(R, "claims/paper.tangential", v);
+  return vsph_report_doc_grade(R, "claims/paper.tangential", v);
 }
 
 /* MGF implies lambda = mu (4.21): it dissipates an isotropic expansion u
@@ -289,7 +289,7 @@ static int stokes_claim(struct vsph_report *R, struct vsph_claim_vals *v) {
   vsph_claim_num(v, "q", pw[0].P / P_mg);
   vsph_claim_num(v, "pv", fabs(pw[1].P / P_div));
   vsph_claim_num(v, "rounding", VSPH_GRADE_ROUNDING);
-  return vsph_report_grade(R, "claims/paper.stokes", v);
+  return vsph_report_doc_grade(R, "claims/paper.stokes", v);
 }
 
 /* PVWF takes both signs near the surface (VI B, Fig. 6 right), MGF and
@@ -324,7 +324,7 @@ static int signs_claim(struct vsph_report *R, struct vsph_claim_vals *v) {
     }
     vsph_claim_num(v, vsph_viscous_name(fm), changes);
   }
-  return vsph_report_grade(R, "claims/paper.signs", v);
+  return vsph_report_doc_grade(R, "claims/paper.signs", v);
 }
 
 static int theory_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
@@ -333,7 +333,7 @@ static int theory_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
   if (!st) st = stokes_claim(R, v);
   if (!st) st = signs_claim(R, v);
   vsph_claim_clear(v);
-  if (!st) st = vsph_report_grade(R, "claims/paper.vortex_ndn", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/paper.vortex_ndn", v);
   return st;
 }
 
@@ -405,7 +405,7 @@ static int square_initial(struct vsph_report *R, const struct finest *fi,
                  R->runs.full ? ""
                               : " (the paper's 320: the surface deficit "
                                 "falls like h/L)");
-  return vsph_report_grade(R, "claims/paper.square_initial", v);
+  return vsph_report_doc_grade(R, "claims/paper.square_initial", v);
 }
 
 /* The onset of run @p spec's departure (a rung of the square's ladder, or
@@ -486,7 +486,7 @@ static int square_onset_claim(struct vsph_report *R,
                        "at Courant 0.05, as the paper's 320)"
                      : "MGF extrapolated in h and h/dx [reconstructed] (the "
                        "paper's: a finite-volume solution, not read here)");
-  return vsph_report_grade(R, "claims/paper.square_onset", v);
+  return vsph_report_doc_grade(R, "claims/paper.square_onset", v);
 }
 
 /* What moves MGF's level at L/dx 80 (report_fv.c): E_k(1)/E_k(0) of each
@@ -602,7 +602,7 @@ static int square_linear(struct vsph_report *R, const struct finest *fi,
                    "stand-in: MGF extrapolated in h and h/dx "
                    "[reconstructed])");
   }
-  return vsph_report_grade(R, "claims/paper.square_linear", v);
+  return vsph_report_doc_grade(R, "claims/paper.square_linear", v);
 }
 
 /* The share of E_k dissipated by t A0 = 1 (VI B): the finite volume's
@@ -668,7 +668,7 @@ static int square_share(struct vsph_report *R, const struct finest *fi,
   if (!run[PVWF].ok)
     vsph_claim_str(v, "pvwf_stop", " (by t A0 = %.3g: PVWF stopped, unstable)",
                    run[PVWF].t_unstable / L->t_end);
-  return vsph_report_grade(R, "claims/paper.square_share", v);
+  return vsph_report_doc_grade(R, "claims/paper.square_share", v);
 }
 
 static int square_claims(struct vsph_report *R, const struct finest *fi,
@@ -897,7 +897,7 @@ static int vortex_follow(struct vsph_report *R, const struct vortex *vx,
                    : n == 1 ? " stops"
                             : " stop");
   }
-  return vsph_report_grade(R, "claims/paper.vortex_follow", v);
+  return vsph_report_doc_grade(R, "claims/paper.vortex_follow", v);
 }
 
 /* (2) PVWF's E_k error below MGF's (Fig. 5, right: the relative E_k
@@ -916,7 +916,7 @@ static int vortex_below(struct vsph_report *R, const struct vortex *vx,
     num_layout(v, "noise", l,
                fabs(ly->err[l][MGF][K] - ly->err[l][MGF][K - 1]));
   }
-  return vsph_report_grade(R, "claims/paper.vortex_below", v);
+  return vsph_report_doc_grade(R, "claims/paper.vortex_below", v);
 }
 
 /* (3) MGF converges with resolution: its ladder's self-convergence on
@@ -961,7 +961,7 @@ static int vortex_converges(struct vsph_report *R, const struct vortex *vx,
         gname[vsph_grade_converges(s->order_max, s->order_rms, s->partial)]);
   }
   vsph_claim_str(v, "err_moves", "%s", grows ? "does not fall" : "stays level");
-  return vsph_report_grade(R, "claims/paper.vortex_converges", v);
+  return vsph_report_doc_grade(R, "claims/paper.vortex_converges", v);
 }
 
 static int vortex_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
@@ -975,7 +975,7 @@ static int vortex_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
     vsph_claim_clear(v);
     vsph_claim_num(v, "winf", vx->winf);
     vsph_claim_num(v, "re", vx->Re);
-    st = vsph_report_grade(R, "claims/paper.vortex_omega", v);
+    st = vsph_report_doc_grade(R, "claims/paper.vortex_omega", v);
   }
   free(vx);
   return st;
@@ -1159,7 +1159,7 @@ static int wave_linear(struct vsph_report *R, const struct wave *w,
                      sv->span);
     wave_form_words(v, w, f);
   }
-  return vsph_report_grade(R, "claims/paper.wave_linear", v);
+  return vsph_report_doc_grade(R, "claims/paper.wave_linear", v);
 }
 
 /* (2) damping, the paper's way: the energy lost by t_end over Lighthill's
@@ -1221,7 +1221,7 @@ static int wave_damping(struct vsph_report *R, const struct wave *w,
                        : "MEAF is not apart from MGF");
   vsph_claim_str(v, "meaf_is", "%s",
                  fails ? "MEAF fails" : "MEAF is not apart from MGF");
-  return vsph_report_grade(R, "claims/paper.wave_damping", v);
+  return vsph_report_doc_grade(R, "claims/paper.wave_damping", v);
 }
 
 static int wave_claims(struct vsph_report *R, const struct finest *fi,
@@ -1260,7 +1260,7 @@ static int cost_claim(struct vsph_report *R, const struct finest *fi,
   vsph_claim_num(v, "pvwf", c[PVWF] / c[MGF]);
   vsph_claim_num(v, "meaf", c[MEAF] / c[MGF]);
   vsph_claim_num(v, "noise", fabs(c[MEAF] / c[MGF] - 1.0));
-  return vsph_report_grade(R, "claims/paper.cost", v);
+  return vsph_report_doc_grade(R, "claims/paper.cost", v);
 }
 
 /* ------------------------------------- the paper's resolutions, archived */
@@ -1347,15 +1347,15 @@ int vsph_report_claims_beside(struct vsph_report *R,
         snprintf(full, sizeof full,
                  "an entry whose seal does not hold: not read");
         unreadable++;
-      } else if (v != VSPH_ARCHIVE_ABSENT && vsph_jobs_load(dir, &r)) {
+      } else if (v != VSPH_ARCHIVE_ABSENT && vsph_jobs_store_load(dir, &r)) {
         /* whole, but not tables this build reads (said on stderr) */
-        vsph_jobs_run_free(&r);
+        vsph_jobs_store_run_free(&r);
         snprintf(full, sizeof full, "its tables cannot be read (see stderr)");
         unreadable++;
       } else if (v != VSPH_ARCHIVE_ABSENT) {
         held++;
         scene_figure(full, sizeof full, sc, &r, (double)NAN, F->t_end);
-        vsph_jobs_run_free(&r);
+        vsph_jobs_store_run_free(&r);
         stand += v == VSPH_ARCHIVE_STANDS;
         unjudged += v == VSPH_ARCHIVE_UNJUDGED;
         stale += v == VSPH_ARCHIVE_STALE;
@@ -1379,7 +1379,7 @@ int vsph_report_claims_beside(struct vsph_report *R,
     vsph_text_set(&R->tv, "stale", "%zu", stale);
     vsph_text_set(&R->tv, "unreadable", "%zu", unreadable);
     vsph_text_set(&R->tv, "total", "%d", VSPH_REPORT_NSCENES * NFORM);
-    st = vsph_report_say(R, "claims.archive_head");
+    st = vsph_report_doc_say(R, "claims.archive_head");
   }
   if (!st) {
     fputs(rows, R->md);
@@ -1390,7 +1390,7 @@ int vsph_report_claims_beside(struct vsph_report *R,
   return ferror(R->md) ? VSPH_EIO : VSPH_OK;
 }
 
-int vsph_report_paper_plan(struct vsph_report *R) {
+int vsph_report_claims_plan(struct vsph_report *R) {
   int st = vsph_report_runs_plan_ladders(&R->runs, 1);
   if (!st) st = vsph_report_speed_plan_steps(R, 2);
   if (!st) st = vsph_report_choices_plan_rounding(R);
@@ -1408,7 +1408,7 @@ static void free_finest(struct finest *fi) {
     for (int f = 0; f < NFORM; f++) vsph_report_runs_free(&fi->run[sc][f]);
 }
 
-int vsph_report_paper_claims(struct vsph_report *R) {
+int vsph_report_claims_grade(struct vsph_report *R) {
   struct vsph_claim_vals *v = malloc(sizeof *v);
   if (!v) VSPH_FAIL(VSPH_ENOMEM, "cannot grade the paper's claims");
   R->claim_see = "scaling";
@@ -1434,7 +1434,7 @@ int vsph_report_paper_claims(struct vsph_report *R) {
   return st;
 }
 
-int vsph_report_paper_beside(struct vsph_report *R) {
+int vsph_report_claims_archived(struct vsph_report *R) {
   struct finest fi;
   memset(&fi, 0, sizeof fi);
   int st = load_finest(R, &fi);

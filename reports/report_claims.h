@@ -12,17 +12,17 @@
 /* The runs the core paper's claims read: every scene's ladder, whatever
  * the filter, the wave's time-step study and rounding run, the Cartesian
  * disc's, the finite-volume comparison's and the square with delta-SPH. */
-int vsph_report_paper_plan(struct vsph_report *R);
+int vsph_report_claims_plan(struct vsph_report *R);
 
 /* The core paper's claims into R's table (each sets the part that shows
  * it). */
-int vsph_report_paper_claims(struct vsph_report *R);
+int vsph_report_claims_grade(struct vsph_report *R);
 
 /* The table of the paper's resolutions after the claims: beside the quick
  * ladder's finest run of each scene and formulation, the FULL plan's run
  * from the run archive R->beside where it holds it, judged as
  * R->beside_plan says (vsph_report_beside_prepare). */
-int vsph_report_paper_beside(struct vsph_report *R);
+int vsph_report_claims_archived(struct vsph_report *R);
 
 /* The same for given quick runs @p run with their E_k errors @p err (the
  * square's against its Richardson reference). */

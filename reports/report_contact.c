@@ -163,8 +163,8 @@ static int cload(struct vsph_report *R, struct cres *cr) {
     if (!st) st = vsph_jobs_ready(&R->runs.jobs, &j);
     char path[700];
     if (!st)
-      st = vsph_jobs_file(&R->runs.jobs, j.dir, "summary.csv", path,
-                          sizeof path);
+      st = vsph_jobs_store_file(&R->runs.jobs, j.dir, "summary.csv", path,
+                                sizeof path);
     vsph_jobs_free(&j);
     if (!st && vsph_sheartest_csv_load(path, &cr->r[k]))
       VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
@@ -270,7 +270,7 @@ static void numbers(const struct cres *cr, const struct vsph_jobs *J,
                               &nb->ustar_exact[z]);
     char run[700], path[700] = "";
     snprintf(run, sizeof run, "%s/runs/contact-%s", J->dir, CS[k].tag);
-    if (vsph_jobs_file(J, run, "profiles.csv", path, sizeof path))
+    if (vsph_jobs_store_file(J, run, "profiles.csv", path, sizeof path))
       path[0] = '\0'; /* (reported) no fit */
     for (int q = 0; q < 2; q++) {
       nb->ustar[z][q] = nb->rms[z][q] = NAN;
@@ -485,7 +485,7 @@ static void profiles_file(const struct vsph_report *R, const char *tag,
                           char *buf, size_t len) {
   char run[700];
   snprintf(run, sizeof run, "%s/runs/contact-%s", R->runs.jobs.dir, tag);
-  vsph_jobs_data_path(&R->runs.jobs, run, "profiles.csv", buf, len);
+  vsph_jobs_store_data_path(&R->runs.jobs, run, "profiles.csv", buf, len);
 }
 
 static int figures(struct vsph_report *R, const struct cres *cr) {
@@ -512,7 +512,7 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
   if (!st)
     st = vsph_plot_add(&pl, "contact_exact.csv", "1:3",
                        "exact, the measured numerical η", "lines lw 2 dt 2");
-  if (!st) st = vsph_report_figure_say(R, &pl, "contact.fig_zeta");
+  if (!st) st = vsph_report_doc_figure_say(R, &pl, "contact.fig_zeta");
   if (st) return st;
   /* Parshikov Fig. 6b: zeta = 1, self-similar in xi = x sqrt(t0/t) */
   vsph_plot_init(&pl, R->dir, "fig_contact_selfsim",
@@ -531,7 +531,7 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
              vsph_plot_point(q), q + 1);
     st = vsph_plot_add(&pl, file, using, label, style);
   }
-  if (!st) st = vsph_report_figure_say(R, &pl, "contact.fig_selfsim");
+  if (!st) st = vsph_report_doc_figure_say(R, &pl, "contact.fig_selfsim");
   if (st) return st;
   /* Parshikov Fig. 4 / eq. (37): the coefficient against alpha */
   vsph_plot_init(&pl, R->dir, "fig_contact_alpha",
@@ -547,7 +547,7 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
   if (!st)
     st = vsph_plot_add(&pl, "contact_alpha.csv", "1:4", "lattice sum (static)",
                        "linespoints pt 6 dt 3");
-  if (!st) st = vsph_report_figure_say(R, &pl, "contact.fig_alpha");
+  if (!st) st = vsph_report_doc_figure_say(R, &pl, "contact.fig_alpha");
   if (st) return st;
   /* Parshikov Fig. 7: paraffin | glycerol */
   vsph_plot_init(&pl, R->dir, "fig_contact_bimaterial",
@@ -569,7 +569,7 @@ static int figures(struct vsph_report *R, const struct cres *cr) {
     snprintf(style, sizeof style, "lines lw 2 lc %zu", q + 1);
     if (!st) st = vsph_plot_add(&pl, "contact_exact.csv", using, label, style);
   }
-  if (!st) st = vsph_report_figure_say(R, &pl, "contact.fig_bimaterial");
+  if (!st) st = vsph_report_doc_figure_say(R, &pl, "contact.fig_bimaterial");
   return st;
 }
 
@@ -697,7 +697,7 @@ int vsph_report_contact_write(struct vsph_report *R) {
   int st = contact_load(R, &cr, &nb);
   if (st) return st;
   struct vsph_text_vars *tv = &R->tv;
-  if ((st = vsph_report_say(R, "contact.intro"))) return st;
+  if ((st = vsph_report_doc_say(R, "contact.intro"))) return st;
   /* Table: alpha = 0.5, both kernels */
   FILE *md = R->md;
   alpha05_rows(md, &cr, &nb);
@@ -706,24 +706,24 @@ int vsph_report_contact_write(struct vsph_report *R) {
   vsph_text_set(tv, "d10", "%.4f", coef(&cr.r[C_W]));
   vsph_text_set(tv, "wall", "%.1f", cr.r[C_W].wall_s);
   vsph_text_set(tv, "n", "%zu", cr.r[C_W].n);
-  if ((st = vsph_report_say(R, "contact.table_alpha05"))) return st;
+  if ((st = vsph_report_doc_say(R, "contact.table_alpha05"))) return st;
   /* materials */
   materials_rows(md, &cr);
-  if ((st = vsph_report_say(R, "contact.table_materials"))) return st;
+  if ((st = vsph_report_doc_say(R, "contact.table_materials"))) return st;
   /* alpha */
   if ((st = alpha_csv(R, &cr))) return st;
   alpha_rows(md, &cr);
   vsph_text_set(tv, "flat", "%.4f", nb.flat_w);
-  if ((st = vsph_report_say(R, "contact.table_fit"))) return st;
+  if ((st = vsph_report_doc_say(R, "contact.table_fit"))) return st;
   if ((st = exact_csv(R, &cr, &nb))) return st;
   /* the correcting tensor */
   zeta_rows(md, &nb);
   vsph_text_set(tv, "ss0", "%.1f", nb.ss_spread[0]);
   vsph_text_set(tv, "ss1", "%.1f", nb.ss_spread[1]);
-  if ((st = vsph_report_say(R, "contact.table_zeta"))) return st;
+  if ((st = vsph_report_doc_say(R, "contact.table_zeta"))) return st;
   /* two materials */
   bimat_rows(md, &cr, &nb);
-  if ((st = vsph_report_say(R, "contact.table_bimaterial"))) return st;
+  if ((st = vsph_report_doc_say(R, "contact.table_bimaterial"))) return st;
   /* cylinders */
   struct cyl cy;
   memset(&cy, 0, sizeof cy);
@@ -731,21 +731,21 @@ int vsph_report_contact_write(struct vsph_report *R) {
   vsph_text_set(tv, "k2", "%.4f", cy.k2);
   vsph_text_set(tv, "k39", "%.2f", vsph_materials_drag_row(0.5));
   vsph_text_set(tv, "ksa", "%.2f", vsph_materials_drag_square(0.5));
-  if ((st = vsph_report_say(R, "contact.cyl_head"))) return st;
+  if ((st = vsph_report_doc_say(R, "contact.cyl_head"))) return st;
   cyl_rows(md, &cy);
   vsph_text_set(tv, "lin", "%.1f",
                 100 *
                     (cy.ratio[CY_Z05_40] -
                      0.5 * (cy.ratio[CY_Z0_40] + cy.ratio[CY_Z1_40])) /
                     (cy.ratio[CY_Z0_40] - cy.ratio[CY_Z1_40]));
-  if ((st = vsph_report_say(R, "contact.cyl_tail"))) return st;
+  if ((st = vsph_report_doc_say(R, "contact.cyl_tail"))) return st;
   if ((st = figures(R, &cr))) return st;
   /* cost */
   double wall = 0;
   for (int k = 0; k < cr.nc; k++) wall += cr.r[k].wall_s;
   vsph_text_set(tv, "wall_all", "%.0f", wall);
   vsph_text_set(tv, "nruns", "%d", cr.nc);
-  return vsph_report_say(R, "contact.tail");
+  return vsph_report_doc_say(R, "contact.tail");
 }
 
 /* The shear test: the numerical viscosity, its independence of speed, material
@@ -762,7 +762,7 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
   vsph_claim_num(v, "bs", coef(&cr->r[C_BS]));
   vsph_claim_num(v, "klw", nb->klat_w);
   vsph_claim_num(v, "klb", nb->klat_b);
-  int st = vsph_report_grade(R, "claims/contact.eta_num", v);
+  int st = vsph_report_doc_grade(R, "claims/contact.eta_num", v);
   double spread = 0;
   static const int MAT[3] = {C_WATER, C_AL, C_TU};
   for (int k = 0; k < 3; k++)
@@ -771,7 +771,7 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
   vsph_claim_num(v, "r50", coef(&cr->r[C_W50]) / w - 1.0);
   vsph_claim_num(v, "spread", spread);
   vsph_claim_num(v, "rd", coef(&cr->r[C_W20]) / w - 1.0);
-  if (!st) st = vsph_report_grade(R, "claims/contact.eta_linear", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/contact.eta_linear", v);
   /* measured over (37) from the smallest alpha to the largest, its
    * largest departure, and whether it grows at every step */
   static const int A[5] = {C_W, C_A055, C_A06, C_A075, C_A1};
@@ -788,11 +788,11 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
   }
   vsph_claim_num(v, "dev", dev);
   vsph_claim_str(v, "grows", "%s", grows ? "grows steadily" : "drifts");
-  if (!st) st = vsph_report_grade(R, "claims/contact.eta_fit", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/contact.eta_fit", v);
   vsph_claim_clear(v);
   vsph_claim_num(v, "ss0", nb->ss_spread[0]);
   vsph_claim_num(v, "ss1", nb->ss_spread[1]);
-  if (!st) st = vsph_report_grade(R, "claims/contact.self_similar", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/contact.self_similar", v);
   return st;
 }
 
@@ -805,7 +805,7 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb,
   vsph_claim_num(v, "e0", nb->eta_eff[0]);
   vsph_claim_num(v, "e05", nb->eta_eff[1]);
   vsph_claim_num(v, "rel", e1 / 2.3 - 1.0);
-  int st = vsph_report_grade(R, "claims/contact.zeta_one", v);
+  int st = vsph_report_doc_grade(R, "claims/contact.zeta_one", v);
   /* U* = (e_R - e_L)/(e_R + e_L) with e = sqrt(rho eta) on each side
    * (U0 = 1, the sides at -1 and +1): the ratio a = e_R/e_L = (1 + U*)/
    * (1 - U*), so a fitted U* gives the viscosity ratio the particles
@@ -822,10 +822,10 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb,
   vsph_claim_num(v, "du0", 100 * (u0 / ue - 1));
   vsph_claim_num(v, "du1", 100 * (nb->ustar[0][1] / ue - 1));
   vsph_claim_num(v, "dvr", 100 * (1 / (1 + vr) - 1));
-  if (!st) st = vsph_report_grade(R, "claims/contact.two_fluids", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/contact.two_fluids", v);
   vsph_claim_clear(v);
-  if (!st) st = vsph_report_grade(R, "claims/contact.drop", v);
-  if (!st) st = vsph_report_grade(R, "claims/contact.momentum", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/contact.drop", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/contact.momentum", v);
   return st;
 }
 
@@ -857,7 +857,7 @@ static int cyl_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
   }
   vsph_claim_str(v, "resolutions", "%s", full ? "20, 30 and 40" : "20 and 30");
   vsph_claim_str(v, "paper_res", "%s", full ? ", about 60 by its ratios" : "");
-  st = vsph_report_grade(R, "claims/contact.drag", v);
+  st = vsph_report_doc_grade(R, "claims/contact.drag", v);
   /* the 2-D analogue: 1/U against zeta at 20 per diameter, linear? */
   const double i0 = 1.0 / cy.U[CY_Z0_40], i5 = 1.0 / cy.U[CY_Z05_40],
                i1 = 1.0 / cy.U[CY_Z1_40];
@@ -865,9 +865,9 @@ static int cyl_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
   vsph_claim_num(v, "i0", i0 / i1);
   vsph_claim_num(v, "i5", i5 / i1);
   vsph_claim_num(v, "lin", (i5 - 0.5 * (i0 + i1)) / (i0 - i1));
-  if (!st) st = vsph_report_grade(R, "claims/contact.falling_ball", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/contact.falling_ball", v);
   vsph_claim_clear(v);
-  if (!st) st = vsph_report_grade(R, "claims/contact.ball_consistent", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/contact.ball_consistent", v);
   return st;
 }
 

@@ -50,7 +50,7 @@ static int scene(struct vsph_report *R, int sc) {
   /* the ladder's range, not whole decades; ticks at its resolutions */
   ladder_ticks(pl.extra, sizeof pl.extra, L);
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
-  if ((st = vsph_report_say(R, "convergence.scene_head"))) return st;
+  if ((st = vsph_report_doc_say(R, "convergence.scene_head"))) return st;
   char files[NFORM][96];
   for (int f = 0; f < NFORM && !st; f++) {
     const double order =
@@ -116,7 +116,7 @@ static int scene(struct vsph_report *R, int sc) {
   fprintf(R->md, "\n");
   vsph_text_set(&R->tv, "title", "%s", title);
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
-  st = vsph_report_figure_say(R, &pl, "convergence.caption");
+  st = vsph_report_doc_figure_say(R, &pl, "convergence.caption");
   if (!st && sc == 1) st = vsph_report_fv_convergence(R, &lr);
   return st;
 }
@@ -130,7 +130,7 @@ static int vortex_layouts(struct vsph_report *R) {
   struct vsph_report_layouts ly;
   int st = vsph_report_runs_layouts(&R->runs, &ly);
   if (st) return st;
-  if ((st = vsph_report_say(R, "convergence.layout_head"))) return st;
+  if ((st = vsph_report_doc_say(R, "convergence.layout_head"))) return st;
   struct vsph_plot pl;
   vsph_plot_init(&pl, R->dir, "fig_convergence_vortex-layouts",
                  "vortex-patch: initial dissipation error on rings (solid) "
@@ -184,12 +184,12 @@ static int vortex_layouts(struct vsph_report *R) {
     }
   if (st) return st;
   fprintf(R->md, "\n");
-  return vsph_report_figure_say(R, &pl, "convergence.layout_caption");
+  return vsph_report_doc_figure_say(R, &pl, "convergence.layout_caption");
 }
 
 int vsph_report_convergence_write(struct vsph_report *R) {
   int st = VSPH_OK;
-  if (!st) st = vsph_report_say(R, "convergence.intro");
+  if (!st) st = vsph_report_doc_say(R, "convergence.intro");
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     if (vsph_report_scene_on(&R->runs, sc)) st = scene(R, sc);
   if (!st && vsph_report_scene_on(&R->runs, 0)) st = vortex_layouts(R);

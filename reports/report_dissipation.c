@@ -124,9 +124,9 @@ static int tables(struct vsph_report *R, struct tables *tb) {
   int st = vsph_dissipation_props_init(&dp, NULL);
   if (!st) {
     vsph_text_set(&R->tv, "mu", "%g", dp.mu);
-    st = vsph_report_say(R, "dissipation.intro");
+    st = vsph_report_doc_say(R, "dissipation.intro");
   }
-  if (!st) st = vsph_report_say(R, "dissipation.table_head");
+  if (!st) st = vsph_report_doc_say(R, "dissipation.table_head");
   for (int form = 0; form < NFORM && !st; form++)
     for (int field = 0; field < NFIELD && !st; field++)
       for (int shape = 0; shape < VSPH_DISSIPATION_SHAPE_COUNT && !st; shape++)
@@ -139,8 +139,8 @@ static int tables(struct vsph_report *R, struct tables *tb) {
                      (double)RES[r], fig ? &tb->res_rel[form] : NULL);
         }
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
-  if (!st) st = vsph_report_say(R, "dissipation.by_hdx");
-  if (!st) st = vsph_report_say(R, "dissipation.table_head");
+  if (!st) st = vsph_report_doc_say(R, "dissipation.by_hdx");
+  if (!st) st = vsph_report_doc_say(R, "dissipation.table_head");
   for (int form = 0; form < NFORM && !st; form++)
     for (int field = 0; field < NFIELD && !st; field++)
       for (int h = 0; h < 5 && !st; h++)
@@ -150,8 +150,8 @@ static int tables(struct vsph_report *R, struct tables *tb) {
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
   vsph_text_set(&R->tv, "percent", "%g", 100 * PERTURB);
   vsph_text_set(&R->tv, "seed", "%lu", dp.seed);
-  if (!st) st = vsph_report_say(R, "dissipation.perturbed");
-  if (!st) st = vsph_report_say(R, "dissipation.table_head");
+  if (!st) st = vsph_report_doc_say(R, "dissipation.perturbed");
+  if (!st) st = vsph_report_doc_say(R, "dissipation.table_head");
   for (int form = 0; form < NFORM && !st; form++)
     for (int field = 0; field < NFIELD && !st; field++)
       if (!(st = props(&dp, form, field, VSPH_DISSIPATION_SQUARE, RES_HDX,
@@ -167,7 +167,7 @@ static int tables(struct vsph_report *R, struct tables *tb) {
  * too (the three's are there from the tables above). */
 static int every_form(struct vsph_report *R, FILE *csv) {
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
-  int st = vsph_report_say(R, "dissipation.every_head");
+  int st = vsph_report_doc_say(R, "dissipation.every_head");
   for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT && !st; form++) {
     const int paper =
         vsph_viscous_types[form].flags & VSPH_VISCOUS_FREE_SURFACE;
@@ -194,7 +194,7 @@ static int every_form(struct vsph_report *R, FILE *csv) {
       }
     fprintf(R->md, " |\n");
   }
-  return st ? st : vsph_report_say(R, "dissipation.every_note");
+  return st ? st : vsph_report_doc_say(R, "dissipation.every_note");
 }
 
 static int figures(struct vsph_report *R, const struct tables *tb) {
@@ -233,7 +233,7 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
   if (!st)
     st = vsph_plot_add(&a, tb->res_name[0], "1:(0.5/$1)", "slope -1",
                        "lines dt 3 lc 'black'");
-  if (!st) st = vsph_report_figure_say(R, &a, "dissipation.caption_res");
+  if (!st) st = vsph_report_doc_figure_say(R, &a, "dissipation.caption_res");
   if (st) return st;
   struct vsph_plot b;
   char title[160];
@@ -261,8 +261,8 @@ static int figures(struct vsph_report *R, const struct tables *tb) {
       st = vsph_plot_add(&b, tb->hdx_name[form][field], "1:3", tl, style);
     }
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
-  if (!st) st = vsph_report_figure_say(R, &b, "dissipation.caption_hdx");
-  return st ? st : vsph_report_say(R, "dissipation.reading");
+  if (!st) st = vsph_report_doc_figure_say(R, &b, "dissipation.caption_hdx");
+  return st ? st : vsph_report_doc_say(R, "dissipation.reading");
 }
 
 /* The lattice error of pure strain against the angle of its axes to the
@@ -308,7 +308,7 @@ static int angle_figure(struct vsph_report *R) {
     vsph_text_set(&R->tv, key, "%+.2f", 100 * at45[form]);
   }
   vsph_text_set(&R->tv, "res", "%zu", RES_HDX);
-  if ((st = vsph_report_say(R, "dissipation.angle_head"))) return st;
+  if ((st = vsph_report_doc_say(R, "dissipation.angle_head"))) return st;
   struct vsph_plot pl;
   vsph_plot_init(&pl, R->dir, "fig_dissipation_angle",
                  "Lattice error of pure strain against the angle of its axes "
@@ -322,7 +322,8 @@ static int angle_figure(struct vsph_report *R) {
     vsph_report_runs_style(style, sizeof style, form, "");
     st = vsph_plot_add(&pl, name, cols, vsph_viscous_label(form), style);
   }
-  return st ? st : vsph_report_figure_say(R, &pl, "dissipation.angle_caption");
+  return st ? st
+            : vsph_report_doc_figure_say(R, &pl, "dissipation.angle_caption");
 }
 
 int vsph_report_dissipation_write(struct vsph_report *R) {

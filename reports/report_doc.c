@@ -12,21 +12,11 @@
 #include "../common/status.h"
 #include "../io/plot.h"
 
-/* the parts build a claim's text in buffers larger than every field, so
- * a text too long for its field reaches the check below whole */
-_Static_assert(VSPH_REPORT_CLAIM_BUF >
-                       sizeof((struct vsph_report_claim *)0)->ours &&
-                   VSPH_REPORT_CLAIM_BUF >
-                       sizeof((struct vsph_report_claim *)0)->verdict &&
-                   VSPH_REPORT_CLAIM_BUF >
-                       sizeof((struct vsph_report_claim *)0)->setup,
-               "a part's claim buffer must exceed the table's fields");
-
-int vsph_report_claim(struct vsph_report *R, const char *claim,
-                      const char *paper, const char *ours, const char *setup,
-                      const char *verdict) {
+int vsph_report_doc_claim(struct vsph_report *R, const char *claim,
+                          const char *paper, const char *ours,
+                          const char *setup, const char *verdict) {
   /* every verdict says its class first, so the tally cannot misread one */
-  if (vsph_report_claims_class(verdict) < 0)
+  if (vsph_report_doc_class(verdict) < 0)
     VSPH_FAIL(VSPH_EINVAL,
               "claim '%.60s': its verdict '%.40s' does not start with "
               "reproduced, reproduced on a substitute, partly, differs, not "
@@ -62,14 +52,14 @@ int vsph_report_claim(struct vsph_report *R, const char *claim,
   return VSPH_OK;
 }
 
-int vsph_report_say(struct vsph_report *R, const char *name) {
+int vsph_report_doc_say(struct vsph_report *R, const char *name) {
   const int st = vsph_text_write(R->md, name, &R->tv);
   vsph_text_clear(&R->tv);
   return st;
 }
 
-int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
-                       const char *caption) {
+int vsph_report_doc_figure(struct vsph_report *R, const struct vsph_plot *pl,
+                           const char *caption) {
   const int st = vsph_plot_write(pl);
   if (st) return st;
   char alt[256];
@@ -78,14 +68,14 @@ int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
   return VSPH_OK;
 }
 
-int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
-                           const char *name) {
+int vsph_report_doc_figure_say(struct vsph_report *R,
+                               const struct vsph_plot *pl, const char *name) {
   char caption[1024], title[256];
   vsph_plot_plain(title, sizeof title, pl->title); /* {{title}}, as text */
   vsph_text_set(&R->tv, "title", "%s", title);
   const int st = vsph_text_format(caption, sizeof caption, name, &R->tv);
   vsph_text_clear(&R->tv);
-  return st ? st : vsph_report_figure(R, pl, caption);
+  return st ? st : vsph_report_doc_figure(R, pl, caption);
 }
 
 /* The verdict classes: the word each verdict is marked with, the symbol
@@ -101,12 +91,12 @@ static const struct {
     [VSPH_REPORT_DIFFERS] = {"differs", "\u2718", "v-diff"},
     [VSPH_REPORT_NOT_TESTED] = {"not tested", "\u2013", "v-none"}};
 
-int vsph_report_claims_class(const char *verdict) {
+int vsph_report_doc_class(const char *verdict) {
   return vsph_claim_class(verdict);
 }
 
-int vsph_report_grade(struct vsph_report *R, const char *name,
-                      const struct vsph_claim_vals *v) {
+int vsph_report_doc_grade(struct vsph_report *R, const char *name,
+                          const struct vsph_claim_vals *v) {
   struct vsph_claim_row *row = malloc(sizeof *row);
   if (!row) VSPH_FAIL(VSPH_ENOMEM, "cannot grade claim %s", name);
   const char *text = vsph_text_get(name); /* reports/claims/, compiled in */
@@ -115,22 +105,22 @@ int vsph_report_grade(struct vsph_report *R, const char *name,
     vsph_status_report(st, __FILE__, __LINE__, "no claim %s in reports/claims",
                        name);
   if (!st)
-    st = vsph_report_claim(R, row->claim, row->paper, row->ours, row->setup,
-                           row->verdict);
+    st = vsph_report_doc_claim(R, row->claim, row->paper, row->ours, row->setup,
+                               row->verdict);
   free(row);
   return st;
 }
 
-int vsph_report_claims_table(struct vsph_report *R) {
+int vsph_report_doc_claims_table(struct vsph_report *R) {
   size_t tally[VSPH_REPORT_NVERDICTS] = {0};
   for (size_t k = 0; k < R->nclaims; k++)
-    tally[vsph_report_claims_class(R->claims[k].verdict)]++;
+    tally[vsph_report_doc_class(R->claims[k].verdict)]++;
   fprintf(R->md, "**%zu claims:**", R->nclaims);
   for (int v = 0; v < VSPH_REPORT_NVERDICTS; v++)
     fprintf(R->md, "%s <span class=\"v %s\">%s %zu %s</span>", v ? "," : "",
             VERDICT[v].css, VERDICT[v].symbol, tally[v], VERDICT[v].word);
   fprintf(R->md, ".\n\n");
-  const int st = vsph_report_say(R, "claims.table_head");
+  const int st = vsph_report_doc_say(R, "claims.table_head");
   if (st) return st;
   for (size_t k = 0; k < R->nclaims; k++) {
     const char *cell[5] = {R->claims[k].claim, R->claims[k].paper,
@@ -141,7 +131,7 @@ int vsph_report_claims_table(struct vsph_report *R) {
       const char *text = cell[c];
       if (c == 4) { /* the verdict: its class marked, then the rest of its
                      * words (the class's own word once, not twice) */
-        const int v = vsph_report_claims_class(text);
+        const int v = vsph_report_doc_class(text);
         fprintf(R->md, "<span class=\"v %s\">%s %s</span> ", VERDICT[v].css,
                 VERDICT[v].symbol, VERDICT[v].word);
         const size_t w = strlen(VERDICT[v].word);

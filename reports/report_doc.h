@@ -55,12 +55,6 @@ struct vsph_report {
   int *beside_stands;
 };
 
-/* The size of a buffer a part builds a claim's text in: larger than any
- * field of the claims table, so a text too long for its field is refused
- * loudly by vsph_report_claim instead of being cut short there without a
- * word. */
-#define VSPH_REPORT_CLAIM_BUF 2048
-
 /* The five verdict classes of the claims table, in the tally's order
  * (the engine's, claim.h; the rule: docs/theory.md section 13). */
 enum {
@@ -75,35 +69,37 @@ enum {
 /* A verdict's class, from its first words: "reproduced on a
  * substitute...", "reproduced...", "partly...", "differs..." or "not
  * reproduced...", "not tested..."; -1 for any other start
- * (vsph_report_claim refuses such a verdict). */
-int vsph_report_claims_class(const char *verdict);
+ * (vsph_report_doc_claim refuses such a verdict). */
+int vsph_report_doc_class(const char *verdict);
 
 /* The tally of R->claims by class, then the claims table (each verdict
  * marked with its class's word, symbol and colour class), into R->md. */
-int vsph_report_claims_table(struct vsph_report *R);
+int vsph_report_doc_claims_table(struct vsph_report *R);
 
 /* Add a row to the claims table (copied): the claim, the paper's figure,
  * ours, the set-up differences (never empty: "none" where nothing
- * differs) and the verdict, which starts with its class's word. */
-int vsph_report_claim(struct vsph_report *R, const char *claim,
-                      const char *paper, const char *ours, const char *setup,
-                      const char *verdict);
+ * differs) and the verdict, which starts with its class's word. The parts
+ * add none themselves: they grade a claim's block (vsph_report_doc_grade),
+ * which adds its row here. */
+int vsph_report_doc_claim(struct vsph_report *R, const char *claim,
+                          const char *paper, const char *ours,
+                          const char *setup, const char *verdict);
 
 /* Grade claim block "claims/PART.NAME" (@p name, claim.h) on the measures
  * and words @p v into a row of the claims table. */
-int vsph_report_grade(struct vsph_report *R, const char *name,
-                      const struct vsph_claim_vals *v);
+int vsph_report_doc_grade(struct vsph_report *R, const char *name,
+                          const struct vsph_claim_vals *v);
 
 /* Write prose block NAME with the values in R->tv, then clear them. */
-int vsph_report_say(struct vsph_report *R, const char *name);
+int vsph_report_doc_say(struct vsph_report *R, const char *name);
 
 /* Render figure @p pl and put it in the Markdown with its caption. */
-int vsph_report_figure(struct vsph_report *R, const struct vsph_plot *pl,
-                       const char *caption);
+int vsph_report_doc_figure(struct vsph_report *R, const struct vsph_plot *pl,
+                           const char *caption);
 
 /* The same with the caption from prose block NAME and the values in R->tv
  * (then cleared). */
-int vsph_report_figure_say(struct vsph_report *R, const struct vsph_plot *pl,
-                           const char *name);
+int vsph_report_doc_figure_say(struct vsph_report *R,
+                               const struct vsph_plot *pl, const char *name);
 
 #endif /* VSPH_REPORTS_REPORT_DOC_H */

@@ -131,7 +131,7 @@ static int sq_table(struct vsph_report *R) {
   vsph_text_set(&R->tv, "wallh", "%.0f",
                 s->half[VSPH_FVREF_SQ_GRIDS - 1].wall_s / 60);
   vsph_text_set(&R->tv, "procsh", "%d", s->half[VSPH_FVREF_SQ_GRIDS - 1].procs);
-  if ((st = vsph_report_say(R, "fv.square_head"))) return st;
+  if ((st = vsph_report_doc_say(R, "fv.square_head"))) return st;
   for (int g = 0; g < VSPH_FVREF_SQ_GRIDS; g++) {
     const struct vsph_fvref_sqseries *q = &s->g[g];
     char diff[32] = "–";
@@ -191,7 +191,7 @@ static int sq_table(struct vsph_report *R) {
             "proportional to its lattice error measured on an undeformed "
             "lattice (section 4), which the stretching lattice does not keep"
           : "within the finite volume's band: the two references agree");
-  return vsph_report_say(R, "fv.square_checks");
+  return vsph_report_doc_say(R, "fv.square_checks");
 }
 
 /* fv_square.csv: t, E/E0 of each grid, the finest grid's rate and power
@@ -292,8 +292,8 @@ static int sq_figures(struct vsph_report *R) {
     snprintf(pe.extra, sizeof pe.extra, "set yrange [0:1.02]\n");
     snprintf(pd.extra, sizeof pd.extra, "set yrange [-0.08:0.04]\n");
   }
-  if (!st) st = vsph_report_figure_say(R, &pe, "fv.fig_square_Ek");
-  if (!st) st = vsph_report_figure_say(R, &pd, "fv.fig_square_diff");
+  if (!st) st = vsph_report_doc_figure_say(R, &pe, "fv.fig_square_Ek");
+  if (!st) st = vsph_report_doc_figure_say(R, &pd, "fv.fig_square_diff");
   return st;
 }
 
@@ -326,7 +326,7 @@ static int sq_why(struct vsph_report *R) {
                   "%% of E_k(0) from the finite-volume solution at most over "
                   "time.",
                   fine, 100 * fm[0]);
-  st = vsph_report_say(R, "fv.why_head");
+  st = vsph_report_doc_say(R, "fv.why_head");
   double base = NAN;
   for (int w = 0; w < VSPH_REPORT_FV_NWHY && !st; w++) {
     const struct vsph_jobs_spec rs = vsph_report_fv_why_spec(R, w);
@@ -355,11 +355,11 @@ static int sq_why(struct vsph_report *R) {
   vsph_text_set(&R->tv, "m3", "%+.1f", 100 * fm[3]);
   vsph_text_set(&R->tv, "m4", "%.1f", 100 * fm[4]);
   vsph_text_set(&R->tv, "d0", "%+.1f", 100 * d0);
-  return vsph_report_say(R, "fv.why_defs");
+  return vsph_report_doc_say(R, "fv.why_defs");
 }
 
 int vsph_report_fv_square(struct vsph_report *R) {
-  if (!R->fv->sq.ok) return vsph_report_say(R, "fv.square_missing");
+  if (!R->fv->sq.ok) return vsph_report_doc_say(R, "fv.square_missing");
   int st = sq_table(R);
   if (!st) st = sq_figures(R);
   if (!st) st = sq_why(R);
@@ -369,11 +369,11 @@ int vsph_report_fv_square(struct vsph_report *R) {
 int vsph_report_fv_convergence(struct vsph_report *R,
                                const struct vsph_report_ladder *lr) {
   const struct vsph_fvref_square *s = &R->fv->sq;
-  if (!s->ok) return vsph_report_say(R, "fv.convergence_missing");
+  if (!s->ok) return vsph_report_doc_say(R, "fv.convergence_missing");
   const struct vsph_report_ladderdef *L =
       vsph_report_runs_ladder(&R->runs, 1, 0);
   vsph_text_set(&R->tv, "band", "%.1e", s->band);
-  int st = vsph_report_say(R, "fv.convergence_head");
+  int st = vsph_report_doc_say(R, "fv.convergence_head");
   FILE *c = st ? NULL
                : vsph_csv_open(R->dir, "convergence_fv_square.csv",
                                "form,dx,error_fv,end_minus_fv");
@@ -423,8 +423,9 @@ int vsph_report_fv_cavity(struct vsph_report *R,
                           const struct vsph_jobs_run *const *runs,
                           const char *const *labels, size_t nrun) {
   const struct vsph_fvref_cavity *cv = R->fv->cav;
-  if (!cv[0].ok || !cv[1].ok) return vsph_report_say(R, "fv.cavity_missing");
-  int st = vsph_report_say(R, "fv.cavity_head");
+  if (!cv[0].ok || !cv[1].ok)
+    return vsph_report_doc_say(R, "fv.cavity_missing");
+  int st = vsph_report_doc_say(R, "fv.cavity_head");
   for (int w = 0; w < 2 && !st; w++)
     for (int g = 0; g < VSPH_FVREF_CAV_GRIDS; g++) {
       const struct vsph_fvref_cavgrid *q = &cv[w].g[g];
@@ -440,7 +441,7 @@ int vsph_report_fv_cavity(struct vsph_report *R,
     vsph_text_set(&R->tv, "o1000", "%.2f", cv[1].order);
     vsph_text_set(&R->tv, "r100", "%.1e", cv[0].remainder);
     vsph_text_set(&R->tv, "r1000", "%.1e", cv[1].remainder);
-    st = vsph_report_say(R, "fv.cavity_checks");
+    st = vsph_report_doc_say(R, "fv.cavity_checks");
   }
   /* E_k(t) at Re 1000: every grid and the SPH runs */
   FILE *f =
@@ -482,6 +483,6 @@ int vsph_report_fv_cavity(struct vsph_report *R,
              vsph_plot_colour(k));
     st = vsph_plot_add(&pl, name, "1:2", labels[k], style);
   }
-  if (!st) st = vsph_report_figure_say(R, &pl, "fv.fig_cavity_Ek");
+  if (!st) st = vsph_report_doc_figure_say(R, &pl, "fv.fig_cavity_Ek");
   return st;
 }

@@ -103,12 +103,12 @@ int vsph_report_patch_write(struct vsph_report *R) {
   if (st) return st;
   double load[3];
   vsph_sysinfo_load(load);
-  if ((st = vsph_report_say(R, "patch.intro"))) return st;
+  if ((st = vsph_report_doc_say(R, "patch.intro"))) return st;
   static const char *const name[2] = {"patch_uniform.csv",
                                       "patch_perturbed.csv"};
   for (int u = 0; u < 2 && !st; u++) {
     vsph_text_set(&R->tv, "perturb", "%g", PERTURB);
-    if ((st = vsph_report_say(
+    if ((st = vsph_report_doc_say(
              R, u ? "patch.perturbed_head" : "patch.uniform_head")))
       break;
     FILE *c = vsph_csv_open(R->dir, name[u],
@@ -134,7 +134,7 @@ int vsph_report_patch_write(struct vsph_report *R) {
       fprintf(R->md, " %.2f (%.2f) |", slope_n(&t.err[u][0][0], f),
               slope_n(&PAPER[u][0][0], f));
     fprintf(R->md, "\n\n");
-    if ((st = vsph_report_say(R, "patch.line_head"))) break;
+    if ((st = vsph_report_doc_say(R, "patch.line_head"))) break;
     for (int k = 0; k < NRES; k++) {
       fprintf(R->md, "| %zu x %zu |", RES[k], RES[k]);
       for (int f = 0; f < NLAP; f++)
@@ -173,12 +173,12 @@ int vsph_report_patch_write(struct vsph_report *R) {
       if (!st) st = vsph_plot_add(&pl, name[u], cols, lab, style);
     }
     vsph_text_set(&R->tv, "title", "%s", title);
-    if (!st) st = vsph_report_figure_say(R, &pl, "patch.caption");
+    if (!st) st = vsph_report_doc_figure_say(R, &pl, "patch.caption");
   }
   if (st) return st;
   /* cost: vsph makes all four forms from one neighbour pass */
   vsph_text_set(&R->tv, "load", "%.2f", load[0]);
-  if ((st = vsph_report_say(R, "patch.cost_head"))) return st;
+  if ((st = vsph_report_doc_say(R, "patch.cost_head"))) return st;
   for (int k = 0; k < NRES; k++) {
     fprintf(R->md, "| %zu x %zu |", RES[k], RES[k]);
     for (int f = 0; f < NLAP; f++)
@@ -187,7 +187,7 @@ int vsph_report_patch_write(struct vsph_report *R) {
     fprintf(R->md, " %.4f |\n", t.wall[k][0]);
   }
   fprintf(R->md, "\n");
-  return vsph_report_say(R, "patch.reading");
+  return vsph_report_doc_say(R, "patch.reading");
 }
 
 int vsph_report_patch_claims(struct vsph_report *R) {
@@ -202,7 +202,7 @@ int vsph_report_patch_claims(struct vsph_report *R) {
   vsph_claim_num(v, "e04", t.err[0][4][3]);
   vsph_claim_num(v, "reldiff",
                  fabs(t.err[0][4][2] - t.err[0][4][3]) / t.err[0][4][2]);
-  st = vsph_report_grade(R, "claims/patch.coincide", v);
+  st = vsph_report_doc_grade(R, "claims/patch.coincide", v);
   /* the slopes on the paper's sampling (the Fig. 2 line), and how far
    * each sampling's values are from Table 1: the largest factor either
    * way over the forms and resolutions; far[s][g]: sampling s (0 the
@@ -234,7 +234,7 @@ int vsph_report_patch_claims(struct vsph_report *R) {
     vsph_claim_str(v, g ? "near03_on" : "near01_on", "%s",
                    n ? "over the whole set" : "on the Fig. 2 line");
   }
-  if (!st) st = vsph_report_grade(R, "claims/patch.uniform_orders", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/patch.uniform_orders", v);
   /* perturbed, 100 x 100: the ranking */
   vsph_claim_clear(v);
   vsph_claim_num(v, "perturb", PERTURB);
@@ -244,7 +244,7 @@ int vsph_report_patch_claims(struct vsph_report *R) {
     vsph_claim_num(v, key, t.err[1][4][f]);
   }
   vsph_claim_num(v, "ratio_01_04", t.err[1][4][0] / t.err[1][4][3]);
-  if (!st) st = vsph_report_grade(R, "claims/patch.disorder_ranking", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/patch.disorder_ranking", v);
   /* the orders under disorder (Table 2, Fig. 5): the slope of Err against
    * N is -p/2 for an error ~ dx^p; ours, and the paper's with its own
    * rounded to the nearest integer */
@@ -260,7 +260,7 @@ int vsph_report_patch_claims(struct vsph_report *R) {
     vsph_claim_num(v, key[1], pp);
     vsph_claim_num(v, key[2], (double)lround(pp));
   }
-  if (!st) st = vsph_report_grade(R, "claims/patch.disorder_orders", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/patch.disorder_orders", v);
   /* the CPU ranking (Table 3): our best-of-3 wall times at 100 x 100,
    * perturbed, against the paper's; VISC-03 dearest and VISC-02 cheapest
    * is the claim (its ratios 0.81 : 1 : 2.25 : 1.93 are its code's) */
@@ -286,7 +286,7 @@ int vsph_report_patch_claims(struct vsph_report *R) {
   /* graded as PVWF's cost is, on vsph's implementation as a substitute:
    * vsph's four forms share one neighbour pass and differ only in its
    * finishing step */
-  if (!st) st = vsph_report_grade(R, "claims/patch.cpu", v);
+  if (!st) st = vsph_report_doc_grade(R, "claims/patch.cpu", v);
   free(v);
   return st;
 }

@@ -77,7 +77,7 @@ static int figure(struct vsph_report *R, int dim, int which) {
     }
   if (st) return st;
   vsph_text_set(&R->tv, "title", "%s", title);
-  return vsph_report_figure_say(R, &pl, "profiles.caption");
+  return vsph_report_doc_figure_say(R, &pl, "profiles.caption");
 }
 
 int vsph_report_profiles_write(struct vsph_report *R) {
@@ -85,7 +85,7 @@ int vsph_report_profiles_write(struct vsph_report *R) {
                             "kernel,dim,depth,F_nnn,F_ntt,N_n,G_nnnn,G_tttt,"
                             "G_ttnn,M_nn,M_tt");
   if (!csv) return VSPH_EIO;
-  int st = vsph_report_say(R, "profiles.intro");
+  int st = vsph_report_doc_say(R, "profiles.intro");
   for (size_t ki = 0; ki < vsph_kernel_count() && !st; ki++)
     for (int dim = 2; dim <= 3 && !st; dim++) st = profile(R, csv, ki, dim);
   fprintf(R->md, "\n");

@@ -44,7 +44,9 @@ const struct vsph_report_ladderdef *vsph_report_runs_full_ladder(int sc) {
   return &FULL[sc];
 }
 
-void vsph_report_runs_free(struct vsph_jobs_run *r) { vsph_jobs_run_free(r); }
+void vsph_report_runs_free(struct vsph_jobs_run *r) {
+  vsph_jobs_store_run_free(r);
+}
 
 const char *const vsph_report_runs_cartesian[2] = {"Scene:layout=cartesian",
                                                    NULL};
@@ -130,7 +132,7 @@ int vsph_report_runs_plan_ladders(struct vsph_report_runs *R, int all) {
 int vsph_report_runs_get(struct vsph_report_runs *R,
                          const struct vsph_jobs_spec *rs,
                          struct vsph_jobs_run *out) {
-  return vsph_jobs_get(&R->jobs, rs, out);
+  return vsph_jobs_store_get(&R->jobs, rs, out);
 }
 
 const char *const vsph_report_runs_hdx[2][2] = {{"Solver:hdx=2", NULL},

@@ -119,7 +119,7 @@ const struct vsph_report_ladderdef *vsph_report_runs_full_ladder(int sc);
 const struct vsph_report_ladderdef *vsph_report_runs_ladder(
     const struct vsph_report_runs *R, int sc, int quick);
 
-/* A run through runs/jobs (vsph_jobs_get). */
+/* A run through runs/jobs (vsph_jobs_store_get). */
 int vsph_report_runs_get(struct vsph_report_runs *R,
                          const struct vsph_jobs_spec *rs,
                          struct vsph_jobs_run *out);

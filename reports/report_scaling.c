@@ -89,7 +89,7 @@ static int every_form(struct vsph_report *R, const struct tables *tb) {
   struct vsph_scaling_props sp;
   int st = vsph_scaling_props_init(&sp, NULL);
   vsph_text_set(&R->tv, "hdx", "%.4g", sp.hdx);
-  if (!st) st = vsph_report_say(R, "scaling.every_head");
+  if (!st) st = vsph_report_doc_say(R, "scaling.every_head");
   for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++) {
     const int paper = vsph_viscous_types[f].flags & VSPH_VISCOUS_FREE_SURFACE;
     fprintf(R->md, "| %s%s%s", paper ? "**" : "", vsph_viscous_label(f),
@@ -104,7 +104,7 @@ static int every_form(struct vsph_report *R, const struct tables *tb) {
       }
     fprintf(R->md, " |\n");
   }
-  return st ? st : vsph_report_say(R, "scaling.every_note");
+  return st ? st : vsph_report_doc_say(R, "scaling.every_note");
 }
 
 static int figure(struct vsph_report *R, const struct tables *tb, int dim,
@@ -140,7 +140,7 @@ static int figure(struct vsph_report *R, const struct tables *tb, int dim,
   vsph_text_set(&R->tv, "dim", "%d", dim);
   vsph_text_set(&R->tv, "data", "%s", data);
   vsph_text_set(&R->tv, "round", "%.2g", tb->round[dim][fk]);
-  return vsph_report_figure_say(R, &pl, "scaling.caption");
+  return vsph_report_doc_figure_say(R, &pl, "scaling.caption");
 }
 
 /* The viscous term along the square's symmetry axis at the stretching
@@ -168,7 +168,7 @@ static int axis(struct vsph_report *R) {
   }
   vsph_text_set(&R->tv, "A", "%g", sp.field.A);
   vsph_text_set(&R->tv, "mu", "%g", sp.mu);
-  if (!st) st = vsph_report_say(R, "scaling.axis_head");
+  if (!st) st = vsph_report_doc_say(R, "scaling.axis_head");
   for (int form = 0; form < VSPH_VISCOUS_PAPER_COUNT && !st; form++) {
     char pname[64], title[160];
     snprintf(pname, sizeof pname, "fig_axis_%s", vsph_viscous_name(form));
@@ -190,14 +190,14 @@ static int axis(struct vsph_report *R) {
     }
     if (!st) {
       vsph_text_set(&R->tv, "title", "%s", title);
-      st = vsph_report_figure_say(R, &pl, "scaling.axis_caption");
+      st = vsph_report_doc_figure_say(R, &pl, "scaling.axis_caption");
     }
   }
   return st;
 }
 
 static int interior(struct vsph_report *R, FILE *in) {
-  int st = vsph_report_say(R, "scaling.interior");
+  int st = vsph_report_doc_say(R, "scaling.interior");
   for (size_t ki = 0; ki < vsph_kernel_count() && !st; ki++) {
     struct vsph_scaling_props sp;
     st = vsph_scaling_props_init(&sp, NULL);
@@ -214,7 +214,7 @@ static int interior(struct vsph_report *R, FILE *in) {
               r.mgf[l], r.meaf[l]);
     }
   }
-  return st ? st : vsph_report_say(R, "scaling.interior_note");
+  return st ? st : vsph_report_doc_say(R, "scaling.interior_note");
 }
 
 int vsph_report_scaling_write(struct vsph_report *R) {
@@ -242,13 +242,13 @@ int vsph_report_scaling_write(struct vsph_report *R) {
     vsph_text_set(tv, "A", "%g", fp.A);
     vsph_text_set(tv, "Omega", "%g", fp.Omega);
     vsph_text_set(tv, "round_tol", "%g", sp.round_tol);
-    st = vsph_report_say(R, "scaling.intro");
+    st = vsph_report_doc_say(R, "scaling.intro");
   }
   for (size_t ki = 0; ki < vsph_kernel_count() && !st; ki++)
     for (int dim = 2; dim <= 3 && !st; dim++)
       for (int fk = 0; fk < 2 && !st; fk++)
         st = sweep(R, &tb, vsph_kernel_get(ki), dim, fk);
-  if (!st) st = vsph_report_say(R, "scaling.patch");
+  if (!st) st = vsph_report_doc_say(R, "scaling.patch");
   if (!st) st = every_form(R, &tb);
   for (int dim = 2; dim <= 3 && !st; dim++)
     for (int fk = 0; fk < 2 && !st; fk++) st = figure(R, &tb, dim, fk);

@@ -119,7 +119,8 @@ static int vortex_profiles(struct vsph_report *R, FILE *figs, int f,
   for (int k = 0; k < NSNAP && !st; k++) {
     char snap[700], name[32], file[96], tp[48], ts_[48], sp[48], ss[48];
     snprintf(name, sizeof name, "snap_%04d.vtp", k);
-    if ((st = vsph_jobs_file(&R->runs.jobs, run->dir, name, snap, sizeof snap)))
+    if ((st = vsph_jobs_store_file(&R->runs.jobs, run->dir, name, snap,
+                                   sizeof snap)))
       break;
     snprintf(file, sizeof file, "profile_%s_%d.csv", form, k);
     double ts = 0.0;
@@ -138,7 +139,7 @@ static int vortex_profiles(struct vsph_report *R, FILE *figs, int f,
   FILE *md = R->md;
   R->md = figs;
   vsph_text_set(&R->tv, "title", "%s", title);
-  st = vsph_report_figure_say(R, &pl, "scenes.profile_caption");
+  st = vsph_report_doc_figure_say(R, &pl, "scenes.profile_caption");
   R->md = md;
   return st;
 }
@@ -185,12 +186,13 @@ static int pictures(struct vsph_report *R, int sc, FILE *md,
   int st = VSPH_OK;
   for (int k = 0; k <= NFORM && !st; k++) {
     const int f = k ? k - 1 : 0;
-    const int idx = k ? vsph_jobs_last_snapshot(&R->runs.jobs, run[f].dir) : 0;
+    const int idx =
+        k ? vsph_jobs_store_last_snapshot(&R->runs.jobs, run[f].dir) : 0;
     if (idx < 0) VSPH_FAIL(VSPH_EIO, "%s holds no snapshot", run[f].dir);
     char snap[700], name[32];
     snprintf(name, sizeof name, "snap_%04d.vtp", idx);
-    if ((st = vsph_jobs_file(&R->runs.jobs, run[f].dir, name, snap,
-                             sizeof snap)))
+    if ((st = vsph_jobs_store_file(&R->runs.jobs, run[f].dir, name, snap,
+                                   sizeof snap)))
       break;
     snprintf(pn[k].file, sizeof pn[k].file, "particles_%s_%s.csv", scn,
              k ? vsph_viscous_name(f) : "initial");
@@ -307,7 +309,7 @@ static int scene(struct vsph_report *R, int sc) {
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
   vsph_text_set(&R->tv, "res", "%zu", res);
   vsph_text_set(&R->tv, "t_end", "%g", L->t_end);
-  if ((st = vsph_report_say(R, "scenes.scene_head"))) return st;
+  if ((st = vsph_report_doc_say(R, "scenes.scene_head"))) return st;
   char names[NFORM][96];
   char *figbuf = NULL;
   size_t figlen = 0;
@@ -347,8 +349,8 @@ static int scene(struct vsph_report *R, int sc) {
      * and profiles read (vsph_archive_store_frames), if any */
     const int here = !strcmp(vsph_jobs_where(&R->runs.jobs, r.dir), r.dir);
     const int snaps =
-        here || (vsph_jobs_holds(&R->runs.jobs, r.dir, "snapshots.pvd") &&
-                 vsph_jobs_last_snapshot(&R->runs.jobs, r.dir) >= 0);
+        here || (vsph_jobs_store_holds(&R->runs.jobs, r.dir, "snapshots.pvd") &&
+                 vsph_jobs_store_last_snapshot(&R->runs.jobs, r.dir) >= 0);
     if (!snaps) nosnap = f;
     if (!here && snaps) framed = 1;
     if (!st && sc == 0 && snaps) st = vortex_profiles(R, figs, f, &r, res);
@@ -376,7 +378,7 @@ static int scene(struct vsph_report *R, int sc) {
   if (!st) st = scene_figures(R, sc, names, square);
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
   vsph_text_set(&R->tv, "res", "%zu", res);
-  if (!st) st = vsph_report_say(R, "scenes.scene_tail");
+  if (!st) st = vsph_report_doc_say(R, "scenes.scene_tail");
   if (!st && square) st = vsph_report_fv_square(R);
   return st;
 }
@@ -422,7 +424,7 @@ static int wave_eps(struct vsph_report *R) {
   int st = VSPH_OK;
   vsph_text_set(&R->tv, "res", "%zu", L->res[1]);
   vsph_text_set(&R->tv, "t_end", "%g", L->t_end);
-  if (!st) st = vsph_report_say(R, "scenes.eps_head");
+  if (!st) st = vsph_report_doc_say(R, "scenes.eps_head");
   for (int e = 0; e < 3 && !st; e++) {
     fprintf(R->md, "| %s |", eps[e]);
     for (int f = 0; f < NFORM && !st; f++) {
@@ -463,7 +465,7 @@ int vsph_report_scenes_write(struct vsph_report *R) {
     vsph_text_set(&R->tv, "ref_corr", "n/a");
     vsph_text_set(&R->tv, "ref_d0", "n/a");
   }
-  if (!st) st = vsph_report_say(R, "scenes.intro");
+  if (!st) st = vsph_report_doc_say(R, "scenes.intro");
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     if (vsph_report_scene_on(&R->runs, sc)) st = scene(R, sc);
   if (!st && vsph_report_scene_on(&R->runs, 2)) st = wave_eps(R);

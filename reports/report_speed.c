@@ -42,7 +42,7 @@ static int scene(struct vsph_report *R, int sc) {
   }
   if (st) return st;
   vsph_text_set(&R->tv, "title", "%s", title);
-  return vsph_report_figure_say(R, &pl, "speed.caption");
+  return vsph_report_doc_figure_say(R, &pl, "speed.caption");
 }
 
 /* ------------------------------------------------ the time step, measured */
@@ -172,7 +172,7 @@ static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
                  "max_t |E_k/E_k(0) - E_{k,ref}/E_{k,ref}(0)|");
   pl.logx = pl.logy = 1;
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
-  if ((st = vsph_report_say(R, "speed.cfl_head"))) return st;
+  if ((st = vsph_report_doc_say(R, "speed.cfl_head"))) return st;
   for (int f = 0; f < NFORM && !st; f++)
     for (int k = 0; k < NRES && !st; k++) {
       char file[128], label[96], style[128];
@@ -217,18 +217,18 @@ static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
                        "(docs/theory.md section 5), not by the CFL, so the "
                        "pick says nothing for this scene."
                      : "");
-  if ((st = vsph_report_say(R, "speed.cfl_pick"))) return st;
+  if ((st = vsph_report_doc_say(R, "speed.cfl_pick"))) return st;
   vsph_text_set(&R->tv, "title", "%s", title);
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
-  return vsph_report_figure_say(R, &pl, "speed.cfl_caption");
+  return vsph_report_doc_figure_say(R, &pl, "speed.cfl_caption");
 }
 
 int vsph_report_speed_write(struct vsph_report *R) {
-  int st = vsph_report_say(R, "speed.intro");
+  int st = vsph_report_doc_say(R, "speed.intro");
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     if (vsph_report_scene_on(&R->runs, sc)) st = scene(R, sc);
   vsph_text_set(&R->tv, "fraction", "%g", 100.0 * CFL_FRACTION);
-  if (!st) st = vsph_report_say(R, "speed.cfl_intro");
+  if (!st) st = vsph_report_doc_say(R, "speed.cfl_intro");
   double all = CFLS[NCFL - 1];
   for (int sc = 0; sc < VSPH_REPORT_NSCENES && !st; sc++)
     if (vsph_report_scene_on(&R->runs, sc)) {
@@ -247,6 +247,6 @@ int vsph_report_speed_write(struct vsph_report *R) {
                       "resolution's; the FULL report's study, on the FULL "
                       "ladders' two coarsest rungs, is quoted in "
                       "docs/theory.md section 5");
-  if (!st) st = vsph_report_say(R, "speed.cfl_all");
+  if (!st) st = vsph_report_doc_say(R, "speed.cfl_all");
   return st;
 }

@@ -175,7 +175,7 @@ static int stability_map(struct vsph_report *R, const char *map,
                        "lines lw 4 lc rgb '" BOUNDARY_RGB "'");
   if (st) return st;
   fprintf(R->md, "\n");
-  return vsph_report_figure_say(R, &pl, "stability.map_caption");
+  return vsph_report_doc_figure_say(R, &pl, "stability.map_caption");
 }
 
 /* PVWF's pairing: the stretching square across its ladder. */
@@ -277,9 +277,9 @@ int vsph_report_stability_write(struct vsph_report *R) {
   if (st) return st;
   vsph_text_set(&R->tv, "res", "%zu", res);
   vsph_text_set(&R->tv, "onset", "%g", 100 * VSPH_REPORT_ONSET);
-  st = vsph_report_say(R, "stability.intro");
+  st = vsph_report_doc_say(R, "stability.intro");
   if (!st) st = square_ladder(R);
-  if (!st) st = vsph_report_say(R, "stability.hard");
+  if (!st) st = vsph_report_doc_say(R, "stability.hard");
   struct verdicts vc0, vcfl, vwave;
   for (int k = 0; k < 4 && !st; k++)
     st = sweep(R, &sws[k], NULL);        /* nu, shift */
@@ -287,13 +287,13 @@ int vsph_report_stability_write(struct vsph_report *R) {
   if (!st) {
     vsph_text_set(&R->tv, "U_max", "%.4f", scene.U_max);
     vsph_text_set(&R->tv, "c0", "%.4f", scene.c0);
-    st = vsph_report_say(R, "stability.c0_note");
+    st = vsph_report_doc_say(R, "stability.c0_note");
   }
   if (!st)
     st = stability_map(R, "stability_c0.csv", &vc0, "fig_stability_c0",
                        "Vortex patch: stability against the sound speed",
                        "sound speed c_0 (m/s)");
-  if (!st) st = vsph_report_say(R, "stability.cfl");
+  if (!st) st = vsph_report_doc_say(R, "stability.cfl");
   if (!st) st = sweep(R, &sws[5], &vcfl);
   if (!st) st = sweep(R, &sws[6], &vwave);
   if (!st)

@@ -83,7 +83,7 @@ static int tensor_entries(struct vsph_report *R) {
                             "G_nnnn,G_tttt,G_ttnn,M_nn,M_tt,"
                             "max_gap_to_theory");
   if (!csv) return VSPH_EIO;
-  int st = vsph_report_say(R, "tensors.entries");
+  int st = vsph_report_doc_say(R, "tensors.entries");
   for (size_t ki = 0; ki < vsph_kernel_count() && !st; ki++) {
     const struct vsph_kernel_type *k = vsph_kernel_get(ki);
     for (int dim = 2; dim <= 3 && !st; dim++) {
@@ -175,7 +175,7 @@ int vsph_report_tensors_write(struct vsph_report *R) {
   char *pbuf = NULL;
   size_t plen = 0;
   FILE *pm = open_memstream(&pbuf, &plen); /* 2-D Gaussian rows, for md */
-  int st = csv && cc && pm ? vsph_report_say(R, "tensors.intro") : VSPH_EIO;
+  int st = csv && cc && pm ? vsph_report_doc_say(R, "tensors.intro") : VSPH_EIO;
   for (size_t ki = 0; ki < vsph_kernel_count() && !st; ki++) {
     const struct vsph_kernel_type *k = vsph_kernel_get(ki);
     for (int dim = 1; dim <= 3 && !st; dim++) {
@@ -212,7 +212,7 @@ int vsph_report_tensors_write(struct vsph_report *R) {
     }
   }
   if (pm) fclose(pm);
-  if (!st) st = vsph_report_say(R, "tensors.lattice");
+  if (!st) st = vsph_report_doc_say(R, "tensors.lattice");
   if (!st) {
     fwrite(pbuf, 1, plen, R->md);
     fprintf(R->md, "\n");

@@ -123,7 +123,7 @@ int vsph_jobs_shear(const struct vsph_jobs *J, const char *tag,
 }
 
 /* The solver's estimate of @p j (particles, steps, memory). */
-int jobs_estimate(struct vsph_jobs_job *j) {
+int vsph_jobs_estimate(struct vsph_jobs_job *j) {
   struct vsph_params *prm;
   int st = params_of(j, &prm);
   if (st) return st;
@@ -147,7 +147,7 @@ int jobs_estimate(struct vsph_jobs_job *j) {
 }
 
 /* Pair interactions over the run: particles x neighbours x steps. */
-double jobs_cost_of(const struct vsph_jobs_job *j) {
+double vsph_jobs_cost_of(const struct vsph_jobs_job *j) {
   return j->particles * j->neighbours * j->steps;
 }
 
@@ -169,7 +169,7 @@ int vsph_jobs_plan_add(struct vsph_jobs *J, struct vsph_jobs_job *j) {
                 "settings (a bug in the report's specs)",
                 P->job[k].dir);
     }
-  int st = jobs_estimate(j);
+  int st = vsph_jobs_estimate(j);
   if (!st && P->n == P->cap) {
     const size_t cap = P->cap ? 2 * P->cap : 64;
     struct vsph_jobs_job *g = realloc(P->job, cap * sizeof *g);
@@ -218,7 +218,8 @@ int vsph_jobs_plan_frames(struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
 }
 
 /* Run @p j here: its folder ends with key.txt, or it failed. */
-int jobs_execute(const struct vsph_jobs *J, const struct vsph_jobs_job *j) {
+int vsph_jobs_execute(const struct vsph_jobs *J,
+                      const struct vsph_jobs_job *j) {
   struct vsph_params *prm;
   int st = params_of(j, &prm);
   if (st) return st;
@@ -240,8 +241,8 @@ int jobs_execute(const struct vsph_jobs *J, const struct vsph_jobs_job *j) {
   return st;
 }
 
-const struct vsph_jobs_job *jobs_find(const struct vsph_jobs *P,
-                                      const char *dir) {
+const struct vsph_jobs_job *vsph_jobs_find(const struct vsph_jobs *P,
+                                           const char *dir) {
   for (size_t k = 0; k < P->n; k++)
     if (!strcmp(P->job[k].dir, dir)) return &P->job[k];
   return NULL;
@@ -249,20 +250,21 @@ const struct vsph_jobs_job *jobs_find(const struct vsph_jobs *P,
 
 /* The folder a planned job's files are read from, and the key its seal
  * must hold for. */
-const char *jobs_where_of(const struct vsph_jobs_job *p, const char **key) {
+const char *vsph_jobs_where_of(const struct vsph_jobs_job *p,
+                               const char **key) {
   *key = p->from[0] ? p->from_key : p->key;
   return p->from[0] ? p->from : p->dir;
 }
 
 const char *vsph_jobs_where(const struct vsph_jobs *J, const char *dir) {
-  const struct vsph_jobs_job *p = J->planned ? jobs_find(J, dir) : NULL;
+  const struct vsph_jobs_job *p = J->planned ? vsph_jobs_find(J, dir) : NULL;
   const char *key;
-  return p ? jobs_where_of(p, &key) : dir;
+  return p ? vsph_jobs_where_of(p, &key) : dir;
 }
 
 int vsph_jobs_ready(const struct vsph_jobs *J, const struct vsph_jobs_job *j) {
-  if (!J->planned) return j->cached ? VSPH_OK : jobs_execute(J, j);
-  const struct vsph_jobs_job *p = jobs_find(J, j->dir);
+  if (!J->planned) return j->cached ? VSPH_OK : vsph_jobs_execute(J, j);
+  const struct vsph_jobs_job *p = vsph_jobs_find(J, j->dir);
   if (!p || strcmp(p->key, j->key))
     VSPH_FAIL(VSPH_EBUG,
               "the report reads %s, which no part's plan lists with these "
@@ -344,7 +346,7 @@ int vsph_jobs_plan_print(const struct vsph_jobs *J, const char *exe, FILE *f) {
   for (size_t k = 0; k < P->n; k++)
     if (!P->job[k].cached) {
       missing++;
-      cost += jobs_cost_of(&P->job[k]);
+      cost += vsph_jobs_cost_of(&P->job[k]);
     }
   fprintf(f,
           "# vsph %s report plan for %s (%s): %zu runs, %zu cached, %zu "
@@ -373,4 +375,11 @@ int vsph_jobs_plan_print(const struct vsph_jobs *J, const char *exe, FILE *f) {
   if (fflush(f) != 0 || ferror(f))
     VSPH_FAIL(VSPH_EIO, "cannot write the plan: %s", strerror(errno));
   return VSPH_OK;
+}
+
+void vsph_jobs_plan_free(struct vsph_jobs *J) {
+  for (size_t k = 0; k < J->n; k++) vsph_jobs_free(&J->job[k]);
+  free(J->job);
+  J->job = NULL;
+  J->n = J->cap = 0;
 }

@@ -14,7 +14,7 @@ struct vsph_csv;
  *  runs. Every part declares the runs it reads (a plan) before any is
  *  run; the missing ones are then run in this process, as child processes
  *  (--jobs N) or as a Slurm job array (--slurm), and read back through
- *  vsph_jobs_get, which checks each folder's seal (runs/folder). A job is
+ *  vsph_jobs_store_get, which checks each folder's seal (runs/folder). A job is
  *  one command (`vsph run ... --cache` or `vsph contact ... --cache`)
  *  whose folder ends sealed: the cache, and the proof that the run ended,
  *  whichever way ran it. A job stopped by a signal (or Slurm's time limit)
@@ -65,7 +65,7 @@ struct vsph_jobs {
   const volatile sig_atomic_t *stop; /*!< stop request, or NULL */
   int planned;     /*!< 1: a sealed plan: only listed, cached runs are read;
                         0: a run is made when it is read (tests) */
-  double budget_s; /*!< > 0: vsph_jobs_local and vsph_jobs_pool run only
+  double budget_s; /*!< > 0: vsph_jobs_local_run and vsph_jobs_pool_run run only
                         the missing runs that fit this many seconds (the
                         caller's clock stops them through stop) */
   struct vsph_jobs_job *job; /*!< the plan */
@@ -164,7 +164,7 @@ int vsph_jobs_plan_print(const struct vsph_jobs *J, const char *exe, FILE *f);
 /* The missing runs of the plan in this process, @p width at a time (one
  * thread each; the report passes its thread count: two on 2 cores), the
  * costliest first. */
-int vsph_jobs_local(struct vsph_jobs *J, int width);
+int vsph_jobs_local_run(struct vsph_jobs *J, int width);
 
 /* One run as the estimate of the time left sees it. */
 enum { VSPH_JOBS_ETA_WAITING = 0, VSPH_JOBS_ETA_RUNNING, VSPH_JOBS_ETA_DONE };
@@ -187,7 +187,8 @@ struct vsph_jobs_eta {
  * off. The runs are laid on the @p width lanes in their order, each on
  * the lane free first. @return the seconds left, or -1 while no run has
  * finished (nothing to measure a rate by). */
-double vsph_jobs_eta(const struct vsph_jobs_eta *r, size_t n, size_t width);
+double vsph_jobs_local_eta(const struct vsph_jobs_eta *r, size_t n,
+                           size_t width);
 
 /** @brief Which of @p m runs of wall times @p t (s, in the order they
  *  would start) fit a budget of @p budget seconds on @p lanes lanes: each
@@ -195,14 +196,14 @@ double vsph_jobs_eta(const struct vsph_jobs_eta *r, size_t n, size_t width);
  *  the budget, or when it is longer than the whole budget and its lane is
  *  still empty (it goes on from its checkpoint in the next sitting).
  *  @return how many are kept. */
-size_t vsph_jobs_fit(const double *t, size_t m, size_t lanes, double budget,
-                     unsigned char *keep);
+size_t vsph_jobs_local_fit(const double *t, size_t m, size_t lanes,
+                           double budget, unsigned char *keep);
 
 /* The same as child processes of @p exe, @p njobs at a time with
  * @p threads threads each; a run that fails is recorded (runs/failed.txt,
  * its log in runs/logs/) and the others go on. */
-int vsph_jobs_pool(struct vsph_jobs *J, const char *exe, size_t njobs,
-                   size_t threads);
+int vsph_jobs_pool_run(struct vsph_jobs *J, const char *exe, size_t njobs,
+                       size_t threads);
 
 /* Submit the missing runs as one Slurm job array and the assembly as a
  * job after it (afterany). */
@@ -213,7 +214,8 @@ struct vsph_jobs_slurm {
   size_t threads;        /* --cpus-per-task of each run */
   const char *only;      /* the report's --only, for the assembly, or NULL */
 };
-int vsph_jobs_slurm(struct vsph_jobs *J, const struct vsph_jobs_slurm *s);
+int vsph_jobs_slurm_submit(struct vsph_jobs *J,
+                           const struct vsph_jobs_slurm *s);
 
 /* The folder of a Slurm report, made if new, as an absolute path into
  * @p abs (the jobs run elsewhere); one that #SBATCH lines cannot carry
@@ -221,33 +223,34 @@ int vsph_jobs_slurm(struct vsph_jobs *J, const struct vsph_jobs_slurm *s);
 int vsph_jobs_slurm_dir(const char *dir, char *abs, size_t len);
 
 /** @brief A run's tables (run.json, energy.csv) from any folder @p dir
- *  that holds them (a run archive's entry): what vsph_jobs_get reads,
- *  without a plan. Free with vsph_jobs_run_free.
+ *  that holds them (a run archive's entry): what vsph_jobs_store_get reads,
+ *  without a plan. Free with vsph_jobs_store_run_free.
  *  @return VSPH_OK, or a failure naming the file. */
-int vsph_jobs_load(const char *dir, struct vsph_jobs_run *out);
+int vsph_jobs_store_load(const char *dir, struct vsph_jobs_run *out);
 
 /** @brief A run of the plan read back (vsph_jobs_ready, then its seal,
  *  run.json and energy.csv).
  *  @return VSPH_OK, or a failure naming the run or the file. */
-int vsph_jobs_get(const struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
-                  struct vsph_jobs_run *out);
+int vsph_jobs_store_get(const struct vsph_jobs *J,
+                        const struct vsph_jobs_spec *rs,
+                        struct vsph_jobs_run *out);
 
-/** @brief Free what vsph_jobs_get read; idempotent. */
-void vsph_jobs_run_free(struct vsph_jobs_run *r);
+/** @brief Free what vsph_jobs_store_get read; idempotent. */
+void vsph_jobs_store_run_free(struct vsph_jobs_run *r);
 
 /** @brief Table @p name (e.g. "profile.csv", "summary.csv") of the sealed
  *  run in folder @p dir of the plan, read (io/csv) after its seal is
  *  checked. NULL after reporting when the run is not planned and sealed
  *  or the table cannot be read. */
-struct vsph_csv *vsph_jobs_table(const struct vsph_jobs *J, const char *dir,
-                                 const char *name);
+struct vsph_csv *vsph_jobs_store_table(const struct vsph_jobs *J,
+                                       const char *dir, const char *name);
 
 /** @brief The path of file @p name of the sealed run in folder @p dir of
  *  the plan, for a reader of its own (a VTK snapshot), into @p path:
  *  VSPH_OK if the plan lists the run, its seal holds and lists the file;
  *  else a failure naming it. */
-int vsph_jobs_file(const struct vsph_jobs *J, const char *dir, const char *name,
-                   char *path, size_t len);
+int vsph_jobs_store_file(const struct vsph_jobs *J, const char *dir,
+                         const char *name, char *path, size_t len);
 
 /** @brief The folder the files of planned run @p dir are read from: a
  *  run archive's entry when the assembly reads it from there, else
@@ -257,27 +260,27 @@ const char *vsph_jobs_where(const struct vsph_jobs *J, const char *dir);
 /** @brief Whether the seal of the planned run in folder @p dir lists file
  *  @p name (1) or not (0), saying nothing: an archived run keeps no
  *  snapshots, and a part then leaves out what it draws from them. */
-int vsph_jobs_holds(const struct vsph_jobs *J, const char *dir,
-                    const char *name);
+int vsph_jobs_store_holds(const struct vsph_jobs *J, const char *dir,
+                          const char *name);
 
 /** @brief The path of file @p name of planned run @p dir as a file of the
  *  report folder J->dir sees it (for a gnuplot script there):
  *  "runs/NAME/name", or the relative path to the run archive's entry the
  *  run is read from. */
-void vsph_jobs_data_path(const struct vsph_jobs *J, const char *dir,
-                         const char *name, char *buf, size_t len);
+void vsph_jobs_store_data_path(const struct vsph_jobs *J, const char *dir,
+                               const char *name, char *buf, size_t len);
 
 /** @brief The index of the last snapshot (snap_NNNN.vtp) under the seal
  *  of the planned run in folder @p dir: the end, or the stop of an
  *  unstable run; -1 (reported) if it has none. */
-int vsph_jobs_last_snapshot(const struct vsph_jobs *J, const char *dir);
+int vsph_jobs_store_last_snapshot(const struct vsph_jobs *J, const char *dir);
 
 /** @brief Peak resident memory (bytes) of a whole `vsph run SCENE --visc
  *  VISC --res RES --t-end T_END` in a process of its own (this program
  *  started again through /proc/self/exe, so nothing of the caller's
  *  memory counts), as its run.json says, in a temporary folder removed
  *  after; 0 if it cannot be run. For vsph bench. */
-double vsph_jobs_peak_rss(const char *scene, const char *visc, size_t res,
-                          double t_end);
+double vsph_jobs_store_peak_rss(const char *scene, const char *visc, size_t res,
+                                double t_end);
 
 #endif /* VSPH_RUNS_JOBS_H */

@@ -19,7 +19,8 @@
 
 /* ------------------------------------------------------ the missing runs */
 
-double vsph_jobs_eta(const struct vsph_jobs_eta *r, size_t n, size_t width) {
+double vsph_jobs_local_eta(const struct vsph_jobs_eta *r, size_t n,
+                           size_t width) {
   double cost_all = 0.0, wall_all = 0.0; /* every finished run */
   for (size_t k = 0; k < n; k++)
     if (r[k].state == VSPH_JOBS_ETA_DONE && r[k].cost > 0.0) {
@@ -74,7 +75,7 @@ double vsph_jobs_eta(const struct vsph_jobs_eta *r, size_t n, size_t width) {
  * steps it took (run.json, or the shear test's summary.csv), which a run
  * stopped early (a stability map's) or whose time step changed makes
  * differ from the plan's estimate; the estimate where neither is read. */
-double jobs_cost_taken(const struct vsph_jobs_job *j) {
+double vsph_jobs_local_cost_taken(const struct vsph_jobs_job *j) {
   char path[600];
   double steps = -1.0;
   if (j->kind == VSPH_JOBS_RUN) {
@@ -87,13 +88,14 @@ double jobs_cost_taken(const struct vsph_jobs_job *j) {
     snprintf(path, sizeof path, "%s/summary.csv", j->dir);
     if (vsph_sheartest_csv_load(path, &cs) == VSPH_OK) steps = (double)cs.steps;
   }
-  return steps > 0.0 ? j->particles * j->neighbours * steps : jobs_cost_of(j);
+  return steps > 0.0 ? j->particles * j->neighbours * steps
+                     : vsph_jobs_cost_of(j);
 }
 
 /* The missing jobs of the plan, the costliest first. */
 static int by_cost(const void *a, const void *b) {
-  const double x = jobs_cost_of(*(const struct vsph_jobs_job *const *)a),
-               y = jobs_cost_of(*(const struct vsph_jobs_job *const *)b);
+  const double x = vsph_jobs_cost_of(*(const struct vsph_jobs_job *const *)a),
+               y = vsph_jobs_cost_of(*(const struct vsph_jobs_job *const *)b);
   return (x < y) - (x > y);
 }
 /* The wall time and cost (particles x neighbours x steps) each cached
@@ -130,8 +132,8 @@ static double rate_of(const struct vsph_jobs *J, const double *wall,
   return c > 0.0 ? w / c : 0.0;
 }
 
-size_t vsph_jobs_fit(const double *t, size_t m, size_t lanes, double budget,
-                     unsigned char *keep) {
+size_t vsph_jobs_local_fit(const double *t, size_t m, size_t lanes,
+                           double budget, unsigned char *keep) {
   double *free_at = calloc(lanes ? lanes : 1, sizeof *free_at);
   size_t kept = 0;
   for (size_t k = 0; k < m; k++) {
@@ -155,7 +157,7 @@ size_t vsph_jobs_fit(const double *t, size_t m, size_t lanes, double budget,
 }
 
 /* Of the missing runs @p order (costliest first), those that fit
- * J->budget_s on @p lanes lanes (vsph_jobs_fit), in the same order;
+ * J->budget_s on @p lanes lanes (vsph_jobs_local_fit), in the same order;
  * returns how many. Each run's time is its cost at its family's measured
  * rate, else all cached runs' rate. With no rate measured yet, every run
  * is kept, and the budget's clock alone stops them. */
@@ -182,9 +184,9 @@ static size_t budget_fit(const struct vsph_jobs *J,
   }
   for (size_t k = 0; k < m; k++) {
     const double r = rate_of(J, wall, cost, order[k]->family);
-    t[k] = jobs_cost_of(order[k]) * (r > 0.0 ? r : all);
+    t[k] = vsph_jobs_cost_of(order[k]) * (r > 0.0 ? r : all);
   }
-  const size_t kept = vsph_jobs_fit(t, m, lanes, J->budget_s, keep);
+  const size_t kept = vsph_jobs_local_fit(t, m, lanes, J->budget_s, keep);
   size_t at = 0;
   for (size_t k = 0; k < m; k++)
     if (keep[k]) order[at++] = order[k];
@@ -202,7 +204,8 @@ static size_t budget_fit(const struct vsph_jobs *J,
 
 /* ", N more stand in a run archive" when the plan has such runs, for the
  * progress's first line. */
-void jobs_archived_note(const struct vsph_jobs *J, char *buf, size_t len) {
+void vsph_jobs_local_archived_note(const struct vsph_jobs *J, char *buf,
+                                   size_t len) {
   size_t na = 0;
   for (size_t k = 0; k < J->n; k++)
     na += J->job[k].archived && !J->job[k].cached;
@@ -215,8 +218,8 @@ void jobs_archived_note(const struct vsph_jobs *J, char *buf, size_t len) {
 
 /* The missing runs, costliest first; with a budget, those that fit it on
  * @p lanes lanes. */
-size_t jobs_missing(struct vsph_jobs *J, struct vsph_jobs_job ***out,
-                    size_t lanes) {
+size_t vsph_jobs_local_missing(struct vsph_jobs *J, struct vsph_jobs_job ***out,
+                               size_t lanes) {
   struct vsph_jobs *P = J;
   *out = malloc((P->n ? P->n : 1) * sizeof **out);
   if (!*out) return (size_t)-1;
@@ -232,10 +235,11 @@ size_t jobs_missing(struct vsph_jobs *J, struct vsph_jobs_job ***out,
 
 /* The runs' states for the estimate of the time left, in @p order's
  * order (the order they start), or NULL. */
-struct vsph_jobs_eta *jobs_eta_start(struct vsph_jobs_job **order, size_t m) {
+struct vsph_jobs_eta *vsph_jobs_local_eta_start(struct vsph_jobs_job **order,
+                                                size_t m) {
   struct vsph_jobs_eta *e = calloc(m ? m : 1, sizeof *e);
   for (size_t k = 0; e && k < m; k++) {
-    e[k].cost = jobs_cost_of(order[k]);
+    e[k].cost = vsph_jobs_cost_of(order[k]);
     e[k].family = order[k]->family;
   }
   return e;
@@ -244,24 +248,25 @@ struct vsph_jobs_eta *jobs_eta_start(struct vsph_jobs_job **order, size_t m) {
 /* ", about N s left" from the runs' states at @p now (running runs'
  * times so far from their start times @p t1), or "" while no run has
  * finished: a rate is measured, never assumed. */
-void jobs_eta_text(struct vsph_jobs_eta *e, const double *t1, size_t m,
-                   size_t width, double now, char *buf, size_t len) {
+void vsph_jobs_local_eta_text(struct vsph_jobs_eta *e, const double *t1,
+                              size_t m, size_t width, double now, char *buf,
+                              size_t len) {
   buf[0] = '\0';
   if (!e) return;
   for (size_t k = 0; k < m; k++)
     if (e[k].state == VSPH_JOBS_ETA_RUNNING) e[k].wall = now - t1[k];
-  const double left = vsph_jobs_eta(e, m, width);
+  const double left = vsph_jobs_local_eta(e, m, width);
   if (left >= 0.0) snprintf(buf, len, ", about %.0f s left", left);
 }
 
-int vsph_jobs_local(struct vsph_jobs *J, int width) {
+int vsph_jobs_local_run(struct vsph_jobs *J, int width) {
   struct vsph_jobs_job **order;
-  const size_t m = jobs_missing(J, &order, (size_t)width);
+  const size_t m = vsph_jobs_local_missing(J, &order, (size_t)width);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
-  struct vsph_jobs_eta *eta = jobs_eta_start(order, m);
+  struct vsph_jobs_eta *eta = vsph_jobs_local_eta_start(order, m);
   double *t1 = calloc(m ? m : 1, sizeof *t1);
   char na[96];
-  jobs_archived_note(J, na, sizeof na);
+  vsph_jobs_local_archived_note(J, na, sizeof na);
   if (m)
     fprintf(stderr,
             "vsph report: %zu of the %zu runs are not in the cache%s; "
@@ -277,7 +282,7 @@ int vsph_jobs_local(struct vsph_jobs *J, int width) {
   for (size_t k = 0; k < m; k++) {
     int failed;
     size_t me = 0;
-#pragma omp critical(vsph_jobs_local)
+#pragma omp critical(vsph_jobs_local_progress)
     {
       failed = st;
       if (!failed) {
@@ -291,8 +296,8 @@ int vsph_jobs_local(struct vsph_jobs *J, int width) {
     if (failed) continue;
     omp_set_num_threads(1); /* this thread's nested regions: itself alone */
     const double t_start = omp_get_wtime();
-    const int s = jobs_execute(J, order[k]);
-#pragma omp critical(vsph_jobs_local)
+    const int s = vsph_jobs_execute(J, order[k]);
+#pragma omp critical(vsph_jobs_local_progress)
     {
       if (s && !st) st = s;
       done++;
@@ -301,10 +306,12 @@ int vsph_jobs_local(struct vsph_jobs *J, int width) {
         eta[k].state = VSPH_JOBS_ETA_DONE;
         eta[k].ended = now - t0;
         eta[k].wall = s ? 0.0 : now - t_start;
-        eta[k].cost = s ? 0.0 : jobs_cost_taken(order[k]);
+        eta[k].cost = s ? 0.0 : vsph_jobs_local_cost_taken(order[k]);
       }
       char left[64] = "";
-      if (t1) jobs_eta_text(eta, t1, m, (size_t)width, now, left, sizeof left);
+      if (t1)
+        vsph_jobs_local_eta_text(eta, t1, m, (size_t)width, now, left,
+                                 sizeof left);
       if (s == VSPH_EINTR)
         fprintf(stderr,
                 "  [%zu/%zu] %s: stopped at a checkpoint (the next report "

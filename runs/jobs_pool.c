@@ -112,10 +112,10 @@ static int record_failed(const struct vsph_jobs *J,
   return st;
 }
 
-int vsph_jobs_pool(struct vsph_jobs *J, const char *exe, size_t njobs,
-                   size_t threads) {
+int vsph_jobs_pool_run(struct vsph_jobs *J, const char *exe, size_t njobs,
+                       size_t threads) {
   struct vsph_jobs_job **order;
-  const size_t m = jobs_missing(J, &order, njobs);
+  const size_t m = vsph_jobs_local_missing(J, &order, njobs);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
   char logs[600];
   snprintf(logs, sizeof logs, "%s/runs/logs", J->dir);
@@ -123,13 +123,13 @@ int vsph_jobs_pool(struct vsph_jobs *J, const char *exe, size_t njobs,
   pid_t *pid = calloc(m ? m : 1, sizeof *pid);
   int *status = calloc(m ? m : 1, sizeof *status);
   double *t1 = calloc(m ? m : 1, sizeof *t1);
-  struct vsph_jobs_eta *eta = jobs_eta_start(order, m);
+  struct vsph_jobs_eta *eta = vsph_jobs_local_eta_start(order, m);
   if (!st && (!pid || !status || !t1 || !eta)) {
     st = VSPH_ENOMEM;
     vsph_status_report(st, __FILE__, __LINE__, "cannot track %zu runs", m);
   }
   char na[96];
-  jobs_archived_note(J, na, sizeof na);
+  vsph_jobs_local_archived_note(J, na, sizeof na);
   if (m && !st)
     fprintf(stderr,
             "vsph report: %zu of the %zu runs are not in the cache%s; "
@@ -181,11 +181,11 @@ int vsph_jobs_pool(struct vsph_jobs *J, const char *exe, size_t njobs,
     eta[k].state = VSPH_JOBS_ETA_DONE; /* a failed run measures nothing */
     eta[k].ended = el;
     eta[k].wall = order[k]->cached ? now - t1[k] : 0.0;
-    eta[k].cost = order[k]->cached ? jobs_cost_taken(order[k]) : 0.0;
+    eta[k].cost = order[k]->cached ? vsph_jobs_local_cost_taken(order[k]) : 0.0;
     if (order[k]->cached) {
       char v[96], left[64];
       verdict(order[k], v, sizeof v);
-      jobs_eta_text(eta, t1, m, njobs, now, left, sizeof left);
+      vsph_jobs_local_eta_text(eta, t1, m, njobs, now, left, sizeof left);
       fprintf(stderr,
               "  [%zu/%zu] %s: %s, %.1f s; %zu of %zu done, %.0f s "
               "elapsed%s\n",

@@ -207,9 +207,10 @@ static int record_submission(const struct vsph_jobs *J, const char *dir,
   return vsph_json_write(o, dir, "submitted.json");
 }
 
-int vsph_jobs_slurm(struct vsph_jobs *J, const struct vsph_jobs_slurm *s) {
+int vsph_jobs_slurm_submit(struct vsph_jobs *J,
+                           const struct vsph_jobs_slurm *s) {
   struct vsph_jobs_job **order;
-  const size_t m = jobs_missing(J, &order, 1);
+  const size_t m = vsph_jobs_local_missing(J, &order, 1);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
   const struct vsph_jobs_job *const *jobs =
       (const struct vsph_jobs_job *const *)order;
@@ -220,7 +221,7 @@ int vsph_jobs_slurm(struct vsph_jobs *J, const struct vsph_jobs_slurm *s) {
   double mem = 0.0, cost = 0.0;
   for (size_t k = 0; k < m; k++) {
     mem = fmax(mem, order[k]->bytes);
-    cost = fmax(cost, jobs_cost_of(order[k]));
+    cost = fmax(cost, vsph_jobs_cost_of(order[k]));
   }
   /* memory: the largest run's bound and 256 MiB for the program itself
    * (a quick-report run peaks at about 10 MB); time: the costliest run at

@@ -20,7 +20,7 @@
 #include "jobs.h"
 #include "jobs_internal.h"
 
-void vsph_jobs_run_free(struct vsph_jobs_run *r) {
+void vsph_jobs_store_run_free(struct vsph_jobs_run *r) {
   vsph_csv_free(r->energy);
   r->energy = NULL;
 }
@@ -81,25 +81,26 @@ static int load_run_json(struct vsph_jobs_run *r) {
   return VSPH_OK;
 }
 
-int vsph_jobs_load(const char *dir, struct vsph_jobs_run *out) {
+int vsph_jobs_store_load(const char *dir, struct vsph_jobs_run *out) {
   memset(out, 0, sizeof *out);
   if (strlen(dir) >= sizeof out->dir)
     VSPH_FAIL(VSPH_EINVAL, "%.60s...: the folder's name is too long", dir);
   snprintf(out->dir, sizeof out->dir, "%s", dir);
   int st = load_run_json(out);
   if (!st) st = load_energy(out);
-  if (st) vsph_jobs_run_free(out); /* (a table read, its columns not) */
+  if (st) vsph_jobs_store_run_free(out); /* (a table read, its columns not) */
   return st;
 }
 
-int vsph_jobs_get(const struct vsph_jobs *J, const struct vsph_jobs_spec *rs,
-                  struct vsph_jobs_run *out) {
+int vsph_jobs_store_get(const struct vsph_jobs *J,
+                        const struct vsph_jobs_spec *rs,
+                        struct vsph_jobs_run *out) {
   memset(out, 0, sizeof *out);
   struct vsph_jobs_job j;
   int st = vsph_jobs_run(J, rs, &j);
   snprintf(out->dir, sizeof out->dir, "%s", j.dir);
   if (!st) st = vsph_jobs_ready(J, &j);
-  if (!st) st = vsph_jobs_load(vsph_jobs_where(J, j.dir), out);
+  if (!st) st = vsph_jobs_store_load(vsph_jobs_where(J, j.dir), out);
   /* the parts name a run by its planned folder, wherever it was read */
   snprintf(out->dir, sizeof out->dir, "%s", j.dir);
   vsph_jobs_free(&j);
@@ -119,13 +120,13 @@ static int seal_lists(const char *dir, const char *name) {
 
 /* A planned (or, unplanned, any) sealed run in folder @p dir whose seal
  * lists @p name: its path. */
-int vsph_jobs_file(const struct vsph_jobs *J, const char *dir, const char *name,
-                   char *path, size_t len) {
-  const struct vsph_jobs_job *j = J->planned ? jobs_find(J, dir) : NULL;
+int vsph_jobs_store_file(const struct vsph_jobs *J, const char *dir,
+                         const char *name, char *path, size_t len) {
+  const struct vsph_jobs_job *j = J->planned ? vsph_jobs_find(J, dir) : NULL;
   if (J->planned && !j)
     VSPH_FAIL(VSPH_EINVAL, "run %s is not in the plan (a bug)", dir);
   const char *key = NULL;
-  if (j) dir = jobs_where_of(j, &key);
+  if (j) dir = vsph_jobs_where_of(j, &key);
   char why[700] = "";
   if (j && vsph_folder_verify(dir, NULL, key, NULL, why, sizeof why) != 1)
     VSPH_FAIL(VSPH_EIO, "run %s is not sealed%s%s", dir, why[0] ? ": " : "",
@@ -136,25 +137,18 @@ int vsph_jobs_file(const struct vsph_jobs *J, const char *dir, const char *name,
   return VSPH_OK;
 }
 
-struct vsph_csv *vsph_jobs_table(const struct vsph_jobs *J, const char *dir,
-                                 const char *name) {
+struct vsph_csv *vsph_jobs_store_table(const struct vsph_jobs *J,
+                                       const char *dir, const char *name) {
   char path[700];
-  if (vsph_jobs_file(J, dir, name, path, sizeof path)) return NULL;
+  if (vsph_jobs_store_file(J, dir, name, path, sizeof path)) return NULL;
   struct vsph_csv *c = vsph_csv_read(path);
   if (!c)
     vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot read %s", path);
   return c;
 }
 
-void vsph_jobs_plan_free(struct vsph_jobs *J) {
-  for (size_t k = 0; k < J->n; k++) vsph_jobs_free(&J->job[k]);
-  free(J->job);
-  J->job = NULL;
-  J->n = J->cap = 0;
-}
-
-int vsph_jobs_holds(const struct vsph_jobs *J, const char *dir,
-                    const char *name) {
+int vsph_jobs_store_holds(const struct vsph_jobs *J, const char *dir,
+                          const char *name) {
   return seal_lists(vsph_jobs_where(J, dir), name);
 }
 
@@ -174,8 +168,8 @@ static void relative_path(const char *a, const char *b, char *buf, size_t len) {
   snprintf(buf + n, len - n, "%s", a[c] == '/' ? a + c + 1 : a + c);
 }
 
-void vsph_jobs_data_path(const struct vsph_jobs *J, const char *dir,
-                         const char *name, char *buf, size_t len) {
+void vsph_jobs_store_data_path(const struct vsph_jobs *J, const char *dir,
+                               const char *name, char *buf, size_t len) {
   const char *where = vsph_jobs_where(J, dir);
   const char *base = strrchr(dir, '/');
   char ra[PATH_MAX], rb[PATH_MAX], rel[2 * PATH_MAX];
@@ -187,9 +181,10 @@ void vsph_jobs_data_path(const struct vsph_jobs *J, const char *dir,
   snprintf(buf, len, "%s/%s", rel, name);
 }
 
-int vsph_jobs_last_snapshot(const struct vsph_jobs *J, const char *dir) {
+int vsph_jobs_store_last_snapshot(const struct vsph_jobs *J, const char *dir) {
   char path[700];
-  if (vsph_jobs_file(J, dir, "snapshots.pvd", path, sizeof path)) return -1;
+  if (vsph_jobs_store_file(J, dir, "snapshots.pvd", path, sizeof path))
+    return -1;
   snprintf(path, sizeof path, "%s/key.txt", vsph_jobs_where(J, dir));
   char *seal = vsph_files_slurp(path, NULL);
   int last = -1;
@@ -201,8 +196,8 @@ int vsph_jobs_last_snapshot(const struct vsph_jobs *J, const char *dir) {
   return last;
 }
 
-double vsph_jobs_peak_rss(const char *scene, const char *visc, size_t res,
-                          double t_end) {
+double vsph_jobs_store_peak_rss(const char *scene, const char *visc, size_t res,
+                                double t_end) {
   char dir[] = "/tmp/vsph-bench-XXXXXX";
   if (!mkdtemp(dir)) return 0.0;
   char out[64], r[32], t[32];

@@ -161,7 +161,7 @@ START_TEST(test_pool) {
   /* the estimate orders them; the vortex patch's is the solver's */
   ck_assert(R.runs.jobs.job[0].particles > 300 &&
             R.runs.jobs.job[0].particles < 400);
-  ck_assert_int_eq(vsph_jobs_pool(&R.runs.jobs, bin(), 2, 1), VSPH_EFAIL);
+  ck_assert_int_eq(vsph_jobs_pool_run(&R.runs.jobs, bin(), 2, 1), VSPH_EFAIL);
   for (int k = 0; k < 2; k++) {
     ck_assert_int_eq(R.runs.jobs.job[k].cached, 1);
     ck_assert_int_eq(vsph_jobs_ready(&R.runs.jobs, &R.runs.jobs.job[k]), 0);
@@ -194,7 +194,7 @@ START_TEST(test_pool) {
   ck_assert_int_eq(stat(keep, &s0), 0);
   snprintf(path, sizeof path, "%s/runs/vortex-patch-meaf-10-blocked", dir);
   ck_assert_int_eq(remove(path), 0); /* mended: it runs now */
-  ck_assert_int_eq(vsph_jobs_pool(&R.runs.jobs, bin(), 2, 1), VSPH_OK);
+  ck_assert_int_eq(vsph_jobs_pool_run(&R.runs.jobs, bin(), 2, 1), VSPH_OK);
   for (int k = 0; k < 3; k++) ck_assert_int_eq(R.runs.jobs.job[k].cached, 1);
   char *after = vsph_files_slurp(e0, NULL);
   ck_assert_str_eq(before, after);
@@ -341,17 +341,17 @@ END_TEST
 START_TEST(test_budget_fit) {
   const double t[] = {100, 60, 50, 30, 10, 250};
   unsigned char keep[6];
-  ck_assert_uint_eq(vsph_jobs_fit(t, 6, 2, 100.0, keep), 4);
+  ck_assert_uint_eq(vsph_jobs_local_fit(t, 6, 2, 100.0, keep), 4);
   const unsigned char two[] = {1, 1, 0, 1, 1, 0};
   ck_assert(!memcmp(keep, two, 6));
   /* 3 lanes: 100 | 60, 30, 10 | 50, then 250 finds no empty lane */
-  ck_assert_uint_eq(vsph_jobs_fit(t, 6, 3, 100.0, keep), 5);
+  ck_assert_uint_eq(vsph_jobs_local_fit(t, 6, 3, 100.0, keep), 5);
   const unsigned char three[] = {1, 1, 1, 1, 1, 0};
   ck_assert(!memcmp(keep, three, 6));
   /* 250 first, on 3 lanes: it takes an empty lane */
   const double u[] = {250, 100, 60};
-  ck_assert_uint_eq(vsph_jobs_fit(u, 3, 3, 100.0, keep), 3);
-  ck_assert_uint_eq(vsph_jobs_fit(t, 6, 1, 100.0, keep), 1);
+  ck_assert_uint_eq(vsph_jobs_local_fit(u, 3, 3, 100.0, keep), 3);
+  ck_assert_uint_eq(vsph_jobs_local_fit(t, 6, 1, 100.0, keep), 1);
   ck_assert_int_eq(keep[0], 1);
 }
 END_TEST
@@ -718,7 +718,8 @@ START_TEST(test_assemble_from_archive) {
     J3.job[k].from_key = key;
     J3.planned = 1;
     char rel[600];
-    vsph_jobs_data_path(&J3, J3.job[k].dir, "energy.csv", rel, sizeof rel);
+    vsph_jobs_store_data_path(&J3, J3.job[k].dir, "energy.csv", rel,
+                              sizeof rel);
     ck_assert_str_eq(rel, "../../../ar/runs/vortex-patch-mgf-25/energy.csv");
     vsph_jobs_plan_free(&J3);
   }

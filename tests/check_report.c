@@ -60,27 +60,32 @@ START_TEST(test_verdict_classes) {
       {"the reference differs", -1},
       {"not tested: the cavity needs wall particles", VSPH_REPORT_NOT_TESTED}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
-    ck_assert_msg(vsph_report_claims_class(cases[k].verdict) == cases[k].cls,
+    ck_assert_msg(vsph_report_doc_class(cases[k].verdict) == cases[k].cls,
                   "'%s' classed %d, not %d", cases[k].verdict,
-                  vsph_report_claims_class(cases[k].verdict), cases[k].cls);
+                  vsph_report_doc_class(cases[k].verdict), cases[k].cls);
   /* the claims table takes no verdict without its class word first */
   struct vsph_report R;
   memset(&R, 0, sizeof R);
   vsph_test_silence();
   ck_assert_int_ne(
-      vsph_report_claim(&R, "c", "p", "o", "none", "ranking reproduced"), 0);
+      vsph_report_doc_claim(&R, "c", "p", "o", "none", "ranking reproduced"),
+      0);
   /* nor a row that says nothing of its set-up */
-  ck_assert_int_ne(vsph_report_claim(&R, "c", "p", "o", "", "reproduced"), 0);
-  ck_assert_int_ne(vsph_report_claim(&R, "c", "p", "o", NULL, "reproduced"), 0);
+  ck_assert_int_ne(vsph_report_doc_claim(&R, "c", "p", "o", "", "reproduced"),
+                   0);
+  ck_assert_int_ne(vsph_report_doc_claim(&R, "c", "p", "o", NULL, "reproduced"),
+                   0);
   /* nor one whose text would be cut short: its ours one character past
    * the table's room, then just within it (the row is taken) */
   char ours[sizeof R.claims->ours + 1];
   memset(ours, 'x', sizeof ours - 1);
   ours[sizeof ours - 1] = '\0';
-  ck_assert_int_ne(vsph_report_claim(&R, "c", "p", ours, "none", "partly"), 0);
+  ck_assert_int_ne(vsph_report_doc_claim(&R, "c", "p", ours, "none", "partly"),
+                   0);
   ck_assert_uint_eq(R.nclaims, 0);
   ours[sizeof ours - 2] = '\0';
-  ck_assert_int_eq(vsph_report_claim(&R, "c", "p", ours, "none", "partly"), 0);
+  ck_assert_int_eq(vsph_report_doc_claim(&R, "c", "p", ours, "none", "partly"),
+                   0);
   ck_assert_uint_eq(R.nclaims, 1);
   ck_assert_str_eq(R.claims[0].ours, ours);
   free(R.claims);
@@ -128,12 +133,12 @@ START_TEST(test_claims_tally) {
   R.claim_see = "scenes";
   for (size_t k = 0; k < n; k++)
     ck_assert_int_eq(
-        vsph_report_claim(&R, "a claim | with a bar", "paper", "ours",
-                          "its set-up | differs", verdicts[k]),
+        vsph_report_doc_claim(&R, "a claim | with a bar", "paper", "ours",
+                              "its set-up | differs", verdicts[k]),
         0);
   R.md = tmpfile();
   ck_assert_ptr_nonnull(R.md);
-  ck_assert_int_eq(vsph_report_claims_table(&R), 0);
+  ck_assert_int_eq(vsph_report_doc_claims_table(&R), 0);
   const long len = ftell(R.md);
   char *text = calloc((size_t)len + 1, 1);
   rewind(R.md);
@@ -189,19 +194,19 @@ START_TEST(test_time_left) {
   r[7].cost = 0.0;
   /* two lanes: the running run holds one (3 s), C the other (24/7 s),
    * A the first (5 s), B the second (24/7 + 2 s) */
-  ck_assert_double_eq_tol(vsph_jobs_eta(r, 8, 2), 38.0 / 7, 1e-12);
-  ck_assert_double_eq_tol(vsph_jobs_eta(r, 8, 1), 73.0 / 7, 1e-12);
+  ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 2), 38.0 / 7, 1e-12);
+  ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 1), 73.0 / 7, 1e-12);
   /* A's line with a negative fixed part (9 s at 4 units: 3 s per unit,
    * -3 s) is not used: A's last rate, 1.5 s per unit, is; all runs' rate
    * is 16/7: 1.5 x 3 - 1 + 32/7 + 1.5 + 2 s on one lane */
   r[0].wall = 9.0;
-  ck_assert_double_eq_tol(vsph_jobs_eta(r, 8, 1), 81.0 / 7, 1e-12);
+  ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 1), 81.0 / 7, 1e-12);
   /* a running run past its estimate has nothing left, not less */
   r[3].wall = 9.0;
-  ck_assert_double_eq_tol(vsph_jobs_eta(r, 8, 1), 32.0 / 7 + 3.5, 1e-12);
+  ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 1), 32.0 / 7 + 3.5, 1e-12);
   /* nothing finished: no rate measured, no estimate */
   r[0].state = r[1].state = r[2].state = VSPH_JOBS_ETA_WAITING;
-  ck_assert(vsph_jobs_eta(r, 8, 2) < 0.0);
+  ck_assert(vsph_jobs_local_eta(r, 8, 2) < 0.0);
 }
 END_TEST
 
