@@ -40,7 +40,7 @@ TESTLIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
 # The library, libvsph, is the lower five layers (common to io); runs,
 # reports and cli are the program that uses it.
 CORE_SRC := $(wildcard common/*.c kernels/*.c solver/*.c solver/scenes/*.c \
-              analysis/*.c io/*.c)
+              solver/forms/*.c analysis/*.c io/*.c)
 LIB_SRC  := $(CORE_SRC) $(wildcard runs/*.c reports/*.c)
 CLI_SRC  := $(wildcard cli/*.c)
 TEST_SRC := $(wildcard tests/*.c)
@@ -49,7 +49,7 @@ LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 # report's cache keys include it, so any change to the code reruns.
 TEXT_SRC := $(sort $(wildcard reports/text/*.md reports/claims/*.md))
 SRC_ALL  := $(sort $(wildcard vsph.h common/*.[ch] kernels/*.[ch] solver/*.[ch] \
-              solver/scenes/*.c analysis/*.[ch] io/*.[ch] runs/*.[ch] reports/*.[ch] \
+              solver/scenes/*.c solver/forms/*.[ch] analysis/*.[ch] io/*.[ch] runs/*.[ch] reports/*.[ch] \
               cli/*.[ch])) $(TEXT_SRC)
 HASH_OBJ := $(BUILD)/gen/source_hash.o
 # The report's prose (reports/text/*.md) and claims (reports/claims/*.md),
@@ -159,7 +159,9 @@ LIBSO   := $(BUILD)/libvsph.so.$(VERSION)
 PUB_HDR := vsph.h common/api.h common/consts.h common/status.h common/params.h \
            kernels/kernel.h solver/particles.h solver/cells.h solver/pair.h \
            solver/viscous.h solver/equations.h solver/walls.h solver/scene.h \
-           solver/run.h solver/lattice.h analysis/moments.h analysis/fields.h \
+           solver/run.h solver/lattice.h solver/forms/brookshaw.h solver/forms/er.h \
+           solver/forms/morris.h solver/forms/stress.h solver/forms/takeda.h \
+           solver/forms/zheng.h analysis/moments.h analysis/fields.h \
            analysis/scaling.h analysis/dissipation.h analysis/references.h
 LIB_ALL := $(CORE_SRC:%.c=$(BUILD)/%.o) $(HASH_OBJ)
 

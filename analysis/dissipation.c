@@ -432,7 +432,7 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
   double *f[3] = {buf, buf + p->n, NULL}, *dens = buf + 2 * p->n;
   if ((st = evaluate(&vp, p, f, dens, &res->n_fallback))) goto done;
   /* the continuum limit this form's dissipation tends to (its descriptor) */
-  const int limit = vsph_viscous_types[dp->form].limit;
+  const int limit = vsph_viscous_types[dp->form]->limit;
   double ex[3];
   if ((st = exact_integrals(dp, limit == VSPH_VISCOUS_LIMIT_LAPLACIAN ? 3 : 2,
                             ex)))

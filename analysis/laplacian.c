@@ -25,14 +25,14 @@ _Static_assert(sizeof field_names / sizeof field_names[0] ==
  * (its descriptor's lap): one list, vsph_viscous_types. */
 const char *vsph_laplacian_form_name(int form) {
   for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++)
-    if (form >= 0 && vsph_viscous_types[k].lap == form)
-      return vsph_viscous_types[k].name;
+    if (form >= 0 && vsph_viscous_types[k]->lap == form)
+      return vsph_viscous_types[k]->name;
   return "unknown";
 }
 
 int vsph_laplacian_form_find(const char *name) {
   const int k = vsph_viscous_find(name);
-  return k >= 0 ? vsph_viscous_types[k].lap : -1;
+  return k >= 0 ? vsph_viscous_types[k]->lap : -1;
 }
 
 const char *vsph_laplacian_field_name(int field) {

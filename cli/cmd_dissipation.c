@@ -51,7 +51,7 @@ static int print_table(const void *w) {
   printf("P_exact  -int V:D  %.12e\n", r->P_exact);
   printf("P_grad   -mu|gu|^2 %.12e\n", r->P_grad);
   printf("P_limit  (%-9s) %.12e\n",
-         vsph_viscous_limit_name(vsph_viscous_types[dp->form].limit),
+         vsph_viscous_limit_name(vsph_viscous_types[dp->form]->limit),
          r->P_limit);
   printf("rel_error          %+.6e\n", r->rel_error);
   printf("  consistency      %+.6e\n", r->consistency_error);

@@ -203,7 +203,7 @@ cJSON *vsph_json_dissipation(const struct vsph_dissipation_props *dp,
   cJSON_AddNumberToObject(o, "P_grad", r->P_grad);
   cJSON_AddNumberToObject(o, "P_limit", r->P_limit);
   cJSON_AddStringToObject(
-      o, "limit", vsph_viscous_limit_name(vsph_viscous_types[dp->form].limit));
+      o, "limit", vsph_viscous_limit_name(vsph_viscous_types[dp->form]->limit));
   cJSON_AddNumberToObject(o, "rel_error", r->rel_error);
   cJSON_AddNumberToObject(o, "consistency_error", r->consistency_error);
   vsph_json_number(o, "lattice_error", r->lattice_error);

@@ -170,7 +170,7 @@ static int every_form(struct vsph_report *R, FILE *csv) {
   int st = vsph_report_doc_say(R, "dissipation.every_head");
   for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT && !st; form++) {
     const int paper =
-        vsph_viscous_types[form].flags & VSPH_VISCOUS_FREE_SURFACE;
+        vsph_viscous_types[form]->flags & VSPH_VISCOUS_FREE_SURFACE;
     fprintf(R->md, "| %s%s%s", paper ? "**" : "", vsph_viscous_label(form),
             paper ? "**" : "");
     for (int shape = VSPH_DISSIPATION_SHAPE_COUNT - 1; shape >= 0 && !st;

@@ -91,7 +91,7 @@ static int every_form(struct vsph_report *R, const struct tables *tb) {
   vsph_text_set(&R->tv, "hdx", "%.4g", sp.hdx);
   if (!st) st = vsph_report_doc_say(R, "scaling.every_head");
   for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT && !st; f++) {
-    const int paper = vsph_viscous_types[f].flags & VSPH_VISCOUS_FREE_SURFACE;
+    const int paper = vsph_viscous_types[f]->flags & VSPH_VISCOUS_FREE_SURFACE;
     fprintf(R->md, "| %s%s%s", paper ? "**" : "", vsph_viscous_label(f),
             paper ? "**" : "");
     for (int dim = 2; dim <= 3; dim++)

@@ -319,122 +319,17 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_vec vsph_pair_pressure(
   return f;
 }
 
-/** @brief MGF, Monaghan & Gingold, Eq. (4.20), THEORY 3, and its
- *  Brookshaw-type kin (docs/theory.md, section 8):
- *  (div V)_i = K mu sum_j V_j (u_j - u_i).(r_j - r_i)/(s^2 + eta^2)
- *  grad_i W_ij. MGF: K = 2(d+2), eta = 0; Violeau & Issa (Basa's model C):
- *  K = 2(d+2), eta = 0.1 h; Cleary (model D): K = 2 xi, eta = 0.1 h.
- *  @param Kmu K mu (Pa s); @param eta2 eta^2 (m^2; 0 for MGF, which then
- *  adds an exact zero).
- *  @return the pair's share -K mu V_j F (du.x)/(s^2 + eta^2) x and its
- *  dissipation density (K mu/2) V_j F (du.x)^2/(s^2 + eta^2) (THEORY 4),
- *  so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
-VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_mgf(
-    const struct vsph_pair *pr, int dim, double Kmu, double eta2, double dux) {
-  struct vsph_pair_visc r;
-  const double c = -Kmu * pr->VF * dux / (pr->s2 + eta2);
-  for (int k = 0; k < dim; k++) r.f[k] = c * pr->x[k];
-  r.dens = -0.5 * c * dux; /* (K mu/2) V_j F (du.x)^2/s^2, one division */
-  return r;
-}
+/* ------------------------------------------------- the formulations' terms */
 
-/** @brief MEAF, Morris, Fox & Zhu (1997), Eq. (4.30), THEORY 3:
- *  (div V)_i = 2 mu sum_j V_j W'/s (u_i - u_j). @param du u_j - u_i;
- *  @param two_mu 2 mu (Pa s). @return the pair's share -2 mu V_j F du and
- *  its dissipation density mu V_j F |du|^2 (THEORY 4). */
-VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_meaf(
-    const struct vsph_pair *pr, int dim, double two_mu,
-    const struct vsph_pair_vec du) {
-  struct vsph_pair_visc r;
-  const double c = -two_mu * pr->VF;
-  double du2 = 0.0;
-  for (int k = 0; k < dim; k++) {
-    r.f[k] = c * du.v[k];
-    du2 += du.v[k] * du.v[k];
-  }
-  r.dens = 0.5 * two_mu * pr->VF * du2;
-  return r;
-}
-
-/** @brief Morris, Fox & Zhu's (1997) original, regularised form (Basa
- *  et al.'s model E with r^2 + eta^2 in the denominator, as Morris et al.
- *  print it; docs/theory.md, section 8): with uniform mu,
- *  (div V)_i = 2 mu sum_j V_j (r_ij.grad_i W_ij)/(s^2 + eta^2) (u_i - u_j)
- *            = 2 mu sum_j V_j F s^2/(s^2 + eta^2) (u_i - u_j);
- *  eta = 0 gives MEAF. @param du u_j - u_i; @param two_mu 2 mu (Pa s);
- *  @param eta2 eta^2 (m^2). @return the pair's share and its dissipation
- *  density mu V_j F s^2/(s^2 + eta^2) |du|^2 (THEORY 4). */
-VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_meafeta(
-    const struct vsph_pair *pr, int dim, double two_mu, double eta2,
-    const struct vsph_pair_vec du) {
-  struct vsph_pair_visc r;
-  const double c = -two_mu * pr->VF * pr->s2 / (pr->s2 + eta2);
-  double du2 = 0.0;
-  for (int k = 0; k < dim; k++) {
-    r.f[k] = c * du.v[k];
-    du2 += du.v[k] * du.v[k];
-  }
-  r.dens = -0.5 * c * du2;
-  return r;
-}
-
-/** @brief PVWF pass 1, Eqs. (4.18)-(4.19), THEORY 3: the pair's terms of
- *  B = sum_j V_j grad_i W_ij (x) x = sum_j V_j (-F) x (x) x, whose inverse
- *  is L_i, and of Mg = sum_j V_j (-F) du (x) x, so that the renormalised
- *  gradient is (grad u)_i = Mg L_i (row-major d x d, entry [a*dim+b]).
- *  @param du u_j - u_i. */
-VSPH_CONSTS_SPECIALISE struct vsph_pair_grad vsph_pair_pvwf_grad(
-    const struct vsph_pair *pr, int dim, const struct vsph_pair_vec du) {
-  struct vsph_pair_grad r;
-  const double c = -pr->VF;
-  for (int a = 0; a < dim; a++)
-    for (int b = 0; b < dim; b++) {
-      r.B[a * dim + b] = c * pr->x[a] * pr->x[b];
-      r.M[a * dim + b] = c * du.v[a] * pr->x[b];
-    }
-  return r;
-}
-
-/** @brief PVWF pass 2, Eq. (4.19), THEORY 3:
- *  (div V)_i = sum_j V_j (T_j L_j + T_i L_i) grad_i W_ij. @return the
- *  pair's -V_j F (A_j + A_i) x with A = T L from pass 1.
- *  @param Ai A_i (row-major); @param A A[a*dim+b][j] of every particle. */
-VSPH_CONSTS_SPECIALISE struct vsph_pair_vec vsph_pair_pvwf_force(
-    const struct vsph_pair *pr, int dim, const double Ai[9],
-    double *const A[9]) {
-  struct vsph_pair_vec f;
-  const size_t j = pr->j;
-  for (int a = 0; a < dim; a++) {
-    double y = 0.0;
-    for (int b = 0; b < dim; b++)
-      y += (A[a * dim + b][j] + Ai[a * dim + b]) * pr->x[b];
-    f.v[a] = -(pr->VF * y);
-  }
-  return f;
-}
-
-/** @brief Espanol & Revenga (2003), docs/theory.md section 8: with
- *  F_ER = -W'/s and the number density 1/V,
- *  (div V)_i = sum_j V_j F (a du + b (du.x) x / s^2), where
- *  a = zeta - mu (d+2)/d and b = -(d+2)(zeta + mu (d-2)/d) give
- *  mu lap u + (zeta + mu (1 - 2/d)) grad div u in the continuum (zeta the
- *  bulk viscosity). In 2-D with zeta = 0, b = 0 and a = -2 mu: MEAF.
- *  @p a, @p b as above (Pa s); @param du u_j - u_i.
- *  @return the pair's share and its dissipation density -f.du/2
- *  (THEORY 4), so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
-VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_er(
-    const struct vsph_pair *pr, int dim, double a, double b,
-    const struct vsph_pair_vec du, double dux) {
-  struct vsph_pair_visc r;
-  const double c1 = a * pr->VF, c2 = b * pr->VF * dux / pr->s2;
-  double du2 = 0.0;
-  for (int k = 0; k < dim; k++) {
-    r.f[k] = c1 * du.v[k] + c2 * pr->x[k];
-    du2 += du.v[k] * du.v[k];
-  }
-  r.dens = -0.5 * (c1 * du2 + c2 * dux);
-  return r;
-}
+/* Each family of viscous formulations keeps its pair terms beside its
+ * descriptors in solver/forms/ (docs/theory.md section 8 says how to add
+ * one). */
+#include "forms/brookshaw.h"
+#include "forms/er.h"
+#include "forms/morris.h"
+#include "forms/stress.h"
+#include "forms/takeda.h"
+#include "forms/zheng.h"
 
 /* ------------------------------- contact SPH (docs/theory.md, section 12) */
 
@@ -520,90 +415,6 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_contact_visc(
   return vsph_pair_er(pr, dim, -2.0 * etap, -2.0 / 3.0 * etap, du, dux);
 }
 
-/** Per-particle sums of Takeda-type direct second derivatives (Basa et
- *  al.'s model A, docs/theory.md section 8), un-differenced as Basa's
- *  eq. (27): <d_ab f>_i = sum_j V_j f_j d_ab W_ij, the sum taking j = i
- *  too. With d_a W_ij = -F x_a and d_ab W_ij = x_a x_b/s^2 (W'' - F) +
- *  delta_ab F (eq. 28; derivatives at r_i), for f = 1 and for each
- *  velocity component, so that the Shepard-corrected derivatives of
- *  eq. (23) can be finished from them. Row-major d x d blocks. */
-struct vsph_pair_takeda {
-  double s0;       /*!< sum V W */
-  double s1[3];    /*!< sum V d_a W */
-  double s2[9];    /*!< sum V d_ab W */
-  double f0[3];    /*!< [c]: sum V u^c W */
-  double f1[3][3]; /*!< [c][a]: sum V u^c d_a W */
-  double f2[3][9]; /*!< [c][ab]: sum V u^c d_ab W */
-};
-
-/** @brief Add neighbour j (pair @p pr, volume @p vj, velocity @p uj,
- *  W_ij = @p w and W''(s) = @p d2w) to the sums @p acc. */
-VSPH_CONSTS_SPECIALISE void vsph_pair_takeda_add(struct vsph_pair_takeda *acc,
-                                                 const struct vsph_pair *pr,
-                                                 int dim, double vj,
-                                                 const double uj[3], double w,
-                                                 double d2w) {
-  const double e = (d2w - pr->F) / pr->s2;
-  double d1[3], d2[9];
-  for (int a = 0; a < dim; a++) {
-    d1[a] = -vj * pr->F * pr->x[a];
-    for (int b = 0; b < dim; b++)
-      d2[a * dim + b] = vj * (e * pr->x[a] * pr->x[b] + (a == b ? pr->F : 0.0));
-  }
-  acc->s0 += vj * w;
-  for (int a = 0; a < dim; a++) acc->s1[a] += d1[a];
-  for (int e2 = 0; e2 < dim * dim; e2++) acc->s2[e2] += d2[e2];
-  for (int c = 0; c < dim; c++) {
-    acc->f0[c] += vj * w * uj[c];
-    for (int a = 0; a < dim; a++) acc->f1[c][a] += d1[a] * uj[c];
-    for (int e2 = 0; e2 < dim * dim; e2++) acc->f2[c][e2] += d2[e2] * uj[c];
-  }
-}
-
-/** @brief Add particle i's own term (j = i): volume @p vi, velocity
- *  @p ui, W(0) = @p w0, W''(0) = @p d2w0 (d_ab W(0) = delta_ab W''(0)). */
-static inline void vsph_pair_takeda_self(struct vsph_pair_takeda *acc, int dim,
-                                         double vi, const double ui[3],
-                                         double w0, double d2w0) {
-  acc->s0 += vi * w0;
-  for (int a = 0; a < dim; a++) acc->s2[a * dim + a] += vi * d2w0;
-  for (int c = 0; c < dim; c++) {
-    acc->f0[c] += vi * w0 * ui[c];
-    for (int a = 0; a < dim; a++) acc->f2[c][a * dim + a] += vi * d2w0 * ui[c];
-  }
-}
-
-/** @brief Model A's force density from the sums: with D_c,ab the second
- *  derivatives of u^c, (div tau)_a = mu sum_b D_a,bb + (mu + lambda)
- *  sum_b D_b,ab (Basa's eq. 6 for lambda = -2 mu/3). @p shepard 0: the
- *  plain sums (eq. 27); 1: the derivatives of the Shepard interpolant
- *  <f>/<1> (eq. 23), which answer a uniform field with exactly zero. */
-static inline void vsph_pair_takeda_finish(const struct vsph_pair_takeda *acc,
-                                           int dim, int shepard, double mu,
-                                           double lambda, double f[3]) {
-  double D[3][9];
-  const double s0 = acc->s0, r1 = 1.0 / s0, r2 = r1 * r1, r3 = r2 * r1;
-  for (int c = 0; c < dim; c++)
-    for (int a = 0; a < dim; a++)
-      for (int b = 0; b < dim; b++) {
-        const int ab = a * dim + b;
-        D[c][ab] =
-            shepard ? (acc->f2[c][ab] * s0 - acc->f1[c][b] * acc->s1[a] -
-                       acc->f1[c][a] * acc->s1[b] - acc->f0[c] * acc->s2[ab]) *
-                              r2 +
-                          2.0 * acc->f0[c] * acc->s1[a] * acc->s1[b] * r3
-                    : acc->f2[c][ab];
-      }
-  for (int a = 0; a < dim; a++) {
-    double lap = 0.0, gdiv = 0.0;
-    for (int b = 0; b < dim; b++) {
-      lap += D[a][b * dim + b];
-      gdiv += D[b][a * dim + b];
-    }
-    f[a] = mu * lap + (mu + lambda) * gdiv;
-  }
-}
-
 /* ------------------------------- kernel corrections (Basa et al. §4) */
 
 /** Basa et al.'s consistency corrections of the kernel gradient (their
@@ -658,89 +469,6 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_pressure_g(double vj, int dim,
                                                  double psum, const double g[3],
                                                  double f[3]) {
   for (int k = 0; k < dim; k++) f[k] = -vj * psum * g[k];
-}
-
-/* ---------------------------- Laplacian forms (docs/theory.md, section 7) */
-
-/** The four Laplacian forms of Zheng, Ma & Shao (2018) (docs/theory.md
- *  section 7), all applied per velocity component. */
-enum vsph_pair_lap_form {
-  VSPH_PAIR_LAP_HYBRID = 0,   /*!< VISC-01, Brookshaw / Morris (15) */
-  VSPH_PAIR_LAP_DIRECT,       /*!< VISC-02, twice-differentiated kernel (16) */
-  VSPH_PAIR_LAP_SCHWAIGER,    /*!< VISC-03, Schwaiger (2008) corrected (17) */
-  VSPH_PAIR_LAP_RENORMALISED, /*!< VISC-04, Oger et al. (2007) (20) */
-  VSPH_PAIR_LAP_COUNT
-};
-
-/** Per-particle sums from which every form is finished (one neighbour
- *  pass serves all four; x = r_j - r_i, F = W'/s, df = f_j - f_i). */
-struct vsph_pair_lap {
-  double M[9]; /*!< -sum V F x (x) x: the renormalisation matrix (19) */
-  double a[3]; /*!< -sum V F x = sum V grad_i W */
-  double h1;   /*!< -sum V F df s^2/(s^2 + eta^2) */
-  double S[9]; /*!< -sum V F df x (x) x/(s^2 + eta^2) */
-  double g[3]; /*!< -sum V F df x (the gradient before Gamma) */
-  double k2;   /*!< sum V df (W'' - W'/s) */
-};
-
-/** @brief Accumulate pair @p pr into @p acc: @p vj = V_j, @p df =
- *  f_j - f_i, @p d2w = W''(s) (m^{-d-2}), @p eta2 the regulariser eta^2
- *  (m^2). */
-VSPH_CONSTS_SPECIALISE void vsph_pair_lap_add(struct vsph_pair_lap *acc,
-                                              const struct vsph_pair *pr,
-                                              int dim, double vj, double df,
-                                              double d2w, double eta2) {
-  const double VF = pr->VF, r = 1.0 / (pr->s2 + eta2);
-  for (int a = 0; a < dim; a++) {
-    acc->a[a] -= VF * pr->x[a];
-    acc->g[a] -= VF * df * pr->x[a];
-    for (int b = 0; b < dim; b++) {
-      acc->M[a * dim + b] -= VF * pr->x[a] * pr->x[b];
-      acc->S[a * dim + b] -= VF * df * pr->x[a] * pr->x[b] * r;
-    }
-  }
-  acc->h1 -= VF * df * pr->s2 * r;
-  acc->k2 += vj * df * (d2w - pr->F);
-}
-
-/** @brief The Laplacian of form @p form from the sums of particle i
- *  (docs/theory.md section 7):
- *  - VISC-01: 2 h1 (= 2 sum V (f_i - f_j) r_ij.grad W/(r^2 + eta^2));
- *  - VISC-02: 2/(d + 2) k2 ([reconstructed]: the printed form without the
- *    factor returns (d + 2)/2 times the Laplacian);
- *  - VISC-03: (d / H) (2 h1 - 2 grad f . a), grad f = Gamma g,
- *    H = tr M (the trace the paper writes H_bb), Gamma = M^-1;
- *  - VISC-04: 2 Gamma^T : S.
- *  @p Gamma is M^-1 (the caller inverts M; identity where singular).
- *  @return the Laplacian (units of f / m^2). */
-static inline double vsph_pair_lap_finish(const struct vsph_pair_lap *acc,
-                                          int dim, int form,
-                                          const double Gamma[9]) {
-  switch (form) {
-    case VSPH_PAIR_LAP_HYBRID:
-      return 2.0 * acc->h1;
-    case VSPH_PAIR_LAP_DIRECT:
-      return 2.0 / (dim + 2.0) * acc->k2;
-    case VSPH_PAIR_LAP_SCHWAIGER: {
-      double H = 0.0, ga = 0.0;
-      for (int a = 0; a < dim; a++) {
-        H += acc->M[a * dim + a];
-        double grad = 0.0; /* (Gamma g)_a */
-        for (int b = 0; b < dim; b++) grad += Gamma[a * dim + b] * acc->g[b];
-        ga += grad * acc->a[a];
-      }
-      return dim / H * (2.0 * acc->h1 - 2.0 * ga);
-    }
-    case VSPH_PAIR_LAP_RENORMALISED: {
-      double y = 0.0; /* 2 sum V (f_i - f_j) F x.(Gamma x)/(s^2 + eta^2) */
-      for (int a = 0; a < dim; a++)
-        for (int b = 0; b < dim; b++)
-          y += Gamma[a * dim + b] * acc->S[b * dim + a];
-      return 2.0 * y;
-    }
-    default:
-      return NAN;
-  }
 }
 
 #endif /* VSPH_SOLVER_PAIR_H */

@@ -11,256 +11,33 @@
 #include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "cells.h"
+#include "forms/forms.h"
 #include "pair.h"
 #include "particles.h"
 
-/* The pair functions of the descriptors (vsph_viscous_pair_fn): pair.h's
- * terms with the loop's constants. */
-static struct vsph_pair_visc pair_brookshaw(const struct vsph_viscous_loop *lp,
-                                            int dim, const struct vsph_pair *pr,
-                                            struct vsph_pair_vec du, double dux,
-                                            const double Ai[9]) {
-  (void)du, (void)Ai;
-  return vsph_pair_mgf(pr, dim, lp->Kmu, lp->eta2, dux);
-}
-
-static struct vsph_pair_visc pair_meaf(const struct vsph_viscous_loop *lp,
-                                       int dim, const struct vsph_pair *pr,
-                                       struct vsph_pair_vec du, double dux,
-                                       const double Ai[9]) {
-  (void)dux, (void)Ai;
-  return vsph_pair_meaf(pr, dim, lp->two_mu, du);
-}
-
-static struct vsph_pair_visc pair_meafeta(const struct vsph_viscous_loop *lp,
-                                          int dim, const struct vsph_pair *pr,
-                                          struct vsph_pair_vec du, double dux,
-                                          const double Ai[9]) {
-  (void)dux, (void)Ai;
-  return vsph_pair_meafeta(pr, dim, lp->two_mu, lp->eta2, du);
-}
-
-static struct vsph_pair_visc pair_er(const struct vsph_viscous_loop *lp,
-                                     int dim, const struct vsph_pair *pr,
-                                     struct vsph_pair_vec du, double dux,
-                                     const double Ai[9]) {
-  (void)Ai;
-  return vsph_pair_er(pr, dim, lp->er_a, lp->er_b, du, dux);
-}
-
-static struct vsph_pair_visc pair_stress(const struct vsph_viscous_loop *lp,
-                                         int dim, const struct vsph_pair *pr,
-                                         struct vsph_pair_vec du, double dux,
-                                         const double Ai[9]) {
-  (void)du, (void)dux;
-  return vsph_viscous_pair_stress(pr, dim, Ai, lp->A);
-}
-
-#define FS VSPH_VISCOUS_FREE_SURFACE
-#define CO VSPH_VISCOUS_CORRIGIBLE
-#define TV VSPH_VISCOUS_TVF
-/* Every formulation (docs/theory.md, sections 3 and 8). The first
+/* Every formulation (docs/theory.md, sections 3 and 8), each described
+ * in its family's file of solver/forms/. The first
  * VSPH_VISCOUS_PAPER_COUNT are the free-surface study's. */
-const struct vsph_viscous_type vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
-    [VSPH_VISCOUS_MGF] =
-        {.name = "mgf",
-         .label = "MGF",
-         .cite = "Monaghan & Gingold 1983; Colagrossi et al. 2011, "
-                 "Eq. (4.20)",
-         .pass = VSPH_VISCOUS_PASS_NONE,
-         .family = VSPH_VISCOUS_FAMILY_BROOKSHAW,
-         .flags = FS | CO | TV,
-         .lap = -1,
-         .lambda = VSPH_VISCOUS_LAMBDA_MU,
-         .limit = VSPH_VISCOUS_LIMIT_STRESS,
-         .eta = 0.0,
-         .params = "",
-         .pair = pair_brookshaw},
-    [VSPH_VISCOUS_MEAF] =
-        {.name = "meaf",
-         .label = "MEAF",
-         .cite = "Morris, Fox & Zhu 1997; Colagrossi et al. 2011, "
-                 "Eq. (4.30)",
-         .pass = VSPH_VISCOUS_PASS_NONE,
-         .family = VSPH_VISCOUS_FAMILY_MORRIS,
-         .flags = FS | CO | TV,
-         .lap = -1,
-         .lambda = VSPH_VISCOUS_LAMBDA_MU,
-         .limit = VSPH_VISCOUS_LIMIT_GRADIENT,
-         .eta = 0.0,
-         .params = "",
-         .pair = pair_meaf},
-    [VSPH_VISCOUS_PVWF] =
-        {.name = "pvwf",
-         .label = "PVWF",
-         .cite = "principle of virtual work, Colagrossi et al. 2011, "
-                 "Eqs. (4.18)-(4.19)",
-         .pass = VSPH_VISCOUS_PASS_STRESS,
-         .family = VSPH_VISCOUS_FAMILY_STRESS,
-         .flags = FS | VSPH_VISCOUS_RENORM,
-         .lap = -1,
-         .lambda = VSPH_VISCOUS_LAMBDA_STOKES,
-         .limit = VSPH_VISCOUS_LIMIT_STRESS,
-         .eta = 0.0,
-         .params = "det_tol",
-         .pair = pair_stress},
-    [VSPH_VISCOUS_VI] =
-        {.name = "vi",
-         .label = "VI",
-         .cite = "Violeau & Issa 2007 (Basa et al. 2009, model C, eq. 33)",
-         .pass = VSPH_VISCOUS_PASS_NONE,
-         .family = VSPH_VISCOUS_FAMILY_BROOKSHAW,
-         .flags = CO | TV,
-         .lap = -1,
-         .lambda = VSPH_VISCOUS_LAMBDA_MU,
-         .limit = VSPH_VISCOUS_LIMIT_STRESS,
-         .eta = VSPH_VISCOUS_ETA,
-         .params = "eta",
-         .pair = pair_brookshaw},
-    [VSPH_VISCOUS_CLEARY] =
-        {.name = "cleary",
-         .label = "Cleary",
-         .cite = "Cleary 1998 (Basa et al. 2009, model D, eq. 34)",
-         .pass = VSPH_VISCOUS_PASS_NONE,
-         .family = VSPH_VISCOUS_FAMILY_BROOKSHAW,
-         .flags = CO | TV | VSPH_VISCOUS_XI,
-         .lap = -1,
-         .lambda = VSPH_VISCOUS_LAMBDA_MU,
-         .limit = VSPH_VISCOUS_LIMIT_STRESS,
-         .eta = VSPH_VISCOUS_ETA,
-         .params = "xi, eta",
-         .pair = pair_brookshaw},
-    [VSPH_VISCOUS_TWOPASS] =
-        {.name = "twopass",
-         .label = "B",
-         .cite = "two-pass strain rate, Watkins et al. 1996 (Basa et al. "
-                 "2009, model B, eq. 29; Vukcevic et al. 2012)",
-         .pass = VSPH_VISCOUS_PASS_STRESS,
-         .family = VSPH_VISCOUS_FAMILY_STRESS,
-         .flags = 0,
-         .lap = -1,
-         .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,
-         .limit = VSPH_VISCOUS_LIMIT_STRESS,
-         .eta = 0.0,
-         .params = "",
-         .pair = pair_stress},
-    [VSPH_VISCOUS_TAKEDA] =
-        {.name = "takeda",
-         .label = "A",
-         .cite = "direct second derivatives, Takeda et al. 1994 (Basa et "
-                 "al. 2009, model A, eqs. 27-28)",
-         .pass = VSPH_VISCOUS_PASS_TAKEDA,
-         .family = VSPH_VISCOUS_FAMILY_NONE,
-         .flags = 0,
-         .lap = -1,
-         .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,
-         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
-         .eta = 0.0,
-         .params = "",
-         .pair = NULL},
-    [VSPH_VISCOUS_TAKEDA0] =
-        {.name = "takeda0",
-         .label = "A[0]",
-         .cite = "model A, Shepard-corrected (Basa et al. 2009, eq. 23)",
-         .pass = VSPH_VISCOUS_PASS_TAKEDA,
-         .family = VSPH_VISCOUS_FAMILY_NONE,
-         .flags = VSPH_VISCOUS_SHEPARD,
-         .lap = -1,
-         .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,
-         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
-         .eta = 0.0,
-         .params = "",
-         .pair = NULL},
-    [VSPH_VISCOUS_ER] =
-        {.name = "er",
-         .label = "ER",
-         .cite = "Espanol & Revenga 2003 (docs/theory.md, section 8)",
-         .pass = VSPH_VISCOUS_PASS_NONE,
-         .family = VSPH_VISCOUS_FAMILY_ER,
-         .flags = CO | TV,
-         .lap = -1,
-         .lambda = VSPH_VISCOUS_LAMBDA_MU,
-         .limit = VSPH_VISCOUS_LIMIT_GRADIENT,
-         .eta = 0.0,
-         .params = "zeta",
-         .pair = pair_er},
-    [VSPH_VISCOUS_VISC01] =
-        {.name = "visc01",
-         .label = "VISC-01",
-         .cite = "Zheng et al. 2018, VISC-01: Brookshaw/Morris hybrid "
-                 "(eq. 15)",
-         .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-         .family = VSPH_VISCOUS_FAMILY_NONE,
-         .flags = TV,
-         .lap = VSPH_PAIR_LAP_HYBRID,
-         .lambda = VSPH_VISCOUS_LAMBDA_MU,
-         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
-         .eta = VSPH_VISCOUS_ETA,
-         .params = "eta",
-         .pair = NULL},
-    [VSPH_VISCOUS_VISC02] =
-        {.name = "visc02",
-         .label = "VISC-02",
-         .cite = "Zheng et al. 2018, VISC-02: twice-differentiated kernel "
-                 "(eq. 16)",
-         .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-         .family = VSPH_VISCOUS_FAMILY_NONE,
-         .flags = TV,
-         .lap = VSPH_PAIR_LAP_DIRECT,
-         .lambda = VSPH_VISCOUS_LAMBDA_MU,
-         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
-         .eta = 0.0,
-         .params = "",
-         .pair = NULL},
-    [VSPH_VISCOUS_VISC03] =
-        {.name = "visc03",
-         .label = "VISC-03",
-         .cite = "Zheng et al. 2018, VISC-03: Schwaiger's corrected "
-                 "Laplacian (eq. 17)",
-         .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-         .family = VSPH_VISCOUS_FAMILY_NONE,
-         .flags = TV,
-         .lap = VSPH_PAIR_LAP_SCHWAIGER,
-         .lambda = VSPH_VISCOUS_LAMBDA_MU,
-         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
-         .eta = VSPH_VISCOUS_ETA,
-         .params = "eta, det_tol",
-         .pair = NULL},
-    [VSPH_VISCOUS_VISC04] =
-        {.name = "visc04",
-         .label = "VISC-04",
-         .cite = "Zheng et al. 2018, VISC-04: Oger's renormalised "
-                 "gradient (eq. 20)",
-         .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-         .family = VSPH_VISCOUS_FAMILY_NONE,
-         .flags = TV,
-         .lap = VSPH_PAIR_LAP_RENORMALISED,
-         .lambda = VSPH_VISCOUS_LAMBDA_MU,
-         .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
-         .eta = VSPH_VISCOUS_ETA,
-         .params = "eta, det_tol",
-         .pair = NULL},
-    [VSPH_VISCOUS_MEAFETA] =
-        {.name = "meafeta",
-         .label = "MEAF-eta",
-         .cite = "Morris, Fox & Zhu 1997 with r^2 + eta^2 (Basa et al. "
-                 "2009, model E as Morris et al. print it)",
-         .pass = VSPH_VISCOUS_PASS_NONE,
-         .family = VSPH_VISCOUS_FAMILY_NONE,
-         .flags = TV,
-         .lap = -1,
-         .lambda = VSPH_VISCOUS_LAMBDA_MU,
-         .limit = VSPH_VISCOUS_LIMIT_GRADIENT,
-         .eta = VSPH_VISCOUS_ETA,
-         .params = "eta",
-         .pair = pair_meafeta},
+const struct vsph_viscous_type
+    *const vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT] = {
+        [VSPH_VISCOUS_MGF] = &vsph_brookshaw_mgf,
+        [VSPH_VISCOUS_MEAF] = &vsph_morris_meaf,
+        [VSPH_VISCOUS_PVWF] = &vsph_stress_pvwf,
+        [VSPH_VISCOUS_VI] = &vsph_brookshaw_vi,
+        [VSPH_VISCOUS_CLEARY] = &vsph_brookshaw_cleary,
+        [VSPH_VISCOUS_TWOPASS] = &vsph_stress_twopass,
+        [VSPH_VISCOUS_TAKEDA] = &vsph_takeda_a,
+        [VSPH_VISCOUS_TAKEDA0] = &vsph_takeda_a0,
+        [VSPH_VISCOUS_ER] = &vsph_er_er,
+        [VSPH_VISCOUS_VISC01] = &vsph_zheng_visc01,
+        [VSPH_VISCOUS_VISC02] = &vsph_zheng_visc02,
+        [VSPH_VISCOUS_VISC03] = &vsph_zheng_visc03,
+        [VSPH_VISCOUS_VISC04] = &vsph_zheng_visc04,
+        [VSPH_VISCOUS_MEAFETA] = &vsph_morris_meafeta,
 };
-#undef FS
-#undef TV
-#undef CO
 
 const struct vsph_viscous_type *vsph_viscous_type_get(int form) {
-  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT ? &vsph_viscous_types[form]
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT ? vsph_viscous_types[form]
                                                      : NULL;
 }
 
@@ -276,19 +53,19 @@ const char *vsph_viscous_limit_name(int limit) {
 
 const char *vsph_viscous_name(int form) {
   return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT
-             ? vsph_viscous_types[form].name
+             ? vsph_viscous_types[form]->name
              : "unknown";
 }
 
 int vsph_viscous_find(const char *name) {
   for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++)
-    if (strcmp(vsph_viscous_types[k].name, name) == 0) return k;
+    if (strcmp(vsph_viscous_types[k]->name, name) == 0) return k;
   return -1;
 }
 
 const char *vsph_viscous_label(int form) {
   return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT
-             ? vsph_viscous_types[form].label
+             ? vsph_viscous_types[form]->label
              : "?";
 }
 
@@ -296,9 +73,9 @@ const char *vsph_viscous_list(unsigned flags, char *buf, size_t n) {
   size_t len = 0;
   if (n) buf[0] = '\0';
   for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT && len < n; k++)
-    if ((vsph_viscous_types[k].flags & flags) == flags)
+    if ((vsph_viscous_types[k]->flags & flags) == flags)
       len += (size_t)snprintf(buf + len, n - len, "%s%s", len ? ", " : "",
-                              vsph_viscous_types[k].name);
+                              vsph_viscous_types[k]->name);
   return buf;
 }
 
@@ -331,7 +108,7 @@ int vsph_viscous_props_init(struct vsph_viscous_props *vp, int form,
    * Models A and B (docs/theory.md section 8): Basa et al.'s eq. (4) and
    * Vukcevic et al.'s eq. (13) take lambda = -2 mu/3, the 3-D Stokes value,
    * in 2-D too; kept as the papers have it. */
-  const struct vsph_viscous_type *t = &vsph_viscous_types[form];
+  const struct vsph_viscous_type *t = vsph_viscous_types[form];
   vp->lambda = t->lambda == VSPH_VISCOUS_LAMBDA_STOKES    ? -2.0 * mu / dim
                : t->lambda == VSPH_VISCOUS_LAMBDA_STOKES3 ? -2.0 * mu / 3.0
                                                           : mu;
@@ -483,7 +260,7 @@ VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
 void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
                               struct vsph_viscous_ws *ws, size_t i,
                               const double B[9], const double Mg[9]) {
-  const int dim = vp->dim, renorm = (vsph_viscous_types[vp->form].flags &
+  const int dim = vp->dim, renorm = (vsph_viscous_types[vp->form]->flags &
                                      VSPH_VISCOUS_RENORM) != 0;
   double L[9] = {0}, G[9] = {0};
   ws->fallback[i] =
@@ -554,7 +331,7 @@ VSPH_CONSTS_SPECIALISE void takeda_pass(const struct vsph_viscous_props *vp,
   double f[3];
   vsph_pair_takeda_finish(
       &acc, dim,
-      (vsph_viscous_types[vp->form].flags & VSPH_VISCOUS_SHEPARD) != 0, vp->mu,
+      (vsph_viscous_types[vp->form]->flags & VSPH_VISCOUS_SHEPARD) != 0, vp->mu,
       vp->lambda, f);
   double P = 0.0;
   for (int a = 0; a < dim; a++) {
@@ -620,7 +397,7 @@ static void lap_pass(const struct vsph_viscous_props *vp,
   double lap[3] = {0, 0, 0}, P = 0.0;
   vsph_viscous_laplacians(
       pk, vp->kernel, vp->h, vp->eta * vp->h * vp->eta * vp->h, vp->det_tol,
-      vsph_viscous_types[vp->form].lap, p, rg, i, dim, vel, lap);
+      vsph_viscous_types[vp->form]->lap, p, rg, i, dim, vel, lap);
   for (int a = 0; a < dim; a++) {
     ws->A[a][i] = vp->mu * lap[a];
     P += p->vel[a][i] * ws->A[a][i];
@@ -637,7 +414,7 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
   if (!ws || ws->cap < p->n || ws->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "%s needs a workspace for %zu particles",
               vsph_viscous_label(vp->form), p->n);
-  const enum vsph_viscous_pass pass = vsph_viscous_types[vp->form].pass;
+  const enum vsph_viscous_pass pass = vsph_viscous_types[vp->form]->pass;
   const int takeda = pass == VSPH_VISCOUS_PASS_TAKEDA,
             lapf = pass == VSPH_VISCOUS_PASS_LAPLACIAN;
   struct vsph_pair_kernel pk;

@@ -221,9 +221,10 @@ struct vsph_viscous_type {
                                    pass makes the whole force */
 };
 
-/** The table, indexed by vsph_viscous_form. */
+/** The table, indexed by vsph_viscous_form: each family's descriptors
+ *  live in its file of solver/forms/. */
 extern VSPH_API const struct vsph_viscous_type
-    vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT];
+    *const vsph_viscous_types[VSPH_VISCOUS_FORM_COUNT];
 
 /** @brief The descriptor of @p form (NULL when out of range). */
 VSPH_API const struct vsph_viscous_type *vsph_viscous_type_get(int form);
@@ -350,7 +351,7 @@ static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
                                           const struct vsph_viscous_ws *ws) {
   lp->form = vp->form;
   lp->dim = vp->dim;
-  lp->Kmu = (vsph_viscous_types[vp->form].flags & VSPH_VISCOUS_XI
+  lp->Kmu = (vsph_viscous_types[vp->form]->flags & VSPH_VISCOUS_XI
                  ? 2.0 * vp->xi
                  : vsph_kernel_mg_factor(vp->dim)) *
             vp->mu;
@@ -367,14 +368,14 @@ static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
  *  VISC-01..04, mu lap u with the Laplacian of pair.h applied to each
  *  velocity component. */
 static inline int vsph_viscous_particle_form(int form) {
-  return vsph_viscous_types[form].pair == NULL;
+  return vsph_viscous_types[form]->pair == NULL;
 }
 
 /** @brief Whether @p form has a first pass (vsph_viscous_prepare) whose
  *  per-particle density -T:D or u.(div V) replaces the pair densities:
  *  PVWF, B and the per-particle forms. */
 static inline int vsph_viscous_first_pass(int form) {
-  return vsph_viscous_types[form].pass != VSPH_VISCOUS_PASS_NONE;
+  return vsph_viscous_types[form]->pass != VSPH_VISCOUS_PASS_NONE;
 }
 
 /** The shape of a specialised loop: dimension and formulation, constants
@@ -417,7 +418,7 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_viscous_pair(
     case VSPH_VISCOUS_PVWF:
       return vsph_viscous_pair_stress(pr, sh.dim, Ai, lp->A);
     default: {
-      vsph_viscous_pair_fn *const fn = vsph_viscous_types[sh.form].pair;
+      vsph_viscous_pair_fn *const fn = vsph_viscous_types[sh.form]->pair;
       if (fn) return fn(lp, sh.dim, pr, du, dux, Ai);
       /* A, VISC-0x: whole from the first pass (vsph_viscous_own) */
       const struct vsph_pair_visc r = {{0.0, 0.0, 0.0}, 0.0};
@@ -429,7 +430,7 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_viscous_pair(
 /** @brief Whether @p form is a sum of pair terms along grad_i W that the
  *  kernel corrections can correct: MGF, VI, Cleary, MEAF, ER. */
 static inline int vsph_viscous_corrigible(int form) {
-  return (vsph_viscous_types[form].flags & VSPH_VISCOUS_CORRIGIBLE) != 0;
+  return (vsph_viscous_types[form]->flags & VSPH_VISCOUS_CORRIGIBLE) != 0;
 }
 
 /** @brief The viscous term of pair (i, j) of a corrigible form with the
@@ -473,13 +474,13 @@ static inline void vsph_viscous_own(const struct vsph_viscous_loop *lp,
  *  layers are two supports deep), 1 for the others (model A's one pass
  *  comes before the right-hand side's but reaches one support). */
 static inline int vsph_viscous_passes(int form) {
-  return vsph_viscous_types[form].pass == VSPH_VISCOUS_PASS_STRESS ? 2 : 1;
+  return vsph_viscous_types[form]->pass == VSPH_VISCOUS_PASS_STRESS ? 2 : 1;
 }
 
 /** @brief The family of specialised loops that serves @p form
  *  (VSPH_VISCOUS_FAMILY_NONE: the general loop). */
 static inline int vsph_viscous_family(int form) {
-  return vsph_viscous_types[form].family;
+  return vsph_viscous_types[form]->family;
 }
 
 /** @brief The form whose specialised loop serves @p form (the form id
@@ -488,7 +489,7 @@ static inline int vsph_viscous_family(int form) {
  *  being in the loop; model B shares PVWF's, its A_i in the workspace),
  *  or @p form itself where no family serves it. */
 static inline int vsph_viscous_loop_form(int form) {
-  switch (vsph_viscous_types[form].family) {
+  switch (vsph_viscous_types[form]->family) {
     case VSPH_VISCOUS_FAMILY_BROOKSHAW:
       return VSPH_VISCOUS_MGF;
     case VSPH_VISCOUS_FAMILY_MORRIS:

@@ -33,7 +33,7 @@ START_TEST(test_form_names) {
   for (int f = 0; f < VSPH_PAIR_LAP_COUNT; f++) {
     int owners = 0;
     for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++)
-      owners += vsph_viscous_types[k].lap == f;
+      owners += vsph_viscous_types[k]->lap == f;
     ck_assert_int_eq(owners, 1);
     ck_assert_int_eq(vsph_laplacian_form_find(vsph_laplacian_form_name(f)), f);
   }

@@ -525,7 +525,7 @@ START_TEST(test_bad_props_refused_names_listed) {
       [VSPH_VISCOUS_PASS_TAKEDA] = "whole force (direct second derivatives)",
       [VSPH_VISCOUS_PASS_LAPLACIAN] = "whole force (Laplacian)"};
   for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++) {
-    const struct vsph_viscous_type *t = &vsph_viscous_types[k];
+    const struct vsph_viscous_type *t = vsph_viscous_types[k];
     char row[512], reads[128] = "";
     /* "xi, eta" -> "`xi`, `eta`" */
     for (const char *c = t->params; *c;) {

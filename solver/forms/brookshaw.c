@@ -1,0 +1,64 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* The descriptors of MGF, Violeau & Issa's and Cleary's forms: Brookshaw's
+ * pair term with their K and eta (solver/viscous.h's struct vsph_viscous_type;
+ * their pair terms in brookshaw.h). */
+#include "forms.h"
+
+/* The pair functions (vsph_viscous_pair_fn): the terms with the loop's
+ * constants. */
+static struct vsph_pair_visc pair_brookshaw(const struct vsph_viscous_loop *lp,
+                                            int dim, const struct vsph_pair *pr,
+                                            struct vsph_pair_vec du, double dux,
+                                            const double Ai[9]) {
+  (void)du, (void)Ai;
+  return vsph_pair_mgf(pr, dim, lp->Kmu, lp->eta2, dux);
+}
+
+#define FS VSPH_VISCOUS_FREE_SURFACE
+#define CO VSPH_VISCOUS_CORRIGIBLE
+#define TV VSPH_VISCOUS_TVF
+
+const struct vsph_viscous_type vsph_brookshaw_mgf = {
+    .name = "mgf",
+    .label = "MGF",
+    .cite =
+        "Monaghan & Gingold 1983; Colagrossi et al. 2011, "
+        "Eq. (4.20)",
+    .pass = VSPH_VISCOUS_PASS_NONE,
+    .family = VSPH_VISCOUS_FAMILY_BROOKSHAW,
+    .flags = FS | CO | TV,
+    .lap = -1,
+    .lambda = VSPH_VISCOUS_LAMBDA_MU,
+    .limit = VSPH_VISCOUS_LIMIT_STRESS,
+    .eta = 0.0,
+    .params = "",
+    .pair = pair_brookshaw};
+
+const struct vsph_viscous_type vsph_brookshaw_vi = {
+    .name = "vi",
+    .label = "VI",
+    .cite = "Violeau & Issa 2007 (Basa et al. 2009, model C, eq. 33)",
+    .pass = VSPH_VISCOUS_PASS_NONE,
+    .family = VSPH_VISCOUS_FAMILY_BROOKSHAW,
+    .flags = CO | TV,
+    .lap = -1,
+    .lambda = VSPH_VISCOUS_LAMBDA_MU,
+    .limit = VSPH_VISCOUS_LIMIT_STRESS,
+    .eta = VSPH_VISCOUS_ETA,
+    .params = "eta",
+    .pair = pair_brookshaw};
+
+const struct vsph_viscous_type vsph_brookshaw_cleary = {
+    .name = "cleary",
+    .label = "Cleary",
+    .cite = "Cleary 1998 (Basa et al. 2009, model D, eq. 34)",
+    .pass = VSPH_VISCOUS_PASS_NONE,
+    .family = VSPH_VISCOUS_FAMILY_BROOKSHAW,
+    .flags = CO | TV | VSPH_VISCOUS_XI,
+    .lap = -1,
+    .lambda = VSPH_VISCOUS_LAMBDA_MU,
+    .limit = VSPH_VISCOUS_LIMIT_STRESS,
+    .eta = VSPH_VISCOUS_ETA,
+    .params = "xi, eta",
+    .pair = pair_brookshaw};

@@ -1,0 +1,34 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+#ifndef VSPH_SOLVER_FORMS_BROOKSHAW_H
+#define VSPH_SOLVER_FORMS_BROOKSHAW_H
+
+/** @file brookshaw.h
+ *  @brief Brookshaw's form and its kin (docs/theory.md sections 3 and 8): MGF
+ *  (Monaghan & Gingold), Violeau & Issa's (Basa et al.'s model C) and Cleary's
+ *  (model D), one pair term with their constants K and eta. The pair terms;
+ *  the descriptors are in brookshaw.c. Included by solver/pair.h, after the
+ *  pair's geometry. */
+
+#include "../pair.h"
+
+/** @brief MGF, Monaghan & Gingold, Eq. (4.20), THEORY 3, and its
+ *  Brookshaw-type kin (docs/theory.md, section 8):
+ *  (div V)_i = K mu sum_j V_j (u_j - u_i).(r_j - r_i)/(s^2 + eta^2)
+ *  grad_i W_ij. MGF: K = 2(d+2), eta = 0; Violeau & Issa (Basa's model C):
+ *  K = 2(d+2), eta = 0.1 h; Cleary (model D): K = 2 xi, eta = 0.1 h.
+ *  @param Kmu K mu (Pa s); @param eta2 eta^2 (m^2; 0 for MGF, which then
+ *  adds an exact zero).
+ *  @return the pair's share -K mu V_j F (du.x)/(s^2 + eta^2) x and its
+ *  dissipation density (K mu/2) V_j F (du.x)^2/(s^2 + eta^2) (THEORY 4),
+ *  so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_mgf(
+    const struct vsph_pair *pr, int dim, double Kmu, double eta2, double dux) {
+  struct vsph_pair_visc r;
+  const double c = -Kmu * pr->VF * dux / (pr->s2 + eta2);
+  for (int k = 0; k < dim; k++) r.f[k] = c * pr->x[k];
+  r.dens = -0.5 * c * dux; /* (K mu/2) V_j F (du.x)^2/s^2, one division */
+  return r;
+}
+
+#endif /* VSPH_SOLVER_FORMS_BROOKSHAW_H */

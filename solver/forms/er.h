@@ -1,0 +1,37 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+#ifndef VSPH_SOLVER_FORMS_ER_H
+#define VSPH_SOLVER_FORMS_ER_H
+
+/** @file er.h
+ *  @brief Espanol & Revenga's form (docs/theory.md section 8), with its bulk
+ *  viscosity zeta; in 2-D with zeta = 0 it is MEAF. The pair terms; the
+ *  descriptors are in er.c. Included by solver/pair.h, after the pair's
+ *  geometry. */
+
+#include "../pair.h"
+
+/** @brief Espanol & Revenga (2003), docs/theory.md section 8: with
+ *  F_ER = -W'/s and the number density 1/V,
+ *  (div V)_i = sum_j V_j F (a du + b (du.x) x / s^2), where
+ *  a = zeta - mu (d+2)/d and b = -(d+2)(zeta + mu (d-2)/d) give
+ *  mu lap u + (zeta + mu (1 - 2/d)) grad div u in the continuum (zeta the
+ *  bulk viscosity). In 2-D with zeta = 0, b = 0 and a = -2 mu: MEAF.
+ *  @p a, @p b as above (Pa s); @param du u_j - u_i.
+ *  @return the pair's share and its dissipation density -f.du/2
+ *  (THEORY 4), so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_er(
+    const struct vsph_pair *pr, int dim, double a, double b,
+    const struct vsph_pair_vec du, double dux) {
+  struct vsph_pair_visc r;
+  const double c1 = a * pr->VF, c2 = b * pr->VF * dux / pr->s2;
+  double du2 = 0.0;
+  for (int k = 0; k < dim; k++) {
+    r.f[k] = c1 * du.v[k] + c2 * pr->x[k];
+    du2 += du.v[k] * du.v[k];
+  }
+  r.dens = -0.5 * (c1 * du2 + c2 * dux);
+  return r;
+}
+
+#endif /* VSPH_SOLVER_FORMS_ER_H */

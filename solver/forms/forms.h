@@ -1,0 +1,29 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+#ifndef VSPH_SOLVER_FORMS_FORMS_H
+#define VSPH_SOLVER_FORMS_FORMS_H
+
+/* The viscous formulations' descriptors, one family per file of
+ * solver/forms/ (its pair terms in FAMILY.h, its descriptors in
+ * FAMILY.c), gathered into vsph_viscous_types by solver/viscous.c. Within
+ * solver/ only. */
+
+#include "../pair.h"
+#include "../viscous.h"
+
+extern const struct vsph_viscous_type vsph_brookshaw_mgf;
+extern const struct vsph_viscous_type vsph_brookshaw_vi;
+extern const struct vsph_viscous_type vsph_brookshaw_cleary;
+extern const struct vsph_viscous_type vsph_morris_meaf;
+extern const struct vsph_viscous_type vsph_morris_meafeta;
+extern const struct vsph_viscous_type vsph_stress_pvwf;
+extern const struct vsph_viscous_type vsph_stress_twopass;
+extern const struct vsph_viscous_type vsph_takeda_a;
+extern const struct vsph_viscous_type vsph_takeda_a0;
+extern const struct vsph_viscous_type vsph_er_er;
+extern const struct vsph_viscous_type vsph_zheng_visc01;
+extern const struct vsph_viscous_type vsph_zheng_visc02;
+extern const struct vsph_viscous_type vsph_zheng_visc03;
+extern const struct vsph_viscous_type vsph_zheng_visc04;
+
+#endif /* VSPH_SOLVER_FORMS_FORMS_H */

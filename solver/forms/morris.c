@@ -1,0 +1,60 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* The descriptors of MEAF and Morris, Fox & Zhu's regularised original
+ * (solver/viscous.h's struct vsph_viscous_type; their pair terms in morris.h).
+ */
+#include "forms.h"
+
+/* The pair functions (vsph_viscous_pair_fn): the terms with the loop's
+ * constants. */
+static struct vsph_pair_visc pair_meaf(const struct vsph_viscous_loop *lp,
+                                       int dim, const struct vsph_pair *pr,
+                                       struct vsph_pair_vec du, double dux,
+                                       const double Ai[9]) {
+  (void)dux, (void)Ai;
+  return vsph_pair_meaf(pr, dim, lp->two_mu, du);
+}
+
+static struct vsph_pair_visc pair_meafeta(const struct vsph_viscous_loop *lp,
+                                          int dim, const struct vsph_pair *pr,
+                                          struct vsph_pair_vec du, double dux,
+                                          const double Ai[9]) {
+  (void)dux, (void)Ai;
+  return vsph_pair_meafeta(pr, dim, lp->two_mu, lp->eta2, du);
+}
+
+#define FS VSPH_VISCOUS_FREE_SURFACE
+#define CO VSPH_VISCOUS_CORRIGIBLE
+#define TV VSPH_VISCOUS_TVF
+
+const struct vsph_viscous_type vsph_morris_meaf = {
+    .name = "meaf",
+    .label = "MEAF",
+    .cite =
+        "Morris, Fox & Zhu 1997; Colagrossi et al. 2011, "
+        "Eq. (4.30)",
+    .pass = VSPH_VISCOUS_PASS_NONE,
+    .family = VSPH_VISCOUS_FAMILY_MORRIS,
+    .flags = FS | CO | TV,
+    .lap = -1,
+    .lambda = VSPH_VISCOUS_LAMBDA_MU,
+    .limit = VSPH_VISCOUS_LIMIT_GRADIENT,
+    .eta = 0.0,
+    .params = "",
+    .pair = pair_meaf};
+
+const struct vsph_viscous_type vsph_morris_meafeta = {
+    .name = "meafeta",
+    .label = "MEAF-eta",
+    .cite =
+        "Morris, Fox & Zhu 1997 with r^2 + eta^2 (Basa et al. "
+        "2009, model E as Morris et al. print it)",
+    .pass = VSPH_VISCOUS_PASS_NONE,
+    .family = VSPH_VISCOUS_FAMILY_NONE,
+    .flags = TV,
+    .lap = -1,
+    .lambda = VSPH_VISCOUS_LAMBDA_MU,
+    .limit = VSPH_VISCOUS_LIMIT_GRADIENT,
+    .eta = VSPH_VISCOUS_ETA,
+    .params = "eta",
+    .pair = pair_meafeta};

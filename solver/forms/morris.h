@@ -1,0 +1,54 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+#ifndef VSPH_SOLVER_FORMS_MORRIS_H
+#define VSPH_SOLVER_FORMS_MORRIS_H
+
+/** @file morris.h
+ *  @brief Morris, Fox & Zhu's forms (docs/theory.md sections 3 and 8): MEAF
+ *  (Basa et al.'s model E) and the original regularised one, MEAF-eta. The
+ *  pair terms; the descriptors are in morris.c. Included by solver/pair.h,
+ *  after the pair's geometry. */
+
+#include "../pair.h"
+
+/** @brief MEAF, Morris, Fox & Zhu (1997), Eq. (4.30), THEORY 3:
+ *  (div V)_i = 2 mu sum_j V_j W'/s (u_i - u_j). @param du u_j - u_i;
+ *  @param two_mu 2 mu (Pa s). @return the pair's share -2 mu V_j F du and
+ *  its dissipation density mu V_j F |du|^2 (THEORY 4). */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_meaf(
+    const struct vsph_pair *pr, int dim, double two_mu,
+    const struct vsph_pair_vec du) {
+  struct vsph_pair_visc r;
+  const double c = -two_mu * pr->VF;
+  double du2 = 0.0;
+  for (int k = 0; k < dim; k++) {
+    r.f[k] = c * du.v[k];
+    du2 += du.v[k] * du.v[k];
+  }
+  r.dens = 0.5 * two_mu * pr->VF * du2;
+  return r;
+}
+
+/** @brief Morris, Fox & Zhu's (1997) original, regularised form (Basa
+ *  et al.'s model E with r^2 + eta^2 in the denominator, as Morris et al.
+ *  print it; docs/theory.md, section 8): with uniform mu,
+ *  (div V)_i = 2 mu sum_j V_j (r_ij.grad_i W_ij)/(s^2 + eta^2) (u_i - u_j)
+ *            = 2 mu sum_j V_j F s^2/(s^2 + eta^2) (u_i - u_j);
+ *  eta = 0 gives MEAF. @param du u_j - u_i; @param two_mu 2 mu (Pa s);
+ *  @param eta2 eta^2 (m^2). @return the pair's share and its dissipation
+ *  density mu V_j F s^2/(s^2 + eta^2) |du|^2 (THEORY 4). */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_meafeta(
+    const struct vsph_pair *pr, int dim, double two_mu, double eta2,
+    const struct vsph_pair_vec du) {
+  struct vsph_pair_visc r;
+  const double c = -two_mu * pr->VF * pr->s2 / (pr->s2 + eta2);
+  double du2 = 0.0;
+  for (int k = 0; k < dim; k++) {
+    r.f[k] = c * du.v[k];
+    du2 += du.v[k] * du.v[k];
+  }
+  r.dens = -0.5 * c * du2;
+  return r;
+}
+
+#endif /* VSPH_SOLVER_FORMS_MORRIS_H */

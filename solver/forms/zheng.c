@@ -1,0 +1,72 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* The descriptors of Zheng et al.'s Laplacian forms VISC-01..04 as viscous
+ * forms (their first pass makes the whole force) (solver/viscous.h's struct
+ * vsph_viscous_type; their pair terms in zheng.h). */
+#include "forms.h"
+
+#define TV VSPH_VISCOUS_TVF
+
+const struct vsph_viscous_type vsph_zheng_visc01 = {
+    .name = "visc01",
+    .label = "VISC-01",
+    .cite =
+        "Zheng et al. 2018, VISC-01: Brookshaw/Morris hybrid "
+        "(eq. 15)",
+    .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
+    .family = VSPH_VISCOUS_FAMILY_NONE,
+    .flags = TV,
+    .lap = VSPH_PAIR_LAP_HYBRID,
+    .lambda = VSPH_VISCOUS_LAMBDA_MU,
+    .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
+    .eta = VSPH_VISCOUS_ETA,
+    .params = "eta",
+    .pair = NULL};
+
+const struct vsph_viscous_type vsph_zheng_visc02 = {
+    .name = "visc02",
+    .label = "VISC-02",
+    .cite =
+        "Zheng et al. 2018, VISC-02: twice-differentiated kernel "
+        "(eq. 16)",
+    .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
+    .family = VSPH_VISCOUS_FAMILY_NONE,
+    .flags = TV,
+    .lap = VSPH_PAIR_LAP_DIRECT,
+    .lambda = VSPH_VISCOUS_LAMBDA_MU,
+    .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
+    .eta = 0.0,
+    .params = "",
+    .pair = NULL};
+
+const struct vsph_viscous_type vsph_zheng_visc03 = {
+    .name = "visc03",
+    .label = "VISC-03",
+    .cite =
+        "Zheng et al. 2018, VISC-03: Schwaiger's corrected "
+        "Laplacian (eq. 17)",
+    .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
+    .family = VSPH_VISCOUS_FAMILY_NONE,
+    .flags = TV,
+    .lap = VSPH_PAIR_LAP_SCHWAIGER,
+    .lambda = VSPH_VISCOUS_LAMBDA_MU,
+    .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
+    .eta = VSPH_VISCOUS_ETA,
+    .params = "eta, det_tol",
+    .pair = NULL};
+
+const struct vsph_viscous_type vsph_zheng_visc04 = {
+    .name = "visc04",
+    .label = "VISC-04",
+    .cite =
+        "Zheng et al. 2018, VISC-04: Oger's renormalised "
+        "gradient (eq. 20)",
+    .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
+    .family = VSPH_VISCOUS_FAMILY_NONE,
+    .flags = TV,
+    .lap = VSPH_PAIR_LAP_RENORMALISED,
+    .lambda = VSPH_VISCOUS_LAMBDA_MU,
+    .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
+    .eta = VSPH_VISCOUS_ETA,
+    .params = "eta, det_tol",
+    .pair = NULL};
