@@ -204,59 +204,6 @@ int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol) {
   return 1;
 }
 
-/* PVWF pass 1 for particle i: the sums B and Mg over its neighbours
- * (vsph_pair_pvwf_grad), then L_i = B^-1, the renormalised grad u, D_i,
- * T_i = 2 mu D_i + lambda tr(D_i) I, A_i = T_i L_i and -T_i:D_i. Model B
- * (renorm 0): L_i = I, Watkins' differenced gradient sum_j V_j du (x)
- * grad_i W (Basa's model B, Vukcevic's eq. 13). */
-VSPH_CONSTS_SPECIALISE void pvwf_pass1(const struct vsph_viscous_props *vp,
-                                       const struct vsph_pair_kernel *pk,
-                                       const struct vsph_particles *p,
-                                       const struct vsph_pair_ranges *rg,
-                                       size_t i, struct vsph_viscous_ws *ws,
-                                       const int dim, const int kid) {
-  double B[9] = {0}, Mg[9] = {0}, ui[3] = {0};
-  for (int a = 0; a < dim; a++) ui[a] = p->vel[a][i];
-  struct vsph_pair_iter it;
-  struct vsph_pair_chunk bt;
-  vsph_pair_begin(&it, pk, p, rg, i);
-  /* the sums as scalars, one per entry (dim^2 of the nine are used), so
-   * the loop reduces them lane by lane (as the right-hand side does) */
-  double B0 = 0, B1 = 0, B2 = 0, B3 = 0, B4 = 0, B5 = 0, B6 = 0, B7 = 0, B8 = 0;
-  double M0 = 0, M1 = 0, M2 = 0, M3 = 0, M4 = 0, M5 = 0, M6 = 0, M7 = 0, M8 = 0;
-  const int dd = dim * dim;
-  while (vsph_pair_gather(&it, dim, kid, &bt)) {
-    const size_t m = bt.m;
-#pragma omp simd reduction(+ : B0, B1, B2, B3, B4, B5, B6, B7, B8, M0, M1, \
-                               M2, M3, M4, M5, M6, M7, M8)
-    for (size_t k = 0; k < m; k++) {
-      struct vsph_pair pr;
-      vsph_pair_at(&bt, k, dim, &pr);
-      struct vsph_pair_vec du;
-      for (int a = 0; a < dim; a++) du.v[a] = p->vel[a][pr.j] - ui[a];
-      const struct vsph_pair_grad gr = vsph_pair_pvwf_grad(&pr, dim, du);
-      const double *const bB = gr.B, *const bM = gr.M;
-      B0 += bB[0];
-      M0 += bM[0];
-      if (dd > 1) {
-        B1 += bB[1], B2 += bB[2], B3 += bB[3];
-        M1 += bM[1], M2 += bM[2], M3 += bM[3];
-      }
-      if (dd > 4) {
-        B4 += bB[4], B5 += bB[5], B6 += bB[6], B7 += bB[7], B8 += bB[8];
-        M4 += bM[4], M5 += bM[5], M6 += bM[6], M7 += bM[7], M8 += bM[8];
-      }
-    }
-  }
-  const double Bs[9] = {B0, B1, B2, B3, B4, B5, B6, B7, B8},
-               Ms[9] = {M0, M1, M2, M3, M4, M5, M6, M7, M8};
-  for (int e = 0; e < dd; e++) {
-    B[e] = Bs[e];
-    Mg[e] = Ms[e];
-  }
-  vsph_viscous_pvwf_finish(vp, ws, i, B, Mg);
-}
-
 void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
                               struct vsph_viscous_ws *ws, size_t i,
                               const double B[9], const double Mg[9]) {
@@ -291,55 +238,6 @@ void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
       ws->A[a * dim + b][i] = s;
     }
   ws->dens[i] = -TD;
-}
-
-/* Model A for particle i: the sums of direct second derivatives over its
- * neighbours and itself (vsph_pair_takeda_add, _self), finished plain or
- * Shepard-corrected into its force density (in A[0..dim-1]), and the
- * density u_i.(div V)_i. W and W'' need s itself: one square root per
- * pair, the price of this form. */
-VSPH_CONSTS_SPECIALISE void takeda_pass(const struct vsph_viscous_props *vp,
-                                        const struct vsph_pair_kernel *pk,
-                                        const struct vsph_particles *p,
-                                        const struct vsph_pair_ranges *rg,
-                                        size_t i, struct vsph_viscous_ws *ws,
-                                        const int dim) {
-  const struct vsph_kernel_type *k = vp->kernel;
-  const double h = vp->h, wfac = pow(h, -dim), d2fac = wfac / (h * h);
-  struct vsph_pair_takeda acc;
-  memset(&acc, 0, sizeof acc);
-  double ui[3] = {0, 0, 0};
-  for (int a = 0; a < dim; a++) ui[a] = p->vel[a][i];
-  vsph_pair_takeda_self(&acc, dim, p->vol[i], ui,
-                        vsph_kernel_w(k, dim, 0.0) * wfac,
-                        vsph_kernel_d2w(k, dim, 0.0) * d2fac);
-  struct vsph_pair_iter it;
-  struct vsph_pair_chunk bt;
-  vsph_pair_begin(&it, pk, p, rg, i);
-  while (vsph_pair_gather(&it, dim, pk->dfq_id, &bt)) {
-    for (size_t q = 0; q < bt.m; q++) {
-      struct vsph_pair pr;
-      vsph_pair_at(&bt, q, dim, &pr);
-      const double s = sqrt(pr.s2) / h;
-      double uj[3] = {0, 0, 0};
-      for (int a = 0; a < dim; a++) uj[a] = p->vel[a][pr.j];
-      vsph_pair_takeda_add(&acc, &pr, dim, p->vol[pr.j], uj,
-                           vsph_kernel_w(k, dim, s) * wfac,
-                           vsph_kernel_d2w(k, dim, s) * d2fac);
-    }
-  }
-  double f[3];
-  vsph_pair_takeda_finish(
-      &acc, dim,
-      (vsph_viscous_types[vp->form]->flags & VSPH_VISCOUS_SHEPARD) != 0, vp->mu,
-      vp->lambda, f);
-  double P = 0.0;
-  for (int a = 0; a < dim; a++) {
-    ws->A[a][i] = f[a];
-    P += ui[a] * f[a];
-  }
-  ws->dens[i] = P;
-  ws->fallback[i] = 0;
 }
 
 /* vsph_viscous_laplacians for dimension dim (a constant where inlined) */
@@ -385,27 +283,6 @@ void vsph_viscous_laplacians(const struct vsph_pair_kernel *pk,
     laplacians(pk, k, h, eta2, tol, lap, p, rg, i, nf, f, out, pk->dim);
 }
 
-/* VISC-0x for particle i: mu lap u_c of each component, into A[0..dim-1],
- * and u_i.(div V)_i. */
-static void lap_pass(const struct vsph_viscous_props *vp,
-                     const struct vsph_pair_kernel *pk,
-                     const struct vsph_particles *p,
-                     const struct vsph_pair_ranges *rg, size_t i,
-                     struct vsph_viscous_ws *ws) {
-  const int dim = vp->dim;
-  const double *const vel[3] = {p->vel[0], p->vel[1], p->vel[2]};
-  double lap[3] = {0, 0, 0}, P = 0.0;
-  vsph_viscous_laplacians(
-      pk, vp->kernel, vp->h, vp->eta * vp->h * vp->eta * vp->h, vp->det_tol,
-      vsph_viscous_types[vp->form]->lap, p, rg, i, dim, vel, lap);
-  for (int a = 0; a < dim; a++) {
-    ws->A[a][i] = vp->mu * lap[a];
-    P += p->vel[a][i] * ws->A[a][i];
-  }
-  ws->dens[i] = P;
-  ws->fallback[i] = 0;
-}
-
 int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
                          const struct vsph_particles *p,
                          const struct vsph_cells *cells,
@@ -414,9 +291,8 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
   if (!ws || ws->cap < p->n || ws->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "%s needs a workspace for %zu particles",
               vsph_viscous_label(vp->form), p->n);
-  const enum vsph_viscous_pass pass = vsph_viscous_types[vp->form]->pass;
-  const int takeda = pass == VSPH_VISCOUS_PASS_TAKEDA,
-            lapf = pass == VSPH_VISCOUS_PASS_LAPLACIAN;
+  /* the family's first pass (solver/forms/), particle by particle */
+  vsph_viscous_first_fn *const first = vsph_viscous_types[vp->form]->first;
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, vp->kernel, vp->dim, vp->h);
 #pragma omp parallel for schedule(dynamic, 8)
@@ -424,25 +300,7 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
     struct vsph_pair_ranges rg;
     vsph_pair_ranges_cell(&rg, cells, c);
     const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
-    /* dimension and kernel fixed outside the loop: the 2-D Gaussian and
-     * cubic B-spline have their own copies, any other runs the general
-     * one */
-    const int G = VSPH_KERNEL_DFQ_GAUSSIAN, C = VSPH_KERNEL_DFQ_CUBIC,
-              gauss2 = vp->dim == 2 && pk.dfq_id == G,
-              cubic2 = vp->dim == 2 && pk.dfq_id == C;
-    for (size_t i = i0; i < i1; i++)
-      if (lapf)
-        lap_pass(vp, &pk, p, &rg, i, ws);
-      else if (takeda && vp->dim == 2)
-        takeda_pass(vp, &pk, p, &rg, i, ws, 2);
-      else if (takeda)
-        takeda_pass(vp, &pk, p, &rg, i, ws, vp->dim);
-      else if (gauss2)
-        pvwf_pass1(vp, &pk, p, &rg, i, ws, 2, G);
-      else if (cubic2) /* Basa's channels */
-        pvwf_pass1(vp, &pk, p, &rg, i, ws, 2, C);
-      else
-        pvwf_pass1(vp, &pk, p, &rg, i, ws, vp->dim, pk.dfq_id);
+    for (size_t i = i0; i < i1; i++) first(vp, &pk, p, &rg, i, ws);
   }
   size_t nf = 0; /* serial: reproducible */
   for (size_t i = 0; i < p->n; i++) nf += ws->fallback[i];

@@ -196,6 +196,16 @@ typedef struct vsph_pair_visc vsph_viscous_pair_fn(
     const struct vsph_viscous_loop *lp, int dim, const struct vsph_pair *pr,
     struct vsph_pair_vec du, double dux, const double Ai[9]);
 
+/** A formulation's first pass for particle @p i (its family's, in
+ *  solver/forms/): the per-particle sums of its neighbours into @p ws
+ *  (PVWF's and B's stress A_i; the whole force of model A and VISC-0x in
+ *  A[0..dim-1]), ws->dens[i] and ws->fallback[i]. */
+typedef void vsph_viscous_first_fn(const struct vsph_viscous_props *vp,
+                                   const struct vsph_pair_kernel *pk,
+                                   const struct vsph_particles *p,
+                                   const struct vsph_pair_ranges *rg, size_t i,
+                                   struct vsph_viscous_ws *ws);
+
 /** A viscous formulation, for the whole suite (as kernels have
  *  vsph_kernel_type): its names, where it comes from, its first pass and
  *  loop, where it applies, its parameters' defaults, and its pair
@@ -214,11 +224,13 @@ struct vsph_viscous_type {
   int lap; /*!< Laplacian pass: its vsph_pair_lap_form */
   enum vsph_viscous_lambda lambda; /*!< default lambda */
   enum vsph_viscous_limit limit;   /*!< its dissipation's continuum limit */
-  double eta;                 /*!< default regulariser eta (fraction of h) in
-                                   s^2 + (eta h)^2 */
-  const char *params;         /*!< the props it reads beyond mu, for --help */
-  vsph_viscous_pair_fn *pair; /*!< its pair share; NULL where its first
-                                   pass makes the whole force */
+  double eta;                   /*!< default regulariser eta (fraction of h) in
+                                     s^2 + (eta h)^2 */
+  const char *params;           /*!< the props it reads beyond mu, for --help */
+  vsph_viscous_pair_fn *pair;   /*!< its pair share; NULL where its first
+                                     pass makes the whole force */
+  vsph_viscous_first_fn *first; /*!< its first pass (NULL: none; set
+                                     exactly where pass is not NONE) */
 };
 
 /** The table, indexed by vsph_viscous_form: each family's descriptors

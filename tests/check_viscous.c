@@ -512,6 +512,8 @@ START_TEST(test_bad_props_refused_names_listed) {
                      t->pass == VSPH_VISCOUS_PASS_TAKEDA ||
                          t->pass == VSPH_VISCOUS_PASS_LAPLACIAN);
     ck_assert_int_eq(t->lap >= 0, t->pass == VSPH_VISCOUS_PASS_LAPLACIAN);
+    /* its family's first pass exactly where it has one */
+    ck_assert_int_eq(t->first != NULL, t->pass != VSPH_VISCOUS_PASS_NONE);
   }
   /* README's table of formulations: one row per descriptor, its name,
    * label, first pass and the parameters it reads (tests run in the

@@ -3,6 +3,7 @@
 /* The descriptors of PVWF and the two-pass strain-rate form (model B): a
  * stress pass, then its divergence (solver/viscous.h's struct
  * vsph_viscous_type; their pair terms in stress.h). */
+#include "../../kernels/kernel.h"
 #include "forms.h"
 
 /* The pair functions (vsph_viscous_pair_fn): the terms with the loop's
@@ -13,6 +14,76 @@ static struct vsph_pair_visc pair_stress(const struct vsph_viscous_loop *lp,
                                          const double Ai[9]) {
   (void)du, (void)dux;
   return vsph_viscous_pair_stress(pr, dim, Ai, lp->A);
+}
+
+/* PVWF pass 1 for particle i: the sums B and Mg over its neighbours
+ * (vsph_pair_pvwf_grad), then L_i = B^-1, the renormalised grad u, D_i,
+ * T_i = 2 mu D_i + lambda tr(D_i) I, A_i = T_i L_i and -T_i:D_i. Model B
+ * (renorm 0): L_i = I, Watkins' differenced gradient sum_j V_j du (x)
+ * grad_i W (Basa's model B, Vukcevic's eq. 13). */
+VSPH_CONSTS_SPECIALISE void pass1(const struct vsph_viscous_props *vp,
+                                  const struct vsph_pair_kernel *pk,
+                                  const struct vsph_particles *p,
+                                  const struct vsph_pair_ranges *rg, size_t i,
+                                  struct vsph_viscous_ws *ws, const int dim,
+                                  const int kid) {
+  double B[9] = {0}, Mg[9] = {0}, ui[3] = {0};
+  for (int a = 0; a < dim; a++) ui[a] = p->vel[a][i];
+  struct vsph_pair_iter it;
+  struct vsph_pair_chunk bt;
+  vsph_pair_begin(&it, pk, p, rg, i);
+  /* the sums as scalars, one per entry (dim^2 of the nine are used), so
+   * the loop reduces them lane by lane (as the right-hand side does) */
+  double B0 = 0, B1 = 0, B2 = 0, B3 = 0, B4 = 0, B5 = 0, B6 = 0, B7 = 0, B8 = 0;
+  double M0 = 0, M1 = 0, M2 = 0, M3 = 0, M4 = 0, M5 = 0, M6 = 0, M7 = 0, M8 = 0;
+  const int dd = dim * dim;
+  while (vsph_pair_gather(&it, dim, kid, &bt)) {
+    const size_t m = bt.m;
+#pragma omp simd reduction(+ : B0, B1, B2, B3, B4, B5, B6, B7, B8, M0, M1, \
+                               M2, M3, M4, M5, M6, M7, M8)
+    for (size_t k = 0; k < m; k++) {
+      struct vsph_pair pr;
+      vsph_pair_at(&bt, k, dim, &pr);
+      struct vsph_pair_vec du;
+      for (int a = 0; a < dim; a++) du.v[a] = p->vel[a][pr.j] - ui[a];
+      const struct vsph_pair_grad gr = vsph_pair_pvwf_grad(&pr, dim, du);
+      const double *const bB = gr.B, *const bM = gr.M;
+      B0 += bB[0];
+      M0 += bM[0];
+      if (dd > 1) {
+        B1 += bB[1], B2 += bB[2], B3 += bB[3];
+        M1 += bM[1], M2 += bM[2], M3 += bM[3];
+      }
+      if (dd > 4) {
+        B4 += bB[4], B5 += bB[5], B6 += bB[6], B7 += bB[7], B8 += bB[8];
+        M4 += bM[4], M5 += bM[5], M6 += bM[6], M7 += bM[7], M8 += bM[8];
+      }
+    }
+  }
+  const double Bs[9] = {B0, B1, B2, B3, B4, B5, B6, B7, B8},
+               Ms[9] = {M0, M1, M2, M3, M4, M5, M6, M7, M8};
+  for (int e = 0; e < dd; e++) {
+    B[e] = Bs[e];
+    Mg[e] = Ms[e];
+  }
+  vsph_viscous_pvwf_finish(vp, ws, i, B, Mg);
+}
+
+/* The first pass of particle i, the dimension and kernel fixed outside
+ * the loop: the 2-D Gaussian and cubic B-spline (Basa's channels) have
+ * their own copies, any other runs the general one. */
+static void first_stress(const struct vsph_viscous_props *vp,
+                         const struct vsph_pair_kernel *pk,
+                         const struct vsph_particles *p,
+                         const struct vsph_pair_ranges *rg, size_t i,
+                         struct vsph_viscous_ws *ws) {
+  const int G = VSPH_KERNEL_DFQ_GAUSSIAN, C = VSPH_KERNEL_DFQ_CUBIC;
+  if (vp->dim == 2 && pk->dfq_id == G)
+    pass1(vp, pk, p, rg, i, ws, 2, G);
+  else if (vp->dim == 2 && pk->dfq_id == C)
+    pass1(vp, pk, p, rg, i, ws, 2, C);
+  else
+    pass1(vp, pk, p, rg, i, ws, vp->dim, pk->dfq_id);
 }
 
 #define FS VSPH_VISCOUS_FREE_SURFACE
@@ -31,7 +102,8 @@ const struct vsph_viscous_type vsph_stress_pvwf = {
     .limit = VSPH_VISCOUS_LIMIT_STRESS,
     .eta = 0.0,
     .params = "det_tol",
-    .pair = pair_stress};
+    .pair = pair_stress,
+    .first = first_stress};
 
 const struct vsph_viscous_type vsph_stress_twopass = {
     .name = "twopass",
@@ -47,4 +119,5 @@ const struct vsph_viscous_type vsph_stress_twopass = {
     .limit = VSPH_VISCOUS_LIMIT_STRESS,
     .eta = 0.0,
     .params = "",
-    .pair = pair_stress};
+    .pair = pair_stress,
+    .first = first_stress};

@@ -5,6 +5,27 @@
  * vsph_viscous_type; their pair terms in zheng.h). */
 #include "forms.h"
 
+/* VISC-0x for particle i: mu lap u_c of each component, into A[0..dim-1],
+ * and u_i.(div V)_i. */
+static void first_zheng(const struct vsph_viscous_props *vp,
+                        const struct vsph_pair_kernel *pk,
+                        const struct vsph_particles *p,
+                        const struct vsph_pair_ranges *rg, size_t i,
+                        struct vsph_viscous_ws *ws) {
+  const int dim = vp->dim;
+  const double *const vel[3] = {p->vel[0], p->vel[1], p->vel[2]};
+  double lap[3] = {0, 0, 0}, P = 0.0;
+  vsph_viscous_laplacians(
+      pk, vp->kernel, vp->h, vp->eta * vp->h * vp->eta * vp->h, vp->det_tol,
+      vsph_viscous_types[vp->form]->lap, p, rg, i, dim, vel, lap);
+  for (int a = 0; a < dim; a++) {
+    ws->A[a][i] = vp->mu * lap[a];
+    P += p->vel[a][i] * ws->A[a][i];
+  }
+  ws->dens[i] = P;
+  ws->fallback[i] = 0;
+}
+
 #define TV VSPH_VISCOUS_TVF
 
 const struct vsph_viscous_type vsph_zheng_visc01 = {
@@ -21,7 +42,8 @@ const struct vsph_viscous_type vsph_zheng_visc01 = {
     .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
     .eta = VSPH_VISCOUS_ETA,
     .params = "eta",
-    .pair = NULL};
+    .pair = NULL,
+    .first = first_zheng};
 
 const struct vsph_viscous_type vsph_zheng_visc02 = {
     .name = "visc02",
@@ -37,7 +59,8 @@ const struct vsph_viscous_type vsph_zheng_visc02 = {
     .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
     .eta = 0.0,
     .params = "",
-    .pair = NULL};
+    .pair = NULL,
+    .first = first_zheng};
 
 const struct vsph_viscous_type vsph_zheng_visc03 = {
     .name = "visc03",
@@ -53,7 +76,8 @@ const struct vsph_viscous_type vsph_zheng_visc03 = {
     .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
     .eta = VSPH_VISCOUS_ETA,
     .params = "eta, det_tol",
-    .pair = NULL};
+    .pair = NULL,
+    .first = first_zheng};
 
 const struct vsph_viscous_type vsph_zheng_visc04 = {
     .name = "visc04",
@@ -69,4 +93,5 @@ const struct vsph_viscous_type vsph_zheng_visc04 = {
     .limit = VSPH_VISCOUS_LIMIT_LAPLACIAN,
     .eta = VSPH_VISCOUS_ETA,
     .params = "eta, det_tol",
-    .pair = NULL};
+    .pair = NULL,
+    .first = first_zheng};
