@@ -24,7 +24,8 @@ void vsph_claim_clear(struct vsph_claim_vals *v) {
   v->overflow = 0;
 }
 
-/* The slot of @p key (a new one at the end when absent), or NULL. */
+/* The slot of @p key (a new one at the end when absent), or
+ * VSPH_CLAIM_MAXVALS when none is left (then v->overflow is set). */
 static size_t slot(struct vsph_claim_vals *v, const char *key) {
   size_t k = 0;
   while (k < v->n && strcmp(v->key[k], key)) k++;
@@ -180,6 +181,8 @@ static int field(const char *name, struct block *b, const char *key,
     if (b->nifs == MAXIFS)
       VSPH_FAIL(VSPH_EINVAL, "claim %s: more than %d verdicts", name, MAXIFS);
     const char *e = is_if ? key + 3 : "";
+    if (is_if && strspn(e, " \t") == strlen(e))
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: an 'if' without an expression", name);
     if (trim_copy(b->cond[b->nifs], sizeof b->cond[0], e, strlen(e)) ||
         trim_copy(b->verdict[b->nifs], sizeof b->verdict[0], val, strlen(val)))
       VSPH_FAIL(VSPH_EINVAL, "claim %s: a verdict too long", name);
@@ -291,7 +294,11 @@ static int arg(const char *name, const char *a, const struct vsph_claim_vals *v,
                double *x) {
   char *end;
   const double lit = strtod(a, &end);
-  if (end != a && !*end) {
+  if (end != a && !*end) { /* a number as people write it: no nan, inf, hex */
+    const size_t d = strspn(a, "+-0123456789.eE");
+    if (a[d] || !isfinite(lit) || !strpbrk(a, "0123456789"))
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: '%s' is no plain finite number", name,
+                a);
     *x = lit;
     return VSPH_OK;
   }
@@ -300,7 +307,7 @@ static int arg(const char *name, const char *a, const struct vsph_claim_vals *v,
               "claim %s: argument '%s' is neither a number nor "
               "a name",
               name, a);
-  if (!v) {
+  if (!v) { /* the lint: a name stands for a value it cannot know */
     *x = 0.0;
     return VSPH_OK;
   }
@@ -339,9 +346,20 @@ int vsph_claim_test(const char *kind, const double *x) {
 struct expr {
   const char *s, *name;
   const struct block *b;
-  const int *holds; /* each test's result */
+  const int *holds; /* each test's result: 1, 0 or UNKNOWN */
   int err;
 };
+
+/* A test fed a NaN: neither holds nor fails (Kleene's third value). */
+#define UNKNOWN 2
+
+static int not3(int a) { return a == UNKNOWN ? UNKNOWN : !a; }
+static int and3(int a, int b) {
+  return !a || !b ? 0 : a == UNKNOWN || b == UNKNOWN ? UNKNOWN : 1;
+}
+static int or3(int a, int b) {
+  return a == 1 || b == 1 ? 1 : a == UNKNOWN || b == UNKNOWN ? UNKNOWN : 0;
+}
 
 static void skip(struct expr *e) {
   while (*e->s == ' ' || *e->s == '\t') e->s++;
@@ -353,7 +371,7 @@ static int expr_atom(struct expr *e) {
   skip(e);
   if (*e->s == '!') {
     e->s++;
-    return !expr_atom(e);
+    return not3(expr_atom(e));
   }
   if (*e->s == '(') {
     e->s++;
@@ -383,7 +401,7 @@ static int expr_and(struct expr *e) {
   int r = expr_atom(e);
   for (skip(e); *e->s == '&'; skip(e)) {
     e->s++;
-    r = expr_atom(e) && r; /* both sides parsed, whatever the first says */
+    r = and3(expr_atom(e), r); /* both sides parsed, whatever the first says */
   }
   return r;
 }
@@ -392,12 +410,13 @@ static int expr_or(struct expr *e) {
   int r = expr_and(e);
   for (skip(e); *e->s == '|'; skip(e)) {
     e->s++;
-    r = expr_and(e) || r;
+    r = or3(expr_and(e), r);
   }
   return r;
 }
 
-/* Expression @p cond on the tests' results: 1, 0, or -1 if malformed. */
+/* Expression @p cond on the tests' results: 1, 0, UNKNOWN, or -1 if
+ * malformed. */
 static int eval(const char *cond, const struct block *b, const int *holds) {
   struct expr e = {cond, NULL, b, holds, 0};
   const int r = expr_or(&e);
@@ -441,10 +460,18 @@ static int fill(const char *name, const char *t,
                   name, ph);
       *scale = '\0';
     }
-    if (fmt) { /* flags, width, precision, then one of e f g E G */
-      const size_t f = strspn(fmt, "-+ 0#");
-      const size_t w = f + strspn(fmt + f, "0123456789.");
-      if (!fmt[w] || !strchr("efgEG", fmt[w]) || fmt[w + 1] || strlen(fmt) > 12)
+    if (fmt) { /* flags, a width of at most two digits, a precision '.' and
+                * at most two, then one of e f g E G */
+      const char *c = fmt + strspn(fmt, "-+ 0#");
+      size_t d = strspn(c, "0123456789");
+      int ok = d <= 2;
+      c += d;
+      if (*c == '.') {
+        d = strspn(++c, "0123456789");
+        ok &= d <= 2;
+        c += d;
+      }
+      if (!ok || !*c || !strchr("efgEG", *c) || c[1])
         VSPH_FAIL(VSPH_EINVAL,
                   "claim %s: {{%s:%s}}: not a format of a "
                   "number (%%[flags][width][.prec]e|f|g)",
@@ -501,11 +528,13 @@ static int grade(const char *name, const struct block *b,
       const int st = arg(name, b->test[k].arg[a], v, &x[a]);
       if (st) return st;
     }
+    int nan = 0; /* a measure not measured: the test is unknown */
+    for (int a = 0; a < b->test[k].nargs; a++) nan |= isnan(x[a]);
     holds[k] = vsph_claim_test(b->test[k].kind, x);
-    if (holds[k] < 0 && v)
+    if (holds[k] < 0 && !nan)
       VSPH_FAIL(VSPH_EINVAL, "claim %s: test %s: %s of %s is no integer order",
                 name, b->test[k].name, b->test[k].kind, b->test[k].arg[1]);
-    if (holds[k] < 0) holds[k] = 0;
+    if (nan && strcmp(b->test[k].kind, "finite")) holds[k] = UNKNOWN;
   }
   int pick = -1;
   for (int k = 0; k < b->nifs; k++) {
@@ -515,7 +544,9 @@ static int grade(const char *name, const struct block *b,
                 "claim %s: 'if %s': not an expression of its "
                 "tests (names, &, |, !, parentheses)",
                 name, b->cond[k]);
-    if (r && pick < 0) pick = k; /* every one checked, the first taken */
+    if (r == 1 && pick < 0)
+      pick = k; /* every one checked, the first that
+                  holds for certain taken */
   }
   const char *where = b->where;
   char claim[sizeof row->claim];
@@ -532,6 +563,12 @@ static int grade(const char *name, const struct block *b,
   for (int k = 0; k < b->nifs && !st; k++)
     if (!v || k == pick) /* the lint checks every verdict's placeholders */
       st = fill(name, b->verdict[k], v, row->verdict, sizeof row->verdict);
+  /* a word filled into the verdict must not change its class */
+  if (!st && v &&
+      vsph_claim_class(row->verdict) != vsph_claim_class(b->verdict[pick]))
+    VSPH_FAIL(VSPH_EINVAL,
+              "claim %s: the verdict's words change its class ('%.40s')", name,
+              row->verdict);
   return st;
 }
 

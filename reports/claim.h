@@ -27,11 +27,17 @@
  *    VSPH_GRADE_APART times good), larger a b noise (a > b + noise), flag
  *    a (a is 1: a fact the part states, such as a run that ended), finite
  *    a (a was measured: not NaN, not infinite). An argument is a
- *    measure's name or a number. A NaN fails every test but finite's
- *    negation, as a comparison with NaN does;
+ *    measure's name or a plain finite number (no nan, inf or hex). A test
+ *    fed a NaN (a figure not measured) is unknown, neither holding nor
+ *    failing, but finite, which fails; `within` is inclusive at its edge
+ *    as the doubles compute |a - s| (a decimal edge such as 0.2 may sit
+ *    a rounding away);
  *  - `if EXPR: VERDICT` (one or more, the first that holds is taken) and
  *    `else: VERDICT`: EXPR combines the tests' names with & (and), | (or),
- *    ! (not) and parentheses; a VERDICT starts with its class's words
+ *    ! (not) and parentheses, in Kleene's three values (!unknown is
+ *    unknown; a & b fails where either fails; a | b holds where either
+ *    holds), and a verdict is taken only where its EXPR holds for certain;
+ *    a VERDICT starts with its class's words
  *    (reproduced, reproduced on a substitute, partly, differs, not
  *    tested) and may hold placeholders;
  *  - a claim without tests holds one verdict, `else:`, which says "not

@@ -43,7 +43,7 @@ int vsph_grade_within(double value, double stated, double halfwidth) {
 }
 
 int vsph_grade_apart(double bad, double good) {
-  return bad >= VSPH_GRADE_APART * good;
+  return bad > 0.0 && bad >= VSPH_GRADE_APART * good;
 }
 
 int vsph_grade_larger(double a, double b, double noise) {

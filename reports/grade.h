@@ -70,8 +70,9 @@ int vsph_grade_within(double value, double stated, double halfwidth);
  *  no figure); it is the grade's only separation factor. */
 #define VSPH_GRADE_APART 3.1622776601683795
 
-/** @brief 1 when @p bad >= VSPH_GRADE_APART * @p good (both errors,
- *  non-negative), 0 when not or when either is NaN. */
+/** @brief 1 when @p bad >= VSPH_GRADE_APART * @p good and @p bad > 0
+ *  (both errors, non-negative: two zeros are not apart), 0 when not or
+ *  when either is NaN. */
 int vsph_grade_apart(double bad, double good);
 
 /** @brief 1 when @p a exceeds @p b by more than @p noise (the measure's

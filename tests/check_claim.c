@@ -6,6 +6,7 @@
  * refused with a status; and every claim block compiled in (from
  * reports/claims/) well formed. */
 #include <check.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -51,9 +52,9 @@ START_TEST(test_kinds_compare) {
 }
 END_TEST
 
-/* within: |a - s| <= w, inclusive (2.5 from 2 by 0.5 is within; the next
- * double beyond is not); order: rounds to n (0.5 from 1 is not, the next
- * double inside is); apart: bad >= sqrt(10) good; larger: a > b + noise
+/* within: |a - s| <= w, inclusive at both edges (2.5 from 2 by 0.5 is within;
+ * the next double beyond is not); order: rounds to n (0.5 from 1 is not, the
+ * next double inside is); apart: bad >= sqrt(10) good; larger: a > b + noise
  * (at b + noise it is not); flag: exactly 1; an unknown kind and a
  * fractional order: -1. */
 START_TEST(test_kinds_rules) {
@@ -61,6 +62,7 @@ START_TEST(test_kinds_rules) {
   ck_assert_int_eq(t3("within", nextafter(2.5, 3.0), 2.0, 0.5), 0);
   ck_assert_int_eq(t3("within", nextafter(2.5, 2.0), 2.0, 0.5), 1);
   ck_assert_int_eq(t3("within", 1.5, 2.0, 0.5), 1);
+  ck_assert_int_eq(t3("within", nextafter(1.5, 1.0), 2.0, 0.5), 0);
   ck_assert_int_eq(t3("within", NAN, 2.0, 0.5), 0);
   ck_assert_int_eq(t3("order", 0.5, 1, 0), 0);
   ck_assert_int_eq(t3("order", nextafter(0.5, 1.0), 1, 0), 1);
@@ -70,13 +72,23 @@ START_TEST(test_kinds_rules) {
   ck_assert_int_eq(t3("order", 1.0, 1.5, 0), -1);
   ck_assert_int_eq(t3("apart", VSPH_GRADE_APART, 1.0, 0), 1);
   ck_assert_int_eq(t3("apart", nextafter(VSPH_GRADE_APART, 0.0), 1.0, 0), 0);
-  ck_assert_int_eq(t3("apart", 4.0, 1.0, 0), 1);
+  ck_assert_int_eq(t3("apart", nextafter(VSPH_GRADE_APART, 4.0), 1.0, 0), 1);
+  ck_assert_int_eq(t3("apart", 0.0, 0.0, 0), 0); /* two zeros: not apart */
+  ck_assert_int_eq(t3("apart", 1e-300, 0.0, 0), 1);
+  ck_assert_int_eq(t3("apart", NAN, 1.0, 0), 0);
   ck_assert_int_eq(t3("larger", 1.5, 1.0, 0.5), 0);
   ck_assert_int_eq(t3("larger", nextafter(1.5, 2.0), 1.0, 0.5), 1);
-  ck_assert_int_eq(t3("larger", 1.4, 1.0, 0.5), 0);
+  ck_assert_int_eq(t3("larger", nextafter(1.5, 1.0), 1.0, 0.5), 0);
+  ck_assert_int_eq(t3("larger", NAN, 1.0, 0.5), 0);
   ck_assert_int_eq(t3("flag", 1.0, 0, 0), 1);
   ck_assert_int_eq(t3("flag", 0.0, 0, 0), 0);
   ck_assert_int_eq(t3("flag", nextafter(1.0, 2.0), 0, 0), 0);
+  ck_assert_int_eq(t3("flag", nextafter(1.0, 0.0), 0, 0), 0);
+  /* finite: measured, at the largest double and beyond it */
+  ck_assert_int_eq(t3("finite", DBL_MAX, 0, 0), 1);
+  ck_assert_int_eq(t3("finite", -DBL_MAX, 0, 0), 1);
+  ck_assert_int_eq(t3("finite", INFINITY, 0, 0), 0);
+  ck_assert_int_eq(t3("finite", NAN, 0, 0), 0);
   ck_assert_int_eq(t3("flag", NAN, 0, 0), 0);
   ck_assert_int_eq(t3("nearly", 1.0, 1.0, 0), -1);
 }
@@ -224,7 +236,126 @@ START_TEST(test_faults_refused) {
   ck_assert_int_eq(variant("{{good*100:.1f}}", "{{good:s}}", 1), VSPH_EINVAL);
   ck_assert_int_eq(variant("claim:", "  claim:", 1), VSPH_EINVAL);
   ck_assert_int_eq(variant("{{what}}", "{{what:.1f}}", 1), VSPH_EINVAL);
+  /* formats snprintf would misread or take long over */
+  static const char *const badfmt[] = {"1.2.3f", "..f", "999f", ".999f",
+                                       "f.",     "%f",  "ld",   "s"};
+  for (size_t k = 0; k < sizeof badfmt / sizeof badfmt[0]; k++) {
+    char to[64];
+    snprintf(to, sizeof to, "{{good*100:%s}}", badfmt[k]);
+    ck_assert_msg(variant("{{good*100:.1f}}", to, 1) == VSPH_EINVAL, "%s",
+                  badfmt[k]);
+  }
+  ck_assert_int_eq(variant("{{good*100:.1f}}", "{{good*100:+08.2e}}", 1),
+                   VSPH_OK);
+  /* literals as people write them only: no nan, inf or hex */
+  static const char *const badlit[] = {"nan", "inf", "0x1p-3", "1e999", "-"};
+  for (size_t k = 0; k < sizeof badlit / sizeof badlit[0]; k++) {
+    char to[64];
+    snprintf(to, sizeof to, "atleast bad %s", badlit[k]);
+    ck_assert_msg(variant("atleast bad 0.12", to, 1) == VSPH_EINVAL, "%s",
+                  badlit[k]);
+  }
+  ck_assert_int_eq(variant("atleast bad 0.12", "atleast bad 1.2e-1", 1),
+                   VSPH_OK);
+  /* an 'if' without an expression; a verdict after 'else'; a test named
+   * twice; 'checked:' beside tests; an order that is no integer */
+  ck_assert_int_eq(variant("if fails & good:", "if :", 1), VSPH_EINVAL);
+  ck_assert_int_eq(variant("else: differs: neither\n",
+                           "else: differs: neither\nif good: partly\n", 1),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(variant("test good:", "test fails:", 1), VSPH_EINVAL);
+  ck_assert_int_eq(variant("setup: none\n",
+                           "setup: none\nchecked: tests/check_claim.c x\n", 1),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(variant("atleast bad 0.12", "order bad 1.5", 1),
+                   VSPH_EINVAL);
 }
+END_TEST
+
+/* Seventeen tests (one more than a claim holds) are refused; a part that
+ * sets more values than it may, or a word too long, fails its grading; a
+ * word filled into a verdict may not change the verdict's class. */
+START_TEST(test_limits_refused) {
+  char text[4096];
+  size_t m = (size_t)snprintf(text, sizeof text,
+                              "claim: c\nwhere: w\npaper: p\nours: o\n"
+                              "setup: none\n");
+  for (int k = 0; k < 17; k++)
+    m += (size_t)snprintf(text + m, sizeof text - m,
+                          "test t%d: below x 1 -- a choice\n", k);
+  snprintf(text + m, sizeof text - m, "else: differs\n");
+  struct vsph_claim_vals v;
+  vsph_claim_clear(&v);
+  vsph_claim_num(&v, "x", 0.5);
+  struct vsph_claim_row row;
+  ck_assert_int_eq(grade(text, &v, &row), VSPH_EINVAL);
+  /* too many values */
+  static const char *const ONE =
+      "claim: c\nwhere: w\npaper: p\nours: {{w}}\nsetup: none\n"
+      "test t: below x 1 -- a choice\n"
+      "if t: reproduced{{w}}\nelse: differs\n";
+  vsph_claim_clear(&v);
+  vsph_claim_num(&v, "x", 0.5);
+  vsph_claim_str(&v, "w", "%s", "");
+  ck_assert_int_eq(grade(ONE, &v, &row), VSPH_OK);
+  ck_assert_str_eq(row.verdict, "reproduced");
+  for (int k = 0; k < VSPH_CLAIM_MAXVALS; k++) {
+    char key[16];
+    snprintf(key, sizeof key, "v%d", k);
+    vsph_claim_num(&v, key, 1.0);
+  }
+  ck_assert_int_eq(v.overflow, 1);
+  ck_assert_int_eq(grade(ONE, &v, &row), VSPH_EINVAL);
+  /* a word too long for a value */
+  vsph_claim_clear(&v);
+  vsph_claim_num(&v, "x", 0.5);
+  char big[1000];
+  memset(big, 'a', sizeof big - 1);
+  big[sizeof big - 1] = '\0';
+  vsph_claim_str(&v, "w", "%s", big);
+  ck_assert_int_eq(grade(ONE, &v, &row), VSPH_EINVAL);
+  /* a word that turns "reproduced" into "reproduced on a substitute" */
+  vsph_claim_clear(&v);
+  vsph_claim_num(&v, "x", 0.5);
+  vsph_claim_str(&v, "w", "%s", " on a substitute");
+  ck_assert_int_eq(grade(ONE, &v, &row), VSPH_EINVAL);
+}
+END_TEST
+
+/* Kleene's three values: a test fed a NaN is unknown, so neither it nor
+ * its negation holds for certain; & fails where either side fails, |
+ * holds where either holds; finite fails on a NaN and is never unknown. */
+START_TEST(test_unknown_decides_nothing) {
+  static const char *const K =
+      "claim: c\nwhere: w\npaper: p\nours: o\nsetup: none\n"
+      "test big: above x 1 -- a choice\n"
+      "test pos: above y 0 -- a choice\n"
+      "test meas: finite x -- measured\n"
+      "if !big & pos: reproduced: small\n"
+      "if big | pos: partly: one\n"
+      "if !meas: not tested: x not measured\n"
+      "else: differs\n";
+  struct vsph_claim_vals v;
+  struct vsph_claim_row row;
+  const struct {
+    double x, y;
+    const char *verdict;
+  } cases[] = {{0.5, 1.0, "reproduced: small"},
+               {NAN, 1.0, "partly: one"}, /* !big unknown: not small */
+               {NAN, -1.0, "not tested: x not measured"},
+               {2.0, NAN, "partly: one"}, /* big holds: | holds */
+               {0.5, NAN, "differs"},     /* !big & unknown: unknown */
+               {0.5, -1.0, "differs"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    vsph_claim_clear(&v);
+    vsph_claim_num(&v, "x", cases[k].x);
+    vsph_claim_num(&v, "y", cases[k].y);
+    ck_assert_int_eq(grade(K, &v, &row), VSPH_OK);
+    ck_assert_msg(!strcmp(row.verdict, cases[k].verdict), "case %zu: %s", k,
+                  row.verdict);
+  }
+}
+END_TEST
 END_TEST
 
 /* The test of make check that a claim's "checked:" names ("tests/FILE.c
@@ -259,7 +390,17 @@ START_TEST(test_blocks_well_formed) {
                     vsph_text_blocks[k].name);
       n++;
     }
-  ck_assert_uint_ge(n, 5);
+  /* every part that grades claims has its file, each with blocks */
+  static const char *const part[] = {"paper", "patch", "channel", "contact"};
+  for (size_t p = 0; p < 4; p++) {
+    char prefix[32];
+    snprintf(prefix, sizeof prefix, "claims/%s.", part[p]);
+    size_t m = 0;
+    for (size_t k = 0; k < vsph_text_nblocks; k++)
+      m += !strncmp(vsph_text_blocks[k].name, prefix, strlen(prefix));
+    ck_assert_msg(m > 0, "no claims in reports/claims/%s.md", part[p]);
+  }
+  ck_assert_uint_ge(n, 4);
 }
 END_TEST
 
@@ -271,6 +412,8 @@ Suite *vsph_claim_suite(void) {
   tcase_add_test(tc, test_verdict_follows);
   tcase_add_test(tc, test_classes);
   tcase_add_test(tc, test_faults_refused);
+  tcase_add_test(tc, test_limits_refused);
+  tcase_add_test(tc, test_unknown_decides_nothing);
   tcase_add_test(tc, test_blocks_well_formed);
   suite_add_tcase(s, tc);
   return s;

@@ -3,6 +3,7 @@
 /* reports/grade.c: every rule at, just below and just above its
  * threshold, on values worked by hand. */
 #include <check.h>
+#include <float.h>
 #include <math.h>
 
 #include "../reports/grade.h"
@@ -93,6 +94,8 @@ START_TEST(test_apart) {
       vsph_grade_apart(nextafter(VSPH_GRADE_APART * 2.0, 0.0), 2.0), 0);
   ck_assert_int_eq(vsph_grade_apart(NAN, 2.0), 0);
   ck_assert_int_eq(vsph_grade_apart(1.0, NAN), 0);
+  ck_assert_int_eq(vsph_grade_apart(0.0, 0.0), 0); /* two zeros: not apart */
+  ck_assert_int_eq(vsph_grade_apart(DBL_MIN, 0.0), 1);
 }
 END_TEST
 

@@ -869,7 +869,8 @@ START_TEST(test_source_commits_hash) {
       "git rev-parse --is-inside-work-tree >/dev/null 2>&1 || exit 3; "
       "git status --porcelain --untracked-files=all | grep -qE "
       "'^.. (vsph\\.h|(common|kernels|solver|analysis|io|runs|reports|cli)/"
-      "[^/]+\\.[ch]|solver/scenes/[^/]+\\.c|solver/forms/[^/]+\\.[ch]|reports/(text|claims)/[^/]+\\.md)$' "
+      "[^/]+\\.[ch]|solver/scenes/[^/]+\\.c|solver/forms/[^/]+\\.[ch]|reports/"
+      "(text|claims)/[^/]+\\.md)$' "
       "&& exit 4; exit 0");
   if (o->status != 0) return; /* not a clone, or local changes */
   const char *dir = tmpdir();
