@@ -21,7 +21,7 @@ int vsph_report_claims_grade(struct vsph_report *R);
 /* The table of the paper's resolutions after the claims: beside the quick
  * ladder's finest run of each scene and formulation, the FULL plan's run
  * from the run archive R->beside where it holds it, judged as
- * R->beside_plan says (vsph_report_beside_prepare). */
+ * R->beside_jd and R->beside_stands say (vsph_report_beside_prepare). */
 int vsph_report_claims_archived(struct vsph_report *R);
 
 /* The same for given quick runs @p run with their E_k errors @p err (the

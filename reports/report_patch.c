@@ -216,10 +216,13 @@ int vsph_report_patch_claims(struct vsph_report *R) {
       far[1][f / 2] = fmax(far[1][f / 2], fmax(b, 1.0 / b));
     }
   vsph_claim_clear(v);
-  for (int f = 0; f < 3; f++) {
-    char key[8];
-    snprintf(key, sizeof key, "s0%d", f + 1);
-    vsph_claim_num(v, key, slope_n(&t.line[0][0][0], f));
+  for (int f = 0; f < NLAP; f++) { /* the slope and its order, minus it */
+    char key[2][8];
+    snprintf(key[0], sizeof key[0], "s0%d", f + 1);
+    snprintf(key[1], sizeof key[1], "o0%d", f + 1);
+    const double slope = slope_n(&t.line[0][0][0], f);
+    vsph_claim_num(v, key[0], slope);
+    vsph_claim_num(v, key[1], -slope);
   }
   vsph_claim_num(v, "line01", far[0][0]);
   vsph_claim_num(v, "line03", far[0][1]);
