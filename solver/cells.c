@@ -3,7 +3,6 @@
 #include "cells.h"
 
 #include <math.h>
-#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -26,6 +25,9 @@ void vsph_cells_free(struct vsph_cells *c) {
   free(c->perm);
   free(c->dscratch);
   free(c->iscratch);
+  free(c->blk_c0);
+  free(c->blk_lo);
+  free(c->blk_hi);
   free(c);
 }
 
@@ -59,15 +61,61 @@ static int reserve_particles(struct vsph_cells *c, size_t n) {
   return VSPH_OK;
 }
 
-/* The next build's number: unique across every cell list and thread. */
-static unsigned long next_gen(void) {
-  static atomic_ulong gen = 0;
-  return atomic_fetch_add(&gen, 1) + 1;
+/* The blocks of the build (struct vsph_cells): runs of whole cells of
+ * about vsph_cells_block_size(n) particles, each with the index range its
+ * pairs reach (every j > i of its particles lies in its cells' ranges). */
+static int plan_blocks(struct vsph_cells *c, size_t n) {
+  c->nblk = 0;
+  const size_t target = vsph_cells_block_size(n);
+  size_t nblk = 0, acc = 0;
+  int open = 0; /* a block is open: the next cell joins it */
+  for (size_t q = 0; q < c->ncells; q++) {
+    if (!open) nblk++, open = 1;
+    acc += c->count[q];
+    if (acc >= target) acc = 0, open = 0;
+  }
+  if (nblk + 1 > c->cap_blk) {
+    const size_t cap = 2 * (nblk + 1);
+    size_t **q[3] = {&c->blk_c0, &c->blk_lo, &c->blk_hi};
+    for (int a = 0; a < 3; a++) {
+      size_t *r = realloc(*q[a], cap * sizeof *r);
+      if (!r) VSPH_FAIL(VSPH_ENOMEM, "cannot grow the cells' %zu blocks", cap);
+      *q[a] = r;
+    }
+    c->cap_blk = cap;
+  }
+  size_t b = 0;
+  acc = 0;
+  open = 0;
+  for (size_t q = 0; q < c->ncells; q++) {
+    if (!open) c->blk_c0[b++] = q, open = 1;
+    acc += c->count[q];
+    if (acc >= target) acc = 0, open = 0;
+  }
+  c->blk_c0[nblk] = c->ncells;
+  /* each block's reach: the cells' ranges, block by block in parallel */
+#pragma omp parallel for schedule(dynamic, 4)
+  for (b = 0; b < nblk; b++) {
+    const size_t first = c->blk_c0[b], last = c->blk_c0[b + 1];
+    size_t lo = c->start[first], hi = lo;
+    for (size_t q = first; q < last; q++) {
+      size_t rlo[VSPH_CELLS_MAXRANGES], rhi[VSPH_CELLS_MAXRANGES];
+      const size_t nr = vsph_cells_ranges(c, q, rlo, rhi);
+      for (size_t r = 0; r < nr; r++) hi = rhi[r] > hi ? rhi[r] : hi;
+      const size_t end = c->start[q] + c->count[q];
+      hi = end > hi ? end : hi;
+    }
+    c->blk_lo[b] = lo;
+    c->blk_hi[b] = hi;
+  }
+  c->nblk = nblk;
+  c->blk_n = n;
+  return VSPH_OK;
 }
 
 int vsph_cells_build_direct(struct vsph_cells *c,
                             const struct vsph_particles *p) {
-  c->gen = 0; /* no longer the build a plan was made on */
+  c->nblk = 0; /* no blocks until this build has its own */
   int st = reserve_cells(c, 1);
   if (st) return st;
   c->dim = p->dim;
@@ -77,15 +125,14 @@ int vsph_cells_build_direct(struct vsph_cells *c,
   c->ncells = 1;
   c->start[0] = 0;
   c->count[0] = p->n;
-  c->gen = next_gen();
-  return VSPH_OK;
+  return plan_blocks(c, p->n);
 }
 
 int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
                      double radius) {
   const int dim = p->dim;
   const size_t n = p->n;
-  c->gen = 0; /* no longer the build a plan was made on */
+  c->nblk = 0; /* no blocks until this build has its own */
   if (!(radius > 0.0) || !isfinite(radius))
     VSPH_FAIL(VSPH_EINVAL, "cell radius must be positive, got %g", radius);
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
@@ -153,8 +200,7 @@ int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
   for (size_t i = 0; i < n; i++) c->perm[c->start[c->key[i]]++] = i;
   for (size_t q = 0; q < ncells; q++) c->start[q] -= c->count[q];
   vsph_particles_permute(p, c->perm, c->dscratch, c->iscratch);
-  c->gen = next_gen();
-  return VSPH_OK;
+  return plan_blocks(c, n);
 }
 
 size_t vsph_cells_ranges(const struct vsph_cells *c, size_t cell,

@@ -27,24 +27,41 @@ struct vsph_particles;
 
 /** Uniform grid of cells with edge >= radius / VSPH_CELLS_SUB. */
 struct vsph_cells {
-  int dim;           /*!< dimension */
-  int direct;        /*!< 1: a single cell, the O(N^2) reference path */
-  double edge;       /*!< cell edge (m) */
-  double lo[3];      /*!< lower corner of the grid (m) */
-  size_t nc[3];      /*!< cells along each axis (1 beyond dim) */
-  size_t ncells;     /*!< total cells */
-  size_t *start;     /*!< first particle of each cell */
-  size_t *count;     /*!< particles in each cell */
-  size_t cap_cells;  /*!< allocated length of start and count */
-  size_t *key;       /*!< scratch: cell of each particle */
-  size_t *perm;      /*!< scratch: sorting permutation */
-  double *dscratch;  /*!< scratch for the particle permutation */
-  size_t *iscratch;  /*!< scratch for the particle permutation */
-  size_t cap_n;      /*!< allocated length of the per-particle scratch */
-  unsigned long gen; /*!< this build's number, unique among all cell lists
-                          of the process (0: never built): what a workspace
-                          planned on the cells compares */
+  int dim;          /*!< dimension */
+  int direct;       /*!< 1: a single cell, the O(N^2) reference path */
+  double edge;      /*!< cell edge (m) */
+  double lo[3];     /*!< lower corner of the grid (m) */
+  size_t nc[3];     /*!< cells along each axis (1 beyond dim) */
+  size_t ncells;    /*!< total cells */
+  size_t *start;    /*!< first particle of each cell */
+  size_t *count;    /*!< particles in each cell */
+  size_t cap_cells; /*!< allocated length of start and count */
+  size_t *key;      /*!< scratch: cell of each particle */
+  size_t *perm;     /*!< scratch: sorting permutation */
+  double *dscratch; /*!< scratch for the particle permutation */
+  size_t *iscratch; /*!< scratch for the particle permutation */
+  size_t cap_n;     /*!< allocated length of the per-particle scratch */
+  /* the build's blocks, for a sweep over pairs in parallel
+   * (solver/equations.c): runs of whole cells of about
+   * vsph_cells_block_size(n) particles, with the index range each one's
+   * pairs reach; planned with the cells, so no plan outlives them */
+  size_t blk_n;   /*!< particles the blocks were planned for */
+  size_t nblk;    /*!< blocks */
+  size_t cap_blk; /*!< allocated blocks */
+  size_t *blk_c0; /*!< first cell of each block; blk_c0[nblk] = ncells */
+  size_t *blk_lo; /*!< the first particle a block's pairs reach ... */
+  size_t *blk_hi; /*!< ... and one past its last */
 };
+
+/** @brief Particles per block of a sweep: enough blocks for any thread
+ *  count to share out (32 at 42 000 particles), few enough that the
+ *  buffers' overlap (a block's neighbours reach about two cell rows beyond
+ *  it) stays small. A function of the particle count alone: never of the
+ *  threads. */
+static inline size_t vsph_cells_block_size(size_t n) {
+  const size_t t = n / 32;
+  return t < 512 ? 512 : t > 8192 ? 8192 : t;
+}
 
 /** @brief Allocate an empty cell list. NULL on failure. */
 VSPH_API struct vsph_cells *vsph_cells_alloc(void);

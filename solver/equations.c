@@ -633,19 +633,18 @@ static int contact_init(const struct vsph_equations_props *ep,
 /* ------------------------------------------------- the symmetric sweep */
 
 struct vsph_equations_sweep {
-  size_t nblk;       /* blocks of the last plan */
-  size_t cap_blk;    /* allocated blocks */
-  size_t *c0;        /* first cell of each block; c0[nblk] = ncells */
-  size_t *lo;        /* the first particle each block's buffer holds ... */
-  size_t *hi;        /* ... and one past its last */
-  size_t *off;       /* where each block's buffer starts in buf (doubles) */
-  double *buf;       /* the blocks' buffers, nf doubles per particle */
-  size_t cap_buf;    /* allocated doubles */
-  unsigned long gen; /* the cells' build the blocks were planned on (0:
-                        none): the RK4 stages of a step share it */
-  size_t plan_n;     /* and the particle count */
-  double *rows;      /* each thread's scratch rows (sweep_each_block) */
-  size_t cap_rows;   /* allocated doubles */
+  /* the blocks of this evaluation: the cells' own (struct vsph_cells,
+   * planned with their build), borrowed */
+  size_t nblk;      /* blocks */
+  const size_t *c0; /* first cell of each block; c0[nblk] = ncells */
+  const size_t *lo; /* the first particle each block's buffer holds ... */
+  const size_t *hi; /* ... and one past its last */
+  size_t *off;      /* where each block's buffer starts in buf (doubles) */
+  size_t cap_off;   /* allocated offsets */
+  double *buf;      /* the blocks' buffers, nf doubles per particle */
+  size_t cap_buf;   /* allocated doubles */
+  double *rows;     /* each thread's scratch rows (sweep_each_block) */
+  size_t cap_rows;  /* allocated doubles */
 };
 
 struct vsph_equations_sweep *vsph_equations_sweep_alloc(void) {
@@ -658,9 +657,6 @@ struct vsph_equations_sweep *vsph_equations_sweep_alloc(void) {
 
 void vsph_equations_sweep_free(struct vsph_equations_sweep *sw) {
   if (!sw) return;
-  free(sw->c0);
-  free(sw->lo);
-  free(sw->hi);
   free(sw->off);
   free(sw->buf);
   free(sw->rows);
@@ -669,33 +665,30 @@ void vsph_equations_sweep_free(struct vsph_equations_sweep *sw) {
 
 size_t vsph_equations_sweep_bytes(const struct vsph_equations_sweep *sw) {
   if (!sw) return 0;
-  return sizeof *sw + (sw->cap_blk + 1) * 4 * sizeof(size_t) +
+  return sizeof *sw + sw->cap_off * sizeof(size_t) +
          sw->cap_buf * sizeof(double);
 }
 
-/* Particles per block: enough blocks for any thread count to share out
- * (32 at 42 000 particles), few enough that the buffers' overlap (a
- * block's neighbours reach about two cell rows beyond it) stays small.
- * A function of the particle count alone: never of the threads. */
-static size_t sweep_block_size(size_t n) {
-  size_t t = n / 32;
-  return t < 512 ? 512 : t > 8192 ? 8192 : t;
-}
-
-/* The blocks of this evaluation: runs of whole cells of about
- * sweep_block_size particles, each with the index range its pairs reach
- * (every j > i of its particles lies in its cells' ranges), and their
- * buffers, nf doubles per particle, laid end to end. */
-static int sweep_blocks(struct vsph_equations_sweep *sw,
-                        const struct vsph_cells *cells, size_t n);
-
+/* The blocks of this evaluation, the cells' (planned with their build on
+ * @p n particles), and their buffers, nf doubles per particle, laid end to
+ * end. */
 static int sweep_plan(struct vsph_equations_sweep *sw,
                       const struct vsph_cells *cells, size_t n, int nf) {
-  /* the blocks and their reach: as planned on this build of the cells
-   * (the four RK4 stages of a step), or planned now */
-  if (!cells->gen || sw->gen != cells->gen || sw->plan_n != n) {
-    const int st = sweep_blocks(sw, cells, n);
-    if (st) return st;
+  if (cells->blk_n != n || cells->blk_c0 == NULL)
+    VSPH_FAIL(VSPH_EINVAL,
+              "the cells were built on %zu particles, the sweep runs on %zu: "
+              "rebuild them",
+              cells->blk_n, n);
+  sw->nblk = cells->nblk;
+  sw->c0 = cells->blk_c0;
+  sw->lo = cells->blk_lo;
+  sw->hi = cells->blk_hi;
+  if (sw->nblk + 1 > sw->cap_off) {
+    const size_t cap = 2 * (sw->nblk + 1);
+    size_t *r = realloc(sw->off, cap * sizeof *r);
+    if (!r) VSPH_FAIL(VSPH_ENOMEM, "cannot grow the sweep's %zu blocks", cap);
+    sw->off = r;
+    sw->cap_off = cap;
   }
   size_t total = 0;
   for (size_t b = 0; b < sw->nblk; b++) {
@@ -711,63 +704,6 @@ static int sweep_plan(struct vsph_equations_sweep *sw,
     sw->buf = r;
     sw->cap_buf = cap;
   }
-  return VSPH_OK;
-}
-
-/* The blocks of the cells' build: runs of whole cells of about
- * sweep_block_size particles, and each one's reach (sweep_plan). */
-static int sweep_blocks(struct vsph_equations_sweep *sw,
-                        const struct vsph_cells *cells, size_t n) {
-  sw->gen = 0; /* valid once planned whole */
-  const size_t target = sweep_block_size(n);
-  size_t nblk = 0, acc = 0;
-  int open = 0; /* a block is open: the next cell joins it */
-  for (size_t c = 0; c < cells->ncells; c++) {
-    if (!open) nblk++, open = 1;
-    acc += cells->count[c];
-    if (acc >= target) acc = 0, open = 0;
-  }
-  if (nblk + 1 > sw->cap_blk) {
-    const size_t cap = 2 * (nblk + 1);
-    size_t *q[4] = {sw->c0, sw->lo, sw->hi, sw->off};
-    for (int a = 0; a < 4; a++) {
-      size_t *r = realloc(q[a], cap * sizeof *r);
-      if (!r) VSPH_FAIL(VSPH_ENOMEM, "cannot grow the sweep's %zu blocks", cap);
-      q[a] = r;
-      if (a == 0) sw->c0 = r;
-      if (a == 1) sw->lo = r;
-      if (a == 2) sw->hi = r;
-      if (a == 3) sw->off = r;
-    }
-    sw->cap_blk = cap;
-  }
-  size_t b = 0;
-  acc = 0;
-  open = 0;
-  for (size_t c = 0; c < cells->ncells; c++) {
-    if (!open) sw->c0[b++] = c, open = 1;
-    acc += cells->count[c];
-    if (acc >= target) acc = 0, open = 0;
-  }
-  sw->c0[nblk] = cells->ncells;
-  sw->nblk = nblk;
-  /* each block's reach: the cells' ranges, block by block in parallel */
-#pragma omp parallel for schedule(dynamic, 4)
-  for (b = 0; b < nblk; b++) {
-    const size_t first = sw->c0[b], last = sw->c0[b + 1];
-    size_t lo = cells->start[first], hi = lo;
-    for (size_t c = first; c < last; c++) {
-      size_t rlo[VSPH_CELLS_MAXRANGES], rhi[VSPH_CELLS_MAXRANGES];
-      const size_t nr = vsph_cells_ranges(cells, c, rlo, rhi);
-      for (size_t r = 0; r < nr; r++) hi = rhi[r] > hi ? rhi[r] : hi;
-      const size_t end = cells->start[c] + cells->count[c];
-      hi = end > hi ? end : hi;
-    }
-    sw->lo[b] = lo;
-    sw->hi[b] = hi;
-  }
-  sw->gen = cells->gen;
-  sw->plan_n = n;
   return VSPH_OK;
 }
 
