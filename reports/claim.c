@@ -426,10 +426,38 @@ static int eval(const char *cond, const struct block *b, const int *holds) {
 
 /* ------------------------------------------------------------ templates */
 
-/* Template @p t filled from @p v into @p out (@p len bytes); with @p v
+/* A conditional placeholder's body "?EXPR|HOLDS|FAILS[|UNKNOWN]" (its
+ * texts literal) into @p piece: the text its expression of the tests
+ * @p holds chooses (UNKNOWN: the third text, or else the second). */
+static int choose(const char *name, char *ph, const struct block *b,
+                  const int *holds, char *piece, size_t len) {
+  char *part[4] = {ph + 1, NULL, NULL, NULL};
+  int n = 1;
+  for (char *c = ph + 1; *c && n < 4; c++)
+    if (*c == '|') *c = '\0', part[n++] = c + 1;
+  if (n < 3 || strchr(part[n - 1], '|'))
+    VSPH_FAIL(VSPH_EINVAL,
+              "claim %s: {{?%s...}}: a condition takes two or three texts "
+              "(?EXPR|holds|fails[|unknown])",
+              name, part[0]);
+  const int r = eval(part[0], b, holds);
+  if (r < 0)
+    VSPH_FAIL(VSPH_EINVAL,
+              "claim %s: {{?%s|...}}: not an expression of its tests", name,
+              part[0]);
+  const char *text = r == 1                   ? part[1]
+                     : r == UNKNOWN && n == 4 ? part[3]
+                                              : part[2];
+  snprintf(piece, len, "%s", text);
+  return VSPH_OK;
+}
+
+/* Template @p t filled from @p v into @p out (@p len bytes), its
+ * conditions read on the tests' results @p holds of block @p b; with @p v
  * NULL only its placeholders' form is checked. */
-static int fill(const char *name, const char *t,
-                const struct vsph_claim_vals *v, char *out, size_t len) {
+static int fill(const char *name, const char *t, const struct block *b,
+                const int *holds, const struct vsph_claim_vals *v, char *out,
+                size_t len) {
   size_t m = 0;
   for (const char *s = t; *s;) {
     const char *open = strstr(s, "{{");
@@ -441,12 +469,24 @@ static int fill(const char *name, const char *t,
     m += lit;
     if (!open) break;
     const char *close = strstr(open + 2, "}}");
-    char ph[96];
+    char ph[512];
     if (!close || (size_t)(close - open - 2) >= sizeof ph)
       VSPH_FAIL(VSPH_EINVAL, "claim %s: a placeholder without '}}'", name);
     memcpy(ph, open + 2, (size_t)(close - open - 2));
     ph[close - open - 2] = '\0';
     s = close + 2;
+    char piece[700];
+    if (ph[0] == '?') { /* a text the tests choose */
+      const int st = choose(name, ph, b, holds, piece, sizeof piece);
+      if (st) return st;
+      const size_t pn = strlen(piece);
+      if (m + pn >= len)
+        VSPH_FAIL(VSPH_EINVAL, "claim %s: a text longer than its field (%zu)",
+                  name, len - 1);
+      memcpy(out + m, piece, pn);
+      m += pn;
+      continue;
+    }
     /* name[*100][:FMT] */
     char *fmt = strchr(ph, ':');
     if (fmt) *fmt++ = '\0';
@@ -477,7 +517,6 @@ static int fill(const char *name, const char *t,
                   "number (%%[flags][width][.prec]e|f|g)",
                   name, ph, fmt);
     }
-    char piece[700];
     if (!v) {
       piece[0] = '\0';
     } else {
@@ -556,13 +595,16 @@ static int grade(const char *name, const struct block *b,
   else if (snprintf(claim, sizeof claim, "%s (%s)", b->claim, where) >=
            (int)sizeof claim)
     VSPH_FAIL(VSPH_EINVAL, "claim %s: a claim longer than its field", name);
-  int st = fill(name, claim, v, row->claim, sizeof row->claim);
-  if (!st) st = fill(name, b->paper, v, row->paper, sizeof row->paper);
-  if (!st) st = fill(name, b->ours, v, row->ours, sizeof row->ours);
-  if (!st) st = fill(name, b->setup, v, row->setup, sizeof row->setup);
+  int st = fill(name, claim, b, holds, v, row->claim, sizeof row->claim);
+  if (!st)
+    st = fill(name, b->paper, b, holds, v, row->paper, sizeof row->paper);
+  if (!st) st = fill(name, b->ours, b, holds, v, row->ours, sizeof row->ours);
+  if (!st)
+    st = fill(name, b->setup, b, holds, v, row->setup, sizeof row->setup);
   for (int k = 0; k < b->nifs && !st; k++)
     if (!v || k == pick) /* the lint checks every verdict's placeholders */
-      st = fill(name, b->verdict[k], v, row->verdict, sizeof row->verdict);
+      st = fill(name, b->verdict[k], b, holds, v, row->verdict,
+                sizeof row->verdict);
   /* a word filled into the verdict must not change its class */
   if (!st && v &&
       vsph_claim_class(row->verdict) != vsph_claim_class(b->verdict[pick]))

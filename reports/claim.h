@@ -18,7 +18,9 @@
  *    paper's ("none" where nothing does), each a template whose
  *    placeholders {{name}} take a measure or a word the part set
  *    ({{name:FMT}} prints a measure with printf's %FMT, {{name*100:FMT}}
- *    a hundred times it);
+ *    a hundred times it; {{?EXPR|HOLDS|FAILS}} or {{?EXPR|HOLDS|FAILS|
+ *    UNKNOWN}} the literal text that an expression of the block's tests
+ *    chooses, so that words which repeat a test are the test's own);
  *  - `test NAME: KIND ARG... -- ORIGIN` (one or more): a rule on the
  *    measures and its threshold, with the threshold's origin. Kinds:
  *    below a b (a < b), above a b (a > b), atmost a b (a <= b), atleast a

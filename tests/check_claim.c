@@ -322,6 +322,50 @@ START_TEST(test_limits_refused) {
 }
 END_TEST
 
+/* Words the tests choose: {{?EXPR|holds|fails|unknown}} takes the text
+ * its expression picks, the third where it is unknown (the second where
+ * no third is given); malformed conditions are refused. */
+START_TEST(test_words_chosen) {
+  static const char *const W =
+      "claim: c\nwhere: w\npaper: p\n"
+      "ours: x {{?big|grows|stays}}, {{?big & pos|both|not both|unsure}}\n"
+      "setup: none\n"
+      "test big: above x 1 -- a choice\n"
+      "test pos: above y 0 -- a choice\n"
+      "if pos: partly: {{?!big|small|large}}\nelse: differs\n";
+  struct vsph_claim_vals v;
+  struct vsph_claim_row row;
+  const struct {
+    double x, y;
+    const char *ours, *verdict;
+  } cases[] = {{2.0, 1.0, "x grows, both", "partly: large"},
+               {nextafter(1.0, 0.0), 1.0, "x stays, not both", "partly: small"},
+               {NAN, 1.0, "x stays, unsure", "partly: large"},
+               {2.0, -1.0, "x grows, not both", "differs"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    vsph_claim_clear(&v);
+    vsph_claim_num(&v, "x", cases[k].x);
+    vsph_claim_num(&v, "y", cases[k].y);
+    ck_assert_int_eq(grade(W, &v, &row), VSPH_OK);
+    ck_assert_msg(!strcmp(row.ours, cases[k].ours), "case %zu: %s", k,
+                  row.ours);
+    ck_assert_msg(!strcmp(row.verdict, cases[k].verdict), "case %zu: %s", k,
+                  row.verdict);
+  }
+  ck_assert_int_eq(vsph_claim_lint("w", W), VSPH_OK);
+  static const char *const BAD[] = {"{{?big|grows}}", "{{?bog|a|b}}",
+                                    "{{?big|a|b|c|d}}", "{{?(big|a|b}}"};
+  for (size_t k = 0; k < 4; k++) {
+    char text[512];
+    snprintf(text, sizeof text,
+             "claim: c\nwhere: w\npaper: p\nours: %s\nsetup: none\n"
+             "test big: above x 1 -- a choice\nelse: differs\n",
+             BAD[k]);
+    ck_assert_msg(vsph_claim_lint("w", text) == VSPH_EINVAL, "%s", BAD[k]);
+  }
+}
+END_TEST
+
 /* Kleene's three values: a test fed a NaN is unknown, so neither it nor
  * its negation holds for certain; & fails where either side fails, |
  * holds where either holds; finite fails on a NaN and is never unknown. */
@@ -414,6 +458,7 @@ Suite *vsph_claim_suite(void) {
   tcase_add_test(tc, test_faults_refused);
   tcase_add_test(tc, test_limits_refused);
   tcase_add_test(tc, test_unknown_decides_nothing);
+  tcase_add_test(tc, test_words_chosen);
   tcase_add_test(tc, test_blocks_well_formed);
   suite_add_tcase(s, tc);
   return s;
