@@ -34,6 +34,7 @@ const char *vsph_dissipation_shape_name(int shape) {
 }
 
 int vsph_dissipation_shape_find(const char *name) {
+  if (!name) return -1;
   for (int k = 0; k < VSPH_DISSIPATION_SHAPE_COUNT; k++)
     if (strcmp(shape_names[k], name) == 0) return k;
   return -1;
@@ -90,12 +91,15 @@ static const struct vsph_params_spec DISSIPATION[] = {
 #undef P
 
 const struct vsph_params_spec *vsph_dissipation_params(size_t *n) {
+  if (!n) return NULL;
   *n = sizeof DISSIPATION / sizeof DISSIPATION[0];
   return DISSIPATION;
 }
 
 int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
                                 struct vsph_params *prm) {
+  if (!dp)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_dissipation_props_init: a NULL argument");
   struct raw r;
   memset(dp, 0, sizeof *dp);
   int st = vsph_params_load(prm, "Dissipation", DISSIPATION,
@@ -265,6 +269,8 @@ static int exact_integrals(const struct vsph_dissipation_props *dp, int n,
 
 int vsph_dissipation_exact(const struct vsph_dissipation_props *dp,
                            double *P_exact, double *P_grad) {
+  if (!dp || !P_exact || !P_grad)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_dissipation_exact: a NULL argument");
   double out[3];
   const int rc = exact_integrals(dp, 2, out);
   if (rc) return rc;
@@ -365,6 +371,8 @@ int vsph_dissipation_particles(const struct vsph_viscous_props *vp,
 
 int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
                              struct vsph_dissipation_result *res) {
+  if (!dp || !res)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_dissipation_compute: a NULL argument");
   if (dp->field.dim != 2)
     VSPH_FAIL(VSPH_EINVAL, "the dissipation sets are 2-D");
   if (dp->field.kind == VSPH_FIELDS_QUADRATIC)

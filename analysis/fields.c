@@ -24,6 +24,7 @@ const char *vsph_fields_name(int kind) {
 }
 
 int vsph_fields_find(const char *name) {
+  if (!name) return -1;
   for (int k = 0; k < VSPH_FIELDS_KIND_COUNT; k++)
     if (strcmp(field_names[k], name) == 0) return k;
   return -1;
@@ -53,6 +54,7 @@ int vsph_fields_props_init(struct vsph_fields_props *fp, int kind, int dim) {
 
 void vsph_fields_eval(const struct vsph_fields_props *fp, const double x[3],
                       double u[3], double grad[9]) {
+  if (!fp || !x || !u || !grad) return;
   const int d = fp->dim, n = d - 1; /* plane (0, n) */
   for (int a = 0; a < 3; a++) u[a] = 0.0;
   for (int a = 0; a < 9; a++) grad[a] = 0.0;
@@ -113,6 +115,7 @@ void vsph_fields_eval(const struct vsph_fields_props *fp, const double x[3],
 
 void vsph_fields_second(const struct vsph_fields_props *fp, const double x[3],
                         double lap[3], double graddiv[3]) {
+  if (!fp || !x || !lap || !graddiv) return;
   for (int a = 0; a < 3; a++) lap[a] = graddiv[a] = 0.0;
   if (fp->kind == VSPH_FIELDS_QUADRATIC) {
     const double *c = fp->c;

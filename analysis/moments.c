@@ -281,6 +281,7 @@ int vsph_moments_constants(const struct vsph_kernel_type *k, int dim,
 
 void vsph_moments_theory(int dim, int half, double C_F, double C_N,
                          struct vsph_moments *out) {
+  if (!out) return;
   memset(out, 0, sizeof *out);
   out->dim = dim;
   const double f = half ? 0.5 : 1.0;
@@ -350,6 +351,7 @@ int vsph_moments_sum(const struct vsph_kernel_type *k,
 
 void vsph_moments_gap(const struct vsph_moments *a,
                       const struct vsph_moments *b, double gap[4]) {
+  if (!a || !b || !gap) return;
   gap[0] = gap[1] = gap[2] = gap[3] = 0.0;
   const int d = a->dim;
   for (int i = 0; i < d; i++) {
@@ -406,12 +408,14 @@ static const struct vsph_params_spec TENSORS[] = {
 #undef P
 
 const struct vsph_params_spec *vsph_moments_params(size_t *n) {
+  if (!n) return NULL;
   *n = sizeof TENSORS / sizeof TENSORS[0];
   return TENSORS;
 }
 
 int vsph_moments_props_init(struct vsph_moments_props *mp,
                             struct vsph_params *prm) {
+  if (!mp) VSPH_FAIL(VSPH_EINVAL, "vsph_moments_props_init: a NULL argument");
   struct raw r;
   memset(mp, 0, sizeof *mp);
   int st = vsph_params_load(prm, "Tensors", TENSORS,

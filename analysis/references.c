@@ -30,6 +30,7 @@ static const double NUM_EPSABS = 1e-17;
 
 double vsph_references_vortex_initial(const struct vsph_references_vortex *v,
                                       double r) {
+  if (!v) return NAN;
   /* the scene's profile: one definition (THEORY 6.1, [reconstructed]) */
   return vsph_vortex_patch_omega(v->omega0, v->l2, v->a, v->R, r);
 }
@@ -150,6 +151,7 @@ void vsph_references_vortex_free(struct vsph_references_vortex *v) {
 void vsph_references_vortex_eval(const struct vsph_references_vortex *v,
                                  double r, double t, double *omega,
                                  double *domega_dr) {
+  if (!v || !omega) return;
   double w = v->c0, dw = 0.0;
   for (size_t n = 0; n < v->nterms; n++) {
     const double k = v->k[n], e = v->c[n] * exp(-v->nu * k * k * t);
@@ -175,6 +177,8 @@ static double energy_integrand(double r, void *p) {
 
 int vsph_references_vortex_energy(struct vsph_references_vortex *v, double t,
                                   double rho, double *Ek, double *dEk_dt) {
+  if (!v || !Ek || !dEk_dt)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_references_vortex_energy: a NULL argument");
   struct energy_ctx e = {v, t, 0};
   double a, b;
   int st = integrate(v->ws, energy_integrand, &e, 0.0, v->R, &a);
@@ -190,6 +194,7 @@ int vsph_references_vortex_energy(struct vsph_references_vortex *v, double t,
 void vsph_references_vortex_energy_series(
     const struct vsph_references_vortex *v, double t, double rho, double *Ek,
     double *dEk_dt) {
+  if (!v || !Ek || !dEk_dt) return;
   const double R4 = v->R * v->R * v->R * v->R;
   double e = v->c0 * v->c0 * R4 / 4.0, de = 0.0;
   for (size_t n = 0; n < v->nterms; n++) {
@@ -205,6 +210,7 @@ void vsph_references_vortex_energy_series(
 
 double vsph_references_lighthill(const struct vsph_scene_wave *w, double rho,
                                  double t) {
+  if (!w) return NAN;
   const double A = w->A, k = w->k;
   return rho * w->g * A * A * w->L / 8.0 * exp(-4.0 * w->nu * k * k * t) *
          (1.0 + cos(2.0 * w->omega * t));
@@ -212,6 +218,7 @@ double vsph_references_lighthill(const struct vsph_scene_wave *w, double rho,
 
 struct vsph_references_scene *vsph_references_scene_alloc(
     const struct vsph_scene *sc) {
+  if (!sc) return NULL;
   struct vsph_references_scene *r = calloc(1, sizeof *r);
   if (!r) {
     vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
@@ -359,6 +366,7 @@ double vsph_references_couette(double y, double t, double W, double nu,
 
 double vsph_references_channel(const struct vsph_scene_channel *ch, double y,
                                double t, double *dudt) {
+  if (!ch) return NAN;
   return ch->couette
              ? vsph_references_couette(y, t, ch->W, ch->nu, ch->U, dudt)
              : vsph_references_poiseuille(y, t, ch->W, ch->nu, ch->U, dudt);
@@ -368,6 +376,7 @@ void vsph_references_profile_error(const struct vsph_scene *sc,
                                    const struct vsph_particles *p,
                                    size_t n_fluid, double t,
                                    struct vsph_references_profile_err *e) {
+  if (!sc || !p || !e) return;
   e->rms = e->rms_rel = e->v_rms = NAN;
   if (!vsph_scene_is_channel(sc->type)) return;
   const struct vsph_scene_channel *ch = &sc->u.channel;
@@ -391,6 +400,7 @@ void vsph_references_profile_error(const struct vsph_scene *sc,
 void vsph_references_profile_zigzag(const double *y, const double *u,
                                     const double *U, size_t nb, double scale,
                                     struct vsph_references_zigzag *z) {
+  if (!y || !u || !U || !z) return;
   double s2 = 0.0;
   z->max = z->y_max = (double)NAN;
   z->n = 0;
@@ -410,6 +420,8 @@ int vsph_references_profile_bins(const struct vsph_scene *sc,
                                  const struct vsph_particles *p, size_t n_fluid,
                                  double t, size_t nb, double *y, double *u,
                                  double *U, size_t *count) {
+  if (!sc || !p || !y || !u || !U || !count)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_references_profile_bins: a NULL argument");
   if (!vsph_scene_is_channel(sc->type) || nb == 0)
     VSPH_FAIL(VSPH_EINVAL, "scene '%s' has no velocity profile",
               sc->type->name);
@@ -460,6 +472,8 @@ static void channel_energy(const struct vsph_references_scene *r, double t,
 
 int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
                                double *Ek, double *dEk_dt) {
+  if (!r || !Ek || !dEk_dt)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_references_scene_eval: a NULL argument");
   const struct vsph_scene *sc = r->scene;
   *Ek = *dEk_dt = NAN;
   if (r->gl) {
@@ -504,6 +518,8 @@ int vsph_references_scene_eval(struct vsph_references_scene *r, double t,
 
 int vsph_references_scene_mech(struct vsph_references_scene *r, double t,
                                double *Em, double *dEm_dt) {
+  if (!r || !Em || !dEm_dt)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_references_scene_mech: a NULL argument");
   const struct vsph_scene *sc = r->scene;
   if (sc->type != &vsph_standing_wave_type)
     return vsph_references_scene_eval(r, t, Em, dEm_dt);
@@ -557,6 +573,7 @@ int vsph_references_ghia(double Re, struct vsph_references_ghia *g) {
 void vsph_references_shepard(const struct vsph_particles *p, size_t n_fluid,
                              const struct vsph_kernel_type *k, double h,
                              const double x[3], double u[3]) {
+  if (!p || !k || !x || !u) return;
   const int d = p->dim;
   double S = 0.0, su[3] = {0, 0, 0};
   for (size_t i = 0; i < p->n; i++) {
@@ -597,6 +614,7 @@ double vsph_references_cavity_point(
     const struct vsph_scene_cavity *cv, const struct vsph_references_ghia *g,
     int line, size_t q, const struct vsph_particles *p, size_t n_fluid,
     const struct vsph_kernel_type *k, double h, double *sph, double *ref) {
+  if (!cv || !g || !p || !k || !sph || !ref) return NAN;
   const double s = (line ? g->x[q] : g->y[q]) * cv->L;
   double x[3] = {0.5 * cv->L, 0.5 * cv->L, 0.0}, u[3];
   x[line ? 0 : 1] = s;
@@ -611,6 +629,7 @@ void vsph_references_cavity_error(const struct vsph_scene *sc,
                                   size_t n_fluid,
                                   const struct vsph_kernel_type *k, double h,
                                   struct vsph_references_profile_err *e) {
+  if (!sc || !p || !k || !e) return;
   e->rms = e->rms_rel = e->v_rms = NAN;
   struct vsph_references_ghia g;
   if (sc->type != &vsph_cavity_type) return;

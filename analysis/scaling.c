@@ -65,6 +65,7 @@ static const struct vsph_params_spec SCALING[] = {
 #undef P
 
 const struct vsph_params_spec *vsph_scaling_params(size_t *n) {
+  if (!n) return NULL;
   *n = sizeof SCALING / sizeof SCALING[0];
   return SCALING;
 }
@@ -72,11 +73,13 @@ const struct vsph_params_spec *vsph_scaling_params(size_t *n) {
 static const double HDX_LADDER[] = {1.0, VSPH_CONSTS_HDX, 2.0, 3.0, 4.0, 6.0};
 
 size_t vsph_scaling_hdx_ladder(const double **hdx) {
+  if (!hdx) return 0;
   *hdx = HDX_LADDER;
   return sizeof HDX_LADDER / sizeof HDX_LADDER[0];
 }
 
 double vsph_scaling_slope(const double *x, const double *y, size_t n) {
+  if (!x) return NAN;
   double lx[VSPH_SCALING_MAXLEVELS], ly[VSPH_SCALING_MAXLEVELS];
   size_t m = 0;
   for (size_t k = 0; k < n && m < VSPH_SCALING_MAXLEVELS; k++)
@@ -93,6 +96,7 @@ double vsph_scaling_slope(const double *x, const double *y, size_t n) {
 
 int vsph_scaling_props_init(struct vsph_scaling_props *sp,
                             struct vsph_params *prm) {
+  if (!sp) VSPH_FAIL(VSPH_EINVAL, "vsph_scaling_props_init: a NULL argument");
   struct raw r;
   memset(sp, 0, sizeof *sp);
   int st = vsph_params_load(prm, "Scaling", SCALING,
@@ -201,6 +205,8 @@ done:
 
 int vsph_scaling_surface(const struct vsph_scaling_props *sp,
                          struct vsph_scaling_result *res) {
+  if (!sp || !res)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_scaling_surface: a NULL argument");
   const int dim = sp->field.dim;
   if (sp->levels < 2 || sp->levels > VSPH_SCALING_MAXLEVELS)
     VSPH_FAIL(VSPH_EINVAL, "levels must lie in 2-%d, got %zu",
@@ -276,6 +282,8 @@ int vsph_scaling_surface(const struct vsph_scaling_props *sp,
 int vsph_scaling_interior(const struct vsph_scaling_props *sp,
                           const double *hdx, size_t n,
                           struct vsph_scaling_interior *res) {
+  if (!sp || !hdx || !res)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_scaling_interior: a NULL argument");
   if (sp->field.kind != VSPH_FIELDS_QUADRATIC || sp->field.dim != 2)
     VSPH_FAIL(VSPH_EINVAL, "the interior sweep takes the 2-D quadratic field");
   if (n < 1 || n > VSPH_SCALING_MAXLEVELS)
@@ -323,6 +331,7 @@ int vsph_scaling_interior(const struct vsph_scaling_props *sp,
 int vsph_scaling_axis(const struct vsph_scaling_props *sp, size_t nacross,
                       double *y, double *f[VSPH_VISCOUS_FORM_COUNT],
                       size_t *n) {
+  if (!sp || !y) VSPH_FAIL(VSPH_EINVAL, "vsph_scaling_axis: a NULL argument");
   if (sp->field.dim != 2)
     VSPH_FAIL(VSPH_EINVAL, "the square's axis needs a 2-D field");
   struct vsph_lattice_props lp = {.dim = 2, .kind = VSPH_LATTICE_SQUARE};

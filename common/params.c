@@ -126,6 +126,8 @@ static int put(struct vsph_params *prm, const char *key, const char *value,
 
 int vsph_params_set(struct vsph_params *prm, const char *key,
                     const char *value) {
+  if (!prm || !key || !value)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_params_set: a NULL argument");
   const char *colon = strchr(key, ':');
   if (!colon || colon == key || colon[1] == '\0' || strchr(colon + 1, ':'))
     VSPH_FAIL(VSPH_EINVAL, "parameter '%s' is not of the form Section:key",
@@ -134,6 +136,8 @@ int vsph_params_set(struct vsph_params *prm, const char *key,
 }
 
 int vsph_params_assign(struct vsph_params *prm, const char *setting) {
+  if (!prm || !setting)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_params_assign: a NULL argument");
   const char *eq = strchr(setting, '=');
   char key[2 * KEY_MAX + 2];
   if (!eq || (size_t)(eq - setting) >= sizeof key)
@@ -161,6 +165,8 @@ static int store_once(struct vsph_params *prm, const char *path, size_t line,
  * mapping of scalars or flow/block sequences of scalars. */
 int vsph_params_read_string(struct vsph_params *prm, const char *text,
                             size_t len, const char *path) {
+  if (!prm || !text || !path)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_params_read_string: a NULL argument");
   if (len > (size_t)FILE_MAX)
     VSPH_FAIL(VSPH_EINVAL, "%s: %zu bytes; a parameter file holds at most %ld",
               path, len, FILE_MAX);
@@ -328,6 +334,8 @@ int vsph_params_read(struct vsph_params *prm, const char *path) {
 }
 
 int vsph_params_parse_number(const char *s, double *out) {
+  if (!s || !out)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_params_parse_number: a NULL argument");
   /* [+-] digits [. digits] [(e|E) [+-] digits], at least one digit */
   const char *c = s;
   if (*c == '+' || *c == '-') c++;
@@ -361,6 +369,8 @@ static int parse_number(const char *key, const char *s, double *out) {
 
 int vsph_params_get_double(struct vsph_params *prm, const char *key,
                            double *out) {
+  if (!prm || !key || !out)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_params_get_double: a NULL argument");
   struct entry *e = find(prm, key);
   if (!e) VSPH_FAIL(VSPH_EINVAL, "parameter %s is required", key);
   e->used = 1;
@@ -369,6 +379,8 @@ int vsph_params_get_double(struct vsph_params *prm, const char *key,
 
 int vsph_params_get_double_or(struct vsph_params *prm, const char *key,
                               double def, double *out) {
+  if (!prm || !key || !out)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_params_get_double_or: a NULL argument");
   struct entry *e = find(prm, key);
   if (e) {
     e->used = 1;
@@ -382,6 +394,8 @@ int vsph_params_get_double_or(struct vsph_params *prm, const char *key,
 
 int vsph_params_get_string_or(struct vsph_params *prm, const char *key,
                               const char *def, const char **out) {
+  if (!prm || !key || !def || !out)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_params_get_string_or: a NULL argument");
   struct entry *e = find(prm, key);
   if (!e) {
     const int st = put(prm, key, def, 1, 0);
@@ -394,12 +408,15 @@ int vsph_params_get_string_or(struct vsph_params *prm, const char *key,
 }
 
 const char *vsph_params_unused(const struct vsph_params *prm) {
+  if (!prm) return NULL;
   for (size_t i = 0; i < prm->n; i++)
     if (!prm->e[i]->used) return prm->e[i]->key;
   return NULL;
 }
 
-size_t vsph_params_count(const struct vsph_params *prm) { return prm->n; }
+size_t vsph_params_count(const struct vsph_params *prm) {
+  return prm ? prm->n : 0;
+}
 
 int vsph_params_given(const struct vsph_params *prm, const char *key) {
   const struct entry *e = prm ? find(prm, key) : NULL;
@@ -408,6 +425,7 @@ int vsph_params_given(const struct vsph_params *prm, const char *key) {
 
 void vsph_params_entry(const struct vsph_params *prm, size_t i,
                        const char **key, const char **value, int *used) {
+  if (!prm || !key || !value || !used) return;
   *key = prm->e[i]->key;
   *value = prm->e[i]->value;
   *used = prm->e[i]->used;
@@ -417,6 +435,7 @@ void vsph_params_entry(const struct vsph_params *prm, size_t i,
 
 const struct vsph_params_spec *vsph_params_spec_find(
     const struct vsph_params_spec *spec, size_t n, const char *key) {
+  if (!spec) return NULL;
   for (size_t i = 0; i < n; i++)
     if (!strcmp(spec[i].key, key)) return &spec[i];
   return NULL;
@@ -424,6 +443,7 @@ const struct vsph_params_spec *vsph_params_spec_find(
 
 void vsph_params_spec_default(const struct vsph_params_spec *s, char *buf,
                               size_t len) {
+  if (!s || !buf) return;
   if (s->kind == VSPH_PARAMS_NAME)
     snprintf(buf, len, "%s", s->word);
   else if (s->kind == VSPH_PARAMS_INT)
@@ -480,6 +500,8 @@ static int load_one(struct vsph_params *prm, const char *section,
 int vsph_params_load(struct vsph_params *prm, const char *section,
                      const struct vsph_params_spec *spec, size_t n,
                      void *props) {
+  if (!section || !spec || !props)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_params_load: a NULL argument");
   for (size_t i = 0; i < n; i++) {
     const int st = load_one(prm, section, &spec[i], props);
     if (st) return st;

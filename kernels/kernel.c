@@ -22,12 +22,15 @@ const struct vsph_kernel_type *vsph_kernel_get(size_t i) {
 }
 
 const struct vsph_kernel_type *vsph_kernel_find(const char *name) {
+  if (!name) return NULL;
   for (size_t i = 0; i < vsph_kernel_count(); i++)
     if (strcmp(kernel_table[i]->name, name) == 0) return kernel_table[i];
   return NULL;
 }
 
 int vsph_kernel_resolve(const char *name, const struct vsph_kernel_type **out) {
+  if (!name || !out)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_kernel_resolve: a NULL argument");
   *out = vsph_kernel_find(name);
   if (*out) return VSPH_OK;
   char list[256] = "";

@@ -115,6 +115,8 @@ static int plan_blocks(struct vsph_cells *c, size_t n) {
 
 int vsph_cells_build_direct(struct vsph_cells *c,
                             const struct vsph_particles *p) {
+  if (!c || !p)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_cells_build_direct: a NULL argument");
   c->nblk = 0; /* no blocks until this build has its own */
   int st = reserve_cells(c, 1);
   if (st) return st;
@@ -130,6 +132,7 @@ int vsph_cells_build_direct(struct vsph_cells *c,
 
 int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
                      double radius) {
+  if (!c || !p) VSPH_FAIL(VSPH_EINVAL, "vsph_cells_build: a NULL argument");
   const int dim = p->dim;
   const size_t n = p->n;
   c->nblk = 0; /* no blocks until this build has its own */
@@ -206,6 +209,7 @@ int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
 size_t vsph_cells_ranges(const struct vsph_cells *c, size_t cell,
                          size_t lo[VSPH_CELLS_MAXRANGES],
                          size_t hi[VSPH_CELLS_MAXRANGES]) {
+  if (!c || !lo || !hi) return 0;
   if (c->direct) {
     lo[0] = 0;
     hi[0] = c->count[0];

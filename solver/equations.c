@@ -30,6 +30,8 @@ static const char *const SCHEME_NAMES[VSPH_EQUATIONS_SCHEME_COUNT] = {
     [VSPH_EQUATIONS_WCSPH] = "wcsph", [VSPH_EQUATIONS_CONTACT] = "contact"};
 
 int vsph_equations_scheme_resolve(const char *name, int *scheme) {
+  if (!name || !scheme)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_equations_scheme_resolve: a NULL argument");
   for (*scheme = 0; *scheme < VSPH_EQUATIONS_SCHEME_COUNT; ++*scheme)
     if (strcmp(name, SCHEME_NAMES[*scheme]) == 0) return VSPH_OK;
   *scheme = -1;
@@ -38,6 +40,8 @@ int vsph_equations_scheme_resolve(const char *name, int *scheme) {
 }
 
 int vsph_equations_eos_resolve(const char *name, int *eos) {
+  if (!name || !eos)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_equations_eos_resolve: a NULL argument");
   for (*eos = 0; *eos < VSPH_EQUATIONS_EOS_COUNT; ++*eos)
     if (strcmp(name, EOS_NAMES[*eos]) == 0) return VSPH_OK;
   *eos = -1;
@@ -48,6 +52,8 @@ int vsph_equations_eos_resolve(const char *name, int *eos) {
 }
 
 int vsph_equations_corr_resolve(const char *name, int *corr) {
+  if (!name || !corr)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_equations_corr_resolve: a NULL argument");
   for (*corr = 0; *corr < VSPH_PAIR_CORR_COUNT; ++*corr)
     if (strcmp(name, CORR_NAMES[*corr]) == 0) return VSPH_OK;
   *corr = -1;
@@ -59,6 +65,7 @@ int vsph_equations_corr_resolve(const char *name, int *corr) {
 
 void vsph_equations_body_force(const struct vsph_equations_props *ep,
                                const double x[3], double g[3]) {
+  if (!ep || !x || !g) return;
   g[0] = g[1] = g[2] = 0.0;
   const int d = ep->visc.dim;
   if (ep->body == VSPH_EQUATIONS_BODY_RADIAL) {
@@ -72,6 +79,7 @@ void vsph_equations_body_force(const struct vsph_equations_props *ep,
 
 double vsph_equations_potential(const struct vsph_equations_props *ep,
                                 const double x[3]) {
+  if (!ep || !x) return NAN;
   const int d = ep->visc.dim;
   if (ep->body == VSPH_EQUATIONS_BODY_RADIAL) {
     double r2 = 0.0;
@@ -890,7 +898,7 @@ static inline void finish_one(const struct rhs_ctx *rc,
   const double rhoi = p->rho[i], rinv = 1.0 / rhoi;
   const double cont = s[SW_CONT(dim)], dsum = s[SW_DELTA(dim)];
   if (rc->gas) out->de[i] = p->p[i] * cont * rinv;
-  double x[3] = {0, 0, 0}, g[3];
+  double x[3] = {0, 0, 0}, g[3] = {0, 0, 0};
   for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
   vsph_equations_body_force(rc->ep, x, g);
   out->drho[i] = rhoi * cont + rc->dhc * dsum;
@@ -1172,6 +1180,7 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
                        const struct vsph_cells *cells,
                        struct vsph_viscous_ws *ws,
                        struct vsph_equations_out *out) {
+  if (!cells) VSPH_FAIL(VSPH_EINVAL, "vsph_equations_rhs: a NULL argument");
   const struct vsph_viscous_props *vp = &ep->visc;
   if (vp->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "props dimension %d, particles %d", vp->dim, p->dim);
@@ -1348,6 +1357,7 @@ static int adami_shape(const struct vsph_equations_props *ep,
 void vsph_equations_density_sum(const struct vsph_equations_props *ep,
                                 struct vsph_particles *p, size_t n_fluid,
                                 const struct vsph_cells *cells) {
+  if (!ep || !p || !cells) return;
   const int dim = p->dim;
   const struct vsph_kernel_type *k = ep->visc.kernel;
   const double h = ep->visc.h, wf = pow(h, -dim);
@@ -1377,6 +1387,8 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
                                const struct vsph_walls *w,
                                struct vsph_particles *p, size_t n_fluid,
                                const struct vsph_cells *cells) {
+  if (!w || !p || !cells)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_equations_walls_adami: a NULL argument");
   if (ep->eos != VSPH_EQUATIONS_EOS_LINEAR)
     VSPH_FAIL(VSPH_EINVAL, "wall particles need the linear state equation");
   const int dim = p->dim;
@@ -1476,6 +1488,7 @@ void vsph_equations_xsph(const struct vsph_equations_props *ep,
                          const struct vsph_particles *p, size_t n_fluid,
                          const struct vsph_cells *cells, double eps,
                          double *const w[3]) {
+  if (!ep || !p || !cells || !w) return;
   const int dim = p->dim;
   const struct vsph_kernel_type *k = ep->visc.kernel;
   const double h = ep->visc.h, wf = pow(h, -dim);
@@ -1500,6 +1513,8 @@ void vsph_equations_xsph(const struct vsph_equations_props *ep,
 int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
                                   struct vsph_particles *p, size_t n_fluid,
                                   const struct vsph_cells *cells) {
+  if (!ep || !p || !cells)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_equations_walls_evolving: a NULL argument");
   if (ep->eos == VSPH_EQUATIONS_EOS_GAS)
     VSPH_FAIL(VSPH_EINVAL, "evolving wall particles take a barotropic law");
   const int dim = p->dim;
@@ -1538,6 +1553,7 @@ void vsph_equations_energy_compute(const struct vsph_equations_props *ep,
                                    const struct vsph_particles *p,
                                    size_t n_fluid,
                                    struct vsph_equations_energy *en) {
+  if (!ep || !p || !en) return;
   memset(en, 0, sizeof *en);
   const int d = p->dim;
   const double c2 = ep->c0 * ep->c0, gt = VSPH_EQUATIONS_TAIT_GAMMA;
@@ -1574,6 +1590,7 @@ void vsph_equations_budget_compute(const struct vsph_equations_props *ep,
                                    size_t n_fluid,
                                    const struct vsph_equations_out *out,
                                    struct vsph_equations_budget *b) {
+  if (!ep || !p || !out || !b) return;
   memset(b, 0, sizeof *b);
   const int d = p->dim;
   for (size_t i = 0; i < p->n; i++) {

@@ -28,6 +28,7 @@ const char *vsph_lattice_label(int kind, double perturb) {
 }
 
 int vsph_lattice_find(const char *name) {
+  if (!name) return -1;
   for (int k = 0; k < VSPH_LATTICE_KIND_COUNT; k++)
     if (strcmp(lattice_names[k], name) == 0) return k;
   return -1;
@@ -35,6 +36,8 @@ int vsph_lattice_find(const char *name) {
 
 int vsph_lattice_resolve(const char *name, int dim, double perturb, int *kind,
                          double *amp) {
+  if (!name || !kind || !amp)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_lattice_resolve: a NULL argument");
   const int perturbed = !strcmp(name, "perturbed");
   *kind = perturbed ? VSPH_LATTICE_SQUARE : vsph_lattice_find(name);
   if (*kind < 0)
@@ -64,6 +67,7 @@ static int check_props(const struct vsph_lattice_props *lp) {
 
 int vsph_lattice_perturb(struct vsph_particles *p, double amp,
                          unsigned long seed, size_t skip) {
+  if (!p) VSPH_FAIL(VSPH_EINVAL, "vsph_lattice_perturb: a NULL argument");
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   if (!rng) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a random generator");
   gsl_rng_set(rng, seed);
@@ -95,6 +99,8 @@ static int finish(const struct vsph_lattice_props *lp, struct vsph_particles *p,
 int vsph_lattice_halfspace(const struct vsph_lattice_props *lp, double radius,
                            double depth, struct vsph_particles **out,
                            size_t *centre) {
+  if (!lp || !out || !centre)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_lattice_halfspace: a NULL argument");
   int st = check_props(lp);
   if (st) return st;
   if (!(radius > 0.0) || !(depth >= 0.0))
@@ -184,6 +190,8 @@ static int grid(const struct vsph_lattice_props *lp, double side,
 
 int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
                         size_t nacross, struct vsph_particles **out) {
+  if (!lp || !out)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_lattice_square: a NULL argument");
   if (lp->dim != 2 || lp->kind != VSPH_LATTICE_SQUARE)
     VSPH_FAIL(VSPH_EINVAL, "the square set is a 2-D square lattice");
   if (nacross < 1 || !(side > 0.0))
@@ -193,6 +201,7 @@ int vsph_lattice_square(const struct vsph_lattice_props *lp, double side,
 
 int vsph_lattice_disc(const struct vsph_lattice_props *lp, double radius,
                       size_t nacross, struct vsph_particles **out) {
+  if (!lp || !out) VSPH_FAIL(VSPH_EINVAL, "vsph_lattice_disc: a NULL argument");
   if (lp->dim != 2) VSPH_FAIL(VSPH_EINVAL, "the disc set is 2-D");
   if (nacross < 2 || !(radius > 0.0))
     VSPH_FAIL(VSPH_EINVAL, "disc needs radius > 0 and at least 2 particles");
@@ -239,6 +248,8 @@ int vsph_lattice_disc(const struct vsph_lattice_props *lp, double radius,
 int vsph_lattice_disc_cartesian(const struct vsph_lattice_props *lp,
                                 double radius, size_t nacross,
                                 struct vsph_particles **out) {
+  if (!lp || !out)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_lattice_disc_cartesian: a NULL argument");
   if (lp->dim != 2) VSPH_FAIL(VSPH_EINVAL, "the disc set is 2-D");
   if (nacross < 2 || !(radius > 0.0))
     VSPH_FAIL(VSPH_EINVAL, "disc needs radius > 0 and at least 2 particles");

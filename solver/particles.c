@@ -56,6 +56,7 @@ static int grow(void **field, size_t n, size_t cap, size_t sz) {
 }
 
 int vsph_particles_reserve(struct vsph_particles *p, size_t cap) {
+  if (!p) VSPH_FAIL(VSPH_EINVAL, "vsph_particles_reserve: a NULL argument");
   if (cap <= p->cap) return VSPH_OK;
   cap = (cap + 7) / 8 * 8;
   int ok = 1;
@@ -88,6 +89,8 @@ int vsph_particles_reserve(struct vsph_particles *p, size_t cap) {
 }
 
 int vsph_particles_energy_alloc(struct vsph_particles *p) {
+  if (!p)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_particles_energy_alloc: a NULL argument");
   if (p->e && p->de) return VSPH_OK;
   const size_t nb = p->cap * sizeof(double);
   if ((!p->e && !(p->e = alloc_aligned(nb))) ||
@@ -98,6 +101,7 @@ int vsph_particles_energy_alloc(struct vsph_particles *p) {
 }
 
 int vsph_particles_tvf_alloc(struct vsph_particles *p) {
+  if (!p) VSPH_FAIL(VSPH_EINVAL, "vsph_particles_tvf_alloc: a NULL argument");
   const size_t nb = p->cap * sizeof(double);
   for (int k = 0; k < p->dim; k++)
     if ((!p->tvel[k] && !(p->tvel[k] = alloc_aligned(nb))) ||
@@ -109,6 +113,7 @@ int vsph_particles_tvf_alloc(struct vsph_particles *p) {
 }
 
 int vsph_particles_mat_alloc(struct vsph_particles *p) {
+  if (!p) VSPH_FAIL(VSPH_EINVAL, "vsph_particles_mat_alloc: a NULL argument");
   if (p->mat) return VSPH_OK;
   if (!(p->mat = alloc_aligned(p->cap)))
     VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the materials of %zu particles",
@@ -139,6 +144,7 @@ void vsph_particles_free(struct vsph_particles *p) {
 }
 
 void vsph_particles_refresh_vol(struct vsph_particles *p) {
+  if (!p) return;
   for (size_t i = 0; i < p->n; i++) p->vol[i] = p->m[i] / p->rho[i];
 }
 
@@ -150,6 +156,7 @@ static void permute_field(double *a, const size_t *perm, size_t n,
 
 void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
                             double *scratch, size_t *iscratch) {
+  if (!p || !perm || !scratch || !iscratch) return;
   const size_t n = p->n;
   for (int k = 0; k < p->dim; k++) {
     permute_field(p->pos[k], perm, n, scratch);

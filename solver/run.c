@@ -150,11 +150,13 @@ static double run_c0(const struct vsph_run_props *rp,
 #undef P
 
 const struct vsph_params_spec *vsph_run_params(size_t *n) {
+  if (!n) return NULL;
   *n = sizeof SOLVER / sizeof SOLVER[0];
   return SOLVER;
 }
 
 int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
+  if (!rp) VSPH_FAIL(VSPH_EINVAL, "vsph_run_props_init: a NULL argument");
   memset(rp, 0, sizeof *rp);
   int st = vsph_params_load(prm, "Solver", SOLVER,
                             sizeof SOLVER / sizeof SOLVER[0], rp);
@@ -400,6 +402,8 @@ static int check_cost(const struct vsph_run_props *rp,
 int vsph_run_estimate(const struct vsph_run_props *rp,
                       const struct vsph_scene *sc,
                       struct vsph_run_estimate *e) {
+  if (!rp || !sc || !e)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_run_estimate: a NULL argument");
   return check_cost(rp, sc, rp->t_end > 0 ? rp->t_end : sc->t_end, e);
 }
 
@@ -448,6 +452,8 @@ static int relax(struct vsph_run *r) {
 
 int vsph_run_alloc(const struct vsph_run_props *rp, const struct vsph_scene *sc,
                    struct vsph_run **out) {
+  if (!rp || !sc || !out)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_run_alloc: a NULL argument");
   *out = NULL;
   struct vsph_run_estimate e;
   const int cost =
@@ -540,6 +546,7 @@ void vsph_run_free(struct vsph_run *r) {
 }
 
 int vsph_run_iterate(struct vsph_run *r) {
+  if (!r) VSPH_FAIL(VSPH_EINVAL, "vsph_run_iterate: a NULL argument");
   r->due = 0;
   if (r->state != VSPH_RUN_RUNNING) return VSPH_OK;
   struct vsph_integrate *s = r->integ;
@@ -568,19 +575,26 @@ int vsph_run_iterate(struct vsph_run *r) {
 }
 
 int vsph_run_row(struct vsph_run *r, struct vsph_run_row *row) {
+  if (!r || !row) VSPH_FAIL(VSPH_EINVAL, "vsph_run_row: a NULL argument");
   row->t = vsph_run_time(r);
   return vsph_integrate_diagnostics(r->integ, &row->en, &row->b);
 }
 
-double vsph_run_time(const struct vsph_run *r) { return r->integ->t; }
+double vsph_run_time(const struct vsph_run *r) {
+  return r ? r->integ->t : (double)NAN;
+}
 
-size_t vsph_run_steps(const struct vsph_run *r) { return r->integ->steps; }
+size_t vsph_run_steps(const struct vsph_run *r) {
+  return r ? r->integ->steps : 0;
+}
 
 size_t vsph_run_bytes(const struct vsph_run *r) {
+  if (!r) return 0;
   return vsph_integrate_bytes(r->integ);
 }
 
 size_t vsph_run_fallbacks(const struct vsph_run *r) {
+  if (!r) return 0;
   return r->integ->vws ? r->integ->vws->n_fallback : 0;
 }
 
@@ -592,6 +606,7 @@ struct run_state {
 };
 
 size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf) {
+  if (!r) return 0;
   struct run_state rs;
   memset(&rs, 0, sizeof rs);
   rs.t_unstable = r->t_unstable;
@@ -610,6 +625,7 @@ size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf) {
 }
 
 int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len) {
+  if (!r || !buf) VSPH_FAIL(VSPH_EINVAL, "vsph_run_unpack: a NULL argument");
   struct run_state rs;
   if (len < sizeof rs) VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
   memcpy(&rs, buf, sizeof rs);

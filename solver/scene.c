@@ -37,6 +37,7 @@ const struct vsph_scene_type *vsph_scene_get(size_t i) {
 }
 
 const struct vsph_scene_type *vsph_scene_find(const char *name) {
+  if (!name) return NULL;
   for (size_t i = 0; i < vsph_scene_count(); i++)
     if (!strcmp(scene_table[i]->name, name)) return scene_table[i];
   return NULL;
@@ -59,6 +60,8 @@ static int given_other(struct vsph_params *prm, const char *key,
 
 int vsph_scene_solver_defaults(const struct vsph_scene_type *type,
                                struct vsph_params *prm) {
+  if (!prm)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_scene_solver_defaults: a NULL argument");
   /* the scene's own CFL: its RK4 runs of the WCSPH scheme (the study's),
    * not contact SPH, the transport velocity, leapfrog or a fixed step */
   if (type->cfl > 0.0 && !vsph_params_given(prm, "Solver:cfl") &&
@@ -96,6 +99,7 @@ int vsph_scene_solver_defaults(const struct vsph_scene_type *type,
 
 void vsph_scene_solver_defaults_text(const struct vsph_scene_type *type,
                                      char *buf, size_t len) {
+  if (!type || !buf) return;
   size_t n = 0;
   buf[0] = '\0';
   for (const char *const *d = type->solver_defaults; d && *d && n < len; d++)
@@ -104,6 +108,7 @@ void vsph_scene_solver_defaults_text(const struct vsph_scene_type *type,
 
 int vsph_scene_init(struct vsph_scene *sc, const struct vsph_scene_type *type,
                     struct vsph_params *prm) {
+  if (!sc || !type) VSPH_FAIL(VSPH_EINVAL, "vsph_scene_init: a NULL argument");
   memset(sc, 0, sizeof *sc);
   sc->type = type;
   sc->dim = 2;
@@ -117,6 +122,7 @@ int vsph_scene_init(struct vsph_scene *sc, const struct vsph_scene_type *type,
 }
 
 double vsph_scene_sound_speed(const struct vsph_scene *sc, double c0) {
+  if (!sc) return NAN;
   if (c0 > 0.0) return c0;
   /* THEORY 5: c0 = 10 max(U_max, sqrt(dp_max / rho0)) */
   return 10.0 * fmax(sc->U_max, sqrt(sc->dp_max / sc->rho0));
@@ -125,6 +131,8 @@ double vsph_scene_sound_speed(const struct vsph_scene *sc, double c0) {
 int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
                                const struct vsph_kernel_type *k, double h,
                                struct vsph_integrate_props *ip) {
+  if (!sc || !k || !ip)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_scene_integrate_props: a NULL argument");
   memset(ip, 0, sizeof *ip);
   const int st =
       vsph_viscous_props_init(&ip->eq.visc, form, k, sc->dim, h, sc->mu);
@@ -153,12 +161,15 @@ int vsph_scene_integrate_props(const struct vsph_scene *sc, int form,
 
 void vsph_scene_set_pressure(const struct vsph_scene *sc,
                              struct vsph_particles *p, size_t i, double pr) {
+  if (!sc || !p) return;
   p->rho[i] = sc->rho0 + pr / (sc->c0 * sc->c0);
   p->m[i] = p->rho[i] * p->vol[i];
 }
 
 int vsph_scene_rectangle(const struct vsph_scene *sc, size_t nx, size_t ny,
                          double dx, double dy, struct vsph_particles **out) {
+  if (!sc || !out)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_scene_rectangle: a NULL argument");
   struct vsph_particles *p = vsph_particles_alloc(nx * ny, 2);
   if (!p) return VSPH_ENOMEM;
   for (size_t j = 0; j < ny; j++)

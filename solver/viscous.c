@@ -58,6 +58,7 @@ const char *vsph_viscous_name(int form) {
 }
 
 int vsph_viscous_find(const char *name) {
+  if (!name) return -1;
   for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++)
     if (strcmp(vsph_viscous_types[k]->name, name) == 0) return k;
   return -1;
@@ -70,6 +71,7 @@ const char *vsph_viscous_label(int form) {
 }
 
 const char *vsph_viscous_list(unsigned flags, char *buf, size_t n) {
+  if (!buf) return NULL;
   size_t len = 0;
   if (n) buf[0] = '\0';
   for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT && len < n; k++)
@@ -80,6 +82,8 @@ const char *vsph_viscous_list(unsigned flags, char *buf, size_t n) {
 }
 
 int vsph_viscous_resolve(const char *name, int *form) {
+  if (!name || !form)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_viscous_resolve: a NULL argument");
   *form = vsph_viscous_find(name);
   if (*form >= 0) return VSPH_OK;
   char list[256];
@@ -140,6 +144,7 @@ fail:
 }
 
 int vsph_viscous_ws_corr(struct vsph_viscous_ws *ws) {
+  if (!ws) VSPH_FAIL(VSPH_EINVAL, "vsph_viscous_ws_corr: a NULL argument");
   if (ws->S) return VSPH_OK;
   const size_t c = ws->cap ? ws->cap : 1;
   int ok = (ws->S = malloc(c * sizeof(double))) != NULL;
@@ -207,6 +212,7 @@ int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol) {
 void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
                               struct vsph_viscous_ws *ws, size_t i,
                               const double B[9], const double Mg[9]) {
+  if (!vp || !ws || !B || !Mg) return;
   const int dim = vp->dim, renorm = (vsph_viscous_types[vp->form]->flags &
                                      VSPH_VISCOUS_RENORM) != 0;
   double L[9] = {0}, G[9] = {0};
@@ -277,6 +283,7 @@ void vsph_viscous_laplacians(const struct vsph_pair_kernel *pk,
                              const struct vsph_particles *p,
                              const struct vsph_pair_ranges *rg, size_t i,
                              int nf, const double *const f[3], double out[3]) {
+  if (!pk || !k || !p || !rg || !f || !out) return;
   if (pk->dim == 2)
     laplacians(pk, k, h, eta2, tol, lap, p, rg, i, nf, f, out, 2);
   else
@@ -287,6 +294,8 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
                          const struct vsph_particles *p,
                          const struct vsph_cells *cells,
                          struct vsph_viscous_ws *ws) {
+  if (!vp || !p || !cells)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_viscous_prepare: a NULL argument");
   if (!vsph_viscous_first_pass(vp->form)) return VSPH_OK;
   if (!ws || ws->cap < p->n || ws->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "%s needs a workspace for %zu particles",
@@ -355,6 +364,8 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
                          const struct vsph_cells *cells,
                          struct vsph_viscous_ws *ws, double *const out[3],
                          double *dens) {
+  if (!vp || !p || !cells || !ws || !out)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_viscous_compute: a NULL argument");
   if (vp->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "props dimension %d, particles %d", vp->dim, p->dim);
   const int st = vsph_viscous_prepare(vp, p, cells, ws);

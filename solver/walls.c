@@ -28,6 +28,8 @@ const char *vsph_walls_solid_name(int s) {
 }
 
 int vsph_walls_solid_resolve(const char *name, int *s) {
+  if (!name || !s)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_walls_solid_resolve: a NULL argument");
   for (int k = VSPH_WALLS_ADAMI; k < VSPH_WALLS_SOLID_COUNT; k++)
     if (!strcmp(name, solid_names[k])) {
       *s = k;
@@ -50,6 +52,8 @@ const char *vsph_walls_velocity_name(int v) {
 }
 
 int vsph_walls_velocity_resolve(const char *name, int *v) {
+  if (!name || !v)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_walls_velocity_resolve: a NULL argument");
   for (int k = 0; k < VSPH_WALLS_VEL_COUNT; k++)
     if (!strcmp(name, velocity_names[k])) {
       *v = k;
@@ -60,6 +64,7 @@ int vsph_walls_velocity_resolve(const char *name, int *v) {
 
 int vsph_walls_add_periodic(struct vsph_walls *w, int axis, double lo,
                             double hi) {
+  if (!w) VSPH_FAIL(VSPH_EINVAL, "vsph_walls_add_periodic: a NULL argument");
   if (w->n + 2 > VSPH_WALLS_MAX || !(hi > lo) || axis < 0 || axis > 2)
     VSPH_FAIL(VSPH_EINVAL, "cannot add a periodic axis %d over [%g, %g)", axis,
               lo, hi);
@@ -75,6 +80,7 @@ int vsph_walls_add_periodic(struct vsph_walls *w, int axis, double lo,
 }
 
 double vsph_walls_period(const struct vsph_walls *w, int axis) {
+  if (!w) return NAN;
   double lo = NAN, hi = NAN;
   for (int q = 0; q < w->n; q++)
     if (w->kind[q] == VSPH_WALLS_PERIODIC && w->axis[q] == axis)
@@ -84,6 +90,7 @@ double vsph_walls_period(const struct vsph_walls *w, int axis) {
 
 void vsph_walls_wrap(const struct vsph_walls *w, struct vsph_particles *p,
                      size_t n_fluid) {
+  if (!w || !p) return;
   for (int q = 0; q < w->n; q++) {
     if (w->kind[q] != VSPH_WALLS_PERIODIC || w->side[q] < 0) continue;
     const int a = w->axis[q];
@@ -99,6 +106,7 @@ void vsph_walls_wrap(const struct vsph_walls *w, struct vsph_particles *p,
 
 struct vsph_walls_ghosts *vsph_walls_ghosts_alloc(const struct vsph_walls *w,
                                                   size_t cap) {
+  if (!w) return NULL;
   struct vsph_walls_ghosts *gh = calloc(1, sizeof *gh);
   const size_t c = cap ? cap : 1;
   const int linear = w->noslip && w->velocity == VSPH_WALLS_VEL_LINEAR;
@@ -384,6 +392,7 @@ static void rows(const struct vsph_walls *w, const struct vsph_particles *p,
 size_t vsph_walls_count(const struct vsph_walls *w,
                         const struct vsph_particles *p, size_t n_fluid,
                         double reach) {
+  if (!w || !p) return 0;
   unsigned pair[3];
   ends(w, pair);
   size_t n = 0;
@@ -400,6 +409,8 @@ size_t vsph_walls_count(const struct vsph_walls *w,
 int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
                         size_t n_fluid, double reach,
                         struct vsph_walls_ghosts *gh) {
+  if (!w || !p || !gh)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_walls_generate: a NULL argument");
   /* Compact: keep the fluid (and the fixed wall particles) in their
    * current order. */
   const size_t base = n_fluid + gh->keep;
@@ -458,6 +469,7 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
 void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
                        size_t n_fluid, struct vsph_walls_ghosts *gh,
                        const size_t *where) {
+  if (!w || !p || !gh || !where) return;
   if (gh->band) rows(w, p, n_fluid, gh);
   const size_t base = n_fluid + gh->keep;
 #pragma omp parallel for schedule(static)
@@ -508,6 +520,7 @@ static int solid_lattice(const struct vsph_walls *w, int dim, double dx,
 
 size_t vsph_walls_solid_count(const struct vsph_walls *w, int dim, double dx,
                               double reach) {
+  if (!w) return 0;
   double lo[3];
   long n[3], l;
   unsigned per;
@@ -523,6 +536,8 @@ size_t vsph_walls_solid_count(const struct vsph_walls *w, int dim, double dx,
 int vsph_walls_solid_generate(const struct vsph_walls *w,
                               struct vsph_particles *p, size_t n_fluid,
                               double dx, double reach) {
+  if (!w || !p)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_walls_solid_generate: a NULL argument");
   const int dim = p->dim;
   double lo[3];
   long n[3], l;
@@ -560,6 +575,7 @@ int vsph_walls_solid_generate(const struct vsph_walls *w,
 
 void vsph_walls_solid_velocity(const struct vsph_walls *w, int dim,
                                const double x[3], double u[3]) {
+  if (!w || !x || !u) return;
   u[0] = u[1] = u[2] = 0.0;
   for (int q = 0; q < w->n; q++) {
     if (w->kind[q] != VSPH_WALLS_MIRROR) continue;
@@ -577,6 +593,7 @@ void vsph_walls_solid_velocity(const struct vsph_walls *w, int dim,
 void vsph_walls_solid_extrapolate(const struct vsph_walls *w,
                                   struct vsph_particles *p, size_t n_fluid,
                                   struct vsph_walls_ghosts *gh) {
+  if (!w || !p || !gh) return;
   rows(w, p, n_fluid, gh);
   const int dim = p->dim;
 #pragma omp parallel for schedule(static)

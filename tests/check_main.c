@@ -82,6 +82,7 @@ int main(void) {
   srunner_add_suite(sr, vsph_series_suite());
   srunner_add_suite(sr, vsph_grade_suite());
   srunner_add_suite(sr, vsph_claim_suite());
+  srunner_add_suite(sr, vsph_api_suite());
   srunner_add_suite(sr, vsph_fvref_suite());
   srunner_add_suite(sr, vsph_library_suite());
   srunner_run_all(sr, CK_NORMAL);

@@ -38,6 +38,7 @@ Suite *vsph_library_suite(void);
 Suite *vsph_series_suite(void);
 Suite *vsph_grade_suite(void);
 Suite *vsph_claim_suite(void);
+Suite *vsph_api_suite(void);
 Suite *vsph_fvref_suite(void);
 
 /* What a run of the built binary ($VSPH_BIN) gave (tests/check_cli.c). */

@@ -33,6 +33,7 @@ static const struct vsph_params_spec params[] = {
 
 void vsph_standing_wave_velocity(const struct vsph_scene_wave *w, double x,
                                  double y, double u[2]) {
+  if (!w || !u) return;
   const double k = w->k, H = w->L;
   const double a = w->A * w->g / w->omega * k / cosh(k * H);
   u[0] = -a * cosh(k * (y + H)) * sin(k * x);
