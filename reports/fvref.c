@@ -317,17 +317,18 @@ static int ghia_index(const struct vsph_references_ghia *g, int line,
   return -1;
 }
 
-/* Record failure @p ... in @p why when it is the first. */
-#define FVREF_FAIL(...)                        \
-  do {                                         \
-    if (!bad++) snprintf(why, n, __VA_ARGS__); \
+/* Count a failure, and record it in @p why when it is the first there. */
+#define FVREF_FAIL(...)                                        \
+  do {                                                         \
+    if (!bad++ && n && !why[0]) snprintf(why, n, __VA_ARGS__); \
   } while (0)
 
-int vsph_fvref_check(const struct vsph_fvref *fv, char *why, size_t n) {
+/* The square's files against what is known of them exactly: the number of
+ * failures (the first said in @p why, unless it holds one already). */
+static int check_square(const struct vsph_fvref_square *s, char *why,
+                        size_t n) {
   int bad = 0;
-  if (n) why[0] = '\0';
-  const struct vsph_fvref_square *s = &fv->sq;
-  if (s->ok) {
+  {
     /* every run of the ladder, each at half its step, and the 320-cell
      * run at the common step */
     const struct vsph_fvref_sqseries *runs[2 * VSPH_FVREF_SQ_GRIDS + 1];
@@ -388,13 +389,18 @@ int vsph_fvref_check(const struct vsph_fvref *fv, char *why, size_t n) {
       FVREF_FAIL("square: the ladder does not converge (orders %.2f, %.2f)",
                  s->sc.order_max, s->sc.order_rms);
   }
-  for (int w = 0; w < 2; w++) {
-    const struct vsph_fvref_cavity *c = &fv->cav[w];
-    if (!c->ok) continue;
+  return bad;
+}
+
+/* The cavity's files at one Re, likewise. */
+static int check_cavity(const struct vsph_fvref_cavity *c, char *why,
+                        size_t n) {
+  int bad = 0;
+  {
     struct vsph_references_ghia gh;
     if (!vsph_references_ghia(c->Re, &gh)) {
       FVREF_FAIL("cavity Re %g: no Ghia table", c->Re);
-      continue;
+      return bad;
     }
     for (int g = 0; g < VSPH_FVREF_CAV_GRIDS; g++) {
       const struct vsph_fvref_cavgrid *q = &c->g[g];
@@ -431,5 +437,13 @@ int vsph_fvref_check(const struct vsph_fvref *fv, char *why, size_t n) {
           "(the table's precision: %g U)",
           c->Re, f->ghia_max, tol);
   }
+  return bad;
+}
+
+int vsph_fvref_check(const struct vsph_fvref *fv, char *why, size_t n) {
+  if (n) why[0] = '\0';
+  int bad = fv->sq.ok ? check_square(&fv->sq, why, n) : 0;
+  for (int w = 0; w < 2; w++)
+    if (fv->cav[w].ok) bad += check_cavity(&fv->cav[w], why, n);
   return bad;
 }
