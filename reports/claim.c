@@ -15,9 +15,10 @@
 #include "../common/status.h"
 #include "grade.h"
 
-/* Most tests and verdicts one claim may hold. */
-#define MAXTESTS 16
+/* Most tests, verdicts and word lines one claim may hold. */
+#define MAXTESTS 24
 #define MAXIFS 16
+#define MAXWORDS 32
 
 void vsph_claim_clear(struct vsph_claim_vals *v) {
   v->n = 0;
@@ -76,6 +77,10 @@ struct block {
   int ntests;
   char cond[MAXIFS][256], verdict[MAXIFS][1000]; /* the last: else */
   int nifs, has_else;
+  /* words the tests choose: "word NAME: EXPR => TEXT", the first line of
+   * a name whose EXPR holds giving {{NAME}}, its last line "else" */
+  char wname[MAXWORDS][32], wcond[MAXWORDS][256], wtext[MAXWORDS][400];
+  int nwords;
 };
 
 static const struct {
@@ -162,6 +167,28 @@ static int field(const char *name, struct block *b, const char *key,
         VSPH_FAIL(VSPH_EINVAL, "claim %s: field %s too long", name, key);
       return VSPH_OK;
     }
+  if (!strncmp(key, "word ", 5)) {
+    if (b->nwords == MAXWORDS)
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: more than %d word lines", name,
+                MAXWORDS);
+    const char *arrow = strstr(val, "=>");
+    char *wn = b->wname[b->nwords];
+    if (trim_copy(wn, sizeof b->wname[0], key + 5, strlen(key + 5)) || !*wn ||
+        strspn(wn, "abcdefghijklmnopqrstuvwxyz0123456789_") != strlen(wn))
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: '%s' names no word", name, key);
+    if (!arrow ||
+        trim_copy(b->wcond[b->nwords], sizeof b->wcond[0], val,
+                  (size_t)(arrow - val)) ||
+        !b->wcond[b->nwords][0] ||
+        trim_copy(b->wtext[b->nwords], sizeof b->wtext[0], arrow + 2,
+                  strlen(arrow + 2)))
+      VSPH_FAIL(VSPH_EINVAL,
+                "claim %s: word %s: 'EXPR => TEXT' (or 'else => TEXT', its "
+                "last line), within their lengths",
+                name, wn);
+    b->nwords++;
+    return VSPH_OK;
+  }
   if (!strncmp(key, "test ", 5)) {
     if (b->ntests == MAXTESTS)
       VSPH_FAIL(VSPH_EINVAL, "claim %s: more than %d tests", name, MAXTESTS);
@@ -266,6 +293,17 @@ static int parse(const char *name, const char *text, struct block *b) {
               "claim %s: no test, yet a verdict other than 'not tested' "
               "and no 'checked:' test of make check named",
               name);
+  /* each word's lines: an expression each, 'else' the last and only there */
+  for (int k = 0; k < b->nwords; k++) {
+    int last = 1;
+    for (int q = k + 1; q < b->nwords; q++)
+      last &= strcmp(b->wname[q], b->wname[k]) != 0;
+    const int is_else = !strcmp(b->wcond[k], "else");
+    if (is_else != last)
+      VSPH_FAIL(VSPH_EINVAL,
+                "claim %s: word %s: 'else' is its last line, and only it", name,
+                b->wname[k]);
+  }
   if (b->ntests && b->checked[0])
     VSPH_FAIL(VSPH_EINVAL,
               "claim %s: 'checked:' is for a claim without "
@@ -452,6 +490,31 @@ static int choose(const char *name, char *ph, const struct block *b,
   return VSPH_OK;
 }
 
+/* Word @p w of block @p b, as its lines choose on the tests @p holds, into
+ * *text: 1, 0 when the block has no such word, -1 with a report when a
+ * line's expression is malformed. */
+static int word_text(const char *name, const struct block *b, const int *holds,
+                     const char *w, const char **text) {
+  int found = 0;
+  for (int k = 0; k < b->nwords; k++) {
+    if (strcmp(b->wname[k], w)) continue;
+    found = 1;
+    const int r = strcmp(b->wcond[k], "else") ? eval(b->wcond[k], b, holds) : 1;
+    if (r < 0) {
+      vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                         "claim %s: word %s: '%s' is not an expression of "
+                         "its tests",
+                         name, w, b->wcond[k]);
+      return -1;
+    }
+    if (r == 1) {
+      *text = b->wtext[k];
+      return 1;
+    }
+  }
+  return found ? -1 : 0; /* (an else line ends every word: unreachable) */
+}
+
 /* Template @p t filled from @p v into @p out (@p len bytes), its
  * conditions read on the tests' results @p holds of block @p b; with @p v
  * NULL only its placeholders' form is checked. */
@@ -517,7 +580,15 @@ static int fill(const char *name, const char *t, const struct block *b,
                   "number (%%[flags][width][.prec]e|f|g)",
                   name, ph, fmt);
     }
-    if (!v) {
+    const char *wt = NULL;
+    const int wr = word_text(name, b, holds, ph, &wt);
+    if (wr < 0) return VSPH_EINVAL;
+    if (wr == 1) {
+      if (fmt || scale)
+        VSPH_FAIL(VSPH_EINVAL, "claim %s: {{%s}} is a word: no format", name,
+                  ph);
+      snprintf(piece, sizeof piece, "%s", wt);
+    } else if (!v) {
       piece[0] = '\0';
     } else {
       size_t k = 0;
@@ -575,6 +646,11 @@ static int grade(const char *name, const struct block *b,
                 name, b->test[k].name, b->test[k].kind, b->test[k].arg[1]);
     if (nan && strcmp(b->test[k].kind, "finite")) holds[k] = UNKNOWN;
   }
+  for (int k = 0; k < b->nwords; k++) /* every word line well formed */
+    if (strcmp(b->wcond[k], "else") && eval(b->wcond[k], b, holds) < 0)
+      VSPH_FAIL(VSPH_EINVAL,
+                "claim %s: word %s: '%s' is not an expression of its tests",
+                name, b->wname[k], b->wcond[k]);
   int pick = -1;
   for (int k = 0; k < b->nifs; k++) {
     const int r = b->cond[k][0] ? eval(b->cond[k], b, holds) : 1;

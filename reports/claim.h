@@ -42,6 +42,10 @@
  *    a VERDICT starts with its class's words
  *    (reproduced, reproduced on a substitute, partly, differs, not
  *    tested) and may hold placeholders;
+ *  - `word NAME: EXPR => TEXT` (one or more lines per NAME, the last
+ *    `word NAME: else => TEXT`): the literal TEXT of the first line whose
+ *    EXPR of the tests holds for certain, which {{NAME}} then inserts in
+ *    any template: words that repeat a test are the test's own;
  *  - a claim without tests holds one verdict, `else:`, which says "not
  *    tested", or rests on a test of make check that `checked:` names
  *    ("tests/FILE.c test_NAME").

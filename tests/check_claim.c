@@ -272,7 +272,7 @@ START_TEST(test_faults_refused) {
 }
 END_TEST
 
-/* Seventeen tests (one more than a claim holds) are refused; a part that
+/* Twenty-five tests (one more than a claim holds) are refused; a part that
  * sets more values than it may, or a word too long, fails its grading; a
  * word filled into a verdict may not change the verdict's class. */
 START_TEST(test_limits_refused) {
@@ -280,7 +280,7 @@ START_TEST(test_limits_refused) {
   size_t m = (size_t)snprintf(text, sizeof text,
                               "claim: c\nwhere: w\npaper: p\nours: o\n"
                               "setup: none\n");
-  for (int k = 0; k < 17; k++)
+  for (int k = 0; k < 25; k++)
     m += (size_t)snprintf(text + m, sizeof text - m,
                           "test t%d: below x 1 -- a choice\n", k);
   snprintf(text + m, sizeof text - m, "else: differs\n");
@@ -362,6 +362,54 @@ START_TEST(test_words_chosen) {
              "test big: above x 1 -- a choice\nelse: differs\n",
              BAD[k]);
     ck_assert_msg(vsph_claim_lint("w", text) == VSPH_EINVAL, "%s", BAD[k]);
+  }
+}
+END_TEST
+
+/* Word lines: {{NAME}} is the text of NAME's first line whose expression
+ * holds for certain, else its last ('else'); a word without its 'else'
+ * last, an 'else' before the last line, a malformed expression, a format
+ * on a word are refused. */
+START_TEST(test_word_lines) {
+  static const char *const W =
+      "claim: c\nwhere: w\npaper: p\nours: x {{conv}}\nsetup: none\n"
+      "test a: above x 1 -- a choice\n"
+      "test b: above y 1 -- a choice\n"
+      "word conv: a & b => converges by both\n"
+      "word conv: a | b => converges by one only\n"
+      "word conv: !a & !b => does not converge\n"
+      "word conv: else => not measured\n"
+      "if a | b: partly: {{conv}}\nelse: differs\n";
+  struct vsph_claim_vals v;
+  struct vsph_claim_row row;
+  const struct {
+    double x, y;
+    const char *ours;
+  } cases[] = {
+      {2, 2, "x converges by both"},     {2, 0, "x converges by one only"},
+      {0, 2, "x converges by one only"}, {0, 0, "x does not converge"},
+      {NAN, 0, "x not measured"},        {NAN, 2, "x converges by one only"}};
+  for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    vsph_claim_clear(&v);
+    vsph_claim_num(&v, "x", cases[k].x);
+    vsph_claim_num(&v, "y", cases[k].y);
+    ck_assert_int_eq(grade(W, &v, &row), VSPH_OK);
+    ck_assert_msg(!strcmp(row.ours, cases[k].ours), "case %zu: %s", k,
+                  row.ours);
+  }
+  static const char *const BAD[][2] = {
+      {"word conv: else => not measured\n", ""},
+      {"word conv: a & b =>", "word conv: else =>"},
+      {"word conv: a | b =>", "word conv: (a =>"},
+      {"ours: x {{conv}}", "ours: x {{conv:.1f}}"},
+      {"word conv: a & b => converges by both", "word conv: a & b"}};
+  for (size_t k = 0; k < sizeof BAD / sizeof BAD[0]; k++) {
+    char text[2048];
+    const char *at = strstr(W, BAD[k][0]);
+    ck_assert_ptr_nonnull(at);
+    snprintf(text, sizeof text, "%.*s%s%s", (int)(at - W), W, BAD[k][1],
+             at + strlen(BAD[k][0]));
+    ck_assert_msg(vsph_claim_lint("w", text) == VSPH_EINVAL, "case %zu", k);
   }
 }
 END_TEST
@@ -459,6 +507,7 @@ Suite *vsph_claim_suite(void) {
   tcase_add_test(tc, test_limits_refused);
   tcase_add_test(tc, test_unknown_decides_nothing);
   tcase_add_test(tc, test_words_chosen);
+  tcase_add_test(tc, test_word_lines);
   tcase_add_test(tc, test_blocks_well_formed);
   suite_add_tcase(s, tc);
   return s;
