@@ -144,6 +144,42 @@ static int lattice_checks(struct vsph_params *prm, const char *csv,
   return -1;
 }
 
+/* The measurement printed (and its profiles into @p csv, if given): the
+ * exit status. Frees @p prm. */
+static int measure_print(struct vsph_params *prm, size_t nprof, int quiet,
+                         const char *csv) {
+  struct vsph_contact_shear cs = {
+      .nprof = nprof, .progress = quiet ? NULL : vsph_sheartest_progress};
+  int st = vsph_contact_shear_measure(prm, &cs);
+  vsph_params_free(prm);
+  if (st) return vsph_args_status(CMD, st);
+  printf(
+      "# vsph %s contact: shear test, %zu particles, D0 = %g m, U0 = %g "
+      "m/s, rho0 = %g, c0 = %g, %zu steps in %.1f s%s%s\n",
+      VSPH_VERSION, cs.n, cs.D0, cs.U0, cs.rho0, cs.c0, cs.steps, cs.wall_s,
+      cs.stable ? "" : ", UNSTABLE: ", cs.reason);
+  printf("t,nu_u,eta_u_over_ZD0,rms_u,nu_dy,eta_dy_over_ZD0,rms_dy\n");
+  const double zd = cs.c0 * cs.D0;
+  for (size_t k = 0; k < cs.nt; k++)
+    printf("%.6e,%.6e,%.5f,%.3e,%.6e,%.5f,%.3e\n", cs.t[k], cs.nu_u[k],
+           cs.nu_u[k] / zd, cs.rms_u[k], cs.nu_dy[k], cs.nu_dy[k] / zd,
+           cs.rms_dy[k]);
+  /* a fit that is no result is nan above, and says why here */
+  for (size_t k = 0; k < cs.nt; k++)
+    for (int q = 0; q < 2; q++) {
+      const char *why = q ? cs.na_dy[k] : cs.na_u[k];
+      if (why)
+        printf("# t = %.6e: the %s fit is not available (nan): %s\n", cs.t[k],
+               q ? "control-surface" : "u_y", why);
+    }
+  if (csv && (st = write_profiles(csv, &cs))) {
+    vsph_contact_shear_free(&cs);
+    return vsph_args_status(CMD, st);
+  }
+  vsph_contact_shear_free(&cs);
+  return vsph_args_finish(CMD, 0);
+}
+
 int vsph_cmd_contact_main(int argc, char **argv) {
   int lattice = 0;
   size_t nprof = 3;
@@ -230,34 +266,5 @@ int vsph_cmd_contact_main(int argc, char **argv) {
                      : "written");
     return vsph_args_finish(CMD, 0);
   }
-  struct vsph_contact_shear cs = {
-      .nprof = nprof, .progress = quiet ? NULL : vsph_sheartest_progress};
-  int st = vsph_contact_shear_measure(prm, &cs);
-  vsph_params_free(prm);
-  if (st) return vsph_args_status(CMD, st);
-  printf(
-      "# vsph %s contact: shear test, %zu particles, D0 = %g m, U0 = %g "
-      "m/s, rho0 = %g, c0 = %g, %zu steps in %.1f s%s%s\n",
-      VSPH_VERSION, cs.n, cs.D0, cs.U0, cs.rho0, cs.c0, cs.steps, cs.wall_s,
-      cs.stable ? "" : ", UNSTABLE: ", cs.reason);
-  printf("t,nu_u,eta_u_over_ZD0,rms_u,nu_dy,eta_dy_over_ZD0,rms_dy\n");
-  const double zd = cs.c0 * cs.D0;
-  for (size_t k = 0; k < cs.nt; k++)
-    printf("%.6e,%.6e,%.5f,%.3e,%.6e,%.5f,%.3e\n", cs.t[k], cs.nu_u[k],
-           cs.nu_u[k] / zd, cs.rms_u[k], cs.nu_dy[k], cs.nu_dy[k] / zd,
-           cs.rms_dy[k]);
-  /* a fit that is no result is nan above, and says why here */
-  for (size_t k = 0; k < cs.nt; k++)
-    for (int q = 0; q < 2; q++) {
-      const char *why = q ? cs.na_dy[k] : cs.na_u[k];
-      if (why)
-        printf("# t = %.6e: the %s fit is not available (nan): %s\n", cs.t[k],
-               q ? "control-surface" : "u_y", why);
-    }
-  if (csv && (st = write_profiles(csv, &cs))) {
-    vsph_contact_shear_free(&cs);
-    return vsph_args_status(CMD, st);
-  }
-  vsph_contact_shear_free(&cs);
-  return vsph_args_finish(CMD, 0);
+  return measure_print(prm, nprof, quiet, csv);
 }
