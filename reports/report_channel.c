@@ -275,6 +275,8 @@ static const char *const CAV_RE400[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1",
 static const char *const CAV_RE1000[] = {VSPH_REPORT_ADAMI, "Solver:tvf=1",
                                          "Scene:Re=1000", CAV_SNAP, NULL};
 #undef CAV_SNAP
+/* Basa et al.'s cavity: 50 x 50 (their §6.2) */
+#define CAV_PAPER_RES 50
 /* the runs, by the role the claims give them; FULL's after CAV_QUICK */
 enum {
   CAV_E20,
@@ -934,27 +936,30 @@ static void sweep_rows(struct vsph_report *R, const struct chan *c) {
 
 /* The sweep's figures the reading and the claims share. */
 struct sweep {
-  int nbad, ntot;  /* non-physical runs (stopped or agitated); runs */
-  int mixed;       /* the first c whose dt do not all end alike (-1: none) */
-  char out[NSWC];  /* per c: its outcome where every dt ends alike, else
-                      'm' */
-  double acc;      /* largest (max - min)/min of the error over dt at a c
-                      whose runs all end unagitated (NaN: none) */
-  int falls;       /* at each such c the error falls as dt does */
-  int better;      /* a c where a smaller dt turns a non-physical run into
-                      a physical one, or the smallest dt's stop comes 1.5
-                      times later than the larger ones' latest */
-  int better_c;    /* the first such c (-1: none) */
-  double zlo, zhi; /* the zigzag at the smallest dt run over the c whose
-                      run ends unagitated: lowest, highest (NaN: none) */
-  int alo, ahi;    /* at which c */
+  int nbad, ntot;   /* non-physical runs (stopped or agitated); runs */
+  int mixed;        /* the first c whose dt do not all end alike (-1: none) */
+  char out[NSWC];   /* per c: its outcome where every dt ends alike, else
+                       'm' */
+  double acc;       /* largest (max - min)/min of the error over dt at a c
+                       whose runs all end unagitated (NaN: none) */
+  double rise;      /* the largest ratio of the error at a dt to the error
+                       at the next larger dt, over the c whose runs all end
+                       unagitated (below 1: the error falls as dt does at
+                       each); NaN where acc is, or a ratio is not measured */
+  int turn;         /* the first c where a smaller dt turns a non-physical
+                       run into a physical one (-1: none) */
+  double lag[NSWC]; /* per c where every dt stops: the smallest dt's stop
+                       over the larger ones' latest (NaN at the others) */
+  double zlo, zhi;  /* the zigzag at the smallest dt run over the c whose
+                       run ends unagitated: lowest, highest (NaN: none) */
+  int alo, ahi;     /* at which c */
 };
 
 static void sweep_figures(const struct chan *c, struct sweep *w) {
   *w = (struct sweep){.mixed = -1,
                       .acc = (double)NAN,
-                      .falls = 1,
-                      .better_c = -1,
+                      .rise = -(double)INFINITY,
+                      .turn = -1,
                       .zlo = (double)NAN,
                       .zhi = (double)NAN,
                       .alo = -1,
@@ -977,26 +982,30 @@ static void sweep_figures(const struct chan *c, struct sweep *w) {
     if (!same && w->mixed < 0) w->mixed = a;
     if (all_r && lo > 0 && hi >= lo && !((hi - lo) / lo <= w->acc))
       w->acc = (hi - lo) / lo;
-    for (int b = 1; b < nd && all_r; b++)
-      w->falls &= last(&c->sw[a][b], "u_err") < last(&c->sw[a][b - 1], "u_err");
-    /* a smaller dt helps: a physical run below a non-physical one, or a
-     * stop delayed */
-    int helps = 0;
-    for (int b = 1; b < nd; b++) helps |= o[b] == 'r' && o[b - 1] != 'r';
+    for (int b = 1; b < nd && all_r; b++) { /* a ratio not measured: NaN */
+      const double q =
+          last(&c->sw[a][b], "u_err") / last(&c->sw[a][b - 1], "u_err");
+      w->rise = isnan(q) || isnan(w->rise) ? (double)NAN : fmax(w->rise, q);
+    }
+    /* a smaller dt helps: a physical run below a non-physical one, or (the
+     * claim's rule on lag) a stop delayed */
+    int turns = 0;
+    for (int b = 1; b < nd; b++) turns |= o[b] == 'r' && o[b - 1] != 'r';
+    if (turns && w->turn < 0) w->turn = a;
+    w->lag[a] = (double)NAN;
     if (same && o[0] == 's' && nd > 1) {
       double other = 0.0;
       for (int b = 0; b + 1 < nd; b++)
         other = fmax(other, c->sw[a][b].t_unstable);
-      helps |= c->sw[a][nd - 1].t_unstable > 1.5 * other;
+      w->lag[a] = c->sw[a][nd - 1].t_unstable / other;
     }
-    if (helps && w->better_c < 0) w->better = 1, w->better_c = a;
     const double z = c->zsw[a][nd - 1].rms;
     if (o[nd - 1] == 'r' && isfinite(z)) {
       if (w->alo < 0 || z < w->zlo) w->zlo = z, w->alo = a;
       if (w->ahi < 0 || z > w->zhi) w->zhi = z, w->ahi = a;
     }
   }
-  if (!isfinite(w->acc)) w->falls = 0;
+  if (!isfinite(w->acc)) w->rise = (double)NAN; /* no change, no fall */
 }
 
 /* What the sweep's table says (the section's reading and the claim). */
@@ -1262,9 +1271,6 @@ static void pois_vals(struct vsph_claim_vals *v, const struct chan *c,
     vsph_claim_num(v, F[k].e, e[F[k].f]);
   }
   vsph_claim_num(v, "res", (double)c->res_p);
-  vsph_claim_str(
-      v, "res_paper", "%s",
-      c->res_p == 20 ? " as the paper's" : " (the paper's: 20 x 20)");
   vsph_claim_str(v, "pois_setup", "%s", POIS_SETUP);
 }
 
@@ -1290,9 +1296,8 @@ static int pois_claims(struct vsph_report *R, const struct chan *c,
   pois_vals(v, c, r, e);
   if (!st) st = vsph_report_doc_grade(R, "claims/channel.pois_xi", v);
   pois_vals(v, c, r, e);
+  vsph_claim_num(v, "okA", (double)c->pois[P_A].ok);
   vsph_claim_num(v, "okA0", (double)c->pois[P_A0].ok);
-  vsph_claim_str(v, "stopA", "%s", c->pois[P_A].ok ? "" : " (stopped)");
-  vsph_claim_str(v, "stopA0", "%s", c->pois[P_A0].ok ? "" : " (stopped)");
   if (!st) st = vsph_report_doc_grade(R, "claims/channel.pois_a", v);
   /* summation against continuity, beside the gap between the models the
    * paper ranks apart on the same metric (E against C) */
@@ -1332,11 +1337,8 @@ static int eos_claims(struct vsph_report *R, const struct chan *c,
     vsph_claim_num(v, "okGas", (double)g->ok);
     vsph_claim_num(v, "okReduced", (double)gr->ok);
     vsph_claim_num(v, "okTait", (double)ta->ok);
-    vsph_claim_str(v, "gas", "%s", g->ok ? "runs to" : "stops at");
     vsph_claim_num(v, "t_gas", g->ok ? 4.9 : g->t_unstable * TSTAR);
-    vsph_claim_str(v, "reduced", "%s", gr->ok ? "runs" : "stops");
     vsph_claim_num(v, "r_reduced", last(gr, "u_err_rel"));
-    vsph_claim_str(v, "tait", "%s", ta->ok ? "runs" : "stops");
     st = vsph_report_doc_grade(R, NAME[k], v);
   }
   return st;
@@ -1682,9 +1684,33 @@ static void sweep_vals(const struct chan *c, struct vsph_claim_vals *v) {
   vsph_claim_str(v, "p003_diffs", "%s", P003_DIFFS);
 }
 
+/* Whether the rule of test @p test of claim block @p block, "KIND
+ * MEASURE NUMBER" with KIND below, above, atmost or atleast
+ * (reports/claim.h), holds for @p x as its measure @p measure: 1, 0 (a
+ * NaN never holds), or -1 where the block has no such test. Words that
+ * name the first c meeting a claim's rule, with that c's figures, cannot
+ * be the block's own (its chosen texts are literal), so they read the
+ * rule here, from the block: its threshold stands there alone. */
+static int block_rule(const char *block, const char *test, const char *measure,
+                      double x) {
+  const char *text = vsph_text_get(block);
+  char head[48], kind[16], name[32];
+  double limit;
+  snprintf(head, sizeof head, "\ntest %s:", test);
+  const char *at = text ? strstr(text, head) : NULL;
+  if (!at ||
+      sscanf(at + strlen(head), "%15s %31s %lf", kind, name, &limit) != 3 ||
+      strcmp(name, measure) ||
+      (strcmp(kind, "below") && strcmp(kind, "above") &&
+       strcmp(kind, "atmost") && strcmp(kind, "atleast")))
+    return -1;
+  return vsph_claim_test(kind, (const double[2]){x, limit});
+}
+
 /* Vukcevic et al.'s time step against the sound speed. */
 static int p003_sweep_claims(struct vsph_report *R, const struct chan *c,
                              struct vsph_claim_vals *v) {
+  static const char *const DT = "claims/channel.p003_dt";
   struct sweep w;
   sweep_figures(c, &w);
   char read[1024], acc[200], stab[200];
@@ -1701,26 +1727,41 @@ static int p003_sweep_claims(struct vsph_report *R, const struct chan *c,
   if (isfinite(w.acc))
     snprintf(acc, sizeof acc,
              "where every dt runs, the error changes by at most %.2g %% of "
-             "itself over dt%s",
-             100 * w.acc, w.falls ? ", falling with it" : "");
+             "itself over dt",
+             100 * w.acc);
   else
     snprintf(acc, sizeof acc, "no c runs at every dt");
+  /* lag, the delay the block's rule weighs: the largest over the c
+   * before the first that turns (from that c on, it is named first) */
+  const int n_lag = w.turn >= 0 ? w.turn : NSWC;
+  double lag = (double)NAN;
+  for (int a = 0; a < n_lag; a++) lag = fmax(lag, w.lag[a]);
+  /* the words name the first c where a smaller dt helps: the first that
+   * turns, or one before it that meets the block's rule on lag */
+  int first = -1;
+  for (int a = 0; a < NSWC && first < 0 && !st; a++) {
+    const int later = a < n_lag ? block_rule(DT, "later", "lag", w.lag[a]) : 0;
+    if (later < 0)
+      VSPH_FAIL(VSPH_EINVAL,
+                "claim %s: no rule 'test later: KIND lag NUMBER' for the "
+                "words that name its c",
+                DT);
+    if (a == w.turn || later) first = a;
+  }
   /* better by a later stop only: say when, against the run's length */
-  const struct vsph_jobs_run *rb =
-      w.better ? &c->sw[w.better_c][c->nd - 1] : NULL;
+  const struct vsph_jobs_run *rb = first >= 0 ? &c->sw[first][c->nd - 1] : NULL;
   double tb = 0.0; /* the larger dt's latest stop there */
   for (int b = 0; rb && b + 1 < c->nd; b++)
-    tb = fmax(tb, c->sw[w.better_c][b].t_unstable);
-  const int delayed = rb && !rb->ok;
-  if (delayed)
+    tb = fmax(tb, c->sw[first][b].t_unstable);
+  if (rb && !rb->ok)
     snprintf(stab, sizeof stab,
              "at c = %g m/s the smallest dt stops later, at t = %.3g s "
              "against %.3g s at most (of the run's %g s)",
-             SW_C[w.better_c], rb->t_unstable, tb, SW_TEND);
-  else if (w.better)
+             SW_C[first], rb->t_unstable, tb, SW_TEND);
+  else if (rb)
     snprintf(stab, sizeof stab,
              "at c = %g m/s the smallest dt ends better (the table)",
-             SW_C[w.better_c]);
+             SW_C[first]);
   else
     snprintf(stab, sizeof stab,
              "no c ends better at the smallest dt (each ends as at the "
@@ -1728,13 +1769,14 @@ static int p003_sweep_claims(struct vsph_report *R, const struct chan *c,
   sweep_vals(c, v);
   vsph_claim_str(v, "acc", "%s", acc);
   vsph_claim_str(v, "stab", "%s", stab);
-  vsph_claim_num(v, "falls", w.falls);
   vsph_claim_num(v, "acc_change", w.acc);
-  vsph_claim_num(v, "better", w.better);
-  vsph_claim_num(v, "delayed", delayed);
+  vsph_claim_num(v, "rise", w.rise);
+  vsph_claim_num(v, "lag", lag);
+  vsph_claim_num(v, "turn", w.turn >= 0);
+  vsph_claim_num(v, "turn_stop", w.turn >= 0 && !c->sw[w.turn][c->nd - 1].ok);
   vsph_claim_str(v, "dt_run", "%s",
                  c->nd > 2 ? "4e-4 to 2e-5" : "4e-4 and 1e-4");
-  if (!st) st = vsph_report_doc_grade(R, "claims/channel.p003_dt", v);
+  if (!st) st = vsph_report_doc_grade(R, DT, v);
   return st;
 }
 
@@ -1845,8 +1887,11 @@ static int cavity_ek_claim(struct vsph_report *R, const struct chan *c,
    * each, to keep within a word's length) */
   char list[2][1024] = {"", ""};
   size_t m[2] = {0, 0};
-  int under = 0, measured = 0; /* runs past 1 s, and those below */
+  int under = 0, measured = 0;              /* runs past 1 s, and those below */
+  int e_seen = 0, d_seen = 0, at_paper = 0; /* of those: E's, D's, and
+                                               those at the paper's 50 x 50 */
   double lo = INFINITY, hi = -INFINITY, peak = -INFINITY;
+  double t_lo = INFINITY, t_hi = -INFINITY; /* their last times */
   for (size_t k = 0; k < n; k++) {
     const struct vsph_jobs_run *r = &c->cav[q[k]];
     int below = 1, seen = 0;
@@ -1862,6 +1907,10 @@ static int cavity_ek_claim(struct vsph_report *R, const struct chan *c,
                          vsph_fvref_cavity_at(fv, t);
     under += seen && below;
     measured += seen;
+    e_seen |= seen && (q[k] == CAV_E1000 || q[k] == CAV_E1000_50);
+    d_seen |= seen && q[k] == CAV_P000_1000;
+    at_paper += seen && CAV[q[k]].res == CAV_PAPER_RES;
+    if (seen) t_lo = fmin(t_lo, t), t_hi = fmax(t_hi, t);
     if (seen && isfinite(ratio)) {
       lo = fmin(lo, ratio);
       hi = fmax(hi, ratio);
@@ -1886,6 +1935,25 @@ static int cavity_ek_claim(struct vsph_report *R, const struct chan *c,
   vsph_claim_num(v, "n", (double)n);
   vsph_claim_num(v, "lo", lo);
   vsph_claim_num(v, "hi", hi);
+  vsph_claim_num(v, "e_seen", e_seen);
+  vsph_claim_num(v, "d_seen", d_seen);
+  if (at_paper == 0)
+    vsph_claim_str(v, "at_paper", "no measured run");
+  else if (at_paper == 1)
+    vsph_claim_str(v, "at_paper", "one measured run");
+  else
+    vsph_claim_str(v, "at_paper", "%d measured runs", at_paper);
+  /* the measured runs' last times, as the list prints them (one figure
+   * where both ends print alike) */
+  char t0[32], t1[32];
+  snprintf(t0, sizeof t0, "%.3g", t_lo);
+  snprintf(t1, sizeof t1, "%.3g", t_hi);
+  if (!measured)
+    vsph_claim_str(v, "hist", "-");
+  else if (!strcmp(t0, t1))
+    vsph_claim_str(v, "hist", "%s", t0);
+  else
+    vsph_claim_str(v, "hist", "%s-%s", t0, t1);
   return vsph_report_doc_grade(R, "claims/channel.cavity_ek", v);
 }
 
