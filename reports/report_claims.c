@@ -1080,10 +1080,11 @@ static void wave_common(const struct vsph_report *R, const struct wave *w,
 }
 
 /* Form @p f's words in the convergence claim: its losses rung by rung
- * ("loss_mgf"), and what its row of the verdict's list says after the
- * order rule's outcome (which the block's tests name), "notes_mgf": the
- * damping's own successive differences where all rungs ended (beyond the
- * damping figure's noise), and its stability where marginal. */
+ * ("loss_mgf"), the damping's successive differences ("dloss1_mgf",
+ * "dloss2_mgf": NaN unless both were measured, so that the block's words
+ * say nothing of the damping there), and what its row of the verdict's
+ * list says after the block's words, "notes_mgf": those differences where
+ * measured, and its stability where marginal. */
 static void wave_form_words(struct vsph_claim_vals *v, const struct wave *w,
                             int f) {
   double q[VSPH_REPORT_LADDER]; /* the ladder's own losses, NaN: stopped */
@@ -1100,18 +1101,13 @@ static void wave_form_words(struct vsph_claim_vals *v, const struct wave *w,
   snprintf(key, sizeof key, "loss_%s", vsph_viscous_name(f));
   vsph_claim_str(v, key, "%s", buf);
   const double d1 = fabs(q[1] - q[0]), d2 = fabs(q[2] - q[1]);
+  const int both = isfinite(d1) && isfinite(d2);
+  num_form(v, "dloss1", f, both ? d1 : (double)NAN);
+  num_form(v, "dloss2", f, both ? d2 : (double)NAN);
   m = 0;
   buf[0] = '\0';
-  if (isfinite(d1) && isfinite(d2))
-    append(buf, sizeof buf, &m,
-           d1 <= w->noise && d2 <= w->noise
-               ? ", its damping the same within the noise (differences "
-                 "%.1e, then %.1e)"
-           : d2 > d1 ? ", its damping moving apart with resolution "
-                       "(differences %.1e, then %.1e)"
-                     : ", its damping closing in (differences %.1e, then "
-                       "%.1e)",
-           d1, d2);
+  if (both)
+    append(buf, sizeof buf, &m, " (differences %.1e, then %.1e)", d1, d2);
   if (!w->holds[f])
     append(buf, sizeof buf, &m, " (its stability marginal:%s)", w->marg[f]);
   snprintf(key, sizeof key, "notes_%s", vsph_viscous_name(f));
@@ -1125,6 +1121,7 @@ static int wave_linear(struct vsph_report *R, const struct wave *w,
                        struct vsph_claim_vals *v) {
   wave_common(R, w, v);
   vsph_claim_num(v, "rem", w->lr->self[MGF].remainder);
+  vsph_claim_num(v, "noise", w->noise);
   for (int f = 0; f < NFORM; f++) {
     const struct vsph_series_selfconv *sv = &w->lr->self[f];
     num_form(v, "d0", f, sv->dmax[0]);
