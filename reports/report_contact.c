@@ -762,6 +762,8 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
   vsph_claim_num(v, "bs", coef(&cr->r[C_BS]));
   vsph_claim_num(v, "klw", nb->klat_w);
   vsph_claim_num(v, "klb", nb->klat_b);
+  vsph_claim_num(v, "ewl", w / nb->lead_w - 1.0);
+  vsph_claim_num(v, "ebl", b / nb->lead_b - 1.0);
   int st = vsph_report_doc_grade(R, "claims/contact.eta_num", v);
   double spread = 0;
   static const int MAT[3] = {C_WATER, C_AL, C_TU};
@@ -841,6 +843,13 @@ static int cyl_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
   vsph_claim_num(v, "z1", cy.ratio[CY_Z1_40]);
   vsph_claim_num(v, "p0", cy.ratio[CY_P0_40]);
   vsph_claim_num(v, "p1", cy.ratio[CY_P1_40]);
+  /* the share of the excess over theory that the correction removes */
+  vsph_claim_num(
+      v, "rem_g",
+      (cy.ratio[CY_Z0_40] - cy.ratio[CY_Z1_40]) / (cy.ratio[CY_Z0_40] - 1.0));
+  vsph_claim_num(
+      v, "rem_p",
+      (cy.ratio[CY_P0_40] - cy.ratio[CY_P1_40]) / (cy.ratio[CY_P0_40] - 1.0));
   vsph_claim_num(v, "fine", full ? cy.ratio[CY_Z0_80] : cy.ratio[CY_Z0_60]);
   vsph_claim_str(v, "fine_res", "%d", full ? 40 : 30);
   vsph_claim_str(v, "g40", "%s", "");
