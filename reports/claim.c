@@ -520,7 +520,7 @@ static int word_text(const char *name, const struct block *b, const int *holds,
  * NULL only its placeholders' form is checked. */
 static int fill(const char *name, const char *t, const struct block *b,
                 const int *holds, const struct vsph_claim_vals *v, char *out,
-                size_t len) {
+                size_t len, int words) {
   size_t m = 0;
   for (const char *s = t; *s;) {
     const char *open = strstr(s, "{{");
@@ -581,13 +581,16 @@ static int fill(const char *name, const char *t, const struct block *b,
                   name, ph, fmt);
     }
     const char *wt = NULL;
-    const int wr = word_text(name, b, holds, ph, &wt);
+    const int wr = words ? word_text(name, b, holds, ph, &wt) : 0;
     if (wr < 0) return VSPH_EINVAL;
     if (wr == 1) {
       if (fmt || scale)
         VSPH_FAIL(VSPH_EINVAL, "claim %s: {{%s}} is a word: no format", name,
                   ph);
-      snprintf(piece, sizeof piece, "%s", wt);
+      /* a word's text may hold measures and words of the part, not words
+       * of the block (no word is made of words) */
+      const int st = fill(name, wt, b, holds, v, piece, sizeof piece, 0);
+      if (st) return st;
     } else if (!v) {
       piece[0] = '\0';
     } else {
@@ -646,11 +649,18 @@ static int grade(const char *name, const struct block *b,
                 name, b->test[k].name, b->test[k].kind, b->test[k].arg[1]);
     if (nan && strcmp(b->test[k].kind, "finite")) holds[k] = UNKNOWN;
   }
-  for (int k = 0; k < b->nwords; k++) /* every word line well formed */
+  for (int k = 0; k < b->nwords; k++) { /* every word line well formed */
     if (strcmp(b->wcond[k], "else") && eval(b->wcond[k], b, holds) < 0)
       VSPH_FAIL(VSPH_EINVAL,
                 "claim %s: word %s: '%s' is not an expression of its tests",
                 name, b->wname[k], b->wcond[k]);
+    char scratch[700]; /* the lint: each line's placeholders */
+    if (!v) {
+      const int st =
+          fill(name, b->wtext[k], b, holds, v, scratch, sizeof scratch, 0);
+      if (st) return st;
+    }
+  }
   int pick = -1;
   for (int k = 0; k < b->nifs; k++) {
     const int r = b->cond[k][0] ? eval(b->cond[k], b, holds) : 1;
@@ -671,16 +681,17 @@ static int grade(const char *name, const struct block *b,
   else if (snprintf(claim, sizeof claim, "%s (%s)", b->claim, where) >=
            (int)sizeof claim)
     VSPH_FAIL(VSPH_EINVAL, "claim %s: a claim longer than its field", name);
-  int st = fill(name, claim, b, holds, v, row->claim, sizeof row->claim);
+  int st = fill(name, claim, b, holds, v, row->claim, sizeof row->claim, 1);
   if (!st)
-    st = fill(name, b->paper, b, holds, v, row->paper, sizeof row->paper);
-  if (!st) st = fill(name, b->ours, b, holds, v, row->ours, sizeof row->ours);
+    st = fill(name, b->paper, b, holds, v, row->paper, sizeof row->paper, 1);
   if (!st)
-    st = fill(name, b->setup, b, holds, v, row->setup, sizeof row->setup);
+    st = fill(name, b->ours, b, holds, v, row->ours, sizeof row->ours, 1);
+  if (!st)
+    st = fill(name, b->setup, b, holds, v, row->setup, sizeof row->setup, 1);
   for (int k = 0; k < b->nifs && !st; k++)
     if (!v || k == pick) /* the lint checks every verdict's placeholders */
       st = fill(name, b->verdict[k], b, holds, v, row->verdict,
-                sizeof row->verdict);
+                sizeof row->verdict, 1);
   /* a word filled into the verdict must not change its class */
   if (!st && v &&
       vsph_claim_class(row->verdict) != vsph_claim_class(b->verdict[pick]))

@@ -367,9 +367,10 @@ START_TEST(test_words_chosen) {
 END_TEST
 
 /* Word lines: {{NAME}} is the text of NAME's first line whose expression
- * holds for certain, else its last ('else'); a word without its 'else'
- * last, an 'else' before the last line, a malformed expression, a format
- * on a word are refused. */
+ * holds for certain, else its last ('else'), its own placeholders filled
+ * (a measure, not another word); a word without its 'else' last, an
+ * 'else' before the last line, a malformed expression, a format on a word,
+ * a word text naming a measure badly are refused. */
 START_TEST(test_word_lines) {
   static const char *const W =
       "claim: c\nwhere: w\npaper: p\nours: x {{conv}}\nsetup: none\n"
@@ -377,7 +378,7 @@ START_TEST(test_word_lines) {
       "test b: above y 1 -- a choice\n"
       "word conv: a & b => converges by both\n"
       "word conv: a | b => converges by one only\n"
-      "word conv: !a & !b => does not converge\n"
+      "word conv: !a & !b => does not converge ({{x:.1f}})\n"
       "word conv: else => not measured\n"
       "if a | b: partly: {{conv}}\nelse: differs\n";
   struct vsph_claim_vals v;
@@ -387,7 +388,7 @@ START_TEST(test_word_lines) {
     const char *ours;
   } cases[] = {
       {2, 2, "x converges by both"},     {2, 0, "x converges by one only"},
-      {0, 2, "x converges by one only"}, {0, 0, "x does not converge"},
+      {0, 2, "x converges by one only"}, {0, 0, "x does not converge (0.0)"},
       {NAN, 0, "x not measured"},        {NAN, 2, "x converges by one only"}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     vsph_claim_clear(&v);
@@ -402,7 +403,8 @@ START_TEST(test_word_lines) {
       {"word conv: a & b =>", "word conv: else =>"},
       {"word conv: a | b =>", "word conv: (a =>"},
       {"ours: x {{conv}}", "ours: x {{conv:.1f}}"},
-      {"word conv: a & b => converges by both", "word conv: a & b"}};
+      {"word conv: a & b => converges by both", "word conv: a & b"},
+      {"({{x:.1f}})", "({{x:.1d}})"}};
   for (size_t k = 0; k < sizeof BAD / sizeof BAD[0]; k++) {
     char text[2048];
     const char *at = strstr(W, BAD[k][0]);
