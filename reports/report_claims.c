@@ -28,7 +28,6 @@
 #include "../solver/scene.h"
 #include "../solver/viscous.h"
 #include "grade.h"
-#include "report.h"
 #include "report_fv.h"
 #include "report_parts.h"
 
