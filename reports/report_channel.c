@@ -1519,12 +1519,20 @@ static const char *const UNTESTED[] = {
  * end (whether disorder is VISC-02's cause is not shown). */
 static int visc02_claim(struct vsph_report *R, const struct chan *c,
                         struct vsph_claim_vals *v) {
+  vsph_claim_clear(v);
+  vsph_claim_num(v, "full", R->runs.full);
+  if (!R->runs.full) { /* not planned: nothing measured */
+    static const char *const NONE[] = {"ok2", "early2", "last1", "last3",
+                                       "last4"};
+    for (size_t k = 0; k < sizeof NONE / sizeof NONE[0]; k++)
+      vsph_claim_num(v, NONE[k], (double)NAN);
+    return vsph_report_doc_grade(R, "claims/channel.visc02", v);
+  }
   const struct vsph_jobs_run *r[4] = {&c->cav[CAV_V01_40], &c->cav[CAV_V02_40],
                                       &c->cav[CAV_V03_40], &c->cav[CAV_V04_40]};
   const double t_end = CAV[CAV_V02_40].t_end;
   double t[4];
   int coarse = 0; /* the forms that run to their end at 20 x 20 */
-  vsph_claim_clear(v);
   for (int f = 0; f < 4; f++) {
     char s[256], key[4];
     t[f] = r[f]->ok ? t_end : r[f]->t_unstable;
@@ -1548,12 +1556,10 @@ static int untested_claims(struct vsph_report *R, const struct chan *c,
   int st = VSPH_OK;
   for (size_t k = 0; k < sizeof UNTESTED / sizeof UNTESTED[0] && !st; k++) {
     char name[64];
-    const int visc02 = !strcmp(UNTESTED[k], "visc02");
-    snprintf(name, sizeof name, "claims/channel.%s%s", UNTESTED[k],
-             visc02 ? "_untested" : "");
+    snprintf(name, sizeof name, "claims/channel.%s", UNTESTED[k]);
     vsph_claim_clear(v);
-    st = visc02 && R->runs.full ? visc02_claim(R, c, v)
-                                : vsph_report_doc_grade(R, name, v);
+    st = !strcmp(UNTESTED[k], "visc02") ? visc02_claim(R, c, v)
+                                        : vsph_report_doc_grade(R, name, v);
   }
   return st;
 }
