@@ -518,18 +518,26 @@ static int word_text(const char *name, const struct block *b, const int *holds,
 /* Template @p t filled from @p v into @p out (@p len bytes), its
  * conditions read on the tests' results @p holds of block @p b; with @p v
  * NULL only its placeholders' form is checked. */
+/* @p n bytes of @p text after the *m of @p out (@p len bytes in all), or
+ * a refusal when they do not fit. */
+static int put(const char *name, char *out, size_t len, size_t *m,
+               const char *text, size_t n) {
+  if (*m + n >= len)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: a text longer than its field (%zu)", name,
+              len - 1);
+  memcpy(out + *m, text, n);
+  *m += n;
+  return VSPH_OK;
+}
+
 static int fill(const char *name, const char *t, const struct block *b,
                 const int *holds, const struct vsph_claim_vals *v, char *out,
                 size_t len, int words) {
   size_t m = 0;
   for (const char *s = t; *s;) {
     const char *open = strstr(s, "{{");
-    const size_t lit = open ? (size_t)(open - s) : strlen(s);
-    if (m + lit >= len)
-      VSPH_FAIL(VSPH_EINVAL, "claim %s: a text longer than its field (%zu)",
-                name, len - 1);
-    memcpy(out + m, s, lit);
-    m += lit;
+    int st = put(name, out, len, &m, s, open ? (size_t)(open - s) : strlen(s));
+    if (st) return st;
     if (!open) break;
     const char *close = strstr(open + 2, "}}");
     char ph[512];
@@ -540,14 +548,9 @@ static int fill(const char *name, const char *t, const struct block *b,
     s = close + 2;
     char piece[700];
     if (ph[0] == '?') { /* a text the tests choose */
-      const int st = choose(name, ph, b, holds, piece, sizeof piece);
-      if (st) return st;
-      const size_t pn = strlen(piece);
-      if (m + pn >= len)
-        VSPH_FAIL(VSPH_EINVAL, "claim %s: a text longer than its field (%zu)",
-                  name, len - 1);
-      memcpy(out + m, piece, pn);
-      m += pn;
+      if ((st = choose(name, ph, b, holds, piece, sizeof piece)) ||
+          (st = put(name, out, len, &m, piece, strlen(piece))))
+        return st;
       continue;
     }
     /* name[*100][:FMT] */
@@ -589,8 +592,7 @@ static int fill(const char *name, const char *t, const struct block *b,
                   ph);
       /* a word's text may hold measures and words of the part, not words
        * of the block (no word is made of words) */
-      const int st = fill(name, wt, b, holds, v, piece, sizeof piece, 0);
-      if (st) return st;
+      if ((st = fill(name, wt, b, holds, v, piece, sizeof piece, 0))) return st;
     } else if (!v) {
       piece[0] = '\0';
     } else {
@@ -613,12 +615,7 @@ static int fill(const char *name, const char *t, const struct block *b,
 #pragma GCC diagnostic pop
       }
     }
-    const size_t pn = strlen(piece);
-    if (m + pn >= len)
-      VSPH_FAIL(VSPH_EINVAL, "claim %s: a text longer than its field (%zu)",
-                name, len - 1);
-    memcpy(out + m, piece, pn);
-    m += pn;
+    if ((st = put(name, out, len, &m, piece, strlen(piece)))) return st;
   }
   out[m] = '\0';
   return VSPH_OK;
