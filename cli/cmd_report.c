@@ -306,70 +306,58 @@ static int parse(struct opts *o, int argc, char **argv) {
 
 /* The modes and the options that go with them. */
 static int check_modes(const struct opts *o) {
-  const char *partition = o->partition;
-  const char *limit = o->limit;
-  const int plan = o->plan;
-  const int slurm = o->slurm;
-  const int assemble = o->assemble;
-  const size_t jobs = o->jobs;
-  const size_t threads = o->threads;
-  const int pool = o->pool;
-  const int own_threads = o->own_threads;
-  if (plan + slurm + assemble + pool > 1)
+  if (o->plan + o->slurm + o->assemble + o->pool > 1)
     return vsph_args_fail(CMD,
                           "--plan, --jobs, --slurm and --assemble exclude one "
                           "another");
-  if (pool && (jobs < 1 || jobs > 256))
-    return vsph_args_fail(CMD, "--jobs must lie in 1-256, got %zu", jobs);
-  if (own_threads && (threads < 1 || threads > 1024))
+  if (o->pool && (o->jobs < 1 || o->jobs > 256))
+    return vsph_args_fail(CMD, "--jobs must lie in 1-256, got %zu", o->jobs);
+  if (o->own_threads && (o->threads < 1 || o->threads > 1024))
     return vsph_args_fail(CMD, "--threads must lie in 1-1024, got %zu",
-                          threads);
-  if (own_threads && !pool && !slurm)
+                          o->threads);
+  if (o->own_threads && !o->pool && !o->slurm)
     return vsph_args_fail(CMD, "--threads needs --jobs or --slurm");
-  if ((partition || limit) && !slurm)
+  if ((o->partition || o->limit) && !o->slurm)
     return vsph_args_fail(CMD, "--%s needs --slurm",
-                          partition ? "partition" : "time");
-  if (partition && (strlen(partition) > 64 ||
-                    !only_of(partition,
-                             "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstu"
-                             "vwxyz0123456789_.-,")))
+                          o->partition ? "partition" : "time");
+  if (o->partition &&
+      (strlen(o->partition) > 64 ||
+       !only_of(o->partition,
+                "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstu"
+                "vwxyz0123456789_.-,")))
     return vsph_args_fail(CMD, "--partition '%.64s' is not a partition name",
-                          partition);
-  if (limit && (strlen(limit) > 16 || !only_of(limit, "0123456789:-") ||
-                !strchr("0123456789", limit[strlen(limit) - 1])))
+                          o->partition);
+  if (o->limit &&
+      (strlen(o->limit) > 16 || !only_of(o->limit, "0123456789:-") ||
+       !strchr("0123456789", o->limit[strlen(o->limit) - 1])))
     return vsph_args_fail(CMD,
                           "--time '%.16s' is not a Slurm time limit (MM, "
                           "HH:MM:SS or D-HH:MM:SS)",
-                          limit);
+                          o->limit);
   return 0;
 }
 
 /* --budget into seconds (o->budget_s). */
 static int check_budget(struct opts *o) {
-  const char *budget = o->budget;
-  const int plan = o->plan;
-  const int slurm = o->slurm;
-  const int assemble = o->assemble;
-  if (budget) {
+  if (o->budget) {
     char *end = NULL;
     errno = 0;
-    const double v = strtod(budget, &end);
+    const double v = strtod(o->budget, &end);
     const double unit = !strcmp(end, "") || !strcmp(end, "s") ? 1.0
                         : !strcmp(end, "m")                   ? 60.0
                         : !strcmp(end, "h")                   ? 3600.0
                                                               : -1.0;
     o->budget_s = v * unit;
-    const double budget_s = o->budget_s;
     /* digits as people write them: no sign, blank, hex, inf or nan */
-    const size_t plain = strspn(budget, "0123456789.eE+-");
-    if (end == budget || errno || unit < 0.0 || !(budget_s >= 1.0) ||
-        !strchr("0123456789.", budget[0]) || budget + plain < end ||
-        budget_s > 30 * 86400.0)
+    const size_t plain = strspn(o->budget, "0123456789.eE+-");
+    if (end == o->budget || errno || unit < 0.0 || !(o->budget_s >= 1.0) ||
+        !strchr("0123456789.", o->budget[0]) || o->budget + plain < end ||
+        o->budget_s > 30 * 86400.0)
       return vsph_args_fail(CMD,
                             "--budget '%.32s' is not a time from 1 s to 30 "
                             "days (e.g. 90s, 150m, 2.5h)",
-                            budget);
-    if (plan || slurm || assemble)
+                            o->budget);
+    if (o->plan || o->slurm || o->assemble)
       return vsph_args_fail(CMD,
                             "--budget runs the runs here: not with --plan, "
                             "--slurm or --assemble");
@@ -379,50 +367,42 @@ static int check_budget(struct opts *o) {
 
 /* The run archives read, and the finite-volume references (o->fv_dir). */
 static int check_archives(struct opts *o) {
-  const char *dir = o->dir;
-  const char *budget = o->budget;
-  const char *skip = o->skip;
-  const char *beside = o->beside;
-  const char *from = o->from;
-  const char *fv = o->fv;
-  const int full = o->full;
-  const int plan = o->plan;
-  const int slurm = o->slurm;
-  const int assemble = o->assemble;
-  if (skip) {
-    if (!budget) return vsph_args_fail(CMD, "--skip-archived needs --budget");
-    int bad = archive_input("--skip-archived", skip, dir);
+  if (o->skip) {
+    if (!o->budget)
+      return vsph_args_fail(CMD, "--skip-archived needs --budget");
+    int bad = archive_input("--skip-archived", o->skip, o->dir);
     if (!bad) bad = judge_inputs();
     if (bad) return bad;
   }
-  if (from) {
-    if (full ? !assemble : plan || budget || slurm)
+  if (o->from) {
+    if (o->full ? !o->assemble : o->plan || o->budget || o->slurm)
       return vsph_args_fail(CMD,
                             "--from-archive reads runs from a run archive: "
                             "with --full only when assembling (--assemble); "
                             "a quick report not with --plan, --budget or "
                             "--slurm");
-    int bad = archive_input("--from-archive", from, dir);
+    int bad = archive_input("--from-archive", o->from, o->dir);
     if (!bad) bad = judge_inputs();
     if (bad) return bad;
   }
-  if (beside) {
-    if (full || plan || budget || slurm)
+  if (o->beside) {
+    if (o->full || o->plan || o->budget || o->slurm)
       return vsph_args_fail(CMD,
                             "--beside sets the FULL archive beside a quick "
                             "report: not with --full, --plan, --budget or "
                             "--slurm");
-    int bad = archive_input("--beside", beside, dir);
+    int bad = archive_input("--beside", o->beside, o->dir);
     if (!bad) bad = judge_inputs();
     if (bad) return bad;
   }
   /* the finite-volume references: a folder, or none */
   struct stat fs;
-  if (fv && strcmp(fv, "none")) {
-    if (!*fv || strlen(fv) > 400 || stat(fv, &fs) != 0 || !S_ISDIR(fs.st_mode))
-      return vsph_args_fail(CMD, "--fv: '%.400s' is not a folder", fv);
-    o->fv_dir = fv;
-  } else if (!fv && stat("reference/data", &fs) == 0 && S_ISDIR(fs.st_mode))
+  if (o->fv && strcmp(o->fv, "none")) {
+    if (!*o->fv || strlen(o->fv) > 400 || stat(o->fv, &fs) != 0 ||
+        !S_ISDIR(fs.st_mode))
+      return vsph_args_fail(CMD, "--fv: '%.400s' is not a folder", o->fv);
+    o->fv_dir = o->fv;
+  } else if (!o->fv && stat("reference/data", &fs) == 0 && S_ISDIR(fs.st_mode))
     o->fv_dir = "reference/data";
   return 0;
 }
@@ -430,23 +410,10 @@ static int check_archives(struct opts *o) {
 /* --archive: the sealed runs of the output folder into the run archive,
  * then its summary; nothing is run. */
 static int archive_main(const struct opts *o) {
-  const char *dir = o->dir;
-  const char *only = o->only;
-  const char *budget = o->budget;
-  const char *archive = o->archive;
-  const char *skip = o->skip;
-  const char *beside = o->beside;
-  const char *from = o->from;
-  const char *fv = o->fv;
-  const int full = o->full;
-  const int plan = o->plan;
-  const int slurm = o->slurm;
-  const int assemble = o->assemble;
-  const int pool = o->pool;
-  if (fv || beside || skip || from || plan || slurm || assemble || pool ||
-      budget || only || full)
+  if (o->fv || o->beside || o->skip || o->from || o->plan || o->slurm ||
+      o->assemble || o->pool || o->budget || o->only || o->full)
     return vsph_args_fail(CMD, "--archive runs nothing: it takes --out alone");
-  if (!*archive || strlen(archive) > 400)
+  if (!*o->archive || strlen(o->archive) > 400)
     return vsph_args_fail(CMD,
                           "--archive: a folder name of 1-400 "
                           "characters");
@@ -464,8 +431,8 @@ static int archive_main(const struct opts *o) {
   struct vsph_jobs full_plan; /* the FULL plan: the frames and the judge */
   memset(&full_plan, 0, sizeof full_plan);
   struct vsph_archive_counts n;
-  int st = vsph_report_plan_jobs(dir, 1, &full_plan);
-  if (!st) st = store(dir, &full_plan, archive, commit, &n);
+  int st = vsph_report_plan_jobs(o->dir, 1, &full_plan);
+  if (!st) st = store(o->dir, &full_plan, o->archive, commit, &n);
   if (st) {
     vsph_jobs_plan_free(&full_plan);
     return vsph_args_status(CMD, st);
@@ -475,8 +442,8 @@ static int archive_main(const struct opts *o) {
           "%zu left out: unended, damaged, oddly named or older than "
           "their entries, each said "
           "above)\n",
-          n.stored, dir, archive, n.kept, n.skipped);
-  st = summarise(&full_plan, archive, commit);
+          n.stored, o->dir, o->archive, n.kept, n.skipped);
+  st = summarise(&full_plan, o->archive, commit);
   vsph_jobs_plan_free(&full_plan);
   if (st) return vsph_args_status(CMD, st);
   return vsph_args_finish(CMD, 0);
@@ -523,21 +490,6 @@ static int only_parts(const char *only, struct vsph_report_props *rp) {
 
 /* The report itself, as the options say; its exit status. */
 static int run_report(const struct opts *o, struct vsph_report_props *rp) {
-  const char *only = o->only;
-  const char *partition = o->partition;
-  const char *limit = o->limit;
-  const char *skip = o->skip;
-  const char *beside = o->beside;
-  const char *from = o->from;
-  const int plan = o->plan;
-  const int slurm = o->slurm;
-  const int assemble = o->assemble;
-  const size_t jobs = o->jobs;
-  const size_t threads = o->threads;
-  const int pool = o->pool;
-  const int own_threads = o->own_threads;
-  const double budget_s = o->budget_s;
-  const char *fv_dir = o->fv_dir;
   /* vsph itself, for the child processes and the Slurm scripts */
   char exe[PATH_MAX];
   const ssize_t ne = readlink("/proc/self/exe", exe, sizeof exe - 1);
@@ -547,22 +499,22 @@ static int run_report(const struct opts *o, struct vsph_report_props *rp) {
   }
   exe[ne] = '\0';
   rp->exe = exe;
-  rp->mode = plan       ? VSPH_REPORT_PLAN
-             : pool     ? VSPH_REPORT_POOL
-             : slurm    ? VSPH_REPORT_SLURM
-             : assemble ? VSPH_REPORT_ASSEMBLE
-                        : VSPH_REPORT_LOCAL;
+  rp->mode = o->plan       ? VSPH_REPORT_PLAN
+             : o->pool     ? VSPH_REPORT_POOL
+             : o->slurm    ? VSPH_REPORT_SLURM
+             : o->assemble ? VSPH_REPORT_ASSEMBLE
+                           : VSPH_REPORT_LOCAL;
   rp->plan_out = stdout;
-  rp->jobs = pool ? jobs : 0;
+  rp->jobs = o->pool ? o->jobs : 0;
   const size_t cores = (size_t)omp_get_num_procs();
-  rp->threads = own_threads ? threads
-                : slurm     ? 1
-                : pool      ? (cores / jobs > 0 ? cores / jobs : 1)
-                            : 1;
-  rp->partition = partition;
-  rp->time = limit;
-  rp->only = only;
-  rp->budget_s = budget_s;
+  rp->threads = o->own_threads ? o->threads
+                : o->slurm     ? 1
+                : o->pool      ? (cores / o->jobs > 0 ? cores / o->jobs : 1)
+                               : 1;
+  rp->partition = o->partition;
+  rp->time = o->limit;
+  rp->only = o->only;
+  rp->budget_s = o->budget_s;
   struct stat bs;
   const char *history = getenv("VSPH_ARCHIVE_HISTORY");
   const struct vsph_archive_judge judge = {
@@ -571,22 +523,22 @@ static int run_report(const struct opts *o, struct vsph_report_props *rp) {
                       ? "reports/baseline.csv"
                       : NULL,
       .commit = NULL};
-  rp->skip_archive = skip;
-  rp->from_archive = from;
-  rp->beside = beside;
+  rp->skip_archive = o->skip;
+  rp->from_archive = o->from;
+  rp->beside = o->beside;
   rp->judge = &judge;
-  rp->fv = fv_dir;
+  rp->fv = o->fv_dir;
   /* SIGINT/SIGTERM: the runs in progress stop at a checkpoint, uncached */
   const volatile sig_atomic_t *stop = rp->stop = vsph_args_catch_stop();
   /* but for the runs (which stop after a checkpoint), a signal ends the
    * report at once: its parts and files are written whole or not at all,
    * and its seal is written last */
   rp->writing = vsph_args_quick_stop();
-  if (budget_s > 0.0) { /* beside the user's own work: lowest priority */
+  if (o->budget_s > 0.0) { /* beside the user's own work: lowest priority */
     if (setpriority(PRIO_PROCESS, 0, 19) != 0) /* and its children's */
       fprintf(stderr, "vsph report: cannot lower the priority: %s\n",
               strerror(errno));
-    if (vsph_args_stop_after(budget_s)) {
+    if (vsph_args_stop_after(o->budget_s)) {
       fprintf(stderr, "vsph report: cannot set the budget's clock: %s\n",
               strerror(errno));
       return vsph_args_status(CMD, VSPH_EIO);
@@ -598,7 +550,7 @@ static int run_report(const struct opts *o, struct vsph_report_props *rp) {
             "vsph report: the budget of %.0f s is spent; the runs in "
             "progress stopped at a checkpoint, and the next --budget goes on "
             "from there\n",
-            budget_s);
+            o->budget_s);
     return vsph_args_finish(CMD, 0);
   }
   if (st == VSPH_EINTR) {
