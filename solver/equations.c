@@ -63,9 +63,10 @@ int vsph_equations_corr_resolve(const char *name, int *corr) {
             name);
 }
 
-void vsph_equations_body_force(const struct vsph_equations_props *ep,
-                               const double x[3], double g[3]) {
-  if (!ep || !x || !g) return;
+/* The body force at x (the public function's, without its argument check:
+ * the loops call it per particle). */
+static inline void body_force(const struct vsph_equations_props *ep,
+                              const double x[3], double g[3]) {
   g[0] = g[1] = g[2] = 0.0;
   const int d = ep->visc.dim;
   if (ep->body == VSPH_EQUATIONS_BODY_RADIAL) {
@@ -75,6 +76,12 @@ void vsph_equations_body_force(const struct vsph_equations_props *ep,
   } else if (ep->body == VSPH_EQUATIONS_BODY_UNIFORM) {
     g[0] = ep->f;
   }
+}
+
+void vsph_equations_body_force(const struct vsph_equations_props *ep,
+                               const double x[3], double g[3]) {
+  if (!ep || !x || !g) return;
+  body_force(ep, x, g);
 }
 
 double vsph_equations_potential(const struct vsph_equations_props *ep,
@@ -304,7 +311,7 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
    * the pressure terms, ghosts included; delta-SPH moves rho, not e */
   if (rc->gas) out->de[i] = pi * cont * rinv;
   double g[3];
-  vsph_equations_body_force(rc->ep, it.xi, g);
+  body_force(rc->ep, it.xi, g);
   out->drho[i] = rhoi * cont + rc->dhc * dsum;
   for (int k = 0; k < dim; k++) out->acc[k][i] = rinv * (ap[k] + av[k]) + g[k];
   if (tvf) {
@@ -385,7 +392,7 @@ VSPH_CONSTS_SPECIALISE size_t contact_one(
   const double ap[3] = {ap0, ap1, ap2}, av[3] = {av0, av1, av2};
   const double rinv = rc->fixed[mi] ? 0.0 : 1.0 / rhoi;
   double gb[3] = {0, 0, 0};
-  if (!rc->fixed[mi]) vsph_equations_body_force(rc->ep, it.xi, gb);
+  if (!rc->fixed[mi]) body_force(rc->ep, it.xi, gb);
   out->drho[i] = rhoi * cont;
   for (int k = 0; k < dim; k++) out->acc[k][i] = rinv * ap[k] + gb[k];
   if (rc->parts) {
@@ -898,9 +905,9 @@ static inline void finish_one(const struct rhs_ctx *rc,
   const double rhoi = p->rho[i], rinv = 1.0 / rhoi;
   const double cont = s[SW_CONT(dim)], dsum = s[SW_DELTA(dim)];
   if (rc->gas) out->de[i] = p->p[i] * cont * rinv;
-  double x[3] = {0, 0, 0}, g[3] = {0, 0, 0};
+  double x[3] = {0, 0, 0}, g[3];
   for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
-  vsph_equations_body_force(rc->ep, x, g);
+  body_force(rc->ep, x, g);
   out->drho[i] = rhoi * cont + rc->dhc * dsum;
   for (int a = 0; a < dim; a++) out->acc[a][i] = rinv * s[SW_F + a] + g[a];
   if (rc->parts) {
@@ -1598,7 +1605,7 @@ void vsph_equations_budget_compute(const struct vsph_equations_props *ep,
     const double m = p->m[i], rho = p->rho[i];
     double x[3] = {0, 0, 0}, g[3];
     for (int k = 0; k < d; k++) x[k] = p->pos[k][i];
-    vsph_equations_body_force(ep, x, g);
+    body_force(ep, x, g);
     for (int k = 0; k < d; k++) {
       const double u = p->vel[k][i];
       b->dEk += m * u * out->acc[k][i];
