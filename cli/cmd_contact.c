@@ -16,6 +16,7 @@
 #include "../common/status.h"
 #include "../io/files.h"
 #include "../kernels/kernel.h"
+#include "../runs/jobs.h"
 #include "../runs/sheartest.h"
 #include "../solver/materials.h"
 #include "../solver/run.h"
@@ -248,8 +249,8 @@ int vsph_cmd_contact_main(int argc, char **argv) {
     }
   }
   /* the measurement's defaults (the paper's inviscid run), into the
-   * parameters as given: the report's jobs add the same */
-  if (vsph_contact_defaults(prm)) {
+   * parameters as given, by the one function the report's jobs use */
+  if (vsph_jobs_defaults(VSPH_JOBS_SHEAR, NULL, prm)) {
     vsph_params_free(prm);
     return vsph_args_status(CMD, VSPH_ENOMEM);
   }

@@ -12,6 +12,7 @@
 #include "../common/params.h"
 #include "../common/shell.h"
 #include "../common/status.h"
+#include "../runs/jobs.h"
 #include "../runs/rundir.h"
 #include "../solver/run.h"
 #include "../solver/scene.h"
@@ -113,8 +114,8 @@ int vsph_cmd_run_main(int argc, char **argv) {
     return rc;
   }
   /* the scene's own Solver defaults (vsph scenes lists them), into the
-   * parameters as given: the report's jobs add the same */
-  if (vsph_scene_solver_defaults(vsph_scene_find(argv[1]), prm)) {
+   * parameters as given, by the one function the report's jobs use */
+  if (vsph_jobs_defaults(VSPH_JOBS_RUN, argv[1], prm)) {
     vsph_params_free(prm);
     return vsph_args_status(CMD, VSPH_ENOMEM);
   }

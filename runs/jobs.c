@@ -25,6 +25,16 @@
 
 /* ----------------------------------------------------------------- jobs */
 
+int vsph_jobs_defaults(int kind, const char *scene, struct vsph_params *prm) {
+  if (!prm) VSPH_FAIL(VSPH_EINVAL, "vsph_jobs_defaults: a NULL argument");
+  if (kind == VSPH_JOBS_SHEAR) return vsph_contact_defaults(prm);
+  const struct vsph_scene_type *t = scene ? vsph_scene_find(scene) : NULL;
+  if (kind != VSPH_JOBS_RUN || !t)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_jobs_defaults: no job of kind %d on scene '%s'",
+              kind, scene ? scene : "(null)");
+  return vsph_scene_solver_defaults(t, prm);
+}
+
 /* The parameters of @p j's settings, as given. */
 static int params_of(const struct vsph_jobs_job *j, struct vsph_params **out) {
   struct vsph_params *prm = vsph_params_alloc();
@@ -32,13 +42,9 @@ static int params_of(const struct vsph_jobs_job *j, struct vsph_params **out) {
   int st = VSPH_OK;
   for (size_t k = 0; k < j->nset && !st; k++)
     st = vsph_params_assign(prm, j->set[k]);
-  /* the defaults the job's command adds (vsph run: the scene's Solver
-   * defaults; vsph contact: the measurement's), so that its key here is
-   * the one the command writes */
-  if (!st && j->kind == VSPH_JOBS_SHEAR)
-    st = vsph_contact_defaults(prm);
-  else if (!st && vsph_scene_find(j->scene))
-    st = vsph_scene_solver_defaults(vsph_scene_find(j->scene), prm);
+  /* the defaults the job's command adds, so that its key here is the one
+   * the command writes */
+  if (!st) st = vsph_jobs_defaults(j->kind, j->scene, prm);
   if (st) {
     vsph_params_free(prm);
     return st;

@@ -24,6 +24,17 @@ struct vsph_csv;
  * of section 12 (`vsph contact`). */
 enum { VSPH_JOBS_RUN = 0, VSPH_JOBS_SHEAR };
 
+/** @brief Add to @p prm, as given on a command line, the defaults the
+ *  command of a job of @p kind adds on @p scene (RUN: the scene's own
+ *  Solver defaults, vsph_scene_solver_defaults; SHEAR: the measurement's,
+ *  vsph_contact_defaults; @p scene is then not read): the one place a
+ *  scene's defaults are applied, by `vsph run`, `vsph contact` and a
+ *  report's jobs alike, so that a run's key is the same whichever made it.
+ *  @return VSPH_OK; VSPH_EINVAL (NULL @p prm, an unknown scene or kind);
+ *  VSPH_ENOMEM. */
+struct vsph_params;
+int vsph_jobs_defaults(int kind, const char *scene, struct vsph_params *prm);
+
 /* Settings a job holds at most. */
 #define VSPH_JOBS_NSET 20
 

@@ -81,6 +81,42 @@ END_TEST
 /* The plan's command, run by a shell, makes the folder the report makes in
  * its own process: the same key.txt and, bit for bit, the same energy.csv
  * (a run's numbers do not depend on its thread count). */
+/* The one place a command's defaults are applied (vsph_jobs_defaults):
+ * a run on the cylinders takes the scene's own contact SPH settings
+ * (solver/scenes/cylinders.c) unless the user named a formulation; a
+ * shear test takes the shear scene's and the inviscid run's
+ * (analysis/contact.c); an unknown scene or kind is refused. */
+START_TEST(test_defaults_applied_once) {
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_ptr_nonnull(prm);
+  const char *v;
+  ck_assert_int_eq(vsph_jobs_defaults(VSPH_JOBS_RUN, "cylinders", prm), 0);
+  vsph_params_get_string_or(prm, "Solver:scheme", "", &v);
+  ck_assert_str_eq(v, "contact");
+  vsph_params_get_string_or(prm, "Solver:kernel", "", &v);
+  ck_assert_str_eq(v, "wendland2");
+  vsph_params_free(prm);
+  /* a formulation given: none of the scene's Solver defaults */
+  prm = vsph_params_alloc();
+  ck_assert_int_eq(vsph_params_assign(prm, "Solver:visc=mgf"), 0);
+  ck_assert_int_eq(vsph_jobs_defaults(VSPH_JOBS_RUN, "cylinders", prm), 0);
+  ck_assert_int_eq(vsph_params_given(prm, "Solver:scheme"), 0);
+  vsph_params_free(prm);
+  prm = vsph_params_alloc();
+  ck_assert_int_eq(vsph_jobs_defaults(VSPH_JOBS_SHEAR, NULL, prm), 0);
+  vsph_params_get_string_or(prm, "Solver:scheme", "", &v);
+  ck_assert_str_eq(v, "contact");
+  vsph_params_get_string_or(prm, "Scene:viscous", "", &v);
+  ck_assert_str_eq(v, "0");
+  ck_assert_int_eq(vsph_jobs_defaults(VSPH_JOBS_RUN, "no-such-scene", prm),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(vsph_jobs_defaults(7, "cavity", prm), VSPH_EINVAL);
+  ck_assert_int_eq(vsph_jobs_defaults(VSPH_JOBS_RUN, "cavity", NULL),
+                   VSPH_EINVAL);
+  vsph_params_free(prm);
+}
+END_TEST
+
 START_TEST(test_command_is_the_run) {
   const char *dir = tmpdir();
   struct vsph_report R;
@@ -896,6 +932,7 @@ Suite *vsph_jobs_suite(void) {
   tcase_add_test(tc, test_quick_from_archive);
   tcase_add_test(tc, test_source_commits_hash);
   tcase_add_test(tc, test_command_is_the_run);
+  tcase_add_test(tc, test_defaults_applied_once);
   tcase_add_test(tc, test_pool);
   tcase_add_test(tc, test_estimate_neighbours);
   tcase_add_test(tc, test_plan_listing);
