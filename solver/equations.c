@@ -175,6 +175,77 @@ static void corr_pass(const struct vsph_equations_props *ep,
   }
 }
 
+/* The transport-velocity scheme's terms of pair @p pr (i's row): the
+ * anisotropic stress (A_i + A_j) . grad_i W = -F (A_i + A_j) x taken off
+ * the pressure share @p f (A_i in @p tA; j's from its density @p rhoj,
+ * velocities @p vel and transport velocities @p tv), and the background
+ * push's share, returned: 2 pb in place of the pressure sum. */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_vec
+tvf_pair(const struct vsph_pair *pr, const int dim, const double *tA,
+         double rhoj, const double *const *vel, const double *const *tv,
+         size_t j, double pb, double *f) {
+  for (int a = 0; a < dim; a++) {
+    double s = 0.0;
+    for (int c = 0; c < dim; c++)
+      s += (tA[a * dim + c] + rhoj * vel[a][j] * (tv[c][j] - vel[c][j])) *
+           pr->x[c];
+    f[a] -= pr->VF * s;
+  }
+  return vsph_pair_pressure(pr, dim, 2.0 * pb);
+}
+
+/* Particle i's correction terms from the first pass's workspace @p ws:
+ * its S, a and (@p bl, Bonet and Lok's) L. */
+VSPH_CONSTS_SPECIALISE void corr_load(const struct vsph_viscous_ws *ws,
+                                      size_t i, const int dim, const int bl,
+                                      double *cS, double *ca, double *cL) {
+  *cS = ws->S[i];
+  for (int e = 0; e < dim; e++) ca[e] = ws->a[e][i];
+  for (int e = 0; e < dim * dim && bl; e++) cL[e] = ws->L[e][i];
+}
+
+/* i's own term of the corrected pressure sum, added to @p ap: g_ii =
+ * -W(0) a/S^2 (L) with @p w0 = W(0), i's volume @p vi and pressure
+ * @p pi. */
+VSPH_CONSTS_SPECIALISE void corr_self(double w0, double vi, double pi,
+                                      size_t i, const int dim, double cS,
+                                      const double *ca, const double *cL,
+                                      const int bl, double *ap) {
+  struct vsph_pair self = {.j = i, .s2 = 0.0, .F = 0.0, .VF = 0.0};
+  double cg[3], fs[3];
+  vsph_pair_corr_grad(&self, dim, w0, cS, ca, cL, bl, cg);
+  vsph_pair_pressure_g(vi, dim, 2.0 * pi, cg, fs);
+  for (int k = 0; k < dim; k++) ap[k] += fs[k];
+}
+
+/* Particle i's rates from its sums (rhs_one's last step): the continuity
+ * sum @p cont and delta-SPH's @p dsum, the pressure and viscous sums
+ * @p ap and @p av, the transport velocity's background push @p tb (NULL:
+ * none), and the body force at i's place @p xi. */
+VSPH_CONSTS_SPECIALISE void rhs_write(const struct rhs_ctx *rc,
+                                      const struct vsph_particles *p, size_t i,
+                                      const double *xi, const int dim,
+                                      double cont, double dsum,
+                                      const double *ap, const double *av,
+                                      const double *tb,
+                                      struct vsph_equations_out *out) {
+  const double rhoi = p->rho[i], rinv = 1.0 / rhoi;
+  /* the gas law's energy equation, de/dt = (p/rho^2) (d rho/dt) of the
+   * continuity sum (docs/theory.md section 10): the compression work of
+   * the pressure terms, ghosts included; delta-SPH moves rho, not e */
+  if (rc->gas) out->de[i] = p->p[i] * cont * rinv;
+  double g[3];
+  body_force(rc->ep, xi, g);
+  out->drho[i] = rhoi * cont + rc->dhc * dsum;
+  for (int k = 0; k < dim; k++) out->acc[k][i] = rinv * (ap[k] + av[k]) + g[k];
+  if (tb)
+    for (int k = 0; k < dim; k++) p->bacc[k][i] = rinv * tb[k];
+  if (rc->parts) {
+    for (int k = 0; k < dim; k++) out->acc_visc[k][i] = rinv * av[k];
+    out->drho_delta[i] = rc->dhc * dsum;
+  }
+}
+
 /* One fluid particle: every term of THEORY 5 gathered over its neighbours,
  * each through its pair function (pair.h, viscous.h). Per chunk of
  * neighbours, the pairs' shares are computed in one loop the compiler
@@ -210,11 +281,7 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
   const int bl = corr == VSPH_PAIR_CORR_BONETLOK;
   const struct vsph_kernel_type *const kt = rc->ep->visc.kernel;
   const double ch = rc->ep->visc.h, cwf = rc->wf;
-  if (corr) {
-    cS = rc->ws->S[i];
-    for (int e = 0; e < dim; e++) ca[e] = rc->ws->a[e][i];
-    for (int e = 0; e < dim * dim && bl; e++) cL[e] = rc->ws->L[e][i];
-  }
+  if (corr) corr_load(rc->ws, i, dim, bl, &cS, ca, cL);
   size_t nint = 0;
   double ms2 = INFINITY;
   struct vsph_pair_iter it;
@@ -257,17 +324,9 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
             vsph_viscous_pair(&rc->vl, sh, &pr, duv, dux, Ai);
         for (int a = 0; a < dim; a++) f[a] = fp.v[a], g[a] = gv.f[a];
       }
-      if (tvf) { /* (A_i + A_j) . grad_i W = -F (A_i + A_j) x; 2 pb */
+      if (tvf) {
         const struct vsph_pair_vec fbv =
-            vsph_pair_pressure(&pr, dim, 2.0 * rc->pb);
-        for (int a = 0; a < dim; a++) {
-          double s = 0.0;
-          for (int c = 0; c < dim; c++)
-            s += (tA[a * dim + c] +
-                  rho[j] * vel[a][j] * (tv[c][j] - vel[c][j])) *
-                 pr.x[c];
-          f[a] -= pr.VF * s;
-        }
+            tvf_pair(&pr, dim, tA, rho[j], vel, tv, j, rc->pb, f);
         tb0 += fbv.v[0];
         if (dim > 1) tb1 += fbv.v[1];
         if (dim > 2) tb2 += fbv.v[2];
@@ -294,34 +353,13 @@ VSPH_CONSTS_SPECIALISE size_t rhs_one(
   ap[0] = ap0, ap[1] = ap1, ap[2] = ap2;
   av[0] = av0, av[1] = av1, av[2] = av2;
   vsph_viscous_own(&rc->vl, i, av);
-  if (corr) { /* i's own term of the pressure sum: g_ii = -W(0) a/S^2 (L) */
-    struct vsph_pair self = {.j = i, .s2 = 0.0, .F = 0.0, .VF = 0.0};
-    double cg[3], fs[3];
-    vsph_pair_corr_grad(&self, dim, rc->w0, cS, ca, cL, bl, cg);
-    vsph_pair_pressure_g(p->vol[i], dim, 2.0 * pi, cg, fs);
-    for (int k = 0; k < dim; k++) ap[k] += fs[k];
-  }
+  if (corr) corr_self(rc->w0, p->vol[i], pi, i, dim, cS, ca, cL, bl, ap);
   if (reduce) { /* Basa's eq. (20): p_i + p_j - 2 pbar_i, i among the mean */
     const double pbar = (pi + pn) / (double)(nint + 1), gx[3] = {gx0, gx1, gx2};
     for (int k = 0; k < dim; k++) ap[k] -= 2.0 * pbar * gx[k];
   }
-  const double rinv = 1.0 / rhoi;
-  /* the gas law's energy equation, de/dt = (p/rho^2) (d rho/dt) of the
-   * continuity sum (docs/theory.md section 10): the compression work of
-   * the pressure terms, ghosts included; delta-SPH moves rho, not e */
-  if (rc->gas) out->de[i] = pi * cont * rinv;
-  double g[3];
-  body_force(rc->ep, it.xi, g);
-  out->drho[i] = rhoi * cont + rc->dhc * dsum;
-  for (int k = 0; k < dim; k++) out->acc[k][i] = rinv * (ap[k] + av[k]) + g[k];
-  if (tvf) {
-    const double tb[3] = {tb0, tb1, tb2};
-    for (int k = 0; k < dim; k++) p->bacc[k][i] = rinv * tb[k];
-  }
-  if (rc->parts) {
-    for (int k = 0; k < dim; k++) out->acc_visc[k][i] = rinv * av[k];
-    out->drho_delta[i] = rc->dhc * dsum;
-  }
+  const double tb[3] = {tb0, tb1, tb2};
+  rhs_write(rc, p, i, it.xi, dim, cont, dsum, ap, av, tvf ? tb : NULL, out);
   *min_s2 = ms2;
   return nint;
 }
@@ -730,6 +768,33 @@ static int sweep_plan(struct vsph_equations_sweep *sw,
 #define SW_DELTA(d) ((d) + 1)
 #define SW_VISC(d) ((d) + 2)
 
+/* Add the first @p na fields of the @p m pairs' shares @p js to their
+ * receivers j (@p jj) in block buffer @p buf (first particle @p lo,
+ * @p nf fields each), in pair order. */
+VSPH_CONSTS_SPECIALISE void sweep_add(double *buf, size_t lo, int nf,
+                                      const size_t *jj, size_t m,
+                                      double js[][VSPH_PAIR_CHUNK_MAX],
+                                      const int na) {
+  for (size_t k = 0; k < m; k++) {
+    double *const q = buf + (jj[k] - lo) * (size_t)nf;
+    for (int a = 0; a < na; a++) q[a] += js[a][k];
+  }
+}
+
+/* Add particle i's own sums to its entry @p q of a block's buffer: the
+ * force @p fs, continuity @p cont, delta-SPH's @p dsum (where the buffer
+ * holds it) and (@p parts) the viscous part @p vs. */
+VSPH_CONSTS_SPECIALISE void sweep_own(double *q, const int dim, int nf,
+                                      const int parts, const double *fs,
+                                      const double *vs, double cont,
+                                      double dsum) {
+  for (int a = 0; a < dim; a++) q[SW_F + a] += fs[a];
+  q[SW_CONT(dim)] += cont;
+  if (nf > SW_DELTA(dim)) q[SW_DELTA(dim)] += dsum;
+  if (parts)
+    for (int a = 0; a < dim; a++) q[SW_VISC(dim) + a] += vs[a];
+}
+
 /* The sweep of one block: each particle i of its cells meets its
  * neighbours j > i once. The pair's unit shares (V_i and V_j left out)
  * are computed in one vectorised loop per chunk: the force s (pressure
@@ -823,17 +888,10 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block(
           }
         }
         for (size_t k = 0; k < m; k++) rs2 = b.s2[k] < rs2 ? b.s2[k] : rs2;
-        /* j's shares, in pair order (a ghost's are never read) */
-        if (!parts) /* the force, continuity and (delta) the diffusion */
-          for (size_t k = 0; k < m; k++) {
-            double *const q = buf + (b.j[k] - lo) * (size_t)nf;
-            for (int a = 0; a < SW_DELTA(dim) + delta; a++) q[a] += js[a][k];
-          }
-        else /* every field */
-          for (size_t k = 0; k < m; k++) {
-            double *const q = buf + (b.j[k] - lo) * (size_t)nf;
-            for (int a = 0; a < SW_VISC(dim) + dim; a++) q[a] += js[a][k];
-          }
+        /* j's shares, in pair order (a ghost's are never read): the
+         * force, continuity and (delta) the diffusion, or every field */
+        sweep_add(buf, lo, nf, b.j, m, js,
+                  parts ? SW_VISC(dim) + dim : SW_DELTA(dim) + delta);
         size_t nfj = 0; /* fluid receivers j */
         for (size_t k = 0; k < m; k++) nfj += id[b.j[k]] < n_fluid;
         if (nfj < m && !fi)
@@ -843,13 +901,9 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block(
       }
       if (!fi) continue;
       ms2 = rs2 < ms2 ? rs2 : ms2;
-      double *const q = buf + (i - lo) * (size_t)nf;
       const double fs[3] = {f0, f1, f2}, vs[3] = {v0, v1, v2};
-      for (int a = 0; a < dim; a++) q[SW_F + a] += fs[a];
-      q[SW_CONT(dim)] += cont;
-      if (nf > SW_DELTA(dim)) q[SW_DELTA(dim)] += dsum;
-      if (parts)
-        for (int a = 0; a < dim; a++) q[SW_VISC(dim) + a] += vs[a];
+      sweep_own(buf + (i - lo) * (size_t)nf, dim, nf, parts, fs, vs, cont,
+                dsum);
     }
   }
   *min_s2 = ms2;
