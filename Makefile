@@ -14,7 +14,10 @@ WARN     += -Werror
 endif
 OPT      ?= -O3
 # AVX2 and FMA where the CPU has it (the pair and kernel loops vectorise 4
-# wide); `make ARCH=` builds for any x86-64. No -ffast-math and no FMA
+# wide); `make ARCH=` builds for any x86-64. The program and the tests
+# are built for the machine that builds them; the installed library runs
+# on any x86-64 (below, "the library": a baseline copy, and this one
+# where the loader picks it). No -ffast-math and no FMA
 # contraction (-std=c11), but the right-hand side's sums are reduced lane
 # by lane and the exponential uses fma() where the target has it: builds
 # with and without ARCH agree to rounding, not bitwise. Within one build
@@ -81,6 +84,19 @@ $(BUILD)/gen/cflags: FORCE
 $(BUILD)/%.o: %.c $(BUILD)/gen/cflags
 	@mkdir -p $(dir $@)
 	$(CC) $(ALLCFLAGS) -MMD -MP -c $< -o $@
+
+# The library's layers again for the x86-64 baseline (the installed
+# libvsph.a and libvsph.so; see "the library").
+PORT       := $(BUILD)/x86-64
+PORTCFLAGS  = $(subst $(CFLAGS),$(OPT) -g,$(ALLCFLAGS))
+$(PORT)/gen/cflags: FORCE
+	@mkdir -p $(dir $@)
+	@printf '%s\n' '$(CC) $(PORTCFLAGS)' > $@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
+
+$(PORT)/%.o: %.c $(PORT)/gen/cflags
+	@mkdir -p $(dir $@)
+	$(CC) $(PORTCFLAGS) -MMD -MP -c $< -o $@
 
 # With it, the commit the sources were at when they changed last (git's
 # short id, "-dirty" when they differed from it; "unknown" outside git):
@@ -172,12 +188,35 @@ $(LIBA): $(LIB_ALL)
 $(LIBSO): $(LIB_ALL)
 	$(CC) $(ALLCFLAGS) -shared -Wl,-soname,libvsph.so.$(SOVER) -o $@ $^ $(LDLIBS)
 
+# The installed library runs on any x86-64. Where this build is for
+# x86-64-v3 (AVX2 and FMA, the default on a CPU that has them), the
+# install holds two copies of libvsph.so: the x86-64 baseline's in lib/
+# and this build's in lib/glibc-hwcaps/x86-64-v3/, which the loader
+# (glibc 2.33 and later) picks on a CPU that has x86-64-v3, the
+# baseline's elsewhere: the dispatch is at run time, by the loader, and
+# each CPU gets the fastest copy it can run. libvsph.a is the baseline's
+# (a static link cannot choose). Any other ARCH (say -march=native, the
+# opt-in for a library only this machine runs) installs this build's
+# alone. The two copies agree to rounding, not bitwise (their sums are
+# reduced 4 and 2 lanes wide).
+ifeq ($(strip $(ARCH)),-march=x86-64-v3)
+HWCAPS   := x86-64-v3
+PORT_ALL := $(CORE_SRC:%.c=$(PORT)/%.o) $(HASH_OBJ)
+LIB_INST := $(PORT)/libvsph.a $(PORT)/libvsph.so.$(VERSION)
+$(PORT)/libvsph.a: $(PORT_ALL)
+	@rm -f $@
+	ar rcs $@ $^
+$(PORT)/libvsph.so.$(VERSION): $(PORT_ALL)
+	$(CC) $(PORTCFLAGS) -shared -Wl,-soname,libvsph.so.$(SOVER) -o $@ $^ $(LDLIBS)
+endif
+INSTALL_LIB = $(if $(HWCAPS),--hwcaps $(HWCAPS) $(PORT))
+
 # The manual page, vsph(1), from the program's own --help texts.
 $(BUILD)/vsph.1: $(BUILD)/vsph scripts/make-man
 	scripts/make-man $(BUILD)/vsph > $@.tmp && mv $@.tmp $@
 
 lib: deps
-	@$(MAKE) --no-print-directory $(LIBA) $(LIBSO) $(BUILD)/vsph.1 doc
+	@$(MAKE) --no-print-directory $(LIBA) $(LIBSO) $(LIB_INST) $(BUILD)/vsph.1 doc
 
 # The reference manual of the public headers (docs/Doxyfile), by Debian's
 # doxygen (scripts/install-deps); skipped with a note where it is absent.
@@ -197,8 +236,8 @@ $(BUILD)/doc/html/index.html: docs/Doxyfile $(PUB_HDR)
 # what the manifest lists and nothing else (scripts/install).
 PREFIX  ?= /usr/local
 install: lib
-	scripts/install "$(DESTDIR)" "$(PREFIX)" "$(VERSION)" "$(SOVER)" \
-	  $(BUILD) $(PUB_HDR)
+	scripts/install $(INSTALL_LIB) "$(DESTDIR)" "$(PREFIX)" "$(VERSION)" \
+	  "$(SOVER)" $(BUILD) $(PUB_HDR)
 uninstall:
 	scripts/install --uninstall "$(DESTDIR)" "$(PREFIX)"
 
@@ -208,8 +247,8 @@ uninstall:
 check: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph $(BUILD)/check_vsph lib
 	@rm -rf $(BUILD)/stage
-	@scripts/install "" "$(abspath $(BUILD)/stage)" "$(VERSION)" "$(SOVER)" \
-	  $(BUILD) $(PUB_HDR) > /dev/null
+	@scripts/install $(INSTALL_LIB) "" "$(abspath $(BUILD)/stage)" \
+	  "$(VERSION)" "$(SOVER)" $(BUILD) $(PUB_HDR) > /dev/null
 	@$(MAKE) --no-print-directory prefix-check format-check
 	VSPH_BIN=$(BUILD)/vsph VSPH_STAGE=$(abspath $(BUILD)/stage) OMP_NUM_THREADS=2 \
 	  GOMP_SPINCOUNT=1000 $(BUILD)/check_vsph
@@ -375,4 +414,5 @@ format-check:
 clean:
 	rm -rf build build-asan build-fuzz
 
--include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d)
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) \
+  $(CORE_SRC:%.c=$(PORT)/%.d)

@@ -98,9 +98,11 @@ START_TEST(test_installed_example) {
   first[n1] = '\0';
   assert_lines(first, "shared");
   assert_lines(second, "static");
-  /* the shared one loads the staged library; the static one none */
+  /* the shared one loads the staged library (lib/libvsph.so.0, or the
+   * copy the loader picks in lib/glibc-hwcaps/: test_installed_dispatch);
+   * the static one none */
   char want[4096 + 64];
-  snprintf(want, sizeof want, "libvsph.so.0 => %s/lib/libvsph.so.0", stage);
+  snprintf(want, sizeof want, "libvsph.so.0 => %s/lib/", stage);
   const char *st = strstr(o->out, "static:");
   ck_assert_ptr_nonnull(st);
   const char *so = strstr(o->out, want);
@@ -270,11 +272,67 @@ START_TEST(test_deps_without_apt) {
 }
 END_TEST
 
+/* The installed library runs on any x86-64 (Makefile, "the library"):
+ * where the build is for x86-64-v3, lib/libvsph.so.0 is the baseline's
+ * (no VEX-encoded instruction, none of AVX's v-mnemonics) and
+ * lib/glibc-hwcaps/x86-64-v3/ holds the v3 build's, which the loader
+ * picks on this CPU when it has x86-64-v3; with the loader told to search
+ * no deeper than x86-64-v2 (a CPU without AVX2), the example loads the
+ * baseline's and prints every line right. */
+START_TEST(test_installed_dispatch) {
+  char sbuf[4096];
+  const char *stage = staged(sbuf);
+  char hw[4200];
+  snprintf(hw, sizeof hw, "%s/lib/glibc-hwcaps/x86-64-v3/libvsph.so.0", stage);
+  FILE *f = fopen(hw, "r");
+  if (!f) { /* a build for another ARCH installs one copy, its own */
+    printf("library: no x86-64-v3 copy staged (ARCH is not x86-64-v3)\n");
+    return;
+  }
+  fclose(f);
+  char dir[] = "/tmp/vsph-hwc-XXXXXX", script[6 * 4096];
+  vsph_test_scratch(dir);
+  const char *ld = "/lib64/ld-linux-x86-64.so.2";
+  snprintf(script, sizeof script,
+           "vex() { objdump -d \"$1\" | awk -F'\\t' '$3 ~ /^v/' | wc -l; } "
+           "&& echo base $(vex '%s/lib/libvsph.so.0') v3 $(vex '%s') && "
+           "PKG_CONFIG_PATH='%s/lib/pkgconfig' make -s -C examples/regression "
+           "OUT='%s' 2>&1 && cd '%s' && "
+           "{ %s --help | grep -q 'x86-64-v3 (supported' && echo cpu v3 || "
+           "echo cpu older; } && "
+           "LD_DEBUG=libs ./regression 2>&1 | grep 'calling init:.*libvsph' && "
+           "echo masked: && LD_DEBUG=libs %s --glibc-hwcaps-mask x86-64-v2 "
+           "./regression 2>&1",
+           stage, hw, stage, dir, dir, ld, ld);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 0, "exit %d\n%s\n%s", o->status, o->out, o->err);
+  long base = -1, v3 = -1;
+  ck_assert_int_eq(sscanf(o->out, "base %ld v3 %ld", &base, &v3), 2);
+  ck_assert_msg(base == 0, "the baseline copy holds %ld AVX instructions",
+                base);
+  ck_assert_msg(v3 > 0, "the x86-64-v3 copy holds no AVX instruction");
+  const char *masked = strstr(o->out, "masked:");
+  ck_assert_ptr_nonnull(masked);
+  char want[4300];
+  if (strstr(o->out, "cpu v3")) {
+    snprintf(want, sizeof want, "calling init: %s", hw);
+    const char *at = strstr(o->out, want);
+    ck_assert_msg(at && at < masked, "not the v3 copy:\n%s", o->out);
+  }
+  snprintf(want, sizeof want, "calling init: %s/lib/libvsph.so.0", stage);
+  ck_assert_msg(strstr(masked, want) != NULL, "masked, not the baseline:\n%s",
+                masked);
+  assert_lines(masked, "baseline");
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_library_suite(void) {
   Suite *s = suite_create("library");
   TCase *tc = tcase_create("install");
   tcase_set_timeout(tc, 120);
   tcase_add_test(tc, test_installed_example);
+  tcase_add_test(tc, test_installed_dispatch);
   tcase_add_test(tc, test_exports);
   tcase_add_test(tc, test_install_refusals);
   tcase_add_test(tc, test_deps_without_apt);
