@@ -1882,9 +1882,9 @@ static int cavity_ek_claim(struct vsph_report *R, const struct chan *c,
   vsph_claim_clear(v);
   vsph_claim_num(v, "fv_read", fv->ok);
   if (!fv->ok) { /* nothing measured: the block's test fv says so */
-    static const char *const NUMS[] = {"fv_n", "band",  "peak",   "edge",
-                                       "under", "measured", "n", "lo",
-                                       "hi",   "e_seen", "d_seen"};
+    static const char *const NUMS[] = {"fv_n",  "band",     "peak",  "edge",
+                                       "under", "measured", "n",     "lo",
+                                       "hi",    "e_seen",   "d_seen"};
     static const char *const WORDS[] = {"quick_runs", "full_runs", "at_paper",
                                         "hist"};
     for (size_t k = 0; k < sizeof NUMS / sizeof *NUMS; k++)

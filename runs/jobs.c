@@ -30,8 +30,9 @@ int vsph_jobs_defaults(int kind, const char *scene, struct vsph_params *prm) {
   if (kind == VSPH_JOBS_SHEAR) return vsph_contact_defaults(prm);
   const struct vsph_scene_type *t = scene ? vsph_scene_find(scene) : NULL;
   if (kind != VSPH_JOBS_RUN || !t)
-    VSPH_FAIL(VSPH_EINVAL, "vsph_jobs_defaults: no job of kind %d on scene '%s'",
-              kind, scene ? scene : "(null)");
+    VSPH_FAIL(VSPH_EINVAL,
+              "vsph_jobs_defaults: no job of kind %d on scene '%s'", kind,
+              scene ? scene : "(null)");
   return vsph_scene_solver_defaults(t, prm);
 }
 

@@ -180,10 +180,10 @@ static void corr_pass(const struct vsph_equations_props *ep,
  * the pressure share @p f (A_i in @p tA; j's from its density @p rhoj,
  * velocities @p vel and transport velocities @p tv), and the background
  * push's share, returned: 2 pb in place of the pressure sum. */
-VSPH_CONSTS_SPECIALISE struct vsph_pair_vec
-tvf_pair(const struct vsph_pair *pr, const int dim, const double *tA,
-         double rhoj, const double *const *vel, const double *const *tv,
-         size_t j, double pb, double *f) {
+VSPH_CONSTS_SPECIALISE struct vsph_pair_vec tvf_pair(
+    const struct vsph_pair *pr, const int dim, const double *tA, double rhoj,
+    const double *const *vel, const double *const *tv, size_t j, double pb,
+    double *f) {
   for (int a = 0; a < dim; a++) {
     double s = 0.0;
     for (int c = 0; c < dim; c++)
@@ -207,8 +207,8 @@ VSPH_CONSTS_SPECIALISE void corr_load(const struct vsph_viscous_ws *ws,
 /* i's own term of the corrected pressure sum, added to @p ap: g_ii =
  * -W(0) a/S^2 (L) with @p w0 = W(0), i's volume @p vi and pressure
  * @p pi. */
-VSPH_CONSTS_SPECIALISE void corr_self(double w0, double vi, double pi,
-                                      size_t i, const int dim, double cS,
+VSPH_CONSTS_SPECIALISE void corr_self(double w0, double vi, double pi, size_t i,
+                                      const int dim, double cS,
                                       const double *ca, const double *cL,
                                       const int bl, double *ap) {
   struct vsph_pair self = {.j = i, .s2 = 0.0, .F = 0.0, .VF = 0.0};
@@ -222,13 +222,10 @@ VSPH_CONSTS_SPECIALISE void corr_self(double w0, double vi, double pi,
  * sum @p cont and delta-SPH's @p dsum, the pressure and viscous sums
  * @p ap and @p av, the transport velocity's background push @p tb (NULL:
  * none), and the body force at i's place @p xi. */
-VSPH_CONSTS_SPECIALISE void rhs_write(const struct rhs_ctx *rc,
-                                      const struct vsph_particles *p, size_t i,
-                                      const double *xi, const int dim,
-                                      double cont, double dsum,
-                                      const double *ap, const double *av,
-                                      const double *tb,
-                                      struct vsph_equations_out *out) {
+VSPH_CONSTS_SPECIALISE void rhs_write(
+    const struct rhs_ctx *rc, const struct vsph_particles *p, size_t i,
+    const double *xi, const int dim, double cont, double dsum, const double *ap,
+    const double *av, const double *tb, struct vsph_equations_out *out) {
   const double rhoi = p->rho[i], rinv = 1.0 / rhoi;
   /* the gas law's energy equation, de/dt = (p/rho^2) (d rho/dt) of the
    * continuity sum (docs/theory.md section 10): the compression work of
