@@ -65,7 +65,7 @@ CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 .PHONY: all deps check test report baseline bench archive full-sitting full-report asan valgrind-check prefix-check \
         lib doc install uninstall \
         format format-check mutate fuzz slurm-check fresh-check \
-        fresh-check-tests paraview-check reference clean
+        fresh-check-tests paraview-check optional-checks reference clean
 
 all: deps $(BUILD)/vsph
 
@@ -320,6 +320,12 @@ fresh-check-tests:
 # `make check` (ParaView is large).
 paraview-check:
 	scripts/paraview-check
+
+# Every optional check above that this machine can install, one after
+# another, each timed, with a line per check at the end (passed, failed,
+# skipped and why); 20-30 minutes (scripts/optional-checks).
+optional-checks:
+	scripts/optional-checks
 
 # The finite-volume references the report reads from reference/data
 # (OpenFOAM v1912: the stretching square by interFoam, the cavity by
