@@ -257,7 +257,11 @@ int vsph_contact_shear_measure(struct vsph_params *prm,
   if (!st) st = vsph_scene_init(&sc, &vsph_shear_type, prm);
   if (st) return st;
   const char *unused = vsph_params_unused(prm);
-  if (unused) VSPH_FAIL(VSPH_EINVAL, "unknown parameter '%s'", unused);
+  if (unused) {
+    char hint[1024];
+    vsph_params_hint(prm, unused, hint, sizeof hint);
+    VSPH_FAIL(VSPH_EINVAL, "unknown parameter '%s'%s", unused, hint);
+  }
   rp.snapshots = 0;
   /* a profile is taken at the first step past each t_end k/K: K profiles
    * need K steps at least (a run of one step gave one profile, one step

@@ -43,6 +43,11 @@ static void say(const char *cmd, const char *msg) {
   fputc('\n', stderr);
 }
 
+int vsph_args_names(const char *arg, const char *opt) {
+  const size_t n = strlen(opt);
+  return !strncmp(arg, opt, n) && (arg[n] == '\0' || arg[n] == '=');
+}
+
 int vsph_args_fail(const char *cmd, const char *fmt, ...) {
   char msg[2048];
   va_list ap;
@@ -122,25 +127,64 @@ static int section_key(const struct vsph_args_cmd *c, const char *name,
   return 0;
 }
 
+/* "; did you mean --x?" into @p buf where an option of @p c is a slip
+ * away from @p name (vsph_params_nearest), else empty. */
+static void suggest(const struct vsph_args_cmd *c, const char *name, char *buf,
+                    size_t n) {
+  buf[0] = '\0';
+  size_t m = c->nown;
+  for (size_t s = 0; s < c->nsections; s++) m += c->sections[s].n;
+  char(*opt)[64] = malloc(m * sizeof *opt + 1);
+  const char **cand = malloc(m * sizeof *cand + 1);
+  if (opt && cand) {
+    size_t k = 0;
+    for (size_t o = 0; o < c->nown; o++, k++)
+      snprintf(opt[k], sizeof opt[k], "%s", c->own[o].name);
+    for (size_t s = 0; s < c->nsections; s++)
+      for (size_t e = 0; e < c->sections[s].n; e++, k++)
+        option_of(c->sections[s].spec[e].key, opt[k], sizeof opt[k]);
+    for (k = 0; k < m; k++) cand[k] = opt[k];
+    const size_t at = vsph_params_nearest(name, cand, m);
+    if (at < m) snprintf(buf, n, "; did you mean %s?", cand[at]);
+  }
+  free(opt);
+  free(cand);
+}
+
 /* One pass over the line, doing only the options of kind `pass`
  * (PARAMS, then SET, then everything else). */
 static int pass_over(const struct vsph_args_cmd *c, int argc, char **argv,
                      struct vsph_params *prm, int pass, int *given) {
   for (int i = 1; i < argc; i++) {
-    const char *a = argv[i];
+    /* --name=value is --name value (GNU's long options) */
+    char name[64];
+    const char *a = argv[i], *inl = NULL;
+    const char *is = a[0] == '-' && a[1] == '-' ? strchr(a, '=') : NULL;
+    if (is && (size_t)(is - a) < sizeof name) {
+      memcpy(name, a, (size_t)(is - a));
+      name[is - a] = '\0';
+      a = name;
+      inl = is + 1;
+    }
     const struct vsph_args_spec *sp = NULL;
     for (size_t k = 0; k < c->nown && !sp; k++)
       if (!strcmp(a, c->own[k].name)) sp = &c->own[k];
     char key[128];
     const int is_key = !sp && section_key(c, a, key, sizeof key);
-    if (!sp && !is_key)
-      return vsph_args_fail(c->name, "unknown option '%s' (see --help)", a);
+    if (!sp && !is_key) {
+      char hint[128];
+      suggest(c, a, hint, sizeof hint);
+      return vsph_args_fail(c->name, "unknown option '%s'%s (see --help)", a,
+                            hint);
+    }
     if (sp && sp->kind == VSPH_ARGS_FLAG) {
+      if (inl) return vsph_args_fail(c->name, "%s takes no value", a);
       if (pass == 2) *(int *)sp->dst = 1;
       continue;
     }
-    if (i + 1 >= argc) return vsph_args_fail(c->name, "%s needs a value", a);
-    const char *v = argv[++i];
+    if (!inl && i + 1 >= argc)
+      return vsph_args_fail(c->name, "%s needs a value", a);
+    const char *v = inl ? inl : argv[++i];
     const int kind = sp ? (int)sp->kind : -1;
     /* no option of vsph means anything by an empty value: an empty --out
      * would name the current folder's parent chain (`/` for a report) */

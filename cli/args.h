@@ -60,6 +60,10 @@ struct vsph_args_cmd {
   const char *const *required; /*!< keys that must be given, or NULL */
 };
 
+/** @brief 1 if word @p arg of a command line names option @p opt: "--opt"
+ *  or "--opt=value". */
+int vsph_args_names(const char *arg, const char *opt);
+
 /** @brief Print "vsph CMD: message" on stderr; returns
  *  VSPH_ARGS_EXIT_USAGE. */
 int vsph_args_fail(const char *cmd, const char *fmt, ...);

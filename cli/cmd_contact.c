@@ -100,12 +100,12 @@ static int write_profiles(const char *path,
 }
 
 /* 1 if --profiles is on the line (parsed already: every option but the
- * three flags takes a value). */
+ * three flags takes a value, the next word or after '='). */
 static int profiles_given(int argc, char **argv) {
   for (int i = 1; i < argc; i++) {
-    if (!strcmp(argv[i], "--profiles")) return 1;
+    if (vsph_args_names(argv[i], "--profiles")) return 1;
     if (strcmp(argv[i], "--lattice") && strcmp(argv[i], "--cache") &&
-        strcmp(argv[i], "--quiet"))
+        strcmp(argv[i], "--quiet") && !strchr(argv[i], '='))
       i++; /* its value */
   }
   return 0;
@@ -129,7 +129,11 @@ static int lattice_checks(struct vsph_params *prm, const char *csv,
   if (!st) st = vsph_scene_init(&sc, &vsph_shear_type, prm);
   if (st) return vsph_args_status(CMD, st);
   const char *unused = vsph_params_unused(prm);
-  if (unused) return vsph_args_fail(CMD, "unknown parameter '%s'", unused);
+  if (unused) {
+    char hint[1024];
+    vsph_params_hint(prm, unused, hint, sizeof hint);
+    return vsph_args_fail(CMD, "unknown parameter '%s'%s", unused, hint);
+  }
   for (size_t i = 0; i < vsph_params_count(prm); i++) {
     const char *k, *v;
     int used;

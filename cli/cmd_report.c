@@ -298,8 +298,8 @@ static int parse(struct opts *o, int argc, char **argv) {
   /* given: an option named in argv (its value is then parsed and valid;
    * 0 is a value here, and refused) */
   for (int k = 1; k < argc; k++) {
-    o->pool |= !strcmp(argv[k], "--jobs");
-    o->own_threads |= !strcmp(argv[k], "--threads");
+    o->pool |= vsph_args_names(argv[k], "--jobs");
+    o->own_threads |= vsph_args_names(argv[k], "--threads");
   }
   return -1;
 }

@@ -107,34 +107,30 @@ static int print_table(const void *w) {
       vsph_fields_name(sp->field.kind),
       vsph_lattice_label(sp->lattice, sp->perturb), sp->hdx, sp->mu, hF_th,
       hN_th);
-  /* every formulation: its normal component, then its magnitude */
-  printf("%10s %11s %11s", "h", "hF_ddd", "hN_d");
-  char head[32];
-  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++) {
-    snprintf(head, sizeof head, "%s.n", vsph_viscous_name(f));
-    printf(" %12s", head);
+  /* h F and h N per level; then a row per formulation (the table stays
+   * narrow however many forms there are): its normal component at each
+   * h, its magnitude at each h, and its slope */
+  printf("%10s %11s %11s\n", "h", "hF_ddd", "hN_d");
+  for (size_t l = 0; l < r->levels; l++)
+    printf("%10.6f %11.6f %11.6f\n", r->h[l], r->hF[l], r->hN[l]);
+  for (int part = 0; part < 2; part++) {
+    printf("\n# %s of (div V)_i at each h%s\n%-10s",
+           part ? "magnitude" : "normal component",
+           part ? "; slope: log-log, of the magnitude against h" : "", "form");
+    for (size_t l = 0; l < r->levels; l++) printf(" %11.4g", r->h[l]);
+    printf(part ? "     slope\n" : "\n");
+    for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++) {
+      printf("%-10s", vsph_viscous_name(f));
+      for (size_t l = 0; l < r->levels; l++)
+        printf(" %11.4e", vsph_consts_shown(
+                              part ? r->magnitude[f][l] : r->normal[f][l], 0));
+      if (part && r->rounding[f])
+        printf("  rounding level (no growth)");
+      else if (part)
+        printf(" %9.4f", vsph_consts_shown(r->slope[f], 5e-5));
+      printf("\n");
+    }
   }
-  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++) {
-    snprintf(head, sizeof head, "|%s|", vsph_viscous_name(f));
-    printf(" %12s", head);
-  }
-  printf("\n");
-  for (size_t l = 0; l < r->levels; l++) {
-    printf("%10.6f %11.6f %11.6f", r->h[l], r->hF[l], r->hN[l]);
-    for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
-      printf(" %12.5e", r->normal[f][l]);
-    for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++)
-      printf(" %12.5e", r->magnitude[f][l]);
-    printf("\n");
-  }
-  printf("# log-log slope of |(div V)_i| against h:");
-  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++) {
-    if (r->rounding[f])
-      printf("  %s: rounding level (no growth)", vsph_viscous_name(f));
-    else
-      printf("  %s: %.4f", vsph_viscous_name(f), r->slope[f]);
-  }
-  printf("\n");
   return 0;
 }
 

@@ -62,4 +62,12 @@ extern VSPH_API const char vsph_commit_id[];
 #define VSPH_CONSTS_SPECIALISE static inline
 #endif
 
+/** @brief @p x as it should be printed: +0 where it is zero or smaller in
+ *  magnitude than @p half, half a unit of the last digit shown (0.05 for
+ *  "%.1f"; 0 for "%e", where only a zero prints as one), so that a table
+ *  never shows "-0.0" or "-0.000e+00". */
+static inline double vsph_consts_shown(double x, double half) {
+  return x == 0.0 || (x < half && -x < half) ? 0.0 : x;
+}
+
 #endif /* VSPH_COMMON_CONSTS_H */

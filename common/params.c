@@ -2,6 +2,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #include "params.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -416,6 +417,98 @@ const char *vsph_params_unused(const struct vsph_params *prm) {
 
 size_t vsph_params_count(const struct vsph_params *prm) {
   return prm ? prm->n : 0;
+}
+
+/* The edit distance of @p a and @p b (optimal string alignment: a swap of
+ * two neighbours is one step), letters compared without case, for words of
+ * at most KEY_MAX characters (longer ones: KEY_MAX). */
+static size_t distance(const char *a, const char *b) {
+  const size_t na = strlen(a), nb = strlen(b);
+  if (na >= KEY_MAX || nb >= KEY_MAX) return KEY_MAX;
+  size_t d[3][KEY_MAX + 1]; /* rows i-2, i-1, i (mod 3) */
+  for (size_t j = 0; j <= nb; j++) d[0][j] = j;
+  for (size_t i = 1; i <= na; i++) {
+    size_t *r = d[i % 3], *p = d[(i + 2) % 3], *q = d[(i + 1) % 3];
+    r[0] = i;
+    for (size_t j = 1; j <= nb; j++) {
+      const int same =
+          tolower((unsigned char)a[i - 1]) == tolower((unsigned char)b[j - 1]);
+      size_t v = p[j - 1] + !same;
+      if (p[j] + 1 < v) v = p[j] + 1;
+      if (r[j - 1] + 1 < v) v = r[j - 1] + 1;
+      if (i > 1 && j > 1 &&
+          tolower((unsigned char)a[i - 1]) ==
+              tolower((unsigned char)b[j - 2]) &&
+          tolower((unsigned char)a[i - 2]) ==
+              tolower((unsigned char)b[j - 1]) &&
+          q[j - 2] + 1 < v)
+        v = q[j - 2] + 1;
+      r[j] = v;
+    }
+  }
+  return d[na % 3][nb];
+}
+
+size_t vsph_params_nearest(const char *word, const char *const *cand,
+                           size_t n) {
+  if (!word || !cand) return n;
+  const size_t len = strlen(word);
+  const size_t slip = len <= 4 ? 1 : len <= 8 ? 2 : 3;
+  size_t best = n, bd = slip + 1;
+  for (size_t i = 0; i < n; i++) {
+    if (!cand[i]) continue;
+    const size_t d = distance(word, cand[i]);
+    if (d < bd) bd = d, best = i;
+  }
+  return best;
+}
+
+/* The section of key @p k ("Section:key"): its length, 0 for none. */
+static size_t section_len(const char *k) {
+  const char *c = strchr(k, ':');
+  return c ? (size_t)(c - k) : 0;
+}
+
+void vsph_params_hint(const struct vsph_params *prm, const char *key, char *buf,
+                      size_t len) {
+  if (!buf || len == 0) return;
+  buf[0] = '\0';
+  if (!prm || !key || prm->n == 0) return;
+  const char **cand = malloc(prm->n * sizeof *cand);
+  if (!cand) return;
+  size_t n = 0;
+  for (size_t i = 0; i < prm->n; i++)
+    if (strcmp(prm->e[i]->key, key)) cand[n++] = prm->e[i]->key;
+  size_t at = 0;
+  const size_t k = vsph_params_nearest(key, cand, n);
+  if (k < n) at = (size_t)snprintf(buf, len, "; did you mean %s?", cand[k]);
+  /* the keys of key's section, or the sections where it names none known */
+  const size_t sl = section_len(key);
+  size_t shown = 0;
+  for (size_t i = 0; i < n; i++)
+    shown += section_len(cand[i]) == sl && !strncmp(cand[i], key, sl);
+  if (shown && at < len)
+    at +=
+        (size_t)snprintf(buf + at, len - at, " (the %.*s keys:", (int)sl, key);
+  else if (at < len)
+    at += (size_t)snprintf(buf + at, len - at, " (the sections:");
+  for (size_t i = 0, m = 0; i < n && at < len; i++) {
+    const size_t ci = section_len(cand[i]);
+    if (shown && !(ci == sl && !strncmp(cand[i], key, sl))) continue;
+    if (!shown) { /* a section once, where it first appears */
+      size_t e = 0;
+      while (e < i &&
+             !(section_len(cand[e]) == ci && !strncmp(cand[e], cand[i], ci)))
+        e++;
+      if (e < i) continue;
+    }
+    at += (size_t)snprintf(buf + at, len - at, "%s %.*s", m++ ? "," : "",
+                           shown ? (int)strlen(cand[i] + ci + 1) : (int)ci,
+                           shown ? cand[i] + ci + 1 : cand[i]);
+  }
+  if (at < len) snprintf(buf + at, len - at, ")");
+  if (at >= len && len > 4) memcpy(buf + len - 5, "...)", 5);
+  free(cand);
 }
 
 int vsph_params_given(const struct vsph_params *prm, const char *key) {

@@ -64,6 +64,24 @@ VSPH_API int vsph_params_get_string_or(struct vsph_params *prm, const char *key,
 /** @brief The first key given but never read, or NULL. */
 VSPH_API const char *vsph_params_unused(const struct vsph_params *prm);
 
+/** @brief Of the @p n words @p cand, the one nearest @p word by edit
+ *  distance (insertions, deletions, substitutions and swaps of two
+ *  neighbours, each one step; letters compared without case), where it is
+ *  near enough to be a slip: at most 1 step for a word of up to 4
+ *  letters, 2 up to 8, 3 beyond. @return its index, or @p n (none near
+ *  enough, or a NULL argument). */
+VSPH_API size_t vsph_params_nearest(const char *word, const char *const *cand,
+                                    size_t n);
+
+/** @brief The hint for unknown key @p key into @p buf (@p len bytes, one
+ *  line): "; did you mean S:k?" where a key the store holds (given, or a
+ *  default a table filled in: every key its reader knows) is near enough
+ *  (vsph_params_nearest), then " (the S keys: a, b, ...)" listing the keys
+ *  of @p key's section S, or of every section where S holds none.
+ *  Empty where @p prm, @p key or @p buf is NULL. */
+VSPH_API void vsph_params_hint(const struct vsph_params *prm, const char *key,
+                               char *buf, size_t len);
+
 /** @brief 1 if @p key was given (by a file, a setting or an option), 0 if
  *  it is absent or holds a default a getter filled in. @p prm may be NULL
  *  (0). */

@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "../analysis/series.h"
+#include "../common/consts.h"
 #include "../common/status.h"
 #include "../io/csv.h"
 #include "../io/plot.h"
@@ -187,7 +188,8 @@ static int cfl_scene(struct vsph_report *R, int sc, double *pick) {
                 ok[f][k][q]);
         if (q == 0) continue;
         fprintf(R->md, " %+.1f %%%s |",
-                100.0 * (err[f][k][q] - err[f][k][0]) / err[f][k][0],
+                vsph_consts_shown(
+                    100.0 * (err[f][k][q] - err[f][k][0]) / err[f][k][0], 0.05),
                 ok[f][k][q] ? "" : " (unstable)");
       }
       fprintf(R->md, "\n");

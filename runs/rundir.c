@@ -672,7 +672,11 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
   if (!st) st = vsph_scene_init(&sc, type, prm);
   if (st) return st;
   const char *unused = vsph_params_unused(prm);
-  if (unused) VSPH_FAIL(VSPH_EINVAL, "unknown parameter '%s'", unused);
+  if (unused) {
+    char hint[1024];
+    vsph_params_hint(prm, unused, hint, sizeof hint);
+    VSPH_FAIL(VSPH_EINVAL, "unknown parameter '%s'%s", unused, hint);
+  }
   if (opts->dir && strlen(opts->dir) >= sizeof res->dir - 64)
     VSPH_FAIL(VSPH_EINVAL,
               "--out: the folder's name is too long (%zu characters; at most "

@@ -108,6 +108,23 @@ static void call_vsph_params_unused_0(void) { (void)vsph_params_unused(NULL); }
 
 static void call_vsph_params_unused_1(void) { (void)vsph_params_unused(NULL); }
 
+static void call_vsph_params_nearest_0(void) {
+  (void)vsph_params_nearest(NULL, NULL, 0);
+}
+
+static void call_vsph_params_nearest_1(void) {
+  (void)vsph_params_nearest("x", NULL, SIZE_MAX);
+}
+
+static void call_vsph_params_hint_0(void) {
+  vsph_params_hint(NULL, NULL, NULL, 0);
+}
+
+static void call_vsph_params_hint_1(void) {
+  char b[8];
+  vsph_params_hint(NULL, "x", b, SIZE_MAX);
+}
+
 static void call_vsph_params_given_0(void) {
   (void)vsph_params_given(NULL, NULL);
 }
@@ -1282,6 +1299,10 @@ static const struct api_call CALLS[] = {
     {"vsph_params_get_double_or", call_vsph_params_get_double_or_1},
     {"vsph_params_get_string_or", call_vsph_params_get_string_or_0},
     {"vsph_params_get_string_or", call_vsph_params_get_string_or_1},
+    {"vsph_params_nearest", call_vsph_params_nearest_0},
+    {"vsph_params_nearest", call_vsph_params_nearest_1},
+    {"vsph_params_hint", call_vsph_params_hint_0},
+    {"vsph_params_hint", call_vsph_params_hint_1},
     {"vsph_params_unused", call_vsph_params_unused_0},
     {"vsph_params_unused", call_vsph_params_unused_1},
     {"vsph_params_given", call_vsph_params_given_0},

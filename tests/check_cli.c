@@ -200,6 +200,48 @@ START_TEST(test_archive_inputs) {
 }
 END_TEST
 
+/* GNU's long options: --name=value is --name value (the same JSON, the
+ * same run), a flag given a value is refused, and an option or a key a
+ * slip away from a known one is named ("did you mean"), with the
+ * section's keys listed for a key (common/params.c vsph_params_hint). */
+START_TEST(test_gnu_options) {
+  struct vsph_test_outcome *o =
+      vsph_test_cli("tensors --kernel=wendland2 --dim=3 --json");
+  ck_assert_msg(o->status == 0, "--opt=value: exit %d: %s", o->status, o->err);
+  char a[1 << 16];
+  snprintf(a, sizeof a, "%s", o->out);
+  o = vsph_test_cli("tensors --kernel wendland2 --dim 3 --json");
+  ck_assert_str_eq(a, o->out);
+  static const struct {
+    const char *args, *want;
+  } bad[] = {
+      {"run cavity --quiet=1", "--quiet takes no value"},
+      {"run cavity --vsic mgf", "did you mean --visc?"},
+      {"run cavity --vsic=mgf", "did you mean --visc?"},
+      {"report --ony patch", "did you mean --only?"},
+      {"run cavity --t-end 0.01 --set Solver:vsic=mgf --out /tmp/vsph-no",
+       "did you mean Solver:visc? (the Solver keys: "},
+      {"run cavity --t-end 0.01 --set Scene:Ree=100 --out /tmp/vsph-no",
+       "did you mean Scene:Re? (the Scene keys: L, U, Re,"},
+      {"run cavity --t-end 0.01 --set Solvr:cfl=1 --out /tmp/vsph-no",
+       "did you mean Solver:cfl? (the sections: Solver, Scene)"},
+      /* nothing near: no guess, the keys only */
+      {"run cavity --t-end 0.01 --set Scene:zzzzzz=1 --out /tmp/vsph-no",
+       "unknown parameter 'Scene:zzzzzz' (the Scene keys: "},
+      {"run cavity --zzzzzz 1", "unknown option '--zzzzzz' (see --help)"},
+  };
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+    o = vsph_test_cli(bad[k].args);
+    ck_assert_msg(o->status == 2 && o->err_lines == 1 &&
+                      strstr(o->err, bad[k].want) != NULL,
+                  "'%s': exit %d, wanted '%s' in: %s", bad[k].args, o->status,
+                  bad[k].want, o->err);
+  }
+  struct stat sb;
+  ck_assert_msg(stat("/tmp/vsph-no", &sb) != 0, "a refused run wrote");
+}
+END_TEST
+
 START_TEST(test_help) {
   const char *cmds[] = {"--help",         "tensors --help",
                         "scaling --help", "dissipation --help",
@@ -219,6 +261,43 @@ static cJSON *json_of(const char *args) {
   ck_assert_msg(j != NULL, "'%s' did not print JSON", args);
   return j;
 }
+
+/* vsph scaling's default table fits a terminal (a row per formulation,
+ * not a column: it was 398 characters wide), its rows read back as the
+ * JSON's figures (printed to 5 digits), and nothing prints as a negative
+ * zero (MGF's normal component on rotation is an exact zero). */
+START_TEST(test_scaling_table) {
+  struct vsph_test_outcome *o = vsph_test_cli("scaling --field rotation");
+  ck_assert_int_eq(o->status, 0);
+  size_t width = 0;
+  for (const char *l = o->out; *l;) {
+    const size_t n = strcspn(l, "\n");
+    width = n > width ? n : width;
+    l += n + (l[n] == '\n');
+  }
+  ck_assert_msg(width <= 110, "a line of %zu characters", width);
+  ck_assert_msg(strstr(o->out, "-0.0000e+00") == NULL &&
+                    strstr(o->out, " -0.0000 ") == NULL,
+                "a negative zero:\n%s", o->out);
+  char out[1 << 16];
+  snprintf(out, sizeof out, "%s", o->out);
+  cJSON *j = json_of("scaling --field rotation --json");
+  const char *row = strstr(out, "\nmeaf ");
+  ck_assert_ptr_nonnull(row);
+  double v[5];
+  ck_assert_int_eq(sscanf(row, " meaf %lf %lf %lf %lf %lf", &v[0], &v[1], &v[2],
+                          &v[3], &v[4]),
+                   5);
+  const cJSON *a = cJSON_GetObjectItemCaseSensitive(j, "meaf");
+  ck_assert_int_eq(cJSON_GetArraySize(a), 5);
+  for (int k = 0; k < 5; k++) {
+    const double w = cJSON_GetArrayItem(a, k)->valuedouble;
+    ck_assert_msg(fabs(v[k] - w) <= 5e-5 * fabs(w), "meaf[%d]: %g, JSON %g", k,
+                  v[k], w);
+  }
+  cJSON_Delete(j);
+}
+END_TEST
 
 /* JSON keys and shapes; values cross-checked against theory: at depth 0
  * N_d = -C_N and F_ddd = -2 C_F (tol: quadrature 1e-10). */
@@ -391,6 +470,8 @@ Suite *vsph_cli_suite(void) {
   tcase_add_loop_test(tc, test_bad_input, 0,
                       (int)(sizeof bad_inputs / sizeof bad_inputs[0]));
   tcase_add_test(tc, test_help);
+  tcase_add_test(tc, test_scaling_table);
+  tcase_add_test(tc, test_gnu_options);
   tcase_add_test(tc, test_json);
   tcase_add_test(tc, test_run_outputs);
   suite_add_tcase(s, tc);

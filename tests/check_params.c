@@ -5,6 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "../common/consts.h"
 #include "../common/params.h"
 #include "check_suites.h"
 
@@ -17,6 +18,51 @@ static void write_file(const char *text) {
   fputs(text, f);
   fclose(f);
 }
+
+/* vsph_params_nearest by hand: a swap of two neighbours is one step
+ * ("vsic" -> "visc"), case is no step, and a word further than its slip
+ * allowance (1 step up to 4 letters, 2 up to 8, 3 beyond) has no
+ * nearest; vsph_params_hint names the nearest key the store holds and
+ * lists its section's keys. */
+START_TEST(test_nearest_and_hint) {
+  const char *const cand[] = {"visc", "cfl", "t_end", "checkpoint_s"};
+  ck_assert_uint_eq(vsph_params_nearest("vsic", cand, 4), 0);
+  ck_assert_uint_eq(vsph_params_nearest("CFL", cand, 4), 1);
+  ck_assert_uint_eq(vsph_params_nearest("cf", cand, 4), 1);       /* 1 step */
+  ck_assert_uint_eq(vsph_params_nearest("xyl", cand, 4), 4);      /* 2 > 1 */
+  ck_assert_uint_eq(vsph_params_nearest("tend", cand, 4), 2);     /* 1 step */
+  ck_assert_uint_eq(vsph_params_nearest("t_ned_", cand, 4), 2);   /* 1 + 1 */
+  ck_assert_uint_eq(vsph_params_nearest("t_nde___", cand, 4), 4); /* 1 + 3 */
+  ck_assert_uint_eq(vsph_params_nearest("chekpoint_sx", cand, 4), 3); /* 2 */
+  ck_assert_uint_eq(vsph_params_nearest(NULL, cand, 4), 4);
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:visc", "mgf"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:cfl", "1"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Scene:Re", "100"), 0);
+  char buf[256];
+  vsph_params_hint(prm, "Solver:vsic", buf, sizeof buf);
+  ck_assert_str_eq(buf,
+                   "; did you mean Solver:visc? (the Solver keys: visc, "
+                   "cfl)");
+  vsph_params_hint(prm, "Scen:Re", buf, sizeof buf);
+  ck_assert_str_eq(buf,
+                   "; did you mean Scene:Re? (the sections: Solver, Scene)");
+  vsph_params_hint(prm, "Scene:zzzzzz", buf, sizeof buf);
+  ck_assert_str_eq(buf, " (the Scene keys: Re)");
+  vsph_params_hint(prm, "Solver:vsic", buf, 20); /* cut, marked */
+  ck_assert_uint_eq(strlen(buf), 19);
+  ck_assert_str_eq(buf + 15, "...)");
+  vsph_params_free(prm);
+  /* common/consts.h: what a table prints never reads "-0.0" */
+  char t[32];
+  snprintf(t, sizeof t, "%+.1f %.3e", vsph_consts_shown(-0.04, 0.05),
+           vsph_consts_shown(-0.0, 0.0));
+  ck_assert_str_eq(t, "+0.0 0.000e+00");
+  snprintf(t, sizeof t, "%+.1f %.3e", vsph_consts_shown(-0.06, 0.05),
+           vsph_consts_shown(-1e-300, 0.0));
+  ck_assert_str_eq(t, "-0.1 -1.000e-300");
+}
+END_TEST
 
 START_TEST(test_read_and_get) {
   write_file(
@@ -98,6 +144,7 @@ Suite *vsph_params_suite(void) {
   Suite *s = suite_create("params");
   TCase *tc = tcase_create("yaml");
   tcase_add_test(tc, test_read_and_get);
+  tcase_add_test(tc, test_nearest_and_hint);
   tcase_add_loop_test(tc, test_bad_files, 0,
                       (int)(sizeof bad_files / sizeof bad_files[0]));
   tcase_add_test(tc, test_bad_files_keys_values_refused);
