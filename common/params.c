@@ -257,11 +257,26 @@ int vsph_params_read_string(struct vsph_params *prm, const char *text,
         } else if (in_seq) {
           const size_t vl = strlen(value);
           snprintf(value + vl, VALUE_MAX - vl, "%s%s", vl ? ", " : "", s);
+        } else if ((!have_key || depth == 1) && strlen(s) >= KEY_MAX) {
+          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                             "%s:%zu: a name of %zu characters, '%.20s...' "
+                             "(at most %d)",
+                             path, line, strlen(s), s, KEY_MAX - 1);
+          st = VSPH_EINVAL;
         } else if (depth == 1) { /* a section name, or a bare root key */
-          if (have_key) {
+          if (have_key && !*s) {
             vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                               "%s:%zu: '%s' must sit inside a section", path,
-                               line, key);
+                               "%s:%zu: section '%.40s' has no keys (they go "
+                               "on the lines below it, indented)",
+                               path, line, key);
+            st = VSPH_EINVAL;
+          } else if (have_key) {
+            vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                               "%s:%zu: '%.40s: %.40s%s' stands at the top "
+                               "level: a setting goes inside a section (a "
+                               "line 'Section:' of its own, the setting "
+                               "indented below it)",
+                               path, line, key, s, strlen(s) > 40 ? "..." : "");
             st = VSPH_EINVAL;
           }
           snprintf(key, sizeof key, "%s", s);

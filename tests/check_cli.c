@@ -262,6 +262,42 @@ static cJSON *json_of(const char *args) {
   return j;
 }
 
+/* A parameter file's shape mistakes, each named as what it is (they all
+ * read "must sit inside a section" before): a section with no keys, a
+ * section given a value, a setting at the top level, a name too long. */
+START_TEST(test_params_file_messages) {
+  static const struct {
+    const char *text, *want;
+  } c[] = {
+      {"Solver:\\n", "section 'Solver' has no keys"},
+      {"Solver: 8\\n", "'Solver: 8' stands at the top level"},
+      {"cfl: 1\\n", "'cfl: 1' stands at the top level"},
+      {NULL, "a name of 300 characters"}, /* Solver:, a key of 300 k */
+  };
+  char dir[] = "/tmp/vsph-yml-XXXXXX", script[2048], longkey[320];
+  memcpy(longkey, "Solver:\\n  ", 11);
+  memset(longkey + 11, 'k', 300);
+  snprintf(longkey + 311, 9, ": 1\\n");
+  vsph_test_scratch(dir);
+  for (size_t k = 0; k < sizeof c / sizeof c[0]; k++) {
+    snprintf(script, sizeof script,
+             "printf '%%b' '%s' > '%s/p.yml' && \"$VSPH_BIN\" run cavity "
+             "--params '%s/p.yml' --t-end 0.001 --out '%s/r'",
+             c[k].text ? c[k].text : longkey, dir, dir, dir);
+    struct vsph_test_outcome *o = vsph_test_shell(script);
+    ck_assert_msg(o->status == 2 && o->err_lines == 1 &&
+                      strstr(o->err, c[k].want) != NULL,
+                  "'%s': exit %d, wanted '%s': %s", c[k].text, o->status,
+                  c[k].want, o->err);
+  }
+  char r[2100];
+  snprintf(r, sizeof r, "%s/r", dir);
+  struct stat sb;
+  ck_assert_msg(stat(r, &sb) != 0, "a refused run wrote %s", r);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 /* vsph scaling's default table fits a terminal (a row per formulation,
  * not a column: it was 398 characters wide), its rows read back as the
  * JSON's figures (printed to 5 digits), and nothing prints as a negative
@@ -472,6 +508,7 @@ Suite *vsph_cli_suite(void) {
   tcase_add_test(tc, test_help);
   tcase_add_test(tc, test_scaling_table);
   tcase_add_test(tc, test_gnu_options);
+  tcase_add_test(tc, test_params_file_messages);
   tcase_add_test(tc, test_json);
   tcase_add_test(tc, test_run_outputs);
   suite_add_tcase(s, tc);

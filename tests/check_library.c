@@ -254,6 +254,12 @@ START_TEST(test_deps_without_apt) {
   o = vsph_test_shell(script);
   ck_assert_msg(o->status == 2 && o->err_lines == 1, "exit %d: %s", o->status,
                 o->err);
+  /* a second group is read like the first: an unknown one refused in one
+   * line naming it, before any probe or apt */
+  o = vsph_test_shell("sh scripts/install-deps fuzz extra");
+  ck_assert_msg(o->status == 2 && o->err_lines == 1 &&
+                    strstr(o->err, "unknown group 'extra'") != NULL,
+                "exit %d: %s", o->status, o->err);
   /* Debian's tools but packages missing, no root and no sudo: refused in
    * one line before any apt-get (a dpkg-query that finds nothing, an
    * apt-get that would fail the test, an id of 1000) */
