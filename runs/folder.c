@@ -1,5 +1,8 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* F_OFD_SETLK: a lock of the open file, which closing another descriptor
+ * of the same file (reading the lock file to judge it) does not drop */
+#define _GNU_SOURCE
 #include "folder.h"
 
 #include <dirent.h>
@@ -108,13 +111,36 @@ static void marker_text(const struct vsph_folder_kind *kind, char *buf,
   snprintf(buf, len, "vsph %s folder\n", kind->name);
 }
 
-/* A lock file as vsph leaves it: a regular file of one link, no longer
- * than a pid and a newline. (Only its metadata: opening it and closing it
- * again would drop this process's own fcntl lock.) */
+/* A lock file as vsph leaves it: a regular file of one link holding
+ * nothing (made, not yet written) or a pid and a newline; anything else
+ * (a user's file of that name) is not vsph's. (The lock is an open file
+ * description's, F_OFD_SETLK, so reading the file here never drops this
+ * process's own.) */
 static int lock_file_ours(const char *path) {
   struct stat sb;
   if (lstat(path, &sb) != 0) return 1; /* absent */
-  return S_ISREG(sb.st_mode) && sb.st_nlink == 1 && sb.st_size <= 24;
+  if (!S_ISREG(sb.st_mode) || sb.st_nlink != 1 || sb.st_size > 24) return 0;
+  if (sb.st_size == 0) return 1;
+  const int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+  if (fd < 0) return 0;
+  char t[32];
+  const ssize_t n = read(fd, t, sizeof t - 1);
+  close(fd);
+  if (n <= 1 || t[n - 1] != '\n') return n == 0;
+  for (ssize_t k = 0; k < n - 1; k++)
+    if (t[k] < '0' || t[k] > '9') return 0;
+  return 1;
+}
+
+/* The pid a lock file names (-1: none). */
+static long lock_pid(int fd) {
+  char t[32];
+  const ssize_t n = pread(fd, t, sizeof t - 1, 0);
+  if (n <= 0) return -1;
+  t[n] = '\0';
+  char *end;
+  const long pid = strtol(t, &end, 10);
+  return end != t && *end == '\n' ? pid : -1;
 }
 
 int vsph_folder_judge(const char *dir, const struct vsph_folder_kind *kind) {
@@ -224,7 +250,7 @@ static int lock(struct vsph_folder *f) {
   memset(&fl, 0, sizeof fl);
   fl.l_type = F_WRLCK;
   fl.l_whence = SEEK_SET;
-  if (fcntl(fd, F_SETLK, &fl) == 0) {
+  if (fcntl(fd, F_OFD_SETLK, &fl) == 0) {
     f->fd = fd;
     char pid[32];
     const int n = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
@@ -235,8 +261,7 @@ static int lock(struct vsph_folder *f) {
     return VSPH_OK;
   }
   const int e = errno;
-  struct flock who = fl;
-  const long pid = fcntl(fd, F_GETLK, &who) == 0 ? (long)who.l_pid : -1L;
+  const long pid = lock_pid(fd); /* its holder wrote it there */
   close(fd);
   if (e == EACCES || e == EAGAIN)
     VSPH_FAIL(VSPH_EINVAL,

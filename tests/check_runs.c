@@ -1273,8 +1273,10 @@ START_TEST(test_refusal_leaves_paths) {
   ck_assert(exists(path));
   snprintf(path, sizeof path, "%s/sh/newdir", dir);
   ck_assert(!exists(path));
-  /* a lock file that is a folder, or shares its inode: refused, exit 2 */
-  for (int k = 0; k < 2; k++) {
+  /* a lock file that is a folder, or shares its inode, or a user's own
+   * small file of that name alone in a folder (it was taken over as a
+   * lone lock before): refused, exit 2, the file untouched */
+  for (int k = 0; k < 3; k++) {
     char sub[300], lock[400], victim[400];
     snprintf(sub, sizeof sub, "%s/l%d", dir, k);
     ck_assert_int_eq(mkdir(sub, 0700), 0);
@@ -1283,8 +1285,10 @@ START_TEST(test_refusal_leaves_paths) {
     put(victim, "keep me\n");
     if (k == 0)
       ck_assert_int_eq(mkdir(lock, 0700), 0);
-    else
+    else if (k == 1)
       ck_assert_int_eq(link(victim, lock), 0);
+    else
+      put(lock, "keep me\n"), snprintf(victim, sizeof victim, "%s", lock);
     snprintf(args, sizeof args,
              "run poiseuille --res 8 --t-end 0.01 --quiet --out %s", sub);
     o = vsph_test_cli(args);
@@ -1294,6 +1298,16 @@ START_TEST(test_refusal_leaves_paths) {
     vsph_test_slurp(victim, text, sizeof text);
     ck_assert_str_eq(text, "keep me\n");
   }
+  /* a lone lock as a killed vsph leaves it (its pid): claimed */
+  char sub[300], lock[400];
+  snprintf(sub, sizeof sub, "%s/stale", dir);
+  ck_assert_int_eq(mkdir(sub, 0700), 0);
+  snprintf(lock, sizeof lock, "%s/%s", sub, VSPH_FOLDER_LOCK);
+  put(lock, "999999\n");
+  snprintf(args, sizeof args,
+           "run poiseuille --res 8 --t-end 0.01 --quiet --out %s", sub);
+  o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 0, "a stale lock: %d %s", o->status, o->err);
   vsph_test_rm_tree(dir);
 }
 END_TEST
