@@ -417,6 +417,13 @@ static int archive_main(const struct opts *o) {
     return vsph_args_fail(CMD,
                           "--archive: a folder name of 1-400 "
                           "characters");
+  /* the archive beside the report, never in it (its runs/ is what is
+   * stored) nor around it */
+  if (inside(o->archive, o->dir) || inside(o->dir, o->archive))
+    return vsph_args_fail(CMD,
+                          "--archive %.200s and the report folder %.200s lie "
+                          "one inside the other: the archive goes beside it",
+                          o->archive, o->dir);
   const char *commit = getenv("VSPH_COMMIT");
   if (commit && !*commit) commit = NULL; /* none known */
   if (commit &&
@@ -443,6 +450,16 @@ static int archive_main(const struct opts *o) {
           "their entries, each said "
           "above)\n",
           n.stored, o->dir, o->archive, n.kept, n.skipped);
+  /* nothing new: the archive stays as it was, its judgement included
+   * (entries.md is judged anew by make archive, with the history) */
+  if (n.stored == 0) {
+    fprintf(stderr,
+            "vsph report: nothing new to store: %s/index.tsv and "
+            "entries.md left as they were\n",
+            o->archive);
+    vsph_jobs_plan_free(&full_plan);
+    return vsph_args_finish(CMD, 0);
+  }
   st = summarise(&full_plan, o->archive, commit);
   vsph_jobs_plan_free(&full_plan);
   if (st) return vsph_args_status(CMD, st);

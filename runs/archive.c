@@ -568,7 +568,13 @@ int vsph_archive_store_frames(const char *report, const char *archive,
     free(key);
   }
   free(c);
-  if (!st) st = write_index(archive, runs, commit);
+  /* the index anew only when an entry changed (or there is none): a store
+   * with nothing new leaves the archive as it was, byte for byte */
+  char ipath[4400];
+  snprintf(ipath, sizeof ipath, "%s/index.tsv", archive);
+  struct stat ib;
+  if (!st && (counts->stored > 0 || stat(ipath, &ib) != 0))
+    st = write_index(archive, runs, commit);
   free_list(names, n);
   vsph_folder_release(&top);
   return st;

@@ -178,7 +178,9 @@ START_TEST(test_archive_inputs) {
   static const char *const env[] = {
       "VSPH_ARCHIVE_HISTORY=/etc/passwd", "VSPH_ARCHIVE_HISTORY=/nonexistent",
       "VSPH_ARCHIVE_HISTORY=r", /* a folder without commits.tsv */
-      "mkdir -p reports/baseline.csv &&"};
+      "mkdir -p reports/baseline.csv &&",
+      /* the archive inside the report's own folder */
+      "mkdir -p r/runs/a && rmdir r/runs/a &&"};
   char dir[] = "/tmp/vsph_arinXXXXXX";
   ck_assert_ptr_nonnull(mkdtemp(dir));
   char script[6000], path[600], bin[2048], cwd[1024];
@@ -188,12 +190,12 @@ START_TEST(test_archive_inputs) {
   snprintf(bin, sizeof bin, "%s%s%.1000s", vb[0] == '/' ? "" : cwd,
            vb[0] == '/' ? "" : "/", vb);
   snprintf(script, sizeof script,
-           "cd %s && mkdir -p r/runs && %s exec %s report --out r --archive a",
-           dir, env[_i], bin);
+           "cd %s && mkdir -p r/runs && %s exec %s report --out r --archive %s",
+           dir, env[_i], bin, _i == 4 ? "r/runs/a" : "a");
   struct vsph_test_outcome *o = vsph_test_shell(script);
   ck_assert_msg(o->status == 2 && o->err_lines == 1, "%s: exit %d: %s", env[_i],
                 o->status, o->err);
-  snprintf(path, sizeof path, "%s/a", dir);
+  snprintf(path, sizeof path, "%s/%s", dir, _i == 4 ? "r/runs/a" : "a");
   struct stat sb;
   ck_assert_msg(stat(path, &sb) != 0, "%s: the archive was made", env[_i]);
   vsph_test_rm_tree(dir);
@@ -502,7 +504,7 @@ Suite *vsph_cli_suite(void) {
   Suite *s = suite_create("cli");
   TCase *tc = tcase_create("errors");
   tcase_set_timeout(tc, 30);
-  tcase_add_loop_test(tc, test_archive_inputs, 0, 4);
+  tcase_add_loop_test(tc, test_archive_inputs, 0, 5);
   tcase_add_loop_test(tc, test_bad_input, 0,
                       (int)(sizeof bad_inputs / sizeof bad_inputs[0]));
   tcase_add_test(tc, test_help);

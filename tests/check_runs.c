@@ -962,10 +962,20 @@ START_TEST(test_archive_store) {
            vsph_source_hash_id, vsph_commit_id[0] ? vsph_commit_id : "abc1234");
   ck_assert_msg(strstr(index, row), "%s", index);
   ck_assert_ptr_null(strstr(index, "\nb\t"));
-  /* again: kept; then a redone with other settings replaces its entry */
+  /* again: kept, and with nothing new the index is left byte for byte as
+   * it was (with no commit given, the row's commit once read "unknown");
+   * then a redone with other settings replaces its entry */
+  struct stat i0, i1;
+  ck_assert_int_eq(stat(path, &i0), 0);
   ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
   ck_assert_uint_eq(n.kept, 1);
   ck_assert_uint_eq(n.stored, 0);
+  ck_assert_int_eq(stat(path, &i1), 0); /* not written anew */
+  ck_assert(i0.st_ino == i1.st_ino && i0.st_mtim.tv_sec == i1.st_mtim.tv_sec &&
+            i0.st_mtim.tv_nsec == i1.st_mtim.tv_nsec);
+  char again[4096];
+  vsph_test_slurp(path, again, sizeof again);
+  ck_assert_str_eq(again, index);
   ck_assert_int_eq(run("poiseuille", set2, a, 0, &r), 0);
   ck_assert_int_eq(vsph_archive_store(rep, ar, NULL, NULL, &n), 0);
   ck_assert_uint_eq(n.stored, 1);
