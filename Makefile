@@ -265,10 +265,9 @@ HISTORY_N = 400
 # The history that judges the archive's runs (scripts/source-commits) into
 # shell variable h; when it cannot be made (outside a git clone, say), its
 # own reason is said, h stays empty and the archive's older runs unjudged.
-HISTORY = if err=$$(scripts/source-commits $(BUILD)/history $(HISTORY_N) \
-	  2>&1 >/dev/null); \
-	  then h=$(BUILD)/history; else h=; echo "make: $$err: reports/full's \
-	  older runs stay unjudged"; fi
+HISTORY = if scripts/source-commits $(BUILD)/history $(HISTORY_N) >/dev/null; \
+	  then h=$(BUILD)/history; else h=; echo "make: reports/full's older \
+	  runs stay unjudged (no history: above)"; fi
 
 # The quick report shows beside its figures the paper-resolution runs of
 # reports/full (when there is one), judged with that history, and reads

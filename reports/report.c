@@ -472,9 +472,20 @@ static int all_cached(const struct vsph_report *R) {
               "VSPH_ARCHIVE_HISTORY names scripts/source-commits' folder; "
               "make full-report sets it)",
               m, R->runs.jobs.n, R->runs.unjudged, R->runs.archive);
-  /* a seal broken by a file: name it */
+  /* a seal broken by a file: name it, in the archive's entry it would
+   * have been read from, or in the report's own folder */
   const struct vsph_jobs_job *j = &R->runs.jobs.job[first];
   char why[700];
+  const char *slash = strrchr(j->dir, '/');
+  if (R->runs.archive &&
+      vsph_archive_entry_damage(R->runs.archive, slash ? slash + 1 : j->dir,
+                                why, sizeof why))
+    VSPH_FAIL(VSPH_EIO,
+              "%zu of the %zu runs are missing; the first, %s, has an entry "
+              "in the archive %s whose seal is broken (%s): restore the "
+              "entry (git checkout %s) or run it (vsph report --jobs N)",
+              m, R->runs.jobs.n, slash ? slash + 1 : j->dir, R->runs.archive,
+              why, R->runs.archive);
   if (vsph_folder_verify(j->dir,
                          j->kind == VSPH_JOBS_RUN ? &vsph_folder_scene_run
                                                   : &vsph_folder_shear_test,

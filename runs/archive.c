@@ -783,6 +783,21 @@ int vsph_archive_entry(const char *archive, const char *name, char *dir,
   return fits;
 }
 
+int vsph_archive_entry_damage(const char *archive, const char *name, char *why,
+                              size_t len) {
+  if (!archive || !name || !why || len == 0) return 0;
+  why[0] = '\0';
+  if (!plain_name(name) || strchr(name, '/')) return 0;
+  char dir[4400];
+  snprintf(dir, sizeof dir, "%s/runs/%s", archive, name);
+  char *key = NULL;
+  const char *files = NULL;
+  if (key_of(dir, &key, &files)) return 0; /* no entry (or no seal) */
+  const int v = vsph_folder_verify(dir, NULL, key, NULL, why, len);
+  free(key);
+  return v < 0;
+}
+
 /* Archive @p archive judged, claimed into @p top, and judged again under
  * the claim (its runs/ folder into @p runs); nothing held on failure. */
 static int claim_judged(const char *archive, char runs[4200],

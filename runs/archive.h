@@ -127,6 +127,13 @@ enum vsph_archive_verdict {
 int vsph_archive_entry(const char *archive, const char *name, char *dir,
                        size_t len, char **key);
 
+/** @brief Why entry @p name of @p archive is not whole, where it is
+ *  there but its seal is broken (a file missing, changed or added) into
+ *  @p why (@p len bytes). Reads only. @return 1 (damaged: @p why names
+ *  the file); 0 (no such entry, or it is whole). */
+int vsph_archive_entry_damage(const char *archive, const char *name, char *why,
+                              size_t len);
+
 /** @brief Write @p text as @p archive's summary.md (the FULL report's
  *  claims and convergence tables, from its assembly from the archive),
  *  under the archive's claim, after judging it an archive. @return
