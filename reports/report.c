@@ -113,6 +113,9 @@ static const struct part PARTS[] = {
 };
 #define NPARTS (sizeof PARTS / sizeof PARTS[0])
 _Static_assert(NPARTS <= 8 * sizeof(unsigned long), "part mask too narrow");
+_Static_assert(NPARTS <=
+                   sizeof((struct vsph_report *)0)->asm_part / sizeof(double),
+               "asm_part too short");
 
 size_t vsph_report_part_count(void) { return NPARTS; }
 
@@ -220,8 +223,9 @@ static int write_baseline(struct vsph_report *R) {
 }
 
 /* Run part p into PARTS_DIR/NAME.md unless its cache key matches. */
-static int run_part(struct vsph_report *R, size_t p, const char *parts_dir,
-                    const char *key, int *cached, double *wall) {
+static int run_part(struct vsph_report *R, size_t p, double left,
+                    const char *parts_dir, const char *key, int *cached,
+                    double *wall) {
   char md[96], kf[700];
   snprintf(md, sizeof md, "%s.md", PARTS[p].name);
   snprintf(kf, sizeof kf, "%s/%s.key", parts_dir, PARTS[p].name);
@@ -243,7 +247,8 @@ static int run_part(struct vsph_report *R, size_t p, const char *parts_dir,
       return VSPH_OK;
     }
   }
-  fprintf(stderr, "vsph report: %s ...\n", PARTS[p].name);
+  fprintf(stderr, "vsph report: %s ... (about %.0f s left)\n", PARTS[p].name,
+          left);
   const double t = omp_get_wtime();
   remove(kf);
   R->md = vsph_files_open(parts_dir, md);
@@ -441,6 +446,51 @@ static void report_free(struct vsph_report *R) {
   free(R);
 }
 
+/* The assembly's seconds when no earlier report says (measured on the
+ * project's 2-core machine, load 1-2: the quick report's parts and pages
+ * 27 s after its runs, the FULL report's assembly from the archive
+ * 210 s), shared evenly among the parts wanted. */
+#define ASM_PRIOR_QUICK 30.0
+#define ASM_PRIOR_FULL 210.0
+
+/* The assembly's expected seconds into R->asm_part and R->asm_rest: from
+ * the earlier report of this fidelity in R->dir (its run.json: each part's
+ * wall time, the rest of its total after the runs), else the prior.
+ * Returns the whole. */
+static double assembly_estimate(struct vsph_report *R, unsigned long want) {
+  char path[700];
+  snprintf(path, sizeof path, "%s/run.json", R->dir);
+  cJSON *o = vsph_json_read(path);
+  const cJSON *fid = o ? cJSON_GetObjectItemCaseSensitive(o, "fidelity") : NULL;
+  const cJSON *w = o ? cJSON_GetObjectItemCaseSensitive(o, "wall_s") : NULL;
+  const int same = cJSON_IsString(fid) && cJSON_IsObject(w) &&
+                   !strcmp(fid->valuestring, R->runs.full ? "full" : "quick");
+  size_t nwant = 0;
+  for (size_t p = 0; p < NPARTS; p++) nwant += want >> p & 1;
+  const double prior =
+      (R->runs.full ? ASM_PRIOR_FULL : ASM_PRIOR_QUICK) / (double)(nwant + 1);
+  double parts = 0.0, total = 0.0;
+  for (size_t p = 0; p < NPARTS; p++) {
+    R->asm_part[p] = 0.0;
+    if (!(want >> p & 1)) continue;
+    const cJSON *x =
+        same ? cJSON_GetObjectItemCaseSensitive(w, PARTS[p].name) : NULL;
+    R->asm_part[p] = cJSON_IsNumber(x) && x->valuedouble >= 0.0
+                         ? x->valuedouble
+                         : prior; /* a cached part: as if made */
+    parts += R->asm_part[p];
+  }
+  R->asm_rest = prior;
+  if (same) { /* the total after the runs, less the parts: the pages */
+    const double rest = vsph_json_get_number(o, "wall_total_s", NAN) -
+                        vsph_json_get_number(o, "runs_wall_s", NAN) - parts;
+    if (isfinite(rest) && rest >= 0.0) R->asm_rest = rest;
+  }
+  total = parts + R->asm_rest;
+  cJSON_Delete(o);
+  return total;
+}
+
 /* Run what the plan misses, as the mode says. */
 static int run_missing(struct vsph_report *R,
                        const struct vsph_report_props *rp) {
@@ -615,6 +665,8 @@ static int make_runs(struct vsph_report *R, const struct vsph_report_props *rp,
       R->runs.made +=
           !R->runs.jobs.job[k].cached && !R->runs.jobs.job[k].from[0];
     const double t_runs = omp_get_wtime();
+    R->runs.jobs.after_s = R->asm_rest; /* the assembly: in the time left */
+    for (size_t p = 0; p < NPARTS; p++) R->runs.jobs.after_s += R->asm_part[p];
     if (rp->writing) *rp->writing = 1; /* runs stop after a checkpoint */
     st = run_missing(R, rp);
     if (rp->writing) *rp->writing = 0; /* parts: a stop ends at once */
@@ -735,8 +787,11 @@ static int write_parts(struct vsph_report *R, unsigned long want,
   if (!st && R->beside && (want >> claims & 1))
     st = vsph_report_beside_prepare(R);
   for (size_t p = 0; p < NPARTS && !st; p++)
-    if (want >> p & 1)
-      st = run_part(R, p, parts_dir, key, &cached[p], &wall[p]);
+    if (want >> p & 1) {
+      double left = R->asm_rest; /* this part's and the later ones' */
+      for (size_t q = p; q < NPARTS; q++) left += R->asm_part[q];
+      st = run_part(R, p, left, parts_dir, key, &cached[p], &wall[p]);
+    }
   vsph_report_beside_free(R);
   /* the baseline comes with the scenes part (its coarsest runs) */
   const int scenes = vsph_report_part_find("scenes");
@@ -823,6 +878,7 @@ int vsph_report_write(const struct vsph_report_props *rp) {
     report_free(R);
     return st;
   }
+  if (!st) assembly_estimate(R, want); /* before run.json is replaced */
   if (!st) st = make_runs(R, rp, parts_dir);
   if (rp->budget_s > 0.0) { /* runs only: say what is left */
     say_left(R, rp, st);

@@ -53,6 +53,9 @@ struct vsph_report {
   struct vsph_jobs beside_jobs;
   struct vsph_archive_judge beside_jd;
   int *beside_stands;
+  /* the assembly's expected seconds, for the time left: each part's, and
+   * what follows them (report.md, report.html, the seal) */
+  double asm_part[48], asm_rest;
 };
 
 /* The five verdict classes of the claims table, in the tally's order

@@ -76,6 +76,8 @@ struct vsph_jobs {
   const volatile sig_atomic_t *stop; /*!< stop request, or NULL */
   int planned;     /*!< 1: a sealed plan: only listed, cached runs are read;
                         0: a run is made when it is read (tests) */
+  double after_s;  /*!< the work after the runs (a report's assembly), in
+                        seconds: part of the time left they print */
   double budget_s; /*!< > 0: vsph_jobs_local_run and vsph_jobs_pool_run run only
                         the missing runs that fit this many seconds (the
                         caller's clock stops them through stop) */

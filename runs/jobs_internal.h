@@ -49,10 +49,11 @@ struct vsph_jobs_eta *vsph_jobs_local_eta_start(struct vsph_jobs_job **order,
                                                 size_t m);
 
 /* ", about N s left" from the runs' states at @p now (running runs'
- * times so far from their start times @p t1), or "" while no run has
+ * times so far from their start times @p t1) and the work after them
+ * (@p after seconds, a report's assembly), or "" while no run has
  * finished: a rate is measured, never assumed. */
 void vsph_jobs_local_eta_text(struct vsph_jobs_eta *e, const double *t1,
-                              size_t m, size_t width, double now, char *buf,
-                              size_t len);
+                              size_t m, size_t width, double now, double after,
+                              char *buf, size_t len);
 
 #endif /* VSPH_RUNS_JOBS_INTERNAL_H */

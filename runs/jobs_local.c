@@ -249,14 +249,18 @@ struct vsph_jobs_eta *vsph_jobs_local_eta_start(struct vsph_jobs_job **order,
  * times so far from their start times @p t1), or "" while no run has
  * finished: a rate is measured, never assumed. */
 void vsph_jobs_local_eta_text(struct vsph_jobs_eta *e, const double *t1,
-                              size_t m, size_t width, double now, char *buf,
-                              size_t len) {
+                              size_t m, size_t width, double now, double after,
+                              char *buf, size_t len) {
   buf[0] = '\0';
   if (!e) return;
   for (size_t k = 0; k < m; k++)
     if (e[k].state == VSPH_JOBS_ETA_RUNNING) e[k].wall = now - t1[k];
   const double left = vsph_jobs_local_eta(e, m, width);
-  if (left >= 0.0) snprintf(buf, len, ", about %.0f s left", left);
+  if (left >= 0.0 && after > 0.0)
+    snprintf(buf, len, ", about %.0f s left (%.0f s of them after the runs)",
+             left + after, after);
+  else if (left >= 0.0)
+    snprintf(buf, len, ", about %.0f s left", left);
 }
 
 int vsph_jobs_local_run(struct vsph_jobs *J, int width) {
@@ -281,16 +285,15 @@ int vsph_jobs_local_run(struct vsph_jobs *J, int width) {
 #pragma omp parallel for schedule(dynamic, 1) num_threads(width)
   for (size_t k = 0; k < m; k++) {
     int failed;
-    size_t me = 0;
 #pragma omp critical(vsph_jobs_local_progress)
     {
       failed = st;
       if (!failed) {
-        me = ++started;
+        started++;
         if (t1) t1[k] = omp_get_wtime();
         if (eta) eta[k].state = VSPH_JOBS_ETA_RUNNING;
-        fprintf(stderr, "  [%zu/%zu] %s: started (%.0f s elapsed)\n", me, m,
-                order[k]->label, omp_get_wtime() - t0);
+        fprintf(stderr, "  started %s (%.0f s elapsed)\n", order[k]->label,
+                omp_get_wtime() - t0);
       }
     }
     if (failed) continue;
@@ -310,20 +313,19 @@ int vsph_jobs_local_run(struct vsph_jobs *J, int width) {
       }
       char left[64] = "";
       if (t1)
-        vsph_jobs_local_eta_text(eta, t1, m, (size_t)width, now, left,
-                                 sizeof left);
+        vsph_jobs_local_eta_text(eta, t1, m, (size_t)width, now, J->after_s,
+                                 left, sizeof left);
+      /* one counter: the runs ended so far, of all */
       if (s == VSPH_EINTR)
         fprintf(stderr,
                 "  [%zu/%zu] %s: stopped at a checkpoint (the next report "
                 "resumes it)\n",
-                me, m, order[k]->label);
+                done, m, order[k]->label);
       else if (s)
-        fprintf(stderr, "  [%zu/%zu] %s: failed\n", me, m, order[k]->label);
+        fprintf(stderr, "  [%zu/%zu] %s: failed\n", done, m, order[k]->label);
       else
-        fprintf(stderr,
-                "  [%zu/%zu] %s: done in %.1f s; %zu of %zu done, %.0f s "
-                "elapsed%s\n",
-                me, m, order[k]->label, now - t_start, done, m, now - t0, left);
+        fprintf(stderr, "  [%zu/%zu] %s: done in %.1f s; %.0f s elapsed%s\n",
+                done, m, order[k]->label, now - t_start, now - t0, left);
     }
   }
   free(order);

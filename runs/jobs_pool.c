@@ -147,8 +147,8 @@ int vsph_jobs_pool_run(struct vsph_jobs *J, const char *exe, size_t njobs,
       }
       t1[next] = omp_get_wtime();
       eta[next].state = VSPH_JOBS_ETA_RUNNING;
-      fprintf(stderr, "  [%zu/%zu] %s: started, pid %ld (%.0f s elapsed)\n",
-              next + 1, m, order[next]->label, (long)pid[next], t1[next] - t0);
+      fprintf(stderr, "  started %s, pid %ld (%.0f s elapsed)\n",
+              order[next]->label, (long)pid[next], t1[next] - t0);
       running++;
       next++;
     }
@@ -185,11 +185,10 @@ int vsph_jobs_pool_run(struct vsph_jobs *J, const char *exe, size_t njobs,
     if (order[k]->cached) {
       char v[96], left[64];
       verdict(order[k], v, sizeof v);
-      vsph_jobs_local_eta_text(eta, t1, m, njobs, now, left, sizeof left);
-      fprintf(stderr,
-              "  [%zu/%zu] %s: %s, %.1f s; %zu of %zu done, %.0f s "
-              "elapsed%s\n",
-              k + 1, m, order[k]->label, v, now - t1[k], done, m, el, left);
+      vsph_jobs_local_eta_text(eta, t1, m, njobs, now, J->after_s, left,
+                               sizeof left);
+      fprintf(stderr, "  [%zu/%zu] %s: %s, %.1f s; %.0f s elapsed%s\n", done, m,
+              order[k]->label, v, now - t1[k], el, left);
     } else if (!stopping) {
       char logf[700];
       log_path(J, order[k], logf, sizeof logf);
@@ -198,7 +197,7 @@ int vsph_jobs_pool_run(struct vsph_jobs *J, const char *exe, size_t njobs,
       fprintf(stderr,
               "  [%zu/%zu] %s: FAILED (exit status %d; see %s); the others "
               "go on\n",
-              k + 1, m, order[k]->label, status[k], logf);
+              done, m, order[k]->label, status[k], logf);
     }
   }
   if (!st) st = record_failed(J, order, next, status);

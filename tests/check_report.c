@@ -16,6 +16,7 @@
 #include "../reports/report_claims.h"
 #include "../reports/report_parts.h"
 #include "../runs/folder.h"
+#include "../runs/jobs_internal.h"
 #include "../solver/scene.h"
 #include "../solver/viscous.h"
 #include "check_suites.h"
@@ -204,6 +205,15 @@ START_TEST(test_time_left) {
   /* a running run past its estimate has nothing left, not less */
   r[3].wall = 9.0;
   ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 1), 32.0 / 7 + 3.5, 1e-12);
+  /* the text: the work after the runs (a report's assembly, 30 s) is in
+   * the time left, and said (the running run's time from its start 9 s
+   * before now) */
+  char buf[128];
+  const double t1[8] = {0, 0, 0, 1.0, 0, 0, 0, 0};
+  vsph_jobs_local_eta_text(r, t1, 8, 1, 10.0, 30.0, buf, sizeof buf);
+  ck_assert_str_eq(buf, ", about 38 s left (30 s of them after the runs)");
+  vsph_jobs_local_eta_text(r, t1, 8, 1, 10.0, 0.0, buf, sizeof buf);
+  ck_assert_str_eq(buf, ", about 8 s left");
   /* nothing finished: no rate measured, no estimate */
   r[0].state = r[1].state = r[2].state = VSPH_JOBS_ETA_WAITING;
   ck_assert(vsph_jobs_local_eta(r, 8, 2) < 0.0);
