@@ -329,7 +329,7 @@ int vsph_contact_shear_measure(struct vsph_params *prm,
       k++;
     }
     const double now = omp_get_wtime();
-    if (progress && now - last > 10.0) {
+    if (progress && now - last > 5.0) { /* never silent for long */
       progress(progress_ctx, t, cs->t_end, now - t0);
       last = now;
     }

@@ -127,6 +127,50 @@ static struct vsph_integrate *bench_run(const struct vsph_scene_type *type,
 /* Best and median of `reps` wall times of fn(arg): the best filters the
  * bursts of a shared machine (the rates are computed from it), the median
  * says what a run sees (under --busy, say). */
+/* The bench's progress on stderr: a line per row measured, with the
+ * time left: each section's rows left at that section's rate so far, or
+ * before its first row at the prior (seconds a row, measured on the
+ * project's 2-core machine at --size 200: quadrature 0.05, particle sums
+ * 0.25, operators 0.4, solver 1.3). The table itself goes to its stream,
+ * flushed row by row. */
+enum { SEC_QUAD, SEC_SUMS, SEC_OPS, SEC_SOLVER, NSEC };
+struct progress {
+  double t0, t_row;              /* start; the last row's end */
+  double rows[NSEC], done[NSEC]; /* each section's cost, and that done */
+  double spent[NSEC];            /* each section's seconds so far */
+  size_t nrow, nrows;            /* rows measured, of all */
+  FILE *out;                     /* the table's stream */
+};
+
+/* A solver row's cost in units of MGF's force row (measured here: a
+ * force row 0.43 s, PVWF's 0.87, contact SPH's 1.9, the general loop's
+ * 1.2, a step row with its memory runs 1.3-3.2). */
+static double row_cost(const char *what) {
+  const double c = !strncmp(what, "step", 4) ? 5.0
+                   : strstr(what, "contact") ? 4.5
+                   : strstr(what, "general") ? 3.0
+                                             : 1.0;
+  return strstr(what, "PVWF") ? 1.8 * c : c;
+}
+
+static void step(struct progress *pg, int sec, const char *what, double cost) {
+  static const double PRIOR[NSEC] = {0.05, 0.25, 0.4, 0.43};
+  fflush(pg->out);
+  const double now = omp_get_wtime();
+  pg->done[sec] += cost;
+  pg->spent[sec] += now - pg->t_row;
+  pg->t_row = now;
+  pg->nrow++;
+  double left = 0.0;
+  for (int k = 0; k < NSEC; k++) {
+    const double rate = pg->done[k] > 0 ? pg->spent[k] / pg->done[k] : PRIOR[k];
+    left += rate * (pg->rows[k] - pg->done[k]);
+  }
+  fprintf(stderr,
+          "vsph bench: [%zu/%zu] %s, %.0f s elapsed, about %.0f s left\n",
+          pg->nrow, pg->nrows, what, now - pg->t0, left);
+}
+
 static int cmp_double(const void *a, const void *b) {
   const double x = *(const double *)a, y = *(const double *)b;
   return (x > y) - (x < y);
@@ -236,6 +280,35 @@ struct bench_case {
                   of its own), 2: the same through the general loop */
 };
 
+/* The solver table's rows. */
+static const struct bench_case SOLVER[] = {
+    {"force MGF", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0, 0, 0, 0,
+     0},
+    {"force MGF, gather", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0,
+     0, 0, 1, 0},
+    {"force MGF + delta 0.1", &vsph_stretching_square_type, VSPH_VISCOUS_MGF,
+     0.1, 0, 0, 0, 0},
+    {"force MEAF", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 0.0, 0, 0,
+     0, 0},
+    {"force PVWF (2 passes)", &vsph_stretching_square_type, VSPH_VISCOUS_PVWF,
+     0.0, 0, 0, 0, 0},
+    {"force PVWF, gather", &vsph_stretching_square_type, VSPH_VISCOUS_PVWF, 0.0,
+     0, 0, 1, 0},
+    {"force contact SPH", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 0.0,
+     0, 1, 0, 0},
+    {"step MGF, stretching square", &vsph_stretching_square_type,
+     VSPH_VISCOUS_MGF, 0.0, 1, 0, 0, 0},
+    {"step PVWF, stretching square", &vsph_stretching_square_type,
+     VSPH_VISCOUS_PVWF, 0.0, 1, 0, 0, 0},
+    {"step MGF, standing wave", &vsph_standing_wave_type, VSPH_VISCOUS_MGF, 0.0,
+     1, 0, 0, 0},
+    {"force MGF, cubic", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0, 0,
+     0, 1, 1},
+    {"force MGF, cubic, general", &vsph_stretching_square_type,
+     VSPH_VISCOUS_MGF, 0.0, 0, 0, 1, 2},
+};
+#define SOLVER_CASES (sizeof SOLVER / sizeof SOLVER[0])
+
 /* One case: its force evaluation or step timed on 1 and 2 threads. */
 static int bench_case(FILE *out, const struct bench_case *bc, size_t res) {
   struct solver_arg a = {
@@ -282,35 +355,9 @@ static int bench_case(FILE *out, const struct bench_case *bc, size_t res) {
   return VSPH_OK;
 }
 
-static int bench_solver(FILE *out, int busy) {
+static int bench_solver(FILE *out, int busy, struct progress *pg) {
   /* the peer's size: 205^2 = 42025 particles */
   const size_t res = 205;
-  static const struct bench_case cases[] = {
-      {"force MGF", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0, 0, 0,
-       0, 0},
-      {"force MGF, gather", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0,
-       0, 0, 1, 0},
-      {"force MGF + delta 0.1", &vsph_stretching_square_type, VSPH_VISCOUS_MGF,
-       0.1, 0, 0, 0, 0},
-      {"force MEAF", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 0.0, 0, 0,
-       0, 0},
-      {"force PVWF (2 passes)", &vsph_stretching_square_type, VSPH_VISCOUS_PVWF,
-       0.0, 0, 0, 0, 0},
-      {"force PVWF, gather", &vsph_stretching_square_type, VSPH_VISCOUS_PVWF,
-       0.0, 0, 0, 1, 0},
-      {"force contact SPH", &vsph_stretching_square_type, VSPH_VISCOUS_MEAF,
-       0.0, 0, 1, 0, 0},
-      {"step MGF, stretching square", &vsph_stretching_square_type,
-       VSPH_VISCOUS_MGF, 0.0, 1, 0, 0, 0},
-      {"step PVWF, stretching square", &vsph_stretching_square_type,
-       VSPH_VISCOUS_PVWF, 0.0, 1, 0, 0, 0},
-      {"step MGF, standing wave", &vsph_standing_wave_type, VSPH_VISCOUS_MGF,
-       0.0, 1, 0, 0, 0},
-      {"force MGF, cubic", &vsph_stretching_square_type, VSPH_VISCOUS_MGF, 0.0,
-       0, 0, 1, 1},
-      {"force MGF, cubic, general", &vsph_stretching_square_type,
-       VSPH_VISCOUS_MGF, 0.0, 0, 0, 1, 2},
-  };
   pid_t pids[8] = {0};
   if (busy > 8) busy = 8;
   fprintf(out,
@@ -333,8 +380,9 @@ static int bench_solver(FILE *out, int busy) {
           "load");
   busy_start(pids, busy);
   int st = VSPH_OK;
-  for (size_t c = 0; c < sizeof cases / sizeof cases[0] && !st; c++) {
-    st = bench_case(out, &cases[c], res);
+  for (size_t c = 0; c < SOLVER_CASES && !st; c++) {
+    st = bench_case(out, &SOLVER[c], res);
+    step(pg, SEC_SOLVER, SOLVER[c].what, row_cost(SOLVER[c].what));
   }
   busy_stop(pids, busy);
   omp_set_num_threads(2);
@@ -373,7 +421,7 @@ static void print_load(FILE *out) {
           la[0], la[1], la[2], vsph_sysinfo_wait_policy(wp, sizeof wp));
 }
 
-static int bench_quadrature(FILE *out) {
+static int bench_quadrature(FILE *out, struct progress *pg) {
   fprintf(out, "\n## F, G, N, M by quadrature (epsrel 1e-10), best of 5, ms\n");
   fprintf(out, "%-10s %4s %10s %10s %10s\n", "kernel", "dim", "depth 0",
           "depth 1.3", "depth k");
@@ -396,13 +444,14 @@ static int bench_quadrature(FILE *out) {
         fprintf(out, " %10.3f", 1e3 * best_of(5, quad_once, &qa));
       }
       fprintf(out, "\n");
+      step(pg, SEC_QUAD, "quadrature", 1.0);
     }
   gsl_integration_workspace_free(qa.wo);
   gsl_integration_workspace_free(qa.wi);
   return VSPH_OK;
 }
 
-static int bench_sums(FILE *out) {
+static int bench_sums(FILE *out, struct progress *pg) {
   fprintf(out, "\n## particle sums (3-D half space, 3h Gaussian), best of 5\n");
   fprintf(out, "%8s %10s %12s %12s\n", "h/dx", "particles", "time (ms)",
           "ns/particle");
@@ -416,11 +465,12 @@ static int bench_sums(FILE *out) {
     fprintf(out, "%8.1f %10zu %12.3f %12.2f\n", hdx, sa.p->n, 1e3 * t,
             1e9 * t / (double)sa.p->n);
     vsph_particles_free(sa.p);
+    step(pg, SEC_SUMS, "particle sums", 1.0);
   }
   return VSPH_OK;
 }
 
-static int bench_operators(FILE *out, size_t side) {
+static int bench_operators(FILE *out, size_t side, struct progress *pg) {
   fprintf(out,
           "\n## viscous operators, %zu x %zu square, h/dx 4/3, best of 5\n",
           side, side);
@@ -460,6 +510,7 @@ static int bench_operators(FILE *out, size_t side) {
     const double t2 = best_of(5, visc_once, &va);
     fprintf(out, "%-6s %12.3f %12.3f %16.3e %9.2f\n", vsph_viscous_name(form),
             1e3 * t1, 1e3 * t2, passes * (double)inter / t1, t1 / t2);
+    step(pg, SEC_OPS, vsph_viscous_name(form), 1.0);
   }
 done:
   free(buf);
@@ -479,12 +530,24 @@ int vsph_bench_run(const struct vsph_bench_props *bp, FILE *out) {
           omp_get_max_threads());
   print_load(out);
   int st = VSPH_OK;
+  struct progress pg = {.t0 = omp_get_wtime(), .out = out};
+  pg.t_row = pg.t0;
+  for (size_t c = 0; c < SOLVER_CASES; c++)
+    pg.rows[SEC_SOLVER] += row_cost(SOLVER[c].what);
+  pg.nrows = SOLVER_CASES;
   if (!bp->solver_only) {
-    st = bench_quadrature(out);
-    if (!st) st = bench_sums(out);
-    if (!st) st = bench_operators(out, bp->size);
+    pg.rows[SEC_QUAD] = 2.0 * (double)vsph_kernel_count();
+    pg.rows[SEC_SUMS] = 4;
+    pg.rows[SEC_OPS] = VSPH_VISCOUS_FORM_COUNT;
+    pg.nrows += 2 * vsph_kernel_count() + 4 + VSPH_VISCOUS_FORM_COUNT;
   }
-  if (!st) st = bench_solver(out, bp->busy);
+  fprintf(stderr, "vsph bench: %zu rows to measure\n", pg.nrows);
+  if (!bp->solver_only) {
+    st = bench_quadrature(out, &pg);
+    if (!st) st = bench_sums(out, &pg);
+    if (!st) st = bench_operators(out, bp->size, &pg);
+  }
+  if (!st) st = bench_solver(out, bp->busy, &pg);
   if (!st) print_load(out);
   return st;
 }

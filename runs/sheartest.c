@@ -17,8 +17,15 @@
 
 void vsph_sheartest_progress(void *ctx, double t, double t_end, double wall) {
   (void)ctx;
-  fprintf(stderr, "vsph contact: shear t = %.4g / %.4g s, %.0f s\n", t, t_end,
-          wall);
+  /* the time left at the rate so far (the step is near constant) */
+  if (t > 0.0 && t_end > t)
+    fprintf(stderr,
+            "vsph contact: shear t = %.4g / %.4g s (%.0f%%), %.0f s elapsed, "
+            "about %.0f s left\n",
+            t, t_end, 100.0 * t / t_end, wall, wall * (t_end - t) / t);
+  else
+    fprintf(stderr, "vsph contact: shear t = %.4g / %.4g s, %.0f s elapsed\n",
+            t, t_end, wall);
 }
 
 int vsph_sheartest_execute(struct vsph_params *prm, size_t nprof,
