@@ -27,7 +27,7 @@ CFLAGS   ?= $(OPT) $(ARCH) -g
 # -fno-math-errno: nothing reads errno after a math call, and without it
 # sqrt cannot be vectorised.
 # -fPIC: the program, libvsph.a and libvsph.so share one set of objects
-# (measured: the same results bit for bit and the same speed, README);
+# (measured: the same results bit for bit and the same speed, docs/speed.md);
 # -fno-semantic-interposition lets the library's calls to its own
 # functions stay direct; -fvisibility=hidden: libvsph.so exports only what
 # the public headers mark VSPH_API (common/api.h).
@@ -132,7 +132,7 @@ $(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(TESTLIBS) $(LDLIBS)
 
 # The FULL report's runs that ended, kept compact in reports/full (see
-# README: vsph report --archive); the commit named for runs of these
+# docs/usage.md: vsph report --archive); the commit named for runs of these
 # sources is HEAD's.
 archive: deps $(BUILD)/vsph
 	scripts/source-commits $(BUILD)/history $(HISTORY_N)
@@ -144,7 +144,7 @@ archive: deps $(BUILD)/vsph
 # One sitting of the FULL report's runs: the costliest runs that do not
 # stand in reports/full and fit BUDGET (default 150m), niced, two at a
 # time, checkpointed, into reports/out-full; then `make archive` keeps the
-# ones that ended (README: vsph report --budget, --skip-archived).
+# ones that ended (docs/usage.md: vsph report --budget, --skip-archived).
 # BUDGET reaches vsph through the environment, as one argument that no
 # shell reads (vsph refuses what is not a time); the history as for
 # make report.
@@ -155,7 +155,7 @@ full-sitting: deps $(BUILD)/vsph
 	  --out reports/out-full --budget "$$BUDGET" --skip-archived reports/full
 
 # The FULL report assembled into reports/out-full from its own runs and
-# the ones that stand in reports/full (README: --from-archive); then
+# the ones that stand in reports/full (docs/usage.md: --from-archive); then
 # reports/full/summary.md holds its claims and convergence tables.
 full-report: deps $(BUILD)/vsph
 	@$(HISTORY); VSPH_ARCHIVE_HISTORY=$$h $(BUILD)/vsph report --full \
@@ -167,7 +167,7 @@ full-report: deps $(BUILD)/vsph
 # objects; runs/, reports/ and cli/ stay in the program. The public headers (the front door, vsph.h, and
 # what it includes) install under include/vsph/ with their folders; a
 # program links it through pkg-config (vsph.pc), as examples/regression
-# shows (README, "vsph as a library").
+# shows (docs/library.md).
 VERSION := $(shell sed -n 's/^\#define VSPH_VERSION "\(.*\)"/\1/p' common/consts.h)
 SOVER   := 0
 LIBA    := $(BUILD)/libvsph.a
@@ -271,7 +271,7 @@ HISTORY = if scripts/source-commits $(BUILD)/history $(HISTORY_N) >/dev/null; \
 
 # The quick report shows beside its figures the paper-resolution runs of
 # reports/full (when there is one), judged with that history, and reads
-# from there the runs it shares with the FULL plan that stand (README:
+# from there the runs it shares with the FULL plan that stand (docs/usage.md:
 # --from-archive); FRESH=1 makes them here instead (FRESH=0 or unset:
 # read).
 report: deps

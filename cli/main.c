@@ -61,7 +61,7 @@ static void usage(FILE *f) {
  * with 2 threads against 3.5 s with 1). Sleeping at once (passive) costs a
  * wake-up at every barrier instead (the same small run, quiet: 2.3 s on 2
  * threads against 1.4 s spinning). GOMP_SPINCOUNT=1000 keeps both: 1.5 s
- * quiet, 4.2 s loaded; large runs are the same under all three (README,
+ * quiet, 4.2 s loaded; large runs are the same under all three (docs/speed.md,
  * Speed). libgomp reads these once, when it loads, so vsph sets it and
  * starts itself again; a policy the environment gives (OMP_WAIT_POLICY or
  * GOMP_SPINCOUNT) is kept. If the restart fails, vsph runs on under

@@ -189,7 +189,7 @@ static double timed(int reps, void (*fn)(void *), void *arg, double *median) {
 }
 
 /* The peer's figures, measured side by side on this 2-core machine when
- * the speed work began (README, "Speed"): DualSPHysics v5.4 on the CPU (pair
+ * the speed work began (docs/speed.md): DualSPHysics v5.4 on the CPU (pair
  * physics in float, -O3 -ffast-math), 2-D, about 42k particles and 45
  * neighbours, 1 thread, quiet. Quoted, not measured here: they sit beside our
  * rows to compare. */

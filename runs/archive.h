@@ -43,7 +43,7 @@ struct vsph_archive_counts {
  *  the stretching square's L/dx = 320 (0.16 from 1 to 2 m), and a value
  *  within an eighth of a picture's colour level (256 over a scale that
  *  spans zero); at 10 bits the FULL report's 23 frames come to about 9 MB
- *  (README, the FULL archive). */
+ *  (docs/usage.md, the FULL archive). */
 #define VSPH_ARCHIVE_FRAME_BITS 10
 
 /** The snapshots a run archive keeps of some runs, as frames

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../analysis/references.h"
 #include "check_suites.h"
 
 /* What the example must print: the line's label, the value by closed
@@ -153,7 +154,7 @@ START_TEST(test_exports) {
       "the manual:\nend\n";
   const char *at = strstr(o->out, "hidden but named:");
   ck_assert_msg(at && !strcmp(at, want), "%s", o->out);
-  /* the public interface of README, "vsph as a library": ~190 names */
+  /* the public interface of docs/library.md: ~190 names */
   ck_assert_int_gt(n, 150);
   vsph_test_rm_tree(dir);
 }
@@ -333,12 +334,64 @@ START_TEST(test_installed_dispatch) {
 }
 END_TEST
 
+/* The README's walkthrough, as a newcomer types it: step 1's command
+ * (the run, its 11 snapshots, energy.csv's columns 2 and 12 being E_k and
+ * Lighthill's reference, as step 3's gnuplot line plots them), and step
+ * 5's program, taken from the README's C block, built against the staged
+ * install through pkg-config and run: it prints the Poiseuille series'
+ * value, held to this process's own (the same library, rounding). */
+START_TEST(test_readme_walkthrough) {
+  char sbuf[4096];
+  const char *stage = staged(sbuf);
+  static char readme[1 << 17];
+  vsph_test_slurp("README.md", readme, sizeof readme);
+  const char *cmd = strstr(readme, "    build/vsph run standing-wave ");
+  ck_assert_msg(cmd != NULL, "README: no step 1 command");
+  char line[256];
+  const size_t n = strcspn(cmd + 4, "\n");
+  ck_assert_uint_lt(n, sizeof line);
+  memcpy(line, cmd + 4 + strlen("build/vsph"), n - strlen("build/vsph"));
+  line[n - strlen("build/vsph")] = '\0';
+  const char *c0 = strstr(readme, "```c\n"),
+             *c1 = c0 ? strstr(c0 + 5, "```") : NULL;
+  ck_assert_msg(c0 && c1, "README: no C block");
+  char dir[] = "/tmp/vsph-readme-XXXXXX", path[200], script[3 * 4096 + 512];
+  vsph_test_scratch(dir);
+  snprintf(path, sizeof path, "%s/demo.c", dir);
+  FILE *f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fwrite(c0 + 5, 1, (size_t)(c1 - c0 - 5), f);
+  ck_assert_int_eq(fclose(f), 0);
+  snprintf(script, sizeof script,
+           "B=$(realpath \"$VSPH_BIN\") && cd '%s' && $B%s --quiet && "
+           "ls wave/snap_*.vtp | wc -l && head -1 wave/energy.csv | cut -d, "
+           "-f2,12 && export PKG_CONFIG_PATH='%s/lib/pkgconfig' && "
+           "cc demo.c $(pkg-config --cflags --libs vsph) -o demo && "
+           "LD_LIBRARY_PATH='%s/lib' ./demo",
+           dir, line, stage, stage);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 0, "exit %d\n%s\n%s", o->status, o->out, o->err);
+  int snaps = 0;
+  char cols[64];
+  double u = NAN;
+  ck_assert_msg(sscanf(o->out, "%d %63s u/U0 = %lf", &snaps, cols, &u) == 3,
+                "%s", o->out);
+  ck_assert_int_eq(snaps, 11);
+  ck_assert_str_eq(cols, "Ek,Ek_ref");
+  /* printed to 6 decimals */
+  ck_assert_double_eq_tol(
+      u, vsph_references_poiseuille(0.3, 1.0, 1.0, 0.1, 1.0, NULL), 5e-7);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_library_suite(void) {
   Suite *s = suite_create("library");
   TCase *tc = tcase_create("install");
   tcase_set_timeout(tc, 120);
   tcase_add_test(tc, test_installed_example);
   tcase_add_test(tc, test_installed_dispatch);
+  tcase_add_test(tc, test_readme_walkthrough);
   tcase_add_test(tc, test_exports);
   tcase_add_test(tc, test_install_refusals);
   tcase_add_test(tc, test_deps_without_apt);

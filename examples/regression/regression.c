@@ -2,7 +2,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* A regression test of another code, written against libvsph alone: the
  * installed headers and library, found by pkg-config (see Makefile here
- * and README, "vsph as a library"). It checks three things a code of
+ * and docs/library.md). It checks three things a code of
  * one's own would check against vsph:
  *
  *   1. a kernel moment tensor: M = -int x (x) x W'(s)/s dV of the 2-D
