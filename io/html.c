@@ -1,12 +1,16 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* realpath */
+#define _XOPEN_SOURCE 700
 #include "html.h"
 
 #include <cmark-gfm-core-extensions.h>
 #include <cmark-gfm.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "../common/status.h"
 #include "files.h"
@@ -23,6 +27,207 @@ static void base64(FILE *f, const unsigned char *d, size_t n) {
     fputc(i + 1 < n ? tb[v >> 6 & 63] : '=', f);
     fputc(i + 2 < n ? tb[v & 63] : '=', f);
   }
+}
+
+/* ------------------------------------------------- mathematics as text */
+
+/* Greek letters the report's prose spells out, as whole words. */
+static const struct {
+  const char *word, *utf8;
+} GREEK[] = {{"alpha", "\u03b1"}, {"beta", "\u03b2"},  {"delta", "\u03b4"},
+             {"eta", "\u03b7"},   {"theta", "\u03b8"}, {"lambda", "\u03bb"},
+             {"mu", "\u03bc"},    {"nu", "\u03bd"},    {"xi", "\u03be"},
+             {"rho", "\u03c1"},   {"sigma", "\u03c3"}, {"omega", "\u03c9"},
+             {"zeta", "\u03b6"},  {"Omega", "\u03a9"}, {"kappa", "\u03ba"}};
+
+/* Signs the prose writes in ASCII. */
+static const struct {
+  const char *ascii, *utf8;
+} SIGNS[] = {{"!=", "\u2260"},
+             {"<=", "\u2264"},
+             {">=", "\u2265"},
+             {"+-", "\u00b1"},
+             {"n.D.n", "n\u00b7D\u00b7n"},
+             {"->", "\u2192"}};
+
+static int word_char(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+         (c >= '0' && c <= '9') || c == '_';
+}
+
+/* @p s[0..n) HTML-escaped into @p m. */
+static void escaped(FILE *m, const char *s, size_t n) {
+  for (size_t k = 0; k < n; k++)
+    if (s[k] == '&')
+      fputs("&amp;", m);
+    else if (s[k] == '<')
+      fputs("&lt;", m);
+    else if (s[k] == '>')
+      fputs("&gt;", m);
+    else
+      fputc(s[k], m);
+}
+
+/* A word written out: a Greek letter's name as the letter, else itself. */
+static void word_out(FILE *m, const char *w, size_t n) {
+  for (size_t g = 0; g < sizeof GREEK / sizeof GREEK[0]; g++)
+    if (strlen(GREEK[g].word) == n && !strncmp(GREEK[g].word, w, n)) {
+      fputs(GREEK[g].utf8, m);
+      return;
+    }
+  escaped(m, w, n);
+}
+
+/* Text @p s of the prose as HTML with its mathematics set: a word X_Y
+ * (X one or two letters, Y letters or digits, one underscore) as X with Y
+ * subscript, a Greek letter's name as the letter, ^N (N digits, signed)
+ * as a superscript, and !=, <=, >=, +-, ->, n.D.n as their signs; the
+ * rest escaped. Returns 1 where anything was set. */
+static int mathify(FILE *m, const char *s, const char *docs) {
+  int any = 0;
+  for (const char *c = s; *c;) {
+    size_t g = 0; /* a sign first: n.D.n is one, not a word */
+    while (g < sizeof SIGNS / sizeof SIGNS[0] &&
+           strncmp(c, SIGNS[g].ascii, strlen(SIGNS[g].ascii)))
+      g++;
+    if (g < sizeof SIGNS / sizeof SIGNS[0]) {
+      fputs(SIGNS[g].utf8, m);
+      c += strlen(SIGNS[g].ascii);
+      any = 1;
+      continue;
+    }
+    /* docs/NAME.md: a link to the source tree's document (@p docs: its
+     * folder from the page's, or NULL where there is none) */
+    if (docs && !strncmp(c, "docs/", 5) && (c == s || !word_char(c[-1]))) {
+      size_t n = 5;
+      while (word_char(c[n]) || c[n] == '-') n++;
+      if (n > 5 && !strncmp(c + n, ".md", 3)) {
+        n += 3;
+        fprintf(m, "<a href=\"%s/", docs);
+        escaped(m, c + 5, n - 5);
+        fputs("\">", m);
+        escaped(m, c, n);
+        fputs("</a>", m);
+        any = 1;
+        c += n;
+        continue;
+      }
+    }
+    if (word_char(*c) && (c == s || !word_char(c[-1]))) { /* a word */
+      size_t n = 0;
+      while (word_char(c[n])) n++;
+      const char *us = memchr(c, '_', n);
+      const size_t x = us ? (size_t)(us - c) : 0;
+      int greek = 0; /* X a Greek letter's name (eta_num) */
+      for (size_t q = 0; us && q < sizeof GREEK / sizeof GREEK[0]; q++)
+        greek |= strlen(GREEK[q].word) == x && !strncmp(GREEK[q].word, c, x);
+      const int sub = us && x >= 1 && (x <= 2 || greek) && n - x - 1 >= 1 &&
+                      !memchr(us + 1, '_', n - x - 1) &&
+                      !(c[n] == '.' && word_char(c[n + 1])); /* file.ext */
+      if (sub) {
+        word_out(m, c, x);
+        fputs("<sub>", m);
+        word_out(m, us + 1, n - x - 1);
+        fputs("</sub>", m);
+        any = 1;
+      } else {
+        const long before = ftell(m);
+        word_out(m, c, n);
+        any |= ftell(m) != before + (long)n;
+      }
+      c += n;
+      continue;
+    }
+    if (*c == '^' && c > s &&
+        (word_char(c[-1]) || c[-1] == ')' || c[-1] == '|')) {
+      size_t n = 1 + (c[1] == '-' || c[1] == '+');
+      const size_t d0 = n;
+      while (c[n] >= '0' && c[n] <= '9') n++;
+      if (n > d0) {
+        fputs("<sup>", m);
+        escaped(m, c + 1, n - 1);
+        fputs("</sup>", m);
+        any = 1;
+        c += n;
+        continue;
+      }
+    }
+    escaped(m, c, 1);
+    c++;
+  }
+  return any;
+}
+
+/* The source tree's docs/ folder (the current folder's, where it holds
+ * docs/theory.md) as a path from folder @p dir, into @p buf; NULL where
+ * there is none. */
+static const char *docs_from(const char *dir, char *buf, size_t len) {
+  char d[PATH_MAX], t[PATH_MAX];
+  struct stat sb;
+  if (stat("docs/theory.md", &sb) != 0 || !realpath(dir, d) ||
+      !realpath("docs", t))
+    return NULL;
+  size_t k = 0, common = 0; /* the longest common run of whole folders */
+  while (d[k] && d[k] == t[k]) {
+    if (d[k] == '/') common = k;
+    k++;
+  }
+  if (!d[k] && t[k] == '/') common = k;
+  size_t at = 0;
+  for (const char *c = d + common; *c && at < len; c++) /* up from dir */
+    if (*c == '/') at += (size_t)snprintf(buf + at, len - at, "../");
+  if (at < len) snprintf(buf + at, len - at, "%s", t + common + 1);
+  return at < len && strlen(buf) < len - 1 ? buf : NULL;
+}
+
+/* Every text node of @p doc (never code, a link's target or raw HTML) with
+ * its mathematics set (mathify), as inline HTML in its place. */
+static int set_mathematics(cmark_node *doc, const char *docs) {
+  size_t n = 0, cap = 0;
+  cmark_node **text = NULL;
+  cmark_iter *it = cmark_iter_new(doc);
+  if (!it) return VSPH_ENOMEM;
+  for (cmark_event_type ev; (ev = cmark_iter_next(it)) != CMARK_EVENT_DONE;) {
+    cmark_node *nd = cmark_iter_get_node(it);
+    if (ev != CMARK_EVENT_ENTER || cmark_node_get_type(nd) != CMARK_NODE_TEXT)
+      continue;
+    if (n == cap) {
+      cap = cap ? 2 * cap : 256;
+      cmark_node **t = realloc(text, cap * sizeof *t);
+      if (!t) {
+        free(text);
+        cmark_iter_free(it);
+        return VSPH_ENOMEM;
+      }
+      text = t;
+    }
+    text[n++] = nd;
+  }
+  cmark_iter_free(it);
+  int st = VSPH_OK;
+  for (size_t k = 0; k < n && !st; k++) {
+    const char *lit = cmark_node_get_literal(text[k]);
+    char *html = NULL;
+    size_t len = 0;
+    FILE *m = lit ? open_memstream(&html, &len) : NULL;
+    if (!m) continue;
+    const int any = mathify(m, lit, docs);
+    if (fclose(m) != 0) {
+      st = VSPH_ENOMEM;
+    } else if (any) {
+      cmark_node *h = cmark_node_new(CMARK_NODE_HTML_INLINE);
+      if (!h || !cmark_node_set_literal(h, html) ||
+          !cmark_node_insert_before(text[k], h)) {
+        if (h) cmark_node_free(h);
+        st = VSPH_ENOMEM;
+      } else {
+        cmark_node_free(text[k]); /* unlinks it */
+      }
+    }
+    free(html);
+  }
+  free(text);
+  return st;
 }
 
 int vsph_html_render(const char *dir, const char *md, const char *html,
@@ -45,6 +250,13 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
   cmark_parser_attach_syntax_extension(ps, table);
   cmark_parser_feed(ps, text, len);
   cmark_node *doc = cmark_parser_finish(ps);
+  char docs[4096];
+  if (doc && set_mathematics(doc, docs_from(dir, docs, sizeof docs))) {
+    cmark_node_free(doc);
+    cmark_parser_free(ps);
+    free(text);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot set the report's mathematics");
+  }
   char *body = cmark_render_html(doc, CMARK_OPT_DEFAULT | CMARK_OPT_UNSAFE,
                                  cmark_parser_get_syntax_extensions(ps));
   cmark_node_free(doc);

@@ -294,9 +294,6 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
   vsph_text_set(tv, "nread", "%zu", R->runs.from_archive);
   vsph_text_set(tv, "nrun", "%zu", R->runs.jobs.n);
   vsph_text_set(tv, "archive", "%s", R->runs.archive ? R->runs.archive : "");
-  if (!st && !R->runs.full && R->runs.from_archive)
-    st = vsph_report_doc_say(R, "report.quick_archive");
-  if (!st) st = vsph_report_doc_say(R, "report.head_sources");
   /* every part present, the claims first (the summary); a part's text
    * after its "<!-- appendix -->" mark goes to the appendices at the end */
   char *text[NPARTS] = {0};
@@ -312,6 +309,21 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
     }
   }
   const int claims = vsph_report_part_find("claims");
+  /* the first screen: the question, then the tally and the findings the
+   * claims part marked (moved here from its section), then the sources
+   * and how the runs were made */
+  if (!st) st = vsph_report_doc_say(R, "report.question");
+  char *f0 = text[claims] ? strstr(text[claims], "<!-- findings -->") : NULL;
+  char *f1 = f0 ? strstr(f0, "<!-- /findings -->") : NULL;
+  if (!st && f0 && f1) {
+    const char *body = f0 + strlen("<!-- findings -->\n");
+    fprintf(md, "%.*s", (int)(f1 - body), body);
+    memmove(f0, f1 + strlen("<!-- /findings -->\n"),
+            strlen(f1 + strlen("<!-- /findings -->\n")) + 1);
+  }
+  if (!st) st = vsph_report_doc_say(R, "report.head_sources");
+  if (!st && !R->runs.full && R->runs.from_archive)
+    st = vsph_report_doc_say(R, "report.quick_archive");
   size_t order[NPARTS], n = 0;
   if (text[claims]) order[n++] = (size_t)claims;
   for (size_t p = 0; p < NPARTS; p++)

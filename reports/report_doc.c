@@ -49,6 +49,8 @@ int vsph_report_doc_claim(struct vsph_report *R, const char *claim,
   snprintf(c->verdict, sizeof c->verdict, "%s", verdict);
   snprintf(c->setup, sizeof c->setup, "%s", setup);
   snprintf(c->see, sizeof c->see, "%s", R->claim_see ? R->claim_see : "");
+  snprintf(c->name, sizeof c->name, "%s", R->claim_name ? R->claim_name : "");
+  R->claim_name = NULL;
   return VSPH_OK;
 }
 
@@ -104,22 +106,76 @@ int vsph_report_doc_grade(struct vsph_report *R, const char *name,
   if (!text)
     vsph_status_report(st, __FILE__, __LINE__, "no claim %s in reports/claims",
                        name);
-  if (!st)
+  if (!st) {
+    R->claim_name = !strncmp(name, "claims/", 7) ? name + 7 : name;
     st = vsph_report_doc_claim(R, row->claim, row->paper, row->ours, row->setup,
                                row->verdict);
+  }
   free(row);
   return st;
+}
+
+/* Verdict @p text into @p m as a table cell: its class marked (symbol
+ * and word), then the rest of its words, '|' escaped. */
+static void verdict_cell(FILE *m, const char *text) {
+  const int v = vsph_report_doc_class(text);
+  fprintf(m, "<span class=\"v %s\">%s %s</span> ", VERDICT[v].css,
+          VERDICT[v].symbol, VERDICT[v].word);
+  const size_t w = strlen(VERDICT[v].word);
+  if (!strncmp(text, VERDICT[v].word, w)) {
+    text += w;
+    text += strspn(text, ":, ");
+  }
+  for (const char *s = text; *s; s++) {
+    if (*s == '|') fputc('\\', m);
+    fputc(*s, m);
+  }
+}
+
+/* The report's first screen, between marks the assembly moves to the
+ * top (report.c): the tally, then the claims the text block
+ * claims.findings names (one block name a line), each with its verdict
+ * and a link to its section. */
+static void findings(struct vsph_report *R, const size_t *tally) {
+  fprintf(R->md,
+          "<!-- findings -->\n**The verdicts on %zu claims of the five "
+          "papers:**",
+          R->nclaims);
+  for (int v = 0; v < VSPH_REPORT_NVERDICTS; v++)
+    fprintf(R->md, "%s <span class=\"v %s\">%s %zu %s</span>", v ? "," : "",
+            VERDICT[v].css, VERDICT[v].symbol, tally[v], VERDICT[v].word);
+  fprintf(R->md, " ([the summary](#sec-claims) gives each).\n\n");
+  const char *list = vsph_text_get("claims.findings");
+  int k = 0;
+  for (const char *l = list; l && *l;) {
+    const size_t n = strcspn(l, "\n");
+    for (size_t c = 0; n && c < R->nclaims; c++)
+      if (strlen(R->claims[c].name) == n && !strncmp(R->claims[c].name, l, n)) {
+        if (!k++) fprintf(R->md, "**Three findings:**\n\n");
+        fprintf(R->md, "%d. %s: ", k, R->claims[c].claim);
+        verdict_cell(R->md, R->claims[c].verdict);
+        fprintf(R->md, " ([%s](#sec-%s))\n", R->claims[c].see,
+                R->claims[c].see);
+      }
+    l += n + (l[n] == '\n');
+  }
+  fprintf(R->md, "\n<!-- /findings -->\n");
 }
 
 int vsph_report_doc_claims_table(struct vsph_report *R) {
   size_t tally[VSPH_REPORT_NVERDICTS] = {0};
   for (size_t k = 0; k < R->nclaims; k++)
     tally[vsph_report_doc_class(R->claims[k].verdict)]++;
+  findings(R, tally);
   fprintf(R->md, "**%zu claims:**", R->nclaims);
   for (int v = 0; v < VSPH_REPORT_NVERDICTS; v++)
     fprintf(R->md, "%s <span class=\"v %s\">%s %zu %s</span>", v ? "," : "",
             VERDICT[v].css, VERDICT[v].symbol, tally[v], VERDICT[v].word);
   fprintf(R->md, ".\n\n");
+  fprintf(R->md,
+          "<details open><summary>The %zu claims, a row each (click "
+          "to fold)</summary>\n\n",
+          R->nclaims);
   const int st = vsph_report_doc_say(R, "claims.table_head");
   if (st) return st;
   for (size_t k = 0; k < R->nclaims; k++) {
@@ -129,25 +185,18 @@ int vsph_report_doc_claims_table(struct vsph_report *R) {
     for (int c = 0; c < 5; c++) { /* a '|' inside a cell is escaped */
       fputs("| ", R->md);
       const char *text = cell[c];
-      if (c == 4) { /* the verdict: its class marked, then the rest of its
-                     * words (the class's own word once, not twice) */
-        const int v = vsph_report_doc_class(text);
-        fprintf(R->md, "<span class=\"v %s\">%s %s</span> ", VERDICT[v].css,
-                VERDICT[v].symbol, VERDICT[v].word);
-        const size_t w = strlen(VERDICT[v].word);
-        if (!strncmp(text, VERDICT[v].word, w)) {
-          text += w;
-          text += strspn(text, ":, ");
+      if (c == 4) /* the verdict: its class marked, then the rest of its
+                   * words (the class's own word once, not twice) */
+        verdict_cell(R->md, text);
+      else
+        for (const char *s = text; *s; s++) {
+          if (*s == '|') fputc('\\', R->md);
+          fputc(*s, R->md);
         }
-      }
-      for (const char *s = text; *s; s++) {
-        if (*s == '|') fputc('\\', R->md);
-        fputc(*s, R->md);
-      }
       fputc(' ', R->md);
     }
     fprintf(R->md, "| [%s](#sec-%s) |\n", R->claims[k].see, R->claims[k].see);
   }
-  fprintf(R->md, "\n");
+  fprintf(R->md, "\n</details>\n\n");
   return ferror(R->md) ? VSPH_EIO : VSPH_OK;
 }

@@ -26,7 +26,8 @@ struct vsph_report_claim {
   char setup[1000]; /* how our set-up, quantity and method differ from the
                       paper's, and the [reconstructed] choices the verdict
                       rests on ("none" where nothing differs) */
-  char see[32]; /* the part that shows it ("scenes"): the link in the table */
+  char see[32];  /* the part that shows it ("scenes"): the link in the table */
+  char name[64]; /* its block in reports/claims ("paper.wave_damping") */
 };
 
 /* The report being written: its folder and Markdown, the claims table,
@@ -37,6 +38,7 @@ struct vsph_report {
   gsl_integration_workspace *wo, *wi; /* quadrature workspaces */
   struct vsph_report_claim *claims;   /* the claims table (growing) */
   const char *claim_see;              /* part of the claims added next */
+  const char *claim_name; /* the block of the claim added next, or NULL */
   size_t nclaims, cap_claims;
   struct vsph_text_vars tv; /* scratch values for the prose blocks */
   double load[2][3];        /* load averages before and after (run.json) */

@@ -177,6 +177,38 @@ START_TEST(test_html_embeds_svg) {
 }
 END_TEST
 
+/* The report's mathematics set in its HTML without JavaScript (io/html.c):
+ * a subscript (E_k, eta_num), a Greek name as its letter, a superscript,
+ * the signs written in ASCII (n.D.n != 0, ->), each by hand; code spans,
+ * file names and multi-underscore names stay as written, and docs/X.md is
+ * a link where the source tree's docs/ is found (from the test's folder,
+ * the repository's top). */
+START_TEST(test_html_mathematics) {
+  char path[128];
+  snprintf(path, sizeof path, "%s/m.md", dir);
+  FILE *f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fprintf(f,
+          "E_k and eta_num at nu = 0.1, in m^2/s, when n.D.n != 0 -> "
+          "u_theta; `E_k` and snap_0000.vtp and u_err_rel; see "
+          "docs/theory.md.\n");
+  fclose(f);
+  ck_assert_int_eq(vsph_html_render(dir, "m.md", "m.html", "m"), VSPH_OK);
+  static char html[1 << 16];
+  snprintf(path, sizeof path, "%s/m.html", dir);
+  vsph_test_slurp(path, html, sizeof html);
+  static const char *const want[] = {
+      "E<sub>k</sub> and \u03b7<sub>num</sub> at \u03bd = 0.1, in "
+      "m<sup>2</sup>/s, when n\u00b7D\u00b7n \u2260 0 \u2192 "
+      "u<sub>\u03b8</sub>;",
+      "<code>E_k</code>", "snap_0000.vtp", "u_err_rel",
+      "docs/theory.md\">docs/theory.md</a>"};
+  for (size_t k = 0; k < sizeof want / sizeof want[0]; k++)
+    ck_assert_msg(strstr(html, want[k]) != NULL, "no '%s' in\n%s", want[k],
+                  strstr(html, "<body>"));
+}
+END_TEST
+
 START_TEST(test_plain_text) {
   char out[64];
   vsph_plot_plain(out, sizeof out, "E_{k,ref}/E_{k,ref}(0), u_θ, 10^{-13}");
@@ -261,6 +293,7 @@ Suite *vsph_plot_suite(void) {
   tcase_add_test(tc, test_pressure_range_all_panels);
   tcase_add_test(tc, test_figure_three_formats);
   tcase_add_test(tc, test_html_embeds_svg);
+  tcase_add_test(tc, test_html_mathematics);
   tcase_add_test(tc, test_plain_text);
   tcase_add_test(tc, test_palette_distinct);
   tcase_add_test(tc, test_particles_errors);
