@@ -104,6 +104,14 @@ static void head(FILE *f, const char *what, const char *name) {
 /* Open the loop over the three outputs: a W x H pixel PNG, the same as
  * SVG (scalable in a page), a PDF of W/100 x H/100 inches. */
 static void outputs_open(FILE *f, const char *name, int w, int h, int font) {
+  /* the SVG's title (its name, which gnuplot takes as an identifier: the
+   * file's name, other characters as '_'), not "Gnuplot" */
+  char id[128];
+  snprintf(id, sizeof id, "%s", name);
+  for (char *c = id; *c; c++)
+    if (!((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') ||
+          (*c >= '0' && *c <= '9')))
+      *c = '_';
   fprintf(f,
           "do for [fmt in \"png svg pdf\"] {\n"
           "  if (fmt eq \"png\") {\n"
@@ -111,15 +119,15 @@ static void outputs_open(FILE *f, const char *name, int w, int h, int font) {
           "Sans,%d'\n"
           "  } else {\n"
           "    if (fmt eq \"svg\") {\n"
-          "      set terminal svg size %d,%d enhanced font 'DejaVu "
-          "Sans,%d' background '#ffffff'\n"
+          "      set terminal svg size %d,%d name '%s' enhanced font "
+          "'DejaVu Sans,%d' background '#ffffff'\n"
           "    } else {\n"
           "      set terminal pdfcairo size %.2fin,%.2fin enhanced font "
           "'DejaVu Sans,%d'\n"
           "    }\n"
           "  }\n"
           "  set output '%s.'.fmt\n",
-          w, h, font, w, h, font, w / 100.0, h / 100.0, font, name);
+          w, h, font, w, h, id, font, w / 100.0, h / 100.0, font, name);
 }
 
 static void outputs_close(FILE *f) { fprintf(f, "  unset output\n}\n"); }

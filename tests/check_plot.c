@@ -143,6 +143,12 @@ START_TEST(test_figure_three_formats) {
   ck_assert(exists("fig_line", "png", "\x89PNG"));
   ck_assert(exists("fig_line", "svg", "<?xml"));
   ck_assert(exists("fig_line", "pdf", "%PDF"));
+  /* the SVG is titled by the figure's name, not "Gnuplot" */
+  static char svg[1 << 16];
+  snprintf(path, sizeof path, "%s/fig_line.svg", dir);
+  vsph_test_slurp(path, svg, sizeof svg);
+  ck_assert_ptr_nonnull(strstr(svg, "<title>fig_line</title>"));
+  ck_assert_ptr_null(strstr(svg, "<title>Gnuplot</title>"));
   /* gnuplot said nothing: no warning, no error */
   char log[256];
   snprintf(log, sizeof log, "%s/fig_line.log", dir);
