@@ -6,8 +6,11 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -19,6 +22,21 @@
 #include "jobs.h"
 #include "jobs_internal.h"
 
+/* *@p out: a new string of the printf-formatted text (caller frees).
+ * 0, or 1 when it cannot be made. */
+static int asprintf_like(char **out, const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  const int n = vsnprintf(NULL, 0, fmt, ap);
+  va_end(ap);
+  *out = n >= 0 ? malloc((size_t)n + 1) : NULL;
+  if (!*out) return 1;
+  va_start(ap, fmt);
+  vsnprintf(*out, (size_t)n + 1, fmt, ap);
+  va_end(ap);
+  return 0;
+}
+
 /* A Slurm time limit from an estimate in seconds: D-HH:MM:SS. */
 static void slurm_time(double s, char *buf, size_t len) {
   const long t = (long)ceil(s);
@@ -26,13 +44,35 @@ static void slurm_time(double s, char *buf, size_t len) {
            t / 60 % 60, t % 60);
 }
 
-/* The job id that `sbatch --parsable` printed ("ID" or "ID;cluster"). */
+/* The seconds sbatch has to answer before it is stopped (a controller
+ * that hangs must not hang the report): VSPH_SBATCH_TIMEOUT, 1-3600, or
+ * 120. */
+static long sbatch_timeout(void) {
+  const char *e = getenv("VSPH_SBATCH_TIMEOUT");
+  char *end;
+  const long t = e ? strtol(e, &end, 10) : 0;
+  return e && *e && !*end && t >= 1 && t <= 3600 ? t : 120;
+}
+
+/* The job id that `sbatch --parsable` printed ("ID" or "ID;cluster"),
+ * sbatch stopped (coreutils' timeout) if it does not answer in time. */
 static int submit(const char *cmd, char *id, size_t len) {
-  FILE *p = popen(cmd, "r");
+  const long limit = sbatch_timeout();
+  char *full = NULL;
+  if (asprintf_like(&full, "timeout %ld %s", limit, cmd))
+    VSPH_FAIL(VSPH_ENOMEM, "cannot build the sbatch command");
+  FILE *p = popen(full, "r");
+  free(full);
   if (!p) VSPH_FAIL(VSPH_EIO, "cannot run '%s': %s", cmd, strerror(errno));
   char line[256] = "";
   const int got = fgets(line, sizeof line, p) != NULL;
   const int rc = pclose(p);
+  if (WIFEXITED(rc) && WEXITSTATUS(rc) == 124)
+    VSPH_FAIL(VSPH_EIO,
+              "sbatch did not answer within %ld s (is slurmctld up? "
+              "VSPH_SBATCH_TIMEOUT sets the wait); nothing was submitted "
+              "by this call",
+              limit);
   line[strcspn(line, ";\n")] = '\0';
   if (!got || rc != 0 || !*line || strspn(line, "0123456789") != strlen(line))
     VSPH_FAIL(VSPH_EIO, "sbatch refused the job ('%s' answered '%s')", cmd,

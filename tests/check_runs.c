@@ -1144,6 +1144,19 @@ START_TEST(test_slurm_signal) {
                       cases[k].signal,
                   "--time %s", cases[k].limit);
   }
+  /* an sbatch that hangs is stopped after VSPH_SBATCH_TIMEOUT seconds:
+   * the report refuses in one line saying so, and ends */
+  put(fake, "#!/bin/sh\nsleep 30\necho 4243\n");
+  snprintf(args, sizeof args,
+           "PATH='%s':\"$PATH\" VSPH_SBATCH_TIMEOUT=1 exec \"$VSPH_BIN\" "
+           "report --only stability --slurm --out %s/hang",
+           dir, dir);
+  const double t0 = (double)time(NULL);
+  struct vsph_test_outcome *o = vsph_test_shell(args);
+  ck_assert_msg(o->status == 1 && o->err_lines == 1 &&
+                    strstr(o->err, "did not answer within 1 s"),
+                "%d: %s", o->status, o->err);
+  ck_assert_msg((double)time(NULL) - t0 < 20, "the report waited for sbatch");
   vsph_test_rm_tree(dir);
 }
 END_TEST
