@@ -192,6 +192,22 @@ static int build(struct out *o, const struct vsph_particles *p,
   for (size_t k = 0; k < n; k++) x[k] = p->m[order[k]] / p->rho[order[k]];
   if (!st) st = add_array(o, POINT_DATA, "volume", "Float64", 1, 0, x, n8);
   describe(o, "volume", "particle volume m/rho", "m^", d);
+  gather(x, p->m, order, n);
+  if (!st) st = add_array(o, POINT_DATA, "mass", "Float64", 1, 0, x, n8);
+  describe(o, "mass", "particle mass m (per unit depth in 2-D)",
+           d == 3   ? "kg"
+           : d == 2 ? "kg/m"
+                    : "kg/m^",
+           2);
+  if (dg) {
+    for (size_t k = 0; k < n; k++) x[k] = dg->h;
+    if (!st)
+      st = add_array(o, POINT_DATA, "smoothing_length", "Float64", 1, 0, x, n8);
+    describe(o, "smoothing_length",
+             "smoothing length h (the same for every particle; the kernel "
+             "reaches kappa h)",
+             "m", 1);
+  }
   if (p->mat) {
     for (size_t k = 0; k < n; k++) u8[k] = p->mat[order[k]];
     if (!st) st = add_array(o, POINT_DATA, "material", "UInt8", 1, 0, u8, n);

@@ -47,6 +47,7 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
   const int dim = p->dim;
   d->n = n;
   d->dim = dim;
+  d->h = h;
   const size_t len = n ? n : 1;
   for (int a = 0; a < 3; a++) d->vort[a] = calloc(len, sizeof(double));
   d->divr = calloc(len, sizeof(double));

@@ -30,6 +30,7 @@ struct vsph_diagnostics {
   double *vort[3];     /*!< vorticity; 2-D: vort[2] only (the others 0) */
   double *divr;        /*!< div r */
   unsigned char *surf; /*!< 1: free surface (div r below the threshold) */
+  double h;            /*!< the smoothing length they were computed with */
 };
 
 /** @brief The free-surface threshold on div r in @p dim dimensions. */

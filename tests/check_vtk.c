@@ -231,6 +231,7 @@ static void fixture_make(struct fixture *fx, int dim, size_t n, int mat) {
   memset(dg, 0, sizeof *dg);
   dg->n = n;
   dg->dim = dim;
+  dg->h = 0.0123456789; /* not short in decimal */
   for (int a = 0; a < 3; a++) {
     dg->vort[a] = malloc((n ? n : 1) * sizeof(double));
     for (size_t k = 0; k < n; k++)
@@ -313,6 +314,22 @@ START_TEST(test_roundtrip) {
   }
   ck_assert_uint_eq(seen, fx.n);
   vsph_vtk_snapshot_free(&s);
+  /* mass and smoothing length per particle, as a ParaView user reads
+   * them: each bitwise (raw doubles) */
+  int nc = 0;
+  size_t nv = 0;
+  double *m = vsph_test_vtp_values(path, "mass", &nc, &nv);
+  double *h = vsph_test_vtp_values(path, "smoothing_length", &nc, &nv);
+  ck_assert_ptr_nonnull(m);
+  ck_assert_ptr_nonnull(h);
+  ck_assert_uint_eq(nv, fx.n);
+  for (size_t i = 0; i < p->n; i++)
+    if (p->id[i] < fx.n) {
+      ck_assert(m[p->id[i]] == p->m[i]);
+      ck_assert(h[p->id[i]] == fx.dg.h);
+    }
+  free(m);
+  free(h);
   clean_case(&fx, dir, path);
 }
 END_TEST
@@ -573,14 +590,21 @@ START_TEST(test_layout) {
   ck_assert(tag_attr(v.piece, "NumberOfVerts", val, sizeof val));
   ck_assert_uint_eq(strtoul(val, NULL, 10), n);
   /* the arrays, their types and components: exactly these */
-  struct expect want[16] = {
-      {"TimeValue", "Float64", 1},  {"array_descriptions", "String", 1},
-      {"Points", "Float64", 3},     {"connectivity", "Int64", 1},
-      {"offsets", "Int64", 1},      {"velocity", "Float64", 3},
-      {"density", "Float64", 1},    {"pressure", "Float64", 1},
-      {"volume", "Float64", 1},     {"div_r", "Float64", 1},
-      {"free_surface", "UInt8", 1}, {"id", "Int64", 1}};
-  size_t nw = 12;
+  struct expect want[18] = {{"TimeValue", "Float64", 1},
+                            {"array_descriptions", "String", 1},
+                            {"Points", "Float64", 3},
+                            {"connectivity", "Int64", 1},
+                            {"offsets", "Int64", 1},
+                            {"velocity", "Float64", 3},
+                            {"density", "Float64", 1},
+                            {"pressure", "Float64", 1},
+                            {"volume", "Float64", 1},
+                            {"mass", "Float64", 1},
+                            {"smoothing_length", "Float64", 1},
+                            {"div_r", "Float64", 1},
+                            {"free_surface", "UInt8", 1},
+                            {"id", "Int64", 1}};
+  size_t nw = 14;
   if (dim == 2) want[nw++] = (struct expect){"vorticity_z", "Float64", 1};
   if (dim == 3) want[nw++] = (struct expect){"vorticity", "Float64", 3};
   if (cases[_i].mat) want[nw++] = (struct expect){"material", "UInt8", 1};
