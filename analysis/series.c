@@ -3,8 +3,10 @@
 #include "series.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 #include "../common/status.h"
+#include "scaling.h"
 
 double vsph_series_interp(const double *t, const double *y, size_t n,
                           double x) {
@@ -279,4 +281,21 @@ int vsph_series_selfconv(const struct vsph_series_rung *rung, size_t nrung,
       out->remainder = out->dmax[k + 1] / expm1(out->order_max * log(rf));
   }
   return VSPH_OK;
+}
+
+double vsph_series_slope_where(const double *x, const double *y, const int *ok,
+                               size_t n, size_t *ns) {
+  size_t m = 0;
+  double *sx = malloc((n ? n : 1) * sizeof *sx),
+         *sy = malloc((n ? n : 1) * sizeof *sy);
+  double slope = NAN;
+  if (sx && sy) {
+    for (size_t k = 0; k < n; k++)
+      if (ok[k]) sx[m] = x[k], sy[m++] = y[k];
+    if (m >= 2) slope = vsph_scaling_slope(sx, sy, m);
+  }
+  free(sx);
+  free(sy);
+  if (ns) *ns = m;
+  return slope;
 }

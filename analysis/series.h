@@ -172,4 +172,11 @@ double vsph_series_order(double d_c, double d_f, double r_c, double r_f);
 int vsph_series_selfconv(const struct vsph_series_rung *rung, size_t nrung,
                          struct vsph_series_selfconv *out);
 
+/* The log-log slope of @p y against @p x (vsph_scaling_slope) over the
+ * points whose @p ok is nonzero, their number into @p ns (may be NULL):
+ * an order is never fitted through a run that stopped, whose figure is up
+ * to its stop. NaN with fewer than two such points. */
+double vsph_series_slope_where(const double *x, const double *y, const int *ok,
+                               size_t n, size_t *ns);
+
 #endif /* VSPH_ANALYSIS_SERIES_H */

@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "../analysis/scaling.h"
+#include "../analysis/series.h"
 #include "../common/status.h"
 #include "../io/csv.h"
 #include "../io/files.h"
@@ -53,8 +54,9 @@ static int scene(struct vsph_report *R, int sc) {
   if ((st = vsph_report_doc_say(R, "convergence.scene_head"))) return st;
   char files[NFORM][96];
   for (int f = 0; f < NFORM && !st; f++) {
-    const double order =
-        vsph_scaling_slope(lr.dx[f], lr.err[f], VSPH_REPORT_LADDER);
+    size_t ns;
+    const double order = vsph_series_slope_where(lr.dx[f], lr.err[f], lr.ok[f],
+                                                 VSPH_REPORT_LADDER, &ns);
     const struct vsph_series_selfconv *sv = &lr.self[f];
     snprintf(files[f], sizeof files[f], "convergence_%s_%s.csv", L->scene,
              vsph_viscous_name(f));
@@ -90,8 +92,10 @@ static int scene(struct vsph_report *R, int sc) {
     else
       snprintf(span, sizeof span, "differences over the whole run");
     fprintf(R->md,
-            "| %s | order | **%.2f** (fitted) | **%.2f** | **%.2f** | %s |\n",
-            vsph_viscous_name(f), order, sv->order_max, sv->order_rms, span);
+            "| %s | order | **%.2f** (fitted through the %zu stable "
+            "rungs) | **%.2f** | **%.2f** | %s |\n",
+            vsph_viscous_name(f), order, ns, sv->order_max, sv->order_rms,
+            span);
     if ((st = vsph_csv_close(c, R->dir, files[f]))) break;
     char style[96], lab[96];
     vsph_report_runs_style(style, sizeof style, f, "");
@@ -170,13 +174,16 @@ static int vortex_layouts(struct vsph_report *R) {
       if (sv->partial)
         snprintf(span, sizeof span, "differences over t <= %.3g s only",
                  sv->span);
+      size_t ns;
+      const double oe = vsph_series_slope_where(
+          ly.dx, ly.err[l][f], ly.ok[l][f], VSPH_REPORT_LADDER, &ns);
+      const double o0 = vsph_series_slope_where(ly.dx, a0, ly.ok[l][f],
+                                                VSPH_REPORT_LADDER, &ns);
       fprintf(R->md,
-              "| %s | %s | order | **%.2f** (fitted) | **%.2f** (max), "
-              "**%.2f** (RMS) | **%.2f** | %s |\n",
-              lay[l], vsph_viscous_name(f),
-              vsph_scaling_slope(ly.dx, ly.err[l][f], VSPH_REPORT_LADDER),
-              sv->order_max, sv->order_rms,
-              vsph_scaling_slope(ly.dx, a0, VSPH_REPORT_LADDER), span);
+              "| %s | %s | order | **%.2f** (fitted through the %zu stable "
+              "rungs) | **%.2f** (max), **%.2f** (RMS) | **%.2f** | %s |\n",
+              lay[l], vsph_viscous_name(f), oe, ns, sv->order_max,
+              sv->order_rms, o0, span);
       if ((st = vsph_csv_close(c, R->dir, file))) break;
       snprintf(lab, sizeof lab, "%s, %s", vsph_viscous_label(f), lay[l]);
       vsph_report_runs_style(style, sizeof style, f, l ? " dt 2" : "");

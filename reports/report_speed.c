@@ -31,15 +31,24 @@ static int scene(struct vsph_report *R, int sc) {
   for (int f = 0; f < NFORM && !st; f++) {
     char file[96];
     snprintf(file, sizeof file, "speed_%s_%s.csv", scn, vsph_viscous_name(f));
-    FILE *c = vsph_csv_open(R->dir, file, "error,wall_s,pairs,cpu_s,load_1min");
+    FILE *c = vsph_csv_open(R->dir, file,
+                            "error,wall_s,pairs,cpu_s,load_1min,stable");
     if (!c) return VSPH_EIO;
-    for (int k = 0; k < VSPH_REPORT_LADDER; k++)
-      fprintf(c, "%.6e,%.4f,%.6e,%.4f,%.2f\n", lr.err[f][k], lr.wall[f][k],
-              lr.pairs[f][k], lr.cpu[f][k], lr.load[f][k]);
+    int any = 0; /* a run stopped as unstable: its error and time are up to
+                    its stop, not the whole run's; ringed */
+    for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
+      fprintf(c, "%.6e,%.4f,%.6e,%.4f,%.2f,%d\n", lr.err[f][k], lr.wall[f][k],
+              lr.pairs[f][k], lr.cpu[f][k], lr.load[f][k], lr.ok[f][k]);
+      any |= !lr.ok[f][k];
+    }
     if ((st = vsph_csv_close(c, R->dir, file))) break;
     char style[96];
     vsph_report_runs_style(style, sizeof style, f, "");
     st = vsph_plot_add(&pl, file, "1:2", vsph_viscous_label(f), style);
+    if (!st && any)
+      st = vsph_plot_add(&pl, file, "1:($6==0 ? $2 : 1/0)",
+                         "stopped as unstable (up to the stop)",
+                         "points pt 6 ps 3 lw 2 lc rgb 'black'");
   }
   if (st) return st;
   vsph_text_set(&R->tv, "title", "%s", title);

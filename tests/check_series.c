@@ -12,6 +12,21 @@
 /* A linear function is interpolated exactly (to rounding: 1e-15 of its
  * values) at any point, repeated abscissae included; outside the table,
  * and for an empty one, NaN. */
+/* An order fitted through the stable points only: y = x^2 at three
+ * stable points, and a stopped one off the line (x 8, y 1) left out;
+ * fewer than two stable points give none. */
+START_TEST(test_slope_where) {
+  const double x[4] = {1, 2, 4, 8}, y[4] = {1, 4, 16, 1};
+  const int ok[4] = {1, 1, 1, 0}, one[4] = {0, 0, 1, 0};
+  size_t ns = 0;
+  ck_assert_double_eq_tol(vsph_series_slope_where(x, y, ok, 4, &ns), 2.0,
+                          1e-12);
+  ck_assert_uint_eq(ns, 3);
+  ck_assert(isnan(vsph_series_slope_where(x, y, one, 4, &ns)));
+  ck_assert_uint_eq(ns, 1);
+}
+END_TEST
+
 START_TEST(test_interp) {
   const double t[6] = {0.0, 0.5, 0.5, 1.5, 2.25, 3.0};
   double y[6];
@@ -355,6 +370,7 @@ Suite *vsph_series_suite(void) {
   Suite *s = suite_create("series");
   TCase *tc = tcase_create("measures");
   tcase_add_test(tc, test_interp);
+  tcase_add_test(tc, test_slope_where);
   tcase_add_test(tc, test_extrapolate);
   tcase_add_test(tc, test_decay_error);
   tcase_add_test(tc, test_onset);
