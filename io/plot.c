@@ -287,11 +287,10 @@ int vsph_plot_write(const struct vsph_plot *pl) {
   return st ? st : render(pl->dir, gp, pl->name);
 }
 
-/* Range of column @p col (1-based, as gnuplot counts) over the rows of
- * DIR/FILE, read by io/csv (non-finite values skipped): min, max and count
- * updated. */
-static int column_range(const char *dir, const char *file, int col, double *lo,
-                        double *hi, size_t *count) {
+/* The finite values of column @p col (1-based, as gnuplot counts) of
+ * DIR/FILE, read by io/csv, appended to *@p v (*@p n of *@p cap). */
+static int column_values(const char *dir, const char *file, int col, double **v,
+                         size_t *n, size_t *cap) {
   char path[1024];
   snprintf(path, sizeof path, "%s/%s", dir, file);
   struct vsph_csv *t = vsph_csv_read(path);
@@ -300,40 +299,86 @@ static int column_range(const char *dir, const char *file, int col, double *lo,
     vsph_csv_free(t);
     VSPH_FAIL(VSPH_EINVAL, "%s has no column %d", path, col);
   }
-  const double *v = t->data + (size_t)(col - 1) * t->nrow;
+  const double *c = t->data + (size_t)(col - 1) * t->nrow;
   for (size_t r = 0; r < t->nrow; r++) {
-    if (!isfinite(v[r])) continue;
-    *lo = fmin(*lo, v[r]);
-    *hi = fmax(*hi, v[r]);
-    ++*count;
+    if (!isfinite(c[r])) continue;
+    if (*n == *cap) {
+      const size_t nc = *cap ? 2 * *cap : 4096;
+      double *w = realloc(*v, nc * sizeof *w);
+      if (!w) {
+        vsph_csv_free(t);
+        VSPH_FAIL(VSPH_ENOMEM, "cannot read %s", path);
+      }
+      *v = w, *cap = nc;
+    }
+    (*v)[(*n)++] = c[r];
   }
   vsph_csv_free(t);
   return VSPH_OK;
 }
 
+static int cmp_double(const void *a, const void *b) {
+  const double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* The @p p quantile of the @p n sorted values @p v by nearest rank: the
+ * value at rank ceil(p n). */
+static double quantile(const double *v, size_t n, double p) {
+  size_t r = (size_t)ceil(p * (double)n);
+  r = r < 1 ? 1 : r > n ? n : r;
+  return v[r - 1];
+}
+
 int vsph_plot_particles(const char *dir, const char *name, const char *title,
                         const struct vsph_plot_panel *pn, size_t n, int col,
                         const char *cblabel, int diverging, const double box[4],
-                        double cb[2]) {
+                        double cb[4]) {
   if (n < 1 || n > 8)
     VSPH_FAIL(VSPH_EINVAL, "picture %s: 1 to 8 panels, not %zu", name, n);
-  /* one colour scale for the scene: every particle of every panel */
-  double lo = INFINITY, hi = -INFINITY;
-  size_t count = 0;
+  /* one colour scale for the scene, from every particle of every panel:
+   * robust limits, the 1st and 99th percentiles (a few surface particles
+   * must not set the scale of the whole field), the share beyond them
+   * said; a signed field on a diverging scale +-M, M the 99th percentile
+   * of |value|; a field of one sign on a sequential one */
+  double *v = NULL;
+  size_t count = 0, cap = 0;
   for (size_t k = 0; k < n; k++) {
-    const int st = column_range(dir, pn[k].file, col, &lo, &hi, &count);
-    if (st) return st;
+    const int st = column_values(dir, pn[k].file, col, &v, &count, &cap);
+    if (st) {
+      free(v);
+      return st;
+    }
   }
-  if (!count)
+  if (!count) {
+    free(v);
     VSPH_FAIL(VSPH_EINVAL, "picture %s: no finite value in column %d", name,
               col);
+  }
+  qsort(v, count, sizeof *v, cmp_double);
+  if (diverging && (v[0] >= 0.0 || v[count - 1] <= 0.0)) diverging = 0;
+  double lo, hi;
+  size_t beyond = 0;
   if (diverging) {
-    const double m = fmax(fabs(lo), fabs(hi));
+    for (size_t k = 0; k < count; k++) v[k] = fabs(v[k]);
+    qsort(v, count, sizeof *v, cmp_double);
+    const double m = quantile(v, count, 0.99);
     hi = m > 0.0 ? m : 1.0;
     lo = -hi;
-  } else if (!(hi > lo)) { /* a uniform field: a range around it */
-    const double d = lo != 0.0 ? 0.01 * fabs(lo) : 1.0;
-    lo -= d, hi += d;
+    for (size_t k = 0; k < count; k++) beyond += v[k] > hi;
+  } else {
+    lo = quantile(v, count, 0.01);
+    hi = quantile(v, count, 0.99);
+    for (size_t k = 0; k < count; k++) beyond += v[k] < lo || v[k] > hi;
+    if (!(hi > lo)) { /* a uniform field: a range around it */
+      const double d = lo != 0.0 ? 0.01 * fabs(lo) : 1.0;
+      lo -= d, hi += d;
+    }
+  }
+  free(v);
+  if (cb) {
+    cb[2] = (double)beyond / (double)count;
+    cb[3] = diverging;
   }
   if (cb) cb[0] = lo, cb[1] = hi;
   /* the layout: panels to scale (the box's aspect), colour bar at right */
@@ -350,17 +395,20 @@ int vsph_plot_particles(const char *dir, const char *name, const char *title,
   FILE *f = vsph_files_open(dir, gp);
   if (!f) return VSPH_EIO;
   head(f, "picture", name);
-  fprintf(f,
-          "set size ratio -1\nunset key\nset xlabel 'x (m)'\n"
-          "set ylabel 'y (m)'\nset cblabel \"%s\" offset char 1.5,0\n%s"
-          "# one colour scale for every panel: %s over all particles\n"
-          "set cbrange [%.17g:%.17g]\n",
-          cblabel,
-          diverging ? "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 "
-                      "'#b2182b')\n"
-                    : "set palette defined (0 '#440154', 0.5 '#21918c', 1 "
-                      "'#fde725')\n",
-          diverging ? "+-(largest |value|)" : "[min, max]", lo, hi);
+  fprintf(
+      f,
+      "set size ratio -1\nunset key\nset xlabel 'x (m)'\n"
+      "set ylabel 'y (m)'\nset cblabel \"%s\" offset char 1.5,0\n%s"
+      "# one colour scale for every panel: %s over all particles "
+      "(beyond them: the end colours)\n"
+      "set cbrange [%.17g:%.17g]\n",
+      cblabel,
+      diverging ? "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 "
+                  "'#b2182b')\n"
+                : "set palette defined (0 '#440154', 0.5 '#21918c', 1 "
+                  "'#fde725')\n",
+      diverging ? "+-(99th percentile of |value|)" : "[1st, 99th percentile]",
+      lo, hi);
   if (box)
     fprintf(f, "set xrange [%.6g:%.6g]\nset yrange [%.6g:%.6g]\n", box[0],
             box[1], box[2], box[3]);

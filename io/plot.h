@@ -93,17 +93,20 @@ struct vsph_plot_panel {
  *  to scale and labelled. The panels share one colour scale, fixed in the
  *  script as `set cbrange [lo:hi]` from every value of column @p col in
  *  every panel's file (all particles, inside the box or not; non-finite
- *  values skipped): @p diverging: a blue-white-red palette on [-M, M], M
- *  the largest |value| (signed fields such as vorticity; M = 1 if every
- *  value is 0), else a sequential one on [min, max]. @p box: x and y
- *  ranges (xlo, xhi, ylo, yhi) every panel shares, or NULL (each its own);
- *  the canvas follows its aspect. At most 8 panels. @p cb: the colour
- *  range (lo, hi) written, for a caption, or NULL.
+ *  values skipped), robust to a few extreme particles: @p diverging and
+ *  values of both signs: a blue-white-red palette on [-M, M], M the 99th
+ *  percentile of |value| (M = 1 if it is 0); else (one sign, or not
+ *  diverging) a sequential one from the 1st to the 99th percentile
+ *  (nearest rank); a value beyond them takes the end colour. @p box: x
+ *  and y ranges (xlo, xhi, ylo, yhi) every panel shares, or NULL (each
+ *  its own); the canvas follows its aspect. At most 8 panels. @p cb, for
+ *  a caption, or NULL: the range (lo, hi), the share of the values beyond
+ *  it, and 1 where the scale is diverging.
  *  @return VSPH_OK, VSPH_EINVAL (panels, or no finite value in column
  *  @p col), VSPH_EIO (a CSV unreadable, or as vsph_plot_write). */
 int vsph_plot_particles(const char *dir, const char *name, const char *title,
                         const struct vsph_plot_panel *pn, size_t n, int col,
                         const char *cblabel, int diverging, const double box[4],
-                        double cb[2]);
+                        double cb[4]);
 
 #endif /* VSPH_IO_PLOT_H */

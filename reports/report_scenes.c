@@ -215,21 +215,28 @@ static int pictures(struct vsph_report *R, int sc, FILE *md,
     char name[96], title[160];
     snprintf(name, sizeof name, "pic_%s_%s", scn, what[w]);
     snprintf(title, sizeof title, "%s: particles coloured by %s", scn, what[w]);
-    double cb[2];
+    double cb[4];
     st = vsph_plot_particles(R->dir, name, title, pn, NFORM + 1, w ? 4 : 3,
                              unit[w], w, box, cb);
+    char scale[160];
+    snprintf(scale, sizeof scale,
+             "%s over every particle; %.1f %% of them lie beyond and take "
+             "the end colours",
+             cb[3] > 0.0 ? "± the 99th percentile of |ω|, a diverging scale"
+                         : "the 1st to the 99th percentile, a sequential "
+                           "scale",
+             100.0 * cb[2]);
     if (!st)
       fprintf(md,
               "![%s](%s.png)\n\n*Figure: %s, one colour scale for every "
-              "panel: %s from %.4g to %.4g %s (%s of every particle). "
+              "panel: %s from %.4g to %.4g %s (%s). "
               "Vector graphics: [%s.svg](%s.svg), [%s.pdf](%s.pdf) (this "
               "page embeds the PNG: an SVG of thousands of particles is "
               "megabytes). Data: `particles_%s_<form>.csv` (x, y, pressure, "
               "vorticity, free-surface flag), from the runs' snapshots "
               "(`runs/*/snap_*.vtp`).*\n\n",
               title, name, title, what[w], cb[0], cb[1], w ? "1/s" : "Pa",
-              w ? "± the largest |ω|" : "the smallest and largest value", name,
-              name, name, name, scn);
+              scale, name, name, name, name, scn);
   }
   return st;
 }

@@ -84,15 +84,28 @@ static int exists(const char *name, const char *ext, const char *magic) {
   return n >= strlen(magic) && !memcmp(buf, magic, strlen(magic));
 }
 
+static int cmp_d(const void *a, const void *b) {
+  const double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* The colour scale of every panel together, robust (io/plot.h): a signed
+ * field on +-M, M the 99th percentile of |value| by nearest rank (here the
+ * 110th of 111 sorted, so the largest, far outside the box, is the one
+ * value beyond and takes the end colour), worked out here independently
+ * of the code's sort. */
 START_TEST(test_vorticity_limit_all_panels) {
   struct vsph_plot_panel pn[NPANEL];
   panels(pn);
-  double M = 0.0; /* independently: the largest |vorticity| of all */
+  double a[NPANEL * NPART];
   for (int k = 0; k < NPANEL; k++)
-    for (int i = 0; i < NPART; i++) M = fmax(M, fabs(W[k][i]));
+    for (int i = 0; i < NPART; i++) a[k * NPART + i] = fabs(W[k][i]);
+  qsort(a, NPANEL * NPART, sizeof *a, cmp_d);
+  const double M = a[110 - 1]; /* rank ceil(0.99 x 111) = 110 */
   const double box[4] = {-2.0, 2.0, -2.0, 2.0};
+  double cb[4];
   ck_assert_int_eq(vsph_plot_particles(dir, "pic_w", "vorticity", pn, NPANEL, 4,
-                                       "ω (1/s)", 1, box, NULL),
+                                       "ω (1/s)", 1, box, cb),
                    VSPH_OK);
   double lo, hi;
   script_cbrange("pic_w", &lo, &hi);
@@ -100,26 +113,40 @@ START_TEST(test_vorticity_limit_all_panels) {
    * writes the limit with %.17g too, so nothing rounds on the way */
   ck_assert_double_eq(hi, M);
   ck_assert_double_eq(lo, -M);
+  ck_assert(cb[0] == -M && cb[1] == M && cb[3] == 1.0);
+  ck_assert_double_eq_tol(cb[2], 1.0 / 111.0, 1e-15); /* the largest */
   ck_assert(exists("pic_w", "png", "\x89PNG"));
   ck_assert(exists("pic_w", "svg", "<?xml"));
   ck_assert(exists("pic_w", "pdf", "%PDF"));
 }
 END_TEST
 
+/* A field of one sign on a sequential scale from the 1st to the 99th
+ * percentile (ranks 2 and 110 of 111): the pressure, and the vorticity
+ * asked for a diverging scale but made one-signed (a vortex patch's). */
 START_TEST(test_pressure_range_all_panels) {
   struct vsph_plot_panel pn[NPANEL];
   panels(pn);
-  double lo = INFINITY, hi = -INFINITY; /* independently, every panel */
+  double a[NPANEL * NPART];
   for (int k = 0; k < NPANEL; k++)
-    for (int i = 0; i < NPART; i++)
-      lo = fmin(lo, P[k][i]), hi = fmax(hi, P[k][i]);
+    for (int i = 0; i < NPART; i++) a[k * NPART + i] = P[k][i];
+  qsort(a, NPANEL * NPART, sizeof *a, cmp_d);
+  double cb[4];
   ck_assert_int_eq(vsph_plot_particles(dir, "pic_p", "pressure", pn, NPANEL, 3,
-                                       "p (Pa)", 0, NULL, NULL),
+                                       "p (Pa)", 0, NULL, cb),
                    VSPH_OK);
   double glo, ghi;
   script_cbrange("pic_p", &glo, &ghi);
-  ck_assert_double_eq(glo, lo); /* exact, as above */
-  ck_assert_double_eq(ghi, hi);
+  ck_assert_double_eq(glo, a[2 - 1]); /* exact, as above */
+  ck_assert_double_eq(ghi, a[110 - 1]);
+  ck_assert(cb[3] == 0.0);
+  ck_assert_double_eq_tol(cb[2], 2.0 / 111.0, 1e-15);
+  /* one sign, a diverging scale asked: sequential all the same */
+  ck_assert_int_eq(vsph_plot_particles(dir, "pic_q", "pressure", pn, NPANEL, 3,
+                                       "p (Pa)", 1, NULL, cb),
+                   VSPH_OK);
+  script_cbrange("pic_q", &glo, &ghi);
+  ck_assert(cb[3] == 0.0 && glo == a[1] && ghi == a[109]);
 }
 END_TEST
 
