@@ -11,14 +11,15 @@
 #include "csv.h"
 #include "files.h"
 
-/* The shared palette: the formulations' three first (MGF, MEAF, PVWF as
- * the report has always drawn them), then colours chosen to stay apart
- * from them and from each other on white; black is kept for references
- * (exact solutions, slope guides). */
+/* The shared palette, safe for colour-blind readers: Okabe and Ito's
+ * (2008) seven colours first (MGF blue, MEAF vermillion, PVWF bluish
+ * green: never red against green), then darker and lighter tones chosen
+ * to stay apart from them and from each other on white; black is kept
+ * for references (exact solutions, slope guides). */
 static const char *const COLOURS[VSPH_PLOT_NSTYLES] = {
-    "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
-    "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf",
-    "#0b2e6b", "#e6b800", "#7b0d1e", "#00796b", "#6a3d9a"};
+    "#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00",
+    "#56b4e9", "#f0e442", "#7f7f7f", "#8c564b", "#0b2e6b",
+    "#6a3d9a", "#00796b", "#7b0d1e", "#b8860b", "#4d4d4d"};
 /* gnuplot's fifteen point shapes, filled ones first */
 static const int POINTS[VSPH_PLOT_NSTYLES] = {7, 5,  9,  11, 13, 15, 6, 4,
                                               8, 10, 12, 14, 1,  2,  3};
@@ -159,15 +160,23 @@ static void wrap_y(char *out, size_t n, const char *using) {
 }
 
 static void plot_cmd(FILE *f, const struct vsph_plot *pl) {
+  /* where no curve sets its dashes, each line gets its own (solid,
+   * dashed, dotted, ...): a curve under another (MGF under PVWF) still
+   * shows between the other's dashes */
+  int dashes = 1;
+  for (size_t k = 0; k < pl->n; k++) dashes &= !strstr(pl->s[k].style, " dt ");
   fprintf(f, "  plot ");
-  for (size_t k = 0; k < pl->n; k++) {
+  for (size_t k = 0, line = 0; k < pl->n; k++) {
     char using[300];
     if (pl->rounding > 0.0 && pl->logy)
       wrap_y(using, sizeof using, pl->s[k].using);
     else
       snprintf(using, sizeof using, "%s", pl->s[k].using);
-    fprintf(f, "%s'%s' skip 1 using %s with %s title \"%s\"",
-            k ? ", \\\n       " : "", pl->s[k].file, using, pl->s[k].style,
+    char dt[16] = "";
+    if (dashes && strstr(pl->s[k].style, "lines"))
+      snprintf(dt, sizeof dt, " dt %zu", line++ % 5 + 1);
+    fprintf(f, "%s'%s' skip 1 using %s with %s%s title \"%s\"",
+            k ? ", \\\n       " : "", pl->s[k].file, using, pl->s[k].style, dt,
             pl->s[k].title);
   }
   if (pl->rounding > 0.0 && pl->logy)

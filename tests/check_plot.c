@@ -242,6 +242,36 @@ START_TEST(test_html_mathematics) {
 }
 END_TEST
 
+/* Curves that would hide one another get their own dashes (io/plot.c):
+ * two lines without dashes of their own become solid and dashed; a figure
+ * where a curve sets its dashes is left as its styles say. */
+START_TEST(test_dashes) {
+  char path[128];
+  snprintf(path, sizeof path, "%s/two.csv", dir);
+  FILE *f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fprintf(f, "x,a,b\n1,1,1\n2,2,2\n");
+  fclose(f);
+  static char gp[1 << 14];
+  for (int own = 0; own < 2; own++) {
+    struct vsph_plot pl;
+    vsph_plot_init(&pl, dir, "fig_two", "two", "x (m)", "y (m)");
+    ck_assert_int_eq(vsph_plot_add(&pl, "two.csv", "1:2", "a", "lines lw 2"),
+                     VSPH_OK);
+    ck_assert_int_eq(vsph_plot_add(&pl, "two.csv", "1:3", "b",
+                                   own ? "lines dt 3" : "linespoints pt 7"),
+                     VSPH_OK);
+    ck_assert_int_eq(vsph_plot_write(&pl), VSPH_OK);
+    snprintf(path, sizeof path, "%s/fig_two.gp", dir);
+    vsph_test_slurp(path, gp, sizeof gp);
+    ck_assert_msg(
+        (strstr(gp, "with lines lw 2 dt 1 title") != NULL) == !own &&
+            (strstr(gp, "with linespoints pt 7 dt 2 title") != NULL) == !own,
+        "%s", gp);
+  }
+}
+END_TEST
+
 START_TEST(test_plain_text) {
   char out[64];
   vsph_plot_plain(out, sizeof out, "E_{k,ref}/E_{k,ref}(0), u_θ, 10^{-13}");
@@ -259,9 +289,11 @@ START_TEST(test_palette_distinct) {
       ck_assert_str_ne(vsph_plot_colour(a), vsph_plot_colour(b));
       ck_assert_int_ne(vsph_plot_point(a), vsph_plot_point(b));
     }
-  /* the formulations' colours stay the report's: MGF blue, PVWF green */
-  ck_assert_str_eq(vsph_plot_colour(0), "#1f77b4");
-  ck_assert_str_eq(vsph_plot_colour(2), "#2ca02c");
+  /* the formulations' colours, Okabe and Ito's: MGF blue, MEAF
+   * vermillion, PVWF bluish green (no red against green) */
+  ck_assert_str_eq(vsph_plot_colour(0), "#0072b2");
+  ck_assert_str_eq(vsph_plot_colour(1), "#d55e00");
+  ck_assert_str_eq(vsph_plot_colour(2), "#009e73");
   ck_assert_str_eq(vsph_plot_colour(VSPH_PLOT_NSTYLES), vsph_plot_colour(0));
 }
 END_TEST
@@ -327,6 +359,7 @@ Suite *vsph_plot_suite(void) {
   tcase_add_test(tc, test_figure_three_formats);
   tcase_add_test(tc, test_html_embeds_svg);
   tcase_add_test(tc, test_html_mathematics);
+  tcase_add_test(tc, test_dashes);
   tcase_add_test(tc, test_plain_text);
   tcase_add_test(tc, test_palette_distinct);
   tcase_add_test(tc, test_particles_errors);
