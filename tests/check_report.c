@@ -132,11 +132,15 @@ START_TEST(test_claims_tally) {
   struct vsph_report R;
   memset(&R, 0, sizeof R);
   R.claim_see = "scenes";
-  for (size_t k = 0; k < n; k++)
-    ck_assert_int_eq(
-        vsph_report_doc_claim(&R, "a claim | with a bar", "paper", "ours",
-                              "its set-up | differs", verdicts[k]),
-        0);
+  for (size_t k = 0; k < n; k++) {
+    /* the second row is a claim the first screen names
+     * (reports/text/claims.md, findings) */
+    R.claim_name = k == 1 ? "paper.surface_slopes" : NULL;
+    ck_assert_int_eq(vsph_report_doc_claim(
+                         &R, k == 1 ? "the finding" : "a claim | with a bar",
+                         "paper", "ours", "its set-up | differs", verdicts[k]),
+                     0);
+  }
   R.md = tmpfile();
   ck_assert_ptr_nonnull(R.md);
   ck_assert_int_eq(vsph_report_doc_claims_table(&R), 0);
@@ -154,16 +158,27 @@ START_TEST(test_claims_tally) {
   ck_assert_msg(strstr(text, "1 partly</span>") != NULL, "%s", text);
   ck_assert_msg(strstr(text, "2 differs</span>") != NULL, "%s", text);
   ck_assert_msg(strstr(text, "1 not tested</span>") != NULL, "%s", text);
-  /* one row per claim, its verdict marked once: the tally has one mark
-   * of each class, the rows the rest */
-  ck_assert_uint_eq(count(text, "| a claim \\| with a bar |"), n);
-  ck_assert_uint_eq(count(text, "class=\"v v-rep\""), 1 + 3);
-  ck_assert_uint_eq(count(text, "class=\"v v-sub\""), 1 + 2);
+  /* one row per claim, its verdict marked once: the two tallies (the
+   * first screen's and the table's) have one mark of each class each,
+   * the finding one more (its "reproduced at this resolution"), the rows
+   * the rest */
+  ck_assert_uint_eq(count(text, "| a claim \\| with a bar |"), n - 1);
+  ck_assert_uint_eq(count(text, "class=\"v v-rep\""), 2 + 1 + 3);
+  ck_assert_uint_eq(count(text, "class=\"v v-sub\""), 2 + 2);
   /* the set-up column, its bar escaped, in every row */
   ck_assert_uint_eq(count(text, "| its set-up \\| differs |"), n);
-  ck_assert_uint_eq(count(text, "class=\"v v-part\""), 1 + 1);
-  ck_assert_uint_eq(count(text, "class=\"v v-diff\""), 1 + 2);
-  ck_assert_uint_eq(count(text, "class=\"v v-none\""), 1 + 1);
+  ck_assert_uint_eq(count(text, "class=\"v v-part\""), 2 + 1);
+  ck_assert_uint_eq(count(text, "class=\"v v-diff\""), 2 + 2);
+  ck_assert_uint_eq(count(text, "class=\"v v-none\""), 2 + 1);
+  /* the first screen: between its marks, the finding with its verdict
+   * and section, before the table */
+  const char *f0 = strstr(text, "<!-- findings -->"),
+             *f1 = strstr(text, "<!-- /findings -->");
+  ck_assert_msg(f0 && f1 && f0 < f1, "%s", text);
+  const char *fd = strstr(f0, "1. the finding: <span class=\"v v-rep\">");
+  ck_assert_msg(fd && fd < f1 && strstr(fd, "at this resolution ([scenes]"),
+                "%s", text);
+  ck_assert_ptr_null(strstr(fd, "2. "));
   ck_assert(strstr(text, "differs</span> not reproduced at H/dx = 80 |"));
   /* the class's own word once: "reproduced (within 3 %)" -> the mark and
    * "(within 3 %)"; "partly: see ..." -> the mark and "see ..." */
