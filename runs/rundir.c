@@ -663,6 +663,124 @@ static int relayout(const struct vsph_run_props *rp,
   return VSPH_OK;
 }
 
+/* The run resumed from this run's checkpoint in res->dir, where one fits
+ * (its state into *@p run, the live files' lengths it saw into @p keep,
+ * the segment count, times and start into @p res), else the folder
+ * cleared to start afresh (@p keep left at -1); either way
+ * used_parameters.yml written with this process's parameters. */
+static int resume_or_start(struct vsph_folder *fo, struct outputs *o,
+                           struct vsph_params *prm, const char *key,
+                           const struct vsph_run_props *rp,
+                           const struct vsph_scene *sc, struct vsph_run **run,
+                           struct vsph_references_scene **ref, FILE *progress,
+                           struct vsph_rundir_result *res, long keep[3]) {
+  int st = VSPH_OK;
+  /* a checkpoint of this very run: resume from it */
+  struct ckpt c;
+  size_t state_at = 0;
+  char why[200];
+  unsigned char *ck =
+      checkpoint_read(res->dir, key, &c, &state_at, why, sizeof why);
+  if (ck && (st = vsph_run_unpack(*run, ck + state_at, (size_t)c.state))) {
+    /* not this run's after all: lay it out afresh */
+    snprintf(why, sizeof why, "its state does not fit this run");
+    free(ck);
+    ck = NULL;
+    if ((st = relayout(rp, sc, run, ref))) return st;
+  }
+  char *manifest =
+      ck ? strndup((const char *)ck + state_at + c.state, (size_t)c.manifest)
+         : NULL;
+  const int moved =
+      ck && (!manifest ||
+             resume_dir(fo, &c, manifest, o->profile_name, why, sizeof why));
+  if (ck && !manifest) snprintf(why, sizeof why, "out of memory");
+  free(manifest);
+  if (moved) {
+    free(ck); /* (the run's state was restored: lay it out afresh) */
+    ck = NULL;
+    if ((st = relayout(rp, sc, run, ref))) return st;
+  }
+  if (why[0]) /* said even when quiet: an hour's work may be lost */
+    fprintf(progress ? progress : stderr,
+            "vsph run: %s/checkpoint.bin is not used (%s): "
+            "starting over\n",
+            res->dir, why);
+  if (ck) {
+    keep[0] = (long)c.csv;
+    keep[1] = (long)c.profile;
+    keep[2] = (long)c.pvd;
+    o->nsnap = (size_t)c.nsnap;
+    res->segments = (size_t)c.segments + 1;
+    res->wall_s = c.wall_s;
+    res->cpu_s = c.cpu_s;
+    res->bytes_before = c.bytes;
+    memcpy(res->started, c.started, sizeof res->started);
+    res->started[sizeof res->started - 1] = '\0';
+    free(ck);
+    /* the parameters of this process (Solver:checkpoint_s may differ) */
+    return write_used(prm, res->dir);
+  } else {
+    res->segments = 1;
+    if ((st = vsph_folder_clear(fo, NULL))) return st;
+    return write_used(prm, res->dir);
+  }
+}
+
+/* The run's end, as its outcome @p st says: its figures into @p res, its
+ * checkpoint gone (an ended run), run.json sealed and written (a lost
+ * write never ends as "ok"), and a line said. Returns the status. */
+static int end_run(struct outputs *o, struct vsph_folder *fo,
+                   struct vsph_run *run, const char *key,
+                   const struct vsph_rundir_opts *opts,
+                   struct vsph_rundir_result *res, int st) {
+  FILE *progress = opts->progress;
+  res->unstable = run->state == VSPH_RUN_UNSTABLE;
+  res->unstable_time = run->t_unstable;
+  snprintf(res->reason, sizeof res->reason, "%s", run->reason);
+  res->steps = vsph_run_steps(run);
+  res->t = vsph_run_time(run);
+  res->pairs = run->pairs;
+  /* an ended run: its checkpoint (and any temporary left by a process
+   * killed while writing one) goes before anything can call it ok */
+  char path[700];
+  static const char *const gone[] = {"checkpoint.bin", "checkpoint.bin.tmp"};
+  for (int k = 0; k < 2 && !st && !res->interrupted; k++) {
+    snprintf(path, sizeof path, "%s/%s", res->dir, gone[k]);
+    if (remove(path) != 0 && errno != ENOENT) {
+      snprintf(o->error, sizeof o->error, "cannot remove %s: %s", path,
+               strerror(errno));
+      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "%s", o->error);
+      st = VSPH_EIO;
+    }
+  }
+  /* run.json: its status says what became of the run, and a lost write
+   * never ends as "ok". An ended run's is sealed first and written after
+   * (a process killed between the two leaves a broken seal and no
+   * run.json, never an "ok" the seal does not vouch for) */
+  char *json = NULL;
+  st = finish(o, run, opts, res, st, &json);
+  if (!st && res->interrupted) st = VSPH_EINTR;
+  if (!st && json &&
+      (st = vsph_folder_seal_with(fo, key, NULL, "run.json", json))) {
+    snprintf(o->error, sizeof o->error, "cannot seal %s (key.txt)", res->dir);
+    /* unsealed: say so if the disk still lets us (never "ok") */
+    write_run_json(run, opts, res, run_bytes(run, res), o->error, NULL);
+  }
+  if (!st && json) st = vsph_files_write(res->dir, "run.json", json);
+  free(json);
+  if (!st && progress) {
+    if (res->unstable)
+      fprintf(progress,
+              "vsph run: unstable at t = %.6g: %s (output kept in %s)\n",
+              res->unstable_time, res->reason, res->dir);
+    else
+      fprintf(progress, "vsph run: done, %zu steps in %.2f s (%.3g pairs/s)\n",
+              res->steps, res->wall_s, res->pairs / res->wall_s);
+  }
+  return st;
+}
+
 static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
                    const char *key, const struct vsph_rundir_opts *opts,
                    struct vsph_rundir_result *res) {
@@ -716,58 +834,11 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
   o.profile_name = cavity ? "centreline.csv" : "profile.csv";
   const int with_profile =
       rp.snapshots > 0 && (cavity || vsph_scene_is_channel(type));
-  /* a checkpoint of this very run: resume from it */
-  struct ckpt c;
-  size_t state_at = 0;
-  char why[200];
-  unsigned char *ck =
-      checkpoint_read(res->dir, key, &c, &state_at, why, sizeof why);
-  if (ck && (st = vsph_run_unpack(run, ck + state_at, (size_t)c.state))) {
-    /* not this run's after all: lay it out afresh */
-    snprintf(why, sizeof why, "its state does not fit this run");
-    free(ck);
-    ck = NULL;
-    if ((st = relayout(&rp, &sc, &run, &ref))) goto done;
-  }
-  char *manifest =
-      ck ? strndup((const char *)ck + state_at + c.state, (size_t)c.manifest)
-         : NULL;
-  const int moved =
-      ck && (!manifest ||
-             resume_dir(&fo, &c, manifest, o.profile_name, why, sizeof why));
-  if (ck && !manifest) snprintf(why, sizeof why, "out of memory");
-  free(manifest);
-  if (moved) {
-    free(ck); /* (the run's state was restored: lay it out afresh) */
-    ck = NULL;
-    if ((st = relayout(&rp, &sc, &run, &ref))) goto done;
-  }
-  FILE *progress = opts->progress;
-  if (why[0]) /* said even when quiet: an hour's work may be lost */
-    fprintf(progress ? progress : stderr,
-            "vsph run: %s/checkpoint.bin is not used (%s): "
-            "starting over\n",
-            res->dir, why);
   long keep[3] = {-1, -1, -1};
-  if (ck) {
-    keep[0] = (long)c.csv;
-    keep[1] = (long)c.profile;
-    keep[2] = (long)c.pvd;
-    o.nsnap = (size_t)c.nsnap;
-    res->segments = (size_t)c.segments + 1;
-    res->wall_s = c.wall_s;
-    res->cpu_s = c.cpu_s;
-    res->bytes_before = c.bytes;
-    memcpy(res->started, c.started, sizeof res->started);
-    res->started[sizeof res->started - 1] = '\0';
-    free(ck);
-    /* the parameters of this process (Solver:checkpoint_s may differ) */
-    if ((st = write_used(prm, res->dir))) goto done;
-  } else {
-    res->segments = 1;
-    if ((st = vsph_folder_clear(&fo, NULL)) || (st = write_used(prm, res->dir)))
-      goto done;
-  }
+  FILE *progress = opts->progress;
+  if ((st = resume_or_start(&fo, &o, prm, key, &rp, &sc, &run, &ref, progress,
+                            res, keep)))
+    goto done;
   o.csv = live_open(&o, "energy.csv",
                     "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,"
                     "Ek_ref,dEk_ref,Em_ref,dEm_ref,u_err,u_err_rel,v_rms\n",
@@ -800,49 +871,7 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
               vsph_run_time(run), vsph_run_steps(run), res->segments);
   }
   st = time_loop(&o, run, ref, key, opts, res);
-  res->unstable = run->state == VSPH_RUN_UNSTABLE;
-  res->unstable_time = run->t_unstable;
-  snprintf(res->reason, sizeof res->reason, "%s", run->reason);
-  res->steps = vsph_run_steps(run);
-  res->t = vsph_run_time(run);
-  res->pairs = run->pairs;
-  /* an ended run: its checkpoint (and any temporary left by a process
-   * killed while writing one) goes before anything can call it ok */
-  char path[700];
-  static const char *const gone[] = {"checkpoint.bin", "checkpoint.bin.tmp"};
-  for (int k = 0; k < 2 && !st && !res->interrupted; k++) {
-    snprintf(path, sizeof path, "%s/%s", res->dir, gone[k]);
-    if (remove(path) != 0 && errno != ENOENT) {
-      snprintf(o.error, sizeof o.error, "cannot remove %s: %s", path,
-               strerror(errno));
-      vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "%s", o.error);
-      st = VSPH_EIO;
-    }
-  }
-  /* run.json: its status says what became of the run, and a lost write
-   * never ends as "ok". An ended run's is sealed first and written after
-   * (a process killed between the two leaves a broken seal and no
-   * run.json, never an "ok" the seal does not vouch for) */
-  char *json = NULL;
-  st = finish(&o, run, opts, res, st, &json);
-  if (!st && res->interrupted) st = VSPH_EINTR;
-  if (!st && json &&
-      (st = vsph_folder_seal_with(&fo, key, NULL, "run.json", json))) {
-    snprintf(o.error, sizeof o.error, "cannot seal %s (key.txt)", res->dir);
-    /* unsealed: say so if the disk still lets us (never "ok") */
-    write_run_json(run, opts, res, run_bytes(run, res), o.error, NULL);
-  }
-  if (!st && json) st = vsph_files_write(res->dir, "run.json", json);
-  free(json);
-  if (!st && progress) {
-    if (res->unstable)
-      fprintf(progress,
-              "vsph run: unstable at t = %.6g: %s (output kept in %s)\n",
-              res->unstable_time, res->reason, res->dir);
-    else
-      fprintf(progress, "vsph run: done, %zu steps in %.2f s (%.3g pairs/s)\n",
-              res->steps, res->wall_s, res->pairs / res->wall_s);
-  }
+  st = end_run(&o, &fo, run, key, opts, res, st);
 done:
   if (o.csv) fclose(o.csv);
   if (o.profile) fclose(o.profile);
