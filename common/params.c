@@ -164,6 +164,139 @@ static int store_once(struct vsph_params *prm, const char *path, size_t line,
 
 /* libyaml event reader for the subset: root mapping of sections, each a
  * mapping of scalars or flow/block sequences of scalars. */
+/* The walk of a parameter file's YAML events: where it is (depth 0 the
+ * stream, 1 the top mapping, 2 a section's), the section and key being
+ * read, and what it holds of a list. */
+struct yaml_walk {
+  struct vsph_params *prm;
+  const char *path;
+  unsigned source;
+  int depth, docs, in_seq, have_key, done;
+  char section[KEY_MAX], key[KEY_MAX], value[VALUE_MAX];
+};
+
+/* A scalar at line @p line: a section's name, a key, a value or a list's
+ * item. */
+static int on_scalar(struct yaml_walk *w, const yaml_event_t *ev, size_t line) {
+  int st = VSPH_OK;
+  const char *s = (const char *)ev->data.scalar.value;
+  if (strlen(s) != ev->data.scalar.length) { /* "linear\0junk" */
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "%s:%zu: a value holds a NUL character", w->path, line);
+    st = VSPH_EINVAL;
+  } else if (ev->data.scalar.anchor) {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "%s:%zu: anchors are not allowed", w->path, line);
+    st = VSPH_EINVAL;
+  } else if (w->in_seq) {
+    const size_t vl = strlen(w->value);
+    snprintf(w->value + vl, VALUE_MAX - vl, "%s%s", vl ? ", " : "", s);
+  } else if ((!w->have_key || w->depth == 1) && strlen(s) >= KEY_MAX) {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "%s:%zu: a name of %zu characters, '%.20s...' "
+                       "(at most %d)",
+                       w->path, line, strlen(s), s, KEY_MAX - 1);
+    st = VSPH_EINVAL;
+  } else if (w->depth == 1) { /* a section name, or a bare root key */
+    if (w->have_key && !*s) {
+      vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                         "%s:%zu: section '%.40s' has no keys (they go "
+                         "on the lines below it, indented)",
+                         w->path, line, w->key);
+      st = VSPH_EINVAL;
+    } else if (w->have_key) {
+      vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                         "%s:%zu: '%.40s: %.40s%s' stands at the top "
+                         "level: a setting goes inside a section (a "
+                         "line 'Section:' of its own, the setting "
+                         "indented below it)",
+                         w->path, line, w->key, s, strlen(s) > 40 ? "..." : "");
+      st = VSPH_EINVAL;
+    }
+    snprintf(w->key, sizeof w->key, "%s", s);
+    w->have_key = 1;
+  } else if (w->depth == 2 && !w->have_key) {
+    snprintf(w->key, sizeof w->key, "%s", s);
+    w->have_key = 1;
+  } else if (w->depth == 2) {
+    st = store_once(w->prm, w->path, line, w->section, w->key, s, w->source);
+    w->have_key = 0;
+  } else {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "%s:%zu: unexpected value '%s'", w->path, line, s);
+    st = VSPH_EINVAL;
+  }
+  return st;
+}
+
+/* One event of the file: the walk moved on, or a refusal reported. */
+static int on_event(struct yaml_walk *w, const yaml_event_t *ev) {
+  int st = VSPH_OK;
+  const size_t line = ev->start_mark.line + 1;
+  switch (ev->type) {
+    case YAML_STREAM_END_EVENT:
+      w->done = 1;
+      break;
+    case YAML_DOCUMENT_START_EVENT:
+      if (++w->docs > 1) {
+        vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                           "%s:%zu: several documents in one file", w->path,
+                           line);
+        st = VSPH_EINVAL;
+      }
+      break;
+    case YAML_ALIAS_EVENT:
+      vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                         "%s:%zu: aliases are not allowed", w->path, line);
+      st = VSPH_EINVAL;
+      break;
+    case YAML_MAPPING_START_EVENT:
+      if (ev->data.mapping_start.anchor || w->depth >= 2 || w->in_seq ||
+          (w->depth == 1 && !w->have_key)) {
+        vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                           "%s:%zu: only 'Section:' then 'key: value' "
+                           "is allowed",
+                           w->path, line);
+        st = VSPH_EINVAL;
+        break;
+      }
+      if (w->depth == 1) { /* the section's own mapping */
+        snprintf(w->section, sizeof w->section, "%s", w->key);
+        w->have_key = 0;
+      }
+      w->depth++;
+      break;
+    case YAML_MAPPING_END_EVENT:
+      w->depth--;
+      w->have_key = 0;
+      break;
+    case YAML_SEQUENCE_START_EVENT:
+      if (w->depth != 2 || !w->have_key || w->in_seq ||
+          ev->data.sequence_start.anchor) {
+        vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                           "%s:%zu: a list must be the value of a key", w->path,
+                           line);
+        st = VSPH_EINVAL;
+        break;
+      }
+      w->in_seq = 1;
+      w->value[0] = '\0';
+      break;
+    case YAML_SEQUENCE_END_EVENT:
+      w->in_seq = 0;
+      st = store_once(w->prm, w->path, line, w->section, w->key, w->value,
+                      w->source);
+      w->have_key = 0;
+      break;
+    case YAML_SCALAR_EVENT:
+      st = on_scalar(w, ev, line);
+      break;
+    default:
+      break;
+  }
+  return st;
+}
+
 int vsph_params_read_string(struct vsph_params *prm, const char *text,
                             size_t len, const char *path) {
   if (!prm || !text || !path)
@@ -176,10 +309,9 @@ int vsph_params_read_string(struct vsph_params *prm, const char *text,
   if (!yaml_parser_initialize(&ps))
     VSPH_FAIL(VSPH_ENOMEM, "cannot start the YAML parser");
   yaml_parser_set_input_string(&ps, (const unsigned char *)text, len);
-  int st = VSPH_OK, depth = 0, docs = 0, in_seq = 0;
-  char section[KEY_MAX] = "", key[KEY_MAX] = "", value[VALUE_MAX] = "";
-  int have_key = 0, done = 0;
-  while (!done && !st) {
+  struct yaml_walk w = {.prm = prm, .path = path, .source = source};
+  int st = VSPH_OK;
+  while (!w.done && !st) {
     yaml_event_t ev;
     if (!yaml_parser_parse(&ps, &ev)) {
       vsph_status_report(
@@ -188,120 +320,12 @@ int vsph_params_read_string(struct vsph_params *prm, const char *text,
       st = VSPH_EINVAL;
       break;
     }
-    const size_t line = ev.start_mark.line + 1;
-    switch (ev.type) {
-      case YAML_STREAM_END_EVENT:
-        done = 1;
-        break;
-      case YAML_DOCUMENT_START_EVENT:
-        if (++docs > 1) {
-          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                             "%s:%zu: several documents in one file", path,
-                             line);
-          st = VSPH_EINVAL;
-        }
-        break;
-      case YAML_ALIAS_EVENT:
-        vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                           "%s:%zu: aliases are not allowed", path, line);
-        st = VSPH_EINVAL;
-        break;
-      case YAML_MAPPING_START_EVENT:
-        if (ev.data.mapping_start.anchor || depth >= 2 || in_seq ||
-            (depth == 1 && !have_key)) {
-          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                             "%s:%zu: only 'Section:' then 'key: value' "
-                             "is allowed",
-                             path, line);
-          st = VSPH_EINVAL;
-          break;
-        }
-        if (depth == 1) { /* the section's own mapping */
-          snprintf(section, sizeof section, "%s", key);
-          have_key = 0;
-        }
-        depth++;
-        break;
-      case YAML_MAPPING_END_EVENT:
-        depth--;
-        have_key = 0;
-        break;
-      case YAML_SEQUENCE_START_EVENT:
-        if (depth != 2 || !have_key || in_seq ||
-            ev.data.sequence_start.anchor) {
-          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                             "%s:%zu: a list must be the value of a key", path,
-                             line);
-          st = VSPH_EINVAL;
-          break;
-        }
-        in_seq = 1;
-        value[0] = '\0';
-        break;
-      case YAML_SEQUENCE_END_EVENT:
-        in_seq = 0;
-        st = store_once(prm, path, line, section, key, value, source);
-        have_key = 0;
-        break;
-      case YAML_SCALAR_EVENT: {
-        const char *s = (const char *)ev.data.scalar.value;
-        if (strlen(s) != ev.data.scalar.length) { /* "linear\0junk" */
-          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                             "%s:%zu: a value holds a NUL character", path,
-                             line);
-          st = VSPH_EINVAL;
-        } else if (ev.data.scalar.anchor) {
-          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                             "%s:%zu: anchors are not allowed", path, line);
-          st = VSPH_EINVAL;
-        } else if (in_seq) {
-          const size_t vl = strlen(value);
-          snprintf(value + vl, VALUE_MAX - vl, "%s%s", vl ? ", " : "", s);
-        } else if ((!have_key || depth == 1) && strlen(s) >= KEY_MAX) {
-          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                             "%s:%zu: a name of %zu characters, '%.20s...' "
-                             "(at most %d)",
-                             path, line, strlen(s), s, KEY_MAX - 1);
-          st = VSPH_EINVAL;
-        } else if (depth == 1) { /* a section name, or a bare root key */
-          if (have_key && !*s) {
-            vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                               "%s:%zu: section '%.40s' has no keys (they go "
-                               "on the lines below it, indented)",
-                               path, line, key);
-            st = VSPH_EINVAL;
-          } else if (have_key) {
-            vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                               "%s:%zu: '%.40s: %.40s%s' stands at the top "
-                               "level: a setting goes inside a section (a "
-                               "line 'Section:' of its own, the setting "
-                               "indented below it)",
-                               path, line, key, s, strlen(s) > 40 ? "..." : "");
-            st = VSPH_EINVAL;
-          }
-          snprintf(key, sizeof key, "%s", s);
-          have_key = 1;
-        } else if (depth == 2 && !have_key) {
-          snprintf(key, sizeof key, "%s", s);
-          have_key = 1;
-        } else if (depth == 2) {
-          st = store_once(prm, path, line, section, key, s, source);
-          have_key = 0;
-        } else {
-          vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                             "%s:%zu: unexpected value '%s'", path, line, s);
-          st = VSPH_EINVAL;
-        }
-        break;
-      }
-      default:
-        break;
-    }
+    st = on_event(&w, &ev);
     yaml_event_delete(&ev);
   }
-  if (!st && depth == 1 && have_key) {
+  if (!st && w.depth == 1 && w.have_key) {
     vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
-                       "%s: section '%s' has no keys", path, key);
+                       "%s: section '%s' has no keys", path, w.key);
     st = VSPH_EINVAL;
   }
   yaml_parser_delete(&ps);
