@@ -369,10 +369,9 @@ int vsph_dissipation_particles(const struct vsph_viscous_props *vp,
   return st;
 }
 
-int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
-                             struct vsph_dissipation_result *res) {
-  if (!dp || !res)
-    VSPH_FAIL(VSPH_EINVAL, "vsph_dissipation_compute: a NULL argument");
+/* Its inputs and the work they ask, refused where wrong or too large
+ * (one message); VSPH_OK where they hold. */
+static int refuse(const struct vsph_dissipation_props *dp) {
   if (dp->field.dim != 2)
     VSPH_FAIL(VSPH_EINVAL, "the dissipation sets are 2-D");
   if (dp->field.kind == VSPH_FIELDS_QUADRATIC)
@@ -409,6 +408,70 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
               dp->nacross, dp->hdx, pairs, n, nb,
               vsph_viscous_first_pass(dp->form) ? " x 2 passes" : "",
               dp->max_pairs);
+  return VSPH_OK;
+}
+
+/* The set's dissipation from its forces @p f and pair densities @p dens,
+ * against the continuum limit @p limit (the form's, lambda @p lambda):
+ * the whole, the interior's, and the errors they split into, into
+ * @p res (whose P_exact, P_grad and P_limit are set). */
+static void sum_up(const struct vsph_dissipation_props *dp,
+                   const struct vsph_particles *p, double *const f[3],
+                   const double *dens, int limit, double lambda, double h,
+                   struct vsph_dissipation_result *res) {
+  /* Serial sums in particle order: reproducible for any thread count. */
+  const double H = dp->kernel->kappa * h;
+  double P = 0.0, Pp = 0.0, Pint = 0.0, Pint_lim = 0.0, Pint_grad = 0.0;
+  double mom[2] = {0, 0}, mom_abs = 0.0, ang = 0.0, ang_abs = 0.0;
+  for (size_t i = 0; i < p->n; i++) {
+    const double V = p->vol[i], x[3] = {p->pos[0][i], p->pos[1][i], 0.0};
+    P += V * (p->vel[0][i] * f[0][i] + p->vel[1][i] * f[1][i]);
+    Pp += V * dens[i];
+    mom[0] += V * f[0][i];
+    mom[1] += V * f[1][i];
+    mom_abs += V * hypot(f[0][i], f[1][i]);
+    ang += V * (x[0] * f[1][i] - x[1] * f[0][i]);
+    ang_abs += V * hypot(x[0], x[1]) * hypot(f[0][i], f[1][i]);
+    if (edge_distance(dp->shape, x) >= H) {
+      const struct densities d = densities_at(&dp->field, dp->mu, x);
+      const double lim = limit_density(&d, limit, lambda);
+      res->n_interior++;
+      Pint += V * dens[i];
+      Pint_lim -= V * lim;
+      Pint_grad -= V * d.grad2;
+    }
+  }
+  res->n_particles = p->n;
+  res->P = P;
+  res->P_pair = Pp;
+  res->momentum = mom_abs > 0.0 ? hypot(mom[0], mom[1]) / mom_abs : 0.0;
+  res->angular = ang_abs > 0.0 ? fabs(ang) / ang_abs : 0.0;
+
+  /* "Zero" exact dissipation: the field has D = 0 (rigid rotation), where
+   * the quadrature returns 0 exactly; normalise by |P_grad| then. */
+  const int exact_zero = fabs(res->P_exact) <= 1e-12 * fabs(res->P_grad);
+  const double norm = exact_zero ? fabs(res->P_grad) : fabs(res->P_exact);
+  res->rel_error = exact_zero ? P / norm : (P - res->P_exact) / norm;
+  const double P_limit = res->P_limit;
+  res->consistency_error = (P_limit - res->P_exact) / norm;
+  if (res->n_interior > 0) {
+    const double nint = fabs(Pint_lim) > 1e-12 * fabs(Pint_grad)
+                            ? fabs(Pint_lim)
+                            : fabs(Pint_grad);
+    res->lattice_error = (Pint - Pint_lim) / nint;
+    res->surface_error = (P - P_limit) / norm - res->lattice_error;
+  } else {
+    res->lattice_error = NAN;
+    res->surface_error = NAN;
+  }
+}
+
+int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
+                             struct vsph_dissipation_result *res) {
+  if (!dp || !res)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_dissipation_compute: a NULL argument");
+  const int bad = refuse(dp);
+  if (bad) return bad;
   memset(res, 0, sizeof *res);
   const double dx = EXTENT / (double)dp->nacross, h = dp->hdx * dx;
   res->dx = dx;
@@ -453,51 +516,7 @@ int vsph_dissipation_compute(const struct vsph_dissipation_props *dp,
                  : limit == VSPH_VISCOUS_LIMIT_LAPLACIAN ? ex[2]
                                                          : ex[0];
 
-  /* Serial sums in particle order: reproducible for any thread count. */
-  const double H = dp->kernel->kappa * h;
-  double P = 0.0, Pp = 0.0, Pint = 0.0, Pint_lim = 0.0, Pint_grad = 0.0;
-  double mom[2] = {0, 0}, mom_abs = 0.0, ang = 0.0, ang_abs = 0.0;
-  for (size_t i = 0; i < p->n; i++) {
-    const double V = p->vol[i], x[3] = {p->pos[0][i], p->pos[1][i], 0.0};
-    P += V * (p->vel[0][i] * f[0][i] + p->vel[1][i] * f[1][i]);
-    Pp += V * dens[i];
-    mom[0] += V * f[0][i];
-    mom[1] += V * f[1][i];
-    mom_abs += V * hypot(f[0][i], f[1][i]);
-    ang += V * (x[0] * f[1][i] - x[1] * f[0][i]);
-    ang_abs += V * hypot(x[0], x[1]) * hypot(f[0][i], f[1][i]);
-    if (edge_distance(dp->shape, x) >= H) {
-      const struct densities d = densities_at(&dp->field, dp->mu, x);
-      const double lim = limit_density(&d, limit, vp.lambda);
-      res->n_interior++;
-      Pint += V * dens[i];
-      Pint_lim -= V * lim;
-      Pint_grad -= V * d.grad2;
-    }
-  }
-  res->n_particles = p->n;
-  res->P = P;
-  res->P_pair = Pp;
-  res->momentum = mom_abs > 0.0 ? hypot(mom[0], mom[1]) / mom_abs : 0.0;
-  res->angular = ang_abs > 0.0 ? fabs(ang) / ang_abs : 0.0;
-
-  /* "Zero" exact dissipation: the field has D = 0 (rigid rotation), where
-   * the quadrature returns 0 exactly; normalise by |P_grad| then. */
-  const int exact_zero = fabs(res->P_exact) <= 1e-12 * fabs(res->P_grad);
-  const double norm = exact_zero ? fabs(res->P_grad) : fabs(res->P_exact);
-  res->rel_error = exact_zero ? P / norm : (P - res->P_exact) / norm;
-  const double P_limit = res->P_limit;
-  res->consistency_error = (P_limit - res->P_exact) / norm;
-  if (res->n_interior > 0) {
-    const double nint = fabs(Pint_lim) > 1e-12 * fabs(Pint_grad)
-                            ? fabs(Pint_lim)
-                            : fabs(Pint_grad);
-    res->lattice_error = (Pint - Pint_lim) / nint;
-    res->surface_error = (P - P_limit) / norm - res->lattice_error;
-  } else {
-    res->lattice_error = NAN;
-    res->surface_error = NAN;
-  }
+  sum_up(dp, p, f, dens, limit, vp.lambda, h, res);
 done:
   free(buf);
   vsph_particles_free(p);
