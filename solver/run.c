@@ -271,54 +271,11 @@ static unsigned schedule(struct vsph_run *r) {
   return due;
 }
 
-/* Refuse, before allocating anything, a run that would not fit in
- * rp->max_memory or would need more than rp->max_steps steps, saying the
- * estimate. Steps: t_end over THEORY 5's time step at t = 0 with the
- * scene's U_max and largest body force. */
-static int check_cost(const struct vsph_run_props *rp,
-                      const struct vsph_scene *sc, double t_end,
-                      struct vsph_run_estimate *e) {
-  const double dx = sc->ref_length / (double)rp->res, h = rp->hdx * dx;
-  const double n =
-      sc->area * pow((double)rp->res, sc->dim) + 4.0 * (double)rp->res;
-  /* ghosts: a layer of reach/dx + 1 particles along each wall, over at
-   * most twice the fluid's side (n^((d-1)/d)), corners included */
-  /* fixed wall particles' periodic images reach two supports too */
-  const double deep = rp->scheme_kind == VSPH_EQUATIONS_CONTACT ? 1.0
-                      : sc->walls.solid == VSPH_WALLS_FIXED
-                          ? fmax(2.0, vsph_viscous_passes(rp->form))
-                          : vsph_viscous_passes(rp->form);
-  for (int a = 0; a < sc->dim; a++) {
-    const double L = vsph_walls_period(&sc->walls, a);
-    const double reach = deep * rp->ktype->kappa * h;
-    if (L > 0.0 && !(L > 1.25 * reach))
-      VSPH_FAIL(VSPH_EINVAL,
-                "the periodic length %g m is too short for the kernel's "
-                "reach %g m%s: lengthen the period (the scene's length, Ly or "
-                "Lz) or raise res",
-                L, reach,
-                deep > 1 ? " (two supports for a two-pass form or fixed wall "
-                           "particles)"
-                         : "");
-  }
-  const double layers = ceil(deep * rp->ktype->kappa * rp->hdx) + 1.0;
-  e->neighbours = (sc->dim == 2 ? VSPH_PI : 4.0 * VSPH_PI / 3.0) *
-                  pow(rp->ktype->kappa * rp->hdx, sc->dim) * deep;
-  const double ghosts =
-      sc->walls.n * layers * 2.0 * pow(n, (sc->dim - 1.0) / sc->dim);
-  /* the lattice the scene lays, which the integrator takes */
-  const double bytes = vsph_integrate_bytes_estimate(
-      sc->dim, n, ghosts,
-      rp->corr != VSPH_PAIR_CORR_NONE ? 2 : vsph_viscous_first_pass(rp->form),
-      (int)rp->tvf);
-  e->particles = n;
-  e->bytes = bytes;
-  const double gib = bytes / (1024.0 * 1024.0 * 1024.0);
-  if (gib > rp->max_memory)
-    VSPH_FAIL(VSPH_EINVAL,
-              "res %zu needs up to about %.3g GiB (%.3g particles), more than "
-              "Solver:max_memory = %g GiB: lower res or raise max_memory",
-              rp->res, gib, n, rp->max_memory);
+/* The settings a scene cannot take together (a law of state that needs
+ * confinement, wall particles a scheme has not, ...), refused in one line
+ * each; VSPH_OK where none applies. */
+static int check_combination(const struct vsph_run_props *rp,
+                             const struct vsph_scene *sc) {
   unsigned sides = 0; /* bit 2a + (side > 0): a plane bounds axis a */
   for (int q = 0; q < sc->walls.n; q++)
     sides |= 1u << (2 * sc->walls.axis[q] + (sc->walls.side[q] > 0));
@@ -375,6 +332,59 @@ static int check_cost(const struct vsph_run_props *rp,
               "Solver:eos = %s needs a scene without gravity (the ghosts' "
               "hydrostatic density follows the linear law)",
               rp->eos);
+  return VSPH_OK;
+}
+
+/* Refuse, before allocating anything, a run that would not fit in
+ * rp->max_memory or would need more than rp->max_steps steps, saying the
+ * estimate. Steps: t_end over THEORY 5's time step at t = 0 with the
+ * scene's U_max and largest body force. */
+static int check_cost(const struct vsph_run_props *rp,
+                      const struct vsph_scene *sc, double t_end,
+                      struct vsph_run_estimate *e) {
+  const double dx = sc->ref_length / (double)rp->res, h = rp->hdx * dx;
+  const double n =
+      sc->area * pow((double)rp->res, sc->dim) + 4.0 * (double)rp->res;
+  /* ghosts: a layer of reach/dx + 1 particles along each wall, over at
+   * most twice the fluid's side (n^((d-1)/d)), corners included */
+  /* fixed wall particles' periodic images reach two supports too */
+  const double deep = rp->scheme_kind == VSPH_EQUATIONS_CONTACT ? 1.0
+                      : sc->walls.solid == VSPH_WALLS_FIXED
+                          ? fmax(2.0, vsph_viscous_passes(rp->form))
+                          : vsph_viscous_passes(rp->form);
+  for (int a = 0; a < sc->dim; a++) {
+    const double L = vsph_walls_period(&sc->walls, a);
+    const double reach = deep * rp->ktype->kappa * h;
+    if (L > 0.0 && !(L > 1.25 * reach))
+      VSPH_FAIL(VSPH_EINVAL,
+                "the periodic length %g m is too short for the kernel's "
+                "reach %g m%s: lengthen the period (the scene's length, Ly or "
+                "Lz) or raise res",
+                L, reach,
+                deep > 1 ? " (two supports for a two-pass form or fixed wall "
+                           "particles)"
+                         : "");
+  }
+  const double layers = ceil(deep * rp->ktype->kappa * rp->hdx) + 1.0;
+  e->neighbours = (sc->dim == 2 ? VSPH_PI : 4.0 * VSPH_PI / 3.0) *
+                  pow(rp->ktype->kappa * rp->hdx, sc->dim) * deep;
+  const double ghosts =
+      sc->walls.n * layers * 2.0 * pow(n, (sc->dim - 1.0) / sc->dim);
+  /* the lattice the scene lays, which the integrator takes */
+  const double bytes = vsph_integrate_bytes_estimate(
+      sc->dim, n, ghosts,
+      rp->corr != VSPH_PAIR_CORR_NONE ? 2 : vsph_viscous_first_pass(rp->form),
+      (int)rp->tvf);
+  e->particles = n;
+  e->bytes = bytes;
+  const double gib = bytes / (1024.0 * 1024.0 * 1024.0);
+  if (gib > rp->max_memory)
+    VSPH_FAIL(VSPH_EINVAL,
+              "res %zu needs up to about %.3g GiB (%.3g particles), more than "
+              "Solver:max_memory = %g GiB: lower res or raise max_memory",
+              rp->res, gib, n, rp->max_memory);
+  const int bad = check_combination(rp, sc);
+  if (bad) return bad;
   const double gmax = sc->body == VSPH_EQUATIONS_BODY_GRAVITY ? fabs(sc->g)
                       : sc->body == VSPH_EQUATIONS_BODY_RADIAL
                           ? sc->beta * sc->beta * sc->ref_length
