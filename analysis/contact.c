@@ -242,6 +242,40 @@ static const char *no_fit(double nu, double t, double D0, double lo,
   return NULL;
 }
 
+/* Each fluid particle's y displacement since the start, unwrapped
+ * across the period @p Ly (a step moves a particle far less than Ly/2):
+ * @p prev its last y, @p disp its sum, both by id (below @p nf). */
+static void unwrap(const struct vsph_particles *p, size_t nf, double Ly,
+                   double *prev, double *disp) {
+  for (size_t i = 0; i < p->n; i++) {
+    const size_t id = p->id[i];
+    if (id >= nf) continue;
+    double d = p->pos[1][i] - prev[id];
+    d -= Ly * nearbyint(d / Ly);
+    disp[id] += d;
+    prev[id] = p->pos[1][i];
+  }
+}
+
+/* The viscosity fitted to each profile of @p cs (velocity and
+ * displacement), between 1e-4 and 1e4 times the scale D0 c/10; NaN where
+ * the profile carries no information yet (no_fit). */
+static void fit_profiles(struct vsph_contact_shear *cs) {
+  const size_t nb = cs->nbins;
+  const double scale = 0.1 * cs->D0 * cs->c0;
+  const double lo = 1e-4 * scale, hi = 1e4 * scale;
+  for (size_t q = 0; q < cs->nt; q++) {
+    cs->nu_u[q] = vsph_contact_fit_nu(nb, cs->x, cs->u[q], 0, cs->t[q], cs->U0,
+                                      cs->W, lo, hi, &cs->rms_u[q]);
+    cs->nu_dy[q] = vsph_contact_fit_nu(nb, cs->x, cs->dy[q], 1, cs->t[q],
+                                       cs->U0, cs->W, lo, hi, &cs->rms_dy[q]);
+    if ((cs->na_u[q] = no_fit(cs->nu_u[q], cs->t[q], cs->D0, lo, hi)))
+      cs->nu_u[q] = cs->rms_u[q] = NAN;
+    if ((cs->na_dy[q] = no_fit(cs->nu_dy[q], cs->t[q], cs->D0, lo, hi)))
+      cs->nu_dy[q] = cs->rms_dy[q] = NAN;
+  }
+}
+
 int vsph_contact_shear_measure(struct vsph_params *prm,
                                struct vsph_contact_shear *cs) {
   const size_t nprof = cs->nprof < 1 ? 1 : cs->nprof > 8 ? 8 : cs->nprof;
@@ -311,16 +345,7 @@ int vsph_contact_shear_measure(struct vsph_params *prm,
   size_t k = 0;
   while (run->state == VSPH_RUN_RUNNING && k < nprof) {
     if ((st = vsph_run_iterate(run))) goto done;
-    /* unwrap: a step moves a particle far less than Ly/2 */
-    const struct vsph_particles *p = run->integ->p;
-    for (size_t i = 0; i < p->n; i++) {
-      const size_t id = p->id[i];
-      if (id >= nf) continue;
-      double d = p->pos[1][i] - prev[id];
-      d -= Ly * nearbyint(d / Ly);
-      disp[id] += d;
-      prev[id] = p->pos[1][i];
-    }
+    unwrap(run->integ->p, nf, Ly, prev, disp);
     const double t = vsph_run_time(run);
     if (run->state != VSPH_RUN_UNSTABLE &&
         t >= cs->t_end * (double)(k + 1) / (double)nprof * (1.0 - 1e-12)) {
@@ -340,19 +365,7 @@ int vsph_contact_shear_measure(struct vsph_params *prm,
   cs->steps = vsph_run_steps(run);
   snprintf(cs->reason, sizeof cs->reason, "%s", run->reason);
   cs->wall_s = omp_get_wtime() - t0;
-  /* fits between 1e-4 and 1e4 times the scale D0 c/10 */
-  const double scale = 0.1 * cs->D0 * cs->c0;
-  const double lo = 1e-4 * scale, hi = 1e4 * scale;
-  for (size_t q = 0; q < cs->nt; q++) {
-    cs->nu_u[q] = vsph_contact_fit_nu(nb, cs->x, cs->u[q], 0, cs->t[q], cs->U0,
-                                      cs->W, lo, hi, &cs->rms_u[q]);
-    cs->nu_dy[q] = vsph_contact_fit_nu(nb, cs->x, cs->dy[q], 1, cs->t[q],
-                                       cs->U0, cs->W, lo, hi, &cs->rms_dy[q]);
-    if ((cs->na_u[q] = no_fit(cs->nu_u[q], cs->t[q], cs->D0, lo, hi)))
-      cs->nu_u[q] = cs->rms_u[q] = NAN;
-    if ((cs->na_dy[q] = no_fit(cs->nu_dy[q], cs->t[q], cs->D0, lo, hi)))
-      cs->nu_dy[q] = cs->rms_dy[q] = NAN;
-  }
+  fit_profiles(cs);
 done:
   free(disp);
   free(prev);
