@@ -712,8 +712,9 @@ START_TEST(test_assemble_from_archive) {
                        "|\n"
                        "| mgf | 100 | 1.000e-02 | 1.000e-02 | 7.071e-03 | yes "
                        "|\n"
-                       "| mgf | order | **1.00** (fitted) | **1.00** | "
-                       "**1.00** | differences over the whole run |"),
+                       "| mgf | order | **1.00** (fitted through the 3 "
+                       "stable rungs) | **1.00** | **1.00** | differences "
+                       "over the whole run |"),
                 "%.3000s", summary);
   ck_assert_msg(strstr(summary,
                        "| cartesian | pvwf | 100 | 1.000e-02 | 1.000e-02 | "
