@@ -339,17 +339,13 @@ static double quantile(const double *v, size_t n, double p) {
   return v[r - 1];
 }
 
-int vsph_plot_particles(const char *dir, const char *name, const char *title,
-                        const struct vsph_plot_panel *pn, size_t n, int col,
-                        const char *cblabel, int diverging, const double box[4],
-                        double cb[4]) {
-  if (n < 1 || n > 8)
-    VSPH_FAIL(VSPH_EINVAL, "picture %s: 1 to 8 panels, not %zu", name, n);
-  /* one colour scale for the scene, from every particle of every panel:
-   * robust limits, the 1st and 99th percentiles (a few surface particles
-   * must not set the scale of the whole field), the share beyond them
-   * said; a signed field on a diverging scale +-M, M the 99th percentile
-   * of |value|; a field of one sign on a sequential one */
+/* The robust colour limits of column @p col over every panel (the rule:
+ * vsph_plot_particles): *@p lo and *@p hi, the share of values beyond
+ * them, *@p diverging cleared for a field of one sign. */
+static int colour_limits(const char *dir, const char *name,
+                         const struct vsph_plot_panel *pn, size_t n, int col,
+                         int *diverging, double *lo, double *hi,
+                         double *share) {
   double *v = NULL;
   size_t count = 0, cap = 0;
   for (size_t k = 0; k < n; k++) {
@@ -365,30 +361,45 @@ int vsph_plot_particles(const char *dir, const char *name, const char *title,
               col);
   }
   qsort(v, count, sizeof *v, cmp_double);
-  if (diverging && (v[0] >= 0.0 || v[count - 1] <= 0.0)) diverging = 0;
-  double lo, hi;
+  if (*diverging && (v[0] >= 0.0 || v[count - 1] <= 0.0)) *diverging = 0;
   size_t beyond = 0;
-  if (diverging) {
+  if (*diverging) {
     for (size_t k = 0; k < count; k++) v[k] = fabs(v[k]);
     qsort(v, count, sizeof *v, cmp_double);
     const double m = quantile(v, count, 0.99);
-    hi = m > 0.0 ? m : 1.0;
-    lo = -hi;
-    for (size_t k = 0; k < count; k++) beyond += v[k] > hi;
+    *hi = m > 0.0 ? m : 1.0;
+    *lo = -*hi;
+    for (size_t k = 0; k < count; k++) beyond += v[k] > *hi;
   } else {
-    lo = quantile(v, count, 0.01);
-    hi = quantile(v, count, 0.99);
-    for (size_t k = 0; k < count; k++) beyond += v[k] < lo || v[k] > hi;
-    if (!(hi > lo)) { /* a uniform field: a range around it */
-      const double d = lo != 0.0 ? 0.01 * fabs(lo) : 1.0;
-      lo -= d, hi += d;
+    *lo = quantile(v, count, 0.01);
+    *hi = quantile(v, count, 0.99);
+    for (size_t k = 0; k < count; k++) beyond += v[k] < *lo || v[k] > *hi;
+    if (!(*hi > *lo)) { /* a uniform field: a range around it */
+      const double d = *lo != 0.0 ? 0.01 * fabs(*lo) : 1.0;
+      *lo -= d, *hi += d;
     }
   }
   free(v);
-  if (cb) {
-    cb[2] = (double)beyond / (double)count;
-    cb[3] = diverging;
-  }
+  *share = (double)beyond / (double)count;
+  return VSPH_OK;
+}
+
+int vsph_plot_particles(const char *dir, const char *name, const char *title,
+                        const struct vsph_plot_panel *pn, size_t n, int col,
+                        const char *cblabel, int diverging, const double box[4],
+                        double cb[4]) {
+  if (n < 1 || n > 8)
+    VSPH_FAIL(VSPH_EINVAL, "picture %s: 1 to 8 panels, not %zu", name, n);
+  /* one colour scale for the scene, from every particle of every panel:
+   * robust limits, the 1st and 99th percentiles (a few surface particles
+   * must not set the scale of the whole field), the share beyond them
+   * said; a signed field on a diverging scale +-M, M the 99th percentile
+   * of |value|; a field of one sign on a sequential one */
+  double lo, hi, share;
+  const int st0 =
+      colour_limits(dir, name, pn, n, col, &diverging, &lo, &hi, &share);
+  if (st0) return st0;
+  if (cb) cb[2] = share, cb[3] = diverging;
   if (cb) cb[0] = lo, cb[1] = hi;
   /* the layout: panels to scale (the box's aspect), colour bar at right */
   const int rows = n < 3 ? 1 : 2, cols = (int)((n + (size_t)rows - 1) / rows);

@@ -273,6 +273,26 @@ static int run_part(struct vsph_report *R, size_t p, double left,
   return st;
 }
 
+/* The report's first screen into R->md: the question, then the tally and
+ * the findings the claims part marked in @p claims (its text, or NULL;
+ * they are cut from it, shown once), then the sources and how the runs
+ * were made. */
+static int first_screen(struct vsph_report *R, char *claims) {
+  int st = vsph_report_doc_say(R, "report.question");
+  char *f0 = claims ? strstr(claims, "<!-- findings -->") : NULL;
+  char *f1 = f0 ? strstr(f0, "<!-- /findings -->") : NULL;
+  if (!st && f0 && f1) {
+    const char *body = f0 + strlen("<!-- findings -->\n");
+    fprintf(R->md, "%.*s", (int)(f1 - body), body);
+    memmove(f0, f1 + strlen("<!-- /findings -->\n"),
+            strlen(f1 + strlen("<!-- /findings -->\n")) + 1);
+  }
+  if (!st) st = vsph_report_doc_say(R, "report.head_sources");
+  if (!st && !R->runs.full && R->runs.from_archive)
+    st = vsph_report_doc_say(R, "report.quick_archive");
+  return st;
+}
+
 /* report.md from every part present, then report.html. */
 static int assemble(struct vsph_report *R, const char *parts_dir,
                     unsigned long want, const int *cached, const double *wall,
@@ -309,21 +329,7 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
     }
   }
   const int claims = vsph_report_part_find("claims");
-  /* the first screen: the question, then the tally and the findings the
-   * claims part marked (moved here from its section), then the sources
-   * and how the runs were made */
-  if (!st) st = vsph_report_doc_say(R, "report.question");
-  char *f0 = text[claims] ? strstr(text[claims], "<!-- findings -->") : NULL;
-  char *f1 = f0 ? strstr(f0, "<!-- /findings -->") : NULL;
-  if (!st && f0 && f1) {
-    const char *body = f0 + strlen("<!-- findings -->\n");
-    fprintf(md, "%.*s", (int)(f1 - body), body);
-    memmove(f0, f1 + strlen("<!-- /findings -->\n"),
-            strlen(f1 + strlen("<!-- /findings -->\n")) + 1);
-  }
-  if (!st) st = vsph_report_doc_say(R, "report.head_sources");
-  if (!st && !R->runs.full && R->runs.from_archive)
-    st = vsph_report_doc_say(R, "report.quick_archive");
+  if (!st) st = first_screen(R, text[claims]);
   size_t order[NPARTS], n = 0;
   if (text[claims]) order[n++] = (size_t)claims;
   for (size_t p = 0; p < NPARTS; p++)
