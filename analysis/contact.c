@@ -6,6 +6,7 @@
 #include <gsl/gsl_min.h>
 #include <math.h>
 #include <omp.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -242,6 +243,82 @@ static const char *no_fit(double nu, double t, double D0, double lo,
   return NULL;
 }
 
+/* ------------------------------------------------------ checkpoints */
+
+/* A shear test's state: this header, then disp and prev (nf each), the
+ * k profiles taken (u then dy, nb each), then the run's own state
+ * (vsph_run_pack, run_len bytes). */
+struct shear_ckpt {
+  char magic[16];
+  uint64_t k, nf, nb, nprof, run_len;
+  double wall, t[8];
+};
+static const char SHEAR_MAGIC[16] = "vsph shear v1";
+
+/* The state packed and handed to cs->save. */
+static int shear_pack_save(const struct vsph_contact_shear *cs,
+                           const struct vsph_run *run, const double *disp,
+                           const double *prev, size_t k, double wall) {
+  const size_t nf = run->n_fluid, nb = cs->nbins;
+  const size_t run_len = vsph_run_pack(run, NULL);
+  const size_t len = sizeof(struct shear_ckpt) +
+                     (2 * nf + 2 * k * nb) * sizeof(double) + run_len;
+  unsigned char *buf = malloc(len);
+  if (!buf) VSPH_FAIL(VSPH_ENOMEM, "cannot pack the shear test's state");
+  struct shear_ckpt h = {.k = k,
+                         .nf = nf,
+                         .nb = nb,
+                         .nprof = cs->nprof,
+                         .run_len = run_len,
+                         .wall = wall};
+  memcpy(h.magic, SHEAR_MAGIC, sizeof h.magic);
+  memcpy(h.t, cs->t, sizeof h.t);
+  unsigned char *at = buf;
+  memcpy(at, &h, sizeof h), at += sizeof h;
+  memcpy(at, disp, nf * sizeof *disp), at += nf * sizeof *disp;
+  memcpy(at, prev, nf * sizeof *prev), at += nf * sizeof *prev;
+  for (size_t q = 0; q < k; q++) {
+    memcpy(at, cs->u[q], nb * sizeof(double)), at += nb * sizeof(double);
+    memcpy(at, cs->dy[q], nb * sizeof(double)), at += nb * sizeof(double);
+  }
+  vsph_run_pack(run, at);
+  const int st = cs->save(cs->save_ctx, buf, len);
+  free(buf);
+  return st;
+}
+
+/* The state cs->resume holds, restored into @p run (freshly made with the
+ * same settings), the arrays, the profiles so far (*@p k) and the earlier
+ * processes' wall time (*@p wall); a state of other settings or cut short
+ * is refused (VSPH_EINVAL). */
+static int shear_unpack(struct vsph_contact_shear *cs, struct vsph_run *run,
+                        double *disp, double *prev, size_t *k, double *wall,
+                        size_t nprof) {
+  struct shear_ckpt h;
+  const size_t nf = run->n_fluid, nb = cs->nbins;
+  if (cs->resume_len < sizeof h)
+    VSPH_FAIL(VSPH_EINVAL, "the shear test's checkpoint is cut short");
+  memcpy(&h, cs->resume, sizeof h);
+  if (memcmp(h.magic, SHEAR_MAGIC, sizeof h.magic) || h.nf != nf ||
+      h.nb != nb || h.nprof != nprof || h.k > nprof ||
+      cs->resume_len !=
+          sizeof h + (2 * nf + 2 * h.k * nb) * sizeof(double) + h.run_len)
+    VSPH_FAIL(VSPH_EINVAL, "the shear test's checkpoint is not this test's");
+  const unsigned char *at = cs->resume + sizeof h;
+  memcpy(disp, at, nf * sizeof *disp), at += nf * sizeof *disp;
+  memcpy(prev, at, nf * sizeof *prev), at += nf * sizeof *prev;
+  for (size_t q = 0; q < h.k; q++) {
+    memcpy(cs->u[q], at, nb * sizeof(double)), at += nb * sizeof(double);
+    memcpy(cs->dy[q], at, nb * sizeof(double)), at += nb * sizeof(double);
+  }
+  const int st = vsph_run_unpack(run, at, (size_t)h.run_len);
+  if (st) return st;
+  memcpy(cs->t, h.t, sizeof cs->t);
+  *k = (size_t)h.k;
+  *wall = h.wall;
+  return VSPH_OK;
+}
+
 /* Each fluid particle's y displacement since the start, unwrapped
  * across the period @p Ly (a step moves a particle far less than Ly/2):
  * @p prev its last y, @p disp its sum, both by id (below @p nf). */
@@ -279,12 +356,18 @@ static void fit_profiles(struct vsph_contact_shear *cs) {
 int vsph_contact_shear_measure(struct vsph_params *prm,
                                struct vsph_contact_shear *cs) {
   const size_t nprof = cs->nprof < 1 ? 1 : cs->nprof > 8 ? 8 : cs->nprof;
+  const struct vsph_contact_shear in = *cs; /* what the caller set */
   void (*const progress)(void *, double, double, double) = cs->progress;
   void *const progress_ctx = cs->progress_ctx;
   memset(cs, 0, sizeof *cs);
   cs->nprof = nprof;
   cs->progress = progress;
   cs->progress_ctx = progress_ctx;
+  cs->stop = in.stop;
+  cs->save = in.save;
+  cs->save_ctx = in.save_ctx;
+  cs->resume = in.resume;
+  cs->resume_len = in.resume_len;
   struct vsph_run_props rp;
   struct vsph_scene sc;
   int st = vsph_run_props_init(&rp, prm);
@@ -340,9 +423,13 @@ int vsph_contact_shear_measure(struct vsph_params *prm,
     for (size_t i = 0; i < p->n; i++)
       if (p->id[i] < nf) prev[p->id[i]] = p->pos[1][i];
   }
-  const double Ly = sh->Ly, t0 = omp_get_wtime();
-  double last = t0;
+  const double Ly = sh->Ly;
   size_t k = 0;
+  double wall0 = 0.0; /* the wall time of the processes before this one */
+  if (cs->resume && (st = shear_unpack(cs, run, disp, prev, &k, &wall0, nprof)))
+    goto done;
+  const double t0 = omp_get_wtime();
+  double last = t0, last_ck = t0;
   while (run->state == VSPH_RUN_RUNNING && k < nprof) {
     if ((st = vsph_run_iterate(run))) goto done;
     unwrap(run->integ->p, nf, Ly, prev, disp);
@@ -355,8 +442,22 @@ int vsph_contact_shear_measure(struct vsph_params *prm,
     }
     const double now = omp_get_wtime();
     if (progress && now - last > 5.0) { /* never silent for long */
-      progress(progress_ctx, t, cs->t_end, now - t0);
+      progress(progress_ctx, t, cs->t_end, wall0 + now - t0);
       last = now;
+    }
+    /* a checkpoint between two steps: at a stop, and every checkpoint_s */
+    const int stopping = cs->stop && *cs->stop;
+    if (cs->save && run->state == VSPH_RUN_RUNNING && k < nprof &&
+        (stopping ||
+         (rp.checkpoint_s > 0.0 && now - last_ck >= rp.checkpoint_s))) {
+      if ((st = shear_pack_save(cs, run, disp, prev, k, wall0 + now - t0)))
+        goto done;
+      last_ck = now;
+    }
+    if (stopping && run->state == VSPH_RUN_RUNNING && k < nprof) {
+      cs->interrupted = 1;
+      st = VSPH_EINTR;
+      goto done;
     }
   }
   cs->nt = k;
@@ -364,14 +465,18 @@ int vsph_contact_shear_measure(struct vsph_params *prm,
   cs->t_stop = vsph_run_time(run);
   cs->steps = vsph_run_steps(run);
   snprintf(cs->reason, sizeof cs->reason, "%s", run->reason);
-  cs->wall_s = omp_get_wtime() - t0;
+  cs->wall_s = wall0 + omp_get_wtime() - t0;
   fit_profiles(cs);
 done:
   free(disp);
   free(prev);
   free(cnt);
   vsph_run_free(run);
-  if (st) vsph_contact_shear_free(cs);
+  if (st) {
+    const int interrupted = cs->interrupted;
+    vsph_contact_shear_free(cs);
+    cs->interrupted = interrupted;
+  }
   return st;
 }
 

@@ -3,6 +3,7 @@
 #ifndef VSPH_ANALYSIS_CONTACT_H
 #define VSPH_ANALYSIS_CONTACT_H
 
+#include <signal.h>
 #include <stddef.h>
 
 struct vsph_kernel_type;
@@ -107,9 +108,22 @@ struct vsph_contact_shear {
    *  prints nothing) */
   void (*progress)(void *ctx, double t, double t_end, double wall);
   void *progress_ctx; /*!< passed to progress */
+  /** a stop request (SIGINT, SIGTERM, a report's budget), or NULL: seen
+   *  between two steps, it ends the test at a checkpoint (interrupted) */
+  const volatile sig_atomic_t *stop;
+  /** where the whole state goes (the run's and the measurement's so far,
+   *  @p len bytes): every Solver:checkpoint_s of wall time and at a stop;
+   *  NULL: nowhere. Returns VSPH_OK or a failure that ends the test. */
+  int (*save)(void *ctx, const unsigned char *state, size_t len);
+  void *save_ctx; /*!< passed to save */
+  /** a state save() was given, to go on from bitwise as if never stopped
+   *  (NULL: from the start); one of other settings is refused */
+  const unsigned char *resume;
+  size_t resume_len; /*!< its bytes */
   /* out */
-  size_t n;                          /*!< particles */
-  size_t nbins;                      /*!< slabs of width D0 along x (2 res) */
+  int interrupted; /*!< 1: a stop ended it at a checkpoint (save()d) */
+  size_t n;        /*!< particles */
+  size_t nbins;    /*!< slabs of width D0 along x (2 res) */
   double D0, W, U0, t_end, rho0, c0; /*!< the run's, material x > 0 */
   double t[8];                       /*!< the profile times reached */
   double *x;                         /*!< slab centres (nbins) */

@@ -5,6 +5,7 @@
 #include "cmd_contact.h"
 
 #include <omp.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -153,10 +154,21 @@ static int lattice_checks(struct vsph_params *prm, const char *csv,
  * exit status. Frees @p prm. */
 static int measure_print(struct vsph_params *prm, size_t nprof, int quiet,
                          const char *csv) {
+  /* without a folder there is no checkpoint: a stop ends it, said */
+  const volatile sig_atomic_t *stop = vsph_args_catch_stop();
   struct vsph_contact_shear cs = {
-      .nprof = nprof, .progress = quiet ? NULL : vsph_sheartest_progress};
+      .nprof = nprof,
+      .progress = quiet ? NULL : vsph_sheartest_progress,
+      .stop = stop};
   int st = vsph_contact_shear_measure(prm, &cs);
   vsph_params_free(prm);
+  if (st == VSPH_EINTR) {
+    fprintf(stderr,
+            "vsph contact: stopped by signal %d; without --out DIR the test "
+            "keeps no checkpoint to go on from\n",
+            (int)*stop);
+    return 128 + (int)*stop;
+  }
   if (st) return vsph_args_status(CMD, st);
   printf(
       "# vsph %s contact: shear test, %zu particles, D0 = %g m, U0 = %g "
@@ -228,6 +240,11 @@ int vsph_cmd_contact_main(int argc, char **argv) {
     rc = vsph_args_fail(CMD, "--cache needs --out DIR");
   if (rc < 0 && out && csv)
     rc = vsph_args_fail(CMD, "--out writes profiles.csv itself: drop --csv");
+  if (rc < 0 && !out && !lattice &&
+      vsph_params_given(prm, "Solver:checkpoint_s"))
+    rc = vsph_args_fail(CMD,
+                        "--checkpoint-s needs --out DIR (the checkpoint goes "
+                        "in that folder)");
   if (rc < 0 && lattice)
     rc = lattice_checks(prm, csv, out, cache, profiles_given(argc, argv));
   if (rc >= 0) {
@@ -261,9 +278,13 @@ int vsph_cmd_contact_main(int argc, char **argv) {
   if (threads > 0) omp_set_num_threads((int)threads);
   if (out) {
     int cached;
+    /* SIGINT/SIGTERM: the test stops at a checkpoint after the current
+     * step, and the same command again goes on from it */
+    const volatile sig_atomic_t *stop = vsph_args_catch_stop();
     const int st =
-        vsph_sheartest_execute(prm, nprof, out, cache, quiet, &cached);
+        vsph_sheartest_execute(prm, nprof, out, cache, quiet, stop, &cached);
     vsph_params_free(prm);
+    if (st == VSPH_EINTR) return 128 + (int)*stop; /* the shell's rule */
     if (st) return vsph_args_status(CMD, st);
     if (!quiet)
       fprintf(stderr, "vsph contact: %s %s\n", out,

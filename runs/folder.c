@@ -58,7 +58,7 @@ static int owns_scene(const char *name) {
 
 static int owns_shear(const char *name) {
   static const char *const exact[] = {"summary.csv", "profiles.csv", "key.txt",
-                                      NULL};
+                                      "checkpoint.bin", NULL};
   if (one_of(name, exact)) return VSPH_FOLDER_FILE;
   return tmp_of(name, owns_shear) ? VSPH_FOLDER_FILE : VSPH_FOLDER_FOREIGN;
 }

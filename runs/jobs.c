@@ -242,7 +242,7 @@ int vsph_jobs_execute(const struct vsph_jobs *J,
     st = vsph_rundir_execute(prm, j->scene, &opts, &res);
   } else {
     int cached;
-    st = vsph_sheartest_execute(prm, j->nprof, j->dir, 1, 1, &cached);
+    st = vsph_sheartest_execute(prm, j->nprof, j->dir, 1, 1, J->stop, &cached);
   }
   vsph_params_free(prm);
   return st;

@@ -2,7 +2,9 @@
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #include "sheartest.h"
 
+#include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,8 +30,71 @@ void vsph_sheartest_progress(void *ctx, double t, double t_end, double wall) {
             t, t_end, wall);
 }
 
+/* checkpoint.bin of a shear test: this line, the key's length and text,
+ * then the state vsph_contact_shear_measure handed over. */
+static const char SHEAR_CKPT[] = "vsph shear test checkpoint\n";
+
+struct saver {
+  const char *dir, *key;
+};
+
+/* The state written whole or not at all: a temporary, synced, renamed. */
+static int save_state(void *ctx, const unsigned char *state, size_t len) {
+  const struct saver *sv = ctx;
+  char tmp[4200], path[4200];
+  snprintf(tmp, sizeof tmp, "%s/checkpoint.bin.tmp", sv->dir);
+  snprintf(path, sizeof path, "%s/checkpoint.bin", sv->dir);
+  const uint64_t kl = strlen(sv->key);
+  errno = 0;
+  FILE *f = fopen(tmp, "wb");
+  int ok = f &&
+           fwrite(SHEAR_CKPT, 1, sizeof SHEAR_CKPT - 1, f) ==
+               sizeof SHEAR_CKPT - 1 &&
+           fwrite(&kl, sizeof kl, 1, f) == 1 &&
+           fwrite(sv->key, 1, kl, f) == kl && fwrite(state, 1, len, f) == len &&
+           fflush(f) == 0 && fsync(fileno(f)) == 0;
+  if (f && fclose(f) != 0) ok = 0;
+  ok = ok && rename(tmp, path) == 0;
+  if (!ok) {
+    const int e = errno;
+    remove(tmp);
+    VSPH_FAIL(VSPH_EIO, "cannot write %s: %s", path,
+              e ? strerror(e) : "write error");
+  }
+  return VSPH_OK;
+}
+
+/* The state of DIR/checkpoint.bin when it was made with key @p key (its
+ * bytes into *@p len; the caller frees the block returned, from which
+ * *@p state points), else NULL with why into @p why ("" when there is
+ * none). */
+static unsigned char *read_state(const char *dir, const char *key,
+                                 const unsigned char **state, size_t *len,
+                                 char *why, size_t wlen) {
+  char path[4200];
+  snprintf(path, sizeof path, "%s/checkpoint.bin", dir);
+  why[0] = '\0';
+  size_t n = 0;
+  unsigned char *b =
+      access(path, F_OK) ? NULL : (unsigned char *)vsph_files_slurp(path, &n);
+  if (!b) return NULL;
+  const size_t hl = sizeof SHEAR_CKPT - 1;
+  uint64_t kl = 0;
+  if (n >= hl + sizeof kl) memcpy(&kl, b + hl, sizeof kl);
+  if (n < hl + sizeof kl || memcmp(b, SHEAR_CKPT, hl) || kl != strlen(key) ||
+      n < hl + sizeof kl + kl || memcmp(b + hl + sizeof kl, key, kl)) {
+    snprintf(why, wlen, "it is not this test's, with these settings");
+    free(b);
+    return NULL;
+  }
+  *state = b + hl + sizeof kl + kl;
+  *len = n - hl - sizeof kl - kl;
+  return b;
+}
+
 int vsph_sheartest_execute(struct vsph_params *prm, size_t nprof,
-                           const char *dir, int cache, int quiet, int *cached) {
+                           const char *dir, int cache, int quiet,
+                           const volatile sig_atomic_t *stop, int *cached) {
   *cached = 0;
   /* the parameters as given: before any is read */
   char what[64];
@@ -50,10 +115,39 @@ int vsph_sheartest_execute(struct vsph_params *prm, size_t nprof,
     free(key);
     return st;
   }
+  /* a checkpoint of this very test: go on from it */
+  const unsigned char *state = NULL;
+  size_t slen = 0;
+  char why[160];
+  unsigned char *ck = read_state(dir, key, &state, &slen, why, sizeof why);
+  if (why[0]) /* said even when quiet: work may be lost */
+    fprintf(stderr,
+            "vsph contact: %s/checkpoint.bin is not used (%s): starting "
+            "over\n",
+            dir, why);
+  else if (ck && !quiet)
+    fprintf(stderr, "vsph contact: resuming from %s/checkpoint.bin\n", dir);
+  struct saver sv = {dir, key};
   struct vsph_contact_shear cs = {
-      .nprof = nprof, .progress = quiet ? NULL : vsph_sheartest_progress};
+      .nprof = nprof,
+      .progress = quiet ? NULL : vsph_sheartest_progress,
+      .stop = stop,
+      .save = save_state,
+      .save_ctx = &sv,
+      .resume = state,
+      .resume_len = slen};
   st = vsph_contact_shear_measure(prm, &cs);
-  if (st == VSPH_EINVAL) /* refused: the folder as it was */
+  free(ck);
+  if (st == VSPH_EINTR) { /* stopped at its checkpoint: the folder kept */
+    fprintf(stderr,
+            "vsph contact: stopped at a checkpoint in %s; the same command "
+            "again goes on from it\n",
+            dir);
+    vsph_folder_release(&fo);
+    free(key);
+    return st;
+  }
+  if (st == VSPH_EINVAL && !ck) /* refused: the folder as it was */
     vsph_folder_abandon(&fo);
   char *sum = NULL, *prof = NULL;
   if (!st && !((sum = vsph_sheartest_csv_summary(&cs)) &&

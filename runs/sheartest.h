@@ -3,6 +3,7 @@
 #ifndef VSPH_RUNS_SHEARTEST_H
 #define VSPH_RUNS_SHEARTEST_H
 
+#include <signal.h>
 #include <stddef.h>
 
 struct vsph_contact_shear;
@@ -40,9 +41,16 @@ void vsph_sheartest_progress(void *ctx, double t, double t_end, double wall);
  *  (vsph_rundir_key of @p prm as given, after "contact NPROF") is written
  *  to key.txt last, a folder whose key.txt matches is not measured again
  *  (*cached = 1), and key.txt goes first when a measurement starts.
+ *  The test checkpoints into DIR/checkpoint.bin (its key, then its state)
+ *  every Solver:checkpoint_s of wall time and when @p stop (may be NULL)
+ *  is set between two steps, and then ends with VSPH_EINTR, the folder
+ *  unsealed; the next call on the same folder with the same parameters
+ *  goes on from it, bitwise as if never stopped.
  *  @return VSPH_OK (an unstable run is a result), VSPH_EINVAL (bad
- *  parameters, nothing written), VSPH_EIO, VSPH_ENOMEM. */
+ *  parameters, nothing written), VSPH_EINTR (stopped at a checkpoint),
+ *  VSPH_EIO, VSPH_ENOMEM. */
 int vsph_sheartest_execute(struct vsph_params *prm, size_t nprof,
-                           const char *dir, int cache, int quiet, int *cached);
+                           const char *dir, int cache, int quiet,
+                           const volatile sig_atomic_t *stop, int *cached);
 
 #endif /* VSPH_RUNS_SHEARTEST_H */

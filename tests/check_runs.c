@@ -31,6 +31,7 @@
 #include "../runs/folder.h"
 #include "../runs/jobs.h"
 #include "../runs/rundir.h"
+#include "../runs/sheartest.h"
 #include "../solver/run.h"
 #include "check_suites.h"
 
@@ -1335,6 +1336,88 @@ START_TEST(test_refusal_leaves_paths) {
 }
 END_TEST
 
+/* The shear test checkpoints and resumes as a run does: stopped after its
+ * first step (the stop seen between steps), it leaves checkpoint.bin and
+ * no seal, exit VSPH_EINTR; the same call again goes on from it and ends
+ * with profiles.csv byte for byte the uninterrupted test's and summary.csv
+ * the same but for its wall-time column; a checkpoint of other settings is
+ * not used. */
+static struct vsph_params *shear_params(const char *res) {
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_ptr_nonnull(prm);
+  const char *set[] = {"Scene:Ly=1.6e-7", "Scene:Lz=1.6e-7",
+                       "Solver:t_end=4e-10", res};
+  for (size_t k = 0; k < 4; k++)
+    ck_assert_int_eq(vsph_params_assign(prm, set[k]), 0);
+  ck_assert_int_eq(vsph_jobs_defaults(VSPH_JOBS_SHEAR, NULL, prm), 0);
+  return prm;
+}
+
+/* summary.csv's text without its wall_s column (the 14th). */
+static void summary_sans_wall(const char *dir, char *out, size_t n) {
+  char path[400], text[8192];
+  snprintf(path, sizeof path, "%s/summary.csv", dir);
+  vsph_test_slurp(path, text, sizeof text);
+  size_t o = 0;
+  int col = 1;
+  for (const char *c = text; *c && o + 1 < n; c++) {
+    if (*c == '\n') col = 0;
+    if (*c == ',' || *c == '\n') col++;
+    if (col != 14) out[o++] = *c;
+  }
+  out[o] = '\0';
+}
+
+START_TEST(test_shear_checkpoint) {
+  char dir[] = "/tmp/vsph_shckXXXXXX", a[300], b[300];
+  vsph_test_scratch(dir);
+  snprintf(a, sizeof a, "%s/a", dir);
+  snprintf(b, sizeof b, "%s/b", dir);
+  int cached;
+  struct vsph_params *prm = shear_params("Solver:res=16");
+  ck_assert_int_eq(vsph_sheartest_execute(prm, 2, a, 0, 1, NULL, &cached), 0);
+  vsph_params_free(prm);
+  volatile sig_atomic_t stop = SIGTERM;
+  prm = shear_params("Solver:res=16");
+  ck_assert_int_eq(vsph_sheartest_execute(prm, 2, b, 0, 1, &stop, &cached),
+                   VSPH_EINTR);
+  vsph_params_free(prm);
+  char path[400];
+  snprintf(path, sizeof path, "%s/checkpoint.bin", b);
+  ck_assert(exists(path));
+  snprintf(path, sizeof path, "%s/key.txt", b);
+  ck_assert(!exists(path));
+  stop = 0;
+  prm = shear_params("Solver:res=16");
+  ck_assert_int_eq(vsph_sheartest_execute(prm, 2, b, 0, 1, &stop, &cached), 0);
+  vsph_params_free(prm);
+  snprintf(path, sizeof path, "%s/checkpoint.bin", b);
+  ck_assert(!exists(path));
+  static char pa[1 << 16], pb[1 << 16];
+  snprintf(path, sizeof path, "%s/profiles.csv", a);
+  vsph_test_slurp(path, pa, sizeof pa);
+  snprintf(path, sizeof path, "%s/profiles.csv", b);
+  vsph_test_slurp(path, pb, sizeof pb);
+  ck_assert_str_eq(pa, pb);
+  summary_sans_wall(a, pa, sizeof pa);
+  summary_sans_wall(b, pb, sizeof pb);
+  ck_assert_str_eq(pa, pb);
+  /* stopped again, then asked with other settings: not used, said */
+  stop = SIGTERM;
+  prm = shear_params("Solver:res=16");
+  snprintf(path, sizeof path, "%s/c", dir);
+  ck_assert_int_eq(vsph_sheartest_execute(prm, 2, path, 0, 1, &stop, &cached),
+                   VSPH_EINTR);
+  vsph_params_free(prm);
+  stop = 0;
+  prm = shear_params("Solver:res=18");
+  ck_assert_int_eq(vsph_sheartest_execute(prm, 2, path, 0, 1, &stop, &cached),
+                   0);
+  vsph_params_free(prm);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 /* `vsph run OUT ...` started in the background, its stderr to null. */
 static pid_t spawn_run(const char *const *args) {
   const pid_t pid = fork();
@@ -1525,6 +1608,7 @@ Suite *vsph_folder_suite(void) {
   tcase_add_test(tf, test_folder_seal);
   tcase_add_test(tf, test_folder_manifest_cache);
   tcase_add_test(tf, test_slurm_signal);
+  tcase_add_test(tf, test_shear_checkpoint);
   tcase_add_test(tf, test_report_seal);
   tcase_add_test(tf, test_refusal_leaves_paths);
   suite_add_tcase(s, tf);
