@@ -357,6 +357,90 @@ int vsph_vtk_write(const char *dir, const char *name,
   return st;
 }
 
+/* ---- walls ---- */
+
+int vsph_vtk_write_walls(const char *dir, const char *name,
+                         const struct vsph_particles *p, size_t n_fluid,
+                         size_t n_wall, double t) {
+  /* the particles beyond the fluid, in id order */
+  size_t n = 0;
+  for (size_t i = 0; i < p->n; i++) n += p->id[i] >= n_fluid;
+  const size_t len = n ? n : 1;
+  size_t *order = malloc(len * sizeof *order);
+  void *buf = malloc(3 * len * sizeof(double));
+  struct out *o = calloc(1, sizeof *o);
+  if (!order || !buf || !o) {
+    free(order);
+    free(buf);
+    free(o);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the walls of a snapshot");
+  }
+  size_t k = 0;
+  for (size_t i = 0; i < p->n; i++)
+    if (p->id[i] >= n_fluid) order[k++] = i;
+  for (size_t a = 1; a < n; a++) /* by id (few, nearly sorted already) */
+    for (size_t b = a; b > 0 && p->id[order[b - 1]] > p->id[order[b]]; b--) {
+      const size_t tmp = order[b];
+      order[b] = order[b - 1];
+      order[b - 1] = tmp;
+    }
+  o->nverts = n;
+  o->level = LEVEL;
+  const int d = p->dim;
+  const size_t n8 = n * sizeof(double);
+  double *x = buf;
+  int64_t *iv = buf;
+  unsigned char *u8 = buf;
+  int st = add_array(o, FIELD, "TimeValue", "Float64", 1, 1, &t, sizeof t);
+  describe(o, "TimeValue", "time of the snapshot, the exact double", "s", d);
+  gather_vec(x, p->pos, d, order, n);
+  if (!st) st = add_array(o, POINTS, "Points", "Float64", 3, 0, x, 3 * n8);
+  describe(o, "Points", "positions x, y, z (z = 0 in 2-D)", "m", d);
+  for (k = 0; k < n; k++) iv[k] = (int64_t)k;
+  if (!st) st = add_array(o, VERTS, "connectivity", "Int64", 1, 0, iv, n8);
+  for (k = 0; k < n; k++) iv[k] = (int64_t)k + 1;
+  if (!st) st = add_array(o, VERTS, "offsets", "Int64", 1, 0, iv, n8);
+  describe(o, "connectivity, offsets", "one vertex cell per particle",
+           "dimensionless", d);
+  gather_vec(x, p->vel, d, order, n);
+  if (!st)
+    st = add_array(o, POINT_DATA, "velocity", "Float64", 3, 0, x, 3 * n8);
+  describe(o, "velocity",
+           "velocity: a wall particle's the wall's (the cavity's lid moves), "
+           "an image's its fluid particle's, mirrored",
+           "m/s", d);
+  gather(x, p->rho, order, n);
+  if (!st) st = add_array(o, POINT_DATA, "density", "Float64", 1, 0, x, n8);
+  describe(o, "density", "density rho, per unit depth in 2-D", "kg/m^", d);
+  gather(x, p->p, order, n);
+  if (!st) st = add_array(o, POINT_DATA, "pressure", "Float64", 1, 0, x, n8);
+  describe(o, "pressure", "pressure p", "Pa", d);
+  for (k = 0; k < n; k++) u8[k] = p->id[order[k]] < n_fluid + n_wall ? 1 : 2;
+  if (!st) st = add_array(o, POINT_DATA, "type", "UInt8", 1, 0, u8, n);
+  describe(o, "type",
+           "1: a wall particle (fixed walls, the cavity's lid), 2: an image "
+           "of a fluid particle (a mirror ghost or a periodic image)",
+           "dimensionless", d);
+  for (k = 0; k < n; k++) iv[k] = (int64_t)p->id[order[k]];
+  if (!st) st = add_array(o, POINT_DATA, "id", "Int64", 1, 0, iv, n8);
+  describe(o, "id", "the particle's id (the fluid's ids come first)",
+           "dimensionless", d);
+  if (!st)
+    st = add_array(o, FIELD, "array_descriptions", "String", 1, o->ndesc,
+                   o->desc, o->desc_len);
+  free(order);
+  free(buf);
+  FILE *f = st ? NULL : vsph_files_open(dir, name);
+  if (!st && !f) st = VSPH_EIO;
+  if (!st) {
+    write_file(f, o, n, t);
+    st = vsph_files_close(f, dir, name);
+  }
+  free(o->data);
+  free(o);
+  return st;
+}
+
 /* ---- frames ---- */
 
 /* @p v in single precision rounded to nearest (ties away from zero) at
@@ -713,8 +797,13 @@ int vsph_vtk_pvd_reopen(struct vsph_vtk_pvd *pvd, const char *dir, long keep) {
 }
 
 int vsph_vtk_pvd_add(struct vsph_vtk_pvd *pvd, double t, const char *file) {
-  fprintf(pvd->f, "<DataSet timestep=\"%.10g\" part=\"0\" file=\"%s\"/>\n", t,
-          file);
+  return vsph_vtk_pvd_add_part(pvd, t, 0, file);
+}
+
+int vsph_vtk_pvd_add_part(struct vsph_vtk_pvd *pvd, double t, int part,
+                          const char *file) {
+  fprintf(pvd->f, "<DataSet timestep=\"%.10g\" part=\"%d\" file=\"%s\"/>\n", t,
+          part, file);
   if (fflush(pvd->f) != 0 || ferror(pvd->f))
     VSPH_FAIL(VSPH_EIO, "cannot write %s/snapshots.pvd", pvd->dir);
   return VSPH_OK;

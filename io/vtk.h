@@ -123,6 +123,22 @@ int vsph_vtk_pvd_reopen(struct vsph_vtk_pvd *pvd, const char *dir, long keep);
  *  @return VSPH_OK or VSPH_EIO. */
 int vsph_vtk_pvd_add(struct vsph_vtk_pvd *pvd, double t, const char *file);
 
+/** @brief vsph_vtk_pvd_add for part @p part of the time step (0 the fluid,
+ *  1 its walls: ParaView reads the parts of one time as one multiblock). */
+int vsph_vtk_pvd_add_part(struct vsph_vtk_pvd *pvd, double t, int part,
+                          const char *file);
+
+/** @brief The particles beyond the fluid (ids from @p n_fluid on) of
+ *  @p p at time @p t as DIR/NAME, VTK XML PolyData like a snapshot, in id
+ *  order: positions, velocity, density, pressure, id and `type` (1 a wall
+ *  particle: ids below n_fluid + @p n_wall, the fixed walls and the
+ *  cavity's lid; 2 an image of a fluid particle, a mirror ghost or a
+ *  periodic image), each described. @return VSPH_OK, VSPH_ENOMEM,
+ *  VSPH_EIO. */
+int vsph_vtk_write_walls(const char *dir, const char *name,
+                         const struct vsph_particles *p, size_t n_fluid,
+                         size_t n_wall, double t);
+
 /** @brief Close the collection. @return VSPH_OK or VSPH_EIO. */
 int vsph_vtk_pvd_close(struct vsph_vtk_pvd *pvd);
 

@@ -288,8 +288,16 @@ static int first_screen(struct vsph_report *R, char *claims) {
             strlen(f1 + strlen("<!-- /findings -->\n")) + 1);
   }
   if (!st) st = vsph_report_doc_say(R, "report.head_sources");
+  /* the runs a quick report read from the archive: a paragraph of its own
+   * (the archive's name is at most 200 characters); its values set just
+   * before it (each block's are cleared after it) */
+  vsph_text_set(&R->tv, "nread", "%zu", R->runs.from_archive);
+  vsph_text_set(&R->tv, "nrun", "%zu", R->runs.jobs.n);
+  vsph_text_set(&R->tv, "archive", "%s",
+                R->runs.archive ? R->runs.archive : "");
   if (!st && !R->runs.full && R->runs.from_archive)
     st = vsph_report_doc_say(R, "report.quick_archive");
+  vsph_text_clear(&R->tv);
   return st;
 }
 
@@ -309,11 +317,6 @@ static int assemble(struct vsph_report *R, const char *parts_dir,
   vsph_text_set(tv, "quick_note", "%s",
                 R->runs.full ? "" : vsph_text_get("report.quick_note"));
   int st = vsph_report_doc_say(R, "report.head");
-  /* the runs a quick report read from the archive: a paragraph of its own
-   * (the archive's name is at most 200 characters) */
-  vsph_text_set(tv, "nread", "%zu", R->runs.from_archive);
-  vsph_text_set(tv, "nrun", "%zu", R->runs.jobs.n);
-  vsph_text_set(tv, "archive", "%s", R->runs.archive ? R->runs.archive : "");
   /* every part present, the claims first (the summary); a part's text
    * after its "<!-- appendix -->" mark goes to the appendices at the end */
   char *text[NPARTS] = {0};

@@ -23,8 +23,8 @@
 /* A run's file the archive keeps: all but snapshots, their index and a
  * checkpoint (bulk, and not what the report's parts read). */
 static int kept_file(const char *name) {
-  return strncmp(name, "snap_", 5) && strcmp(name, "snapshots.pvd") &&
-         strncmp(name, "checkpoint.bin", 14);
+  return strncmp(name, "snap_", 5) && strncmp(name, "walls_", 6) &&
+         strcmp(name, "snapshots.pvd") && strncmp(name, "checkpoint.bin", 14);
 }
 
 /* A name the index can hold as one TSV field: printable ASCII, no blank. */

@@ -53,6 +53,9 @@ static int owns_scene(const char *name) {
   if (n == 13 && !strncmp(name, "snap_", 5) && ends_with(name, ".vtp") &&
       strspn(name + 5, "0123456789") == 4)
     return VSPH_FOLDER_FILE;
+  if (n == 14 && !strncmp(name, "walls_", 6) && ends_with(name, ".vtp") &&
+      strspn(name + 6, "0123456789") == 4)
+    return VSPH_FOLDER_FILE;
   return tmp_of(name, owns_scene) ? VSPH_FOLDER_FILE : VSPH_FOLDER_FOREIGN;
 }
 

@@ -311,6 +311,16 @@ static int write_snapshot(struct outputs *o, const struct vsph_run *run,
    * checkpoint reads it if this fails) */
   if (!st) (void)vsph_folder_note(o->fo, name);
   if (!st) st = vsph_vtk_pvd_add(&o->pvd, s->t, name);
+  /* the walls beside it (wall particles, ghosts, images), part 1 of the
+   * same time in snapshots.pvd: a ParaView user sees the tank and the lid */
+  if (!st && s->p->n > s->n_fluid) {
+    char wname[64];
+    snprintf(wname, sizeof wname, "walls_%04zu.vtp", o->nsnap - 1);
+    st = vsph_vtk_write_walls(o->dir, wname, s->p, s->n_fluid,
+                              s->gh ? s->gh->keep : 0, s->t);
+    if (!st) (void)vsph_folder_note(o->fo, wname);
+    if (!st) st = vsph_vtk_pvd_add_part(&o->pvd, s->t, 1, wname);
+  }
   if (!st && o->profile)
     st = run->scene.type == &vsph_cavity_type ? write_centreline(o, run)
                                               : write_profile(o, run);
@@ -472,12 +482,19 @@ static int resume_dir(struct vsph_folder *fo, const struct ckpt *c,
       VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
   }
   for (uint64_t k = c->nsnap; k < 10000; k++) {
-    snprintf(path, sizeof path, "%s/snap_%04llu.vtp", fo->dir,
-             (unsigned long long)k);
-    if (remove(path) != 0) {
-      if (errno == ENOENT) break;
-      VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
+    int gone = 0; /* the snapshot and its walls, past the checkpoint's */
+    for (int w = 0; w < 2; w++) {
+      snprintf(path, sizeof path, "%s/%s_%04llu.vtp", fo->dir,
+               w ? "walls" : "snap", (unsigned long long)k);
+      if (remove(path) != 0) {
+        if (errno == ENOENT) {
+          gone += !w;
+          continue;
+        }
+        VSPH_FAIL(VSPH_EIO, "cannot remove %s: %s", path, strerror(errno));
+      }
     }
+    if (gone) break;
   }
   /* every file as the checkpoint saw it (the live tables may have grown:
    * their first bytes count, the rest is cut), nothing else */

@@ -53,8 +53,19 @@ ek_rows = {float(r["t"]): float(r["Ek"]) for r in rows}
 
 # the pvd as written, and as ParaView reads it
 pvd = os.path.join(run, "snapshots.pvd")
-entries = [(float(d.get("timestep")), d.get("file"))
-           for d in ET.parse(pvd).getroot().iter("DataSet")]
+# part 0 the fluid's snapshots, part 1 their walls (wall particles and
+# images), where the run has any
+allparts = [(float(d.get("timestep")), d.get("file"), d.get("part"))
+            for d in ET.parse(pvd).getroot().iter("DataSet")]
+entries = [(t, f) for t, f, p in allparts if p == "0"]
+wall_entries = [(t, f) for t, f, p in allparts if p == "1"]
+wall_files = sorted(os.path.basename(p)
+                    for p in glob.glob(run + "/walls_*.vtp"))
+if [f for _, f in wall_entries] != wall_files:
+    fail("the pvd's walls %s, the folder holds %s" % (wall_entries,
+                                                      wall_files))
+if wall_entries and [t for t, _ in wall_entries] != [t for t, _ in entries]:
+    fail("walls not at every snapshot's time: %s" % wall_entries)
 reader = OpenDataFile(pvd)
 if reader is None:
     fail("ParaView cannot open " + pvd)
@@ -78,11 +89,15 @@ say("%d snapshots at t = %s: ParaView's times are the pvd's and each equals "
     % (len(times), ", ".join("%.10g" % t for t in times), len(t_rows)))
 
 want = {"velocity": 3, "density": 1, "pressure": 1, "volume": 1,
-        "div_r": 1, "free_surface": 1, "id": 1}
+        "mass": 1, "smoothing_length": 1, "div_r": 1, "free_surface": 1,
+        "id": 1}
 want["vorticity_z" if dim == 2 else "vorticity"] = 1 if dim == 2 else 3
 got = {k: reader.PointData[k].GetNumberOfComponents()
        for k in reader.PointData.keys()}
 got.pop("material", None)  # two-material contact runs only
+if wall_entries:  # the walls' own array
+    if got.pop("type", None) != 1:
+        fail("the walls carry no one-component type array")
 if got != want:
     fail("point arrays %s, want %s" % (sorted(got.items()),
                                        sorted(want.items())))
@@ -91,9 +106,30 @@ say("point arrays (name: components) %s" % ", ".join(
 
 alg = reader.GetClientSideObject()
 signed = False
+def leaf(obj):
+    """The data set inside a part (ParaView nests each part's file)."""
+    while obj is not None and obj.IsA("vtkMultiBlockDataSet") and \
+            obj.GetNumberOfBlocks() > 0:
+        obj = obj.GetBlock(0)
+    return obj
+
+
+nwalls = 0
 for t in times:
     alg.UpdateTimeStep(t)
     d = alg.GetOutputDataObject(0)
+    if d.IsA("vtkMultiBlockDataSet"):  # the fluid, then its walls
+        w = leaf(d.GetBlock(1))
+        d = leaf(d.GetBlock(0))
+        ty = w.GetPointData().GetArray("type") if w else None
+        if (not w or not w.IsA("vtkPolyData") or ty is None or
+                w.GetNumberOfVerts() != w.GetNumberOfPoints() or
+                any(ty.GetValue(i) not in (1, 2)
+                    for i in range(w.GetNumberOfPoints()))):
+            fail("t = %g: the walls' block is not points typed 1 or 2" % t)
+        nwalls = w.GetNumberOfPoints()
+    elif wall_entries:
+        fail("t = %g: ParaView shows no walls beside the fluid" % t)
     n = d.GetNumberOfPoints()
     if d.GetClassName() != "vtkPolyData" or n == 0 or d.GetNumberOfVerts() != n:
         fail("t = %g: %s with %d points, %d vertices"
@@ -149,6 +185,9 @@ for t in times:
            sum(int(surf.GetValue(i)) for i in range(n))))
 if dim == 2 and not signed:
     fail("vorticity_z never takes both signs: not the signed scalar")
+if wall_entries:
+    say("walls at every snapshot: part 1 of snapshots.pvd, %d points typed "
+        "1 (wall particle) or 2 (image)" % nwalls)
 say("every snapshot: one vertex per point, no NaN, %sid 0..n-1, every "
     "array described (array_descriptions), free_surface = div_r < %g, Ek "
     "from the arrays = energy.csv's within 1e-10"

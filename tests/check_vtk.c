@@ -283,6 +283,50 @@ static void clean_case(struct fixture *fx, const char *dir, const char *path) {
  * (the format stores them raw; no tolerance), in id order, the ghosts
  * left out; volume is m/rho computed the same way (one IEEE division, so
  * exact too); 2-D vorticity comes back as (0, 0, omega_z). */
+/* The walls beside a snapshot (vsph_vtk_write_walls): the particles
+ * beyond the fluid, in id order whatever their place in the set, typed 1
+ * (the first n_wall of them: wall particles) or 2 (images), their
+ * pressure bitwise. */
+START_TEST(test_walls) {
+  struct vsph_particles *p = vsph_particles_alloc(7, 2);
+  ck_assert_ptr_nonnull(p);
+  p->n = 7;
+  const size_t id[7] = {4, 0, 6, 1, 5, 2, 3}; /* fluid 0-2, walls 3-6 */
+  for (size_t i = 0; i < 7; i++) {
+    p->id[i] = id[i];
+    p->pos[0][i] = 0.1 * (double)id[i] + 1e-3;
+    p->pos[1][i] = -0.2 * (double)id[i];
+    p->vel[0][i] = p->vel[1][i] = 0.0;
+    p->rho[i] = 1000.0 + (double)id[i];
+    p->p[i] = 2.385 * (double)id[i];
+  }
+  char dir[] = "/tmp/vsph_wallsXXXXXX", path[64];
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  ck_assert_int_eq(vsph_vtk_write_walls(dir, "w.vtp", p, 3, 2, 0.5), 0);
+  snprintf(path, sizeof path, "%s/w.vtp", dir);
+  int nc = 0;
+  size_t nv = 0;
+  double *ty = vsph_test_vtp_values(path, "type", &nc, &nv);
+  double *ids = vsph_test_vtp_values(path, "id", &nc, &nv);
+  double *pr = vsph_test_vtp_values(path, "pressure", &nc, &nv);
+  ck_assert_ptr_nonnull(ty);
+  ck_assert_ptr_nonnull(ids);
+  ck_assert_ptr_nonnull(pr);
+  ck_assert_uint_eq(nv, 4);
+  for (size_t k = 0; k < 4; k++) {
+    ck_assert(ids[k] == (double)(3 + k));        /* id order */
+    ck_assert(ty[k] == (3 + k < 3 + 2 ? 1 : 2)); /* walls, then images */
+    ck_assert(pr[k] == 2.385 * (double)(3 + k));
+  }
+  free(ty);
+  free(ids);
+  free(pr);
+  remove(path);
+  rmdir(dir);
+  vsph_particles_free(p);
+}
+END_TEST
+
 START_TEST(test_roundtrip) {
   struct fixture fx;
   char dir[] = "/tmp/vsph_vtkXXXXXX", path[64];
@@ -794,12 +838,20 @@ START_TEST(test_run_times) {
   size_t nsnap = 0;
   double last = -1.0;
   char last_ts[32] = "";
+  size_t nwalls = 0; /* part 1: the walls of the snapshot before it */
   for (const char *d = pvd; (d = strstr(d, "timestep=\"")) != NULL; nsnap++) {
     d += 10;
     char ts[32], file[64];
     snprintf(ts, sizeof ts, "%.*s", (int)strcspn(d, "\""), d);
     const char *fa = strstr(d, "file=\"") + 6;
     snprintf(file, sizeof file, "%.*s", (int)strcspn(fa, "\""), fa);
+    if (!strncmp(strstr(d, "part=\"") + 6, "1\"", 2)) {
+      ck_assert_str_eq(ts, last_ts); /* at its snapshot's time */
+      ck_assert(!strncmp(file, "walls_", 6));
+      nwalls++;
+      nsnap--;
+      continue;
+    }
     size_t r = 0;
     while (r < nrows && strcmp(rows[r], ts)) r++;
     ck_assert_msg(r < nrows, "snapshot time %s is no energy row", ts);
@@ -817,6 +869,7 @@ START_TEST(test_run_times) {
     vsph_vtk_snapshot_free(&s);
   }
   ck_assert_uint_eq(nsnap, 5);                /* t = 0 and 4 snapshots */
+  ck_assert_uint_eq(nwalls, 5);               /* the tank beside each */
   ck_assert_str_eq(last_ts, rows[nrows - 1]); /* the end is a snapshot */
   snprintf(args, sizeof args, "rm -rf '%s'", dir);
   ck_assert_int_eq(system(args), 0);
@@ -828,6 +881,7 @@ Suite *vsph_vtk_suite(void) {
   TCase *tc = tcase_create("snapshots");
   tcase_set_timeout(tc, 20);
   tcase_add_loop_test(tc, test_roundtrip, 0, NCASES);
+  tcase_add_test(tc, test_walls);
   tcase_add_loop_test(tc, test_frame, 0, NCASES);
   tcase_add_test(tc, test_frame_rounding);
   tcase_add_loop_test(tc, test_layout, 0, NCASES);
