@@ -207,11 +207,15 @@ static int set_mathematics(cmark_node *doc, const char *docs) {
   int st = VSPH_OK;
   for (size_t k = 0; k < n && !st; k++) {
     const char *lit = cmark_node_get_literal(text[k]);
+    int in_link = 0; /* never a link inside a link's text */
+    for (cmark_node *up = cmark_node_parent(text[k]); up && !in_link;
+         up = cmark_node_parent(up))
+      in_link = cmark_node_get_type(up) == CMARK_NODE_LINK;
     char *html = NULL;
     size_t len = 0;
     FILE *m = lit ? open_memstream(&html, &len) : NULL;
     if (!m) continue;
-    const int any = mathify(m, lit, docs);
+    const int any = mathify(m, lit, in_link ? NULL : docs);
     if (fclose(m) != 0) {
       st = VSPH_ENOMEM;
     } else if (any) {

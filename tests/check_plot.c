@@ -224,7 +224,7 @@ START_TEST(test_html_mathematics) {
   fprintf(f,
           "E_k and eta_num at nu = 0.1, in m^2/s, when n.D.n != 0 -> "
           "u_theta; `E_k` and snap_0000.vtp and u_err_rel; see "
-          "docs/theory.md.\n");
+          "docs/theory.md; [a link about docs/theory.md](#x).\n");
   fclose(f);
   ck_assert_int_eq(vsph_html_render(dir, "m.md", "m.html", "m"), VSPH_OK);
   static char html[1 << 16];
@@ -235,7 +235,9 @@ START_TEST(test_html_mathematics) {
       "m<sup>2</sup>/s, when n\u00b7D\u00b7n \u2260 0 \u2192 "
       "u<sub>\u03b8</sub>;",
       "<code>E_k</code>", "snap_0000.vtp", "u_err_rel",
-      "docs/theory.md\">docs/theory.md</a>"};
+      "docs/theory.md\">docs/theory.md</a>",
+      /* inside a link's text: no link of its own */
+      "<a href=\"#x\">a link about docs/theory.md</a>"};
   for (size_t k = 0; k < sizeof want / sizeof want[0]; k++)
     ck_assert_msg(strstr(html, want[k]) != NULL, "no '%s' in\n%s", want[k],
                   strstr(html, "<body>"));
