@@ -160,11 +160,19 @@ static void wrap_y(char *out, size_t n, const char *using) {
 }
 
 static void plot_cmd(FILE *f, const struct vsph_plot *pl) {
-  /* where no curve sets its dashes, each line gets its own (solid,
-   * dashed, dotted, ...): a curve under another (MGF under PVWF) still
-   * shows between the other's dashes */
-  int dashes = 1;
-  for (size_t k = 0; k < pl->n; k++) dashes &= !strstr(pl->s[k].style, " dt ");
+  /* each line that sets no dashes gets its own (solid, then dotted,
+   * dash-dot, ...), skipping those other curves set: a curve under another
+   * (MGF under PVWF) still shows between the other's dashes */
+  unsigned used = 0; /* bit d: dash type d set by a curve */
+  for (size_t k = 0; k < pl->n; k++) {
+    const char *dt = strstr(pl->s[k].style, " dt ");
+    const int d = dt ? atoi(dt + 4) : 0;
+    if (d > 0 && d < 32) used |= 1u << d;
+  }
+  static const int ORDER[] = {1, 3, 4, 5, 2};
+  int free_dt[5], nfree = 0;
+  for (size_t q = 0; q < 5; q++)
+    if (!(used >> ORDER[q] & 1)) free_dt[nfree++] = ORDER[q];
   fprintf(f, "  plot ");
   for (size_t k = 0, line = 0; k < pl->n; k++) {
     char using[300];
@@ -173,8 +181,9 @@ static void plot_cmd(FILE *f, const struct vsph_plot *pl) {
     else
       snprintf(using, sizeof using, "%s", pl->s[k].using);
     char dt[16] = "";
-    if (dashes && strstr(pl->s[k].style, "lines"))
-      snprintf(dt, sizeof dt, " dt %zu", line++ % 5 + 1);
+    if (nfree && strstr(pl->s[k].style, "lines") &&
+        !strstr(pl->s[k].style, " dt "))
+      snprintf(dt, sizeof dt, " dt %d", free_dt[line++ % (size_t)nfree]);
     fprintf(f, "%s'%s' skip 1 using %s with %s%s title \"%s\"",
             k ? ", \\\n       " : "", pl->s[k].file, using, pl->s[k].style, dt,
             pl->s[k].title);
