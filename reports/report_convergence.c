@@ -19,6 +19,16 @@
 /* The x range of a ladder's figure (dx over the reference length: the
  * ladder's, not whole decades) and its ticks, at the ladder's
  * resolutions: gnuplot commands into @p buf. */
+/* A fitted order as the tables print it: through how many stable rungs,
+ * or a dash where fewer than two were stable. */
+static void fitted(char *buf, size_t len, double order, size_t ns) {
+  if (ns >= 2)
+    snprintf(buf, len, "**%.2f** (fitted through the %zu stable rungs)", order,
+             ns);
+  else
+    snprintf(buf, len, "– (fewer than two stable rungs to fit)");
+}
+
 static void ladder_ticks(char *buf, size_t n,
                          const struct vsph_report_ladderdef *L) {
   size_t len =
@@ -91,11 +101,10 @@ static int scene(struct vsph_report *R, int sc) {
                sv->span);
     else
       snprintf(span, sizeof span, "differences over the whole run");
-    fprintf(R->md,
-            "| %s | order | **%.2f** (fitted through the %zu stable "
-            "rungs) | **%.2f** | **%.2f** | %s |\n",
-            vsph_viscous_name(f), order, ns, sv->order_max, sv->order_rms,
-            span);
+    char fit[96];
+    fitted(fit, sizeof fit, order, ns);
+    fprintf(R->md, "| %s | order | %s | **%.2f** | **%.2f** | %s |\n",
+            vsph_viscous_name(f), fit, sv->order_max, sv->order_rms, span);
     if ((st = vsph_csv_close(c, R->dir, files[f]))) break;
     char style[96], lab[96];
     vsph_report_runs_style(style, sizeof style, f, "");
@@ -179,11 +188,14 @@ static int vortex_layouts(struct vsph_report *R) {
           ly.dx, ly.err[l][f], ly.ok[l][f], VSPH_REPORT_LADDER, &ns);
       const double o0 = vsph_series_slope_where(ly.dx, a0, ly.ok[l][f],
                                                 VSPH_REPORT_LADDER, &ns);
+      char fit[96], fit0[96];
+      fitted(fit, sizeof fit, oe, ns);
+      fitted(fit0, sizeof fit0, o0, ns);
       fprintf(R->md,
-              "| %s | %s | order | **%.2f** (fitted through the %zu stable "
-              "rungs) | **%.2f** (max), **%.2f** (RMS) | **%.2f** | %s |\n",
-              lay[l], vsph_viscous_name(f), oe, ns, sv->order_max,
-              sv->order_rms, o0, span);
+              "| %s | %s | order | %s | **%.2f** (max), **%.2f** (RMS) | %s | "
+              "%s |\n",
+              lay[l], vsph_viscous_name(f), fit, sv->order_max, sv->order_rms,
+              fit0, span);
       if ((st = vsph_csv_close(c, R->dir, file))) break;
       snprintf(lab, sizeof lab, "%s, %s", vsph_viscous_label(f), lay[l]);
       vsph_report_runs_style(style, sizeof style, f, l ? " dt 2" : "");
