@@ -287,6 +287,9 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
           "th[align=center],td[align=center]{text-align:center}\n"
           "th{background:#eee}\nimg{max-width:100%%;height:auto;border:1px "
           "solid #ddd}\n"
+          /* a figure (SVG) across the column: its text at the body's size
+           * (io/plot.c sets it two points up for this) */
+          "img[src^=\"data:image/svg\"]{width:100%%}\n"
           "code{background:#f4f4f4}\n"
           /* the verdict classes of the claims table */
           ".v{display:inline-block;padding:0 .35em;border-radius:.25em;"

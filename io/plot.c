@@ -106,7 +106,9 @@ static void head(FILE *f, const char *what, const char *name) {
  * SVG (scalable in a page), a PDF of W/100 x H/100 inches. */
 static void outputs_open(FILE *f, const char *name, int w, int h, int font) {
   /* the SVG's title (its name, which gnuplot takes as an identifier: the
-   * file's name, other characters as '_'), not "Gnuplot" */
+   * file's name, other characters as '_'), not "Gnuplot"; its text two
+   * points larger, as the page draws it across its column (io/html.c):
+   * the figure's words at the body's size */
   char id[128];
   snprintf(id, sizeof id, "%s", name);
   for (char *c = id; *c; c++)
@@ -128,7 +130,7 @@ static void outputs_open(FILE *f, const char *name, int w, int h, int font) {
           "    }\n"
           "  }\n"
           "  set output '%s.'.fmt\n",
-          w, h, font, w, h, id, font, w / 100.0, h / 100.0, font, name);
+          w, h, font, w, h, id, font + 2, w / 100.0, h / 100.0, font, name);
 }
 
 static void outputs_close(FILE *f) { fprintf(f, "  unset output\n}\n"); }

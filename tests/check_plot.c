@@ -176,6 +176,9 @@ START_TEST(test_figure_three_formats) {
   vsph_test_slurp(path, svg, sizeof svg);
   ck_assert_ptr_nonnull(strstr(svg, "<title>fig_line</title>"));
   ck_assert_ptr_null(strstr(svg, "<title>Gnuplot</title>"));
+  /* its text two points above the PNG's 11 (drawn across the page) */
+  ck_assert_ptr_nonnull(strstr(svg, "font-size=\"13.00\""));
+  ck_assert_ptr_null(strstr(svg, "font-size=\"11.00\""));
   /* gnuplot said nothing: no warning, no error */
   char log[256];
   snprintf(log, sizeof log, "%s/fig_line.log", dir);
