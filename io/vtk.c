@@ -324,37 +324,58 @@ static void write_file(FILE *f, const struct out *o, size_t n, double t) {
   fputs(TRAILER, f);
 }
 
-int vsph_vtk_write(const char *dir, const char *name,
-                   const struct vsph_particles *p, size_t n_fluid, double t,
-                   const struct vsph_diagnostics *dg,
-                   const volatile sig_atomic_t *stop) {
-  const size_t n = n_fluid, len = n ? n : 1;
-  size_t *order = malloc(len * sizeof *order);
-  void *buf = malloc(3 * len * sizeof(double));
-  struct out *o = calloc(1, sizeof *o);
-  if (!order || !buf || !o) {
-    free(order);
-    free(buf);
-    free(o);
-    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot of %zu particles", n);
-  }
-  o->stop = stop;
-  o->nverts = n;
-  o->level = LEVEL;
-  for (size_t i = 0; i < p->n; i++)
-    if (p->id[i] < n) order[p->id[i]] = i;
-  int st = build(o, p, order, n, t, dg, buf);
-  free(order);
-  free(buf);
+/* A file's arrays @p o (built, status @p st) written as DIR/NAME where
+ * they were built whole, @p n points at time @p t; @p o freed (may be
+ * NULL) either way. Returns the status. */
+static int emit(struct out *o, int st, const char *dir, const char *name,
+                size_t n, double t) {
   FILE *f = st ? NULL : vsph_files_open(dir, name);
   if (!st && !f) st = VSPH_EIO;
   if (!st) {
     write_file(f, o, n, t);
     st = vsph_files_close(f, dir, name);
   }
-  free(o->data);
+  if (o) free(o->data);
   free(o);
   return st;
+}
+
+/* The arrays of a file of @p n particles (vertex cells, snapshot level)
+ * with its scratch: a particle order and a buffer of 3 doubles a
+ * particle. NULL, nothing held, where they cannot be had. */
+static struct out *out_alloc(size_t n, size_t **order, void **buf) {
+  const size_t len = n ? n : 1;
+  *order = malloc(len * sizeof **order);
+  *buf = malloc(3 * len * sizeof(double));
+  struct out *o = calloc(1, sizeof *o);
+  if (!*order || !*buf || !o) {
+    free(*order);
+    free(*buf);
+    free(o);
+    return NULL;
+  }
+  o->nverts = n;
+  o->level = LEVEL;
+  return o;
+}
+
+int vsph_vtk_write(const char *dir, const char *name,
+                   const struct vsph_particles *p, size_t n_fluid, double t,
+                   const struct vsph_diagnostics *dg,
+                   const volatile sig_atomic_t *stop) {
+  const size_t n = n_fluid;
+  size_t *order;
+  void *buf;
+  struct out *o = out_alloc(n, &order, &buf);
+  if (!o)
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot of %zu particles", n);
+  o->stop = stop;
+  for (size_t i = 0; i < p->n; i++)
+    if (p->id[i] < n) order[p->id[i]] = i;
+  const int st = build(o, p, order, n, t, dg, buf);
+  free(order);
+  free(buf);
+  return emit(o, st, dir, name, n, t);
 }
 
 /* ---- walls ---- */
@@ -365,16 +386,10 @@ int vsph_vtk_write_walls(const char *dir, const char *name,
   /* the particles beyond the fluid, in id order */
   size_t n = 0;
   for (size_t i = 0; i < p->n; i++) n += p->id[i] >= n_fluid;
-  const size_t len = n ? n : 1;
-  size_t *order = malloc(len * sizeof *order);
-  void *buf = malloc(3 * len * sizeof(double));
-  struct out *o = calloc(1, sizeof *o);
-  if (!order || !buf || !o) {
-    free(order);
-    free(buf);
-    free(o);
-    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the walls of a snapshot");
-  }
+  size_t *order;
+  void *buf;
+  struct out *o = out_alloc(n, &order, &buf);
+  if (!o) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the walls of a snapshot");
   size_t k = 0;
   for (size_t i = 0; i < p->n; i++)
     if (p->id[i] >= n_fluid) order[k++] = i;
@@ -384,8 +399,6 @@ int vsph_vtk_write_walls(const char *dir, const char *name,
       order[b] = order[b - 1];
       order[b - 1] = tmp;
     }
-  o->nverts = n;
-  o->level = LEVEL;
   const int d = p->dim;
   const size_t n8 = n * sizeof(double);
   double *x = buf;
@@ -430,15 +443,7 @@ int vsph_vtk_write_walls(const char *dir, const char *name,
                    o->desc, o->desc_len);
   free(order);
   free(buf);
-  FILE *f = st ? NULL : vsph_files_open(dir, name);
-  if (!st && !f) st = VSPH_EIO;
-  if (!st) {
-    write_file(f, o, n, t);
-    st = vsph_files_close(f, dir, name);
-  }
-  free(o->data);
-  free(o);
-  return st;
+  return emit(o, st, dir, name, n, t);
 }
 
 /* ---- frames ---- */
@@ -536,15 +541,7 @@ int vsph_vtk_write_frame(const char *dir, const char *name,
   }
   free(x);
   free(u8);
-  FILE *f = st ? NULL : vsph_files_open(dir, name);
-  if (!st && !f) st = VSPH_EIO;
-  if (!st) {
-    write_file(f, o, s->n, s->t);
-    st = vsph_files_close(f, dir, name);
-  }
-  if (o) free(o->data);
-  free(o);
-  return st;
+  return emit(o, st, dir, name, s->n, s->t);
 }
 
 /* ---- reading back ---- */
