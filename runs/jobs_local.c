@@ -277,7 +277,7 @@ int vsph_jobs_local_run(struct vsph_jobs *J, int width) {
             "running them here, %d at a time\n",
             m, J->n, na, width);
   const double t0 = omp_get_wtime();
-  size_t started = 0, done = 0;
+  size_t done = 0;
   int st = VSPH_OK;
   /* one run per thread, each run's own loops on one thread (nested
    * regions are inactive): the runs are independent, and a run's results
@@ -289,7 +289,6 @@ int vsph_jobs_local_run(struct vsph_jobs *J, int width) {
     {
       failed = st;
       if (!failed) {
-        started++;
         if (t1) t1[k] = omp_get_wtime();
         if (eta) eta[k].state = VSPH_JOBS_ETA_RUNNING;
         fprintf(stderr, "  started %s (%.0f s elapsed)\n", order[k]->label,
