@@ -371,12 +371,15 @@ static int colour_limits(const char *dir, const char *name,
     VSPH_FAIL(VSPH_EINVAL, "picture %s: no finite value in column %d", name,
               col);
   }
-  qsort(v, count, sizeof *v, cmp_double);
-  if (*diverging && (v[0] >= 0.0 || v[count - 1] <= 0.0)) *diverging = 0;
+  double vmin = v[0], vmax = v[0]; /* one sign: a sequential scale */
+  for (size_t k = 1; k < count; k++)
+    vmin = fmin(vmin, v[k]), vmax = fmax(vmax, v[k]);
+  if (*diverging && (vmin >= 0.0 || vmax <= 0.0)) *diverging = 0;
   size_t beyond = 0;
-  if (*diverging) {
+  if (*diverging) /* one sort, of |value| or of value */
     for (size_t k = 0; k < count; k++) v[k] = fabs(v[k]);
-    qsort(v, count, sizeof *v, cmp_double);
+  qsort(v, count, sizeof *v, cmp_double);
+  if (*diverging) {
     const double m = quantile(v, count, 0.99);
     *hi = m > 0.0 ? m : 1.0;
     *lo = -*hi;
