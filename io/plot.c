@@ -173,7 +173,7 @@ static void plot_cmd(FILE *f, const struct vsph_plot *pl) {
   }
   static const int ORDER[] = {1, 3, 4, 5, 2};
   int free_dt[5], nfree = 0;
-  for (size_t q = 0; q < 5; q++)
+  for (size_t q = 0; q < 5 && !pl->dashes_mean; q++)
     if (!(used >> ORDER[q] & 1)) free_dt[nfree++] = ORDER[q];
   fprintf(f, "  plot ");
   for (size_t k = 0, line = 0; k < pl->n; k++) {

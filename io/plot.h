@@ -46,13 +46,16 @@ struct vsph_plot {
                         band under the data instead of stretching the axis
                         down to them; 0: none */
   char extra[512]; /*!< further gnuplot commands */
+  int dashes_mean; /*!< 1: the curves' dashes carry a meaning the title
+                        states ("solid" one quantity, "dashed" another), so
+                        none are added to tell hidden curves apart */
   size_t n;        /*!< curves */
   struct vsph_plot_series s[VSPH_PLOT_MAXSERIES]; /*!< the curves */
 };
 
 /** @brief Colour @p k of the shared palette, "#rrggbb" (k modulo
  *  VSPH_PLOT_NSTYLES). The first three are the free-surface study's
- *  formulations' (MGF blue, MEAF red, PVWF green). */
+ *  formulations' (MGF blue, MEAF vermillion, PVWF bluish green). */
 const char *vsph_plot_colour(size_t k);
 
 /** @brief Point type @p k of the shared palette (gnuplot's pt, filled

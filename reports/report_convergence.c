@@ -58,6 +58,7 @@ static int scene(struct vsph_report *R, int sc) {
                  "max_t of |E_k/E_k(0) - E_{k,ref}/E_{k,ref}(0)| or "
                  "|ΔE_k/E_k(0)|");
   pl.logx = pl.logy = 1;
+  pl.dashes_mean = 1; /* solid the error, dashed the differences */
   /* the ladder's range, not whole decades; ticks at its resolutions */
   ladder_ticks(pl.extra, sizeof pl.extra, L);
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
@@ -151,6 +152,7 @@ static int vortex_layouts(struct vsph_report *R) {
                  "particle spacing dx / R (dimensionless)",
                  "|P_{visc}(0) - dE_{k,ref}/dt(0)| / |dE_{k,ref}/dt(0)|");
   pl.logx = pl.logy = 1;
+  pl.dashes_mean = 1; /* solid the rings, dashed the Cartesian disc */
   ladder_ticks(pl.extra, sizeof pl.extra, L);
   for (int l = 0; l < 2 && !st; l++)
     for (int f = 0; f < NFORM && !st; f++) {

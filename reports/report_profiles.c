@@ -62,6 +62,7 @@ static int figure(struct vsph_report *R, int dim, int which) {
                  "depth of the point below the surface, δ/h (dimensionless)",
                  which ? "G_{nnnn}, M_{nn} (dimensionless)"
                        : "h F_{nnn}, h N_n (dimensionless, h = 1)");
+  pl.dashes_mean = 1; /* solid one tensor, dashed the other */
   int st = VSPH_OK;
   for (int dashed = 0; dashed < 2 && !st; dashed++)
     for (size_t ki = 0; ki < vsph_kernel_count() && !st; ki++) {

@@ -274,6 +274,13 @@ START_TEST(test_dashes) {
                     strstr(gp, "with linespoints pt 7 dt 4 title") &&
                     strstr(gp, "with lines dt 3 title"),
                 "%s", gp);
+  /* a figure whose title gives its dashes a meaning: none added */
+  pl.dashes_mean = 1;
+  ck_assert_int_eq(vsph_plot_write(&pl), VSPH_OK);
+  vsph_test_slurp(path, gp, sizeof gp);
+  ck_assert_msg(strstr(gp, "with lines lw 2 title") &&
+                    strstr(gp, "with linespoints pt 7 title"),
+                "%s", gp);
 }
 END_TEST
 
