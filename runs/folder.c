@@ -44,10 +44,11 @@ static int one_of(const char *name, const char *const *list) {
 }
 
 static int owns_scene(const char *name) {
-  static const char *const exact[] = {
-      "run.json",    "energy.csv",     "snapshots.pvd",
-      "profile.csv", "centreline.csv", "used_parameters.yml",
-      "key.txt",     "checkpoint.bin", NULL};
+  static const char *const exact[] = {"run.json",       "energy.csv",
+                                      "snapshots.pvd",  "profile.csv",
+                                      "centreline.csv", "used_parameters.yml",
+                                      "key.txt",        "checkpoint.bin",
+                                      "probes.csv",     NULL};
   if (one_of(name, exact)) return VSPH_FOLDER_FILE;
   const size_t n = strlen(name);
   if (n == 13 && !strncmp(name, "snap_", 5) && ends_with(name, ".vtp") &&

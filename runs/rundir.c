@@ -176,6 +176,7 @@ struct outputs {
   FILE *profile; /* at each snapshot: channels' profile.csv, the cavity's
                     centreline.csv */
   const char *profile_name; /* which of the two */
+  FILE *probes;             /* probes.csv, at each row (Solver:probe_*) */
   struct vsph_vtk_pvd pvd;
   size_t nsnap;
   char error[1200]; /* the write that failed, for run.json */
@@ -222,6 +223,35 @@ static int live_close(struct outputs *o, FILE **f, const char *name, int st) {
   return !st && c != 0 ? live_failed(o, name) : st;
 }
 
+/* The probes at this row: one line each (t, probe, x, y, z, u, v, w, p,
+ * rho, fill), read by vsph_diagnostics_probe. */
+static int write_probes(struct outputs *o, const struct vsph_run *run,
+                        double t) {
+  const struct vsph_run_props *rp = &run->props;
+  const struct vsph_integrate *s = run->integ;
+  double period[3];
+  for (int a = 0; a < 3; a++)
+    period[a] = vsph_walls_period(&run->scene.walls, a);
+  const size_t n = rp->probe_points;
+  errno = 0;
+  for (size_t k = 0; k < n; k++) {
+    const double f = n > 1 ? (double)k / (double)(n - 1) : 0.0;
+    const double x[3] = {rp->probe_x0 + f * (rp->probe_x1 - rp->probe_x0),
+                         rp->probe_y0 + f * (rp->probe_y1 - rp->probe_y0),
+                         rp->probe_z};
+    struct vsph_diagnostics_probe r;
+    const int st =
+        vsph_diagnostics_probe(s->p, s->n_fluid, s->props.eq.visc.kernel,
+                               s->props.eq.visc.h, period, x, &r);
+    if (st) return st;
+    fprintf(o->probes,
+            "%.10g,%zu,%.10e,%.10e,%.10e,%.12e,%.12e,%.12e,%.12e,%.12e,"
+            "%.6e\n",
+            t, k, x[0], x[1], x[2], r.u[0], r.u[1], r.u[2], r.p, r.rho, r.fill);
+  }
+  return live_flush(o, o->probes, "probes.csv");
+}
+
 static int write_row(struct outputs *o, struct vsph_run *run,
                      struct vsph_references_scene *ref) {
   struct vsph_run_row row;
@@ -246,7 +276,8 @@ static int write_row(struct outputs *o, struct vsph_run *run,
           row.t, en->Ek, en->Ep, en->Ec, b->P_visc, b->P_delta, b->residual,
           en->P[0], en->P[1], en->Lz, b->dEk, Er, dEr, Em, dEm, pe.rms,
           pe.rms_rel, pe.v_rms);
-  return live_flush(o, o->csv, "energy.csv");
+  st = live_flush(o, o->csv, "energy.csv");
+  return st || !o->probes ? st : write_probes(o, run, row.t);
 }
 
 /* A channel's velocity profile at a snapshot: one row per row of
@@ -337,7 +368,7 @@ static int write_snapshot(struct outputs *o, const struct vsph_run *run,
  * Written to a temporary, synced and renamed: a checkpoint is whole or
  * absent. */
 static const char CKPT_MAGIC[16] = "vsph checkpoint";
-enum { CKPT_VERSION = 3 };
+enum { CKPT_VERSION = 4 };
 
 /* the files a checkpoint saw, but itself and run.json (absent while a run
  * goes on) */
@@ -346,6 +377,7 @@ static const char *const CKPT_SKIP[] = {"checkpoint.bin", "run.json", NULL};
 struct ckpt {
   uint64_t version;
   uint64_t csv, profile, pvd; /* the live files' lengths (bytes) */
+  uint64_t probes;            /* probes.csv's (0: none) */
   uint64_t nsnap;             /* snapshots written */
   uint64_t segments;          /* processes so far */
   uint64_t state;             /* the packed state's length */
@@ -367,6 +399,7 @@ static int checkpoint_write(struct outputs *o, const struct vsph_run *run,
   c.csv = (uint64_t)tell(o->csv);
   c.profile = (uint64_t)tell(o->profile);
   c.pvd = (uint64_t)tell(o->pvd.f);
+  c.probes = (uint64_t)tell(o->probes);
   c.nsnap = o->nsnap;
   c.segments = res->segments;
   c.state = vsph_run_pack(run, NULL);
@@ -499,7 +532,7 @@ static int resume_dir(struct vsph_folder *fo, const struct ckpt *c,
   /* every file as the checkpoint saw it (the live tables may have grown:
    * their first bytes count, the rest is cut), nothing else */
   const char *const grow[] = {"energy.csv", profile_name, "snapshots.pvd",
-                              NULL};
+                              "probes.csv", NULL};
   if (vsph_folder_manifest_holds(fo, manifest, grow, CKPT_SKIP, why, wlen) != 1)
     return VSPH_EINVAL;
   return vsph_folder_clear_tmp(fo);
@@ -648,6 +681,7 @@ static int finish(struct outputs *o, struct vsph_run *run,
                   const struct vsph_rundir_result *res, int st, char **text) {
   st = live_close(o, &o->csv, "energy.csv", st);
   st = live_close(o, &o->profile, o->profile_name, st);
+  st = live_close(o, &o->probes, "probes.csv", st);
   if (o->pvd.f) {
     const int c = vsph_vtk_pvd_close(&o->pvd);
     if (c && !o->error[0])
@@ -690,7 +724,7 @@ static int resume_or_start(struct vsph_folder *fo, struct outputs *o,
                            const struct vsph_run_props *rp,
                            const struct vsph_scene *sc, struct vsph_run **run,
                            struct vsph_references_scene **ref, FILE *progress,
-                           struct vsph_rundir_result *res, long keep[3]) {
+                           struct vsph_rundir_result *res, long keep[4]) {
   int st = VSPH_OK;
   /* a checkpoint of this very run: resume from it */
   struct ckpt c;
@@ -727,6 +761,7 @@ static int resume_or_start(struct vsph_folder *fo, struct outputs *o,
     keep[0] = (long)c.csv;
     keep[1] = (long)c.profile;
     keep[2] = (long)c.pvd;
+    keep[3] = (long)c.probes;
     o->nsnap = (size_t)c.nsnap;
     res->segments = (size_t)c.segments + 1;
     res->wall_s = c.wall_s;
@@ -851,7 +886,7 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
   o.profile_name = cavity ? "centreline.csv" : "profile.csv";
   const int with_profile =
       rp.snapshots > 0 && (cavity || vsph_scene_is_channel(type));
-  long keep[3] = {-1, -1, -1};
+  long keep[4] = {-1, -1, -1, -1};
   FILE *progress = opts->progress;
   if ((st = resume_or_start(&fo, &o, prm, key, &rp, &sc, &run, &ref, progress,
                             res, keep)))
@@ -869,6 +904,10 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
                                               cavity ? "t,line,s,vel,vel_ghia\n"
                                                      : "t,y,u,u_ref,n\n",
                                               keep[1], &st)))
+    goto done;
+  if (rp.probe_points > 0 &&
+      !(o.probes = live_open(&o, "probes.csv",
+                             "t,probe,x,y,z,u,v,w,p,rho,fill\n", keep[3], &st)))
     goto done;
   res->n_particles = run->n_fluid;
   res->h = run->h;
@@ -892,6 +931,7 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
 done:
   if (o.csv) fclose(o.csv);
   if (o.profile) fclose(o.profile);
+  if (o.probes) fclose(o.probes);
   if (o.pvd.f) fclose(o.pvd.f);
   vsph_folder_release(&fo);
   vsph_references_scene_free(ref);

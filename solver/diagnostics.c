@@ -129,3 +129,36 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
   if (st) vsph_diagnostics_free(d);
   return st;
 }
+
+int vsph_diagnostics_probe(const struct vsph_particles *p, size_t n,
+                           const struct vsph_kernel_type *k, double h,
+                           const double period[3], const double x[3],
+                           struct vsph_diagnostics_probe *out) {
+  if (!p || !k || !period || !x || !out || !(h > 0.0))
+    VSPH_FAIL(VSPH_EINVAL, "vsph_diagnostics_probe: a NULL argument or h <= 0");
+  const int dim = p->dim;
+  const double reach2 = (k->kappa * h) * (k->kappa * h);
+  const double norm = k->sigma[dim - 1] / pow(h, dim);
+  double s = 0.0, su[3] = {0.0, 0.0, 0.0}, sp = 0.0, sr = 0.0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= n) continue;
+    double r2 = 0.0;
+    for (int a = 0; a < dim; a++) {
+      double d = x[a] - p->pos[a][i];
+      if (period[a] > 0.0) d -= period[a] * nearbyint(d / period[a]);
+      r2 += d * d;
+    }
+    if (!(r2 < reach2)) continue;
+    const double w = p->m[i] / p->rho[i] * norm * k->f[dim - 1](sqrt(r2) / h);
+    s += w;
+    for (int a = 0; a < dim; a++) su[a] += w * p->vel[a][i];
+    sp += w * p->p[i];
+    sr += w * p->rho[i];
+  }
+  const double inv = s > 0.0 ? 1.0 / s : (double)NAN;
+  for (int a = 0; a < 3; a++) out->u[a] = a < dim ? su[a] * inv : 0.0;
+  out->p = sp * inv;
+  out->rho = sr * inv;
+  out->fill = s;
+  return VSPH_OK;
+}

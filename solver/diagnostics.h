@@ -50,6 +50,28 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
                              struct vsph_diagnostics *d,
                              const volatile sig_atomic_t *stop);
 
+/** A probe's reading at a point. */
+struct vsph_diagnostics_probe {
+  double u[3]; /*!< velocity (m/s); 2-D: u[2] = 0 */
+  double p;    /*!< pressure (Pa) */
+  double rho;  /*!< density */
+  double fill; /*!< sum_j V_j W(x - x_j): near 1 inside the fluid, about
+                    1/2 at a free surface or a wall, 0 outside */
+};
+
+/** @brief Read the fluid (the particles of @p p whose id is below @p n)
+ *  at @p x by the Shepard-normalised kernel interpolation
+ *    f(x) = sum_j V_j f_j W(x - x_j) / sum_j V_j W(x - x_j)
+ *  (kernel @p k, smoothing length @p h), every fluid particle visited in
+ *  index order; a distance along an axis whose @p period[a] > 0 is taken
+ *  to the nearest image. Where no particle is within reach, u, p and rho
+ *  are NaN and fill 0.
+ *  @return VSPH_OK, or VSPH_EINVAL for a NULL argument or h <= 0. */
+int vsph_diagnostics_probe(const struct vsph_particles *p, size_t n,
+                           const struct vsph_kernel_type *k, double h,
+                           const double period[3], const double x[3],
+                           struct vsph_diagnostics_probe *out);
+
 /** @brief Free the arrays of @p d (the struct itself is the caller's). */
 void vsph_diagnostics_free(struct vsph_diagnostics *d);
 

@@ -138,7 +138,44 @@ static const struct vsph_params_spec SOLVER[] = {
     VSPH_PARAMS_REAL_SPEC(P, eta_num, 0.0, 0.0, 10.0,
                           "contact: the numerical viscosity over Z dx; 0: "
                           "Parshikov's fit, eq. (37), at alpha = h/(2 dx)"),
+    VSPH_PARAMS_INT_SPEC(P, probe_points, 0, 0, VSPH_RUN_PROBES_MAX,
+                         "probes evenly on the segment (probe_x0, probe_y0) "
+                         "to (probe_x1, probe_y1), ends included; 1: the "
+                         "point (probe_x0, probe_y0); each output row, "
+                         "into probes.csv (the Shepard-normalised kernel "
+                         "interpolation of the fluid's velocity, pressure "
+                         "and density); 0: none"),
+    VSPH_PARAMS_REAL_SPEC(P, probe_x0, 0.0, -1e9, 1e9, "first probe's x (m)"),
+    VSPH_PARAMS_REAL_SPEC(P, probe_y0, 0.0, -1e9, 1e9, "first probe's y (m)"),
+    VSPH_PARAMS_REAL_SPEC(P, probe_x1, 0.0, -1e9, 1e9,
+                          "last probe's x (m); probe_points >= 2"),
+    VSPH_PARAMS_REAL_SPEC(P, probe_y1, 0.0, -1e9, 1e9,
+                          "last probe's y (m); probe_points >= 2"),
+    VSPH_PARAMS_REAL_SPEC(P, probe_z, 0.0, -1e9, 1e9,
+                          "the probes' z (m); 3-D scenes only"),
 };
+
+/* The probe keys apply to probes: a coordinate given with none, or a
+ * segment's end given with one point, would have no effect. */
+static int check_probes(const struct vsph_run_props *rp,
+                        const struct vsph_params *prm) {
+  static const char *const KEYS[] = {"probe_x0", "probe_y0", "probe_x1",
+                                     "probe_y1", "probe_z"};
+  for (size_t k = 0; k < sizeof KEYS / sizeof KEYS[0]; k++) {
+    char key[40];
+    snprintf(key, sizeof key, "Solver:%s", KEYS[k]);
+    if (!vsph_params_given(prm, key)) continue;
+    if (rp->probe_points == 0)
+      VSPH_FAIL(VSPH_EINVAL,
+                "Solver:%s has no effect without Solver:probe_points", KEYS[k]);
+    if (rp->probe_points == 1 && k >= 2 && k < 4)
+      VSPH_FAIL(VSPH_EINVAL,
+                "Solver:%s has no effect with one probe (probe_points = 1 "
+                "reads the point (probe_x0, probe_y0))",
+                KEYS[k]);
+  }
+  return VSPH_OK;
+}
 
 /* The sound speed of the run: the scene's, or the gas law's at p0. */
 static double run_c0(const struct vsph_run_props *rp,
@@ -243,6 +280,7 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
               "Solver:integrator = leapfrog takes a barotropic law, not gas");
   if (rp->xsph > 0.0 && !rp->leapfrog)
     VSPH_FAIL(VSPH_EINVAL, "Solver:xsph needs Solver:integrator = leapfrog");
+  if ((st = check_probes(rp, prm))) return st;
   if (rp->snapshots > rp->outputs)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:snapshots (%zu) must not exceed "
@@ -301,6 +339,9 @@ static int check_combination(const struct vsph_run_props *rp,
               "WCSPH; %s%s cannot start relaxed",
               sc->type->name,
               sc->type->rest_velocity ? " with this scheme or integrator" : "");
+  if (rp->probe_z != 0.0 && sc->dim < 3)
+    VSPH_FAIL(VSPH_EINVAL, "Solver:probe_z applies to 3-D scenes, not %s",
+              sc->type->name);
   if (rp->tvf && sc->walls.solid != VSPH_WALLS_ADAMI)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:tvf = 1 needs a scene with Adami et al.'s wall "

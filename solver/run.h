@@ -46,6 +46,10 @@ enum vsph_run_state {
 };
 
 /** The "Solver" section (defaults and bounds in run.c's table). */
+/** The most probes a run takes (Solver:probe_points): each reads every
+ *  fluid particle at each output row. */
+#define VSPH_RUN_PROBES_MAX 100
+
 struct vsph_run_props {
   char visc[VSPH_PARAMS_NAME_MAX];   /*!< formulation (vsph_viscous_name) */
   double xi;                         /*!< Cleary's coefficient */
@@ -85,6 +89,11 @@ struct vsph_run_props {
   double zeta_num; /*!< contact: fraction of eta_num removed */
   double
       eta_num; /*!< contact: eta_num/(Z D0); 0: Parshikov et al.'s eq. (37) */
+  size_t probe_points; /*!< probes evenly on the segment from (x0, y0) to
+                            (x1, y1), both ends included; 1: the point
+                            (x0, y0); 0: none (runs/rundir's probes.csv) */
+  double probe_x0, probe_y0, probe_x1, probe_y1; /*!< the segment (m) */
+  double probe_z;                                /*!< its z in 3-D (m) */
   /* resolved by vsph_run_props_init */
   int eos_kind;                         /*!< vsph_equations_eos of eos */
   int corr;                             /*!< vsph_pair_corr of correction */

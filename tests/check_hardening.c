@@ -321,6 +321,12 @@ START_TEST(test_contact_inputs) {
        "unknown material"},
       {"run shear --scheme contact --set Scene:material=lif", "no viscosity"},
       {"run shear --scheme contact --delta 0.1", "linear law"},
+      {"run poiseuille --probe-x0 0.5", "Solver:probe_x0 has no effect"},
+      {"run poiseuille --probe-points 1 --probe-y1 0.5",
+       "Solver:probe_y1 has no effect with one probe"},
+      {"run poiseuille --probe-points 2 --probe-z 0.1",
+       "Solver:probe_z applies to 3-D"},
+      {"run poiseuille --probe-points 101", "Solver:probe_points"},
       {"run shear --scheme contact --set Scene:U0=nan", "Scene:U0"},
       {"contact --profiles 0", "--profiles"},
       {"contact --csv /nonexistent-dir/p.csv", "not writable"}};

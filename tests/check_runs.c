@@ -163,7 +163,11 @@ static const char *const POIS[] = {"Solver:res=8", "Solver:t_end=0.1",
                                    "Solver:outputs=30", NULL};
 static const char *const TVF[] = {"Solver:res=8", "Solver:t_end=0.03",
                                   "Solver:tvf=1", NULL};
-static const char *const WAVE[] = {"Solver:res=8", "Solver:t_end=0.1", NULL};
+static const char *const WAVE[] = {
+    "Solver:res=8",          "Solver:t_end=0.1",
+    "Solver:probe_points=4", "Solver:probe_x0=0.5",
+    "Solver:probe_y0=0.1",   "Solver:probe_x1=0.5",
+    "Solver:probe_y1=-0.9",  NULL};
 static const char *const PVWF[] = {"Solver:res=10", "Solver:t_end=0.2",
                                    "Solver:visc=pvwf", NULL};
 static const char *const GAS[] = {"Solver:res=8", "Solver:t_end=0.1",
@@ -221,6 +225,17 @@ START_TEST(test_restart_bitwise) {
 }
 END_TEST
 
+static size_t count_lines(const char *dir, const char *name) {
+  char path[400];
+  snprintf(path, sizeof path, "%s/%s", dir, name);
+  size_t len = 0, n = 0;
+  char *t = vsph_files_slurp(path, &len);
+  ck_assert_ptr_nonnull(t);
+  for (size_t k = 0; k < len; k++) n += t[k] == '\n';
+  free(t);
+  return n;
+}
+
 static size_t count_snapshots(const char *dir) {
   size_t n = 0;
   DIR *d = opendir(dir);
@@ -239,9 +254,12 @@ static size_t count_snapshots(const char *dir) {
  * or a snapshot; one that remembered what was written would repeat it.) */
 START_TEST(test_restart_within_outputs) {
   static const unsigned where[] = {VSPH_RUN_ROW, VSPH_RUN_SNAPSHOT};
-  static const char *const SNAPS[] = {"Solver:res=8", "Solver:t_end=0.1",
-                                      "Solver:outputs=30",
-                                      "Solver:snapshots=10", NULL};
+  static const char *const SNAPS[] = {
+      "Solver:res=8",          "Solver:t_end=0.1",
+      "Solver:outputs=30",     "Solver:snapshots=10",
+      "Solver:probe_points=2", "Solver:probe_x0=0.5",
+      "Solver:probe_y0=0.25",  "Solver:probe_x1=0.5",
+      "Solver:probe_y1=0.75",  NULL};
   char dir[] = "/tmp/vsph_withinXXXXXX", a[300], b[300], c[300];
   vsph_test_scratch(dir);
   snprintf(a, sizeof a, "%s/a", dir);
@@ -249,6 +267,9 @@ START_TEST(test_restart_within_outputs) {
   ck_assert_int_eq(run("poiseuille", SNAPS, a, 0, &ra), 0);
   const size_t nsnap = count_snapshots(a);
   ck_assert_uint_eq(nsnap, 11); /* t = 0, 10 intervals (the end among them) */
+  /* the probes: both at each energy row */
+  ck_assert_uint_eq(count_lines(a, "probes.csv") - 1,
+                    2 * (count_lines(a, "energy.csv") - 1));
   for (int w = 0; w < 2; w++) {
     snprintf(b, sizeof b, "%s/b%d", dir, w);
     int st, stops = 0;

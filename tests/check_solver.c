@@ -527,6 +527,74 @@ START_TEST(test_diagnostics) {
 }
 END_TEST
 
+/* Probes (solver/diagnostics) on a square lattice [-1/2, 1/2]^2 of 30
+ * across, u = a + b x and p = c - d y: at the centre, a lattice point
+ * whose support is whole, the kernel's weights are symmetric, so the
+ * Shepard interpolation reads the linear fields exactly (to rounding:
+ * 1e-12) with fill = sum_j V_j W_j, 1 to the lattice error (1 % as for
+ * div r); at a corner the fill is about a quarter (0.25 +- 0.05: the
+ * Gaussian's tail cut at 3h, the lattice's half cell); far outside,
+ * NaN and 0. Made periodic along x with period 1 (the lattice's rows
+ * meet across x = -1/2, 1/2), a probe on that edge reads a whole
+ * support: its fill is that of x = 0 (likewise between two columns) to
+ * 1e-12, and a constant field exactly. A NULL argument or h <= 0 is refused. */
+START_TEST(test_probe) {
+  struct vsph_lattice_props lp = {.dim = 2};
+  struct vsph_particles *p = NULL;
+  const size_t nac = 30;
+  ck_assert_int_eq(vsph_lattice_square(&lp, 1.0, nac, &p), 0);
+  const double dx = 1.0 / nac, h = 4.0 / 3.0 * dx;
+  for (size_t i = 0; i < p->n; i++) {
+    p->vel[0][i] = 0.3 + 2.0 * p->pos[0][i];
+    p->vel[1][i] = -1.5;
+    p->p[i] = 7.0 - 4.0 * p->pos[1][i];
+    p->rho[i] = 1000.0;
+    p->m[i] = 1000.0 * dx * dx;
+  }
+  /* the lattice's points sit at the cell centres: (k + 1/2) dx - 1/2 */
+  const double c0 = 0.5 * dx, zero[3] = {0.0, 0.0, 0.0};
+  const double mid[3] = {c0, c0, 0.0};
+  struct vsph_diagnostics_probe r;
+  ck_assert_int_eq(
+      vsph_diagnostics_probe(p, p->n, &vsph_gaussian_type, h, zero, mid, &r),
+      0);
+  ck_assert_double_eq_tol(r.u[0], 0.3 + 2.0 * c0, 1e-12);
+  ck_assert_double_eq_tol(r.u[1], -1.5, 1e-12);
+  ck_assert_double_eq(r.u[2], 0.0);
+  ck_assert_double_eq_tol(r.p, 7.0 - 4.0 * c0, 1e-12);
+  ck_assert_double_eq_tol(r.rho, 1000.0, 1e-9);
+  ck_assert_double_eq_tol(r.fill, 1.0, 0.01);
+  /* x = 0, between two columns as the edge x = 1/2 is */
+  const double between[3] = {0.0, c0, 0.0};
+  ck_assert_int_eq(vsph_diagnostics_probe(p, p->n, &vsph_gaussian_type, h,
+                                          zero, between, &r),
+                   0);
+  const double fill_between = r.fill;
+  const double corner[3] = {0.5, 0.5, 0.0}, out[3] = {3.0, 0.0, 0.0};
+  ck_assert_int_eq(
+      vsph_diagnostics_probe(p, p->n, &vsph_gaussian_type, h, zero, corner, &r),
+      0);
+  ck_assert_double_eq_tol(r.fill, 0.25, 0.05);
+  ck_assert_int_eq(
+      vsph_diagnostics_probe(p, p->n, &vsph_gaussian_type, h, zero, out, &r),
+      0);
+  ck_assert(isnan(r.u[0]) && isnan(r.p) && isnan(r.rho) && r.fill == 0.0);
+  /* periodic along x: the edge x = 1/2 at the centre's y */
+  const double per[3] = {1.0, 0.0, 0.0}, edge[3] = {0.5, c0, 0.0};
+  ck_assert_int_eq(
+      vsph_diagnostics_probe(p, p->n, &vsph_gaussian_type, h, per, edge, &r),
+      0);
+  ck_assert_double_eq_tol(r.fill, fill_between, 1e-12);
+  ck_assert_double_eq_tol(r.u[1], -1.5, 1e-12);
+  ck_assert_int_eq(
+      vsph_diagnostics_probe(p, p->n, &vsph_gaussian_type, 0.0, zero, mid, &r),
+      VSPH_EINVAL);
+  ck_assert_int_eq(vsph_diagnostics_probe(p, p->n, NULL, h, zero, mid, &r),
+                   VSPH_EINVAL);
+  vsph_particles_free(p);
+}
+END_TEST
+
 /* The scenes' own Courant number (docs/theory.md 5: the time-step study
  * picks CFL 2 for the standing wave and the vortex patch): it enters the
  * parameters unless Solver:cfl is given, a given visc included (unlike
@@ -606,6 +674,7 @@ Suite *vsph_solver_suite(void) {
   tcase_add_test(tc, test_stretching_initial_power);
   tcase_add_test(tc, test_stretching_initial_pressure);
   tcase_add_test(tc, test_diagnostics);
+  tcase_add_test(tc, test_probe);
   tcase_add_test(tc, test_vortex_angular_momentum);
   tcase_add_test(tc, test_budget_residual);
   tcase_add_test(tc, test_standing_wave_period);
