@@ -355,8 +355,8 @@ static double quantile(const double *v, size_t n, double p) {
  * them, *@p diverging cleared for a field of one sign. */
 static int colour_limits(const char *dir, const char *name,
                          const struct vsph_plot_panel *pn, size_t n, int col,
-                         int *diverging, double *lo, double *hi,
-                         double *share) {
+                         int *diverging, double *lo, double *hi, double *share,
+                         size_t *npts) {
   double *v = NULL;
   size_t count = 0, cap = 0;
   for (size_t k = 0; k < n; k++) {
@@ -395,6 +395,7 @@ static int colour_limits(const char *dir, const char *name,
   }
   free(v);
   *share = (double)beyond / (double)count;
+  *npts = count;
   return VSPH_OK;
 }
 
@@ -410,8 +411,9 @@ int vsph_plot_particles(const char *dir, const char *name, const char *title,
    * said; a signed field on a diverging scale +-M, M the 99th percentile
    * of |value|; a field of one sign on a sequential one */
   double lo, hi, share;
+  size_t npts = 0;
   const int st0 =
-      colour_limits(dir, name, pn, n, col, &diverging, &lo, &hi, &share);
+      colour_limits(dir, name, pn, n, col, &diverging, &lo, &hi, &share, &npts);
   if (st0) return st0;
   if (cb) cb[2] = share, cb[3] = diverging;
   if (cb) cb[0] = lo, cb[1] = hi;
@@ -423,6 +425,17 @@ int vsph_plot_particles(const char *dir, const char *name, const char *title,
   const int pw = 340, ph = (int)(pw * aspect);
   const int ml = 70, mr = 130, mt = 50, mb = 10, gx = 80, gy = 90;
   const int w = ml + cols * pw + (cols - 1) * gx + mr;
+  /* dots about as wide as the particles' spacing on the page (a panel's
+   * particles spread over its box; pngcairo's pt 7 at ps 1 is about 10
+   * px across at this width), so a field reads as a field */
+  const double per = (double)npts / (double)n;
+  double ps = 0.35;
+  if (box && per >= 1.0) {
+    const double space = (double)pw *
+                         sqrt((box[1] - box[0]) * (box[3] - box[2]) / per) /
+                         (box[1] - box[0]);
+    ps = fmin(1.2, fmax(0.3, space / 10.0));
+  }
   const int h = mt + rows * (ph + gy) + mb;
   char gp[160];
   snprintf(gp, sizeof gp, "%s.gp", name);
@@ -437,7 +450,7 @@ int vsph_plot_particles(const char *dir, const char *name, const char *title,
       "(beyond them: the end colours)\n"
       "set cbrange [%.17g:%.17g]\n",
       cblabel,
-      diverging ? "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 "
+      diverging ? "set palette defined (-1 '#2166ac', 0 '#d9d9d9', 1 "
                   "'#b2182b')\n"
                 : "set palette defined (0 '#440154', 0.5 '#21918c', 1 "
                   "'#fde725')\n",
@@ -463,8 +476,8 @@ int vsph_plot_particles(const char *dir, const char *name, const char *title,
       fprintf(f, "  unset colorbox\n");
     fprintf(f,
             "  set title \"%s\"\n  plot '%s' skip 1 using 1:2:%d with points "
-            "pt 7 ps 0.35 lc palette\n",
-            pn[k].title, pn[k].file, col);
+            "pt 7 ps %.2f lc palette\n",
+            pn[k].title, pn[k].file, col, ps);
   }
   fprintf(f, "  unset multiplot\n");
   outputs_close(f);

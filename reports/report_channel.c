@@ -20,6 +20,14 @@
 #include "report_fv.h"
 #include "report_parts.h"
 
+/* A form as the channel flows' figures and tables name it: the label
+ * with its paper's model letter (the Poiseuille and Couette figures, and
+ * their tables, alike). */
+static const char *legend(int f) {
+  const struct vsph_viscous_type *t = vsph_viscous_type_get(f);
+  return t && t->legend ? t->legend : vsph_viscous_label(f);
+}
+
 /* Poiseuille runs: Basa et al.'s set-up (Re = 0.5, cubic spline,
  * dx/h = 0.637, linear extrapolation) to t* = 4.9 (0.5 s). */
 #define NPOIS 14
@@ -686,7 +694,7 @@ static int figures(struct vsph_report *R, const struct chan *c) {
                                     : " pi 12");
     char use[32];
     st = using_column(use, sizeof use, &c->cou[f], "u_err", 1.0);
-    if (!st) st = vsph_plot_add(&pl, file, use, vsph_viscous_label(f), style);
+    if (!st) st = vsph_plot_add(&pl, file, use, legend(f), style);
   }
   vsph_text_set(&R->tv, "title", "%s", title);
   if (!st) st = vsph_report_doc_figure_say(R, &pl, "channel.fig_couette");
@@ -770,7 +778,7 @@ static void corr_rows(struct vsph_report *R, const struct chan *c) {
 /* The rows of linear extrapolation and mirroring at start-up. */
 static void walls_rows(struct vsph_report *R, const struct chan *c) {
   for (int f = 0; f < 3; f++) {
-    fprintf(R->md, "| %s |", vsph_viscous_label(f));
+    fprintf(R->md, "| %s |", legend(f));
     for (int w = 0; w < 2; w++)
       for (int k = 0; k < 2; k++)
         cell(R->md, at(&c->wall[f][w], "u_err", (k ? 0.49 : 0.1) / TSTAR), 100);
@@ -822,7 +830,7 @@ static void couette_rows(struct vsph_report *R, const struct chan *c) {
   static const double TC[4] = {0.0225, 0.1125, 0.225, 1.0};
   for (int f = 0; f < NCOU; f++) {
     const struct vsph_jobs_run *r = &c->cou[f];
-    fprintf(R->md, "| %s |", vsph_viscous_label(f));
+    fprintf(R->md, "| %s |", legend(f));
     stop_cell(R->md, r, 1.0);
     for (int k = 0; k < 4; k++) cell(R->md, at(r, "u_err", TC[k]), 100);
     fprintf(R->md, " %.2f |\n", r->wall_s);

@@ -69,8 +69,11 @@ static int figure(struct vsph_report *R, int dim, int which) {
       const struct vsph_kernel_type *k = vsph_kernel_get(ki);
       char file[96], style[64];
       snprintf(file, sizeof file, "profile_%s_%dd.csv", k->name, dim);
-      snprintf(style, sizeof style, "lines %slw 2 lc %zu",
-               dashed ? "dt 2 " : "", ki + 1);
+      /* each kernel its marker too, every 0.25 h: the Gaussian's and the
+       * quintic's curves nearly coincide, and one must not hide the other */
+      static const int PT[] = {6, 8, 4, 12, 2};
+      snprintf(style, sizeof style, "linespoints %slw 2 lc %zu pt %d pi 5",
+               dashed ? "dt 2 " : "", ki + 1, PT[ki % 5]);
       st = vsph_plot_add(
           &pl, file,
           which ? (dashed ? "1:5" : "1:4") : (dashed ? "1:3" : "1:2"),

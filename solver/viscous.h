@@ -214,9 +214,12 @@ typedef void vsph_viscous_first_fn(const struct vsph_viscous_props *vp,
  *  report's lists of forms read it. docs/theory.md, section 8, says how to
  *  add one. */
 struct vsph_viscous_type {
-  const char *name;                /*!< the command line's name ("mgf") */
-  const char *label;               /*!< in tables and figures ("MGF") */
-  const char *cite;                /*!< its source and equation */
+  const char *name;   /*!< the command line's name ("mgf") */
+  const char *label;  /*!< in tables and figures ("MGF") */
+  const char *legend; /*!< where models of several papers meet (the channel
+                           flows): with its paper's model letter ("Takeda
+                           (A)"); NULL: the label */
+  const char *cite;   /*!< its source and equation */
   enum vsph_viscous_pass pass;     /*!< its first pass */
   enum vsph_viscous_family family; /*!< the specialised loops that serve
                                        it (NONE: the general loop) */

@@ -359,6 +359,57 @@ START_TEST(test_csv_columns) {
 }
 END_TEST
 
+/* The dots' size (io/plot.c): about the particles' spacing on the page.
+ * One panel of a 60 x 30 lattice filling the box [0, 2] x [0, 1]: the
+ * panel is 340 px wide, so the spacing is 340 sqrt(2 / 1800) / 2 = 5.67 px
+ * and the point size a tenth of it, 0.57 (the script writes two decimals);
+ * with a tenth of the particles (one panel of 180) 1.79, clamped to 1.2;
+ * without a box, the fixed 0.35. */
+static double script_ps(const char *name) {
+  char path[128], line[512];
+  snprintf(path, sizeof path, "%s/%s.gp", dir, name);
+  FILE *f = fopen(path, "r");
+  ck_assert_ptr_nonnull(f);
+  double ps = -1.0;
+  while (fgets(line, sizeof line, f)) {
+    const char *q = strstr(line, " ps ");
+    if (q && strstr(line, "plot '"))
+      ck_assert_int_eq(sscanf(q, " ps %lf", &ps), 1);
+  }
+  fclose(f);
+  return ps;
+}
+
+START_TEST(test_dot_size) {
+  const int every[2] = {1, 10};
+  const double want[2] = {0.57, 1.2};
+  for (int c = 0; c < 2; c++) {
+    struct vsph_plot_panel pn[1];
+    snprintf(pn[0].file, sizeof pn[0].file, "lattice_%d.csv", c);
+    snprintf(pn[0].title, sizeof pn[0].title, "lattice");
+    char path[300];
+    snprintf(path, sizeof path, "%s/%s", dir, pn[0].file);
+    FILE *f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fprintf(f, "x,y,pressure\n");
+    for (int i = 0; i < 60 * 30; i += every[c])
+      fprintf(f, "%.6f,%.6f,%d\n", (i % 60 + 0.5) / 30.0, (i / 60 + 0.5) / 30.0,
+              i % 7);
+    fclose(f);
+    const double box[4] = {0.0, 2.0, 0.0, 1.0};
+    double cb[4];
+    ck_assert_int_eq(vsph_plot_particles(dir, "pic_dots", "dots", pn, 1, 3,
+                                         "p (Pa)", 0, box, cb),
+                     VSPH_OK);
+    ck_assert_double_eq_tol(script_ps("pic_dots"), want[c], 1e-9);
+    ck_assert_int_eq(vsph_plot_particles(dir, "pic_dots", "dots", pn, 1, 3,
+                                         "p (Pa)", 0, NULL, cb),
+                     VSPH_OK);
+    ck_assert_double_eq_tol(script_ps("pic_dots"), 0.35, 1e-9);
+  }
+}
+END_TEST
+
 Suite *vsph_plot_suite(void) {
   Suite *s = suite_create("plot");
   TCase *tc = tcase_create("core");
@@ -375,6 +426,7 @@ Suite *vsph_plot_suite(void) {
   tcase_add_test(tc, test_plain_text);
   tcase_add_test(tc, test_palette_distinct);
   tcase_add_test(tc, test_particles_errors);
+  tcase_add_test(tc, test_dot_size);
   suite_add_tcase(s, tc);
   return s;
 }

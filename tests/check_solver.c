@@ -566,8 +566,8 @@ START_TEST(test_probe) {
   ck_assert_double_eq_tol(r.fill, 1.0, 0.01);
   /* x = 0, between two columns as the edge x = 1/2 is */
   const double between[3] = {0.0, c0, 0.0};
-  ck_assert_int_eq(vsph_diagnostics_probe(p, p->n, &vsph_gaussian_type, h,
-                                          zero, between, &r),
+  ck_assert_int_eq(vsph_diagnostics_probe(p, p->n, &vsph_gaussian_type, h, zero,
+                                          between, &r),
                    0);
   const double fill_between = r.fill;
   const double corner[3] = {0.5, 0.5, 0.0}, out[3] = {3.0, 0.0, 0.0};

@@ -30,6 +30,7 @@ static struct vsph_pair_visc pair_meafeta(const struct vsph_viscous_loop *lp,
 const struct vsph_viscous_type vsph_morris_meaf = {
     .name = "meaf",
     .label = "MEAF",
+    .legend = "MEAF (E)",
     .cite =
         "Morris, Fox & Zhu 1997; Colagrossi et al. 2011, "
         "Eq. (4.30)",

@@ -108,6 +108,7 @@ const struct vsph_viscous_type vsph_stress_pvwf = {
 const struct vsph_viscous_type vsph_stress_twopass = {
     .name = "twopass",
     .label = "B",
+    .legend = "two-pass (B)",
     .cite =
         "two-pass strain rate, Watkins et al. 1996 (Basa et al. "
         "2009, model B, eq. 29; Vukcevic et al. 2012)",

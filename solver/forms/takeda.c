@@ -72,6 +72,7 @@ static void first_takeda(const struct vsph_viscous_props *vp,
 const struct vsph_viscous_type vsph_takeda_a = {
     .name = "takeda",
     .label = "A",
+    .legend = "Takeda (A)",
     .cite =
         "direct second derivatives, Takeda et al. 1994 (Basa et "
         "al. 2009, model A, eqs. 27-28)",
@@ -89,6 +90,7 @@ const struct vsph_viscous_type vsph_takeda_a = {
 const struct vsph_viscous_type vsph_takeda_a0 = {
     .name = "takeda0",
     .label = "A[0]",
+    .legend = "Takeda, Shepard (A[0])",
     .cite = "model A, Shepard-corrected (Basa et al. 2009, eq. 23)",
     .pass = VSPH_VISCOUS_PASS_TAKEDA,
     .family = VSPH_VISCOUS_FAMILY_NONE,

@@ -31,6 +31,7 @@ static void first_zheng(const struct vsph_viscous_props *vp,
 const struct vsph_viscous_type vsph_zheng_visc01 = {
     .name = "visc01",
     .label = "VISC-01",
+    .legend = "VISC-01 (hybrid, η 0.1 h)",
     .cite =
         "Zheng et al. 2018, VISC-01: Brookshaw/Morris hybrid "
         "(eq. 15)",
@@ -48,6 +49,7 @@ const struct vsph_viscous_type vsph_zheng_visc01 = {
 const struct vsph_viscous_type vsph_zheng_visc02 = {
     .name = "visc02",
     .label = "VISC-02",
+    .legend = "VISC-02 (direct)",
     .cite =
         "Zheng et al. 2018, VISC-02: twice-differentiated kernel "
         "(eq. 16)",
@@ -65,6 +67,7 @@ const struct vsph_viscous_type vsph_zheng_visc02 = {
 const struct vsph_viscous_type vsph_zheng_visc03 = {
     .name = "visc03",
     .label = "VISC-03",
+    .legend = "VISC-03 (Schwaiger)",
     .cite =
         "Zheng et al. 2018, VISC-03: Schwaiger's corrected "
         "Laplacian (eq. 17)",
@@ -82,6 +85,7 @@ const struct vsph_viscous_type vsph_zheng_visc03 = {
 const struct vsph_viscous_type vsph_zheng_visc04 = {
     .name = "visc04",
     .label = "VISC-04",
+    .legend = "VISC-04 (Oger)",
     .cite =
         "Zheng et al. 2018, VISC-04: Oger's renormalised "
         "gradient (eq. 20)",
