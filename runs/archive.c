@@ -13,6 +13,7 @@
 #include <zlib.h>
 
 #include "../common/consts.h"
+#include "../common/params.h"
 #include "../common/status.h"
 #include "../io/files.h"
 #include "../io/json.h"
@@ -582,26 +583,73 @@ int vsph_archive_store_frames(const char *report, const char *archive,
 
 /* ------------------------------------------------------------ summary */
 
-/* The lines of baseline.csv text @p text whose first field is @p scene,
- * as one fingerprint; 0 when there are none. */
-static unsigned long long scene_rows(const char *text, const char *scene) {
-  if (!text) return 0;
-  char *rows = NULL;
-  size_t len = 0;
-  FILE *m = open_memstream(&rows, &len);
-  if (!m) return 0;
+/* The next line of baseline.csv text from *@p at whose first field is
+ * @p scene, into *@p line and *@p len, *@p at moved past it; 0 when
+ * there is none. */
+static int next_row(const char **at, const char *scene, const char **line,
+                    size_t *len) {
   const size_t sl = strlen(scene);
-  for (const char *l = text; *l;) {
+  for (const char *l = *at; l && *l;) {
     const char *e = strchr(l, '\n');
     const size_t n = e ? (size_t)(e - l) : strlen(l);
-    if (n > sl && !strncmp(l, scene, sl) && l[sl] == ',')
-      fprintf(m, "%.*s\n", (int)n, l);
-    l += n + (e != NULL);
+    *at = l + n + (e != NULL);
+    if (n > sl && !strncmp(l, scene, sl) && l[sl] == ',') {
+      *line = l;
+      *len = n;
+      return 1;
+    }
+    l = *at;
   }
-  unsigned long long fp = 0;
-  if (fclose(m) == 0 && len > 0) fp = vsph_folder_fingerprint(rows);
-  free(rows);
-  return fp;
+  return 0;
+}
+
+/* Whether fields @p a and @p b (@p na, @p nb bytes) agree: as numbers
+ * within the baseline's tolerance, 1e-6 relative plus 1e-9 absolute
+ * (tests/check_baseline.c holds the code to it), where both are numbers;
+ * else as text. */
+static int field_agrees(const char *a, size_t na, const char *b, size_t nb) {
+  char fa[64], fb[64];
+  double x, y;
+  if (na < sizeof fa && nb < sizeof fb) {
+    memcpy(fa, a, na), fa[na] = '\0';
+    memcpy(fb, b, nb), fb[nb] = '\0';
+    if (!vsph_params_parse_number(fa, &x) && !vsph_params_parse_number(fb, &y))
+      return fabs(x - y) <=
+             VSPH_ARCHIVE_BASELINE_REL * fabs(y) + VSPH_ARCHIVE_BASELINE_ABS;
+  }
+  return na == nb && !memcmp(a, b, na);
+}
+
+/* Whether two baseline.csv rows agree field by field (field_agrees). */
+static int row_agrees(const char *a, size_t na, const char *b, size_t nb) {
+  for (;;) {
+    const char *ea = memchr(a, ',', na), *eb = memchr(b, ',', nb);
+    const size_t fa = ea ? (size_t)(ea - a) : na,
+                 fb = eb ? (size_t)(eb - b) : nb;
+    if (!field_agrees(a, fa, b, fb) || !ea != !eb) return 0;
+    if (!ea) return 1;
+    a += fa + 1, na -= fa + 1;
+    b += fb + 1, nb -= fb + 1;
+  }
+}
+
+/* @p scene's rows of baseline.csv texts @p then and @p now: -1 when
+ * @p now has none, -2 when @p then has none (or is NULL), else 1 when
+ * they agree row by row (the same rows in the same order, row_agrees)
+ * and 0 when they do not. */
+static int scene_rows_agree(const char *then, const char *now,
+                            const char *scene) {
+  const char *an = now, *at = then, *ln, *lt;
+  size_t nn, nt;
+  if (!now || !next_row(&an, scene, &ln, &nn)) return -1;
+  if (!then || !next_row(&at, scene, &lt, &nt)) return -2;
+  for (;;) {
+    if (!row_agrees(lt, nt, ln, nn)) return 0;
+    const int more_t = next_row(&at, scene, &lt, &nt);
+    const int more_n = next_row(&an, scene, &ln, &nn);
+    if (more_t != more_n) return 0;
+    if (!more_n) return 1;
+  }
 }
 
 /* Whether @p s can stand for a commit, scene or status in entries.md:
@@ -692,22 +740,23 @@ static void judge_entry(const struct vsph_archive_judge *jd, const char *name,
              "no: the current FULL plan runs it with other settings");
     return;
   }
-  const unsigned long long then = then_text ? scene_rows(then_text, scene)
-                                  : !strcmp(hash, vsph_source_hash_id)
-                                      ? scene_rows(now, scene)
-                                      : 0;
-  const unsigned long long rows_now = scene_rows(now, scene);
-  if (!rows_now)
+  const char *then = then_text                            ? then_text
+                     : !strcmp(hash, vsph_source_hash_id) ? now
+                                                          : NULL;
+  const int agree = scene_rows_agree(then, now, scene);
+  if (agree == -1)
     snprintf(why, size,
              "unjudged: the current reports/baseline.csv has no rows of %s",
              scene);
-  else if (!then)
+  else if (agree == -2)
     snprintf(why, size,
              "unjudged: %s's rows of reports/baseline.csv at %s are not "
              "known (make archive reads them from git)",
              scene, commit[0] ? commit : "its commit");
-  else if (then != rows_now)
-    snprintf(why, size, "no: %s's rows of reports/baseline.csv changed since",
+  else if (!agree)
+    snprintf(why, size,
+             "no: %s's rows of reports/baseline.csv moved beyond their "
+             "tolerance since",
              scene);
   else
     snprintf(why, size, "yes");
@@ -884,11 +933,15 @@ int vsph_archive_summarise(const char *archive,
           "## When an archived run still stands\n\n"
           "An archived run stands for the current code when (1) the current "
           "FULL plan asks for a run of its name with its settings, and (2) "
-          "its scene's rows of `reports/baseline.csv` are the same now as at "
-          "the commit that made it. `tests/check_baseline.c` holds those "
-          "rows (the quick ladder's coarsest runs of each scene and "
-          "formulation) to the code at 10^-6, so a change to a scene's "
-          "numerics changes them, and the runs it made before no longer "
+          "its scene's rows of `reports/baseline.csv` agree now with those at "
+          "the commit that made it, within their tolerance: each number "
+          "within 10^-6 of today's, relative, plus 10^-9 absolute, the "
+          "same rows in the same order. `tests/check_baseline.c` holds "
+          "those rows (the quick ladder's coarsest runs of each scene and "
+          "formulation) to the code at that tolerance, so a change to a "
+          "scene's numerics moves them beyond it, and the runs it made "
+          "before no longer stand; rounding (another compiler, a "
+          "vectorised loop, another machine) moves them far less, and they "
           "stand. A run whose commit or rows then are not known is "
           "unjudged.\n\n",
           VSPH_VERSION, vsph_source_hash_id,

@@ -80,6 +80,12 @@ int vsph_archive_store(const char *report, const char *archive,
                        const char *commit, FILE *progress,
                        struct vsph_archive_counts *counts);
 
+/** The baseline's tolerance (tests/check_baseline.c holds the code to
+ *  it, the archive judges by it): a figure of reports/baseline.csv agrees
+ *  when within REL of the other, relative, plus ABS. */
+#define VSPH_ARCHIVE_BASELINE_REL 1e-6
+#define VSPH_ARCHIVE_BASELINE_ABS 1e-9
+
 /** The largest history or baseline file vsph_archive_summarise reads
  *  (bytes): 80 commits' baseline.csv is a few kB each. */
 #define VSPH_ARCHIVE_READ_MAX (16L << 20)

@@ -719,6 +719,37 @@ START_TEST(test_archive_summary) {
   assert_stands(ar, "s", "no: shear's rows");
   assert_stands(ar, "z", "no: poiseuille's rows");
   assert_stands(ar, "a", "| yes |");
+  /* rows with figures: rounding (1e-13 relative, a vectorised loop's
+   * or another compiler's) keeps z standing; a move of 1e-5, beyond the
+   * baseline's 1e-6, retires it, as a changed verdict does; a row more or
+   * less does too */
+  put_text(dir, "baseline.csv",
+           "scene,visc,res,ek\npoiseuille,mgf,16,1.2345678901e-03,1\n"
+           "poiseuille,pvwf,16,-7.5e-01,0\nshear,contact,20,2.5e+00,1\n");
+  static const struct {
+    const char *rows;
+    int stands;
+  } MOVED[] = {
+      {"poiseuille,mgf,16,1.2345678901001e-03,1\npoiseuille,pvwf,16,"
+       "-7.49999999999925e-01,0\n",
+       1},
+      {"poiseuille,mgf,16,1.2345802357e-03,1\npoiseuille,pvwf,16,-7.5e-01,"
+       "0\n",
+       0},
+      {"poiseuille,mgf,16,1.2345678901e-03,1\npoiseuille,pvwf,16,-7.5e-01,"
+       "1\n",
+       0},
+      {"poiseuille,mgf,16,1.2345678901e-03,1\n", 0}};
+  for (size_t m = 0; m < sizeof MOVED / sizeof MOVED[0]; m++) {
+    char then[512];
+    snprintf(then, sizeof then, "scene,visc,res,ek\n%sshear,contact,20,2.5,1\n",
+             MOVED[m].rows);
+    put_text(hist, "c0ffee.csv", then);
+    ck_assert_int_eq(vsph_archive_summarise(ar, &jd), 0);
+    assert_stands(ar, "z",
+                  MOVED[m].stands ? "| yes |" : "no: poiseuille's rows");
+    assert_stands(ar, "s", "| yes |"); /* 2.5 and 2.5e+00: one number */
+  }
   /* the plan: a under other settings, z not at all */
   char other[4200];
   snprintf(other, sizeof other, "vsph %s %s\nscene poiseuille\nSolver:res=9\n",
