@@ -36,10 +36,11 @@ struct vsph_cells {
   size_t *start;    /*!< first particle of each cell */
   size_t *count;    /*!< particles in each cell */
   size_t cap_cells; /*!< allocated length of start and count */
-  size_t *key;      /*!< scratch: cell of each particle */
+  size_t *key;      /*!< scratch: cell of each particle ... */
   size_t *perm;     /*!< scratch: sorting permutation */
-  double *dscratch; /*!< scratch for the particle permutation */
-  size_t *iscratch; /*!< scratch for the particle permutation */
+  double *dscratch; /*!< ... then, in the same block as key, scratch for
+                         the particle permutation */
+  size_t *iscratch; /*!< (the same block again) */
   size_t cap_n;     /*!< allocated length of the per-particle scratch */
   /* the build's blocks, for a sweep over pairs in parallel
    * (solver/equations.c): runs of whole cells of about

@@ -30,6 +30,16 @@ static double *field(struct vsph_particles *p, int f) {
 /* The per-particle buffers beside the particle set, for its capacity:
  * their contents are rebuilt every step (and every evaluation), so they
  * are allocated afresh, not copied. */
+/* Whether the budget's scratch (extra: the viscous parts, XSPH's
+ * velocity) has arrays of its own: with RK4 it is read only between
+ * steps (vsph_integrate_diagnostics), when y0, the step's start state, is
+ * idle, and lies in y0's first d + 1 fields (d + 1 <= 2 d + 1): a quarter
+ * of a 2-D run's buffers fewer. The transport velocity and the leapfrog
+ * keep their own. */
+static int extra_own(const struct vsph_integrate *s) {
+  return s->props.eq.tvf || s->props.leapfrog;
+}
+
 static int buffers_alloc(struct vsph_integrate *s) {
   const size_t cap = s->p->cap;
   const int d = s->p->dim;
@@ -44,7 +54,7 @@ static int buffers_alloc(struct vsph_integrate *s) {
     s->y0[f] = NULL;
   }
   for (int f = 0; f < 4; f++) {
-    free(s->extra[f]);
+    if (extra_own(s)) free(s->extra[f]);
     s->extra[f] = NULL;
   }
   const int corr = s->props.eq.corr != VSPH_PAIR_CORR_NONE;
@@ -71,7 +81,8 @@ static int buffers_alloc(struct vsph_integrate *s) {
     ok = ok && k != NULL;
   }
   for (int f = 0; f < d + 1; f++)
-    ok = ok && (s->extra[f] = malloc(cap * sizeof(double))) != NULL;
+    ok = ok && (s->extra[f] = extra_own(s) ? malloc(cap * sizeof(double))
+                                           : s->y0[f]) != NULL;
   if (!ok)
     VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the integrator for %zu particles",
               cap);
@@ -130,12 +141,13 @@ void vsph_integrate_free(struct vsph_integrate *s) {
   vsph_viscous_ws_free(s->vws);
   vsph_walls_ghosts_free(s->gh);
   free(s->where);
+  free(s->order0);
   for (int f = 0; f < 8; f++) {
     free(s->y0[f]);
     free(s->ks[f]);
   }
-  for (int f = 0; f < 4; f++) free(s->extra[f]);
-  free(s->before);
+  for (int f = 0; f < 4; f++)
+    if (extra_own(s)) free(s->extra[f]);
   free(s);
 }
 
@@ -488,14 +500,15 @@ static int step_leapfrog(struct vsph_integrate *s, double dt) {
   return VSPH_OK;
 }
 
-static int keep_before(struct vsph_integrate *s);
-static void put_back(struct vsph_integrate *s);
+static int keep_order(struct vsph_integrate *s);
+static void put_back(struct vsph_integrate *s, size_t n0);
 
 int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   if (s->props.eq.tvf) return step_tvf(s, dt);
   if (s->props.leapfrog) return step_leapfrog(s, dt);
-  /* the particles as the step finds them, to put back if it is stopped */
-  if (s->stop && keep_before(s)) return VSPH_ENOMEM;
+  /* the particles' order as the step finds them, to put back if it is
+   * stopped */
+  if (s->stop && keep_order(s)) return VSPH_ENOMEM;
   struct vsph_particles *p = s->p;
   const int d = p->dim, nf = nfields(s);
   /* Skin: a pair closes in by at most 2 dt max|u| over a step; factor 1.5
@@ -510,6 +523,8 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   for (int f = 0; f < d; f++) k[d + f] = p->acc[f];
   k[2 * d] = p->drho;
   k[2 * d + 1] = p->de; /* the gas law's energy (nf says whether) */
+  /* y0, the state the step starts from, is also what a stopped step puts
+   * back (put_back) */
   for (int f = 0; f < nf; f++) {
     memcpy(s->y0[f], y[f], n * sizeof(double));
     memset(s->ks[f], 0, n * sizeof(double));
@@ -527,7 +542,7 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   if (s->props.walls.solid == VSPH_WALLS_EVOLVING) hi[2 * d] = SIZE_MAX;
   for (int stage = 0; stage < 4; stage++) {
     if (s->stop && *s->stop) { /* between stages: as if never begun */
-      put_back(s);
+      put_back(s, n);
       return VSPH_EINTR;
     }
     if ((st = rhs(s, 0, &nint, &min_s2))) return st;
@@ -711,7 +726,7 @@ static size_t layout_bytes(size_t d, size_t cap, size_t cap_n, size_t cap_cells,
                            int ws, int ghosts, int tvf) {
   /* the fields, the gas law's e and de counted (an upper bound) */
   size_t b = cap * (3 * d + 7) * sizeof(double) + cap * sizeof(size_t);
-  b += cap_n * (3 * sizeof(size_t) + sizeof(double));
+  b += cap_n * 2 * sizeof(size_t); /* the cells' permutation and scratch */
   b += cap_cells * 2 * sizeof(size_t);
   /* the first-pass workspace (ws >= 1) and its corrections' S, a, L (2) */
   if (ws >= 1) b += cap * (d * d + 1) * sizeof(double) + cap;
@@ -888,46 +903,59 @@ int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
   return VSPH_OK;
 }
 
-/* The particle arrays (every field present, n of each) copied into
- * s->before, n first. */
-static int keep_before(struct vsph_integrate *s) {
-  struct vsph_particles *p = s->p;
-  void **a[32];
-  size_t sz[32], len = sizeof(size_t);
-  const int na = arrays(p, a, sz);
-  for (int k = 0; k < na; k++)
-    if (*a[k]) len += p->n * sz[k];
-  if (len > s->before_cap) {
-    unsigned char *g = realloc(s->before, len);
-    if (!g)
-      VSPH_FAIL(VSPH_ENOMEM, "cannot keep %zu bytes of a step's start", len);
-    s->before = g;
-    s->before_cap = len;
+/* The ids in the order the step finds them (s->order0, s->n0): what
+ * its preparation's wrap, ghosts and sort change besides the state. */
+static int keep_order(struct vsph_integrate *s) {
+  const struct vsph_particles *p = s->p;
+  if (p->cap > s->order0_cap) {
+    size_t *o = realloc(s->order0, p->cap * sizeof *o);
+    if (!o)
+      VSPH_FAIL(VSPH_ENOMEM, "cannot keep the order of %zu particles", p->cap);
+    s->order0 = o;
+    s->order0_cap = p->cap;
   }
-  unsigned char *at = s->before;
-  memcpy(at, &p->n, sizeof(size_t));
-  at += sizeof(size_t);
-  for (int k = 0; k < na; k++)
-    if (*a[k]) {
-      memcpy(at, *a[k], p->n * sz[k]);
-      at += p->n * sz[k];
-    }
+  memcpy(s->order0, p->id, p->n * sizeof *p->id);
+  s->n0 = p->n;
   return VSPH_OK;
 }
 
-/* s->before back into the particles (the capacity is at least what it
- * was: it only grows). */
-static void put_back(struct vsph_integrate *s) {
+/* A stopped RK4 step put back as it began: the state fields from y0 (its
+ * @p n particles after its preparation: wrapped across periodic ends,
+ * ghosts made, sorted by cell), then every array in the order the step
+ * found (s->order0: the order decides the ghosts' making and the sums'
+ * order, so the resumed step is bitwise the step never stopped), without
+ * a copy of the whole set kept at every step. A wrapped position is
+ * wrapped again to itself, and the ghosts are made afresh by the next
+ * preparation: what entries the old ghosts held does not matter, nor do
+ * the fields computed afresh before they are read (pressure, volume,
+ * rates). The stages leave mass, id and order alone. */
+static void put_back(struct vsph_integrate *s, size_t n) {
   struct vsph_particles *p = s->p;
+  const int nf = nfields(s);
+  for (int f = 0; f < nf; f++)
+    memcpy(field(p, f), s->y0[f], n * sizeof(double));
+  /* each array back into the first order, through scratch ks[0] (the
+   * abandoned step's rates: cap doubles); an id the preparation dropped
+   * (a ghost) keeps whatever its place holds */
+  for (size_t i = 0; i < n; i++) s->where[p->id[i]] = i;
   void **a[32];
   size_t sz[32];
   const int na = arrays(p, a, sz);
-  const unsigned char *at = s->before;
-  memcpy(&p->n, at, sizeof(size_t));
-  at += sizeof(size_t);
-  for (int k = 0; k < na; k++)
-    if (*a[k]) {
-      memcpy(*a[k], at, p->n * sz[k]);
-      at += p->n * sz[k];
+  unsigned char *const tmp = (unsigned char *)s->ks[0];
+  for (int k = 0; k < na; k++) {
+    unsigned char *const x = *a[k];
+    if (!x || x == (unsigned char *)p->id) continue;
+    const size_t e = sz[k];
+    for (size_t i = 0; i < s->n0; i++) {
+      const size_t id = s->order0[i], at = s->where[id];
+      if (at < n && p->id[at] == id)
+        memcpy(tmp + i * e, x + at * e, e);
+      else
+        memcpy(tmp + i * e, x + i * e, e);
     }
+    memcpy(x, tmp, s->n0 * e);
+  }
+  memcpy(p->id, s->order0, s->n0 * sizeof *p->id);
+  p->n = s->n0;
+  for (size_t i = 0; i < p->n; i++) s->where[p->id[i]] = i;
 }

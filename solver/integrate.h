@@ -60,10 +60,9 @@ struct vsph_integrate {
               drift velocity, a and d rho/dt (2d + 1 fields) */
   /** if not NULL, an RK4 step is abandoned between its stages when *stop
    *  becomes non-zero: the particles are put back as the step found them
-   *  (a copy taken before it) and the step returns VSPH_EINTR */
+   *  (from its start state y0) and the step returns VSPH_EINTR */
   const volatile sig_atomic_t *stop;
-  unsigned char *before; /* that copy */
-  size_t before_cap;
+  size_t *order0, order0_cap, n0; /* the ids in the order a step found them */
 };
 
 /** @brief Take ownership of the fluid set @p fluid (ids 0..n-1) and set up
