@@ -615,8 +615,8 @@ static void run_cells(const struct rhs_ctx *rc, rhs_cell_fn *cell_loop,
 }
 
 /* Contact SPH's loops: the shear test's shapes (3-D, Wendland C2 or the
- * cubic B-spline, inviscid or viscous) and the cylinders' (2-D, Wendland
- * C2) specialised, any other general. */
+ * cubic B-spline, inviscid or viscous), the cylinders' (2-D, Wendland C2)
+ * and the 3h Gaussian's (2-D and 3-D) specialised, any other general. */
 #define CONTACT_SHAPE(name, D, KID, VISC)                                      \
   static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
                      const struct vsph_cells *cells, size_t c, size_t n_fluid, \
@@ -629,6 +629,10 @@ CONTACT_SHAPE(contact_cubic_3, 3, VSPH_KERNEL_DFQ_CUBIC, 0)
 CONTACT_SHAPE(contact_cubic_3v, 3, VSPH_KERNEL_DFQ_CUBIC, 1)
 CONTACT_SHAPE(contact_c2_2, 2, VSPH_KERNEL_DFQ_C2, 0)
 CONTACT_SHAPE(contact_c2_2v, 2, VSPH_KERNEL_DFQ_C2, 1)
+CONTACT_SHAPE(contact_gauss_2, 2, VSPH_KERNEL_DFQ_GAUSSIAN, 0)
+CONTACT_SHAPE(contact_gauss_2v, 2, VSPH_KERNEL_DFQ_GAUSSIAN, 1)
+CONTACT_SHAPE(contact_gauss_3, 3, VSPH_KERNEL_DFQ_GAUSSIAN, 0)
+CONTACT_SHAPE(contact_gauss_3v, 3, VSPH_KERNEL_DFQ_GAUSSIAN, 1)
 #undef CONTACT_SHAPE
 
 static size_t contact_general(const struct rhs_ctx *rc,
@@ -641,8 +645,13 @@ static size_t contact_general(const struct rhs_ctx *rc,
 }
 
 static rhs_cell_fn *contact_choose(const struct rhs_ctx *rc) {
+  if (rc->ep->loop_general) return contact_general;
   if (rc->pk.dim == 2 && rc->pk.dfq_id == VSPH_KERNEL_DFQ_C2)
     return rc->cvisc ? contact_c2_2v : contact_c2_2;
+  /* the 3h Gaussian, the solver's default kernel (and the bench's) */
+  if (rc->pk.dfq_id == VSPH_KERNEL_DFQ_GAUSSIAN && rc->pk.dim >= 2)
+    return rc->pk.dim == 2 ? (rc->cvisc ? contact_gauss_2v : contact_gauss_2)
+                           : (rc->cvisc ? contact_gauss_3v : contact_gauss_3);
   if (rc->pk.dim != 3) return contact_general;
   if (rc->pk.dfq_id == VSPH_KERNEL_DFQ_C2)
     return rc->cvisc ? contact_c2_3v : contact_c2_3;

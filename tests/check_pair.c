@@ -788,6 +788,36 @@ START_TEST(test_gather_shapes) {
 }
 END_TEST
 
+/* Contact SPH's specialised loops of the 3h Gaussian (2-D: the bench's
+ * stretching square, contact SPH with the scene's viscosity, and
+ * inviscid), as test_gather_shapes: 1 and 2 threads the same bits, and
+ * against the general loop (Solver's loop_general) the same interactions
+ * and closest pair and each field to 1e-12 of its terms' size. */
+START_TEST(test_contact_shapes) {
+  struct vsph_integrate_props ip;
+  struct vsph_integrate *s =
+      scene_stepped_k(&vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 24, 0.0,
+                      &vsph_gaussian_type, VSPH_CONSTS_HDX, 0, &ip);
+  s->props.eq.scheme = VSPH_EQUATIONS_CONTACT;
+  s->props.eq.nmat = 1;
+  s->props.eq.mat[0] = (struct vsph_equations_mat){
+      .rho0 = ip.eq.rho0, .c0 = ip.eq.c0, .mu = _i ? 0.0 : ip.eq.visc.mu};
+  ip.eq.visc.mu = s->props.eq.mat[0].mu; /* the scales */
+  const size_t n = s->p->n;
+  double *buf = calloc(18 * n, sizeof *buf);
+  const struct vsph_equations_out s1 = sweep_rhs(s, NULL, 1, buf + 6 * n),
+                                  s2 = sweep_rhs(s, NULL, 2, buf + 12 * n);
+  s->props.eq.loop_general = 1;
+  const struct vsph_equations_out g = sweep_rhs(s, NULL, 1, buf);
+  s->props.eq.loop_general = 0;
+  assert_loops_agree(s, &ip, buf, &g, &s1, &s2,
+                     _i ? "contact SPH, inviscid, Gaussian 2-D"
+                        : "contact SPH, viscous, Gaussian 2-D");
+  free(buf);
+  vsph_integrate_free(s);
+}
+END_TEST
+
 /* XSPH's drift velocity (vsph_equations_xsph) on a random set, 2-D and
  * 3-D, against an O(N^2) sum written here, w_i = u_i + eps sum_j
  * (m_j/rho_j) (u_j - u_i) W(|r_j - r_i|) over every other particle within
@@ -1180,6 +1210,7 @@ Suite *vsph_equations_suite(void) {
   tcase_add_loop_test(tc, test_sweep_gather_threads,
                       (int)vsph_scene_count() * 5,
                       (int)vsph_scene_count() * 5 + 1);
+  tcase_add_loop_test(tc, test_contact_shapes, 0, 2);
   tcase_add_loop_test(tc, test_gather_shapes, 0, 10);
   tcase_add_loop_test(tc, test_state_equations, 0, 3);
   tcase_add_loop_test(tc, test_xsph_sum, 0, 2);
