@@ -4,6 +4,8 @@
 #include "cmd_bench.h"
 
 #include <stdio.h>
+#include <string.h>
+#include <unistd.h>
 
 #include "../common/status.h"
 #include "../reports/bench.h"
@@ -12,18 +14,27 @@
 static const char *const CMD = "bench";
 
 int vsph_cmd_bench_main(int argc, char **argv) {
-  struct vsph_bench_props bp = {.size = 200, .solver_only = 0};
+  struct vsph_bench_props bp = {.size = 200, .solver_only = 0, .processes = 1};
   size_t busy = 0;
+  const char *csv = NULL;
   const struct vsph_args_spec own[] = {
       {"--size", VSPH_ARGS_SIZE, &bp.size, "N",
        "particles across the operators' square, 10-2000 (default 200)"},
       {"--solver-only", VSPH_ARGS_FLAG, &bp.solver_only, NULL,
        "only the solver table"},
       {"--busy", VSPH_ARGS_SIZE, &busy, "K",
-       "start K busy processes beside the solver table, 0-8 (default 0)"}};
+       "start K busy processes beside the solver table, 0-8 (default 0)"},
+      {"--processes", VSPH_ARGS_SIZE, &bp.processes, "P",
+       "measure the solver table in P processes one after another, 1-20 "
+       "(default 1; make bench: 5): its best and the median of their bests"},
+      {"--csv", VSPH_ARGS_STRING, &csv, "FILE",
+       "the solver table as CSV in FILE too (a spreadsheet opens it)"},
+      {"--raw", VSPH_ARGS_FLAG, &bp.raw, NULL,
+       "only the solver rows, as CSV on stdout (what each of --processes "
+       "prints)"}};
   const struct vsph_args_cmd c = {
       CMD,
-      "[--size N] [--solver-only] [--busy K]",
+      "[--size N] [--solver-only] [--busy K] [--processes P] [--csv FILE]",
       "Times (1) F, G, N, M by quadrature at one depth for every kernel in\n"
       "2-D and 3-D; (2) the particle sums against the number of particles;\n"
       "(3) each viscous operator on an N x N square at h/dx = 4/3 with the\n"
@@ -39,7 +50,11 @@ int vsph_cmd_bench_main(int argc, char **argv) {
       "specialised gather beside the general loop; interactions/s\n"
       "and particle-evaluations/s per core, the peak memory per particle of\n"
       "a whole run, the load average beside each row, the peer's figures\n"
-      "below. --busy K measures the solver table beside K busy processes.",
+      "below; then the strong scaling (1 thread against 2) and a\n"
+      "weak-scaling estimate from the memory bandwidth. The CPU's model and\n"
+      "clock head the table. --busy K measures the solver table beside K\n"
+      "busy processes; --processes P in P processes (a process's speed can\n"
+      "differ from the next's on a shared machine).",
       own,
       sizeof own / sizeof own[0],
       NULL,
@@ -48,6 +63,20 @@ int vsph_cmd_bench_main(int argc, char **argv) {
   const int rc = vsph_args_parse(&c, argc, argv, NULL);
   if (rc >= 0) return vsph_args_finish(CMD, rc);
   if (busy > 8) return vsph_args_fail(CMD, "--busy must be 0-8, got %zu", busy);
+  if (bp.processes < 1 || bp.processes > 20)
+    return vsph_args_fail(CMD, "--processes must be 1-20, got %zu",
+                          bp.processes);
+  if (csv && !csv[0]) return vsph_args_fail(CMD, "--csv wants a file name");
+  if (csv) { /* refused before anything is measured, nothing made */
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", csv);
+    char *slash = strrchr(dir, '/');
+    if (slash) *(slash == dir ? slash + 1 : slash) = '\0';
+    if (access(slash ? dir : ".", W_OK | X_OK) != 0 ||
+        (access(csv, F_OK) == 0 && access(csv, W_OK) != 0))
+      return vsph_args_fail(CMD, "--csv %s is not writable", csv);
+  }
+  bp.csv = csv;
   bp.busy = (int)busy;
   const int st = vsph_bench_run(&bp, stdout);
   return st ? vsph_args_status(CMD, st) : vsph_args_finish(CMD, 0);

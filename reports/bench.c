@@ -204,18 +204,44 @@ static void print_peer(FILE *out) {
           "1.40e+06", "348", "-");
 }
 
+/* One measured row of the solver table. */
+struct row {
+  char what[40];
+  size_t n;
+  int thr;
+  double best, med;     /* seconds: the best and the median time */
+  double inter, pevals; /* directed interactions, particle-evaluations */
+  double bytes;         /* peak bytes per particle (0: not measured) */
+  double load;          /* the 1-minute load average after it */
+};
+
+/* The solver table's rows as a process measured them (or as K processes
+ * did, folded). */
+struct rows {
+  struct row r[64];
+  size_t n;
+};
+
 /* One row: what, N, threads, best and median ms, interactions/s and
  * particle-evaluations/s per core (from the best), bytes per particle (0:
  * not measured), load. */
-static void print_row(FILE *out, const char *what, size_t n, int thr, double t,
-                      double med, double inter, double pevals, double bytes) {
-  double la[3];
-  vsph_sysinfo_load(la);
+static void print_row(FILE *out, const struct row *r) {
   char b[32] = "-";
-  if (bytes > 0) snprintf(b, sizeof b, "%.0f", bytes);
-  fprintf(out, "%-30s %7zu %3d %8.2f %8.2f %13.3e %15.3e %10s %6.2f\n", what, n,
-          thr, 1e3 * t, 1e3 * med, inter / (t * thr), pevals / (t * thr), b,
-          la[0]);
+  if (r->bytes > 0) snprintf(b, sizeof b, "%.0f", r->bytes);
+  fprintf(out, "%-30s %7zu %3d %8.2f %8.2f %13.3e %15.3e %10s %6.2f\n", r->what,
+          r->n, r->thr, 1e3 * r->best, 1e3 * r->med,
+          r->inter / (r->best * r->thr), r->pevals / (r->best * r->thr), b,
+          r->load);
+}
+
+/* The row as a CSV line (the columns of SOLVER_CSV). */
+static const char SOLVER_CSV[] =
+    "what,particles,threads,best_ms,median_ms,inter_per_s_core,"
+    "pevals_per_s_core,bytes_per_particle,load_1min\n";
+static void csv_row(FILE *out, const struct row *r) {
+  fprintf(out, "\"%s\",%zu,%d,%.6f,%.6f,%.6e,%.6e,%.1f,%.2f\n", r->what, r->n,
+          r->thr, 1e3 * r->best, 1e3 * r->med, r->inter / (r->best * r->thr),
+          r->pevals / (r->best * r->thr), r->bytes, r->load);
 }
 
 /* Peak resident memory of a whole `vsph run` of (scene, form) at res
@@ -310,7 +336,8 @@ static const struct bench_case SOLVER[] = {
 #define SOLVER_CASES (sizeof SOLVER / sizeof SOLVER[0])
 
 /* One case: its force evaluation or step timed on 1 and 2 threads. */
-static int bench_case(FILE *out, const struct bench_case *bc, size_t res) {
+static int bench_case(struct rows *rw, const struct bench_case *bc,
+                      size_t res) {
   struct solver_arg a = {
       .s = bench_run(bc->type, bc->form, res, bc->delta, bc->contact,
                      bc->cubic ? &vsph_cubic_type : &vsph_gaussian_type,
@@ -347,22 +374,121 @@ static int bench_case(FILE *out, const struct bench_case *bc, size_t res) {
       inter = passes * (double)a.out.interactions;
       t = timed(15, rhs_once, &a, &med);
     }
-    print_row(out, bc->what, n, thr, t, med, inter,
-              (bc->step ? 4.0 : 1.0) * (double)n, bytes);
+    if (rw->n < sizeof rw->r / sizeof rw->r[0]) {
+      struct row *r = &rw->r[rw->n++];
+      double la[3];
+      vsph_sysinfo_load(la);
+      snprintf(r->what, sizeof r->what, "%s", bc->what);
+      r->n = n;
+      r->thr = thr;
+      r->best = t;
+      r->med = med;
+      r->inter = inter;
+      r->pevals = (bc->step ? 4.0 : 1.0) * (double)n;
+      r->bytes = bytes;
+      r->load = la[0];
+    }
   }
   free(buf);
   vsph_integrate_free(a.s);
   return VSPH_OK;
 }
 
-static int bench_solver(FILE *out, int busy, struct progress *pg) {
+/* The solver table measured in this process into @p rw. */
+static int measure_solver(struct rows *rw, int busy, struct progress *pg) {
   /* the peer's size: 205^2 = 42025 particles */
   const size_t res = 205;
   pid_t pids[8] = {0};
   if (busy > 8) busy = 8;
+  busy_start(pids, busy);
+  int st = VSPH_OK;
+  for (size_t c = 0; c < SOLVER_CASES && !st; c++) {
+    st = bench_case(rw, &SOLVER[c], res);
+    if (pg) step(pg, SEC_SOLVER, SOLVER[c].what, row_cost(SOLVER[c].what));
+  }
+  busy_stop(pids, busy);
+  omp_set_num_threads(2);
+  return st;
+}
+
+/* The CPU's model name and its clock now (MHz), from /proc/cpuinfo
+ * (the first processor's); "unknown" and 0 where it says none. */
+static void cpu_model(char *name, size_t n, double *mhz) {
+  snprintf(name, n, "unknown");
+  *mhz = 0.0;
+  FILE *f = fopen("/proc/cpuinfo", "r");
+  if (!f) return;
+  char line[512];
+  int got = 0;
+  while (got != 3 && fgets(line, sizeof line, f)) {
+    const char *c = strchr(line, ':');
+    if (!c) continue;
+    if (!(got & 1) && !strncmp(line, "model name", 10)) {
+      snprintf(name, n, "%s", c + 2);
+      name[strcspn(name, "\n")] = '\0';
+      got |= 1;
+    } else if (!(got & 2) && !strncmp(line, "cpu MHz", 7)) {
+      *mhz = strtod(c + 1, NULL);
+      got |= 2;
+    }
+  }
+  fclose(f);
+}
+
+/* Memory bandwidth of a triad a = b + s c over three arrays of 4 Mi
+ * doubles each (96 MiB, beyond any cache), on @p thr threads: bytes
+ * moved (three arrays, read, read, write) over the best of 5 times,
+ * GB/s; 0 if the arrays cannot be had. */
+static double triad_gbs(int thr) {
+  const size_t n = (size_t)1 << 22;
+  double *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b),
+         *c = malloc(n * sizeof *c);
+  double best = INFINITY;
+  if (a && b && c) {
+    omp_set_num_threads(thr);
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < n; i++) a[i] = 0.0, b[i] = 1.0, c[i] = 2.0;
+    for (int r = 0; r < 5; r++) {
+      const double t0 = omp_get_wtime();
+#pragma omp parallel for schedule(static)
+      for (size_t i = 0; i < n; i++) a[i] = b[i] + 0.5 * c[i];
+      best = fmin(best, omp_get_wtime() - t0);
+    }
+    omp_set_num_threads(2);
+  }
+  const double sum = a ? a[n / 2] : 0.0; /* keep the stores */
+  free(a);
+  free(b);
+  free(c);
+  return isfinite(best) && sum > 0.0 ? 3.0 * (double)n * 8.0 / best / 1e9 : 0.0;
+}
+
+/* The 2-D MGF force evaluation's memory traffic per particle (bytes),
+ * counted from its arrays (each streamed once an evaluation, the
+ * neighbours' reads served by the cache, the cells being sorted): the
+ * state read (r, u: 2d; rho, p, V, id), the pressure pass (m and rho
+ * read, p and V written), the sweep's buffers (d + 1 doubles, 1.35
+ * times for the blocks' overlap, written then read) and the rates
+ * written (d + 1). */
+static double mgf_bytes_per_particle(int d) {
+  const double state = (2.0 * d + 4.0) * 8.0, pressure = 4.0 * 8.0;
+  const double sweep = (d + 1.0) * 1.35 * 16.0, rates = (d + 1.0) * 8.0;
+  return state + pressure + sweep + rates;
+}
+
+/* The folded table: every row with its best (over all processes) and
+ * median (of the processes' bests), the peer's rows, the strong scaling
+ * (1 thread against 2) and the weak-scaling estimate. */
+static void print_solver(FILE *out, const struct rows *rw, int busy,
+                         size_t procs) {
+  char model[256];
+  double mhz;
+  cpu_model(model, sizeof model, &mhz);
   fprintf(out,
           "\n## solver against the peer: 2-D, 3h Gaussian, h/dx 4/3, about 45 "
           "neighbours, double precision; 15 force evaluations, 7 steps\n");
+  fprintf(out, "# CPU %s, %.0f MHz now, %d threads available\n", model, mhz,
+          omp_get_max_threads());
   if (busy)
     fprintf(out, "## with %d other busy processes on the machine (--busy)\n",
             busy);
@@ -370,23 +496,148 @@ static int bench_solver(FILE *out, int busy, struct progress *pg) {
           "(inter/s/core: directed interactions per second per thread, PVWF's "
           "two passes both counted; p-evals/s/core: particles x force "
           "evaluations per second per thread, RK4 making 4 per step; "
-          "B/particle: peak resident memory per particle of a whole run, "
-          "from two sizes in child processes)\n");
-  fprintf(out,
-          "(rates from the best time; load: the 1-minute average, this bench "
-          "included)\n");
+          "B/particle: peak resident memory per particle of a whole run "
+          "without snapshots, from two sizes in child processes)\n");
+  if (procs > 1)
+    fprintf(out,
+            "(%zu processes, one after another: best ms the best time of all "
+            "of them, med ms the median of their best times; rates from the "
+            "best; load: the largest 1-minute average seen, this bench "
+            "included)\n",
+            procs);
+  else
+    fprintf(out,
+            "(one process: best and median of its repetitions, rates from the "
+            "best; load: the 1-minute average, this bench included; make "
+            "bench times 5 processes)\n");
   fprintf(out, "%-30s %7s %3s %8s %8s %13s %15s %10s %6s\n", "what", "N", "thr",
           "best ms", "med ms", "inter/s/core", "p-evals/s/core", "B/particle",
           "load");
-  busy_start(pids, busy);
-  int st = VSPH_OK;
-  for (size_t c = 0; c < SOLVER_CASES && !st; c++) {
-    st = bench_case(out, &SOLVER[c], res);
-    step(pg, SEC_SOLVER, SOLVER[c].what, row_cost(SOLVER[c].what));
+  for (size_t k = 0; k < rw->n; k++) print_row(out, &rw->r[k]);
+  print_peer(out);
+  fprintf(out,
+          "\n## strong scaling on this machine: the time on 1 thread over the "
+          "time on 2 (2.00 is perfect)\n%-30s %10s %10s\n",
+          "what", "from best", "from med");
+  for (size_t k = 0; k + 1 < rw->n; k++) {
+    const struct row *a = &rw->r[k], *b = &rw->r[k + 1];
+    if (a->thr != 1 || b->thr != 2 || strcmp(a->what, b->what)) continue;
+    fprintf(out, "%-30s %10.2f %10.2f\n", a->what, a->best / b->best,
+            a->med / b->med);
   }
-  busy_stop(pids, busy);
-  omp_set_num_threads(2);
-  if (!st) print_peer(out);
+  const double bw1 = triad_gbs(1), bw2 = triad_gbs(2);
+  const struct row *mgf = rw->n ? &rw->r[0] : NULL;
+  const double bpp = mgf_bytes_per_particle(2);
+  fprintf(out,
+          "\n## weak scaling, an estimate: memory bandwidth (triad, best of "
+          "5) %.1f GB/s on 1 thread, %.1f on 2\n",
+          bw1, bw2);
+  if (mgf && mgf->thr == 1 && bw2 > 0.0) {
+    const double inter_pp = mgf->inter / (double)mgf->n;
+    const double bpi = bpp / inter_pp;
+    const double rate = mgf->inter / mgf->best; /* per core */
+    const double need = rate * bpi / 1e9;       /* GB/s a core draws */
+    fprintf(out,
+            "# MGF's force evaluation moves about %.0f B a particle (its "
+            "arrays streamed once: bench.c, mgf_bytes_per_particle), %.1f B a "
+            "directed interaction at %.0f interactions a particle; at %.2e "
+            "interactions/s a core draws %.2f GB/s, so a memory system of "
+            "B GB/s feeds about B/%.2f cores before bandwidth binds (this "
+            "machine's %.1f GB/s: %.0f cores); below that the work per "
+            "core stays the same as cores and particles grow together\n",
+            bpp, bpi, inter_pp, rate, need, need, bw2,
+            need > 0.0 ? bw2 / need : 0.0);
+  }
+}
+
+/* A process of this program measuring the solver table (bench
+ * --solver-only --raw), its rows read from its output into @p rw;
+ * VSPH_EIO if it cannot be run or says nothing readable. */
+static int child_rows(int busy, struct rows *rw) {
+  int fd[2];
+  if (pipe(fd) != 0) VSPH_FAIL(VSPH_EIO, "cannot make a pipe for the bench");
+  char b[16];
+  snprintf(b, sizeof b, "%d", busy);
+  const pid_t pid = fork();
+  if (pid == 0) { /* the child: only exec (safe after fork in threads) */
+    dup2(fd[1], 1);
+    close(fd[0]);
+    close(fd[1]);
+    execl("/proc/self/exe", "vsph", "bench", "--solver-only", "--raw", "--busy",
+          b, (char *)NULL);
+    _exit(127);
+  }
+  close(fd[1]);
+  FILE *f = pid > 0 ? fdopen(fd[0], "r") : NULL;
+  rw->n = 0;
+  char line[512];
+  while (f && fgets(line, sizeof line, f)) {
+    struct row r = {0};
+    double ipc, pepc;
+    if (line[0] != '"' || rw->n >= sizeof rw->r / sizeof rw->r[0]) continue;
+    const char *q = strchr(line + 1, '"');
+    if (!q || (size_t)(q - line - 1) >= sizeof r.what) continue;
+    memcpy(r.what, line + 1, (size_t)(q - line - 1));
+    if (sscanf(q + 1, ",%zu,%d,%lf,%lf,%lf,%lf,%lf,%lf", &r.n, &r.thr, &r.best,
+               &r.med, &ipc, &pepc, &r.bytes, &r.load) != 8 ||
+        r.thr < 1)
+      continue;
+    r.best *= 1e-3;
+    r.med *= 1e-3;
+    r.inter = ipc * r.best * r.thr;
+    r.pevals = pepc * r.best * r.thr;
+    rw->r[rw->n++] = r;
+  }
+  if (f)
+    fclose(f);
+  else
+    close(fd[0]);
+  int status = 1;
+  if (pid > 0) waitpid(pid, &status, 0);
+  if (pid <= 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0 || !rw->n)
+    VSPH_FAIL(VSPH_EIO, "a bench process failed (exit status %d)",
+              pid > 0 && WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+  return VSPH_OK;
+}
+
+/* The solver table over @p procs processes (one after another), folded
+ * into @p all: each row's best of all, the median of the processes'
+ * bests, the largest load. */
+static int measure_processes(size_t procs, int busy, struct rows *all) {
+  struct rows *each = calloc(procs, sizeof *each);
+  if (!each) VSPH_FAIL(VSPH_ENOMEM, "cannot hold %zu processes' rows", procs);
+  const double t0 = omp_get_wtime();
+  int st = VSPH_OK;
+  for (size_t k = 0; k < procs && !st; k++) {
+    st = child_rows(busy, &each[k]);
+    if (!st && k > 0 && each[k].n != each[0].n)
+      st = VSPH_EIO, vsph_status_report(st, __FILE__, __LINE__,
+                                        "bench processes gave %zu and %zu rows",
+                                        each[0].n, each[k].n);
+    const double spent = omp_get_wtime() - t0;
+    fprintf(stderr,
+            "vsph bench: process %zu of %zu ended, %.0f s elapsed, about %.0f "
+            "s left\n",
+            k + 1, procs, spent,
+            spent / (double)(k + 1) * (double)(procs - k - 1));
+  }
+  if (!st) {
+    *all = each[0];
+    double t[64];
+    for (size_t r = 0; r < all->n; r++) {
+      for (size_t k = 0; k < procs; k++) {
+        const struct row *x = &each[k].r[r];
+        t[k] = x->best;
+        all->r[r].load = fmax(all->r[r].load, x->load);
+        all->r[r].bytes = fmax(all->r[r].bytes, x->bytes);
+      }
+      qsort(t, procs, sizeof t[0], cmp_double);
+      all->r[r].best = t[0];
+      all->r[r].med =
+          procs % 2 ? t[procs / 2] : 0.5 * (t[procs / 2 - 1] + t[procs / 2]);
+    }
+  }
+  free(each);
   return st;
 }
 
@@ -526,28 +777,67 @@ int vsph_bench_run(const struct vsph_bench_props *bp, FILE *out) {
               "the square must have 10-2000 particles across, "
               "got %zu",
               bp->size);
+  if (bp->processes < 1 || bp->processes > 20)
+    VSPH_FAIL(VSPH_EINVAL, "the bench takes 1-20 processes, not %zu",
+              bp->processes);
+  struct rows *rw = calloc(1, sizeof *rw);
+  if (!rw) VSPH_FAIL(VSPH_ENOMEM, "cannot hold the bench's rows");
+  int st = VSPH_OK;
+  if (bp->raw) { /* a child of --processes: the solver rows as CSV, its
+                    progress on stderr */
+    struct progress pg = {.t0 = omp_get_wtime(), .out = out};
+    pg.t_row = pg.t0;
+    for (size_t c = 0; c < SOLVER_CASES; c++)
+      pg.rows[SEC_SOLVER] += row_cost(SOLVER[c].what);
+    pg.nrows = SOLVER_CASES;
+    st = measure_solver(rw, bp->busy, &pg);
+    if (!st) {
+      fputs(SOLVER_CSV, out);
+      for (size_t k = 0; k < rw->n; k++) csv_row(out, &rw->r[k]);
+    }
+    free(rw);
+    return st;
+  }
   fprintf(out, "# vsph %s bench, %d threads available\n", VSPH_VERSION,
           omp_get_max_threads());
   print_load(out);
-  int st = VSPH_OK;
   struct progress pg = {.t0 = omp_get_wtime(), .out = out};
   pg.t_row = pg.t0;
-  for (size_t c = 0; c < SOLVER_CASES; c++)
-    pg.rows[SEC_SOLVER] += row_cost(SOLVER[c].what);
-  pg.nrows = SOLVER_CASES;
+  if (bp->processes == 1) {
+    for (size_t c = 0; c < SOLVER_CASES; c++)
+      pg.rows[SEC_SOLVER] += row_cost(SOLVER[c].what);
+    pg.nrows = SOLVER_CASES;
+  }
   if (!bp->solver_only) {
     pg.rows[SEC_QUAD] = 2.0 * (double)vsph_kernel_count();
     pg.rows[SEC_SUMS] = 4;
     pg.rows[SEC_OPS] = VSPH_VISCOUS_FORM_COUNT;
     pg.nrows += 2 * vsph_kernel_count() + 4 + VSPH_VISCOUS_FORM_COUNT;
   }
-  fprintf(stderr, "vsph bench: %zu rows to measure\n", pg.nrows);
+  if (pg.nrows) fprintf(stderr, "vsph bench: %zu rows to measure\n", pg.nrows);
   if (!bp->solver_only) {
     st = bench_quadrature(out, &pg);
     if (!st) st = bench_sums(out, &pg);
     if (!st) st = bench_operators(out, bp->size, &pg);
   }
-  if (!st) st = bench_solver(out, bp->busy, &pg);
+  if (!st)
+    st = bp->processes > 1 ? measure_processes(bp->processes, bp->busy, rw)
+                           : measure_solver(rw, bp->busy, &pg);
+  if (!st) print_solver(out, rw, bp->busy, bp->processes);
+  if (!st && bp->csv) {
+    FILE *f = fopen(bp->csv, "w");
+    int ok = f != NULL;
+    if (ok) {
+      fputs(SOLVER_CSV, f);
+      for (size_t k = 0; k < rw->n; k++) csv_row(f, &rw->r[k]);
+      ok = !ferror(f);
+    }
+    if (f && fclose(f) != 0) ok = 0;
+    if (!ok)
+      st = VSPH_EIO,
+      vsph_status_report(st, __FILE__, __LINE__, "cannot write %s", bp->csv);
+  }
   if (!st) print_load(out);
+  free(rw);
   return st;
 }

@@ -14,10 +14,15 @@
 
 /** What to time. */
 struct vsph_bench_props {
-  size_t size;     /*!< particles across the operator benchmark's square */
-  int solver_only; /*!< 1: only the solver tables */
-  int busy;        /*!< other busy processes to start beside the solver
-                        table (0-8), to measure it under load */
+  size_t size;      /*!< particles across the operator benchmark's square */
+  int solver_only;  /*!< 1: only the solver tables */
+  int busy;         /*!< other busy processes to start beside the solver
+                         table (0-8), to measure it under load */
+  size_t processes; /*!< processes measuring the solver table, one after
+                         another (1-20): its best and median over them */
+  int raw;          /*!< 1: only the solver rows as CSV (a child of
+                         processes > 1) */
+  const char *csv;  /*!< if not NULL: the solver table as CSV here too */
 };
 
 /** @brief Run the benchmarks and print their tables to @p out.
