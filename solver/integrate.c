@@ -307,8 +307,13 @@ static int rhs(struct vsph_integrate *s, int parts, size_t *nint,
     }
   }
   if (st) return st;
+  /* the budget's evaluation (parts: the viscous force and delta-SPH's
+   * rate apart) by the gather, whose sums need no buffers: by the sweep
+   * it would hold 2 d + 2 fields a particle, twice a step's, and set the
+   * run's peak memory; it changes no state, and its budget's sums differ
+   * from the sweep's in their order only */
   struct vsph_equations_out out = {
-      .drho = p->drho, .de = p->de, .sweep = s->sweep};
+      .drho = p->drho, .de = p->de, .sweep = parts ? NULL : s->sweep};
   for (int k = 0; k < p->dim; k++) {
     out.acc[k] = p->acc[k];
     if (parts) out.acc_visc[k] = s->extra[k];

@@ -14,6 +14,7 @@
 #include "../common/consts.h"
 #include "../common/params.h"
 #include "../kernels/kernel.h"
+#include "../solver/equations.h"
 #include "../solver/integrate.h"
 #include "../solver/particles.h"
 #include "../solver/run.h"
@@ -782,6 +783,55 @@ Suite *vsph_walls_suite(void) {
 
 /* solver/integrate.c: the leapfrog's order and viscous step, the fixed
  * step. */
+/* The budget's evaluation (an energy row: the viscous force and
+ * delta-SPH's rate apart) holds no sweep buffers of its own: a 2-D MGF
+ * run of the stretching square with delta-SPH (every field a row has),
+ * stepped, then a row: the sweep's bytes are a step's, not the
+ * 2 d + 2 fields a particle a row would have grown them to (it set a
+ * run's peak memory); and the row's rates are a step's (its acceleration
+ * by the gather equals the sweep's to 1e-12 of its largest, sums in
+ * another order). */
+START_TEST(test_row_memory) {
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_stretching_square_type, NULL), 0);
+  struct vsph_particles *fluid = NULL;
+  ck_assert_int_eq(sc.type->init(&sc, 40, &fluid), 0);
+  struct vsph_integrate_props ip;
+  ck_assert_int_eq(
+      vsph_scene_integrate_props(&sc, VSPH_VISCOUS_MGF, &vsph_gaussian_type,
+                                 VSPH_CONSTS_HDX / 40.0, &ip),
+      0);
+  ip.eq.delta = 0.1;
+  struct vsph_integrate *s = vsph_integrate_alloc(&ip, fluid);
+  ck_assert_ptr_nonnull(s);
+  for (int k = 0; k < 2; k++)
+    ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  const size_t stepped = vsph_equations_sweep_bytes(s->sweep);
+  const size_t n = s->p->n;
+  double *a = malloc(n * sizeof *a);
+  ck_assert_ptr_nonnull(a);
+  struct vsph_equations_energy en;
+  struct vsph_equations_budget b;
+  ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &b), 0);
+  ck_assert_uint_eq(vsph_equations_sweep_bytes(s->sweep), stepped);
+  memcpy(a, s->p->acc[0], n * sizeof *a); /* the row's, by the gather */
+  struct vsph_equations_out out = {.drho = s->p->drho,
+                                   .acc = {s->p->acc[0], s->p->acc[1]},
+                                   .sweep = s->sweep};
+  ck_assert_int_eq(vsph_equations_rhs(&s->props.eq, s->p, s->n_fluid, s->cells,
+                                      s->vws, &out),
+                   0);
+  double big = 0.0, err = 0.0;
+  for (size_t i = 0; i < n; i++) {
+    big = fmax(big, fabs(a[i]));
+    err = fmax(err, fabs(a[i] - s->p->acc[0][i]));
+  }
+  ck_assert(big > 0.0 && err <= 1e-12 * big);
+  free(a);
+  vsph_integrate_free(s);
+}
+END_TEST
+
 Suite *vsph_integrate_suite(void) {
   Suite *s = suite_create("integrate");
   TCase *tc = tcase_create("steps");
@@ -789,6 +839,7 @@ Suite *vsph_integrate_suite(void) {
   tcase_add_loop_test(tc, test_leapfrog_order, 0, 2);
   tcase_add_test(tc, test_leapfrog_viscous_step);
   tcase_add_test(tc, test_fixed_step);
+  tcase_add_test(tc, test_row_memory);
   suite_add_tcase(s, tc);
   return s;
 }
