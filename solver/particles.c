@@ -158,20 +158,16 @@ void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
                             double *scratch, size_t *iscratch) {
   if (!p || !perm || !scratch || !iscratch) return;
   const size_t n = p->n;
+  /* every array the set has (a lean copy, the diagnostics', lacks some) */
   for (int k = 0; k < p->dim; k++) {
-    permute_field(p->pos[k], perm, n, scratch);
-    permute_field(p->vel[k], perm, n, scratch);
-    permute_field(p->acc[k], perm, n, scratch);
-    if (p->tvel[k]) permute_field(p->tvel[k], perm, n, scratch);
-    if (p->bacc[k]) permute_field(p->bacc[k], perm, n, scratch);
+    double *const v[5] = {p->pos[k], p->vel[k], p->acc[k], p->tvel[k],
+                          p->bacc[k]};
+    for (int f = 0; f < 5; f++)
+      if (v[f]) permute_field(v[f], perm, n, scratch);
   }
-  permute_field(p->m, perm, n, scratch);
-  permute_field(p->rho, perm, n, scratch);
-  permute_field(p->vol, perm, n, scratch);
-  permute_field(p->p, perm, n, scratch);
-  permute_field(p->drho, perm, n, scratch);
-  if (p->e) permute_field(p->e, perm, n, scratch);
-  if (p->de) permute_field(p->de, perm, n, scratch);
+  double *const sc[7] = {p->m, p->rho, p->vol, p->p, p->drho, p->e, p->de};
+  for (int f = 0; f < 7; f++)
+    if (sc[f]) permute_field(sc[f], perm, n, scratch);
   if (p->mat) { /* bytes, through the index scratch */
     for (size_t i = 0; i < n; i++) iscratch[i] = p->mat[perm[i]];
     for (size_t i = 0; i < n; i++) p->mat[i] = (unsigned char)iscratch[i];
