@@ -291,7 +291,7 @@ baseline: deps
 # Timings (never in the tests): quadrature, particle sums, operators.
 bench: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph
-	$(BUILD)/vsph bench
+	$(BUILD)/vsph bench --processes 5 --csv $(BUILD)/bench.csv
 
 # `vsph report --slurm` on a real Slurm: installs slurm-wlm and munge,
 # starts a one-node cluster on this machine (its own slurm.conf and munge

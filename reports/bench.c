@@ -188,20 +188,23 @@ static double timed(int reps, void (*fn)(void *), void *arg, double *median) {
   return t[0];
 }
 
-/* The peer's figures, measured side by side on this 2-core machine when
- * the speed work began (docs/speed.md): DualSPHysics v5.4 on the CPU (pair
- * physics in float, -O3 -ffast-math), 2-D, about 42k particles and 45
- * neighbours, 1 thread, quiet. Quoted, not measured here: they sit beside our
- * rows to compare. */
+/* The peer's figures, measured side by side on this 2-core machine:
+ * DualSPHysics v5.4 on the CPU (rebuilt from its sources; pair physics
+ * in float, -O3 -ffast-math), 2-D standing wave, about 42k particles and
+ * 45 neighbours, 1 thread, alternating runs at load 0.6-1.1 (issue 46's
+ * review, 2026-12: its force without delta-SPH, its whole solver, and
+ * its memory per added particle; the force with delta-SPH from the speed
+ * work's first sitting, docs/performance.md). Quoted, not measured here:
+ * they sit beside our rows to compare. */
 static void print_peer(FILE *out) {
   fprintf(out,
           "%-30s %7s %3s %8s %8s %13s %15s %10s %6s\n"
           "%-30s %7s %3s %8s %8s %13s %15s %10s %6s\n"
           "%-30s %7s %3s %8s %8s %13s %15s %10s %6s\n",
-          "peer: force, no delta", "42k", "1", "-", "-", "5.8e+07", "-", "-",
-          "-", "peer: force, delta", "42k", "1", "-", "-", "4.4-4.9e+07", "-",
-          "-", "-", "peer: whole solver (Sympl.)", "42k", "1", "-", "-", "-",
-          "1.40e+06", "348", "-");
+          "peer: force, no delta", "42k", "1", "-", "-", "5.5-6.0e+07", "-",
+          "-", "-", "peer: force, delta", "42k", "1", "-", "-", "4.4-4.9e+07",
+          "-", "-", "-", "peer: whole solver (Sympl.)", "42k", "1", "-", "-",
+          "-", "1.39e+06", "173", "-");
 }
 
 /* One measured row of the solver table. */
