@@ -5,6 +5,7 @@
 
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "../common/status.h"
@@ -34,7 +35,8 @@ int vsph_cmd_bench_main(int argc, char **argv) {
        "prints)"}};
   const struct vsph_args_cmd c = {
       CMD,
-      "[--size N] [--solver-only] [--busy K] [--processes P] [--csv FILE]",
+      "[--size N] [--solver-only] [--busy K] [--processes P] [--csv FILE] "
+      "[--raw]",
       "Times (1) F, G, N, M by quadrature at one depth for every kernel in\n"
       "2-D and 3-D; (2) the particle sums against the number of particles;\n"
       "(3) each viscous operator on an N x N square at h/dx = 4/3 with the\n"
@@ -67,11 +69,22 @@ int vsph_cmd_bench_main(int argc, char **argv) {
     return vsph_args_fail(CMD, "--processes must be 1-20, got %zu",
                           bp.processes);
   if (csv && !csv[0]) return vsph_args_fail(CMD, "--csv wants a file name");
+  if (bp.raw && (bp.processes > 1 || csv))
+    return vsph_args_fail(CMD,
+                          "--raw is one process's rows on stdout: not with "
+                          "--processes or --csv");
   if (csv) { /* refused before anything is measured, nothing made */
     char dir[4096];
+    struct stat sb;
+    if (strlen(csv) >= sizeof dir)
+      return vsph_args_fail(CMD, "--csv: a path of %zu characters is too long",
+                            strlen(csv));
     snprintf(dir, sizeof dir, "%s", csv);
     char *slash = strrchr(dir, '/');
     if (slash) *(slash == dir ? slash + 1 : slash) = '\0';
+    if (csv[strlen(csv) - 1] == '/' ||
+        (stat(csv, &sb) == 0 && !S_ISREG(sb.st_mode)))
+      return vsph_args_fail(CMD, "--csv %s is not a file", csv);
     if (access(slash ? dir : ".", W_OK | X_OK) != 0 ||
         (access(csv, F_OK) == 0 && access(csv, W_OK) != 0))
       return vsph_args_fail(CMD, "--csv %s is not writable", csv);

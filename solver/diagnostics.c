@@ -168,7 +168,8 @@ int vsph_diagnostics_probe(const struct vsph_particles *p, size_t n,
     sr += w * p->rho[i];
   }
   const double inv = s > 0.0 ? 1.0 / s : (double)NAN;
-  for (int a = 0; a < 3; a++) out->u[a] = a < dim ? su[a] * inv : 0.0;
+  for (int a = 0; a < 3; a++) /* beyond dim 0, or NaN as the rest */
+    out->u[a] = a < dim ? su[a] * inv : 0.0 * inv;
   out->p = sp * inv;
   out->rho = sr * inv;
   out->fill = s;

@@ -52,7 +52,8 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
 
 /** A probe's reading at a point. */
 struct vsph_diagnostics_probe {
-  double u[3]; /*!< velocity (m/s); 2-D: u[2] = 0 */
+  double u[3]; /*!< velocity (m/s); 2-D: u[2] = 0 (NaN as the rest where
+                    no particle is within reach) */
   double p;    /*!< pressure (Pa) */
   double rho;  /*!< density */
   double fill; /*!< sum_j V_j W(x - x_j): near 1 inside the fluid, about

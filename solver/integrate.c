@@ -942,6 +942,7 @@ static void put_back(struct vsph_integrate *s, size_t n) {
   /* each array back into the first order, through scratch ks[0] (the
    * abandoned step's rates: cap doubles); an id the preparation dropped
    * (a ghost) keeps whatever its place holds */
+  for (size_t i = 0; i < s->n0; i++) s->where[s->order0[i]] = SIZE_MAX;
   for (size_t i = 0; i < n; i++) s->where[p->id[i]] = i;
   void **a[32];
   size_t sz[32];

@@ -281,6 +281,7 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
   if (rp->xsph > 0.0 && !rp->leapfrog)
     VSPH_FAIL(VSPH_EINVAL, "Solver:xsph needs Solver:integrator = leapfrog");
   if ((st = check_probes(rp, prm))) return st;
+  rp->probe_z_given = vsph_params_given(prm, "Solver:probe_z");
   if (rp->snapshots > rp->outputs)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:snapshots (%zu) must not exceed "
@@ -339,7 +340,7 @@ static int check_combination(const struct vsph_run_props *rp,
               "WCSPH; %s%s cannot start relaxed",
               sc->type->name,
               sc->type->rest_velocity ? " with this scheme or integrator" : "");
-  if (rp->probe_z != 0.0 && sc->dim < 3)
+  if (rp->probe_z_given && sc->dim < 3)
     VSPH_FAIL(VSPH_EINVAL, "Solver:probe_z applies to 3-D scenes, not %s",
               sc->type->name);
   if (rp->tvf && sc->walls.solid != VSPH_WALLS_ADAMI)

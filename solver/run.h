@@ -101,6 +101,7 @@ struct vsph_run_props {
   int scheme_kind;                      /*!< vsph_equations_scheme */
   int summation;                        /*!< 1: density = summation */
   int leapfrog;                         /*!< 1: integrator = leapfrog */
+  int probe_z_given;                    /*!< 1: Solver:probe_z was given */
   const struct vsph_kernel_type *ktype; /*!< the kernel called kernel */
 };
 

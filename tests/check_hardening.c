@@ -326,6 +326,8 @@ START_TEST(test_contact_inputs) {
        "Solver:probe_y1 has no effect with one probe"},
       {"run poiseuille --probe-points 2 --probe-z 0.1",
        "Solver:probe_z applies to 3-D"},
+      {"run poiseuille --probe-points 2 --probe-z 0",
+       "Solver:probe_z applies to 3-D"},
       {"run poiseuille --probe-points 101", "Solver:probe_points"},
       {"run shear --scheme contact --set Scene:U0=nan", "Scene:U0"},
       {"contact --profiles 0", "--profiles"},

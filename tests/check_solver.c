@@ -578,7 +578,8 @@ START_TEST(test_probe) {
   ck_assert_int_eq(
       vsph_diagnostics_probe(p, p->n, &vsph_gaussian_type, h, zero, out, &r),
       0);
-  ck_assert(isnan(r.u[0]) && isnan(r.p) && isnan(r.rho) && r.fill == 0.0);
+  ck_assert(isnan(r.u[0]) && isnan(r.u[2]) && isnan(r.p) && isnan(r.rho) &&
+            r.fill == 0.0);
   /* periodic along x: the edge x = 1/2 at the centre's y */
   const double per[3] = {1.0, 0.0, 0.0}, edge[3] = {0.5, c0, 0.0};
   ck_assert_int_eq(
