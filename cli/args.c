@@ -196,9 +196,15 @@ static int pass_over(const struct vsph_args_cmd *c, int argc, char **argv,
     } else if (pass == 1 && kind == VSPH_ARGS_SET) {
       const char *eq = strchr(v, '=');
       char k2[256];
-      if (!eq || (size_t)(eq - v) >= sizeof k2)
+      if (!eq)
         return vsph_args_fail(c->name,
-                              "--set wants Section:key=value, got '%s'", v);
+                              "--set wants Section:key=value, got '%.80s%s'", v,
+                              strlen(v) > 80 ? "..." : "");
+      if ((size_t)(eq - v) >= sizeof k2)
+        return vsph_args_fail(c->name,
+                              "--set: a key of %zu characters (at most %zu): "
+                              "'%.40s...'",
+                              (size_t)(eq - v), sizeof k2 - 1, v);
       memcpy(k2, v, (size_t)(eq - v));
       k2[eq - v] = '\0';
       if (vsph_params_set(prm, k2, eq + 1))

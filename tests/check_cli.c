@@ -300,6 +300,17 @@ START_TEST(test_params_file_messages) {
                   "'%s': exit %d, wanted '%s': %s", c[k].text, o->status,
                   c[k].want, o->err);
   }
+  /* and on the command line: a --set key of 307 characters says its
+   * length and the limit, not the whole of it */
+  char set[400];
+  memcpy(set, "run cavity --set Solver:", 24);
+  memset(set + 24, 'k', 300);
+  snprintf(set + 324, 40, "=1 --out %.20s", "/tmp/vsph_never_set");
+  struct vsph_test_outcome *o = vsph_test_cli(set);
+  ck_assert_msg(o->status == 2 &&
+                    strstr(o->err, "a key of 307 characters (at most 255)") &&
+                    strlen(o->err) < 200,
+                "said: %s", o->err);
   char r[2100];
   snprintf(r, sizeof r, "%s/r", dir);
   struct stat sb;
