@@ -184,6 +184,12 @@ static int pass_over(const struct vsph_args_cmd *c, int argc, char **argv,
     }
     if (!inl && i + 1 >= argc)
       return vsph_args_fail(c->name, "%s needs a value", a);
+    /* an option where the value should be ("--probe-x0 --probe-y0 -0.5"):
+     * the value is missing, not the next word unknown (a negative number
+     * has one dash) */
+    if (!inl && !strncmp(argv[i + 1], "--", 2) && argv[i + 1][2])
+      return vsph_args_fail(c->name, "%s needs a value (got the option %s)", a,
+                            argv[i + 1]);
     const char *v = inl ? inl : argv[++i];
     const int kind = sp ? (int)sp->kind : -1;
     /* no option of vsph means anything by an empty value: an empty --out

@@ -85,6 +85,9 @@ int vsph_cmd_bench_main(int argc, char **argv) {
     if (csv[strlen(csv) - 1] == '/' ||
         (stat(csv, &sb) == 0 && !S_ISREG(sb.st_mode)))
       return vsph_args_fail(CMD, "--csv %s is not a file", csv);
+    if (access(slash ? dir : ".", F_OK) != 0)
+      return vsph_args_fail(CMD, "--csv %s: its folder %s does not exist", csv,
+                            slash ? dir : ".");
     if (access(slash ? dir : ".", W_OK | X_OK) != 0 ||
         (access(csv, F_OK) == 0 && access(csv, W_OK) != 0))
       return vsph_args_fail(CMD, "--csv %s is not writable", csv);

@@ -242,9 +242,11 @@ static const char SOLVER_CSV[] =
     "what,particles,threads,best_ms,median_ms,inter_per_s_core,"
     "pevals_per_s_core,bytes_per_particle,load_1min\n";
 static void csv_row(FILE *out, const struct row *r) {
-  fprintf(out, "\"%s\",%zu,%d,%.6f,%.6f,%.6e,%.6e,%.1f,%.2f\n", r->what, r->n,
+  char b[32] = ""; /* empty where not measured (a spreadsheet's blank) */
+  if (r->bytes > 0) snprintf(b, sizeof b, "%.1f", r->bytes);
+  fprintf(out, "\"%s\",%zu,%d,%.6f,%.6f,%.6e,%.6e,%s,%.2f\n", r->what, r->n,
           r->thr, 1e3 * r->best, 1e3 * r->med, r->inter / (r->best * r->thr),
-          r->pevals / (r->best * r->thr), r->bytes, r->load);
+          r->pevals / (r->best * r->thr), b, r->load);
 }
 
 /* Peak resident memory of a whole `vsph run` of (scene, form) at res
@@ -520,7 +522,8 @@ static void print_solver(FILE *out, const struct rows *rw, int busy,
   print_peer(out);
   fprintf(out,
           "\n## strong scaling on this machine: the time on 1 thread over the "
-          "time on 2 (2.00 is perfect)\n%-30s %10s %10s\n",
+          "time on 2 (2.00 is perfect; from medians it can pass 2.00 where "
+          "a slow episode fell on the 1-thread rows)\n%-30s %10s %10s\n",
           "what", "from best", "from med");
   for (size_t k = 0; k + 1 < rw->n; k++) {
     const struct row *a = &rw->r[k], *b = &rw->r[k + 1];
@@ -581,10 +584,23 @@ static int child_rows(int busy, struct rows *rw) {
     const char *q = strchr(line + 1, '"');
     if (!q || (size_t)(q - line - 1) >= sizeof r.what) continue;
     memcpy(r.what, line + 1, (size_t)(q - line - 1));
-    if (sscanf(q + 1, ",%zu,%d,%lf,%lf,%lf,%lf,%lf,%lf", &r.n, &r.thr, &r.best,
-               &r.med, &ipc, &pepc, &r.bytes, &r.load) != 8 ||
-        r.thr < 1)
+    /* the fields after the name, an empty bytes field meaning none */
+    char *fld[8], *rest = (char *)q + 1;
+    int nf = 0;
+    for (char *t = rest; nf < 8 && (t = strchr(t, ','));) {
+      *t++ = '\0';
+      fld[nf++] = t;
+    }
+    if (nf != 8 || sscanf(fld[0], "%zu", &r.n) != 1 ||
+        sscanf(fld[1], "%d", &r.thr) != 1 || r.thr < 1)
       continue;
+    r.best = strtod(fld[2], NULL);
+    r.med = strtod(fld[3], NULL);
+    ipc = strtod(fld[4], NULL);
+    pepc = strtod(fld[5], NULL);
+    r.bytes = fld[6][0] ? strtod(fld[6], NULL) : 0.0;
+    r.load = strtod(fld[7], NULL);
+    if (!(r.best > 0.0 && r.med > 0.0)) continue;
     r.best *= 1e-3;
     r.med *= 1e-3;
     r.inter = ipc * r.best * r.thr;

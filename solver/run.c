@@ -161,6 +161,12 @@ static int check_probes(const struct vsph_run_props *rp,
                         const struct vsph_params *prm) {
   static const char *const KEYS[] = {"probe_x0", "probe_y0", "probe_x1",
                                      "probe_y1", "probe_z"};
+  if (rp->probe_points >= 2 && (!vsph_params_given(prm, "Solver:probe_x1") ||
+                                !vsph_params_given(prm, "Solver:probe_y1")))
+    VSPH_FAIL(VSPH_EINVAL,
+              "Solver:probe_points = %zu puts probes on a segment: give its "
+              "end, Solver:probe_x1 and probe_y1",
+              rp->probe_points);
   for (size_t k = 0; k < sizeof KEYS / sizeof KEYS[0]; k++) {
     char key[40];
     snprintf(key, sizeof key, "Solver:%s", KEYS[k]);
@@ -343,6 +349,22 @@ static int check_combination(const struct vsph_run_props *rp,
   if (rp->probe_z_given && sc->dim < 3)
     VSPH_FAIL(VSPH_EINVAL, "Solver:probe_z applies to 3-D scenes, not %s",
               sc->type->name);
+  if (rp->probe_points > 0) { /* the segment's ends within the scene's box */
+    const double ends[2][3] = {
+        {rp->probe_x0, rp->probe_y0, rp->probe_z},
+        {rp->probe_points > 1 ? rp->probe_x1 : rp->probe_x0,
+         rp->probe_points > 1 ? rp->probe_y1 : rp->probe_y0, rp->probe_z}};
+    static const char *const AX[2][3] = {{"probe_x0", "probe_y0", "probe_z"},
+                                         {"probe_x1", "probe_y1", "probe_z"}};
+    for (int e = 0; e < 2; e++)
+      for (int a = 0; a < sc->dim; a++)
+        if (!(ends[e][a] >= sc->box_lo[a] && ends[e][a] <= sc->box_hi[a]))
+          VSPH_FAIL(VSPH_EINVAL,
+                    "Solver:%s = %g lies outside %s's box, %g to %g along "
+                    "that axis",
+                    AX[e][a], ends[e][a], sc->type->name, sc->box_lo[a],
+                    sc->box_hi[a]);
+  }
   if (rp->tvf && sc->walls.solid != VSPH_WALLS_ADAMI)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:tvf = 1 needs a scene with Adami et al.'s wall "
