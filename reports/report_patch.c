@@ -173,6 +173,13 @@ int vsph_report_patch_write(struct vsph_report *R) {
       if (!st) st = vsph_plot_add(&pl, name[u], cols, lab, style);
     }
     vsph_text_set(&R->tv, "title", "%s", title);
+    /* a curve under another must be said (the rule for hidden curves) */
+    vsph_text_set(&R->tv, "coincide", "%s",
+                  u ? ""
+                    : " On the uniform lattice VISC-03 and VISC-04 are one "
+                      "operator (the renormalisation is isotropic there): "
+                      "their points coincide, and so do the paper's lines, "
+                      "VISC-03's under VISC-04's.");
     if (!st) st = vsph_report_doc_figure_say(R, &pl, "patch.caption");
   }
   if (st) return st;
