@@ -154,6 +154,29 @@ static void gather(double *out, const double *v, const size_t *order,
   for (size_t k = 0; k < n; k++) out[k] = v[order[k]];
 }
 
+/* The arrays every particle file opens with, described: the time, the
+ * points (in @p order) and one vertex cell per point; @p what gives the
+ * three descriptions. @p buf holds 3 n doubles. */
+static int add_geometry(struct out *o, const struct vsph_particles *p,
+                        const size_t *order, size_t n, double t, void *buf,
+                        const char *const what[3]) {
+  const int d = p->dim;
+  double *x = buf;
+  int64_t *iv = buf;
+  const size_t n8 = n * sizeof(double);
+  int st = add_array(o, FIELD, "TimeValue", "Float64", 1, 1, &t, sizeof t);
+  describe(o, "TimeValue", what[0], "s", d);
+  gather_vec(x, p->pos, d, order, n);
+  if (!st) st = add_array(o, POINTS, "Points", "Float64", 3, 0, x, 3 * n8);
+  describe(o, "Points", what[1], "m", d);
+  for (size_t k = 0; k < n; k++) iv[k] = (int64_t)k;
+  if (!st) st = add_array(o, VERTS, "connectivity", "Int64", 1, 0, iv, n8);
+  for (size_t k = 0; k < n; k++) iv[k] = (int64_t)k + 1;
+  if (!st) st = add_array(o, VERTS, "offsets", "Int64", 1, 0, iv, n8);
+  describe(o, "connectivity, offsets", what[2], "dimensionless", d);
+  return st;
+}
+
 /* The arrays of the snapshot into o, described. */
 static int build(struct out *o, const struct vsph_particles *p,
                  const size_t *order, size_t n, double t,
@@ -163,22 +186,12 @@ static int build(struct out *o, const struct vsph_particles *p,
   int64_t *iv = buf;
   unsigned char *u8 = buf;
   const size_t n8 = n * sizeof(double);
-  int st = add_array(o, FIELD, "TimeValue", "Float64", 1, 1, &t, sizeof t);
-  describe(o, "TimeValue",
-           "time of the snapshot, the exact double (snapshots.pvd and "
-           "energy.csv print it to 10 significant digits)",
-           "s", d);
-  gather_vec(x, p->pos, d, order, n);
-  if (!st) st = add_array(o, POINTS, "Points", "Float64", 3, 0, x, 3 * n8);
-  describe(o, "Points", "particle positions x, y, z (z = 0 in 2-D)", "m", d);
-  for (size_t k = 0; k < n; k++) iv[k] = (int64_t)k;
-  if (!st) st = add_array(o, VERTS, "connectivity", "Int64", 1, 0, iv, n8);
-  for (size_t k = 0; k < n; k++) iv[k] = (int64_t)k + 1;
-  if (!st) st = add_array(o, VERTS, "offsets", "Int64", 1, 0, iv, n8);
-  describe(o, "connectivity, offsets",
-           "one vertex cell per particle, so that every representation "
-           "shows it",
-           "dimensionless", d);
+  static const char *const geometry[3] = {
+      "time of the snapshot, the exact double (snapshots.pvd and energy.csv "
+      "print it to 10 significant digits)",
+      "particle positions x, y, z (z = 0 in 2-D)",
+      "one vertex cell per particle, so that every representation shows it"};
+  int st = add_geometry(o, p, order, n, t, buf, geometry);
   gather_vec(x, p->vel, d, order, n);
   if (!st)
     st = add_array(o, POINT_DATA, "velocity", "Float64", 3, 0, x, 3 * n8);
@@ -404,17 +417,10 @@ int vsph_vtk_write_walls(const char *dir, const char *name,
   double *x = buf;
   int64_t *iv = buf;
   unsigned char *u8 = buf;
-  int st = add_array(o, FIELD, "TimeValue", "Float64", 1, 1, &t, sizeof t);
-  describe(o, "TimeValue", "time of the snapshot, the exact double", "s", d);
-  gather_vec(x, p->pos, d, order, n);
-  if (!st) st = add_array(o, POINTS, "Points", "Float64", 3, 0, x, 3 * n8);
-  describe(o, "Points", "positions x, y, z (z = 0 in 2-D)", "m", d);
-  for (k = 0; k < n; k++) iv[k] = (int64_t)k;
-  if (!st) st = add_array(o, VERTS, "connectivity", "Int64", 1, 0, iv, n8);
-  for (k = 0; k < n; k++) iv[k] = (int64_t)k + 1;
-  if (!st) st = add_array(o, VERTS, "offsets", "Int64", 1, 0, iv, n8);
-  describe(o, "connectivity, offsets", "one vertex cell per particle",
-           "dimensionless", d);
+  static const char *const what[3] = {"time of the snapshot, the exact double",
+                                      "positions x, y, z (z = 0 in 2-D)",
+                                      "one vertex cell per particle"};
+  int st = add_geometry(o, p, order, n, t, buf, what);
   gather_vec(x, p->vel, d, order, n);
   if (!st)
     st = add_array(o, POINT_DATA, "velocity", "Float64", 3, 0, x, 3 * n8);
