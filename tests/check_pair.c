@@ -653,6 +653,24 @@ static void assert_loops_agree(const struct vsph_integrate *s,
   }
 }
 
+/* The specialised loop on 1 and 2 threads against the general loop
+ * (Solver's loop_general) on the same particles, held by
+ * assert_loops_agree under @p label; returns the buffer (18 n doubles:
+ * general, 1 thread, 2 threads; the caller frees it). */
+static double *loops_agree(struct vsph_integrate *s,
+                           const struct vsph_integrate_props *ip,
+                           const char *label) {
+  const size_t n = s->p->n;
+  double *buf = calloc(18 * n, sizeof *buf);
+  const struct vsph_equations_out s1 = sweep_rhs(s, NULL, 1, buf + 6 * n),
+                                  s2 = sweep_rhs(s, NULL, 2, buf + 12 * n);
+  s->props.eq.loop_general = 1;
+  const struct vsph_equations_out g = sweep_rhs(s, NULL, 1, buf);
+  s->props.eq.loop_general = 0;
+  assert_loops_agree(s, ip, buf, &g, &s1, &s2, label);
+  return buf;
+}
+
 /* Scene sc_i (ghost walls where it has walls), at 16 across (channels
  * 32), formulation form, delta-SPH 0.1, after three steps: the sweep on 1
  * and 2 threads gives the same bits; interactions and the closest pair
@@ -743,16 +761,10 @@ START_TEST(test_gather_shapes) {
   const char *name = cases[c].type->name;
   const char *form = vsph_viscous_name(cases[c].form);
   const size_t n = s->p->n;
-  double *buf = calloc(18 * n, sizeof *buf);
-  const struct vsph_equations_out s1 = sweep_rhs(s, NULL, 1, buf + 6 * n),
-                                  s2 = sweep_rhs(s, NULL, 2, buf + 12 * n);
-  s->props.eq.loop_general = 1;
-  const struct vsph_equations_out g = sweep_rhs(s, NULL, 1, buf);
-  s->props.eq.loop_general = 0;
   char label[96];
   snprintf(label, sizeof label, "%s %s, specialised against general", name,
            form);
-  assert_loops_agree(s, &ip, buf, &g, &s1, &s2, label);
+  double *buf = loops_agree(s, &ip, label);
   if (cases[c].tvf) { /* the Adami walls, general then inlined */
     struct vsph_particles *p = s->p;
     const size_t cols = 5;
@@ -803,16 +815,9 @@ START_TEST(test_contact_shapes) {
   s->props.eq.mat[0] = (struct vsph_equations_mat){
       .rho0 = ip.eq.rho0, .c0 = ip.eq.c0, .mu = _i ? 0.0 : ip.eq.visc.mu};
   ip.eq.visc.mu = s->props.eq.mat[0].mu; /* the scales */
-  const size_t n = s->p->n;
-  double *buf = calloc(18 * n, sizeof *buf);
-  const struct vsph_equations_out s1 = sweep_rhs(s, NULL, 1, buf + 6 * n),
-                                  s2 = sweep_rhs(s, NULL, 2, buf + 12 * n);
-  s->props.eq.loop_general = 1;
-  const struct vsph_equations_out g = sweep_rhs(s, NULL, 1, buf);
-  s->props.eq.loop_general = 0;
-  assert_loops_agree(s, &ip, buf, &g, &s1, &s2,
-                     _i ? "contact SPH, inviscid, Gaussian 2-D"
-                        : "contact SPH, viscous, Gaussian 2-D");
+  double *buf = loops_agree(s, &ip,
+                            _i ? "contact SPH, inviscid, Gaussian 2-D"
+                               : "contact SPH, viscous, Gaussian 2-D");
   free(buf);
   vsph_integrate_free(s);
 }
