@@ -92,8 +92,20 @@ int vsph_cmd_bench_main(int argc, char **argv) {
         (access(csv, F_OK) == 0 && access(csv, W_OK) != 0))
       return vsph_args_fail(CMD, "--csv %s is not writable", csv);
   }
+  /* opened once before anything is measured (for appending: a file of the
+   * user's is not cut yet): what access() cannot tell (a /proc path, a
+   * full or read-only file system) is refused now, not after minutes;
+   * a file made here and left unwritten is removed */
+  int made = 0;
+  if (csv) {
+    made = access(csv, F_OK) != 0;
+    FILE *f = fopen(csv, "a");
+    if (!f || fclose(f) != 0)
+      return vsph_args_fail(CMD, "--csv %s cannot be written", csv);
+  }
   bp.csv = csv;
   bp.busy = (int)busy;
   const int st = vsph_bench_run(&bp, stdout);
+  if (st && made) remove(csv);
   return st ? vsph_args_status(CMD, st) : vsph_args_finish(CMD, 0);
 }

@@ -101,6 +101,7 @@ static const char *const bad_inputs[] = {
     "bench --csv ''",
     "bench --csv /tmp",
     "bench --csv /tmp/",
+    "bench --csv /proc/vsph_never.csv",
     "bench --raw --processes 2",
     "bench --raw --csv /tmp/vsph_never.csv",
     "frobnicate",
