@@ -368,7 +368,7 @@ static int write_snapshot(struct outputs *o, const struct vsph_run *run,
  * Written to a temporary, synced and renamed: a checkpoint is whole or
  * absent. */
 static const char CKPT_MAGIC[16] = "vsph checkpoint";
-enum { CKPT_VERSION = 4 };
+enum { CKPT_VERSION = 5 };
 
 /* the files a checkpoint saw, but itself and run.json (absent while a run
  * goes on) */

@@ -1,21 +1,26 @@
 # Copyright (C) 2026 the vsph developers.
 # SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE).
-# scripts/paraview-check.py RUNDIR [DIM]: run by scripts/paraview-check
+# scripts/paraview-check.py RUNDIR [DIM [REFDIR]]: run by scripts/paraview-check
 # under `xvfb-run -a pvpython`. Opens RUNDIR/snapshots.pvd with ParaView's
 # own reader, as the GUI does, and checks what a user of ParaView sees:
-#   - the time values: the ones ParaView reports are the pvd's, each the t
-#     of a row of RUNDIR/energy.csv (the same double), the first row and the
-#     last among them, increasing, one per snap_*.vtp in the folder; each
-#     file's TimeValue within 5e-10 relative of it (the pvd and energy.csv
-#     print 10 significant digits, the file keeps the double);
+#   - the time values: the ones ParaView reports are the pvd's, at round
+#     values k t_end / (snapshots) exactly as text (0.2, 0.4, ...), the
+#     first and last the t of energy.csv's first and last rows, one per
+#     snap_*.vtp in the folder; each file's TimeValue within 5e-10
+#     relative of it (the pvd prints 10 significant digits, the file
+#     keeps the double);
 #   - the point arrays, their names and components (2-D: the vorticity is
 #     the scalar vorticity_z, 3-D: the 3-vector vorticity), one vertex per
 #     point, no NaN in any array, z components 0 in 2-D, id 0..n-1;
 #   - array_descriptions in the FieldData names every array;
 #   - free_surface is div_r below the threshold its description gives;
 #   - the kinetic energy sum(rho V |u|^2 / 2) (per unit depth in 2-D) against
-#     energy.csv's Ek at the same time, within 1e-10 relative (energy.csv
-#     prints 13 significant digits; rho V = m to rounding);
+#     energy.csv's Ek where a row has the snapshot's time (the first and
+#     the last), within 1e-10 relative (energy.csv prints 13 significant
+#     digits; rho V = m to rounding); between rows, against REFDIR's last
+#     row where REFDIR (the third argument) is a run that ends at the
+#     snapshot's time, to the same 1e-10, and otherwise no further from
+#     the two rows around it than their own difference;
 #   - a single .vtp opened alone takes its time from TimeValue.
 # Prints what it checked; exits 1 on the first failure.
 import csv
@@ -31,6 +36,7 @@ from paraview.simple import OpenDataFile, XMLPolyDataReader
 
 run = sys.argv[1]
 dim = int(sys.argv[2]) if len(sys.argv) > 2 else 2
+refdir = sys.argv[3] if len(sys.argv) > 3 else None
 
 
 def fail(msg):
@@ -50,6 +56,10 @@ with open(os.path.join(run, "energy.csv")) as f:
     rows = list(csv.DictReader(f))
 t_rows = [float(r["t"]) for r in rows]
 ek_rows = {float(r["t"]): float(r["Ek"]) for r in rows}
+if refdir:  # a run that ends at one of the snapshots' times
+    with open(os.path.join(refdir, "energy.csv")) as f:
+        last = list(csv.DictReader(f))[-1]
+    ek_rows[float(last["t"])] = float(last["Ek"])
 
 # the pvd as written, and as ParaView reads it
 pvd = os.path.join(run, "snapshots.pvd")
@@ -75,18 +85,21 @@ if times != [t for t, _ in entries]:
     fail("ParaView's times %s are not the pvd's %s" % (times, entries))
 if [f for _, f in entries] != files:
     fail("the pvd lists %s, the folder holds %s" % (entries, files))
-for t in times:
-    if t not in t_rows:
-        fail("snapshot time %.17g is no row of energy.csv" % t)
+m = len(times) - 1
+round_times = [float("%.10g" % (t_rows[-1] * k / m)) for k in range(m + 1)]
+if m < 2 or times != round_times:
+    fail("snapshot times %s are not %s" % (times, round_times))
 if times[0] != t_rows[0] or times[-1] != t_rows[-1]:
     fail("the first and last snapshots are not energy.csv's first and last "
          "rows (%r, %r against %r, %r)" % (times[0], times[-1], t_rows[0],
                                            t_rows[-1]))
 if any(b <= a for a, b in zip(times, times[1:])):
     fail("times not increasing: %s" % times)
-say("%d snapshots at t = %s: ParaView's times are the pvd's and each equals "
-    "the t of a row of energy.csv (%d rows, first and last included)"
+say("%d snapshots at t = %s: ParaView's times are the pvd's, round values, "
+    "the first and last energy.csv's (%d rows)"
     % (len(times), ", ".join("%.10g" % t for t in times), len(t_rows)))
+if refdir and not any(t in ek_rows and t not in t_rows for t in times):
+    fail("%s ends at no snapshot's time" % refdir)
 
 want = {"velocity": 3, "density": 1, "pressure": 1, "volume": 1,
         "mass": 1, "smoothing_length": 1, "div_r": 1, "free_surface": 1,
@@ -172,15 +185,26 @@ for t in times:
     ek = sum(0.5 * rho.GetValue(i) * vol.GetValue(i) *
              sum(vel.GetComponent(i, c) ** 2 for c in range(3))
              for i in range(n))
-    if abs(ek - ek_rows[t]) > 1e-10 * abs(ek_rows[t]):
-        fail("t = %g: kinetic energy %.13e from the arrays, %.13e in "
-             "energy.csv" % (t, ek, ek_rows[t]))
+    if t in ek_rows:  # a row's time, here or in REFDIR
+        ek_ref, said = ek_rows[t], "energy.csv" if t in t_rows else refdir
+        if abs(ek - ek_ref) > 1e-10 * abs(ek_ref):
+            fail("t = %g: kinetic energy %.13e from the arrays, %.13e in "
+                 "%s" % (t, ek, ek_ref, said))
+    else:  # between two rows: within their own difference of both
+        b = max(k for k in t_rows if k < t)
+        a = min(k for k in t_rows if k > t)
+        lo, hi = sorted((ek_rows[b], ek_rows[a]))
+        if not lo - (hi - lo) <= ek <= hi + (hi - lo):
+            fail("t = %g: kinetic energy %.13e from the arrays, rows around "
+                 "it %.13e, %.13e" % (t, ek, ek_rows[b], ek_rows[a]))
+        said = "rows at %.6g and %.6g: %.12e and" % (b, a, ek_rows[b])
+        ek_ref = ek_rows[a]
     w = arrays["vorticity_z" if dim == 2 else "vorticity"]
     lo, hi = w.GetRange(-1 if dim == 3 else 0)
     signed |= dim == 2 and lo < 0 < hi
-    say("t = %-12.10g %d points, TimeValue %.17g, Ek %.12e (energy.csv "
-        "%.12e), %s %.4g .. %.4g, %d on the free surface"
-        % (t, n, tv, ek, ek_rows[t], "vorticity_z" if dim == 2 else
+    say("t = %-12.10g %d points, TimeValue %.17g, Ek %.12e (%s %.12e), "
+        "%s %.4g .. %.4g, %d on the free surface"
+        % (t, n, tv, ek, said, ek_ref, "vorticity_z" if dim == 2 else
            "|vorticity|", lo, hi,
            sum(int(surf.GetValue(i)) for i in range(n))))
 if dim == 2 and not signed:
@@ -190,7 +214,8 @@ if wall_entries:
         "1 (wall particle) or 2 (image)" % nwalls)
 say("every snapshot: one vertex per point, no NaN, %sid 0..n-1, every "
     "array described (array_descriptions), free_surface = div_r < %g, Ek "
-    "from the arrays = energy.csv's within 1e-10"
+    "from the arrays = energy.csv's within 1e-10 at its rows' times (and "
+    "the run that ends at a snapshot's), between the rows around it elsewhere"
     % ("z components 0, " if dim == 2 else "", thr))
 
 # one file alone: ParaView takes its time from the FieldData TimeValue

@@ -850,8 +850,11 @@ size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf) {
   return c.at;
 }
 
-int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
-                          size_t len, size_t *used) {
+/* vsph_integrate_unpack, and with @p exact 0 vsph_integrate_restore: a
+ * capacity grown since the packing is kept (a set cannot shrink in place;
+ * the capacity decides no value, only when the set grows next) */
+static int unpack(struct vsph_integrate *s, const unsigned char *buf,
+                  size_t len, size_t *used, int exact) {
   struct cursor c = {.in = buf, .len = len};
   struct vsph_particles *p = s->p;
   uint64_t head[6], have;
@@ -876,7 +879,7 @@ int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
       VSPH_FAIL(VSPH_EINVAL, "the saved state's fields are not this run's");
   /* the very capacity the run had: the buffers as they were */
   int st = vsph_particles_reserve(p, (size_t)head[2]);
-  if (!st && p->cap != (size_t)head[2])
+  if (!st && (exact ? p->cap != (size_t)head[2] : p->cap < (size_t)head[2]))
     VSPH_FAIL(VSPH_EINVAL, "the saved capacity %llu cannot be restored",
               (unsigned long long)head[2]);
   if (!st) st = buffers_alloc(s);
@@ -906,6 +909,20 @@ int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
   s->reason[sizeof s->reason - 1] = '\0';
   *used = c.at;
   return VSPH_OK;
+}
+
+int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
+                          size_t len, size_t *used) {
+  return unpack(s, buf, len, used, 1);
+}
+
+int vsph_integrate_restore(struct vsph_integrate *s, const unsigned char *buf,
+                           size_t len) {
+  size_t used = 0;
+  const int st = unpack(s, buf, len, &used, 0);
+  if (!st && used != len)
+    VSPH_FAIL(VSPH_EINVAL, "the kept state has %zu bytes too many", len - used);
+  return st;
 }
 
 /* The ids in the order the step finds them (s->order0, s->n0): what

@@ -131,6 +131,12 @@ size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf);
 int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
                           size_t len, size_t *used);
 
+/** @brief Put back a state this integrator packed itself (vsph_run's
+ *  snapshot between two steps): vsph_integrate_unpack, but a capacity
+ *  grown since is kept. @return as vsph_integrate_unpack. */
+int vsph_integrate_restore(struct vsph_integrate *s, const unsigned char *buf,
+                           size_t len);
+
 /** @brief Bytes allocated for particles, neighbour structures and
  *  integrator storage. */
 size_t vsph_integrate_bytes(const struct vsph_integrate *s);

@@ -616,16 +616,85 @@ fail:
 void vsph_run_free(struct vsph_run *r) {
   if (!r) return;
   vsph_integrate_free(r->integ);
+  free(r->side);
   free(r);
+}
+
+/* The state at the snapshot time r->side_t, strictly within the coming
+ * step: the current state packed into r->side, then a step of its own to
+ * that time (the time set to it exactly, the step count left as it was:
+ * the run's steps are those of its path). Interruptible 0: a stop is not
+ * seen within it (the restore of a checkpoint taken there). VSPH_OK; or
+ * the state put back as it was and 1 where it went unstable (the snapshot
+ * then waits for the step's end, as any other output), VSPH_EINTR where
+ * it was stopped, or an internal failure. */
+static int side_step(struct vsph_run *r, int interruptible) {
+  struct vsph_integrate *s = r->integ;
+  const size_t len = vsph_integrate_pack(s, NULL), steps = s->steps;
+  unsigned char *buf = malloc(len);
+  if (!buf) VSPH_FAIL(VSPH_ENOMEM, "cannot keep the state for a snapshot");
+  vsph_integrate_pack(s, buf);
+  const volatile sig_atomic_t *stop = s->stop;
+  if (!interruptible) s->stop = NULL;
+  int st = vsph_integrate_step(s, r->side_t - s->t);
+  s->stop = stop;
+  if (!st && !vsph_integrate_check(s)) {
+    s->t = r->side_t;
+    s->steps = steps;
+    r->side = buf;
+    r->side_len = len;
+    /* the pressures, ghosts and wall particles of this state, as an
+     * energy row leaves them at a step's end (a step leaves its last
+     * stage's) */
+    struct vsph_equations_energy en;
+    struct vsph_equations_budget b;
+    return vsph_integrate_diagnostics(s, &en, &b);
+  }
+  const int back = vsph_integrate_restore(s, buf, len);
+  free(buf);
+  return back ? back : st ? st : 1;
+}
+
+/* Back from a snapshot's own time to the state it was reached from. */
+static int side_back(struct vsph_run *r) {
+  const int st = vsph_integrate_restore(r->integ, r->side, r->side_len);
+  free(r->side);
+  r->side = NULL;
+  r->side_len = 0;
+  return st;
 }
 
 int vsph_run_iterate(struct vsph_run *r) {
   if (!r) VSPH_FAIL(VSPH_EINVAL, "vsph_run_iterate: a NULL argument");
   r->due = 0;
+  if (r->side) {
+    const int back = side_back(r);
+    if (back) return back;
+  }
   if (r->state != VSPH_RUN_RUNNING) return VSPH_OK;
   struct vsph_integrate *s = r->integ;
   double dt = vsph_integrate_dt(s);
   if (s->t + dt > r->t_end) dt = r->t_end - s->t;
+  /* a snapshot strictly within this step (beyond the schedule's 1e-12
+   * at its end): first the state at its own time */
+  if (r->props.snapshots > 0 && s->t + dt > r->next_snap * (1.0 + 1e-12)) {
+    /* t_end k / snapshots to 15 significant digits, the double nearest
+     * the round value (the schedule's sum of k intervals, or the product,
+     * may lie an ulp or two off it: 0.1 x 3 / 4 = 0.07500000000000001) */
+    char round[32];
+    snprintf(round, sizeof round, "%.15g",
+             r->t_end * nearbyint(r->next_snap / r->snap_dt) /
+                 (double)r->props.snapshots);
+    r->side_t = strtod(round, NULL);
+    const int side = side_step(r, 1);
+    if (side == VSPH_OK) {
+      r->due = VSPH_RUN_SNAPSHOT;
+      while (r->next_snap <= r->side_t * (1.0 + 1e-12))
+        r->next_snap += r->snap_dt;
+      return VSPH_OK;
+    }
+    if (side != 1) return side;
+  }
   const int st = vsph_integrate_step(s, dt);
   if (st == VSPH_EINTR) return st; /* put back as the step found it */
   r->pairs += (double)s->interactions;
@@ -677,6 +746,8 @@ struct run_state {
   double t_unstable, pairs, out_dt, snap_dt, next_out, next_snap, t_end;
   int32_t due, state;
   char reason[160];
+  double side_t;       /* with side 1: packed at a snapshot's own time, the */
+  int32_t side, spare; /* integrator's state that of the step's start */
 };
 
 size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf) {
@@ -693,7 +764,13 @@ size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf) {
   rs.due = (int32_t)r->due;
   rs.state = r->state;
   memcpy(rs.reason, r->reason, sizeof rs.reason);
+  rs.side = r->side != NULL;
+  rs.side_t = r->side_t;
   if (buf) memcpy(buf, &rs, sizeof rs);
+  if (r->side) { /* the state the snapshot's is made again from */
+    if (buf) memcpy(buf + sizeof rs, r->side, r->side_len);
+    return sizeof rs + r->side_len;
+  }
   return sizeof rs +
          vsph_integrate_pack(r->integ, buf ? buf + sizeof rs : NULL);
 }
@@ -708,7 +785,8 @@ int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len) {
       memcmp(&rs.t_end, &r->t_end, sizeof rs.t_end) ||
       (rs.state != VSPH_RUN_RUNNING && rs.state != VSPH_RUN_DONE &&
        rs.state != VSPH_RUN_UNSTABLE) ||
-      (rs.due & ~(int32_t)(VSPH_RUN_ROW | VSPH_RUN_SNAPSHOT)))
+      (rs.due & ~(int32_t)(VSPH_RUN_ROW | VSPH_RUN_SNAPSHOT)) ||
+      (rs.side != 0 && rs.side != 1))
     VSPH_FAIL(VSPH_EINVAL, "the saved state is not this run's");
   size_t used = 0;
   const int st =
@@ -726,5 +804,16 @@ int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len) {
   r->state = rs.state;
   memcpy(r->reason, rs.reason, sizeof rs.reason);
   r->reason[sizeof r->reason - 1] = '\0';
+  free(r->side);
+  r->side = NULL;
+  r->side_len = 0;
+  r->side_t = rs.side_t;
+  /* packed at a snapshot's own time: that state made again, to the bit,
+   * from the step's start, whatever a stop asks meanwhile */
+  if (rs.side && side_step(r, 0) != VSPH_OK)
+    VSPH_FAIL(VSPH_EINVAL,
+              "the saved state's snapshot at t = %.10g s cannot "
+              "be made again",
+              rs.side_t);
   return VSPH_OK;
 }

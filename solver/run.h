@@ -119,6 +119,11 @@ struct vsph_run {
   double pairs;                 /*!< interactions gathered so far */
   /* private: the output schedule */
   double out_dt, snap_dt, next_out, next_snap;
+  /* private: at a snapshot's own time within a step (vsph_run_iterate),
+   * the state it was reached from, packed, and that time */
+  unsigned char *side;
+  size_t side_len;
+  double side_t;
 };
 
 /** One energy row: energies, momenta and the budget of the current
@@ -175,7 +180,12 @@ VSPH_API void vsph_run_free(struct vsph_run *r);
 
 /** @brief One step (dt of THEORY 5, cut to land on t_end), then the
  *  stability checks; updates state and due. A run stopped as unstable is
- *  not an error.
+ *  not an error. Snapshots fall at multiples of t_end / snapshots: where
+ *  one falls strictly within the coming step, this call instead takes a
+ *  step of its own from the current state to that time and stops there
+ *  with VSPH_RUN_SNAPSHOT due; the next call puts the state back as it
+ *  was and takes the step itself, so the run's path (its energy rows,
+ *  its end) is bitwise that of a run without snapshots.
  *  @return VSPH_OK; VSPH_EINTR when r->integ->stop asked for a stop
  *  within the step (the run is then as before the call); or an internal
  *  failure (VSPH_ENOMEM, ...). */
@@ -208,7 +218,8 @@ VSPH_API double vsph_run_time(const struct vsph_run *r);
 /** @brief Steps taken. */
 VSPH_API size_t vsph_run_steps(const struct vsph_run *r);
 
-/** @brief Bytes allocated for particles, neighbours and the integrator. */
+/** @brief Bytes allocated for particles, neighbours and the integrator
+ *  (not the transient copy a snapshot within a step keeps). */
 VSPH_API size_t vsph_run_bytes(const struct vsph_run *r);
 
 /** @brief PVWF particles whose L fell back to the identity in the last

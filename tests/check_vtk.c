@@ -7,8 +7,9 @@
  * (the header's tags one by one, each array inflated block by block), so
  * that a file both readers agree on is not merely self-consistent; the
  * 2-D vorticity is the scalar omega_z; every array is described; a run's
- * snapshots.pvd gives energy.csv's times. `make paraview-check` opens the
- * same files in ParaView itself. */
+ * snapshots fall at round times, each the state a run ending there
+ * reaches. `make paraview-check` opens the same files in ParaView
+ * itself. */
 #include <float.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -808,20 +809,40 @@ START_TEST(test_read_errors) {
 }
 END_TEST
 
-/* A run's snapshots.pvd against its energy.csv: each snapshot's time is
- * the t of an energy row, the same text (both %.10g of one double), the
- * first row's and the last's among them; each file's TimeValue is that
- * time unrounded (%.10g is within 5e-10 relative of it); the files read
- * back with the run's particle count. */
+/* Two files' bytes the same (both must exist). */
+static int same_bytes(const char *a, const char *b) {
+  size_t la = 0, lb = 0;
+  char *x = vsph_files_slurp(a, &la), *y = vsph_files_slurp(b, &lb);
+  ck_assert_msg(x && y, "cannot read %s or %s", a, b);
+  const int same = la == lb && !memcmp(x, y, la);
+  free(x);
+  free(y);
+  return same;
+}
+
+/* A run's snapshots.pvd against its energy.csv: the snapshots fall at
+ * k t_end / 4 exactly (the text "0.025", the TimeValue the double nearest
+ * it), between the energy rows but for the first and the last, which are
+ * rows' times; the files read back with the run's particle count. The
+ * state at a snapshot's own time is the one a run ending there reaches
+ * with its last step cut to land on it (an independent run to 0.025 s
+ * with the same rows until then: byte for byte the same snapshot and
+ * walls), and the run's path is untouched by it (energy.csv byte for
+ * byte that of the run without snapshots). */
 START_TEST(test_run_times) {
-  char dir[] = "/tmp/vsph_pvdXXXXXX", args[700], path[700];
+  char dir[] = "/tmp/vsph_pvdXXXXXX", args[700], path[700], other[700];
   ck_assert_ptr_nonnull(mkdtemp(dir));
-  snprintf(args, sizeof args,
-           "run standing-wave --res 10 --t-end 0.1 --outputs 8 --snapshots 4 "
-           "--out %s/r --quiet",
-           dir);
-  struct vsph_test_outcome *o = vsph_test_cli(args);
-  ck_assert_msg(o->status == 0, "%s", o->err);
+  static const char *const RUNS[3][2] = {
+      {"r", "--t-end 0.1 --outputs 8 --snapshots 4"},
+      {"none", "--t-end 0.1 --outputs 8 --snapshots 0"},
+      {"short", "--t-end 0.025 --outputs 2 --snapshots 1"}};
+  for (int k = 0; k < 3; k++) {
+    snprintf(args, sizeof args,
+             "run standing-wave --res 10 %s --out %s/%s --quiet", RUNS[k][1],
+             dir, RUNS[k][0]);
+    struct vsph_test_outcome *o = vsph_test_cli(args);
+    ck_assert_msg(o->status == 0, "%s", o->err);
+  }
   static char csv[1 << 16], pvd[1 << 14];
   snprintf(path, sizeof path, "%s/r/energy.csv", dir);
   vsph_test_slurp(path, csv, sizeof csv);
@@ -835,10 +856,9 @@ START_TEST(test_run_times) {
     snprintf(rows[nrows++], sizeof rows[0], "%.*s", (int)w, l + 1);
   }
   ck_assert_uint_eq(nrows, 9); /* t = 0 and 8 outputs */
-  size_t nsnap = 0;
-  double last = -1.0;
+  static const char *const WANT[] = {"0", "0.025", "0.05", "0.075", "0.1"};
+  size_t nsnap = 0, nwalls = 0; /* part 1: the walls of the snapshot before */
   char last_ts[32] = "";
-  size_t nwalls = 0; /* part 1: the walls of the snapshot before it */
   for (const char *d = pvd; (d = strstr(d, "timestep=\"")) != NULL; nsnap++) {
     d += 10;
     char ts[32], file[64];
@@ -852,18 +872,18 @@ START_TEST(test_run_times) {
       nsnap--;
       continue;
     }
+    ck_assert_uint_lt(nsnap, 5);
+    ck_assert_str_eq(ts, WANT[nsnap]);
     size_t r = 0;
     while (r < nrows && strcmp(rows[r], ts)) r++;
-    ck_assert_msg(r < nrows, "snapshot time %s is no energy row", ts);
-    if (nsnap == 0) ck_assert_uint_eq(r, 0);
-    const double t = strtod(ts, NULL);
-    ck_assert_double_gt(t, last);
-    last = t;
+    /* the first and the last are rows' times, the others between rows */
+    ck_assert_msg((r < nrows) == (nsnap == 0 || nsnap == 4),
+                  "snapshot %zu at %s: a row's time %d", nsnap, ts, r < nrows);
     snprintf(last_ts, sizeof last_ts, "%s", ts);
     snprintf(path, sizeof path, "%s/r/%s", dir, file);
     struct vsph_vtk_snapshot s;
     ck_assert_int_eq(vsph_vtk_read(path, &s), 0);
-    ck_assert_double_le(fabs(s.t - t), 5e-10 * fabs(t));
+    ck_assert(s.t == strtod(ts, NULL)); /* the round value's double */
     ck_assert_uint_eq(s.vort_ncomp, 1);
     ck_assert_uint_gt(s.n, 50);
     vsph_vtk_snapshot_free(&s);
@@ -871,6 +891,15 @@ START_TEST(test_run_times) {
   ck_assert_uint_eq(nsnap, 5);                /* t = 0 and 4 snapshots */
   ck_assert_uint_eq(nwalls, 5);               /* the tank beside each */
   ck_assert_str_eq(last_ts, rows[nrows - 1]); /* the end is a snapshot */
+  static const char *const SAME[] = {"snap", "walls"};
+  for (int k = 0; k < 2; k++) {
+    snprintf(path, sizeof path, "%s/r/%s_0001.vtp", dir, SAME[k]);
+    snprintf(other, sizeof other, "%s/short/%s_0001.vtp", dir, SAME[k]);
+    ck_assert_msg(same_bytes(path, other), "%s differs from %s", path, other);
+  }
+  snprintf(path, sizeof path, "%s/r/energy.csv", dir);
+  snprintf(other, sizeof other, "%s/none/energy.csv", dir);
+  ck_assert_msg(same_bytes(path, other), "snapshots moved the run's path");
   snprintf(args, sizeof args, "rm -rf '%s'", dir);
   ck_assert_int_eq(system(args), 0);
 }
