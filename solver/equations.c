@@ -827,6 +827,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block(
                                 dim > 2 ? p->vel[2] : NULL};
   size_t total = 0;
   double ms2 = INFINITY;
+  const int fluid_only = p->n == n_fluid; /* no ghosts nor wall particles */
   for (size_t c = sw->c0[blk]; c < sw->c0[blk + 1]; c++) {
     struct vsph_pair_ranges rg;
     vsph_pair_ranges_cell(&rg, cells, c);
@@ -842,7 +843,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block(
       struct vsph_pair_iter it;
       struct vsph_pair_chunk b;
       vsph_pair_begin_upper(&it, &rc->pk, p, &rg, i);
-      while (vsph_pair_gather(&it, dim, kid, &b)) {
+      while (vsph_pair_gather_as(&it, dim, kid, 1, &b)) {
         const size_t m = b.m;
         /* i's unit shares; j's shares (V_i applied, signed for j) */
         double sf[3][VSPH_PAIR_CHUNK_MAX], sv[3][VSPH_PAIR_CHUNK_MAX],
@@ -851,9 +852,8 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block(
         /* the pairs' unit shares: a map, no sums, so that it vectorises */
 #pragma omp simd
         for (size_t k = 0; k < m; k++) {
-          struct vsph_pair pr;
-          vsph_pair_at(&b, k, dim, &pr);
-          pr.VF = pr.F; /* unit shares: V_i, V_j applied below */
+          struct vsph_pair pr;           /* VF = F: unit shares, V_i and V_j */
+          vsph_pair_at(&b, k, dim, &pr); /* applied below */
           const size_t j = pr.j;
           struct vsph_pair_vec du;
           double dux = 0.0;
@@ -893,13 +893,17 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block(
             v2 += vj[k] * sv[2][k];
           }
         }
+#pragma omp simd reduction(min : rs2)
         for (size_t k = 0; k < m; k++) rs2 = b.s2[k] < rs2 ? b.s2[k] : rs2;
         /* j's shares, in pair order (a ghost's are never read): the
          * force, continuity and (delta) the diffusion, or every field */
         sweep_add(buf, lo, nf, b.j, m, js,
                   parts ? SW_VISC(dim) + dim : SW_DELTA(dim) + delta);
-        size_t nfj = 0; /* fluid receivers j */
-        for (size_t k = 0; k < m; k++) nfj += id[b.j[k]] < n_fluid;
+        size_t nfj = m; /* fluid receivers j: all, in a set without ghosts */
+        if (!fluid_only) {
+          nfj = 0;
+          for (size_t k = 0; k < m; k++) nfj += id[b.j[k]] < n_fluid;
+        }
         if (nfj < m && !fi)
           for (size_t k = 0; k < m; k++)
             if (id[b.j[k]] < n_fluid) ms2 = b.s2[k] < ms2 ? b.s2[k] : ms2;
@@ -1132,14 +1136,13 @@ VSPH_CONSTS_SPECIALISE void grad_block(const struct vsph_pair_kernel *pk,
       struct vsph_pair_iter it;
       struct vsph_pair_chunk b;
       vsph_pair_begin_upper(&it, pk, p, &rg, i);
-      while (vsph_pair_gather(&it, dim, kid, &b)) {
+      while (vsph_pair_gather_as(&it, dim, kid, 1, &b)) {
         const size_t m = b.m;
         double u[18][VSPH_PAIR_CHUNK_MAX], vj[VSPH_PAIR_CHUNK_MAX];
 #pragma omp simd
         for (size_t k = 0; k < m; k++) {
-          struct vsph_pair pr;
-          vsph_pair_at(&b, k, dim, &pr);
-          pr.VF = pr.F; /* unit terms: V_i, V_j applied below */
+          struct vsph_pair pr;           /* VF = F: unit terms, V_i and V_j */
+          vsph_pair_at(&b, k, dim, &pr); /* applied below */
           struct vsph_pair_vec du;
           for (int a = 0; a < dim; a++) du.v[a] = vel[a][pr.j] - ui[a];
           const struct vsph_pair_grad gr = vsph_pair_pvwf_grad(&pr, dim, du);

@@ -152,17 +152,18 @@ static inline void vsph_pair_begin_upper(struct vsph_pair_iter *it,
 }
 
 /* F and VF of the chunk's m pairs from their q^2, for the kernel shape
- * kid (a constant where inlined from vsph_pair_fvf). */
+ * kid (a constant where inlined from vsph_pair_fvf); with @p unit, VF = F
+ * (the symmetric sweeps' unit shares: no gather of V_j). */
 VSPH_CONSTS_SPECIALISE void vsph_pair_fvf_shape(const struct vsph_pair_iter *it,
                                                 struct vsph_pair_chunk *b,
                                                 const double *q2, size_t m,
-                                                int kid) {
+                                                int kid, const int unit) {
   const double dwq = it->pk->dwq;
 #pragma omp simd
   for (size_t k = 0; k < m; k++) {
     const double F = dwq * vsph_kernel_dfq_shape(kid, q2[k]);
     b->F[k] = F;
-    b->VF[k] = it->vol[b->j[k]] * F;
+    b->VF[k] = unit ? F : it->vol[b->j[k]] * F;
   }
 }
 
@@ -171,28 +172,29 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_fvf_shape(const struct vsph_pair_iter *it,
  * the loop of its kernel, vectorised all the same. */
 VSPH_CONSTS_SPECIALISE void vsph_pair_fvf(const struct vsph_pair_iter *it,
                                           struct vsph_pair_chunk *b,
-                                          const double *q2, size_t m, int kid) {
+                                          const double *q2, size_t m, int kid,
+                                          const int unit) {
   switch (kid) {
     case VSPH_KERNEL_DFQ_GAUSSIAN:
-      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_GAUSSIAN);
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_GAUSSIAN, unit);
       break;
     case VSPH_KERNEL_DFQ_CUBIC:
-      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_CUBIC);
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_CUBIC, unit);
       break;
     case VSPH_KERNEL_DFQ_QUINTIC:
-      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_QUINTIC);
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_QUINTIC, unit);
       break;
     case VSPH_KERNEL_DFQ_C2:
-      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C2);
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C2, unit);
       break;
     case VSPH_KERNEL_DFQ_C2_1D:
-      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C2_1D);
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C2_1D, unit);
       break;
     case VSPH_KERNEL_DFQ_C4:
-      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C4);
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C4, unit);
       break;
     default:
-      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C4_1D);
+      vsph_pair_fvf_shape(it, b, q2, m, VSPH_KERNEL_DFQ_C4_1D, unit);
   }
 }
 
@@ -204,12 +206,14 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_fvf(const struct vsph_pair_iter *it,
  *  geometry (s2 computed exactly as in the test) and kernel factors.
  *  @param dim the loop's dimension (= pk->dim) and @p kid its kernel
  *  (= pk->dfq_id), passed by the caller so that a caller specialised on
- *  constants gets unrolled loops and the kernel inlined.
+ *  constants gets unrolled loops and the kernel inlined; @p unit 1 sets
+ *  VF = F (a symmetric sweep's unit shares), 0 VF = V_j F.
  *  @return the neighbours in the chunk (b->m); 0 when the ranges are
  *  exhausted. */
-VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather(struct vsph_pair_iter *it,
-                                               int dim, int kid,
-                                               struct vsph_pair_chunk *b) {
+VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather_as(struct vsph_pair_iter *it,
+                                                  int dim, int kid,
+                                                  const int unit,
+                                                  struct vsph_pair_chunk *b) {
   const double H2 = it->pk->H2;
   const size_t i = it->i;
   size_t m = 0;
@@ -249,9 +253,16 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather(struct vsph_pair_iter *it,
     b->s2[k] = s2;
     q2[k] = s2 * it->pk->h_inv2;
   }
-  vsph_pair_fvf(it, b, q2, m, kid);
+  vsph_pair_fvf(it, b, q2, m, kid, unit);
   b->m = m;
   return m;
+}
+
+/** @brief vsph_pair_gather_as with V_j F in VF: the gathers' chunk. */
+VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather(struct vsph_pair_iter *it,
+                                               int dim, int kid,
+                                               struct vsph_pair_chunk *b) {
+  return vsph_pair_gather_as(it, dim, kid, 0, b);
 }
 
 /** @brief Pair k of chunk @p b as a vsph_pair (for the term functions). */
