@@ -2,6 +2,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #include "run.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -298,7 +299,9 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
 
 /* Outputs due at the current state, advancing the schedule past it. A row
  * (not for a state stopped as unstable: it may hold non-finite values) and
- * a snapshot are due at each multiple of their interval and at the end. */
+ * a snapshot are due at the first step end at or past each multiple of
+ * their interval, and at the end; a snapshot is otherwise taken at its own
+ * time before the step that would pass it (vsph_run_iterate). */
 static unsigned schedule(struct vsph_run *r) {
   const double t = vsph_run_time(r);
   const int final = r->state == VSPH_RUN_DONE;
@@ -435,10 +438,23 @@ static int check_cost(const struct vsph_run_props *rp,
   const double ghosts =
       sc->walls.n * layers * 2.0 * pow(n, (sc->dim - 1.0) / sc->dim);
   /* the lattice the scene lays, which the integrator takes */
-  const double bytes = vsph_integrate_bytes_estimate(
-      sc->dim, n, ghosts,
-      rp->corr != VSPH_PAIR_CORR_NONE ? 2 : vsph_viscous_first_pass(rp->form),
-      (int)rp->tvf);
+  /* with snapshots, the state a snapshot within a step is reached from,
+   * packed while it is written (vsph_integrate_pack's arrays: positions,
+   * velocities, accelerations, m, rho, V, p, d rho/dt, id; the transport
+   * velocity's two vectors, the gas law's energy and its rate) */
+  const double side =
+      rp->snapshots > 0
+          ? (n + ghosts) * 8.0 *
+                (3.0 * sc->dim + 6.0 + (rp->tvf ? 2.0 * sc->dim : 0.0) +
+                 (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS ? 2.0 : 0.0))
+          : 0.0;
+  const double bytes =
+      vsph_integrate_bytes_estimate(sc->dim, n, ghosts,
+                                    rp->corr != VSPH_PAIR_CORR_NONE
+                                        ? 2
+                                        : vsph_viscous_first_pass(rp->form),
+                                    (int)rp->tvf) +
+      side;
   e->particles = n;
   e->bytes = bytes;
   const double gib = bytes / (1024.0 * 1024.0 * 1024.0);
@@ -620,39 +636,58 @@ void vsph_run_free(struct vsph_run *r) {
   free(r);
 }
 
-/* The state at the snapshot time r->side_t, strictly within the coming
- * step: the current state packed into r->side, then a step of its own to
- * that time (the time set to it exactly, the step count left as it was:
- * the run's steps are those of its path). Interruptible 0: a stop is not
- * seen within it (the restore of a checkpoint taken there). VSPH_OK; or
- * the state put back as it was and 1 where it went unstable (the snapshot
- * then waits for the step's end, as any other output), VSPH_EINTR where
- * it was stopped, or an internal failure. */
+/* The time of the snapshot nearest @p t: t_end k / snapshots, and where
+ * that is a round decimal to 15 significant digits within two rounding
+ * errors, the double nearest the decimal (0.1 x 3 / 4 = 0.07500000000000001
+ * becomes 0.075's double; 0.1 / 3 stays as it is). */
+static double snap_time(const struct vsph_run *r, double t) {
+  const double exact =
+      r->t_end * nearbyint(t / r->snap_dt) / (double)r->props.snapshots;
+  char txt[32];
+  snprintf(txt, sizeof txt, "%.15g", exact);
+  const double dec = strtod(txt, NULL);
+  return fabs(dec - exact) <= 2.0 * DBL_EPSILON * fabs(exact) ? dec : exact;
+}
+
+/* The state at the snapshot time r->side_t: the current state packed into
+ * r->side, then, where r->side_t lies beyond the current time (strictly
+ * within the coming step), a step of its own to it (the time set to it
+ * exactly, the step count left as it was: the run's steps are those of
+ * its path); then one evaluation, so that its pressures, ghosts and wall
+ * particles are this state's, as an energy row leaves them (a step leaves
+ * its last stage's). The next vsph_run_iterate puts the packed state back.
+ * Interruptible 0: a stop is not seen within the step (the restore of a
+ * checkpoint taken there). VSPH_OK; or the state put back as it was and 1
+ * where the step went unstable (the snapshot then waits for the step's
+ * end, as any other output), VSPH_EINTR where it was stopped, or an
+ * internal failure. */
 static int side_step(struct vsph_run *r, int interruptible) {
   struct vsph_integrate *s = r->integ;
   const size_t len = vsph_integrate_pack(s, NULL), steps = s->steps;
   unsigned char *buf = malloc(len);
   if (!buf) VSPH_FAIL(VSPH_ENOMEM, "cannot keep the state for a snapshot");
   vsph_integrate_pack(s, buf);
-  const volatile sig_atomic_t *stop = s->stop;
-  if (!interruptible) s->stop = NULL;
-  int st = vsph_integrate_step(s, r->side_t - s->t);
-  s->stop = stop;
-  if (!st && !vsph_integrate_check(s)) {
-    s->t = r->side_t;
-    s->steps = steps;
-    r->side = buf;
-    r->side_len = len;
-    /* the pressures, ghosts and wall particles of this state, as an
-     * energy row leaves them at a step's end (a step leaves its last
-     * stage's) */
-    struct vsph_equations_energy en;
-    struct vsph_equations_budget b;
-    return vsph_integrate_diagnostics(s, &en, &b);
+  if (r->side_t > s->t * (1.0 + 1e-12)) {
+    const volatile sig_atomic_t *stop = s->stop;
+    if (!interruptible) s->stop = NULL;
+    const int st = vsph_integrate_step(s, r->side_t - s->t);
+    s->stop = stop;
+    /* unstable, whether or not the step also failed, as the run's own
+     * step judges it (vsph_run_iterate) */
+    const int bad = st != VSPH_EINTR && vsph_integrate_check(s);
+    if (st || bad) {
+      const int back = vsph_integrate_restore(s, buf, len);
+      free(buf);
+      return back ? back : bad ? 1 : st;
+    }
   }
-  const int back = vsph_integrate_restore(s, buf, len);
-  free(buf);
-  return back ? back : st ? st : 1;
+  s->t = r->side_t;
+  s->steps = steps;
+  r->side = buf;
+  r->side_len = len;
+  struct vsph_equations_energy en;
+  struct vsph_equations_budget b;
+  return vsph_integrate_diagnostics(s, &en, &b);
 }
 
 /* Back from a snapshot's own time to the state it was reached from. */
@@ -678,14 +713,7 @@ int vsph_run_iterate(struct vsph_run *r) {
   /* a snapshot strictly within this step (beyond the schedule's 1e-12
    * at its end): first the state at its own time */
   if (r->props.snapshots > 0 && s->t + dt > r->next_snap * (1.0 + 1e-12)) {
-    /* t_end k / snapshots to 15 significant digits, the double nearest
-     * the round value (the schedule's sum of k intervals, or the product,
-     * may lie an ulp or two off it: 0.1 x 3 / 4 = 0.07500000000000001) */
-    char round[32];
-    snprintf(round, sizeof round, "%.15g",
-             r->t_end * nearbyint(r->next_snap / r->snap_dt) /
-                 (double)r->props.snapshots);
-    r->side_t = strtod(round, NULL);
+    r->side_t = snap_time(r, r->next_snap);
     const int side = side_step(r, 1);
     if (side == VSPH_OK) {
       r->due = VSPH_RUN_SNAPSHOT;
@@ -714,6 +742,14 @@ int vsph_run_iterate(struct vsph_run *r) {
     r->state = VSPH_RUN_DONE;
   }
   r->due = schedule(r);
+  /* a snapshot on this step's end, the run going on and no row here to
+   * evaluate the state: evaluated aside, at its round time, and put back
+   * (an evaluation between steps moves the path at rounding) */
+  if (r->due == VSPH_RUN_SNAPSHOT && r->state == VSPH_RUN_RUNNING) {
+    r->side_t = snap_time(r, s->t);
+    const int side = side_step(r, 1);
+    if (side) return side;
+  }
   return VSPH_OK;
 }
 
@@ -810,10 +846,10 @@ int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len) {
   r->side_t = rs.side_t;
   /* packed at a snapshot's own time: that state made again, to the bit,
    * from the step's start, whatever a stop asks meanwhile */
-  if (rs.side && side_step(r, 0) != VSPH_OK)
+  const int side = rs.side ? side_step(r, 0) : VSPH_OK;
+  if (side == 1) /* went unstable where it had not */
     VSPH_FAIL(VSPH_EINVAL,
-              "the saved state's snapshot at t = %.10g s cannot "
-              "be made again",
+              "the saved state's snapshot at t = %.10g s cannot be made again",
               rs.side_t);
-  return VSPH_OK;
+  return side;
 }

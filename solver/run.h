@@ -186,9 +186,13 @@ VSPH_API void vsph_run_free(struct vsph_run *r);
  *  with VSPH_RUN_SNAPSHOT due; the next call puts the state back as it
  *  was and takes the step itself, so the run's path (its energy rows,
  *  its end) is bitwise that of a run without snapshots.
+ *  A snapshot that falls on a step's end with no energy row there is
+ *  likewise shown aside (evaluated, at its round time) and put back.
  *  @return VSPH_OK; VSPH_EINTR when r->integ->stop asked for a stop
- *  within the step (the run is then as before the call); or an internal
- *  failure (VSPH_ENOMEM, ...). */
+ *  within the step (the run is then at the step's start: as before the
+ *  call, or, where the call began at a snapshot's own time, the state
+ *  that snapshot was reached from); or an internal failure (VSPH_ENOMEM,
+ *  ...). */
 VSPH_API int vsph_run_iterate(struct vsph_run *r);
 
 /** @brief The energy row of the current state (one extra right-hand side).
