@@ -720,6 +720,72 @@ START_TEST(test_sweep_gather_threads) {
 }
 END_TEST
 
+/* The 2-D candidate test by AVX-512 and by AVX2 (solver/pair_x86.c)
+ * against the portable loop on the same particles (a perturbed patch, 3h
+ * Gaussian and quintic supports, every particle as receiver, all
+ * neighbours and the upper half j > i): chunk by chunk the same
+ * neighbours in the same order, the same r_j - r_i, s^2, F and V_j F, to
+ * the bit (each computes x = r_j - r_i and s^2 = x0 x0 + x1 x1 with the
+ * same operations). A level the CPU lacks is said and left out. */
+START_TEST(test_candidates_simd) {
+  struct vsph_particles *p = random_set(2, 11 + (unsigned long)_i);
+  const struct vsph_kernel_type *k =
+      _i ? &vsph_quintic_type : &vsph_gaussian_type;
+  const double h = HDX * DX;
+  struct vsph_cells *cells = vsph_cells_alloc();
+  ck_assert_int_eq(vsph_cells_build(cells, p, k->kappa * h), 0);
+  struct vsph_pair_kernel pk[2];
+  vsph_pair_kernel_init(&pk[0], k, 2, h);
+  vsph_pair_kernel_init(&pk[1], k, 2, h);
+  const int most = pk[0].simd;
+  if (most < 2)
+    fprintf(stderr,
+            "test_candidates_simd: the CPU (or VSPH_PAIR_SIMD) "
+            "allows %s only\n",
+            most ? "AVX2" : "the portable loop");
+  pk[1].simd = 0;
+  static struct vsph_pair_chunk b[2];
+  for (int level = 1; level <= most; level++) {
+    pk[0].simd = level;
+    size_t pairs = 0;
+    for (size_t cell = 0; cell < cells->ncells; cell++) {
+      struct vsph_pair_ranges rg;
+      vsph_pair_ranges_cell(&rg, cells, cell);
+      for (size_t i = cells->start[cell];
+           i < cells->start[cell] + cells->count[cell]; i++)
+        for (int upper = 0; upper < 2; upper++) {
+          struct vsph_pair_iter it[2];
+          for (int w = 0; w < 2; w++) {
+            if (upper)
+              vsph_pair_begin_upper(&it[w], &pk[w], p, &rg, i);
+            else
+              vsph_pair_begin(&it[w], &pk[w], p, &rg, i);
+          }
+          for (;;) {
+            const size_t m0 = vsph_pair_gather(&it[0], 2, pk[0].dfq_id, &b[0]),
+                         m1 = vsph_pair_gather(&it[1], 2, pk[1].dfq_id, &b[1]);
+            ck_assert_msg(m0 == m1, "level %d: %zu neighbours, portable %zu",
+                          level, m0, m1);
+            if (!m0) break;
+            pairs += m0;
+            ck_assert(!memcmp(b[0].j, b[1].j, m0 * sizeof b[0].j[0]));
+            for (int a = 0; a < 2; a++)
+              ck_assert(!memcmp(b[0].x[a], b[1].x[a], m0 * sizeof(double)));
+            ck_assert_msg(!memcmp(b[0].s2, b[1].s2, m0 * sizeof(double)),
+                          "level %d: s^2 differs", level);
+            ck_assert(!memcmp(b[0].F, b[1].F, m0 * sizeof(double)));
+            ck_assert(!memcmp(b[0].VF, b[1].VF, m0 * sizeof(double)));
+          }
+        }
+    }
+    /* about 3 pi (kappa h/dx)^2 / 2 pairs a particle, the two walks */
+    ck_assert_uint_gt(pairs, 20 * p->n);
+  }
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+}
+END_TEST
+
 /* The specialised gathers of the transport-velocity cavity (2-D quintic
  * spline, h = dx, after Adami et al.) and of the channels (2-D cubic
  * B-spline, h/dx 1.5699, after Basa et al.), case by case: on 1 and 2
@@ -1280,6 +1346,7 @@ Suite *vsph_equations_suite(void) {
   tcase_set_timeout(tc, 60);
   size_t nwc = 0;
   while (vsph_scene_get(nwc) && vsph_scene_get(nwc) != &vsph_shear_type) nwc++;
+  tcase_add_loop_test(tc, test_candidates_simd, 0, 2);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
   tcase_add_loop_test(tc, test_sweep_gather_threads,
                       (int)vsph_scene_count() * 5,

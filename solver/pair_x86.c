@@ -1,0 +1,150 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* The 2-D candidate test of vsph_pair_gather_as with AVX-512 (docs/
+ * performance.md): eight candidates at a time, their r_j - r_i and s^2
+ * computed as the portable loop computes them (x = pos_j - x_i per
+ * component, s^2 = x0 x0 + x1 x1: the same operations, so the same bits),
+ * the neighbours' x, s^2 and index packed into the chunk by the lanes'
+ * compress rather than found bit by bit and gathered again; with AVX2,
+ * four at a time. Chosen at run time (vsph_pair_x86_simd), each function
+ * alone built for its instructions: the rest of the code, its
+ * reductions' widths included, is the build's. */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "pair.h"
+
+#if VSPH_PAIR_X86
+
+#include <immintrin.h>
+
+int vsph_pair_x86_simd(void) {
+  const char *cap = getenv("VSPH_PAIR_SIMD");
+  const int most = !cap || !*cap              ? 2
+                   : !strcmp(cap, "avx2")     ? 1
+                   : !strcmp(cap, "portable") ? 0
+                                              : 2;
+  if (most >= 2 && __builtin_cpu_supports("avx512f") &&
+      __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq"))
+    return 2;
+  if (most >= 1 && __builtin_cpu_supports("avx2")) return 1;
+  return 0;
+}
+
+__attribute__((target("avx512f,avx512vl,avx512dq"))) size_t
+vsph_pair_x86_candidates_avx512(struct vsph_pair_iter *it,
+                                struct vsph_pair_chunk *b) {
+  const __m512d H2 = _mm512_set1_pd(it->pk->H2);
+  const __m512d xi = _mm512_set1_pd(it->xi[0]), yi = _mm512_set1_pd(it->xi[1]);
+  const __m512i lane = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0);
+  const double *const px = it->pos[0], *const py = it->pos[1];
+  const size_t i = it->i;
+  size_t m = 0;
+  while (m < VSPH_PAIR_CHUNK) {
+    if (it->j < it->jmin) it->j = it->jmin;
+    if (it->j >= it->end) {
+      if (++it->r >= it->rg->n) break;
+      it->j = it->rg->lo[it->r];
+      it->end = it->rg->hi[it->r];
+      continue;
+    }
+    const size_t j0 = it->j;
+    const size_t n = it->end - j0 > 64 ? 64 : it->end - j0;
+    for (size_t c = 0; c < n; c += 8) {
+      const __mmask8 live =
+          n - c >= 8 ? (__mmask8)0xff : (__mmask8)((1u << (n - c)) - 1u);
+      const __m512d dx = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, px + j0 + c),
+                                       xi),
+                    dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, py + j0 + c),
+                                       yi);
+      const __m512d s2 =
+          _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+      __mmask8 k = _mm512_mask_cmp_pd_mask(live, s2, H2, _CMP_LT_OQ);
+      if (i - (j0 + c) < 8) k &= (__mmask8) ~(1u << (i - (j0 + c)));
+      if (!k) continue;
+      /* whole vectors stored at m: the lanes past the neighbours are
+       * written over by the next, and m + 8 stays within the chunk */
+      _mm512_storeu_pd(b->x[0] + m, _mm512_maskz_compress_pd(k, dx));
+      _mm512_storeu_pd(b->x[1] + m, _mm512_maskz_compress_pd(k, dy));
+      _mm512_storeu_pd(b->s2 + m, _mm512_maskz_compress_pd(k, s2));
+      const __m512i j =
+          _mm512_add_epi64(_mm512_set1_epi64((long long)(j0 + c)), lane);
+      _mm512_storeu_si512((void *)(b->j + m),
+                          _mm512_maskz_compress_epi64(k, j));
+      m += (size_t)__builtin_popcount((unsigned)k);
+    }
+    it->j = j0 + n;
+  }
+  return m;
+}
+
+/* The same with AVX2 (x86-64-v3), four candidates at a time: AVX2 has no
+ * compress, so the neighbours' lanes are moved to the front by a
+ * permutation looked up by the lane mask (each double as two 32-bit
+ * halves). */
+/* PERM[mask]: the 32-bit lanes of the neighbours' doubles first, in lane
+ * order; the rest any (written over) */
+static const int32_t PERM[16][8] = {
+    {0, 1, 2, 3, 4, 5, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7},
+    {2, 3, 2, 3, 4, 5, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7},
+    {4, 5, 2, 3, 4, 5, 6, 7}, {0, 1, 4, 5, 4, 5, 6, 7},
+    {2, 3, 4, 5, 4, 5, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7},
+    {6, 7, 2, 3, 4, 5, 6, 7}, {0, 1, 6, 7, 4, 5, 6, 7},
+    {2, 3, 6, 7, 4, 5, 6, 7}, {0, 1, 2, 3, 6, 7, 6, 7},
+    {4, 5, 6, 7, 4, 5, 6, 7}, {0, 1, 4, 5, 6, 7, 6, 7},
+    {2, 3, 4, 5, 6, 7, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7}};
+
+__attribute__((target("avx2"))) size_t vsph_pair_x86_candidates_avx2(
+    struct vsph_pair_iter *it, struct vsph_pair_chunk *b) {
+  const __m256d H2 = _mm256_set1_pd(it->pk->H2);
+  const __m256d xi = _mm256_set1_pd(it->xi[0]), yi = _mm256_set1_pd(it->xi[1]);
+  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
+  const double *const px = it->pos[0], *const py = it->pos[1];
+  const size_t i = it->i;
+  size_t m = 0;
+  while (m < VSPH_PAIR_CHUNK) {
+    if (it->j < it->jmin) it->j = it->jmin;
+    if (it->j >= it->end) {
+      if (++it->r >= it->rg->n) break;
+      it->j = it->rg->lo[it->r];
+      it->end = it->rg->hi[it->r];
+      continue;
+    }
+    const size_t j0 = it->j;
+    const size_t n = it->end - j0 > 64 ? 64 : it->end - j0;
+    for (size_t c = 0; c < n; c += 4) {
+      const size_t left = n - c;
+      const __m256i live = _mm256_cmpgt_epi64(
+          _mm256_set1_epi64x((long long)(left < 4 ? left : 4)), lane);
+      const __m256d dx = _mm256_sub_pd(_mm256_maskload_pd(px + j0 + c, live),
+                                       xi),
+                    dy = _mm256_sub_pd(_mm256_maskload_pd(py + j0 + c, live),
+                                       yi);
+      const __m256d s2 =
+          _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
+      unsigned k =
+          (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(s2, H2, _CMP_LT_OQ)) &
+          (unsigned)_mm256_movemask_pd(_mm256_castsi256_pd(live));
+      if (i - (j0 + c) < 4) k &= ~(1u << (i - (j0 + c)));
+      if (!k) continue;
+      const __m256i p =
+          _mm256_loadu_si256((const __m256i *)(const void *)PERM[k]);
+      _mm256_storeu_pd(b->x[0] + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
+                                        _mm256_castpd_ps(dx), p)));
+      _mm256_storeu_pd(b->x[1] + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
+                                        _mm256_castpd_ps(dy), p)));
+      _mm256_storeu_pd(b->s2 + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
+                                      _mm256_castpd_ps(s2), p)));
+      const __m256i j =
+          _mm256_add_epi64(_mm256_set1_epi64x((long long)(j0 + c)), lane);
+      _mm256_storeu_si256((__m256i *)(void *)(b->j + m),
+                          _mm256_permutevar8x32_epi32(j, p));
+      m += (size_t)__builtin_popcount(k);
+    }
+    it->j = j0 + n;
+  }
+  return m;
+}
+
+#endif
