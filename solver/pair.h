@@ -42,8 +42,8 @@ struct vsph_pair_kernel {
   double h_inv2; /*!< 1/h^2 */
   double dwq;    /*!< sigma_d h^{-d-2}, see vsph_kernel_dwq_factor */
   int dfq_id;    /*!< the kernel's vsph_kernel_dfq_id */
-  int simd;      /*!< the 2-D candidate test: 2 by AVX-512, 1 by AVX2
-                      (pair_x86.c), 0 by the portable loops */
+  int simd;      /*!< the candidate test in 2-D and 3-D: 2 by AVX-512, 1
+                      by AVX2 (pair_x86.c), 0 by the portable loops */
 };
 
 /** Candidate neighbours of one cell: index ranges [lo, hi) in a fixed
@@ -93,8 +93,8 @@ struct vsph_pair_iter {
   double xi[3];                      /*!< r_i */
 };
 
-/* The 2-D candidate test with AVX-512 or AVX2 (solver/pair_x86.c), for
- * builds that target AVX2 (the program, and the x86-64-v3 copy of the
+/* The candidate test (2-D and 3-D) with AVX-512 or AVX2 (solver/pair_x86.c),
+ * for builds that target AVX2 (the program, and the x86-64-v3 copy of the
  * library the loader picks on such a CPU; the baseline copy, for CPUs
  * without x86-64-v3, keeps the portable loops): the
  * widest the CPU has, chosen at run time. The same neighbours, r_j - r_i
@@ -102,12 +102,13 @@ struct vsph_pair_iter {
  * Exported because the inline gather calls them from a caller's code. */
 #if defined(__x86_64__) && defined(__GNUC__) && defined(__AVX2__)
 #define VSPH_PAIR_X86 1
-/** @brief The level of the 2-D candidate test the CPU allows: 2 AVX-512
+/** @brief The level of the candidate test the CPU allows: 2 AVX-512
  *  (F, VL, DQ), 1 AVX2, 0 the portable loops; VSPH_PAIR_SIMD = avx2 or
  *  portable in the environment caps it (for comparisons). Read by
  *  vsph_pair_kernel_init into vsph_pair_kernel::simd. */
 VSPH_API int vsph_pair_x86_simd(void);
-/** @brief vsph_pair_gather_as's candidate test in 2-D by AVX-512: fills
+/** @brief vsph_pair_gather_as's candidate test (2-D or 3-D, pk->dim)
+ *  by AVX-512: fills
  *  @p b's j, x and s2 with the next neighbours of the walk @p it (as the
  *  portable loop would, to the bit) and returns how many. Call only where
  *  vsph_pair_x86_simd() returns 2. */
@@ -134,7 +135,7 @@ static inline void vsph_pair_kernel_init(struct vsph_pair_kernel *pk,
   pk->h_inv2 = 1.0 / (h * h);
   pk->dwq = vsph_kernel_dwq_factor(k, dim, h);
   pk->dfq_id = k->dfq_id[dim - 1];
-  pk->simd = dim == 2 ? vsph_pair_x86_simd() : 0;
+  pk->simd = dim >= 2 ? vsph_pair_x86_simd() : 0;
 }
 
 /** @brief The candidate ranges of cell @p cell of @p cells. */
@@ -247,7 +248,7 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather_as(struct vsph_pair_iter *it,
                                                   struct vsph_pair_chunk *b) {
   double q2[VSPH_PAIR_CHUNK_MAX];
 #if VSPH_PAIR_X86
-  if (dim == 2 && it->pk->simd) {
+  if (dim >= 2 && it->pk->simd) {
     const size_t m = it->pk->simd == 2 ? vsph_pair_x86_candidates_avx512(it, b)
                                        : vsph_pair_x86_candidates_avx2(it, b);
 #pragma omp simd

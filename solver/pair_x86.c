@@ -1,9 +1,10 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
-/* The 2-D candidate test of vsph_pair_gather_as with AVX-512 (docs/
- * performance.md): eight candidates at a time, their r_j - r_i and s^2
- * computed as the portable loop computes them (x = pos_j - x_i per
- * component, s^2 = x0 x0 + x1 x1: the same operations, so the same bits),
+/* The candidate test of vsph_pair_gather_as in 2-D and 3-D with AVX-512
+ * (docs/performance.md): eight candidates at a time, their r_j - r_i and
+ * s^2 computed as the portable loop computes them (x = pos_j - x_i per
+ * component, s^2 = (x0 x0 + x1 x1) + x2 x2: the same operations, so the
+ * same bits),
  * the neighbours' x, s^2 and index packed into the chunk by the lanes'
  * compress rather than found bit by bit and gathered again; with AVX2,
  * four at a time. Chosen at run time (vsph_pair_x86_simd), each function
@@ -32,13 +33,17 @@ int vsph_pair_x86_simd(void) {
   return 0;
 }
 
-__attribute__((target("avx512f,avx512vl,avx512dq"))) size_t
-vsph_pair_x86_candidates_avx512(struct vsph_pair_iter *it,
-                                struct vsph_pair_chunk *b) {
+/* dim 2 or 3, a constant where inlined */
+static inline
+    __attribute__((always_inline, target("avx512f,avx512vl,avx512dq"))) size_t
+    candidates_avx512(struct vsph_pair_iter *it, struct vsph_pair_chunk *b,
+                      const int dim) {
   const __m512d H2 = _mm512_set1_pd(it->pk->H2);
-  const __m512d xi = _mm512_set1_pd(it->xi[0]), yi = _mm512_set1_pd(it->xi[1]);
+  const __m512d xi = _mm512_set1_pd(it->xi[0]), yi = _mm512_set1_pd(it->xi[1]),
+                zi = _mm512_set1_pd(dim == 3 ? it->xi[2] : 0.0);
   const __m512i lane = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0);
-  const double *const px = it->pos[0], *const py = it->pos[1];
+  const double *const px = it->pos[0], *const py = it->pos[1],
+                      *const pz = dim == 3 ? it->pos[2] : NULL;
   const size_t i = it->i;
   size_t m = 0;
   while (m < VSPH_PAIR_CHUNK) {
@@ -58,8 +63,11 @@ vsph_pair_x86_candidates_avx512(struct vsph_pair_iter *it,
                                        xi),
                     dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, py + j0 + c),
                                        yi);
-      const __m512d s2 =
-          _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+      const __m512d dz =
+          dim == 3 ? _mm512_sub_pd(_mm512_maskz_loadu_pd(live, pz + j0 + c), zi)
+                   : _mm512_setzero_pd();
+      __m512d s2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+      if (dim == 3) s2 = _mm512_add_pd(s2, _mm512_mul_pd(dz, dz));
       __mmask8 k = _mm512_mask_cmp_pd_mask(live, s2, H2, _CMP_LT_OQ);
       if (i - (j0 + c) < 8) k &= (__mmask8) ~(1u << (i - (j0 + c)));
       if (!k) continue;
@@ -67,6 +75,8 @@ vsph_pair_x86_candidates_avx512(struct vsph_pair_iter *it,
        * written over by the next, and m + 8 stays within the chunk */
       _mm512_storeu_pd(b->x[0] + m, _mm512_maskz_compress_pd(k, dx));
       _mm512_storeu_pd(b->x[1] + m, _mm512_maskz_compress_pd(k, dy));
+      if (dim == 3)
+        _mm512_storeu_pd(b->x[2] + m, _mm512_maskz_compress_pd(k, dz));
       _mm512_storeu_pd(b->s2 + m, _mm512_maskz_compress_pd(k, s2));
       const __m512i j =
           _mm512_add_epi64(_mm512_set1_epi64((long long)(j0 + c)), lane);
@@ -77,6 +87,13 @@ vsph_pair_x86_candidates_avx512(struct vsph_pair_iter *it,
     it->j = j0 + n;
   }
   return m;
+}
+
+__attribute__((target("avx512f,avx512vl,avx512dq"))) size_t
+vsph_pair_x86_candidates_avx512(struct vsph_pair_iter *it,
+                                struct vsph_pair_chunk *b) {
+  return it->pk->dim == 3 ? candidates_avx512(it, b, 3)
+                          : candidates_avx512(it, b, 2);
 }
 
 /* The same with AVX2 (x86-64-v3), four candidates at a time: AVX2 has no
@@ -95,12 +112,15 @@ static const int32_t PERM[16][8] = {
     {4, 5, 6, 7, 4, 5, 6, 7}, {0, 1, 4, 5, 6, 7, 6, 7},
     {2, 3, 4, 5, 6, 7, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7}};
 
-__attribute__((target("avx2"))) size_t vsph_pair_x86_candidates_avx2(
-    struct vsph_pair_iter *it, struct vsph_pair_chunk *b) {
+static inline __attribute__((always_inline, target("avx2"))) size_t
+candidates_avx2(struct vsph_pair_iter *it, struct vsph_pair_chunk *b,
+                const int dim) {
   const __m256d H2 = _mm256_set1_pd(it->pk->H2);
-  const __m256d xi = _mm256_set1_pd(it->xi[0]), yi = _mm256_set1_pd(it->xi[1]);
+  const __m256d xi = _mm256_set1_pd(it->xi[0]), yi = _mm256_set1_pd(it->xi[1]),
+                zi = _mm256_set1_pd(dim == 3 ? it->xi[2] : 0.0);
   const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
-  const double *const px = it->pos[0], *const py = it->pos[1];
+  const double *const px = it->pos[0], *const py = it->pos[1],
+                      *const pz = dim == 3 ? it->pos[2] : NULL;
   const size_t i = it->i;
   size_t m = 0;
   while (m < VSPH_PAIR_CHUNK) {
@@ -121,8 +141,11 @@ __attribute__((target("avx2"))) size_t vsph_pair_x86_candidates_avx2(
                                        xi),
                     dy = _mm256_sub_pd(_mm256_maskload_pd(py + j0 + c, live),
                                        yi);
-      const __m256d s2 =
-          _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
+      const __m256d dz =
+          dim == 3 ? _mm256_sub_pd(_mm256_maskload_pd(pz + j0 + c, live), zi)
+                   : _mm256_setzero_pd();
+      __m256d s2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
+      if (dim == 3) s2 = _mm256_add_pd(s2, _mm256_mul_pd(dz, dz));
       unsigned k =
           (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(s2, H2, _CMP_LT_OQ)) &
           (unsigned)_mm256_movemask_pd(_mm256_castsi256_pd(live));
@@ -134,6 +157,9 @@ __attribute__((target("avx2"))) size_t vsph_pair_x86_candidates_avx2(
                                         _mm256_castpd_ps(dx), p)));
       _mm256_storeu_pd(b->x[1] + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
                                         _mm256_castpd_ps(dy), p)));
+      if (dim == 3)
+        _mm256_storeu_pd(b->x[2] + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
+                                          _mm256_castpd_ps(dz), p)));
       _mm256_storeu_pd(b->s2 + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
                                       _mm256_castpd_ps(s2), p)));
       const __m256i j =
@@ -145,6 +171,12 @@ __attribute__((target("avx2"))) size_t vsph_pair_x86_candidates_avx2(
     it->j = j0 + n;
   }
   return m;
+}
+
+__attribute__((target("avx2"))) size_t vsph_pair_x86_candidates_avx2(
+    struct vsph_pair_iter *it, struct vsph_pair_chunk *b) {
+  return it->pk->dim == 3 ? candidates_avx2(it, b, 3)
+                          : candidates_avx2(it, b, 2);
 }
 
 #endif
