@@ -26,12 +26,16 @@ ARCH     ?= $(shell grep -qw avx2 /proc/cpuinfo 2>/dev/null && echo -march=x86-6
 CFLAGS   ?= $(OPT) $(ARCH) -g
 # -fno-math-errno: nothing reads errno after a math call, and without it
 # sqrt cannot be vectorised.
+# -ffp-contract=off: no multiply-add fused behind the code's back (GCC's
+# -std=c11 already says so; clang fuses by default): the candidate test's
+# SIMD lanes (solver/pair_x86.c) and the portable loop compute s^2 alike.
 # -fPIC: the program, libvsph.a and libvsph.so share one set of objects
 # (measured: the same results bit for bit and the same speed, docs/speed.md);
 # -fno-semantic-interposition lets the library's calls to its own
 # functions stay direct; -fvisibility=hidden: libvsph.so exports only what
 # the public headers mark VSPH_API (common/api.h).
 ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L -fopenmp -fno-math-errno \
+            -ffp-contract=off \
             -fPIC -fno-semantic-interposition -fvisibility=hidden \
             $(WARN) $(CFLAGS) \
             $(SAN) $(shell pkg-config --cflags $(PKGS) 2>/dev/null)

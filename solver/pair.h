@@ -31,7 +31,9 @@
  *  builds (say ARCH= against the AVX2 default) agree to rounding.
  *
  *  Everything here is static inline (STYLE B3: small hot helpers in the
- *  module header). No I/O, no allocation. */
+ *  module header) but the candidate test's SIMD versions on x86-64
+ *  (solver/pair_x86.c), which the inline gather calls. No I/O, no
+ *  allocation. */
 
 /* ------------------------------------------------------------- the loop */
 
@@ -43,7 +45,9 @@ struct vsph_pair_kernel {
   double dwq;    /*!< sigma_d h^{-d-2}, see vsph_kernel_dwq_factor */
   int dfq_id;    /*!< the kernel's vsph_kernel_dfq_id */
   int simd;      /*!< the candidate test in 2-D and 3-D: 2 by AVX-512, 1
-                      by AVX2 (pair_x86.c), 0 by the portable loops */
+                      by AVX2 (pair_x86.c), 0 by the portable loops; set
+                      by vsph_pair_kernel_init (a struct filled by hand
+                      must set it, 0 at least) */
 };
 
 /** Candidate neighbours of one cell: index ranges [lo, hi) in a fixed
@@ -93,19 +97,23 @@ struct vsph_pair_iter {
   double xi[3];                      /*!< r_i */
 };
 
-/* The candidate test (2-D and 3-D) with AVX-512 or AVX2 (solver/pair_x86.c),
- * for builds that target AVX2 (the program, and the x86-64-v3 copy of the
- * library the loader picks on such a CPU; the baseline copy, for CPUs
- * without x86-64-v3, keeps the portable loops): the
- * widest the CPU has, chosen at run time. The same neighbours, r_j - r_i
- * and s^2, to the bit, as the portable loop of vsph_pair_gather_as.
- * Exported because the inline gather calls them from a caller's code. */
-#if defined(__x86_64__) && defined(__GNUC__) && defined(__AVX2__)
+/* The candidate test (2-D and 3-D) with AVX-512 or AVX2
+ * (solver/pair_x86.c), the widest the CPU has, chosen at run time by the
+ * library: in builds that target AVX2 (the program, the installed
+ * library's x86-64-v3 copy); the baseline copy answers "portable" (its
+ * vsph_pair_x86_simd returns 0), so code built against either copy, with
+ * or without AVX2, links and runs. The same neighbours, r_j - r_i and
+ * s^2, to the bit, as the portable loop of vsph_pair_gather_as (code that
+ * includes this header needs -ffp-contract=off, GCC's default with
+ * -std=c11, for its own portable loop to agree to the bit). Exported
+ * because the inline gather calls them from a caller's code. */
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__LP64__)
 #define VSPH_PAIR_X86 1
 /** @brief The level of the candidate test the CPU allows: 2 AVX-512
  *  (F, VL, DQ), 1 AVX2, 0 the portable loops; VSPH_PAIR_SIMD = avx2 or
- *  portable in the environment caps it (for comparisons). Read by
- *  vsph_pair_kernel_init into vsph_pair_kernel::simd. */
+ *  portable in the environment caps it (avx512 or any other value: no
+ *  cap; for comparisons); 0 always in the library's baseline copy. Read
+ *  by vsph_pair_kernel_init into vsph_pair_kernel::simd. */
 VSPH_API int vsph_pair_x86_simd(void);
 /** @brief vsph_pair_gather_as's candidate test (2-D or 3-D, pk->dim)
  *  by AVX-512: fills
@@ -239,7 +247,10 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_fvf(const struct vsph_pair_iter *it,
  *  @param dim the loop's dimension (= pk->dim) and @p kid its kernel
  *  (= pk->dfq_id), passed by the caller so that a caller specialised on
  *  constants gets unrolled loops and the kernel inlined; @p unit 1 sets
- *  VF = F (a symmetric sweep's unit shares), 0 VF = V_j F.
+ *  VF = F (a symmetric sweep's unit shares), 0 VF = V_j F. Where
+ *  pk->simd is set (x86-64, 2-D and 3-D), the test and the geometry are
+ *  one pass of SIMD lanes whose neighbours are packed by a compress
+ *  (vsph_pair_x86_candidates_avx512, _avx2): the same chunk, to the bit.
  *  @return the neighbours in the chunk (b->m); 0 when the ranges are
  *  exhausted. */
 VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather_as(struct vsph_pair_iter *it,

@@ -16,9 +16,17 @@
 
 #include "pair.h"
 
-#if VSPH_PAIR_X86
+#if VSPH_PAIR_X86 && defined(__AVX2__)
 
 #include <immintrin.h>
+
+/* A whole vector is stored at m, the neighbours so far: m < CHUNK when a
+ * block of at most 64 candidates begins and grows by at most the lanes
+ * tested before a store, so a store at candidate c of a block ends at
+ * m + W <= (CHUNK - 1) + c + W <= CHUNK - 1 + 64 (c + W <= 64). */
+_Static_assert(VSPH_PAIR_CHUNK_MAX >= VSPH_PAIR_CHUNK - 1 + 64,
+               "a chunk holds a whole vector stored at its last neighbour");
+_Static_assert(sizeof(size_t) == 8, "indices stored as 64-bit lanes");
 
 int vsph_pair_x86_simd(void) {
   const char *cap = getenv("VSPH_PAIR_SIMD");
@@ -177,6 +185,27 @@ __attribute__((target("avx2"))) size_t vsph_pair_x86_candidates_avx2(
     struct vsph_pair_iter *it, struct vsph_pair_chunk *b) {
   return it->pk->dim == 3 ? candidates_avx2(it, b, 3)
                           : candidates_avx2(it, b, 2);
+}
+
+#elif VSPH_PAIR_X86
+
+/* The baseline copy (no AVX2 in the build): the portable loops always; the
+ * candidate functions are never called (vsph_pair_kernel_init sets simd 0)
+ * and exist so that code built with AVX2 links against this copy too. */
+int vsph_pair_x86_simd(void) { return 0; }
+
+size_t vsph_pair_x86_candidates_avx512(struct vsph_pair_iter *it,
+                                       struct vsph_pair_chunk *b) {
+  (void)it;
+  (void)b;
+  abort();
+}
+
+size_t vsph_pair_x86_candidates_avx2(struct vsph_pair_iter *it,
+                                     struct vsph_pair_chunk *b) {
+  (void)it;
+  (void)b;
+  abort();
 }
 
 #endif

@@ -727,6 +727,59 @@ END_TEST
  * neighbours in the same order, the same r_j - r_i, s^2, F and V_j F, to
  * the bit (each computes x = r_j - r_i and s^2 = (x0 x0 + x1 x1) + x2 x2
  * with the same operations). A level the CPU lacks is said and left out. */
+/* One walk of each particle of @p p over @p rg (NULL: its own cell's
+ * ranges in @p cells), the portable loop against level @p level, every
+ * chunk's fields the same bits; returns the pairs and the fullest chunk. */
+static size_t walks_agree(const struct vsph_particles *p,
+                          const struct vsph_cells *cells,
+                          const struct vsph_pair_ranges *all,
+                          const struct vsph_pair_kernel *pk0, int level,
+                          size_t *fullest) {
+  struct vsph_pair_kernel pk[2] = {*pk0, *pk0};
+  pk[0].simd = level;
+  pk[1].simd = 0;
+  const int dim = pk0->dim;
+  static struct vsph_pair_chunk b[2];
+  size_t pairs = 0;
+  const size_t ncell = all ? 1 : cells->ncells;
+  for (size_t cell = 0; cell < ncell; cell++) {
+    struct vsph_pair_ranges rg;
+    if (all)
+      rg = *all;
+    else
+      vsph_pair_ranges_cell(&rg, cells, cell);
+    const size_t i0 = all ? 0 : cells->start[cell],
+                 i1 = all ? p->n : cells->start[cell] + cells->count[cell];
+    for (size_t i = i0; i < i1; i++)
+      for (int upper = 0; upper < 2; upper++) {
+        struct vsph_pair_iter it[2];
+        for (int w = 0; w < 2; w++) {
+          if (upper)
+            vsph_pair_begin_upper(&it[w], &pk[w], p, &rg, i);
+          else
+            vsph_pair_begin(&it[w], &pk[w], p, &rg, i);
+        }
+        for (;;) {
+          const size_t m0 = vsph_pair_gather(&it[0], dim, pk[0].dfq_id, &b[0]),
+                       m1 = vsph_pair_gather(&it[1], dim, pk[1].dfq_id, &b[1]);
+          ck_assert_msg(m0 == m1, "level %d: %zu neighbours, portable %zu",
+                        level, m0, m1);
+          if (!m0) break;
+          pairs += m0;
+          *fullest = m0 > *fullest ? m0 : *fullest;
+          ck_assert(!memcmp(b[0].j, b[1].j, m0 * sizeof b[0].j[0]));
+          for (int a = 0; a < dim; a++)
+            ck_assert(!memcmp(b[0].x[a], b[1].x[a], m0 * sizeof(double)));
+          ck_assert_msg(!memcmp(b[0].s2, b[1].s2, m0 * sizeof(double)),
+                        "level %d: s^2 differs", level);
+          ck_assert(!memcmp(b[0].F, b[1].F, m0 * sizeof(double)));
+          ck_assert(!memcmp(b[0].VF, b[1].VF, m0 * sizeof(double)));
+        }
+      }
+  }
+  return pairs;
+}
+
 START_TEST(test_candidates_simd) {
   const int dim = 2 + _i / 2;
   struct vsph_particles *p = random_set(dim, 11 + (unsigned long)_i);
@@ -735,55 +788,33 @@ START_TEST(test_candidates_simd) {
   const double h = HDX * DX;
   struct vsph_cells *cells = vsph_cells_alloc();
   ck_assert_int_eq(vsph_cells_build(cells, p, k->kappa * h), 0);
-  struct vsph_pair_kernel pk[2];
-  vsph_pair_kernel_init(&pk[0], k, dim, h);
-  vsph_pair_kernel_init(&pk[1], k, dim, h);
-  const int most = pk[0].simd;
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, k, dim, h);
+  const int most = pk.simd;
   if (most < 2)
     fprintf(stderr,
-            "test_candidates_simd: the CPU (or VSPH_PAIR_SIMD) "
+            "test_candidates_simd: this build or CPU (or VSPH_PAIR_SIMD) "
             "allows %s only\n",
             most ? "AVX2" : "the portable loop");
-  pk[1].simd = 0;
-  static struct vsph_pair_chunk b[2];
   for (int level = 1; level <= most; level++) {
-    pk[0].simd = level;
-    size_t pairs = 0;
-    for (size_t cell = 0; cell < cells->ncells; cell++) {
-      struct vsph_pair_ranges rg;
-      vsph_pair_ranges_cell(&rg, cells, cell);
-      for (size_t i = cells->start[cell];
-           i < cells->start[cell] + cells->count[cell]; i++)
-        for (int upper = 0; upper < 2; upper++) {
-          struct vsph_pair_iter it[2];
-          for (int w = 0; w < 2; w++) {
-            if (upper)
-              vsph_pair_begin_upper(&it[w], &pk[w], p, &rg, i);
-            else
-              vsph_pair_begin(&it[w], &pk[w], p, &rg, i);
-          }
-          for (;;) {
-            const size_t m0 =
-                             vsph_pair_gather(&it[0], dim, pk[0].dfq_id, &b[0]),
-                         m1 =
-                             vsph_pair_gather(&it[1], dim, pk[1].dfq_id, &b[1]);
-            ck_assert_msg(m0 == m1, "level %d: %zu neighbours, portable %zu",
-                          level, m0, m1);
-            if (!m0) break;
-            pairs += m0;
-            ck_assert(!memcmp(b[0].j, b[1].j, m0 * sizeof b[0].j[0]));
-            for (int a = 0; a < dim; a++)
-              ck_assert(!memcmp(b[0].x[a], b[1].x[a], m0 * sizeof(double)));
-            ck_assert_msg(!memcmp(b[0].s2, b[1].s2, m0 * sizeof(double)),
-                          "level %d: s^2 differs", level);
-            ck_assert(!memcmp(b[0].F, b[1].F, m0 * sizeof(double)));
-            ck_assert(!memcmp(b[0].VF, b[1].VF, m0 * sizeof(double)));
-          }
-        }
-    }
+    size_t fullest = 0;
     /* about 3 pi (kappa h/dx)^2 / 2 pairs a particle in 2-D, more in
      * 3-D, the two walks (fewer at the free surfaces all round) */
-    ck_assert_uint_gt(pairs, 20 * p->n);
+    ck_assert_uint_gt(walks_agree(p, cells, NULL, &pk, level, &fullest),
+                      20 * p->n);
+    /* every particle a neighbour of every other (one range over the set,
+     * a support wider than the patch): the chunks fill to their last
+     * entry, where the whole-vector stores end */
+    struct vsph_pair_kernel wide;
+    vsph_pair_kernel_init(&wide, k, dim, 100.0 * h);
+    struct vsph_pair_ranges all;
+    vsph_pair_ranges_all(&all, p->n);
+    fullest = 0;
+    (void)walks_agree(p, NULL, &all, &wide, level, &fullest);
+    ck_assert_uint_eq(fullest, VSPH_PAIR_CHUNK_MAX);
+    /* an empty range first, and one candidate */
+    struct vsph_pair_ranges odd = {.n = 3, .lo = {0, 5, 7}, .hi = {0, 6, 7}};
+    (void)walks_agree(p, NULL, &odd, &wide, level, &fullest);
   }
   vsph_cells_free(cells);
   vsph_particles_free(p);
