@@ -124,9 +124,6 @@ static struct vsph_integrate *bench_run(const struct vsph_scene_type *type,
   return vsph_integrate_alloc(&ip, fluid);
 }
 
-/* Best and median of `reps` wall times of fn(arg): the best filters the
- * bursts of a shared machine (the rates are computed from it), the median
- * says what a run sees (under --busy, say). */
 /* The bench's progress on stderr: a line per row measured, with the
  * time left: each section's rows left at that section's rate so far, or
  * before its first row at the prior (seconds a row, measured on the
@@ -175,6 +172,20 @@ static int cmp_double(const void *a, const void *b) {
   const double x = *(const double *)a, y = *(const double *)b;
   return (x > y) - (x < y);
 }
+
+void vsph_bench_fold(double *t, size_t n, double *best, double *median) {
+  if (n == 0) {
+    *best = *median = (double)NAN;
+    return;
+  }
+  qsort(t, n, sizeof t[0], cmp_double);
+  *best = t[0];
+  *median = n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+}
+
+/* Best and median of `reps` wall times of fn(arg): the best filters the
+ * bursts of a shared machine (the rates are computed from it), the median
+ * says what a run sees (under --busy, say). */
 static double timed(int reps, void (*fn)(void *), void *arg, double *median) {
   double t[15];
   if (reps > 15) reps = 15;
@@ -650,10 +661,7 @@ static int measure_processes(size_t procs, int busy, struct rows *all) {
         all->r[r].load = fmax(all->r[r].load, x->load);
         all->r[r].bytes = fmax(all->r[r].bytes, x->bytes);
       }
-      qsort(t, procs, sizeof t[0], cmp_double);
-      all->r[r].best = t[0];
-      all->r[r].med =
-          procs % 2 ? t[procs / 2] : 0.5 * (t[procs / 2 - 1] + t[procs / 2]);
+      vsph_bench_fold(t, procs, &all->r[r].best, &all->r[r].med);
     }
   }
   free(each);

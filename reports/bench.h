@@ -29,4 +29,10 @@ struct vsph_bench_props {
  *  @return VSPH_OK or the first failure. */
 int vsph_bench_run(const struct vsph_bench_props *bp, FILE *out);
 
+/** @brief The fold of @p n processes' best times @p t (sorted in place)
+ *  that `vsph bench --processes` reports: the best of all into *best and
+ *  the median of the processes' bests into *median (the mean of the two
+ *  middle ones for an even @p n); NaN for none. */
+void vsph_bench_fold(double *t, size_t n, double *best, double *median);
+
 #endif /* VSPH_REPORTS_BENCH_H */

@@ -5,6 +5,7 @@
  * writer; the estimate of the time left (runs/jobs.c), worked
  * by hand. */
 #include <check.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +13,7 @@
 #include "../common/shell.h"
 #include "../io/files.h"
 #include "../io/json.h"
+#include "../reports/bench.h"
 #include "../reports/report.h"
 #include "../reports/report_claims.h"
 #include "../reports/report_parts.h"
@@ -491,6 +493,26 @@ START_TEST(test_peak) {
 }
 END_TEST
 
+/* `vsph bench --processes`'s fold of the processes' best times, worked
+ * by hand: the best of all and the median of the bests, the mean of the
+ * middle two for an even count, whatever the order they came in; NaN for
+ * none. */
+START_TEST(test_bench_fold) {
+  double best, med;
+  double odd[] = {9.5, 7.25, 8.0, 12.0, 7.5}; /* sorted: 7.25 7.5 8 9.5 12 */
+  vsph_bench_fold(odd, 5, &best, &med);
+  ck_assert(best == 7.25 && med == 8.0);
+  double even[] = {4.0, 1.0, 3.0, 2.0}; /* middle two 2 and 3 */
+  vsph_bench_fold(even, 4, &best, &med);
+  ck_assert(best == 1.0 && med == 2.5);
+  double one[] = {6.0};
+  vsph_bench_fold(one, 1, &best, &med);
+  ck_assert(best == 6.0 && med == 6.0);
+  vsph_bench_fold(one, 0, &best, &med);
+  ck_assert(isnan(best) && isnan(med));
+}
+END_TEST
+
 Suite *vsph_report_suite(void) {
   Suite *s = suite_create("report");
   TCase *tc = tcase_create("frame");
@@ -504,6 +526,7 @@ Suite *vsph_report_suite(void) {
   tcase_add_test(tc, test_command_reads_back);
   tcase_add_test(tc, test_null_mode);
   tcase_add_test(tc, test_peak);
+  tcase_add_test(tc, test_bench_fold);
   suite_add_tcase(s, tc);
   return s;
 }
