@@ -97,6 +97,25 @@ struct vsph_pair_iter {
   double xi[3];                      /*!< r_i */
 };
 
+/** @brief The next block of candidates of the walk @p it: at most 64
+ *  consecutive indices [*j0, *j0 + n) of its current range (j >= jmin),
+ *  moving to the next range where one is spent; the walk moves past the
+ *  block. @return n, or 0 when the ranges are exhausted. */
+static inline size_t vsph_pair_next_block(struct vsph_pair_iter *it,
+                                          size_t *j0) {
+  for (;;) {
+    if (it->j < it->jmin) it->j = it->jmin;
+    if (it->j < it->end) break;
+    if (++it->r >= it->rg->n) return 0;
+    it->j = it->rg->lo[it->r];
+    it->end = it->rg->hi[it->r];
+  }
+  *j0 = it->j;
+  const size_t n = it->end - it->j > 64 ? 64 : it->end - it->j;
+  it->j += n;
+  return n;
+}
+
 /* The candidate test (2-D and 3-D) with AVX-512 or AVX2
  * (solver/pair_x86.c), the widest the CPU has, chosen at run time by the
  * library: in builds that target AVX2 (the program, the installed
@@ -273,15 +292,9 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather_as(struct vsph_pair_iter *it,
   const size_t i = it->i;
   size_t m = 0;
   while (m < VSPH_PAIR_CHUNK) {
-    if (it->j < it->jmin) it->j = it->jmin;
-    if (it->j >= it->end) {
-      if (++it->r >= it->rg->n) break;
-      it->j = it->rg->lo[it->r];
-      it->end = it->rg->hi[it->r];
-      continue;
-    }
-    const size_t j0 = it->j;
-    const size_t n = it->end - j0 > 64 ? 64 : it->end - j0;
+    size_t j0;
+    const size_t n = vsph_pair_next_block(it, &j0);
+    if (!n) break;
     unsigned long long w = 0;
 #pragma omp simd reduction(| : w)
     for (size_t c = 0; c < n; c++) {
@@ -294,7 +307,6 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather_as(struct vsph_pair_iter *it,
     }
     if (i - j0 < n) w &= ~(1ull << (i - j0)); /* not i itself */
     for (; w; w &= w - 1) b->j[m++] = j0 + (size_t)__builtin_ctzll(w);
-    it->j = j0 + n;
   }
 #pragma omp simd
   for (size_t k = 0; k < m; k++) {

@@ -55,15 +55,9 @@ static inline
   const size_t i = it->i;
   size_t m = 0;
   while (m < VSPH_PAIR_CHUNK) {
-    if (it->j < it->jmin) it->j = it->jmin;
-    if (it->j >= it->end) {
-      if (++it->r >= it->rg->n) break;
-      it->j = it->rg->lo[it->r];
-      it->end = it->rg->hi[it->r];
-      continue;
-    }
-    const size_t j0 = it->j;
-    const size_t n = it->end - j0 > 64 ? 64 : it->end - j0;
+    size_t j0;
+    const size_t n = vsph_pair_next_block(it, &j0);
+    if (!n) break;
     for (size_t c = 0; c < n; c += 8) {
       const __mmask8 live =
           n - c >= 8 ? (__mmask8)0xff : (__mmask8)((1u << (n - c)) - 1u);
@@ -92,7 +86,6 @@ static inline
                           _mm512_maskz_compress_epi64(k, j));
       m += (size_t)__builtin_popcount((unsigned)k);
     }
-    it->j = j0 + n;
   }
   return m;
 }
@@ -132,15 +125,9 @@ candidates_avx2(struct vsph_pair_iter *it, struct vsph_pair_chunk *b,
   const size_t i = it->i;
   size_t m = 0;
   while (m < VSPH_PAIR_CHUNK) {
-    if (it->j < it->jmin) it->j = it->jmin;
-    if (it->j >= it->end) {
-      if (++it->r >= it->rg->n) break;
-      it->j = it->rg->lo[it->r];
-      it->end = it->rg->hi[it->r];
-      continue;
-    }
-    const size_t j0 = it->j;
-    const size_t n = it->end - j0 > 64 ? 64 : it->end - j0;
+    size_t j0;
+    const size_t n = vsph_pair_next_block(it, &j0);
+    if (!n) break;
     for (size_t c = 0; c < n; c += 4) {
       const size_t left = n - c;
       const __m256i live = _mm256_cmpgt_epi64(
@@ -176,7 +163,6 @@ candidates_avx2(struct vsph_pair_iter *it, struct vsph_pair_chunk *b,
                           _mm256_permutevar8x32_epi32(j, p));
       m += (size_t)__builtin_popcount(k);
     }
-    it->j = j0 + n;
   }
   return m;
 }
