@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <omp.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -46,11 +47,17 @@ struct entry {
 };
 
 /* A file being assembled: the appended block (every array compressed in
- * VTK's layout), the list of arrays, and their descriptions, each
- * "name: what (unit)" and NUL-terminated as VTK stores a string array. */
+ * VTK's layout) as it is made, in a scratch file of the folder it goes to
+ * (unlinked at once: nothing stays behind), so that no more than a few
+ * blocks of it are held in memory; the list of arrays, and their
+ * descriptions, each "name: what (unit)" and NUL-terminated as VTK
+ * stores a string array. */
 struct out {
-  unsigned char *data;
-  size_t len, cap;
+  const char *dir;  /* where the file and its scratch go */
+  FILE *spill;      /* the appended block so far, len bytes */
+  size_t len;       /* (opened by the first array) */
+  unsigned char *z; /* a wave of compressed blocks, zcap bytes */
+  size_t zcap;
   struct entry e[MAX_ARRAYS];
   size_t ne;
   char desc[DESC_LEN];
@@ -61,64 +68,101 @@ struct out {
   int no_scalars, no_vectors;        /* a frame without pressure, velocity */
 };
 
+/* The scratch file of the appended block: made in @p dir by mkstemp and
+ * unlinked at once (NULL where it cannot be made). */
+static FILE *spill_open(const char *dir) {
+  static const char leaf[] = "/.vsph-vtk-XXXXXX";
+  char *path = malloc(strlen(dir) + sizeof leaf);
+  if (!path) return NULL;
+  strcpy(path, dir);
+  strcat(path, leaf);
+  const int fd = mkstemp(path);
+  if (fd >= 0) unlink(path);
+  free(path);
+  if (fd < 0) return NULL;
+  FILE *f = fdopen(fd, "w+b");
+  if (!f) close(fd);
+  return f;
+}
+
+/* Blocks compressed at once: a few for each thread, so that the threads
+ * share the work while only these blocks are held. */
+static size_t wave_blocks(void) { return 8 * (size_t)omp_get_max_threads(); }
+
 /* Append @p nbytes at @p raw as one array in the layout of
  * vtkZLibDataCompressor with header_type UInt64: [number of blocks]
  * [block size][size of the last block if partial, else 0][compressed size
  * of each block], then each block deflated on its own. The blocks are
- * compressed in parallel, each into its own slot, then closed up in order:
- * the bytes do not depend on the threads. VSPH_EINTR, with nothing added,
- * when *o->stop is set (checked before each block). */
+ * compressed in parallel a wave at a time, each into its own slot, then
+ * written in order (the header's sizes filled in at the end): the bytes do
+ * not depend on the threads. VSPH_EINTR when *o->stop is set (checked
+ * before each block; the file is then not written). */
 static int add_array(struct out *o, enum section sec, const char *name,
                      const char *type, int ncomp, size_t ntuples,
                      const void *raw, size_t nbytes) {
   const volatile sig_atomic_t *stop = o->stop;
   VSPH_ASSERT(o->ne < MAX_ARRAYS);
+  if (!o->spill && !(o->spill = spill_open(o->dir)))
+    VSPH_FAIL(VSPH_EIO, "cannot write a snapshot's scratch file in %s: %s",
+              o->dir, strerror(errno));
   const size_t nblocks = (nbytes + VSPH_VTK_BLOCK - 1) / VSPH_VTK_BLOCK;
-  const size_t head = (3 + nblocks) * sizeof(uint64_t);
   const size_t slot = compressBound(VSPH_VTK_BLOCK);
-  const size_t need = o->len + head + nblocks * slot;
-  if (need > o->cap) {
-    const size_t cap = need > 2 * o->cap ? need : 2 * o->cap;
-    unsigned char *d = realloc(o->data, cap);
-    if (!d) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot's %s", name);
-    o->data = d;
-    o->cap = cap;
+  const size_t wave = nblocks < wave_blocks() ? nblocks : wave_blocks();
+  if (wave * slot > o->zcap) {
+    unsigned char *z = realloc(o->z, wave * slot);
+    if (!z) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot's %s", name);
+    o->z = z;
+    o->zcap = wave * slot;
   }
-  unsigned char *h = o->data + o->len, *z0 = h + head;
-  const uint64_t h3[3] = {nblocks, VSPH_VTK_BLOCK, nbytes % VSPH_VTK_BLOCK};
-  memcpy(h, h3, sizeof h3);
-  uint64_t *zl = malloc((nblocks ? nblocks : 1) * sizeof *zl);
+  uint64_t *zl = calloc(3 + nblocks, sizeof *zl);
   if (!zl) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot's %s", name);
-  int bad = 0; /* a zlib failure (the lowest such block's status) */
-#pragma omp parallel for schedule(dynamic, 4) reduction(min : bad)
-  for (size_t b = 0; b < nblocks; b++) {
-    if (stop && *stop) continue; /* a flag only ever raised: seen below */
-    const size_t in =
-        b + 1 < nblocks ? VSPH_VTK_BLOCK : nbytes - b * VSPH_VTK_BLOCK;
-    uLongf zlen = (uLongf)slot;
-    const int zs =
-        compress2(z0 + b * slot, &zlen, (const Bytef *)raw + b * VSPH_VTK_BLOCK,
-                  (uLong)in, o->level);
-    if (zs != Z_OK && zs < bad) bad = zs;
-    zl[b] = zlen;
+  zl[0] = nblocks;
+  zl[1] = VSPH_VTK_BLOCK;
+  zl[2] = nbytes % VSPH_VTK_BLOCK;
+  const size_t at = o->len, head = (3 + nblocks) * sizeof *zl;
+  /* the header's place, its sizes filled in once known */
+  int st = fwrite(zl, 1, head, o->spill) == head ? VSPH_OK : VSPH_EIO;
+  size_t len = head;
+  for (size_t w0 = 0; w0 < nblocks && !st; w0 += wave) {
+    const size_t nw = nblocks - w0 < wave ? nblocks - w0 : wave;
+    int bad = 0; /* a zlib failure (the lowest such block's status) */
+#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad)
+    for (size_t b = 0; b < nw; b++) {
+      if (stop && *stop) continue; /* a flag only ever raised: seen below */
+      const size_t g = w0 + b;
+      const size_t in =
+          g + 1 < nblocks ? VSPH_VTK_BLOCK : nbytes - g * VSPH_VTK_BLOCK;
+      uLongf zlen = (uLongf)slot;
+      const int zs = compress2(o->z + b * slot, &zlen,
+                               (const Bytef *)raw + g * VSPH_VTK_BLOCK,
+                               (uLong)in, o->level);
+      if (zs != Z_OK && zs < bad) bad = zs;
+      zl[3 + g] = zlen;
+    }
+    if (bad) {
+      free(zl);
+      VSPH_FAIL(VSPH_ELIB, "zlib cannot compress %s: %s", name, zError(bad));
+    }
+    if (stop && *stop) {
+      free(zl);
+      return VSPH_EINTR;
+    }
+    for (size_t b = 0; b < nw && !st; b++) { /* in order */
+      const size_t zb = (size_t)zl[3 + w0 + b];
+      if (fwrite(o->z + b * slot, 1, zb, o->spill) != zb) st = VSPH_EIO;
+      len += zb;
+    }
   }
-  if (bad) {
-    free(zl);
-    VSPH_FAIL(VSPH_ELIB, "zlib cannot compress %s: %s", name, zError(bad));
-  }
-  if (stop && *stop) {
-    free(zl);
-    return VSPH_EINTR;
-  }
-  unsigned char *z = z0;
-  for (size_t b = 0; b < nblocks; b++) { /* close up, in order */
-    memcpy(h + (3 + b) * sizeof(uint64_t), &zl[b], sizeof zl[b]);
-    memmove(z, z0 + b * slot, zl[b]);
-    z += zl[b];
-  }
+  if (!st && (fseeko(o->spill, (off_t)(at + 3 * sizeof *zl), SEEK_SET) ||
+              fwrite(zl + 3, sizeof *zl, nblocks, o->spill) != nblocks ||
+              fseeko(o->spill, 0, SEEK_END)))
+    st = VSPH_EIO;
   free(zl);
-  o->e[o->ne++] = (struct entry){sec, name, type, ncomp, ntuples, o->len};
-  o->len = (size_t)(z - o->data);
+  if (st)
+    VSPH_FAIL(VSPH_EIO, "cannot write a snapshot's %s to its scratch file: %s",
+              name, strerror(errno));
+  o->e[o->ne++] = (struct entry){sec, name, type, ncomp, ntuples, at};
+  o->len = at + len;
   return VSPH_OK;
 }
 
@@ -302,8 +346,9 @@ static void write_section(FILE *f, const struct out *o, enum section sec) {
 }
 
 /* The XML header (the descriptions also as a comment, for a reader of the
- * text), then the appended block. */
-static void write_file(FILE *f, const struct out *o, size_t n, double t) {
+ * text), then the appended block, copied from its scratch file.
+ * VSPH_OK or VSPH_EIO (the scratch file unreadable). */
+static int write_file(FILE *f, const struct out *o, size_t n, double t) {
   fprintf(f,
           "<?xml version=\"1.0\"?>\n"
           "<!-- vsph particles at t = %.17g s. Arrays (FieldData "
@@ -333,8 +378,17 @@ static void write_file(FILE *f, const struct out *o, size_t n, double t) {
   fprintf(f,
           "</Verts>\n</Piece>\n</PolyData>\n"
           "<AppendedData encoding=\"raw\">\n_");
-  fwrite(o->data, 1, o->len, f);
+  char chunk[1 << 16];
+  size_t left = o->len;
+  if (o->spill && fseeko(o->spill, 0, SEEK_SET)) return VSPH_EIO;
+  while (left > 0) {
+    const size_t want = left < sizeof chunk ? left : sizeof chunk;
+    if (fread(chunk, 1, want, o->spill) != want) return VSPH_EIO;
+    fwrite(chunk, 1, want, f);
+    left -= want;
+  }
   fputs(TRAILER, f);
+  return VSPH_OK;
 }
 
 /* A file's arrays @p o (built, status @p st) written as DIR/NAME where
@@ -344,11 +398,18 @@ static int emit(struct out *o, int st, const char *dir, const char *name,
                 size_t n, double t) {
   FILE *f = st ? NULL : vsph_files_open(dir, name);
   if (!st && !f) st = VSPH_EIO;
-  if (!st) {
-    write_file(f, o, n, t);
+  if (!st && write_file(f, o, n, t)) {
+    vsph_files_discard(f, dir, name);
+    st = VSPH_EIO;
+    vsph_status_report(st, __FILE__, __LINE__,
+                       "cannot read back the scratch file of %s/%s", dir, name);
+  } else if (!st) {
     st = vsph_files_close(f, dir, name);
   }
-  if (o) free(o->data);
+  if (o) {
+    if (o->spill) fclose(o->spill);
+    free(o->z);
+  }
   free(o);
   return st;
 }
@@ -356,7 +417,8 @@ static int emit(struct out *o, int st, const char *dir, const char *name,
 /* The arrays of a file of @p n particles (vertex cells, snapshot level)
  * with its scratch: a particle order and a buffer of 3 doubles a
  * particle. NULL, nothing held, where they cannot be had. */
-static struct out *out_alloc(size_t n, size_t **order, void **buf) {
+static struct out *out_alloc(const char *dir, size_t n, size_t **order,
+                             void **buf) {
   const size_t len = n ? n : 1;
   *order = malloc(len * sizeof **order);
   *buf = malloc(3 * len * sizeof(double));
@@ -367,6 +429,7 @@ static struct out *out_alloc(size_t n, size_t **order, void **buf) {
     free(o);
     return NULL;
   }
+  o->dir = dir;
   o->nverts = n;
   o->level = LEVEL;
   return o;
@@ -379,7 +442,7 @@ int vsph_vtk_write(const char *dir, const char *name,
   const size_t n = n_fluid;
   size_t *order;
   void *buf;
-  struct out *o = out_alloc(n, &order, &buf);
+  struct out *o = out_alloc(dir, n, &order, &buf);
   if (!o)
     VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot of %zu particles", n);
   o->stop = stop;
@@ -401,7 +464,7 @@ int vsph_vtk_write_walls(const char *dir, const char *name,
   for (size_t i = 0; i < p->n; i++) n += p->id[i] >= n_fluid;
   size_t *order;
   void *buf;
-  struct out *o = out_alloc(n, &order, &buf);
+  struct out *o = out_alloc(dir, n, &order, &buf);
   if (!o) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the walls of a snapshot");
   size_t k = 0;
   for (size_t i = 0; i < p->n; i++)
@@ -540,6 +603,7 @@ int vsph_vtk_write_frame(const char *dir, const char *name,
     vsph_status_report(st, __FILE__, __LINE__,
                        "cannot allocate a frame of %zu particles", s->n);
   if (!st) {
+    o->dir = dir;
     o->level = FRAME_LEVEL;
     o->no_vectors = !(fields & VSPH_VTK_FRAME_VELOCITY);
     o->no_scalars = !(fields & VSPH_VTK_FRAME_SCALARS);

@@ -792,21 +792,33 @@ static int get(struct cursor *c, void *dst, size_t n) {
   return 1;
 }
 
-/* The particle arrays in a fixed order, present or not: *n receives the
- * count, sizes[] each element's size. */
-static int arrays(struct vsph_particles *p, void **a[32], size_t sz[32]) {
+/* The particle arrays in a fixed order, present or not: the count
+ * returned, sz[] each element's size; bit k of *derived set where array k
+ * is one that every evaluation writes before anything reads it: the
+ * rates (the accelerations, d rho/dt, de/dt). Not so volume and pressure
+ * (wall particles' are read by the fluid's summed density before the
+ * walls' own are made again) nor the transport velocity and its
+ * acceleration (read by the next step's first kick). */
+static int arrays(struct vsph_particles *p, void **a[32], size_t sz[32],
+                  uint64_t *derived) {
   int n = 0;
+  uint64_t dv = 0;
   for (int k = 0; k < p->dim; k++) {
     sz[n] = sizeof(double), a[n++] = (void **)&p->pos[k];
     sz[n] = sizeof(double), a[n++] = (void **)&p->vel[k];
-    sz[n] = sizeof(double), a[n++] = (void **)&p->acc[k];
+    dv |= 1ull << n, sz[n] = sizeof(double), a[n++] = (void **)&p->acc[k];
     sz[n] = sizeof(double), a[n++] = (void **)&p->tvel[k];
     sz[n] = sizeof(double), a[n++] = (void **)&p->bacc[k];
   }
   double **sc[7] = {&p->m, &p->rho, &p->vol, &p->p, &p->drho, &p->e, &p->de};
-  for (int k = 0; k < 7; k++) sz[n] = sizeof(double), a[n++] = (void **)sc[k];
+  static const int fresh[7] = {0, 0, 0, 0, 1, 0, 1};
+  for (int k = 0; k < 7; k++) {
+    if (fresh[k]) dv |= 1ull << n;
+    sz[n] = sizeof(double), a[n++] = (void **)sc[k];
+  }
   sz[n] = sizeof *p->mat, a[n++] = (void **)&p->mat;
   sz[n] = sizeof *p->id, a[n++] = (void **)&p->id;
+  *derived = dv;
   return n;
 }
 
@@ -824,7 +836,9 @@ static size_t kept_len(const struct vsph_integrate *s) {
   return s->props.eq.tvf ? s->n_fluid : s->p->n;
 }
 
-size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf) {
+/* vsph_integrate_pack, and with @p lean 1 vsph_integrate_pack_lean */
+static size_t pack(const struct vsph_integrate *s, unsigned char *buf,
+                   int lean) {
   struct cursor c = {.buf = buf};
   struct vsph_particles *p = s->p;
   const uint64_t head[6] = {(uint64_t)p->dim,   (uint64_t)p->n,
@@ -836,18 +850,29 @@ size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf) {
   put(&c, s->reason, sizeof s->reason);
   void **a[32];
   size_t sz[32];
-  const int na = arrays(p, a, sz);
+  uint64_t derived;
+  const int na = arrays(p, a, sz, &derived);
   uint64_t have = 0;
   for (int k = 0; k < na; k++) have |= (uint64_t)(*a[k] != NULL) << k;
+  if (lean) have &= ~derived;
   put(&c, &have, sizeof have);
   for (int k = 0; k < na; k++)
-    if (*a[k]) put(&c, *a[k], p->n * sz[k]);
+    if (have >> k & 1) put(&c, *a[k], p->n * sz[k]);
   const int32_t kept = s->kept;
   put(&c, &kept, sizeof kept);
   if (kept) /* the rates kept by particle id */
     for (int f = 0; f < kept_fields(s); f++)
       put(&c, s->ks[f], kept_len(s) * sizeof(double));
   return c.at;
+}
+
+size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf) {
+  return pack(s, buf, 0);
+}
+
+size_t vsph_integrate_pack_lean(const struct vsph_integrate *s,
+                                unsigned char *buf) {
+  return pack(s, buf, 1);
 }
 
 /* vsph_integrate_unpack, and with @p exact 0 vsph_integrate_restore: a
@@ -873,9 +898,11 @@ static int unpack(struct vsph_integrate *s, const unsigned char *buf,
               s->n_fluid, p->dim);
   void **a[32];
   size_t sz[32];
-  const int na = arrays(p, a, sz);
-  for (int k = 0; k < na; k++)
-    if ((have >> k & 1) != (*a[k] != NULL))
+  uint64_t derived;
+  const int na = arrays(p, a, sz, &derived);
+  for (int k = 0; k < na; k++) /* a lean pack leaves the derived out */
+    if ((have >> k & 1) != (*a[k] != NULL) &&
+        !(*a[k] && (derived >> k & 1)))
       VSPH_FAIL(VSPH_EINVAL, "the saved state's fields are not this run's");
   /* the very capacity the run had: the buffers as they were */
   int st = vsph_particles_reserve(p, (size_t)head[2]);
@@ -885,9 +912,17 @@ static int unpack(struct vsph_integrate *s, const unsigned char *buf,
   if (!st) st = buffers_alloc(s);
   if (st) return st;
   p->n = (size_t)head[1];
-  for (int k = 0; k < na; k++)
-    if (*a[k] && !get(&c, *a[k], p->n * sz[k]))
-      VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
+  for (int k = 0; k < na; k++) {
+    if (!*a[k]) continue;
+    if (have >> k & 1) {
+      if (!get(&c, *a[k], p->n * sz[k]))
+        VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
+    } else { /* derived, left out: NaN until an evaluation computes it,
+                so that a read before that shows (every one is double) */
+      double *x = *a[k];
+      for (size_t i = 0; i < p->n; i++) x[i] = (double)NAN;
+    }
+  }
   int32_t kept;
   if (!get(&c, &kept, sizeof kept))
     VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
@@ -963,7 +998,8 @@ static void put_back(struct vsph_integrate *s, size_t n) {
   for (size_t i = 0; i < n; i++) s->where[p->id[i]] = i;
   void **a[32];
   size_t sz[32];
-  const int na = arrays(p, a, sz);
+  uint64_t derived;
+  const int na = arrays(p, a, sz, &derived);
   unsigned char *const tmp = (unsigned char *)s->ks[0];
   for (int k = 0; k < na; k++) {
     unsigned char *const x = *a[k];

@@ -124,8 +124,18 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
  *  @return the bytes packed. */
 size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf);
 
-/** @brief Restore a state packed by vsph_integrate_pack (@p len bytes at
- *  @p buf; *used receives those read).
+/** @brief vsph_integrate_pack without the rates, which every evaluation
+ *  writes before anything reads them (the accelerations, d rho/dt,
+ *  de/dt): in 2-D 9 doubles a particle and its material where the whole
+ *  state holds 12 (vsph_run keeps the step's start so while a snapshot
+ *  within the step is written).
+ *  Unpacked or restored, those arrays hold NaN until the next evaluation;
+ *  the next step goes on bitwise as from the whole state. */
+size_t vsph_integrate_pack_lean(const struct vsph_integrate *s,
+                                unsigned char *buf);
+
+/** @brief Restore a state packed by vsph_integrate_pack or
+ *  vsph_integrate_pack_lean (@p len bytes at @p buf; *used receives those read).
  *  @return VSPH_OK, VSPH_EINVAL (cut short, or not this set-up's: the
  *  integrator is then unusable and must be freed), VSPH_ENOMEM. */
 int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,

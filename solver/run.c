@@ -439,14 +439,15 @@ static int check_cost(const struct vsph_run_props *rp,
       sc->walls.n * layers * 2.0 * pow(n, (sc->dim - 1.0) / sc->dim);
   /* the lattice the scene lays, which the integrator takes */
   /* with snapshots, the state a snapshot within a step is reached from,
-   * packed while it is written (vsph_integrate_pack's arrays: positions,
-   * velocities, accelerations, m, rho, V, p, d rho/dt, id; the transport
-   * velocity's two vectors, the gas law's energy and its rate) */
+   * packed while it is written (vsph_integrate_pack_lean's arrays:
+   * positions, velocities, m, rho, V, p, id, the transport velocity's
+   * two vectors, the gas law's energy; the material, one byte counted as
+   * a double) */
   const double side =
       rp->snapshots > 0
           ? (n + ghosts) * 8.0 *
-                (3.0 * sc->dim + 6.0 + (rp->tvf ? 2.0 * sc->dim : 0.0) +
-                 (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS ? 2.0 : 0.0))
+                (2.0 * sc->dim + 6.0 + (rp->tvf ? 2.0 * sc->dim : 0.0) +
+                 (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS ? 1.0 : 0.0))
           : 0.0;
   const double bytes =
       vsph_integrate_bytes_estimate(sc->dim, n, ghosts,
@@ -650,7 +651,7 @@ static double snap_time(const struct vsph_run *r, double t) {
 }
 
 /* The state at the snapshot time r->side_t: the current state packed into
- * r->side, then, where r->side_t lies beyond the current time (strictly
+ * r->side (vsph_integrate_pack_lean: what a step reads), then, where r->side_t lies beyond the current time (strictly
  * within the coming step), a step of its own to it (the time set to it
  * exactly, the step count left as it was: the run's steps are those of
  * its path); then one evaluation, so that its pressures, ghosts and wall
