@@ -50,79 +50,87 @@ static struct vsph_particles *copy_of(const struct vsph_particles *p) {
   return q;
 }
 
-int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
-                             const struct vsph_kernel_type *k, double h,
-                             struct vsph_diagnostics *d,
-                             const volatile sig_atomic_t *stop) {
-  memset(d, 0, sizeof *d);
-  if (stop && *stop) return VSPH_EINTR;
-  const int dim = p->dim;
-  d->n = n;
-  d->dim = dim;
-  d->h = h;
-  const size_t len = n ? n : 1;
-  for (int a = 0; a < 3; a++) d->vort[a] = calloc(len, sizeof(double));
-  d->divr = calloc(len, sizeof(double));
-  d->surf = calloc(len, 1);
-  struct vsph_particles *q = copy_of(p);
-  struct vsph_cells *cells = vsph_cells_alloc();
-  int st = VSPH_OK;
-  if (!d->vort[0] || !d->vort[1] || !d->vort[2] || !d->divr || !d->surf || !q ||
-      !cells) {
-    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
-                       "cannot allocate the diagnostics of %zu particles", n);
-    st = VSPH_ENOMEM;
-  }
-  /* a state stopped as unstable may hold non-finite positions: its
-   * diagnostics are NaN (the snapshot is still written) */
-  int finite = 1;
-  for (int a = 0; a < dim && !st; a++)
-    for (size_t i = 0; i < p->n; i++) finite &= isfinite(p->pos[a][i]) != 0;
-  if (!st && !finite) {
-    for (size_t i = 0; i < n; i++) {
-      for (int a = 0; a < 3; a++) d->vort[a][i] = NAN;
-      d->divr[i] = NAN;
-    }
-    vsph_cells_free(cells);
-    vsph_particles_free(q);
-    return VSPH_OK;
-  }
-  if (!st) st = vsph_cells_build(cells, q, k->kappa * h);
-  if (!st) {
-    struct vsph_pair_kernel pk;
-    vsph_pair_kernel_init(&pk, k, dim, h);
-    const double thr = vsph_diagnostics_surface_threshold(dim);
-    const int kid = pk.dfq_id;
-    /* gather: particle i writes only its own entries */
-#pragma omp parallel for schedule(dynamic, 16)
+/* One neighbour's share of particle i's sums. */
+struct share {
+  double x[3], du[3], VF, s2;
+};
+
+/* The canonical order of a particle's neighbours: by their offset x, a
+ * point that no two neighbours share; so the sums do not depend on the
+ * particles' order, nor on the cell list that found them. */
+static int by_offset(const void *a, const void *b) {
+  const struct share *u = a, *v = b;
+  for (int k = 0; k < 3; k++)
+    if (u->x[k] != v->x[k]) return u->x[k] < v->x[k] ? -1 : 1;
+  return 0;
+}
+
+/* The diagnostics of the fluid particles of @p q (sorted by @p cells)
+ * into @p d (allocated, zeroed). VSPH_OK, VSPH_EINTR or VSPH_ENOMEM. */
+static int sums(const struct vsph_particles *q, size_t n,
+                const struct vsph_cells *cells,
+                const struct vsph_kernel_type *k, double h,
+                struct vsph_diagnostics *d, const volatile sig_atomic_t *stop) {
+  const int dim = q->dim;
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, k, dim, h);
+  const double thr = vsph_diagnostics_surface_threshold(dim);
+  const int kid = pk.dfq_id;
+  int nomem = 0; /* a thread's list could not grow */
+  /* gather: particle i writes only its own entries */
+#pragma omp parallel
+  {
+    struct share *sh = NULL;
+    size_t cap = 0;
+    int short_of = 0;
+#pragma omp for schedule(dynamic, 16)
     for (size_t c = 0; c < cells->ncells; c++) {
-      if (stop && *stop) continue; /* a flag only ever raised: seen below */
+      if ((stop && *stop) || short_of) continue; /* seen below */
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
            i++) {
         const size_t id = q->id[i];
         if (id >= n) continue;
-        double w[3] = {0, 0, 0}, dr = 0.0, ui[3] = {0, 0, 0};
+        double ui[3] = {0, 0, 0};
         for (int a = 0; a < dim; a++) ui[a] = q->vel[a][i];
         struct vsph_pair_iter it;
         struct vsph_pair_chunk b;
+        size_t m = 0;
         vsph_pair_begin(&it, &pk, q, &rg, i);
         while (vsph_pair_gather(&it, dim, kid, &b)) {
-          for (size_t m = 0; m < b.m; m++) {
-            const size_t j = b.j[m];
-            double du[3] = {0, 0, 0}, x[3] = {0, 0, 0};
-            for (int a = 0; a < dim; a++) {
-              du[a] = q->vel[a][j] - ui[a];
-              x[a] = b.x[a][m];
+          if (m + b.m > cap) {
+            const size_t nc = 2 * (m + b.m);
+            struct share *g = realloc(sh, nc * sizeof *g);
+            if (!g) {
+              short_of = 1;
+              break;
             }
-            /* grad_i W_ij = -x F: omega -= VF x cross du, div r -= VF s2 */
-            dr -= b.VF[m] * b.s2[m];
-            w[2] -= b.VF[m] * (x[0] * du[1] - x[1] * du[0]);
-            if (dim == 3) {
-              w[0] -= b.VF[m] * (x[1] * du[2] - x[2] * du[1]);
-              w[1] -= b.VF[m] * (x[2] * du[0] - x[0] * du[2]);
+            sh = g;
+            cap = nc;
+          }
+          for (size_t r = 0; r < b.m; r++, m++) {
+            const size_t j = b.j[r];
+            struct share *e = &sh[m];
+            for (int a = 0; a < 3; a++) {
+              e->x[a] = a < dim ? b.x[a][r] : 0.0;
+              e->du[a] = a < dim ? q->vel[a][j] - ui[a] : 0.0;
             }
+            e->VF = b.VF[r];
+            e->s2 = b.s2[r];
+          }
+        }
+        if (short_of) break;
+        qsort(sh, m, sizeof *sh, by_offset);
+        double w[3] = {0, 0, 0}, dr = 0.0;
+        for (size_t r = 0; r < m; r++) {
+          const double *x = sh[r].x, *du = sh[r].du, VF = sh[r].VF;
+          /* grad_i W_ij = -x F: omega -= VF x cross du, div r -= VF s2 */
+          dr -= VF * sh[r].s2;
+          w[2] -= VF * (x[0] * du[1] - x[1] * du[0]);
+          if (dim == 3) {
+            w[0] -= VF * (x[1] * du[2] - x[2] * du[1]);
+            w[1] -= VF * (x[2] * du[0] - x[0] * du[2]);
           }
         }
         if (dim >= 2) d->vort[2][id] = w[2];
@@ -134,10 +142,89 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
         d->surf[id] = dr < thr;
       }
     }
+    free(sh);
+    if (short_of) {
+#pragma omp atomic write
+      nomem = 1;
+    }
   }
+  if (nomem)
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the diagnostics' neighbour lists");
+  return stop && *stop ? VSPH_EINTR : VSPH_OK;
+}
+
+/* The result arrays of @p n particles (zero), and whether @p p's
+ * positions are all finite. VSPH_OK or VSPH_ENOMEM (@p d freed). */
+static int start(const struct vsph_particles *p, size_t n, double h,
+                 struct vsph_diagnostics *d, int *finite) {
+  memset(d, 0, sizeof *d);
+  d->n = n;
+  d->dim = p->dim;
+  d->h = h;
+  const size_t len = n ? n : 1;
+  for (int a = 0; a < 3; a++) d->vort[a] = calloc(len, sizeof(double));
+  d->divr = calloc(len, sizeof(double));
+  d->surf = calloc(len, 1);
+  if (!d->vort[0] || !d->vort[1] || !d->vort[2] || !d->divr || !d->surf) {
+    vsph_diagnostics_free(d);
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the diagnostics of %zu particles",
+              n);
+  }
+  /* a state stopped as unstable may hold non-finite positions: its
+   * diagnostics are NaN (the snapshot is still written) */
+  int fin = 1;
+  for (int a = 0; a < p->dim; a++)
+    for (size_t i = 0; i < p->n; i++) fin &= isfinite(p->pos[a][i]) != 0;
+  if (!fin)
+    for (size_t i = 0; i < n; i++) {
+      for (int a = 0; a < 3; a++) d->vort[a][i] = NAN;
+      d->divr[i] = NAN;
+    }
+  *finite = fin;
+  return VSPH_OK;
+}
+
+int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
+                             const struct vsph_kernel_type *k, double h,
+                             struct vsph_diagnostics *d,
+                             const volatile sig_atomic_t *stop) {
+  memset(d, 0, sizeof *d);
+  if (stop && *stop) return VSPH_EINTR;
+  int finite;
+  int st = start(p, n, h, d, &finite);
+  if (st || !finite) return st;
+  struct vsph_particles *q = copy_of(p);
+  struct vsph_cells *cells = vsph_cells_alloc();
+  if (!q || !cells) {
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
+                       "cannot allocate the diagnostics of %zu particles", n);
+    st = VSPH_ENOMEM;
+  }
+  if (!st) st = vsph_cells_build(cells, q, k->kappa * h);
+  if (!st) st = sums(q, n, cells, k, h, d, stop);
   vsph_cells_free(cells);
   vsph_particles_free(q);
-  if (!st && stop && *stop) st = VSPH_EINTR;
+  if (st) vsph_diagnostics_free(d);
+  return st;
+}
+
+int vsph_diagnostics_compute_cells(const struct vsph_particles *p, size_t n,
+                                   const struct vsph_cells *cells,
+                                   const struct vsph_kernel_type *k, double h,
+                                   struct vsph_diagnostics *d,
+                                   const volatile sig_atomic_t *stop) {
+  memset(d, 0, sizeof *d);
+  if (!p || !cells || !k || !d || !(h > 0.0) ||
+      (!cells->direct &&
+       cells->edge * VSPH_CELLS_SUB < k->kappa * h * (1.0 - 1e-12)))
+    VSPH_FAIL(VSPH_EINVAL,
+              "vsph_diagnostics_compute_cells: a NULL argument, "
+              "h <= 0 or cells narrower than the kernel's reach");
+  if (stop && *stop) return VSPH_EINTR;
+  int finite;
+  int st = start(p, n, h, d, &finite);
+  if (st || !finite) return st;
+  st = sums(p, n, cells, k, h, d, stop);
   if (st) vsph_diagnostics_free(d);
   return st;
 }

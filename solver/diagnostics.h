@@ -8,6 +8,7 @@
 
 struct vsph_particles;
 struct vsph_kernel_type;
+struct vsph_cells;
 
 /** @file diagnostics.h
  *  @brief Per-particle fields for pictures and snapshots, not used by the
@@ -19,9 +20,11 @@ struct vsph_kernel_type;
  *  d/2 at a free surface, with the free-surface flag (div r)_i below a
  *  threshold (docs/theory.md section 5: 1.5 in 2-D, 2.4 in 3-D, as in Lee
  *  et al. 2008). Both sums run over the pair iterator of solver/pair.h,
- *  on a sorted copy of the set, so the caller's particles are neither
- *  moved nor reordered (a run's results do not depend on whether it wrote
- *  snapshots). No I/O. */
+ *  on a sorted copy of the set (or on the set as its own cell list sorted
+ *  it), so the caller's particles are neither moved nor reordered (a run's
+ *  results do not depend on whether it wrote snapshots); each particle's
+ *  neighbours are summed in the order of their offsets, so the fields do
+ *  not depend on the particles' order either. No I/O. */
 
 /** Diagnostics of the particles with id < n, indexed by id. */
 struct vsph_diagnostics {
@@ -49,6 +52,20 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
                              const struct vsph_kernel_type *k, double h,
                              struct vsph_diagnostics *d,
                              const volatile sig_atomic_t *stop);
+
+/** @brief vsph_diagnostics_compute of particles @p p that @p cells sorted
+ *  (as an evaluation leaves an integrator's particles: its cell list for
+ *  them, at a reach of at least the kernel's), with no copy and no cell
+ *  list of its own. The same bits as vsph_diagnostics_compute: each
+ *  particle's sums run over its neighbours in the order of their offsets,
+ *  whatever the particles' order.
+ *  @return as vsph_diagnostics_compute, or VSPH_EINVAL (a NULL argument,
+ *  h <= 0, or cells narrower than the kernel's reach). */
+int vsph_diagnostics_compute_cells(const struct vsph_particles *p, size_t n,
+                                   const struct vsph_cells *cells,
+                                   const struct vsph_kernel_type *k, double h,
+                                   struct vsph_diagnostics *d,
+                                   const volatile sig_atomic_t *stop);
 
 /** A probe's reading at a point. */
 struct vsph_diagnostics_probe {

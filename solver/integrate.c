@@ -901,8 +901,7 @@ static int unpack(struct vsph_integrate *s, const unsigned char *buf,
   uint64_t derived;
   const int na = arrays(p, a, sz, &derived);
   for (int k = 0; k < na; k++) /* a lean pack leaves the derived out */
-    if ((have >> k & 1) != (*a[k] != NULL) &&
-        !(*a[k] && (derived >> k & 1)))
+    if ((have >> k & 1) != (*a[k] != NULL) && !(*a[k] && (derived >> k & 1)))
       VSPH_FAIL(VSPH_EINVAL, "the saved state's fields are not this run's");
   /* the very capacity the run had: the buffers as they were */
   int st = vsph_particles_reserve(p, (size_t)head[2]);

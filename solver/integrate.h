@@ -135,7 +135,8 @@ size_t vsph_integrate_pack_lean(const struct vsph_integrate *s,
                                 unsigned char *buf);
 
 /** @brief Restore a state packed by vsph_integrate_pack or
- *  vsph_integrate_pack_lean (@p len bytes at @p buf; *used receives those read).
+ *  vsph_integrate_pack_lean (@p len bytes at @p buf; *used receives those
+ * read).
  *  @return VSPH_OK, VSPH_EINVAL (cut short, or not this set-up's: the
  *  integrator is then unusable and must be freed), VSPH_ENOMEM. */
 int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,

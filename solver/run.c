@@ -651,23 +651,23 @@ static double snap_time(const struct vsph_run *r, double t) {
 }
 
 /* The state at the snapshot time r->side_t: the current state packed into
- * r->side (vsph_integrate_pack_lean: what a step reads), then, where r->side_t lies beyond the current time (strictly
- * within the coming step), a step of its own to it (the time set to it
- * exactly, the step count left as it was: the run's steps are those of
- * its path); then one evaluation, so that its pressures, ghosts and wall
- * particles are this state's, as an energy row leaves them (a step leaves
- * its last stage's). The next vsph_run_iterate puts the packed state back.
- * Interruptible 0: a stop is not seen within the step (the restore of a
- * checkpoint taken there). VSPH_OK; or the state put back as it was and 1
- * where the step went unstable (the snapshot then waits for the step's
- * end, as any other output), VSPH_EINTR where it was stopped, or an
+ * r->side (vsph_integrate_pack_lean: what a step reads), then, where
+ * r->side_t lies beyond the current time (strictly within the coming step), a
+ * step of its own to it (the time set to it exactly, the step count left as it
+ * was: the run's steps are those of its path); then one evaluation, so that its
+ * pressures, ghosts and wall particles are this state's, as an energy row
+ * leaves them (a step leaves its last stage's). The next vsph_run_iterate puts
+ * the packed state back. Interruptible 0: a stop is not seen within the step
+ * (the restore of a checkpoint taken there). VSPH_OK; or the state put back as
+ * it was and 1 where the step went unstable (the snapshot then waits for the
+ * step's end, as any other output), VSPH_EINTR where it was stopped, or an
  * internal failure. */
 static int side_step(struct vsph_run *r, int interruptible) {
   struct vsph_integrate *s = r->integ;
-  const size_t len = vsph_integrate_pack(s, NULL), steps = s->steps;
+  const size_t len = vsph_integrate_pack_lean(s, NULL), steps = s->steps;
   unsigned char *buf = malloc(len);
   if (!buf) VSPH_FAIL(VSPH_ENOMEM, "cannot keep the state for a snapshot");
-  vsph_integrate_pack(s, buf);
+  vsph_integrate_pack_lean(s, buf);
   if (r->side_t > s->t * (1.0 + 1e-12)) {
     const volatile sig_atomic_t *stop = s->stop;
     if (!interruptible) s->stop = NULL;
@@ -688,7 +688,9 @@ static int side_step(struct vsph_run *r, int interruptible) {
   r->side_len = len;
   struct vsph_equations_energy en;
   struct vsph_equations_budget b;
-  return vsph_integrate_diagnostics(s, &en, &b);
+  const int st = vsph_integrate_diagnostics(s, &en, &b);
+  r->evaluated = st == VSPH_OK;
+  return st;
 }
 
 /* Back from a snapshot's own time to the state it was reached from. */
@@ -703,6 +705,7 @@ static int side_back(struct vsph_run *r) {
 int vsph_run_iterate(struct vsph_run *r) {
   if (!r) VSPH_FAIL(VSPH_EINVAL, "vsph_run_iterate: a NULL argument");
   r->due = 0;
+  r->evaluated = 0;
   if (r->side) {
     const int back = side_back(r);
     if (back) return back;
@@ -757,7 +760,9 @@ int vsph_run_iterate(struct vsph_run *r) {
 int vsph_run_row(struct vsph_run *r, struct vsph_run_row *row) {
   if (!r || !row) VSPH_FAIL(VSPH_EINVAL, "vsph_run_row: a NULL argument");
   row->t = vsph_run_time(r);
-  return vsph_integrate_diagnostics(r->integ, &row->en, &row->b);
+  const int st = vsph_integrate_diagnostics(r->integ, &row->en, &row->b);
+  r->evaluated = st == VSPH_OK;
+  return st;
 }
 
 double vsph_run_time(const struct vsph_run *r) {
@@ -845,6 +850,7 @@ int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len) {
   r->side = NULL;
   r->side_len = 0;
   r->side_t = rs.side_t;
+  r->evaluated = 0;
   /* packed at a snapshot's own time: that state made again, to the bit,
    * from the step's start, whatever a stop asks meanwhile */
   const int side = rs.side ? side_step(r, 0) : VSPH_OK;

@@ -668,6 +668,117 @@ START_TEST(test_scene_cfl) {
 }
 END_TEST
 
+/* vsph_integrate_pack_lean leaves out exactly the rates (d accelerations
+ * and d rho/dt a particle, ghosts and wall particles included: the
+ * standing wave has both), which read back as NaN; and two steps from the
+ * lean state are bitwise those from the whole one (nothing a step reads
+ * was left out; a rate read before it is written would show as NaN). */
+START_TEST(test_pack_lean) {
+  struct vsph_scene sc;
+  struct vsph_integrate *s =
+      make_run("standing-wave", VSPH_VISCOUS_MGF, 12, &sc, NULL, NULL);
+  ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  struct vsph_particles *p = s->p;
+  const int d = p->dim;
+  const size_t nfull = vsph_integrate_pack(s, NULL),
+               nlean = vsph_integrate_pack_lean(s, NULL);
+  ck_assert_uint_eq(nfull - nlean, p->n * (size_t)(d + 1) * sizeof(double));
+  unsigned char *full = malloc(nfull), *lean = malloc(nlean);
+  ck_assert_ptr_nonnull(full);
+  ck_assert_ptr_nonnull(lean);
+  ck_assert_uint_eq(vsph_integrate_pack(s, full), nfull);
+  ck_assert_uint_eq(vsph_integrate_pack_lean(s, lean), nlean);
+  const double dt = vsph_integrate_dt(s);
+  double *after[2][3];
+  size_t n_after[2];
+  for (int k = 0; k < 2; k++) {
+    ck_assert_int_eq(k ? vsph_integrate_restore(s, lean, nlean)
+                       : vsph_integrate_restore(s, full, nfull),
+                     0);
+    if (k) /* the rates as the lean state leaves them */
+      for (size_t i = 0; i < p->n; i++) {
+        ck_assert(isnan(p->drho[i]));
+        for (int a = 0; a < d; a++) ck_assert(isnan(p->acc[a][i]));
+      }
+    for (int st = 0; st < 2; st++)
+      ck_assert_int_eq(vsph_integrate_step(s, dt), 0);
+    n_after[k] = p->n;
+    for (int a = 0; a < d; a++) {
+      after[k][a] = malloc(p->n * sizeof(double));
+      ck_assert_ptr_nonnull(after[k][a]);
+      memcpy(after[k][a], p->vel[a], p->n * sizeof(double));
+    }
+  }
+  ck_assert_uint_eq(n_after[0], n_after[1]);
+  for (int a = 0; a < d; a++) {
+    ck_assert_mem_eq(after[0][a], after[1][a], n_after[0] * sizeof(double));
+    free(after[0][a]);
+    free(after[1][a]);
+  }
+  free(full);
+  free(lean);
+  vsph_integrate_free(s);
+}
+END_TEST
+
+/* The diagnostics of a run's evaluated state on its own cell list
+ * (vsph_diagnostics_compute_cells, no copy) are bitwise those of the
+ * sorted copy, and both do not move by a bit when the particles come in
+ * the opposite order (each sum runs over the neighbours in the order of
+ * their offsets); a cell list narrower than the kernel is refused. */
+START_TEST(test_diagnostics_order) {
+  struct vsph_scene sc;
+  struct vsph_integrate *s =
+      make_run("standing-wave", VSPH_VISCOUS_MGF, 16, &sc, NULL, NULL);
+  ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  struct vsph_equations_energy en;
+  struct vsph_equations_budget bu;
+  ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &bu), 0);
+  struct vsph_particles *p = s->p;
+  const struct vsph_kernel_type *k = s->props.eq.visc.kernel;
+  const double h = s->props.eq.visc.h;
+  const size_t nf = s->n_fluid;
+  struct vsph_diagnostics a, b, c;
+  ck_assert_int_eq(
+      vsph_diagnostics_compute_cells(p, nf, s->cells, k, h, &a, NULL), 0);
+  ck_assert_int_eq(vsph_diagnostics_compute(p, nf, k, h, &b, NULL), 0);
+  /* the arrays the sums read, reversed */
+  const int d = p->dim;
+  double *f[8];
+  int nfd = 0;
+  for (int q = 0; q < d; q++) f[nfd++] = p->pos[q], f[nfd++] = p->vel[q];
+  f[nfd++] = p->vol;
+  for (size_t i = 0, j = p->n - 1; i < j; i++, j--) {
+    for (int q = 0; q < nfd; q++) {
+      const double t = f[q][i];
+      f[q][i] = f[q][j];
+      f[q][j] = t;
+    }
+    const size_t t = p->id[i];
+    p->id[i] = p->id[j];
+    p->id[j] = t;
+  }
+  ck_assert_int_eq(vsph_diagnostics_compute(p, nf, k, h, &c, NULL), 0);
+  const struct vsph_diagnostics *o[2] = {&b, &c};
+  for (int q = 0; q < 2; q++) {
+    ck_assert_mem_eq(a.vort[2], o[q]->vort[2], nf * sizeof(double));
+    ck_assert_mem_eq(a.divr, o[q]->divr, nf * sizeof(double));
+    ck_assert_mem_eq(a.surf, o[q]->surf, nf);
+  }
+  size_t surface = 0;
+  for (size_t i = 0; i < nf; i++) surface += a.surf[i];
+  ck_assert_uint_gt(surface, 0); /* the free surface is there */
+  vsph_diagnostics_free(&a);
+  vsph_diagnostics_free(&b);
+  vsph_diagnostics_free(&c);
+  struct vsph_diagnostics e;
+  ck_assert_int_eq(
+      vsph_diagnostics_compute_cells(p, nf, s->cells, k, 3.0 * h, &e, NULL),
+      VSPH_EINVAL);
+  vsph_integrate_free(s);
+}
+END_TEST
+
 Suite *vsph_solver_suite(void) {
   Suite *s = suite_create("solver");
   TCase *tc = tcase_create("runs");
@@ -687,6 +798,8 @@ Suite *vsph_solver_suite(void) {
   tcase_add_test(tc, test_relax);
   tcase_add_test(tc, test_unstable_detected);
   tcase_add_test(tc, test_rhs_cells_vs_direct);
+  tcase_add_test(tc, test_pack_lean);
+  tcase_add_test(tc, test_diagnostics_order);
   suite_add_tcase(s, tc);
   return s;
 }
