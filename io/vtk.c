@@ -58,6 +58,8 @@ struct out {
   size_t len;       /* (opened by the first array) */
   unsigned char *z; /* a wave of compressed blocks, zcap bytes */
   size_t zcap;
+  unsigned char *raw; /* a wave of a gathered array, rawcap bytes */
+  size_t rawcap;
   struct entry e[MAX_ARRAYS];
   size_t ne;
   char desc[DESC_LEN];
@@ -89,6 +91,73 @@ static FILE *spill_open(const char *dir) {
  * share the work while only these blocks are held. */
 static size_t wave_blocks(void) { return 8 * (size_t)omp_get_max_threads(); }
 
+/* Where a gathered array's elements come from (struct src): element k,
+ * the particle order[k] (k itself where order is NULL). */
+struct src {
+  void (*fill)(const struct src *s, size_t e0, size_t ne, void *out);
+  size_t esz;               /* bytes an element */
+  const size_t *order;      /* particles in the file's order, or NULL */
+  const double *const *vec; /* a vector's 3 components (NULL: 0) */
+  const double *v, *w;      /* a scalar field (w: the volume's rho) */
+  const unsigned char *u8;  /* a byte field */
+  const size_t *ids;        /* ids, written as Int64 */
+  size_t limit;             /* walls' type: 1 below it, else 2 */
+  double c;                 /* a constant */
+};
+
+static size_t elem_at(const struct src *s, size_t k) {
+  return s->order ? s->order[k] : k;
+}
+
+static void fill_vec(const struct src *s, size_t e0, size_t ne, void *out) {
+  double *x = out;
+  for (size_t k = 0; k < ne; k++)
+    for (int a = 0; a < 3; a++)
+      x[3 * k + a] = s->vec[a] ? s->vec[a][elem_at(s, e0 + k)] : 0.0;
+}
+
+static void fill_scalar(const struct src *s, size_t e0, size_t ne, void *out) {
+  double *x = out;
+  for (size_t k = 0; k < ne; k++) x[k] = s->v[elem_at(s, e0 + k)];
+}
+
+static void fill_volume(const struct src *s, size_t e0, size_t ne, void *out) {
+  double *x = out;
+  for (size_t k = 0; k < ne; k++) {
+    const size_t i = elem_at(s, e0 + k);
+    x[k] = s->v[i] / s->w[i];
+  }
+}
+
+static void fill_const(const struct src *s, size_t e0, size_t ne, void *out) {
+  (void)e0;
+  double *x = out;
+  for (size_t k = 0; k < ne; k++) x[k] = s->c;
+}
+
+static void fill_u8(const struct src *s, size_t e0, size_t ne, void *out) {
+  unsigned char *x = out;
+  for (size_t k = 0; k < ne; k++) x[k] = s->u8[elem_at(s, e0 + k)];
+}
+
+/* vertex cells: element k is k + c (the connectivity c = 0, the offsets
+ * c = 1), and the fluid's id (c = 0) */
+static void fill_iota(const struct src *s, size_t e0, size_t ne, void *out) {
+  int64_t *x = out;
+  for (size_t k = 0; k < ne; k++) x[k] = (int64_t)(e0 + k) + (int64_t)s->c;
+}
+
+static void fill_ids(const struct src *s, size_t e0, size_t ne, void *out) {
+  int64_t *x = out;
+  for (size_t k = 0; k < ne; k++) x[k] = (int64_t)s->ids[elem_at(s, e0 + k)];
+}
+
+static void fill_type(const struct src *s, size_t e0, size_t ne, void *out) {
+  unsigned char *x = out;
+  for (size_t k = 0; k < ne; k++)
+    x[k] = s->ids[elem_at(s, e0 + k)] < s->limit ? 1 : 2;
+}
+
 /* Append @p nbytes at @p raw as one array in the layout of
  * vtkZLibDataCompressor with header_type UInt64: [number of blocks]
  * [block size][size of the last block if partial, else 0][compressed size
@@ -97,9 +166,9 @@ static size_t wave_blocks(void) { return 8 * (size_t)omp_get_max_threads(); }
  * written in order (the header's sizes filled in at the end): the bytes do
  * not depend on the threads. VSPH_EINTR when *o->stop is set (checked
  * before each block; the file is then not written). */
-static int add_array(struct out *o, enum section sec, const char *name,
-                     const char *type, int ncomp, size_t ntuples,
-                     const void *raw, size_t nbytes) {
+static int add(struct out *o, enum section sec, const char *name,
+               const char *type, int ncomp, size_t ntuples, const void *raw,
+               const struct src *src, size_t nbytes) {
   const volatile sig_atomic_t *stop = o->stop;
   VSPH_ASSERT(o->ne < MAX_ARRAYS);
   if (!o->spill && !(o->spill = spill_open(o->dir)))
@@ -114,6 +183,15 @@ static int add_array(struct out *o, enum section sec, const char *name,
     o->z = z;
     o->zcap = wave * slot;
   }
+  /* a gathered array: a wave's bytes at a time, from the elements that
+   * hold them (an element may straddle two waves) */
+  const size_t rawneed = src ? wave * VSPH_VTK_BLOCK + 2 * src->esz : 0;
+  if (rawneed > o->rawcap) {
+    unsigned char *r = realloc(o->raw, rawneed);
+    if (!r) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot's %s", name);
+    o->raw = r;
+    o->rawcap = rawneed;
+  }
   uint64_t *zl = calloc(3 + nblocks, sizeof *zl);
   if (!zl) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot's %s", name);
   zl[0] = nblocks;
@@ -125,6 +203,15 @@ static int add_array(struct out *o, enum section sec, const char *name,
   size_t len = head;
   for (size_t w0 = 0; w0 < nblocks && !st; w0 += wave) {
     const size_t nw = nblocks - w0 < wave ? nblocks - w0 : wave;
+    const size_t lo = w0 * VSPH_VTK_BLOCK;
+    const unsigned char *in0 = (const unsigned char *)raw + lo;
+    if (src) {
+      const size_t hi =
+          lo + nw * VSPH_VTK_BLOCK < nbytes ? lo + nw * VSPH_VTK_BLOCK : nbytes;
+      const size_t e0 = lo / src->esz, e1 = (hi + src->esz - 1) / src->esz;
+      src->fill(src, e0, e1 - e0, o->raw);
+      in0 = o->raw + (lo - e0 * src->esz);
+    }
     int bad = 0; /* a zlib failure (the lowest such block's status) */
 #pragma omp parallel for schedule(dynamic, 1) reduction(min : bad)
     for (size_t b = 0; b < nw; b++) {
@@ -133,8 +220,7 @@ static int add_array(struct out *o, enum section sec, const char *name,
       const size_t in =
           g + 1 < nblocks ? VSPH_VTK_BLOCK : nbytes - g * VSPH_VTK_BLOCK;
       uLongf zlen = (uLongf)slot;
-      const int zs = compress2(o->z + b * slot, &zlen,
-                               (const Bytef *)raw + g * VSPH_VTK_BLOCK,
+      const int zs = compress2(o->z + b * slot, &zlen, in0 + b * VSPH_VTK_BLOCK,
                                (uLong)in, o->level);
       if (zs != Z_OK && zs < bad) bad = zs;
       zl[3 + g] = zlen;
@@ -166,6 +252,21 @@ static int add_array(struct out *o, enum section sec, const char *name,
   return VSPH_OK;
 }
 
+/* An array of @p nbytes held whole at @p raw. */
+static int add_array(struct out *o, enum section sec, const char *name,
+                     const char *type, int ncomp, size_t ntuples,
+                     const void *raw, size_t nbytes) {
+  return add(o, sec, name, type, ncomp, ntuples, raw, NULL, nbytes);
+}
+
+/* A PointData (or Points, Verts) array of @p n elements gathered from
+ * @p src a wave at a time: never held whole. */
+static int add_gathered(struct out *o, enum section sec, const char *name,
+                        const char *type, int ncomp, const struct src *src,
+                        size_t n) {
+  return add(o, sec, name, type, ncomp, 0, NULL, src, n * src->esz);
+}
+
 /* Describe array @p name: "name: what (unit)". A unit ending in '^' takes
  * the dimension (kg/m^2 in 2-D, per unit depth). */
 static void describe(struct out *o, const char *name, const char *what,
@@ -184,39 +285,25 @@ static void describe(struct out *o, const char *name, const char *what,
   }
 }
 
-/* A vector field's 3 components per particle in id order (those at or
- * beyond dim, or NULL, are 0). */
-static void gather_vec(double *out, double *const v[3], int dim,
-                       const size_t *order, size_t n) {
-  for (size_t k = 0; k < n; k++)
-    for (int a = 0; a < 3; a++)
-      out[3 * k + a] = a < dim && v[a] ? v[a][order[k]] : 0.0;
-}
-
-static void gather(double *out, const double *v, const size_t *order,
-                   size_t n) {
-  for (size_t k = 0; k < n; k++) out[k] = v[order[k]];
-}
-
 /* The arrays every particle file opens with, described: the time, the
  * points (in @p order) and one vertex cell per point; @p what gives the
- * three descriptions. @p buf holds 3 n doubles. */
+ * three descriptions. */
 static int add_geometry(struct out *o, const struct vsph_particles *p,
-                        const size_t *order, size_t n, double t, void *buf,
+                        const size_t *order, size_t n, double t,
                         const char *const what[3]) {
   const int d = p->dim;
-  double *x = buf;
-  int64_t *iv = buf;
-  const size_t n8 = n * sizeof(double);
+  const double *pos[3] = {p->pos[0], d > 1 ? p->pos[1] : NULL,
+                          d > 2 ? p->pos[2] : NULL};
   int st = add_array(o, FIELD, "TimeValue", "Float64", 1, 1, &t, sizeof t);
   describe(o, "TimeValue", what[0], "s", d);
-  gather_vec(x, p->pos, d, order, n);
-  if (!st) st = add_array(o, POINTS, "Points", "Float64", 3, 0, x, 3 * n8);
+  const struct src xs = {
+      .fill = fill_vec, .esz = 3 * sizeof(double), .order = order, .vec = pos};
+  if (!st) st = add_gathered(o, POINTS, "Points", "Float64", 3, &xs, n);
   describe(o, "Points", what[1], "m", d);
-  for (size_t k = 0; k < n; k++) iv[k] = (int64_t)k;
-  if (!st) st = add_array(o, VERTS, "connectivity", "Int64", 1, 0, iv, n8);
-  for (size_t k = 0; k < n; k++) iv[k] = (int64_t)k + 1;
-  if (!st) st = add_array(o, VERTS, "offsets", "Int64", 1, 0, iv, n8);
+  const struct src conn = {.fill = fill_iota, .esz = sizeof(int64_t)},
+                   offs = {.fill = fill_iota, .esz = sizeof(int64_t), .c = 1};
+  if (!st) st = add_gathered(o, VERTS, "connectivity", "Int64", 1, &conn, n);
+  if (!st) st = add_gathered(o, VERTS, "offsets", "Int64", 1, &offs, n);
   describe(o, "connectivity, offsets", what[2], "dimensionless", d);
   return st;
 }
@@ -224,50 +311,55 @@ static int add_geometry(struct out *o, const struct vsph_particles *p,
 /* The arrays of the snapshot into o, described. */
 static int build(struct out *o, const struct vsph_particles *p,
                  const size_t *order, size_t n, double t,
-                 const struct vsph_diagnostics *dg, void *buf) {
+                 const struct vsph_diagnostics *dg) {
   const int d = p->dim;
-  double *x = buf;
-  int64_t *iv = buf;
-  unsigned char *u8 = buf;
-  const size_t n8 = n * sizeof(double);
+  const size_t n8 = n * sizeof(double), e8 = sizeof(double);
   static const char *const geometry[3] = {
       "time of the snapshot, the exact double (snapshots.pvd and energy.csv "
       "print it to 10 significant digits)",
       "particle positions x, y, z (z = 0 in 2-D)",
       "one vertex cell per particle, so that every representation shows it"};
-  int st = add_geometry(o, p, order, n, t, buf, geometry);
-  gather_vec(x, p->vel, d, order, n);
-  if (!st)
-    st = add_array(o, POINT_DATA, "velocity", "Float64", 3, 0, x, 3 * n8);
+  int st = add_geometry(o, p, order, n, t, geometry);
+  const double *vel[3] = {p->vel[0], d > 1 ? p->vel[1] : NULL,
+                          d > 2 ? p->vel[2] : NULL};
+  const struct src us = {
+      .fill = fill_vec, .esz = 3 * e8, .order = order, .vec = vel};
+  if (!st) st = add_gathered(o, POINT_DATA, "velocity", "Float64", 3, &us, n);
   describe(o, "velocity", "velocity u_x, u_y, u_z (u_z = 0 in 2-D)", "m/s", d);
-  gather(x, p->rho, order, n);
-  if (!st) st = add_array(o, POINT_DATA, "density", "Float64", 1, 0, x, n8);
+  const struct src rho = {
+      .fill = fill_scalar, .esz = e8, .order = order, .v = p->rho};
+  if (!st) st = add_gathered(o, POINT_DATA, "density", "Float64", 1, &rho, n);
   describe(o, "density", "density rho, per unit depth in 2-D", "kg/m^", d);
-  gather(x, p->p, order, n);
-  if (!st) st = add_array(o, POINT_DATA, "pressure", "Float64", 1, 0, x, n8);
+  const struct src pr = {
+      .fill = fill_scalar, .esz = e8, .order = order, .v = p->p};
+  if (!st) st = add_gathered(o, POINT_DATA, "pressure", "Float64", 1, &pr, n);
   describe(o, "pressure", "pressure p from the state equation", "Pa", d);
-  for (size_t k = 0; k < n; k++) x[k] = p->m[order[k]] / p->rho[order[k]];
-  if (!st) st = add_array(o, POINT_DATA, "volume", "Float64", 1, 0, x, n8);
+  const struct src vol = {
+      .fill = fill_volume, .esz = e8, .order = order, .v = p->m, .w = p->rho};
+  if (!st) st = add_gathered(o, POINT_DATA, "volume", "Float64", 1, &vol, n);
   describe(o, "volume", "particle volume m/rho", "m^", d);
-  gather(x, p->m, order, n);
-  if (!st) st = add_array(o, POINT_DATA, "mass", "Float64", 1, 0, x, n8);
+  const struct src ms = {
+      .fill = fill_scalar, .esz = e8, .order = order, .v = p->m};
+  if (!st) st = add_gathered(o, POINT_DATA, "mass", "Float64", 1, &ms, n);
   describe(o, "mass", "particle mass m (per unit depth in 2-D)",
            d == 3   ? "kg"
            : d == 2 ? "kg/m"
                     : "kg/m^",
            2);
   if (dg) {
-    for (size_t k = 0; k < n; k++) x[k] = dg->h;
+    const struct src hs = {.fill = fill_const, .esz = e8, .c = dg->h};
     if (!st)
-      st = add_array(o, POINT_DATA, "smoothing_length", "Float64", 1, 0, x, n8);
+      st =
+          add_gathered(o, POINT_DATA, "smoothing_length", "Float64", 1, &hs, n);
     describe(o, "smoothing_length",
              "smoothing length h (the same for every particle; the kernel "
              "reaches kappa h)",
              "m", 1);
   }
   if (p->mat) {
-    for (size_t k = 0; k < n; k++) u8[k] = p->mat[order[k]];
-    if (!st) st = add_array(o, POINT_DATA, "material", "UInt8", 1, 0, u8, n);
+    const struct src mat = {
+        .fill = fill_u8, .esz = 1, .order = order, .u8 = p->mat};
+    if (!st) st = add_gathered(o, POINT_DATA, "material", "UInt8", 1, &mat, n);
     describe(o, "material",
              "material index: 0 the first fluid, 1 the second fluid or the "
              "held body (two-material contact runs)",
@@ -283,10 +375,10 @@ static int build(struct out *o, const struct vsph_particles *p,
              "1/s", d);
   }
   if (dg && d == 3) {
-    for (size_t k = 0; k < n; k++)
-      for (int a = 0; a < 3; a++) x[3 * k + a] = dg->vort[a][k];
+    const double *w[3] = {dg->vort[0], dg->vort[1], dg->vort[2]};
+    const struct src ws = {.fill = fill_vec, .esz = 3 * e8, .vec = w};
     if (!st)
-      st = add_array(o, POINT_DATA, "vorticity", "Float64", 3, 0, x, 3 * n8);
+      st = add_gathered(o, POINT_DATA, "vorticity", "Float64", 3, &ws, n);
     describe(o, "vorticity",
              "SPH vorticity omega = sum_j V_j grad_i W_ij x (u_j - u_i)", "1/s",
              d);
@@ -307,8 +399,8 @@ static int build(struct out *o, const struct vsph_particles *p,
              vsph_diagnostics_surface_threshold(d));
     describe(o, "free_surface", what, "dimensionless", d);
   }
-  for (size_t k = 0; k < n; k++) iv[k] = (int64_t)k;
-  if (!st) st = add_array(o, POINT_DATA, "id", "Int64", 1, 0, iv, n8);
+  const struct src ids = {.fill = fill_iota, .esz = sizeof(int64_t)};
+  if (!st) st = add_gathered(o, POINT_DATA, "id", "Int64", 1, &ids, n);
   describe(o, "id",
            "particle id, its index in the initial set; the points are in id "
            "order",
@@ -409,23 +501,19 @@ static int emit(struct out *o, int st, const char *dir, const char *name,
   if (o) {
     if (o->spill) fclose(o->spill);
     free(o->z);
+    free(o->raw);
   }
   free(o);
   return st;
 }
 
 /* The arrays of a file of @p n particles (vertex cells, snapshot level)
- * with its scratch: a particle order and a buffer of 3 doubles a
- * particle. NULL, nothing held, where they cannot be had. */
-static struct out *out_alloc(const char *dir, size_t n, size_t **order,
-                             void **buf) {
-  const size_t len = n ? n : 1;
-  *order = malloc(len * sizeof **order);
-  *buf = malloc(3 * len * sizeof(double));
+ * with its particle order. NULL, nothing held, where they cannot be had. */
+static struct out *out_alloc(const char *dir, size_t n, size_t **order) {
+  *order = malloc((n ? n : 1) * sizeof **order);
   struct out *o = calloc(1, sizeof *o);
-  if (!*order || !*buf || !o) {
+  if (!*order || !o) {
     free(*order);
-    free(*buf);
     free(o);
     return NULL;
   }
@@ -441,16 +529,14 @@ int vsph_vtk_write(const char *dir, const char *name,
                    const volatile sig_atomic_t *stop) {
   const size_t n = n_fluid;
   size_t *order;
-  void *buf;
-  struct out *o = out_alloc(dir, n, &order, &buf);
+  struct out *o = out_alloc(dir, n, &order);
   if (!o)
     VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot of %zu particles", n);
   o->stop = stop;
   for (size_t i = 0; i < p->n; i++)
     if (p->id[i] < n) order[p->id[i]] = i;
-  const int st = build(o, p, order, n, t, dg, buf);
+  const int st = build(o, p, order, n, t, dg);
   free(order);
-  free(buf);
   return emit(o, st, dir, name, n, t);
 }
 
@@ -463,8 +549,7 @@ int vsph_vtk_write_walls(const char *dir, const char *name,
   size_t n = 0;
   for (size_t i = 0; i < p->n; i++) n += p->id[i] >= n_fluid;
   size_t *order;
-  void *buf;
-  struct out *o = out_alloc(dir, n, &order, &buf);
+  struct out *o = out_alloc(dir, n, &order);
   if (!o) VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the walls of a snapshot");
   size_t k = 0;
   for (size_t i = 0; i < p->n; i++)
@@ -476,42 +561,47 @@ int vsph_vtk_write_walls(const char *dir, const char *name,
       order[b - 1] = tmp;
     }
   const int d = p->dim;
-  const size_t n8 = n * sizeof(double);
-  double *x = buf;
-  int64_t *iv = buf;
-  unsigned char *u8 = buf;
+  const size_t e8 = sizeof(double);
   static const char *const what[3] = {"time of the snapshot, the exact double",
                                       "positions x, y, z (z = 0 in 2-D)",
                                       "one vertex cell per particle"};
-  int st = add_geometry(o, p, order, n, t, buf, what);
-  gather_vec(x, p->vel, d, order, n);
-  if (!st)
-    st = add_array(o, POINT_DATA, "velocity", "Float64", 3, 0, x, 3 * n8);
+  int st = add_geometry(o, p, order, n, t, what);
+  const double *vel[3] = {p->vel[0], d > 1 ? p->vel[1] : NULL,
+                          d > 2 ? p->vel[2] : NULL};
+  const struct src us = {
+      .fill = fill_vec, .esz = 3 * e8, .order = order, .vec = vel};
+  if (!st) st = add_gathered(o, POINT_DATA, "velocity", "Float64", 3, &us, n);
   describe(o, "velocity",
            "velocity: a wall particle's the wall's (the cavity's lid moves), "
            "an image's its fluid particle's, mirrored",
            "m/s", d);
-  gather(x, p->rho, order, n);
-  if (!st) st = add_array(o, POINT_DATA, "density", "Float64", 1, 0, x, n8);
+  const struct src rho = {
+      .fill = fill_scalar, .esz = e8, .order = order, .v = p->rho};
+  if (!st) st = add_gathered(o, POINT_DATA, "density", "Float64", 1, &rho, n);
   describe(o, "density", "density rho, per unit depth in 2-D", "kg/m^", d);
-  gather(x, p->p, order, n);
-  if (!st) st = add_array(o, POINT_DATA, "pressure", "Float64", 1, 0, x, n8);
+  const struct src pr = {
+      .fill = fill_scalar, .esz = e8, .order = order, .v = p->p};
+  if (!st) st = add_gathered(o, POINT_DATA, "pressure", "Float64", 1, &pr, n);
   describe(o, "pressure", "pressure p", "Pa", d);
-  for (k = 0; k < n; k++) u8[k] = p->id[order[k]] < n_fluid + n_wall ? 1 : 2;
-  if (!st) st = add_array(o, POINT_DATA, "type", "UInt8", 1, 0, u8, n);
+  const struct src ty = {.fill = fill_type,
+                         .esz = 1,
+                         .order = order,
+                         .ids = p->id,
+                         .limit = n_fluid + n_wall};
+  if (!st) st = add_gathered(o, POINT_DATA, "type", "UInt8", 1, &ty, n);
   describe(o, "type",
            "1: a wall particle (fixed walls, the cavity's lid), 2: an image "
            "of a fluid particle (a mirror ghost or a periodic image)",
            "dimensionless", d);
-  for (k = 0; k < n; k++) iv[k] = (int64_t)p->id[order[k]];
-  if (!st) st = add_array(o, POINT_DATA, "id", "Int64", 1, 0, iv, n8);
+  const struct src ids = {
+      .fill = fill_ids, .esz = sizeof(int64_t), .order = order, .ids = p->id};
+  if (!st) st = add_gathered(o, POINT_DATA, "id", "Int64", 1, &ids, n);
   describe(o, "id", "the particle's id (the fluid's ids come first)",
            "dimensionless", d);
   if (!st)
     st = add_array(o, FIELD, "array_descriptions", "String", 1, o->ndesc,
                    o->desc, o->desc_len);
   free(order);
-  free(buf);
   return emit(o, st, dir, name, n, t);
 }
 
