@@ -540,6 +540,28 @@ int vsph_vtk_write(const char *dir, const char *name,
   return emit(o, st, dir, name, n, t);
 }
 
+int vsph_vtk_write_mapped(const char *dir, const char *name,
+                          const struct vsph_particles *p, size_t n_fluid,
+                          const size_t *where, double t,
+                          const struct vsph_diagnostics *dg,
+                          const volatile sig_atomic_t *stop) {
+  const size_t n = n_fluid;
+  for (size_t id = 0; id < n; id++)
+    if (where[id] >= p->n || p->id[where[id]] != id)
+      VSPH_FAIL(VSPH_EINVAL,
+                "vsph_vtk_write_mapped: fluid particle %zu is not where the "
+                "map says",
+                id);
+  struct out *o = calloc(1, sizeof *o);
+  if (!o)
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate a snapshot of %zu particles", n);
+  o->dir = dir;
+  o->nverts = n;
+  o->level = LEVEL;
+  o->stop = stop;
+  return emit(o, build(o, p, where, n, t, dg), dir, name, n, t);
+}
+
 /* ---- walls ---- */
 
 int vsph_vtk_write_walls(const char *dir, const char *name,

@@ -46,6 +46,17 @@ int vsph_vtk_write(const char *dir, const char *name,
                    const struct vsph_diagnostics *dg,
                    const volatile sig_atomic_t *stop);
 
+/** @brief vsph_vtk_write with @p where[id] the index in @p p of fluid
+ *  particle id (an integrator's map, as an evaluation leaves it), checked
+ *  first, in place of a particle order of its own (8 bytes a particle).
+ *  The same file. @return as vsph_vtk_write, or VSPH_EINVAL (the map is
+ *  not the particles'; nothing written). */
+int vsph_vtk_write_mapped(const char *dir, const char *name,
+                          const struct vsph_particles *p, size_t n_fluid,
+                          const size_t *where, double t,
+                          const struct vsph_diagnostics *dg,
+                          const volatile sig_atomic_t *stop);
+
 /** A snapshot read back (arrays of n tuples in id order, 3 components for
  *  vectors; an array the file lacks reads as zeros). */
 struct vsph_vtk_snapshot {

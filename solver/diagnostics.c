@@ -17,8 +17,9 @@ double vsph_diagnostics_surface_threshold(int dim) {
 }
 
 void vsph_diagnostics_free(struct vsph_diagnostics *d) {
-  for (int a = 0; a < 3; a++) free(d->vort[a]);
-  free(d->divr);
+  for (int a = 0; a < 3; a++) /* in 2-D the first two are always ours */
+    if (!d->lent || (d->dim < 3 && a < 2)) free(d->vort[a]);
+  if (!d->lent) free(d->divr);
   free(d->surf);
   memset(d, 0, sizeof *d);
 }
@@ -153,17 +154,28 @@ static int sums(const struct vsph_particles *q, size_t n,
   return stop && *stop ? VSPH_EINTR : VSPH_OK;
 }
 
-/* The result arrays of @p n particles (zero), and whether @p p's
- * positions are all finite. VSPH_OK or VSPH_ENOMEM (@p d freed). */
+/* The result arrays of @p n particles (zero; in @p room where not NULL,
+ * as vsph_diagnostics_compute_cells says), and whether @p p's positions
+ * are all finite. VSPH_OK or VSPH_ENOMEM (@p d freed). */
 static int start(const struct vsph_particles *p, size_t n, double h,
-                 struct vsph_diagnostics *d, int *finite) {
+                 double *const room[4], struct vsph_diagnostics *d,
+                 int *finite) {
   memset(d, 0, sizeof *d);
   d->n = n;
   d->dim = p->dim;
   d->h = h;
   const size_t len = n ? n : 1;
-  for (int a = 0; a < 3; a++) d->vort[a] = calloc(len, sizeof(double));
-  d->divr = calloc(len, sizeof(double));
+  d->lent = room != NULL;
+  for (int a = 0; a < 3; a++)
+    d->vort[a] = room && a == 2        ? room[1]
+                 : room && p->dim == 3 ? room[2 + a]
+                                       : calloc(len, sizeof(double));
+  d->divr = room ? room[0] : calloc(len, sizeof(double));
+  if (room) /* zero, as calloc's */
+    for (size_t i = 0; i < n; i++) {
+      d->divr[i] = 0.0;
+      for (int a = p->dim == 3 ? 0 : 2; a < 3; a++) d->vort[a][i] = 0.0;
+    }
   d->surf = calloc(len, 1);
   if (!d->vort[0] || !d->vort[1] || !d->vort[2] || !d->divr || !d->surf) {
     vsph_diagnostics_free(d);
@@ -191,7 +203,7 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
   memset(d, 0, sizeof *d);
   if (stop && *stop) return VSPH_EINTR;
   int finite;
-  int st = start(p, n, h, d, &finite);
+  int st = start(p, n, h, NULL, d, &finite);
   if (st || !finite) return st;
   struct vsph_particles *q = copy_of(p);
   struct vsph_cells *cells = vsph_cells_alloc();
@@ -211,6 +223,7 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
 int vsph_diagnostics_compute_cells(const struct vsph_particles *p, size_t n,
                                    const struct vsph_cells *cells,
                                    const struct vsph_kernel_type *k, double h,
+                                   double *const room[4],
                                    struct vsph_diagnostics *d,
                                    const volatile sig_atomic_t *stop) {
   memset(d, 0, sizeof *d);
@@ -221,8 +234,10 @@ int vsph_diagnostics_compute_cells(const struct vsph_particles *p, size_t n,
               "vsph_diagnostics_compute_cells: a NULL argument, "
               "h <= 0 or cells narrower than the kernel's reach");
   if (stop && *stop) return VSPH_EINTR;
+  if (room && (!room[0] || !room[1] || (p->dim == 3 && (!room[2] || !room[3]))))
+    VSPH_FAIL(VSPH_EINVAL, "vsph_diagnostics_compute_cells: a NULL room");
   int finite;
-  int st = start(p, n, h, d, &finite);
+  int st = start(p, n, h, room, d, &finite);
   if (st || !finite) return st;
   st = sums(p, n, cells, k, h, d, stop);
   if (st) vsph_diagnostics_free(d);

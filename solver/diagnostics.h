@@ -34,6 +34,8 @@ struct vsph_diagnostics {
   double *divr;        /*!< div r */
   unsigned char *surf; /*!< 1: free surface (div r below the threshold) */
   double h;            /*!< the smoothing length they were computed with */
+  int lent;            /*!< 1: divr and vort are the caller's (room of
+                            vsph_diagnostics_compute_cells), not freed */
 };
 
 /** @brief The free-surface threshold on div r in @p dim dimensions. */
@@ -58,12 +60,17 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
  *  them, at a reach of at least the kernel's), with no copy and no cell
  *  list of its own. The same bits as vsph_diagnostics_compute: each
  *  particle's sums run over its neighbours in the order of their offsets,
- *  whatever the particles' order.
+ *  whatever the particles' order. With @p room not NULL, div r and the
+ *  vorticity are written there, not allocated: room[0] div r, room[1]
+ *  omega_z, and in 3-D room[2] and room[3] omega_x and omega_y, each of
+ *  at least @p n doubles (a run's rates between two steps, which every
+ *  evaluation writes before it reads them: vsph_run's `evaluated`).
  *  @return as vsph_diagnostics_compute, or VSPH_EINVAL (a NULL argument,
  *  h <= 0, or cells narrower than the kernel's reach). */
 int vsph_diagnostics_compute_cells(const struct vsph_particles *p, size_t n,
                                    const struct vsph_cells *cells,
                                    const struct vsph_kernel_type *k, double h,
+                                   double *const room[4],
                                    struct vsph_diagnostics *d,
                                    const volatile sig_atomic_t *stop);
 

@@ -13,6 +13,7 @@
 #include "../common/consts.h"
 #include "../common/params.h"
 #include "../common/status.h"
+#include "../io/files.h"
 #include "../io/vtk.h"
 #include "../kernels/kernel.h"
 #include "../solver/cells.h"
@@ -738,10 +739,46 @@ START_TEST(test_diagnostics_order) {
   const struct vsph_kernel_type *k = s->props.eq.visc.kernel;
   const double h = s->props.eq.visc.h;
   const size_t nf = s->n_fluid;
-  struct vsph_diagnostics a, b, c;
+  struct vsph_diagnostics a, b, c, r;
   ck_assert_int_eq(
-      vsph_diagnostics_compute_cells(p, nf, s->cells, k, h, &a, NULL), 0);
+      vsph_diagnostics_compute_cells(p, nf, s->cells, k, h, NULL, &a, NULL), 0);
   ck_assert_int_eq(vsph_diagnostics_compute(p, nf, k, h, &b, NULL), 0);
+  /* into the rates (free between steps), as a run's snapshot does: the
+   * same bits, and the lent arrays not freed (vsph_integrate_free frees
+   * them: a double free would abort) */
+  double *const room[4] = {p->acc[0], p->acc[1], NULL, p->drho};
+  ck_assert_int_eq(
+      vsph_diagnostics_compute_cells(p, nf, s->cells, k, h, room, &r, NULL), 0);
+  ck_assert(r.divr == p->acc[0] && r.vort[2] == p->acc[1]);
+  ck_assert_mem_eq(a.vort[2], r.vort[2], nf * sizeof(double));
+  ck_assert_mem_eq(a.divr, r.divr, nf * sizeof(double));
+  ck_assert_mem_eq(a.surf, r.surf, nf);
+  /* the file through the integrator's map: the same bytes as through an
+   * order of its own; a map that is not the particles' is refused */
+  char dir[] = "/tmp/vsph_mappedXXXXXX", fa[64], fb[64], fc[64];
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  snprintf(fa, sizeof fa, "%s/a.vtp", dir);
+  snprintf(fb, sizeof fb, "%s/b.vtp", dir);
+  snprintf(fc, sizeof fc, "%s/c.vtp", dir);
+  ck_assert_int_eq(vsph_vtk_write(dir, "a.vtp", p, nf, s->t, &r, NULL), 0);
+  ck_assert_int_eq(
+      vsph_vtk_write_mapped(dir, "b.vtp", p, nf, s->where, s->t, &r, NULL), 0);
+  size_t la, lb;
+  char *ta = vsph_files_slurp(fa, &la), *tb = vsph_files_slurp(fb, &lb);
+  ck_assert(ta && tb && la == lb && !memcmp(ta, tb, la));
+  free(ta);
+  free(tb);
+  const size_t w0 = s->where[0];
+  s->where[0] = s->where[1];
+  ck_assert_int_eq(
+      vsph_vtk_write_mapped(dir, "c.vtp", p, nf, s->where, s->t, &r, NULL),
+      VSPH_EINVAL);
+  s->where[0] = w0;
+  ck_assert_int_ne(access(fc, F_OK), 0);
+  ck_assert_int_eq(remove(fa), 0);
+  ck_assert_int_eq(remove(fb), 0);
+  ck_assert_int_eq(rmdir(dir), 0);
+  vsph_diagnostics_free(&r);
   /* the arrays the sums read, reversed */
   const int d = p->dim;
   double *f[8];
@@ -772,9 +809,9 @@ START_TEST(test_diagnostics_order) {
   vsph_diagnostics_free(&b);
   vsph_diagnostics_free(&c);
   struct vsph_diagnostics e;
-  ck_assert_int_eq(
-      vsph_diagnostics_compute_cells(p, nf, s->cells, k, 3.0 * h, &e, NULL),
-      VSPH_EINVAL);
+  ck_assert_int_eq(vsph_diagnostics_compute_cells(p, nf, s->cells, k, 3.0 * h,
+                                                  NULL, &e, NULL),
+                   VSPH_EINVAL);
   vsph_integrate_free(s);
 }
 END_TEST
