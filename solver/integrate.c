@@ -800,9 +800,9 @@ static int get(struct cursor *c, void *dst, size_t n) {
  * walls' own are made again) nor the transport velocity and its
  * acceleration (read by the next step's first kick). */
 static int arrays(struct vsph_particles *p, void **a[32], size_t sz[32],
-                  uint64_t *derived) {
+                  uint64_t *derived, uint64_t *volp) {
   int n = 0;
-  uint64_t dv = 0;
+  uint64_t dv = 0, vp = 0;
   for (int k = 0; k < p->dim; k++) {
     sz[n] = sizeof(double), a[n++] = (void **)&p->pos[k];
     sz[n] = sizeof(double), a[n++] = (void **)&p->vel[k];
@@ -814,12 +814,26 @@ static int arrays(struct vsph_particles *p, void **a[32], size_t sz[32],
   static const int fresh[7] = {0, 0, 0, 0, 1, 0, 1};
   for (int k = 0; k < 7; k++) {
     if (fresh[k]) dv |= 1ull << n;
+    if (k == 2 || k == 3) vp |= 1ull << n;
     sz[n] = sizeof(double), a[n++] = (void **)sc[k];
   }
   sz[n] = sizeof *p->mat, a[n++] = (void **)&p->mat;
   sz[n] = sizeof *p->id, a[n++] = (void **)&p->id;
   *derived = dv;
+  *volp = vp;
   return n;
+}
+
+/* The arrays a lean pack leaves out (bits as arrays() numbers them): the
+ * rates; and volume and pressure where no wall particles and no
+ * transport velocity are (every evaluation then makes them from the
+ * density first, ghosts and images included; wall particles' are read by
+ * the fluid's sums before their own are made again, and the transport
+ * velocity's step reads them). */
+static uint64_t lean_out(const struct vsph_integrate *s, uint64_t derived,
+                         uint64_t volp) {
+  const int made = !s->props.eq.tvf && !s->props.walls.solid;
+  return derived | (made ? volp : 0);
 }
 
 /* The fields kept by id between steps (s->kept): 2d for the transport
@@ -850,11 +864,11 @@ static size_t pack(const struct vsph_integrate *s, unsigned char *buf,
   put(&c, s->reason, sizeof s->reason);
   void **a[32];
   size_t sz[32];
-  uint64_t derived;
-  const int na = arrays(p, a, sz, &derived);
+  uint64_t derived, volp;
+  const int na = arrays(p, a, sz, &derived, &volp);
   uint64_t have = 0;
   for (int k = 0; k < na; k++) have |= (uint64_t)(*a[k] != NULL) << k;
-  if (lean) have &= ~derived;
+  if (lean) have &= ~lean_out(s, derived, volp);
   put(&c, &have, sizeof have);
   for (int k = 0; k < na; k++)
     if (have >> k & 1) put(&c, *a[k], p->n * sz[k]);
@@ -898,10 +912,11 @@ static int unpack(struct vsph_integrate *s, const unsigned char *buf,
               s->n_fluid, p->dim);
   void **a[32];
   size_t sz[32];
-  uint64_t derived;
-  const int na = arrays(p, a, sz, &derived);
-  for (int k = 0; k < na; k++) /* a lean pack leaves the derived out */
-    if ((have >> k & 1) != (*a[k] != NULL) && !(*a[k] && (derived >> k & 1)))
+  uint64_t derived, volp;
+  const int na = arrays(p, a, sz, &derived, &volp);
+  const uint64_t out = lean_out(s, derived, volp);
+  for (int k = 0; k < na; k++) /* a lean pack leaves some out */
+    if ((have >> k & 1) != (*a[k] != NULL) && !(*a[k] && (out >> k & 1)))
       VSPH_FAIL(VSPH_EINVAL, "the saved state's fields are not this run's");
   /* the very capacity the run had: the buffers as they were */
   int st = vsph_particles_reserve(p, (size_t)head[2]);
@@ -916,7 +931,7 @@ static int unpack(struct vsph_integrate *s, const unsigned char *buf,
     if (have >> k & 1) {
       if (!get(&c, *a[k], p->n * sz[k]))
         VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
-    } else { /* derived, left out: NaN until an evaluation computes it,
+    } else { /* left out: NaN until an evaluation computes it,
                 so that a read before that shows (every one is double) */
       double *x = *a[k];
       for (size_t i = 0; i < p->n; i++) x[i] = (double)NAN;
@@ -997,8 +1012,8 @@ static void put_back(struct vsph_integrate *s, size_t n) {
   for (size_t i = 0; i < n; i++) s->where[p->id[i]] = i;
   void **a[32];
   size_t sz[32];
-  uint64_t derived;
-  const int na = arrays(p, a, sz, &derived);
+  uint64_t derived, volp;
+  const int na = arrays(p, a, sz, &derived, &volp);
   unsigned char *const tmp = (unsigned char *)s->ks[0];
   for (int k = 0; k < na; k++) {
     unsigned char *const x = *a[k];

@@ -126,9 +126,12 @@ size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf);
 
 /** @brief vsph_integrate_pack without the rates, which every evaluation
  *  writes before anything reads them (the accelerations, d rho/dt,
- *  de/dt): in 2-D 9 doubles a particle and its material where the whole
- *  state holds 12 (vsph_run keeps the step's start so while a snapshot
- *  within the step is written).
+ *  de/dt), and, where there are no wall particles and no transport
+ *  velocity, without volume and pressure, which every evaluation then
+ *  makes from the density first: in 2-D 7 doubles a particle (9 with
+ *  wall particles) and its material where the whole state holds 12
+ *  (vsph_run keeps the step's start so while a snapshot within the step
+ *  is written).
  *  Unpacked or restored, those arrays hold NaN until the next evaluation;
  *  the next step goes on bitwise as from the whole state. */
 size_t vsph_integrate_pack_lean(const struct vsph_integrate *s,

@@ -440,13 +440,15 @@ static int check_cost(const struct vsph_run_props *rp,
   /* the lattice the scene lays, which the integrator takes */
   /* with snapshots, the state a snapshot within a step is reached from,
    * packed while it is written (vsph_integrate_pack_lean's arrays:
-   * positions, velocities, m, rho, V, p, id, the transport velocity's
-   * two vectors, the gas law's energy; the material, one byte counted as
-   * a double) */
+   * positions, velocities, m, rho, id; V and p with wall particles or
+   * the transport velocity, and its two vectors; the gas law's energy;
+   * the material, one byte counted as a double) */
   const double side =
       rp->snapshots > 0
           ? (n + ghosts) * 8.0 *
-                (2.0 * sc->dim + 6.0 + (rp->tvf ? 2.0 * sc->dim : 0.0) +
+                (2.0 * sc->dim + 4.0 +
+                 (rp->tvf || sc->walls.solid ? 2.0 : 0.0) +
+                 (rp->tvf ? 2.0 * sc->dim : 0.0) +
                  (rp->eos_kind == VSPH_EQUATIONS_EOS_GAS ? 1.0 : 0.0))
           : 0.0;
   const double bytes =
