@@ -17,9 +17,10 @@ double vsph_diagnostics_surface_threshold(int dim) {
 }
 
 void vsph_diagnostics_free(struct vsph_diagnostics *d) {
-  for (int a = 0; a < 3; a++) /* in 2-D the first two are always ours */
-    if (!d->lent || (d->dim < 3 && a < 2)) free(d->vort[a]);
-  if (!d->lent) free(d->divr);
+  if (!d->lent) {
+    for (int a = 0; a < 3; a++) free(d->vort[a]);
+    free(d->divr);
+  }
   free(d->surf);
   memset(d, 0, sizeof *d);
 }
@@ -166,18 +167,23 @@ static int start(const struct vsph_particles *p, size_t n, double h,
   d->h = h;
   const size_t len = n ? n : 1;
   d->lent = room != NULL;
-  for (int a = 0; a < 3; a++)
-    d->vort[a] = room && a == 2        ? room[1]
-                 : room && p->dim == 3 ? room[2 + a]
-                                       : calloc(len, sizeof(double));
+  int ok = 1;
+  for (int a = 0; a < 3; a++) { /* 3-D all three, 2-D omega_z, 1-D none */
+    if (p->dim < 3 && !(p->dim == 2 && a == 2)) continue;
+    d->vort[a] = !room    ? calloc(len, sizeof(double))
+                 : a == 2 ? room[1]
+                          : room[2 + a];
+    ok &= d->vort[a] != NULL;
+  }
   d->divr = room ? room[0] : calloc(len, sizeof(double));
   if (room) /* zero, as calloc's */
     for (size_t i = 0; i < n; i++) {
       d->divr[i] = 0.0;
-      for (int a = p->dim == 3 ? 0 : 2; a < 3; a++) d->vort[a][i] = 0.0;
+      for (int a = 0; a < 3; a++)
+        if (d->vort[a]) d->vort[a][i] = 0.0;
     }
   d->surf = calloc(len, 1);
-  if (!d->vort[0] || !d->vort[1] || !d->vort[2] || !d->divr || !d->surf) {
+  if (!ok || !d->divr || !d->surf) {
     vsph_diagnostics_free(d);
     VSPH_FAIL(VSPH_ENOMEM, "cannot allocate the diagnostics of %zu particles",
               n);
@@ -189,7 +195,8 @@ static int start(const struct vsph_particles *p, size_t n, double h,
     for (size_t i = 0; i < p->n; i++) fin &= isfinite(p->pos[a][i]) != 0;
   if (!fin)
     for (size_t i = 0; i < n; i++) {
-      for (int a = 0; a < 3; a++) d->vort[a][i] = NAN;
+      for (int a = 0; a < 3; a++)
+        if (d->vort[a]) d->vort[a][i] = NAN;
       d->divr[i] = NAN;
     }
   *finite = fin;

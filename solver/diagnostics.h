@@ -30,7 +30,8 @@ struct vsph_cells;
 struct vsph_diagnostics {
   size_t n;            /*!< particles described */
   int dim;             /*!< 1, 2 or 3 */
-  double *vort[3];     /*!< vorticity; 2-D: vort[2] only (the others 0) */
+  double *vort[3];     /*!< vorticity; 2-D: vort[2] only (the others
+                            NULL); 1-D: none */
   double *divr;        /*!< div r */
   unsigned char *surf; /*!< 1: free surface (div r below the threshold) */
   double h;            /*!< the smoothing length they were computed with */
