@@ -281,7 +281,10 @@ static int shear_pack_save(const struct vsph_contact_shear *cs,
     memcpy(at, cs->u[q], nb * sizeof(double)), at += nb * sizeof(double);
     memcpy(at, cs->dy[q], nb * sizeof(double)), at += nb * sizeof(double);
   }
-  vsph_run_pack(run, at);
+  if (vsph_run_pack(run, at) != run_len) {
+    free(buf);
+    VSPH_FAIL(VSPH_EIO, "cannot read back the state kept for a snapshot");
+  }
   const int st = cs->save(cs->save_ctx, buf, len);
   free(buf);
   return st;

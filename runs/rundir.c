@@ -445,7 +445,14 @@ static int checkpoint_write(struct outputs *o, const struct vsph_run *run,
   memcpy(buf + at, &klen, sizeof klen), at += sizeof klen;
   memcpy(buf + at, key, klen), at += klen;
   memcpy(buf + at, &c, sizeof c), at += sizeof c;
-  at += vsph_run_pack(run, buf + at);
+  if (vsph_run_pack(run, buf + at) != c.state) {
+    free(list);
+    free(buf);
+    snprintf(o->error, sizeof o->error,
+             "cannot read back the state kept for a snapshot");
+    VSPH_FAIL(VSPH_EIO, "%s", o->error);
+  }
+  at += c.state;
   memcpy(buf + at, list, c.manifest), at += c.manifest;
   free(list);
   const uint32_t crc = (uint32_t)crc32(crc32(0L, Z_NULL, 0), buf, (uInt)at);

@@ -773,21 +773,32 @@ double vsph_integrate_bytes_estimate(int dim, double n_fluid, double n_ghosts,
 
 /* ------------------------------------------------------ the whole state */
 
-/* A cursor over a state buffer: sizing when buf is NULL. */
+/* A cursor over a state buffer (sizing when buf is NULL), or over a file
+ * (f: written or read in place of buf or in; bad set by a short write). */
 struct cursor {
   unsigned char *buf;
   const unsigned char *in;
   size_t at, len;
+  FILE *f;
+  int bad;
 };
 
 static void put(struct cursor *c, const void *src, size_t n) {
-  if (c->buf) memcpy(c->buf + c->at, src, n);
+  if (c->f) {
+    if (fwrite(src, 1, n, c->f) != n) c->bad = 1;
+  } else if (c->buf) {
+    memcpy(c->buf + c->at, src, n);
+  }
   c->at += n;
 }
 
 static int get(struct cursor *c, void *dst, size_t n) {
   if (n > c->len - c->at) return 0;
-  memcpy(dst, c->in + c->at, n);
+  if (c->f) {
+    if (fread(dst, 1, n, c->f) != n) return 0;
+  } else {
+    memcpy(dst, c->in + c->at, n);
+  }
   c->at += n;
   return 1;
 }
@@ -850,10 +861,11 @@ static size_t kept_len(const struct vsph_integrate *s) {
   return s->props.eq.tvf ? s->n_fluid : s->p->n;
 }
 
-/* vsph_integrate_pack, and with @p lean 1 vsph_integrate_pack_lean */
-static size_t pack(const struct vsph_integrate *s, unsigned char *buf,
+/* vsph_integrate_pack, and with @p lean 1 vsph_integrate_pack_lean, into
+ * the cursor @p cur's buffer or file */
+static size_t pack(const struct vsph_integrate *s, struct cursor *cur,
                    int lean) {
-  struct cursor c = {.buf = buf};
+  struct cursor c = *cur;
   struct vsph_particles *p = s->p;
   const uint64_t head[6] = {(uint64_t)p->dim,   (uint64_t)p->n,
                             (uint64_t)p->cap,   (uint64_t)s->n_fluid,
@@ -877,24 +889,34 @@ static size_t pack(const struct vsph_integrate *s, unsigned char *buf,
   if (kept) /* the rates kept by particle id */
     for (int f = 0; f < kept_fields(s); f++)
       put(&c, s->ks[f], kept_len(s) * sizeof(double));
+  *cur = c;
   return c.at;
 }
 
 size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf) {
-  return pack(s, buf, 0);
+  struct cursor c = {.buf = buf};
+  return pack(s, &c, 0);
 }
 
 size_t vsph_integrate_pack_lean(const struct vsph_integrate *s,
                                 unsigned char *buf) {
-  return pack(s, buf, 1);
+  struct cursor c = {.buf = buf};
+  return pack(s, &c, 1);
+}
+
+size_t vsph_integrate_pack_lean_file(const struct vsph_integrate *s,
+                                     FILE *out) {
+  struct cursor c = {.f = out};
+  const size_t len = pack(s, &c, 1);
+  return c.bad || fflush(out) ? 0 : len;
 }
 
 /* vsph_integrate_unpack, and with @p exact 0 vsph_integrate_restore: a
  * capacity grown since the packing is kept (a set cannot shrink in place;
  * the capacity decides no value, only when the set grows next) */
-static int unpack(struct vsph_integrate *s, const unsigned char *buf,
+static int unpack(struct vsph_integrate *s, const unsigned char *buf, FILE *in,
                   size_t len, size_t *used, int exact) {
-  struct cursor c = {.in = buf, .len = len};
+  struct cursor c = {.in = buf, .len = len, .f = in};
   struct vsph_particles *p = s->p;
   uint64_t head[6], have;
   double t, min_dist;
@@ -962,13 +984,24 @@ static int unpack(struct vsph_integrate *s, const unsigned char *buf,
 
 int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
                           size_t len, size_t *used) {
-  return unpack(s, buf, len, used, 1);
+  return unpack(s, buf, NULL, len, used, 1);
 }
 
 int vsph_integrate_restore(struct vsph_integrate *s, const unsigned char *buf,
                            size_t len) {
   size_t used = 0;
-  const int st = unpack(s, buf, len, &used, 0);
+  const int st = unpack(s, buf, NULL, len, &used, 0);
+  if (!st && used != len)
+    VSPH_FAIL(VSPH_EINVAL, "the kept state has %zu bytes too many", len - used);
+  return st;
+}
+
+int vsph_integrate_restore_file(struct vsph_integrate *s, FILE *in,
+                                size_t len) {
+  size_t used = 0;
+  if (fseek(in, 0, SEEK_SET))
+    VSPH_FAIL(VSPH_EIO, "cannot read back the kept state");
+  const int st = unpack(s, NULL, in, len, &used, 0);
   if (!st && used != len)
     VSPH_FAIL(VSPH_EINVAL, "the kept state has %zu bytes too many", len - used);
   return st;

@@ -5,6 +5,7 @@
 
 #include <signal.h>
 #include <stddef.h>
+#include <stdio.h>
 
 #include "equations.h"
 #include "walls.h"
@@ -136,6 +137,16 @@ size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf);
  *  the next step goes on bitwise as from the whole state. */
 size_t vsph_integrate_pack_lean(const struct vsph_integrate *s,
                                 unsigned char *buf);
+
+/** @brief vsph_integrate_pack_lean written to @p out (at its position,
+ *  then flushed): kept out of memory while a snapshot is written.
+ *  @return the bytes written, 0 where a write failed. */
+size_t vsph_integrate_pack_lean_file(const struct vsph_integrate *s, FILE *out);
+
+/** @brief vsph_integrate_restore of the @p len bytes at the start of
+ *  @p in (vsph_integrate_pack_lean_file's). @return as
+ *  vsph_integrate_restore, or VSPH_EIO. */
+int vsph_integrate_restore_file(struct vsph_integrate *s, FILE *in, size_t len);
 
 /** @brief Restore a state packed by vsph_integrate_pack or
  *  vsph_integrate_pack_lean (@p len bytes at @p buf; *used receives those

@@ -636,6 +636,7 @@ void vsph_run_free(struct vsph_run *r) {
   if (!r) return;
   vsph_integrate_free(r->integ);
   free(r->side);
+  if (r->side_file) fclose(r->side_file);
   free(r);
 }
 
@@ -652,55 +653,92 @@ static double snap_time(const struct vsph_run *r, double t) {
   return fabs(dec - exact) <= 2.0 * DBL_EPSILON * fabs(exact) ? dec : exact;
 }
 
-/* The state at the snapshot time r->side_t: the current state packed into
- * r->side (vsph_integrate_pack_lean: what a step reads), then, where
- * r->side_t lies beyond the current time (strictly within the coming step), a
- * step of its own to it (the time set to it exactly, the step count left as it
- * was: the run's steps are those of its path); then one evaluation, so that its
- * pressures, ghosts and wall particles are this state's, as an energy row
- * leaves them (a step leaves its last stage's). The next vsph_run_iterate puts
- * the packed state back. Interruptible 0: a stop is not seen within the step
- * (the restore of a checkpoint taken there). VSPH_OK; or the state put back as
- * it was and 1 where the step went unstable (the snapshot then waits for the
- * step's end, as any other output), VSPH_EINTR where it was stopped, or an
- * internal failure. */
-static int side_step(struct vsph_run *r, int interruptible) {
-  struct vsph_integrate *s = r->integ;
-  const size_t len = vsph_integrate_pack_lean(s, NULL), steps = s->steps;
+/* The step's start kept (r->side_len bytes, vsph_integrate_pack_lean's)
+ * while a snapshot within the step is written: in an unlinked scratch
+ * file (tmpfile(3), in TMPDIR), out of the run's memory (the kept state
+ * would otherwise add its 7 doubles a particle to the run's peak), or
+ * where none can be written, in memory (r->side). */
+static int side_keep(struct vsph_run *r) {
+  const struct vsph_integrate *s = r->integ;
+  FILE *f = tmpfile();
+  if (f) {
+    const size_t len = vsph_integrate_pack_lean_file(s, f);
+    if (len) {
+      r->side_file = f;
+      r->side_len = len;
+      return VSPH_OK;
+    }
+    fclose(f);
+  }
+  const size_t len = vsph_integrate_pack_lean(s, NULL);
   unsigned char *buf = malloc(len);
   if (!buf) VSPH_FAIL(VSPH_ENOMEM, "cannot keep the state for a snapshot");
   vsph_integrate_pack_lean(s, buf);
+  r->side = buf;
+  r->side_len = len;
+  return VSPH_OK;
+}
+
+/* Whether a step's start is kept. */
+static int side_kept(const struct vsph_run *r) {
+  return r->side != NULL || r->side_file != NULL;
+}
+
+/* Forget the kept state. */
+static void side_drop(struct vsph_run *r) {
+  free(r->side);
+  if (r->side_file) fclose(r->side_file);
+  r->side = NULL;
+  r->side_file = NULL;
+  r->side_len = 0;
+}
+
+/* Back from a snapshot's own time to the state it was reached from. */
+static int side_back(struct vsph_run *r) {
+  const int st =
+      r->side_file
+          ? vsph_integrate_restore_file(r->integ, r->side_file, r->side_len)
+          : vsph_integrate_restore(r->integ, r->side, r->side_len);
+  side_drop(r);
+  return st;
+}
+
+/* The state at the snapshot time r->side_t: the current state kept
+ * (side_keep: what a step reads), then, where r->side_t lies beyond the
+ * current time (strictly within the coming step), a step of its own to it
+ * (the time set to it exactly, the step count left as it was: the run's
+ * steps are those of its path); then one evaluation, so that its
+ * pressures, ghosts and wall particles are this state's, as an energy row
+ * leaves them (a step leaves its last stage's). The next vsph_run_iterate
+ * puts the kept state back. Interruptible 0: a stop is not seen within
+ * the step (the restore of a checkpoint taken there). VSPH_OK; or the
+ * state put back as it was and 1 where the step went unstable (the
+ * snapshot then waits for the step's end, as any other output),
+ * VSPH_EINTR where it was stopped, or an internal failure. */
+static int side_step(struct vsph_run *r, int interruptible) {
+  struct vsph_integrate *s = r->integ;
+  const size_t steps = s->steps;
+  int st = side_keep(r);
+  if (st) return st;
   if (r->side_t > s->t * (1.0 + 1e-12)) {
     const volatile sig_atomic_t *stop = s->stop;
     if (!interruptible) s->stop = NULL;
-    const int st = vsph_integrate_step(s, r->side_t - s->t);
+    st = vsph_integrate_step(s, r->side_t - s->t);
     s->stop = stop;
     /* unstable, whether or not the step also failed, as the run's own
      * step judges it (vsph_run_iterate) */
     const int bad = st != VSPH_EINTR && vsph_integrate_check(s);
     if (st || bad) {
-      const int back = vsph_integrate_restore(s, buf, len);
-      free(buf);
+      const int back = side_back(r);
       return back ? back : bad ? 1 : st;
     }
   }
   s->t = r->side_t;
   s->steps = steps;
-  r->side = buf;
-  r->side_len = len;
   struct vsph_equations_energy en;
   struct vsph_equations_budget b;
-  const int st = vsph_integrate_diagnostics(s, &en, &b);
+  st = vsph_integrate_diagnostics(s, &en, &b);
   r->evaluated = st == VSPH_OK;
-  return st;
-}
-
-/* Back from a snapshot's own time to the state it was reached from. */
-static int side_back(struct vsph_run *r) {
-  const int st = vsph_integrate_restore(r->integ, r->side, r->side_len);
-  free(r->side);
-  r->side = NULL;
-  r->side_len = 0;
   return st;
 }
 
@@ -708,7 +746,7 @@ int vsph_run_iterate(struct vsph_run *r) {
   if (!r) VSPH_FAIL(VSPH_EINVAL, "vsph_run_iterate: a NULL argument");
   r->due = 0;
   r->evaluated = 0;
-  if (r->side) {
+  if (side_kept(r)) {
     const int back = side_back(r);
     if (back) return back;
   }
@@ -808,13 +846,16 @@ size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf) {
   rs.due = (int32_t)r->due;
   rs.state = r->state;
   memcpy(rs.reason, r->reason, sizeof rs.reason);
-  rs.side = r->side != NULL;
+  rs.side = side_kept(r);
   rs.side_t = r->side_t;
   if (buf) memcpy(buf, &rs, sizeof rs);
-  if (r->side) { /* the state the snapshot's is made again from */
-    if (buf) memcpy(buf + sizeof rs, r->side, r->side_len);
-    return sizeof rs + r->side_len;
-  }
+  if (r->side && buf) /* the state the snapshot's is made again from */
+    memcpy(buf + sizeof rs, r->side, r->side_len);
+  if (r->side_file && buf &&
+      (fseek(r->side_file, 0, SEEK_SET) ||
+       fread(buf + sizeof rs, 1, r->side_len, r->side_file) != r->side_len))
+    return 0; /* cannot be read back */
+  if (side_kept(r)) return sizeof rs + r->side_len;
   return sizeof rs +
          vsph_integrate_pack(r->integ, buf ? buf + sizeof rs : NULL);
 }
@@ -848,9 +889,7 @@ int vsph_run_unpack(struct vsph_run *r, const unsigned char *buf, size_t len) {
   r->state = rs.state;
   memcpy(r->reason, rs.reason, sizeof rs.reason);
   r->reason[sizeof r->reason - 1] = '\0';
-  free(r->side);
-  r->side = NULL;
-  r->side_len = 0;
+  side_drop(r);
   r->side_t = rs.side_t;
   r->evaluated = 0;
   /* packed at a snapshot's own time: that state made again, to the bit,

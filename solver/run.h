@@ -4,6 +4,7 @@
 #define VSPH_SOLVER_RUN_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "../common/api.h"
 #include "../common/params.h"
@@ -126,6 +127,7 @@ struct vsph_run {
   /* private: at a snapshot's own time within a step (vsph_run_iterate),
    * the state it was reached from, packed, and that time */
   unsigned char *side;
+  FILE *side_file; /* or there (an unlinked scratch file) */
   size_t side_len;
   double side_t;
 };
@@ -207,7 +209,8 @@ VSPH_API int vsph_run_row(struct vsph_run *r, struct vsph_run_row *row);
  *  the integrator's state) packed into @p buf, or only
  *  sized when @p buf is NULL. Between two vsph_run_iterate calls a run
  *  restored from it by vsph_run_unpack goes on bitwise as if never
- *  stopped. @return the bytes packed. */
+ *  stopped. @return the bytes packed; 0 where the state kept in a
+ *  scratch file for a snapshot cannot be read back. */
 VSPH_API size_t vsph_run_pack(const struct vsph_run *r, unsigned char *buf);
 
 /** @brief Restore a state packed by vsph_run_pack into @p r, freshly made
