@@ -289,7 +289,8 @@ void vsph_jobs_store_data_path(const struct vsph_jobs *J, const char *dir,
 int vsph_jobs_store_last_snapshot(const struct vsph_jobs *J, const char *dir);
 
 /** @brief Peak resident memory (bytes) of a whole `vsph run SCENE --visc
- *  VISC --res RES --t-end T_END` in a process of its own (this program
+ *  VISC --res RES --t-end T_END` (its energy rows and snapshots as the
+ *  run's defaults, 200 and 10) in a process of its own (this program
  *  started again through /proc/self/exe, so nothing of the caller's
  *  memory counts), as its run.json says, in a temporary folder removed
  *  after; 0 if it cannot be run. For vsph bench. */

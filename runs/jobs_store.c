@@ -212,8 +212,7 @@ double vsph_jobs_store_peak_rss(const char *scene, const char *visc, size_t res,
       dup2(null, 2);
     }
     execl("/proc/self/exe", "vsph", "run", scene, "--visc", visc, "--res", r,
-          "--t-end", t, "--outputs", "1", "--snapshots", "0", "--out", out,
-          (char *)NULL);
+          "--t-end", t, "--out", out, (char *)NULL);
     _exit(127);
   }
   int status = 1;

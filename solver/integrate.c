@@ -941,11 +941,15 @@ static int unpack(struct vsph_integrate *s, const unsigned char *buf, FILE *in,
     if ((have >> k & 1) != (*a[k] != NULL) && !(*a[k] && (out >> k & 1)))
       VSPH_FAIL(VSPH_EINVAL, "the saved state's fields are not this run's");
   /* the very capacity the run had: the buffers as they were */
+  const size_t cap0 = p->cap;
   int st = vsph_particles_reserve(p, (size_t)head[2]);
   if (!st && (exact ? p->cap != (size_t)head[2] : p->cap < (size_t)head[2]))
     VSPH_FAIL(VSPH_EINVAL, "the saved capacity %llu cannot be restored",
               (unsigned long long)head[2]);
-  if (!st) st = buffers_alloc(s);
+  /* the buffers follow the capacity (they hold no state: the next step
+   * writes them before it reads them); kept as they are where it stayed,
+   * as a snapshot's restore finds it, not made afresh each time */
+  if (!st && p->cap != cap0) st = buffers_alloc(s);
   if (st) return st;
   p->n = (size_t)head[1];
   for (int k = 0; k < na; k++) {
