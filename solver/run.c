@@ -439,7 +439,8 @@ static int check_cost(const struct vsph_run_props *rp,
       sc->walls.n * layers * 2.0 * pow(n, (sc->dim - 1.0) / sc->dim);
   /* the lattice the scene lays, which the integrator takes */
   /* with snapshots, the state a snapshot within a step is reached from,
-   * packed while it is written (vsph_integrate_pack_lean's arrays:
+   * kept while it is written: in a scratch file, but counted for where
+   * none can be made (vsph_integrate_pack_lean's arrays:
    * positions, velocities, m, rho, id; V and p with wall particles or
    * the transport velocity, and its two vectors; the gas law's energy;
    * the material, one byte counted as a double) */
