@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "../common/consts.h"
 #include "../common/status.h"
@@ -654,14 +655,33 @@ static double snap_time(const struct vsph_run *r, double t) {
   return fabs(dec - exact) <= 2.0 * DBL_EPSILON * fabs(exact) ? dec : exact;
 }
 
+/* An unlinked scratch file in TMPDIR (else /tmp), opened for update;
+ * NULL where none can be made. */
+static FILE *scratch_file(void) {
+  const char *dir = getenv("TMPDIR");
+  if (!dir || !*dir) dir = "/tmp";
+  static const char leaf[] = "/vsph-state-XXXXXX";
+  char *path = malloc(strlen(dir) + sizeof leaf);
+  if (!path) return NULL;
+  strcpy(path, dir);
+  strcat(path, leaf);
+  const int fd = mkstemp(path);
+  if (fd >= 0) unlink(path);
+  free(path);
+  if (fd < 0) return NULL;
+  FILE *f = fdopen(fd, "w+b");
+  if (!f) close(fd);
+  return f;
+}
+
 /* The step's start kept (r->side_len bytes, vsph_integrate_pack_lean's)
  * while a snapshot within the step is written: in an unlinked scratch
- * file (tmpfile(3), in TMPDIR), out of the run's memory (the kept state
- * would otherwise add its 7 doubles a particle to the run's peak), or
- * where none can be written, in memory (r->side). */
+ * file (scratch_file), out of the run's memory (the kept state would
+ * otherwise add its 7 doubles a particle to the run's peak), or where
+ * none can be written, in memory (r->side). */
 static int side_keep(struct vsph_run *r) {
   const struct vsph_integrate *s = r->integ;
-  FILE *f = tmpfile();
+  FILE *f = scratch_file();
   if (f) {
     const size_t len = vsph_integrate_pack_lean_file(s, f);
     if (len) {

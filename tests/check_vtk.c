@@ -20,6 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <zlib.h>
 
@@ -1018,6 +1019,47 @@ START_TEST(test_waves) {
 }
 END_TEST
 
+/* Snapshots within steps keep the step's start in a scratch file in
+ * TMPDIR, or in memory where none can be made there: the same files
+ * either way (every snapshot, energy.csv), and nothing left in TMPDIR. */
+START_TEST(test_kept_state_place) {
+  char dir[] = "/tmp/vsph_keptXXXXXX", tmp[64], args[400], a[300], b[300];
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  snprintf(tmp, sizeof tmp, "%s/tmp", dir);
+  ck_assert_int_eq(mkdir(tmp, 0700), 0);
+  const char *old = getenv("TMPDIR");
+  char *keep = old ? strdup(old) : NULL;
+  static const char *const where[2] = {"file", "memory"};
+  for (int k = 0; k < 2; k++) {
+    char bad[80];
+    snprintf(bad, sizeof bad, "%s/none/here", dir);
+    setenv("TMPDIR", k ? bad : tmp, 1);
+    snprintf(args, sizeof args,
+             "run standing-wave --res 10 --t-end 0.1 --outputs 5 --snapshots "
+             "3 --out %s/%s --quiet",
+             dir, where[k]);
+    struct vsph_test_outcome *o = vsph_test_cli(args);
+    ck_assert_msg(o->status == 0, "%s: %s", args, o->err);
+  }
+  if (keep) {
+    setenv("TMPDIR", keep, 1);
+    free(keep);
+  } else {
+    unsetenv("TMPDIR");
+  }
+  static const char *const files[] = {"energy.csv", "snap_0001.vtp",
+                                      "snap_0002.vtp", "snap_0003.vtp"};
+  for (size_t q = 0; q < sizeof files / sizeof files[0]; q++) {
+    snprintf(a, sizeof a, "%s/file/%s", dir, files[q]);
+    snprintf(b, sizeof b, "%s/memory/%s", dir, files[q]);
+    ck_assert_msg(same_bytes(a, b), "%s differs", files[q]);
+  }
+  ck_assert_int_eq(rmdir(tmp), 0); /* empty: the scratch file unlinked */
+  snprintf(args, sizeof args, "rm -rf '%s'", dir);
+  ck_assert_int_eq(system(args), 0);
+}
+END_TEST
+
 Suite *vsph_vtk_suite(void) {
   Suite *s = suite_create("vtk");
   TCase *tc = tcase_create("snapshots");
@@ -1032,6 +1074,7 @@ Suite *vsph_vtk_suite(void) {
   tcase_add_test(tc, test_read_errors);
   tcase_add_test(tc, test_run_times);
   tcase_add_test(tc, test_waves);
+  tcase_add_test(tc, test_kept_state_place);
   tcase_add_loop_test(tc, test_snapshots_leave_path, 0, NPATH);
   suite_add_tcase(s, tc);
   return s;
