@@ -3,6 +3,7 @@
 #include "vtk.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <omp.h>
 #include <signal.h>
@@ -60,6 +61,8 @@ struct out {
   size_t zcap;
   unsigned char *raw; /* a wave of a gathered array, rawcap bytes */
   size_t rawcap;
+  char *spill_path; /* the scratch file's name where it could not be
+                       unlinked at once, else NULL */
   struct entry e[MAX_ARRAYS];
   size_t ne;
   char desc[DESC_LEN];
@@ -70,20 +73,33 @@ struct out {
   int no_scalars, no_vectors;        /* a frame without pressure, velocity */
 };
 
-/* The scratch file of the appended block: made in @p dir by mkstemp and
- * unlinked at once (NULL where it cannot be made). */
-static FILE *spill_open(const char *dir) {
+/* The scratch file of the appended block: made in @p dir by mkstemp,
+ * closed on exec, and unlinked at once; where the file system cannot
+ * unlink an open file, its name is kept in @p o and removed when the file
+ * is closed (emit). NULL where it cannot be made. */
+static FILE *spill_open(struct out *o, const char *dir) {
   static const char leaf[] = "/.vsph-vtk-XXXXXX";
   char *path = malloc(strlen(dir) + sizeof leaf);
   if (!path) return NULL;
   strcpy(path, dir);
   strcat(path, leaf);
   const int fd = mkstemp(path);
-  if (fd >= 0) unlink(path);
-  free(path);
-  if (fd < 0) return NULL;
+  if (fd < 0) {
+    free(path);
+    return NULL;
+  }
+  (void)fcntl(fd, F_SETFD, FD_CLOEXEC);
   FILE *f = fdopen(fd, "w+b");
-  if (!f) close(fd);
+  if (!f) {
+    close(fd);
+    unlink(path);
+    free(path);
+    return NULL;
+  }
+  if (unlink(path) == 0)
+    free(path);
+  else
+    o->spill_path = path;
   return f;
 }
 
@@ -171,7 +187,7 @@ static int add(struct out *o, enum section sec, const char *name,
                const struct src *src, size_t nbytes) {
   const volatile sig_atomic_t *stop = o->stop;
   VSPH_ASSERT(o->ne < MAX_ARRAYS);
-  if (!o->spill && !(o->spill = spill_open(o->dir)))
+  if (!o->spill && !(o->spill = spill_open(o, o->dir)))
     VSPH_FAIL(VSPH_EIO, "cannot write a snapshot's scratch file in %s: %s",
               o->dir, strerror(errno));
   const size_t nblocks = (nbytes + VSPH_VTK_BLOCK - 1) / VSPH_VTK_BLOCK;
@@ -500,6 +516,8 @@ static int emit(struct out *o, int st, const char *dir, const char *name,
   }
   if (o) {
     if (o->spill) fclose(o->spill);
+    if (o->spill_path) unlink(o->spill_path);
+    free(o->spill_path);
     free(o->z);
     free(o->raw);
   }

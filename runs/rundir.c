@@ -324,7 +324,7 @@ static int write_centreline(struct outputs *o, const struct vsph_run *run) {
 
 /* A snapshot and its table rows; VSPH_EINTR, with nothing written, when
  * *stop is set during its sums or its compression. */
-static int write_snapshot(struct outputs *o, const struct vsph_run *run,
+static int write_snapshot(struct outputs *o, struct vsph_run *run,
                           const volatile sig_atomic_t *stop) {
   char name[64];
   snprintf(name, sizeof name, "snap_%04zu.vtp", o->nsnap);
@@ -364,7 +364,7 @@ static int write_snapshot(struct outputs *o, const struct vsph_run *run,
     char wname[64];
     snprintf(wname, sizeof wname, "walls_%04zu.vtp", o->nsnap - 1);
     st = vsph_vtk_write_walls(o->dir, wname, s->p, s->n_fluid,
-                              s->gh ? s->gh->keep : 0, s->t);
+                              vsph_integrate_wall_count(s), s->t);
     if (!st) (void)vsph_folder_note(o->fo, wname);
     if (!st) st = vsph_vtk_pvd_add_part(&o->pvd, s->t, 1, wname);
   }

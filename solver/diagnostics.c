@@ -57,13 +57,20 @@ struct share {
   double x[3], du[3], VF, s2;
 };
 
-/* The canonical order of a particle's neighbours: by their offset x, a
- * point that no two neighbours share; so the sums do not depend on the
- * particles' order, nor on the cell list that found them. */
+/* The canonical order of a particle's neighbours: by their offset x, then
+ * (a neighbour and a mirror image of it can share an offset) by the
+ * velocity difference and the weights; neighbours equal in all of these
+ * add the same share, so their order does not matter. The sums then do
+ * not depend on the particles' order, nor on the cell list that found
+ * them. */
 static int by_offset(const void *a, const void *b) {
   const struct share *u = a, *v = b;
-  for (int k = 0; k < 3; k++)
-    if (u->x[k] != v->x[k]) return u->x[k] < v->x[k] ? -1 : 1;
+  const double ku[8] = {u->x[0],  u->x[1],  u->x[2], u->du[0],
+                        u->du[1], u->du[2], u->VF,   u->s2};
+  const double kv[8] = {v->x[0],  v->x[1],  v->x[2], v->du[0],
+                        v->du[1], v->du[2], v->VF,   v->s2};
+  for (int k = 0; k < 8; k++)
+    if (ku[k] != kv[k]) return ku[k] < kv[k] ? -1 : 1;
   return 0;
 }
 
@@ -123,7 +130,7 @@ static int sums(const struct vsph_particles *q, size_t n,
           }
         }
         if (short_of) break;
-        qsort(sh, m, sizeof *sh, by_offset);
+        if (m > 1) qsort(sh, m, sizeof *sh, by_offset);
         double w[3] = {0, 0, 0}, dr = 0.0;
         for (size_t r = 0; r < m; r++) {
           const double *x = sh[r].x, *du = sh[r].du, VF = sh[r].VF;
@@ -241,6 +248,13 @@ int vsph_diagnostics_compute_cells(const struct vsph_particles *p, size_t n,
               "vsph_diagnostics_compute_cells: a NULL argument, "
               "h <= 0 or cells narrower than the kernel's reach");
   if (stop && *stop) return VSPH_EINTR;
+  size_t held = 0; /* the cell list is p's: it holds its particles */
+  for (size_t c = 0; c < cells->ncells; c++) held += cells->count[c];
+  if (cells->dim != p->dim || held != p->n)
+    VSPH_FAIL(VSPH_EINVAL,
+              "vsph_diagnostics_compute_cells: the cell list "
+              "holds %zu particles in %d-D, the set %zu in %d-D",
+              held, cells->dim, p->n, p->dim);
   if (room && (!room[0] || !room[1] || (p->dim == 3 && (!room[2] || !room[3]))))
     VSPH_FAIL(VSPH_EINVAL, "vsph_diagnostics_compute_cells: a NULL room");
   int finite;

@@ -237,6 +237,10 @@ static size_t n_wall(const struct vsph_integrate *s) {
                   : 0;
 }
 
+size_t vsph_integrate_wall_count(const struct vsph_integrate *s) {
+  return s ? n_wall(s) : 0;
+}
+
 /* Ghosts (walls only), the cell list with a skin, and the id -> index map. */
 static int prepare(struct vsph_integrate *s, double skin) {
   const struct vsph_viscous_props *vp = &s->props.eq.visc;

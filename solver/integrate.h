@@ -125,6 +125,11 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
  *  @return the bytes packed. */
 size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf);
 
+/** @brief The wall particles laid beside the fluid (ids n_fluid up to
+ *  n_fluid + this; 0 without solid walls): the particles beyond them are
+ *  images (ghosts, periodic images). */
+size_t vsph_integrate_wall_count(const struct vsph_integrate *s);
+
 /** @brief vsph_integrate_pack without the rates, which every evaluation
  *  writes before anything reads them (the accelerations, d rho/dt,
  *  de/dt), and, where there are no wall particles and no transport
@@ -138,8 +143,9 @@ size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf);
 size_t vsph_integrate_pack_lean(const struct vsph_integrate *s,
                                 unsigned char *buf);
 
-/** @brief vsph_integrate_pack_lean written to @p out (at its position,
- *  then flushed): kept out of memory while a snapshot is written.
+/** @brief vsph_integrate_pack_lean written to @p out from its start (a
+ *  fresh file, which vsph_integrate_restore_file reads from its start),
+ *  then flushed: kept out of memory while a snapshot is written.
  *  @return the bytes written, 0 where a write failed. */
 size_t vsph_integrate_pack_lean_file(const struct vsph_integrate *s, FILE *out);
 

@@ -2,6 +2,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #include "run.h"
 
+#include <fcntl.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -666,9 +667,16 @@ static FILE *scratch_file(void) {
   strcpy(path, dir);
   strcat(path, leaf);
   const int fd = mkstemp(path);
-  if (fd >= 0) unlink(path);
+  if (fd >= 0 && unlink(path) != 0) { /* a file system that cannot unlink
+                                         an open file: memory instead */
+    close(fd);
+    unlink(path);
+    free(path);
+    return NULL;
+  }
   free(path);
   if (fd < 0) return NULL;
+  (void)fcntl(fd, F_SETFD, FD_CLOEXEC); /* not a child's to hold */
   FILE *f = fdopen(fd, "w+b");
   if (!f) close(fd);
   return f;

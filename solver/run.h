@@ -119,9 +119,11 @@ struct vsph_run {
   char reason[160];             /*!< why, or "" */
   double pairs;                 /*!< interactions gathered so far */
   int evaluated; /*!< 1: evaluated since its last step (an energy row, or
-                      a snapshot's own time), so the integrator's particles
-                      are sorted by its cell list for this state (read
-                      only; vsph_diagnostics can use them so) */
+                      a snapshot's own time): the integrator's particles
+                      are sorted by its cell list for this state and its
+                      rates are free until the next step (a snapshot's
+                      diagnostics use both); set by the run, not by its
+                      caller */
   /* private: the output schedule */
   double out_dt, snap_dt, next_out, next_snap;
   /* private: at a snapshot's own time within a step (vsph_run_iterate),

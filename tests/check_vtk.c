@@ -29,6 +29,8 @@
 #include "../io/vtk.h"
 #include "../solver/diagnostics.h"
 #include "../solver/particles.h"
+#include "../solver/run.h"
+#include "../solver/scene.h"
 #include "check_suites.h"
 
 /* ---- the independent reader ---- */
@@ -1027,8 +1029,8 @@ START_TEST(test_kept_state_place) {
   ck_assert_ptr_nonnull(mkdtemp(dir));
   snprintf(tmp, sizeof tmp, "%s/tmp", dir);
   ck_assert_int_eq(mkdir(tmp, 0700), 0);
-  const char *old = getenv("TMPDIR");
-  char *keep = old ? strdup(old) : NULL;
+  const char *was = getenv("TMPDIR");
+  char *old_tmp = was ? strdup(was) : NULL;
   static const char *const where[2] = {"file", "memory"};
   for (int k = 0; k < 2; k++) {
     char bad[80];
@@ -1041,12 +1043,6 @@ START_TEST(test_kept_state_place) {
     struct vsph_test_outcome *o = vsph_test_cli(args);
     ck_assert_msg(o->status == 0, "%s: %s", args, o->err);
   }
-  if (keep) {
-    setenv("TMPDIR", keep, 1);
-    free(keep);
-  } else {
-    unsetenv("TMPDIR");
-  }
   static const char *const files[] = {"energy.csv", "snap_0001.vtp",
                                       "snap_0002.vtp", "snap_0003.vtp"};
   for (size_t q = 0; q < sizeof files / sizeof files[0]; q++) {
@@ -1055,6 +1051,63 @@ START_TEST(test_kept_state_place) {
     ck_assert_msg(same_bytes(a, b), "%s differs", files[q]);
   }
   ck_assert_int_eq(rmdir(tmp), 0); /* empty: the scratch file unlinked */
+  /* and where the state waits, seen from the run itself: at the first
+   * snapshot within a step, in a file where TMPDIR can hold one, else in
+   * memory */
+  for (int k = 0; k < 2; k++) {
+    if (!k) ck_assert_int_eq(mkdir(tmp, 0700), 0);
+    setenv("TMPDIR", k ? "/nonexistent/vsph" : tmp, 1);
+    static const char *const set[] = {"Solver:res=10", "Solver:t_end=0.1",
+                                      "Solver:outputs=5", "Solver:snapshots=3",
+                                      NULL};
+    struct vsph_run *run =
+        vsph_test_run(vsph_scene_find("standing-wave"), set, NULL);
+    while (!run->side && !run->side_file && run->state == VSPH_RUN_RUNNING)
+      ck_assert_int_eq(vsph_run_iterate(run), 0);
+    ck_assert_msg(
+        k ? run->side && !run->side_file : run->side_file && !run->side,
+        "the kept state is not in %s", where[k]);
+    vsph_run_free(run);
+    if (!k) ck_assert_int_eq(rmdir(tmp), 0);
+  }
+  if (old_tmp) {
+    setenv("TMPDIR", old_tmp, 1);
+    free(old_tmp);
+  } else {
+    unsetenv("TMPDIR");
+  }
+  snprintf(args, sizeof args, "rm -rf '%s'", dir);
+  ck_assert_int_eq(system(args), 0);
+}
+END_TEST
+
+/* A run's walls file types its particles: the cavity's Adami walls and
+ * lid are wall particles (1), none an image (2); the standing wave's
+ * mirror ghosts are all images. */
+START_TEST(test_walls_typed) {
+  char dir[] = "/tmp/vsph_typedXXXXXX", args[400], path[300];
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  static const char *const runs[2][2] = {
+      {"cavity", "--set Scene:walls=adami --set Solver:tvf=1"},
+      {"standing-wave", ""}};
+  for (int k = 0; k < 2; k++) {
+    snprintf(args, sizeof args,
+             "run %s --res 8 --t-end 0.01 --snapshots 1 --outputs 1 %s "
+             "--out %s/%d --quiet",
+             runs[k][0], runs[k][1], dir, k);
+    struct vsph_test_outcome *o = vsph_test_cli(args);
+    ck_assert_msg(o->status == 0, "%s: %s", args, o->err);
+    snprintf(path, sizeof path, "%s/%d/walls_0001.vtp", dir, k);
+    int nc = 0;
+    size_t n = 0;
+    double *type = vsph_test_vtp_values(path, "type", &nc, &n);
+    ck_assert_ptr_nonnull(type);
+    ck_assert_uint_gt(n, 0);
+    for (size_t i = 0; i < n; i++)
+      ck_assert_msg(type[i] == (k ? 2.0 : 1.0), "%s: particle %zu typed %g",
+                    runs[k][0], i, type[i]);
+    free(type);
+  }
   snprintf(args, sizeof args, "rm -rf '%s'", dir);
   ck_assert_int_eq(system(args), 0);
 }
@@ -1075,6 +1128,7 @@ Suite *vsph_vtk_suite(void) {
   tcase_add_test(tc, test_run_times);
   tcase_add_test(tc, test_waves);
   tcase_add_test(tc, test_kept_state_place);
+  tcase_add_test(tc, test_walls_typed);
   tcase_add_loop_test(tc, test_snapshots_leave_path, 0, NPATH);
   suite_add_tcase(s, tc);
   return s;
