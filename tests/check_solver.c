@@ -819,6 +819,48 @@ START_TEST(test_diagnostics_order) {
 }
 END_TEST
 
+/* The same in 3-D (a contact run of the shear layer, evaluated by its
+ * first row): the vorticity's three components and div r written into
+ * the rates (room[2], room[3]: omega_x, omega_y) are bitwise the sorted
+ * copy's. */
+START_TEST(test_diagnostics_room_3d) {
+  static const char *const set[] = {
+      "Solver:scheme=contact", "Solver:kernel=wendland2",
+      "Solver:alpha=0.5",      "Solver:res=8",
+      "Scene:Ly=4e-7",         "Scene:Lz=4e-7",
+      "Solver:t_end=1e-10",    NULL};
+  struct vsph_run *run = vsph_test_run(vsph_scene_find("shear"), set, NULL);
+  ck_assert_int_eq(vsph_run_iterate(run), 0);
+  struct vsph_run_row row;
+  ck_assert_int_eq(vsph_run_row(run, &row), 0);
+  ck_assert(run->evaluated);
+  struct vsph_integrate *s = run->integ;
+  struct vsph_particles *p = s->p;
+  ck_assert_int_eq(p->dim, 3);
+  const struct vsph_kernel_type *k = s->props.eq.visc.kernel;
+  const double h = s->props.eq.visc.h;
+  const size_t nf = s->n_fluid;
+  struct vsph_diagnostics a, r;
+  ck_assert_int_eq(vsph_diagnostics_compute(p, nf, k, h, &a, NULL), 0);
+  double *const room[4] = {p->acc[0], p->acc[1], p->acc[2], p->drho};
+  ck_assert_int_eq(
+      vsph_diagnostics_compute_cells(p, nf, s->cells, k, h, room, &r, NULL), 0);
+  ck_assert(r.divr == room[0] && r.vort[2] == room[1] && r.vort[0] == room[2] &&
+            r.vort[1] == room[3]);
+  double most = 0.0;
+  for (int c = 0; c < 3; c++) {
+    ck_assert_mem_eq(a.vort[c], r.vort[c], nf * sizeof(double));
+    for (size_t i = 0; i < nf; i++) most = fmax(most, fabs(a.vort[c][i]));
+  }
+  ck_assert_double_gt(most, 0.0); /* the shear layer turns */
+  ck_assert_mem_eq(a.divr, r.divr, nf * sizeof(double));
+  ck_assert_mem_eq(a.surf, r.surf, nf);
+  vsph_diagnostics_free(&a);
+  vsph_diagnostics_free(&r);
+  vsph_run_free(run);
+}
+END_TEST
+
 Suite *vsph_solver_suite(void) {
   Suite *s = suite_create("solver");
   TCase *tc = tcase_create("runs");
@@ -840,6 +882,7 @@ Suite *vsph_solver_suite(void) {
   tcase_add_test(tc, test_rhs_cells_vs_direct);
   tcase_add_test(tc, test_pack_lean);
   tcase_add_test(tc, test_diagnostics_order);
+  tcase_add_test(tc, test_diagnostics_room_3d);
   suite_add_tcase(s, tc);
   return s;
 }
