@@ -3,7 +3,6 @@
 #include "vtk.h"
 
 #include <errno.h>
-#include <fcntl.h>
 #include <math.h>
 #include <omp.h>
 #include <signal.h>
@@ -13,6 +12,7 @@
 #include <unistd.h>
 #include <zlib.h>
 
+#include "../common/scratch.h"
 #include "../common/status.h"
 #include "../solver/diagnostics.h"
 #include "../solver/particles.h"
@@ -72,36 +72,6 @@ struct out {
   int level;                         /* zlib's: LEVEL, or FRAME_LEVEL */
   int no_scalars, no_vectors;        /* a frame without pressure, velocity */
 };
-
-/* The scratch file of the appended block: made in @p dir by mkstemp,
- * closed on exec, and unlinked at once; where the file system cannot
- * unlink an open file, its name is kept in @p o and removed when the file
- * is closed (emit). NULL where it cannot be made. */
-static FILE *spill_open(struct out *o, const char *dir) {
-  static const char leaf[] = "/.vsph-vtk-XXXXXX";
-  char *path = malloc(strlen(dir) + sizeof leaf);
-  if (!path) return NULL;
-  strcpy(path, dir);
-  strcat(path, leaf);
-  const int fd = mkstemp(path);
-  if (fd < 0) {
-    free(path);
-    return NULL;
-  }
-  (void)fcntl(fd, F_SETFD, FD_CLOEXEC);
-  FILE *f = fdopen(fd, "w+b");
-  if (!f) {
-    close(fd);
-    unlink(path);
-    free(path);
-    return NULL;
-  }
-  if (unlink(path) == 0)
-    free(path);
-  else
-    o->spill_path = path;
-  return f;
-}
 
 /* Blocks compressed at once: a few for each thread, so that the threads
  * share the work while only these blocks are held. */
@@ -187,7 +157,8 @@ static int add(struct out *o, enum section sec, const char *name,
                const struct src *src, size_t nbytes) {
   const volatile sig_atomic_t *stop = o->stop;
   VSPH_ASSERT(o->ne < MAX_ARRAYS);
-  if (!o->spill && !(o->spill = spill_open(o, o->dir)))
+  if (!o->spill &&
+      !(o->spill = vsph_scratch_open(o->dir, ".vsph-vtk-", &o->spill_path)))
     VSPH_FAIL(VSPH_EIO, "cannot write a snapshot's scratch file in %s: %s",
               o->dir, strerror(errno));
   const size_t nblocks = (nbytes + VSPH_VTK_BLOCK - 1) / VSPH_VTK_BLOCK;

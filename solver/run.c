@@ -2,16 +2,15 @@
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #include "run.h"
 
-#include <fcntl.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "../common/consts.h"
+#include "../common/scratch.h"
 #include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "integrate.h"
@@ -656,40 +655,15 @@ static double snap_time(const struct vsph_run *r, double t) {
   return fabs(dec - exact) <= 2.0 * DBL_EPSILON * fabs(exact) ? dec : exact;
 }
 
-/* An unlinked scratch file in TMPDIR (else /tmp), opened for update;
- * NULL where none can be made. */
-static FILE *scratch_file(void) {
-  const char *dir = getenv("TMPDIR");
-  if (!dir || !*dir) dir = "/tmp";
-  static const char leaf[] = "/vsph-state-XXXXXX";
-  char *path = malloc(strlen(dir) + sizeof leaf);
-  if (!path) return NULL;
-  strcpy(path, dir);
-  strcat(path, leaf);
-  const int fd = mkstemp(path);
-  if (fd >= 0 && unlink(path) != 0) { /* a file system that cannot unlink
-                                         an open file: memory instead */
-    close(fd);
-    unlink(path);
-    free(path);
-    return NULL;
-  }
-  free(path);
-  if (fd < 0) return NULL;
-  (void)fcntl(fd, F_SETFD, FD_CLOEXEC); /* not a child's to hold */
-  FILE *f = fdopen(fd, "w+b");
-  if (!f) close(fd);
-  return f;
-}
-
 /* The step's start kept (r->side_len bytes, vsph_integrate_pack_lean's)
  * while a snapshot within the step is written: in an unlinked scratch
- * file (scratch_file), out of the run's memory (the kept state would
+ * file (vsph_scratch_open), out of the run's memory (the kept state would
  * otherwise add its 7 doubles a particle to the run's peak), or where
  * none can be written, in memory (r->side). */
 static int side_keep(struct vsph_run *r) {
   const struct vsph_integrate *s = r->integ;
-  FILE *f = scratch_file();
+  /* TMPDIR; memory where the file system cannot unlink an open file */
+  FILE *f = vsph_scratch_open(NULL, "vsph-state-", NULL);
   if (f) {
     const size_t len = vsph_integrate_pack_lean_file(s, f);
     if (len) {
