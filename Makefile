@@ -202,7 +202,7 @@ $(LIBSO): $(LIB_ALL)
 # (a static link cannot choose). Any other ARCH (say -march=native, the
 # opt-in for a library only this machine runs) installs this build's
 # alone. The two copies agree to rounding, not bitwise (their sums are
-# reduced 4 and 2 lanes wide).
+# reduced 4 and 2 lanes wide). The program is installed the same way.
 ifeq ($(strip $(ARCH)),-march=x86-64-v3)
 HWCAPS   := x86-64-v3
 PORT_ALL := $(CORE_SRC:%.c=$(PORT)/%.o) $(HASH_OBJ)
@@ -212,6 +212,13 @@ $(PORT)/libvsph.a: $(PORT_ALL)
 	ar rcs $@ $^
 $(PORT)/libvsph.so.$(VERSION): $(PORT_ALL)
 	$(CC) $(PORTCFLAGS) -shared -Wl,-soname,libvsph.so.$(SOVER) -o $@ $^ $(LDLIBS)
+# The program likewise: the baseline's in bin/, this build's in
+# libexec/vsph/x86-64-v3/, which the baseline's starts where the CPU has
+# x86-64-v3 (cli/main.c, faster_copy).
+LIB_INST += $(PORT)/vsph
+$(PORT)/vsph: $(LIB_SRC:%.c=$(PORT)/%.o) $(CLI_SRC:%.c=$(PORT)/%.o) \
+              $(HASH_OBJ) $(TEXT_OBJ)
+	$(CC) $(PORTCFLAGS) -o $@ $^ $(LDLIBS)
 endif
 INSTALL_LIB = $(if $(HWCAPS),--hwcaps $(HWCAPS) $(PORT))
 
@@ -424,4 +431,4 @@ clean:
 	rm -rf build build-asan build-fuzz
 
 -include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) \
-  $(CORE_SRC:%.c=$(PORT)/%.d)
+  $(LIB_SRC:%.c=$(PORT)/%.d) $(CLI_SRC:%.c=$(PORT)/%.d)

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "../common/consts.h"
+#include "../common/sysinfo.h"
 #include "args.h"
 #include "cmd_bench.h"
 #include "cmd_contact.h"
@@ -64,16 +65,53 @@ static void usage(FILE *f) {
  * quiet, 4.2 s loaded; large runs are the same under all three (docs/speed.md,
  * Speed). libgomp reads these once, when it loads, so vsph sets it and
  * starts itself again; a policy the environment gives (OMP_WAIT_POLICY or
- * GOMP_SPINCOUNT) is kept. If the restart fails, vsph runs on under
- * libgomp's default. */
-static void wait_policy(char **argv) {
-  if (getenv("OMP_WAIT_POLICY") || getenv("GOMP_SPINCOUNT")) return;
-  if (setenv("GOMP_SPINCOUNT", "1000", 1)) return;
-  execv("/proc/self/exe", argv);
+ * GOMP_SPINCOUNT) is kept. */
+static int set_wait_policy(void) {
+  if (getenv("OMP_WAIT_POLICY") || getenv("GOMP_SPINCOUNT")) return 0;
+  return setenv("GOMP_SPINCOUNT", "1000", 1) == 0;
+}
+
+/* The installed program runs on any x86-64: bin/vsph is built for the
+ * baseline (make install with the default ARCH on a CPU with AVX2 and FMA,
+ * scripts/install), and where the CPU has x86-64-v3 it starts the
+ * install's copy built for it, PREFIX/libexec/vsph/x86-64-v3/vsph, found
+ * beside bin/ (the same sources; results agree to rounding, as the
+ * library's two copies do). VSPH_BASELINE in the environment keeps the
+ * baseline copy. A copy built for x86-64-v3 or wider never looks, so
+ * there is no loop. Sets @p path and returns 1 where that copy is to run. */
+static int faster_copy(char *path, size_t len) {
+#if defined(__x86_64__) && !defined(__AVX2__) && defined(__GNUC__)
+  if (getenv("VSPH_BASELINE")) return 0;
+  __builtin_cpu_init();
+  if (!__builtin_cpu_supports("x86-64-v3")) return 0;
+  char self[4096];
+  const ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
+  if (k <= 0) return 0;
+  self[k] = '\0';
+  char *slash = strrchr(self, '/');
+  if (!slash) return 0;
+  *slash = '\0';
+  const int m = snprintf(path, len, "%s/../libexec/vsph/x86-64-v3/vsph", self);
+  return m > 0 && (size_t)m < len && access(path, X_OK) == 0;
+#else
+  (void)path;
+  (void)len;
+  return 0;
+#endif
+}
+
+/* Start the copy for this CPU or start again under the wait policy,
+ * whichever applies; if the start fails, vsph runs on as it is. */
+static void start(char **argv) {
+  char path[4200];
+  const int faster = faster_copy(path, sizeof path);
+  const int policy = set_wait_policy();
+  if (faster) execv(path, argv);
+  if (policy) execv("/proc/self/exe", argv);
 }
 
 int main(int argc, char **argv) {
-  wait_policy(argv);
+  start(argv);
   /* STYLE B4: GSL reports through return codes; set before any thread. */
   gsl_set_error_handler_off();
   vsph_args_install_handler();
@@ -84,7 +122,7 @@ int main(int argc, char **argv) {
     return vsph_args_finish("--help", 0);
   }
   if (!strcmp(argv[1], "--version")) {
-    printf("vsph %s\n", VSPH_VERSION);
+    printf("vsph %s (built for %s)\n", VSPH_VERSION, vsph_sysinfo_build_isa());
     return vsph_args_finish("--version", 0);
   }
   /* every command's output is flushed and checked before the exit status */

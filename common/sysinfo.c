@@ -44,6 +44,18 @@ const char *vsph_sysinfo_wait_policy(char *buf, size_t n) {
   return buf;
 }
 
+const char *vsph_sysinfo_build_isa(void) {
+#if defined(__x86_64__) && defined(__AVX512F__) && defined(__AVX512VL__)
+  return "x86-64-v4";
+#elif defined(__x86_64__) && defined(__AVX2__) && defined(__FMA__)
+  return "x86-64-v3";
+#elif defined(__x86_64__)
+  return "x86-64";
+#else
+  return "other";
+#endif
+}
+
 size_t vsph_sysinfo_peak_rss(void) {
   FILE *f = fopen("/proc/self/status", "r");
   if (!f) return 0;

@@ -30,6 +30,12 @@ double vsph_sysinfo_thread_cpu_s(void);
  *  @return @p buf. */
 const char *vsph_sysinfo_wait_policy(char *buf, size_t n);
 
+/** @brief The instruction set this code was built for: "x86-64-v4",
+ *  "x86-64-v3" (AVX2 and FMA: the default build on a CPU that has them),
+ *  "x86-64" (the baseline: the installed program and library where
+ *  the CPU lacks x86-64-v3) or "other" (not x86-64). */
+const char *vsph_sysinfo_build_isa(void);
+
 /** @brief Peak resident memory of this process so far (bytes; 0 if
  *  unknown). */
 size_t vsph_sysinfo_peak_rss(void);

@@ -112,6 +112,7 @@ static int write_run_json(const struct vsph_run *run,
   cJSON_AddStringToObject(o, "source_hash", vsph_source_hash_id);
   cJSON_AddStringToObject(o, "commit",
                           vsph_commit_id[0] ? vsph_commit_id : "unknown");
+  cJSON_AddStringToObject(o, "build", vsph_sysinfo_build_isa());
   if (opts->command) cJSON_AddStringToObject(o, "command", opts->command);
   cJSON_AddStringToObject(o, "date", res->started);
   cJSON_AddStringToObject(o, "scene", run->scene.type->name);

@@ -14,6 +14,8 @@
 #include <string.h>
 
 #include "../analysis/references.h"
+#include "../common/consts.h"
+#include "../runs/archive.h"
 #include "check_suites.h"
 
 /* What the example must print: the line's label, the value by closed
@@ -334,6 +336,95 @@ START_TEST(test_installed_dispatch) {
 }
 END_TEST
 
+/* The installed program runs on any x86-64 (scripts/install, cli/main.c):
+ * bin/vsph is the baseline's build, with no AVX instruction, and starts
+ * libexec/vsph/x86-64-v3/vsph where the CPU has x86-64-v3 (--version and
+ * run.json's "build" say which ran); VSPH_BASELINE keeps the baseline.
+ * The two copies' stretching square (res 20, 112 steps) agree within the
+ * archive's rule for a run that still stands (runs/archive.h: 1e-6
+ * relative plus 1e-9; they differ in reduction widths, at about 3e-13):
+ * E_k, E_c, P_visc at every row. */
+START_TEST(test_installed_program) {
+  char sbuf[4096];
+  const char *stage = staged(sbuf);
+  char v3[4200];
+  snprintf(v3, sizeof v3, "%s/libexec/vsph/x86-64-v3/vsph", stage);
+  FILE *f = fopen(v3, "r");
+  if (!f) { /* a build for another ARCH installs one program, its own */
+    printf("program: no x86-64-v3 copy staged (ARCH is not x86-64-v3)\n");
+    return;
+  }
+  fclose(f);
+  char dir[] = "/tmp/vsph-prog-XXXXXX", script[6 * 4096];
+  vsph_test_scratch(dir);
+  snprintf(script, sizeof script,
+           "vex() { objdump -d \"$1\" | awk -F'\\t' '$3 ~ /^v/' | wc -l; } && "
+           "echo base $(vex '%s/bin/vsph') && "
+           "{ /lib64/ld-linux-x86-64.so.2 --help | grep -q 'x86-64-v3 "
+           "(supported' && echo cpu v3 || echo cpu older; } && "
+           "'%s/bin/vsph' --version && VSPH_BASELINE=1 '%s/bin/vsph' --version "
+           "&& cd '%s' && '%s/bin/vsph' run stretching-square --res 20 --out a "
+           "> /dev/null && VSPH_BASELINE=1 '%s/bin/vsph' run stretching-square "
+           "--res 20 --out b > /dev/null && grep -h '\"build\"' a/run.json "
+           "b/run.json",
+           stage, stage, stage, dir, stage, stage);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 0, "exit %d\n%s\n%s", o->status, o->out, o->err);
+  long base = -1;
+  ck_assert_int_eq(sscanf(o->out, "base %ld", &base), 1);
+  ck_assert_msg(base == 0, "the baseline program holds %ld AVX instructions",
+                base);
+  const int cpu_v3 = strstr(o->out, "cpu v3") != NULL;
+  const char *want = cpu_v3 ? "vsph " VSPH_VERSION
+                              " (built for x86-64-v3)\n"
+                              "vsph " VSPH_VERSION " (built for x86-64)\n"
+                            : "vsph " VSPH_VERSION
+                              " (built for x86-64)\n"
+                              "vsph " VSPH_VERSION " (built for x86-64)\n";
+  ck_assert_msg(strstr(o->out, want) != NULL, "want\n%s\ngot\n%s", want,
+                o->out);
+  const char *json = cpu_v3 ? "\t\"build\":\t\"x86-64-v3\",\n"
+                              "\t\"build\":\t\"x86-64\",\n"
+                            : "\t\"build\":\t\"x86-64\",\n"
+                              "\t\"build\":\t\"x86-64\",\n";
+  ck_assert_msg(strstr(o->out, json) != NULL, "run.json: %s", o->out);
+  /* the two runs' energy rows agree within the archive's rule */
+  char pa[4200], pb[4200];
+  snprintf(pa, sizeof pa, "%s/a/energy.csv", dir);
+  snprintf(pb, sizeof pb, "%s/b/energy.csv", dir);
+  FILE *fa = fopen(pa, "r"), *fb = fopen(pb, "r");
+  ck_assert_ptr_nonnull(fa);
+  ck_assert_ptr_nonnull(fb);
+  char la[4096], lb[4096];
+  int rows = 0;
+  ck_assert_ptr_nonnull(fgets(la, sizeof la, fa)); /* the headers */
+  ck_assert_ptr_nonnull(fgets(lb, sizeof lb, fb));
+  ck_assert_str_eq(la, lb);
+  while (fgets(la, sizeof la, fa)) {
+    ck_assert_ptr_nonnull(fgets(lb, sizeof lb, fb));
+    double a[5], b[5];
+    ck_assert_int_eq(
+        sscanf(la, "%lf,%lf,%lf,%lf,%lf", &a[0], &a[1], &a[2], &a[3], &a[4]),
+        5);
+    ck_assert_int_eq(
+        sscanf(lb, "%lf,%lf,%lf,%lf,%lf", &b[0], &b[1], &b[2], &b[3], &b[4]),
+        5);
+    for (int k = 0; k < 5; k++) { /* t, E_k, E_p, E_c, P_visc */
+      const double tol =
+          VSPH_ARCHIVE_BASELINE_REL * fabs(a[k]) + VSPH_ARCHIVE_BASELINE_ABS;
+      ck_assert_msg(fabs(a[k] - b[k]) <= tol,
+                    "row %d column %d: %.15g against %.15g", rows, k, a[k],
+                    b[k]);
+    }
+    rows++;
+  }
+  ck_assert_msg(rows > 100, "only %d energy rows", rows);
+  fclose(fa);
+  fclose(fb);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 /* The README's walkthrough, as a newcomer types it: step 1's command
  * (the run, its 11 snapshots, energy.csv's columns 2 and 12 being E_k and
  * Lighthill's reference, as step 3's gnuplot line plots them), and step
@@ -391,6 +482,7 @@ Suite *vsph_library_suite(void) {
   tcase_set_timeout(tc, 120);
   tcase_add_test(tc, test_installed_example);
   tcase_add_test(tc, test_installed_dispatch);
+  tcase_add_test(tc, test_installed_program);
   tcase_add_test(tc, test_readme_walkthrough);
   tcase_add_test(tc, test_exports);
   tcase_add_test(tc, test_install_refusals);
