@@ -66,16 +66,20 @@ CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
-.PHONY: all deps check test report baseline bench archive full-sitting full-report asan valgrind-check prefix-check \
+.PHONY: all deps deps-build check test report baseline bench archive full-sitting full-report asan valgrind-check prefix-check \
         lib doc install uninstall \
         format format-check mutate fuzz slurm-check fresh-check \
         fresh-check-tests paraview-check optional-checks reference clean
 
-all: deps $(BUILD)/vsph
+all: deps-build $(BUILD)/vsph
 
-# Idempotent: returns at once when every package is present.
+# Idempotent: returns at once when every package is present. Building and
+# installing (make, make lib, make install) need the compiler and the
+# libraries alone; the tests and the report need Check and gnuplot too.
 deps:
 	@scripts/install-deps
+deps-build:
+	@scripts/install-deps --build
 
 # The compiler and its flags, kept in a file that changes only when they
 # do: every object depends on it, so a change of flags (this Makefile's
@@ -226,7 +230,7 @@ INSTALL_LIB = $(if $(HWCAPS),--hwcaps $(HWCAPS) $(PORT))
 $(BUILD)/vsph.1: $(BUILD)/vsph scripts/make-man
 	scripts/make-man $(BUILD)/vsph > $@.tmp && mv $@.tmp $@
 
-lib: deps
+lib: deps-build
 	@$(MAKE) --no-print-directory $(LIBA) $(LIBSO) $(LIB_INST) $(BUILD)/vsph.1 doc
 
 # The reference manual of the public headers (docs/Doxyfile), by Debian's

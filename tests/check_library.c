@@ -252,6 +252,22 @@ START_TEST(test_deps_without_apt) {
   ck_assert_msg(o->status == 2 && o->err_lines == 1 &&
                     strstr(o->err, "no gnuplot") != NULL,
                 "exit %d: %s", o->status, o->err);
+  /* building and installing need no gnuplot and no Check (make, make lib,
+   * make install: install-deps --build); Check is a library pkg-config
+   * finds, so a PKG_CONFIG_PATH of a copy without check.pc hides it */
+  snprintf(script, sizeof script,
+           "mkdir '%s/pc' && for d in $(pkg-config --variable pc_path "
+           "pkg-config | tr : ' '); do for f in \"$d\"/*.pc; do "
+           "[ -f \"$f\" ] && ln -sf \"$f\" '%s/pc/'; done; done; "
+           "rm -f '%s/pc/check.pc' && PKG_CONFIG_LIBDIR='%s/pc' PATH='%s' "
+           "'%s/sh' scripts/install-deps --build && echo built && "
+           "PKG_CONFIG_LIBDIR='%s/pc' PATH='%s' '%s/sh' scripts/install-deps",
+           dir, dir, dir, dir, dir, dir, dir, dir, dir);
+  o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 2 && strstr(o->out, "built") != NULL &&
+                    o->err_lines == 1 &&
+                    strstr(o->err, "pkg-config finds no check") != NULL,
+                "exit %d: %s %s", o->status, o->out, o->err);
   snprintf(script, sizeof script, "PATH='%s' '%s/sh' scripts/install-deps fuzz",
            dir, dir);
   o = vsph_test_shell(script);
