@@ -117,8 +117,9 @@ static int write_run_json(const struct vsph_run *run,
   cJSON_AddStringToObject(o, "date", res->started);
   cJSON_AddStringToObject(o, "scene", run->scene.type->name);
   cJSON_AddStringToObject(o, "visc", vsph_run_method(rp));
-  cJSON_AddStringToObject(o, "scheme", rp->scheme);
-  cJSON_AddStringToObject(o, "kernel", rp->kernel);
+  cJSON_AddStringToObject(o, "scheme",
+                          vsph_equations_scheme_name(rp->scheme_kind));
+  cJSON_AddStringToObject(o, "kernel", rp->ktype->name);
   cJSON_AddNumberToObject(o, "res", (double)rp->res);
   cJSON_AddNumberToObject(o, "n_particles", (double)res->n_particles);
   cJSON_AddNumberToObject(o, "h", res->h);
@@ -942,8 +943,8 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
     fprintf(progress,
             "vsph run: %s, %s, %s, %zu particles, h = %.4g, c0 = %.4g, "
             "t_end = %g -> %s\n",
-            type->name, vsph_run_method(&rp), rp.kernel, run->n_fluid, run->h,
-            run->scene.c0, run->t_end, res->dir);
+            type->name, vsph_run_method(&rp), rp.ktype->name, run->n_fluid,
+            run->h, run->scene.c0, run->t_end, res->dir);
     if (keep[0] >= 0)
       fprintf(progress,
               "vsph run: resuming from its checkpoint at t = %.6g, step %zu "

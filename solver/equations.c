@@ -63,6 +63,22 @@ int vsph_equations_corr_resolve(const char *name, int *corr) {
             name);
 }
 
+const char *vsph_equations_eos_name(int eos) {
+  return eos >= 0 && eos < VSPH_EQUATIONS_EOS_COUNT ? EOS_NAMES[eos]
+                                                    : "unknown";
+}
+
+const char *vsph_equations_scheme_name(int scheme) {
+  return scheme >= 0 && scheme < VSPH_EQUATIONS_SCHEME_COUNT
+             ? SCHEME_NAMES[scheme]
+             : "unknown";
+}
+
+const char *vsph_equations_corr_name(int corr) {
+  return corr >= 0 && corr < VSPH_PAIR_CORR_COUNT ? CORR_NAMES[corr]
+                                                  : "unknown";
+}
+
 /* The body force at x (the public function's, without its argument check:
  * the loops call it per particle). */
 static inline void body_force(const struct vsph_equations_props *ep,

@@ -163,6 +163,13 @@ VSPH_API int vsph_equations_scheme_resolve(const char *name, int *scheme);
  *  VSPH_EINVAL with a message listing them. */
 VSPH_API int vsph_equations_corr_resolve(const char *name, int *corr);
 
+/** @brief The names of a state equation, a scheme and a kernel
+ *  correction (the words their _resolve functions read), "unknown" for a
+ *  value out of range. */
+VSPH_API const char *vsph_equations_eos_name(int eos);
+VSPH_API const char *vsph_equations_scheme_name(int scheme);
+VSPH_API const char *vsph_equations_corr_name(int corr);
+
 /** @brief The pressure of density @p rho and specific internal energy
  *  @p e (used by the gas law only) under the run's state equation. For
  *  the gas, c0^2 = gamma p0/rho0 at the reference state. */

@@ -21,94 +21,116 @@
 
 /* The "Solver" section: the one place of each default, bound and meaning
  * (vsph scenes, vsph run --help and used_parameters.yml read it). */
-#define P struct vsph_run_props
+/* What the section is read into: the settings, and the names that
+ * vsph_run_props_init resolves into the settings they name (struct
+ * vsph_run_props holds each setting once, as what its name resolves to). */
+struct solver_read {
+  struct vsph_run_props rp;
+  char visc[VSPH_PARAMS_NAME_MAX], kernel[VSPH_PARAMS_NAME_MAX],
+      eos[VSPH_PARAMS_NAME_MAX], correction[VSPH_PARAMS_NAME_MAX],
+      density[VSPH_PARAMS_NAME_MAX], integrator[VSPH_PARAMS_NAME_MAX],
+      scheme[VSPH_PARAMS_NAME_MAX];
+};
+#define P struct solver_read
+/* a setting read as it is: its field in rp, its key the field's name */
+#define REAL_SPEC(field, def_, lo_, hi_, help_)                          \
+  {                                                                      \
+    .key = #field, .kind = VSPH_PARAMS_REAL, .def = (def_), .lo = (lo_), \
+    .hi = (hi_), .offset = offsetof(struct solver_read, rp.field),       \
+    .help = (help_)                                                      \
+  }
+#define INT_SPEC(field, def_, lo_, hi_, help_)                          \
+  {                                                                     \
+    .key = #field, .kind = VSPH_PARAMS_INT, .def = (def_), .lo = (lo_), \
+    .hi = (hi_), .offset = offsetof(struct solver_read, rp.field),      \
+    .help = (help_)                                                     \
+  }
 static const struct vsph_params_spec SOLVER[] = {
     VSPH_PARAMS_NAME_SPEC(P, visc, "mgf",
                           "viscous formulation: " VSPH_VISCOUS_NAMES
                           " (docs/theory.md sections 3 and 8: vi, cleary, "
                           "takeda(0), twopass are Basa et al.'s models C, D, "
                           "A, B); scheme wcsph only"),
-    VSPH_PARAMS_REAL_SPEC(P, xi, VSPH_VISCOUS_XI_CLEARY, 0.1, 100.0,
-                          "Cleary's coefficient xi (visc = cleary only; "
-                          "4.96333 Cleary, 4.24 Basa et al.)"),
-    VSPH_PARAMS_REAL_SPEC(P, zeta, 0.0, 0.0, 1e6,
-                          "bulk viscosity over the shear viscosity, zeta/mu "
-                          "(visc = er only; 0: MEAF in 2-D)"),
+    REAL_SPEC(xi, VSPH_VISCOUS_XI_CLEARY, 0.1, 100.0,
+              "Cleary's coefficient xi (visc = cleary only; "
+              "4.96333 Cleary, 4.24 Basa et al.)"),
+    REAL_SPEC(zeta, 0.0, 0.0, 1e6,
+              "bulk viscosity over the shear viscosity, zeta/mu "
+              "(visc = er only; 0: MEAF in 2-D)"),
     VSPH_PARAMS_NAME_SPEC(P, kernel, "gaussian",
                           "gaussian, cubic, quintic, wendland2, wendland4"),
-    VSPH_PARAMS_INT_SPEC(P, res, 40, 4, 4000,
-                         "particles across the reference length (R, L, H, W "
-                         "or S)"),
-    VSPH_PARAMS_REAL_SPEC(P, hdx, VSPH_CONSTS_HDX, 0.5, 8.0, "h/dx"),
-    VSPH_PARAMS_REAL_SPEC(P, t_end, 0.0, 0.0, 1e9,
-                          "end time (s); 0: the scene's"),
-    VSPH_PARAMS_REAL_SPEC(P, cfl, 1.0, 1e-3, 4.0,
-                          "Courant number of the RK4 time step (the "
-                          "standing wave's and the vortex patch's own: 2; tvf: "
-                          "dt = cfl/4 h/(c0 + |u|max); contact: cfl/2)"),
-    VSPH_PARAMS_REAL_SPEC(P, dt, 0.0, 0.0, 1e9,
-                          "a fixed time step (s) in place of the rule's "
-                          "(cfl), stable or not: a run it makes unstable "
-                          "stops cleanly (Vukcevic et al. fix 1e-6 s); 0: "
-                          "the rule"),
-    VSPH_PARAMS_REAL_SPEC(P, delta, 0.0, 0.0, 1.0,
-                          "delta-SPH coefficient; 0: off (0.1 is usual)"),
-    VSPH_PARAMS_REAL_SPEC(P, relax, 0.0, 0.0, 1e3,
-                          "relaxed start: the particles first settle at rest "
-                          "for this long (s), their velocity damped with the "
-                          "time constant relax/20, then take the scene's "
-                          "initial velocity where they settled (scenes whose "
-                          "initial state is at rest but for the velocity: "
-                          "the standing wave); 0: start on the lattice"),
-    VSPH_PARAMS_REAL_SPEC(P, rho_band, 0.2, 1e-6, 10.0,
-                          "stop as unstable when |rho/rho0 - 1| exceeds it"),
-    VSPH_PARAMS_REAL_SPEC(P, min_gap, 0.05, 0.0, 0.99,
-                          "stop as unstable when two particles come closer "
-                          "than min_gap dx (pairing)"),
-    VSPH_PARAMS_INT_SPEC(P, outputs, 200, 1, 1e6, "energy rows over the run"),
-    VSPH_PARAMS_INT_SPEC(P, snapshots, 10, 0, 1e4,
-                         "VTK snapshots over the run (at most outputs); 0: "
-                         "none"),
-    VSPH_PARAMS_REAL_SPEC(P, perturb, 0.0, 0.0, 0.49,
-                          "random shift of the initial lattice, fraction of "
-                          "dx"),
-    VSPH_PARAMS_INT_SPEC(P, seed, VSPH_CONSTS_SEED, 0, 4294967295.0,
-                         "seed of that shift (mt19937)"),
-    VSPH_PARAMS_INT_SPEC(P, max_steps, 1e8, 1, 1e12,
-                         "refuse a run estimated to need more steps; stop "
-                         "one that reaches it"),
-    VSPH_PARAMS_REAL_SPEC(P, max_memory, VSPH_CONSTS_MAX_MEMORY, 1e-3, 4096,
-                          "refuse a run estimated to need more memory (GiB)"),
-    VSPH_PARAMS_REAL_SPEC(P, checkpoint_s, 600.0, 0.0, 1e9,
-                          "wall time (s) between checkpoints of a run in a "
-                          "folder (runs/rundir; 0: only on SIGTERM/SIGINT); "
-                          "not part of the cache key"),
+    INT_SPEC(res, 40, 4, 4000,
+             "particles across the reference length (R, L, H, W "
+             "or S)"),
+    REAL_SPEC(hdx, VSPH_CONSTS_HDX, 0.5, 8.0, "h/dx"),
+    REAL_SPEC(t_end, 0.0, 0.0, 1e9, "end time (s); 0: the scene's"),
+    REAL_SPEC(cfl, 1.0, 1e-3, 4.0,
+              "Courant number of the RK4 time step (the "
+              "standing wave's and the vortex patch's own: 2; tvf: "
+              "dt = cfl/4 h/(c0 + |u|max); contact: cfl/2)"),
+    REAL_SPEC(dt, 0.0, 0.0, 1e9,
+              "a fixed time step (s) in place of the rule's "
+              "(cfl), stable or not: a run it makes unstable "
+              "stops cleanly (Vukcevic et al. fix 1e-6 s); 0: "
+              "the rule"),
+    REAL_SPEC(delta, 0.0, 0.0, 1.0,
+              "delta-SPH coefficient; 0: off (0.1 is usual)"),
+    REAL_SPEC(relax, 0.0, 0.0, 1e3,
+              "relaxed start: the particles first settle at rest "
+              "for this long (s), their velocity damped with the "
+              "time constant relax/20, then take the scene's "
+              "initial velocity where they settled (scenes whose "
+              "initial state is at rest but for the velocity: "
+              "the standing wave); 0: start on the lattice"),
+    REAL_SPEC(rho_band, 0.2, 1e-6, 10.0,
+              "stop as unstable when |rho/rho0 - 1| exceeds it"),
+    REAL_SPEC(min_gap, 0.05, 0.0, 0.99,
+              "stop as unstable when two particles come closer "
+              "than min_gap dx (pairing)"),
+    INT_SPEC(outputs, 200, 1, 1e6, "energy rows over the run"),
+    INT_SPEC(snapshots, 10, 0, 1e4,
+             "VTK snapshots over the run (at most outputs); 0: "
+             "none"),
+    REAL_SPEC(perturb, 0.0, 0.0, 0.49,
+              "random shift of the initial lattice, fraction of "
+              "dx"),
+    INT_SPEC(seed, VSPH_CONSTS_SEED, 0, 4294967295.0,
+             "seed of that shift (mt19937)"),
+    INT_SPEC(max_steps, 1e8, 1, 1e12,
+             "refuse a run estimated to need more steps; stop "
+             "one that reaches it"),
+    REAL_SPEC(max_memory, VSPH_CONSTS_MAX_MEMORY, 1e-3, 4096,
+              "refuse a run estimated to need more memory (GiB)"),
+    REAL_SPEC(checkpoint_s, 600.0, 0.0, 1e9,
+              "wall time (s) between checkpoints of a run in a "
+              "folder (runs/rundir; 0: only on SIGTERM/SIGINT); "
+              "not part of the cache key"),
     VSPH_PARAMS_NAME_SPEC(P, eos, "linear",
                           "state equation: linear (c0^2 (rho - rho0)), tait "
                           "(gamma 7), gas (ideal gas, gamma 1.4, with the "
                           "energy equation) or isothermal (c0^2 rho, the "
                           "absolute pressure: Morris et al. 1997); only "
                           "linear with gravity"),
-    VSPH_PARAMS_REAL_SPEC(P, p0, 0.0, 0.0, 1e9,
-                          "gas: reference pressure (Pa), c0 = sqrt(1.4 "
-                          "p0/rho0); 0: p0 = rho0 c0^2/1.4 from the scene's "
-                          "c0"),
-    VSPH_PARAMS_INT_SPEC(P, reduce, 0, 0, 1,
-                         "1: Basa et al.'s local pressure reduction (p_i + "
-                         "p_j - 2 pbar_i in the pressure gradient)"),
+    REAL_SPEC(p0, 0.0, 0.0, 1e9,
+              "gas: reference pressure (Pa), c0 = sqrt(1.4 "
+              "p0/rho0); 0: p0 = rho0 c0^2/1.4 from the scene's "
+              "c0"),
+    INT_SPEC(reduce, 0, 0, 1,
+             "1: Basa et al.'s local pressure reduction (p_i + "
+             "p_j - 2 pbar_i in the pressure gradient)"),
     VSPH_PARAMS_NAME_SPEC(P, correction, "none",
                           "Basa et al.'s kernel-gradient correction of "
                           "every term: none, shepard ([0]) or bonetlok "
                           "([1]); the corrigible forms only "
                           "(" VSPH_VISCOUS_CORRIGIBLE_NAMES ")"),
-    VSPH_PARAMS_INT_SPEC(P, tvf, 0, 0, 1,
-                         "1: the transport-velocity scheme (Adami, Hu & "
-                         "Adams 2013: density by summation, background "
-                         "pressure, kick-drift-kick at cfl/4); scenes with "
-                         "wall particles (cavity); the pair forms and the "
-                         "Laplacians (the table of formulations)"),
-    VSPH_PARAMS_REAL_SPEC(P, pb, 0.0, 0.0, 1e12,
-                          "tvf: background pressure (Pa); 0: rho0 c0^2"),
+    INT_SPEC(tvf, 0, 0, 1,
+             "1: the transport-velocity scheme (Adami, Hu & "
+             "Adams 2013: density by summation, background "
+             "pressure, kick-drift-kick at cfl/4); scenes with "
+             "wall particles (cavity); the pair forms and the "
+             "Laplacians (the table of formulations)"),
+    REAL_SPEC(pb, 0.0, 0.0, 1e12,
+              "tvf: background pressure (Pa); 0: rho0 c0^2"),
     VSPH_PARAMS_NAME_SPEC(P, density, "continuity",
                           "the density: continuity (integrated) or "
                           "summation (rho_i = sum_j m_j W_ij over the fluid "
@@ -119,42 +141,41 @@ static const struct vsph_params_spec SOLVER[] = {
                           "time stepping: rk4 (classical Runge-Kutta) or "
                           "leapfrog (drift-kick-drift at cfl/4, Vukcevic et "
                           "al.'s eq. 22); tvf has its own kick-drift-kick"),
-    VSPH_PARAMS_REAL_SPEC(P, xsph, 0.0, 0.0, 1.0,
-                          "XSPH's epsilon: the particles drift with u + eps "
-                          "sum_j (m_j/rho_j) (u_j - u_i) W_ij (Vukcevic et "
-                          "al. 0.3); leapfrog only, not with the cavity's "
-                          "wall particles; 0: off"),
+    REAL_SPEC(xsph, 0.0, 0.0, 1.0,
+              "XSPH's epsilon: the particles drift with u + eps "
+              "sum_j (m_j/rho_j) (u_j - u_i) W_ij (Vukcevic et "
+              "al. 0.3); leapfrog only, not with the cavity's "
+              "wall particles; 0: off"),
     VSPH_PARAMS_NAME_SPEC(P, scheme, "wcsph",
                           "wcsph (THEORY 5 with the viscous formulation "
                           "visc) or contact (Parshikov et al.'s Godunov-type "
                           "SPH: the acoustic Riemann solution between each "
                           "pair, the contact viscous stress; a visc given "
                           "with it is refused, as it would have no effect)"),
-    VSPH_PARAMS_REAL_SPEC(P, alpha, 0.0, 0.0, 4.0,
-                          "contact: h = 2 alpha dx (Parshikov's h_ij = "
-                          "alpha (D_i + D_j) at the initial spacing); 0: "
-                          "h = hdx dx"),
-    VSPH_PARAMS_REAL_SPEC(P, zeta_num, 0.0, 0.0, 1.0,
-                          "contact: the fraction zeta of the numerical "
-                          "viscosity removed by the correcting tensor"),
-    VSPH_PARAMS_REAL_SPEC(P, eta_num, 0.0, 0.0, 10.0,
-                          "contact: the numerical viscosity over Z dx; 0: "
-                          "Parshikov's fit, eq. (37), at alpha = h/(2 dx)"),
-    VSPH_PARAMS_INT_SPEC(P, probe_points, 0, 0, VSPH_RUN_PROBES_MAX,
-                         "probes evenly on the segment (probe_x0, probe_y0) "
-                         "to (probe_x1, probe_y1), ends included; 1: the "
-                         "point (probe_x0, probe_y0); each output row, "
-                         "into probes.csv (the Shepard-normalised kernel "
-                         "interpolation of the fluid's velocity, pressure "
-                         "and density); 0: none"),
-    VSPH_PARAMS_REAL_SPEC(P, probe_x0, 0.0, -1e9, 1e9, "first probe's x (m)"),
-    VSPH_PARAMS_REAL_SPEC(P, probe_y0, 0.0, -1e9, 1e9, "first probe's y (m)"),
-    VSPH_PARAMS_REAL_SPEC(P, probe_x1, 0.0, -1e9, 1e9,
-                          "last probe's x (m); probe_points >= 2"),
-    VSPH_PARAMS_REAL_SPEC(P, probe_y1, 0.0, -1e9, 1e9,
-                          "last probe's y (m); probe_points >= 2"),
-    VSPH_PARAMS_REAL_SPEC(P, probe_z, 0.0, -1e9, 1e9,
-                          "the probes' z (m); 3-D scenes only"),
+    REAL_SPEC(alpha, 0.0, 0.0, 4.0,
+              "contact: h = 2 alpha dx (Parshikov's h_ij = "
+              "alpha (D_i + D_j) at the initial spacing); 0: "
+              "h = hdx dx"),
+    REAL_SPEC(zeta_num, 0.0, 0.0, 1.0,
+              "contact: the fraction zeta of the numerical "
+              "viscosity removed by the correcting tensor"),
+    REAL_SPEC(eta_num, 0.0, 0.0, 10.0,
+              "contact: the numerical viscosity over Z dx; 0: "
+              "Parshikov's fit, eq. (37), at alpha = h/(2 dx)"),
+    INT_SPEC(probe_points, 0, 0, VSPH_RUN_PROBES_MAX,
+             "probes evenly on the segment (probe_x0, probe_y0) "
+             "to (probe_x1, probe_y1), ends included; 1: the "
+             "point (probe_x0, probe_y0); each output row, "
+             "into probes.csv (the Shepard-normalised kernel "
+             "interpolation of the fluid's velocity, pressure "
+             "and density); 0: none"),
+    REAL_SPEC(probe_x0, 0.0, -1e9, 1e9, "first probe's x (m)"),
+    REAL_SPEC(probe_y0, 0.0, -1e9, 1e9, "first probe's y (m)"),
+    REAL_SPEC(probe_x1, 0.0, -1e9, 1e9,
+              "last probe's x (m); probe_points >= 2"),
+    REAL_SPEC(probe_y1, 0.0, -1e9, 1e9,
+              "last probe's y (m); probe_points >= 2"),
+    REAL_SPEC(probe_z, 0.0, -1e9, 1e9, "the probes' z (m); 3-D scenes only"),
 };
 
 /* The probe keys apply to probes: a coordinate given with none, or a
@@ -193,6 +214,8 @@ static double run_c0(const struct vsph_run_props *rp,
   return sc->c0;
 }
 #undef P
+#undef REAL_SPEC
+#undef INT_SPEC
 
 const struct vsph_params_spec *vsph_run_params(size_t *n) {
   if (!n) return NULL;
@@ -200,24 +223,48 @@ const struct vsph_params_spec *vsph_run_params(size_t *n) {
   return SOLVER;
 }
 
-int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
-  if (!rp) VSPH_FAIL(VSPH_EINVAL, "vsph_run_props_init: a NULL argument");
-  memset(rp, 0, sizeof *rp);
-  int st = vsph_params_load(prm, "Solver", SOLVER,
-                            sizeof SOLVER / sizeof SOLVER[0], rp);
-  if (!st) st = vsph_viscous_resolve(rp->visc, &rp->form);
-  if (!st) st = vsph_kernel_resolve(rp->kernel, &rp->ktype);
-  if (st) return st;
-  if ((st = vsph_equations_eos_resolve(rp->eos, &rp->eos_kind)) ||
-      (st = vsph_equations_corr_resolve(rp->correction, &rp->corr)))
+/* The settings given by name, resolved into @p rp (what they name). */
+static int resolve_names(const struct solver_read *nm,
+                         struct vsph_run_props *rp) {
+  int st;
+  if ((st = vsph_viscous_resolve(nm->visc, &rp->form)) ||
+      (st = vsph_kernel_resolve(nm->kernel, &rp->ktype)) ||
+      (st = vsph_equations_eos_resolve(nm->eos, &rp->eos_kind)) ||
+      (st = vsph_equations_corr_resolve(nm->correction, &rp->corr)) ||
+      (st = vsph_equations_scheme_resolve(nm->scheme, &rp->scheme_kind)))
     return st;
+  if (!strcmp(nm->density, "summation"))
+    rp->summation = 1;
+  else if (strcmp(nm->density, "continuity"))
+    VSPH_FAIL(VSPH_EINVAL,
+              "unknown Solver:density '%s' (continuity or summation)",
+              nm->density);
+  if (!strcmp(nm->integrator, "leapfrog"))
+    rp->leapfrog = 1;
+  else if (strcmp(nm->integrator, "rk4"))
+    VSPH_FAIL(VSPH_EINVAL, "unknown Solver:integrator '%s' (rk4 or leapfrog)",
+              nm->integrator);
+  return VSPH_OK;
+}
+
+int vsph_run_props_init(struct vsph_run_props *out, struct vsph_params *prm) {
+  if (!out) VSPH_FAIL(VSPH_EINVAL, "vsph_run_props_init: a NULL argument");
+  memset(out, 0, sizeof *out);
+  struct solver_read sr;
+  memset(&sr, 0, sizeof sr);
+  struct vsph_run_props *const rp = &sr.rp;
+  int st = vsph_params_load(prm, "Solver", SOLVER,
+                            sizeof SOLVER / sizeof SOLVER[0], &sr);
+  if (!st) st = resolve_names(&sr, rp);
+  if (st) return st;
+  const char *const visc = sr.visc;
   char pair_forms[256];
   vsph_viscous_list(VSPH_VISCOUS_CORRIGIBLE, pair_forms, sizeof pair_forms);
   if (rp->corr != VSPH_PAIR_CORR_NONE && !vsph_viscous_corrigible(rp->form))
     VSPH_FAIL(
         VSPH_EINVAL,
         "Solver:correction = %s applies to the corrigible forms (%s), not %s",
-        rp->correction, pair_forms, rp->visc);
+        sr.correction, pair_forms, visc);
   if (rp->tvf &&
       (!(vsph_viscous_type_get(rp->form)->flags & VSPH_VISCOUS_TVF) ||
        rp->corr != VSPH_PAIR_CORR_NONE || rp->reduce || rp->delta > 0.0 ||
@@ -227,10 +274,8 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:tvf = 1 takes one of %s with the linear law and no "
               "correction, reduction or delta, not visc = %s",
-              tvf_forms, rp->visc);
+              tvf_forms, visc);
   }
-  if ((st = vsph_equations_scheme_resolve(rp->scheme, &rp->scheme_kind)))
-    return st;
   const int contact = rp->scheme_kind == VSPH_EQUATIONS_CONTACT;
   /* contact SPH has no viscous form: its pairs take the Riemann solution
    * and the contact viscous stress, so a visc given with it would be
@@ -242,7 +287,7 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
               "(its pairs take the Riemann solution and the contact viscous "
               "stress, not a viscous form): drop visc, or choose scheme "
               "wcsph",
-              rp->visc);
+              visc);
   if (!contact && (rp->alpha > 0.0 || rp->zeta_num > 0.0 || rp->eta_num > 0.0))
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:alpha, zeta_num and eta_num apply to Solver:scheme = "
@@ -261,12 +306,6 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
   }
   if (rp->pb > 0.0 && !rp->tvf)
     VSPH_FAIL(VSPH_EINVAL, "Solver:pb applies to Solver:tvf = 1 only");
-  if (!strcmp(rp->density, "summation"))
-    rp->summation = 1;
-  else if (strcmp(rp->density, "continuity"))
-    VSPH_FAIL(VSPH_EINVAL,
-              "unknown Solver:density '%s' (continuity or summation)",
-              rp->density);
   if (contact && rp->summation)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:density = summation does not apply to Solver:scheme = "
@@ -274,11 +313,6 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
               "rate)");
   if (rp->p0 > 0.0 && rp->eos_kind != VSPH_EQUATIONS_EOS_GAS)
     VSPH_FAIL(VSPH_EINVAL, "Solver:p0 applies to Solver:eos = gas only");
-  if (!strcmp(rp->integrator, "leapfrog"))
-    rp->leapfrog = 1;
-  else if (strcmp(rp->integrator, "rk4"))
-    VSPH_FAIL(VSPH_EINVAL, "unknown Solver:integrator '%s' (rk4 or leapfrog)",
-              rp->integrator);
   if (rp->leapfrog && (rp->tvf || contact))
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:integrator = leapfrog does not apply with tvf = 1 or "
@@ -295,6 +329,7 @@ int vsph_run_props_init(struct vsph_run_props *rp, struct vsph_params *prm) {
               "Solver:snapshots (%zu) must not exceed "
               "Solver:outputs (%zu)",
               rp->snapshots, rp->outputs);
+  *out = *rp;
   return VSPH_OK;
 }
 
@@ -335,7 +370,7 @@ static int check_combination(const struct vsph_run_props *rp,
               "Solver:eos = %s needs a confined scene (walls or periodic "
               "ends all round): at rho0 its pressure is p0 > 0, and a free "
               "surface would expand",
-              rp->eos);
+              vsph_equations_eos_name(rp->eos_kind));
   if (rp->xsph > 0.0 && sc->walls.solid && sc->walls.solid != VSPH_WALLS_FIXED)
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:xsph does not take wall particles yet (%s has them): "
@@ -399,7 +434,7 @@ static int check_combination(const struct vsph_run_props *rp,
     VSPH_FAIL(VSPH_EINVAL,
               "Solver:eos = %s needs a scene without gravity (the ghosts' "
               "hydrostatic density follows the linear law)",
-              rp->eos);
+              vsph_equations_eos_name(rp->eos_kind));
   return VSPH_OK;
 }
 

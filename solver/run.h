@@ -52,10 +52,8 @@ enum vsph_run_state {
 #define VSPH_RUN_PROBES_MAX 100
 
 struct vsph_run_props {
-  char visc[VSPH_PARAMS_NAME_MAX];   /*!< formulation (vsph_viscous_name) */
-  double xi;                         /*!< Cleary's coefficient */
-  double zeta;                       /*!< Espanol-Revenga: zeta / mu */
-  char kernel[VSPH_PARAMS_NAME_MAX]; /*!< kernel name */
+  double xi;           /*!< Cleary's coefficient */
+  double zeta;         /*!< Espanol-Revenga: zeta / mu */
   size_t res;          /*!< particles across the reference length */
   double hdx;          /*!< h/dx */
   double t_end;        /*!< end time (s); 0: the scene's */
@@ -76,18 +74,13 @@ struct vsph_run_props {
   double max_memory;   /*!< refuse a run estimated to need more (GiB) */
   double checkpoint_s; /*!< wall time between checkpoints (s); 0: only on
                             a signal (runs/rundir writes them) */
-  char eos[VSPH_PARAMS_NAME_MAX]; /*!< state equation: linear, tait, gas */
-  double p0;     /*!< gas law: reference pressure (Pa); 0: from c0 */
-  size_t reduce; /*!< 1: Basa et al.'s local pressure reduction */
-  char correction[VSPH_PARAMS_NAME_MAX]; /*!< none, shepard, bonetlok */
-  size_t tvf; /*!< 1: the transport-velocity scheme */
-  double pb;  /*!< its background pressure (Pa); 0: rho0 c0^2 */
-  char density[VSPH_PARAMS_NAME_MAX];    /*!< continuity or summation */
-  char integrator[VSPH_PARAMS_NAME_MAX]; /*!< rk4 or leapfrog */
-  double xsph; /*!< XSPH's epsilon (leapfrog only); 0: off */
-  char scheme[VSPH_PARAMS_NAME_MAX]; /*!< wcsph or contact */
-  double alpha;    /*!< contact: h = 2 alpha dx (0: from hdx) */
-  double zeta_num; /*!< contact: fraction of eta_num removed */
+  double p0;           /*!< gas law: reference pressure (Pa); 0: from c0 */
+  size_t reduce;       /*!< 1: Basa et al.'s local pressure reduction */
+  size_t tvf;          /*!< 1: the transport-velocity scheme */
+  double pb;           /*!< its background pressure (Pa); 0: rho0 c0^2 */
+  double xsph;         /*!< XSPH's epsilon (leapfrog only); 0: off */
+  double alpha;        /*!< contact: h = 2 alpha dx (0: from hdx) */
+  double zeta_num;     /*!< contact: fraction of eta_num removed */
   double
       eta_num; /*!< contact: eta_num/(Z D0); 0: Parshikov et al.'s eq. (37) */
   size_t probe_points; /*!< probes evenly on the segment from (x0, y0) to
@@ -95,15 +88,19 @@ struct vsph_run_props {
                             (x0, y0); 0: none (runs/rundir's probes.csv) */
   double probe_x0, probe_y0, probe_x1, probe_y1; /*!< the segment (m) */
   double probe_z;                                /*!< its z in 3-D (m) */
-  /* resolved by vsph_run_props_init */
-  int eos_kind;                         /*!< vsph_equations_eos of eos */
-  int corr;                             /*!< vsph_pair_corr of correction */
-  int form;                             /*!< vsph_viscous_form of visc */
-  int scheme_kind;                      /*!< vsph_equations_scheme */
-  int summation;                        /*!< 1: density = summation */
-  int leapfrog;                         /*!< 1: integrator = leapfrog */
+  /* the settings given by name (Solver:visc, kernel, eos, correction,
+   * scheme, density, integrator), each held once, as what the name
+   * resolves to (vsph_run_props_init); their names: vsph_viscous_name,
+   * ktype->name, vsph_equations_eos_name, ..._corr_name, ..._scheme_name */
+  int form;                             /*!< visc: vsph_viscous_form */
+  const struct vsph_kernel_type *ktype; /*!< kernel: the kernel */
+  int eos_kind;                         /*!< eos: vsph_equations_eos */
+  int corr;                             /*!< correction: vsph_pair_corr */
+  int scheme_kind;                      /*!< scheme: vsph_equations_scheme */
+  int summation;                        /*!< density: 1 summation, 0
+                                             continuity */
+  int leapfrog;                         /*!< integrator: 1 leapfrog, 0 rk4 */
   int probe_z_given;                    /*!< 1: Solver:probe_z was given */
-  const struct vsph_kernel_type *ktype; /*!< the kernel called kernel */
 };
 
 /** A run in progress. Fields are read-only for the caller. */
@@ -145,7 +142,9 @@ struct vsph_run_row {
 /** @brief What the run's pairs compute, for names and metadata: the
  *  viscous formulation (Solver:visc), or "contact" for contact SPH. */
 static inline const char *vsph_run_method(const struct vsph_run_props *rp) {
-  return rp->scheme_kind == VSPH_EQUATIONS_CONTACT ? "contact" : rp->visc;
+  return rp->scheme_kind == VSPH_EQUATIONS_CONTACT
+             ? "contact"
+             : vsph_viscous_name(rp->form);
 }
 
 /** @brief The "Solver" parameter table (@p n receives its length). */

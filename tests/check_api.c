@@ -11,6 +11,7 @@
 #include <ctype.h>
 #include <math.h>
 #include <stdint.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -247,6 +248,30 @@ static void call_vsph_equations_scheme_resolve_0(void) {
 
 static void call_vsph_equations_scheme_resolve_1(void) {
   (void)vsph_equations_scheme_resolve(NULL, NULL);
+}
+
+static void call_vsph_equations_eos_name_0(void) {
+  (void)vsph_equations_eos_name(-1);
+}
+
+static void call_vsph_equations_eos_name_1(void) {
+  (void)vsph_equations_eos_name(INT_MAX);
+}
+
+static void call_vsph_equations_scheme_name_0(void) {
+  (void)vsph_equations_scheme_name(-1);
+}
+
+static void call_vsph_equations_scheme_name_1(void) {
+  (void)vsph_equations_scheme_name(INT_MAX);
+}
+
+static void call_vsph_equations_corr_name_0(void) {
+  (void)vsph_equations_corr_name(-1);
+}
+
+static void call_vsph_equations_corr_name_1(void) {
+  (void)vsph_equations_corr_name(INT_MAX);
 }
 
 static void call_vsph_equations_corr_resolve_0(void) {
@@ -1343,6 +1368,12 @@ static const struct api_call CALLS[] = {
     {"vsph_equations_eos_resolve", call_vsph_equations_eos_resolve_1},
     {"vsph_equations_scheme_resolve", call_vsph_equations_scheme_resolve_0},
     {"vsph_equations_scheme_resolve", call_vsph_equations_scheme_resolve_1},
+    {"vsph_equations_eos_name", call_vsph_equations_eos_name_0},
+    {"vsph_equations_eos_name", call_vsph_equations_eos_name_1},
+    {"vsph_equations_scheme_name", call_vsph_equations_scheme_name_0},
+    {"vsph_equations_scheme_name", call_vsph_equations_scheme_name_1},
+    {"vsph_equations_corr_name", call_vsph_equations_corr_name_0},
+    {"vsph_equations_corr_name", call_vsph_equations_corr_name_1},
     {"vsph_equations_corr_resolve", call_vsph_equations_corr_resolve_0},
     {"vsph_equations_corr_resolve", call_vsph_equations_corr_resolve_1},
     {"vsph_equations_sweep_alloc", call_vsph_equations_sweep_alloc_0},

@@ -433,6 +433,55 @@ START_TEST(test_relax) {
 }
 END_TEST
 
+/* Each named setting is held once in struct vsph_run_props, as what its
+ * name resolves to: every word each setting takes read back from the
+ * resolved value by the name functions (the same word), and a word read
+ * by vsph_run_props_init lands on its kind; out of range, "unknown". */
+START_TEST(test_run_props_names) {
+  for (int k = 0; k < VSPH_EQUATIONS_EOS_COUNT; k++) {
+    int got = -2;
+    ck_assert_int_eq(
+        vsph_equations_eos_resolve(vsph_equations_eos_name(k), &got), 0);
+    ck_assert_int_eq(got, k);
+  }
+  for (int k = 0; k < VSPH_EQUATIONS_SCHEME_COUNT; k++) {
+    int got = -2;
+    ck_assert_int_eq(
+        vsph_equations_scheme_resolve(vsph_equations_scheme_name(k), &got), 0);
+    ck_assert_int_eq(got, k);
+  }
+  for (int k = 0; k < VSPH_PAIR_CORR_COUNT; k++) {
+    int got = -2;
+    ck_assert_int_eq(
+        vsph_equations_corr_resolve(vsph_equations_corr_name(k), &got), 0);
+    ck_assert_int_eq(got, k);
+  }
+  ck_assert_str_eq(vsph_equations_eos_name(-1), "unknown");
+  ck_assert_str_eq(vsph_equations_scheme_name(VSPH_EQUATIONS_SCHEME_COUNT),
+                   "unknown");
+  ck_assert_str_eq(vsph_equations_corr_name(VSPH_PAIR_CORR_COUNT), "unknown");
+  /* the words as the Solver section reads them */
+  static const char *const set[][2] = {
+      {"Solver:visc", "meaf"},         {"Solver:kernel", "cubic"},
+      {"Solver:eos", "tait"},          {"Solver:correction", "shepard"},
+      {"Solver:density", "summation"}, {"Solver:integrator", "leapfrog"}};
+  struct vsph_params *prm = vsph_params_alloc();
+  for (size_t k = 0; k < sizeof set / sizeof set[0]; k++)
+    ck_assert_int_eq(vsph_params_set(prm, set[k][0], set[k][1]), 0);
+  struct vsph_run_props rp;
+  ck_assert_int_eq(vsph_run_props_init(&rp, prm), 0);
+  vsph_params_free(prm);
+  ck_assert_str_eq(vsph_viscous_name(rp.form), "meaf");
+  ck_assert_str_eq(rp.ktype->name, "cubic");
+  ck_assert_str_eq(vsph_equations_eos_name(rp.eos_kind), "tait");
+  ck_assert_str_eq(vsph_equations_corr_name(rp.corr), "shepard");
+  ck_assert_str_eq(vsph_equations_scheme_name(rp.scheme_kind), "wcsph");
+  ck_assert_int_eq(rp.summation, 1);
+  ck_assert_int_eq(rp.leapfrog, 1);
+  ck_assert_str_eq(vsph_run_method(&rp), "meaf");
+}
+END_TEST
+
 /* The right-hand side with the cell list against the O(N^2) path. */
 START_TEST(test_rhs_cells_vs_direct) {
   struct vsph_scene sc;
@@ -877,6 +926,7 @@ Suite *vsph_solver_suite(void) {
   TCase *tc = tcase_create("runs");
   tcase_set_timeout(tc, 120);
   tcase_add_test(tc, test_stretching_initial_power);
+  tcase_add_test(tc, test_run_props_names);
   tcase_add_test(tc, test_stretching_initial_pressure);
   tcase_add_test(tc, test_diagnostics);
   tcase_add_test(tc, test_probe);
