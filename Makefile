@@ -140,14 +140,14 @@ $(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(TESTLIBS) $(LDLIBS)
 
 # The FULL report's runs that ended, kept compact in reports/full (see
-# docs/usage.md: vsph report --archive); the commit named for runs of these
+# docs/usage.md: vsph report archive); the commit named for runs of these
 # sources is HEAD's.
 archive: deps $(BUILD)/vsph
 	scripts/source-commits $(BUILD)/history $(HISTORY_N)
 	VSPH_ARCHIVE_HISTORY=$(BUILD)/history \
 	VSPH_COMMIT="$$(git describe --always --dirty --abbrev=12 2>/dev/null \
-	  | tr -cd '0-9a-z-')" $(BUILD)/vsph report --out reports/out-full \
-	  --archive reports/full
+	  | tr -cd '0-9a-z-')" $(BUILD)/vsph report archive \
+	  --out reports/out-full reports/full
 
 # One sitting of the FULL report's runs: the costliest runs that do not
 # stand in reports/full and fit BUDGET (default 150m), niced, two at a
@@ -166,8 +166,8 @@ full-sitting: deps $(BUILD)/vsph
 # the ones that stand in reports/full (docs/usage.md: --from-archive); then
 # reports/full/summary.md holds its claims and convergence tables.
 full-report: deps $(BUILD)/vsph
-	@$(HISTORY); VSPH_ARCHIVE_HISTORY=$$h $(BUILD)/vsph report --full \
-	  --assemble --out reports/out-full --from-archive reports/full
+	@$(HISTORY); VSPH_ARCHIVE_HISTORY=$$h $(BUILD)/vsph report assemble \
+	  --full --out reports/out-full --from-archive reports/full
 
 # ------------------------------------------------------------ the library
 # libvsph, static and shared: the lower five layers (common, kernels,
@@ -308,7 +308,7 @@ bench: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph
 	$(BUILD)/vsph bench --processes 5 --csv $(BUILD)/bench.csv
 
-# `vsph report --slurm` on a real Slurm: installs slurm-wlm and munge,
+# `vsph report submit` on a real Slurm: installs slurm-wlm and munge,
 # starts a one-node cluster on this machine (its own slurm.conf and munge
 # key in a temporary folder), checks the Slurm report against a local one
 # and that a cancelled task is all a second submission reruns, and stops

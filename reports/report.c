@@ -564,13 +564,13 @@ static int all_cached(const struct vsph_report *R) {
                          j->key, NULL, why, sizeof why) < 0)
     VSPH_FAIL(VSPH_EIO,
               "%zu of the %zu runs are missing, unfinished or damaged (the "
-              "first: %s): rerun them (vsph report --jobs N or --slurm); only "
-              "they run",
+              "first: %s): rerun them (vsph report --jobs N, or vsph report "
+              "submit); only they run",
               m, R->runs.jobs.n, why);
   VSPH_FAIL(VSPH_EIO,
             "%zu of the %zu runs are missing or unfinished (the first: %s; "
             "a failed or cancelled task?): submit again (vsph report "
-            "--slurm) or run them (vsph report --jobs N); only they run",
+            "submit) or run them (vsph report --jobs N); only they run",
             m, R->runs.jobs.n, j->dir);
 }
 
@@ -763,7 +763,7 @@ static int archive_summary(const struct vsph_report *R, const char *parts_dir,
   fprintf(m,
           "# The FULL report at the papers' resolutions: its claims and "
           "convergence tables\n\n"
-          "Assembled %s by `vsph report --full --assemble --from-archive "
+          "Assembled %s by `vsph report assemble --full --from-archive "
           "%s` (vsph %s, source hash %s, commit %s): %zu runs, %zu of them "
           "read from this archive's entries (each still standing for this "
           "code by the rule of `entries.md`, which names the build that made "

@@ -926,7 +926,7 @@ int vsph_archive_summarise(const char *archive,
   }
   fprintf(m,
           "# The FULL run archive\n\n"
-          "Written by `vsph report --archive` (vsph %s, source hash %s, "
+          "Written by `vsph report archive` (vsph %s, source hash %s, "
           "commit %s). Each entry `runs/NAME` keeps what the report's parts "
           "read of one run of `vsph report --full`, sealed under the key of "
           "the run it keeps; `index.tsv` lists them.\n\n"
@@ -995,7 +995,7 @@ int vsph_archive_summarise(const char *archive,
           "(%.0f s of runs)%s; %zu entries stand. The claims table and the "
           "convergence tables at the paper's resolutions are in summary.md, "
           "which the FULL report's assembly from this archive writes (`make "
-          "full-report`: `vsph report --full --assemble --from-archive`) "
+          "full-report`: `vsph report assemble --full --from-archive`) "
           "when every run it reads stands here.\n",
           total, jd->nplan, wall,
           others ? ", beside entries the plan no longer names" : "", stands);

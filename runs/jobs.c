@@ -4,10 +4,10 @@
  * plan) before any is run; the report then runs what is missing and
  * assembles. Three ways to run them: in this process, a run per thread (the
  * default); as child processes, N at a time (`--jobs N`); or as a Slurm
- * job array with the assembly after it (`--slurm`). A job is one command
- * (`vsph run ... --cache` or `vsph contact ... --cache`) whose folder ends
- * with key.txt (runs/rundir): the cache, and the proof that the run ended,
- * whichever way ran it. */
+ * job array with the assembly after it (`vsph report submit`). A job is
+ * one command (`vsph run ... --cache` or `vsph contact ... --cache`) whose
+ * folder ends with key.txt (runs/rundir): the cache, and the proof that
+ * the run ended, whichever way ran it. */
 #define _XOPEN_SOURCE 700 /* realpath */
 #include "jobs.h"
 
@@ -286,10 +286,11 @@ int vsph_jobs_ready(const struct vsph_jobs *J, const struct vsph_jobs_job *j) {
     return VSPH_OK;
   }
   if (!vsph_rundir_key_matches(p->dir, p->key))
-    VSPH_FAIL(VSPH_EIO,
-              "run %s is missing or unfinished (no matching key.txt): run the "
-              "report's runs first (vsph report, --jobs N or --slurm)",
-              p->dir);
+    VSPH_FAIL(
+        VSPH_EIO,
+        "run %s is missing or unfinished (no matching key.txt): run the "
+        "report's runs first (vsph report [--jobs N] or vsph report submit)",
+        p->dir);
   return VSPH_OK;
 }
 

@@ -13,12 +13,13 @@ struct vsph_csv;
  *  @brief Runs as jobs: the one interface through which a report asks for
  *  runs. Every part declares the runs it reads (a plan) before any is
  *  run; the missing ones are then run in this process, as child processes
- *  (--jobs N) or as a Slurm job array (--slurm), and read back through
- *  vsph_jobs_store_get, which checks each folder's seal (runs/folder). A job is
- *  one command (`vsph run ... --cache` or `vsph contact ... --cache`)
- *  whose folder ends sealed: the cache, and the proof that the run ended,
- *  whichever way ran it. A job stopped by a signal (or Slurm's time limit)
- *  leaves a checkpoint, and the next time resumes from it. */
+ *  (--jobs N) or as a Slurm job array (vsph report submit), and read
+ *  back through vsph_jobs_store_get, which checks each folder's seal
+ *  (runs/folder). A job is one command (`vsph run ... --cache` or
+ *  `vsph contact ... --cache`) whose folder ends sealed: the cache, and
+ *  the proof that the run ended, whichever way ran it. A job stopped by
+ *  a signal (or Slurm's time limit) leaves a checkpoint, and the next
+ *  time resumes from it. */
 
 /* What a job runs: the solver on a scene (`vsph run`), or the shear test
  * of section 12 (`vsph contact`). */

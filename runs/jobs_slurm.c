@@ -1,7 +1,8 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The report's missing runs as one Slurm job array, with the assembly as
- * a job after it (--slurm). Part of the jobs module (runs/jobs.c). */
+ * a job after it (vsph report submit). Part of the jobs module
+ * (runs/jobs.c). */
 #define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
 #include <limits.h>
@@ -101,7 +102,7 @@ int vsph_jobs_slurm_dir(const char *dir, char *abs, size_t len) {
   if (strpbrk(buf, " \t\n%'\"\\") || strlen(buf) >= len) {
     if (!existed) rmdir(dir);
     VSPH_FAIL(VSPH_EINVAL,
-              "--slurm: the folder '%s' holds a space, a quote or '%%', "
+              "the folder '%s' holds a space, a quote or '%%', "
               "which Slurm's #SBATCH lines cannot carry: choose another --out",
               buf);
   }
@@ -153,7 +154,7 @@ static int array_script(const struct vsph_jobs_job *const *order, size_t m,
   fprintf(f,
           "#!/bin/sh\n"
           "# vsph %s: the report's missing runs, one array task each "
-          "(written by vsph report --slurm)\n"
+          "(written by vsph report submit)\n"
           "#SBATCH --job-name=vsph-runs\n"
           "#SBATCH --array=0-%zu\n"
           "#SBATCH --ntasks=1\n"
@@ -194,7 +195,7 @@ static int assembly_script(const struct vsph_jobs *J,
   fprintf(f,
           "#!/bin/sh\n"
           "# vsph %s: the report's assembly after its runs (written by "
-          "vsph report --slurm)\n"
+          "vsph report submit)\n"
           "#SBATCH --job-name=vsph-report\n"
           "#SBATCH --ntasks=1\n"
           "#SBATCH --cpus-per-task=%zu\n"
@@ -203,7 +204,7 @@ static int assembly_script(const struct vsph_jobs *J,
           "#SBATCH --output=%s/assemble-%%j.log\n",
           VSPH_VERSION, s->threads, logs);
   if (s->partition) fprintf(f, "#SBATCH --partition=%s\n", s->partition);
-  fprintf(f, "OMP_NUM_THREADS=%zu exec %s report --out %s%s%s%s --assemble\n",
+  fprintf(f, "OMP_NUM_THREADS=%zu exec %s report assemble --out %s%s%s%s\n",
           s->threads, q[0], q[1], J->full ? " --full" : "",
           s->only ? " --only " : "", s->only ? q[2] : "");
   if (fclose(f) != 0) VSPH_FAIL(VSPH_ENOMEM, "cannot write the assembly");

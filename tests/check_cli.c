@@ -179,7 +179,7 @@ START_TEST(test_bad_input) {
 }
 END_TEST
 
-/* vsph report --archive's inputs beside the report folder: a history
+/* vsph report archive's inputs beside the report folder: a history
  * that is not a folder holding commits.tsv, and a reports/baseline.csv
  * that is not a regular file, are refused with one line and exit 2,
  * before the archive is made. */
@@ -199,7 +199,7 @@ START_TEST(test_archive_inputs) {
   snprintf(bin, sizeof bin, "%s%s%.1000s", vb[0] == '/' ? "" : cwd,
            vb[0] == '/' ? "" : "/", vb);
   snprintf(script, sizeof script,
-           "cd %s && mkdir -p r/runs && %s exec %s report --out r --archive %s",
+           "cd %s && mkdir -p r/runs && %s exec %s report archive --out r %s",
            dir, env[_i], bin, _i == 4 ? "r/runs/a" : "a");
   struct vsph_test_outcome *o = vsph_test_shell(script);
   ck_assert_msg(o->status == 2 && o->err_lines == 1, "%s: exit %d: %s", env[_i],
@@ -520,6 +520,138 @@ START_TEST(test_run_outputs) {
 }
 END_TEST
 
+/* The options of vsph report and of each of its verbs, as the verbs'
+ * contract has them (docs/usage.md): a '1' where the verb takes
+ * REPORT_OPTS[k]. */
+static const char *const REPORT_OPTS[] = {
+    "--out",          "--only",    "--full",      "--fv",
+    "--jobs",         "--threads", "--budget",    "--skip-archived",
+    "--from-archive", "--beside",  "--partition", "--time"};
+static const struct {
+  const char *verb; /* "" for vsph report itself */
+  const char *takes;
+} REPORT_VERBS[] = {{"", "111111111100"},
+                    {"plan", "111100000000"},
+                    {"submit", "111101000011"},
+                    {"assemble", "111100001100"},
+                    {"archive", "100000000000"}};
+
+/* The number of entries of folder @p dir (. and .. aside). */
+static int entries_of(const char *dir) {
+  char cmd[600];
+  snprintf(cmd, sizeof cmd, "ls -A '%s' | wc -l", dir);
+  return atoi(vsph_test_shell(cmd)->out);
+}
+
+/* vsph report's verbs (issue 44): each one's --help lists the options it
+ * takes and no other, vsph report --help names every verb, and an option
+ * a verb does not take is refused in one line naming the verb and those
+ * that take it (exit 2), with nothing written. */
+START_TEST(test_report_verbs) {
+  const char *verb = REPORT_VERBS[_i].verb, *takes = REPORT_VERBS[_i].takes;
+  const int adir = !strcmp(verb, "archive");
+  char args[300], head[200], dir[] = "/tmp/vsph_verbXXXXXX";
+  snprintf(args, sizeof args, "report %s --help", verb);
+  struct vsph_test_outcome *o = vsph_test_cli(args);
+  ck_assert_msg(o->status == 0, "'%s' exited %d", args, o->status);
+  snprintf(head, sizeof head, "usage: vsph report %s%s", verb,
+           *verb ? " " : "");
+  ck_assert_msg(strstr(o->out, head) == o->out, "'%s': %.200s", args, o->out);
+  for (size_t k = 0; k < sizeof REPORT_OPTS / sizeof REPORT_OPTS[0]; k++) {
+    char line[64];
+    snprintf(line, sizeof line, "\n  %s ", REPORT_OPTS[k]);
+    ck_assert_msg((strstr(o->out, line) != NULL) == (takes[k] == '1'),
+                  "'%s' %s %s", args, takes[k] == '1' ? "lacks" : "lists",
+                  REPORT_OPTS[k]);
+  }
+  if (!*verb) /* vsph report's help names the verbs and their synopses */
+    for (size_t v = 1; v < sizeof REPORT_VERBS / sizeof REPORT_VERBS[0]; v++) {
+      char said[2][64];
+      snprintf(said[0], sizeof said[0], "\n  %-10s ", REPORT_VERBS[v].verb);
+      snprintf(said[1], sizeof said[1], "\n   or: vsph report %s [--out DIR]",
+               REPORT_VERBS[v].verb);
+      ck_assert_msg(strstr(o->out, said[0]) && strstr(o->out, said[1]),
+                    "report --help lacks %s", REPORT_VERBS[v].verb);
+    }
+  /* each option it does not take: refused, in a folder that stays empty */
+  vsph_test_scratch(dir);
+  for (size_t k = 0; k < sizeof REPORT_OPTS / sizeof REPORT_OPTS[0]; k++) {
+    if (takes[k] == '1') continue;
+    char script[900];
+    snprintf(script, sizeof script,
+             "B=$(realpath \"$VSPH_BIN\") && cd %s && exec $B report %s "
+             "%s%s --out r%s",
+             dir, verb, REPORT_OPTS[k],
+             strcmp(REPORT_OPTS[k], "--full") ? " 2" : "", adir ? " a" : "");
+    o = vsph_test_shell(script);
+    snprintf(head, sizeof head,
+             "vsph report%s%s: %s is not an option of vsph report%s%s (",
+             *verb ? " " : "", verb, REPORT_OPTS[k], *verb ? " " : "", verb);
+    ck_assert_msg(o->status == 2 && o->err_lines == 1 && !o->out[0] &&
+                      strstr(o->err, head) == o->err,
+                  "'%s': exit %d: %s", script, o->status, o->err);
+    ck_assert_msg(entries_of(dir) == 0, "'%s' wrote", script);
+  }
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
+/* The old spellings of the verbs (--plan, --slurm, --assemble, --archive
+ * ADIR among vsph report's options, as the Makefile, scripts and the
+ * FULL archive's texts wrote them) are the verbs: the same bytes out, the
+ * same files, the same refusals. A stand-in sbatch takes the Slurm
+ * scripts. */
+START_TEST(test_report_aliases) {
+  char dir[] = "/tmp/vsph_aliasXXXXXX", script[2000];
+  vsph_test_scratch(dir);
+  static const char *const pairs[][2] = {
+      {"plan --only contact --out r", "--only contact --plan --out r"},
+      {"plan --full --only scenes --out r",
+       "--full --plan --only scenes --out r"},
+      {"assemble --only stability --out r",
+       "--assemble --only stability --out r"},
+      {"submit --only stability --out s", "--slurm --only stability --out s"},
+      {"archive --out e a", "--out e --archive a"},
+      {"archive --out e a", "--archive=a --out e"},
+      /* refusals: the same line */
+      {"archive --out e e/runs/a", "--out e --archive e/runs/a"},
+      {"plan --jobs 2", "--plan --jobs 2"},
+      {"submit --time 1h", "--slurm --time 1h"},
+      {"assemble --budget 1h", "--budget 1h --assemble"}};
+  char ref[3][1 << 16], *file[3] = {"s/slurm/runs.sbatch",
+                                    "s/slurm/assemble.sbatch", "a/index.tsv"};
+  for (size_t k = 0; k < sizeof pairs / sizeof pairs[0]; k++) {
+    struct vsph_test_outcome was;
+    for (int old = 0; old < 2; old++) {
+      snprintf(script, sizeof script,
+               "B=$(realpath \"$VSPH_BIN\") && cd %s && rm -rf r s a && "
+               "mkdir -p e/runs && printf '#!/bin/sh\\necho 4242\\n' > sbatch "
+               "&& chmod +x sbatch && PATH=\"$PWD:$PATH\" $B report %s",
+               dir, pairs[k][old]);
+      struct vsph_test_outcome *o = vsph_test_shell(script);
+      for (int f = 0; f < 3; f++) {
+        char path[700], got[1 << 16];
+        snprintf(path, sizeof path, "%s/%s", dir, file[f]);
+        vsph_test_slurp(path, old ? got : ref[f], sizeof got);
+        ck_assert_msg(!old || !strcmp(got, ref[f]), "'%s': %s differs",
+                      pairs[k][1], file[f]);
+      }
+      if (!old) {
+        was = *o;
+        continue;
+      }
+      ck_assert_msg(o->status == was.status && !strcmp(o->out, was.out) &&
+                        !strcmp(o->err, was.err),
+                    "'%s' (exit %d: %s) is not '%s' (exit %d: %s)", pairs[k][1],
+                    o->status, o->err, pairs[k][0], was.status, was.err);
+    }
+    ck_assert_msg(k < 6 ? was.status <= 1 : was.status == 2, "'%s': exit %d",
+                  pairs[k][0], was.status);
+  }
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_cli_suite(void) {
   Suite *s = suite_create("cli");
   TCase *tc = tcase_create("errors");
@@ -533,6 +665,9 @@ Suite *vsph_cli_suite(void) {
   tcase_add_test(tc, test_params_file_messages);
   tcase_add_test(tc, test_json);
   tcase_add_test(tc, test_run_outputs);
+  tcase_add_loop_test(tc, test_report_verbs, 0,
+                      (int)(sizeof REPORT_VERBS / sizeof REPORT_VERBS[0]));
+  tcase_add_test(tc, test_report_aliases);
   suite_add_tcase(s, tc);
   return s;
 }

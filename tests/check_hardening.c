@@ -359,8 +359,8 @@ START_TEST(test_empty_values) {
   static const char *const cases[] = {
       "contact --csv ''",
       "report --only '' --out vsph_never",
-      "report --slurm --partition '' --out vsph_never",
-      "report --slurm --time '' --out vsph_never",
+      "report submit --partition '' --out vsph_never",
+      "report --slurm --time '' --out vsph_never", /* the old spelling */
       "run poiseuille --out ''",
       "report --only tensors --out ''"};
   char bin[4096], cwd[2048]; /* VSPH_BIN made absolute: the cases cd */
@@ -550,25 +550,39 @@ START_TEST(test_messages_one_line) {
 }
 END_TEST
 
-/* The report's ways of running (--plan, --jobs, --slurm, --assemble):
- * bad options give one line, exit 2 and no folder; an assembly without
- * its runs names the first missing one and writes nothing. */
+/* The report's ways of running (vsph report [--jobs N], and its verbs
+ * plan, submit, assemble): bad options give one line, exit 2 and no
+ * folder, an option its verb does not take named with the verbs that do,
+ * and the old spellings (--plan, --slurm, --assemble) as the verbs; an
+ * assembly without its runs names the first missing one and writes
+ * nothing. */
 START_TEST(test_report_job_inputs) {
   static const char *const cases[][2] = {
       {"report --jobs 0", "--jobs"},
       {"report --jobs 300", "--jobs"},
       {"report --jobs 18446744073709551615", "--jobs"},
       {"report --jobs x", "--jobs"},
-      {"report --plan --jobs 2", "exclude"},
-      {"report --slurm --assemble", "exclude"},
-      {"report --threads 2", "--threads needs"},
+      {"report plan --jobs 2",
+       "plan: --jobs is not an option of vsph report plan (vsph report "
+       "takes it)"},
+      {"report --plan --jobs 2", "plan: --jobs is not an option of vsph "},
+      {"report submit --assemble",
+       "--assemble is the verb vsph report assemble: one verb at a time"},
+      {"report --slurm --assemble", "one verb at a time"},
+      {"report assemble --threads 2",
+       "(vsph report and vsph report submit take it)"},
+      {"report --threads 2", "--threads needs --jobs"},
       {"report --jobs 2 --threads 0", "--threads"},
-      {"report --partition p", "--partition needs --slurm"},
-      {"report --time 10", "--time needs --slurm"},
+      {"report submit --threads 0", "--threads"},
+      {"report --partition p",
+       "report: --partition is not an option of vsph report (vsph report "
+       "submit takes it)"},
+      {"report --time 10", "--time is not an option of vsph report "},
+      {"report submit --time 1h", "--time"},
       {"report --slurm --time 1h", "--time"},
-      {"report --slurm --time 10:", "--time"},
-      {"report --slurm --partition 'a b'", "--partition"},
-      {"report --slurm --out '/tmp/vsph_never jobs'", "Slurm's #SBATCH"},
+      {"report submit --time 10:", "--time"},
+      {"report submit --partition 'a b'", "--partition"},
+      {"report submit --out '/tmp/vsph_never jobs'", "Slurm's #SBATCH"},
       {"run vortex-patch --cache --res 0", "Solver:res"},
       {"contact --res 4", "periodic length"},
       {"contact --csv /tmp/vsph_never.csv", "drop --csv"}};
@@ -601,7 +615,7 @@ START_TEST(test_report_job_inputs) {
   ck_assert_int_eq(rmdir(bin), 0);
   /* without sbatch on PATH */
   struct vsph_test_outcome *o = vsph_test_shell(
-      "PATH=/nonexistent exec \"$VSPH_BIN\" report --slurm --out "
+      "PATH=/nonexistent exec \"$VSPH_BIN\" report submit --out "
       "/tmp/vsph_never_jobs");
   ck_assert_int_eq(o->status, 2);
   ck_assert_int_eq(o->err_lines, 1);
@@ -609,7 +623,7 @@ START_TEST(test_report_job_inputs) {
   ck_assert(!exists("/tmp/vsph_never_jobs"));
   /* the assembly of nothing: not bad input (exit 1), nothing written */
   o = vsph_test_cli(
-      "report --only stability --assemble --out "
+      "report assemble --only stability --out "
       "/tmp/vsph_never_jobs");
   ck_assert_int_eq(o->status, 1);
   ck_assert_int_eq(o->err_lines, 1);

@@ -301,15 +301,20 @@ END_TEST
  * square's PVWF at its coarsest rung with delta-SPH once (its stop's check). */
 START_TEST(test_plan_listing) {
   const char *dir = tmpdir();
-  char out[700];
+  char out[100];
   snprintf(out, sizeof out, "%s/plan.tsv", dir);
-  char cmd[1024];
-  snprintf(cmd, sizeof cmd, "%s report --plan --out %s/r > %s", bin(), dir,
-           out);
+  char cmd[4096];
+  snprintf(cmd, sizeof cmd, "%s report plan --out %s/r > %s", bin(), dir, out);
   ck_assert_int_eq(system(cmd), 0);
   char r[700];
   snprintf(r, sizeof r, "%s/r", dir);
-  ck_assert_int_ne(access(r, F_OK), 0); /* --plan writes nothing */
+  ck_assert_int_ne(access(r, F_OK), 0); /* a plan writes nothing */
+  /* the old spelling, --plan among the options, is the verb: the same
+   * bytes */
+  snprintf(cmd, sizeof cmd,
+           "%s report --out %s/r --plan > %s.old && cmp -s %s %s.old", bin(),
+           dir, out, out, out);
+  ck_assert_int_eq(system(cmd), 0);
   FILE *f = fopen(out, "r");
   ck_assert_ptr_nonnull(f);
   char line[8192];
@@ -395,7 +400,8 @@ END_TEST
 /* `vsph report --budget`: a quick report given 4 s runs its costliest
  * runs (no rate measured yet: all, costliest first) until the clock
  * stops them at a checkpoint, exits 0 saying so, and assembles nothing;
- * refused beside --plan, and for a time it cannot read. */
+ * refused by a plan (vsph report plan, and its old spelling --plan),
+ * and for a time it cannot read. */
 START_TEST(test_budget_report) {
   const char *dir = tmpdir();
   char cmd[1200];
@@ -410,6 +416,8 @@ START_TEST(test_budget_report) {
   snprintf(cmd, sizeof cmd, "ls %s/r/runs/*/checkpoint.bin | wc -l", dir);
   o = vsph_test_shell(cmd);
   ck_assert_int_eq(atoi(o->out), 2);
+  snprintf(cmd, sizeof cmd, "report plan --budget 4s --out %s/r", dir);
+  ck_assert_int_eq(vsph_test_cli(cmd)->status, 2);
   snprintf(cmd, sizeof cmd, "report --budget 4s --plan --out %s/r", dir);
   ck_assert_int_eq(vsph_test_cli(cmd)->status, 2);
   static const char *const bad[] = {"0.5s", "' 1h'", "0x10", "nan",
@@ -422,13 +430,17 @@ START_TEST(test_budget_report) {
   }
   snprintf(cmd, sizeof cmd, "%s/q", dir);
   ck_assert_int_ne(access(cmd, F_OK), 0); /* refused: nothing made */
-  /* --archive runs nothing and takes --out alone; a commit id is one */
+  /* vsph report archive runs nothing and takes --out alone (so does its
+   * old spelling, --archive ADIR); a commit id is one */
+  snprintf(cmd, sizeof cmd, "report archive %s/q --full --out %s/r", dir, dir);
+  o = vsph_test_cli(cmd);
+  ck_assert(o->status == 2 && o->err_lines == 1);
   snprintf(cmd, sizeof cmd, "report --archive %s/q --full --out %s/r", dir,
            dir);
   o = vsph_test_cli(cmd);
   ck_assert(o->status == 2 && o->err_lines == 1);
   snprintf(cmd, sizeof cmd,
-           "VSPH_COMMIT='a;b' $VSPH_BIN report --archive %s/q --out %s/r", dir,
+           "VSPH_COMMIT='a;b' $VSPH_BIN report archive %s/q --out %s/r", dir,
            dir);
   o = vsph_test_shell(cmd);
   ck_assert_msg(o->status == 2 && o->err_lines == 1, "%s", o->err);
@@ -542,8 +554,8 @@ END_TEST
 static const char *cmd_of(char *cmd, size_t len, const char *dir,
                           const char *out) {
   snprintf(cmd, len,
-           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --full "
-           "--assemble --from-archive ar --out %s --only convergence",
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report assemble "
+           "--full --from-archive ar --out %s --only convergence",
            dir, out);
   return cmd;
 }
@@ -619,7 +631,7 @@ static size_t free_surface_entries(const char *dir, const char *out, int full,
   return made;
 }
 
-/* `vsph report --full --assemble --from-archive AR --only convergence`:
+/* `vsph report assemble --full --from-archive AR --only convergence`:
  * every free-surface run of the FULL plan is an entry of AR sealed under
  * its plan key by this build's sources (so it stands), none is in the
  * report's own folder, and the report is assembled from AR alone. Each
@@ -634,7 +646,8 @@ static size_t free_surface_entries(const char *dir, const char *out, int full,
  * dE_k,ref/dt(0)) / |dE_k,ref/dt(0)|, is -1/res. AR/summary.md then holds the
  * convergence tables and says how many runs came from AR; the report's facts
  * and run.json say it too. Refused (exit 2, nothing written): --full without
- * --assemble, a --plan, or --out inside AR; a folder that is not a run
+ * the verb assemble, a plan, or --out inside AR (the old spellings
+ * --plan and --assemble as the verbs); a folder that is not a run
  * archive, the message naming the option. Run where there is no
  * reports/baseline.csv (outside the source tree's top), every entry is
  * unjudged and the assembly fails saying that file is missing (exit 1).
@@ -650,11 +663,14 @@ START_TEST(test_assemble_from_archive) {
   ck_assert_uint_ge(free_surface_entries(dir, "r", 1, ar, sizeof ar), 40);
   /* refused, nothing written */
   static const char *const refused[] = {
-      "--full --from-archive ar --out r", "--plan --from-archive ar --out r",
+      "--full --from-archive ar --out r",
+      "plan --from-archive ar --out r",
+      "--plan --from-archive ar --out r",
+      "assemble --full --from-archive ar --out ar/runs/x",
       "--full --assemble --from-archive ar --out ar/runs/x",
-      "--full --assemble --from-archive nowhere --out r"};
+      "assemble --full --from-archive nowhere --out r"};
   char cmd[2000];
-  for (int k = 0; k < 4; k++) {
+  for (size_t k = 0; k < sizeof refused / sizeof refused[0]; k++) {
     snprintf(cmd, sizeof cmd,
              "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report %s "
              "--only convergence",
@@ -667,16 +683,17 @@ START_TEST(test_assemble_from_archive) {
   }
   snprintf(cmd, sizeof cmd,
            "B=$(realpath \"$VSPH_BIN\") && cd %s && mkdir plain && touch "
-           "plain/mine.txt && $B report --full --assemble --from-archive "
+           "plain/mine.txt && $B report assemble --full --from-archive "
            "plain --out r --only convergence",
            dir);
   const struct vsph_test_outcome *o = vsph_test_shell(cmd);
-  ck_assert_msg(o->status == 2 && o->err_lines == 1 &&
-                    strstr(o->err, "vsph report: --from-archive: plain "),
-                "%s", o->err);
+  ck_assert_msg(
+      o->status == 2 && o->err_lines == 1 &&
+          strstr(o->err, "vsph report assemble: --from-archive: plain "),
+      "%s", o->err);
   snprintf(cmd, sizeof cmd,
            "B=$(realpath \"$VSPH_BIN\") && cd %s && mkdir sub && cd sub && "
-           "$B report --full --assemble --from-archive ../ar --out ../r "
+           "$B report assemble --full --from-archive ../ar --out ../r "
            "--only convergence",
            dir);
   o = vsph_test_shell(cmd);
@@ -688,8 +705,8 @@ START_TEST(test_assemble_from_archive) {
   snprintf(path, sizeof path, "%s/ar/summary.md", dir);
   ck_assert_int_ne(access(path, F_OK), 0);
   snprintf(cmd, sizeof cmd,
-           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --full "
-           "--assemble --from-archive ar --out r --only convergence",
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report assemble "
+           "--full --from-archive ar --out r --only convergence",
            dir);
   o = vsph_test_shell(cmd);
   ck_assert_msg(o->status == 0, "%s", o->err);
@@ -735,8 +752,8 @@ START_TEST(test_assemble_from_archive) {
    * by which its gnuplot scripts reach an entry's table climbs out of
    * x/y/r3 and into the archive */
   snprintf(cmd, sizeof cmd,
-           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --full "
-           "--assemble --from-archive ar --out x/y/r3 --only convergence",
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report assemble "
+           "--full --from-archive ar --out x/y/r3 --only convergence",
            dir);
   o = vsph_test_shell(cmd);
   ck_assert_msg(o->status == 0, "%s", o->err);
@@ -769,8 +786,8 @@ START_TEST(test_assemble_from_archive) {
   fputs("2,0.5,0,0,-1,0,-1,1,-1,1,-1\n", f);
   ck_assert_int_eq(fclose(f), 0);
   snprintf(cmd, sizeof cmd,
-           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --full "
-           "--assemble --from-archive ar --out r2 --only convergence",
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report assemble "
+           "--full --from-archive ar --out r2 --only convergence",
            dir);
   o = vsph_test_shell(cmd);
   /* the refusal names the damaged entry and its file, not the report's
@@ -881,7 +898,7 @@ START_TEST(test_quick_from_archive) {
   }
   ck_assert_uint_eq(nhere, 9);
   snprintf(cmd, sizeof cmd,
-           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --assemble "
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report assemble "
            "--from-archive ar --out q --only convergence",
            dir);
   const struct vsph_test_outcome *o = vsph_test_shell(cmd);
@@ -889,7 +906,7 @@ START_TEST(test_quick_from_archive) {
   ck_assert_msg(o->status == 1 && strstr(o->err, text) && strstr(o->err, "-40"),
                 "want '%s' naming a finest rung: %s", text, o->err);
   snprintf(cmd, sizeof cmd,
-           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report --assemble "
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report assemble "
            "--out q2 --only convergence",
            dir);
   o = vsph_test_shell(cmd);

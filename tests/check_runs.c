@@ -1185,8 +1185,8 @@ START_TEST(test_slurm_signal) {
                {"0-0:09", 0}, {"1-0", 1}, {"2:00:00", 1}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     snprintf(args, sizeof args,
-             "PATH='%s':\"$PATH\" exec \"$VSPH_BIN\" report --only stability "
-             "--slurm --time %s --out %s/r%zu",
+             "PATH='%s':\"$PATH\" exec \"$VSPH_BIN\" report submit --only "
+             "stability --time %s --out %s/r%zu",
              dir, cases[k].limit, dir, k);
     struct vsph_test_outcome *o = vsph_test_shell(args);
     ck_assert_msg(o->status == 0, "%s: %s", args, o->err);
@@ -1197,13 +1197,19 @@ START_TEST(test_slurm_signal) {
     ck_assert_msg((strstr(text, "#SBATCH --signal=B:TERM@120\n") != NULL) ==
                       cases[k].signal,
                   "--time %s", cases[k].limit);
+    /* the assembly after them is the verb, with the report's parts */
+    snprintf(path, sizeof path, "%s/r%zu/slurm/assemble.sbatch", dir, k);
+    vsph_test_slurp(path, text, sizeof text);
+    ck_assert_msg(strstr(text, " report assemble --out ") &&
+                      strstr(text, " --only stability\n"),
+                  "%s", text);
   }
   /* an sbatch that hangs is stopped after VSPH_SBATCH_TIMEOUT seconds:
    * the report refuses in one line saying so, and ends */
   put(fake, "#!/bin/sh\nsleep 30\necho 4243\n");
   snprintf(args, sizeof args,
            "PATH='%s':\"$PATH\" VSPH_SBATCH_TIMEOUT=1 exec \"$VSPH_BIN\" "
-           "report --only stability --slurm --out %s/hang",
+           "report submit --only stability --out %s/hang",
            dir, dir);
   const double t0 = (double)time(NULL);
   struct vsph_test_outcome *o = vsph_test_shell(args);
