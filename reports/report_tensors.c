@@ -56,7 +56,8 @@ static void entries_row(FILE *csv, FILE *md, const struct row_id *id,
   fprintf(csv, ",%.3e\n", max4(g));
   fprintf(md, "| %s | %d | %s | %s", id->kernel, id->dim, id->support,
           id->method);
-  for (int k = 0; k < 8; k++) fprintf(md, " | %.5f", e[k]);
+  for (int k = 0; k < 8; k++) /* never "-0.00000" */
+    fprintf(md, " | %.5f", vsph_consts_shown(e[k], 5e-6));
   fprintf(md, " | %.1e |\n", max4(g));
 }
 

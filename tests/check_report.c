@@ -479,6 +479,29 @@ END_TEST
  * a series that rises to 50 times its start at t = 2.5 and falls again
  * gives 50 and 2.5 exactly (a ratio of two stored doubles, 1 ulp); a
  * decaying one gives 1 at t = 0; equal peaks give the first. */
+/* The tensors' table shows entries that vanish by symmetry as 0.00000,
+ * never -0.00000 (quadrature and sums give them as tiny values of either
+ * sign, vsph_consts_shown): the part made, every table cell read. */
+START_TEST(test_tensor_table_no_negative_zero) {
+  char dir[] = "/tmp/vsph-tens-XXXXXX", script[4096];
+  vsph_test_scratch(dir);
+  snprintf(script, sizeof script,
+           "\"$VSPH_BIN\" report --only tensors --out '%s/r' > /dev/null && "
+           "tr '|' '\\n' < '%s/r/parts/tensors.md' | sed 's/ //g' | "
+           "grep -c '^0\\.00000$'; tr '|' '\\n' < '%s/r/parts/tensors.md' | "
+           "sed 's/ //g' | grep -c '^-0\\.0*$'",
+           dir, dir, dir);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  long zeros = -1, negative = -1;
+  ck_assert_msg(sscanf(o->out, "%ld %ld", &zeros, &negative) == 2,
+                "exit %d: %s %s", o->status, o->out, o->err);
+  ck_assert_msg(zeros > 0, "no zero cell (the test would see nothing): %s",
+                o->out);
+  ck_assert_msg(negative == 0, "%ld cells show a negative zero", negative);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 START_TEST(test_peak) {
   const double t[6] = {0.0, 1.0, 2.5, 3.0, 4.0, 5.0};
   const double up[6] = {2e-7, 1e-6, 1e-5, 4e-6, 1e-5, 3e-6};
@@ -526,6 +549,7 @@ Suite *vsph_report_suite(void) {
   tcase_add_test(tc, test_command_reads_back);
   tcase_add_test(tc, test_null_mode);
   tcase_add_test(tc, test_peak);
+  tcase_add_test(tc, test_tensor_table_no_negative_zero);
   tcase_add_test(tc, test_bench_fold);
   suite_add_tcase(s, tc);
   return s;
