@@ -476,8 +476,8 @@ int vsph_plot_particles(const char *dir, const char *name, const char *title,
       fprintf(f, "  unset colorbox\n");
     fprintf(f,
             "  set title \"%s\"\n  plot '%s' skip 1 using 1:2:%d with points "
-            "pt 7 ps %.2f lc palette\n",
-            pn[k].title, pn[k].file, col, ps);
+            "pt 7 ps %.2f lc palette title \"%s\"\n",
+            pn[k].title, pn[k].file, col, ps, pn[k].title);
   }
   fprintf(f, "  unset multiplot\n");
   outputs_close(f);

@@ -118,6 +118,18 @@ START_TEST(test_vorticity_limit_all_panels) {
   ck_assert(exists("pic_w", "png", "\x89PNG"));
   ck_assert(exists("pic_w", "svg", "<?xml"));
   ck_assert(exists("pic_w", "pdf", "%PDF"));
+  /* each panel's points are titled by the panel's title in the SVG (what
+   * a pointer over them shows), not by gnuplot's plot command */
+  static char svg[1 << 20];
+  char path[160];
+  snprintf(path, sizeof path, "%s/pic_w.svg", dir);
+  vsph_test_slurp(path, svg, sizeof svg);
+  for (int k = 0; k < NPANEL; k++) {
+    char want[64];
+    snprintf(want, sizeof want, "<title>panel %d</title>", k);
+    ck_assert_msg(strstr(svg, want) != NULL, "no %s", want);
+  }
+  ck_assert_ptr_null(strstr(svg, "skip 1 using"));
 }
 END_TEST
 
