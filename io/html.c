@@ -38,7 +38,14 @@ static const struct {
              {"eta", "\u03b7"},   {"theta", "\u03b8"}, {"lambda", "\u03bb"},
              {"mu", "\u03bc"},    {"nu", "\u03bd"},    {"xi", "\u03be"},
              {"rho", "\u03c1"},   {"sigma", "\u03c3"}, {"omega", "\u03c9"},
-             {"zeta", "\u03b6"},  {"Omega", "\u03a9"}, {"kappa", "\u03ba"}};
+             {"zeta", "\u03b6"},  {"Omega", "\u03a9"}, {"kappa", "\u03ba"},
+             {"pi", "\u03c0"},    {"pbar", "p\u0304"}};
+
+/* Names that are signs only where a subscript follows (sum_j), not as
+ * words ("the sum of"). */
+static const struct {
+  const char *word, *utf8;
+} INDEXED[] = {{"sum", "\u03a3"}};
 
 /* Signs the prose writes in ASCII. */
 static const struct {
@@ -48,7 +55,18 @@ static const struct {
              {">=", "\u2265"},
              {"+-", "\u00b1"},
              {"n.D.n", "n\u00b7D\u00b7n"},
-             {"->", "\u2192"}};
+             {"->", "\u2192"},
+             {"sqrt(", "\u221a("},
+             {"sqrt ", "\u221a"},
+             {"-int ", "\u2212\u222b "}};
+
+/* The bytes of the Greek letter in UTF-8 at @p c (two bytes, U+0391 to
+ * U+03C9), 0 where there is none. */
+static size_t utf8_letter(const char *c) {
+  const unsigned char a = (unsigned char)c[0], b = (unsigned char)c[1];
+  return (a == 0xCE && b >= 0x91 && b <= 0xBF) || (a == 0xCF && b <= 0x89) ? 2
+                                                                           : 0;
+}
 
 static int word_char(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
@@ -78,11 +96,56 @@ static void word_out(FILE *m, const char *w, size_t n) {
   escaped(m, w, n);
 }
 
+/* At a '^' after a word, a bracket or a letter (c[-1]): the superscript
+ * ^2, ^-1 (digits, signed), ^R, ^num (letters) or ^(i+j) (a short bracket
+ * without spaces) set in @p m. @return the bytes it took, 0 for none. */
+static size_t superscript(FILE *m, const char *c) {
+  if (!(word_char(c[-1]) || c[-1] == ')' || c[-1] == '|' ||
+        (unsigned char)c[-1] >= 0x80))
+    return 0;
+  const char *t = NULL;
+  size_t tl = 0, n = 0;
+  if (c[1] == '(') {
+    size_t e = 2;
+    while (e < 12 && c[e] && c[e] != ')' && c[e] != ' ') e++;
+    if (c[e] == ')' && e > 2) t = c + 2, tl = e - 2, n = e + 1;
+  } else {
+    size_t e = 1 + (c[1] == '-' || c[1] == '+');
+    const size_t d0 = e;
+    while (c[e] >= '0' && c[e] <= '9') e++;
+    if (e == 1)
+      while ((c[e] >= 'a' && c[e] <= 'z') || (c[e] >= 'A' && c[e] <= 'Z')) e++;
+    if (e > d0) t = c + 1, tl = e - 1, n = e;
+  }
+  if (!t) return 0;
+  fputs("<sup>", m);
+  escaped(m, t, tl);
+  fputs("</sup>", m);
+  return n;
+}
+
+/* A Greek letter written in UTF-8 with a subscript word (η_eff) set in
+ * @p m. @return the bytes it took, 0 for none. */
+static size_t greek_sub(FILE *m, const char *c) {
+  if (!utf8_letter(c) || c[2] != '_' || !word_char(c[3]) || c[3] == '_')
+    return 0;
+  size_t n = 3;
+  while (word_char(c[n]) && c[n] != '_') n++;
+  if (word_char(c[n])) return 0;
+  fwrite(c, 1, 2, m);
+  fputs("<sub>", m);
+  word_out(m, c + 3, n - 3);
+  fputs("</sub>", m);
+  return n;
+}
+
 /* Text @p s of the prose as HTML with its mathematics set: a word X_Y
- * (X one or two letters, Y letters or digits, one underscore) as X with Y
- * subscript, a Greek letter's name as the letter, ^N (N digits, signed)
- * as a superscript, and !=, <=, >=, +-, ->, n.D.n as their signs; the
- * rest escaped. Returns 1 where anything was set. */
+ * (X one or two letters, a Greek letter's name, or sum; Y letters or
+ * digits, or one Greek letter in UTF-8; one underscore) as X with Y
+ * subscript, a Greek letter's name as the letter (pi, pbar too), a Greek
+ * letter in UTF-8 with _Y likewise, superscripts (superscript()), and
+ * !=, <=, >=, +-, ->, n.D.n, sqrt, -int as their signs; the rest
+ * escaped. Returns 1 where anything was set. */
 static int mathify(FILE *m, const char *s, const char *docs) {
   int any = 0;
   for (const char *c = s; *c;) {
@@ -121,13 +184,28 @@ static int mathify(FILE *m, const char *s, const char *docs) {
       int greek = 0; /* X a Greek letter's name (eta_num) */
       for (size_t q = 0; us && q < sizeof GREEK / sizeof GREEK[0]; q++)
         greek |= strlen(GREEK[q].word) == x && !strncmp(GREEK[q].word, c, x);
-      const int sub = us && x >= 1 && (x <= 2 || greek) && n - x - 1 >= 1 &&
+      const char *op = NULL; /* X a sign's name (sum_j) */
+      for (size_t q = 0; us && q < sizeof INDEXED / sizeof INDEXED[0]; q++)
+        if (strlen(INDEXED[q].word) == x && !strncmp(INDEXED[q].word, c, x))
+          op = INDEXED[q].utf8;
+      /* Y one letter written in UTF-8 (u_θ): the word ends at the '_' */
+      const size_t u8 =
+          us && x >= 1 && x <= 2 && n == x + 1 ? utf8_letter(c + n) : 0;
+      const int sub = us && x >= 1 && (x <= 2 || greek || op) &&
+                      (n - x - 1 >= 1 || u8) &&
                       !memchr(us + 1, '_', n - x - 1) &&
                       !(c[n] == '.' && word_char(c[n + 1])); /* file.ext */
       if (sub) {
-        word_out(m, c, x);
+        if (op)
+          fputs(op, m);
+        else
+          word_out(m, c, x);
         fputs("<sub>", m);
-        word_out(m, us + 1, n - x - 1);
+        if (u8) {
+          fwrite(c + n, 1, u8, m);
+          n += u8;
+        } else
+          word_out(m, us + 1, n - x - 1);
         fputs("</sub>", m);
         any = 1;
       } else {
@@ -138,19 +216,12 @@ static int mathify(FILE *m, const char *s, const char *docs) {
       c += n;
       continue;
     }
-    if (*c == '^' && c > s &&
-        (word_char(c[-1]) || c[-1] == ')' || c[-1] == '|')) {
-      size_t n = 1 + (c[1] == '-' || c[1] == '+');
-      const size_t d0 = n;
-      while (c[n] >= '0' && c[n] <= '9') n++;
-      if (n > d0) {
-        fputs("<sup>", m);
-        escaped(m, c + 1, n - 1);
-        fputs("</sup>", m);
-        any = 1;
-        c += n;
-        continue;
-      }
+    size_t k = *c == '^' && c > s ? superscript(m, c) : 0;
+    if (!k) k = greek_sub(m, c); /* η_eff */
+    if (k) {
+      any = 1;
+      c += k;
+      continue;
     }
     escaped(m, c, 1);
     c++;

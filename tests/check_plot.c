@@ -227,7 +227,9 @@ END_TEST
 
 /* The report's mathematics set in its HTML without JavaScript (io/html.c):
  * a subscript (E_k, eta_num), a Greek name as its letter, a superscript,
- * the signs written in ASCII (n.D.n != 0, ->), each by hand; code spans,
+ * the signs written in ASCII (n.D.n != 0, ->, sqrt, -int), sum_j, pbar,
+ * a Greek letter in UTF-8 with a subscript, superscripts of letters and
+ * of a bracket ((-1)^(i+j)), each by hand; code spans,
  * file names and multi-underscore names stay as written, and docs/X.md is
  * a link where the source tree's docs/ is found (from the test's folder,
  * the repository's top). */
@@ -239,7 +241,10 @@ START_TEST(test_html_mathematics) {
   fprintf(f,
           "E_k and eta_num at nu = 0.1, in m^2/s, when n.D.n != 0 -> "
           "u_theta; `E_k` and snap_0000.vtp and u_err_rel; see "
-          "docs/theory.md; [a link about docs/theory.md](#x).\n");
+          "docs/theory.md; [a link about docs/theory.md](#x).\n\n"
+          "u_\u03b8(r) and \u03b7_eff^num, U_j^R, pbar_i = sum_j x, "
+          "(-1)^(i+j), K/(3 sqrt pi), sqrt(10) times, P -> -int V:D; "
+          "the sum of a_b^c.\n");
   fclose(f);
   ck_assert_int_eq(vsph_html_render(dir, "m.md", "m.html", "m"), VSPH_OK);
   static char html[1 << 16];
@@ -250,6 +255,10 @@ START_TEST(test_html_mathematics) {
       "m<sup>2</sup>/s, when n\u00b7D\u00b7n \u2260 0 \u2192 "
       "u<sub>\u03b8</sub>;",
       "<code>E_k</code>", "snap_0000.vtp", "u_err_rel",
+      "u<sub>\u03b8</sub>(r) and \u03b7<sub>eff</sub><sup>num</sup>, "
+      "U<sub>j</sub><sup>R</sup>, p\u0304<sub>i</sub> = \u03a3<sub>j</sub> "
+      "x, (-1)<sup>i+j</sup>, K/(3 \u221a\u03c0), \u221a(10) times, P "
+      "\u2192 \u2212\u222b V:D; the sum of a<sub>b</sub><sup>c</sup>.",
       "docs/theory.md\">docs/theory.md</a>",
       /* inside a link's text: no link of its own */
       "<a href=\"#x\">a link about docs/theory.md</a>"};
