@@ -441,6 +441,21 @@ START_TEST(test_installed_program) {
 }
 END_TEST
 
+/* scripts/fresh-check removes its fresh root only when nothing is
+ * mounted in it, reading the mount table exactly for any path
+ * (scripts/mounts.sh): tests/check_mounts.sh holds the functions to
+ * hand-written tables for a path with a space and a newline (a bind
+ * below it, the folder itself, a path that only starts like it, a
+ * sibling), and prints a word for each expectation met. */
+START_TEST(test_mounts) {
+  struct vsph_test_outcome *o = vsph_test_shell("sh tests/check_mounts.sh");
+  ck_assert_msg(o->status == 0, "exit %d: %s %s", o->status, o->out, o->err);
+  ck_assert_str_eq(o->out,
+                   "below\nprefix-not-below\nsibling-not-below\nitself\n"
+                   "kept\nintact\nremoved\nescaped\n");
+}
+END_TEST
+
 /* The README's walkthrough, as a newcomer types it: step 1's command
  * (the run, its 11 snapshots, energy.csv's columns 2 and 12 being E_k and
  * Lighthill's reference, as step 3's gnuplot line plots them), and step
@@ -503,6 +518,7 @@ Suite *vsph_library_suite(void) {
   tcase_add_test(tc, test_exports);
   tcase_add_test(tc, test_install_refusals);
   tcase_add_test(tc, test_deps_without_apt);
+  tcase_add_test(tc, test_mounts);
   suite_add_tcase(s, tc);
   return s;
 }
