@@ -211,6 +211,43 @@ START_TEST(test_archive_inputs) {
 }
 END_TEST
 
+/* vsph report archive with nothing new to store leaves the archive as
+ * it was, entries.md included (it once rewrote a judged entries.md,
+ * "stands" to "unjudged" and its commit to "unknown", exit 0): a run
+ * archived, a line added to entries.md by hand as the mark of an earlier
+ * judgement, the same archive again: exit 0, "nothing new", entries.md
+ * byte for byte and not written anew (the same inode and time). */
+START_TEST(test_archive_nothing_new) {
+  char dir[] = "/tmp/vsph_arnnXXXXXX";
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  char script[3000], path[600];
+  snprintf(script, sizeof script,
+           "cd %s && mkdir -p r/runs && \"$VSPH_BIN\" run stretching-square "
+           "--res 10 --set Solver:t_end=0.01 --out r/runs/x > /dev/null && "
+           "\"$VSPH_BIN\" report archive --out r a 2> /dev/null && "
+           "echo 'marked by an earlier judgement' >> a/entries.md",
+           dir);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 0, "exit %d: %s", o->status, o->err);
+  snprintf(path, sizeof path, "%s/a/entries.md", dir);
+  static char before[1 << 16], after[1 << 16];
+  vsph_test_slurp(path, before, sizeof before);
+  struct stat s0, s1;
+  ck_assert_int_eq(stat(path, &s0), 0);
+  snprintf(script, sizeof script,
+           "cd %s && \"$VSPH_BIN\" report archive --out r a", dir);
+  o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 0 && strstr(o->err, "nothing new to store"),
+                "exit %d: %s", o->status, o->err);
+  vsph_test_slurp(path, after, sizeof after);
+  ck_assert_str_eq(after, before);
+  ck_assert_int_eq(stat(path, &s1), 0);
+  ck_assert(s0.st_ino == s1.st_ino && s0.st_mtim.tv_sec == s1.st_mtim.tv_sec &&
+            s0.st_mtim.tv_nsec == s1.st_mtim.tv_nsec);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 /* GNU's long options: --name=value is --name value (the same JSON, the
  * same run), a flag given a value is refused, and an option or a key a
  * slip away from a known one is named ("did you mean"), with the
@@ -657,6 +694,7 @@ Suite *vsph_cli_suite(void) {
   TCase *tc = tcase_create("errors");
   tcase_set_timeout(tc, 30);
   tcase_add_loop_test(tc, test_archive_inputs, 0, 5);
+  tcase_add_test(tc, test_archive_nothing_new);
   tcase_add_loop_test(tc, test_bad_input, 0,
                       (int)(sizeof bad_inputs / sizeof bad_inputs[0]));
   tcase_add_test(tc, test_help);
