@@ -248,6 +248,38 @@ START_TEST(test_archive_nothing_new) {
 }
 END_TEST
 
+/* A report's --budget stops the shear tests too (it once ran one 56 s
+ * past a 3 s budget): the contact part's 25 runs started at once (the
+ * shear tests among them), a budget of 2 s: exit 0 and the budget said
+ * spent, every shear test that started left with a checkpoint and no
+ * result, and the report back well before a shear test's end (30 s: the
+ * stop is seen between steps, each well under a second here; the rest is
+ * slack for a loaded machine). */
+START_TEST(test_budget_stops_shear) {
+  char dir[] = "/tmp/vsph_bshXXXXXX";
+  ck_assert_ptr_nonnull(mkdtemp(dir));
+  char script[3000];
+  snprintf(script, sizeof script,
+           "cd %s && s=$(date +%%s) && \"$VSPH_BIN\" report --only contact "
+           "--jobs 25 --budget 2s --out r && echo wall $(($(date +%%s) - s)) "
+           "&& n=0 && for d in r/runs/contact-*; do "
+           "[ -f \"$d/checkpoint.bin\" ] && [ ! -f \"$d/profiles.csv\" ] && "
+           "n=$((n + 1)); done; echo stopped $n",
+           dir);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 0 && strstr(o->err, "the budget of 2 s is spent"),
+                "exit %d: %s", o->status, o->err);
+  long wall = -1, stopped = -1;
+  const char *w = strstr(o->out, "wall ");
+  ck_assert_ptr_nonnull(w);
+  ck_assert_int_eq(sscanf(w, "wall %ld\nstopped %ld", &wall, &stopped), 2);
+  ck_assert_msg(wall <= 30, "the report took %ld s after a 2 s budget", wall);
+  ck_assert_msg(stopped >= 10, "only %ld shear tests stopped at a checkpoint",
+                stopped);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 /* GNU's long options: --name=value is --name value (the same JSON, the
  * same run), a flag given a value is refused, and an option or a key a
  * slip away from a known one is named ("did you mean"), with the
@@ -695,6 +727,7 @@ Suite *vsph_cli_suite(void) {
   tcase_set_timeout(tc, 30);
   tcase_add_loop_test(tc, test_archive_inputs, 0, 5);
   tcase_add_test(tc, test_archive_nothing_new);
+  tcase_add_test(tc, test_budget_stops_shear);
   tcase_add_loop_test(tc, test_bad_input, 0,
                       (int)(sizeof bad_inputs / sizeof bad_inputs[0]));
   tcase_add_test(tc, test_help);
