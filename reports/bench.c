@@ -139,33 +139,46 @@ struct progress {
   FILE *out;                     /* the table's stream */
 };
 
-/* A solver row's cost in units of MGF's force row (measured here: a
- * force row 0.43 s, PVWF's 0.87, contact SPH's 1.9, the general loop's
- * 1.2, a step row with its memory runs 1.3-3.2). */
+/* A solver row's cost in units of MGF's force row (measured on the
+ * project's machine, 2026-12-06, at load 5.8, one process, the row's
+ * time over MGF's force row's: MEAF, delta and the gather 0.9-1.0,
+ * PVWF's force 1.7-2.0, contact SPH's 2.0, the general loop's 2.1; the
+ * step rows, with their two whole runs for the memory, 17.7 (square,
+ * MGF), 21.5 (square, PVWF), 11.5 (standing wave)). */
 static double row_cost(const char *what) {
-  const double c = !strncmp(what, "step", 4) ? 5.0
-                   : strstr(what, "contact") ? 4.5
-                   : strstr(what, "general") ? 3.0
-                                             : 1.0;
-  return strstr(what, "PVWF") ? 1.8 * c : c;
+  if (!strncmp(what, "step", 4))
+    return strstr(what, "PVWF") ? 21.5 : strstr(what, "wave") ? 11.5 : 17.7;
+  return strstr(what, "PVWF")      ? 1.9
+         : strstr(what, "contact") ? 2.0
+         : strstr(what, "general") ? 2.1
+                                   : 1.0;
 }
 
-static void step(struct progress *pg, int sec, const char *what, double cost) {
+/* A progress line: @p cost of section @p sec done since the last line;
+ * @p row 1 where a row ends, 0 for a part of one (a step row's memory
+ * runs), said as "(part)". */
+static void progress_line(struct progress *pg, int sec, const char *what,
+                          double cost, int row) {
   static const double PRIOR[NSEC] = {0.05, 0.25, 0.4, 0.43};
   fflush(pg->out);
   const double now = omp_get_wtime();
   pg->done[sec] += cost;
   pg->spent[sec] += now - pg->t_row;
   pg->t_row = now;
-  pg->nrow++;
+  pg->nrow += (size_t)row;
   double left = 0.0;
   for (int k = 0; k < NSEC; k++) {
     const double rate = pg->done[k] > 0 ? pg->spent[k] / pg->done[k] : PRIOR[k];
     left += rate * (pg->rows[k] - pg->done[k]);
   }
   fprintf(stderr,
-          "vsph bench: [%zu/%zu] %s, %.0f s elapsed, about %.0f s left\n",
-          pg->nrow, pg->nrows, what, now - pg->t0, left);
+          "vsph bench: [%zu/%zu] %s%s, %.0f s elapsed, about %.0f s left\n",
+          pg->nrow + (size_t)!row, pg->nrows, what, row ? "" : " (part)",
+          now - pg->t0, left);
+}
+
+static void step(struct progress *pg, int sec, const char *what, double cost) {
+  progress_line(pg, sec, what, cost, 1);
 }
 
 static int cmp_double(const void *a, const void *b) {
@@ -278,14 +291,33 @@ static double run_peak_rss(const struct vsph_scene_type *type, int form,
                                   t_end);
 }
 
+/* A row's progress within it: the row's name and cost, and the share of
+ * it said done so far (NULL pg: nothing said). */
+struct bench_part {
+  struct progress *pg;
+  const char *what;
+  double cost, said;
+};
+
+/* Part of a row done: its share @p upto of the row's cost in all. */
+static void part_done(struct bench_part *bp, const char *part, double upto) {
+  if (!bp || !bp->pg) return;
+  char what[160];
+  snprintf(what, sizeof what, "%s: %s", bp->what, part);
+  progress_line(bp->pg, SEC_SOLVER, what, (upto - bp->said) * bp->cost, 0);
+  bp->said = upto;
+}
+
 /* Peak memory per particle of a whole run: the difference of the peaks at
  * two sizes over the difference of their particle counts, so the
  * program's fixed part (code, libraries) cancels. 0 if not measured. */
 static double peak_bytes_per_particle(const struct vsph_scene_type *type,
-                                      int form) {
+                                      int form, struct bench_part *bp) {
   size_t n1 = 0, n2 = 0;
   const double b1 = run_peak_rss(type, form, 100, &n1);
+  part_done(bp, "its memory run at 100 across", 0.1);
   const double b2 = run_peak_rss(type, form, 400, &n2);
+  part_done(bp, "its memory run at 400 across", 0.65);
   return b1 > 0 && b2 > b1 && n2 > n1 ? (b2 - b1) / (double)(n2 - n1) : 0.0;
 }
 
@@ -352,8 +384,8 @@ static const struct bench_case SOLVER[] = {
 #define SOLVER_CASES (sizeof SOLVER / sizeof SOLVER[0])
 
 /* One case: its force evaluation or step timed on 1 and 2 threads. */
-static int bench_case(struct rows *rw, const struct bench_case *bc,
-                      size_t res) {
+static int bench_case(struct rows *rw, const struct bench_case *bc, size_t res,
+                      struct bench_part *bp) {
   struct solver_arg a = {
       .s = bench_run(bc->type, bc->form, res, bc->delta, bc->contact,
                      bc->cubic ? &vsph_cubic_type : &vsph_gaussian_type,
@@ -376,7 +408,7 @@ static int bench_case(struct rows *rw, const struct bench_case *bc,
   a.out.acc[1] = buf + 2 * p->n;
   const size_t n = a.s->n_fluid;
   const double bytes = bc->step && bc->delta == 0.0
-                           ? peak_bytes_per_particle(bc->type, bc->form)
+                           ? peak_bytes_per_particle(bc->type, bc->form, bp)
                            : 0.0;
   for (int thr = 1; thr <= 2; thr++) {
     omp_set_num_threads(thr);
@@ -419,8 +451,10 @@ static int measure_solver(struct rows *rw, int busy, struct progress *pg) {
   busy_start(pids, busy);
   int st = VSPH_OK;
   for (size_t c = 0; c < SOLVER_CASES && !st; c++) {
-    st = bench_case(rw, &SOLVER[c], res);
-    if (pg) step(pg, SEC_SOLVER, SOLVER[c].what, row_cost(SOLVER[c].what));
+    struct bench_part bp = {
+        .pg = pg, .what = SOLVER[c].what, .cost = row_cost(SOLVER[c].what)};
+    st = bench_case(rw, &SOLVER[c], res, &bp);
+    if (pg) step(pg, SEC_SOLVER, SOLVER[c].what, (1.0 - bp.said) * bp.cost);
   }
   busy_stop(pids, busy);
   omp_set_num_threads(2);
