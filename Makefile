@@ -224,14 +224,22 @@ lib: deps
 
 # The reference manual of the public headers (docs/Doxyfile), by Debian's
 # doxygen (scripts/install-deps); skipped with a note where it is absent.
+# A warning fails it (WARN_AS_ERROR): the warnings are shown and no
+# manual is kept, so the next make tries again.
 doc: $(BUILD)/doc/html/index.html
 $(BUILD)/doc/html/index.html: docs/Doxyfile $(PUB_HDR)
 	@if command -v doxygen > /dev/null; then \
 	  rm -rf $(BUILD)/doc && mkdir -p $(BUILD)/doc && \
-	  { cat docs/Doxyfile; echo "INPUT = $(PUB_HDR)"; \
-	    echo "OUTPUT_DIRECTORY = $(BUILD)/doc"; \
-	    echo "WARN_LOGFILE = $(BUILD)/doc/warnings.log"; } | doxygen - && \
-	  echo "doc: the reference manual in $(BUILD)/doc/html"; \
+	  if { cat docs/Doxyfile; echo "INPUT = $(PUB_HDR)"; \
+	       echo "OUTPUT_DIRECTORY = $(BUILD)/doc"; \
+	       echo "WARN_LOGFILE = $(BUILD)/doc/warnings.log"; } | doxygen - && \
+	     ! [ -s $(BUILD)/doc/warnings.log ]; then \
+	    echo "doc: the reference manual in $(BUILD)/doc/html"; \
+	  else \
+	    cat $(BUILD)/doc/warnings.log >&2; rm -rf $(BUILD)/doc/html; \
+	    echo "doc: doxygen warned (above): document every parameter, or" \
+	      "mend the comment" >&2; exit 1; \
+	  fi; \
 	else echo "doc: skipped (no doxygen; scripts/install-deps installs it)"; fi
 
 # make install [PREFIX=/usr/local] [DESTDIR=]: the program, the libraries,
