@@ -123,7 +123,7 @@ END_TEST
  * doxygen built the installed reference manual (make doc), every exported
  * name has its place in it. OpenMP's named-critical locks
  * (.gomp_critical_*) are the compiler's. */
-START_TEST(test_exports) {
+START_TEST(test_exports_match_headers) {
   char stage[PATH_MAX], script[3 * PATH_MAX], dir[] = "/tmp/vsph-exp-XXXXXX";
   staged(stage);
   vsph_test_scratch(dir);
@@ -392,7 +392,7 @@ Suite *vsph_library_suite(void) {
   tcase_add_test(tc, test_installed_example);
   tcase_add_test(tc, test_installed_dispatch);
   tcase_add_test(tc, test_readme_walkthrough);
-  tcase_add_test(tc, test_exports);
+  tcase_add_test(tc, test_exports_match_headers);
   tcase_add_test(tc, test_install_refusals);
   tcase_add_test(tc, test_deps_without_apt);
   suite_add_tcase(s, tc);

@@ -479,7 +479,7 @@ END_TEST
  * a series that rises to 50 times its start at t = 2.5 and falls again
  * gives 50 and 2.5 exactly (a ratio of two stored doubles, 1 ulp); a
  * decaying one gives 1 at t = 0; equal peaks give the first. */
-START_TEST(test_peak) {
+START_TEST(test_peak_ratio_and_time) {
   const double t[6] = {0.0, 1.0, 2.5, 3.0, 4.0, 5.0};
   const double up[6] = {2e-7, 1e-6, 1e-5, 4e-6, 1e-5, 3e-6};
   const double down[6] = {6e-7, 5e-7, 4e-7, 3e-7, 2e-7, 1e-7};
@@ -525,7 +525,7 @@ Suite *vsph_report_suite(void) {
   tcase_add_test(tc, test_shell_quote);
   tcase_add_test(tc, test_command_reads_back);
   tcase_add_test(tc, test_null_mode);
-  tcase_add_test(tc, test_peak);
+  tcase_add_test(tc, test_peak_ratio_and_time);
   tcase_add_test(tc, test_bench_fold);
   suite_add_tcase(s, tc);
   return s;
