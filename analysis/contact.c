@@ -356,24 +356,31 @@ static void fit_profiles(struct vsph_contact_shear *cs) {
   }
 }
 
-int vsph_contact_shear_measure(struct vsph_params *prm,
-                               struct vsph_contact_shear *cs) {
+/* @p cs emptied for the results, keeping what the caller set in it: its
+ * profile count (held to 1 .. 8), its callbacks and the state to resume. */
+static void shear_reset(struct vsph_contact_shear *cs) {
   const size_t nprof = cs->nprof < 1 ? 1 : cs->nprof > 8 ? 8 : cs->nprof;
   const struct vsph_contact_shear in = *cs; /* what the caller set */
-  void (*const progress)(void *, double, double, double) = cs->progress;
-  void *const progress_ctx = cs->progress_ctx;
   memset(cs, 0, sizeof *cs);
   cs->nprof = nprof;
-  cs->progress = progress;
-  cs->progress_ctx = progress_ctx;
+  cs->progress = in.progress;
+  cs->progress_ctx = in.progress_ctx;
   cs->stop = in.stop;
   cs->save = in.save;
   cs->save_ctx = in.save_ctx;
   cs->resume = in.resume;
   cs->resume_len = in.resume_len;
-  struct vsph_run_props rp;
+}
+
+/* The shear run of @p prm laid out into *@p run (its props into @p rp) and
+ * its figures into @p cs; refused before anything is laid out where a
+ * parameter is unknown or the run is too short for cs->nprof profiles. */
+static int shear_run_alloc(struct vsph_params *prm,
+                           struct vsph_contact_shear *cs,
+                           struct vsph_run_props *rp, struct vsph_run **run) {
+  const size_t nprof = cs->nprof;
   struct vsph_scene sc;
-  int st = vsph_run_props_init(&rp, prm);
+  int st = vsph_run_props_init(rp, prm);
   if (!st) st = vsph_scene_init(&sc, &vsph_shear_type, prm);
   if (st) return st;
   const char *unused = vsph_params_unused(prm);
@@ -382,87 +389,124 @@ int vsph_contact_shear_measure(struct vsph_params *prm,
     vsph_params_hint(prm, unused, hint, sizeof hint);
     VSPH_FAIL(VSPH_EINVAL, "unknown parameter '%s'%s", unused, hint);
   }
-  rp.snapshots = 0;
+  rp->snapshots = 0;
   /* a profile is taken at the first step past each t_end k/K: K profiles
    * need K steps at least (a run of one step gave one profile, one step
    * old, and its "fit") */
   struct vsph_run_estimate e;
-  if ((st = vsph_run_estimate(&rp, &sc, &e))) return st;
+  if ((st = vsph_run_estimate(rp, &sc, &e))) return st;
   if (!(ceil(e.steps) >= (double)nprof))
     VSPH_FAIL(VSPH_EINVAL,
               "%zu profiles need %zu steps at least, and the run to t_end = "
               "%g s takes about %.3g: lengthen t_end or ask fewer profiles",
-              nprof, nprof, rp.t_end > 0 ? rp.t_end : sc.t_end, e.steps);
-  struct vsph_run *run = NULL;
-  if ((st = vsph_run_alloc(&rp, &sc, &run))) return st;
-  const struct vsph_scene_shear *sh = &run->scene.u.shear;
-  cs->n = run->n_fluid;
-  cs->D0 = run->dx;
+              nprof, nprof, rp->t_end > 0 ? rp->t_end : sc.t_end, e.steps);
+  if ((st = vsph_run_alloc(rp, &sc, run))) return st;
+  const struct vsph_scene_shear *sh = &(*run)->scene.u.shear;
+  cs->n = (*run)->n_fluid;
+  cs->D0 = (*run)->dx;
   cs->W = sh->W;
   cs->U0 = sh->U0;
-  cs->t_end = run->t_end;
-  cs->rho0 = run->scene.mat[0].rho0;
-  cs->c0 = run->scene.mat[0].c0;
-  cs->nbins = 2 * rp.res;
-  const size_t nf = run->n_fluid, nb = cs->nbins;
-  double *disp = calloc(nf, sizeof *disp), *prev = malloc(nf * sizeof *prev),
-         *cnt = malloc(nb * sizeof *cnt);
+  cs->t_end = (*run)->t_end;
+  cs->rho0 = (*run)->scene.mat[0].rho0;
+  cs->c0 = (*run)->scene.mat[0].c0;
+  cs->nbins = 2 * rp->res;
+  return VSPH_OK;
+}
+
+/* The profiles of @p cs (cs->nbins slabs at cs->nprof times, their slab
+ * centres set) and the arrays by particle id (@p nf of them: @p disp
+ * zeroed, @p prev) or by slab (@p cnt); VSPH_ENOMEM where one is missing
+ * (the caller frees what was allocated). */
+static int shear_alloc(struct vsph_contact_shear *cs, size_t nf, double **disp,
+                       double **prev, double **cnt) {
+  const size_t nb = cs->nbins, nprof = cs->nprof;
+  *disp = calloc(nf, sizeof **disp);
+  *prev = malloc(nf * sizeof **prev);
+  *cnt = malloc(nb * sizeof **cnt);
   cs->x = malloc(nb * sizeof *cs->x);
   for (size_t k = 0; k < nprof; k++) {
     cs->u[k] = malloc(nb * sizeof(double));
     cs->dy[k] = malloc(nb * sizeof(double));
   }
-  int ok = disp && prev && cnt && cs->x;
+  int ok = *disp && *prev && *cnt && cs->x;
   for (size_t k = 0; k < nprof; k++) ok = ok && cs->u[k] && cs->dy[k];
   if (!ok) {
-    st = VSPH_ENOMEM;
-    vsph_status_report(st, __FILE__, __LINE__,
+    vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
                        "cannot allocate the shear test's profiles");
-    goto done;
+    return VSPH_ENOMEM;
   }
   for (size_t b = 0; b < nb; b++) cs->x[b] = -cs->W + (b + 0.5) * cs->D0;
+  return VSPH_OK;
+}
+
+/* The steps of @p run until it ends or the cs->nprof profiles are taken
+ * (*@p k so far), each particle's displacement followed (@p prev, @p disp)
+ * and a profile taken at each profile time (@p cnt its scratch); a line
+ * of progress every 5 s, a checkpoint every @p checkpoint_s of wall time
+ * (0: none) and at a stop request, which ends it (VSPH_EINTR). @p wall0
+ * is the earlier processes' wall time, @p t0 this one's start. */
+static int shear_steps(struct vsph_contact_shear *cs, struct vsph_run *run,
+                       double checkpoint_s, double *disp, double *prev,
+                       double *cnt, size_t *k, double wall0, double t0) {
+  const size_t nprof = cs->nprof, nf = run->n_fluid;
+  const double Ly = run->scene.u.shear.Ly;
+  double last = t0, last_ck = t0;
+  int st;
+  while (run->state == VSPH_RUN_RUNNING && *k < nprof) {
+    if ((st = vsph_run_iterate(run))) return st;
+    unwrap(run->integ->p, nf, Ly, prev, disp);
+    const double t = vsph_run_time(run);
+    if (run->state != VSPH_RUN_UNSTABLE &&
+        t >= cs->t_end * (double)(*k + 1) / (double)nprof * (1.0 - 1e-12)) {
+      profile(run, disp, cs, *k, cnt);
+      cs->t[*k] = t;
+      (*k)++;
+    }
+    const double now = omp_get_wtime();
+    if (cs->progress && now - last > 5.0) { /* never silent for long */
+      cs->progress(cs->progress_ctx, t, cs->t_end, wall0 + now - t0);
+      last = now;
+    }
+    /* a checkpoint between two steps: at a stop, and every checkpoint_s */
+    const int stopping = cs->stop && *cs->stop;
+    if (cs->save && run->state == VSPH_RUN_RUNNING && *k < nprof &&
+        (stopping || (checkpoint_s > 0.0 && now - last_ck >= checkpoint_s))) {
+      if ((st = shear_pack_save(cs, run, disp, prev, *k, wall0 + now - t0)))
+        return st;
+      last_ck = now;
+    }
+    if (stopping && run->state == VSPH_RUN_RUNNING && *k < nprof) {
+      cs->interrupted = 1;
+      return VSPH_EINTR;
+    }
+  }
+  return VSPH_OK;
+}
+
+int vsph_contact_shear_measure(struct vsph_params *prm,
+                               struct vsph_contact_shear *cs) {
+  shear_reset(cs);
+  const size_t nprof = cs->nprof;
+  struct vsph_run_props rp;
+  struct vsph_run *run = NULL;
+  int st = shear_run_alloc(prm, cs, &rp, &run);
+  if (st) return st;
+  const size_t nf = run->n_fluid;
+  double *disp = NULL, *prev = NULL, *cnt = NULL;
+  if ((st = shear_alloc(cs, nf, &disp, &prev, &cnt))) goto done;
   {
     const struct vsph_particles *p = run->integ->p;
     for (size_t i = 0; i < p->n; i++)
       if (p->id[i] < nf) prev[p->id[i]] = p->pos[1][i];
   }
-  const double Ly = sh->Ly;
   size_t k = 0;
   double wall0 = 0.0; /* the wall time of the processes before this one */
   if (cs->resume && (st = shear_unpack(cs, run, disp, prev, &k, &wall0, nprof)))
     goto done;
   const double t0 = omp_get_wtime();
-  double last = t0, last_ck = t0;
-  while (run->state == VSPH_RUN_RUNNING && k < nprof) {
-    if ((st = vsph_run_iterate(run))) goto done;
-    unwrap(run->integ->p, nf, Ly, prev, disp);
-    const double t = vsph_run_time(run);
-    if (run->state != VSPH_RUN_UNSTABLE &&
-        t >= cs->t_end * (double)(k + 1) / (double)nprof * (1.0 - 1e-12)) {
-      profile(run, disp, cs, k, cnt);
-      cs->t[k] = t;
-      k++;
-    }
-    const double now = omp_get_wtime();
-    if (progress && now - last > 5.0) { /* never silent for long */
-      progress(progress_ctx, t, cs->t_end, wall0 + now - t0);
-      last = now;
-    }
-    /* a checkpoint between two steps: at a stop, and every checkpoint_s */
-    const int stopping = cs->stop && *cs->stop;
-    if (cs->save && run->state == VSPH_RUN_RUNNING && k < nprof &&
-        (stopping ||
-         (rp.checkpoint_s > 0.0 && now - last_ck >= rp.checkpoint_s))) {
-      if ((st = shear_pack_save(cs, run, disp, prev, k, wall0 + now - t0)))
-        goto done;
-      last_ck = now;
-    }
-    if (stopping && run->state == VSPH_RUN_RUNNING && k < nprof) {
-      cs->interrupted = 1;
-      st = VSPH_EINTR;
-      goto done;
-    }
-  }
+  if ((st = shear_steps(cs, run, rp.checkpoint_s, disp, prev, cnt, &k, wall0,
+                        t0)))
+    goto done;
   cs->nt = k;
   cs->stable = run->state != VSPH_RUN_UNSTABLE;
   cs->t_stop = vsph_run_time(run);

@@ -206,6 +206,97 @@ static int inside(size_t id, int dim, size_t n, size_t pad) {
   return 1;
 }
 
+/* The patch's cost refused before anything is laid out: every evaluated
+ * particle gathers from the lattice points within its support, the ball
+ * of radius kappa hdx in units of dx; more than Laplacian:max_pairs
+ * interactions is VSPH_EINVAL. */
+static int check_cost(const struct vsph_laplacian_props *lp) {
+  const int dim = lp->dim;
+  const double r = lp->kernel->kappa * lp->hdx;
+  const double nb =
+      dim == 2 ? VSPH_PI * r * r : 4.0 / 3.0 * VSPH_PI * r * r * r;
+  const double ne = pow((double)lp->n, dim), pairs = ne * nb;
+  if (!(pairs <= lp->max_pairs))
+    VSPH_FAIL(VSPH_EINVAL,
+              "the patch needs about %.3g neighbour interactions (%.3g "
+              "particles x %.3g neighbours), more than Laplacian:max_pairs = "
+              "%g: lower n or hdx, or raise max_pairs",
+              pairs, ne, nb, lp->max_pairs);
+  return VSPH_OK;
+}
+
+/* The Laplacian of the field @p f (set on every particle of @p p) at each
+ * particle inside the unit square (of the lattice padded by @p pad), by
+ * the formulation lp->form, against the exact one: err[4 i .. 4 i + 3] =
+ * 1 (evaluated), |error|, |numerical|, |exact|; zero elsewhere. */
+static void patch_errors(const struct vsph_laplacian_props *lp,
+                         const struct vsph_particles *p,
+                         const struct vsph_cells *cells, size_t pad, double h,
+                         const double *f, double *err) {
+  const int dim = lp->dim;
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, lp->kernel, dim, h);
+  const double eta2 = lp->eta * lp->eta * h * h;
+  const double *const fields[3] = {f, NULL, NULL};
+  /* gather: particle i writes only err[4 i .. 4 i + 3] */
+#pragma omp parallel for schedule(dynamic, 16)
+  for (size_t c = 0; c < cells->ncells; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+         i++) {
+      if (!inside(p->id[i], dim, lp->n, pad)) continue;
+      double num[3];
+      vsph_viscous_laplacians(&pk, lp->kernel, h, eta2, 1e-12, lp->form, p, &rg,
+                              i, 1, fields, num);
+      double x[3] = {0, 0, 0}, exact;
+      for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
+      field(lp->field, dim, x, &exact);
+      err[4 * i] = 1.0;
+      err[4 * i + 1] = fabs(num[0] - exact);
+      err[4 * i + 2] = fabs(num[0]);
+      err[4 * i + 3] = fabs(exact);
+    }
+  }
+}
+
+/* The errors @p err of the particles of @p p (spacing @p dx) reduced into
+ * @p res in index order (reproducible for any thread count); the line: the
+ * lattice column(s) within dx/2 of x = line_x, each particle judged by
+ * where it sits, so a shift of up to perturb dx widens the band by as much
+ * (the nearest one or two columns). */
+static void patch_reduce(const struct vsph_laplacian_props *lp,
+                         const struct vsph_particles *p, const double *err,
+                         double dx, struct vsph_laplacian_result *res) {
+  const double band = (0.5 + lp->perturb) * dx * (1.0 + 1e-9);
+  double lit = 0.0, ex = 0.0, llit = 0.0, lex = 0.0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (err[4 * i] == 0.0) continue;
+    res->n_eval++;
+    const double d = err[4 * i + 1];
+    const double a = err[4 * i + 2] > 0.0 ? d / err[4 * i + 2] : 0.0;
+    const double b = err[4 * i + 3] > 0.0 ? d / err[4 * i + 3] : 0.0;
+    lit += a;
+    ex += b;
+    if (fabs(p->pos[0][i] - lp->line_x) <= band) {
+      res->n_line++;
+      llit += a;
+      lex += b;
+    }
+    res->abs_max = fmax(res->abs_max, d);
+    res->ref_max = fmax(res->ref_max, err[4 * i + 3]);
+  }
+  res->err_line_literal =
+      res->n_line ? llit / (double)res->n_line * dx * dx : (double)NAN;
+  res->err_line_paper =
+      res->n_line ? lex / (double)res->n_line * dx * dx : (double)NAN;
+  res->n_total = p->n;
+  res->dx = dx;
+  res->err_literal = lit / (double)res->n_eval;
+  res->err_exact = ex / (double)res->n_eval;
+  res->err_paper = res->err_exact * dx * dx;
+}
+
 int vsph_laplacian_patch(const struct vsph_laplacian_props *lp,
                          struct vsph_laplacian_result *res) {
   memset(res, 0, sizeof *res);
@@ -216,22 +307,10 @@ int vsph_laplacian_patch(const struct vsph_laplacian_props *lp,
   /* ghosts: every evaluated particle (shifted by < dx/2) has full
    * support, kappa h + dx/2 + the shift of its neighbours */
   const size_t pad = (size_t)ceil(kap * lp->hdx) + 2;
-  /* the cost, before anything is laid: every evaluated particle gathers
-   * from the lattice points within its support, the ball of radius
-   * kappa hdx in units of dx */
-  const double r = kap * lp->hdx;
-  const double nb =
-      dim == 2 ? VSPH_PI * r * r : 4.0 / 3.0 * VSPH_PI * r * r * r;
-  const double ne = pow((double)lp->n, dim), pairs = ne * nb;
-  if (!(pairs <= lp->max_pairs))
-    VSPH_FAIL(VSPH_EINVAL,
-              "the patch needs about %.3g neighbour interactions (%.3g "
-              "particles x %.3g neighbours), more than Laplacian:max_pairs = "
-              "%g: lower n or hdx, or raise max_pairs",
-              pairs, ne, nb, lp->max_pairs);
-  struct vsph_particles *p = NULL;
-  int st = lattice(lp, pad, &p);
+  int st = check_cost(lp);
   if (st) return st;
+  struct vsph_particles *p = NULL;
+  if ((st = lattice(lp, pad, &p))) return st;
   struct vsph_cells *cells = vsph_cells_alloc();
   if (!cells) st = VSPH_ENOMEM;
   if (!st) st = vsph_cells_build(cells, p, kap * h);
@@ -247,62 +326,9 @@ int vsph_laplacian_patch(const struct vsph_laplacian_props *lp,
       for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
       f[i] = field(lp->field, dim, x, &l);
     }
-    struct vsph_pair_kernel pk;
-    vsph_pair_kernel_init(&pk, lp->kernel, dim, h);
-    const double eta2 = lp->eta * lp->eta * h * h;
-    const double *const fields[3] = {f, NULL, NULL};
-    /* gather: particle i writes only err[4 i .. 4 i + 3] */
-#pragma omp parallel for schedule(dynamic, 16)
-    for (size_t c = 0; c < cells->ncells; c++) {
-      struct vsph_pair_ranges rg;
-      vsph_pair_ranges_cell(&rg, cells, c);
-      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-           i++) {
-        if (!inside(p->id[i], dim, lp->n, pad)) continue;
-        double num[3];
-        vsph_viscous_laplacians(&pk, lp->kernel, h, eta2, 1e-12, lp->form, p,
-                                &rg, i, 1, fields, num);
-        double x[3] = {0, 0, 0}, exact;
-        for (int a = 0; a < dim; a++) x[a] = p->pos[a][i];
-        field(lp->field, dim, x, &exact);
-        err[4 * i] = 1.0;
-        err[4 * i + 1] = fabs(num[0] - exact);
-        err[4 * i + 2] = fabs(num[0]);
-        err[4 * i + 3] = fabs(exact);
-      }
-    }
-    /* reduced in index order (reproducible for any thread count); the
-     * line: the lattice column(s) within dx/2 of x = line_x, each
-     * particle judged by where it sits, so a shift of up to perturb dx
-     * widens the band by as much (the nearest one or two columns) */
-    const double band = (0.5 + lp->perturb) * dx * (1.0 + 1e-9);
-    double lit = 0.0, ex = 0.0, llit = 0.0, lex = 0.0;
-    for (size_t i = 0; i < p->n; i++) {
-      if (err[4 * i] == 0.0) continue;
-      res->n_eval++;
-      const double d = err[4 * i + 1];
-      const double a = err[4 * i + 2] > 0.0 ? d / err[4 * i + 2] : 0.0;
-      const double b = err[4 * i + 3] > 0.0 ? d / err[4 * i + 3] : 0.0;
-      lit += a;
-      ex += b;
-      if (fabs(p->pos[0][i] - lp->line_x) <= band) {
-        res->n_line++;
-        llit += a;
-        lex += b;
-      }
-      res->abs_max = fmax(res->abs_max, d);
-      res->ref_max = fmax(res->ref_max, err[4 * i + 3]);
-    }
-    res->err_line_literal =
-        res->n_line ? llit / (double)res->n_line * dx * dx : (double)NAN;
-    res->err_line_paper =
-        res->n_line ? lex / (double)res->n_line * dx * dx : (double)NAN;
-    res->n_total = p->n;
-    res->dx = dx;
+    patch_errors(lp, p, cells, pad, h, f, err);
+    patch_reduce(lp, p, err, dx, res);
     res->h = h;
-    res->err_literal = lit / (double)res->n_eval;
-    res->err_exact = ex / (double)res->n_eval;
-    res->err_paper = res->err_exact * dx * dx;
   }
   free(f);
   free(err);

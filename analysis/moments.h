@@ -34,8 +34,11 @@ struct vsph_moments {
  *  R_p(a) = -int_0^a w'(s) s^p ds inside, angle outside, the outer interval
  *  split where the support meets the surface. The azimuthal integral of
  *  monomials in 3-D is done in closed form.
+ *  @param k the kernel; @param dim the dimension (1-3).
+ *  @param depth the depth (units of h, >= 0).
  *  @param epsrel relative accuracy of the outer integrals (>= 1e-13).
  *  @param outer,inner caller-owned GSL workspaces (distinct).
+ *  @param out receives the tensors.
  *  @return VSPH_OK, VSPH_EINVAL, VSPH_ELIB (GSL failed to converge). */
 VSPH_API int vsph_moments_quadrature(const struct vsph_kernel_type *k, int dim,
                                      double depth, double epsrel,

@@ -305,8 +305,9 @@ static int set_mathematics(cmark_node *doc, const char *docs) {
   return st;
 }
 
-int vsph_html_render(const char *dir, const char *md, const char *html,
-                     const char *title) {
+/* Markdown file @p md of folder @p dir as the body of an HTML page, with
+ * its mathematics set, into *@p body (the caller frees it). */
+static int render_body(const char *dir, const char *md, char **body) {
   char path[1024];
   snprintf(path, sizeof path, "%s/%s", dir, md);
   size_t len;
@@ -332,17 +333,17 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
     free(text);
     VSPH_FAIL(VSPH_ENOMEM, "cannot set the report's mathematics");
   }
-  char *body = cmark_render_html(doc, CMARK_OPT_DEFAULT | CMARK_OPT_UNSAFE,
-                                 cmark_parser_get_syntax_extensions(ps));
+  *body = cmark_render_html(doc, CMARK_OPT_DEFAULT | CMARK_OPT_UNSAFE,
+                            cmark_parser_get_syntax_extensions(ps));
   cmark_node_free(doc);
   cmark_parser_free(ps);
   free(text);
-  if (!body) VSPH_FAIL(VSPH_ENOMEM, "cmark-gfm rendered nothing");
-  FILE *f = vsph_files_open(dir, html);
-  if (!f) {
-    free(body);
-    return VSPH_EIO;
-  }
+  if (!*body) VSPH_FAIL(VSPH_ENOMEM, "cmark-gfm rendered nothing");
+  return VSPH_OK;
+}
+
+/* The page's head into @p f, titled @p title, with its style sheet. */
+static void write_head(FILE *f, const char *title) {
   fprintf(f,
           "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">\n"
           "<title>%s</title>\n<style>\n"
@@ -372,8 +373,13 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
           ".v-none{background:#e2e3e5;color:#41464b}\n"
           "</style></head><body>\n",
           title);
-  /* Copy the body, replacing src="X.png" or "X.svg" by an embedded data
-   * URI (an <img> of SVG keeps the figure vector graphics). */
+}
+
+/* HTML @p body copied into @p f, each figure of folder @p dir it shows
+ * (PNG or SVG) embedded. */
+static void write_body(FILE *f, const char *dir, const char *body) {
+  /* src="X.png" or "X.svg" replaced by an embedded data URI (an <img> of
+   * SVG keeps the figure vector graphics) */
   const char *c = body;
   for (;;) {
     const char *m = strstr(c, "src=\"");
@@ -394,6 +400,7 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
                                     : NULL;
     }
     if (mime) {
+      char path[1024];
       snprintf(path, sizeof path, "%s/%s", dir, name);
       img = vsph_files_slurp(path, &plen);
     }
@@ -408,6 +415,20 @@ int vsph_html_render(const char *dir, const char *md, const char *html,
     c = q + 1;
   }
   fputs(c, f);
+}
+
+int vsph_html_render(const char *dir, const char *md, const char *html,
+                     const char *title) {
+  char *body = NULL;
+  const int st = render_body(dir, md, &body);
+  if (st) return st;
+  FILE *f = vsph_files_open(dir, html);
+  if (!f) {
+    free(body);
+    return VSPH_EIO;
+  }
+  write_head(f, title);
+  write_body(f, dir, body);
   fputs("</body></html>\n", f);
   free(body);
   return vsph_files_close(f, dir, html);

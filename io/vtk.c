@@ -295,18 +295,13 @@ static int add_geometry(struct out *o, const struct vsph_particles *p,
   return st;
 }
 
-/* The arrays of the snapshot into o, described. */
-static int build(struct out *o, const struct vsph_particles *p,
-                 const size_t *order, size_t n, double t,
-                 const struct vsph_diagnostics *dg) {
+/* The particles' state after the geometry, described: velocity, density,
+ * pressure, volume and mass, gathered in @p order. */
+static int add_state(struct out *o, const struct vsph_particles *p,
+                     const size_t *order, size_t n) {
   const int d = p->dim;
-  const size_t n8 = n * sizeof(double), e8 = sizeof(double);
-  static const char *const geometry[3] = {
-      "time of the snapshot, the exact double (snapshots.pvd and energy.csv "
-      "print it to 10 significant digits)",
-      "particle positions x, y, z (z = 0 in 2-D)",
-      "one vertex cell per particle, so that every representation shows it"};
-  int st = add_geometry(o, p, order, n, t, geometry);
+  const size_t e8 = sizeof(double);
+  int st = VSPH_OK;
   const double *vel[3] = {p->vel[0], d > 1 ? p->vel[1] : NULL,
                           d > 2 ? p->vel[2] : NULL};
   const struct src us = {
@@ -333,6 +328,18 @@ static int build(struct out *o, const struct vsph_particles *p,
            : d == 2 ? "kg/m"
                     : "kg/m^",
            2);
+  return st;
+}
+
+/* The arrays that only some snapshots have, described: with diagnostics
+ * @p dg (or NULL) the smoothing length, vorticity, div_r and the free
+ * surface; the material index of a two-material run. */
+static int add_extras(struct out *o, const struct vsph_particles *p,
+                      const size_t *order, size_t n,
+                      const struct vsph_diagnostics *dg) {
+  const int d = p->dim;
+  const size_t n8 = n * sizeof(double), e8 = sizeof(double);
+  int st = VSPH_OK;
   if (dg) {
     const struct src hs = {.fill = fill_const, .esz = e8, .c = dg->h};
     if (!st)
@@ -386,6 +393,22 @@ static int build(struct out *o, const struct vsph_particles *p,
              vsph_diagnostics_surface_threshold(d));
     describe(o, "free_surface", what, "dimensionless", d);
   }
+  return st;
+}
+
+/* The arrays of the snapshot into o, described. */
+static int build(struct out *o, const struct vsph_particles *p,
+                 const size_t *order, size_t n, double t,
+                 const struct vsph_diagnostics *dg) {
+  const int d = p->dim;
+  static const char *const geometry[3] = {
+      "time of the snapshot, the exact double (snapshots.pvd and energy.csv "
+      "print it to 10 significant digits)",
+      "particle positions x, y, z (z = 0 in 2-D)",
+      "one vertex cell per particle, so that every representation shows it"};
+  int st = add_geometry(o, p, order, n, t, geometry);
+  if (!st) st = add_state(o, p, order, n);
+  if (!st) st = add_extras(o, p, order, n, dg);
   const struct src ids = {.fill = fill_iota, .esz = sizeof(int64_t)};
   if (!st) st = add_gathered(o, POINT_DATA, "id", "Int64", 1, &ids, n);
   describe(o, "id",

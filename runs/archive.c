@@ -904,26 +904,9 @@ int vsph_archive_standing(const char *archive,
   return VSPH_OK;
 }
 
-int vsph_archive_summarise(const char *archive,
-                           const struct vsph_archive_judge *jd) {
-  char runs[4200];
-  struct vsph_folder top;
-  int st = claim_judged(archive, runs, &top);
-  if (st) return st;
-  size_t n = 0;
-  char **names = subdirs(runs, &n);
-  char *now, *tsv;
-  judge_inputs(jd, &now, &tsv);
-  char *text = NULL;
-  size_t len = 0;
-  FILE *m = names ? open_memstream(&text, &len) : NULL;
-  if (!m) {
-    free_list(names, n);
-    free(now);
-    free(tsv);
-    vsph_folder_release(&top);
-    VSPH_FAIL(VSPH_EIO, "cannot list or summarise %s", runs);
-  }
+/* The head of the archive's entries.md into @p m: what it is, when an
+ * archived run stands, and the table's header. */
+static void summary_head(FILE *m, const struct vsph_archive_judge *jd) {
   fprintf(m,
           "# The FULL run archive\n\n"
           "Written by `vsph report archive` (vsph %s, source hash %s, "
@@ -946,50 +929,87 @@ int vsph_archive_summarise(const char *archive,
           "unjudged.\n\n",
           VSPH_VERSION, vsph_source_hash_id,
           jd->commit ? jd->commit : "unknown");
-  size_t stands = 0, total = 0, others = 0;
-  double wall = 0.0;
   fprintf(m,
           "| run | particles | t reached / t_end (s) | status | steps | wall "
           "(s) | source hash, commit | stands |\n"
           "|---|---:|---|---|---:|---:|---|---|\n");
-  for (size_t k = 0; k < n; k++) {
-    struct entry en;
-    if (!entry_read(runs, names[k], &en)) continue;
-    const char *const hash = en.hash;
-    cJSON *o = en.run;
-    const cJSON *s = o ? cJSON_GetObjectItemCaseSensitive(o, "status") : NULL;
-    const cJSON *r =
-        o ? cJSON_GetObjectItemCaseSensitive(o, "unstable_reason") : NULL;
-    char commit[64], why[400];
-    entry_verdict(jd, tsv, now, names[k], &en, commit, sizeof commit, why,
-                  sizeof why);
-    const char *status =
-        cJSON_IsString(s) && id_name(s->valuestring) ? s->valuestring : "?";
-    fputs("| ", m);
-    md_cell(m, names[k]);
-    fprintf(m, " | %.0f | %.4g / %.4g | %s",
-            vsph_json_get_number(o, "n_particles", NAN),
-            vsph_json_get_number(o, "t", NAN),
-            vsph_json_get_number(o, "t_end", NAN), status);
-    if (cJSON_IsString(r)) {
-      fputs(" (", m);
-      md_cell(m, r->valuestring);
-      fputs(")", m);
-    }
-    fprintf(m, " | %.0f | %.0f | ", vsph_json_get_number(o, "steps", NAN),
-            vsph_json_get_number(o, "wall_s", NAN));
-    md_cell(m, hash);
-    fprintf(m, ", %s | %s |\n", commit[0] ? commit : "unknown", why);
-    stands += !strcmp(why, "yes");
-    size_t q = 0; /* the plan's runs only in the tally */
-    while (q < jd->nplan && strcmp(jd->plan_name[q], names[k])) q++;
-    if (q < jd->nplan) {
-      total++;
-      wall += vsph_json_get_number(o, "wall_s", 0.0);
-    }
-    others += q == jd->nplan;
-    entry_free(&en);
+}
+
+/* The archive's entries summed up: those that stand; those of the current
+ * plan, with their wall time; those the plan no longer names. */
+struct summary_tally {
+  size_t stands, total, others;
+  double wall;
+};
+
+/* The table's row of entry @p name of @p runs into @p m (none where it is
+ * not a whole entry), judged against @p jd (with @p tsv and @p now, see
+ * judge_inputs) and counted into @p ty. */
+static void summary_row(FILE *m, const struct vsph_archive_judge *jd,
+                        const char *tsv, const char *now, const char *runs,
+                        const char *name, struct summary_tally *ty) {
+  struct entry en;
+  if (!entry_read(runs, name, &en)) return;
+  const char *const hash = en.hash;
+  cJSON *o = en.run;
+  const cJSON *s = o ? cJSON_GetObjectItemCaseSensitive(o, "status") : NULL;
+  const cJSON *r =
+      o ? cJSON_GetObjectItemCaseSensitive(o, "unstable_reason") : NULL;
+  char commit[64], why[400];
+  entry_verdict(jd, tsv, now, name, &en, commit, sizeof commit, why,
+                sizeof why);
+  const char *status =
+      cJSON_IsString(s) && id_name(s->valuestring) ? s->valuestring : "?";
+  fputs("| ", m);
+  md_cell(m, name);
+  fprintf(m, " | %.0f | %.4g / %.4g | %s",
+          vsph_json_get_number(o, "n_particles", NAN),
+          vsph_json_get_number(o, "t", NAN),
+          vsph_json_get_number(o, "t_end", NAN), status);
+  if (cJSON_IsString(r)) {
+    fputs(" (", m);
+    md_cell(m, r->valuestring);
+    fputs(")", m);
   }
+  fprintf(m, " | %.0f | %.0f | ", vsph_json_get_number(o, "steps", NAN),
+          vsph_json_get_number(o, "wall_s", NAN));
+  md_cell(m, hash);
+  fprintf(m, ", %s | %s |\n", commit[0] ? commit : "unknown", why);
+  ty->stands += !strcmp(why, "yes");
+  size_t q = 0; /* the plan's runs only in the tally */
+  while (q < jd->nplan && strcmp(jd->plan_name[q], name)) q++;
+  if (q < jd->nplan) {
+    ty->total++;
+    ty->wall += vsph_json_get_number(o, "wall_s", 0.0);
+  }
+  ty->others += q == jd->nplan;
+  entry_free(&en);
+}
+
+int vsph_archive_summarise(const char *archive,
+                           const struct vsph_archive_judge *jd) {
+  char runs[4200];
+  struct vsph_folder top;
+  int st = claim_judged(archive, runs, &top);
+  if (st) return st;
+  size_t n = 0;
+  char **names = subdirs(runs, &n);
+  char *now, *tsv;
+  judge_inputs(jd, &now, &tsv);
+  char *text = NULL;
+  size_t len = 0;
+  FILE *m = names ? open_memstream(&text, &len) : NULL;
+  if (!m) {
+    free_list(names, n);
+    free(now);
+    free(tsv);
+    vsph_folder_release(&top);
+    VSPH_FAIL(VSPH_EIO, "cannot list or summarise %s", runs);
+  }
+  summary_head(m, jd);
+  struct summary_tally ty = {0, 0, 0, 0.0};
+  for (size_t k = 0; k < n; k++)
+    summary_row(m, jd, tsv, now, runs, names[k], &ty);
   fprintf(m,
           "\n%zu of the %zu runs of the current FULL plan are archived "
           "(%.0f s of runs)%s; %zu entries stand. The claims table and the "
@@ -997,8 +1017,9 @@ int vsph_archive_summarise(const char *archive,
           "which the FULL report's assembly from this archive writes (`make "
           "full-report`: `vsph report assemble --full --from-archive`) "
           "when every run it reads stands here.\n",
-          total, jd->nplan, wall,
-          others ? ", beside entries the plan no longer names" : "", stands);
+          ty.total, jd->nplan, ty.wall,
+          ty.others ? ", beside entries the plan no longer names" : "",
+          ty.stands);
   free_list(names, n);
   free(now);
   free(tsv);

@@ -112,19 +112,103 @@ static int record_failed(const struct vsph_jobs *J,
   return st;
 }
 
+/* A pool's runs: the missing ones in @p order (@p m of them), each by its
+ * index with its process id (0: not running), exit status, start time
+ * (@p t1, from @p t0) and progress (@p eta); the next to start and the
+ * counts running, ended and failed; stopping once a stop was passed on,
+ * err: a run that could not be started. */
+struct pool {
+  struct vsph_jobs *J;
+  const char *exe;
+  size_t njobs, threads;
+  struct vsph_jobs_job **order;
+  size_t m;
+  pid_t *pid;
+  int *status;
+  double *t1, t0;
+  struct vsph_jobs_eta *eta;
+  size_t next, running, done, nfailed;
+  int stopping, err;
+};
+
+/* The next runs started while fewer than njobs run (none once stopping);
+ * one that cannot start sets err and starts no more. */
+static void pool_start(struct pool *P) {
+  while (!P->stopping && P->next < P->m && P->running < P->njobs) {
+    const size_t k = P->next;
+    if ((P->pid[k] = spawn(P->J, P->order[k], P->exe, P->threads)) < 0) {
+      P->err = VSPH_EIO; /* stop the others, as on a signal */
+      P->pid[k] = 0;
+      return;
+    }
+    P->t1[k] = omp_get_wtime();
+    P->eta[k].state = VSPH_JOBS_ETA_RUNNING;
+    fprintf(stderr, "  started %s, pid %ld (%.0f s elapsed)\n",
+            P->order[k]->label, (long)P->pid[k], P->t1[k] - P->t0);
+    P->running++;
+    P->next++;
+  }
+}
+
+/* At a failed start or a stop request, the stop passed on (once) to each
+ * running run, which stops at a checkpoint. */
+static void pool_pass_stop(struct pool *P) {
+  if (P->stopping || !(P->err || (P->J->stop && *P->J->stop))) return;
+  P->stopping = 1;
+  fprintf(stderr,
+          "vsph report: stopping; each running run stops at a "
+          "checkpoint (uncached: the next report resumes it)\n");
+  for (size_t k = 0; k < P->next; k++)
+    if (P->pid[k] > 0) kill(P->pid[k], SIGTERM);
+}
+
+/* Run @p k ended with wait status @p ws: its status, whether it is cached
+ * and its progress recorded, and a line said; a run that failed (not
+ * stopped) is marked and counted. */
+static void pool_ended(struct pool *P, size_t k, int ws) {
+  struct vsph_jobs_job *j = P->order[k];
+  P->pid[k] = 0;
+  P->running--;
+  P->done++;
+  P->status[k] = WIFEXITED(ws) ? WEXITSTATUS(ws) : 128 + WTERMSIG(ws);
+  j->cached = P->status[k] == 0 && vsph_rundir_key_matches(j->dir, j->key);
+  const double now = omp_get_wtime(), el = now - P->t0;
+  P->eta[k].state = VSPH_JOBS_ETA_DONE; /* a failed run measures nothing */
+  P->eta[k].ended = el;
+  P->eta[k].wall = j->cached ? now - P->t1[k] : 0.0;
+  P->eta[k].cost = j->cached ? vsph_jobs_local_cost_taken(j) : 0.0;
+  if (j->cached) {
+    char v[96], left[64];
+    verdict(j, v, sizeof v);
+    vsph_jobs_local_eta_text(P->eta, P->t1, P->m, P->njobs, now, P->J->after_s,
+                             left, sizeof left);
+    fprintf(stderr, "  [%zu/%zu] %s: %s, %.1f s; %.0f s elapsed%s\n", P->done,
+            P->m, j->label, v, now - P->t1[k], el, left);
+  } else if (!P->stopping) {
+    char logf[700];
+    log_path(P->J, j, logf, sizeof logf);
+    j->failed = 1;
+    P->nfailed++;
+    fprintf(stderr,
+            "  [%zu/%zu] %s: FAILED (exit status %d; see %s); the others "
+            "go on\n",
+            P->done, P->m, j->label, P->status[k], logf);
+  }
+}
+
 int vsph_jobs_pool_run(struct vsph_jobs *J, const char *exe, size_t njobs,
                        size_t threads) {
-  struct vsph_jobs_job **order;
-  const size_t m = vsph_jobs_local_missing(J, &order, njobs);
+  struct pool P = {.J = J, .exe = exe, .njobs = njobs, .threads = threads};
+  const size_t m = P.m = vsph_jobs_local_missing(J, &P.order, njobs);
   if (m == (size_t)-1) VSPH_FAIL(VSPH_ENOMEM, "cannot order the runs");
   char logs[600];
   snprintf(logs, sizeof logs, "%s/runs/logs", J->dir);
   int st = vsph_files_mkdir(logs);
-  pid_t *pid = calloc(m ? m : 1, sizeof *pid);
-  int *status = calloc(m ? m : 1, sizeof *status);
-  double *t1 = calloc(m ? m : 1, sizeof *t1);
-  struct vsph_jobs_eta *eta = vsph_jobs_local_eta_start(order, m);
-  if (!st && (!pid || !status || !t1 || !eta)) {
+  P.pid = calloc(m ? m : 1, sizeof *P.pid);
+  P.status = calloc(m ? m : 1, sizeof *P.status);
+  P.t1 = calloc(m ? m : 1, sizeof *P.t1);
+  P.eta = vsph_jobs_local_eta_start(P.order, m);
+  if (!st && (!P.pid || !P.status || !P.t1 || !P.eta)) {
     st = VSPH_ENOMEM;
     vsph_status_report(st, __FILE__, __LINE__, "cannot track %zu runs", m);
   }
@@ -135,31 +219,11 @@ int vsph_jobs_pool_run(struct vsph_jobs *J, const char *exe, size_t njobs,
             "vsph report: %zu of the %zu runs are not in the cache%s; "
             "running them as %zu processes of %zu threads (logs in %s)\n",
             m, J->n, na, njobs, threads, logs);
-  const double t0 = omp_get_wtime();
-  size_t next = 0, running = 0, done = 0, nfailed = 0;
-  int stopping = st != VSPH_OK, err = VSPH_OK;
-  while (running > 0 || (next < m && !stopping)) {
-    while (!stopping && next < m && running < njobs) {
-      if ((pid[next] = spawn(J, order[next], exe, threads)) < 0) {
-        err = VSPH_EIO; /* stop the others, as on a signal */
-        pid[next] = 0;
-        break;
-      }
-      t1[next] = omp_get_wtime();
-      eta[next].state = VSPH_JOBS_ETA_RUNNING;
-      fprintf(stderr, "  started %s, pid %ld (%.0f s elapsed)\n",
-              order[next]->label, (long)pid[next], t1[next] - t0);
-      running++;
-      next++;
-    }
-    if (!stopping && (err || (J->stop && *J->stop))) { /* pass it on */
-      stopping = 1;
-      fprintf(stderr,
-              "vsph report: stopping; each running run stops at a "
-              "checkpoint (uncached: the next report resumes it)\n");
-      for (size_t k = 0; k < next; k++)
-        if (pid[k] > 0) kill(pid[k], SIGTERM);
-    }
+  P.t0 = omp_get_wtime();
+  P.stopping = st != VSPH_OK;
+  while (P.running > 0 || (P.next < m && !P.stopping)) {
+    pool_start(&P);
+    pool_pass_stop(&P);
     int ws;
     const pid_t w = waitpid(-1, &ws, WNOHANG);
     if (w == 0 || (w < 0 && errno == EINTR)) {
@@ -169,51 +233,24 @@ int vsph_jobs_pool_run(struct vsph_jobs *J, const char *exe, size_t njobs,
     }
     if (w < 0) break; /* no child left */
     size_t k = 0;
-    while (k < next && pid[k] != w) k++;
-    if (k == next) continue; /* not one of ours */
-    pid[k] = 0;
-    running--;
-    done++;
-    status[k] = WIFEXITED(ws) ? WEXITSTATUS(ws) : 128 + WTERMSIG(ws);
-    order[k]->cached =
-        status[k] == 0 && vsph_rundir_key_matches(order[k]->dir, order[k]->key);
-    const double now = omp_get_wtime(), el = now - t0;
-    eta[k].state = VSPH_JOBS_ETA_DONE; /* a failed run measures nothing */
-    eta[k].ended = el;
-    eta[k].wall = order[k]->cached ? now - t1[k] : 0.0;
-    eta[k].cost = order[k]->cached ? vsph_jobs_local_cost_taken(order[k]) : 0.0;
-    if (order[k]->cached) {
-      char v[96], left[64];
-      verdict(order[k], v, sizeof v);
-      vsph_jobs_local_eta_text(eta, t1, m, njobs, now, J->after_s, left,
-                               sizeof left);
-      fprintf(stderr, "  [%zu/%zu] %s: %s, %.1f s; %.0f s elapsed%s\n", done, m,
-              order[k]->label, v, now - t1[k], el, left);
-    } else if (!stopping) {
-      char logf[700];
-      log_path(J, order[k], logf, sizeof logf);
-      order[k]->failed = 1;
-      nfailed++;
-      fprintf(stderr,
-              "  [%zu/%zu] %s: FAILED (exit status %d; see %s); the others "
-              "go on\n",
-              done, m, order[k]->label, status[k], logf);
-    }
+    while (k < P.next && P.pid[k] != w) k++;
+    if (k == P.next) continue; /* not one of ours */
+    pool_ended(&P, k, ws);
   }
-  if (!st) st = record_failed(J, order, next, status);
-  free(order);
-  free(pid);
-  free(status);
-  free(t1);
-  free(eta);
+  if (!st) st = record_failed(J, P.order, P.next, P.status);
+  free(P.order);
+  free(P.pid);
+  free(P.status);
+  free(P.t1);
+  free(P.eta);
   if (st) return st;
-  if (err) return err;
-  if (stopping) return VSPH_EINTR;
-  if (nfailed)
+  if (P.err) return P.err;
+  if (P.stopping) return VSPH_EINTR;
+  if (P.nfailed)
     VSPH_FAIL(VSPH_EFAIL,
               "%zu of %zu runs failed (listed in %s/runs/failed.txt with their "
               "logs); the report is not assembled: mend them and rerun, only "
               "they run again",
-              nfailed, m, J->dir);
+              P.nfailed, m, J->dir);
   return VSPH_OK;
 }

@@ -858,13 +858,13 @@ static int end_run(struct outputs *o, struct vsph_folder *fo,
   return st;
 }
 
-static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
-                   const char *key, const struct vsph_rundir_opts *opts,
-                   struct vsph_rundir_result *res) {
-  struct vsph_run_props rp;
-  struct vsph_scene sc;
-  int st = vsph_run_props_init(&rp, prm);
-  if (!st) st = vsph_scene_init(&sc, type, prm);
+/* The run's props and scene read from @p prm into @p rp and @p sc; an
+ * unknown parameter is refused (VSPH_EINVAL, with a hint). */
+static int read_settings(struct vsph_params *prm,
+                         const struct vsph_scene_type *type,
+                         struct vsph_run_props *rp, struct vsph_scene *sc) {
+  int st = vsph_run_props_init(rp, prm);
+  if (!st) st = vsph_scene_init(sc, type, prm);
   if (st) return st;
   const char *unused = vsph_params_unused(prm);
   if (unused) {
@@ -872,6 +872,15 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
     vsph_params_hint(prm, unused, hint, sizeof hint);
     VSPH_FAIL(VSPH_EINVAL, "unknown parameter '%s'%s", unused, hint);
   }
+  return VSPH_OK;
+}
+
+/* The run's folder into res->dir: --out's (opts->dir), or
+ * vsph-out/SCENE-METHOD-RES; a name too long is refused (VSPH_EINVAL). */
+static int name_folder(const struct vsph_scene_type *type,
+                       const struct vsph_run_props *rp,
+                       const struct vsph_rundir_opts *opts,
+                       struct vsph_rundir_result *res) {
   if (opts->dir && strlen(opts->dir) >= sizeof res->dir - 64)
     VSPH_FAIL(VSPH_EINVAL,
               "--out: the folder's name is too long (%zu characters; at most "
@@ -881,7 +890,72 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
     snprintf(res->dir, sizeof res->dir, "%s", opts->dir);
   else
     snprintf(res->dir, sizeof res->dir, "vsph-out/%s-%s-%zu", type->name,
-             vsph_run_method(&rp), rp.res);
+             vsph_run_method(rp), rp->res);
+  return VSPH_OK;
+}
+
+/* The live outputs of @p o opened: energy.csv, snapshots.pvd (with
+ * snapshots), the profile (@p with_profile: the cavity's centreline.csv,
+ * a channel's profile.csv) and probes.csv (with probes); each new, or a
+ * resumed run's cut back to the bytes @p keep its checkpoint saw (energy,
+ * profile, pvd, probes). */
+static int open_live(struct outputs *o, const struct vsph_run_props *rp,
+                     int cavity, int with_profile, const long keep[4]) {
+  int st = VSPH_OK;
+  o->csv = live_open(o, "energy.csv",
+                     "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,"
+                     "Ek_ref,dEk_ref,Em_ref,dEm_ref,u_err,u_err_rel,v_rms\n",
+                     keep[0], &st);
+  if (st) return st;
+  if (rp->snapshots > 0 &&
+      (st = keep[0] < 0 ? vsph_vtk_pvd_open(&o->pvd, o->dir)
+                        : vsph_vtk_pvd_reopen(&o->pvd, o->dir, keep[2])))
+    return st;
+  if (with_profile &&
+      !(o->profile =
+            live_open(o, o->profile_name,
+                      cavity ? "t,line,s,vel,vel_ghia\n" : "t,y,u,u_ref,n\n",
+                      keep[1], &st)))
+    return st;
+  if (rp->probe_points > 0 &&
+      !(o->probes = live_open(
+            o, "probes.csv", "t,probe,x,y,z,u,v,w,p,rho,fill\n", keep[3], &st)))
+    return st;
+  return st;
+}
+
+/* The run's figures into @p res, and its first lines said on @p progress
+ * (if any): what runs, and from where a resumed run goes on. */
+static void say_start(FILE *progress, const struct vsph_scene_type *type,
+                      const struct vsph_run_props *rp,
+                      const struct vsph_run *run, int resumed,
+                      struct vsph_rundir_result *res) {
+  res->n_particles = run->n_fluid;
+  res->h = run->h;
+  res->dx = run->dx;
+  res->c0 = run->scene.c0;
+  res->mu = run->scene.mu;
+  if (!progress) return;
+  fprintf(progress,
+          "vsph run: %s, %s, %s, %zu particles, h = %.4g, c0 = %.4g, "
+          "t_end = %g -> %s\n",
+          type->name, vsph_run_method(rp), rp->ktype->name, run->n_fluid,
+          run->h, run->scene.c0, run->t_end, res->dir);
+  if (resumed)
+    fprintf(progress,
+            "vsph run: resuming from its checkpoint at t = %.6g, step %zu "
+            "(process %zu of this run)\n",
+            vsph_run_time(run), vsph_run_steps(run), res->segments);
+}
+
+static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
+                   const char *key, const struct vsph_rundir_opts *opts,
+                   struct vsph_rundir_result *res) {
+  struct vsph_run_props rp;
+  struct vsph_scene sc;
+  int st = read_settings(prm, type, &rp, &sc);
+  if (!st) st = name_folder(type, &rp, opts, res);
+  if (st) return st;
   if (opts->cache && vsph_rundir_key_matches(res->dir, key)) {
     res->cached = 1;
     if (opts->progress)
@@ -916,41 +990,8 @@ static int execute(struct vsph_params *prm, const struct vsph_scene_type *type,
   if ((st = resume_or_start(&fo, &o, prm, key, &rp, &sc, &run, &ref, progress,
                             res, keep)))
     goto done;
-  o.csv = live_open(&o, "energy.csv",
-                    "t,Ek,Ep,Ec,P_visc,P_delta,residual,Px,Py,Lz,dEk_dt,"
-                    "Ek_ref,dEk_ref,Em_ref,dEm_ref,u_err,u_err_rel,v_rms\n",
-                    keep[0], &st);
-  if (st) goto done;
-  if (rp.snapshots > 0 &&
-      (st = keep[0] < 0 ? vsph_vtk_pvd_open(&o.pvd, res->dir)
-                        : vsph_vtk_pvd_reopen(&o.pvd, res->dir, keep[2])))
-    goto done;
-  if (with_profile && !(o.profile = live_open(&o, o.profile_name,
-                                              cavity ? "t,line,s,vel,vel_ghia\n"
-                                                     : "t,y,u,u_ref,n\n",
-                                              keep[1], &st)))
-    goto done;
-  if (rp.probe_points > 0 &&
-      !(o.probes = live_open(&o, "probes.csv",
-                             "t,probe,x,y,z,u,v,w,p,rho,fill\n", keep[3], &st)))
-    goto done;
-  res->n_particles = run->n_fluid;
-  res->h = run->h;
-  res->dx = run->dx;
-  res->c0 = run->scene.c0;
-  res->mu = run->scene.mu;
-  if (progress) {
-    fprintf(progress,
-            "vsph run: %s, %s, %s, %zu particles, h = %.4g, c0 = %.4g, "
-            "t_end = %g -> %s\n",
-            type->name, vsph_run_method(&rp), rp.ktype->name, run->n_fluid,
-            run->h, run->scene.c0, run->t_end, res->dir);
-    if (keep[0] >= 0)
-      fprintf(progress,
-              "vsph run: resuming from its checkpoint at t = %.6g, step %zu "
-              "(process %zu of this run)\n",
-              vsph_run_time(run), vsph_run_steps(run), res->segments);
-  }
+  if ((st = open_live(&o, &rp, cavity, with_profile, keep))) goto done;
+  say_start(progress, type, &rp, run, keep[0] >= 0, res);
   st = time_loop(&o, run, ref, key, opts, res);
   st = end_run(&o, &fo, run, key, opts, res, st);
 done:

@@ -72,6 +72,8 @@ VSPH_API void vsph_cells_free(struct vsph_cells *c);
 
 /** @brief Bin the particles into cells of edge >= @p radius / 2 and sort
  *  them by cell (fields are permuted; id[] keeps the original index).
+ *  @param c the cell list (vsph_cells_alloc).
+ *  @param p the particles, reordered by cell.
  *  @param radius interaction radius (m), > 0.
  *  @return VSPH_OK, VSPH_EINVAL (radius <= 0 or non-finite positions),
  *  VSPH_ENOMEM.

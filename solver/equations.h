@@ -335,7 +335,12 @@ VSPH_API void vsph_equations_density_sum(const struct vsph_equations_props *ep,
  *  . grad_i W_ij with A = rho u (x) (tvel - u), to the acceleration and
  *  sets bacc_i = -(2 pb/rho_i) sum_j V_j grad_i W_ij, the background
  *  pressure's push that the transport velocity carries.
+ *  @param ep the equations' settings.
+ *  @param p the particles (fluid and ghosts).
+ *  @param n_fluid the fluid particles' ids are below it.
+ *  @param cells the cell list of @p p (radius >= kappa h).
  *  @param ws viscous workspace (PVWF: for all p->n particles).
+ *  @param out receives the rates, by index.
  *  @return VSPH_OK or VSPH_EINVAL. */
 VSPH_API int vsph_equations_rhs(const struct vsph_equations_props *ep,
                                 struct vsph_particles *p, size_t n_fluid,

@@ -55,7 +55,10 @@ VSPH_API int vsph_lattice_resolve(const char *name, int dim, double perturb,
  *  coordinate), the origin being a node and particle @p centre. The centre
  *  is never perturbed; the others move by up to perturb*dx per component
  *  (uniform). Rows that lie exactly at x_d = depth are kept.
+ *  @param lp the lattice (kind, dimension, spacing dx, perturbation).
+ *  @param radius the ball's radius (m); @param depth the plane's x_d (m).
  *  @param out receives a new set (free with vsph_particles_free).
+ *  @param centre receives the centre particle's index.
  *  @return VSPH_OK, VSPH_EINVAL (bad props), VSPH_ENOMEM. */
 VSPH_API int vsph_lattice_halfspace(const struct vsph_lattice_props *lp,
                                     double radius, double depth,

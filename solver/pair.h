@@ -263,13 +263,17 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_fvf(const struct vsph_pair_iter *it,
  *  a bit per neighbour (no branch); the set bits, lowest first, give the
  *  neighbours in range order; then two vectorised loops give their
  *  geometry (s2 computed exactly as in the test) and kernel factors.
- *  @param dim the loop's dimension (= pk->dim) and @p kid its kernel
- *  (= pk->dfq_id), passed by the caller so that a caller specialised on
- *  constants gets unrolled loops and the kernel inlined; @p unit 1 sets
- *  VF = F (a symmetric sweep's unit shares), 0 VF = V_j F. Where
- *  pk->simd is set (x86-64, 2-D and 3-D), the test and the geometry are
- *  one pass of SIMD lanes whose neighbours are packed by a compress
+ *  Where pk->simd is set (x86-64, 2-D and 3-D), the test and the geometry
+ *  are one pass of SIMD lanes whose neighbours are packed by a compress
  *  (vsph_pair_x86_candidates_avx512, _avx2): the same chunk, to the bit.
+ *  @param it the walk over particle i's candidates.
+ *  @param dim the loop's dimension (= pk->dim).
+ *  @param kid its kernel (= pk->dfq_id): both passed by the caller so
+ *  that a caller specialised on constants gets unrolled loops and the
+ *  kernel inlined.
+ *  @param unit 1 sets VF = F (a symmetric sweep's unit shares), 0 VF =
+ *  V_j F.
+ *  @param b receives the chunk.
  *  @return the neighbours in the chunk (b->m); 0 when the ranges are
  *  exhausted. */
 VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather_as(struct vsph_pair_iter *it,
@@ -368,6 +372,7 @@ struct vsph_pair_grad {
 /** @brief Continuity, Eq. (3.13) of Colagrossi et al. (2011), THEORY 5:
  *  d rho_i/dt = -rho_i sum_j V_j (u_j - u_i).grad_i W_ij
  *             =  rho_i sum_j V_j F (u_j - u_i).x.
+ *  @param pr the pair (x = r_j - r_i, s2, F, VF).
  *  @param dux (u_j - u_i).x (m^2/s). @return this pair's share of the sum
  *  (the caller multiplies the sum by rho_i). */
 VSPH_CONSTS_SPECIALISE double vsph_pair_continuity(const struct vsph_pair *pr,
@@ -378,7 +383,8 @@ VSPH_CONSTS_SPECIALISE double vsph_pair_continuity(const struct vsph_pair *pr,
 /** @brief delta-SPH density diffusion (Antuono et al. 2010, simple form;
  *  THEORY 5): V_j psi_ij.grad_i W_ij with psi_ij = 2 (rho_j - rho_i) x/s^2,
  *  = -2 V_j F (rho_j - rho_i). The caller multiplies the sum by
- *  delta h c0. @param drho rho_j - rho_i. */
+ *  delta h c0. @param pr the pair (x = r_j - r_i, s2, F, VF).
+ *  @param drho rho_j - rho_i. */
 VSPH_CONSTS_SPECIALISE double vsph_pair_delta(const struct vsph_pair *pr,
                                               double drho) {
   return -2.0 * pr->VF * drho;
@@ -387,6 +393,7 @@ VSPH_CONSTS_SPECIALISE double vsph_pair_delta(const struct vsph_pair *pr,
 /** @brief Pressure gradient, the PVW-compatible form of Eq. (3.13):
  *  -(1/rho_i) sum_j V_j (p_i + p_j) grad_i W_ij. @return the pair's
  *  V_j F (p_i + p_j) x; the caller sums and divides by rho_i.
+ *  @param pr the pair (x = r_j - r_i, s2, F, VF); @param dim the dimension.
  *  @param psum p_i + p_j (Pa). */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_vec vsph_pair_pressure(
     const struct vsph_pair *pr, int dim, double psum) {
@@ -484,7 +491,9 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_contact_share vsph_pair_contact(
  *  (2/rho_i) V_j |W'| tau^R with tau^R = eta' (du + (du.e) e/3)/s, i.e.
  *  -2 eta' V_j F (du + (du.x) x/(3 s^2)): Espanol & Revenga's pair with
  *  a = -2 eta', b = -2 eta'/3, through vsph_pair_er (the one copy).
+ *  @param pr the pair (x = r_j - r_i, s2, F, VF); @param dim the dimension.
  *  @param etap eta_eff - zeta eta_eff^num (Pa s); @param du u_j - u_i.
+ *  @param dux du.x.
  *  @return the pair's share and its dissipation density. */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_contact_visc(
     const struct vsph_pair *pr, int dim, double etap,

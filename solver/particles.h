@@ -67,6 +67,7 @@ VSPH_API void vsph_particles_free(struct vsph_particles *p);
 VSPH_API void vsph_particles_refresh_vol(struct vsph_particles *p);
 
 /** @brief Reorder every field so that new index i holds old index perm[i].
+ *  @param p the particles; @param perm the order (n indices).
  *  @param scratch caller buffer of at least n doubles.
  *  @param iscratch caller buffer of at least n size_t. */
 VSPH_API void vsph_particles_permute(struct vsph_particles *p,

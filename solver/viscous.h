@@ -331,6 +331,8 @@ VSPH_API void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
 
 /** @brief The viscous force density (div V)_i (N/m^d) of every particle.
  *  Uses pos, vel and vol of @p p.
+ *  @param vp the formulation's settings; @param p the particles.
+ *  @param ws the workspace (vsph_viscous_ws_alloc).
  *  @param cells built with radius >= kappa h (or the direct path).
  *  @param out out[k][i], k < dim: component k of (div V)_i.
  *  @param dens if not NULL, the pairwise dissipation density p_i (W/m^d)
@@ -418,7 +420,9 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_viscous_pair_stress(
  *  from pass 1). The specialised loops' forms (a constant there) inline
  *  their pair functions; any other form, in the general loop, calls its
  *  descriptor's (vsph_viscous_types), so a new formulation needs no case
- *  here. @param du u_j - u_i; @param dux du.x; @param Ai PVWF's A_i. */
+ *  here. @param lp the loop's constants; @param sh its shape.
+ *  @param pr the pair (x = r_j - r_i, s2, F, VF).
+ *  @param du u_j - u_i; @param dux du.x; @param Ai PVWF's A_i. */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_viscous_pair(
     const struct vsph_viscous_loop *lp, struct vsph_viscous_shape sh,
     const struct vsph_pair *pr, const struct vsph_pair_vec du, double dux,

@@ -24,7 +24,7 @@
 #include "../runs/archive.h"
 #include "check_suites.h"
 
-START_TEST(test_baseline) {
+START_TEST(test_baseline_rows_hold) {
   FILE *f = fopen("reports/baseline.csv", "r");
   ck_assert_msg(f != NULL, "reports/baseline.csv is missing");
   char line[512];
@@ -122,7 +122,7 @@ Suite *vsph_baseline_suite(void) {
   Suite *s = suite_create("baseline");
   TCase *tc = tcase_create("quick report");
   tcase_set_timeout(tc, 180);
-  tcase_add_test(tc, test_baseline);
+  tcase_add_test(tc, test_baseline_rows_hold);
   tcase_add_test(tc, test_loss_ratio);
   tcase_add_test(tc, test_extrapolate);
   suite_add_tcase(s, tc);

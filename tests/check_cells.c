@@ -163,7 +163,7 @@ START_TEST(test_cells_vs_direct) {
 }
 END_TEST
 
-START_TEST(test_cells_errors) {
+START_TEST(test_cells_bad_input_refused) {
   vsph_test_silence();
   struct vsph_particles *p = vsph_particles_alloc(4, 2);
   p->n = 2;
@@ -184,7 +184,7 @@ Suite *vsph_cells_suite(void) {
   tcase_add_test(tc, test_halfspace);
   tcase_add_test(tc, test_disc_cartesian);
   tcase_add_test(tc, test_cells_vs_direct);
-  tcase_add_test(tc, test_cells_errors);
+  tcase_add_test(tc, test_cells_bad_input_refused);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -165,7 +165,7 @@ START_TEST(test_verdict_follows) {
 END_TEST
 
 /* The classes from a verdict's first words. */
-START_TEST(test_classes) {
+START_TEST(test_class_from_verdict_words) {
   ck_assert_int_eq(vsph_claim_class("reproduced (within 3 %)"),
                    VSPH_CLAIM_REPRODUCED);
   ck_assert_int_eq(vsph_claim_class("reproduced on a substitute: x"),
@@ -504,7 +504,7 @@ Suite *vsph_claim_suite(void) {
   tcase_add_test(tc, test_kinds_compare);
   tcase_add_test(tc, test_kinds_rules);
   tcase_add_test(tc, test_verdict_follows);
-  tcase_add_test(tc, test_classes);
+  tcase_add_test(tc, test_class_from_verdict_words);
   tcase_add_test(tc, test_faults_refused);
   tcase_add_test(tc, test_limits_refused);
   tcase_add_test(tc, test_unknown_decides_nothing);

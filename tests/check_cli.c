@@ -168,7 +168,7 @@ static const char *const bad_inputs[] = {
     "",
 };
 
-START_TEST(test_bad_input) {
+START_TEST(test_bad_input_one_line_exit_2) {
   struct vsph_test_outcome *o = vsph_test_cli(bad_inputs[_i]);
   ck_assert_msg(o->status == 2, "'%s' exited %d", bad_inputs[_i], o->status);
   ck_assert_msg(o->err_lines == 1, "'%s' wrote %d stderr lines: %s",
@@ -322,7 +322,7 @@ START_TEST(test_gnu_options) {
 }
 END_TEST
 
-START_TEST(test_help) {
+START_TEST(test_help_prints_usage) {
   const char *cmds[] = {"--help",         "tensors --help",
                         "scaling --help", "dissipation --help",
                         "report --help",  "bench --help"};
@@ -428,7 +428,7 @@ END_TEST
 
 /* JSON keys and shapes; values cross-checked against theory: at depth 0
  * N_d = -C_N and F_ddd = -2 C_F (tol: quadrature 1e-10). */
-START_TEST(test_json) {
+START_TEST(test_tensors_json_keys_and_identities) {
   cJSON *j = json_of("tensors --kernel wendland2 --dim 3 --json");
   const char *keys[] = {"kernel", "dim", "depth", "method", "F",
                         "G",      "N",   "M",     "C_F",    "C_N"};
@@ -728,13 +728,13 @@ Suite *vsph_cli_suite(void) {
   tcase_add_loop_test(tc, test_archive_inputs, 0, 5);
   tcase_add_test(tc, test_archive_nothing_new);
   tcase_add_test(tc, test_budget_stops_shear);
-  tcase_add_loop_test(tc, test_bad_input, 0,
+  tcase_add_loop_test(tc, test_bad_input_one_line_exit_2, 0,
                       (int)(sizeof bad_inputs / sizeof bad_inputs[0]));
-  tcase_add_test(tc, test_help);
+  tcase_add_test(tc, test_help_prints_usage);
   tcase_add_test(tc, test_scaling_table);
   tcase_add_test(tc, test_gnu_options);
   tcase_add_test(tc, test_params_file_messages);
-  tcase_add_test(tc, test_json);
+  tcase_add_test(tc, test_tensors_json_keys_and_identities);
   tcase_add_test(tc, test_run_outputs);
   tcase_add_loop_test(tc, test_report_verbs, 0,
                       (int)(sizeof REPORT_VERBS / sizeof REPORT_VERBS[0]));

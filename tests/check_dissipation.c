@@ -71,7 +71,7 @@ END_TEST
  * at h/dx = 4/3 with the 3h Gaussian (THEORY 4; measured -6.03 %), the
  * surface deficit halves as the resolution doubles (first order in h/L)
  * and the lattice error vanishes as h/dx grows. */
-START_TEST(test_mgf) {
+START_TEST(test_mgf_rotation_free_lattice_error_shrinks) {
   const struct vsph_dissipation_result rot =
       run(VSPH_VISCOUS_MGF, VSPH_FIELDS_ROTATION, VSPH_DISSIPATION_DISC, 40,
           4.0 / 3.0, 0.0);
@@ -97,7 +97,7 @@ END_TEST
 /* MEAF: converges to P_grad = -mu int |grad u|^2: half the exact value on
  * pure strain, and a dissipation of rigid rotation (rel_error -> -1). Tol
  * 0.05: the surface deficit at 80 across is about 3 % (measured). */
-START_TEST(test_meaf) {
+START_TEST(test_meaf_converges_to_gradient_limit) {
   const struct vsph_dissipation_result s =
       run(VSPH_VISCOUS_MEAF, VSPH_FIELDS_STRAIN, VSPH_DISSIPATION_SQUARE, 80,
           4.0 / 3.0, 0.0);
@@ -117,7 +117,7 @@ END_TEST
  * and PVWF the interior error on this nonlinear field is dominated by the
  * O((kh)^2) smoothing error, which grows with h at fixed resolution, so only
  * its size is bounded: below 1 % (measured 0.1-0.3 %). */
-START_TEST(test_mixed) {
+START_TEST(test_mixed_field_momentum_and_error_bound) {
   for (int form = 0; form < 3; form++) {
     const struct vsph_dissipation_result a =
         run(form, VSPH_FIELDS_MIXED, VSPH_DISSIPATION_SQUARE, 60, 4.0 / 3.0, 0);
@@ -142,7 +142,7 @@ END_TEST
  * 2(d+2): -0.30); bound 0.07. A form split against another form's limit
  * reads 0.36 (ER, MEAF-eta against the stress limit) to 0.74 (the
  * Laplacians), which the bound catches. */
-START_TEST(test_limits) {
+START_TEST(test_lattice_error_split_by_own_limit) {
   for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT; form++) {
     const struct vsph_dissipation_result m =
         run(form, VSPH_FIELDS_MIXED, VSPH_DISSIPATION_SQUARE, 60, 4.0 / 3.0, 0);
@@ -353,10 +353,10 @@ Suite *vsph_dissipation_suite(void) {
   tcase_add_test(tc, test_pvwf_exact);
   tcase_add_test(tc, test_particles_brute);
   tcase_add_test(tc, test_particles_refused);
-  tcase_add_test(tc, test_mgf);
-  tcase_add_test(tc, test_meaf);
-  tcase_add_test(tc, test_mixed);
-  tcase_add_test(tc, test_limits);
+  tcase_add_test(tc, test_mgf_rotation_free_lattice_error_shrinks);
+  tcase_add_test(tc, test_meaf_converges_to_gradient_limit);
+  tcase_add_test(tc, test_mixed_field_momentum_and_error_bound);
+  tcase_add_test(tc, test_lattice_error_split_by_own_limit);
   tcase_add_test(tc, test_strain_angle);
   suite_add_tcase(s, tc);
   return s;

@@ -15,7 +15,7 @@
 
 #define DATA "reference/data"
 
-START_TEST(test_committed) {
+START_TEST(test_committed_references_read_and_hold) {
   struct vsph_fvref *fv = malloc(sizeof *fv);
   ck_assert_ptr_nonnull(fv);
   ck_assert_int_eq(vsph_fvref_read(DATA, fv), 0);
@@ -106,7 +106,7 @@ static int damaged(const char *file, const char *prog) {
   return r;
 }
 
-START_TEST(test_damaged) {
+START_TEST(test_damaged_reference_caught) {
   /* an untouched copy passes: the damage below is what fails */
   ck_assert_int_eq(damaged("square-n320.csv", "1"), 0);
   /* E_k(0) off in its 7th digit */
@@ -146,7 +146,7 @@ END_TEST
 /* A folder without the references reads as "none": every part's ok 0,
  * nothing failed, and the checks have nothing to hold (the report then
  * says not tested). NULL reads the same. */
-START_TEST(test_absent) {
+START_TEST(test_absent_references_read_as_none) {
   char dir[] = "/tmp/vsph_fvrefXXXXXX";
   vsph_test_scratch(dir);
   struct vsph_fvref *fv = malloc(sizeof *fv);
@@ -166,9 +166,9 @@ END_TEST
 Suite *vsph_fvref_suite(void) {
   Suite *s = suite_create("fvref");
   TCase *tc = tcase_create("committed");
-  tcase_add_test(tc, test_committed);
-  tcase_add_test(tc, test_damaged);
-  tcase_add_test(tc, test_absent);
+  tcase_add_test(tc, test_committed_references_read_and_hold);
+  tcase_add_test(tc, test_damaged_reference_caught);
+  tcase_add_test(tc, test_absent_references_read_as_none);
   tcase_add_test(tc, test_step_correction);
   suite_add_tcase(s, tc);
   return s;

@@ -12,7 +12,7 @@
 /* The nearest integer decides an order: 0.5 is not first order (the
  * bound is strict), the next double above it is, and so is anything up to
  * just below 1.5; NaN is not measured. */
-START_TEST(test_order_is) {
+START_TEST(test_order_is_nearest_integer) {
   ck_assert_int_eq(vsph_grade_order_is(0.5, 1), 0);
   ck_assert_int_eq(vsph_grade_order_is(nextafter(0.5, 1.0), 1), 1);
   ck_assert_int_eq(vsph_grade_order_is(nextafter(1.5, 1.0), 1), 1);
@@ -26,7 +26,7 @@ END_TEST
  * one (the wave's MGF, 0.60 by the largest difference, 0.25 by the RMS):
  * partly; neither: differs; a NaN or a span cut short by a stop: not
  * measured, whatever the values. */
-START_TEST(test_orders) {
+START_TEST(test_orders_grade_both_measures) {
   ck_assert_int_eq(vsph_grade_orders(0.87, 0.86, 1, 0), VSPH_GRADE_AGREES);
   ck_assert_int_eq(vsph_grade_orders(0.60, 0.25, 1, 0), VSPH_GRADE_PARTLY);
   ck_assert_int_eq(vsph_grade_orders(0.25, 0.60, 1, 0), VSPH_GRADE_PARTLY);
@@ -40,7 +40,7 @@ END_TEST
  * count, as vsph_grade_order_is has it: it does not round to 1), one of
  * them, neither; NaN or a stop. The vortex patch's MGF on rings (1.89,
  * 1.88) converges. */
-START_TEST(test_converges) {
+START_TEST(test_converges_above_half) {
   ck_assert_int_eq(vsph_grade_converges(1.89, 1.88, 0), VSPH_GRADE_AGREES);
   ck_assert_int_eq(
       vsph_grade_converges(nextafter(0.5, 1.0), nextafter(0.5, 1.0), 0),
@@ -57,7 +57,7 @@ END_TEST
  * digit) 0.05; 0.55 % (0.0055, two) 5e-5; Re 256 (three) 0.5; 0.001 and
  * 1000 (whose log10 sit on integers) 5e-4 and 500; 0.2848 (four) 5e-5;
  * zero or no digits: 0. Relative tolerance 1e-12 (pow's rounding). */
-START_TEST(test_halfunit) {
+START_TEST(test_halfunit_of_last_digit) {
   static const struct {
     double v;
     int d;
@@ -76,7 +76,7 @@ END_TEST
 
 /* Within a halfwidth, the bound inclusive (exact binary values: 0.75 is
  * 0.25 from 0.5), one ulp beyond it out; NaN out. */
-START_TEST(test_within) {
+START_TEST(test_within_inclusive_bound) {
   ck_assert_int_eq(vsph_grade_within(0.75, 0.5, 0.25), 1);
   ck_assert_int_eq(vsph_grade_within(0.25, 0.5, 0.25), 1);
   ck_assert_int_eq(vsph_grade_within(nextafter(0.75, 1.0), 0.5, 0.25), 0);
@@ -87,7 +87,7 @@ END_TEST
 
 /* Apart by half a decade: exactly sqrt(10) times is apart (inclusive),
  * the next double below is not; NaN is not. */
-START_TEST(test_apart) {
+START_TEST(test_apart_inclusive_at_half_decade) {
   ck_assert_double_eq_tol(VSPH_GRADE_APART * VSPH_GRADE_APART, 10.0, 1e-14);
   ck_assert_int_eq(vsph_grade_apart(VSPH_GRADE_APART * 2.0, 2.0), 1);
   ck_assert_int_eq(
@@ -102,7 +102,7 @@ END_TEST
 /* Larger beyond the noise: a difference of exactly the noise is not
  * (strict, 0.75 - 0.5 = 0.25 in binary), a hair more is; with no noise
  * any excess counts; NaN never. */
-START_TEST(test_larger) {
+START_TEST(test_larger_strictly_beyond_noise) {
   ck_assert_int_eq(vsph_grade_larger(0.75, 0.5, 0.25), 0);
   ck_assert_int_eq(vsph_grade_larger(nextafter(0.75, 1.0), 0.5, 0.25), 1);
   ck_assert_int_eq(vsph_grade_larger(0.5000001, 0.5, 0.0), 1);
@@ -127,13 +127,13 @@ END_TEST
 Suite *vsph_grade_suite(void) {
   Suite *s = suite_create("grade");
   TCase *tc = tcase_create("rules");
-  tcase_add_test(tc, test_order_is);
-  tcase_add_test(tc, test_orders);
-  tcase_add_test(tc, test_converges);
-  tcase_add_test(tc, test_halfunit);
-  tcase_add_test(tc, test_within);
-  tcase_add_test(tc, test_apart);
-  tcase_add_test(tc, test_larger);
+  tcase_add_test(tc, test_order_is_nearest_integer);
+  tcase_add_test(tc, test_orders_grade_both_measures);
+  tcase_add_test(tc, test_converges_above_half);
+  tcase_add_test(tc, test_halfunit_of_last_digit);
+  tcase_add_test(tc, test_within_inclusive_bound);
+  tcase_add_test(tc, test_apart_inclusive_at_half_decade);
+  tcase_add_test(tc, test_larger_strictly_beyond_noise);
   tcase_add_test(tc, test_stop_holds);
   suite_add_tcase(s, tc);
   return s;

@@ -172,7 +172,7 @@ static pid_t start_run(const char *dir) {
 /* Defect 6: SIGINT/SIGTERM killed a run with no run.json and an
  * unterminated snapshots.pvd. Now the run ends its step, writes run.json
  * "interrupted" with the time, closes the index and exits 128 + signal. */
-START_TEST(test_signals) {
+START_TEST(test_signal_ends_run_as_interrupted) {
   static const int sigs[2] = {SIGINT, SIGTERM};
   for (int k = 0; k < 2; k++) {
     char dir[] = "/tmp/vsph_sigXXXXXX", path[700];
@@ -889,7 +889,7 @@ Suite *vsph_hardening_suite(void) {
   tcase_add_test(tc, test_lost_write_is_an_error);
   tcase_add_test(tc, test_full_stdout);
   tcase_add_test(tc, test_refused_by_estimate);
-  tcase_add_test(tc, test_signals);
+  tcase_add_test(tc, test_signal_ends_run_as_interrupted);
   tcase_add_test(tc, test_reused_folder);
   tcase_add_test(tc, test_several_params_files);
   tcase_add_test(tc, test_messages_name_the_problem);

@@ -174,7 +174,7 @@ END_TEST
 /* The pool: two good runs and one that cannot be written (its folder is a
  * file). The failure is recorded and the others end; the plan's reads then
  * pass for the good ones only. A half-written run is redone, alone. */
-START_TEST(test_pool) {
+START_TEST(test_pool_records_failed_run_others_end) {
   vsph_test_silence();
   const char *dir = tmpdir();
   struct vsph_report R;
@@ -957,7 +957,7 @@ Suite *vsph_jobs_suite(void) {
   tcase_add_test(tc, test_source_commits_hash);
   tcase_add_test(tc, test_command_is_the_run);
   tcase_add_test(tc, test_defaults_applied_once);
-  tcase_add_test(tc, test_pool);
+  tcase_add_test(tc, test_pool_records_failed_run_others_end);
   tcase_add_test(tc, test_estimate_neighbours);
   tcase_add_test(tc, test_plan_listing);
   tcase_add_test(tc, test_budget_fit);

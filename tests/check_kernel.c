@@ -90,7 +90,7 @@ END_TEST
 
 /* The loops' (df/dq)/q from q^2 against df(q)/q (tol: rounding of a few
  * operations, 1e-13 of the slope scale). */
-START_TEST(test_dfq) {
+START_TEST(test_dfq_matches_df_over_q) {
   const struct vsph_kernel_type *k = vsph_kernel_get((size_t)_i / 3);
   const int dim = _i % 3 + 1;
   double scale = 0.0;
@@ -119,7 +119,7 @@ END_TEST
  * documentation states (its degree-12 remainder is 2e-16, the rest is
  * rounding). Dense near 0..9 (the Gaussian's support in q^2), sparser
  * beyond, and the reduction's breakpoints (x near n ln 2 / 2). */
-START_TEST(test_expneg) {
+START_TEST(test_expneg_within_1e15_of_exp) {
   double worst = 0.0;
   for (int s = 0; s <= 900000; s++) {
     const double x = s < 600000 ? 1.5e-5 * s : 9.0 + 691.0 * (s - 600000) / 3e5;
@@ -138,7 +138,7 @@ START_TEST(test_expneg) {
 }
 END_TEST
 
-START_TEST(test_lookup) {
+START_TEST(test_kernel_find_and_get_agree) {
   ck_assert_uint_eq(vsph_kernel_count(), 5);
   for (size_t i = 0; i < vsph_kernel_count(); i++) {
     const struct vsph_kernel_type *k = vsph_kernel_get(i);
@@ -158,10 +158,10 @@ Suite *vsph_kernel_suite(void) {
   tcase_add_loop_test(tc, test_normalisation, 0, n);
   tcase_add_loop_test(tc, test_derivative_fd, 0, n);
   tcase_add_loop_test(tc, test_sign_and_support, 0, n);
-  tcase_add_loop_test(tc, test_dfq, 0, n);
+  tcase_add_loop_test(tc, test_dfq_matches_df_over_q, 0, n);
   tcase_add_loop_test(tc, test_dfq_id, 0, n);
-  tcase_add_test(tc, test_expneg);
-  tcase_add_test(tc, test_lookup);
+  tcase_add_test(tc, test_expneg_within_1e15_of_exp);
+  tcase_add_test(tc, test_kernel_find_and_get_agree);
   suite_add_tcase(s, tc);
   return s;
 }

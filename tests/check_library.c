@@ -125,7 +125,7 @@ END_TEST
  * doxygen built the installed reference manual (make doc), every exported
  * name has its place in it. OpenMP's named-critical locks
  * (.gomp_critical_*) are the compiler's. */
-START_TEST(test_exports) {
+START_TEST(test_exports_match_headers) {
   char stage[PATH_MAX], script[3 * PATH_MAX], dir[] = "/tmp/vsph-exp-XXXXXX";
   staged(stage);
   vsph_test_scratch(dir);
@@ -447,7 +447,7 @@ END_TEST
  * hand-written tables for a path with a space and a newline (a bind
  * below it, the folder itself, a path that only starts like it, a
  * sibling), and prints a word for each expectation met. */
-START_TEST(test_mounts) {
+START_TEST(test_removal_waits_for_mounts) {
   struct vsph_test_outcome *o = vsph_test_shell("sh tests/check_mounts.sh");
   ck_assert_msg(o->status == 0, "exit %d: %s %s", o->status, o->out, o->err);
   ck_assert_str_eq(o->out,
@@ -515,10 +515,10 @@ Suite *vsph_library_suite(void) {
   tcase_add_test(tc, test_installed_dispatch);
   tcase_add_test(tc, test_installed_program);
   tcase_add_test(tc, test_readme_walkthrough);
-  tcase_add_test(tc, test_exports);
+  tcase_add_test(tc, test_exports_match_headers);
   tcase_add_test(tc, test_install_refusals);
   tcase_add_test(tc, test_deps_without_apt);
-  tcase_add_test(tc, test_mounts);
+  tcase_add_test(tc, test_removal_waits_for_mounts);
   suite_add_tcase(s, tc);
   return s;
 }

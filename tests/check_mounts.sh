@@ -4,7 +4,7 @@
 # scripts/mounts.sh against hand-written mount tables (as /proc/mounts
 # writes them: a space as \040, a newline as \012, a tab as \011, a
 # backslash as \134), for a folder whose path holds a space and a
-# newline: run by tests/check_library.c (test_mounts), which reads the
+# newline: run by tests/check_library.c (test_removal_waits_for_mounts), which reads the
 # words it prints. Needs no root: no real mount is made.
 set -eu
 # shellcheck source=scripts/mounts.sh

@@ -471,7 +471,7 @@ static void twin_check(int form, int dim, int sweep,
   vsph_particles_free(p);
 }
 
-START_TEST(test_twin) {
+START_TEST(test_rhs_matches_brute_force_twin) {
   /* the second half: the right-hand side through the symmetric sweep */
   const int sweep = _i >= 2 * VSPH_VISCOUS_FORM_COUNT;
   twin_check(_i % (2 * VSPH_VISCOUS_FORM_COUNT) / 2, 2 + _i % 2, sweep,
@@ -1360,7 +1360,8 @@ Suite *vsph_pair_suite(void) {
   Suite *s = suite_create("pair");
   TCase *tc = tcase_create("twin");
   tcase_set_timeout(tc, 60);
-  tcase_add_loop_test(tc, test_twin, 0, 4 * VSPH_VISCOUS_FORM_COUNT);
+  tcase_add_loop_test(tc, test_rhs_matches_brute_force_twin, 0,
+                      4 * VSPH_VISCOUS_FORM_COUNT);
   tcase_add_loop_test(tc, test_twin_cubic, 0, 14);
   /* the scenes before the shear layer: it (3-D, a periodic depth below
    * these kernels' reach at 16 across) and the cylinders (two materials)

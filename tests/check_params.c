@@ -115,7 +115,7 @@ static const char *const bad_files[] = {
     "Solver:\n  walls: \"linear\\u0000junk\"\n",
 };
 
-START_TEST(test_bad_files) {
+START_TEST(test_bad_yaml_files_refused) {
   vsph_test_silence();
   write_file(bad_files[_i]);
   struct vsph_params *p = vsph_params_alloc();
@@ -145,7 +145,7 @@ Suite *vsph_params_suite(void) {
   TCase *tc = tcase_create("yaml");
   tcase_add_test(tc, test_read_and_get);
   tcase_add_test(tc, test_nearest_and_hint);
-  tcase_add_loop_test(tc, test_bad_files, 0,
+  tcase_add_loop_test(tc, test_bad_yaml_files_refused, 0,
                       (int)(sizeof bad_files / sizeof bad_files[0]));
   tcase_add_test(tc, test_bad_files_keys_values_refused);
   suite_add_tcase(s, tc);

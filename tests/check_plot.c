@@ -272,7 +272,7 @@ END_TEST
  * lines without dashes of their own become solid, dotted (3), ...,
  * skipping a dash type another curve sets (here 3: the second line takes
  * 4); a curve's own dashes are kept. */
-START_TEST(test_dashes) {
+START_TEST(test_dashes_distinct_per_curve) {
   char path[128];
   snprintf(path, sizeof path, "%s/two.csv", dir);
   FILE *f = fopen(path, "w");
@@ -331,7 +331,7 @@ START_TEST(test_palette_distinct) {
 }
 END_TEST
 
-START_TEST(test_particles_errors) {
+START_TEST(test_plot_particles_bad_input_refused) {
   vsph_test_silence();
   struct vsph_plot_panel pn[1] = {{"missing.csv", "none"}};
   ck_assert_int_eq(
@@ -401,7 +401,7 @@ static double script_ps(const char *name) {
   return ps;
 }
 
-START_TEST(test_dot_size) {
+START_TEST(test_dot_size_follows_spacing) {
   const int every[2] = {1, 10};
   const double want[2] = {0.57, 1.2};
   for (int c = 0; c < 2; c++) {
@@ -443,11 +443,11 @@ Suite *vsph_plot_suite(void) {
   tcase_add_test(tc, test_figure_three_formats);
   tcase_add_test(tc, test_html_embeds_svg);
   tcase_add_test(tc, test_html_mathematics);
-  tcase_add_test(tc, test_dashes);
+  tcase_add_test(tc, test_dashes_distinct_per_curve);
   tcase_add_test(tc, test_plain_text);
   tcase_add_test(tc, test_palette_distinct);
-  tcase_add_test(tc, test_particles_errors);
-  tcase_add_test(tc, test_dot_size);
+  tcase_add_test(tc, test_plot_particles_bad_input_refused);
+  tcase_add_test(tc, test_dot_size_follows_spacing);
   suite_add_tcase(s, tc);
   return s;
 }

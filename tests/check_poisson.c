@@ -70,7 +70,7 @@ END_TEST
 
 /* Bilinear interpolation reproduces a harmonic bilinear field anywhere in
  * the square (tol: rounding of the solve, 1e-12). */
-START_TEST(test_interpolation) {
+START_TEST(test_bilinear_field_interpolated_exactly) {
   struct vsph_poisson *ps = vsph_poisson_alloc(20, 2.0);
   ck_assert_int_eq(vsph_poisson_solve(ps, zero, bilinear, NULL), 0);
   for (double x = -0.99; x < 1.0; x += 0.1237)
@@ -93,7 +93,7 @@ Suite *vsph_poisson_suite(void) {
   TCase *tc = tcase_create("fftw");
   tcase_add_test(tc, test_cubic_exact);
   tcase_add_test(tc, test_second_order);
-  tcase_add_test(tc, test_interpolation);
+  tcase_add_test(tc, test_bilinear_field_interpolated_exactly);
   tcase_add_test(tc, test_bad_grid_or_length_refused);
   suite_add_tcase(s, tc);
   return s;

@@ -475,10 +475,6 @@ START_TEST(test_null_mode) {
 }
 END_TEST
 
-/* The kinetic energy's peak over its start (section 12's still tank):
- * a series that rises to 50 times its start at t = 2.5 and falls again
- * gives 50 and 2.5 exactly (a ratio of two stored doubles, 1 ulp); a
- * decaying one gives 1 at t = 0; equal peaks give the first. */
 /* The tensors' table shows entries that vanish by symmetry as 0.00000,
  * never -0.00000 (quadrature and sums give them as tiny values of either
  * sign, vsph_consts_shown): the part made, every table cell read. */
@@ -502,7 +498,11 @@ START_TEST(test_tensor_table_no_negative_zero) {
 }
 END_TEST
 
-START_TEST(test_peak) {
+/* The kinetic energy's peak over its start (section 12's still tank):
+ * a series that rises to 50 times its start at t = 2.5 and falls again
+ * gives 50 and 2.5 exactly (a ratio of two stored doubles, 1 ulp); a
+ * decaying one gives 1 at t = 0; equal peaks give the first. */
+START_TEST(test_peak_ratio_and_time) {
   const double t[6] = {0.0, 1.0, 2.5, 3.0, 4.0, 5.0};
   const double up[6] = {2e-7, 1e-6, 1e-5, 4e-6, 1e-5, 3e-6};
   const double down[6] = {6e-7, 5e-7, 4e-7, 3e-7, 2e-7, 1e-7};
@@ -548,7 +548,7 @@ Suite *vsph_report_suite(void) {
   tcase_add_test(tc, test_shell_quote);
   tcase_add_test(tc, test_command_reads_back);
   tcase_add_test(tc, test_null_mode);
-  tcase_add_test(tc, test_peak);
+  tcase_add_test(tc, test_peak_ratio_and_time);
   tcase_add_test(tc, test_tensor_table_no_negative_zero);
   tcase_add_test(tc, test_bench_fold);
   suite_add_tcase(s, tc);

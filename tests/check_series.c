@@ -27,7 +27,7 @@ START_TEST(test_slope_where) {
 }
 END_TEST
 
-START_TEST(test_interp) {
+START_TEST(test_interp_linear_exact_nan_outside) {
   const double t[6] = {0.0, 0.5, 0.5, 1.5, 2.25, 3.0};
   double y[6];
   for (int k = 0; k < 6; k++) y[k] = 2.0 * t[k] + 1.0;
@@ -85,7 +85,7 @@ END_TEST
  * exceeds 0.05 |dR| past t = 0.05/0.105 = 0.476..., so at the reference's
  * point 0.5; a run that stops at 0.3 departs at the first point past its
  * end, 0.4; a threshold never reached gives NaN. */
-START_TEST(test_onset) {
+START_TEST(test_onset_first_point_past_gap) {
   double t[11], dE[11], tr[11], dR[11];
   for (int k = 0; k <= 10; k++) {
     t[k] = tr[k] = 0.1 * k;
@@ -133,7 +133,7 @@ END_TEST
  * scaled 1.0, as test_first_reach) wins over a later stop; a stop with
  * the level never reached gives the stop's scaled time, 2 x 0.7; neither
  * gives infinity; a missing error column only the stop. */
-START_TEST(test_failure) {
+START_TEST(test_failure_time_first_reach_or_stop) {
   double t[11], e[11];
   for (int k = 0; k <= 10; k++) t[k] = 0.1 * k, e[k] = t[k] / 4.0;
   char why = 'x';
@@ -173,7 +173,7 @@ END_TEST
 /* A plateau by hand: E/R = 1, 1.02, 0.98 on the rows inside [lo, hi]
  * (R > 0), so the spread is 0.04/1.0; v there 5, 1, 3 (median 3); rows
  * outside and one with R = 0 left out. */
-START_TEST(test_plateau) {
+START_TEST(test_plateau_spread_and_median) {
   const double t[7] = {0, 1, 2, 3, 4, 5, 6};
   const double R[7] = {1, 2, 2, 0, 5, 4, 1};
   const double E[7] = {9, 2, 2.04, 7, 4.9, 4.0, 9};
@@ -251,7 +251,7 @@ END_TEST
  * the ratio 2 (the closed form, rounding: 1e-12) and p = 1.3 at the
  * unequal ratios 2.5 and 1.6 (the bisection's root, to 1e-9); differences
  * that grow by the ratio give -1; a zero difference or a ratio of 1, NaN. */
-START_TEST(test_order) {
+START_TEST(test_order_from_two_differences) {
   const double C = 0.37;
   for (int p = 1; p <= 2; p++) {
     const double dc = C * (pow(0.1, p) - pow(0.05, p));
@@ -308,7 +308,7 @@ static void ladder(double t[3][NMAX], double E[3][NMAX], const double h[3],
   }
 }
 
-START_TEST(test_selfconv) {
+START_TEST(test_selfconv_recovers_order_and_remainder) {
   static double t[3][NMAX], E[3][NMAX];
   const double C = 0.5, hs[3] = {0.1, 0.05, 0.025}, T = 2.0;
   for (int p = 1; p <= 2; p++) {
@@ -369,20 +369,20 @@ END_TEST
 Suite *vsph_series_suite(void) {
   Suite *s = suite_create("series");
   TCase *tc = tcase_create("measures");
-  tcase_add_test(tc, test_interp);
+  tcase_add_test(tc, test_interp_linear_exact_nan_outside);
   tcase_add_test(tc, test_slope_where);
   tcase_add_test(tc, test_extrapolate);
   tcase_add_test(tc, test_decay_error);
-  tcase_add_test(tc, test_onset);
+  tcase_add_test(tc, test_onset_first_point_past_gap);
   tcase_add_test(tc, test_integral_loss);
   tcase_add_test(tc, test_first_reach);
-  tcase_add_test(tc, test_plateau);
-  tcase_add_test(tc, test_failure);
+  tcase_add_test(tc, test_plateau_spread_and_median);
+  tcase_add_test(tc, test_failure_time_first_reach_or_stop);
   tcase_add_test(tc, test_tail_mean);
   tcase_add_test(tc, test_cfl_rule);
   tcase_add_test(tc, test_interp_cubic);
-  tcase_add_test(tc, test_order);
-  tcase_add_test(tc, test_selfconv);
+  tcase_add_test(tc, test_order_from_two_differences);
+  tcase_add_test(tc, test_selfconv_recovers_order_and_remainder);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -364,7 +364,7 @@ END_TEST
  * 0.5 s is below a hundredth of the lattice start's (measured 1.3e-9
  * against 4.1e-6 J/m after a 1 s relaxation). A scene whose initial
  * state is not at rest (the vortex patch) refuses it. */
-START_TEST(test_relax) {
+START_TEST(test_relax_settles_then_starts) {
   static const char *const set[] = {"Solver:res=10", "Solver:relax=0.5",
                                     "Solver:t_end=1", NULL};
   struct vsph_scene sc;
@@ -599,7 +599,7 @@ END_TEST
  * meet across x = -1/2, 1/2), a probe on that edge reads a whole
  * support: its fill is that of x = 0 (likewise between two columns) to
  * 1e-12, and a constant field exactly. A NULL argument or h <= 0 is refused. */
-START_TEST(test_probe) {
+START_TEST(test_probe_interpolates_linear_fields) {
   struct vsph_lattice_props lp = {.dim = 2};
   struct vsph_particles *p = NULL;
   const size_t nac = 30;
@@ -929,7 +929,7 @@ Suite *vsph_solver_suite(void) {
   tcase_add_test(tc, test_run_props_names);
   tcase_add_test(tc, test_stretching_initial_pressure);
   tcase_add_test(tc, test_diagnostics);
-  tcase_add_test(tc, test_probe);
+  tcase_add_test(tc, test_probe_interpolates_linear_fields);
   tcase_add_test(tc, test_vortex_angular_momentum);
   tcase_add_test(tc, test_budget_residual);
   tcase_add_test(tc, test_standing_wave_period);
@@ -938,7 +938,7 @@ Suite *vsph_solver_suite(void) {
   tcase_add_test(tc, test_ghost_capacity);
   tcase_add_test(tc, test_hydrostatic_rest);
   tcase_add_test(tc, test_own_image);
-  tcase_add_test(tc, test_relax);
+  tcase_add_test(tc, test_relax_settles_then_starts);
   tcase_add_test(tc, test_unstable_detected);
   tcase_add_test(tc, test_rhs_cells_vs_direct);
   tcase_add_test(tc, test_pack_lean);

@@ -30,7 +30,7 @@ END_TEST
 /* A scratch file: written and read back, nothing left in its folder (the
  * folder removable at once), closed on exec; none where the folder does
  * not exist (NULL, and no name handed back). */
-START_TEST(test_scratch) {
+START_TEST(test_scratch_file_unlinked_closed_on_exec) {
   char dir[] = "/tmp/vsph_scratchXXXXXX";
   ck_assert_ptr_nonnull(mkdtemp(dir));
   char *kept = (char *)1;
@@ -59,7 +59,7 @@ Suite *vsph_status_suite(void) {
   TCase *tc = tcase_create("core");
   tcase_add_test(tc, test_names_complete);
   tcase_add_test(tc, test_fail_reports_and_returns);
-  tcase_add_test(tc, test_scratch);
+  tcase_add_test(tc, test_scratch_file_unlinked_closed_on_exec);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -293,7 +293,7 @@ static void clean_case(struct fixture *fx, const char *dir, const char *path) {
  * beyond the fluid, in id order whatever their place in the set, typed 1
  * (the first n_wall of them: wall particles) or 2 (images), their
  * pressure bitwise. */
-START_TEST(test_walls) {
+START_TEST(test_walls_file_in_id_order_typed) {
   struct vsph_particles *p = vsph_particles_alloc(7, 2);
   ck_assert_ptr_nonnull(p);
   p->n = 7;
@@ -333,7 +333,7 @@ START_TEST(test_walls) {
 }
 END_TEST
 
-START_TEST(test_roundtrip) {
+START_TEST(test_snapshot_reads_back_bitwise) {
   struct fixture fx;
   char dir[] = "/tmp/vsph_vtkXXXXXX", path[64];
   write_case(_i, &fx, dir, path, sizeof path);
@@ -395,7 +395,7 @@ END_TEST
  * field not asked for is absent. vsph_vtk_read gives the same floats,
  * widened, frame_bits and frame_fields; an out-of-range bits or fields is
  * refused with nothing written. */
-START_TEST(test_frame) {
+START_TEST(test_frame_rounds_to_mantissa_bits) {
   struct fixture fx;
   char dir[] = "/tmp/vsph_vtkXXXXXX", path[64], fpath[80];
   write_case(_i, &fx, dir, path, sizeof path);
@@ -616,7 +616,7 @@ struct expect {
  * layout says (blocks = ceil(bytes/32768), last = bytes mod 32768); the
  * values against the inputs bitwise, vorticity_z against the z component;
  * vertices 0..n-1 with offsets 1..n; TimeValue the exact time. */
-START_TEST(test_layout) {
+START_TEST(test_file_layout_decoded_bitwise) {
   struct fixture fx;
   char dir[] = "/tmp/vsph_vtkXXXXXX", path[64], val[64];
   write_case(_i, &fx, dir, path, sizeof path);
@@ -706,7 +706,7 @@ END_TEST
  * units follow the dimension (docs/theory.md section 6 gives the
  * free-surface thresholds 1.5 and 2.4). The header comment repeats them
  * for a reader of the text. */
-START_TEST(test_descriptions) {
+START_TEST(test_descriptions_name_every_array) {
   struct fixture fx;
   char dir[] = "/tmp/vsph_vtkXXXXXX", path[64];
   write_case(_i, &fx, dir, path, sizeof path);
@@ -754,7 +754,7 @@ END_TEST
  * there, an ASCII one of an older vsph, one cut short, one with a
  * compressed byte changed (zlib's Adler-32 catches it), one claiming more
  * points than it holds, one whose arrays run past its end. */
-START_TEST(test_read_errors) {
+START_TEST(test_read_refuses_damaged_files) {
   struct fixture fx;
   char dir[] = "/tmp/vsph_vtkXXXXXX", path[64], bad[80];
   write_case(0, &fx, dir, path, sizeof path);
@@ -987,7 +987,7 @@ END_TEST
 /* A snapshot whose vector arrays span 30 blocks, more than a wave of the
  * compression (8 blocks a thread) on 1 and 3 threads: read back bitwise,
  * the same bytes on both, and nothing but the file left in the folder. */
-START_TEST(test_waves) {
+START_TEST(test_compression_waves_thread_independent) {
   struct fixture fx;
   fixture_make(&fx, 2, 40000, 0);
   char dir[] = "/tmp/vsph_wavesXXXXXX", a[64], b[64];
@@ -1117,16 +1117,16 @@ Suite *vsph_vtk_suite(void) {
   Suite *s = suite_create("vtk");
   TCase *tc = tcase_create("snapshots");
   tcase_set_timeout(tc, 20);
-  tcase_add_loop_test(tc, test_roundtrip, 0, NCASES);
-  tcase_add_test(tc, test_walls);
-  tcase_add_loop_test(tc, test_frame, 0, NCASES);
+  tcase_add_loop_test(tc, test_snapshot_reads_back_bitwise, 0, NCASES);
+  tcase_add_test(tc, test_walls_file_in_id_order_typed);
+  tcase_add_loop_test(tc, test_frame_rounds_to_mantissa_bits, 0, NCASES);
   tcase_add_test(tc, test_frame_rounding);
-  tcase_add_loop_test(tc, test_layout, 0, NCASES);
+  tcase_add_loop_test(tc, test_file_layout_decoded_bitwise, 0, NCASES);
   tcase_add_loop_test(tc, test_threads_and_stop, 0, NCASES);
-  tcase_add_loop_test(tc, test_descriptions, 0, NCASES);
-  tcase_add_test(tc, test_read_errors);
+  tcase_add_loop_test(tc, test_descriptions_name_every_array, 0, NCASES);
+  tcase_add_test(tc, test_read_refuses_damaged_files);
   tcase_add_test(tc, test_run_times);
-  tcase_add_test(tc, test_waves);
+  tcase_add_test(tc, test_compression_waves_thread_independent);
   tcase_add_test(tc, test_kept_state_place);
   tcase_add_test(tc, test_walls_typed);
   tcase_add_loop_test(tc, test_snapshots_leave_path, 0, NPATH);

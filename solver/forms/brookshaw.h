@@ -17,8 +17,9 @@
  *  (div V)_i = K mu sum_j V_j (u_j - u_i).(r_j - r_i)/(s^2 + eta^2)
  *  grad_i W_ij. MGF: K = 2(d+2), eta = 0; Violeau & Issa (Basa's model C):
  *  K = 2(d+2), eta = 0.1 h; Cleary (model D): K = 2 xi, eta = 0.1 h.
+ *  @param pr the pair (x = r_j - r_i, s2, F, VF); @param dim the dimension.
  *  @param Kmu K mu (Pa s); @param eta2 eta^2 (m^2; 0 for MGF, which then
- *  adds an exact zero).
+ *  adds an exact zero). @param dux (u_j - u_i).x (m^2/s).
  *  @return the pair's share -K mu V_j F (du.x)/(s^2 + eta^2) x and its
  *  dissipation density (K mu/2) V_j F (du.x)^2/(s^2 + eta^2) (THEORY 4),
  *  so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */

@@ -17,7 +17,8 @@
  *  a = zeta - mu (d+2)/d and b = -(d+2)(zeta + mu (d-2)/d) give
  *  mu lap u + (zeta + mu (1 - 2/d)) grad div u in the continuum (zeta the
  *  bulk viscosity). In 2-D with zeta = 0, b = 0 and a = -2 mu: MEAF.
- *  @p a, @p b as above (Pa s); @param du u_j - u_i.
+ *  @param pr the pair (x = r_j - r_i, s2, F, VF); @param dim the dimension.
+ *  @param a,b as above (Pa s); @param du u_j - u_i; @param dux du.x.
  *  @return the pair's share and its dissipation density -f.du/2
  *  (THEORY 4), so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_er(

@@ -12,7 +12,9 @@
 #include "../pair.h"
 
 /** @brief MEAF, Morris, Fox & Zhu (1997), Eq. (4.30), THEORY 3:
- *  (div V)_i = 2 mu sum_j V_j W'/s (u_i - u_j). @param du u_j - u_i;
+ *  (div V)_i = 2 mu sum_j V_j W'/s (u_i - u_j).
+ *  @param pr the pair (x = r_j - r_i, s2, F, VF); @param dim the dimension.
+ *  @param du u_j - u_i;
  *  @param two_mu 2 mu (Pa s). @return the pair's share -2 mu V_j F du and
  *  its dissipation density mu V_j F |du|^2 (THEORY 4). */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_meaf(
@@ -34,7 +36,9 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_meaf(
  *  print it; docs/theory.md, section 8): with uniform mu,
  *  (div V)_i = 2 mu sum_j V_j (r_ij.grad_i W_ij)/(s^2 + eta^2) (u_i - u_j)
  *            = 2 mu sum_j V_j F s^2/(s^2 + eta^2) (u_i - u_j);
- *  eta = 0 gives MEAF. @param du u_j - u_i; @param two_mu 2 mu (Pa s);
+ *  eta = 0 gives MEAF.
+ *  @param pr the pair (x = r_j - r_i, s2, F, VF); @param dim the dimension.
+ *  @param du u_j - u_i; @param two_mu 2 mu (Pa s);
  *  @param eta2 eta^2 (m^2). @return the pair's share and its dissipation
  *  density mu V_j F s^2/(s^2 + eta^2) |du|^2 (THEORY 4). */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_meafeta(

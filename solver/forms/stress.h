@@ -16,6 +16,7 @@
  *  B = sum_j V_j grad_i W_ij (x) x = sum_j V_j (-F) x (x) x, whose inverse
  *  is L_i, and of Mg = sum_j V_j (-F) du (x) x, so that the renormalised
  *  gradient is (grad u)_i = Mg L_i (row-major d x d, entry [a*dim+b]).
+ *  @param pr the pair (x = r_j - r_i, s2, F, VF); @param dim the dimension.
  *  @param du u_j - u_i. */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_grad vsph_pair_pvwf_grad(
     const struct vsph_pair *pr, int dim, const struct vsph_pair_vec du) {
@@ -32,6 +33,7 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_grad vsph_pair_pvwf_grad(
 /** @brief PVWF pass 2, Eq. (4.19), THEORY 3:
  *  (div V)_i = sum_j V_j (T_j L_j + T_i L_i) grad_i W_ij. @return the
  *  pair's -V_j F (A_j + A_i) x with A = T L from pass 1.
+ *  @param pr the pair (x = r_j - r_i, s2, F, VF); @param dim the dimension.
  *  @param Ai A_i (row-major); @param A A[a*dim+b][j] of every particle. */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_vec vsph_pair_pvwf_force(
     const struct vsph_pair *pr, int dim, const double Ai[9],

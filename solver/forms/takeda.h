@@ -14,7 +14,7 @@
 
 /** Per-particle sums of Takeda-type direct second derivatives (Basa et
  *  al.'s model A, docs/theory.md section 8), un-differenced as Basa's
- *  eq. (27): <d_ab f>_i = sum_j V_j f_j d_ab W_ij, the sum taking j = i
+ *  eq. (27): \<d_ab f\>_i = sum_j V_j f_j d_ab W_ij, the sum taking j = i
  *  too. With d_a W_ij = -F x_a and d_ab W_ij = x_a x_b/s^2 (W'' - F) +
  *  delta_ab F (eq. 28; derivatives at r_i), for f = 1 and for each
  *  velocity component, so that the Shepard-corrected derivatives of
@@ -69,7 +69,7 @@ static inline void vsph_pair_takeda_self(struct vsph_pair_takeda *acc, int dim,
  *  derivatives of u^c, (div tau)_a = mu sum_b D_a,bb + (mu + lambda)
  *  sum_b D_b,ab (Basa's eq. 6 for lambda = -2 mu/3). @p shepard 0: the
  *  plain sums (eq. 27); 1: the derivatives of the Shepard interpolant
- *  <f>/<1> (eq. 23), which answer a uniform field with exactly zero. */
+ *  \<f\>/\<1\> (eq. 23), which answer a uniform field with exactly zero. */
 static inline void vsph_pair_takeda_finish(const struct vsph_pair_takeda *acc,
                                            int dim, int shepard, double mu,
                                            double lambda, double f[3]) {
