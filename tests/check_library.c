@@ -507,6 +507,46 @@ START_TEST(test_readme_walkthrough) {
 }
 END_TEST
 
+/* The README walkthrough's steps 3 and 4 as a newcomer types them: step
+ * 3's gnuplot line, taken from the README, draws wave/Ek.png from step
+ * 1's run; step 4: a report figure's script (here each of the profiles
+ * part.s, made in two seconds) redraws its PNG, SVG and PDF from the CSVs
+ * beside it, after they were removed. */
+START_TEST(test_readme_steps_3_4) {
+  static char readme[1 << 17];
+  vsph_test_slurp("README.md", readme, sizeof readme);
+  const char *g = strstr(readme, "    gnuplot -e \"");
+  ck_assert_msg(g != NULL, "README: no step 3 gnuplot line");
+  char line[1024];
+  const size_t n = strcspn(g + 4, "\n");
+  ck_assert_uint_lt(n, sizeof line);
+  memcpy(line, g + 4, n);
+  line[n] = '\0';
+  ck_assert_msg(strstr(readme, "gnuplot fig_standing-wave_Ek.gp") != NULL,
+                "README: no step 4 command");
+  char dir[] = "/tmp/vsph-steps-XXXXXX", script[4096 + 1024];
+  vsph_test_scratch(dir);
+  snprintf(script, sizeof script,
+           "cd '%s' && \"$VSPH_BIN\" run standing-wave --res 12 --t-end 0.4 "
+           "--out wave --quiet && %s && od -An -c -N4 wave/Ek.png | tr -d ' ' "
+           "&& \"$VSPH_BIN\" report --only profiles --out r > /dev/null 2>&1 && "
+           "cd r && n=0 && for f in fig_*.gp; do b=${f%%.gp}; "
+           "rm -f \"$b.png\" \"$b.svg\" \"$b.pdf\" && gnuplot \"$f\" && "
+           "[ -s \"$b.png\" ] && [ -s \"$b.svg\" ] && [ -s \"$b.pdf\" ] && "
+           "n=$((n + 1)); done && echo redrawn $n",
+           dir, line);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 0, "exit %d\n%s\n%s", o->status, o->out, o->err);
+  ck_assert_msg(strstr(o->out, "211PNG") != NULL, "no PNG: %s", o->out);
+  long redrawn = -1;
+  const char *r = strstr(o->out, "redrawn ");
+  ck_assert_ptr_nonnull(r);
+  ck_assert_int_eq(sscanf(r, "redrawn %ld", &redrawn), 1);
+  ck_assert_msg(redrawn >= 2, "%ld figures redrawn", redrawn);
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 Suite *vsph_library_suite(void) {
   Suite *s = suite_create("library");
   TCase *tc = tcase_create("install");
@@ -515,6 +555,7 @@ Suite *vsph_library_suite(void) {
   tcase_add_test(tc, test_installed_dispatch);
   tcase_add_test(tc, test_installed_program);
   tcase_add_test(tc, test_readme_walkthrough);
+  tcase_add_test(tc, test_readme_steps_3_4);
   tcase_add_test(tc, test_exports_match_headers);
   tcase_add_test(tc, test_install_refusals);
   tcase_add_test(tc, test_deps_without_apt);
