@@ -264,11 +264,13 @@ int vsph_scaling_surface(const struct vsph_scaling_props *sp,
    * anything below round_tol times that at the finest h is noise, whose
    * slope would mean nothing. */
   const double hmin = res->h[sp->levels - 1];
+  res->round_level = sp->round_tol * sp->mu * U / hmin;
   for (int form = 0; form < VSPH_VISCOUS_FORM_COUNT; form++) {
     double mx = 0.0;
     for (size_t l = 0; l < sp->levels; l++)
       mx = fmax(mx, res->magnitude[form][l]);
-    res->rounding[form] = mx <= sp->round_tol * sp->mu * U / hmin;
+    res->max_magnitude[form] = mx;
+    res->rounding[form] = mx <= res->round_level;
     if (res->rounding[form]) {
       res->slope[form] = NAN;
       continue;

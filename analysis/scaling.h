@@ -56,6 +56,11 @@ struct vsph_scaling_result {
   double slope[VSPH_VISCOUS_FORM_COUNT];
   /** 1 if every value is at rounding level (slope NaN) */
   int rounding[VSPH_VISCOUS_FORM_COUNT];
+  /** the largest |(div V)_i| over the levels, per formulation */
+  double max_magnitude[VSPH_VISCOUS_FORM_COUNT];
+  /** the rounding level: round_tol mu U / h at the finest h (U: the
+   *  field's |A| or |Omega|); rounding[] is max_magnitude <= it */
+  double round_level;
 };
 
 /** Interior sweep results over h/dx. */

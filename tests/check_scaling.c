@@ -66,6 +66,19 @@ START_TEST(test_rotation_slopes) {
   for (size_t l = 0; l < r.levels; l++)
     ck_assert_double_le(fabs(r.normal[VSPH_VISCOUS_MEAF][l]),
                         1e-9 * r.magnitude[VSPH_VISCOUS_MEAF][l]);
+  /* the rounding level and each form's largest value, as the report's
+   * claims read them: round_tol mu |Omega| / h at the finest h, worked
+   * out here from the props (the same operations, so the same double),
+   * and the largest magnitude over the levels, which sets the flag */
+  ck_assert_double_eq(
+      r.round_level,
+      sp.round_tol * sp.mu * fabs(sp.field.Omega) / r.h[r.levels - 1]);
+  for (int f = 0; f < VSPH_VISCOUS_FORM_COUNT; f++) {
+    double mx = 0.0;
+    for (size_t l = 0; l < r.levels; l++) mx = fmax(mx, r.magnitude[f][l]);
+    ck_assert_double_eq(r.max_magnitude[f], mx);
+    ck_assert_int_eq(r.rounding[f], mx <= r.round_level);
+  }
 }
 END_TEST
 
