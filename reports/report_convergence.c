@@ -64,6 +64,7 @@ static int scene(struct vsph_report *R, int sc) {
   vsph_text_set(&R->tv, "scene", "%s", L->scene);
   if ((st = vsph_report_doc_say(R, "convergence.scene_head"))) return st;
   char files[NFORM][96];
+  int said = 0; /* the key's entry for hollow markers */
   for (int f = 0; f < NFORM && !st; f++) {
     size_t ns;
     const double order = vsph_series_slope_where(lr.dx[f], lr.err[f], lr.ok[f],
@@ -116,12 +117,11 @@ static int scene(struct vsph_report *R, int sc) {
              vsph_viscous_label(f));
     vsph_report_runs_style(style, sizeof style, f, " dt 2");
     if (!st) st = vsph_plot_add(&pl, files[f], "1:6", lab, style);
-    int any = 0; /* unstable runs ringed */
+    int any = 0; /* unstable runs hollow */
     for (int k = 0; k < VSPH_REPORT_LADDER; k++) any |= !lr.ok[f][k];
     if (!st && any)
-      st = vsph_plot_add(&pl, files[f], "1:($5==0 ? $2 : 1/0)",
-                         "stopped as unstable (error up to the stop)",
-                         "points pt 6 ps 3 lw 2 lc rgb 'black'");
+      st = vsph_report_runs_hollow(&pl, files[f], "1:($5==0 ? $2 : 1/0)", f,
+                                   &said);
   }
   if (!st)
     st = vsph_plot_add(&pl, files[0], "1:($1*0.1)", "first order",

@@ -12,6 +12,7 @@
 #include <stddef.h>
 
 #include "../analysis/series.h"
+#include "../io/plot.h"
 #include "../runs/jobs.h"
 #include "../solver/viscous.h"
 
@@ -203,6 +204,15 @@ const char *vsph_report_runs_colour(int f);
 /* The line style of formulation f in every figure: "linespoints pt P lw 2
  * COLOUR" with @p more appended (e.g. " dt 2"; "" for none). */
 void vsph_report_runs_style(char *buf, size_t len, int f, const char *more);
+
+/* Formulation @p f's runs stopped as unstable drawn hollow in figure
+ * @p pl: over each such point of its curve (@p using picks them: the
+ * others 1/0) a white disc, then the open marker of its filled one in its
+ * colour (gnuplot's pt 7 -> 6, 5 -> 4, ...; a form whose marker is open
+ * already gets a black ring round it instead). Untitled; the first call
+ * of a figure (*@p said 0) adds one key entry saying what hollow means. */
+int vsph_report_runs_hollow(struct vsph_plot *pl, const char *file,
+                            const char *using, int f, int *said);
 
 /* The self-convergence of a ladder's runs (coarse first, E_k, spacings
  * @p dx): vsph_series_selfconv on their energy series. */

@@ -28,6 +28,7 @@ static int scene(struct vsph_report *R, int sc) {
                  "max_t |E_k/E_k(0) - E_{k,ref}/E_{k,ref}(0)|",
                  "wall time (s, 2 threads)");
   pl.logx = pl.logy = 1;
+  int said = 0; /* the key's entry for hollow markers */
   for (int f = 0; f < NFORM && !st; f++) {
     char file[96];
     snprintf(file, sizeof file, "speed_%s_%s.csv", scn, vsph_viscous_name(f));
@@ -35,7 +36,7 @@ static int scene(struct vsph_report *R, int sc) {
                             "error,wall_s,pairs,cpu_s,load_1min,stable");
     if (!c) return VSPH_EIO;
     int any = 0; /* a run stopped as unstable: its error and time are up to
-                    its stop, not the whole run's; ringed */
+                    its stop, not the whole run's; hollow */
     for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
       fprintf(c, "%.6e,%.4f,%.6e,%.4f,%.2f,%d\n", lr.err[f][k], lr.wall[f][k],
               lr.pairs[f][k], lr.cpu[f][k], lr.load[f][k], lr.ok[f][k]);
@@ -46,9 +47,7 @@ static int scene(struct vsph_report *R, int sc) {
     vsph_report_runs_style(style, sizeof style, f, "");
     st = vsph_plot_add(&pl, file, "1:2", vsph_viscous_label(f), style);
     if (!st && any)
-      st = vsph_plot_add(&pl, file, "1:($6==0 ? $2 : 1/0)",
-                         "stopped as unstable (up to the stop)",
-                         "points pt 6 ps 3 lw 2 lc rgb 'black'");
+      st = vsph_report_runs_hollow(&pl, file, "1:($6==0 ? $2 : 1/0)", f, &said);
   }
   if (st) return st;
   vsph_text_set(&R->tv, "title", "%s", title);

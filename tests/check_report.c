@@ -17,6 +17,7 @@
 #include "../reports/report.h"
 #include "../reports/report_claims.h"
 #include "../reports/report_parts.h"
+#include "../reports/report_runs.h"
 #include "../runs/folder.h"
 #include "../runs/jobs_internal.h"
 #include "../solver/scene.h"
@@ -498,6 +499,50 @@ START_TEST(test_tensor_table_no_negative_zero) {
 }
 END_TEST
 
+/* Runs stopped as unstable are drawn hollow (issue 45's figure rule):
+ * over each stopped point of MGF's curve (filled disc, pt 7) a white disc,
+ * then the open circle (pt 6) in MGF's colour; a form whose marker is
+ * open already (the seventh, pt 6) is ringed in black instead; one key
+ * entry says what hollow means, however many forms have stopped runs. */
+START_TEST(test_hollow_stopped_runs) {
+  char dir[] = "/tmp/vsph-hollow-XXXXXX", path[200];
+  vsph_test_scratch(dir);
+  ck_assert_int_eq(vsph_files_write(dir, "s.csv",
+                                    "error,wall_s,stable\n1e-2,1,1\n"
+                                    "1e-3,2,1\n1e-4,4,0\n"),
+                   0);
+  struct vsph_plot pl;
+  vsph_plot_init(&pl, dir, "fig_h", "hollow", "error", "wall (s)");
+  char style[96];
+  int said = 0;
+  for (int f = 0; f < 7; f += 6) {
+    vsph_report_runs_style(style, sizeof style, f, "");
+    ck_assert_int_eq(vsph_plot_add(&pl, "s.csv", "1:2", "form", style), 0);
+    ck_assert_int_eq(
+        vsph_report_runs_hollow(&pl, "s.csv", "1:($3==0 ? $2 : 1/0)", f, &said),
+        0);
+  }
+  ck_assert_int_eq(vsph_plot_write(&pl), 0);
+  static char gp[1 << 15];
+  snprintf(path, sizeof path, "%s/fig_h.gp", dir);
+  vsph_test_slurp(path, gp, sizeof gp);
+  ck_assert_int_eq(vsph_report_runs_point(0), 7);
+  ck_assert_int_eq(vsph_report_runs_point(6), 6);
+  static const char *const want[] = {
+      "using 1:($3==0 ? $2 : 1/0) with points pt 7 ps 1.2 lc rgb 'white' "
+      "title \"\"",
+      "using 1:($3==0 ? $2 : 1/0) with points pt 6 lw 2 lc 1 title \"\"",
+      "using 1:($3==0 ? $2 : 1/0) with points pt 6 ps 2.5 lw 2 lc rgb "
+      "'black' title \"\""};
+  for (size_t k = 0; k < sizeof want / sizeof want[0]; k++)
+    ck_assert_msg(strstr(gp, want[k]) != NULL, "no '%s' in\n%s", want[k], gp);
+  const char *key = strstr(gp, "hollow: stopped as unstable");
+  ck_assert_ptr_nonnull(key);
+  ck_assert_ptr_null(strstr(key + 1, "hollow: stopped as unstable"));
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 /* The kinetic energy's peak over its start (section 12's still tank):
  * a series that rises to 50 times its start at t = 2.5 and falls again
  * gives 50 and 2.5 exactly (a ratio of two stored doubles, 1 ulp); a
@@ -550,6 +595,7 @@ Suite *vsph_report_suite(void) {
   tcase_add_test(tc, test_null_mode);
   tcase_add_test(tc, test_peak_ratio_and_time);
   tcase_add_test(tc, test_tensor_table_no_negative_zero);
+  tcase_add_test(tc, test_hollow_stopped_runs);
   tcase_add_test(tc, test_bench_fold);
   suite_add_tcase(s, tc);
   return s;
