@@ -103,7 +103,8 @@ int vsph_dissipation_props_init(struct vsph_dissipation_props *dp,
   struct raw r;
   memset(dp, 0, sizeof *dp);
   int st = vsph_params_load(prm, "Dissipation", DISSIPATION,
-                            sizeof DISSIPATION / sizeof DISSIPATION[0], &r);
+                            sizeof DISSIPATION / sizeof DISSIPATION[0], &r,
+                            sizeof r);
   if (st) return st;
   if ((st = vsph_viscous_resolve(r.formulation, &dp->form))) return st;
   const int fk = vsph_fields_find(r.field);

@@ -96,8 +96,9 @@ int vsph_laplacian_props_init(struct vsph_laplacian_props *lp,
                               struct vsph_params *prm) {
   struct raw r;
   memset(lp, 0, sizeof *lp);
-  int st = vsph_params_load(prm, "Laplacian", LAPLACIAN,
-                            sizeof LAPLACIAN / sizeof LAPLACIAN[0], &r);
+  int st =
+      vsph_params_load(prm, "Laplacian", LAPLACIAN,
+                       sizeof LAPLACIAN / sizeof LAPLACIAN[0], &r, sizeof r);
   if (st) return st;
   if ((lp->form = vsph_laplacian_form_find(r.form)) < 0)
     VSPH_FAIL(VSPH_EINVAL,

@@ -419,7 +419,7 @@ int vsph_moments_props_init(struct vsph_moments_props *mp,
   struct raw r;
   memset(mp, 0, sizeof *mp);
   int st = vsph_params_load(prm, "Tensors", TENSORS,
-                            sizeof TENSORS / sizeof TENSORS[0], &r);
+                            sizeof TENSORS / sizeof TENSORS[0], &r, sizeof r);
   if (st) return st;
   if ((st = vsph_kernel_resolve(r.kernel, &mp->kernel))) return st;
   if (!mp->kernel)

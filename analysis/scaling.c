@@ -100,7 +100,7 @@ int vsph_scaling_props_init(struct vsph_scaling_props *sp,
   struct raw r;
   memset(sp, 0, sizeof *sp);
   int st = vsph_params_load(prm, "Scaling", SCALING,
-                            sizeof SCALING / sizeof SCALING[0], &r);
+                            sizeof SCALING / sizeof SCALING[0], &r, sizeof r);
   if (st) return st;
   const int dim = (int)r.dim;
   if ((st = vsph_kernel_resolve(r.kernel, &sp->kernel))) return st;

@@ -630,10 +630,21 @@ static int load_one(struct vsph_params *prm, const char *section,
 }
 
 int vsph_params_load(struct vsph_params *prm, const char *section,
-                     const struct vsph_params_spec *spec, size_t n,
-                     void *props) {
+                     const struct vsph_params_spec *spec, size_t n, void *props,
+                     size_t size) {
   if (!section || !spec || !props)
     VSPH_FAIL(VSPH_EINVAL, "vsph_params_load: a NULL argument");
+  for (size_t i = 0; i < n; i++) { /* every field within the struct first */
+    const size_t w = spec[i].kind == VSPH_PARAMS_NAME  ? VSPH_PARAMS_NAME_MAX
+                     : spec[i].kind == VSPH_PARAMS_INT ? sizeof(size_t)
+                                                       : sizeof(double);
+    if (spec[i].offset > size || w > size - spec[i].offset)
+      VSPH_FAIL(VSPH_EINVAL,
+                "vsph_params_load: %s:%.40s lies beyond the %zu-byte struct "
+                "(offset %zu)",
+                section, spec[i].key ? spec[i].key : "(null)", size,
+                spec[i].offset);
+  }
   for (size_t i = 0; i < n; i++) {
     const int st = load_one(prm, section, &spec[i], props);
     if (st) return st;

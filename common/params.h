@@ -143,12 +143,15 @@ struct vsph_params_spec {
  *  @p prm (or the defaults where a key is absent; @p prm may be NULL for
  *  all defaults). Numbers are parsed strictly (decimal, no spaces, finite)
  *  and checked against their bounds before any conversion; whole numbers
- *  must be integral. Every value is recorded as used.
+ *  must be integral. Every value is recorded as used. @p size is the
+ *  struct's size in bytes (sizeof *props): a table whose field would lie
+ *  beyond it is refused before anything is written.
  *  @return VSPH_OK or VSPH_EINVAL (malformed or out of bounds: the message
- *  names the key, the value and the bounds), VSPH_ENOMEM. */
+ *  names the key, the value and the bounds; a field beyond @p size),
+ *  VSPH_ENOMEM. */
 VSPH_API int vsph_params_load(struct vsph_params *prm, const char *section,
                               const struct vsph_params_spec *spec, size_t n,
-                              void *props);
+                              void *props, size_t size);
 
 /** @brief The spec called @p key in a table, or NULL. */
 VSPH_API const struct vsph_params_spec *vsph_params_spec_find(

@@ -254,7 +254,7 @@ int vsph_run_props_init(struct vsph_run_props *out, struct vsph_params *prm) {
   memset(&sr, 0, sizeof sr);
   struct vsph_run_props *const rp = &sr.rp;
   int st = vsph_params_load(prm, "Solver", SOLVER,
-                            sizeof SOLVER / sizeof SOLVER[0], &sr);
+                            sizeof SOLVER / sizeof SOLVER[0], &sr, sizeof sr);
   if (!st) st = resolve_names(&sr, rp);
   if (st) return st;
   const char *const visc = sr.visc;

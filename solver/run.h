@@ -147,11 +147,17 @@ static inline const char *vsph_run_method(const struct vsph_run_props *rp) {
              : vsph_viscous_name(rp->form);
 }
 
-/** @brief The "Solver" parameter table (@p n receives its length). */
+/** @brief The "Solver" parameter table (@p n receives its length): its
+ *  keys, defaults, bounds and help, for help texts and parameter files.
+ *  Its offsets are those of vsph_run_props_init's own reading (the names
+ *  it resolves are not kept in struct vsph_run_props): read a section with
+ *  vsph_run_props_init; vsph_params_load refuses this table for a
+ *  struct vsph_run_props. */
 VSPH_API const struct vsph_params_spec *vsph_run_params(size_t *n);
 
 /** @brief Read the "Solver" section of @p prm (NULL: defaults) into
- *  @p rp, check it and resolve the formulation and kernel names. The
+ *  @p rp, check it and resolve the names it gives (formulation, kernel,
+ *  state equation, correction, scheme, density, integrator). The
  *  scene's own Solver defaults (its CFL, contact SPH's settings) are not
  *  applied here: call vsph_scene_solver_defaults on @p prm first, as
  *  `vsph run` and the report's jobs do.

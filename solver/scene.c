@@ -115,8 +115,8 @@ int vsph_scene_init(struct vsph_scene *sc, const struct vsph_scene_type *type,
   sc->area = type->area; /* a scene whose size is a parameter sets its own */
   /* the table's offsets are into the type's member of the union, which
    * starts at the union's address */
-  const int st =
-      vsph_params_load(prm, "Scene", type->params, type->nparams, &sc->u);
+  const int st = vsph_params_load(prm, "Scene", type->params, type->nparams,
+                                  &sc->u, sizeof sc->u);
   if (st) return st;
   return type->setup(sc);
 }

@@ -9,9 +9,9 @@
  * so a function added to the public face without its calls here fails. */
 #include <check.h>
 #include <ctype.h>
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
-#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -147,11 +147,11 @@ static void call_vsph_params_entry_1(void) {
 }
 
 static void call_vsph_params_load_0(void) {
-  (void)vsph_params_load(NULL, NULL, NULL, 0, NULL);
+  (void)vsph_params_load(NULL, NULL, NULL, 0, NULL, 0);
 }
 
 static void call_vsph_params_load_1(void) {
-  (void)vsph_params_load(NULL, NULL, NULL, SIZE_MAX, NULL);
+  (void)vsph_params_load(NULL, NULL, NULL, SIZE_MAX, NULL, SIZE_MAX);
 }
 
 static void call_vsph_params_spec_find_0(void) {

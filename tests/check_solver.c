@@ -479,6 +479,21 @@ START_TEST(test_run_props_names) {
   ck_assert_int_eq(rp.summation, 1);
   ck_assert_int_eq(rp.leapfrog, 1);
   ck_assert_str_eq(vsph_run_method(&rp), "meaf");
+  /* the public table's names lie beyond struct vsph_run_props (they are
+   * not kept there): vsph_params_load refuses to write past it */
+  size_t n = 0;
+  const struct vsph_params_spec *spec = vsph_run_params(&n);
+  struct {
+    struct vsph_run_props rp;
+    unsigned char canary[512];
+  } guard;
+  memset(&guard, 0xA5, sizeof guard);
+  vsph_test_silence();
+  ck_assert_int_eq(
+      vsph_params_load(NULL, "Solver", spec, n, &guard.rp, sizeof guard.rp),
+      VSPH_EINVAL);
+  for (size_t k = 0; k < sizeof guard.canary; k++)
+    ck_assert_uint_eq(guard.canary[k], 0xA5);
 }
 END_TEST
 

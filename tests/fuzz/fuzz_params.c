@@ -33,7 +33,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       const struct vsph_scene_type *t = vsph_scene_get(i);
       struct vsph_scene sc;
       memset(&sc, 0, sizeof sc);
-      (void)vsph_params_load(prm, "Scene", t->params, t->nparams, &sc.u);
+      (void)vsph_params_load(prm, "Scene", t->params, t->nparams, &sc.u,
+                             sizeof sc.u);
     }
     (void)vsph_params_unused(prm);
     for (size_t i = 0; i < vsph_params_count(prm); i++) {
