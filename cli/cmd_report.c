@@ -471,6 +471,14 @@ static int run_report(const struct opts *o, struct vsph_report_props *rp,
     return vsph_args_status(o->cmd, VSPH_EIO);
   }
   exe[ne] = '\0';
+  /* the install's x86-64-v3 copy, started by bin/vsph (cli/main.c): the
+   * children and the Slurm scripts name bin/vsph, which chooses the copy
+   * on each machine (a compute node may lack x86-64-v3) */
+  static const char v3[] = "/libexec/vsph/x86-64-v3/vsph";
+  const char *disp = getenv("VSPH_EXE");
+  if ((size_t)ne > strlen(v3) && !strcmp(exe + ne - strlen(v3), v3) && disp &&
+      disp[0] == '/' && strlen(disp) < sizeof exe && access(disp, X_OK) == 0)
+    snprintf(exe, sizeof exe, "%s", disp);
   rp->exe = exe;
   rp->mode = mode;
   rp->plan_out = stdout;

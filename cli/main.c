@@ -76,14 +76,21 @@ static int set_wait_policy(void) {
  * scripts/install), and where the CPU has x86-64-v3 it starts the
  * install's copy built for it, PREFIX/libexec/vsph/x86-64-v3/vsph, found
  * beside bin/ (the same sources; results agree to rounding, as the
- * library's two copies do). VSPH_BASELINE in the environment keeps the
- * baseline copy. A copy built for x86-64-v3 or wider never looks, so
- * there is no loop. Sets @p path and returns 1 where that copy is to run. */
+ * library's two copies do). VSPH_BASELINE set in the environment (to
+ * anything) keeps the baseline copy. A copy built for x86-64-v3 or wider never
+ * looks, so there is no loop. Sets @p path and returns 1 where that copy is to
+ * run. */
 static int faster_copy(char *path, size_t len) {
 #if defined(__x86_64__) && !defined(__AVX2__) && defined(__GNUC__)
   if (getenv("VSPH_BASELINE")) return 0;
   __builtin_cpu_init();
+#if defined(__clang__) || __GNUC__ < 12 /* no ISA levels: its features */
+  if (!(__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
+        __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2")))
+    return 0;
+#else
   if (!__builtin_cpu_supports("x86-64-v3")) return 0;
+#endif
   char self[4096];
   const ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
   if (k <= 0) return 0;
@@ -103,10 +110,19 @@ static int faster_copy(char *path, size_t len) {
 /* Start the copy for this CPU or start again under the wait policy,
  * whichever applies; if the start fails, vsph runs on as it is. */
 static void start(char **argv) {
-  char path[4200];
+  char path[4200], self[4096];
   const int faster = faster_copy(path, sizeof path);
   const int policy = set_wait_policy();
-  if (faster) execv(path, argv);
+  if (faster) {
+    /* the copy's children and scripts name this program (VSPH_EXE, read
+     * by vsph report), which chooses the copy wherever they run */
+    const ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (k > 0) {
+      self[k] = '\0';
+      setenv("VSPH_EXE", self, 1);
+    }
+    execv(path, argv);
+  }
   if (policy) execv("/proc/self/exe", argv);
 }
 

@@ -57,15 +57,19 @@ static const struct {
              {"n.D.n", "n\u00b7D\u00b7n"},
              {"->", "\u2192"},
              {"sqrt(", "\u221a("},
-             {"sqrt ", "\u221a"},
-             {"-int ", "\u2212\u222b "}};
+             {"sqrt pi", "\u221a\u03c0"},
+             {" -int ", " \u2212\u222b "}};
 
 /* The bytes of the Greek letter in UTF-8 at @p c (two bytes, U+0391 to
  * U+03C9), 0 where there is none. */
 static size_t utf8_letter(const char *c) {
-  const unsigned char a = (unsigned char)c[0], b = (unsigned char)c[1];
-  return (a == 0xCE && b >= 0x91 && b <= 0xBF) || (a == 0xCF && b <= 0x89) ? 2
-                                                                           : 0;
+  const unsigned char a = (unsigned char)c[0];
+  if (a != 0xCE && a != 0xCF) return 0; /* c[1] read only after a lead */
+  const unsigned char b = (unsigned char)c[1];
+  return (a == 0xCE && b >= 0x91 && b <= 0xBF) ||
+                 (a == 0xCF && b >= 0x80 && b <= 0x89)
+             ? 2
+             : 0;
 }
 
 static int word_char(char c) {
@@ -131,7 +135,8 @@ static size_t greek_sub(FILE *m, const char *c) {
     return 0;
   size_t n = 3;
   while (word_char(c[n]) && c[n] != '_') n++;
-  if (word_char(c[n])) return 0;
+  if (word_char(c[n]) || (c[n] == '.' && word_char(c[n + 1])))
+    return 0; /* η_a_b, or a file's name: η_eff.csv */
   fwrite(c, 1, 2, m);
   fputs("<sub>", m);
   word_out(m, c + 3, n - 3);

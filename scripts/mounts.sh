@@ -9,8 +9,8 @@
 # $1 as /proc/mounts writes a path (space, tab, newline and backslash as
 # octal escapes)
 vsph_mangle() {
-  printf '%s' "$1" | sed -e 's/\\/\\134/g' -e 's/ /\\040/g' \
-    -e 's/\t/\\011/g' | sed -e ':a' -e 'N' -e '$!ba' -e 's/\n/\\012/g'
+  printf '%s' "$1" | awk '{ gsub(/\\/, "\\134"); gsub(/ /, "\\040");
+    gsub(/\t/, "\\011"); printf "%s%s", (NR > 1 ? "\\012" : ""), $0 }'
 }
 
 # whether anything is mounted at or below folder $1, by the mount table
@@ -30,5 +30,5 @@ vsph_remove_unmounted() {
   if vsph_mounted_below "$1" "${2:-/proc/mounts}"; then
     return 1
   fi
-  rm -rf -- "$1"
+  rm -rf --one-file-system -- "$1"
 }

@@ -244,7 +244,8 @@ START_TEST(test_html_mathematics) {
           "docs/theory.md; [a link about docs/theory.md](#x).\n\n"
           "u_\u03b8(r) and \u03b7_eff^num, U_j^R, pbar_i = sum_j x, "
           "(-1)^(i+j), K/(3 sqrt pi), sqrt(10) times, P -> -int V:D; "
-          "the sum of a_b^c.\n");
+          "the sum of a_b^c; the sqrt of two, no-int here, "
+          "\u03b7_eff.csv, u_\n");
   fclose(f);
   ck_assert_int_eq(vsph_html_render(dir, "m.md", "m.html", "m"), VSPH_OK);
   static char html[1 << 16];
@@ -258,7 +259,8 @@ START_TEST(test_html_mathematics) {
       "u<sub>\u03b8</sub>(r) and \u03b7<sub>eff</sub><sup>num</sup>, "
       "U<sub>j</sub><sup>R</sup>, p\u0304<sub>i</sub> = \u03a3<sub>j</sub> "
       "x, (-1)<sup>i+j</sup>, K/(3 \u221a\u03c0), \u221a(10) times, P "
-      "\u2192 \u2212\u222b V:D; the sum of a<sub>b</sub><sup>c</sup>.",
+      "\u2192 \u2212\u222b V:D; the sum of a<sub>b</sub><sup>c</sup>; "
+      "the sqrt of two, no-int here, \u03b7_eff.csv, u_</p>",
       "docs/theory.md\">docs/theory.md</a>",
       /* inside a link's text: no link of its own */
       "<a href=\"#x\">a link about docs/theory.md</a>"};
