@@ -46,14 +46,35 @@ static int c0x2(char buf[64], const char *set[2]) {
 }
 
 /* One variant of the standing wave: its label, settings and folder tag;
- * cfl >= 0: the time-step study's run at that index instead (report_speed.c
- * makes it); c0: the sound speed doubled. */
+ * speed: the time-step study's run at CFL index cfl (0.5, 1, 1.5, 2)
+ * instead (report_speed.c makes it); c0: the sound speed doubled. */
 struct variant {
   const char *label;
   const char *set[4];
   const char *tag;
-  int cfl;
+  int speed, cfl;
   int c0;
+};
+
+/* The variants, by the names the prose reads them by, in the table's
+ * order. */
+enum {
+  V_BASE,
+  V_RELAX,
+  V_EPS002,
+  V_EPS001,
+  V_EPS005, /* eps = 0.005 */
+  V_EPS001R,
+  V_EPS005R,
+  V_DELTA,
+  V_C0,
+  V_CFL05,
+  V_CFL1,
+  V_CFL15,
+  V_STILL,
+  V_STILLR,
+  V_ROUND,
+  NVAR
 };
 
 /* The lattice start at the scene's defaults is the ladder's own run. A
@@ -61,68 +82,48 @@ struct variant {
  * tank's acoustic ones; Solver:relax). The still tank keeps eps = 0.05's
  * viscosity at a hundredth of its steepness (Re = 1.4): what the start
  * costs with hardly a wave. */
-static const struct variant VAR[] = {
-    {"lattice start (the scene's defaults: section 5's run)",
-     {NULL},
-     NULL,
-     -1,
-     0},
-    {"relaxed start", {"Solver:relax=2", NULL}, "relax2", -1, 0},
-    {"eps = 0.02", {"Scene:eps=0.02", NULL}, "eps0.02", -1, 0},
-    {"eps = 0.01", {"Scene:eps=0.01", NULL}, "eps0.01", -1, 0},
-    {"eps = 0.005", {"Scene:eps=0.005", NULL}, "eps0.005", -1, 0},
-    {"eps = 0.01, relaxed start",
-     {"Scene:eps=0.01", "Solver:relax=2", NULL},
-     "eps0.01relax2",
-     -1,
-     0},
-    {"eps = 0.005, relaxed start",
-     {"Scene:eps=0.005", "Solver:relax=2", NULL},
-     "eps0.005relax2",
-     -1,
-     0},
-    {"delta-SPH, delta = 0.1 (its simple form)",
-     {"Solver:delta=0.1", NULL},
-     "delta0.1",
-     -1,
-     0},
-    {"sound speed c0 doubled", {NULL}, "c0x2", -1, 1},
-    {"CFL 0.5 (section 7's run)", {NULL}, NULL, 0, 0},
-    {"CFL 1 (section 7's run)", {NULL}, NULL, 1, 0},
-    {"CFL 1.5 (section 7's run)", {NULL}, NULL, 2, 0},
-    {"still tank (eps = 0.0005, Re = 1.4: eps = 0.05's viscosity)",
-     {"Scene:eps=0.0005", "Scene:Re=1.4", NULL},
-     "still",
-     -1,
-     0},
-    {"still tank, relaxed start",
-     {"Scene:eps=0.0005", "Scene:Re=1.4", "Solver:relax=2", NULL},
-     "stillrelax2",
-     -1,
-     0},
+static const struct variant VAR[NVAR] = {
+    [V_BASE] = {.label = "lattice start (the scene's defaults: section 5's "
+                         "run)"},
+    [V_RELAX] = {.label = "relaxed start",
+                 .set = {"Solver:relax=2"},
+                 .tag = "relax2"},
+    [V_EPS002] = {.label = "eps = 0.02",
+                  .set = {"Scene:eps=0.02"},
+                  .tag = "eps0.02"},
+    [V_EPS001] = {.label = "eps = 0.01",
+                  .set = {"Scene:eps=0.01"},
+                  .tag = "eps0.01"},
+    [V_EPS005] = {.label = "eps = 0.005",
+                  .set = {"Scene:eps=0.005"},
+                  .tag = "eps0.005"},
+    [V_EPS001R] = {.label = "eps = 0.01, relaxed start",
+                   .set = {"Scene:eps=0.01", "Solver:relax=2"},
+                   .tag = "eps0.01relax2"},
+    [V_EPS005R] = {.label = "eps = 0.005, relaxed start",
+                   .set = {"Scene:eps=0.005", "Solver:relax=2"},
+                   .tag = "eps0.005relax2"},
+    [V_DELTA] = {.label = "delta-SPH, delta = 0.1 (its simple form)",
+                 .set = {"Solver:delta=0.1"},
+                 .tag = "delta0.1"},
+    [V_C0] = {.label = "sound speed c0 doubled", .tag = "c0x2", .c0 = 1},
+    [V_CFL05] = {.label = "CFL 0.5 (section 7's run)", .speed = 1, .cfl = 0},
+    [V_CFL1] = {.label = "CFL 1 (section 7's run)", .speed = 1, .cfl = 1},
+    [V_CFL15] = {.label = "CFL 1.5 (section 7's run)", .speed = 1, .cfl = 2},
+    [V_STILL] = {.label = "still tank (eps = 0.0005, Re = 1.4: eps = 0.05's "
+                          "viscosity)",
+                 .set = {"Scene:eps=0.0005", "Scene:Re=1.4"},
+                 .tag = "still"},
+    [V_STILLR] = {.label = "still tank, relaxed start",
+                  .set = {"Scene:eps=0.0005", "Scene:Re=1.4", "Solver:relax=2"},
+                  .tag = "stillrelax2"},
     /* the defaults with the lattice shifted by a billionth of a spacing:
      * a different rounding of the same run, so a stop that comes or goes
      * with it moves with rounding (marginal; the claims read it) */
-    {"lattice shifted by 1e-9 dx (rounding)",
-     {"Solver:perturb=1e-9", NULL},
-     "perturb1e-9",
-     -1,
-     0},
+    [V_ROUND] = {.label = "lattice shifted by 1e-9 dx (rounding)",
+                 .set = {"Solver:perturb=1e-9"},
+                 .tag = "perturb1e-9"},
 };
-#define NVAR (sizeof VAR / sizeof VAR[0])
-/* the rows the prose reads */
-enum {
-  V_BASE = 0,
-  V_RELAX = 1,
-  V_EPS005 = 4,
-  V_EPS005R = 6,
-  V_DELTA = 7,
-  V_C0 = 8,
-  V_CFL0 = 9,   /* then 1 and 1.5 */
-  V_STILL = 12, /* then relaxed */
-  V_ROUND = 14
-};
-_Static_assert(NVAR == 15, "the rows the prose reads moved");
 
 /* The rung the variants run at: the FULL ladder's coarsest (H/dx = 60, a
  * quarter of the paper's), the quick ladder's middle (20: its coarsest,
@@ -135,7 +136,7 @@ static int spec(const struct vsph_report *R, size_t v, int f, char buf[64],
                 const char *set[2], struct vsph_jobs_spec *rs) {
   const struct vsph_report_ladderdef *L =
       vsph_report_runs_ladder(&R->runs, WAVE, 0);
-  if (VAR[v].cfl >= 0) {
+  if (VAR[v].speed) {
     *rs = vsph_report_speed_spec(R, WAVE, f, rung(R), VAR[v].cfl);
     return VSPH_OK;
   }
@@ -377,7 +378,7 @@ static int wave_reading_small(
   char t[1600];
   /* the energy lost beyond Lighthill's, in mJ/m, over the steepness */
   double xs[4], xlo = INFINITY, xhi = -INFINITY;
-  static const size_t EPSROWS[4] = {V_BASE, 2, 3, V_EPS005};
+  static const size_t EPSROWS[4] = {V_BASE, V_EPS002, V_EPS001, V_EPS005};
   for (int k = 0; k < 4; k++) {
     xs[k] = 1e3 * fig[EPSROWS[k]][M].excess;
     xlo = fmin(xlo, xs[k]);
@@ -401,7 +402,7 @@ static int wave_reading_small(
                  "not shrink with the wave)"
                : " (it shrinks with the steepness, far less than the wave's "
                  "energy does)",
-           e->loss, 1e3 * er->excess, 1e3 * fig[V_STILL + 1][M].excess,
+           e->loss, 1e3 * er->excess, 1e3 * fig[V_STILLR][M].excess,
            /* the excess larger than the wave's own loss */
            e->loss > 2.0 ? ". So inside the paper's range, eps < 0.01, the "
                            "runs measure this loss more than the "
@@ -423,7 +424,7 @@ static int wave_reading_small(
   /* the still tank, relaxed: does a form stir itself at rest? Its kinetic
    * energy's peak above ten times its start (a documented choice: a
    * tenfold growth from rest is no rounding) */
-  const struct wave_fig *sm = &fig[V_STILL + 1][M], *sp = &fig[V_STILL + 1][P];
+  const struct wave_fig *sm = &fig[V_STILLR][M], *sp = &fig[V_STILLR][P];
   snprintf(t, sizeof t,
            "In the still tank, relaxed, MGF's kinetic energy peaks at %.3g "
            "times its start and PVWF's at %.3g (t = %.2g s)%s; PVWF loses "
@@ -447,9 +448,10 @@ static int wave_reading(struct vsph_report *R,
   const int M = VSPH_VISCOUS_MGF, P = VSPH_VISCOUS_PVWF;
   const struct wave_fig *b = &fig[V_BASE][M];
   double lo = b->loss, hi = b->loss;
+  static const size_t CFLROWS[3] = {V_CFL05, V_CFL1, V_CFL15};
   for (int k = 0; k < 3; k++) {
-    lo = fmin(lo, fig[V_CFL0 + k][M].loss);
-    hi = fmax(hi, fig[V_CFL0 + k][M].loss);
+    lo = fmin(lo, fig[CFLROWS[k]][M].loss);
+    hi = fmax(hi, fig[CFLROWS[k]][M].loss);
   }
   /* a difference decides only beyond the noise: the spread of MGF's
    * figure over the time step (CFL 0.5 to 2), and at least 0.005 (half a
@@ -468,7 +470,7 @@ static int wave_reading(struct vsph_report *R,
            "moves it within %.3f to %.3f (CFL 0.5 to 2)",
            b->loss, b->lamb, fig[V_BASE][P].loss,
            !pvwf_too ? ""
-           : fig[V_STILL + 1][P].peak > 10.0
+           : fig[V_STILLR][P].peak > 10.0
                ? ": PVWF, whose dissipation is exact at the discrete level, "
                  "carries about as much, a sign that the excess is not MGF's "
                  "lattice bias (not a proof: PVWF's still tank stirs itself, "
