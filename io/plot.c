@@ -107,7 +107,7 @@ static void head(FILE *f, const char *what, const char *name) {
 static void outputs_open(FILE *f, const char *name, int w, int h, int font) {
   /* the SVG's title (its name, which gnuplot takes as an identifier: the
    * file's name, other characters as '_'), not "Gnuplot"; its text two
-   * points larger, as the page draws it across its column (io/html.c):
+   * points larger, as the page draws it across its column (reports/html.c):
    * the figure's words at the body's size */
   char id[128];
   snprintf(id, sizeof id, "%s", name);
