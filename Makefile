@@ -187,6 +187,7 @@ PUB_HDR := vsph.h common/api.h common/consts.h common/status.h common/params.h \
            solver/forms/morris.h solver/forms/stress.h solver/forms/takeda.h \
            solver/forms/zheng.h analysis/moments.h analysis/fields.h \
            analysis/scaling.h analysis/dissipation.h analysis/references.h \
+           analysis/series.h analysis/contact.h analysis/laplacian.h \
            io/files.h io/csv.h io/json.h io/plot.h io/vtk.h
 LIB_ALL := $(CORE_SRC:%.c=$(BUILD)/%.o) $(HASH_OBJ)
 

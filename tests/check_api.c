@@ -18,11 +18,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "../analysis/contact.h"
 #include "../analysis/dissipation.h"
 #include "../analysis/fields.h"
+#include "../analysis/laplacian.h"
 #include "../analysis/moments.h"
 #include "../analysis/references.h"
 #include "../analysis/scaling.h"
+#include "../analysis/series.h"
 #include "../common/params.h"
 #include "../common/status.h"
 #include "../io/csv.h"
@@ -1605,6 +1608,292 @@ static void call_vsph_pair_x86_simd_0(void) { (void)vsph_pair_x86_simd(); }
 
 static void call_vsph_pair_x86_simd_1(void) { (void)vsph_pair_x86_simd(); }
 
+static void call_vsph_series_interp_0(void) {
+  (void)vsph_series_interp(NULL, NULL, 0, 0.0);
+}
+
+static void call_vsph_series_interp_1(void) {
+  (void)vsph_series_interp(NULL, NULL, SIZE_MAX, NAN);
+}
+
+static void call_vsph_series_extrapolate_0(void) {
+  (void)vsph_series_extrapolate(NULL, NULL);
+}
+
+static void call_vsph_series_extrapolate_1(void) {
+  (void)vsph_series_extrapolate(NULL, NULL);
+}
+
+static void call_vsph_series_decay_error_0(void) {
+  (void)vsph_series_decay_error(NULL, NULL, 0);
+}
+
+static void call_vsph_series_decay_error_1(void) {
+  (void)vsph_series_decay_error(NULL, NULL, SIZE_MAX);
+}
+
+static void call_vsph_series_decay_error_table_0(void) {
+  (void)vsph_series_decay_error_table(NULL, NULL, 0, NULL, NULL, 0);
+}
+
+static void call_vsph_series_decay_error_table_1(void) {
+  (void)vsph_series_decay_error_table(NULL, NULL, SIZE_MAX, NULL, NULL,
+                                      SIZE_MAX);
+}
+
+static void call_vsph_series_onset_0(void) {
+  (void)vsph_series_onset(NULL, NULL, 0, NULL, NULL, 0, 0.0);
+}
+
+static void call_vsph_series_onset_1(void) {
+  (void)vsph_series_onset(NULL, NULL, SIZE_MAX, NULL, NULL, SIZE_MAX, NAN);
+}
+
+static void call_vsph_series_integral_0(void) {
+  (void)vsph_series_integral(NULL, NULL, 0);
+}
+
+static void call_vsph_series_integral_1(void) {
+  (void)vsph_series_integral(NULL, NULL, SIZE_MAX);
+}
+
+static void call_vsph_series_loss_ratio_0(void) {
+  (void)vsph_series_loss_ratio(0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_series_loss_ratio_1(void) {
+  (void)vsph_series_loss_ratio(NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_series_first_reach_0(void) {
+  (void)vsph_series_first_reach(NULL, NULL, 0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_series_first_reach_1(void) {
+  (void)vsph_series_first_reach(NULL, NULL, SIZE_MAX, NAN, NAN, NAN);
+}
+
+static void call_vsph_series_failure_0(void) {
+  (void)vsph_series_failure(NULL, NULL, 0, 0.0, 0.0, 0.0, 0.0, NULL);
+}
+
+static void call_vsph_series_failure_1(void) {
+  (void)vsph_series_failure(NULL, NULL, SIZE_MAX, NAN, NAN, NAN, NAN, NULL);
+}
+
+static void call_vsph_series_tail_mean_0(void) {
+  (void)vsph_series_tail_mean(NULL, NULL, 0, 0.0);
+}
+
+static void call_vsph_series_tail_mean_1(void) {
+  (void)vsph_series_tail_mean(NULL, NULL, SIZE_MAX, NAN);
+}
+
+static void call_vsph_series_tail_range_0(void) {
+  (void)vsph_series_tail_range(NULL, NULL, 0, 0.0);
+}
+
+static void call_vsph_series_tail_range_1(void) {
+  (void)vsph_series_tail_range(NULL, NULL, SIZE_MAX, NAN);
+}
+
+static void call_vsph_series_plateau_0(void) {
+  vsph_series_plateau(NULL, NULL, NULL, NULL, 0, 0.0, 0.0, 0.0, NULL, 0, NULL,
+                      NULL);
+}
+
+static void call_vsph_series_plateau_1(void) {
+  vsph_series_plateau(NULL, NULL, NULL, NULL, SIZE_MAX, NAN, NAN, NAN, NULL,
+                      SIZE_MAX, NULL, NULL);
+}
+
+static void call_vsph_series_cfl_pick_0(void) {
+  (void)vsph_series_cfl_pick(NULL, NULL, 0, 0, 0.0);
+}
+
+static void call_vsph_series_cfl_pick_1(void) {
+  (void)vsph_series_cfl_pick(NULL, NULL, SIZE_MAX, -1, NAN);
+}
+
+static void call_vsph_series_interp_cubic_0(void) {
+  (void)vsph_series_interp_cubic(NULL, NULL, 0, 0.0);
+}
+
+static void call_vsph_series_interp_cubic_1(void) {
+  (void)vsph_series_interp_cubic(NULL, NULL, SIZE_MAX, NAN);
+}
+
+static void call_vsph_series_order_0(void) {
+  (void)vsph_series_order(0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_series_order_1(void) {
+  (void)vsph_series_order(NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_series_selfconv_0(void) {
+  (void)vsph_series_selfconv(NULL, 0, NULL);
+}
+
+static void call_vsph_series_selfconv_1(void) {
+  (void)vsph_series_selfconv(NULL, SIZE_MAX, NULL);
+}
+
+static void call_vsph_series_slope_where_0(void) {
+  (void)vsph_series_slope_where(NULL, NULL, NULL, 0, NULL);
+}
+
+static void call_vsph_series_slope_where_1(void) {
+  (void)vsph_series_slope_where(NULL, NULL, NULL, SIZE_MAX, NULL);
+}
+
+static void call_vsph_contact_shear_u_0(void) {
+  (void)vsph_contact_shear_u(0.0, 0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_contact_shear_u_1(void) {
+  (void)vsph_contact_shear_u(NAN, NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_contact_shear_dy_0(void) {
+  (void)vsph_contact_shear_dy(0.0, 0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_contact_shear_dy_1(void) {
+  (void)vsph_contact_shear_dy(NAN, NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_contact_eta_model_0(void) {
+  (void)vsph_contact_eta_model(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_contact_eta_model_1(void) {
+  (void)vsph_contact_eta_model(NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_contact_bimaterial_fit_0(void) {
+  (void)vsph_contact_bimaterial_fit(NULL, NULL, NULL, 0, 0.0, 0.0, 0.0, 0.0,
+                                    0.0, 0.0, 0.0, 0.0, 0.0, NULL);
+}
+
+static void call_vsph_contact_bimaterial_fit_1(void) {
+  (void)vsph_contact_bimaterial_fit(NULL, NULL, NULL, SIZE_MAX, NAN, NAN, NAN,
+                                    NAN, NAN, NAN, NAN, NAN, NAN, NULL);
+}
+
+static void call_vsph_contact_drag_ratio_0(void) {
+  (void)vsph_contact_drag_ratio(NULL, 0, 0.0, 0.0, 0.0, NULL, NULL);
+}
+
+static void call_vsph_contact_drag_ratio_1(void) {
+  (void)vsph_contact_drag_ratio(NULL, SIZE_MAX, NAN, NAN, NAN, NULL, NULL);
+}
+
+static void call_vsph_contact_bimaterial_u_0(void) {
+  (void)vsph_contact_bimaterial_u(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, NULL);
+}
+
+static void call_vsph_contact_bimaterial_u_1(void) {
+  (void)vsph_contact_bimaterial_u(NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NULL);
+}
+
+static void call_vsph_contact_lattice_coef_0(void) {
+  (void)vsph_contact_lattice_coef(NULL, 0, 0.0);
+}
+
+static void call_vsph_contact_lattice_coef_1(void) {
+  (void)vsph_contact_lattice_coef(NULL, -1, NAN);
+}
+
+static void call_vsph_contact_lattice_visc_factor_0(void) {
+  (void)vsph_contact_lattice_visc_factor(NULL, 0, 0.0);
+}
+
+static void call_vsph_contact_lattice_visc_factor_1(void) {
+  (void)vsph_contact_lattice_visc_factor(NULL, -1, NAN);
+}
+
+static void call_vsph_contact_fit_nu_0(void) {
+  (void)vsph_contact_fit_nu(0, NULL, NULL, 0, 0.0, 0.0, 0.0, 0.0, 0.0, NULL);
+}
+
+static void call_vsph_contact_fit_nu_1(void) {
+  (void)vsph_contact_fit_nu(SIZE_MAX, NULL, NULL, -1, NAN, NAN, NAN, NAN, NAN,
+                            NULL);
+}
+
+static void call_vsph_contact_defaults_0(void) {
+  (void)vsph_contact_defaults(NULL);
+}
+
+static void call_vsph_contact_defaults_1(void) {
+  (void)vsph_contact_defaults(NULL);
+}
+
+static void call_vsph_contact_shear_measure_0(void) {
+  (void)vsph_contact_shear_measure(NULL, NULL);
+}
+
+static void call_vsph_contact_shear_measure_1(void) {
+  (void)vsph_contact_shear_measure(NULL, NULL);
+}
+
+static void call_vsph_contact_shear_free_0(void) {
+  vsph_contact_shear_free(NULL);
+}
+
+static void call_vsph_contact_shear_free_1(void) {
+  vsph_contact_shear_free(NULL);
+}
+
+static void call_vsph_laplacian_form_name_0(void) {
+  (void)vsph_laplacian_form_name(0);
+}
+
+static void call_vsph_laplacian_form_name_1(void) {
+  (void)vsph_laplacian_form_name(-1);
+}
+
+static void call_vsph_laplacian_form_find_0(void) {
+  (void)vsph_laplacian_form_find(NULL);
+}
+
+static void call_vsph_laplacian_form_find_1(void) {
+  (void)vsph_laplacian_form_find(NULL);
+}
+
+static void call_vsph_laplacian_field_name_0(void) {
+  (void)vsph_laplacian_field_name(0);
+}
+
+static void call_vsph_laplacian_field_name_1(void) {
+  (void)vsph_laplacian_field_name(-1);
+}
+
+static void call_vsph_laplacian_params_0(void) {
+  (void)vsph_laplacian_params(NULL);
+}
+
+static void call_vsph_laplacian_params_1(void) {
+  (void)vsph_laplacian_params(NULL);
+}
+
+static void call_vsph_laplacian_props_init_0(void) {
+  (void)vsph_laplacian_props_init(NULL, NULL);
+}
+
+static void call_vsph_laplacian_props_init_1(void) {
+  (void)vsph_laplacian_props_init(NULL, NULL);
+}
+
+static void call_vsph_laplacian_patch_0(void) {
+  (void)vsph_laplacian_patch(NULL, NULL);
+}
+
+static void call_vsph_laplacian_patch_1(void) {
+  (void)vsph_laplacian_patch(NULL, NULL);
+}
+
 static const struct api_call CALLS[] = {
     {"vsph_params_alloc", call_vsph_params_alloc_0},
     {"vsph_params_alloc", call_vsph_params_alloc_1},
@@ -2046,6 +2335,78 @@ static const struct api_call CALLS[] = {
     {"vsph_vtk_pvd_close", call_vsph_vtk_pvd_close_1},
     {"vsph_pair_x86_simd", call_vsph_pair_x86_simd_0},
     {"vsph_pair_x86_simd", call_vsph_pair_x86_simd_1},
+    {"vsph_series_interp", call_vsph_series_interp_0},
+    {"vsph_series_interp", call_vsph_series_interp_1},
+    {"vsph_series_extrapolate", call_vsph_series_extrapolate_0},
+    {"vsph_series_extrapolate", call_vsph_series_extrapolate_1},
+    {"vsph_series_decay_error", call_vsph_series_decay_error_0},
+    {"vsph_series_decay_error", call_vsph_series_decay_error_1},
+    {"vsph_series_decay_error_table", call_vsph_series_decay_error_table_0},
+    {"vsph_series_decay_error_table", call_vsph_series_decay_error_table_1},
+    {"vsph_series_onset", call_vsph_series_onset_0},
+    {"vsph_series_onset", call_vsph_series_onset_1},
+    {"vsph_series_integral", call_vsph_series_integral_0},
+    {"vsph_series_integral", call_vsph_series_integral_1},
+    {"vsph_series_loss_ratio", call_vsph_series_loss_ratio_0},
+    {"vsph_series_loss_ratio", call_vsph_series_loss_ratio_1},
+    {"vsph_series_first_reach", call_vsph_series_first_reach_0},
+    {"vsph_series_first_reach", call_vsph_series_first_reach_1},
+    {"vsph_series_failure", call_vsph_series_failure_0},
+    {"vsph_series_failure", call_vsph_series_failure_1},
+    {"vsph_series_tail_mean", call_vsph_series_tail_mean_0},
+    {"vsph_series_tail_mean", call_vsph_series_tail_mean_1},
+    {"vsph_series_tail_range", call_vsph_series_tail_range_0},
+    {"vsph_series_tail_range", call_vsph_series_tail_range_1},
+    {"vsph_series_plateau", call_vsph_series_plateau_0},
+    {"vsph_series_plateau", call_vsph_series_plateau_1},
+    {"vsph_series_cfl_pick", call_vsph_series_cfl_pick_0},
+    {"vsph_series_cfl_pick", call_vsph_series_cfl_pick_1},
+    {"vsph_series_interp_cubic", call_vsph_series_interp_cubic_0},
+    {"vsph_series_interp_cubic", call_vsph_series_interp_cubic_1},
+    {"vsph_series_order", call_vsph_series_order_0},
+    {"vsph_series_order", call_vsph_series_order_1},
+    {"vsph_series_selfconv", call_vsph_series_selfconv_0},
+    {"vsph_series_selfconv", call_vsph_series_selfconv_1},
+    {"vsph_series_slope_where", call_vsph_series_slope_where_0},
+    {"vsph_series_slope_where", call_vsph_series_slope_where_1},
+    {"vsph_contact_shear_u", call_vsph_contact_shear_u_0},
+    {"vsph_contact_shear_u", call_vsph_contact_shear_u_1},
+    {"vsph_contact_shear_dy", call_vsph_contact_shear_dy_0},
+    {"vsph_contact_shear_dy", call_vsph_contact_shear_dy_1},
+    {"vsph_contact_eta_model", call_vsph_contact_eta_model_0},
+    {"vsph_contact_eta_model", call_vsph_contact_eta_model_1},
+    {"vsph_contact_bimaterial_fit", call_vsph_contact_bimaterial_fit_0},
+    {"vsph_contact_bimaterial_fit", call_vsph_contact_bimaterial_fit_1},
+    {"vsph_contact_drag_ratio", call_vsph_contact_drag_ratio_0},
+    {"vsph_contact_drag_ratio", call_vsph_contact_drag_ratio_1},
+    {"vsph_contact_bimaterial_u", call_vsph_contact_bimaterial_u_0},
+    {"vsph_contact_bimaterial_u", call_vsph_contact_bimaterial_u_1},
+    {"vsph_contact_lattice_coef", call_vsph_contact_lattice_coef_0},
+    {"vsph_contact_lattice_coef", call_vsph_contact_lattice_coef_1},
+    {"vsph_contact_lattice_visc_factor",
+     call_vsph_contact_lattice_visc_factor_0},
+    {"vsph_contact_lattice_visc_factor",
+     call_vsph_contact_lattice_visc_factor_1},
+    {"vsph_contact_fit_nu", call_vsph_contact_fit_nu_0},
+    {"vsph_contact_fit_nu", call_vsph_contact_fit_nu_1},
+    {"vsph_contact_defaults", call_vsph_contact_defaults_0},
+    {"vsph_contact_defaults", call_vsph_contact_defaults_1},
+    {"vsph_contact_shear_measure", call_vsph_contact_shear_measure_0},
+    {"vsph_contact_shear_measure", call_vsph_contact_shear_measure_1},
+    {"vsph_contact_shear_free", call_vsph_contact_shear_free_0},
+    {"vsph_contact_shear_free", call_vsph_contact_shear_free_1},
+    {"vsph_laplacian_form_name", call_vsph_laplacian_form_name_0},
+    {"vsph_laplacian_form_name", call_vsph_laplacian_form_name_1},
+    {"vsph_laplacian_form_find", call_vsph_laplacian_form_find_0},
+    {"vsph_laplacian_form_find", call_vsph_laplacian_form_find_1},
+    {"vsph_laplacian_field_name", call_vsph_laplacian_field_name_0},
+    {"vsph_laplacian_field_name", call_vsph_laplacian_field_name_1},
+    {"vsph_laplacian_params", call_vsph_laplacian_params_0},
+    {"vsph_laplacian_params", call_vsph_laplacian_params_1},
+    {"vsph_laplacian_props_init", call_vsph_laplacian_props_init_0},
+    {"vsph_laplacian_props_init", call_vsph_laplacian_props_init_1},
+    {"vsph_laplacian_patch", call_vsph_laplacian_patch_0},
+    {"vsph_laplacian_patch", call_vsph_laplacian_patch_1},
 };
 
 #define NCALLS (sizeof CALLS / sizeof CALLS[0])
