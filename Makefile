@@ -181,9 +181,11 @@ SOVER   := 0
 LIBA    := $(BUILD)/libvsph.a
 LIBSO   := $(BUILD)/libvsph.so.$(VERSION)
 PUB_HDR := vsph.h common/api.h common/consts.h common/status.h common/params.h \
+           common/sysinfo.h \
            kernels/kernel.h solver/particles.h solver/cells.h solver/pair.h \
            solver/viscous.h solver/equations.h solver/walls.h solver/scene.h \
-           solver/run.h solver/lattice.h solver/forms/brookshaw.h solver/forms/er.h \
+           solver/run.h solver/lattice.h solver/integrate.h solver/materials.h \
+           solver/diagnostics.h solver/forms/brookshaw.h solver/forms/er.h \
            solver/forms/morris.h solver/forms/stress.h solver/forms/takeda.h \
            solver/forms/zheng.h analysis/moments.h analysis/fields.h \
            analysis/scaling.h analysis/dissipation.h analysis/references.h \

@@ -28,6 +28,7 @@
 #include "../analysis/series.h"
 #include "../common/params.h"
 #include "../common/status.h"
+#include "../common/sysinfo.h"
 #include "../io/csv.h"
 #include "../io/files.h"
 #include "../io/json.h"
@@ -35,8 +36,11 @@
 #include "../io/vtk.h"
 #include "../kernels/kernel.h"
 #include "../solver/cells.h"
+#include "../solver/diagnostics.h"
 #include "../solver/equations.h"
+#include "../solver/integrate.h"
 #include "../solver/lattice.h"
+#include "../solver/materials.h"
 #include "../solver/pair.h"
 #include "../solver/particles.h"
 #include "../solver/run.h"
@@ -1894,6 +1898,236 @@ static void call_vsph_laplacian_patch_1(void) {
   (void)vsph_laplacian_patch(NULL, NULL);
 }
 
+static void call_vsph_integrate_alloc_0(void) {
+  (void)vsph_integrate_alloc(NULL, NULL);
+}
+
+static void call_vsph_integrate_alloc_1(void) {
+  (void)vsph_integrate_alloc(NULL, NULL);
+}
+
+static void call_vsph_integrate_free_0(void) { vsph_integrate_free(NULL); }
+
+static void call_vsph_integrate_free_1(void) { vsph_integrate_free(NULL); }
+
+static void call_vsph_integrate_dt_0(void) { (void)vsph_integrate_dt(NULL); }
+
+static void call_vsph_integrate_dt_1(void) { (void)vsph_integrate_dt(NULL); }
+
+static void call_vsph_integrate_dt_rule_0(void) {
+  (void)vsph_integrate_dt_rule(0.0, 0, 0, 0.0, 0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_integrate_dt_rule_1(void) {
+  (void)vsph_integrate_dt_rule(NAN, -1, -1, NAN, NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_integrate_step_0(void) {
+  (void)vsph_integrate_step(NULL, 0.0);
+}
+
+static void call_vsph_integrate_step_1(void) {
+  (void)vsph_integrate_step(NULL, NAN);
+}
+
+static void call_vsph_integrate_check_0(void) {
+  (void)vsph_integrate_check(NULL);
+}
+
+static void call_vsph_integrate_check_1(void) {
+  (void)vsph_integrate_check(NULL);
+}
+
+static void call_vsph_integrate_diagnostics_0(void) {
+  (void)vsph_integrate_diagnostics(NULL, NULL, NULL);
+}
+
+static void call_vsph_integrate_diagnostics_1(void) {
+  (void)vsph_integrate_diagnostics(NULL, NULL, NULL);
+}
+
+static void call_vsph_integrate_pack_0(void) {
+  (void)vsph_integrate_pack(NULL, NULL);
+}
+
+static void call_vsph_integrate_pack_1(void) {
+  (void)vsph_integrate_pack(NULL, NULL);
+}
+
+static void call_vsph_integrate_wall_count_0(void) {
+  (void)vsph_integrate_wall_count(NULL);
+}
+
+static void call_vsph_integrate_wall_count_1(void) {
+  (void)vsph_integrate_wall_count(NULL);
+}
+
+static void call_vsph_integrate_pack_lean_0(void) {
+  (void)vsph_integrate_pack_lean(NULL, NULL);
+}
+
+static void call_vsph_integrate_pack_lean_1(void) {
+  (void)vsph_integrate_pack_lean(NULL, NULL);
+}
+
+static void call_vsph_integrate_pack_lean_file_0(void) {
+  (void)vsph_integrate_pack_lean_file(NULL, NULL);
+}
+
+static void call_vsph_integrate_pack_lean_file_1(void) {
+  (void)vsph_integrate_pack_lean_file(NULL, NULL);
+}
+
+static void call_vsph_integrate_restore_file_0(void) {
+  (void)vsph_integrate_restore_file(NULL, NULL, 0);
+}
+
+static void call_vsph_integrate_restore_file_1(void) {
+  (void)vsph_integrate_restore_file(NULL, NULL, SIZE_MAX);
+}
+
+static void call_vsph_integrate_unpack_0(void) {
+  (void)vsph_integrate_unpack(NULL, NULL, 0, NULL);
+}
+
+static void call_vsph_integrate_unpack_1(void) {
+  (void)vsph_integrate_unpack(NULL, NULL, SIZE_MAX, NULL);
+}
+
+static void call_vsph_integrate_restore_0(void) {
+  (void)vsph_integrate_restore(NULL, NULL, 0);
+}
+
+static void call_vsph_integrate_restore_1(void) {
+  (void)vsph_integrate_restore(NULL, NULL, SIZE_MAX);
+}
+
+static void call_vsph_integrate_bytes_0(void) {
+  (void)vsph_integrate_bytes(NULL);
+}
+
+static void call_vsph_integrate_bytes_1(void) {
+  (void)vsph_integrate_bytes(NULL);
+}
+
+static void call_vsph_integrate_bytes_estimate_0(void) {
+  (void)vsph_integrate_bytes_estimate(0, 0.0, 0.0, 0, 0);
+}
+
+static void call_vsph_integrate_bytes_estimate_1(void) {
+  (void)vsph_integrate_bytes_estimate(-1, NAN, NAN, -1, -1);
+}
+
+static void call_vsph_materials_drag_row_0(void) {
+  (void)vsph_materials_drag_row(0.0);
+}
+
+static void call_vsph_materials_drag_row_1(void) {
+  (void)vsph_materials_drag_row(NAN);
+}
+
+static void call_vsph_materials_drag_square_0(void) {
+  (void)vsph_materials_drag_square(0.0);
+}
+
+static void call_vsph_materials_drag_square_1(void) {
+  (void)vsph_materials_drag_square(NAN);
+}
+
+static void call_vsph_materials_count_0(void) { (void)vsph_materials_count(); }
+
+static void call_vsph_materials_count_1(void) { (void)vsph_materials_count(); }
+
+static void call_vsph_materials_get_0(void) { (void)vsph_materials_get(0); }
+
+static void call_vsph_materials_get_1(void) { (void)vsph_materials_get(-1); }
+
+static void call_vsph_materials_resolve_0(void) {
+  (void)vsph_materials_resolve(NULL, NULL);
+}
+
+static void call_vsph_materials_resolve_1(void) {
+  (void)vsph_materials_resolve(NULL, NULL);
+}
+
+static void call_vsph_diagnostics_surface_threshold_0(void) {
+  (void)vsph_diagnostics_surface_threshold(0);
+}
+
+static void call_vsph_diagnostics_surface_threshold_1(void) {
+  (void)vsph_diagnostics_surface_threshold(-1);
+}
+
+static void call_vsph_diagnostics_compute_0(void) {
+  (void)vsph_diagnostics_compute(NULL, 0, NULL, 0.0, NULL, NULL);
+}
+
+static void call_vsph_diagnostics_compute_1(void) {
+  (void)vsph_diagnostics_compute(NULL, SIZE_MAX, NULL, NAN, NULL, NULL);
+}
+
+static void call_vsph_diagnostics_compute_cells_0(void) {
+  (void)vsph_diagnostics_compute_cells(NULL, 0, NULL, NULL, 0.0, NULL, NULL,
+                                       NULL);
+}
+
+static void call_vsph_diagnostics_compute_cells_1(void) {
+  (void)vsph_diagnostics_compute_cells(NULL, SIZE_MAX, NULL, NULL, NAN, NULL,
+                                       NULL, NULL);
+}
+
+static void call_vsph_diagnostics_probe_0(void) {
+  (void)vsph_diagnostics_probe(NULL, 0, NULL, 0.0, NULL, NULL, NULL);
+}
+
+static void call_vsph_diagnostics_probe_1(void) {
+  (void)vsph_diagnostics_probe(NULL, SIZE_MAX, NULL, NAN, NULL, NULL, NULL);
+}
+
+static void call_vsph_diagnostics_free_0(void) { vsph_diagnostics_free(NULL); }
+
+static void call_vsph_diagnostics_free_1(void) { vsph_diagnostics_free(NULL); }
+
+static void call_vsph_sysinfo_load_0(void) { vsph_sysinfo_load(NULL); }
+
+static void call_vsph_sysinfo_load_1(void) { vsph_sysinfo_load(NULL); }
+
+static void call_vsph_sysinfo_cpu_s_0(void) { (void)vsph_sysinfo_cpu_s(); }
+
+static void call_vsph_sysinfo_cpu_s_1(void) { (void)vsph_sysinfo_cpu_s(); }
+
+static void call_vsph_sysinfo_thread_cpu_s_0(void) {
+  (void)vsph_sysinfo_thread_cpu_s();
+}
+
+static void call_vsph_sysinfo_thread_cpu_s_1(void) {
+  (void)vsph_sysinfo_thread_cpu_s();
+}
+
+static void call_vsph_sysinfo_wait_policy_0(void) {
+  (void)vsph_sysinfo_wait_policy(NULL, 0);
+}
+
+static void call_vsph_sysinfo_wait_policy_1(void) {
+  (void)vsph_sysinfo_wait_policy(NULL, SIZE_MAX);
+}
+
+static void call_vsph_sysinfo_build_isa_0(void) {
+  (void)vsph_sysinfo_build_isa();
+}
+
+static void call_vsph_sysinfo_build_isa_1(void) {
+  (void)vsph_sysinfo_build_isa();
+}
+
+static void call_vsph_sysinfo_peak_rss_0(void) {
+  (void)vsph_sysinfo_peak_rss();
+}
+
+static void call_vsph_sysinfo_peak_rss_1(void) {
+  (void)vsph_sysinfo_peak_rss();
+}
+
 static const struct api_call CALLS[] = {
     {"vsph_params_alloc", call_vsph_params_alloc_0},
     {"vsph_params_alloc", call_vsph_params_alloc_1},
@@ -2407,6 +2641,72 @@ static const struct api_call CALLS[] = {
     {"vsph_laplacian_props_init", call_vsph_laplacian_props_init_1},
     {"vsph_laplacian_patch", call_vsph_laplacian_patch_0},
     {"vsph_laplacian_patch", call_vsph_laplacian_patch_1},
+    {"vsph_integrate_alloc", call_vsph_integrate_alloc_0},
+    {"vsph_integrate_alloc", call_vsph_integrate_alloc_1},
+    {"vsph_integrate_free", call_vsph_integrate_free_0},
+    {"vsph_integrate_free", call_vsph_integrate_free_1},
+    {"vsph_integrate_dt", call_vsph_integrate_dt_0},
+    {"vsph_integrate_dt", call_vsph_integrate_dt_1},
+    {"vsph_integrate_dt_rule", call_vsph_integrate_dt_rule_0},
+    {"vsph_integrate_dt_rule", call_vsph_integrate_dt_rule_1},
+    {"vsph_integrate_step", call_vsph_integrate_step_0},
+    {"vsph_integrate_step", call_vsph_integrate_step_1},
+    {"vsph_integrate_check", call_vsph_integrate_check_0},
+    {"vsph_integrate_check", call_vsph_integrate_check_1},
+    {"vsph_integrate_diagnostics", call_vsph_integrate_diagnostics_0},
+    {"vsph_integrate_diagnostics", call_vsph_integrate_diagnostics_1},
+    {"vsph_integrate_pack", call_vsph_integrate_pack_0},
+    {"vsph_integrate_pack", call_vsph_integrate_pack_1},
+    {"vsph_integrate_wall_count", call_vsph_integrate_wall_count_0},
+    {"vsph_integrate_wall_count", call_vsph_integrate_wall_count_1},
+    {"vsph_integrate_pack_lean", call_vsph_integrate_pack_lean_0},
+    {"vsph_integrate_pack_lean", call_vsph_integrate_pack_lean_1},
+    {"vsph_integrate_pack_lean_file", call_vsph_integrate_pack_lean_file_0},
+    {"vsph_integrate_pack_lean_file", call_vsph_integrate_pack_lean_file_1},
+    {"vsph_integrate_restore_file", call_vsph_integrate_restore_file_0},
+    {"vsph_integrate_restore_file", call_vsph_integrate_restore_file_1},
+    {"vsph_integrate_unpack", call_vsph_integrate_unpack_0},
+    {"vsph_integrate_unpack", call_vsph_integrate_unpack_1},
+    {"vsph_integrate_restore", call_vsph_integrate_restore_0},
+    {"vsph_integrate_restore", call_vsph_integrate_restore_1},
+    {"vsph_integrate_bytes", call_vsph_integrate_bytes_0},
+    {"vsph_integrate_bytes", call_vsph_integrate_bytes_1},
+    {"vsph_integrate_bytes_estimate", call_vsph_integrate_bytes_estimate_0},
+    {"vsph_integrate_bytes_estimate", call_vsph_integrate_bytes_estimate_1},
+    {"vsph_materials_drag_row", call_vsph_materials_drag_row_0},
+    {"vsph_materials_drag_row", call_vsph_materials_drag_row_1},
+    {"vsph_materials_drag_square", call_vsph_materials_drag_square_0},
+    {"vsph_materials_drag_square", call_vsph_materials_drag_square_1},
+    {"vsph_materials_count", call_vsph_materials_count_0},
+    {"vsph_materials_count", call_vsph_materials_count_1},
+    {"vsph_materials_get", call_vsph_materials_get_0},
+    {"vsph_materials_get", call_vsph_materials_get_1},
+    {"vsph_materials_resolve", call_vsph_materials_resolve_0},
+    {"vsph_materials_resolve", call_vsph_materials_resolve_1},
+    {"vsph_diagnostics_surface_threshold",
+     call_vsph_diagnostics_surface_threshold_0},
+    {"vsph_diagnostics_surface_threshold",
+     call_vsph_diagnostics_surface_threshold_1},
+    {"vsph_diagnostics_compute", call_vsph_diagnostics_compute_0},
+    {"vsph_diagnostics_compute", call_vsph_diagnostics_compute_1},
+    {"vsph_diagnostics_compute_cells", call_vsph_diagnostics_compute_cells_0},
+    {"vsph_diagnostics_compute_cells", call_vsph_diagnostics_compute_cells_1},
+    {"vsph_diagnostics_probe", call_vsph_diagnostics_probe_0},
+    {"vsph_diagnostics_probe", call_vsph_diagnostics_probe_1},
+    {"vsph_diagnostics_free", call_vsph_diagnostics_free_0},
+    {"vsph_diagnostics_free", call_vsph_diagnostics_free_1},
+    {"vsph_sysinfo_load", call_vsph_sysinfo_load_0},
+    {"vsph_sysinfo_load", call_vsph_sysinfo_load_1},
+    {"vsph_sysinfo_cpu_s", call_vsph_sysinfo_cpu_s_0},
+    {"vsph_sysinfo_cpu_s", call_vsph_sysinfo_cpu_s_1},
+    {"vsph_sysinfo_thread_cpu_s", call_vsph_sysinfo_thread_cpu_s_0},
+    {"vsph_sysinfo_thread_cpu_s", call_vsph_sysinfo_thread_cpu_s_1},
+    {"vsph_sysinfo_wait_policy", call_vsph_sysinfo_wait_policy_0},
+    {"vsph_sysinfo_wait_policy", call_vsph_sysinfo_wait_policy_1},
+    {"vsph_sysinfo_build_isa", call_vsph_sysinfo_build_isa_0},
+    {"vsph_sysinfo_build_isa", call_vsph_sysinfo_build_isa_1},
+    {"vsph_sysinfo_peak_rss", call_vsph_sysinfo_peak_rss_0},
+    {"vsph_sysinfo_peak_rss", call_vsph_sysinfo_peak_rss_1},
 };
 
 #define NCALLS (sizeof CALLS / sizeof CALLS[0])
