@@ -66,7 +66,7 @@ CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
-.PHONY: all deps deps-build check test report baseline bench archive full-sitting full-report asan valgrind-check prefix-check \
+.PHONY: all deps deps-build check test report baseline bench archive full-sitting full-report asan valgrind-check prefix-check public-check \
         lib doc install uninstall \
         format format-check mutate fuzz slurm-check fresh-check \
         fresh-check-tests paraview-check optional-checks reference clean
@@ -276,7 +276,7 @@ check: deps
 	@rm -rf $(BUILD)/stage
 	@scripts/install $(INSTALL_LIB) "" "$(abspath $(BUILD)/stage)" \
 	  "$(VERSION)" "$(SOVER)" $(BUILD) $(PUB_HDR) > /dev/null
-	@$(MAKE) --no-print-directory prefix-check format-check
+	@$(MAKE) --no-print-directory prefix-check public-check format-check
 	VSPH_BIN=$(BUILD)/vsph VSPH_STAGE=$(abspath $(BUILD)/stage) OMP_NUM_THREADS=2 \
 	  GOMP_SPINCOUNT=1000 $(BUILD)/check_vsph
 
@@ -432,6 +432,33 @@ prefix-check: $(LIB_OBJ) $(CLI_OBJ)
 	      *) echo "prefix-check: $$o exports $$s (want vsph_$${base}_*)"; bad=1 ;; esac; \
 	  done; \
 	done; [ $$bad -eq 0 ] && echo "prefix-check: ok"
+
+# The program (runs/, reports/, cli/) uses libvsph as examples/ do: of
+# the library's layers it includes only the public headers (PUB_HDR), so
+# what it needs is on the public face, refusing bad arguments, documented,
+# installed. And a public header includes only public headers (an
+# installed one would not find the others).
+PROG_SRC = $(wildcard runs/*.[ch] reports/*.[ch] cli/*.[ch])
+INCLUDES = sed -n 's|^[[:space:]]*\#[[:space:]]*include[[:space:]]*"\([^"]*\)".*|\1|p'
+public-check:
+	@bad=0; pub=" $(PUB_HDR) "; \
+	for f in $(PROG_SRC); do \
+	  for h in $$($(INCLUDES) $$f); do \
+	    case $$h in ../common/*|../kernels/*|../solver/*|../analysis/*|../io/*) \
+	      case "$$pub" in *" $${h#../} "*) ;; *) bad=1; \
+	        echo "public-check: $$f includes $${h#../}, not a public header (PUB_HDR)" ;; \
+	      esac ;; \
+	    esac; \
+	  done; \
+	done; \
+	for f in $(PUB_HDR); do \
+	  for h in $$($(INCLUDES) $$f); do \
+	    r=$$(realpath -m --relative-to=. $$(dirname $$f)/$$h); \
+	    case "$$pub" in *" $$r "*) ;; *) bad=1; \
+	      echo "public-check: the public $$f includes $$r, not a public header" ;; \
+	    esac; \
+	  done; \
+	done; [ $$bad -eq 0 ] && echo "public-check: ok"
 
 FMT_SRC = $(wildcard vsph.h common/*.[ch] kernels/*.[ch] solver/*.[ch] \
             solver/scenes/*.[ch] solver/forms/*.[ch] analysis/*.[ch] io/*.[ch] \
