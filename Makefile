@@ -43,15 +43,19 @@ LDLIBS    = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcmark-gfm-extension
 TESTLIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
 
 # Layers, lowest first: common <- kernels <- solver <- analysis <- io <-
-# runs <- reports <- cli. Everything but cli/main.c is linked into the tests.
-# The library, libvsph, is the lower five layers (common to io); runs,
-# reports and cli are the program that uses it.
+# runs <- reports <- cli. The library, libvsph, is the lower five layers
+# (common to io); runs, reports and cli are the program that uses it, as
+# examples/ do: through the public headers (public-check) and linked
+# against libvsph.a. The tests link the program's objects but
+# cli/main.o, and the same archive.
 CORE_SRC := $(wildcard common/*.c kernels/*.c solver/*.c solver/scenes/*.c \
               solver/forms/*.c analysis/*.c io/*.c)
-LIB_SRC  := $(CORE_SRC) $(wildcard runs/*.c reports/*.c)
+PROG_SRC := $(wildcard runs/*.c reports/*.c)
+PROG_OBJ := $(PROG_SRC:%.c=$(BUILD)/%.o)
+ALL_SRC  := $(CORE_SRC) $(PROG_SRC)
 CLI_SRC  := $(wildcard cli/*.c)
 TEST_SRC := $(wildcard tests/*.c)
-LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
+ALL_OBJ  := $(ALL_SRC:%.c=$(BUILD)/%.o)
 # A hash of every source file, linked in as vsph_source_hash_id: the
 # report's cache keys include it, so any change to the code reruns.
 TEXT_SRC := $(sort $(wildcard reports/text/*.md reports/claims/*.md))
@@ -63,6 +67,9 @@ HASH_OBJ := $(BUILD)/gen/source_hash.o
 # compiled in.
 TEXT_OBJ := $(BUILD)/gen/text_blocks.o
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
+# The library's static archive (below, "the library"), which the program
+# and the tests link.
+LIBA     := $(BUILD)/libvsph.a
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
@@ -133,10 +140,12 @@ $(BUILD)/gen/text_blocks.c: $(TEXT_SRC) scripts/embed-text
 $(TEXT_OBJ): $(BUILD)/gen/text_blocks.c reports/text.h
 	$(CC) -std=c11 -fPIC -I. $(SAN) -c $< -o $@
 
-$(BUILD)/vsph: $(LIB_OBJ) $(CLI_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
+# The archive last: the linker takes from it what the objects before it
+# name (the source hash included).
+$(BUILD)/vsph: $(PROG_OBJ) $(CLI_OBJ) $(TEXT_OBJ) $(LIBA)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
 
-$(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
+$(BUILD)/check_vsph: $(PROG_OBJ) $(CLI_LIB) $(TEST_OBJ) $(TEXT_OBJ) $(LIBA)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(TESTLIBS) $(LDLIBS)
 
 # The FULL report's runs that ended, kept compact in reports/full (see
@@ -178,7 +187,6 @@ full-report: deps $(BUILD)/vsph
 # shows (docs/library.md).
 VERSION := $(shell sed -n 's/^\#define VSPH_VERSION "\(.*\)"/\1/p' common/consts.h)
 SOVER   := 0
-LIBA    := $(BUILD)/libvsph.a
 LIBSO   := $(BUILD)/libvsph.so.$(VERSION)
 PUB_HDR := vsph.h common/api.h common/consts.h common/status.h common/params.h \
            common/sysinfo.h \
@@ -224,8 +232,8 @@ $(PORT)/libvsph.so.$(VERSION): $(PORT_ALL)
 # libexec/vsph/x86-64-v3/, which the baseline's starts where the CPU has
 # x86-64-v3 (cli/main.c, faster_copy).
 LIB_INST += $(PORT)/vsph
-$(PORT)/vsph: $(LIB_SRC:%.c=$(PORT)/%.o) $(CLI_SRC:%.c=$(PORT)/%.o) \
-              $(HASH_OBJ) $(TEXT_OBJ)
+$(PORT)/vsph: $(PROG_SRC:%.c=$(PORT)/%.o) $(CLI_SRC:%.c=$(PORT)/%.o) \
+              $(TEXT_OBJ) $(PORT)/libvsph.a
 	$(CC) $(PORTCFLAGS) -o $@ $^ $(LDLIBS)
 endif
 INSTALL_LIB = $(if $(HWCAPS),--hwcaps $(HWCAPS) $(PORT))
@@ -398,7 +406,7 @@ fuzz:
 	  -close_fd_mask=2 -print_final_stats=1 -timeout=20 \
 	  build-fuzz/corpus/folder tests/fuzz/corpus/folder
 
-$(BUILD)/fuzz_%: tests/fuzz/fuzz_%.c $(LIB_OBJ) $(CLI_LIB) $(HASH_OBJ) $(TEXT_OBJ)
+$(BUILD)/fuzz_%: tests/fuzz/fuzz_%.c $(PROG_OBJ) $(CLI_LIB) $(TEXT_OBJ) $(LIBA)
 	$(CC) $(ALLCFLAGS) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)
 
 asan: deps
@@ -419,13 +427,13 @@ valgrind-check: deps
 # its NAME); and a prefix belongs to one file: two files of one name in
 # two folders (runs/x.c and io/x.c) would share theirs, so the names of
 # the objects must differ across folders.
-prefix-check: $(LIB_OBJ) $(CLI_OBJ)
-	@bad=0; dup=$$(for o in $(LIB_OBJ) $(CLI_OBJ); do basename $$o; done | \
+prefix-check: $(ALL_OBJ) $(CLI_OBJ)
+	@bad=0; dup=$$(for o in $(ALL_OBJ) $(CLI_OBJ); do basename $$o; done | \
 	  sort | uniq -d); for d in $$dup; do \
 	  echo "prefix-check: two files named $${d%.o}.c share the prefix vsph_$${d%.o}_:" \
-	    $$(for o in $(LIB_OBJ) $(CLI_OBJ); do case $$o in */$$d) echo $$o ;; esac; done); \
+	    $$(for o in $(ALL_OBJ) $(CLI_OBJ); do case $$o in */$$d) echo $$o ;; esac; done); \
 	  bad=1; done; \
-	for o in $(LIB_OBJ) $(CLI_OBJ); do \
+	for o in $(ALL_OBJ) $(CLI_OBJ); do \
 	  base=$$(basename $$o .o); \
 	  for s in $$(nm -g --defined-only $$o | awk '{print $$3}'); do \
 	    case $$s in vsph_$${base}_*|.gomp_critical_user_vsph_$${base}_*) ;; main) [ $$base = main ] || { echo "$$o: $$s"; bad=1; } ;; \
@@ -438,11 +446,11 @@ prefix-check: $(LIB_OBJ) $(CLI_OBJ)
 # what it needs is on the public face, refusing bad arguments, documented,
 # installed. And a public header includes only public headers (an
 # installed one would not find the others).
-PROG_SRC = $(wildcard runs/*.[ch] reports/*.[ch] cli/*.[ch])
+PROG_FILES = $(wildcard runs/*.[ch] reports/*.[ch] cli/*.[ch])
 INCLUDES = sed -n 's|^[[:space:]]*\#[[:space:]]*include[[:space:]]*"\([^"]*\)".*|\1|p'
 public-check:
 	@bad=0; pub=" $(PUB_HDR) "; \
-	for f in $(PROG_SRC); do \
+	for f in $(PROG_FILES); do \
 	  for h in $$($(INCLUDES) $$f); do \
 	    case $$h in ../common/*|../kernels/*|../solver/*|../analysis/*|../io/*) \
 	      case "$$pub" in *" $${h#../} "*) ;; *) bad=1; \
@@ -480,5 +488,5 @@ format-check:
 clean:
 	rm -rf build build-asan build-fuzz
 
--include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) \
-  $(LIB_SRC:%.c=$(PORT)/%.d) $(CLI_SRC:%.c=$(PORT)/%.d)
+-include $(ALL_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) \
+  $(ALL_SRC:%.c=$(PORT)/%.d) $(CLI_SRC:%.c=$(PORT)/%.d)
