@@ -4,7 +4,9 @@
 # work as the first command on a fresh machine: they install what is missing.
 
 CC       ?= gcc
-PKGS     := gsl fftw3 yaml-0.1 libcjson libcmark-gfm zlib
+# The library's packages; the program's add cmark-gfm (the report's page).
+LIBPKGS  := gsl fftw3 yaml-0.1 libcjson zlib
+PKGS     := $(LIBPKGS) libcmark-gfm
 TESTPKGS := check
 BUILD    ?= build
 WARN     := -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
@@ -40,6 +42,7 @@ ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L -fopenmp -fno-math-errno \
             $(WARN) $(CFLAGS) \
             $(SAN) $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 LDLIBS    = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcmark-gfm-extensions -lm
+LIBLDLIBS = $(shell pkg-config --libs $(LIBPKGS) 2>/dev/null) -lm
 TESTLIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
 
 # Layers, lowest first: common <- kernels <- solver <- analysis <- io <-
@@ -206,7 +209,7 @@ $(LIBA): $(LIB_ALL)
 	ar rcs $@ $^
 
 $(LIBSO): $(LIB_ALL)
-	$(CC) $(ALLCFLAGS) -shared -Wl,-soname,libvsph.so.$(SOVER) -o $@ $^ $(LDLIBS)
+	$(CC) $(ALLCFLAGS) -shared -Wl,-soname,libvsph.so.$(SOVER) -o $@ $^ $(LIBLDLIBS)
 
 # The installed library runs on any x86-64. Where this build is for
 # x86-64-v3 (AVX2 and FMA, the default on a CPU that has them), the
@@ -227,7 +230,7 @@ $(PORT)/libvsph.a: $(PORT_ALL)
 	@rm -f $@
 	ar rcs $@ $^
 $(PORT)/libvsph.so.$(VERSION): $(PORT_ALL)
-	$(CC) $(PORTCFLAGS) -shared -Wl,-soname,libvsph.so.$(SOVER) -o $@ $^ $(LDLIBS)
+	$(CC) $(PORTCFLAGS) -shared -Wl,-soname,libvsph.so.$(SOVER) -o $@ $^ $(LIBLDLIBS)
 # The program likewise: the baseline's in bin/, this build's in
 # libexec/vsph/x86-64-v3/, which the baseline's starts where the CPU has
 # x86-64-v3 (cli/main.c, faster_copy).
