@@ -4,7 +4,9 @@
 # work as the first command on a fresh machine: they install what is missing.
 
 CC       ?= gcc
-PKGS     := gsl fftw3 yaml-0.1 libcjson libcmark-gfm zlib
+# The library's packages; the program's add cmark-gfm (the report's page).
+LIBPKGS  := gsl fftw3 yaml-0.1 libcjson zlib
+PKGS     := $(LIBPKGS) libcmark-gfm
 TESTPKGS := check
 BUILD    ?= build
 WARN     := -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
@@ -40,18 +42,23 @@ ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L -fopenmp -fno-math-errno \
             $(WARN) $(CFLAGS) \
             $(SAN) $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 LDLIBS    = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcmark-gfm-extensions -lm
+LIBLDLIBS = $(shell pkg-config --libs $(LIBPKGS) 2>/dev/null) -lm
 TESTLIBS  = $(shell pkg-config --libs $(TESTPKGS) 2>/dev/null)
 
 # Layers, lowest first: common <- kernels <- solver <- analysis <- io <-
-# runs <- reports <- cli. Everything but cli/main.c is linked into the tests.
-# The library, libvsph, is the lower five layers (common to io); runs,
-# reports and cli are the program that uses it.
+# runs <- reports <- cli. The library, libvsph, is the lower five layers
+# (common to io); runs, reports and cli are the program that uses it, as
+# examples/ do: through the public headers (public-check) and linked
+# against libvsph.a. The tests link the program's objects but
+# cli/main.o, and the same archive.
 CORE_SRC := $(wildcard common/*.c kernels/*.c solver/*.c solver/scenes/*.c \
               solver/forms/*.c analysis/*.c io/*.c)
-LIB_SRC  := $(CORE_SRC) $(wildcard runs/*.c reports/*.c)
+PROG_SRC := $(wildcard runs/*.c reports/*.c)
+PROG_OBJ := $(PROG_SRC:%.c=$(BUILD)/%.o)
+ALL_SRC  := $(CORE_SRC) $(PROG_SRC)
 CLI_SRC  := $(wildcard cli/*.c)
 TEST_SRC := $(wildcard tests/*.c)
-LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
+ALL_OBJ  := $(ALL_SRC:%.c=$(BUILD)/%.o)
 # A hash of every source file, linked in as vsph_source_hash_id: the
 # report's cache keys include it, so any change to the code reruns.
 TEXT_SRC := $(sort $(wildcard reports/text/*.md reports/claims/*.md))
@@ -63,10 +70,13 @@ HASH_OBJ := $(BUILD)/gen/source_hash.o
 # compiled in.
 TEXT_OBJ := $(BUILD)/gen/text_blocks.o
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
+# The library's static archive (below, "the library"), which the program
+# and the tests link.
+LIBA     := $(BUILD)/libvsph.a
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
-.PHONY: all deps deps-build check test report baseline bench archive full-sitting full-report asan valgrind-check prefix-check \
+.PHONY: all deps deps-build check test report baseline bench archive full-sitting full-report asan valgrind-check prefix-check public-check \
         lib doc install uninstall \
         format format-check mutate fuzz slurm-check fresh-check \
         fresh-check-tests paraview-check optional-checks reference clean
@@ -133,10 +143,12 @@ $(BUILD)/gen/text_blocks.c: $(TEXT_SRC) scripts/embed-text
 $(TEXT_OBJ): $(BUILD)/gen/text_blocks.c reports/text.h
 	$(CC) -std=c11 -fPIC -I. $(SAN) -c $< -o $@
 
-$(BUILD)/vsph: $(LIB_OBJ) $(CLI_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
+# The archive last: the linker takes from it what the objects before it
+# name (the source hash included).
+$(BUILD)/vsph: $(PROG_OBJ) $(CLI_OBJ) $(TEXT_OBJ) $(LIBA)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
 
-$(BUILD)/check_vsph: $(LIB_OBJ) $(CLI_LIB) $(TEST_OBJ) $(HASH_OBJ) $(TEXT_OBJ)
+$(BUILD)/check_vsph: $(PROG_OBJ) $(CLI_LIB) $(TEST_OBJ) $(TEXT_OBJ) $(LIBA)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(TESTLIBS) $(LDLIBS)
 
 # The FULL report's runs that ended, kept compact in reports/full (see
@@ -178,15 +190,18 @@ full-report: deps $(BUILD)/vsph
 # shows (docs/library.md).
 VERSION := $(shell sed -n 's/^\#define VSPH_VERSION "\(.*\)"/\1/p' common/consts.h)
 SOVER   := 0
-LIBA    := $(BUILD)/libvsph.a
 LIBSO   := $(BUILD)/libvsph.so.$(VERSION)
 PUB_HDR := vsph.h common/api.h common/consts.h common/status.h common/params.h \
+           common/sysinfo.h \
            kernels/kernel.h solver/particles.h solver/cells.h solver/pair.h \
            solver/viscous.h solver/equations.h solver/walls.h solver/scene.h \
-           solver/run.h solver/lattice.h solver/forms/brookshaw.h solver/forms/er.h \
+           solver/run.h solver/lattice.h solver/integrate.h solver/materials.h \
+           solver/diagnostics.h solver/forms/brookshaw.h solver/forms/er.h \
            solver/forms/morris.h solver/forms/stress.h solver/forms/takeda.h \
            solver/forms/zheng.h analysis/moments.h analysis/fields.h \
-           analysis/scaling.h analysis/dissipation.h analysis/references.h
+           analysis/scaling.h analysis/dissipation.h analysis/references.h \
+           analysis/series.h analysis/contact.h analysis/laplacian.h \
+           io/files.h io/csv.h io/json.h io/plot.h io/vtk.h
 LIB_ALL := $(CORE_SRC:%.c=$(BUILD)/%.o) $(HASH_OBJ)
 
 $(LIBA): $(LIB_ALL)
@@ -194,7 +209,7 @@ $(LIBA): $(LIB_ALL)
 	ar rcs $@ $^
 
 $(LIBSO): $(LIB_ALL)
-	$(CC) $(ALLCFLAGS) -shared -Wl,-soname,libvsph.so.$(SOVER) -o $@ $^ $(LDLIBS)
+	$(CC) $(ALLCFLAGS) -shared -Wl,-soname,libvsph.so.$(SOVER) -o $@ $^ $(LIBLDLIBS)
 
 # The installed library runs on any x86-64. Where this build is for
 # x86-64-v3 (AVX2 and FMA, the default on a CPU that has them), the
@@ -215,13 +230,13 @@ $(PORT)/libvsph.a: $(PORT_ALL)
 	@rm -f $@
 	ar rcs $@ $^
 $(PORT)/libvsph.so.$(VERSION): $(PORT_ALL)
-	$(CC) $(PORTCFLAGS) -shared -Wl,-soname,libvsph.so.$(SOVER) -o $@ $^ $(LDLIBS)
+	$(CC) $(PORTCFLAGS) -shared -Wl,-soname,libvsph.so.$(SOVER) -o $@ $^ $(LIBLDLIBS)
 # The program likewise: the baseline's in bin/, this build's in
 # libexec/vsph/x86-64-v3/, which the baseline's starts where the CPU has
 # x86-64-v3 (cli/main.c, faster_copy).
 LIB_INST += $(PORT)/vsph
-$(PORT)/vsph: $(LIB_SRC:%.c=$(PORT)/%.o) $(CLI_SRC:%.c=$(PORT)/%.o) \
-              $(HASH_OBJ) $(TEXT_OBJ)
+$(PORT)/vsph: $(PROG_SRC:%.c=$(PORT)/%.o) $(CLI_SRC:%.c=$(PORT)/%.o) \
+              $(TEXT_OBJ) $(PORT)/libvsph.a
 	$(CC) $(PORTCFLAGS) -o $@ $^ $(LDLIBS)
 endif
 INSTALL_LIB = $(if $(HWCAPS),--hwcaps $(HWCAPS) $(PORT))
@@ -272,7 +287,7 @@ check: deps
 	@rm -rf $(BUILD)/stage
 	@scripts/install $(INSTALL_LIB) "" "$(abspath $(BUILD)/stage)" \
 	  "$(VERSION)" "$(SOVER)" $(BUILD) $(PUB_HDR) > /dev/null
-	@$(MAKE) --no-print-directory prefix-check format-check
+	@$(MAKE) --no-print-directory prefix-check public-check format-check
 	VSPH_BIN=$(BUILD)/vsph VSPH_STAGE=$(abspath $(BUILD)/stage) OMP_NUM_THREADS=2 \
 	  GOMP_SPINCOUNT=1000 $(BUILD)/check_vsph
 
@@ -394,7 +409,7 @@ fuzz:
 	  -close_fd_mask=2 -print_final_stats=1 -timeout=20 \
 	  build-fuzz/corpus/folder tests/fuzz/corpus/folder
 
-$(BUILD)/fuzz_%: tests/fuzz/fuzz_%.c $(LIB_OBJ) $(CLI_LIB) $(HASH_OBJ) $(TEXT_OBJ)
+$(BUILD)/fuzz_%: tests/fuzz/fuzz_%.c $(PROG_OBJ) $(CLI_LIB) $(TEXT_OBJ) $(LIBA)
 	$(CC) $(ALLCFLAGS) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)
 
 asan: deps
@@ -415,19 +430,46 @@ valgrind-check: deps
 # its NAME); and a prefix belongs to one file: two files of one name in
 # two folders (runs/x.c and io/x.c) would share theirs, so the names of
 # the objects must differ across folders.
-prefix-check: $(LIB_OBJ) $(CLI_OBJ)
-	@bad=0; dup=$$(for o in $(LIB_OBJ) $(CLI_OBJ); do basename $$o; done | \
+prefix-check: $(ALL_OBJ) $(CLI_OBJ)
+	@bad=0; dup=$$(for o in $(ALL_OBJ) $(CLI_OBJ); do basename $$o; done | \
 	  sort | uniq -d); for d in $$dup; do \
 	  echo "prefix-check: two files named $${d%.o}.c share the prefix vsph_$${d%.o}_:" \
-	    $$(for o in $(LIB_OBJ) $(CLI_OBJ); do case $$o in */$$d) echo $$o ;; esac; done); \
+	    $$(for o in $(ALL_OBJ) $(CLI_OBJ); do case $$o in */$$d) echo $$o ;; esac; done); \
 	  bad=1; done; \
-	for o in $(LIB_OBJ) $(CLI_OBJ); do \
+	for o in $(ALL_OBJ) $(CLI_OBJ); do \
 	  base=$$(basename $$o .o); \
 	  for s in $$(nm -g --defined-only $$o | awk '{print $$3}'); do \
 	    case $$s in vsph_$${base}_*|.gomp_critical_user_vsph_$${base}_*) ;; main) [ $$base = main ] || { echo "$$o: $$s"; bad=1; } ;; \
 	      *) echo "prefix-check: $$o exports $$s (want vsph_$${base}_*)"; bad=1 ;; esac; \
 	  done; \
 	done; [ $$bad -eq 0 ] && echo "prefix-check: ok"
+
+# The program (runs/, reports/, cli/) uses libvsph as examples/ do: of
+# the library's layers it includes only the public headers (PUB_HDR), so
+# what it needs is on the public face, refusing bad arguments, documented,
+# installed. And a public header includes only public headers (an
+# installed one would not find the others).
+PROG_FILES = $(wildcard runs/*.[ch] reports/*.[ch] cli/*.[ch])
+INCLUDES = sed -n 's|^[[:space:]]*\#[[:space:]]*include[[:space:]]*"\([^"]*\)".*|\1|p'
+public-check:
+	@bad=0; pub=" $(PUB_HDR) "; \
+	for f in $(PROG_FILES); do \
+	  for h in $$($(INCLUDES) $$f); do \
+	    case $$h in ../common/*|../kernels/*|../solver/*|../analysis/*|../io/*) \
+	      case "$$pub" in *" $${h#../} "*) ;; *) bad=1; \
+	        echo "public-check: $$f includes $${h#../}, not a public header (PUB_HDR)" ;; \
+	      esac ;; \
+	    esac; \
+	  done; \
+	done; \
+	for f in $(PUB_HDR); do \
+	  for h in $$($(INCLUDES) $$f); do \
+	    r=$$(realpath -m --relative-to=. $$(dirname $$f)/$$h); \
+	    case "$$pub" in *" $$r "*) ;; *) bad=1; \
+	      echo "public-check: the public $$f includes $$r, not a public header" ;; \
+	    esac; \
+	  done; \
+	done; [ $$bad -eq 0 ] && echo "public-check: ok"
 
 FMT_SRC = $(wildcard vsph.h common/*.[ch] kernels/*.[ch] solver/*.[ch] \
             solver/scenes/*.[ch] solver/forms/*.[ch] analysis/*.[ch] io/*.[ch] \
@@ -449,5 +491,5 @@ format-check:
 clean:
 	rm -rf build build-asan build-fuzz
 
--include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) \
-  $(LIB_SRC:%.c=$(PORT)/%.d) $(CLI_SRC:%.c=$(PORT)/%.d)
+-include $(ALL_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) \
+  $(ALL_SRC:%.c=$(PORT)/%.d) $(CLI_SRC:%.c=$(PORT)/%.d)

@@ -31,6 +31,13 @@
  *    time loop, vsph_run_alloc / vsph_run_iterate / vsph_run_row, with
  *    no file written.
  *
+ *  The other public headers install beside this one, each included by
+ *  name (docs/library.md): the integrator, the materials and the
+ *  per-particle diagnostics (solver/), the energy-series measures,
+ *  contact SPH's viscosity and the Laplacian patch test (analysis/), the
+ *  writers and readers (io/: files, CSV, JSON, VTK, gnuplot figures) and
+ *  the machine's facts beside a timing (common/sysinfo.h).
+ *
  *  Names: every symbol starts with vsph_<module>_ (REBOUND's rule). */
 
 /* C linkage for a C++ program; the includes are one block, which

@@ -23,8 +23,8 @@
 /* The images of the square wave of period 2W that matter: |n| up to the
  * first whose erf terms are within 1e-17 of +-1 everywhere on (-W, W). */
 static int images(double d, double W) {
-  const int n = (int)ceil(6.0 * d / (2.0 * W)) + 1;
-  return n > 1000 ? 1000 : n;
+  const double n = ceil(6.0 * d / (2.0 * W)) + 1.0; /* NaN: W not > 0 */
+  return !(n <= 1000.0) ? 1000 : n < 1.0 ? 1 : (int)n;
 }
 
 double vsph_contact_shear_u(double x, double t, double nu, double U0,
@@ -68,7 +68,10 @@ double vsph_contact_shear_dy(double x, double t, double nu, double U0,
 
 double vsph_contact_drag_ratio(const double *px, size_t n, double rho, double S,
                                double U_drive, double *U, double *drift) {
-  if (n == 0) {
+  double u_own, drift_own;
+  if (!U) U = &u_own;
+  if (!drift) drift = &drift_own;
+  if (n == 0 || !px) {
     *U = *drift = (double)NAN;
     return (double)NAN;
   }
@@ -93,6 +96,15 @@ double vsph_contact_bimaterial_u(double x, double t, double uL, double etaL,
  * both predictions. */
 static double lattice_sum(const struct vsph_kernel_type *k, int dim,
                           double alpha, int visc) {
+  /* a kernel, 2-D or 3-D, and a support of at most 64 spacings (the
+   * paper's alpha, 0.5 to 1, reaches 2 to 3) */
+  if (!k || (dim != 2 && dim != 3) || !(alpha > 0.0) ||
+      !(k->kappa * 2.0 * alpha <= 64.0)) {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "a lattice sum needs a kernel, dim 2 or 3 and "
+                       "0 < kappa 2 alpha <= 64");
+    return (double)NAN;
+  }
   const double h = 2.0 * alpha, H = k->kappa * h;
   const int m = (int)ceil(H);
   double s = 0.0;
@@ -143,7 +155,7 @@ double vsph_contact_fit_nu(size_t n, const double *x, const double *v, int dy,
                            double t, double U0, double W, double lo, double hi,
                            double *rms) {
   struct fit f = {n, x, v, dy, t, U0, W};
-  if (!(n > 0) || !(lo > 0.0) || !(hi > lo) || !(t > 0.0)) {
+  if (!(n > 0) || !x || !v || !(lo > 0.0) || !(hi > lo) || !(t > 0.0)) {
     vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
                        "a viscosity fit needs data, 0 < lo < hi and t > 0");
     return NAN;
@@ -185,6 +197,7 @@ double vsph_contact_fit_nu(size_t n, const double *x, const double *v, int dy,
 }
 
 void vsph_contact_shear_free(struct vsph_contact_shear *cs) {
+  if (!cs) return;
   free(cs->x);
   cs->x = NULL;
   for (int k = 0; k < 8; k++) {
@@ -219,6 +232,7 @@ static void profile(const struct vsph_run *run, const double *disp,
 }
 
 int vsph_contact_defaults(struct vsph_params *prm) {
+  if (!prm) VSPH_FAIL(VSPH_EINVAL, "vsph_contact_defaults: a NULL argument");
   int st = vsph_scene_solver_defaults(&vsph_shear_type, prm);
   if (!st && !vsph_params_given(prm, "Scene:viscous"))
     st = vsph_params_set(prm, "Scene:viscous", "0");
@@ -485,6 +499,8 @@ static int shear_steps(struct vsph_contact_shear *cs, struct vsph_run *run,
 
 int vsph_contact_shear_measure(struct vsph_params *prm,
                                struct vsph_contact_shear *cs) {
+  if (!prm || !cs)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_contact_shear_measure: a NULL argument");
   shear_reset(cs);
   const size_t nprof = cs->nprof;
   struct vsph_run_props rp;
@@ -532,6 +548,9 @@ double vsph_contact_bimaterial_fit(const double *tt, const double *x,
                                    double U0, double nuL, double nuR, double W,
                                    double etaL, double rhoL, double etaR,
                                    double rhoR, double *rms_exact) {
+  double rms_own;
+  if (!rms_exact) rms_exact = &rms_own;
+  if (n && (!tt || !x || !u)) return *rms_exact = (double)NAN;
   double num = 0, den = 0, e2 = 0;
   size_t m = 0;
   for (size_t i = 0; i < n; i++) {

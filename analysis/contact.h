@@ -6,6 +6,8 @@
 #include <signal.h>
 #include <stddef.h>
 
+#include "../common/api.h"
+
 struct vsph_kernel_type;
 struct vsph_params;
 
@@ -15,21 +17,25 @@ struct vsph_params;
  * shear layer (Stokes' first problem, their eq. 10) and its control surface,
  *  the lattice-sum prediction of the acoustic solver's viscosity, and the
  *  paper's measurement: run the shear scene, fit the viscosity whose exact
- *  solution matches the SPH profile. No I/O beyond the run's progress. */
+ *  solution matches the SPH profile. No I/O beyond the run's progress.
+ *  A NULL argument is refused: VSPH_EINVAL (reported) where a status is
+ *  returned, else NaN; an output the caller does not want (rms,
+ *  rms_exact, U, drift, ustar) may be NULL. */
 
 /** @brief u_y(x, t) of the shear layer u_y(x, 0) = U0 sign(x) on the
  *  period (-W, W) (slip walls at +-W/2 are planes of symmetry):
  *  U0 [sum_n erf((x - 2nW)/d) - erf((x - 2nW - W)/d) - 1], d = sqrt(4 nu
  *  t), the images summed while they matter. Stokes' first problem, Parshikov et
  * al. eq. (10), while d << W. NaN for a NaN @p nu (a fit not available). */
-double vsph_contact_shear_u(double x, double t, double nu, double U0, double W);
+VSPH_API double vsph_contact_shear_u(double x, double t, double nu, double U0,
+                                     double W);
 
 /** @brief The displacement of the same flow's material line (Parshikov et al.'s
  *  "control surface"), int_0^t u_y dt, in closed form: per erf image,
  *  t sign(xi) [1 - (1 + 2 xi^2) erfc|xi| + 2|xi| e^{-xi^2}/sqrt(pi)],
  *  xi = x/d. */
-double vsph_contact_shear_dy(double x, double t, double nu, double U0,
-                             double W);
+VSPH_API double vsph_contact_shear_dy(double x, double t, double nu, double U0,
+                                      double W);
 
 /** @brief The effective viscosity that the correcting tensor leaves
  *  (Parshikov et al.'s model, docs/theory.md section 12): the scheme's
@@ -37,8 +43,9 @@ double vsph_contact_shear_dy(double x, double t, double nu, double U0,
  *  f_lat times what the contact stress carries, the physical eta less
  *  the removed fraction zeta of the fitted numerical one,
  *  eta_num = fit rho c D0 (Pa s). */
-double vsph_contact_eta_model(double C, double rho, double c, double D0,
-                              double flat, double eta, double zeta, double fit);
+VSPH_API double vsph_contact_eta_model(double C, double rho, double c,
+                                       double D0, double flat, double eta,
+                                       double zeta, double fit);
 
 /** @brief The contact velocity that best fits a two-material profile:
  *  the @p n samples (x[i], u[i]) taken at time tt[i]; those at time @p t
@@ -49,11 +56,12 @@ double vsph_contact_eta_model(double C, double rho, double c, double D0,
  *  for no sample. @p rms_exact receives the RMS misfit (over U0) of the
  *  exact profile (vsph_contact_bimaterial_u with etaL, rhoL, etaR, rhoR)
  *  at those samples. */
-double vsph_contact_bimaterial_fit(const double *tt, const double *x,
-                                   const double *u, size_t n, double t,
-                                   double U0, double nuL, double nuR, double W,
-                                   double etaL, double rhoL, double etaR,
-                                   double rhoR, double *rms_exact);
+VSPH_API double vsph_contact_bimaterial_fit(const double *tt, const double *x,
+                                            const double *u, size_t n, double t,
+                                            double U0, double nuL, double nuR,
+                                            double W, double etaL, double rhoL,
+                                            double etaR, double rhoR,
+                                            double *rms_exact);
 
 /** @brief The drag of a square array of cylinders (period S, fluid
  *  density @p rho) driven by eq. (39)'s force at the target superficial
@@ -62,32 +70,36 @@ double vsph_contact_bimaterial_fit(const double *tt, const double *x,
  *  last tenth of the rows *drift = (px[n-1] - px[n-1-(n-1)/10])/px[n-1],
  *  and the drag ratio (F/(eta U))_SPH over eq. (39)'s, U_drive / *U (the
  *  force is eq. (39)'s at U_drive). NaN for n = 0. */
-double vsph_contact_drag_ratio(const double *px, size_t n, double rho, double S,
-                               double U_drive, double *U, double *drift);
+VSPH_API double vsph_contact_drag_ratio(const double *px, size_t n, double rho,
+                                        double S, double U_drive, double *U,
+                                        double *drift);
 
 /** @brief Two semi-infinite materials (left x < 0, right x > 0) sliding at
  *  uL and uR with viscosities etaL, etaR and densities rhoL, rhoR: the
  *  contact velocity (Parshikov et al. eq. 27, the effusivity-weighted mean
  *  sqrt(eta rho)) and u(x, t) = U* + (u_side - U*) erf(|x|/sqrt(4 nu_side
  *  t)). @p ustar receives U* when not NULL. */
-double vsph_contact_bimaterial_u(double x, double t, double uL, double etaL,
-                                 double rhoL, double uR, double etaR,
-                                 double rhoR, double *ustar);
+VSPH_API double vsph_contact_bimaterial_u(double x, double t, double uL,
+                                          double etaL, double rhoL, double uR,
+                                          double etaR, double rhoR,
+                                          double *ustar);
 
 /** @brief The acoustic solver's numerical viscosity predicted by a
  *  lattice sum (docs/theory.md section 12): for identical particles in
  *  shear, nu_num = (c/2) sum_j V_j x_j^2 (y_j/r_j)^2 |W'(r_j)| over the
  *  simple cubic lattice of spacing D0 (3-D; the square one in 2-D), with
- *  h = 2 alpha D0. @return nu_num/(c D0) = eta_num/(Z D0). */
-double vsph_contact_lattice_coef(const struct vsph_kernel_type *k, int dim,
-                                 double alpha);
+ *  h = 2 alpha D0. @return nu_num/(c D0) = eta_num/(Z D0); NaN (reported)
+ *  unless @p dim is 2 or 3 and 0 < kappa 2 alpha <= 64. */
+VSPH_API double vsph_contact_lattice_coef(const struct vsph_kernel_type *k,
+                                          int dim, double alpha);
 
 /** @brief The shear viscosity of contact SPH's viscous traction
  *  (vsph_pair_contact_visc) on the same static lattice, over eta:
  *  sum_j V_j |W'(r_j)|/r_j x_j^2 (1 + y_j^2/(3 r_j^2)) (docs/theory.md
- *  section 12; its continuum limit is 1 + 1/(3(d + 2)), 16/15 in 3-D). */
-double vsph_contact_lattice_visc_factor(const struct vsph_kernel_type *k,
-                                        int dim, double alpha);
+ *  section 12; its continuum limit is 1 + 1/(3(d + 2)), 16/15 in 3-D);
+ *  NaN for the arguments vsph_contact_lattice_coef refuses. */
+VSPH_API double vsph_contact_lattice_visc_factor(
+    const struct vsph_kernel_type *k, int dim, double alpha);
 
 /** @brief The viscosity nu in [lo, hi] whose shear-layer solution (@p dy
  *  0: u_y, vsph_contact_shear_u; 1: the control surface,
@@ -95,9 +107,9 @@ double vsph_contact_lattice_visc_factor(const struct vsph_kernel_type *k,
  *  least-squares sense: a log-spaced scan, then Brent's minimiser (GSL).
  *  @p rms receives the fit's RMS residual over U0 (u) or U0 t (dy).
  *  @return nu, or NaN on failure (reported). */
-double vsph_contact_fit_nu(size_t n, const double *x, const double *v, int dy,
-                           double t, double U0, double W, double lo, double hi,
-                           double *rms);
+VSPH_API double vsph_contact_fit_nu(size_t n, const double *x, const double *v,
+                                    int dy, double t, double U0, double W,
+                                    double lo, double hi, double *rms);
 
 /** The shear test's outcome. */
 struct vsph_contact_shear {
@@ -150,7 +162,7 @@ struct vsph_contact_shear {
  *  10 nm) and, where Scene:viscous is not given, the inviscid run
  *  (Scene:viscous = 0) of Parshikov et al.'s Table 1, which measures the
  * numerical viscosity alone. @return VSPH_OK, VSPH_ENOMEM. */
-int vsph_contact_defaults(struct vsph_params *prm);
+VSPH_API int vsph_contact_defaults(struct vsph_params *prm);
 
 /** @brief Run the shear scene with the "Solver" and "Scene" sections of
  *  @p prm (any scheme) and measure its viscosity: at each profile time
@@ -161,10 +173,10 @@ int vsph_contact_defaults(struct vsph_params *prm);
  *  parameters, or a run too short for its profiles: fewer steps than
  *  profiles, each needing a step of its own; the message names them, and
  *  nothing was run), VSPH_ENOMEM. */
-int vsph_contact_shear_measure(struct vsph_params *prm,
-                               struct vsph_contact_shear *cs);
+VSPH_API int vsph_contact_shear_measure(struct vsph_params *prm,
+                                        struct vsph_contact_shear *cs);
 
 /** @brief Free the profiles of @p cs. */
-void vsph_contact_shear_free(struct vsph_contact_shear *cs);
+VSPH_API void vsph_contact_shear_free(struct vsph_contact_shear *cs);
 
 #endif /* VSPH_ANALYSIS_CONTACT_H */

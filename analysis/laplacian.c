@@ -31,6 +31,7 @@ const char *vsph_laplacian_form_name(int form) {
 }
 
 int vsph_laplacian_form_find(const char *name) {
+  if (!name) return -1;
   const int k = vsph_viscous_find(name);
   return k >= 0 ? vsph_viscous_types[k]->lap : -1;
 }
@@ -88,13 +89,14 @@ static const struct vsph_params_spec LAPLACIAN[] = {
 #undef P
 
 const struct vsph_params_spec *vsph_laplacian_params(size_t *n) {
-  *n = sizeof LAPLACIAN / sizeof LAPLACIAN[0];
+  if (n) *n = sizeof LAPLACIAN / sizeof LAPLACIAN[0];
   return LAPLACIAN;
 }
 
 int vsph_laplacian_props_init(struct vsph_laplacian_props *lp,
                               struct vsph_params *prm) {
   struct raw r;
+  if (!lp) VSPH_FAIL(VSPH_EINVAL, "vsph_laplacian_props_init: a NULL argument");
   memset(lp, 0, sizeof *lp);
   int st =
       vsph_params_load(prm, "Laplacian", LAPLACIAN,
@@ -300,9 +302,17 @@ static void patch_reduce(const struct vsph_laplacian_props *lp,
 
 int vsph_laplacian_patch(const struct vsph_laplacian_props *lp,
                          struct vsph_laplacian_result *res) {
+  if (!lp || !res || !lp->kernel)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_laplacian_patch: a NULL argument");
   memset(res, 0, sizeof *res);
   const int dim = lp->dim;
   if (dim < 2 || dim > 3) VSPH_FAIL(VSPH_EINVAL, "the patch is 2-D or 3-D");
+  if (lp->n < 2 || !(lp->hdx > 0.0) || lp->field < 0 ||
+      lp->field >= VSPH_LAPLACIAN_FIELD_COUNT ||
+      !strcmp(vsph_laplacian_form_name(lp->form), "unknown"))
+    VSPH_FAIL(VSPH_EINVAL,
+              "vsph_laplacian_patch: n >= 2, h/dx > 0, a field and a form "
+              "of their lists");
   const double dx = 1.0 / (double)lp->n, h = lp->hdx * dx;
   const double kap = lp->kernel->kappa;
   /* ghosts: every evaluated particle (shifted by < dx/2) has full

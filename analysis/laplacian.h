@@ -5,6 +5,8 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
+
 struct vsph_kernel_type;
 struct vsph_params;
 struct vsph_params_spec;
@@ -15,7 +17,9 @@ struct vsph_params_spec;
  *  solver/pair.h applied to an analytic field sampled on a uniform or
  *  randomly perturbed lattice over the unit square (or cube), padded with
  *  ghost particles carrying the analytic field so that every evaluated
- *  particle has full support, against the exact Laplacian. No I/O. */
+ *  particle has full support, against the exact Laplacian. No I/O. A
+ *  NULL argument is refused: VSPH_EINVAL (reported) where a status is
+ *  returned, else -1 or "unknown". */
 
 /** Test fields, each with its exact Laplacian. */
 enum vsph_laplacian_field {
@@ -60,28 +64,30 @@ struct vsph_laplacian_result {
 };
 
 /** @brief Name of form @p form ("visc01" ...), or "unknown". */
-const char *vsph_laplacian_form_name(int form);
+VSPH_API const char *vsph_laplacian_form_name(int form);
 
 /** @brief Form called @p name, or -1. */
-int vsph_laplacian_form_find(const char *name);
+VSPH_API int vsph_laplacian_form_find(const char *name);
 
 /** @brief Name of field @p field ("quartic" ...), or "unknown". */
-const char *vsph_laplacian_field_name(int field);
+VSPH_API const char *vsph_laplacian_field_name(int field);
 
-/** @brief The "Laplacian" parameter table (@p n receives its length). */
-const struct vsph_params_spec *vsph_laplacian_params(size_t *n);
+/** @brief The "Laplacian" parameter table (@p n, when not NULL, receives
+ *  its length). */
+VSPH_API const struct vsph_params_spec *vsph_laplacian_params(size_t *n);
 
 /** @brief Props from the "Laplacian" section of @p prm (NULL: defaults:
  *  visc01, cubic spline, 2-D, quartic, n = 20, h/dx = 1, no perturbation,
  *  eta = 0, as the paper's patch test).
  *  @return VSPH_OK, VSPH_EINVAL (one message naming the problem). */
-int vsph_laplacian_props_init(struct vsph_laplacian_props *lp,
-                              struct vsph_params *prm);
+VSPH_API int vsph_laplacian_props_init(struct vsph_laplacian_props *lp,
+                                       struct vsph_params *prm);
 
-/** @brief Run the patch test. @return VSPH_OK, VSPH_EINVAL (the estimate
- *  of its work above max_pairs or of its memory above max_memory, refused
- *  before anything is allocated), VSPH_ENOMEM. */
-int vsph_laplacian_patch(const struct vsph_laplacian_props *lp,
-                         struct vsph_laplacian_result *res);
+/** @brief Run the patch test. @return VSPH_OK, VSPH_EINVAL (props out of
+ *  their ranges, or the estimate of its work above max_pairs or of its
+ *  memory above max_memory, refused before anything is allocated),
+ *  VSPH_ENOMEM. */
+VSPH_API int vsph_laplacian_patch(const struct vsph_laplacian_props *lp,
+                                  struct vsph_laplacian_result *res);
 
 #endif /* VSPH_ANALYSIS_LAPLACIAN_H */

@@ -10,7 +10,7 @@
 
 double vsph_series_interp(const double *t, const double *y, size_t n,
                           double x) {
-  if (n == 0 || x < t[0] || x > t[n - 1]) return (double)NAN;
+  if (n == 0 || !t || !y || x < t[0] || x > t[n - 1]) return (double)NAN;
   size_t a = 0, b = n - 1;
   while (b - a > 1) {
     const size_t m = (a + b) / 2;
@@ -24,11 +24,13 @@ double vsph_series_interp(const double *t, const double *y, size_t n,
 }
 
 double vsph_series_extrapolate(double e[2][2], const double eps[2]) {
+  if (!e || !eps) return (double)NAN;
   const double e2 = 2.0 * e[0][1] - e[0][0], e3 = 2.0 * e[1][1] - e[1][0];
   return e3 - eps[1] * (e2 - e3) / (eps[0] - eps[1]);
 }
 
 double vsph_series_decay_error(const double *E, const double *R, size_t n) {
+  if (n && (!E || !R)) return (double)NAN;
   double err = 0.0;
   for (size_t k = 0; k < n; k++)
     if (isfinite(R[k])) err = fmax(err, fabs(E[k] / E[0] - R[k] / R[0]));
@@ -38,6 +40,7 @@ double vsph_series_decay_error(const double *E, const double *R, size_t n) {
 double vsph_series_decay_error_table(const double *t, const double *E, size_t n,
                                      const double *tr, const double *Rr,
                                      size_t m) {
+  if ((n && (!t || !E)) || (m && (!tr || !Rr))) return (double)NAN;
   if (n == 0) return 0.0;
   const double R0 = vsph_series_interp(tr, Rr, m, t[0]);
   double err = 0.0;
@@ -51,6 +54,7 @@ double vsph_series_decay_error_table(const double *t, const double *E, size_t n,
 double vsph_series_onset(const double *t, const double *dE, size_t n,
                          const double *tr, const double *dR, size_t m,
                          double threshold) {
+  if ((n && (!t || !dE)) || (m > 1 && (!tr || !dR))) return (double)NAN;
   for (size_t k = 1; k < m; k++) {
     const double d = vsph_series_interp(t, dE, n, tr[k]);
     if (!isfinite(d)) return tr[k]; /* past the run's end or stop */
@@ -60,6 +64,7 @@ double vsph_series_onset(const double *t, const double *dE, size_t n,
 }
 
 double vsph_series_integral(const double *t, const double *y, size_t row) {
+  if (row && (!t || !y)) return (double)NAN;
   double s = 0.0;
   for (size_t k = 1; k <= row; k++)
     s += 0.5 * (y[k] + y[k - 1]) * (t[k] - t[k - 1]);
@@ -73,6 +78,7 @@ double vsph_series_loss_ratio(double lost, double E0, double R0, double R) {
 
 double vsph_series_first_reach(const double *t, const double *e, size_t n,
                                double scale, double from, double level) {
+  if (n && (!t || !e)) return (double)NAN;
   for (size_t k = 0; k < n; k++)
     if (t[k] * scale >= from && e[k] >= level) return t[k] * scale;
   return (double)NAN;
@@ -81,6 +87,12 @@ double vsph_series_first_reach(const double *t, const double *e, size_t n,
 double vsph_series_failure(const double *t, const double *e, size_t n,
                            double scale, double from, double level,
                            double t_stop, char *why) {
+  char none;
+  if (!why) why = &none;
+  if (n && !t) {
+    *why = ' ';
+    return (double)NAN;
+  }
   const double te =
       e ? vsph_series_first_reach(t, e, n, scale, from, level) : (double)NAN;
   if (!isnan(te)) {
@@ -97,7 +109,7 @@ double vsph_series_failure(const double *t, const double *e, size_t n,
 
 double vsph_series_tail_mean(const double *t, const double *y, size_t n,
                              double frac) {
-  if (n == 0) return (double)NAN;
+  if (n == 0 || !t || !y) return (double)NAN;
   const double t0 = frac * t[n - 1];
   double s = 0.0;
   size_t m = 0;
@@ -108,7 +120,7 @@ double vsph_series_tail_mean(const double *t, const double *y, size_t n,
 
 double vsph_series_tail_range(const double *t, const double *y, size_t n,
                               double frac) {
-  if (n == 0) return (double)NAN;
+  if (n == 0 || !t || !y) return (double)NAN;
   const double t0 = frac * t[n - 1];
   double lo = INFINITY, hi = -INFINITY;
   for (size_t k = 0; k < n; k++)
@@ -120,6 +132,11 @@ void vsph_series_plateau(const double *t, const double *E, const double *R,
                          const double *v, size_t n, double scale, double lo,
                          double hi, double *work, size_t cap, double *spread,
                          double *median) {
+  if (!spread || !median) return;
+  if ((n && (!t || !E || !R || !v)) || (cap && !work)) {
+    *spread = *median = (double)NAN;
+    return;
+  }
   double qlo = INFINITY, qhi = -INFINITY;
   size_t nv = 0;
   for (size_t k = 0; k < n; k++) {
@@ -144,6 +161,7 @@ void vsph_series_plateau(const double *t, const double *E, const double *R,
 
 int vsph_series_cfl_pick(const double *err, const int *ok, size_t n, int ncfl,
                          double fraction) {
+  if (n && ncfl > 1 && (!err || !ok)) return -1;
   int best = 0;
   for (int c = 1; c < ncfl; c++) {
     int fine = 1;
@@ -160,7 +178,7 @@ int vsph_series_cfl_pick(const double *err, const int *ok, size_t n, int ncfl,
 
 double vsph_series_interp_cubic(const double *t, const double *y, size_t n,
                                 double x) {
-  if (n < 4) return vsph_series_interp(t, y, n, x);
+  if (n < 4 || !t || !y) return vsph_series_interp(t, y, n, x);
   if (x < t[0] || x > t[n - 1]) return (double)NAN;
   size_t a = 0, b = n - 1; /* t[a] <= x <= t[b], b = a + 1 */
   while (b - a > 1) {
@@ -215,12 +233,15 @@ double vsph_series_order(double d_c, double d_f, double r_c, double r_f) {
 /* The leading rows of a rung whose time and value are finite. */
 static size_t finite_rows(const struct vsph_series_rung *r) {
   size_t n = 0;
+  if (!r->t || !r->E) return 0;
   while (n < r->n && isfinite(r->t[n]) && isfinite(r->E[n])) n++;
   return n;
 }
 
 int vsph_series_selfconv(const struct vsph_series_rung *rung, size_t nrung,
                          struct vsph_series_selfconv *out) {
+  if (!rung || !out)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_series_selfconv: a NULL argument");
   if (nrung < 2 || nrung > VSPH_SERIES_RUNGS_MAX)
     VSPH_FAIL(VSPH_EINVAL, "a ladder of %zu rungs (2 to %d)", nrung,
               VSPH_SERIES_RUNGS_MAX);
@@ -286,6 +307,10 @@ int vsph_series_selfconv(const struct vsph_series_rung *rung, size_t nrung,
 double vsph_series_slope_where(const double *x, const double *y, const int *ok,
                                size_t n, size_t *ns) {
   size_t m = 0;
+  if (n && (!x || !y || !ok)) {
+    if (ns) *ns = 0;
+    return (double)NAN;
+  }
   double *sx = malloc((n ? n : 1) * sizeof *sx),
          *sy = malloc((n ? n : 1) * sizeof *sy);
   double slope = NAN;

@@ -10,10 +10,10 @@
 #include <string.h>
 
 #include "../common/params.h"
-#include "../common/shell.h"
 #include "../common/status.h"
 #include "../runs/jobs.h"
 #include "../runs/rundir.h"
+#include "../runs/shell.h"
 #include "../solver/run.h"
 #include "../solver/scene.h"
 #include "args.h"

@@ -9,6 +9,7 @@
 #include <time.h>
 
 void vsph_sysinfo_load(double la[3]) {
+  if (!la) return;
   la[0] = la[1] = la[2] = (double)NAN;
   FILE *f = fopen("/proc/loadavg", "r"); /* size 0 to stat: read a line */
   if (!f) return;

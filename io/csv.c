@@ -11,6 +11,11 @@
 #include "files.h"
 
 FILE *vsph_csv_open(const char *dir, const char *name, const char *header) {
+  if (!header) {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "vsph_csv_open: a NULL argument");
+    return NULL;
+  }
   FILE *f = vsph_files_open(dir, name);
   if (f) fprintf(f, "%s\n", header);
   return f;
@@ -45,6 +50,11 @@ static int field(const char *s, size_t len, double *v) {
 }
 
 struct vsph_csv *vsph_csv_read(const char *path) {
+  if (!path) {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "vsph_csv_read: a NULL argument");
+    return NULL;
+  }
   char *text = vsph_files_slurp(path, NULL);
   if (!text) {
     vsph_status_report(VSPH_EIO, __FILE__, __LINE__, "cannot read %s", path);
@@ -131,12 +141,14 @@ fail:
 }
 
 size_t vsph_csv_column_number(const struct vsph_csv *t, const char *name) {
+  if (!t || !name) return 0;
   for (size_t c = 0; c < t->ncol; c++)
     if (!strcmp(t->names[c], name)) return c + 1;
   return 0;
 }
 
 const double *vsph_csv_column(const struct vsph_csv *t, const char *name) {
+  if (!t || !name) return NULL;
   for (size_t c = 0; c < t->ncol; c++)
     if (!strcmp(t->names[c], name)) return t->data + c * t->nrow;
   return NULL;

@@ -6,18 +6,22 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "../common/api.h"
+
 /** @file csv.h
  *  @brief Comma-separated tables with one header row, the format every
  *  vsph table and figure keeps its data in (gnuplot, spreadsheets and
  *  pandas open it directly): written atomically, and read back into
- *  columns looked up by their header name. */
+ *  columns looked up by their header name. A NULL argument is refused:
+ *  VSPH_EINVAL where a status is returned, else NULL (reported) or 0. */
 
 /** @brief Open DIR/NAME for writing (atomically, see files.h) and write
  *  the header row @p header ("t,Ek,Ep"). NULL after reporting. */
-FILE *vsph_csv_open(const char *dir, const char *name, const char *header);
+VSPH_API FILE *vsph_csv_open(const char *dir, const char *name,
+                             const char *header);
 
 /** @brief Close a table from vsph_csv_open. @return VSPH_OK or VSPH_EIO. */
-int vsph_csv_close(FILE *f, const char *dir, const char *name);
+VSPH_API int vsph_csv_close(FILE *f, const char *dir, const char *name);
 
 /** A table read back: numeric columns, stored column by column. */
 struct vsph_csv {
@@ -32,16 +36,18 @@ struct vsph_csv {
  *  centreline.csv's "line", reads as NaN throughout; a row with another
  *  field that is no number, or too few fields, is skipped). NULL after
  *  reporting if it cannot be read or has no header. */
-struct vsph_csv *vsph_csv_read(const char *path);
+VSPH_API struct vsph_csv *vsph_csv_read(const char *path);
 
 /** @brief Free; NULL is a no-op. */
-void vsph_csv_free(struct vsph_csv *t);
+VSPH_API void vsph_csv_free(struct vsph_csv *t);
 
 /** @brief The column called @p name (nrow values), or NULL. */
-const double *vsph_csv_column(const struct vsph_csv *t, const char *name);
+VSPH_API const double *vsph_csv_column(const struct vsph_csv *t,
+                                       const char *name);
 
 /** @brief The position of the column called @p name counted from 1, as
  *  gnuplot's `using` counts, or 0 when there is none. */
-size_t vsph_csv_column_number(const struct vsph_csv *t, const char *name);
+VSPH_API size_t vsph_csv_column_number(const struct vsph_csv *t,
+                                       const char *name);
 
 #endif /* VSPH_IO_CSV_H */

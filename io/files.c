@@ -16,6 +16,11 @@
 enum { PATH_MAX_LEN = 4096 };
 
 FILE *vsph_files_open(const char *dir, const char *name) {
+  if (!dir || !name) {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "vsph_files_open: a NULL argument");
+    return NULL;
+  }
   char path[PATH_MAX_LEN];
   snprintf(path, sizeof path, "%s/%s.tmp", dir, name);
   FILE *f = fopen(path, "w");
@@ -26,6 +31,10 @@ FILE *vsph_files_open(const char *dir, const char *name) {
 }
 
 int vsph_files_close(FILE *f, const char *dir, const char *name) {
+  if (!f || !dir || !name) {
+    if (f) fclose(f);
+    VSPH_FAIL(VSPH_EINVAL, "vsph_files_close: a NULL argument");
+  }
   char tmp[PATH_MAX_LEN], path[PATH_MAX_LEN];
   snprintf(tmp, sizeof tmp, "%s/%s.tmp", dir, name);
   snprintf(path, sizeof path, "%s/%s", dir, name);
@@ -42,13 +51,16 @@ int vsph_files_close(FILE *f, const char *dir, const char *name) {
 }
 
 void vsph_files_discard(FILE *f, const char *dir, const char *name) {
+  if (f) fclose(f);
+  if (!dir || !name) return;
   char tmp[PATH_MAX_LEN];
   snprintf(tmp, sizeof tmp, "%s/%s.tmp", dir, name);
-  if (f) fclose(f);
   remove(tmp);
 }
 
 int vsph_files_write(const char *dir, const char *name, const char *text) {
+  if (!dir || !name || !text)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_files_write: a NULL argument");
   FILE *f = vsph_files_open(dir, name);
   if (!f) return VSPH_EIO;
   fputs(text, f);
@@ -68,6 +80,7 @@ static int mkdir_failed(const char *path) {
 
 int vsph_files_mkdir(const char *dir) {
   char buf[PATH_MAX_LEN];
+  if (!dir) VSPH_FAIL(VSPH_EINVAL, "vsph_files_mkdir: a NULL argument");
   if (snprintf(buf, sizeof buf, "%s", dir) >= (int)sizeof buf)
     VSPH_FAIL(VSPH_EINVAL, "folder name too long: %.60s...", dir);
   for (char *c = buf + 1; *c; c++) {
@@ -85,6 +98,7 @@ int vsph_files_mkdir(const char *dir) {
 
 int vsph_files_target(const char *path) {
   struct stat sb;
+  if (!path) VSPH_FAIL(VSPH_EINVAL, "vsph_files_target: a NULL argument");
   if (lstat(path, &sb) != 0) {
     if (errno == ENOENT) return VSPH_OK; /* nothing there yet */
     VSPH_FAIL(VSPH_EINVAL, "%s: %s", path, strerror(errno));
@@ -102,6 +116,7 @@ int vsph_files_target(const char *path) {
 
 char *vsph_files_slurp(const char *path, size_t *len) {
   /* a regular file only: a FIFO or a device would block or never end */
+  if (!path) return NULL;
   const int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   struct stat sb;
   if (fd < 0) return NULL;
@@ -131,6 +146,10 @@ char *vsph_files_slurp(const char *path, size_t *len) {
 
 FILE *vsph_files_reopen(const char *dir, const char *name, long keep) {
   char path[PATH_MAX_LEN], tmp[PATH_MAX_LEN];
+  if (!dir || !name) {
+    errno = EINVAL;
+    return NULL;
+  }
   snprintf(path, sizeof path, "%s/%s", dir, name);
   snprintf(tmp, sizeof tmp, "%s/%s.tmp", dir, name);
   const int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);

@@ -18,7 +18,15 @@
 #include "../solver/viscous.h"
 #include "files.h"
 
+/* A NULL argument refused: reported, and NULL for the caller to return. */
+static cJSON *refused(const char *fn) {
+  vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__, "%s: a NULL argument",
+                     fn);
+  return NULL;
+}
+
 cJSON *vsph_json_array(const double *v, size_t n) {
+  if (!v && n) return refused("vsph_json_array");
   cJSON *a = cJSON_CreateArray();
   for (size_t i = 0; i < n; i++)
     cJSON_AddItemToArray(
@@ -27,6 +35,7 @@ cJSON *vsph_json_array(const double *v, size_t n) {
 }
 
 void vsph_json_number(cJSON *obj, const char *key, double v) {
+  if (!obj || !key) return;
   if (isfinite(v))
     cJSON_AddNumberToObject(obj, key, v);
   else
@@ -34,6 +43,7 @@ void vsph_json_number(cJSON *obj, const char *key, double v) {
 }
 
 void vsph_json_load(cJSON *obj, const double start[3], const double end[3]) {
+  if (!obj || !start || !end) return;
   const char *when[2] = {"load_average_start", "load_average_end"};
   const double *load[2] = {start, end};
   for (int w = 0; w < 2; w++) {
@@ -49,6 +59,7 @@ void vsph_json_load(cJSON *obj, const double start[3], const double end[3]) {
 }
 
 void vsph_json_moments(cJSON *obj, const struct vsph_moments *m) {
+  if (!obj || !m || m->dim < 1 || m->dim > 3) return;
   const int d = m->dim;
   cJSON *F = cJSON_CreateArray(), *G = cJSON_CreateArray();
   cJSON *M = cJSON_CreateArray();
@@ -72,6 +83,7 @@ void vsph_json_moments(cJSON *obj, const struct vsph_moments *m) {
 }
 
 int vsph_json_print(cJSON *obj) {
+  if (!obj) VSPH_FAIL(VSPH_EINVAL, "vsph_json_print: a NULL argument");
   char *s = cJSON_Print(obj);
   cJSON_Delete(obj);
   if (!s) VSPH_FAIL(VSPH_ENOMEM, "cannot format JSON");
@@ -82,6 +94,7 @@ int vsph_json_print(cJSON *obj) {
 }
 
 char *vsph_json_text(cJSON *obj) {
+  if (!obj) return (char *)refused("vsph_json_text");
   char *s = cJSON_Print(obj);
   cJSON_Delete(obj);
   const size_t n = s ? strlen(s) : 0;
@@ -96,6 +109,10 @@ char *vsph_json_text(cJSON *obj) {
 }
 
 int vsph_json_write(cJSON *obj, const char *dir, const char *name) {
+  if (!obj || !dir || !name) {
+    cJSON_Delete(obj);
+    VSPH_FAIL(VSPH_EINVAL, "vsph_json_write: a NULL argument");
+  }
   char *s = vsph_json_text(obj);
   if (!s) return VSPH_ENOMEM;
   const int st = vsph_files_write(dir, name, s);
@@ -104,6 +121,7 @@ int vsph_json_write(cJSON *obj, const char *dir, const char *name) {
 }
 
 cJSON *vsph_json_read(const char *path) {
+  if (!path) return NULL;
   char *text = vsph_files_slurp(path, NULL);
   cJSON *j = text ? cJSON_Parse(text) : NULL;
   free(text);
@@ -111,6 +129,7 @@ cJSON *vsph_json_read(const char *path) {
 }
 
 double vsph_json_get_number(const cJSON *obj, const char *key, double def) {
+  if (!obj || !key) return def;
   const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
   return v && cJSON_IsNumber(v) ? v->valuedouble : def;
 }
@@ -119,6 +138,7 @@ double vsph_json_get_number(const cJSON *obj, const char *key, double def) {
 
 cJSON *vsph_json_tensors(const struct vsph_moments_props *mp,
                          const struct vsph_moments_result *r) {
+  if (!mp || !r || !mp->kernel) return refused("vsph_json_tensors");
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "kernel", mp->kernel->name);
   cJSON_AddNumberToObject(o, "dim", mp->dim);
@@ -152,6 +172,7 @@ cJSON *vsph_json_tensors(const struct vsph_moments_props *mp,
 cJSON *vsph_json_scaling(const struct vsph_scaling_props *sp,
                          const struct vsph_scaling_result *r, double hF_th,
                          double hN_th) {
+  if (!sp || !r || !sp->kernel) return refused("vsph_json_scaling");
   const size_t L = r->levels;
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "kernel", sp->kernel->name);
@@ -184,6 +205,9 @@ cJSON *vsph_json_scaling(const struct vsph_scaling_props *sp,
 
 cJSON *vsph_json_dissipation(const struct vsph_dissipation_props *dp,
                              const struct vsph_dissipation_result *r) {
+  if (!dp || !r || !dp->kernel || dp->form < 0 ||
+      dp->form >= VSPH_VISCOUS_FORM_COUNT)
+    return refused("vsph_json_dissipation");
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "formulation", vsph_viscous_name(dp->form));
   cJSON_AddStringToObject(o, "field", vsph_fields_name(dp->field.kind));
@@ -216,6 +240,7 @@ cJSON *vsph_json_dissipation(const struct vsph_dissipation_props *dp,
 
 cJSON *vsph_json_laplacian(const struct vsph_laplacian_props *lp,
                            const struct vsph_laplacian_result *r) {
+  if (!lp || !r || !lp->kernel) return refused("vsph_json_laplacian");
   cJSON *o = cJSON_CreateObject();
   cJSON_AddStringToObject(o, "form", vsph_laplacian_form_name(lp->form));
   cJSON_AddStringToObject(o, "field", vsph_laplacian_field_name(lp->field));

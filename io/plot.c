@@ -31,7 +31,8 @@ const char *vsph_plot_colour(size_t k) {
 int vsph_plot_point(size_t k) { return POINTS[k % VSPH_PLOT_NSTYLES]; }
 
 void vsph_plot_plain(char *out, size_t n, const char *text) {
-  if (!n) return;
+  if (!out || !n) return;
+  if (!text) text = "";
   size_t k = 0;
   unsigned long drop = 0; /* bit d: the brace at depth d is dropped */
   int depth = 0;
@@ -53,16 +54,19 @@ void vsph_plot_plain(char *out, size_t n, const char *text) {
 
 void vsph_plot_init(struct vsph_plot *pl, const char *dir, const char *name,
                     const char *title, const char *xlabel, const char *ylabel) {
+  if (!pl) return;
   memset(pl, 0, sizeof *pl);
-  snprintf(pl->dir, sizeof pl->dir, "%s", dir);
-  snprintf(pl->name, sizeof pl->name, "%s", name);
-  snprintf(pl->title, sizeof pl->title, "%s", title);
-  snprintf(pl->xlabel, sizeof pl->xlabel, "%s", xlabel);
-  snprintf(pl->ylabel, sizeof pl->ylabel, "%s", ylabel);
+  snprintf(pl->dir, sizeof pl->dir, "%s", dir ? dir : "");
+  snprintf(pl->name, sizeof pl->name, "%s", name ? name : "");
+  snprintf(pl->title, sizeof pl->title, "%s", title ? title : "");
+  snprintf(pl->xlabel, sizeof pl->xlabel, "%s", xlabel ? xlabel : "");
+  snprintf(pl->ylabel, sizeof pl->ylabel, "%s", ylabel ? ylabel : "");
 }
 
 int vsph_plot_add(struct vsph_plot *pl, const char *file, const char *using,
                   const char *title, const char *style) {
+  if (!pl || !file || !using || !title || !style)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_plot_add: a NULL argument");
   if (pl->n >= VSPH_PLOT_MAXSERIES)
     VSPH_FAIL(VSPH_EINVAL, "figure %s: more than %d curves", pl->name,
               VSPH_PLOT_MAXSERIES);
@@ -107,7 +111,7 @@ static void head(FILE *f, const char *what, const char *name) {
 static void outputs_open(FILE *f, const char *name, int w, int h, int font) {
   /* the SVG's title (its name, which gnuplot takes as an identifier: the
    * file's name, other characters as '_'), not "Gnuplot"; its text two
-   * points larger, as the page draws it across its column (io/html.c):
+   * points larger, as the page draws it across its column (reports/html.c):
    * the figure's words at the body's size */
   char id[128];
   snprintf(id, sizeof id, "%s", name);
@@ -264,6 +268,10 @@ static void log_ticks(FILE *f, char a, int fixed, int own_ticks, int rounding) {
 }
 
 int vsph_plot_write(const struct vsph_plot *pl) {
+  if (!pl) VSPH_FAIL(VSPH_EINVAL, "vsph_plot_write: a NULL argument");
+  if (pl->n > VSPH_PLOT_MAXSERIES)
+    VSPH_FAIL(VSPH_EINVAL, "figure %s: %zu curves, more than %d", pl->name,
+              pl->n, VSPH_PLOT_MAXSERIES);
   char gp[160];
   snprintf(gp, sizeof gp, "%s.gp", pl->name);
   FILE *f = vsph_files_open(pl->dir, gp);
@@ -403,6 +411,8 @@ int vsph_plot_particles(const char *dir, const char *name, const char *title,
                         const struct vsph_plot_panel *pn, size_t n, int col,
                         const char *cblabel, int diverging, const double box[4],
                         double cb[4]) {
+  if (!dir || !name || !title || !pn || !cblabel)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_plot_particles: a NULL argument");
   if (n < 1 || n > 8)
     VSPH_FAIL(VSPH_EINVAL, "picture %s: 1 to 8 panels, not %zu", name, n);
   /* one colour scale for the scene, from every particle of every panel:

@@ -5,6 +5,8 @@
 
 #include <stddef.h>
 
+#include "../common/api.h"
+
 /** @file plot.h
  *  @brief Figures: a gnuplot script per figure, kept beside its outputs so
  *  a reader can restyle it and run `gnuplot NAME.gp`, which remakes all
@@ -12,7 +14,10 @@
  *  NAME.pdf (pdfcairo, for papers). Data come from CSV files with a header
  *  row. Every script shares one palette (VSPH_PLOT_NSTYLES distinct
  *  colours and point types as gnuplot linetypes 1, 2, ...). A figure owns
- *  copies of its strings: callers need no buffers of their own. */
+ *  copies of its strings: callers need no buffers of their own. A NULL
+ *  argument is refused: VSPH_EINVAL (reported) where a status is
+ *  returned; vsph_plot_init and vsph_plot_plain read a NULL string as
+ *  "" and do nothing without a figure or a buffer. */
 
 /** Most curves in one figure. */
 #define VSPH_PLOT_MAXSERIES 24
@@ -56,33 +61,36 @@ struct vsph_plot {
 /** @brief Colour @p k of the shared palette, "#rrggbb" (k modulo
  *  VSPH_PLOT_NSTYLES). The first three are the free-surface study's
  *  formulations' (MGF blue, MEAF vermillion, PVWF bluish green). */
-const char *vsph_plot_colour(size_t k);
+VSPH_API const char *vsph_plot_colour(size_t k);
 
 /** @brief Point type @p k of the shared palette (gnuplot's pt, filled
  *  shapes first; k modulo VSPH_PLOT_NSTYLES). For k < 6 the point type
  *  one less is the same shape open (a second series of one colour). */
-int vsph_plot_point(size_t k);
+VSPH_API int vsph_plot_point(size_t k);
 
 /** @brief Enhanced text @p text as plain text for Markdown (captions, alt
  *  text): the braces of `_{...}` and `^{...}` dropped ("E_{k,ref}" ->
  *  "E_k,ref"), the rest (UTF-8 Greek included) kept; truncated to fit
  *  @p n bytes. */
-void vsph_plot_plain(char *out, size_t n, const char *text);
+VSPH_API void vsph_plot_plain(char *out, size_t n, const char *text);
 
 /** @brief Start a figure DIR/NAME with its title and axis labels (copied);
  *  no curves, linear axes. */
-void vsph_plot_init(struct vsph_plot *pl, const char *dir, const char *name,
-                    const char *title, const char *xlabel, const char *ylabel);
+VSPH_API void vsph_plot_init(struct vsph_plot *pl, const char *dir,
+                             const char *name, const char *title,
+                             const char *xlabel, const char *ylabel);
 
 /** @brief Add a curve (strings copied). @return VSPH_OK or VSPH_EINVAL
  *  (VSPH_PLOT_MAXSERIES reached, or a string too long). */
-int vsph_plot_add(struct vsph_plot *pl, const char *file, const char *using,
-                  const char *title, const char *style);
+VSPH_API int vsph_plot_add(struct vsph_plot *pl, const char *file,
+                           const char *using, const char *title,
+                           const char *style);
 
 /** @brief Write DIR/NAME.gp and run gnuplot on it to make DIR/NAME.png,
- *  .svg and .pdf. @return VSPH_OK, or VSPH_EIO (script not written, or
+ *  .svg and .pdf. @return VSPH_OK, VSPH_EINVAL (more than
+ *  VSPH_PLOT_MAXSERIES curves), or VSPH_EIO (script not written, or
  *  gnuplot failed: its messages are in DIR/NAME.log). */
-int vsph_plot_write(const struct vsph_plot *pl);
+VSPH_API int vsph_plot_write(const struct vsph_plot *pl);
 
 /** One panel of a particle picture: a CSV of particles and its title. */
 struct vsph_plot_panel {
@@ -107,9 +115,10 @@ struct vsph_plot_panel {
  *  it, and 1 where the scale is diverging.
  *  @return VSPH_OK, VSPH_EINVAL (panels, or no finite value in column
  *  @p col), VSPH_EIO (a CSV unreadable, or as vsph_plot_write). */
-int vsph_plot_particles(const char *dir, const char *name, const char *title,
-                        const struct vsph_plot_panel *pn, size_t n, int col,
-                        const char *cblabel, int diverging, const double box[4],
-                        double cb[4]);
+VSPH_API int vsph_plot_particles(const char *dir, const char *name,
+                                 const char *title,
+                                 const struct vsph_plot_panel *pn, size_t n,
+                                 int col, const char *cblabel, int diverging,
+                                 const double box[4], double cb[4]);
 
 #endif /* VSPH_IO_PLOT_H */

@@ -539,6 +539,13 @@ int vsph_vtk_write(const char *dir, const char *name,
                    const struct vsph_particles *p, size_t n_fluid, double t,
                    const struct vsph_diagnostics *dg,
                    const volatile sig_atomic_t *stop) {
+  if (!dir || !name || !p)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_write: a NULL argument");
+  if (n_fluid > p->n || (dg && dg->n < n_fluid))
+    VSPH_FAIL(VSPH_EINVAL,
+              "vsph_vtk_write: %zu fluid particles, more than the set's %zu "
+              "or the diagnostics'",
+              n_fluid, p->n);
   const size_t n = n_fluid;
   size_t *order;
   struct out *o = out_alloc(dir, n, &order);
@@ -557,6 +564,12 @@ int vsph_vtk_write_mapped(const char *dir, const char *name,
                           const size_t *where, double t,
                           const struct vsph_diagnostics *dg,
                           const volatile sig_atomic_t *stop) {
+  if (!dir || !name || !p || !where)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_write_mapped: a NULL argument");
+  if (dg && dg->n < n_fluid)
+    VSPH_FAIL(VSPH_EINVAL,
+              "vsph_vtk_write_mapped: diagnostics of %zu particles, not %zu",
+              dg->n, n_fluid);
   const size_t n = n_fluid;
   for (size_t id = 0; id < n; id++)
     if (where[id] >= p->n || p->id[where[id]] != id)
@@ -579,6 +592,8 @@ int vsph_vtk_write_mapped(const char *dir, const char *name,
 int vsph_vtk_write_walls(const char *dir, const char *name,
                          const struct vsph_particles *p, size_t n_fluid,
                          size_t n_wall, double t) {
+  if (!dir || !name || !p)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_write_walls: a NULL argument");
   /* the particles beyond the fluid, in id order */
   size_t n = 0;
   for (size_t i = 0; i < p->n; i++) n += p->id[i] >= n_fluid;
@@ -712,6 +727,8 @@ static int build_frame(struct out *o, const struct vsph_vtk_snapshot *s,
 int vsph_vtk_write_frame(const char *dir, const char *name,
                          const struct vsph_vtk_snapshot *s, int bits,
                          unsigned fields) {
+  if (!dir || !name || !s)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_write_frame: a NULL argument");
   if (bits < 1 || bits > 23)
     VSPH_FAIL(VSPH_EINVAL, "a frame keeps 1-23 mantissa bits, not %d", bits);
   if (fields > (VSPH_VTK_FRAME_VELOCITY | VSPH_VTK_FRAME_SCALARS))
@@ -876,7 +893,9 @@ static const char *open_input(char *text, size_t len, struct in *in,
 }
 
 int vsph_vtk_read(const char *path, struct vsph_vtk_snapshot *s) {
+  if (!s) VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_read: a NULL argument");
   memset(s, 0, sizeof *s);
+  if (!path) VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_read: a NULL argument");
   size_t flen = 0;
   char *text = vsph_files_slurp(path, &flen);
   if (!text) VSPH_FAIL(VSPH_EIO, "cannot read %s", path);
@@ -952,6 +971,7 @@ int vsph_vtk_read(const char *path, struct vsph_vtk_snapshot *s) {
 }
 
 void vsph_vtk_snapshot_free(struct vsph_vtk_snapshot *s) {
+  if (!s) return;
   free(s->pos);
   free(s->vel);
   free(s->rho);
@@ -965,6 +985,8 @@ void vsph_vtk_snapshot_free(struct vsph_vtk_snapshot *s) {
 }
 
 int vsph_vtk_pvd_open(struct vsph_vtk_pvd *pvd, const char *dir) {
+  if (!pvd || !dir)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_pvd_open: a NULL argument");
   char path[4096];
   snprintf(path, sizeof path, "%s/snapshots.pvd", dir);
   pvd->dir = dir;
@@ -978,6 +1000,8 @@ int vsph_vtk_pvd_open(struct vsph_vtk_pvd *pvd, const char *dir) {
 }
 
 int vsph_vtk_pvd_reopen(struct vsph_vtk_pvd *pvd, const char *dir, long keep) {
+  if (!pvd || !dir)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_pvd_reopen: a NULL argument");
   char path[4096];
   snprintf(path, sizeof path, "%s/snapshots.pvd", dir);
   pvd->dir = dir;
@@ -993,6 +1017,10 @@ int vsph_vtk_pvd_add(struct vsph_vtk_pvd *pvd, double t, const char *file) {
 
 int vsph_vtk_pvd_add_part(struct vsph_vtk_pvd *pvd, double t, int part,
                           const char *file) {
+  if (!pvd || !pvd->f || !file)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_pvd_add: a NULL argument, or closed");
+  if (part < 0 || part > 1)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_pvd_add_part: part %d, not 0 or 1", part);
   fprintf(pvd->f, "<DataSet timestep=\"%.10g\" part=\"%d\" file=\"%s\"/>\n", t,
           part, file);
   if (fflush(pvd->f) != 0 || ferror(pvd->f))
@@ -1001,6 +1029,7 @@ int vsph_vtk_pvd_add_part(struct vsph_vtk_pvd *pvd, double t, int part,
 }
 
 int vsph_vtk_pvd_close(struct vsph_vtk_pvd *pvd) {
+  if (!pvd) VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_pvd_close: a NULL argument");
   if (!pvd->f) return VSPH_OK;
   fprintf(pvd->f, "</Collection>\n</VTKFile>\n");
   const int bad = ferror(pvd->f);

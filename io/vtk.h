@@ -7,6 +7,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "../common/api.h"
+
 struct vsph_particles;
 struct vsph_diagnostics;
 
@@ -17,7 +19,9 @@ struct vsph_diagnostics;
  *  for the report, and the PVD collection that lists them with their
  *  times, which ParaView opens as one time series. Every array is named
  *  and described, with its unit, in the file's own FieldData
- *  (array_descriptions). Only file formats: no numerics. */
+ *  (array_descriptions). Only file formats: no numerics. A NULL argument
+ *  is refused with VSPH_EINVAL (reported); vsph_vtk_snapshot_free of NULL
+ *  does nothing. */
 
 /** Block size of the compressed arrays (bytes before compression): VTK's
  *  default (vtkXMLWriter::BlockSize). */
@@ -39,23 +43,24 @@ struct vsph_diagnostics;
  *  file do not depend on the number of threads that compressed them.
  *  If @p stop is not NULL, *stop is checked before each compressed block
  *  (32 KiB): once it is set the file is abandoned before it is opened.
- *  @return VSPH_OK, VSPH_EINTR (stopped through @p stop; nothing
+ *  @return VSPH_OK, VSPH_EINVAL (@p n_fluid above the set's particles
+ *  or the diagnostics'), VSPH_EINTR (stopped through @p stop; nothing
  *  written), VSPH_ENOMEM, VSPH_ELIB (zlib failed) or VSPH_EIO. */
-int vsph_vtk_write(const char *dir, const char *name,
-                   const struct vsph_particles *p, size_t n_fluid, double t,
-                   const struct vsph_diagnostics *dg,
-                   const volatile sig_atomic_t *stop);
+VSPH_API int vsph_vtk_write(const char *dir, const char *name,
+                            const struct vsph_particles *p, size_t n_fluid,
+                            double t, const struct vsph_diagnostics *dg,
+                            const volatile sig_atomic_t *stop);
 
 /** @brief vsph_vtk_write with @p where[id] the index in @p p of fluid
  *  particle id (an integrator's map, as an evaluation leaves it), checked
  *  first, in place of a particle order of its own (8 bytes a particle).
  *  The same file. @return as vsph_vtk_write, or VSPH_EINVAL (the map is
  *  not the particles'; nothing written). */
-int vsph_vtk_write_mapped(const char *dir, const char *name,
-                          const struct vsph_particles *p, size_t n_fluid,
-                          const size_t *where, double t,
-                          const struct vsph_diagnostics *dg,
-                          const volatile sig_atomic_t *stop);
+VSPH_API int vsph_vtk_write_mapped(const char *dir, const char *name,
+                                   const struct vsph_particles *p,
+                                   size_t n_fluid, const size_t *where,
+                                   double t, const struct vsph_diagnostics *dg,
+                                   const volatile sig_atomic_t *stop);
 
 /** A snapshot read back (arrays of n tuples in id order, 3 components for
  *  vectors; an array the file lacks reads as zeros). */
@@ -91,7 +96,7 @@ enum { VSPH_VTK_FRAME_VELOCITY = 1u, VSPH_VTK_FRAME_SCALARS = 2u };
  *  PolyData in this machine's byte order).
  *  @return VSPH_OK, VSPH_EIO (unreadable, not such a snapshot, e.g. one
  *  of an older ASCII vsph, or damaged; reported) or VSPH_ENOMEM. */
-int vsph_vtk_read(const char *path, struct vsph_vtk_snapshot *s);
+VSPH_API int vsph_vtk_read(const char *path, struct vsph_vtk_snapshot *s);
 
 /** @brief Frame of snapshot @p s written atomically to DIR/NAME: what a
  *  picture or a profile reads, compact enough for a run archive. The
@@ -107,12 +112,12 @@ int vsph_vtk_read(const char *path, struct vsph_vtk_snapshot *s);
  *  Float subnormals (below 1.2e-38 in magnitude) keep fewer bits.
  *  @return VSPH_OK, VSPH_EINVAL (@p bits or @p fields out of range, or
  *  @p s itself a frame), VSPH_ENOMEM, VSPH_ELIB or VSPH_EIO. */
-int vsph_vtk_write_frame(const char *dir, const char *name,
-                         const struct vsph_vtk_snapshot *s, int bits,
-                         unsigned fields);
+VSPH_API int vsph_vtk_write_frame(const char *dir, const char *name,
+                                  const struct vsph_vtk_snapshot *s, int bits,
+                                  unsigned fields);
 
 /** @brief Free the arrays of a snapshot read back. */
-void vsph_vtk_snapshot_free(struct vsph_vtk_snapshot *s);
+VSPH_API void vsph_vtk_snapshot_free(struct vsph_vtk_snapshot *s);
 
 /** A PVD collection being written (DIR/snapshots.pvd). */
 struct vsph_vtk_pvd {
@@ -121,23 +126,27 @@ struct vsph_vtk_pvd {
 };
 
 /** @brief Start DIR/snapshots.pvd. @return VSPH_OK or VSPH_EIO. */
-int vsph_vtk_pvd_open(struct vsph_vtk_pvd *pvd, const char *dir);
+VSPH_API int vsph_vtk_pvd_open(struct vsph_vtk_pvd *pvd, const char *dir);
 
 /** @brief Go on with DIR/snapshots.pvd, cut back to its first @p keep
  *  bytes (a resumed run's: its entries up to a checkpoint).
  *  @return VSPH_OK or VSPH_EIO. */
-int vsph_vtk_pvd_reopen(struct vsph_vtk_pvd *pvd, const char *dir, long keep);
+VSPH_API int vsph_vtk_pvd_reopen(struct vsph_vtk_pvd *pvd, const char *dir,
+                                 long keep);
 
 /** @brief List snapshot @p file at time @p t (s), printed to 10
  *  significant digits as energy.csv prints its t, so the two match
  *  exactly (flushed: the index is usable while the run goes on).
  *  @return VSPH_OK or VSPH_EIO. */
-int vsph_vtk_pvd_add(struct vsph_vtk_pvd *pvd, double t, const char *file);
+VSPH_API int vsph_vtk_pvd_add(struct vsph_vtk_pvd *pvd, double t,
+                              const char *file);
 
 /** @brief vsph_vtk_pvd_add for part @p part of the time step (0 the fluid,
- *  1 its walls: ParaView reads the parts of one time as one multiblock). */
-int vsph_vtk_pvd_add_part(struct vsph_vtk_pvd *pvd, double t, int part,
-                          const char *file);
+ *  1 its walls: ParaView reads the parts of one time as one multiblock).
+ *  @return VSPH_OK, VSPH_EINVAL (another part, or a closed collection)
+ *  or VSPH_EIO. */
+VSPH_API int vsph_vtk_pvd_add_part(struct vsph_vtk_pvd *pvd, double t, int part,
+                                   const char *file);
 
 /** @brief The particles beyond the fluid (ids from @p n_fluid on) of
  *  @p p at time @p t as DIR/NAME, VTK XML PolyData like a snapshot, in id
@@ -146,11 +155,11 @@ int vsph_vtk_pvd_add_part(struct vsph_vtk_pvd *pvd, double t, int part,
  *  cavity's lid; 2 an image of a fluid particle, a mirror ghost or a
  *  periodic image), each described. @return VSPH_OK, VSPH_ENOMEM,
  *  VSPH_EIO. */
-int vsph_vtk_write_walls(const char *dir, const char *name,
-                         const struct vsph_particles *p, size_t n_fluid,
-                         size_t n_wall, double t);
+VSPH_API int vsph_vtk_write_walls(const char *dir, const char *name,
+                                  const struct vsph_particles *p,
+                                  size_t n_fluid, size_t n_wall, double t);
 
 /** @brief Close the collection. @return VSPH_OK or VSPH_EIO. */
-int vsph_vtk_pvd_close(struct vsph_vtk_pvd *pvd);
+VSPH_API int vsph_vtk_pvd_close(struct vsph_vtk_pvd *pvd);
 
 #endif /* VSPH_IO_VTK_H */

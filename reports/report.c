@@ -25,10 +25,10 @@
 #include "../common/sysinfo.h"
 #include "../io/csv.h"
 #include "../io/files.h"
-#include "../io/html.h"
 #include "../io/json.h"
 #include "../io/plot.h"
 #include "../runs/folder.h"
+#include "html.h"
 #include "report_claims.h"
 #include "report_parts.h"
 

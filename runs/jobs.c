@@ -15,13 +15,13 @@
 #include <stdlib.h>
 
 #include "../analysis/contact.h"
-#include "../common/shell.h"
 #include "../common/status.h"
 #include "../solver/run.h"
 #include "folder.h"
 #include "jobs_internal.h"
 #include "rundir.h"
 #include "sheartest.h"
+#include "shell.h"
 
 /* ----------------------------------------------------------------- jobs */
 

@@ -16,12 +16,12 @@
 #include <unistd.h>
 
 #include "../common/consts.h"
-#include "../common/shell.h"
 #include "../common/status.h"
 #include "../io/files.h"
 #include "../io/json.h"
 #include "jobs.h"
 #include "jobs_internal.h"
+#include "shell.h"
 
 /* *@p out: a new string of the printf-formatted text (caller frees).
  * 0, or 1 when it cannot be made. */

@@ -13,10 +13,11 @@
 #include "particles.h"
 
 double vsph_diagnostics_surface_threshold(int dim) {
-  return dim == 3 ? 2.4 : dim == 2 ? 1.5 : 0.75;
+  return dim == 3 ? 2.4 : dim == 2 ? 1.5 : dim == 1 ? 0.75 : (double)NAN;
 }
 
 void vsph_diagnostics_free(struct vsph_diagnostics *d) {
+  if (!d) return;
   if (!d->lent) {
     for (int a = 0; a < 3; a++) free(d->vort[a]);
     free(d->divr);
@@ -214,7 +215,12 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
                              const struct vsph_kernel_type *k, double h,
                              struct vsph_diagnostics *d,
                              const volatile sig_atomic_t *stop) {
+  if (!d) VSPH_FAIL(VSPH_EINVAL, "vsph_diagnostics_compute: a NULL argument");
   memset(d, 0, sizeof *d);
+  if (!p || !k || !(h > 0.0) || n > p->n)
+    VSPH_FAIL(VSPH_EINVAL,
+              "vsph_diagnostics_compute: a NULL argument, h <= 0 "
+              "or more particles than the set holds");
   if (stop && *stop) return VSPH_EINTR;
   int finite;
   int st = start(p, n, h, NULL, d, &finite);
@@ -240,13 +246,14 @@ int vsph_diagnostics_compute_cells(const struct vsph_particles *p, size_t n,
                                    double *const room[4],
                                    struct vsph_diagnostics *d,
                                    const volatile sig_atomic_t *stop) {
-  memset(d, 0, sizeof *d);
-  if (!p || !cells || !k || !d || !(h > 0.0) ||
+  if (d) memset(d, 0, sizeof *d);
+  if (!p || !cells || !k || !d || !(h > 0.0) || n > p->n ||
       (!cells->direct &&
        cells->edge * VSPH_CELLS_SUB < k->kappa * h * (1.0 - 1e-12)))
     VSPH_FAIL(VSPH_EINVAL,
-              "vsph_diagnostics_compute_cells: a NULL argument, "
-              "h <= 0 or cells narrower than the kernel's reach");
+              "vsph_diagnostics_compute_cells: a NULL argument, h <= 0, "
+              "more particles than the set holds or cells narrower than "
+              "the kernel's reach");
   if (stop && *stop) return VSPH_EINTR;
   size_t held = 0; /* the cell list is p's: it holds its particles */
   for (size_t c = 0; c < cells->ncells; c++) held += cells->count[c];

@@ -6,6 +6,8 @@
 #include <signal.h>
 #include <stddef.h>
 
+#include "../common/api.h"
+
 struct vsph_particles;
 struct vsph_kernel_type;
 struct vsph_cells;
@@ -24,7 +26,9 @@ struct vsph_cells;
  *  it), so the caller's particles are neither moved nor reordered (a run's
  *  results do not depend on whether it wrote snapshots); each particle's
  *  neighbours are summed in the order of their offsets, so the fields do
- *  not depend on the particles' order either. No I/O. */
+ *  not depend on the particles' order either. No I/O. A NULL argument is
+ *  refused with VSPH_EINVAL (reported); vsph_diagnostics_free of NULL
+ *  does nothing. */
 
 /** Diagnostics of the particles with id < n, indexed by id. */
 struct vsph_diagnostics {
@@ -39,8 +43,9 @@ struct vsph_diagnostics {
                             vsph_diagnostics_compute_cells), not freed */
 };
 
-/** @brief The free-surface threshold on div r in @p dim dimensions. */
-double vsph_diagnostics_surface_threshold(int dim);
+/** @brief The free-surface threshold on div r in @p dim dimensions (1-3;
+ *  NaN for another). */
+VSPH_API double vsph_diagnostics_surface_threshold(int dim);
 
 /** @brief Compute the diagnostics of the particles of @p p whose id is
  *  below @p n (the fluid; the others, e.g. ghosts, count as neighbours),
@@ -49,12 +54,13 @@ double vsph_diagnostics_surface_threshold(int dim);
  *  Non-finite positions (a run stopped as unstable) give NaN fields.
  *  If @p stop is not NULL, *stop is checked first and before each cell:
  *  once it is set the sums are abandoned.
- *  @return VSPH_OK, VSPH_EINTR (stopped through @p stop; @p d freed) or
- *  VSPH_ENOMEM. */
-int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
-                             const struct vsph_kernel_type *k, double h,
-                             struct vsph_diagnostics *d,
-                             const volatile sig_atomic_t *stop);
+ *  @return VSPH_OK, VSPH_EINVAL (a NULL argument, h <= 0, or @p n above
+ *  the set's particles), VSPH_EINTR (stopped through @p stop; @p d
+ *  freed) or VSPH_ENOMEM. */
+VSPH_API int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
+                                      const struct vsph_kernel_type *k,
+                                      double h, struct vsph_diagnostics *d,
+                                      const volatile sig_atomic_t *stop);
 
 /** @brief vsph_diagnostics_compute of particles @p p that @p cells sorted
  *  (as an evaluation leaves an integrator's particles: its cell list for
@@ -66,14 +72,12 @@ int vsph_diagnostics_compute(const struct vsph_particles *p, size_t n,
  *  omega_z, and in 3-D room[2] and room[3] omega_x and omega_y, each of
  *  at least @p n doubles (a run's rates between two steps, which every
  *  evaluation writes before it reads them: vsph_run's `evaluated`).
- *  @return as vsph_diagnostics_compute, or VSPH_EINVAL (a NULL argument,
- *  h <= 0, or cells narrower than the kernel's reach). */
-int vsph_diagnostics_compute_cells(const struct vsph_particles *p, size_t n,
-                                   const struct vsph_cells *cells,
-                                   const struct vsph_kernel_type *k, double h,
-                                   double *const room[4],
-                                   struct vsph_diagnostics *d,
-                                   const volatile sig_atomic_t *stop);
+ *  @return as vsph_diagnostics_compute, or VSPH_EINVAL (cells narrower
+ *  than the kernel's reach, or not @p p's). */
+VSPH_API int vsph_diagnostics_compute_cells(
+    const struct vsph_particles *p, size_t n, const struct vsph_cells *cells,
+    const struct vsph_kernel_type *k, double h, double *const room[4],
+    struct vsph_diagnostics *d, const volatile sig_atomic_t *stop);
 
 /** A probe's reading at a point. */
 struct vsph_diagnostics_probe {
@@ -93,12 +97,12 @@ struct vsph_diagnostics_probe {
  *  to the nearest image. Where no particle is within reach, u, p and rho
  *  are NaN and fill 0.
  *  @return VSPH_OK, or VSPH_EINVAL for a NULL argument or h <= 0. */
-int vsph_diagnostics_probe(const struct vsph_particles *p, size_t n,
-                           const struct vsph_kernel_type *k, double h,
-                           const double period[3], const double x[3],
-                           struct vsph_diagnostics_probe *out);
+VSPH_API int vsph_diagnostics_probe(const struct vsph_particles *p, size_t n,
+                                    const struct vsph_kernel_type *k, double h,
+                                    const double period[3], const double x[3],
+                                    struct vsph_diagnostics_probe *out);
 
 /** @brief Free the arrays of @p d (the struct itself is the caller's). */
-void vsph_diagnostics_free(struct vsph_diagnostics *d);
+VSPH_API void vsph_diagnostics_free(struct vsph_diagnostics *d);
 
 #endif /* VSPH_SOLVER_DIAGNOSTICS_H */

@@ -105,6 +105,12 @@ static int reserve(struct vsph_integrate *s, size_t n) {
 
 struct vsph_integrate *vsph_integrate_alloc(
     const struct vsph_integrate_props *ip, struct vsph_particles *fluid) {
+  if (!ip || !fluid || !ip->eq.visc.kernel) {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "vsph_integrate_alloc: a NULL argument or kernel");
+    vsph_particles_free(fluid);
+    return NULL;
+  }
   struct vsph_integrate *s = calloc(1, sizeof *s);
   if (!s) {
     vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,
@@ -168,6 +174,7 @@ static double max_speed(const struct vsph_integrate *s) {
 }
 
 double vsph_integrate_dt(const struct vsph_integrate *s) {
+  if (!s) return (double)NAN;
   if (s->props.dt > 0.0) return s->props.dt;
   const struct vsph_equations_props *ep = &s->props.eq;
   const double h = ep->visc.h;
@@ -517,6 +524,7 @@ static int keep_order(struct vsph_integrate *s);
 static void put_back(struct vsph_integrate *s, size_t n0);
 
 int vsph_integrate_step(struct vsph_integrate *s, double dt) {
+  if (!s) VSPH_FAIL(VSPH_EINVAL, "vsph_integrate_step: a NULL argument");
   if (s->props.eq.tvf) return step_tvf(s, dt);
   if (s->props.leapfrog) return step_leapfrog(s, dt);
   /* the particles' order as the step finds them, to put back if it is
@@ -651,6 +659,7 @@ static void closest_pair(const struct vsph_integrate *s, size_t a[2],
 }
 
 int vsph_integrate_check(struct vsph_integrate *s) {
+  if (!s) return 1;
   const struct vsph_particles *p = s->p;
   const struct vsph_integrate_props *ip = &s->props;
   for (size_t i = 0; i < p->n; i++) {
@@ -719,6 +728,8 @@ int vsph_integrate_check(struct vsph_integrate *s) {
 int vsph_integrate_diagnostics(struct vsph_integrate *s,
                                struct vsph_equations_energy *en,
                                struct vsph_equations_budget *b) {
+  if (!s || !en || !b)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_integrate_diagnostics: a NULL argument");
   int st = prepare(s, 0.0);
   if (!st) st = rhs(s, 1, NULL, NULL);
   if (st) return st;
@@ -763,6 +774,7 @@ static size_t layout_bytes(size_t d, size_t cap, size_t cap_n, size_t cap_cells,
 size_t vsph_integrate_bytes(const struct vsph_integrate *s) {
   /* the sweep counted by its estimate: what it holds depends on the
    * evaluations it has seen, and a resumed run must report the same */
+  if (!s) return 0;
   return layout_bytes((size_t)s->p->dim, s->p->cap, s->cells->cap_n,
                       s->cells->cap_cells, s->vws ? (s->vws->S ? 2 : 1) : 0,
                       s->gh != NULL, s->p->tvel[0] != NULL);
@@ -770,6 +782,7 @@ size_t vsph_integrate_bytes(const struct vsph_integrate *s) {
 
 double vsph_integrate_bytes_estimate(int dim, double n_fluid, double n_ghosts,
                                      int ws, int tvf) {
+  if (dim < 1 || dim > 3) return (double)NAN;
   /* the capacity reserve() grows to, and the most cells vsph_cells_build
    * makes (8 per particle + 4096) */
   const int walls = n_ghosts > 0.0;
@@ -903,17 +916,20 @@ static size_t pack(const struct vsph_integrate *s, struct cursor *cur,
 
 size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf) {
   struct cursor c = {.buf = buf};
+  if (!s) return 0;
   return pack(s, &c, 0);
 }
 
 size_t vsph_integrate_pack_lean(const struct vsph_integrate *s,
                                 unsigned char *buf) {
   struct cursor c = {.buf = buf};
+  if (!s) return 0;
   return pack(s, &c, 1);
 }
 
 size_t vsph_integrate_pack_lean_file(const struct vsph_integrate *s,
                                      FILE *out) {
+  if (!s || !out) return 0;
   struct cursor c = {.f = out};
   const size_t len = pack(s, &c, 1);
   return c.bad || fflush(out) ? 0 : len;
@@ -924,6 +940,10 @@ size_t vsph_integrate_pack_lean_file(const struct vsph_integrate *s,
  * the capacity decides no value, only when the set grows next) */
 static int unpack(struct vsph_integrate *s, const unsigned char *buf, FILE *in,
                   size_t len, size_t *used, int exact) {
+  if (!s || (!buf && !in))
+    VSPH_FAIL(VSPH_EINVAL, "vsph_integrate_unpack: a NULL argument");
+  size_t used_own;
+  if (!used) used = &used_own;
   struct cursor c = {.in = buf, .len = len, .f = in};
   struct vsph_particles *p = s->p;
   uint64_t head[6], have;
@@ -1011,6 +1031,8 @@ int vsph_integrate_restore(struct vsph_integrate *s, const unsigned char *buf,
 int vsph_integrate_restore_file(struct vsph_integrate *s, FILE *in,
                                 size_t len) {
   size_t used = 0;
+  if (!s || !in)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_integrate_restore_file: a NULL argument");
   if (fseek(in, 0, SEEK_SET))
     VSPH_FAIL(VSPH_EIO, "cannot read back the kept state");
   const int st = unpack(s, NULL, in, len, &used, 0);

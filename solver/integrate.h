@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "../common/api.h"
 #include "equations.h"
 #include "walls.h"
 
@@ -21,7 +22,10 @@ struct vsph_particles;
  *  kappa h plus a skin covering the step's displacements, and stops on
  *  particle pairing (two particles closer than a set distance); ghosts (walls
  *  only) are regenerated per step and refreshed at every stage. Follows
- *  GSL's init / iterate / test shape. No I/O. */
+ *  GSL's init / iterate / test shape. No I/O. A NULL argument is refused:
+ *  VSPH_EINVAL (reported) where a status is returned, NULL from
+ *  vsph_integrate_alloc (which frees the fluid it was given), NaN or 0
+ *  from the sizes and steps, 1 from vsph_integrate_check. */
 
 /** Run settings. */
 struct vsph_integrate_props {
@@ -71,15 +75,15 @@ struct vsph_integrate {
  *  hold the ghosts each step needs, counted before they are made, so the
  *  memory follows the ghosts there are rather than a worst case. NULL
  *  (after reporting) on failure; @p fluid is freed in every case. */
-struct vsph_integrate *vsph_integrate_alloc(
+VSPH_API struct vsph_integrate *vsph_integrate_alloc(
     const struct vsph_integrate_props *ip, struct vsph_particles *fluid);
 
 /** @brief Free; NULL is a no-op. */
-void vsph_integrate_free(struct vsph_integrate *s);
+VSPH_API void vsph_integrate_free(struct vsph_integrate *s);
 
 /** @brief Time step of THEORY section 5 for the current state; props.dt
  *  in its place where that is set. */
-double vsph_integrate_dt(const struct vsph_integrate *s);
+VSPH_API double vsph_integrate_dt(const struct vsph_integrate *s);
 
 /** @brief The time-step rule itself (docs/theory.md section 5), for the
  *  step (vsph_integrate_dt) and the run's estimate alike:
@@ -89,8 +93,9 @@ double vsph_integrate_dt(const struct vsph_integrate *s);
  *  contact SPH, else 1; g = 1/4 for the leapfrog (its predicted mid-step
  *  velocity keeps pure diffusion stable only to dt |lambda| < 1, RK4 to
  *  about 2.8), else 1; a bound is left out where nu or gmax is 0. */
-double vsph_integrate_dt_rule(double cfl, int split, int contact, double h,
-                              double c0, double umax, double nu, double gmax);
+VSPH_API double vsph_integrate_dt_rule(double cfl, int split, int contact,
+                                       double h, double c0, double umax,
+                                       double nu, double gmax);
 
 /** @brief One step of length @p dt: RK4; the transport velocity's
  *  kick-drift-kick (props.eq.tvf); or the drift-kick-drift leapfrog
@@ -103,17 +108,17 @@ double vsph_integrate_dt_rule(double cfl, int split, int contact, double h,
  *  one evaluation a step.
  *  @return VSPH_OK, or an error from the neighbour search (e.g. VSPH_EINVAL
  *  on non-finite positions: call _check). */
-int vsph_integrate_step(struct vsph_integrate *s, double dt);
+VSPH_API int vsph_integrate_step(struct vsph_integrate *s, double dt);
 
 /** @brief Stability test: 0 if the state is sound, 1 (reason in s->reason)
- *  otherwise. */
-int vsph_integrate_check(struct vsph_integrate *s);
+ *  otherwise (and for a NULL @p s). */
+VSPH_API int vsph_integrate_check(struct vsph_integrate *s);
 
 /** @brief Energies, momenta and the energy budget of the current state (one
  *  extra right-hand-side evaluation). */
-int vsph_integrate_diagnostics(struct vsph_integrate *s,
-                               struct vsph_equations_energy *en,
-                               struct vsph_equations_budget *b);
+VSPH_API int vsph_integrate_diagnostics(struct vsph_integrate *s,
+                                        struct vsph_equations_energy *en,
+                                        struct vsph_equations_budget *b);
 
 /** @brief The integrator's whole state (every particle array in its
  *  current order, ghosts and wall particles included, the capacity, time,
@@ -123,12 +128,13 @@ int vsph_integrate_diagnostics(struct vsph_integrate *s,
  *  settings, the run goes on bitwise as if never stopped. In the
  *  machine's byte order.
  *  @return the bytes packed. */
-size_t vsph_integrate_pack(const struct vsph_integrate *s, unsigned char *buf);
+VSPH_API size_t vsph_integrate_pack(const struct vsph_integrate *s,
+                                    unsigned char *buf);
 
 /** @brief The wall particles laid beside the fluid (ids n_fluid up to
  *  n_fluid + this; 0 without solid walls): the particles beyond them are
  *  images (ghosts, periodic images). */
-size_t vsph_integrate_wall_count(const struct vsph_integrate *s);
+VSPH_API size_t vsph_integrate_wall_count(const struct vsph_integrate *s);
 
 /** @brief vsph_integrate_pack without the rates, which every evaluation
  *  writes before anything reads them (the accelerations, d rho/dt,
@@ -140,45 +146,48 @@ size_t vsph_integrate_wall_count(const struct vsph_integrate *s);
  *  is written).
  *  Unpacked or restored, those arrays hold NaN until the next evaluation;
  *  the next step goes on bitwise as from the whole state. */
-size_t vsph_integrate_pack_lean(const struct vsph_integrate *s,
-                                unsigned char *buf);
+VSPH_API size_t vsph_integrate_pack_lean(const struct vsph_integrate *s,
+                                         unsigned char *buf);
 
 /** @brief vsph_integrate_pack_lean written to @p out from its start (a
  *  fresh file, which vsph_integrate_restore_file reads from its start),
  *  then flushed: kept out of memory while a snapshot is written.
  *  @return the bytes written, 0 where a write failed. */
-size_t vsph_integrate_pack_lean_file(const struct vsph_integrate *s, FILE *out);
+VSPH_API size_t vsph_integrate_pack_lean_file(const struct vsph_integrate *s,
+                                              FILE *out);
 
 /** @brief vsph_integrate_restore of the @p len bytes at the start of
  *  @p in (vsph_integrate_pack_lean_file's). @return as
  *  vsph_integrate_restore, or VSPH_EIO. */
-int vsph_integrate_restore_file(struct vsph_integrate *s, FILE *in, size_t len);
+VSPH_API int vsph_integrate_restore_file(struct vsph_integrate *s, FILE *in,
+                                         size_t len);
 
 /** @brief Restore a state packed by vsph_integrate_pack or
  *  vsph_integrate_pack_lean (@p len bytes at @p buf; *used receives those
- * read).
- *  @return VSPH_OK, VSPH_EINVAL (cut short, or not this set-up's: the
- *  integrator is then unusable and must be freed), VSPH_ENOMEM. */
-int vsph_integrate_unpack(struct vsph_integrate *s, const unsigned char *buf,
-                          size_t len, size_t *used);
+ * read; @p used may be NULL).
+ *  @return VSPH_OK, VSPH_EINVAL (a NULL argument, cut short, or not this
+ * set-up's: the integrator is then unusable and must be freed), VSPH_ENOMEM. */
+VSPH_API int vsph_integrate_unpack(struct vsph_integrate *s,
+                                   const unsigned char *buf, size_t len,
+                                   size_t *used);
 
 /** @brief Put back a state this integrator packed itself (vsph_run's
  *  snapshot between two steps): vsph_integrate_unpack, but a capacity
  *  grown since is kept. @return as vsph_integrate_unpack. */
-int vsph_integrate_restore(struct vsph_integrate *s, const unsigned char *buf,
-                           size_t len);
+VSPH_API int vsph_integrate_restore(struct vsph_integrate *s,
+                                    const unsigned char *buf, size_t len);
 
 /** @brief Bytes allocated for particles, neighbour structures and
  *  integrator storage. */
-size_t vsph_integrate_bytes(const struct vsph_integrate *s);
+VSPH_API size_t vsph_integrate_bytes(const struct vsph_integrate *s);
 
 /** @brief The bytes an integrator for @p n_fluid particles and about
  *  @p n_ghosts ghosts (0: no walls) in @p dim dimensions will need at
  *  most, with the first-pass workspace (PVWF, B, A, VISC-0x) when @p ws is
  *  1, and with the kernel corrections' arrays too when 2, and the
  *  transport velocity's fields when @p tvf: to refuse a run before
- *  allocating it. */
-double vsph_integrate_bytes_estimate(int dim, double n_fluid, double n_ghosts,
-                                     int ws, int tvf);
+ *  allocating it. NaN for @p dim outside 1-3. */
+VSPH_API double vsph_integrate_bytes_estimate(int dim, double n_fluid,
+                                              double n_ghosts, int ws, int tvf);
 
 #endif /* VSPH_SOLVER_INTEGRATE_H */

@@ -48,7 +48,9 @@ const struct vsph_material *vsph_materials_get(int i) {
 }
 
 int vsph_materials_resolve(const char *name, const struct vsph_material **out) {
+  if (!out) VSPH_FAIL(VSPH_EINVAL, "vsph_materials_resolve: a NULL argument");
   *out = NULL;
+  if (!name) VSPH_FAIL(VSPH_EINVAL, "vsph_materials_resolve: a NULL argument");
   for (int i = 0; i < NROWS; i++)
     if (strcmp(name, TABLE[i].name) == 0) {
       *out = &TABLE[i];

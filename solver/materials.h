@@ -3,6 +3,8 @@
 #ifndef VSPH_SOLVER_MATERIALS_H
 #define VSPH_SOLVER_MATERIALS_H
 
+#include "../common/api.h"
+
 /** @file materials.h
  *  @brief Table 1 of Parshikov, Medin, Rublev & Dyachkov (2023 or later) as
  * data: each material's reference density and sound speed (the linear state
@@ -39,21 +41,23 @@ static inline double vsph_materials_eta_num_fit(double alpha) {
  * after Thilo, Meyer & Kasper (a Miyagi-type series in w = pi d/(2S)): 8 pi a0,
  * a0 = [1 - 2 ln(2w) + 2w^2/3 - w^4/9 + 8w^6/135 - 53w^8/1350 + 1112w^10/42525
  * - 241643w^12/13395375 + 18776w^14/1488375]^-1; so that C_D = 16 pi a0/Re. */
-double vsph_materials_drag_row(double d_over_S);
+VSPH_API double vsph_materials_drag_row(double d_over_S);
 
 /** @brief The same for the square array, Sangani & Acrivos (1982):
  *  4 pi/(-ln(c)/2 - 0.738 + c - 0.887 c^2 + 2.038 c^3), c = pi d^2/(4S^2)
  *  the solid fraction. */
-double vsph_materials_drag_square(double d_over_S);
+VSPH_API double vsph_materials_drag_square(double d_over_S);
 
 /** @brief Number of rows (20). */
-int vsph_materials_count(void);
+VSPH_API int vsph_materials_count(void);
 
 /** @brief Row @p i, or NULL. */
-const struct vsph_material *vsph_materials_get(int i);
+VSPH_API const struct vsph_material *vsph_materials_get(int i);
 
 /** @brief The row called @p name into @p out.
- *  @return VSPH_OK, or VSPH_EINVAL with a message listing the names. */
-int vsph_materials_resolve(const char *name, const struct vsph_material **out);
+ *  @return VSPH_OK, or VSPH_EINVAL (a NULL argument, or a message listing
+ *  the names). */
+VSPH_API int vsph_materials_resolve(const char *name,
+                                    const struct vsph_material **out);
 
 #endif /* VSPH_SOLVER_MATERIALS_H */

@@ -18,17 +18,30 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "../analysis/contact.h"
 #include "../analysis/dissipation.h"
 #include "../analysis/fields.h"
+#include "../analysis/laplacian.h"
 #include "../analysis/moments.h"
 #include "../analysis/references.h"
 #include "../analysis/scaling.h"
+#include "../analysis/series.h"
 #include "../common/params.h"
 #include "../common/status.h"
+#include "../common/sysinfo.h"
+#include "../io/csv.h"
+#include "../io/files.h"
+#include "../io/json.h"
+#include "../io/plot.h"
+#include "../io/vtk.h"
 #include "../kernels/kernel.h"
 #include "../solver/cells.h"
+#include "../solver/diagnostics.h"
 #include "../solver/equations.h"
+#include "../solver/integrate.h"
 #include "../solver/lattice.h"
+#include "../solver/materials.h"
+#include "../solver/pair.h"
 #include "../solver/particles.h"
 #include "../solver/run.h"
 #include "../solver/scene.h"
@@ -1305,6 +1318,816 @@ static void call_vsph_scaling_axis_1(void) {
   (void)vsph_scaling_axis(NULL, SIZE_MAX, NULL, NULL, NULL);
 }
 
+static void call_vsph_files_open_0(void) { (void)vsph_files_open(NULL, NULL); }
+
+static void call_vsph_files_open_1(void) { (void)vsph_files_open(NULL, NULL); }
+
+static void call_vsph_files_close_0(void) {
+  (void)vsph_files_close(NULL, NULL, NULL);
+}
+
+static void call_vsph_files_close_1(void) {
+  (void)vsph_files_close(NULL, NULL, NULL);
+}
+
+static void call_vsph_files_discard_0(void) {
+  vsph_files_discard(NULL, NULL, NULL);
+}
+
+static void call_vsph_files_discard_1(void) {
+  vsph_files_discard(NULL, NULL, NULL);
+}
+
+static void call_vsph_files_write_0(void) {
+  (void)vsph_files_write(NULL, NULL, NULL);
+}
+
+static void call_vsph_files_write_1(void) {
+  (void)vsph_files_write(NULL, NULL, NULL);
+}
+
+static void call_vsph_files_mkdir_0(void) { (void)vsph_files_mkdir(NULL); }
+
+static void call_vsph_files_mkdir_1(void) { (void)vsph_files_mkdir(NULL); }
+
+static void call_vsph_files_target_0(void) { (void)vsph_files_target(NULL); }
+
+static void call_vsph_files_target_1(void) { (void)vsph_files_target(NULL); }
+
+static void call_vsph_files_reopen_0(void) {
+  (void)vsph_files_reopen(NULL, NULL, 0);
+}
+
+static void call_vsph_files_reopen_1(void) {
+  (void)vsph_files_reopen(NULL, NULL, -1);
+}
+
+static void call_vsph_files_slurp_0(void) {
+  (void)vsph_files_slurp(NULL, NULL);
+}
+
+static void call_vsph_files_slurp_1(void) {
+  (void)vsph_files_slurp(NULL, NULL);
+}
+
+static void call_vsph_csv_open_0(void) {
+  (void)vsph_csv_open(NULL, NULL, NULL);
+}
+
+static void call_vsph_csv_open_1(void) {
+  (void)vsph_csv_open(NULL, NULL, NULL);
+}
+
+static void call_vsph_csv_close_0(void) {
+  (void)vsph_csv_close(NULL, NULL, NULL);
+}
+
+static void call_vsph_csv_close_1(void) {
+  (void)vsph_csv_close(NULL, NULL, NULL);
+}
+
+static void call_vsph_csv_read_0(void) { (void)vsph_csv_read(NULL); }
+
+static void call_vsph_csv_read_1(void) { (void)vsph_csv_read(NULL); }
+
+static void call_vsph_csv_free_0(void) { vsph_csv_free(NULL); }
+
+static void call_vsph_csv_free_1(void) { vsph_csv_free(NULL); }
+
+static void call_vsph_csv_column_0(void) { (void)vsph_csv_column(NULL, NULL); }
+
+static void call_vsph_csv_column_1(void) { (void)vsph_csv_column(NULL, NULL); }
+
+static void call_vsph_csv_column_number_0(void) {
+  (void)vsph_csv_column_number(NULL, NULL);
+}
+
+static void call_vsph_csv_column_number_1(void) {
+  (void)vsph_csv_column_number(NULL, NULL);
+}
+
+static void call_vsph_json_array_0(void) { (void)vsph_json_array(NULL, 0); }
+
+static void call_vsph_json_array_1(void) {
+  (void)vsph_json_array(NULL, SIZE_MAX);
+}
+
+static void call_vsph_json_number_0(void) { vsph_json_number(NULL, NULL, 0.0); }
+
+static void call_vsph_json_number_1(void) { vsph_json_number(NULL, NULL, NAN); }
+
+static void call_vsph_json_load_0(void) { vsph_json_load(NULL, NULL, NULL); }
+
+static void call_vsph_json_load_1(void) { vsph_json_load(NULL, NULL, NULL); }
+
+static void call_vsph_json_moments_0(void) { vsph_json_moments(NULL, NULL); }
+
+static void call_vsph_json_moments_1(void) { vsph_json_moments(NULL, NULL); }
+
+static void call_vsph_json_print_0(void) { (void)vsph_json_print(NULL); }
+
+static void call_vsph_json_print_1(void) { (void)vsph_json_print(NULL); }
+
+static void call_vsph_json_text_0(void) { (void)vsph_json_text(NULL); }
+
+static void call_vsph_json_text_1(void) { (void)vsph_json_text(NULL); }
+
+static void call_vsph_json_write_0(void) {
+  (void)vsph_json_write(NULL, NULL, NULL);
+}
+
+static void call_vsph_json_write_1(void) {
+  (void)vsph_json_write(NULL, NULL, NULL);
+}
+
+static void call_vsph_json_read_0(void) { (void)vsph_json_read(NULL); }
+
+static void call_vsph_json_read_1(void) { (void)vsph_json_read(NULL); }
+
+static void call_vsph_json_get_number_0(void) {
+  (void)vsph_json_get_number(NULL, NULL, 0.0);
+}
+
+static void call_vsph_json_get_number_1(void) {
+  (void)vsph_json_get_number(NULL, NULL, NAN);
+}
+
+static void call_vsph_json_tensors_0(void) {
+  (void)vsph_json_tensors(NULL, NULL);
+}
+
+static void call_vsph_json_tensors_1(void) {
+  (void)vsph_json_tensors(NULL, NULL);
+}
+
+static void call_vsph_json_scaling_0(void) {
+  (void)vsph_json_scaling(NULL, NULL, 0.0, 0.0);
+}
+
+static void call_vsph_json_scaling_1(void) {
+  (void)vsph_json_scaling(NULL, NULL, NAN, NAN);
+}
+
+static void call_vsph_json_dissipation_0(void) {
+  (void)vsph_json_dissipation(NULL, NULL);
+}
+
+static void call_vsph_json_dissipation_1(void) {
+  (void)vsph_json_dissipation(NULL, NULL);
+}
+
+static void call_vsph_json_laplacian_0(void) {
+  (void)vsph_json_laplacian(NULL, NULL);
+}
+
+static void call_vsph_json_laplacian_1(void) {
+  (void)vsph_json_laplacian(NULL, NULL);
+}
+
+static void call_vsph_plot_colour_0(void) { (void)vsph_plot_colour(0); }
+
+static void call_vsph_plot_colour_1(void) { (void)vsph_plot_colour(SIZE_MAX); }
+
+static void call_vsph_plot_point_0(void) { (void)vsph_plot_point(0); }
+
+static void call_vsph_plot_point_1(void) { (void)vsph_plot_point(SIZE_MAX); }
+
+static void call_vsph_plot_plain_0(void) { vsph_plot_plain(NULL, 0, NULL); }
+
+static void call_vsph_plot_plain_1(void) {
+  vsph_plot_plain(NULL, SIZE_MAX, NULL);
+}
+
+static void call_vsph_plot_init_0(void) {
+  vsph_plot_init(NULL, NULL, NULL, NULL, NULL, NULL);
+}
+
+static void call_vsph_plot_init_1(void) {
+  vsph_plot_init(NULL, NULL, NULL, NULL, NULL, NULL);
+}
+
+static void call_vsph_plot_add_0(void) {
+  (void)vsph_plot_add(NULL, NULL, NULL, NULL, NULL);
+}
+
+static void call_vsph_plot_add_1(void) {
+  (void)vsph_plot_add(NULL, NULL, NULL, NULL, NULL);
+}
+
+static void call_vsph_plot_write_0(void) { (void)vsph_plot_write(NULL); }
+
+static void call_vsph_plot_write_1(void) { (void)vsph_plot_write(NULL); }
+
+static void call_vsph_plot_particles_0(void) {
+  (void)vsph_plot_particles(NULL, NULL, NULL, NULL, 0, 0, NULL, 0, NULL, NULL);
+}
+
+static void call_vsph_plot_particles_1(void) {
+  (void)vsph_plot_particles(NULL, NULL, NULL, NULL, SIZE_MAX, -1, NULL, -1,
+                            NULL, NULL);
+}
+
+static void call_vsph_vtk_write_0(void) {
+  (void)vsph_vtk_write(NULL, NULL, NULL, 0, 0.0, NULL, NULL);
+}
+
+static void call_vsph_vtk_write_1(void) {
+  (void)vsph_vtk_write(NULL, NULL, NULL, SIZE_MAX, NAN, NULL, NULL);
+}
+
+static void call_vsph_vtk_write_mapped_0(void) {
+  (void)vsph_vtk_write_mapped(NULL, NULL, NULL, 0, NULL, 0.0, NULL, NULL);
+}
+
+static void call_vsph_vtk_write_mapped_1(void) {
+  (void)vsph_vtk_write_mapped(NULL, NULL, NULL, SIZE_MAX, NULL, NAN, NULL,
+                              NULL);
+}
+
+static void call_vsph_vtk_read_0(void) { (void)vsph_vtk_read(NULL, NULL); }
+
+static void call_vsph_vtk_read_1(void) { (void)vsph_vtk_read(NULL, NULL); }
+
+static void call_vsph_vtk_write_frame_0(void) {
+  (void)vsph_vtk_write_frame(NULL, NULL, NULL, 0, 0);
+}
+
+static void call_vsph_vtk_write_frame_1(void) {
+  (void)vsph_vtk_write_frame(NULL, NULL, NULL, -1, UINT_MAX);
+}
+
+static void call_vsph_vtk_snapshot_free_0(void) {
+  vsph_vtk_snapshot_free(NULL);
+}
+
+static void call_vsph_vtk_snapshot_free_1(void) {
+  vsph_vtk_snapshot_free(NULL);
+}
+
+static void call_vsph_vtk_pvd_open_0(void) {
+  (void)vsph_vtk_pvd_open(NULL, NULL);
+}
+
+static void call_vsph_vtk_pvd_open_1(void) {
+  (void)vsph_vtk_pvd_open(NULL, NULL);
+}
+
+static void call_vsph_vtk_pvd_reopen_0(void) {
+  (void)vsph_vtk_pvd_reopen(NULL, NULL, 0);
+}
+
+static void call_vsph_vtk_pvd_reopen_1(void) {
+  (void)vsph_vtk_pvd_reopen(NULL, NULL, -1);
+}
+
+static void call_vsph_vtk_pvd_add_0(void) {
+  (void)vsph_vtk_pvd_add(NULL, 0.0, NULL);
+}
+
+static void call_vsph_vtk_pvd_add_1(void) {
+  (void)vsph_vtk_pvd_add(NULL, NAN, NULL);
+}
+
+static void call_vsph_vtk_pvd_add_part_0(void) {
+  (void)vsph_vtk_pvd_add_part(NULL, 0.0, 0, NULL);
+}
+
+static void call_vsph_vtk_pvd_add_part_1(void) {
+  (void)vsph_vtk_pvd_add_part(NULL, NAN, -1, NULL);
+}
+
+static void call_vsph_vtk_write_walls_0(void) {
+  (void)vsph_vtk_write_walls(NULL, NULL, NULL, 0, 0, 0.0);
+}
+
+static void call_vsph_vtk_write_walls_1(void) {
+  (void)vsph_vtk_write_walls(NULL, NULL, NULL, SIZE_MAX, SIZE_MAX, NAN);
+}
+
+static void call_vsph_vtk_pvd_close_0(void) { (void)vsph_vtk_pvd_close(NULL); }
+
+static void call_vsph_vtk_pvd_close_1(void) { (void)vsph_vtk_pvd_close(NULL); }
+
+static void call_vsph_pair_x86_simd_0(void) { (void)vsph_pair_x86_simd(); }
+
+static void call_vsph_pair_x86_simd_1(void) { (void)vsph_pair_x86_simd(); }
+
+static void call_vsph_series_interp_0(void) {
+  (void)vsph_series_interp(NULL, NULL, 0, 0.0);
+}
+
+static void call_vsph_series_interp_1(void) {
+  (void)vsph_series_interp(NULL, NULL, SIZE_MAX, NAN);
+}
+
+static void call_vsph_series_extrapolate_0(void) {
+  (void)vsph_series_extrapolate(NULL, NULL);
+}
+
+static void call_vsph_series_extrapolate_1(void) {
+  (void)vsph_series_extrapolate(NULL, NULL);
+}
+
+static void call_vsph_series_decay_error_0(void) {
+  (void)vsph_series_decay_error(NULL, NULL, 0);
+}
+
+static void call_vsph_series_decay_error_1(void) {
+  (void)vsph_series_decay_error(NULL, NULL, SIZE_MAX);
+}
+
+static void call_vsph_series_decay_error_table_0(void) {
+  (void)vsph_series_decay_error_table(NULL, NULL, 0, NULL, NULL, 0);
+}
+
+static void call_vsph_series_decay_error_table_1(void) {
+  (void)vsph_series_decay_error_table(NULL, NULL, SIZE_MAX, NULL, NULL,
+                                      SIZE_MAX);
+}
+
+static void call_vsph_series_onset_0(void) {
+  (void)vsph_series_onset(NULL, NULL, 0, NULL, NULL, 0, 0.0);
+}
+
+static void call_vsph_series_onset_1(void) {
+  (void)vsph_series_onset(NULL, NULL, SIZE_MAX, NULL, NULL, SIZE_MAX, NAN);
+}
+
+static void call_vsph_series_integral_0(void) {
+  (void)vsph_series_integral(NULL, NULL, 0);
+}
+
+static void call_vsph_series_integral_1(void) {
+  (void)vsph_series_integral(NULL, NULL, SIZE_MAX);
+}
+
+static void call_vsph_series_loss_ratio_0(void) {
+  (void)vsph_series_loss_ratio(0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_series_loss_ratio_1(void) {
+  (void)vsph_series_loss_ratio(NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_series_first_reach_0(void) {
+  (void)vsph_series_first_reach(NULL, NULL, 0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_series_first_reach_1(void) {
+  (void)vsph_series_first_reach(NULL, NULL, SIZE_MAX, NAN, NAN, NAN);
+}
+
+static void call_vsph_series_failure_0(void) {
+  (void)vsph_series_failure(NULL, NULL, 0, 0.0, 0.0, 0.0, 0.0, NULL);
+}
+
+static void call_vsph_series_failure_1(void) {
+  (void)vsph_series_failure(NULL, NULL, SIZE_MAX, NAN, NAN, NAN, NAN, NULL);
+}
+
+static void call_vsph_series_tail_mean_0(void) {
+  (void)vsph_series_tail_mean(NULL, NULL, 0, 0.0);
+}
+
+static void call_vsph_series_tail_mean_1(void) {
+  (void)vsph_series_tail_mean(NULL, NULL, SIZE_MAX, NAN);
+}
+
+static void call_vsph_series_tail_range_0(void) {
+  (void)vsph_series_tail_range(NULL, NULL, 0, 0.0);
+}
+
+static void call_vsph_series_tail_range_1(void) {
+  (void)vsph_series_tail_range(NULL, NULL, SIZE_MAX, NAN);
+}
+
+static void call_vsph_series_plateau_0(void) {
+  vsph_series_plateau(NULL, NULL, NULL, NULL, 0, 0.0, 0.0, 0.0, NULL, 0, NULL,
+                      NULL);
+}
+
+static void call_vsph_series_plateau_1(void) {
+  vsph_series_plateau(NULL, NULL, NULL, NULL, SIZE_MAX, NAN, NAN, NAN, NULL,
+                      SIZE_MAX, NULL, NULL);
+}
+
+static void call_vsph_series_cfl_pick_0(void) {
+  (void)vsph_series_cfl_pick(NULL, NULL, 0, 0, 0.0);
+}
+
+static void call_vsph_series_cfl_pick_1(void) {
+  (void)vsph_series_cfl_pick(NULL, NULL, SIZE_MAX, -1, NAN);
+}
+
+static void call_vsph_series_interp_cubic_0(void) {
+  (void)vsph_series_interp_cubic(NULL, NULL, 0, 0.0);
+}
+
+static void call_vsph_series_interp_cubic_1(void) {
+  (void)vsph_series_interp_cubic(NULL, NULL, SIZE_MAX, NAN);
+}
+
+static void call_vsph_series_order_0(void) {
+  (void)vsph_series_order(0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_series_order_1(void) {
+  (void)vsph_series_order(NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_series_selfconv_0(void) {
+  (void)vsph_series_selfconv(NULL, 0, NULL);
+}
+
+static void call_vsph_series_selfconv_1(void) {
+  (void)vsph_series_selfconv(NULL, SIZE_MAX, NULL);
+}
+
+static void call_vsph_series_slope_where_0(void) {
+  (void)vsph_series_slope_where(NULL, NULL, NULL, 0, NULL);
+}
+
+static void call_vsph_series_slope_where_1(void) {
+  (void)vsph_series_slope_where(NULL, NULL, NULL, SIZE_MAX, NULL);
+}
+
+static void call_vsph_contact_shear_u_0(void) {
+  (void)vsph_contact_shear_u(0.0, 0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_contact_shear_u_1(void) {
+  (void)vsph_contact_shear_u(NAN, NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_contact_shear_dy_0(void) {
+  (void)vsph_contact_shear_dy(0.0, 0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_contact_shear_dy_1(void) {
+  (void)vsph_contact_shear_dy(NAN, NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_contact_eta_model_0(void) {
+  (void)vsph_contact_eta_model(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_contact_eta_model_1(void) {
+  (void)vsph_contact_eta_model(NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_contact_bimaterial_fit_0(void) {
+  (void)vsph_contact_bimaterial_fit(NULL, NULL, NULL, 0, 0.0, 0.0, 0.0, 0.0,
+                                    0.0, 0.0, 0.0, 0.0, 0.0, NULL);
+}
+
+static void call_vsph_contact_bimaterial_fit_1(void) {
+  (void)vsph_contact_bimaterial_fit(NULL, NULL, NULL, SIZE_MAX, NAN, NAN, NAN,
+                                    NAN, NAN, NAN, NAN, NAN, NAN, NULL);
+}
+
+static void call_vsph_contact_drag_ratio_0(void) {
+  (void)vsph_contact_drag_ratio(NULL, 0, 0.0, 0.0, 0.0, NULL, NULL);
+}
+
+static void call_vsph_contact_drag_ratio_1(void) {
+  (void)vsph_contact_drag_ratio(NULL, SIZE_MAX, NAN, NAN, NAN, NULL, NULL);
+}
+
+static void call_vsph_contact_bimaterial_u_0(void) {
+  (void)vsph_contact_bimaterial_u(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, NULL);
+}
+
+static void call_vsph_contact_bimaterial_u_1(void) {
+  (void)vsph_contact_bimaterial_u(NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN, NULL);
+}
+
+static void call_vsph_contact_lattice_coef_0(void) {
+  (void)vsph_contact_lattice_coef(NULL, 0, 0.0);
+}
+
+static void call_vsph_contact_lattice_coef_1(void) {
+  (void)vsph_contact_lattice_coef(NULL, -1, NAN);
+}
+
+static void call_vsph_contact_lattice_visc_factor_0(void) {
+  (void)vsph_contact_lattice_visc_factor(NULL, 0, 0.0);
+}
+
+static void call_vsph_contact_lattice_visc_factor_1(void) {
+  (void)vsph_contact_lattice_visc_factor(NULL, -1, NAN);
+}
+
+static void call_vsph_contact_fit_nu_0(void) {
+  (void)vsph_contact_fit_nu(0, NULL, NULL, 0, 0.0, 0.0, 0.0, 0.0, 0.0, NULL);
+}
+
+static void call_vsph_contact_fit_nu_1(void) {
+  (void)vsph_contact_fit_nu(SIZE_MAX, NULL, NULL, -1, NAN, NAN, NAN, NAN, NAN,
+                            NULL);
+}
+
+static void call_vsph_contact_defaults_0(void) {
+  (void)vsph_contact_defaults(NULL);
+}
+
+static void call_vsph_contact_defaults_1(void) {
+  (void)vsph_contact_defaults(NULL);
+}
+
+static void call_vsph_contact_shear_measure_0(void) {
+  (void)vsph_contact_shear_measure(NULL, NULL);
+}
+
+static void call_vsph_contact_shear_measure_1(void) {
+  (void)vsph_contact_shear_measure(NULL, NULL);
+}
+
+static void call_vsph_contact_shear_free_0(void) {
+  vsph_contact_shear_free(NULL);
+}
+
+static void call_vsph_contact_shear_free_1(void) {
+  vsph_contact_shear_free(NULL);
+}
+
+static void call_vsph_laplacian_form_name_0(void) {
+  (void)vsph_laplacian_form_name(0);
+}
+
+static void call_vsph_laplacian_form_name_1(void) {
+  (void)vsph_laplacian_form_name(-1);
+}
+
+static void call_vsph_laplacian_form_find_0(void) {
+  (void)vsph_laplacian_form_find(NULL);
+}
+
+static void call_vsph_laplacian_form_find_1(void) {
+  (void)vsph_laplacian_form_find(NULL);
+}
+
+static void call_vsph_laplacian_field_name_0(void) {
+  (void)vsph_laplacian_field_name(0);
+}
+
+static void call_vsph_laplacian_field_name_1(void) {
+  (void)vsph_laplacian_field_name(-1);
+}
+
+static void call_vsph_laplacian_params_0(void) {
+  (void)vsph_laplacian_params(NULL);
+}
+
+static void call_vsph_laplacian_params_1(void) {
+  (void)vsph_laplacian_params(NULL);
+}
+
+static void call_vsph_laplacian_props_init_0(void) {
+  (void)vsph_laplacian_props_init(NULL, NULL);
+}
+
+static void call_vsph_laplacian_props_init_1(void) {
+  (void)vsph_laplacian_props_init(NULL, NULL);
+}
+
+static void call_vsph_laplacian_patch_0(void) {
+  (void)vsph_laplacian_patch(NULL, NULL);
+}
+
+static void call_vsph_laplacian_patch_1(void) {
+  (void)vsph_laplacian_patch(NULL, NULL);
+}
+
+static void call_vsph_integrate_alloc_0(void) {
+  (void)vsph_integrate_alloc(NULL, NULL);
+}
+
+static void call_vsph_integrate_alloc_1(void) {
+  (void)vsph_integrate_alloc(NULL, NULL);
+}
+
+static void call_vsph_integrate_free_0(void) { vsph_integrate_free(NULL); }
+
+static void call_vsph_integrate_free_1(void) { vsph_integrate_free(NULL); }
+
+static void call_vsph_integrate_dt_0(void) { (void)vsph_integrate_dt(NULL); }
+
+static void call_vsph_integrate_dt_1(void) { (void)vsph_integrate_dt(NULL); }
+
+static void call_vsph_integrate_dt_rule_0(void) {
+  (void)vsph_integrate_dt_rule(0.0, 0, 0, 0.0, 0.0, 0.0, 0.0, 0.0);
+}
+
+static void call_vsph_integrate_dt_rule_1(void) {
+  (void)vsph_integrate_dt_rule(NAN, -1, -1, NAN, NAN, NAN, NAN, NAN);
+}
+
+static void call_vsph_integrate_step_0(void) {
+  (void)vsph_integrate_step(NULL, 0.0);
+}
+
+static void call_vsph_integrate_step_1(void) {
+  (void)vsph_integrate_step(NULL, NAN);
+}
+
+static void call_vsph_integrate_check_0(void) {
+  (void)vsph_integrate_check(NULL);
+}
+
+static void call_vsph_integrate_check_1(void) {
+  (void)vsph_integrate_check(NULL);
+}
+
+static void call_vsph_integrate_diagnostics_0(void) {
+  (void)vsph_integrate_diagnostics(NULL, NULL, NULL);
+}
+
+static void call_vsph_integrate_diagnostics_1(void) {
+  (void)vsph_integrate_diagnostics(NULL, NULL, NULL);
+}
+
+static void call_vsph_integrate_pack_0(void) {
+  (void)vsph_integrate_pack(NULL, NULL);
+}
+
+static void call_vsph_integrate_pack_1(void) {
+  (void)vsph_integrate_pack(NULL, NULL);
+}
+
+static void call_vsph_integrate_wall_count_0(void) {
+  (void)vsph_integrate_wall_count(NULL);
+}
+
+static void call_vsph_integrate_wall_count_1(void) {
+  (void)vsph_integrate_wall_count(NULL);
+}
+
+static void call_vsph_integrate_pack_lean_0(void) {
+  (void)vsph_integrate_pack_lean(NULL, NULL);
+}
+
+static void call_vsph_integrate_pack_lean_1(void) {
+  (void)vsph_integrate_pack_lean(NULL, NULL);
+}
+
+static void call_vsph_integrate_pack_lean_file_0(void) {
+  (void)vsph_integrate_pack_lean_file(NULL, NULL);
+}
+
+static void call_vsph_integrate_pack_lean_file_1(void) {
+  (void)vsph_integrate_pack_lean_file(NULL, NULL);
+}
+
+static void call_vsph_integrate_restore_file_0(void) {
+  (void)vsph_integrate_restore_file(NULL, NULL, 0);
+}
+
+static void call_vsph_integrate_restore_file_1(void) {
+  (void)vsph_integrate_restore_file(NULL, NULL, SIZE_MAX);
+}
+
+static void call_vsph_integrate_unpack_0(void) {
+  (void)vsph_integrate_unpack(NULL, NULL, 0, NULL);
+}
+
+static void call_vsph_integrate_unpack_1(void) {
+  (void)vsph_integrate_unpack(NULL, NULL, SIZE_MAX, NULL);
+}
+
+static void call_vsph_integrate_restore_0(void) {
+  (void)vsph_integrate_restore(NULL, NULL, 0);
+}
+
+static void call_vsph_integrate_restore_1(void) {
+  (void)vsph_integrate_restore(NULL, NULL, SIZE_MAX);
+}
+
+static void call_vsph_integrate_bytes_0(void) {
+  (void)vsph_integrate_bytes(NULL);
+}
+
+static void call_vsph_integrate_bytes_1(void) {
+  (void)vsph_integrate_bytes(NULL);
+}
+
+static void call_vsph_integrate_bytes_estimate_0(void) {
+  (void)vsph_integrate_bytes_estimate(0, 0.0, 0.0, 0, 0);
+}
+
+static void call_vsph_integrate_bytes_estimate_1(void) {
+  (void)vsph_integrate_bytes_estimate(-1, NAN, NAN, -1, -1);
+}
+
+static void call_vsph_materials_drag_row_0(void) {
+  (void)vsph_materials_drag_row(0.0);
+}
+
+static void call_vsph_materials_drag_row_1(void) {
+  (void)vsph_materials_drag_row(NAN);
+}
+
+static void call_vsph_materials_drag_square_0(void) {
+  (void)vsph_materials_drag_square(0.0);
+}
+
+static void call_vsph_materials_drag_square_1(void) {
+  (void)vsph_materials_drag_square(NAN);
+}
+
+static void call_vsph_materials_count_0(void) { (void)vsph_materials_count(); }
+
+static void call_vsph_materials_count_1(void) { (void)vsph_materials_count(); }
+
+static void call_vsph_materials_get_0(void) { (void)vsph_materials_get(0); }
+
+static void call_vsph_materials_get_1(void) { (void)vsph_materials_get(-1); }
+
+static void call_vsph_materials_resolve_0(void) {
+  (void)vsph_materials_resolve(NULL, NULL);
+}
+
+static void call_vsph_materials_resolve_1(void) {
+  (void)vsph_materials_resolve(NULL, NULL);
+}
+
+static void call_vsph_diagnostics_surface_threshold_0(void) {
+  (void)vsph_diagnostics_surface_threshold(0);
+}
+
+static void call_vsph_diagnostics_surface_threshold_1(void) {
+  (void)vsph_diagnostics_surface_threshold(-1);
+}
+
+static void call_vsph_diagnostics_compute_0(void) {
+  (void)vsph_diagnostics_compute(NULL, 0, NULL, 0.0, NULL, NULL);
+}
+
+static void call_vsph_diagnostics_compute_1(void) {
+  (void)vsph_diagnostics_compute(NULL, SIZE_MAX, NULL, NAN, NULL, NULL);
+}
+
+static void call_vsph_diagnostics_compute_cells_0(void) {
+  (void)vsph_diagnostics_compute_cells(NULL, 0, NULL, NULL, 0.0, NULL, NULL,
+                                       NULL);
+}
+
+static void call_vsph_diagnostics_compute_cells_1(void) {
+  (void)vsph_diagnostics_compute_cells(NULL, SIZE_MAX, NULL, NULL, NAN, NULL,
+                                       NULL, NULL);
+}
+
+static void call_vsph_diagnostics_probe_0(void) {
+  (void)vsph_diagnostics_probe(NULL, 0, NULL, 0.0, NULL, NULL, NULL);
+}
+
+static void call_vsph_diagnostics_probe_1(void) {
+  (void)vsph_diagnostics_probe(NULL, SIZE_MAX, NULL, NAN, NULL, NULL, NULL);
+}
+
+static void call_vsph_diagnostics_free_0(void) { vsph_diagnostics_free(NULL); }
+
+static void call_vsph_diagnostics_free_1(void) { vsph_diagnostics_free(NULL); }
+
+static void call_vsph_sysinfo_load_0(void) { vsph_sysinfo_load(NULL); }
+
+static void call_vsph_sysinfo_load_1(void) { vsph_sysinfo_load(NULL); }
+
+static void call_vsph_sysinfo_cpu_s_0(void) { (void)vsph_sysinfo_cpu_s(); }
+
+static void call_vsph_sysinfo_cpu_s_1(void) { (void)vsph_sysinfo_cpu_s(); }
+
+static void call_vsph_sysinfo_thread_cpu_s_0(void) {
+  (void)vsph_sysinfo_thread_cpu_s();
+}
+
+static void call_vsph_sysinfo_thread_cpu_s_1(void) {
+  (void)vsph_sysinfo_thread_cpu_s();
+}
+
+static void call_vsph_sysinfo_wait_policy_0(void) {
+  (void)vsph_sysinfo_wait_policy(NULL, 0);
+}
+
+static void call_vsph_sysinfo_wait_policy_1(void) {
+  (void)vsph_sysinfo_wait_policy(NULL, SIZE_MAX);
+}
+
+static void call_vsph_sysinfo_build_isa_0(void) {
+  (void)vsph_sysinfo_build_isa();
+}
+
+static void call_vsph_sysinfo_build_isa_1(void) {
+  (void)vsph_sysinfo_build_isa();
+}
+
+static void call_vsph_sysinfo_peak_rss_0(void) {
+  (void)vsph_sysinfo_peak_rss();
+}
+
+static void call_vsph_sysinfo_peak_rss_1(void) {
+  (void)vsph_sysinfo_peak_rss();
+}
+
 static const struct api_call CALLS[] = {
     {"vsph_params_alloc", call_vsph_params_alloc_0},
     {"vsph_params_alloc", call_vsph_params_alloc_1},
@@ -1654,6 +2477,236 @@ static const struct api_call CALLS[] = {
     {"vsph_scaling_interior", call_vsph_scaling_interior_1},
     {"vsph_scaling_axis", call_vsph_scaling_axis_0},
     {"vsph_scaling_axis", call_vsph_scaling_axis_1},
+    {"vsph_files_open", call_vsph_files_open_0},
+    {"vsph_files_open", call_vsph_files_open_1},
+    {"vsph_files_close", call_vsph_files_close_0},
+    {"vsph_files_close", call_vsph_files_close_1},
+    {"vsph_files_discard", call_vsph_files_discard_0},
+    {"vsph_files_discard", call_vsph_files_discard_1},
+    {"vsph_files_write", call_vsph_files_write_0},
+    {"vsph_files_write", call_vsph_files_write_1},
+    {"vsph_files_mkdir", call_vsph_files_mkdir_0},
+    {"vsph_files_mkdir", call_vsph_files_mkdir_1},
+    {"vsph_files_target", call_vsph_files_target_0},
+    {"vsph_files_target", call_vsph_files_target_1},
+    {"vsph_files_reopen", call_vsph_files_reopen_0},
+    {"vsph_files_reopen", call_vsph_files_reopen_1},
+    {"vsph_files_slurp", call_vsph_files_slurp_0},
+    {"vsph_files_slurp", call_vsph_files_slurp_1},
+    {"vsph_csv_open", call_vsph_csv_open_0},
+    {"vsph_csv_open", call_vsph_csv_open_1},
+    {"vsph_csv_close", call_vsph_csv_close_0},
+    {"vsph_csv_close", call_vsph_csv_close_1},
+    {"vsph_csv_read", call_vsph_csv_read_0},
+    {"vsph_csv_read", call_vsph_csv_read_1},
+    {"vsph_csv_free", call_vsph_csv_free_0},
+    {"vsph_csv_free", call_vsph_csv_free_1},
+    {"vsph_csv_column", call_vsph_csv_column_0},
+    {"vsph_csv_column", call_vsph_csv_column_1},
+    {"vsph_csv_column_number", call_vsph_csv_column_number_0},
+    {"vsph_csv_column_number", call_vsph_csv_column_number_1},
+    {"vsph_json_array", call_vsph_json_array_0},
+    {"vsph_json_array", call_vsph_json_array_1},
+    {"vsph_json_number", call_vsph_json_number_0},
+    {"vsph_json_number", call_vsph_json_number_1},
+    {"vsph_json_load", call_vsph_json_load_0},
+    {"vsph_json_load", call_vsph_json_load_1},
+    {"vsph_json_moments", call_vsph_json_moments_0},
+    {"vsph_json_moments", call_vsph_json_moments_1},
+    {"vsph_json_print", call_vsph_json_print_0},
+    {"vsph_json_print", call_vsph_json_print_1},
+    {"vsph_json_text", call_vsph_json_text_0},
+    {"vsph_json_text", call_vsph_json_text_1},
+    {"vsph_json_write", call_vsph_json_write_0},
+    {"vsph_json_write", call_vsph_json_write_1},
+    {"vsph_json_read", call_vsph_json_read_0},
+    {"vsph_json_read", call_vsph_json_read_1},
+    {"vsph_json_get_number", call_vsph_json_get_number_0},
+    {"vsph_json_get_number", call_vsph_json_get_number_1},
+    {"vsph_json_tensors", call_vsph_json_tensors_0},
+    {"vsph_json_tensors", call_vsph_json_tensors_1},
+    {"vsph_json_scaling", call_vsph_json_scaling_0},
+    {"vsph_json_scaling", call_vsph_json_scaling_1},
+    {"vsph_json_dissipation", call_vsph_json_dissipation_0},
+    {"vsph_json_dissipation", call_vsph_json_dissipation_1},
+    {"vsph_json_laplacian", call_vsph_json_laplacian_0},
+    {"vsph_json_laplacian", call_vsph_json_laplacian_1},
+    {"vsph_plot_colour", call_vsph_plot_colour_0},
+    {"vsph_plot_colour", call_vsph_plot_colour_1},
+    {"vsph_plot_point", call_vsph_plot_point_0},
+    {"vsph_plot_point", call_vsph_plot_point_1},
+    {"vsph_plot_plain", call_vsph_plot_plain_0},
+    {"vsph_plot_plain", call_vsph_plot_plain_1},
+    {"vsph_plot_init", call_vsph_plot_init_0},
+    {"vsph_plot_init", call_vsph_plot_init_1},
+    {"vsph_plot_add", call_vsph_plot_add_0},
+    {"vsph_plot_add", call_vsph_plot_add_1},
+    {"vsph_plot_write", call_vsph_plot_write_0},
+    {"vsph_plot_write", call_vsph_plot_write_1},
+    {"vsph_plot_particles", call_vsph_plot_particles_0},
+    {"vsph_plot_particles", call_vsph_plot_particles_1},
+    {"vsph_vtk_write", call_vsph_vtk_write_0},
+    {"vsph_vtk_write", call_vsph_vtk_write_1},
+    {"vsph_vtk_write_mapped", call_vsph_vtk_write_mapped_0},
+    {"vsph_vtk_write_mapped", call_vsph_vtk_write_mapped_1},
+    {"vsph_vtk_read", call_vsph_vtk_read_0},
+    {"vsph_vtk_read", call_vsph_vtk_read_1},
+    {"vsph_vtk_write_frame", call_vsph_vtk_write_frame_0},
+    {"vsph_vtk_write_frame", call_vsph_vtk_write_frame_1},
+    {"vsph_vtk_snapshot_free", call_vsph_vtk_snapshot_free_0},
+    {"vsph_vtk_snapshot_free", call_vsph_vtk_snapshot_free_1},
+    {"vsph_vtk_pvd_open", call_vsph_vtk_pvd_open_0},
+    {"vsph_vtk_pvd_open", call_vsph_vtk_pvd_open_1},
+    {"vsph_vtk_pvd_reopen", call_vsph_vtk_pvd_reopen_0},
+    {"vsph_vtk_pvd_reopen", call_vsph_vtk_pvd_reopen_1},
+    {"vsph_vtk_pvd_add", call_vsph_vtk_pvd_add_0},
+    {"vsph_vtk_pvd_add", call_vsph_vtk_pvd_add_1},
+    {"vsph_vtk_pvd_add_part", call_vsph_vtk_pvd_add_part_0},
+    {"vsph_vtk_pvd_add_part", call_vsph_vtk_pvd_add_part_1},
+    {"vsph_vtk_write_walls", call_vsph_vtk_write_walls_0},
+    {"vsph_vtk_write_walls", call_vsph_vtk_write_walls_1},
+    {"vsph_vtk_pvd_close", call_vsph_vtk_pvd_close_0},
+    {"vsph_vtk_pvd_close", call_vsph_vtk_pvd_close_1},
+    {"vsph_pair_x86_simd", call_vsph_pair_x86_simd_0},
+    {"vsph_pair_x86_simd", call_vsph_pair_x86_simd_1},
+    {"vsph_series_interp", call_vsph_series_interp_0},
+    {"vsph_series_interp", call_vsph_series_interp_1},
+    {"vsph_series_extrapolate", call_vsph_series_extrapolate_0},
+    {"vsph_series_extrapolate", call_vsph_series_extrapolate_1},
+    {"vsph_series_decay_error", call_vsph_series_decay_error_0},
+    {"vsph_series_decay_error", call_vsph_series_decay_error_1},
+    {"vsph_series_decay_error_table", call_vsph_series_decay_error_table_0},
+    {"vsph_series_decay_error_table", call_vsph_series_decay_error_table_1},
+    {"vsph_series_onset", call_vsph_series_onset_0},
+    {"vsph_series_onset", call_vsph_series_onset_1},
+    {"vsph_series_integral", call_vsph_series_integral_0},
+    {"vsph_series_integral", call_vsph_series_integral_1},
+    {"vsph_series_loss_ratio", call_vsph_series_loss_ratio_0},
+    {"vsph_series_loss_ratio", call_vsph_series_loss_ratio_1},
+    {"vsph_series_first_reach", call_vsph_series_first_reach_0},
+    {"vsph_series_first_reach", call_vsph_series_first_reach_1},
+    {"vsph_series_failure", call_vsph_series_failure_0},
+    {"vsph_series_failure", call_vsph_series_failure_1},
+    {"vsph_series_tail_mean", call_vsph_series_tail_mean_0},
+    {"vsph_series_tail_mean", call_vsph_series_tail_mean_1},
+    {"vsph_series_tail_range", call_vsph_series_tail_range_0},
+    {"vsph_series_tail_range", call_vsph_series_tail_range_1},
+    {"vsph_series_plateau", call_vsph_series_plateau_0},
+    {"vsph_series_plateau", call_vsph_series_plateau_1},
+    {"vsph_series_cfl_pick", call_vsph_series_cfl_pick_0},
+    {"vsph_series_cfl_pick", call_vsph_series_cfl_pick_1},
+    {"vsph_series_interp_cubic", call_vsph_series_interp_cubic_0},
+    {"vsph_series_interp_cubic", call_vsph_series_interp_cubic_1},
+    {"vsph_series_order", call_vsph_series_order_0},
+    {"vsph_series_order", call_vsph_series_order_1},
+    {"vsph_series_selfconv", call_vsph_series_selfconv_0},
+    {"vsph_series_selfconv", call_vsph_series_selfconv_1},
+    {"vsph_series_slope_where", call_vsph_series_slope_where_0},
+    {"vsph_series_slope_where", call_vsph_series_slope_where_1},
+    {"vsph_contact_shear_u", call_vsph_contact_shear_u_0},
+    {"vsph_contact_shear_u", call_vsph_contact_shear_u_1},
+    {"vsph_contact_shear_dy", call_vsph_contact_shear_dy_0},
+    {"vsph_contact_shear_dy", call_vsph_contact_shear_dy_1},
+    {"vsph_contact_eta_model", call_vsph_contact_eta_model_0},
+    {"vsph_contact_eta_model", call_vsph_contact_eta_model_1},
+    {"vsph_contact_bimaterial_fit", call_vsph_contact_bimaterial_fit_0},
+    {"vsph_contact_bimaterial_fit", call_vsph_contact_bimaterial_fit_1},
+    {"vsph_contact_drag_ratio", call_vsph_contact_drag_ratio_0},
+    {"vsph_contact_drag_ratio", call_vsph_contact_drag_ratio_1},
+    {"vsph_contact_bimaterial_u", call_vsph_contact_bimaterial_u_0},
+    {"vsph_contact_bimaterial_u", call_vsph_contact_bimaterial_u_1},
+    {"vsph_contact_lattice_coef", call_vsph_contact_lattice_coef_0},
+    {"vsph_contact_lattice_coef", call_vsph_contact_lattice_coef_1},
+    {"vsph_contact_lattice_visc_factor",
+     call_vsph_contact_lattice_visc_factor_0},
+    {"vsph_contact_lattice_visc_factor",
+     call_vsph_contact_lattice_visc_factor_1},
+    {"vsph_contact_fit_nu", call_vsph_contact_fit_nu_0},
+    {"vsph_contact_fit_nu", call_vsph_contact_fit_nu_1},
+    {"vsph_contact_defaults", call_vsph_contact_defaults_0},
+    {"vsph_contact_defaults", call_vsph_contact_defaults_1},
+    {"vsph_contact_shear_measure", call_vsph_contact_shear_measure_0},
+    {"vsph_contact_shear_measure", call_vsph_contact_shear_measure_1},
+    {"vsph_contact_shear_free", call_vsph_contact_shear_free_0},
+    {"vsph_contact_shear_free", call_vsph_contact_shear_free_1},
+    {"vsph_laplacian_form_name", call_vsph_laplacian_form_name_0},
+    {"vsph_laplacian_form_name", call_vsph_laplacian_form_name_1},
+    {"vsph_laplacian_form_find", call_vsph_laplacian_form_find_0},
+    {"vsph_laplacian_form_find", call_vsph_laplacian_form_find_1},
+    {"vsph_laplacian_field_name", call_vsph_laplacian_field_name_0},
+    {"vsph_laplacian_field_name", call_vsph_laplacian_field_name_1},
+    {"vsph_laplacian_params", call_vsph_laplacian_params_0},
+    {"vsph_laplacian_params", call_vsph_laplacian_params_1},
+    {"vsph_laplacian_props_init", call_vsph_laplacian_props_init_0},
+    {"vsph_laplacian_props_init", call_vsph_laplacian_props_init_1},
+    {"vsph_laplacian_patch", call_vsph_laplacian_patch_0},
+    {"vsph_laplacian_patch", call_vsph_laplacian_patch_1},
+    {"vsph_integrate_alloc", call_vsph_integrate_alloc_0},
+    {"vsph_integrate_alloc", call_vsph_integrate_alloc_1},
+    {"vsph_integrate_free", call_vsph_integrate_free_0},
+    {"vsph_integrate_free", call_vsph_integrate_free_1},
+    {"vsph_integrate_dt", call_vsph_integrate_dt_0},
+    {"vsph_integrate_dt", call_vsph_integrate_dt_1},
+    {"vsph_integrate_dt_rule", call_vsph_integrate_dt_rule_0},
+    {"vsph_integrate_dt_rule", call_vsph_integrate_dt_rule_1},
+    {"vsph_integrate_step", call_vsph_integrate_step_0},
+    {"vsph_integrate_step", call_vsph_integrate_step_1},
+    {"vsph_integrate_check", call_vsph_integrate_check_0},
+    {"vsph_integrate_check", call_vsph_integrate_check_1},
+    {"vsph_integrate_diagnostics", call_vsph_integrate_diagnostics_0},
+    {"vsph_integrate_diagnostics", call_vsph_integrate_diagnostics_1},
+    {"vsph_integrate_pack", call_vsph_integrate_pack_0},
+    {"vsph_integrate_pack", call_vsph_integrate_pack_1},
+    {"vsph_integrate_wall_count", call_vsph_integrate_wall_count_0},
+    {"vsph_integrate_wall_count", call_vsph_integrate_wall_count_1},
+    {"vsph_integrate_pack_lean", call_vsph_integrate_pack_lean_0},
+    {"vsph_integrate_pack_lean", call_vsph_integrate_pack_lean_1},
+    {"vsph_integrate_pack_lean_file", call_vsph_integrate_pack_lean_file_0},
+    {"vsph_integrate_pack_lean_file", call_vsph_integrate_pack_lean_file_1},
+    {"vsph_integrate_restore_file", call_vsph_integrate_restore_file_0},
+    {"vsph_integrate_restore_file", call_vsph_integrate_restore_file_1},
+    {"vsph_integrate_unpack", call_vsph_integrate_unpack_0},
+    {"vsph_integrate_unpack", call_vsph_integrate_unpack_1},
+    {"vsph_integrate_restore", call_vsph_integrate_restore_0},
+    {"vsph_integrate_restore", call_vsph_integrate_restore_1},
+    {"vsph_integrate_bytes", call_vsph_integrate_bytes_0},
+    {"vsph_integrate_bytes", call_vsph_integrate_bytes_1},
+    {"vsph_integrate_bytes_estimate", call_vsph_integrate_bytes_estimate_0},
+    {"vsph_integrate_bytes_estimate", call_vsph_integrate_bytes_estimate_1},
+    {"vsph_materials_drag_row", call_vsph_materials_drag_row_0},
+    {"vsph_materials_drag_row", call_vsph_materials_drag_row_1},
+    {"vsph_materials_drag_square", call_vsph_materials_drag_square_0},
+    {"vsph_materials_drag_square", call_vsph_materials_drag_square_1},
+    {"vsph_materials_count", call_vsph_materials_count_0},
+    {"vsph_materials_count", call_vsph_materials_count_1},
+    {"vsph_materials_get", call_vsph_materials_get_0},
+    {"vsph_materials_get", call_vsph_materials_get_1},
+    {"vsph_materials_resolve", call_vsph_materials_resolve_0},
+    {"vsph_materials_resolve", call_vsph_materials_resolve_1},
+    {"vsph_diagnostics_surface_threshold",
+     call_vsph_diagnostics_surface_threshold_0},
+    {"vsph_diagnostics_surface_threshold",
+     call_vsph_diagnostics_surface_threshold_1},
+    {"vsph_diagnostics_compute", call_vsph_diagnostics_compute_0},
+    {"vsph_diagnostics_compute", call_vsph_diagnostics_compute_1},
+    {"vsph_diagnostics_compute_cells", call_vsph_diagnostics_compute_cells_0},
+    {"vsph_diagnostics_compute_cells", call_vsph_diagnostics_compute_cells_1},
+    {"vsph_diagnostics_probe", call_vsph_diagnostics_probe_0},
+    {"vsph_diagnostics_probe", call_vsph_diagnostics_probe_1},
+    {"vsph_diagnostics_free", call_vsph_diagnostics_free_0},
+    {"vsph_diagnostics_free", call_vsph_diagnostics_free_1},
+    {"vsph_sysinfo_load", call_vsph_sysinfo_load_0},
+    {"vsph_sysinfo_load", call_vsph_sysinfo_load_1},
+    {"vsph_sysinfo_cpu_s", call_vsph_sysinfo_cpu_s_0},
+    {"vsph_sysinfo_cpu_s", call_vsph_sysinfo_cpu_s_1},
+    {"vsph_sysinfo_thread_cpu_s", call_vsph_sysinfo_thread_cpu_s_0},
+    {"vsph_sysinfo_thread_cpu_s", call_vsph_sysinfo_thread_cpu_s_1},
+    {"vsph_sysinfo_wait_policy", call_vsph_sysinfo_wait_policy_0},
+    {"vsph_sysinfo_wait_policy", call_vsph_sysinfo_wait_policy_1},
+    {"vsph_sysinfo_build_isa", call_vsph_sysinfo_build_isa_0},
+    {"vsph_sysinfo_build_isa", call_vsph_sysinfo_build_isa_1},
+    {"vsph_sysinfo_peak_rss", call_vsph_sysinfo_peak_rss_0},
+    {"vsph_sysinfo_peak_rss", call_vsph_sysinfo_peak_rss_1},
 };
 
 #define NCALLS (sizeof CALLS / sizeof CALLS[0])
@@ -1694,24 +2747,50 @@ START_TEST(test_null_and_out_of_range) {
 }
 END_TEST
 
-/* Every function a public header marks VSPH_API has its calls above
- * (vsph_status_report, variadic, and vsph_status_set_handler, which sets
- * the process's handler, are the two left out by name). */
-START_TEST(test_every_entry_called) {
-  static const char *const HDR[] = {
-      "common/params.h",    "common/status.h",    "kernels/kernel.h",
-      "solver/cells.h",     "solver/equations.h", "solver/lattice.h",
-      "solver/particles.h", "solver/run.h",       "solver/scene.h",
-      "solver/viscous.h",   "solver/walls.h",     "analysis/dissipation.h",
-      "analysis/fields.h",  "analysis/moments.h", "analysis/references.h",
-      "analysis/scaling.h"};
+/* The public headers as the Makefile's PUB_HDR lists them (the one list:
+ * make install installs it, make doc documents it), common/api.h (the
+ * marker itself) left out, into @p hdr (at most @p max). */
+static size_t public_headers(char hdr[][64], size_t max) {
+  FILE *f = fopen("Makefile", "r"); /* the tests run in the source tree */
+  ck_assert_msg(f != NULL, "Makefile");
+  char line[512];
   size_t n = 0;
-  for (size_t h = 0; h < sizeof HDR / sizeof HDR[0]; h++) {
+  for (int in = 0; fgets(line, sizeof line, f);) {
+    char *s = line;
+    if (!in) {
+      if (strncmp(line, "PUB_HDR", 7) || !(s = strchr(line, '='))) continue;
+      s++;
+    }
+    in = strchr(s, '\\') != NULL; /* continued on the next line */
+    for (char *w = strtok(s, " \t\n\\"); w; w = strtok(NULL, " \t\n\\"))
+      if (n < max && strcmp(w, "common/api.h")) snprintf(hdr[n++], 64, "%s", w);
+    if (!in) break;
+  }
+  fclose(f);
+  return n;
+}
+
+/* Every function a public header (PUB_HDR) marks VSPH_API has its calls
+ * above, so a header made public, or a function added to one, without its
+ * calls here fails. Four are left out by name: vsph_status_report
+ * (variadic), vsph_status_set_handler (it sets the process's handler),
+ * and the candidate tests vsph_pair_x86_candidates_avx512 and _avx2,
+ * which the inline gather calls on its own iterator only where
+ * vsph_pair_x86_simd allows them: on a CPU without AVX-512 the first
+ * stops at its first instruction whatever its arguments. */
+START_TEST(test_every_entry_called) {
+  char HDR[64][64];
+  const size_t nhdr = public_headers(HDR, 64);
+  ck_assert_uint_ge(nhdr, 30); /* the Makefile read */
+  size_t n = 0;
+  for (size_t h = 0; h < nhdr; h++) {
     FILE *f = fopen(HDR[h], "r"); /* the tests run in the source tree */
     ck_assert_msg(f != NULL, "%s", HDR[h]);
     char text[1 << 16];
     const size_t len = fread(text, 1, sizeof text - 1, f);
     fclose(f);
+    ck_assert_msg(len < sizeof text - 1, "%s: longer than %zu bytes", HDR[h],
+                  sizeof text - 1);
     text[len] = '\0';
     for (const char *s = strstr(text, "VSPH_API"); s;
          s = strstr(s + 8, "VSPH_API")) {
@@ -1724,7 +2803,8 @@ START_TEST(test_every_entry_called) {
       char name[96];
       snprintf(name, sizeof name, "%.*s", (int)(e - b), b);
       if (!strcmp(name, "vsph_status_report") ||
-          !strcmp(name, "vsph_status_set_handler"))
+          !strcmp(name, "vsph_status_set_handler") ||
+          !strncmp(name, "vsph_pair_x86_candidates_", 25))
         continue;
       size_t k = 0;
       while (k < NCALLS && strcmp(CALLS[k].name, name)) k++;

@@ -162,6 +162,37 @@ START_TEST(test_exports_match_headers) {
 }
 END_TEST
 
+/* Every installed header compiles alone, first in a C11 file built with
+ * pkg-config's flags and warnings as errors: it includes what it uses,
+ * and only installed headers (make public-check holds the source tree to
+ * the same), so a program may include any one of them by itself, as the
+ * program's own layers do. The formulations' pair terms
+ * (solver/forms/) are parts of solver/pair.h, which includes them after
+ * the pair's geometry: they are compiled through it, not alone. */
+START_TEST(test_headers_stand_alone) {
+  char stage[PATH_MAX], script[4 * PATH_MAX], dir[] = "/tmp/vsph-hdr-XXXXXX";
+  staged(stage);
+  vsph_test_scratch(dir);
+  snprintf(script, sizeof script,
+           "cd '%s/include' && n=0 && for h in $(find vsph -name '*.h' "
+           "! -path 'vsph/solver/forms/*' | sort); do printf '#include "
+           "<%%s>\nint main(void) { return 0; "
+           "}\n' \"$h\" > '%s/one.c' && ${CC:-cc} -std=c11 -Wall -Wextra "
+           "-Wpedantic -Werror -fsyntax-only $(PKG_CONFIG_PATH='%s/lib/"
+           "pkgconfig' pkg-config --cflags vsph) '%s/one.c' 2>&1 || echo "
+           "\"not alone: $h\"; n=$((n + 1)); done; echo \"headers: $n\"",
+           stage, dir, stage, dir);
+  struct vsph_test_outcome *o = vsph_test_shell(script);
+  ck_assert_msg(o->status == 0 && !strstr(o->out, "not alone"), "%s\n%s",
+                o->out, o->err);
+  int n = 0;
+  const char *at = strstr(o->out, "headers: ");
+  ck_assert_msg(at && sscanf(at, "headers: %d", &n) == 1, "%s", o->out);
+  ck_assert_int_ge(n, 32); /* PUB_HDR's 38 but the six forms */
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 /* A bad PREFIX is refused with one line and exit 2, nothing written; an
  * uninstall removes the install's files and the folders it made, and
  * leaves a file it did not make (and the folder that holds it); a second
@@ -575,6 +606,7 @@ Suite *vsph_library_suite(void) {
   tcase_add_test(tc, test_readme_walkthrough);
   tcase_add_test(tc, test_readme_steps_3_4);
   tcase_add_test(tc, test_exports_match_headers);
+  tcase_add_test(tc, test_headers_stand_alone);
   tcase_add_test(tc, test_install_refusals);
   tcase_add_test(tc, test_deps_without_apt);
   tcase_add_test(tc, test_removal_waits_for_mounts);

@@ -10,8 +10,8 @@
 
 #include "../common/status.h"
 #include "../io/csv.h"
-#include "../io/html.h"
 #include "../io/plot.h"
+#include "../reports/html.h"
 #include "check_suites.h"
 
 static char dir[64];
@@ -225,7 +225,7 @@ START_TEST(test_html_embeds_svg) {
 }
 END_TEST
 
-/* The report's mathematics set in its HTML without JavaScript (io/html.c):
+/* The report's mathematics set in its HTML without JavaScript (reports/html.c):
  * a subscript (E_k, eta_num), a Greek name as its letter, a superscript,
  * the signs written in ASCII (n.D.n != 0, ->, sqrt, -int), sum_j, pbar,
  * a Greek letter in UTF-8 with a subscript, superscripts of letters and

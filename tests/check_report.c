@@ -10,7 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../common/shell.h"
 #include "../io/files.h"
 #include "../io/json.h"
 #include "../reports/bench.h"
@@ -20,6 +19,7 @@
 #include "../reports/report_runs.h"
 #include "../runs/folder.h"
 #include "../runs/jobs_internal.h"
+#include "../runs/shell.h"
 #include "../solver/scene.h"
 #include "../solver/viscous.h"
 #include "check_suites.h"
@@ -238,7 +238,7 @@ START_TEST(test_time_left) {
 }
 END_TEST
 
-/* The one shell-quoting rule (common/shell.c) of the plan's commands,
+/* The one shell-quoting rule (runs/shell.c) of the plan's commands,
  * the Slurm scripts and run.json's command: each case written out by hand
  * as POSIX sh reads it back. */
 START_TEST(test_shell_quote) {

@@ -13,7 +13,7 @@
 #include <sys/stat.h>
 
 #include "../common/status.h"
-#include "files.h"
+#include "../io/files.h"
 
 static void base64(FILE *f, const unsigned char *d, size_t n) {
   static const char tb[] =

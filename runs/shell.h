@@ -1,7 +1,7 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
-#ifndef VSPH_COMMON_SHELL_H
-#define VSPH_COMMON_SHELL_H
+#ifndef VSPH_RUNS_SHELL_H
+#define VSPH_RUNS_SHELL_H
 
 #include <stddef.h>
 
@@ -18,4 +18,4 @@
  *  result >= @p len means it was cut). */
 size_t vsph_shell_quote(const char *s, char *out, size_t len);
 
-#endif /* VSPH_COMMON_SHELL_H */
+#endif /* VSPH_RUNS_SHELL_H */

@@ -1,7 +1,7 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
-#ifndef VSPH_IO_HTML_H
-#define VSPH_IO_HTML_H
+#ifndef VSPH_REPORTS_HTML_H
+#define VSPH_REPORTS_HTML_H
 
 /** @file html.h
  *  @brief A Markdown report rendered to one self-contained HTML page with
@@ -14,4 +14,4 @@
 int vsph_html_render(const char *dir, const char *md, const char *html,
                      const char *title);
 
-#endif /* VSPH_IO_HTML_H */
+#endif /* VSPH_REPORTS_HTML_H */
