@@ -283,7 +283,10 @@ uninstall:
 # test links examples/regression against a copy installed under
 # $(BUILD)/stage (VSPH_STAGE).
 check: deps
-	@$(MAKE) --no-print-directory $(BUILD)/vsph $(BUILD)/check_vsph lib
+	@$(MAKE) --no-print-directory $(BUILD)/vsph $(BUILD)/check_vsph
+	@# after, not beside: lib's own make builds libvsph.a, which the
+	@# program links (two makes writing it at once broke a -j2 link)
+	@$(MAKE) --no-print-directory lib
 	@rm -rf $(BUILD)/stage
 	@scripts/install $(INSTALL_LIB) "" "$(abspath $(BUILD)/stage)" \
 	  "$(VERSION)" "$(SOVER)" $(BUILD) $(PUB_HDR) > /dev/null
