@@ -736,6 +736,8 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   const struct vsph_viscous_props *vp = &ep->visc;
   if (vp->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "props dimension %d, particles %d", vp->dim, p->dim);
+  if (ep->scheme != VSPH_EQUATIONS_CONTACT && !vsph_viscous_type_get(vp->form))
+    VSPH_FAIL(VSPH_EINVAL, "unknown viscous formulation %d", vp->form);
   const size_t n = p->n;
   const int gas = ep->eos == VSPH_EQUATIONS_EOS_GAS;
   if (gas && (!out->de || !p->e))

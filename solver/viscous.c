@@ -213,7 +213,7 @@ int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol) {
 void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
                               struct vsph_viscous_ws *ws, size_t i,
                               const double B[9], const double Mg[9]) {
-  if (!vp || !ws || !B || !Mg) return;
+  if (!vp || !ws || !B || !Mg || !vsph_viscous_type_get(vp->form)) return;
   const int dim = vp->dim, renorm = (vsph_viscous_types[vp->form]->flags &
                                      VSPH_VISCOUS_RENORM) != 0;
   double L[9] = {0}, G[9] = {0};
@@ -297,6 +297,8 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
                          struct vsph_viscous_ws *ws) {
   if (!vp || !p || !cells)
     VSPH_FAIL(VSPH_EINVAL, "vsph_viscous_prepare: a NULL argument");
+  if (!vsph_viscous_type_get(vp->form))
+    VSPH_FAIL(VSPH_EINVAL, "unknown viscous formulation %d", vp->form);
   if (!vsph_viscous_first_pass(vp->form)) return VSPH_OK;
   if (!ws || ws->cap < p->n || ws->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "%s needs a workspace for %zu particles",

@@ -7,6 +7,7 @@
 
 #include "../common/api.h"
 #include "../common/consts.h"
+#include "../common/status.h"
 #include "pair.h"
 
 struct vsph_kernel_type;
@@ -377,10 +378,17 @@ struct vsph_viscous_loop {
 
 /** @brief The loop constants of @p vp; @p ws is the workspace after
  *  vsph_viscous_prepare (may be NULL for the forms without a first pass,
- *  vsph_viscous_first_pass). */
-static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
-                                          const struct vsph_viscous_props *vp,
-                                          const struct vsph_viscous_ws *ws) {
+ *  vsph_viscous_first_pass).
+ *  @return VSPH_OK, or VSPH_EINVAL where @p vp->form is out of range
+ *  (@p lp is then a loop with no term: every pair and own share 0). */
+static inline int vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
+                                         const struct vsph_viscous_props *vp,
+                                         const struct vsph_viscous_ws *ws) {
+  const struct vsph_viscous_loop none = {.form = -1, .dim = vp->dim};
+  if (vp->form < 0 || vp->form >= VSPH_VISCOUS_FORM_COUNT) {
+    *lp = none;
+    return VSPH_EINVAL;
+  }
   const struct vsph_viscous_type *t = vsph_viscous_types[vp->form];
   lp->form = vp->form;
   lp->dim = vp->dim;
@@ -397,42 +405,49 @@ static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
   lp->pair_g = t->pair_g;
   lp->nA = t->pass == VSPH_VISCOUS_PASS_STRESS ? vp->dim * vp->dim : 0;
   lp->own = t->pair == NULL;
+  return VSPH_OK;
 }
 
 /** @brief Whether the whole of @p form's force comes from its first pass,
  *  per particle (no pair shares): model A and the Laplacian forms
  *  VISC-01..04, mu lap u with the Laplacian of pair.h applied to each
- *  velocity component. */
+ *  velocity component. 0 for an id out of range. */
 static inline int vsph_viscous_particle_form(int form) {
-  return vsph_viscous_types[form]->pair == NULL;
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT &&
+         vsph_viscous_types[form]->pair == NULL;
 }
 
 /** @brief Whether @p form has a first pass (vsph_viscous_prepare) whose
  *  per-particle density -T:D or u.(div V) replaces the pair densities:
- *  PVWF, B and the per-particle forms. */
+ *  PVWF, B and the per-particle forms. 0 for an id out of range. */
 static inline int vsph_viscous_first_pass(int form) {
-  return vsph_viscous_types[form]->pass != VSPH_VISCOUS_PASS_NONE;
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT &&
+         vsph_viscous_types[form]->pass != VSPH_VISCOUS_PASS_NONE;
 }
 
 /** @brief Whether @p form is a sum of pair terms along grad_i W that the
  *  kernel corrections can correct (its descriptor's pair_g): MGF, VI,
- *  Cleary, MEAF, ER. */
+ *  Cleary, MEAF, ER. 0 for an id out of range. */
 static inline int vsph_viscous_corrigible(int form) {
-  return (vsph_viscous_types[form]->flags & VSPH_VISCOUS_CORRIGIBLE) != 0;
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT &&
+         (vsph_viscous_types[form]->flags & VSPH_VISCOUS_CORRIGIBLE) != 0;
 }
 
 /** @brief Neighbour passes of @p form per evaluation: 2 for PVWF and
  *  model B, whose second pass differentiates their first (so their ghost
  *  layers are two supports deep), 1 for the others (model A's one pass
- *  comes before the right-hand side's but reaches one support). */
+ *  comes before the right-hand side's but reaches one support); 0 for an
+ *  id out of range. */
 static inline int vsph_viscous_passes(int form) {
+  if (form < 0 || form >= VSPH_VISCOUS_FORM_COUNT) return 0;
   return vsph_viscous_types[form]->pass == VSPH_VISCOUS_PASS_STRESS ? 2 : 1;
 }
 
 /** @brief Whether @p form has specialised loops of its own (its family's,
- *  solver/forms/) beside the general loop. */
+ *  solver/forms/) beside the general loop. 0 for an id out of range. */
 static inline int vsph_viscous_specialised(int form) {
-  return vsph_viscous_types[form]->loops != NULL;
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT &&
+         vsph_viscous_types[form]->loops != NULL;
 }
 
 /** @brief Add the part of (div V)_i that is particle i's own, not a sum of

@@ -487,7 +487,7 @@ START_TEST(test_pair_g_uncorrected) {
                    0);
   vp.zeta = 0.731 * vp.mu;
   struct vsph_viscous_loop lp;
-  vsph_viscous_loop_init(&lp, &vp, NULL);
+  ck_assert_int_eq(vsph_viscous_loop_init(&lp, &vp, NULL), 0);
   static const double xs[3][3] = {{0.0312, -0.0457, 0.0219},
                                   {-0.0823, 0.0115, -0.0371},
                                   {0.0049, 0.0632, 0.0544}};
