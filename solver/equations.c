@@ -11,8 +11,10 @@
 #include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "cells.h"
+#include "equations_internal.h"
 #include "pair.h"
 #include "particles.h"
+#include "viscous_internal.h"
 #include "walls.h"
 
 static const char *const EOS_NAMES[VSPH_EQUATIONS_EOS_COUNT] = {
@@ -79,21 +81,6 @@ const char *vsph_equations_corr_name(int corr) {
                                                   : "unknown";
 }
 
-/* The body force at x (the public function's, without its argument check:
- * the loops call it per particle). */
-static inline void body_force(const struct vsph_equations_props *ep,
-                              const double x[3], double g[3]) {
-  g[0] = g[1] = g[2] = 0.0;
-  const int d = ep->visc.dim;
-  if (ep->body == VSPH_EQUATIONS_BODY_RADIAL) {
-    for (int k = 0; k < d; k++) g[k] = -ep->beta * ep->beta * x[k];
-  } else if (ep->body == VSPH_EQUATIONS_BODY_GRAVITY) {
-    g[d - 1] = -ep->g; /* the last axis points up */
-  } else if (ep->body == VSPH_EQUATIONS_BODY_UNIFORM) {
-    g[0] = ep->f;
-  }
-}
-
 void vsph_equations_body_force(const struct vsph_equations_props *ep,
                                const double x[3], double g[3]) {
   if (!ep || !x || !g) return;
@@ -112,29 +99,6 @@ double vsph_equations_potential(const struct vsph_equations_props *ep,
   if (ep->body == VSPH_EQUATIONS_BODY_GRAVITY) return ep->g * x[d - 1];
   return 0.0;
 }
-
-/* Loop constants of the right-hand side, loaded once per evaluation. */
-struct rhs_ctx {
-  const struct vsph_equations_props *ep;
-  struct vsph_pair_kernel pk;       /* kernel, h: the neighbour loop */
-  struct vsph_viscous_loop vl;      /* the viscous term */
-  double dhc;                       /* delta h c0 (delta-SPH), 0: off */
-  int parts;                        /* fill acc_visc / drho_delta */
-  int gas;                          /* the gas law: the energy equation too */
-  int reduce;                       /* Basa's pressure reduction */
-  int corr;                         /* vsph_pair_corr */
-  const struct vsph_viscous_ws *ws; /* the corrections' S, a, L */
-  int tvf;                          /* the transport-velocity scheme */
-  double pb;                        /* its background pressure */
-  double w0;                        /* W(0) */
-  double wf;                        /* h^-d: W = wf w(s/h) */
-  /* contact SPH: each material's sound speed, and each pair of
-   * materials' eta_eff - zeta eta_eff^num (0: no viscous term) */
-  double cmat[VSPH_EQUATIONS_MAT_MAX];
-  double etap[VSPH_EQUATIONS_MAT_MAX][VSPH_EQUATIONS_MAT_MAX];
-  int cvisc;
-  int fixed[VSPH_EQUATIONS_MAT_MAX]; /* materials held in place */
-};
 
 /* Basa et al.'s corrections, first pass: S_i = sum_j V_j W_ij (j = i
  * included), a_i = sum_j V_j grad_i W_ij and, for Bonet-Lok, L_i = M_i^-1
@@ -191,199 +155,13 @@ static void corr_pass(const struct vsph_equations_props *ep,
   }
 }
 
-/* The transport-velocity scheme's terms of pair @p pr (i's row): the
- * anisotropic stress (A_i + A_j) . grad_i W = -F (A_i + A_j) x taken off
- * the pressure share @p f (A_i in @p tA; j's from its density @p rhoj,
- * velocities @p vel and transport velocities @p tv), and the background
- * push's share, returned: 2 pb in place of the pressure sum. */
-VSPH_CONSTS_SPECIALISE struct vsph_pair_vec tvf_pair(
-    const struct vsph_pair *pr, const int dim, const double *tA, double rhoj,
-    const double *const *vel, const double *const *tv, size_t j, double pb,
-    double *f) {
-  for (int a = 0; a < dim; a++) {
-    double s = 0.0;
-    for (int c = 0; c < dim; c++)
-      s += (tA[a * dim + c] + rhoj * vel[a][j] * (tv[c][j] - vel[c][j])) *
-           pr->x[c];
-    f[a] -= pr->VF * s;
-  }
-  return vsph_pair_pressure(pr, dim, 2.0 * pb);
-}
-
-/* Particle i's correction terms from the first pass's workspace @p ws:
- * its S, a and (@p bl, Bonet and Lok's) L. */
-VSPH_CONSTS_SPECIALISE void corr_load(const struct vsph_viscous_ws *ws,
-                                      size_t i, const int dim, const int bl,
-                                      double *cS, double *ca, double *cL) {
-  *cS = ws->S[i];
-  for (int e = 0; e < dim; e++) ca[e] = ws->a[e][i];
-  for (int e = 0; e < dim * dim && bl; e++) cL[e] = ws->L[e][i];
-}
-
-/* i's own term of the corrected pressure sum, added to @p ap: g_ii =
- * -W(0) a/S^2 (L) with @p w0 = W(0), i's volume @p vi and pressure
- * @p pi. */
-VSPH_CONSTS_SPECIALISE void corr_self(double w0, double vi, double pi, size_t i,
-                                      const int dim, double cS,
-                                      const double *ca, const double *cL,
-                                      const int bl, double *ap) {
-  struct vsph_pair self = {.j = i, .s2 = 0.0, .F = 0.0, .VF = 0.0};
-  double cg[3], fs[3];
-  vsph_pair_corr_grad(&self, dim, w0, cS, ca, cL, bl, cg);
-  vsph_pair_pressure_g(vi, dim, 2.0 * pi, cg, fs);
-  for (int k = 0; k < dim; k++) ap[k] += fs[k];
-}
-
-/* Particle i's rates from its sums (rhs_one's last step): the continuity
- * sum @p cont and delta-SPH's @p dsum, the pressure and viscous sums
- * @p ap and @p av, the transport velocity's background push @p tb (NULL:
- * none), and the body force at i's place @p xi. */
-VSPH_CONSTS_SPECIALISE void rhs_write(
-    const struct rhs_ctx *rc, const struct vsph_particles *p, size_t i,
-    const double *xi, const int dim, double cont, double dsum, const double *ap,
-    const double *av, const double *tb, struct vsph_equations_out *out) {
-  const double rhoi = p->rho[i], rinv = 1.0 / rhoi;
-  /* the gas law's energy equation, de/dt = (p/rho^2) (d rho/dt) of the
-   * continuity sum (docs/theory.md section 10): the compression work of
-   * the pressure terms, ghosts included; delta-SPH moves rho, not e */
-  if (rc->gas) out->de[i] = p->p[i] * cont * rinv;
-  double g[3];
-  body_force(rc->ep, xi, g);
-  out->drho[i] = rhoi * cont + rc->dhc * dsum;
-  for (int k = 0; k < dim; k++) out->acc[k][i] = rinv * (ap[k] + av[k]) + g[k];
-  if (tb)
-    for (int k = 0; k < dim; k++) p->bacc[k][i] = rinv * tb[k];
-  if (rc->parts) {
-    for (int k = 0; k < dim; k++) out->acc_visc[k][i] = rinv * av[k];
-    out->drho_delta[i] = rc->dhc * dsum;
-  }
-}
-
-/* One fluid particle: every term of THEORY 5 gathered over its neighbours,
- * each through its pair function (pair.h, viscous.h). Per chunk of
- * neighbours, the pairs' shares are computed in one loop the compiler
- * vectorises (gathers and arithmetic, no sums), then summed in neighbour
- * order. Inlined once per dimension, formulation and delta switch (see
- * rhs_cell): the constants unroll the component loops and fold the
- * dispatch away. */
-VSPH_CONSTS_SPECIALISE size_t rhs_one(
-    const struct rhs_ctx *rc, const struct vsph_particles *p,
-    const struct vsph_pair_ranges *rg, size_t i, struct vsph_equations_out *out,
-    double *min_s2, const struct vsph_viscous_shape sh, const int delta,
-    const int kid, const int reduce, const int corr, const int tvf) {
-  const int dim = sh.dim;
-  double ui[3] = {0, 0, 0}, Ai[9] = {0};
-  for (int k = 0; k < dim; k++) ui[k] = p->vel[k][i];
-  vsph_viscous_load_A(&rc->vl, i, Ai);
-  const double rhoi = p->rho[i], pi = p->p[i];
-  const double *const rho = p->rho, *const pp = p->p;
-  const double *const vel[3] = {p->vel[0], dim > 1 ? p->vel[1] : NULL,
-                                dim > 2 ? p->vel[2] : NULL};
-  double cont = 0.0, dsum = 0.0, ap[3] = {0, 0, 0}, av[3] = {0, 0, 0};
-  /* the transport-velocity scheme: A_i, the background push's sum */
-  double tA[9] = {0};
-  const double *const tv[3] = {p->tvel[0], p->tvel[1], p->tvel[2]};
-  if (tvf)
-    for (int a = 0; a < dim; a++)
-      for (int c = 0; c < dim; c++)
-        tA[a * dim + c] = rhoi * ui[a] * (tv[c][i] - ui[c]);
-  /* the reduction's neighbour pressures and sum_j V_j F x */
-  double pn = 0.0, gx0 = 0.0, gx1 = 0.0, gx2 = 0.0;
-  /* the corrections: i's S, a, L (corr only) */
-  double cS = 1.0, ca[3] = {0, 0, 0}, cL[9] = {0};
-  const int bl = corr == VSPH_PAIR_CORR_BONETLOK;
-  const struct vsph_kernel_type *const kt = rc->ep->visc.kernel;
-  const double ch = rc->ep->visc.h, cwf = rc->wf;
-  if (corr) corr_load(rc->ws, i, dim, bl, &cS, ca, cL);
-  size_t nint = 0;
-  double ms2 = INFINITY;
-  struct vsph_pair_iter it;
-  struct vsph_pair_chunk b;
-  vsph_pair_begin(&it, &rc->pk, p, rg, i);
-  /* the sums, one per component: scalars, so the loop can reduce them
-   * lane by lane */
-  double ap0 = 0, ap1 = 0, ap2 = 0, av0 = 0, av1 = 0, av2 = 0;
-  double tb0 = 0, tb1 = 0, tb2 = 0; /* the background push's sum */
-  while (vsph_pair_gather(&it, dim, kid, &b)) {
-    const size_t m = b.m;
-#pragma omp simd reduction(+ : cont, dsum, ap0, ap1, ap2, av0, av1, av2, \
-                              pn, gx0, gx1, gx2, tb0, tb1, tb2)         \
-    reduction(min : ms2)
-    for (size_t k = 0; k < m; k++) {
-      struct vsph_pair pr;
-      vsph_pair_at(&b, k, dim, &pr);
-      const size_t j = pr.j;
-      double du[3], dux = 0.0, f[3], g[3];
-      struct vsph_pair_vec duv;
-      for (int a = 0; a < dim; a++) {
-        du[a] = duv.v[a] = vel[a][j] - ui[a];
-        dux += du[a] * pr.x[a];
-      }
-      ms2 = pr.s2 < ms2 ? pr.s2 : ms2;
-      if (delta) dsum += vsph_pair_delta(&pr, rho[j] - rhoi);
-      if (corr) { /* every grad W corrected (the general loop only) */
-        double cg[3];
-        const double vj = p->vol[j];
-        const double w = vsph_kernel_w(kt, dim, sqrt(pr.s2) / ch) * cwf;
-        vsph_pair_corr_grad(&pr, dim, w, cS, ca, cL, bl, cg);
-        cont += vsph_pair_continuity_g(vj, dim, du, cg);
-        vsph_pair_pressure_g(vj, dim, pi + pp[j], cg, f);
-        vsph_viscous_pair_g(&rc->vl, &pr, vj, du, dux, cg, g);
-      } else {
-        cont += vsph_pair_continuity(&pr, dux);
-        const struct vsph_pair_vec fp =
-            vsph_pair_pressure(&pr, dim, pi + pp[j]);
-        const struct vsph_pair_visc gv =
-            vsph_viscous_pair(&rc->vl, sh, &pr, duv, dux, Ai);
-        for (int a = 0; a < dim; a++) f[a] = fp.v[a], g[a] = gv.f[a];
-      }
-      if (tvf) {
-        const struct vsph_pair_vec fbv =
-            tvf_pair(&pr, dim, tA, rho[j], vel, tv, j, rc->pb, f);
-        tb0 += fbv.v[0];
-        if (dim > 1) tb1 += fbv.v[1];
-        if (dim > 2) tb2 += fbv.v[2];
-      }
-      if (reduce) {
-        pn += pp[j];
-        gx0 += pr.VF * pr.x[0];
-        if (dim > 1) gx1 += pr.VF * pr.x[1];
-        if (dim > 2) gx2 += pr.VF * pr.x[2];
-      }
-      ap0 += f[0];
-      av0 += g[0];
-      if (dim > 1) {
-        ap1 += f[1];
-        av1 += g[1];
-      }
-      if (dim > 2) {
-        ap2 += f[2];
-        av2 += g[2];
-      }
-    }
-    nint += m;
-  }
-  ap[0] = ap0, ap[1] = ap1, ap[2] = ap2;
-  av[0] = av0, av[1] = av1, av[2] = av2;
-  vsph_viscous_own(&rc->vl, i, av);
-  if (corr) corr_self(rc->w0, p->vol[i], pi, i, dim, cS, ca, cL, bl, ap);
-  if (reduce) { /* Basa's eq. (20): p_i + p_j - 2 pbar_i, i among the mean */
-    const double pbar = (pi + pn) / (double)(nint + 1), gx[3] = {gx0, gx1, gx2};
-    for (int k = 0; k < dim; k++) ap[k] -= 2.0 * pbar * gx[k];
-  }
-  const double tb[3] = {tb0, tb1, tb2};
-  rhs_write(rc, p, i, it.xi, dim, cont, dsum, ap, av, tvf ? tb : NULL, out);
-  *min_s2 = ms2;
-  return nint;
-}
-
 /* One fluid particle of contact SPH (Parshikov et al. eqs. 5, 6, 35;
  * docs/theory.md section 12): every pair through vsph_pair_contact (the Riemann
  * solution) and, with a viscosity, vsph_pair_contact_visc. The acoustic
  * solver's dissipative parts go to acc_visc and drho_delta, so that the energy
  * budget accounts for them. */
 VSPH_CONSTS_SPECIALISE size_t contact_one(
-    const struct rhs_ctx *rc, const struct vsph_particles *p,
+    const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
     const struct vsph_pair_ranges *rg, size_t i, struct vsph_equations_out *out,
     double *min_s2, const int dim, const int kid, const int visc) {
   struct vsph_pair_vec ui = {{0, 0, 0}};
@@ -455,7 +233,7 @@ VSPH_CONSTS_SPECIALISE size_t contact_one(
 }
 
 /* The fluid particles of cell c for contact SPH. */
-VSPH_CONSTS_SPECIALISE size_t contact_cell(const struct rhs_ctx *rc,
+VSPH_CONSTS_SPECIALISE size_t contact_cell(const struct vsph_equations_ctx *rc,
                                            const struct vsph_particles *p,
                                            const struct vsph_cells *cells,
                                            size_t c, size_t n_fluid,
@@ -477,142 +255,57 @@ VSPH_CONSTS_SPECIALISE size_t contact_cell(const struct rhs_ctx *rc,
   return total;
 }
 
-/* The fluid particles of cell c; returns the interactions, the closest
- * pair in *min_s2. Inlined into one function per loop shape below. */
-VSPH_CONSTS_SPECIALISE size_t
-rhs_cell(const struct rhs_ctx *rc, const struct vsph_particles *p,
-         const struct vsph_cells *cells, size_t c, size_t n_fluid,
-         struct vsph_equations_out *out, double *min_s2,
-         const struct vsph_viscous_shape sh, const int delta, const int kid,
-         const int reduce, const int corr, const int tvf) {
-  struct vsph_pair_ranges rg;
-  vsph_pair_ranges_cell(&rg, cells, c);
-  const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
-  size_t total = 0;
-  double ms2 = INFINITY;
-  for (size_t i = i0; i < i1; i++) {
-    if (p->id[i] >= n_fluid) continue;
-    double m;
-    total += rhs_one(rc, p, &rg, i, out, &m, sh, delta, kid, reduce, corr, tvf);
-    ms2 = m < ms2 ? m : ms2;
-  }
-  *min_s2 = ms2;
-  return total;
-}
-
-/* One cell's loop, specialised. */
-typedef size_t rhs_cell_fn(const struct rhs_ctx *rc,
-                           const struct vsph_particles *p,
-                           const struct vsph_cells *cells, size_t c,
-                           size_t n_fluid, struct vsph_equations_out *out,
-                           double *min_s2);
-
-/* rhs_cell for dimension D, formulation FORM, delta switch DELTA and the
- * 3h Gaussian: the constants unroll the component loops, fold the dispatch
- * and inline the kernel. A function of its own each (not one big switch),
- * so each is optimised on its own. */
-#define RHS_CELL_SHAPE(name, D, FORM, DELTA)                                   \
-  static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
-                     const struct vsph_cells *cells, size_t c, size_t n_fluid, \
-                     struct vsph_equations_out *out, double *min_s2) {         \
-    const struct vsph_viscous_shape sh = {D, FORM};                            \
-    return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, DELTA,          \
-                    VSPH_KERNEL_DFQ_GAUSSIAN, 0, 0, 0);                        \
-  }
-RHS_CELL_SHAPE(rhs_mgf2, 2, VSPH_VISCOUS_MGF, 0)
-RHS_CELL_SHAPE(rhs_mgf2d, 2, VSPH_VISCOUS_MGF, 1)
-RHS_CELL_SHAPE(rhs_meaf2, 2, VSPH_VISCOUS_MEAF, 0)
-RHS_CELL_SHAPE(rhs_meaf2d, 2, VSPH_VISCOUS_MEAF, 1)
-RHS_CELL_SHAPE(rhs_pvwf2, 2, VSPH_VISCOUS_PVWF, 0)
-RHS_CELL_SHAPE(rhs_pvwf2d, 2, VSPH_VISCOUS_PVWF, 1)
-RHS_CELL_SHAPE(rhs_mgf3, 3, VSPH_VISCOUS_MGF, 0)
-RHS_CELL_SHAPE(rhs_mgf3d, 3, VSPH_VISCOUS_MGF, 1)
-RHS_CELL_SHAPE(rhs_meaf3, 3, VSPH_VISCOUS_MEAF, 0)
-RHS_CELL_SHAPE(rhs_meaf3d, 3, VSPH_VISCOUS_MEAF, 1)
-RHS_CELL_SHAPE(rhs_pvwf3, 3, VSPH_VISCOUS_PVWF, 0)
-RHS_CELL_SHAPE(rhs_pvwf3d, 3, VSPH_VISCOUS_PVWF, 1)
-RHS_CELL_SHAPE(rhs_er2, 2, VSPH_VISCOUS_ER, 0)
-RHS_CELL_SHAPE(rhs_er2d, 2, VSPH_VISCOUS_ER, 1)
-RHS_CELL_SHAPE(rhs_er3, 3, VSPH_VISCOUS_ER, 0)
-RHS_CELL_SHAPE(rhs_er3d, 3, VSPH_VISCOUS_ER, 1)
-#undef RHS_CELL_SHAPE
-
-/* The same in 2-D without delta for kernel KID, the transport velocity
- * when TVF: the cavity after Adami et al. (the quintic spline, TVF) and
- * the channels after Basa et al. (the cubic B-spline). */
-#define RHS_2D_SHAPE(name, FORM, KID, TVF)                                     \
-  static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
-                     const struct vsph_cells *cells, size_t c, size_t n_fluid, \
-                     struct vsph_equations_out *out, double *min_s2) {         \
-    const struct vsph_viscous_shape sh = {2, FORM};                            \
-    return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, 0, KID, 0, 0,   \
-                    TVF);                                                      \
-  }
-RHS_2D_SHAPE(rhs_tvf_mgf2, VSPH_VISCOUS_MGF, VSPH_KERNEL_DFQ_QUINTIC, 1)
-RHS_2D_SHAPE(rhs_tvf_meaf2, VSPH_VISCOUS_MEAF, VSPH_KERNEL_DFQ_QUINTIC, 1)
-RHS_2D_SHAPE(rhs_tvf_er2, VSPH_VISCOUS_ER, VSPH_KERNEL_DFQ_QUINTIC, 1)
-RHS_2D_SHAPE(rhs_cubic_mgf2, VSPH_VISCOUS_MGF, VSPH_KERNEL_DFQ_CUBIC, 0)
-RHS_2D_SHAPE(rhs_cubic_meaf2, VSPH_VISCOUS_MEAF, VSPH_KERNEL_DFQ_CUBIC, 0)
-RHS_2D_SHAPE(rhs_cubic_pvwf2, VSPH_VISCOUS_PVWF, VSPH_KERNEL_DFQ_CUBIC, 0)
-RHS_2D_SHAPE(rhs_cubic_er2, VSPH_VISCOUS_ER, VSPH_KERNEL_DFQ_CUBIC, 0)
-#undef RHS_2D_SHAPE
-
-/* Any other shape (1-D, another kernel, model A, the pressure reduction):
- * the general copy. */
-static size_t rhs_general(const struct rhs_ctx *rc,
+/* The general copy, the form's pair functions called through its
+ * descriptor: every shape of a form without loops of its own (model A,
+ * the Laplacian forms, MEAF-eta), and of every form with Solver's
+ * loop_general. */
+static size_t rhs_general(const struct vsph_equations_ctx *rc,
                           const struct vsph_particles *p,
                           const struct vsph_cells *cells, size_t c,
                           size_t n_fluid, struct vsph_equations_out *out,
                           double *min_s2) {
-  const struct vsph_viscous_shape sh = {rc->pk.dim, rc->vl.form};
-  return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, sh, rc->dhc > 0.0,
-                  rc->pk.dfq_id, rc->reduce, rc->corr, rc->tvf);
+  return rhs_cell(rc, p, cells, c, n_fluid, out, min_s2, rc->pk.dim,
+                  rc->vl.pair, rc->vl.pair_g, rc->dhc > 0.0, rc->pk.dfq_id,
+                  rc->reduce, rc->corr, rc->tvf);
 }
 
-/* Whether the run's shape has the Gaussian's specialised loops (the
- * right-hand side's and the sweep's tables): 2-D or 3-D, a loop family,
- * no reduced pairs, corrections or transport velocity. */
-static int gauss_specialised(const struct rhs_ctx *rc, int row) {
-  return rc->pk.dfq_id == VSPH_KERNEL_DFQ_GAUSSIAN && rc->pk.dim >= 2 &&
-         row >= 0 && !rc->reduce && !rc->corr && !rc->tvf;
+/* The Gaussian's specialised loops of the run's shape, its form's
+ * family's (the right-hand side's gather and the sweep choose from the
+ * one row): 2-D or 3-D, a form with loops of its own, no reduced pairs,
+ * corrections or transport velocity; NULL where only the general gather
+ * serves. */
+static const struct vsph_viscous_shape_loops *gauss_loops(
+    const struct vsph_equations_ctx *rc) {
+  const struct vsph_viscous_loops *const L =
+      vsph_viscous_types[rc->vl.form]->loops;
+  if (!L || rc->pk.dfq_id != VSPH_KERNEL_DFQ_GAUSSIAN || rc->pk.dim < 2 ||
+      rc->reduce || rc->corr || rc->tvf)
+    return NULL;
+  return &L->gauss[rc->pk.dim - 2][rc->dhc > 0.0];
 }
 
-/* The loop for the run's shape, chosen once per evaluation. */
-static rhs_cell_fn *rhs_choose(const struct rhs_ctx *rc) {
-  /* the loop shapes by family (enum vsph_viscous_family): MGF (and its
-   * Brookshaw kin), MEAF, PVWF (and B), Espanol-Revenga */
-  static rhs_cell_fn *const table[2][VSPH_VISCOUS_FAMILY_COUNT][2] = {
-      {[VSPH_VISCOUS_FAMILY_BROOKSHAW] = {rhs_mgf2, rhs_mgf2d},
-       [VSPH_VISCOUS_FAMILY_MORRIS] = {rhs_meaf2, rhs_meaf2d},
-       [VSPH_VISCOUS_FAMILY_STRESS] = {rhs_pvwf2, rhs_pvwf2d},
-       [VSPH_VISCOUS_FAMILY_ER] = {rhs_er2, rhs_er2d}},
-      {[VSPH_VISCOUS_FAMILY_BROOKSHAW] = {rhs_mgf3, rhs_mgf3d},
-       [VSPH_VISCOUS_FAMILY_MORRIS] = {rhs_meaf3, rhs_meaf3d},
-       [VSPH_VISCOUS_FAMILY_STRESS] = {rhs_pvwf3, rhs_pvwf3d},
-       [VSPH_VISCOUS_FAMILY_ER] = {rhs_er3, rhs_er3d}}};
-  const int row = vsph_viscous_family(rc->vl.form);
-  if (rc->ep->loop_general) return rhs_general;
-  if (rc->tvf && rc->pk.dfq_id == VSPH_KERNEL_DFQ_QUINTIC && rc->pk.dim == 2 &&
-      !rc->reduce && !rc->corr && !(rc->dhc > 0.0) && row >= 0 &&
-      row != VSPH_VISCOUS_FAMILY_STRESS)
-    return row == VSPH_VISCOUS_FAMILY_BROOKSHAW ? rhs_tvf_mgf2
-           : row == VSPH_VISCOUS_FAMILY_MORRIS  ? rhs_tvf_meaf2
-                                                : rhs_tvf_er2;
-  static rhs_cell_fn *const cubic[VSPH_VISCOUS_FAMILY_COUNT] = {
-      [VSPH_VISCOUS_FAMILY_BROOKSHAW] = rhs_cubic_mgf2,
-      [VSPH_VISCOUS_FAMILY_MORRIS] = rhs_cubic_meaf2,
-      [VSPH_VISCOUS_FAMILY_STRESS] = rhs_cubic_pvwf2,
-      [VSPH_VISCOUS_FAMILY_ER] = rhs_cubic_er2};
-  if (!rc->tvf && rc->pk.dfq_id == VSPH_KERNEL_DFQ_CUBIC && rc->pk.dim == 2 &&
-      !rc->reduce && !rc->corr && !(rc->dhc > 0.0) && row >= 0)
-    return cubic[row];
-  if (!gauss_specialised(rc, row)) return rhs_general;
-  return table[rc->pk.dim - 2][row][rc->dhc > 0.0];
+/* The loop for the run's shape, chosen once per evaluation: its form's
+ * family's (the 2-D quintic spline with the transport velocity, the 2-D
+ * cubic B-spline, the 3h Gaussian, or its loop for any other shape), the
+ * general one for a form without loops of its own. */
+static vsph_equations_cell_fn *rhs_choose(const struct vsph_equations_ctx *rc) {
+  const struct vsph_viscous_loops *const L =
+      vsph_viscous_types[rc->vl.form]->loops;
+  if (rc->ep->loop_general || !L) return rhs_general;
+  const int plain2 =
+      rc->pk.dim == 2 && !rc->reduce && !rc->corr && !(rc->dhc > 0.0);
+  if (plain2 && rc->tvf && rc->pk.dfq_id == VSPH_KERNEL_DFQ_QUINTIC && L->tvf)
+    return L->tvf;
+  if (plain2 && !rc->tvf && rc->pk.dfq_id == VSPH_KERNEL_DFQ_CUBIC)
+    return L->cubic;
+  const struct vsph_viscous_shape_loops *const g = gauss_loops(rc);
+  return g ? g->cell : L->any;
 }
 
 /* Every cell through the chosen loop, in parallel (gather form: each
  * thread writes only its own particles). */
-static void run_cells(const struct rhs_ctx *rc, rhs_cell_fn *cell_loop,
+static void run_cells(const struct vsph_equations_ctx *rc,
+                      vsph_equations_cell_fn *cell_loop,
                       const struct vsph_particles *p,
                       const struct vsph_cells *cells, size_t n_fluid,
                       struct vsph_equations_out *out) {
@@ -634,7 +327,8 @@ static void run_cells(const struct rhs_ctx *rc, rhs_cell_fn *cell_loop,
  * cubic B-spline, inviscid or viscous), the cylinders' (2-D, Wendland C2)
  * and the 3h Gaussian's (2-D and 3-D) specialised, any other general. */
 #define CONTACT_SHAPE(name, D, KID, VISC)                                      \
-  static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
+  static size_t name(const struct vsph_equations_ctx *rc,                      \
+                     const struct vsph_particles *p,                           \
                      const struct vsph_cells *cells, size_t c, size_t n_fluid, \
                      struct vsph_equations_out *out, double *min_s2) {         \
     return contact_cell(rc, p, cells, c, n_fluid, out, min_s2, D, KID, VISC);  \
@@ -651,7 +345,7 @@ CONTACT_SHAPE(contact_gauss_3, 3, VSPH_KERNEL_DFQ_GAUSSIAN, 0)
 CONTACT_SHAPE(contact_gauss_3v, 3, VSPH_KERNEL_DFQ_GAUSSIAN, 1)
 #undef CONTACT_SHAPE
 
-static size_t contact_general(const struct rhs_ctx *rc,
+static size_t contact_general(const struct vsph_equations_ctx *rc,
                               const struct vsph_particles *p,
                               const struct vsph_cells *cells, size_t c,
                               size_t n_fluid, struct vsph_equations_out *out,
@@ -660,7 +354,8 @@ static size_t contact_general(const struct rhs_ctx *rc,
                       rc->pk.dfq_id, rc->cvisc);
 }
 
-static rhs_cell_fn *contact_choose(const struct rhs_ctx *rc) {
+static vsph_equations_cell_fn *contact_choose(
+    const struct vsph_equations_ctx *rc) {
   if (rc->ep->loop_general) return contact_general;
   if (rc->pk.dim == 2 && rc->pk.dfq_id == VSPH_KERNEL_DFQ_C2)
     return rc->cvisc ? contact_c2_2v : contact_c2_2;
@@ -679,7 +374,7 @@ static rhs_cell_fn *contact_choose(const struct rhs_ctx *rc) {
 /* Contact SPH's loop constants: each material's sound speed and each
  * pair's eta_eff - zeta eta_eff^num (Parshikov et al. eqs. 30-32 and 26). */
 static int contact_init(const struct vsph_equations_props *ep,
-                        struct rhs_ctx *rc) {
+                        struct vsph_equations_ctx *rc) {
   if (ep->nmat < 1 || ep->nmat > VSPH_EQUATIONS_MAT_MAX)
     VSPH_FAIL(VSPH_EINVAL, "contact SPH needs 1 to %d materials, not %d",
               VSPH_EQUATIONS_MAT_MAX, ep->nmat);
@@ -706,21 +401,6 @@ static int contact_init(const struct vsph_equations_props *ep,
 }
 
 /* ------------------------------------------------- the symmetric sweep */
-
-struct vsph_equations_sweep {
-  /* the blocks of this evaluation: the cells' own (struct vsph_cells,
-   * planned with their build), borrowed */
-  size_t nblk;      /* blocks */
-  const size_t *c0; /* first cell of each block; c0[nblk] = ncells */
-  const size_t *lo; /* the first particle each block's buffer holds ... */
-  const size_t *hi; /* ... and one past its last */
-  size_t *off;      /* where each block's buffer starts in buf (doubles) */
-  size_t cap_off;   /* allocated offsets */
-  double *buf;      /* the blocks' buffers, nf doubles per particle */
-  size_t cap_buf;   /* allocated doubles */
-  double *rows;     /* each thread's scratch rows (sweep_each_block) */
-  size_t cap_rows;  /* allocated doubles */
-};
 
 struct vsph_equations_sweep *vsph_equations_sweep_alloc(void) {
   struct vsph_equations_sweep *sw = calloc(1, sizeof *sw);
@@ -782,160 +462,6 @@ static int sweep_plan(struct vsph_equations_sweep *sw,
   return VSPH_OK;
 }
 
-/* The buffer fields of a particle: the force (pressure and viscous) per
- * component, the continuity sum, the delta-SPH sum, and, with parts, the
- * viscous force alone. */
-#define SW_F 0
-#define SW_CONT(d) (d)
-#define SW_DELTA(d) ((d) + 1)
-#define SW_VISC(d) ((d) + 2)
-
-/* Add the first @p na fields of the @p m pairs' shares @p js to their
- * receivers j (@p jj) in block buffer @p buf (first particle @p lo,
- * @p nf fields each), in pair order. */
-VSPH_CONSTS_SPECIALISE void sweep_add(double *buf, size_t lo, int nf,
-                                      const size_t *jj, size_t m,
-                                      double js[][VSPH_PAIR_CHUNK_MAX],
-                                      const int na) {
-  for (size_t k = 0; k < m; k++) {
-    double *const q = buf + (jj[k] - lo) * (size_t)nf;
-    for (int a = 0; a < na; a++) q[a] += js[a][k];
-  }
-}
-
-/* Add particle i's own sums to its entry @p q of a block's buffer: the
- * force @p fs, continuity @p cont, delta-SPH's @p dsum (where the buffer
- * holds it) and (@p parts) the viscous part @p vs. */
-VSPH_CONSTS_SPECIALISE void sweep_own(double *q, const int dim, int nf,
-                                      const int parts, const double *fs,
-                                      const double *vs, double cont,
-                                      double dsum) {
-  for (int a = 0; a < dim; a++) q[SW_F + a] += fs[a];
-  q[SW_CONT(dim)] += cont;
-  if (nf > SW_DELTA(dim)) q[SW_DELTA(dim)] += dsum;
-  if (parts)
-    for (int a = 0; a < dim; a++) q[SW_VISC(dim) + a] += vs[a];
-}
-
-/* The sweep of one block: each particle i of its cells meets its
- * neighbours j > i once. The pair's unit shares (V_i and V_j left out)
- * are computed in one vectorised loop per chunk: the force s (pressure
- * and viscous, odd in the pair: i gets V_j s, j gets -V_i s), the
- * continuity c = F du.x (even: i gets V_j c, j V_i c) and the delta-SPH
- * term d = -2 F (rho_j - rho_i) (odd). i's shares are summed in that loop
- * (lane by lane, as the gather does), j's then added to the block's
- * buffer in pair order; i's sums go to the buffer after its row, so every
- * particle's entry in a block depends on the block's pairs and their
- * order alone. Pairs of two ghosts are skipped. Returns the interactions
- * (each fluid receiver of a pair counts once) and the closest pair. */
-VSPH_CONSTS_SPECIALISE size_t sweep_block(
-    const struct rhs_ctx *rc, const struct vsph_particles *p,
-    const struct vsph_cells *cells, size_t n_fluid,
-    const struct vsph_equations_sweep *sw, size_t blk, int nf, double *min_s2,
-    const struct vsph_viscous_shape sh, const int delta, const int kid) {
-  const int dim = sh.dim, parts = rc->parts;
-  const size_t lo = sw->lo[blk];
-  double *const buf = sw->buf + sw->off[blk];
-  memset(buf, 0, (sw->hi[blk] - lo) * (size_t)nf * sizeof *buf);
-  const double *const rho = p->rho, *const pp = p->p, *const vol = p->vol;
-  const size_t *const id = p->id;
-  const double *const vel[3] = {p->vel[0], dim > 1 ? p->vel[1] : NULL,
-                                dim > 2 ? p->vel[2] : NULL};
-  size_t total = 0;
-  double ms2 = INFINITY;
-  const int fluid_only = p->n == n_fluid; /* no ghosts nor wall particles */
-  for (size_t c = sw->c0[blk]; c < sw->c0[blk + 1]; c++) {
-    struct vsph_pair_ranges rg;
-    vsph_pair_ranges_cell(&rg, cells, c);
-    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-         i++) {
-      const int fi = id[i] < n_fluid;
-      double ui[3] = {0, 0, 0}, Ai[9] = {0};
-      for (int a = 0; a < dim; a++) ui[a] = vel[a][i];
-      vsph_viscous_load_A(&rc->vl, i, Ai);
-      const double rhoi = rho[i], pi = pp[i], Vi = vol[i];
-      double cont = 0, dsum = 0, f0 = 0, f1 = 0, f2 = 0, v0 = 0, v1 = 0, v2 = 0,
-             rs2 = INFINITY;
-      struct vsph_pair_iter it;
-      struct vsph_pair_chunk b;
-      vsph_pair_begin_upper(&it, &rc->pk, p, &rg, i);
-      while (vsph_pair_gather_as(&it, dim, kid, 1, &b)) {
-        const size_t m = b.m;
-        /* i's unit shares; j's shares (V_i applied, signed for j) */
-        double sf[3][VSPH_PAIR_CHUNK_MAX], sv[3][VSPH_PAIR_CHUNK_MAX],
-            sc[VSPH_PAIR_CHUNK_MAX], sd[VSPH_PAIR_CHUNK_MAX],
-            vj[VSPH_PAIR_CHUNK_MAX], js[8][VSPH_PAIR_CHUNK_MAX];
-        /* the pairs' unit shares: a map, no sums, so that it vectorises */
-#pragma omp simd
-        for (size_t k = 0; k < m; k++) {
-          struct vsph_pair pr;           /* VF = F: unit shares, V_i and V_j */
-          vsph_pair_at(&b, k, dim, &pr); /* applied below */
-          const size_t j = pr.j;
-          struct vsph_pair_vec du;
-          double dux = 0.0;
-          for (int a = 0; a < dim; a++) {
-            du.v[a] = vel[a][j] - ui[a];
-            dux += du.v[a] * pr.x[a];
-          }
-          sc[k] = vsph_pair_continuity(&pr, dux);
-          sd[k] = delta ? vsph_pair_delta(&pr, rho[j] - rhoi) : 0.0;
-          const struct vsph_pair_vec f =
-              vsph_pair_pressure(&pr, dim, pi + pp[j]);
-          const struct vsph_pair_visc g =
-              vsph_viscous_pair(&rc->vl, sh, &pr, du, dux, Ai);
-          for (int a = 0; a < dim; a++) {
-            sf[a][k] = f.v[a] + g.f[a];
-            sv[a][k] = g.f[a];
-            js[SW_F + a][k] = -(Vi * sf[a][k]);
-            js[SW_VISC(dim) + a][k] = -(Vi * g.f[a]);
-          }
-          js[SW_CONT(dim)][k] = Vi * sc[k];
-          js[SW_DELTA(dim)][k] = -(Vi * sd[k]);
-          vj[k] = vol[j];
-        }
-        /* i's sums, lane by lane */
-#pragma omp simd reduction(+ : cont, dsum, f0, f1, f2, v0, v1, v2)
-        for (size_t k = 0; k < m; k++) {
-          cont += vj[k] * sc[k];
-          dsum += vj[k] * sd[k];
-          f0 += vj[k] * sf[0][k];
-          v0 += vj[k] * sv[0][k];
-          if (dim > 1) {
-            f1 += vj[k] * sf[1][k];
-            v1 += vj[k] * sv[1][k];
-          }
-          if (dim > 2) {
-            f2 += vj[k] * sf[2][k];
-            v2 += vj[k] * sv[2][k];
-          }
-        }
-#pragma omp simd reduction(min : rs2)
-        for (size_t k = 0; k < m; k++) rs2 = b.s2[k] < rs2 ? b.s2[k] : rs2;
-        /* j's shares, in pair order (a ghost's are never read): the
-         * force, continuity and (delta) the diffusion, or every field */
-        sweep_add(buf, lo, nf, b.j, m, js,
-                  parts ? SW_VISC(dim) + dim : SW_DELTA(dim) + delta);
-        size_t nfj = m; /* fluid receivers j: all, in a set without ghosts */
-        if (!fluid_only) {
-          nfj = 0;
-          for (size_t k = 0; k < m; k++) nfj += id[b.j[k]] < n_fluid;
-        }
-        if (nfj < m && !fi)
-          for (size_t k = 0; k < m; k++)
-            if (id[b.j[k]] < n_fluid) ms2 = b.s2[k] < ms2 ? b.s2[k] : ms2;
-        total += nfj + (fi ? m : 0);
-      }
-      if (!fi) continue;
-      ms2 = rs2 < ms2 ? rs2 : ms2;
-      const double fs[3] = {f0, f1, f2}, vs[3] = {v0, v1, v2};
-      sweep_own(buf + (i - lo) * (size_t)nf, dim, nf, parts, fs, vs, cont,
-                dsum);
-    }
-  }
-  *min_s2 = ms2;
-  return total;
-}
-
 /* Block b's particles [*i0, *i1); returns the first block whose pairs
  * reach into it (blocks before it hold nothing of b's particles). */
 static size_t sweep_span(const struct vsph_equations_sweep *sw,
@@ -979,7 +505,7 @@ static size_t sweep_most(const struct vsph_equations_sweep *sw,
 }
 
 /* Particle i's right-hand side from its sums @p s (sweep_finish). */
-static inline void finish_one(const struct rhs_ctx *rc,
+static inline void finish_one(const struct vsph_equations_ctx *rc,
                               const struct vsph_particles *p, size_t i, int dim,
                               const double *s, struct vsph_equations_out *out) {
   const double rhoi = p->rho[i], rinv = 1.0 / rhoi;
@@ -1041,7 +567,7 @@ static int sweep_each_block(struct vsph_equations_sweep *sw,
 
 /* The right-hand side's finish (sweep_finish). */
 struct finish_ctx {
-  const struct rhs_ctx *rc;
+  const struct vsph_equations_ctx *rc;
   const struct vsph_particles *p;
   size_t n_fluid;
   struct vsph_equations_out *out;
@@ -1061,7 +587,7 @@ static void finish_rows(void *ctx, size_t i0, size_t i1, int nf,
 /* Each fluid particle's sums from the block buffers that hold it, in
  * block order (sweep_rows), into the right-hand side. Fields past nf
  * (the delta-SPH sum without delta-SPH) are zero. */
-static int sweep_finish(const struct rhs_ctx *rc,
+static int sweep_finish(const struct vsph_equations_ctx *rc,
                         const struct vsph_particles *p, size_t n_fluid,
                         const struct vsph_cells *cells,
                         struct vsph_equations_sweep *sw, int nf,
@@ -1070,57 +596,12 @@ static int sweep_finish(const struct rhs_ctx *rc,
   return sweep_each_block(sw, cells, nf, finish_rows, &f);
 }
 
-/* One block's sweep, specialised. */
-typedef size_t sweep_fn(const struct rhs_ctx *rc,
-                        const struct vsph_particles *p,
-                        const struct vsph_cells *cells, size_t n_fluid,
-                        const struct vsph_equations_sweep *sw, size_t blk,
-                        int nf, double *min_s2);
-
-/* sweep_block for dimension D, formulation FORM, delta switch DELTA and
- * the 3h Gaussian, as RHS_CELL_SHAPE below. */
-#define SWEEP_SHAPE(name, D, FORM, DELTA)                                      \
-  static size_t name(const struct rhs_ctx *rc, const struct vsph_particles *p, \
-                     const struct vsph_cells *cells, size_t n_fluid,           \
-                     const struct vsph_equations_sweep *sw, size_t blk,        \
-                     int nf, double *min_s2) {                                 \
-    const struct vsph_viscous_shape sh = {D, FORM};                            \
-    return sweep_block(rc, p, cells, n_fluid, sw, blk, nf, min_s2, sh, DELTA,  \
-                       VSPH_KERNEL_DFQ_GAUSSIAN);                              \
-  }
-SWEEP_SHAPE(sweep_mgf2, 2, VSPH_VISCOUS_MGF, 0)
-SWEEP_SHAPE(sweep_mgf2d, 2, VSPH_VISCOUS_MGF, 1)
-SWEEP_SHAPE(sweep_meaf2, 2, VSPH_VISCOUS_MEAF, 0)
-SWEEP_SHAPE(sweep_meaf2d, 2, VSPH_VISCOUS_MEAF, 1)
-SWEEP_SHAPE(sweep_pvwf2, 2, VSPH_VISCOUS_PVWF, 0)
-SWEEP_SHAPE(sweep_pvwf2d, 2, VSPH_VISCOUS_PVWF, 1)
-SWEEP_SHAPE(sweep_mgf3, 3, VSPH_VISCOUS_MGF, 0)
-SWEEP_SHAPE(sweep_mgf3d, 3, VSPH_VISCOUS_MGF, 1)
-SWEEP_SHAPE(sweep_meaf3, 3, VSPH_VISCOUS_MEAF, 0)
-SWEEP_SHAPE(sweep_meaf3d, 3, VSPH_VISCOUS_MEAF, 1)
-SWEEP_SHAPE(sweep_pvwf3, 3, VSPH_VISCOUS_PVWF, 0)
-SWEEP_SHAPE(sweep_pvwf3d, 3, VSPH_VISCOUS_PVWF, 1)
-SWEEP_SHAPE(sweep_er2, 2, VSPH_VISCOUS_ER, 0)
-SWEEP_SHAPE(sweep_er2d, 2, VSPH_VISCOUS_ER, 1)
-SWEEP_SHAPE(sweep_er3, 3, VSPH_VISCOUS_ER, 0)
-SWEEP_SHAPE(sweep_er3d, 3, VSPH_VISCOUS_ER, 1)
-#undef SWEEP_SHAPE
-
 /* The sweep for the run's shape, or NULL where only the general gather
- * serves (as rhs_choose). */
-static sweep_fn *sweep_choose(const struct rhs_ctx *rc) {
-  static sweep_fn *const table[2][VSPH_VISCOUS_FAMILY_COUNT][2] = {
-      {[VSPH_VISCOUS_FAMILY_BROOKSHAW] = {sweep_mgf2, sweep_mgf2d},
-       [VSPH_VISCOUS_FAMILY_MORRIS] = {sweep_meaf2, sweep_meaf2d},
-       [VSPH_VISCOUS_FAMILY_STRESS] = {sweep_pvwf2, sweep_pvwf2d},
-       [VSPH_VISCOUS_FAMILY_ER] = {sweep_er2, sweep_er2d}},
-      {[VSPH_VISCOUS_FAMILY_BROOKSHAW] = {sweep_mgf3, sweep_mgf3d},
-       [VSPH_VISCOUS_FAMILY_MORRIS] = {sweep_meaf3, sweep_meaf3d},
-       [VSPH_VISCOUS_FAMILY_STRESS] = {sweep_pvwf3, sweep_pvwf3d},
-       [VSPH_VISCOUS_FAMILY_ER] = {sweep_er3, sweep_er3d}}};
-  const int row = vsph_viscous_family(rc->vl.form);
-  if (!gauss_specialised(rc, row)) return NULL;
-  return table[rc->pk.dim - 2][row][rc->dhc > 0.0];
+ * serves (the row rhs_choose takes). */
+static vsph_equations_sweep_fn *sweep_choose(
+    const struct vsph_equations_ctx *rc) {
+  const struct vsph_viscous_shape_loops *const g = gauss_loops(rc);
+  return g ? g->sweep : NULL;
 }
 
 /* PVWF's (model B's) first pass by the sweep, one block: each pair's
@@ -1233,7 +714,8 @@ static int grad_sweep(const struct vsph_viscous_props *vp,
 
 /* The right-hand side by the symmetric sweep: the blocks in parallel
  * (each its own buffer), then every particle from its buffers. */
-static int run_sweep(const struct rhs_ctx *rc, sweep_fn *fn,
+static int run_sweep(const struct vsph_equations_ctx *rc,
+                     vsph_equations_sweep_fn *fn,
                      const struct vsph_particles *p,
                      const struct vsph_cells *cells, size_t n_fluid,
                      struct vsph_equations_out *out) {
@@ -1270,6 +752,8 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   const struct vsph_viscous_props *vp = &ep->visc;
   if (vp->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "props dimension %d, particles %d", vp->dim, p->dim);
+  if (ep->scheme != VSPH_EQUATIONS_CONTACT && !vsph_viscous_type_get(vp->form))
+    VSPH_FAIL(VSPH_EINVAL, "unknown viscous formulation %d", vp->form);
   const size_t n = p->n;
   const int gas = ep->eos == VSPH_EQUATIONS_EOS_GAS;
   if (gas && (!out->de || !p->e))
@@ -1290,7 +774,7 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
     }
   }
   if (ep->scheme == VSPH_EQUATIONS_CONTACT) {
-    struct rhs_ctx rc = {
+    struct vsph_equations_ctx rc = {
         .ep = ep, .parts = out->acc_visc[0] != NULL && out->drho_delta != NULL};
     const int st = contact_init(ep, &rc);
     if (st) return st;
@@ -1298,7 +782,7 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
     run_cells(&rc, contact_choose(&rc), p, cells, n_fluid, out);
     return VSPH_OK;
   }
-  struct rhs_ctx rc = {
+  struct vsph_equations_ctx rc = {
       .ep = ep,
       .dhc = ep->delta * vp->h * ep->c0,
       .parts = out->acc_visc[0] != NULL && out->drho_delta != NULL,
@@ -1312,7 +796,7 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
   vsph_pair_kernel_init(&rc.pk, vp->kernel, vp->dim, vp->h);
   vsph_viscous_loop_init(&rc.vl, vp,
                          vsph_viscous_first_pass(vp->form) ? ws : NULL);
-  sweep_fn *sweep = out->sweep ? sweep_choose(&rc) : NULL;
+  vsph_equations_sweep_fn *sweep = out->sweep ? sweep_choose(&rc) : NULL;
   /* the first pass: by the sweep where the second goes by it */
   const int st = sweep && vsph_viscous_passes(vp->form) == 2
                      ? grad_sweep(vp, &rc.pk, p, cells, out->sweep, ws)

@@ -14,6 +14,7 @@
 #include "forms/forms.h"
 #include "pair.h"
 #include "particles.h"
+#include "viscous_internal.h"
 
 /* Every formulation (docs/theory.md, sections 3 and 8), each described
  * in its family's file of solver/forms/. The first
@@ -212,7 +213,7 @@ int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol) {
 void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
                               struct vsph_viscous_ws *ws, size_t i,
                               const double B[9], const double Mg[9]) {
-  if (!vp || !ws || !B || !Mg) return;
+  if (!vp || !ws || !B || !Mg || !vsph_viscous_type_get(vp->form)) return;
   const int dim = vp->dim, renorm = (vsph_viscous_types[vp->form]->flags &
                                      VSPH_VISCOUS_RENORM) != 0;
   double L[9] = {0}, G[9] = {0};
@@ -296,6 +297,8 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
                          struct vsph_viscous_ws *ws) {
   if (!vp || !p || !cells)
     VSPH_FAIL(VSPH_EINVAL, "vsph_viscous_prepare: a NULL argument");
+  if (!vsph_viscous_type_get(vp->form))
+    VSPH_FAIL(VSPH_EINVAL, "unknown viscous formulation %d", vp->form);
   if (!vsph_viscous_first_pass(vp->form)) return VSPH_OK;
   if (!ws || ws->cap < p->n || ws->dim != p->dim)
     VSPH_FAIL(VSPH_EINVAL, "%s needs a workspace for %zu particles",
@@ -317,48 +320,6 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
   return VSPH_OK;
 }
 
-/* (div V)_i of particle i into out, by the loop's formulation; returns the
- * pairwise dissipation density (MGF, MEAF). Shares per chunk in one
- * vectorisable loop, then summed in neighbour order (as in equations.c). */
-VSPH_CONSTS_SPECIALISE double force_one(
-    const struct vsph_viscous_loop *lp, const struct vsph_pair_kernel *pk,
-    const struct vsph_particles *p, const struct vsph_pair_ranges *rg, size_t i,
-    double *const out[3], const struct vsph_viscous_shape sh, const int kid) {
-  const int dim = sh.dim;
-  double acc[3] = {0, 0, 0}, Ai[9] = {0}, ui[3] = {0, 0, 0}, pd = 0.0;
-  vsph_viscous_load_A(lp, i, Ai);
-  for (int k = 0; k < dim; k++) ui[k] = p->vel[k][i];
-  struct vsph_pair_iter it;
-  struct vsph_pair_chunk b;
-  vsph_pair_begin(&it, pk, p, rg, i);
-  while (vsph_pair_gather(&it, dim, kid, &b)) {
-    const size_t m = b.m;
-    double fv[3][VSPH_PAIR_CHUNK_MAX], fd[VSPH_PAIR_CHUNK_MAX];
-#pragma omp simd
-    for (size_t q = 0; q < m; q++) {
-      struct vsph_pair pr;
-      vsph_pair_at(&b, q, dim, &pr);
-      struct vsph_pair_vec du;
-      double dux = 0.0;
-      for (int k = 0; k < dim; k++) {
-        du.v[k] = p->vel[k][pr.j] - ui[k];
-        dux += du.v[k] * pr.x[k];
-      }
-      const struct vsph_pair_visc r =
-          vsph_viscous_pair(lp, sh, &pr, du, dux, Ai);
-      fd[q] = r.dens;
-      for (int k = 0; k < dim; k++) fv[k][q] = r.f[k];
-    }
-    for (size_t q = 0; q < m; q++) {
-      pd += fd[q];
-      for (int k = 0; k < dim; k++) acc[k] += fv[k][q];
-    }
-  }
-  vsph_viscous_own(lp, i, acc);
-  for (int k = 0; k < dim; k++) out[k][i] = acc[k];
-  return pd;
-}
-
 int vsph_viscous_compute(const struct vsph_viscous_props *vp,
                          const struct vsph_particles *p,
                          const struct vsph_cells *cells,
@@ -375,32 +336,18 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
   vsph_pair_kernel_init(&pk, vp->kernel, dim, vp->h);
   struct vsph_viscous_loop lp;
   vsph_viscous_loop_init(&lp, vp, first ? ws : NULL);
+  /* the form's own loop for the 2-D Gaussian, else the general one */
+  const struct vsph_viscous_loops *const own =
+      vsph_viscous_types[vp->form]->loops;
+  const int G = VSPH_KERNEL_DFQ_GAUSSIAN;
+  vsph_viscous_cell_fn *const fn =
+      own && dim == 2 && pk.dfq_id == G ? own->force : NULL;
+  const double *const fd = first ? ws->dens : NULL;
 #pragma omp parallel for schedule(dynamic, 8)
-  for (size_t c = 0; c < cells->ncells; c++) {
-    struct vsph_pair_ranges rg;
-    vsph_pair_ranges_cell(&rg, cells, c);
-    const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
-    for (size_t i = i0; i < i1; i++) { /* dimension fixed outside the loop */
-      const int fam = vsph_viscous_family(vp->form);
-      const struct vsph_viscous_shape mgf2 = {2, VSPH_VISCOUS_MGF},
-                                      meaf2 = {2, VSPH_VISCOUS_MEAF},
-                                      pvwf2 = {2, VSPH_VISCOUS_PVWF},
-                                      er2 = {2, VSPH_VISCOUS_ER},
-                                      any = {dim, vp->form};
-      const int G = VSPH_KERNEL_DFQ_GAUSSIAN;
-      double pd;
-      if (dim != 2 || pk.dfq_id != G || fam == VSPH_VISCOUS_FAMILY_NONE)
-        pd = force_one(&lp, &pk, p, &rg, i, out, any, pk.dfq_id);
-      else if (fam == VSPH_VISCOUS_FAMILY_ER)
-        pd = force_one(&lp, &pk, p, &rg, i, out, er2, G);
-      else if (fam == VSPH_VISCOUS_FAMILY_BROOKSHAW)
-        pd = force_one(&lp, &pk, p, &rg, i, out, mgf2, G);
-      else if (fam == VSPH_VISCOUS_FAMILY_MORRIS)
-        pd = force_one(&lp, &pk, p, &rg, i, out, meaf2, G);
-      else
-        pd = force_one(&lp, &pk, p, &rg, i, out, pvwf2, G);
-      if (dens) dens[i] = first ? ws->dens[i] : pd;
-    }
-  }
+  for (size_t c = 0; c < cells->ncells; c++)
+    if (fn)
+      fn(&lp, &pk, p, cells, c, out, dens, fd);
+    else
+      force_cell(&lp, &pk, p, cells, c, out, dens, fd, dim, lp.pair, pk.dfq_id);
   return VSPH_OK;
 }

@@ -7,6 +7,7 @@
 
 #include "../common/api.h"
 #include "../common/consts.h"
+#include "../common/status.h"
 #include "pair.h"
 
 struct vsph_kernel_type;
@@ -21,11 +22,13 @@ struct vsph_cells;
  *  Espanol & Revenga, Zheng et al.'s VISC-01..04). Gather loops over a
  *  cell list: each particle's sum is taken by one thread in a fixed
  *  neighbour order, so the result is bitwise identical for any thread
- *  count. Each formulation is one pair function of pair.h (or, for the
- *  per-particle forms, one first pass built from pair.h's sums),
- *  dispatched by vsph_viscous_pair; the solver's right-hand side
- *  (equations.c) calls the same dispatch, so the operators exist once.
- *  No I/O. */
+ *  count. Each formulation is one descriptor (struct vsph_viscous_type,
+ *  in its family's file of solver/forms/) holding its pair function (or,
+ *  for the per-particle forms, one first pass built from pair.h's sums)
+ *  and, for a family with loops of its own, those loops with the pair
+ *  function inlined; the solver's right-hand side (equations.c) calls the
+ *  same functions, so the operators exist once, and no code outside the
+ *  descriptor table tells the forms apart. No I/O. */
 
 /** Viscous formulation. */
 enum vsph_viscous_form {
@@ -150,22 +153,6 @@ enum vsph_viscous_lambda {
                                    al. and Vukcevic et al. print it */
 };
 
-/** The family of specialised neighbour loops that serves a formulation
- *  (solver/equations.c's and vsph_viscous_compute's tables are indexed by
- *  it): a form of a family runs its family's loops, its own constants in
- *  the loop; a form of none runs the general loop (or its first pass
- *  makes the whole force). */
-enum vsph_viscous_family {
-  VSPH_VISCOUS_FAMILY_NONE = -1, /*!< the general loop only */
-  VSPH_VISCOUS_FAMILY_BROOKSHAW, /*!< along grad W with F/s^2: MGF, VI,
-                                      Cleary (MGF's loops) */
-  VSPH_VISCOUS_FAMILY_MORRIS,    /*!< MEAF's loops */
-  VSPH_VISCOUS_FAMILY_STRESS,    /*!< A_i + A_j of a stress pass: PVWF,
-                                      model B (PVWF's loops) */
-  VSPH_VISCOUS_FAMILY_ER,        /*!< Espanol & Revenga's loops */
-  VSPH_VISCOUS_FAMILY_COUNT
-};
-
 /** What a formulation's dissipation density is meant to tend to as
  *  h -> 0 inside a fluid (the continuum limit analysis/dissipation.c
  *  splits its error against, THEORY.md section 4). A form's own constants
@@ -191,10 +178,31 @@ enum vsph_viscous_limit {
                                       u_i.(div V)_i itself */
 };
 
-/** A pair's viscous share for the general loop (vsph_viscous_pair). */
+/** A pair's viscous share (a descriptor's pair): the share of (div V)_i
+ *  and its dissipation density from the loop's constants @p lp, pair
+ *  @p pr, du = u_j - u_i (@p du), @p dux = du.x and PVWF's A_i (@p Ai).
+ *  The general loop calls it through the descriptor; a family's loops
+ *  inline it (solver/viscous_internal.h). */
 typedef struct vsph_pair_visc vsph_viscous_pair_fn(
     const struct vsph_viscous_loop *lp, int dim, const struct vsph_pair *pr,
     struct vsph_pair_vec du, double dux, const double Ai[9]);
+
+/** A corrigible form's pair term with the corrected gradient @p g in
+ *  place of grad_i W = -F x (Basa et al.'s corrections, docs/theory.md
+ *  section 10; the general loop with Solver:correction): sets the pair's
+ *  share @p f of (div V)_i from V_j = @p vj, du = u_j - u_i (@p du) and
+ *  @p dux = du.x, and returns its dissipation density -f.du/2. With
+ *  g = -F x it is the form's uncorrected pair share. */
+typedef double vsph_viscous_pair_g_fn(const struct vsph_viscous_loop *lp,
+                                      int dim, const struct vsph_pair *pr,
+                                      double vj, const double du[3], double dux,
+                                      const double g[3], double f[3]);
+
+/** A formulation's specialised neighbour loops (the right-hand side's
+ *  gather and sweep, vsph_viscous_compute's), each with its pair function
+ *  inlined: opaque here, instantiated by its family's file of
+ *  solver/forms/ (solver/viscous_internal.h). */
+struct vsph_viscous_loops;
 
 /** A formulation's first pass for particle @p i (its family's, in
  *  solver/forms/): the per-particle sums of its neighbours into @p ws
@@ -220,20 +228,24 @@ struct vsph_viscous_type {
                            flows): with its paper's model letter ("Takeda
                            (A)"); NULL: the label */
   const char *cite;   /*!< its source and equation */
-  enum vsph_viscous_pass pass;     /*!< its first pass */
-  enum vsph_viscous_family family; /*!< the specialised loops that serve
-                                       it (NONE: the general loop) */
-  unsigned flags;                  /*!< VSPH_VISCOUS_FREE_SURFACE, ... */
+  enum vsph_viscous_pass pass;            /*!< its first pass */
+  const struct vsph_viscous_loops *loops; /*!< its specialised loops,
+                                               its family's (NULL: the
+                                               general loop only) */
+  unsigned flags;                         /*!< VSPH_VISCOUS_FREE_SURFACE, ... */
   int lap; /*!< Laplacian pass: its vsph_pair_lap_form */
   enum vsph_viscous_lambda lambda; /*!< default lambda */
   enum vsph_viscous_limit limit;   /*!< its dissipation's continuum limit */
-  double eta;                   /*!< default regulariser eta (fraction of h) in
-                                     s^2 + (eta h)^2 */
-  const char *params;           /*!< the props it reads beyond mu, for --help */
-  vsph_viscous_pair_fn *pair;   /*!< its pair share; NULL where its first
-                                     pass makes the whole force */
-  vsph_viscous_first_fn *first; /*!< its first pass (NULL: none; set
-                                     exactly where pass is not NONE) */
+  double eta;                 /*!< default regulariser eta (fraction of h) in
+                                   s^2 + (eta h)^2 */
+  const char *params;         /*!< the props it reads beyond mu, for --help */
+  vsph_viscous_pair_fn *pair; /*!< its pair share; NULL where its first
+                                   pass makes the whole force */
+  vsph_viscous_pair_g_fn *pair_g; /*!< its corrected pair share (set
+                                       exactly where flags hold
+                                       VSPH_VISCOUS_CORRIGIBLE) */
+  vsph_viscous_first_fn *first;   /*!< its first pass (NULL: none; set
+                                       exactly where pass is not NONE) */
 };
 
 /** The table, indexed by vsph_viscous_form: each family's descriptors
@@ -358,19 +370,32 @@ struct vsph_viscous_loop {
   double er_b;   /*!< Espanol-Revenga: b = -(d+2)(zeta + mu (d-2)/d) */
   double *A[9];  /*!< PVWF, B: A = T L of every particle (workspace);
                       A: the force density of every particle in A[0..d-1] */
+  vsph_viscous_pair_fn *pair;     /*!< the form's pair share (the general
+                                       loop's; NULL: none) */
+  vsph_viscous_pair_g_fn *pair_g; /*!< its corrected pair share (NULL:
+                                       not corrigible) */
+  int nA;  /*!< entries of A_i a pair reads: d^2 for a stress pass, else 0 */
+  int own; /*!< 1: the whole force is the particle's own, from A */
 };
 
 /** @brief The loop constants of @p vp; @p ws is the workspace after
  *  vsph_viscous_prepare (may be NULL for the forms without a first pass,
- *  vsph_viscous_first_pass). */
-static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
-                                          const struct vsph_viscous_props *vp,
-                                          const struct vsph_viscous_ws *ws) {
+ *  vsph_viscous_first_pass).
+ *  @return VSPH_OK, or VSPH_EINVAL where @p vp->form is out of range
+ *  (@p lp is then a loop with no term: every pair and own share 0). */
+static inline int vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
+                                         const struct vsph_viscous_props *vp,
+                                         const struct vsph_viscous_ws *ws) {
+  const struct vsph_viscous_loop none = {.form = -1, .dim = vp->dim};
+  if (vp->form < 0 || vp->form >= VSPH_VISCOUS_FORM_COUNT) {
+    *lp = none;
+    return VSPH_EINVAL;
+  }
+  const struct vsph_viscous_type *t = vsph_viscous_types[vp->form];
   lp->form = vp->form;
   lp->dim = vp->dim;
-  lp->Kmu = (vsph_viscous_types[vp->form]->flags & VSPH_VISCOUS_XI
-                 ? 2.0 * vp->xi
-                 : vsph_kernel_mg_factor(vp->dim)) *
+  lp->Kmu = (t->flags & VSPH_VISCOUS_XI ? 2.0 * vp->xi
+                                        : vsph_kernel_mg_factor(vp->dim)) *
             vp->mu;
   lp->eta2 = vp->eta * vp->h * vp->eta * vp->h;
   lp->two_mu = 2.0 * vp->mu;
@@ -378,155 +403,69 @@ static inline void vsph_viscous_loop_init(struct vsph_viscous_loop *lp,
   lp->er_a = vp->zeta - vp->mu * (d + 2.0) / d;
   lp->er_b = -(d + 2.0) * (vp->zeta + vp->mu * (d - 2.0) / d);
   for (int a = 0; a < 9; a++) lp->A[a] = ws ? ws->A[a] : NULL;
+  lp->pair = t->pair;
+  lp->pair_g = t->pair_g;
+  lp->nA = t->pass == VSPH_VISCOUS_PASS_STRESS ? vp->dim * vp->dim : 0;
+  lp->own = t->pair == NULL;
+  return VSPH_OK;
 }
 
 /** @brief Whether the whole of @p form's force comes from its first pass,
  *  per particle (no pair shares): model A and the Laplacian forms
  *  VISC-01..04, mu lap u with the Laplacian of pair.h applied to each
- *  velocity component. */
+ *  velocity component. 0 for an id out of range. */
 static inline int vsph_viscous_particle_form(int form) {
-  return vsph_viscous_types[form]->pair == NULL;
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT &&
+         vsph_viscous_types[form]->pair == NULL;
 }
 
 /** @brief Whether @p form has a first pass (vsph_viscous_prepare) whose
  *  per-particle density -T:D or u.(div V) replaces the pair densities:
- *  PVWF, B and the per-particle forms. */
+ *  PVWF, B and the per-particle forms. 0 for an id out of range. */
 static inline int vsph_viscous_first_pass(int form) {
-  return vsph_viscous_types[form]->pass != VSPH_VISCOUS_PASS_NONE;
-}
-
-/** The shape of a specialised loop: dimension and formulation, constants
- *  where the caller specialises (see equations.c), so the term functions
- *  unroll and the dispatch below folds away. */
-struct vsph_viscous_shape {
-  int dim;  /*!< 1, 2 or 3 */
-  int form; /*!< vsph_viscous_form */
-};
-
-/** @brief PVWF's and model B's pair share (their second pass): the
- *  share -V_j F (A_j + A_i) x of vsph_pair_pvwf_force and no density
- *  (theirs is -T_i:D_i, from the first pass). */
-VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_viscous_pair_stress(
-    const struct vsph_pair *pr, int dim, const double Ai[9],
-    double *const A[9]) {
-  const struct vsph_pair_vec f = vsph_pair_pvwf_force(pr, dim, Ai, A);
-  struct vsph_pair_visc r = {.dens = 0.0};
-  for (int k = 0; k < dim; k++) r.f[k] = f.v[k];
-  return r;
-}
-
-/** @brief The viscous term of pair (i, j): the pair's share of (div V)_i
- *  and its dissipation density (0 for PVWF, whose density -T_i:D_i comes
- *  from pass 1). The specialised loops' forms (a constant there) inline
- *  their pair functions; any other form, in the general loop, calls its
- *  descriptor's (vsph_viscous_types), so a new formulation needs no case
- *  here. @param lp the loop's constants; @param sh its shape.
- *  @param pr the pair (x = r_j - r_i, s2, F, VF).
- *  @param du u_j - u_i; @param dux du.x; @param Ai PVWF's A_i. */
-VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_viscous_pair(
-    const struct vsph_viscous_loop *lp, struct vsph_viscous_shape sh,
-    const struct vsph_pair *pr, const struct vsph_pair_vec du, double dux,
-    const double Ai[9]) {
-  switch (sh.form) {
-    case VSPH_VISCOUS_MGF:
-      return vsph_pair_mgf(pr, sh.dim, lp->Kmu, lp->eta2, dux);
-    case VSPH_VISCOUS_MEAF:
-      return vsph_pair_meaf(pr, sh.dim, lp->two_mu, du);
-    case VSPH_VISCOUS_ER:
-      return vsph_pair_er(pr, sh.dim, lp->er_a, lp->er_b, du, dux);
-    case VSPH_VISCOUS_PVWF:
-      return vsph_viscous_pair_stress(pr, sh.dim, Ai, lp->A);
-    default: {
-      vsph_viscous_pair_fn *const fn = vsph_viscous_types[sh.form]->pair;
-      if (fn) return fn(lp, sh.dim, pr, du, dux, Ai);
-      /* A, VISC-0x: whole from the first pass (vsph_viscous_own) */
-      const struct vsph_pair_visc r = {{0.0, 0.0, 0.0}, 0.0};
-      return r;
-    }
-  }
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT &&
+         vsph_viscous_types[form]->pass != VSPH_VISCOUS_PASS_NONE;
 }
 
 /** @brief Whether @p form is a sum of pair terms along grad_i W that the
- *  kernel corrections can correct: MGF, VI, Cleary, MEAF, ER. */
+ *  kernel corrections can correct (its descriptor's pair_g): MGF, VI,
+ *  Cleary, MEAF, ER. 0 for an id out of range. */
 static inline int vsph_viscous_corrigible(int form) {
-  return (vsph_viscous_types[form]->flags & VSPH_VISCOUS_CORRIGIBLE) != 0;
-}
-
-/** @brief The viscous term of pair (i, j) of a corrigible form with the
- *  corrected gradient @p g in place of grad_i W = -F x (Basa et al.'s
- *  corrections, docs/theory.md section 10): MGF, VI, Cleary
- *  K mu V_j (du.x)/(s^2 + eta^2) g; MEAF 2 mu V_j (x.g)/s^2 du; ER
- *  -V_j (x.g)/s^2 (a du + b (du.x) x/s^2). With g = -F x each is its
- *  uncorrected pair function. Sets @p f; returns -f.du/2. */
-static inline double vsph_viscous_pair_g(const struct vsph_viscous_loop *lp,
-                                         const struct vsph_pair *pr, double vj,
-                                         const double du[3], double dux,
-                                         const double g[3], double f[3]) {
-  const int dim = lp->dim;
-  double xg = 0.0, fdu = 0.0;
-  for (int k = 0; k < dim; k++) xg += pr->x[k] * g[k];
-  if (lp->form == VSPH_VISCOUS_MEAF) {
-    const double c = lp->two_mu * vj * xg / pr->s2;
-    for (int k = 0; k < dim; k++) f[k] = c * du[k];
-  } else if (lp->form == VSPH_VISCOUS_ER) {
-    const double c = -vj * xg / pr->s2, cb = lp->er_b * dux / pr->s2;
-    for (int k = 0; k < dim; k++) f[k] = c * (lp->er_a * du[k] + cb * pr->x[k]);
-  } else { /* MGF, VI, Cleary */
-    const double c = lp->Kmu * vj * dux / (pr->s2 + lp->eta2);
-    for (int k = 0; k < dim; k++) f[k] = c * g[k];
-  }
-  for (int k = 0; k < dim; k++) fdu += f[k] * du[k];
-  return -0.5 * fdu;
-}
-
-/** @brief Add the part of (div V)_i that is particle i's own, not a sum of
- *  pair shares, to @p acc: model A's force from its first pass; nothing
- *  for the other forms. */
-static inline void vsph_viscous_own(const struct vsph_viscous_loop *lp,
-                                    size_t i, double acc[3]) {
-  if (vsph_viscous_particle_form(lp->form))
-    for (int k = 0; k < lp->dim; k++) acc[k] += lp->A[k][i];
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT &&
+         (vsph_viscous_types[form]->flags & VSPH_VISCOUS_CORRIGIBLE) != 0;
 }
 
 /** @brief Neighbour passes of @p form per evaluation: 2 for PVWF and
  *  model B, whose second pass differentiates their first (so their ghost
  *  layers are two supports deep), 1 for the others (model A's one pass
- *  comes before the right-hand side's but reaches one support). */
+ *  comes before the right-hand side's but reaches one support); 0 for an
+ *  id out of range. */
 static inline int vsph_viscous_passes(int form) {
+  if (form < 0 || form >= VSPH_VISCOUS_FORM_COUNT) return 0;
   return vsph_viscous_types[form]->pass == VSPH_VISCOUS_PASS_STRESS ? 2 : 1;
 }
 
-/** @brief The family of specialised loops that serves @p form
- *  (VSPH_VISCOUS_FAMILY_NONE: the general loop). */
-static inline int vsph_viscous_family(int form) {
-  return vsph_viscous_types[form]->family;
+/** @brief Whether @p form has specialised loops of its own (its family's,
+ *  solver/forms/) beside the general loop. 0 for an id out of range. */
+static inline int vsph_viscous_specialised(int form) {
+  return form >= 0 && form < VSPH_VISCOUS_FORM_COUNT &&
+         vsph_viscous_types[form]->loops != NULL;
 }
 
-/** @brief The form whose specialised loop serves @p form (the form id
- *  a vsph_viscous_shape of its family's loops carries): its family's head
- *  (the Brookshaw forms VI and Cleary share MGF's loop, their constants
- *  being in the loop; model B shares PVWF's, its A_i in the workspace),
- *  or @p form itself where no family serves it. */
-static inline int vsph_viscous_loop_form(int form) {
-  switch (vsph_viscous_types[form]->family) {
-    case VSPH_VISCOUS_FAMILY_BROOKSHAW:
-      return VSPH_VISCOUS_MGF;
-    case VSPH_VISCOUS_FAMILY_MORRIS:
-      return VSPH_VISCOUS_MEAF;
-    case VSPH_VISCOUS_FAMILY_STRESS:
-      return VSPH_VISCOUS_PVWF;
-    case VSPH_VISCOUS_FAMILY_ER:
-      return VSPH_VISCOUS_ER;
-    default:
-      return form;
-  }
+/** @brief Add the part of (div V)_i that is particle i's own, not a sum of
+ *  pair shares, to @p acc: the per-particle forms' force from their first
+ *  pass; nothing for the other forms. */
+static inline void vsph_viscous_own(const struct vsph_viscous_loop *lp,
+                                    size_t i, double acc[3]) {
+  if (lp->own)
+    for (int k = 0; k < lp->dim; k++) acc[k] += lp->A[k][i];
 }
 
-/** @brief PVWF's (B's) A_i of particle @p i from the workspace. */
+/** @brief PVWF's (B's) A_i of particle @p i from the workspace (nothing
+ *  for the other forms). */
 static inline void vsph_viscous_load_A(const struct vsph_viscous_loop *lp,
                                        size_t i, double Ai[9]) {
-  const int n = vsph_viscous_passes(lp->form) == 2 ? lp->dim * lp->dim : 0;
-  for (int a = 0; a < n; a++) Ai[a] = lp->A[a][i];
+  for (int a = 0; a < lp->nA; a++) Ai[a] = lp->A[a][i];
 }
 
 #endif /* VSPH_SOLVER_VISCOUS_H */

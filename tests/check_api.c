@@ -2817,12 +2817,82 @@ START_TEST(test_every_entry_called) {
 }
 END_TEST
 
+/* The formulation ids a caller may pass to the public functions and
+ * static inline helpers of solver/viscous.h (and to the right-hand side
+ * through its props): -1, VSPH_VISCOUS_FORM_COUNT and 1000000 are each
+ * refused with their documented value, never read past the descriptor
+ * table (vsph_viscous_passes(1000000) read vsph_viscous_types[1000000]). */
+START_TEST(test_form_ids_out_of_range) {
+  vsph_test_silence();
+  const int bad[3] = {-1, VSPH_VISCOUS_FORM_COUNT, 1000000};
+  struct vsph_particles *p = vsph_particles_alloc(4, 2);
+  ck_assert_ptr_nonnull(p);
+  p->n = 1;
+  p->m[0] = p->rho[0] = 1.0;
+  struct vsph_cells *cells = vsph_cells_alloc();
+  ck_assert_int_eq(vsph_cells_build_direct(cells, p), 0);
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(4, 2);
+  for (int b = 0; b < 3; b++) {
+    const int f = bad[b];
+    ck_assert_int_eq(vsph_viscous_passes(f), 0);
+    ck_assert_int_eq(vsph_viscous_particle_form(f), 0);
+    ck_assert_int_eq(vsph_viscous_first_pass(f), 0);
+    ck_assert_int_eq(vsph_viscous_corrigible(f), 0);
+    ck_assert_int_eq(vsph_viscous_specialised(f), 0);
+    ck_assert_ptr_null(vsph_viscous_type_get(f));
+    ck_assert_str_eq(vsph_viscous_name(f), "unknown");
+    ck_assert_str_eq(vsph_viscous_label(f), "?");
+    ck_assert_str_eq(vsph_viscous_limit_name(f), "unknown");
+    struct vsph_viscous_props vp;
+    ck_assert_int_eq(
+        vsph_viscous_props_init(&vp, f, &vsph_gaussian_type, 2, 0.1, 1.0),
+        VSPH_EINVAL);
+    ck_assert_int_eq(
+        vsph_viscous_props_init(&vp, 0, &vsph_gaussian_type, 2, 0.1, 1.0),
+        VSPH_OK);
+    vp.form = f;
+    /* a loop with no term: every share and its own part nothing */
+    struct vsph_viscous_loop lp;
+    ck_assert_int_eq(vsph_viscous_loop_init(&lp, &vp, ws), VSPH_EINVAL);
+    ck_assert(lp.pair == NULL);
+    ck_assert(lp.pair_g == NULL);
+    ck_assert_int_eq(lp.nA + lp.own, 0);
+    double acc[3] = {0.25, 0.5, 0.75}, Ai[9] = {0};
+    vsph_viscous_own(&lp, 0, acc);
+    vsph_viscous_load_A(&lp, 0, Ai);
+    ck_assert(acc[0] == 0.25 && acc[1] == 0.5 && Ai[0] == 0.0);
+    /* the functions taking props refuse it */
+    double *out[3] = {p->acc[0], p->acc[1], NULL};
+    ck_assert_int_eq(vsph_viscous_prepare(&vp, p, cells, ws), VSPH_EINVAL);
+    ck_assert_int_eq(vsph_viscous_compute(&vp, p, cells, ws, out, NULL),
+                     VSPH_EINVAL);
+    const double B[9] = {1, 0, 0, 1}, Mg[9] = {0};
+    ws->dens[0] = 0.125;
+    vsph_viscous_pvwf_finish(&vp, ws, 0, B, Mg); /* a no-op */
+    ck_assert(ws->dens[0] == 0.125);
+    struct vsph_equations_props ep = {.visc = vp, .rho0 = 1.0, .c0 = 1.0};
+    struct vsph_equations_out eo = {.drho = p->drho,
+                                    .acc = {p->acc[0], p->acc[1]}};
+    p->rho[0] = 1.5; /* refused before the state equation writes p */
+    p->p[0] = 0.0;
+    ck_assert_int_eq(vsph_equations_rhs(&ep, p, 1, cells, ws, &eo),
+                     VSPH_EINVAL);
+    ck_assert(p->p[0] == 0.0);
+    p->rho[0] = 1.0;
+  }
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+}
+END_TEST
+
 Suite *vsph_api_suite(void) {
   Suite *s = suite_create("api");
   TCase *tc = tcase_create("bad arguments");
   tcase_set_timeout(tc, 120);
   tcase_add_test(tc, test_null_and_out_of_range);
   tcase_add_test(tc, test_every_entry_called);
+  tcase_add_test(tc, test_form_ids_out_of_range);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -822,8 +822,9 @@ START_TEST(test_candidates_simd) {
 END_TEST
 
 /* The specialised gathers of the transport-velocity cavity (2-D quintic
- * spline, h = dx, after Adami et al.) and of the channels (2-D cubic
- * B-spline, h/dx 1.5699, after Basa et al.), case by case: on 1 and 2
+ * spline, h = dx, after Adami et al.), of the channels (2-D cubic
+ * B-spline, h/dx 1.5699, after Basa et al.) and a family's gather for any
+ * other shape (the Wendland kernels), case by case: on 1 and 2
  * threads they give the same bits; against the general loop on the same
  * particles (Solver's loop_general) the same interactions and closest
  * pair, and each field to 1e-12 of the size of its terms (the same pair
@@ -853,7 +854,12 @@ START_TEST(test_gather_shapes) {
       {&vsph_channel_couette_type, &vsph_cubic_type, 1.5699, 0,
        VSPH_VISCOUS_CLEARY},
       {&vsph_channel_couette_type, &vsph_cubic_type, 1.5699, 0,
-       VSPH_VISCOUS_TWOPASS}};
+       VSPH_VISCOUS_TWOPASS},
+      /* a family's loop for any other shape (Wendland kernels) */
+      {&vsph_standing_wave_type, &vsph_wendland_c2_type, 1.5699, 0,
+       VSPH_VISCOUS_MGF},
+      {&vsph_channel_poiseuille_type, &vsph_wendland_c4_type, 1.5699, 0,
+       VSPH_VISCOUS_ER}};
   const int c = _i;
   struct vsph_integrate_props ip;
   struct vsph_integrate *s =
@@ -1181,7 +1187,9 @@ END_TEST
  * @p form, the linear law, no delta-SPH; acc and drho into p. */
 static void rhs_corr(struct vsph_particles *p, int form, int corr,
                      struct vsph_equations_props *ep) {
-  *ep = (struct vsph_equations_props){.rho0 = RHO0, .c0 = C0, .corr = corr};
+  const int general = ep->loop_general;
+  *ep = (struct vsph_equations_props){
+      .rho0 = RHO0, .c0 = C0, .corr = corr, .loop_general = general};
   ck_assert_int_eq(vsph_viscous_props_init(&ep->visc, form, &vsph_gaussian_type,
                                            p->dim, HDX * DX, MU),
                    0);
@@ -1218,7 +1226,7 @@ START_TEST(test_corr_exact) {
       for (int b = 0; b < dim; b++) p->vel[a][i] += B[a][b] * p->pos[b][i];
     }
   }
-  struct vsph_equations_props ep;
+  struct vsph_equations_props ep = {.loop_general = 0};
   double ref_a = 0.0, ref_d = 0.0; /* the uncorrected errors' scale */
   for (int corr = 0; corr < VSPH_PAIR_CORR_COUNT; corr++) {
     rhs_corr(p, VSPH_VISCOUS_MGF, corr, &ep);
@@ -1254,8 +1262,9 @@ END_TEST
 /* The corrected right-hand side against an O(N^2) twin written from Basa
  * et al.'s eqs. (21)-(26) (the full Shepard gradient, M with r_j - r_i,
  * GSL's LU inverse), for MGF, MEAF and Espanol-Revenga with each
- * correction: continuity and acceleration to 1e-11 of the largest value,
- * as the twin above. */
+ * correction, by the form's family's loop and by the general loop:
+ * continuity and acceleration to 1e-11 of the largest value, as the twin
+ * above. */
 START_TEST(test_corr_twin) {
   static const int forms[3] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_MEAF,
                                VSPH_VISCOUS_ER};
@@ -1339,17 +1348,21 @@ START_TEST(test_corr_twin) {
     gsl_matrix_free(M);
     gsl_matrix_free(L);
   }
-  struct vsph_equations_props ep;
-  rhs_corr(p, form, corr, &ep); /* reorders p */
   double *lib = calloc(3 * n, sizeof *lib);
-  for (size_t i = 0; i < n; i++) {
-    lib[p->id[i]] = p->drho[i];
-    lib[n + p->id[i]] = p->acc[0][i];
-    lib[2 * n + p->id[i]] = p->acc[1][i];
+  /* the form's family's loop, then the general one (its pair_g through
+   * the descriptor) */
+  for (int general = 0; general < 2; general++) {
+    struct vsph_equations_props ep = {.loop_general = general};
+    rhs_corr(p, form, corr, &ep); /* reorders p */
+    for (size_t i = 0; i < n; i++) {
+      lib[p->id[i]] = p->drho[i];
+      lib[n + p->id[i]] = p->acc[0][i];
+      lib[2 * n + p->id[i]] = p->acc[1][i];
+    }
+    assert_close(lib, tw, n, 1e-11, "corrected continuity");
+    assert_close(lib + n, tw + n, n, 1e-11, "corrected acceleration x");
+    assert_close(lib + 2 * n, tw + 2 * n, n, 1e-11, "corrected acceleration y");
   }
-  assert_close(lib, tw, n, 1e-11, "corrected continuity");
-  assert_close(lib + n, tw + n, n, 1e-11, "corrected acceleration x");
-  assert_close(lib + 2 * n, tw + 2 * n, n, 1e-11, "corrected acceleration y");
   free(lib);
   free(tw);
   vsph_particles_free(p);
@@ -1389,7 +1402,7 @@ Suite *vsph_equations_suite(void) {
                       (int)vsph_scene_count() * 5 + 1);
   tcase_add_loop_test(tc, test_contact_shapes, 0, 2);
   tcase_add_test(tc, test_contact_shapes_3d);
-  tcase_add_loop_test(tc, test_gather_shapes, 0, 10);
+  tcase_add_loop_test(tc, test_gather_shapes, 0, 12);
   tcase_add_loop_test(tc, test_state_equations, 0, 3);
   tcase_add_loop_test(tc, test_xsph_sum, 0, 2);
   tcase_add_test(tc, test_pressure_reduction);

@@ -11,6 +11,7 @@
 #include "../solver/lattice.h"
 #include "../solver/particles.h"
 #include "../solver/viscous.h"
+#include "../solver/viscous_internal.h"
 #include "check_suites.h"
 
 /* A perturbed square patch (free surface all round) carrying a random
@@ -468,6 +469,60 @@ START_TEST(test_digest_lattice) {
 }
 END_TEST
 
+/* Every corrigible form's corrected pair term (its descriptor's pair_g)
+ * with the uncorrected gradient g = grad_i W = -F x is its pair share:
+ * the same force and dissipation density as its pair function, for three
+ * pairs of "high-entropy" geometry in 2-D and 3-D (ER with zeta = 0.731
+ * mu, so that its b term counts; VI and Cleary with their eta). Tolerance
+ * 1e-14 of the force's size: the same products grouped otherwise (V_j F
+ * as one factor or two), a few roundings of 1.1e-16 each. */
+START_TEST(test_pair_g_uncorrected) {
+  const int form = _i % VSPH_VISCOUS_FORM_COUNT;
+  const int dim = 2 + _i / VSPH_VISCOUS_FORM_COUNT;
+  const struct vsph_viscous_type *t = vsph_viscous_types[form];
+  if (!t->pair_g) return;
+  struct vsph_viscous_props vp;
+  ck_assert_int_eq(vsph_viscous_props_init(&vp, form, &vsph_gaussian_type, dim,
+                                           0.0713, 0.0137),
+                   0);
+  vp.zeta = 0.731 * vp.mu;
+  struct vsph_viscous_loop lp;
+  ck_assert_int_eq(vsph_viscous_loop_init(&lp, &vp, NULL), 0);
+  static const double xs[3][3] = {{0.0312, -0.0457, 0.0219},
+                                  {-0.0823, 0.0115, -0.0371},
+                                  {0.0049, 0.0632, 0.0544}};
+  static const double dus[3][3] = {
+      {0.385, -1.207, 0.661}, {-0.913, 0.274, 1.538}, {2.385, 0.0137, -0.442}};
+  const double vj = 0.00271, Ai[9] = {0};
+  for (int q = 0; q < 3; q++) {
+    struct vsph_pair pr = {.j = 0, .s2 = 0.0};
+    struct vsph_pair_vec duv = {{0, 0, 0}};
+    double du[3] = {0, 0, 0}, dux = 0.0, g[3] = {0, 0, 0}, f[3] = {0, 0, 0};
+    for (int k = 0; k < dim; k++) {
+      pr.x[k] = xs[q][k];
+      pr.s2 += pr.x[k] * pr.x[k];
+      du[k] = duv.v[k] = dus[q][k];
+      dux += du[k] * pr.x[k];
+    }
+    pr.F = -41.3 / pr.s2;
+    pr.VF = vj * pr.F;
+    for (int k = 0; k < dim; k++) g[k] = -pr.F * pr.x[k];
+    const struct vsph_pair_visc r = t->pair(&lp, dim, &pr, duv, dux, Ai);
+    const double dens = t->pair_g(&lp, dim, &pr, vj, du, dux, g, f);
+    double scale = 0.0;
+    for (int k = 0; k < dim; k++) scale = fmax(scale, fabs(r.f[k]));
+    ck_assert_double_gt(scale, 0.0);
+    for (int k = 0; k < dim; k++)
+      ck_assert_msg(fabs(f[k] - r.f[k]) <= 1e-14 * scale,
+                    "%s, %d-D, pair %d: f[%d] %.17g, uncorrected %.17g",
+                    t->name, dim, q, k, f[k], r.f[k]);
+    ck_assert_msg(fabs(dens - r.dens) <= 1e-14 * fabs(r.dens),
+                  "%s, %d-D, pair %d: density %.17g, uncorrected %.17g",
+                  t->name, dim, q, dens, r.dens);
+  }
+}
+END_TEST
+
 START_TEST(test_bad_props_refused_names_listed) {
   vsph_test_silence();
   struct vsph_viscous_props vp;
@@ -501,19 +556,42 @@ START_TEST(test_bad_props_refused_names_listed) {
     /* the free-surface forms come first (VSPH_VISCOUS_PAPER_COUNT) */
     ck_assert_int_eq((t->flags & VSPH_VISCOUS_FREE_SURFACE) != 0,
                      k < VSPH_VISCOUS_PAPER_COUNT);
-    /* a loop form serves itself; a form without a pair function is
-     * whole from its first pass, a pair form has none but the stress's */
-    const int lf = vsph_viscous_loop_form(k);
-    ck_assert_int_eq(vsph_viscous_family(lf), t->family);
-    ck_assert_int_eq(vsph_viscous_loop_form(lf), lf);
-    ck_assert(t->family == VSPH_VISCOUS_FAMILY_NONE ? lf == k
-                                                    : t->pair != NULL);
+    /* a form with loops of its own: they inline its pair functions (the
+     * pair and pair_g they were made with are the descriptor's), so the
+     * specialised and the general loop run the one term */
+    if (t->loops) {
+      ck_assert(t->pair != NULL);
+      ck_assert_msg(t->loops->pair == t->pair, "%s: loops of another term",
+                    t->name);
+      ck_assert_msg(t->loops->pair_g == t->pair_g,
+                    "%s: loops of another corrected term", t->name);
+    }
+    ck_assert_int_eq(vsph_viscous_specialised(k), t->loops != NULL);
+    /* the corrected pair term exactly where the corrections apply */
+    ck_assert_int_eq(t->pair_g != NULL,
+                     (t->flags & VSPH_VISCOUS_CORRIGIBLE) != 0);
+    ck_assert(t->pair_g == NULL || t->pair != NULL);
     ck_assert_int_eq(t->pair == NULL,
                      t->pass == VSPH_VISCOUS_PASS_TAKEDA ||
                          t->pass == VSPH_VISCOUS_PASS_LAPLACIAN);
     ck_assert_int_eq(t->lap >= 0, t->pass == VSPH_VISCOUS_PASS_LAPLACIAN);
     /* its family's first pass exactly where it has one */
     ck_assert_int_eq(t->first != NULL, t->pass != VSPH_VISCOUS_PASS_NONE);
+  }
+  /* the families' loops: MGF's serve VI and Cleary (their constants in
+   * the loop), PVWF's model B (its A_i in the workspace); MEAF-eta runs
+   * the general loop; the four heads each their own */
+  const struct vsph_viscous_type *const *const T = vsph_viscous_types;
+  ck_assert_ptr_eq(T[VSPH_VISCOUS_VI]->loops, T[VSPH_VISCOUS_MGF]->loops);
+  ck_assert_ptr_eq(T[VSPH_VISCOUS_CLEARY]->loops, T[VSPH_VISCOUS_MGF]->loops);
+  ck_assert_ptr_eq(T[VSPH_VISCOUS_TWOPASS]->loops, T[VSPH_VISCOUS_PVWF]->loops);
+  ck_assert_ptr_null(T[VSPH_VISCOUS_MEAFETA]->loops);
+  const int heads[4] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_MEAF, VSPH_VISCOUS_PVWF,
+                        VSPH_VISCOUS_ER};
+  for (int a = 0; a < 4; a++) {
+    ck_assert_ptr_nonnull(T[heads[a]]->loops);
+    for (int b = 0; b < a; b++)
+      ck_assert_ptr_ne(T[heads[a]]->loops, T[heads[b]]->loops);
   }
   /* README's table of formulations: one row per descriptor, its name,
    * label, first pass and the parameters it reads (tests run in the
@@ -583,6 +661,8 @@ Suite *vsph_viscous_suite(void) {
   tcase_add_loop_test(tc, test_takeda_fd, 0, 2);
   tcase_add_test(tc, test_pvwf_linear_exact);
   tcase_add_test(tc, test_pvwf_fallback);
+  tcase_add_loop_test(tc, test_pair_g_uncorrected, 0,
+                      2 * VSPH_VISCOUS_FORM_COUNT);
   tcase_add_test(tc, test_bad_props_refused_names_listed);
   tcase_add_test(tc, test_digest_lattice);
   suite_add_tcase(s, tc);

@@ -32,4 +32,16 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_mgf(
   return r;
 }
 
+/** @brief The Brookshaw forms' pair share with the corrected gradient
+ *  @p g in place of grad_i W = -F x (Basa et al.'s corrections,
+ *  docs/theory.md section 10): K mu V_j (du.x)/(s^2 + eta^2) g into @p f,
+ *  @p vj = V_j; with g = -F x it is vsph_pair_mgf's share. */
+VSPH_CONSTS_SPECIALISE void vsph_pair_mgf_g(const struct vsph_pair *pr, int dim,
+                                            double Kmu, double eta2, double vj,
+                                            double dux, const double g[3],
+                                            double f[3]) {
+  const double c = Kmu * vj * dux / (pr->s2 + eta2);
+  for (int k = 0; k < dim; k++) f[k] = c * g[k];
+}
+
 #endif /* VSPH_SOLVER_FORMS_BROOKSHAW_H */

@@ -35,4 +35,19 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_er(
   return r;
 }
 
+/** @brief Espanol & Revenga's pair share with the corrected gradient @p g
+ *  in place of grad_i W = -F x (Basa et al.'s corrections, docs/theory.md
+ *  section 10): -V_j (x.g)/s^2 (a du + b (du.x) x/s^2) into @p f,
+ *  @p vj = V_j, @p du = u_j - u_i, @p dux = du.x; with g = -F x it is
+ *  vsph_pair_er's share. */
+VSPH_CONSTS_SPECIALISE void vsph_pair_er_g(const struct vsph_pair *pr, int dim,
+                                           double a, double b, double vj,
+                                           const double du[3], double dux,
+                                           const double g[3], double f[3]) {
+  double xg = 0.0;
+  for (int k = 0; k < dim; k++) xg += pr->x[k] * g[k];
+  const double c = -vj * xg / pr->s2, cb = b * dux / pr->s2;
+  for (int k = 0; k < dim; k++) f[k] = c * (a * du[k] + cb * pr->x[k]);
+}
+
 #endif /* VSPH_SOLVER_FORMS_ER_H */

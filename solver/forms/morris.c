@@ -7,10 +7,9 @@
 
 /* The pair functions (vsph_viscous_pair_fn): the terms with the loop's
  * constants. */
-static struct vsph_pair_visc pair_meaf(const struct vsph_viscous_loop *lp,
-                                       int dim, const struct vsph_pair *pr,
-                                       struct vsph_pair_vec du, double dux,
-                                       const double Ai[9]) {
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc pair_meaf(
+    const struct vsph_viscous_loop *lp, int dim, const struct vsph_pair *pr,
+    struct vsph_pair_vec du, double dux, const double Ai[9]) {
   (void)dux, (void)Ai;
   return vsph_pair_meaf(pr, dim, lp->two_mu, du);
 }
@@ -22,6 +21,20 @@ static struct vsph_pair_visc pair_meafeta(const struct vsph_viscous_loop *lp,
   (void)dux, (void)Ai;
   return vsph_pair_meafeta(pr, dim, lp->two_mu, lp->eta2, du);
 }
+
+/* MEAF's corrected pair function (vsph_viscous_pair_g_fn). */
+VSPH_CONSTS_SPECIALISE double pair_g_meaf(const struct vsph_viscous_loop *lp,
+                                          int dim, const struct vsph_pair *pr,
+                                          double vj, const double du[3],
+                                          double dux, const double g[3],
+                                          double f[3]) {
+  (void)dux;
+  vsph_pair_meaf_g(pr, dim, lp->two_mu, vj, du, g, f);
+  return vsph_forms_dens_g(dim, f, du);
+}
+
+/* MEAF's loops (MEAF-eta runs the general loop). */
+VSPH_VISCOUS_LOOPS(loops_meaf, pair_meaf, pair_g_meaf, 1)
 
 #define FS VSPH_VISCOUS_FREE_SURFACE
 #define CO VSPH_VISCOUS_CORRIGIBLE
@@ -35,14 +48,15 @@ const struct vsph_viscous_type vsph_morris_meaf = {
         "Morris, Fox & Zhu 1997; Colagrossi et al. 2011, "
         "Eq. (4.30)",
     .pass = VSPH_VISCOUS_PASS_NONE,
-    .family = VSPH_VISCOUS_FAMILY_MORRIS,
+    .loops = &loops_meaf,
     .flags = FS | CO | TV,
     .lap = -1,
     .lambda = VSPH_VISCOUS_LAMBDA_MU,
     .limit = VSPH_VISCOUS_LIMIT_GRADIENT,
     .eta = 0.0,
     .params = "",
-    .pair = pair_meaf};
+    .pair = pair_meaf,
+    .pair_g = pair_g_meaf};
 
 const struct vsph_viscous_type vsph_morris_meafeta = {
     .name = "meafeta",
@@ -51,7 +65,6 @@ const struct vsph_viscous_type vsph_morris_meafeta = {
         "Morris, Fox & Zhu 1997 with r^2 + eta^2 (Basa et al. "
         "2009, model E as Morris et al. print it)",
     .pass = VSPH_VISCOUS_PASS_NONE,
-    .family = VSPH_VISCOUS_FAMILY_NONE,
     .flags = TV,
     .lap = -1,
     .lambda = VSPH_VISCOUS_LAMBDA_MU,

@@ -55,4 +55,18 @@ VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_meafeta(
   return r;
 }
 
+/** @brief MEAF's pair share with the corrected gradient @p g in place of
+ *  grad_i W = -F x (Basa et al.'s corrections, docs/theory.md section 10):
+ *  2 mu V_j (x.g)/s^2 du into @p f, @p vj = V_j, @p du = u_j - u_i; with
+ *  g = -F x it is vsph_pair_meaf's share. */
+VSPH_CONSTS_SPECIALISE void vsph_pair_meaf_g(const struct vsph_pair *pr,
+                                             int dim, double two_mu, double vj,
+                                             const double du[3],
+                                             const double g[3], double f[3]) {
+  double xg = 0.0;
+  for (int k = 0; k < dim; k++) xg += pr->x[k] * g[k];
+  const double c = two_mu * vj * xg / pr->s2;
+  for (int k = 0; k < dim; k++) f[k] = c * du[k];
+}
+
 #endif /* VSPH_SOLVER_FORMS_MORRIS_H */

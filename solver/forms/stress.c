@@ -6,15 +6,22 @@
 #include "../../kernels/kernel.h"
 #include "forms.h"
 
-/* The pair functions (vsph_viscous_pair_fn): the terms with the loop's
- * constants. */
-static struct vsph_pair_visc pair_stress(const struct vsph_viscous_loop *lp,
-                                         int dim, const struct vsph_pair *pr,
-                                         struct vsph_pair_vec du, double dux,
-                                         const double Ai[9]) {
+/* The pair function (vsph_viscous_pair_fn), their second pass: the
+ * share -V_j F (A_j + A_i) x of vsph_pair_pvwf_force and no density
+ * (theirs is -T_i:D_i, from the first pass); inlined into the family's
+ * loops below. */
+VSPH_CONSTS_SPECIALISE struct vsph_pair_visc pair_stress(
+    const struct vsph_viscous_loop *lp, int dim, const struct vsph_pair *pr,
+    struct vsph_pair_vec du, double dux, const double Ai[9]) {
   (void)du, (void)dux;
-  return vsph_viscous_pair_stress(pr, dim, Ai, lp->A);
+  const struct vsph_pair_vec f = vsph_pair_pvwf_force(pr, dim, Ai, lp->A);
+  struct vsph_pair_visc r = {.dens = 0.0};
+  for (int k = 0; k < dim; k++) r.f[k] = f.v[k];
+  return r;
 }
+
+/* PVWF's loops, which serve model B too (its A_i in the workspace). */
+VSPH_VISCOUS_LOOPS(loops, pair_stress, NULL, 0)
 
 /* PVWF pass 1 for particle i: the sums B and Mg over its neighbours
  * (vsph_pair_pvwf_grad), then L_i = B^-1, the renormalised grad u, D_i,
@@ -95,7 +102,7 @@ const struct vsph_viscous_type vsph_stress_pvwf = {
         "principle of virtual work, Colagrossi et al. 2011, "
         "Eqs. (4.18)-(4.19)",
     .pass = VSPH_VISCOUS_PASS_STRESS,
-    .family = VSPH_VISCOUS_FAMILY_STRESS,
+    .loops = &loops,
     .flags = FS | VSPH_VISCOUS_RENORM,
     .lap = -1,
     .lambda = VSPH_VISCOUS_LAMBDA_STOKES,
@@ -113,7 +120,7 @@ const struct vsph_viscous_type vsph_stress_twopass = {
         "two-pass strain rate, Watkins et al. 1996 (Basa et al. "
         "2009, model B, eq. 29; Vukcevic et al. 2012)",
     .pass = VSPH_VISCOUS_PASS_STRESS,
-    .family = VSPH_VISCOUS_FAMILY_STRESS,
+    .loops = &loops,
     .flags = 0,
     .lap = -1,
     .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,

@@ -77,7 +77,6 @@ const struct vsph_viscous_type vsph_takeda_a = {
         "direct second derivatives, Takeda et al. 1994 (Basa et "
         "al. 2009, model A, eqs. 27-28)",
     .pass = VSPH_VISCOUS_PASS_TAKEDA,
-    .family = VSPH_VISCOUS_FAMILY_NONE,
     .flags = 0,
     .lap = -1,
     .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,
@@ -93,7 +92,6 @@ const struct vsph_viscous_type vsph_takeda_a0 = {
     .legend = "Takeda, Shepard (A[0])",
     .cite = "model A, Shepard-corrected (Basa et al. 2009, eq. 23)",
     .pass = VSPH_VISCOUS_PASS_TAKEDA,
-    .family = VSPH_VISCOUS_FAMILY_NONE,
     .flags = VSPH_VISCOUS_SHEPARD,
     .lap = -1,
     .lambda = VSPH_VISCOUS_LAMBDA_STOKES3,

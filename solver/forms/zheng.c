@@ -36,7 +36,6 @@ const struct vsph_viscous_type vsph_zheng_visc01 = {
         "Zheng et al. 2018, VISC-01: Brookshaw/Morris hybrid "
         "(eq. 15)",
     .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-    .family = VSPH_VISCOUS_FAMILY_NONE,
     .flags = TV,
     .lap = VSPH_PAIR_LAP_HYBRID,
     .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -54,7 +53,6 @@ const struct vsph_viscous_type vsph_zheng_visc02 = {
         "Zheng et al. 2018, VISC-02: twice-differentiated kernel "
         "(eq. 16)",
     .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-    .family = VSPH_VISCOUS_FAMILY_NONE,
     .flags = TV,
     .lap = VSPH_PAIR_LAP_DIRECT,
     .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -72,7 +70,6 @@ const struct vsph_viscous_type vsph_zheng_visc03 = {
         "Zheng et al. 2018, VISC-03: Schwaiger's corrected "
         "Laplacian (eq. 17)",
     .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-    .family = VSPH_VISCOUS_FAMILY_NONE,
     .flags = TV,
     .lap = VSPH_PAIR_LAP_SCHWAIGER,
     .lambda = VSPH_VISCOUS_LAMBDA_MU,
@@ -90,7 +87,6 @@ const struct vsph_viscous_type vsph_zheng_visc04 = {
         "Zheng et al. 2018, VISC-04: Oger's renormalised "
         "gradient (eq. 20)",
     .pass = VSPH_VISCOUS_PASS_LAPLACIAN,
-    .family = VSPH_VISCOUS_FAMILY_NONE,
     .flags = TV,
     .lap = VSPH_PAIR_LAP_RENORMALISED,
     .lambda = VSPH_VISCOUS_LAMBDA_MU,
