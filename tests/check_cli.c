@@ -222,9 +222,10 @@ START_TEST(test_archive_nothing_new) {
   ck_assert_ptr_nonnull(mkdtemp(dir));
   char script[3000], path[600];
   snprintf(script, sizeof script,
-           "cd %s && mkdir -p r/runs && \"$VSPH_BIN\" run stretching-square "
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && mkdir -p r/runs && \"$B\" "
+           "run stretching-square "
            "--res 10 --set Solver:t_end=0.01 --out r/runs/x > /dev/null && "
-           "\"$VSPH_BIN\" report archive --out r a 2> /dev/null && "
+           "\"$B\" report archive --out r a 2> /dev/null && "
            "echo 'marked by an earlier judgement' >> a/entries.md",
            dir);
   struct vsph_test_outcome *o = vsph_test_shell(script);
@@ -234,8 +235,10 @@ START_TEST(test_archive_nothing_new) {
   vsph_test_slurp(path, before, sizeof before);
   struct stat s0, s1;
   ck_assert_int_eq(stat(path, &s0), 0);
-  snprintf(script, sizeof script,
-           "cd %s && \"$VSPH_BIN\" report archive --out r a", dir);
+  snprintf(
+      script, sizeof script,
+      "B=$(realpath \"$VSPH_BIN\") && cd %s && \"$B\" report archive --out r a",
+      dir);
   o = vsph_test_shell(script);
   ck_assert_msg(o->status == 0 && strstr(o->err, "nothing new to store"),
                 "exit %d: %s", o->status, o->err);
@@ -260,7 +263,8 @@ START_TEST(test_budget_stops_shear) {
   ck_assert_ptr_nonnull(mkdtemp(dir));
   char script[3000];
   snprintf(script, sizeof script,
-           "cd %s && s=$(date +%%s) && \"$VSPH_BIN\" report --only contact "
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && s=$(date +%%s) && \"$B\" "
+           "report --only contact "
            "--jobs 25 --budget 2s --out r 2> log && cat log >&2 && echo wall "
            "$(($(date +%%s) - s)) && n=0 && for d in r/runs/contact-*; do "
            "[ -f \"$d/checkpoint.bin\" ] && [ ! -f \"$d/profiles.csv\" ] && "

@@ -573,16 +573,16 @@ START_TEST(test_readme_steps_3_4) {
                 "README: no step 4 command");
   char dir[] = "/tmp/vsph-steps-XXXXXX", script[4096 + 1024];
   vsph_test_scratch(dir);
-  snprintf(
-      script, sizeof script,
-      "cd '%s' && \"$VSPH_BIN\" run standing-wave --res 12 --t-end 0.4 "
-      "--out wave --quiet && %s && od -An -c -N4 wave/Ek.png | tr -d ' ' "
-      "&& \"$VSPH_BIN\" report --only profiles --out r > /dev/null 2>&1 && "
-      "cd r && n=0 && for f in fig_*.gp; do b=${f%%.gp}; "
-      "rm -f \"$b.png\" \"$b.svg\" \"$b.pdf\" && gnuplot \"$f\" && "
-      "[ -s \"$b.png\" ] && [ -s \"$b.svg\" ] && [ -s \"$b.pdf\" ] && "
-      "n=$((n + 1)); done && echo redrawn $n of $(ls fig_*.gp | wc -l)",
-      dir, line);
+  snprintf(script, sizeof script,
+           "B=$(realpath \"$VSPH_BIN\") && cd '%s' && \"$B\" run standing-wave "
+           "--res 12 --t-end 0.4 "
+           "--out wave --quiet && %s && od -An -c -N4 wave/Ek.png | tr -d ' ' "
+           "&& \"$B\" report --only profiles --out r > /dev/null 2>&1 && "
+           "cd r && n=0 && for f in fig_*.gp; do b=${f%%.gp}; "
+           "rm -f \"$b.png\" \"$b.svg\" \"$b.pdf\" && gnuplot \"$f\" && "
+           "[ -s \"$b.png\" ] && [ -s \"$b.svg\" ] && [ -s \"$b.pdf\" ] && "
+           "n=$((n + 1)); done && echo redrawn $n of $(ls fig_*.gp | wc -l)",
+           dir, line);
   struct vsph_test_outcome *o = vsph_test_shell(script);
   ck_assert_msg(o->status == 0, "exit %d\n%s\n%s", o->status, o->out, o->err);
   ck_assert_msg(strstr(o->out, "211PNG") != NULL, "no PNG: %s", o->out);
