@@ -591,9 +591,11 @@ int vsph_vtk_write_mapped(const char *dir, const char *name,
 
 int vsph_vtk_write_walls(const char *dir, const char *name,
                          const struct vsph_particles *p, size_t n_fluid,
-                         size_t n_wall, double t) {
+                         size_t n_wall, double h, double t) {
   if (!dir || !name || !p)
     VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_write_walls: a NULL argument");
+  if (!(h > 0.0) || !isfinite(h))
+    VSPH_FAIL(VSPH_EINVAL, "vsph_vtk_write_walls: h = %g is not positive", h);
   /* the particles beyond the fluid, in id order */
   size_t n = 0;
   for (size_t i = 0; i < p->n; i++) n += p->id[i] >= n_fluid;
@@ -637,6 +639,22 @@ int vsph_vtk_write_walls(const char *dir, const char *name,
                          .order = order,
                          .ids = p->id,
                          .limit = n_fluid + n_wall};
+  const struct src ms = {
+      .fill = fill_scalar, .esz = e8, .order = order, .v = p->m};
+  if (!st) st = add_gathered(o, POINT_DATA, "mass", "Float64", 1, &ms, n);
+  describe(o, "mass",
+           "particle mass m (per unit depth in 2-D): a wall particle's as "
+           "its wall gives it, an image's its fluid particle's",
+           d == 3   ? "kg"
+           : d == 2 ? "kg/m"
+                    : "kg/m^",
+           2);
+  const struct src hs = {.fill = fill_const, .esz = e8, .c = h};
+  if (!st)
+    st = add_gathered(o, POINT_DATA, "smoothing_length", "Float64", 1, &hs, n);
+  describe(o, "smoothing_length",
+           "smoothing length h (the fluid's; the kernel reaches kappa h)", "m",
+           1);
   if (!st) st = add_gathered(o, POINT_DATA, "type", "UInt8", 1, &ty, n);
   describe(o, "type",
            "1: a wall particle (fixed walls, the cavity's lid), 2: an image "

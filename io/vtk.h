@@ -153,11 +153,13 @@ VSPH_API int vsph_vtk_pvd_add_part(struct vsph_vtk_pvd *pvd, double t, int part,
  *  order: positions, velocity, density, pressure, id and `type` (1 a wall
  *  particle: ids below n_fluid + @p n_wall, the fixed walls and the
  *  cavity's lid; 2 an image of a fluid particle, a mirror ghost or a
- *  periodic image), each described. @return VSPH_OK, VSPH_ENOMEM,
- *  VSPH_EIO. */
+ *  periodic image), mass and smoothing length (@p h, the fluid's), each
+ *  described. @return VSPH_OK, VSPH_EINVAL (a NULL argument, @p h not
+ *  positive), VSPH_ENOMEM, VSPH_EIO. */
 VSPH_API int vsph_vtk_write_walls(const char *dir, const char *name,
                                   const struct vsph_particles *p,
-                                  size_t n_fluid, size_t n_wall, double t);
+                                  size_t n_fluid, size_t n_wall, double h,
+                                  double t);
 
 /** @brief Close the collection. @return VSPH_OK or VSPH_EIO. */
 VSPH_API int vsph_vtk_pvd_close(struct vsph_vtk_pvd *pvd);

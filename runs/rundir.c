@@ -366,7 +366,8 @@ static int write_snapshot(struct outputs *o, struct vsph_run *run,
     char wname[64];
     snprintf(wname, sizeof wname, "walls_%04zu.vtp", o->nsnap - 1);
     st = vsph_vtk_write_walls(o->dir, wname, s->p, s->n_fluid,
-                              vsph_integrate_wall_count(s), s->t);
+                              vsph_integrate_wall_count(s), s->props.eq.visc.h,
+                              s->t);
     if (!st) (void)vsph_folder_note(o->fo, wname);
     if (!st) st = vsph_vtk_pvd_add_part(&o->pvd, s->t, 1, wname);
   }

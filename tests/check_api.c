@@ -1597,11 +1597,11 @@ static void call_vsph_vtk_pvd_add_part_1(void) {
 }
 
 static void call_vsph_vtk_write_walls_0(void) {
-  (void)vsph_vtk_write_walls(NULL, NULL, NULL, 0, 0, 0.0);
+  (void)vsph_vtk_write_walls(NULL, NULL, NULL, 0, 0, 0.0, 0.0);
 }
 
 static void call_vsph_vtk_write_walls_1(void) {
-  (void)vsph_vtk_write_walls(NULL, NULL, NULL, SIZE_MAX, SIZE_MAX, NAN);
+  (void)vsph_vtk_write_walls(NULL, NULL, NULL, SIZE_MAX, SIZE_MAX, NAN, NAN);
 }
 
 static void call_vsph_vtk_pvd_close_0(void) { (void)vsph_vtk_pvd_close(NULL); }

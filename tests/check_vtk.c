@@ -292,7 +292,8 @@ static void clean_case(struct fixture *fx, const char *dir, const char *path) {
 /* The walls beside a snapshot (vsph_vtk_write_walls): the particles
  * beyond the fluid, in id order whatever their place in the set, typed 1
  * (the first n_wall of them: wall particles) or 2 (images), their
- * pressure bitwise. */
+ * pressure and mass bitwise, the smoothing length given; an h not
+ * positive refused. */
 START_TEST(test_walls_file_in_id_order_typed) {
   struct vsph_particles *p = vsph_particles_alloc(7, 2);
   ck_assert_ptr_nonnull(p);
@@ -305,16 +306,26 @@ START_TEST(test_walls_file_in_id_order_typed) {
     p->vel[0][i] = p->vel[1][i] = 0.0;
     p->rho[i] = 1000.0 + (double)id[i];
     p->p[i] = 2.385 * (double)id[i];
+    p->m[i] = 0.75 + 0.5 * (double)id[i];
   }
   char dir[] = "/tmp/vsph_wallsXXXXXX", path[64];
   ck_assert_ptr_nonnull(mkdtemp(dir));
-  ck_assert_int_eq(vsph_vtk_write_walls(dir, "w.vtp", p, 3, 2, 0.5), 0);
+  vsph_test_silence(); /* h must be positive: refused, nothing written */
+  ck_assert_int_eq(vsph_vtk_write_walls(dir, "w.vtp", p, 3, 2, 0.0, 0.5),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(vsph_vtk_write_walls(dir, "w.vtp", p, 3, 2, NAN, 0.5),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(vsph_vtk_write_walls(dir, "w.vtp", p, 3, 2, 0.037, 0.5), 0);
   snprintf(path, sizeof path, "%s/w.vtp", dir);
   int nc = 0;
   size_t nv = 0;
   double *ty = vsph_test_vtp_values(path, "type", &nc, &nv);
   double *ids = vsph_test_vtp_values(path, "id", &nc, &nv);
   double *pr = vsph_test_vtp_values(path, "pressure", &nc, &nv);
+  double *ms = vsph_test_vtp_values(path, "mass", &nc, &nv);
+  double *hs = vsph_test_vtp_values(path, "smoothing_length", &nc, &nv);
+  ck_assert_ptr_nonnull(ms);
+  ck_assert_ptr_nonnull(hs);
   ck_assert_ptr_nonnull(ty);
   ck_assert_ptr_nonnull(ids);
   ck_assert_ptr_nonnull(pr);
@@ -323,7 +334,11 @@ START_TEST(test_walls_file_in_id_order_typed) {
     ck_assert(ids[k] == (double)(3 + k));        /* id order */
     ck_assert(ty[k] == (3 + k < 3 + 2 ? 1 : 2)); /* walls, then images */
     ck_assert(pr[k] == 2.385 * (double)(3 + k));
+    ck_assert(ms[k] == 0.75 + 0.5 * (double)(3 + k)); /* bitwise */
+    ck_assert(hs[k] == 0.037);
   }
+  free(ms);
+  free(hs);
   free(ty);
   free(ids);
   free(pr);
