@@ -79,8 +79,8 @@ static int set_wait_policy(void) {
  * library's two copies do). VSPH_BASELINE set in the environment (to
  * anything) keeps the baseline copy. A copy built for x86-64-v3 or wider never
  * looks, so there is no loop. Sets @p path and returns 1 where that copy is to
- * run. */
-static int faster_copy(char *path, size_t len) {
+ * run, with this program's own path in @p self (4096 bytes). */
+static int faster_copy(char *path, size_t len, char *self) {
 #if defined(__x86_64__) && !defined(__AVX2__) && defined(__GNUC__)
   if (getenv("VSPH_BASELINE")) return 0;
   __builtin_cpu_init();
@@ -91,18 +91,18 @@ static int faster_copy(char *path, size_t len) {
 #else
   if (!__builtin_cpu_supports("x86-64-v3")) return 0;
 #endif
-  char self[4096];
-  const ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
+  const ssize_t k = readlink("/proc/self/exe", self, 4095);
   if (k <= 0) return 0;
   self[k] = '\0';
-  char *slash = strrchr(self, '/');
+  const char *slash = strrchr(self, '/');
   if (!slash) return 0;
-  *slash = '\0';
-  const int m = snprintf(path, len, "%s/../libexec/vsph/x86-64-v3/vsph", self);
+  const int m = snprintf(path, len, "%.*s/../libexec/vsph/x86-64-v3/vsph",
+                         (int)(slash - self), self);
   return m > 0 && (size_t)m < len && access(path, X_OK) == 0;
 #else
   (void)path;
   (void)len;
+  (void)self;
   return 0;
 #endif
 }
@@ -111,16 +111,12 @@ static int faster_copy(char *path, size_t len) {
  * whichever applies; if the start fails, vsph runs on as it is. */
 static void start(char **argv) {
   char path[4200], self[4096];
-  const int faster = faster_copy(path, sizeof path);
+  const int faster = faster_copy(path, sizeof path, self);
   const int policy = set_wait_policy();
   if (faster) {
     /* the copy's children and scripts name this program (VSPH_EXE, read
      * by vsph report), which chooses the copy wherever they run */
-    const ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (k > 0) {
-      self[k] = '\0';
-      setenv("VSPH_EXE", self, 1);
-    }
+    setenv("VSPH_EXE", self, 1);
     execv(path, argv);
   }
   if (policy) execv("/proc/self/exe", argv);
