@@ -1,5 +1,10 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* pair.h first, outside the guard: pair.h includes this file after the
+ * pair's geometry (its contact SPH uses these terms), so a program that
+ * includes this header alone gets the whole of pair.h and this file once. */
+#include "../pair.h"
+
 #ifndef VSPH_SOLVER_FORMS_BROOKSHAW_H
 #define VSPH_SOLVER_FORMS_BROOKSHAW_H
 
@@ -10,7 +15,6 @@
  *  the descriptors are in brookshaw.c. Included by solver/pair.h, after the
  *  pair's geometry. */
 
-#include "../pair.h"
 
 /** @brief MGF, Monaghan & Gingold, Eq. (4.20), THEORY 3, and its
  *  Brookshaw-type kin (docs/theory.md, section 8):

@@ -1,5 +1,10 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* pair.h first, outside the guard: pair.h includes this file after the
+ * pair's geometry (its contact SPH uses these terms), so a program that
+ * includes this header alone gets the whole of pair.h and this file once. */
+#include "../pair.h"
+
 #ifndef VSPH_SOLVER_FORMS_ER_H
 #define VSPH_SOLVER_FORMS_ER_H
 
@@ -9,7 +14,6 @@
  *  descriptors are in er.c. Included by solver/pair.h, after the pair's
  *  geometry. */
 
-#include "../pair.h"
 
 /** @brief Espanol & Revenga (2003), docs/theory.md section 8: with
  *  F_ER = -W'/s and the number density 1/V,

@@ -1,5 +1,10 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* pair.h first, outside the guard: pair.h includes this file after the
+ * pair's geometry (its contact SPH uses these terms), so a program that
+ * includes this header alone gets the whole of pair.h and this file once. */
+#include "../pair.h"
+
 #ifndef VSPH_SOLVER_FORMS_MORRIS_H
 #define VSPH_SOLVER_FORMS_MORRIS_H
 
@@ -9,7 +14,6 @@
  *  pair terms; the descriptors are in morris.c. Included by solver/pair.h,
  *  after the pair's geometry. */
 
-#include "../pair.h"
 
 /** @brief MEAF, Morris, Fox & Zhu (1997), Eq. (4.30), THEORY 3:
  *  (div V)_i = 2 mu sum_j V_j W'/s (u_i - u_j).

@@ -1,5 +1,10 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* pair.h first, outside the guard: pair.h includes this file after the
+ * pair's geometry (its contact SPH uses these terms), so a program that
+ * includes this header alone gets the whole of pair.h and this file once. */
+#include "../pair.h"
+
 #ifndef VSPH_SOLVER_FORMS_STRESS_H
 #define VSPH_SOLVER_FORMS_STRESS_H
 
@@ -10,7 +15,6 @@
  *  gradients, then the stress's divergence. The pair terms; the descriptors
  *  are in stress.c. Included by solver/pair.h, after the pair's geometry. */
 
-#include "../pair.h"
 
 /** @brief PVWF pass 1, Eqs. (4.18)-(4.19), THEORY 3: the pair's terms of
  *  B = sum_j V_j grad_i W_ij (x) x = sum_j V_j (-F) x (x) x, whose inverse
