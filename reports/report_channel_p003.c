@@ -583,27 +583,21 @@ static int block_rule(const char *block, const char *test, const char *measure,
   return vsph_claim_test(kind, (const double[2]){x, limit});
 }
 
-/* The words of the claim p003_dt on when a smaller dt ends better: at the
- * first c where it does (@p first; -1: none), into @p buf. */
+/* The measures of the claim p003_dt on the first c where a smaller dt
+ * ends better (@p first; -1: none): its c, whether its smallest dt's run
+ * still stops, when, and the larger dts' latest stop there (the block's
+ * words say it). */
 static void sweep_stab(const struct vsph_report_channel_p003 *p, int first,
-                       char *buf, size_t len) {
-  /* better by a later stop only: say when, against the run's length */
+                       struct vsph_claim_vals *v) {
   const struct vsph_jobs_run *rb = first >= 0 ? &p->sw[first][p->nd - 1] : NULL;
   double tb = 0.0; /* the larger dt's latest stop there */
   for (int b = 0; rb && b + 1 < p->nd; b++)
     tb = fmax(tb, p->sw[first][b].t_unstable);
-  if (rb && !rb->ok)
-    snprintf(buf, len,
-             "at c = %g m/s the smallest dt stops later, at t = %.3g s "
-             "against %.3g s at most (of the run's %g s)",
-             SW[first][0].c0, rb->t_unstable, tb, SW_TEND);
-  else if (rb)
-    snprintf(buf, len, "at c = %g m/s the smallest dt ends better (the table)",
-             SW[first][0].c0);
-  else
-    snprintf(buf, len,
-             "no c ends better at the smallest dt (each ends as at the "
-             "largest, or stops no later)");
+  vsph_claim_num(v, "stab_c", rb ? SW[first][0].c0 : (double)NAN);
+  vsph_claim_num(v, "stab_stops", rb && !rb->ok);
+  vsph_claim_num(v, "stab_t", rb ? rb->t_unstable : (double)NAN);
+  vsph_claim_num(v, "stab_tmax", rb ? tb : (double)NAN);
+  vsph_claim_num(v, "t_end", SW_TEND);
 }
 
 /* Vukcevic et al.'s time step against the sound speed. */
@@ -613,7 +607,7 @@ static int p003_sweep_claims(struct vsph_report *R,
   static const char *const DT = "claims/channel.p003_dt";
   struct sweep w;
   sweep_figures(p, &w);
-  char read[1024], acc[200], stab[200];
+  char read[1024];
   sweep_read(p, read, sizeof read);
   sweep_vals(p, v);
   vsph_claim_str(v, "dts", "%s",
@@ -624,13 +618,6 @@ static int p003_sweep_claims(struct vsph_report *R,
   vsph_claim_num(v, "c_mixed", w.mixed >= 0 ? SW[w.mixed][0].c0 : (double)NAN);
   int st = vsph_report_doc_grade(R, "claims/channel.p003_combos", v);
   /* their §5: a smaller dt is "more accurate and more stable" */
-  if (isfinite(w.acc))
-    snprintf(acc, sizeof acc,
-             "where every dt runs, the error changes by at most %.2g %% of "
-             "itself over dt",
-             100 * w.acc);
-  else
-    snprintf(acc, sizeof acc, "no c runs at every dt");
   /* lag, the delay the block's rule weighs: the largest over the c
    * before the first that turns (from that c on, it is named first) */
   const int n_lag = w.turn >= 0 ? w.turn : NSWC;
@@ -648,10 +635,8 @@ static int p003_sweep_claims(struct vsph_report *R,
                 DT);
     if (a == w.turn || later) first = a;
   }
-  sweep_stab(p, first, stab, sizeof stab);
   sweep_vals(p, v);
-  vsph_claim_str(v, "acc", "%s", acc);
-  vsph_claim_str(v, "stab", "%s", stab);
+  sweep_stab(p, first, v);
   vsph_claim_num(v, "acc_change", w.acc);
   vsph_claim_num(v, "rise", w.rise);
   vsph_claim_num(v, "lag", lag);

@@ -469,6 +469,76 @@ static int checked_exists(const char *text) {
   return found;
 }
 
+/* Words the blocks choose that the parts' C once wrote (reports/claims/
+ * channel.md): p003_dt's sentence on the first c where a smaller dt ends
+ * better (it stops later, it ends better, none) and on the error's change
+ * over dt; cavity_ek's count of runs at the paper's resolution (none, one,
+ * several). Each case's text is the C's old sentence for those values. */
+START_TEST(test_block_words_as_the_parts_wrote) {
+  const char *dt = vsph_text_get("claims/channel.p003_dt");
+  ck_assert_ptr_nonnull(dt);
+  const struct {
+    double c, stops, t, tmax, acc;
+    const char *want;
+  } sw[] = {
+      {20.0, 1, 0.4123, 0.2, 0.0123,
+       "the same sweep: where every dt runs, the error changes by at most "
+       "1.2 % of itself over dt; at c = 20 m/s the smallest dt stops later, "
+       "at t = 0.412 s against 0.2 s at most (of the run's 1 s)"},
+      {7.5, 0, 1.0, 0.3, NAN,
+       "the same sweep: no c runs at every dt; at c = 7.5 m/s the smallest dt "
+       "ends better (the table)"},
+      {NAN, 0, NAN, NAN, 6.8e-8,
+       "the same sweep: where every dt runs, the error changes by at most "
+       "6.8e-06 % of itself over dt; no c ends better at the smallest dt "
+       "(each ends as at the largest, or stops no later)"}};
+  struct vsph_claim_vals v;
+  struct vsph_claim_row row;
+  for (size_t k = 0; k < sizeof sw / sizeof sw[0]; k++) {
+    vsph_claim_clear(&v);
+    vsph_claim_str(&v, "dt_span", "x");
+    vsph_claim_str(&v, "p003_diffs", "x");
+    vsph_claim_str(&v, "dt_run", "x");
+    vsph_claim_num(&v, "acc_change", sw[k].acc);
+    vsph_claim_num(&v, "rise", 2.0); /* no fall: "falls" fails */
+    vsph_claim_num(&v, "lag", 1.0);
+    vsph_claim_num(&v, "turn", 0);
+    vsph_claim_num(&v, "turn_stop", 0);
+    vsph_claim_num(&v, "stab_c", sw[k].c);
+    vsph_claim_num(&v, "stab_stops", sw[k].stops);
+    vsph_claim_num(&v, "stab_t", sw[k].t);
+    vsph_claim_num(&v, "stab_tmax", sw[k].tmax);
+    vsph_claim_num(&v, "t_end", 1.0);
+    ck_assert_int_eq(grade(dt, &v, &row), VSPH_OK);
+    ck_assert_msg(!strcmp(row.ours, sw[k].want), "case %zu: %s", k, row.ours);
+  }
+  const char *ek = vsph_text_get("claims/channel.cavity_ek");
+  ck_assert_ptr_nonnull(ek);
+  static const char *const NUMS[] = {"fv_read", "fv_n",  "band",     "peak",
+                                     "edge",    "under", "measured", "n",
+                                     "lo",      "hi",    "e_seen",   "d_seen"};
+  const double vals[] = {1, 64, 0.01, 0.9, 0.99, 2, 2, 3, 0.8, 0.9, 1, 0};
+  const struct {
+    double n;
+    const char *want;
+  } ap[] = {{0, "; no measured run at the paper's 50 x 50"},
+            {1, "; one measured run at the paper's 50 x 50"},
+            {3, "; 3 measured runs at the paper's 50 x 50"}};
+  for (size_t k = 0; k < sizeof ap / sizeof ap[0]; k++) {
+    vsph_claim_clear(&v);
+    for (size_t q = 0; q < sizeof NUMS / sizeof NUMS[0]; q++)
+      vsph_claim_num(&v, NUMS[q], vals[q]);
+    vsph_claim_num(&v, "n_paper", ap[k].n);
+    vsph_claim_str(&v, "quick_runs", "x");
+    vsph_claim_str(&v, "full_runs", "x");
+    vsph_claim_str(&v, "hist", "30");
+    ck_assert_int_eq(grade(ek, &v, &row), VSPH_OK);
+    ck_assert_msg(strstr(row.verdict, ap[k].want), "case %zu: %s", k,
+                  row.verdict);
+  }
+}
+END_TEST
+
 /* Every claim block compiled in from reports/claims/ is well formed (each
  * field, test and expression; its placeholders' forms), a test of make
  * check it names is there, and there are some. */
@@ -511,6 +581,7 @@ Suite *vsph_claim_suite(void) {
   tcase_add_test(tc, test_words_chosen);
   tcase_add_test(tc, test_word_lines);
   tcase_add_test(tc, test_blocks_well_formed);
+  tcase_add_test(tc, test_block_words_as_the_parts_wrote);
   suite_add_tcase(s, tc);
   return s;
 }
