@@ -15,7 +15,6 @@
  *  the descriptors are in brookshaw.c. Included by solver/pair.h, after the
  *  pair's geometry. */
 
-
 /** @brief MGF, Monaghan & Gingold, Eq. (4.20), THEORY 3, and its
  *  Brookshaw-type kin (docs/theory.md, section 8):
  *  (div V)_i = K mu sum_j V_j (u_j - u_i).(r_j - r_i)/(s^2 + eta^2)

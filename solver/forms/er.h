@@ -14,7 +14,6 @@
  *  descriptors are in er.c. Included by solver/pair.h, after the pair's
  *  geometry. */
 
-
 /** @brief Espanol & Revenga (2003), docs/theory.md section 8: with
  *  F_ER = -W'/s and the number density 1/V,
  *  (div V)_i = sum_j V_j F (a du + b (du.x) x / s^2), where

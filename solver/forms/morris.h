@@ -14,7 +14,6 @@
  *  pair terms; the descriptors are in morris.c. Included by solver/pair.h,
  *  after the pair's geometry. */
 
-
 /** @brief MEAF, Morris, Fox & Zhu (1997), Eq. (4.30), THEORY 3:
  *  (div V)_i = 2 mu sum_j V_j W'/s (u_i - u_j).
  *  @param pr the pair (x = r_j - r_i, s2, F, VF); @param dim the dimension.

@@ -15,7 +15,6 @@
  *  gradients, then the stress's divergence. The pair terms; the descriptors
  *  are in stress.c. Included by solver/pair.h, after the pair's geometry. */
 
-
 /** @brief PVWF pass 1, Eqs. (4.18)-(4.19), THEORY 3: the pair's terms of
  *  B = sum_j V_j grad_i W_ij (x) x = sum_j V_j (-F) x (x) x, whose inverse
  *  is L_i, and of Mg = sum_j V_j (-F) du (x) x, so that the renormalised

@@ -15,7 +15,6 @@
  *  terms; the descriptors are in takeda.c. Included by solver/pair.h, after
  *  the pair's geometry. */
 
-
 /** Per-particle sums of Takeda-type direct second derivatives (Basa et
  *  al.'s model A, docs/theory.md section 8), un-differenced as Basa's
  *  eq. (27): \<d_ab f\>_i = sum_j V_j f_j d_ab W_ij, the sum taking j = i

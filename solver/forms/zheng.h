@@ -15,7 +15,6 @@
  *  patch test's operators. The pair terms; the descriptors are in zheng.c.
  *  Included by solver/pair.h, after the pair's geometry. */
 
-
 /** The four Laplacian forms of Zheng, Ma & Shao (2018) (docs/theory.md
  *  section 7), all applied per velocity component. */
 enum vsph_pair_lap_form {
