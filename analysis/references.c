@@ -610,6 +610,18 @@ size_t vsph_references_cavity_umin(const double *t, const double *vel, size_t n,
   return m;
 }
 
+double vsph_references_ghia_rest(double Re) {
+  struct vsph_references_ghia g;
+  if (!vsph_references_ghia(Re, &g)) return NAN;
+  double s2 = 0.0;
+  size_t n = 0;
+  for (size_t q = 1; q + 1 < g.n; q++) { /* the walls' own points left out */
+    s2 += g.u[q] * g.u[q] + g.v[q] * g.v[q];
+    n += 2;
+  }
+  return sqrt(s2 / (double)n);
+}
+
 double vsph_references_cavity_point(
     const struct vsph_scene_cavity *cv, const struct vsph_references_ghia *g,
     int line, size_t q, const struct vsph_particles *p, size_t n_fluid,

@@ -165,6 +165,13 @@ struct vsph_references_ghia {
  *  @return 1 for Re = 100, 400 or 1000 (to 1e-9), else 0 (g untouched). */
 VSPH_API int vsph_references_ghia(double Re, struct vsph_references_ghia *g);
 
+/** @brief The distance of a fluid at rest from Ghia et al.'s profiles at
+ *  @p Re, as vsph_references_cavity_error measures a cavity's (the RMS of
+ *  their 15 + 15 interior centreline values, in units of U): the start of
+ *  every cavity run, the figure a claim weighs "approaches Ghia" against.
+ *  NaN where they have no table for @p Re. */
+VSPH_API double vsph_references_ghia_rest(double Re);
+
 /** @brief The fluid's velocity at @p x by the Shepard average with kernel
  *  @p k of smoothing length @p h: u = sum_i W_i u_i / sum_i W_i over the
  *  fluid particles (id < n_fluid), NaN where none is within reach. */

@@ -324,3 +324,10 @@ double vsph_series_slope_where(const double *x, const double *y, const int *ok,
   if (ns) *ns = m;
   return slope;
 }
+
+double vsph_series_log_between(double x, double a, double b) {
+  if (!(x > 0.0 && a > 0.0 && b > 0.0) || !isfinite(x) || !isfinite(a) ||
+      !isfinite(b) || a == b)
+    return NAN;
+  return fabs(log(x / a)) / fabs(log(b / a));
+}

@@ -195,4 +195,11 @@ VSPH_API int vsph_series_selfconv(const struct vsph_series_rung *rung,
 VSPH_API double vsph_series_slope_where(const double *x, const double *y,
                                         const int *ok, size_t n, size_t *ns);
 
+/** @brief Where @p x lies between @p a and @p b on a logarithmic scale:
+ *  |ln(x/a)| / |ln(b/a)|, 0 at a, 1 at b's distance from a (either side).
+ *  A claim's "differs" reads it as nearer a contrary law (b) than the
+ *  paper's (a) from 0.5 on: halfway in ratio, sqrt(a b). NaN where any of
+ *  the three is not positive and finite, or a = b. */
+VSPH_API double vsph_series_log_between(double x, double a, double b);
+
 #endif /* VSPH_ANALYSIS_SERIES_H */

@@ -658,6 +658,8 @@ static int cavity_claims(struct vsph_report *R,
   vsph_claim_num(v, "ek", vsph_report_channel_final(r1, "Ek"));
   vsph_claim_num(v, "ok", (double)r1->ok);
   vsph_claim_num(v, "t_stop", r1->t_unstable);
+  /* halfway from the fluid at rest (the run's start) to Ghia et al. */
+  vsph_claim_num(v, "rest_half", 0.5 * vsph_references_ghia_rest(1000.0));
   if (!st) st = vsph_report_doc_grade(R, "claims/channel.cavity_re1000", v);
   return st;
 }

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "../analysis/contact.h"
+#include "../analysis/series.h"
 #include "../common/consts.h"
 #include "../common/params.h"
 #include "../common/status.h"
@@ -217,6 +218,9 @@ struct cnum {
   double ustar[2][2], rms[2][2];  /* bimaterial: [zeta 1, 0][t] */
   double ustar_exact[2];          /* (27): physical eta; eta + eta_num */
   double ss_spread[2];            /* self-similarity: nu spread (%) */
+  double ss_lean[2]; /* its ratio's place, in logarithm, from 1 (the
+                        paper's law) to the profile times' ratio (a layer
+                        that does not spread as sqrt(t)) */
 };
 
 static void numbers(const struct cres *cr, const struct vsph_jobs *J,
@@ -255,6 +259,9 @@ static void numbers(const struct cres *cr, const struct vsph_jobs *J,
       hi = fmax(hi, r->nu_u[q]);
     }
     nb->ss_spread[k] = r->nt > 1 ? 100.0 * (hi - lo) / lo : (double)NAN;
+    nb->ss_lean[k] = r->nt > 1 ? vsph_series_log_between(
+                                     hi / lo, 1.0, r->t[r->nt - 1] / r->t[0])
+                               : (double)NAN;
   }
   /* two materials: paraffin (x < 0, -U0) | glycerol (x > 0, +U0) */
   const struct vsph_material *pa = mat("paraffin"), *gl = mat("glycerol");
@@ -791,6 +798,8 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
   vsph_claim_clear(v);
   vsph_claim_num(v, "ss0", nb->ss_spread[0]);
   vsph_claim_num(v, "ss1", nb->ss_spread[1]);
+  vsph_claim_num(v, "lean0", nb->ss_lean[0]);
+  vsph_claim_num(v, "lean1", nb->ss_lean[1]);
   if (!st) st = vsph_report_doc_grade(R, "claims/contact.self_similar", v);
   return st;
 }
@@ -804,6 +813,9 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb,
   vsph_claim_num(v, "e0", nb->eta_eff[0]);
   vsph_claim_num(v, "e05", nb->eta_eff[1]);
   vsph_claim_num(v, "rel", e1 / 2.3 - 1.0);
+  /* e1's place, in logarithm, from the physical eta to the uncorrected
+   * lattice's (zeta = 0) */
+  vsph_claim_num(v, "lean", vsph_series_log_between(e1, 2.3, nb->eta_eff[0]));
   int st = vsph_report_doc_grade(R, "claims/contact.zeta_one", v);
   /* U* = (e_R - e_L)/(e_R + e_L) with e = sqrt(rho eta) on each side
    * (U0 = 1, the sides at -1 and +1): the ratio a = e_R/e_L = (1 + U*)/

@@ -1727,6 +1727,22 @@ static void call_vsph_series_interp_cubic_1(void) {
   (void)vsph_series_interp_cubic(NULL, NULL, SIZE_MAX, NAN);
 }
 
+static void call_vsph_series_log_between_0(void) {
+  (void)vsph_series_log_between(0.0, 0.0, 0.0);
+}
+
+static void call_vsph_series_log_between_1(void) {
+  (void)vsph_series_log_between(NAN, -1.0, NAN);
+}
+
+static void call_vsph_references_ghia_rest_0(void) {
+  (void)vsph_references_ghia_rest(0.0);
+}
+
+static void call_vsph_references_ghia_rest_1(void) {
+  (void)vsph_references_ghia_rest(NAN);
+}
+
 static void call_vsph_series_order_0(void) {
   (void)vsph_series_order(0.0, 0.0, 0.0, 0.0);
 }
@@ -2597,6 +2613,10 @@ static const struct api_call CALLS[] = {
     {"vsph_series_cfl_pick", call_vsph_series_cfl_pick_1},
     {"vsph_series_interp_cubic", call_vsph_series_interp_cubic_0},
     {"vsph_series_interp_cubic", call_vsph_series_interp_cubic_1},
+    {"vsph_series_log_between", call_vsph_series_log_between_0},
+    {"vsph_series_log_between", call_vsph_series_log_between_1},
+    {"vsph_references_ghia_rest", call_vsph_references_ghia_rest_0},
+    {"vsph_references_ghia_rest", call_vsph_references_ghia_rest_1},
     {"vsph_series_order", call_vsph_series_order_0},
     {"vsph_series_order", call_vsph_series_order_1},
     {"vsph_series_selfconv", call_vsph_series_selfconv_0},

@@ -539,6 +539,86 @@ START_TEST(test_block_words_as_the_parts_wrote) {
 }
 END_TEST
 
+/* The four claims whose only other verdict was "partly" can say
+ * "differs" (reports/claims/: eta_linear, self_similar, zeta_one,
+ * cavity_re1000): each graded with its figures just inside and just past
+ * the rule "nearer a contrary law than the paper's" (the thresholds of
+ * their blocks: 0.45 and 0.25 for eta_linear, a lean of 0.5, half the
+ * fluid at rest's distance from Ghia), and inside it with the paper's own
+ * rule failing (partly). */
+START_TEST(test_partly_claims_can_differ) {
+  struct vsph_claim_vals v;
+  struct vsph_claim_row row;
+  const char *lin = vsph_text_get("claims/contact.eta_linear");
+  const double L[][4] = {/* r50, spread, rd, class */
+                         {0.01, 0.01, 0.01, VSPH_CLAIM_REPRODUCED},
+                         {-0.44, 0.24, -0.24, VSPH_CLAIM_PARTLY},
+                         {-0.46, 0.01, 0.01, VSPH_CLAIM_DIFFERS},
+                         {0.01, 0.26, 0.01, VSPH_CLAIM_DIFFERS},
+                         {0.01, 0.01, -0.26, VSPH_CLAIM_DIFFERS}};
+  for (size_t k = 0; k < 5; k++) {
+    vsph_claim_clear(&v);
+    vsph_claim_num(&v, "r50", L[k][0]);
+    vsph_claim_num(&v, "spread", L[k][1]);
+    vsph_claim_num(&v, "rd", L[k][2]);
+    ck_assert_int_eq(grade(lin, &v, &row), VSPH_OK);
+    ck_assert_msg(vsph_claim_class(row.verdict) == (int)L[k][3],
+                  "eta_linear %zu: %s", k, row.verdict);
+  }
+  const char *ss = vsph_text_get("claims/contact.self_similar");
+  const double S[][5] = {/* ss0, ss1, lean0, lean1, class */
+                         {1, 2, 0.01, 0.01, VSPH_CLAIM_REPRODUCED},
+                         {60, 2, 0.49, 0.01, VSPH_CLAIM_PARTLY},
+                         {80, 2, 0.51, 0.01, VSPH_CLAIM_DIFFERS},
+                         {1, 200, 0.01, 0.51, VSPH_CLAIM_DIFFERS}};
+  for (size_t k = 0; k < 4; k++) {
+    vsph_claim_clear(&v);
+    vsph_claim_num(&v, "ss0", S[k][0]);
+    vsph_claim_num(&v, "ss1", S[k][1]);
+    vsph_claim_num(&v, "lean0", S[k][2]);
+    vsph_claim_num(&v, "lean1", S[k][3]);
+    ck_assert_int_eq(grade(ss, &v, &row), VSPH_OK);
+    ck_assert_msg(vsph_claim_class(row.verdict) == (int)S[k][4],
+                  "self_similar %zu: %s", k, row.verdict);
+  }
+  const char *z1 = vsph_text_get("claims/contact.zeta_one");
+  const double Z[][3] = {/* e1, lean, class */
+                         {2.4, 0.02, VSPH_CLAIM_REPRODUCED},
+                         {3.18, 0.49, VSPH_CLAIM_PARTLY},
+                         {8.0, 0.51, VSPH_CLAIM_DIFFERS}};
+  for (size_t k = 0; k < 3; k++) {
+    vsph_claim_clear(&v);
+    vsph_claim_num(&v, "e1", Z[k][0]);
+    vsph_claim_num(&v, "e0", 23.4);
+    vsph_claim_num(&v, "e05", 13.3);
+    vsph_claim_num(&v, "rel", Z[k][0] / 2.3 - 1.0);
+    vsph_claim_num(&v, "lean", Z[k][1]);
+    ck_assert_int_eq(grade(z1, &v, &row), VSPH_OK);
+    ck_assert_msg(vsph_claim_class(row.verdict) == (int)Z[k][2],
+                  "zeta_one %zu: %s", k, row.verdict);
+  }
+  const char *cv = vsph_text_get("claims/channel.cavity_re1000");
+  const double C[][3] = {/* e1, ok, class */
+                         {0.04, 1, VSPH_CLAIM_PARTLY},
+                         {0.16, 1, VSPH_CLAIM_PARTLY},
+                         {0.18, 1, VSPH_CLAIM_DIFFERS},
+                         {0.04, 0, VSPH_CLAIM_DIFFERS}};
+  for (size_t k = 0; k < 4; k++) {
+    vsph_claim_clear(&v);
+    vsph_claim_str(&v, "cav_res", "x");
+    vsph_claim_num(&v, "e1", C[k][0]);
+    vsph_claim_num(&v, "m1", 0.2);
+    vsph_claim_num(&v, "ek", 0.03);
+    vsph_claim_num(&v, "ok", C[k][1]);
+    vsph_claim_num(&v, "t_stop", 12.0);
+    vsph_claim_num(&v, "rest_half", 0.17); /* half of 0.3412 */
+    ck_assert_int_eq(grade(cv, &v, &row), VSPH_OK);
+    ck_assert_msg(vsph_claim_class(row.verdict) == (int)C[k][2],
+                  "cavity_re1000 %zu: %s", k, row.verdict);
+  }
+}
+END_TEST
+
 /* Every claim block compiled in from reports/claims/ is well formed (each
  * field, test and expression; its placeholders' forms), a test of make
  * check it names is there, and there are some. */
@@ -582,6 +662,7 @@ Suite *vsph_claim_suite(void) {
   tcase_add_test(tc, test_word_lines);
   tcase_add_test(tc, test_blocks_well_formed);
   tcase_add_test(tc, test_block_words_as_the_parts_wrote);
+  tcase_add_test(tc, test_partly_claims_can_differ);
   suite_add_tcase(s, tc);
   return s;
 }

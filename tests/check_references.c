@@ -12,6 +12,8 @@
 #include "../common/consts.h"
 #include "../common/params.h"
 #include "../common/status.h"
+#include "../kernels/kernel.h"
+#include "../solver/particles.h"
 #include "../solver/scene.h"
 #include "check_suites.h"
 
@@ -361,6 +363,42 @@ END_TEST
  * -0.38289 (their Table I, y = 0.1719), so u rows {0.1, -0.30, 0.2} give
  * |-0.30 + 0.38289| = 0.08289 and {-0.5, 0, 1} give 0.11711; the v rows
  * (-0.9) are not read. A torn block or an Re without a table: 0 times. */
+/* A cavity at rest (its start) is as far from Ghia et al. as
+ * vsph_references_ghia_rest says: vsph_references_cavity_error on a
+ * 40 x 40 lattice of particles at rest in the Re = 1000 cavity (the
+ * Shepard average of zero velocities is zero: each point's error is
+ * their value) against the RMS of their table; the two sum in a different
+ * order, so to a few roundings (1e-14). No table at Re 50: NaN. */
+START_TEST(test_ghia_rest_is_a_cavity_at_rest) {
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_int_eq(vsph_params_set(prm, "Scene:Re", "1000"), 0);
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_cavity_type, prm), 0);
+  vsph_params_free(prm);
+  const size_t N = 40;
+  const double L = sc.u.cavity.L, dx = L / (double)N;
+  struct vsph_particles *p = vsph_particles_alloc(N * N, 2);
+  ck_assert_ptr_nonnull(p);
+  for (size_t a = 0; a < N; a++)
+    for (size_t b = 0; b < N; b++) {
+      const size_t i = a * N + b;
+      p->pos[0][i] = (a + 0.5) * dx;
+      p->pos[1][i] = (b + 0.5) * dx;
+      p->vel[0][i] = p->vel[1][i] = 0.0;
+      p->id[i] = i;
+    }
+  p->n = N * N;
+  struct vsph_references_profile_err e;
+  vsph_references_cavity_error(&sc, p, p->n, vsph_kernel_find("quintic"), dx,
+                               &e);
+  vsph_particles_free(p);
+  const double rest = vsph_references_ghia_rest(1000.0);
+  ck_assert(rest > 0.1); /* their Re 1000 profiles reach 0.4 U and more */
+  ck_assert_double_eq_tol(e.rms, rest, 1e-14);
+  ck_assert(isnan(vsph_references_ghia_rest(50.0)));
+}
+END_TEST
+
 START_TEST(test_cavity_umin) {
   const double t[12] = {1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2};
   const double v[12] = {0.1,  -0.30, 0.2, -0.9, -0.9, -0.9,
@@ -467,6 +505,7 @@ Suite *vsph_references_suite(void) {
   tcase_add_test(tc, test_series_vs_mol);
   tcase_add_test(tc, test_energy_rate);
   tcase_add_test(tc, test_cavity_umin);
+  tcase_add_test(tc, test_ghia_rest_is_a_cavity_at_rest);
   tcase_add_test(tc, test_lighthill_initial);
   tcase_add_test(tc, test_wave_mech);
   tcase_add_test(tc, test_norm_closed_form);

@@ -251,6 +251,33 @@ END_TEST
  * the ratio 2 (the closed form, rounding: 1e-12) and p = 1.3 at the
  * unequal ratios 2.5 and 1.6 (the bisection's root, to 1e-9); differences
  * that grow by the ratio give -1; a zero difference or a ratio of 1, NaN. */
+/* Where x lies between a and b in logarithm, worked by hand: 10 between 1
+ * and 100 is halfway (ln 10 / ln 100), and so is 0.1 (the other side); a
+ * is 0 and b is 1; 1000 is 1.5; a and b may be either way round; a
+ * figure not positive and finite, or a = b, gives NaN. Tolerance: one
+ * rounding of two logarithms and a quotient, a few 1e-16. */
+START_TEST(test_log_between) {
+  ck_assert_double_eq_tol(vsph_series_log_between(10.0, 1.0, 100.0), 0.5,
+                          1e-15);
+  ck_assert_double_eq_tol(vsph_series_log_between(0.1, 1.0, 100.0), 0.5, 1e-15);
+  ck_assert_double_eq_tol(vsph_series_log_between(1000.0, 1.0, 100.0), 1.5,
+                          1e-15);
+  ck_assert_double_eq_tol(vsph_series_log_between(2.3 * 3.0, 2.3, 2.3 * 9.0),
+                          0.5, 1e-15);
+  ck_assert_double_eq(vsph_series_log_between(2.3, 2.3, 23.0), 0.0);
+  ck_assert_double_eq_tol(vsph_series_log_between(23.0, 2.3, 23.0), 1.0, 1e-15);
+  ck_assert_double_eq_tol(vsph_series_log_between(10.0, 100.0, 1.0), 0.5,
+                          1e-15);
+  const double bad[][3] = {{0.0, 1.0, 2.0},      {1.0, 0.0, 2.0},
+                           {1.0, 1.0, -2.0},     {NAN, 1.0, 2.0},
+                           {1.0, INFINITY, 2.0}, {1.0, 2.0, 2.0}};
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++)
+    ck_assert_msg(
+        isnan(vsph_series_log_between(bad[k][0], bad[k][1], bad[k][2])),
+        "case %zu", k);
+}
+END_TEST
+
 START_TEST(test_order_from_two_differences) {
   const double C = 0.37;
   for (int p = 1; p <= 2; p++) {
@@ -382,6 +409,7 @@ Suite *vsph_series_suite(void) {
   tcase_add_test(tc, test_cfl_rule);
   tcase_add_test(tc, test_interp_cubic);
   tcase_add_test(tc, test_order_from_two_differences);
+  tcase_add_test(tc, test_log_between);
   tcase_add_test(tc, test_selfconv_recovers_order_and_remainder);
   suite_add_tcase(s, tc);
   return s;
