@@ -214,6 +214,21 @@ VSPH_API size_t vsph_references_cavity_umin(const double *t, const double *vel,
                                             double *t_out, double *err,
                                             size_t cap);
 
+/** @brief The RMS distance of a cavity's centrelines from Ghia et al.'s
+ *  at @p Re (their interior points, 15 + 15, as
+ *  vsph_references_cavity_error takes them), per output time, from a
+ *  centreline table as vsph_references_cavity_umin reads it (@p npts = 17
+ *  points of u(y), then of v(x), at their positions, which their tables
+ *  share at every Re): a run's distance from another Re's flow than its
+ *  own. In the table's velocity units. The times into @p t_out and the
+ *  distances into @p err (at most @p cap). @return the number of times, 0
+ *  when Ghia et al. have no table for @p Re, @p npts is not theirs or a
+ *  time's block is not whole. */
+VSPH_API size_t vsph_references_cavity_rms(const double *t, const double *vel,
+                                           size_t n, size_t npts, double Re,
+                                           double *t_out, double *err,
+                                           size_t cap);
+
 /** @brief The exact decay of a small standing (or progressive) gravity
  *  wave of wavenumber @p k on water of depth @p H, kinematic viscosity
  *  @p nu, gravity @p g, by linear viscous theory (Lamb 1932, art. 349):

@@ -249,19 +249,24 @@ static void numbers(const struct cres *cr, const struct vsph_jobs *J,
         1e3 * vsph_contact_eta_model(coef(&cr->r[C_W]), r->rho0, r->c0, r->D0,
                                      nb->flat_w, lead->eta, zeta[k], nb->fit05);
   }
-  /* self-similarity: the spread of nu over the profile times */
+  /* self-similarity: the spread of nu over the profile times, the fits
+   * that failed (NaN) left out, with the times of those that did not; not
+   * measured with fewer than two */
   const int S[2] = {C_W, C_Z1L};
   for (int k = 0; k < 2; k++) {
     const struct vsph_contact_shear *r = &cr->r[S[k]];
-    double lo = INFINITY, hi = -INFINITY;
+    double lo = INFINITY, hi = -INFINITY, t0 = NAN, t1 = NAN;
+    size_t good = 0;
     for (size_t q = 0; q < r->nt; q++) {
+      if (!isfinite(r->nu_u[q]) || !(r->nu_u[q] > 0.0)) continue;
       lo = fmin(lo, r->nu_u[q]);
       hi = fmax(hi, r->nu_u[q]);
+      if (!good++) t0 = r->t[q];
+      t1 = r->t[q];
     }
-    nb->ss_spread[k] = r->nt > 1 ? 100.0 * (hi - lo) / lo : (double)NAN;
-    nb->ss_lean[k] = r->nt > 1 ? vsph_series_log_between(
-                                     hi / lo, 1.0, r->t[r->nt - 1] / r->t[0])
-                               : (double)NAN;
+    nb->ss_spread[k] = good > 1 ? 100.0 * (hi - lo) / lo : (double)NAN;
+    nb->ss_lean[k] =
+        good > 1 ? vsph_series_log_between(hi / lo, 1.0, t1 / t0) : (double)NAN;
   }
   /* two materials: paraffin (x < 0, -U0) | glycerol (x > 0, +U0) */
   const struct vsph_material *pa = mat("paraffin"), *gl = mat("glycerol");
@@ -772,14 +777,32 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
   vsph_claim_num(v, "ewl", w / nb->lead_w - 1.0);
   vsph_claim_num(v, "ebl", b / nb->lead_b - 1.0);
   int st = vsph_report_doc_grade(R, "claims/contact.eta_num", v);
-  double spread = 0;
+  /* each material's departure from lead's eta_num/(Z D0), and its place in
+   * logarithm from lead's (0) to where eta_num independent of Z would put
+   * it (1: Z_lead/Z); a material not measured leaves both unmeasured */
+  double spread = 0, lean_m = 0;
   static const int MAT[3] = {C_WATER, C_AL, C_TU};
-  for (int k = 0; k < 3; k++)
-    spread = fmax(spread, fabs(coef(&cr->r[MAT[k]]) / w - 1.0));
+  const double z_lead = cr->r[C_W].rho0 * cr->r[C_W].c0;
+  for (int k = 0; k < 3; k++) {
+    const struct vsph_contact_shear *r = &cr->r[MAT[k]];
+    const double q = coef(r) / w;
+    const double lm =
+        vsph_series_log_between(q, 1.0, z_lead / (r->rho0 * r->c0));
+    spread =
+        isnan(q) || isnan(spread) ? (double)NAN : fmax(spread, fabs(q - 1.0));
+    lean_m = isnan(lm) || isnan(lean_m) ? (double)NAN : fmax(lean_m, lm);
+  }
+  const double q50 = coef(&cr->r[C_W50]) / w, q20 = coef(&cr->r[C_W20]) / w;
   vsph_claim_clear(v);
-  vsph_claim_num(v, "r50", coef(&cr->r[C_W50]) / w - 1.0);
+  vsph_claim_num(v, "r50", q50 - 1.0);
   vsph_claim_num(v, "spread", spread);
-  vsph_claim_num(v, "rd", coef(&cr->r[C_W20]) / w - 1.0);
+  vsph_claim_num(v, "rd", q20 - 1.0);
+  /* the places in logarithm toward eta_num proportional to U0 (a tenth at
+   * 50 against 500 m/s) and independent of D0 (a half at 20 against 10
+   * nm), and toward independence of Z (above) */
+  vsph_claim_num(v, "lean_u", vsph_series_log_between(q50, 1.0, 0.1));
+  vsph_claim_num(v, "lean_d", vsph_series_log_between(q20, 1.0, 0.5));
+  vsph_claim_num(v, "lean_m", lean_m);
   if (!st) st = vsph_report_doc_grade(R, "claims/contact.eta_linear", v);
   /* measured over (37) from the smallest alpha to the largest, and its
    * largest departure (whether it grows at every step: the block's tests) */

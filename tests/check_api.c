@@ -1735,6 +1735,15 @@ static void call_vsph_series_log_between_1(void) {
   (void)vsph_series_log_between(NAN, -1.0, NAN);
 }
 
+static void call_vsph_references_cavity_rms_0(void) {
+  (void)vsph_references_cavity_rms(NULL, NULL, 0, 0, 0.0, NULL, NULL, 0);
+}
+
+static void call_vsph_references_cavity_rms_1(void) {
+  (void)vsph_references_cavity_rms(NULL, NULL, 34, 17, 1000.0, NULL, NULL,
+                                   SIZE_MAX);
+}
+
 static void call_vsph_references_ghia_rest_0(void) {
   (void)vsph_references_ghia_rest(0.0);
 }
@@ -2615,6 +2624,8 @@ static const struct api_call CALLS[] = {
     {"vsph_series_interp_cubic", call_vsph_series_interp_cubic_1},
     {"vsph_series_log_between", call_vsph_series_log_between_0},
     {"vsph_series_log_between", call_vsph_series_log_between_1},
+    {"vsph_references_cavity_rms", call_vsph_references_cavity_rms_0},
+    {"vsph_references_cavity_rms", call_vsph_references_cavity_rms_1},
     {"vsph_references_ghia_rest", call_vsph_references_ghia_rest_0},
     {"vsph_references_ghia_rest", call_vsph_references_ghia_rest_1},
     {"vsph_series_order", call_vsph_series_order_0},

@@ -393,9 +393,47 @@ START_TEST(test_ghia_rest_is_a_cavity_at_rest) {
                                &e);
   vsph_particles_free(p);
   const double rest = vsph_references_ghia_rest(1000.0);
-  ck_assert(rest > 0.1); /* their Re 1000 profiles reach 0.4 U and more */
+  /* the RMS of their 30 interior Re 1000 values, summed by hand from the
+   * tables (Python, 9 digits): 0.341198916 */
+  ck_assert_double_eq_tol(rest, 0.341198916, 1e-9);
   ck_assert_double_eq_tol(e.rms, rest, 1e-14);
   ck_assert(isnan(vsph_references_ghia_rest(50.0)));
+}
+END_TEST
+
+/* A centreline table holding Ghia et al.'s own Re 400 values at two
+ * times: its distance from their Re 400 is 0, from their Re 1000 0.105013915
+ * and from their Re 100 0.111641232, the RMS of the tables' difference, by
+ * hand (Python over the printed tables, 9 digits); a torn block, another
+ * point count or an Re without a table gives 0 times. */
+START_TEST(test_cavity_rms_between_ghia_tables) {
+  struct vsph_references_ghia g;
+  ck_assert(vsph_references_ghia(400.0, &g));
+  double t[68], vel[68], to[2], e[2];
+  for (size_t b = 0; b < 2; b++)
+    for (size_t q = 0; q < 17; q++) {
+      t[34 * b + q] = t[34 * b + 17 + q] = (double)b;
+      vel[34 * b + q] = g.u[q];
+      vel[34 * b + 17 + q] = g.v[q];
+    }
+  ck_assert_uint_eq(vsph_references_cavity_rms(t, vel, 68, 17, 400.0, to, e, 2),
+                    2);
+  ck_assert_double_eq(e[0], 0.0);
+  ck_assert_double_eq(to[1], 1.0);
+  ck_assert_uint_eq(
+      vsph_references_cavity_rms(t, vel, 68, 17, 1000.0, to, e, 2), 2);
+  ck_assert_double_eq_tol(e[0], 0.105013915, 1e-9);
+  ck_assert_double_eq_tol(e[1], 0.105013915, 1e-9);
+  ck_assert_uint_eq(vsph_references_cavity_rms(t, vel, 68, 17, 100.0, to, e, 1),
+                    1);
+  ck_assert_double_eq_tol(e[0], 0.111641232, 1e-9);
+  t[40] = 7.0; /* a torn second block */
+  ck_assert_uint_eq(vsph_references_cavity_rms(t, vel, 68, 17, 400.0, to, e, 2),
+                    0);
+  ck_assert_uint_eq(vsph_references_cavity_rms(t, vel, 64, 16, 400.0, to, e, 2),
+                    0);
+  ck_assert_uint_eq(vsph_references_cavity_rms(t, vel, 68, 17, 50.0, to, e, 2),
+                    0);
 }
 END_TEST
 
@@ -506,6 +544,7 @@ Suite *vsph_references_suite(void) {
   tcase_add_test(tc, test_energy_rate);
   tcase_add_test(tc, test_cavity_umin);
   tcase_add_test(tc, test_ghia_rest_is_a_cavity_at_rest);
+  tcase_add_test(tc, test_cavity_rms_between_ghia_tables);
   tcase_add_test(tc, test_lighthill_initial);
   tcase_add_test(tc, test_wave_mech);
   tcase_add_test(tc, test_norm_closed_form);
