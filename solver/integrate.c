@@ -546,9 +546,15 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   k[2 * d + 1] = p->de; /* the gas law's energy (nf says whether) */
   /* y0, the state the step starts from, is also what a stopped step puts
    * back (put_back) */
+#pragma omp parallel
   for (int f = 0; f < nf; f++) {
-    memcpy(s->y0[f], y[f], n * sizeof(double));
-    memset(s->ks[f], 0, n * sizeof(double));
+    double *const y0f = s->y0[f], *const ksf = s->ks[f];
+    const double *const yf = y[f];
+#pragma omp for schedule(static) nowait
+    for (size_t i = 0; i < n; i++) {
+      y0f[i] = yf[i];
+      ksf[i] = 0.0;
+    }
   }
   static const double a[4] = {0.0, 0.5, 0.5, 1.0}, w[4] = {1, 2, 2, 1};
   size_t nint = 0;

@@ -1,9 +1,13 @@
 /* Copyright (C) 2026 the vsph developers.
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #include <math.h>
+#include <omp.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "../common/consts.h"
+#include "../common/status.h"
 #include "../solver/cells.h"
 #include "../solver/lattice.h"
 #include "../solver/particles.h"
@@ -177,6 +181,59 @@ START_TEST(test_cells_bad_input_refused) {
 }
 END_TEST
 
+/* The build's refusal names the first particle (by index) whose position
+ * is not finite, whatever the threads: three NaNs, two in the first
+ * thread's share and one in the second's, on 1 and 2 threads; and the
+ * same particles sort alike on both (the keys are computed in parallel,
+ * counted in order). */
+static char last_msg[256];
+static void keep_msg(int status, const char *file, int line, const char *msg) {
+  (void)status, (void)file, (void)line;
+  snprintf(last_msg, sizeof last_msg, "%s", msg);
+}
+START_TEST(test_cells_first_bad_particle_named) {
+  const size_t n = 100000;
+  struct vsph_particles *p = vsph_particles_alloc(n, 2);
+  ck_assert_ptr_nonnull(p);
+  p->n = n;
+  for (size_t i = 0; i < n; i++) {
+    p->pos[0][i] = (double)(i % 316) * 0.01;
+    p->pos[1][i] = (double)(i / 316) * 0.01;
+    p->id[i] = i + 1000;
+  }
+  struct vsph_cells *c = vsph_cells_alloc();
+  size_t order[2][64];
+  for (int thr = 1; thr <= 2; thr++) {
+    omp_set_num_threads(thr);
+    struct vsph_particles *q = vsph_particles_alloc(n, 2);
+    q->n = n;
+    for (size_t i = 0; i < n; i++) {
+      q->pos[0][i] = p->pos[0][n - 1 - i];
+      q->pos[1][i] = p->pos[1][n - 1 - i];
+      q->id[i] = p->id[n - 1 - i];
+    }
+    ck_assert_int_eq(vsph_cells_build(c, q, 0.03), 0);
+    for (size_t k = 0; k < 64; k++) order[thr - 1][k] = q->id[k * 1531];
+    vsph_particles_free(q);
+  }
+  for (size_t k = 0; k < 64; k++) ck_assert_uint_eq(order[0][k], order[1][k]);
+  p->pos[1][10] = NAN;
+  p->pos[1][3] = INFINITY;
+  p->pos[1][70000] = NAN;
+  vsph_status_handler_fn *old = vsph_status_set_handler(keep_msg);
+  for (int thr = 1; thr <= 2; thr++) {
+    omp_set_num_threads(thr);
+    last_msg[0] = '\0';
+    ck_assert_int_eq(vsph_cells_build(c, p, 0.03), VSPH_EINVAL);
+    ck_assert_msg(strstr(last_msg, "particle 1003 has a non-finite position"),
+                  "%d threads: %s", thr, last_msg);
+  }
+  vsph_status_set_handler(old);
+  vsph_cells_free(c);
+  vsph_particles_free(p);
+}
+END_TEST
+
 Suite *vsph_cells_suite(void) {
   Suite *s = suite_create("cells");
   TCase *tc = tcase_create("core");
@@ -185,6 +242,7 @@ Suite *vsph_cells_suite(void) {
   tcase_add_test(tc, test_disc_cartesian);
   tcase_add_test(tc, test_cells_vs_direct);
   tcase_add_test(tc, test_cells_bad_input_refused);
+  tcase_add_test(tc, test_cells_first_bad_particle_named);
   suite_add_tcase(s, tc);
   return s;
 }
