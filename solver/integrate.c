@@ -163,12 +163,14 @@ void vsph_integrate_free(struct vsph_integrate *s) {
 
 static double max_speed(const struct vsph_integrate *s) {
   const struct vsph_particles *p = s->p;
-  double v2 = 0.0;
-  for (size_t i = 0; i < p->n; i++) {
-    if (p->id[i] >= s->n_fluid) continue;
+  const size_t n = p->n, nf = s->n_fluid;
+  double v2 = 0.0; /* a max, exact in any order (a NaN never wins) */
+#pragma omp parallel for schedule(static) reduction(max : v2)
+  for (size_t i = 0; i < n; i++) {
+    if (p->id[i] >= nf) continue;
     double u2 = 0.0;
     for (int k = 0; k < p->dim; k++) u2 += p->vel[k][i] * p->vel[k][i];
-    v2 = fmax(v2, u2);
+    v2 = u2 > v2 ? u2 : v2;
   }
   return sqrt(v2);
 }
@@ -297,7 +299,10 @@ static int prepare(struct vsph_integrate *s, double skin) {
       return st;
   }
   if ((st = vsph_cells_build(s->cells, s->p, H + skin))) return st;
-  for (size_t i = 0; i < s->p->n; i++) s->where[s->p->id[i]] = i;
+  const size_t n = s->p->n, *const id = s->p->id;
+  size_t *const where = s->where;
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < n; i++) where[id[i]] = i; /* ids are distinct */
   return VSPH_OK;
 }
 
