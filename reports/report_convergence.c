@@ -119,9 +119,14 @@ static int scene(struct vsph_report *R, int sc) {
     if (!st) st = vsph_plot_add(&pl, files[f], "1:6", lab, style);
     int any = 0; /* unstable runs hollow */
     for (int k = 0; k < VSPH_REPORT_LADDER; k++) any |= !lr.ok[f][k];
+    char hover[160];
+    snprintf(hover, sizeof hover,
+             "%s: error against the reference, run stopped as unstable (up "
+             "to the stop)",
+             vsph_viscous_label(f));
     if (!st && any)
       st = vsph_report_runs_hollow(&pl, files[f], "1:($5==0 ? $2 : 1/0)", f,
-                                   &said);
+                                   hover, &said);
   }
   if (!st)
     st = vsph_plot_add(&pl, files[0], "1:($1*0.1)", "first order",

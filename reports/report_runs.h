@@ -209,10 +209,13 @@ void vsph_report_runs_style(char *buf, size_t len, int f, const char *more);
  * @p pl: over each such point of its curve (@p using picks them: the
  * others 1/0) a white disc, then the open marker of its filled one in its
  * colour (gnuplot's pt 7 -> 6, 5 -> 4, ...; a form whose marker is open
- * already gets a black ring round it instead). Untitled; the first call
- * of a figure (*@p said 0) adds one key entry saying what hollow means. */
+ * already gets a black ring round it instead). Out of the key, titled
+ * @p hover in the SVG (vsph_plot_add_unkeyed: the curve's name and what
+ * stopped); the first call of a figure (*@p said 0) adds one key entry
+ * saying what hollow means. */
 int vsph_report_runs_hollow(struct vsph_plot *pl, const char *file,
-                            const char *using, int f, int *said);
+                            const char *using, int f, const char *hover,
+                            int *said);
 
 /* The self-convergence of a ladder's runs (coarse first, E_k, spacings
  * @p dx): vsph_series_selfconv on their energy series. */

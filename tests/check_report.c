@@ -503,7 +503,10 @@ END_TEST
  * over each stopped point of MGF's curve (filled disc, pt 7) a white disc,
  * then the open circle (pt 6) in MGF's colour; a form whose marker is
  * open already (the seventh, pt 6) is ringed in black instead; one key
- * entry says what hollow means, however many forms have stopped runs. */
+ * entry says what hollow means, however many forms have stopped runs.
+ * Out of the key, the overlays are titled in the SVG by the hover text
+ * given (what a pointer over them reads), none by gnuplot's
+ * "fig_h_plot_K". */
 START_TEST(test_hollow_stopped_runs) {
   char dir[] = "/tmp/vsph-hollow-XXXXXX", path[200];
   vsph_test_scratch(dir);
@@ -518,9 +521,11 @@ START_TEST(test_hollow_stopped_runs) {
   for (int f = 0; f < 7; f += 6) {
     vsph_report_runs_style(style, sizeof style, f, "");
     ck_assert_int_eq(vsph_plot_add(&pl, "s.csv", "1:2", "form", style), 0);
-    ck_assert_int_eq(
-        vsph_report_runs_hollow(&pl, "s.csv", "1:($3==0 ? $2 : 1/0)", f, &said),
-        0);
+    char hover[32];
+    snprintf(hover, sizeof hover, "form %d: stopped", f);
+    ck_assert_int_eq(vsph_report_runs_hollow(
+                         &pl, "s.csv", "1:($3==0 ? $2 : 1/0)", f, hover, &said),
+                     0);
   }
   ck_assert_int_eq(vsph_plot_write(&pl), 0);
   static char gp[1 << 15];
@@ -539,6 +544,19 @@ START_TEST(test_hollow_stopped_runs) {
   const char *key = strstr(gp, "hollow: stopped as unstable");
   ck_assert_ptr_nonnull(key);
   ck_assert_ptr_null(strstr(key + 1, "hollow: stopped as unstable"));
+  /* curves 2 and 3 (white disc, open circle) form 0's, 6 (black ring)
+   * form 6's; 1, 4 and 5 keyed */
+  static char svg[1 << 16];
+  snprintf(path, sizeof path, "%s/fig_h.svg", dir);
+  vsph_test_slurp(path, svg, sizeof svg);
+  static const char *const hover[] = {
+      "<g id=\"fig_h_plot_2\" ><title>form 0: stopped</title>",
+      "<g id=\"fig_h_plot_3\" ><title>form 0: stopped</title>",
+      "<g id=\"fig_h_plot_6\" ><title>form 6: stopped</title>"};
+  for (size_t k = 0; k < sizeof hover / sizeof hover[0]; k++)
+    ck_assert_msg(strstr(svg, hover[k]) != NULL, "no '%s' in %s", hover[k],
+                  path);
+  ck_assert_ptr_null(strstr(svg, "<title>fig_h_plot_"));
   vsph_test_rm_tree(dir);
 }
 END_TEST
