@@ -364,6 +364,19 @@ int vsph_report_runs_hollow(struct vsph_plot *pl, const char *file,
   return st;
 }
 
+int vsph_report_runs_hollow_pairs(struct vsph_plot *pl, const char *file,
+                                  int stable, int y, int f, const char *hover,
+                                  int *said) {
+  /* gnuplot evaluates the expression row by row in order: "was" holds
+   * the row before's stable ($0 counts rows from 0: the first has none) */
+  char using[128];
+  snprintf(using, sizeof using,
+           "1:(was = ($0 == 0 ? 1 : stable), stable = $%d, was == 0 || "
+           "stable == 0 ? $%d : 1/0)",
+           stable, y);
+  return vsph_report_runs_hollow(pl, file, using, f, hover, said);
+}
+
 /* The channel rows of the baseline: every formulation on Basa et al.'s
  * Poiseuille (10 x 10, t* = 4.9) and Morris' Couette (16 rows to 0.25 s,
  * long enough a period for the two-pass forms), Basa's kernel. */

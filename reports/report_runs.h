@@ -217,6 +217,15 @@ int vsph_report_runs_hollow(struct vsph_plot *pl, const char *file,
                             const char *using, int f, const char *hover,
                             int *said);
 
+/* Formulation @p f's successive differences of file @p file (x in column
+ * 1, the difference in column @p y, rung k against rung k - 1 on row k,
+ * none on the first row) drawn hollow where either run of the pair
+ * stopped: its row's or the row before's stable (column @p stable, 0 or
+ * 1) is 0. As vsph_report_runs_hollow, which draws them. */
+int vsph_report_runs_hollow_pairs(struct vsph_plot *pl, const char *file,
+                                  int stable, int y, int f, const char *hover,
+                                  int *said);
+
 /* The self-convergence of a ladder's runs (coarse first, E_k, spacings
  * @p dx): vsph_series_selfconv on their energy series. */
 int vsph_report_runs_selfconv(const struct vsph_jobs_run run[],

@@ -561,6 +561,82 @@ START_TEST(test_hollow_stopped_runs) {
 }
 END_TEST
 
+/* The points drawn in SVG group @p id of @p svg (each marker's
+ * "translate(x,y)", up to the next curve's group), at most @p max into
+ * @p at; returns how many. */
+static size_t group_points(const char *svg, const char *id, char at[][40],
+                           size_t max) {
+  char open[96];
+  snprintf(open, sizeof open, "<g id=\"%s\" >", id);
+  const char *g = strstr(svg, open);
+  ck_assert_msg(g != NULL, "no group %s", id);
+  g += strlen(open);
+  const char *end = strstr(g, "<g id=\"");
+  size_t n = 0;
+  for (const char *u = strstr(g, "<use "); u && (!end || u < end);
+       u = strstr(u + 1, "<use ")) {
+    const char *t = strstr(u, "translate(");
+    ck_assert_ptr_nonnull(t);
+    if (n < max) snprintf(at[n], sizeof at[n], "%.*s", (int)strcspn(t, ")"), t);
+    n++;
+  }
+  return n;
+}
+
+/* A curve of successive differences (rung k against rung k - 1, on row
+ * k) is hollow where either run of the pair stopped (issue 45 point 5):
+ * with rung 2 of 0..4 stopped, the differences of rows 2 (against the
+ * stopped rung) and 3 (from it), the second and third of the curve's
+ * four, and no other; the error curve's hollow point alone at row 2; one
+ * key entry for both. */
+START_TEST(test_hollow_difference_pairs) {
+  char dir[] = "/tmp/vsph-hollow-XXXXXX", path[200];
+  vsph_test_scratch(dir);
+  ck_assert_int_eq(vsph_files_write(dir, "c.csv",
+                                    "dx,error,stable,difference\n"
+                                    "0.1,0.1,1,nan\n0.05,0.05,1,0.04\n"
+                                    "0.025,0.025,0,0.02\n0.0125,0.0125,1,0.01\n"
+                                    "0.00625,0.006,1,0.005\n"),
+                   0);
+  struct vsph_plot pl;
+  vsph_plot_init(&pl, dir, "fig_p", "pairs", "dx", "error");
+  pl.logx = pl.logy = 1;
+  char style[96];
+  int said = 0;
+  vsph_report_runs_style(style, sizeof style, 0, "");
+  ck_assert_int_eq(vsph_plot_add(&pl, "c.csv", "1:2", "error", style), 0);
+  vsph_report_runs_style(style, sizeof style, 0, " dt 2");
+  ck_assert_int_eq(vsph_plot_add(&pl, "c.csv", "1:4", "difference", style), 0);
+  ck_assert_int_eq(vsph_report_runs_hollow(&pl, "c.csv", "1:($3==0 ? $2 : 1/0)",
+                                           0, "error stopped", &said),
+                   0);
+  ck_assert_int_eq(vsph_report_runs_hollow_pairs(&pl, "c.csv", 3, 4, 0,
+                                                 "difference stopped", &said),
+                   0);
+  ck_assert_uint_eq(pl.n, 2 + 2 + 1 + 2); /* the key entry once */
+  ck_assert_int_eq(vsph_plot_write(&pl), 0);
+  static char svg[1 << 16];
+  snprintf(path, sizeof path, "%s/fig_p.svg", dir);
+  vsph_test_slurp(path, svg, sizeof svg);
+  char line[8][40], open[8][40], disc[8][40];
+  /* the difference curve: its four points, then its key sample */
+  ck_assert_uint_eq(group_points(svg, "fig_p_plot_2", line, 8), 5);
+  /* its hollow overlay (curves 6, white disc, and 7, open circle) */
+  ck_assert_uint_eq(group_points(svg, "fig_p_plot_6", disc, 8), 2);
+  ck_assert_uint_eq(group_points(svg, "fig_p_plot_7", open, 8), 2);
+  for (int k = 0; k < 2; k++) {
+    ck_assert_str_eq(disc[k], line[k + 1]);
+    ck_assert_str_eq(open[k], line[k + 1]);
+  }
+  /* the error curve's: row 2 only */
+  ck_assert_uint_eq(group_points(svg, "fig_p_plot_1", line, 8), 6);
+  ck_assert_uint_eq(group_points(svg, "fig_p_plot_4", open, 8), 1);
+  ck_assert_str_eq(open[0], line[2]);
+  ck_assert_ptr_nonnull(strstr(svg, "<title>difference stopped</title>"));
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
 /* The kinetic energy's peak over its start (section 12's still tank):
  * a series that rises to 50 times its start at t = 2.5 and falls again
  * gives 50 and 2.5 exactly (a ratio of two stored doubles, 1 ulp); a
@@ -614,6 +690,7 @@ Suite *vsph_report_suite(void) {
   tcase_add_test(tc, test_peak_ratio_and_time);
   tcase_add_test(tc, test_tensor_table_no_negative_zero);
   tcase_add_test(tc, test_hollow_stopped_runs);
+  tcase_add_test(tc, test_hollow_difference_pairs);
   tcase_add_test(tc, test_bench_fold);
   suite_add_tcase(s, tc);
   return s;
