@@ -19,16 +19,6 @@
 /* The x range of a ladder's figure (dx over the reference length: the
  * ladder's, not whole decades) and its ticks, at the ladder's
  * resolutions: gnuplot commands into @p buf. */
-/* A fitted order as the tables print it: through how many stable rungs,
- * or a dash where fewer than two were stable. */
-static void fitted(char *buf, size_t len, double order, size_t ns) {
-  if (ns >= 2)
-    snprintf(buf, len, "**%.2f** (fitted through the %zu stable rungs)", order,
-             ns);
-  else
-    snprintf(buf, len, "– (fewer than two stable rungs to fit)");
-}
-
 static void ladder_ticks(char *buf, size_t n,
                          const struct vsph_report_ladderdef *L) {
   size_t len =
@@ -142,7 +132,7 @@ static int scene(struct vsph_report *R, int sc) {
     else
       snprintf(span, sizeof span, "differences over the whole run");
     char fit[96];
-    fitted(fit, sizeof fit, order, ns);
+    vsph_report_runs_fitted(fit, sizeof fit, order, ns);
     fprintf(R->md, "| %s | order | %s | **%.2f** | **%.2f** | %s |\n",
             vsph_viscous_name(f), fit, sv->order_max, sv->order_rms, span);
     if ((st = vsph_csv_close(c, R->dir, files[f]))) break;
@@ -216,8 +206,8 @@ static int vortex_layouts(struct vsph_report *R) {
       const double o0 = vsph_series_slope_where(ly.dx, a0, ly.ok[l][f],
                                                 VSPH_REPORT_LADDER, &ns);
       char fit[96], fit0[96];
-      fitted(fit, sizeof fit, oe, ns);
-      fitted(fit0, sizeof fit0, o0, ns);
+      vsph_report_runs_fitted(fit, sizeof fit, oe, ns);
+      vsph_report_runs_fitted(fit0, sizeof fit0, o0, ns);
       fprintf(R->md,
               "| %s | %s | order | %s | **%.2f** (max), **%.2f** (RMS) | %s | "
               "%s |\n",

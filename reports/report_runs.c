@@ -364,6 +364,14 @@ int vsph_report_runs_hollow(struct vsph_plot *pl, const char *file,
   return st;
 }
 
+void vsph_report_runs_fitted(char *buf, size_t len, double order, size_t ns) {
+  if (ns >= 2)
+    snprintf(buf, len, "**%.2f** (fitted through the %zu stable rungs)", order,
+             ns);
+  else
+    snprintf(buf, len, "– (fewer than two stable rungs to fit)");
+}
+
 int vsph_report_runs_hollow_pairs(struct vsph_plot *pl, const char *file,
                                   int stable, int y, int f, const char *hover,
                                   int *said) {

@@ -217,6 +217,11 @@ int vsph_report_runs_hollow(struct vsph_plot *pl, const char *file,
                             const char *using, int f, const char *hover,
                             int *said);
 
+/* A fitted order (vsph_series_slope_where) as the tables print it: bold,
+ * through how many stable rungs (@p ns), or a dash where fewer than two
+ * were stable: never through a stopped run's point. */
+void vsph_report_runs_fitted(char *buf, size_t len, double order, size_t ns);
+
 /* Formulation @p f's successive differences of file @p file (x in column
  * 1, the difference in column @p y, rung k against rung k - 1 on row k,
  * none on the first row) drawn hollow where either run of the pair
