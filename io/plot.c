@@ -83,6 +83,18 @@ int vsph_plot_add(struct vsph_plot *pl, const char *file, const char *using,
   return VSPH_OK;
 }
 
+int vsph_plot_add_unkeyed(struct vsph_plot *pl, const char *file,
+                          const char *using, const char *hover,
+                          const char *style) {
+  if (!hover) VSPH_FAIL(VSPH_EINVAL, "vsph_plot_add_unkeyed: a NULL argument");
+  if (pl && strlen(hover) >= sizeof pl->s[0].hover)
+    VSPH_FAIL(VSPH_EINVAL, "figure %s: a curve's text is too long", pl->name);
+  const int st = vsph_plot_add(pl, file, using, "", style);
+  if (!st)
+    vsph_plot_plain(pl->s[pl->n - 1].hover, sizeof pl->s[0].hover, hover);
+  return st;
+}
+
 /* Run gnuplot on DIR/GP, its messages into DIR/NAME.log. */
 static int render(const char *dir, const char *gp, const char *name) {
   char cmd[1400];
@@ -106,19 +118,24 @@ static void head(FILE *f, const char *what, const char *name) {
   fprintf(f, "set linetype cycle %d\n", VSPH_PLOT_NSTYLES);
 }
 
-/* Open the loop over the three outputs: a W x H pixel PNG, the same as
- * SVG (scalable in a page), a PDF of W/100 x H/100 inches. */
-static void outputs_open(FILE *f, const char *name, int w, int h, int font) {
-  /* the SVG's title (its name, which gnuplot takes as an identifier: the
-   * file's name, other characters as '_'), not "Gnuplot"; its text two
-   * points larger, as the page draws it across its column (reports/html.c):
-   * the figure's words at the body's size */
-  char id[128];
-  snprintf(id, sizeof id, "%s", name);
+/* The SVG's name for figure @p name, which gnuplot takes as an
+ * identifier: the file's name, other characters as '_'. */
+static void svg_id(char *id, size_t n, const char *name) {
+  snprintf(id, n, "%s", name);
   for (char *c = id; *c; c++)
     if (!((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') ||
           (*c >= '0' && *c <= '9')))
       *c = '_';
+}
+
+/* Open the loop over the three outputs: a W x H pixel PNG, the same as
+ * SVG (scalable in a page), a PDF of W/100 x H/100 inches. */
+static void outputs_open(FILE *f, const char *name, int w, int h, int font) {
+  /* the SVG's title (its name, svg_id), not "Gnuplot"; its text two
+   * points larger, as the page draws it across its column (reports/html.c):
+   * the figure's words at the body's size */
+  char id[128];
+  svg_id(id, sizeof id, name);
   fprintf(f,
           "do for [fmt in \"png svg pdf\"] {\n"
           "  if (fmt eq \"png\") {\n"
@@ -267,6 +284,70 @@ static void log_ticks(FILE *f, char a, int fixed, int own_ticks, int rounding) {
   fprintf(f, "set %crange [lo:hi]\n", a);
 }
 
+/* @p text as XML character data into @p out (room for 5 bytes a byte of
+ * it): '&', '<' and '>' escaped. Returns the bytes written. */
+static size_t xml_text(char *out, const char *text) {
+  size_t k = 0;
+  for (const char *c = text; *c; c++) {
+    const char *e = *c == '&'   ? "&amp;"
+                    : *c == '<' ? "&lt;"
+                    : *c == '>' ? "&gt;"
+                                : NULL;
+    if (e) {
+      memcpy(out + k, e, strlen(e));
+      k += strlen(e);
+    } else
+      out[k++] = *c;
+  }
+  return k;
+}
+
+/* DIR/NAME.svg's groups of the curves out of the key titled by their
+ * hover text (vsph_plot_add_unkeyed): gnuplot titles the group of curve K
+ * (1, 2, ... in plot order) without a key title "ID_plot_K" (svg_id). */
+static int svg_hover(const struct vsph_plot *pl) {
+  size_t nh = 0;
+  for (size_t k = 0; k < pl->n; k++) nh += pl->s[k].hover[0] != '\0';
+  if (!nh) return VSPH_OK;
+  char path[1024], svg_name[160], id[128], want[200];
+  snprintf(path, sizeof path, "%s/%s.svg", pl->dir, pl->name);
+  snprintf(svg_name, sizeof svg_name, "%s.svg", pl->name);
+  svg_id(id, sizeof id, pl->name);
+  size_t len = 0;
+  char *svg = vsph_files_slurp(path, &len);
+  const size_t room = 5 * sizeof pl->s[0].hover + sizeof "<title></title>";
+  char *out = svg ? malloc(len + nh * room + 1) : NULL;
+  if (!out) {
+    free(svg);
+    VSPH_FAIL(VSPH_EIO, "cannot read %s to title its curves", path);
+  }
+  const char *in = svg;
+  char *o = out;
+  for (size_t k = 0; k < pl->n; k++) {
+    if (!pl->s[k].hover[0]) continue;
+    snprintf(want, sizeof want, "<title>%s_plot_%zu</title>", id, k + 1);
+    const char *at = strstr(in, want);
+    if (!at) {
+      free(svg);
+      free(out);
+      VSPH_FAIL(VSPH_EIO, "%s: no group of curve %zu to title", path, k + 1);
+    }
+    memcpy(o, in, (size_t)(at - in));
+    o += at - in;
+    memcpy(o, "<title>", 7);
+    o += 7;
+    o += xml_text(o, pl->s[k].hover);
+    memcpy(o, "</title>", 8);
+    o += 8;
+    in = at + strlen(want);
+  }
+  memcpy(o, in, len - (size_t)(in - svg) + 1); /* and its NUL */
+  const int st = vsph_files_write(pl->dir, svg_name, out);
+  free(svg);
+  free(out);
+  return st;
+}
+
 int vsph_plot_write(const struct vsph_plot *pl) {
   if (!pl) VSPH_FAIL(VSPH_EINVAL, "vsph_plot_write: a NULL argument");
   if (pl->n > VSPH_PLOT_MAXSERIES)
@@ -311,8 +392,15 @@ int vsph_plot_write(const struct vsph_plot *pl) {
   outputs_open(f, pl->name, 900, 600, 11);
   plot_cmd(f, pl);
   outputs_close(f);
-  const int st = vsph_files_close(f, pl->dir, gp);
-  return st ? st : render(pl->dir, gp, pl->name);
+  for (size_t k = 0; k < pl->n; k++)
+    if (pl->s[k].hover[0])
+      fprintf(f,
+              "# in %s.svg, curve %zu (out of the key) is titled \"%s\" "
+              "by vsph after gnuplot\n",
+              pl->name, k + 1, pl->s[k].hover);
+  int st = vsph_files_close(f, pl->dir, gp);
+  if (!st) st = render(pl->dir, gp, pl->name);
+  return st ? st : svg_hover(pl);
 }
 
 /* The finite values of column @p col (1-based, as gnuplot counts) of

@@ -33,6 +33,9 @@ struct vsph_plot_series {
   char using[128]; /*!< gnuplot using, e.g. "1:2" or "1:(abs($3))" */
   char title[128]; /*!< legend entry ("" for none), gnuplot enhanced text */
   char style[128]; /*!< "lines lw 2", "points pt 7", ... */
+  char hover[128]; /*!< a curve out of the key (title ""): what a pointer
+                        over it in the SVG shows (plain text), not
+                        gnuplot's "NAME_plot_K"; "" for that */
 };
 
 /** One figure. */
@@ -86,10 +89,22 @@ VSPH_API int vsph_plot_add(struct vsph_plot *pl, const char *file,
                            const char *using, const char *title,
                            const char *style);
 
+/** @brief Add a curve left out of the key (title "", as an overlay on
+ *  another curve's points) whose SVG group is titled @p hover, plain
+ *  text, for a pointer over it: gnuplot titles a curve's group in the SVG
+ *  by its key title and one without by "NAME_plot_K", so vsph_plot_write
+ *  sets @p hover in NAME.svg after gnuplot (running NAME.gp again by hand
+ *  leaves gnuplot's). @return as vsph_plot_add (@p hover too long:
+ *  VSPH_EINVAL). */
+VSPH_API int vsph_plot_add_unkeyed(struct vsph_plot *pl, const char *file,
+                                   const char *using, const char *hover,
+                                   const char *style);
+
 /** @brief Write DIR/NAME.gp and run gnuplot on it to make DIR/NAME.png,
- *  .svg and .pdf. @return VSPH_OK, VSPH_EINVAL (more than
- *  VSPH_PLOT_MAXSERIES curves), or VSPH_EIO (script not written, or
- *  gnuplot failed: its messages are in DIR/NAME.log). */
+ *  .svg and .pdf, then title the SVG's curves out of the key
+ *  (vsph_plot_add_unkeyed). @return VSPH_OK, VSPH_EINVAL (more than
+ *  VSPH_PLOT_MAXSERIES curves), or VSPH_EIO (script not written, gnuplot
+ *  failed: its messages are in DIR/NAME.log, or NAME.svg not retitled). */
 VSPH_API int vsph_plot_write(const struct vsph_plot *pl);
 
 /** One panel of a particle picture: a CSV of particles and its title. */

@@ -19,16 +19,6 @@
 /* The x range of a ladder's figure (dx over the reference length: the
  * ladder's, not whole decades) and its ticks, at the ladder's
  * resolutions: gnuplot commands into @p buf. */
-/* A fitted order as the tables print it: through how many stable rungs,
- * or a dash where fewer than two were stable. */
-static void fitted(char *buf, size_t len, double order, size_t ns) {
-  if (ns >= 2)
-    snprintf(buf, len, "**%.2f** (fitted through the %zu stable rungs)", order,
-             ns);
-  else
-    snprintf(buf, len, "– (fewer than two stable rungs to fit)");
-}
-
 static void ladder_ticks(char *buf, size_t n,
                          const struct vsph_report_ladderdef *L) {
   size_t len =
@@ -38,6 +28,44 @@ static void ladder_ticks(char *buf, size_t n,
     len += (size_t)snprintf(buf + len, n - len, "%s'1/%zu' %.6g", k ? ", " : "",
                             L->res[k], 1.0 / L->res[k]);
   if (len < n) snprintf(buf + len, n - len, ")\n");
+}
+
+/* Formulation @p f's two curves of a ladder's figure from its CSV
+ * @p file (columns: dx, error, ..., stable (5), difference_max (6)): the
+ * error (solid) and the difference from the coarser rung (dashed), each
+ * point that a stopped run made drawn hollow (vsph_report_runs_hollow):
+ * an error where its run stopped, a difference where either run of the
+ * pair did (vsph_report_runs_hollow_pairs). */
+static int curves(struct vsph_plot *pl, const char *file,
+                  const struct vsph_report_ladder *lr, int f, int *said) {
+  const char *lf = vsph_viscous_label(f);
+  char style[96], lab[96], hover[160];
+  vsph_report_runs_style(style, sizeof style, f, "");
+  snprintf(lab, sizeof lab, "%s: error against the reference", lf);
+  int st = vsph_plot_add(pl, file, "1:2", lab, style);
+  snprintf(lab, sizeof lab, "%s: difference from the coarser rung (max)", lf);
+  vsph_report_runs_style(style, sizeof style, f, " dt 2");
+  if (!st) st = vsph_plot_add(pl, file, "1:6", lab, style);
+  int err = 0, diff = 0; /* a hollow point on each curve */
+  for (int k = 0; k < VSPH_REPORT_LADDER; k++) {
+    err |= !lr->ok[f][k];
+    if (k && isfinite(lr->self[f].dmax[k - 1]))
+      diff |= !lr->ok[f][k - 1] || !lr->ok[f][k];
+  }
+  snprintf(hover, sizeof hover,
+           "%s: error against the reference, run stopped as unstable (up to "
+           "the stop)",
+           lf);
+  if (!st && err)
+    st = vsph_report_runs_hollow(pl, file, "1:($5==0 ? $2 : 1/0)", f, hover,
+                                 said);
+  snprintf(hover, sizeof hover,
+           "%s: difference from the coarser rung, a run of the two stopped as "
+           "unstable (up to the first stop)",
+           lf);
+  if (!st && diff)
+    st = vsph_report_runs_hollow_pairs(pl, file, 5, 6, f, hover, said);
+  return st;
 }
 
 static int scene(struct vsph_report *R, int sc) {
@@ -104,24 +132,11 @@ static int scene(struct vsph_report *R, int sc) {
     else
       snprintf(span, sizeof span, "differences over the whole run");
     char fit[96];
-    fitted(fit, sizeof fit, order, ns);
+    vsph_report_runs_fitted(fit, sizeof fit, order, ns);
     fprintf(R->md, "| %s | order | %s | **%.2f** | **%.2f** | %s |\n",
             vsph_viscous_name(f), fit, sv->order_max, sv->order_rms, span);
     if ((st = vsph_csv_close(c, R->dir, files[f]))) break;
-    char style[96], lab[96];
-    vsph_report_runs_style(style, sizeof style, f, "");
-    snprintf(lab, sizeof lab, "%s: error against the reference",
-             vsph_viscous_label(f));
-    st = vsph_plot_add(&pl, files[f], "1:2", lab, style);
-    snprintf(lab, sizeof lab, "%s: difference from the coarser rung (max)",
-             vsph_viscous_label(f));
-    vsph_report_runs_style(style, sizeof style, f, " dt 2");
-    if (!st) st = vsph_plot_add(&pl, files[f], "1:6", lab, style);
-    int any = 0; /* unstable runs hollow */
-    for (int k = 0; k < VSPH_REPORT_LADDER; k++) any |= !lr.ok[f][k];
-    if (!st && any)
-      st = vsph_report_runs_hollow(&pl, files[f], "1:($5==0 ? $2 : 1/0)", f,
-                                   &said);
+    st = curves(&pl, files[f], &lr, f, &said);
   }
   if (!st)
     st = vsph_plot_add(&pl, files[0], "1:($1*0.1)", "first order",
@@ -191,8 +206,8 @@ static int vortex_layouts(struct vsph_report *R) {
       const double o0 = vsph_series_slope_where(ly.dx, a0, ly.ok[l][f],
                                                 VSPH_REPORT_LADDER, &ns);
       char fit[96], fit0[96];
-      fitted(fit, sizeof fit, oe, ns);
-      fitted(fit0, sizeof fit0, o0, ns);
+      vsph_report_runs_fitted(fit, sizeof fit, oe, ns);
+      vsph_report_runs_fitted(fit0, sizeof fit0, o0, ns);
       fprintf(R->md,
               "| %s | %s | order | %s | **%.2f** (max), **%.2f** (RMS) | %s | "
               "%s |\n",

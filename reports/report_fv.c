@@ -10,7 +10,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "../analysis/scaling.h"
 #include "../analysis/series.h"
 #include "../common/status.h"
 #include "../io/csv.h"
@@ -380,6 +379,7 @@ int vsph_report_fv_convergence(struct vsph_report *R,
   if (!st && !c) st = VSPH_EIO;
   for (int f = 0; f < NFORM && !st; f++) {
     double dx[VSPH_REPORT_LADDER], err[VSPH_REPORT_LADDER];
+    int ok[VSPH_REPORT_LADDER];
     for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
       struct vsph_jobs_spec rs = {
           L->scene, vsph_viscous_name(f), L->res[k], L->t_end, NULL, NULL};
@@ -389,6 +389,7 @@ int vsph_report_fv_convergence(struct vsph_report *R,
       vsph_report_fv_measures(R, &r, m);
       dx[k] = lr->dx[f][k];
       err[k] = m[0];
+      ok[k] = r.ok;
       const double ref_err = lr->err[f][k];
       char end[48];
       if (r.ok)
@@ -404,10 +405,13 @@ int vsph_report_fv_convergence(struct vsph_report *R,
                                  : "no");
       vsph_report_runs_free(&r);
     }
-    if (!st)
-      fprintf(R->md, "| %s | order | **%.2f** (fitted) | | | |\n",
-              vsph_viscous_name(f),
-              vsph_scaling_slope(dx, err, VSPH_REPORT_LADDER));
+    if (st) break;
+    size_t ns; /* through the stable rungs only, as the table above */
+    const double order =
+        vsph_series_slope_where(dx, err, ok, VSPH_REPORT_LADDER, &ns);
+    char fit[96];
+    vsph_report_runs_fitted(fit, sizeof fit, order, ns);
+    fprintf(R->md, "| %s | order | %s | | | |\n", vsph_viscous_name(f), fit);
   }
   if (c) {
     const int cs = vsph_csv_close(c, R->dir, "convergence_fv_square.csv");

@@ -341,19 +341,20 @@ void vsph_report_runs_style(char *buf, size_t len, int f, const char *more) {
 int vsph_report_runs_point(int f) { return vsph_plot_point((size_t)f); }
 
 int vsph_report_runs_hollow(struct vsph_plot *pl, const char *file,
-                            const char *using, int f, int *said) {
+                            const char *using, int f, const char *hover,
+                            int *said) {
   const int pt = vsph_report_runs_point(f);
   const int filled = pt >= 5 && pt <= 15 && pt % 2; /* 5, 7, ..., 15 */
   char style[96];
   int st = VSPH_OK;
   if (filled) {
     snprintf(style, sizeof style, "points pt %d ps 1.2 lc rgb 'white'", pt);
-    st = vsph_plot_add(pl, file, using, "", style);
+    st = vsph_plot_add_unkeyed(pl, file, using, hover, style);
     snprintf(style, sizeof style, "points pt %d lw 2 %s", pt - 1,
              vsph_report_runs_colour(f));
   } else
     snprintf(style, sizeof style, "points pt 6 ps 2.5 lw 2 lc rgb 'black'");
-  if (!st) st = vsph_plot_add(pl, file, using, "", style);
+  if (!st) st = vsph_plot_add_unkeyed(pl, file, using, hover, style);
   if (!st && said && !*said) {
     *said = 1;
     st = vsph_plot_add(pl, file, "1:(1/0)",
@@ -361,6 +362,27 @@ int vsph_report_runs_hollow(struct vsph_plot *pl, const char *file,
                        "points pt 6 lw 2 lc rgb 'black'");
   }
   return st;
+}
+
+void vsph_report_runs_fitted(char *buf, size_t len, double order, size_t ns) {
+  if (ns >= 2)
+    snprintf(buf, len, "**%.2f** (fitted through the %zu stable rungs)", order,
+             ns);
+  else
+    snprintf(buf, len, "– (fewer than two stable rungs to fit)");
+}
+
+int vsph_report_runs_hollow_pairs(struct vsph_plot *pl, const char *file,
+                                  int stable, int y, int f, const char *hover,
+                                  int *said) {
+  /* gnuplot evaluates the expression row by row in order: "was" holds
+   * the row before's stable ($0 counts rows from 0: the first has none) */
+  char using[128];
+  snprintf(using, sizeof using,
+           "1:(was = ($0 == 0 ? 1 : stable), stable = $%d, was == 0 || "
+           "stable == 0 ? $%d : 1/0)",
+           stable, y);
+  return vsph_report_runs_hollow(pl, file, using, f, hover, said);
 }
 
 /* The channel rows of the baseline: every formulation on Basa et al.'s

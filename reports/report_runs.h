@@ -209,10 +209,27 @@ void vsph_report_runs_style(char *buf, size_t len, int f, const char *more);
  * @p pl: over each such point of its curve (@p using picks them: the
  * others 1/0) a white disc, then the open marker of its filled one in its
  * colour (gnuplot's pt 7 -> 6, 5 -> 4, ...; a form whose marker is open
- * already gets a black ring round it instead). Untitled; the first call
- * of a figure (*@p said 0) adds one key entry saying what hollow means. */
+ * already gets a black ring round it instead). Out of the key, titled
+ * @p hover in the SVG (vsph_plot_add_unkeyed: the curve's name and what
+ * stopped); the first call of a figure (*@p said 0) adds one key entry
+ * saying what hollow means. */
 int vsph_report_runs_hollow(struct vsph_plot *pl, const char *file,
-                            const char *using, int f, int *said);
+                            const char *using, int f, const char *hover,
+                            int *said);
+
+/* A fitted order (vsph_series_slope_where) as the tables print it: bold,
+ * through how many stable rungs (@p ns), or a dash where fewer than two
+ * were stable: never through a stopped run's point. */
+void vsph_report_runs_fitted(char *buf, size_t len, double order, size_t ns);
+
+/* Formulation @p f's successive differences of file @p file (x in column
+ * 1, the difference in column @p y, rung k against rung k - 1 on row k,
+ * none on the first row) drawn hollow where either run of the pair
+ * stopped: its row's or the row before's stable (column @p stable, 0 or
+ * 1) is 0. As vsph_report_runs_hollow, which draws them. */
+int vsph_report_runs_hollow_pairs(struct vsph_plot *pl, const char *file,
+                                  int stable, int y, int f, const char *hover,
+                                  int *said);
 
 /* The self-convergence of a ladder's runs (coarse first, E_k, spacings
  * @p dx): vsph_series_selfconv on their energy series. */

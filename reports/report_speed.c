@@ -46,8 +46,13 @@ static int scene(struct vsph_report *R, int sc) {
     char style[96];
     vsph_report_runs_style(style, sizeof style, f, "");
     st = vsph_plot_add(&pl, file, "1:2", vsph_viscous_label(f), style);
+    char hover[96];
+    snprintf(hover, sizeof hover,
+             "%s: run stopped as unstable (up to the stop)",
+             vsph_viscous_label(f));
     if (!st && any)
-      st = vsph_report_runs_hollow(&pl, file, "1:($6==0 ? $2 : 1/0)", f, &said);
+      st = vsph_report_runs_hollow(&pl, file, "1:($6==0 ? $2 : 1/0)", f, hover,
+                                   &said);
   }
   if (st) return st;
   vsph_text_set(&R->tv, "title", "%s", title);

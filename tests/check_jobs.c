@@ -581,10 +581,11 @@ static size_t res_of(const char *name) {
  * quick), each sealed under the run's own key by this build's sources
  * (so it stands): E_k falls from 1 to 1 - 1/res against a constant
  * reference, P_visc(0) is -(1 + 1/res) against dE_k,ref/dt = -1; and
- * dir/reports/baseline.csv with the three scenes' rows. Returns the
- * entries made. */
+ * dir/reports/baseline.csv with the three scenes' rows. The run of
+ * folder @p stop (NULL: none) stopped as unstable at t = 1 (its run.json
+ * says so; its rows are the same). Returns the entries made. */
 static size_t free_surface_entries(const char *dir, const char *out, int full,
-                                   char *ar, size_t len) {
+                                   const char *stop, char *ar, size_t len) {
   char path[1200], text[600];
   snprintf(path, sizeof path, "%s/%s", dir, out);
   struct vsph_jobs jobs;
@@ -605,9 +606,15 @@ static size_t free_surface_entries(const char *dir, const char *out, int full,
     snprintf(path, sizeof path, "%s/runs/%s", ar, name);
     struct vsph_folder f;
     ck_assert_int_eq(vsph_folder_claim(&f, path, &vsph_folder_scene_run), 0);
-    snprintf(text, sizeof text,
-             "{\"scene\": \"%s\", \"status\": \"ok\", \"res\": %zu}\n",
-             j->scene, res);
+    if (stop && !strcmp(name, stop))
+      snprintf(text, sizeof text,
+               "{\"scene\": \"%s\", \"status\": \"unstable\", \"res\": "
+               "%zu, \"unstable_time\": 1, \"unstable_reason\": \"test\"}\n",
+               j->scene, res);
+    else
+      snprintf(text, sizeof text,
+               "{\"scene\": \"%s\", \"status\": \"ok\", \"res\": %zu}\n",
+               j->scene, res);
     ck_assert_int_eq(vsph_files_write(path, "run.json", text), 0);
     snprintf(text, sizeof text,
              "t,Ek,Ep,Ec,P_visc,residual,dEk_dt,Ek_ref,dEk_ref,Em_ref,"
@@ -660,7 +667,7 @@ START_TEST(test_assemble_from_archive) {
   unsetenv("VSPH_ARCHIVE_HISTORY");
   const char *dir = tmpdir();
   char path[1200], ar[600], text[600];
-  ck_assert_uint_ge(free_surface_entries(dir, "r", 1, ar, sizeof ar), 40);
+  ck_assert_uint_ge(free_surface_entries(dir, "r", 1, NULL, ar, sizeof ar), 40);
   /* refused, nothing written */
   static const char *const refused[] = {
       "--full --from-archive ar --out r",
@@ -831,6 +838,64 @@ START_TEST(test_assemble_from_archive) {
 }
 END_TEST
 
+/* A stopped run's point is never one a fitted order goes through, and
+ * its differences are hollow (issue 45 point 5): the convergence part
+ * assembled from an archive (as test_assemble_from_archive, the finite-
+ * volume references of the source tree) whose coarsest stretching-square
+ * PVWF run stopped as unstable. The square's tables fit PVWF's order
+ * through its 2 stable rungs, against the extrapolated MGF and against
+ * the finite volume alike (not through all three); the figure draws the
+ * difference of rungs 1 and 2 (the stopped one and the next) hollow. */
+START_TEST(test_assemble_stopped_run) {
+  unsetenv("VSPH_ARCHIVE_HISTORY");
+  const char *dir = tmpdir();
+  char path[1200], ar[600], cmd[2000], fv[1024], stop[128];
+  /* the square's coarsest PVWF rung in the FULL plan */
+  const struct vsph_report_ladderdef *L = vsph_report_runs_full_ladder(1);
+  ck_assert_str_eq(L->scene, "stretching-square");
+  snprintf(stop, sizeof stop, "%s-pvwf-%zu", L->scene, L->res[0]);
+  ck_assert_uint_ge(free_surface_entries(dir, "r", 1, stop, ar, sizeof ar), 40);
+  ck_assert_ptr_nonnull(getcwd(fv, sizeof fv - 20));
+  strcat(fv, "/reference/data");
+  snprintf(cmd, sizeof cmd,
+           "B=$(realpath \"$VSPH_BIN\") && cd %s && $B report assemble "
+           "--full --from-archive ar --out r --only convergence --fv '%s'",
+           dir, fv);
+  const struct vsph_test_outcome *o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  static char report[1 << 18];
+  snprintf(path, sizeof path, "%s/r/report.md", dir);
+  vsph_test_slurp(path, report, sizeof report);
+  const char *sq = strstr(report, "### stretching-square");
+  ck_assert_ptr_nonnull(sq);
+  const char *fvt = strstr(sq, "against the finite-volume solution");
+  ck_assert_msg(fvt, "no finite-volume table in %s", path);
+  /* PVWF's order rows: the table against the extrapolated MGF, then the
+   * one against the finite volume */
+  const char *row[2] = {strstr(sq, "| pvwf | order | "),
+                        strstr(fvt, "| pvwf | order | ")};
+  for (int t = 0; t < 2; t++) {
+    ck_assert_ptr_nonnull(row[t]);
+    char line[300];
+    snprintf(line, sizeof line, "%.*s", (int)strcspn(row[t], "\n"), row[t]);
+    ck_assert_msg(strstr(line, " (fitted through the 2 stable rungs) |"),
+                  "table %d: %s", t, line);
+  }
+  ck_assert(row[0] < fvt);
+  /* the figure: PVWF's difference overlay (MGF has none) */
+  static char gp[1 << 15];
+  snprintf(path, sizeof path, "%s/r/fig_convergence_stretching-square.gp", dir);
+  vsph_test_slurp(path, gp, sizeof gp);
+  ck_assert_msg(strstr(gp,
+                       "convergence_stretching-square_pvwf.csv' skip 1 "
+                       "using 1:(was = ($0 == 0 ? 1 : stable), stable = "
+                       "$5, was == 0 || stable == 0 ? $6 : 1/0)"),
+                "no PVWF difference overlay in %s", path);
+  ck_assert_ptr_null(strstr(gp, "_mgf.csv' skip 1 using 1:(was"));
+  rmrf(dir);
+}
+END_TEST
+
 /* A quick report with --from-archive AR: a run of its plan that stands in
  * AR (here: an entry sealed under the quick run's own key by this build's
  * sources) is read from there, except the runs it must make itself (its
@@ -851,7 +916,7 @@ START_TEST(test_quick_from_archive) {
   unsetenv("VSPH_ARCHIVE_HISTORY");
   const char *dir = tmpdir();
   char path[1200], ar[600], text[600], cmd[2000];
-  ck_assert_uint_ge(free_surface_entries(dir, "q", 0, ar, sizeof ar), 40);
+  ck_assert_uint_ge(free_surface_entries(dir, "q", 0, NULL, ar, sizeof ar), 40);
   /* the convergence part's plan: the three ladders (the vortex patch's
    * twice), the square's four references; its `here` runs, counted from
    * the ladders' finest rung on the rings layout */
@@ -954,6 +1019,7 @@ Suite *vsph_jobs_suite(void) {
   tcase_add_test(tc, test_key_canonical);
   tcase_add_test(tc, test_assemble_from_archive);
   tcase_add_test(tc, test_quick_from_archive);
+  tcase_add_test(tc, test_assemble_stopped_run);
   tcase_add_test(tc, test_source_commits_hash);
   tcase_add_test(tc, test_command_is_the_run);
   tcase_add_test(tc, test_defaults_applied_once);

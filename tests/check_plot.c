@@ -307,6 +307,60 @@ START_TEST(test_dashes_distinct_per_curve) {
 }
 END_TEST
 
+/* Curves out of the key (vsph_plot_add_unkeyed: overlays such as the
+ * hollow markers of stopped runs): no key entry (title ""), yet a pointer
+ * over them in the SVG reads their hover text, plain and XML-escaped, not
+ * gnuplot's "NAME_plot_K"; a keyed curve keeps its title. Refused: a NULL
+ * or too long hover (no curve added). */
+START_TEST(test_unkeyed_curves_hover) {
+  char path[128];
+  snprintf(path, sizeof path, "%s/h.csv", dir);
+  FILE *f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fprintf(f, "x,a,b\n1,1,2\n2,2,3\n");
+  fclose(f);
+  struct vsph_plot pl;
+  vsph_plot_init(&pl, dir, "fig_hover-1", "hover", "x (m)", "y (m)");
+  ck_assert_int_eq(
+      vsph_plot_add(&pl, "h.csv", "1:2", "MGF: a", "linespoints pt 7"), 0);
+  ck_assert_int_eq(
+      vsph_plot_add_unkeyed(&pl, "h.csv", "1:2", "MGF: stopped", "points pt 6"),
+      0);
+  ck_assert_int_eq(vsph_plot_add_unkeyed(&pl, "h.csv", "1:3", "E_{k} < 1 & > 0",
+                                         "points pt 4"),
+                   0);
+  vsph_test_silence();
+  char big[200];
+  memset(big, 'x', sizeof big - 1);
+  big[sizeof big - 1] = '\0';
+  ck_assert_int_eq(vsph_plot_add_unkeyed(&pl, "h.csv", "1:3", big, "points"),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(vsph_plot_add_unkeyed(&pl, "h.csv", "1:3", NULL, "points"),
+                   VSPH_EINVAL);
+  ck_assert_uint_eq(pl.n, 3);
+  ck_assert_int_eq(vsph_plot_write(&pl), 0);
+  static char gp[1 << 14], svg[1 << 16];
+  snprintf(path, sizeof path, "%s/fig_hover-1.gp", dir);
+  vsph_test_slurp(path, gp, sizeof gp);
+  ck_assert_msg(strstr(gp, "using 1:2 with points pt 6 title \"\"") &&
+                    strstr(gp, "using 1:3 with points pt 4 title \"\""),
+                "%s", gp);
+  snprintf(path, sizeof path, "%s/fig_hover-1.svg", dir);
+  vsph_test_slurp(path, svg, sizeof svg);
+  static const char *const want[] = {
+      "<g id=\"fig_hover_1_plot_1\" ><title>MGF: a</title>",
+      "<g id=\"fig_hover_1_plot_2\" ><title>MGF: stopped</title>",
+      "<g id=\"fig_hover_1_plot_3\" ><title>E_k &lt; 1 &amp; &gt; 0</title>"};
+  for (size_t k = 0; k < sizeof want / sizeof want[0]; k++)
+    ck_assert_msg(strstr(svg, want[k]), "no '%s' in %s", want[k], path);
+  ck_assert_ptr_null(strstr(svg, "_plot_2</title>"));
+  ck_assert_ptr_null(strstr(svg, "_plot_3</title>"));
+  /* one key entry: the keyed curve's text alone is drawn */
+  ck_assert_ptr_nonnull(strstr(svg, ">MGF: a</tspan>"));
+  ck_assert_ptr_null(strstr(svg, ">MGF: stopped</tspan>"));
+}
+END_TEST
+
 START_TEST(test_plain_text) {
   char out[64];
   vsph_plot_plain(out, sizeof out, "E_{k,ref}/E_{k,ref}(0), u_θ, 10^{-13}");
@@ -446,6 +500,7 @@ Suite *vsph_plot_suite(void) {
   tcase_add_test(tc, test_html_embeds_svg);
   tcase_add_test(tc, test_html_mathematics);
   tcase_add_test(tc, test_dashes_distinct_per_curve);
+  tcase_add_test(tc, test_unkeyed_curves_hover);
   tcase_add_test(tc, test_plain_text);
   tcase_add_test(tc, test_palette_distinct);
   tcase_add_test(tc, test_plot_particles_bad_input_refused);

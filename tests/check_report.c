@@ -503,7 +503,10 @@ END_TEST
  * over each stopped point of MGF's curve (filled disc, pt 7) a white disc,
  * then the open circle (pt 6) in MGF's colour; a form whose marker is
  * open already (the seventh, pt 6) is ringed in black instead; one key
- * entry says what hollow means, however many forms have stopped runs. */
+ * entry says what hollow means, however many forms have stopped runs.
+ * Out of the key, the overlays are titled in the SVG by the hover text
+ * given (what a pointer over them reads), none by gnuplot's
+ * "fig_h_plot_K". */
 START_TEST(test_hollow_stopped_runs) {
   char dir[] = "/tmp/vsph-hollow-XXXXXX", path[200];
   vsph_test_scratch(dir);
@@ -518,9 +521,11 @@ START_TEST(test_hollow_stopped_runs) {
   for (int f = 0; f < 7; f += 6) {
     vsph_report_runs_style(style, sizeof style, f, "");
     ck_assert_int_eq(vsph_plot_add(&pl, "s.csv", "1:2", "form", style), 0);
-    ck_assert_int_eq(
-        vsph_report_runs_hollow(&pl, "s.csv", "1:($3==0 ? $2 : 1/0)", f, &said),
-        0);
+    char hover[32];
+    snprintf(hover, sizeof hover, "form %d: stopped", f);
+    ck_assert_int_eq(vsph_report_runs_hollow(
+                         &pl, "s.csv", "1:($3==0 ? $2 : 1/0)", f, hover, &said),
+                     0);
   }
   ck_assert_int_eq(vsph_plot_write(&pl), 0);
   static char gp[1 << 15];
@@ -539,6 +544,95 @@ START_TEST(test_hollow_stopped_runs) {
   const char *key = strstr(gp, "hollow: stopped as unstable");
   ck_assert_ptr_nonnull(key);
   ck_assert_ptr_null(strstr(key + 1, "hollow: stopped as unstable"));
+  /* curves 2 and 3 (white disc, open circle) form 0's, 6 (black ring)
+   * form 6's; 1, 4 and 5 keyed */
+  static char svg[1 << 16];
+  snprintf(path, sizeof path, "%s/fig_h.svg", dir);
+  vsph_test_slurp(path, svg, sizeof svg);
+  static const char *const hover[] = {
+      "<g id=\"fig_h_plot_2\" ><title>form 0: stopped</title>",
+      "<g id=\"fig_h_plot_3\" ><title>form 0: stopped</title>",
+      "<g id=\"fig_h_plot_6\" ><title>form 6: stopped</title>"};
+  for (size_t k = 0; k < sizeof hover / sizeof hover[0]; k++)
+    ck_assert_msg(strstr(svg, hover[k]) != NULL, "no '%s' in %s", hover[k],
+                  path);
+  ck_assert_ptr_null(strstr(svg, "<title>fig_h_plot_"));
+  vsph_test_rm_tree(dir);
+}
+END_TEST
+
+/* The points drawn in SVG group @p id of @p svg (each marker's
+ * "translate(x,y)", up to the next curve's group), at most @p max into
+ * @p at; returns how many. */
+static size_t group_points(const char *svg, const char *id, char at[][40],
+                           size_t max) {
+  char open[96];
+  snprintf(open, sizeof open, "<g id=\"%s\" >", id);
+  const char *g = strstr(svg, open);
+  ck_assert_msg(g != NULL, "no group %s", id);
+  g += strlen(open);
+  const char *end = strstr(g, "<g id=\"");
+  size_t n = 0;
+  for (const char *u = strstr(g, "<use "); u && (!end || u < end);
+       u = strstr(u + 1, "<use ")) {
+    const char *t = strstr(u, "translate(");
+    ck_assert_ptr_nonnull(t);
+    if (n < max) snprintf(at[n], sizeof at[n], "%.*s", (int)strcspn(t, ")"), t);
+    n++;
+  }
+  return n;
+}
+
+/* A curve of successive differences (rung k against rung k - 1, on row
+ * k) is hollow where either run of the pair stopped (issue 45 point 5):
+ * with rung 2 of 0..4 stopped, the differences of rows 2 (against the
+ * stopped rung) and 3 (from it), the second and third of the curve's
+ * four, and no other; the error curve's hollow point alone at row 2; one
+ * key entry for both. */
+START_TEST(test_hollow_difference_pairs) {
+  char dir[] = "/tmp/vsph-hollow-XXXXXX", path[200];
+  vsph_test_scratch(dir);
+  ck_assert_int_eq(vsph_files_write(dir, "c.csv",
+                                    "dx,error,stable,difference\n"
+                                    "0.1,0.1,1,nan\n0.05,0.05,1,0.04\n"
+                                    "0.025,0.025,0,0.02\n0.0125,0.0125,1,0.01\n"
+                                    "0.00625,0.006,1,0.005\n"),
+                   0);
+  struct vsph_plot pl;
+  vsph_plot_init(&pl, dir, "fig_p", "pairs", "dx", "error");
+  pl.logx = pl.logy = 1;
+  char style[96];
+  int said = 0;
+  vsph_report_runs_style(style, sizeof style, 0, "");
+  ck_assert_int_eq(vsph_plot_add(&pl, "c.csv", "1:2", "error", style), 0);
+  vsph_report_runs_style(style, sizeof style, 0, " dt 2");
+  ck_assert_int_eq(vsph_plot_add(&pl, "c.csv", "1:4", "difference", style), 0);
+  ck_assert_int_eq(vsph_report_runs_hollow(&pl, "c.csv", "1:($3==0 ? $2 : 1/0)",
+                                           0, "error stopped", &said),
+                   0);
+  ck_assert_int_eq(vsph_report_runs_hollow_pairs(&pl, "c.csv", 3, 4, 0,
+                                                 "difference stopped", &said),
+                   0);
+  ck_assert_uint_eq(pl.n, 2 + 2 + 1 + 2); /* the key entry once */
+  ck_assert_int_eq(vsph_plot_write(&pl), 0);
+  static char svg[1 << 16];
+  snprintf(path, sizeof path, "%s/fig_p.svg", dir);
+  vsph_test_slurp(path, svg, sizeof svg);
+  char line[8][40], open[8][40], disc[8][40];
+  /* the difference curve: its four points, then its key sample */
+  ck_assert_uint_eq(group_points(svg, "fig_p_plot_2", line, 8), 5);
+  /* its hollow overlay (curves 6, white disc, and 7, open circle) */
+  ck_assert_uint_eq(group_points(svg, "fig_p_plot_6", disc, 8), 2);
+  ck_assert_uint_eq(group_points(svg, "fig_p_plot_7", open, 8), 2);
+  for (int k = 0; k < 2; k++) {
+    ck_assert_str_eq(disc[k], line[k + 1]);
+    ck_assert_str_eq(open[k], line[k + 1]);
+  }
+  /* the error curve's: row 2 only */
+  ck_assert_uint_eq(group_points(svg, "fig_p_plot_1", line, 8), 6);
+  ck_assert_uint_eq(group_points(svg, "fig_p_plot_4", open, 8), 1);
+  ck_assert_str_eq(open[0], line[2]);
+  ck_assert_ptr_nonnull(strstr(svg, "<title>difference stopped</title>"));
   vsph_test_rm_tree(dir);
 }
 END_TEST
@@ -596,6 +690,7 @@ Suite *vsph_report_suite(void) {
   tcase_add_test(tc, test_peak_ratio_and_time);
   tcase_add_test(tc, test_tensor_table_no_negative_zero);
   tcase_add_test(tc, test_hollow_stopped_runs);
+  tcase_add_test(tc, test_hollow_difference_pairs);
   tcase_add_test(tc, test_bench_fold);
   suite_add_tcase(s, tc);
   return s;
