@@ -611,11 +611,11 @@ size_t vsph_references_cavity_umin(const double *t, const double *vel, size_t n,
 }
 
 size_t vsph_references_cavity_rms(const double *t, const double *vel, size_t n,
-                                  size_t npts, double Re, double *t_out,
-                                  double *err, size_t cap) {
+                                  size_t npts, double Re, double U,
+                                  double *t_out, double *err, size_t cap) {
   struct vsph_references_ghia g;
   if (!vsph_references_ghia(Re, &g) || npts != g.n || n % (2 * npts) || !t ||
-      !vel || !t_out || !err)
+      !vel || !t_out || !err || !(U > 0.0) || !isfinite(U))
     return 0;
   size_t m = 0;
   for (size_t b = 0; b < n && m < cap; b += 2 * npts) {
@@ -623,7 +623,8 @@ size_t vsph_references_cavity_rms(const double *t, const double *vel, size_t n,
       if (t[b + q] != t[b]) return 0; /* a block of one time */
     double s2 = 0.0;
     for (size_t q = 1; q + 1 < npts; q++) { /* the walls' points left out */
-      const double du = vel[b + q] - g.u[q], dv = vel[b + npts + q] - g.v[q];
+      const double du = vel[b + q] / U - g.u[q],
+                   dv = vel[b + npts + q] / U - g.v[q];
       s2 += du * du + dv * dv;
     }
     t_out[m] = t[b];

@@ -220,13 +220,14 @@ VSPH_API size_t vsph_references_cavity_umin(const double *t, const double *vel,
  *  centreline table as vsph_references_cavity_umin reads it (@p npts = 17
  *  points of u(y), then of v(x), at their positions, which their tables
  *  share at every Re): a run's distance from another Re's flow than its
- *  own. In the table's velocity units. The times into @p t_out and the
+ *  own. In units of the lid speed @p U (the table's velocities over it).
+ *  The times into @p t_out and the
  *  distances into @p err (at most @p cap). @return the number of times, 0
- *  when Ghia et al. have no table for @p Re, @p npts is not theirs or a
- *  time's block is not whole. */
+ *  when Ghia et al. have no table for @p Re, @p npts is not theirs, @p U
+ *  is not positive and finite or a time's block is not whole. */
 VSPH_API size_t vsph_references_cavity_rms(const double *t, const double *vel,
                                            size_t n, size_t npts, double Re,
-                                           double *t_out, double *err,
+                                           double U, double *t_out, double *err,
                                            size_t cap);
 
 /** @brief The exact decay of a small standing (or progressive) gravity

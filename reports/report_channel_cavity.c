@@ -273,11 +273,12 @@ static int ncav(const struct vsph_report *R) {
 /* The runs loaded, and Zheng et al.'s |u_min - u_min,Ghia|/U of each over
  * the output times of its last fifth: mean and swing (NaN: none); E's run
  * at Re 1000: its centrelines' RMS distance from Ghia et al.'s Re 1000
- * and Re 400 tables over the same times (NaN: none). */
+ * and Re 400 tables over the same times, and the swing of their
+ * difference over those times (NaN: none). */
 struct vsph_report_channel_cavity {
   struct vsph_jobs_run cav[NCAV];
   double umin[NCAV], umin_swing[NCAV];
-  double d1000, d400;
+  double d1000, d400, dswing;
 };
 
 static struct vsph_jobs_spec spec(int q) {
@@ -330,28 +331,38 @@ static int cavity_umin(struct vsph_report *R, const struct vsph_jobs_run *r,
   return VSPH_OK;
 }
 
-/* E's run at Re 1000 (@p r) against Ghia et al.'s Re 1000 and Re 400
- * tables: the mean RMS distance over the output times of its last fifth
- * (vsph_references_cavity_rms on its centreline.csv) into @p d1000 and
- * @p d400; NaN for a run stopped early. */
-static int cavity_between(struct vsph_report *R, const struct vsph_jobs_run *r,
-                          double *d1000, double *d400) {
-  *d1000 = *d400 = (double)NAN;
+/* E's run at Re 1000 (@p c's) against Ghia et al.'s Re 1000 and Re 400
+ * tables: the mean RMS distance over the snapshots of its last fifth
+ * (vsph_references_cavity_rms on its centreline.csv, the lid at the
+ * scene's default U = 1 m/s, which the report's cavities keep) into
+ * c->d1000 and c->d400, and the swing (largest less smallest) of their
+ * difference over those snapshots into c->dswing; NaN for a run stopped
+ * early. */
+static int cavity_between(struct vsph_report *R,
+                          struct vsph_report_channel_cavity *c) {
+  const struct vsph_jobs_run *r = &c->cav[CAV_E1000];
+  c->d1000 = c->d400 = c->dswing = (double)NAN;
   if (!r->ok) return VSPH_OK;
   struct vsph_csv *t =
       vsph_jobs_store_table(&R->runs.jobs, r->dir, "centreline.csv");
   if (!t) return VSPH_EIO;
   const double *tt = vsph_csv_column(t, "t"), *v = vsph_csv_column(t, "vel");
   const size_t cap = t->nrow / 34 + 1; /* a time per block of 2 x 17 */
-  double *to = malloc(2 * cap * sizeof *to), *e = to ? to + cap : NULL;
+  double *to = malloc(3 * cap * sizeof *to), *e = to ? to + cap : NULL;
   if (!to) {
     vsph_csv_free(t);
     VSPH_FAIL(VSPH_ENOMEM, "cannot read %s/centreline.csv", r->dir);
   }
-  for (int k = 0; k < 2 && tt && v; k++) {
-    const size_t m = vsph_references_cavity_rms(tt, v, t->nrow, 17,
-                                                k ? 400.0 : 1000.0, to, e, cap);
-    if (m) *(k ? d400 : d1000) = vsph_series_tail_mean(to, e, m, 0.8);
+  double *const e4 = e + cap;
+  const size_t m = tt && v ? vsph_references_cavity_rms(tt, v, t->nrow, 17,
+                                                        1000.0, 1.0, to, e, cap)
+                           : 0;
+  if (m && vsph_references_cavity_rms(tt, v, t->nrow, 17, 400.0, 1.0, to, e4,
+                                      cap) == m) {
+    c->d1000 = vsph_series_tail_mean(to, e, m, 0.8);
+    c->d400 = vsph_series_tail_mean(to, e4, m, 0.8);
+    for (size_t k = 0; k < m; k++) e4[k] = e[k] - e4[k];
+    c->dswing = vsph_series_tail_range(to, e4, m, 0.8);
   }
   vsph_csv_free(t);
   free(to);
@@ -371,7 +382,7 @@ int vsph_report_channel_cavity_load(struct vsph_report *R,
   for (int q = 0; q < NCAV; q++) c->umin[q] = c->umin_swing[q] = (double)NAN;
   for (int q = 0; q < ncav(R) && !st; q++)
     st = cavity_umin(R, &c->cav[q], CAV[q].Re, &c->umin[q], &c->umin_swing[q]);
-  if (!st) st = cavity_between(R, &c->cav[CAV_E1000], &c->d1000, &c->d400);
+  if (!st) st = cavity_between(R, c);
   return st;
 }
 
@@ -695,6 +706,7 @@ static int cavity_claims(struct vsph_report *R,
   /* its centrelines against their Re 1000 and Re 400 tables */
   vsph_claim_num(v, "d1000", c->d1000);
   vsph_claim_num(v, "d400", c->d400);
+  vsph_claim_num(v, "dswing", c->dswing);
   vsph_claim_num(v, "t_run", r1->nrow ? r1->t[r1->nrow - 1] : (double)NAN);
   if (!st) st = vsph_report_doc_grade(R, "claims/channel.cavity_re1000", v);
   return st;

@@ -1514,6 +1514,16 @@ static void call_vsph_plot_add_1(void) {
   (void)vsph_plot_add(NULL, NULL, NULL, NULL, NULL);
 }
 
+static void call_vsph_plot_add_unkeyed_0(void) {
+  (void)vsph_plot_add_unkeyed(NULL, NULL, NULL, NULL, NULL);
+}
+
+static void call_vsph_plot_add_unkeyed_1(void) {
+  struct vsph_plot pl;
+  memset(&pl, 0, sizeof pl);
+  (void)vsph_plot_add_unkeyed(&pl, "f.csv", "1:2", NULL, "lines");
+}
+
 static void call_vsph_plot_write_0(void) { (void)vsph_plot_write(NULL); }
 
 static void call_vsph_plot_write_1(void) { (void)vsph_plot_write(NULL); }
@@ -1736,11 +1746,11 @@ static void call_vsph_series_log_between_1(void) {
 }
 
 static void call_vsph_references_cavity_rms_0(void) {
-  (void)vsph_references_cavity_rms(NULL, NULL, 0, 0, 0.0, NULL, NULL, 0);
+  (void)vsph_references_cavity_rms(NULL, NULL, 0, 0, 0.0, 0.0, NULL, NULL, 0);
 }
 
 static void call_vsph_references_cavity_rms_1(void) {
-  (void)vsph_references_cavity_rms(NULL, NULL, 34, 17, 1000.0, NULL, NULL,
+  (void)vsph_references_cavity_rms(NULL, NULL, 34, 17, 1000.0, NAN, NULL, NULL,
                                    SIZE_MAX);
 }
 
@@ -2566,6 +2576,8 @@ static const struct api_call CALLS[] = {
     {"vsph_plot_init", call_vsph_plot_init_1},
     {"vsph_plot_add", call_vsph_plot_add_0},
     {"vsph_plot_add", call_vsph_plot_add_1},
+    {"vsph_plot_add_unkeyed", call_vsph_plot_add_unkeyed_0},
+    {"vsph_plot_add_unkeyed", call_vsph_plot_add_unkeyed_1},
     {"vsph_plot_write", call_vsph_plot_write_0},
     {"vsph_plot_write", call_vsph_plot_write_1},
     {"vsph_plot_particles", call_vsph_plot_particles_0},

@@ -564,7 +564,13 @@ START_TEST(test_partly_claims_can_differ) {
                          {1.01, 1.25, 1.01, VSPH_CLAIM_DIFFERS}, /* Al: .54 */
                          {1.01, 1.01, 0.75, VSPH_CLAIM_PARTLY},  /* .42 */
                          {1.01, 1.01, 0.7, VSPH_CLAIM_DIFFERS},  /* .51 */
-                         {1.01, NAN, 1.01, VSPH_CLAIM_NOT_TESTED}};
+                         {1.01, NAN, 1.01, VSPH_CLAIM_NOT_TESTED},
+                         {NAN, 1.01, 1.01, VSPH_CLAIM_NOT_TESTED},
+                         {1.01, 1.01, NAN, VSPH_CLAIM_NOT_TESTED},
+                         {1.01, 1.01, -0.2, VSPH_CLAIM_NOT_TESTED},
+                         /* a certain departure is not hidden by a run
+                            not measured */
+                         {0.2, NAN, 1.01, VSPH_CLAIM_DIFFERS}};
   for (size_t k = 0; k < sizeof L / sizeof L[0]; k++) {
     vsph_claim_clear(&v);
     vsph_claim_num(&v, "r50", L[k][0] - 1.0);
@@ -584,7 +590,8 @@ START_TEST(test_partly_claims_can_differ) {
                          {1.6, 1.02, VSPH_CLAIM_PARTLY},  /* lean .43 */
                          {1.8, 1.02, VSPH_CLAIM_DIFFERS}, /* .54 */
                          {1.01, 2.5, VSPH_CLAIM_DIFFERS}, /* .51 of 6.0 */
-                         {NAN, 1.02, VSPH_CLAIM_NOT_TESTED}};
+                         {NAN, 1.02, VSPH_CLAIM_NOT_TESTED},
+                         {1.8, NAN, VSPH_CLAIM_DIFFERS}};
   for (size_t k = 0; k < sizeof S / sizeof S[0]; k++) {
     vsph_claim_clear(&v);
     vsph_claim_num(&v, "ss0", 100.0 * (S[k][0] - 1.0));
@@ -597,24 +604,25 @@ START_TEST(test_partly_claims_can_differ) {
   }
   const char *z1 = vsph_text_get("claims/contact.zeta_one");
   const struct {
-    double e1;
+    double e1, e0;
     int cls;
     const char *says;
-  } Z[] = {{2.4, VSPH_CLAIM_REPRODUCED, ""},
-           {3.18, VSPH_CLAIM_PARTLY, "eta_num"},        /* lean .14 */
-           {7.0, VSPH_CLAIM_PARTLY, ""},                /* .48 */
-           {8.0, VSPH_CLAIM_DIFFERS, "uncorrected"},    /* .54 */
-           {0.75, VSPH_CLAIM_PARTLY, ""},               /* .48, below */
-           {0.7, VSPH_CLAIM_DIFFERS, "over-corrected"}, /* .51 */
-           {-1.0, VSPH_CLAIM_DIFFERS, "not positive"},
-           {NAN, VSPH_CLAIM_NOT_TESTED, ""}};
+  } Z[] = {{2.4, 23.4, VSPH_CLAIM_REPRODUCED, ""},
+           {3.18, 23.4, VSPH_CLAIM_PARTLY, "eta_num"},        /* lean .14 */
+           {7.0, 23.4, VSPH_CLAIM_PARTLY, ""},                /* .48 */
+           {8.0, 23.4, VSPH_CLAIM_DIFFERS, "uncorrected"},    /* .54 */
+           {0.75, 23.4, VSPH_CLAIM_PARTLY, ""},               /* .48, below */
+           {0.7, 23.4, VSPH_CLAIM_DIFFERS, "over-corrected"}, /* .51 */
+           {-1.0, 23.4, VSPH_CLAIM_DIFFERS, "not positive"},
+           {NAN, 23.4, VSPH_CLAIM_NOT_TESTED, ""},
+           {12.0, NAN, VSPH_CLAIM_NOT_TESTED, "scale"}};
   for (size_t k = 0; k < sizeof Z / sizeof Z[0]; k++) {
     vsph_claim_clear(&v);
     vsph_claim_num(&v, "e1", Z[k].e1);
-    vsph_claim_num(&v, "e0", 23.4);
+    vsph_claim_num(&v, "e0", Z[k].e0);
     vsph_claim_num(&v, "e05", 13.3);
     vsph_claim_num(&v, "rel", Z[k].e1 / 2.3 - 1.0);
-    vsph_claim_num(&v, "lean", lb(Z[k].e1, 2.3, 23.4));
+    vsph_claim_num(&v, "lean", lb(Z[k].e1, 2.3, Z[k].e0));
     ck_assert_int_eq(grade(z1, &v, &row), VSPH_OK);
     ck_assert_msg(vsph_claim_class(row.verdict) == Z[k].cls &&
                       strstr(row.verdict, Z[k].says),
@@ -622,18 +630,24 @@ START_TEST(test_partly_claims_can_differ) {
   }
   const char *cv = vsph_text_get("claims/channel.cavity_re1000");
   const struct {
-    double e1, ok, d1000, d400, t_run;
+    double e1, ok, d1000, d400, sw, t_run;
     int cls;
     const char *says;
   } C[] = {
-      {0.04, 1, 0.04, 0.08, 30, VSPH_CLAIM_PARTLY, "near Ghia"},
-      {0.09, 1, 0.096, 0.081, 30, VSPH_CLAIM_PARTLY, "nearer their Re 400"},
-      {0.09, 1, 0.07, 0.09, 30, VSPH_CLAIM_PARTLY, "nearer their Re 1000"},
-      {0.09, 1, 0.096, 0.081, 80, VSPH_CLAIM_DIFFERS, "Re 400"},
-      {0.09, 1, 0.07, 0.09, 80, VSPH_CLAIM_PARTLY, "nearer their Re 1000"},
-      {0.16, 1, 0.16, 0.2, 30, VSPH_CLAIM_PARTLY, ""},
-      {0.18, 1, 0.18, 0.2, 30, VSPH_CLAIM_DIFFERS, "half the fluid"},
-      {0.04, 0, NAN, NAN, 12, VSPH_CLAIM_DIFFERS, "stopped"}};
+      {0.04, 1, 0.04, 0.08, 0.01, 30, VSPH_CLAIM_PARTLY, "near Ghia"},
+      {0.09, 1, 0.096, 0.081, 0.01, 30, VSPH_CLAIM_PARTLY,
+       "nearer their Re 400"},
+      {0.09, 1, 0.096, 0.081, 0.02, 30, VSPH_CLAIM_PARTLY, "about as near"},
+      {0.09, 1, 0.07, 0.09, 0.01, 30, VSPH_CLAIM_PARTLY,
+       "nearer their Re 1000"},
+      {0.09, 1, 0.096, 0.081, 0.01, 80, VSPH_CLAIM_DIFFERS, "Re 400"},
+      {0.09, 1, 0.096, 0.081, 0.02, 80, VSPH_CLAIM_PARTLY, "about as near"},
+      {0.09, 1, 0.07, 0.09, 0.01, 80, VSPH_CLAIM_PARTLY,
+       "nearer their Re 1000"},
+      {0.16, 1, 0.16, 0.2, 0.01, 30, VSPH_CLAIM_PARTLY, ""},
+      {0.18, 1, 0.18, 0.2, 0.01, 30, VSPH_CLAIM_DIFFERS, "half the fluid"},
+      {NAN, 1, NAN, NAN, NAN, 30, VSPH_CLAIM_NOT_TESTED, ""},
+      {0.04, 0, NAN, NAN, NAN, 12, VSPH_CLAIM_DIFFERS, "stopped"}};
   for (size_t k = 0; k < sizeof C / sizeof C[0]; k++) {
     vsph_claim_clear(&v);
     vsph_claim_str(&v, "cav_res", "x");
@@ -645,6 +659,7 @@ START_TEST(test_partly_claims_can_differ) {
     vsph_claim_num(&v, "rest_half", 0.5 * 0.341198916);
     vsph_claim_num(&v, "d1000", C[k].d1000);
     vsph_claim_num(&v, "d400", C[k].d400);
+    vsph_claim_num(&v, "dswing", C[k].sw);
     vsph_claim_num(&v, "t_run", C[k].t_run);
     ck_assert_int_eq(grade(cv, &v, &row), VSPH_OK);
     ck_assert_msg(vsph_claim_class(row.verdict) == C[k].cls &&

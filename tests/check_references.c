@@ -402,10 +402,11 @@ START_TEST(test_ghia_rest_is_a_cavity_at_rest) {
 END_TEST
 
 /* A centreline table holding Ghia et al.'s own Re 400 values at two
- * times: its distance from their Re 400 is 0, from their Re 1000 0.105013915
- * and from their Re 100 0.111641232, the RMS of the tables' difference, by
- * hand (Python over the printed tables, 9 digits); a torn block, another
- * point count or an Re without a table gives 0 times. */
+ * times, for a lid at U = 2 m/s (in units of U): its distance from their Re 400
+ * is 0, from their Re 1000 0.105013915 and from their Re 100 0.111641232, the
+ * RMS of the tables' difference, by hand (Python over the printed tables, 9
+ * digits); a torn block, another point count or an Re without a table gives 0
+ * times. */
 START_TEST(test_cavity_rms_between_ghia_tables) {
   struct vsph_references_ghia g;
   ck_assert(vsph_references_ghia(400.0, &g));
@@ -413,27 +414,29 @@ START_TEST(test_cavity_rms_between_ghia_tables) {
   for (size_t b = 0; b < 2; b++)
     for (size_t q = 0; q < 17; q++) {
       t[34 * b + q] = t[34 * b + 17 + q] = (double)b;
-      vel[34 * b + q] = g.u[q];
-      vel[34 * b + 17 + q] = g.v[q];
+      vel[34 * b + q] = 2.0 * g.u[q]; /* a lid at U = 2 m/s */
+      vel[34 * b + 17 + q] = 2.0 * g.v[q];
     }
-  ck_assert_uint_eq(vsph_references_cavity_rms(t, vel, 68, 17, 400.0, to, e, 2),
-                    2);
+  ck_assert_uint_eq(
+      vsph_references_cavity_rms(t, vel, 68, 17, 400.0, 2.0, to, e, 2), 2);
   ck_assert_double_eq(e[0], 0.0);
   ck_assert_double_eq(to[1], 1.0);
   ck_assert_uint_eq(
-      vsph_references_cavity_rms(t, vel, 68, 17, 1000.0, to, e, 2), 2);
+      vsph_references_cavity_rms(t, vel, 68, 17, 1000.0, 2.0, to, e, 2), 2);
   ck_assert_double_eq_tol(e[0], 0.105013915, 1e-9);
   ck_assert_double_eq_tol(e[1], 0.105013915, 1e-9);
-  ck_assert_uint_eq(vsph_references_cavity_rms(t, vel, 68, 17, 100.0, to, e, 1),
-                    1);
+  ck_assert_uint_eq(
+      vsph_references_cavity_rms(t, vel, 68, 17, 100.0, 2.0, to, e, 1), 1);
   ck_assert_double_eq_tol(e[0], 0.111641232, 1e-9);
+  ck_assert_uint_eq(
+      vsph_references_cavity_rms(t, vel, 68, 17, 400.0, 0.0, to, e, 2), 0);
   t[40] = 7.0; /* a torn second block */
-  ck_assert_uint_eq(vsph_references_cavity_rms(t, vel, 68, 17, 400.0, to, e, 2),
-                    0);
-  ck_assert_uint_eq(vsph_references_cavity_rms(t, vel, 64, 16, 400.0, to, e, 2),
-                    0);
-  ck_assert_uint_eq(vsph_references_cavity_rms(t, vel, 68, 17, 50.0, to, e, 2),
-                    0);
+  ck_assert_uint_eq(
+      vsph_references_cavity_rms(t, vel, 68, 17, 400.0, 2.0, to, e, 2), 0);
+  ck_assert_uint_eq(
+      vsph_references_cavity_rms(t, vel, 64, 16, 400.0, 2.0, to, e, 2), 0);
+  ck_assert_uint_eq(
+      vsph_references_cavity_rms(t, vel, 68, 17, 50.0, 2.0, to, e, 2), 0);
 }
 END_TEST
 
