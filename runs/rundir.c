@@ -864,7 +864,7 @@ static int end_run(struct outputs *o, struct vsph_folder *fo,
 static int read_settings(struct vsph_params *prm,
                          const struct vsph_scene_type *type,
                          struct vsph_run_props *rp, struct vsph_scene *sc) {
-  int st = vsph_run_props_init(rp, prm);
+  int st = vsph_run_props_for_scene(rp, type, prm);
   if (!st) st = vsph_scene_init(sc, type, prm);
   if (st) return st;
   const char *unused = vsph_params_unused(prm);

@@ -247,6 +247,15 @@ static int resolve_names(const struct solver_read *nm,
   return VSPH_OK;
 }
 
+int vsph_run_props_for_scene(struct vsph_run_props *rp,
+                             const struct vsph_scene_type *type,
+                             struct vsph_params *prm) {
+  if (!rp || !type || !prm)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_run_props_for_scene: a NULL argument");
+  const int st = vsph_scene_solver_defaults(type, prm);
+  return st ? st : vsph_run_props_init(rp, prm);
+}
+
 int vsph_run_props_init(struct vsph_run_props *out, struct vsph_params *prm) {
   if (!out) VSPH_FAIL(VSPH_EINVAL, "vsph_run_props_init: a NULL argument");
   memset(out, 0, sizeof *out);

@@ -159,11 +159,23 @@ VSPH_API const struct vsph_params_spec *vsph_run_params(size_t *n);
  *  @p rp, check it and resolve the names it gives (formulation, kernel,
  *  state equation, correction, scheme, density, integrator). The
  *  scene's own Solver defaults (its CFL, contact SPH's settings) are not
- *  applied here: call vsph_scene_solver_defaults on @p prm first, as
- *  `vsph run` and the report's jobs do.
+ *  applied here: for a run of a scene, vsph_run_props_for_scene.
  *  @return VSPH_OK or VSPH_EINVAL (the message names the parameter). */
 VSPH_API int vsph_run_props_init(struct vsph_run_props *rp,
                                  struct vsph_params *prm);
+
+struct vsph_scene_type;
+
+/** @brief The "Solver" section for a run of scene @p type: the scene's
+ *  own Solver defaults given to @p prm where it sets none
+ *  (vsph_scene_solver_defaults: its CFL; contact SPH for the shear and
+ *  cylinder scenes), then read as vsph_run_props_init reads it. What
+ *  `vsph run` and the report's runs do; applying it twice changes
+ *  nothing. @return VSPH_OK, or VSPH_EINVAL (a NULL @p rp, @p type or
+ *  @p prm; a bad setting, named). */
+VSPH_API int vsph_run_props_for_scene(struct vsph_run_props *rp,
+                                      const struct vsph_scene_type *type,
+                                      struct vsph_params *prm);
 
 /** What a run will cost, estimated before anything is allocated. */
 struct vsph_run_estimate {

@@ -1737,6 +1737,15 @@ static void call_vsph_series_interp_cubic_1(void) {
   (void)vsph_series_interp_cubic(NULL, NULL, SIZE_MAX, NAN);
 }
 
+static void call_vsph_run_props_for_scene_0(void) {
+  (void)vsph_run_props_for_scene(NULL, NULL, NULL);
+}
+
+static void call_vsph_run_props_for_scene_1(void) {
+  struct vsph_run_props rp;
+  (void)vsph_run_props_for_scene(&rp, NULL, NULL);
+}
+
 static void call_vsph_series_log_between_0(void) {
   (void)vsph_series_log_between(0.0, 0.0, 0.0);
 }
@@ -2634,6 +2643,8 @@ static const struct api_call CALLS[] = {
     {"vsph_series_cfl_pick", call_vsph_series_cfl_pick_1},
     {"vsph_series_interp_cubic", call_vsph_series_interp_cubic_0},
     {"vsph_series_interp_cubic", call_vsph_series_interp_cubic_1},
+    {"vsph_run_props_for_scene", call_vsph_run_props_for_scene_0},
+    {"vsph_run_props_for_scene", call_vsph_run_props_for_scene_1},
     {"vsph_series_log_between", call_vsph_series_log_between_0},
     {"vsph_series_log_between", call_vsph_series_log_between_1},
     {"vsph_references_cavity_rms", call_vsph_references_cavity_rms_0},

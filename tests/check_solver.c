@@ -693,6 +693,30 @@ static double cfl_of(const char *scene, const char *key, const char *val) {
   return cfl;
 }
 
+/* A library caller's run of a scene gets the scene's own Solver defaults
+ * through vsph_run_props_for_scene, as `vsph run` does: the shear scene
+ * runs contact SPH (vsph_run_props_init alone: the WCSPH scheme), unless
+ * the caller names a formulation; applied twice, the same props. */
+START_TEST(test_run_props_for_scene) {
+  const struct vsph_scene_type *shear = vsph_scene_find("shear");
+  ck_assert_ptr_nonnull(shear);
+  struct vsph_run_props a, b, c;
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_int_eq(vsph_run_props_init(&a, prm), 0);
+  ck_assert_int_eq(a.scheme_kind, VSPH_EQUATIONS_WCSPH);
+  ck_assert_int_eq(vsph_run_props_for_scene(&b, shear, prm), 0);
+  ck_assert_int_eq(b.scheme_kind, VSPH_EQUATIONS_CONTACT);
+  ck_assert_int_eq(vsph_run_props_for_scene(&c, shear, prm), 0);
+  ck_assert_int_eq(memcmp(&b, &c, sizeof b), 0);
+  vsph_params_free(prm);
+  prm = vsph_params_alloc();
+  ck_assert_int_eq(vsph_params_set(prm, "Solver:visc", "mgf"), 0);
+  ck_assert_int_eq(vsph_run_props_for_scene(&b, shear, prm), 0);
+  ck_assert_int_eq(b.scheme_kind, VSPH_EQUATIONS_WCSPH);
+  vsph_params_free(prm);
+}
+END_TEST
+
 static double run_steps(const char *dir, const char *name, const char *set,
                         char *csv, size_t n) {
   char args[600], path[600];
@@ -949,6 +973,7 @@ Suite *vsph_solver_suite(void) {
   tcase_add_test(tc, test_budget_residual);
   tcase_add_test(tc, test_standing_wave_period);
   tcase_add_test(tc, test_scene_cfl);
+  tcase_add_test(tc, test_run_props_for_scene);
   tcase_add_loop_test(tc, test_threads_bitwise, 0, VSPH_VISCOUS_FORM_COUNT);
   tcase_add_test(tc, test_ghost_capacity);
   tcase_add_test(tc, test_hydrostatic_rest);
