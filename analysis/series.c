@@ -331,3 +331,27 @@ double vsph_series_log_between(double x, double a, double b) {
     return NAN;
   return fabs(log(x / a)) / fabs(log(b / a));
 }
+
+int vsph_series_ratio_history(const double *t, const double *y, size_t n,
+                              const double *tr, const double *yr, size_t nr,
+                              double t0, double t1, double edge,
+                              struct vsph_series_ratio *out) {
+  if (!t || !y || !tr || !yr || !out || n == 0 || !(t0 <= t1))
+    VSPH_FAIL(VSPH_EINVAL,
+              "vsph_series_ratio_history: no history, or a "
+              "window that ends before it starts");
+  out->seen = 0;
+  out->below = 1;
+  out->peak = -INFINITY;
+  for (size_t i = 0; i < n; i++) {
+    if (t[i] < t0 || t[i] > t1) continue;
+    const double x = y[i] / vsph_series_interp(tr, yr, nr, t[i]);
+    out->seen = 1;
+    out->below &= x < edge;
+    out->peak = isnan(x) || isnan(out->peak) ? (double)NAN : fmax(out->peak, x);
+  }
+  out->t_last = fmin(t[n - 1], t1);
+  out->last = vsph_series_interp(t, y, n, out->t_last) /
+              vsph_series_interp(tr, yr, nr, out->t_last);
+  return VSPH_OK;
+}

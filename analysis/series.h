@@ -195,6 +195,29 @@ VSPH_API int vsph_series_selfconv(const struct vsph_series_rung *rung,
 VSPH_API double vsph_series_slope_where(const double *x, const double *y,
                                         const int *ok, size_t n, size_t *ns);
 
+/** A history over a reference history (vsph_series_ratio_history). */
+struct vsph_series_ratio {
+  int seen;      /*!< some row lay in the window */
+  int below;     /*!< every such row's ratio below the edge (1 with none) */
+  double peak;   /*!< the largest ratio over those rows (NaN where one is
+                      NaN; -inf with none) */
+  double t_last; /*!< the history's last time, or the window's end if
+                      sooner */
+  double last;   /*!< the ratio there (both interpolated) */
+};
+
+/** @brief History (@p t, @p y, @p n rows) over reference (@p tr, @p yr,
+ *  @p nr rows, read by vsph_series_interp) at each of its rows in
+ *  [@p t0, @p t1], against @p edge, into @p out: a run's E_k history over
+ *  a finite-volume one, say, whether it stays below 1 less the reference's
+ *  own error throughout. @return VSPH_OK or VSPH_EINVAL (a NULL pointer,
+ *  n = 0, t0 > t1). */
+VSPH_API int vsph_series_ratio_history(const double *t, const double *y,
+                                       size_t n, const double *tr,
+                                       const double *yr, size_t nr, double t0,
+                                       double t1, double edge,
+                                       struct vsph_series_ratio *out);
+
 /** @brief Where @p x lies between @p a and @p b on a logarithmic scale:
  *  |ln(x/a)| / |ln(b/a)|, 0 at a, 1 at b's distance from a (either side).
  *  A claim's "differs" reads it as nearer a contrary law (b) than the

@@ -771,17 +771,14 @@ static int cavity_ek_claim(struct vsph_report *R,
   double t_lo = INFINITY, t_hi = -INFINITY; /* their last times */
   for (size_t k = 0; k < n; k++) {
     const struct vsph_jobs_run *r = &c->cav[q[k]];
-    int below = 1, seen = 0;
-    for (size_t i = 0; i < r->nrow; i++) {
-      if (r->t[i] < 1.0 || r->t[i] > fv->t_end) continue;
-      const double x = r->Ek[i] / vsph_fvref_cavity_at(fv, r->t[i]);
-      seen = 1;
-      below &= x < 1 - band;
-      peak = isnan(x) || isnan(peak) ? (double)NAN : fmax(peak, x);
-    }
-    const double t = fmin(r->t[r->nrow - 1], fv->t_end);
-    const double ratio = vsph_series_interp(r->t, r->Ek, r->nrow, t) /
-                         vsph_fvref_cavity_at(fv, t);
+    /* its E_k over the finite volume's from 1 s (after the lid's start) */
+    struct vsph_series_ratio hr;
+    int st = vsph_series_ratio_history(r->t, r->Ek, r->nrow, fg->t, fg->E,
+                                       fg->nrow, 1.0, fv->t_end, 1 - band, &hr);
+    if (st) return st;
+    const int seen = hr.seen, below = hr.below;
+    peak = isnan(hr.peak) || isnan(peak) ? (double)NAN : fmax(peak, hr.peak);
+    const double t = hr.t_last, ratio = hr.last;
     under += seen && below;
     measured += seen;
     e_seen |= seen && (q[k] == CAV_E1000 || q[k] == CAV_E1000_50);

@@ -1746,6 +1746,16 @@ static void call_vsph_run_props_for_scene_1(void) {
   (void)vsph_run_props_for_scene(&rp, NULL, NULL);
 }
 
+static void call_vsph_series_ratio_history_0(void) {
+  (void)vsph_series_ratio_history(NULL, NULL, 0, NULL, NULL, 0, 0.0, 0.0, 0.0,
+                                  NULL);
+}
+
+static void call_vsph_series_ratio_history_1(void) {
+  (void)vsph_series_ratio_history(NULL, NULL, SIZE_MAX, NULL, NULL, SIZE_MAX,
+                                  NAN, NAN, NAN, NULL);
+}
+
 static void call_vsph_series_log_between_0(void) {
   (void)vsph_series_log_between(0.0, 0.0, 0.0);
 }
@@ -2645,6 +2655,8 @@ static const struct api_call CALLS[] = {
     {"vsph_series_interp_cubic", call_vsph_series_interp_cubic_1},
     {"vsph_run_props_for_scene", call_vsph_run_props_for_scene_0},
     {"vsph_run_props_for_scene", call_vsph_run_props_for_scene_1},
+    {"vsph_series_ratio_history", call_vsph_series_ratio_history_0},
+    {"vsph_series_ratio_history", call_vsph_series_ratio_history_1},
     {"vsph_series_log_between", call_vsph_series_log_between_0},
     {"vsph_series_log_between", call_vsph_series_log_between_1},
     {"vsph_references_cavity_rms", call_vsph_references_cavity_rms_0},

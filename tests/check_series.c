@@ -278,6 +278,54 @@ START_TEST(test_log_between) {
 }
 END_TEST
 
+/* A history over a reference, worked by hand: the reference 10 + t on
+ * rows at 0, 2, 4, 6 (read between them linearly, exact here), the
+ * history 0.9 of it at t = 0.5 ... 5.5: in the window [1, 5] its rows 1.5
+ * ... 4.5 all at 0.9 (peak 0.9; below an edge of 0.95, not below 0.9: the
+ * rule is strict), its last time 5 (the window's end, sooner than 5.5),
+ * the ratio there 0.9 (both interpolated). A NaN row makes the peak NaN;
+ * a window holding no row is not seen; no rows or a reversed window are
+ * refused. Tolerance: a few roundings of 0.9 (1e-15). */
+START_TEST(test_ratio_history) {
+  const double tr[4] = {0, 2, 4, 6}, yr[4] = {10, 12, 14, 16};
+  double t[6], y[6];
+  for (int i = 0; i < 6; i++) {
+    t[i] = 0.5 + i;
+    y[i] = 0.9 * (10.0 + t[i]);
+  }
+  struct vsph_series_ratio h;
+  ck_assert_int_eq(
+      vsph_series_ratio_history(t, y, 6, tr, yr, 4, 1.0, 5.0, 0.95, &h),
+      VSPH_OK);
+  ck_assert_int_eq(h.seen, 1);
+  ck_assert_int_eq(h.below, 1);
+  ck_assert_double_eq_tol(h.peak, 0.9, 1e-15);
+  ck_assert_double_eq(h.t_last, 5.0);
+  ck_assert_double_eq_tol(h.last, 0.9, 1e-15);
+  ck_assert_int_eq(
+      vsph_series_ratio_history(t, y, 6, tr, yr, 4, 1.0, 5.0, 0.9, &h),
+      VSPH_OK);
+  ck_assert_int_eq(h.below, 0);
+  y[2] = NAN;
+  ck_assert_int_eq(
+      vsph_series_ratio_history(t, y, 6, tr, yr, 4, 1.0, 5.0, 0.95, &h),
+      VSPH_OK);
+  ck_assert(isnan(h.peak));
+  ck_assert_int_eq(
+      vsph_series_ratio_history(t, y, 6, tr, yr, 4, 5.6, 5.9, 0.95, &h),
+      VSPH_OK);
+  ck_assert_int_eq(h.seen, 0);
+  ck_assert_int_eq(h.below, 1);
+  vsph_test_silence();
+  ck_assert_int_eq(
+      vsph_series_ratio_history(t, y, 0, tr, yr, 4, 1.0, 5.0, 0.95, &h),
+      VSPH_EINVAL);
+  ck_assert_int_eq(
+      vsph_series_ratio_history(t, y, 6, tr, yr, 4, 5.0, 1.0, 0.95, &h),
+      VSPH_EINVAL);
+}
+END_TEST
+
 START_TEST(test_order_from_two_differences) {
   const double C = 0.37;
   for (int p = 1; p <= 2; p++) {
@@ -410,6 +458,7 @@ Suite *vsph_series_suite(void) {
   tcase_add_test(tc, test_interp_cubic);
   tcase_add_test(tc, test_order_from_two_differences);
   tcase_add_test(tc, test_log_between);
+  tcase_add_test(tc, test_ratio_history);
   tcase_add_test(tc, test_selfconv_recovers_order_and_remainder);
   suite_add_tcase(s, tc);
   return s;
