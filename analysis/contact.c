@@ -19,6 +19,7 @@
 #include "../solver/particles.h"
 #include "../solver/run.h"
 #include "../solver/scene.h"
+#include "series.h"
 
 /* The images of the square wave of period 2W that matter: |n| up to the
  * first whose erf terms are within 1e-17 of +-1 everywhere on (-W, W). */
@@ -572,4 +573,23 @@ double vsph_contact_eta_model(double C, double rho, double c, double D0,
                               double flat, double eta, double zeta,
                               double fit) {
   return C * rho * c * D0 + flat * (eta - zeta * fit * rho * c * D0);
+}
+
+void vsph_contact_self_similar(const struct vsph_contact_shear *cs,
+                               double *spread, double *lean) {
+  if (!spread || !lean) return;
+  *spread = *lean = (double)NAN;
+  if (!cs) return;
+  double lo = INFINITY, hi = -INFINITY, t0 = NAN, t1 = NAN;
+  size_t good = 0;
+  for (size_t q = 0; q < cs->nt && q < 8; q++) {
+    if (!isfinite(cs->nu_u[q]) || !(cs->nu_u[q] > 0.0)) continue;
+    lo = fmin(lo, cs->nu_u[q]);
+    hi = fmax(hi, cs->nu_u[q]);
+    if (!good++) t0 = cs->t[q];
+    t1 = cs->t[q];
+  }
+  if (good < 2) return;
+  *spread = 100.0 * (hi - lo) / lo;
+  *lean = vsph_series_log_between(hi / lo, 1.0, t1 / t0);
 }

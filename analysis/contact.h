@@ -179,4 +179,16 @@ VSPH_API int vsph_contact_shear_measure(struct vsph_params *prm,
 /** @brief Free the profiles of @p cs. */
 VSPH_API void vsph_contact_shear_free(struct vsph_contact_shear *cs);
 
+/** @brief How self-similar the shear test @p cs's profiles are (Parshikov
+ *  et al.: the profiles coincide in x sqrt(t0/t)): over the profile times
+ *  whose fit of nu held (finite and positive; the others left out, with
+ *  their times), the spread of the fitted nu, 100 (max - min)/min %, into
+ *  @p spread, and its ratio max/min's place in logarithm from 1 (the
+ *  paper's law) to the ratio of the last of those times to the first (a
+ *  layer that does not spread as sqrt(t): held in place, or spreading at a
+ *  steady speed) into @p lean (vsph_series_log_between). Both NaN with
+ *  fewer than two such times, or a NULL @p cs. */
+VSPH_API void vsph_contact_self_similar(const struct vsph_contact_shear *cs,
+                                        double *spread, double *lean);
+
 #endif /* VSPH_ANALYSIS_CONTACT_H */

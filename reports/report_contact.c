@@ -249,25 +249,10 @@ static void numbers(const struct cres *cr, const struct vsph_jobs *J,
         1e3 * vsph_contact_eta_model(coef(&cr->r[C_W]), r->rho0, r->c0, r->D0,
                                      nb->flat_w, lead->eta, zeta[k], nb->fit05);
   }
-  /* self-similarity: the spread of nu over the profile times, the fits
-   * that failed (NaN) left out, with the times of those that did not; not
-   * measured with fewer than two */
+  /* self-similarity: the spread of nu over the profile times */
   const int S[2] = {C_W, C_Z1L};
-  for (int k = 0; k < 2; k++) {
-    const struct vsph_contact_shear *r = &cr->r[S[k]];
-    double lo = INFINITY, hi = -INFINITY, t0 = NAN, t1 = NAN;
-    size_t good = 0;
-    for (size_t q = 0; q < r->nt; q++) {
-      if (!isfinite(r->nu_u[q]) || !(r->nu_u[q] > 0.0)) continue;
-      lo = fmin(lo, r->nu_u[q]);
-      hi = fmax(hi, r->nu_u[q]);
-      if (!good++) t0 = r->t[q];
-      t1 = r->t[q];
-    }
-    nb->ss_spread[k] = good > 1 ? 100.0 * (hi - lo) / lo : (double)NAN;
-    nb->ss_lean[k] =
-        good > 1 ? vsph_series_log_between(hi / lo, 1.0, t1 / t0) : (double)NAN;
-  }
+  for (int k = 0; k < 2; k++)
+    vsph_contact_self_similar(&cr->r[S[k]], &nb->ss_spread[k], &nb->ss_lean[k]);
   /* two materials: paraffin (x < 0, -U0) | glycerol (x > 0, +U0) */
   const struct vsph_material *pa = mat("paraffin"), *gl = mat("glycerol");
   for (int z = 0; z < 2; z++) {

@@ -1746,6 +1746,15 @@ static void call_vsph_run_props_for_scene_1(void) {
   (void)vsph_run_props_for_scene(&rp, NULL, NULL);
 }
 
+static void call_vsph_contact_self_similar_0(void) {
+  vsph_contact_self_similar(NULL, NULL, NULL);
+}
+
+static void call_vsph_contact_self_similar_1(void) {
+  double a, b;
+  vsph_contact_self_similar(NULL, &a, &b);
+}
+
 static void call_vsph_series_ratio_history_0(void) {
   (void)vsph_series_ratio_history(NULL, NULL, 0, NULL, NULL, 0, 0.0, 0.0, 0.0,
                                   NULL);
@@ -2655,6 +2664,8 @@ static const struct api_call CALLS[] = {
     {"vsph_series_interp_cubic", call_vsph_series_interp_cubic_1},
     {"vsph_run_props_for_scene", call_vsph_run_props_for_scene_0},
     {"vsph_run_props_for_scene", call_vsph_run_props_for_scene_1},
+    {"vsph_contact_self_similar", call_vsph_contact_self_similar_0},
+    {"vsph_contact_self_similar", call_vsph_contact_self_similar_1},
     {"vsph_series_ratio_history", call_vsph_series_ratio_history_0},
     {"vsph_series_ratio_history", call_vsph_series_ratio_history_1},
     {"vsph_series_log_between", call_vsph_series_log_between_0},

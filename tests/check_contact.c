@@ -433,6 +433,34 @@ START_TEST(test_eta_model) {
 }
 END_TEST
 
+/* The self-similarity measure on profiles made by hand: nu 2, 2.2, 2.4
+ * at 1.5, 3, 4.5 ns spreads by 20 % and lies at ln 1.2 / ln 3 =
+ * 0.16595623 of the way to a layer that does not spread as sqrt(t); a
+ * failed first fit (NaN) leaves 2.2 and 2.4 at 3 and 4.5 ns: 9.0909 %,
+ * ln(2.4/2.2)/ln 1.5 = 0.21459646 (Python, 8 digits); one fit left: both
+ * NaN. Tolerance: a few roundings (1e-12). */
+START_TEST(test_self_similar_by_hand) {
+  struct vsph_contact_shear cs;
+  memset(&cs, 0, sizeof cs);
+  cs.nt = 3;
+  const double t[3] = {1.5e-9, 3e-9, 4.5e-9}, nu[3] = {2.0, 2.2, 2.4};
+  for (int q = 0; q < 3; q++) cs.t[q] = t[q], cs.nu_u[q] = nu[q];
+  double spread, lean;
+  vsph_contact_self_similar(&cs, &spread, &lean);
+  ck_assert_double_eq_tol(spread, 20.0, 1e-12);
+  ck_assert_double_eq_tol(lean, 0.16595623, 1e-8);
+  cs.nu_u[0] = NAN;
+  vsph_contact_self_similar(&cs, &spread, &lean);
+  ck_assert_double_eq_tol(spread, 9.0909091, 1e-7);
+  ck_assert_double_eq_tol(lean, 0.21459646, 1e-8);
+  cs.nu_u[1] = -1.0; /* not positive: left out too */
+  vsph_contact_self_similar(&cs, &spread, &lean);
+  ck_assert(isnan(spread) && isnan(lean));
+  vsph_contact_self_similar(NULL, &spread, &lean);
+  ck_assert(isnan(spread) && isnan(lean));
+}
+END_TEST
+
 Suite *vsph_contact_suite(void) {
   Suite *s = suite_create("contact");
   TCase *tc = tcase_create("contact");
@@ -448,6 +476,7 @@ Suite *vsph_contact_suite(void) {
   tcase_add_loop_test(tc, test_shear_static_limit, 0, 3);
   tcase_add_test(tc, test_drag_formulas);
   tcase_add_test(tc, test_cylinder_held);
+  tcase_add_test(tc, test_self_similar_by_hand);
   suite_add_tcase(s, tc);
   return s;
 }
