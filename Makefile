@@ -24,8 +24,10 @@ OPT      ?= -O3
 # by lane and the exponential uses fma() where the target has it: builds
 # with and without ARCH agree to rounding, not bitwise. Within one build
 # the thread count never changes a result.
-# The cores make check builds on (one job each).
+# The cores make check builds on (one job each), unless make was given
+# its own -j (its jobserver then rules).
 NPROC    := $(shell nproc 2>/dev/null || echo 1)
+JOBS      = $(if $(findstring -j,$(MAKEFLAGS)),,-j$(NPROC))
 ARCH     ?= $(shell grep -qw avx2 /proc/cpuinfo 2>/dev/null && echo -march=x86-64-v3)
 CFLAGS   ?= $(OPT) $(ARCH) -g
 # -fno-math-errno: nothing reads errno after a math call, and without it
@@ -286,10 +288,10 @@ uninstall:
 # test links examples/regression against a copy installed under
 # $(BUILD)/stage (VSPH_STAGE).
 check: deps
-	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/vsph $(BUILD)/check_vsph
+	@$(MAKE) --no-print-directory $(JOBS) $(BUILD)/vsph $(BUILD)/check_vsph
 	@# after, not beside: lib's own make builds libvsph.a, which the
 	@# program links (two makes writing it at once broke a -j2 link)
-	@$(MAKE) --no-print-directory -j$(NPROC) lib
+	@$(MAKE) --no-print-directory $(JOBS) lib
 	@rm -rf $(BUILD)/stage
 	@scripts/install $(INSTALL_LIB) "" "$(abspath $(BUILD)/stage)" \
 	  "$(VERSION)" "$(SOVER)" $(BUILD) $(PUB_HDR) > /dev/null

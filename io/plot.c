@@ -89,6 +89,14 @@ int vsph_plot_add_unkeyed(struct vsph_plot *pl, const char *file,
   if (!hover) VSPH_FAIL(VSPH_EINVAL, "vsph_plot_add_unkeyed: a NULL argument");
   if (pl && strlen(hover) >= sizeof pl->s[0].hover)
     VSPH_FAIL(VSPH_EINVAL, "figure %s: a curve's text is too long", pl->name);
+  /* one line of text: it is written into a comment of NAME.gp, which a
+   * newline would end (the rest run as gnuplot's commands) */
+  for (const char *c = hover; *c; c++)
+    if ((unsigned char)*c < 0x20 || *c == 0x7f)
+      VSPH_FAIL(VSPH_EINVAL,
+                "figure %s: a curve's text holds a control character (a "
+                "newline, a tab): one line of plain text",
+                pl ? pl->name : "(none)");
   const int st = vsph_plot_add(pl, file, using, "", style);
   if (!st)
     vsph_plot_plain(pl->s[pl->n - 1].hover, sizeof pl->s[0].hover, hover);
@@ -327,10 +335,14 @@ static int svg_hover(const struct vsph_plot *pl) {
     if (!pl->s[k].hover[0]) continue;
     snprintf(want, sizeof want, "<title>%s_plot_%zu</title>", id, k + 1);
     const char *at = strstr(in, want);
-    if (!at) {
+    if (!at) { /* another gnuplot's naming: the figure stands untitled */
       free(svg);
       free(out);
-      VSPH_FAIL(VSPH_EIO, "%s: no group of curve %zu to title", path, k + 1);
+      fprintf(stderr,
+              "vsph: %s: gnuplot named no group of curve %zu as %s_plot_%zu; "
+              "its hover text is gnuplot's own\n",
+              path, k + 1, id, k + 1);
+      return VSPH_OK;
     }
     memcpy(o, in, (size_t)(at - in));
     o += at - in;

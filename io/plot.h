@@ -90,12 +90,15 @@ VSPH_API int vsph_plot_add(struct vsph_plot *pl, const char *file,
                            const char *style);
 
 /** @brief Add a curve left out of the key (title "", as an overlay on
- *  another curve's points) whose SVG group is titled @p hover, plain
- *  text, for a pointer over it: gnuplot titles a curve's group in the SVG
- *  by its key title and one without by "NAME_plot_K", so vsph_plot_write
- *  sets @p hover in NAME.svg after gnuplot (running NAME.gp again by hand
- *  leaves gnuplot's). @return as vsph_plot_add (@p hover too long:
- *  VSPH_EINVAL). */
+ *  another curve's points) whose SVG group is titled @p hover, one line
+ *  of text (its gnuplot markup, _{...} and ^{...}, set plain as the key's
+ *  titles are), for a pointer over it: gnuplot titles a curve's group in
+ *  the SVG by its key title and one without by "NAME_plot_K", so
+ *  vsph_plot_write sets @p hover in NAME.svg after gnuplot (running
+ *  NAME.gp again by hand leaves gnuplot's; a gnuplot that names the group
+ *  otherwise leaves the figure as it drew it, with a warning).
+ *  @return as vsph_plot_add (@p hover too long, or holding a control
+ *  character such as a newline: VSPH_EINVAL). */
 VSPH_API int vsph_plot_add_unkeyed(struct vsph_plot *pl, const char *file,
                                    const char *using, const char *hover,
                                    const char *style);

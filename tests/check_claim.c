@@ -615,7 +615,11 @@ START_TEST(test_partly_claims_can_differ) {
            {0.7, 23.4, VSPH_CLAIM_DIFFERS, "over-corrected"}, /* .51 */
            {-1.0, 23.4, VSPH_CLAIM_DIFFERS, "not positive"},
            {NAN, 23.4, VSPH_CLAIM_NOT_TESTED, ""},
-           {12.0, NAN, VSPH_CLAIM_NOT_TESTED, "scale"}};
+           {12.0, NAN, VSPH_CLAIM_NOT_TESTED, "scale"},
+           /* the uncorrected lattice's below the physical eta: no scale
+              (lean 0.50 would read as a departure) */
+           {3.5, 1.0, VSPH_CLAIM_NOT_TESTED, "no scale"},
+           {1.5, 1.0, VSPH_CLAIM_NOT_TESTED, "no scale"}};
   for (size_t k = 0; k < sizeof Z / sizeof Z[0]; k++) {
     vsph_claim_clear(&v);
     vsph_claim_num(&v, "e1", Z[k].e1);

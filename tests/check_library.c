@@ -502,6 +502,18 @@ START_TEST(test_removal_waits_for_mounts) {
 }
 END_TEST
 
+/* make check's two lanes (scripts/check-lanes) with a stand-in runner
+ * (tests/check_lanes.sh), in a folder with a space and a newline: both
+ * lanes run on one thread each, a lane's failure fails the whole, a
+ * folder as the runner and a log the script did not write are refused
+ * (exit 2), the log left as it was. */
+START_TEST(test_check_lanes_script) {
+  struct vsph_test_outcome *o = vsph_test_shell("sh tests/check_lanes.sh");
+  ck_assert_msg(o->status == 0, "exit %d: %s %s", o->status, o->out, o->err);
+  ck_assert_str_eq(o->out, "both\nfails\nno-folder\nkept\n");
+}
+END_TEST
+
 /* The README's walkthrough, as a newcomer types it: step 1's command
  * (the run, its 11 snapshots, energy.csv's columns 2 and 12 being E_k and
  * Lighthill's reference, as step 3's gnuplot line plots them), and step
@@ -609,6 +621,7 @@ Suite *vsph_library_suite(void) {
   tcase_add_test(tc, test_install_refusals);
   tcase_add_test(tc, test_deps_without_apt);
   tcase_add_test(tc, test_removal_waits_for_mounts);
+  tcase_add_test(tc, test_check_lanes_script);
   suite_add_tcase(s, tc);
   return s;
 }

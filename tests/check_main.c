@@ -82,7 +82,11 @@ static const struct {
 int main(void) {
   gsl_set_error_handler_off();
   const char *env = getenv("VSPH_CHECK_LANE");
-  const int lane = env ? atoi(env) : 0; /* 0: every suite */
+  /* 0: every suite */
+  const int lane = !env                ? 0
+                   : !strcmp(env, "1") ? 1
+                   : !strcmp(env, "2") ? 2
+                                       : -1;
   SRunner *sr = NULL;
   /* every suite in one of the two lanes: a third would run in neither */
   for (size_t k = 0; k < sizeof SUITES / sizeof SUITES[0]; k++)
@@ -91,16 +95,20 @@ int main(void) {
               SUITES[k].lane);
       return EXIT_FAILURE;
     }
-  if (env && lane != 1 && lane != 2) {
+  if (lane < 0) {
     fprintf(stderr, "check_vsph: VSPH_CHECK_LANE is 1 or 2, not '%s'\n", env);
     return EXIT_FAILURE;
   }
   for (size_t k = 0; k < sizeof SUITES / sizeof SUITES[0]; k++) {
-    if (lane && SUITES[k].lane != lane) continue;
+    if (lane && SUITES[k].lane != lane) continue; /* the lane's own */
     if (!sr)
       sr = srunner_create(SUITES[k].make());
     else
       srunner_add_suite(sr, SUITES[k].make());
+  }
+  if (!sr) {
+    fprintf(stderr, "check_vsph: lane %d holds no suite\n", lane);
+    return EXIT_FAILURE;
   }
   srunner_run_all(sr, CK_NORMAL);
   const int failed = srunner_ntests_failed(sr);

@@ -337,6 +337,13 @@ START_TEST(test_unkeyed_curves_hover) {
                    VSPH_EINVAL);
   ck_assert_int_eq(vsph_plot_add_unkeyed(&pl, "h.csv", "1:3", NULL, "points"),
                    VSPH_EINVAL);
+  /* a newline would end the .gp's comment that names the hover text, the
+   * rest run as gnuplot's commands: refused, and a tab */
+  ck_assert_int_eq(vsph_plot_add_unkeyed(&pl, "h.csv", "1:3",
+                                         "x\nsystem 'touch PWNED'", "points"),
+                   VSPH_EINVAL);
+  ck_assert_int_eq(vsph_plot_add_unkeyed(&pl, "h.csv", "1:3", "a\tb", "points"),
+                   VSPH_EINVAL);
   ck_assert_uint_eq(pl.n, 3);
   ck_assert_int_eq(vsph_plot_write(&pl), 0);
   static char gp[1 << 14], svg[1 << 16];
