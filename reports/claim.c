@@ -709,6 +709,37 @@ int vsph_claim_grade_text(const char *name, const char *text,
   return st;
 }
 
+int vsph_claim_test_text(const char *name, const char *text, const char *test,
+                         const struct vsph_claim_vals *v, int *holds) {
+  if (!name || !text || !test || !v || !holds)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_claim_test_text: a NULL argument");
+  struct block *b = malloc(sizeof *b);
+  if (!b) VSPH_FAIL(VSPH_ENOMEM, "cannot read claim %s", name);
+  int st = parse(name, text, b), k = 0;
+  while (!st && k < b->ntests && strcmp(b->test[k].name, test)) k++;
+  if (!st && k == b->ntests) {
+    free(b);
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: no test %s", name, test);
+  }
+  double x[3] = {0};
+  int nan = 0;
+  for (int a = 0; !st && a < b->test[k].nargs; a++) {
+    st = arg(name, b->test[k].arg[a], v, &x[a]);
+    nan |= isnan(x[a]);
+  }
+  int bad = 0; /* an order that is no integer (grading says it too) */
+  if (!st) {
+    const int h = vsph_claim_test(b->test[k].kind, x);
+    bad = h < 0 && !nan;
+    /* not measured: unknown */
+    *holds = nan && strcmp(b->test[k].kind, "finite") ? -1 : h;
+  }
+  free(b);
+  if (bad)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: test %s cannot be read", name, test);
+  return st;
+}
+
 int vsph_claim_lint(const char *name, const char *text) {
   struct vsph_claim_row *row = malloc(sizeof *row);
   if (!row) VSPH_FAIL(VSPH_ENOMEM, "cannot check claim %s", name);

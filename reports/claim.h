@@ -115,6 +115,16 @@ int vsph_claim_grade_text(const char *name, const char *text,
                           const struct vsph_claim_vals *v,
                           struct vsph_claim_row *row);
 
+/** @brief Test @p test of claim block @p text (named @p name in
+ *  messages) on the measures @p v, as grading reads it, into @p holds: 1
+ *  holds, 0 fails, -1 unknown (a measure not measured). For words a part
+ *  must choose from one of the block's rules (the first of several cases
+ *  that meets it), so that the rule's threshold stays in the block.
+ *  @return VSPH_OK, or VSPH_EINVAL (the block malformed, no test
+ *  @p test, a measure the part did not set). */
+int vsph_claim_test_text(const char *name, const char *text, const char *test,
+                         const struct vsph_claim_vals *v, int *holds);
+
 /** @brief Check block @p text's grammar without values (every field, test
  *  and expression well formed; measures not looked up). @return as
  *  vsph_claim_grade_text. */

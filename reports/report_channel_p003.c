@@ -560,29 +560,6 @@ static void sweep_vals(const struct vsph_report_channel_p003 *p,
   vsph_claim_str(v, "p003_diffs", "%s", P003_DIFFS);
 }
 
-/* Whether the rule of test @p test of claim block @p block, "KIND
- * MEASURE NUMBER" with KIND below, above, atmost or atleast
- * (reports/claim.h), holds for @p x as its measure @p measure: 1, 0 (a
- * NaN never holds), or -1 where the block has no such test. Words that
- * name the first c meeting a claim's rule, with that c's figures, cannot
- * be the block's own (its chosen texts are literal), so they read the
- * rule here, from the block: its threshold stands there alone. */
-static int block_rule(const char *block, const char *test, const char *measure,
-                      double x) {
-  const char *text = vsph_text_get(block);
-  char head[48], kind[16], name[32];
-  double limit;
-  snprintf(head, sizeof head, "\ntest %s:", test);
-  const char *where = text ? strstr(text, head) : NULL;
-  if (!where ||
-      sscanf(where + strlen(head), "%15s %31s %lf", kind, name, &limit) != 3 ||
-      strcmp(name, measure) ||
-      (strcmp(kind, "below") && strcmp(kind, "above") &&
-       strcmp(kind, "atmost") && strcmp(kind, "atleast")))
-    return -1;
-  return vsph_claim_test(kind, (const double[2]){x, limit});
-}
-
 /* The measures of the claim p003_dt on the first c where a smaller dt
  * ends better (@p first; -1: none): its c, whether its smallest dt's run
  * still stops, when, and the larger dts' latest stop there (the block's
@@ -627,12 +604,12 @@ static int p003_sweep_claims(struct vsph_report *R,
    * turns, or one before it that meets the block's rule on lag */
   int first = -1;
   for (int a = 0; a < NSWC && first < 0 && !st; a++) {
-    const int later = a < n_lag ? block_rule(DT, "later", "lag", w.lag[a]) : 0;
-    if (later < 0)
-      VSPH_FAIL(VSPH_EINVAL,
-                "claim %s: no rule 'test later: KIND lag NUMBER' for the "
-                "words that name its c",
-                DT);
+    int later = 0; /* the block's own rule 'later' on this c's lag */
+    if (a < n_lag) {
+      vsph_claim_num(v, "lag", w.lag[a]);
+      st = vsph_claim_test_text(DT, vsph_text_get(DT), "later", v, &later);
+      later = later == 1;
+    }
     if (a == w.turn || later) first = a;
   }
   sweep_vals(p, v);

@@ -673,6 +673,41 @@ START_TEST(test_partly_claims_can_differ) {
 }
 END_TEST
 
+/* One test of a block read alone, as a part reads a rule to choose its
+ * words (p003_dt's 'later'): at its threshold (strict: fails), just above
+ * (holds), a NaN (unknown, -1); a measure not set and a test not there
+ * refused; and p003_dt's own rule read from its block. */
+START_TEST(test_one_test_read_alone) {
+  static const char *const B =
+      "claim: c\nwhere: w\npaper: p\nours: x\nsetup: none\n"
+      "test later: above lag 1.5 -- a choice\nif later: partly\n"
+      "else: differs\n";
+  struct vsph_claim_vals v;
+  int holds = 7;
+  vsph_claim_clear(&v);
+  vsph_claim_num(&v, "lag", 1.5);
+  ck_assert_int_eq(vsph_claim_test_text("t", B, "later", &v, &holds), VSPH_OK);
+  ck_assert_int_eq(holds, 0);
+  vsph_claim_num(&v, "lag", nextafter(1.5, 2.0));
+  ck_assert_int_eq(vsph_claim_test_text("t", B, "later", &v, &holds), VSPH_OK);
+  ck_assert_int_eq(holds, 1);
+  vsph_claim_num(&v, "lag", NAN);
+  ck_assert_int_eq(vsph_claim_test_text("t", B, "later", &v, &holds), VSPH_OK);
+  ck_assert_int_eq(holds, -1);
+  vsph_test_silence();
+  ck_assert_int_eq(vsph_claim_test_text("t", B, "sooner", &v, &holds),
+                   VSPH_EINVAL);
+  vsph_claim_clear(&v);
+  ck_assert_int_eq(vsph_claim_test_text("t", B, "later", &v, &holds),
+                   VSPH_EINVAL);
+  const char *dt = vsph_text_get("claims/channel.p003_dt");
+  vsph_claim_num(&v, "lag", 1.6);
+  ck_assert_int_eq(vsph_claim_test_text("dt", dt, "later", &v, &holds),
+                   VSPH_OK);
+  ck_assert_int_eq(holds, 1); /* its rule: above lag 1.5 */
+}
+END_TEST
+
 /* Every claim block compiled in from reports/claims/ is well formed (each
  * field, test and expression; its placeholders' forms), a test of make
  * check it names is there, and there are some. */
@@ -717,6 +752,7 @@ Suite *vsph_claim_suite(void) {
   tcase_add_test(tc, test_blocks_well_formed);
   tcase_add_test(tc, test_block_words_as_the_parts_wrote);
   tcase_add_test(tc, test_partly_claims_can_differ);
+  tcase_add_test(tc, test_one_test_read_alone);
   suite_add_tcase(s, tc);
   return s;
 }
