@@ -3,7 +3,6 @@
 #include "cells.h"
 
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -142,24 +141,16 @@ int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
     VSPH_FAIL(VSPH_EINVAL, "cell radius must be positive, got %g", radius);
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (int k = 0; k < dim; k++) {
-    /* the bounds in parallel (min and max are exact in any order), and
-     * the first particle with a non-finite position, by index */
-    double l = INFINITY, u = -INFINITY;
-    size_t bad = SIZE_MAX;
-    const double *const x = p->pos[k];
-#pragma omp parallel for schedule(static) reduction(min                     \
-                                                    : l, bad) reduction(max \
-                                                                        : u)
+    lo[k] = INFINITY;
+    hi[k] = -INFINITY;
     for (size_t i = 0; i < n; i++) {
-      if (!isfinite(x[i])) bad = i < bad ? i : bad;
-      l = x[i] < l ? x[i] : l;
-      u = x[i] > u ? x[i] : u;
+      const double x = p->pos[k][i];
+      if (!isfinite(x))
+        VSPH_FAIL(VSPH_EINVAL, "particle %zu has a non-finite position",
+                  p->id[i]);
+      lo[k] = x < lo[k] ? x : lo[k];
+      hi[k] = x > hi[k] ? x : hi[k];
     }
-    if (bad != SIZE_MAX)
-      VSPH_FAIL(VSPH_EINVAL, "particle %zu has a non-finite position",
-                p->id[bad]);
-    lo[k] = l;
-    hi[k] = u;
     if (n == 0) lo[k] = hi[k] = 0.0;
     /* positions spread over more than the largest double: no grid */
     if (!isfinite(hi[k] - lo[k]))
@@ -193,23 +184,18 @@ int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
   if (!st) st = reserve_particles(c, n);
   if (st) return st;
 
-  /* Counting sort by cell key; stable, so equal keys keep input order.
-   * The keys in parallel (each particle's alone), the counts in order. */
+  /* Counting sort by cell key; stable, so equal keys keep input order. */
   memset(c->count, 0, ncells * sizeof *c->count);
-  const size_t nc0 = c->nc[0], nc1 = c->nc[1], nc2 = c->nc[2];
-  size_t *const key = c->key;
-#pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) {
-    const size_t nck[3] = {nc0, nc1, nc2};
-    size_t kk = 0;
+    size_t key = 0;
     for (int k = dim - 1; k >= 0; k--) {
       size_t ck = (size_t)floor((p->pos[k][i] - lo[k]) / edge);
-      if (ck >= nck[k]) ck = nck[k] - 1;
-      kk = kk * nck[k] + ck;
+      if (ck >= c->nc[k]) ck = c->nc[k] - 1;
+      key = key * c->nc[k] + ck;
     }
-    key[i] = kk;
+    c->key[i] = key;
+    c->count[key]++;
   }
-  for (size_t i = 0; i < n; i++) c->count[key[i]]++;
   size_t acc = 0;
   for (size_t q = 0; q < ncells; q++) {
     c->start[q] = acc;

@@ -163,14 +163,12 @@ void vsph_integrate_free(struct vsph_integrate *s) {
 
 static double max_speed(const struct vsph_integrate *s) {
   const struct vsph_particles *p = s->p;
-  const size_t n = p->n, nf = s->n_fluid;
-  double v2 = 0.0; /* a max, exact in any order (a NaN never wins) */
-#pragma omp parallel for schedule(static) reduction(max : v2)
-  for (size_t i = 0; i < n; i++) {
-    if (p->id[i] >= nf) continue;
+  double v2 = 0.0;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= s->n_fluid) continue;
     double u2 = 0.0;
     for (int k = 0; k < p->dim; k++) u2 += p->vel[k][i] * p->vel[k][i];
-    v2 = u2 > v2 ? u2 : v2;
+    v2 = fmax(v2, u2);
   }
   return sqrt(v2);
 }
@@ -299,10 +297,7 @@ static int prepare(struct vsph_integrate *s, double skin) {
       return st;
   }
   if ((st = vsph_cells_build(s->cells, s->p, H + skin))) return st;
-  const size_t n = s->p->n, *const id = s->p->id;
-  size_t *const where = s->where;
-#pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < n; i++) where[id[i]] = i; /* ids are distinct */
+  for (size_t i = 0; i < s->p->n; i++) s->where[s->p->id[i]] = i;
   return VSPH_OK;
 }
 
@@ -551,15 +546,9 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   k[2 * d + 1] = p->de; /* the gas law's energy (nf says whether) */
   /* y0, the state the step starts from, is also what a stopped step puts
    * back (put_back) */
-#pragma omp parallel
   for (int f = 0; f < nf; f++) {
-    double *const y0f = s->y0[f], *const ksf = s->ks[f];
-    const double *const yf = y[f];
-#pragma omp for schedule(static) nowait
-    for (size_t i = 0; i < n; i++) {
-      y0f[i] = yf[i];
-      ksf[i] = 0.0;
-    }
+    memcpy(s->y0[f], y[f], n * sizeof(double));
+    memset(s->ks[f], 0, n * sizeof(double));
   }
   static const double a[4] = {0.0, 0.5, 0.5, 1.0}, w[4] = {1, 2, 2, 1};
   size_t nint = 0;

@@ -148,14 +148,10 @@ void vsph_particles_refresh_vol(struct vsph_particles *p) {
   for (size_t i = 0; i < p->n; i++) p->vol[i] = p->m[i] / p->rho[i];
 }
 
-/* Gathers and copies, each element by one thread: the same bits on any
- * number of threads. */
 static void permute_field(double *a, const size_t *perm, size_t n,
                           double *scratch) {
-#pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) scratch[i] = a[perm[i]];
-#pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < n; i++) a[i] = scratch[i];
+  memcpy(a, scratch, n * sizeof *a);
 }
 
 void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
@@ -176,8 +172,6 @@ void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
     for (size_t i = 0; i < n; i++) iscratch[i] = p->mat[perm[i]];
     for (size_t i = 0; i < n; i++) p->mat[i] = (unsigned char)iscratch[i];
   }
-#pragma omp parallel for schedule(static)
   for (size_t i = 0; i < n; i++) iscratch[i] = p->id[perm[i]];
-#pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < n; i++) p->id[i] = iscratch[i];
+  memcpy(p->id, iscratch, n * sizeof *p->id);
 }
