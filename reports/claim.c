@@ -624,6 +624,26 @@ static int fill(const char *name, const char *t, const struct block *b,
 /* --------------------------------------------------------------- grading */
 
 /* Block @p b graded (or, with @p v NULL, only checked) into @p row. */
+/* Test @p k of block @p b on the measures @p v into *holds: 1, 0, or
+ * UNKNOWN where a measure is not measured (NaN; `finite` reads it). A
+ * measure the part did not set, or an order that is no integer, refused. */
+static int test_holds(const char *name, const struct block *b, int k,
+                      const struct vsph_claim_vals *v, int *holds) {
+  double x[3] = {0};
+  int nan = 0; /* a measure not measured: the test is unknown */
+  for (int a = 0; a < b->test[k].nargs; a++) {
+    const int st = arg(name, b->test[k].arg[a], v, &x[a]);
+    if (st) return st;
+    nan |= isnan(x[a]);
+  }
+  *holds = vsph_claim_test(b->test[k].kind, x);
+  if (*holds < 0 && !nan)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: test %s: %s of %s is no integer order",
+              name, b->test[k].name, b->test[k].kind, b->test[k].arg[1]);
+  if (nan && strcmp(b->test[k].kind, "finite")) *holds = UNKNOWN;
+  return VSPH_OK;
+}
+
 static int grade(const char *name, const struct block *b,
                  const struct vsph_claim_vals *v, struct vsph_claim_row *row) {
   if (v && v->overflow)
@@ -633,18 +653,8 @@ static int grade(const char *name, const struct block *b,
               name);
   int holds[MAXTESTS];
   for (int k = 0; k < b->ntests; k++) {
-    double x[3] = {0};
-    for (int a = 0; a < b->test[k].nargs; a++) {
-      const int st = arg(name, b->test[k].arg[a], v, &x[a]);
-      if (st) return st;
-    }
-    int nan = 0; /* a measure not measured: the test is unknown */
-    for (int a = 0; a < b->test[k].nargs; a++) nan |= isnan(x[a]);
-    holds[k] = vsph_claim_test(b->test[k].kind, x);
-    if (holds[k] < 0 && !nan)
-      VSPH_FAIL(VSPH_EINVAL, "claim %s: test %s: %s of %s is no integer order",
-                name, b->test[k].name, b->test[k].kind, b->test[k].arg[1]);
-    if (nan && strcmp(b->test[k].kind, "finite")) holds[k] = UNKNOWN;
+    const int st = test_holds(name, b, k, v, &holds[k]);
+    if (st) return st;
   }
   for (int k = 0; k < b->nwords; k++) { /* every word line well formed */
     if (strcmp(b->wcond[k], "else") && eval(b->wcond[k], b, holds) < 0)
@@ -721,22 +731,9 @@ int vsph_claim_test_text(const char *name, const char *text, const char *test,
     free(b);
     VSPH_FAIL(VSPH_EINVAL, "claim %s: no test %s", name, test);
   }
-  double x[3] = {0};
-  int nan = 0;
-  for (int a = 0; !st && a < b->test[k].nargs; a++) {
-    st = arg(name, b->test[k].arg[a], v, &x[a]);
-    nan |= isnan(x[a]);
-  }
-  int bad = 0; /* an order that is no integer (grading says it too) */
-  if (!st) {
-    const int h = vsph_claim_test(b->test[k].kind, x);
-    bad = h < 0 && !nan;
-    /* not measured: unknown */
-    *holds = nan && strcmp(b->test[k].kind, "finite") ? -1 : h;
-  }
+  if (!st) st = test_holds(name, b, k, v, holds);
+  if (!st && *holds == UNKNOWN) *holds = -1; /* not measured */
   free(b);
-  if (bad)
-    VSPH_FAIL(VSPH_EINVAL, "claim %s: test %s cannot be read", name, test);
   return st;
 }
 
