@@ -299,13 +299,19 @@ int vsph_report_channel_cavity_plan(struct vsph_report *R) {
   return st;
 }
 
-/* Zheng et al.'s u_min error of a finished cavity run at @p Re over the
- * output times of its last fifth (vsph_references_cavity_umin on its
- * centreline.csv): their mean and swing; NaN for a run stopped early or
- * an Re without Ghia et al.'s table. */
-static int cavity_umin(struct vsph_report *R, const struct vsph_jobs_run *r,
-                       int Re, double *mean, double *swing) {
-  *mean = *swing = (double)NAN;
+/* The measures of finished cavity run @p q's centreline.csv (read once),
+ * each over the output times of its last fifth: Zheng et al.'s u_min
+ * error at its Re (vsph_references_cavity_umin), mean and swing; and for
+ * E at Re 1000 its RMS distance from Ghia et al.'s Re 1000 and Re 400
+ * tables (vsph_references_cavity_rms, the lid at the scene's default U =
+ * 1 m/s, which the report's cavities keep), their means and the swing of
+ * their difference. NaN where the run stopped early or Ghia et al. have no
+ * table for its Re. */
+static int cavity_centrelines(struct vsph_report *R,
+                              struct vsph_report_channel_cavity *c, int q) {
+  const struct vsph_jobs_run *r = &c->cav[q];
+  c->umin[q] = c->umin_swing[q] = (double)NAN;
+  if (q == CAV_E1000) c->d1000 = c->d400 = c->dswing = (double)NAN;
   if (!r->ok) return VSPH_OK;
   struct vsph_csv *t =
       vsph_jobs_store_table(&R->runs.jobs, r->dir, "centreline.csv");
@@ -314,50 +320,24 @@ static int cavity_umin(struct vsph_report *R, const struct vsph_jobs_run *r,
   struct vsph_references_ghia g;
   vsph_references_ghia(100.0, &g); /* the points per line: any table's */
   const size_t cap = t->nrow / (2 * g.n) + 1; /* a time per block */
-  double *to = malloc(2 * cap * sizeof *to), *e = to ? to + cap : NULL;
-  if (!to) {
-    vsph_csv_free(t);
-    VSPH_FAIL(VSPH_ENOMEM, "cannot read %s/centreline.csv", r->dir);
-  }
-  const size_t m = tt && v ? vsph_references_cavity_umin(tt, v, t->nrow, g.n,
-                                                         (double)Re, to, e, cap)
-                           : 0;
-  vsph_csv_free(t);
-  if (m) {
-    *mean = vsph_series_tail_mean(to, e, m, 0.8);
-    *swing = vsph_series_tail_range(to, e, m, 0.8);
-  }
-  free(to);
-  return VSPH_OK;
-}
-
-/* E's run at Re 1000 (@p c's) against Ghia et al.'s Re 1000 and Re 400
- * tables: the mean RMS distance over the snapshots of its last fifth
- * (vsph_references_cavity_rms on its centreline.csv, the lid at the
- * scene's default U = 1 m/s, which the report's cavities keep) into
- * c->d1000 and c->d400, and the swing (largest less smallest) of their
- * difference over those snapshots into c->dswing; NaN for a run stopped
- * early. */
-static int cavity_between(struct vsph_report *R,
-                          struct vsph_report_channel_cavity *c) {
-  const struct vsph_jobs_run *r = &c->cav[CAV_E1000];
-  c->d1000 = c->d400 = c->dswing = (double)NAN;
-  if (!r->ok) return VSPH_OK;
-  struct vsph_csv *t =
-      vsph_jobs_store_table(&R->runs.jobs, r->dir, "centreline.csv");
-  if (!t) return VSPH_EIO;
-  const double *tt = vsph_csv_column(t, "t"), *v = vsph_csv_column(t, "vel");
-  const size_t cap = t->nrow / 34 + 1; /* a time per block of 2 x 17 */
   double *to = malloc(3 * cap * sizeof *to), *e = to ? to + cap : NULL;
   if (!to) {
     vsph_csv_free(t);
     VSPH_FAIL(VSPH_ENOMEM, "cannot read %s/centreline.csv", r->dir);
   }
   double *const e4 = e + cap;
-  const size_t m = tt && v ? vsph_references_cavity_rms(tt, v, t->nrow, 17,
-                                                        1000.0, 1.0, to, e, cap)
-                           : 0;
-  if (m && vsph_references_cavity_rms(tt, v, t->nrow, 17, 400.0, 1.0, to, e4,
+  size_t m = tt && v ? vsph_references_cavity_umin(
+                           tt, v, t->nrow, g.n, (double)CAV[q].Re, to, e, cap)
+                     : 0;
+  if (m) {
+    c->umin[q] = vsph_series_tail_mean(to, e, m, 0.8);
+    c->umin_swing[q] = vsph_series_tail_range(to, e, m, 0.8);
+  }
+  m = q == CAV_E1000 && tt && v
+          ? vsph_references_cavity_rms(tt, v, t->nrow, g.n, 1000.0, 1.0, to, e,
+                                       cap)
+          : 0;
+  if (m && vsph_references_cavity_rms(tt, v, t->nrow, g.n, 400.0, 1.0, to, e4,
                                       cap) == m) {
     c->d1000 = vsph_series_tail_mean(to, e, m, 0.8);
     c->d400 = vsph_series_tail_mean(to, e4, m, 0.8);
@@ -380,9 +360,8 @@ int vsph_report_channel_cavity_load(struct vsph_report *R,
     st = vsph_report_runs_get(&R->runs, &s, &c->cav[q]);
   }
   for (int q = 0; q < NCAV; q++) c->umin[q] = c->umin_swing[q] = (double)NAN;
-  for (int q = 0; q < ncav(R) && !st; q++)
-    st = cavity_umin(R, &c->cav[q], CAV[q].Re, &c->umin[q], &c->umin_swing[q]);
-  if (!st) st = cavity_between(R, c);
+  c->d1000 = c->d400 = c->dswing = (double)NAN;
+  for (int q = 0; q < ncav(R) && !st; q++) st = cavity_centrelines(R, c, q);
   return st;
 }
 
