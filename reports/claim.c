@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../analysis/series.h"
 #include "../common/status.h"
 #include "grade.h"
 
@@ -19,6 +20,7 @@
 #define MAXTESTS 24
 #define MAXIFS 16
 #define MAXWORDS 32
+#define MAXLETS 24
 
 void vsph_claim_clear(struct vsph_claim_vals *v) {
   v->n = 0;
@@ -81,6 +83,9 @@ struct block {
    * a name whose EXPR holds giving {{NAME}}, its last line "else" */
   char wname[MAXWORDS][32], wcond[MAXWORDS][256], wtext[MAXWORDS][400];
   int nwords;
+  /* measures the block derives from the part's: "let NAME: EXPR", in turn */
+  char lname[MAXLETS][32], lexpr[MAXLETS][256];
+  int nlets;
 };
 
 static const struct {
@@ -146,6 +151,38 @@ static int parse_test(const char *name, const char *head, const char *val,
   return VSPH_OK;
 }
 
+static int arith_value(const char *name, const char *text,
+                       const struct vsph_claim_vals *v, double *x);
+
+/* "let NAME: EXPR [-- WHAT]" into the block: a name no measure or derived
+ * measure of the block has yet, its expression well formed. */
+static int parse_let(const char *name, struct block *b, const char *key,
+                     const char *val) {
+  if (b->nlets == MAXLETS)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: more than %d let lines", name, MAXLETS);
+  char *ln = b->lname[b->nlets];
+  if (trim_copy(ln, sizeof b->lname[0], key + 4, strlen(key + 4)) || !*ln ||
+      !(isalpha((unsigned char)*ln) || *ln == '_') ||
+      strspn(ln,
+             "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+             "0123456789_") != strlen(ln))
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: '%s' names no measure", name, key);
+  for (int k = 0; k < b->nlets; k++)
+    if (!strcmp(b->lname[k], ln))
+      VSPH_FAIL(VSPH_EINVAL, "claim %s: let %s given twice", name, ln);
+  const char *dash = strstr(val, " -- ");
+  if (trim_copy(b->lexpr[b->nlets], sizeof b->lexpr[0], val,
+                dash ? (size_t)(dash - val) : strlen(val)) ||
+      !b->lexpr[b->nlets][0])
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: let %s: no expression, or one too long",
+              name, ln);
+  double x;
+  const int st = arith_value(name, b->lexpr[b->nlets], NULL, &x);
+  if (st) return st;
+  b->nlets++;
+  return VSPH_OK;
+}
+
 /* One field "key: value" into the block. */
 static int field(const char *name, struct block *b, const char *key,
                  const char *val) {
@@ -189,6 +226,7 @@ static int field(const char *name, struct block *b, const char *key,
     b->nwords++;
     return VSPH_OK;
   }
+  if (!strncmp(key, "let ", 4)) return parse_let(name, b, key, val);
   if (!strncmp(key, "test ", 5)) {
     if (b->ntests == MAXTESTS)
       VSPH_FAIL(VSPH_EINVAL, "claim %s: more than %d tests", name, MAXTESTS);
@@ -462,6 +500,189 @@ static int eval(const char *cond, const struct block *b, const int *holds) {
   return e.err || *e.s ? -1 : r;
 }
 
+/* ----------------------------------------------------------- arithmetic */
+
+/* A derived measure's expression ("let NAME: EXPR"): plain finite numbers,
+ * the part's measures and the block's earlier lets, + - * /, a unary -,
+ * parentheses, abs(x), max and min (two to four arguments),
+ * logplace(x, a, b) (vsph_series_log_between) and round(x). A NaN in gives
+ * a NaN out,
+ * max and min included (a figure not measured is never passed over, as
+ * C's fmax would). With no values (the lint) a name reads 0. */
+struct arith {
+  const char *s, *name; /* where it reads; the claim, for messages */
+  const char *text;     /* the whole expression, for messages */
+  const struct vsph_claim_vals *v;
+  int err; /* 1: reported */
+};
+
+static double ar_sum(struct arith *a);
+
+static double ar_fail(struct arith *a, const char *what, size_t n,
+                      const char *at) {
+  if (!a->err)
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "claim %s: let '%s': %s '%.*s'", a->name, a->text, what,
+                       (int)n, at);
+  a->err = 1;
+  return (double)NAN;
+}
+
+static void ar_skip(struct arith *a) {
+  while (*a->s == ' ' || *a->s == '\t') a->s++;
+}
+
+/* A number as people write it (no nan, inf or hex). */
+static double ar_number(struct arith *a) {
+  char *end;
+  const double x = strtod(a->s, &end);
+  const size_t n = (size_t)(end - a->s);
+  if (!n || strspn(a->s, "0123456789.eE+-") < n || !isfinite(x))
+    return ar_fail(a, "no plain finite number at", n ? n : 1, a->s);
+  a->s = end;
+  return x;
+}
+
+/* The value of measure @p n chars at @p at. */
+static double ar_measure(struct arith *a, const char *at, size_t n) {
+  if (!a->v) return 0.0;
+  for (size_t k = 0; k < a->v->n; k++)
+    if (strlen(a->v->key[k]) == n && !strncmp(a->v->key[k], at, n)) {
+      if (a->v->is_str[k]) return ar_fail(a, "a word, not a measure:", n, at);
+      return a->v->num[k];
+    }
+  return ar_fail(a, "no measure (the part sets none, nor a let before)", n, at);
+}
+
+/* A function's call after its name: abs(x); max(a, b, ...) and min(a, b,
+ * ...), two to four arguments; logplace(x, a, b), where x lies between a
+ * (0) and b (1) in logarithm (vsph_series_log_between); round(x), the
+ * nearest integer, halves away from zero. */
+static double ar_call(struct arith *a, const char *at, size_t n) {
+  static const struct {
+    const char *name;
+    int lo, hi; /* how many arguments */
+  } FN[] = {{"abs", 1, 1},
+            {"max", 2, 4},
+            {"min", 2, 4},
+            {"logplace", 3, 3},
+            {"round", 1, 1}};
+  size_t f = 0;
+  while (f < sizeof FN / sizeof FN[0] &&
+         (strlen(FN[f].name) != n || strncmp(FN[f].name, at, n)))
+    f++;
+  if (f == sizeof FN / sizeof FN[0]) return ar_fail(a, "no function", n, at);
+  double x[4];
+  int m = 0;
+  do {
+    a->s++; /* '(' or ',' */
+    if (m == FN[f].hi) return ar_fail(a, "too many arguments for", n, at);
+    x[m++] = ar_sum(a);
+    ar_skip(a);
+  } while (*a->s == ',');
+  if (*a->s != ')') return ar_fail(a, "no ')' closing", n, at);
+  if (m < FN[f].lo) return ar_fail(a, "too few arguments for", n, at);
+  a->s++;
+  if (f == 0) return fabs(x[0]);
+  if (f == 3) return vsph_series_log_between(x[0], x[1], x[2]);
+  if (f == 4) return round(x[0]);
+  double r = x[0];
+  for (int k = 0; k < m; k++) {
+    if (isnan(x[k])) return (double)NAN; /* never passed over */
+    if (f == 1 ? x[k] > r : x[k] < r) r = x[k];
+  }
+  return r;
+}
+
+static double ar_atom(struct arith *a) {
+  ar_skip(a);
+  const char *at = a->s;
+  if (*at == '-') {
+    a->s++;
+    return -ar_atom(a);
+  }
+  if (*at == '(') {
+    a->s++;
+    const double x = ar_sum(a);
+    ar_skip(a);
+    if (*a->s != ')') return ar_fail(a, "no ')' at", 1, a->s);
+    a->s++;
+    return x;
+  }
+  if (isdigit((unsigned char)*at) || *at == '.') return ar_number(a);
+  const size_t n = strspn(at,
+                          "abcdefghijklmnopqrstuvwxyz"
+                          "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_");
+  if (!n || isdigit((unsigned char)*at))
+    return ar_fail(a, "no number, measure or '(' at", *at ? 1 : 0, at);
+  a->s += n;
+  ar_skip(a);
+  if (*a->s == '(') return ar_call(a, at, n);
+  return ar_measure(a, at, n);
+}
+
+static double ar_product(struct arith *a) {
+  double x = ar_atom(a);
+  for (ar_skip(a); *a->s == '*' || *a->s == '/'; ar_skip(a)) {
+    const char op = *a->s++;
+    const double y = ar_atom(a);
+    x = op == '*' ? x * y : x / y;
+  }
+  return x;
+}
+
+static double ar_sum(struct arith *a) {
+  double x = ar_product(a);
+  for (ar_skip(a); *a->s == '+' || *a->s == '-'; ar_skip(a)) {
+    const char op = *a->s++;
+    const double y = ar_product(a);
+    x = op == '+' ? x + y : x - y;
+  }
+  return x;
+}
+
+/* Expression @p text on the measures @p v (NULL: its form only) into *x. */
+static int arith_value(const char *name, const char *text,
+                       const struct vsph_claim_vals *v, double *x) {
+  struct arith a = {text, name, text, v, 0};
+  *x = ar_sum(&a);
+  ar_skip(&a);
+  if (!a.err && *a.s)
+    ar_fail(&a, "more after the expression:", strlen(a.s), a.s);
+  return a.err ? VSPH_EINVAL : VSPH_OK;
+}
+
+/* The part's measures @p v and the block's lets, each in turn from those
+ * before it, into a copy *@p out (freed by the caller; NULL with @p v
+ * NULL, the lint). A let may not take the name of a measure the part set. */
+static int derive(const char *name, const struct block *b,
+                  const struct vsph_claim_vals *v,
+                  struct vsph_claim_vals **out) {
+  *out = NULL;
+  if (!v) return VSPH_OK;
+  struct vsph_claim_vals *w = malloc(sizeof *w);
+  if (!w) VSPH_FAIL(VSPH_ENOMEM, "cannot grade claim %s", name);
+  memcpy(w, v, sizeof *w);
+  for (int k = 0; k < b->nlets; k++) {
+    for (size_t q = 0; q < v->n; q++)
+      if (!strcmp(v->key[q], b->lname[k])) {
+        free(w);
+        VSPH_FAIL(VSPH_EINVAL,
+                  "claim %s: let %s: the part sets a measure of that name",
+                  name, b->lname[k]);
+      }
+    double x;
+    const int st = arith_value(name, b->lexpr[k], w, &x);
+    if (st) {
+      free(w);
+      return st;
+    }
+    vsph_claim_num(w, b->lname[k], x);
+  }
+  *out = w;
+  return VSPH_OK;
+}
+
 /* ------------------------------------------------------------ templates */
 
 /* A conditional placeholder's body "?EXPR|HOLDS|FAILS[|UNKNOWN]" (its
@@ -713,8 +934,11 @@ int vsph_claim_grade_text(const char *name, const char *text,
                           struct vsph_claim_row *row) {
   struct block *b = malloc(sizeof *b);
   if (!b) VSPH_FAIL(VSPH_ENOMEM, "cannot grade claim %s", name);
+  struct vsph_claim_vals *w = NULL;
   int st = parse(name, text, b);
-  if (!st) st = grade(name, b, v, row);
+  if (!st) st = derive(name, b, v, &w);
+  if (!st) st = grade(name, b, w, row);
+  free(w);
   free(b);
   return st;
 }
@@ -731,8 +955,11 @@ int vsph_claim_test_text(const char *name, const char *text, const char *test,
     free(b);
     VSPH_FAIL(VSPH_EINVAL, "claim %s: no test %s", name, test);
   }
-  if (!st) st = test_holds(name, b, k, v, holds);
+  struct vsph_claim_vals *w = NULL;
+  if (!st) st = derive(name, b, v, &w);
+  if (!st) st = test_holds(name, b, k, w, holds);
   if (!st && *holds == UNKNOWN) *holds = -1; /* not measured */
+  free(w);
   free(b);
   return st;
 }

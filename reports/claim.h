@@ -34,6 +34,18 @@
  *    failing, but finite, which fails; `within` is inclusive at its edge
  *    as the doubles compute |a - s| (a decimal edge such as 0.2 may sit
  *    a rounding away);
+ *  - `let NAME: EXPR [-- WHAT]` (any number, in turn): a measure the
+ *    block derives from the part's and from the lets before it, so that
+ *    arithmetic on figures (a ratio, a difference, an absolute value)
+ *    stands in the data beside the rule that reads it: plain finite
+ *    numbers, measures, + - * /, a unary -, parentheses, abs(x), max(a,
+ *    b, ...) and min(a, b, ...) of two to four, logplace(x, a, b) (where
+ *    x lies between a and b in logarithm: vsph_series_log_between),
+ *    round(x) (the nearest integer, halves away from zero); a
+ *    NaN in gives a NaN out, max and min included (a
+ *    figure not measured is never passed over). A let may not take the
+ *    name of a measure the part set; tests and templates read it as a
+ *    measure;
  *  - `if EXPR: VERDICT` (one or more, the first that holds is taken) and
  *    `else: VERDICT`: EXPR combines the tests' names with & (and), | (or),
  *    ! (not) and parentheses, in Kleene's three values (!unknown is

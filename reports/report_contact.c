@@ -753,55 +753,45 @@ static int shear_claims(struct vsph_report *R, const struct cres *cr,
   vsph_claim_clear(v);
   vsph_claim_num(v, "w", w);
   vsph_claim_num(v, "b", b);
-  vsph_claim_num(v, "ew", w / nb->paper_w - 1.0);
-  vsph_claim_num(v, "eb", b / nb->paper_b - 1.0);
+  vsph_claim_num(v, "paper_w", nb->paper_w);
+  vsph_claim_num(v, "paper_b", nb->paper_b);
+  vsph_claim_num(v, "lead_w", nb->lead_w);
+  vsph_claim_num(v, "lead_b", nb->lead_b);
   vsph_claim_num(v, "ws", coef(&cr->r[C_WS]));
   vsph_claim_num(v, "bs", coef(&cr->r[C_BS]));
   vsph_claim_num(v, "klw", nb->klat_w);
   vsph_claim_num(v, "klb", nb->klat_b);
-  vsph_claim_num(v, "ewl", w / nb->lead_w - 1.0);
-  vsph_claim_num(v, "ebl", b / nb->lead_b - 1.0);
   int st = vsph_report_doc_grade(R, "claims/contact.eta_num", v);
-  /* each material's departure from lead's eta_num/(Z D0), and its place in
-   * logarithm from lead's (0) to where eta_num independent of Z would put
-   * it (1: Z_lead/Z); a material not measured leaves both unmeasured */
-  double spread = 0, lean_m = 0;
-  static const int MAT[3] = {C_WATER, C_AL, C_TU};
+  /* each material's eta_num/(Z D0) and Z_lead/Z, where eta_num
+   * independent of Z would put it; the runs at 50 m/s and at 20 nm */
+  static const struct {
+    int run;
+    const char *w, *zr;
+  } MAT[3] = {{C_WATER, "w_water", "zr_water"},
+              {C_AL, "w_al", "zr_al"},
+              {C_TU, "w_tu", "zr_tu"}};
   const double z_lead = cr->r[C_W].rho0 * cr->r[C_W].c0;
-  for (int k = 0; k < 3; k++) {
-    const struct vsph_contact_shear *r = &cr->r[MAT[k]];
-    const double q = coef(r) / w;
-    const double lm =
-        vsph_series_log_between(q, 1.0, z_lead / (r->rho0 * r->c0));
-    spread =
-        isnan(q) || isnan(spread) ? (double)NAN : fmax(spread, fabs(q - 1.0));
-    lean_m = isnan(lm) || isnan(lean_m) ? (double)NAN : fmax(lean_m, lm);
-  }
-  const double q50 = coef(&cr->r[C_W50]) / w, q20 = coef(&cr->r[C_W20]) / w;
   vsph_claim_clear(v);
-  vsph_claim_num(v, "r50", q50 - 1.0);
-  vsph_claim_num(v, "spread", spread);
-  vsph_claim_num(v, "rd", q20 - 1.0);
-  /* the places in logarithm toward eta_num proportional to U0 (a tenth at
-   * 50 against 500 m/s) and independent of D0 (a half at 20 against 10
-   * nm), and toward independence of Z (above) */
-  vsph_claim_num(v, "lean_u", vsph_series_log_between(q50, 1.0, 0.1));
-  vsph_claim_num(v, "lean_d", vsph_series_log_between(q20, 1.0, 0.5));
-  vsph_claim_num(v, "lean_m", lean_m);
+  vsph_claim_num(v, "w", w);
+  for (int k = 0; k < 3; k++) {
+    const struct vsph_contact_shear *r = &cr->r[MAT[k].run];
+    vsph_claim_num(v, MAT[k].w, coef(r));
+    vsph_claim_num(v, MAT[k].zr, z_lead / (r->rho0 * r->c0));
+  }
+  vsph_claim_num(v, "w50", coef(&cr->r[C_W50]));
+  vsph_claim_num(v, "w20", coef(&cr->r[C_W20]));
   if (!st) st = vsph_report_doc_grade(R, "claims/contact.eta_linear", v);
   /* measured over (37) from the smallest alpha to the largest, and its
    * largest departure (whether it grows at every step: the block's tests) */
   static const int A[5] = {C_W, C_A055, C_A06, C_A075, C_A1};
-  double q[5], dev = 0;
   vsph_claim_clear(v);
-  for (int k = 0; k < 5; k++) {
-    q[k] = coef(&cr->r[A[k]]) / vsph_materials_eta_num_fit(CS[A[k]].alpha);
-    dev = fmax(dev, fabs(q[k] - 1.0));
-    char key[4];
-    snprintf(key, sizeof key, "q%d", k);
-    vsph_claim_num(v, key, q[k]);
+  for (int k = 0; k < 5; k++) { /* measured, and (37)'s at its alpha */
+    char key[2][4];
+    snprintf(key[0], sizeof key[0], "m%d", k);
+    snprintf(key[1], sizeof key[1], "f%d", k);
+    vsph_claim_num(v, key[0], coef(&cr->r[A[k]]));
+    vsph_claim_num(v, key[1], vsph_materials_eta_num_fit(CS[A[k]].alpha));
   }
-  vsph_claim_num(v, "dev", dev);
   if (!st) st = vsph_report_doc_grade(R, "claims/contact.eta_fit", v);
   vsph_claim_clear(v);
   vsph_claim_num(v, "ss0", nb->ss_spread[0]);
@@ -820,10 +810,6 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb,
   vsph_claim_num(v, "e1", e1);
   vsph_claim_num(v, "e0", nb->eta_eff[0]);
   vsph_claim_num(v, "e05", nb->eta_eff[1]);
-  vsph_claim_num(v, "rel", e1 / 2.3 - 1.0);
-  /* e1's place, in logarithm, from the physical eta to the uncorrected
-   * lattice's (zeta = 0) */
-  vsph_claim_num(v, "lean", vsph_series_log_between(e1, 2.3, nb->eta_eff[0]));
   int st = vsph_report_doc_grade(R, "claims/contact.zeta_one", v);
   /* U* = (e_R - e_L)/(e_R + e_L) with e = sqrt(rho eta) on each side
    * (U0 = 1, the sides at -1 and +1): the ratio a = e_R/e_L = (1 + U*)/
@@ -831,16 +817,11 @@ static int zeta_claims(struct vsph_report *R, const struct cnum *nb,
    * carry, glycerol's over paraffin's (a_fit/a_exact)^2 = 1 + vr times
    * eq. (27)'s (paraffin's over glycerol's: 1/(1 + vr)) */
   const double u0 = nb->ustar[0][0], ue = nb->ustar_exact[0];
-  const double vr =
-      pow(((1 + u0) / (1 - u0)) / ((1 + ue) / (1 - ue)), 2.0) - 1.0;
   vsph_claim_clear(v);
   vsph_claim_num(v, "u0", u0);
   vsph_claim_num(v, "u1", nb->ustar[0][1]);
   vsph_claim_num(v, "ue", ue);
   vsph_claim_num(v, "rms", nb->rms[0][0]);
-  vsph_claim_num(v, "du0", 100 * (u0 / ue - 1));
-  vsph_claim_num(v, "du1", 100 * (nb->ustar[0][1] / ue - 1));
-  vsph_claim_num(v, "dvr", 100 * (1 / (1 + vr) - 1));
   if (!st) st = vsph_report_doc_grade(R, "claims/contact.two_fluids", v);
   vsph_claim_clear(v);
   if (!st) st = vsph_report_doc_grade(R, "claims/contact.drop", v);
@@ -863,13 +844,6 @@ static int cyl_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
   vsph_claim_num(v, "z1", cy.ratio[CY_Z1_40]);
   vsph_claim_num(v, "p0", cy.ratio[CY_P0_40]);
   vsph_claim_num(v, "p1", cy.ratio[CY_P1_40]);
-  /* the share of the excess over theory that the correction removes */
-  vsph_claim_num(
-      v, "rem_g",
-      (cy.ratio[CY_Z0_40] - cy.ratio[CY_Z1_40]) / (cy.ratio[CY_Z0_40] - 1.0));
-  vsph_claim_num(
-      v, "rem_p",
-      (cy.ratio[CY_P0_40] - cy.ratio[CY_P1_40]) / (cy.ratio[CY_P0_40] - 1.0));
   vsph_claim_num(v, "fine", full ? cy.ratio[CY_Z0_80] : cy.ratio[CY_Z0_60]);
   vsph_claim_str(v, "fine_res", "%d", full ? 40 : 30);
   vsph_claim_str(v, "g40", "%s", "");
@@ -885,12 +859,10 @@ static int cyl_claims(struct vsph_report *R, struct vsph_claim_vals *v) {
   vsph_claim_str(v, "paper_res", "%s", full ? ", about 60 by its ratios" : "");
   st = vsph_report_doc_grade(R, "claims/contact.drag", v);
   /* the 2-D analogue: 1/U against zeta at 20 per diameter, linear? */
-  const double i0 = 1.0 / cy.U[CY_Z0_40], i5 = 1.0 / cy.U[CY_Z05_40],
-               i1 = 1.0 / cy.U[CY_Z1_40];
   vsph_claim_clear(v);
-  vsph_claim_num(v, "i0", i0 / i1);
-  vsph_claim_num(v, "i5", i5 / i1);
-  vsph_claim_num(v, "lin", (i5 - 0.5 * (i0 + i1)) / (i0 - i1));
+  vsph_claim_num(v, "u_z0", cy.U[CY_Z0_40]);
+  vsph_claim_num(v, "u_z05", cy.U[CY_Z05_40]);
+  vsph_claim_num(v, "u_z1", cy.U[CY_Z1_40]);
   if (!st) st = vsph_report_doc_grade(R, "claims/contact.falling_ball", v);
   vsph_claim_clear(v);
   if (!st) st = vsph_report_doc_grade(R, "claims/contact.ball_consistent", v);
