@@ -658,6 +658,9 @@ START_TEST(test_partly_claims_can_differ) {
   for (size_t k = 0; k < sizeof C / sizeof C[0]; k++) {
     vsph_claim_clear(&v);
     vsph_claim_str(&v, "cav_res", "x");
+    vsph_claim_str(&v, "re1000_run", "x");
+    vsph_claim_num(&v, "res", 30);
+    vsph_claim_num(&v, "t1", C[k].t_run < 80 ? 30 : 80);
     vsph_claim_num(&v, "e1", C[k].e1);
     vsph_claim_num(&v, "m1", 0.2);
     vsph_claim_num(&v, "ek", 0.03);
