@@ -22,6 +22,7 @@
 #include "../io/csv.h"
 #include "../io/plot.h"
 #include "../solver/viscous.h"
+#include "measures.h"
 #include "report_parts.h"
 
 /* A form as the channel flows' figures and tables name it: the label
@@ -966,46 +967,40 @@ static int map_plateau_claim(struct vsph_report *R, const struct chan *c,
   return vsph_report_doc_grade(R, "claims/channel.map_plateau", v);
 }
 
+_Static_assert(NMAP <= VSPH_MEASURES_MAP_MAXF, "the map fits the measures");
+
 /* The long-time robustness over Re (Basa §6.1.4, Fig. 5 and 7): the first
  * Re at which any model fails (the paper's "all models"), the first at
  * which E, D or C fails, and each form's robustness as the sum over the
  * Re run of min(t*_fail, 27.66). */
 static int map_claims(struct vsph_report *R, const struct chan *c,
                       struct vsph_claim_vals *v) {
-  int col[NRE];
+  int col[NRE], robust[NMAP];
   const int nre = map_cols(R, col);
-  double score[NMAP] = {0}, first = INFINITY, any = INFINITY, held = 0.0;
-  int who = -1; /* the model that fails first (the first in table order) */
-  for (int f = 0; f < NMAP; f++)
+  double tf[NMAP * NRE], re[NRE];
+  for (int q = 0; q < nre; q++) re[q] = MAP_RE[col[q]].Re;
+  for (int f = 0; f < NMAP; f++) {
+    robust[f] = MAP[f].robust;
     for (int q = 0; q < nre; q++) {
       char why;
-      const double tf = failure(&c->map[f][col[q]], &why),
-                   re = MAP_RE[col[q]].Re;
-      score[f] += fmin(tf, TSTAR_END);
-      if (MAP[f].robust && isfinite(tf)) first = fmin(first, re);
-      if (isfinite(tf) && re < any) any = re, who = f;
+      tf[f * nre + q] = failure(&c->map[f][col[q]], &why);
     }
-  for (int q = 0; q < nre; q++) { /* the largest Re all of E, D, C hold */
-    int all = 1;
-    for (int f = 0; f < NMAP; f++) {
-      char why;
-      if (MAP[f].robust) all &= !isfinite(failure(&c->map[f][col[q]], &why));
-    }
-    if (all) held = fmax(held, MAP_RE[col[q]].Re);
   }
+  struct vsph_measures_map mm; /* the first to fail is the first in order */
+  vsph_measures_map(tf, re, robust, NMAP, nre, TSTAR_END, &mm);
   map_vals(R, c, v);
-  vsph_claim_num(v, "any", any);
-  vsph_claim_str(v, "who", "%s", who >= 0 ? MAP[who].label : "none");
-  vsph_claim_num(v, "held", held);
-  vsph_claim_num(v, "first", first);
+  vsph_claim_num(v, "any", mm.any);
+  vsph_claim_str(v, "who", "%s", mm.who >= 0 ? MAP[mm.who].label : "none");
+  vsph_claim_num(v, "held", mm.held);
+  vsph_claim_num(v, "first", mm.first);
   int st = vsph_report_doc_grade(R, "claims/channel.map_failure", v);
   if (!st) st = map_plateau_claim(R, c, v);
   map_vals(R, c, v);
-  vsph_claim_num(v, "sE", score[MAP_E]);
-  vsph_claim_num(v, "sD", score[MAP_D]);
-  vsph_claim_num(v, "sC", score[MAP_C]);
-  vsph_claim_num(v, "sA0", score[MAP_A0]);
-  vsph_claim_num(v, "sB", score[MAP_B]);
+  vsph_claim_num(v, "sE", mm.score[MAP_E]);
+  vsph_claim_num(v, "sD", mm.score[MAP_D]);
+  vsph_claim_num(v, "sC", mm.score[MAP_C]);
+  vsph_claim_num(v, "sA0", mm.score[MAP_A0]);
+  vsph_claim_num(v, "sB", mm.score[MAP_B]);
   if (!st) st = vsph_report_doc_grade(R, "claims/channel.map_robust", v);
   return st;
 }

@@ -15,6 +15,7 @@
 #include "../io/csv.h"
 #include "../io/plot.h"
 #include "../solver/viscous.h"
+#include "measures.h"
 #include "report_channel.h"
 #include "report_fv.h"
 
@@ -539,16 +540,10 @@ int vsph_report_channel_cavity_visc(struct vsph_report *R,
     w[f] = c->umin_swing[z[f]];
     ok[f] = c->cav[z[f]].ok;
   }
-  int best = -1, all = 1; /* the closest form, as the text names it */
-  double swing = 0.0, next = INFINITY;
-  for (int f = 0; f < 4; f++) {
-    all &= ok[f];
-    if (!ok[f]) continue;
-    swing = fmax(swing, w[f]);
-    if (best < 0 || u[f] < u[best]) best = f;
-  }
-  for (int f = 0; f < 4; f++)
-    if (f != best && ok[f]) next = fmin(next, u[f]);
+  int all = 1;
+  for (int f = 0; f < 4; f++) all &= ok[f];
+  struct vsph_measures_closest cl; /* the closest, as the text names it */
+  vsph_measures_closest(u, w, ok, 4, &cl);
   vsph_claim_clear(v);
   /* each form's figure, or "stopped" where its run did not end; which
    * stopped, and when (their figure: nan) */
@@ -570,10 +565,10 @@ int vsph_report_channel_cavity_visc(struct vsph_report *R,
   if (!all) strncat(stopped, ")", sizeof stopped - strlen(stopped) - 1);
   vsph_claim_str(v, "stopped", "%s", stopped);
   vsph_claim_num(v, "ok4", (double)ok[3]);
-  vsph_claim_num(v, "next", next);
-  vsph_claim_num(v, "gap", best >= 0 ? next - u[best] : (double)NAN);
-  vsph_claim_num(v, "swing", swing);
-  vsph_claim_str(v, "best", "%d", best + 1);
+  vsph_claim_num(v, "next", cl.next);
+  vsph_claim_num(v, "gap", cl.gap);
+  vsph_claim_num(v, "swing", cl.swing);
+  vsph_claim_str(v, "best", "%d", cl.best + 1);
   vsph_claim_num(v, "res", (double)CAV[z[0]].res);
   vsph_claim_num(v, "t1", CAV[z[0]].t_end);
   vsph_claim_str(v, "ours_res", "%s",

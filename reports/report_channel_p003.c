@@ -13,6 +13,7 @@
 #include "../analysis/references.h"
 #include "../common/status.h"
 #include "../io/csv.h"
+#include "measures.h"
 #include "report_channel.h"
 
 /* Vukcevic et al.'s own set-up (their sec. 3): summation density, p =
@@ -311,84 +312,30 @@ static void sweep_rows(struct vsph_report *R,
 }
 
 /* The sweep's figures the reading and the claims share. */
-struct sweep {
-  int nbad, ntot;   /* non-physical runs (stopped or agitated); runs */
-  int mixed;        /* the first c whose dt do not all end alike (-1: none) */
-  char out[NSWC];   /* per c: its outcome where every dt ends alike, else
-                       'm' */
-  double acc;       /* largest (max - min)/min of the error over dt at a c
-                       whose runs all end unagitated (NaN: none) */
-  double rise;      /* the largest ratio of the error at a dt to the error
-                       at the next larger dt, over the c whose runs all end
-                       unagitated (below 1: the error falls as dt does at
-                       each); NaN where acc is, or a ratio is not measured */
-  int turn;         /* the first c where a smaller dt turns a non-physical
-                       run into a physical one (-1: none) */
-  double lag[NSWC]; /* per c where every dt stops: the smallest dt's stop
-                       over the larger ones' latest (NaN at the others) */
-  double zlo, zhi;  /* the zigzag at the smallest dt run over the c whose
-                       run ends unagitated: lowest, highest (NaN: none) */
-  int alo, ahi;     /* at which c */
-};
+_Static_assert(NSWC <= VSPH_MEASURES_SWEEP_MAXC &&
+                   NSWD <= VSPH_MEASURES_SWEEP_MAXD,
+               "the sweep fits the measures' arrays");
 
+/* The sweep's figures (reports/measures.h): each run's outcome, final
+ * error and stop, and the smallest dt's zigzag, per c and dt. */
 static void sweep_figures(const struct vsph_report_channel_p003 *p,
-                          struct sweep *w) {
-  *w = (struct sweep){.mixed = -1,
-                      .acc = (double)NAN,
-                      .rise = -(double)INFINITY,
-                      .turn = -1,
-                      .zlo = (double)NAN,
-                      .zhi = (double)NAN,
-                      .alo = -1,
-                      .ahi = -1};
-  const int nd = p->nd;
+                          struct vsph_measures_sweep *w) {
+  struct vsph_measures_sweep_in in = {.nc = NSWC, .nd = p->nd};
   for (int a = 0; a < NSWC; a++) {
-    char o[NSWD] = {0};
-    int same = 1, all_r = 1;
-    double lo = INFINITY, hi = -INFINITY;
-    for (int b = 0; b < nd; b++) {
-      o[b] = sweep_outcome(&p->sw[a][b]);
-      w->ntot++;
-      w->nbad += o[b] != 'r';
-      same &= o[b] == o[0];
-      all_r &= o[b] == 'r';
-      const double e = vsph_report_channel_last(&p->sw[a][b], "u_err");
-      if (isfinite(e)) lo = fmin(lo, e), hi = fmax(hi, e);
+    for (int b = 0; b < p->nd; b++) {
+      in.out[a][b] = sweep_outcome(&p->sw[a][b]);
+      in.err[a][b] = vsph_report_channel_last(&p->sw[a][b], "u_err");
+      in.t_stop[a][b] = p->sw[a][b].t_unstable;
     }
-    w->out[a] = same ? o[0] : 'm';
-    if (!same && w->mixed < 0) w->mixed = a;
-    if (all_r && lo > 0 && hi >= lo && !((hi - lo) / lo <= w->acc))
-      w->acc = (hi - lo) / lo;
-    for (int b = 1; b < nd && all_r; b++) { /* a ratio not measured: NaN */
-      const double q = vsph_report_channel_last(&p->sw[a][b], "u_err") /
-                       vsph_report_channel_last(&p->sw[a][b - 1], "u_err");
-      w->rise = isnan(q) || isnan(w->rise) ? (double)NAN : fmax(w->rise, q);
-    }
-    /* a smaller dt helps: a physical run below a non-physical one, or (the
-     * claim's rule on lag) a stop delayed */
-    int turns = 0;
-    for (int b = 1; b < nd; b++) turns |= o[b] == 'r' && o[b - 1] != 'r';
-    if (turns && w->turn < 0) w->turn = a;
-    w->lag[a] = (double)NAN;
-    if (same && o[0] == 's' && nd > 1) {
-      double other = 0.0;
-      for (int b = 0; b + 1 < nd; b++)
-        other = fmax(other, p->sw[a][b].t_unstable);
-      w->lag[a] = p->sw[a][nd - 1].t_unstable / other;
-    }
-    const double z = p->zsw[a][nd - 1].rms;
-    if (o[nd - 1] == 'r' && isfinite(z)) {
-      if (w->alo < 0 || z < w->zlo) w->zlo = z, w->alo = a;
-      if (w->ahi < 0 || z > w->zhi) w->zhi = z, w->ahi = a;
-    }
+    in.zig[a] = p->zsw[a][p->nd - 1].rms;
   }
-  if (!isfinite(w->acc)) w->rise = (double)NAN; /* no change, no fall */
+  vsph_measures_sweep(&in, w); /* within its arrays: asserted above */
 }
 
 /* What the sweep's table says (the section's reading and the claim). */
 static void sweep_read(const struct vsph_report_channel_p003 *p, char *buf,
                        size_t len) {
-  struct sweep w;
+  struct vsph_measures_sweep w;
   sweep_figures(p, &w);
   static const char *const WORD[] = {['r'] = "runs",
                                      ['a'] = "runs but agitates",
@@ -581,7 +528,7 @@ static int p003_sweep_claims(struct vsph_report *R,
                              const struct vsph_report_channel_p003 *p,
                              struct vsph_claim_vals *v) {
   static const char *const DT = "claims/channel.p003_dt";
-  struct sweep w;
+  struct vsph_measures_sweep w;
   sweep_figures(p, &w);
   char read[1024];
   sweep_read(p, read, sizeof read);

@@ -29,6 +29,7 @@
 #include "../solver/scene.h"
 #include "../solver/viscous.h"
 #include "grade.h"
+#include "measures.h"
 #include "report_fv.h"
 #include "report_parts.h"
 
@@ -298,18 +299,14 @@ static int signs_claim(struct vsph_report *R, struct vsph_claim_vals *v) {
   const double dx = 1.0 / (double)nacross, h = sp.hdx * dx;
   vsph_claim_clear(v);
   vsph_claim_num(v, "n", (double)nacross);
+  int use[80]; /* the rows within kappa h of the top */
+  for (size_t k = 0; k < n; k++) use[k] = !(0.5 - y[k] > 3.0 * h);
   for (int fm = 0; fm < NFORM; fm++) {
-    int last = 0, changes = 0;
-    for (size_t k = 0; k < n; k++) {
-      if (0.5 - y[k] > 3.0 * h) continue; /* within kappa h of the top */
-      /* a value at rounding level of the surface row's has no sign: the
-       * exact value is 0 inside (a linear field) and the sums of order-1
-       * terms cancel there to about 1e-15 of them */
-      if (fabs(f[fm][k]) < 1e-12 * fabs(f[fm][n - 1])) continue;
-      const int s = f[fm][k] > 0 ? 1 : -1;
-      changes += last && s != last;
-      last = s;
-    }
+    /* a value at rounding level of the surface row's has no sign: the
+     * exact value is 0 inside (a linear field) and the sums of order-1
+     * terms cancel there to about 1e-15 of them */
+    const int changes =
+        vsph_measures_sign_changes(f[fm], use, n, 1e-12 * fabs(f[fm][n - 1]));
     vsph_claim_num(v, vsph_viscous_name(fm), changes);
   }
   return vsph_report_doc_grade(R, "claims/paper.signs", v);
@@ -423,24 +420,21 @@ static int square_onset_claim(struct vsph_report *R,
                               struct vsph_claim_vals *v) {
   const struct vsph_report_ladderdef *L =
       vsph_report_runs_ladder(&R->runs, 1, 0);
-  int st = VSPH_OK, nstop = 0, ok;
-  double tpv = INFINITY, on_lo = INFINITY, on_hi = -INFINITY, tu;
-  double on = (double)NAN, on_first = (double)NAN;
+  int st = VSPH_OK, ok;
+  double tu, ons[VSPH_REPORT_LADDER], stops[VSPH_REPORT_LADDER];
   for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
-    if (!lr->ok[PVWF][k]) {
-      nstop++;
-      tpv = fmin(tpv, lr->t_unstable[PVWF][k]);
-    }
+    stops[k] = lr->ok[PVWF][k] ? (double)NAN : lr->t_unstable[PVWF][k];
     struct vsph_jobs_spec spec = {L->scene, "pvwf", L->res[k],
                                   L->t_end, NULL,   NULL};
-    if ((st = square_onset_of(R, &spec, rr, &on, &ok, &tu))) break;
-    if (isfinite(on)) {
-      on_lo = fmin(on_lo, on);
-      on_hi = fmax(on_hi, on);
-    }
-    if (k == 0) on_first = on;
-  } /* on: the finest rung's */
+    st = square_onset_of(R, &spec, rr, &ons[k], &ok, &tu);
+  }
   if (st) return st;
+  /* the onsets' range over the rungs, and the earliest of the stops */
+  double on_lo, on_hi, tpv;
+  size_t nstop;
+  vsph_measures_extent(ons, VSPH_REPORT_LADDER, &on_lo, &on_hi, NULL);
+  vsph_measures_extent(stops, VSPH_REPORT_LADDER, &tpv, NULL, &nstop);
+  const double on = ons[VSPH_REPORT_LADDER - 1], on_first = ons[0];
   const struct vsph_jobs_spec ds = square_delta_spec(R);
   double don;
   if ((st = square_onset_of(R, &ds, rr, &don, &ok, &tu))) return st;
@@ -450,7 +444,7 @@ static int square_onset_claim(struct vsph_report *R,
   vsph_claim_num(v, "onset", VSPH_REPORT_ONSET);
   vsph_claim_num(v, "on_lo", on_lo);
   vsph_claim_num(v, "on_hi", on_hi);
-  vsph_claim_num(v, "nstop", nstop);
+  vsph_claim_num(v, "nstop", (double)nstop);
   vsph_claim_num(v, "nrung", VSPH_REPORT_LADDER);
   vsph_claim_num(v, "tstop", nstop ? tpv : (double)NAN);
   vsph_claim_num(v, "on_fine", on);
@@ -861,10 +855,6 @@ static int vortex_follow(struct vsph_report *R, const struct vortex *vx,
     }
   }
   for (int l = 0; l < 2; l++) {
-    num_layout(v, "meaf_off", l, fabs(ly->loss[l][MEAF][K] - 1));
-    num_layout(
-        v, "follow_off", l,
-        fmax(fabs(ly->loss[l][MGF][K] - 1), fabs(ly->loss[l][PVWF][K] - 1)));
     /* which of MGF and PVWF stop on the layout */
     char who[40] = "", key[16];
     size_t m = 0;
@@ -895,8 +885,7 @@ static int vortex_below(struct vsph_report *R, const struct vortex *vx,
     num_layout(v, "mgf", l, ly->err[l][MGF][K]);
     num_layout(v, "pvwf", l, ly->err[l][PVWF][K]);
     num_layout(v, "pvwf_ran", l, ly->ok[l][PVWF][K]);
-    num_layout(v, "noise", l,
-               fabs(ly->err[l][MGF][K] - ly->err[l][MGF][K - 1]));
+    num_layout(v, "mgf_prev", l, ly->err[l][MGF][K - 1]);
   }
   return vsph_report_doc_grade(R, "claims/paper.vortex_below", v);
 }
@@ -924,12 +913,12 @@ static int vortex_converges(struct vsph_report *R, const struct vortex *vx,
     num_layout(v, "partial", l, s->partial);
     num_layout(v, "err", l, e[K]);
     num_layout(v, "err0", l, e[0]);
-    num_layout(v, "half", l, 0.5 * e[0]);
+
     /* PVWF's error, where its whole ladder ran to the end */
     int pok = 1;
     for (int k = 0; k < VSPH_REPORT_LADDER; k++) pok &= ly->ok[l][PVWF][k];
     num_layout(v, "pvwf", l, pok ? p[K] : (double)NAN);
-    num_layout(v, "pvwf_half", l, 0.5 * p[0]);
+    num_layout(v, "pvwf0", l, p[0]);
   }
   return vsph_report_doc_grade(R, "claims/paper.vortex_converges", v);
 }

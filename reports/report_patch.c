@@ -16,6 +16,7 @@
 #include "../io/csv.h"
 #include "../io/plot.h"
 #include "grade.h"
+#include "measures.h"
 #include "report_parts.h"
 
 #define NLAP 4
@@ -265,14 +266,18 @@ int vsph_report_patch_claims(struct vsph_report *R) {
    * each sampling's values are from Table 1: the largest factor either
    * way over the forms and resolutions; far[s][g]: sampling s (0 the
    * line, 1 the whole set), forms g (0 VISC-01/02, 1 VISC-03/04) */
-  double far[2][2] = {{1.0, 1.0}, {1.0, 1.0}};
-  for (int k = 0; k < NRES; k++)
-    for (int f = 0; f < NLAP; f++) {
-      const double a = t.line[0][k][f] / PAPER[0][k][f],
-                   b = t.err[0][k][f] / PAPER[0][k][f];
-      far[0][f / 2] = fmax(far[0][f / 2], fmax(a, 1.0 / a));
-      far[1][f / 2] = fmax(far[1][f / 2], fmax(b, 1.0 / b));
-    }
+  double far[2][2];
+  for (int g = 0; g < 2; g++) { /* a pair of forms' columns, every row */
+    double line[2 * NRES], all[2 * NRES], paper[2 * NRES];
+    for (int k = 0; k < NRES; k++)
+      for (int j = 0; j < 2; j++) {
+        line[2 * k + j] = t.line[0][k][2 * g + j];
+        all[2 * k + j] = t.err[0][k][2 * g + j];
+        paper[2 * k + j] = PAPER[0][k][2 * g + j];
+      }
+    far[0][g] = vsph_measures_max_factor(line, paper, 2 * NRES);
+    far[1][g] = vsph_measures_max_factor(all, paper, 2 * NRES);
+  }
   vsph_claim_clear(v);
   for (int f = 0; f < NLAP; f++) { /* the slope on the line */
     char key[8];

@@ -38,6 +38,7 @@ Suite *vsph_library_suite(void);
 Suite *vsph_series_suite(void);
 Suite *vsph_grade_suite(void);
 Suite *vsph_claim_suite(void);
+Suite *vsph_measures_suite(void);
 Suite *vsph_api_suite(void);
 Suite *vsph_fvref_suite(void);
 

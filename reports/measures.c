@@ -1,0 +1,142 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+/* The claims' figures over several runs or rows (measures.h). */
+#include "measures.h"
+
+#include <math.h>
+
+void vsph_measures_extent(const double *x, size_t n, double *lo, double *hi,
+                          size_t *count) {
+  double l = INFINITY, h = -INFINITY;
+  size_t m = 0;
+  for (size_t k = 0; k < n; k++)
+    if (isfinite(x[k])) {
+      l = fmin(l, x[k]);
+      h = fmax(h, x[k]);
+      m++;
+    }
+  if (lo) *lo = l;
+  if (hi) *hi = h;
+  if (count) *count = m;
+}
+
+double vsph_measures_max_factor(const double *a, const double *b, size_t n) {
+  double far = 1.0;
+  for (size_t k = 0; k < n; k++) {
+    if (!(a[k] > 0 && b[k] > 0 && isfinite(a[k]) && isfinite(b[k])))
+      return INFINITY;
+    const double q = a[k] / b[k];
+    far = fmax(far, fmax(q, 1.0 / q));
+  }
+  return far;
+}
+
+int vsph_measures_sign_changes(const double *f, const int *use, size_t n,
+                               double floor) {
+  int last = 0, changes = 0;
+  for (size_t k = 0; k < n; k++) {
+    if (!use[k] || !(fabs(f[k]) >= floor)) continue;
+    const int s = f[k] > 0 ? 1 : -1;
+    changes += last && s != last;
+    last = s;
+  }
+  return changes;
+}
+
+void vsph_measures_closest(const double *u, const double *swing, const int *ok,
+                           int n, struct vsph_measures_closest *out) {
+  int best = -1;
+  double sw = 0.0, next = INFINITY;
+  for (int f = 0; f < n; f++) {
+    if (!ok[f]) continue;
+    sw = fmax(sw, swing[f]);
+    if (best < 0 || u[f] < u[best]) best = f;
+  }
+  for (int f = 0; f < n; f++)
+    if (f != best && ok[f]) next = fmin(next, u[f]);
+  out->best = best;
+  out->next = next;
+  out->gap = best >= 0 ? next - u[best] : (double)NAN;
+  out->swing = sw;
+}
+
+int vsph_measures_map(const double *tf, const double *re, const int *robust,
+                      int nf, int nre, double cap,
+                      struct vsph_measures_map *out) {
+  if (nf < 0 || nf > VSPH_MEASURES_MAP_MAXF || nre < 0) return -1;
+  *out = (struct vsph_measures_map){
+      .any = INFINITY, .who = -1, .first = INFINITY, .held = 0.0};
+  for (int f = 0; f < nf; f++)
+    for (int q = 0; q < nre; q++) {
+      const double t = tf[f * nre + q];
+      out->score[f] += fmin(t, cap);
+      if (robust[f] && isfinite(t)) out->first = fmin(out->first, re[q]);
+      if (isfinite(t) && re[q] < out->any) out->any = re[q], out->who = f;
+    }
+  for (int q = 0; q < nre; q++) { /* the largest Re all robust forms hold */
+    int all = 1;
+    for (int f = 0; f < nf; f++)
+      if (robust[f]) all &= !isfinite(tf[f * nre + q]);
+    if (all) out->held = fmax(out->held, re[q]);
+  }
+  return 0;
+}
+
+/* Sound speed @p a's row of the sweep into @p w. */
+static void sweep_row(const struct vsph_measures_sweep_in *in, int a,
+                      struct vsph_measures_sweep *w) {
+  const int nd = in->nd;
+  const char *o = in->out[a];
+  const double *e = in->err[a];
+  int same = 1, all_r = 1;
+  double lo = INFINITY, hi = -INFINITY;
+  for (int b = 0; b < nd; b++) {
+    w->ntot++;
+    w->nbad += o[b] != 'r';
+    same &= o[b] == o[0];
+    all_r &= o[b] == 'r';
+    if (isfinite(e[b])) lo = fmin(lo, e[b]), hi = fmax(hi, e[b]);
+  }
+  w->out[a] = same ? o[0] : 'm';
+  if (!same && w->mixed < 0) w->mixed = a;
+  if (all_r && lo > 0 && hi >= lo && !((hi - lo) / lo <= w->acc))
+    w->acc = (hi - lo) / lo;
+  for (int b = 1; b < nd && all_r; b++) { /* a ratio not measured: NaN */
+    const double q = e[b] / e[b - 1];
+    w->rise = isnan(q) || isnan(w->rise) ? (double)NAN : fmax(w->rise, q);
+  }
+  /* a smaller dt helps: a physical run below a non-physical one, or (the
+   * claim's rule on lag) a stop delayed */
+  int turns = 0;
+  for (int b = 1; b < nd; b++) turns |= o[b] == 'r' && o[b - 1] != 'r';
+  if (turns && w->turn < 0) w->turn = a;
+  w->lag[a] = (double)NAN;
+  if (same && o[0] == 's' && nd > 1) {
+    double other = 0.0;
+    for (int b = 0; b + 1 < nd; b++) other = fmax(other, in->t_stop[a][b]);
+    w->lag[a] = in->t_stop[a][nd - 1] / other;
+  }
+  const double z = in->zig[a];
+  if (o[nd - 1] == 'r' && isfinite(z)) {
+    if (w->alo < 0 || z < w->zlo) w->zlo = z, w->alo = a;
+    if (w->ahi < 0 || z > w->zhi) w->zhi = z, w->ahi = a;
+  }
+}
+
+int vsph_measures_sweep(const struct vsph_measures_sweep_in *in,
+                        struct vsph_measures_sweep *w) {
+  if (in->nc < 0 || in->nc > VSPH_MEASURES_SWEEP_MAXC || in->nd < 1 ||
+      in->nd > VSPH_MEASURES_SWEEP_MAXD)
+    return -1;
+  *w = (struct vsph_measures_sweep){.mixed = -1,
+                                    .acc = (double)NAN,
+                                    .rise = -(double)INFINITY,
+                                    .turn = -1,
+                                    .zlo = (double)NAN,
+                                    .zhi = (double)NAN,
+                                    .alo = -1,
+                                    .ahi = -1};
+  for (int a = 0; a < in->nc; a++) sweep_row(in, a, w);
+  if (!isfinite(w->acc)) w->rise = (double)NAN; /* no change, no fall */
+  return 0;
+}
