@@ -310,13 +310,21 @@ static size_t xml_text(char *out, const char *text) {
   return k;
 }
 
+/* The title of the rounding band's key entry where no value lies below the
+ * rounding level (the .gp then gives it no key title, and gnuplot names its
+ * empty group "ID_plot_K" after the curves). */
+static const char ROUNDING_NONE[] =
+    "rounding band: no value lies below the rounding level here";
+
 /* DIR/NAME.svg's groups of the curves out of the key titled by their
- * hover text (vsph_plot_add_unkeyed): gnuplot titles the group of curve K
- * (1, 2, ... in plot order) without a key title "ID_plot_K" (svg_id). */
+ * hover text (vsph_plot_add_unkeyed), and an empty rounding band's by
+ * ROUNDING_NONE: gnuplot titles the group of curve K (1, 2, ... in plot
+ * order) without a key title "ID_plot_K" (svg_id). */
 static int svg_hover(const struct vsph_plot *pl) {
   size_t nh = 0;
   for (size_t k = 0; k < pl->n; k++) nh += pl->s[k].hover[0] != '\0';
-  if (!nh) return VSPH_OK;
+  const int band = pl->logy && pl->rounding > 0.0;
+  if (!nh && !band) return VSPH_OK;
   char path[1024], svg_name[160], id[128], want[200];
   snprintf(path, sizeof path, "%s/%s.svg", pl->dir, pl->name);
   snprintf(svg_name, sizeof svg_name, "%s.svg", pl->name);
@@ -324,7 +332,7 @@ static int svg_hover(const struct vsph_plot *pl) {
   size_t len = 0;
   char *svg = vsph_files_slurp(path, &len);
   const size_t room = 5 * sizeof pl->s[0].hover + sizeof "<title></title>";
-  char *out = svg ? malloc(len + nh * room + 1) : NULL;
+  char *out = svg ? malloc(len + (nh + 1) * room + 1) : NULL;
   if (!out) {
     free(svg);
     VSPH_FAIL(VSPH_EIO, "cannot read %s to title its curves", path);
@@ -351,6 +359,14 @@ static int svg_hover(const struct vsph_plot *pl) {
     o += xml_text(o, pl->s[k].hover);
     memcpy(o, "</title>", 8);
     o += 8;
+    in = at + strlen(want);
+  }
+  snprintf(want, sizeof want, "<title>%s_plot_%zu</title>", id, pl->n + 1);
+  const char *at = band ? strstr(in, want) : NULL;
+  if (at) { /* the band's key entry, with no title: none is drawn */
+    memcpy(o, in, (size_t)(at - in));
+    o += at - in;
+    o += (size_t)sprintf(o, "<title>%s</title>", ROUNDING_NONE);
     in = at + strlen(want);
   }
   memcpy(o, in, len - (size_t)(in - svg) + 1); /* and its NUL */

@@ -266,8 +266,10 @@ static int sq_figures(struct vsph_report *R) {
                        "lines dt 2 lw 1 lc rgb '#aa0000'");
   snprintf(band, sizeof band, "1:(%.6e)", -s->band);
   if (!st)
-    st = vsph_plot_add(&pd, "fv_square.csv", band, "",
-                       "lines dt 2 lw 1 lc rgb '#aa0000'");
+    st = vsph_plot_add_unkeyed(&pd, "fv_square.csv", band,
+                               "- the 320-cell grid's error band (its lower "
+                               "edge)",
+                               "lines dt 2 lw 1 lc rgb '#aa0000'");
   for (int f = 0; f < NFORM && !st; f++)
     for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
       struct vsph_jobs_spec rs = {

@@ -74,10 +74,13 @@ static int figure(struct vsph_report *R, int dim, int which) {
       static const int PT[] = {6, 8, 4, 12, 2};
       snprintf(style, sizeof style, "linespoints %slw 2 lc %zu pt %d pi 5",
                dashed ? "dt 2 " : "", ki + 1, PT[ki % 5]);
-      st = vsph_plot_add(
-          &pl, file,
-          which ? (dashed ? "1:5" : "1:4") : (dashed ? "1:3" : "1:2"),
-          dashed ? "" : k->name, style);
+      const char *using =
+          which ? (dashed ? "1:5" : "1:4") : (dashed ? "1:3" : "1:2");
+      char hover[64]; /* the dashed tensor is out of the key */
+      snprintf(hover, sizeof hover, "%s, %s (dashed)", k->name,
+               which ? "M_nn" : "h N_n");
+      st = dashed ? vsph_plot_add_unkeyed(&pl, file, using, hover, style)
+                  : vsph_plot_add(&pl, file, using, k->name, style);
     }
   if (st) return st;
   vsph_text_set(&R->tv, "title", "%s", title);

@@ -196,6 +196,26 @@ START_TEST(test_figure_three_formats) {
   snprintf(log, sizeof log, "%s/fig_line.log", dir);
   vsph_test_slurp(log, path, sizeof path);
   ck_assert_str_eq(path, "");
+  /* every group titled: the band's key entry by its words; where no value
+   * lies below the rounding level (1e-20 here) the .gp gives the entry no
+   * title, and its empty group is titled as such, not gnuplot's
+   * "fig_none_plot_2" */
+  ck_assert_ptr_nonnull(strstr(svg, "<title>rounding level (values below"));
+  ck_assert_ptr_null(strstr(svg, "_plot_2</title>"));
+  vsph_plot_init(&pl, dir, "fig_none", "none below", "h (m)", "ν");
+  pl.logx = pl.logy = 1;
+  pl.rounding = 1e-20;
+  ck_assert_int_eq(
+      vsph_plot_add(&pl, "line.csv", "1:2", "P_{visc}", "linespoints lt 1"),
+      VSPH_OK);
+  ck_assert_int_eq(vsph_plot_write(&pl), VSPH_OK);
+  snprintf(path, sizeof path, "%s/fig_none.svg", dir);
+  vsph_test_slurp(path, svg, sizeof svg);
+  ck_assert_msg(strstr(svg,
+                       "<title>rounding band: no value lies below the "
+                       "rounding level here</title>"),
+                "no band title in %s", path);
+  ck_assert_ptr_null(strstr(svg, "_plot_2</title>"));
 }
 END_TEST
 
