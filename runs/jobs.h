@@ -186,21 +186,32 @@ struct vsph_jobs_eta {
   double cost;        /* particles x neighbours x steps: DONE, the steps it took
                          (0: it failed and measures nothing); else the plan's */
   double wall;        /* DONE: its wall time; RUNNING: its time so far */
-  double ended;       /* DONE: when it finished (any clock) */
   int state;          /* VSPH_JOBS_ETA_* */
   const char *family; /* runs of one family share a rate */
+  double per_step;    /* particles x neighbours: a step's pair interactions
+                         (0: not known, its steps then weigh nothing) */
 };
 
+/* A step's work beyond its pair interactions (the neighbour search, the
+ * integrator's sweeps, walls, diagnostics, output), in pair interactions:
+ * fitted as wall/steps = c + r x (x: particles x neighbours) per family
+ * over the quick report's runs on the project's 2-core machine, c/r is
+ * 2.0-5.0e4 for the free-surface scenes' families (median 2.4e4) and
+ * 1.7e3-3.8e4 for the channels'. Replayed on six whole make-report logs,
+ * the time left then stays within 0.80-1.28 of the truth from the first
+ * tenth on (0.61-1.82 with a fixed part per run from the family's last
+ * two runs); docs/usage.md, "time left". */
+#define VSPH_JOBS_STEP_WORK 2.0e4
+
 /* The wall time left of @p n runs, in the order they start, @p width at a
- * time. A run not done takes what its family's last two finished runs
- * say: the line through their (cost, wall time), a fixed part and a rate,
- * where both come out non-negative (a small run's fixed costs weigh more),
- * else the last one's rate (the runs go costliest first, so the last is
- * the nearest in size); a family with no finished run takes all finished
- * runs' wall time over their cost. A running run's time so far is taken
- * off. The runs are laid on the @p width lanes in their order, each on
- * the lane free first. @return the seconds left, or -1 while no run has
- * finished (nothing to measure a rate by). */
+ * time. A run's work is its pair interactions and VSPH_JOBS_STEP_WORK for
+ * each of its steps (cost / per_step of them), so that a small run's many
+ * steps weigh what they cost; a run not done takes its family's rate, the
+ * wall time of all its finished runs over their work, or, in a family with
+ * none finished, all finished runs' rate. A running run's time so far is
+ * taken off. The runs are laid on the @p width lanes in their order, each
+ * on the lane free first. @return the seconds left, or -1 while no run
+ * has finished (nothing to measure a rate by). */
 double vsph_jobs_local_eta(const struct vsph_jobs_eta *r, size_t n,
                            size_t width);
 

@@ -19,54 +19,45 @@
 
 /* ------------------------------------------------------ the missing runs */
 
+/* Run @p r's work: its pair interactions and a step's work beyond them
+ * for each of its steps (VSPH_JOBS_STEP_WORK). */
+static double work_of(const struct vsph_jobs_eta *r) {
+  return r->per_step > 0.0 ? r->cost * (1.0 + VSPH_JOBS_STEP_WORK / r->per_step)
+                           : r->cost;
+}
+
+/* Seconds per unit of work of the finished runs of @p family (all, when
+ * NULL); 0 where none measured any. */
+static double eta_rate(const struct vsph_jobs_eta *r, size_t n,
+                       const char *family) {
+  double work = 0.0, wall = 0.0;
+  for (size_t k = 0; k < n; k++)
+    if (r[k].state == VSPH_JOBS_ETA_DONE && r[k].cost > 0.0 &&
+        (!family || !strcmp(r[k].family, family))) {
+      work += work_of(&r[k]);
+      wall += r[k].wall;
+    }
+  return work > 0.0 ? wall / work : 0.0;
+}
+
 double vsph_jobs_local_eta(const struct vsph_jobs_eta *r, size_t n,
                            size_t width) {
-  double cost_all = 0.0, wall_all = 0.0; /* every finished run */
-  for (size_t k = 0; k < n; k++)
-    if (r[k].state == VSPH_JOBS_ETA_DONE && r[k].cost > 0.0) {
-      cost_all += r[k].cost;
-      wall_all += r[k].wall;
-    }
-  if (cost_all <= 0.0 || width < 1) return -1.0;
-  const size_t w = width;
-  double *lane = calloc(w, sizeof *lane); /* when each is free, from now */
+  const double all = eta_rate(r, n, NULL);
+  if (all <= 0.0 || width < 1) return -1.0;
+  double *lane = calloc(width, sizeof *lane); /* when each is free, from now */
   if (!lane) return -1.0;
   for (size_t k = 0; k < n; k++) {
     if (r[k].state == VSPH_JOBS_ETA_DONE) continue;
-    size_t last = n, prev = n; /* the family's last two finished runs */
-    for (size_t i = 0; i < n; i++) {
-      if (r[i].state != VSPH_JOBS_ETA_DONE || r[i].cost <= 0.0 ||
-          strcmp(r[i].family, r[k].family))
-        continue;
-      if (last == n || r[i].ended > r[last].ended) {
-        prev = last;
-        last = i;
-      } else if (prev == n || r[i].ended > r[prev].ended) {
-        prev = i;
-      }
-    }
-    double fixed = 0.0, rate = wall_all / cost_all;
-    if (last < n) rate = r[last].wall / r[last].cost;
-    if (prev < n && r[prev].cost != r[last].cost) {
-      /* the line through the two: a fixed part and a rate, where both
-       * come out non-negative */
-      const double b =
-          (r[last].wall - r[prev].wall) / (r[last].cost - r[prev].cost);
-      const double a = r[last].wall - b * r[last].cost;
-      if (b >= 0.0 && a >= 0.0) {
-        fixed = a;
-        rate = b;
-      }
-    }
-    double need = fixed + rate * r[k].cost;
+    const double own = eta_rate(r, n, r[k].family);
+    double need = (own > 0.0 ? own : all) * work_of(&r[k]);
     if (r[k].state == VSPH_JOBS_ETA_RUNNING) need = fmax(need - r[k].wall, 0.0);
     size_t first = 0; /* the lane free first takes it */
-    for (size_t i = 1; i < w; i++)
+    for (size_t i = 1; i < width; i++)
       if (lane[i] < lane[first]) first = i;
     lane[first] += need;
   }
   double left = 0.0;
-  for (size_t i = 0; i < w; i++) left = fmax(left, lane[i]);
+  for (size_t i = 0; i < width; i++) left = fmax(left, lane[i]);
   free(lane);
   return left;
 }
@@ -241,6 +232,7 @@ struct vsph_jobs_eta *vsph_jobs_local_eta_start(struct vsph_jobs_job **order,
   for (size_t k = 0; e && k < m; k++) {
     e[k].cost = vsph_jobs_cost_of(order[k]);
     e[k].family = order[k]->family;
+    e[k].per_step = order[k]->particles * order[k]->neighbours;
   }
   return e;
 }
@@ -306,7 +298,6 @@ int vsph_jobs_local_run(struct vsph_jobs *J, int width) {
       const double now = omp_get_wtime();
       if (eta) { /* a failed run measures nothing */
         eta[k].state = VSPH_JOBS_ETA_DONE;
-        eta[k].ended = now - t0;
         eta[k].wall = s ? 0.0 : now - t_start;
         eta[k].cost = s ? 0.0 : vsph_jobs_local_cost_taken(order[k]);
       }

@@ -174,7 +174,6 @@ static void pool_ended(struct pool *P, size_t k, int ws) {
   j->cached = P->status[k] == 0 && vsph_rundir_key_matches(j->dir, j->key);
   const double now = omp_get_wtime(), el = now - P->t0;
   P->eta[k].state = VSPH_JOBS_ETA_DONE; /* a failed run measures nothing */
-  P->eta[k].ended = el;
   P->eta[k].wall = j->cached ? now - P->t1[k] : 0.0;
   P->eta[k].cost = j->cached ? vsph_jobs_local_cost_taken(j) : 0.0;
   if (j->cached) {

@@ -195,43 +195,47 @@ START_TEST(test_claims_tally) {
 }
 END_TEST
 
-/* The time left of the report's runs, worked by hand. Family A's last
- * two finished runs, (cost 4, 5 s) and (2, 3 s), lie on 1 s + 1 s per
- * unit; B has one, 4 s per unit; C none: all finished runs' 12 s over
- * 7 units. */
+/* The time left of the report's runs, worked by hand, with a step's work
+ * beyond its pairs S = VSPH_JOBS_STEP_WORK = 2e4 pair interactions. A
+ * run's work is cost (1 + S/per_step): family A's two finished runs, cost
+ * 2e4 at 2e4 a step (work 4e4) in 4 s and 4e4 at 4e4 a step (6e4) in 6 s,
+ * 1e-4 s a unit; B's, 6e4 at 2e4 a step (three steps, 12e4) in 6 s, 5e-5;
+ * C none: every finished run's 16 s over 22e4, 8e-4/11. */
 START_TEST(test_time_left) {
+  ck_assert_double_eq(VSPH_JOBS_STEP_WORK, 2e4); /* the figures below */
+  enum { D = VSPH_JOBS_ETA_DONE, R = VSPH_JOBS_ETA_RUNNING };
+  enum { W = VSPH_JOBS_ETA_WAITING };
   struct vsph_jobs_eta r[] = {
-      {4.0, 5.0, 1.0, VSPH_JOBS_ETA_DONE, "A"},
-      {2.0, 3.0, 2.0, VSPH_JOBS_ETA_DONE, "A"},
-      {1.0, 4.0, 3.0, VSPH_JOBS_ETA_DONE, "B"},
-      {3.0, 1.0, 0.0, VSPH_JOBS_ETA_RUNNING, "A"}, /* 1 + 3 - 1 = 3 s */
-      {2.0, 0.0, 0.0, VSPH_JOBS_ETA_WAITING, "C"}, /* 2 x 12/7 s */
-      {1.0, 0.0, 0.0, VSPH_JOBS_ETA_WAITING, "A"}, /* 1 + 1 = 2 s */
-      {0.5, 0.0, 0.0, VSPH_JOBS_ETA_WAITING, "B"}, /* 0.5 x 4 = 2 s */
-      {9.0, 0.0, 4.0, VSPH_JOBS_ETA_DONE, "C"},    /* failed: cost 0 */
+      {.cost = 2e4, .wall = 4, .state = D, .family = "A", .per_step = 2e4},
+      {.cost = 4e4, .wall = 6, .state = D, .family = "A", .per_step = 4e4},
+      {.cost = 6e4, .wall = 6, .state = D, .family = "B", .per_step = 2e4},
+      /* two steps: 6e4 units at A's rate, 6 s, 1 s of them run */
+      {.cost = 2e4, .wall = 1, .state = R, .family = "A", .per_step = 1e4},
+      /* one step: 3e4 units at every run's rate, 24/11 s */
+      {.cost = 1e4, .state = W, .family = "C", .per_step = 1e4},
+      /* its steps not known: its pairs alone, 1e4 units, 1 s */
+      {.cost = 1e4, .state = W, .family = "A", .per_step = 0},
+      /* one step: 4e4 units at B's rate, 2 s */
+      {.cost = 2e4, .state = W, .family = "B", .per_step = 2e4},
+      /* failed: cost 0, measures nothing */
+      {.cost = 0, .wall = 9, .state = D, .family = "C", .per_step = 1e4},
   };
-  r[7].cost = 0.0;
-  /* two lanes: the running run holds one (3 s), C the other (24/7 s),
-   * A the first (5 s), B the second (24/7 + 2 s) */
-  ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 2), 38.0 / 7, 1e-12);
-  ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 1), 73.0 / 7, 1e-12);
-  /* A's line with a negative fixed part (9 s at 4 units: 3 s per unit,
-   * -3 s) is not used: A's last rate, 1.5 s per unit, is; all runs' rate
-   * is 16/7: 1.5 x 3 - 1 + 32/7 + 1.5 + 2 s on one lane */
-  r[0].wall = 9.0;
-  ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 1), 81.0 / 7, 1e-12);
+  /* one lane: 5 + 24/11 + 1 + 2; two: the running run holds one (5 s),
+   * C, A's and B's the other (24/11 + 3 s) */
+  ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 1), 8 + 24.0 / 11, 1e-12);
+  ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 2), 3 + 24.0 / 11, 1e-12);
   /* a running run past its estimate has nothing left, not less */
   r[3].wall = 9.0;
-  ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 1), 32.0 / 7 + 3.5, 1e-12);
+  ck_assert_double_eq_tol(vsph_jobs_local_eta(r, 8, 1), 3 + 24.0 / 11, 1e-12);
   /* the text: the work after the runs (a report's assembly, 30 s) is in
    * the time left, and said (the running run's time from its start 9 s
    * before now) */
   char buf[128];
   const double t1[8] = {0, 0, 0, 1.0, 0, 0, 0, 0};
   vsph_jobs_local_eta_text(r, t1, 8, 1, 10.0, 30.0, buf, sizeof buf);
-  ck_assert_str_eq(buf, ", about 38 s left (30 s of them after the runs)");
+  ck_assert_str_eq(buf, ", about 35 s left (30 s of them after the runs)");
   vsph_jobs_local_eta_text(r, t1, 8, 1, 10.0, 0.0, buf, sizeof buf);
-  ck_assert_str_eq(buf, ", about 8 s left");
+  ck_assert_str_eq(buf, ", about 5 s left");
   /* nothing finished: no rate measured, no estimate */
   r[0].state = r[1].state = r[2].state = VSPH_JOBS_ETA_WAITING;
   ck_assert(vsph_jobs_local_eta(r, 8, 2) < 0.0);
