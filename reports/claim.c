@@ -716,11 +716,17 @@ static int choose(const char *name, char *ph, const struct block *b,
  * line's expression is malformed. */
 static int word_text(const char *name, const struct block *b, const int *holds,
                      const char *w, const char **text) {
-  int found = 0;
+  int found = 0, open = 0; /* open: a line before the else unknown */
   for (int k = 0; k < b->nwords; k++) {
     if (strcmp(b->wname[k], w)) continue;
     found = 1;
-    const int r = strcmp(b->wcond[k], "else") ? eval(b->wcond[k], b, holds) : 1;
+    const int is_else = !strcmp(b->wcond[k], "else");
+    if (is_else && open) { /* the else is the negation of the lines before */
+      *text = "(not measured)";
+      return 1;
+    }
+    const int r = is_else ? 1 : eval(b->wcond[k], b, holds);
+    open |= r == UNKNOWN;
     if (r < 0) {
       vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
                          "claim %s: word %s: '%s' is not an expression of "
@@ -865,6 +871,24 @@ static int test_holds(const char *name, const struct block *b, int k,
   return VSPH_OK;
 }
 
+/* The verdict of block @p b where no verdict holds for certain (a test an
+ * 'if' reads was fed a figure not measured): not tested, naming the tests
+ * left unknown. */
+static int undecided(const char *name, const struct block *b, const int *holds,
+                     struct vsph_claim_row *row) {
+  size_t m = (size_t)snprintf(row->verdict, sizeof row->verdict,
+                              "not tested: a figure its verdict needs was "
+                              "not measured (unknown:");
+  for (int k = 0, n = 0; k < b->ntests && m < sizeof row->verdict; k++)
+    if (holds[k] == UNKNOWN)
+      m += (size_t)snprintf(row->verdict + m, sizeof row->verdict - m, "%s %s",
+                            n++ ? "," : "", b->test[k].name);
+  if (m + 2 > sizeof row->verdict)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: a verdict longer than its field", name);
+  memcpy(row->verdict + m, ")", 2);
+  return VSPH_OK;
+}
+
 static int grade(const char *name, const struct block *b,
                  const struct vsph_claim_vals *v, struct vsph_claim_row *row) {
   if (v && v->overflow)
@@ -889,17 +913,20 @@ static int grade(const char *name, const struct block *b,
       if (st) return st;
     }
   }
-  int pick = -1;
+  /* every one checked, the first that holds for certain taken; the else
+   * holds where every 'if' before it fails for certain (its expression is
+   * the negation of them all): where one is unknown, none is taken */
+  int pick = -1, open = 0;
   for (int k = 0; k < b->nifs; k++) {
-    const int r = b->cond[k][0] ? eval(b->cond[k], b, holds) : 1;
+    const int is_else = !b->cond[k][0];
+    const int r = is_else ? (open ? UNKNOWN : 1) : eval(b->cond[k], b, holds);
     if (r < 0)
       VSPH_FAIL(VSPH_EINVAL,
                 "claim %s: 'if %s': not an expression of its "
                 "tests (names, &, |, !, parentheses)",
                 name, b->cond[k]);
-    if (r == 1 && pick < 0)
-      pick = k; /* every one checked, the first that
-                  holds for certain taken */
+    open |= r == UNKNOWN;
+    if (r == 1 && pick < 0) pick = k;
   }
   const char *where = b->where;
   char claim[sizeof row->claim];
@@ -920,6 +947,8 @@ static int grade(const char *name, const struct block *b,
     if (!v || k == pick) /* the lint checks every verdict's placeholders */
       st = fill(name, b->verdict[k], b, holds, v, row->verdict,
                 sizeof row->verdict, 1);
+  if (!st && v && pick < 0) /* no verdict decided: say which tests */
+    return undecided(name, b, holds, row);
   /* a word filled into the verdict must not change its class */
   if (!st && v &&
       vsph_claim_class(row->verdict) != vsph_claim_class(b->verdict[pick]))

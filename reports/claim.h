@@ -51,13 +51,19 @@
  *    ! (not) and parentheses, in Kleene's three values (!unknown is
  *    unknown; a & b fails where either fails; a | b holds where either
  *    holds), and a verdict is taken only where its EXPR holds for certain;
+ *    the else's is the negation of every 'if' before it, so it is taken
+ *    only where each of them fails for certain, and where none is taken
+ *    the verdict is "not tested: a figure its verdict needs was not
+ *    measured (unknown: TESTS)";
  *    a VERDICT starts with its class's words
  *    (reproduced, reproduced on a substitute, partly, differs, not
  *    tested) and may hold placeholders;
  *  - `word NAME: EXPR => TEXT` (one or more lines per NAME, the last
  *    `word NAME: else => TEXT`): the literal TEXT of the first line whose
  *    EXPR of the tests holds for certain, which {{NAME}} then inserts in
- *    any template: words that repeat a test are the test's own;
+ *    any template: words that repeat a test are the test's own (the else
+ *    line speaks only where every line before it fails for certain; where
+ *    one is unknown and none holds the word is "(not measured)");
  *  - a claim without tests holds one verdict, `else:`, which says "not
  *    tested", or rests on a test of make check that `checked:` names
  *    ("tests/FILE.c test_NAME").

@@ -20,6 +20,16 @@ void vsph_measures_extent(const double *x, size_t n, double *lo, double *hi,
   if (count) *count = m;
 }
 
+double vsph_measures_largest(const double *x, size_t n, double from) {
+  for (size_t k = 0; k < n; k++) from = fmax(from, x[k]);
+  return from;
+}
+
+double vsph_measures_smallest(const double *x, size_t n, double from) {
+  for (size_t k = 0; k < n; k++) from = fmin(from, x[k]);
+  return from;
+}
+
 double vsph_measures_max_factor(const double *a, const double *b, size_t n) {
   double far = 1.0;
   for (size_t k = 0; k < n; k++) {
@@ -33,6 +43,7 @@ double vsph_measures_max_factor(const double *a, const double *b, size_t n) {
 
 int vsph_measures_sign_changes(const double *f, const int *use, size_t n,
                                double floor) {
+  if (isnan(floor)) return -1; /* no floor measured: no sign read */
   int last = 0, changes = 0;
   for (size_t k = 0; k < n; k++) {
     if (!use[k] || !(fabs(f[k]) >= floor)) continue;
@@ -48,12 +59,12 @@ void vsph_measures_closest(const double *u, const double *swing, const int *ok,
   int best = -1;
   double sw = 0.0, next = INFINITY;
   for (int f = 0; f < n; f++) {
-    if (!ok[f]) continue;
+    if (!ok[f] || isnan(u[f])) continue; /* an error not measured: out */
     sw = fmax(sw, swing[f]);
     if (best < 0 || u[f] < u[best]) best = f;
   }
   for (int f = 0; f < n; f++)
-    if (f != best && ok[f]) next = fmin(next, u[f]);
+    if (f != best && ok[f] && !isnan(u[f])) next = fmin(next, u[f]);
   out->best = best;
   out->next = next;
   out->gap = best >= 0 ? next - u[best] : (double)NAN;

@@ -20,6 +20,14 @@
 void vsph_measures_extent(const double *x, size_t n, double *lo, double *hi,
                           size_t *count);
 
+/** @brief The largest of @p from and the values of @p x[0..n) that are
+ *  not NaN (a figure not measured is passed over; infinities count), as a
+ *  chain of fmax from @p from; with @p from NaN, NaN where every value is.
+ *  vsph_measures_smallest likewise with fmin. */
+double vsph_measures_largest(const double *x, size_t n, double from);
+/** @brief The smallest: vsph_measures_largest with fmin. */
+double vsph_measures_smallest(const double *x, size_t n, double from);
+
 /** @brief The largest factor either way between @p a[k] and @p b[k] over
  *  k < @p n, max(a/b, b/a), and at least 1 (1 where n is 0); a pair with
  *  a value not positive or not finite counts as infinitely far (+inf), so
@@ -28,7 +36,8 @@ double vsph_measures_max_factor(const double *a, const double *b, size_t n);
 
 /** @brief How often @p f[0..n) changes sign, in order, over the entries
  *  with @p use[k] set, passing over those whose size is below @p floor (a
- *  value at rounding level has no sign). */
+ *  value at rounding level has no sign) or not measured (NaN); -1 where
+ *  @p floor itself is NaN (nothing can be read). */
 int vsph_measures_sign_changes(const double *f, const int *use, size_t n,
                                double floor);
 
@@ -44,7 +53,8 @@ struct vsph_measures_closest {
 
 /** @brief Of @p n forms with errors @p u, swings @p swing (each error's
  *  own range over its window) and whether each ended (@p ok), the closest,
- *  the next and the largest swing, into @p out. */
+ *  the next and the largest swing, into @p out; a form whose error is not
+ *  measured (NaN) counts as one that did not end. */
 void vsph_measures_closest(const double *u, const double *swing, const int *ok,
                            int n, struct vsph_measures_closest *out);
 

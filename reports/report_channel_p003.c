@@ -513,9 +513,9 @@ static void sweep_vals(const struct vsph_report_channel_p003 *p,
 static void sweep_stab(const struct vsph_report_channel_p003 *p, int first,
                        struct vsph_claim_vals *v) {
   const struct vsph_jobs_run *rb = first >= 0 ? &p->sw[first][p->nd - 1] : NULL;
-  double tb = 0.0; /* the larger dt's latest stop there */
-  for (int b = 0; rb && b + 1 < p->nd; b++)
-    tb = fmax(tb, p->sw[first][b].t_unstable);
+  double ts[NSWD]; /* the larger dts' stops there, and their latest */
+  for (int b = 0; rb && b + 1 < p->nd; b++) ts[b] = p->sw[first][b].t_unstable;
+  const double tb = rb ? vsph_measures_largest(ts, (size_t)p->nd - 1, 0.0) : 0;
   vsph_claim_num(v, "stab_c", rb ? SW[first][0].c0 : (double)NAN);
   vsph_claim_num(v, "stab_stops", rb && !rb->ok);
   vsph_claim_num(v, "stab_t", rb ? rb->t_unstable : (double)NAN);
@@ -544,8 +544,7 @@ static int p003_sweep_claims(struct vsph_report *R,
   /* lag, the delay the block's rule weighs: the largest over the c
    * before the first that turns (from that c on, it is named first) */
   const int n_lag = w.turn >= 0 ? w.turn : NSWC;
-  double lag = (double)NAN;
-  for (int a = 0; a < n_lag; a++) lag = fmax(lag, w.lag[a]);
+  const double lag = vsph_measures_largest(w.lag, (size_t)n_lag, (double)NAN);
   /* the words name the first c where a smaller dt helps: the first that
    * turns, or one before it that meets the block's rule on lag */
   int first = -1;

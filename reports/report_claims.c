@@ -220,12 +220,15 @@ static int tangential_claim(struct vsph_report *R, struct vsph_claim_vals *v) {
   if (!st) st = vsph_fields_props_init(&sp.field, VSPH_FIELDS_STRAIN, 2);
   if (!st) st = vsph_scaling_surface(&sp, &r);
   if (st) return st;
-  double nn[VSPH_SCALING_MAXLEVELS], tt[VSPH_SCALING_MAXLEVELS], tmax = 0.0;
+  double nn[VSPH_SCALING_MAXLEVELS], tt[VSPH_SCALING_MAXLEVELS],
+      q[VSPH_SCALING_MAXLEVELS];
   for (size_t l = 0; l < r.levels; l++) {
     nn[l] = fabs(r.normal[MGF][l]);
     tt[l] = r.tangential[MGF][l];
-    tmax = fmax(tmax, tt[l] / nn[l]);
+    q[l] = tt[l] / nn[l];
   }
+  /* the tangential share's largest over the normal's */
+  const double tmax = vsph_measures_largest(q, r.levels, 0.0);
   /* diverges: the normal share's order rounds to -1; bounded: the
    * tangential one is rounding (below 1e-9 of the normal: sums of order 1
    * terms that cancel exactly, to rounding) or its order rounds to 0 or
@@ -307,7 +310,8 @@ static int signs_claim(struct vsph_report *R, struct vsph_claim_vals *v) {
      * terms cancel there to about 1e-15 of them */
     const int changes =
         vsph_measures_sign_changes(f[fm], use, n, 1e-12 * fabs(f[fm][n - 1]));
-    vsph_claim_num(v, vsph_viscous_name(fm), changes);
+    vsph_claim_num(v, vsph_viscous_name(fm),
+                   changes < 0 ? (double)NAN : changes);
   }
   return vsph_report_doc_grade(R, "claims/paper.signs", v);
 }
@@ -420,9 +424,10 @@ static int square_onset_claim(struct vsph_report *R,
                               struct vsph_claim_vals *v) {
   const struct vsph_report_ladderdef *L =
       vsph_report_runs_ladder(&R->runs, 1, 0);
-  int st = VSPH_OK, ok;
+  int st = VSPH_OK, ok, nstop = 0;
   double tu, ons[VSPH_REPORT_LADDER], stops[VSPH_REPORT_LADDER];
   for (int k = 0; k < VSPH_REPORT_LADDER && !st; k++) {
+    nstop += !lr->ok[PVWF][k];
     stops[k] = lr->ok[PVWF][k] ? (double)NAN : lr->t_unstable[PVWF][k];
     struct vsph_jobs_spec spec = {L->scene, "pvwf", L->res[k],
                                   L->t_end, NULL,   NULL};
@@ -431,9 +436,8 @@ static int square_onset_claim(struct vsph_report *R,
   if (st) return st;
   /* the onsets' range over the rungs, and the earliest of the stops */
   double on_lo, on_hi, tpv;
-  size_t nstop;
   vsph_measures_extent(ons, VSPH_REPORT_LADDER, &on_lo, &on_hi, NULL);
-  vsph_measures_extent(stops, VSPH_REPORT_LADDER, &tpv, NULL, &nstop);
+  vsph_measures_extent(stops, VSPH_REPORT_LADDER, &tpv, NULL, NULL);
   const double on = ons[VSPH_REPORT_LADDER - 1], on_first = ons[0];
   const struct vsph_jobs_spec ds = square_delta_spec(R);
   double don;
@@ -444,7 +448,7 @@ static int square_onset_claim(struct vsph_report *R,
   vsph_claim_num(v, "onset", VSPH_REPORT_ONSET);
   vsph_claim_num(v, "on_lo", on_lo);
   vsph_claim_num(v, "on_hi", on_hi);
-  vsph_claim_num(v, "nstop", (double)nstop);
+  vsph_claim_num(v, "nstop", nstop);
   vsph_claim_num(v, "nrung", VSPH_REPORT_LADDER);
   vsph_claim_num(v, "tstop", nstop ? tpv : (double)NAN);
   vsph_claim_num(v, "on_fine", on);
@@ -517,14 +521,18 @@ static int square_linear(struct vsph_report *R, const struct finest *fi,
   const struct vsph_fvref_square *fv = &R->fv->sq;
   const struct vsph_report_ladderdef *L =
       vsph_report_runs_ladder(&R->runs, 1, 0);
-  double m[5], why[VSPH_REPORT_FV_NWHY], other = 0, closest = INFINITY;
+  double m[5], why[VSPH_REPORT_FV_NWHY], dwhy[VSPH_REPORT_FV_NWHY], am[5];
   int whyok;
   vsph_report_fv_measures(R, &fi->run[1][MGF], m);
   int st = square_why(R, why, &whyok);
   if (st) return st;
-  for (int w = 3; w < VSPH_REPORT_FV_NWHY; w++) /* the start, integrator, */
-    other = fmax(other, fabs(why[w] - why[0])); /* c0, delta-SPH */
-  for (int k = 0; k < 5; k++) closest = fmin(closest, fabs(m[k]));
+  for (int w = 0; w < VSPH_REPORT_FV_NWHY; w++) dwhy[w] = fabs(why[w] - why[0]);
+  for (int k = 0; k < 5; k++) am[k] = fabs(m[k]);
+  /* the largest move by the start, the integrator, c0 and delta-SPH (the
+   * choices from the fourth on); the measures' least size */
+  const double other =
+      vsph_measures_largest(dwhy + 3, VSPH_REPORT_FV_NWHY - 3, 0.0);
+  const double closest = vsph_measures_smallest(am, 5, INFINITY);
   const double fv_end = vsph_fvref_square_at(fv, 1.0);
   vsph_claim_clear(v);
   if ((st = square_rungs(R, v))) return st;

@@ -388,9 +388,13 @@ START_TEST(test_word_lines) {
     double x, y;
     const char *ours;
   } cases[] = {
-      {2, 2, "x converges by both"},     {2, 0, "x converges by one only"},
-      {0, 2, "x converges by one only"}, {0, 0, "x does not converge (0.0)"},
-      {NAN, 0, "x not measured"},        {NAN, 2, "x converges by one only"}};
+      {2, 2, "x converges by both"},
+      {2, 0, "x converges by one only"},
+      {0, 2, "x converges by one only"},
+      {0, 0, "x does not converge (0.0)"},
+      /* a line left unknown before the else: the word is the engine's */
+      {NAN, 0, "x (not measured)"},
+      {NAN, 2, "x converges by one only"}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     vsph_claim_clear(&v);
     vsph_claim_num(&v, "x", cases[k].x);
@@ -419,7 +423,8 @@ END_TEST
 
 /* Kleene's three values: a test fed a NaN is unknown, so neither it nor
  * its negation holds for certain; & fails where either side fails, |
- * holds where either holds; finite fails on a NaN and is never unknown. */
+ * holds where either holds; finite fails on a NaN and is never unknown;
+ * the else holds only where every 'if' fails for certain. */
 START_TEST(test_unknown_decides_nothing) {
   static const char *const K =
       "claim: c\nwhere: w\npaper: p\nours: o\nsetup: none\n"
@@ -439,7 +444,12 @@ START_TEST(test_unknown_decides_nothing) {
                {NAN, 1.0, "partly: one"}, /* !big unknown: not small */
                {NAN, -1.0, "not tested: x not measured"},
                {2.0, NAN, "partly: one"}, /* big holds: | holds */
-               {0.5, NAN, "differs"},     /* !big & unknown: unknown */
+               /* !big & unknown: unknown, and so is the else (the
+                  negation of every if): no verdict holds, the tests
+                  left unknown named */
+               {0.5, NAN,
+                "not tested: a figure its verdict needs was not measured "
+                "(unknown: pos)"},
                {0.5, -1.0, "differs"}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     vsph_claim_clear(&v);
@@ -662,6 +672,7 @@ START_TEST(test_partly_claims_can_differ) {
     vsph_claim_num(&v, "res", 30);
     vsph_claim_num(&v, "t1", C[k].t_run < 80 ? 30 : 80);
     vsph_claim_num(&v, "e1", C[k].e1);
+    vsph_claim_num(&v, "e1swing", 0.01);
     vsph_claim_num(&v, "m1", 0.2);
     vsph_claim_num(&v, "ek", 0.03);
     vsph_claim_num(&v, "ok", C[k].ok);

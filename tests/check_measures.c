@@ -26,6 +26,23 @@ START_TEST(test_extent_of_finite_values) {
 }
 END_TEST
 
+/* The largest and smallest as chains of fmax and fmin: a NaN passed over,
+ * infinities counted; from NaN, NaN only where every value is. */
+START_TEST(test_largest_smallest) {
+  const double x[] = {1.0, NAN, 3.0, -INFINITY};
+  ck_assert_double_eq(vsph_measures_largest(x, 4, 0.0), 3.0);
+  ck_assert_double_eq(vsph_measures_largest(x, 4, 5.0), 5.0);
+  ck_assert_double_eq(vsph_measures_largest(x + 3, 1, 0.0), 0.0);
+  ck_assert_double_eq(vsph_measures_smallest(x, 4, INFINITY), -INFINITY);
+  ck_assert_double_eq(vsph_measures_smallest(x, 3, INFINITY), 1.0);
+  ck_assert(isnan(vsph_measures_largest(x + 1, 1, NAN)));
+  ck_assert_double_eq(vsph_measures_largest(x + 1, 2, NAN), 3.0);
+  const double y[] = {2.0, INFINITY};
+  ck_assert(isinf(vsph_measures_largest(y, 2, 0.0)));
+  ck_assert_double_eq(vsph_measures_largest(y, 0, -1.0), -1.0);
+}
+END_TEST
+
 /* The largest factor either way: (2, 1) and (1, 4) -> 4; equal tables 1;
  * a value not positive or not measured: infinitely far. */
 START_TEST(test_max_factor_either_way) {
@@ -55,6 +72,8 @@ START_TEST(test_sign_changes) {
   ck_assert_int_eq(vsph_measures_sign_changes(f, all, 6, 4.0), 1); /* 5, -7 */
   const double g[] = {NAN, 1.0, -1.0};
   ck_assert_int_eq(vsph_measures_sign_changes(g, all, 3, 0.0), 1);
+  /* no floor measured: nothing read, not "no change" */
+  ck_assert_int_eq(vsph_measures_sign_changes(f, all, 6, NAN), -1);
 }
 END_TEST
 
@@ -74,6 +93,17 @@ START_TEST(test_closest_of_forms) {
   vsph_measures_closest(tie, sw, ok, 4, &c);
   ck_assert_int_eq(c.best, 0);
   ck_assert_double_eq(c.gap, 0.0);
+  /* an error not measured counts as a form that did not end, wherever it
+   * stands in the order */
+  const double un[] = {NAN, 0.1, 0.2, 0.3}, un2[] = {0.1, NAN, 0.2, 0.3};
+  const int all4[] = {1, 1, 1, 1};
+  vsph_measures_closest(un, sw, all4, 4, &c);
+  ck_assert_int_eq(c.best, 1);
+  ck_assert_double_eq(c.next, 0.2);
+  ck_assert_double_eq(c.swing, 0.5);
+  vsph_measures_closest(un2, sw, all4, 4, &c);
+  ck_assert_int_eq(c.best, 0);
+  ck_assert_double_eq(c.next, 0.2);
   const int none[] = {0, 0, 0, 0};
   vsph_measures_closest(u, sw, none, 4, &c);
   ck_assert_int_eq(c.best, -1);
@@ -180,6 +210,7 @@ Suite *vsph_measures_suite(void) {
   Suite *s = suite_create("measures");
   TCase *tc = tcase_create("core");
   tcase_add_test(tc, test_extent_of_finite_values);
+  tcase_add_test(tc, test_largest_smallest);
   tcase_add_test(tc, test_max_factor_either_way);
   tcase_add_test(tc, test_sign_changes);
   tcase_add_test(tc, test_closest_of_forms);
