@@ -597,9 +597,10 @@ static double ar_call(struct arith *a, const char *at, size_t n) {
 static double ar_atom(struct arith *a) {
   ar_skip(a);
   const char *at = a->s;
-  if (*at == '-') {
+  if (*at == '-' || *at == '+') {
     a->s++;
-    return -ar_atom(a);
+    const double x = ar_atom(a);
+    return *at == '-' ? -x : x;
   }
   if (*at == '(') {
     a->s++;
@@ -626,7 +627,8 @@ static double ar_product(struct arith *a) {
   for (ar_skip(a); *a->s == '*' || *a->s == '/'; ar_skip(a)) {
     const char op = *a->s++;
     const double y = ar_atom(a);
-    x = op == '*' ? x * y : x / y;
+    /* a ratio over zero is no figure: not measured */
+    x = op == '*' ? x * y : y == 0.0 ? (double)NAN : x / y;
   }
   return x;
 }
@@ -716,17 +718,18 @@ static int choose(const char *name, char *ph, const struct block *b,
  * line's expression is malformed. */
 static int word_text(const char *name, const struct block *b, const int *holds,
                      const char *w, const char **text) {
-  int found = 0, open = 0; /* open: a line before the else unknown */
+  int found = 0;
   for (int k = 0; k < b->nwords; k++) {
     if (strcmp(b->wname[k], w)) continue;
     found = 1;
     const int is_else = !strcmp(b->wcond[k], "else");
-    if (is_else && open) { /* the else is the negation of the lines before */
+    /* a line speaks where it holds and every one before it fails, so the
+     * first not failing decides, an unknown one saying so */
+    const int r = is_else ? 1 : eval(b->wcond[k], b, holds);
+    if (r == UNKNOWN) {
       *text = "(not measured)";
       return 1;
     }
-    const int r = is_else ? 1 : eval(b->wcond[k], b, holds);
-    open |= r == UNKNOWN;
     if (r < 0) {
       vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
                          "claim %s: word %s: '%s' is not an expression of "
@@ -871,6 +874,21 @@ static int test_holds(const char *name, const struct block *b, int k,
   return VSPH_OK;
 }
 
+/* Whether test @p t is named in an 'if' of block @p b (a word, not a
+ * part of a longer name). */
+static int read_by_ifs(const struct block *b, const char *t) {
+  const size_t n = strlen(t);
+  static const char WORD[] =
+      "abcdefghijklmnopqrstuvwxyz"
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_";
+  for (int k = 0; k < b->nifs; k++)
+    for (const char *c = strstr(b->cond[k], t); c; c = strstr(c + 1, t))
+      if ((c == b->cond[k] || !strchr(WORD, c[-1])) &&
+          (!c[n] || !strchr(WORD, c[n])))
+        return 1;
+  return 0;
+}
+
 /* The verdict of block @p b where no verdict holds for certain (a test an
  * 'if' reads was fed a figure not measured): not tested, naming the tests
  * left unknown. */
@@ -880,7 +898,7 @@ static int undecided(const char *name, const struct block *b, const int *holds,
                               "not tested: a figure its verdict needs was "
                               "not measured (unknown:");
   for (int k = 0, n = 0; k < b->ntests && m < sizeof row->verdict; k++)
-    if (holds[k] == UNKNOWN)
+    if (holds[k] == UNKNOWN && read_by_ifs(b, b->test[k].name))
       m += (size_t)snprintf(row->verdict + m, sizeof row->verdict - m, "%s %s",
                             n++ ? "," : "", b->test[k].name);
   if (m + 2 > sizeof row->verdict)
@@ -913,20 +931,24 @@ static int grade(const char *name, const struct block *b,
       if (st) return st;
     }
   }
-  /* every one checked, the first that holds for certain taken; the else
-   * holds where every 'if' before it fails for certain (its expression is
-   * the negation of them all): where one is unknown, none is taken */
+  /* every one checked; a verdict holds where its expression holds for
+   * certain and every one before it fails for certain (the else: where
+   * they all fail), so the first not failing decides: where it is unknown,
+   * no verdict is taken but a 'not tested' one that holds for certain */
   int pick = -1, open = 0;
   for (int k = 0; k < b->nifs; k++) {
     const int is_else = !b->cond[k][0];
-    const int r = is_else ? (open ? UNKNOWN : 1) : eval(b->cond[k], b, holds);
+    const int r = is_else ? 1 : eval(b->cond[k], b, holds);
     if (r < 0)
       VSPH_FAIL(VSPH_EINVAL,
                 "claim %s: 'if %s': not an expression of its "
                 "tests (names, &, |, !, parentheses)",
                 name, b->cond[k]);
-    open |= r == UNKNOWN;
-    if (r == 1 && pick < 0) pick = k;
+    /* a 'not tested' verdict claims nothing: it may speak past an unknown */
+    if (r == 1 && pick < 0 &&
+        (!open || vsph_claim_class(b->verdict[k]) == VSPH_CLAIM_NOT_TESTED))
+      pick = k;
+    open |= r == UNKNOWN; /* every later verdict undecided */
   }
   const char *where = b->where;
   char claim[sizeof row->claim];

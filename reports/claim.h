@@ -41,20 +41,24 @@
  *    numbers, measures, + - * /, a unary -, parentheses, abs(x), max(a,
  *    b, ...) and min(a, b, ...) of two to four, logplace(x, a, b) (where
  *    x lies between a and b in logarithm: vsph_series_log_between),
- *    round(x) (the nearest integer, halves away from zero); a
- *    NaN in gives a NaN out, max and min included (a
- *    figure not measured is never passed over). A let may not take the
- *    name of a measure the part set; tests and templates read it as a
+ *    round(x) (the nearest integer, halves away from zero), a unary + or
+ *    -; a NaN in gives a NaN out, max and min included (a figure not
+ *    measured is never passed over), and so does a ratio over zero. WHAT
+ *    starts at the first " -- " (an expression holds none). A let may not
+ *    take the name of a measure the part set (found when grading: the
+ *    lint knows no part's names); tests and templates read it as a
  *    measure;
  *  - `if EXPR: VERDICT` (one or more, the first that holds is taken) and
  *    `else: VERDICT`: EXPR combines the tests' names with & (and), | (or),
  *    ! (not) and parentheses, in Kleene's three values (!unknown is
  *    unknown; a & b fails where either fails; a | b holds where either
- *    holds), and a verdict is taken only where its EXPR holds for certain;
- *    the else's is the negation of every 'if' before it, so it is taken
- *    only where each of them fails for certain, and where none is taken
- *    the verdict is "not tested: a figure its verdict needs was not
- *    measured (unknown: TESTS)";
+ *    holds), and a verdict is taken only where its EXPR holds for certain
+ *    and every 'if' before it fails for certain (the else: where all of
+ *    them fail), so an 'if' left unknown leaves every later verdict
+ *    undecided, but for a "not tested" one whose EXPR holds for certain
+ *    (it claims nothing); where none is taken the verdict is "not tested:
+ *    a figure its verdict needs was not measured (unknown: TESTS)", the
+ *    tests the 'if's read that were left unknown;
  *    a VERDICT starts with its class's words
  *    (reproduced, reproduced on a substitute, partly, differs, not
  *    tested) and may hold placeholders;
@@ -63,7 +67,7 @@
  *    EXPR of the tests holds for certain, which {{NAME}} then inserts in
  *    any template: words that repeat a test are the test's own (the else
  *    line speaks only where every line before it fails for certain; where
- *    one is unknown and none holds the word is "(not measured)");
+ *    the first not failing is unknown the word is "(not measured)");
  *  - a claim without tests holds one verdict, `else:`, which says "not
  *    tested", or rests on a test of make check that `checked:` names
  *    ("tests/FILE.c test_NAME").
@@ -127,8 +131,8 @@ void vsph_claim_str(struct vsph_claim_vals *v, const char *key, const char *fmt,
  *  VSPH_EINVAL (reported, naming the claim and the fault): a field
  *  missing or repeated, a test of no known kind or with the wrong number
  *  of arguments, a measure the part did not set, an expression naming no
- *  test, a verdict that does not start with a class, no verdict that
- *  holds, a text too long for its field. */
+ *  test, a verdict that does not start with a class, a let malformed or
+ *  naming a measure not set, a text too long for its field. */
 int vsph_claim_grade_text(const char *name, const char *text,
                           const struct vsph_claim_vals *v,
                           struct vsph_claim_row *row);
@@ -138,7 +142,8 @@ int vsph_claim_grade_text(const char *name, const char *text,
  *  holds, 0 fails, -1 unknown (a measure not measured). For words a part
  *  must choose from one of the block's rules (the first of several cases
  *  that meets it), so that the rule's threshold stays in the block.
- *  @return VSPH_OK, or VSPH_EINVAL (the block malformed, no test
+ *  The block's lets are derived first, so @p v holds every measure they
+ *  read. @return VSPH_OK, or VSPH_EINVAL (the block malformed, no test
  *  @p test, a measure the part did not set). */
 int vsph_claim_test_text(const char *name, const char *text, const char *test,
                          const struct vsph_claim_vals *v, int *holds);

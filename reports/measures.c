@@ -46,7 +46,7 @@ int vsph_measures_sign_changes(const double *f, const int *use, size_t n,
   if (isnan(floor)) return -1; /* no floor measured: no sign read */
   int last = 0, changes = 0;
   for (size_t k = 0; k < n; k++) {
-    if (!use[k] || !(fabs(f[k]) >= floor)) continue;
+    if (!use[k] || !(fabs(f[k]) >= floor) || f[k] == 0.0) continue;
     const int s = f[k] > 0 ? 1 : -1;
     changes += last && s != last;
     last = s;
@@ -60,7 +60,7 @@ void vsph_measures_closest(const double *u, const double *swing, const int *ok,
   double sw = 0.0, next = INFINITY;
   for (int f = 0; f < n; f++) {
     if (!ok[f] || isnan(u[f])) continue; /* an error not measured: out */
-    sw = fmax(sw, swing[f]);
+    sw = isnan(swing[f]) || isnan(sw) ? (double)NAN : fmax(sw, swing[f]);
     if (best < 0 || u[f] < u[best]) best = f;
   }
   for (int f = 0; f < n; f++)
@@ -80,14 +80,15 @@ int vsph_measures_map(const double *tf, const double *re, const int *robust,
   for (int f = 0; f < nf; f++)
     for (int q = 0; q < nre; q++) {
       const double t = tf[f * nre + q];
-      out->score[f] += fmin(t, cap);
+      /* a time not measured: the score too (fmin would pass it over) */
+      out->score[f] += isnan(t) ? t : fmin(t, cap);
       if (robust[f] && isfinite(t)) out->first = fmin(out->first, re[q]);
       if (isfinite(t) && re[q] < out->any) out->any = re[q], out->who = f;
     }
   for (int q = 0; q < nre; q++) { /* the largest Re all robust forms hold */
-    int all = 1;
+    int all = 1; /* held: +inf; a time not measured holds nothing */
     for (int f = 0; f < nf; f++)
-      if (robust[f]) all &= !isfinite(tf[f * nre + q]);
+      if (robust[f]) all &= isinf(tf[f * nre + q]) && tf[f * nre + q] > 0;
     if (all) out->held = fmax(out->held, re[q]);
   }
   return 0;
@@ -99,15 +100,17 @@ static void sweep_row(const struct vsph_measures_sweep_in *in, int a,
   const int nd = in->nd;
   const char *o = in->out[a];
   const double *e = in->err[a];
-  int same = 1, all_r = 1;
+  int same = 1, all_r = 1, all_e = 1;
   double lo = INFINITY, hi = -INFINITY;
   for (int b = 0; b < nd; b++) {
     w->ntot++;
     w->nbad += o[b] != 'r';
     same &= o[b] == o[0];
     all_r &= o[b] == 'r';
+    all_e &= isfinite(e[b]) != 0;
     if (isfinite(e[b])) lo = fmin(lo, e[b]), hi = fmax(hi, e[b]);
   }
+  w->open |= all_r && !all_e; /* a change not measured: acc and rise NaN */
   w->out[a] = same ? o[0] : 'm';
   if (!same && w->mixed < 0) w->mixed = a;
   if (all_r && lo > 0 && hi >= lo && !((hi - lo) / lo <= w->acc))
@@ -123,9 +126,11 @@ static void sweep_row(const struct vsph_measures_sweep_in *in, int a,
   if (turns && w->turn < 0) w->turn = a;
   w->lag[a] = (double)NAN;
   if (same && o[0] == 's' && nd > 1) {
-    double other = 0.0;
-    for (int b = 0; b + 1 < nd; b++) other = fmax(other, in->t_stop[a][b]);
-    w->lag[a] = in->t_stop[a][nd - 1] / other;
+    double other = 0.0; /* the larger dts' latest stop; NaN if one is not */
+    for (int b = 0; b + 1 < nd; b++)
+      other =
+          isnan(in->t_stop[a][b]) ? (double)NAN : fmax(other, in->t_stop[a][b]);
+    w->lag[a] = other > 0.0 ? in->t_stop[a][nd - 1] / other : (double)NAN;
   }
   const double z = in->zig[a];
   if (o[nd - 1] == 'r' && isfinite(z)) {
@@ -148,6 +153,8 @@ int vsph_measures_sweep(const struct vsph_measures_sweep_in *in,
                                     .alo = -1,
                                     .ahi = -1};
   for (int a = 0; a < in->nc; a++) sweep_row(in, a, w);
-  if (!isfinite(w->acc)) w->rise = (double)NAN; /* no change, no fall */
+  if (w->open) w->acc = (double)NAN;
+  if (!isfinite(w->acc) || in->nd < 2)
+    w->rise = (double)NAN; /* no change, no fall */
   return 0;
 }

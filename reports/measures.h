@@ -36,7 +36,8 @@ double vsph_measures_max_factor(const double *a, const double *b, size_t n);
 
 /** @brief How often @p f[0..n) changes sign, in order, over the entries
  *  with @p use[k] set, passing over those whose size is below @p floor (a
- *  value at rounding level has no sign) or not measured (NaN); -1 where
+ *  value at rounding level has no sign), exactly zero or not measured
+ *  (NaN); -1 where
  *  @p floor itself is NaN (nothing can be read). */
 int vsph_measures_sign_changes(const double *f, const int *use, size_t n,
                                double floor);
@@ -48,7 +49,8 @@ struct vsph_measures_closest {
                      (the first on a tie); -1: none ended */
   double next;  /*!< the least error of the others that ended (+inf: none) */
   double gap;   /*!< next - its error (NaN where best is -1) */
-  double swing; /*!< the largest swing of those that ended (0: none) */
+  double swing; /*!< the largest swing of those that ended (0: none; NaN
+                     where one of theirs is not measured) */
 };
 
 /** @brief Of @p n forms with errors @p u, swings @p swing (each error's
@@ -75,7 +77,8 @@ struct vsph_measures_map {
 
 /** @brief The map of @p nf forms (at most VSPH_MEASURES_MAP_MAXF) over
  *  @p nre Reynolds numbers @p re: @p tf[f * nre + q] form f's failure time
- *  at re[q] (+inf: it held to the end), @p robust[f] whether the claim
+ *  at re[q] (+inf: it held to the end; NaN: not measured, which makes the
+ *  form's score NaN and holds at no Re), @p robust[f] whether the claim
  *  names it robust, @p cap the run's end (a form that holds scores it);
  *  into @p out. @return 0, or -1 for too many forms (out untouched). */
 int vsph_measures_map(const double *tf, const double *re, const int *robust,
@@ -116,10 +119,14 @@ struct vsph_measures_sweep {
   double lag[VSPH_MEASURES_SWEEP_MAXC]; /*!< per c where every dt stops:
                                              the smallest dt's stop over the
                                              larger ones' latest (NaN at the
-                                             others) */
+                                             others, and where a stop is not
+                                             measured or the latest is not
+                                             positive) */
   double zlo, zhi; /*!< the smallest dt's zigzag over the c whose run there
                         runs: lowest, highest (NaN: none) */
   int alo, ahi;    /*!< at which c (-1) */
+  int open;        /*!< 1: a c whose runs all run has an error not
+                        measured (acc and rise are then NaN) */
 };
 
 /** @brief The figures of sweep @p in into @p w. @return 0, or -1 for a

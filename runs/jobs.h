@@ -197,10 +197,11 @@ struct vsph_jobs_eta {
  * fitted as wall/steps = c + r x (x: particles x neighbours) per family
  * over the quick report's runs on the project's 2-core machine, c/r is
  * 2.0-5.0e4 for the free-surface scenes' families (median 2.4e4) and
- * 1.7e3-3.8e4 for the channels'. Replayed on six whole make-report logs,
- * the time left then stays within 0.80-1.28 of the truth from the first
- * tenth on (0.61-1.82 with a fixed part per run from the family's last
- * two runs); docs/usage.md, "time left". */
+ * 1.7e3-3.8e4 for the channels'; 2e4 sits between the two groups (the
+ * channels' runs are many and small). Replayed on six whole make-report
+ * logs, the time left then stays within 0.80-1.28 of the truth from the
+ * first tenth on (1e4: 0.71-1.21; 3e4: 0.87-1.33; 0.61-1.82 with a fixed
+ * part per run from the family's last two runs); docs/usage.md. */
 #define VSPH_JOBS_STEP_WORK 2.0e4
 
 /* The wall time left of @p n runs, in the order they start, @p width at a

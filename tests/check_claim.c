@@ -129,7 +129,10 @@ START_TEST(test_verdict_follows) {
                {nextafter(0.12, 0.0), 0.01, "partly: the one holds"},
                {0.20, 0.05, "partly: the one holds"},
                {0.11, 0.05, "differs: neither"},
-               {NAN, 0.01, "partly: the one holds"}};
+               /* "both" might hold: no verdict past it is certain */
+               {NAN, 0.01,
+                "not tested: a figure its verdict needs was not measured "
+                "(unknown: fails)"}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     vsph_claim_clear(&v);
     vsph_claim_num(&v, "bad", cases[k].bad);
@@ -392,9 +395,10 @@ START_TEST(test_word_lines) {
       {2, 0, "x converges by one only"},
       {0, 2, "x converges by one only"},
       {0, 0, "x does not converge (0.0)"},
-      /* a line left unknown before the else: the word is the engine's */
+      /* the first line not failing is unknown: the word is the engine's
+         ("by both" might hold where b does) */
       {NAN, 0, "x (not measured)"},
-      {NAN, 2, "x converges by one only"}};
+      {NAN, 2, "x (not measured)"}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     vsph_claim_clear(&v);
     vsph_claim_num(&v, "x", cases[k].x);
@@ -424,7 +428,8 @@ END_TEST
 /* Kleene's three values: a test fed a NaN is unknown, so neither it nor
  * its negation holds for certain; & fails where either side fails, |
  * holds where either holds; finite fails on a NaN and is never unknown;
- * the else holds only where every 'if' fails for certain. */
+ * a verdict holds only where every one before it fails for certain (the
+ * else where all do), but for a 'not tested' one. */
 START_TEST(test_unknown_decides_nothing) {
   static const char *const K =
       "claim: c\nwhere: w\npaper: p\nours: o\nsetup: none\n"
@@ -441,7 +446,9 @@ START_TEST(test_unknown_decides_nothing) {
     double x, y;
     const char *verdict;
   } cases[] = {{0.5, 1.0, "reproduced: small"},
-               {NAN, 1.0, "partly: one"}, /* !big unknown: not small */
+               /* !big unknown: "small" might hold, so "one" is not
+                  certain; the not-tested line claims nothing and holds */
+               {NAN, 1.0, "not tested: x not measured"},
                {NAN, -1.0, "not tested: x not measured"},
                {2.0, NAN, "partly: one"}, /* big holds: | holds */
                /* !big & unknown: unknown, and so is the else (the
@@ -764,7 +771,12 @@ START_TEST(test_lets_derive_measures) {
                {"max(a, b) - min(a, b)", 7.0},
                {"min(abs(b), 2.5e0) / 1e-1", 25.0},
                {"a / b / 2", -0.375},
-               {"a - b - 1", 6.0}};
+               {"a - b - 1", 6.0},
+               /* unary signs, numbers with a bare point */
+               {"+a - +1 - -.5", 2.5},
+               {"--a * 1.", 3.0},
+               /* a ratio over zero is not measured */
+               {"a / (b + 4)", NAN}};
   for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
     char lets[256], rule[128];
     snprintf(lets, sizeof lets, "let r: %s -- case %zu\n", cases[k].expr, k);
@@ -788,8 +800,8 @@ START_TEST(test_lets_derive_measures) {
       VSPH_OK);
   ck_assert_str_eq(row.ours, "r = -1.5000");
   ck_assert_str_eq(row.verdict, "reproduced");
-  /* a NaN in, a NaN out: max, min and abs too; the test unknown, so the
-   * else verdict (no 'if' holds for certain) */
+  /* a NaN in, a NaN out: max, min and abs too; finite fails on it for
+   * certain (it is never unknown), so the else verdict */
   static const char *const nan_through[] = {"max(a, b)",       "min(b, a)",
                                             "abs(a)",          "a - a",
                                             "max(b, 1, 2, a)", "min(b, a, 1)"};
@@ -801,11 +813,30 @@ START_TEST(test_lets_derive_measures) {
     ck_assert_int_eq(let_grade(lets, "finite r", 3, -4, &row), VSPH_OK);
     ck_assert_msg(!strcmp(row.verdict, "reproduced"), "%s", nan_through[k]);
   }
-  /* the lint reads a let's form */
+  /* a test reading a let that is not measured is unknown: no verdict */
+  ck_assert_int_eq(let_grade("let r: a / (b + 4)\n", "below r 5", 3, -4, &row),
+                   VSPH_OK);
+  ck_assert_str_eq(row.verdict,
+                   "not tested: a figure its verdict needs was not measured "
+                   "(unknown: t)");
+  /* forms that grade */
   static const char *const ok[] = {"let r: max(a,b)\n", "let r: (a)\n",
                                    "let r: -1.5e-3 * a -- a note\n"};
   for (size_t k = 0; k < 3; k++)
     ck_assert_int_eq(let_grade(ok[k], "finite r", 3, -4, &row), VSPH_OK);
+  /* the limits: an expression of 253 characters and a name of 31 grade,
+   * one of 261 and a name of 32 do not (the block's fields: 256, 32) */
+  char lets[400], name[40];
+  int m = snprintf(lets, sizeof lets, "let r: a");
+  for (int k = 0; k < 63; k++)
+    m += snprintf(lets + m, sizeof lets - (size_t)m, " + 0");
+  snprintf(lets + m, sizeof lets - (size_t)m, "\n");
+  ck_assert_int_eq(let_grade(lets, "within r 3 0", 3, -4, &row), VSPH_OK);
+  ck_assert_str_eq(row.verdict, "reproduced");
+  memset(name, 'x', 31);
+  name[31] = '\0';
+  snprintf(lets, sizeof lets, "let %s: a\nlet r: %s\n", name, name);
+  ck_assert_int_eq(let_grade(lets, "within r 3 0", 3, -4, &row), VSPH_OK);
   vsph_test_silence();
   /* each after a well-formed "let r: 1", so that the fault alone refuses:
    * the same block without it grades */
@@ -833,12 +864,23 @@ START_TEST(test_lets_derive_measures) {
                                     "let : a\n",
                                     "let s: 1 -- x\nlet r: 2\n",
                                     "let s: max(a, b\n",
-                                    "let s: abs(a b)\n"};
+                                    "let s: abs(a b)\n",
+                                    "let s: 1e\n",
+                                    "let s: -(\n"};
   ck_assert_int_eq(let_grade("let r: 1\n", "finite r", 3, -4, &row), VSPH_OK);
+  name[31] = 'x';
+  name[32] = '\0';
+  snprintf(lets, sizeof lets, "let %s: a\nlet r: 1\n", name);
+  ck_assert_int_eq(let_grade(lets, "finite r", 3, -4, &row), VSPH_EINVAL);
+  m = snprintf(lets, sizeof lets, "let r: a");
+  for (int k = 0; k < 65; k++)
+    m += snprintf(lets + m, sizeof lets - (size_t)m, " + 0");
+  snprintf(lets + m, sizeof lets - (size_t)m, "\n");
+  ck_assert_int_eq(let_grade(lets, "finite r", 3, -4, &row), VSPH_EINVAL);
   for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
-    char lets[128];
-    snprintf(lets, sizeof lets, "let r: 1\n%s", bad[k]);
-    ck_assert_msg(let_grade(lets, "finite r", 3, -4, &row) == VSPH_EINVAL, "%s",
+    char one[128];
+    snprintf(one, sizeof one, "let r: 1\n%s", bad[k]);
+    ck_assert_msg(let_grade(one, "finite r", 3, -4, &row) == VSPH_EINVAL, "%s",
                   bad[k]);
   }
   /* the lint refuses a malformed let without values */

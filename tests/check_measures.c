@@ -72,6 +72,9 @@ START_TEST(test_sign_changes) {
   ck_assert_int_eq(vsph_measures_sign_changes(f, all, 6, 4.0), 1); /* 5, -7 */
   const double g[] = {NAN, 1.0, -1.0};
   ck_assert_int_eq(vsph_measures_sign_changes(g, all, 3, 0.0), 1);
+  /* an exact zero has no sign (a linear field's interior): + 0 + */
+  const double z0[] = {1.0, 0.0, 2.0};
+  ck_assert_int_eq(vsph_measures_sign_changes(z0, all, 3, 0.0), 0);
   /* no floor measured: nothing read, not "no change" */
   ck_assert_int_eq(vsph_measures_sign_changes(f, all, 6, NAN), -1);
 }
@@ -87,6 +90,7 @@ START_TEST(test_closest_of_forms) {
   vsph_measures_closest(u, sw, ok, 4, &c);
   ck_assert_int_eq(c.best, 1);
   ck_assert_double_eq(c.next, 0.2);
+  /* 0.2 - 0.1 in doubles: 0.1 within a rounding of 0.1 (1.4e-17) */
   ck_assert_double_eq_tol(c.gap, 0.1, 1e-16);
   ck_assert_double_eq(c.swing, 0.04);
   const double tie[] = {0.1, 0.1, 0.3, 0.4};
@@ -139,6 +143,17 @@ START_TEST(test_robustness_map) {
   ck_assert_int_eq(vsph_measures_map(never, re, robust, 3, 3, 10.0, &m), 0);
   ck_assert(isinf(m.any) && isinf(m.first) && m.who == -1);
   ck_assert_double_eq(m.held, 50.0);
+  /* a failure time not measured: its form's score too, and its Re is not
+   * held (form 0 at Re 5) */
+  const double part[] = {inf, NAN, inf, inf, inf, inf, inf, inf, inf};
+  ck_assert_int_eq(vsph_measures_map(part, re, robust, 3, 3, 10.0, &m), 0);
+  ck_assert(isnan(m.score[0]));
+  ck_assert_double_eq(m.score[1], 30.0);
+  ck_assert_double_eq(m.held, 50.0);
+  const double part2[] = {inf, inf, NAN, inf, inf, inf, inf, inf, inf};
+  ck_assert_int_eq(vsph_measures_map(part2, re, robust, 3, 3, 10.0, &m), 0);
+  ck_assert_double_eq(m.held, 5.0);
+  ck_assert(isinf(m.any) && m.who == -1);
   const double shuffled[] = {5.0, 50.0, 0.5}; /* the largest, in any order */
   ck_assert_int_eq(vsph_measures_map(never, shuffled, robust, 3, 3, 10, &m), 0);
   ck_assert_double_eq(m.held, 50.0);
@@ -181,17 +196,28 @@ START_TEST(test_sweep_figures) {
   ck_assert_double_eq(w.rise, 0.5);
   ck_assert_int_eq(w.turn, 1);
   ck_assert(isnan(w.lag[0]) && isnan(w.lag[1]));
+  /* 0.3/0.1 in doubles: within a few roundings of 3 (4.4e-16 each) */
   ck_assert_double_eq_tol(w.lag[2], 3.0, 1e-15);
   ck_assert_double_eq(w.zlo, 0.1);
   ck_assert_int_eq(w.alo, 1);
   ck_assert_double_eq(w.zhi, 0.3);
   ck_assert_int_eq(w.ahi, 0);
-  /* an error not measured where all run: the change over the measured one
-   * is 0, the rise not measured */
+  /* an error not measured where all run: neither the change nor the rise
+   * is measured (not a change of 0 over the one measured) */
   in.err[0][1] = NAN;
   ck_assert_int_eq(vsph_measures_sweep(&in, &w), 0);
-  ck_assert_double_eq(w.acc, 0.0);
-  ck_assert(isnan(w.rise));
+  ck_assert(isnan(w.acc) && isnan(w.rise) && w.open);
+  /* a stop not measured at a larger dt: that c's lag is not measured */
+  in.err[0][1] = 0.01;
+  in.t_stop[2][0] = NAN;
+  ck_assert_int_eq(vsph_measures_sweep(&in, &w), 0);
+  ck_assert(isnan(w.lag[2]));
+  ck_assert_double_eq(w.acc, 1.0);
+  /* the larger dts' latest stop at 0: no ratio (not infinite) */
+  in.t_stop[2][0] = 0.0;
+  ck_assert_int_eq(vsph_measures_sweep(&in, &w), 0);
+  ck_assert(isnan(w.lag[2]));
+  in.t_stop[2][0] = 0.1;
   /* no c where every dt runs: no change measured, no rise */
   in.out[0][1] = 'a';
   in.err[0][1] = 0.01;
