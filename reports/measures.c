@@ -158,3 +158,27 @@ int vsph_measures_sweep(const struct vsph_measures_sweep_in *in,
     w->rise = (double)NAN; /* no change, no fall */
   return 0;
 }
+
+void vsph_measures_ratios(const struct vsph_series_ratio *hr, const int *group,
+                          size_t n, struct vsph_measures_ratios *out) {
+  *out = (struct vsph_measures_ratios){.peak = -INFINITY,
+                                       .lo = INFINITY,
+                                       .hi = -INFINITY,
+                                       .t_lo = INFINITY,
+                                       .t_hi = -INFINITY};
+  for (size_t k = 0; k < n; k++) {
+    const double p = hr[k].peak;
+    out->peak = isnan(p) || isnan(out->peak) ? (double)NAN : fmax(out->peak, p);
+    if (!hr[k].seen) continue;
+    out->measured++;
+    out->under += hr[k].below != 0;
+    for (int g = 0; g < VSPH_MEASURES_GROUPS; g++)
+      out->seen_in[g] += (group[k] >> g) & 1;
+    out->t_lo = fmin(out->t_lo, hr[k].t_last);
+    out->t_hi = fmax(out->t_hi, hr[k].t_last);
+    if (isfinite(hr[k].last)) {
+      out->lo = fmin(out->lo, hr[k].last);
+      out->hi = fmax(out->hi, hr[k].last);
+    }
+  }
+}

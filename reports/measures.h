@@ -5,6 +5,8 @@
 
 #include <stddef.h>
 
+#include "../analysis/series.h"
+
 /** @file measures.h
  *  @brief The figures the claims read that gather several runs or rows
  *  into one: the closest of a set, the first failure on a map, a sweep's
@@ -133,5 +135,27 @@ struct vsph_measures_sweep {
  *  sweep larger than the arrays (w untouched). */
 int vsph_measures_sweep(const struct vsph_measures_sweep_in *in,
                         struct vsph_measures_sweep *w);
+
+/** Groups a run of vsph_measures_ratios may belong to (bits). */
+#define VSPH_MEASURES_GROUPS 3
+
+/** @brief Several runs' histories over one reference
+ *  (vsph_series_ratio_history), gathered, as the claim cavity_ek reads
+ *  them. */
+struct vsph_measures_ratios {
+  int measured;      /*!< the runs with a row in the window (seen) */
+  int under;         /*!< of those, the runs below the edge throughout */
+  double peak;       /*!< the largest ratio over every run's window (NaN where
+                          one is; -inf with none) */
+  double lo, hi;     /*!< the seen runs' last ratios, the finite ones: least
+                          and largest (+inf, -inf with none) */
+  double t_lo, t_hi; /*!< the seen runs' last times: least and largest */
+  int seen_in[VSPH_MEASURES_GROUPS]; /*!< the seen runs in each group */
+};
+
+/** @brief Runs @p hr[0..n) gathered into @p out; @p group[k] the bits
+ *  (1 << g, g < VSPH_MEASURES_GROUPS) of run k's groups. */
+void vsph_measures_ratios(const struct vsph_series_ratio *hr, const int *group,
+                          size_t n, struct vsph_measures_ratios *out);
 
 #endif /* VSPH_REPORTS_MEASURES_H */

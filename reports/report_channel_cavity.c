@@ -767,31 +767,22 @@ static int cavity_ek_claim(struct vsph_report *R,
    * each, to keep within a word's length) */
   char list[2][1024] = {"", ""};
   size_t m[2] = {0, 0};
-  int under = 0, measured = 0;              /* runs past 1 s, and those below */
-  int e_seen = 0, d_seen = 0, at_paper = 0; /* of those: E's, D's, and
-                                               those at the paper's 50 x 50 */
-  double lo = INFINITY, hi = -INFINITY, peak = -INFINITY;
-  double t_lo = INFINITY, t_hi = -INFINITY; /* their last times */
+  /* each run's E_k over the finite volume's from 1 s (after the lid's
+   * start), and its groups: E's (bit 0), D's (1), at the paper's 50 x 50
+   * (2) */
+  struct vsph_series_ratio hs[NCAV];
+  int group[NCAV];
   for (size_t k = 0; k < n; k++) {
     const struct vsph_jobs_run *r = &c->cav[q[k]];
-    /* its E_k over the finite volume's from 1 s (after the lid's start) */
-    struct vsph_series_ratio hr;
+    struct vsph_series_ratio *hr = &hs[k];
     int st = vsph_series_ratio_history(r->t, r->Ek, r->nrow, fg->t, fg->E,
-                                       fg->nrow, 1.0, fv->t_end, 1 - band, &hr);
+                                       fg->nrow, 1.0, fv->t_end, 1 - band, hr);
     if (st) return st;
-    const int seen = hr.seen, below = hr.below;
-    peak = isnan(hr.peak) || isnan(peak) ? (double)NAN : fmax(peak, hr.peak);
-    const double t = hr.t_last, ratio = hr.last;
-    under += seen && below;
-    measured += seen;
-    e_seen |= seen && (q[k] == CAV_E1000 || q[k] == CAV_E1000_50);
-    d_seen |= seen && q[k] == CAV_P000_1000;
-    at_paper += seen && CAV[q[k]].res == CAV_PAPER_RES;
-    if (seen) t_lo = fmin(t_lo, t), t_hi = fmax(t_hi, t);
-    if (seen && isfinite(ratio)) {
-      lo = fmin(lo, ratio);
-      hi = fmax(hi, ratio);
-    }
+    group[k] = (q[k] == CAV_E1000 || q[k] == CAV_E1000_50) |
+               (q[k] == CAV_P000_1000) << 1 |
+               (CAV[q[k]].res == CAV_PAPER_RES) << 2;
+    const int seen = hr->seen, below = hr->below;
+    const double t = hr->t_last, ratio = hr->last;
     const int h = q[k] >= CAV_QUICK;
     if (m[h] < sizeof list[h])
       m[h] += (size_t)snprintf(
@@ -805,16 +796,18 @@ static int cavity_ek_claim(struct vsph_report *R,
   vsph_claim_num(v, "band", band);
   vsph_claim_str(v, "quick_runs", "%s", list[0]);
   vsph_claim_str(v, "full_runs", "%s", list[1]);
-  vsph_claim_num(v, "peak", peak);
-  vsph_claim_num(v, "under", under);
-  vsph_claim_num(v, "measured", measured);
+  struct vsph_measures_ratios g;
+  vsph_measures_ratios(hs, group, n, &g);
+  vsph_claim_num(v, "peak", g.peak);
+  vsph_claim_num(v, "under", g.under);
+  vsph_claim_num(v, "measured", g.measured);
   vsph_claim_num(v, "n", (double)n);
-  vsph_claim_num(v, "lo", lo);
-  vsph_claim_num(v, "hi", hi);
-  vsph_claim_num(v, "e_seen", e_seen);
-  vsph_claim_num(v, "d_seen", d_seen);
-  vsph_claim_num(v, "n_paper", at_paper);
-  cavity_ek_hist(v, measured, t_lo, t_hi);
+  vsph_claim_num(v, "lo", g.lo);
+  vsph_claim_num(v, "hi", g.hi);
+  vsph_claim_num(v, "e_seen", g.seen_in[0] > 0);
+  vsph_claim_num(v, "d_seen", g.seen_in[1] > 0);
+  vsph_claim_num(v, "n_paper", g.seen_in[2]);
+  cavity_ek_hist(v, g.measured, g.t_lo, g.t_hi);
   return vsph_report_doc_grade(R, "claims/channel.cavity_ek", v);
 }
 

@@ -232,6 +232,40 @@ START_TEST(test_sweep_figures) {
 }
 END_TEST
 
+/* Three runs over one reference: E's, seen and below throughout (peak 0.9,
+ * last 0.8 at 30 s); one at the paper's resolution, seen, not below (peak
+ * 1.1, its last ratio not measured, at 20 s); D's, not seen. Two
+ * measured, one under, the peak 1.1, the last ratios' range 0.8 alone,
+ * times 20-30 s, one seen in each of the first and third groups. */
+START_TEST(test_ratios_gathered) {
+  struct vsph_series_ratio hr[3] = {
+      {.seen = 1, .below = 1, .peak = 0.9, .t_last = 30, .last = 0.8},
+      {.seen = 1, .below = 0, .peak = 1.1, .t_last = 20, .last = NAN},
+      {.seen = 0, .below = 1, .peak = -INFINITY, .t_last = 0.5, .last = NAN}};
+  const int group[3] = {1, 4, 2};
+  struct vsph_measures_ratios g;
+  vsph_measures_ratios(hr, group, 3, &g);
+  ck_assert_int_eq(g.measured, 2);
+  ck_assert_int_eq(g.under, 1);
+  ck_assert_double_eq(g.peak, 1.1);
+  ck_assert_double_eq(g.lo, 0.8);
+  ck_assert_double_eq(g.hi, 0.8);
+  ck_assert_double_eq(g.t_lo, 20.0);
+  ck_assert_double_eq(g.t_hi, 30.0);
+  ck_assert_int_eq(g.seen_in[0], 1);
+  ck_assert_int_eq(g.seen_in[1], 0);
+  ck_assert_int_eq(g.seen_in[2], 1);
+  /* a peak not measured, even an unseen run's: the peak is not */
+  hr[2].peak = NAN;
+  vsph_measures_ratios(hr, group, 3, &g);
+  ck_assert(isnan(g.peak));
+  /* none: the empty extents */
+  vsph_measures_ratios(hr, group, 0, &g);
+  ck_assert(g.measured == 0 && isinf(g.peak) && g.peak < 0);
+  ck_assert(isinf(g.t_lo) && g.t_lo > 0 && isinf(g.hi) && g.hi < 0);
+}
+END_TEST
+
 Suite *vsph_measures_suite(void) {
   Suite *s = suite_create("measures");
   TCase *tc = tcase_create("core");
@@ -242,6 +276,7 @@ Suite *vsph_measures_suite(void) {
   tcase_add_test(tc, test_closest_of_forms);
   tcase_add_test(tc, test_robustness_map);
   tcase_add_test(tc, test_sweep_figures);
+  tcase_add_test(tc, test_ratios_gathered);
   suite_add_tcase(s, tc);
   return s;
 }
