@@ -10,9 +10,12 @@
  *  memory (a snapshot's compressed arrays, the state a snapshot within a
  *  step waits in). */
 
-/** @brief A new file in @p dir (NULL: TMPDIR, else /tmp) named
- *  @p prefix and six random characters (mkstemp), open for update, closed
- *  on exec, and unlinked at once, so that nothing stays behind. Where the
+/** @brief A new file in @p dir (NULL: TMPDIR, else /tmp), open for
+ *  update, closed on exec, with no name (O_TMPFILE, where the system and
+ *  the file system have it: nothing can stay behind, even after a kill);
+ *  else named @p prefix and six random characters (mkstemp) and unlinked
+ *  at once, so that nothing stays behind but after a kill between the
+ *  two (a run's folder knows its snapshots' scratch name). Where the
  *  file system cannot unlink an open file: with @p kept not NULL, its name
  *  (malloc'd) goes there for the caller to remove after closing it (else
  *  *kept is NULL); with @p kept NULL, the file is removed and NULL

@@ -37,6 +37,14 @@ static int tmp_of(const char *name, int (*owns)(const char *)) {
   return owns(base) == VSPH_FOLDER_FILE;
 }
 
+/* .vsph-vtk-XXXXXX, a snapshot's scratch file (io/vtk.c, mkstemp's six
+ * characters) left by a kill between its making and its unlinking where
+ * the file system has no unnamed files: a temporary of a scene run */
+static int scratch_of_vtk(const char *name) {
+  static const char P[] = ".vsph-vtk-";
+  return strlen(name) == sizeof P - 1 + 6 && !strncmp(name, P, sizeof P - 1);
+}
+
 static int one_of(const char *name, const char *const *list) {
   for (; *list; list++)
     if (!strcmp(name, *list)) return 1;
@@ -57,6 +65,7 @@ static int owns_scene(const char *name) {
   if (n == 14 && !strncmp(name, "walls_", 6) && ends_with(name, ".vtp") &&
       strspn(name + 6, "0123456789") == 4)
     return VSPH_FOLDER_FILE;
+  if (scratch_of_vtk(name)) return VSPH_FOLDER_FILE;
   return tmp_of(name, owns_scene) ? VSPH_FOLDER_FILE : VSPH_FOLDER_FOREIGN;
 }
 
@@ -356,7 +365,9 @@ static int skipped(const char *name, const char *const *skip) {
          (skip && one_of(name, skip));
 }
 
-static int is_tmp(const char *name) { return ends_with(name, ".tmp"); }
+static int is_tmp(const char *name) {
+  return ends_with(name, ".tmp") || scratch_of_vtk(name);
+}
 
 /* Remove the regular files vsph writes in the claimed folder but the
  * marker, the lock and @p keep; only temporaries when @p tmp_only. */

@@ -1283,10 +1283,14 @@ START_TEST(test_resume_checks_files) {
       fseek(f, 120, SEEK_SET);
       fputc(ch == '1' ? '2' : '1', f);
       ck_assert_int_eq(fclose(f), 0);
-    } else if (c == 2) { /* a temporary left by a killed writer: removed,
-                            not sealed */
+    } else if (c == 2) { /* temporaries left by a killed writer: removed,
+                            not sealed (a snapshot's scratch file, where
+                            the file system has no unnamed files, killed
+                            between mkstemp and unlink) */
       snprintf(path, sizeof path, "%s/checkpoint.bin.tmp", b);
       put(path, "half a checkpoint");
+      snprintf(path, sizeof path, "%s/.vsph-vtk-a1B2c3", b);
+      put(path, "a snapshot's compressed arrays");
     } else { /* a hard link kept of energy.csv: the resume leaves it be */
       snprintf(path, sizeof path, "%s/energy.csv", b);
       ck_assert_int_eq(link(path, backup), 0);
@@ -1295,6 +1299,8 @@ START_TEST(test_resume_checks_files) {
     ck_assert_int_eq(run("poiseuille", POIS, b, 0, &r), 0);
     ck_assert_msg(r.segments == (c >= 2 ? 2u : 1u), "case %d: %zu", c,
                   r.segments); /* cases 0, 1: started over */
+    snprintf(path, sizeof path, "%s/.vsph-vtk-a1B2c3", b);
+    ck_assert_int_ne(access(path, F_OK), 0); /* the stale scratch removed */
     if (c == 3) {
       vsph_test_slurp(backup, after, sizeof after);
       ck_assert_str_eq(before, after);
