@@ -30,6 +30,22 @@ double vsph_measures_smallest(const double *x, size_t n, double from) {
   return from;
 }
 
+int vsph_measures_steps(const double *x, size_t n, double *d) {
+  int all = 1;
+  for (size_t k = 0; k < n; k++) all &= isfinite(x[k]) != 0;
+  for (size_t k = 0; k + 1 < n; k++)
+    d[k] = all ? fabs(x[k + 1] - x[k]) : (double)NAN;
+  return all;
+}
+
+int vsph_measures_arg(const double *x, int n, int sign) {
+  if (n <= 0) return -1;
+  int best = 0;
+  for (int k = 1; k < n; k++)
+    if (sign > 0 ? x[k] > x[best] : x[k] < x[best]) best = k;
+  return best;
+}
+
 double vsph_measures_max_factor(const double *a, const double *b, size_t n) {
   double far = 1.0;
   for (size_t k = 0; k < n; k++) {

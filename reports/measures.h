@@ -30,6 +30,17 @@ double vsph_measures_largest(const double *x, size_t n, double from);
 /** @brief The smallest: vsph_measures_largest with fmin. */
 double vsph_measures_smallest(const double *x, size_t n, double from);
 
+/** @brief A ladder's successive differences |x[k+1] - x[k]|, k < n - 1,
+ *  into @p d, each NaN unless every x is finite (a difference read only
+ *  where the whole ladder was measured). @return 1 where they were, else
+ *  0. */
+int vsph_measures_steps(const double *x, size_t n, double *d);
+
+/** @brief The index of the largest of @p x[0..n) (@p sign 1) or the
+ *  smallest (@p sign -1): the first on a tie, entry 0 where nothing beats
+ *  it (a NaN beats nothing); -1 where n is 0. */
+int vsph_measures_arg(const double *x, int n, int sign);
+
 /** @brief The largest factor either way between @p a[k] and @p b[k] over
  *  k < @p n, max(a/b, b/a), and at least 1 (1 where n is 0); a pair with
  *  a value not positive or not finite counts as infinitely far (+inf), so

@@ -1076,10 +1076,11 @@ static void wave_form_words(struct vsph_claim_vals *v, const struct wave *w,
   }
   snprintf(key, sizeof key, "loss_%s", vsph_viscous_name(f));
   vsph_claim_str(v, key, "%s", buf);
-  const double d1 = fabs(q[1] - q[0]), d2 = fabs(q[2] - q[1]);
-  const int both = isfinite(d1) && isfinite(d2);
-  num_form(v, "dloss1", f, both ? d1 : (double)NAN);
-  num_form(v, "dloss2", f, both ? d2 : (double)NAN);
+  double d[VSPH_REPORT_LADDER - 1]; /* NaN unless every rung measured */
+  const int both = vsph_measures_steps(q, VSPH_REPORT_LADDER, d);
+  const double d1 = d[0], d2 = d[1];
+  num_form(v, "dloss1", f, d1);
+  num_form(v, "dloss2", f, d2);
   m = 0;
   buf[0] = '\0';
   if (both)

@@ -229,11 +229,8 @@ static int disorder_claims(struct vsph_report *R, const struct table *tb,
    * perturbed, against the paper's; VISC-03 dearest and VISC-02 cheapest
    * is the claim (its ratios 0.81 : 1 : 2.25 : 1.93 are its code's) */
   const double *w = tb->wall[NRES - 1];
-  int dear = 0, cheap = 0;
-  for (int f = 1; f < NLAP; f++) {
-    if (w[f] > w[dear]) dear = f;
-    if (w[f] < w[cheap]) cheap = f;
-  }
+  const int dear = vsph_measures_arg(w, NLAP, 1),
+            cheap = vsph_measures_arg(w, NLAP, -1);
   vsph_claim_clear(v);
   for (int f = 0; f < NLAP; f++) {
     char key[2][8]; /* ours, and the paper's Table 3 */

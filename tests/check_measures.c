@@ -43,6 +43,26 @@ START_TEST(test_largest_smallest) {
 }
 END_TEST
 
+/* A ladder's steps: |0.5 - 0.25|, |0.375 - 0.5| (exact in doubles); one
+ * rung not measured: none of them. The first index of the largest and the
+ * smallest; a NaN beats nothing; none: -1. */
+START_TEST(test_steps_and_arg) {
+  const double x[] = {0.25, 0.5, 0.375};
+  double d[2];
+  ck_assert_int_eq(vsph_measures_steps(x, 3, d), 1);
+  ck_assert_double_eq(d[0], 0.25);
+  ck_assert_double_eq(d[1], 0.125);
+  const double y[] = {0.25, NAN, 0.375};
+  ck_assert_int_eq(vsph_measures_steps(y, 3, d), 0);
+  ck_assert(isnan(d[0]) && isnan(d[1]));
+  const double w[] = {1.0, 3.0, 3.0, 0.5, NAN};
+  ck_assert_int_eq(vsph_measures_arg(w, 5, 1), 1);
+  ck_assert_int_eq(vsph_measures_arg(w, 5, -1), 3);
+  ck_assert_int_eq(vsph_measures_arg(w + 4, 1, 1), 0);
+  ck_assert_int_eq(vsph_measures_arg(w, 0, 1), -1);
+}
+END_TEST
+
 /* The largest factor either way: (2, 1) and (1, 4) -> 4; equal tables 1;
  * a value not positive or not measured: infinitely far. */
 START_TEST(test_max_factor_either_way) {
@@ -271,6 +291,7 @@ Suite *vsph_measures_suite(void) {
   TCase *tc = tcase_create("core");
   tcase_add_test(tc, test_extent_of_finite_values);
   tcase_add_test(tc, test_largest_smallest);
+  tcase_add_test(tc, test_steps_and_arg);
   tcase_add_test(tc, test_max_factor_either_way);
   tcase_add_test(tc, test_sign_changes);
   tcase_add_test(tc, test_closest_of_forms);
