@@ -27,11 +27,31 @@ void vsph_claim_clear(struct vsph_claim_vals *v) {
   v->overflow = 0;
 }
 
+/* The slot of the value named by the @p n characters at @p name, or v->n
+ * where none is: the one lookup of a name among the part's values. */
+static size_t find(const struct vsph_claim_vals *v, const char *name,
+                   size_t n) {
+  size_t k = 0;
+  while (k < v->n && (strlen(v->key[k]) != n || strncmp(v->key[k], name, n)))
+    k++;
+  return k;
+}
+
+/* The plain finite number as people write it at @p s (digits, a point,
+ * an exponent: no nan, inf or hex) into *x: the characters it takes, or 0
+ * where none is there. The one reading of numbers in a test's arguments
+ * and a let's expression. */
+static size_t plain_number(const char *s, double *x) {
+  char *end;
+  *x = strtod(s, &end);
+  const size_t n = (size_t)(end - s);
+  return n && strspn(s, "+-0123456789.eE") >= n && isfinite(*x) ? n : 0;
+}
+
 /* The slot of @p key (a new one at the end when absent), or
  * VSPH_CLAIM_MAXVALS when none is left (then v->overflow is set). */
 static size_t slot(struct vsph_claim_vals *v, const char *key) {
-  size_t k = 0;
-  while (k < v->n && strcmp(v->key[k], key)) k++;
+  const size_t k = find(v, key, strlen(key));
   if (k == v->n) {
     if (v->n == VSPH_CLAIM_MAXVALS || strlen(key) >= sizeof v->key[0]) {
       v->overflow = 1;
@@ -369,13 +389,11 @@ int vsph_claim_class(const char *verdict) {
 static int arg(const char *name, const char *a, const struct vsph_claim_vals *v,
                double *x) {
   char *end;
-  const double lit = strtod(a, &end);
+  (void)strtod(a, &end);
   if (end != a && !*end) { /* a number as people write it: no nan, inf, hex */
-    const size_t d = strspn(a, "+-0123456789.eE");
-    if (a[d] || !isfinite(lit) || !strpbrk(a, "0123456789"))
+    if (plain_number(a, x) != strlen(a))
       VSPH_FAIL(VSPH_EINVAL, "claim %s: '%s' is no plain finite number", name,
                 a);
-    *x = lit;
     return VSPH_OK;
   }
   if (!isalpha((unsigned char)a[0]) && a[0] != '_')
@@ -387,16 +405,14 @@ static int arg(const char *name, const char *a, const struct vsph_claim_vals *v,
     *x = 0.0;
     return VSPH_OK;
   }
-  for (size_t k = 0; k < v->n; k++)
-    if (!strcmp(v->key[k], a)) {
-      if (v->is_str[k])
-        VSPH_FAIL(VSPH_EINVAL, "claim %s: '%s' is a word, not a measure", name,
-                  a);
-      *x = v->num[k];
-      return VSPH_OK;
-    }
-  VSPH_FAIL(VSPH_EINVAL, "claim %s: no measure '%s' (the part sets none)", name,
-            a);
+  const size_t k = find(v, a, strlen(a));
+  if (k == v->n)
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: no measure '%s' (the part sets none)",
+              name, a);
+  if (v->is_str[k])
+    VSPH_FAIL(VSPH_EINVAL, "claim %s: '%s' is a word, not a measure", name, a);
+  *x = v->num[k];
+  return VSPH_OK;
 }
 
 int vsph_claim_test(const char *kind, const double *x) {
@@ -534,24 +550,22 @@ static void ar_skip(struct arith *a) {
 
 /* A number as people write it (no nan, inf or hex). */
 static double ar_number(struct arith *a) {
-  char *end;
-  const double x = strtod(a->s, &end);
-  const size_t n = (size_t)(end - a->s);
-  if (!n || strspn(a->s, "0123456789.eE+-") < n || !isfinite(x))
-    return ar_fail(a, "no plain finite number at", n ? n : 1, a->s);
-  a->s = end;
+  double x;
+  const size_t n = plain_number(a->s, &x);
+  if (!n) return ar_fail(a, "no plain finite number at", 1, a->s);
+  a->s += n;
   return x;
 }
 
 /* The value of measure @p n chars at @p at. */
 static double ar_measure(struct arith *a, const char *at, size_t n) {
   if (!a->v) return 0.0;
-  for (size_t k = 0; k < a->v->n; k++)
-    if (strlen(a->v->key[k]) == n && !strncmp(a->v->key[k], at, n)) {
-      if (a->v->is_str[k]) return ar_fail(a, "a word, not a measure:", n, at);
-      return a->v->num[k];
-    }
-  return ar_fail(a, "no measure (the part sets none, nor a let before)", n, at);
+  const size_t k = find(a->v, at, n);
+  if (k == a->v->n)
+    return ar_fail(a, "no measure (the part sets none, nor a let before)", n,
+                   at);
+  if (a->v->is_str[k]) return ar_fail(a, "a word, not a measure:", n, at);
+  return a->v->num[k];
 }
 
 /* A function's call after its name: abs(x); max(a, b, ...) and min(a, b,
@@ -826,8 +840,7 @@ static int fill(const char *name, const char *t, const struct block *b,
     } else if (!v) {
       piece[0] = '\0';
     } else {
-      size_t k = 0;
-      while (k < v->n && strcmp(v->key[k], ph)) k++;
+      const size_t k = find(v, ph, strlen(ph));
       if (k == v->n)
         VSPH_FAIL(VSPH_EINVAL, "claim %s: {{%s}} has no value", name, ph);
       if (v->is_str[k]) {
