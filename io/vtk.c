@@ -158,7 +158,7 @@ static int add(struct out *o, enum section sec, const char *name,
   const volatile sig_atomic_t *stop = o->stop;
   VSPH_ASSERT(o->ne < MAX_ARRAYS);
   if (!o->spill &&
-      !(o->spill = vsph_scratch_open(o->dir, ".vsph-vtk-", &o->spill_path)))
+      !(o->spill = vsph_scratch_open(o->dir, VSPH_VTK_SCRATCH, &o->spill_path)))
     VSPH_FAIL(VSPH_EIO, "cannot write a snapshot's scratch file in %s: %s",
               o->dir, strerror(errno));
   const size_t nblocks = (nbytes + VSPH_VTK_BLOCK - 1) / VSPH_VTK_BLOCK;

@@ -27,6 +27,11 @@ struct vsph_diagnostics;
  *  default (vtkXMLWriter::BlockSize). */
 #define VSPH_VTK_BLOCK 32768
 
+/** Name prefix of a snapshot's scratch file in its folder, where the file
+ *  system cannot make an unnamed one (common/scratch.h): a run's folder
+ *  knows a stale one, left by a kill, as its own temporary. */
+#define VSPH_VTK_SCRATCH ".vsph-vtk-"
+
 /** @brief Snapshot of the particles with id < @p n_fluid, in id order, at
  *  time @p t (s), with the diagnostics @p dg (indexed by id; NULL: none),
  *  written atomically to DIR/NAME.

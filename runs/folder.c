@@ -19,6 +19,7 @@
 #include "../common/consts.h"
 #include "../common/status.h"
 #include "../io/files.h"
+#include "../io/vtk.h"
 
 /* ------------------------------------------------------------ the kinds */
 
@@ -41,8 +42,8 @@ static int tmp_of(const char *name, int (*owns)(const char *)) {
  * characters) left by a kill between its making and its unlinking where
  * the file system has no unnamed files: a temporary of a scene run */
 static int scratch_of_vtk(const char *name) {
-  static const char P[] = ".vsph-vtk-";
-  return strlen(name) == sizeof P - 1 + 6 && !strncmp(name, P, sizeof P - 1);
+  const size_t p = strlen(VSPH_VTK_SCRATCH);
+  return strlen(name) == p + 6 && !strncmp(name, VSPH_VTK_SCRATCH, p);
 }
 
 static int one_of(const char *name, const char *const *list) {
