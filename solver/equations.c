@@ -655,10 +655,14 @@ VSPH_CONSTS_SPECIALISE void grad_block(const struct vsph_pair_kernel *pk,
           for (size_t k = 0; k < m; k++) s += vj[k] * u[e][k];
           sums[e] += s;
         }
-        for (size_t k = 0; k < m; k++) { /* j's, in pair order */
-          double *const q = buf + (b.j[k] - lo) * (size_t)nf;
-          for (int e = 0; e < nf; e++) q[e] += Vi * u[e][k];
-        }
+        if (VSPH_PAIR_X86 && nf == 8 && pk->simd)
+          vsph_sweep_x86_add8_avx2(buf, lo, b.j, m, u[0], VSPH_PAIR_CHUNK_MAX,
+                                   Vi);
+        else
+          for (size_t k = 0; k < m; k++) { /* j's, in pair order */
+            double *const q = buf + (b.j[k] - lo) * (size_t)nf;
+            for (int e = 0; e < nf; e++) q[e] += Vi * u[e][k];
+          }
       }
       double *const q = buf + (i - lo) * (size_t)nf;
       for (int e = 0; e < nf; e++) q[e] += sums[e];

@@ -22,6 +22,7 @@
 #include "equations.h"
 #include "pair.h"
 #include "particles.h"
+#include "sweep_x86.h"
 #include "viscous.h"
 
 /* The body force at x (the public function's, without its argument check:
@@ -378,7 +379,7 @@ typedef size_t vsph_equations_sweep_fn(const struct vsph_equations_ctx *rc,
 /* Add the first @p na fields of the @p m pairs' shares @p js to their
  * receivers j (@p jj) in block buffer @p buf (first particle @p lo,
  * @p nf fields each), in pair order. */
-VSPH_CONSTS_SPECIALISE void sweep_add(double *buf, size_t lo, int nf,
+VSPH_CONSTS_SPECIALISE void sweep_add(double *buf, size_t lo, const int nf,
                                       const size_t *jj, size_t m,
                                       double js[][VSPH_PAIR_CHUNK_MAX],
                                       const int na) {
@@ -438,13 +439,17 @@ VSPH_CONSTS_SPECIALISE size_t sweep_count(const struct vsph_pair_chunk *b,
  * particle's entry in a block depends on the block's pairs and their
  * order alone. Pairs of two ghosts are skipped. Returns the interactions
  * (each fluid receiver of a pair counts once) and the closest pair. */
-VSPH_CONSTS_SPECIALISE size_t
-sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
-            const struct vsph_cells *cells, size_t n_fluid,
-            const struct vsph_equations_sweep *sw, size_t blk, int nf,
-            double *min_s2, const int dim, vsph_viscous_pair_fn *const pair,
-            const int delta, const int kid) {
-  const int parts = rc->parts;
+VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
+    const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
+    const struct vsph_cells *cells, size_t n_fluid,
+    const struct vsph_equations_sweep *sw, size_t blk, double *min_s2,
+    const int dim, vsph_viscous_pair_fn *const pair, const int delta,
+    const int kid, const int parts) {
+  /* the buffer's fields (solver/equations.c sets them so), a constant
+   * here, as are the fields j's shares fill: the viscous part's with the
+   * parts, the delta-SPH sum with delta-SPH or the parts */
+  const int nf = parts ? SW_VISC(dim) + dim : SW_DELTA(dim) + delta;
+  const int dsw = delta || parts; /* the buffer holds delta-SPH's sum */
   const size_t lo = sw->lo[blk];
   double *const buf = sw->buf + sw->off[blk];
   memset(buf, 0, (sw->hi[blk] - lo) * (size_t)nf * sizeof *buf);
@@ -489,41 +494,44 @@ sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
             dux += du.v[a] * pr.x[a];
           }
           sc[k] = vsph_pair_continuity(&pr, dux);
-          sd[k] = delta ? vsph_pair_delta(&pr, rho[j] - rhoi) : 0.0;
+          if (dsw) sd[k] = delta ? vsph_pair_delta(&pr, rho[j] - rhoi) : 0.0;
           const struct vsph_pair_vec f =
               vsph_pair_pressure(&pr, dim, pi + pp[j]);
           const struct vsph_pair_visc g =
               viscous_share(pair, &rc->vl, dim, &pr, du, dux, Ai);
           for (int a = 0; a < dim; a++) {
             sf[a][k] = f.v[a] + g.f[a];
-            sv[a][k] = g.f[a];
+            if (parts) sv[a][k] = g.f[a];
             js[SW_F + a][k] = -(Vi * sf[a][k]);
-            js[SW_VISC(dim) + a][k] = -(Vi * g.f[a]);
+            if (parts) js[SW_VISC(dim) + a][k] = -(Vi * g.f[a]);
           }
           js[SW_CONT(dim)][k] = Vi * sc[k];
-          js[SW_DELTA(dim)][k] = -(Vi * sd[k]);
+          if (dsw) js[SW_DELTA(dim)][k] = -(Vi * sd[k]);
           vj[k] = vol[j];
         }
         /* i's sums, lane by lane */
 #pragma omp simd reduction(+ : cont, dsum, f0, f1, f2, v0, v1, v2)
         for (size_t k = 0; k < m; k++) {
           cont += vj[k] * sc[k];
-          dsum += vj[k] * sd[k];
+          if (dsw) dsum += vj[k] * sd[k];
           f0 += vj[k] * sf[0][k];
-          v0 += vj[k] * sv[0][k];
+          if (parts) v0 += vj[k] * sv[0][k];
           if (dim > 1) {
             f1 += vj[k] * sf[1][k];
-            v1 += vj[k] * sv[1][k];
+            if (parts) v1 += vj[k] * sv[1][k];
           }
           if (dim > 2) {
             f2 += vj[k] * sf[2][k];
-            v2 += vj[k] * sv[2][k];
+            if (parts) v2 += vj[k] * sv[2][k];
           }
         }
         /* j's shares, in pair order (a ghost's are never read): the
          * force, continuity and (delta) the diffusion, or every field */
-        sweep_add(buf, lo, nf, b.j, m, js,
-                  parts ? SW_VISC(dim) + dim : SW_DELTA(dim) + delta);
+        if (VSPH_PAIR_X86 && (nf == 3 || nf == 4) && rc->pk.simd)
+          vsph_sweep_x86_add_avx2(buf, lo, nf, b.j, m, js[0],
+                                  VSPH_PAIR_CHUNK_MAX);
+        else
+          sweep_add(buf, lo, nf, b.j, m, js, nf);
         total += sweep_count(&b, id, n_fluid, fluid_only, fi, &rs2, &ms2);
       }
       if (!fi) continue;
@@ -535,6 +543,21 @@ sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
   }
   *min_s2 = ms2;
   return total;
+}
+
+/* sweep_block_parts with the parts (rc->parts) a constant too; @p nf,
+ * the buffer's fields, is what the constants make it. */
+VSPH_CONSTS_SPECIALISE size_t
+sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
+            const struct vsph_cells *cells, size_t n_fluid,
+            const struct vsph_equations_sweep *sw, size_t blk, int nf,
+            double *min_s2, const int dim, vsph_viscous_pair_fn *const pair,
+            const int delta, const int kid) {
+  (void)nf;
+  return rc->parts ? sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
+                                       dim, pair, delta, kid, 1)
+                   : sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
+                                       dim, pair, delta, kid, 0);
 }
 
 #endif /* VSPH_SOLVER_EQUATIONS_INTERNAL_H */

@@ -720,6 +720,71 @@ START_TEST(test_sweep_gather_threads) {
 }
 END_TEST
 
+/* The symmetric sweep's scatter of j's shares by AVX2
+ * (solver/sweep_x86.c: three fields, four with delta-SPH, eight in PVWF's
+ * first pass) against the scalar loop: the stretching square at 24 across
+ * after three steps, MGF with and without delta-SPH, PVWF, each with and
+ * without the dissipative parts (six fields, the scalar loop at every
+ * level), evaluated with the portable loops (VSPH_PAIR_SIMD=portable) and
+ * at each level the CPU has: every output the same bits (each entry gets
+ * the same adds in the same order; the candidate test gives the same
+ * chunks at every level, test_candidates_simd). A level the CPU lacks is
+ * said and left out. */
+START_TEST(test_sweep_scatter_simd) {
+  static const struct {
+    int form;
+    double delta;
+  } cases[] = {{VSPH_VISCOUS_MGF, 0.0},
+               {VSPH_VISCOUS_MGF, 0.1},
+               {VSPH_VISCOUS_PVWF, 0.0}};
+  const int c = _i / 2, parts = _i % 2;
+  struct vsph_integrate_props ip;
+  struct vsph_integrate *s = scene_stepped(
+      &vsph_stretching_square_type, cases[c].form, 24, cases[c].delta, &ip);
+  const size_t n = s->p->n;
+  const int most = vsph_pair_x86_simd();
+  if (most < 2)
+    fprintf(stderr,
+            "test_sweep_scatter_simd: this build or CPU (or VSPH_PAIR_SIMD) "
+            "allows %s only\n",
+            most ? "AVX2" : "the portable loop");
+  double *buf = calloc(6 * n * 3, sizeof *buf);
+  struct vsph_equations_sweep *sw = vsph_equations_sweep_alloc();
+  const char *was = getenv("VSPH_PAIR_SIMD");
+  char *keep = was ? strdup(was) : NULL;
+  static const char *const names[] = {"portable", "avx2", "avx512"};
+  for (int level = 0; level <= most; level++) {
+    double *const o = buf + (size_t)level * 6 * n;
+    struct vsph_equations_out out = {
+        .drho = o, .acc = {o + n, o + 2 * n}, .sweep = sw};
+    if (parts) {
+      out.acc_visc[0] = o + 3 * n;
+      out.acc_visc[1] = o + 4 * n;
+      out.drho_delta = o + 5 * n;
+    }
+    ck_assert_int_eq(setenv("VSPH_PAIR_SIMD", names[level], 1), 0);
+    ck_assert_int_eq(vsph_equations_rhs(&s->props.eq, s->p, s->n_fluid,
+                                        s->cells, s->vws, &out),
+                     0);
+    if (level)
+      for (size_t e = 0; e < (parts ? 6 : 3) * n; e++)
+        ck_assert_msg(memcmp(o + e, buf + e, sizeof *o) == 0,
+                      "%s (delta %g, parts %d), %s: entry %zu is %.17g, "
+                      "portable %.17g",
+                      vsph_viscous_name(cases[c].form), cases[c].delta, parts,
+                      names[level], e, o[e], buf[e]);
+  }
+  if (keep)
+    setenv("VSPH_PAIR_SIMD", keep, 1);
+  else
+    unsetenv("VSPH_PAIR_SIMD");
+  free(keep);
+  vsph_equations_sweep_free(sw);
+  free(buf);
+  vsph_integrate_free(s);
+}
+END_TEST
+
 /* The candidate test by AVX-512 and by AVX2 (solver/pair_x86.c) against
  * the portable loop on the same particles (a perturbed patch in 2-D and
  * in 3-D, 3h Gaussian and quintic supports, every particle as receiver, all
@@ -1396,6 +1461,7 @@ Suite *vsph_equations_suite(void) {
   size_t nwc = 0;
   while (vsph_scene_get(nwc) && vsph_scene_get(nwc) != &vsph_shear_type) nwc++;
   tcase_add_loop_test(tc, test_candidates_simd, 0, 4);
+  tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 6);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
   tcase_add_loop_test(tc, test_sweep_gather_threads,
                       (int)vsph_scene_count() * 5,
