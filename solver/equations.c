@@ -180,40 +180,62 @@ VSPH_CONSTS_SPECIALISE size_t contact_one(
   vsph_pair_begin(&it, &rc->pk, p, rg, i);
   while (vsph_pair_gather(&it, dim, kid, &b)) {
     const size_t m = b.m;
-#pragma omp simd reduction(+ : cont, diff, ap0, ap1, ap2, av0, av1, av2) \
-    reduction(min : ms2)
+    /* the pairs' shares: a map, no sums, so that it vectorises (a sum in
+     * the same loop kept it scalar) */
+    double sc[VSPH_PAIR_CHUNK_MAX], sd[VSPH_PAIR_CHUNK_MAX],
+        fa[3][VSPH_PAIR_CHUNK_MAX], fv[3][VSPH_PAIR_CHUNK_MAX];
+    size_t mjk[VSPH_PAIR_CHUNK_MAX]; /* j's materials, the test outside */
+    const double uiv[3] = {ui.v[0], ui.v[1], ui.v[2]};
+    if (mat)
+      for (size_t k = 0; k < m; k++) mjk[k] = mat[b.j[k]];
+    else
+      for (size_t k = 0; k < m; k++) mjk[k] = 0;
+#pragma omp simd
     for (size_t k = 0; k < m; k++) {
       struct vsph_pair pr;
       vsph_pair_at(&b, k, dim, &pr);
       const size_t j = pr.j;
-      const int mj = mat ? mat[j] : 0;
-      struct vsph_pair_vec uj = {{0, 0, 0}}, du = {{0, 0, 0}};
+      const size_t mj = mjk[k];
+      /* set one by one, no aggregate copy (which keeps the loop scalar) */
+      struct vsph_pair_vec uik, uj, du;
       double dux = 0.0;
-      for (int a = 0; a < dim; a++) {
-        uj.v[a] = vel[a][j];
-        du.v[a] = uj.v[a] - ui.v[a];
-        dux += du.v[a] * pr.x[a];
+      for (int a = 0; a < 3; a++) {
+        uik.v[a] = uiv[a];
+        uj.v[a] = a < dim ? vel[a][j] : 0.0;
+        du.v[a] = uj.v[a] - uiv[a];
+        if (a < dim) dux += du.v[a] * pr.x[a];
       }
-      ms2 = pr.s2 < ms2 ? pr.s2 : ms2;
       const struct vsph_pair_contact_share sh = vsph_pair_contact(
-          &pr, dim, sqrt(pr.s2), pi, pp[j], Zi, rho[j] * rc->cmat[mj], ui, uj);
+          &pr, dim, sqrt(pr.s2), pi, pp[j], Zi, rho[j] * rc->cmat[mj], uik, uj);
       double g[3] = {0, 0, 0};
       if (visc) {
         const struct vsph_pair_visc gv =
             vsph_pair_contact_visc(&pr, dim, rc->etap[mi][mj], du, dux);
         for (int a = 0; a < dim; a++) g[a] = gv.f[a];
       }
-      cont += sh.cont;
-      diff += sh.diff;
-      ap0 += sh.f[0] + g[0];
-      av0 += sh.fd[0] + g[0];
+      sc[k] = sh.cont;
+      sd[k] = sh.diff;
+      for (int a = 0; a < dim; a++) {
+        fa[a][k] = sh.f[a] + g[a];
+        fv[a][k] = sh.fd[a] + g[a];
+      }
+    }
+    /* i's sums, lane by lane */
+#pragma omp simd reduction(+ : cont, diff, ap0, ap1, ap2, av0, av1, av2) \
+    reduction(min : ms2)
+    for (size_t k = 0; k < m; k++) {
+      ms2 = b.s2[k] < ms2 ? b.s2[k] : ms2;
+      cont += sc[k];
+      diff += sd[k];
+      ap0 += fa[0][k];
+      av0 += fv[0][k];
       if (dim > 1) {
-        ap1 += sh.f[1] + g[1];
-        av1 += sh.fd[1] + g[1];
+        ap1 += fa[1][k];
+        av1 += fv[1][k];
       }
       if (dim > 2) {
-        ap2 += sh.f[2] + g[2];
-        av2 += sh.fd[2] + g[2];
+        ap2 += fa[2][k];
+        av2 += fv[2][k];
       }
     }
     nint += m;

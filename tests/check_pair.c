@@ -995,6 +995,54 @@ START_TEST(test_contact_shapes) {
 }
 END_TEST
 
+/* Contact SPH's dissipative parts hold the physical viscosity as the
+ * force does (2-D Gaussian, the stretching square at 24 across after
+ * three steps): the viscous traction g enters the acceleration as
+ * sum (f + g)/rho and its dissipative part as sum (fd + g)/rho, f and fd
+ * not depending on the viscosity, so between the scene's viscosity and
+ * none, acc_visc changes by what acc changes, particle by particle, to
+ * rounding (two sums of ~50 terms as large as the pressure terms: 1e-12
+ * of the largest acceleration), and the change is no rounding (over 1e-6
+ * of it). A traction left out of either sum changes one and not the
+ * other. */
+START_TEST(test_contact_parts_viscous) {
+  struct vsph_integrate_props ip;
+  struct vsph_integrate *s =
+      scene_stepped_k(&vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 24, 0.0,
+                      &vsph_gaussian_type, VSPH_CONSTS_HDX, 0, &ip);
+  s->props.eq.scheme = VSPH_EQUATIONS_CONTACT;
+  s->props.eq.nmat = 1;
+  const size_t n = s->p->n;
+  double *buf = calloc(12 * n, sizeof *buf);
+  for (int v = 0; v < 2; v++) { /* the scene's viscosity, then none */
+    s->props.eq.mat[0] = (struct vsph_equations_mat){
+        .rho0 = ip.eq.rho0, .c0 = ip.eq.c0, .mu = v ? 0.0 : ip.eq.visc.mu};
+    (void)sweep_rhs(s, NULL, 2, buf + (size_t)v * 6 * n);
+  }
+  double big = 0.0, dv = 0.0, err = 0.0;
+  for (int a = 0; a < 2; a++)
+    for (size_t i = 0; i < n; i++) {
+      if (s->p->id[i] >= s->n_fluid) continue;
+      const double *const o = buf, *const z = buf + 6 * n;
+      const double dacc =
+                       o[(1 + (size_t)a) * n + i] - z[(1 + (size_t)a) * n + i],
+                   dvis =
+                       o[(3 + (size_t)a) * n + i] - z[(3 + (size_t)a) * n + i];
+      big = fmax(big, fmax(fabs(o[(1 + (size_t)a) * n + i]),
+                           fabs(o[(3 + (size_t)a) * n + i])));
+      dv = fmax(dv, fabs(dacc));
+      err = fmax(err, fabs(dvis - dacc));
+    }
+  ck_assert_msg(dv > 1e-6 * big, "the viscosity changes acc by %.3e of %.3e",
+                dv, big);
+  ck_assert_msg(err <= 1e-12 * big,
+                "acc_visc's change differs from acc's by %.3e (%.3e of %.3e)",
+                err, dv, big);
+  free(buf);
+  vsph_integrate_free(s);
+}
+END_TEST
+
 /* The 3-D Gaussian loop of contact SPH (the shear scene, 8 across,
  * contact SPH with its viscosity, after three steps): 1 and 2 threads the
  * same bits, and the general loop's interactions and each field to 1e-12
@@ -1468,6 +1516,7 @@ Suite *vsph_equations_suite(void) {
                       (int)vsph_scene_count() * 5 + 1);
   tcase_add_loop_test(tc, test_contact_shapes, 0, 2);
   tcase_add_test(tc, test_contact_shapes_3d);
+  tcase_add_test(tc, test_contact_parts_viscous);
   tcase_add_loop_test(tc, test_gather_shapes, 0, 12);
   tcase_add_loop_test(tc, test_state_equations, 0, 3);
   tcase_add_loop_test(tc, test_xsph_sum, 0, 2);
