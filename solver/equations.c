@@ -746,10 +746,7 @@ static int run_sweep(const struct vsph_equations_ctx *rc,
                      const struct vsph_cells *cells, size_t n_fluid,
                      struct vsph_equations_out *out) {
   struct vsph_equations_sweep *sw = out->sweep;
-  /* the fields: force and continuity; the delta-SPH sum with delta-SPH
-   * or the parts; the viscous force with the parts */
-  const int dim = p->dim,
-            nf = dim + 1 + (rc->dhc > 0.0 || rc->parts) + (rc->parts ? dim : 0);
+  const int dim = p->dim, nf = SW_FIELDS(dim, rc->dhc > 0.0, rc->parts);
   const int st = sweep_plan(sw, cells, p->n, nf);
   if (st) return st;
   size_t total = 0;

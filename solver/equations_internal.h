@@ -375,6 +375,11 @@ typedef size_t vsph_equations_sweep_fn(const struct vsph_equations_ctx *rc,
 #define SW_CONT(d) (d)
 #define SW_DELTA(d) ((d) + 1)
 #define SW_VISC(d) ((d) + 2)
+/* The buffer's fields: force and continuity; the delta-SPH sum with
+ * delta-SPH or the parts; the viscous force with the parts (run_sweep
+ * plans the buffers with it, sweep_block_parts fills them). */
+#define SW_FIELDS(d, delta, parts) \
+  ((parts) ? SW_VISC(d) + (d) : SW_DELTA(d) + ((delta) ? 1 : 0))
 
 /* Add the first @p na fields of the @p m pairs' shares @p js to their
  * receivers j (@p jj) in block buffer @p buf (first particle @p lo,
@@ -448,7 +453,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
   /* the buffer's fields (solver/equations.c sets them so), a constant
    * here, as are the fields j's shares fill: the viscous part's with the
    * parts, the delta-SPH sum with delta-SPH or the parts */
-  const int nf = parts ? SW_VISC(dim) + dim : SW_DELTA(dim) + delta;
+  const int nf = SW_FIELDS(dim, delta, parts);
   const int dsw = delta || parts; /* the buffer holds delta-SPH's sum */
   const size_t lo = sw->lo[blk];
   double *const buf = sw->buf + sw->off[blk];
@@ -546,14 +551,15 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
 }
 
 /* sweep_block_parts with the parts (rc->parts) a constant too; @p nf,
- * the buffer's fields, is what the constants make it. */
+ * the buffer's fields, is what run_sweep planned by the same SW_FIELDS
+ * that sweep_block_parts makes a constant of. */
 VSPH_CONSTS_SPECIALISE size_t
 sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
             const struct vsph_cells *cells, size_t n_fluid,
             const struct vsph_equations_sweep *sw, size_t blk, int nf,
             double *min_s2, const int dim, vsph_viscous_pair_fn *const pair,
             const int delta, const int kid) {
-  (void)nf;
+  (void)nf; /* = SW_FIELDS(dim, delta, rc->parts): run_sweep's plan */
   return rc->parts ? sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
                                        dim, pair, delta, kid, 1)
                    : sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,

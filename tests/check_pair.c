@@ -36,6 +36,7 @@
 #include "../solver/lattice.h"
 #include "../solver/particles.h"
 #include "../solver/scene.h"
+#include "../solver/sweep_x86.h"
 #include "../solver/viscous.h"
 #include "../solver/walls.h"
 #include "check_suites.h"
@@ -720,11 +721,66 @@ START_TEST(test_sweep_gather_threads) {
 }
 END_TEST
 
-/* The symmetric sweep's scatter of j's shares by AVX2
- * (solver/sweep_x86.c: three fields, four with delta-SPH, eight in PVWF's
- * first pass) against the scalar loop: the stretching square at 24 across
- * after three steps, MGF with and without delta-SPH, PVWF, each with and
- * without the dissipative parts (six fields, the scalar loop at every
+/* The shear scene in 3-D (contact SPH's test box, 4e-7 m periods, 8
+ * across), formulation @p form (or contact SPH where @p contact), after
+ * three steps; every particle's velocity then given
+ * U sin(2 pi y') cos(2 pi z') more along x and U sin(2 pi x') cos(2 pi y')
+ * along z (U the largest speed component, x' = (x - x_lo)/(x_hi - x_lo)
+ * over the fluid's extent), so that every component of the viscous force
+ * is no rounding (an evaluation's state, not a flow: the identities
+ * tested hold for any). */
+static struct vsph_integrate *shear3(int form, int contact) {
+  struct vsph_params *prm = vsph_params_alloc();
+  ck_assert_ptr_nonnull(prm);
+  ck_assert_int_eq(vsph_params_set(prm, "Scene:Ly", "4e-7"), 0);
+  ck_assert_int_eq(vsph_params_set(prm, "Scene:Lz", "4e-7"), 0);
+  struct vsph_scene sc;
+  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_shear_type, prm), 0);
+  vsph_params_free(prm);
+  struct vsph_particles *fluid = NULL;
+  ck_assert_int_eq(sc.type->init(&sc, 8, &fluid), 0);
+  struct vsph_integrate_props ip;
+  ck_assert_int_eq(
+      vsph_scene_integrate_props(&sc, form, &vsph_gaussian_type,
+                                 VSPH_CONSTS_HDX * sc.ref_length / 8.0, &ip),
+      0);
+  if (contact) {
+    ip.eq.scheme = VSPH_EQUATIONS_CONTACT;
+    ip.eq.nmat = 1;
+    ip.eq.mat[0] = (struct vsph_equations_mat){
+        .rho0 = ip.eq.rho0, .c0 = ip.eq.c0, .mu = ip.eq.visc.mu};
+  }
+  struct vsph_integrate *s = vsph_integrate_alloc(&ip, fluid);
+  ck_assert_ptr_nonnull(s);
+  for (int step = 0; step < 3; step++)
+    ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  ck_assert_int_eq(s->p->dim, 3);
+  double lo[3] = {INFINITY, INFINITY, INFINITY},
+         hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  double U = 0.0;
+  for (size_t i = 0; i < s->n_fluid; i++)
+    for (int a = 0; a < 3; a++) {
+      lo[a] = fmin(lo[a], s->p->pos[a][i]);
+      hi[a] = fmax(hi[a], s->p->pos[a][i]);
+      U = fmax(U, fabs(s->p->vel[a][i]));
+    }
+  ck_assert(U > 0.0);
+  for (size_t i = 0; i < s->p->n; i++) {
+    double q[3];
+    for (int a = 0; a < 3; a++)
+      q[a] = 2.0 * M_PI * (s->p->pos[a][i] - lo[a]) / (hi[a] - lo[a]);
+    s->p->vel[2][i] = U * sin(q[0]) * cos(q[1]);
+    s->p->vel[0][i] += U * sin(q[1]) * cos(q[2]);
+  }
+  return s;
+}
+
+/* The symmetric sweep's adds of j's shares by AVX2
+ * (solver/sweep_x86.c: three fields in 2-D, four with delta-SPH or in
+ * 3-D, eight in PVWF's first pass) against the scalar loop: the
+ * stretching square at 24 across after three steps, MGF with and without
+ * delta-SPH, PVWF, and the 3-D shear box (shear3) with MGF, each with and
+ * without the dissipative parts (2 d + 2 fields, the scalar loop at every
  * level), evaluated with the portable loops (VSPH_PAIR_SIMD=portable) and
  * at each level the CPU has: every output the same bits (each entry gets
  * the same adds in the same order; the candidate test gives the same
@@ -734,13 +790,17 @@ START_TEST(test_sweep_scatter_simd) {
   static const struct {
     int form;
     double delta;
-  } cases[] = {{VSPH_VISCOUS_MGF, 0.0},
-               {VSPH_VISCOUS_MGF, 0.1},
-               {VSPH_VISCOUS_PVWF, 0.0}};
-  const int c = _i / 2, parts = _i % 2;
+    int dim;
+  } cases[] = {{VSPH_VISCOUS_MGF, 0.0, 2},
+               {VSPH_VISCOUS_MGF, 0.1, 2},
+               {VSPH_VISCOUS_PVWF, 0.0, 2},
+               {VSPH_VISCOUS_MGF, 0.0, 3}};
+  const int c = _i / 2, parts = _i % 2, dim = cases[c].dim;
   struct vsph_integrate_props ip;
-  struct vsph_integrate *s = scene_stepped(
-      &vsph_stretching_square_type, cases[c].form, 24, cases[c].delta, &ip);
+  struct vsph_integrate *s =
+      dim == 3 ? shear3(cases[c].form, 0)
+               : scene_stepped(&vsph_stretching_square_type, cases[c].form, 24,
+                               cases[c].delta, &ip);
   const size_t n = s->p->n;
   const int most = vsph_pair_x86_simd();
   if (most < 2)
@@ -748,40 +808,83 @@ START_TEST(test_sweep_scatter_simd) {
             "test_sweep_scatter_simd: this build or CPU (or VSPH_PAIR_SIMD) "
             "allows %s only\n",
             most ? "AVX2" : "the portable loop");
-  double *buf = calloc(6 * n * 3, sizeof *buf);
+  const size_t nout = (size_t)(parts ? 2 * dim + 2 : dim + 1);
+  double *buf = calloc(nout * n * 3, sizeof *buf);
   struct vsph_equations_sweep *sw = vsph_equations_sweep_alloc();
   const char *was = getenv("VSPH_PAIR_SIMD");
   char *keep = was ? strdup(was) : NULL;
   static const char *const names[] = {"portable", "avx2", "avx512"};
+  int st[3] = {0, 0, 0};
   for (int level = 0; level <= most; level++) {
-    double *const o = buf + (size_t)level * 6 * n;
-    struct vsph_equations_out out = {
-        .drho = o, .acc = {o + n, o + 2 * n}, .sweep = sw};
-    if (parts) {
-      out.acc_visc[0] = o + 3 * n;
-      out.acc_visc[1] = o + 4 * n;
-      out.drho_delta = o + 5 * n;
+    double *const o = buf + (size_t)level * nout * n;
+    struct vsph_equations_out out = {.drho = o, .sweep = sw};
+    for (int a = 0; a < dim; a++) {
+      out.acc[a] = o + (size_t)(1 + a) * n;
+      if (parts) out.acc_visc[a] = o + (size_t)(1 + dim + a) * n;
     }
-    ck_assert_int_eq(setenv("VSPH_PAIR_SIMD", names[level], 1), 0);
-    ck_assert_int_eq(vsph_equations_rhs(&s->props.eq, s->p, s->n_fluid,
-                                        s->cells, s->vws, &out),
-                     0);
-    if (level)
-      for (size_t e = 0; e < (parts ? 6 : 3) * n; e++)
-        ck_assert_msg(memcmp(o + e, buf + e, sizeof *o) == 0,
-                      "%s (delta %g, parts %d), %s: entry %zu is %.17g, "
-                      "portable %.17g",
-                      vsph_viscous_name(cases[c].form), cases[c].delta, parts,
-                      names[level], e, o[e], buf[e]);
+    if (parts) out.drho_delta = o + (size_t)(1 + 2 * dim) * n;
+    setenv("VSPH_PAIR_SIMD", names[level], 1);
+    st[level] = vsph_equations_rhs(&s->props.eq, s->p, s->n_fluid, s->cells,
+                                   s->vws, &out);
   }
+  /* the caller's environment back before any assertion (a failed one
+   * leaves this test at once, and the suite runs on in this process) */
   if (keep)
     setenv("VSPH_PAIR_SIMD", keep, 1);
   else
     unsetenv("VSPH_PAIR_SIMD");
   free(keep);
+  for (int level = 0; level <= most; level++) {
+    ck_assert_int_eq(st[level], 0);
+    const double *const o = buf + (size_t)level * nout * n;
+    for (size_t e = 0; level && e < nout * n; e++)
+      ck_assert_msg(memcmp(o + e, buf + e, sizeof *o) == 0,
+                    "%s %d-D (delta %g, parts %d), %s: entry %zu is %.17g, "
+                    "portable %.17g",
+                    vsph_viscous_name(cases[c].form), dim, cases[c].delta,
+                    parts, names[level], e, o[e], buf[e]);
+  }
   vsph_equations_sweep_free(sw);
   free(buf);
   vsph_integrate_free(s);
+}
+END_TEST
+
+/* The lanes' adds alone (vsph_sweep_x86_add_avx2 for 3 and 4 fields,
+ * vsph_sweep_x86_add8_avx2 with a factor) on made-up shares against the
+ * scalar loop, for every chunk size 0-13 (whole blocks of four and every
+ * tail), receivers in a shuffled order with one left out: every entry the
+ * same bits, and the one left out untouched. Where the CPU has no AVX2,
+ * said and left out. */
+START_TEST(test_sweep_lanes_by_hand) {
+  if (vsph_pair_x86_simd() < 1) {
+    fprintf(stderr, "test_sweep_lanes_by_hand: no AVX2 here\n");
+    return;
+  }
+  enum { NJ = 16, S = VSPH_PAIR_CHUNK_MAX };
+  static double js[8 * S], a[NJ * 8], b[NJ * 8];
+  for (int f = 0; f < 8; f++)
+    for (int k = 0; k < S; k++)
+      js[f * S + k] = sin(1.0 + 3.7 * f + 0.61 * k) * pow(10.0, f % 3 - 1);
+  const size_t lo = 5;
+  size_t jj[NJ];
+  for (size_t k = 0; k < NJ; k++) jj[k] = lo + (7 * k + 3) % NJ; /* distinct */
+  for (int nf = 3; nf <= 8; nf++) {
+    if (nf > 4 && nf < 8) continue;
+    for (size_t m = 0; m <= 13; m++) {
+      for (size_t e = 0; e < NJ * 8; e++) a[e] = b[e] = cos(0.3 * (double)e);
+      const double v = 0.7312;
+      if (nf == 8)
+        vsph_sweep_x86_add8_avx2(a, lo, jj, m, js, S, v);
+      else
+        vsph_sweep_x86_add_avx2(a, lo, nf, jj, m, js, S);
+      for (size_t k = 0; k < m; k++) /* the scalar loops of the sweeps */
+        for (int f = 0; f < nf; f++)
+          b[(jj[k] - lo) * (size_t)nf + (size_t)f] +=
+              nf == 8 ? v * js[(size_t)f * S + k] : js[(size_t)f * S + k];
+      ck_assert_msg(memcmp(a, b, sizeof a) == 0, "%d fields, %zu pairs", nf, m);
+    }
+  }
 }
 END_TEST
 
@@ -996,48 +1099,71 @@ START_TEST(test_contact_shapes) {
 END_TEST
 
 /* Contact SPH's dissipative parts hold the physical viscosity as the
- * force does (2-D Gaussian, the stretching square at 24 across after
- * three steps): the viscous traction g enters the acceleration as
- * sum (f + g)/rho and its dissipative part as sum (fd + g)/rho, f and fd
- * not depending on the viscosity, so between the scene's viscosity and
- * none, acc_visc changes by what acc changes, particle by particle, to
- * rounding (two sums of ~50 terms as large as the pressure terms: 1e-12
- * of the largest acceleration), and the change is no rounding (over 1e-6
- * of it). A traction left out of either sum changes one and not the
- * other. */
+ * force does (the 3h Gaussian; 2-D: the stretching square at 24 across
+ * after three steps; 3-D: the shear box, shear3, with its z velocity): the
+ * viscous traction g enters the acceleration as sum (f + g)/rho and its
+ * dissipative part as sum (fd + g)/rho, f and fd not depending on the
+ * viscosity, so between the scene's viscosity and none, acc_visc changes
+ * by what acc changes, particle by particle and component by component,
+ * to rounding: two sums of ~50 terms in another order, the terms up to
+ * about L/h = 20 times the sums they cancel to, so ~50 x 1.1e-16 x 20 =
+ * 1e-13 of the largest acceleration; 1e-12 allowed. In each component the
+ * change is no rounding (over 1e-6 of the largest). A traction left out
+ * of either sum, or of one component, changes one and not the other. */
 START_TEST(test_contact_parts_viscous) {
   struct vsph_integrate_props ip;
   struct vsph_integrate *s =
-      scene_stepped_k(&vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 24, 0.0,
-                      &vsph_gaussian_type, VSPH_CONSTS_HDX, 0, &ip);
-  s->props.eq.scheme = VSPH_EQUATIONS_CONTACT;
-  s->props.eq.nmat = 1;
-  const size_t n = s->p->n;
-  double *buf = calloc(12 * n, sizeof *buf);
-  for (int v = 0; v < 2; v++) { /* the scene's viscosity, then none */
+      _i ? shear3(VSPH_VISCOUS_MEAF, 1)
+         : scene_stepped_k(&vsph_stretching_square_type, VSPH_VISCOUS_MEAF, 24,
+                           0.0, &vsph_gaussian_type, VSPH_CONSTS_HDX, 0, &ip);
+  if (!_i) {
+    s->props.eq.scheme = VSPH_EQUATIONS_CONTACT;
+    s->props.eq.nmat = 1;
     s->props.eq.mat[0] = (struct vsph_equations_mat){
-        .rho0 = ip.eq.rho0, .c0 = ip.eq.c0, .mu = v ? 0.0 : ip.eq.visc.mu};
-    (void)sweep_rhs(s, NULL, 2, buf + (size_t)v * 6 * n);
+        .rho0 = ip.eq.rho0, .c0 = ip.eq.c0, .mu = ip.eq.visc.mu};
   }
-  double big = 0.0, dv = 0.0, err = 0.0;
-  for (int a = 0; a < 2; a++)
+  const int dim = s->p->dim;
+  /* in the 3-D box the acoustic solver's velocity term, rho0 c0 du/h,
+   * outweighs the scene's viscous one by about 1e16 (its 1e-7 m scale):
+   * a viscosity of rho0 c0 h there makes the two alike */
+  const double mu =
+      _i ? s->props.eq.mat[0].rho0 * s->props.eq.mat[0].c0 * s->props.eq.visc.h
+         : s->props.eq.mat[0].mu;
+  ck_assert(mu > 0.0);
+  const size_t n = s->p->n, nout = (size_t)(2 * dim + 2);
+  double *buf = calloc(2 * nout * n, sizeof *buf);
+  for (int v = 0; v < 2; v++) { /* the scene's viscosity, then none */
+    s->props.eq.mat[0].mu = v ? 0.0 : mu;
+    double *const o = buf + (size_t)v * nout * n;
+    struct vsph_equations_out out = {
+        .drho = o, .drho_delta = o + (2 * (size_t)dim + 1) * n};
+    for (int a = 0; a < dim; a++) {
+      out.acc[a] = o + (size_t)(1 + a) * n;
+      out.acc_visc[a] = o + (size_t)(1 + dim + a) * n;
+    }
+    ck_assert_int_eq(vsph_equations_rhs(&s->props.eq, s->p, s->n_fluid,
+                                        s->cells, s->vws, &out),
+                     0);
+  }
+  double big = 0.0, dv[3] = {0, 0, 0}, err = 0.0;
+  const double *const o = buf, *const z = buf + nout * n;
+  for (int a = 0; a < dim; a++)
     for (size_t i = 0; i < n; i++) {
       if (s->p->id[i] >= s->n_fluid) continue;
-      const double *const o = buf, *const z = buf + 6 * n;
-      const double dacc =
-                       o[(1 + (size_t)a) * n + i] - z[(1 + (size_t)a) * n + i],
-                   dvis =
-                       o[(3 + (size_t)a) * n + i] - z[(3 + (size_t)a) * n + i];
-      big = fmax(big, fmax(fabs(o[(1 + (size_t)a) * n + i]),
-                           fabs(o[(3 + (size_t)a) * n + i])));
-      dv = fmax(dv, fabs(dacc));
+      const size_t ea = (1 + (size_t)a) * n + i,
+                   ev = (1 + (size_t)dim + (size_t)a) * n + i;
+      const double dacc = o[ea] - z[ea], dvis = o[ev] - z[ev];
+      big = fmax(big, fmax(fabs(o[ea]), fabs(o[ev])));
+      dv[a] = fmax(dv[a], fabs(dacc));
       err = fmax(err, fabs(dvis - dacc));
     }
-  ck_assert_msg(dv > 1e-6 * big, "the viscosity changes acc by %.3e of %.3e",
-                dv, big);
+  for (int a = 0; a < dim; a++)
+    ck_assert_msg(dv[a] > 1e-6 * big,
+                  "%d-D: the viscosity changes acc %d by %.3e of %.3e", dim, a,
+                  dv[a], big);
   ck_assert_msg(err <= 1e-12 * big,
-                "acc_visc's change differs from acc's by %.3e (%.3e of %.3e)",
-                err, dv, big);
+                "%d-D: acc_visc's change differs from acc's by %.3e of %.3e",
+                dim, err, big);
   free(buf);
   vsph_integrate_free(s);
 }
@@ -1509,14 +1635,15 @@ Suite *vsph_equations_suite(void) {
   size_t nwc = 0;
   while (vsph_scene_get(nwc) && vsph_scene_get(nwc) != &vsph_shear_type) nwc++;
   tcase_add_loop_test(tc, test_candidates_simd, 0, 4);
-  tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 6);
+  tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 8);
+  tcase_add_test(tc, test_sweep_lanes_by_hand);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
   tcase_add_loop_test(tc, test_sweep_gather_threads,
                       (int)vsph_scene_count() * 5,
                       (int)vsph_scene_count() * 5 + 1);
   tcase_add_loop_test(tc, test_contact_shapes, 0, 2);
   tcase_add_test(tc, test_contact_shapes_3d);
-  tcase_add_test(tc, test_contact_parts_viscous);
+  tcase_add_loop_test(tc, test_contact_parts_viscous, 0, 2);
   tcase_add_loop_test(tc, test_gather_shapes, 0, 12);
   tcase_add_loop_test(tc, test_state_equations, 0, 3);
   tcase_add_loop_test(tc, test_xsph_sum, 0, 2);
