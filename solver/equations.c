@@ -671,12 +671,29 @@ VSPH_CONSTS_SPECIALISE void grad_block(const struct vsph_pair_kernel *pk,
           }
           vj[k] = vol[pr.j];
         }
-        for (int e = 0; e < nf; e++) { /* i's sums, lane by lane */
-          double s = 0.0;
+        if (nf == 8) { /* i's sums, lane by lane, in one loop */
+          double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0, s4 = 0.0, s5 = 0.0,
+                 s6 = 0.0, s7 = 0.0;
+#pragma omp simd reduction(+ : s0, s1, s2, s3, s4, s5, s6, s7)
+          for (size_t k = 0; k < m; k++) {
+            s0 += vj[k] * u[0][k];
+            s1 += vj[k] * u[1][k];
+            s2 += vj[k] * u[2][k];
+            s3 += vj[k] * u[3][k];
+            s4 += vj[k] * u[4][k];
+            s5 += vj[k] * u[5][k];
+            s6 += vj[k] * u[6][k];
+            s7 += vj[k] * u[7][k];
+          }
+          const double se[8] = {s0, s1, s2, s3, s4, s5, s6, s7};
+          for (int e = 0; e < 8; e++) sums[e] += se[e];
+        } else
+          for (int e = 0; e < nf; e++) { /* i's sums, lane by lane */
+            double s = 0.0;
 #pragma omp simd reduction(+ : s)
-          for (size_t k = 0; k < m; k++) s += vj[k] * u[e][k];
-          sums[e] += s;
-        }
+            for (size_t k = 0; k < m; k++) s += vj[k] * u[e][k];
+            sums[e] += s;
+          }
         if (VSPH_PAIR_X86 && nf == 8 && pk->simd)
           vsph_sweep_x86_add8_avx2(buf, lo, b.j, m, u[0], VSPH_PAIR_CHUNK_MAX,
                                    Vi);
