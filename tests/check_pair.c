@@ -721,15 +721,11 @@ START_TEST(test_sweep_gather_threads) {
 }
 END_TEST
 
-/* The shear scene in 3-D (contact SPH's test box, 4e-7 m periods, 8
- * across), formulation @p form (or contact SPH where @p contact), after
- * three steps; every particle's velocity then given
- * U sin(2 pi y') cos(2 pi z') more along x and U sin(2 pi x') cos(2 pi y')
- * along z (U the largest speed component, x' = (x - x_lo)/(x_hi - x_lo)
- * over the fluid's extent), so that every component of the viscous force
- * is no rounding (an evaluation's state, not a flow: the identities
- * tested hold for any). */
-static struct vsph_integrate *shear3(int form, int contact) {
+/* The shear scene in 3-D (contact SPH's test box, 4e-7 m periods: the
+ * default's 3e-8 is shorter than the Gaussian's reach at 8 across; 8
+ * across), formulation @p form (or contact SPH where @p contact, its
+ * viscosity the scene's), after three steps. */
+static struct vsph_integrate *shear3_stepped(int form, int contact) {
   struct vsph_params *prm = vsph_params_alloc();
   ck_assert_ptr_nonnull(prm);
   ck_assert_int_eq(vsph_params_set(prm, "Scene:Ly", "4e-7"), 0);
@@ -755,6 +751,17 @@ static struct vsph_integrate *shear3(int form, int contact) {
   for (int step = 0; step < 3; step++)
     ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
   ck_assert_int_eq(s->p->dim, 3);
+  return s;
+}
+
+/* shear3_stepped, every particle's velocity then given
+ * U sin(2 pi y') cos(2 pi z') more along x and U sin(2 pi x') cos(2 pi y')
+ * along z (U the largest speed component, x' = (x - x_lo)/(x_hi - x_lo)
+ * over the fluid's extent), so that every component of the viscous force
+ * is no rounding (an evaluation's state, not a flow: the identities
+ * tested hold for any). */
+static struct vsph_integrate *shear3(int form, int contact) {
+  struct vsph_integrate *s = shear3_stepped(form, contact);
   double lo[3] = {INFINITY, INFINITY, INFINITY},
          hi[3] = {-INFINITY, -INFINITY, -INFINITY};
   double U = 0.0;
@@ -1188,31 +1195,7 @@ static void contact3(struct vsph_integrate *s, int thr, double *buf,
 }
 
 START_TEST(test_contact_shapes_3d) {
-  /* the shear test's box, 4e-7 m periods (the default's 3e-8 is shorter
-   * than the Gaussian's reach at 8 across) */
-  struct vsph_params *prm = vsph_params_alloc();
-  ck_assert_ptr_nonnull(prm);
-  ck_assert_int_eq(vsph_params_set(prm, "Scene:Ly", "4e-7"), 0);
-  ck_assert_int_eq(vsph_params_set(prm, "Scene:Lz", "4e-7"), 0);
-  struct vsph_scene sc;
-  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_shear_type, prm), 0);
-  vsph_params_free(prm);
-  struct vsph_particles *fluid = NULL;
-  ck_assert_int_eq(sc.type->init(&sc, 8, &fluid), 0);
-  struct vsph_integrate_props ip;
-  ck_assert_int_eq(
-      vsph_scene_integrate_props(&sc, VSPH_VISCOUS_MEAF, &vsph_gaussian_type,
-                                 VSPH_CONSTS_HDX * sc.ref_length / 8.0, &ip),
-      0);
-  ip.eq.scheme = VSPH_EQUATIONS_CONTACT;
-  ip.eq.nmat = 1;
-  ip.eq.mat[0] = (struct vsph_equations_mat){
-      .rho0 = ip.eq.rho0, .c0 = ip.eq.c0, .mu = ip.eq.visc.mu};
-  struct vsph_integrate *s = vsph_integrate_alloc(&ip, fluid);
-  ck_assert_ptr_nonnull(s);
-  for (int step = 0; step < 3; step++)
-    ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
-  ck_assert_int_eq(s->p->dim, 3);
+  struct vsph_integrate *s = shear3_stepped(VSPH_VISCOUS_MEAF, 1);
   const size_t n = s->p->n;
   double *buf = calloc(12 * n, sizeof *buf);
   size_t n1, n2, ng;
