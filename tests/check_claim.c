@@ -678,6 +678,7 @@ START_TEST(test_partly_claims_can_differ) {
     vsph_claim_str(&v, "re1000_run", "x");
     vsph_claim_num(&v, "res", 30);
     vsph_claim_num(&v, "t1", C[k].t_run < 80 ? 30 : 80);
+    vsph_claim_num(&v, "t0", 0.8 * (C[k].t_run < 80 ? 30 : 80)); /* CAV_TAIL */
     vsph_claim_num(&v, "e1", C[k].e1);
     vsph_claim_num(&v, "e1swing", 0.01);
     vsph_claim_num(&v, "m1", 0.2);
