@@ -332,11 +332,11 @@ static void sweep_figures(const struct vsph_report_channel_p003 *p,
   vsph_measures_sweep(&in, w); /* within its arrays: asserted above */
 }
 
-/* What the sweep's table says (the section's reading and the claim). */
-static void sweep_read(const struct vsph_report_channel_p003 *p, char *buf,
+/* What the sweep's table says (the section's reading and the claim),
+ * from its figures @p w (sweep_figures). */
+static void sweep_read(const struct vsph_report_channel_p003 *p,
+                       const struct vsph_measures_sweep *w, char *buf,
                        size_t len) {
-  struct vsph_measures_sweep w;
-  sweep_figures(p, &w);
   static const char *const WORD[] = {['r'] = "runs",
                                      ['a'] = "runs but agitates",
                                      ['s'] = "stops",
@@ -344,26 +344,26 @@ static void sweep_read(const struct vsph_report_channel_p003 *p, char *buf,
   size_t k = (size_t)snprintf(buf, len,
                               "by t = 1 s, %d of the %d runs are "
                               "non-physical (stopped, or v_rms >= v0):",
-                              w.nbad, w.ntot);
+                              w->nbad, w->ntot);
   for (int a = 0; a < NSWC && k < len; a++)
     k += (size_t)snprintf(buf + k, len - k, "%s c = %g m/s %s%s", a ? ";" : "",
-                          SW[a][0].c0, WORD[(unsigned char)w.out[a]],
-                          w.out[a] == 'm' ? "" : " at every dt");
+                          SW[a][0].c0, WORD[(unsigned char)w->out[a]],
+                          w->out[a] == 'm' ? "" : " at every dt");
   if (k < len)
     k += (size_t)snprintf(
         buf + k, len - k, "%s",
-        w.mixed < 0 ? "; c alone decides at every dt here" : "");
-  if (k < len && isfinite(w.acc))
+        w->mixed < 0 ? "; c alone decides at every dt here" : "");
+  if (k < len && isfinite(w->acc))
     k += (size_t)snprintf(buf + k, len - k,
                           "; where every dt runs, the error changes by at "
                           "most %.2g %% of itself over dt",
-                          100 * w.acc);
-  if (k < len && w.alo >= 0 && w.ahi != w.alo)
+                          100 * w->acc);
+  if (k < len && w->alo >= 0 && w->ahi != w->alo)
     k += (size_t)snprintf(buf + k, len - k,
                           "; the zigzag (dt = %g s) is %.2f %% at c = %g m/s "
                           "and %.2f %% at %g m/s",
-                          SW[0][p->nd - 1].dt, 100 * w.zlo, SW[w.alo][0].c0,
-                          100 * w.zhi, SW[w.ahi][0].c0);
+                          SW[0][p->nd - 1].dt, 100 * w->zlo, SW[w->alo][0].c0,
+                          100 * w->zhi, SW[w->ahi][0].c0);
   if (k < len) snprintf(buf + k, len - k, ".");
 }
 
@@ -428,7 +428,9 @@ int vsph_report_channel_p003_write(struct vsph_report *R,
                             "and 1e-4 s (FULL adds 2e-5 s, 50 000 steps)");
   if ((st = vsph_report_doc_say(R, "channel.sweep_head"))) return st;
   sweep_rows(R, p);
-  sweep_read(p, t, sizeof t);
+  struct vsph_measures_sweep w;
+  sweep_figures(p, &w);
+  sweep_read(p, &w, t, sizeof t);
   vsph_text_set(&R->tv, "swread", "%s", t);
   return vsph_report_doc_say(R, "channel.sweep_reading");
 }
@@ -531,7 +533,7 @@ static int p003_sweep_claims(struct vsph_report *R,
   struct vsph_measures_sweep w;
   sweep_figures(p, &w);
   char read[1024];
-  sweep_read(p, read, sizeof read);
+  sweep_read(p, &w, read, sizeof read);
   sweep_vals(p, v);
   vsph_claim_str(v, "dts", "%s",
                  p->nd > 2 ? "4e-4, 1e-4 and 2e-5" : "4e-4 and 1e-4");
