@@ -302,8 +302,9 @@ check: deps
 test: check
 
 # How many commits back the archive's runs are traced to the commit that
-# made them (scripts/source-commits): the archive holds runs made up to a
-# few hundred commits ago.
+# made them (scripts/source-commits), at least: it also goes back to the
+# oldest commit reports/full/entries.md names, so no archived run falls
+# out of the window as commits pile up.
 HISTORY_N = 400
 
 # The main job: the whole report into reports/out/ (quick; FULL=1 for the
