@@ -159,7 +159,7 @@ $(BUILD)/check_vsph: $(PROG_OBJ) $(CLI_LIB) $(TEST_OBJ) $(TEXT_OBJ) $(LIBA)
 # docs/usage.md: vsph report archive); the commit named for runs of these
 # sources is HEAD's.
 archive: deps $(BUILD)/vsph
-	scripts/source-commits $(BUILD)/history $(HISTORY_N)
+	scripts/source-commits $(BUILD)/history $(HISTORY_N) $(wildcard reports/full/entries.md)
 	VSPH_ARCHIVE_HISTORY=$(BUILD)/history \
 	VSPH_COMMIT="$$(git describe --always --dirty --abbrev=12 2>/dev/null \
 	  | tr -cd '0-9a-z-')" $(BUILD)/vsph report archive \
@@ -312,7 +312,7 @@ HISTORY_N = 400
 # The history that judges the archive's runs (scripts/source-commits) into
 # shell variable h; when it cannot be made (outside a git clone, say), its
 # own reason is said, h stays empty and the archive's older runs unjudged.
-HISTORY = if scripts/source-commits $(BUILD)/history $(HISTORY_N) >/dev/null; \
+HISTORY = if scripts/source-commits $(BUILD)/history $(HISTORY_N) $(wildcard reports/full/entries.md) >/dev/null; \
 	  then h=$(BUILD)/history; else h=; echo "make: reports/full's older \
 	  runs stay unjudged (no history: above)"; fi
 

@@ -1018,6 +1018,46 @@ START_TEST(test_source_commits_hash) {
 }
 END_TEST
 
+/* scripts/source-commits hashes the last N commits and, given the run
+ * archive's entries.md, every commit back to the oldest one it names (so
+ * that no archived run leaves the judge's window as commits pile up): N =
+ * 1 and a table naming HEAD~3 give four lines, HEAD~3's the last. Outside
+ * a git clone, or in one of fewer than four commits, nothing is
+ * compared. */
+START_TEST(test_source_commits_reach) {
+  const struct vsph_test_outcome *o = vsph_test_shell(
+      "git rev-parse --is-inside-work-tree >/dev/null 2>&1 || exit 3; "
+      "git rev-parse --verify -q HEAD~3 >/dev/null || exit 4; exit 0");
+  if (o->status != 0) return;
+  o = vsph_test_shell("git log --format=%h --abbrev=12 -n 1 HEAD~3");
+  ck_assert_int_eq(o->status, 0);
+  char old[32];
+  snprintf(old, sizeof old, "%.12s", o->out);
+  const char *dir = tmpdir();
+  char cmd[1400], path[1200], tsv[4096];
+  snprintf(path, sizeof path, "%s/entries.md", dir);
+  FILE *f = fopen(path, "w");
+  ck_assert_ptr_nonnull(f);
+  fprintf(f,
+          "| run-a | 100 | 1 / 1 | ok | 10 | 0 | 0123456789abcdef, %s | "
+          "yes |\n",
+          old);
+  ck_assert_int_eq(fclose(f), 0);
+  snprintf(cmd, sizeof cmd, "scripts/source-commits '%s/h' 1 '%s'", dir, path);
+  o = vsph_test_shell(cmd);
+  ck_assert_msg(o->status == 0, "%s", o->err);
+  snprintf(path, sizeof path, "%s/h/commits.tsv", dir);
+  vsph_test_slurp(path, tsv, sizeof tsv);
+  int lines = 0;
+  for (const char *c = tsv; *c; c++) lines += *c == '\n';
+  ck_assert_msg(lines == 4, "%d commits hashed, not 4: %s", lines, tsv);
+  const char *last = strrchr(tsv, '\t');
+  ck_assert_msg(last && !strncmp(last + 1, old, 12),
+                "the last commit hashed is not HEAD~3 (%s): %s", old, tsv);
+  rmrf(dir);
+}
+END_TEST
+
 Suite *vsph_jobs_suite(void) {
   Suite *s = suite_create("jobs");
   TCase *tc = tcase_create("jobs");
@@ -1027,6 +1067,7 @@ Suite *vsph_jobs_suite(void) {
   tcase_add_test(tc, test_quick_from_archive);
   tcase_add_test(tc, test_assemble_stopped_run);
   tcase_add_test(tc, test_source_commits_hash);
+  tcase_add_test(tc, test_source_commits_reach);
   tcase_add_test(tc, test_command_is_the_run);
   tcase_add_test(tc, test_defaults_applied_once);
   tcase_add_test(tc, test_pool_records_failed_run_others_end);
