@@ -644,24 +644,27 @@ VSPH_CONSTS_SPECIALISE void grad_block(const struct vsph_pair_kernel *pk,
   const double *const vol = p->vol;
   const double *const vel[3] = {p->vel[0], dim > 1 ? p->vel[1] : NULL,
                                 dim > 2 ? p->vel[2] : NULL};
+  struct vsph_pair_cell pc; /* the cell's walks, together (sweep_block) */
   for (size_t c = sw->c0[blk]; c < sw->c0[blk + 1]; c++) {
     struct vsph_pair_ranges rg;
     vsph_pair_ranges_cell(&rg, cells, c);
-    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-         i++) {
+    const size_t c0 = cells->start[c], cnt = cells->count[c];
+    vsph_pair_cell_upper(&pc, pk, p, &rg, c0, cnt, dim);
+    for (size_t i = c0; i < c0 + cnt; i++) {
       double ui[3] = {0, 0, 0}, sums[18] = {0};
       for (int a = 0; a < dim; a++) ui[a] = vel[a][i];
       const double Vi = vol[i];
       struct vsph_pair_iter it;
-      struct vsph_pair_chunk b;
-      vsph_pair_begin_upper(&it, pk, p, &rg, i);
-      while (vsph_pair_gather_as(&it, dim, kid, 1, &b)) {
-        const size_t m = b.m;
+      struct vsph_pair_chunk own;
+      const struct vsph_pair_chunk *b;
+      vsph_pair_begin_upper_in(&it, pk, p, &rg, &pc, i);
+      while (vsph_pair_next_chunk(&it, dim, kid, 1, &own, &b)) {
+        const size_t m = b->m;
         double u[18][VSPH_PAIR_CHUNK_MAX], vj[VSPH_PAIR_CHUNK_MAX];
 #pragma omp simd
         for (size_t k = 0; k < m; k++) {
-          struct vsph_pair pr;           /* VF = F: unit terms, V_i and V_j */
-          vsph_pair_at(&b, k, dim, &pr); /* applied below */
+          struct vsph_pair pr;          /* VF = F: unit terms, V_i and V_j */
+          vsph_pair_at(b, k, dim, &pr); /* applied below */
           struct vsph_pair_vec du;
           for (int a = 0; a < dim; a++) du.v[a] = vel[a][pr.j] - ui[a];
           const struct vsph_pair_grad gr = vsph_pair_pvwf_grad(&pr, dim, du);
@@ -695,11 +698,11 @@ VSPH_CONSTS_SPECIALISE void grad_block(const struct vsph_pair_kernel *pk,
             sums[e] += s;
           }
         if (VSPH_PAIR_X86 && nf == 8 && pk->simd)
-          vsph_sweep_x86_add8_avx2(buf, lo, b.j, m, u[0], VSPH_PAIR_CHUNK_MAX,
+          vsph_sweep_x86_add8_avx2(buf, lo, b->j, m, u[0], VSPH_PAIR_CHUNK_MAX,
                                    Vi);
         else
           for (size_t k = 0; k < m; k++) { /* j's, in pair order */
-            double *const q = buf + (b.j[k] - lo) * (size_t)nf;
+            double *const q = buf + (b->j[k] - lo) * (size_t)nf;
             for (int e = 0; e < nf; e++) q[e] += Vi * u[e][k];
           }
       }

@@ -465,11 +465,15 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
   size_t total = 0;
   double ms2 = INFINITY;
   const int fluid_only = p->n == n_fluid; /* no ghosts nor wall particles */
+  /* a cell's receivers walk their rows together where the CPU allows:
+   * each gets the chunks its own walk would give, to the bit */
+  struct vsph_pair_cell pc;
   for (size_t c = sw->c0[blk]; c < sw->c0[blk + 1]; c++) {
     struct vsph_pair_ranges rg;
     vsph_pair_ranges_cell(&rg, cells, c);
-    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-         i++) {
+    const size_t s0 = cells->start[c], cnt = cells->count[c];
+    vsph_pair_cell_upper(&pc, &rc->pk, p, &rg, s0, cnt, dim);
+    for (size_t i = s0; i < s0 + cnt; i++) {
       const int fi = id[i] < n_fluid;
       double ui[3] = {0, 0, 0}, Ai[9] = {0};
       for (int a = 0; a < dim; a++) ui[a] = vel[a][i];
@@ -478,10 +482,11 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
       double cont = 0, dsum = 0, f0 = 0, f1 = 0, f2 = 0, v0 = 0, v1 = 0, v2 = 0,
              rs2 = INFINITY;
       struct vsph_pair_iter it;
-      struct vsph_pair_chunk b;
-      vsph_pair_begin_upper(&it, &rc->pk, p, &rg, i);
-      while (vsph_pair_gather_as(&it, dim, kid, 1, &b)) {
-        const size_t m = b.m;
+      struct vsph_pair_chunk own;
+      const struct vsph_pair_chunk *bq;
+      vsph_pair_begin_upper_in(&it, &rc->pk, p, &rg, &pc, i);
+      while (vsph_pair_next_chunk(&it, dim, kid, 1, &own, &bq)) {
+        const size_t m = bq->m;
         /* i's unit shares; j's shares (V_i applied, signed for j) */
         double sf[3][VSPH_PAIR_CHUNK_MAX], sv[3][VSPH_PAIR_CHUNK_MAX],
             sc[VSPH_PAIR_CHUNK_MAX], sd[VSPH_PAIR_CHUNK_MAX],
@@ -490,7 +495,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
 #pragma omp simd
         for (size_t k = 0; k < m; k++) {
           struct vsph_pair pr;           /* VF = F: unit shares, V_i and V_j */
-          vsph_pair_at(&b, k, dim, &pr); /* applied below */
+          vsph_pair_at(bq, k, dim, &pr); /* applied below */
           const size_t j = pr.j;
           struct vsph_pair_vec du;
           double dux = 0.0;
@@ -533,11 +538,11 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
         /* j's shares, in pair order (a ghost's are never read): the
          * force, continuity and (delta) the diffusion, or every field */
         if (VSPH_PAIR_X86 && (nf == 3 || nf == 4) && rc->pk.simd)
-          vsph_sweep_x86_add_avx2(buf, lo, nf, b.j, m, js[0],
+          vsph_sweep_x86_add_avx2(buf, lo, nf, bq->j, m, js[0],
                                   VSPH_PAIR_CHUNK_MAX);
         else
-          sweep_add(buf, lo, nf, b.j, m, js, nf);
-        total += sweep_count(&b, id, n_fluid, fluid_only, fi, &rs2, &ms2);
+          sweep_add(buf, lo, nf, bq->j, m, js, nf);
+        total += sweep_count(bq, id, n_fluid, fluid_only, fi, &rs2, &ms2);
       }
       if (!fi) continue;
       ms2 = rs2 < ms2 ? rs2 : ms2;

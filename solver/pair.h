@@ -4,6 +4,7 @@
 #define VSPH_SOLVER_PAIR_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "../common/consts.h"
 #include "../kernels/kernel.h"
@@ -95,6 +96,9 @@ struct vsph_pair_iter {
   size_t r, j, end;                  /*!< range, next index, range end */
   size_t jmin;                       /*!< no candidate below this index */
   double xi[3];                      /*!< r_i */
+  struct vsph_pair_chunk *ready;     /*!< the walk's one chunk, made by its
+                                          cell's joint walk; NULL: none */
+  size_t ready_m;                    /*!< its neighbours */
 };
 
 /** @brief The next block of candidates of the walk @p it: at most 64
@@ -144,6 +148,33 @@ VSPH_API size_t vsph_pair_x86_candidates_avx512(struct vsph_pair_iter *it,
 /** @brief The same by AVX2 (vsph_pair_x86_simd() >= 1). */
 VSPH_API size_t vsph_pair_x86_candidates_avx2(struct vsph_pair_iter *it,
                                               struct vsph_pair_chunk *b);
+/** At most this many receivers share one walk of their cell's rows
+ *  (vsph_pair_x86_upper_cell_avx512). */
+#define VSPH_PAIR_JOINT 8
+/** @brief The upper walks (vsph_pair_begin_upper) of a cell's @p cnt <=
+ *  VSPH_PAIR_JOINT consecutive receivers s, s+1, ... at once by AVX-512:
+ *  each block of candidates of the rows after their own is loaded once
+ *  and tested against every receiver. For receiver q, @p b[q] gets the
+ *  j, x and s2 of its neighbours j > s + q and @p m[q] their count: the
+ *  chunk vsph_pair_gather_as fills for that walk, to the bit (the same
+ *  operations, in range order). Where a walk's neighbours reach
+ *  VSPH_PAIR_CHUNK, m[q] = SIZE_MAX: that walk comes in several chunks,
+ *  and the caller walks it alone. @p rg: the ranges of the receivers'
+ *  cell; @p pos: the positions (components < pk->dim). Call only where
+ *  vsph_pair_x86_simd() returns 2 (vsph_pair_cell_upper chooses). */
+VSPH_API void vsph_pair_x86_upper_cell_avx512(const struct vsph_pair_kernel *pk,
+                                              const double *const pos[3],
+                                              const struct vsph_pair_ranges *rg,
+                                              size_t s, size_t cnt,
+                                              struct vsph_pair_chunk *b,
+                                              size_t *m);
+/** @brief The same by AVX2 (vsph_pair_x86_simd() >= 1). */
+VSPH_API void vsph_pair_x86_upper_cell_avx2(const struct vsph_pair_kernel *pk,
+                                            const double *const pos[3],
+                                            const struct vsph_pair_ranges *rg,
+                                            size_t s, size_t cnt,
+                                            struct vsph_pair_chunk *b,
+                                            size_t *m);
 #else
 #define VSPH_PAIR_X86 0
 static inline int vsph_pair_x86_simd(void) { return 0; }
@@ -193,6 +224,8 @@ static inline void vsph_pair_begin(struct vsph_pair_iter *it,
   it->j = rg->n > 0 ? rg->lo[0] : 0;
   it->end = rg->n > 0 ? rg->hi[0] : 0;
   it->jmin = 0;
+  it->ready = NULL;
+  it->ready_m = 0;
   for (int k = 0; k < 3; k++) {
     it->pos[k] = k < pk->dim ? p->pos[k] : NULL;
     it->xi[k] = k < pk->dim ? p->pos[k][i] : 0.0;
@@ -257,6 +290,70 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_fvf(const struct vsph_pair_iter *it,
   }
 }
 
+/** @brief Finish a chunk whose @p m neighbours' j, x and s2 are set (by
+ *  the candidate test, or vsph_pair_x86_upper_cell_avx512 for walk @p it):
+ *  their F and VF (@p kid, @p unit as in vsph_pair_gather_as) and b->m.
+ *  @return m. */
+VSPH_CONSTS_SPECIALISE size_t vsph_pair_chunk_ready(
+    const struct vsph_pair_iter *it, struct vsph_pair_chunk *b, size_t m,
+    int kid, const int unit) {
+  double q2[VSPH_PAIR_CHUNK_MAX];
+#pragma omp simd
+  for (size_t k = 0; k < m; k++) q2[k] = b->s2[k] * it->pk->h_inv2;
+  vsph_pair_fvf(it, b, q2, m, kid, unit);
+  b->m = m;
+  return m;
+}
+
+/** The upper walks (vsph_pair_begin_upper) of one cell's receivers,
+ *  made together where the CPU allows (vsph_pair_cell_upper). */
+struct vsph_pair_cell {
+  size_t s0;                                 /*!< the first receiver */
+  int joint;                                 /*!< the chunks below are made */
+  size_t m[VSPH_PAIR_JOINT];                 /*!< each receiver's neighbours;
+                                                  SIZE_MAX: it walks alone */
+  struct vsph_pair_chunk b[VSPH_PAIR_JOINT]; /*!< each receiver's chunk */
+};
+
+/** @brief Walk the rows of the cell whose ranges are @p rg for its @p cnt
+ *  receivers s0, s0+1, ... together, where the CPU has AVX-512 or AVX2
+ *  (pk->simd, in 2-D and 3-D) and the cell 2 to VSPH_PAIR_JOINT particles
+ *  (vsph_pair_x86_upper_cell_avx512, _avx2); otherwise do nothing, and
+ *  each receiver walks alone (vsph_pair_begin_upper_in). */
+VSPH_CONSTS_SPECIALISE void vsph_pair_cell_upper(
+    struct vsph_pair_cell *pc, const struct vsph_pair_kernel *pk,
+    const struct vsph_particles *p, const struct vsph_pair_ranges *rg,
+    size_t s0, size_t cnt, const int dim) {
+  pc->s0 = s0;
+  pc->joint = 0;
+#if VSPH_PAIR_X86
+  if (dim >= 2 && pk->simd && cnt >= 2 && cnt <= VSPH_PAIR_JOINT) {
+    const double *const pos[3] = {p->pos[0], p->pos[1],
+                                  dim > 2 ? p->pos[2] : NULL};
+    if (pk->simd == 2)
+      vsph_pair_x86_upper_cell_avx512(pk, pos, rg, s0, cnt, pc->b, pc->m);
+    else
+      vsph_pair_x86_upper_cell_avx2(pk, pos, rg, s0, cnt, pc->b, pc->m);
+    pc->joint = 1;
+  }
+#else
+  (void)pk, (void)p, (void)rg, (void)cnt, (void)dim;
+#endif
+}
+
+/** @brief vsph_pair_begin_upper for receiver @p i of the cell @p pc
+ *  walked: its walk gives the joint walk's chunk, where there is one. */
+VSPH_CONSTS_SPECIALISE void vsph_pair_begin_upper_in(
+    struct vsph_pair_iter *it, const struct vsph_pair_kernel *pk,
+    const struct vsph_particles *p, const struct vsph_pair_ranges *rg,
+    struct vsph_pair_cell *pc, size_t i) {
+  vsph_pair_begin_upper(it, pk, p, rg, i);
+  if (pc->joint && pc->m[i - pc->s0] != SIZE_MAX) {
+    it->ready = &pc->b[i - pc->s0];
+    it->ready_m = pc->m[i - pc->s0];
+  }
+}
+
 /** @brief The next chunk of neighbours j != i (j > i after
  *  vsph_pair_begin_upper) with s^2 < H2 into @p b.
  *  The candidates are tested 64 at a time in one vectorised loop that sets
@@ -285,11 +382,7 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather_as(struct vsph_pair_iter *it,
   if (dim >= 2 && it->pk->simd) {
     const size_t m = it->pk->simd == 2 ? vsph_pair_x86_candidates_avx512(it, b)
                                        : vsph_pair_x86_candidates_avx2(it, b);
-#pragma omp simd
-    for (size_t k = 0; k < m; k++) q2[k] = b->s2[k] * it->pk->h_inv2;
-    vsph_pair_fvf(it, b, q2, m, kid, unit);
-    b->m = m;
-    return m;
+    return vsph_pair_chunk_ready(it, b, m, kid, unit);
   }
 #endif
   const double H2 = it->pk->H2;
@@ -333,6 +426,25 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather(struct vsph_pair_iter *it,
                                                int dim, int kid,
                                                struct vsph_pair_chunk *b) {
   return vsph_pair_gather_as(it, dim, kid, 0, b);
+}
+
+/** @brief The next chunk of walk @p it as vsph_pair_gather_as makes it
+ *  (@p dim, @p kid, @p unit as there), into @p own or, where the walk's
+ *  cell made it (vsph_pair_begin_upper_in), that one: *@p bp points at
+ *  it. @return its neighbours; 0 when the walk is over. */
+VSPH_CONSTS_SPECIALISE size_t vsph_pair_next_chunk(
+    struct vsph_pair_iter *it, int dim, int kid, const int unit,
+    struct vsph_pair_chunk *own, const struct vsph_pair_chunk **bp) {
+  struct vsph_pair_chunk *const b = it->ready;
+  if (!b) {
+    *bp = own;
+    return vsph_pair_gather_as(it, dim, kid, unit, own);
+  }
+  it->ready = NULL;
+  it->r = it->rg->n; /* the walk is over after this chunk */
+  it->j = it->end = 0;
+  *bp = b;
+  return vsph_pair_chunk_ready(it, b, it->ready_m, kid, unit);
 }
 
 /** @brief Pair k of chunk @p b as a vsph_pair (for the term functions). */
