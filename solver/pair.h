@@ -85,6 +85,26 @@ struct vsph_pair_chunk {
   double VF[VSPH_PAIR_CHUNK_MAX];   /*!< V_j W'(s)/s */
 };
 
+/** At most this many receivers share one walk of their cell's rows
+ *  (vsph_pair_cell_upper). */
+#define VSPH_PAIR_JOINT 8
+
+/** The upper walks (vsph_pair_begin_upper) of one cell's receivers,
+ *  made together where the CPU allows (vsph_pair_cell_upper): each
+ *  receiver's first chunk, and where its walk goes on alone. */
+struct vsph_pair_cell {
+  size_t s0;                                 /*!< the first receiver */
+  int joint;                                 /*!< the chunks below are made */
+  size_t m[VSPH_PAIR_JOINT];                 /*!< each receiver's neighbours
+                                                  in b; SIZE_MAX: none made,
+                                                  it walks alone */
+  size_t r[VSPH_PAIR_JOINT];                 /*!< the range its walk goes on
+                                                  in; SIZE_MAX: it ends */
+  size_t j[VSPH_PAIR_JOINT];                 /*!< ... and the candidate */
+  struct vsph_pair_chunk b[VSPH_PAIR_JOINT]; /*!< each receiver's first
+                                                  chunk */
+};
+
 /** Iterator over the neighbours j != i of particle i, in range order. The
  *  fields are private: read the pairs, not the iterator. */
 struct vsph_pair_iter {
@@ -96,9 +116,12 @@ struct vsph_pair_iter {
   size_t r, j, end;                  /*!< range, next index, range end */
   size_t jmin;                       /*!< no candidate below this index */
   double xi[3];                      /*!< r_i */
-  struct vsph_pair_chunk *ready;     /*!< the walk's one chunk, made by its
-                                          cell's joint walk; NULL: none */
+  struct vsph_pair_chunk *ready;     /*!< the walk's first chunk, made by
+                                          its cell's joint walk; NULL: none */
   size_t ready_m;                    /*!< its neighbours */
+  size_t ready_r, ready_j;           /*!< where the walk goes on after it
+                                          (range, candidate); ready_r =
+                                          SIZE_MAX: it ends there */
 };
 
 /** @brief The next block of candidates of the walk @p it: at most 64
@@ -148,33 +171,29 @@ VSPH_API size_t vsph_pair_x86_candidates_avx512(struct vsph_pair_iter *it,
 /** @brief The same by AVX2 (vsph_pair_x86_simd() >= 1). */
 VSPH_API size_t vsph_pair_x86_candidates_avx2(struct vsph_pair_iter *it,
                                               struct vsph_pair_chunk *b);
-/** At most this many receivers share one walk of their cell's rows
- *  (vsph_pair_x86_upper_cell_avx512). */
-#define VSPH_PAIR_JOINT 8
 /** @brief The upper walks (vsph_pair_begin_upper) of a cell's @p cnt <=
- *  VSPH_PAIR_JOINT consecutive receivers s, s+1, ... at once by AVX-512:
- *  each block of candidates of the rows after their own is loaded once
- *  and tested against every receiver. For receiver q, @p b[q] gets the
- *  j, x and s2 of its neighbours j > s + q and @p m[q] their count: the
- *  chunk vsph_pair_gather_as fills for that walk, to the bit (the same
- *  operations, in range order). Where a walk's neighbours reach
- *  VSPH_PAIR_CHUNK, m[q] = SIZE_MAX: that walk comes in several chunks,
- *  and the caller walks it alone. @p rg: the ranges of the receivers'
- *  cell; @p pos: the positions (components < pk->dim). Call only where
- *  vsph_pair_x86_simd() returns 2 (vsph_pair_cell_upper chooses). */
+ *  VSPH_PAIR_JOINT consecutive receivers pc->s0, pc->s0 + 1, ... at once
+ *  by AVX-512: in the rows after their own, each vector of candidates is
+ *  tested against every receiver in turn. For receiver q, pc->b[q] gets
+ *  the j, x and s2 of its first chunk's neighbours, pc->m[q] their count:
+ *  the chunk vsph_pair_gather_as fills first for that walk, to the bit
+ *  (the same operations, the same blocks, in range order); where that
+ *  chunk is full before the walk ends, pc->r[q] and pc->j[q] say where the
+ *  walk goes on (else pc->r[q] = SIZE_MAX). @p rg: the ranges of the
+ *  receivers' cell; @p pos: the positions (components < pk->dim). Call
+ *  only where vsph_pair_x86_simd() returns 2 (vsph_pair_cell_upper
+ *  chooses). */
 VSPH_API void vsph_pair_x86_upper_cell_avx512(const struct vsph_pair_kernel *pk,
                                               const double *const pos[3],
                                               const struct vsph_pair_ranges *rg,
-                                              size_t s, size_t cnt,
-                                              struct vsph_pair_chunk *b,
-                                              size_t *m);
+                                              struct vsph_pair_cell *pc,
+                                              size_t cnt);
 /** @brief The same by AVX2 (vsph_pair_x86_simd() >= 1). */
 VSPH_API void vsph_pair_x86_upper_cell_avx2(const struct vsph_pair_kernel *pk,
                                             const double *const pos[3],
                                             const struct vsph_pair_ranges *rg,
-                                            size_t s, size_t cnt,
-                                            struct vsph_pair_chunk *b,
-                                            size_t *m);
+                                            struct vsph_pair_cell *pc,
+                                            size_t cnt);
 #else
 #define VSPH_PAIR_X86 0
 static inline int vsph_pair_x86_simd(void) { return 0; }
@@ -305,16 +324,6 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_chunk_ready(
   return m;
 }
 
-/** The upper walks (vsph_pair_begin_upper) of one cell's receivers,
- *  made together where the CPU allows (vsph_pair_cell_upper). */
-struct vsph_pair_cell {
-  size_t s0;                                 /*!< the first receiver */
-  int joint;                                 /*!< the chunks below are made */
-  size_t m[VSPH_PAIR_JOINT];                 /*!< each receiver's neighbours;
-                                                  SIZE_MAX: it walks alone */
-  struct vsph_pair_chunk b[VSPH_PAIR_JOINT]; /*!< each receiver's chunk */
-};
-
 /** @brief Walk the rows of the cell whose ranges are @p rg for its @p cnt
  *  receivers s0, s0+1, ... together, where the CPU has AVX-512 or AVX2
  *  (pk->simd, in 2-D and 3-D) and the cell 2 to VSPH_PAIR_JOINT particles
@@ -331,9 +340,9 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_cell_upper(
     const double *const pos[3] = {p->pos[0], p->pos[1],
                                   dim > 2 ? p->pos[2] : NULL};
     if (pk->simd == 2)
-      vsph_pair_x86_upper_cell_avx512(pk, pos, rg, s0, cnt, pc->b, pc->m);
+      vsph_pair_x86_upper_cell_avx512(pk, pos, rg, pc, cnt);
     else
-      vsph_pair_x86_upper_cell_avx2(pk, pos, rg, s0, cnt, pc->b, pc->m);
+      vsph_pair_x86_upper_cell_avx2(pk, pos, rg, pc, cnt);
     pc->joint = 1;
   }
 #else
@@ -342,15 +351,19 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_cell_upper(
 }
 
 /** @brief vsph_pair_begin_upper for receiver @p i of the cell @p pc
- *  walked: its walk gives the joint walk's chunk, where there is one. */
+ *  walked: its walk gives the joint walk's chunk first, where there is
+ *  one, then goes on alone. */
 VSPH_CONSTS_SPECIALISE void vsph_pair_begin_upper_in(
     struct vsph_pair_iter *it, const struct vsph_pair_kernel *pk,
     const struct vsph_particles *p, const struct vsph_pair_ranges *rg,
     struct vsph_pair_cell *pc, size_t i) {
   vsph_pair_begin_upper(it, pk, p, rg, i);
-  if (pc->joint && pc->m[i - pc->s0] != SIZE_MAX) {
-    it->ready = &pc->b[i - pc->s0];
-    it->ready_m = pc->m[i - pc->s0];
+  const size_t q = i - pc->s0;
+  if (pc->joint && pc->m[q] != SIZE_MAX) {
+    it->ready = &pc->b[q];
+    it->ready_m = pc->m[q];
+    it->ready_r = pc->r[q];
+    it->ready_j = pc->j[q];
   }
 }
 
@@ -429,9 +442,10 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather(struct vsph_pair_iter *it,
 }
 
 /** @brief The next chunk of walk @p it as vsph_pair_gather_as makes it
- *  (@p dim, @p kid, @p unit as there), into @p own or, where the walk's
- *  cell made it (vsph_pair_begin_upper_in), that one: *@p bp points at
- *  it. @return its neighbours; 0 when the walk is over. */
+ *  (@p dim, @p kid, @p unit as there), into @p own or, for the first
+ *  where the walk's cell made it (vsph_pair_begin_upper_in), that one:
+ *  *@p bp points at it. @return its neighbours; 0 when the walk is
+ *  over. */
 VSPH_CONSTS_SPECIALISE size_t vsph_pair_next_chunk(
     struct vsph_pair_iter *it, int dim, int kid, const int unit,
     struct vsph_pair_chunk *own, const struct vsph_pair_chunk **bp) {
@@ -441,8 +455,14 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_next_chunk(
     return vsph_pair_gather_as(it, dim, kid, unit, own);
   }
   it->ready = NULL;
-  it->r = it->rg->n; /* the walk is over after this chunk */
-  it->j = it->end = 0;
+  if (it->ready_r == SIZE_MAX) { /* the walk is over after this chunk */
+    it->r = it->rg->n;
+    it->j = it->end = 0;
+  } else { /* it goes on here */
+    it->r = it->ready_r;
+    it->j = it->ready_j;
+    it->end = it->rg->hi[it->r];
+  }
   *bp = b;
   return vsph_pair_chunk_ready(it, b, it->ready_m, kid, unit);
 }

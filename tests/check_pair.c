@@ -959,12 +959,13 @@ static size_t walks_agree(const struct vsph_particles *p,
  * (vsph_pair_cell_upper, vsph_pair_begin_upper_in, vsph_pair_next_chunk)
  * against each particle's own upper walk by the portable loop: chunk by
  * chunk the same fields, to the bit. Counts the walks that took the
- * joint walk's chunk (*joint) and those a joint walk left to walk alone,
- * their neighbours reaching a chunk (*alone). */
+ * joint walk's chunk (*joint), those that went on alone after it, their
+ * first chunk full (*alone), and of those the ones that went on inside a
+ * row (*midrow). */
 static void cells_agree(const struct vsph_particles *p,
                         const struct vsph_cells *cells,
                         const struct vsph_pair_kernel *pk0, int level,
-                        size_t *joint, size_t *alone) {
+                        size_t *joint, size_t *alone, size_t *midrow) {
   struct vsph_pair_kernel pk[2] = {*pk0, *pk0};
   pk[0].simd = level;
   pk[1].simd = 0;
@@ -981,7 +982,9 @@ static void cells_agree(const struct vsph_particles *p,
       vsph_pair_begin_upper_in(&it[0], &pk[0], p, &rg, &pc, i);
       vsph_pair_begin_upper(&it[1], &pk[1], p, &rg, i);
       *joint += it[0].ready != NULL;
-      *alone += pc.joint && !it[0].ready;
+      *alone += it[0].ready && it[0].ready_r != SIZE_MAX;
+      *midrow += it[0].ready && it[0].ready_r != SIZE_MAX &&
+                 it[0].ready_j < rg.hi[it[0].ready_r];
       for (;;) {
         const struct vsph_pair_chunk *b0;
         const size_t m0 =
@@ -1003,6 +1006,52 @@ static void cells_agree(const struct vsph_particles *p,
     }
   }
 }
+
+/* A walk whose first chunk fills inside its own row (cells_agree): in
+ * 2-D, three particles in one cell (edge 0.5) and, in the next cell of
+ * the row, 10 particles beyond their support (3h = 0.6), then 130 in a
+ * 1/8-cell box within it: each of the three has more than 128
+ * candidates ahead in its row, and its chunk is full at the end of its
+ * second block of 64, not at the first nor after 96 (a block of 32 would
+ * end it there): the joint walk's chunk ends inside the row, and the
+ * walk goes on alone from there; at each level the CPU has, the same
+ * chunks as the portable walk's. */
+START_TEST(test_joint_walk_resumes) {
+  const size_t n = 145;
+  struct vsph_particles *p = vsph_particles_alloc(n, 2);
+  ck_assert_ptr_nonnull(p);
+  p->n = n;
+  for (size_t i = 0; i < n; i++) {
+    const size_t c = i - 13; /* the cluster's */
+    p->pos[0][i] = i < 3    ? 0.1 + 0.1 * (double)i
+                   : i < 13 ? 0.95
+                            : 0.55 + 0.005 * (double)(c % 10);
+    p->pos[1][i] = i < 3    ? 0.25
+                   : i < 13 ? 0.05 + 0.04 * (double)(i - 3)
+                            : 0.225 + 0.005 * (double)(c / 10);
+    p->id[i] = i;
+    p->rho[i] = RHO0;
+    p->vol[i] = 1e-3;
+    p->m[i] = RHO0 * 1e-3;
+  }
+  /* the grid's corners (0, 0.05) and (2.4, 1.45), out of reach */
+  p->pos[0][n - 2] = 0.0;
+  p->pos[1][n - 2] = 1.45;
+  p->pos[0][n - 1] = 2.4;
+  p->pos[1][n - 1] = 1.45;
+  struct vsph_cells *cells = vsph_cells_alloc();
+  ck_assert_int_eq(vsph_cells_build(cells, p, 1.0), 0); /* edge 0.5 */
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, &vsph_gaussian_type, 2, 0.2); /* 3h = 0.6 */
+  for (int level = 1; level <= pk.simd; level++) {
+    size_t joint = 0, alone = 0, midrow = 0;
+    cells_agree(p, cells, &pk, level, &joint, &alone, &midrow);
+    ck_assert_uint_eq(midrow, 3);
+  }
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+}
+END_TEST
 
 START_TEST(test_candidates_simd) {
   const int dim = 2 + _i / 2;
@@ -1043,10 +1092,28 @@ START_TEST(test_candidates_simd) {
      * 2^dim particles); in 3-D (about 130 neighbours j > i) or with the
      * wider support (3h in 2-D: 20 cells' worth of candidates above,
      * fewer neighbours) some are left to walk alone */
-    size_t joint = 0, alone = 0;
-    cells_agree(p, cells, &pk, level, &joint, &alone);
+    size_t joint = 0, alone = 0, midrow = 0;
+    cells_agree(p, cells, &pk, level, &joint, &alone, &midrow);
     ck_assert_uint_gt(joint, p->n / 4);
     if (dim == 3) ck_assert_uint_gt(alone, 0);
+    /* 3-D: a cluster of 200 particles in a 1/10-cell box; the rows
+     * through it hold more than a block (64 candidates), so the walks of
+     * the sparse cells beside it fill their first chunk inside a row */
+    if (dim == 3) {
+      struct vsph_particles *q = random_set(dim, 11 + (unsigned long)_i);
+      for (size_t c = 0; c < 200; c++)
+        for (int a = 0; a < dim; a++)
+          q->pos[a][(c * 7) % q->n] =
+              q->pos[a][q->n / 2] +
+              0.1 * cells->edge * (double)((c * (size_t)(a + 3)) % 17) / 17.0;
+      struct vsph_cells *qc = vsph_cells_alloc();
+      ck_assert_int_eq(vsph_cells_build(qc, q, k->kappa * h), 0);
+      joint = alone = midrow = 0;
+      cells_agree(q, qc, &pk, level, &joint, &alone, &midrow);
+      ck_assert_uint_gt(midrow, 0);
+      vsph_cells_free(qc);
+      vsph_particles_free(q);
+    }
   }
   vsph_cells_free(cells);
   vsph_particles_free(p);
@@ -1675,6 +1742,7 @@ Suite *vsph_equations_suite(void) {
   size_t nwc = 0;
   while (vsph_scene_get(nwc) && vsph_scene_get(nwc) != &vsph_shear_type) nwc++;
   tcase_add_loop_test(tc, test_candidates_simd, 0, 4);
+  tcase_add_test(tc, test_joint_walk_resumes);
   tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 8);
   tcase_add_test(tc, test_sweep_lanes_by_hand);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
