@@ -90,11 +90,14 @@ struct vsph_pair_chunk {
 #define VSPH_PAIR_JOINT 8
 
 /** The upper walks (vsph_pair_begin_upper) of one cell's receivers,
- *  made together where the CPU allows (vsph_pair_cell_upper): each
- *  receiver's first chunk, and where its walk goes on alone. */
+ *  made together, VSPH_PAIR_JOINT at a time, where the CPU allows
+ *  (vsph_pair_cell_upper): each receiver's first chunk, and where its
+ *  walk goes on alone. */
 struct vsph_pair_cell {
-  size_t s0;                                 /*!< the first receiver */
-  int joint;                                 /*!< the chunks below are made */
+  size_t end;                                /*!< one past the cell's last */
+  int can;                                   /*!< its walks go together */
+  size_t s0;                                 /*!< the group's first ... */
+  size_t gn;                                 /*!< ... and its receivers */
   size_t m[VSPH_PAIR_JOINT];                 /*!< each receiver's neighbours
                                                   in b; SIZE_MAX: none made,
                                                   it walks alone */
@@ -324,47 +327,55 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_chunk_ready(
   return m;
 }
 
-/** @brief Walk the rows of the cell whose ranges are @p rg for its @p cnt
- *  receivers s0, s0+1, ... together, where the CPU has AVX-512 or AVX2
- *  (pk->simd, in 2-D and 3-D) and the cell 2 to VSPH_PAIR_JOINT particles
- *  (vsph_pair_x86_upper_cell_avx512, _avx2); otherwise do nothing, and
- *  each receiver walks alone (vsph_pair_begin_upper_in). */
+/** @brief Begin the upper walks of the cell of receivers s0 ..
+ *  s0 + cnt - 1: vsph_pair_begin_upper_in, called for each in turn, walks
+ *  the rows together for groups of up to VSPH_PAIR_JOINT of them where
+ *  the CPU has AVX-512 or AVX2 (pk->simd, in 2-D and 3-D;
+ *  vsph_pair_x86_upper_cell_avx512, _avx2), and gives each the chunks its
+ *  own walk would; otherwise each walks alone. */
 VSPH_CONSTS_SPECIALISE void vsph_pair_cell_upper(
-    struct vsph_pair_cell *pc, const struct vsph_pair_kernel *pk,
-    const struct vsph_particles *p, const struct vsph_pair_ranges *rg,
-    size_t s0, size_t cnt, const int dim) {
+    struct vsph_pair_cell *pc, const struct vsph_pair_kernel *pk, size_t s0,
+    size_t cnt, const int dim) {
+  pc->end = s0 + cnt;
+  pc->can = VSPH_PAIR_X86 && dim >= 2 && pk->simd && cnt >= 2;
   pc->s0 = s0;
-  pc->joint = 0;
-#if VSPH_PAIR_X86
-  if (dim >= 2 && pk->simd && cnt >= 2 && cnt <= VSPH_PAIR_JOINT) {
-    const double *const pos[3] = {p->pos[0], p->pos[1],
-                                  dim > 2 ? p->pos[2] : NULL};
-    if (pk->simd == 2)
-      vsph_pair_x86_upper_cell_avx512(pk, pos, rg, pc, cnt);
-    else
-      vsph_pair_x86_upper_cell_avx2(pk, pos, rg, pc, cnt);
-    pc->joint = 1;
-  }
-#else
-  (void)pk, (void)p, (void)rg, (void)cnt, (void)dim;
-#endif
+  pc->gn = 0;
 }
 
 /** @brief vsph_pair_begin_upper for receiver @p i of the cell @p pc
- *  walked: its walk gives the joint walk's chunk first, where there is
- *  one, then goes on alone. */
+ *  begun (vsph_pair_cell_upper; its receivers in turn, @p rg its
+ *  ranges): where the receivers walk together, the group's walk is made
+ *  with its first receiver, and this walk gives its chunk first, then
+ *  goes on alone. */
 VSPH_CONSTS_SPECIALISE void vsph_pair_begin_upper_in(
     struct vsph_pair_iter *it, const struct vsph_pair_kernel *pk,
     const struct vsph_particles *p, const struct vsph_pair_ranges *rg,
     struct vsph_pair_cell *pc, size_t i) {
   vsph_pair_begin_upper(it, pk, p, rg, i);
+  if (!pc->can) return;
+#if VSPH_PAIR_X86
+  if (i >= pc->s0 + pc->gn) { /* the next group: made now */
+    const size_t left = pc->end - i;
+    pc->s0 = i;
+    pc->gn = left < VSPH_PAIR_JOINT ? left : VSPH_PAIR_JOINT;
+    if (pc->gn < 2) return; /* one receiver left: it walks alone */
+    const double *const pos[3] = {p->pos[0], p->pos[1],
+                                  pk->dim > 2 ? p->pos[2] : NULL};
+    if (pk->simd == 2)
+      vsph_pair_x86_upper_cell_avx512(pk, pos, rg, pc, pc->gn);
+    else
+      vsph_pair_x86_upper_cell_avx2(pk, pos, rg, pc, pc->gn);
+  }
   const size_t q = i - pc->s0;
-  if (pc->joint && pc->m[q] != SIZE_MAX) {
+  if (pc->gn >= 2 && pc->m[q] != SIZE_MAX) {
     it->ready = &pc->b[q];
     it->ready_m = pc->m[q];
     it->ready_r = pc->r[q];
     it->ready_j = pc->j[q];
   }
+#else
+  (void)p, (void)rg;
+#endif
 }
 
 /** @brief The next chunk of neighbours j != i (j > i after

@@ -97,112 +97,116 @@ vsph_pair_x86_candidates_avx512(struct vsph_pair_iter *it,
                           : candidates_avx512(it, b, 2);
 }
 
-/* A cell's upper walks together (vsph_pair_x86_upper_cell_avx512, _avx2):
- * the lanes of one vector of W candidates j.. (@p left of them live) for
+/* A cell's upper walks together (vsph_pair_x86_upper_cell_avx512, _avx2),
+ * for receivers pc->s0.. (cnt of them) by vectors of W candidates: the
+ * rows before their own hold no j > i; in their own row (they are
+ * consecutive in it) each walks from i + 1; in the rows after it each
+ * vector of candidates is loaded once (LOAD(j0, c, n): X, Y, Z, J and the
+ * live lanes) and tested against every receiver whose first chunk is
+ * still open (LANES(i, q)). A walk's blocks are its own walk's (64
+ * candidates from the start of each range, or from i + 1), and as there
+ * a chunk holding VSPH_PAIR_CHUNK neighbours or more at the end of a
+ * block is complete: that walk goes on alone from the next block (pc->r,
+ * pc->j). The body of upper_cell_avx512 and _avx2, so that the two widths
+ * share one walk. */
+#define UPPER_CELL_WALK(W, LOAD, LANES)                                    \
+  do {                                                                     \
+    const size_t s = pc->s0;                                               \
+    size_t own = 0;                                                        \
+    while (own < rg->n && !(rg->lo[own] <= s && s < rg->hi[own])) own++;   \
+    if (own == rg->n) { /* not a cell of these ranges: each walks alone */ \
+      for (size_t q = 0; q < cnt; q++) pc->m[q] = SIZE_MAX;                \
+      break;                                                               \
+    }                                                                      \
+    /* the counts in a local array: the chunks' stores cannot alias it */  \
+    size_t m[VSPH_PAIR_JOINT];                                             \
+    unsigned open = 0; /* the walks still in their first chunk */          \
+    for (size_t q = 0; q < cnt; q++) {                                     \
+      const size_t i = s + q, j0 = i + 1, n = rg->hi[own] - j0;            \
+      m[q] = 0;                                                            \
+      pc->r[q] = SIZE_MAX; /* the walk ends with its first chunk ... */    \
+      open |= 1u << q;                                                     \
+      for (size_t c = 0; c < n; c += (W)) {                                \
+        LOAD(j0, c, n);                                                    \
+        LANES(i, q);                                                       \
+        const size_t e = c + (W) < n ? c + (W) : n;                        \
+        if ((e % 64 == 0 || e == n) && m[q] >= VSPH_PAIR_CHUNK) {          \
+          pc->r[q] = own; /* ... or goes on alone from here */             \
+          pc->j[q] = j0 + e;                                               \
+          open &= ~(1u << q);                                              \
+          break;                                                           \
+        }                                                                  \
+      }                                                                    \
+    }                                                                      \
+    for (size_t r = own + 1; r < rg->n && open; r++) {                     \
+      const size_t j0 = rg->lo[r], n = rg->hi[r] - j0;                     \
+      for (size_t c = 0; c < n && open; c += (W)) {                        \
+        LOAD(j0, c, n);                                                    \
+        const size_t e = c + (W) < n ? c + (W) : n;                        \
+        const int ends = e % 64 == 0 || e == n; /* a block ends */         \
+        for (size_t q = 0; q < cnt; q++) {                                 \
+          if (!(open >> q & 1u)) continue;                                 \
+          LANES(s + q, q);                                                 \
+          if (ends && m[q] >= VSPH_PAIR_CHUNK) {                           \
+            pc->r[q] = r;                                                  \
+            pc->j[q] = j0 + e;                                             \
+            open &= ~(1u << q);                                            \
+          }                                                                \
+        }                                                                  \
+      }                                                                    \
+    }                                                                      \
+    for (size_t q = 0; q < cnt; q++) pc->m[q] = m[q];                      \
+  } while (0)
+
+/* UPPER_CELL_WALK's lanes by AVX-512 in @p dim (a constant where
+ * inlined): the candidates X, Y, Z, J (live lanes @p live) tested for
  * receiver i, its neighbours' x, s^2 and index appended to @p b at *m as
  * the candidate test appends them (the same operations, so the same
  * bits) */
-typedef void vsph_upper_lanes_fn(const double *const pos[3], size_t i, size_t j,
-                                 size_t left, double H2,
-                                 struct vsph_pair_chunk *b, size_t *m);
-
-/* The walks of receivers s0.. of @p pc (cnt of them) with vectors of @p W
- * lanes by @p lanes: the rows before their own hold no j > i; in their
- * own row (they are consecutive in it) each walks from i + 1; the rows
- * after it are walked once for all. A walk's blocks are those of its own
- * walk (64 candidates from the start of each range, or from i + 1), and
- * as there, a chunk that holds VSPH_PAIR_CHUNK neighbours or more at the
- * end of a block is complete: that walk goes on alone from the next
- * block (pc->r, pc->j). */
-static inline __attribute__((always_inline)) void upper_cell(
-    const struct vsph_pair_kernel *pk, const double *const pos[3],
-    const struct vsph_pair_ranges *rg, struct vsph_pair_cell *pc, size_t cnt,
-    const size_t W, vsph_upper_lanes_fn *const lanes) {
-  const size_t s = pc->s0;
-  size_t own = 0;
-  while (own < rg->n && !(rg->lo[own] <= s && s < rg->hi[own])) own++;
-  if (own == rg->n) { /* not a cell of these ranges: each walks alone */
-    for (size_t q = 0; q < cnt; q++) pc->m[q] = SIZE_MAX;
-    return;
-  }
-  unsigned open = 0; /* the walks still in their first chunk */
-  for (size_t q = 0; q < cnt; q++) {
-    const size_t i = s + q, j0 = i + 1, n = rg->hi[own] - j0;
-    pc->m[q] = 0;
-    pc->r[q] = SIZE_MAX; /* the walk ends with its first chunk ... */
-    open |= 1u << q;
-    for (size_t c = 0; c < n; c += W) {
-      lanes(pos, i, j0 + c, n - c, pk->H2, &pc->b[q], &pc->m[q]);
-      const size_t e = c + W < n ? c + W : n;
-      if ((e % 64 == 0 || e == n) && pc->m[q] >= VSPH_PAIR_CHUNK) {
-        pc->r[q] = own; /* ... or goes on alone from here */
-        pc->j[q] = j0 + e;
-        open &= ~(1u << q);
-        break;
-      }
-    }
-  }
-  for (size_t r = own + 1; r < rg->n && open; r++) {
-    const size_t j0 = rg->lo[r], n = rg->hi[r] - j0;
-    for (size_t c = 0; c < n && open; c += W) {
-      const size_t e = c + W < n ? c + W : n;
-      const int ends = e % 64 == 0 || e == n; /* a block ends */
-      for (size_t q = 0; q < cnt; q++) {
-        if (!(open >> q & 1u)) continue;
-        lanes(pos, s + q, j0 + c, n - c, pk->H2, &pc->b[q], &pc->m[q]);
-        if (ends && pc->m[q] >= VSPH_PAIR_CHUNK) {
-          pc->r[q] = r;
-          pc->j[q] = j0 + e;
-          open &= ~(1u << q);
-        }
-      }
-    }
-  }
-}
-
-/* upper_cell's lanes by AVX-512 in @p dim (a constant where inlined) */
 static inline
     __attribute__((always_inline, target("avx512f,avx512vl,avx512dq"))) void
-    upper_lanes_avx512(const double *const pos[3], size_t i, size_t j,
-                       size_t left, double H2v, struct vsph_pair_chunk *b,
-                       size_t *m, const int dim) {
-  const __mmask8 live =
-      left >= 8 ? (__mmask8)0xff : (__mmask8)((1u << left) - 1u);
-  const __m512d dx = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, pos[0] + j),
-                                   _mm512_set1_pd(pos[0][i])),
-                dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, pos[1] + j),
-                                   _mm512_set1_pd(pos[1][i]));
-  const __m512d dz =
-      dim == 3 ? _mm512_sub_pd(_mm512_maskz_loadu_pd(live, pos[2] + j),
-                               _mm512_set1_pd(pos[2][i]))
-               : _mm512_setzero_pd();
+    lanes_avx512(const double *const pos[3], size_t i, __m512d X, __m512d Y,
+                 __m512d Z, __m512i J, __mmask8 live, __m512d H2,
+                 struct vsph_pair_chunk *b, size_t *m, const int dim) {
+  const __m512d dx = _mm512_sub_pd(X, _mm512_set1_pd(pos[0][i])),
+                dy = _mm512_sub_pd(Y, _mm512_set1_pd(pos[1][i]));
+  const __m512d dz = dim == 3 ? _mm512_sub_pd(Z, _mm512_set1_pd(pos[2][i]))
+                              : _mm512_setzero_pd();
   __m512d s2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
   if (dim == 3) s2 = _mm512_add_pd(s2, _mm512_mul_pd(dz, dz));
-  const __mmask8 k =
-      _mm512_mask_cmp_pd_mask(live, s2, _mm512_set1_pd(H2v), _CMP_LT_OQ);
+  const __mmask8 k = _mm512_mask_cmp_pd_mask(live, s2, H2, _CMP_LT_OQ);
   const size_t at = *m;
   _mm512_storeu_pd(b->x[0] + at, _mm512_maskz_compress_pd(k, dx));
   _mm512_storeu_pd(b->x[1] + at, _mm512_maskz_compress_pd(k, dy));
   if (dim == 3) _mm512_storeu_pd(b->x[2] + at, _mm512_maskz_compress_pd(k, dz));
   _mm512_storeu_pd(b->s2 + at, _mm512_maskz_compress_pd(k, s2));
-  const __m512i J = _mm512_add_epi64(_mm512_set1_epi64((long long)j),
-                                     _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0));
   _mm512_storeu_si512((void *)(b->j + at), _mm512_maskz_compress_epi64(k, J));
   *m = at + (size_t)__builtin_popcount((unsigned)k);
 }
 
-static __attribute__((always_inline,
-                      target("avx512f,avx512vl,avx512dq"))) inline void
-lanes512_2(const double *const pos[3], size_t i, size_t j, size_t left,
-           double H2, struct vsph_pair_chunk *b, size_t *m) {
-  upper_lanes_avx512(pos, i, j, left, H2, b, m, 2);
-}
-
-static __attribute__((always_inline,
-                      target("avx512f,avx512vl,avx512dq"))) inline void
-lanes512_3(const double *const pos[3], size_t i, size_t j, size_t left,
-           double H2, struct vsph_pair_chunk *b, size_t *m) {
-  upper_lanes_avx512(pos, i, j, left, H2, b, m, 3);
+static inline
+    __attribute__((always_inline, target("avx512f,avx512vl,avx512dq"))) void
+    upper_cell_avx512(const struct vsph_pair_kernel *pk,
+                      const double *const pos[3],
+                      const struct vsph_pair_ranges *rg,
+                      struct vsph_pair_cell *pc, size_t cnt, const int dim) {
+  const __m512d H2 = _mm512_set1_pd(pk->H2);
+  const __m512i lane = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0);
+#define LOAD512(J0, C, N)                                                     \
+  const __mmask8 live =                                                       \
+      (N) - (C) >= 8 ? (__mmask8)0xff : (__mmask8)((1u << ((N) - (C))) - 1u); \
+  const __m512d X = _mm512_maskz_loadu_pd(live, pos[0] + (J0) + (C)),         \
+                Y = _mm512_maskz_loadu_pd(live, pos[1] + (J0) + (C)),         \
+                Z = dim == 3                                                  \
+                        ? _mm512_maskz_loadu_pd(live, pos[2] + (J0) + (C))    \
+                        : _mm512_setzero_pd();                                \
+  const __m512i J =                                                           \
+      _mm512_add_epi64(_mm512_set1_epi64((long long)((J0) + (C))), lane)
+#define LANES512(I, Q) \
+  lanes_avx512(pos, (I), X, Y, Z, J, live, H2, &pc->b[Q], &m[Q], dim)
+  UPPER_CELL_WALK(8, LOAD512, LANES512);
+#undef LANES512
+#undef LOAD512
 }
 
 __attribute__((target("avx512f,avx512vl,avx512dq"))) void
@@ -211,9 +215,9 @@ vsph_pair_x86_upper_cell_avx512(const struct vsph_pair_kernel *pk,
                                 const struct vsph_pair_ranges *rg,
                                 struct vsph_pair_cell *pc, size_t cnt) {
   if (pk->dim == 3)
-    upper_cell(pk, pos, rg, pc, cnt, 8, lanes512_3);
+    upper_cell_avx512(pk, pos, rg, pc, cnt, 3);
   else
-    upper_cell(pk, pos, rg, pc, cnt, 8, lanes512_2);
+    upper_cell_avx512(pk, pos, rg, pc, cnt, 2);
 }
 
 /* The same with AVX2 (x86-64-v3), four candidates at a time: AVX2 has no
@@ -286,27 +290,19 @@ candidates_avx2(struct vsph_pair_iter *it, struct vsph_pair_chunk *b,
   return m;
 }
 
-/* upper_cell's lanes by AVX2 in @p dim (a constant where inlined) */
-static inline __attribute__((always_inline, target("avx2"))) void
-upper_lanes_avx2(const double *const pos[3], size_t i, size_t j, size_t left,
-                 double H2v, struct vsph_pair_chunk *b, size_t *m,
-                 const int dim) {
-  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
-  const __m256i livev = _mm256_cmpgt_epi64(
-      _mm256_set1_epi64x((long long)(left < 4 ? left : 4)), lane);
-  const __m256d dx = _mm256_sub_pd(_mm256_maskload_pd(pos[0] + j, livev),
-                                   _mm256_set1_pd(pos[0][i])),
-                dy = _mm256_sub_pd(_mm256_maskload_pd(pos[1] + j, livev),
-                                   _mm256_set1_pd(pos[1][i]));
-  const __m256d dz = dim == 3
-                         ? _mm256_sub_pd(_mm256_maskload_pd(pos[2] + j, livev),
-                                         _mm256_set1_pd(pos[2][i]))
-                         : _mm256_setzero_pd();
+/* UPPER_CELL_WALK's lanes by AVX2 (lanes_avx512 with four) */
+static inline __attribute__((always_inline, target("avx2"))) void lanes_avx2(
+    const double *const pos[3], size_t i, __m256d X, __m256d Y, __m256d Z,
+    __m256i J, unsigned live, __m256d H2, struct vsph_pair_chunk *b, size_t *m,
+    const int dim) {
+  const __m256d dx = _mm256_sub_pd(X, _mm256_set1_pd(pos[0][i])),
+                dy = _mm256_sub_pd(Y, _mm256_set1_pd(pos[1][i]));
+  const __m256d dz = dim == 3 ? _mm256_sub_pd(Z, _mm256_set1_pd(pos[2][i]))
+                              : _mm256_setzero_pd();
   __m256d s2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
   if (dim == 3) s2 = _mm256_add_pd(s2, _mm256_mul_pd(dz, dz));
-  const unsigned k = (unsigned)_mm256_movemask_pd(
-                         _mm256_cmp_pd(s2, _mm256_set1_pd(H2v), _CMP_LT_OQ)) &
-                     (unsigned)_mm256_movemask_pd(_mm256_castsi256_pd(livev));
+  const unsigned k =
+      (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(s2, H2, _CMP_LT_OQ)) & live;
   const __m256i p = _mm256_loadu_si256((const __m256i *)(const void *)PERM[k]);
   const size_t at = *m;
   _mm256_storeu_pd(b->x[0] + at, _mm256_castps_pd(_mm256_permutevar8x32_ps(
@@ -318,31 +314,43 @@ upper_lanes_avx2(const double *const pos[3], size_t i, size_t j, size_t left,
                                        _mm256_castpd_ps(dz), p)));
   _mm256_storeu_pd(b->s2 + at, _mm256_castps_pd(_mm256_permutevar8x32_ps(
                                    _mm256_castpd_ps(s2), p)));
-  const __m256i J = _mm256_add_epi64(_mm256_set1_epi64x((long long)j), lane);
   _mm256_storeu_si256((__m256i *)(void *)(b->j + at),
                       _mm256_permutevar8x32_epi32(J, p));
   *m = at + (size_t)__builtin_popcount(k);
 }
 
-static __attribute__((always_inline, target("avx2"))) inline void lanes256_2(
-    const double *const pos[3], size_t i, size_t j, size_t left, double H2,
-    struct vsph_pair_chunk *b, size_t *m) {
-  upper_lanes_avx2(pos, i, j, left, H2, b, m, 2);
-}
-
-static __attribute__((always_inline, target("avx2"))) inline void lanes256_3(
-    const double *const pos[3], size_t i, size_t j, size_t left, double H2,
-    struct vsph_pair_chunk *b, size_t *m) {
-  upper_lanes_avx2(pos, i, j, left, H2, b, m, 3);
+static inline __attribute__((always_inline, target("avx2"))) void
+upper_cell_avx2(const struct vsph_pair_kernel *pk, const double *const pos[3],
+                const struct vsph_pair_ranges *rg, struct vsph_pair_cell *pc,
+                size_t cnt, const int dim) {
+  const __m256d H2 = _mm256_set1_pd(pk->H2);
+  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
+#define LOAD256(J0, C, N)                                                     \
+  const size_t left = (N) - (C);                                              \
+  const __m256i livev = _mm256_cmpgt_epi64(                                   \
+      _mm256_set1_epi64x((long long)(left < 4 ? left : 4)), lane);            \
+  const unsigned live =                                                       \
+      (unsigned)_mm256_movemask_pd(_mm256_castsi256_pd(livev));               \
+  const __m256d X = _mm256_maskload_pd(pos[0] + (J0) + (C), livev),           \
+                Y = _mm256_maskload_pd(pos[1] + (J0) + (C), livev),           \
+                Z = dim == 3 ? _mm256_maskload_pd(pos[2] + (J0) + (C), livev) \
+                             : _mm256_setzero_pd();                           \
+  const __m256i J =                                                           \
+      _mm256_add_epi64(_mm256_set1_epi64x((long long)((J0) + (C))), lane)
+#define LANES256(I, Q) \
+  lanes_avx2(pos, (I), X, Y, Z, J, live, H2, &pc->b[Q], &m[Q], dim)
+  UPPER_CELL_WALK(4, LOAD256, LANES256);
+#undef LANES256
+#undef LOAD256
 }
 
 __attribute__((target("avx2"))) void vsph_pair_x86_upper_cell_avx2(
     const struct vsph_pair_kernel *pk, const double *const pos[3],
     const struct vsph_pair_ranges *rg, struct vsph_pair_cell *pc, size_t cnt) {
   if (pk->dim == 3)
-    upper_cell(pk, pos, rg, pc, cnt, 4, lanes256_3);
+    upper_cell_avx2(pk, pos, rg, pc, cnt, 3);
   else
-    upper_cell(pk, pos, rg, pc, cnt, 4, lanes256_2);
+    upper_cell_avx2(pk, pos, rg, pc, cnt, 2);
 }
 
 __attribute__((target("avx2"))) size_t vsph_pair_x86_candidates_avx2(

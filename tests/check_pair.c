@@ -976,7 +976,7 @@ static void cells_agree(const struct vsph_particles *p,
     struct vsph_pair_ranges rg;
     vsph_pair_ranges_cell(&rg, cells, cell);
     const size_t s0 = cells->start[cell], cnt = cells->count[cell];
-    vsph_pair_cell_upper(&pc, &pk[0], p, &rg, s0, cnt, dim);
+    vsph_pair_cell_upper(&pc, &pk[0], s0, cnt, dim);
     for (size_t i = s0; i < s0 + cnt; i++) {
       struct vsph_pair_iter it[2];
       vsph_pair_begin_upper_in(&it[0], &pk[0], p, &rg, &pc, i);
@@ -1014,8 +1014,9 @@ static void cells_agree(const struct vsph_particles *p,
  * candidates ahead in its row, and its chunk is full at the end of its
  * second block of 64, not at the first nor after 96 (a block of 32 would
  * end it there): the joint walk's chunk ends inside the row, and the
- * walk goes on alone from there; at each level the CPU has, the same
- * chunks as the portable walk's. */
+ * walk goes on alone from there (as do the walks of the cluster's own
+ * cell, eight at a time); at each level the CPU has, the same chunks as
+ * the portable walk's. */
 START_TEST(test_joint_walk_resumes) {
   const size_t n = 145;
   struct vsph_particles *p = vsph_particles_alloc(n, 2);
@@ -1046,7 +1047,7 @@ START_TEST(test_joint_walk_resumes) {
   for (int level = 1; level <= pk.simd; level++) {
     size_t joint = 0, alone = 0, midrow = 0;
     cells_agree(p, cells, &pk, level, &joint, &alone, &midrow);
-    ck_assert_uint_eq(midrow, 3);
+    ck_assert_uint_ge(midrow, 3); /* the three, and the cluster's own */
   }
   vsph_cells_free(cells);
   vsph_particles_free(p);
