@@ -649,7 +649,7 @@ VSPH_CONSTS_SPECIALISE void grad_block(const struct vsph_pair_kernel *pk,
     struct vsph_pair_ranges rg;
     vsph_pair_ranges_cell(&rg, cells, c);
     const size_t c0 = cells->start[c], cnt = cells->count[c];
-    vsph_pair_cell_upper(&pc, pk, c0, cnt, dim);
+    vsph_pair_cell_begin(&pc, pk, c0, cnt, dim);
     for (size_t i = c0; i < c0 + cnt; i++) {
       double ui[3] = {0, 0, 0}, sums[18] = {0};
       for (int a = 0; a < dim; a++) ui[a] = vel[a][i];

@@ -472,7 +472,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
     struct vsph_pair_ranges rg;
     vsph_pair_ranges_cell(&rg, cells, c);
     const size_t s0 = cells->start[c], cnt = cells->count[c];
-    vsph_pair_cell_upper(&pc, &rc->pk, s0, cnt, dim);
+    vsph_pair_cell_begin(&pc, &rc->pk, s0, cnt, dim);
     for (size_t i = s0; i < s0 + cnt; i++) {
       const int fi = id[i] < n_fluid;
       double ui[3] = {0, 0, 0}, Ai[9] = {0};

@@ -86,18 +86,18 @@ struct vsph_pair_chunk {
 };
 
 /** At most this many receivers share one walk of their cell's rows
- *  (vsph_pair_cell_upper). */
+ *  (vsph_pair_cell_begin). */
 #define VSPH_PAIR_JOINT 8
 
 /** The upper walks (vsph_pair_begin_upper) of one cell's receivers,
  *  made together, VSPH_PAIR_JOINT at a time, where the CPU allows
- *  (vsph_pair_cell_upper): each receiver's first chunk, and where its
+ *  (vsph_pair_cell_begin): each receiver's first chunk, and where its
  *  walk goes on alone. */
 struct vsph_pair_cell {
   size_t end;                                /*!< one past the cell's last */
-  int can;                                   /*!< its walks go together */
+  int together;                              /*!< its walks go together */
   size_t s0;                                 /*!< the group's first ... */
-  size_t gn;                                 /*!< ... and its receivers */
+  size_t group;                              /*!< ... and its receivers */
   size_t m[VSPH_PAIR_JOINT];                 /*!< each receiver's neighbours
                                                   in b; SIZE_MAX: none made,
                                                   it walks alone */
@@ -183,8 +183,10 @@ VSPH_API size_t vsph_pair_x86_candidates_avx2(struct vsph_pair_iter *it,
  *  (the same operations, the same blocks, in range order); where that
  *  chunk is full before the walk ends, pc->r[q] and pc->j[q] say where the
  *  walk goes on (else pc->r[q] = SIZE_MAX). @p rg: the ranges of the
- *  receivers' cell; @p pos: the positions (components < pk->dim). Call
- *  only where vsph_pair_x86_simd() returns 2 (vsph_pair_cell_upper
+ *  receivers' cell (a cell list's: vsph_pair_cell_begin; where the
+ *  receivers are not all in one range, each is left to walk alone, m[q]
+ *  = SIZE_MAX); @p pos: the positions (components < pk->dim). Call only
+ *  where vsph_pair_x86_simd() returns 2 (vsph_pair_begin_upper_in
  *  chooses). */
 VSPH_API void vsph_pair_x86_upper_cell_avx512(const struct vsph_pair_kernel *pk,
                                               const double *const pos[3],
@@ -332,18 +334,22 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_chunk_ready(
  *  the rows together for groups of up to VSPH_PAIR_JOINT of them where
  *  the CPU has AVX-512 or AVX2 (pk->simd, in 2-D and 3-D;
  *  vsph_pair_x86_upper_cell_avx512, _avx2), and gives each the chunks its
- *  own walk would; otherwise each walks alone. */
-VSPH_CONSTS_SPECIALISE void vsph_pair_cell_upper(
+ *  own walk would; otherwise each walks alone. The ranges must be a cell
+ *  list's for this cell (vsph_pair_ranges_cell: ascending, not
+ *  overlapping, the cell's particles consecutive in one of them); a
+ *  receiver called out of turn, or not of the cell, walks alone. The
+ *  struct is about 57 KB (eight chunks): one per loop, not per cell. */
+VSPH_CONSTS_SPECIALISE void vsph_pair_cell_begin(
     struct vsph_pair_cell *pc, const struct vsph_pair_kernel *pk, size_t s0,
     size_t cnt, const int dim) {
   pc->end = s0 + cnt;
-  pc->can = VSPH_PAIR_X86 && dim >= 2 && pk->simd && cnt >= 2;
+  pc->together = VSPH_PAIR_X86 && dim >= 2 && pk->simd && cnt >= 2;
   pc->s0 = s0;
-  pc->gn = 0;
+  pc->group = 0;
 }
 
 /** @brief vsph_pair_begin_upper for receiver @p i of the cell @p pc
- *  begun (vsph_pair_cell_upper; its receivers in turn, @p rg its
+ *  begun (vsph_pair_cell_begin; its receivers in turn, @p rg its
  *  ranges): where the receivers walk together, the group's walk is made
  *  with its first receiver, and this walk gives its chunk first, then
  *  goes on alone. */
@@ -352,22 +358,22 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_begin_upper_in(
     const struct vsph_particles *p, const struct vsph_pair_ranges *rg,
     struct vsph_pair_cell *pc, size_t i) {
   vsph_pair_begin_upper(it, pk, p, rg, i);
-  if (!pc->can) return;
+  if (!pc->together || i < pc->s0 || i >= pc->end) return;
 #if VSPH_PAIR_X86
-  if (i >= pc->s0 + pc->gn) { /* the next group: made now */
+  if (i >= pc->s0 + pc->group) { /* the next group: made now */
     const size_t left = pc->end - i;
     pc->s0 = i;
-    pc->gn = left < VSPH_PAIR_JOINT ? left : VSPH_PAIR_JOINT;
-    if (pc->gn < 2) return; /* one receiver left: it walks alone */
+    pc->group = left < VSPH_PAIR_JOINT ? left : VSPH_PAIR_JOINT;
+    if (pc->group < 2) return; /* one receiver left: it walks alone */
     const double *const pos[3] = {p->pos[0], p->pos[1],
                                   pk->dim > 2 ? p->pos[2] : NULL};
     if (pk->simd == 2)
-      vsph_pair_x86_upper_cell_avx512(pk, pos, rg, pc, pc->gn);
+      vsph_pair_x86_upper_cell_avx512(pk, pos, rg, pc, pc->group);
     else
-      vsph_pair_x86_upper_cell_avx2(pk, pos, rg, pc, pc->gn);
+      vsph_pair_x86_upper_cell_avx2(pk, pos, rg, pc, pc->group);
   }
   const size_t q = i - pc->s0;
-  if (pc->gn >= 2 && pc->m[q] != SIZE_MAX) {
+  if (pc->group >= 2 && pc->m[q] != SIZE_MAX) {
     it->ready = &pc->b[q];
     it->ready_m = pc->m[q];
     it->ready_r = pc->r[q];

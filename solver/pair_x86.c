@@ -108,54 +108,57 @@ vsph_pair_x86_candidates_avx512(struct vsph_pair_iter *it,
  * a chunk holding VSPH_PAIR_CHUNK neighbours or more at the end of a
  * block is complete: that walk goes on alone from the next block (pc->r,
  * pc->j). The body of upper_cell_avx512 and _avx2, so that the two widths
- * share one walk. */
-#define UPPER_CELL_WALK(W, LOAD, LANES)                                    \
-  do {                                                                     \
-    const size_t s = pc->s0;                                               \
-    size_t own = 0;                                                        \
-    while (own < rg->n && !(rg->lo[own] <= s && s < rg->hi[own])) own++;   \
-    if (own == rg->n) { /* not a cell of these ranges: each walks alone */ \
-      for (size_t q = 0; q < cnt; q++) pc->m[q] = SIZE_MAX;                \
-      break;                                                               \
-    }                                                                      \
-    /* the counts in a local array: the chunks' stores cannot alias it */  \
-    size_t m[VSPH_PAIR_JOINT];                                             \
-    unsigned open = 0; /* the walks still in their first chunk */          \
-    for (size_t q = 0; q < cnt; q++) {                                     \
-      const size_t i = s + q, j0 = i + 1, n = rg->hi[own] - j0;            \
-      m[q] = 0;                                                            \
-      pc->r[q] = SIZE_MAX; /* the walk ends with its first chunk ... */    \
-      open |= 1u << q;                                                     \
-      for (size_t c = 0; c < n; c += (W)) {                                \
-        LOAD(j0, c, n);                                                    \
-        LANES(i, q);                                                       \
-        const size_t e = c + (W) < n ? c + (W) : n;                        \
-        if ((e % 64 == 0 || e == n) && m[q] >= VSPH_PAIR_CHUNK) {          \
-          pc->r[q] = own; /* ... or goes on alone from here */             \
-          pc->j[q] = j0 + e;                                               \
-          open &= ~(1u << q);                                              \
-          break;                                                           \
-        }                                                                  \
-      }                                                                    \
-    }                                                                      \
-    for (size_t r = own + 1; r < rg->n && open; r++) {                     \
-      const size_t j0 = rg->lo[r], n = rg->hi[r] - j0;                     \
-      for (size_t c = 0; c < n && open; c += (W)) {                        \
-        LOAD(j0, c, n);                                                    \
-        const size_t e = c + (W) < n ? c + (W) : n;                        \
-        const int ends = e % 64 == 0 || e == n; /* a block ends */         \
-        for (size_t q = 0; q < cnt; q++) {                                 \
-          if (!(open >> q & 1u)) continue;                                 \
-          LANES(s + q, q);                                                 \
-          if (ends && m[q] >= VSPH_PAIR_CHUNK) {                           \
-            pc->r[q] = r;                                                  \
-            pc->j[q] = j0 + e;                                             \
-            open &= ~(1u << q);                                            \
-          }                                                                \
-        }                                                                  \
-      }                                                                    \
-    }                                                                      \
-    for (size_t q = 0; q < cnt; q++) pc->m[q] = m[q];                      \
+ * share one walk: a macro, not a function, because its vectors are of
+ * the width's own intrinsic types and a function built for one target
+ * cannot take the other's (the one macro template of the code). */
+#define UPPER_CELL_WALK(W, LOAD, LANES)                                        \
+  do {                                                                         \
+    const size_t i0 = pc->s0;                                                  \
+    size_t row0 = 0; /* the receivers' own row */                              \
+    while (row0 < rg->n && !(rg->lo[row0] <= i0 && i0 < rg->hi[row0])) row0++; \
+    if (row0 == rg->n || i0 + cnt > rg->hi[row0]) {                            \
+      /* not all in one of these ranges: each walks alone */                   \
+      for (size_t q = 0; q < cnt; q++) pc->m[q] = SIZE_MAX;                    \
+      break;                                                                   \
+    }                                                                          \
+    /* the counts in a local array: the chunks' stores cannot alias it */      \
+    size_t m[VSPH_PAIR_JOINT];                                                 \
+    unsigned open = 0; /* the walks still in their first chunk */              \
+    for (size_t q = 0; q < cnt; q++) {                                         \
+      const size_t i = i0 + q, j0 = i + 1, n = rg->hi[row0] - j0;              \
+      m[q] = 0;                                                                \
+      pc->r[q] = SIZE_MAX; /* the walk ends with its first chunk ... */        \
+      open |= 1u << q;                                                         \
+      for (size_t c = 0; c < n; c += (W)) {                                    \
+        LOAD(j0, c, n);                                                        \
+        LANES(i, q);                                                           \
+        const size_t e = c + (W) < n ? c + (W) : n;                            \
+        if ((e % 64 == 0 || e == n) && m[q] >= VSPH_PAIR_CHUNK) {              \
+          pc->r[q] = row0; /* ... or goes on alone from here */                \
+          pc->j[q] = j0 + e;                                                   \
+          open &= ~(1u << q);                                                  \
+          break;                                                               \
+        }                                                                      \
+      }                                                                        \
+    }                                                                          \
+    for (size_t r = row0 + 1; r < rg->n && open; r++) {                        \
+      const size_t j0 = rg->lo[r], n = rg->hi[r] - j0;                         \
+      for (size_t c = 0; c < n && open; c += (W)) {                            \
+        LOAD(j0, c, n);                                                        \
+        const size_t e = c + (W) < n ? c + (W) : n;                            \
+        const int ends = e % 64 == 0 || e == n; /* a block ends */             \
+        for (size_t q = 0; q < cnt; q++) {                                     \
+          if (!(open >> q & 1u)) continue;                                     \
+          LANES(i0 + q, q);                                                    \
+          if (ends && m[q] >= VSPH_PAIR_CHUNK) {                               \
+            pc->r[q] = r;                                                      \
+            pc->j[q] = j0 + e;                                                 \
+            open &= ~(1u << q);                                                \
+          }                                                                    \
+        }                                                                      \
+      }                                                                        \
+    }                                                                          \
+    for (size_t q = 0; q < cnt; q++) pc->m[q] = m[q];                          \
   } while (0)
 
 /* UPPER_CELL_WALK's lanes by AVX-512 in @p dim (a constant where

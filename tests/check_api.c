@@ -2856,7 +2856,7 @@ static size_t public_headers(char hdr[][64], size_t max) {
  * vsph_pair_x86_simd allows them (on a CPU without AVX-512 the first
  * stops at its first instruction whatever its arguments), and the joint
  * walks vsph_pair_x86_upper_cell_avx512 and _avx2, which
- * vsph_pair_cell_upper calls on the same condition (the sweep tests of
+ * vsph_pair_cell_begin calls on the same condition (the sweep tests of
  * tests/check_pair.c compare their chunks with the portable walk's). */
 START_TEST(test_every_entry_called) {
   char HDR[64][64];

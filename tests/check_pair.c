@@ -956,7 +956,7 @@ static size_t walks_agree(const struct vsph_particles *p,
 }
 
 /* The walks of each cell's particles made together at level @p level
- * (vsph_pair_cell_upper, vsph_pair_begin_upper_in, vsph_pair_next_chunk)
+ * (vsph_pair_cell_begin, vsph_pair_begin_upper_in, vsph_pair_next_chunk)
  * against each particle's own upper walk by the portable loop: chunk by
  * chunk the same fields, to the bit. Counts the walks that took the
  * joint walk's chunk (*joint), those that went on alone after it, their
@@ -976,7 +976,7 @@ static void cells_agree(const struct vsph_particles *p,
     struct vsph_pair_ranges rg;
     vsph_pair_ranges_cell(&rg, cells, cell);
     const size_t s0 = cells->start[cell], cnt = cells->count[cell];
-    vsph_pair_cell_upper(&pc, &pk[0], s0, cnt, dim);
+    vsph_pair_cell_begin(&pc, &pk[0], s0, cnt, dim);
     for (size_t i = s0; i < s0 + cnt; i++) {
       struct vsph_pair_iter it[2];
       vsph_pair_begin_upper_in(&it[0], &pk[0], p, &rg, &pc, i);
@@ -1007,29 +1007,39 @@ static void cells_agree(const struct vsph_particles *p,
   }
 }
 
-/* A walk whose first chunk fills inside its own row (cells_agree): in
- * 2-D, three particles in one cell (edge 0.5) and, in the next cell of
- * the row, 10 particles beyond their support (3h = 0.6), then 130 in a
- * 1/8-cell box within it: each of the three has more than 128
- * candidates ahead in its row, and its chunk is full at the end of its
- * second block of 64, not at the first nor after 96 (a block of 32 would
- * end it there): the joint walk's chunk ends inside the row, and the
- * walk goes on alone from there (as do the walks of the cluster's own
- * cell, eight at a time); at each level the CPU has, the same chunks as
- * the portable walk's. */
+/* A walk whose first chunk fills before it ends (cells_agree): in 2-D,
+ * three particles in one cell (edge 0.5) and, in the next cell of the
+ * row, 10 particles beyond their support (3h = 0.6), then a cluster in a
+ * 1/8-cell box within it. Case 0, 130 in the cluster: each of the three
+ * has more than 128 candidates ahead in its row, and its chunk is full
+ * at the end of its second block of 64, not at the first nor after 96 (a
+ * block of 32 would end it there): the joint walk's chunk ends inside
+ * the row. Case 1, 65 in the cluster and 5 neighbours in the row above:
+ * the chunk (65-67 neighbours) is full only at its row's end, inside its
+ * second block, and the walk goes on alone into the next row (a walk
+ * that checked only whole blocks would run on into it: 70-72). Either
+ * way the walk goes on alone from there (as do the walks of the
+ * cluster's own cell, eight at a time); at each level the CPU has, the
+ * same chunks as the portable walk's. */
 START_TEST(test_joint_walk_resumes) {
-  const size_t n = 145;
+  const size_t nc = _i ? 65 : 130, na = _i ? 5 : 0, n = 13 + nc + na + 2;
   struct vsph_particles *p = vsph_particles_alloc(n, 2);
   ck_assert_ptr_nonnull(p);
   p->n = n;
   for (size_t i = 0; i < n; i++) {
-    const size_t c = i - 13; /* the cluster's */
-    p->pos[0][i] = i < 3    ? 0.1 + 0.1 * (double)i
-                   : i < 13 ? 0.95
-                            : 0.55 + 0.005 * (double)(c % 10);
-    p->pos[1][i] = i < 3    ? 0.25
-                   : i < 13 ? 0.05 + 0.04 * (double)(i - 3)
-                            : 0.225 + 0.005 * (double)(c / 10);
+    if (i < 3) { /* the three */
+      p->pos[0][i] = 0.1 + 0.1 * (double)i;
+      p->pos[1][i] = 0.25;
+    } else if (i < 13) { /* beyond their support */
+      p->pos[0][i] = 0.95;
+      p->pos[1][i] = 0.05 + 0.04 * (double)(i - 3);
+    } else if (i < 13 + nc) { /* the cluster */
+      p->pos[0][i] = 0.55 + 0.005 * (double)((i - 13) % 10);
+      p->pos[1][i] = 0.225 + 0.005 * (double)((i - 13) / 10);
+    } else { /* the row above */
+      p->pos[0][i] = 0.2 + 0.02 * (double)(i - 13 - nc);
+      p->pos[1][i] = 0.6;
+    }
     p->id[i] = i;
     p->rho[i] = RHO0;
     p->vol[i] = 1e-3;
@@ -1047,9 +1057,56 @@ START_TEST(test_joint_walk_resumes) {
   for (int level = 1; level <= pk.simd; level++) {
     size_t joint = 0, alone = 0, midrow = 0;
     cells_agree(p, cells, &pk, level, &joint, &alone, &midrow);
-    ck_assert_uint_ge(midrow, 3); /* the three, and the cluster's own */
+    if (_i) /* the three go on at their row's end */
+      ck_assert_uint_ge(alone - midrow, 3);
+    else
+      ck_assert_uint_ge(midrow, 3); /* the three, and the cluster's own */
   }
   vsph_cells_free(cells);
+  vsph_particles_free(p);
+}
+END_TEST
+
+/* The joint walk's guards, receivers 8-11 of a random 2-D set: where
+ * their "cell" spans two touching ranges (0-10, 10-40) they walk alone,
+ * and so does a receiver begun out of turn (8 and 9 after 10 and 11 made
+ * their group, the ranges one, 0-40): at each level the CPU has, each
+ * gets the portable walk's chunks. */
+START_TEST(test_joint_walk_guards) {
+  struct vsph_particles *p = random_set(2, 5);
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, &vsph_gaussian_type, 2, HDX * DX * 3.0);
+  const struct vsph_pair_ranges two = {.n = 2, .lo = {0, 10}, .hi = {10, 40}},
+                                one = {.n = 1, .lo = {0}, .hi = {40}};
+  static struct vsph_pair_cell pc;
+  static struct vsph_pair_chunk own, b1;
+  const size_t order[2][4] = {{8, 9, 10, 11}, {10, 8, 9, 11}};
+  for (int level = 1; level <= pk.simd; level++)
+    for (int c = 0; c < 2; c++) {
+      const struct vsph_pair_ranges *rg = c ? &one : &two;
+      struct vsph_pair_kernel pl = pk, p0 = pk;
+      pl.simd = level;
+      p0.simd = 0;
+      vsph_pair_cell_begin(&pc, &pl, 8, 4, 2);
+      size_t pairs = 0;
+      for (int t = 0; t < 4; t++) {
+        struct vsph_pair_iter it, i1;
+        vsph_pair_begin_upper_in(&it, &pl, p, rg, &pc, order[c][t]);
+        vsph_pair_begin_upper(&i1, &p0, p, rg, order[c][t]);
+        for (;;) {
+          const struct vsph_pair_chunk *b0;
+          const size_t m0 = vsph_pair_next_chunk(&it, 2, pk.dfq_id, 1, &own,
+                                                 &b0),
+                       m1 = vsph_pair_gather_as(&i1, 2, pk.dfq_id, 1, &b1);
+          ck_assert_uint_eq(m0, m1);
+          if (!m0) break;
+          pairs += m0;
+          ck_assert(!memcmp(b0->j, b1.j, m0 * sizeof b1.j[0]));
+          ck_assert(!memcmp(b0->s2, b1.s2, m0 * sizeof(double)));
+        }
+      }
+      ck_assert_uint_gt(pairs, 40); /* a support of many neighbours */
+    }
   vsph_particles_free(p);
 }
 END_TEST
@@ -1743,7 +1800,8 @@ Suite *vsph_equations_suite(void) {
   size_t nwc = 0;
   while (vsph_scene_get(nwc) && vsph_scene_get(nwc) != &vsph_shear_type) nwc++;
   tcase_add_loop_test(tc, test_candidates_simd, 0, 4);
-  tcase_add_test(tc, test_joint_walk_resumes);
+  tcase_add_loop_test(tc, test_joint_walk_resumes, 0, 2);
+  tcase_add_test(tc, test_joint_walk_guards);
   tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 8);
   tcase_add_test(tc, test_sweep_lanes_by_hand);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
