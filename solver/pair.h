@@ -363,7 +363,10 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_begin_upper_in(
   if (i >= pc->s0 + pc->group) { /* the next group: made now */
     const size_t left = pc->end - i;
     pc->s0 = i;
-    pc->group = left < VSPH_PAIR_JOINT ? left : VSPH_PAIR_JOINT;
+    /* the fewest groups, of sizes as even as can be (nine: five, four;
+     * never eight and a last one walking alone) */
+    const size_t ng = (left + VSPH_PAIR_JOINT - 1) / VSPH_PAIR_JOINT;
+    pc->group = (left + ng - 1) / ng;
     if (pc->group < 2) return; /* one receiver left: it walks alone */
     const double *const pos[3] = {p->pos[0], p->pos[1],
                                   pk->dim > 2 ? p->pos[2] : NULL};
