@@ -293,16 +293,17 @@ static int signs_claim(struct vsph_report *R, struct vsph_claim_vals *v) {
   int st = vsph_scaling_props_init(&sp, NULL);
   if (!st) st = vsph_fields_props_init(&sp.field, VSPH_FIELDS_STRAIN, 2);
   if (st) return st;
-  const size_t nacross = 80;
-  double y[80], *f[VSPH_VISCOUS_FORM_COUNT] = {NULL};
-  double buf[VSPH_VISCOUS_FORM_COUNT][80];
+  enum { NACROSS = 80 }; /* rows across the square, and the arrays' size */
+  const size_t nacross = NACROSS;
+  double y[NACROSS], *f[VSPH_VISCOUS_FORM_COUNT] = {NULL};
+  double buf[VSPH_VISCOUS_FORM_COUNT][NACROSS];
   for (int k = 0; k < VSPH_VISCOUS_FORM_COUNT; k++) f[k] = buf[k];
   size_t n = 0;
   if ((st = vsph_scaling_axis(&sp, nacross, y, f, &n))) return st;
   const double dx = 1.0 / (double)nacross, h = sp.hdx * dx;
   vsph_claim_clear(v);
   vsph_claim_num(v, "n", (double)nacross);
-  int use[80]; /* the rows within kappa h of the top */
+  int use[NACROSS]; /* the rows within kappa h of the top */
   for (size_t k = 0; k < n; k++) use[k] = !(0.5 - y[k] > 3.0 * h);
   for (int fm = 0; fm < NFORM; fm++) {
     /* a value at rounding level of the surface row's has no sign: the
