@@ -41,6 +41,24 @@ int vsph_pair_x86_simd(void) {
   return 0;
 }
 
+/* Append the neighbours (lanes set in @p k) of one vector of candidates,
+ * their x, s^2 and index, to chunk @p b at m by the lanes' compress: whole
+ * vectors, the lanes past the neighbours written over by the next
+ * (candidates_avx512 and the joint walk's lanes_avx512). Returns the new
+ * count. */
+static inline
+    __attribute__((always_inline, target("avx512f,avx512vl,avx512dq"))) size_t
+    append_avx512(struct vsph_pair_chunk *b, size_t m, __mmask8 k, __m512d dx,
+                  __m512d dy, __m512d dz, __m512d s2, __m512i j,
+                  const int dim) {
+  _mm512_storeu_pd(b->x[0] + m, _mm512_maskz_compress_pd(k, dx));
+  _mm512_storeu_pd(b->x[1] + m, _mm512_maskz_compress_pd(k, dy));
+  if (dim == 3) _mm512_storeu_pd(b->x[2] + m, _mm512_maskz_compress_pd(k, dz));
+  _mm512_storeu_pd(b->s2 + m, _mm512_maskz_compress_pd(k, s2));
+  _mm512_storeu_si512((void *)(b->j + m), _mm512_maskz_compress_epi64(k, j));
+  return m + (size_t)__builtin_popcount((unsigned)k);
+}
+
 /* dim 2 or 3, a constant where inlined */
 static inline
     __attribute__((always_inline, target("avx512f,avx512vl,avx512dq"))) size_t
@@ -73,18 +91,10 @@ static inline
       __mmask8 k = _mm512_mask_cmp_pd_mask(live, s2, H2, _CMP_LT_OQ);
       if (i - (j0 + c) < 8) k &= (__mmask8) ~(1u << (i - (j0 + c)));
       if (!k) continue;
-      /* whole vectors stored at m: the lanes past the neighbours are
-       * written over by the next, and m + 8 stays within the chunk */
-      _mm512_storeu_pd(b->x[0] + m, _mm512_maskz_compress_pd(k, dx));
-      _mm512_storeu_pd(b->x[1] + m, _mm512_maskz_compress_pd(k, dy));
-      if (dim == 3)
-        _mm512_storeu_pd(b->x[2] + m, _mm512_maskz_compress_pd(k, dz));
-      _mm512_storeu_pd(b->s2 + m, _mm512_maskz_compress_pd(k, s2));
+      /* m + 8 stays within the chunk */
       const __m512i j =
           _mm512_add_epi64(_mm512_set1_epi64((long long)(j0 + c)), lane);
-      _mm512_storeu_si512((void *)(b->j + m),
-                          _mm512_maskz_compress_epi64(k, j));
-      m += (size_t)__builtin_popcount((unsigned)k);
+      m = append_avx512(b, m, k, dx, dy, dz, s2, j, dim);
     }
   }
   return m;
@@ -178,13 +188,7 @@ static inline
   __m512d s2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
   if (dim == 3) s2 = _mm512_add_pd(s2, _mm512_mul_pd(dz, dz));
   const __mmask8 k = _mm512_mask_cmp_pd_mask(live, s2, H2, _CMP_LT_OQ);
-  const size_t at = *m;
-  _mm512_storeu_pd(b->x[0] + at, _mm512_maskz_compress_pd(k, dx));
-  _mm512_storeu_pd(b->x[1] + at, _mm512_maskz_compress_pd(k, dy));
-  if (dim == 3) _mm512_storeu_pd(b->x[2] + at, _mm512_maskz_compress_pd(k, dz));
-  _mm512_storeu_pd(b->s2 + at, _mm512_maskz_compress_pd(k, s2));
-  _mm512_storeu_si512((void *)(b->j + at), _mm512_maskz_compress_epi64(k, J));
-  *m = at + (size_t)__builtin_popcount((unsigned)k);
+  *m = append_avx512(b, *m, k, dx, dy, dz, s2, J, dim);
 }
 
 static inline
@@ -239,6 +243,27 @@ static const int32_t PERM[16][8] = {
     {4, 5, 6, 7, 4, 5, 6, 7}, {0, 1, 4, 5, 6, 7, 6, 7},
     {2, 3, 4, 5, 6, 7, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7}};
 
+/* append_avx512 with AVX2: the neighbours' lanes (bits set in @p k) moved
+ * to the front by the permutation PERM[k] (candidates_avx2 and the joint
+ * walk's lanes_avx2) */
+static inline __attribute__((always_inline, target("avx2"))) size_t append_avx2(
+    struct vsph_pair_chunk *b, size_t m, unsigned k, __m256d dx, __m256d dy,
+    __m256d dz, __m256d s2, __m256i j, const int dim) {
+  const __m256i p = _mm256_loadu_si256((const __m256i *)(const void *)PERM[k]);
+  _mm256_storeu_pd(b->x[0] + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
+                                    _mm256_castpd_ps(dx), p)));
+  _mm256_storeu_pd(b->x[1] + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
+                                    _mm256_castpd_ps(dy), p)));
+  if (dim == 3)
+    _mm256_storeu_pd(b->x[2] + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
+                                      _mm256_castpd_ps(dz), p)));
+  _mm256_storeu_pd(b->s2 + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
+                                  _mm256_castpd_ps(s2), p)));
+  _mm256_storeu_si256((__m256i *)(void *)(b->j + m),
+                      _mm256_permutevar8x32_epi32(j, p));
+  return m + (size_t)__builtin_popcount(k);
+}
+
 static inline __attribute__((always_inline, target("avx2"))) size_t
 candidates_avx2(struct vsph_pair_iter *it, struct vsph_pair_chunk *b,
                 const int dim) {
@@ -272,22 +297,9 @@ candidates_avx2(struct vsph_pair_iter *it, struct vsph_pair_chunk *b,
           (unsigned)_mm256_movemask_pd(_mm256_castsi256_pd(live));
       if (i - (j0 + c) < 4) k &= ~(1u << (i - (j0 + c)));
       if (!k) continue;
-      const __m256i p =
-          _mm256_loadu_si256((const __m256i *)(const void *)PERM[k]);
-      _mm256_storeu_pd(b->x[0] + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
-                                        _mm256_castpd_ps(dx), p)));
-      _mm256_storeu_pd(b->x[1] + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
-                                        _mm256_castpd_ps(dy), p)));
-      if (dim == 3)
-        _mm256_storeu_pd(b->x[2] + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
-                                          _mm256_castpd_ps(dz), p)));
-      _mm256_storeu_pd(b->s2 + m, _mm256_castps_pd(_mm256_permutevar8x32_ps(
-                                      _mm256_castpd_ps(s2), p)));
       const __m256i j =
           _mm256_add_epi64(_mm256_set1_epi64x((long long)(j0 + c)), lane);
-      _mm256_storeu_si256((__m256i *)(void *)(b->j + m),
-                          _mm256_permutevar8x32_epi32(j, p));
-      m += (size_t)__builtin_popcount(k);
+      m = append_avx2(b, m, k, dx, dy, dz, s2, j, dim);
     }
   }
   return m;
@@ -306,20 +318,7 @@ static inline __attribute__((always_inline, target("avx2"))) void lanes_avx2(
   if (dim == 3) s2 = _mm256_add_pd(s2, _mm256_mul_pd(dz, dz));
   const unsigned k =
       (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(s2, H2, _CMP_LT_OQ)) & live;
-  const __m256i p = _mm256_loadu_si256((const __m256i *)(const void *)PERM[k]);
-  const size_t at = *m;
-  _mm256_storeu_pd(b->x[0] + at, _mm256_castps_pd(_mm256_permutevar8x32_ps(
-                                     _mm256_castpd_ps(dx), p)));
-  _mm256_storeu_pd(b->x[1] + at, _mm256_castps_pd(_mm256_permutevar8x32_ps(
-                                     _mm256_castpd_ps(dy), p)));
-  if (dim == 3)
-    _mm256_storeu_pd(b->x[2] + at, _mm256_castps_pd(_mm256_permutevar8x32_ps(
-                                       _mm256_castpd_ps(dz), p)));
-  _mm256_storeu_pd(b->s2 + at, _mm256_castps_pd(_mm256_permutevar8x32_ps(
-                                   _mm256_castpd_ps(s2), p)));
-  _mm256_storeu_si256((__m256i *)(void *)(b->j + at),
-                      _mm256_permutevar8x32_epi32(J, p));
-  *m = at + (size_t)__builtin_popcount(k);
+  *m = append_avx2(b, *m, k, dx, dy, dz, s2, J, dim);
 }
 
 static inline __attribute__((always_inline, target("avx2"))) void
