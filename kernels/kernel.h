@@ -96,36 +96,39 @@ static inline double vsph_kernel_d2w(const struct vsph_kernel_type *k, int dim,
  *  vectorise it): e^{-x} = 2^{-n} e^{-r} with n = round(x / ln 2) found
  *  by the 1.5 2^52 rounding trick, r = x - n ln 2 in Cody-Waite's two parts
  *  (|r| <= ln 2 / 2), e^{-r} by its Taylor polynomial to degree 12
- *  (remainder (ln 2/2)^13/13! = 1.7e-16), and 2^{-n} built from its
- *  exponent bits. Relative error at most 1e-15 against libm's exp on
- *  [0, 700] (tests/check_kernel.c, test_expneg_within_1e15_of_exp;
- *  measured 3e-16 with FMA, 5e-16 without). libm's exp is not used here:
- *  it is a call the loops cannot vectorise, and it sets errno. */
+ *  (remainder (ln 2/2)^13/13! = 1.7e-16) evaluated by Estrin's scheme,
+ *  and 2^{-n} built from its exponent bits. Relative error at most 1e-15
+ *  against libm's exp on [0, 700] (tests/check_kernel.c,
+ *  test_expneg_within_1e15_of_exp; measured 5.5e-16 with FMA or without).
+ * libm's exp is not used here: it is a call the loops cannot vectorise, and it
+ * sets errno. */
 static inline double vsph_kernel_expneg(double x) {
   const double shift = 6755399441055744.0; /* 1.5 2^52 */
   const double m = x * 1.4426950408889634074 + shift;
   const double n = m - shift; /* round(x / ln 2) */
   const double r =
       (x - n * 6.93147180369123816490e-01) - n * 1.90821492927058770002e-10;
-  /* e^{-r}, Horner, coefficients (-1)^k / k!, written out (a loop here
-   * would have to be unrolled before the loops around it vectorise):
-   * fused multiply-adds where the target has them (one rounding each),
-   * else multiply and add */
-#define VSPH_KERNEL_H(p, c) VSPH_KERNEL_MULADD(p, r, c)
-  double p = 1.0 / 479001600.0;
-  p = VSPH_KERNEL_H(p, -1.0 / 39916800.0);
-  p = VSPH_KERNEL_H(p, 1.0 / 3628800.0);
-  p = VSPH_KERNEL_H(p, -1.0 / 362880.0);
-  p = VSPH_KERNEL_H(p, 1.0 / 40320.0);
-  p = VSPH_KERNEL_H(p, -1.0 / 5040.0);
-  p = VSPH_KERNEL_H(p, 1.0 / 720.0);
-  p = VSPH_KERNEL_H(p, -1.0 / 120.0);
-  p = VSPH_KERNEL_H(p, 1.0 / 24.0);
-  p = VSPH_KERNEL_H(p, -1.0 / 6.0);
-  p = VSPH_KERNEL_H(p, 0.5);
-  p = VSPH_KERNEL_H(p, -1.0);
-  p = VSPH_KERNEL_H(p, 1.0);
-#undef VSPH_KERNEL_H
+  /* e^{-r}, coefficients (-1)^k / k!, by Estrin's scheme: pairs
+   * c_2k + c_2k+1 r, joined by r^2, then r^4, then r^8, so the longest
+   * chain is four multiply-adds deep, not Horner's twelve, and a vector
+   * of pairs does not wait on one long chain (docs/performance.md);
+   * written out (a loop here would have to be unrolled before the loops
+   * around it vectorise); fused multiply-adds where the target has them
+   * (one rounding each), else multiply and add */
+#define VSPH_KERNEL_P(hi, x, lo) VSPH_KERNEL_MULADD(hi, x, lo)
+  const double r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
+  const double a0 = VSPH_KERNEL_P(-1.0, r, 1.0),
+               a1 = VSPH_KERNEL_P(-1.0 / 6.0, r, 1.0 / 2.0),
+               a2 = VSPH_KERNEL_P(-1.0 / 120.0, r, 1.0 / 24.0),
+               a3 = VSPH_KERNEL_P(-1.0 / 5040.0, r, 1.0 / 720.0),
+               a4 = VSPH_KERNEL_P(-1.0 / 362880.0, r, 1.0 / 40320.0),
+               a5 = VSPH_KERNEL_P(-1.0 / 39916800.0, r, 1.0 / 3628800.0);
+  const double b0 = VSPH_KERNEL_P(a1, r2, a0), b1 = VSPH_KERNEL_P(a3, r2, a2),
+               b2 = VSPH_KERNEL_P(a5, r2, a4);
+  const double c0 = VSPH_KERNEL_P(b1, r4, b0),
+               c1 = VSPH_KERNEL_P(1.0 / 479001600.0, r4, b2);
+  const double p = VSPH_KERNEL_P(c1, r8, c0);
+#undef VSPH_KERNEL_P
   /* 2^{-n}: the low bits of m hold n, so its exponent is 1023 - n */
   unsigned long long bits;
   memcpy(&bits, &m, sizeof bits);
