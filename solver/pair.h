@@ -472,6 +472,10 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_next_chunk(
   struct vsph_pair_chunk *const b = it->ready;
   if (!b) {
     *bp = own;
+    if (it->r >= it->rg->n) { /* over (a cell's walk ends after its chunk) */
+      own->m = 0;
+      return 0;
+    }
     return vsph_pair_gather_as(it, dim, kid, unit, own);
   }
   it->ready = NULL;
