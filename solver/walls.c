@@ -412,23 +412,23 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
   if (!w || !p || !gh)
     VSPH_FAIL(VSPH_EINVAL, "vsph_walls_generate: a NULL argument");
   /* Compact: keep the fluid (and the fixed wall particles) in their
-   * current order. */
+   * current order, every field the set has with them (as
+   * vsph_particles_permute moves them: the transport velocity set before
+   * a step's cell list is read after it) */
   const size_t base = n_fluid + gh->keep;
   size_t n = 0;
   for (size_t i = 0; i < p->n; i++) {
     if (p->id[i] >= base) continue;
     if (n != i) {
       for (int k = 0; k < p->dim; k++) {
-        p->pos[k][n] = p->pos[k][i];
-        p->vel[k][n] = p->vel[k][i];
-        p->acc[k][n] = p->acc[k][i];
+        double *const v[5] = {p->pos[k], p->vel[k], p->acc[k], p->tvel[k],
+                              p->bacc[k]};
+        for (int f = 0; f < 5; f++)
+          if (v[f]) v[f][n] = v[f][i];
       }
-      p->m[n] = p->m[i];
-      p->rho[n] = p->rho[i];
-      p->vol[n] = p->vol[i];
-      p->p[n] = p->p[i];
-      p->drho[n] = p->drho[i];
-      if (p->e) p->e[n] = p->e[i];
+      double *const sc[7] = {p->m, p->rho, p->vol, p->p, p->drho, p->e, p->de};
+      for (int f = 0; f < 7; f++)
+        if (sc[f]) sc[f][n] = sc[f][i];
       if (p->mat) p->mat[n] = p->mat[i];
       p->id[n] = p->id[i];
     }

@@ -160,7 +160,8 @@ VSPH_API size_t vsph_walls_count(const struct vsph_walls *w,
                                  double reach);
 
 /** @brief Drop the ghosts (ids >= n_fluid) and append fresh images of
- *  every fluid particle within @p reach of a plane.
+ *  every fluid particle within @p reach of a plane. The particles kept
+ *  close up in their order, each with every field the set has.
  *  @return VSPH_OK or VSPH_ENOMEM (particle or ghost capacity exceeded). */
 VSPH_API int vsph_walls_generate(const struct vsph_walls *w,
                                  struct vsph_particles *p, size_t n_fluid,

@@ -750,6 +750,55 @@ START_TEST(test_linear_extrapolation_seam) {
 }
 END_TEST
 
+/* vsph_walls_generate drops the old ghosts and closes the gaps they leave
+ * (the cell list's sort interleaves them with the fluid): every field a
+ * particle carries moves with it, the transport velocity, its
+ * acceleration and the energy and its rate included (a transport
+ * velocity left behind would be another particle's in the next
+ * evaluation). */
+START_TEST(test_generate_moves_every_field) {
+  struct vsph_walls w = linear_wall(0.3, 0.3);
+  struct vsph_particles *p = vsph_particles_alloc(400, 2);
+  for (int i = 0; i < 40; i++)
+    put_fluid(p, (i % 10 + 0.5) / 10, (i / 10 + 0.5) / 10, 1.0);
+  ck_assert_int_eq(vsph_particles_tvf_alloc(p), 0);
+  ck_assert_int_eq(vsph_particles_energy_alloc(p), 0);
+  const size_t nf = p->n;
+  struct vsph_walls_ghosts *gh = vsph_walls_ghosts_alloc(&w, 300);
+  ck_assert_int_eq(vsph_walls_generate(&w, p, nf, 0.25, gh), 0);
+  const size_t ng = p->n - nf;
+  ck_assert_uint_ge(ng, 20); /* two rows within reach 0.25 */
+  /* the set reversed, as a sort might leave it: the ghosts first */
+  static size_t perm[400], is[400];
+  static double ds[400];
+  for (size_t i = 0; i < p->n; i++) perm[i] = p->n - 1 - i;
+  vsph_particles_permute(p, perm, ds, is);
+  for (size_t i = 0; i < p->n; i++) { /* each field its particle's id */
+    const double t = (double)p->id[i];
+    for (int k = 0; k < 2; k++) {
+      p->tvel[k][i] = t + 0.25 * k;
+      p->bacc[k][i] = -t - 0.5 * k;
+    }
+    p->e[i] = 3.0 * t;
+    p->de[i] = 5.0 * t;
+  }
+  ck_assert_int_eq(vsph_walls_generate(&w, p, nf, 0.25, gh), 0);
+  ck_assert_uint_eq(p->n, nf + ng); /* the same ghosts again */
+  for (size_t i = 0; i < nf; i++) { /* the fluid first, reversed */
+    ck_assert_uint_eq(p->id[i], nf - 1 - i);
+    const double t = (double)p->id[i];
+    for (int k = 0; k < 2; k++) {
+      ck_assert_double_eq(p->tvel[k][i], t + 0.25 * k);
+      ck_assert_double_eq(p->bacc[k][i], -t - 0.5 * k);
+    }
+    ck_assert_double_eq(p->e[i], 3.0 * t);
+    ck_assert_double_eq(p->de[i], 5.0 * t);
+  }
+  vsph_walls_ghosts_free(gh);
+  vsph_particles_free(p);
+}
+END_TEST
+
 Suite *vsph_channel_suite(void) {
   Suite *s = suite_create("channel");
   TCase *tc = tcase_create("internal");
@@ -766,7 +815,8 @@ Suite *vsph_channel_suite(void) {
 }
 
 /* solver/walls.c: the ghost walls' velocity (linear extrapolation, its
- * bins and seam, mirroring at start-up), fixed walls and periodic rest. */
+ * bins and seam, mirroring at start-up), the fields a regeneration keeps,
+ * fixed walls and periodic rest. */
 Suite *vsph_walls_suite(void) {
   Suite *s = suite_create("walls");
   TCase *tc = tcase_create("ghosts");
@@ -774,6 +824,7 @@ Suite *vsph_walls_suite(void) {
   tcase_add_test(tc, test_linear_extrapolation);
   tcase_add_loop_test(tc, test_linear_extrapolation_binned, 0, 2);
   tcase_add_test(tc, test_linear_extrapolation_seam);
+  tcase_add_test(tc, test_generate_moves_every_field);
   tcase_add_test(tc, test_periodic_rest_threads);
   tcase_add_test(tc, test_fixed_walls);
   tcase_add_loop_test(tc, test_startup_walls, 0, 3);
