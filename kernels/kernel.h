@@ -115,20 +115,19 @@ static inline double vsph_kernel_expneg(double x) {
    * written out (a loop here would have to be unrolled before the loops
    * around it vectorise); fused multiply-adds where the target has them
    * (one rounding each), else multiply and add */
-#define VSPH_KERNEL_P(hi, x, lo) VSPH_KERNEL_MULADD(hi, x, lo)
   const double r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
-  const double a0 = VSPH_KERNEL_P(-1.0, r, 1.0),
-               a1 = VSPH_KERNEL_P(-1.0 / 6.0, r, 1.0 / 2.0),
-               a2 = VSPH_KERNEL_P(-1.0 / 120.0, r, 1.0 / 24.0),
-               a3 = VSPH_KERNEL_P(-1.0 / 5040.0, r, 1.0 / 720.0),
-               a4 = VSPH_KERNEL_P(-1.0 / 362880.0, r, 1.0 / 40320.0),
-               a5 = VSPH_KERNEL_P(-1.0 / 39916800.0, r, 1.0 / 3628800.0);
-  const double b0 = VSPH_KERNEL_P(a1, r2, a0), b1 = VSPH_KERNEL_P(a3, r2, a2),
-               b2 = VSPH_KERNEL_P(a5, r2, a4);
-  const double c0 = VSPH_KERNEL_P(b1, r4, b0),
-               c1 = VSPH_KERNEL_P(1.0 / 479001600.0, r4, b2);
-  const double p = VSPH_KERNEL_P(c1, r8, c0);
-#undef VSPH_KERNEL_P
+  const double a0 = VSPH_KERNEL_MULADD(-1.0, r, 1.0),
+               a1 = VSPH_KERNEL_MULADD(-1.0 / 6.0, r, 1.0 / 2.0),
+               a2 = VSPH_KERNEL_MULADD(-1.0 / 120.0, r, 1.0 / 24.0),
+               a3 = VSPH_KERNEL_MULADD(-1.0 / 5040.0, r, 1.0 / 720.0),
+               a4 = VSPH_KERNEL_MULADD(-1.0 / 362880.0, r, 1.0 / 40320.0),
+               a5 = VSPH_KERNEL_MULADD(-1.0 / 39916800.0, r, 1.0 / 3628800.0);
+  const double b0 = VSPH_KERNEL_MULADD(a1, r2, a0),
+               b1 = VSPH_KERNEL_MULADD(a3, r2, a2),
+               b2 = VSPH_KERNEL_MULADD(a5, r2, a4);
+  const double c0 = VSPH_KERNEL_MULADD(b1, r4, b0),
+               c1 = VSPH_KERNEL_MULADD(1.0 / 479001600.0, r4, b2);
+  const double p = VSPH_KERNEL_MULADD(c1, r8, c0);
   /* 2^{-n}: the low bits of m hold n, so its exponent is 1023 - n */
   unsigned long long bits;
   memcpy(&bits, &m, sizeof bits);

@@ -413,6 +413,10 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather_as(struct vsph_pair_iter *it,
   double q2[VSPH_PAIR_CHUNK_MAX];
 #if VSPH_PAIR_X86
   if (dim >= 2 && it->pk->simd) {
+    if (it->r >= it->rg->n) { /* the walk is over: no call to learn it */
+      b->m = 0;
+      return 0;
+    }
     const size_t m = it->pk->simd == 2 ? vsph_pair_x86_candidates_avx512(it, b)
                                        : vsph_pair_x86_candidates_avx2(it, b);
     return vsph_pair_chunk_ready(it, b, m, kid, unit);
@@ -472,10 +476,6 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_next_chunk(
   struct vsph_pair_chunk *const b = it->ready;
   if (!b) {
     *bp = own;
-    if (it->r >= it->rg->n) { /* over (a cell's walk ends after its chunk) */
-      own->m = 0;
-      return 0;
-    }
     return vsph_pair_gather_as(it, dim, kid, unit, own);
   }
   it->ready = NULL;

@@ -59,6 +59,25 @@ static inline
   return m + (size_t)__builtin_popcount((unsigned)k);
 }
 
+/* The test of one vector of candidates X, Y, Z (live lanes @p live)
+ * against receiver (xi, yi, zi), broadcast: their x = r_j - r_i in *dx,
+ * *dy, *dz and s^2 in *s2, and which live lanes lie within H2 (the
+ * candidate test's and the joint walk's one test: the same operations,
+ * so the same bits). @p dim 2 or 3, a constant where inlined. */
+static inline
+    __attribute__((always_inline, target("avx512f,avx512vl,avx512dq"))) __mmask8
+    near_avx512(__m512d X, __m512d Y, __m512d Z, __m512d xi, __m512d yi,
+                __m512d zi, __mmask8 live, __m512d H2, const int dim,
+                __m512d *dx, __m512d *dy, __m512d *dz, __m512d *s2) {
+  *dx = _mm512_sub_pd(X, xi);
+  *dy = _mm512_sub_pd(Y, yi);
+  *dz = dim == 3 ? _mm512_sub_pd(Z, zi) : _mm512_setzero_pd();
+  __m512d q = _mm512_add_pd(_mm512_mul_pd(*dx, *dx), _mm512_mul_pd(*dy, *dy));
+  if (dim == 3) q = _mm512_add_pd(q, _mm512_mul_pd(*dz, *dz));
+  *s2 = q;
+  return _mm512_mask_cmp_pd_mask(live, q, H2, _CMP_LT_OQ);
+}
+
 /* dim 2 or 3, a constant where inlined */
 static inline
     __attribute__((always_inline, target("avx512f,avx512vl,avx512dq"))) size_t
@@ -79,16 +98,13 @@ static inline
     for (size_t c = 0; c < n; c += 8) {
       const __mmask8 live =
           n - c >= 8 ? (__mmask8)0xff : (__mmask8)((1u << (n - c)) - 1u);
-      const __m512d dx = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, px + j0 + c),
-                                       xi),
-                    dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, py + j0 + c),
-                                       yi);
-      const __m512d dz =
-          dim == 3 ? _mm512_sub_pd(_mm512_maskz_loadu_pd(live, pz + j0 + c), zi)
-                   : _mm512_setzero_pd();
-      __m512d s2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
-      if (dim == 3) s2 = _mm512_add_pd(s2, _mm512_mul_pd(dz, dz));
-      __mmask8 k = _mm512_mask_cmp_pd_mask(live, s2, H2, _CMP_LT_OQ);
+      __m512d dx, dy, dz, s2;
+      __mmask8 k =
+          near_avx512(_mm512_maskz_loadu_pd(live, px + j0 + c),
+                      _mm512_maskz_loadu_pd(live, py + j0 + c),
+                      dim == 3 ? _mm512_maskz_loadu_pd(live, pz + j0 + c)
+                               : _mm512_setzero_pd(),
+                      xi, yi, zi, live, H2, dim, &dx, &dy, &dz, &s2);
       if (i - (j0 + c) < 8) k &= (__mmask8) ~(1u << (i - (j0 + c)));
       if (!k) continue;
       /* m + 8 stays within the chunk */
@@ -181,13 +197,11 @@ static inline
     lanes_avx512(const double *const pos[3], size_t i, __m512d X, __m512d Y,
                  __m512d Z, __m512i J, __mmask8 live, __m512d H2,
                  struct vsph_pair_chunk *b, size_t *m, const int dim) {
-  const __m512d dx = _mm512_sub_pd(X, _mm512_set1_pd(pos[0][i])),
-                dy = _mm512_sub_pd(Y, _mm512_set1_pd(pos[1][i]));
-  const __m512d dz = dim == 3 ? _mm512_sub_pd(Z, _mm512_set1_pd(pos[2][i]))
-                              : _mm512_setzero_pd();
-  __m512d s2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
-  if (dim == 3) s2 = _mm512_add_pd(s2, _mm512_mul_pd(dz, dz));
-  const __mmask8 k = _mm512_mask_cmp_pd_mask(live, s2, H2, _CMP_LT_OQ);
+  __m512d dx, dy, dz, s2;
+  const __mmask8 k =
+      near_avx512(X, Y, Z, _mm512_set1_pd(pos[0][i]), _mm512_set1_pd(pos[1][i]),
+                  dim == 3 ? _mm512_set1_pd(pos[2][i]) : _mm512_setzero_pd(),
+                  live, H2, dim, &dx, &dy, &dz, &s2);
   *m = append_avx512(b, *m, k, dx, dy, dz, s2, J, dim);
 }
 
@@ -264,6 +278,20 @@ static inline __attribute__((always_inline, target("avx2"))) size_t append_avx2(
   return m + (size_t)__builtin_popcount(k);
 }
 
+/* near_avx512 with AVX2: @p live the live lanes' bits */
+static inline __attribute__((always_inline, target("avx2"))) unsigned near_avx2(
+    __m256d X, __m256d Y, __m256d Z, __m256d xi, __m256d yi, __m256d zi,
+    unsigned live, __m256d H2, const int dim, __m256d *dx, __m256d *dy,
+    __m256d *dz, __m256d *s2) {
+  *dx = _mm256_sub_pd(X, xi);
+  *dy = _mm256_sub_pd(Y, yi);
+  *dz = dim == 3 ? _mm256_sub_pd(Z, zi) : _mm256_setzero_pd();
+  __m256d q = _mm256_add_pd(_mm256_mul_pd(*dx, *dx), _mm256_mul_pd(*dy, *dy));
+  if (dim == 3) q = _mm256_add_pd(q, _mm256_mul_pd(*dz, *dz));
+  *s2 = q;
+  return (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(q, H2, _CMP_LT_OQ)) & live;
+}
+
 static inline __attribute__((always_inline, target("avx2"))) size_t
 candidates_avx2(struct vsph_pair_iter *it, struct vsph_pair_chunk *b,
                 const int dim) {
@@ -283,18 +311,14 @@ candidates_avx2(struct vsph_pair_iter *it, struct vsph_pair_chunk *b,
       const size_t left = n - c;
       const __m256i live = _mm256_cmpgt_epi64(
           _mm256_set1_epi64x((long long)(left < 4 ? left : 4)), lane);
-      const __m256d dx = _mm256_sub_pd(_mm256_maskload_pd(px + j0 + c, live),
-                                       xi),
-                    dy = _mm256_sub_pd(_mm256_maskload_pd(py + j0 + c, live),
-                                       yi);
-      const __m256d dz =
-          dim == 3 ? _mm256_sub_pd(_mm256_maskload_pd(pz + j0 + c, live), zi)
-                   : _mm256_setzero_pd();
-      __m256d s2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
-      if (dim == 3) s2 = _mm256_add_pd(s2, _mm256_mul_pd(dz, dz));
-      unsigned k =
-          (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(s2, H2, _CMP_LT_OQ)) &
-          (unsigned)_mm256_movemask_pd(_mm256_castsi256_pd(live));
+      __m256d dx, dy, dz, s2;
+      unsigned k = near_avx2(
+          _mm256_maskload_pd(px + j0 + c, live),
+          _mm256_maskload_pd(py + j0 + c, live),
+          dim == 3 ? _mm256_maskload_pd(pz + j0 + c, live)
+                   : _mm256_setzero_pd(),
+          xi, yi, zi, (unsigned)_mm256_movemask_pd(_mm256_castsi256_pd(live)),
+          H2, dim, &dx, &dy, &dz, &s2);
       if (i - (j0 + c) < 4) k &= ~(1u << (i - (j0 + c)));
       if (!k) continue;
       const __m256i j =
@@ -310,14 +334,11 @@ static inline __attribute__((always_inline, target("avx2"))) void lanes_avx2(
     const double *const pos[3], size_t i, __m256d X, __m256d Y, __m256d Z,
     __m256i J, unsigned live, __m256d H2, struct vsph_pair_chunk *b, size_t *m,
     const int dim) {
-  const __m256d dx = _mm256_sub_pd(X, _mm256_set1_pd(pos[0][i])),
-                dy = _mm256_sub_pd(Y, _mm256_set1_pd(pos[1][i]));
-  const __m256d dz = dim == 3 ? _mm256_sub_pd(Z, _mm256_set1_pd(pos[2][i]))
-                              : _mm256_setzero_pd();
-  __m256d s2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
-  if (dim == 3) s2 = _mm256_add_pd(s2, _mm256_mul_pd(dz, dz));
+  __m256d dx, dy, dz, s2;
   const unsigned k =
-      (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(s2, H2, _CMP_LT_OQ)) & live;
+      near_avx2(X, Y, Z, _mm256_set1_pd(pos[0][i]), _mm256_set1_pd(pos[1][i]),
+                dim == 3 ? _mm256_set1_pd(pos[2][i]) : _mm256_setzero_pd(),
+                live, H2, dim, &dx, &dy, &dz, &s2);
   *m = append_avx2(b, *m, k, dx, dy, dz, s2, J, dim);
 }
 

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "../common/status.h"
+#include "particles_internal.h"
 
 /* 64-byte aligned zeroed block; aligned_alloc needs a size multiple of 64. */
 static void *alloc_aligned(size_t bytes) {
@@ -148,6 +149,21 @@ void vsph_particles_refresh_vol(struct vsph_particles *p) {
   for (size_t i = 0; i < p->n; i++) p->vol[i] = p->m[i] / p->rho[i];
 }
 
+int vsph_particles_doubles(const struct vsph_particles *p,
+                           double *f[VSPH_PARTICLES_DOUBLES]) {
+  int nd = 0;
+  for (int k = 0; k < p->dim; k++) {
+    double *const v[5] = {p->pos[k], p->vel[k], p->acc[k], p->tvel[k],
+                          p->bacc[k]};
+    for (int a = 0; a < 5; a++)
+      if (v[a]) f[nd++] = v[a];
+  }
+  double *const sc[7] = {p->m, p->rho, p->vol, p->p, p->drho, p->e, p->de};
+  for (int a = 0; a < 7; a++)
+    if (sc[a]) f[nd++] = sc[a];
+  return nd;
+}
+
 static void permute_field(double *a, const size_t *perm, size_t n,
                           double *scratch) {
   for (size_t i = 0; i < n; i++) scratch[i] = a[perm[i]];
@@ -159,15 +175,9 @@ void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
   if (!p || !perm || !scratch || !iscratch) return;
   const size_t n = p->n;
   /* every array the set has (a lean copy, the diagnostics', lacks some) */
-  for (int k = 0; k < p->dim; k++) {
-    double *const v[5] = {p->pos[k], p->vel[k], p->acc[k], p->tvel[k],
-                          p->bacc[k]};
-    for (int f = 0; f < 5; f++)
-      if (v[f]) permute_field(v[f], perm, n, scratch);
-  }
-  double *const sc[7] = {p->m, p->rho, p->vol, p->p, p->drho, p->e, p->de};
-  for (int f = 0; f < 7; f++)
-    if (sc[f]) permute_field(sc[f], perm, n, scratch);
+  double *f[VSPH_PARTICLES_DOUBLES];
+  const int nd = vsph_particles_doubles(p, f);
+  for (int a = 0; a < nd; a++) permute_field(f[a], perm, n, scratch);
   if (p->mat) { /* bytes, through the index scratch */
     for (size_t i = 0; i < n; i++) iscratch[i] = p->mat[perm[i]];
     for (size_t i = 0; i < n; i++) p->mat[i] = (unsigned char)iscratch[i];

@@ -8,6 +8,7 @@
 
 #include "../common/status.h"
 #include "particles.h"
+#include "particles_internal.h"
 
 /* One nearest-row entry: coordinates, the tangential velocity relative to
  * the wall (3), the depth. */
@@ -416,19 +417,13 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
    * vsph_particles_permute moves them: the transport velocity set before
    * a step's cell list is read after it) */
   const size_t base = n_fluid + gh->keep;
+  double *f[VSPH_PARTICLES_DOUBLES];
+  const int nd = vsph_particles_doubles(p, f);
   size_t n = 0;
   for (size_t i = 0; i < p->n; i++) {
     if (p->id[i] >= base) continue;
     if (n != i) {
-      for (int k = 0; k < p->dim; k++) {
-        double *const v[5] = {p->pos[k], p->vel[k], p->acc[k], p->tvel[k],
-                              p->bacc[k]};
-        for (int f = 0; f < 5; f++)
-          if (v[f]) v[f][n] = v[f][i];
-      }
-      double *const sc[7] = {p->m, p->rho, p->vol, p->p, p->drho, p->e, p->de};
-      for (int f = 0; f < 7; f++)
-        if (sc[f]) sc[f][n] = sc[f][i];
+      for (int a = 0; a < nd; a++) f[a][n] = f[a][i];
       if (p->mat) p->mat[n] = p->mat[i];
       p->id[n] = p->id[i];
     }
