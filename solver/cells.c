@@ -7,7 +7,9 @@
 #include <string.h>
 
 #include "../common/status.h"
+#include "cells_internal.h"
 #include "particles.h"
+#include "particles_internal.h"
 
 struct vsph_cells *vsph_cells_alloc(void) {
   struct vsph_cells *c = calloc(1, sizeof *c);
@@ -54,11 +56,32 @@ static int reserve_particles(struct vsph_cells *c, size_t n) {
   c->dscratch = blk;
   c->iscratch = blk;
   c->perm = malloc(n * sizeof *c->perm);
+  c->owned = 0;
   if (!blk || !c->perm) {
     c->cap_n = 0;
     VSPH_FAIL(VSPH_ENOMEM, "cannot allocate cell scratch for %zu", n);
   }
   c->cap_n = n;
+  return VSPH_OK;
+}
+
+/* The scratch for a set's own arrays (vsph_cells_build_owned,
+ * vsph_cells_lend): the block of keys from the set's allocation, of its
+ * capacity @p cap, so that it can take the place of any of its arrays. */
+static int reserve_owned(struct vsph_cells *c, size_t cap) {
+  if (c->owned && cap <= c->cap_n) return VSPH_OK;
+  free(c->key);
+  free(c->perm);
+  c->key = vsph_particles_spare_alloc(cap);
+  c->dscratch = (double *)c->key;
+  c->iscratch = c->key;
+  c->perm = malloc(cap * sizeof *c->perm);
+  c->owned = 1;
+  if (!c->key || !c->perm) {
+    c->cap_n = 0;
+    VSPH_FAIL(VSPH_ENOMEM, "cannot allocate cell scratch for %zu", cap);
+  }
+  c->cap_n = cap;
   return VSPH_OK;
 }
 
@@ -131,26 +154,37 @@ int vsph_cells_build_direct(struct vsph_cells *c,
   return plan_blocks(c, p->n);
 }
 
-int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
-                     double radius) {
-  if (!c || !p) VSPH_FAIL(VSPH_EINVAL, "vsph_cells_build: a NULL argument");
+/* vsph_cells_build, and with @p owned, vsph_cells_build_owned: the
+ * particles moved by swapping the set's arrays with the scratch block
+ * (vsph_particles_move) instead of copied back. */
+static int build(struct vsph_cells *c, struct vsph_particles *p, double radius,
+                 int owned) {
   const int dim = p->dim;
   const size_t n = p->n;
   c->nblk = 0; /* no blocks until this build has its own */
   if (!(radius > 0.0) || !isfinite(radius))
     VSPH_FAIL(VSPH_EINVAL, "cell radius must be positive, got %g", radius);
+  /* the bounding box: a minimum and a maximum are exact in any order, so
+   * the threads' shares give the same box */
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (int k = 0; k < dim; k++) {
-    lo[k] = INFINITY;
-    hi[k] = -INFINITY;
+    const double *const x = p->pos[k];
+    double l = INFINITY, h = -INFINITY;
+    int bad = 0;
+#pragma omp parallel if (n >= VSPH_CELLS_PARALLEL)
+#pragma omp for reduction(min : l) reduction(max : h) reduction(| : bad)
     for (size_t i = 0; i < n; i++) {
-      const double x = p->pos[k][i];
-      if (!isfinite(x))
-        VSPH_FAIL(VSPH_EINVAL, "particle %zu has a non-finite position",
-                  p->id[i]);
-      lo[k] = x < lo[k] ? x : lo[k];
-      hi[k] = x > hi[k] ? x : hi[k];
+      bad |= !isfinite(x[i]);
+      l = x[i] < l ? x[i] : l;
+      h = x[i] > h ? x[i] : h;
     }
+    if (bad) /* the first, as a serial scan names it */
+      for (size_t i = 0; i < n; i++)
+        if (!isfinite(x[i]))
+          VSPH_FAIL(VSPH_EINVAL, "particle %zu has a non-finite position",
+                    p->id[i]);
+    lo[k] = l;
+    hi[k] = h;
     if (n == 0) lo[k] = hi[k] = 0.0;
     /* positions spread over more than the largest double: no grid */
     if (!isfinite(hi[k] - lo[k]))
@@ -181,30 +215,68 @@ int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
     c->nc[k] = k < dim ? (size_t)floor((hi[k] - lo[k]) / edge) + 1 : 1;
   }
   int st = reserve_cells(c, ncells);
-  if (!st) st = reserve_particles(c, n);
+  if (!st) st = owned ? reserve_owned(c, p->cap) : reserve_particles(c, n);
   if (st) return st;
+  /* one block for the three (a move since the last build, through
+   * vsph_cells_lend, may have swapped it) */
+  c->dscratch = (double *)c->key;
+  c->iscratch = c->key;
 
-  /* Counting sort by cell key; stable, so equal keys keep input order. */
-  memset(c->count, 0, ncells * sizeof *c->count);
+  /* Counting sort by cell key; stable, so equal keys keep input order.
+   * The keys in parallel (one a particle), the counts in order. */
+  size_t *const key = c->key;
+  const size_t nc[3] = {c->nc[0], c->nc[1], c->nc[2]};
+#pragma omp parallel for schedule(static) if (n >= VSPH_CELLS_PARALLEL)
   for (size_t i = 0; i < n; i++) {
-    size_t key = 0;
+    size_t kk = 0;
     for (int k = dim - 1; k >= 0; k--) {
       size_t ck = (size_t)floor((p->pos[k][i] - lo[k]) / edge);
-      if (ck >= c->nc[k]) ck = c->nc[k] - 1;
-      key = key * c->nc[k] + ck;
+      if (ck >= nc[k]) ck = nc[k] - 1;
+      kk = kk * nc[k] + ck;
     }
-    c->key[i] = key;
-    c->count[key]++;
+    key[i] = kk;
   }
+  memset(c->count, 0, ncells * sizeof *c->count);
+  for (size_t i = 0; i < n; i++) c->count[key[i]]++;
   size_t acc = 0;
   for (size_t q = 0; q < ncells; q++) {
     c->start[q] = acc;
     acc += c->count[q];
   }
-  for (size_t i = 0; i < n; i++) c->perm[c->start[c->key[i]]++] = i;
+  for (size_t i = 0; i < n; i++) c->perm[c->start[key[i]]++] = i;
   for (size_t q = 0; q < ncells; q++) c->start[q] -= c->count[q];
-  vsph_particles_permute(p, c->perm, c->dscratch, c->iscratch);
+  if (owned) { /* the keys are read: their block is the move's spare */
+    void *spare = c->key;
+    vsph_particles_move(p, c->perm, n, &spare);
+    c->key = spare;
+    c->dscratch = spare;
+    c->iscratch = spare;
+  } else {
+    vsph_particles_permute(p, c->perm, c->dscratch, c->iscratch);
+  }
   return plan_blocks(c, n);
+}
+
+int vsph_cells_build(struct vsph_cells *c, struct vsph_particles *p,
+                     double radius) {
+  if (!c || !p) VSPH_FAIL(VSPH_EINVAL, "vsph_cells_build: a NULL argument");
+  return build(c, p, radius, 0);
+}
+
+int vsph_cells_build_owned(struct vsph_cells *c, struct vsph_particles *p,
+                           double radius) {
+  if (!c || !p)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_cells_build_owned: a NULL argument");
+  return build(c, p, radius, 1);
+}
+
+int vsph_cells_lend(struct vsph_cells *c, const struct vsph_particles *p,
+                    size_t **perm, void ***spare) {
+  const int st = reserve_owned(c, p->cap);
+  if (st) return st;
+  *perm = c->perm;
+  *spare = (void **)&c->key;
+  return VSPH_OK;
 }
 
 size_t vsph_cells_ranges(const struct vsph_cells *c, size_t cell,

@@ -14,6 +14,7 @@
 #include "equations_internal.h"
 #include "pair.h"
 #include "particles.h"
+#include "share_internal.h"
 #include "viscous_internal.h"
 #include "walls.h"
 
@@ -573,11 +574,12 @@ static int sweep_each_block(struct vsph_equations_sweep *sw,
     sw->cap_rows = need;
   }
   double *const rows = sw->rows;
+  struct vsph_share sh; /* each thread its own blocks first */
+  vsph_share_init(&sh, sw->nblk);
 #pragma omp parallel
   {
     double *const t = rows + per * (size_t)omp_get_thread_num();
-#pragma omp for schedule(dynamic, 1)
-    for (size_t b = 0; b < sw->nblk; b++) {
+    for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;) {
       size_t i0, i1;
       const size_t first = sweep_span(sw, cells, b, &i0, &i1);
       sweep_rows(sw, first, b, i0, i1, nf, t);
@@ -743,8 +745,10 @@ static int grad_sweep(const struct vsph_viscous_props *vp,
   const int st = sweep_plan(sw, cells, p->n, nf);
   if (st) return st;
   const int G = VSPH_KERNEL_DFQ_GAUSSIAN;
-#pragma omp parallel for schedule(dynamic, 1)
-  for (size_t b = 0; b < sw->nblk; b++)
+  struct vsph_share sh; /* each thread its own blocks first */
+  vsph_share_init(&sh, sw->nblk);
+#pragma omp parallel
+  for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
     if (dim == 2)
       grad_block(pk, p, cells, sw, b, 2, G);
     else
@@ -771,10 +775,12 @@ static int run_sweep(const struct vsph_equations_ctx *rc,
   if (st) return st;
   size_t total = 0;
   double min_s2 = INFINITY;
-  /* integer sum and min: exact, so the same for any thread count */
-#pragma omp parallel for schedule(dynamic, 1) reduction(+ : total) \
-    reduction(min : min_s2)
-  for (size_t b = 0; b < sw->nblk; b++) {
+  /* integer sum and min: exact, so the same for any thread count; each
+   * thread its own blocks first */
+  struct vsph_share sh;
+  vsph_share_init(&sh, sw->nblk);
+#pragma omp parallel reduction(+ : total) reduction(min : min_s2)
+  for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;) {
     double m;
     total += fn(rc, p, cells, n_fluid, sw, b, nf, &m);
     min_s2 = m < min_s2 ? m : min_s2;

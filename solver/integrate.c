@@ -11,8 +11,11 @@
 #include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "cells.h"
+#include "cells_internal.h"
 #include "pair.h"
 #include "particles.h"
+#include "particles_internal.h"
+#include "walls_internal.h"
 
 /* The integrated fields: r, u, rho, and e for the gas law only. */
 static int nfields(const struct vsph_integrate *s) {
@@ -293,10 +296,16 @@ static int prepare(struct vsph_integrate *s, double skin) {
     const size_t ng = vsph_walls_count(w, s->p, s->n_fluid, reach + skin);
     if ((st = reserve(s, s->n_fluid + nw + ng))) return st;
     s->gh->keep = nw; /* after reserve: it may make gh afresh */
-    if ((st = vsph_walls_generate(w, s->p, s->n_fluid, reach + skin, s->gh)))
+    /* the set is the integrator's own: its arrays are moved, not copied
+     * (through the cell list's scratch, free until its build) */
+    size_t *perm;
+    void **spare;
+    if ((st = vsph_cells_lend(s->cells, s->p, &perm, &spare)) ||
+        (st = vsph_walls_generate_moved(w, s->p, s->n_fluid, reach + skin,
+                                        s->gh, perm, spare)))
       return st;
   }
-  if ((st = vsph_cells_build(s->cells, s->p, H + skin))) return st;
+  if ((st = vsph_cells_build_owned(s->cells, s->p, H + skin))) return st;
   for (size_t i = 0; i < s->p->n; i++) s->where[s->p->id[i]] = i;
   return VSPH_OK;
 }
@@ -545,10 +554,15 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   k[2 * d] = p->drho;
   k[2 * d + 1] = p->de; /* the gas law's energy (nf says whether) */
   /* y0, the state the step starts from, is also what a stopped step puts
-   * back (put_back) */
+   * back (put_back): copied by the threads, each the share of every field
+   * that its stages' loops below take (the same static schedule; a small
+   * set by one thread, as a parallel region's start costs more) */
+#pragma omp parallel if (n >= VSPH_PARTICLES_MOVE_PARALLEL)
   for (int f = 0; f < nf; f++) {
-    memcpy(s->y0[f], y[f], n * sizeof(double));
-    memset(s->ks[f], 0, n * sizeof(double));
+    const double *const yf = y[f];
+    double *const y0f = s->y0[f];
+#pragma omp for schedule(static) nowait
+    for (size_t i = 0; i < n; i++) y0f[i] = yf[i];
   }
   static const double a[4] = {0.0, 0.5, 0.5, 1.0}, w[4] = {1, 2, 2, 1};
   size_t nint = 0;
@@ -570,7 +584,9 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
     /* accumulate k_stage and form the next stage state, field by field
      * (contiguous, vectorised); ghosts are left alone (they are mirrored
      * afresh before every evaluation) */
-    const double c = stage < 3 ? a[stage + 1] * dt : 0.0, wk = w[stage];
+    /* the sum of the k's starts at 0.0 in stage 0 (no array to clear),
+     * and the last stage also makes the new state: y0 + dt/6 sum */
+    const double c = stage < 3 ? a[stage + 1] * dt : dt / 6.0, wk = w[stage];
 #pragma omp parallel
     for (int f = 0; f < nf; f++) {
       const size_t lof = lo[f], hif = hi[f];
@@ -582,20 +598,11 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
       for (size_t i = 0; i < n; i++) {
         if (id[i] < lof || id[i] >= hif) continue;
         const double kv = kf[i];
-        ksf[i] += wk * kv;
-        if (stage < 3) yf[i] = y0f[i] + c * kv;
+        const double sum = (stage ? ksf[i] : 0.0) + wk * kv;
+        ksf[i] = sum;
+        yf[i] = y0f[i] + c * (stage < 3 ? kv : sum);
       }
     }
-  }
-#pragma omp parallel
-  for (int f = 0; f < nf; f++) {
-    const size_t lof = lo[f], hif = hi[f];
-    if (lof >= hif) continue;
-    const double *const ksf = s->ks[f], *const y0f = s->y0[f];
-    double *const yf = y[f];
-#pragma omp for schedule(static) nowait
-    for (size_t i = 0; i < n; i++)
-      if (id[i] >= lof && id[i] < hif) yf[i] = y0f[i] + dt / 6.0 * ksf[i];
   }
   s->t += dt;
   s->steps++;

@@ -185,3 +185,56 @@ void vsph_particles_permute(struct vsph_particles *p, const size_t *perm,
   for (size_t i = 0; i < n; i++) iscratch[i] = p->id[perm[i]];
   memcpy(p->id, iscratch, n * sizeof *p->id);
 }
+
+void *vsph_particles_spare_alloc(size_t cap) {
+  return alloc_aligned(cap * sizeof(double));
+}
+
+/* dst[k] = src[perm[k]], k < n, 8-byte entries (doubles or indices,
+ * moved as bytes), by the threads of the enclosing parallel region */
+static void gather8(void *restrict dst, const void *restrict src,
+                    const size_t *perm, size_t n) {
+  unsigned char *const d = dst;
+  const unsigned char *const s = src;
+#pragma omp for schedule(static)
+  for (size_t k = 0; k < n; k++) memcpy(d + 8 * k, s + 8 * perm[k], 8);
+}
+
+void vsph_particles_move(struct vsph_particles *p, const size_t *perm, size_t n,
+                         void **spare) {
+  /* the 8-byte arrays by the address of their pointer: each is swapped
+   * with the spare once its entries are moved */
+  void **slot[VSPH_PARTICLES_DOUBLES + 1];
+  int ns = 0;
+  for (int k = 0; k < p->dim; k++) {
+    double **const v[5] = {&p->pos[k], &p->vel[k], &p->acc[k], &p->tvel[k],
+                           &p->bacc[k]};
+    for (int a = 0; a < 5; a++)
+      if (*v[a]) slot[ns++] = (void **)v[a];
+  }
+  double **const sc[7] = {&p->m,    &p->rho, &p->vol, &p->p,
+                          &p->drho, &p->e,   &p->de};
+  for (int a = 0; a < 7; a++)
+    if (*sc[a]) slot[ns++] = (void **)sc[a];
+  slot[ns++] = (void **)&p->id;
+#pragma omp parallel if (n >= VSPH_PARTICLES_MOVE_PARALLEL)
+  {
+    for (int a = 0; a < ns; a++) {
+      gather8(*spare, *slot[a], perm, n); /* ends in a barrier */
+#pragma omp single
+      {
+        void *const moved = *spare;
+        *spare = *slot[a];
+        *slot[a] = moved;
+      } /* a barrier: the next array gathers into the one just freed */
+    }
+    if (p->mat) { /* bytes: through the spare and back */
+      unsigned char *const b = *spare;
+#pragma omp for schedule(static)
+      for (size_t k = 0; k < n; k++) b[k] = p->mat[perm[k]];
+#pragma omp for schedule(static)
+      for (size_t k = 0; k < n; k++) p->mat[k] = b[k];
+    }
+  }
+  p->n = n;
+}

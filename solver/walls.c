@@ -9,6 +9,7 @@
 #include "../common/status.h"
 #include "particles.h"
 #include "particles_internal.h"
+#include "walls_internal.h"
 
 /* One nearest-row entry: coordinates, the tangential velocity relative to
  * the wall (3), the depth. */
@@ -390,13 +391,20 @@ static void rows(const struct vsph_walls *w, const struct vsph_particles *p,
   }
 }
 
+/* The sources of each parallel share of the ghosts' making: fixed runs of
+ * the set, whatever the thread count, so every ghost lands in the same
+ * slot (and below two runs, one thread: the same ghosts). */
+#define GHOST_RUN 2048
+
 size_t vsph_walls_count(const struct vsph_walls *w,
                         const struct vsph_particles *p, size_t n_fluid,
                         double reach) {
   if (!w || !p) return 0;
   unsigned pair[3];
   ends(w, pair);
-  size_t n = 0;
+  size_t n = 0; /* a sum of counts: the same for any thread count */
+#pragma omp parallel for schedule(static) reduction(+ : n) \
+    if (p->n >= 2 * GHOST_RUN)
   for (size_t i = 0; i < p->n; i++) {
     if (p->id[i] >= n_fluid) continue;
     /* the non-empty subsets of the near planes that make an image */
@@ -407,27 +415,79 @@ size_t vsph_walls_count(const struct vsph_walls *w,
   return n;
 }
 
-int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
-                        size_t n_fluid, double reach,
-                        struct vsph_walls_ghosts *gh) {
-  if (!w || !p || !gh)
-    VSPH_FAIL(VSPH_EINVAL, "vsph_walls_generate: a NULL argument");
+/* A new ghost's arrays that image() does not set (its rates, transport
+ * velocity and background pressure's acceleration: no evaluation reads a
+ * ghost's) set to 0, so that every array of the set is the same whatever
+ * its slot held before. */
+static void rates_cleared(struct vsph_particles *p, size_t i) {
+  for (int k = 0; k < p->dim; k++) {
+    p->acc[k][i] = 0.0;
+    if (p->tvel[k]) p->tvel[k][i] = 0.0;
+    if (p->bacc[k]) p->bacc[k][i] = 0.0;
+  }
+  p->drho[i] = 0.0;
+  if (p->de) p->de[i] = 0.0;
+}
+
+/* The ghosts of the fluid particles [a, b) of @p p (the set compacted:
+ * no ghost among them), made from index @p i0 of the set and ghost @p g0
+ * on, in index order, each source's subsets of planes in mask order;
+ * with @p make 0 only counted. Returns how many. */
+static size_t images(const struct vsph_walls *w, struct vsph_particles *p,
+                     size_t n_fluid, double reach, const unsigned pair[3],
+                     size_t a, size_t b, struct vsph_walls_ghosts *gh,
+                     size_t i0, size_t g0, int make) {
+  const size_t base = n_fluid + gh->keep;
+  size_t g = g0;
+  for (size_t s = a; s < b; s++) { /* the fluid, among the kept walls */
+    if (p->id[s] >= n_fluid) continue;
+    const unsigned near = near_planes(w, p, s, reach);
+    /* every non-empty subset of the near planes: images and corner images
+     * (never both ends of one periodic axis: their shifts cancel) */
+    for (unsigned mask = near; mask; mask = (mask - 1) & near) {
+      if (!image_ok(mask, pair)) continue;
+      if (make) {
+        const size_t i = i0 + (g - g0);
+        gh->src[g] = p->id[s];
+        gh->mask[g] = mask;
+        p->id[i] = base + g;
+        image(w, gh, p, s, i, mask);
+        rates_cleared(p, i);
+      }
+      g++;
+    }
+  }
+  return g - g0;
+}
+
+/* vsph_walls_generate, and with @p perm and @p spare
+ * (vsph_walls_generate_moved) the compaction by a move of the set's own
+ * arrays */
+static int generate(const struct vsph_walls *w, struct vsph_particles *p,
+                    size_t n_fluid, double reach, struct vsph_walls_ghosts *gh,
+                    size_t *perm, void **spare) {
   /* Compact: keep the fluid (and the fixed wall particles) in their
    * current order, every field the set has with them (as
    * vsph_particles_permute moves them: the transport velocity set before
    * a step's cell list is read after it) */
   const size_t base = n_fluid + gh->keep;
-  double *f[VSPH_PARTICLES_DOUBLES];
-  const int nd = vsph_particles_doubles(p, f);
   size_t n = 0;
-  for (size_t i = 0; i < p->n; i++) {
-    if (p->id[i] >= base) continue;
-    if (n != i) {
-      for (int a = 0; a < nd; a++) f[a][n] = f[a][i];
-      if (p->mat) p->mat[n] = p->mat[i];
-      p->id[n] = p->id[i];
+  if (perm) { /* the kept in order, then moved by swaps */
+    for (size_t i = 0; i < p->n; i++)
+      if (p->id[i] < base) perm[n++] = i;
+    if (n < p->n) vsph_particles_move(p, perm, n, spare);
+  } else {
+    double *f[VSPH_PARTICLES_DOUBLES];
+    const int nd = vsph_particles_doubles(p, f);
+    for (size_t i = 0; i < p->n; i++) {
+      if (p->id[i] >= base) continue;
+      if (n != i) {
+        for (int a = 0; a < nd; a++) f[a][n] = f[a][i];
+        if (p->mat) p->mat[n] = p->mat[i];
+        p->id[n] = p->id[i];
+      }
+      n++;
     }
-    n++;
   }
   p->n = n;
   gh->n = 0;
@@ -441,24 +501,50 @@ int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
   }
   unsigned pair[3];
   ends(w, pair);
-  for (size_t s = 0; s < n; s++) { /* the fluid, among the kept walls */
-    if (p->id[s] >= n_fluid) continue;
-    const unsigned near = near_planes(w, p, s, reach);
-    /* every non-empty subset of the near planes: images and corner images
-     * (never both ends of one periodic axis: their shifts cancel) */
-    for (unsigned mask = near; mask; mask = (mask - 1) & near) {
-      if (!image_ok(mask, pair)) continue;
-      if (gh->n >= gh->cap || p->n >= p->cap)
-        VSPH_FAIL(VSPH_ENOMEM, "ghost capacity %zu exceeded", gh->cap);
-      const size_t i = p->n++;
-      gh->src[gh->n] = p->id[s];
-      gh->mask[gh->n] = mask;
-      p->id[i] = base + gh->n;
-      gh->n++;
-      image(w, gh, p, s, i, mask);
-    }
+  /* each run's ghosts counted, their first slots summed in order, then
+   * made, the runs in parallel */
+  const size_t nrun = (n + GHOST_RUN - 1) / GHOST_RUN;
+  size_t *const at = malloc((nrun + 1) * sizeof *at);
+  if (!at) VSPH_FAIL(VSPH_ENOMEM, "cannot plan the ghosts of %zu", n);
+  const int par = n >= 2 * GHOST_RUN;
+#pragma omp parallel for schedule(dynamic, 1) if (par)
+  for (size_t r = 0; r < nrun; r++) {
+    const size_t a = r * GHOST_RUN, b = a + GHOST_RUN < n ? a + GHOST_RUN : n;
+    at[r + 1] = images(w, p, n_fluid, reach, pair, a, b, gh, 0, 0, 0);
   }
+  at[0] = 0;
+  for (size_t r = 0; r < nrun; r++) at[r + 1] += at[r];
+  const size_t ng = at[nrun];
+  if (ng > gh->cap || n + ng > p->cap) {
+    free(at);
+    VSPH_FAIL(VSPH_ENOMEM, "ghost capacity %zu exceeded", gh->cap);
+  }
+#pragma omp parallel for schedule(dynamic, 1) if (par)
+  for (size_t r = 0; r < nrun; r++) {
+    const size_t a = r * GHOST_RUN, b = a + GHOST_RUN < n ? a + GHOST_RUN : n;
+    images(w, p, n_fluid, reach, pair, a, b, gh, n + at[r], at[r], 1);
+  }
+  free(at);
+  p->n = n + ng;
+  gh->n = ng;
   return VSPH_OK;
+}
+
+int vsph_walls_generate(const struct vsph_walls *w, struct vsph_particles *p,
+                        size_t n_fluid, double reach,
+                        struct vsph_walls_ghosts *gh) {
+  if (!w || !p || !gh)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_walls_generate: a NULL argument");
+  return generate(w, p, n_fluid, reach, gh, NULL, NULL);
+}
+
+int vsph_walls_generate_moved(const struct vsph_walls *w,
+                              struct vsph_particles *p, size_t n_fluid,
+                              double reach, struct vsph_walls_ghosts *gh,
+                              size_t *perm, void **spare) {
+  if (!w || !p || !gh || !perm || !spare)
+    VSPH_FAIL(VSPH_EINVAL, "vsph_walls_generate_moved: a NULL argument");
+  return generate(w, p, n_fluid, reach, gh, perm, spare);
 }
 
 void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,

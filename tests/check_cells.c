@@ -9,8 +9,11 @@
 #include "../common/consts.h"
 #include "../common/status.h"
 #include "../solver/cells.h"
+#include "../solver/cells_internal.h"
 #include "../solver/lattice.h"
 #include "../solver/particles.h"
+#include "../solver/particles_internal.h"
+#include "../solver/share_internal.h"
 #include "check_suites.h"
 
 static double total_volume(const struct vsph_particles *p) {
@@ -234,6 +237,200 @@ START_TEST(test_cells_first_bad_particle_named) {
 }
 END_TEST
 
+/* A set of n particles, every array filled (tvel, bacc, e, de and mat
+ * too) with values that name their particle: field a of particle i is
+ * 1000 a + i + 0.25, its id 7 i + 3, its material i % 3. */
+static struct vsph_particles *named_set(size_t n) {
+  struct vsph_particles *p = vsph_particles_alloc(n, 2);
+  ck_assert_ptr_nonnull(p);
+  ck_assert_int_eq(vsph_particles_tvf_alloc(p), 0);
+  ck_assert_int_eq(vsph_particles_energy_alloc(p), 0);
+  ck_assert_int_eq(vsph_particles_mat_alloc(p), 0);
+  p->n = n;
+  double *f[VSPH_PARTICLES_DOUBLES];
+  const int nd = vsph_particles_doubles(p, f);
+  ck_assert_int_eq(nd, 2 * 5 + 7); /* every array a 2-D set can have */
+  for (size_t i = 0; i < n; i++) {
+    for (int a = 0; a < nd; a++) f[a][i] = 1000.0 * a + (double)i + 0.25;
+    p->id[i] = 7 * i + 3;
+    p->mat[i] = (unsigned char)(i % 3);
+  }
+  return p;
+}
+
+/* Particle k of @p p is particle old of named_set, every array. */
+static void is_named(const struct vsph_particles *p, size_t k, size_t old) {
+  double *f[VSPH_PARTICLES_DOUBLES];
+  const int nd = vsph_particles_doubles(p, f);
+  for (int a = 0; a < nd; a++)
+    ck_assert_double_eq(f[a][k], 1000.0 * a + (double)old + 0.25);
+  ck_assert_uint_eq(p->id[k], 7 * old + 3);
+  ck_assert_uint_eq(p->mat[k], old % 3);
+}
+
+/* vsph_particles_move: each kept particle whole in its new place, the
+ * others dropped, at 1 and 2 threads, above and below the size from which
+ * it runs in parallel; the spare it hands back is a block of the set's
+ * capacity none of the set's arrays uses (a second move through it, then
+ * the set's and the spare's frees, run under the sanitizers' build). */
+START_TEST(test_particles_move) {
+  const size_t sizes[2] = {VSPH_PARTICLES_MOVE_PARALLEL / 4,
+                           VSPH_PARTICLES_MOVE_PARALLEL + 1001};
+  for (int z = 0; z < 2; z++)
+    for (int thr = 1; thr <= 2; thr++) {
+      omp_set_num_threads(thr);
+      const size_t n = sizes[z];
+      struct vsph_particles *p = named_set(n);
+      void *spare = vsph_particles_spare_alloc(p->cap);
+      size_t *perm = malloc(n * sizeof *perm), *was = malloc(n * sizeof *was);
+      ck_assert_ptr_nonnull(spare);
+      /* every third particle dropped, the rest in a scrambled order */
+      size_t m = 0;
+      for (size_t k = 0; k < n; k++) {
+        const size_t i = (k * 7919) % n; /* n is no multiple of 7919 */
+        if (i % 3 != 1) perm[m++] = i;
+      }
+      vsph_particles_move(p, perm, m, &spare);
+      ck_assert_uint_eq(p->n, m);
+      for (size_t k = 0; k < m; k++) is_named(p, k, perm[k]);
+      for (size_t k = 0; k < m; k++) was[k] = perm[k];
+      /* the spare is none of the set's arrays */
+      double *f[VSPH_PARTICLES_DOUBLES];
+      const int nd = vsph_particles_doubles(p, f);
+      for (int a = 0; a < nd; a++) ck_assert_ptr_ne(spare, f[a]);
+      ck_assert_ptr_ne(spare, p->id);
+      /* again, reversed, through the spare handed back */
+      for (size_t k = 0; k < m; k++) perm[k] = m - 1 - k;
+      vsph_particles_move(p, perm, m, &spare);
+      for (size_t k = 0; k < m; k++) is_named(p, k, was[m - 1 - k]);
+      free(spare);
+      free(perm);
+      free(was);
+      vsph_particles_free(p);
+    }
+}
+END_TEST
+
+/* A set of n particles on a scrambled lattice with every array named
+ * (named_set), for the cell list's two builds. */
+static struct vsph_particles *scrambled_set(size_t n, double shift) {
+  struct vsph_particles *p = named_set(n);
+  for (size_t i = 0; i < n; i++) {
+    const size_t s = (i * 104729) % n; /* a scrambled order */
+    p->pos[0][i] = 0.01 * (double)(s % 97) + shift * sin((double)i);
+    p->pos[1][i] = 0.01 * (double)(s / 97) + shift * cos((double)i);
+  }
+  return p;
+}
+
+/* vsph_cells_build_owned: the same cells, the same order and every array
+ * the same as vsph_cells_build, at 1 and 2 threads, on a first build and
+ * on a second one after the particles moved (the scratch block then one
+ * of the set's former arrays), and with a move through vsph_cells_lend in
+ * between, as the integrator's ghosts do. */
+START_TEST(test_cells_build_owned) {
+  const size_t n = VSPH_CELLS_PARALLEL + 2345;
+  for (int thr = 1; thr <= 2; thr++) {
+    omp_set_num_threads(thr);
+    struct vsph_particles *a = scrambled_set(n, 0.0),
+                          *b = scrambled_set(n, 0.0);
+    struct vsph_cells *ca = vsph_cells_alloc(), *cb = vsph_cells_alloc();
+    for (int round = 0; round < 3; round++) {
+      if (round > 0) /* the particles move: both sets alike */
+        for (size_t i = 0; i < n; i++) {
+          const double d = 0.003 * sin(0.37 * (double)(a->id[i] + round));
+          a->pos[0][i] += d;
+          b->pos[0][i] += d;
+        }
+      if (round == 2) { /* the lent scratch, then a move of b alone */
+        size_t *perm;
+        void **spare;
+        ck_assert_int_eq(vsph_cells_lend(cb, b, &perm, &spare), 0);
+        for (size_t k = 0; k < n; k++) perm[k] = n - 1 - k;
+        vsph_particles_move(b, perm, n, spare);
+        for (size_t k = 0; k < n; k++) perm[k] = n - 1 - k;
+        vsph_particles_permute(a, perm, ca->dscratch, ca->iscratch);
+      }
+      ck_assert_int_eq(vsph_cells_build(ca, a, 0.025), 0);
+      ck_assert_int_eq(vsph_cells_build_owned(cb, b, 0.025), 0);
+      ck_assert_uint_eq(ca->ncells, cb->ncells);
+      for (size_t c = 0; c < ca->ncells; c++) {
+        ck_assert_uint_eq(ca->start[c], cb->start[c]);
+        ck_assert_uint_eq(ca->count[c], cb->count[c]);
+      }
+      double *fa[VSPH_PARTICLES_DOUBLES], *fb[VSPH_PARTICLES_DOUBLES];
+      const int nd = vsph_particles_doubles(a, fa);
+      ck_assert_int_eq(vsph_particles_doubles(b, fb), nd);
+      for (size_t i = 0; i < n; i++) {
+        for (int q = 0; q < nd; q++)
+          ck_assert_msg(memcmp(&fa[q][i], &fb[q][i], sizeof(double)) == 0,
+                        "round %d, array %d, particle %zu", round, q, i);
+        ck_assert_uint_eq(a->id[i], b->id[i]);
+        ck_assert_uint_eq(a->mat[i], b->mat[i]);
+      }
+    }
+    vsph_cells_free(ca);
+    vsph_cells_free(cb);
+    vsph_particles_free(a);
+    vsph_particles_free(b);
+  }
+}
+END_TEST
+
+/* vsph_share_next: every block once, whatever the blocks and the
+ * threads (fewer blocks than threads, none, more threads than owners);
+ * on one thread in order, the owners' runs one after the other. */
+START_TEST(test_share_every_block_once) {
+  const size_t counts[5] = {0, 1, 3, 32, 1001};
+  for (int z = 0; z < 5; z++)
+    for (int thr = 1; thr <= 3; thr++) {
+      const size_t nblk = counts[z];
+      omp_set_num_threads(thr);
+      struct vsph_share sh;
+      vsph_share_init(&sh, nblk);
+      int *seen = calloc(nblk + 1, sizeof *seen), beyond = 0;
+      size_t order[8], got = 0;
+#pragma omp parallel /* asserted after the region, on this thread */
+      for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;) {
+        if (b >= nblk) {
+#pragma omp atomic write
+          beyond = 1;
+          continue;
+        }
+#pragma omp atomic
+        seen[b]++;
+        if (thr == 1 && got < 8) order[got++] = b;
+      }
+      ck_assert_int_eq(beyond, 0);
+      for (size_t b = 0; b < nblk; b++)
+        ck_assert_msg(seen[b] == 1, "%zu blocks, %d threads: block %zu %d",
+                      nblk, thr, b, seen[b]);
+      if (thr == 1)
+        for (size_t k = 0; k < got; k++) ck_assert_uint_eq(order[k], k);
+      free(seen);
+    }
+  /* more threads than owners: the rest take blocks as thieves */
+  omp_set_num_threads(VSPH_SHARE_MAX + 3);
+  struct vsph_share sh;
+  vsph_share_init(&sh, 500);
+  ck_assert_int_eq(sh.nt, VSPH_SHARE_MAX);
+  int seen[500] = {0}, beyond = 0;
+#pragma omp parallel
+  for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;) {
+    if (b >= 500) {
+#pragma omp atomic write
+      beyond = 1;
+      continue;
+    }
+#pragma omp atomic
+    seen[b]++;
+  }
+  ck_assert_int_eq(beyond, 0);
+  for (size_t b = 0; b < 500; b++) ck_assert_int_eq(seen[b], 1);
+  omp_set_num_threads(2);
+}
+END_TEST
+
 Suite *vsph_cells_suite(void) {
   Suite *s = suite_create("cells");
   TCase *tc = tcase_create("core");
@@ -243,6 +440,9 @@ Suite *vsph_cells_suite(void) {
   tcase_add_test(tc, test_cells_vs_direct);
   tcase_add_test(tc, test_cells_bad_input_refused);
   tcase_add_test(tc, test_cells_first_bad_particle_named);
+  tcase_add_test(tc, test_particles_move);
+  tcase_add_test(tc, test_cells_build_owned);
+  tcase_add_test(tc, test_share_every_block_once);
   suite_add_tcase(s, tc);
   return s;
 }

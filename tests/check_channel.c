@@ -14,12 +14,16 @@
 #include "../common/consts.h"
 #include "../common/params.h"
 #include "../kernels/kernel.h"
+#include "../solver/cells.h"
+#include "../solver/cells_internal.h"
 #include "../solver/equations.h"
 #include "../solver/integrate.h"
 #include "../solver/particles.h"
+#include "../solver/particles_internal.h"
 #include "../solver/run.h"
 #include "../solver/scene.h"
 #include "../solver/walls.h"
+#include "../solver/walls_internal.h"
 #include "check_suites.h"
 
 /* u_t = u_yy + f on 0 < y < 1, u(0) = 0, u(1) = top, from rest, to time
@@ -799,6 +803,104 @@ START_TEST(test_generate_moves_every_field) {
 }
 END_TEST
 
+/* A box [0, 1] x [0, 0.6] of 100 x 60 fluid particles, every array
+ * named by its particle (id i: array a is 100 a + i), inside two no-slip
+ * walls, y = 0 (linear extrapolation) and x = 0 (mirror, with a moving
+ * wall), so that ghosts come as images and corner images. */
+static struct vsph_particles *walled_box(struct vsph_walls *w) {
+  const struct vsph_walls ww = {.n = 2,
+                                .axis = {1, 0},
+                                .pos = {0.0, 0.0},
+                                .side = {+1, +1},
+                                .kind = {VSPH_WALLS_MIRROR, VSPH_WALLS_MIRROR},
+                                .uw = {{0.0, 0.0}, {0.0, 0.3}},
+                                .noslip = 1,
+                                .velocity = VSPH_WALLS_VEL_LINEAR,
+                                .band = 0.03,
+                                .window = 0.03,
+                                .rho0 = 1,
+                                .c0 = 1};
+  *w = ww;
+  struct vsph_particles *p = vsph_particles_alloc(12000, 2);
+  ck_assert_int_eq(vsph_particles_tvf_alloc(p), 0);
+  ck_assert_int_eq(vsph_particles_energy_alloc(p), 0);
+  for (int i = 0; i < 6000; i++)
+    put_fluid(p, (i % 100 + 0.5) / 100, (i / 100 + 0.5) / 100,
+              0.1 * sin(0.1 * i));
+  for (size_t i = 0; i < p->n; i++) { /* the arrays a ghost's making
+                                       * does not read */
+    double *const f[9] = {p->acc[0],  p->acc[1],  p->tvel[0],
+                          p->tvel[1], p->bacc[0], p->bacc[1],
+                          p->drho,    p->de,      p->p};
+    for (int a = 0; a < 9; a++) f[a][i] = 100.0 * a + (double)i;
+    p->e[i] = 0.5 * (double)i;
+    p->rho[i] = 1.0 + 1e-4 * (double)(i % 7);
+  }
+  return p;
+}
+
+/* vsph_walls_generate_moved (the integrator's, its compaction a move of
+ * the set's own arrays and its ghosts made in runs in parallel) gives the
+ * set vsph_walls_generate gives: the same particles in the same order,
+ * every array and every ghost's source and planes the same, to the bit,
+ * at 1 and 2 threads, from a set whose ghosts the cell list's sort mixed
+ * in among the fluid. */
+START_TEST(test_generate_moved_is_generate) {
+  for (int thr = 1; thr <= 2; thr++) {
+    omp_set_num_threads(thr);
+    struct vsph_walls w;
+    struct vsph_particles *a = walled_box(&w), *b = walled_box(&w);
+    const size_t nf = a->n;
+    struct vsph_walls_ghosts *ga = vsph_walls_ghosts_alloc(&w, 12000),
+                             *gb = vsph_walls_ghosts_alloc(&w, 12000);
+    struct vsph_cells *ca = vsph_cells_alloc(), *cb = vsph_cells_alloc();
+    for (int round = 0; round < 2; round++) {
+      size_t *perm;
+      void **spare;
+      ck_assert_int_eq(vsph_walls_generate(&w, a, nf, 0.035, ga), 0);
+      ck_assert_int_eq(vsph_cells_lend(cb, b, &perm, &spare), 0);
+      ck_assert_int_eq(
+          vsph_walls_generate_moved(&w, b, nf, 0.035, gb, perm, spare), 0);
+      /* within 0.035 of a wall: three rows of 100 above y = 0, three
+       * columns of 60 beside x = 0, and their 3 x 3 corner images (then
+       * the fourth row, moved down, adds some) */
+      if (round == 0) ck_assert_uint_eq(ga->n, 3 * 100 + 3 * 60 + 9);
+      ck_assert_uint_ge(ga->n, 3 * 100 + 3 * 60 + 9);
+      ck_assert_uint_eq(a->n, b->n);
+      ck_assert_uint_eq(ga->n, gb->n);
+      double *fa[VSPH_PARTICLES_DOUBLES], *fb[VSPH_PARTICLES_DOUBLES];
+      const int nd = vsph_particles_doubles(a, fa);
+      ck_assert_int_eq(vsph_particles_doubles(b, fb), nd);
+      for (size_t i = 0; i < a->n; i++) {
+        ck_assert_uint_eq(a->id[i], b->id[i]);
+        for (int q = 0; q < nd; q++)
+          ck_assert_msg(memcmp(&fa[q][i], &fb[q][i], sizeof(double)) == 0,
+                        "round %d, array %d, particle %zu", round, q, i);
+      }
+      for (size_t g = 0; g < ga->n; g++) {
+        ck_assert_uint_eq(ga->src[g], gb->src[g]);
+        ck_assert_uint_eq(ga->mask[g], gb->mask[g]);
+      }
+      /* sorted by cell, the ghosts among the fluid; then moved a little */
+      ck_assert_int_eq(vsph_cells_build(ca, a, 0.035), 0);
+      ck_assert_int_eq(vsph_cells_build_owned(cb, b, 0.035), 0);
+      for (size_t i = 0; i < a->n; i++)
+        if (a->id[i] < nf) {
+          a->pos[1][i] += 0.002 * cos((double)a->id[i]);
+          b->pos[1][i] += 0.002 * cos((double)b->id[i]);
+        }
+    }
+    vsph_cells_free(ca);
+    vsph_cells_free(cb);
+    vsph_walls_ghosts_free(ga);
+    vsph_walls_ghosts_free(gb);
+    vsph_particles_free(a);
+    vsph_particles_free(b);
+  }
+  omp_set_num_threads(2);
+}
+END_TEST
+
 Suite *vsph_channel_suite(void) {
   Suite *s = suite_create("channel");
   TCase *tc = tcase_create("internal");
@@ -825,6 +927,7 @@ Suite *vsph_walls_suite(void) {
   tcase_add_loop_test(tc, test_linear_extrapolation_binned, 0, 2);
   tcase_add_test(tc, test_linear_extrapolation_seam);
   tcase_add_test(tc, test_generate_moves_every_field);
+  tcase_add_test(tc, test_generate_moved_is_generate);
   tcase_add_test(tc, test_periodic_rest_threads);
   tcase_add_test(tc, test_fixed_walls);
   tcase_add_loop_test(tc, test_startup_walls, 0, 3);

@@ -1,0 +1,56 @@
+/* Copyright (C) 2026 the vsph developers.
+ * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
+#ifndef VSPH_SOLVER_SHARE_INTERNAL_H
+#define VSPH_SOLVER_SHARE_INTERNAL_H
+
+/* The sweep's blocks shared out among threads, owner first (within
+ * solver/ only). Thread t of T owns the blocks [t nblk / T, (t + 1) nblk
+ * / T): about the run of particles a static loop over them gives it, so
+ * the thread that sweeps a block's pairs is the one that sums its
+ * particles' rows and moves them in the integrator's stages, and their
+ * arrays stay in its core's cache. It takes its own blocks in order, then
+ * the next ones of the other threads' (a thread that lost its core to
+ * another process holds no one up, as with a dynamic schedule). Which
+ * thread does a block never changes what the block computes. */
+
+#include <omp.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/* At most this many owners; more threads take blocks as thieves. */
+#define VSPH_SHARE_MAX 64
+
+struct vsph_share {
+  int nt;                      /* owners */
+  size_t next[VSPH_SHARE_MAX]; /* each owner's next block (atomic) */
+  size_t end[VSPH_SHARE_MAX];  /* one past its last */
+};
+
+/* Share @p nblk blocks among the threads a parallel region will have
+ * (omp_get_max_threads()); before the region. */
+static inline void vsph_share_init(struct vsph_share *s, size_t nblk) {
+  int nt = omp_get_max_threads();
+  nt = nt < 1 ? 1 : nt > VSPH_SHARE_MAX ? VSPH_SHARE_MAX : nt;
+  s->nt = nt;
+  for (int t = 0; t < nt; t++) {
+    s->next[t] = nblk * (size_t)t / (size_t)nt;
+    s->end[t] = nblk * (size_t)(t + 1) / (size_t)nt;
+  }
+}
+
+/* The next block for the calling thread of the region: its own first,
+ * then another's; SIZE_MAX when none is left. */
+static inline size_t vsph_share_next(struct vsph_share *s) {
+  const int t = omp_get_thread_num() % s->nt;
+  for (int k = 0; k < s->nt; k++) {
+    const int v = (t + k) % s->nt;
+    if (s->next[v] >= s->end[v]) continue; /* a stale look: re-checked */
+    size_t b;
+#pragma omp atomic capture
+    b = s->next[v]++;
+    if (b < s->end[v]) return b;
+  }
+  return SIZE_MAX;
+}
+
+#endif /* VSPH_SOLVER_SHARE_INTERNAL_H */
