@@ -409,6 +409,18 @@ START_TEST(test_share_every_block_once) {
         for (size_t k = 0; k < got; k++) ck_assert_uint_eq(order[k], k);
       free(seen);
     }
+  /* owners absent (the region has fewer threads than the share was
+   * made for): the threads there take the absent owners' blocks */
+  omp_set_num_threads(3);
+  {
+    struct vsph_share sh;
+    vsph_share_init(&sh, 100);
+    int seen[100] = {0};
+#pragma omp parallel num_threads(1)
+    for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
+      if (b < 100) seen[b]++;
+    for (size_t b = 0; b < 100; b++) ck_assert_int_eq(seen[b], 1);
+  }
   /* more threads than owners: the rest take blocks as thieves */
   omp_set_num_threads(VSPH_SHARE_MAX + 3);
   struct vsph_share sh;
