@@ -23,7 +23,8 @@ void vsph_cells_free(struct vsph_cells *c) {
   if (!c) return;
   free(c->start);
   free(c->count);
-  free(c->key); /* the one scratch block (reserve_particles) */
+  free(c->key); /* the one scratch block (reserve_particles, or
+                 * reserve_owned: then perhaps a set's former array) */
   free(c->perm);
   free(c->blk_c0);
   free(c->blk_lo);
@@ -69,7 +70,9 @@ static int reserve_particles(struct vsph_cells *c, size_t n) {
  * vsph_cells_lend): the block of keys from the set's allocation, of its
  * capacity @p cap, so that it can take the place of any of its arrays. */
 static int reserve_owned(struct vsph_cells *c, size_t cap) {
-  if (c->owned && cap <= c->cap_n) return VSPH_OK;
+  /* kept only for a set of the same capacity: after a move the block is
+   * one of the set's former arrays, of its capacity exactly */
+  if (c->owned && cap == c->cap_n) return VSPH_OK;
   free(c->key);
   free(c->perm);
   c->key = vsph_particles_spare_alloc(cap);

@@ -52,8 +52,9 @@ struct vsph_cells {
   size_t *blk_c0; /*!< first cell of each block; blk_c0[nblk] = ncells */
   size_t *blk_lo; /*!< the first particle a block's pairs reach ... */
   size_t *blk_hi; /*!< ... and one past its last */
-  int owned;      /*!< key's block is from a set's allocation, of cap_n
-                       entries (vsph_cells_build_owned, internal) */
+  int owned;      /*!< key's block is from a set's allocation, of
+                       exactly cap_n entries, that set's capacity (the
+                       integrator's builds; internal) */
 };
 
 /** @brief Particles per block of a sweep: enough blocks for any thread

@@ -114,6 +114,16 @@ struct vsph_integrate *vsph_integrate_alloc(
     vsph_particles_free(fluid);
     return NULL;
   }
+  /* the transport-velocity scheme reads every neighbour's transport
+   * velocity, which a ghost (mirrored or periodic image) does not carry:
+   * it runs beside wall particles only (as the run layer requires) */
+  if (ip->eq.tvf && ip->walls.n > 0 && !ip->walls.solid) {
+    vsph_status_report(VSPH_EINVAL, __FILE__, __LINE__,
+                       "the transport-velocity scheme needs wall particles, "
+                       "not ghost walls");
+    vsph_particles_free(fluid);
+    return NULL;
+  }
   struct vsph_integrate *s = calloc(1, sizeof *s);
   if (!s) {
     vsph_status_report(VSPH_ENOMEM, __FILE__, __LINE__,

@@ -73,8 +73,10 @@ struct vsph_integrate {
 /** @brief Take ownership of the fluid set @p fluid (ids 0..n-1) and set up
  *  the integrator. With walls, the set grows (vsph_particles_reserve) to
  *  hold the ghosts each step needs, counted before they are made, so the
- *  memory follows the ghosts there are rather than a worst case. NULL
- *  (after reporting) on failure; @p fluid is freed in every case. */
+ *  memory follows the ghosts there are rather than a worst case. The
+ *  transport-velocity scheme (eq.tvf) takes wall particles (walls.solid),
+ *  not ghost walls: a ghost carries no transport velocity. NULL (after
+ *  reporting) on failure or bad input; @p fluid is freed in every case. */
 VSPH_API struct vsph_integrate *vsph_integrate_alloc(
     const struct vsph_integrate_props *ip, struct vsph_particles *fluid);
 

@@ -44,8 +44,10 @@ static inline size_t vsph_share_next(struct vsph_share *s) {
   const int t = omp_get_thread_num() % s->nt;
   for (int k = 0; k < s->nt; k++) {
     const int v = (t + k) % s->nt;
-    if (s->next[v] >= s->end[v]) continue; /* a stale look: re-checked */
     size_t b;
+#pragma omp atomic read
+    b = s->next[v];
+    if (b >= s->end[v]) continue; /* spent (a counter only grows) */
 #pragma omp atomic capture
     b = s->next[v]++;
     if (b < s->end[v]) return b;

@@ -416,9 +416,11 @@ size_t vsph_walls_count(const struct vsph_walls *w,
 }
 
 /* A new ghost's arrays that image() does not set (its rates, transport
- * velocity and background pressure's acceleration: no evaluation reads a
- * ghost's) set to 0, so that every array of the set is the same whatever
- * its slot held before. */
+ * velocity and background pressure's acceleration; no evaluation reads a
+ * ghost's rates, and the transport-velocity scheme, which reads its
+ * neighbours' transport velocity, runs beside wall particles only:
+ * vsph_integrate_alloc) set to 0, so that every array of the set is the
+ * same whatever its slot held before. */
 static void rates_cleared(struct vsph_particles *p, size_t i) {
   for (int k = 0; k < p->dim; k++) {
     p->acc[k][i] = 0.0;

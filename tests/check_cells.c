@@ -369,6 +369,20 @@ START_TEST(test_cells_build_owned) {
         ck_assert_uint_eq(a->mat[i], b->mat[i]);
       }
     }
+    /* one cell list for two sets of other capacities in turn (its
+     * scratch then sized anew for each: under the sanitizers' build an
+     * overrun would show) */
+    struct vsph_particles *small = scrambled_set(n / 3, 0.0),
+                          *again = scrambled_set(n / 3, 0.0);
+    ck_assert_int_eq(vsph_cells_build_owned(cb, small, 0.025), 0);
+    ck_assert_int_eq(vsph_cells_build(ca, again, 0.025), 0);
+    for (size_t i = 0; i < small->n; i++)
+      ck_assert_uint_eq(small->id[i], again->id[i]);
+    ck_assert_int_eq(vsph_cells_build_owned(cb, b, 0.025), 0);
+    ck_assert_int_eq(vsph_cells_build(ca, a, 0.025), 0);
+    for (size_t i = 0; i < n; i++) ck_assert_uint_eq(a->id[i], b->id[i]);
+    vsph_particles_free(small);
+    vsph_particles_free(again);
     vsph_cells_free(ca);
     vsph_cells_free(cb);
     vsph_particles_free(a);

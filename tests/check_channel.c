@@ -7,12 +7,14 @@
 #include <gsl/gsl_vector.h>
 #include <math.h>
 #include <omp.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "../analysis/references.h"
 #include "../common/consts.h"
 #include "../common/params.h"
+#include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "../solver/cells.h"
 #include "../solver/cells_internal.h"
@@ -901,6 +903,48 @@ START_TEST(test_generate_moved_is_generate) {
 }
 END_TEST
 
+static char tvf_msg[256];
+static void keep_tvf_msg(int status, const char *file, int line,
+                         const char *msg) {
+  (void)status, (void)file, (void)line;
+  snprintf(tvf_msg, sizeof tvf_msg, "%s", msg);
+}
+
+/* vsph_integrate_alloc refuses the transport-velocity scheme with ghost
+ * walls (a ghost carries no transport velocity, which the scheme reads of
+ * every neighbour), naming why, and frees the fluid; with the cavity's
+ * wall particles it takes it. */
+START_TEST(test_tvf_needs_wall_particles) {
+  const struct vsph_scene_type *types[2] = {&vsph_channel_poiseuille_type,
+                                            &vsph_cavity_type};
+  for (int c = 0; c < 2; c++) {
+    struct vsph_scene sc;
+    ck_assert_int_eq(vsph_scene_init(&sc, types[c], NULL), 0);
+    if (c == 1) sc.walls.solid = VSPH_WALLS_ADAMI;
+    struct vsph_particles *fluid = NULL;
+    ck_assert_int_eq(sc.type->init(&sc, 10, &fluid), 0);
+    struct vsph_integrate_props ip;
+    ck_assert_int_eq(
+        vsph_scene_integrate_props(&sc, VSPH_VISCOUS_MGF, &vsph_quintic_type,
+                                   VSPH_CONSTS_HDX / 10.0, &ip),
+        0);
+    ip.eq.tvf = 1;
+    tvf_msg[0] = '\0';
+    vsph_status_handler_fn *old = vsph_status_set_handler(keep_tvf_msg);
+    struct vsph_integrate *s = vsph_integrate_alloc(&ip, fluid);
+    vsph_status_set_handler(old);
+    if (c == 0) {
+      ck_assert_ptr_null(s);
+      ck_assert_msg(strstr(tvf_msg, "needs wall particles, not ghost walls"),
+                    "%s", tvf_msg);
+    } else {
+      ck_assert_ptr_nonnull(s);
+      vsph_integrate_free(s);
+    }
+  }
+}
+END_TEST
+
 Suite *vsph_channel_suite(void) {
   Suite *s = suite_create("channel");
   TCase *tc = tcase_create("internal");
@@ -928,6 +972,7 @@ Suite *vsph_walls_suite(void) {
   tcase_add_test(tc, test_linear_extrapolation_seam);
   tcase_add_test(tc, test_generate_moves_every_field);
   tcase_add_test(tc, test_generate_moved_is_generate);
+  tcase_add_test(tc, test_tvf_needs_wall_particles);
   tcase_add_test(tc, test_periodic_rest_threads);
   tcase_add_test(tc, test_fixed_walls);
   tcase_add_loop_test(tc, test_startup_walls, 0, 3);
