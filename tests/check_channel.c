@@ -903,6 +903,23 @@ START_TEST(test_generate_moved_is_generate) {
 }
 END_TEST
 
+/* Scene @p type at @p res across (@p adami: with Adami et al.'s wall
+ * particles), its fluid into *@p fluid and its integrator's settings for
+ * MGF with kernel @p k at the paper's h/dx into @p ip. */
+static void scene_props(struct vsph_scene *sc,
+                        const struct vsph_scene_type *type, size_t res,
+                        const struct vsph_kernel_type *k, int adami,
+                        struct vsph_particles **fluid,
+                        struct vsph_integrate_props *ip) {
+  ck_assert_int_eq(vsph_scene_init(sc, type, NULL), 0);
+  if (adami) sc->walls.solid = VSPH_WALLS_ADAMI;
+  ck_assert_int_eq(sc->type->init(sc, res, fluid), 0);
+  ck_assert_int_eq(
+      vsph_scene_integrate_props(sc, VSPH_VISCOUS_MGF, k,
+                                 VSPH_CONSTS_HDX / (double)res, ip),
+      0);
+}
+
 static char tvf_msg[256];
 static void keep_tvf_msg(int status, const char *file, int line,
                          const char *msg) {
@@ -919,15 +936,9 @@ START_TEST(test_tvf_needs_wall_particles) {
                                             &vsph_cavity_type};
   for (int c = 0; c < 2; c++) {
     struct vsph_scene sc;
-    ck_assert_int_eq(vsph_scene_init(&sc, types[c], NULL), 0);
-    if (c == 1) sc.walls.solid = VSPH_WALLS_ADAMI;
     struct vsph_particles *fluid = NULL;
-    ck_assert_int_eq(sc.type->init(&sc, 10, &fluid), 0);
     struct vsph_integrate_props ip;
-    ck_assert_int_eq(
-        vsph_scene_integrate_props(&sc, VSPH_VISCOUS_MGF, &vsph_quintic_type,
-                                   VSPH_CONSTS_HDX / 10.0, &ip),
-        0);
+    scene_props(&sc, types[c], 10, &vsph_quintic_type, c == 1, &fluid, &ip);
     ip.eq.tvf = 1;
     tvf_msg[0] = '\0';
     vsph_status_handler_fn *old = vsph_status_set_handler(keep_tvf_msg);
@@ -992,14 +1003,10 @@ Suite *vsph_walls_suite(void) {
  * another order). */
 START_TEST(test_row_memory) {
   struct vsph_scene sc;
-  ck_assert_int_eq(vsph_scene_init(&sc, &vsph_stretching_square_type, NULL), 0);
   struct vsph_particles *fluid = NULL;
-  ck_assert_int_eq(sc.type->init(&sc, 40, &fluid), 0);
   struct vsph_integrate_props ip;
-  ck_assert_int_eq(
-      vsph_scene_integrate_props(&sc, VSPH_VISCOUS_MGF, &vsph_gaussian_type,
-                                 VSPH_CONSTS_HDX / 40.0, &ip),
-      0);
+  scene_props(&sc, &vsph_stretching_square_type, 40, &vsph_gaussian_type, 0,
+              &fluid, &ip);
   ip.eq.delta = 0.1;
   struct vsph_integrate *s = vsph_integrate_alloc(&ip, fluid);
   ck_assert_ptr_nonnull(s);
