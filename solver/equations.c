@@ -113,47 +113,50 @@ static void corr_pass(const struct vsph_equations_props *ep,
   const int dim = p->dim, bl = ep->corr == VSPH_PAIR_CORR_BONETLOK;
   const struct vsph_kernel_type *k = ep->visc.kernel;
   const double h = ep->visc.h, wf = pow(h, -dim);
-#pragma omp parallel for schedule(dynamic, 8)
-  for (size_t c = 0; c < cells->ncells; c++) {
-    struct vsph_pair_ranges rg;
-    vsph_pair_ranges_cell(&rg, cells, c);
-    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-         i++) {
-      if (p->id[i] >= n_fluid) continue;
-      double S = p->vol[i] * w0, a[3] = {0, 0, 0}, M[9] = {0},
-             L[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-      struct vsph_pair_iter it;
-      struct vsph_pair_chunk b;
-      for (int pass = 0; pass < 1 + bl; pass++) {
-        vsph_pair_begin(&it, pk, p, &rg, i);
-        while (vsph_pair_gather(&it, dim, pk->dfq_id, &b))
-          for (size_t q = 0; q < b.m; q++) {
-            struct vsph_pair pr;
-            vsph_pair_at(&b, q, dim, &pr);
-            const double vj = p->vol[pr.j];
-            const double w = vsph_kernel_w(k, dim, sqrt(pr.s2) / h) * wf;
-            if (pass == 0) {
-              S += vj * w;
-              for (int e = 0; e < dim; e++) a[e] -= vj * pr.F * pr.x[e];
-              continue;
+  struct vsph_share sh; /* the build's blocks, owner first */
+  vsph_share_init(&sh, cells->nblk);
+#pragma omp parallel
+  for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
+    for (size_t c = cells->blk_c0[blk]; c < cells->blk_c0[blk + 1]; c++) {
+      struct vsph_pair_ranges rg;
+      vsph_pair_ranges_cell(&rg, cells, c);
+      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+           i++) {
+        if (p->id[i] >= n_fluid) continue;
+        double S = p->vol[i] * w0, a[3] = {0, 0, 0}, M[9] = {0},
+               L[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+        struct vsph_pair_iter it;
+        struct vsph_pair_chunk b;
+        for (int pass = 0; pass < 1 + bl; pass++) {
+          vsph_pair_begin(&it, pk, p, &rg, i);
+          while (vsph_pair_gather(&it, dim, pk->dfq_id, &b))
+            for (size_t q = 0; q < b.m; q++) {
+              struct vsph_pair pr;
+              vsph_pair_at(&b, q, dim, &pr);
+              const double vj = p->vol[pr.j];
+              const double w = vsph_kernel_w(k, dim, sqrt(pr.s2) / h) * wf;
+              if (pass == 0) {
+                S += vj * w;
+                for (int e = 0; e < dim; e++) a[e] -= vj * pr.F * pr.x[e];
+                continue;
+              }
+              double g0[3];
+              vsph_pair_corr_grad(&pr, dim, w, S, a, NULL, 0, g0);
+              for (int e = 0; e < dim; e++)
+                for (int f = 0; f < dim; f++)
+                  M[e * dim + f] += vj * g0[e] * pr.x[f];
             }
-            double g0[3];
-            vsph_pair_corr_grad(&pr, dim, w, S, a, NULL, 0, g0);
-            for (int e = 0; e < dim; e++)
-              for (int f = 0; f < dim; f++)
-                M[e * dim + f] += vj * g0[e] * pr.x[f];
-          }
+        }
+        if (bl) {
+          for (int e = 0; e < 9; e++) L[e] = 0.0;
+          for (int e = 0; e < dim; e++) L[e * dim + e] = 1.0;
+          vsph_viscous_invert_sym(dim, M, L, ep->visc.det_tol);
+        }
+        ws->S[i] = S;
+        for (int e = 0; e < dim; e++) ws->a[e][i] = a[e];
+        for (int e = 0; e < dim * dim; e++) ws->L[e][i] = L[e];
       }
-      if (bl) {
-        for (int e = 0; e < 9; e++) L[e] = 0.0;
-        for (int e = 0; e < dim; e++) L[e * dim + e] = 1.0;
-        vsph_viscous_invert_sym(dim, M, L, ep->visc.det_tol);
-      }
-      ws->S[i] = S;
-      for (int e = 0; e < dim; e++) ws->a[e][i] = a[e];
-      for (int e = 0; e < dim * dim; e++) ws->L[e][i] = L[e];
     }
-  }
 }
 
 /* One fluid particle of contact SPH (Parshikov et al. eqs. 5, 6, 35;
@@ -334,14 +337,17 @@ static void run_cells(const struct vsph_equations_ctx *rc,
                       struct vsph_equations_out *out) {
   size_t total = 0;
   double min_s2 = INFINITY;
-  /* integer sum and min: exact, so the same for any thread count */
-#pragma omp parallel for schedule(dynamic, 8) reduction(+ : total) \
-    reduction(min : min_s2)
-  for (size_t c = 0; c < cells->ncells; c++) {
-    double m;
-    total += cell_loop(rc, p, cells, c, n_fluid, out, &m);
-    min_s2 = m < min_s2 ? m : min_s2;
-  }
+  /* integer sum and min: exact, so the same for any thread count; the
+   * cells by the build's blocks, each thread its own first */
+  struct vsph_share sh;
+  vsph_share_init(&sh, cells->nblk);
+#pragma omp parallel reduction(+ : total) reduction(min : min_s2)
+  for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
+    for (size_t c = cells->blk_c0[b]; c < cells->blk_c0[b + 1]; c++) {
+      double m;
+      total += cell_loop(rc, p, cells, c, n_fluid, out, &m);
+      min_s2 = m < min_s2 ? m : min_s2;
+    }
   out->interactions = total;
   out->min_s2 = min_s2;
 }
@@ -985,21 +991,24 @@ void vsph_equations_density_sum(const struct vsph_equations_props *ep,
   vsph_pair_kernel_init(&pk, k, dim, h);
   const int shape = adami_shape(ep, &pk, dim);
   /* the fluid's sweep of the Adami walls (no wall is read there) */
-#pragma omp parallel for schedule(dynamic, 8)
-  for (size_t c = 0; c < cells->ncells; c++) {
-    struct vsph_pair_ranges rg;
-    vsph_pair_ranges_cell(&rg, cells, c);
-    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-         i++) {
-      if (p->id[i] >= n_fluid) continue;
-      if (shape == SHAPE_QUINTIC2)
-        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_QUINTIC2);
-      else if (shape == SHAPE_CUBIC2)
-        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_CUBIC2);
-      else
-        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_GENERAL);
+  struct vsph_share sh; /* the build's blocks, owner first */
+  vsph_share_init(&sh, cells->nblk);
+#pragma omp parallel
+  for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
+    for (size_t c = cells->blk_c0[blk]; c < cells->blk_c0[blk + 1]; c++) {
+      struct vsph_pair_ranges rg;
+      vsph_pair_ranges_cell(&rg, cells, c);
+      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+           i++) {
+        if (p->id[i] >= n_fluid) continue;
+        if (shape == SHAPE_QUINTIC2)
+          adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_QUINTIC2);
+        else if (shape == SHAPE_CUBIC2)
+          adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_CUBIC2);
+        else
+          adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_GENERAL);
+      }
     }
-  }
 }
 
 int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
@@ -1020,27 +1029,30 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
   /* two sweeps: the fluid (density, pressure, volume), then the walls,
    * which read the fluid's pressure */
   for (int sweep = 0; sweep < 2; sweep++) {
-#pragma omp parallel for schedule(dynamic, 8)
-    for (size_t c = 0; c < cells->ncells; c++) {
-      struct vsph_pair_ranges rg;
-      vsph_pair_ranges_cell(&rg, cells, c);
-      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-           i++) {
-        const int wall = p->id[i] >= n_fluid;
-        if (wall != sweep) continue;
-        if (!wall && !ep->summation && !ep->tvf) { /* continuity's density */
-          p->p[i] = vsph_equations_pressure(ep, p->rho[i], 0.0);
-          p->vol[i] = p->m[i] / p->rho[i];
-          continue;
+    struct vsph_share sh; /* the build's blocks, owner first */
+    vsph_share_init(&sh, cells->nblk);
+#pragma omp parallel
+    for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
+      for (size_t c = cells->blk_c0[b]; c < cells->blk_c0[b + 1]; c++) {
+        struct vsph_pair_ranges rg;
+        vsph_pair_ranges_cell(&rg, cells, c);
+        for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+             i++) {
+          const int wall = p->id[i] >= n_fluid;
+          if (wall != sweep) continue;
+          if (!wall && !ep->summation && !ep->tvf) { /* continuity's density */
+            p->p[i] = vsph_equations_pressure(ep, p->rho[i], 0.0);
+            p->vol[i] = p->m[i] / p->rho[i];
+            continue;
+          }
+          if (shape == SHAPE_QUINTIC2)
+            adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_QUINTIC2);
+          else if (shape == SHAPE_CUBIC2)
+            adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_CUBIC2);
+          else
+            adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_GENERAL);
         }
-        if (shape == SHAPE_QUINTIC2)
-          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_QUINTIC2);
-        else if (shape == SHAPE_CUBIC2)
-          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_CUBIC2);
-        else
-          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_GENERAL);
       }
-    }
   }
   return VSPH_OK;
 }
@@ -1114,19 +1126,22 @@ void vsph_equations_xsph(const struct vsph_equations_props *ep,
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, k, dim, h);
   const int cubic = adami_shape(ep, &pk, dim) == SHAPE_CUBIC2;
-#pragma omp parallel for schedule(dynamic, 8)
-  for (size_t c = 0; c < cells->ncells; c++) {
-    struct vsph_pair_ranges rg;
-    vsph_pair_ranges_cell(&rg, cells, c);
-    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-         i++) {
-      if (p->id[i] >= n_fluid) continue;
-      if (cubic)
-        xsph_one(ep, p, &pk, &rg, i, eps, wf, w, SHAPE_CUBIC2);
-      else
-        xsph_one(ep, p, &pk, &rg, i, eps, wf, w, SHAPE_GENERAL);
+  struct vsph_share sh; /* the build's blocks, owner first */
+  vsph_share_init(&sh, cells->nblk);
+#pragma omp parallel
+  for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
+    for (size_t c = cells->blk_c0[blk]; c < cells->blk_c0[blk + 1]; c++) {
+      struct vsph_pair_ranges rg;
+      vsph_pair_ranges_cell(&rg, cells, c);
+      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+           i++) {
+        if (p->id[i] >= n_fluid) continue;
+        if (cubic)
+          xsph_one(ep, p, &pk, &rg, i, eps, wf, w, SHAPE_CUBIC2);
+        else
+          xsph_one(ep, p, &pk, &rg, i, eps, wf, w, SHAPE_GENERAL);
+      }
     }
-  }
 }
 
 int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
@@ -1157,14 +1172,18 @@ int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
         p->p[i] = vsph_equations_pressure(ep, p->rho[i], 0.0);
         p->vol[i] = p->m[i] / p->rho[i];
       }
-      /* the walls' continuity rates read the fluid's volumes */
-#pragma omp parallel for schedule(dynamic, 8)
-  for (size_t c = 0; c < cells->ncells; c++) {
-    struct vsph_pair_ranges rg;
-    vsph_pair_ranges_cell(&rg, cells, c);
-    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c]; i++)
-      if (p->id[i] >= n_fluid) evolving_one(p, n_fluid, &pk, &rg, i);
-  }
+  /* the walls' continuity rates read the fluid's volumes */
+  struct vsph_share sh; /* the build's blocks, owner first */
+  vsph_share_init(&sh, cells->nblk);
+#pragma omp parallel
+  for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
+    for (size_t c = cells->blk_c0[blk]; c < cells->blk_c0[blk + 1]; c++) {
+      struct vsph_pair_ranges rg;
+      vsph_pair_ranges_cell(&rg, cells, c);
+      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+           i++)
+        if (p->id[i] >= n_fluid) evolving_one(p, n_fluid, &pk, &rg, i);
+    }
   return VSPH_OK;
 }
 

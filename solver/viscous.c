@@ -14,6 +14,7 @@
 #include "forms/forms.h"
 #include "pair.h"
 #include "particles.h"
+#include "share_internal.h"
 #include "viscous_internal.h"
 
 /* Every formulation (docs/theory.md, sections 3 and 8), each described
@@ -307,13 +308,16 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
   vsph_viscous_first_fn *const first = vsph_viscous_types[vp->form]->first;
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, vp->kernel, vp->dim, vp->h);
-#pragma omp parallel for schedule(dynamic, 8)
-  for (size_t c = 0; c < cells->ncells; c++) {
-    struct vsph_pair_ranges rg;
-    vsph_pair_ranges_cell(&rg, cells, c);
-    const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
-    for (size_t i = i0; i < i1; i++) first(vp, &pk, p, &rg, i, ws);
-  }
+  struct vsph_share sh; /* the build's blocks, owner first */
+  vsph_share_init(&sh, cells->nblk);
+#pragma omp parallel
+  for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
+    for (size_t c = cells->blk_c0[blk]; c < cells->blk_c0[blk + 1]; c++) {
+      struct vsph_pair_ranges rg;
+      vsph_pair_ranges_cell(&rg, cells, c);
+      const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
+      for (size_t i = i0; i < i1; i++) first(vp, &pk, p, &rg, i, ws);
+    }
   size_t nf = 0; /* serial: reproducible */
   for (size_t i = 0; i < p->n; i++) nf += ws->fallback[i];
   ws->n_fallback = nf;
@@ -343,11 +347,15 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
   vsph_viscous_cell_fn *const fn =
       own && dim == 2 && pk.dfq_id == G ? own->force : NULL;
   const double *const fd = first ? ws->dens : NULL;
-#pragma omp parallel for schedule(dynamic, 8)
-  for (size_t c = 0; c < cells->ncells; c++)
-    if (fn)
-      fn(&lp, &pk, p, cells, c, out, dens, fd);
-    else
-      force_cell(&lp, &pk, p, cells, c, out, dens, fd, dim, lp.pair, pk.dfq_id);
+  struct vsph_share sh; /* the build's blocks, owner first */
+  vsph_share_init(&sh, cells->nblk);
+#pragma omp parallel
+  for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
+    for (size_t c = cells->blk_c0[b]; c < cells->blk_c0[b + 1]; c++)
+      if (fn)
+        fn(&lp, &pk, p, cells, c, out, dens, fd);
+      else
+        force_cell(&lp, &pk, p, cells, c, out, dens, fd, dim, lp.pair,
+                   pk.dfq_id);
   return VSPH_OK;
 }
