@@ -57,10 +57,11 @@ struct vsph_cells {
                        integrator's builds; internal) */
 };
 
-/** @brief Particles per block of a sweep: enough blocks for any thread
- *  count to share out (32 at 42 000 particles), few enough that the
- *  buffers' overlap (a block's neighbours reach about two cell rows beyond
- *  it) stays small. A function of the particle count alone: never of the
+/** @brief Particles per block of a sweep: enough blocks for a few threads
+ *  to share out (32 at 42 000 particles: a machine with more threads than
+ *  blocks leaves some idle in the sweep), few enough that the buffers'
+ *  overlap (a block's neighbours reach about two cell rows beyond it)
+ *  stays small. A function of the particle count alone: never of the
  *  threads. */
 static inline size_t vsph_cells_block_size(size_t n) {
   const size_t t = n / 32;

@@ -113,11 +113,12 @@ static void corr_pass(const struct vsph_equations_props *ep,
   const int dim = p->dim, bl = ep->corr == VSPH_PAIR_CORR_BONETLOK;
   const struct vsph_kernel_type *k = ep->visc.kernel;
   const double h = ep->visc.h, wf = pow(h, -dim);
-  struct vsph_share sh; /* the build's blocks, owner first */
-  vsph_share_init(&sh, cells->nblk);
+  struct vsph_share sh; /* runs of cells, owner first */
+  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
 #pragma omp parallel
   for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = cells->blk_c0[blk]; c < cells->blk_c0[blk + 1]; c++) {
+    for (size_t c = blk * VSPH_SHARE_CELLS;
+         c < vsph_share_run_end(blk, cells->ncells); c++) {
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
@@ -338,12 +339,13 @@ static void run_cells(const struct vsph_equations_ctx *rc,
   size_t total = 0;
   double min_s2 = INFINITY;
   /* integer sum and min: exact, so the same for any thread count; the
-   * cells by the build's blocks, each thread its own first */
+   * cells in runs, each thread its own first */
   struct vsph_share sh;
-  vsph_share_init(&sh, cells->nblk);
+  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
 #pragma omp parallel reduction(+ : total) reduction(min : min_s2)
   for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = cells->blk_c0[b]; c < cells->blk_c0[b + 1]; c++) {
+    for (size_t c = b * VSPH_SHARE_CELLS;
+         c < vsph_share_run_end(b, cells->ncells); c++) {
       double m;
       total += cell_loop(rc, p, cells, c, n_fluid, out, &m);
       min_s2 = m < min_s2 ? m : min_s2;
@@ -991,11 +993,12 @@ void vsph_equations_density_sum(const struct vsph_equations_props *ep,
   vsph_pair_kernel_init(&pk, k, dim, h);
   const int shape = adami_shape(ep, &pk, dim);
   /* the fluid's sweep of the Adami walls (no wall is read there) */
-  struct vsph_share sh; /* the build's blocks, owner first */
-  vsph_share_init(&sh, cells->nblk);
+  struct vsph_share sh; /* runs of cells, owner first */
+  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
 #pragma omp parallel
   for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = cells->blk_c0[blk]; c < cells->blk_c0[blk + 1]; c++) {
+    for (size_t c = blk * VSPH_SHARE_CELLS;
+         c < vsph_share_run_end(blk, cells->ncells); c++) {
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
@@ -1029,11 +1032,12 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
   /* two sweeps: the fluid (density, pressure, volume), then the walls,
    * which read the fluid's pressure */
   for (int sweep = 0; sweep < 2; sweep++) {
-    struct vsph_share sh; /* the build's blocks, owner first */
-    vsph_share_init(&sh, cells->nblk);
+    struct vsph_share sh; /* runs of cells, owner first */
+    vsph_share_init(&sh, vsph_share_runs(cells->ncells));
 #pragma omp parallel
     for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
-      for (size_t c = cells->blk_c0[b]; c < cells->blk_c0[b + 1]; c++) {
+      for (size_t c = b * VSPH_SHARE_CELLS;
+           c < vsph_share_run_end(b, cells->ncells); c++) {
         struct vsph_pair_ranges rg;
         vsph_pair_ranges_cell(&rg, cells, c);
         for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
@@ -1126,11 +1130,12 @@ void vsph_equations_xsph(const struct vsph_equations_props *ep,
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, k, dim, h);
   const int cubic = adami_shape(ep, &pk, dim) == SHAPE_CUBIC2;
-  struct vsph_share sh; /* the build's blocks, owner first */
-  vsph_share_init(&sh, cells->nblk);
+  struct vsph_share sh; /* runs of cells, owner first */
+  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
 #pragma omp parallel
   for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = cells->blk_c0[blk]; c < cells->blk_c0[blk + 1]; c++) {
+    for (size_t c = blk * VSPH_SHARE_CELLS;
+         c < vsph_share_run_end(blk, cells->ncells); c++) {
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
@@ -1173,11 +1178,12 @@ int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
         p->vol[i] = p->m[i] / p->rho[i];
       }
   /* the walls' continuity rates read the fluid's volumes */
-  struct vsph_share sh; /* the build's blocks, owner first */
-  vsph_share_init(&sh, cells->nblk);
+  struct vsph_share sh; /* runs of cells, owner first */
+  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
 #pragma omp parallel
   for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = cells->blk_c0[blk]; c < cells->blk_c0[blk + 1]; c++) {
+    for (size_t c = blk * VSPH_SHARE_CELLS;
+         c < vsph_share_run_end(blk, cells->ncells); c++) {
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];

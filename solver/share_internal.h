@@ -3,12 +3,12 @@
 #ifndef VSPH_SOLVER_SHARE_INTERNAL_H
 #define VSPH_SOLVER_SHARE_INTERNAL_H
 
-/* The sweep's blocks shared out among threads, owner first (within
- * solver/ only). Thread t of T owns the blocks [t nblk / T, (t + 1) nblk
- * / T): about the run of particles a static loop over them gives it, so
- * the thread that sweeps a block's pairs is the one that sums its
- * particles' rows and moves them in the integrator's stages, and their
- * arrays stay in its core's cache. It takes its own blocks in order, then
+/* The sweep's blocks (and the gathers' runs of cells, below) shared out
+ * among threads, owner first (within solver/ only). Thread t of T owns the
+ * blocks [t nblk / T, (t + 1) nblk / T): about the run of particles a static
+ * loop over them gives it, so the thread that sweeps a block's pairs is the one
+ * that sums its particles' rows and moves them in the integrator's stages, and
+ * their arrays stay in its core's cache. It takes its own blocks in order, then
  * the next ones of the other threads' (a thread that lost its core to
  * another process holds no one up, as with a dynamic schedule). Which
  * thread does a block never changes what the block computes. */
@@ -53,6 +53,23 @@ static inline size_t vsph_share_next(struct vsph_share *s) {
     if (b < s->end[v]) return b;
   }
   return SIZE_MAX;
+}
+
+/* The gathers' cells, shared out the same way in runs of this many
+ * consecutive cells (a run of cells is a run of particles, the particles
+ * being sorted by cell): as fine as the dynamic schedule's chunks they
+ * replace, so that any thread count finds work. */
+#define VSPH_SHARE_CELLS 8
+
+/* The runs of @p ncells cells (vsph_share_init's blocks). */
+static inline size_t vsph_share_runs(size_t ncells) {
+  return (ncells + VSPH_SHARE_CELLS - 1) / VSPH_SHARE_CELLS;
+}
+
+/* One past the last cell of run @p r of @p ncells cells. */
+static inline size_t vsph_share_run_end(size_t r, size_t ncells) {
+  const size_t e = (r + 1) * VSPH_SHARE_CELLS;
+  return e < ncells ? e : ncells;
 }
 
 #endif /* VSPH_SOLVER_SHARE_INTERNAL_H */

@@ -308,11 +308,12 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
   vsph_viscous_first_fn *const first = vsph_viscous_types[vp->form]->first;
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, vp->kernel, vp->dim, vp->h);
-  struct vsph_share sh; /* the build's blocks, owner first */
-  vsph_share_init(&sh, cells->nblk);
+  struct vsph_share sh; /* runs of cells, owner first */
+  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
 #pragma omp parallel
   for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = cells->blk_c0[blk]; c < cells->blk_c0[blk + 1]; c++) {
+    for (size_t c = blk * VSPH_SHARE_CELLS;
+         c < vsph_share_run_end(blk, cells->ncells); c++) {
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
@@ -347,11 +348,12 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
   vsph_viscous_cell_fn *const fn =
       own && dim == 2 && pk.dfq_id == G ? own->force : NULL;
   const double *const fd = first ? ws->dens : NULL;
-  struct vsph_share sh; /* the build's blocks, owner first */
-  vsph_share_init(&sh, cells->nblk);
+  struct vsph_share sh; /* runs of cells, owner first */
+  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
 #pragma omp parallel
   for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = cells->blk_c0[b]; c < cells->blk_c0[b + 1]; c++)
+    for (size_t c = b * VSPH_SHARE_CELLS;
+         c < vsph_share_run_end(b, cells->ncells); c++)
       if (fn)
         fn(&lp, &pk, p, cells, c, out, dens, fd);
       else
