@@ -3,6 +3,7 @@
 #include "cells.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -145,6 +146,7 @@ int vsph_cells_build_direct(struct vsph_cells *c,
   if (!c || !p)
     VSPH_FAIL(VSPH_EINVAL, "vsph_cells_build_direct: a NULL argument");
   c->nblk = 0; /* no blocks until this build has its own */
+  c->blk_n = SIZE_MAX;
   int st = reserve_cells(c, 1);
   if (st) return st;
   c->dim = p->dim;
@@ -164,7 +166,12 @@ static int build(struct vsph_cells *c, struct vsph_particles *p, double radius,
                  int owned) {
   const int dim = p->dim;
   const size_t n = p->n;
-  c->nblk = 0; /* no blocks until this build has its own */
+  /* no cells nor blocks until this build has its own: a failed build
+   * leaves an empty list that a sweep refuses (blk_n), not the last one's
+   * counts over arrays it may have outgrown */
+  c->nblk = 0;
+  c->ncells = 0;
+  c->blk_n = SIZE_MAX;
   if (!(radius > 0.0) || !isfinite(radius))
     VSPH_FAIL(VSPH_EINVAL, "cell radius must be positive, got %g", radius);
   /* the bounding box: a minimum and a maximum are exact in any order, so
@@ -212,7 +219,6 @@ static int build(struct vsph_cells *c, struct vsph_particles *p, double radius,
   c->dim = dim;
   c->direct = 0;
   c->edge = edge;
-  c->ncells = ncells;
   for (int k = 0; k < 3; k++) {
     c->lo[k] = lo[k];
     c->nc[k] = k < dim ? (size_t)floor((hi[k] - lo[k]) / edge) + 1 : 1;
@@ -220,6 +226,7 @@ static int build(struct vsph_cells *c, struct vsph_particles *p, double radius,
   int st = reserve_cells(c, ncells);
   if (!st) st = owned ? reserve_owned(c, p->cap) : reserve_particles(c, n);
   if (st) return st;
+  c->ncells = ncells;
   /* one block for the three (a move since the last build, through
    * vsph_cells_lend, may have swapped it) */
   c->dscratch = (double *)c->key;

@@ -230,6 +230,10 @@ START_TEST(test_cells_first_bad_particle_named) {
     ck_assert_int_eq(vsph_cells_build(c, p, 0.03), VSPH_EINVAL);
     ck_assert_msg(strstr(last_msg, "particle 1003 has a non-finite position"),
                   "%d threads: %s", thr, last_msg);
+    /* the failed build leaves an empty list, not the last one's cells */
+    ck_assert_uint_eq(c->ncells, 0);
+    ck_assert_uint_eq(c->nblk, 0);
+    ck_assert_uint_ne(c->blk_n, n);
   }
   vsph_status_set_handler(old);
   vsph_cells_free(c);
