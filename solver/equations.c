@@ -939,12 +939,15 @@ VSPH_CONSTS_SPECIALISE void adami_one(const struct vsph_equations_props *ep,
                          : cubic ? sig * vsph_kernel_f_cubic(s)
                                  : vsph_kernel_w(k, dim, s)) *
                         wf;
-      const double wk = id[j] < n_fluid ? w1 : 0.0;
+      /* a wall neighbour weighs 0, and its p and u (which this sweep
+       * writes, on another thread perhaps) are not read */
+      const int fj = id[j] < n_fluid;
+      const double wk = fj ? w1 : 0.0;
       S += wk;
-      sp += pp[j] * wk;
-      su0 += v0[j] * wk;
-      if (dim > 1) su1 += v1[j] * wk;
-      if (dim > 2) su2 += v2[j] * wk;
+      sp += (fj ? pp[j] : 0.0) * wk;
+      su0 += (fj ? v0[j] : 0.0) * wk;
+      if (dim > 1) su1 += (fj ? v1[j] : 0.0) * wk;
+      if (dim > 2) su2 += (fj ? v2[j] : 0.0) * wk;
     }
   }
   su[0] = su0, su[1] = su1, su[2] = su2;
