@@ -114,11 +114,10 @@ static void corr_pass(const struct vsph_equations_props *ep,
   const struct vsph_kernel_type *k = ep->visc.kernel;
   const double h = ep->visc.h, wf = pow(h, -dim);
   struct vsph_share sh; /* runs of cells, owner first */
-  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
+  vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = blk * VSPH_SHARE_CELLS;
-         c < vsph_share_run_end(blk, cells->ncells); c++) {
+  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
+    for (size_t c = c0; c < c1; c++) {
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
@@ -341,11 +340,10 @@ static void run_cells(const struct vsph_equations_ctx *rc,
   /* integer sum and min: exact, so the same for any thread count; the
    * cells in runs, each thread its own first */
   struct vsph_share sh;
-  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
+  vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel reduction(+ : total) reduction(min : min_s2)
-  for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = b * VSPH_SHARE_CELLS;
-         c < vsph_share_run_end(b, cells->ncells); c++) {
+  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
+    for (size_t c = c0; c < c1; c++) {
       double m;
       total += cell_loop(rc, p, cells, c, n_fluid, out, &m);
       min_s2 = m < min_s2 ? m : min_s2;
@@ -997,11 +995,10 @@ void vsph_equations_density_sum(const struct vsph_equations_props *ep,
   const int shape = adami_shape(ep, &pk, dim);
   /* the fluid's sweep of the Adami walls (no wall is read there) */
   struct vsph_share sh; /* runs of cells, owner first */
-  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
+  vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = blk * VSPH_SHARE_CELLS;
-         c < vsph_share_run_end(blk, cells->ncells); c++) {
+  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
+    for (size_t c = c0; c < c1; c++) {
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
@@ -1036,11 +1033,10 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
    * which read the fluid's pressure */
   for (int sweep = 0; sweep < 2; sweep++) {
     struct vsph_share sh; /* runs of cells, owner first */
-    vsph_share_init(&sh, vsph_share_runs(cells->ncells));
+    vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-    for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
-      for (size_t c = b * VSPH_SHARE_CELLS;
-           c < vsph_share_run_end(b, cells->ncells); c++) {
+    for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
+      for (size_t c = c0; c < c1; c++) {
         struct vsph_pair_ranges rg;
         vsph_pair_ranges_cell(&rg, cells, c);
         for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
@@ -1134,11 +1130,10 @@ void vsph_equations_xsph(const struct vsph_equations_props *ep,
   vsph_pair_kernel_init(&pk, k, dim, h);
   const int cubic = adami_shape(ep, &pk, dim) == SHAPE_CUBIC2;
   struct vsph_share sh; /* runs of cells, owner first */
-  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
+  vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = blk * VSPH_SHARE_CELLS;
-         c < vsph_share_run_end(blk, cells->ncells); c++) {
+  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
+    for (size_t c = c0; c < c1; c++) {
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
@@ -1182,11 +1177,10 @@ int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
       }
   /* the walls' continuity rates read the fluid's volumes */
   struct vsph_share sh; /* runs of cells, owner first */
-  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
+  vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = blk * VSPH_SHARE_CELLS;
-         c < vsph_share_run_end(blk, cells->ncells); c++) {
+  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
+    for (size_t c = c0; c < c1; c++) {
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];

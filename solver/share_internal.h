@@ -61,15 +61,20 @@ static inline size_t vsph_share_next(struct vsph_share *s) {
  * replace, so that any thread count finds work. */
 #define VSPH_SHARE_CELLS 8
 
-/* The runs of @p ncells cells (vsph_share_init's blocks). */
-static inline size_t vsph_share_runs(size_t ncells) {
-  return (ncells + VSPH_SHARE_CELLS - 1) / VSPH_SHARE_CELLS;
+/* Share @p ncells cells in runs (vsph_share_init's blocks are runs). */
+static inline void vsph_share_init_cells(struct vsph_share *s, size_t ncells) {
+  vsph_share_init(s, (ncells + VSPH_SHARE_CELLS - 1) / VSPH_SHARE_CELLS);
 }
 
-/* One past the last cell of run @p r of @p ncells cells. */
-static inline size_t vsph_share_run_end(size_t r, size_t ncells) {
-  const size_t e = (r + 1) * VSPH_SHARE_CELLS;
-  return e < ncells ? e : ncells;
+/* The calling thread's next run of cells [*c0, *c1) of @p ncells (a
+ * share from vsph_share_init_cells); 0 when none is left. */
+static inline int vsph_share_next_cells(struct vsph_share *s, size_t ncells,
+                                        size_t *c0, size_t *c1) {
+  const size_t r = vsph_share_next(s);
+  if (r == SIZE_MAX) return 0;
+  *c0 = r * VSPH_SHARE_CELLS;
+  *c1 = *c0 + VSPH_SHARE_CELLS < ncells ? *c0 + VSPH_SHARE_CELLS : ncells;
+  return 1;
 }
 
 #endif /* VSPH_SOLVER_SHARE_INTERNAL_H */

@@ -309,11 +309,10 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
   struct vsph_pair_kernel pk;
   vsph_pair_kernel_init(&pk, vp->kernel, vp->dim, vp->h);
   struct vsph_share sh; /* runs of cells, owner first */
-  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
+  vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t blk; (blk = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = blk * VSPH_SHARE_CELLS;
-         c < vsph_share_run_end(blk, cells->ncells); c++) {
+  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
+    for (size_t c = c0; c < c1; c++) {
       struct vsph_pair_ranges rg;
       vsph_pair_ranges_cell(&rg, cells, c);
       const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
@@ -349,11 +348,10 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
       own && dim == 2 && pk.dfq_id == G ? own->force : NULL;
   const double *const fd = first ? ws->dens : NULL;
   struct vsph_share sh; /* runs of cells, owner first */
-  vsph_share_init(&sh, vsph_share_runs(cells->ncells));
+  vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
-    for (size_t c = b * VSPH_SHARE_CELLS;
-         c < vsph_share_run_end(b, cells->ncells); c++)
+  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
+    for (size_t c = c0; c < c1; c++)
       if (fn)
         fn(&lp, &pk, p, cells, c, out, dens, fd);
       else
