@@ -3,6 +3,7 @@
 #include "cells.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -159,6 +160,44 @@ int vsph_cells_build_direct(struct vsph_cells *c,
   return plan_blocks(c, p->n);
 }
 
+/* The span of particles [i0, i1) along each axis, widened into @p lo and
+ * @p hi; bit k set if a position along axis k there is not finite. */
+static int span(const struct vsph_particles *p, size_t i0, size_t i1,
+                double lo[3], double hi[3]) {
+  int bad = 0;
+  for (int k = 0; k < p->dim; k++) {
+    const double *const x = p->pos[k];
+    double l = lo[k], h = hi[k];
+    for (size_t i = i0; i < i1; i++) {
+      bad |= !isfinite(x[i]) << k;
+      l = x[i] < l ? x[i] : l;
+      h = x[i] > h ? x[i] : h;
+    }
+    lo[k] = l;
+    hi[k] = h;
+  }
+  return bad;
+}
+
+/* The cell keys of particles [i0, i1) on @p c's grid (lo, edge, nc set). */
+static void keys(struct vsph_cells *c, const struct vsph_particles *p,
+                 size_t i0, size_t i1) {
+  /* the grid in locals: the keys' stores could alias c's counts */
+  const double lo[3] = {c->lo[0], c->lo[1], c->lo[2]}, edge = c->edge;
+  const size_t nc[3] = {c->nc[0], c->nc[1], c->nc[2]};
+  const int dim = p->dim;
+  size_t *const key = c->key;
+  for (size_t i = i0; i < i1; i++) {
+    size_t kk = 0;
+    for (int k = dim - 1; k >= 0; k--) {
+      size_t ck = (size_t)floor((p->pos[k][i] - lo[k]) / edge);
+      if (ck >= nc[k]) ck = nc[k] - 1;
+      kk = kk * nc[k] + ck;
+    }
+    key[i] = kk;
+  }
+}
+
 /* vsph_cells_build, and with @p owned, vsph_cells_build_owned: the
  * particles moved by swapping the set's arrays with the scratch block
  * (vsph_particles_move) instead of copied back. */
@@ -176,25 +215,28 @@ static int build(struct vsph_cells *c, struct vsph_particles *p, double radius,
     VSPH_FAIL(VSPH_EINVAL, "cell radius must be positive, got %g", radius);
   /* the bounding box: a minimum and a maximum are exact in any order, so
    * the threads' shares give the same box */
-  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-  for (int k = 0; k < dim; k++) {
-    const double *const x = p->pos[k];
-    double l = INFINITY, h = -INFINITY;
-    int bad = 0;
-#pragma omp parallel if (n >= VSPH_CELLS_PARALLEL)
-#pragma omp for reduction(min : l) reduction(max : h) reduction(| : bad)
-    for (size_t i = 0; i < n; i++) {
-      bad |= !isfinite(x[i]);
-      l = x[i] < l ? x[i] : l;
-      h = x[i] > h ? x[i] : h;
+  double lo[3] = {INFINITY, INFINITY, INFINITY};
+  double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  int bad = 0;
+  if (n >= VSPH_CELLS_PARALLEL) {
+#pragma omp parallel reduction(min                                       \
+                               : lo[:3]) reduction(max                   \
+                                                   : hi[:3]) reduction(| \
+                                                                       : bad)
+    {
+      const size_t nt = (size_t)omp_get_num_threads();
+      const size_t t = (size_t)omp_get_thread_num();
+      bad = span(p, n * t / nt, n * (t + 1) / nt, lo, hi);
     }
-    if (bad) /* the first, as a serial scan names it */
+  } else {
+    bad = span(p, 0, n, lo, hi);
+  }
+  for (int k = 0; k < dim; k++) {
+    if (bad >> k & 1) /* the first, as a serial scan names it */
       for (size_t i = 0; i < n; i++)
-        if (!isfinite(x[i]))
+        if (!isfinite(p->pos[k][i]))
           VSPH_FAIL(VSPH_EINVAL, "particle %zu has a non-finite position",
                     p->id[i]);
-    lo[k] = l;
-    hi[k] = h;
     if (n == 0) lo[k] = hi[k] = 0.0;
     /* positions spread over more than the largest double: no grid */
     if (!isfinite(hi[k] - lo[k]))
@@ -202,6 +244,7 @@ static int build(struct vsph_cells *c, struct vsph_particles *p, double radius,
                 "the particles span %g to %g along axis %d: too far apart",
                 lo[k], hi[k], k);
   }
+  for (int k = dim; k < 3; k++) lo[k] = hi[k] = 0.0;
   /* Cell edge >= radius / SUB; widen the cells if the grid would hold far
    * more cells than particles (a scattered set), which keeps memory O(N). */
   double edge = radius / VSPH_CELLS_SUB;
@@ -234,18 +277,17 @@ static int build(struct vsph_cells *c, struct vsph_particles *p, double radius,
 
   /* Counting sort by cell key; stable, so equal keys keep input order.
    * The keys in parallel (one a particle), the counts in order. */
-  size_t *const key = c->key;
-  const size_t nc[3] = {c->nc[0], c->nc[1], c->nc[2]};
-#pragma omp parallel for schedule(static) if (n >= VSPH_CELLS_PARALLEL)
-  for (size_t i = 0; i < n; i++) {
-    size_t kk = 0;
-    for (int k = dim - 1; k >= 0; k--) {
-      size_t ck = (size_t)floor((p->pos[k][i] - lo[k]) / edge);
-      if (ck >= nc[k]) ck = nc[k] - 1;
-      kk = kk * nc[k] + ck;
+  if (n >= VSPH_CELLS_PARALLEL) {
+#pragma omp parallel
+    {
+      const size_t nt = (size_t)omp_get_num_threads();
+      const size_t t = (size_t)omp_get_thread_num();
+      keys(c, p, n * t / nt, n * (t + 1) / nt);
     }
-    key[i] = kk;
+  } else {
+    keys(c, p, 0, n);
   }
+  const size_t *const key = c->key;
   memset(c->count, 0, ncells * sizeof *c->count);
   for (size_t i = 0; i < n; i++) c->count[key[i]]++;
   size_t acc = 0;

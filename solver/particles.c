@@ -2,6 +2,7 @@
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #include "particles.h"
 
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -190,14 +191,13 @@ void *vsph_particles_spare_alloc(size_t cap) {
   return alloc_aligned(cap * sizeof(double));
 }
 
-/* dst[k] = src[perm[k]], k < n, 8-byte entries (doubles or indices,
- * moved as bytes), by the threads of the enclosing parallel region */
+/* dst[k] = src[perm[k]] for k in [k0, k1): 8-byte entries (doubles or
+ * indices), moved as bytes */
 static void gather8(void *restrict dst, const void *restrict src,
-                    const size_t *perm, size_t n) {
+                    const size_t *perm, size_t k0, size_t k1) {
   unsigned char *const d = dst;
   const unsigned char *const s = src;
-#pragma omp for schedule(static)
-  for (size_t k = 0; k < n; k++) memcpy(d + 8 * k, s + 8 * perm[k], 8);
+  for (size_t k = k0; k < k1; k++) memcpy(d + 8 * k, s + 8 * perm[k], 8);
 }
 
 void vsph_particles_move(struct vsph_particles *p, const size_t *perm, size_t n,
@@ -217,24 +217,46 @@ void vsph_particles_move(struct vsph_particles *p, const size_t *perm, size_t n,
   for (int a = 0; a < 7; a++)
     if (*sc[a]) slot[ns++] = (void **)sc[a];
   slot[ns++] = (void **)&p->id;
-#pragma omp parallel if (n >= VSPH_PARTICLES_MOVE_PARALLEL)
-  {
-    for (int a = 0; a < ns; a++) {
-      gather8(*spare, *slot[a], perm, n); /* ends in a barrier */
-#pragma omp single
-      {
-        void *const moved = *spare;
-        *spare = *slot[a];
-        *slot[a] = moved;
-      } /* a barrier: the next array gathers into the one just freed */
+  /* where each array's entries go: the spare, then the array before it
+   * (freed by its gather); every thread follows the same rotation in its
+   * own copy, and the pointers are set once, after the last gather */
+  void *to[VSPH_PARTICLES_DOUBLES + 1];
+  void *free_block = *spare;
+  for (int a = 0; a < ns; a++) {
+    to[a] = free_block;
+    free_block = *slot[a];
+  }
+  /* the bytes of mat go through the block left free and back */
+  unsigned char *const mat = p->mat, *const b = free_block;
+  if (n < VSPH_PARTICLES_MOVE_PARALLEL) { /* no region: its wake-up and
+                                           * barriers cost more here */
+    for (int a = 0; a < ns; a++) gather8(to[a], *slot[a], perm, 0, n);
+    if (mat) {
+      for (size_t k = 0; k < n; k++) b[k] = mat[perm[k]];
+      memcpy(mat, b, n);
     }
-    if (p->mat) { /* bytes: through the spare and back */
-      unsigned char *const b = *spare;
-#pragma omp for schedule(static)
-      for (size_t k = 0; k < n; k++) b[k] = p->mat[perm[k]];
-#pragma omp for schedule(static)
-      for (size_t k = 0; k < n; k++) p->mat[k] = b[k];
+  } else {
+#pragma omp parallel
+    {
+      const size_t nt = (size_t)omp_get_num_threads();
+      const size_t t = (size_t)omp_get_thread_num();
+      const size_t k0 = n * t / nt, k1 = n * (t + 1) / nt;
+      for (int a = 0; a < ns; a++) {
+        /* each gather writes the block the one before it read */
+        if (a > 0) {
+#pragma omp barrier
+        }
+        gather8(to[a], *slot[a], perm, k0, k1);
+      }
+      if (mat) {
+#pragma omp barrier
+        for (size_t k = k0; k < k1; k++) b[k] = mat[perm[k]];
+#pragma omp barrier
+        memcpy(mat + k0, b + k0, k1 - k0);
+      }
     }
   }
+  for (int a = 0; a < ns; a++) *slot[a] = to[a];
+  *spare = free_block;
   p->n = n;
 }

@@ -3,6 +3,7 @@
 #include "walls.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -396,6 +397,28 @@ static void rows(const struct vsph_walls *w, const struct vsph_particles *p,
  * slot (and below two runs, one thread: the same ghosts). */
 #define GHOST_RUN 2048
 
+/* The end of run @p r of @p n sources. */
+static size_t run_end(size_t r, size_t n) {
+  return (r + 1) * GHOST_RUN < n ? (r + 1) * GHOST_RUN : n;
+}
+
+/* The images fluid particles [i0, i1) of @p p make (ids below
+ * @p n_fluid). */
+static size_t count_images(const struct vsph_walls *w,
+                           const struct vsph_particles *p, size_t n_fluid,
+                           double reach, const unsigned pair[3], size_t i0,
+                           size_t i1) {
+  size_t n = 0;
+  for (size_t i = i0; i < i1; i++) {
+    if (p->id[i] >= n_fluid) continue;
+    /* the non-empty subsets of the near planes that make an image */
+    const unsigned near = near_planes(w, p, i, reach);
+    for (unsigned mask = near; mask; mask = (mask - 1) & near)
+      n += (size_t)image_ok(mask, pair);
+  }
+  return n;
+}
+
 size_t vsph_walls_count(const struct vsph_walls *w,
                         const struct vsph_particles *p, size_t n_fluid,
                         double reach) {
@@ -403,14 +426,16 @@ size_t vsph_walls_count(const struct vsph_walls *w,
   unsigned pair[3];
   ends(w, pair);
   size_t n = 0; /* a sum of counts: the same for any thread count */
-#pragma omp parallel for schedule(static) reduction(+ : n) \
-    if (p->n >= 2 * GHOST_RUN)
-  for (size_t i = 0; i < p->n; i++) {
-    if (p->id[i] >= n_fluid) continue;
-    /* the non-empty subsets of the near planes that make an image */
-    const unsigned near = near_planes(w, p, i, reach);
-    for (unsigned mask = near; mask; mask = (mask - 1) & near)
-      n += (size_t)image_ok(mask, pair);
+  if (p->n >= 2 * GHOST_RUN) {
+#pragma omp parallel reduction(+ : n)
+    {
+      const size_t nt = (size_t)omp_get_num_threads();
+      const size_t t = (size_t)omp_get_thread_num();
+      n = count_images(w, p, n_fluid, reach, pair, p->n * t / nt,
+                       p->n * (t + 1) / nt);
+    }
+  } else {
+    n = count_images(w, p, n_fluid, reach, pair, 0, p->n);
   }
   return n;
 }
@@ -462,6 +487,37 @@ static size_t images(const struct vsph_walls *w, struct vsph_particles *p,
   return g - g0;
 }
 
+/* Run @p r of the fluid among the set's first @p n particles: its ghosts
+ * counted into at[r + 1] (@p make 0), or made from slot n + at[r] (make
+ * 1, at[] summed). */
+static void ghost_run(const struct vsph_walls *w, struct vsph_particles *p,
+                      size_t n_fluid, double reach, const unsigned pair[3],
+                      size_t n, struct vsph_walls_ghosts *gh, size_t *at,
+                      size_t r, int make) {
+  const size_t a = r * GHOST_RUN, b = run_end(r, n);
+  if (make)
+    images(w, p, n_fluid, reach, pair, a, b, gh, n + at[r], at[r], 1);
+  else
+    at[r + 1] = images(w, p, n_fluid, reach, pair, a, b, gh, 0, 0, 0);
+}
+
+/* Every run (ghost_run), in parallel from two runs of the set's size up;
+ * below, with no region (its wake-up would cost more). */
+static void ghost_runs(const struct vsph_walls *w, struct vsph_particles *p,
+                       size_t n_fluid, double reach, const unsigned pair[3],
+                       size_t n, struct vsph_walls_ghosts *gh, size_t *at,
+                       int make) {
+  const size_t nrun = (n + GHOST_RUN - 1) / GHOST_RUN;
+  if (n >= 2 * GHOST_RUN) {
+#pragma omp parallel for schedule(dynamic, 1)
+    for (size_t r = 0; r < nrun; r++)
+      ghost_run(w, p, n_fluid, reach, pair, n, gh, at, r, make);
+  } else {
+    for (size_t r = 0; r < nrun; r++)
+      ghost_run(w, p, n_fluid, reach, pair, n, gh, at, r, make);
+  }
+}
+
 /* vsph_walls_generate, and with @p perm and @p spare
  * (vsph_walls_generate_moved) the compaction by a move of the set's own
  * arrays */
@@ -508,12 +564,7 @@ static int generate(const struct vsph_walls *w, struct vsph_particles *p,
   const size_t nrun = (n + GHOST_RUN - 1) / GHOST_RUN;
   size_t *const at = malloc((nrun + 1) * sizeof *at);
   if (!at) VSPH_FAIL(VSPH_ENOMEM, "cannot plan the ghosts of %zu", n);
-  const int par = n >= 2 * GHOST_RUN;
-#pragma omp parallel for schedule(dynamic, 1) if (par)
-  for (size_t r = 0; r < nrun; r++) {
-    const size_t a = r * GHOST_RUN, b = a + GHOST_RUN < n ? a + GHOST_RUN : n;
-    at[r + 1] = images(w, p, n_fluid, reach, pair, a, b, gh, 0, 0, 0);
-  }
+  ghost_runs(w, p, n_fluid, reach, pair, n, gh, at, 0);
   at[0] = 0;
   for (size_t r = 0; r < nrun; r++) at[r + 1] += at[r];
   const size_t ng = at[nrun];
@@ -521,11 +572,7 @@ static int generate(const struct vsph_walls *w, struct vsph_particles *p,
     free(at);
     VSPH_FAIL(VSPH_ENOMEM, "ghost capacity %zu exceeded", gh->cap);
   }
-#pragma omp parallel for schedule(dynamic, 1) if (par)
-  for (size_t r = 0; r < nrun; r++) {
-    const size_t a = r * GHOST_RUN, b = a + GHOST_RUN < n ? a + GHOST_RUN : n;
-    images(w, p, n_fluid, reach, pair, a, b, gh, n + at[r], at[r], 1);
-  }
+  ghost_runs(w, p, n_fluid, reach, pair, n, gh, at, 1);
   free(at);
   p->n = n + ng;
   gh->n = ng;

@@ -217,6 +217,27 @@ START_TEST(test_cells_first_bad_particle_named) {
     }
     ck_assert_int_eq(vsph_cells_build(c, q, 0.03), 0);
     for (size_t k = 0; k < 64; k++) order[thr - 1][k] = q->id[k * 1531];
+    /* the box, a lone extreme at either end of a share of any thread
+     * count here (the grid's origin is the least position, exactly; an
+     * axis past the dimension has origin 0) */
+    const size_t at[4] = {0, n / 2 - 1, n / 2, n - 1};
+    for (int e = 0; e < 4; e++) {
+      const size_t a = at[e], b = at[(e + 2) % 4];
+      const double xa = q->pos[0][a], ya = q->pos[1][a];
+      const double xb = q->pos[0][b], yb = q->pos[1][b];
+      q->pos[0][a] = -0.5, q->pos[1][a] = -0.25; /* the least */
+      q->pos[0][b] = 4.0, q->pos[1][b] = 5.0;    /* the greatest */
+      ck_assert_int_eq(vsph_cells_build(c, q, 0.03), 0);
+      ck_assert_double_eq(c->lo[0], -0.5);
+      ck_assert_double_eq(c->lo[1], -0.25);
+      ck_assert_double_eq(c->lo[2], 0.0);
+      ck_assert_uint_eq(c->nc[0], (size_t)floor(4.5 / c->edge) + 1);
+      ck_assert_uint_eq(c->nc[1], (size_t)floor(5.25 / c->edge) + 1);
+      for (size_t i = 0; i < n; i++) { /* back: the build moved them */
+        if (q->pos[0][i] == -0.5) q->pos[0][i] = xa, q->pos[1][i] = ya;
+        if (q->pos[0][i] == 4.0) q->pos[0][i] = xb, q->pos[1][i] = yb;
+      }
+    }
     vsph_particles_free(q);
   }
   for (size_t k = 0; k < 64; k++) ck_assert_uint_eq(order[0][k], order[1][k]);
