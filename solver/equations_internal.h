@@ -416,12 +416,14 @@ VSPH_CONSTS_SPECIALISE void sweep_own(double *q, const int dim, int nf,
 VSPH_CONSTS_SPECIALISE size_t sweep_count(const struct vsph_pair_chunk *b,
                                           const size_t *id, size_t n_fluid,
                                           int fluid_only, int fi, double *rs2,
-                                          double *ms2) {
+                                          double *ms2, const int closest) {
   const size_t m = b->m;
-  double r = *rs2;
+  if (closest) { /* else the caller's (a least is the same in any order) */
+    double r = *rs2;
 #pragma omp simd reduction(min : r)
-  for (size_t k = 0; k < m; k++) r = b->s2[k] < r ? b->s2[k] : r;
-  *rs2 = r;
+    for (size_t k = 0; k < m; k++) r = b->s2[k] < r ? b->s2[k] : r;
+    *rs2 = r;
+  }
   size_t nfj = m; /* fluid receivers j: all, in a set without ghosts */
   if (!fluid_only) {
     nfj = 0;
@@ -449,7 +451,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
     const struct vsph_cells *cells, size_t n_fluid,
     const struct vsph_equations_sweep *sw, size_t blk, double *min_s2,
     const int dim, vsph_viscous_pair_fn *const pair, const int delta,
-    const int kid, const int parts) {
+    const int kid, const int parts, const int brook) {
   /* the buffer's fields (solver/equations.c sets them so), a constant
    * here, as are the fields j's shares fill: the viscous part's with the
    * parts, the delta-SPH sum with delta-SPH or the parts */
@@ -465,6 +467,13 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
   size_t total = 0;
   double ms2 = INFINITY;
   const int fluid_only = p->n == n_fluid; /* no ghosts nor wall particles */
+  /* a Brookshaw form (@p brook: VSPH_VISCOUS_BROOKSHAW) in 2-D with the
+   * Gaussian: each chunk's kernel, map, i's sums and j's adds in AVX-512
+   * lanes where the CPU has them, the same bits
+   * (vsph_sweep_x86_brookshaw2_avx512) */
+  const int fused = VSPH_PAIR_X86 && brook && dim == 2 &&
+                    kid == VSPH_KERNEL_DFQ_GAUSSIAN && !delta && !parts &&
+                    rc->pk.simd == 2;
   /* a cell's receivers walk their rows together where the CPU allows:
    * each gets the chunks its own walk would give, to the bit */
   struct vsph_pair_cell pc;
@@ -485,12 +494,23 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
       struct vsph_pair_chunk own;
       const struct vsph_pair_chunk *bq;
       vsph_pair_begin_upper_in(&it, &rc->pk, p, &rg, &pc, i);
-      while (vsph_pair_next_chunk(&it, dim, kid, 1, &own, &bq)) {
+      while (fused ? vsph_pair_next_chunk(&it, dim, -1, 1, &own, &bq)
+                   : vsph_pair_next_chunk(&it, dim, kid, 1, &own, &bq)) {
         const size_t m = bq->m;
         /* i's unit shares; j's shares (V_i applied, signed for j) */
         double sf[3][VSPH_PAIR_CHUNK_MAX], sv[3][VSPH_PAIR_CHUNK_MAX],
             sc[VSPH_PAIR_CHUNK_MAX], sd[VSPH_PAIR_CHUNK_MAX],
             vj[VSPH_PAIR_CHUNK_MAX], js[8][VSPH_PAIR_CHUNK_MAX];
+        if (fused) { /* the map, i's sums and the closest pair at once */
+          double sums[3] = {cont, f0, f1};
+          rs2 = vsph_sweep_x86_brookshaw2_avx512(
+              bq->j, bq->x[0], bq->x[1], bq->s2, m, vel[0], vel[1], pp, vol,
+              ui[0], ui[1], pi, Vi, rc->pk.h_inv2, rc->pk.dwq, rc->vl.Kmu,
+              rc->vl.eta2, sums, buf, lo, rs2);
+          cont = sums[0], f0 = sums[1], f1 = sums[2];
+          total += sweep_count(bq, id, n_fluid, fluid_only, fi, &rs2, &ms2, 0);
+          continue;
+        }
         /* the pairs' unit shares: a map, no sums, so that it vectorises */
 #pragma omp simd
         for (size_t k = 0; k < m; k++) {
@@ -542,7 +562,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
                                   VSPH_PAIR_CHUNK_MAX);
         else
           sweep_add(buf, lo, nf, bq->j, m, js, nf);
-        total += sweep_count(bq, id, n_fluid, fluid_only, fi, &rs2, &ms2);
+        total += sweep_count(bq, id, n_fluid, fluid_only, fi, &rs2, &ms2, 1);
       }
       if (!fi) continue;
       ms2 = rs2 < ms2 ? rs2 : ms2;
@@ -563,12 +583,12 @@ sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
             const struct vsph_cells *cells, size_t n_fluid,
             const struct vsph_equations_sweep *sw, size_t blk, int nf,
             double *min_s2, const int dim, vsph_viscous_pair_fn *const pair,
-            const int delta, const int kid) {
+            const int delta, const int kid, const int brook) {
   (void)nf; /* = SW_FIELDS(dim, delta, rc->parts): run_sweep's plan */
   return rc->parts ? sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
-                                       dim, pair, delta, kid, 1)
+                                       dim, pair, delta, kid, 1, brook)
                    : sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
-                                       dim, pair, delta, kid, 0);
+                                       dim, pair, delta, kid, 0, brook);
 }
 
 #endif /* VSPH_SOLVER_EQUATIONS_INTERNAL_H */

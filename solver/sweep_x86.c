@@ -5,10 +5,13 @@
  * receiver's fields loaded, added and stored as one vector (four fields)
  * or a pair of lanes and one lane (three), in place of a scalar load, add
  * and store per field. Whole loads and stores, no masks: a masked store is
- * not forwarded to the next particle's load of the same entry. Built for
- * its instructions alone (target attribute), as solver/pair_x86.c. */
+ * not forwarded to the next particle's load of the same entry. And the
+ * Brookshaw forms' 2-D chunk (kernel, terms, sums and adds) in AVX-512
+ * lanes. Each built for its instructions alone (target attribute), as
+ * solver/pair_x86.c. */
 #include "sweep_x86.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 #include "pair.h"
@@ -71,6 +74,173 @@ static inline __attribute__((always_inline, target("avx2"))) void add_avx2(
   }
 }
 
+#define AVX512 __attribute__((target("avx512f,avx512vl,avx512dq")))
+
+/* a[j[l]] in lane l */
+static inline __attribute__((always_inline)) AVX512 __m512d
+gather8(const double *a, const size_t *j) {
+  return _mm512_set_pd(a[j[7]], a[j[6]], a[j[5]], a[j[4]], a[j[3]], a[j[2]],
+                       a[j[1]], a[j[0]]);
+}
+
+/* e^{-x}, vsph_kernel_expneg's operations lane by lane */
+static inline __attribute__((always_inline)) AVX512 __m512d expneg8(__m512d x) {
+  const __m512d shift = _mm512_set1_pd(6755399441055744.0);
+  const __m512d m = _mm512_add_pd(
+      _mm512_mul_pd(x, _mm512_set1_pd(1.4426950408889634074)), shift);
+  const __m512d n = _mm512_sub_pd(m, shift);
+  const __m512d r = _mm512_sub_pd(
+      _mm512_sub_pd(
+          x, _mm512_mul_pd(n, _mm512_set1_pd(6.93147180369123816490e-01))),
+      _mm512_mul_pd(n, _mm512_set1_pd(1.90821492927058770002e-10)));
+  const __m512d r2 = _mm512_mul_pd(r, r), r4 = _mm512_mul_pd(r2, r2),
+                r8 = _mm512_mul_pd(r4, r4);
+#define C(v) _mm512_set1_pd(v)
+  const __m512d a0 = _mm512_fmadd_pd(C(-1.0), r, C(1.0)),
+                a1 = _mm512_fmadd_pd(C(-1.0 / 6.0), r, C(1.0 / 2.0)),
+                a2 = _mm512_fmadd_pd(C(-1.0 / 120.0), r, C(1.0 / 24.0)),
+                a3 = _mm512_fmadd_pd(C(-1.0 / 5040.0), r, C(1.0 / 720.0)),
+                a4 = _mm512_fmadd_pd(C(-1.0 / 362880.0), r, C(1.0 / 40320.0)),
+                a5 = _mm512_fmadd_pd(C(-1.0 / 39916800.0), r,
+                                     C(1.0 / 3628800.0));
+  const __m512d b0 = _mm512_fmadd_pd(a1, r2, a0),
+                b1 = _mm512_fmadd_pd(a3, r2, a2),
+                b2 = _mm512_fmadd_pd(a5, r2, a4);
+  const __m512d c0 = _mm512_fmadd_pd(b1, r4, b0),
+                c1 = _mm512_fmadd_pd(C(1.0 / 479001600.0), r4, b2);
+#undef C
+  const __m512d p = _mm512_fmadd_pd(c1, r8, c0);
+  const __m512i bits = _mm512_castpd_si512(m);
+  const __m512i e = _mm512_slli_epi64(
+      _mm512_sub_epi64(
+          _mm512_set1_epi64((long long)(1023ull + 0x0008000000000000ull)),
+          _mm512_and_si512(bits, _mm512_set1_epi64(0x000fffffffffffffll))),
+      52);
+  return _mm512_mul_pd(p, _mm512_castsi512_pd(e));
+}
+
+/* prev + l[0] + ... + l[3], in that order */
+static inline __attribute__((always_inline)) AVX512 double lanes4(double prev,
+                                                                  __m256d acc,
+                                                                  double l0) {
+  double l[4];
+  _mm256_storeu_pd(l, acc);
+  return ((prev + l0) + l[1]) + l[2] + l[3];
+}
+
+AVX512 double vsph_sweep_x86_brookshaw2_avx512(
+    const size_t *jj, const double *x0, const double *x1, const double *s2,
+    size_t m, const double *vx, const double *vy, const double *pp,
+    const double *vol, double ui0, double ui1, double pi, double Vi,
+    double h_inv2, double dwq, double Kmu, double eta2, double sums[3],
+    double *buf, size_t lo, double rs2) {
+  const __m512d vui0 = _mm512_set1_pd(ui0), vui1 = _mm512_set1_pd(ui1),
+                vpi = _mm512_set1_pd(pi), vVi = _mm512_set1_pd(Vi),
+                vhi2 = _mm512_set1_pd(h_inv2), vdwq = _mm512_set1_pd(dwq),
+                vnKmu = _mm512_set1_pd(-Kmu), veta2 = _mm512_set1_pd(eta2),
+                zero = _mm512_setzero_pd(), nine = _mm512_set1_pd(9.0),
+                m2 = _mm512_set1_pd(-2.0), sign = _mm512_set1_pd(-0.0);
+  __m512d vmin = _mm512_set1_pd(rs2);
+  /* i's sums as the sweep's simd reduction makes them: four lanes, pair
+   * k in lane k % 4 up to the last multiple of 4, the pairs after it in
+   * lane 0 */
+  __m256d ac = _mm256_setzero_pd(), af0 = ac, af1 = ac;
+  const size_t m4 = m & ~(size_t)3;
+  __m512d pc = zero, p0 = zero, p1 = zero;
+  size_t k = 0;
+  for (; k < m; k += 8) {
+    const __mmask8 km = m - k >= 8 ? 0xff : (__mmask8)((1u << (m - k)) - 1);
+    const __m512d X0 = _mm512_maskz_loadu_pd(km, x0 + k),
+                  X1 = _mm512_maskz_loadu_pd(km, x1 + k),
+                  S2 = _mm512_mask_loadu_pd(_mm512_set1_pd(INFINITY), km,
+                                            s2 + k);
+    vmin = _mm512_min_pd(vmin, S2);
+    /* F = dwq (-2 e^{-q^2}), 0 beyond q^2 = 9 */
+    const __m512d q2 = _mm512_mul_pd(S2, vhi2);
+    const __m512d e = _mm512_mul_pd(m2, expneg8(q2));
+    const __mmask8 in = _mm512_cmp_pd_mask(q2, nine, _CMP_LT_OQ);
+    const __m512d F = _mm512_mul_pd(vdwq, _mm512_maskz_mov_pd(in, e));
+    /* the last lanes past the chunk read pair k's neighbour again */
+    size_t jt[8];
+    const size_t *j = jj + k;
+    if (km != 0xff) {
+      for (size_t l = 0; l < 8; l++) jt[l] = j[l < m - k ? l : 0];
+      j = jt;
+    }
+    const __m512d U0 = gather8(vx, j), U1 = gather8(vy, j), P = gather8(pp, j),
+                  V = gather8(vol, j);
+    const __m512d du0 = _mm512_sub_pd(U0, vui0), du1 = _mm512_sub_pd(U1, vui1);
+    const __m512d dux = _mm512_add_pd(
+        _mm512_add_pd(zero, _mm512_mul_pd(du0, X0)), _mm512_mul_pd(du1, X1));
+    const __m512d c = _mm512_mul_pd(F, dux);
+    const __m512d cp = _mm512_mul_pd(F, _mm512_add_pd(vpi, P));
+    const __m512d cv = _mm512_div_pd(
+        _mm512_mul_pd(_mm512_mul_pd(vnKmu, F), dux), _mm512_add_pd(S2, veta2));
+    const __m512d f0 = _mm512_add_pd(_mm512_mul_pd(cp, X0),
+                                     _mm512_mul_pd(cv, X0)),
+                  f1 = _mm512_add_pd(_mm512_mul_pd(cp, X1),
+                                     _mm512_mul_pd(cv, X1));
+    /* j's shares (-V_i f, V_i c), added to their receivers' entries:
+     * fields 0 and 1 as a pair of lanes, field 2 alone, as
+     * vsph_sweep_x86_add_avx2 adds them (the receivers of a chunk are
+     * distinct, so each entry gets one add a pair, in any order) */
+    const __m512d g0 = _mm512_xor_pd(_mm512_mul_pd(vVi, f0), sign),
+                  g1 = _mm512_xor_pd(_mm512_mul_pd(vVi, f1), sign),
+                  g2 = _mm512_mul_pd(vVi, c);
+    const __m512d t0 = _mm512_unpacklo_pd(g0, g1), /* pairs 0, 2, 4, 6 */
+        t1 = _mm512_unpackhi_pd(g0, g1);           /* pairs 1, 3, 5, 7 */
+    __m128d q01[8];
+    q01[0] = _mm512_castpd512_pd128(t0);
+    q01[1] = _mm512_castpd512_pd128(t1);
+    q01[2] = _mm512_extractf64x2_pd(t0, 1);
+    q01[3] = _mm512_extractf64x2_pd(t1, 1);
+    q01[4] = _mm512_extractf64x2_pd(t0, 2);
+    q01[5] = _mm512_extractf64x2_pd(t1, 2);
+    q01[6] = _mm512_extractf64x2_pd(t0, 3);
+    q01[7] = _mm512_extractf64x2_pd(t1, 3);
+    double c2[8];
+    _mm512_storeu_pd(c2, g2);
+    const size_t nl = m - k < 8 ? m - k : 8;
+    for (size_t l = 0; l < nl; l++) {
+      double *const q = buf + (jj[k + l] - lo) * 3;
+      _mm_storeu_pd(q, _mm_add_pd(_mm_loadu_pd(q), q01[l]));
+      q[2] += c2[l];
+    }
+    pc = _mm512_mul_pd(V, c);
+    p0 = _mm512_mul_pd(V, f0);
+    p1 = _mm512_mul_pd(V, f1);
+    if (k + 4 <= m4) {
+      ac = _mm256_add_pd(ac, _mm512_castpd512_pd256(pc));
+      af0 = _mm256_add_pd(af0, _mm512_castpd512_pd256(p0));
+      af1 = _mm256_add_pd(af1, _mm512_castpd512_pd256(p1));
+    }
+    if (k + 8 <= m4) {
+      ac = _mm256_add_pd(ac, _mm512_extractf64x4_pd(pc, 1));
+      af0 = _mm256_add_pd(af0, _mm512_extractf64x4_pd(p0, 1));
+      af1 = _mm256_add_pd(af1, _mm512_extractf64x4_pd(p1, 1));
+    }
+  }
+  /* lane 0, then the pairs after m4: in the last vector, from lane
+   * m4 - (k - 8) */
+  double l0c = _mm256_cvtsd_f64(ac), l0f0 = _mm256_cvtsd_f64(af0),
+         l0f1 = _mm256_cvtsd_f64(af1);
+  if (m4 < m) {
+    double tc[8], t0[8], t1[8];
+    _mm512_storeu_pd(tc, pc);
+    _mm512_storeu_pd(t0, p0);
+    _mm512_storeu_pd(t1, p1);
+    for (size_t l = m4 - (k - 8); l < m - (k - 8); l++) {
+      l0c += tc[l];
+      l0f0 += t0[l];
+      l0f1 += t1[l];
+    }
+  }
+  sums[0] = lanes4(sums[0], ac, l0c);
+  sums[1] = lanes4(sums[1], af0, l0f0);
+  sums[2] = lanes4(sums[2], af1, l0f1);
+  return _mm512_reduce_min_pd(vmin);
+}
+
 __attribute__((target("avx2"))) void vsph_sweep_x86_add_avx2(
     double *buf, size_t lo, int nf, const size_t *jj, size_t m,
     const double *js, size_t stride) {
@@ -107,6 +277,19 @@ __attribute__((target("avx2"))) void vsph_sweep_x86_add8_avx2(
 }
 
 #else
+
+double vsph_sweep_x86_brookshaw2_avx512(
+    const size_t *jj, const double *x0, const double *x1, const double *s2,
+    size_t m, const double *vx, const double *vy, const double *pp,
+    const double *vol, double ui0, double ui1, double pi, double Vi,
+    double h_inv2, double dwq, double Kmu, double eta2, double sums[3],
+    double *buf, size_t lo, double rs2) {
+  (void)jj, (void)x0, (void)x1, (void)s2, (void)m, (void)vx, (void)vy;
+  (void)pp, (void)vol, (void)ui0, (void)ui1, (void)pi, (void)Vi, (void)h_inv2;
+  (void)dwq, (void)Kmu, (void)eta2, (void)sums, (void)buf, (void)lo;
+  (void)rs2;
+  abort();
+}
 
 void vsph_sweep_x86_add8_avx2(double *buf, size_t lo, const size_t *jj,
                               size_t m, const double *u, size_t stride,

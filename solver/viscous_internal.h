@@ -147,12 +147,21 @@ struct vsph_viscous_loops {
                     rc->corr, rc->tvf);                                      \
   }
 
+/* 1 in the file of the Brookshaw forms (solver/forms/brookshaw.c, defined
+ * before its includes): their 2-D Gaussian sweep takes its chunks' work to
+ * AVX-512 lanes where the CPU has them (vsph_sweep_x86_brookshaw2_avx512,
+ * the same bits); 0 in every other family's. */
+#ifndef VSPH_VISCOUS_BROOKSHAW
+#define VSPH_VISCOUS_BROOKSHAW 0
+#endif
+
 /* A sweep (sweep_block) @p fn for dimension D and delta switch DELTA, the
  * 3h Gaussian, its pair function PAIR inlined. */
 #define VSPH_VISCOUS_SWEEP(fn, PAIR, D, DELTA)                              \
   static size_t fn(VSPH_VISCOUS_SWEEP_ARGS) {                               \
     return sweep_block(rc, p, cells, n_fluid, sw, blk, nf, min_s2, D, PAIR, \
-                       DELTA, VSPH_KERNEL_DFQ_GAUSSIAN);                    \
+                       DELTA, VSPH_KERNEL_DFQ_GAUSSIAN,                     \
+                       VSPH_VISCOUS_BROOKSHAW);                             \
   }
 
 /* Every specialised loop of a family whose pair function is PAIR and

@@ -784,30 +784,38 @@ static struct vsph_integrate *shear3(int form, int contact) {
 
 /* The symmetric sweep's adds of j's shares by AVX2
  * (solver/sweep_x86.c: three fields in 2-D, four with delta-SPH or in
- * 3-D, eight in PVWF's first pass) against the scalar loop: the
- * stretching square at 24 across after three steps, MGF with and without
- * delta-SPH, PVWF, and the 3-D shear box (shear3) with MGF, each with and
- * without the dissipative parts (2 d + 2 fields, the scalar loop at every
- * level), evaluated with the portable loops (VSPH_PAIR_SIMD=portable) and
- * at each level the CPU has: every output the same bits (each entry gets
- * the same adds in the same order; the candidate test gives the same
- * chunks at every level, test_candidates_simd). A level the CPU lacks is
- * said and left out. */
+ * 3-D, eight in PVWF's first pass) and the AVX-512 map of the Brookshaw
+ * forms in 2-D (vsph_sweep_x86_brookshaw2_avx512: their kernel, terms,
+ * i's sums in the simd reduction's order, j's adds) against the scalar
+ * loops: the stretching square at 24 across after three steps, MGF with
+ * and without delta-SPH, PVWF, Violeau & Issa's and Cleary's forms (eta
+ * not 0), the standing wave with its ghosts (pairs of two ghosts
+ * skipped, ghost receivers not counted), and the 3-D shear box (shear3)
+ * with MGF, each with and without the dissipative parts (2 d + 2 fields,
+ * the scalar loop at every level), evaluated with the portable loops
+ * (VSPH_PAIR_SIMD=portable) and at each level the CPU has: every output
+ * the same bits (each entry gets the same adds in the same order; the
+ * candidate test gives the same chunks at every level,
+ * test_candidates_simd). A level the CPU lacks is said and left out. */
 START_TEST(test_sweep_scatter_simd) {
   static const struct {
     int form;
     double delta;
     int dim;
-  } cases[] = {{VSPH_VISCOUS_MGF, 0.0, 2},
-               {VSPH_VISCOUS_MGF, 0.1, 2},
-               {VSPH_VISCOUS_PVWF, 0.0, 2},
-               {VSPH_VISCOUS_MGF, 0.0, 3}};
+    const struct vsph_scene_type *scene;
+  } cases[] = {{VSPH_VISCOUS_MGF, 0.0, 2, &vsph_stretching_square_type},
+               {VSPH_VISCOUS_MGF, 0.1, 2, &vsph_stretching_square_type},
+               {VSPH_VISCOUS_PVWF, 0.0, 2, &vsph_stretching_square_type},
+               {VSPH_VISCOUS_MGF, 0.0, 3, NULL},
+               {VSPH_VISCOUS_VI, 0.0, 2, &vsph_stretching_square_type},
+               {VSPH_VISCOUS_CLEARY, 0.0, 2, &vsph_stretching_square_type},
+               {VSPH_VISCOUS_MGF, 0.0, 2, &vsph_standing_wave_type}};
   const int c = _i / 2, parts = _i % 2, dim = cases[c].dim;
   struct vsph_integrate_props ip;
-  struct vsph_integrate *s =
-      dim == 3 ? shear3(cases[c].form, 0)
-               : scene_stepped(&vsph_stretching_square_type, cases[c].form, 24,
-                               cases[c].delta, &ip);
+  struct vsph_integrate *s = dim == 3
+                                 ? shear3(cases[c].form, 0)
+                                 : scene_stepped(cases[c].scene, cases[c].form,
+                                                 24, cases[c].delta, &ip);
   const size_t n = s->p->n;
   const int most = vsph_pair_x86_simd();
   if (most < 2)
@@ -822,6 +830,7 @@ START_TEST(test_sweep_scatter_simd) {
   char *keep = was ? strdup(was) : NULL;
   static const char *const names[] = {"portable", "avx2", "avx512"};
   int st[3] = {0, 0, 0};
+  double closest[3] = {0, 0, 0};
   for (int level = 0; level <= most; level++) {
     double *const o = buf + (size_t)level * nout * n;
     struct vsph_equations_out out = {.drho = o, .sweep = sw};
@@ -833,6 +842,7 @@ START_TEST(test_sweep_scatter_simd) {
     setenv("VSPH_PAIR_SIMD", names[level], 1);
     st[level] = vsph_equations_rhs(&s->props.eq, s->p, s->n_fluid, s->cells,
                                    s->vws, &out);
+    closest[level] = out.min_s2;
   }
   /* the caller's environment back before any assertion (a failed one
    * leaves this test at once, and the suite runs on in this process) */
@@ -843,6 +853,7 @@ START_TEST(test_sweep_scatter_simd) {
   free(keep);
   for (int level = 0; level <= most; level++) {
     ck_assert_int_eq(st[level], 0);
+    ck_assert_double_eq(closest[level], closest[0]); /* the closest pair */
     const double *const o = buf + (size_t)level * nout * n;
     for (size_t e = 0; level && e < nout * n; e++)
       ck_assert_msg(memcmp(o + e, buf + e, sizeof *o) == 0,
@@ -1802,7 +1813,7 @@ Suite *vsph_equations_suite(void) {
   tcase_add_loop_test(tc, test_candidates_simd, 0, 4);
   tcase_add_loop_test(tc, test_joint_walk_resumes, 0, 2);
   tcase_add_test(tc, test_joint_walk_guards);
-  tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 8);
+  tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 14);
   tcase_add_test(tc, test_sweep_lanes_by_hand);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
   tcase_add_loop_test(tc, test_sweep_gather_threads,

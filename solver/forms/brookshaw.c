@@ -3,6 +3,9 @@
 /* The descriptors of MGF, Violeau & Issa's and Cleary's forms: Brookshaw's
  * pair term with their K and eta (solver/viscous.h's struct vsph_viscous_type;
  * their pair terms in brookshaw.h). */
+/* this family's 2-D Gaussian sweep has AVX-512 lanes of its own
+ * (solver/viscous_internal.h) */
+#define VSPH_VISCOUS_BROOKSHAW 1
 #include "forms.h"
 
 /* The pair function (vsph_viscous_pair_fn): the term with the loop's

@@ -25,7 +25,10 @@
  *  adds an exact zero). @param dux (u_j - u_i).x (m^2/s).
  *  @return the pair's share -K mu V_j F (du.x)/(s^2 + eta^2) x and its
  *  dissipation density (K mu/2) V_j F (du.x)^2/(s^2 + eta^2) (THEORY 4),
- *  so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. */
+ *  so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. The 2-D
+ *  sweep with the Gaussian computes this share, with the continuity and
+ *  pressure terms, in AVX-512 lanes too (solver/sweep_x86.c): change both
+ *  (test_sweep_scatter_simd holds them to the same bits). */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_mgf(
     const struct vsph_pair *pr, int dim, double Kmu, double eta2, double dux) {
   struct vsph_pair_visc r;
