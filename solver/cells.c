@@ -3,7 +3,6 @@
 #include "cells.h"
 
 #include <math.h>
-#include <omp.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,6 +11,7 @@
 #include "cells_internal.h"
 #include "particles.h"
 #include "particles_internal.h"
+#include "share_internal.h"
 
 struct vsph_cells *vsph_cells_alloc(void) {
   struct vsph_cells *c = calloc(1, sizeof *c);
@@ -224,9 +224,9 @@ static int build(struct vsph_cells *c, struct vsph_particles *p, double radius,
                                                    : hi[:3]) reduction(| \
                                                                        : bad)
     {
-      const size_t nt = (size_t)omp_get_num_threads();
-      const size_t t = (size_t)omp_get_thread_num();
-      bad = span(p, n * t / nt, n * (t + 1) / nt, lo, hi);
+      size_t i0, i1;
+      vsph_share_even(n, &i0, &i1);
+      bad = span(p, i0, i1, lo, hi);
     }
   } else {
     bad = span(p, 0, n, lo, hi);
@@ -280,9 +280,9 @@ static int build(struct vsph_cells *c, struct vsph_particles *p, double radius,
   if (n >= VSPH_CELLS_PARALLEL) {
 #pragma omp parallel
     {
-      const size_t nt = (size_t)omp_get_num_threads();
-      const size_t t = (size_t)omp_get_thread_num();
-      keys(c, p, n * t / nt, n * (t + 1) / nt);
+      size_t i0, i1;
+      vsph_share_even(n, &i0, &i1);
+      keys(c, p, i0, i1);
     }
   } else {
     keys(c, p, 0, n);

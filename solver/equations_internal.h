@@ -445,7 +445,11 @@ VSPH_CONSTS_SPECIALISE size_t sweep_count(const struct vsph_pair_chunk *b,
  * buffer in pair order; i's sums go to the buffer after its row, so every
  * particle's entry in a block depends on the block's pairs and their
  * order alone. Pairs of two ghosts are skipped. Returns the interactions
- * (each fluid receiver of a pair counts once) and the closest pair. */
+ * (each fluid receiver of a pair counts once) and the closest pair. The
+ * Brookshaw forms in 2-D with the Gaussian (@p brook) do each chunk's
+ * work in AVX-512 lanes where the CPU has them and the build allows
+ * (VSPH_SWEEP_X86_BROOKSHAW): the same operations and the same order of
+ * i's sums, so the same bits (solver/sweep_x86.c). */
 VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
     const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
     const struct vsph_cells *cells, size_t n_fluid,
@@ -471,7 +475,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
    * Gaussian: each chunk's kernel, map, i's sums and j's adds in AVX-512
    * lanes where the CPU has them, the same bits
    * (vsph_sweep_x86_brookshaw2_avx512) */
-  const int fused = VSPH_PAIR_X86 && brook && dim == 2 &&
+  const int fused = VSPH_SWEEP_X86_BROOKSHAW && brook && dim == 2 &&
                     kid == VSPH_KERNEL_DFQ_GAUSSIAN && !delta && !parts &&
                     rc->pk.simd == 2;
   /* a cell's receivers walk their rows together where the CPU allows:

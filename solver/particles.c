@@ -2,12 +2,12 @@
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 #include "particles.h"
 
-#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "../common/status.h"
 #include "particles_internal.h"
+#include "share_internal.h"
 
 /* 64-byte aligned zeroed block; aligned_alloc needs a size multiple of 64. */
 static void *alloc_aligned(size_t bytes) {
@@ -193,8 +193,8 @@ void *vsph_particles_spare_alloc(size_t cap) {
 
 /* dst[k] = src[perm[k]] for k in [k0, k1): 8-byte entries (doubles or
  * indices), moved as bytes */
-static void gather8(void *restrict dst, const void *restrict src,
-                    const size_t *perm, size_t k0, size_t k1) {
+static void move8(void *restrict dst, const void *restrict src,
+                  const size_t *perm, size_t k0, size_t k1) {
   unsigned char *const d = dst;
   const unsigned char *const s = src;
   for (size_t k = k0; k < k1; k++) memcpy(d + 8 * k, s + 8 * perm[k], 8);
@@ -230,7 +230,7 @@ void vsph_particles_move(struct vsph_particles *p, const size_t *perm, size_t n,
   unsigned char *const mat = p->mat, *const b = free_block;
   if (n < VSPH_PARTICLES_MOVE_PARALLEL) { /* no region: its wake-up and
                                            * barriers cost more here */
-    for (int a = 0; a < ns; a++) gather8(to[a], *slot[a], perm, 0, n);
+    for (int a = 0; a < ns; a++) move8(to[a], *slot[a], perm, 0, n);
     if (mat) {
       for (size_t k = 0; k < n; k++) b[k] = mat[perm[k]];
       memcpy(mat, b, n);
@@ -238,15 +238,14 @@ void vsph_particles_move(struct vsph_particles *p, const size_t *perm, size_t n,
   } else {
 #pragma omp parallel
     {
-      const size_t nt = (size_t)omp_get_num_threads();
-      const size_t t = (size_t)omp_get_thread_num();
-      const size_t k0 = n * t / nt, k1 = n * (t + 1) / nt;
+      size_t k0, k1;
+      vsph_share_even(n, &k0, &k1);
       for (int a = 0; a < ns; a++) {
         /* each gather writes the block the one before it read */
         if (a > 0) {
 #pragma omp barrier
         }
-        gather8(to[a], *slot[a], perm, k0, k1);
+        move8(to[a], *slot[a], perm, k0, k1);
       }
       if (mat) {
 #pragma omp barrier

@@ -17,6 +17,16 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The calling thread's even share [*i0, *i1) of @p n items in a parallel
+ * region (thread t of T: [t n / T, (t + 1) n / T)); the whole outside
+ * one. */
+static inline void vsph_share_even(size_t n, size_t *i0, size_t *i1) {
+  const size_t nt = (size_t)omp_get_num_threads();
+  const size_t t = (size_t)omp_get_thread_num();
+  *i0 = n * t / nt;
+  *i1 = n * (t + 1) / nt;
+}
+
 /* At most this many owners; more threads take blocks as thieves. */
 #define VSPH_SHARE_MAX 64
 

@@ -78,7 +78,7 @@ static inline __attribute__((always_inline, target("avx2"))) void add_avx2(
 
 /* a[j[l]] in lane l */
 static inline __attribute__((always_inline)) AVX512 __m512d
-gather8(const double *a, const size_t *j) {
+lanes_of(const double *a, const size_t *j) {
   return _mm512_set_pd(a[j[7]], a[j[6]], a[j[5]], a[j[4]], a[j[3]], a[j[2]],
                        a[j[1]], a[j[0]]);
 }
@@ -152,7 +152,7 @@ AVX512 double vsph_sweep_x86_brookshaw2_avx512(
     const __mmask8 km = m - k >= 8 ? 0xff : (__mmask8)((1u << (m - k)) - 1);
     const __m512d X0 = _mm512_maskz_loadu_pd(km, x0 + k),
                   X1 = _mm512_maskz_loadu_pd(km, x1 + k),
-                  S2 = _mm512_mask_loadu_pd(_mm512_set1_pd(INFINITY), km,
+                  S2 = _mm512_mask_loadu_pd(_mm512_set1_pd(HUGE_VAL), km,
                                             s2 + k);
     vmin = _mm512_min_pd(vmin, S2);
     /* F = dwq (-2 e^{-q^2}), 0 beyond q^2 = 9 */
@@ -167,8 +167,8 @@ AVX512 double vsph_sweep_x86_brookshaw2_avx512(
       for (size_t l = 0; l < 8; l++) jt[l] = j[l < m - k ? l : 0];
       j = jt;
     }
-    const __m512d U0 = gather8(vx, j), U1 = gather8(vy, j), P = gather8(pp, j),
-                  V = gather8(vol, j);
+    const __m512d U0 = lanes_of(vx, j), U1 = lanes_of(vy, j),
+                  P = lanes_of(pp, j), V = lanes_of(vol, j);
     const __m512d du0 = _mm512_sub_pd(U0, vui0), du1 = _mm512_sub_pd(U1, vui1);
     const __m512d dux = _mm512_add_pd(
         _mm512_add_pd(zero, _mm512_mul_pd(du0, X0)), _mm512_mul_pd(du1, X1));

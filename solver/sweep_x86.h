@@ -44,6 +44,21 @@ void vsph_sweep_x86_add8_avx2(double *buf, size_t lo, const size_t *jj,
  * @p vol. Returns the least of @p rs2 and the chunk's s2. Call only where
  * vsph_pair_x86_simd() returns 2; the library's baseline copy has it
  * abort. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
+    defined(__AVX2__) && defined(__FMA__) && !defined(__AVX512F__)
+/* 1 where vsph_sweep_x86_brookshaw2_avx512 gives the four-lane loops'
+ * bits: a build by GCC for AVX2 with FMA and no AVX-512 (the program's
+ * and the installed x86-64-v3 copy's), whose simd reductions sum in four
+ * lanes in the order read from GCC 12's code and whose exponential uses
+ * fma(); another build (clang, -march=native on an AVX-512 CPU, no FMA)
+ * sums in another order, and keeps the four-lane loops. A later GCC that
+ * changed the order would fail test_sweep_scatter_simd on an AVX-512
+ * CPU. */
+#define VSPH_SWEEP_X86_BROOKSHAW 1
+#else
+#define VSPH_SWEEP_X86_BROOKSHAW 0
+#endif
+
 double vsph_sweep_x86_brookshaw2_avx512(
     const size_t *jj, const double *x0, const double *x1, const double *s2,
     size_t m, const double *vx, const double *vy, const double *pp,

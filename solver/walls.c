@@ -3,13 +3,13 @@
 #include "walls.h"
 
 #include <math.h>
-#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "../common/status.h"
 #include "particles.h"
 #include "particles_internal.h"
+#include "share_internal.h"
 #include "walls_internal.h"
 
 /* One nearest-row entry: coordinates, the tangential velocity relative to
@@ -429,10 +429,9 @@ size_t vsph_walls_count(const struct vsph_walls *w,
   if (p->n >= 2 * GHOST_RUN) {
 #pragma omp parallel reduction(+ : n)
     {
-      const size_t nt = (size_t)omp_get_num_threads();
-      const size_t t = (size_t)omp_get_thread_num();
-      n = count_images(w, p, n_fluid, reach, pair, p->n * t / nt,
-                       p->n * (t + 1) / nt);
+      size_t i0, i1;
+      vsph_share_even(p->n, &i0, &i1);
+      n = count_images(w, p, n_fluid, reach, pair, i0, i1);
     }
   } else {
     n = count_images(w, p, n_fluid, reach, pair, 0, p->n);
