@@ -544,6 +544,11 @@ static void put_back(struct vsph_integrate *s, size_t n0);
 
 int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   if (!s) VSPH_FAIL(VSPH_EINVAL, "vsph_integrate_step: a NULL argument");
+  /* (a NaN step made a NaN skin, refused by the cell list as a radius) */
+  if (!(dt >= 0.0) || !isfinite(dt))
+    VSPH_FAIL(VSPH_EINVAL,
+              "vsph_integrate_step: the step %g is not a finite number >= 0",
+              dt);
   if (s->props.eq.tvf) return step_tvf(s, dt);
   if (s->props.leapfrog) return step_leapfrog(s, dt);
   /* the particles' order as the step finds them, to put back if it is

@@ -108,8 +108,10 @@ VSPH_API double vsph_integrate_dt_rule(double cfl, int split, int contact,
  *  The drift velocity w is kept by particle id for the next step's first
  *  drift [reconstructed: the paper does not say which velocity drifts]:
  *  one evaluation a step.
- *  @return VSPH_OK, or an error from the neighbour search (e.g. VSPH_EINVAL
- *  on non-finite positions: call _check). */
+ *  @return VSPH_OK; VSPH_EINVAL, the set untouched, if @p dt is not a
+ *  finite number >= 0 (0: the rates evaluated, nothing moved); or an error from
+ * the neighbour search (e.g. VSPH_EINVAL on non-finite positions: call _check).
+ */
 VSPH_API int vsph_integrate_step(struct vsph_integrate *s, double dt);
 
 /** @brief Stability test: 0 if the state is sound, 1 (reason in s->reason)

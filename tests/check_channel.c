@@ -433,6 +433,42 @@ START_TEST(test_fixed_step) {
 }
 END_TEST
 
+/* A step that is not a finite number >= 0 (NaN, either infinity, a
+ * negative one) is refused with VSPH_EINVAL before anything moves, for
+ * RK4 and the leapfrog alike: the positions, the clock and the step count
+ * as they were (a NaN step once made a NaN skin, refused only as the cell
+ * list's radius). */
+START_TEST(test_step_refuses_bad_dt) {
+  struct vsph_scene sc;
+  static const char *const SET[2][3] = {
+      {"Solver:res=12", NULL, NULL},
+      {"Solver:res=12", "Solver:integrator=leapfrog", NULL}};
+  const double bad[4] = {NAN, INFINITY, -INFINITY, -1e-4};
+  for (int k = 0; k < 2; k++) {
+    struct vsph_run *run =
+        vsph_test_run(&vsph_channel_couette_type, SET[k], &sc);
+    struct vsph_integrate *s = run->integ;
+    const size_t n = s->p->n;
+    double *x = malloc(n * sizeof *x);
+    ck_assert_ptr_nonnull(x);
+    memcpy(x, s->p->pos[0], n * sizeof *x);
+    for (int b = 0; b < 4; b++) {
+      ck_assert_int_eq(vsph_integrate_step(s, bad[b]), VSPH_EINVAL);
+      ck_assert_uint_eq(s->steps, 0);
+      ck_assert_double_eq(s->t, 0.0);
+      ck_assert_uint_eq(s->p->n, n);
+      ck_assert_int_eq(memcmp(x, s->p->pos[0], n * sizeof *x), 0);
+    }
+    /* a good step then moves the set */
+    ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+    ck_assert_uint_eq(s->steps, 1);
+    ck_assert_double_gt(s->t, 0.0);
+    free(x);
+    vsph_run_free(run);
+  }
+}
+END_TEST
+
 /* Vukcevic et al.'s fixed wall particles in the periodic channel
  * (Scene:walls = fixed), res 12 with summation density and Basa's cubic
  * spline at dx/h = 0.637: the wall lattice runs over the period and a
@@ -1045,6 +1081,7 @@ Suite *vsph_integrate_suite(void) {
   tcase_add_loop_test(tc, test_leapfrog_order, 0, 2);
   tcase_add_test(tc, test_leapfrog_viscous_step);
   tcase_add_test(tc, test_fixed_step);
+  tcase_add_test(tc, test_step_refuses_bad_dt);
   tcase_add_test(tc, test_row_memory);
   suite_add_tcase(s, tc);
   return s;
