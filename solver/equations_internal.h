@@ -471,13 +471,16 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
   size_t total = 0;
   double ms2 = INFINITY;
   const int fluid_only = p->n == n_fluid; /* no ghosts nor wall particles */
-  /* a Brookshaw form (@p brook: VSPH_VISCOUS_BROOKSHAW) in 2-D with the
-   * Gaussian: each chunk's kernel, map, i's sums and j's adds in AVX-512
-   * lanes where the CPU has them, the same bits
-   * (vsph_sweep_x86_brookshaw2_avx512) */
-  const int fused = VSPH_SWEEP_X86_BROOKSHAW && brook && dim == 2 &&
-                    kid == VSPH_KERNEL_DFQ_GAUSSIAN && !delta && !parts &&
-                    rc->pk.simd == 2;
+#ifdef VSPH_SWEEP_BROOKSHAW2_CHUNK
+  /* @p brook 2: the instance of a Brookshaw form in 2-D with the Gaussian
+   * that solver/sweep_x86.c builds for AVX-512 (vsph_sweep_x86_brookshaw2):
+   * each chunk's kernel, map, i's sums and j's adds in its lanes, the same
+   * bits */
+  const int fused = brook == 2;
+#else
+  const int fused = 0;
+  (void)brook;
+#endif
   /* a cell's receivers walk their rows together where the CPU allows:
    * each gets the chunks its own walk would give, to the bit */
   struct vsph_pair_cell pc;
@@ -505,9 +508,10 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
         double sf[3][VSPH_PAIR_CHUNK_MAX], sv[3][VSPH_PAIR_CHUNK_MAX],
             sc[VSPH_PAIR_CHUNK_MAX], sd[VSPH_PAIR_CHUNK_MAX],
             vj[VSPH_PAIR_CHUNK_MAX], js[8][VSPH_PAIR_CHUNK_MAX];
+#ifdef VSPH_SWEEP_BROOKSHAW2_CHUNK
         if (fused) { /* the map, i's sums and the closest pair at once */
           double sums[3] = {cont, f0, f1};
-          rs2 = vsph_sweep_x86_brookshaw2_avx512(
+          rs2 = VSPH_SWEEP_BROOKSHAW2_CHUNK(
               bq->j, bq->x[0], bq->x[1], bq->s2, m, vel[0], vel[1], pp, vol,
               ui[0], ui[1], pi, Vi, rc->pk.h_inv2, rc->pk.dwq, rc->vl.Kmu,
               rc->vl.eta2, sums, buf, lo, rs2);
@@ -515,6 +519,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
           total += sweep_count(bq, id, n_fluid, fluid_only, fi, &rs2, &ms2, 0);
           continue;
         }
+#endif
         /* the pairs' unit shares: a map, no sums, so that it vectorises */
 #pragma omp simd
         for (size_t k = 0; k < m; k++) {
@@ -589,6 +594,13 @@ sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
             double *min_s2, const int dim, vsph_viscous_pair_fn *const pair,
             const int delta, const int kid, const int brook) {
   (void)nf; /* = SW_FIELDS(dim, delta, rc->parts): run_sweep's plan */
+#if VSPH_SWEEP_X86_BROOKSHAW
+  /* a Brookshaw form in 2-D with the Gaussian: its instance for AVX-512
+   * where the CPU has it (solver/sweep_x86.c), the same bits */
+  if (brook == 1 && dim == 2 && !delta && kid == VSPH_KERNEL_DFQ_GAUSSIAN &&
+      !rc->parts && rc->pk.simd == 2)
+    return vsph_sweep_x86_brookshaw2(rc, p, cells, n_fluid, sw, blk, min_s2);
+#endif
   return rc->parts ? sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
                                        dim, pair, delta, kid, 1, brook)
                    : sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,

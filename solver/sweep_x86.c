@@ -74,6 +74,7 @@ static inline __attribute__((always_inline, target("avx2"))) void add_avx2(
   }
 }
 
+#if VSPH_SWEEP_X86_BROOKSHAW
 #define AVX512 __attribute__((target("avx512f,avx512vl,avx512dq")))
 
 /* a[j[l]] in lane l */
@@ -128,7 +129,22 @@ static inline __attribute__((always_inline)) AVX512 double lanes4(double prev,
   return ((prev + l0) + l[1]) + l[2] + l[3];
 }
 
-AVX512 double vsph_sweep_x86_brookshaw2_avx512(
+/* The Brookshaw forms' chunk (solver/sweep_x86.h: what
+ * vsph_sweep_x86_brookshaw2 does with each chunk): for the @p m
+ * neighbours jj[k] of receiver i (their x0, x1 = r_j - r_i and s2; F not
+ * set), the kernel factor (@p dwq, @p h_inv2), the continuity, pressure
+ * and viscous (Kmu, eta2: vsph_pair_mgf) shares, by the same operations
+ * as vsph_kernel_dfq_gaussian and the scalar terms (so the same bits);
+ * i's sums added to sums[0] (continuity), sums[1..2] (force) in the
+ * order of the sweep's simd reduction at the build's four lanes (pair k
+ * in lane k % 4 up to the last multiple of 4, the pairs after it in lane
+ * 0, then the lanes in order: GCC's, for the same bits as the scalar
+ * map; test_sweep_scatter_simd); j's shares (-V_i f, V_i c) added to
+ * entries buf + (jj[k] - lo) * 3, as vsph_sweep_x86_add_avx2 does.
+ * Receiver i's velocity @p ui0, @p ui1, pressure @p pi and volume
+ * @p Vi; the set's velocities @p vx, @p vy, pressures @p pp and volumes
+ * @p vol. Returns the least of @p rs2 and the chunk's s2. */
+static inline __attribute__((always_inline)) AVX512 double brookshaw2_chunk(
     const size_t *jj, const double *x0, const double *x1, const double *s2,
     size_t m, const double *vx, const double *vy, const double *pp,
     const double *vol, double ui0, double ui1, double pi, double Vi,
@@ -241,6 +257,26 @@ AVX512 double vsph_sweep_x86_brookshaw2_avx512(
   return _mm512_reduce_min_pd(vmin);
 }
 
+/* The sweep's block loops (solver/equations_internal.h) built here for
+ * AVX-512 too, so that the chunk above inlines into them: their other
+ * work has no sum in floating point (the chunk's are its own), so the
+ * same bits as the generic instance's loops */
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx512vl,avx512dq")
+#define VSPH_SWEEP_BROOKSHAW2_CHUNK brookshaw2_chunk
+#include "equations_internal.h"
+
+size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
+                                 const struct vsph_particles *p,
+                                 const struct vsph_cells *cells, size_t n_fluid,
+                                 const struct vsph_equations_sweep *sw,
+                                 size_t blk, double *min_s2) {
+  return sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2, 2, NULL, 0,
+                           VSPH_KERNEL_DFQ_GAUSSIAN, 0, 2);
+}
+#pragma GCC pop_options
+#endif
+
 __attribute__((target("avx2"))) void vsph_sweep_x86_add_avx2(
     double *buf, size_t lo, int nf, const size_t *jj, size_t m,
     const double *js, size_t stride) {
@@ -277,19 +313,6 @@ __attribute__((target("avx2"))) void vsph_sweep_x86_add8_avx2(
 }
 
 #else
-
-double vsph_sweep_x86_brookshaw2_avx512(
-    const size_t *jj, const double *x0, const double *x1, const double *s2,
-    size_t m, const double *vx, const double *vy, const double *pp,
-    const double *vol, double ui0, double ui1, double pi, double Vi,
-    double h_inv2, double dwq, double Kmu, double eta2, double sums[3],
-    double *buf, size_t lo, double rs2) {
-  (void)jj, (void)x0, (void)x1, (void)s2, (void)m, (void)vx, (void)vy;
-  (void)pp, (void)vol, (void)ui0, (void)ui1, (void)pi, (void)Vi, (void)h_inv2;
-  (void)dwq, (void)Kmu, (void)eta2, (void)sums, (void)buf, (void)lo;
-  (void)rs2;
-  abort();
-}
 
 void vsph_sweep_x86_add8_avx2(double *buf, size_t lo, const size_t *jj,
                               size_t m, const double *u, size_t stride,

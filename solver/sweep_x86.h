@@ -26,27 +26,27 @@ void vsph_sweep_x86_add8_avx2(double *buf, size_t lo, const size_t *jj,
                               size_t m, const double *u, size_t stride,
                               double v);
 
-/* The symmetric sweep's work on one chunk for a Brookshaw form (MGF, VI,
- * Cleary: vsph_pair_mgf with @p Kmu and @p eta2) in 2-D with the 3h
- * Gaussian, without delta-SPH or the parts, in AVX-512 lanes, eight pairs
- * at a time, the last ones masked: for the @p m neighbours jj[k] of
- * receiver i (their x0, x1 = r_j - r_i and s2; F not set), the kernel
- * factor (@p dwq, @p h_inv2), the continuity, pressure and viscous shares,
- * by the same operations as vsph_kernel_dfq_gaussian and the scalar terms
- * (so the same bits); i's sums added to sums[0] (continuity), sums[1..2]
- * (force) in the order of the sweep's simd reduction at the build's four
- * lanes (pair k in lane k % 4 up to the last multiple of 4, the pairs
- * after it in lane 0, then the lanes in order: GCC's, for the same bits
- * as the scalar map; test_sweep_scatter_simd); j's shares (-V_i f, V_i c)
- * added to entries buf + (jj[k] - lo) * 3, as vsph_sweep_x86_add_avx2
- * does. Receiver i's velocity @p ui0, @p ui1, pressure @p pi and volume
- * @p Vi; the set's velocities @p vx, @p vy, pressures @p pp and volumes
- * @p vol. Returns the least of @p rs2 and the chunk's s2. Call only where
- * vsph_pair_x86_simd() returns 2; the library's baseline copy has it
- * abort. */
+struct vsph_equations_ctx;
+struct vsph_particles;
+struct vsph_cells;
+struct vsph_equations_sweep;
+
+/* sweep_block for a Brookshaw form (MGF, VI, Cleary) in 2-D with the 3h
+ * Gaussian, without delta-SPH or the parts (solver/equations_internal.h),
+ * built for AVX-512: each chunk's work in its lanes, eight pairs at a
+ * time, the last ones masked (vsph_sweep_x86_brookshaw2_chunk, inlined;
+ * the block's loops around it are the generic instance's). Call only
+ * where vsph_pair_x86_simd() returns 2 and VSPH_SWEEP_X86_BROOKSHAW is 1;
+ * the library's baseline copy has it abort. */
+size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
+                                 const struct vsph_particles *p,
+                                 const struct vsph_cells *cells, size_t n_fluid,
+                                 const struct vsph_equations_sweep *sw,
+                                 size_t blk, double *min_s2);
+
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
     defined(__AVX2__) && defined(__FMA__) && !defined(__AVX512F__)
-/* 1 where vsph_sweep_x86_brookshaw2_avx512 gives the four-lane loops'
+/* 1 where vsph_sweep_x86_brookshaw2 gives the four-lane loops'
  * bits: a build by GCC for AVX2 with FMA and no AVX-512 (the program's
  * and the installed x86-64-v3 copy's), whose simd reductions sum in four
  * lanes in the order read from GCC 12's code and whose exponential uses
@@ -58,12 +58,5 @@ void vsph_sweep_x86_add8_avx2(double *buf, size_t lo, const size_t *jj,
 #else
 #define VSPH_SWEEP_X86_BROOKSHAW 0
 #endif
-
-double vsph_sweep_x86_brookshaw2_avx512(
-    const size_t *jj, const double *x0, const double *x1, const double *s2,
-    size_t m, const double *vx, const double *vy, const double *pp,
-    const double *vol, double ui0, double ui1, double pi, double Vi,
-    double h_inv2, double dwq, double Kmu, double eta2, double sums[3],
-    double *buf, size_t lo, double rs2);
 
 #endif /* VSPH_SOLVER_SWEEP_X86_H */

@@ -785,7 +785,7 @@ static struct vsph_integrate *shear3(int form, int contact) {
 /* The symmetric sweep's adds of j's shares by AVX2
  * (solver/sweep_x86.c: three fields in 2-D, four with delta-SPH or in
  * 3-D, eight in PVWF's first pass) and the AVX-512 map of the Brookshaw
- * forms in 2-D (vsph_sweep_x86_brookshaw2_avx512: their kernel, terms,
+ * forms in 2-D (vsph_sweep_x86_brookshaw2: their kernel, terms,
  * i's sums in the simd reduction's order, j's adds) against the scalar
  * loops: the stretching square at 24 across after three steps, MGF with
  * and without delta-SPH, PVWF, Violeau & Issa's and Cleary's forms (eta
