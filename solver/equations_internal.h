@@ -10,7 +10,9 @@
  * instantiates the general loop, each family of formulations with loops of
  * its own its specialised ones (solver/forms/, through
  * solver/viscous_internal.h's VSPH_VISCOUS_LOOPS), where a constant pair
- * function inlines and the component loops unroll. Within solver/ only. */
+ * function inlines and the component loops unroll; solver/sweep_x86.c the
+ * Brookshaw forms' 2-D sweep for AVX-512 (@p brook 2 of
+ * sweep_block_parts). Within solver/ only. */
 
 #include <math.h>
 #include <stddef.h>
@@ -445,11 +447,12 @@ VSPH_CONSTS_SPECIALISE size_t sweep_count(const struct vsph_pair_chunk *b,
  * buffer in pair order; i's sums go to the buffer after its row, so every
  * particle's entry in a block depends on the block's pairs and their
  * order alone. Pairs of two ghosts are skipped. Returns the interactions
- * (each fluid receiver of a pair counts once) and the closest pair. The
- * Brookshaw forms in 2-D with the Gaussian (@p brook) do each chunk's
- * work in AVX-512 lanes where the CPU has them and the build allows
- * (VSPH_SWEEP_X86_BROOKSHAW): the same operations and the same order of
- * i's sums, so the same bits (solver/sweep_x86.c). */
+ * (each fluid receiver of a pair counts once) and the closest pair.
+ * @p brook 2 (solver/sweep_x86.c's instance, built for AVX-512, of a
+ * Brookshaw form in 2-D with the Gaussian, without delta-SPH or the
+ * parts): each chunk's work in AVX-512 lanes (brookshaw2_chunk), the same
+ * operations and the same order of i's sums, so the same bits; any other
+ * @p brook: the loops above. */
 VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
     const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
     const struct vsph_cells *cells, size_t n_fluid,
@@ -586,7 +589,11 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
 
 /* sweep_block_parts with the parts (rc->parts) a constant too; @p nf,
  * the buffer's fields, is what run_sweep planned by the same SW_FIELDS
- * that sweep_block_parts makes a constant of. */
+ * that sweep_block_parts makes a constant of. @p brook 1 (a Brookshaw
+ * form's loops, VSPH_VISCOUS_BROOKSHAW): in 2-D with the Gaussian,
+ * without delta-SPH or the parts, on a CPU with AVX-512 and in a build
+ * that allows it (VSPH_SWEEP_X86_BROOKSHAW), the block goes to
+ * vsph_sweep_x86_brookshaw2 (the same bits). */
 VSPH_CONSTS_SPECIALISE size_t
 sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
             const struct vsph_cells *cells, size_t n_fluid,

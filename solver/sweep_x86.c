@@ -5,10 +5,12 @@
  * receiver's fields loaded, added and stored as one vector (four fields)
  * or a pair of lanes and one lane (three), in place of a scalar load, add
  * and store per field. Whole loads and stores, no masks: a masked store is
- * not forwarded to the next particle's load of the same entry. And the
- * Brookshaw forms' 2-D chunk (kernel, terms, sums and adds) in AVX-512
- * lanes. Each built for its instructions alone (target attribute), as
- * solver/pair_x86.c. */
+ * not forwarded to the next particle's load of the same entry. Built for
+ * its instructions alone (target attribute), as solver/pair_x86.c. And the
+ * Brookshaw forms' 2-D sweep for AVX-512: the chunk's kernel, terms, sums
+ * and adds in its lanes (brookshaw2_chunk), inlined into the sweep's
+ * block loops (sweep_block_parts of solver/equations_internal.h, included
+ * at the end of this file in a region built for AVX-512). */
 #include "sweep_x86.h"
 
 #include <math.h>
@@ -257,25 +259,7 @@ static inline __attribute__((always_inline)) AVX512 double brookshaw2_chunk(
   return _mm512_reduce_min_pd(vmin);
 }
 
-/* The sweep's block loops (solver/equations_internal.h) built here for
- * AVX-512 too, so that the chunk above inlines into them: their other
- * work has no sum in floating point (the chunk's are its own), so the
- * same bits as the generic instance's loops */
-#pragma GCC push_options
-#pragma GCC target("avx512f,avx512vl,avx512dq")
-#define VSPH_SWEEP_BROOKSHAW2_CHUNK brookshaw2_chunk
-#include "equations_internal.h"
-
-size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
-                                 const struct vsph_particles *p,
-                                 const struct vsph_cells *cells, size_t n_fluid,
-                                 const struct vsph_equations_sweep *sw,
-                                 size_t blk, double *min_s2) {
-  return sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2, 2, NULL, 0,
-                           VSPH_KERNEL_DFQ_GAUSSIAN, 0, 2);
-}
-#pragma GCC pop_options
-#endif
+#endif /* VSPH_SWEEP_X86_BROOKSHAW: the chunk */
 
 __attribute__((target("avx2"))) void vsph_sweep_x86_add_avx2(
     double *buf, size_t lo, int nf, const size_t *jj, size_t m,
@@ -311,6 +295,32 @@ __attribute__((target("avx2"))) void vsph_sweep_x86_add8_avx2(
     for (int a = 0; a < 8; a++) q[a] += v * u[(size_t)a * stride + k];
   }
 }
+
+/* The sweep's block loops (solver/equations_internal.h) built here for
+ * AVX-512 too, so that the chunk above inlines into them: their other
+ * work has no sum in floating point (the chunk's are its own), so the
+ * same bits as the generic instance's loops. The header's inline
+ * functions keep the AVX-512 target in the rest of this file: this
+ * region stays at its end, and nothing below it calls them. */
+#if VSPH_SWEEP_X86_BROOKSHAW
+#ifdef VSPH_SOLVER_EQUATIONS_INTERNAL_H
+#error "solver/equations_internal.h must first be included here"
+#endif
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx512vl,avx512dq")
+#define VSPH_SWEEP_BROOKSHAW2_CHUNK brookshaw2_chunk
+#include "equations_internal.h"
+
+size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
+                                 const struct vsph_particles *p,
+                                 const struct vsph_cells *cells, size_t n_fluid,
+                                 const struct vsph_equations_sweep *sw,
+                                 size_t blk, double *min_s2) {
+  return sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2, 2, NULL, 0,
+                           VSPH_KERNEL_DFQ_GAUSSIAN, 0, 2);
+}
+#pragma GCC pop_options
+#endif
 
 #else
 

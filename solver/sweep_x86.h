@@ -2,8 +2,8 @@
  * SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE). */
 /* The symmetric sweep's scatter of j's shares with AVX2, chosen at
  * run time where vsph_pair_kernel::simd is 1 or 2, and the Brookshaw
- * forms' 2-D chunk in AVX-512 where it is 2 (solver/sweep_x86.c); the
- * library's own, not installed. */
+ * forms' 2-D sweep built for AVX-512, where it is 2 (solver/sweep_x86.c);
+ * the library's own, not installed. */
 #ifndef VSPH_SOLVER_SWEEP_X86_H
 #define VSPH_SOLVER_SWEEP_X86_H
 
@@ -34,26 +34,29 @@ struct vsph_equations_sweep;
 /* sweep_block for a Brookshaw form (MGF, VI, Cleary) in 2-D with the 3h
  * Gaussian, without delta-SPH or the parts (solver/equations_internal.h),
  * built for AVX-512: each chunk's work in its lanes, eight pairs at a
- * time, the last ones masked (vsph_sweep_x86_brookshaw2_chunk, inlined;
- * the block's loops around it are the generic instance's). Call only
- * where vsph_pair_x86_simd() returns 2 and VSPH_SWEEP_X86_BROOKSHAW is 1;
- * the library's baseline copy has it abort. */
+ * time, the last ones masked (brookshaw2_chunk in solver/sweep_x86.c,
+ * inlined; the block's loops around it are sweep_block_parts'). Defined
+ * only where VSPH_SWEEP_X86_BROOKSHAW is 1; call it only there, and where
+ * vsph_pair_x86_simd() returns 2 (sweep_block does). */
 size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
                                  const struct vsph_particles *p,
                                  const struct vsph_cells *cells, size_t n_fluid,
                                  const struct vsph_equations_sweep *sw,
                                  size_t blk, double *min_s2);
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
-    defined(__AVX2__) && defined(__FMA__) && !defined(__AVX512F__)
+#if defined(__x86_64__) && defined(__LP64__) && defined(__GNUC__) && \
+    !defined(__clang__) && defined(__AVX2__) && defined(__FMA__) &&  \
+    !defined(__AVX512F__)
 /* 1 where vsph_sweep_x86_brookshaw2 gives the four-lane loops'
  * bits: a build by GCC for AVX2 with FMA and no AVX-512 (the program's
  * and the installed x86-64-v3 copy's), whose simd reductions sum in four
  * lanes in the order read from GCC 12's code and whose exponential uses
- * fma(); another build (clang, -march=native on an AVX-512 CPU, no FMA)
- * sums in another order, and keeps the four-lane loops. A later GCC that
- * changed the order would fail test_sweep_scatter_simd on an AVX-512
- * CPU. */
+ * fma() (and is LP64, as VSPH_PAIR_X86 needs); another build (clang,
+ * -march=native on an AVX-512 CPU, no FMA) sums in another order, and
+ * keeps the four-lane loops. A later GCC that changed the order would
+ * fail test_sweep_scatter_simd on an AVX-512 CPU. Evaluated where
+ * solver/sweep_x86.c includes this header first, before its AVX-512
+ * region (where __AVX512F__ is defined). */
 #define VSPH_SWEEP_X86_BROOKSHAW 1
 #else
 #define VSPH_SWEEP_X86_BROOKSHAW 0
