@@ -46,15 +46,17 @@ size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
 
 #if defined(__x86_64__) && defined(__LP64__) && defined(__GNUC__) && \
     !defined(__clang__) && defined(__AVX2__) && defined(__FMA__) &&  \
-    !defined(__AVX512F__)
+    !defined(__AVX512F__) && defined(VSPH_SIMD_SUMS)
 /* 1 where vsph_sweep_x86_brookshaw2 gives the four-lane loops'
  * bits: a build by GCC for AVX2 with FMA and no AVX-512 (the program's
  * and the installed x86-64-v3 copy's), whose simd reductions sum in four
  * lanes in the order read from GCC 12's code and whose exponential uses
- * fma() (and is LP64, as VSPH_PAIR_X86 needs); another build (clang,
- * -march=native on an AVX-512 CPU, no FMA) sums in another order, and
- * keeps the four-lane loops. A later GCC that changed the order would
- * fail test_sweep_scatter_simd on an AVX-512 CPU. Evaluated where
+ * fma() (and is LP64, as VSPH_PAIR_X86 needs), its simd reductions
+ * vectorised (VSPH_SIMD_SUMS, which the Makefile defines at -O3 without a
+ * sanitizer); another build (clang, -march=native on an AVX-512 CPU, no
+ * FMA, -O1 as make asan builds, a sanitizer's at -O3) sums in another
+ * order, and keeps the four-lane loops. A later GCC that changed the order
+ * would fail test_sweep_scatter_simd on an AVX-512 CPU. Evaluated where
  * solver/sweep_x86.c includes this header first, before its AVX-512
  * region (where __AVX512F__ is defined). */
 #define VSPH_SWEEP_X86_BROOKSHAW 1
