@@ -116,47 +116,47 @@ static void corr_pass(const struct vsph_equations_props *ep,
   struct vsph_share sh; /* runs of cells, owner first */
   vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
-    for (size_t c = c0; c < c1; c++) {
-      struct vsph_pair_ranges rg;
-      vsph_pair_ranges_cell(&rg, cells, c);
-      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-           i++) {
-        if (p->id[i] >= n_fluid) continue;
-        double S = p->vol[i] * w0, a[3] = {0, 0, 0}, M[9] = {0},
-               L[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-        struct vsph_pair_iter it;
-        struct vsph_pair_chunk b;
-        for (int pass = 0; pass < 1 + bl; pass++) {
-          vsph_pair_begin(&it, pk, p, &rg, i);
-          while (vsph_pair_gather(&it, dim, pk->dfq_id, &b))
-            for (size_t q = 0; q < b.m; q++) {
-              struct vsph_pair pr;
-              vsph_pair_at(&b, q, dim, &pr);
-              const double vj = p->vol[pr.j];
-              const double w = vsph_kernel_w(k, dim, sqrt(pr.s2) / h) * wf;
-              if (pass == 0) {
-                S += vj * w;
-                for (int e = 0; e < dim; e++) a[e] -= vj * pr.F * pr.x[e];
-                continue;
-              }
-              double g0[3];
-              vsph_pair_corr_grad(&pr, dim, w, S, a, NULL, 0, g0);
-              for (int e = 0; e < dim; e++)
-                for (int f = 0; f < dim; f++)
-                  M[e * dim + f] += vj * g0[e] * pr.x[f];
+  for (size_t c, run[2] = {0, 0};
+       vsph_share_next_cell(&sh, cells->ncells, run, &c);) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+         i++) {
+      if (p->id[i] >= n_fluid) continue;
+      double S = p->vol[i] * w0, a[3] = {0, 0, 0}, M[9] = {0},
+             L[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+      struct vsph_pair_iter it;
+      struct vsph_pair_chunk b;
+      for (int pass = 0; pass < 1 + bl; pass++) {
+        vsph_pair_begin(&it, pk, p, &rg, i);
+        while (vsph_pair_gather(&it, dim, pk->dfq_id, &b))
+          for (size_t q = 0; q < b.m; q++) {
+            struct vsph_pair pr;
+            vsph_pair_at(&b, q, dim, &pr);
+            const double vj = p->vol[pr.j];
+            const double w = vsph_kernel_w(k, dim, sqrt(pr.s2) / h) * wf;
+            if (pass == 0) {
+              S += vj * w;
+              for (int e = 0; e < dim; e++) a[e] -= vj * pr.F * pr.x[e];
+              continue;
             }
-        }
-        if (bl) {
-          for (int e = 0; e < 9; e++) L[e] = 0.0;
-          for (int e = 0; e < dim; e++) L[e * dim + e] = 1.0;
-          vsph_viscous_invert_sym(dim, M, L, ep->visc.det_tol);
-        }
-        ws->S[i] = S;
-        for (int e = 0; e < dim; e++) ws->a[e][i] = a[e];
-        for (int e = 0; e < dim * dim; e++) ws->L[e][i] = L[e];
+            double g0[3];
+            vsph_pair_corr_grad(&pr, dim, w, S, a, NULL, 0, g0);
+            for (int e = 0; e < dim; e++)
+              for (int f = 0; f < dim; f++)
+                M[e * dim + f] += vj * g0[e] * pr.x[f];
+          }
       }
+      if (bl) {
+        for (int e = 0; e < 9; e++) L[e] = 0.0;
+        for (int e = 0; e < dim; e++) L[e * dim + e] = 1.0;
+        vsph_viscous_invert_sym(dim, M, L, ep->visc.det_tol);
+      }
+      ws->S[i] = S;
+      for (int e = 0; e < dim; e++) ws->a[e][i] = a[e];
+      for (int e = 0; e < dim * dim; e++) ws->L[e][i] = L[e];
     }
+  }
 }
 
 /* One fluid particle of contact SPH (Parshikov et al. eqs. 5, 6, 35;
@@ -342,12 +342,12 @@ static void run_cells(const struct vsph_equations_ctx *rc,
   struct vsph_share sh;
   vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel reduction(+ : total) reduction(min : min_s2)
-  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
-    for (size_t c = c0; c < c1; c++) {
-      double m;
-      total += cell_loop(rc, p, cells, c, n_fluid, out, &m);
-      min_s2 = m < min_s2 ? m : min_s2;
-    }
+  for (size_t c, run[2] = {0, 0};
+       vsph_share_next_cell(&sh, cells->ncells, run, &c);) {
+    double m;
+    total += cell_loop(rc, p, cells, c, n_fluid, out, &m);
+    min_s2 = m < min_s2 ? m : min_s2;
+  }
   out->interactions = total;
   out->min_s2 = min_s2;
 }
@@ -997,21 +997,21 @@ void vsph_equations_density_sum(const struct vsph_equations_props *ep,
   struct vsph_share sh; /* runs of cells, owner first */
   vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
-    for (size_t c = c0; c < c1; c++) {
-      struct vsph_pair_ranges rg;
-      vsph_pair_ranges_cell(&rg, cells, c);
-      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-           i++) {
-        if (p->id[i] >= n_fluid) continue;
-        if (shape == SHAPE_QUINTIC2)
-          adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_QUINTIC2);
-        else if (shape == SHAPE_CUBIC2)
-          adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_CUBIC2);
-        else
-          adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_GENERAL);
-      }
+  for (size_t c, run[2] = {0, 0};
+       vsph_share_next_cell(&sh, cells->ncells, run, &c);) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+         i++) {
+      if (p->id[i] >= n_fluid) continue;
+      if (shape == SHAPE_QUINTIC2)
+        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_QUINTIC2);
+      else if (shape == SHAPE_CUBIC2)
+        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_CUBIC2);
+      else
+        adami_one(ep, NULL, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_GENERAL);
     }
+  }
 }
 
 int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
@@ -1035,27 +1035,27 @@ int vsph_equations_walls_adami(const struct vsph_equations_props *ep,
     struct vsph_share sh; /* runs of cells, owner first */
     vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-    for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
-      for (size_t c = c0; c < c1; c++) {
-        struct vsph_pair_ranges rg;
-        vsph_pair_ranges_cell(&rg, cells, c);
-        for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-             i++) {
-          const int wall = p->id[i] >= n_fluid;
-          if (wall != sweep) continue;
-          if (!wall && !ep->summation && !ep->tvf) { /* continuity's density */
-            p->p[i] = vsph_equations_pressure(ep, p->rho[i], 0.0);
-            p->vol[i] = p->m[i] / p->rho[i];
-            continue;
-          }
-          if (shape == SHAPE_QUINTIC2)
-            adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_QUINTIC2);
-          else if (shape == SHAPE_CUBIC2)
-            adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_CUBIC2);
-          else
-            adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_GENERAL);
+    for (size_t c, run[2] = {0, 0};
+         vsph_share_next_cell(&sh, cells->ncells, run, &c);) {
+      struct vsph_pair_ranges rg;
+      vsph_pair_ranges_cell(&rg, cells, c);
+      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+           i++) {
+        const int wall = p->id[i] >= n_fluid;
+        if (wall != sweep) continue;
+        if (!wall && !ep->summation && !ep->tvf) { /* continuity's density */
+          p->p[i] = vsph_equations_pressure(ep, p->rho[i], 0.0);
+          p->vol[i] = p->m[i] / p->rho[i];
+          continue;
         }
+        if (shape == SHAPE_QUINTIC2)
+          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_QUINTIC2);
+        else if (shape == SHAPE_CUBIC2)
+          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_CUBIC2);
+        else
+          adami_one(ep, w, p, n_fluid, &pk, &rg, i, w0, wf, SHAPE_GENERAL);
       }
+    }
   }
   return VSPH_OK;
 }
@@ -1132,19 +1132,19 @@ void vsph_equations_xsph(const struct vsph_equations_props *ep,
   struct vsph_share sh; /* runs of cells, owner first */
   vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
-    for (size_t c = c0; c < c1; c++) {
-      struct vsph_pair_ranges rg;
-      vsph_pair_ranges_cell(&rg, cells, c);
-      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-           i++) {
-        if (p->id[i] >= n_fluid) continue;
-        if (cubic)
-          xsph_one(ep, p, &pk, &rg, i, eps, wf, w, SHAPE_CUBIC2);
-        else
-          xsph_one(ep, p, &pk, &rg, i, eps, wf, w, SHAPE_GENERAL);
-      }
+  for (size_t c, run[2] = {0, 0};
+       vsph_share_next_cell(&sh, cells->ncells, run, &c);) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
+         i++) {
+      if (p->id[i] >= n_fluid) continue;
+      if (cubic)
+        xsph_one(ep, p, &pk, &rg, i, eps, wf, w, SHAPE_CUBIC2);
+      else
+        xsph_one(ep, p, &pk, &rg, i, eps, wf, w, SHAPE_GENERAL);
     }
+  }
 }
 
 int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
@@ -1179,14 +1179,13 @@ int vsph_equations_walls_evolving(const struct vsph_equations_props *ep,
   struct vsph_share sh; /* runs of cells, owner first */
   vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
-    for (size_t c = c0; c < c1; c++) {
-      struct vsph_pair_ranges rg;
-      vsph_pair_ranges_cell(&rg, cells, c);
-      for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c];
-           i++)
-        if (p->id[i] >= n_fluid) evolving_one(p, n_fluid, &pk, &rg, i);
-    }
+  for (size_t c, run[2] = {0, 0};
+       vsph_share_next_cell(&sh, cells->ncells, run, &c);) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    for (size_t i = cells->start[c]; i < cells->start[c] + cells->count[c]; i++)
+      if (p->id[i] >= n_fluid) evolving_one(p, n_fluid, &pk, &rg, i);
+  }
   return VSPH_OK;
 }
 

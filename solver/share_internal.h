@@ -87,4 +87,17 @@ static inline int vsph_share_next_cells(struct vsph_share *s, size_t ncells,
   return 1;
 }
 
+/* The calling thread's next cell *@p c of @p ncells, run by run
+ * (vsph_share_next_cells); @p run, the thread's own [first, end) of its
+ * current run, starts as {0, 0}. 0 when none is left. So a region's loop
+ * over the cells is one loop:
+ *   for (size_t c, run[2] = {0, 0}; vsph_share_next_cell(&sh, n, run, &c);) */
+static inline int vsph_share_next_cell(struct vsph_share *s, size_t ncells,
+                                       size_t run[2], size_t *c) {
+  if (run[0] >= run[1] && !vsph_share_next_cells(s, ncells, &run[0], &run[1]))
+    return 0;
+  *c = run[0]++;
+  return 1;
+}
+
 #endif /* VSPH_SOLVER_SHARE_INTERNAL_H */

@@ -311,13 +311,13 @@ int vsph_viscous_prepare(const struct vsph_viscous_props *vp,
   struct vsph_share sh; /* runs of cells, owner first */
   vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
-    for (size_t c = c0; c < c1; c++) {
-      struct vsph_pair_ranges rg;
-      vsph_pair_ranges_cell(&rg, cells, c);
-      const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
-      for (size_t i = i0; i < i1; i++) first(vp, &pk, p, &rg, i, ws);
-    }
+  for (size_t c, run[2] = {0, 0};
+       vsph_share_next_cell(&sh, cells->ncells, run, &c);) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    const size_t i0 = cells->start[c], i1 = i0 + cells->count[c];
+    for (size_t i = i0; i < i1; i++) first(vp, &pk, p, &rg, i, ws);
+  }
   size_t nf = 0; /* serial: reproducible */
   for (size_t i = 0; i < p->n; i++) nf += ws->fallback[i];
   ws->n_fallback = nf;
@@ -350,12 +350,11 @@ int vsph_viscous_compute(const struct vsph_viscous_props *vp,
   struct vsph_share sh; /* runs of cells, owner first */
   vsph_share_init_cells(&sh, cells->ncells);
 #pragma omp parallel
-  for (size_t c0, c1; vsph_share_next_cells(&sh, cells->ncells, &c0, &c1);)
-    for (size_t c = c0; c < c1; c++)
-      if (fn)
-        fn(&lp, &pk, p, cells, c, out, dens, fd);
-      else
-        force_cell(&lp, &pk, p, cells, c, out, dens, fd, dim, lp.pair,
-                   pk.dfq_id);
+  for (size_t c, run[2] = {0, 0};
+       vsph_share_next_cell(&sh, cells->ncells, run, &c);)
+    if (fn)
+      fn(&lp, &pk, p, cells, c, out, dens, fd);
+    else
+      force_cell(&lp, &pk, p, cells, c, out, dens, fd, dim, lp.pair, pk.dfq_id);
   return VSPH_OK;
 }
