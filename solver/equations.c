@@ -603,9 +603,57 @@ struct finish_ctx {
   struct vsph_equations_out *out;
 };
 
+/* finish_one's operations for a block's rows in 2-D without the gas law
+ * or the parts, the body force one vector for all (no radial force), in
+ * strips of 64 particles: a loop that computes every particle's values
+ * (a ghost's too, unused) and one that stores the fluid's, so that both
+ * vectorise (a store under a condition beside a division does not, with
+ * traps kept). The same operations, so the same bits. @p nf 3 or 4 (the
+ * delta-SPH sum), a constant where inlined. */
+static inline void finish_rows2(const struct finish_ctx *f, size_t i0,
+                                size_t i1, const int nf, const double *t) {
+  const struct vsph_particles *p = f->p;
+  const size_t *const id = p->id;
+  const size_t n_fluid = f->n_fluid;
+  const double *const rho = p->rho;
+  double *const drho = f->out->drho, *const a0 = f->out->acc[0],
+                *const a1 = f->out->acc[1];
+  const double dhc = f->rc->dhc;
+  double x[3] = {0, 0, 0}, g[3];
+  body_force(f->rc->ep, x, g); /* the same at every x */
+  for (size_t s0 = i0; s0 < i1; s0 += 64) {
+    const size_t e = i1 - s0 < 64 ? i1 - s0 : 64;
+    const double *const ts = t + (s0 - i0) * (size_t)nf;
+    double dr[64], b0[64], b1[64];
+#pragma omp simd
+    for (size_t k = 0; k < e; k++) {
+      const double *const s = ts + k * (size_t)nf;
+      const double rhoi = rho[s0 + k], rinv = 1.0 / rhoi;
+      dr[k] = rhoi * s[SW_CONT(2)] + dhc * (nf > 3 ? s[SW_DELTA(2)] : 0.0);
+      b0[k] = rinv * s[SW_F] + g[0];
+      b1[k] = rinv * s[SW_F + 1] + g[1];
+    }
+#pragma omp simd
+    for (size_t k = 0; k < e; k++)
+      if (id[s0 + k] < n_fluid) { /* a ghost's entries are left alone */
+        drho[s0 + k] = dr[k];
+        a0[s0 + k] = b0[k];
+        a1[s0 + k] = b1[k];
+      }
+  }
+}
+
 static void finish_rows(void *ctx, size_t i0, size_t i1, int nf,
                         const double *t) {
   const struct finish_ctx *f = ctx;
+  if (f->p->dim == 2 && !f->rc->gas && !f->rc->parts &&
+      f->rc->ep->body != VSPH_EQUATIONS_BODY_RADIAL && (nf == 3 || nf == 4)) {
+    if (nf == 3)
+      finish_rows2(f, i0, i1, 3, t);
+    else
+      finish_rows2(f, i0, i1, 4, t);
+    return;
+  }
   for (size_t i = i0; i < i1; i++) {
     if (f->p->id[i] >= f->n_fluid) continue;
     double s[3 + 2 + 3] = {0};
@@ -815,7 +863,18 @@ int vsph_equations_rhs(const struct vsph_equations_props *ep,
     VSPH_FAIL(VSPH_EINVAL, "the gas law needs the particles' energy fields");
   if (ep->tvf && !p->tvel[0])
     VSPH_FAIL(VSPH_EINVAL, "the transport velocity needs its fields");
-  if (!ep->solid) {
+  if (!ep->solid && ep->nmat <= 1 && ep->eos == VSPH_EQUATIONS_EOS_LINEAR) {
+    /* the linear law of one material, in a loop that vectorises: the
+     * operations of vsph_equations_pressure's, so the same bits */
+    const double c2 = ep->c0 * ep->c0, rho0 = ep->rho0;
+    const double *const rho = p->rho, *const m = p->m;
+    double *const pr = p->p, *const vol = p->vol;
+#pragma omp parallel for simd schedule(static)
+    for (size_t i = 0; i < n; i++) {
+      pr[i] = c2 * (rho[i] - rho0);
+      vol[i] = m[i] / rho[i];
+    }
+  } else if (!ep->solid) {
     const unsigned char *const mat = ep->nmat > 1 ? p->mat : NULL;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < n; i++) {

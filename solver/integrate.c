@@ -608,14 +608,27 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
       if (lof >= hif) continue;
       const double *const kf = k[f], *const y0f = s->y0[f];
       double *const ksf = s->ks[f], *const yf = y[f];
-      /* static: each thread keeps its particles from field to field */
+      /* static: each thread keeps its particles from field to field; in
+       * strips of 64, a loop that makes every particle's values (a
+       * ghost's too, unused) and one that stores those of the particles
+       * the field is advanced for, so that both vectorise */
 #pragma omp for schedule(static) nowait
-      for (size_t i = 0; i < n; i++) {
-        if (id[i] < lof || id[i] >= hif) continue;
-        const double kv = kf[i];
-        const double sum = (stage ? ksf[i] : 0.0) + wk * kv;
-        ksf[i] = sum;
-        yf[i] = y0f[i] + c * (stage < 3 ? kv : sum);
+      for (size_t s0 = 0; s0 < n; s0 += 64) {
+        const size_t e = n - s0 < 64 ? n - s0 : 64;
+        double sum[64], next[64];
+#pragma omp simd
+        for (size_t q = 0; q < e; q++) {
+          const size_t i = s0 + q;
+          const double kv = kf[i];
+          sum[q] = (stage ? ksf[i] : 0.0) + wk * kv;
+          next[q] = y0f[i] + c * (stage < 3 ? kv : sum[q]);
+        }
+#pragma omp simd
+        for (size_t q = 0; q < e; q++)
+          if (id[s0 + q] >= lof && id[s0 + q] < hif) {
+            ksf[s0 + q] = sum[q];
+            yf[s0 + q] = next[q];
+          }
       }
     }
   }

@@ -1074,6 +1074,55 @@ START_TEST(test_row_memory) {
 }
 END_TEST
 
+/* An RK4 step advances the fluid alone: the lid-driven cavity's wall
+ * particles keep their places to the bit (their velocities are the
+ * walls' own, set at every evaluation, the lid's U and Adami's
+ * extrapolation, so not 0: advanced, they would move), while every
+ * fluid particle moves; with evolving walls (case 1) the walls' density
+ * is advanced too, their places still kept. The stage loop meets walls
+ * among the fluid in the strips it takes. */
+START_TEST(test_rk4_advances_fluid_only) {
+  static const char *const FIXED[] = {"Solver:res=12", NULL};
+  static const char *const EVOLVING[] = {
+      "Solver:res=12", "Scene:walls=evolving", "Solver:eos=tait", NULL};
+  struct vsph_run *run =
+      vsph_test_run(&vsph_cavity_type, _i ? EVOLVING : FIXED, NULL);
+  struct vsph_integrate *s = run->integ;
+  ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0); /* walls */
+  struct vsph_particles *p = s->p;
+  const size_t n = p->n, nf = s->n_fluid;
+  ck_assert_uint_gt(n, nf);
+  double *before = malloc(5 * n * sizeof *before);
+  for (size_t i = 0; i < n; i++) {
+    const size_t id = p->id[i];
+    ck_assert_uint_lt(id, n);
+    for (int k = 0; k < 2; k++) {
+      before[k * n + id] = p->pos[k][i];
+      before[(2 + k) * n + id] = p->vel[k][i];
+    }
+    before[4 * n + id] = p->rho[i];
+  }
+  ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  size_t moved = 0, lid = 0, rho_walls = 0;
+  for (size_t i = 0; i < n; i++) {
+    const size_t id = p->id[i];
+    if (id < nf) {
+      moved += p->pos[0][i] != before[id] || p->pos[1][i] != before[n + id];
+      continue;
+    }
+    for (int k = 0; k < 2; k++)
+      ck_assert_double_eq(p->pos[k][i], before[k * n + id]);
+    lid += p->vel[0][i] != 0.0;
+    rho_walls += p->rho[i] != before[4 * n + id];
+  }
+  ck_assert_uint_eq(moved, nf);
+  ck_assert_uint_gt(lid, 0); /* the lid's particles, which would move */
+  if (_i) ck_assert_uint_gt(rho_walls, 0);
+  free(before);
+  vsph_run_free(run);
+}
+END_TEST
+
 Suite *vsph_integrate_suite(void) {
   Suite *s = suite_create("integrate");
   TCase *tc = tcase_create("steps");
@@ -1083,6 +1132,7 @@ Suite *vsph_integrate_suite(void) {
   tcase_add_test(tc, test_fixed_step);
   tcase_add_test(tc, test_step_refuses_bad_dt);
   tcase_add_test(tc, test_row_memory);
+  tcase_add_loop_test(tc, test_rk4_advances_fluid_only, 0, 2);
   suite_add_tcase(s, tc);
   return s;
 }

@@ -21,6 +21,7 @@
  *    same interactions and closest pair exactly, and the same bits on 1
  *    and 2 threads; through it the right-hand side matches the twin too. */
 #include <gsl/gsl_linalg.h>
+#include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
 #include <omp.h>
@@ -471,6 +472,84 @@ static void twin_check(int form, int dim, int sweep,
   vsph_cells_free(cells);
   vsph_particles_free(p);
 }
+
+/* The right-hand side of the fluid particles alone (id < n_fluid): the
+ * other particles' entries of every rate are left as they were (an
+ * evolving wall's density rate is set before it and read after), and a
+ * fluid particle's rates are those it has when every particle is fluid,
+ * to the bit (the others are its neighbours all the same, summed in the
+ * same order). Case _i: the form (MGF, MEAF, PVWF), the dimension, the
+ * sweep or the gather, delta-SPH, the parts; the loops of the sweep's
+ * finish and of the state law that vectorise are among them (2-D, the
+ * linear law, no parts). */
+START_TEST(test_rhs_leaves_others) {
+  static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_MEAF,
+                              VSPH_VISCOUS_PVWF};
+  const int form = forms[_i % 3], dim = 2 + _i / 3 % 2, sweep = _i / 6 % 2,
+            delta = _i / 12 % 2, parts = _i / 24 % 2;
+  struct vsph_particles *p = random_set(dim, 777 + (unsigned long)_i);
+  const size_t n = p->n, nfl = n / 2;
+  /* the ids (labels) shuffled, so that the others lie among the fluid as
+   * ghosts do */
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, 99 + (unsigned long)_i);
+  gsl_ran_shuffle(rng, p->id, n, sizeof *p->id);
+  gsl_rng_free(rng);
+  struct vsph_equations_props ep = {
+      .rho0 = RHO0, .c0 = C0, .delta = delta ? DELTA : 0.0};
+  ck_assert_int_eq(vsph_viscous_props_init(&ep.visc, form, &vsph_gaussian_type,
+                                           dim, HDX * DX, MU),
+                   0);
+  struct vsph_cells *cells = vsph_cells_alloc();
+  ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, dim);
+  const double mark = -7.25; /* no rate of this set takes it */
+  double *buf[2];
+  for (int r = 0; r < 2; r++) { /* r 0: half the set fluid; 1: all */
+    buf[r] = malloc(8 * n * sizeof *buf[r]);
+    for (size_t k = 0; k < 8 * n; k++) buf[r][k] = mark;
+    struct vsph_equations_out out = {
+        .drho = column(buf[r], n, 0),
+        .acc = {column(buf[r], n, 1), column(buf[r], n, 2),
+                column(buf[r], n, 3)},
+        .sweep = sweep ? vsph_equations_sweep_alloc() : NULL};
+    if (parts) {
+      for (int a = 0; a < 3; a++) out.acc_visc[a] = column(buf[r], n, 4 + a);
+      out.drho_delta = column(buf[r], n, 7);
+    }
+    ck_assert_int_eq(vsph_equations_rhs(&ep, p, r ? n : nfl, cells, ws, &out),
+                     0);
+    vsph_equations_sweep_free(out.sweep);
+  }
+  size_t turns = 0; /* fluid and others alternating in index order */
+  for (size_t i = 0; i < n; i++) {
+    const int fluid = p->id[i] < nfl;
+    turns += i > 0 && fluid != (p->id[i - 1] < nfl);
+    for (int c = 0; c < 8; c++) {
+      const int rate =
+          c < 1 + dim || (parts && c >= 4 && (c < 4 + dim || c == 7));
+      const double v = buf[0][(size_t)c * n + i];
+      if (!fluid || !rate) /* an entry of no rate, or of another particle */
+        ck_assert_msg(v == mark,
+                      "case %d: entry %d of particle %zu (id %zu, "
+                      "not fluid) set to %g",
+                      _i, c, i, p->id[i], v);
+      else
+        ck_assert_msg(v != mark && v == buf[1][(size_t)c * n + i],
+                      "case %d: entry %d of fluid particle %zu: %.17g with "
+                      "half the set fluid, %.17g with all",
+                      _i, c, i, v, buf[1][(size_t)c * n + i]);
+    }
+  }
+  /* the loops meet both kinds within a strip of 64, and often */
+  ck_assert_uint_gt(turns, n / 4);
+  free(buf[0]);
+  free(buf[1]);
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+}
+END_TEST
 
 START_TEST(test_rhs_matches_brute_force_twin) {
   /* the second half: the right-hand side through the symmetric sweep */
@@ -1813,6 +1892,7 @@ Suite *vsph_equations_suite(void) {
   Suite *s = suite_create("equations");
   TCase *tc = tcase_create("rhs");
   tcase_set_timeout(tc, 60);
+  tcase_add_loop_test(tc, test_rhs_leaves_others, 0, 48);
   size_t nwc = 0;
   while (vsph_scene_get(nwc) && vsph_scene_get(nwc) != &vsph_shear_type) nwc++;
   tcase_add_loop_test(tc, test_candidates_simd, 0, 4);
