@@ -606,12 +606,15 @@ struct finish_ctx {
 /* finish_one's operations for a block's rows in 2-D without the gas law
  * or the parts, the body force one vector for all (no radial force), in
  * strips of 64 particles: a loop that computes every particle's values
- * (a ghost's too, unused) and one that stores the fluid's, so that both
- * vectorise (a store under a condition beside a division does not, with
- * traps kept). The same operations, so the same bits. @p nf 3 or 4 (the
- * delta-SPH sum), a constant where inlined. */
-static inline void finish_rows2(const struct finish_ctx *f, size_t i0,
-                                size_t i1, const int nf, const double *t) {
+ * and one that stores the fluid's, so that both vectorise (a store under
+ * a condition beside a division does not, with traps kept). A ghost's or
+ * wall particle's values are computed from whatever its entries hold
+ * (1/rho of rho = 0 is an infinity) and never stored; vsph enables no
+ * floating-point trap. The same operations, so the same bits. @p nf 3 or
+ * 4 (the delta-SPH sum), a constant (always inlined). */
+VSPH_CONSTS_SPECIALISE void finish_rows2(const struct finish_ctx *f, size_t i0,
+                                         size_t i1, const int nf,
+                                         const double *t) {
   const struct vsph_particles *p = f->p;
   const size_t *const id = p->id;
   const size_t n_fluid = f->n_fluid;

@@ -570,14 +570,16 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
   k[2 * d + 1] = p->de; /* the gas law's energy (nf says whether) */
   /* y0, the state the step starts from, is also what a stopped step puts
    * back (put_back): copied by the threads, each the share of every field
-   * that its stages' loops below take (the same static schedule; a small
-   * set by one thread, as a parallel region's start costs more) */
+   * that its stages' loops below take (the same static schedule over the
+   * same strips of 64; a small set by one thread, as a parallel region's
+   * start costs more) */
 #pragma omp parallel if (n >= VSPH_PARTICLES_MOVE_PARALLEL)
   for (int f = 0; f < nf; f++) {
     const double *const yf = y[f];
     double *const y0f = s->y0[f];
 #pragma omp for schedule(static) nowait
-    for (size_t i = 0; i < n; i++) y0f[i] = yf[i];
+    for (size_t s0 = 0; s0 < n; s0 += 64)
+      memcpy(y0f + s0, yf + s0, (n - s0 < 64 ? n - s0 : 64) * sizeof *y0f);
   }
   static const double a[4] = {0.0, 0.5, 0.5, 1.0}, w[4] = {1, 2, 2, 1};
   size_t nint = 0;
@@ -609,9 +611,11 @@ int vsph_integrate_step(struct vsph_integrate *s, double dt) {
       const double *const kf = k[f], *const y0f = s->y0[f];
       double *const ksf = s->ks[f], *const yf = y[f];
       /* static: each thread keeps its particles from field to field; in
-       * strips of 64, a loop that makes every particle's values (a
-       * ghost's too, unused) and one that stores those of the particles
-       * the field is advanced for, so that both vectorise */
+       * strips of 64, a loop that makes every particle's values and one
+       * that stores those of the particles the field is advanced for, so
+       * that both vectorise (a ghost's values are made from whatever its
+       * entries hold, its ks never written, and never stored; vsph
+       * enables no floating-point trap) */
 #pragma omp for schedule(static) nowait
       for (size_t s0 = 0; s0 < n; s0 += 64) {
         const size_t e = n - s0 < 64 ? n - s0 : 64;

@@ -478,13 +478,19 @@ static void twin_check(int form, int dim, int sweep,
  * evolving wall's density rate is set before it and read after), and a
  * fluid particle's rates are those it has when every particle is fluid,
  * to the bit (the others are its neighbours all the same, summed in the
- * same order). Case _i: the form (MGF, MEAF, PVWF), the dimension, the
- * sweep or the gather, delta-SPH, the parts; the loops of the sweep's
- * finish and of the state law that vectorise are among them (2-D, the
- * linear law, no parts). */
+ * same order), and those the general finish gives it from the same sums
+ * (finish_one, which the parts take: the same sums in the same order, so
+ * the same bits; without the parts, 2-D sweeps finish by finish_rows2);
+ * the state law's p and V every particle's, as vsph_equations_pressure
+ * and m/rho make them, to the bit. Case _i: the form (MGF, MEAF, PVWF),
+ * the dimension, the sweep or the gather, delta-SPH, the parts, and the
+ * body force (none, gravity, uniform) in turn. */
 START_TEST(test_rhs_leaves_others) {
   static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_MEAF,
                               VSPH_VISCOUS_PVWF};
+  static const int bodies[] = {VSPH_EQUATIONS_BODY_NONE,
+                               VSPH_EQUATIONS_BODY_GRAVITY,
+                               VSPH_EQUATIONS_BODY_UNIFORM};
   const int form = forms[_i % 3], dim = 2 + _i / 3 % 2, sweep = _i / 6 % 2,
             delta = _i / 12 % 2, parts = _i / 24 % 2;
   struct vsph_particles *p = random_set(dim, 777 + (unsigned long)_i);
@@ -495,8 +501,12 @@ START_TEST(test_rhs_leaves_others) {
   gsl_rng_set(rng, 99 + (unsigned long)_i);
   gsl_ran_shuffle(rng, p->id, n, sizeof *p->id);
   gsl_rng_free(rng);
-  struct vsph_equations_props ep = {
-      .rho0 = RHO0, .c0 = C0, .delta = delta ? DELTA : 0.0};
+  struct vsph_equations_props ep = {.rho0 = RHO0,
+                                    .c0 = C0,
+                                    .delta = delta ? DELTA : 0.0,
+                                    .body = bodies[(_i + _i / 3) % 3],
+                                    .g = 9.81,
+                                    .f = 0.37};
   ck_assert_int_eq(vsph_viscous_props_init(&ep.visc, form, &vsph_gaussian_type,
                                            dim, HDX * DX, MU),
                    0);
@@ -504,47 +514,58 @@ START_TEST(test_rhs_leaves_others) {
   ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
   struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, dim);
   const double mark = -7.25; /* no rate of this set takes it */
-  double *buf[2];
-  for (int r = 0; r < 2; r++) { /* r 0: half the set fluid; 1: all */
+  double *buf[3];
+  /* r 0: half the set fluid; 1: all; 2: half, with the parts */
+  for (int r = 0; r < 3; r++) {
     buf[r] = malloc(8 * n * sizeof *buf[r]);
+    ck_assert_ptr_nonnull(buf[r]);
     for (size_t k = 0; k < 8 * n; k++) buf[r][k] = mark;
     struct vsph_equations_out out = {
         .drho = column(buf[r], n, 0),
         .acc = {column(buf[r], n, 1), column(buf[r], n, 2),
                 column(buf[r], n, 3)},
         .sweep = sweep ? vsph_equations_sweep_alloc() : NULL};
-    if (parts) {
+    if (parts || r == 2) {
       for (int a = 0; a < 3; a++) out.acc_visc[a] = column(buf[r], n, 4 + a);
       out.drho_delta = column(buf[r], n, 7);
     }
-    ck_assert_int_eq(vsph_equations_rhs(&ep, p, r ? n : nfl, cells, ws, &out),
-                     0);
+    ck_assert_int_eq(
+        vsph_equations_rhs(&ep, p, r == 1 ? n : nfl, cells, ws, &out), 0);
     vsph_equations_sweep_free(out.sweep);
   }
   size_t turns = 0; /* fluid and others alternating in index order */
   for (size_t i = 0; i < n; i++) {
+    ck_assert(p->p[i] == vsph_equations_pressure(&ep, p->rho[i], 0.0));
+    ck_assert(p->vol[i] == p->m[i] / p->rho[i]);
     const int fluid = p->id[i] < nfl;
     turns += i > 0 && fluid != (p->id[i - 1] < nfl);
     for (int c = 0; c < 8; c++) {
       const int rate =
           c < 1 + dim || (parts && c >= 4 && (c < 4 + dim || c == 7));
       const double v = buf[0][(size_t)c * n + i];
-      if (!fluid || !rate) /* an entry of no rate, or of another particle */
+      if (!fluid || !rate) { /* an entry of no rate, or of another particle */
         ck_assert_msg(v == mark,
                       "case %d: entry %d of particle %zu (id %zu, "
                       "not fluid) set to %g",
                       _i, c, i, p->id[i], v);
-      else
-        ck_assert_msg(v != mark && v == buf[1][(size_t)c * n + i],
-                      "case %d: entry %d of fluid particle %zu: %.17g with "
-                      "half the set fluid, %.17g with all",
-                      _i, c, i, v, buf[1][(size_t)c * n + i]);
+        continue;
+      }
+      const double all = buf[1][(size_t)c * n + i],
+                   general = buf[2][(size_t)c * n + i];
+      ck_assert_msg(v != mark && v == all,
+                    "case %d: entry %d of fluid particle %zu: %.17g with "
+                    "half the set fluid, %.17g with all",
+                    _i, c, i, v, all);
+      if (c < 1 + dim)
+        ck_assert_msg(v == general,
+                      "case %d: rate %d of fluid particle %zu: %.17g, by the "
+                      "general finish %.17g",
+                      _i, c, i, v, general);
     }
   }
   /* the loops meet both kinds within a strip of 64, and often */
   ck_assert_uint_gt(turns, n / 4);
-  free(buf[0]);
-  free(buf[1]);
+  for (int r = 0; r < 3; r++) free(buf[r]);
   vsph_viscous_ws_free(ws);
   vsph_cells_free(cells);
   vsph_particles_free(p);
