@@ -439,7 +439,8 @@ asan: deps
 valgrind-check: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph $(BUILD)/check_vsph
 	VSPH_BIN=$(BUILD)/vsph CK_FORK=no OMP_NUM_THREADS=1 \
-	  valgrind --error-exitcode=1 --leak-check=full $(BUILD)/check_vsph
+	  valgrind --error-exitcode=1 --leak-check=full \
+	  --suppressions=tests/valgrind.supp $(BUILD)/check_vsph
 
 # REBOUND-style name rule: every defined global symbol of <dir>/<file>.o
 # starts with vsph_<file>_ (main excepted in cli/main.o; a named OpenMP
