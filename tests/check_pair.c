@@ -482,7 +482,9 @@ static void twin_check(int form, int dim, int sweep,
  * (finish_one, which the parts take: the same sums in the same order, so
  * the same bits; without the parts, 2-D sweeps finish by finish_rows2);
  * the state law's p and V every particle's, as vsph_equations_pressure
- * and m/rho make them, to the bit. Case _i: the form (MGF, MEAF, PVWF),
+ * and m/rho make them, to the bit; and the interactions those a count
+ * pair by pair gives, with half the set fluid and with one particle not
+ * (the last id, at the fluid's bound). Case _i: the form (MGF, MEAF, PVWF),
  * the dimension, the sweep or the gather, delta-SPH, the parts, and the
  * body force (none, gravity, uniform) in turn. */
 START_TEST(test_rhs_leaves_others) {
@@ -514,9 +516,11 @@ START_TEST(test_rhs_leaves_others) {
   ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
   struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, dim);
   const double mark = -7.25; /* no rate of this set takes it */
-  double *buf[3];
-  /* r 0: half the set fluid; 1: all; 2: half, with the parts */
-  for (int r = 0; r < 3; r++) {
+  double *buf[4];
+  /* r 0: half the set fluid; 1: all; 2: half, with the parts; 3: all but
+   * the particle of id n - 1 */
+  const size_t nfl_r[4] = {nfl, n, nfl, n - 1};
+  for (int r = 0; r < 4; r++) {
     buf[r] = malloc(8 * n * sizeof *buf[r]);
     ck_assert_ptr_nonnull(buf[r]);
     for (size_t k = 0; k < 8 * n; k++) buf[r][k] = mark;
@@ -529,9 +533,21 @@ START_TEST(test_rhs_leaves_others) {
       for (int a = 0; a < 3; a++) out.acc_visc[a] = column(buf[r], n, 4 + a);
       out.drho_delta = column(buf[r], n, 7);
     }
-    ck_assert_int_eq(
-        vsph_equations_rhs(&ep, p, r == 1 ? n : nfl, cells, ws, &out), 0);
+    ck_assert_int_eq(vsph_equations_rhs(&ep, p, nfl_r[r], cells, ws, &out), 0);
     vsph_equations_sweep_free(out.sweep);
+    /* the interactions, each fluid receiver of a pair within the support
+     * once, counted pair by pair here: exact */
+    size_t count = 0;
+    const double kap = vsph_gaussian_type.kappa,
+                 H2 = kap * ep.visc.h * kap * ep.visc.h; /* the loops' */
+    for (size_t i = 0; i < n; i++)
+      for (size_t j = i + 1; j < n; j++) {
+        double s2 = 0.0;
+        for (int a = 0; a < dim; a++)
+          s2 += (p->pos[a][j] - p->pos[a][i]) * (p->pos[a][j] - p->pos[a][i]);
+        if (s2 < H2) count += (p->id[i] < nfl_r[r]) + (p->id[j] < nfl_r[r]);
+      }
+    ck_assert_uint_eq(out.interactions, count);
   }
   size_t turns = 0; /* fluid and others alternating in index order */
   for (size_t i = 0; i < n; i++) {
@@ -565,7 +581,7 @@ START_TEST(test_rhs_leaves_others) {
   }
   /* the loops meet both kinds within a strip of 64, and often */
   ck_assert_uint_gt(turns, n / 4);
-  for (int r = 0; r < 3; r++) free(buf[r]);
+  for (int r = 0; r < 4; r++) free(buf[r]);
   vsph_viscous_ws_free(ws);
   vsph_cells_free(cells);
   vsph_particles_free(p);
