@@ -444,13 +444,14 @@ void vsph_equations_sweep_free(struct vsph_equations_sweep *sw) {
   free(sw->off);
   free(sw->buf);
   free(sw->rows);
+  free(sw->flags);
   free(sw);
 }
 
 size_t vsph_equations_sweep_bytes(const struct vsph_equations_sweep *sw) {
   if (!sw) return 0;
   return sizeof *sw + sw->cap_off * sizeof(size_t) +
-         sw->cap_buf * sizeof(double);
+         sw->cap_buf * sizeof(double) + sw->cap_flags;
 }
 
 /* The blocks of this evaluation, the cells' (planned with their build on
@@ -819,6 +820,56 @@ static int grad_sweep(const struct vsph_viscous_props *vp,
   return VSPH_OK;
 }
 
+/* In a set with ghosts or wall particles (id >= n_fluid), each cell's
+ * flag sw->clean: 1 where none lies in its ranges (vsph_cells_ranges: the
+ * cells within VSPH_CELLS_SUB of it along each axis, clipped to the
+ * grid), so that sweep_count need not look its receivers' neighbours up.
+ * Each cell's own first, then the window along x, y and z in turn; in a
+ * direct set (one cell, every particle) the one flag. Without room for
+ * the flags, sw->clean stays NULL and every j is looked up (the same
+ * counts). */
+static void sweep_clean(struct vsph_equations_sweep *sw,
+                        const struct vsph_cells *cells,
+                        const struct vsph_particles *p, size_t n_fluid) {
+  const size_t nc = cells->ncells;
+  sw->clean = NULL;
+  if (2 * nc > sw->cap_flags) {
+    unsigned char *f = realloc(sw->flags, 2 * nc);
+    if (!f) return;
+    sw->flags = f;
+    sw->cap_flags = 2 * nc;
+  }
+  unsigned char *a = sw->flags, *b = sw->flags + nc;
+  const size_t *const id = p->id;
+  for (size_t c = 0; c < nc; c++) {
+    unsigned g = 0;
+    const size_t e = cells->start[c] + cells->count[c];
+    for (size_t i = cells->start[c]; i < e; i++) g |= id[i] >= n_fluid;
+    a[c] = (unsigned char)g;
+  }
+  if (!cells->direct) {
+    const size_t S = VSPH_CELLS_SUB;
+    size_t stride = 1;
+    for (int k = 0; k < 3; k++) {
+      const size_t len = cells->nc[k];
+      for (size_t c = 0; c < nc; c++) {
+        const size_t x = c / stride % len, row = c - x * stride;
+        const size_t x0 = x >= S ? x - S : 0,
+                     x1 = x + S < len ? x + S : len - 1;
+        unsigned g = 0;
+        for (size_t y = x0; y <= x1; y++) g |= a[row + y * stride];
+        b[c] = (unsigned char)g;
+      }
+      unsigned char *const t = a;
+      a = b;
+      b = t;
+      stride *= len;
+    }
+  }
+  for (size_t c = 0; c < nc; c++) a[c] = !a[c];
+  sw->clean = a;
+}
+
 /* The right-hand side by the symmetric sweep: the blocks in parallel
  * (each its own buffer), then every particle from its buffers. */
 static int run_sweep(const struct vsph_equations_ctx *rc,
@@ -830,6 +881,8 @@ static int run_sweep(const struct vsph_equations_ctx *rc,
   const int dim = p->dim, nf = SW_FIELDS(dim, rc->dhc > 0.0, rc->parts);
   const int st = sweep_plan(sw, cells, p->n, nf);
   if (st) return st;
+  sw->clean = NULL;
+  if (p->n != n_fluid) sweep_clean(sw, cells, p, n_fluid);
   size_t total = 0;
   double min_s2 = INFINITY;
   /* integer sum and min: exact, so the same for any thread count; each

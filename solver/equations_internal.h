@@ -360,6 +360,12 @@ struct vsph_equations_sweep {
   size_t cap_buf;   /* allocated doubles */
   double *rows;     /* each thread's scratch rows (sweep_each_block) */
   size_t cap_rows;  /* allocated doubles */
+  /* in a set with ghosts or wall particles: per cell, 1 where none lies
+   * in its ranges (sweep_clean), so that its receivers' interactions are
+   * counted without looking each pair's j up; NULL: look every j up */
+  const unsigned char *clean;
+  unsigned char *flags; /* its room: two bytes a cell */
+  size_t cap_flags;     /* allocated bytes */
 };
 
 /* One block's sweep, specialised. */
@@ -411,8 +417,8 @@ VSPH_CONSTS_SPECIALISE void sweep_own(double *q, const int dim, int nf,
 }
 
 /* The interactions of chunk @p b of particle i's pairs (sweep_block):
- * each fluid receiver counts once (j: all of them in a set without
- * ghosts, @p fluid_only; i: all its pairs where it is fluid, @p fi). The
+ * each fluid receiver counts once (j: all of them where no ghost can be
+ * among them, @p fluid_only; i: all its pairs where it is fluid, @p fi). The
  * chunk's closest pair into @p rs2 (i's, where it is fluid), or, where i
  * is a ghost, its fluid neighbours' closest into @p ms2. */
 VSPH_CONSTS_SPECIALISE size_t sweep_count(const struct vsph_pair_chunk *b,
@@ -492,6 +498,8 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
     vsph_pair_ranges_cell(&rg, cells, c);
     const size_t s0 = cells->start[c], cnt = cells->count[c];
     vsph_pair_cell_begin(&pc, &rc->pk, s0, cnt, dim);
+    /* its receivers' neighbours all fluid: none looked up to count */
+    const int clean = fluid_only || (sw->clean && sw->clean[c]);
     for (size_t i = s0; i < s0 + cnt; i++) {
       const int fi = id[i] < n_fluid;
       double ui[3] = {0, 0, 0}, Ai[9] = {0};
@@ -519,7 +527,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
               ui[0], ui[1], pi, Vi, rc->pk.h_inv2, rc->pk.dwq, rc->vl.Kmu,
               rc->vl.eta2, sums, buf, lo, rs2);
           cont = sums[0], f0 = sums[1], f1 = sums[2];
-          total += sweep_count(bq, id, n_fluid, fluid_only, fi, &rs2, &ms2, 0);
+          total += sweep_count(bq, id, n_fluid, clean, fi, &rs2, &ms2, 0);
           continue;
         }
 #endif
@@ -574,7 +582,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
                                   VSPH_PAIR_CHUNK_MAX);
         else
           sweep_add(buf, lo, nf, bq->j, m, js, nf);
-        total += sweep_count(bq, id, n_fluid, fluid_only, fi, &rs2, &ms2, 1);
+        total += sweep_count(bq, id, n_fluid, clean, fi, &rs2, &ms2, 1);
       }
       if (!fi) continue;
       ms2 = rs2 < ms2 ? rs2 : ms2;
