@@ -11,6 +11,7 @@
 #include "../common/status.h"
 #include "../kernels/kernel.h"
 #include "cells.h"
+#include "cells_internal.h"
 #include "equations_internal.h"
 #include "pair.h"
 #include "particles.h"
@@ -824,10 +825,50 @@ static int grad_sweep(const struct vsph_viscous_props *vp,
  * flag sw->clean: 1 where none lies in its ranges (vsph_cells_ranges: the
  * cells within VSPH_CELLS_SUB of it along each axis, clipped to the
  * grid), so that sweep_count need not look its receivers' neighbours up.
- * Each cell's own first, then the window along x, y and z in turn; in a
- * direct set (one cell, every particle) the one flag. Without room for
- * the flags, sw->clean stays NULL and every j is looked up (the same
- * counts). */
+ * Each cell's own first, then the window along x, y and z in turn (an
+ * axis of one cell left out); in a direct set (one cell, every particle)
+ * the one flag. Worksharing loops: in a parallel region each pass is
+ * shared and ends at a barrier; outside one, one thread does it all.
+ * Returns the flags (in @p a or @p b). */
+static unsigned char *sweep_clean_passes(const struct vsph_cells *cells,
+                                         const size_t *id, size_t n_fluid,
+                                         unsigned char *a, unsigned char *b) {
+  const size_t nc = cells->ncells;
+#pragma omp for schedule(static)
+  for (size_t c = 0; c < nc; c++) {
+    unsigned g = 0;
+    const size_t e = cells->start[c] + cells->count[c];
+    for (size_t i = cells->start[c]; i < e; i++) g |= id[i] >= n_fluid;
+    a[c] = (unsigned char)g;
+  }
+  const size_t S = VSPH_CELLS_SUB;
+  size_t stride = 1;
+  for (int k = 0; k < 3 && !cells->direct; k++) {
+    const size_t len = cells->nc[k], lines = nc / len;
+    if (len > 1) {
+      /* line q: the cells (q / stride) stride len + q % stride + x stride */
+#pragma omp for schedule(static)
+      for (size_t q = 0; q < lines; q++) {
+        const size_t base = q / stride * stride * len + q % stride;
+        for (size_t x = 0; x < len; x++) {
+          const size_t x0 = x >= S ? x - S : 0,
+                       x1 = x + S < len ? x + S : len - 1;
+          unsigned g = 0;
+          for (size_t y = x0; y <= x1; y++) g |= a[base + y * stride];
+          b[base + x * stride] = (unsigned char)g;
+        }
+      }
+      unsigned char *const t = a;
+      a = b;
+      b = t;
+    }
+    stride *= len;
+  }
+#pragma omp for schedule(static)
+  for (size_t c = 0; c < nc; c++) a[c] = !a[c];
+  return a;
+}
+
 static void sweep_clean(struct vsph_equations_sweep *sw,
                         const struct vsph_cells *cells,
                         const struct vsph_particles *p, size_t n_fluid) {
@@ -839,35 +880,20 @@ static void sweep_clean(struct vsph_equations_sweep *sw,
     sw->flags = f;
     sw->cap_flags = 2 * nc;
   }
-  unsigned char *a = sw->flags, *b = sw->flags + nc;
-  const size_t *const id = p->id;
-  for (size_t c = 0; c < nc; c++) {
-    unsigned g = 0;
-    const size_t e = cells->start[c] + cells->count[c];
-    for (size_t i = cells->start[c]; i < e; i++) g |= id[i] >= n_fluid;
-    a[c] = (unsigned char)g;
+  unsigned char *const a = sw->flags, *const b = sw->flags + nc;
+  if (p->n < VSPH_CELLS_PARALLEL) { /* no region: it costs more */
+    sw->clean = sweep_clean_passes(cells, p->id, n_fluid, a, b);
+    return;
   }
-  if (!cells->direct) {
-    const size_t S = VSPH_CELLS_SUB;
-    size_t stride = 1;
-    for (int k = 0; k < 3; k++) {
-      const size_t len = cells->nc[k];
-      for (size_t c = 0; c < nc; c++) {
-        const size_t x = c / stride % len, row = c - x * stride;
-        const size_t x0 = x >= S ? x - S : 0,
-                     x1 = x + S < len ? x + S : len - 1;
-        unsigned g = 0;
-        for (size_t y = x0; y <= x1; y++) g |= a[row + y * stride];
-        b[c] = (unsigned char)g;
-      }
-      unsigned char *const t = a;
-      a = b;
-      b = t;
-      stride *= len;
-    }
+  const unsigned char *clean = NULL;
+#pragma omp parallel
+  {
+    const unsigned char *const f =
+        sweep_clean_passes(cells, p->id, n_fluid, a, b);
+#pragma omp single nowait
+    clean = f;
   }
-  for (size_t c = 0; c < nc; c++) a[c] = !a[c];
-  sw->clean = a;
+  sw->clean = clean;
 }
 
 /* The right-hand side by the symmetric sweep: the blocks in parallel
