@@ -48,7 +48,8 @@ static const double DX = 0.05, HDX = 1.3333;
 
 /* A perturbed patch with a free surface all round, random velocities,
  * densities and volumes. */
-static struct vsph_particles *random_set(int dim, unsigned long seed) {
+static struct vsph_particles *random_set_in(int dim, unsigned long seed,
+                                            double radius, double depth) {
   struct vsph_lattice_props lp = {.dim = dim,
                                   .kind = VSPH_LATTICE_SQUARE,
                                   .dx = DX,
@@ -56,8 +57,7 @@ static struct vsph_particles *random_set(int dim, unsigned long seed) {
                                   .seed = seed};
   struct vsph_particles *p = NULL;
   size_t c;
-  ck_assert_int_eq(
-      vsph_lattice_halfspace(&lp, dim == 2 ? 0.5 : 0.25, 0.11, &p, &c), 0);
+  ck_assert_int_eq(vsph_lattice_halfspace(&lp, radius, depth, &p, &c), 0);
   gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
   gsl_rng_set(rng, seed);
   for (size_t i = 0; i < p->n; i++) {
@@ -68,6 +68,10 @@ static struct vsph_particles *random_set(int dim, unsigned long seed) {
   }
   gsl_rng_free(rng);
   return p;
+}
+
+static struct vsph_particles *random_set(int dim, unsigned long seed) {
+  return random_set_in(dim, seed, dim == 2 ? 0.5 : 0.25, 0.11);
 }
 
 /* ------------------------------------------------------------ the twin */
@@ -582,6 +586,65 @@ START_TEST(test_rhs_leaves_others) {
   /* the loops meet both kinds within a strip of 64, and often */
   ck_assert_uint_gt(turns, n / 4);
   for (int r = 0; r < 4; r++) free(buf[r]);
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+}
+END_TEST
+
+/* The interactions the sweep counts in a set of about 5 000 particles
+ * (past VSPH_CELLS_PARALLEL: the flags of the cells whose ranges hold no
+ * ghost are made by the threads together), on 1 and 2 threads, against a
+ * count pair by pair (each fluid receiver of a pair within the support
+ * once: exact), with half the set fluid (the ids shuffled), a fiftieth
+ * not, and all but the last id. */
+START_TEST(test_interactions_many) {
+  struct vsph_particles *p = random_set_in(2, 4242, 2.0, 2.0);
+  const size_t n = p->n;
+  ck_assert_uint_gt(n, 4096);
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, 4243);
+  gsl_ran_shuffle(rng, p->id, n, sizeof *p->id);
+  gsl_rng_free(rng);
+  struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0};
+  ck_assert_int_eq(
+      vsph_viscous_props_init(&ep.visc, VSPH_VISCOUS_MGF, &vsph_gaussian_type,
+                              2, HDX * DX, MU),
+      0);
+  struct vsph_cells *cells = vsph_cells_alloc();
+  ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, 2);
+  double *buf = malloc(3 * n * sizeof *buf);
+  ck_assert_ptr_nonnull(buf);
+  const double kap = vsph_gaussian_type.kappa,
+               H2 = kap * ep.visc.h * kap * ep.visc.h; /* the loops' */
+  /* half, a fiftieth scattered (cells near one and cells near none
+   * side by side), one */
+  const size_t nfl[3] = {n / 2, n - n / 50, n - 1};
+  const int threads = omp_get_max_threads();
+  for (int r = 0; r < 3; r++) {
+    size_t count = 0;
+    for (size_t i = 0; i < n; i++)
+      for (size_t j = i + 1; j < n; j++) {
+        const double x = p->pos[0][j] - p->pos[0][i],
+                     y = p->pos[1][j] - p->pos[1][i];
+        if (x * x + y * y < H2)
+          count += (p->id[i] < nfl[r]) + (p->id[j] < nfl[r]);
+      }
+    for (int t = 1; t <= 2; t++) {
+      omp_set_num_threads(t);
+      struct vsph_equations_out out = {.drho = buf,
+                                       .acc = {buf + n, buf + 2 * n},
+                                       .sweep = vsph_equations_sweep_alloc()};
+      ck_assert_int_eq(vsph_equations_rhs(&ep, p, nfl[r], cells, ws, &out), 0);
+      vsph_equations_sweep_free(out.sweep);
+      ck_assert_msg(out.interactions == count,
+                    "%zu fluid, %d threads: %zu interactions, %zu counted",
+                    nfl[r], t, out.interactions, count);
+    }
+  }
+  omp_set_num_threads(threads);
+  free(buf);
   vsph_viscous_ws_free(ws);
   vsph_cells_free(cells);
   vsph_particles_free(p);
@@ -1940,6 +2003,7 @@ Suite *vsph_equations_suite(void) {
   TCase *tc = tcase_create("rhs");
   tcase_set_timeout(tc, 60);
   tcase_add_loop_test(tc, test_rhs_leaves_others, 0, 48);
+  tcase_add_test(tc, test_interactions_many);
   size_t nwc = 0;
   while (vsph_scene_get(nwc) && vsph_scene_get(nwc) != &vsph_shear_type) nwc++;
   tcase_add_loop_test(tc, test_candidates_simd, 0, 4);
