@@ -827,15 +827,19 @@ static int grad_sweep(const struct vsph_viscous_props *vp,
  * grid), so that sweep_count need not look its receivers' neighbours up.
  * Each cell's own first, then the window along x, y and z in turn (an
  * axis of one cell left out); in a direct set (one cell, every particle)
- * the one flag. Worksharing loops: in a parallel region each pass is
- * shared and ends at a barrier; outside one, one thread does it all.
- * Returns the flags (in @p a or @p b). */
+ * the one flag. @p team 1: called by every thread of the region
+ * sweep_clean opens, each pass shared evenly and ended by a barrier; 0:
+ * one thread does it all, with no worksharing construct or barrier (it
+ * may run inside another region, a report's lane, whose team a
+ * worksharing loop would bind to). Returns the flags (in @p a or @p b). */
 static unsigned char *sweep_clean_passes(const struct vsph_cells *cells,
                                          const size_t *id, size_t n_fluid,
-                                         unsigned char *a, unsigned char *b) {
+                                         unsigned char *a, unsigned char *b,
+                                         const int team) {
   const size_t nc = cells->ncells;
-#pragma omp for schedule(static)
-  for (size_t c = 0; c < nc; c++) {
+  size_t c0 = 0, c1 = nc;
+  if (team) vsph_share_even(nc, &c0, &c1);
+  for (size_t c = c0; c < c1; c++) {
     unsigned g = 0;
     const size_t e = cells->start[c] + cells->count[c];
     for (size_t i = cells->start[c]; i < e; i++) g |= id[i] >= n_fluid;
@@ -846,9 +850,13 @@ static unsigned char *sweep_clean_passes(const struct vsph_cells *cells,
   for (int k = 0; k < 3 && !cells->direct; k++) {
     const size_t len = cells->nc[k], lines = nc / len;
     if (len > 1) {
+      if (team) {
+#pragma omp barrier
+      }
+      size_t q0 = 0, q1 = lines;
+      if (team) vsph_share_even(lines, &q0, &q1);
       /* line q: the cells (q / stride) stride len + q % stride + x stride */
-#pragma omp for schedule(static)
-      for (size_t q = 0; q < lines; q++) {
+      for (size_t q = q0; q < q1; q++) {
         const size_t base = q / stride * stride * len + q % stride;
         for (size_t x = 0; x < len; x++) {
           const size_t x0 = x >= S ? x - S : 0,
@@ -864,9 +872,11 @@ static unsigned char *sweep_clean_passes(const struct vsph_cells *cells,
     }
     stride *= len;
   }
-#pragma omp for schedule(static)
-  for (size_t c = 0; c < nc; c++) a[c] = !a[c];
-  return a;
+  if (team) {
+#pragma omp barrier
+  }
+  for (size_t c = c0; c < c1; c++) a[c] = !a[c];
+  return a; /* read after the region's closing barrier */
 }
 
 static void sweep_clean(struct vsph_equations_sweep *sw,
@@ -882,16 +892,15 @@ static void sweep_clean(struct vsph_equations_sweep *sw,
   }
   unsigned char *const a = sw->flags, *const b = sw->flags + nc;
   if (p->n < VSPH_CELLS_PARALLEL) { /* no region: it costs more */
-    sw->clean = sweep_clean_passes(cells, p->id, n_fluid, a, b);
+    sw->clean = sweep_clean_passes(cells, p->id, n_fluid, a, b, 0);
     return;
   }
   const unsigned char *clean = NULL;
 #pragma omp parallel
   {
     const unsigned char *const f =
-        sweep_clean_passes(cells, p->id, n_fluid, a, b);
-#pragma omp single nowait
-    clean = f;
+        sweep_clean_passes(cells, p->id, n_fluid, a, b, 1);
+    if (omp_get_thread_num() == 0) clean = f;
   }
   sw->clean = clean;
 }
@@ -905,9 +914,9 @@ static int run_sweep(const struct vsph_equations_ctx *rc,
                      struct vsph_equations_out *out) {
   struct vsph_equations_sweep *sw = out->sweep;
   const int dim = p->dim, nf = SW_FIELDS(dim, rc->dhc > 0.0, rc->parts);
+  sw->clean = NULL;
   const int st = sweep_plan(sw, cells, p->n, nf);
   if (st) return st;
-  sw->clean = NULL;
   if (p->n != n_fluid) sweep_clean(sw, cells, p, n_fluid);
   size_t total = 0;
   double min_s2 = INFINITY;

@@ -592,62 +592,125 @@ START_TEST(test_rhs_leaves_others) {
 }
 END_TEST
 
-/* The interactions the sweep counts in a set of about 5 000 particles
- * (past VSPH_CELLS_PARALLEL: the flags of the cells whose ranges hold no
- * ghost are made by the threads together), on 1 and 2 threads, against a
- * count pair by pair (each fluid receiver of a pair within the support
- * once: exact), with half the set fluid (the ids shuffled), a fiftieth
- * not, and all but the last id. */
-START_TEST(test_interactions_many) {
-  struct vsph_particles *p = random_set_in(2, 4242, 2.0, 2.0);
+/* The interactions of set @p p (ids < @p nfl fluid) by the sweep, through
+ * workspace @p sw, into got[0], and by a count pair by pair into got[1]
+ * (each fluid receiver of a pair within the support once: exact; the
+ * loops' support radius and s^2 in their order). No assertion (it may run
+ * on any thread of a region): 0, or -1 where it could not evaluate. */
+static int interactions_of(struct vsph_particles *p, size_t nfl,
+                           struct vsph_equations_sweep *sw, size_t got[2]) {
+  const int dim = p->dim;
   const size_t n = p->n;
-  ck_assert_uint_gt(n, 4096);
-  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(rng, 4243);
-  gsl_ran_shuffle(rng, p->id, n, sizeof *p->id);
-  gsl_rng_free(rng);
   struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0};
-  ck_assert_int_eq(
-      vsph_viscous_props_init(&ep.visc, VSPH_VISCOUS_MGF, &vsph_gaussian_type,
-                              2, HDX * DX, MU),
-      0);
+  if (vsph_viscous_props_init(&ep.visc, VSPH_VISCOUS_MGF, &vsph_gaussian_type,
+                              dim, HDX * DX, MU))
+    return -1;
   struct vsph_cells *cells = vsph_cells_alloc();
-  ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
-  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, 2);
-  double *buf = malloc(3 * n * sizeof *buf);
-  ck_assert_ptr_nonnull(buf);
-  const double kap = vsph_gaussian_type.kappa,
-               H2 = kap * ep.visc.h * kap * ep.visc.h; /* the loops' */
-  /* half, a fiftieth scattered (cells near one and cells near none
-   * side by side), one */
-  const size_t nfl[3] = {n / 2, n - n / 50, n - 1};
-  const int threads = omp_get_max_threads();
-  for (int r = 0; r < 3; r++) {
-    size_t count = 0;
-    for (size_t i = 0; i < n; i++)
-      for (size_t j = i + 1; j < n; j++) {
-        const double x = p->pos[0][j] - p->pos[0][i],
-                     y = p->pos[1][j] - p->pos[1][i];
-        if (x * x + y * y < H2)
-          count += (p->id[i] < nfl[r]) + (p->id[j] < nfl[r]);
-      }
-    for (int t = 1; t <= 2; t++) {
-      omp_set_num_threads(t);
-      struct vsph_equations_out out = {.drho = buf,
-                                       .acc = {buf + n, buf + 2 * n},
-                                       .sweep = vsph_equations_sweep_alloc()};
-      ck_assert_int_eq(vsph_equations_rhs(&ep, p, nfl[r], cells, ws, &out), 0);
-      vsph_equations_sweep_free(out.sweep);
-      ck_assert_msg(out.interactions == count,
-                    "%zu fluid, %d threads: %zu interactions, %zu counted",
-                    nfl[r], t, out.interactions, count);
-    }
-  }
-  omp_set_num_threads(threads);
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, dim);
+  double *buf = malloc(4 * n * sizeof *buf);
+  struct vsph_equations_out out = {
+      .drho = buf, .acc = {buf + n, buf + 2 * n, buf + 3 * n}, .sweep = sw};
+  const int st = !cells || !ws || !buf ||
+                 vsph_cells_build(cells, p, 3.0 * ep.visc.h) ||
+                 vsph_equations_rhs(&ep, p, nfl, cells, ws, &out);
   free(buf);
   vsph_viscous_ws_free(ws);
   vsph_cells_free(cells);
-  vsph_particles_free(p);
+  if (st) return -1;
+  const double kap = vsph_gaussian_type.kappa,
+               H2 = kap * ep.visc.h * kap * ep.visc.h;
+  size_t count = 0;
+  for (size_t i = 0; i < n; i++)
+    for (size_t j = i + 1; j < n; j++) {
+      double s2 = 0.0;
+      for (int a = 0; a < dim; a++) {
+        const double x = p->pos[a][j] - p->pos[a][i];
+        s2 += x * x;
+      }
+      if (s2 < H2) count += (p->id[i] < nfl) + (p->id[j] < nfl);
+    }
+  got[0] = out.interactions;
+  got[1] = count;
+  return 0;
+}
+
+static void interactions_check(struct vsph_particles *p, size_t nfl,
+                               struct vsph_equations_sweep *sw,
+                               const char *what) {
+  size_t got[2];
+  ck_assert_int_eq(interactions_of(p, nfl, sw, got), 0);
+  ck_assert_msg(got[0] == got[1],
+                "%s, %zu of %zu fluid: %zu interactions, %zu counted", what,
+                nfl, p->n, got[0], got[1]);
+}
+
+/* A random set of dimension @p dim (ball of @p radius cut at @p depth),
+ * its ids shuffled so that fluid and others mix. */
+static struct vsph_particles *mixed_set(int dim, unsigned long seed,
+                                        double radius, double depth) {
+  struct vsph_particles *p = random_set_in(dim, seed, radius, depth);
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, seed + 1);
+  gsl_ran_shuffle(rng, p->id, p->n, sizeof *p->id);
+  gsl_rng_free(rng);
+  return p;
+}
+
+/* The interactions the sweep counts (interactions_check): a 3-D set eight
+ * cells deep (the window along z clipped and whole) and a 2-D set of about
+ * 5 000 particles (past VSPH_CELLS_PARALLEL: the flags of the cells whose
+ * ranges hold no ghost made by the threads together), on 1 and 2 threads,
+ * with half the set fluid, a fiftieth not (cells near one and near none
+ * side by side) and all but the last id; one workspace throughout, its
+ * flags grown from the small set to the large. */
+START_TEST(test_interactions_many) {
+  struct vsph_particles *set[2] = {mixed_set(3, 4142, 0.4, 0.4),
+                                   mixed_set(2, 4242, 2.0, 2.0)};
+  ck_assert_uint_gt(set[1]->n, 4096);
+  struct vsph_equations_sweep *sw = vsph_equations_sweep_alloc();
+  const int threads = omp_get_max_threads();
+  for (int q = 0; q < 2; q++) {
+    const size_t n = set[q]->n, nfl[3] = {n / 2, n - n / 50, n - 1};
+    for (int r = 0; r < 3; r++)
+      for (int t = 1; t <= 2; t++) {
+        omp_set_num_threads(t);
+        interactions_check(set[q], nfl[r], sw, q ? "2-D" : "3-D");
+      }
+    vsph_particles_free(set[q]);
+  }
+  omp_set_num_threads(threads);
+  vsph_equations_sweep_free(sw);
+}
+END_TEST
+
+/* The same inside a parallel region, one set per thread of two, each
+ * evaluated on its own thread (a report's lanes: runs side by side in one
+ * process): what each evaluates stays its own (no loop of it may be
+ * shared with, or wait on, the other lane). */
+START_TEST(test_interactions_in_lanes) {
+  struct vsph_particles *set[2] = {mixed_set(2, 4342, 0.5, 0.5),
+                                   mixed_set(2, 4343, 0.5, 0.5)};
+  size_t got[2][2] = {{0, 1}, {0, 1}};
+  int st[2] = {-1, -1}, lanes = 0;
+#pragma omp parallel num_threads(2)
+  {
+#pragma omp single nowait
+    lanes = omp_get_num_threads();
+    omp_set_num_threads(1); /* as a report's lane: its loops on itself */
+    const int t = omp_get_thread_num();
+    struct vsph_equations_sweep *sw = vsph_equations_sweep_alloc();
+    st[t] = sw ? interactions_of(set[t], set[t]->n - set[t]->n / 50, sw, got[t])
+               : -1;
+    vsph_equations_sweep_free(sw);
+  }
+  ck_assert_int_eq(lanes, 2);
+  for (int t = 0; t < 2; t++) {
+    ck_assert_int_eq(st[t], 0);
+    ck_assert_msg(got[t][0] == got[t][1],
+                  "lane %d: %zu interactions, %zu counted", t, got[t][0],
+                  got[t][1]);
+    vsph_particles_free(set[t]);
+  }
 }
 END_TEST
 
@@ -2004,6 +2067,7 @@ Suite *vsph_equations_suite(void) {
   tcase_set_timeout(tc, 60);
   tcase_add_loop_test(tc, test_rhs_leaves_others, 0, 48);
   tcase_add_test(tc, test_interactions_many);
+  tcase_add_test(tc, test_interactions_in_lanes);
   size_t nwc = 0;
   while (vsph_scene_get(nwc) && vsph_scene_get(nwc) != &vsph_shear_type) nwc++;
   tcase_add_loop_test(tc, test_candidates_simd, 0, 4);
