@@ -477,6 +477,18 @@ static void twin_check(int form, int dim, int sweep,
   vsph_particles_free(p);
 }
 
+/* A random set of dimension @p dim (ball of @p radius cut at @p depth),
+ * its ids shuffled so that fluid and others mix. */
+static struct vsph_particles *mixed_set(int dim, unsigned long seed,
+                                        double radius, double depth) {
+  struct vsph_particles *p = random_set_in(dim, seed, radius, depth);
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  gsl_rng_set(rng, seed + 1);
+  gsl_ran_shuffle(rng, p->id, p->n, sizeof *p->id);
+  gsl_rng_free(rng);
+  return p;
+}
+
 /* The right-hand side of the fluid particles alone (id < n_fluid): the
  * other particles' entries of every rate are left as they were (an
  * evolving wall's density rate is set before it and read after), and a
@@ -499,14 +511,11 @@ START_TEST(test_rhs_leaves_others) {
                                VSPH_EQUATIONS_BODY_UNIFORM};
   const int form = forms[_i % 3], dim = 2 + _i / 3 % 2, sweep = _i / 6 % 2,
             delta = _i / 12 % 2, parts = _i / 24 % 2;
-  struct vsph_particles *p = random_set(dim, 777 + (unsigned long)_i);
-  const size_t n = p->n, nfl = n / 2;
   /* the ids (labels) shuffled, so that the others lie among the fluid as
    * ghosts do */
-  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(rng, 99 + (unsigned long)_i);
-  gsl_ran_shuffle(rng, p->id, n, sizeof *p->id);
-  gsl_rng_free(rng);
+  struct vsph_particles *p =
+      mixed_set(dim, 777 + (unsigned long)_i, dim == 2 ? 0.5 : 0.25, 0.11);
+  const size_t n = p->n, nfl = n / 2;
   struct vsph_equations_props ep = {.rho0 = RHO0,
                                     .c0 = C0,
                                     .delta = delta ? DELTA : 0.0,
@@ -642,18 +651,6 @@ static void interactions_check(struct vsph_particles *p, size_t nfl,
   ck_assert_msg(got[0] == got[1],
                 "%s, %zu of %zu fluid: %zu interactions, %zu counted", what,
                 nfl, p->n, got[0], got[1]);
-}
-
-/* A random set of dimension @p dim (ball of @p radius cut at @p depth),
- * its ids shuffled so that fluid and others mix. */
-static struct vsph_particles *mixed_set(int dim, unsigned long seed,
-                                        double radius, double depth) {
-  struct vsph_particles *p = random_set_in(dim, seed, radius, depth);
-  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-  gsl_rng_set(rng, seed + 1);
-  gsl_ran_shuffle(rng, p->id, p->n, sizeof *p->id);
-  gsl_rng_free(rng);
-  return p;
 }
 
 /* The interactions the sweep counts (interactions_check): a 3-D set eight
