@@ -477,6 +477,25 @@ static void twin_check(int form, int dim, int sweep,
   vsph_particles_free(p);
 }
 
+/* The interactions of set @p p (ids < @p nfl fluid) at smoothing length
+ * @p h with the 3h Gaussian, pair by pair: each fluid receiver of a pair
+ * within the support once (exact; the loops' support radius and s^2 in
+ * their order). */
+static size_t pair_count(const struct vsph_particles *p, size_t nfl, double h) {
+  const double kap = vsph_gaussian_type.kappa, H2 = kap * h * kap * h;
+  size_t count = 0;
+  for (size_t i = 0; i < p->n; i++)
+    for (size_t j = i + 1; j < p->n; j++) {
+      double s2 = 0.0;
+      for (int a = 0; a < p->dim; a++) {
+        const double x = p->pos[a][j] - p->pos[a][i];
+        s2 += x * x;
+      }
+      if (s2 < H2) count += (p->id[i] < nfl) + (p->id[j] < nfl);
+    }
+  return count;
+}
+
 /* A random set of dimension @p dim (ball of @p radius cut at @p depth),
  * its ids shuffled so that fluid and others mix. */
 static struct vsph_particles *mixed_set(int dim, unsigned long seed,
@@ -550,17 +569,7 @@ START_TEST(test_rhs_leaves_others) {
     vsph_equations_sweep_free(out.sweep);
     /* the interactions, each fluid receiver of a pair within the support
      * once, counted pair by pair here: exact */
-    size_t count = 0;
-    const double kap = vsph_gaussian_type.kappa,
-                 H2 = kap * ep.visc.h * kap * ep.visc.h; /* the loops' */
-    for (size_t i = 0; i < n; i++)
-      for (size_t j = i + 1; j < n; j++) {
-        double s2 = 0.0;
-        for (int a = 0; a < dim; a++)
-          s2 += (p->pos[a][j] - p->pos[a][i]) * (p->pos[a][j] - p->pos[a][i]);
-        if (s2 < H2) count += (p->id[i] < nfl_r[r]) + (p->id[j] < nfl_r[r]);
-      }
-    ck_assert_uint_eq(out.interactions, count);
+    ck_assert_uint_eq(out.interactions, pair_count(p, nfl_r[r], ep.visc.h));
   }
   size_t turns = 0; /* fluid and others alternating in index order */
   for (size_t i = 0; i < n; i++) {
@@ -626,20 +635,8 @@ static int interactions_of(struct vsph_particles *p, size_t nfl,
   vsph_viscous_ws_free(ws);
   vsph_cells_free(cells);
   if (st) return -1;
-  const double kap = vsph_gaussian_type.kappa,
-               H2 = kap * ep.visc.h * kap * ep.visc.h;
-  size_t count = 0;
-  for (size_t i = 0; i < n; i++)
-    for (size_t j = i + 1; j < n; j++) {
-      double s2 = 0.0;
-      for (int a = 0; a < dim; a++) {
-        const double x = p->pos[a][j] - p->pos[a][i];
-        s2 += x * x;
-      }
-      if (s2 < H2) count += (p->id[i] < nfl) + (p->id[j] < nfl);
-    }
   got[0] = out.interactions;
-  got[1] = count;
+  got[1] = pair_count(p, nfl, ep.visc.h);
   return 0;
 }
 
