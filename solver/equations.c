@@ -821,17 +821,30 @@ static int grad_sweep(const struct vsph_viscous_props *vp,
   return VSPH_OK;
 }
 
+/* Row @p out (@p n bytes) the OR of the rows @p in, in + n, ...
+ * (@p m of them). */
+static void or_rows(unsigned char *restrict out,
+                    const unsigned char *restrict in, size_t n, size_t m) {
+  memcpy(out, in, n);
+  for (size_t y = 1; y < m; y++)
+    for (size_t i = 0; i < n; i++) out[i] |= in[y * n + i];
+}
+
 /* In a set with ghosts or wall particles (id >= n_fluid), each cell's
  * flag sw->clean: 1 where none lies in its ranges (vsph_cells_ranges: the
  * cells within VSPH_CELLS_SUB of it along each axis, clipped to the
  * grid), so that sweep_count need not look its receivers' neighbours up.
  * Each cell's own first, then the window along x, y and z in turn (an
- * axis of one cell left out); in a direct set (one cell, every particle)
- * the one flag. @p team 1: called by every thread of the region
- * sweep_clean opens, each pass shared evenly and ended by a barrier; 0:
- * one thread does it all, with no worksharing construct or barrier (it
- * may run inside another region, a report's lane, whose team a
- * worksharing loop would bind to). Returns the flags (in @p a or @p b). */
+ * axis of one cell left out): along x line by line; along y and z, whose
+ * cells lie a stride apart, row by row (a row: the stride's cells in
+ * memory order, each the OR of the window's rows, so that a thread writes
+ * bytes of its own and the loop runs along memory); in a direct set (one
+ * cell, every particle) the one flag. @p team 1: called by every thread
+ * of the region sweep_clean opens, each pass shared evenly and ended by a
+ * barrier; 0: one thread does it all, with no worksharing construct or
+ * barrier (it may run inside another region, a report's lane, whose team
+ * a worksharing loop would bind to). Returns the flags (in @p a or @p b).
+ */
 static unsigned char *sweep_clean_passes(const struct vsph_cells *cells,
                                          const size_t *id, size_t n_fluid,
                                          unsigned char *a, unsigned char *b,
@@ -848,22 +861,31 @@ static unsigned char *sweep_clean_passes(const struct vsph_cells *cells,
   const size_t S = VSPH_CELLS_SUB;
   size_t stride = 1;
   for (int k = 0; k < 3 && !cells->direct; k++) {
-    const size_t len = cells->nc[k], lines = nc / len;
+    const size_t len = cells->nc[k];
     if (len > 1) {
       if (team) {
 #pragma omp barrier
       }
-      size_t q0 = 0, q1 = lines;
-      if (team) vsph_share_even(lines, &q0, &q1);
-      /* line q: the cells (q / stride) stride len + q % stride + x stride */
+      /* stride 1: lines of len cells; else rows of stride cells, len of
+       * them to a window's axis */
+      const size_t units = stride == 1 ? nc / len : nc / stride;
+      size_t q0 = 0, q1 = units;
+      if (team) vsph_share_even(units, &q0, &q1);
       for (size_t q = q0; q < q1; q++) {
-        const size_t base = q / stride * stride * len + q % stride;
-        for (size_t x = 0; x < len; x++) {
+        if (stride == 1) { /* line q: cells q len + x */
+          const size_t base = q * len;
+          for (size_t x = 0; x < len; x++) {
+            const size_t x0 = x >= S ? x - S : 0,
+                         x1 = x + S < len ? x + S : len - 1;
+            unsigned g = 0;
+            for (size_t y = x0; y <= x1; y++) g |= a[base + y];
+            b[base + x] = (unsigned char)g;
+          }
+        } else { /* row q: position x of its axis, the others o */
+          const size_t x = q % len, o = q - x;
           const size_t x0 = x >= S ? x - S : 0,
                        x1 = x + S < len ? x + S : len - 1;
-          unsigned g = 0;
-          for (size_t y = x0; y <= x1; y++) g |= a[base + y * stride];
-          b[base + x * stride] = (unsigned char)g;
+          or_rows(b + q * stride, a + (o + x0) * stride, stride, x1 - x0 + 1);
         }
       }
       unsigned char *const t = a;
