@@ -176,12 +176,18 @@ void vsph_integrate_free(struct vsph_integrate *s) {
 
 static double max_speed(const struct vsph_integrate *s) {
   const struct vsph_particles *p = s->p;
+  const size_t n = p->n, n_fluid = s->n_fluid, *const id = p->id;
+  const int dim = p->dim;
   double v2 = 0.0;
-  for (size_t i = 0; i < p->n; i++) {
-    if (p->id[i] >= s->n_fluid) continue;
+  /* a maximum is exact in any order, so the same for any thread count; a
+   * NaN u2 leaves v2 as fmax would */
+#pragma omp parallel for reduction(max   \
+                                   : v2) \
+    schedule(static) if (n >= VSPH_PARTICLES_MOVE_PARALLEL)
+  for (size_t i = 0; i < n; i++) {
     double u2 = 0.0;
-    for (int k = 0; k < p->dim; k++) u2 += p->vel[k][i] * p->vel[k][i];
-    v2 = fmax(v2, u2);
+    for (int k = 0; k < dim; k++) u2 += p->vel[k][i] * p->vel[k][i];
+    if (id[i] < n_fluid && u2 > v2) v2 = u2;
   }
   return sqrt(v2);
 }
@@ -316,7 +322,10 @@ static int prepare(struct vsph_integrate *s, double skin) {
       return st;
   }
   if ((st = vsph_cells_build_owned(s->cells, s->p, H + skin))) return st;
-  for (size_t i = 0; i < s->p->n; i++) s->where[s->p->id[i]] = i;
+  const size_t n = s->p->n, *const id = s->p->id;
+  size_t *const where = s->where;
+#pragma omp parallel for schedule(static) if (n >= VSPH_PARTICLES_MOVE_PARALLEL)
+  for (size_t i = 0; i < n; i++) where[id[i]] = i;
   return VSPH_OK;
 }
 
