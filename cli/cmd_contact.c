@@ -219,7 +219,7 @@ int vsph_cmd_contact_main(int argc, char **argv) {
        "version, source hash, the parameters as given, each file's size "
        "and CRC-32; written last in any case)"},
       {"--threads", VSPH_ARGS_SIZE, &threads, "T",
-       "OpenMP threads (default: OMP_NUM_THREADS or all cores)"},
+       "OpenMP threads, 0-1024; 0 or none: OMP_NUM_THREADS or all cores"},
       {"--quiet", VSPH_ARGS_FLAG, &quiet, NULL, "no progress line"},
       {"--params", VSPH_ARGS_PARAMS, NULL, "FILE", "parameter file"},
       {"--set", VSPH_ARGS_SET, NULL, "S:k=v",

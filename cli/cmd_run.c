@@ -86,7 +86,7 @@ int vsph_cmd_run_main(int argc, char **argv) {
   const struct vsph_args_spec own[] = {
       {"--out", VSPH_ARGS_STRING, &out_dir, "DIR", "output folder"},
       {"--threads", VSPH_ARGS_SIZE, &threads, "T",
-       "OpenMP threads (default: OMP_NUM_THREADS or all cores)"},
+       "OpenMP threads, 0-1024; 0 or none: OMP_NUM_THREADS or all cores"},
       {"--params", VSPH_ARGS_PARAMS, NULL, "FILE", "parameter file"},
       {"--set", VSPH_ARGS_SET, NULL, "S:k=v",
        "one parameter, e.g. Scene:nu=1e-4 (repeatable)"},
