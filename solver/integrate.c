@@ -1048,9 +1048,15 @@ static int unpack(struct vsph_integrate *s, const unsigned char *buf, FILE *in,
     for (int f = 0; f < kept_fields(s); f++)
       if (!get(&c, s->ks[f], kept_len(s) * sizeof(double)))
         VSPH_FAIL(VSPH_EINVAL, "the saved state is cut short");
-  for (size_t i = 0; i < p->n; i++)
-    if (p->id[i] >= p->n)
+  /* each id below the count and none twice: they index the map from id
+   * to slot (the set's capacity long), made here (the steps fill it by a
+   * parallel scatter, which two equal ids would race on) */
+  for (size_t i = 0; i < p->cap; i++) s->where[i] = SIZE_MAX;
+  for (size_t i = 0; i < p->n; i++) {
+    if (p->id[i] >= p->n || s->where[p->id[i]] != SIZE_MAX)
       VSPH_FAIL(VSPH_EINVAL, "the saved state's particle ids are damaged");
+    s->where[p->id[i]] = i;
+  }
   s->kept = kept != 0;
   s->t = t;
   s->min_dist = min_dist;

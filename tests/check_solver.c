@@ -824,6 +824,45 @@ START_TEST(test_pack_lean) {
 }
 END_TEST
 
+/* A saved state whose particle ids are damaged, one equal to the count
+ * (within the set's capacity) or one given twice (the map from id to slot
+ * is filled in parallel, which two equal ids would race on), is refused;
+ * the state itself is restored again after both. */
+START_TEST(test_restore_refuses_bad_ids) {
+  struct vsph_scene sc;
+  struct vsph_integrate *s =
+      make_run("standing-wave", VSPH_VISCOUS_MGF, 12, &sc, NULL, NULL);
+  ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  struct vsph_particles *p = s->p;
+  const size_t n = vsph_integrate_pack(s, NULL);
+  unsigned char *good = malloc(n), *bad = malloc(n);
+  ck_assert_ptr_nonnull(good);
+  ck_assert_ptr_nonnull(bad);
+  ck_assert_uint_eq(vsph_integrate_pack(s, good), n);
+  const size_t keep[2] = {p->id[1], p->id[p->n - 1]};
+  ck_assert_uint_lt(p->n, p->cap); /* the map has room past the count */
+  for (int k = 0; k < 2; k++) {
+    /* k 0: id[1] repeats id[0]; k 1: the last id one past the count */
+    if (k == 0)
+      p->id[1] = p->id[0];
+    else
+      p->id[p->n - 1] = p->n;
+    ck_assert_uint_eq(vsph_integrate_pack(s, bad), n);
+    if (k == 0)
+      p->id[1] = keep[0];
+    else
+      p->id[p->n - 1] = keep[1];
+    ck_assert_int_eq(vsph_integrate_restore(s, bad, n), VSPH_EINVAL);
+    ck_assert_int_eq(vsph_integrate_restore(s, good, n), 0);
+    ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+    ck_assert_int_eq(vsph_integrate_restore(s, good, n), 0);
+  }
+  free(good);
+  free(bad);
+  vsph_integrate_free(s);
+}
+END_TEST
+
 /* The diagnostics of a run's evaluated state on its own cell list
  * (vsph_diagnostics_compute_cells, no copy) are bitwise those of the
  * sorted copy, and both do not move by a bit when the particles come in
@@ -982,6 +1021,7 @@ Suite *vsph_solver_suite(void) {
   tcase_add_test(tc, test_unstable_detected);
   tcase_add_test(tc, test_rhs_cells_vs_direct);
   tcase_add_test(tc, test_pack_lean);
+  tcase_add_test(tc, test_restore_refuses_bad_ids);
   tcase_add_test(tc, test_diagnostics_order);
   tcase_add_test(tc, test_diagnostics_room_3d);
   suite_add_tcase(s, tc);
