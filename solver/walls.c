@@ -517,6 +517,41 @@ static void ghost_runs(const struct vsph_walls *w, struct vsph_particles *p,
   }
 }
 
+/* The slots of the set's first @p n whose id is below @p base, in order,
+ * into @p perm; returns how many. From VSPH_PARTICLES_MOVE_PARALLEL slots
+ * the threads take even shares: each counts its own, then writes them
+ * from the sum of the counts before it (the same list as one thread's). */
+static size_t kept_in_order(const size_t *id, size_t n, size_t base,
+                            size_t *perm) {
+  size_t *const cnt = n >= VSPH_PARTICLES_MOVE_PARALLEL
+                          ? malloc((size_t)omp_get_max_threads() * sizeof *cnt)
+                          : NULL;
+  if (!cnt) { /* small, or no room for the counts: one thread */
+    size_t m = 0;
+    for (size_t i = 0; i < n; i++)
+      if (id[i] < base) perm[m++] = i;
+    return m;
+  }
+  size_t kept = 0;
+#pragma omp parallel
+  {
+    const int t = omp_get_thread_num();
+    size_t i0, i1;
+    vsph_share_even(n, &i0, &i1);
+    size_t c = 0;
+    for (size_t i = i0; i < i1; i++) c += id[i] < base;
+    cnt[t] = c;
+#pragma omp barrier
+    size_t at = 0;
+    for (int u = 0; u < t; u++) at += cnt[u];
+    for (size_t i = i0; i < i1; i++)
+      if (id[i] < base) perm[at++] = i;
+    if (t == omp_get_num_threads() - 1) kept = at;
+  }
+  free(cnt);
+  return kept;
+}
+
 /* vsph_walls_generate, and with @p perm and @p spare
  * (vsph_walls_generate_moved) the compaction by a move of the set's own
  * arrays */
@@ -530,8 +565,7 @@ static int generate(const struct vsph_walls *w, struct vsph_particles *p,
   const size_t base = n_fluid + gh->keep;
   size_t n = 0;
   if (perm) { /* the kept in order, then moved by swaps */
-    for (size_t i = 0; i < p->n; i++)
-      if (p->id[i] < base) perm[n++] = i;
+    n = kept_in_order(p->id, p->n, base, perm);
     if (n < p->n) vsph_particles_move(p, perm, n, spare);
   } else {
     double *f[VSPH_PARTICLES_DOUBLES];
