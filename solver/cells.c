@@ -342,7 +342,10 @@ size_t vsph_cells_ranges(const struct vsph_cells *c, size_t cell,
   }
   /* Cell key = ix + nc0 * (iy + nc1 * iz), as built above. */
   const size_t nx = c->nc[0], ny = c->nc[1], nz = c->nc[2];
-  const size_t ix = cell % nx, iy = (cell / nx) % ny, iz = cell / (nx * ny);
+  if (cell >= c->ncells) return 0; /* no such cell */
+  /* two divisions, one where the grid is one cell deep (2-D) */
+  const size_t line = cell / nx, iz = nz > 1 ? line / ny : 0;
+  const size_t ix = cell - line * nx, iy = line - iz * ny;
   const size_t S = VSPH_CELLS_SUB;
   const size_t z0 = iz >= S ? iz - S : 0, z1 = iz + S < nz ? iz + S : nz - 1;
   const size_t y0 = iy >= S ? iy - S : 0, y1 = iy + S < ny ? iy + S : ny - 1;

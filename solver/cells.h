@@ -93,7 +93,7 @@ VSPH_API int vsph_cells_build_direct(struct vsph_cells *c,
 /** @brief Index ranges [lo[r], hi[r]) of the cells within reach of
  *  @p cell (itself included), in a fixed order: every particle within the
  *  build radius of a particle of @p cell lies in them. Returns the number
- *  of ranges. */
+ *  of ranges (0 for a cell the list does not have). */
 VSPH_API size_t vsph_cells_ranges(const struct vsph_cells *c, size_t cell,
                                   size_t lo[VSPH_CELLS_MAXRANGES],
                                   size_t hi[VSPH_CELLS_MAXRANGES]);

@@ -155,6 +155,12 @@ START_TEST(test_cells_vs_direct) {
       total += a[i];
     }
     ck_assert_uint_gt(total, p->n); /* the test saw real neighbours */
+    /* a cell the list does not have has no ranges (the next row's or
+     * layer's would wrap round into the grid) */
+    size_t lo[VSPH_CELLS_MAXRANGES], hi[VSPH_CELLS_MAXRANGES];
+    ck_assert_uint_gt(vsph_cells_ranges(c, c->ncells / 2, lo, hi), 0);
+    ck_assert_uint_eq(vsph_cells_ranges(c, c->ncells, lo, hi), 0);
+    ck_assert_uint_eq(vsph_cells_ranges(c, c->ncells + c->nc[0], lo, hi), 0);
     /* sorted by cell: each cell's particles lie inside it */
     for (size_t cell = 0; cell < c->ncells; cell++)
       for (size_t i = c->start[cell]; i < c->start[cell] + c->count[cell];
