@@ -452,7 +452,7 @@ void vsph_equations_sweep_free(struct vsph_equations_sweep *sw) {
 size_t vsph_equations_sweep_bytes(const struct vsph_equations_sweep *sw) {
   if (!sw) return 0;
   return sizeof *sw + sw->cap_off * sizeof(size_t) +
-         sw->cap_buf * sizeof(double) + sw->cap_flags;
+         (sw->cap_buf + sw->cap_rows) * sizeof(double) + sw->cap_flags;
 }
 
 /* The blocks of this evaluation, the cells' (planned with their build on

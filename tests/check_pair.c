@@ -23,6 +23,7 @@
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
+#include <malloc.h> /* malloc_usable_size (glibc) */
 #include <math.h>
 #include <omp.h>
 #include <stdlib.h>
@@ -33,6 +34,7 @@
 #include "../kernels/kernel.h"
 #include "../solver/cells.h"
 #include "../solver/equations.h"
+#include "../solver/equations_internal.h"
 #include "../solver/integrate.h"
 #include "../solver/lattice.h"
 #include "../solver/particles.h"
@@ -673,6 +675,18 @@ START_TEST(test_interactions_many) {
     vsph_particles_free(set[q]);
   }
   omp_set_num_threads(threads);
+  /* the bytes the workspace says it holds (vsph_equations_sweep_bytes)
+   * against what the allocator holds for its four blocks
+   * (malloc_usable_size: at least each block's size, at most a page and
+   * a chunk's header more, 4096 + 16 B); its rows for two threads are
+   * larger than that slack (24 KiB and more here) */
+  void *const blk[4] = {sw->off, sw->buf, sw->rows, sw->flags};
+  size_t held = sizeof *sw;
+  for (int k = 0; k < 4; k++) held += blk[k] ? malloc_usable_size(blk[k]) : 0;
+  const size_t said = vsph_equations_sweep_bytes(sw);
+  ck_assert_uint_gt(sw->cap_rows * sizeof(double), 4 * (4096 + 16));
+  ck_assert_uint_le(said, held);
+  ck_assert_uint_ge(said + 4 * (4096 + 16), held);
   vsph_equations_sweep_free(sw);
 }
 END_TEST
