@@ -48,6 +48,15 @@ static struct vsph_integrate *make_run(const char *scene, int form, size_t res,
   return s;
 }
 
+/* The standing wave with MGF at @p res across after one step (its state
+ * evaluated, its ghosts and cell list made), @p sc kept for it. */
+static struct vsph_integrate *stepped_wave(struct vsph_scene *sc, size_t res) {
+  struct vsph_integrate *s =
+      make_run("standing-wave", VSPH_VISCOUS_MGF, res, sc, NULL, NULL);
+  ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  return s;
+}
+
 /* Stretching square at t = 0 against dE_k/dt = -4 mu A0^2 L^2 (THEORY
  * 6.2): PVWF within 1 % (exact discrete identity), MGF within 10 % (its
  * lattice error, -6 %, partly offset by the surface deficit: +1.2 %
@@ -776,9 +785,7 @@ END_TEST
  * was left out; a rate read before it is written would show as NaN). */
 START_TEST(test_pack_lean) {
   struct vsph_scene sc;
-  struct vsph_integrate *s =
-      make_run("standing-wave", VSPH_VISCOUS_MGF, 12, &sc, NULL, NULL);
-  ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  struct vsph_integrate *s = stepped_wave(&sc, 12);
   struct vsph_particles *p = s->p;
   const int d = p->dim;
   const size_t nfull = vsph_integrate_pack(s, NULL),
@@ -831,9 +838,7 @@ END_TEST
  * integrate.h), and the good state is restored and steps on. */
 START_TEST(test_restore_refuses_bad_ids) {
   struct vsph_scene sc;
-  struct vsph_integrate *s =
-      make_run("standing-wave", VSPH_VISCOUS_MGF, 12, &sc, NULL, NULL);
-  ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  struct vsph_integrate *s = stepped_wave(&sc, 12);
   struct vsph_particles *p = s->p;
   const size_t n = vsph_integrate_pack(s, NULL);
   unsigned char *buf[3] = {malloc(n), malloc(n), malloc(n)}; /* good, bad */
@@ -867,9 +872,7 @@ END_TEST
  * their offsets); a cell list narrower than the kernel is refused. */
 START_TEST(test_diagnostics_order) {
   struct vsph_scene sc;
-  struct vsph_integrate *s =
-      make_run("standing-wave", VSPH_VISCOUS_MGF, 16, &sc, NULL, NULL);
-  ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+  struct vsph_integrate *s = stepped_wave(&sc, 16);
   struct vsph_equations_energy en;
   struct vsph_equations_budget bu;
   ck_assert_int_eq(vsph_integrate_diagnostics(s, &en, &bu), 0);
