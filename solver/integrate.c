@@ -272,6 +272,15 @@ size_t vsph_integrate_wall_count(const struct vsph_integrate *s) {
 }
 
 /* Ghosts (walls only), the cell list with a skin, and the id -> index map. */
+/* The map from each particle's id to its slot (s->where), the set's ids
+ * being distinct: a scatter, in parallel for a large set. */
+static void map_ids(struct vsph_integrate *s) {
+  const size_t n = s->p->n, *const id = s->p->id;
+  size_t *const where = s->where;
+#pragma omp parallel for schedule(static) if (n >= VSPH_PARTICLES_MOVE_PARALLEL)
+  for (size_t i = 0; i < n; i++) where[id[i]] = i;
+}
+
 static int prepare(struct vsph_integrate *s, double skin) {
   const struct vsph_viscous_props *vp = &s->props.eq.visc;
   const double H = vp->kernel->kappa * vp->h;
@@ -322,10 +331,7 @@ static int prepare(struct vsph_integrate *s, double skin) {
       return st;
   }
   if ((st = vsph_cells_build_owned(s->cells, s->p, H + skin))) return st;
-  const size_t n = s->p->n, *const id = s->p->id;
-  size_t *const where = s->where;
-#pragma omp parallel for schedule(static) if (n >= VSPH_PARTICLES_MOVE_PARALLEL)
-  for (size_t i = 0; i < n; i++) where[id[i]] = i;
+  map_ids(s);
   return VSPH_OK;
 }
 
@@ -1151,5 +1157,5 @@ static void put_back(struct vsph_integrate *s, size_t n) {
   }
   memcpy(p->id, s->order0, s->n0 * sizeof *p->id);
   p->n = s->n0;
-  for (size_t i = 0; i < p->n; i++) s->where[p->id[i]] = i;
+  map_ids(s);
 }
