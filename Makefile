@@ -40,16 +40,8 @@ CFLAGS   ?= $(OPT) $(ARCH) -g
 # -fno-semantic-interposition lets the library's calls to its own
 # functions stay direct; -fvisibility=hidden: libvsph.so exports only what
 # the public headers mark VSPH_API (common/api.h).
-# VSPH_SIMD_SUMS: this build's omp simd reductions are vectorised (-O3,
-# the default, and no sanitizer: at -O1, as make asan builds, they sum in
-# order, and the sanitizers' checks keep GCC from vectorising them at -O3
-# too), so the Brookshaw forms' AVX-512 sweep, which makes its sums in the
-# vectorised four-lane order, gives them the same bits
-# (solver/sweep_x86.h; test_sweep_scatter_simd holds them so on a CPU
-# with AVX-512).
 ALLCFLAGS = -std=c11 -D_POSIX_C_SOURCE=200809L -fopenmp -fno-math-errno \
             -ffp-contract=off \
-            $(if $(and $(filter -O3,$(CFLAGS)),$(if $(strip $(SAN)),,1)),-DVSPH_SIMD_SUMS=1) \
             -fPIC -fno-semantic-interposition -fvisibility=hidden \
             $(WARN) $(CFLAGS) \
             $(SAN) $(shell pkg-config --cflags $(PKGS) 2>/dev/null)

@@ -102,9 +102,9 @@ static inline double vsph_kernel_d2w(const struct vsph_kernel_type *k, int dim,
  *  test_expneg_within_1e15_of_exp; the worst found 6.3e-16 against exp,
  *  5.7e-16 against expl, with FMA or without). libm's exp is not used
  *  here: it is a call the loops cannot vectorise, and it sets errno.
- *  solver/sweep_x86.c has a copy in AVX-512 lanes (expneg8) for the
- *  Brookshaw forms' sweep: change both (test_sweep_scatter_simd holds
- *  them to the same bits). */
+ *  solver/sweep_x86.c has the same method in AVX-512 lanes (expneg8, its
+ *  reduction fused) for the Brookshaw forms' sweep: change both
+ *  (test_expneg_within_1e15_of_exp holds both to the same bound). */
 static inline double vsph_kernel_expneg(double x) {
   const double shift = 6755399441055744.0; /* 1.5 2^52 */
   const double m = x * 1.4426950408889634074 + shift;

@@ -456,9 +456,9 @@ VSPH_CONSTS_SPECIALISE size_t sweep_count(const struct vsph_pair_chunk *b,
  * (each fluid receiver of a pair counts once) and the closest pair.
  * @p brook 2 (solver/sweep_x86.c's instance, built for AVX-512, of a
  * Brookshaw form in 2-D with the Gaussian, without delta-SPH or the
- * parts): each chunk's work in AVX-512 lanes (brookshaw2_chunk), the same
- * operations and the same order of i's sums, so the same bits; any other
- * @p brook: the loops above. */
+ * parts): each chunk's work in AVX-512 lanes (brookshaw2_chunk), within
+ * rounding of the loops above (products and sums fused, i's sums in eight
+ * lanes); any other @p brook: the loops above. */
 VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
     const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
     const struct vsph_cells *cells, size_t n_fluid,
@@ -483,8 +483,8 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
 #ifdef VSPH_SWEEP_BROOKSHAW2_CHUNK
   /* @p brook 2: the instance of a Brookshaw form in 2-D with the Gaussian
    * that solver/sweep_x86.c builds for AVX-512 (vsph_sweep_x86_brookshaw2):
-   * each chunk's kernel, map, i's sums and j's adds in its lanes, the same
-   * bits */
+   * each chunk's kernel, map, i's sums and j's adds in its lanes, within
+   * rounding of the loops below */
   const int fused = brook == 2;
 #else
   const int fused = 0;
@@ -601,7 +601,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
  * form's loops, VSPH_VISCOUS_BROOKSHAW): in 2-D with the Gaussian,
  * without delta-SPH or the parts, on a CPU with AVX-512 and in a build
  * that allows it (VSPH_SWEEP_X86_BROOKSHAW), the block goes to
- * vsph_sweep_x86_brookshaw2 (the same bits). */
+ * vsph_sweep_x86_brookshaw2 (within rounding, solver/sweep_x86.h). */
 VSPH_CONSTS_SPECIALISE size_t
 sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
             const struct vsph_cells *cells, size_t n_fluid,
@@ -611,7 +611,7 @@ sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
   (void)nf; /* = SW_FIELDS(dim, delta, rc->parts): run_sweep's plan */
 #if VSPH_SWEEP_X86_BROOKSHAW
   /* a Brookshaw form in 2-D with the Gaussian: its instance for AVX-512
-   * where the CPU has it (solver/sweep_x86.c), the same bits */
+   * where the CPU has it (solver/sweep_x86.c), within rounding */
   if (brook == 1 && dim == 2 && !delta && kid == VSPH_KERNEL_DFQ_GAUSSIAN &&
       !rc->parts && rc->pk.simd == 2)
     return vsph_sweep_x86_brookshaw2(rc, p, cells, n_fluid, sw, blk, min_s2);

@@ -86,16 +86,19 @@ lanes_of(const double *a, const size_t *j) {
                        a[j[1]], a[j[0]]);
 }
 
-/* e^{-x}, vsph_kernel_expneg's operations lane by lane */
+/* e^{-x} for 0 <= x <= 700, eight lanes: vsph_kernel_expneg's method
+ * (n = round(x / ln 2), r = x - n ln 2 in Cody-Waite's two parts, the
+ * degree-12 Taylor polynomial of e^{-r} by Estrin's scheme, times 2^{-n}),
+ * its reduction by fused multiply-adds (one rounding each) and 2^{-n}
+ * applied by scalef (exact), so not its bits: within 1e-15 of libm's
+ * (test_expneg8_within_1e15_of_exp, through vsph_sweep_x86_expneg8) */
 static inline __attribute__((always_inline)) AVX512 __m512d expneg8(__m512d x) {
-  const __m512d shift = _mm512_set1_pd(6755399441055744.0);
-  const __m512d m = _mm512_add_pd(
-      _mm512_mul_pd(x, _mm512_set1_pd(1.4426950408889634074)), shift);
-  const __m512d n = _mm512_sub_pd(m, shift);
-  const __m512d r = _mm512_sub_pd(
-      _mm512_sub_pd(
-          x, _mm512_mul_pd(n, _mm512_set1_pd(6.93147180369123816490e-01))),
-      _mm512_mul_pd(n, _mm512_set1_pd(1.90821492927058770002e-10)));
+  const __m512d shift = _mm512_set1_pd(6755399441055744.0); /* 1.5 2^52 */
+  const __m512d n = _mm512_sub_pd(
+      _mm512_fmadd_pd(x, _mm512_set1_pd(1.4426950408889634074), shift), shift);
+  const __m512d r = _mm512_fnmadd_pd(
+      n, _mm512_set1_pd(1.90821492927058770002e-10),
+      _mm512_fnmadd_pd(n, _mm512_set1_pd(6.93147180369123816490e-01), x));
   const __m512d r2 = _mm512_mul_pd(r, r), r4 = _mm512_mul_pd(r2, r2),
                 r8 = _mm512_mul_pd(r4, r4);
 #define C(v) _mm512_set1_pd(v)
@@ -112,40 +115,27 @@ static inline __attribute__((always_inline)) AVX512 __m512d expneg8(__m512d x) {
   const __m512d c0 = _mm512_fmadd_pd(b1, r4, b0),
                 c1 = _mm512_fmadd_pd(C(1.0 / 479001600.0), r4, b2);
 #undef C
-  const __m512d p = _mm512_fmadd_pd(c1, r8, c0);
-  const __m512i bits = _mm512_castpd_si512(m);
-  const __m512i e = _mm512_slli_epi64(
-      _mm512_sub_epi64(
-          _mm512_set1_epi64((long long)(1023ull + 0x0008000000000000ull)),
-          _mm512_and_si512(bits, _mm512_set1_epi64(0x000fffffffffffffll))),
-      52);
-  return _mm512_mul_pd(p, _mm512_castsi512_pd(e));
-}
-
-/* prev + l[0] + ... + l[3], in that order */
-static inline __attribute__((always_inline)) AVX512 double lanes4(double prev,
-                                                                  __m256d acc,
-                                                                  double l0) {
-  double l[4];
-  _mm256_storeu_pd(l, acc);
-  return ((prev + l0) + l[1]) + l[2] + l[3];
+  return _mm512_scalef_pd(_mm512_fmadd_pd(c1, r8, c0),
+                          _mm512_sub_pd(_mm512_setzero_pd(), n));
 }
 
 /* The Brookshaw forms' chunk (solver/sweep_x86.h: what
  * vsph_sweep_x86_brookshaw2 does with each chunk): for the @p m
  * neighbours jj[k] of receiver i (their x0, x1 = r_j - r_i and s2; F not
  * set), the kernel factor (@p dwq, @p h_inv2), the continuity, pressure
- * and viscous (Kmu, eta2: vsph_pair_mgf) shares, by the same operations
- * as vsph_kernel_dfq_gaussian and the scalar terms (so the same bits);
- * i's sums added to sums[0] (continuity), sums[1..2] (force) in the
- * order of the sweep's simd reduction at the build's four lanes (pair k
- * in lane k % 4 up to the last multiple of 4, the pairs after it in lane
- * 0, then the lanes in order: GCC's, for the same bits as the scalar
- * map; test_sweep_scatter_simd); j's shares (-V_i f, V_i c) added to
- * entries buf + (jj[k] - lo) * 3, as vsph_sweep_x86_add_avx2 does.
- * Receiver i's velocity @p ui0, @p ui1, pressure @p pi and volume
- * @p Vi; the set's velocities @p vx, @p vy, pressures @p pp and volumes
- * @p vol. Returns the least of @p rs2 and the chunk's s2. */
+ * and viscous (Kmu, eta2: vsph_pair_mgf) shares, eight pairs at a time,
+ * the last ones masked; i's sums added to sums[0] (continuity),
+ * sums[1..2] (force), each in eight lanes, then the lanes in
+ * _mm512_reduce_add_pd's order; j's shares (-V_i f, V_i c) added to
+ * entries buf + (jj[k] - lo) * 3, fields 0 and 1 as a pair of lanes and
+ * field 2 alone. The same terms as the scalar loops, not their bits:
+ * products and sums fused where they meet (d u . x, F (p_i + p_j + the
+ * viscous factor) rather than the pressure and viscous shares apart, i's
+ * sums), another exponential (expneg8) and another order of i's sums:
+ * within rounding of the four-lane loops (test_sweep_scatter_simd).
+ * Receiver i's velocity @p ui0, @p ui1, pressure @p pi and volume @p Vi;
+ * the set's velocities @p vx, @p vy, pressures @p pp and volumes @p vol.
+ * Returns the least of @p rs2 and the chunk's s2 (exact in any order). */
 static inline __attribute__((always_inline)) AVX512 double brookshaw2_chunk(
     const size_t *jj, const double *x0, const double *x1, const double *s2,
     size_t m, const double *vx, const double *vy, const double *pp,
@@ -154,60 +144,55 @@ static inline __attribute__((always_inline)) AVX512 double brookshaw2_chunk(
     double *buf, size_t lo, double rs2) {
   const __m512d vui0 = _mm512_set1_pd(ui0), vui1 = _mm512_set1_pd(ui1),
                 vpi = _mm512_set1_pd(pi), vVi = _mm512_set1_pd(Vi),
-                vhi2 = _mm512_set1_pd(h_inv2), vdwq = _mm512_set1_pd(dwq),
-                vnKmu = _mm512_set1_pd(-Kmu), veta2 = _mm512_set1_pd(eta2),
-                zero = _mm512_setzero_pd(), nine = _mm512_set1_pd(9.0),
-                m2 = _mm512_set1_pd(-2.0), sign = _mm512_set1_pd(-0.0);
+                vnVi = _mm512_set1_pd(-Vi), vhi2 = _mm512_set1_pd(h_inv2),
+                vdwq = _mm512_set1_pd(-2.0 * dwq), /* -2 exact: F's factor */
+      vnKmu = _mm512_set1_pd(-Kmu), veta2 = _mm512_set1_pd(eta2),
+                nine = _mm512_set1_pd(9.0);
   __m512d vmin = _mm512_set1_pd(rs2);
-  /* i's sums as the sweep's simd reduction makes them: four lanes, pair
-   * k in lane k % 4 up to the last multiple of 4, the pairs after it in
-   * lane 0 */
-  __m256d ac = _mm256_setzero_pd(), af0 = ac, af1 = ac;
-  const size_t m4 = m & ~(size_t)3;
-  __m512d pc = zero, p0 = zero, p1 = zero;
-  size_t k = 0;
-  for (; k < m; k += 8) {
-    const __mmask8 km = m - k >= 8 ? 0xff : (__mmask8)((1u << (m - k)) - 1);
+  /* i's sums, lane by lane: the masked lanes add 0 */
+  __m512d ac = _mm512_setzero_pd(), af0 = ac, af1 = ac;
+  for (size_t k = 0; k < m; k += 8) {
+    const int full = m - k >= 8;
+    const __mmask8 km = full ? 0xff : (__mmask8)((1u << (m - k)) - 1);
+    /* past the chunk: x = 0 and s2 infinite, so F = 0 and every share 0 */
     const __m512d X0 = _mm512_maskz_loadu_pd(km, x0 + k),
                   X1 = _mm512_maskz_loadu_pd(km, x1 + k),
                   S2 = _mm512_mask_loadu_pd(_mm512_set1_pd(HUGE_VAL), km,
                                             s2 + k);
     vmin = _mm512_min_pd(vmin, S2);
-    /* F = dwq (-2 e^{-q^2}), 0 beyond q^2 = 9 */
+    /* F = dwq (-2 e^{-q^2}), 0 from q^2 = 9 */
     const __m512d q2 = _mm512_mul_pd(S2, vhi2);
-    const __m512d e = _mm512_mul_pd(m2, expneg8(q2));
     const __mmask8 in = _mm512_cmp_pd_mask(q2, nine, _CMP_LT_OQ);
-    const __m512d F = _mm512_mul_pd(vdwq, _mm512_maskz_mov_pd(in, e));
-    /* the last lanes past the chunk read pair k's neighbour again */
+    const __m512d F = _mm512_maskz_mul_pd(in, vdwq, expneg8(q2));
+    /* the lanes past the chunk read pair k's neighbour again */
     size_t jt[8];
     const size_t *j = jj + k;
-    if (km != 0xff) {
+    if (!full) {
       for (size_t l = 0; l < 8; l++) jt[l] = j[l < m - k ? l : 0];
       j = jt;
     }
     const __m512d U0 = lanes_of(vx, j), U1 = lanes_of(vy, j),
                   P = lanes_of(pp, j), V = lanes_of(vol, j);
-    const __m512d du0 = _mm512_sub_pd(U0, vui0), du1 = _mm512_sub_pd(U1, vui1);
-    const __m512d dux = _mm512_add_pd(
-        _mm512_add_pd(zero, _mm512_mul_pd(du0, X0)), _mm512_mul_pd(du1, X1));
+    /* d u . x; c = F d u . x (continuity); F (p_i + p_j - Kmu d u . x /
+     * (s2 + eta2)) x (pressure and viscous force, vsph_pair_mgf's and
+     * vsph_pair_pressure's terms) */
+    const __m512d dux =
+        _mm512_fmadd_pd(_mm512_sub_pd(U1, vui1), X1,
+                        _mm512_mul_pd(_mm512_sub_pd(U0, vui0), X0));
     const __m512d c = _mm512_mul_pd(F, dux);
-    const __m512d cp = _mm512_mul_pd(F, _mm512_add_pd(vpi, P));
-    const __m512d cv = _mm512_div_pd(
-        _mm512_mul_pd(_mm512_mul_pd(vnKmu, F), dux), _mm512_add_pd(S2, veta2));
-    const __m512d f0 = _mm512_add_pd(_mm512_mul_pd(cp, X0),
-                                     _mm512_mul_pd(cv, X0)),
-                  f1 = _mm512_add_pd(_mm512_mul_pd(cp, X1),
-                                     _mm512_mul_pd(cv, X1));
-    /* j's shares (-V_i f, V_i c), added to their receivers' entries:
-     * fields 0 and 1 as a pair of lanes, field 2 alone, as
-     * vsph_sweep_x86_add_avx2 adds them (the receivers of a chunk are
-     * distinct, so each entry gets one add a pair, in any order) */
-    const __m512d g0 = _mm512_xor_pd(_mm512_mul_pd(vVi, f0), sign),
-                  g1 = _mm512_xor_pd(_mm512_mul_pd(vVi, f1), sign),
-                  g2 = _mm512_mul_pd(vVi, c);
-    const __m512d t0 = _mm512_unpacklo_pd(g0, g1), /* pairs 0, 2, 4, 6 */
-        t1 = _mm512_unpackhi_pd(g0, g1);           /* pairs 1, 3, 5, 7 */
-    __m128d q01[8];
+    const __m512d fx = _mm512_mul_pd(
+        F, _mm512_add_pd(_mm512_add_pd(vpi, P),
+                         _mm512_div_pd(_mm512_mul_pd(vnKmu, dux),
+                                       _mm512_add_pd(S2, veta2))));
+    const __m512d f0 = _mm512_mul_pd(fx, X0), f1 = _mm512_mul_pd(fx, X1);
+    /* j's shares (-V_i f, V_i c), added to their receivers' entries (the
+     * receivers of a chunk are distinct, so each entry gets one add a
+     * pair, in any order) */
+    const __m512d t0 = _mm512_unpacklo_pd(_mm512_mul_pd(vnVi, f0),
+                                          _mm512_mul_pd(vnVi, f1)),
+                  t1 = _mm512_unpackhi_pd(_mm512_mul_pd(vnVi, f0),
+                                          _mm512_mul_pd(vnVi, f1));
+    __m128d q01[8]; /* pair l's fields 0 and 1 */
     q01[0] = _mm512_castpd512_pd128(t0);
     q01[1] = _mm512_castpd512_pd128(t1);
     q01[2] = _mm512_extractf64x2_pd(t0, 1);
@@ -217,46 +202,33 @@ static inline __attribute__((always_inline)) AVX512 double brookshaw2_chunk(
     q01[6] = _mm512_extractf64x2_pd(t0, 3);
     q01[7] = _mm512_extractf64x2_pd(t1, 3);
     double c2[8];
-    _mm512_storeu_pd(c2, g2);
-    const size_t nl = m - k < 8 ? m - k : 8;
-    for (size_t l = 0; l < nl; l++) {
-      double *const q = buf + (jj[k + l] - lo) * 3;
-      _mm_storeu_pd(q, _mm_add_pd(_mm_loadu_pd(q), q01[l]));
-      q[2] += c2[l];
-    }
-    pc = _mm512_mul_pd(V, c);
-    p0 = _mm512_mul_pd(V, f0);
-    p1 = _mm512_mul_pd(V, f1);
-    if (k + 4 <= m4) {
-      ac = _mm256_add_pd(ac, _mm512_castpd512_pd256(pc));
-      af0 = _mm256_add_pd(af0, _mm512_castpd512_pd256(p0));
-      af1 = _mm256_add_pd(af1, _mm512_castpd512_pd256(p1));
-    }
-    if (k + 8 <= m4) {
-      ac = _mm256_add_pd(ac, _mm512_extractf64x4_pd(pc, 1));
-      af0 = _mm256_add_pd(af0, _mm512_extractf64x4_pd(p0, 1));
-      af1 = _mm256_add_pd(af1, _mm512_extractf64x4_pd(p1, 1));
-    }
+    _mm512_storeu_pd(c2, _mm512_mul_pd(vVi, c));
+#define ADD_J(l)                                             \
+  do {                                                       \
+    double *const q = buf + (jj[k + (l)] - lo) * 3;          \
+    _mm_storeu_pd(q, _mm_add_pd(_mm_loadu_pd(q), q01[(l)])); \
+    q[2] += c2[(l)];                                         \
+  } while (0)
+    if (full) /* eight, without a test each */
+      for (size_t l = 0; l < 8; l++) ADD_J(l);
+    else
+      for (size_t l = 0; l < m - k; l++) ADD_J(l);
+#undef ADD_J
+    ac = _mm512_fmadd_pd(V, c, ac);
+    af0 = _mm512_fmadd_pd(V, f0, af0);
+    af1 = _mm512_fmadd_pd(V, f1, af1);
   }
-  /* lane 0, then the pairs after m4: in the last vector, from lane
-   * m4 - (k - 8) */
-  double l0c = _mm256_cvtsd_f64(ac), l0f0 = _mm256_cvtsd_f64(af0),
-         l0f1 = _mm256_cvtsd_f64(af1);
-  if (m4 < m) {
-    double tc[8], t0[8], t1[8];
-    _mm512_storeu_pd(tc, pc);
-    _mm512_storeu_pd(t0, p0);
-    _mm512_storeu_pd(t1, p1);
-    for (size_t l = m4 - (k - 8); l < m - (k - 8); l++) {
-      l0c += tc[l];
-      l0f0 += t0[l];
-      l0f1 += t1[l];
-    }
-  }
-  sums[0] = lanes4(sums[0], ac, l0c);
-  sums[1] = lanes4(sums[1], af0, l0f0);
-  sums[2] = lanes4(sums[2], af1, l0f1);
+  sums[0] += _mm512_reduce_add_pd(ac);
+  sums[1] += _mm512_reduce_add_pd(af0);
+  sums[2] += _mm512_reduce_add_pd(af1);
   return _mm512_reduce_min_pd(vmin);
+}
+
+AVX512 void vsph_sweep_x86_expneg8(const double *x, double *y, size_t n) {
+  for (size_t k = 0; k < n; k += 8) {
+    const __mmask8 km = n - k >= 8 ? 0xff : (__mmask8)((1u << (n - k)) - 1);
+    _mm512_mask_storeu_pd(y + k, km, expneg8(_mm512_maskz_loadu_pd(km, x + k)));
+  }
 }
 
 #endif /* VSPH_SWEEP_X86_BROOKSHAW: the chunk */
@@ -298,8 +270,8 @@ __attribute__((target("avx2"))) void vsph_sweep_x86_add8_avx2(
 
 /* The sweep's block loops (solver/equations_internal.h) built here for
  * AVX-512 too, so that the chunk above inlines into them: their other
- * work has no sum in floating point (the chunk's are its own), so the
- * same bits as the generic instance's loops. The header's inline
+ * work has no sum in floating point (the chunk's are its own), so it is
+ * the generic instance's to the bit. The header's inline
  * functions keep the AVX-512 target in the rest of this file: this
  * region stays at its end, and nothing below it calls them. */
 #if VSPH_SWEEP_X86_BROOKSHAW

@@ -35,8 +35,11 @@ struct vsph_equations_sweep;
  * Gaussian, without delta-SPH or the parts (solver/equations_internal.h),
  * built for AVX-512: each chunk's work in its lanes, eight pairs at a
  * time, the last ones masked (brookshaw2_chunk in solver/sweep_x86.c,
- * inlined; the block's loops around it are sweep_block_parts'). Defined
- * only where VSPH_SWEEP_X86_BROOKSHAW is 1; call it only there, and where
+ * inlined; the block's loops around it are sweep_block_parts'). Its
+ * results are within rounding of the four-lane loops', not their bits
+ * (fused multiply-adds, eight-lane sums; the same bits on 1 and 2
+ * threads, as every loop of the sweep). Defined only where
+ * VSPH_SWEEP_X86_BROOKSHAW is 1; call it only there, and where
  * vsph_pair_x86_simd() returns 2 (sweep_block does). */
 size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
                                  const struct vsph_particles *p,
@@ -44,21 +47,17 @@ size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
                                  const struct vsph_equations_sweep *sw,
                                  size_t blk, double *min_s2);
 
+/* The chunk's exponential: y[k] = e^{-x[k]}, 0 <= x[k] <= 700, for
+ * k < n, eight at a time (for its test). The same conditions as
+ * vsph_sweep_x86_brookshaw2. */
+void vsph_sweep_x86_expneg8(const double *x, double *y, size_t n);
+
 #if defined(__x86_64__) && defined(__LP64__) && defined(__GNUC__) && \
-    !defined(__clang__) && defined(__AVX2__) && defined(__FMA__) &&  \
-    !defined(__AVX512F__) && defined(VSPH_SIMD_SUMS)
-/* 1 where vsph_sweep_x86_brookshaw2 gives the four-lane loops'
- * bits: a build by GCC for AVX2 with FMA and no AVX-512 (the program's
- * and the installed x86-64-v3 copy's), whose simd reductions sum in four
- * lanes in the order read from GCC 12's code and whose exponential uses
- * fma() (and is LP64, as VSPH_PAIR_X86 needs), its simd reductions
- * vectorised (VSPH_SIMD_SUMS, which the Makefile defines at -O3 without a
- * sanitizer); another build (clang, -march=native on an AVX-512 CPU, no
- * FMA, -O1 as make asan builds, a sanitizer's at -O3) sums in another
- * order, and keeps the four-lane loops. A later GCC that changed the order
- * would fail test_sweep_scatter_simd on an AVX-512 CPU. Evaluated where
- * solver/sweep_x86.c includes this header first, before its AVX-512
- * region (where __AVX512F__ is defined). */
+    !defined(__clang__) && defined(__AVX2__)
+/* 1 where solver/sweep_x86.c builds the Brookshaw forms' AVX-512 sweep:
+ * GCC (its region is made by #pragma GCC target, which clang does not
+ * take) in a build for AVX2 (the program's and the installed x86-64-v3
+ * copy's), LP64 as VSPH_PAIR_X86 needs. */
 #define VSPH_SWEEP_X86_BROOKSHAW 1
 #else
 #define VSPH_SWEEP_X86_BROOKSHAW 0

@@ -28,7 +28,7 @@
  *  so that sum_i V_i of the sums is sum_i V_i u_i.(div V)_i. The 2-D
  *  sweep with the Gaussian computes this share, with the continuity and
  *  pressure terms, in AVX-512 lanes too (solver/sweep_x86.c): change both
- *  (test_sweep_scatter_simd holds them to the same bits). */
+ *  (test_sweep_scatter_simd holds them within rounding). */
 VSPH_CONSTS_SPECIALISE struct vsph_pair_visc vsph_pair_mgf(
     const struct vsph_pair *pr, int dim, double Kmu, double eta2, double dux) {
   struct vsph_pair_visc r;
