@@ -490,11 +490,14 @@ static void twin_check(int form, int dim, int sweep,
  * fraction of a rate's largest entry: each entry is a sum of some 50
  * shares, each within a few units of rounding (2.2e-16) of the other
  * loops' (about 1e-15 relative), summed in another order, and where
- * shares cancel (the standing wave's hydrostatic pressure, about 50 times
- * the net force) the difference grows as that ratio: the largest found is
- * 5e-14 of the wave's vertical force (test_sweep_scatter_simd); 1e-12
- * leaves a factor 20, and a wrong term or factor moves a rate by 1e-8 of
- * it or more. */
+ * shares cancel the difference grows with the shares against their sum:
+ * the largest found is 5.4e-14 of the wave's largest horizontal force
+ * (7.1e-14 in make asan's -O1 build), whose pressure shares, of the size
+ * of the hydrostatic gradient, cancel to a horizontal force a sixth of
+ * the largest vertical one (test_sweep_scatter_simd; 2.9e-15 at most
+ * elsewhere); 1e-12 leaves a factor 14, and a wrong term or factor moves
+ * a rate by 1e-9 of it or more (a referee's mutant of F by 1 + 1e-9
+ * fails). */
 #define SIMD_ROUNDING 1e-12
 static int brookshaw_chunk(int form, int dim, int delta, int parts, int sweep) {
   return VSPH_SWEEP_X86_BROOKSHAW && vsph_pair_x86_simd() == 2 && dim == 2 &&
@@ -541,7 +544,10 @@ static struct vsph_particles *mixed_set(int dim, unsigned long seed,
  * to the bit (the others are its neighbours all the same, summed in the
  * same order), and those the general finish gives it from the same sums
  * (finish_one, which the parts take: the same sums in the same order, so
- * the same bits; without the parts, 2-D sweeps finish by finish_rows2);
+ * the same bits; without the parts, 2-D sweeps finish by finish_rows2;
+ * except where the sums without the parts come from the Brookshaw forms'
+ * AVX-512 chunk, brookshaw_chunk, and the parts' from the loops it
+ * replaces: then within SIMD_ROUNDING);
  * the state law's p and V every particle's, as vsph_equations_pressure
  * and m/rho make them, to the bit; and the interactions those a count
  * pair by pair gives, with half the set fluid and with one particle not
