@@ -192,6 +192,11 @@ START_TEST(test_headers_stand_alone) {
 }
 END_TEST
 
+/* The build folder whose objects the install tests install: the one
+ * make check built this runner and VSPH_BIN in (make BUILD=...), build/
+ * where VSPH_BIN is not set; a shell prefix setting B. */
+#define BUILD_DIR "B=$(dirname \"${VSPH_BIN:-build/vsph}\") && "
+
 /* A bad PREFIX is refused with one line and exit 2, nothing written; an
  * uninstall removes the install's files and the folders it made, and
  * leaves a file it did not make (and the folder that holds it); a second
@@ -202,7 +207,8 @@ START_TEST(test_install_refusals) {
   static const char *const bad[] = {"relative/path", "/with space", "/quote'd"};
   for (size_t b = 0; b < 3; b++) {
     snprintf(script, sizeof script,
-             "scripts/install '%s' \"%s\" 0.2.0 0 build vsph.h", dir, bad[b]);
+             BUILD_DIR "scripts/install '%s' \"%s\" 0.2.0 0 \"$B\" vsph.h", dir,
+             bad[b]);
     struct vsph_test_outcome *o = vsph_test_shell(script);
     ck_assert_msg(o->status == 2 && o->err_lines == 1,
                   "PREFIX '%s': exit %d, %d lines: %s", bad[b], o->status,
@@ -212,10 +218,11 @@ START_TEST(test_install_refusals) {
   ck_assert_str_eq(vsph_test_shell(script)->out, "0\n");
   /* install under DESTDIR = dir, a foreign file beside, uninstall */
   snprintf(script, sizeof script,
-           "scripts/install '%s' /opt/v 0.2.0 0 build vsph.h common/consts.h "
+           BUILD_DIR
+           "scripts/install '%s' /opt/v 0.2.0 0 \"$B\" vsph.h common/consts.h "
            "> /dev/null && echo mine > '%s/opt/v/lib/other.so' && "
            "test -L '%s/opt/v/lib/libvsph.so' && "
-           "scripts/install '%s' /opt/v 0.2.0 0 build vsph.h common/consts.h "
+           "scripts/install '%s' /opt/v 0.2.0 0 \"$B\" vsph.h common/consts.h "
            "> /dev/null && "
            "scripts/install --uninstall '%s' /opt/v > /dev/null && "
            "cd '%s/opt/v' && find . -type f -o -type l -o -type d | sort",
@@ -226,8 +233,9 @@ START_TEST(test_install_refusals) {
   /* a file in the way that no install made: refused before anything is
    * written, the file kept */
   snprintf(script, sizeof script,
+           BUILD_DIR
            "mkdir -p '%s/q/bin' && echo theirs > '%s/q/bin/vsph' && "
-           "scripts/install '%s' /q 0.2.0 0 build vsph.h; echo $?; "
+           "scripts/install '%s' /q 0.2.0 0 \"$B\" vsph.h; echo $?; "
            "cat '%s/q/bin/vsph'; find '%s/q' -type f | wc -l",
            dir, dir, dir, dir, dir);
   o = vsph_test_shell(script);
@@ -236,7 +244,8 @@ START_TEST(test_install_refusals) {
   /* a manifest line reached through a linked folder (it would delete
    * outside the install): refused before anything is removed */
   snprintf(script, sizeof script,
-           "scripts/install '%s' /r 0.2.0 0 build vsph.h > /dev/null && "
+           BUILD_DIR
+           "scripts/install '%s' /r 0.2.0 0 \"$B\" vsph.h > /dev/null && "
            "mkdir '%s/out' && echo theirs > '%s/out/f' && "
            "ln -s '%s/out' '%s/r/lib/ext' && "
            "echo lib/ext/f >> '%s/r/share/vsph/manifest' && "
