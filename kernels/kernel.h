@@ -92,6 +92,36 @@ static inline double vsph_kernel_d2w(const struct vsph_kernel_type *k, int dim,
 #define VSPH_KERNEL_MULADD(a, b, c) ((a) * (b) + (c))
 #endif
 
+/** The constants of e^{-x} = 2^{-n} e^{-r} (vsph_kernel_expneg, and
+ *  solver/sweep_x86.c's lanes): 1.5 2^52, whose addition rounds to an
+ *  integer; 1/ln 2; ln 2 in Cody-Waite's two parts. */
+#define VSPH_KERNEL_EXPNEG_SHIFT 6755399441055744.0
+#define VSPH_KERNEL_EXPNEG_LOG2E 1.4426950408889634074
+#define VSPH_KERNEL_EXPNEG_LN2_HI 6.93147180369123816490e-01
+#define VSPH_KERNEL_EXPNEG_LN2_LO 1.90821492927058770002e-10
+
+/** e^{-r}'s Taylor polynomial to degree 12, coefficients (-1)^k / k!, by
+ *  Estrin's scheme: pairs c_2k + c_2k+1 r, joined by r^2 (@p r2), then r^4
+ *  (@p r4), then r^8 (@p r8), so the longest chain is four multiply-adds
+ *  deep, not Horner's twelve. @p MULADD(a, b, c) is a b + c and @p K(v)
+ *  the constant v in the caller's type (a double, or a vector's lanes):
+ *  one copy of the coefficients for vsph_kernel_expneg and
+ *  solver/sweep_x86.c's expneg8. @p r and its powers must be plain
+ *  variables (each is named several times). */
+#define VSPH_KERNEL_EXPNEG_TAYLOR(MULADD, K, r, r2, r4, r8)                   \
+  MULADD(MULADD(K(1.0 / 479001600.0), r4,                                     \
+                MULADD(MULADD(K(-1.0 / 39916800.0), r, K(1.0 / 3628800.0)),   \
+                       r2, MULADD(K(-1.0 / 362880.0), r, K(1.0 / 40320.0)))), \
+         r8,                                                                  \
+         MULADD(MULADD(MULADD(K(-1.0 / 5040.0), r, K(1.0 / 720.0)), r2,       \
+                       MULADD(K(-1.0 / 120.0), r, K(1.0 / 24.0))),            \
+                r4,                                                           \
+                MULADD(MULADD(K(-1.0 / 6.0), r, K(1.0 / 2.0)), r2,            \
+                       MULADD(K(-1.0), r, K(1.0)))))
+
+/** The identity: VSPH_KERNEL_EXPNEG_TAYLOR's @p K for doubles. */
+#define VSPH_KERNEL_DOUBLE(v) (v)
+
 /** @brief e^{-x} for 0 <= x <= 700, branch-free (so the loops can
  *  vectorise it): e^{-x} = 2^{-n} e^{-r} with n = round(x / ln 2) found
  *  by the 1.5 2^52 rounding trick, r = x - n ln 2 in Cody-Waite's two parts
@@ -103,34 +133,22 @@ static inline double vsph_kernel_d2w(const struct vsph_kernel_type *k, int dim,
  *  5.7e-16 against expl, with FMA or without). libm's exp is not used
  *  here: it is a call the loops cannot vectorise, and it sets errno.
  *  solver/sweep_x86.c has the same method in AVX-512 lanes (expneg8, its
- *  reduction fused) for the Brookshaw forms' sweep: change both
- *  (test_expneg_within_1e15_of_exp holds both to the same bound). */
+ *  reduction fused, the constants and the polynomial these macros) for
+ *  the Brookshaw forms' sweep (test_expneg_within_1e15_of_exp holds both
+ *  to the same bound). */
 static inline double vsph_kernel_expneg(double x) {
-  const double shift = 6755399441055744.0; /* 1.5 2^52 */
-  const double m = x * 1.4426950408889634074 + shift;
+  const double shift = VSPH_KERNEL_EXPNEG_SHIFT;
+  const double m = x * VSPH_KERNEL_EXPNEG_LOG2E + shift;
   const double n = m - shift; /* round(x / ln 2) */
   const double r =
-      (x - n * 6.93147180369123816490e-01) - n * 1.90821492927058770002e-10;
-  /* e^{-r}, coefficients (-1)^k / k!, by Estrin's scheme: pairs
-   * c_2k + c_2k+1 r, joined by r^2, then r^4, then r^8, so the longest
-   * chain is four multiply-adds deep, not Horner's twelve, and a vector
-   * of pairs does not wait on one long chain (docs/performance.md);
-   * written out (a loop here would have to be unrolled before the loops
-   * around it vectorise); fused multiply-adds where the target has them
-   * (one rounding each), else multiply and add */
+      (x - n * VSPH_KERNEL_EXPNEG_LN2_HI) - n * VSPH_KERNEL_EXPNEG_LN2_LO;
+  /* e^{-r} (VSPH_KERNEL_EXPNEG_TAYLOR; written out, as a loop here would
+   * have to be unrolled before the loops around it vectorise); fused
+   * multiply-adds where the target has them (one rounding each), else
+   * multiply and add */
   const double r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
-  const double a0 = VSPH_KERNEL_MULADD(-1.0, r, 1.0),
-               a1 = VSPH_KERNEL_MULADD(-1.0 / 6.0, r, 1.0 / 2.0),
-               a2 = VSPH_KERNEL_MULADD(-1.0 / 120.0, r, 1.0 / 24.0),
-               a3 = VSPH_KERNEL_MULADD(-1.0 / 5040.0, r, 1.0 / 720.0),
-               a4 = VSPH_KERNEL_MULADD(-1.0 / 362880.0, r, 1.0 / 40320.0),
-               a5 = VSPH_KERNEL_MULADD(-1.0 / 39916800.0, r, 1.0 / 3628800.0);
-  const double b0 = VSPH_KERNEL_MULADD(a1, r2, a0),
-               b1 = VSPH_KERNEL_MULADD(a3, r2, a2),
-               b2 = VSPH_KERNEL_MULADD(a5, r2, a4);
-  const double c0 = VSPH_KERNEL_MULADD(b1, r4, b0),
-               c1 = VSPH_KERNEL_MULADD(1.0 / 479001600.0, r4, b2);
-  const double p = VSPH_KERNEL_MULADD(c1, r8, c0);
+  const double p = VSPH_KERNEL_EXPNEG_TAYLOR(VSPH_KERNEL_MULADD,
+                                             VSPH_KERNEL_DOUBLE, r, r2, r4, r8);
   /* 2^{-n}: the low bits of m hold n, so its exponent is 1023 - n */
   unsigned long long bits;
   memcpy(&bits, &m, sizeof bits);

@@ -79,6 +79,12 @@ static inline __attribute__((always_inline, target("avx2"))) void add_avx2(
 #if VSPH_SWEEP_X86_BROOKSHAW
 #define AVX512 __attribute__((target("avx512f,avx512vl,avx512dq")))
 
+/* The lanes of the last @p left < 8 entries of a run, or all eight */
+static inline __attribute__((always_inline)) AVX512 __mmask8
+lanes_left(size_t left) {
+  return left >= 8 ? (__mmask8)0xff : (__mmask8)((1u << left) - 1u);
+}
+
 /* a[j[l]] in lane l */
 static inline __attribute__((always_inline)) AVX512 __m512d
 lanes_of(const double *a, const size_t *j) {
@@ -88,35 +94,25 @@ lanes_of(const double *a, const size_t *j) {
 
 /* e^{-x} for 0 <= x <= 700, eight lanes: vsph_kernel_expneg's method
  * (n = round(x / ln 2), r = x - n ln 2 in Cody-Waite's two parts, the
- * degree-12 Taylor polynomial of e^{-r} by Estrin's scheme, times 2^{-n}),
- * its reduction by fused multiply-adds (one rounding each) and 2^{-n}
- * applied by scalef (exact), so not its bits: within 1e-15 of libm's
- * (test_expneg8_within_1e15_of_exp, through vsph_sweep_x86_expneg8) */
+ * degree-12 Taylor polynomial of e^{-r}, VSPH_KERNEL_EXPNEG_TAYLOR, times
+ * 2^{-n}), its reduction by fused multiply-adds (one rounding each) and
+ * 2^{-n} applied by scalef (exact), so not its bits: within 1e-15 of
+ * libm's (test_expneg_within_1e15_of_exp, through
+ * vsph_sweep_x86_expneg8) */
 static inline __attribute__((always_inline)) AVX512 __m512d expneg8(__m512d x) {
-  const __m512d shift = _mm512_set1_pd(6755399441055744.0); /* 1.5 2^52 */
+#define K(v) _mm512_set1_pd(v)
+  const __m512d shift = K(VSPH_KERNEL_EXPNEG_SHIFT);
   const __m512d n = _mm512_sub_pd(
-      _mm512_fmadd_pd(x, _mm512_set1_pd(1.4426950408889634074), shift), shift);
-  const __m512d r = _mm512_fnmadd_pd(
-      n, _mm512_set1_pd(1.90821492927058770002e-10),
-      _mm512_fnmadd_pd(n, _mm512_set1_pd(6.93147180369123816490e-01), x));
+      _mm512_fmadd_pd(x, K(VSPH_KERNEL_EXPNEG_LOG2E), shift), shift);
+  const __m512d r =
+      _mm512_fnmadd_pd(n, K(VSPH_KERNEL_EXPNEG_LN2_LO),
+                       _mm512_fnmadd_pd(n, K(VSPH_KERNEL_EXPNEG_LN2_HI), x));
   const __m512d r2 = _mm512_mul_pd(r, r), r4 = _mm512_mul_pd(r2, r2),
                 r8 = _mm512_mul_pd(r4, r4);
-#define C(v) _mm512_set1_pd(v)
-  const __m512d a0 = _mm512_fmadd_pd(C(-1.0), r, C(1.0)),
-                a1 = _mm512_fmadd_pd(C(-1.0 / 6.0), r, C(1.0 / 2.0)),
-                a2 = _mm512_fmadd_pd(C(-1.0 / 120.0), r, C(1.0 / 24.0)),
-                a3 = _mm512_fmadd_pd(C(-1.0 / 5040.0), r, C(1.0 / 720.0)),
-                a4 = _mm512_fmadd_pd(C(-1.0 / 362880.0), r, C(1.0 / 40320.0)),
-                a5 = _mm512_fmadd_pd(C(-1.0 / 39916800.0), r,
-                                     C(1.0 / 3628800.0));
-  const __m512d b0 = _mm512_fmadd_pd(a1, r2, a0),
-                b1 = _mm512_fmadd_pd(a3, r2, a2),
-                b2 = _mm512_fmadd_pd(a5, r2, a4);
-  const __m512d c0 = _mm512_fmadd_pd(b1, r4, b0),
-                c1 = _mm512_fmadd_pd(C(1.0 / 479001600.0), r4, b2);
-#undef C
-  return _mm512_scalef_pd(_mm512_fmadd_pd(c1, r8, c0),
-                          _mm512_sub_pd(_mm512_setzero_pd(), n));
+  const __m512d p =
+      VSPH_KERNEL_EXPNEG_TAYLOR(_mm512_fmadd_pd, K, r, r2, r4, r8);
+#undef K
+  return _mm512_scalef_pd(p, _mm512_sub_pd(_mm512_setzero_pd(), n));
 }
 
 /* The Brookshaw forms' chunk (solver/sweep_x86.h: what
@@ -153,7 +149,7 @@ static inline __attribute__((always_inline)) AVX512 double brookshaw2_chunk(
   __m512d ac = _mm512_setzero_pd(), af0 = ac, af1 = ac;
   for (size_t k = 0; k < m; k += 8) {
     const int full = m - k >= 8;
-    const __mmask8 km = full ? 0xff : (__mmask8)((1u << (m - k)) - 1);
+    const __mmask8 km = lanes_left(m - k);
     /* past the chunk: x = 0 and s2 infinite, so F = 0 and every share 0 */
     const __m512d X0 = _mm512_maskz_loadu_pd(km, x0 + k),
                   X1 = _mm512_maskz_loadu_pd(km, x1 + k),
@@ -188,11 +184,10 @@ static inline __attribute__((always_inline)) AVX512 double brookshaw2_chunk(
     /* j's shares (-V_i f, V_i c), added to their receivers' entries (the
      * receivers of a chunk are distinct, so each entry gets one add a
      * pair, in any order) */
-    const __m512d t0 = _mm512_unpacklo_pd(_mm512_mul_pd(vnVi, f0),
-                                          _mm512_mul_pd(vnVi, f1)),
-                  t1 = _mm512_unpackhi_pd(_mm512_mul_pd(vnVi, f0),
-                                          _mm512_mul_pd(vnVi, f1));
-    __m128d q01[8]; /* pair l's fields 0 and 1 */
+    const __m512d g0 = _mm512_mul_pd(vnVi, f0), g1 = _mm512_mul_pd(vnVi, f1);
+    const __m512d t0 = _mm512_unpacklo_pd(g0, g1), /* pairs 0, 2, 4, 6 */
+        t1 = _mm512_unpackhi_pd(g0, g1);           /* pairs 1, 3, 5, 7 */
+    __m128d q01[8];                                /* pair l's fields 0 and 1 */
     q01[0] = _mm512_castpd512_pd128(t0);
     q01[1] = _mm512_castpd512_pd128(t1);
     q01[2] = _mm512_extractf64x2_pd(t0, 1);
@@ -226,7 +221,7 @@ static inline __attribute__((always_inline)) AVX512 double brookshaw2_chunk(
 
 AVX512 void vsph_sweep_x86_expneg8(const double *x, double *y, size_t n) {
   for (size_t k = 0; k < n; k += 8) {
-    const __mmask8 km = n - k >= 8 ? 0xff : (__mmask8)((1u << (n - k)) - 1);
+    const __mmask8 km = lanes_left(n - k);
     _mm512_mask_storeu_pd(y + k, km, expneg8(_mm512_maskz_loadu_pd(km, x + k)));
   }
 }

@@ -118,13 +118,15 @@ START_TEST(test_dfq_id) {
 }
 END_TEST
 
+/* vsph_kernel_expneg over an array, as expneg_worst takes it */
+static void expneg_scalar(const double *x, double *y, size_t n) {
+  for (size_t k = 0; k < n; k++) y[k] = vsph_kernel_expneg(x[k]);
+}
+
 /* The worst relative error against libm's exp of @p f (y[k] = e^{-x[k]}
  * for k < n) over the whole range [0, 700]: dense near 0..9 (the
  * Gaussian's support in q^2), sparser beyond, and the reduction's
  * breakpoints (x near n ln 2 / 2, r = +-ln2/2). */
-static void expneg_scalar(const double *x, double *y, size_t n) {
-  for (size_t k = 0; k < n; k++) y[k] = vsph_kernel_expneg(x[k]);
-}
 static double expneg_worst(void (*f)(const double *, double *, size_t)) {
   enum { NX = 900001 + 3 * 1000 };
   double *x = malloc(2 * NX * sizeof *x), *y = x + NX;
