@@ -271,7 +271,6 @@ size_t vsph_integrate_wall_count(const struct vsph_integrate *s) {
   return s ? n_wall(s) : 0;
 }
 
-/* Ghosts (walls only), the cell list with a skin, and the id -> index map. */
 /* The map from each particle's id to its slot (s->where), the set's ids
  * being distinct: a scatter, in parallel for a large set. */
 static void map_ids(struct vsph_integrate *s) {
@@ -281,6 +280,7 @@ static void map_ids(struct vsph_integrate *s) {
   for (size_t i = 0; i < n; i++) where[id[i]] = i;
 }
 
+/* Ghosts (walls only), the cell list with a skin, and the id -> index map. */
 static int prepare(struct vsph_integrate *s, double skin) {
   const struct vsph_viscous_props *vp = &s->props.eq.visc;
   const double H = vp->kernel->kappa * vp->h;
@@ -1136,7 +1136,7 @@ static void put_back(struct vsph_integrate *s, size_t n) {
    * abandoned step's rates: cap doubles); an id the preparation dropped
    * (a ghost) keeps whatever its place holds */
   for (size_t i = 0; i < s->n0; i++) s->where[s->order0[i]] = SIZE_MAX;
-  for (size_t i = 0; i < n; i++) s->where[p->id[i]] = i;
+  map_ids(s); /* n is p->n */
   void **a[32];
   size_t sz[32];
   uint64_t derived, volp;
