@@ -519,21 +519,20 @@ static void ghost_runs(const struct vsph_walls *w, struct vsph_particles *p,
 
 /* The slots of the set's first @p n whose id is below @p base, in order,
  * into @p perm; returns how many. From VSPH_PARTICLES_MOVE_PARALLEL slots
- * the threads take even shares: each counts its own, then writes them
- * from the sum of the counts before it (the same list as one thread's). */
+ * the threads (at most VSPH_SHARE_MAX) take even shares: each counts its
+ * own, then writes them from the sum of the counts before it (the same
+ * list as one thread's). */
 static size_t kept_in_order(const size_t *id, size_t n, size_t base,
                             size_t *perm) {
-  size_t *const cnt = n >= VSPH_PARTICLES_MOVE_PARALLEL
-                          ? malloc((size_t)omp_get_max_threads() * sizeof *cnt)
-                          : NULL;
-  if (!cnt) { /* small, or no room for the counts: one thread */
+  if (n < VSPH_PARTICLES_MOVE_PARALLEL) { /* small: one thread */
     size_t m = 0;
     for (size_t i = 0; i < n; i++)
       if (id[i] < base) perm[m++] = i;
     return m;
   }
-  size_t kept = 0;
-#pragma omp parallel
+  size_t cnt[VSPH_SHARE_MAX], kept = 0;
+  const int most = omp_get_max_threads();
+#pragma omp parallel num_threads(most < VSPH_SHARE_MAX ? most : VSPH_SHARE_MAX)
   {
     const int t = omp_get_thread_num();
     size_t i0, i1;
@@ -548,7 +547,6 @@ static size_t kept_in_order(const size_t *id, size_t n, size_t base,
       if (id[i] < base) perm[at++] = i;
     if (t == omp_get_num_threads() - 1) kept = at;
   }
-  free(cnt);
   return kept;
 }
 
