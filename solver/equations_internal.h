@@ -10,9 +10,9 @@
  * instantiates the general loop, each family of formulations with loops of
  * its own its specialised ones (solver/forms/, through
  * solver/viscous_internal.h's VSPH_VISCOUS_LOOPS), where a constant pair
- * function inlines and the component loops unroll; solver/sweep_x86.c the
- * Brookshaw forms' 2-D sweep for AVX-512 (@p brook 2 of
- * sweep_block_parts). Within solver/ only. */
+ * function inlines and the component loops unroll; solver/sweep_x86.c reads its
+ * structs for the Brookshaw forms' 2-D sweep in AVX-512 lanes, which
+ * sweep_block hands their blocks to. Within solver/ only. */
 
 #include <math.h>
 #include <stddef.h>
@@ -452,19 +452,15 @@ VSPH_CONSTS_SPECIALISE size_t sweep_count(const struct vsph_pair_chunk *b,
  * (lane by lane, as the gather does), j's then added to the block's
  * buffer in pair order; i's sums go to the buffer after its row, so every
  * particle's entry in a block depends on the block's pairs and their
- * order alone. Pairs of two ghosts are skipped. Returns the interactions
- * (each fluid receiver of a pair counts once) and the closest pair.
- * @p brook 2 (solver/sweep_x86.c's instance, built for AVX-512, of a
- * Brookshaw form in 2-D with the Gaussian, without delta-SPH or the
- * parts): each chunk's work in AVX-512 lanes (brookshaw2_chunk), within
- * rounding of the loops above (products and sums fused, i's sums in eight
- * lanes); any other @p brook: the loops above. */
+ * order alone. A pair of two ghosts is computed as any other (its shares
+ * go to entries nobody reads). Returns the interactions (each fluid
+ * receiver of a pair counts once) and the closest pair. */
 VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
     const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
     const struct vsph_cells *cells, size_t n_fluid,
     const struct vsph_equations_sweep *sw, size_t blk, double *min_s2,
     const int dim, vsph_viscous_pair_fn *const pair, const int delta,
-    const int kid, const int parts, const int brook) {
+    const int kid, const int parts) {
   /* the buffer's fields (solver/equations.c sets them so), a constant
    * here, as are the fields j's shares fill: the viscous part's with the
    * parts, the delta-SPH sum with delta-SPH or the parts */
@@ -480,16 +476,6 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
   size_t total = 0;
   double ms2 = INFINITY;
   const int fluid_only = p->n == n_fluid; /* no ghosts nor wall particles */
-#ifdef VSPH_SWEEP_BROOKSHAW2_CHUNK
-  /* @p brook 2: the instance of a Brookshaw form in 2-D with the Gaussian
-   * that solver/sweep_x86.c builds for AVX-512 (vsph_sweep_x86_brookshaw2):
-   * each chunk's kernel, map, i's sums and j's adds in its lanes, within
-   * rounding of the loops below */
-  const int fused = brook == 2;
-#else
-  const int fused = 0;
-  (void)brook;
-#endif
   /* a cell's receivers walk their rows together where the CPU allows:
    * each gets the chunks its own walk would give, to the bit */
   struct vsph_pair_cell pc;
@@ -512,25 +498,12 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
       struct vsph_pair_chunk own;
       const struct vsph_pair_chunk *bq;
       vsph_pair_begin_upper_in(&it, &rc->pk, p, &rg, &pc, i);
-      while (fused ? vsph_pair_next_chunk(&it, dim, -1, 1, &own, &bq)
-                   : vsph_pair_next_chunk(&it, dim, kid, 1, &own, &bq)) {
+      while (vsph_pair_next_chunk(&it, dim, kid, 1, &own, &bq)) {
         const size_t m = bq->m;
         /* i's unit shares; j's shares (V_i applied, signed for j) */
         double sf[3][VSPH_PAIR_CHUNK_MAX], sv[3][VSPH_PAIR_CHUNK_MAX],
             sc[VSPH_PAIR_CHUNK_MAX], sd[VSPH_PAIR_CHUNK_MAX],
             vj[VSPH_PAIR_CHUNK_MAX], js[8][VSPH_PAIR_CHUNK_MAX];
-#ifdef VSPH_SWEEP_BROOKSHAW2_CHUNK
-        if (fused) { /* the map, i's sums and the closest pair at once */
-          double sums[3] = {cont, f0, f1};
-          rs2 = VSPH_SWEEP_BROOKSHAW2_CHUNK(
-              bq->j, bq->x[0], bq->x[1], bq->s2, m, vel[0], vel[1], pp, vol,
-              ui[0], ui[1], pi, Vi, rc->pk.h_inv2, rc->pk.dwq, rc->vl.Kmu,
-              rc->vl.eta2, sums, buf, lo, rs2);
-          cont = sums[0], f0 = sums[1], f1 = sums[2];
-          total += sweep_count(bq, id, n_fluid, clean, fi, &rs2, &ms2, 0);
-          continue;
-        }
-#endif
         /* the pairs' unit shares: a map, no sums, so that it vectorises */
 #pragma omp simd
         for (size_t k = 0; k < m; k++) {
@@ -610,16 +583,16 @@ sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
             const int delta, const int kid, const int brook) {
   (void)nf; /* = SW_FIELDS(dim, delta, rc->parts): run_sweep's plan */
 #if VSPH_SWEEP_X86_BROOKSHAW
-  /* a Brookshaw form in 2-D with the Gaussian: its instance for AVX-512
-   * where the CPU has it (solver/sweep_x86.c), within rounding */
+  /* a Brookshaw form in 2-D with the Gaussian: its sweep in AVX-512
+   * lanes where the CPU has them (solver/sweep_x86.c), within rounding */
   if (brook == 1 && dim == 2 && !delta && kid == VSPH_KERNEL_DFQ_GAUSSIAN &&
       !rc->parts && rc->pk.simd == 2)
     return vsph_sweep_x86_brookshaw2(rc, p, cells, n_fluid, sw, blk, min_s2);
 #endif
   return rc->parts ? sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
-                                       dim, pair, delta, kid, 1, brook)
+                                       dim, pair, delta, kid, 1)
                    : sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
-                                       dim, pair, delta, kid, 0, brook);
+                                       dim, pair, delta, kid, 0);
 }
 
 #endif /* VSPH_SOLVER_EQUATIONS_INTERNAL_H */

@@ -7,15 +7,18 @@
  * and store per field. Whole loads and stores, no masks: a masked store is
  * not forwarded to the next particle's load of the same entry. Built for
  * its instructions alone (target attribute), as solver/pair_x86.c. And the
- * Brookshaw forms' 2-D sweep for AVX-512: the chunk's kernel, terms, sums
- * and adds in its lanes (brookshaw2_chunk), inlined into the sweep's
- * block loops (sweep_block_parts of solver/equations_internal.h, included
- * at the end of this file in a region built for AVX-512). */
+ * Brookshaw forms' 2-D sweep for AVX-512 (vsph_sweep_x86_brookshaw2): a
+ * cell's receivers, eight at a time, against whole vectors of eight
+ * consecutive candidates, every pair's work in the lanes whether the pair
+ * lies within the support or not (masked), as GROMACS's cluster-pair
+ * kernels do: no candidate list, gather or scatter. */
 #include "sweep_x86.h"
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
+#include "equations_internal.h"
 #include "pair.h"
 
 #if VSPH_PAIR_X86 && defined(__AVX2__)
@@ -85,13 +88,6 @@ lanes_left(size_t left) {
   return left >= 8 ? (__mmask8)0xff : (__mmask8)((1u << left) - 1u);
 }
 
-/* a[j[l]] in lane l */
-static inline __attribute__((always_inline)) AVX512 __m512d
-lanes_of(const double *a, const size_t *j) {
-  return _mm512_set_pd(a[j[7]], a[j[6]], a[j[5]], a[j[4]], a[j[3]], a[j[2]],
-                       a[j[1]], a[j[0]]);
-}
-
 /* e^{-x} for 0 <= x <= 700, eight lanes: vsph_kernel_expneg's method
  * (n = round(x / ln 2), r = x - n ln 2 in Cody-Waite's two parts, the
  * degree-12 Taylor polynomial of e^{-r}, VSPH_KERNEL_EXPNEG_TAYLOR, times
@@ -115,110 +111,6 @@ static inline __attribute__((always_inline)) AVX512 __m512d expneg8(__m512d x) {
   return _mm512_scalef_pd(p, _mm512_sub_pd(_mm512_setzero_pd(), n));
 }
 
-/* The Brookshaw forms' chunk (solver/sweep_x86.h: what
- * vsph_sweep_x86_brookshaw2 does with each chunk): for the @p m
- * neighbours jj[k] of receiver i (their x0, x1 = r_j - r_i and s2; F not
- * set), the kernel factor (@p dwq, @p h_inv2), the continuity, pressure
- * and viscous (Kmu, eta2: vsph_pair_mgf) shares, eight pairs at a time,
- * the last ones masked; i's sums added to sums[0] (continuity),
- * sums[1..2] (force), each in eight lanes, then the lanes in
- * _mm512_reduce_add_pd's order; j's shares (-V_i f, V_i c) added to
- * entries buf + (jj[k] - lo) * 3, fields 0 and 1 as a pair of lanes and
- * field 2 alone. The same terms as the scalar loops, not their bits:
- * products and sums fused where they meet (d u . x, F (p_i + p_j + the
- * viscous factor) rather than the pressure and viscous shares apart, i's
- * sums), another exponential (expneg8) and another order of i's sums:
- * within rounding of the four-lane loops (test_sweep_scatter_simd).
- * Receiver i's velocity @p ui0, @p ui1, pressure @p pi and volume @p Vi;
- * the set's velocities @p vx, @p vy, pressures @p pp and volumes @p vol.
- * Returns the least of @p rs2 and the chunk's s2 (exact in any order). */
-static inline __attribute__((always_inline)) AVX512 double brookshaw2_chunk(
-    const size_t *jj, const double *x0, const double *x1, const double *s2,
-    size_t m, const double *vx, const double *vy, const double *pp,
-    const double *vol, double ui0, double ui1, double pi, double Vi,
-    double h_inv2, double dwq, double Kmu, double eta2, double sums[3],
-    double *buf, size_t lo, double rs2) {
-  const __m512d vui0 = _mm512_set1_pd(ui0), vui1 = _mm512_set1_pd(ui1),
-                vpi = _mm512_set1_pd(pi), vVi = _mm512_set1_pd(Vi),
-                vnVi = _mm512_set1_pd(-Vi), vhi2 = _mm512_set1_pd(h_inv2),
-                vdwq = _mm512_set1_pd(-2.0 * dwq), /* -2 exact: F's factor */
-      vnKmu = _mm512_set1_pd(-Kmu), veta2 = _mm512_set1_pd(eta2),
-                nine = _mm512_set1_pd(9.0);
-  __m512d vmin = _mm512_set1_pd(rs2);
-  /* i's sums, lane by lane: the masked lanes add 0 */
-  __m512d ac = _mm512_setzero_pd(), af0 = ac, af1 = ac;
-  for (size_t k = 0; k < m; k += 8) {
-    const int full = m - k >= 8;
-    const __mmask8 km = lanes_left(m - k);
-    /* past the chunk: x = 0 and s2 infinite, so F = 0 and every share 0 */
-    const __m512d X0 = _mm512_maskz_loadu_pd(km, x0 + k),
-                  X1 = _mm512_maskz_loadu_pd(km, x1 + k),
-                  S2 = _mm512_mask_loadu_pd(_mm512_set1_pd(HUGE_VAL), km,
-                                            s2 + k);
-    vmin = _mm512_min_pd(vmin, S2);
-    /* F = dwq (-2 e^{-q^2}), 0 from q^2 = 9 */
-    const __m512d q2 = _mm512_mul_pd(S2, vhi2);
-    const __mmask8 in = _mm512_cmp_pd_mask(q2, nine, _CMP_LT_OQ);
-    const __m512d F = _mm512_maskz_mul_pd(in, vdwq, expneg8(q2));
-    /* the lanes past the chunk read pair k's neighbour again */
-    size_t jt[8];
-    const size_t *j = jj + k;
-    if (!full) {
-      for (size_t l = 0; l < 8; l++) jt[l] = j[l < m - k ? l : 0];
-      j = jt;
-    }
-    const __m512d U0 = lanes_of(vx, j), U1 = lanes_of(vy, j),
-                  P = lanes_of(pp, j), V = lanes_of(vol, j);
-    /* d u . x; c = F d u . x (continuity); F (p_i + p_j - Kmu d u . x /
-     * (s2 + eta2)) x (pressure and viscous force, vsph_pair_mgf's and
-     * vsph_pair_pressure's terms) */
-    const __m512d dux =
-        _mm512_fmadd_pd(_mm512_sub_pd(U1, vui1), X1,
-                        _mm512_mul_pd(_mm512_sub_pd(U0, vui0), X0));
-    const __m512d c = _mm512_mul_pd(F, dux);
-    const __m512d fx = _mm512_mul_pd(
-        F, _mm512_add_pd(_mm512_add_pd(vpi, P),
-                         _mm512_div_pd(_mm512_mul_pd(vnKmu, dux),
-                                       _mm512_add_pd(S2, veta2))));
-    const __m512d f0 = _mm512_mul_pd(fx, X0), f1 = _mm512_mul_pd(fx, X1);
-    /* j's shares (-V_i f, V_i c), added to their receivers' entries (the
-     * receivers of a chunk are distinct, so each entry gets one add a
-     * pair, in any order) */
-    const __m512d g0 = _mm512_mul_pd(vnVi, f0), g1 = _mm512_mul_pd(vnVi, f1);
-    const __m512d t0 = _mm512_unpacklo_pd(g0, g1), /* pairs 0, 2, 4, 6 */
-        t1 = _mm512_unpackhi_pd(g0, g1);           /* pairs 1, 3, 5, 7 */
-    __m128d q01[8];                                /* pair l's fields 0 and 1 */
-    q01[0] = _mm512_castpd512_pd128(t0);
-    q01[1] = _mm512_castpd512_pd128(t1);
-    q01[2] = _mm512_extractf64x2_pd(t0, 1);
-    q01[3] = _mm512_extractf64x2_pd(t1, 1);
-    q01[4] = _mm512_extractf64x2_pd(t0, 2);
-    q01[5] = _mm512_extractf64x2_pd(t1, 2);
-    q01[6] = _mm512_extractf64x2_pd(t0, 3);
-    q01[7] = _mm512_extractf64x2_pd(t1, 3);
-    double c2[8];
-    _mm512_storeu_pd(c2, _mm512_mul_pd(vVi, c));
-#define ADD_J(l)                                             \
-  do {                                                       \
-    double *const q = buf + (jj[k + (l)] - lo) * 3;          \
-    _mm_storeu_pd(q, _mm_add_pd(_mm_loadu_pd(q), q01[(l)])); \
-    q[2] += c2[(l)];                                         \
-  } while (0)
-    if (full) /* eight, without a test each */
-      for (size_t l = 0; l < 8; l++) ADD_J(l);
-    else
-      for (size_t l = 0; l < m - k; l++) ADD_J(l);
-#undef ADD_J
-    ac = _mm512_fmadd_pd(V, c, ac);
-    af0 = _mm512_fmadd_pd(V, f0, af0);
-    af1 = _mm512_fmadd_pd(V, f1, af1);
-  }
-  sums[0] += _mm512_reduce_add_pd(ac);
-  sums[1] += _mm512_reduce_add_pd(af0);
-  sums[2] += _mm512_reduce_add_pd(af1);
-  return _mm512_reduce_min_pd(vmin);
-}
-
 AVX512 void vsph_sweep_x86_expneg8(const double *x, double *y, size_t n) {
   for (size_t k = 0; k < n; k += 8) {
     const __mmask8 km = lanes_left(n - k);
@@ -226,7 +118,176 @@ AVX512 void vsph_sweep_x86_expneg8(const double *x, double *y, size_t n) {
   }
 }
 
-#endif /* VSPH_SWEEP_X86_BROOKSHAW: the chunk */
+/* Add fields A, B, C (0, 1, 2) of @p nl <= 8 consecutive particles' j
+ * shares to their entries q[0 .. 3 nl - 1] (three fields a particle): the
+ * lanes interleaved by two-source permutes, then whole vectors loaded,
+ * added and stored, or masked ones for a range's last particles (which
+ * must not touch the next entries: another block's, or another thread's) */
+static inline __attribute__((always_inline)) AVX512 void add3(
+    double *q, __m512d A, __m512d B, __m512d C, size_t nl) {
+  /* lane l of T = A, B interleaved; of the output, T or C (index 8 on) */
+  const __m512i a0 = _mm512_setr_epi64(0, 8, 0, 1, 9, 0, 2, 10),
+                b0 = _mm512_setr_epi64(0, 1, 8, 3, 4, 9, 6, 7),
+                a1 = _mm512_setr_epi64(0, 3, 11, 0, 4, 12, 0, 5),
+                b1 = _mm512_setr_epi64(10, 1, 2, 11, 4, 5, 12, 7),
+                a2 = _mm512_setr_epi64(13, 0, 6, 14, 0, 7, 15, 0),
+                b2 = _mm512_setr_epi64(0, 13, 2, 3, 14, 5, 6, 15);
+  const __m512d o0 =
+      _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, a0, B), b0, C);
+  const __m512d o1 =
+      _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, a1, B), b1, C);
+  const __m512d o2 =
+      _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, a2, B), b2, C);
+  if (nl == 8) {
+    _mm512_storeu_pd(q, _mm512_add_pd(_mm512_loadu_pd(q), o0));
+    _mm512_storeu_pd(q + 8, _mm512_add_pd(_mm512_loadu_pd(q + 8), o1));
+    _mm512_storeu_pd(q + 16, _mm512_add_pd(_mm512_loadu_pd(q + 16), o2));
+    return;
+  }
+  const size_t n = 3 * nl;
+  const __mmask8 k0 = lanes_left(n), k1 = n > 8 ? lanes_left(n - 8) : 0,
+                 k2 = n > 16 ? lanes_left(n - 16) : 0;
+  _mm512_mask_storeu_pd(q, k0, _mm512_add_pd(_mm512_maskz_loadu_pd(k0, q), o0));
+  _mm512_mask_storeu_pd(q + 8, k1,
+                        _mm512_add_pd(_mm512_maskz_loadu_pd(k1, q + 8), o1));
+  _mm512_mask_storeu_pd(q + 16, k2,
+                        _mm512_add_pd(_mm512_maskz_loadu_pd(k2, q + 16), o2));
+}
+
+/* One block of the sweep (solver/sweep_x86.h). For each cell of the block,
+ * its receivers i in groups of at most eight (i0 on), and for each of the
+ * cell's ranges from i0 + 1, each vector of eight consecutive candidates
+ * j, loaded once for the group: each receiver's pairs j > i within the
+ * support are its lanes (the candidate test's x = r_j - r_i and s^2,
+ * unfused, so that a pair on the support's edge is classified as in every
+ * loop); the kernel factor F = dwq (-2 e^{-q^2}) and the terms of
+ * vsph_pair_mgf and vsph_pair_continuity are computed in all eight lanes
+ * and kept in those (c = F du.x, f = F (p_i + p_j - Kmu du.x / (s^2 +
+ * eta^2)) x); i's sums (V_j c, V_j f) go on in eight lanes over its
+ * vectors, summed once at its end into its entry, where i is fluid; j's
+ * shares (V_i c, -V_i f) are summed over the group's receivers, in their
+ * order, then added to the candidates' entries, a vector of three fields
+ * at a time (add3). The same terms as the scalar loops, fused where they
+ * meet and summed in another order: within rounding of them. The
+ * interactions (each fluid receiver of a pair once: j's fluid by its id
+ * unless the cell is clean) and the least s^2 of a pair with a fluid
+ * receiver come from the same masks, so exactly as the loops give them. */
+AVX512 size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
+                                        const struct vsph_particles *p,
+                                        const struct vsph_cells *cells,
+                                        size_t n_fluid,
+                                        const struct vsph_equations_sweep *sw,
+                                        size_t blk, double *min_s2) {
+  const size_t lo = sw->lo[blk];
+  double *const buf = sw->buf + sw->off[blk];
+  memset(buf, 0, (sw->hi[blk] - lo) * 3 * sizeof *buf);
+  const double *const px = p->pos[0], *const py = p->pos[1],
+                      *const vx = p->vel[0], *const vy = p->vel[1],
+                      *const pp = p->p, *const vol = p->vol;
+  const size_t *const id = p->id;
+  const int fluid_only = p->n == n_fluid; /* no ghosts nor wall particles */
+  const __m512d H2 = _mm512_set1_pd(rc->pk.H2),
+                vhi2 = _mm512_set1_pd(rc->pk.h_inv2),
+                vdwq = _mm512_set1_pd(-2.0 * rc->pk.dwq), /* -2 exact */
+      vnKmu = _mm512_set1_pd(-rc->vl.Kmu), veta2 = _mm512_set1_pd(rc->vl.eta2),
+                nine = _mm512_set1_pd(9.0);
+  const __m512i lane = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0),
+                vnfl = _mm512_set1_epi64((long long)n_fluid);
+  __m512d vmin = _mm512_set1_pd(HUGE_VAL);
+  size_t total = 0;
+  for (size_t c = sw->c0[blk]; c < sw->c0[blk + 1]; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    const size_t s0 = cells->start[c], end = s0 + cells->count[c];
+    /* its ranges hold no ghost or wall particle: every j fluid */
+    const int clean = fluid_only || (sw->clean && sw->clean[c]);
+    for (size_t i0 = s0; i0 < end; i0 += 8) {
+      const size_t g = end - i0 < 8 ? end - i0 : 8; /* receivers i0 + q */
+      __m512d ac[8], af0[8], af1[8];                /* i's sums, lane by lane */
+      int fi[8];
+      for (size_t q = 0; q < g; q++) {
+        ac[q] = af0[q] = af1[q] = _mm512_setzero_pd();
+        fi[q] = id[i0 + q] < n_fluid;
+      }
+      for (size_t r = 0; r < rg.n; r++) {
+        const size_t hi = rg.hi[r];
+        /* no receiver of the group has a pair below i0 + 1 */
+        for (size_t j = rg.lo[r] > i0 ? rg.lo[r] : i0 + 1; j < hi; j += 8) {
+          const __mmask8 live = lanes_left(hi - j);
+          const __m512d X = _mm512_maskz_loadu_pd(live, px + j),
+                        Y = _mm512_maskz_loadu_pd(live, py + j),
+                        U0 = _mm512_maskz_loadu_pd(live, vx + j),
+                        U1 = _mm512_maskz_loadu_pd(live, vy + j),
+                        P = _mm512_maskz_loadu_pd(live, pp + j),
+                        V = _mm512_maskz_loadu_pd(live, vol + j);
+          const __m512i J =
+              _mm512_add_epi64(_mm512_set1_epi64((long long)j), lane);
+          const __mmask8 fj = /* the fluid candidates */
+              clean ? live
+                    : _mm512_mask_cmplt_epu64_mask(
+                          live, _mm512_maskz_loadu_epi64(live, id + j), vnfl);
+          __m512d JA = _mm512_setzero_pd(), JB = JA, JC = JA; /* j's */
+          __mmask8 any = 0;
+          for (size_t q = 0; q < g; q++) {
+            const size_t i = i0 + q;
+            const __m512d dx = _mm512_sub_pd(X, _mm512_set1_pd(px[i])),
+                          dy = _mm512_sub_pd(Y, _mm512_set1_pd(py[i]));
+            const __m512d s2 =
+                _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+            /* the pairs: j > i, within the support */
+            const __mmask8 k = _mm512_mask_cmp_pd_mask(
+                _mm512_mask_cmpgt_epu64_mask(live, J,
+                                             _mm512_set1_epi64((long long)i)),
+                s2, H2, _CMP_LT_OQ);
+            if (!k) continue;
+            any |= k;
+            const __mmask8 kf = fi[q] ? k : k & fj; /* a fluid receiver */
+            vmin = _mm512_mask_min_pd(vmin, kf, vmin, s2);
+            total += (size_t)__builtin_popcount((unsigned)(k & fj)) +
+                     (fi[q] ? (size_t)__builtin_popcount((unsigned)k) : 0);
+            /* F, 0 from q^2 = 9 and in every other lane */
+            const __m512d q2 = _mm512_mul_pd(s2, vhi2);
+            const __mmask8 in =
+                _mm512_mask_cmp_pd_mask(k, q2, nine, _CMP_LT_OQ);
+            const __m512d F = _mm512_maskz_mul_pd(in, vdwq, expneg8(q2));
+            const __m512d dux = _mm512_fmadd_pd(
+                _mm512_sub_pd(U1, _mm512_set1_pd(vy[i])), dy,
+                _mm512_mul_pd(_mm512_sub_pd(U0, _mm512_set1_pd(vx[i])), dx));
+            const __m512d cc = _mm512_mul_pd(F, dux);
+            /* masked: i's own lane (s^2 = 0) divides 0 by 0 */
+            const __m512d fx = _mm512_maskz_mul_pd(
+                in, F,
+                _mm512_add_pd(_mm512_add_pd(_mm512_set1_pd(pp[i]), P),
+                              _mm512_div_pd(_mm512_mul_pd(vnKmu, dux),
+                                            _mm512_add_pd(s2, veta2))));
+            const __m512d f0 = _mm512_mul_pd(fx, dx),
+                          f1 = _mm512_mul_pd(fx, dy);
+            const __m512d Vi = _mm512_set1_pd(vol[i]);
+            JA = _mm512_fnmadd_pd(Vi, f0, JA);
+            JB = _mm512_fnmadd_pd(Vi, f1, JB);
+            JC = _mm512_fmadd_pd(Vi, cc, JC);
+            ac[q] = _mm512_fmadd_pd(V, cc, ac[q]);
+            af0[q] = _mm512_fmadd_pd(V, f0, af0[q]);
+            af1[q] = _mm512_fmadd_pd(V, f1, af1[q]);
+          }
+          if (any)
+            add3(buf + (j - lo) * 3, JA, JB, JC, hi - j < 8 ? hi - j : 8);
+        }
+      }
+      for (size_t q = 0; q < g; q++) { /* a ghost's sums are never read */
+        if (!fi[q]) continue;
+        double *const e = buf + (i0 + q - lo) * 3;
+        e[0] += _mm512_reduce_add_pd(af0[q]);
+        e[1] += _mm512_reduce_add_pd(af1[q]);
+        e[2] += _mm512_reduce_add_pd(ac[q]);
+      }
+    }
+  }
+  *min_s2 = _mm512_reduce_min_pd(vmin);
+  return total;
+}
+
+#endif /* VSPH_SWEEP_X86_BROOKSHAW */
 
 __attribute__((target("avx2"))) void vsph_sweep_x86_add_avx2(
     double *buf, size_t lo, int nf, const size_t *jj, size_t m,
@@ -262,32 +323,6 @@ __attribute__((target("avx2"))) void vsph_sweep_x86_add8_avx2(
     for (int a = 0; a < 8; a++) q[a] += v * u[(size_t)a * stride + k];
   }
 }
-
-/* The sweep's block loops (solver/equations_internal.h) built here for
- * AVX-512 too, so that the chunk above inlines into them: their other
- * work has no sum in floating point (the chunk's are its own), so it is
- * the generic instance's to the bit. The header's inline
- * functions keep the AVX-512 target in the rest of this file: this
- * region stays at its end, and nothing below it calls them. */
-#if VSPH_SWEEP_X86_BROOKSHAW
-#ifdef VSPH_SOLVER_EQUATIONS_INTERNAL_H
-#error "solver/equations_internal.h must first be included here"
-#endif
-#pragma GCC push_options
-#pragma GCC target("avx512f,avx512vl,avx512dq")
-#define VSPH_SWEEP_BROOKSHAW2_CHUNK brookshaw2_chunk
-#include "equations_internal.h"
-
-size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
-                                 const struct vsph_particles *p,
-                                 const struct vsph_cells *cells, size_t n_fluid,
-                                 const struct vsph_equations_sweep *sw,
-                                 size_t blk, double *min_s2) {
-  return sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2, 2, NULL, 0,
-                           VSPH_KERNEL_DFQ_GAUSSIAN, 0, 2);
-}
-#pragma GCC pop_options
-#endif
 
 #else
 

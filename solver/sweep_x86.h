@@ -33,21 +33,23 @@ struct vsph_equations_sweep;
 
 /* sweep_block for a Brookshaw form (MGF, VI, Cleary) in 2-D with the 3h
  * Gaussian, without delta-SPH or the parts (solver/equations_internal.h),
- * built for AVX-512: each chunk's work in its lanes, eight pairs at a
- * time, the last ones masked (brookshaw2_chunk in solver/sweep_x86.c,
- * inlined; the block's loops around it are sweep_block_parts'). Its
- * results are within rounding of the four-lane loops', not their bits
- * (fused multiply-adds, eight-lane sums; the same bits on 1 and 2
- * threads, as every loop of the sweep). Defined only where
- * VSPH_SWEEP_X86_BROOKSHAW is 1; call it only there, and where
- * vsph_pair_x86_simd() returns 2 (sweep_block does). */
+ * built for AVX-512: a cell's receivers, eight at a time, against whole
+ * vectors of eight consecutive candidates of its ranges, each pair's
+ * kernel and terms in the lanes, the lanes outside the support masked
+ * (solver/sweep_x86.c says how). Its results are within rounding of the
+ * four-lane loops', not their bits (fused multiply-adds, eight-lane sums,
+ * j's shares summed over a group first; the same bits on 1 and 2
+ * threads, as every loop of the sweep); the interactions and the closest
+ * pair are the same. Defined only where VSPH_SWEEP_X86_BROOKSHAW is 1;
+ * call it only there, and where vsph_pair_x86_simd() returns 2
+ * (sweep_block does). */
 size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
                                  const struct vsph_particles *p,
                                  const struct vsph_cells *cells, size_t n_fluid,
                                  const struct vsph_equations_sweep *sw,
                                  size_t blk, double *min_s2);
 
-/* The chunk's exponential: y[k] = e^{-x[k]}, 0 <= x[k] <= 700, for
+/* The sweep's exponential: y[k] = e^{-x[k]}, 0 <= x[k] <= 700, for
  * k < n, eight at a time (for its test). The same conditions as
  * vsph_sweep_x86_brookshaw2. */
 void vsph_sweep_x86_expneg8(const double *x, double *y, size_t n);
@@ -55,9 +57,9 @@ void vsph_sweep_x86_expneg8(const double *x, double *y, size_t n);
 #if defined(__x86_64__) && defined(__LP64__) && defined(__GNUC__) && \
     !defined(__clang__) && defined(__AVX2__)
 /* 1 where solver/sweep_x86.c builds the Brookshaw forms' AVX-512 sweep:
- * GCC (its region is made by #pragma GCC target, which clang does not
- * take) in a build for AVX2 (the program's and the installed x86-64-v3
- * copy's), LP64 as VSPH_PAIR_X86 needs. */
+ * GCC (the compiler the project builds and tests with; clang builds
+ * only the fuzzers here, without it) in a build for AVX2 (the program's
+ * and the installed x86-64-v3 copy's), LP64 as VSPH_PAIR_X86 needs. */
 #define VSPH_SWEEP_X86_BROOKSHAW 1
 #else
 #define VSPH_SWEEP_X86_BROOKSHAW 0

@@ -1182,6 +1182,90 @@ START_TEST(test_sweep_scatter_simd) {
 }
 END_TEST
 
+/* Crowded cells through the Brookshaw forms' AVX-512 sweep (form _i: MGF,
+ * Violeau and Issa's, Cleary's), which takes a cell's receivers eight at a
+ * time: a 2-D set (the ids shuffled, half of them fluid) with 42 of its
+ * particles moved onto a grid of spacing DX/10 inside one cell (a cell's
+ * edge is 3h/2 = 2 DX), so that a cell holds four groups of receivers or more
+ * and its ranges hundreds of candidates. Every rate of every fluid particle
+ * within rounding of the portable loops' (SIMD_ROUNDING of the rate's
+ * largest), the closest pair and the count exact, and the count that of a
+ * count pair by pair. Where the CPU or build lacks the AVX-512 sweep,
+ * said and left out. */
+START_TEST(test_brookshaw_crowded) {
+  static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_VI,
+                              VSPH_VISCOUS_CLEARY};
+  if (!brookshaw_chunk(forms[_i], 2, 0, 0, 1)) {
+    fprintf(stderr, "test_brookshaw_crowded: no AVX-512 sweep here\n");
+    return;
+  }
+  struct vsph_particles *p = mixed_set(2, 4242 + (unsigned long)_i, 0.5, 0.11);
+  const size_t n = p->n, nfl = n / 2;
+  ck_assert_uint_gt(n, 4 * 42);
+  for (size_t k = 0; k < 42; k++) { /* every 4th particle, into the crowd */
+    p->pos[0][4 * k] = 0.013 + 0.1 * DX * (double)(k % 7);
+    p->pos[1][4 * k] = -0.061 + 0.1 * DX * (double)(k / 7);
+  }
+  struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0};
+  ck_assert_int_eq(
+      vsph_viscous_props_init(&ep.visc, forms[_i], &vsph_gaussian_type, 2,
+                              HDX * DX, MU),
+      0);
+  struct vsph_cells *cells = vsph_cells_alloc();
+  ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
+  size_t most = 0; /* the most particles in a cell */
+  for (size_t c = 0; c < cells->ncells; c++)
+    most = cells->count[c] > most ? cells->count[c] : most;
+  ck_assert_uint_gt(most, 24); /* four groups of receivers or more */
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, 2);
+  double *buf = calloc(6 * n, sizeof *buf);
+  ck_assert_ptr_nonnull(buf);
+  const char *was = getenv("VSPH_PAIR_SIMD");
+  char *keep = was ? strdup(was) : NULL;
+  double closest[2];
+  size_t pairs[2];
+  int st[2];
+  for (int level = 0; level < 2; level++) {
+    double *const o = buf + (size_t)level * 3 * n;
+    struct vsph_equations_out out = {.drho = o,
+                                     .acc = {o + n, o + 2 * n},
+                                     .sweep = vsph_equations_sweep_alloc()};
+    setenv("VSPH_PAIR_SIMD", level ? "avx512" : "portable", 1);
+    st[level] = vsph_equations_rhs(&ep, p, nfl, cells, ws, &out);
+    vsph_equations_sweep_free(out.sweep);
+    closest[level] = out.min_s2;
+    pairs[level] = out.interactions;
+  }
+  if (keep) /* the environment back before any assertion */
+    setenv("VSPH_PAIR_SIMD", keep, 1);
+  else
+    unsetenv("VSPH_PAIR_SIMD");
+  free(keep);
+  ck_assert_int_eq(st[0], 0);
+  ck_assert_int_eq(st[1], 0);
+  ck_assert_double_eq(closest[1], closest[0]);
+  ck_assert_uint_eq(pairs[1], pairs[0]);
+  ck_assert_uint_eq(pairs[1], pair_count(p, nfl, ep.visc.h));
+  for (size_t f = 0; f < 3; f++) {
+    double big = 0.0;
+    for (size_t i = 0; i < n; i++)
+      if (p->id[i] < nfl) big = fmax(big, fabs(buf[f * n + i]));
+    for (size_t i = 0; i < n; i++) {
+      if (p->id[i] >= nfl) continue;
+      const double a = buf[f * n + i], b = buf[(3 + f) * n + i];
+      ck_assert_msg(fabs(b - a) <= SIMD_ROUNDING * big,
+                    "%s, rate %zu of particle %zu: %.17g, portable %.17g "
+                    "(largest %.3g)",
+                    vsph_viscous_name(forms[_i]), f, i, b, a, big);
+    }
+  }
+  free(buf);
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+}
+END_TEST
+
 /* The lanes' adds alone (vsph_sweep_x86_add_avx2 for 3 and 4 fields,
  * vsph_sweep_x86_add8_avx2 with a factor) on made-up shares against the
  * scalar loop, for every chunk size 0-13 (whole blocks of four and every
@@ -2141,6 +2225,7 @@ Suite *vsph_equations_suite(void) {
   tcase_add_loop_test(tc, test_joint_walk_resumes, 0, 2);
   tcase_add_test(tc, test_joint_walk_guards);
   tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 14);
+  tcase_add_loop_test(tc, test_brookshaw_crowded, 0, 3);
   tcase_add_test(tc, test_sweep_lanes_by_hand);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
   tcase_add_loop_test(tc, test_sweep_gather_threads,
