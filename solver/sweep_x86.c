@@ -154,6 +154,11 @@ static inline __attribute__((always_inline)) AVX512 void add3(
                         _mm512_add_pd(_mm512_maskz_loadu_pd(k2, q + 16), o2));
 }
 
+AVX512 void vsph_sweep_x86_add3(double *q, const double *a, const double *b,
+                                const double *c, size_t nl) {
+  add3(q, _mm512_loadu_pd(a), _mm512_loadu_pd(b), _mm512_loadu_pd(c), nl);
+}
+
 /* One block of the sweep (solver/sweep_x86.h). For each cell of the block,
  * its receivers i in groups of at most eight (i0 on), and for each of the
  * cell's ranges from i0 + 1, each vector of eight consecutive candidates

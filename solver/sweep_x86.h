@@ -54,6 +54,13 @@ size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
  * vsph_sweep_x86_brookshaw2. */
 void vsph_sweep_x86_expneg8(const double *x, double *y, size_t n);
 
+/* The sweep's adds of j's shares (for their test): entry q[3 l + f] gets
+ * field f of particle l (a[l], b[l], c[l]) for l < @p nl (1 to 8), one add
+ * each; q[3 nl] on is not touched. The same conditions as
+ * vsph_sweep_x86_brookshaw2. */
+void vsph_sweep_x86_add3(double *q, const double *a, const double *b,
+                         const double *c, size_t nl);
+
 #if defined(__x86_64__) && defined(__LP64__) && defined(__GNUC__) && \
     !defined(__clang__) && defined(__AVX2__)
 /* 1 where solver/sweep_x86.c builds the Brookshaw forms' AVX-512 sweep:

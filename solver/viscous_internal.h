@@ -148,9 +148,9 @@ struct vsph_viscous_loops {
   }
 
 /* 1 in the file of the Brookshaw forms (solver/forms/brookshaw.c, defined
- * before its includes): their 2-D Gaussian sweep takes its chunks' work to
- * AVX-512 lanes where the CPU has them (vsph_sweep_x86_brookshaw2,
- * within rounding); 0 in every other family's. */
+ * before its includes): their 2-D Gaussian sweep goes by AVX-512 lanes
+ * where the CPU has them (vsph_sweep_x86_brookshaw2, within rounding); 0
+ * in every other family's. */
 #ifndef VSPH_VISCOUS_BROOKSHAW
 #define VSPH_VISCOUS_BROOKSHAW 0
 #endif

@@ -485,21 +485,21 @@ static void twin_check(int form, int dim, int sweep,
  * build on this CPU: MGF, Violeau & Issa's or Cleary's form in 2-D by the
  * sweep, without delta-SPH or the parts. Its rates are within rounding of
  * the four-lane loops', not their bits: fused multiply-adds, another
- * exponential (within 1e-15 of libm, test_expneg_within_1e15_of_exp) and
- * i's sums in eight lanes. SIMD_ROUNDING bounds the difference as a
- * fraction of a rate's largest entry: each entry is a sum of some 50
- * shares, each within a few units of rounding (2.2e-16) of the other
- * loops' (about 1e-15 relative), summed in another order, and where
+ * exponential (within 1e-15 of libm, test_expneg_within_1e15_of_exp), and
+ * i's sums and j's (over a group of receivers) in eight lanes. SIMD_ROUNDING
+ * bounds the difference as a fraction of a rate's largest entry: each entry is
+ * a sum of some 50 shares, each within a few units of rounding (2.2e-16) of the
+ * other loops' (about 1e-15 relative), summed in another order, and where
  * shares cancel the difference grows with the shares against their sum:
- * the largest found is 5.4e-14 of the wave's largest horizontal force
- * (7.1e-14 in make asan's -O1 build), whose pressure shares, of the size
+ * the largest found is 7.1e-14 of the wave's largest horizontal force
+ * (1.2e-13 in make asan's -O1 build), whose pressure shares, of the size
  * of the hydrostatic gradient, cancel to a horizontal force a sixth of
- * the largest vertical one (test_sweep_scatter_simd; 2.9e-15 at most
- * elsewhere); 1e-12 leaves a factor 14, and a wrong term or factor moves
+ * the largest vertical one (test_sweep_scatter_simd; 3.0e-15 at most
+ * elsewhere); 1e-12 leaves a factor 8, and a wrong term or factor moves
  * a rate by 1e-9 of it or more (a referee's mutant of F by 1 + 1e-9
  * fails). */
 #define SIMD_ROUNDING 1e-12
-static int brookshaw_chunk(int form, int dim, int delta, int parts, int sweep) {
+static int brookshaw_lanes(int form, int dim, int delta, int parts, int sweep) {
   return VSPH_SWEEP_X86_BROOKSHAW && vsph_pair_x86_simd() == 2 && dim == 2 &&
          !delta && !parts && sweep &&
          (form == VSPH_VISCOUS_MGF || form == VSPH_VISCOUS_VI ||
@@ -525,6 +525,26 @@ static size_t pair_count(const struct vsph_particles *p, size_t nfl, double h) {
   return count;
 }
 
+/* The least s^2 of a pair of set @p p within the support of the 3h
+ * Gaussian at @p h of which one particle at least is fluid (id < @p nfl),
+ * pair by pair (exact: the loops' s^2 in their order). */
+static double pair_closest(const struct vsph_particles *p, size_t nfl,
+                           double h) {
+  const double kap = vsph_gaussian_type.kappa, H2 = kap * h * kap * h;
+  double least = INFINITY;
+  for (size_t i = 0; i < p->n; i++)
+    for (size_t j = i + 1; j < p->n; j++) {
+      double s2 = 0.0;
+      for (int a = 0; a < p->dim; a++) {
+        const double x = p->pos[a][j] - p->pos[a][i];
+        s2 += x * x;
+      }
+      if (s2 < H2 && (p->id[i] < nfl || p->id[j] < nfl) && s2 < least)
+        least = s2;
+    }
+  return least;
+}
+
 /* A random set of dimension @p dim (ball of @p radius cut at @p depth),
  * its ids shuffled so that fluid and others mix. */
 static struct vsph_particles *mixed_set(int dim, unsigned long seed,
@@ -546,7 +566,7 @@ static struct vsph_particles *mixed_set(int dim, unsigned long seed,
  * (finish_one, which the parts take: the same sums in the same order, so
  * the same bits; without the parts, 2-D sweeps finish by finish_rows2;
  * except where the sums without the parts come from the Brookshaw forms'
- * AVX-512 chunk, brookshaw_chunk, and the parts' from the loops it
+ * AVX-512 sweep, brookshaw_lanes, and the parts' from the loops it
  * replaces: then within SIMD_ROUNDING);
  * the state law's p and V every particle's, as vsph_equations_pressure
  * and m/rho make them, to the bit; and the interactions those a count
@@ -606,7 +626,7 @@ START_TEST(test_rhs_leaves_others) {
   /* without the parts, the AVX-512 sweep of a Brookshaw form in 2-D
    * where this build and CPU have it: the general finish's rates within
    * rounding of its (SIMD_ROUNDING of each rate's largest) */
-  const int chunk = brookshaw_chunk(form, dim, delta, parts, sweep);
+  const int lanes = brookshaw_lanes(form, dim, delta, parts, sweep);
   double big[4] = {0, 0, 0, 0};
   for (int c = 0; c < 1 + dim; c++)
     for (size_t i = 0; i < n; i++)
@@ -637,7 +657,7 @@ START_TEST(test_rhs_leaves_others) {
                     _i, c, i, v, all);
       if (c < 1 + dim)
         ck_assert_msg(
-            chunk ? fabs(v - general) <= SIMD_ROUNDING * big[c] : v == general,
+            lanes ? fabs(v - general) <= SIMD_ROUNDING * big[c] : v == general,
             "case %d: rate %d of fluid particle %zu: %.17g, by the "
             "general finish %.17g",
             _i, c, i, v, general);
@@ -1074,21 +1094,20 @@ static struct vsph_integrate *shear3(int form, int contact) {
 
 /* The symmetric sweep's adds of j's shares by AVX2
  * (solver/sweep_x86.c: three fields in 2-D, four with delta-SPH or in
- * 3-D, eight in PVWF's first pass) and the AVX-512 map of the Brookshaw
- * forms in 2-D (vsph_sweep_x86_brookshaw2: their kernel, terms,
- * i's sums, j's adds) against the scalar
+ * 3-D, eight in PVWF's first pass) and the AVX-512 sweep of the
+ * Brookshaw forms in 2-D (vsph_sweep_x86_brookshaw2) against the scalar
  * loops: the stretching square at 24 across after three steps, MGF with
  * and without delta-SPH, PVWF, Violeau & Issa's and Cleary's forms (eta
- * not 0), the standing wave with its ghosts (pairs of two ghosts
- * skipped, ghost receivers not counted), and the 3-D shear box (shear3)
+ * not 0), the standing wave with its ghosts (ghost receivers not
+ * counted), and the 3-D shear box (shear3)
  * with MGF, each with and without the dissipative parts (2 d + 2 fields,
  * the scalar loop at every level), evaluated with the portable loops
  * (VSPH_PAIR_SIMD=portable) and at each level the CPU has: every output
  * the same bits (each entry gets the same adds in the same order; the
  * candidate test gives the same chunks at every level,
- * test_candidates_simd), except the AVX-512 map's, within rounding
- * (SIMD_ROUNDING, brookshaw_chunk), the closest pair and the count
- * exact. A level the CPU lacks is said and left out (the AVX-512 map is
+ * test_candidates_simd), except the AVX-512 sweep's, within rounding
+ * (SIMD_ROUNDING, brookshaw_lanes), the closest pair and the count
+ * exact. A level the CPU lacks is said and left out (the AVX-512 sweep is
  * then not tested here; nor in a build without it,
  * VSPH_SWEEP_X86_BROOKSHAW 0). */
 START_TEST(test_sweep_scatter_simd) {
@@ -1147,16 +1166,16 @@ START_TEST(test_sweep_scatter_simd) {
   else
     unsetenv("VSPH_PAIR_SIMD");
   free(keep);
-  /* the AVX-512 chunk of the Brookshaw forms (not the parts, nor
+  /* the AVX-512 sweep of the Brookshaw forms (not the parts, nor
    * delta-SPH, nor 3-D, nor PVWF) */
-  const int chunk =
-      brookshaw_chunk(cases[c].form, dim, cases[c].delta != 0.0, parts, 1);
+  const int lanes =
+      brookshaw_lanes(cases[c].form, dim, cases[c].delta != 0.0, parts, 1);
   for (int level = 0; level <= most; level++) {
     ck_assert_int_eq(st[level], 0);
     ck_assert_double_eq(closest[level], closest[0]); /* the closest pair */
     ck_assert_uint_eq(pairs[level], pairs[0]);       /* ghosts' not counted */
     const double *const o = buf + (size_t)level * nout * n;
-    if (level == 2 && chunk) { /* within rounding, as said above */
+    if (level == 2 && lanes) { /* within rounding, as said above */
       for (size_t f = 0; f < nout; f++) {
         double big = 0.0;
         for (size_t e = f * n; e < (f + 1) * n; e++)
@@ -1185,17 +1204,19 @@ END_TEST
 /* Crowded cells through the Brookshaw forms' AVX-512 sweep (form _i: MGF,
  * Violeau and Issa's, Cleary's), which takes a cell's receivers eight at a
  * time: a 2-D set (the ids shuffled, half of them fluid) with 42 of its
- * particles moved onto a grid of spacing DX/10 inside one cell (a cell's
- * edge is 3h/2 = 2 DX), so that a cell holds four groups of receivers or more
- * and its ranges hundreds of candidates. Every rate of every fluid particle
+ * particles moved onto a 7 x 6 grid of spacing DX/10, a third of a cell's
+ * edge (3h/2 = 2 DX) across, so that a cell holds more than 24 of them
+ * (four groups of receivers or more) and its ranges hundreds of
+ * candidates. Every rate of every fluid particle
  * within rounding of the portable loops' (SIMD_ROUNDING of the rate's
  * largest), the closest pair and the count exact, and the count that of a
- * count pair by pair. Where the CPU or build lacks the AVX-512 sweep,
- * said and left out. */
+ * count pair by pair, the closest pair that of a search pair by pair
+ * (two particles not fluid placed closer than any other pair: left out).
+ * Where the CPU or build lacks the AVX-512 sweep, said and left out. */
 START_TEST(test_brookshaw_crowded) {
   static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_VI,
                               VSPH_VISCOUS_CLEARY};
-  if (!brookshaw_chunk(forms[_i], 2, 0, 0, 1)) {
+  if (!brookshaw_lanes(forms[_i], 2, 0, 0, 1)) {
     fprintf(stderr, "test_brookshaw_crowded: no AVX-512 sweep here\n");
     return;
   }
@@ -1206,6 +1227,14 @@ START_TEST(test_brookshaw_crowded) {
     p->pos[0][4 * k] = 0.013 + 0.1 * DX * (double)(k % 7);
     p->pos[1][4 * k] = -0.061 + 0.1 * DX * (double)(k / 7);
   }
+  /* and the closest pair of all two others (not fluid), which the closest
+   * pair with a fluid receiver leaves out */
+  size_t two[2], found = 0;
+  for (size_t i = 4 * 42; i < n && found < 2; i++)
+    if (p->id[i] >= nfl) two[found++] = i;
+  ck_assert_uint_eq(found, 2);
+  p->pos[0][two[1]] = p->pos[0][two[0]] + 0.01 * DX;
+  p->pos[1][two[1]] = p->pos[1][two[0]];
   struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0};
   ck_assert_int_eq(
       vsph_viscous_props_init(&ep.visc, forms[_i], &vsph_gaussian_type, 2,
@@ -1246,6 +1275,7 @@ START_TEST(test_brookshaw_crowded) {
   ck_assert_double_eq(closest[1], closest[0]);
   ck_assert_uint_eq(pairs[1], pairs[0]);
   ck_assert_uint_eq(pairs[1], pair_count(p, nfl, ep.visc.h));
+  ck_assert_double_eq(closest[1], pair_closest(p, nfl, ep.visc.h));
   for (size_t f = 0; f < 3; f++) {
     double big = 0.0;
     for (size_t i = 0; i < n; i++)
@@ -1263,6 +1293,34 @@ START_TEST(test_brookshaw_crowded) {
   vsph_viscous_ws_free(ws);
   vsph_cells_free(cells);
   vsph_particles_free(p);
+}
+END_TEST
+
+/* The AVX-512 sweep's adds of j's shares alone (vsph_sweep_x86_add3), for
+ * 1 to 8 particles: each of the first 3 nl entries gets its one field,
+ * the same bits as a scalar add, and every entry past them is left as it
+ * was, bit for bit (one of them -0, which an add of 0 would turn to +0),
+ * though the lanes past nl hold shares too. Where the CPU or build lacks
+ * the AVX-512 sweep, said and left out. */
+START_TEST(test_sweep_add3_by_hand) {
+  if (!brookshaw_lanes(VSPH_VISCOUS_MGF, 2, 0, 0, 1)) {
+    fprintf(stderr, "test_sweep_add3_by_hand: no AVX-512 sweep here\n");
+    return;
+  }
+  double f[3][8], q[32], want[32];
+  for (int a = 0; a < 3; a++)
+    for (int l = 0; l < 8; l++) f[a][l] = sin(0.7 + 1.3 * a + 0.41 * l);
+  for (size_t nl = 1; nl <= 8; nl++) {
+    for (size_t e = 0; e < 32; e++) q[e] = want[e] = cos(0.9 * (double)e);
+    q[3 * nl] = want[3 * nl] = -0.0;
+    for (size_t l = 0; l < nl; l++)
+      for (int a = 0; a < 3; a++) want[3 * l + (size_t)a] += f[a][l];
+    vsph_sweep_x86_add3(q, f[0], f[1], f[2], nl);
+    for (size_t e = 0; e < 32; e++)
+      ck_assert_msg(memcmp(q + e, want + e, sizeof *q) == 0,
+                    "%zu particles: entry %zu is %.17g, not %.17g", nl, e, q[e],
+                    want[e]);
+  }
 }
 END_TEST
 
@@ -2226,6 +2284,7 @@ Suite *vsph_equations_suite(void) {
   tcase_add_test(tc, test_joint_walk_guards);
   tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 14);
   tcase_add_loop_test(tc, test_brookshaw_crowded, 0, 3);
+  tcase_add_test(tc, test_sweep_add3_by_hand);
   tcase_add_test(tc, test_sweep_lanes_by_hand);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
   tcase_add_loop_test(tc, test_sweep_gather_threads,
