@@ -585,9 +585,10 @@ sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
 #if VSPH_SWEEP_X86_BROOKSHAW
   /* a Brookshaw form in 2-D with the Gaussian: its sweep in AVX-512
    * lanes where the CPU has them (solver/sweep_x86.c), within rounding */
-  if (brook == 1 && dim == 2 && !delta && kid == VSPH_KERNEL_DFQ_GAUSSIAN &&
-      !rc->parts && rc->pk.simd == 2)
-    return vsph_sweep_x86_brookshaw2(rc, p, cells, n_fluid, sw, blk, min_s2);
+  if (brook == 1 && dim == 2 && kid == VSPH_KERNEL_DFQ_GAUSSIAN && !rc->parts &&
+      rc->pk.simd == 2)
+    return vsph_sweep_x86_brookshaw2(rc, p, cells, n_fluid, sw, blk, delta,
+                                     min_s2);
 #endif
   return rc->parts ? sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
                                        dim, pair, delta, kid, 1)

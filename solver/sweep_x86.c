@@ -118,45 +118,71 @@ AVX512 void vsph_sweep_x86_expneg8(const double *x, double *y, size_t n) {
   }
 }
 
-/* Add fields A, B, C (0, 1, 2) of @p nl <= 8 consecutive particles' j
- * shares to their entries q[0 .. 3 nl - 1] (three fields a particle): the
- * lanes interleaved by two-source permutes, then whole vectors loaded,
- * added and stored, or masked ones for a range's last particles (which
- * must not touch the next entries: another block's, or another thread's) */
-static inline __attribute__((always_inline)) AVX512 void add3(
-    double *q, __m512d A, __m512d B, __m512d C, size_t nl) {
-  /* lane l of T = A, B interleaved; of the output, T or C (index 8 on) */
-  const __m512i a0 = _mm512_setr_epi64(0, 8, 0, 1, 9, 0, 2, 10),
-                b0 = _mm512_setr_epi64(0, 1, 8, 3, 4, 9, 6, 7),
-                a1 = _mm512_setr_epi64(0, 3, 11, 0, 4, 12, 0, 5),
-                b1 = _mm512_setr_epi64(10, 1, 2, 11, 4, 5, 12, 7),
-                a2 = _mm512_setr_epi64(13, 0, 6, 14, 0, 7, 15, 0),
-                b2 = _mm512_setr_epi64(0, 13, 2, 3, 14, 5, 6, 15);
-  const __m512d o0 =
-      _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, a0, B), b0, C);
-  const __m512d o1 =
-      _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, a1, B), b1, C);
-  const __m512d o2 =
-      _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, a2, B), b2, C);
+/* Add fields A, B, C, D (0 to 3; D where @p nf is 4, a constant where
+ * inlined) of @p nl <= 8 consecutive particles' j shares to their entries
+ * q[0 .. nf nl - 1] (nf fields a particle): the lanes interleaved in
+ * registers (three fields by two-source permutes, four by a 4 x 4
+ * transpose of pairs of lanes), then whole vectors loaded, added and
+ * stored, or masked ones for a range's last particles (which must not
+ * touch the next entries: another block's, or another thread's) */
+static inline __attribute__((always_inline)) AVX512 void addj(
+    double *q, const int nf, __m512d A, __m512d B, __m512d C, __m512d D,
+    size_t nl) {
+  __m512d o[4];
+  if (nf == 3) {
+    /* lane l of T = A, B interleaved; of the output, T or C (8 on) */
+    const __m512i a0 = _mm512_setr_epi64(0, 8, 0, 1, 9, 0, 2, 10),
+                  b0 = _mm512_setr_epi64(0, 1, 8, 3, 4, 9, 6, 7),
+                  a1 = _mm512_setr_epi64(0, 3, 11, 0, 4, 12, 0, 5),
+                  b1 = _mm512_setr_epi64(10, 1, 2, 11, 4, 5, 12, 7),
+                  a2 = _mm512_setr_epi64(13, 0, 6, 14, 0, 7, 15, 0),
+                  b2 = _mm512_setr_epi64(0, 13, 2, 3, 14, 5, 6, 15);
+    o[0] = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, a0, B), b0, C);
+    o[1] = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, a1, B), b1, C);
+    o[2] = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, a2, B), b2, C);
+    o[3] = _mm512_setzero_pd();
+  } else {
+    /* (A B) and (C D) pairs of lanes, particle by particle, then the
+     * pairs of particles 2k and 2k + 1 gathered in o[k] */
+    const __m512d ab0 = _mm512_unpacklo_pd(A, B), /* particles 0, 2, 4, 6 */
+        ab1 = _mm512_unpackhi_pd(A, B),           /* 1, 3, 5, 7 */
+        cd0 = _mm512_unpacklo_pd(C, D), cd1 = _mm512_unpackhi_pd(C, D);
+    const __m512i lo2 = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11),
+                  hi2 = _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15);
+    /* (AB, CD) of particles 0, 2 (then 4, 6) and of 1, 3 (5, 7) */
+    const __m512d e0 = _mm512_permutex2var_pd(ab0, lo2, cd0),
+                  e1 = _mm512_permutex2var_pd(ab1, lo2, cd1),
+                  e2 = _mm512_permutex2var_pd(ab0, hi2, cd0),
+                  e3 = _mm512_permutex2var_pd(ab1, hi2, cd1);
+    o[0] = _mm512_shuffle_f64x2(e0, e1, 0x44); /* particles 0, 1 */
+    o[1] = _mm512_shuffle_f64x2(e0, e1, 0xee); /* 2, 3 */
+    o[2] = _mm512_shuffle_f64x2(e2, e3, 0x44); /* 4, 5 */
+    o[3] = _mm512_shuffle_f64x2(e2, e3, 0xee); /* 6, 7 */
+  }
   if (nl == 8) {
-    _mm512_storeu_pd(q, _mm512_add_pd(_mm512_loadu_pd(q), o0));
-    _mm512_storeu_pd(q + 8, _mm512_add_pd(_mm512_loadu_pd(q + 8), o1));
-    _mm512_storeu_pd(q + 16, _mm512_add_pd(_mm512_loadu_pd(q + 16), o2));
+    for (int v = 0; v < nf; v++)
+      _mm512_storeu_pd(q + 8 * v,
+                       _mm512_add_pd(_mm512_loadu_pd(q + 8 * v), o[v]));
     return;
   }
-  const size_t n = 3 * nl;
-  const __mmask8 k0 = lanes_left(n), k1 = n > 8 ? lanes_left(n - 8) : 0,
-                 k2 = n > 16 ? lanes_left(n - 16) : 0;
-  _mm512_mask_storeu_pd(q, k0, _mm512_add_pd(_mm512_maskz_loadu_pd(k0, q), o0));
-  _mm512_mask_storeu_pd(q + 8, k1,
-                        _mm512_add_pd(_mm512_maskz_loadu_pd(k1, q + 8), o1));
-  _mm512_mask_storeu_pd(q + 16, k2,
-                        _mm512_add_pd(_mm512_maskz_loadu_pd(k2, q + 16), o2));
+  const size_t n = (size_t)nf * nl;
+  for (int v = 0; v < nf; v++) {
+    const size_t e = 8 * (size_t)v;
+    const __mmask8 k = n > e ? lanes_left(n - e) : 0;
+    _mm512_mask_storeu_pd(q + e, k,
+                          _mm512_add_pd(_mm512_maskz_loadu_pd(k, q + e), o[v]));
+  }
 }
 
-AVX512 void vsph_sweep_x86_add3(double *q, const double *a, const double *b,
-                                const double *c, size_t nl) {
-  add3(q, _mm512_loadu_pd(a), _mm512_loadu_pd(b), _mm512_loadu_pd(c), nl);
+AVX512 void vsph_sweep_x86_addj(double *q, int nf, const double *const f[4],
+                                size_t nl) {
+  const __m512d D = nf == 4 ? _mm512_loadu_pd(f[3]) : _mm512_setzero_pd();
+  if (nf == 4)
+    addj(q, 4, _mm512_loadu_pd(f[0]), _mm512_loadu_pd(f[1]),
+         _mm512_loadu_pd(f[2]), D, nl);
+  else
+    addj(q, 3, _mm512_loadu_pd(f[0]), _mm512_loadu_pd(f[1]),
+         _mm512_loadu_pd(f[2]), D, nl);
 }
 
 /* One block of the sweep (solver/sweep_x86.h). For each cell of the block,
@@ -177,18 +203,19 @@ AVX512 void vsph_sweep_x86_add3(double *q, const double *a, const double *b,
  * interactions (each fluid receiver of a pair once: j's fluid by its id
  * unless the cell is clean) and the least s^2 of a pair with a fluid
  * receiver come from the same masks, so exactly as the loops give them. */
-AVX512 size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
-                                        const struct vsph_particles *p,
-                                        const struct vsph_cells *cells,
-                                        size_t n_fluid,
-                                        const struct vsph_equations_sweep *sw,
-                                        size_t blk, double *min_s2) {
+static inline __attribute__((always_inline)) AVX512 size_t
+brookshaw2_block(const struct vsph_equations_ctx *rc,
+                 const struct vsph_particles *p, const struct vsph_cells *cells,
+                 size_t n_fluid, const struct vsph_equations_sweep *sw,
+                 size_t blk, double *min_s2, const int delta) {
+  const int nf = delta ? 4 : 3; /* SW_FIELDS(2, delta, 0) */
   const size_t lo = sw->lo[blk];
   double *const buf = sw->buf + sw->off[blk];
-  memset(buf, 0, (sw->hi[blk] - lo) * 3 * sizeof *buf);
+  memset(buf, 0, (sw->hi[blk] - lo) * (size_t)nf * sizeof *buf);
   const double *const px = p->pos[0], *const py = p->pos[1],
                       *const vx = p->vel[0], *const vy = p->vel[1],
-                      *const pp = p->p, *const vol = p->vol;
+                      *const pp = p->p, *const vol = p->vol,
+                      *const rho = p->rho;
   const size_t *const id = p->id;
   const int fluid_only = p->n == n_fluid; /* no ghosts nor wall particles */
   const __m512d H2 = _mm512_set1_pd(rc->pk.H2),
@@ -208,10 +235,10 @@ AVX512 size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
     const int clean = fluid_only || (sw->clean && sw->clean[c]);
     for (size_t i0 = s0; i0 < end; i0 += 8) {
       const size_t g = end - i0 < 8 ? end - i0 : 8; /* receivers i0 + q */
-      __m512d ac[8], af0[8], af1[8];                /* i's sums, lane by lane */
+      __m512d ac[8], af0[8], af1[8], ad[8];         /* i's sums, lane by lane */
       int fi[8];
       for (size_t q = 0; q < g; q++) {
-        ac[q] = af0[q] = af1[q] = _mm512_setzero_pd();
+        ac[q] = af0[q] = af1[q] = ad[q] = _mm512_setzero_pd();
         fi[q] = id[i0 + q] < n_fluid;
       }
       for (size_t r = 0; r < rg.n; r++) {
@@ -224,14 +251,16 @@ AVX512 size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
                         U0 = _mm512_maskz_loadu_pd(live, vx + j),
                         U1 = _mm512_maskz_loadu_pd(live, vy + j),
                         P = _mm512_maskz_loadu_pd(live, pp + j),
-                        V = _mm512_maskz_loadu_pd(live, vol + j);
+                        V = _mm512_maskz_loadu_pd(live, vol + j),
+                        R = delta ? _mm512_maskz_loadu_pd(live, rho + j)
+                                  : _mm512_setzero_pd();
           const __m512i J =
               _mm512_add_epi64(_mm512_set1_epi64((long long)j), lane);
           const __mmask8 fj = /* the fluid candidates */
               clean ? live
                     : _mm512_mask_cmplt_epu64_mask(
                           live, _mm512_maskz_loadu_epi64(live, id + j), vnfl);
-          __m512d JA = _mm512_setzero_pd(), JB = JA, JC = JA; /* j's */
+          __m512d JA = _mm512_setzero_pd(), JB = JA, JC = JA, JD = JA;
           __mmask8 any = 0;
           for (size_t q = 0; q < g; q++) {
             const size_t i = i0 + q;
@@ -274,22 +303,41 @@ AVX512 size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
             ac[q] = _mm512_fmadd_pd(V, cc, ac[q]);
             af0[q] = _mm512_fmadd_pd(V, f0, af0[q]);
             af1[q] = _mm512_fmadd_pd(V, f1, af1[q]);
+            if (delta) { /* d = -2 F (rho_j - rho_i), odd */
+              const __m512d dd =
+                  _mm512_mul_pd(_mm512_mul_pd(_mm512_set1_pd(-2.0), F),
+                                _mm512_sub_pd(R, _mm512_set1_pd(rho[i])));
+              JD = _mm512_fnmadd_pd(Vi, dd, JD);
+              ad[q] = _mm512_fmadd_pd(V, dd, ad[q]);
+            }
           }
           if (any)
-            add3(buf + (j - lo) * 3, JA, JB, JC, hi - j < 8 ? hi - j : 8);
+            addj(buf + (j - lo) * (size_t)nf, nf, JA, JB, JC, JD,
+                 hi - j < 8 ? hi - j : 8);
         }
       }
       for (size_t q = 0; q < g; q++) { /* a ghost's sums are never read */
         if (!fi[q]) continue;
-        double *const e = buf + (i0 + q - lo) * 3;
+        double *const e = buf + (i0 + q - lo) * (size_t)nf;
         e[0] += _mm512_reduce_add_pd(af0[q]);
         e[1] += _mm512_reduce_add_pd(af1[q]);
         e[2] += _mm512_reduce_add_pd(ac[q]);
+        if (delta) e[3] += _mm512_reduce_add_pd(ad[q]);
       }
     }
   }
   *min_s2 = _mm512_reduce_min_pd(vmin);
   return total;
+}
+
+AVX512 size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
+                                        const struct vsph_particles *p,
+                                        const struct vsph_cells *cells,
+                                        size_t n_fluid,
+                                        const struct vsph_equations_sweep *sw,
+                                        size_t blk, int delta, double *min_s2) {
+  return delta ? brookshaw2_block(rc, p, cells, n_fluid, sw, blk, min_s2, 1)
+               : brookshaw2_block(rc, p, cells, n_fluid, sw, blk, min_s2, 0);
 }
 
 #endif /* VSPH_SWEEP_X86_BROOKSHAW */

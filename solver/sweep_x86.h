@@ -47,19 +47,19 @@ size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
                                  const struct vsph_particles *p,
                                  const struct vsph_cells *cells, size_t n_fluid,
                                  const struct vsph_equations_sweep *sw,
-                                 size_t blk, double *min_s2);
+                                 size_t blk, int delta, double *min_s2);
 
 /* The sweep's exponential: y[k] = e^{-x[k]}, 0 <= x[k] <= 700, for
  * k < n, eight at a time (for its test). The same conditions as
  * vsph_sweep_x86_brookshaw2. */
 void vsph_sweep_x86_expneg8(const double *x, double *y, size_t n);
 
-/* The sweep's adds of j's shares (for their test): entry q[3 l + f] gets
- * field f of particle l (a[l], b[l], c[l]) for l < @p nl (1 to 8), one add
- * each; q[3 nl] on is not touched. The same conditions as
- * vsph_sweep_x86_brookshaw2. */
-void vsph_sweep_x86_add3(double *q, const double *a, const double *b,
-                         const double *c, size_t nl);
+/* The sweep's adds of j's shares (for their test): entry q[nf l + a] gets
+ * field a of particle l, f[a][l], for l < @p nl (1 to 8) and a < @p nf
+ * (3 or 4), one add each; q[nf nl] on is not touched. The same
+ * conditions as vsph_sweep_x86_brookshaw2. */
+void vsph_sweep_x86_addj(double *q, int nf, const double *const f[4],
+                         size_t nl);
 
 #if defined(__x86_64__) && defined(__LP64__) && defined(__GNUC__) && \
     !defined(__clang__) && defined(__AVX2__)

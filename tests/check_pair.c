@@ -479,11 +479,12 @@ static void twin_check(int form, int dim, int sweep,
   vsph_particles_free(p);
 }
 
-/* Whether the right-hand side of @p form in @p dim (delta-SPH and the
- * parts on or off, the symmetric sweep or the gather) with the 3h Gaussian
+/* Whether the right-hand side of @p form in @p dim (the parts on or off,
+ * the symmetric sweep or the gather) with the 3h Gaussian
  * takes the Brookshaw forms' AVX-512 sweep (solver/sweep_x86.c) in this
  * build on this CPU: MGF, Violeau & Issa's or Cleary's form in 2-D by the
- * sweep, without delta-SPH or the parts. Its rates are within rounding of
+ * sweep, with delta-SPH or without, without the parts. Its rates are
+ * within rounding of
  * the four-lane loops', not their bits: fused multiply-adds, another
  * exponential (within 1e-15 of libm, test_expneg_within_1e15_of_exp), and
  * i's sums and j's (over a group of receivers) in eight lanes. SIMD_ROUNDING
@@ -499,9 +500,9 @@ static void twin_check(int form, int dim, int sweep,
  * a rate by 1e-9 of it or more (a referee's mutant of F by 1 + 1e-9
  * fails). */
 #define SIMD_ROUNDING 1e-12
-static int brookshaw_lanes(int form, int dim, int delta, int parts, int sweep) {
+static int brookshaw_lanes(int form, int dim, int parts, int sweep) {
   return VSPH_SWEEP_X86_BROOKSHAW && vsph_pair_x86_simd() == 2 && dim == 2 &&
-         !delta && !parts && sweep &&
+         !parts && sweep &&
          (form == VSPH_VISCOUS_MGF || form == VSPH_VISCOUS_VI ||
           form == VSPH_VISCOUS_CLEARY);
 }
@@ -626,7 +627,7 @@ START_TEST(test_rhs_leaves_others) {
   /* without the parts, the AVX-512 sweep of a Brookshaw form in 2-D
    * where this build and CPU have it: the general finish's rates within
    * rounding of its (SIMD_ROUNDING of each rate's largest) */
-  const int lanes = brookshaw_lanes(form, dim, delta, parts, sweep);
+  const int lanes = brookshaw_lanes(form, dim, parts, sweep);
   double big[4] = {0, 0, 0, 0};
   for (int c = 0; c < 1 + dim; c++)
     for (size_t i = 0; i < n; i++)
@@ -1168,8 +1169,7 @@ START_TEST(test_sweep_scatter_simd) {
   free(keep);
   /* the AVX-512 sweep of the Brookshaw forms (not the parts, nor
    * delta-SPH, nor 3-D, nor PVWF) */
-  const int lanes =
-      brookshaw_lanes(cases[c].form, dim, cases[c].delta != 0.0, parts, 1);
+  const int lanes = brookshaw_lanes(cases[c].form, dim, parts, 1);
   for (int level = 0; level <= most; level++) {
     ck_assert_int_eq(st[level], 0);
     ck_assert_double_eq(closest[level], closest[0]); /* the closest pair */
@@ -1201,12 +1201,12 @@ START_TEST(test_sweep_scatter_simd) {
 }
 END_TEST
 
-/* Crowded cells through the Brookshaw forms' AVX-512 sweep (form _i: MGF,
- * Violeau and Issa's, Cleary's), which takes a cell's receivers eight at a
- * time: a 2-D set (the ids shuffled, half of them fluid) with 42 of its
- * particles moved onto a 7 x 6 grid of spacing DX/10, a third of a cell's
- * edge (3h/2 = 2 DX) across, so that a cell holds more than 24 of them
- * (four groups of receivers or more) and its ranges hundreds of
+/* Crowded cells through the Brookshaw forms' AVX-512 sweep (form _i % 3:
+ * MGF, Violeau and Issa's, Cleary's; delta-SPH from _i = 3 on), which takes
+ * a cell's receivers eight at a time: a 2-D set (the ids shuffled, half of them
+ * fluid) with 42 of its particles moved onto a 7 x 6 grid of spacing DX/10, a
+ * third of a cell's edge (3h/2 = 2 DX) across, so that a cell holds more than
+ * 24 of them (four groups of receivers or more) and its ranges hundreds of
  * candidates. Every rate of every fluid particle
  * within rounding of the portable loops' (SIMD_ROUNDING of the rate's
  * largest), the closest pair and the count exact, and the count that of a
@@ -1216,7 +1216,7 @@ END_TEST
 START_TEST(test_brookshaw_crowded) {
   static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_VI,
                               VSPH_VISCOUS_CLEARY};
-  if (!brookshaw_lanes(forms[_i], 2, 0, 0, 1)) {
+  if (!brookshaw_lanes(forms[_i % 3], 2, 0, 1)) {
     fprintf(stderr, "test_brookshaw_crowded: no AVX-512 sweep here\n");
     return;
   }
@@ -1235,9 +1235,10 @@ START_TEST(test_brookshaw_crowded) {
   ck_assert_uint_eq(found, 2);
   p->pos[0][two[1]] = p->pos[0][two[0]] + 0.01 * DX;
   p->pos[1][two[1]] = p->pos[1][two[0]];
-  struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0};
+  struct vsph_equations_props ep = {
+      .rho0 = RHO0, .c0 = C0, .delta = _i >= 3 ? DELTA : 0.0};
   ck_assert_int_eq(
-      vsph_viscous_props_init(&ep.visc, forms[_i], &vsph_gaussian_type, 2,
+      vsph_viscous_props_init(&ep.visc, forms[_i % 3], &vsph_gaussian_type, 2,
                               HDX * DX, MU),
       0);
   struct vsph_cells *cells = vsph_cells_alloc();
@@ -1286,7 +1287,7 @@ START_TEST(test_brookshaw_crowded) {
       ck_assert_msg(fabs(b - a) <= SIMD_ROUNDING * big,
                     "%s, rate %zu of particle %zu: %.17g, portable %.17g "
                     "(largest %.3g)",
-                    vsph_viscous_name(forms[_i]), f, i, b, a, big);
+                    vsph_viscous_name(forms[_i % 3]), f, i, b, a, big);
     }
   }
   free(buf);
@@ -1296,31 +1297,36 @@ START_TEST(test_brookshaw_crowded) {
 }
 END_TEST
 
-/* The AVX-512 sweep's adds of j's shares alone (vsph_sweep_x86_add3), for
- * 1 to 8 particles: each of the first 3 nl entries gets its one field,
- * the same bits as a scalar add, and every entry past them is left as it
- * was, bit for bit (one of them -0, which an add of 0 would turn to +0),
- * though the lanes past nl hold shares too. Where the CPU or build lacks
- * the AVX-512 sweep, said and left out. */
-START_TEST(test_sweep_add3_by_hand) {
-  if (!brookshaw_lanes(VSPH_VISCOUS_MGF, 2, 0, 0, 1)) {
-    fprintf(stderr, "test_sweep_add3_by_hand: no AVX-512 sweep here\n");
+/* The AVX-512 sweep's adds of j's shares alone (vsph_sweep_x86_addj), of
+ * 3 and 4 fields, for 1 to 8 particles: each of the first nf nl entries
+ * gets its one field, the same bits as a scalar add, and every entry past
+ * them is left as it was, bit for bit (one of them -0, which an add of 0
+ * would turn to +0), though the lanes past nl hold shares too. Where the
+ * CPU or build lacks the AVX-512 sweep, said and left out. */
+START_TEST(test_sweep_addj_by_hand) {
+  if (!brookshaw_lanes(VSPH_VISCOUS_MGF, 2, 0, 1)) {
+    fprintf(stderr, "test_sweep_addj_by_hand: no AVX-512 sweep here\n");
     return;
   }
-  double f[3][8], q[32], want[32];
-  for (int a = 0; a < 3; a++)
+  double f[4][8], q[40], want[40];
+  const double *const fp[4] = {f[0], f[1], f[2], f[3]};
+  for (int a = 0; a < 4; a++)
     for (int l = 0; l < 8; l++) f[a][l] = sin(0.7 + 1.3 * a + 0.41 * l);
-  for (size_t nl = 1; nl <= 8; nl++) {
-    for (size_t e = 0; e < 32; e++) q[e] = want[e] = cos(0.9 * (double)e);
-    q[3 * nl] = want[3 * nl] = -0.0;
-    for (size_t l = 0; l < nl; l++)
-      for (int a = 0; a < 3; a++) want[3 * l + (size_t)a] += f[a][l];
-    vsph_sweep_x86_add3(q, f[0], f[1], f[2], nl);
-    for (size_t e = 0; e < 32; e++)
-      ck_assert_msg(memcmp(q + e, want + e, sizeof *q) == 0,
-                    "%zu particles: entry %zu is %.17g, not %.17g", nl, e, q[e],
-                    want[e]);
-  }
+  for (int nf = 3; nf <= 4; nf++)
+    for (size_t nl = 1; nl <= 8; nl++) {
+      const size_t used = (size_t)nf * nl;
+      for (size_t e = 0; e < 40; e++) q[e] = want[e] = cos(0.9 * (double)e);
+      q[used] = want[used] = -0.0;
+      for (size_t l = 0; l < nl; l++)
+        for (int a = 0; a < nf; a++)
+          want[(size_t)nf * l + (size_t)a] += f[a][l];
+      vsph_sweep_x86_addj(q, nf, fp, nl);
+      for (size_t e = 0; e < 40; e++)
+        ck_assert_msg(memcmp(q + e, want + e, sizeof *q) == 0,
+                      "%d fields, %zu particles: entry %zu is %.17g, not "
+                      "%.17g",
+                      nf, nl, e, q[e], want[e]);
+    }
 }
 END_TEST
 
@@ -2283,8 +2289,8 @@ Suite *vsph_equations_suite(void) {
   tcase_add_loop_test(tc, test_joint_walk_resumes, 0, 2);
   tcase_add_test(tc, test_joint_walk_guards);
   tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 14);
-  tcase_add_loop_test(tc, test_brookshaw_crowded, 0, 3);
-  tcase_add_test(tc, test_sweep_add3_by_hand);
+  tcase_add_loop_test(tc, test_brookshaw_crowded, 0, 6);
+  tcase_add_test(tc, test_sweep_addj_by_hand);
   tcase_add_test(tc, test_sweep_lanes_by_hand);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
   tcase_add_loop_test(tc, test_sweep_gather_threads,
