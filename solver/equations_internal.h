@@ -572,7 +572,8 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
  * the buffer's fields, is what run_sweep planned by the same SW_FIELDS
  * that sweep_block_parts makes a constant of. @p brook 1 (a Brookshaw
  * form's loops, VSPH_VISCOUS_BROOKSHAW): in 2-D with the Gaussian,
- * without delta-SPH or the parts, on a CPU with AVX-512 and in a build
+ * with delta-SPH or without, without the parts, on a CPU with AVX-512
+ * and in a build
  * that allows it (VSPH_SWEEP_X86_BROOKSHAW), the block goes to
  * vsph_sweep_x86_brookshaw2 (within rounding, solver/sweep_x86.h). */
 VSPH_CONSTS_SPECIALISE size_t

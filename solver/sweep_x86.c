@@ -192,13 +192,14 @@ AVX512 void vsph_sweep_x86_addj(double *q, int nf, const double *const f[4],
  * support are its lanes (the candidate test's x = r_j - r_i and s^2,
  * unfused, so that a pair on the support's edge is classified as in every
  * loop); the kernel factor F = dwq (-2 e^{-q^2}) and the terms of
- * vsph_pair_mgf and vsph_pair_continuity are computed in all eight lanes
- * and kept in those (c = F du.x, f = F (p_i + p_j - Kmu du.x / (s^2 +
- * eta^2)) x); i's sums (V_j c, V_j f) go on in eight lanes over its
- * vectors, summed once at its end into its entry, where i is fluid; j's
- * shares (V_i c, -V_i f) are summed over the group's receivers, in their
- * order, then added to the candidates' entries, a vector of three fields
- * at a time (add3). The same terms as the scalar loops, fused where they
+ * vsph_pair_mgf, vsph_pair_continuity and (@p delta) vsph_pair_delta are
+ * computed in all eight lanes and kept in those (c = F du.x, f = F (p_i +
+ * p_j - Kmu du.x / (s^2 + eta^2)) x, d = -2 F (rho_j - rho_i)); i's sums
+ * (V_j c, V_j f, V_j d) go on in eight lanes over its vectors, summed once
+ * at its end into its entry, where i is fluid; j's shares (V_i c, -V_i f,
+ * -V_i d) are summed over the group's receivers, in their order, then
+ * added to the candidates' entries, a vector of three or four fields at a
+ * time (addj). The same terms as the scalar loops, fused where they
  * meet and summed in another order: within rounding of them. The
  * interactions (each fluid receiver of a pair once: j's fluid by its id
  * unless the cell is clean) and the least s^2 of a pair with a fluid

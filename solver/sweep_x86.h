@@ -32,7 +32,8 @@ struct vsph_cells;
 struct vsph_equations_sweep;
 
 /* sweep_block for a Brookshaw form (MGF, VI, Cleary) in 2-D with the 3h
- * Gaussian, without delta-SPH or the parts (solver/equations_internal.h),
+ * Gaussian, with delta-SPH (@p delta 1: a fourth field) or without, not
+ * the parts (solver/equations_internal.h),
  * built for AVX-512: a cell's receivers, eight at a time, against whole
  * vectors of eight consecutive candidates of its ranges, each pair's
  * kernel and terms in the lanes, the lanes outside the support masked
