@@ -420,26 +420,26 @@ VSPH_CONSTS_SPECIALISE void sweep_own(double *q, const int dim, int nf,
  * each fluid receiver counts once (j: all of them where no ghost can be
  * among them, @p fluid_only; i: all its pairs where it is fluid, @p fi). The
  * chunk's closest pair into @p rs2 (i's, where it is fluid), or, where i
- * is a ghost, its fluid neighbours' closest into @p ms2. */
+ * is a ghost, its fluid neighbours' closest into @p ms2 (all of them where
+ * every j is fluid). */
 VSPH_CONSTS_SPECIALISE size_t sweep_count(const struct vsph_pair_chunk *b,
                                           const size_t *id, size_t n_fluid,
                                           int fluid_only, int fi, double *rs2,
-                                          double *ms2, const int closest) {
+                                          double *ms2) {
   const size_t m = b->m;
-  if (closest) { /* else the caller's (a least is the same in any order) */
-    double r = *rs2;
+  double r = *rs2;
 #pragma omp simd reduction(min : r)
-    for (size_t k = 0; k < m; k++) r = b->s2[k] < r ? b->s2[k] : r;
-    *rs2 = r;
-  }
+  for (size_t k = 0; k < m; k++) r = b->s2[k] < r ? b->s2[k] : r;
+  *rs2 = r;
   size_t nfj = m; /* fluid receivers j: all, in a set without ghosts */
   if (!fluid_only) {
     nfj = 0;
     for (size_t k = 0; k < m; k++) nfj += id[b->j[k]] < n_fluid;
   }
-  if (nfj < m && !fi)
+  if (!fi)
     for (size_t k = 0; k < m; k++)
-      if (id[b->j[k]] < n_fluid) *ms2 = b->s2[k] < *ms2 ? b->s2[k] : *ms2;
+      if (nfj == m || id[b->j[k]] < n_fluid)
+        *ms2 = b->s2[k] < *ms2 ? b->s2[k] : *ms2;
   return nfj + (fi ? m : 0);
 }
 
@@ -555,7 +555,7 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
                                   VSPH_PAIR_CHUNK_MAX);
         else
           sweep_add(buf, lo, nf, bq->j, m, js, nf);
-        total += sweep_count(bq, id, n_fluid, clean, fi, &rs2, &ms2, 1);
+        total += sweep_count(bq, id, n_fluid, clean, fi, &rs2, &ms2);
       }
       if (!fi) continue;
       ms2 = rs2 < ms2 ? rs2 : ms2;

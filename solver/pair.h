@@ -316,14 +316,12 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_fvf(const struct vsph_pair_iter *it,
 
 /** @brief Finish a chunk whose @p m neighbours' j, x and s2 are set (by
  *  the candidate test, or vsph_pair_x86_upper_cell_avx512 for walk @p it):
- *  their F and VF (@p kid, @p unit as in vsph_pair_gather_as; a negative
- *  kid leaves them unset, for a caller that computes the kernel itself)
- *  and b->m. @return m. */
+ *  their F and VF (@p kid, @p unit as in vsph_pair_gather_as) and b->m.
+ *  @return m. */
 VSPH_CONSTS_SPECIALISE size_t vsph_pair_chunk_ready(
     const struct vsph_pair_iter *it, struct vsph_pair_chunk *b, size_t m,
     int kid, const int unit) {
   b->m = m;
-  if (kid < 0) return m; /* F and VF left to the caller */
   double q2[VSPH_PAIR_CHUNK_MAX];
 #pragma omp simd
   for (size_t k = 0; k < m; k++) q2[k] = b->s2[k] * it->pk->h_inv2;
@@ -402,7 +400,7 @@ VSPH_CONSTS_SPECIALISE void vsph_pair_begin_upper_in(
  *  @param dim the loop's dimension (= pk->dim).
  *  @param kid its kernel (= pk->dfq_id): both passed by the caller so
  *  that a caller specialised on constants gets unrolled loops and the
- *  kernel inlined; a negative kid (a constant) leaves F and VF unset.
+ *  kernel inlined.
  *  @param unit 1 sets VF = F (a symmetric sweep's unit shares), 0 VF =
  *  V_j F.
  *  @param b receives the chunk.
@@ -455,7 +453,7 @@ VSPH_CONSTS_SPECIALISE size_t vsph_pair_gather_as(struct vsph_pair_iter *it,
     b->s2[k] = s2;
     q2[k] = s2 * it->pk->h_inv2;
   }
-  if (kid >= 0) vsph_pair_fvf(it, b, q2, m, kid, unit);
+  vsph_pair_fvf(it, b, q2, m, kid, unit);
   b->m = m;
   return m;
 }

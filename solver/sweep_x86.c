@@ -123,8 +123,9 @@ AVX512 void vsph_sweep_x86_expneg8(const double *x, double *y, size_t n) {
  * q[0 .. nf nl - 1] (nf fields a particle): the lanes interleaved in
  * registers (three fields by two-source permutes, four by a 4 x 4
  * transpose of pairs of lanes), then whole vectors loaded, added and
- * stored, or masked ones for a range's last particles (which must not
- * touch the next entries: another block's, or another thread's) */
+ * stored, or masked ones for a range's last particles (whose next
+ * entries, at the end of the block's buffer, are another block's, which
+ * another thread may be writing) */
 static inline __attribute__((always_inline)) AVX512 void addj(
     double *q, const int nf, __m512d A, __m512d B, __m512d C, __m512d D,
     size_t nl) {
@@ -288,28 +289,29 @@ brookshaw2_block(const struct vsph_equations_ctx *rc,
             const __m512d dux = _mm512_fmadd_pd(
                 _mm512_sub_pd(U1, _mm512_set1_pd(vy[i])), dy,
                 _mm512_mul_pd(_mm512_sub_pd(U0, _mm512_set1_pd(vx[i])), dx));
+            /* the shares of every lane; only the lanes in `in` are added
+             * anywhere below (another may hold 0/0, i's own lane, s^2 = 0,
+             * or a far candidate's non-finite values) */
             const __m512d cc = _mm512_mul_pd(F, dux);
-            /* masked: i's own lane (s^2 = 0) divides 0 by 0 */
-            const __m512d fx = _mm512_maskz_mul_pd(
-                in, F,
-                _mm512_add_pd(_mm512_add_pd(_mm512_set1_pd(pp[i]), P),
-                              _mm512_div_pd(_mm512_mul_pd(vnKmu, dux),
-                                            _mm512_add_pd(s2, veta2))));
+            const __m512d fx = _mm512_mul_pd(
+                F, _mm512_add_pd(_mm512_add_pd(_mm512_set1_pd(pp[i]), P),
+                                 _mm512_div_pd(_mm512_mul_pd(vnKmu, dux),
+                                               _mm512_add_pd(s2, veta2))));
             const __m512d f0 = _mm512_mul_pd(fx, dx),
                           f1 = _mm512_mul_pd(fx, dy);
             const __m512d Vi = _mm512_set1_pd(vol[i]);
-            JA = _mm512_fnmadd_pd(Vi, f0, JA);
-            JB = _mm512_fnmadd_pd(Vi, f1, JB);
-            JC = _mm512_fmadd_pd(Vi, cc, JC);
-            ac[q] = _mm512_fmadd_pd(V, cc, ac[q]);
-            af0[q] = _mm512_fmadd_pd(V, f0, af0[q]);
-            af1[q] = _mm512_fmadd_pd(V, f1, af1[q]);
+            JA = _mm512_mask3_fnmadd_pd(Vi, f0, JA, in);
+            JB = _mm512_mask3_fnmadd_pd(Vi, f1, JB, in);
+            JC = _mm512_mask3_fmadd_pd(Vi, cc, JC, in);
+            ac[q] = _mm512_mask3_fmadd_pd(V, cc, ac[q], in);
+            af0[q] = _mm512_mask3_fmadd_pd(V, f0, af0[q], in);
+            af1[q] = _mm512_mask3_fmadd_pd(V, f1, af1[q], in);
             if (delta) { /* d = -2 F (rho_j - rho_i), odd */
               const __m512d dd =
                   _mm512_mul_pd(_mm512_mul_pd(_mm512_set1_pd(-2.0), F),
                                 _mm512_sub_pd(R, _mm512_set1_pd(rho[i])));
-              JD = _mm512_fnmadd_pd(Vi, dd, JD);
-              ad[q] = _mm512_fmadd_pd(V, dd, ad[q]);
+              JD = _mm512_mask3_fnmadd_pd(Vi, dd, JD, in);
+              ad[q] = _mm512_mask3_fmadd_pd(V, dd, ad[q], in);
             }
           }
           if (any)

@@ -65,9 +65,11 @@ void vsph_sweep_x86_addj(double *q, int nf, const double *const f[4],
 #if defined(__x86_64__) && defined(__LP64__) && defined(__GNUC__) && \
     !defined(__clang__) && defined(__AVX2__)
 /* 1 where solver/sweep_x86.c builds the Brookshaw forms' AVX-512 sweep:
- * GCC (the compiler the project builds and tests with; clang builds
- * only the fuzzers here, without it) in a build for AVX2 (the program's
- * and the installed x86-64-v3 copy's), LP64 as VSPH_PAIR_X86 needs. */
+ * GCC in a build for AVX2 (the program's and the installed x86-64-v3
+ * copy's), LP64 as VSPH_PAIR_X86 needs. Only GCC because every build and
+ * test here uses it: clang, which builds only the fuzzers here, would
+ * take the code (target attributes, no pragma), but nothing runs it
+ * there. */
 #define VSPH_SWEEP_X86_BROOKSHAW 1
 #else
 #define VSPH_SWEEP_X86_BROOKSHAW 0

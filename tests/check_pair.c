@@ -1201,6 +1201,231 @@ START_TEST(test_sweep_scatter_simd) {
 }
 END_TEST
 
+/* The right-hand side of MGF (the 3h Gaussian, without delta-SPH) of set
+ * @p p, ids < @p nfl fluid, in @p cells: by the sweep at SIMD level
+ * @p level ("portable", "avx2", "avx512": VSPH_PAIR_SIMD, the caller's
+ * value put back) or, @p level NULL, by the gather; its rates into
+ * @p out3 (3 n: drho, then each acceleration), its closest pair into
+ * *closest and its interactions returned (SIZE_MAX where it failed). */
+static size_t mgf_at(const struct vsph_equations_props *ep,
+                     struct vsph_particles *p, size_t nfl,
+                     const struct vsph_cells *cells, struct vsph_viscous_ws *ws,
+                     const char *level, double *out3, double *closest) {
+  const size_t n = p->n;
+  struct vsph_equations_out out = {
+      .drho = out3,
+      .acc = {out3 + n, out3 + 2 * n},
+      .sweep = level ? vsph_equations_sweep_alloc() : NULL};
+  const char *was = getenv("VSPH_PAIR_SIMD");
+  char *keep = was ? strdup(was) : NULL;
+  if (level) setenv("VSPH_PAIR_SIMD", level, 1);
+  const int st = vsph_equations_rhs(ep, p, nfl, cells, ws, &out);
+  if (keep)
+    setenv("VSPH_PAIR_SIMD", keep, 1);
+  else
+    unsetenv("VSPH_PAIR_SIMD");
+  free(keep);
+  vsph_equations_sweep_free(out.sweep);
+  *closest = out.min_s2;
+  return st ? SIZE_MAX : out.interactions;
+}
+
+/* The closest pair between the set's one particle not fluid (id n - 1)
+ * and a fluid one, 1e-3 DX apart: case 0 with the one not fluid first in
+ * the cells' order (moved below a fluid particle that comes after it: a
+ * receiver all of whose pairs j > i are with fluid particles), case 1
+ * second (moved above one that comes before it). Each loop (the sweep at each
+ * SIMD level the CPU has, and the gather) gives the closest pair that a
+ * search pair by pair gives, and the interactions of a count pair by
+ * pair. Before, the sweep's four-lane and portable loops left such a
+ * receiver's pairs out of the closest pair, whose distance stops a run
+ * (Solver:min_dist). */
+START_TEST(test_closest_ghost_receiver) {
+  struct vsph_particles *p = random_set(2, 9191 + (unsigned long)_i);
+  const size_t n = p->n, nfl = n - 1;
+  struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0};
+  ck_assert_int_eq(
+      vsph_viscous_props_init(&ep.visc, VSPH_VISCOUS_MGF, &vsph_gaussian_type,
+                              2, HDX * DX, MU),
+      0);
+  struct vsph_cells *cells = vsph_cells_alloc();
+  ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
+  /* a fluid particle f that the other, moved below (above) it,
+   * precedes (follows) */
+  int placed = 0;
+  for (size_t f = n / 3; f < n && !placed; f++) {
+    size_t g = 0;
+    while (p->id[g] != nfl) g++;
+    if (p->id[f] == nfl) continue;
+    const size_t idf = p->id[f];
+    p->pos[0][g] = p->pos[0][f];
+    p->pos[1][g] = p->pos[1][f] + (_i ? 1e-3 : -1e-3) * DX;
+    ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
+    size_t ig = 0, jf = 0;
+    for (size_t i = 0; i < n; i++) {
+      if (p->id[i] == nfl) ig = i;
+      if (p->id[i] == idf) jf = i;
+    }
+    placed = _i ? ig > jf : ig < jf;
+  }
+  ck_assert(placed);
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, 2);
+  double *buf = malloc(3 * n * sizeof *buf);
+  ck_assert_ptr_nonnull(buf);
+  const double want = pair_closest(p, nfl, ep.visc.h);
+  const size_t count = pair_count(p, nfl, ep.visc.h);
+  ck_assert_double_lt(want, 2e-6 * DX * DX); /* that pair */
+  static const char *const names[] = {"portable", "avx2", "avx512", NULL};
+  for (int l = 0; l < 4; l++) {
+    if (l > 0 && l < 3 && vsph_pair_x86_simd() < l) continue;
+    double closest;
+    const size_t got = mgf_at(&ep, p, nfl, cells, ws, names[l], buf, &closest);
+    ck_assert_msg(got == count && closest == want,
+                  "%s: %zu interactions, closest %.17g; pair by pair %zu, "
+                  "%.17g",
+                  names[l] ? names[l] : "gather", got, closest, count, want);
+  }
+  free(buf);
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+}
+END_TEST
+
+/* Pairs on the support's edge, through the sweep by the portable loops
+ * and by the AVX-512 lanes of the Brookshaw forms (MGF). Cases 0-2: a
+ * particle and 240 others on a circle of radius kappa h around it (kappa h
+ * cos t, kappa h sin t from its place, so that their s^2 lie within a few
+ * units of rounding of (kappa h)^2, on either side or on it), the centre
+ * in three places, so that the circle's rounding differs. Case 3: two
+ * particles 0.14628 apart along x at h = 0.04876 (found by a search of h
+ * and of distances near 3h): s^2 below (kappa h)^2, a pair, and q^2 =
+ * s^2 / h^2 rounded to 9, so F = 0. The same pairs (the interactions
+ * those of a count pair by pair, each s^2 computed as the loops compute
+ * it), the same closest pair, and the rates within rounding (case 3: all
+ * 0). Where the CPU or build lacks the AVX-512 sweep, said and left out. */
+START_TEST(test_brookshaw_support_edge) {
+  if (!brookshaw_lanes(VSPH_VISCOUS_MGF, 2, 0, 1)) {
+    fprintf(stderr, "test_brookshaw_support_edge: no AVX-512 sweep here\n");
+    return;
+  }
+  enum { RING = 240 };
+  const size_t cap = RING + 1;
+  struct vsph_particles *p = vsph_particles_alloc(cap, 2);
+  ck_assert_ptr_nonnull(p);
+  struct vsph_cells *cells = vsph_cells_alloc();
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(cap, 2);
+  double *buf = malloc(6 * cap * sizeof *buf);
+  ck_assert_ptr_nonnull(buf);
+  for (int c = 0; c < 4; c++) {
+    const double h = c < 3 ? HDX * DX : 0.04876;
+    struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0};
+    ck_assert_int_eq(vsph_viscous_props_init(&ep.visc, VSPH_VISCOUS_MGF,
+                                             &vsph_gaussian_type, 2, h, MU),
+                     0);
+    const double R = vsph_gaussian_type.kappa * h;
+    const double x0 = 0.3 + 0.0137 * c, y0 = -0.2 + 0.0291 * c;
+    const size_t n = c < 3 ? cap : 2;
+    p->n = n;
+    for (size_t i = 0; i < n; i++) {
+      const double t = 2.0 * M_PI * (double)i / RING + 0.01 * c;
+      p->pos[0][i] = c == 3 ? 0.14628 * (double)i : i ? x0 + R * cos(t) : x0;
+      p->pos[1][i] = c == 3 ? 0.0 : i ? y0 + R * sin(t) : y0;
+      p->vel[0][i] = 0.1 * sin(3.0 * t);
+      p->vel[1][i] = 0.1 * cos(2.0 * t);
+      p->rho[i] = RHO0 * (1.0 + 0.01 * sin(5.0 * t));
+      p->m[i] = RHO0 * DX * DX;
+      p->vol[i] = p->m[i] / p->rho[i];
+      p->id[i] = i;
+    }
+    if (c == 3) { /* the premise: a pair, and q^2 rounded to 9 */
+      const double s2 = 0.14628 * 0.14628;
+      ck_assert(s2 < R * vsph_gaussian_type.kappa * h);
+      ck_assert(s2 * (1.0 / (h * h)) >= 9.0);
+    }
+    ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * h), 0);
+    double closest[2];
+    const size_t a = mgf_at(&ep, p, n, cells, ws, "portable", buf, &closest[0]),
+                 b = mgf_at(&ep, p, n, cells, ws, "avx512", buf + 3 * n,
+                            &closest[1]);
+    ck_assert_uint_eq(a, pair_count(p, n, h));
+    ck_assert_uint_eq(b, a);
+    ck_assert_double_eq(closest[1], closest[0]);
+    for (size_t f = 0; f < 3; f++) {
+      double big = 0.0;
+      for (size_t i = 0; i < n; i++) big = fmax(big, fabs(buf[f * n + i]));
+      for (size_t i = 0; i < n; i++)
+        ck_assert_msg(
+            fabs(buf[(3 + f) * n + i] - buf[f * n + i]) <= SIMD_ROUNDING * big,
+            "case %d, rate %zu of particle %zu: %.17g, portable %.17g "
+            "(largest %.3g)",
+            c, f, i, buf[(3 + f) * n + i], buf[f * n + i], big);
+    }
+  }
+  free(buf);
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+}
+END_TEST
+
+/* A non-finite velocity stays where it acts: one particle's set to
+ * infinity, every particle outside its support (s^2 >= (kappa h)^2,
+ * computed as the loops compute it) keeps finite rates, by the portable
+ * loops and by the Brookshaw forms' AVX-512 lanes (MGF), whose lanes
+ * compute every candidate of a vector, those outside the support too.
+ * Where the CPU or build lacks the AVX-512 sweep, said and left out. */
+START_TEST(test_brookshaw_nonfinite_contained) {
+  if (!brookshaw_lanes(VSPH_VISCOUS_MGF, 2, 0, 1)) {
+    fprintf(stderr,
+            "test_brookshaw_nonfinite_contained: no AVX-512 sweep here\n");
+    return;
+  }
+  struct vsph_particles *p = random_set(2, 5150);
+  const size_t n = p->n;
+  struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0};
+  ck_assert_int_eq(
+      vsph_viscous_props_init(&ep.visc, VSPH_VISCOUS_MGF, &vsph_gaussian_type,
+                              2, HDX * DX, MU),
+      0);
+  struct vsph_cells *cells = vsph_cells_alloc();
+  ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
+  const size_t bad = n / 2;
+  p->vel[0][bad] = INFINITY;
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, 2);
+  double *buf = malloc(3 * n * sizeof *buf);
+  ck_assert_ptr_nonnull(buf);
+  const double kap = vsph_gaussian_type.kappa, h = ep.visc.h,
+               H2 = kap * h * kap * h;
+  static const char *const names[] = {"portable", "avx512"};
+  for (int l = 0; l < 2; l++) {
+    double closest;
+    ck_assert_uint_ne(mgf_at(&ep, p, n, cells, ws, names[l], buf, &closest),
+                      SIZE_MAX);
+    size_t far = 0;
+    for (size_t k = 0; k < n; k++) {
+      double s2 = 0.0;
+      for (int a = 0; a < 2; a++) {
+        const double x = p->pos[a][k] - p->pos[a][bad];
+        s2 += x * x;
+      }
+      if (s2 < H2) continue;
+      far++;
+      for (size_t f = 0; f < 3; f++)
+        ck_assert_msg(isfinite(buf[f * n + k]),
+                      "%s: rate %zu of particle %zu, outside the support of "
+                      "the infinite one, is %g",
+                      names[l], f, k, buf[f * n + k]);
+    }
+    ck_assert_uint_gt(far, n / 2);
+  }
+  free(buf);
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+}
+END_TEST
+
 /* Crowded cells through the Brookshaw forms' AVX-512 sweep (form _i % 3:
  * MGF, Violeau and Issa's, Cleary's; delta-SPH from _i = 3 on), which takes
  * a cell's receivers eight at a time: a 2-D set (the ids shuffled, half of them
@@ -1304,6 +1529,7 @@ END_TEST
  * would turn to +0), though the lanes past nl hold shares too. Where the
  * CPU or build lacks the AVX-512 sweep, said and left out. */
 START_TEST(test_sweep_addj_by_hand) {
+#if VSPH_SWEEP_X86_BROOKSHAW /* else the function is not built */
   if (!brookshaw_lanes(VSPH_VISCOUS_MGF, 2, 0, 1)) {
     fprintf(stderr, "test_sweep_addj_by_hand: no AVX-512 sweep here\n");
     return;
@@ -1327,6 +1553,9 @@ START_TEST(test_sweep_addj_by_hand) {
                       "%.17g",
                       nf, nl, e, q[e], want[e]);
     }
+#else
+  fprintf(stderr, "test_sweep_addj_by_hand: no AVX-512 sweep in this build\n");
+#endif
 }
 END_TEST
 
@@ -2290,6 +2519,9 @@ Suite *vsph_equations_suite(void) {
   tcase_add_test(tc, test_joint_walk_guards);
   tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 14);
   tcase_add_loop_test(tc, test_brookshaw_crowded, 0, 6);
+  tcase_add_test(tc, test_brookshaw_support_edge);
+  tcase_add_test(tc, test_brookshaw_nonfinite_contained);
+  tcase_add_loop_test(tc, test_closest_ghost_receiver, 0, 2);
   tcase_add_test(tc, test_sweep_addj_by_hand);
   tcase_add_test(tc, test_sweep_lanes_by_hand);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
