@@ -289,9 +289,12 @@ brookshaw2_block(const struct vsph_equations_ctx *rc,
             const __m512d dux = _mm512_fmadd_pd(
                 _mm512_sub_pd(U1, _mm512_set1_pd(vy[i])), dy,
                 _mm512_mul_pd(_mm512_sub_pd(U0, _mm512_set1_pd(vx[i])), dx));
-            /* the shares of every lane; only the lanes in `in` are added
-             * anywhere below (another may hold 0/0, i's own lane, s^2 = 0,
-             * or a far candidate's non-finite values) */
+            /* the shares of every lane; only the lanes in `in` (q^2 < 9)
+             * are added anywhere below: another may hold 0/0 (i's own
+             * lane, s^2 = 0) or a far candidate's non-finite values. A
+             * pair with q^2 rounded to 9 has F = 0 and adds nothing, where
+             * the scalar loops add F x = 0 (NaN only if a value of the
+             * pair is not finite) */
             const __m512d cc = _mm512_mul_pd(F, dux);
             const __m512d fx = _mm512_mul_pd(
                 F, _mm512_add_pd(_mm512_add_pd(_mm512_set1_pd(pp[i]), P),

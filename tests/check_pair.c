@@ -1239,7 +1239,7 @@ static size_t mgf_at(const struct vsph_equations_props *ep,
  * search pair by pair gives, and the interactions of a count pair by
  * pair. Before, the sweep's four-lane and portable loops left such a
  * receiver's pairs out of the closest pair, whose distance stops a run
- * (Solver:min_dist). */
+ * (Solver:min_gap). */
 START_TEST(test_closest_ghost_receiver) {
   struct vsph_particles *p = random_set(2, 9191 + (unsigned long)_i);
   const size_t n = p->n, nfl = n - 1;
