@@ -507,6 +507,17 @@ static int brookshaw_lanes(int form, int dim, int parts, int sweep) {
           form == VSPH_VISCOUS_CLEARY);
 }
 
+/* |r_j - r_i|^2 of particles @p i and @p j of set @p p, summed as the
+ * loops sum it (component by component, from 0). */
+static double pair_s2(const struct vsph_particles *p, size_t i, size_t j) {
+  double s2 = 0.0;
+  for (int a = 0; a < p->dim; a++) {
+    const double x = p->pos[a][j] - p->pos[a][i];
+    s2 += x * x;
+  }
+  return s2;
+}
+
 /* The interactions of set @p p (ids < @p nfl fluid) at smoothing length
  * @p h with the 3h Gaussian, pair by pair: each fluid receiver of a pair
  * within the support once (exact; the loops' support radius and s^2 in
@@ -516,11 +527,7 @@ static size_t pair_count(const struct vsph_particles *p, size_t nfl, double h) {
   size_t count = 0;
   for (size_t i = 0; i < p->n; i++)
     for (size_t j = i + 1; j < p->n; j++) {
-      double s2 = 0.0;
-      for (int a = 0; a < p->dim; a++) {
-        const double x = p->pos[a][j] - p->pos[a][i];
-        s2 += x * x;
-      }
+      const double s2 = pair_s2(p, i, j);
       if (s2 < H2) count += (p->id[i] < nfl) + (p->id[j] < nfl);
     }
   return count;
@@ -535,11 +542,7 @@ static double pair_closest(const struct vsph_particles *p, size_t nfl,
   double least = INFINITY;
   for (size_t i = 0; i < p->n; i++)
     for (size_t j = i + 1; j < p->n; j++) {
-      double s2 = 0.0;
-      for (int a = 0; a < p->dim; a++) {
-        const double x = p->pos[a][j] - p->pos[a][i];
-        s2 += x * x;
-      }
+      const double s2 = pair_s2(p, i, j);
       if (s2 < H2 && (p->id[i] < nfl || p->id[j] < nfl) && s2 < least)
         least = s2;
     }
@@ -1201,13 +1204,23 @@ START_TEST(test_sweep_scatter_simd) {
 }
 END_TEST
 
-/* The right-hand side of MGF (the 3h Gaussian, without delta-SPH) of set
+/* @p ep for form @p form with the 3h Gaussian in 2-D at smoothing length
+ * @p h, delta-SPH's @p delta (0: off), the suite's rho0, c0 and mu. */
+static void brookshaw_props(struct vsph_equations_props *ep, int form, double h,
+                            double delta) {
+  *ep = (struct vsph_equations_props){.rho0 = RHO0, .c0 = C0, .delta = delta};
+  ck_assert_int_eq(
+      vsph_viscous_props_init(&ep->visc, form, &vsph_gaussian_type, 2, h, MU),
+      0);
+}
+
+/* The right-hand side (@p ep's form) of set
  * @p p, ids < @p nfl fluid, in @p cells: by the sweep at SIMD level
  * @p level ("portable", "avx2", "avx512": VSPH_PAIR_SIMD, the caller's
  * value put back) or, @p level NULL, by the gather; its rates into
  * @p out3 (3 n: drho, then each acceleration), its closest pair into
  * *closest and its interactions returned (SIZE_MAX where it failed). */
-static size_t mgf_at(const struct vsph_equations_props *ep,
+static size_t rhs_at(const struct vsph_equations_props *ep,
                      struct vsph_particles *p, size_t nfl,
                      const struct vsph_cells *cells, struct vsph_viscous_ws *ws,
                      const char *level, double *out3, double *closest) {
@@ -1243,11 +1256,8 @@ static size_t mgf_at(const struct vsph_equations_props *ep,
 START_TEST(test_closest_ghost_receiver) {
   struct vsph_particles *p = random_set(2, 9191 + (unsigned long)_i);
   const size_t n = p->n, nfl = n - 1;
-  struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0};
-  ck_assert_int_eq(
-      vsph_viscous_props_init(&ep.visc, VSPH_VISCOUS_MGF, &vsph_gaussian_type,
-                              2, HDX * DX, MU),
-      0);
+  struct vsph_equations_props ep;
+  brookshaw_props(&ep, VSPH_VISCOUS_MGF, HDX * DX, 0.0);
   struct vsph_cells *cells = vsph_cells_alloc();
   ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
   /* a fluid particle f that the other, moved below (above) it,
@@ -1279,7 +1289,7 @@ START_TEST(test_closest_ghost_receiver) {
   for (int l = 0; l < 4; l++) {
     if (l > 0 && l < 3 && vsph_pair_x86_simd() < l) continue;
     double closest;
-    const size_t got = mgf_at(&ep, p, nfl, cells, ws, names[l], buf, &closest);
+    const size_t got = rhs_at(&ep, p, nfl, cells, ws, names[l], buf, &closest);
     ck_assert_msg(got == count && closest == want,
                   "%s: %zu interactions, closest %.17g; pair by pair %zu, "
                   "%.17g",
@@ -1319,10 +1329,8 @@ START_TEST(test_brookshaw_support_edge) {
   ck_assert_ptr_nonnull(buf);
   for (int c = 0; c < 4; c++) {
     const double h = c < 3 ? HDX * DX : 0.04876;
-    struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0};
-    ck_assert_int_eq(vsph_viscous_props_init(&ep.visc, VSPH_VISCOUS_MGF,
-                                             &vsph_gaussian_type, 2, h, MU),
-                     0);
+    struct vsph_equations_props ep;
+    brookshaw_props(&ep, VSPH_VISCOUS_MGF, h, 0.0);
     const double R = vsph_gaussian_type.kappa * h;
     const double x0 = 0.3 + 0.0137 * c, y0 = -0.2 + 0.0291 * c;
     const size_t n = c < 3 ? cap : 2;
@@ -1345,8 +1353,8 @@ START_TEST(test_brookshaw_support_edge) {
     }
     ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * h), 0);
     double closest[2];
-    const size_t a = mgf_at(&ep, p, n, cells, ws, "portable", buf, &closest[0]),
-                 b = mgf_at(&ep, p, n, cells, ws, "avx512", buf + 3 * n,
+    const size_t a = rhs_at(&ep, p, n, cells, ws, "portable", buf, &closest[0]),
+                 b = rhs_at(&ep, p, n, cells, ws, "avx512", buf + 3 * n,
                             &closest[1]);
     ck_assert_uint_eq(a, pair_count(p, n, h));
     ck_assert_uint_eq(b, a);
@@ -1383,11 +1391,8 @@ START_TEST(test_brookshaw_nonfinite_contained) {
   }
   struct vsph_particles *p = random_set(2, 5150);
   const size_t n = p->n;
-  struct vsph_equations_props ep = {.rho0 = RHO0, .c0 = C0};
-  ck_assert_int_eq(
-      vsph_viscous_props_init(&ep.visc, VSPH_VISCOUS_MGF, &vsph_gaussian_type,
-                              2, HDX * DX, MU),
-      0);
+  struct vsph_equations_props ep;
+  brookshaw_props(&ep, VSPH_VISCOUS_MGF, HDX * DX, 0.0);
   struct vsph_cells *cells = vsph_cells_alloc();
   ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
   const size_t bad = n / 2;
@@ -1400,16 +1405,11 @@ START_TEST(test_brookshaw_nonfinite_contained) {
   static const char *const names[] = {"portable", "avx512"};
   for (int l = 0; l < 2; l++) {
     double closest;
-    ck_assert_uint_ne(mgf_at(&ep, p, n, cells, ws, names[l], buf, &closest),
+    ck_assert_uint_ne(rhs_at(&ep, p, n, cells, ws, names[l], buf, &closest),
                       SIZE_MAX);
     size_t far = 0;
     for (size_t k = 0; k < n; k++) {
-      double s2 = 0.0;
-      for (int a = 0; a < 2; a++) {
-        const double x = p->pos[a][k] - p->pos[a][bad];
-        s2 += x * x;
-      }
-      if (s2 < H2) continue;
+      if (pair_s2(p, bad, k) < H2) continue;
       far++;
       for (size_t f = 0; f < 3; f++)
         ck_assert_msg(isfinite(buf[f * n + k]),
@@ -1460,12 +1460,8 @@ START_TEST(test_brookshaw_crowded) {
   ck_assert_uint_eq(found, 2);
   p->pos[0][two[1]] = p->pos[0][two[0]] + 0.01 * DX;
   p->pos[1][two[1]] = p->pos[1][two[0]];
-  struct vsph_equations_props ep = {
-      .rho0 = RHO0, .c0 = C0, .delta = _i >= 3 ? DELTA : 0.0};
-  ck_assert_int_eq(
-      vsph_viscous_props_init(&ep.visc, forms[_i % 3], &vsph_gaussian_type, 2,
-                              HDX * DX, MU),
-      0);
+  struct vsph_equations_props ep;
+  brookshaw_props(&ep, forms[_i % 3], HDX * DX, _i >= 3 ? DELTA : 0.0);
   struct vsph_cells *cells = vsph_cells_alloc();
   ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
   size_t most = 0; /* the most particles in a cell */
@@ -1475,29 +1471,13 @@ START_TEST(test_brookshaw_crowded) {
   struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, 2);
   double *buf = calloc(6 * n, sizeof *buf);
   ck_assert_ptr_nonnull(buf);
-  const char *was = getenv("VSPH_PAIR_SIMD");
-  char *keep = was ? strdup(was) : NULL;
   double closest[2];
   size_t pairs[2];
-  int st[2];
   for (int level = 0; level < 2; level++) {
-    double *const o = buf + (size_t)level * 3 * n;
-    struct vsph_equations_out out = {.drho = o,
-                                     .acc = {o + n, o + 2 * n},
-                                     .sweep = vsph_equations_sweep_alloc()};
-    setenv("VSPH_PAIR_SIMD", level ? "avx512" : "portable", 1);
-    st[level] = vsph_equations_rhs(&ep, p, nfl, cells, ws, &out);
-    vsph_equations_sweep_free(out.sweep);
-    closest[level] = out.min_s2;
-    pairs[level] = out.interactions;
+    pairs[level] = rhs_at(&ep, p, nfl, cells, ws, level ? "avx512" : "portable",
+                          buf + (size_t)level * 3 * n, &closest[level]);
+    ck_assert_uint_ne(pairs[level], SIZE_MAX);
   }
-  if (keep) /* the environment back before any assertion */
-    setenv("VSPH_PAIR_SIMD", keep, 1);
-  else
-    unsetenv("VSPH_PAIR_SIMD");
-  free(keep);
-  ck_assert_int_eq(st[0], 0);
-  ck_assert_int_eq(st[1], 0);
   ck_assert_double_eq(closest[1], closest[0]);
   ck_assert_uint_eq(pairs[1], pairs[0]);
   ck_assert_uint_eq(pairs[1], pair_count(p, nfl, ep.visc.h));
