@@ -590,6 +590,8 @@ sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
       rc->pk.simd == 2)
     return vsph_sweep_x86_brookshaw2(rc, p, cells, n_fluid, sw, blk, delta,
                                      min_s2);
+#else
+  (void)brook; /* read only where the AVX-512 sweep is built */
 #endif
   return rc->parts ? sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
                                        dim, pair, delta, kid, 1)
