@@ -632,12 +632,21 @@ void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
                        const size_t *where) {
   if (!w || !p || !gh || !where) return;
   if (gh->band) rows(w, p, n_fluid, gh);
+  /* ghost g is id base + g: found by the map, not by a scan of every
+   * slot; each thread refreshes the ghosts in its even share of the
+   * slots, so that it writes no cache line another thread's ghosts are
+   * in but at the shares' ends (a share of the ghosts instead, which a
+   * wall packs into few runs of slots, cost the wave's two threads half
+   * as much again) */
   const size_t base = n_fluid + gh->keep;
-#pragma omp parallel for schedule(static)
-  for (size_t i = 0; i < p->n; i++) {
-    if (p->id[i] < base) continue;
-    const size_t g = p->id[i] - base;
-    image(w, gh, p, where[gh->src[g]], i, gh->mask[g]);
+#pragma omp parallel
+  {
+    size_t i0, i1;
+    vsph_share_even(p->n, &i0, &i1);
+    for (size_t g = 0; g < gh->n; g++) {
+      const size_t i = where[base + g];
+      if (i >= i0 && i < i1) image(w, gh, p, where[gh->src[g]], i, gh->mask[g]);
+    }
   }
 }
 
