@@ -635,9 +635,10 @@ void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
   /* ghost g is id base + g: found by the map, not by a scan of every
    * slot; each thread refreshes the ghosts in its even share of the
    * slots, so that it writes no cache line another thread's ghosts are
-   * in but at the shares' ends (a share of the ghosts instead, which a
-   * wall packs into few runs of slots, cost the wave's two threads half
-   * as much again) */
+   * in but at the shares' ends (a share of the ghosts instead cost the
+   * wave's two threads half as much again: docs/performance.md). Every
+   * thread reads the whole map of the ghosts, two loads a ghost. A slot
+   * that does not hold the ghost (a stale map) is left alone. */
   const size_t base = n_fluid + gh->keep;
 #pragma omp parallel
   {
@@ -645,7 +646,8 @@ void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
     vsph_share_even(p->n, &i0, &i1);
     for (size_t g = 0; g < gh->n; g++) {
       const size_t i = where[base + g];
-      if (i >= i0 && i < i1) image(w, gh, p, where[gh->src[g]], i, gh->mask[g]);
+      if (i >= i0 && i < i1 && p->id[i] == base + g)
+        image(w, gh, p, where[gh->src[g]], i, gh->mask[g]);
     }
   }
 }

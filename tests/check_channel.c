@@ -1007,6 +1007,109 @@ Suite *vsph_channel_suite(void) {
   return s;
 }
 
+/* The map from each id to its slot, of the set's capacity. */
+static size_t *id_map(const struct vsph_particles *p) {
+  size_t *where = malloc(p->cap * sizeof *where);
+  ck_assert_ptr_nonnull(where);
+  for (size_t i = 0; i < p->n; i++) where[p->id[i]] = i;
+  return where;
+}
+
+/* vsph_walls_update refreshes every ghost as a fresh
+ * vsph_walls_generate makes it, to the bit, at 1 and 2 threads: two
+ * walled boxes (mirror and linear extrapolation, corner images), both
+ * sorted by cell, so that the ghosts lie among the fluid; the fluid's
+ * velocity and density changed alike in both; one box's ghosts
+ * refreshed through its id map, the other's made again (same positions,
+ * so the same ghosts, appended in the same order). The fluid stays as
+ * it was. Then a stale map, one ghost's entry naming a fluid slot: that
+ * particle is left alone. */
+START_TEST(test_update_is_generate) {
+  for (int thr = 1; thr <= 2; thr++) {
+    omp_set_num_threads(thr);
+    struct vsph_walls w;
+    struct vsph_particles *a = walled_box(&w), *b = walled_box(&w);
+    const size_t nf = a->n;
+    struct vsph_walls_ghosts *ga = vsph_walls_ghosts_alloc(&w, 12000),
+                             *gb = vsph_walls_ghosts_alloc(&w, 12000);
+    struct vsph_cells *ca = vsph_cells_alloc(), *cb = vsph_cells_alloc();
+    ck_assert_int_eq(vsph_walls_generate(&w, a, nf, 0.035, ga), 0);
+    ck_assert_int_eq(vsph_walls_generate(&w, b, nf, 0.035, gb), 0);
+    ck_assert_int_eq(vsph_cells_build(ca, a, 0.035), 0);
+    ck_assert_int_eq(vsph_cells_build(cb, b, 0.035), 0);
+    struct vsph_particles *const ab[2] = {a, b};
+    for (int z = 0; z < 2; z++) /* the fluid's new state, by id */
+      for (size_t i = 0; i < ab[z]->n; i++) {
+        const size_t id = ab[z]->id[i];
+        if (id >= nf) continue;
+        ab[z]->vel[0][i] += 0.01 * cos((double)id);
+        ab[z]->vel[1][i] -= 0.02 * sin((double)id);
+        ab[z]->rho[i] = 1.0 + 1e-3 * sin(0.3 * (double)id);
+        ab[z]->e[i] = 0.25 * (double)id;
+      }
+    size_t *wb = id_map(b);
+    /* a ghost in the first and in the second half of b's slots */
+    size_t half[2] = {0, 0};
+    for (size_t g = 0; g < gb->n; g++) half[2 * wb[nf + g] >= b->n]++;
+    ck_assert_uint_gt(half[0], 0);
+    ck_assert_uint_gt(half[1], 0);
+    vsph_walls_update(&w, b, nf, gb, wb);
+    ck_assert_int_eq(vsph_walls_generate(&w, a, nf, 0.035, ga), 0);
+    ck_assert_uint_eq(ga->n, gb->n);
+    ck_assert_uint_eq(a->n, b->n);
+    size_t *wa = id_map(a);
+    double *fa[VSPH_PARTICLES_DOUBLES], *fb[VSPH_PARTICLES_DOUBLES];
+    const int nd = vsph_particles_doubles(a, fa);
+    ck_assert_int_eq(vsph_particles_doubles(b, fb), nd);
+    const double *const ga_[8] = {a->pos[0], a->pos[1], a->vel[0], a->vel[1],
+                                  a->rho,    a->p,      a->m,      a->vol},
+                        *const gb_[8] = {b->pos[0], b->pos[1], b->vel[0],
+                                         b->vel[1], b->rho,    b->p,
+                                         b->m,      b->vol};
+    /* a's ghosts by source and planes (made from the sorted fluid, they
+     * come in another order than b's): mask < 4, two planes */
+    size_t *by = malloc(4 * nf * sizeof *by);
+    ck_assert_ptr_nonnull(by);
+    for (size_t q = 0; q < 4 * nf; q++) by[q] = SIZE_MAX;
+    for (size_t g = 0; g < ga->n; g++) by[4 * ga->src[g] + ga->mask[g]] = g;
+    for (size_t id = 0; id < b->n; id++) {
+      const size_t ib = wb[id];
+      ck_assert_uint_eq(b->id[ib], id);
+      if (id < nf) { /* the fluid: every array as it was set */
+        const size_t ia = wa[id];
+        for (int q = 0; q < nd; q++)
+          ck_assert_msg(memcmp(&fa[q][ia], &fb[q][ib], sizeof(double)) == 0,
+                        "%d threads, fluid %zu, array %d", thr, id, q);
+      } else { /* a ghost: what its making sets */
+        const size_t g = id - nf, h = by[4 * gb->src[g] + gb->mask[g]];
+        ck_assert_uint_ne(h, SIZE_MAX);
+        const size_t ia = wa[nf + h];
+        for (int q = 0; q < 8; q++)
+          ck_assert_msg(memcmp(&ga_[q][ia], &gb_[q][ib], sizeof(double)) == 0,
+                        "%d threads, ghost %zu, field %d", thr, id, q);
+        ck_assert(memcmp(&a->e[ia], &b->e[ib], sizeof(double)) == 0);
+      }
+    }
+    /* a stale map: ghost 0's entry names fluid 5's slot */
+    const size_t k = wb[5];
+    const double x = b->pos[0][k], u = b->vel[0][k], r = b->rho[k];
+    wb[nf] = k;
+    vsph_walls_update(&w, b, nf, gb, wb);
+    ck_assert(b->pos[0][k] == x && b->vel[0][k] == u && b->rho[k] == r);
+    free(by);
+    free(wa);
+    free(wb);
+    vsph_cells_free(ca);
+    vsph_cells_free(cb);
+    vsph_walls_ghosts_free(ga);
+    vsph_walls_ghosts_free(gb);
+    vsph_particles_free(a);
+    vsph_particles_free(b);
+  }
+  omp_set_num_threads(2);
+}
+END_TEST
+
 /* solver/walls.c: the ghost walls' velocity (linear extrapolation, its
  * bins and seam, mirroring at start-up), the fields a regeneration keeps,
  * fixed walls and periodic rest. */
@@ -1019,6 +1122,7 @@ Suite *vsph_walls_suite(void) {
   tcase_add_test(tc, test_linear_extrapolation_seam);
   tcase_add_test(tc, test_generate_moves_every_field);
   tcase_add_test(tc, test_generate_moved_is_generate);
+  tcase_add_test(tc, test_update_is_generate);
   tcase_add_test(tc, test_tvf_needs_wall_particles);
   tcase_add_test(tc, test_periodic_rest_threads);
   tcase_add_test(tc, test_fixed_walls);
