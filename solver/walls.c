@@ -637,7 +637,7 @@ void vsph_walls_update(const struct vsph_walls *w, struct vsph_particles *p,
    * slots, so that it writes no cache line another thread's ghosts are
    * in but at the shares' ends (a share of the ghosts instead cost the
    * wave's two threads half as much again: docs/performance.md). Every
-   * thread reads the whole map of the ghosts, two loads a ghost. A slot
+   * thread reads the map entry of every ghost. A slot
    * that does not hold the ghost (a stale map) is left alone. */
   const size_t base = n_fluid + gh->keep;
 #pragma omp parallel

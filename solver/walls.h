@@ -168,8 +168,8 @@ VSPH_API int vsph_walls_generate(const struct vsph_walls *w,
                                  double reach, struct vsph_walls_ghosts *gh);
 
 /** @brief Refresh every ghost from its source. @p where maps every id of
- *  the set, the ghosts' included (ids up to n_fluid + gh->keep + gh->n),
- *  to its current index, as the set stands now (after the last
+ *  the set, the ghosts' included (every id below n_fluid + gh->keep +
+ *  gh->n), to its current index, as the set stands now (after the last
  *  vsph_walls_generate and any reordering since); a ghost whose entry
  *  names a slot that does not hold it is not refreshed. */
 VSPH_API void vsph_walls_update(const struct vsph_walls *w,
