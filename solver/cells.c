@@ -198,6 +198,35 @@ static void keys(struct vsph_cells *c, const struct vsph_particles *p,
   }
 }
 
+/* The counting sort's part for cells [q0, q1) of @p c (its keys made):
+ * their counts and starts, and the places in perm of their particles, in
+ * index order. The particles below q0 give the first start. Every
+ * particle's key is read, so each share costs two passes over the keys;
+ * the shares write disjoint counts, starts and places: the same perm as
+ * one share of all the cells. */
+static void sort_cells(struct vsph_cells *c, size_t n, size_t q0, size_t q1) {
+  const size_t *const key = c->key;
+  size_t *const count = c->count, *const start = c->start;
+  memset(count + q0, 0, (q1 - q0) * sizeof *count);
+  size_t acc = 0; /* the particles in the cells below q0 */
+  for (size_t i = 0; i < n; i++) {
+    const size_t k = key[i];
+    if (k < q0)
+      acc++;
+    else if (k < q1)
+      count[k]++;
+  }
+  for (size_t q = q0; q < q1; q++) {
+    start[q] = acc;
+    acc += count[q];
+  }
+  for (size_t i = 0; i < n; i++) {
+    const size_t k = key[i];
+    if (k >= q0 && k < q1) c->perm[start[k]++] = i;
+  }
+  for (size_t q = q0; q < q1; q++) start[q] -= count[q];
+}
+
 /* vsph_cells_build, and with @p owned, vsph_cells_build_owned: the
  * particles moved by swapping the set's arrays with the scratch block
  * (vsph_particles_move) instead of copied back. */
@@ -276,27 +305,23 @@ static int build(struct vsph_cells *c, struct vsph_particles *p, double radius,
   c->iscratch = c->key;
 
   /* Counting sort by cell key; stable, so equal keys keep input order.
-   * The keys in parallel (one a particle), the counts in order. */
+   * The keys in parallel (one a particle), then each thread sorts the
+   * particles of its even share of the cells (sort_cells), in the same
+   * region: no serial part, during which the other threads would sleep. */
   if (n >= VSPH_CELLS_PARALLEL) {
 #pragma omp parallel
     {
       size_t i0, i1;
       vsph_share_even(n, &i0, &i1);
       keys(c, p, i0, i1);
+#pragma omp barrier
+      vsph_share_even(ncells, &i0, &i1);
+      sort_cells(c, n, i0, i1);
     }
   } else {
     keys(c, p, 0, n);
+    sort_cells(c, n, 0, ncells);
   }
-  const size_t *const key = c->key;
-  memset(c->count, 0, ncells * sizeof *c->count);
-  for (size_t i = 0; i < n; i++) c->count[key[i]]++;
-  size_t acc = 0;
-  for (size_t q = 0; q < ncells; q++) {
-    c->start[q] = acc;
-    acc += c->count[q];
-  }
-  for (size_t i = 0; i < n; i++) c->perm[c->start[key[i]]++] = i;
-  for (size_t q = 0; q < ncells; q++) c->start[q] -= c->count[q];
   if (owned) { /* the keys are read: their block is the move's spare */
     void *spare = c->key;
     vsph_particles_move(p, c->perm, n, &spare);

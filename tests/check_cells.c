@@ -354,6 +354,48 @@ static struct vsph_particles *scrambled_set(size_t n, double shift) {
   return p;
 }
 
+/* The cell list's counting sort, against its definition: every
+ * particle lies in the cell whose run of slots holds it (its cell
+ * recomputed here from its position, the grid's lo, edge and counts), the
+ * runs in the cells' order, and within a cell the particles in their
+ * order before the sort (stable: named_set's ids grow with the index).
+ * At 1, 2 and 3 threads (the sort's shares of the cells: one, even, and
+ * uneven), above the size from which it runs in parallel, with many
+ * cells empty (a scrambled lattice spread over twice its span). */
+START_TEST(test_cells_sort_stable) {
+  const size_t n = VSPH_CELLS_PARALLEL + 2345;
+  for (int thr = 1; thr <= 3; thr++) {
+    omp_set_num_threads(thr);
+    struct vsph_particles *p = scrambled_set(n, 0.0);
+    for (size_t i = 0; i < n; i++) /* clusters and empty cells */
+      p->pos[0][i] *= 1.0 + (double)(i % 5 == 0);
+    struct vsph_cells *c = vsph_cells_alloc();
+    ck_assert_int_eq(vsph_cells_build(c, p, 0.025), 0);
+    size_t sum = 0, empty = 0;
+    for (size_t q = 0; q < c->ncells; q++) {
+      ck_assert_uint_eq(c->start[q], sum); /* the runs in order */
+      sum += c->count[q];
+      empty += c->count[q] == 0;
+      for (size_t i = c->start[q]; i < c->start[q] + c->count[q]; i++) {
+        size_t key = 0;
+        for (int k = 1; k >= 0; k--) {
+          size_t ck = (size_t)floor((p->pos[k][i] - c->lo[k]) / c->edge);
+          if (ck >= c->nc[k]) ck = c->nc[k] - 1;
+          key = key * c->nc[k] + ck;
+        }
+        ck_assert_uint_eq(key, q);
+        if (i > c->start[q]) ck_assert_uint_gt(p->id[i], p->id[i - 1]);
+      }
+    }
+    ck_assert_uint_eq(sum, n);
+    ck_assert_uint_gt(empty, 0);
+    vsph_cells_free(c);
+    vsph_particles_free(p);
+  }
+  omp_set_num_threads(2);
+}
+END_TEST
+
 /* vsph_cells_build_owned: the same cells, the same order and every array
  * the same as vsph_cells_build, at 1 and 2 threads, on a first build and
  * on a second one after the particles moved (the scratch block then one
@@ -498,6 +540,7 @@ Suite *vsph_cells_suite(void) {
   tcase_add_test(tc, test_cells_bad_input_refused);
   tcase_add_test(tc, test_cells_first_bad_particle_named);
   tcase_add_test(tc, test_particles_move);
+  tcase_add_test(tc, test_cells_sort_stable);
   tcase_add_test(tc, test_cells_build_owned);
   tcase_add_test(tc, test_share_every_block_once);
   suite_add_tcase(s, tc);
