@@ -205,8 +205,10 @@ static void keys(struct vsph_cells *c, const struct vsph_particles *p,
  * the shares write disjoint counts, starts and places: the same perm as
  * one share of all the cells. */
 static void sort_cells(struct vsph_cells *c, size_t n, size_t q0, size_t q1) {
+  if (q0 == q1) return; /* no cells (more threads than cells) */
   const size_t *const key = c->key;
-  size_t *const count = c->count, *const start = c->start;
+  size_t *const count = c->count, *const start = c->start,
+                *const perm = c->perm;
   memset(count + q0, 0, (q1 - q0) * sizeof *count);
   size_t acc = 0; /* the particles in the cells below q0 */
   for (size_t i = 0; i < n; i++) {
@@ -222,7 +224,7 @@ static void sort_cells(struct vsph_cells *c, size_t n, size_t q0, size_t q1) {
   }
   for (size_t i = 0; i < n; i++) {
     const size_t k = key[i];
-    if (k >= q0 && k < q1) c->perm[start[k]++] = i;
+    if (k >= q0 && k < q1) perm[start[k]++] = i;
   }
   for (size_t q = q0; q < q1; q++) start[q] -= count[q];
 }

@@ -356,42 +356,55 @@ static struct vsph_particles *scrambled_set(size_t n, double shift) {
 
 /* The cell list's counting sort, against its definition: every
  * particle lies in the cell whose run of slots holds it (its cell
- * recomputed here from its position, the grid's lo, edge and counts), the
- * runs in the cells' order, and within a cell the particles in their
- * order before the sort (stable: named_set's ids grow with the index).
- * At 1, 2 and 3 threads (the sort's shares of the cells: one, even, and
- * uneven), above the size from which it runs in parallel, with many
- * cells empty (a scrambled lattice spread over twice its span). */
+ * recomputed here from its position, the grid's lo, edge and counts, as
+ * keys() makes it), the runs in the cells' order, and within a cell the
+ * particles in their order before the sort (stable: named_set's ids grow
+ * with the index). At 1, 2 and 3 threads (the sort's shares of the
+ * cells: one, even, and uneven), above the size from which it runs in
+ * parallel, in three grids: cells of 4 to 9 particles, so that each
+ * share's first cell and the cell before it hold two or more (checked);
+ * a lattice spread over twice its span, with empty cells; and one cell,
+ * fewer cells than threads. */
 START_TEST(test_cells_sort_stable) {
   const size_t n = VSPH_CELLS_PARALLEL + 2345;
-  for (int thr = 1; thr <= 3; thr++) {
-    omp_set_num_threads(thr);
-    struct vsph_particles *p = scrambled_set(n, 0.0);
-    for (size_t i = 0; i < n; i++) /* clusters and empty cells */
-      p->pos[0][i] *= 1.0 + (double)(i % 5 == 0);
-    struct vsph_cells *c = vsph_cells_alloc();
-    ck_assert_int_eq(vsph_cells_build(c, p, 0.025), 0);
-    size_t sum = 0, empty = 0;
-    for (size_t q = 0; q < c->ncells; q++) {
-      ck_assert_uint_eq(c->start[q], sum); /* the runs in order */
-      sum += c->count[q];
-      empty += c->count[q] == 0;
-      for (size_t i = c->start[q]; i < c->start[q] + c->count[q]; i++) {
-        size_t key = 0;
-        for (int k = 1; k >= 0; k--) {
-          size_t ck = (size_t)floor((p->pos[k][i] - c->lo[k]) / c->edge);
-          if (ck >= c->nc[k]) ck = c->nc[k] - 1;
-          key = key * c->nc[k] + ck;
+  const double radius[3] = {0.05, 0.025, 1e3};
+  for (int g = 0; g < 3; g++)
+    for (int thr = 1; thr <= 3; thr++) {
+      omp_set_num_threads(thr);
+      struct vsph_particles *p = scrambled_set(n, 0.0);
+      if (g == 1) /* clusters and empty cells */
+        for (size_t i = 0; i < n; i++)
+          p->pos[0][i] *= 1.0 + (double)(i % 5 == 0);
+      struct vsph_cells *c = vsph_cells_alloc();
+      ck_assert_int_eq(vsph_cells_build(c, p, radius[g]), 0);
+      size_t sum = 0, empty = 0;
+      for (size_t q = 0; q < c->ncells; q++) {
+        ck_assert_uint_eq(c->start[q], sum); /* the runs in order */
+        sum += c->count[q];
+        empty += c->count[q] == 0;
+        for (size_t i = c->start[q]; i < c->start[q] + c->count[q]; i++) {
+          size_t key = 0;
+          for (int k = p->dim - 1; k >= 0; k--) {
+            size_t ck = (size_t)floor((p->pos[k][i] - c->lo[k]) / c->edge);
+            if (ck >= c->nc[k]) ck = c->nc[k] - 1;
+            key = key * c->nc[k] + ck;
+          }
+          ck_assert_uint_eq(key, q);
+          if (i > c->start[q]) ck_assert_uint_gt(p->id[i], p->id[i - 1]);
         }
-        ck_assert_uint_eq(key, q);
-        if (i > c->start[q]) ck_assert_uint_gt(p->id[i], p->id[i - 1]);
       }
+      ck_assert_uint_eq(sum, n);
+      if (g == 0) /* the shares' first cells and those before them */
+        for (size_t t = 1; t < (size_t)thr; t++) {
+          const size_t q = c->ncells * t / (size_t)thr;
+          ck_assert_uint_ge(c->count[q], 2);
+          ck_assert_uint_ge(c->count[q - 1], 2);
+        }
+      if (g == 1) ck_assert_uint_gt(empty, 0);
+      if (g == 2) ck_assert_uint_eq(c->ncells, 1);
+      vsph_cells_free(c);
+      vsph_particles_free(p);
     }
-    ck_assert_uint_eq(sum, n);
-    ck_assert_uint_gt(empty, 0);
-    vsph_cells_free(c);
-    vsph_particles_free(p);
-  }
   omp_set_num_threads(2);
 }
 END_TEST
