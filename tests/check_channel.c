@@ -877,6 +877,33 @@ static struct vsph_particles *walled_box(struct vsph_walls *w) {
   return p;
 }
 
+/* Two alike walled boxes (walled_box), each with room for its ghosts and
+ * a cell list of its own, for the tests that hold one way of making or
+ * refreshing the ghosts against another. */
+struct two_boxes {
+  struct vsph_walls w;
+  struct vsph_particles *p[2];
+  struct vsph_walls_ghosts *g[2];
+  struct vsph_cells *c[2];
+};
+
+static void two_boxes_make(struct two_boxes *t) {
+  for (int z = 0; z < 2; z++) {
+    t->p[z] = walled_box(&t->w);
+    t->g[z] = vsph_walls_ghosts_alloc(&t->w, 12000);
+    t->c[z] = vsph_cells_alloc();
+    ck_assert(t->g[z] && t->c[z]);
+  }
+}
+
+static void two_boxes_free(struct two_boxes *t) {
+  for (int z = 0; z < 2; z++) {
+    vsph_cells_free(t->c[z]);
+    vsph_walls_ghosts_free(t->g[z]);
+    vsph_particles_free(t->p[z]);
+  }
+}
+
 /* vsph_walls_generate_moved (the integrator's, its compaction a move of
  * the set's own arrays and its ghosts made in runs in parallel) gives the
  * set vsph_walls_generate gives: the same particles in the same order,
@@ -886,12 +913,13 @@ static struct vsph_particles *walled_box(struct vsph_walls *w) {
 START_TEST(test_generate_moved_is_generate) {
   for (int thr = 1; thr <= 2; thr++) {
     omp_set_num_threads(thr);
-    struct vsph_walls w;
-    struct vsph_particles *a = walled_box(&w), *b = walled_box(&w);
+    struct two_boxes t;
+    two_boxes_make(&t);
+    const struct vsph_walls w = t.w;
+    struct vsph_particles *const a = t.p[0], *const b = t.p[1];
+    struct vsph_walls_ghosts *const ga = t.g[0], *const gb = t.g[1];
+    struct vsph_cells *const ca = t.c[0], *const cb = t.c[1];
     const size_t nf = a->n;
-    struct vsph_walls_ghosts *ga = vsph_walls_ghosts_alloc(&w, 12000),
-                             *gb = vsph_walls_ghosts_alloc(&w, 12000);
-    struct vsph_cells *ca = vsph_cells_alloc(), *cb = vsph_cells_alloc();
     for (int round = 0; round < 2; round++) {
       size_t *perm;
       void **spare;
@@ -928,12 +956,7 @@ START_TEST(test_generate_moved_is_generate) {
           b->pos[1][i] += 0.002 * cos((double)b->id[i]);
         }
     }
-    vsph_cells_free(ca);
-    vsph_cells_free(cb);
-    vsph_walls_ghosts_free(ga);
-    vsph_walls_ghosts_free(gb);
-    vsph_particles_free(a);
-    vsph_particles_free(b);
+    two_boxes_free(&t);
   }
   omp_set_num_threads(2);
 }
@@ -1022,18 +1045,19 @@ static size_t *id_map(const struct vsph_particles *p) {
  * put in the last slot of each two-thread share; the fluid's
  * velocity and density changed alike in both; one box's ghosts
  * refreshed through its id map, the other's made again (same positions,
- * so the same ghosts, appended in the same order). The fluid stays as
- * it was. Then a stale map, one ghost's entry naming a fluid slot: that
- * particle is left alone. */
+ * so the same ghosts, matched by source and planes: made from the sorted
+ * fluid, they come in another order). The fluid stays as it was. Then a stale
+ * map, one ghost's entry naming a fluid slot: that particle is left alone. */
 START_TEST(test_update_is_generate) {
   for (int thr = 1; thr <= 2; thr++) {
     omp_set_num_threads(thr);
-    struct vsph_walls w;
-    struct vsph_particles *a = walled_box(&w), *b = walled_box(&w);
+    struct two_boxes t;
+    two_boxes_make(&t);
+    const struct vsph_walls w = t.w;
+    struct vsph_particles *const a = t.p[0], *const b = t.p[1];
+    struct vsph_walls_ghosts *const ga = t.g[0], *const gb = t.g[1];
+    struct vsph_cells *const ca = t.c[0], *const cb = t.c[1];
     const size_t nf = a->n;
-    struct vsph_walls_ghosts *ga = vsph_walls_ghosts_alloc(&w, 12000),
-                             *gb = vsph_walls_ghosts_alloc(&w, 12000);
-    struct vsph_cells *ca = vsph_cells_alloc(), *cb = vsph_cells_alloc();
     ck_assert_int_eq(vsph_walls_generate(&w, a, nf, 0.035, ga), 0);
     ck_assert_int_eq(vsph_walls_generate(&w, b, nf, 0.035, gb), 0);
     ck_assert_int_eq(vsph_cells_build(ca, a, 0.035), 0);
@@ -1125,12 +1149,7 @@ START_TEST(test_update_is_generate) {
     free(by);
     free(wa);
     free(wb);
-    vsph_cells_free(ca);
-    vsph_cells_free(cb);
-    vsph_walls_ghosts_free(ga);
-    vsph_walls_ghosts_free(gb);
-    vsph_particles_free(a);
-    vsph_particles_free(b);
+    two_boxes_free(&t);
   }
   omp_set_num_threads(2);
 }
