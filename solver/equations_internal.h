@@ -573,9 +573,9 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
  * that sweep_block_parts makes a constant of. @p brook 1 (a Brookshaw
  * form's loops, VSPH_VISCOUS_BROOKSHAW): in 2-D with the Gaussian,
  * with delta-SPH or without, without the parts, on a CPU with AVX-512
- * and in a build
- * that allows it (VSPH_SWEEP_X86_BROOKSHAW), the block goes to
- * vsph_sweep_x86_brookshaw2 (within rounding, solver/sweep_x86.h). */
+ * or AVX2 and in a build that allows it (VSPH_SWEEP_X86_BROOKSHAW), the
+ * block goes to vsph_sweep_x86_brookshaw2_avx512 or _avx2 (within
+ * rounding, solver/sweep_x86.h). */
 VSPH_CONSTS_SPECIALISE size_t
 sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
             const struct vsph_cells *cells, size_t n_fluid,
@@ -584,14 +584,18 @@ sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
             const int delta, const int kid, const int brook) {
   (void)nf; /* = SW_FIELDS(dim, delta, rc->parts): run_sweep's plan */
 #if VSPH_SWEEP_X86_BROOKSHAW
-  /* a Brookshaw form in 2-D with the Gaussian: its sweep in AVX-512
-   * lanes where the CPU has them (solver/sweep_x86.c), within rounding */
+  /* a Brookshaw form in 2-D with the Gaussian: its sweep by cell groups in
+   * AVX-512 lanes, or AVX2 ones, where the CPU has them
+   * (solver/sweep_x86.c), within rounding */
   if (brook == 1 && dim == 2 && kid == VSPH_KERNEL_DFQ_GAUSSIAN && !rc->parts &&
-      rc->pk.simd == 2)
-    return vsph_sweep_x86_brookshaw2(rc, p, cells, n_fluid, sw, blk, delta,
-                                     min_s2);
+      rc->pk.simd)
+    return rc->pk.simd == 2
+               ? vsph_sweep_x86_brookshaw2_avx512(rc, p, cells, n_fluid, sw,
+                                                  blk, delta, min_s2)
+               : vsph_sweep_x86_brookshaw2_avx2(rc, p, cells, n_fluid, sw, blk,
+                                                delta, min_s2);
 #else
-  (void)brook; /* read only where the AVX-512 sweep is built */
+  (void)brook; /* read only where the groups' sweeps are built */
 #endif
   return rc->parts ? sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
                                        dim, pair, delta, kid, 1)

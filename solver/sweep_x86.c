@@ -7,7 +7,7 @@
  * and store per field. Whole loads and stores, no masks: a masked store is
  * not forwarded to the next particle's load of the same entry. Built for
  * its instructions alone (target attribute), as solver/pair_x86.c. And the
- * Brookshaw forms' 2-D sweep for AVX-512 (vsph_sweep_x86_brookshaw2): a
+ * Brookshaw forms' 2-D sweep for AVX-512 (vsph_sweep_x86_brookshaw2_avx512): a
  * cell's receivers, eight at a time, against whole vectors of eight
  * consecutive candidates, every pair's work in the lanes whether the pair
  * lies within the support or not (masked), as GROMACS's cluster-pair
@@ -175,8 +175,8 @@ static inline __attribute__((always_inline)) AVX512 void addj(
   }
 }
 
-AVX512 void vsph_sweep_x86_addj(double *q, int nf, const double *const f[4],
-                                size_t nl) {
+AVX512 void vsph_sweep_x86_addj8(double *q, int nf, const double *const f[4],
+                                 size_t nl) {
   const __m512d D = nf == 4 ? _mm512_loadu_pd(f[3]) : _mm512_setzero_pd();
   if (nf == 4)
     addj(q, 4, _mm512_loadu_pd(f[0]), _mm512_loadu_pd(f[1]),
@@ -336,15 +336,281 @@ brookshaw2_block(const struct vsph_equations_ctx *rc,
   return total;
 }
 
-AVX512 size_t vsph_sweep_x86_brookshaw2(const struct vsph_equations_ctx *rc,
-                                        const struct vsph_particles *p,
-                                        const struct vsph_cells *cells,
-                                        size_t n_fluid,
-                                        const struct vsph_equations_sweep *sw,
-                                        size_t blk, int delta, double *min_s2) {
+AVX512 size_t vsph_sweep_x86_brookshaw2_avx512(
+    const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
+    const struct vsph_cells *cells, size_t n_fluid,
+    const struct vsph_equations_sweep *sw, size_t blk, int delta,
+    double *min_s2) {
   return delta ? brookshaw2_block(rc, p, cells, n_fluid, sw, blk, min_s2, 1)
                : brookshaw2_block(rc, p, cells, n_fluid, sw, blk, min_s2, 0);
 }
+
+/* ------------------------------------------------------------------------
+ * The same sweep with AVX2 and FMA (x86-64-v3), four lanes: where the CPU
+ * has AVX2 but not AVX-512 (pk.simd 1), or where VSPH_PAIR_SIMD=avx2 caps
+ * it. The group is still eight receivers; a vector of candidates is four.
+ * AVX2 has no mask registers: a lane's condition is a vector of all ones
+ * or all zeros, and a share outside the support is cleared by an and
+ * (not kept out of an add by a mask, as above): each share that is added
+ * anywhere, and the volumes it is multiplied by, are anded with the
+ * pairs' lanes, so that a lane outside the support adds +0 and never
+ * 0 * inf. */
+#define AVX2 __attribute__((target("avx2,fma")))
+
+/* All ones in the lanes of the last @p left < 4 entries of a run, or all
+ * four */
+static inline __attribute__((always_inline)) AVX2 __m256i
+lanes_left4(size_t left) {
+  static const long long ones[8] = {-1, -1, -1, -1, 0, 0, 0, 0};
+  return _mm256_loadu_si256(
+      (const __m256i *)(const void *)(ones + 4 - (left < 4 ? left : 4)));
+}
+
+/* expneg8 in four lanes: the same reduction, fused, and 2^{-n} built from
+ * its exponent bits as vsph_kernel_expneg builds it (AVX2 has no scalef;
+ * exact for 0 <= x <= 700, where 1023 - n is a normal exponent; another
+ * lane's result may be anything, and is cleared by the caller) */
+static inline __attribute__((always_inline)) AVX2 __m256d expneg4(__m256d x) {
+#define K(v) _mm256_set1_pd(v)
+  const __m256d shift = K(VSPH_KERNEL_EXPNEG_SHIFT);
+  const __m256d m = _mm256_fmadd_pd(x, K(VSPH_KERNEL_EXPNEG_LOG2E), shift);
+  const __m256d n = _mm256_sub_pd(m, shift);
+  const __m256d r =
+      _mm256_fnmadd_pd(n, K(VSPH_KERNEL_EXPNEG_LN2_LO),
+                       _mm256_fnmadd_pd(n, K(VSPH_KERNEL_EXPNEG_LN2_HI), x));
+  const __m256d r2 = _mm256_mul_pd(r, r), r4 = _mm256_mul_pd(r2, r2),
+                r8 = _mm256_mul_pd(r4, r4);
+  const __m256d p =
+      VSPH_KERNEL_EXPNEG_TAYLOR(_mm256_fmadd_pd, K, r, r2, r4, r8);
+#undef K
+  /* the low bits of m hold n: 2^{-n}'s exponent is 1023 - n */
+  const __m256i e = _mm256_slli_epi64(
+      _mm256_sub_epi64(
+          _mm256_set1_epi64x((long long)(1023ull + 0x0008000000000000ull)),
+          _mm256_and_si256(_mm256_castpd_si256(m),
+                           _mm256_set1_epi64x(0x000fffffffffffffll))),
+      52);
+  return _mm256_mul_pd(p, _mm256_castsi256_pd(e));
+}
+
+AVX2 void vsph_sweep_x86_expneg4(const double *x, double *y, size_t n) {
+  for (size_t k = 0; k < n; k += 4) {
+    const __m256i km = lanes_left4(n - k);
+    _mm256_maskstore_pd(y + k, km, expneg4(_mm256_maskload_pd(x + k, km)));
+  }
+}
+
+/* addj with four lanes: fields A, B, C, D (D where @p nf is 4) of
+ * @p nl <= 4 consecutive particles added to q[0 .. nf nl - 1]: four
+ * fields by a 4 x 4 transpose (a particle's entries one whole vector),
+ * three by permutes and blends into three vectors of four entries,
+ * masked past the last particle's (the next entries may be another
+ * block's) */
+static inline __attribute__((always_inline)) AVX2 void addj4(
+    double *q, const int nf, __m256d A, __m256d B, __m256d C, __m256d D,
+    size_t nl) {
+  if (nf == 4) {
+    const __m256d r[4] = {A, B, C, D};
+    __m256d o[4];
+    transpose4(r, o);
+    for (size_t l = 0; l < nl; l++)
+      _mm256_storeu_pd(q + 4 * l,
+                       _mm256_add_pd(_mm256_loadu_pd(q + 4 * l), o[l]));
+    return;
+  }
+  /* (A0 B0 C0 A1), (B1 C1 A2 B2), (C2 A3 B3 C3) */
+  const __m256d o[3] = {
+      _mm256_blend_pd(_mm256_blend_pd(_mm256_permute4x64_pd(A, 0x40),
+                                      _mm256_permute4x64_pd(B, 0x00), 0x2),
+                      _mm256_permute4x64_pd(C, 0x00), 0x4),
+      _mm256_blend_pd(_mm256_blend_pd(_mm256_permute4x64_pd(B, 0x81), C, 0x2),
+                      A, 0x4),
+      _mm256_blend_pd(_mm256_blend_pd(_mm256_permute4x64_pd(C, 0xc2),
+                                      _mm256_permute4x64_pd(A, 0x0c), 0x2),
+                      _mm256_permute4x64_pd(B, 0x30), 0x4)};
+  if (nl == 4) {
+    for (int v = 0; v < 3; v++)
+      _mm256_storeu_pd(q + 4 * v,
+                       _mm256_add_pd(_mm256_loadu_pd(q + 4 * v), o[v]));
+    return;
+  }
+  const size_t n = 3 * nl;
+  for (size_t e = 0; e < n; e += 4) {
+    const __m256i k = lanes_left4(n - e);
+    _mm256_maskstore_pd(q + e, k,
+                        _mm256_add_pd(_mm256_maskload_pd(q + e, k), o[e / 4]));
+  }
+}
+
+AVX2 void vsph_sweep_x86_addj4(double *q, int nf, const double *const f[4],
+                               size_t nl) {
+  const __m256d D = nf == 4 ? _mm256_loadu_pd(f[3]) : _mm256_setzero_pd();
+  if (nf == 4)
+    addj4(q, 4, _mm256_loadu_pd(f[0]), _mm256_loadu_pd(f[1]),
+          _mm256_loadu_pd(f[2]), D, nl);
+  else
+    addj4(q, 3, _mm256_loadu_pd(f[0]), _mm256_loadu_pd(f[1]),
+          _mm256_loadu_pd(f[2]), D, nl);
+}
+
+/* The sum of four lanes */
+static inline __attribute__((always_inline)) AVX2 double sum4(__m256d v) {
+  const __m128d s =
+      _mm_add_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
+  return _mm_cvtsd_f64(_mm_add_sd(s, _mm_unpackhi_pd(s, s)));
+}
+
+/* brookshaw2_block in four lanes: the same walk, terms and order (eight
+ * receivers a group, each vector of candidates loaded once for it), the
+ * masks vectors of all ones */
+static inline __attribute__((always_inline)) AVX2 size_t brookshaw2_block4(
+    const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
+    const struct vsph_cells *cells, size_t n_fluid,
+    const struct vsph_equations_sweep *sw, size_t blk, double *min_s2,
+    const int delta) {
+  const int nf = delta ? 4 : 3; /* SW_FIELDS(2, delta, 0) */
+  const size_t lo = sw->lo[blk];
+  double *const buf = sw->buf + sw->off[blk];
+  memset(buf, 0, (sw->hi[blk] - lo) * (size_t)nf * sizeof *buf);
+  const double *const px = p->pos[0], *const py = p->pos[1],
+                      *const vx = p->vel[0], *const vy = p->vel[1],
+                      *const pp = p->p, *const vol = p->vol,
+                      *const rho = p->rho;
+  const long long *const id = (const long long *)(const void *)p->id;
+  const int fluid_only = p->n == n_fluid; /* no ghosts nor wall particles */
+  const __m256d H2 = _mm256_set1_pd(rc->pk.H2),
+                vhi2 = _mm256_set1_pd(rc->pk.h_inv2),
+                vdwq = _mm256_set1_pd(-2.0 * rc->pk.dwq), /* -2 exact */
+      vnKmu = _mm256_set1_pd(-rc->vl.Kmu), veta2 = _mm256_set1_pd(rc->vl.eta2),
+                nine = _mm256_set1_pd(9.0);
+  /* ids and indices below 2^63, compared as signed */
+  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3),
+                vnfl = _mm256_set1_epi64x((long long)n_fluid);
+  __m256d vmin = _mm256_set1_pd(HUGE_VAL);
+  size_t total = 0;
+  for (size_t c = sw->c0[blk]; c < sw->c0[blk + 1]; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    const size_t s0 = cells->start[c], end = s0 + cells->count[c];
+    /* its ranges hold no ghost or wall particle: every j fluid */
+    const int clean = fluid_only || (sw->clean && sw->clean[c]);
+    for (size_t i0 = s0; i0 < end; i0 += 8) {
+      const size_t g = end - i0 < 8 ? end - i0 : 8; /* receivers i0 + q */
+      __m256d ac[8], af0[8], af1[8], ad[8];         /* i's sums, lane by lane */
+      int fi[8];
+      for (size_t q = 0; q < g; q++) {
+        ac[q] = af0[q] = af1[q] = ad[q] = _mm256_setzero_pd();
+        fi[q] = p->id[i0 + q] < n_fluid;
+      }
+      for (size_t r = 0; r < rg.n; r++) {
+        const size_t hi = rg.hi[r];
+        /* no receiver of the group has a pair below i0 + 1 */
+        for (size_t j = rg.lo[r] > i0 ? rg.lo[r] : i0 + 1; j < hi; j += 4) {
+          const __m256i live = lanes_left4(hi - j);
+          const __m256d X = _mm256_maskload_pd(px + j, live),
+                        Y = _mm256_maskload_pd(py + j, live),
+                        U0 = _mm256_maskload_pd(vx + j, live),
+                        U1 = _mm256_maskload_pd(vy + j, live),
+                        P = _mm256_maskload_pd(pp + j, live),
+                        V = _mm256_maskload_pd(vol + j, live),
+                        R = delta ? _mm256_maskload_pd(rho + j, live)
+                                  : _mm256_setzero_pd();
+          const __m256i J =
+              _mm256_add_epi64(_mm256_set1_epi64x((long long)j), lane);
+          const __m256i fj = /* the fluid candidates */
+              clean ? live
+                    : _mm256_and_si256(
+                          live, _mm256_cmpgt_epi64(
+                                    vnfl, _mm256_maskload_epi64(id + j, live)));
+          const unsigned fjm =
+              (unsigned)_mm256_movemask_pd(_mm256_castsi256_pd(fj));
+          __m256d JA = _mm256_setzero_pd(), JB = JA, JC = JA, JD = JA;
+          int any = 0;
+          for (size_t q = 0; q < g; q++) {
+            const size_t i = i0 + q;
+            const __m256d dx = _mm256_sub_pd(X, _mm256_set1_pd(px[i])),
+                          dy = _mm256_sub_pd(Y, _mm256_set1_pd(py[i]));
+            const __m256d s2 =
+                _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
+            /* the pairs: j > i, within the support */
+            const __m256d k = _mm256_and_pd(
+                _mm256_castsi256_pd(_mm256_and_si256(
+                    live,
+                    _mm256_cmpgt_epi64(J, _mm256_set1_epi64x((long long)i)))),
+                _mm256_cmp_pd(s2, H2, _CMP_LT_OQ));
+            const unsigned km = (unsigned)_mm256_movemask_pd(k);
+            if (!km) continue;
+            any = 1;
+            /* a fluid receiver */
+            const __m256d kf =
+                fi[q] ? k : _mm256_and_pd(k, _mm256_castsi256_pd(fj));
+            vmin = _mm256_blendv_pd(vmin, _mm256_min_pd(vmin, s2), kf);
+            total += (size_t)__builtin_popcount(km & fjm) +
+                     (fi[q] ? (size_t)__builtin_popcount(km) : 0);
+            const __m256d q2 = _mm256_mul_pd(s2, vhi2);
+            /* the lanes added anywhere: pairs with q^2 < 9 */
+            const __m256d in =
+                _mm256_and_pd(k, _mm256_cmp_pd(q2, nine, _CMP_LT_OQ));
+            const __m256d F = _mm256_mul_pd(vdwq, expneg4(q2));
+            const __m256d dux = _mm256_fmadd_pd(
+                _mm256_sub_pd(U1, _mm256_set1_pd(vy[i])), dy,
+                _mm256_mul_pd(_mm256_sub_pd(U0, _mm256_set1_pd(vx[i])), dx));
+            /* every share cleared outside `in`, and the volumes too (a
+             * far lane may hold anything, even 0/0 in i's own lane) */
+            const __m256d cc = _mm256_and_pd(_mm256_mul_pd(F, dux), in);
+            const __m256d fx = _mm256_mul_pd(
+                F, _mm256_add_pd(_mm256_add_pd(_mm256_set1_pd(pp[i]), P),
+                                 _mm256_div_pd(_mm256_mul_pd(vnKmu, dux),
+                                               _mm256_add_pd(s2, veta2))));
+            const __m256d f0 = _mm256_and_pd(_mm256_mul_pd(fx, dx), in),
+                          f1 = _mm256_and_pd(_mm256_mul_pd(fx, dy), in);
+            const __m256d Vi = _mm256_and_pd(_mm256_set1_pd(vol[i]), in),
+                          Vj = _mm256_and_pd(V, in);
+            JA = _mm256_fnmadd_pd(Vi, f0, JA);
+            JB = _mm256_fnmadd_pd(Vi, f1, JB);
+            JC = _mm256_fmadd_pd(Vi, cc, JC);
+            ac[q] = _mm256_fmadd_pd(Vj, cc, ac[q]);
+            af0[q] = _mm256_fmadd_pd(Vj, f0, af0[q]);
+            af1[q] = _mm256_fmadd_pd(Vj, f1, af1[q]);
+            if (delta) { /* d = -2 F (rho_j - rho_i), odd */
+              const __m256d dd = _mm256_and_pd(
+                  _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-2.0), F),
+                                _mm256_sub_pd(R, _mm256_set1_pd(rho[i]))),
+                  in);
+              JD = _mm256_fnmadd_pd(Vi, dd, JD);
+              ad[q] = _mm256_fmadd_pd(Vj, dd, ad[q]);
+            }
+          }
+          if (any)
+            addj4(buf + (j - lo) * (size_t)nf, nf, JA, JB, JC, JD,
+                  hi - j < 4 ? hi - j : 4);
+        }
+      }
+      for (size_t q = 0; q < g; q++) { /* a ghost's sums are never read */
+        if (!fi[q]) continue;
+        double *const e = buf + (i0 + q - lo) * (size_t)nf;
+        e[0] += sum4(af0[q]);
+        e[1] += sum4(af1[q]);
+        e[2] += sum4(ac[q]);
+        if (delta) e[3] += sum4(ad[q]);
+      }
+    }
+  }
+  const __m128d m2 =
+      _mm_min_pd(_mm256_castpd256_pd128(vmin), _mm256_extractf128_pd(vmin, 1));
+  *min_s2 = _mm_cvtsd_f64(_mm_min_sd(m2, _mm_unpackhi_pd(m2, m2)));
+  return total;
+}
+
+AVX2 size_t vsph_sweep_x86_brookshaw2_avx2(
+    const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
+    const struct vsph_cells *cells, size_t n_fluid,
+    const struct vsph_equations_sweep *sw, size_t blk, int delta,
+    double *min_s2) {
+  return delta ? brookshaw2_block4(rc, p, cells, n_fluid, sw, blk, min_s2, 1)
+               : brookshaw2_block4(rc, p, cells, n_fluid, sw, blk, min_s2, 0);
+}
+#undef AVX2
 
 #endif /* VSPH_SWEEP_X86_BROOKSHAW */
 

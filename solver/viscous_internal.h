@@ -148,9 +148,10 @@ struct vsph_viscous_loops {
   }
 
 /* 1 in the file of the Brookshaw forms (solver/forms/brookshaw.c, defined
- * before its includes): their 2-D Gaussian sweep goes by AVX-512 lanes
- * where the CPU has them (vsph_sweep_x86_brookshaw2, within rounding); 0
- * in every other family's. */
+ * before its includes): their 2-D Gaussian sweep goes by cell groups in
+ * AVX-512 or AVX2 lanes where the CPU has them
+ * (vsph_sweep_x86_brookshaw2_avx512, _avx2; within rounding); 0 in every
+ * other family's. */
 #ifndef VSPH_VISCOUS_BROOKSHAW
 #define VSPH_VISCOUS_BROOKSHAW 0
 #endif

@@ -481,30 +481,45 @@ static void twin_check(int form, int dim, int sweep,
 
 /* Whether the right-hand side of @p form in @p dim (the parts on or off,
  * the symmetric sweep or the gather) with the 3h Gaussian
- * takes the Brookshaw forms' AVX-512 sweep (solver/sweep_x86.c) in this
- * build on this CPU: MGF, Violeau & Issa's or Cleary's form in 2-D by the
- * sweep, with delta-SPH or without, without the parts. Its rates are
- * within rounding of
- * the four-lane loops', not their bits: fused multiply-adds, another
+ * takes the Brookshaw forms' sweep by cell groups (solver/sweep_x86.c)
+ * at SIMD level @p level (1 AVX2, 2 AVX-512) in this build on this CPU:
+ * MGF, Violeau & Issa's or Cleary's form in 2-D by the sweep, with
+ * delta-SPH or without, without the parts. Its rates are within rounding
+ * of the four-lane loops', not their bits: fused multiply-adds, another
  * exponential (within 1e-15 of libm, test_expneg_within_1e15_of_exp), and
- * i's sums and j's (over a group of receivers) in eight lanes. SIMD_ROUNDING
- * bounds the difference as a fraction of a rate's largest entry: each entry is
- * a sum of some 50 shares, each within a few units of rounding (2.2e-16) of the
- * other loops' (about 1e-15 relative), summed in another order, and where
- * shares cancel the difference grows with the shares against their sum:
- * the largest found is 7.1e-14 of the wave's largest horizontal force
- * (1.2e-13 in make asan's -O1 build), whose pressure shares, of the size
+ * i's sums and j's (over a group of receivers) in eight lanes or four.
+ * SIMD_ROUNDING bounds the difference as a fraction of a rate's largest entry:
+ * each entry is a sum of some 50 shares, each within a few units of rounding
+ * (2.2e-16) of the other loops' (about 1e-15 relative), summed in another
+ * order, and where shares cancel the difference grows with the shares against
+ * their sum: the largest found is 7.1e-14 of the wave's largest horizontal
+ * force (1.2e-13 in make asan's -O1 build), whose pressure shares, of the size
  * of the hydrostatic gradient, cancel to a horizontal force a sixth of
  * the largest vertical one (test_sweep_scatter_simd; 3.0e-15 at most
  * elsewhere); 1e-12 leaves a factor 8, and a wrong term or factor moves
  * a rate by 1e-9 of it or more (a referee's mutant of F by 1 + 1e-9
  * fails). */
 #define SIMD_ROUNDING 1e-12
-static int brookshaw_lanes(int form, int dim, int parts, int sweep) {
-  return VSPH_SWEEP_X86_BROOKSHAW && vsph_pair_x86_simd() == 2 && dim == 2 &&
-         !parts && sweep &&
+static int brookshaw_lanes_at(int level, int form, int dim, int parts,
+                              int sweep) {
+  return VSPH_SWEEP_X86_BROOKSHAW && level >= 1 &&
+         vsph_pair_x86_simd() >= level && dim == 2 && !parts && sweep &&
          (form == VSPH_VISCOUS_MGF || form == VSPH_VISCOUS_VI ||
           form == VSPH_VISCOUS_CLEARY);
+}
+
+/* The same at the level the CPU allows (what a run takes) */
+static int brookshaw_lanes(int form, int dim, int parts, int sweep) {
+  return brookshaw_lanes_at(vsph_pair_x86_simd(), form, dim, parts, sweep);
+}
+
+/* The levels of the groups' sweep (1 AVX2, 2 AVX-512) that this build and
+ * CPU have, by VSPH_PAIR_SIMD's names, into @p names; how many (0 to 2) */
+static int brookshaw_levels(const char *names[2]) {
+  int k = 0;
+  if (brookshaw_lanes_at(1, VSPH_VISCOUS_MGF, 2, 0, 1)) names[k++] = "avx2";
+  if (brookshaw_lanes_at(2, VSPH_VISCOUS_MGF, 2, 0, 1)) names[k++] = "avx512";
+  return k;
 }
 
 /* |r_j - r_i|^2 of particles @p i and @p j of set @p p, summed as the
@@ -570,7 +585,7 @@ static struct vsph_particles *mixed_set(int dim, unsigned long seed,
  * (finish_one, which the parts take: the same sums in the same order, so
  * the same bits; without the parts, 2-D sweeps finish by finish_rows2;
  * except where the sums without the parts come from the Brookshaw forms'
- * AVX-512 sweep, brookshaw_lanes, and the parts' from the loops it
+ * groups' sweep, brookshaw_lanes, and the parts' from the loops it
  * replaces: then within SIMD_ROUNDING);
  * the state law's p and V every particle's, as vsph_equations_pressure
  * and m/rho make them, to the bit; and the interactions those a count
@@ -627,7 +642,7 @@ START_TEST(test_rhs_leaves_others) {
      * once, counted pair by pair here: exact */
     ck_assert_uint_eq(out.interactions, pair_count(p, nfl_r[r], ep.visc.h));
   }
-  /* without the parts, the AVX-512 sweep of a Brookshaw form in 2-D
+  /* without the parts, the groups' sweep of a Brookshaw form in 2-D
    * where this build and CPU have it: the general finish's rates within
    * rounding of its (SIMD_ROUNDING of each rate's largest) */
   const int lanes = brookshaw_lanes(form, dim, parts, sweep);
@@ -1098,21 +1113,21 @@ static struct vsph_integrate *shear3(int form, int contact) {
 
 /* The symmetric sweep's adds of j's shares by AVX2
  * (solver/sweep_x86.c: three fields in 2-D, four with delta-SPH or in
- * 3-D, eight in PVWF's first pass) and the AVX-512 sweep of the
- * Brookshaw forms in 2-D (vsph_sweep_x86_brookshaw2) against the scalar
- * loops: the stretching square at 24 across after three steps, MGF with
- * and without delta-SPH, PVWF, Violeau & Issa's and Cleary's forms (eta
- * not 0), the standing wave with its ghosts (ghost receivers not
+ * 3-D, eight in PVWF's first pass) and the groups' sweeps of the
+ * Brookshaw forms in 2-D (vsph_sweep_x86_brookshaw2_avx512, _avx2)
+ * against the scalar loops: the stretching square at 24 across after three
+ * steps, MGF with and without delta-SPH, PVWF, Violeau & Issa's and Cleary's
+ * forms (eta not 0), the standing wave with its ghosts (ghost receivers not
  * counted), and the 3-D shear box (shear3)
  * with MGF, each with and without the dissipative parts (2 d + 2 fields,
  * the scalar loop at every level), evaluated with the portable loops
  * (VSPH_PAIR_SIMD=portable) and at each level the CPU has: every output
  * the same bits (each entry gets the same adds in the same order; the
  * candidate test gives the same chunks at every level,
- * test_candidates_simd), except the AVX-512 sweep's, within rounding
- * (SIMD_ROUNDING, brookshaw_lanes), the closest pair and the count
- * exact. A level the CPU lacks is said and left out (the AVX-512 sweep is
- * then not tested here; nor in a build without it,
+ * test_candidates_simd), except the groups' sweeps', within rounding
+ * (SIMD_ROUNDING, brookshaw_lanes_at), the closest pair and the count
+ * exact. A level the CPU lacks is said and left out (its groups' sweep
+ * is then not tested here; nor in a build without them,
  * VSPH_SWEEP_X86_BROOKSHAW 0). */
 START_TEST(test_sweep_scatter_simd) {
   static const struct {
@@ -1170,24 +1185,25 @@ START_TEST(test_sweep_scatter_simd) {
   else
     unsetenv("VSPH_PAIR_SIMD");
   free(keep);
-  /* the AVX-512 sweep of the Brookshaw forms (not the parts, nor
-   * delta-SPH, nor 3-D, nor PVWF) */
-  const int lanes = brookshaw_lanes(cases[c].form, dim, parts, 1);
   for (int level = 0; level <= most; level++) {
+    /* the groups' sweep of the Brookshaw forms at this level (not the
+     * parts, nor 3-D, nor PVWF) */
+    const int lanes = brookshaw_lanes_at(level, cases[c].form, dim, parts, 1);
     ck_assert_int_eq(st[level], 0);
     ck_assert_double_eq(closest[level], closest[0]); /* the closest pair */
     ck_assert_uint_eq(pairs[level], pairs[0]);       /* ghosts' not counted */
     const double *const o = buf + (size_t)level * nout * n;
-    if (level == 2 && lanes) { /* within rounding, as said above */
+    if (lanes) { /* within rounding, as said above */
       for (size_t f = 0; f < nout; f++) {
         double big = 0.0;
         for (size_t e = f * n; e < (f + 1) * n; e++)
           big = fmax(big, fabs(buf[e]));
         for (size_t e = f * n; e < (f + 1) * n; e++)
           ck_assert_msg(fabs(o[e] - buf[e]) <= SIMD_ROUNDING * big,
-                        "%s 2-D, avx512: entry %zu is %.17g, portable %.17g "
+                        "%s 2-D, %s: entry %zu is %.17g, portable %.17g "
                         "(largest %.3g)",
-                        vsph_viscous_name(cases[c].form), e, o[e], buf[e], big);
+                        vsph_viscous_name(cases[c].form), names[level], e, o[e],
+                        buf[e], big);
       }
       continue;
     }
@@ -1303,7 +1319,8 @@ START_TEST(test_closest_ghost_receiver) {
 END_TEST
 
 /* Pairs on the support's edge, through the sweep by the portable loops
- * and by the AVX-512 lanes of the Brookshaw forms (MGF). Cases 0-2: a
+ * and by the groups' sweep of the Brookshaw forms (MGF) at each level
+ * this build and CPU have (AVX2, AVX-512). Cases 0-2: a
  * particle and 240 others on a circle of radius kappa h around it (kappa h
  * cos t, kappa h sin t from its place, so that their s^2 lie within a few
  * units of rounding of (kappa h)^2, on either side or on it), the centre
@@ -1313,10 +1330,12 @@ END_TEST
  * s^2 / h^2 rounded to 9, so F = 0. The same pairs (the interactions
  * those of a count pair by pair, each s^2 computed as the loops compute
  * it), the same closest pair, and the rates within rounding (case 3: all
- * 0). Where the CPU or build lacks the AVX-512 sweep, said and left out. */
+ * 0). Where the CPU or build lacks the groups' sweep, said and left out. */
 START_TEST(test_brookshaw_support_edge) {
-  if (!brookshaw_lanes(VSPH_VISCOUS_MGF, 2, 0, 1)) {
-    fprintf(stderr, "test_brookshaw_support_edge: no AVX-512 sweep here\n");
+  const char *levels[2];
+  const int nlev = brookshaw_levels(levels);
+  if (!nlev) {
+    fprintf(stderr, "test_brookshaw_support_edge: no groups' sweep here\n");
     return;
   }
   enum { RING = 240 };
@@ -1353,21 +1372,24 @@ START_TEST(test_brookshaw_support_edge) {
     }
     ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * h), 0);
     double closest[2];
-    const size_t a = rhs_at(&ep, p, n, cells, ws, "portable", buf, &closest[0]),
-                 b = rhs_at(&ep, p, n, cells, ws, "avx512", buf + 3 * n,
-                            &closest[1]);
+    const size_t a = rhs_at(&ep, p, n, cells, ws, "portable", buf, &closest[0]);
     ck_assert_uint_eq(a, pair_count(p, n, h));
-    ck_assert_uint_eq(b, a);
-    ck_assert_double_eq(closest[1], closest[0]);
-    for (size_t f = 0; f < 3; f++) {
-      double big = 0.0;
-      for (size_t i = 0; i < n; i++) big = fmax(big, fabs(buf[f * n + i]));
-      for (size_t i = 0; i < n; i++)
-        ck_assert_msg(
-            fabs(buf[(3 + f) * n + i] - buf[f * n + i]) <= SIMD_ROUNDING * big,
-            "case %d, rate %zu of particle %zu: %.17g, portable %.17g "
-            "(largest %.3g)",
-            c, f, i, buf[(3 + f) * n + i], buf[f * n + i], big);
+    for (int l = 0; l < nlev; l++) {
+      const size_t b =
+          rhs_at(&ep, p, n, cells, ws, levels[l], buf + 3 * n, &closest[1]);
+      ck_assert_uint_eq(b, a);
+      ck_assert_double_eq(closest[1], closest[0]);
+      for (size_t f = 0; f < 3; f++) {
+        double big = 0.0;
+        for (size_t i = 0; i < n; i++) big = fmax(big, fabs(buf[f * n + i]));
+        for (size_t i = 0; i < n; i++)
+          ck_assert_msg(fabs(buf[(3 + f) * n + i] - buf[f * n + i]) <=
+                            SIMD_ROUNDING * big,
+                        "%s, case %d, rate %zu of particle %zu: %.17g, "
+                        "portable %.17g (largest %.3g)",
+                        levels[l], c, f, i, buf[(3 + f) * n + i],
+                        buf[f * n + i], big);
+      }
     }
   }
   free(buf);
@@ -1377,16 +1399,22 @@ START_TEST(test_brookshaw_support_edge) {
 }
 END_TEST
 
-/* A non-finite velocity stays where it acts: one particle's set to
- * infinity, every particle outside its support (s^2 >= (kappa h)^2,
- * computed as the loops compute it) keeps finite rates, by the portable
- * loops and by the Brookshaw forms' AVX-512 lanes (MGF), whose lanes
- * compute every candidate of a vector, those outside the support too.
- * Where the CPU or build lacks the AVX-512 sweep, said and left out. */
+/* A non-finite value stays where it acts: one particle's velocity set to
+ * infinity, and another's density to 0 (so its volume m/rho is infinite;
+ * the farthest from the first, their supports apart): every particle
+ * outside both supports (s^2 >= (kappa h)^2, computed as the loops
+ * compute it) keeps finite rates, by the portable loops and by the
+ * Brookshaw forms' groups' sweep (MGF) at each level this build and CPU
+ * have, whose lanes compute every candidate of a vector, those outside
+ * the support too (the AVX2 sweep clears the shares and the volumes
+ * outside it by an and: without it, 0 * inf). Where the CPU or build
+ * lacks the groups' sweep, said and left out. */
 START_TEST(test_brookshaw_nonfinite_contained) {
-  if (!brookshaw_lanes(VSPH_VISCOUS_MGF, 2, 0, 1)) {
+  const char *names[3] = {"portable"};
+  const int nl = 1 + brookshaw_levels(names + 1);
+  if (nl == 1) {
     fprintf(stderr,
-            "test_brookshaw_nonfinite_contained: no AVX-512 sweep here\n");
+            "test_brookshaw_nonfinite_contained: no groups' sweep here\n");
     return;
   }
   struct vsph_particles *p = random_set(2, 5150);
@@ -1395,29 +1423,38 @@ START_TEST(test_brookshaw_nonfinite_contained) {
   brookshaw_props(&ep, VSPH_VISCOUS_MGF, HDX * DX, 0.0);
   struct vsph_cells *cells = vsph_cells_alloc();
   ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
+  const double kap = vsph_gaussian_type.kappa, h = ep.visc.h,
+               H2 = kap * h * kap * h;
   const size_t bad = n / 2;
+  size_t empty = 0; /* the one whose volume is infinite: the farthest */
+  for (size_t k = 1; k < n; k++)
+    if (pair_s2(p, bad, k) > pair_s2(p, bad, empty)) empty = k;
+  ck_assert_double_gt(pair_s2(p, bad, empty), 4.0 * H2); /* apart */
   p->vel[0][bad] = INFINITY;
+  p->rho[empty] = 0.0;
   struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, 2);
   double *buf = malloc(3 * n * sizeof *buf);
   ck_assert_ptr_nonnull(buf);
-  const double kap = vsph_gaussian_type.kappa, h = ep.visc.h,
-               H2 = kap * h * kap * h;
-  static const char *const names[] = {"portable", "avx512"};
-  for (int l = 0; l < 2; l++) {
+  for (int l = 0; l < nl; l++) {
     double closest;
     ck_assert_uint_ne(rhs_at(&ep, p, n, cells, ws, names[l], buf, &closest),
                       SIZE_MAX);
-    size_t far = 0;
+    ck_assert(isinf(p->vol[empty])); /* the premise */
+    size_t far = 0, near = 0;
     for (size_t k = 0; k < n; k++) {
-      if (pair_s2(p, bad, k) < H2) continue;
+      if (pair_s2(p, bad, k) < H2 || pair_s2(p, empty, k) < H2) {
+        near += !isfinite(buf[k]); /* they do reach their neighbours */
+        continue;
+      }
       far++;
       for (size_t f = 0; f < 3; f++)
         ck_assert_msg(isfinite(buf[f * n + k]),
-                      "%s: rate %zu of particle %zu, outside the support of "
-                      "the infinite one, is %g",
+                      "%s: rate %zu of particle %zu, outside the supports "
+                      "of the infinite ones, is %g",
                       names[l], f, k, buf[f * n + k]);
     }
     ck_assert_uint_gt(far, n / 2);
+    ck_assert_uint_gt(near, 2);
   }
   free(buf);
   vsph_viscous_ws_free(ws);
@@ -1426,7 +1463,8 @@ START_TEST(test_brookshaw_nonfinite_contained) {
 }
 END_TEST
 
-/* Crowded cells through the Brookshaw forms' AVX-512 sweep (form _i % 3:
+/* Crowded cells through the Brookshaw forms' groups' sweep at each level
+ * this build and CPU have (AVX2, AVX-512; form _i % 3:
  * MGF, Violeau and Issa's, Cleary's; delta-SPH from _i = 3 on), which takes
  * a cell's receivers eight at a time: a 2-D set (the ids shuffled, half of them
  * fluid) with 42 of its particles moved onto a 7 x 6 grid of spacing DX/10, a
@@ -1437,12 +1475,14 @@ END_TEST
  * largest), the closest pair and the count exact, and the count that of a
  * count pair by pair, the closest pair that of a search pair by pair
  * (two particles not fluid placed closer than any other pair: left out).
- * Where the CPU or build lacks the AVX-512 sweep, said and left out. */
+ * Where the CPU or build lacks the groups' sweep, said and left out. */
 START_TEST(test_brookshaw_crowded) {
   static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_VI,
                               VSPH_VISCOUS_CLEARY};
-  if (!brookshaw_lanes(forms[_i % 3], 2, 0, 1)) {
-    fprintf(stderr, "test_brookshaw_crowded: no AVX-512 sweep here\n");
+  const char *levels[2];
+  const int nlev = brookshaw_levels(levels);
+  if (!nlev) {
+    fprintf(stderr, "test_brookshaw_crowded: no groups' sweep here\n");
     return;
   }
   struct vsph_particles *p = mixed_set(2, 4242 + (unsigned long)_i, 0.5, 0.11);
@@ -1473,26 +1513,28 @@ START_TEST(test_brookshaw_crowded) {
   ck_assert_ptr_nonnull(buf);
   double closest[2];
   size_t pairs[2];
-  for (int level = 0; level < 2; level++) {
-    pairs[level] = rhs_at(&ep, p, nfl, cells, ws, level ? "avx512" : "portable",
-                          buf + (size_t)level * 3 * n, &closest[level]);
-    ck_assert_uint_ne(pairs[level], SIZE_MAX);
-  }
-  ck_assert_double_eq(closest[1], closest[0]);
-  ck_assert_uint_eq(pairs[1], pairs[0]);
-  ck_assert_uint_eq(pairs[1], pair_count(p, nfl, ep.visc.h));
-  ck_assert_double_eq(closest[1], pair_closest(p, nfl, ep.visc.h));
-  for (size_t f = 0; f < 3; f++) {
-    double big = 0.0;
-    for (size_t i = 0; i < n; i++)
-      if (p->id[i] < nfl) big = fmax(big, fabs(buf[f * n + i]));
-    for (size_t i = 0; i < n; i++) {
-      if (p->id[i] >= nfl) continue;
-      const double a = buf[f * n + i], b = buf[(3 + f) * n + i];
-      ck_assert_msg(fabs(b - a) <= SIMD_ROUNDING * big,
-                    "%s, rate %zu of particle %zu: %.17g, portable %.17g "
-                    "(largest %.3g)",
-                    vsph_viscous_name(forms[_i % 3]), f, i, b, a, big);
+  pairs[0] = rhs_at(&ep, p, nfl, cells, ws, "portable", buf, &closest[0]);
+  ck_assert_uint_ne(pairs[0], SIZE_MAX);
+  ck_assert_uint_eq(pairs[0], pair_count(p, nfl, ep.visc.h));
+  ck_assert_double_eq(closest[0], pair_closest(p, nfl, ep.visc.h));
+  for (int l = 0; l < nlev; l++) {
+    pairs[1] =
+        rhs_at(&ep, p, nfl, cells, ws, levels[l], buf + 3 * n, &closest[1]);
+    ck_assert_uint_eq(pairs[1], pairs[0]);
+    ck_assert_double_eq(closest[1], closest[0]);
+    for (size_t f = 0; f < 3; f++) {
+      double big = 0.0;
+      for (size_t i = 0; i < n; i++)
+        if (p->id[i] < nfl) big = fmax(big, fabs(buf[f * n + i]));
+      for (size_t i = 0; i < n; i++) {
+        if (p->id[i] >= nfl) continue;
+        const double a = buf[f * n + i], b = buf[(3 + f) * n + i];
+        ck_assert_msg(fabs(b - a) <= SIMD_ROUNDING * big,
+                      "%s, %s, rate %zu of particle %zu: %.17g, portable "
+                      "%.17g (largest %.3g)",
+                      vsph_viscous_name(forms[_i % 3]), levels[l], f, i, b, a,
+                      big);
+      }
     }
   }
   free(buf);
@@ -1502,39 +1544,45 @@ START_TEST(test_brookshaw_crowded) {
 }
 END_TEST
 
-/* The AVX-512 sweep's adds of j's shares alone (vsph_sweep_x86_addj), of
- * 3 and 4 fields, for 1 to 8 particles: each of the first nf nl entries
- * gets its one field, the same bits as a scalar add, and every entry past
- * them is left as it was, bit for bit (one of them -0, which an add of 0
- * would turn to +0), though the lanes past nl hold shares too. Where the
- * CPU or build lacks the AVX-512 sweep, said and left out. */
+/* The groups' sweeps' adds of j's shares alone, of 3 and 4 fields: the
+ * AVX-512 one (vsph_sweep_x86_addj8) for 1 to 8 particles, the AVX2 one
+ * (vsph_sweep_x86_addj4) for 1 to 4: each of the first nf nl entries gets
+ * its one field, the same bits as a scalar add, and every entry past them
+ * is left as it was, bit for bit (one of them -0, which an add of 0 would
+ * turn to +0), though the lanes past nl hold shares too. A level the CPU
+ * or build lacks is left out (said where both are). */
 START_TEST(test_sweep_addj_by_hand) {
-#if VSPH_SWEEP_X86_BROOKSHAW /* else the function is not built */
-  if (!brookshaw_lanes(VSPH_VISCOUS_MGF, 2, 0, 1)) {
-    fprintf(stderr, "test_sweep_addj_by_hand: no AVX-512 sweep here\n");
+#if VSPH_SWEEP_X86_BROOKSHAW /* else the functions are not built */
+  const char *levels[2];
+  const int nlev = brookshaw_levels(levels);
+  if (!nlev) {
+    fprintf(stderr, "test_sweep_addj_by_hand: no groups' sweep here\n");
     return;
   }
   double f[4][8], q[40], want[40];
   const double *const fp[4] = {f[0], f[1], f[2], f[3]};
   for (int a = 0; a < 4; a++)
     for (int l = 0; l < 8; l++) f[a][l] = sin(0.7 + 1.3 * a + 0.41 * l);
-  for (int nf = 3; nf <= 4; nf++)
-    for (size_t nl = 1; nl <= 8; nl++) {
-      const size_t used = (size_t)nf * nl;
-      for (size_t e = 0; e < 40; e++) q[e] = want[e] = cos(0.9 * (double)e);
-      q[used] = want[used] = -0.0;
-      for (size_t l = 0; l < nl; l++)
-        for (int a = 0; a < nf; a++)
-          want[(size_t)nf * l + (size_t)a] += f[a][l];
-      vsph_sweep_x86_addj(q, nf, fp, nl);
-      for (size_t e = 0; e < 40; e++)
-        ck_assert_msg(memcmp(q + e, want + e, sizeof *q) == 0,
-                      "%d fields, %zu particles: entry %zu is %.17g, not "
-                      "%.17g",
-                      nf, nl, e, q[e], want[e]);
+  for (int lv = 0; lv < nlev; lv++)
+    for (int nf = 3; nf <= 4; nf++) {
+      const int wide = !strcmp(levels[lv], "avx512"); /* addj8, else addj4 */
+      for (size_t nl = 1; nl <= (wide ? 8u : 4u); nl++) {
+        const size_t used = (size_t)nf * nl;
+        for (size_t e = 0; e < 40; e++) q[e] = want[e] = cos(0.9 * (double)e);
+        q[used] = want[used] = -0.0;
+        for (size_t l = 0; l < nl; l++)
+          for (int a = 0; a < nf; a++)
+            want[(size_t)nf * l + (size_t)a] += f[a][l];
+        (wide ? vsph_sweep_x86_addj8 : vsph_sweep_x86_addj4)(q, nf, fp, nl);
+        for (size_t e = 0; e < 40; e++)
+          ck_assert_msg(memcmp(q + e, want + e, sizeof *q) == 0,
+                        "%s, %d fields, %zu particles: entry %zu is %.17g, not "
+                        "%.17g",
+                        levels[lv], nf, nl, e, q[e], want[e]);
+      }
     }
 #else
-  fprintf(stderr, "test_sweep_addj_by_hand: no AVX-512 sweep in this build\n");
+  fprintf(stderr, "test_sweep_addj_by_hand: no groups' sweep in this build\n");
 #endif
 }
 END_TEST
