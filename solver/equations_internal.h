@@ -570,32 +570,34 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
 
 /* sweep_block_parts with the parts (rc->parts) a constant too; @p nf,
  * the buffer's fields, is what run_sweep planned by the same SW_FIELDS
- * that sweep_block_parts makes a constant of. @p brook 1 (a Brookshaw
- * form's loops, VSPH_VISCOUS_BROOKSHAW): in 2-D with the Gaussian,
- * with delta-SPH or without, without the parts, on a CPU with AVX-512
- * or AVX2 and in a build that allows it (VSPH_SWEEP_X86_BROOKSHAW), the
- * block goes to vsph_sweep_x86_brookshaw2_avx512 or _avx2 (within
- * rounding, solver/sweep_x86.h). */
+ * that sweep_block_parts makes a constant of. @p groups (a family's
+ * VSPH_VISCOUS_GROUPS: VSPH_SWEEP_X86_BROOKSHAW_TERM for the Brookshaw
+ * forms' loops, VSPH_SWEEP_X86_MEAF_TERM for MEAF's, 0 for the others): in
+ * 2-D with the Gaussian, with delta-SPH or without, without the parts, on
+ * a CPU with AVX-512 or AVX2 and in a build that allows it
+ * (VSPH_SWEEP_X86_GROUPS), the block goes to
+ * vsph_sweep_x86_groups2_avx512 or _avx2 (within rounding,
+ * solver/sweep_x86.h). */
 VSPH_CONSTS_SPECIALISE size_t
 sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
             const struct vsph_cells *cells, size_t n_fluid,
             const struct vsph_equations_sweep *sw, size_t blk, int nf,
             double *min_s2, const int dim, vsph_viscous_pair_fn *const pair,
-            const int delta, const int kid, const int brook) {
+            const int delta, const int kid, const int groups) {
   (void)nf; /* = SW_FIELDS(dim, delta, rc->parts): run_sweep's plan */
-#if VSPH_SWEEP_X86_BROOKSHAW
-  /* a Brookshaw form in 2-D with the Gaussian: its sweep by cell groups in
-   * AVX-512 lanes, or AVX2 ones, where the CPU has them
+#if VSPH_SWEEP_X86_GROUPS
+  /* the Brookshaw forms or MEAF in 2-D with the Gaussian: their sweep by
+   * cell groups in AVX-512 lanes, or AVX2 ones, where the CPU has them
    * (solver/sweep_x86.c), within rounding */
-  if (brook == 1 && dim == 2 && kid == VSPH_KERNEL_DFQ_GAUSSIAN && !rc->parts &&
+  if (groups && dim == 2 && kid == VSPH_KERNEL_DFQ_GAUSSIAN && !rc->parts &&
       rc->pk.simd)
     return rc->pk.simd == 2
-               ? vsph_sweep_x86_brookshaw2_avx512(rc, p, cells, n_fluid, sw,
-                                                  blk, delta, min_s2)
-               : vsph_sweep_x86_brookshaw2_avx2(rc, p, cells, n_fluid, sw, blk,
-                                                delta, min_s2);
+               ? vsph_sweep_x86_groups2_avx512(rc, p, cells, n_fluid, sw, blk,
+                                               delta, groups, min_s2)
+               : vsph_sweep_x86_groups2_avx2(rc, p, cells, n_fluid, sw, blk,
+                                             delta, groups, min_s2);
 #else
-  (void)brook; /* read only where the groups' sweeps are built */
+  (void)groups; /* read only where the groups' sweeps are built */
 #endif
   return rc->parts ? sweep_block_parts(rc, p, cells, n_fluid, sw, blk, min_s2,
                                        dim, pair, delta, kid, 1)

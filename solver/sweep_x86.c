@@ -7,7 +7,7 @@
  * and store per field. Whole loads and stores, no masks: a masked store is
  * not forwarded to the next particle's load of the same entry. Built for
  * its instructions alone (target attribute), as solver/pair_x86.c. And the
- * Brookshaw forms' 2-D sweep for AVX-512 (vsph_sweep_x86_brookshaw2_avx512): a
+ * Brookshaw forms' 2-D sweep for AVX-512 (vsph_sweep_x86_groups2_avx512): a
  * cell's receivers, eight at a time, against whole vectors of eight
  * consecutive candidates, every pair's work in the lanes whether the pair
  * lies within the support or not (masked), as GROMACS's cluster-pair
@@ -79,7 +79,7 @@ static inline __attribute__((always_inline, target("avx2"))) void add_avx2(
   }
 }
 
-#if VSPH_SWEEP_X86_BROOKSHAW
+#if VSPH_SWEEP_X86_GROUPS
 #define AVX512 __attribute__((target("avx512f,avx512vl,avx512dq")))
 
 /* The lanes of the last @p left < 8 entries of a run, or all eight */
@@ -206,10 +206,10 @@ AVX512 void vsph_sweep_x86_addj8(double *q, int nf, const double *const f[4],
  * unless the cell is clean) and the least s^2 of a pair with a fluid
  * receiver come from the same masks, so exactly as the loops give them. */
 static inline __attribute__((always_inline)) AVX512 size_t
-brookshaw2_block(const struct vsph_equations_ctx *rc,
-                 const struct vsph_particles *p, const struct vsph_cells *cells,
-                 size_t n_fluid, const struct vsph_equations_sweep *sw,
-                 size_t blk, double *min_s2, const int delta) {
+groups2_block(const struct vsph_equations_ctx *rc,
+              const struct vsph_particles *p, const struct vsph_cells *cells,
+              size_t n_fluid, const struct vsph_equations_sweep *sw, size_t blk,
+              double *min_s2, const int delta, const int visc) {
   const int nf = delta ? 4 : 3; /* SW_FIELDS(2, delta, 0) */
   const size_t lo = sw->lo[blk];
   double *const buf = sw->buf + sw->off[blk];
@@ -223,8 +223,9 @@ brookshaw2_block(const struct vsph_equations_ctx *rc,
   const __m512d H2 = _mm512_set1_pd(rc->pk.H2),
                 vhi2 = _mm512_set1_pd(rc->pk.h_inv2),
                 vdwq = _mm512_set1_pd(-2.0 * rc->pk.dwq), /* -2 exact */
-      vnKmu = _mm512_set1_pd(-rc->vl.Kmu), veta2 = _mm512_set1_pd(rc->vl.eta2),
-                nine = _mm512_set1_pd(9.0);
+      vnc = _mm512_set1_pd(
+          visc == VSPH_SWEEP_X86_BROOKSHAW_TERM ? -rc->vl.Kmu : -rc->vl.two_mu),
+                veta2 = _mm512_set1_pd(rc->vl.eta2), nine = _mm512_set1_pd(9.0);
   const __m512i lane = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0),
                 vnfl = _mm512_set1_epi64((long long)n_fluid);
   __m512d vmin = _mm512_set1_pd(HUGE_VAL);
@@ -286,9 +287,10 @@ brookshaw2_block(const struct vsph_equations_ctx *rc,
             const __mmask8 in =
                 _mm512_mask_cmp_pd_mask(k, q2, nine, _CMP_LT_OQ);
             const __m512d F = _mm512_maskz_mul_pd(in, vdwq, expneg8(q2));
-            const __m512d dux = _mm512_fmadd_pd(
-                _mm512_sub_pd(U1, _mm512_set1_pd(vy[i])), dy,
-                _mm512_mul_pd(_mm512_sub_pd(U0, _mm512_set1_pd(vx[i])), dx));
+            const __m512d du0 = _mm512_sub_pd(U0, _mm512_set1_pd(vx[i])),
+                          du1 = _mm512_sub_pd(U1, _mm512_set1_pd(vy[i]));
+            const __m512d dux =
+                _mm512_fmadd_pd(du1, dy, _mm512_mul_pd(du0, dx));
             /* the shares of every lane; only the lanes in `in` (q^2 < 9)
              * are added anywhere below: another may hold 0/0 (i's own
              * lane, s^2 = 0) or a far candidate's non-finite values. A
@@ -296,12 +298,21 @@ brookshaw2_block(const struct vsph_equations_ctx *rc,
              * the scalar loops add F x = 0 (NaN only if a value of the
              * pair is not finite) */
             const __m512d cc = _mm512_mul_pd(F, dux);
-            const __m512d fx = _mm512_mul_pd(
-                F, _mm512_add_pd(_mm512_add_pd(_mm512_set1_pd(pp[i]), P),
-                                 _mm512_div_pd(_mm512_mul_pd(vnKmu, dux),
-                                               _mm512_add_pd(s2, veta2))));
-            const __m512d f0 = _mm512_mul_pd(fx, dx),
-                          f1 = _mm512_mul_pd(fx, dy);
+            const __m512d ps = _mm512_add_pd(_mm512_set1_pd(pp[i]), P);
+            __m512d f0, f1;
+            if (visc == VSPH_SWEEP_X86_BROOKSHAW_TERM) {
+              const __m512d fx = _mm512_mul_pd(
+                  F,
+                  _mm512_add_pd(ps, _mm512_div_pd(_mm512_mul_pd(vnc, dux),
+                                                  _mm512_add_pd(s2, veta2))));
+              f0 = _mm512_mul_pd(fx, dx);
+              f1 = _mm512_mul_pd(fx, dy);
+            } else { /* MEAF: F (p_i + p_j) x - 2 mu F du */
+              const __m512d fp = _mm512_mul_pd(F, ps),
+                            fv = _mm512_mul_pd(F, vnc);
+              f0 = _mm512_fmadd_pd(fp, dx, _mm512_mul_pd(fv, du0));
+              f1 = _mm512_fmadd_pd(fp, dy, _mm512_mul_pd(fv, du1));
+            }
             const __m512d Vi = _mm512_set1_pd(vol[i]);
             JA = _mm512_mask3_fnmadd_pd(Vi, f0, JA, in);
             JB = _mm512_mask3_fnmadd_pd(Vi, f1, JB, in);
@@ -336,13 +347,24 @@ brookshaw2_block(const struct vsph_equations_ctx *rc,
   return total;
 }
 
-AVX512 size_t vsph_sweep_x86_brookshaw2_avx512(
+/* groups2_block with @p delta and @p visc constants */
+#define GROUPS_DISPATCH(BLOCK)                                           \
+  return visc == VSPH_SWEEP_X86_BROOKSHAW_TERM                           \
+             ? (delta ? BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 1, \
+                              VSPH_SWEEP_X86_BROOKSHAW_TERM)             \
+                      : BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 0, \
+                              VSPH_SWEEP_X86_BROOKSHAW_TERM))            \
+             : (delta ? BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 1, \
+                              VSPH_SWEEP_X86_MEAF_TERM)                  \
+                      : BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 0, \
+                              VSPH_SWEEP_X86_MEAF_TERM))
+
+AVX512 size_t vsph_sweep_x86_groups2_avx512(
     const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
     const struct vsph_cells *cells, size_t n_fluid,
-    const struct vsph_equations_sweep *sw, size_t blk, int delta,
+    const struct vsph_equations_sweep *sw, size_t blk, int delta, int visc,
     double *min_s2) {
-  return delta ? brookshaw2_block(rc, p, cells, n_fluid, sw, blk, min_s2, 1)
-               : brookshaw2_block(rc, p, cells, n_fluid, sw, blk, min_s2, 0);
+  GROUPS_DISPATCH(groups2_block);
 }
 
 /* ------------------------------------------------------------------------
@@ -460,14 +482,14 @@ static inline __attribute__((always_inline)) AVX2 double sum4(__m256d v) {
   return _mm_cvtsd_f64(_mm_add_sd(s, _mm_unpackhi_pd(s, s)));
 }
 
-/* brookshaw2_block in four lanes: the same walk, terms and order (eight
+/* groups2_block in four lanes: the same walk, terms and order (eight
  * receivers a group, each vector of candidates loaded once for it), the
  * masks vectors of all ones */
-static inline __attribute__((always_inline)) AVX2 size_t brookshaw2_block4(
-    const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
-    const struct vsph_cells *cells, size_t n_fluid,
-    const struct vsph_equations_sweep *sw, size_t blk, double *min_s2,
-    const int delta) {
+static inline __attribute__((always_inline)) AVX2 size_t
+groups2_block4(const struct vsph_equations_ctx *rc,
+               const struct vsph_particles *p, const struct vsph_cells *cells,
+               size_t n_fluid, const struct vsph_equations_sweep *sw,
+               size_t blk, double *min_s2, const int delta, const int visc) {
   const int nf = delta ? 4 : 3; /* SW_FIELDS(2, delta, 0) */
   const size_t lo = sw->lo[blk];
   double *const buf = sw->buf + sw->off[blk];
@@ -481,8 +503,9 @@ static inline __attribute__((always_inline)) AVX2 size_t brookshaw2_block4(
   const __m256d H2 = _mm256_set1_pd(rc->pk.H2),
                 vhi2 = _mm256_set1_pd(rc->pk.h_inv2),
                 vdwq = _mm256_set1_pd(-2.0 * rc->pk.dwq), /* -2 exact */
-      vnKmu = _mm256_set1_pd(-rc->vl.Kmu), veta2 = _mm256_set1_pd(rc->vl.eta2),
-                nine = _mm256_set1_pd(9.0);
+      vnc = _mm256_set1_pd(
+          visc == VSPH_SWEEP_X86_BROOKSHAW_TERM ? -rc->vl.Kmu : -rc->vl.two_mu),
+                veta2 = _mm256_set1_pd(rc->vl.eta2), nine = _mm256_set1_pd(9.0);
   /* ids and indices below 2^63, compared as signed */
   const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3),
                 vnfl = _mm256_set1_epi64x((long long)n_fluid);
@@ -552,18 +575,30 @@ static inline __attribute__((always_inline)) AVX2 size_t brookshaw2_block4(
             const __m256d in =
                 _mm256_and_pd(k, _mm256_cmp_pd(q2, nine, _CMP_LT_OQ));
             const __m256d F = _mm256_mul_pd(vdwq, expneg4(q2));
-            const __m256d dux = _mm256_fmadd_pd(
-                _mm256_sub_pd(U1, _mm256_set1_pd(vy[i])), dy,
-                _mm256_mul_pd(_mm256_sub_pd(U0, _mm256_set1_pd(vx[i])), dx));
+            const __m256d du0 = _mm256_sub_pd(U0, _mm256_set1_pd(vx[i])),
+                          du1 = _mm256_sub_pd(U1, _mm256_set1_pd(vy[i]));
+            const __m256d dux =
+                _mm256_fmadd_pd(du1, dy, _mm256_mul_pd(du0, dx));
             /* every share cleared outside `in`, and the volumes too (a
              * far lane may hold anything, even 0/0 in i's own lane) */
             const __m256d cc = _mm256_and_pd(_mm256_mul_pd(F, dux), in);
-            const __m256d fx = _mm256_mul_pd(
-                F, _mm256_add_pd(_mm256_add_pd(_mm256_set1_pd(pp[i]), P),
-                                 _mm256_div_pd(_mm256_mul_pd(vnKmu, dux),
-                                               _mm256_add_pd(s2, veta2))));
-            const __m256d f0 = _mm256_and_pd(_mm256_mul_pd(fx, dx), in),
-                          f1 = _mm256_and_pd(_mm256_mul_pd(fx, dy), in);
+            const __m256d ps = _mm256_add_pd(_mm256_set1_pd(pp[i]), P);
+            __m256d f0, f1;
+            if (visc == VSPH_SWEEP_X86_BROOKSHAW_TERM) {
+              const __m256d fx = _mm256_mul_pd(
+                  F,
+                  _mm256_add_pd(ps, _mm256_div_pd(_mm256_mul_pd(vnc, dux),
+                                                  _mm256_add_pd(s2, veta2))));
+              f0 = _mm256_and_pd(_mm256_mul_pd(fx, dx), in);
+              f1 = _mm256_and_pd(_mm256_mul_pd(fx, dy), in);
+            } else { /* MEAF: F (p_i + p_j) x - 2 mu F du */
+              const __m256d fp = _mm256_mul_pd(F, ps),
+                            fv = _mm256_mul_pd(F, vnc);
+              f0 = _mm256_and_pd(
+                  _mm256_fmadd_pd(fp, dx, _mm256_mul_pd(fv, du0)), in);
+              f1 = _mm256_and_pd(
+                  _mm256_fmadd_pd(fp, dy, _mm256_mul_pd(fv, du1)), in);
+            }
             const __m256d Vi = _mm256_and_pd(_mm256_set1_pd(vol[i]), in),
                           Vj = _mm256_and_pd(V, in);
             JA = _mm256_fnmadd_pd(Vi, f0, JA);
@@ -602,17 +637,19 @@ static inline __attribute__((always_inline)) AVX2 size_t brookshaw2_block4(
   return total;
 }
 
-AVX2 size_t vsph_sweep_x86_brookshaw2_avx2(
-    const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
-    const struct vsph_cells *cells, size_t n_fluid,
-    const struct vsph_equations_sweep *sw, size_t blk, int delta,
-    double *min_s2) {
-  return delta ? brookshaw2_block4(rc, p, cells, n_fluid, sw, blk, min_s2, 1)
-               : brookshaw2_block4(rc, p, cells, n_fluid, sw, blk, min_s2, 0);
+AVX2 size_t vsph_sweep_x86_groups2_avx2(const struct vsph_equations_ctx *rc,
+                                        const struct vsph_particles *p,
+                                        const struct vsph_cells *cells,
+                                        size_t n_fluid,
+                                        const struct vsph_equations_sweep *sw,
+                                        size_t blk, int delta, int visc,
+                                        double *min_s2) {
+  GROUPS_DISPATCH(groups2_block4);
 }
+#undef GROUPS_DISPATCH
 #undef AVX2
 
-#endif /* VSPH_SWEEP_X86_BROOKSHAW */
+#endif /* VSPH_SWEEP_X86_GROUPS */
 
 __attribute__((target("avx2"))) void vsph_sweep_x86_add_avx2(
     double *buf, size_t lo, int nf, const size_t *jj, size_t m,

@@ -147,22 +147,22 @@ struct vsph_viscous_loops {
                     rc->corr, rc->tvf);                                      \
   }
 
-/* 1 in the file of the Brookshaw forms (solver/forms/brookshaw.c, defined
- * before its includes): their 2-D Gaussian sweep goes by cell groups in
- * AVX-512 or AVX2 lanes where the CPU has them
- * (vsph_sweep_x86_brookshaw2_avx512, _avx2; within rounding); 0 in every
- * other family's. */
-#ifndef VSPH_VISCOUS_BROOKSHAW
-#define VSPH_VISCOUS_BROOKSHAW 0
+/* In a family's file, defined before its includes, where its 2-D
+ * Gaussian sweep goes by cell groups in AVX-512 or AVX2 lanes on a CPU
+ * that has them (vsph_sweep_x86_groups2_avx512, _avx2; within rounding):
+ * its viscous term, VSPH_SWEEP_X86_BROOKSHAW_TERM (1, the Brookshaw
+ * forms, solver/forms/brookshaw.c) or VSPH_SWEEP_X86_MEAF_TERM (2, MEAF,
+ * solver/forms/morris.c); 0 in every other family's. */
+#ifndef VSPH_VISCOUS_GROUPS
+#define VSPH_VISCOUS_GROUPS 0
 #endif
 
 /* A sweep (sweep_block) @p fn for dimension D and delta switch DELTA, the
  * 3h Gaussian, its pair function PAIR inlined. */
-#define VSPH_VISCOUS_SWEEP(fn, PAIR, D, DELTA)                              \
-  static size_t fn(VSPH_VISCOUS_SWEEP_ARGS) {                               \
-    return sweep_block(rc, p, cells, n_fluid, sw, blk, nf, min_s2, D, PAIR, \
-                       DELTA, VSPH_KERNEL_DFQ_GAUSSIAN,                     \
-                       VSPH_VISCOUS_BROOKSHAW);                             \
+#define VSPH_VISCOUS_SWEEP(fn, PAIR, D, DELTA)                                \
+  static size_t fn(VSPH_VISCOUS_SWEEP_ARGS) {                                 \
+    return sweep_block(rc, p, cells, n_fluid, sw, blk, nf, min_s2, D, PAIR,   \
+                       DELTA, VSPH_KERNEL_DFQ_GAUSSIAN, VSPH_VISCOUS_GROUPS); \
   }
 
 /* Every specialised loop of a family whose pair function is PAIR and

@@ -159,7 +159,7 @@ START_TEST(test_expneg_within_1e15_of_exp) {
   ck_assert_double_le(expneg_worst(expneg_scalar), 1e-15);
   ck_assert(vsph_kernel_expneg(0.0) == 1.0);
   int lanes = 0; /* the lane widths tested */
-#if VSPH_SWEEP_X86_BROOKSHAW
+#if VSPH_SWEEP_X86_GROUPS
   static void (*const fn[2])(const double *, double *, size_t) = {
       vsph_sweep_x86_expneg4, vsph_sweep_x86_expneg8};
   for (int level = 1; level <= vsph_pair_x86_simd(); level++) {

@@ -502,10 +502,10 @@ static void twin_check(int form, int dim, int sweep,
 #define SIMD_ROUNDING 1e-12
 static int brookshaw_lanes_at(int level, int form, int dim, int parts,
                               int sweep) {
-  return VSPH_SWEEP_X86_BROOKSHAW && level >= 1 &&
-         vsph_pair_x86_simd() >= level && dim == 2 && !parts && sweep &&
+  return VSPH_SWEEP_X86_GROUPS && level >= 1 && vsph_pair_x86_simd() >= level &&
+         dim == 2 && !parts && sweep &&
          (form == VSPH_VISCOUS_MGF || form == VSPH_VISCOUS_VI ||
-          form == VSPH_VISCOUS_CLEARY);
+          form == VSPH_VISCOUS_CLEARY || form == VSPH_VISCOUS_MEAF);
 }
 
 /* The same at the level the CPU allows (what a run takes) */
@@ -1114,7 +1114,7 @@ static struct vsph_integrate *shear3(int form, int contact) {
 /* The symmetric sweep's adds of j's shares by AVX2
  * (solver/sweep_x86.c: three fields in 2-D, four with delta-SPH or in
  * 3-D, eight in PVWF's first pass) and the groups' sweeps of the
- * Brookshaw forms in 2-D (vsph_sweep_x86_brookshaw2_avx512, _avx2)
+ * Brookshaw forms in 2-D (vsph_sweep_x86_groups2_avx512, _avx2)
  * against the scalar loops: the stretching square at 24 across after three
  * steps, MGF with and without delta-SPH, PVWF, Violeau & Issa's and Cleary's
  * forms (eta not 0), the standing wave with its ghosts (ghost receivers not
@@ -1128,7 +1128,7 @@ static struct vsph_integrate *shear3(int form, int contact) {
  * (SIMD_ROUNDING, brookshaw_lanes_at), the closest pair and the count
  * exact. A level the CPU lacks is said and left out (its groups' sweep
  * is then not tested here; nor in a build without them,
- * VSPH_SWEEP_X86_BROOKSHAW 0). */
+ * VSPH_SWEEP_X86_GROUPS 0). */
 START_TEST(test_sweep_scatter_simd) {
   static const struct {
     int form;
@@ -1141,7 +1141,9 @@ START_TEST(test_sweep_scatter_simd) {
                {VSPH_VISCOUS_MGF, 0.0, 3, NULL},
                {VSPH_VISCOUS_VI, 0.0, 2, &vsph_stretching_square_type},
                {VSPH_VISCOUS_CLEARY, 0.0, 2, &vsph_stretching_square_type},
-               {VSPH_VISCOUS_MGF, 0.0, 2, &vsph_standing_wave_type}};
+               {VSPH_VISCOUS_MGF, 0.0, 2, &vsph_standing_wave_type},
+               {VSPH_VISCOUS_MEAF, 0.0, 2, &vsph_stretching_square_type},
+               {VSPH_VISCOUS_MEAF, 0.1, 2, &vsph_standing_wave_type}};
   const int c = _i / 2, parts = _i % 2, dim = cases[c].dim;
   struct vsph_integrate_props ip;
   struct vsph_integrate *s = dim == 3
@@ -1403,12 +1405,13 @@ END_TEST
  * infinity, and another's density to 0 (so its volume m/rho is infinite;
  * the farthest from the first, their supports apart): every particle
  * outside both supports (s^2 >= (kappa h)^2, computed as the loops
- * compute it) keeps finite rates, by the portable loops and by the
- * Brookshaw forms' groups' sweep (MGF) at each level this build and CPU
- * have, whose lanes compute every candidate of a vector, those outside
- * the support too (the AVX2 sweep clears the shares and the volumes
- * outside it by an and: without it, 0 * inf). Where the CPU or build
- * lacks the groups' sweep, said and left out. */
+ * compute it) keeps finite rates, by the portable loops and by the sweep
+ * by cell groups (case 0 MGF, 1 MEAF, whose viscous share takes the
+ * velocities' difference itself) at each level this build and CPU have,
+ * whose lanes compute every candidate of a vector, those outside the
+ * support too (the AVX2 sweep clears the shares and the volumes outside
+ * it by an and: without it, 0 * inf). Where the CPU or build lacks the
+ * groups' sweep, said and left out. */
 START_TEST(test_brookshaw_nonfinite_contained) {
   const char *names[3] = {"portable"};
   const int nl = 1 + brookshaw_levels(names + 1);
@@ -1420,7 +1423,8 @@ START_TEST(test_brookshaw_nonfinite_contained) {
   struct vsph_particles *p = random_set(2, 5150);
   const size_t n = p->n;
   struct vsph_equations_props ep;
-  brookshaw_props(&ep, VSPH_VISCOUS_MGF, HDX * DX, 0.0);
+  brookshaw_props(&ep, _i ? VSPH_VISCOUS_MEAF : VSPH_VISCOUS_MGF, HDX * DX,
+                  0.0);
   struct vsph_cells *cells = vsph_cells_alloc();
   ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
   const double kap = vsph_gaussian_type.kappa, h = ep.visc.h,
@@ -1463,10 +1467,10 @@ START_TEST(test_brookshaw_nonfinite_contained) {
 }
 END_TEST
 
-/* Crowded cells through the Brookshaw forms' groups' sweep at each level
- * this build and CPU have (AVX2, AVX-512; form _i % 3:
- * MGF, Violeau and Issa's, Cleary's; delta-SPH from _i = 3 on), which takes
- * a cell's receivers eight at a time: a 2-D set (the ids shuffled, half of them
+/* Crowded cells through the sweep by cell groups at each level this
+ * build and CPU have (AVX2, AVX-512; form _i % 4: MGF, Violeau and Issa's,
+ * Cleary's, MEAF; delta-SPH from _i = 4 on), which takes a cell's
+ * receivers eight at a time: a 2-D set (the ids shuffled, half of them
  * fluid) with 42 of its particles moved onto a 7 x 6 grid of spacing DX/10, a
  * third of a cell's edge (3h/2 = 2 DX) across, so that a cell holds more than
  * 24 of them (four groups of receivers or more) and its ranges hundreds of
@@ -1478,7 +1482,7 @@ END_TEST
  * Where the CPU or build lacks the groups' sweep, said and left out. */
 START_TEST(test_brookshaw_crowded) {
   static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_VI,
-                              VSPH_VISCOUS_CLEARY};
+                              VSPH_VISCOUS_CLEARY, VSPH_VISCOUS_MEAF};
   const char *levels[2];
   const int nlev = brookshaw_levels(levels);
   if (!nlev) {
@@ -1501,7 +1505,7 @@ START_TEST(test_brookshaw_crowded) {
   p->pos[0][two[1]] = p->pos[0][two[0]] + 0.01 * DX;
   p->pos[1][two[1]] = p->pos[1][two[0]];
   struct vsph_equations_props ep;
-  brookshaw_props(&ep, forms[_i % 3], HDX * DX, _i >= 3 ? DELTA : 0.0);
+  brookshaw_props(&ep, forms[_i % 4], HDX * DX, _i >= 4 ? DELTA : 0.0);
   struct vsph_cells *cells = vsph_cells_alloc();
   ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
   size_t most = 0; /* the most particles in a cell */
@@ -1532,7 +1536,7 @@ START_TEST(test_brookshaw_crowded) {
         ck_assert_msg(fabs(b - a) <= SIMD_ROUNDING * big,
                       "%s, %s, rate %zu of particle %zu: %.17g, portable "
                       "%.17g (largest %.3g)",
-                      vsph_viscous_name(forms[_i % 3]), levels[l], f, i, b, a,
+                      vsph_viscous_name(forms[_i % 4]), levels[l], f, i, b, a,
                       big);
       }
     }
@@ -1552,7 +1556,7 @@ END_TEST
  * turn to +0), though the lanes past nl hold shares too. A level the CPU
  * or build lacks is left out (said where both are). */
 START_TEST(test_sweep_addj_by_hand) {
-#if VSPH_SWEEP_X86_BROOKSHAW /* else the functions are not built */
+#if VSPH_SWEEP_X86_GROUPS /* else the functions are not built */
   const char *levels[2];
   const int nlev = brookshaw_levels(levels);
   if (!nlev) {
@@ -2545,10 +2549,10 @@ Suite *vsph_equations_suite(void) {
   tcase_add_loop_test(tc, test_candidates_simd, 0, 4);
   tcase_add_loop_test(tc, test_joint_walk_resumes, 0, 2);
   tcase_add_test(tc, test_joint_walk_guards);
-  tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 14);
-  tcase_add_loop_test(tc, test_brookshaw_crowded, 0, 6);
+  tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 18);
+  tcase_add_loop_test(tc, test_brookshaw_crowded, 0, 8);
   tcase_add_test(tc, test_brookshaw_support_edge);
-  tcase_add_test(tc, test_brookshaw_nonfinite_contained);
+  tcase_add_loop_test(tc, test_brookshaw_nonfinite_contained, 0, 2);
   tcase_add_loop_test(tc, test_closest_ghost_receiver, 0, 2);
   tcase_add_test(tc, test_sweep_addj_by_hand);
   tcase_add_test(tc, test_sweep_lanes_by_hand);

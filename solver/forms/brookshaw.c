@@ -3,9 +3,10 @@
 /* The descriptors of MGF, Violeau & Issa's and Cleary's forms: Brookshaw's
  * pair term with their K and eta (solver/viscous.h's struct vsph_viscous_type;
  * their pair terms in brookshaw.h). */
-/* this family's 2-D Gaussian sweep has AVX-512 lanes of its own
- * (solver/viscous_internal.h) */
-#define VSPH_VISCOUS_BROOKSHAW 1
+/* this family's 2-D Gaussian sweep goes by cell groups in AVX-512 or AVX2
+ * lanes, Brookshaw's term (solver/sweep_x86.h;
+ * solver/viscous_internal.h) */
+#define VSPH_VISCOUS_GROUPS VSPH_SWEEP_X86_BROOKSHAW_TERM
 #include "forms.h"
 
 /* The pair function (vsph_viscous_pair_fn): the term with the loop's

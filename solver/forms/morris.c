@@ -3,6 +3,10 @@
 /* The descriptors of MEAF and Morris, Fox & Zhu's regularised original
  * (solver/viscous.h's struct vsph_viscous_type; their pair terms in morris.h).
  */
+/* MEAF's 2-D Gaussian sweep goes by cell groups in AVX-512 or AVX2 lanes,
+ * MEAF's term (solver/sweep_x86.h, solver/viscous_internal.h); the
+ * family's only loops are MEAF's (MEAF-eta runs the general loop) */
+#define VSPH_VISCOUS_GROUPS VSPH_SWEEP_X86_MEAF_TERM
 #include "forms.h"
 
 /* The pair functions (vsph_viscous_pair_fn): the terms with the loop's
