@@ -14,6 +14,7 @@
  * kernels do: no candidate list, gather or scatter. */
 #include "sweep_x86.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -506,9 +507,14 @@ groups2_block4(const struct vsph_equations_ctx *rc,
       vnc = _mm256_set1_pd(
           visc == VSPH_SWEEP_X86_BROOKSHAW_TERM ? -rc->vl.Kmu : -rc->vl.two_mu),
                 veta2 = _mm256_set1_pd(rc->vl.eta2), nine = _mm256_set1_pd(9.0);
-  /* ids and indices below 2^63, compared as signed */
+  /* AVX2 compares 64-bit lanes as signed only: the indices (below the
+   * set's size) are compared as they are; the ids (any size_t: a ghost's
+   * may be 2^63 or more) with their top bits flipped, which orders them
+   * as unsigned */
   const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3),
-                vnfl = _mm256_set1_epi64x((long long)n_fluid);
+                top = _mm256_set1_epi64x(LLONG_MIN),
+                vnfl = _mm256_xor_si256(_mm256_set1_epi64x((long long)n_fluid),
+                                        top);
   __m256d vmin = _mm256_set1_pd(HUGE_VAL);
   size_t total = 0;
   for (size_t c = sw->c0[blk]; c < sw->c0[blk + 1]; c++) {
@@ -530,21 +536,25 @@ groups2_block4(const struct vsph_equations_ctx *rc,
         /* no receiver of the group has a pair below i0 + 1 */
         for (size_t j = rg.lo[r] > i0 ? rg.lo[r] : i0 + 1; j < hi; j += 4) {
           const __m256i live = lanes_left4(hi - j);
-          const __m256d X = _mm256_maskload_pd(px + j, live),
-                        Y = _mm256_maskload_pd(py + j, live),
-                        U0 = _mm256_maskload_pd(vx + j, live),
-                        U1 = _mm256_maskload_pd(vy + j, live),
-                        P = _mm256_maskload_pd(pp + j, live),
-                        V = _mm256_maskload_pd(vol + j, live),
-                        R = delta ? _mm256_maskload_pd(rho + j, live)
-                                  : _mm256_setzero_pd();
+          /* whole vectors by plain loads, a range's last by masked ones
+           * (which never read past it) */
+          const int whole = hi - j >= 4;
+#define LOAD4(a) (whole ? _mm256_loadu_pd(a) : _mm256_maskload_pd((a), live))
+          const __m256d X = LOAD4(px + j), Y = LOAD4(py + j),
+                        U0 = LOAD4(vx + j), U1 = LOAD4(vy + j),
+                        P = LOAD4(pp + j), V = LOAD4(vol + j),
+                        R = delta ? LOAD4(rho + j) : _mm256_setzero_pd();
+#undef LOAD4
           const __m256i J =
               _mm256_add_epi64(_mm256_set1_epi64x((long long)j), lane);
           const __m256i fj = /* the fluid candidates */
-              clean ? live
-                    : _mm256_and_si256(
-                          live, _mm256_cmpgt_epi64(
-                                    vnfl, _mm256_maskload_epi64(id + j, live)));
+              clean
+                  ? live
+                  : _mm256_and_si256(
+                        live, _mm256_cmpgt_epi64(
+                                  vnfl, _mm256_xor_si256(
+                                            _mm256_maskload_epi64(id + j, live),
+                                            top)));
           const unsigned fjm =
               (unsigned)_mm256_movemask_pd(_mm256_castsi256_pd(fj));
           __m256d JA = _mm256_setzero_pd(), JB = JA, JC = JA, JD = JA;

@@ -1216,6 +1216,16 @@ START_TEST(test_sweep_scatter_simd) {
                     vsph_viscous_name(cases[c].form), dim, cases[c].delta,
                     parts, names[level], e, o[e], buf[e]);
   }
+  /* each level its own kernel: the AVX2 and AVX-512 sweeps sum in four
+   * lanes and in eight, so some of these sums differ in their last bits
+   * (a dispatch that took one kernel at both levels would give the same
+   * bits) */
+  if (brookshaw_lanes_at(1, cases[c].form, dim, parts, 1) &&
+      brookshaw_lanes_at(2, cases[c].form, dim, parts, 1))
+    ck_assert_msg(
+        memcmp(buf + nout * n, buf + 2 * nout * n, nout * n * sizeof *buf) != 0,
+        "%s: the AVX2 and AVX-512 levels gave the same bits",
+        vsph_viscous_name(cases[c].form));
   vsph_equations_sweep_free(sw);
   free(buf);
   vsph_integrate_free(s);
@@ -1479,7 +1489,10 @@ END_TEST
  * largest), the closest pair and the count exact, and the count that of a
  * count pair by pair, the closest pair that of a search pair by pair
  * (two particles not fluid placed closer than any other pair: left out).
- * Where the CPU or build lacks the groups' sweep, said and left out. */
+ * The set lies 40 h from the origin (where the lanes past a range's end
+ * meet e^{-q^2} of q^2 > 709, whose 2^{-n} is not a number's) and its
+ * ids not fluid run down from SIZE_MAX (2^63 and above). Where the CPU
+ * or build lacks the groups' sweep, said and left out. */
 START_TEST(test_brookshaw_crowded) {
   static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_VI,
                               VSPH_VISCOUS_CLEARY, VSPH_VISCOUS_MEAF};
@@ -1504,6 +1517,15 @@ START_TEST(test_brookshaw_crowded) {
   ck_assert_uint_eq(found, 2);
   p->pos[0][two[1]] = p->pos[0][two[0]] + 0.01 * DX;
   p->pos[1][two[1]] = p->pos[1][two[0]];
+  /* the set 40 h from the origin along x: a masked lane past a range's
+   * end loads x = 0, so its q^2 = (x_i/h)^2 > 1600 and its e^{-q^2} is
+   * anything (2^{-n} from exponent bits wraps beyond q^2 ~ 709): cleared
+   * or not, it must add nothing */
+  for (size_t i = 0; i < n; i++) p->pos[0][i] += 40.0 * HDX * DX;
+  /* the ids not fluid from SIZE_MAX down (ids are any size_t: at 2^63 and
+   * above, a signed compare of 64-bit lanes would take them for fluid) */
+  for (size_t i = 0; i < n; i++)
+    if (p->id[i] >= nfl) p->id[i] = SIZE_MAX - (p->id[i] - nfl);
   struct vsph_equations_props ep;
   brookshaw_props(&ep, forms[_i % 4], HDX * DX, _i >= 4 ? DELTA : 0.0);
   struct vsph_cells *cells = vsph_cells_alloc();
@@ -1587,6 +1609,96 @@ START_TEST(test_sweep_addj_by_hand) {
     }
 #else
   fprintf(stderr, "test_sweep_addj_by_hand: no groups' sweep in this build\n");
+#endif
+}
+END_TEST
+
+/* The sweep by cell groups writes within its block's buffer and nowhere
+ * else (the next block's buffer follows it, and another thread may be
+ * writing there): each level's kernel (vsph_sweep_x86_groups2_avx2,
+ * _avx512) called directly on one block that holds every cell of a set,
+ * its buffer followed by sentinels of -0 (which an add of +0 would turn
+ * to +0), for eight sizes of the set (one particle fewer each time, so
+ * that its last range ends at every lane of a vector): every sentinel
+ * keeps its bits, the interactions are those of a count pair by pair and
+ * the closest pair that of a search pair by pair; where both levels run,
+ * their sums agree within SIMD_ROUNDING of each field's largest. Case
+ * _i: MGF (0, 1) or MEAF (2, 3), without delta-SPH or with it (odd: four
+ * fields). Where the CPU or build lacks the groups' sweep, said and left
+ * out. */
+START_TEST(test_groups_block_bounds) {
+#if VSPH_SWEEP_X86_GROUPS /* else the kernels are not built */
+  const char *levels[2];
+  const int nlev = brookshaw_levels(levels);
+  if (!nlev) {
+    fprintf(stderr, "test_groups_block_bounds: no groups' sweep here\n");
+    return;
+  }
+  const int meaf = _i >= 2, delta = _i % 2, nf = delta ? 4 : 3;
+  enum { SENT = 16 };
+  struct vsph_particles *p = mixed_set(2, 6060 + (unsigned long)_i, 0.5, 0.11);
+  const size_t n0 = p->n;
+  struct vsph_equations_props ep;
+  brookshaw_props(&ep, meaf ? VSPH_VISCOUS_MEAF : VSPH_VISCOUS_MGF, HDX * DX,
+                  delta ? DELTA : 0.0);
+  struct vsph_equations_ctx rc = {.ep = &ep};
+  vsph_pair_kernel_init(&rc.pk, &vsph_gaussian_type, 2, ep.visc.h);
+  ck_assert_int_eq(vsph_viscous_loop_init(&rc.vl, &ep.visc, NULL), 0);
+  const int term =
+      meaf ? VSPH_SWEEP_X86_MEAF_TERM : VSPH_SWEEP_X86_BROOKSHAW_TERM;
+  struct vsph_cells *cells = vsph_cells_alloc();
+  double *b[2];
+  for (int l = 0; l < 2; l++) {
+    b[l] = malloc(((size_t)nf * n0 + SENT) * sizeof *b[l]);
+    ck_assert_ptr_nonnull(b[l]);
+  }
+  for (size_t k = 0; k < 8; k++) {
+    p->n = n0 - k;
+    const size_t n = p->n, nfl = n / 2;
+    ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
+    const size_t c0[2] = {0, cells->ncells}, lo = 0, hi = n;
+    size_t off = 0;
+    for (int l = 0; l < nlev; l++) {
+      /* its own entries NaN (the kernel zeroes them first), then the
+       * sentinels */
+      for (size_t e = 0; e < (size_t)nf * n + SENT; e++)
+        b[l][e] = e < (size_t)nf * n ? (double)NAN : -0.0;
+      const struct vsph_equations_sweep sw = {
+          .nblk = 1, .c0 = c0, .lo = &lo, .hi = &hi, .off = &off, .buf = b[l]};
+      double closest;
+      const size_t got =
+          !strcmp(levels[l], "avx512")
+              ? vsph_sweep_x86_groups2_avx512(&rc, p, cells, nfl, &sw, 0, delta,
+                                              term, &closest)
+              : vsph_sweep_x86_groups2_avx2(&rc, p, cells, nfl, &sw, 0, delta,
+                                            term, &closest);
+      ck_assert_uint_eq(got, pair_count(p, nfl, ep.visc.h));
+      ck_assert_double_eq(closest, pair_closest(p, nfl, ep.visc.h));
+      for (size_t e = (size_t)nf * n; e < (size_t)nf * n + SENT; e++)
+        ck_assert_msg(b[l][e] == 0.0 && signbit(b[l][e]),
+                      "%s, %zu particles, %d fields: entry %zu past the "
+                      "block's buffer is %g",
+                      levels[l], n, nf, e - (size_t)nf * n, b[l][e]);
+    }
+    for (int f = 0; nlev == 2 && f < nf; f++) {
+      double big = 0.0;
+      for (size_t i = 0; i < n; i++)
+        big = fmax(big, fabs(b[0][(size_t)nf * i + (size_t)f]));
+      for (size_t i = 0; i < n; i++) {
+        const double x = b[0][(size_t)nf * i + (size_t)f],
+                     y = b[1][(size_t)nf * i + (size_t)f];
+        ck_assert_msg(fabs(x - y) <= SIMD_ROUNDING * big,
+                      "%zu particles, field %d of particle %zu: avx2 %.17g, "
+                      "avx512 %.17g",
+                      n, f, i, x, y);
+      }
+    }
+  }
+  for (int l = 0; l < 2; l++) free(b[l]);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+#else
+  fprintf(stderr, "test_groups_block_bounds: no groups' sweep in this build\n");
 #endif
 }
 END_TEST
@@ -2555,6 +2667,7 @@ Suite *vsph_equations_suite(void) {
   tcase_add_loop_test(tc, test_brookshaw_nonfinite_contained, 0, 2);
   tcase_add_loop_test(tc, test_closest_ghost_receiver, 0, 2);
   tcase_add_test(tc, test_sweep_addj_by_hand);
+  tcase_add_loop_test(tc, test_groups_block_bounds, 0, 4);
   tcase_add_test(tc, test_sweep_lanes_by_hand);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
   tcase_add_loop_test(tc, test_sweep_gather_threads,
