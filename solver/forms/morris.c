@@ -4,8 +4,11 @@
  * (solver/viscous.h's struct vsph_viscous_type; their pair terms in morris.h).
  */
 /* MEAF's 2-D Gaussian sweep goes by cell groups in AVX-512 or AVX2 lanes,
- * MEAF's term (solver/sweep_x86.h, solver/viscous_internal.h); the
- * family's only loops are MEAF's (MEAF-eta runs the general loop) */
+ * MEAF's term (solver/sweep_x86.h, solver/viscous_internal.h). The
+ * family's only loops are MEAF's: MEAF-eta runs the general loop, and
+ * must not be given these (they would drop its eta;
+ * test_bad_props_refused_names_listed in tests/check_viscous.c holds its
+ * loops to none). */
 #define VSPH_VISCOUS_GROUPS VSPH_SWEEP_X86_MEAF_TERM
 #include "forms.h"
 
