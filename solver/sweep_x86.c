@@ -223,6 +223,7 @@ groups2_block(const struct vsph_equations_ctx *rc,
                       *const pp = p->p, *const vol = p->vol,
                       *const rho = p->rho;
   const size_t *const id = p->id;
+  const double *const *const sA = (const double *const *)rc->vl.A; /* stress */
   const int fluid_only = p->n == n_fluid; /* no ghosts nor wall particles */
   const __m512d H2 = _mm512_set1_pd(rc->pk.H2),
                 vhi2 = _mm512_set1_pd(rc->pk.h_inv2),
@@ -261,6 +262,16 @@ groups2_block(const struct vsph_equations_ctx *rc,
                         V = _mm512_maskz_loadu_pd(live, vol + j),
                         R = delta ? _mm512_maskz_loadu_pd(live, rho + j)
                                   : _mm512_setzero_pd();
+          /* the stress forms' A_j (T L, row by row: A0 A1 / A2 A3) */
+          const int st = visc == VSPH_SWEEP_X86_STRESS_TERM;
+          const __m512d A0 = st ? _mm512_maskz_loadu_pd(live, sA[0] + j)
+                                : _mm512_setzero_pd(),
+                        A1 = st ? _mm512_maskz_loadu_pd(live, sA[1] + j)
+                                : _mm512_setzero_pd(),
+                        A2 = st ? _mm512_maskz_loadu_pd(live, sA[2] + j)
+                                : _mm512_setzero_pd(),
+                        A3 = st ? _mm512_maskz_loadu_pd(live, sA[3] + j)
+                                : _mm512_setzero_pd();
           const __m512i J =
               _mm512_add_epi64(_mm512_set1_epi64((long long)j), lane);
           const __mmask8 fj = /* the fluid candidates */
@@ -311,11 +322,25 @@ groups2_block(const struct vsph_equations_ctx *rc,
                                                   _mm512_add_pd(s2, veta2))));
               f0 = _mm512_mul_pd(fx, dx);
               f1 = _mm512_mul_pd(fx, dy);
-            } else { /* MEAF: F (p_i + p_j) x - 2 mu F du */
+            } else if (visc == VSPH_SWEEP_X86_MEAF_TERM) {
+              /* MEAF: F (p_i + p_j) x - 2 mu F du */
               const __m512d fp = _mm512_mul_pd(F, ps),
                             fv = _mm512_mul_pd(F, vnc);
               f0 = _mm512_fmadd_pd(fp, dx, _mm512_mul_pd(fv, du0));
               f1 = _mm512_fmadd_pd(fp, dy, _mm512_mul_pd(fv, du1));
+            } else { /* PVWF, B: F ((p_i + p_j) x - (A_i + A_j) x) */
+              const __m512d S0 = _mm512_add_pd(A0, _mm512_set1_pd(sA[0][i])),
+                            S1 = _mm512_add_pd(A1, _mm512_set1_pd(sA[1][i])),
+                            S2 = _mm512_add_pd(A2, _mm512_set1_pd(sA[2][i])),
+                            S3 = _mm512_add_pd(A3, _mm512_set1_pd(sA[3][i]));
+              f0 = _mm512_mul_pd(
+                  F,
+                  _mm512_fmsub_pd(
+                      ps, dx, _mm512_fmadd_pd(S0, dx, _mm512_mul_pd(S1, dy))));
+              f1 = _mm512_mul_pd(
+                  F,
+                  _mm512_fmsub_pd(
+                      ps, dy, _mm512_fmadd_pd(S2, dx, _mm512_mul_pd(S3, dy))));
             }
             const __m512d Vi = _mm512_set1_pd(vol[i]);
             JA = _mm512_mask3_fnmadd_pd(Vi, f0, JA, in);
@@ -358,10 +383,15 @@ groups2_block(const struct vsph_equations_ctx *rc,
                               VSPH_SWEEP_X86_BROOKSHAW_TERM)             \
                       : BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 0, \
                               VSPH_SWEEP_X86_BROOKSHAW_TERM))            \
-             : (delta ? BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 1, \
+         : visc == VSPH_SWEEP_X86_MEAF_TERM                              \
+             ? (delta ? BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 1, \
                               VSPH_SWEEP_X86_MEAF_TERM)                  \
                       : BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 0, \
-                              VSPH_SWEEP_X86_MEAF_TERM))
+                              VSPH_SWEEP_X86_MEAF_TERM))                 \
+             : (delta ? BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 1, \
+                              VSPH_SWEEP_X86_STRESS_TERM)                \
+                      : BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 0, \
+                              VSPH_SWEEP_X86_STRESS_TERM))
 
 AVX512 size_t vsph_sweep_x86_groups2_avx512(
     const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
@@ -503,6 +533,7 @@ groups2_block4(const struct vsph_equations_ctx *rc,
                       *const pp = p->p, *const vol = p->vol,
                       *const rho = p->rho;
   const long long *const id = (const long long *)(const void *)p->id;
+  const double *const *const sA = (const double *const *)rc->vl.A; /* stress */
   const int fluid_only = p->n == n_fluid; /* no ghosts nor wall particles */
   const __m256d H2 = _mm256_set1_pd(rc->pk.H2),
                 vhi2 = _mm256_set1_pd(rc->pk.h_inv2),
@@ -547,6 +578,12 @@ groups2_block4(const struct vsph_equations_ctx *rc,
                         U0 = LOAD4(vx + j), U1 = LOAD4(vy + j),
                         P = LOAD4(pp + j), V = LOAD4(vol + j),
                         R = delta ? LOAD4(rho + j) : _mm256_setzero_pd();
+          /* the stress forms' A_j (T L, row by row: A0 A1 / A2 A3) */
+          const int st = visc == VSPH_SWEEP_X86_STRESS_TERM;
+          const __m256d A0 = st ? LOAD4(sA[0] + j) : _mm256_setzero_pd(),
+                        A1 = st ? LOAD4(sA[1] + j) : _mm256_setzero_pd(),
+                        A2 = st ? LOAD4(sA[2] + j) : _mm256_setzero_pd(),
+                        A3 = st ? LOAD4(sA[3] + j) : _mm256_setzero_pd();
 #undef LOAD4
           const __m256i J =
               _mm256_add_epi64(_mm256_set1_epi64x((long long)j), lane);
@@ -604,13 +641,31 @@ groups2_block4(const struct vsph_equations_ctx *rc,
                                                   _mm256_add_pd(s2, veta2))));
               f0 = _mm256_and_pd(_mm256_mul_pd(fx, dx), in);
               f1 = _mm256_and_pd(_mm256_mul_pd(fx, dy), in);
-            } else { /* MEAF: F (p_i + p_j) x - 2 mu F du */
+            } else if (visc == VSPH_SWEEP_X86_MEAF_TERM) {
+              /* MEAF: F (p_i + p_j) x - 2 mu F du */
               const __m256d fp = _mm256_mul_pd(F, ps),
                             fv = _mm256_mul_pd(F, vnc);
               f0 = _mm256_and_pd(
                   _mm256_fmadd_pd(fp, dx, _mm256_mul_pd(fv, du0)), in);
               f1 = _mm256_and_pd(
                   _mm256_fmadd_pd(fp, dy, _mm256_mul_pd(fv, du1)), in);
+            } else { /* PVWF, B: F ((p_i + p_j) x - (A_i + A_j) x) */
+              const __m256d S0 = _mm256_add_pd(A0, _mm256_set1_pd(sA[0][i])),
+                            S1 = _mm256_add_pd(A1, _mm256_set1_pd(sA[1][i])),
+                            S2 = _mm256_add_pd(A2, _mm256_set1_pd(sA[2][i])),
+                            S3 = _mm256_add_pd(A3, _mm256_set1_pd(sA[3][i]));
+              f0 = _mm256_and_pd(
+                  _mm256_mul_pd(
+                      F, _mm256_fmsub_pd(
+                             ps, dx,
+                             _mm256_fmadd_pd(S0, dx, _mm256_mul_pd(S1, dy)))),
+                  in);
+              f1 = _mm256_and_pd(
+                  _mm256_mul_pd(
+                      F, _mm256_fmsub_pd(
+                             ps, dy,
+                             _mm256_fmadd_pd(S2, dx, _mm256_mul_pd(S3, dy)))),
+                  in);
             }
             const __m256d Vi = _mm256_and_pd(_mm256_set1_pd(vol[i]), in),
                           Vj = _mm256_and_pd(V, in);

@@ -35,10 +35,12 @@ struct vsph_equations_sweep;
 /* The pair terms the sweep by cell groups has (@p visc below, and the
  * values of VSPH_VISCOUS_GROUPS in a family's file,
  * solver/viscous_internal.h): Brookshaw's, -K mu F du.x / (s^2 + eta^2) x
- * (MGF, VI, Cleary; vsph_pair_mgf), and MEAF's, -2 mu F du
- * (vsph_pair_meaf) */
+ * (MGF, VI, Cleary; vsph_pair_mgf), MEAF's, -2 mu F du (vsph_pair_meaf),
+ * and the stress forms' second pass, -F (A_i + A_j) x (PVWF and B;
+ * vsph_pair_pvwf_force, A = T L from the first pass, rc->vl.A) */
 #define VSPH_SWEEP_X86_BROOKSHAW_TERM 1
 #define VSPH_SWEEP_X86_MEAF_TERM 2
+#define VSPH_SWEEP_X86_STRESS_TERM 3
 
 /* sweep_block for a form whose viscous term is @p visc (above) in 2-D
  * with the 3h Gaussian, with delta-SPH (@p delta 1: a fourth field) or

@@ -505,7 +505,8 @@ static int brookshaw_lanes_at(int level, int form, int dim, int parts,
   return VSPH_SWEEP_X86_GROUPS && level >= 1 && vsph_pair_x86_simd() >= level &&
          dim == 2 && !parts && sweep &&
          (form == VSPH_VISCOUS_MGF || form == VSPH_VISCOUS_VI ||
-          form == VSPH_VISCOUS_CLEARY || form == VSPH_VISCOUS_MEAF);
+          form == VSPH_VISCOUS_CLEARY || form == VSPH_VISCOUS_MEAF ||
+          form == VSPH_VISCOUS_PVWF || form == VSPH_VISCOUS_TWOPASS);
 }
 
 /* The same at the level the CPU allows (what a run takes) */
@@ -1143,7 +1144,9 @@ START_TEST(test_sweep_scatter_simd) {
                {VSPH_VISCOUS_CLEARY, 0.0, 2, &vsph_stretching_square_type},
                {VSPH_VISCOUS_MGF, 0.0, 2, &vsph_standing_wave_type},
                {VSPH_VISCOUS_MEAF, 0.0, 2, &vsph_stretching_square_type},
-               {VSPH_VISCOUS_MEAF, 0.1, 2, &vsph_standing_wave_type}};
+               {VSPH_VISCOUS_MEAF, 0.1, 2, &vsph_standing_wave_type},
+               {VSPH_VISCOUS_PVWF, 0.1, 2, &vsph_standing_wave_type},
+               {VSPH_VISCOUS_TWOPASS, 0.0, 2, &vsph_stretching_square_type}};
   const int c = _i / 2, parts = _i % 2, dim = cases[c].dim;
   struct vsph_integrate_props ip;
   struct vsph_integrate *s = dim == 3
@@ -1485,8 +1488,8 @@ START_TEST(test_brookshaw_nonfinite_contained) {
 END_TEST
 
 /* Crowded cells through the sweep by cell groups at each level this
- * build and CPU have (AVX2, AVX-512; form _i % 4: MGF, Violeau and Issa's,
- * Cleary's, MEAF; delta-SPH from _i = 4 on), which takes a cell's
+ * build and CPU have (AVX2, AVX-512; form _i % 5: MGF, Violeau and Issa's,
+ * Cleary's, MEAF, PVWF; delta-SPH from _i = 5 on), which takes a cell's
  * receivers eight at a time: a 2-D set (the ids shuffled, half of them
  * fluid) with 42 of its particles moved onto a 7 x 6 grid of spacing DX/10, a
  * third of a cell's edge (3h/2 = 2 DX) across, so that a cell holds more than
@@ -1502,7 +1505,8 @@ END_TEST
  * or build lacks the groups' sweep, said and left out. */
 START_TEST(test_brookshaw_crowded) {
   static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_VI,
-                              VSPH_VISCOUS_CLEARY, VSPH_VISCOUS_MEAF};
+                              VSPH_VISCOUS_CLEARY, VSPH_VISCOUS_MEAF,
+                              VSPH_VISCOUS_PVWF};
   const char *levels[2];
   const int nlev = brookshaw_levels(levels);
   if (!nlev) {
@@ -1534,7 +1538,7 @@ START_TEST(test_brookshaw_crowded) {
   for (size_t i = 0; i < n; i++)
     if (p->id[i] >= nfl) p->id[i] = SIZE_MAX - (p->id[i] - nfl);
   struct vsph_equations_props ep;
-  brookshaw_props(&ep, forms[_i % 4], HDX * DX, _i >= 4 ? DELTA : 0.0);
+  brookshaw_props(&ep, forms[_i % 5], HDX * DX, _i >= 5 ? DELTA : 0.0);
   struct vsph_cells *cells = vsph_cells_alloc();
   ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
   size_t most = 0; /* the most particles in a cell */
@@ -1565,7 +1569,7 @@ START_TEST(test_brookshaw_crowded) {
         ck_assert_msg(fabs(b - a) <= SIMD_ROUNDING * big,
                       "%s, %s, rate %zu of particle %zu: %.17g, portable "
                       "%.17g (largest %.3g)",
-                      vsph_viscous_name(forms[_i % 4]), levels[l], f, i, b, a,
+                      vsph_viscous_name(forms[_i % 5]), levels[l], f, i, b, a,
                       big);
       }
     }
@@ -2668,8 +2672,8 @@ Suite *vsph_equations_suite(void) {
   tcase_add_loop_test(tc, test_candidates_simd, 0, 4);
   tcase_add_loop_test(tc, test_joint_walk_resumes, 0, 2);
   tcase_add_test(tc, test_joint_walk_guards);
-  tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 18);
-  tcase_add_loop_test(tc, test_brookshaw_crowded, 0, 8);
+  tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 22);
+  tcase_add_loop_test(tc, test_brookshaw_crowded, 0, 10);
   tcase_add_test(tc, test_brookshaw_support_edge);
   tcase_add_loop_test(tc, test_brookshaw_nonfinite_contained, 0, 2);
   tcase_add_loop_test(tc, test_closest_ghost_receiver, 0, 2);

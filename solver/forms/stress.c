@@ -3,6 +3,10 @@
 /* The descriptors of PVWF and the two-pass strain-rate form (model B): a
  * stress pass, then its divergence (solver/viscous.h's struct
  * vsph_viscous_type; their pair terms in stress.h). */
+/* their second pass's 2-D Gaussian sweep goes by cell groups in AVX-512
+ * or AVX2 lanes, the stress term (solver/sweep_x86.h,
+ * solver/viscous_internal.h) */
+#define VSPH_VISCOUS_GROUPS VSPH_SWEEP_X86_STRESS_TERM
 #include "../../kernels/kernel.h"
 #include "forms.h"
 
