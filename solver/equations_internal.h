@@ -572,7 +572,8 @@ VSPH_CONSTS_SPECIALISE size_t sweep_block_parts(
  * the buffer's fields, is what run_sweep planned by the same SW_FIELDS
  * that sweep_block_parts makes a constant of. @p groups (a family's
  * VSPH_VISCOUS_GROUPS: VSPH_SWEEP_X86_BROOKSHAW_TERM for the Brookshaw
- * forms' loops, VSPH_SWEEP_X86_MEAF_TERM for MEAF's, 0 for the others): in
+ * forms' loops, VSPH_SWEEP_X86_MEAF_TERM for MEAF's,
+ * VSPH_SWEEP_X86_STRESS_TERM for PVWF's and B's, 0 for the others): in
  * 2-D with the Gaussian, with delta-SPH or without, without the parts, on
  * a CPU with AVX-512 or AVX2 and in a build that allows it
  * (VSPH_SWEEP_X86_GROUPS), the block goes to
@@ -586,9 +587,9 @@ sweep_block(const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
             const int delta, const int kid, const int groups) {
   (void)nf; /* = SW_FIELDS(dim, delta, rc->parts): run_sweep's plan */
 #if VSPH_SWEEP_X86_GROUPS
-  /* the Brookshaw forms or MEAF in 2-D with the Gaussian: their sweep by
-   * cell groups in AVX-512 lanes, or AVX2 ones, where the CPU has them
-   * (solver/sweep_x86.c), within rounding */
+  /* the Brookshaw forms, MEAF, PVWF or B in 2-D with the Gaussian: their
+   * sweep by cell groups in AVX-512 lanes, or AVX2 ones, where the CPU has
+   * them (solver/sweep_x86.c), within rounding */
   if (groups && dim == 2 && kid == VSPH_KERNEL_DFQ_GAUSSIAN && !rc->parts &&
       rc->pk.simd)
     return rc->pk.simd == 2

@@ -7,7 +7,8 @@
  * and store per field. Whole loads and stores, no masks: a masked store is
  * not forwarded to the next particle's load of the same entry. Built for
  * its instructions alone (target attribute), as solver/pair_x86.c. And the
- * 2-D sweep by cell groups of the Brookshaw forms and MEAF, for AVX-512
+ * 2-D sweep by cell groups of the Brookshaw forms, MEAF and the stress
+ * forms' second pass, for AVX-512
  * (vsph_sweep_x86_groups2_avx512) and for AVX2 (_avx2): a cell's
  * receivers, eight at a time, against whole vectors of eight (four)
  * consecutive candidates, every pair's work in the lanes whether the pair
@@ -195,11 +196,13 @@ AVX512 void vsph_sweep_x86_addj8(double *q, int nf, const double *const f[4],
  * support are its lanes (the candidate test's x = r_j - r_i and s^2,
  * unfused, so that a pair on the support's edge is classified as in every
  * loop); the kernel factor F = dwq (-2 e^{-q^2}) and the terms of
- * vsph_pair_pressure, the viscous term @p visc (vsph_pair_mgf or
- * vsph_pair_meaf), vsph_pair_continuity and (@p delta) vsph_pair_delta
- * are computed in all eight lanes and kept in those (c = F du.x; f = F
- * (p_i + p_j - Kmu du.x / (s^2 + eta^2)) x for Brookshaw's term, F (p_i +
- * p_j) x - 2 mu F du for MEAF's; d = -2 F (rho_j - rho_i)); i's sums
+ * vsph_pair_pressure, the viscous term @p visc (vsph_pair_mgf,
+ * vsph_pair_meaf or vsph_pair_pvwf_force), vsph_pair_continuity and
+ * (@p delta) vsph_pair_delta are computed in all eight lanes and kept in
+ * those (c = F du.x; f = F (p_i + p_j - Kmu du.x / (s^2 + eta^2)) x for
+ * Brookshaw's term, F (p_i + p_j) x - 2 mu F du for MEAF's, F ((p_i +
+ * p_j) x - (A_i + A_j) x) for the stress forms'; d = -2 F (rho_j -
+ * rho_i)); i's sums
  * (V_j c, V_j f, V_j d) go on in eight lanes over its vectors, summed once
  * at its end into its entry, where i is fluid; j's shares (V_i c, -V_i f,
  * -V_i d) are summed over the group's receivers, in their order, then

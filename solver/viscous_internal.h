@@ -151,8 +151,10 @@ struct vsph_viscous_loops {
  * Gaussian sweep goes by cell groups in AVX-512 or AVX2 lanes on a CPU
  * that has them (vsph_sweep_x86_groups2_avx512, _avx2; within rounding):
  * its viscous term, VSPH_SWEEP_X86_BROOKSHAW_TERM (1, the Brookshaw
- * forms, solver/forms/brookshaw.c) or VSPH_SWEEP_X86_MEAF_TERM (2, MEAF,
- * solver/forms/morris.c); 0 in every other family's. */
+ * forms, solver/forms/brookshaw.c), VSPH_SWEEP_X86_MEAF_TERM (2, MEAF,
+ * solver/forms/morris.c) or VSPH_SWEEP_X86_STRESS_TERM (3, the second
+ * pass of PVWF and B, solver/forms/stress.c); 0 in every other
+ * family's. */
 #ifndef VSPH_VISCOUS_GROUPS
 #define VSPH_VISCOUS_GROUPS 0
 #endif
