@@ -379,7 +379,8 @@ groups2_block(const struct vsph_equations_ctx *rc,
   return total;
 }
 
-/* groups2_block with @p delta and @p visc constants */
+/* groups2_block with @p delta and @p visc constants (a term it does not
+ * know aborts: the stress term would read rc->vl.A, NULL for the others) */
 #define GROUPS_DISPATCH(BLOCK)                                           \
   return visc == VSPH_SWEEP_X86_BROOKSHAW_TERM                           \
              ? (delta ? BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 1, \
@@ -391,10 +392,12 @@ groups2_block(const struct vsph_equations_ctx *rc,
                               VSPH_SWEEP_X86_MEAF_TERM)                  \
                       : BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 0, \
                               VSPH_SWEEP_X86_MEAF_TERM))                 \
-             : (delta ? BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 1, \
+         : visc == VSPH_SWEEP_X86_STRESS_TERM                            \
+             ? (delta ? BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 1, \
                               VSPH_SWEEP_X86_STRESS_TERM)                \
                       : BLOCK(rc, p, cells, n_fluid, sw, blk, min_s2, 0, \
-                              VSPH_SWEEP_X86_STRESS_TERM))
+                              VSPH_SWEEP_X86_STRESS_TERM))               \
+             : (abort(), (size_t)0) /* no such term */
 
 AVX512 size_t vsph_sweep_x86_groups2_avx512(
     const struct vsph_equations_ctx *rc, const struct vsph_particles *p,
