@@ -500,8 +500,7 @@ static void twin_check(int form, int dim, int sweep,
  * a rate by 1e-9 of it or more (a referee's mutant of F by 1 + 1e-9
  * fails). */
 #define SIMD_ROUNDING 1e-12
-static int brookshaw_lanes_at(int level, int form, int dim, int parts,
-                              int sweep) {
+static int groups_lanes_at(int level, int form, int dim, int parts, int sweep) {
   return VSPH_SWEEP_X86_GROUPS && level >= 1 && vsph_pair_x86_simd() >= level &&
          dim == 2 && !parts && sweep &&
          (form == VSPH_VISCOUS_MGF || form == VSPH_VISCOUS_VI ||
@@ -510,16 +509,16 @@ static int brookshaw_lanes_at(int level, int form, int dim, int parts,
 }
 
 /* The same at the level the CPU allows (what a run takes) */
-static int brookshaw_lanes(int form, int dim, int parts, int sweep) {
-  return brookshaw_lanes_at(vsph_pair_x86_simd(), form, dim, parts, sweep);
+static int groups_lanes(int form, int dim, int parts, int sweep) {
+  return groups_lanes_at(vsph_pair_x86_simd(), form, dim, parts, sweep);
 }
 
 /* The levels of the groups' sweep (1 AVX2, 2 AVX-512) that this build and
  * CPU have, by VSPH_PAIR_SIMD's names, into @p names; how many (0 to 2) */
-static int brookshaw_levels(const char *names[2]) {
+static int groups_levels(const char *names[2]) {
   int k = 0;
-  if (brookshaw_lanes_at(1, VSPH_VISCOUS_MGF, 2, 0, 1)) names[k++] = "avx2";
-  if (brookshaw_lanes_at(2, VSPH_VISCOUS_MGF, 2, 0, 1)) names[k++] = "avx512";
+  if (groups_lanes_at(1, VSPH_VISCOUS_MGF, 2, 0, 1)) names[k++] = "avx2";
+  if (groups_lanes_at(2, VSPH_VISCOUS_MGF, 2, 0, 1)) names[k++] = "avx512";
   return k;
 }
 
@@ -586,7 +585,7 @@ static struct vsph_particles *mixed_set(int dim, unsigned long seed,
  * (finish_one, which the parts take: the same sums in the same order, so
  * the same bits; without the parts, 2-D sweeps finish by finish_rows2;
  * except where the sums without the parts come from the Brookshaw forms'
- * groups' sweep, brookshaw_lanes, and the parts' from the loops it
+ * groups' sweep, groups_lanes, and the parts' from the loops it
  * replaces: then within SIMD_ROUNDING);
  * the state law's p and V every particle's, as vsph_equations_pressure
  * and m/rho make them, to the bit; and the interactions those a count
@@ -646,7 +645,7 @@ START_TEST(test_rhs_leaves_others) {
   /* without the parts, the groups' sweep of a Brookshaw form in 2-D
    * where this build and CPU have it: the general finish's rates within
    * rounding of its (SIMD_ROUNDING of each rate's largest) */
-  const int lanes = brookshaw_lanes(form, dim, parts, sweep);
+  const int lanes = groups_lanes(form, dim, parts, sweep);
   double big[4] = {0, 0, 0, 0};
   for (int c = 0; c < 1 + dim; c++)
     for (size_t i = 0; i < n; i++)
@@ -1126,7 +1125,7 @@ static struct vsph_integrate *shear3(int form, int contact) {
  * the same bits (each entry gets the same adds in the same order; the
  * candidate test gives the same chunks at every level,
  * test_candidates_simd), except the groups' sweeps', within rounding
- * (SIMD_ROUNDING, brookshaw_lanes_at), the closest pair and the count
+ * (SIMD_ROUNDING, groups_lanes_at), the closest pair and the count
  * exact. A level the CPU lacks is said and left out (its groups' sweep
  * is then not tested here; nor in a build without them,
  * VSPH_SWEEP_X86_GROUPS 0). */
@@ -1193,7 +1192,7 @@ START_TEST(test_sweep_scatter_simd) {
   for (int level = 0; level <= most; level++) {
     /* the groups' sweep at this level (the Brookshaw forms, MEAF, PVWF
      * and B; not the parts, nor 3-D) */
-    const int lanes = brookshaw_lanes_at(level, cases[c].form, dim, parts, 1);
+    const int lanes = groups_lanes_at(level, cases[c].form, dim, parts, 1);
     ck_assert_int_eq(st[level], 0);
     ck_assert_double_eq(closest[level], closest[0]); /* the closest pair */
     ck_assert_uint_eq(pairs[level], pairs[0]);       /* ghosts' not counted */
@@ -1230,8 +1229,8 @@ START_TEST(test_sweep_scatter_simd) {
    * lanes and in eight, so some of these sums differ in their last bits
    * (a dispatch that took one kernel at both levels would give the same
    * bits) */
-  if (brookshaw_lanes_at(1, cases[c].form, dim, parts, 1) &&
-      brookshaw_lanes_at(2, cases[c].form, dim, parts, 1))
+  if (groups_lanes_at(1, cases[c].form, dim, parts, 1) &&
+      groups_lanes_at(2, cases[c].form, dim, parts, 1))
     ck_assert_msg(
         memcmp(buf + nout * n, buf + 2 * nout * n, nout * n * sizeof *buf) != 0,
         "%s: the AVX2 and AVX-512 levels gave the same bits",
@@ -1244,8 +1243,8 @@ END_TEST
 
 /* @p ep for form @p form with the 3h Gaussian in 2-D at smoothing length
  * @p h, delta-SPH's @p delta (0: off), the suite's rho0, c0 and mu. */
-static void brookshaw_props(struct vsph_equations_props *ep, int form, double h,
-                            double delta) {
+static void gauss2_props(struct vsph_equations_props *ep, int form, double h,
+                         double delta) {
   *ep = (struct vsph_equations_props){.rho0 = RHO0, .c0 = C0, .delta = delta};
   ck_assert_int_eq(
       vsph_viscous_props_init(&ep->visc, form, &vsph_gaussian_type, 2, h, MU),
@@ -1295,7 +1294,7 @@ START_TEST(test_closest_ghost_receiver) {
   struct vsph_particles *p = random_set(2, 9191 + (unsigned long)_i);
   const size_t n = p->n, nfl = n - 1;
   struct vsph_equations_props ep;
-  brookshaw_props(&ep, VSPH_VISCOUS_MGF, HDX * DX, 0.0);
+  gauss2_props(&ep, VSPH_VISCOUS_MGF, HDX * DX, 0.0);
   struct vsph_cells *cells = vsph_cells_alloc();
   ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
   /* a fluid particle f that the other, moved below (above) it,
@@ -1353,11 +1352,11 @@ END_TEST
  * those of a count pair by pair, each s^2 computed as the loops compute
  * it), the same closest pair, and the rates within rounding (case 3: all
  * 0). Where the CPU or build lacks the groups' sweep, said and left out. */
-START_TEST(test_brookshaw_support_edge) {
+START_TEST(test_groups_support_edge) {
   const char *levels[2];
-  const int nlev = brookshaw_levels(levels);
+  const int nlev = groups_levels(levels);
   if (!nlev) {
-    fprintf(stderr, "test_brookshaw_support_edge: no groups' sweep here\n");
+    fprintf(stderr, "test_groups_support_edge: no groups' sweep here\n");
     return;
   }
   enum { RING = 240 };
@@ -1371,7 +1370,7 @@ START_TEST(test_brookshaw_support_edge) {
   for (int c = 0; c < 4; c++) {
     const double h = c < 3 ? HDX * DX : 0.04876;
     struct vsph_equations_props ep;
-    brookshaw_props(&ep, VSPH_VISCOUS_MGF, h, 0.0);
+    gauss2_props(&ep, VSPH_VISCOUS_MGF, h, 0.0);
     const double R = vsph_gaussian_type.kappa * h;
     const double x0 = 0.3 + 0.0137 * c, y0 = -0.2 + 0.0291 * c;
     const size_t n = c < 3 ? cap : 2;
@@ -1434,12 +1433,11 @@ END_TEST
  * support too (the AVX2 sweep clears the shares and the volumes outside
  * it by an and: without it, 0 * inf). Where the CPU or build lacks the
  * groups' sweep, said and left out. */
-START_TEST(test_brookshaw_nonfinite_contained) {
+START_TEST(test_groups_nonfinite_contained) {
   const char *names[3] = {"portable"};
-  const int nl = 1 + brookshaw_levels(names + 1);
+  const int nl = 1 + groups_levels(names + 1);
   if (nl == 1) {
-    fprintf(stderr,
-            "test_brookshaw_nonfinite_contained: no groups' sweep here\n");
+    fprintf(stderr, "test_groups_nonfinite_contained: no groups' sweep here\n");
     return;
   }
   /* a strip twice as long for the stress forms, whose two supports
@@ -1450,7 +1448,7 @@ START_TEST(test_brookshaw_nonfinite_contained) {
   struct vsph_equations_props ep;
   static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_MEAF,
                               VSPH_VISCOUS_PVWF, VSPH_VISCOUS_TWOPASS};
-  brookshaw_props(&ep, forms[_i], HDX * DX, 0.0);
+  gauss2_props(&ep, forms[_i], HDX * DX, 0.0);
   /* the stress forms' first pass carries a non-finite value one support
    * further (into A of the neighbours): two supports for them */
   const double reach = _i >= 2 ? 4.0 : 1.0;
@@ -1513,14 +1511,14 @@ END_TEST
  * meet e^{-q^2} of q^2 > 709, whose 2^{-n} is not a number's) and its
  * ids not fluid run down from SIZE_MAX (2^63 and above). Where the CPU
  * or build lacks the groups' sweep, said and left out. */
-START_TEST(test_brookshaw_crowded) {
+START_TEST(test_groups_crowded) {
   static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_VI,
                               VSPH_VISCOUS_CLEARY, VSPH_VISCOUS_MEAF,
                               VSPH_VISCOUS_PVWF};
   const char *levels[2];
-  const int nlev = brookshaw_levels(levels);
+  const int nlev = groups_levels(levels);
   if (!nlev) {
-    fprintf(stderr, "test_brookshaw_crowded: no groups' sweep here\n");
+    fprintf(stderr, "test_groups_crowded: no groups' sweep here\n");
     return;
   }
   struct vsph_particles *p = mixed_set(2, 4242 + (unsigned long)_i, 0.5, 0.11);
@@ -1548,7 +1546,7 @@ START_TEST(test_brookshaw_crowded) {
   for (size_t i = 0; i < n; i++)
     if (p->id[i] >= nfl) p->id[i] = SIZE_MAX - (p->id[i] - nfl);
   struct vsph_equations_props ep;
-  brookshaw_props(&ep, forms[_i % 5], HDX * DX, _i >= 5 ? DELTA : 0.0);
+  gauss2_props(&ep, forms[_i % 5], HDX * DX, _i >= 5 ? DELTA : 0.0);
   struct vsph_cells *cells = vsph_cells_alloc();
   ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * ep.visc.h), 0);
   size_t most = 0; /* the most particles in a cell */
@@ -1601,7 +1599,7 @@ END_TEST
 START_TEST(test_sweep_addj_by_hand) {
 #if VSPH_SWEEP_X86_GROUPS /* else the functions are not built */
   const char *levels[2];
-  const int nlev = brookshaw_levels(levels);
+  const int nlev = groups_levels(levels);
   if (!nlev) {
     fprintf(stderr, "test_sweep_addj_by_hand: no groups' sweep here\n");
     return;
@@ -1650,7 +1648,7 @@ END_TEST
 START_TEST(test_groups_block_bounds) {
 #if VSPH_SWEEP_X86_GROUPS /* else the kernels are not built */
   const char *levels[2];
-  const int nlev = brookshaw_levels(levels);
+  const int nlev = groups_levels(levels);
   if (!nlev) {
     fprintf(stderr, "test_groups_block_bounds: no groups' sweep here\n");
     return;
@@ -1660,8 +1658,8 @@ START_TEST(test_groups_block_bounds) {
   struct vsph_particles *p = mixed_set(2, 6060 + (unsigned long)_i, 0.5, 0.11);
   const size_t n0 = p->n;
   struct vsph_equations_props ep;
-  brookshaw_props(&ep, meaf ? VSPH_VISCOUS_MEAF : VSPH_VISCOUS_MGF, HDX * DX,
-                  delta ? DELTA : 0.0);
+  gauss2_props(&ep, meaf ? VSPH_VISCOUS_MEAF : VSPH_VISCOUS_MGF, HDX * DX,
+               delta ? DELTA : 0.0);
   struct vsph_equations_ctx rc = {.ep = &ep};
   vsph_pair_kernel_init(&rc.pk, &vsph_gaussian_type, 2, ep.visc.h);
   ck_assert_int_eq(vsph_viscous_loop_init(&rc.vl, &ep.visc, NULL), 0);
@@ -2683,9 +2681,9 @@ Suite *vsph_equations_suite(void) {
   tcase_add_loop_test(tc, test_joint_walk_resumes, 0, 2);
   tcase_add_test(tc, test_joint_walk_guards);
   tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 22);
-  tcase_add_loop_test(tc, test_brookshaw_crowded, 0, 10);
-  tcase_add_test(tc, test_brookshaw_support_edge);
-  tcase_add_loop_test(tc, test_brookshaw_nonfinite_contained, 0, 4);
+  tcase_add_loop_test(tc, test_groups_crowded, 0, 10);
+  tcase_add_test(tc, test_groups_support_edge);
+  tcase_add_loop_test(tc, test_groups_nonfinite_contained, 0, 4);
   tcase_add_loop_test(tc, test_closest_ghost_receiver, 0, 2);
   tcase_add_test(tc, test_sweep_addj_by_hand);
   tcase_add_loop_test(tc, test_groups_block_bounds, 0, 4);
