@@ -773,6 +773,26 @@ VSPH_CONSTS_SPECIALISE void grad_block(const struct vsph_pair_kernel *pk,
   }
 }
 
+/* grad_block in 2-D: by cell groups in AVX-512 lanes, or AVX2 ones,
+ * where the CPU has them and the build allows it (VSPH_SWEEP_X86_GROUPS;
+ * solver/sweep_x86.c, within rounding), else the loops above */
+static void grad_block2(const struct vsph_pair_kernel *pk,
+                        const struct vsph_particles *p,
+                        const struct vsph_cells *cells,
+                        const struct vsph_equations_sweep *sw, size_t blk) {
+#if VSPH_SWEEP_X86_GROUPS
+  if (pk->simd == 2) {
+    vsph_sweep_x86_grad2_avx512(pk, p, cells, sw, blk);
+    return;
+  }
+  if (pk->simd == 1) {
+    vsph_sweep_x86_grad2_avx2(pk, p, cells, sw, blk);
+    return;
+  }
+#endif
+  grad_block(pk, p, cells, sw, blk, 2, VSPH_KERNEL_DFQ_GAUSSIAN);
+}
+
 /* PVWF's first pass's finish (grad_sweep): B and Mg of each particle. */
 struct grad_ctx {
   const struct vsph_viscous_props *vp;
@@ -809,7 +829,7 @@ static int grad_sweep(const struct vsph_viscous_props *vp,
 #pragma omp parallel
   for (size_t b; (b = vsph_share_next(&sh)) != SIZE_MAX;)
     if (dim == 2)
-      grad_block(pk, p, cells, sw, b, 2, G);
+      grad_block2(pk, p, cells, sw, b);
     else
       grad_block(pk, p, cells, sw, b, 3, G);
   struct grad_ctx g = {vp, ws};

@@ -407,6 +407,152 @@ AVX512 size_t vsph_sweep_x86_groups2_avx512(
   GROUPS_DISPATCH(groups2_block);
 }
 
+/* The 8 x 8 transpose of rows r[0..7] (field a of particles 0-7) into
+ * o[0..7] (fields 0-7 of particle l): pairs of lanes interleaved, then
+ * 128-bit blocks gathered twice */
+static inline __attribute__((always_inline)) AVX512 void transpose8(
+    const __m512d r[8], __m512d o[8]) {
+  __m512d t[8], u[8];
+  for (int a = 0; a < 8; a += 2) { /* t[a]: (r_a r_a+1) of 0, 2, 4, 6 */
+    t[a] = _mm512_unpacklo_pd(r[a], r[a + 1]);
+    t[a + 1] = _mm512_unpackhi_pd(r[a], r[a + 1]); /* of 1, 3, 5, 7 */
+  }
+  for (int s = 0; s < 2; s++) { /* s 0: particles 0, 2, 4, 6; 1: the odd */
+    /* (t0, t2) and (t4, t6): blocks 0, 2 of each, then 1, 3 */
+    u[4 * s] = _mm512_shuffle_f64x2(t[s], t[2 + s], 0x88);
+    u[4 * s + 1] = _mm512_shuffle_f64x2(t[s], t[2 + s], 0xdd);
+    u[4 * s + 2] = _mm512_shuffle_f64x2(t[4 + s], t[6 + s], 0x88);
+    u[4 * s + 3] = _mm512_shuffle_f64x2(t[4 + s], t[6 + s], 0xdd);
+    o[s] = _mm512_shuffle_f64x2(u[4 * s], u[4 * s + 2], 0x88);
+    o[4 + s] = _mm512_shuffle_f64x2(u[4 * s], u[4 * s + 2], 0xdd);
+    o[2 + s] = _mm512_shuffle_f64x2(u[4 * s + 1], u[4 * s + 3], 0x88);
+    o[6 + s] = _mm512_shuffle_f64x2(u[4 * s + 1], u[4 * s + 3], 0xdd);
+  }
+}
+
+/* PVWF's (model B's) first pass, one block (sweep_x86.h), by grad_block's
+ * terms (solver/equations.c) in the walk of groups2_block: each pair
+ * j > i within the support, every particle a receiver (ghosts too),
+ * gives G = -F = 2 dwq e^{-q^2} and the unit terms G x (x) x and
+ * G du (x) x (vsph_pair_pvwf_grad), i their V_j multiple and j their
+ * V_i one (even in the pair). x (x) x is symmetric: its entry (0, 1)
+ * is made once and stored in both of its fields. i's sums go on in eight
+ * lanes over its vectors, summed once at its end; j's are summed over the
+ * group's receivers, in their order, then added to the candidates'
+ * entries, a whole vector of eight fields a particle (transpose8). The
+ * lanes outside the support are kept out of every add by the mask. */
+static inline __attribute__((always_inline)) AVX512 void grad2_block(
+    const struct vsph_pair_kernel *pk, const struct vsph_particles *p,
+    const struct vsph_cells *cells, const struct vsph_equations_sweep *sw,
+    size_t blk) {
+  const size_t lo = sw->lo[blk];
+  double *const buf = sw->buf + sw->off[blk];
+  memset(buf, 0, (sw->hi[blk] - lo) * 8 * sizeof *buf);
+  const double *const px = p->pos[0], *const py = p->pos[1],
+                      *const vx = p->vel[0], *const vy = p->vel[1],
+                      *const vol = p->vol;
+  const __m512d H2 = _mm512_set1_pd(pk->H2), vhi2 = _mm512_set1_pd(pk->h_inv2),
+                vdwq = _mm512_set1_pd(2.0 * pk->dwq), /* 2 exact */
+      nine = _mm512_set1_pd(9.0);
+  const __m512i lane = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0);
+  for (size_t c = sw->c0[blk]; c < sw->c0[blk + 1]; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    const size_t s0 = cells->start[c], end = s0 + cells->count[c];
+    for (size_t i0 = s0; i0 < end; i0 += 8) {
+      const size_t g = end - i0 < 8 ? end - i0 : 8; /* receivers i0 + q */
+      /* i's sums, lane by lane: x (x) x's entries (0, 0), (0, 1), (1, 1),
+       * then du (x) x's four */
+      __m512d ai[8][7];
+      for (size_t q = 0; q < g; q++)
+        for (int e = 0; e < 7; e++) ai[q][e] = _mm512_setzero_pd();
+      for (size_t r = 0; r < rg.n; r++) {
+        const size_t hi = rg.hi[r];
+        /* no receiver of the group has a pair below i0 + 1 */
+        for (size_t j = rg.lo[r] > i0 ? rg.lo[r] : i0 + 1; j < hi; j += 8) {
+          const __mmask8 live = lanes_left(hi - j);
+          const __m512d X = _mm512_maskz_loadu_pd(live, px + j),
+                        Y = _mm512_maskz_loadu_pd(live, py + j),
+                        U0 = _mm512_maskz_loadu_pd(live, vx + j),
+                        U1 = _mm512_maskz_loadu_pd(live, vy + j),
+                        V = _mm512_maskz_loadu_pd(live, vol + j);
+          const __m512i J =
+              _mm512_add_epi64(_mm512_set1_epi64((long long)j), lane);
+          __m512d aj[7];
+          for (int e = 0; e < 7; e++) aj[e] = _mm512_setzero_pd();
+          __mmask8 any = 0;
+          for (size_t q = 0; q < g; q++) {
+            const size_t i = i0 + q;
+            const __m512d dx = _mm512_sub_pd(X, _mm512_set1_pd(px[i])),
+                          dy = _mm512_sub_pd(Y, _mm512_set1_pd(py[i]));
+            const __m512d s2 =
+                _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+            /* the pairs: j > i, within the support */
+            const __mmask8 k = _mm512_mask_cmp_pd_mask(
+                _mm512_mask_cmpgt_epu64_mask(live, J,
+                                             _mm512_set1_epi64((long long)i)),
+                s2, H2, _CMP_LT_OQ);
+            if (!k) continue;
+            any |= k;
+            /* G, 0 from q^2 = 9 on; only the lanes in `in` are added */
+            const __m512d q2 = _mm512_mul_pd(s2, vhi2);
+            const __mmask8 in =
+                _mm512_mask_cmp_pd_mask(k, q2, nine, _CMP_LT_OQ);
+            const __m512d G = _mm512_maskz_mul_pd(in, vdwq, expneg8(q2));
+            const __m512d du0 = _mm512_sub_pd(U0, _mm512_set1_pd(vx[i])),
+                          du1 = _mm512_sub_pd(U1, _mm512_set1_pd(vy[i]));
+            /* i's: V_j G x, then times x and du; j's: V_i G x */
+            const __m512d wj = _mm512_mul_pd(V, G),
+                          wi = _mm512_mul_pd(_mm512_set1_pd(vol[i]), G);
+            const __m512d tx[2] = {_mm512_mul_pd(wj, dx),
+                                   _mm512_mul_pd(wi, dx)},
+                          ty[2] = {_mm512_mul_pd(wj, dy),
+                                   _mm512_mul_pd(wi, dy)};
+            for (int s = 0; s < 2; s++) {
+              __m512d *const a = s ? aj : ai[q];
+              a[0] = _mm512_mask3_fmadd_pd(tx[s], dx, a[0], in);
+              a[1] = _mm512_mask3_fmadd_pd(tx[s], dy, a[1], in);
+              a[2] = _mm512_mask3_fmadd_pd(ty[s], dy, a[2], in);
+              a[3] = _mm512_mask3_fmadd_pd(tx[s], du0, a[3], in);
+              a[4] = _mm512_mask3_fmadd_pd(ty[s], du0, a[4], in);
+              a[5] = _mm512_mask3_fmadd_pd(tx[s], du1, a[5], in);
+              a[6] = _mm512_mask3_fmadd_pd(ty[s], du1, a[6], in);
+            }
+          }
+          if (!any) continue;
+          /* the eight fields (B0 B1 B2 B3 M0 M1 M2 M3) of each candidate */
+          const __m512d rj[8] = {aj[0], aj[1], aj[1], aj[2],
+                                 aj[3], aj[4], aj[5], aj[6]};
+          __m512d o[8];
+          transpose8(rj, o);
+          const size_t nl = hi - j < 8 ? hi - j : 8;
+          double *const e = buf + (j - lo) * 8;
+          for (size_t l = 0; l < nl; l++)
+            _mm512_storeu_pd(e + 8 * l,
+                             _mm512_add_pd(_mm512_loadu_pd(e + 8 * l), o[l]));
+        }
+      }
+      for (size_t q = 0; q < g; q++) {
+        double *const e = buf + (i0 + q - lo) * 8;
+        const double b1 = _mm512_reduce_add_pd(ai[q][1]);
+        e[0] += _mm512_reduce_add_pd(ai[q][0]);
+        e[1] += b1;
+        e[2] += b1;
+        e[3] += _mm512_reduce_add_pd(ai[q][2]);
+        for (int f = 3; f < 7; f++) e[f + 1] += _mm512_reduce_add_pd(ai[q][f]);
+      }
+    }
+  }
+}
+
+AVX512 void vsph_sweep_x86_grad2_avx512(const struct vsph_pair_kernel *pk,
+                                        const struct vsph_particles *p,
+                                        const struct vsph_cells *cells,
+                                        const struct vsph_equations_sweep *sw,
+                                        size_t blk) {
+  grad2_block(pk, p, cells, sw, blk);
+}
+
 /* ------------------------------------------------------------------------
  * The same sweep with AVX2 and FMA (x86-64-v3), four lanes: where the CPU
  * has AVX2 but not AVX-512 (pk.simd 1), or where VSPH_PAIR_SIMD=avx2 caps
@@ -719,6 +865,132 @@ AVX2 size_t vsph_sweep_x86_groups2_avx2(const struct vsph_equations_ctx *rc,
                                         size_t blk, int delta, int visc,
                                         double *min_s2) {
   GROUPS_DISPATCH(groups2_block4);
+}
+
+/* grad2_block in four lanes: the same walk, terms and order, the lanes
+ * outside the support cleared by an and: the weights V G and the
+ * differences x and du (a far lane may hold anything, even 0/0 in i's
+ * own lane, and 0 times an infinite one is not 0) */
+static inline __attribute__((always_inline)) AVX2 void grad2_block4(
+    const struct vsph_pair_kernel *pk, const struct vsph_particles *p,
+    const struct vsph_cells *cells, const struct vsph_equations_sweep *sw,
+    size_t blk) {
+  const size_t lo = sw->lo[blk];
+  double *const buf = sw->buf + sw->off[blk];
+  memset(buf, 0, (sw->hi[blk] - lo) * 8 * sizeof *buf);
+  const double *const px = p->pos[0], *const py = p->pos[1],
+                      *const vx = p->vel[0], *const vy = p->vel[1],
+                      *const vol = p->vol;
+  const __m256d H2 = _mm256_set1_pd(pk->H2), vhi2 = _mm256_set1_pd(pk->h_inv2),
+                vdwq = _mm256_set1_pd(2.0 * pk->dwq), /* 2 exact */
+      nine = _mm256_set1_pd(9.0);
+  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
+  for (size_t c = sw->c0[blk]; c < sw->c0[blk + 1]; c++) {
+    struct vsph_pair_ranges rg;
+    vsph_pair_ranges_cell(&rg, cells, c);
+    const size_t s0 = cells->start[c], end = s0 + cells->count[c];
+    for (size_t i0 = s0; i0 < end; i0 += 8) {
+      const size_t g = end - i0 < 8 ? end - i0 : 8; /* receivers i0 + q */
+      __m256d ai[8][7]; /* i's sums, lane by lane, as grad2_block's */
+      for (size_t q = 0; q < g; q++)
+        for (int e = 0; e < 7; e++) ai[q][e] = _mm256_setzero_pd();
+      for (size_t r = 0; r < rg.n; r++) {
+        const size_t hi = rg.hi[r];
+        /* no receiver of the group has a pair below i0 + 1 */
+        for (size_t j = rg.lo[r] > i0 ? rg.lo[r] : i0 + 1; j < hi; j += 4) {
+          const __m256i live = lanes_left4(hi - j);
+          /* whole vectors by plain loads, a range's last by masked ones */
+          const int whole = hi - j >= 4;
+#define LOAD4(a) (whole ? _mm256_loadu_pd(a) : _mm256_maskload_pd((a), live))
+          const __m256d X = LOAD4(px + j), Y = LOAD4(py + j),
+                        U0 = LOAD4(vx + j), U1 = LOAD4(vy + j),
+                        V = LOAD4(vol + j);
+#undef LOAD4
+          const __m256i J =
+              _mm256_add_epi64(_mm256_set1_epi64x((long long)j), lane);
+          __m256d aj[7];
+          for (int e = 0; e < 7; e++) aj[e] = _mm256_setzero_pd();
+          int any = 0;
+          for (size_t q = 0; q < g; q++) {
+            const size_t i = i0 + q;
+            const __m256d dx = _mm256_sub_pd(X, _mm256_set1_pd(px[i])),
+                          dy = _mm256_sub_pd(Y, _mm256_set1_pd(py[i]));
+            const __m256d s2 =
+                _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
+            /* the pairs: j > i, within the support */
+            const __m256d k = _mm256_and_pd(
+                _mm256_castsi256_pd(_mm256_and_si256(
+                    live,
+                    _mm256_cmpgt_epi64(J, _mm256_set1_epi64x((long long)i)))),
+                _mm256_cmp_pd(s2, H2, _CMP_LT_OQ));
+            if (!_mm256_movemask_pd(k)) continue;
+            any = 1;
+            const __m256d q2 = _mm256_mul_pd(s2, vhi2);
+            /* the lanes added anywhere: pairs with q^2 < 9 */
+            const __m256d in =
+                _mm256_and_pd(k, _mm256_cmp_pd(q2, nine, _CMP_LT_OQ));
+            const __m256d G = _mm256_mul_pd(vdwq, expneg4(q2));
+            const __m256d wj = _mm256_and_pd(_mm256_mul_pd(V, G), in),
+                          wi = _mm256_and_pd(
+                              _mm256_mul_pd(_mm256_set1_pd(vol[i]), G), in),
+                          cx = _mm256_and_pd(dx, in),
+                          cy = _mm256_and_pd(dy, in),
+                          du0 = _mm256_and_pd(
+                              _mm256_sub_pd(U0, _mm256_set1_pd(vx[i])), in),
+                          du1 = _mm256_and_pd(
+                              _mm256_sub_pd(U1, _mm256_set1_pd(vy[i])), in);
+            const __m256d tx[2] = {_mm256_mul_pd(wj, cx),
+                                   _mm256_mul_pd(wi, cx)},
+                          ty[2] = {_mm256_mul_pd(wj, cy),
+                                   _mm256_mul_pd(wi, cy)};
+            for (int s = 0; s < 2; s++) {
+              __m256d *const a = s ? aj : ai[q];
+              a[0] = _mm256_fmadd_pd(tx[s], cx, a[0]);
+              a[1] = _mm256_fmadd_pd(tx[s], cy, a[1]);
+              a[2] = _mm256_fmadd_pd(ty[s], cy, a[2]);
+              a[3] = _mm256_fmadd_pd(tx[s], du0, a[3]);
+              a[4] = _mm256_fmadd_pd(ty[s], du0, a[4]);
+              a[5] = _mm256_fmadd_pd(tx[s], du1, a[5]);
+              a[6] = _mm256_fmadd_pd(ty[s], du1, a[6]);
+            }
+          }
+          if (!any) continue;
+          /* B's four fields and Mg's of each candidate, two transposes */
+          const __m256d rb[4] = {aj[0], aj[1], aj[1], aj[2]},
+                        rm[4] = {aj[3], aj[4], aj[5], aj[6]};
+          __m256d ob[4], om[4];
+          transpose4(rb, ob);
+          transpose4(rm, om);
+          const size_t nl = hi - j < 4 ? hi - j : 4;
+          double *const e = buf + (j - lo) * 8;
+          for (size_t l = 0; l < nl; l++) {
+            _mm256_storeu_pd(e + 8 * l,
+                             _mm256_add_pd(_mm256_loadu_pd(e + 8 * l), ob[l]));
+            _mm256_storeu_pd(
+                e + 8 * l + 4,
+                _mm256_add_pd(_mm256_loadu_pd(e + 8 * l + 4), om[l]));
+          }
+        }
+      }
+      for (size_t q = 0; q < g; q++) {
+        double *const e = buf + (i0 + q - lo) * 8;
+        const double b1 = sum4(ai[q][1]);
+        e[0] += sum4(ai[q][0]);
+        e[1] += b1;
+        e[2] += b1;
+        e[3] += sum4(ai[q][2]);
+        for (int f = 3; f < 7; f++) e[f + 1] += sum4(ai[q][f]);
+      }
+    }
+  }
+}
+
+AVX2 void vsph_sweep_x86_grad2_avx2(const struct vsph_pair_kernel *pk,
+                                    const struct vsph_particles *p,
+                                    const struct vsph_cells *cells,
+                                    const struct vsph_equations_sweep *sw,
+                                    size_t blk) {
+  grad2_block4(pk, p, cells, sw, blk);
 }
 #undef GROUPS_DISPATCH
 #undef AVX2

@@ -77,6 +77,29 @@ size_t vsph_sweep_x86_groups2_avx2(const struct vsph_equations_ctx *rc,
                                    size_t blk, int delta, int visc,
                                    double *min_s2);
 
+struct vsph_pair_kernel;
+
+/* PVWF's (model B's) first pass, one block, in 2-D with the 3h Gaussian
+ * (grad_block, solver/equations.c: each pair's terms -F x (x) x and
+ * -F du (x) x of B and Mg, i's times V_j and j's times V_i, into the
+ * block's buffer of eight fields a particle, every particle a receiver),
+ * by cell groups as vsph_sweep_x86_groups2_avx512 walks them, for
+ * AVX-512 (_avx512) and for AVX2 and FMA (_avx2): within rounding of the
+ * four-lane loops and of each other, not their bits; the same bits on 1
+ * and 2 threads. Defined only where VSPH_SWEEP_X86_GROUPS is 1; call
+ * them only there, and where vsph_pair_x86_simd() returns 2 (_avx512) or
+ * 1 or more (_avx2) (grad_sweep does). */
+void vsph_sweep_x86_grad2_avx512(const struct vsph_pair_kernel *pk,
+                                 const struct vsph_particles *p,
+                                 const struct vsph_cells *cells,
+                                 const struct vsph_equations_sweep *sw,
+                                 size_t blk);
+void vsph_sweep_x86_grad2_avx2(const struct vsph_pair_kernel *pk,
+                               const struct vsph_particles *p,
+                               const struct vsph_cells *cells,
+                               const struct vsph_equations_sweep *sw,
+                               size_t blk);
+
 /* The sweeps' exponential: y[k] = e^{-x[k]}, 0 <= x[k] <= 700, for
  * k < n, eight at a time (expneg8) or four (expneg4), for its test. The
  * same conditions as vsph_sweep_x86_groups2_avx512 (expneg8) and

@@ -508,6 +508,18 @@ static int groups_lanes_at(int level, int form, int dim, int parts, int sweep) {
           form == VSPH_VISCOUS_PVWF || form == VSPH_VISCOUS_TWOPASS);
 }
 
+/* Whether PVWF's or B's first pass (the gradient sweep) takes its sweep
+ * by cell groups (vsph_sweep_x86_grad2_avx512, _avx2) at SIMD level
+ * @p level in this build on this CPU: PVWF or B in 2-D by the sweep, with
+ * the parts or without (the parts are the second pass's). Its sums, and
+ * so A = T L and every rate after it, are within rounding of the loops',
+ * not their bits, as groups_lanes_at says. */
+static int grad_lanes_at(int level, int form, int dim, int sweep) {
+  return VSPH_SWEEP_X86_GROUPS && level >= 1 && vsph_pair_x86_simd() >= level &&
+         dim == 2 && sweep &&
+         (form == VSPH_VISCOUS_PVWF || form == VSPH_VISCOUS_TWOPASS);
+}
+
 /* The same at the level the CPU allows (what a run takes) */
 static int groups_lanes(int form, int dim, int parts, int sweep) {
   return groups_lanes_at(vsph_pair_x86_simd(), form, dim, parts, sweep);
@@ -1168,6 +1180,12 @@ START_TEST(test_sweep_scatter_simd) {
   int st[3] = {0, 0, 0};
   double closest[3] = {0, 0, 0};
   size_t pairs[3] = {0, 0, 0};
+  /* PVWF's and B's first pass: A = T L (four entries in 2-D) at each
+   * level, from the workspace */
+  const int stress = cases[c].form == VSPH_VISCOUS_PVWF ||
+                     cases[c].form == VSPH_VISCOUS_TWOPASS;
+  double *A = stress ? calloc(4 * n * 3, sizeof *A) : NULL;
+  ck_assert(!stress || A);
   for (int level = 0; level <= most; level++) {
     double *const o = buf + (size_t)level * nout * n;
     struct vsph_equations_out out = {.drho = o, .sweep = sw};
@@ -1181,6 +1199,9 @@ START_TEST(test_sweep_scatter_simd) {
                                    s->vws, &out);
     closest[level] = out.min_s2;
     pairs[level] = out.interactions;
+    for (int e = 0; stress && e < 4; e++)
+      memcpy(A + ((size_t)level * 4 + (size_t)e) * n, s->vws->A[e],
+             n * sizeof *A);
   }
   /* the caller's environment back before any assertion (a failed one
    * leaves this test at once, and the suite runs on in this process) */
@@ -1191,8 +1212,28 @@ START_TEST(test_sweep_scatter_simd) {
   free(keep);
   for (int level = 0; level <= most; level++) {
     /* the groups' sweep at this level (the Brookshaw forms, MEAF, PVWF
-     * and B; not the parts, nor 3-D) */
-    const int lanes = groups_lanes_at(level, cases[c].form, dim, parts, 1);
+     * and B; not the parts, nor 3-D), or PVWF's and B's first pass by
+     * groups (the parts too) */
+    const int grad = grad_lanes_at(level, cases[c].form, dim, 1);
+    const int lanes =
+        groups_lanes_at(level, cases[c].form, dim, parts, 1) || grad;
+    if (grad) { /* A within rounding, by the groups' kernel */
+      const double *const a = A + (size_t)level * 4 * n;
+      for (size_t f = 0; f < 4; f++) {
+        double big = 0.0;
+        for (size_t e = f * n; e < (f + 1) * n; e++)
+          big = fmax(big, fabs(A[e]));
+        for (size_t e = f * n; e < (f + 1) * n; e++)
+          ck_assert_msg(fabs(a[e] - A[e]) <= SIMD_ROUNDING * big,
+                        "%s, %s: A entry %zu of particle %zu is %.17g, "
+                        "portable %.17g (largest %.3g)",
+                        vsph_viscous_name(cases[c].form), names[level], f,
+                        e - f * n, a[e], A[e], big);
+      }
+      ck_assert_msg(memcmp(a, A, 4 * n * sizeof *a) != 0,
+                    "%s, %s: the first pass gave the portable loops' bits",
+                    vsph_viscous_name(cases[c].form), names[level]);
+    }
     ck_assert_int_eq(st[level], 0);
     ck_assert_double_eq(closest[level], closest[0]); /* the closest pair */
     ck_assert_uint_eq(pairs[level], pairs[0]);       /* ghosts' not counted */
@@ -1229,12 +1270,18 @@ START_TEST(test_sweep_scatter_simd) {
    * lanes and in eight, so some of these sums differ in their last bits
    * (a dispatch that took one kernel at both levels would give the same
    * bits) */
-  if (groups_lanes_at(1, cases[c].form, dim, parts, 1) &&
-      groups_lanes_at(2, cases[c].form, dim, parts, 1))
+  if ((groups_lanes_at(1, cases[c].form, dim, parts, 1) &&
+       groups_lanes_at(2, cases[c].form, dim, parts, 1)) ||
+      grad_lanes_at(2, cases[c].form, dim, 1))
     ck_assert_msg(
         memcmp(buf + nout * n, buf + 2 * nout * n, nout * n * sizeof *buf) != 0,
         "%s: the AVX2 and AVX-512 levels gave the same bits",
         vsph_viscous_name(cases[c].form));
+  if (grad_lanes_at(2, cases[c].form, dim, 1)) /* and in the first pass */
+    ck_assert_msg(memcmp(A + 4 * n, A + 8 * n, 4 * n * sizeof *A) != 0,
+                  "%s: the AVX2 and AVX-512 first passes gave the same bits",
+                  vsph_viscous_name(cases[c].form));
+  free(A);
   vsph_equations_sweep_free(sw);
   free(buf);
   vsph_integrate_free(s);
@@ -1718,6 +1765,100 @@ START_TEST(test_groups_block_bounds) {
   vsph_particles_free(p);
 #else
   fprintf(stderr, "test_groups_block_bounds: no groups' sweep in this build\n");
+#endif
+}
+END_TEST
+
+/* PVWF's and B's first pass by cell groups alone
+ * (vsph_sweep_x86_grad2_avx512, _avx2): each level's kernel called
+ * directly on one block that holds every cell of a set 40 h from the
+ * origin (so that a lane past a range's end, which loads 0, lies far
+ * outside the support, where the exponential's 2^-n is not a number),
+ * its buffer followed by sentinels of -0 (which an add of +0 would turn
+ * to +0), for eight sizes of the set (one particle fewer each time, so
+ * that its last range ends at every lane of a vector). Each particle's
+ * eight fields are B = sum_j V_j (-F) x (x) x and Mg = sum_j V_j (-F)
+ * du (x) x over every j != i within the support, ghosts or not (THEORY
+ * 3), summed here pair by pair with the twin's F (vsph_kernel_dw and
+ * libm's exp, not the kernels' route): within SIMD_ROUNDING of each
+ * field's largest (the kernels' exponential is within 1e-15 of libm's,
+ * test_expneg_within_1e15_of_exp; some 50 shares an entry, summed in
+ * another order); every sentinel keeps its bits. A velocity field of
+ * both components (the random set's) so that each of Mg's entries has
+ * its own value: a transposed or swapped field fails. Where the CPU or
+ * build lacks the kernels, said and left out. */
+START_TEST(test_grad_block_by_hand) {
+#if VSPH_SWEEP_X86_GROUPS /* else the kernels are not built */
+  const char *levels[2];
+  const int nlev = groups_levels(levels);
+  if (!nlev) {
+    fprintf(stderr, "test_grad_block_by_hand: no groups' sweep here\n");
+    return;
+  }
+  enum { SENT = 16 };
+  struct vsph_particles *p = mixed_set(2, 7070, 0.5, 0.11);
+  const double h = HDX * DX;
+  const size_t n0 = p->n;
+  for (size_t i = 0; i < n0; i++)
+    for (int a = 0; a < 2; a++) p->pos[a][i] += 40.0 * h;
+  struct vsph_pair_kernel pk;
+  vsph_pair_kernel_init(&pk, &vsph_gaussian_type, 2, h);
+  struct vsph_cells *cells = vsph_cells_alloc();
+  double *b = malloc((8 * n0 + SENT) * sizeof *b),
+         *want = malloc(8 * n0 * sizeof *want);
+  ck_assert(b && want);
+  for (size_t k = 0; k < 8; k++) {
+    p->n = n0 - k;
+    const size_t n = p->n;
+    ck_assert_int_eq(vsph_cells_build(cells, p, 3.0 * h), 0);
+    for (size_t e = 0; e < 8 * n; e++) want[e] = 0.0;
+    for (size_t i = 0; i < n; i++)
+      for (size_t j = 0; j < n; j++) {
+        double x[3];
+        const double G = -twin_F(&vsph_gaussian_type, 2, h, p, i, j, x);
+        if (G == 0.0) continue; /* i itself, or outside the support */
+        const double w = p->vol[j] * G, du[2] = {p->vel[0][j] - p->vel[0][i],
+                                                 p->vel[1][j] - p->vel[1][i]};
+        for (int a = 0; a < 2; a++)
+          for (int c = 0; c < 2; c++) {
+            want[8 * i + (size_t)(2 * a + c)] += w * x[a] * x[c];
+            want[8 * i + (size_t)(4 + 2 * a + c)] += w * du[a] * x[c];
+          }
+      }
+    double big[8] = {0};
+    for (size_t i = 0; i < n; i++)
+      for (int f = 0; f < 8; f++)
+        big[f] = fmax(big[f], fabs(want[8 * i + (size_t)f]));
+    const size_t c0[2] = {0, cells->ncells}, lo = 0, hi = n;
+    size_t off = 0;
+    for (int l = 0; l < nlev; l++) {
+      /* its own entries NaN (the kernel zeroes them first), then the
+       * sentinels */
+      for (size_t e = 0; e < 8 * n + SENT; e++)
+        b[e] = e < 8 * n ? (double)NAN : -0.0;
+      const struct vsph_equations_sweep sw = {
+          .nblk = 1, .c0 = c0, .lo = &lo, .hi = &hi, .off = &off, .buf = b};
+      (!strcmp(levels[l], "avx512")
+           ? vsph_sweep_x86_grad2_avx512
+           : vsph_sweep_x86_grad2_avx2)(&pk, p, cells, &sw, 0);
+      for (size_t e = 0; e < 8 * n; e++)
+        ck_assert_msg(fabs(b[e] - want[e]) <= SIMD_ROUNDING * big[e % 8],
+                      "%s, %zu particles: field %zu of particle %zu is "
+                      "%.17g, pair by pair %.17g",
+                      levels[l], n, e % 8, e / 8, b[e], want[e]);
+      for (size_t e = 8 * n; e < 8 * n + SENT; e++)
+        ck_assert_msg(b[e] == 0.0 && signbit(b[e]),
+                      "%s, %zu particles: entry %zu past the block's buffer "
+                      "is %g",
+                      levels[l], n, e - 8 * n, b[e]);
+    }
+  }
+  free(b);
+  free(want);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+#else
+  fprintf(stderr, "test_grad_block_by_hand: no groups' sweep in this build\n");
 #endif
 }
 END_TEST
@@ -2687,6 +2828,7 @@ Suite *vsph_equations_suite(void) {
   tcase_add_loop_test(tc, test_closest_ghost_receiver, 0, 2);
   tcase_add_test(tc, test_sweep_addj_by_hand);
   tcase_add_loop_test(tc, test_groups_block_bounds, 0, 4);
+  tcase_add_test(tc, test_grad_block_by_hand);
   tcase_add_test(tc, test_sweep_lanes_by_hand);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
   tcase_add_loop_test(tc, test_sweep_gather_threads,
