@@ -691,7 +691,8 @@ static vsph_equations_sweep_fn *sweep_choose(
  * unit terms -F x (x) x and -F du (x) x of B and Mg (vsph_pair_pvwf_grad,
  * even in the pair: i takes V_j of them, j V_i), i's summed field by
  * field, j's added to the block's buffer, as sweep_block. Every particle
- * receives, ghosts too: the second pass reads their A. */
+ * receives, ghosts too: the second pass reads their A. In 2-D by cell
+ * groups where the CPU allows (grad_block2). */
 VSPH_CONSTS_SPECIALISE void grad_block(const struct vsph_pair_kernel *pk,
                                        const struct vsph_particles *p,
                                        const struct vsph_cells *cells,

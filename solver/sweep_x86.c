@@ -9,7 +9,9 @@
  * its instructions alone (target attribute), as solver/pair_x86.c. And the
  * 2-D sweep by cell groups of the Brookshaw forms, MEAF and the stress
  * forms' second pass, for AVX-512
- * (vsph_sweep_x86_groups2_avx512) and for AVX2 (_avx2): a cell's
+ * (vsph_sweep_x86_groups2_avx512) and for AVX2 (_avx2), and the stress
+ * forms' first pass in the same walk (vsph_sweep_x86_grad2_avx512,
+ * _avx2): a cell's
  * receivers, eight at a time, against whole vectors of eight (four)
  * consecutive candidates, every pair's work in the lanes whether the pair
  * lies within the support or not (masked, or cleared), as GROMACS's

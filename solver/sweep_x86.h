@@ -3,8 +3,9 @@
 /* The symmetric sweep's scatter of j's shares with AVX2, chosen at
  * run time where vsph_pair_kernel::simd is 1 or 2, and the 2-D sweep by
  * cell groups of the Brookshaw forms, MEAF and the stress forms' second
- * pass, built for AVX-512 (where it is 2) and for AVX2 (where it is 1)
- * (solver/sweep_x86.c); the library's own, not installed. */
+ * pass, and of the stress forms' first pass, built for AVX-512 (where it
+ * is 2) and for AVX2 (where it is 1) (solver/sweep_x86.c); the library's
+ * own, not installed. */
 #ifndef VSPH_SOLVER_SWEEP_X86_H
 #define VSPH_SOLVER_SWEEP_X86_H
 
