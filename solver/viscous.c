@@ -211,12 +211,12 @@ int vsph_viscous_invert_sym(int dim, const double *b, double *inv, double tol) {
   return 1;
 }
 
-void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
-                              struct vsph_viscous_ws *ws, size_t i,
-                              const double B[9], const double Mg[9]) {
-  if (!vp || !ws || !B || !Mg || !vsph_viscous_type_get(vp->form)) return;
-  const int dim = vp->dim, renorm = (vsph_viscous_types[vp->form]->flags &
-                                     VSPH_VISCOUS_RENORM) != 0;
+/* vsph_viscous_pvwf_finish for dimension @p dim (a constant where
+ * inlined) and @p renorm, the form's VSPH_VISCOUS_RENORM */
+VSPH_CONSTS_SPECIALISE void pvwf_finish(const struct vsph_viscous_props *vp,
+                                        struct vsph_viscous_ws *ws, size_t i,
+                                        const double B[9], const double Mg[9],
+                                        const int renorm, const int dim) {
   double L[9] = {0}, G[9] = {0};
   ws->fallback[i] =
       renorm ? !vsph_viscous_invert_sym(dim, B, L, vp->det_tol) : 0;
@@ -246,6 +246,30 @@ void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
       ws->A[a * dim + b][i] = s;
     }
   ws->dens[i] = -TD;
+}
+
+void vsph_viscous_pvwf_finish(const struct vsph_viscous_props *vp,
+                              struct vsph_viscous_ws *ws, size_t i,
+                              const double B[9], const double Mg[9]) {
+  if (!vp || !ws || !B || !Mg || !vsph_viscous_type_get(vp->form)) return;
+  pvwf_finish(vp, ws, i, B, Mg,
+              (vsph_viscous_types[vp->form]->flags & VSPH_VISCOUS_RENORM) != 0,
+              vp->dim);
+}
+
+void vsph_viscous_pvwf_finish_rows(const struct vsph_viscous_props *vp,
+                                   struct vsph_viscous_ws *ws, size_t i0,
+                                   size_t i1, const double *t) {
+  const int dim = vp->dim, nf = 2 * dim * dim,
+            renorm = (vsph_viscous_types[vp->form]->flags &
+                      VSPH_VISCOUS_RENORM) != 0;
+  for (size_t i = i0; i < i1; i++) {
+    const double *const s = t + (i - i0) * (size_t)nf;
+    if (dim == 2)
+      pvwf_finish(vp, ws, i, s, s + 4, renorm, 2);
+    else
+      pvwf_finish(vp, ws, i, s, s + nf / 2, renorm, dim);
+  }
 }
 
 /* vsph_viscous_laplacians for dimension dim (a constant where inlined) */

@@ -204,4 +204,12 @@ struct vsph_viscous_loops {
       .any = name##_any,                                                     \
       .force = name##_force2};
 
+/* vsph_viscous_pvwf_finish for particles @p i0 to @p i1 - 1, whose sums
+ * lie in @p t, 2 d^2 a particle (B, then Mg: the first pass's sweep
+ * buffer's row), the dimension a constant in 2-D (the same operations,
+ * so the same bits); @p vp valid (the sweep's caller checked it) */
+void vsph_viscous_pvwf_finish_rows(const struct vsph_viscous_props *vp,
+                                   struct vsph_viscous_ws *ws, size_t i0,
+                                   size_t i1, const double *t);
+
 #endif /* VSPH_SOLVER_VISCOUS_INTERNAL_H */
