@@ -776,22 +776,24 @@ VSPH_CONSTS_SPECIALISE void grad_block(const struct vsph_pair_kernel *pk,
 
 /* grad_block in 2-D: by cell groups in AVX-512 lanes, or AVX2 ones,
  * where the CPU has them and the build allows it (VSPH_SWEEP_X86_GROUPS;
- * solver/sweep_x86.c, within rounding), else the loops above */
+ * solver/sweep_x86.c, within rounding) and the kernel is the 3h Gaussian
+ * they are built for, else the loops above */
 static void grad_block2(const struct vsph_pair_kernel *pk,
                         const struct vsph_particles *p,
                         const struct vsph_cells *cells,
                         const struct vsph_equations_sweep *sw, size_t blk) {
+  const int G = VSPH_KERNEL_DFQ_GAUSSIAN;
 #if VSPH_SWEEP_X86_GROUPS
-  if (pk->simd == 2) {
+  if (pk->simd == 2 && pk->dfq_id == G) {
     vsph_sweep_x86_grad2_avx512(pk, p, cells, sw, blk);
     return;
   }
-  if (pk->simd == 1) {
+  if (pk->simd == 1 && pk->dfq_id == G) {
     vsph_sweep_x86_grad2_avx2(pk, p, cells, sw, blk);
     return;
   }
 #endif
-  grad_block(pk, p, cells, sw, blk, 2, VSPH_KERNEL_DFQ_GAUSSIAN);
+  grad_block(pk, p, cells, sw, blk, 2, G);
 }
 
 /* PVWF's first pass's finish (grad_sweep): B and Mg of each particle. */

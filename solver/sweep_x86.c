@@ -871,8 +871,9 @@ AVX2 size_t vsph_sweep_x86_groups2_avx2(const struct vsph_equations_ctx *rc,
 
 /* grad2_block in four lanes: the same walk, terms and order, the lanes
  * outside the support cleared by an and: the weights V G and the
- * differences x and du (a far lane may hold anything, even 0/0 in i's
- * own lane, and 0 times an infinite one is not 0) */
+ * differences x and du (a far candidate may hold an infinite velocity,
+ * volume or position, i's own lane inf - inf where i's velocity is
+ * infinite, and 0 times an infinite value is not 0) */
 static inline __attribute__((always_inline)) AVX2 void grad2_block4(
     const struct vsph_pair_kernel *pk, const struct vsph_particles *p,
     const struct vsph_cells *cells, const struct vsph_equations_sweep *sw,

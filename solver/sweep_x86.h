@@ -29,6 +29,7 @@ void vsph_sweep_x86_add8_avx2(double *buf, size_t lo, const size_t *jj,
                               double v);
 
 struct vsph_equations_ctx;
+struct vsph_pair_kernel;
 struct vsph_particles;
 struct vsph_cells;
 struct vsph_equations_sweep;
@@ -78,15 +79,13 @@ size_t vsph_sweep_x86_groups2_avx2(const struct vsph_equations_ctx *rc,
                                    size_t blk, int delta, int visc,
                                    double *min_s2);
 
-struct vsph_pair_kernel;
-
 /* PVWF's (model B's) first pass, one block, in 2-D with the 3h Gaussian
  * (grad_block, solver/equations.c: each pair's terms -F x (x) x and
  * -F du (x) x of B and Mg, i's times V_j and j's times V_i, into the
  * block's buffer of eight fields a particle, every particle a receiver),
  * by cell groups as vsph_sweep_x86_groups2_avx512 walks them, for
  * AVX-512 (_avx512) and for AVX2 and FMA (_avx2): within rounding of the
- * four-lane loops and of each other, not their bits; the same bits on 1
+ * portable loops and of each other, not their bits; the same bits on 1
  * and 2 threads. Defined only where VSPH_SWEEP_X86_GROUPS is 1; call
  * them only there, and where vsph_pair_x86_simd() returns 2 (_avx512) or
  * 1 or more (_avx2) (grad_sweep does). */
