@@ -1295,6 +1295,75 @@ START_TEST(test_sweep_scatter_simd) {
 }
 END_TEST
 
+/* One and two threads give the same bits through the sweep by cell
+ * groups, as through every loop of the sweep: the standing wave (its
+ * ghosts too) at 48 across, in four blocks or more (six or seven; asserted: the
+ * second thread then sums some of them), after five RK4 steps of form _i (MGF
+ * with delta-SPH, MEAF, PVWF, B), evaluated at each SIMD level this build
+ * and CPU have (portable, avx2, avx512 by VSPH_PAIR_SIMD): every fluid
+ * particle's position, velocity and density on one thread and on two,
+ * bit for bit. The blocks are planned from the particle count alone and
+ * each writes its own buffer, summed in block order: the threads change
+ * who sums a block, not what it sums. (test_threads_bitwise, in the
+ * solver suite, takes every form at 16 across, one block for most, at
+ * the CPU's level.) */
+START_TEST(test_groups_threads_bitwise) {
+  static const int forms[] = {VSPH_VISCOUS_MGF, VSPH_VISCOUS_MEAF,
+                              VSPH_VISCOUS_PVWF, VSPH_VISCOUS_TWOPASS};
+  const int form = forms[_i];
+  const char *names[3] = {"portable"};
+  const int nl = 1 + groups_levels(names + 1);
+  const int threads = omp_get_max_threads();
+  const char *was = getenv("VSPH_PAIR_SIMD");
+  char *keep = was ? strdup(was) : NULL;
+  double *state[3][2] = {{NULL}};
+  size_t nblk[3][2] = {{0}}, n[3][2] = {{0}};
+  for (int l = 0; l < nl; l++) {
+    setenv("VSPH_PAIR_SIMD", names[l], 1);
+    for (int t = 0; t < 2; t++) {
+      omp_set_num_threads(t + 1);
+      struct vsph_integrate_props ip;
+      struct vsph_integrate *s =
+          scene_stepped(&vsph_standing_wave_type, form, 48,
+                        form == VSPH_VISCOUS_MGF ? 0.1 : -1.0, &ip);
+      for (int k = 0; k < 2; k++) /* five steps in all */
+        ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
+      const size_t nf = s->n_fluid;
+      n[l][t] = nf;
+      nblk[l][t] = s->sweep->nblk;
+      state[l][t] = malloc(5 * nf * sizeof *state[l][t]);
+      ck_assert_ptr_nonnull(state[l][t]);
+      for (size_t i = 0; i < s->p->n; i++) {
+        const size_t id = s->p->id[i];
+        if (id >= nf) continue;
+        state[l][t][id] = s->p->pos[0][i];
+        state[l][t][nf + id] = s->p->pos[1][i];
+        state[l][t][2 * nf + id] = s->p->vel[0][i];
+        state[l][t][3 * nf + id] = s->p->vel[1][i];
+        state[l][t][4 * nf + id] = s->p->rho[i];
+      }
+      vsph_integrate_free(s);
+    }
+  }
+  /* the caller's environment and threads back before any assertion */
+  if (keep)
+    setenv("VSPH_PAIR_SIMD", keep, 1);
+  else
+    unsetenv("VSPH_PAIR_SIMD");
+  free(keep);
+  omp_set_num_threads(threads);
+  for (int l = 0; l < nl; l++) {
+    ck_assert_uint_eq(n[l][0], n[l][1]);
+    ck_assert_uint_ge(nblk[l][0], 4); /* several blocks: the premise */
+    ck_assert_msg(
+        memcmp(state[l][0], state[l][1], 5 * n[l][0] * sizeof(double)) == 0,
+        "%s, %s: one thread and two differ", vsph_viscous_name(form), names[l]);
+    free(state[l][0]);
+    free(state[l][1]);
+  }
+}
+END_TEST
+
 /* @p ep for form @p form with the 3h Gaussian in 2-D at smoothing length
  * @p h, delta-SPH's @p delta (0: off), the suite's rho0, c0 and mu. */
 static void gauss2_props(struct vsph_equations_props *ep, int form, double h,
@@ -2903,6 +2972,7 @@ Suite *vsph_equations_suite(void) {
   tcase_add_loop_test(tc, test_joint_walk_resumes, 0, 2);
   tcase_add_test(tc, test_joint_walk_guards);
   tcase_add_loop_test(tc, test_sweep_scatter_simd, 0, 22);
+  tcase_add_loop_test(tc, test_groups_threads_bitwise, 0, 4);
   tcase_add_loop_test(tc, test_groups_crowded, 0, 10);
   tcase_add_test(tc, test_groups_support_edge);
   tcase_add_loop_test(tc, test_groups_nonfinite_contained, 0, 4);

@@ -204,8 +204,10 @@ END_TEST
 
 /* One and two threads give bitwise-identical states after a few steps
  * (gather loops; exact integer and min reductions), walls included, for
- * each formulation's specialised loop (_i: MGF with delta-SPH, MEAF,
- * PVWF). */
+ * every formulation (_i, the form's id; MGF with delta-SPH), at the
+ * CPU's SIMD level, on the standing wave at 16 across: one block of the
+ * sweep for most forms (test_groups_threads_bitwise, in the equations
+ * suite, takes several blocks at every level). */
 START_TEST(test_threads_bitwise) {
   double *state[2];
   size_t n = 0;
