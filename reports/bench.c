@@ -212,16 +212,20 @@ static double timed(int reps, void (*fn)(void *), void *arg, double *median) {
   return t[0];
 }
 
-/* The peer's figures, measured side by side on this 2-core machine:
- * DualSPHysics v5.4 on the CPU (rebuilt from its sources; pair physics
- * in float, -O3 -ffast-math), 2-D standing wave, about 42k particles and
- * 45 neighbours, 1 thread, alternating runs at load 0.6-1.1 (issue 46's
- * review, 2026-12: its force without delta-SPH, its whole solver, and
- * its memory per added particle; the force with delta-SPH from the speed
+/* The peer's figures, measured side by side with vsph on the project's
+ * first machine, a 2-core AMD EPYC Zen 5 KVM guest, not on the machine
+ * that runs this bench: DualSPHysics v5.4 on the CPU (rebuilt from its sources;
+ * pair physics in float, -O3 -ffast-math), 2-D standing wave, about 42k
+ * particles and 45 neighbours, 1 thread, alternating runs at load 0.6-1.1
+ * (issue 46's review, 2026-12: its force without delta-SPH, its whole solver,
+ * and its memory per added particle; the force with delta-SPH from the speed
  * work's first sitting, docs/performance.md). Quoted, not measured here:
- * they sit beside our rows to compare. */
+ * they sit beside our rows to compare, under a line that says so. */
 static void print_peer(FILE *out) {
   fprintf(out,
+          "# the peer's rows: DualSPHysics v5.4, one thread, as issue 46's "
+          "review measured it on an AMD EPYC Zen 5 guest; quoted, not "
+          "measured here\n"
           "%-30s %7s %3s %8s %8s %13s %15s %10s %6s\n"
           "%-30s %7s %3s %8s %8s %13s %15s %10s %6s\n"
           "%-30s %7s %3s %8s %8s %13s %15s %10s %6s\n",
