@@ -811,7 +811,8 @@ static void grad_rows(void *ctx, size_t i0, size_t i1, int nf,
 
 /* PVWF's first pass by the sweep for the 2-D and 3-D Gaussian: the
  * blocks, then every particle's B and Mg from its buffers in block order,
- * finished by vsph_viscous_pvwf_finish. */
+ * finished by vsph_viscous_pvwf_finish_rows (vsph_viscous_pvwf_finish's
+ * operations, a block's rows at a time). */
 static int grad_sweep(const struct vsph_viscous_props *vp,
                       const struct vsph_pair_kernel *pk,
                       const struct vsph_particles *p,

@@ -1298,9 +1298,10 @@ END_TEST
 /* One and two threads give the same bits through the sweep by cell
  * groups, as through every loop of the sweep: the standing wave (its
  * ghosts too) at 48 across, in four blocks or more (six or seven; asserted: the
- * second thread then sums some of them), after five RK4 steps of form _i (MGF
- * with delta-SPH, MEAF, PVWF, B), evaluated at each SIMD level this build
- * and CPU have (portable, avx2, avx512 by VSPH_PAIR_SIMD): every fluid
+ * second thread then sums some of them), two RK4 steps of form _i (MGF
+ * with delta-SPH, MEAF, PVWF, B) after three at the caller's level,
+ * evaluated at each SIMD level this build, CPU and VSPH_PAIR_SIMD allow
+ * (portable, avx2, avx512), on a team of two (asserted): every fluid
  * particle's position, velocity and density on one thread and on two,
  * bit for bit. The blocks are planned from the particle count alone and
  * each writes its own buffer, summed in block order: the threads change
@@ -1313,39 +1314,34 @@ START_TEST(test_groups_threads_bitwise) {
   const int form = forms[_i];
   const char *names[3] = {"portable"};
   const int nl = 1 + groups_levels(names + 1);
+  /* the runs made first, at the caller's level and threads (the same
+   * state for both, which the comparison below would show otherwise) */
+  struct vsph_integrate *s[3][2];
+  for (int l = 0; l < nl; l++)
+    for (int t = 0; t < 2; t++) {
+      struct vsph_integrate_props ip;
+      s[l][t] = scene_stepped(&vsph_standing_wave_type, form, 48,
+                              form == VSPH_VISCOUS_MGF ? 0.1 : -1.0, &ip);
+    }
   const int threads = omp_get_max_threads();
   const char *was = getenv("VSPH_PAIR_SIMD");
   char *keep = was ? strdup(was) : NULL;
-  double *state[3][2] = {{NULL}};
-  size_t nblk[3][2] = {{0}}, n[3][2] = {{0}};
+  int st[3][2] = {{0}}, team[3][2] = {{0}};
+  /* then two steps each at its level on one thread or two, with no
+   * assertion until the caller's environment and threads are back */
   for (int l = 0; l < nl; l++) {
     setenv("VSPH_PAIR_SIMD", names[l], 1);
     for (int t = 0; t < 2; t++) {
       omp_set_num_threads(t + 1);
-      struct vsph_integrate_props ip;
-      struct vsph_integrate *s =
-          scene_stepped(&vsph_standing_wave_type, form, 48,
-                        form == VSPH_VISCOUS_MGF ? 0.1 : -1.0, &ip);
-      for (int k = 0; k < 2; k++) /* five steps in all */
-        ck_assert_int_eq(vsph_integrate_step(s, vsph_integrate_dt(s)), 0);
-      const size_t nf = s->n_fluid;
-      n[l][t] = nf;
-      nblk[l][t] = s->sweep->nblk;
-      state[l][t] = malloc(5 * nf * sizeof *state[l][t]);
-      ck_assert_ptr_nonnull(state[l][t]);
-      for (size_t i = 0; i < s->p->n; i++) {
-        const size_t id = s->p->id[i];
-        if (id >= nf) continue;
-        state[l][t][id] = s->p->pos[0][i];
-        state[l][t][nf + id] = s->p->pos[1][i];
-        state[l][t][2 * nf + id] = s->p->vel[0][i];
-        state[l][t][3 * nf + id] = s->p->vel[1][i];
-        state[l][t][4 * nf + id] = s->p->rho[i];
+#pragma omp parallel
+      {
+#pragma omp single
+        team[l][t] = omp_get_num_threads();
       }
-      vsph_integrate_free(s);
+      for (int k = 0; k < 2 && !st[l][t]; k++)
+        st[l][t] = vsph_integrate_step(s[l][t], vsph_integrate_dt(s[l][t]));
     }
   }
-  /* the caller's environment and threads back before any assertion */
   if (keep)
     setenv("VSPH_PAIR_SIMD", keep, 1);
   else
@@ -1353,13 +1349,34 @@ START_TEST(test_groups_threads_bitwise) {
   free(keep);
   omp_set_num_threads(threads);
   for (int l = 0; l < nl; l++) {
-    ck_assert_uint_eq(n[l][0], n[l][1]);
-    ck_assert_uint_ge(nblk[l][0], 4); /* several blocks: the premise */
-    ck_assert_msg(
-        memcmp(state[l][0], state[l][1], 5 * n[l][0] * sizeof(double)) == 0,
-        "%s, %s: one thread and two differ", vsph_viscous_name(form), names[l]);
-    free(state[l][0]);
-    free(state[l][1]);
+    double *state[2];
+    const size_t nf = s[l][0]->n_fluid;
+    for (int t = 0; t < 2; t++) {
+      ck_assert_int_eq(st[l][t], 0);
+      ck_assert_int_eq(team[l][t], t + 1); /* two threads did run */
+      ck_assert_uint_eq(s[l][t]->n_fluid, nf);
+      /* several blocks: the premise */
+      ck_assert_uint_ge(s[l][t]->sweep->nblk, 4);
+      const struct vsph_particles *p = s[l][t]->p;
+      state[t] = malloc(5 * nf * sizeof *state[t]);
+      ck_assert_ptr_nonnull(state[t]);
+      for (size_t i = 0; i < p->n; i++) {
+        const size_t id = p->id[i];
+        if (id >= nf) continue;
+        state[t][id] = p->pos[0][i];
+        state[t][nf + id] = p->pos[1][i];
+        state[t][2 * nf + id] = p->vel[0][i];
+        state[t][3 * nf + id] = p->vel[1][i];
+        state[t][4 * nf + id] = p->rho[i];
+      }
+    }
+    ck_assert_msg(memcmp(state[0], state[1], 5 * nf * sizeof(double)) == 0,
+                  "%s, %s: one thread and two differ", vsph_viscous_name(form),
+                  names[l]);
+    free(state[0]);
+    free(state[1]);
+    vsph_integrate_free(s[l][0]);
+    vsph_integrate_free(s[l][1]);
   }
 }
 END_TEST

@@ -211,6 +211,7 @@ END_TEST
 START_TEST(test_threads_bitwise) {
   double *state[2];
   size_t n = 0;
+  const int threads = omp_get_max_threads();
   for (int t = 0; t < 2; t++) {
     omp_set_num_threads(t + 1);
     struct vsph_scene sc;
@@ -232,6 +233,7 @@ START_TEST(test_threads_bitwise) {
     }
     vsph_integrate_free(s);
   }
+  omp_set_num_threads(threads);
   ck_assert_int_eq(memcmp(state[0], state[1], 5 * n * sizeof(double)), 0);
   free(state[0]);
   free(state[1]);
