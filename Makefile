@@ -80,7 +80,7 @@ LIBA     := $(BUILD)/libvsph.a
 TEST_OBJ := $(TEST_SRC:%.c=$(BUILD)/%.o)
 CLI_LIB  := $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ))
 
-.PHONY: all deps deps-build check test report baseline bench archive full-sitting full-report asan valgrind-check prefix-check public-check \
+.PHONY: all deps deps-build check test report baseline bench peer-pysph archive full-sitting full-report asan valgrind-check prefix-check public-check \
         lib doc install uninstall \
         format format-check mutate fuzz slurm-check fresh-check \
         fresh-check-tests paraview-check optional-checks reference clean
@@ -339,6 +339,14 @@ baseline: deps
 bench: deps
 	@$(MAKE) --no-print-directory $(BUILD)/vsph
 	$(BUILD)/vsph bench --processes 5 --csv $(BUILD)/bench.csv
+
+# The second peer timed in the same sitting as vsph's rows: Debian's PySPH
+# (installed by the script: install-deps pysph) on its Taylor-Green
+# example at vsph's bench size and neighbours, one thread, against vsph's
+# square step and MGF force (scripts/peer-pysph; two to three minutes).
+# A timing, not a check: not part of `make check` or optional-checks.
+peer-pysph:
+	scripts/peer-pysph
 
 # `vsph report submit` on a real Slurm: installs slurm-wlm and munge,
 # starts a one-node cluster on this machine (its own slurm.conf and munge
