@@ -1938,6 +1938,114 @@ START_TEST(test_groups_block_bounds) {
 }
 END_TEST
 
+/* Each SIMD level runs its own kernels: on a set of one block (fewer than
+ * 512 particles, half of them fluid, asserted), the right-hand side at
+ * level L (VSPH_PAIR_SIMD) against level L's kernels called directly:
+ * MGF's sweep, whose block buffer the workspace keeps after the
+ * evaluation, against vsph_sweep_x86_groups2_avx512 (_avx2) on the same
+ * particles (the pressure and volumes the evaluation left), bit for bit;
+ * and PVWF's first pass, whose A the workspace keeps, against
+ * vsph_sweep_x86_grad2_avx512 (_avx2) finished particle by particle by
+ * vsph_viscous_pvwf_finish (one block: a particle's sums are its entries),
+ * bit for bit. A dispatch that swapped the levels' kernels passes every
+ * test that compares the levels' outputs with each other or with the
+ * loops, and would fault on a CPU without AVX-512; this one fails. Where
+ * the CPU or build lacks the kernels, said and left out. */
+START_TEST(test_groups_dispatch_own_kernel) {
+#if VSPH_SWEEP_X86_GROUPS /* else the kernels are not built */
+  const char *levels[2];
+  const int nlev = groups_levels(levels);
+  if (!nlev) {
+    fprintf(stderr, "test_groups_dispatch_own_kernel: no groups' sweep here\n");
+    return;
+  }
+  struct vsph_particles *p = mixed_set(2, 4242, 0.5, 0.11);
+  const size_t n = p->n, nfl = n / 2;
+  ck_assert_uint_lt(n, 512); /* one block: the premise */
+  struct vsph_cells *cells = vsph_cells_alloc();
+  struct vsph_viscous_ws *ws = vsph_viscous_ws_alloc(n, 2),
+                         *ws2 = vsph_viscous_ws_alloc(n, 2);
+  double *rates = malloc(3 * n * sizeof *rates), *want = NULL;
+  ck_assert(rates && ws && ws2);
+  const char *was = getenv("VSPH_PAIR_SIMD");
+  char *keep = was ? strdup(was) : NULL;
+  int st[2][2] = {{0}};
+  size_t nblk[2][2] = {{0}}, off[2][2] = {{0}};
+  int same[2][2] = {{0}};
+  for (int l = 0; l < nlev; l++) {
+    const int wide = !strcmp(levels[l], "avx512");
+    setenv("VSPH_PAIR_SIMD", levels[l], 1);
+    for (int f = 0; f < 2; f++) { /* MGF's sweep, PVWF's first pass */
+      struct vsph_equations_props ep;
+      gauss2_props(&ep, f ? VSPH_VISCOUS_PVWF : VSPH_VISCOUS_MGF, HDX * DX,
+                   0.0);
+      if (vsph_cells_build(cells, p, 3.0 * ep.visc.h)) {
+        st[l][f] = -1;
+        continue;
+      }
+      struct vsph_equations_sweep *sw = vsph_equations_sweep_alloc();
+      struct vsph_equations_out out = {
+          .drho = rates, .acc = {rates + n, rates + 2 * n}, .sweep = sw};
+      st[l][f] = vsph_equations_rhs(&ep, p, nfl, cells, ws, &out);
+      nblk[l][f] = sw->nblk;
+      off[l][f] = sw->off[0];
+      if (!st[l][f] && sw->nblk == 1) {
+        struct vsph_equations_ctx rc = {.ep = &ep};
+        vsph_pair_kernel_init(&rc.pk, &vsph_gaussian_type, 2, ep.visc.h);
+        if (!f) { /* MGF: the evaluation's buffer, then the kernel's */
+          const size_t m = 3 * (sw->hi[0] - sw->lo[0]);
+          want = realloc(want, m * sizeof *want);
+          memcpy(want, sw->buf, m * sizeof *want);
+          vsph_viscous_loop_init(&rc.vl, &ep.visc, NULL);
+          double closest;
+          (wide ? vsph_sweep_x86_groups2_avx512 : vsph_sweep_x86_groups2_avx2)(
+              &rc, p, cells, nfl, sw, 0, 0, VSPH_SWEEP_X86_BROOKSHAW_TERM,
+              &closest);
+          same[l][f] = memcmp(want, sw->buf, m * sizeof *want) == 0;
+        } else { /* PVWF: the kernel's sums finished, against ws's A */
+          double *const b = sw->buf;
+          (wide ? vsph_sweep_x86_grad2_avx512 : vsph_sweep_x86_grad2_avx2)(
+              &rc.pk, p, cells, sw, 0);
+          for (size_t i = 0; i < n; i++)
+            vsph_viscous_pvwf_finish(&ep.visc, ws2, i, b + 8 * i,
+                                     b + 8 * i + 4);
+          same[l][f] = 1;
+          for (int e = 0; e < 4; e++)
+            for (size_t i = 0; i < n; i++)
+              same[l][f] &= ws2->A[e][i] == ws->A[e][i];
+        }
+      }
+      vsph_equations_sweep_free(sw);
+    }
+  }
+  if (keep)
+    setenv("VSPH_PAIR_SIMD", keep, 1);
+  else
+    unsetenv("VSPH_PAIR_SIMD");
+  free(keep);
+  for (int l = 0; l < nlev; l++)
+    for (int f = 0; f < 2; f++) {
+      ck_assert_int_eq(st[l][f], 0);
+      ck_assert_uint_eq(nblk[l][f], 1);
+      ck_assert_uint_eq(off[l][f], 0);
+      ck_assert_msg(same[l][f],
+                    "%s: the evaluation at level %s is not that level's "
+                    "kernel's",
+                    f ? "PVWF's first pass" : "MGF's sweep", levels[l]);
+    }
+  free(want);
+  free(rates);
+  vsph_viscous_ws_free(ws2);
+  vsph_viscous_ws_free(ws);
+  vsph_cells_free(cells);
+  vsph_particles_free(p);
+#else
+  fprintf(stderr,
+          "test_groups_dispatch_own_kernel: no groups' sweep in this build\n");
+#endif
+}
+END_TEST
+
 /* PVWF's and B's first pass by cell groups alone
  * (vsph_sweep_x86_grad2_avx512, _avx2): each level's kernel called
  * directly on one block that holds every cell of a set 40 h from the
@@ -3000,6 +3108,7 @@ Suite *vsph_equations_suite(void) {
   tcase_add_test(tc, test_sweep_addj_by_hand);
   tcase_add_loop_test(tc, test_groups_block_bounds, 0, 4);
   tcase_add_test(tc, test_grad_block_by_hand);
+  tcase_add_test(tc, test_groups_dispatch_own_kernel);
   tcase_add_test(tc, test_sweep_lanes_by_hand);
   tcase_add_loop_test(tc, test_sweep_gather_threads, 0, (int)nwc * 5);
   tcase_add_loop_test(tc, test_sweep_gather_threads,
