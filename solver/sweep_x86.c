@@ -432,6 +432,18 @@ static inline __attribute__((always_inline)) AVX512 void transpose8(
   }
 }
 
+/* A receiver's seven sums s (x (x) x's entries (0, 0), (0, 1), (1, 1),
+ * then du (x) x's four) added to its eight fields e (B row by row, then
+ * Mg): the (0, 1) entry in both of B's off-diagonal fields */
+static inline __attribute__((always_inline)) void grad_own(double *e,
+                                                           const double s[7]) {
+  e[0] += s[0];
+  e[1] += s[1];
+  e[2] += s[1];
+  e[3] += s[2];
+  for (int f = 3; f < 7; f++) e[f + 1] += s[f];
+}
+
 /* PVWF's (model B's) first pass, one block (sweep_x86.h), by grad_block's
  * terms (solver/equations.c) in the walk of groups2_block: each pair
  * j > i within the support, every particle a receiver (ghosts too),
@@ -535,13 +547,9 @@ static inline __attribute__((always_inline)) AVX512 void grad2_block(
         }
       }
       for (size_t q = 0; q < g; q++) {
-        double *const e = buf + (i0 + q - lo) * 8;
-        const double b1 = _mm512_reduce_add_pd(ai[q][1]);
-        e[0] += _mm512_reduce_add_pd(ai[q][0]);
-        e[1] += b1;
-        e[2] += b1;
-        e[3] += _mm512_reduce_add_pd(ai[q][2]);
-        for (int f = 3; f < 7; f++) e[f + 1] += _mm512_reduce_add_pd(ai[q][f]);
+        double si[7];
+        for (int f = 0; f < 7; f++) si[f] = _mm512_reduce_add_pd(ai[q][f]);
+        grad_own(buf + (i0 + q - lo) * 8, si);
       }
     }
   }
@@ -976,13 +984,9 @@ static inline __attribute__((always_inline)) AVX2 void grad2_block4(
         }
       }
       for (size_t q = 0; q < g; q++) {
-        double *const e = buf + (i0 + q - lo) * 8;
-        const double b1 = sum4(ai[q][1]);
-        e[0] += sum4(ai[q][0]);
-        e[1] += b1;
-        e[2] += b1;
-        e[3] += sum4(ai[q][2]);
-        for (int f = 3; f < 7; f++) e[f + 1] += sum4(ai[q][f]);
+        double si[7];
+        for (int f = 0; f < 7; f++) si[f] = sum4(ai[q][f]);
+        grad_own(buf + (i0 + q - lo) * 8, si);
       }
     }
   }
