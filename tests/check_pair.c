@@ -479,6 +479,22 @@ static void twin_check(int form, int dim, int sweep,
   vsph_particles_free(p);
 }
 
+/* The caller's VSPH_PAIR_SIMD, a copy (NULL where unset), before a test
+ * sets its own; simd_env_put_back puts it back (unset where it was) and
+ * frees the copy. */
+static char *simd_env_keep(void) {
+  const char *was = getenv("VSPH_PAIR_SIMD");
+  return was ? strdup(was) : NULL;
+}
+
+static void simd_env_put_back(char *keep) {
+  if (keep)
+    setenv("VSPH_PAIR_SIMD", keep, 1);
+  else
+    unsetenv("VSPH_PAIR_SIMD");
+  free(keep);
+}
+
 /* Whether the right-hand side of @p form in @p dim (the parts on or off,
  * the symmetric sweep or the gather) with the 3h Gaussian
  * takes the Brookshaw forms' sweep by cell groups (solver/sweep_x86.c)
@@ -1181,8 +1197,7 @@ START_TEST(test_sweep_scatter_simd) {
   const size_t nout = (size_t)(parts ? 2 * dim + 2 : dim + 1);
   double *buf = calloc(nout * n * 3, sizeof *buf);
   struct vsph_equations_sweep *sw = vsph_equations_sweep_alloc();
-  const char *was = getenv("VSPH_PAIR_SIMD");
-  char *keep = was ? strdup(was) : NULL;
+  char *keep = simd_env_keep();
   static const char *const names[] = {"portable", "avx2", "avx512"};
   int st[3] = {0, 0, 0};
   double closest[3] = {0, 0, 0};
@@ -1212,11 +1227,7 @@ START_TEST(test_sweep_scatter_simd) {
   }
   /* the caller's environment back before any assertion (a failed one
    * leaves this test at once, and the suite runs on in this process) */
-  if (keep)
-    setenv("VSPH_PAIR_SIMD", keep, 1);
-  else
-    unsetenv("VSPH_PAIR_SIMD");
-  free(keep);
+  simd_env_put_back(keep);
   for (int level = 0; level <= most; level++) {
     /* the groups' sweep at this level (the Brookshaw forms, MEAF, PVWF
      * and B; not the parts, nor 3-D), or PVWF's and B's first pass by
@@ -1324,8 +1335,7 @@ START_TEST(test_groups_threads_bitwise) {
                               form == VSPH_VISCOUS_MGF ? 0.1 : -1.0, &ip);
     }
   const int threads = omp_get_max_threads();
-  const char *was = getenv("VSPH_PAIR_SIMD");
-  char *keep = was ? strdup(was) : NULL;
+  char *keep = simd_env_keep();
   int st[3][2] = {{0}}, team[3][2] = {{0}};
   /* then two steps each at its level on one thread or two, with no
    * assertion until the caller's environment and threads are back */
@@ -1342,11 +1352,7 @@ START_TEST(test_groups_threads_bitwise) {
         st[l][t] = vsph_integrate_step(s[l][t], vsph_integrate_dt(s[l][t]));
     }
   }
-  if (keep)
-    setenv("VSPH_PAIR_SIMD", keep, 1);
-  else
-    unsetenv("VSPH_PAIR_SIMD");
-  free(keep);
+  simd_env_put_back(keep);
   omp_set_num_threads(threads);
   for (int l = 0; l < nl; l++) {
     double *state[2];
@@ -1406,15 +1412,10 @@ static size_t rhs_at(const struct vsph_equations_props *ep,
       .drho = out3,
       .acc = {out3 + n, out3 + 2 * n},
       .sweep = level ? vsph_equations_sweep_alloc() : NULL};
-  const char *was = getenv("VSPH_PAIR_SIMD");
-  char *keep = was ? strdup(was) : NULL;
+  char *keep = simd_env_keep();
   if (level) setenv("VSPH_PAIR_SIMD", level, 1);
   const int st = vsph_equations_rhs(ep, p, nfl, cells, ws, &out);
-  if (keep)
-    setenv("VSPH_PAIR_SIMD", keep, 1);
-  else
-    unsetenv("VSPH_PAIR_SIMD");
-  free(keep);
+  simd_env_put_back(keep);
   vsph_equations_sweep_free(out.sweep);
   *closest = out.min_s2;
   return st ? SIZE_MAX : out.interactions;
@@ -1967,8 +1968,7 @@ START_TEST(test_groups_dispatch_own_kernel) {
                          *ws2 = vsph_viscous_ws_alloc(n, 2);
   double *rates = malloc(3 * n * sizeof *rates), *want = NULL;
   ck_assert(rates && ws && ws2);
-  const char *was = getenv("VSPH_PAIR_SIMD");
-  char *keep = was ? strdup(was) : NULL;
+  char *keep = simd_env_keep();
   int st[2][2] = {{0}};
   size_t nblk[2][2] = {{0}}, off[2][2] = {{0}};
   int same[2][2] = {{0}};
@@ -2018,11 +2018,7 @@ START_TEST(test_groups_dispatch_own_kernel) {
       vsph_equations_sweep_free(sw);
     }
   }
-  if (keep)
-    setenv("VSPH_PAIR_SIMD", keep, 1);
-  else
-    unsetenv("VSPH_PAIR_SIMD");
-  free(keep);
+  simd_env_put_back(keep);
   for (int l = 0; l < nlev; l++)
     for (int f = 0; f < 2; f++) {
       ck_assert_int_eq(st[l][f], 0);
